@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: MIT
+// The command line shared by every example: size, samples, threads, seed, output folder.
+#pragma once
+
+#include <prism/prism.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace examples {
+
+struct Options {
+    prism::RenderConfig render{};
+    std::filesystem::path out = ".";
+};
+
+inline void print_help(const char* program, const char* description, const Options& defaults)
+{
+    std::printf("%s: %s\n\n"
+                "usage: %s [options]\n"
+                "  --width N     image width in pixels (default %d)\n"
+                "  --height N    image height in pixels (default %d)\n"
+                "  --spp N       samples per pixel; 1 samples pixel centres (default %d)\n"
+                "  --threads N   worker threads, 0 = all cores (default 0)\n"
+                "  --seed N      random seed (default 0)\n"
+                "  --out DIR     folder for the images, created if missing (default .)\n"
+                "  --help        this text\n",
+                program, description, program, defaults.render.width, defaults.render.height, defaults.render.spp);
+}
+
+template <class Integer>
+Integer parse_integer(std::string_view flag, const char* text, long long lo, long long hi)
+{
+    char* end = nullptr;
+    errno = 0;
+    const long long value = std::strtoll(text, &end, 10);
+    if (errno != 0 || end == text || *end != '\0' || value < lo || value > hi)
+        throw std::invalid_argument(std::string(flag) + " expects an integer in [" + std::to_string(lo) + ", " +
+                                    std::to_string(hi) + "], got '" + text + "'");
+    return static_cast<Integer>(value);
+}
+
+/// Parse the shared options; returns false when --help was printed.
+inline bool parse(int argc, char** argv, Options& options, const char* description)
+{
+    const Options defaults = options;
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view flag = argv[i];
+        if (flag == "--help" || flag == "-h") {
+            print_help(argv[0], description, defaults);
+            return false;
+        }
+        if (i + 1 >= argc) throw std::invalid_argument("unknown option or missing value: '" + std::string(flag) + "'");
+        const char* value = argv[++i];
+        if (flag == "--width") options.render.width = parse_integer<int>(flag, value, 1, 1 << 16);
+        else if (flag == "--height") options.render.height = parse_integer<int>(flag, value, 1, 1 << 16);
+        else if (flag == "--spp") options.render.spp = parse_integer<int>(flag, value, 1, 1 << 20);
+        else if (flag == "--threads") options.render.threads = parse_integer<unsigned>(flag, value, 0, 1024);
+        else if (flag == "--seed") options.render.seed = parse_integer<std::uint64_t>(flag, value, 0, (1LL << 62));
+        else if (flag == "--out") options.out = value;
+        else throw std::invalid_argument("unknown option '" + std::string(flag) + "' (see --help)");
+    }
+    std::filesystem::create_directories(options.out);
+    return true;
+}
+
+/// Run an example's body, turning exceptions into a message and exit code 1.
+template <class Body>
+int run(Body&& body) noexcept
+{
+    try {
+        return body();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 1;
+    }
+}
+
+/// Render and report the render time (camera rays to finished film) on stdout.
+template <class Integrator>
+prism::Film timed_render(const char* name, const prism::Camera<typename Integrator::scalar_type>& camera,
+                         const Integrator& integrator, const prism::RenderConfig& config)
+{
+    const auto start = std::chrono::steady_clock::now();
+    prism::Film film = prism::render(camera, integrator, config);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("%s: %dx%d, %d spp, render time %.4f s\n", name, config.width, config.height, config.spp, seconds);
+    return film;
+}
+
+} // namespace examples

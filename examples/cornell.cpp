@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: MIT
+// cornell: the Whitted part of shared/scenes/cornell_caustics.pov (POV-Ray with
+// Declare=PHOTONS=0): a red/green box, a glass and a mirror sphere, one point light.
+#include "cli.hpp"
+#include "scenes/cornell.hpp"
+
+#include <prism/io/image.hpp>
+
+int main(int argc, char** argv)
+{
+    return examples::run([&] {
+        examples::Options options;
+        if (!examples::parse(argc, argv, options, "Cornell box with glass and mirror spheres, Whitted ray tracing"))
+            return 0;
+        const auto scene = scenes::cornell_scene<float>();
+        const prism::Whitted integrator(scene, {.max_depth = 10});
+        const prism::Film film = examples::timed_render("cornell", scenes::cornell_camera<float>(), integrator, options.render);
+        prism::write_png(film, options.out / "cornell.png");
+        prism::write_pfm(film, options.out / "cornell.pfm");
+        return 0;
+    });
+}

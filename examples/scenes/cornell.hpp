@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+// The Cornell-like box of shared/scenes/cornell_caustics.pov, in prism's coordinates.
+//
+// POV-Ray is left-handed with y up and its camera looks along +z; prism is right-handed
+// with y up. Negating z maps one onto the other with the same picture: the camera at
+// POV (2.78, 2.73, -8) looking along +z sits at (2.78, 2.73, 8) looking along -z.
+//
+// Units: POV-Ray's diffuse shading is pigment * diffuse * light colour * cos, with no
+// pi. prism's Lambertian BRDF is albedo / pi, so a POV-Ray light of colour c with
+// `fade_power 0` is a PointLight of intensity pi * c with Falloff::none.
+#pragma once
+
+#include <prism/prism.hpp>
+
+namespace scenes {
+
+template <prism::Scalar T>
+prism::Camera<T> cornell_camera()
+{
+    return {.position = {T(2.78), T(2.73), T(8)}, .look_at = {T(2.78), T(2.73), T(0)}, .up = {T(0), T(1), T(0)}, .fov = T(40)};
+}
+
+template <prism::Scalar T, class Fresnel = prism::ExactFresnel>
+auto cornell_scene()
+{
+    using namespace prism;
+    using V = Vec3<T>;
+    constexpr T w = T(5.55), t = T(0.1); // interior size, wall thickness
+    const auto diffuse = [](T r, T g, T b) { return Diffuse<T>{.albedo = {.color = {r, g, b}}, .kd = T(0.8), .ka = T(0)}; };
+    const auto white = diffuse(T(0.75), T(0.75), T(0.75));
+    using Wall = Object<Box<T>, Diffuse<T>>;
+    ObjectArray<Box<T>, Diffuse<T>> walls{{
+        Wall{Box<T>(V{-t, -t, 0}, V{w + t, 0, -(w + t)}), white},                             // floor
+        Wall{Box<T>(V{-t, w, 0}, V{w + t, w + t, -(w + t)}), white},                          // ceiling
+        Wall{Box<T>(V{-t, -t, -w}, V{w + t, w + t, -(w + t)}), white},                        // back
+        Wall{Box<T>(V{-t, -t, 0}, V{0, w + t, -(w + t)}), diffuse(T(0.75), T(0.1), T(0.1))},  // left, red
+        Wall{Box<T>(V{w, -t, 0}, V{w + t, w + t, -(w + t)}), diffuse(T(0.1), T(0.75), T(0.1))}, // right, green
+    }};
+    Scene scene{
+        Lights{PointLight<T>{.position = {T(2.78), T(5.35), T(-2.60)}, .intensity = Rgb<T>(pi<T>), .falloff = Falloff::none}},
+        std::move(walls),
+        Object{Sphere<T>({T(3.85), T(1.0), T(-2.0)}, T(1)), Dielectric<T, Fresnel>{.ior = T(1.5)}},
+        Object{Sphere<T>({T(1.60), T(1.0), T(-3.6)}, T(1)), Mirror<T>{{.kr = Rgb<T>(T(0.95))}}},
+    };
+    return scene;
+}
+
+} // namespace scenes

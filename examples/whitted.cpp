@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+// whitted: a glass and a mirror sphere over a checkered plane, Whitted-style.
+#include "cli.hpp"
+#include "scenes/whitted.hpp"
+
+#include <prism/io/image.hpp>
+
+int main(int argc, char** argv)
+{
+    return examples::run([&] {
+        examples::Options options;
+        options.render.width = 640;
+        options.render.height = 480;
+        options.render.spp = 4;
+        if (!examples::parse(argc, argv, options, "a glass and a mirror sphere over a checkered plane (Whitted 1980)"))
+            return 0;
+        const auto scene = scenes::whitted_scene<float>();
+        const prism::Whitted integrator(scene);
+        const prism::Film film = examples::timed_render("whitted", scenes::whitted_camera<float>(), integrator, options.render);
+        prism::write_png(film, options.out / "whitted.png");
+        return 0;
+    });
+}

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// prism configuration: the PRISM_ macros and the one place GLM is included.
+//
+// GLM 0.9.9.8 makes vector construction and arithmetic constexpr only when its SIMD
+// architecture bit is off, which on x86-64 means GLM_FORCE_PURE must be defined before
+// the first GLM include. prism defines it when it is first to include GLM (and the
+// CMake/meson targets define it for every translation unit, so all of them agree).
+// When a user included GLM earlier without it, prism still compiles and renders the
+// same bits; only its constant-expression features are off, and
+// PRISM_CONSTEXPR_VECTORS says so (0).
+#pragma once
+
+#if !defined(GLM_VERSION) && !defined(GLM_FORCE_PURE)
+#define GLM_FORCE_PURE
+#endif
+
+#include <glm/glm.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+
+#if GLM_HAS_CONSTEXPR
+/// 1 when GLM vector construction and arithmetic are usable in constant expressions.
+#define PRISM_CONSTEXPR_VECTORS 1
+#else
+#define PRISM_CONSTEXPR_VECTORS 0
+#endif
+
+namespace prism::detail {
+
+[[noreturn]] inline void assert_fail(const char* expression, const char* file, int line) noexcept
+{
+    std::fprintf(stderr, "%s:%d: prism assertion failed: %s\n", file, line, expression);
+    std::abort();
+}
+
+} // namespace prism::detail
+
+/// Precondition check: compiled out with NDEBUG; in a constant expression a failed
+/// check is a compile error (assert_fail is not constexpr).
+#ifdef NDEBUG
+#define PRISM_ASSERT(condition) ((void)0)
+#else
+#define PRISM_ASSERT(condition) \
+    ((condition) ? (void)0 : ::prism::detail::assert_fail(#condition, __FILE__, __LINE__))
+#endif

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// Robust spawning of secondary rays: the one place self-intersection is handled.
+//
+// A shape reports each hit point together with a bound on its floating-point error.
+// A new ray starts from the hit point pushed along the geometric normal just past
+// that bound, to the side the ray leaves by, then rounded one more ulp away, so it
+// can never start on the wrong side of the surface it leaves (Pharr, Jakob and
+// Humphreys, "Physically Based Rendering", 4th ed., section 6.8.6; pbrt-v4
+// OffsetRayOrigin). No other code in prism nudges rays by an epsilon.
+#pragma once
+
+#include <prism/core/math.hpp>
+#include <prism/core/ray.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace prism {
+
+/// Higham's gamma(n) = n u / (1 - n u), u = machine epsilon / 2: the relative error
+/// bound of n successive rounded operations.
+template <Scalar T>
+[[nodiscard]] constexpr T gamma(int n) noexcept
+{
+    constexpr T u = std::numeric_limits<T>::epsilon() * T(0.5);
+    return T(n) * u / (T(1) - T(n) * u);
+}
+
+/// The origin for a ray leaving point p (absolute error bound p_error per axis) of a
+/// surface with geometric normal n, in direction w.
+template <Scalar T>
+[[nodiscard]] inline Vec3<T> offset_ray_origin(const Vec3<T>& p, const Vec3<T>& p_error, const Vec3<T>& n,
+                                               const Vec3<T>& w) noexcept
+{
+    const T d = dot(abs(n), p_error);
+    Vec3<T> offset = d * n;
+    if (dot(w, n) < T(0)) offset = -offset;
+    Vec3<T> po = p + offset;
+    // Round away from p so the offset survives the addition's rounding.
+    for (int i = 0; i < 3; ++i) {
+        if (offset[i] > T(0))
+            po[i] = std::nextafter(po[i], infinity<T>);
+        else if (offset[i] < T(0))
+            po[i] = std::nextafter(po[i], -infinity<T>);
+    }
+    return po;
+}
+
+/// A ray leaving a surface point in direction w.
+template <Scalar T>
+[[nodiscard]] inline Ray<T> spawn_ray(const Vec3<T>& p, const Vec3<T>& p_error, const Vec3<T>& n,
+                                      const Vec3<T>& w) noexcept
+{
+    return {offset_ray_origin(p, p_error, n, w), w};
+}
+
+} // namespace prism

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: MIT
+// Box: the solid axis-aligned box [lo, hi].
+#pragma once
+
+#include <prism/core/check.hpp>
+#include <prism/core/offset.hpp>
+#include <prism/geometry/shape.hpp>
+
+namespace prism {
+
+template <Scalar T = float>
+class Box {
+public:
+    using scalar_type = T;
+    static constexpr std::size_t max_crossings = 2;
+
+    // Box Public Methods
+
+    /// The box between two opposite corners (in any order). Throws
+    /// std::invalid_argument for a non-finite corner or zero extent on an axis.
+    constexpr Box(const Vec3<T>& corner_a, const Vec3<T>& corner_b)
+    {
+        detail::require_finite("Box corner_a", corner_a);
+        detail::require_finite("Box corner_b", corner_b);
+        for (int axis = 0; axis < 3; ++axis) {
+            lo_[axis] = corner_a[axis] < corner_b[axis] ? corner_a[axis] : corner_b[axis];
+            hi_[axis] = corner_a[axis] < corner_b[axis] ? corner_b[axis] : corner_a[axis];
+            if (!(lo_[axis] < hi_[axis]))
+                detail::throw_invalid("Box extent must be > 0 on every axis, got corners ",
+                                      detail::describe(corner_a), " and ", detail::describe(corner_b));
+        }
+    }
+
+    [[nodiscard]] constexpr const Vec3<T>& lo() const noexcept { return lo_; }
+    [[nodiscard]] constexpr const Vec3<T>& hi() const noexcept { return hi_; }
+    [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return {lo_, hi_}; }
+
+    [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        // Slab test over the whole line, remembering which face bounds the span.
+        T t_near = -infinity<T>, t_far = infinity<T>;
+        int axis_near = -1, axis_far = -1;
+        Crossings<T, 2> out;
+        for (int axis = 0; axis < 3; ++axis) {
+            const T o = ray.origin[axis];
+            const T d = ray.direction[axis];
+            if (d == T(0)) { // parallel to this slab
+                if (o < lo_[axis] || o > hi_[axis]) return out;
+                continue;
+            }
+            T t0 = (lo_[axis] - o) / d;
+            T t1 = (hi_[axis] - o) / d;
+            if (t0 > t1) std::swap(t0, t1);
+            if (t0 > t_near) t_near = t0, axis_near = axis;
+            if (t1 < t_far) t_far = t1, axis_far = axis;
+        }
+        if (!(t_near < t_far)) return out; // a miss, or a touch along an edge
+        out.inside_at_start = t_near < range.min && range.min < t_far;
+        if (range.surrounds(t_near)) out.push_back(crossing_at(ray, t_near, axis_near, true));
+        if (range.surrounds(t_far)) out.push_back(crossing_at(ray, t_far, axis_far, false));
+        return out;
+    }
+
+private:
+    // Box Private Methods
+
+    [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, int axis, bool entering) const noexcept
+    {
+        // The face coordinate is snapped to the face and so exact; the other two carry
+        // the rounding of o + t d, with t itself from two rounded operations.
+        Vec3<T> point = ray.at(t);
+        Vec3<T> error = gamma<T>(3) * (abs(ray.origin) + abs(t * ray.direction));
+        Vec3<T> normal{T(0)};
+        const bool toward_positive = ray.direction[axis] > T(0);
+        // Entering through the face the ray meets first; leaving through the other.
+        const bool high_face = entering ? !toward_positive : toward_positive;
+        point[axis] = high_face ? hi_[axis] : lo_[axis];
+        error[axis] = T(0);
+        normal[axis] = high_face ? T(1) : T(-1);
+        return {t, point, error, normal, entering};
+    }
+
+    Vec3<T> lo_{};
+    Vec3<T> hi_{};
+};
+
+static_assert(Shape<Box<float>>);
+static_assert(Shape<Box<double>>);
+
+} // namespace prism

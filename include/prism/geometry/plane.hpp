@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// Plane: the half-space dot(normal, p) <= offset, a solid bounded by one plane.
+#pragma once
+
+#include <prism/core/check.hpp>
+#include <prism/core/offset.hpp>
+#include <prism/geometry/shape.hpp>
+
+namespace prism {
+
+/// The half-space below a plane: inside where dot(normal, p) < offset, so the normal
+/// points out of the solid. A floor at y = 0 is Plane{{0, 1, 0}, 0}.
+template <Scalar T = float>
+class Plane {
+public:
+    using scalar_type = T;
+    static constexpr std::size_t max_crossings = 1;
+
+    // Plane Public Methods
+
+    /// The half-space dot(normal, p) <= offset; normal need not be unit length.
+    /// Throws std::invalid_argument for a zero or non-finite normal or offset.
+    constexpr Plane(const Vec3<T>& normal, T offset)
+    {
+        detail::require_nonzero("Plane normal", normal);
+        detail::require_finite("Plane offset", offset);
+        const T len = length(normal);
+        normal_ = normal * (T(1) / len);
+        offset_ = offset / len;
+    }
+
+    /// The half-space bounded by the plane through `point` with outward `normal`.
+    [[nodiscard]] static constexpr Plane through(const Vec3<T>& point, const Vec3<T>& normal)
+    {
+        detail::require_finite("Plane point", point);
+        detail::require_nonzero("Plane normal", normal);
+        return Plane(normal, dot(normal, point));
+    }
+
+    [[nodiscard]] constexpr const Vec3<T>& normal() const noexcept { return normal_; }
+    [[nodiscard]] constexpr T offset() const noexcept { return offset_; }
+    [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return Aabb<T>::universe(); }
+
+    [[nodiscard]] constexpr Crossings<T, 1> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        Crossings<T, 1> out;
+        const T denom = dot(normal_, ray.direction);
+        const T height = dot(normal_, ray.origin) - offset_;
+        if (denom == T(0)) { // parallel: inside or outside all along
+            out.inside_at_start = height < T(0);
+            return out;
+        }
+        const T t = -height / denom;
+        const bool entering = denom < T(0);
+        out.inside_at_start = entering ? t < range.min : range.min < t;
+        if (range.surrounds(t)) out.push_back(crossing_at(ray, t, entering));
+        return out;
+    }
+
+private:
+    // Plane Private Methods
+
+    [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, bool entering) const noexcept
+    {
+        // Refine the hit point by projecting it onto the plane. The residual is
+        // evaluated with error gamma(3)(|n|.|p| + |offset|), and that is what is left
+        // along the normal; along the plane the point carries its own rounding.
+        Vec3<T> point = ray.at(t);
+        point -= (dot(normal_, point) - offset_) * normal_;
+        const Vec3<T> n_abs = abs(normal_);
+        const T along = gamma<T>(4) * (dot(n_abs, abs(point)) + (offset_ < T(0) ? -offset_ : offset_));
+        const Vec3<T> error = along * n_abs + gamma<T>(1) * abs(point);
+        return {t, point, error, normal_, entering};
+    }
+
+    Vec3<T> normal_{T(0), T(1), T(0)};
+    T offset_ = T(0);
+};
+
+static_assert(Shape<Plane<float>>);
+static_assert(Shape<Plane<double>>);
+
+} // namespace prism

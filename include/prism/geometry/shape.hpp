@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// The Shape concept: what every primitive, transformed shape and CSG node provides.
+#pragma once
+
+#include <prism/core/aabb.hpp>
+#include <prism/core/interval.hpp>
+#include <prism/core/ray.hpp>
+#include <prism/geometry/crossings.hpp>
+
+#include <concepts>
+#include <cstddef>
+
+namespace prism {
+
+/// A solid with a boundary. `crossings(ray, range)` returns every boundary crossing
+/// with t strictly inside `range`, sorted by t, plus whether `ray.at(range.min)` is
+/// inside; `max_crossings` bounds their number at compile time; `bounds()` encloses
+/// the solid (Aabb::universe() for an unbounded one).
+template <class S>
+concept Shape = requires(const S& shape, const Ray<typename S::scalar_type>& ray,
+                         Interval<typename S::scalar_type> range) {
+    requires Scalar<typename S::scalar_type>;
+    { S::max_crossings } -> std::convertible_to<std::size_t>;
+    { shape.crossings(ray, range) } -> std::same_as<Crossings<typename S::scalar_type, S::max_crossings>>;
+    { shape.bounds() } -> std::same_as<Aabb<typename S::scalar_type>>;
+};
+
+} // namespace prism

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+// Sphere: the solid ball |p - center| <= radius.
+#pragma once
+
+#include <prism/core/check.hpp>
+#include <prism/core/offset.hpp>
+#include <prism/geometry/shape.hpp>
+
+namespace prism {
+
+template <Scalar T = float>
+class Sphere {
+public:
+    using scalar_type = T;
+    static constexpr std::size_t max_crossings = 2;
+
+    // Sphere Public Methods
+
+    /// A sphere; throws std::invalid_argument for a non-finite center or a radius that
+    /// is not finite and > 0.
+    constexpr Sphere(const Vec3<T>& center, T radius) : center_(center), radius_(radius)
+    {
+        detail::require_finite("Sphere center", center);
+        detail::require_positive("Sphere radius", radius);
+    }
+
+    [[nodiscard]] constexpr const Vec3<T>& center() const noexcept { return center_; }
+    [[nodiscard]] constexpr T radius() const noexcept { return radius_; }
+
+    [[nodiscard]] constexpr Aabb<T> bounds() const noexcept
+    {
+        return {center_ - Vec3<T>(radius_), center_ + Vec3<T>(radius_)};
+    }
+
+    [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        // Compute quadratic coefficients: a t^2 + 2 h t + c = 0 with f = o - center
+        const Vec3<T> f = ray.origin - center_;
+        const Vec3<T>& d = ray.direction;
+        const T a = length_squared(d);
+        const T h = dot(f, d);
+        const T c = length_squared(f) - radius_ * radius_;
+
+        // Compute the discriminant without cancellation (Haines et al., "Precision
+        // Improvements for Ray/Sphere Intersection", Ray Tracing Gems, 2019, ch. 7):
+        // h^2 - a c = a (r^2 - |f - (h/a) d|^2), where the vector is the ray's closest
+        // approach to the center.
+        const Vec3<T> l = f - (h / a) * d;
+        const T ll = length(l);
+        const T disc = a * (radius_ - ll) * (radius_ + ll);
+
+        Crossings<T, 2> out;
+        // A miss, or a tangent (a double root: the ray touches but does not cross).
+        if (!(disc > T(0))) return out;
+
+        // Stable roots: q = -(h + sign(h) sqrt(disc)), t = q / a and c / q.
+        const T q = -(h + std::copysign(prism::sqrt(disc), h));
+        T t0 = q / a;
+        T t1 = q != T(0) ? c / q : -t0;
+        if (t0 > t1) std::swap(t0, t1);
+
+        // The ray is inside between the roots: it enters at t0 and leaves at t1, as
+        // the gradient 2(p - center) points against d at t0 and along it at t1.
+        out.inside_at_start = t0 < range.min && range.min < t1;
+        if (range.surrounds(t0)) out.push_back(crossing_at(ray, t0, true));
+        if (range.surrounds(t1)) out.push_back(crossing_at(ray, t1, false));
+        return out;
+    }
+
+private:
+    // Sphere Private Methods
+
+    [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, bool entering) const noexcept
+    {
+        // Refine the hit point by reprojecting it onto the surface; the remaining error
+        // is that of the reprojection (pbrt-v4, Sphere::InteractionFromIntersection).
+        const Vec3<T> radial = ray.at(t) - center_;
+        const Vec3<T> normal = radial * (T(1) / length(radial));
+        const Vec3<T> offset = normal * radius_;
+        const Vec3<T> point = center_ + offset;
+        const Vec3<T> error = gamma<T>(5) * abs(offset) + gamma<T>(1) * abs(point);
+        return {t, point, error, normal, entering};
+    }
+
+    Vec3<T> center_;
+    T radius_;
+};
+
+static_assert(Shape<Sphere<float>>);
+static_assert(Shape<Sphere<double>>);
+
+} // namespace prism

@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: MIT
+// Whitted: recursive ray tracing as the lecture notes write it (Whitted 1980).
+//
+// At each hit:
+//   L = albedo (kd L_diffuse + ka L_ambient prod_lights (1 - V_light)) + kr L_reflect + kt L_transmit
+// with L_diffuse = sum_lights V E cos / pi (a Lambertian BRDF albedo / pi lit by shadow
+// rays; V is the shadow ray's transmittance, so a light seen through glass counts
+// partly), kr and kt weighted by Fresnel on dielectrics, Beer-Lambert absorption along
+// every segment travelled inside a dielectric, a depth limit and an adaptive cut-off
+// when a path's weight becomes negligible (Hall and Greenberg 1983). Every branch is
+// chosen by the material's compile-time traits, so a scene without dielectrics
+// contains no refraction code.
+#pragma once
+
+#include <prism/core/check.hpp>
+#include <prism/core/offset.hpp>
+#include <prism/core/rng.hpp>
+#include <prism/light/light.hpp>
+#include <prism/material/traits.hpp>
+#include <prism/optics/beer.hpp>
+#include <prism/optics/refract.hpp>
+
+#include <optional>
+
+namespace prism {
+
+template <class SceneT>
+class Whitted {
+public:
+    using scalar_type = typename SceneT::scalar_type;
+    using T = scalar_type;
+
+    struct Config {
+        int max_depth = 10;          ///< reflection/refraction bounces followed at most
+        T min_weight = T(1e-3);      ///< stop a branch whose weight on the pixel is below this
+    };
+
+    /// Shadow rays stop this fraction short of a point light, so a light placed on a
+    /// surface is not shadowed by that surface (pbrt's ShadowEpsilon).
+    static constexpr T shadow_epsilon = T(1e-4);
+
+    explicit Whitted(const SceneT& scene, Config config = {}) : scene_(&scene), config_(config)
+    {
+        scene.validate();
+        if (config.max_depth < 0) detail::throw_invalid("Whitted max_depth must be >= 0, got ", config.max_depth);
+        detail::require_non_negative("Whitted min_weight", config.min_weight);
+    }
+
+    /// Radiance arriving along the ray (its direction must be unit length).
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1))); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1))); }
+
+    [[nodiscard]] const Config& config() const noexcept { return config_; }
+
+private:
+    // Whitted Private Methods
+
+    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight) const noexcept
+    {
+        const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
+        if (!hit) return scene_->background;
+        return scene_->visit_material(*hit, [&](const auto& material) {
+            return shade(material, ray, hit->crossing, depth, weight);
+        });
+    }
+
+    template <class M>
+    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Crossing<T>& hit, int depth,
+                               const Rgb<T>& weight) const noexcept
+    {
+        const Vec3<T>& d = ray.direction;
+        // The normal on the side the ray arrives from.
+        const Vec3<T> n = hit.entering ? hit.normal : -hit.normal;
+        Rgb<T> radiance{T(0)};
+
+        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, n);
+
+        if constexpr (reflects<M> || transmits<M>) {
+            if (depth < config_.max_depth) {
+                const T cos_i = clamp(-dot(d, n), T(0), T(1));
+                Rgb<T> kr;
+                [[maybe_unused]] Rgb<T> kt{T(0)};
+                [[maybe_unused]] std::optional<Vec3<T>> refracted;
+                if constexpr (transmits<M>) {
+                    // Split by Fresnel; all light reflects under total internal reflection.
+                    const T eta = hit.entering ? material.ior : T(1) / material.ior;
+                    refracted = refract(d, n, eta);
+                    const T fresnel = refracted ? material.fresnel(cos_i, eta) : T(1);
+                    kr = Rgb<T>(material.kr * fresnel);
+                    kt = Rgb<T>(material.kt * (T(1) - fresnel));
+                } else {
+                    kr = material.reflectance(cos_i);
+                }
+                const Rgb<T> reflect_weight = weight * kr;
+                if (max_component(reflect_weight) > config_.min_weight) {
+                    const Ray<T> reflected = spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n));
+                    radiance += kr * trace(reflected, depth + 1, reflect_weight);
+                }
+                if constexpr (transmits<M>) {
+                    const Rgb<T> transmit_weight = weight * kt;
+                    if (refracted && max_component(transmit_weight) > config_.min_weight) {
+                        const Ray<T> transmitted = spawn_ray(hit.point, hit.error, hit.normal, *refracted);
+                        radiance += kt * trace(transmitted, depth + 1, transmit_weight);
+                    }
+                }
+            }
+        }
+
+        // A ray leaving a dielectric travelled inside it from its origin to here.
+        if constexpr (transmits<M>) {
+            if (!hit.entering) radiance *= beer_lambert(material.absorption, hit.t * length(d));
+        }
+        return radiance;
+    }
+
+    template <class M>
+    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& n) const noexcept
+    {
+        Rgb<T> irradiance{T(0)}; // sum of V E cos over the lights
+        Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights
+        scene_->for_each_light([&](const auto& light) {
+            const LightSample<T> s = light.sample(hit.point);
+            const T cos = dot(n, s.wi);
+            if (!(cos > T(0))) return; // the light is behind the surface: V = 0
+            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
+            const Rgb<T> v = scene_->transmittance(shadow, s.distance * (T(1) - shadow_epsilon));
+            irradiance += v * s.irradiance * cos;
+            unlit *= Rgb<T>(T(1)) - v;
+        });
+        const Rgb<T> albedo = material.albedo.albedo(hit.point);
+        return albedo * ((material.kd / pi<T>)*irradiance + material.ka * scene_->ambient * unlit);
+    }
+
+    const SceneT* scene_;
+    Config config_;
+};
+
+} // namespace prism

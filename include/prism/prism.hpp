@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// prism: physically careful ray tracing as compile-time scene composition.
+// Includes everything except io/ (image files need stb_image_write; include
+// <prism/io/image.hpp> for them).
+#pragma once
+
+#include <prism/core/aabb.hpp>
+#include <prism/core/check.hpp>
+#include <prism/core/config.hpp>
+#include <prism/core/interval.hpp>
+#include <prism/core/math.hpp>
+#include <prism/core/offset.hpp>
+#include <prism/core/ray.hpp>
+#include <prism/core/rng.hpp>
+#include <prism/geometry/box.hpp>
+#include <prism/geometry/crossings.hpp>
+#include <prism/geometry/plane.hpp>
+#include <prism/geometry/shape.hpp>
+#include <prism/geometry/sphere.hpp>
+#include <prism/integrator/whitted.hpp>
+#include <prism/light/directional_light.hpp>
+#include <prism/light/light.hpp>
+#include <prism/light/point_light.hpp>
+#include <prism/material/conductor.hpp>
+#include <prism/material/dielectric.hpp>
+#include <prism/material/diffuse.hpp>
+#include <prism/material/texture.hpp>
+#include <prism/material/traits.hpp>
+#include <prism/optics/beer.hpp>
+#include <prism/optics/fresnel.hpp>
+#include <prism/optics/refract.hpp>
+#include <prism/render/film.hpp>
+#include <prism/render/render.hpp>
+#include <prism/scene/camera.hpp>
+#include <prism/scene/hit.hpp>
+#include <prism/scene/object.hpp>
+#include <prism/scene/scene.hpp>

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// Film: a linear HDR RGB image of radiance values, never NaN or Inf.
+#pragma once
+
+#include <prism/core/check.hpp>
+#include <prism/core/math.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace prism {
+
+class Film {
+public:
+    Film(int width, int height) : width_(width), height_(height)
+    {
+        if (width <= 0 || height <= 0) detail::throw_invalid("Film size must be positive, got ", width, " x ", height);
+        pixels_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), Rgb<float>(0.0f));
+    }
+
+    [[nodiscard]] int width() const noexcept { return width_; }
+    [[nodiscard]] int height() const noexcept { return height_; }
+    [[nodiscard]] const std::vector<Rgb<float>>& pixels() const noexcept { return pixels_; }
+
+    [[nodiscard]] const Rgb<float>& at(int x, int y) const noexcept
+    {
+        return pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)];
+    }
+
+    /// Store a pixel's radiance. A channel that is NaN, infinite or negative is stored
+    /// as 0 and counted, so no bad number ever reaches an image file.
+    template <Scalar T>
+    void set(int x, int y, const Rgb<T>& radiance) noexcept
+    {
+        Rgb<float> v;
+        for (int c = 0; c < 3; ++c) {
+            const float value = static_cast<float>(radiance[c]);
+            const bool good = is_finite(value) && value >= 0.0f;
+            v[c] = good ? value : 0.0f;
+            rejected_ += good ? 0 : 1;
+        }
+        pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)] = v;
+    }
+
+    /// How many channel values were replaced by 0 because they were not finite and >= 0.
+    [[nodiscard]] std::size_t rejected() const noexcept { return rejected_; }
+
+private:
+    int width_;
+    int height_;
+    std::vector<Rgb<float>> pixels_;
+    std::size_t rejected_ = 0;
+};
+
+} // namespace prism

@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: MIT
+// render(): camera rays per pixel, tiles on std::thread workers, one RNG stream per pixel.
+#pragma once
+
+#include <prism/core/check.hpp>
+#include <prism/core/rng.hpp>
+#include <prism/render/film.hpp>
+#include <prism/scene/camera.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <concepts>
+#include <condition_variable>
+#include <cstdint>
+#include <cstdio>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace prism {
+
+/// An integrator: the radiance along a camera ray, drawing random numbers from rng.
+template <class I>
+concept Integrator = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
+    { integrator.radiance(ray, rng) } -> std::same_as<Rgb<typename I::scalar_type>>;
+};
+
+struct RenderConfig {
+    int width = 512;
+    int height = 512;
+    int spp = 1;             ///< samples per pixel; 1 samples the pixel centre
+    unsigned threads = 0;    ///< worker threads; 0 = all hardware threads
+    std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image
+    bool progress = true;    ///< report progress on stderr once a render passes one second
+    int tile_size = 16;      ///< pixels per side of the square work unit
+};
+
+namespace detail {
+
+/// Sub-pixel position of sample s of n: the centre when n = 1; otherwise jittered
+/// in an m x m grid of strata (m = floor(sqrt(n))), any further samples uniform.
+template <Scalar T>
+[[nodiscard]] inline std::pair<T, T> pixel_sample(int s, int n, Pcg32& rng) noexcept
+{
+    if (n == 1) return {T(0.5), T(0.5)};
+    const int m = static_cast<int>(std::sqrt(static_cast<double>(n)));
+    const T u = rng.uniform<T>(), v = rng.uniform<T>();
+    if (s < m * m) return {(T(s % m) + u) / T(m), (T(s / m) + v) / T(m)};
+    return {u, v};
+}
+
+} // namespace detail
+
+/// Render an image. The same scene, seed and spp give the same bits for any thread
+/// count: every pixel draws from its own random stream and is written by one thread.
+template <Integrator I>
+[[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
+{
+    using T = typename I::scalar_type;
+    if (config.spp < 1) detail::throw_invalid("RenderConfig spp must be >= 1, got ", config.spp);
+    if (config.tile_size < 1) detail::throw_invalid("RenderConfig tile_size must be >= 1, got ", config.tile_size);
+    const CameraRays<T> rays = camera.rays(config.width, config.height);
+    Film film(config.width, config.height);
+
+    const int tiles_x = (config.width + config.tile_size - 1) / config.tile_size;
+    const int tiles_y = (config.height + config.tile_size - 1) / config.tile_size;
+    const int tile_count = tiles_x * tiles_y;
+    std::atomic<int> next_tile{0};
+    std::atomic<int> tiles_done{0};
+    std::mutex mutex;
+    std::condition_variable finished;
+    unsigned running = 0;
+
+    const auto work = [&] {
+        for (int tile = next_tile++; tile < tile_count; tile = next_tile++) {
+            const int x0 = (tile % tiles_x) * config.tile_size, y0 = (tile / tiles_x) * config.tile_size;
+            const int x1 = std::min(x0 + config.tile_size, config.width);
+            const int y1 = std::min(y0 + config.tile_size, config.height);
+            for (int y = y0; y < y1; ++y)
+                for (int x = x0; x < x1; ++x) {
+                    const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + x;
+                    Pcg32 rng(config.seed, pixel);
+                    Rgb<T> sum{T(0)};
+                    for (int s = 0; s < config.spp; ++s) {
+                        const auto [dx, dy] = detail::pixel_sample<T>(s, config.spp, rng);
+                        sum += integrator.radiance(rays.ray(T(x) + dx, T(y) + dy), rng);
+                    }
+                    film.set(x, y, sum / T(config.spp));
+                }
+            ++tiles_done;
+        }
+        const std::lock_guard lock(mutex);
+        if (--running == 0) finished.notify_all();
+    };
+
+    unsigned threads = config.threads != 0 ? config.threads : std::max(1u, std::thread::hardware_concurrency());
+    threads = std::min<unsigned>(threads, static_cast<unsigned>(tile_count));
+    running = threads;
+    std::vector<std::thread> workers;
+    workers.reserve(threads);
+    for (unsigned i = 0; i < threads; ++i) workers.emplace_back(work);
+
+    // Report progress while waiting, once the render has taken more than a second.
+    const auto start = std::chrono::steady_clock::now();
+    bool reported = false;
+    {
+        std::unique_lock lock(mutex);
+        while (!finished.wait_for(lock, std::chrono::milliseconds(250), [&] { return running == 0; })) {
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (config.progress && seconds > 1.0) {
+                std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", 100 * tiles_done.load() / tile_count, seconds);
+                reported = true;
+            }
+        }
+    }
+    for (auto& worker : workers) worker.join();
+    if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
+    return film;
+}
+
+} // namespace prism

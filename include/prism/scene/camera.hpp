@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+// Camera: a pinhole camera as a plain struct, and the rays it shoots.
+#pragma once
+
+#include <prism/core/check.hpp>
+#include <prism/core/ray.hpp>
+
+#include <cmath>
+
+namespace prism {
+
+/// Where the camera shoots rays through a width x height image.
+template <Scalar T>
+struct CameraRays {
+    Vec3<T> origin{};
+    Vec3<T> top_left{};    ///< direction through the top-left image corner
+    Vec3<T> pixel_right{}; ///< step of one pixel to the right
+    Vec3<T> pixel_down{};  ///< step of one pixel down
+
+    /// The ray through image position (x, y), in pixels from the top-left corner.
+    [[nodiscard]] constexpr Ray<T> ray(T x, T y) const noexcept
+    {
+        return {origin, normalize(top_left + x * pixel_right + y * pixel_down)};
+    }
+};
+
+/// A pinhole camera. `fov` is the horizontal field of view in degrees, as POV-Ray's `angle`.
+template <Scalar T = float>
+struct Camera {
+    Vec3<T> position{T(0), T(0), T(0)};
+    Vec3<T> look_at{T(0), T(0), T(-1)};
+    Vec3<T> up{T(0), T(1), T(0)};
+    T fov = T(40);
+
+    /// Throws std::invalid_argument for non-finite fields, position == look_at, an up
+    /// vector parallel to the view direction, or a field of view outside (0, 180).
+    void validate() const
+    {
+        detail::require_finite("Camera position", position);
+        detail::require_finite("Camera look_at", look_at);
+        detail::require_nonzero("Camera up", up);
+        detail::require_finite("Camera fov", fov);
+        if (position == look_at) detail::throw_invalid("Camera position and look_at must differ, both are ", detail::describe(position));
+        if (!(fov > T(0) && fov < T(180))) detail::throw_invalid("Camera fov must be in (0, 180) degrees, got ", fov);
+        const Vec3<T> forward = normalize(look_at - position);
+        const Vec3<T> side = cross(forward, normalize(up));
+        if (!(length(side) > T(1e-6))) detail::throw_invalid("Camera up ", detail::describe(up), " is parallel to the view direction");
+    }
+
+    /// The rays for a width x height image; validates the camera and the size.
+    [[nodiscard]] CameraRays<T> rays(int width, int height) const
+    {
+        validate();
+        if (width <= 0 || height <= 0) detail::throw_invalid("image size must be positive, got ", width, " x ", height);
+        const Vec3<T> forward = normalize(look_at - position);
+        const Vec3<T> right = normalize(cross(forward, up));
+        const Vec3<T> true_up = cross(right, forward);
+        const T half_width = std::tan(T(0.5) * fov * pi<T> / T(180));
+        const T half_height = half_width * T(height) / T(width);
+        CameraRays<T> out;
+        out.origin = position;
+        out.top_left = forward - half_width * right + half_height * true_up;
+        out.pixel_right = (T(2) * half_width / T(width)) * right;
+        out.pixel_down = (-T(2) * half_height / T(height)) * true_up;
+        return out;
+    }
+};
+
+} // namespace prism

@@ -1,0 +1,161 @@
+// SPDX-License-Identifier: MIT
+// Scene: lights and object slots fixed at compile time; closest-hit and shadow queries.
+#pragma once
+
+#include <prism/core/check.hpp>
+#include <prism/core/interval.hpp>
+#include <prism/light/light.hpp>
+#include <prism/optics/beer.hpp>
+#include <prism/scene/hit.hpp>
+#include <prism/scene/object.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <tuple>
+#include <utility>
+
+namespace prism {
+
+/// The lights of a scene, each of its own type.
+template <Light... Ls>
+struct Lights {
+    std::tuple<Ls...> items;
+
+    constexpr explicit Lights(Ls... lights) : items(std::move(lights)...)
+    {
+        std::apply([](const auto&... light) { (light.validate(), ...); }, items);
+    }
+};
+
+/// A scene: its lights, object slots (one type each), background and ambient radiance.
+/// Which shapes and materials exist is part of the type, so integrators compile only
+/// the code those materials need.
+template <class LightList, Slot... Slots>
+class Scene {
+    static_assert(sizeof...(Slots) > 0, "a scene needs at least one object");
+
+public:
+    using scalar_type = typename std::tuple_element_t<0, std::tuple<Slots...>>::scalar_type;
+    using T = scalar_type;
+    static_assert((std::same_as<typename Slots::scalar_type, T> && ...), "all objects must share one scalar type");
+
+    /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
+    static constexpr bool has_transmissive = (transmits<typename Slots::material_type> || ...);
+    /// Some material has a mirror lobe.
+    static constexpr bool has_specular = (reflects<typename Slots::material_type> || ...) || has_transmissive;
+    static constexpr std::size_t slot_count = sizeof...(Slots);
+
+    // Scene Public Members
+
+    LightList lights;
+    std::tuple<Slots...> slots;
+    Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
+    Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
+
+    constexpr Scene(LightList light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...) {}
+
+    constexpr void validate() const
+    {
+        detail::require_non_negative("Scene background", background);
+        detail::require_non_negative("Scene ambient", ambient);
+    }
+
+    // Scene Queries
+
+    /// The closest crossing with t inside `range`.
+    [[nodiscard]] std::optional<Hit<T>> closest_hit(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        std::optional<Hit<T>> best;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (closest_in_slot<I>(ray, range, best), ...);
+        }(std::index_sequence_for<Slots...>{});
+        return best;
+    }
+
+    /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
+    /// object is in the way, otherwise Beer-Lambert absorption (times kt per boundary)
+    /// through every dielectric crossed, refraction ignored (the lecture notes' shadow
+    /// rays through transparent objects).
+    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
+    {
+        Rgb<T> tr{T(1)};
+        const bool open = [&]<std::size_t... I>(std::index_sequence<I...>) {
+            return (transmittance_of_slot<I>(ray, t_max, tr) && ...);
+        }(std::index_sequence_for<Slots...>{});
+        return open ? tr : Rgb<T>{T(0)};
+    }
+
+    /// Call f(material) with the material of the hit object, with its static type.
+    template <class F>
+    decltype(auto) visit_material(const Hit<T>& hit, F&& f) const
+    {
+        return visit_slot<0>(hit, std::forward<F>(f));
+    }
+
+    /// Call f(light) for every light.
+    template <class F>
+    void for_each_light(F&& f) const
+    {
+        std::apply([&](const auto&... light) { (f(light), ...); }, lights.items);
+    }
+
+private:
+    // Scene Private Methods
+
+    template <std::size_t I>
+    void closest_in_slot(const Ray<T>& ray, Interval<T>& range, std::optional<Hit<T>>& best) const noexcept
+    {
+        const auto objects = objects_of(std::get<I>(slots));
+        for (std::size_t k = 0; k < objects.size(); ++k) {
+            const auto crossings = objects[k].shape.crossings(ray, range);
+            if (crossings.empty()) continue;
+            best = Hit<T>{crossings.front(), static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k)};
+            range.max = crossings.front().t;
+        }
+    }
+
+    template <std::size_t I>
+    bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr) const noexcept
+    {
+        using Slot = std::tuple_element_t<I, std::tuple<Slots...>>;
+        using M = typename Slot::material_type;
+        const Interval<T> range{T(0), t_max};
+        for (const auto& object : objects_of(std::get<I>(slots))) {
+            const auto crossings = object.shape.crossings(ray, range);
+            if constexpr (!transmits<M>) {
+                if (!crossings.empty()) return false;
+            } else {
+                // Length of the ray inside the solid within [0, t_max].
+                bool inside = crossings.inside_at_start;
+                T previous = T(0), inside_length = T(0);
+                for (const Crossing<T>& c : crossings) {
+                    if (inside) inside_length += c.t - previous;
+                    inside = c.entering;
+                    previous = c.t;
+                }
+                if (inside) inside_length += t_max - previous;
+                if (inside_length > T(0))
+                    tr *= beer_lambert(object.material.absorption, inside_length * length(ray.direction));
+                for (std::size_t k = 0; k < crossings.size(); ++k) tr *= object.material.kt;
+                if (max_component(tr) <= T(0)) return false;
+            }
+        }
+        return true;
+    }
+
+    template <std::size_t I, class F>
+    decltype(auto) visit_slot(const Hit<T>& hit, F&& f) const
+    {
+        if constexpr (I + 1 < sizeof...(Slots)) {
+            if (hit.slot != I) return visit_slot<I + 1>(hit, std::forward<F>(f));
+        }
+        PRISM_ASSERT(hit.slot == I);
+        return f(objects_of(std::get<I>(slots))[hit.index].material);
+    }
+};
+
+template <class LightList, class... Slots>
+Scene(LightList, Slots...) -> Scene<LightList, Slots...>;
+
+} // namespace prism
