@@ -2,12 +2,14 @@
 // prism configuration: the PRISM_ macros and the one place GLM is included.
 //
 // GLM 0.9.9.8 makes vector construction and arithmetic constexpr only when its SIMD
-// architecture bit is off, which on x86-64 means GLM_FORCE_PURE must be defined before
-// the first GLM include. prism defines it when it is first to include GLM (and the
-// CMake/meson targets define it for every translation unit, so all of them agree).
-// When a user included GLM earlier without it, prism still compiles and renders the
-// same bits; only its constant-expression features are off, and
-// PRISM_CONSTEXPR_VECTORS says so (0).
+// architecture bit is off. That bit is set when GLM_FORCE_INTRINSICS, or any of
+// GLM_FORCE_SSE2 ... GLM_FORCE_AVX2, is defined, and GLM_FORCE_PURE overrides them all
+// (checked here on Debian's libglm-dev 0.9.9.8 with g++ 12: a plain include is
+// constexpr; one with GLM_FORCE_INTRINSICS is not). prism defines GLM_FORCE_PURE when
+// it is first to include GLM, and its CMake and meson targets define it for every
+// translation unit, so all of them see the same GLM. When a user included GLM earlier
+// with intrinsics forced, prism still compiles and renders the same bits; only its
+// constant-expression features are off, and PRISM_CONSTEXPR_VECTORS says so (0).
 #pragma once
 
 #if !defined(GLM_VERSION) && !defined(GLM_FORCE_PURE)

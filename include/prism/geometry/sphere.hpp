@@ -54,7 +54,8 @@ public:
         if (!(disc > T(0))) return out;
 
         // Stable roots: q = -(h + sign(h) sqrt(disc)), t = q / a and c / q.
-        const T q = -(h + std::copysign(prism::sqrt(disc), h));
+        const T root = prism::sqrt(disc);
+        const T q = -(h >= T(0) ? h + root : h - root);
         T t0 = q / a;
         T t1 = q != T(0) ? c / q : -t0;
         if (t0 > t1) std::swap(t0, t1);

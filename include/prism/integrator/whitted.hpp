@@ -15,6 +15,7 @@
 #include <prism/core/check.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/core/rng.hpp>
+#include <prism/geometry/crossings.hpp>
 #include <prism/light/light.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/optics/beer.hpp>

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+#include <prism/geometry/box.hpp>
+
+#include "../support.hpp"
+
+using prism::Box;
+using prism::Interval;
+using prism::Vec3;
+
+#if PRISM_CONSTEXPR_VECTORS
+constexpr auto box_hits = Box<float>({-1, -1, -1}, {1, 1, 1}).crossings({{-3, 0.5f, 0}, {1, 0, 0}}, Interval<float>::universe());
+static_assert(box_hits.size() == 2 && box_hits[0].t == 2 && box_hits[1].t == 4 && box_hits[0].normal.x == -1);
+#endif
+
+TEST_CASE_TEMPLATE("ray-box crossings and face normals", T, float, double)
+{
+    const Box<T> box({T(2), T(0), T(-1)}, {T(0), T(1), T(1)}); // corners in any order
+    CHECK(box.lo() == Vec3<T>{0, 0, -1});
+    const auto c = box.crossings({{T(1), T(3), T(0)}, {T(0), T(-1), T(0)}}, Interval<T>::universe());
+    REQUIRE(c.size() == 2);
+    CHECK(c[0].t == doctest::Approx(2));
+    CHECK(c[0].normal == Vec3<T>{0, 1, 0});
+    CHECK(c[0].point.y == T(1));
+    CHECK(c[1].t == doctest::Approx(3));
+    CHECK(c[1].normal == Vec3<T>{0, -1, 0});
+    // Diagonal: enters through x = 0 at t = 1 (the last slab entered), leaves through z = 1.
+    const auto d = box.crossings({{T(-1), T(0.5), T(0)}, {T(1), T(0), T(0.25)}}, Interval<T>::universe());
+    REQUIRE(d.size() == 2);
+    CHECK(d[0].t == doctest::Approx(1));
+    CHECK(d[0].normal == Vec3<T>{-1, 0, 0});
+    CHECK(d[1].t == doctest::Approx(3));
+    CHECK(d[1].normal == Vec3<T>{1, 0, 0});
+    // From inside.
+    const auto in = box.crossings({{T(1), T(0.5), T(0)}, {T(0), T(0), T(1)}}, {T(0), prism::infinity<T>});
+    CHECK(in.inside_at_start);
+    REQUIRE(in.size() == 1);
+    CHECK(in[0].normal == Vec3<T>{0, 0, 1});
+    // Parallel to a face, outside it.
+    CHECK(box.crossings({{T(1), T(2), T(-5)}, {T(0), T(0), T(1)}}, Interval<T>::universe()).empty());
+}
+
+TEST_CASE_TEMPLATE("a ray leaving a box never hits it again", T, float, double)
+{
+    prism::Pcg32 rng(4u, 4u);
+    for (double distance : {1.0, 1e3, 1e5}) {
+        int self_hits = 0;
+        for (int i = 0; i < 4000; ++i) {
+            const Vec3<T> centre = test::random_point<T>(rng, T(distance));
+            const Vec3<T> half{T(0.2) + rng.uniform<T>(), T(0.2) + rng.uniform<T>(), T(0.2) + rng.uniform<T>()};
+            const Box<T> box(centre - half, centre + half);
+            const Vec3<T> o = centre + test::random_direction<T>(rng) * T(5);
+            const auto c = box.crossings({o, prism::normalize(centre - o)}, {T(0), prism::infinity<T>});
+            if (c.empty()) continue;
+            const Vec3<T> w = test::random_hemisphere<T>(rng, c[0].normal);
+            self_hits += !box.crossings(prism::spawn_ray(c[0].point, c[0].error, c[0].normal, w), {T(0), prism::infinity<T>}).empty();
+        }
+        INFO("distance " << distance);
+        CHECK(self_hits == 0);
+    }
+}
+
+TEST_CASE("bad input names the parameter")
+{
+    CHECK_THROWS_WITH_AS(Box<float>({0, 0, 0}, {1, 0, 1}), doctest::Contains("Box extent"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Box<float>({0, 0, std::nanf("")}, {1, 1, 1}), doctest::Contains("Box corner_a"), std::invalid_argument);
+}

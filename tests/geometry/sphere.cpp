@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+#include <prism/geometry/sphere.hpp>
+
+#include "../support.hpp"
+
+#include <cmath>
+
+using prism::Interval;
+using prism::Ray;
+using prism::Sphere;
+using prism::Vec3;
+
+#if PRISM_CONSTEXPR_VECTORS
+// Ray-sphere crossings in a constant expression: the unit sphere from z = -5.
+constexpr auto unit_hits = Sphere<double>({0, 0, 0}, 1).crossings({{0, 0, -5}, {0, 0, 1}}, Interval<double>::universe());
+static_assert(unit_hits.size() == 2 && unit_hits[0].t == 4 && unit_hits[1].t == 6);
+static_assert(unit_hits[0].entering && !unit_hits[1].entering);
+#endif
+
+TEST_CASE_TEMPLATE("ray-sphere crossings against hand-solved values", T, float, double)
+{
+    // Sphere at (1, 2, 3), radius 2; a ray along z with a direction of length 2.
+    const Sphere<T> sphere({T(1), T(2), T(3)}, T(2));
+    const auto c = sphere.crossings({{T(1), T(2), T(-10)}, {T(0), T(0), T(2)}}, Interval<T>::universe());
+    REQUIRE(c.size() == 2);
+    CHECK(c[0].t == doctest::Approx(5.5));
+    CHECK(c[1].t == doctest::Approx(7.5));
+    CHECK(c[0].entering);
+    CHECK_FALSE(c[1].entering);
+    CHECK(c[0].normal.z == doctest::Approx(-1));
+    CHECK(c[1].normal.z == doctest::Approx(1));
+    CHECK(c[0].point.z == doctest::Approx(1));
+
+    // Off-axis: the ray x = 1 + 1 meets the sphere where (z - 3)^2 = 4 - 1, z = 3 -+ sqrt(3).
+    const auto d = sphere.crossings({{T(2), T(2), T(0)}, {T(0), T(0), T(1)}}, Interval<T>::universe());
+    REQUIRE(d.size() == 2);
+    CHECK(d[0].t == doctest::Approx(3 - std::sqrt(3.0)));
+    CHECK(d[1].t == doctest::Approx(3 + std::sqrt(3.0)));
+    CHECK(d[0].normal.x == doctest::Approx(0.5));
+}
+
+TEST_CASE_TEMPLATE("ranges, inside starts, misses and tangents", T, float, double)
+{
+    const Sphere<T> sphere({T(0), T(0), T(0)}, T(1));
+    const Ray<T> from_centre{{T(0), T(0), T(0)}, {T(1), T(0), T(0)}};
+    const auto inside = sphere.crossings(from_centre, {T(0), prism::infinity<T>});
+    CHECK(inside.inside_at_start);
+    REQUIRE(inside.size() == 1);
+    CHECK(inside[0].t == doctest::Approx(1));
+    CHECK_FALSE(inside[0].entering);
+
+    const Ray<T> along_z{{T(0), T(0), T(-5)}, {T(0), T(0), T(1)}};
+    CHECK(sphere.crossings(along_z, {T(0), T(4)}).empty());     // stops short
+    CHECK(sphere.crossings(along_z, {T(4.5), T(5.5)}).empty()); // starts and ends inside
+    CHECK(sphere.crossings(along_z, {T(4.5), T(5.5)}).inside_at_start);
+    CHECK(sphere.crossings({{T(0), T(2), T(-5)}, {T(0), T(0), T(1)}}, Interval<T>::universe()).empty()); // miss
+    // Exactly tangent: a double root is a touch, not a crossing.
+    const auto tangent = sphere.crossings({{T(1), T(0), T(-5)}, {T(0), T(0), T(1)}}, Interval<T>::universe());
+    CHECK(tangent.empty());
+    CHECK_FALSE(tangent.inside_at_start);
+}
+
+TEST_CASE_TEMPLATE("grazing rays: both crossings found, in order, close to the exact roots", T, float, double)
+{
+    const Sphere<T> sphere({T(0), T(0), T(0)}, T(1));
+    for (double miss : {1e-1, 1e-3, 1e-5}) {
+        // A ray at distance 1 - miss from the centre: roots at -+ sqrt(1 - (1 - miss)^2) about z = 0.
+        const T y = T(1 - miss);
+        const auto c = sphere.crossings({{T(0), y, T(-10)}, {T(0), T(0), T(1)}}, Interval<T>::universe());
+        const double half = std::sqrt(1 - double(y) * double(y));
+        if (half < 1e-6) continue; // the chord is below float resolution at this y
+        REQUIRE(c.size() == 2);
+        CHECK(c[0].t < c[1].t);
+        CHECK(std::abs(c[0].t - (10 - half)) < 1e-5 * 10 + 1e-3 * half);
+    }
+}
+
+TEST_CASE_TEMPLATE("the refined point lies within its error bound of the true surface", T, float, double)
+{
+    prism::Pcg32 rng(11u, 2u);
+    for (double distance : {1.0, 1e3, 1e5}) {
+        const Sphere<T> sphere({T(distance), T(-distance / 2), T(distance / 3)}, T(1.5));
+        for (int i = 0; i < 2000; ++i) {
+            const Vec3<T> o = sphere.center() + test::random_direction<T>(rng) * T(4);
+            const Vec3<T> target = sphere.center() + test::random_point<T>(rng, T(1));
+            const auto c = sphere.crossings({o, prism::normalize(target - o)}, Interval<T>::universe());
+            for (const auto& x : c) {
+                // Distance from the surface, in long double.
+                long double r2 = 0;
+                for (int k = 0; k < 3; ++k) {
+                    const long double q = (long double)x.point[k] - (long double)sphere.center()[k];
+                    r2 += q * q;
+                }
+                const long double off = std::abs(std::sqrt(r2) - 1.5L);
+                const long double bound = prism::dot(prism::abs(x.normal), x.error) + 1e-30L;
+                CHECK(off <= bound * 1.0001L);
+            }
+        }
+    }
+}
+
+TEST_CASE_TEMPLATE("a ray leaving a sphere never hits it again (TestReintersectConvex)", T, float, double)
+{
+    prism::Pcg32 rng(5u, 9u);
+    for (double distance : {1.0, 1e3, 1e4, 1e5}) {
+        int self_hits = 0;
+        for (int i = 0; i < 4000; ++i) {
+            const Vec3<T> centre = test::random_point<T>(rng, T(distance));
+            const T radius = T(0.1) + T(2) * rng.uniform<T>();
+            const Sphere<T> sphere(centre, radius);
+            const Vec3<T> o = centre + test::random_direction<T>(rng) * (radius * T(3));
+            const Vec3<T> target = centre + test::random_point<T>(rng, radius * T(0.5));
+            const auto c = sphere.crossings({o, prism::normalize(target - o)}, {T(0), prism::infinity<T>});
+            if (c.empty()) continue;
+            const auto& hit = c.front();
+            const Vec3<T> w = test::random_hemisphere<T>(rng, hit.normal); // leave outward
+            const prism::Ray<T> out = prism::spawn_ray(hit.point, hit.error, hit.normal, w);
+            self_hits += !sphere.crossings(out, {T(0), prism::infinity<T>}).empty();
+        }
+        INFO("distance from origin " << distance);
+        CHECK(self_hits == 0);
+    }
+}
+
+TEST_CASE("bad input names the parameter")
+{
+    CHECK_THROWS_WITH_AS(Sphere<float>({0, 0, 0}, -1.0f), doctest::Contains("Sphere radius"), std::invalid_argument);
+    CHECK_THROWS_AS(Sphere<float>({0, 0, 0}, 0.0f), std::invalid_argument);
+    CHECK_THROWS_AS(Sphere<double>({0, 0, 0}, std::nan("")), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Sphere<float>({0, std::numeric_limits<float>::infinity(), 0}, 1.0f),
+                         doctest::Contains("Sphere center"), std::invalid_argument);
+}

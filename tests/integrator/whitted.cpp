@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: MIT
+#include <prism/integrator/whitted.hpp>
+#include <prism/prism.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+using namespace prism;
+using doctest::Approx;
+
+TEST_CASE_TEMPLATE("a diffuse plane under a point light: L = albedo kd I cos / (pi r^2)", T, float, double)
+{
+    const Vec3<T> light_at{T(0.5), T(4), T(-1)};
+    const T intensity = T(10), albedo = T(0.5), kd = T(0.8);
+    const Scene scene{Lights{PointLight<T>{.position = light_at, .intensity = Rgb<T>(intensity)}},
+                      Object{Plane<T>({T(0), T(1), T(0)}, T(0)), Diffuse<T>{.albedo = {.color = Rgb<T>(albedo)}, .kd = kd, .ka = T(1)}}};
+    const Whitted integrator(scene);
+    const Camera<T> camera{.position = {T(0), T(2), T(5)}, .look_at = {T(0), T(0), T(0)}, .fov = T(50)};
+    const int width = 64, height = 48;
+    const Film film = render(camera, integrator, {.width = width, .height = height, .spp = 1, .threads = 2, .progress = false});
+    const auto rays = camera.rays(width, height);
+    int checked = 0;
+    for (int y = 20; y < height; y += 7)
+        for (int x = 1; x < width; x += 9) {
+            // Solve the camera ray against y = 0 independently, in double.
+            const Ray<T> ray = rays.ray(T(x) + T(0.5), T(y) + T(0.5));
+            if (ray.direction.y >= 0) continue;
+            const double t = -double(ray.origin.y) / ray.direction.y;
+            const double px = ray.origin.x + t * ray.direction.x, pz = ray.origin.z + t * ray.direction.z;
+            const double dx = light_at.x - px, dy = light_at.y, dz = light_at.z - pz;
+            const double r2 = dx * dx + dy * dy + dz * dz;
+            const double expected = albedo * kd / std::acos(-1.0) * intensity * (dy / std::sqrt(r2)) / r2;
+            CHECK(film.at(x, y).x == Approx(expected).epsilon(1e-4));
+            CHECK(film.at(x, y).z == Approx(expected).epsilon(1e-4));
+            ++checked;
+        }
+    CHECK(checked > 10);
+}
+
+TEST_CASE("ambient appears only where every light is occluded")
+{
+    // Two lights; a ball hides the first from the origin, a wall hides the second from x = 3.
+    const Rgb<double> ambient{0.2, 0.2, 0.2};
+    Scene scene{Lights{PointLight<double>{.position = {0, 5, 0}, .intensity = Rgb<double>(25)},
+                       PointLight<double>{.position = {3, 5, 0}, .intensity = Rgb<double>(25)}},
+                Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(0.5)}, .kd = 1, .ka = 1}},
+                Object{Sphere<double>({0, 2.5, 0}, 0.5), Diffuse<double>{.albedo = {.color = Rgb<double>(0)}, .kd = 0, .ka = 0}}};
+    scene.ambient = ambient;
+    const Whitted integrator(scene);
+    const auto look_down_at = [&](double x) { return integrator.radiance({{x, 0.5, 0.001}, normalize(Vec3<double>{0, -0.5, -0.001})}); };
+    // At the origin: the first light is blocked, the second is not: no ambient, one light's share.
+    const double r2 = 9 + 25, cos = 5 / std::sqrt(r2);
+    CHECK(look_down_at(0).x == Approx(0.5 / std::acos(-1.0) * 25 * cos / r2).epsilon(1e-3));
+    // Directly below the ball at x = 0 but with the second light blocked too: ambient only.
+    Scene one_light{Lights{PointLight<double>{.position = {0, 5, 0}, .intensity = Rgb<double>(25)}},
+                    Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(0.5)}, .kd = 1, .ka = 1}},
+                    Object{Sphere<double>({0, 2.5, 0}, 0.5), Diffuse<double>{.albedo = {.color = Rgb<double>(0)}, .kd = 0, .ka = 0}}};
+    one_light.ambient = ambient;
+    const Whitted shadowed(one_light);
+    CHECK(shadowed.radiance({{0, 0.5, 0.001}, normalize(Vec3<double>{0, -0.5, -0.001})}).x == Approx(0.5 * 0.2));
+}
+
+TEST_CASE("Beer-Lambert on shadow rays: light through an absorbing slab is attenuated by exp(-sigma x)")
+{
+    const Rgb<double> sigma{1.0, 2.0, 0.5};
+    const double thickness = 0.5;
+    const Scene scene{Lights{PointLight<double>{.position = {0, 4, 0}, .intensity = Rgb<double>(16)}},
+                      Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(1)}, .kd = 1, .ka = 0}},
+                      Object{Box<double>({-5, 1, -5}, {5, 1 + thickness, 5}), Dielectric<double>{.ior = 1.5, .absorption = sigma}}};
+    const Whitted integrator(scene);
+    const auto l = integrator.radiance({{0.3, 0.5, 0}, normalize(Vec3<double>{-0.3, -0.5, 0})});
+    const double unshadowed = 1 / std::acos(-1.0) * 16 / 16; // E = I / r^2 = 1 at normal incidence
+    CHECK(l.x == Approx(unshadowed * std::exp(-1.0 * thickness)));
+    CHECK(l.y == Approx(unshadowed * std::exp(-2.0 * thickness)));
+    CHECK(l.z == Approx(unshadowed * std::exp(-0.5 * thickness)));
+}
+
+TEST_CASE("mirror and Fresnel weights against the closed forms")
+{
+    // A constant-kr mirror ball reflects the background: L = kr B.
+    Scene mirror{Lights{PointLight<double>{}}, Object{Sphere<double>({0, 0, -5}, 1), Mirror<double>{{.kr = {0.9, 0.5, 0.1}}}}};
+    mirror.background = {2, 2, 2};
+    const auto m = Whitted(mirror).radiance({{0.3, 0.2, 0}, normalize(Vec3<double>{-0.3, -0.2, -5})});
+    CHECK(m.x == Approx(1.8));
+    CHECK(m.z == Approx(0.2));
+
+    // Glass with kt = 0 seen at 45 degrees reflects F(45 deg) = 0.0502399 of the sky.
+    Scene glass{Lights{PointLight<double>{.position = {0, -10, 0}}}, Object{Plane<double>({0, 1, 0}, 0), Dielectric<double>{.ior = 1.5, .kt = 0}}};
+    glass.background = {1, 1, 1};
+    const auto g = Whitted(glass).radiance({{-1, 1, 0}, normalize(Vec3<double>{1, -1, 0})});
+    CHECK(g.x == Approx(0.05023991).epsilon(1e-6));
+}
+
+TEST_CASE("an absorbing glass slab at normal incidence: B [R + (1-R)^2 e^-sd / (1 - R e^-sd)], all orders")
+{
+    // Every inter-reflection inside the slab is followed (Stokes' series of the slab).
+    const double sigma = 1.0, d = 1.0, r = 0.04;
+    Scene slab{Lights{PointLight<double>{.position = {0, 50, 50}, .intensity = Rgb<double>(0)}},
+               Object{Box<double>({-100, -100, -d}, {100, 100, 0}), Dielectric<double>{.ior = 1.5, .absorption = Rgb<double>(sigma)}}};
+    slab.background = {1, 1, 1};
+    const Whitted integrator(slab, {.max_depth = 60, .min_weight = 0});
+    const double e = std::exp(-sigma * d);
+    const double expected = r + (1 - r) * (1 - r) * e / (1 - r * e);
+    CHECK(integrator.radiance({{0, 0, 5}, {0, 0, -1}}).x == Approx(expected).epsilon(1e-9));
+    // Without absorption all light comes back out, whichever way: L = B.
+    Scene clear{Lights{PointLight<double>{.intensity = Rgb<double>(0)}},
+                Object{Box<double>({-100, -100, -d}, {100, 100, 0}), Dielectric<double>{.ior = 1.5}}};
+    clear.background = {1, 1, 1};
+    CHECK(Whitted(clear, {.max_depth = 60, .min_weight = 0}).radiance({{0, 0, 5}, {0, 0, -1}}).x == Approx(1).epsilon(1e-9));
+}
+
+TEST_CASE("depth limit and adaptive cut-off end the recursion")
+{
+    // Two facing mirrors with kr = 0.5 in front of a lit background: each bounce halves.
+    Scene corridor{Lights{PointLight<double>{.intensity = Rgb<double>(0)}},
+                   Object{Box<double>({-10, -10, -11}, {10, 10, -10}), Mirror<double>{{.kr = Rgb<double>(0.5)}}}};
+    corridor.background = {1, 1, 1};
+    // One bounce then background: 0.5.
+    CHECK(Whitted(corridor, {.max_depth = 1}).radiance({{0, 0, 0}, {0, 0, -1}}).x == Approx(0.5));
+    CHECK(Whitted(corridor, {.max_depth = 0}).radiance({{0, 0, 0}, {0, 0, -1}}).x == 0);
+    // A weight of 0.5 is below a cut-off of 0.6: the branch is dropped.
+    CHECK(Whitted(corridor, {.max_depth = 5, .min_weight = 0.6}).radiance({{0, 0, 0}, {0, 0, -1}}).x == 0);
+    CHECK_THROWS_AS(Whitted(corridor, {.max_depth = -1}), std::invalid_argument);
+}

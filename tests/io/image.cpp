@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+#include <prism/io/image.hpp>
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+prism::Film gradient()
+{
+    prism::Film film(7, 5);
+    for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 7; ++x) film.set(x, y, prism::Rgb<float>{float(x) * 0.1f, float(y) * 0.3f, 1e-3f * float(x * y) + 2.0f});
+    return film;
+}
+
+fs::path scratch()
+{
+    const fs::path dir = fs::temp_directory_path() / "prism-io-test";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+} // namespace
+
+TEST_CASE("PFM round-trips every float exactly")
+{
+    const fs::path dir = scratch();
+    const prism::Film film = gradient();
+    prism::write_image(film, dir / "g.pfm");
+    const prism::Film back = prism::read_pfm(dir / "g.pfm");
+    REQUIRE(back.width() == 7);
+    REQUIRE(back.height() == 5);
+    for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 7; ++x) CHECK(back.at(x, y) == film.at(x, y));
+}
+
+TEST_CASE("PNG is sRGB-encoded and complete")
+{
+    const fs::path dir = scratch();
+    prism::Film film(2, 1);
+    film.set(0, 0, prism::Rgb<float>{0.0f, 0.5f, 1.0f});
+    film.set(1, 0, prism::Rgb<float>{0.0031308f, 0.2f, 5.0f});
+    const auto bytes = prism::to_srgb8(film);
+    // IEC 61966-2-1: sRGB(0.5) = 0.7354 -> 188; sRGB(0.0031308) = 0.04045 -> 10;
+    // sRGB(0.2) = 0.4848 -> 124; above 1 clamps to 255.
+    CHECK(bytes == std::vector<unsigned char>{0, 188, 255, 10, 124, 255});
+    prism::write_image(film, dir / "x.png");
+    std::ifstream in(dir / "x.png", std::ios::binary);
+    const std::vector<unsigned char> file{std::istreambuf_iterator<char>(in), {}};
+    REQUIRE(file.size() > 8);
+    CHECK(file[1] == 'P');
+    CHECK(file[2] == 'N');
+    CHECK(file[3] == 'G');
+}
+
+TEST_CASE("a failed write throws with the path and the reason and leaves no file")
+{
+    const fs::path dir = scratch();
+    const prism::Film film = gradient();
+    const fs::path missing = dir / "no" / "such" / "folder" / "x.png";
+    CHECK_THROWS_WITH_AS(prism::write_png(film, missing), doctest::Contains(missing.c_str()), std::runtime_error);
+    CHECK_THROWS_WITH_AS(prism::write_png(film, missing), doctest::Contains("No such file"), std::runtime_error);
+    // The target is a directory: the bytes are written to a temporary file, then the
+    // rename fails, and the temporary must be gone.
+    fs::create_directories(dir / "taken.png");
+    CHECK_THROWS_AS(prism::write_png(film, dir / "taken.png"), std::runtime_error);
+    CHECK_THROWS_AS(prism::write_pfm(film, dir / "taken.png"), std::runtime_error);
+    int files = 0;
+    for ([[maybe_unused]] const auto& entry : fs::recursive_directory_iterator(dir)) files += entry.is_regular_file();
+    CHECK(files == 0);
+    CHECK_THROWS_WITH_AS(prism::write_image(film, dir / "x.tiff"), doctest::Contains("unknown image extension"), std::runtime_error);
+    CHECK_THROWS_AS((void)prism::read_pfm(dir / "absent.pfm"), std::runtime_error);
+}

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: MIT
+#include <prism/material/dielectric.hpp>
+#include <prism/scene/object.hpp>
+#include <prism/geometry/sphere.hpp>
+
+#include <doctest/doctest.h>
+
+using prism::Dielectric;
+
+static_assert(prism::transmits<Dielectric<float>> && prism::reflects<Dielectric<float>>);
+static_assert(prism::is_delta<Dielectric<double, prism::SchlickFresnel>>);
+
+TEST_CASE("the Fresnel policy decides the reflectance")
+{
+    const Dielectric<double> exact{.ior = 1.5};
+    const Dielectric<double, prism::SchlickFresnel> schlick{.ior = 1.5};
+    CHECK(exact.fresnel(1.0, 1.5) == doctest::Approx(0.04));
+    CHECK(schlick.fresnel(1.0, 1.5) == doctest::Approx(0.04));
+    CHECK(exact.fresnel(0.3, 1.5) != schlick.fresnel(0.3, 1.5));
+}
+
+TEST_CASE("bad input names the parameter")
+{
+    const prism::Sphere<float> s({0, 0, 0}, 1);
+    CHECK_THROWS_WITH_AS(prism::Object(s, Dielectric<float>{.ior = 0}), doctest::Contains("Dielectric ior"), std::invalid_argument);
+    CHECK_THROWS_AS(prism::Object(s, Dielectric<float>{.ior = -1.5f}), std::invalid_argument);
+    CHECK_THROWS_AS(prism::Object(s, Dielectric<float>{.ior = std::nanf("")}), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(prism::Object(s, Dielectric<float>{.absorption = {0, -1, 0}}), doctest::Contains("absorption"),
+                         std::invalid_argument);
+}

@@ -1,0 +1,15 @@
+// SPDX-License-Identifier: MIT
+#include <prism/material/texture.hpp>
+
+#include <doctest/doctest.h>
+
+TEST_CASE("checker cells alternate across every axis, including negative coordinates")
+{
+    const prism::Checker<double> c{.even = {1, 1, 1}, .odd = {0, 0, 0}, .size = 2};
+    CHECK(c.albedo({0.5, 0, 0.5}).x == 1);
+    CHECK(c.albedo({2.5, 0, 0.5}).x == 0);
+    CHECK(c.albedo({-0.5, 0, 0.5}).x == 0); // floor(-0.25) = -1
+    CHECK(c.albedo({-2.5, 0, -2.5}).x == 1);
+    CHECK(c.albedo({0.5, 2.5, 0.5}).x == 0);
+    CHECK_THROWS_AS((prism::Checker<float>{.size = 0}.validate()), std::invalid_argument);
+}

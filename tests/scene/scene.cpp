@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+#include <prism/scene/scene.hpp>
+#include <prism/prism.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+using namespace prism;
+
+namespace {
+
+auto test_scene()
+{
+    using Ball = Object<Sphere<double>, Diffuse<double>>;
+    ObjectArray<Sphere<double>, Diffuse<double>> balls{{
+        Ball{Sphere<double>({0, 0, -10}, 1), Diffuse<double>{.albedo = {.color = {1, 0, 0}}}},
+        Ball{Sphere<double>({0, 0, -5}, 1), Diffuse<double>{.albedo = {.color = {0, 1, 0}}}},
+    }};
+    return Scene{Lights{PointLight<double>{.position = {0, 10, 0}}}, std::move(balls),
+                 Object{Sphere<double>({0, 0, -7}, 1), Mirror<double>{}},
+                 Object{Sphere<double>({5, 0, 0}, 1), Dielectric<double>{.ior = 1.5, .absorption = {0.5, 1.0, 0.0}}}};
+}
+
+} // namespace
+
+TEST_CASE("closest_hit finds the nearest object over every slot and array element")
+{
+    const auto scene = test_scene();
+    const auto hit = scene.closest_hit({{0, 0, 0}, {0, 0, -1}}, {0, infinity<double>});
+    REQUIRE(hit);
+    CHECK(hit->crossing.t == doctest::Approx(4));
+    CHECK(hit->slot == 0);
+    CHECK(hit->index == 1);
+    const std::string kind = scene.visit_material(*hit, []<class M>(const M& m) -> std::string {
+        if constexpr (has_diffuse<M>) return m.albedo.color.y == 1 ? "green diffuse" : "other diffuse";
+        else return "specular";
+    });
+    CHECK(kind == "green diffuse");
+    // Beyond the green ball the mirror ball is next.
+    const auto second = scene.closest_hit({{0, 0, 0}, {0, 0, -1}}, {4.5, infinity<double>});
+    REQUIRE(second);
+    CHECK(second->crossing.t == doctest::Approx(6)); // leaving the green ball at z = -6
+}
+
+TEST_CASE("transmittance: opaque blocks, a dielectric absorbs by Beer-Lambert along the chord")
+{
+    const auto scene = test_scene();
+    CHECK(scene.transmittance({{0, 0, 0}, {0, 0, -1}}, 100).x == 0);
+    CHECK(scene.transmittance({{0, 0, 0}, {0, 0, -1}}, 3.9).x == 1); // stops before the first ball
+    // Through the glass ball at x = 5 along its diameter: chord 2.
+    const auto tr = scene.transmittance({{0, 0, 0}, {1, 0, 0}}, 100);
+    CHECK(tr.x == doctest::Approx(std::exp(-1.0)));
+    CHECK(tr.y == doctest::Approx(std::exp(-2.0)));
+    CHECK(tr.z == doctest::Approx(1));
+    // Ending inside the glass: half the chord.
+    CHECK(scene.transmittance({{0, 0, 0}, {1, 0, 0}}, 5).y == doctest::Approx(std::exp(-1.0)));
+}
+
+TEST_CASE("background and ambient are validated")
+{
+    auto scene = test_scene();
+    scene.ambient = {0, -1, 0};
+    CHECK_THROWS_WITH_AS(scene.validate(), doctest::Contains("Scene ambient"), std::invalid_argument);
+}
