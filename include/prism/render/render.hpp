@@ -40,13 +40,15 @@ struct RenderConfig {
 namespace detail {
 
 /// Sub-pixel position of sample s of n: the centre when n = 1; otherwise jittered
-/// in an m x m grid of strata (m = floor(sqrt(n))), any further samples uniform.
+/// in an m x m grid of strata (m = floor(sqrt(n))), any further samples uniform. The
+/// jitter is drawn as float in every precision, so float and double renders of one
+/// seed sample the same positions and differ only by their arithmetic.
 template <Scalar T>
 [[nodiscard]] inline std::pair<T, T> pixel_sample(int s, int n, Pcg32& rng) noexcept
 {
     if (n == 1) return {T(0.5), T(0.5)};
     const int m = static_cast<int>(std::sqrt(static_cast<double>(n)));
-    const T u = rng.uniform<T>(), v = rng.uniform<T>();
+    const T u = T(rng.uniform<float>()), v = T(rng.uniform<float>());
     if (s < m * m) return {(T(s % m) + u) / T(m), (T(s / m) + v) / T(m)};
     return {u, v};
 }

@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Draw the README's charts from the CSVs in bench/results (Debian: python3-matplotlib).
+
+    bench/plot.py [results-folder]
+"""
+import csv
+import pathlib
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+RESULTS = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parent / "results")
+
+
+def read(name):
+    path = RESULTS / name
+    if not path.exists():
+        return None
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def save(fig, name):
+    fig.tight_layout()
+    fig.savefig(RESULTS / name, dpi=110)
+    plt.close(fig)
+    print(f"wrote {RESULTS / name}")
+
+
+def accuracy_charts(rows):
+    scenes = sorted({r["scene"] for r in rows})
+    # 1. float vs double and 2. Schlick vs exact: error against time, one panel per scene.
+    for name, key, variants in (
+        ("accuracy_float_vs_double.png", "scalar", [("float", "exact"), ("double", "exact")]),
+        ("accuracy_schlick_vs_exact.png", "fresnel", [("float", "exact"), ("float", "schlick")]),
+    ):
+        fig, axes = plt.subplots(1, len(scenes), figsize=(5.2 * len(scenes), 4.2), squeeze=False)
+        for ax, scene in zip(axes[0], scenes):
+            for scalar, fresnel in variants:
+                pts = [r for r in rows if r["scene"] == scene and r["scalar"] == scalar and r["fresnel"] == fresnel]
+                label = f"{scalar}, {fresnel} Fresnel"
+                t = [float(r["seconds"]) for r in pts]
+                ax.plot(t, [float(r["rmse"]) for r in pts], "o-", label=f"{label}: vs 1024-spp reference")
+                same = [max(float(r["rmse_same_samples"]), 1e-9) for r in pts]
+                if any(s > 1e-9 for s in same):
+                    ax.plot(t, same, "s--", label=f"{label}: vs double exact, same samples")
+                for r in pts:
+                    ax.annotate(f"{r['spp']} spp", (float(r["seconds"]), float(r["rmse"])), fontsize=7,
+                                textcoords="offset points", xytext=(4, 4))
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+            ax.set_xlabel("render time, 256x256, one thread (s)")
+            ax.set_ylabel("RMSE of linear radiance")
+            ax.set_title(f"{scene}: {key}")
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize=7)
+        save(fig, name)
+    # 3. samples per pixel against error.
+    fig, ax = plt.subplots(figsize=(5.5, 4.2))
+    for scene in scenes:
+        pts = [r for r in rows if r["scene"] == scene and r["scalar"] == "float" and r["fresnel"] == "exact"]
+        spp = [int(r["spp"]) for r in pts]
+        ax.plot(spp, [float(r["rmse"]) for r in pts], "o-", label=f"{scene}")
+    ref = [r for r in rows if r["scalar"] == "float" and r["fresnel"] == "exact" and r["spp"] == "4"]
+    if ref:
+        e4 = float(ref[0]["rmse"])
+        ax.plot([4, 64], [e4, e4 / 4], "k:", label="slope -1/2 (Monte Carlo)")
+        ax.plot([4, 64], [e4, e4 / 16], "k--", alpha=0.5, label="slope -1 (stratified edges)")
+    ax.set_xscale("log", base=2)
+    ax.set_yscale("log")
+    ax.set_xlabel("samples per pixel")
+    ax.set_ylabel("RMSE vs 1024-spp double reference")
+    ax.set_title("spp against error (float, exact Fresnel)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, "accuracy_spp.png")
+
+
+def acne_chart(rows):
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), sharey=True)
+    for ax, scalar in zip(axes, ("float", "double")):
+        for shape, marker in (("sphere", "o"), ("plane", "s"), ("box", "^")):
+            for method, style in (("robust", "-"), ("epsilon_1e-4", "--"), ("none", ":")):
+                pts = [r for r in rows if r["scalar"] == scalar and r["shape"] == shape and r["method"] == method
+                       and r["kind"] == "reflect"]
+                rate = [100 * int(r["self_hits"]) / max(1, int(r["rays"])) for r in pts]
+                ax.plot([float(r["distance"]) for r in pts], [max(x, 1e-3) for x in rate], marker + style,
+                        label=f"{shape}, {method}")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_ylim(5e-4, 200)
+        ax.set_xlabel("distance of the scene from the origin")
+        ax.set_title(f"{scalar}: self-hits of reflected rays (0 drawn at 1e-3)")
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].set_ylabel("self-hit rate (%)")
+    axes[1].legend(fontsize=7, ncol=1, loc="center right")
+    save(fig, "acne.png")
+
+
+def povray_chart(rows):
+    fig, ax = plt.subplots(figsize=(5.5, 3.6))
+    threads = [r["threads"] for r in rows]
+    x = range(len(rows))
+    ax.bar([i - 0.2 for i in x], [float(r["prism_seconds"]) for r in rows], 0.4, label="prism (render time)")
+    ax.bar([i + 0.2 for i in x], [float(r["povray_trace_seconds"]) for r in rows], 0.4, label="POV-Ray 3.7 (trace time)")
+    for i, r in zip(x, rows):
+        ax.annotate(f"{float(r['ratio']):.2f}x", (i - 0.2, float(r["prism_seconds"])), ha="center", va="bottom", fontsize=9)
+    ax.set_xticks(list(x), [f"{t} thread(s)" for t in threads])
+    ax.set_ylabel("seconds (minimum of runs)")
+    ax.set_title("cornell, 512x512, 1 spp, no photons")
+    ax.legend(fontsize=8)
+    save(fig, "cornell_vs_povray.png")
+
+
+def main():
+    if (rows := read("accuracy.csv")):
+        accuracy_charts(rows)
+    if (rows := read("acne.csv")):
+        acne_chart(rows)
+    if (rows := read("cornell_vs_povray.csv")):
+        povray_chart(rows)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Run every measurement and draw the charts into bench/results (a few minutes).
+#   bench/run_all.sh
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+results="$root/bench/results"
+"$root/tools/setup.sh" --bench
+cmake -S "$root" -B "$root/build/release" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$root/build/release"
+mkdir -p "$results"
+# Debian's python3 has matplotlib; a python3 earlier on PATH may not.
+python=/usr/bin/python3
+"$python" "$root/bench/cornell_vs_povray.py" --build "$root/build/release" --out "$results" | tee "$results/cornell_vs_povray.txt"
+"$python" "$root/bench/compile_cost.py" --out "$results" | tee "$results/compile_cost.txt"
+"$root/build/release/bench/bench_acne" "$results" > "$results/acne.txt"
+"$root/build/release/bench/bench_accuracy" "$results" | tee "$results/accuracy.txt"
+"$python" "$root/bench/plot.py" "$results"
