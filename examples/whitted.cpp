@@ -11,7 +11,7 @@ int main(int argc, char** argv)
         examples::Options options;
         options.render.width = 640;
         options.render.height = 480;
-        options.render.spp = 4;
+        options.render.spp = 16;
         if (!examples::parse(argc, argv, options, "a glass and a mirror sphere over a checkered plane (Whitted 1980)"))
             return 0;
         const auto scene = scenes::whitted_scene<float>();

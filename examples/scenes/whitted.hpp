@@ -17,8 +17,9 @@ auto whitted_scene()
 {
     using namespace prism;
     Scene scene{
-        // About 10 m away, so I = 250 W/sr gives E = 2.5 W/m^2 and albedo * E / pi ~ 0.8 albedo.
-        Lights{PointLight<T>{.position = {T(-4), T(8), T(6)}, .intensity = Rgb<T>(T(250))}},
+        // Sunlight from the upper left, behind the camera: E = 3 W/m^2 facing it, so a
+        // floor lit at cos = 0.8 shows about 0.76 of its albedo.
+        Lights{DirectionalLight<T>{.direction = {T(0.45), T(-0.8), T(-0.4)}, .irradiance = Rgb<T>(T(3))}},
         Object{Plane<T>({T(0), T(1), T(0)}, T(0)),
                Diffuse<T, Checker<T>>{.albedo = {.even = {T(0.85), T(0.15), T(0.1)}, .odd = {T(0.9), T(0.8), T(0.2)}, .size = T(1)},
                                       .kd = T(1), .ka = T(1)}},

@@ -15,7 +15,7 @@ TEST_CASE("Pcg32 matches the reference pcg32 sequence")
     for (std::uint32_t value : expected) CHECK(rng.next_u32() == value);
 }
 
-TEST_CASE_TEMPLATE("uniform samples lie in [0, 1) with the right mean and variance", T, float, double)
+TEST_CASE_TEMPLATE("uniform samples lie in 0 <= u < 1 with the right mean and variance", T, float, double)
 {
     prism::Pcg32 rng(7u, 3u);
     constexpr int n = 200000;

@@ -92,7 +92,7 @@ TEST_CASE("mirror and Fresnel weights against the closed forms")
     CHECK(g.x == Approx(0.05023991).epsilon(1e-6));
 }
 
-TEST_CASE("an absorbing glass slab at normal incidence: B [R + (1-R)^2 e^-sd / (1 - R e^-sd)], all orders")
+TEST_CASE("an absorbing glass slab at normal incidence: B (R + (1-R)^2 e^-sd / (1 - R e^-sd)), all orders")
 {
     // Every inter-reflection inside the slab is followed (Stokes' series of the slab).
     const double sigma = 1.0, d = 1.0, r = 0.04;
