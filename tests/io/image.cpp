@@ -6,6 +6,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
+
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -19,9 +22,10 @@ prism::Film gradient()
     return film;
 }
 
-fs::path scratch()
+/// An empty folder of this test case's own: ctest runs cases in parallel processes.
+fs::path scratch(const std::string& name)
 {
-    const fs::path dir = fs::temp_directory_path() / "prism-io-test";
+    const fs::path dir = fs::temp_directory_path() / ("prism-io-test-" + name + "-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;
@@ -31,7 +35,7 @@ fs::path scratch()
 
 TEST_CASE("PFM round-trips every float exactly")
 {
-    const fs::path dir = scratch();
+    const fs::path dir = scratch("pfm");
     const prism::Film film = gradient();
     prism::write_image(film, dir / "g.pfm");
     const prism::Film back = prism::read_pfm(dir / "g.pfm");
@@ -39,11 +43,12 @@ TEST_CASE("PFM round-trips every float exactly")
     REQUIRE(back.height() == 5);
     for (int y = 0; y < 5; ++y)
         for (int x = 0; x < 7; ++x) CHECK(back.at(x, y) == film.at(x, y));
+    fs::remove_all(dir);
 }
 
 TEST_CASE("PNG is sRGB-encoded and complete")
 {
-    const fs::path dir = scratch();
+    const fs::path dir = scratch("png");
     prism::Film film(2, 1);
     film.set(0, 0, prism::Rgb<float>{0.0f, 0.5f, 1.0f});
     film.set(1, 0, prism::Rgb<float>{0.0031308f, 0.2f, 5.0f});
@@ -58,11 +63,12 @@ TEST_CASE("PNG is sRGB-encoded and complete")
     CHECK(file[1] == 'P');
     CHECK(file[2] == 'N');
     CHECK(file[3] == 'G');
+    fs::remove_all(dir);
 }
 
 TEST_CASE("a failed write throws with the path and the reason and leaves no file")
 {
-    const fs::path dir = scratch();
+    const fs::path dir = scratch("failure");
     const prism::Film film = gradient();
     const fs::path missing = dir / "no" / "such" / "folder" / "x.png";
     CHECK_THROWS_WITH_AS(prism::write_png(film, missing), doctest::Contains(missing.c_str()), std::runtime_error);
@@ -77,4 +83,5 @@ TEST_CASE("a failed write throws with the path and the reason and leaves no file
     CHECK(files == 0);
     CHECK_THROWS_WITH_AS(prism::write_image(film, dir / "x.tiff"), doctest::Contains("unknown image extension"), std::runtime_error);
     CHECK_THROWS_AS((void)prism::read_pfm(dir / "absent.pfm"), std::runtime_error);
+    fs::remove_all(dir);
 }
