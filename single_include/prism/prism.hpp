@@ -945,6 +945,9 @@ public:
         detail::require_non_negative("Whitted min_weight", config.min_weight);
     }
 
+    /// The integrator keeps a reference to its scene: a temporary scene would dangle.
+    Whitted(const SceneT&& scene, Config config = {}) = delete;
+
     /// Radiance arriving along the ray (its direction must be unit length).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1))); }
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1))); }
@@ -1366,10 +1369,11 @@ struct Checker {
     {
         // Cells are half-open, so a point on a cell face belongs to exactly one cell. A
         // floor at y = 0 stays in one layer because Plane refines its hit points onto
-        // the plane exactly when the plane is axis-aligned.
+        // the plane exactly when the plane is axis-aligned. Parity is taken in floating
+        // point, so far-away points cannot overflow an integer conversion.
         const T inv = T(1) / size;
-        const auto cell = [inv](T x) { return static_cast<long long>(std::floor(x * inv)); };
-        return ((cell(p.x) + cell(p.y) + cell(p.z)) & 1) == 0 ? even : odd;
+        const T sum = std::floor(p.x * inv) + std::floor(p.y * inv) + std::floor(p.z * inv);
+        return std::fmod(sum, T(2)) == T(0) ? even : odd;
     }
 
     constexpr void validate() const

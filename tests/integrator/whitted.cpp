@@ -123,3 +123,8 @@ TEST_CASE("depth limit and adaptive cut-off end the recursion")
     CHECK(Whitted(corridor, {.max_depth = 5, .min_weight = 0.6}).radiance({{0, 0, 0}, {0, 0, -1}}).x == 0);
     CHECK_THROWS_AS(Whitted(corridor, {.max_depth = -1}), std::invalid_argument);
 }
+
+// The integrator refers to its scene, so it must not be built from a temporary one.
+using SmallScene = Scene<Lights<PointLight<float>>, Object<Sphere<float>, Diffuse<float>>>;
+static_assert(std::is_constructible_v<Whitted<SmallScene>, const SmallScene&>);
+static_assert(!std::is_constructible_v<Whitted<SmallScene>, SmallScene&&>);

@@ -47,6 +47,9 @@ public:
         detail::require_non_negative("Whitted min_weight", config.min_weight);
     }
 
+    /// The integrator keeps a reference to its scene: a temporary scene would dangle.
+    Whitted(const SceneT&& scene, Config config = {}) = delete;
+
     /// Radiance arriving along the ray (its direction must be unit length).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1))); }
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1))); }

@@ -39,10 +39,11 @@ struct Checker {
     {
         // Cells are half-open, so a point on a cell face belongs to exactly one cell. A
         // floor at y = 0 stays in one layer because Plane refines its hit points onto
-        // the plane exactly when the plane is axis-aligned.
+        // the plane exactly when the plane is axis-aligned. Parity is taken in floating
+        // point, so far-away points cannot overflow an integer conversion.
         const T inv = T(1) / size;
-        const auto cell = [inv](T x) { return static_cast<long long>(std::floor(x * inv)); };
-        return ((cell(p.x) + cell(p.y) + cell(p.z)) & 1) == 0 ? even : odd;
+        const T sum = std::floor(p.x * inv) + std::floor(p.y * inv) + std::floor(p.z * inv);
+        return std::fmod(sum, T(2)) == T(0) ? even : odd;
     }
 
     constexpr void validate() const
