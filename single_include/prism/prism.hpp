@@ -154,6 +154,19 @@ template <Scalar T>
     return {v.x < T(0) ? -v.x : v.x, v.y < T(0) ? -v.y : v.y, v.z < T(0) ? -v.z : v.z};
 }
 
+/// Component-wise minimum and maximum (glm::min and glm::max are not constexpr).
+template <Scalar T>
+[[nodiscard]] constexpr Vec3<T> component_min(const Vec3<T>& a, const Vec3<T>& b) noexcept
+{
+    return {a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.z < b.z ? a.z : b.z};
+}
+
+template <Scalar T>
+[[nodiscard]] constexpr Vec3<T> component_max(const Vec3<T>& a, const Vec3<T>& b) noexcept
+{
+    return {a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z};
+}
+
 template <Scalar T>
 [[nodiscard]] constexpr T max_component(const Vec3<T>& v) noexcept
 {
@@ -178,6 +191,21 @@ template <Scalar T>
 [[nodiscard]] constexpr T clamp(T x, T lo, T hi) noexcept
 {
     return x > lo ? (x < hi ? x : hi) : lo;
+}
+
+} // namespace prism
+
+namespace prism {
+
+/// a*b - c*d with one rounding error instead of a catastrophic cancellation (Kahan's
+/// algorithm with fused multiply-adds; pbrt-v4 DifferenceOfProducts).
+template <Scalar T>
+[[nodiscard]] constexpr T difference_of_products(T a, T b, T c, T d) noexcept
+{
+    if (std::is_constant_evaluated()) return a * b - c * d;
+    const T cd = c * d;
+    const T error = std::fma(-c, d, cd);
+    return std::fma(a, b, -cd) + error;
 }
 
 } // namespace prism
@@ -455,6 +483,118 @@ private:
 
 } // namespace prism
 
+// ---- prism/core/transform.hpp ----
+// Transform: an invertible affine map of points, directions and normals.
+
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace prism {
+
+template <Scalar T>
+using Mat4 = glm::mat<4, 4, T, glm::defaultp>;
+
+template <Scalar T>
+using Mat3 = glm::mat<3, 3, T, glm::defaultp>;
+
+/// An affine transform with its inverse. Compose with `then`, which applies this
+/// transform first and the argument second, as POV-Ray applies transforms in the order
+/// they are written: Transform::rotate_x(30).then(Transform::translate({1, 0, 0})).
+template <Scalar T = float>
+class Transform {
+public:
+    // Transform Public Methods
+
+    /// The identity.
+    Transform() = default;
+
+    /// From an affine 4x4 matrix (GLM, column-major: m[column][row]). Throws
+    /// std::invalid_argument for a non-finite, non-affine or singular matrix.
+    explicit Transform(const Mat4<T>& m) : m_(m)
+    {
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                if (!is_finite(m[c][r])) detail::throw_invalid("Transform matrix must be finite, got ", m[c][r], " at column ", c, " row ", r);
+        if (m[0][3] != T(0) || m[1][3] != T(0) || m[2][3] != T(0) || m[3][3] != T(1))
+            detail::throw_invalid("Transform matrix must be affine (last row 0 0 0 1)");
+        // Singular when the determinant is negligible beside the size of the linear part.
+        T scale = T(0);
+        for (int c = 0; c < 3; ++c) scale = std::max(scale, length(Vec3<T>(m[c])));
+        const T det = glm::determinant(Mat3<T>(m));
+        if (!(std::abs(det) > T(64) * std::numeric_limits<T>::epsilon() * scale * scale * scale))
+            detail::throw_invalid("Transform is singular (determinant ", det, ")");
+        inverse_ = glm::inverse(m);
+    }
+
+    [[nodiscard]] static Transform translate(const Vec3<T>& offset)
+    {
+        detail::require_finite("Transform translate", offset);
+        return Transform(glm::translate(Mat4<T>(T(1)), offset));
+    }
+
+    /// Scale by factors per axis; a zero factor is a singular transform.
+    [[nodiscard]] static Transform scale(const Vec3<T>& factors)
+    {
+        detail::require_finite("Transform scale", factors);
+        return Transform(glm::scale(Mat4<T>(T(1)), factors));
+    }
+
+    /// Rotation by `degrees` about `axis`, counter-clockwise looking down the axis
+    /// (right-hand rule in prism's right-handed coordinates).
+    [[nodiscard]] static Transform rotate(T degrees, const Vec3<T>& axis)
+    {
+        detail::require_finite("Transform rotate angle", degrees);
+        detail::require_nonzero("Transform rotate axis", axis);
+        return Transform(glm::rotate(Mat4<T>(T(1)), degrees * pi<T> / T(180), normalize(axis)));
+    }
+    [[nodiscard]] static Transform rotate_x(T degrees) { return rotate(degrees, {T(1), T(0), T(0)}); }
+    [[nodiscard]] static Transform rotate_y(T degrees) { return rotate(degrees, {T(0), T(1), T(0)}); }
+    [[nodiscard]] static Transform rotate_z(T degrees) { return rotate(degrees, {T(0), T(0), T(1)}); }
+
+    /// This transform followed by `next`.
+    [[nodiscard]] Transform then(const Transform& next) const { return Transform(next.m_ * m_, inverse_ * next.inverse_); }
+
+    [[nodiscard]] Transform inverse() const { return Transform(inverse_, m_); }
+
+    [[nodiscard]] const Mat4<T>& matrix() const noexcept { return m_; }
+    [[nodiscard]] const Mat4<T>& inverse_matrix() const noexcept { return inverse_; }
+
+    [[nodiscard]] Vec3<T> point(const Vec3<T>& p) const noexcept { return Vec3<T>(m_ * glm::vec<4, T>(p, T(1))); }
+    [[nodiscard]] Vec3<T> vector(const Vec3<T>& v) const noexcept { return Vec3<T>(m_ * glm::vec<4, T>(v, T(0))); }
+    /// A surface normal maps by the inverse transpose (unnormalised).
+    [[nodiscard]] Vec3<T> normal(const Vec3<T>& n) const noexcept
+    {
+        return {dot(Vec3<T>(inverse_[0]), n), dot(Vec3<T>(inverse_[1]), n), dot(Vec3<T>(inverse_[2]), n)};
+    }
+
+    /// The absolute error bound of point(p) for a point p known to within `error` per
+    /// axis (pbrt-v4, Transform::operator()(Point3fi)): the incoming error grows by the
+    /// matrix, and the matrix product adds gamma(3) of its terms' size.
+    [[nodiscard]] Vec3<T> point_error(const Vec3<T>& p, const Vec3<T>& error) const noexcept
+    {
+        Vec3<T> out;
+        for (int r = 0; r < 3; ++r) {
+            T carried = T(0), rounding = std::abs(m_[3][r]);
+            for (int c = 0; c < 3; ++c) {
+                carried += std::abs(m_[c][r]) * error[c];
+                rounding += std::abs(m_[c][r] * p[c]);
+            }
+            out[r] = (gamma<T>(3) + T(1)) * carried + gamma<T>(3) * rounding;
+        }
+        return out;
+    }
+
+private:
+    Transform(const Mat4<T>& m, const Mat4<T>& inverse) : m_(m), inverse_(inverse) {}
+
+    Mat4<T> m_{T(1)};
+    Mat4<T> inverse_{T(1)};
+};
+
+} // namespace prism
+
 // ---- prism/geometry/crossings.hpp ----
 // Crossings: every place a ray crosses a solid's boundary, sorted, in fixed capacity.
 //
@@ -518,15 +658,227 @@ namespace prism {
 /// A solid with a boundary. `crossings(ray, range)` returns every boundary crossing
 /// with t strictly inside `range`, sorted by t, plus whether `ray.at(range.min)` is
 /// inside; `max_crossings` bounds their number at compile time; `bounds()` encloses
-/// the solid (Aabb::universe() for an unbounded one).
+/// the solid (Aabb::universe() for an unbounded one); `contains(p)` says whether a
+/// point is strictly inside (the implicit function, evaluated directly).
 template <class S>
 concept Shape = requires(const S& shape, const Ray<typename S::scalar_type>& ray,
-                         Interval<typename S::scalar_type> range) {
+                         Interval<typename S::scalar_type> range, const Vec3<typename S::scalar_type>& p) {
     requires Scalar<typename S::scalar_type>;
     { S::max_crossings } -> std::convertible_to<std::size_t>;
     { shape.crossings(ray, range) } -> std::same_as<Crossings<typename S::scalar_type, S::max_crossings>>;
     { shape.bounds() } -> std::same_as<Aabb<typename S::scalar_type>>;
+    { shape.contains(p) } -> std::same_as<bool>;
 };
+
+} // namespace prism
+
+// ---- prism/csg/csg_node.hpp ----
+// CsgNode: the boolean combination of two solids, by merging their crossing lists.
+//
+// Roth's method ("Ray Casting for Modeling Solids", 1982): walk the two sorted lists
+// of crossings together, keep whether the ray is inside each child, and emit a
+// crossing wherever the combination changes. It is right wherever the ray starts
+// (inside either child), whatever order the children lie in along the ray, for
+// unbounded children, and nests to any depth: a node is a Shape like any other, with
+// a capacity known at compile time (the sum of its children's).
+//
+// Coincident faces: all crossings at exactly the same t, from either child, are
+// applied together before the result is compared, so A - A is empty, A + A is A, and a
+// box minus a box that shares a face leaves no film. Faces that coincide only up to
+// rounding (computed by different arithmetic) are separate crossings and may leave a
+// sliver no thicker than their error bounds.
+
+
+#include <utility>
+
+namespace prism {
+
+/// A boolean operation: whether a point is inside the result, from whether it is
+/// inside each child; and whether the second child's surface faces the other way.
+template <class Op>
+concept CsgOperation = requires(bool a, bool b) {
+    { Op::combine(a, b) } -> std::same_as<bool>;
+    { Op::flips_second } -> std::convertible_to<bool>;
+};
+
+template <CsgOperation Op, Shape A, Shape B>
+    requires std::same_as<typename A::scalar_type, typename B::scalar_type>
+class CsgNode {
+public:
+    using scalar_type = typename A::scalar_type;
+    using T = scalar_type;
+    using operation = Op;
+    static constexpr std::size_t max_crossings = A::max_crossings + B::max_crossings;
+
+    // CsgNode Public Methods
+
+    constexpr CsgNode(A a, B b) : a_(std::move(a)), b_(std::move(b)), bounds_(Op::bounds(a_.bounds(), b_.bounds()))
+    {
+        bounded_ = is_finite(bounds_.lo) && is_finite(bounds_.hi);
+    }
+
+    /// Nested construction for the variadic forms: CsgNode<Op, A, CsgNode<Op, B, C>>(a, b, c).
+    template <class... Rest>
+        requires(sizeof...(Rest) >= 2)
+    constexpr CsgNode(A a, Rest&&... rest) : CsgNode(std::move(a), B(std::forward<Rest>(rest)...))
+    {
+    }
+
+    [[nodiscard]] constexpr const A& first() const noexcept { return a_; }
+    [[nodiscard]] constexpr const B& second() const noexcept { return b_; }
+    [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
+
+    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return Op::combine(a_.contains(p), b_.contains(p)); }
+
+    [[nodiscard]] constexpr Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        Crossings<T, max_crossings> out;
+        // Outside the bounds the ray cannot be inside the result.
+        if (bounded_ && bounds_.clip(ray, range).empty()) return out;
+
+        const auto ca = a_.crossings(ray, range);
+        const auto cb = b_.crossings(ray, range);
+        bool in_a = ca.inside_at_start, in_b = cb.inside_at_start;
+        bool inside = Op::combine(in_a, in_b);
+        out.inside_at_start = inside;
+
+        std::size_t i = 0, j = 0;
+        while (i < ca.size() || j < cb.size()) {
+            const T t = j == cb.size() || (i < ca.size() && ca[i].t <= cb[j].t) ? ca[i].t : cb[j].t;
+            // Apply every crossing at this t, from both children.
+            const Crossing<T>* from_a = nullptr;
+            const Crossing<T>* from_b = nullptr;
+            for (; i < ca.size() && ca[i].t == t; ++i) in_a = ca[i].entering, from_a = &ca[i];
+            for (; j < cb.size() && cb[j].t == t; ++j) in_b = cb[j].entering, from_b = &cb[j];
+            const bool now = Op::combine(in_a, in_b);
+            if (now == inside) continue;
+            inside = now;
+            // The result's surface here is the first child's where it has one.
+            Crossing<T> c = from_a != nullptr ? *from_a : *from_b;
+            if (from_a == nullptr && Op::flips_second) c.normal = -c.normal;
+            c.entering = now;
+            out.push_back(c);
+        }
+        return out;
+    }
+
+private:
+    A a_;
+    B b_;
+    Aabb<T> bounds_;
+    bool bounded_ = false;
+};
+
+namespace detail {
+
+/// Op applied left to right over a list of shapes: A op (B op (C ...)).
+template <class Op, class... S>
+struct csg_fold;
+
+template <class Op, class A>
+struct csg_fold<Op, A> {
+    using type = A;
+};
+
+template <class Op, class A, class B, class... Rest>
+struct csg_fold<Op, A, B, Rest...> {
+    using type = CsgNode<Op, A, typename csg_fold<Op, B, Rest...>::type>;
+};
+
+template <Scalar T>
+constexpr Aabb<T> aabb_union(const Aabb<T>& a, const Aabb<T>& b) noexcept
+{
+    return {component_min(a.lo, b.lo), component_max(a.hi, b.hi)};
+}
+
+template <Scalar T>
+constexpr Aabb<T> aabb_intersection(const Aabb<T>& a, const Aabb<T>& b) noexcept
+{
+    return {component_max(a.lo, b.lo), component_min(a.hi, b.hi)};
+}
+
+} // namespace detail
+
+} // namespace prism
+
+// ---- prism/csg/union.hpp ----
+// Union: inside either solid.
+
+
+namespace prism {
+
+struct UnionOp {
+    static constexpr bool flips_second = false;
+    [[nodiscard]] static constexpr bool combine(bool a, bool b) noexcept { return a || b; }
+    template <Scalar T>
+    [[nodiscard]] static constexpr Aabb<T> bounds(const Aabb<T>& a, const Aabb<T>& b) noexcept { return detail::aabb_union(a, b); }
+};
+
+/// A | B | ...: Union<Sphere<float>, Box<float>>, or of any number of shapes.
+template <Shape A, Shape B, Shape... Rest>
+using Union = typename detail::csg_fold<UnionOp, A, B, Rest...>::type;
+
+/// The union of two or more shapes, its type deduced: union_of(sphere, box, quadric).
+template <Shape A, Shape B, Shape... Rest>
+[[nodiscard]] constexpr Union<A, B, Rest...> union_of(A a, B b, Rest... rest)
+{
+    return Union<A, B, Rest...>(std::move(a), std::move(b), std::move(rest)...);
+}
+
+} // namespace prism
+
+// ---- prism/csg/difference.hpp ----
+// Difference: inside the first solid and outside the second.
+
+
+namespace prism {
+
+struct DifferenceOp {
+    /// The subtracted solid's surface bounds the result from the other side.
+    static constexpr bool flips_second = true;
+    [[nodiscard]] static constexpr bool combine(bool a, bool b) noexcept { return a && !b; }
+    template <Scalar T>
+    [[nodiscard]] static constexpr Aabb<T> bounds(const Aabb<T>& a, const Aabb<T>&) noexcept { return a; }
+};
+
+/// A - B - ... = A - (B | ...): the first shape with all the others removed.
+template <Shape A, Shape B, Shape... Rest>
+using Difference = CsgNode<DifferenceOp, A, typename detail::csg_fold<UnionOp, B, Rest...>::type>;
+
+/// The first shape minus all the others, its type deduced.
+template <Shape A, Shape B, Shape... Rest>
+[[nodiscard]] constexpr Difference<A, B, Rest...> difference_of(A a, B b, Rest... rest)
+{
+    if constexpr (sizeof...(Rest) == 0) return Difference<A, B>(std::move(a), std::move(b));
+    else return Difference<A, B, Rest...>(std::move(a), union_of(std::move(b), std::move(rest)...));
+}
+
+} // namespace prism
+
+// ---- prism/csg/intersection.hpp ----
+// Intersection: inside both solids.
+
+
+namespace prism {
+
+struct IntersectionOp {
+    static constexpr bool flips_second = false;
+    [[nodiscard]] static constexpr bool combine(bool a, bool b) noexcept { return a && b; }
+    template <Scalar T>
+    [[nodiscard]] static constexpr Aabb<T> bounds(const Aabb<T>& a, const Aabb<T>& b) noexcept { return detail::aabb_intersection(a, b); }
+};
+
+/// A & B & ...: the part common to all.
+template <Shape A, Shape B, Shape... Rest>
+using Intersection = typename detail::csg_fold<IntersectionOp, A, B, Rest...>::type;
+
+/// The intersection of two or more shapes, its type deduced. Also the way to clip an
+/// unbounded quadric to a box: intersection_of(cylinder, Box<float>{lo, hi}).
+template <Shape A, Shape B, Shape... Rest>
+[[nodiscard]] constexpr Intersection<A, B, Rest...> intersection_of(A a, B b, Rest... rest)
+{
+    return Intersection<A, B, Rest...>(std::move(a), std::move(b), std::move(rest)...);
+}
 
 } // namespace prism
 
@@ -562,6 +914,11 @@ public:
     [[nodiscard]] constexpr const Vec3<T>& lo() const noexcept { return lo_; }
     [[nodiscard]] constexpr const Vec3<T>& hi() const noexcept { return hi_; }
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return {lo_, hi_}; }
+
+    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
+    {
+        return lo_.x < p.x && p.x < hi_.x && lo_.y < p.y && p.y < hi_.y && lo_.z < p.z && p.z < hi_.z;
+    }
 
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
@@ -656,6 +1013,8 @@ public:
     [[nodiscard]] constexpr T offset() const noexcept { return offset_; }
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return Aabb<T>::universe(); }
 
+    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return dot(normal_, p) < offset_; }
+
     [[nodiscard]] constexpr Crossings<T, 1> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         Crossings<T, 1> out;
@@ -697,6 +1056,332 @@ static_assert(Shape<Plane<double>>);
 
 } // namespace prism
 
+// ---- prism/geometry/quadric.hpp ----
+// Quadric: the solid F(p) < 0 of a general second-degree surface.
+//
+//   F(p) = a x^2 + 2b xy + 2c xz + 2d x + e y^2 + 2f yz + 2g y + h z^2 + 2i z + j
+//
+// (the seed's form, 000_81f2033c38ead54b.txt section 2, with errata 1-3 applied), or
+// F(p) = [p 1] Q [p 1]^T with the symmetric matrix Q = [[a b c d] [b e f g] [c f h i] [d g i j]].
+// Cones, cylinders and hyperboloids are not convex and most quadrics are unbounded:
+// the crossings are classified by the sign of the gradient along the ray, never by the
+// order of the roots; a ray along an asymptotic direction (a cylinder's axis, a cone's
+// generator) meets the surface once or not at all.
+//
+// A quadric keeps a local origin o and its coefficients relative to it: F(p) = G(p - o).
+// An ellipsoid 10^5 from the world origin written in world coefficients has j ~ 10^10,
+// and float then loses its surface entirely; centred on its own origin it is as exact
+// as one at the world origin. The factories that take a centre use it as the origin.
+
+
+#include <algorithm>
+#include <array>
+
+namespace prism {
+
+template <Scalar T = float>
+class Quadric {
+public:
+    using scalar_type = T;
+    static constexpr std::size_t max_crossings = 2;
+
+    /// The ten coefficients of the seed's form (note the factors of 2 on mixed and linear terms).
+    struct Coefficients {
+        T a = 0, b = 0, c = 0, d = 0, e = 0, f = 0, g = 0, h = 0, i = 0, j = 0;
+    };
+
+    // Quadric Public Methods
+
+    /// Throws std::invalid_argument for a non-finite coefficient, an all-zero quadric,
+    /// or one with no x, y or z term (a constant is not a surface).
+    constexpr explicit Quadric(const Coefficients& k, const Vec3<T>& origin = Vec3<T>(T(0))) : k_(k), origin_(origin)
+    {
+        detail::require_finite("Quadric origin", origin);
+        const std::array<T, 10> all{k.a, k.b, k.c, k.d, k.e, k.f, k.g, k.h, k.i, k.j};
+        constexpr const char* names[10] = {"a", "b", "c", "d", "e", "f", "g", "h", "i", "j"};
+        for (int n = 0; n < 10; ++n)
+            if (!is_finite(all[n])) detail::throw_invalid("Quadric coefficient ", names[n], " must be finite, got ", all[n]);
+        const bool variable = k.a != 0 || k.b != 0 || k.c != 0 || k.d != 0 || k.e != 0 || k.f != 0 || k.g != 0 || k.h != 0 || k.i != 0;
+        if (!variable && k.j == 0) detail::throw_invalid("Quadric coefficients are all zero");
+        if (!variable) detail::throw_invalid("Quadric has no x, y or z term (only the constant ", k.j, ")");
+        bounds_ = ellipsoid_bounds();
+    }
+
+    /// From a 4x4 matrix Q with F(p) = [p 1] Q [p 1]^T; only its symmetric part matters.
+    [[nodiscard]] static Quadric from_matrix(const Mat4<T>& q)
+    {
+        const auto s = [&q](int r, int c) { return T(0.5) * (q[c][r] + q[r][c]); };
+        return Quadric({s(0, 0), s(0, 1), s(0, 2), s(0, 3), s(1, 1), s(1, 2), s(1, 3), s(2, 2), s(2, 3), s(3, 3)});
+    }
+
+    /// From POV-Ray's quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }:
+    /// A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J (same coordinates).
+    [[nodiscard]] static constexpr Quadric from_povray(T A, T B, T C, T D, T E, T F, T G, T H, T I, T J)
+    {
+        return Quadric({A, D / 2, E / 2, G / 2, B, F / 2, H / 2, C, I / 2, J});
+    }
+
+    // Named quadrics (inside is F < 0)
+
+    /// The ellipsoid with the given centre and semi-axes, rotated by `rotation` (its
+    /// columns are the directions of the x, y and z semi-axes).
+    [[nodiscard]] static Quadric ellipsoid(const Vec3<T>& centre, const Vec3<T>& semi_axes, const Mat3<T>& rotation = Mat3<T>(T(1)))
+    {
+        detail::require_finite("Quadric::ellipsoid centre", centre);
+        detail::require_positive("Quadric::ellipsoid semi_axes.x", semi_axes.x);
+        detail::require_positive("Quadric::ellipsoid semi_axes.y", semi_axes.y);
+        detail::require_positive("Quadric::ellipsoid semi_axes.z", semi_axes.z);
+        const Vec3<T> inv2 = T(1) / (semi_axes * semi_axes);
+        const Mat3<T> m = rotation * Mat3<T>(inv2.x, 0, 0, 0, inv2.y, 0, 0, 0, inv2.z) * glm::transpose(rotation);
+        return centred(m, centre, T(-1));
+    }
+
+    /// The infinite circular cylinder of `radius` around the line through `point` along `axis`.
+    [[nodiscard]] static Quadric cylinder(const Vec3<T>& point, const Vec3<T>& axis, T radius)
+    {
+        detail::require_finite("Quadric::cylinder point", point);
+        detail::require_nonzero("Quadric::cylinder axis", axis);
+        detail::require_positive("Quadric::cylinder radius", radius);
+        const Vec3<T> u = normalize(axis);
+        return centred(Mat3<T>(T(1)) - glm::outerProduct(u, u), point, -radius * radius);
+    }
+
+    /// The double cone with its apex at `apex`, opening along +-axis with the given half angle.
+    [[nodiscard]] static Quadric cone(const Vec3<T>& apex, const Vec3<T>& axis, T half_angle_degrees)
+    {
+        detail::require_finite("Quadric::cone apex", apex);
+        detail::require_nonzero("Quadric::cone axis", axis);
+        if (!(half_angle_degrees > T(0) && half_angle_degrees < T(90)))
+            detail::throw_invalid("Quadric::cone half_angle_degrees must be in (0, 90), got ", half_angle_degrees);
+        const Vec3<T> u = normalize(axis);
+        const T cos = std::cos(half_angle_degrees * pi<T> / T(180));
+        return centred(cos * cos * Mat3<T>(T(1)) - glm::outerProduct(u, u), apex, T(0));
+    }
+
+    /// z = x^2/a^2 + y^2/b^2: a bowl opening along +z; inside is above it.
+    [[nodiscard]] static Quadric elliptic_paraboloid(T a, T b)
+    {
+        detail::require_positive("Quadric::elliptic_paraboloid a", a);
+        detail::require_positive("Quadric::elliptic_paraboloid b", b);
+        return Quadric({.a = 1 / (a * a), .e = 1 / (b * b), .i = T(-0.5)});
+    }
+
+    /// z = x^2/a^2 - y^2/b^2: a saddle; inside is above it.
+    [[nodiscard]] static Quadric hyperbolic_paraboloid(T a, T b)
+    {
+        detail::require_positive("Quadric::hyperbolic_paraboloid a", a);
+        detail::require_positive("Quadric::hyperbolic_paraboloid b", b);
+        return Quadric({.a = 1 / (a * a), .e = -1 / (b * b), .i = T(-0.5)});
+    }
+
+    /// x^2/a^2 + y^2/b^2 - z^2/c^2 = 1: one sheet around the z axis; inside is the waisted tube.
+    [[nodiscard]] static Quadric hyperboloid_one_sheet(T a, T b, T c)
+    {
+        detail::require_positive("Quadric::hyperboloid_one_sheet a", a);
+        detail::require_positive("Quadric::hyperboloid_one_sheet b", b);
+        detail::require_positive("Quadric::hyperboloid_one_sheet c", c);
+        return Quadric({.a = 1 / (a * a), .e = 1 / (b * b), .h = -1 / (c * c), .j = T(-1)});
+    }
+
+    /// z^2/c^2 - x^2/a^2 - y^2/b^2 = 1: two sheets opening along +-z; inside is the two cups.
+    [[nodiscard]] static Quadric hyperboloid_two_sheets(T a, T b, T c)
+    {
+        detail::require_positive("Quadric::hyperboloid_two_sheets a", a);
+        detail::require_positive("Quadric::hyperboloid_two_sheets b", b);
+        detail::require_positive("Quadric::hyperboloid_two_sheets c", c);
+        return Quadric({.a = 1 / (a * a), .e = 1 / (b * b), .h = -1 / (c * c), .j = T(1)});
+    }
+
+    /// Two planes, (n1.p - d1)(n2.p - d2) = 0: inside where p is on the inner side of
+    /// exactly one of them (between two parallel planes, or in two opposite wedges).
+    [[nodiscard]] static Quadric plane_pair(const Vec3<T>& n1, T d1, const Vec3<T>& n2, T d2)
+    {
+        detail::require_nonzero("Quadric::plane_pair n1", n1);
+        detail::require_nonzero("Quadric::plane_pair n2", n2);
+        detail::require_finite("Quadric::plane_pair d1", d1);
+        detail::require_finite("Quadric::plane_pair d2", d2);
+        const Mat3<T> m = T(0.5) * (glm::outerProduct(n1, n2) + glm::outerProduct(n2, n1));
+        const Vec3<T> q = T(-0.5) * (d2 * n1 + d1 * n2);
+        return from_parts(m, q, d1 * d2);
+    }
+
+    /// The same surface moved by `transform`: F'(p) = F(transform^-1 p). The origin
+    /// moves with the transform and the coefficients take only its linear part L:
+    /// Q3' = L^-T Q3 L^-1, q' = L^-T q.
+    [[nodiscard]] Quadric transformed(const Transform<T>& transform) const
+    {
+        Mat4<T> inv = transform.inverse_matrix();
+        inv[3] = glm::vec<4, T>(T(0), T(0), T(0), T(1));
+        const Mat4<T> local = glm::transpose(inv) * local_matrix() * inv;
+        return Quadric(from_matrix(local).k_, transform.point(origin_));
+    }
+
+    /// The coefficients, relative to origin().
+    [[nodiscard]] constexpr const Coefficients& coefficients() const noexcept { return k_; }
+    [[nodiscard]] constexpr const Vec3<T>& origin() const noexcept { return origin_; }
+
+    /// Q in world coordinates (computed in T, so rounded for a far-away origin).
+    [[nodiscard]] Mat4<T> matrix() const noexcept
+    {
+        const Mat4<T> to_local = glm::translate(Mat4<T>(T(1)), -origin_);
+        return glm::transpose(to_local) * local_matrix() * to_local;
+    }
+
+    /// F(p).
+    [[nodiscard]] constexpr T evaluate(const Vec3<T>& p) const noexcept { return evaluate_local(p - origin_); }
+
+    /// The gradient of F, 2 (Q3 (p - o) + q): the outward normal direction.
+    [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>& p) const noexcept { return T(2) * half_gradient(p - origin_); }
+
+    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return evaluate(p) < T(0); }
+
+    /// An ellipsoid's box; Aabb::universe() for unbounded quadrics.
+    [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
+
+    [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        // Compute quadratic coefficients: F(o + t d) = A t^2 + 2 B t + C (errata 1: h dz^2),
+        // in the quadric's own coordinates.
+        const Vec3<T> o = ray.origin - origin_;
+        const Vec3<T>& d = ray.direction;
+        const Vec3<T> g_o = half_gradient(o);
+        const T A = dot(d, quadratic_part(d));
+        const T B = dot(d, g_o);
+        const T C = dot(o, g_o + linear()) + k_.j;
+        const T disc = difference_of_products(B, B, A, C);
+
+        Crossings<T, 2> out;
+        // No real crossing (disc < 0) or a tangent (disc = 0, a double root): F keeps one
+        // sign along the line, that of A (of C when F is constant along it).
+        if (!(disc > T(0))) {
+            out.inside_at_start = A != T(0) ? A < T(0) : C < T(0);
+            return out;
+        }
+
+        // Stable roots (errata 3): q = -(B + sign(B) sqrt(disc)); t = C / q and q / A.
+        // At a root F'(t) = 2(A t + B) = +-2 sqrt(disc): it is -2 sign(B) sqrt(disc) at
+        // q / A and +2 sign(B) sqrt(disc) at C / q, so which root enters (F' < 0, the
+        // gradient against the ray) follows from sign(B) exactly, for any sign of A.
+        // When A = 0 (an asymptotic direction) q / A is infinite and C / q = -C / (2B)
+        // is the one root of the linear equation.
+        const T root = prism::sqrt(disc);
+        const T q = B >= T(0) ? -(B + root) : -(B - root);
+        std::array<Crossing<T>, 2> roots{};
+        std::size_t n = 0;
+        roots[n++] = {.t = C / q, .entering = B < T(0)};
+        const T far = q / A;
+        if (is_finite(far)) roots[n++] = {.t = far, .entering = B >= T(0)};
+        if (n == 2 && roots[1].t < roots[0].t) std::swap(roots[0], roots[1]);
+
+        // Inside at range.min: the state after the last root before it, else before the first.
+        out.inside_at_start = !roots[0].entering;
+        for (std::size_t r = 0; r < n; ++r)
+            if (roots[r].t <= range.min) out.inside_at_start = roots[r].entering;
+        for (std::size_t r = 0; r < n; ++r)
+            if (range.surrounds(roots[r].t)) out.push_back(surface_at({o, d}, roots[r].t, roots[r].entering));
+        return out;
+    }
+
+private:
+    // Quadric Private Methods
+
+    static Quadric from_parts(const Mat3<T>& m, const Vec3<T>& q, T j)
+    {
+        return Quadric({m[0][0], T(0.5) * (m[1][0] + m[0][1]), T(0.5) * (m[2][0] + m[0][2]), q.x, m[1][1],
+                        T(0.5) * (m[2][1] + m[1][2]), q.y, m[2][2], q.z, j});
+    }
+
+    /// (p - c)^T M (p - c) + k: a quadric with its origin at c.
+    static Quadric centred(const Mat3<T>& m, const Vec3<T>& c, T k) { return Quadric(from_parts(m, Vec3<T>(T(0)), k).k_, c); }
+
+    [[nodiscard]] Mat4<T> local_matrix() const noexcept
+    {
+        const Coefficients& k = k_;
+        return Mat4<T>(k.a, k.b, k.c, k.d, k.b, k.e, k.f, k.g, k.c, k.f, k.h, k.i, k.d, k.g, k.i, k.j);
+    }
+
+    [[nodiscard]] constexpr T evaluate_local(const Vec3<T>& p) const noexcept { return dot(p, half_gradient(p) + linear()) + k_.j; }
+
+    [[nodiscard]] constexpr Vec3<T> linear() const noexcept { return {k_.d, k_.g, k_.i}; }
+
+    /// Q3 v, the quadratic part applied to a vector.
+    [[nodiscard]] constexpr Vec3<T> quadratic_part(const Vec3<T>& v) const noexcept
+    {
+        return {k_.a * v.x + k_.b * v.y + k_.c * v.z, k_.b * v.x + k_.e * v.y + k_.f * v.z, k_.c * v.x + k_.f * v.y + k_.h * v.z};
+    }
+
+    [[nodiscard]] constexpr Vec3<T> half_gradient(const Vec3<T>& p) const noexcept { return quadratic_part(p) + linear(); }
+
+    /// The sum of the magnitudes of F's terms at p: F(p) is computed to within gamma(n) of it.
+    [[nodiscard]] constexpr T magnitude(const Vec3<T>& p) const noexcept
+    {
+        const Vec3<T> a = abs(p);
+        const auto m = [](T x) { return x < T(0) ? -x : x; };
+        return m(k_.a) * a.x * a.x + m(k_.e) * a.y * a.y + m(k_.h) * a.z * a.z +
+               T(2) * (m(k_.b) * a.x * a.y + m(k_.c) * a.x * a.z + m(k_.f) * a.y * a.z + m(k_.d) * a.x + m(k_.g) * a.y + m(k_.i) * a.z) +
+               m(k_.j);
+    }
+
+    /// The crossing at t of a ray given in the quadric's own coordinates.
+    [[nodiscard]] constexpr Crossing<T> surface_at(const Ray<T>& local, T t, bool entering) const noexcept
+    {
+        Vec3<T> point = local.at(t);
+        Vec3<T> g = half_gradient(point);
+        const T gg = dot(g, g);
+        Vec3<T> normal, error;
+        if (!(gg > T(0)) || !is_finite(gg)) {
+            // A singular point (a cone's apex): no normal; face the ray.
+            const Vec3<T> facing = normalize(local.direction);
+            normal = entering ? -facing : facing;
+            error = gamma<T>(4) * (abs(local.origin) + abs(t * local.direction));
+        } else {
+            // Refine the hit point with one Newton step along the gradient, onto F = 0.
+            point -= (evaluate_local(point) / (T(2) * gg)) * g;
+            g = half_gradient(point);
+            const T g_length = length(g);
+            normal = g * (T(1) / g_length);
+            // What is left is F's rounding, gamma(12) of its terms, over |grad F| = 2 |g|,
+            // along the normal; along the surface the point carries its own rounding.
+            const T along = gamma<T>(12) * magnitude(point) / (T(2) * g_length);
+            error = along * abs(normal) + gamma<T>(2) * abs(point);
+        }
+        // Back to world coordinates: one more rounding of the sum.
+        const Vec3<T> world = point + origin_;
+        return {t, world, error + gamma<T>(1) * abs(world), normal, entering};
+    }
+
+    /// Bounds of an ellipsoid (Q3 positive definite, solid non-empty), else the universe:
+    /// F = (p - c)^T Q3 (p - c) - k with c = -Q3^-1 q and k = q^T Q3^-1 q - j; the box
+    /// half-extent on axis i is sqrt(k (Q3^-1)_ii).
+    [[nodiscard]] constexpr Aabb<T> ellipsoid_bounds() const noexcept
+    {
+        const Coefficients& k = k_;
+        const T m1 = k.a, m2 = difference_of_products(k.a, k.e, k.b, k.b);
+        const T det = k.a * (k.e * k.h - k.f * k.f) - k.b * (k.b * k.h - k.f * k.c) + k.c * (k.b * k.f - k.e * k.c);
+        if (!(m1 > T(0) && m2 > T(0) && det > T(0))) return Aabb<T>::universe();
+        // Inverse of the symmetric 3x3 by cofactors.
+        const T i00 = (k.e * k.h - k.f * k.f) / det, i11 = (k.a * k.h - k.c * k.c) / det, i22 = (k.a * k.e - k.b * k.b) / det;
+        const T i01 = (k.c * k.f - k.b * k.h) / det, i02 = (k.b * k.f - k.c * k.e) / det, i12 = (k.b * k.c - k.a * k.f) / det;
+        const Vec3<T> q = linear();
+        const Vec3<T> inv_q{i00 * q.x + i01 * q.y + i02 * q.z, i01 * q.x + i11 * q.y + i12 * q.z, i02 * q.x + i12 * q.y + i22 * q.z};
+        const Vec3<T> centre = -inv_q;
+        const T level = dot(q, inv_q) - k.j;
+        if (!(level > T(0))) return {}; // empty solid
+        // Widened by a relative margin so rounding never clips the surface.
+        const Vec3<T> half = Vec3<T>(prism::sqrt(level * i00), prism::sqrt(level * i11), prism::sqrt(level * i22)) * T(1.0001);
+        return {origin_ + centre - half, origin_ + centre + half};
+    }
+
+    Coefficients k_;
+    Vec3<T> origin_{};
+    Aabb<T> bounds_;
+};
+
+static_assert(Shape<Quadric<float>>);
+static_assert(Shape<Quadric<double>>);
+
+} // namespace prism
+
 // ---- prism/geometry/sphere.hpp ----
 // Sphere: the solid ball |p - center| <= radius.
 
@@ -725,6 +1410,11 @@ public:
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept
     {
         return {center_ - Vec3<T>(radius_), center_ + Vec3<T>(radius_)};
+    }
+
+    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
+    {
+        return length_squared(p - center_) < radius_ * radius_;
     }
 
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
@@ -784,6 +1474,78 @@ private:
 
 static_assert(Shape<Sphere<float>>);
 static_assert(Shape<Sphere<double>>);
+
+} // namespace prism
+
+// ---- prism/geometry/transformed.hpp ----
+// Transformed: any shape moved by an affine transform (rotate, scale, translate, shear).
+
+
+#include <utility>
+
+namespace prism {
+
+/// A shape under an affine transform from its own coordinates to the world's. The ray
+/// is carried into the shape's coordinates without renormalising its direction, so t
+/// means the same in both; normals map by the inverse transpose, so they stay right
+/// under non-uniform scale; hit-point error bounds are carried through the matrix.
+template <Shape S>
+class Transformed {
+public:
+    using scalar_type = typename S::scalar_type;
+    using T = scalar_type;
+    static constexpr std::size_t max_crossings = S::max_crossings;
+
+    // Transformed Public Methods
+
+    Transformed(S shape, const Transform<T>& to_world) : shape_(std::move(shape)), to_world_(to_world), bounds_(world_bounds()) {}
+
+    [[nodiscard]] const S& shape() const noexcept { return shape_; }
+    [[nodiscard]] const Transform<T>& transform() const noexcept { return to_world_; }
+    [[nodiscard]] Aabb<T> bounds() const noexcept { return bounds_; }
+
+    [[nodiscard]] bool contains(const Vec3<T>& p) const noexcept
+    {
+        return shape_.contains(Vec3<T>(to_world_.inverse_matrix() * glm::vec<4, T>(p, T(1))));
+    }
+
+    [[nodiscard]] Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        const Mat4<T>& inv = to_world_.inverse_matrix();
+        const Ray<T> local{Vec3<T>(inv * glm::vec<4, T>(ray.origin, T(1))), Vec3<T>(inv * glm::vec<4, T>(ray.direction, T(0)))};
+        Crossings<T, max_crossings> out = shape_.crossings(local, range);
+        for (std::size_t k = 0; k < out.count; ++k) {
+            Crossing<T>& c = out.items[k];
+            c.error = to_world_.point_error(c.point, c.error);
+            c.point = to_world_.point(c.point);
+            c.normal = normalize(to_world_.normal(c.normal));
+        }
+        return out;
+    }
+
+private:
+    /// The box around the eight transformed corners of the shape's box.
+    [[nodiscard]] Aabb<T> world_bounds() const noexcept
+    {
+        const Aabb<T> local = shape_.bounds();
+        if (local.empty()) return local;
+        if (!is_finite(local.lo) || !is_finite(local.hi)) return Aabb<T>::universe();
+        Aabb<T> out;
+        for (int corner = 0; corner < 8; ++corner) {
+            const Vec3<T> p{corner & 1 ? local.hi.x : local.lo.x, corner & 2 ? local.hi.y : local.lo.y, corner & 4 ? local.hi.z : local.lo.z};
+            const Vec3<T> w = to_world_.point(p);
+            out.lo = component_min(out.lo, w);
+            out.hi = component_max(out.hi, w);
+        }
+        // Widen by the rounding of the corner transform.
+        const Vec3<T> pad = gamma<T>(4) * (abs(out.lo) + abs(out.hi));
+        return {out.lo - pad, out.hi + pad};
+    }
+
+    S shape_;
+    Transform<T> to_world_;
+    Aabb<T> bounds_;
+};
 
 } // namespace prism
 

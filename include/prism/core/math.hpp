@@ -91,6 +91,19 @@ template <Scalar T>
     return {v.x < T(0) ? -v.x : v.x, v.y < T(0) ? -v.y : v.y, v.z < T(0) ? -v.z : v.z};
 }
 
+/// Component-wise minimum and maximum (glm::min and glm::max are not constexpr).
+template <Scalar T>
+[[nodiscard]] constexpr Vec3<T> component_min(const Vec3<T>& a, const Vec3<T>& b) noexcept
+{
+    return {a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.z < b.z ? a.z : b.z};
+}
+
+template <Scalar T>
+[[nodiscard]] constexpr Vec3<T> component_max(const Vec3<T>& a, const Vec3<T>& b) noexcept
+{
+    return {a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z};
+}
+
 template <Scalar T>
 [[nodiscard]] constexpr T max_component(const Vec3<T>& v) noexcept
 {
@@ -115,6 +128,21 @@ template <Scalar T>
 [[nodiscard]] constexpr T clamp(T x, T lo, T hi) noexcept
 {
     return x > lo ? (x < hi ? x : hi) : lo;
+}
+
+} // namespace prism
+
+namespace prism {
+
+/// a*b - c*d with one rounding error instead of a catastrophic cancellation (Kahan's
+/// algorithm with fused multiply-adds; pbrt-v4 DifferenceOfProducts).
+template <Scalar T>
+[[nodiscard]] constexpr T difference_of_products(T a, T b, T c, T d) noexcept
+{
+    if (std::is_constant_evaluated()) return a * b - c * d;
+    const T cd = c * d;
+    const T error = std::fma(-c, d, cd);
+    return std::fma(a, b, -cd) + error;
 }
 
 } // namespace prism

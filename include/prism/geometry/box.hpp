@@ -35,6 +35,11 @@ public:
     [[nodiscard]] constexpr const Vec3<T>& hi() const noexcept { return hi_; }
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return {lo_, hi_}; }
 
+    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
+    {
+        return lo_.x < p.x && p.x < hi_.x && lo_.y < p.y && p.y < hi_.y && lo_.z < p.z && p.z < hi_.z;
+    }
+
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         // Slab test over the whole line, remembering which face bounds the span.

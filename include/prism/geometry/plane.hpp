@@ -41,6 +41,8 @@ public:
     [[nodiscard]] constexpr T offset() const noexcept { return offset_; }
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return Aabb<T>::universe(); }
 
+    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return dot(normal_, p) < offset_; }
+
     [[nodiscard]] constexpr Crossings<T, 1> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         Crossings<T, 1> out;

@@ -32,6 +32,11 @@ public:
         return {center_ - Vec3<T>(radius_), center_ + Vec3<T>(radius_)};
     }
 
+    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
+    {
+        return length_squared(p - center_) < radius_ * radius_;
+    }
+
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         // Compute quadratic coefficients: a t^2 + 2 h t + c = 0 with f = o - center

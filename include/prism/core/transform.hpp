@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+// Transform: an invertible affine map of points, directions and normals.
+#pragma once
+
+#include <prism/core/check.hpp>
+#include <prism/core/math.hpp>
+#include <prism/core/offset.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace prism {
+
+template <Scalar T>
+using Mat4 = glm::mat<4, 4, T, glm::defaultp>;
+
+template <Scalar T>
+using Mat3 = glm::mat<3, 3, T, glm::defaultp>;
+
+/// An affine transform with its inverse. Compose with `then`, which applies this
+/// transform first and the argument second, as POV-Ray applies transforms in the order
+/// they are written: Transform::rotate_x(30).then(Transform::translate({1, 0, 0})).
+template <Scalar T = float>
+class Transform {
+public:
+    // Transform Public Methods
+
+    /// The identity.
+    Transform() = default;
+
+    /// From an affine 4x4 matrix (GLM, column-major: m[column][row]). Throws
+    /// std::invalid_argument for a non-finite, non-affine or singular matrix.
+    explicit Transform(const Mat4<T>& m) : m_(m)
+    {
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                if (!is_finite(m[c][r])) detail::throw_invalid("Transform matrix must be finite, got ", m[c][r], " at column ", c, " row ", r);
+        if (m[0][3] != T(0) || m[1][3] != T(0) || m[2][3] != T(0) || m[3][3] != T(1))
+            detail::throw_invalid("Transform matrix must be affine (last row 0 0 0 1)");
+        // Singular when the determinant is negligible beside the size of the linear part.
+        T scale = T(0);
+        for (int c = 0; c < 3; ++c) scale = std::max(scale, length(Vec3<T>(m[c])));
+        const T det = glm::determinant(Mat3<T>(m));
+        if (!(std::abs(det) > T(64) * std::numeric_limits<T>::epsilon() * scale * scale * scale))
+            detail::throw_invalid("Transform is singular (determinant ", det, ")");
+        inverse_ = glm::inverse(m);
+    }
+
+    [[nodiscard]] static Transform translate(const Vec3<T>& offset)
+    {
+        detail::require_finite("Transform translate", offset);
+        return Transform(glm::translate(Mat4<T>(T(1)), offset));
+    }
+
+    /// Scale by factors per axis; a zero factor is a singular transform.
+    [[nodiscard]] static Transform scale(const Vec3<T>& factors)
+    {
+        detail::require_finite("Transform scale", factors);
+        return Transform(glm::scale(Mat4<T>(T(1)), factors));
+    }
+
+    /// Rotation by `degrees` about `axis`, counter-clockwise looking down the axis
+    /// (right-hand rule in prism's right-handed coordinates).
+    [[nodiscard]] static Transform rotate(T degrees, const Vec3<T>& axis)
+    {
+        detail::require_finite("Transform rotate angle", degrees);
+        detail::require_nonzero("Transform rotate axis", axis);
+        return Transform(glm::rotate(Mat4<T>(T(1)), degrees * pi<T> / T(180), normalize(axis)));
+    }
+    [[nodiscard]] static Transform rotate_x(T degrees) { return rotate(degrees, {T(1), T(0), T(0)}); }
+    [[nodiscard]] static Transform rotate_y(T degrees) { return rotate(degrees, {T(0), T(1), T(0)}); }
+    [[nodiscard]] static Transform rotate_z(T degrees) { return rotate(degrees, {T(0), T(0), T(1)}); }
+
+    /// This transform followed by `next`.
+    [[nodiscard]] Transform then(const Transform& next) const { return Transform(next.m_ * m_, inverse_ * next.inverse_); }
+
+    [[nodiscard]] Transform inverse() const { return Transform(inverse_, m_); }
+
+    [[nodiscard]] const Mat4<T>& matrix() const noexcept { return m_; }
+    [[nodiscard]] const Mat4<T>& inverse_matrix() const noexcept { return inverse_; }
+
+    [[nodiscard]] Vec3<T> point(const Vec3<T>& p) const noexcept { return Vec3<T>(m_ * glm::vec<4, T>(p, T(1))); }
+    [[nodiscard]] Vec3<T> vector(const Vec3<T>& v) const noexcept { return Vec3<T>(m_ * glm::vec<4, T>(v, T(0))); }
+    /// A surface normal maps by the inverse transpose (unnormalised).
+    [[nodiscard]] Vec3<T> normal(const Vec3<T>& n) const noexcept
+    {
+        return {dot(Vec3<T>(inverse_[0]), n), dot(Vec3<T>(inverse_[1]), n), dot(Vec3<T>(inverse_[2]), n)};
+    }
+
+    /// The absolute error bound of point(p) for a point p known to within `error` per
+    /// axis (pbrt-v4, Transform::operator()(Point3fi)): the incoming error grows by the
+    /// matrix, and the matrix product adds gamma(3) of its terms' size.
+    [[nodiscard]] Vec3<T> point_error(const Vec3<T>& p, const Vec3<T>& error) const noexcept
+    {
+        Vec3<T> out;
+        for (int r = 0; r < 3; ++r) {
+            T carried = T(0), rounding = std::abs(m_[3][r]);
+            for (int c = 0; c < 3; ++c) {
+                carried += std::abs(m_[c][r]) * error[c];
+                rounding += std::abs(m_[c][r] * p[c]);
+            }
+            out[r] = (gamma<T>(3) + T(1)) * carried + gamma<T>(3) * rounding;
+        }
+        return out;
+    }
+
+private:
+    Transform(const Mat4<T>& m, const Mat4<T>& inverse) : m_(m), inverse_(inverse) {}
+
+    Mat4<T> m_{T(1)};
+    Mat4<T> inverse_{T(1)};
+};
+
+} // namespace prism

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: MIT
+// CsgNode: the boolean combination of two solids, by merging their crossing lists.
+//
+// Roth's method ("Ray Casting for Modeling Solids", 1982): walk the two sorted lists
+// of crossings together, keep whether the ray is inside each child, and emit a
+// crossing wherever the combination changes. It is right wherever the ray starts
+// (inside either child), whatever order the children lie in along the ray, for
+// unbounded children, and nests to any depth: a node is a Shape like any other, with
+// a capacity known at compile time (the sum of its children's).
+//
+// Coincident faces: all crossings at exactly the same t, from either child, are
+// applied together before the result is compared, so A - A is empty, A + A is A, and a
+// box minus a box that shares a face leaves no film. Faces that coincide only up to
+// rounding (computed by different arithmetic) are separate crossings and may leave a
+// sliver no thicker than their error bounds.
+#pragma once
+
+#include <prism/core/aabb.hpp>
+#include <prism/geometry/shape.hpp>
+
+#include <utility>
+
+namespace prism {
+
+/// A boolean operation: whether a point is inside the result, from whether it is
+/// inside each child; and whether the second child's surface faces the other way.
+template <class Op>
+concept CsgOperation = requires(bool a, bool b) {
+    { Op::combine(a, b) } -> std::same_as<bool>;
+    { Op::flips_second } -> std::convertible_to<bool>;
+};
+
+template <CsgOperation Op, Shape A, Shape B>
+    requires std::same_as<typename A::scalar_type, typename B::scalar_type>
+class CsgNode {
+public:
+    using scalar_type = typename A::scalar_type;
+    using T = scalar_type;
+    using operation = Op;
+    static constexpr std::size_t max_crossings = A::max_crossings + B::max_crossings;
+
+    // CsgNode Public Methods
+
+    constexpr CsgNode(A a, B b) : a_(std::move(a)), b_(std::move(b)), bounds_(Op::bounds(a_.bounds(), b_.bounds()))
+    {
+        bounded_ = is_finite(bounds_.lo) && is_finite(bounds_.hi);
+    }
+
+    /// Nested construction for the variadic forms: CsgNode<Op, A, CsgNode<Op, B, C>>(a, b, c).
+    template <class... Rest>
+        requires(sizeof...(Rest) >= 2)
+    constexpr CsgNode(A a, Rest&&... rest) : CsgNode(std::move(a), B(std::forward<Rest>(rest)...))
+    {
+    }
+
+    [[nodiscard]] constexpr const A& first() const noexcept { return a_; }
+    [[nodiscard]] constexpr const B& second() const noexcept { return b_; }
+    [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
+
+    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return Op::combine(a_.contains(p), b_.contains(p)); }
+
+    [[nodiscard]] constexpr Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        Crossings<T, max_crossings> out;
+        // Outside the bounds the ray cannot be inside the result.
+        if (bounded_ && bounds_.clip(ray, range).empty()) return out;
+
+        const auto ca = a_.crossings(ray, range);
+        const auto cb = b_.crossings(ray, range);
+        bool in_a = ca.inside_at_start, in_b = cb.inside_at_start;
+        bool inside = Op::combine(in_a, in_b);
+        out.inside_at_start = inside;
+
+        std::size_t i = 0, j = 0;
+        while (i < ca.size() || j < cb.size()) {
+            const T t = j == cb.size() || (i < ca.size() && ca[i].t <= cb[j].t) ? ca[i].t : cb[j].t;
+            // Apply every crossing at this t, from both children.
+            const Crossing<T>* from_a = nullptr;
+            const Crossing<T>* from_b = nullptr;
+            for (; i < ca.size() && ca[i].t == t; ++i) in_a = ca[i].entering, from_a = &ca[i];
+            for (; j < cb.size() && cb[j].t == t; ++j) in_b = cb[j].entering, from_b = &cb[j];
+            const bool now = Op::combine(in_a, in_b);
+            if (now == inside) continue;
+            inside = now;
+            // The result's surface here is the first child's where it has one.
+            Crossing<T> c = from_a != nullptr ? *from_a : *from_b;
+            if (from_a == nullptr && Op::flips_second) c.normal = -c.normal;
+            c.entering = now;
+            out.push_back(c);
+        }
+        return out;
+    }
+
+private:
+    A a_;
+    B b_;
+    Aabb<T> bounds_;
+    bool bounded_ = false;
+};
+
+namespace detail {
+
+/// Op applied left to right over a list of shapes: A op (B op (C ...)).
+template <class Op, class... S>
+struct csg_fold;
+
+template <class Op, class A>
+struct csg_fold<Op, A> {
+    using type = A;
+};
+
+template <class Op, class A, class B, class... Rest>
+struct csg_fold<Op, A, B, Rest...> {
+    using type = CsgNode<Op, A, typename csg_fold<Op, B, Rest...>::type>;
+};
+
+template <Scalar T>
+constexpr Aabb<T> aabb_union(const Aabb<T>& a, const Aabb<T>& b) noexcept
+{
+    return {component_min(a.lo, b.lo), component_max(a.hi, b.hi)};
+}
+
+template <Scalar T>
+constexpr Aabb<T> aabb_intersection(const Aabb<T>& a, const Aabb<T>& b) noexcept
+{
+    return {component_max(a.lo, b.lo), component_min(a.hi, b.hi)};
+}
+
+} // namespace detail
+
+} // namespace prism

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+#include <prism/core/transform.hpp>
+
+#include "../support.hpp"
+
+using doctest::Approx;
+using prism::Transform;
+using prism::Vec3;
+
+TEST_CASE_TEMPLATE("transforms compose in the order written and invert", T, float, double)
+{
+    // Rotate 90 deg about z (x -> y), then move by (1, 0, 0).
+    const auto t = Transform<T>::rotate_z(T(90)).then(Transform<T>::translate({T(1), T(0), T(0)}));
+    const Vec3<T> p = t.point({T(1), T(0), T(0)});
+    CHECK(p.x == Approx(1));
+    CHECK(p.y == Approx(1));
+    const Vec3<T> back = t.inverse().point(p);
+    CHECK(back.x == Approx(1));
+    CHECK(back.y == Approx(0).epsilon(1e-6));
+    CHECK(t.vector({T(1), T(0), T(0)}).x == Approx(0).epsilon(1e-6)); // directions ignore translation
+}
+
+TEST_CASE_TEMPLATE("normals stay perpendicular under non-uniform scale", T, float, double)
+{
+    const auto squash = Transform<T>::scale({T(4), T(1), T(0.5)}).then(Transform<T>::rotate(T(33), {T(1), T(2), T(3)}));
+    prism::Pcg32 rng(2u, 2u);
+    for (int i = 0; i < 1000; ++i) {
+        const Vec3<T> n = test::random_direction<T>(rng);
+        // A tangent vector of the plane with normal n, mapped as a direction.
+        const Vec3<T> tangent = prism::cross(n, test::random_direction<T>(rng));
+        CHECK(std::abs(prism::dot(squash.normal(n), squash.vector(tangent))) <= T(1e-4) * prism::length(squash.normal(n)) * T(4));
+    }
+}
+
+TEST_CASE_TEMPLATE("the error bound of a transformed point covers the true value", T, float, double)
+{
+    const auto t = Transform<T>::rotate(T(17), {T(1), T(1), T(0)}).then(Transform<T>::translate({T(1000), T(-3), T(7)}));
+    prism::Pcg32 rng(9u, 1u);
+    for (int i = 0; i < 1000; ++i) {
+        const Vec3<T> p = test::random_point<T>(rng, T(100));
+        const Vec3<T> w = t.point(p);
+        const Vec3<T> bound = t.point_error(p, Vec3<T>(T(0)));
+        const auto& m = t.matrix();
+        for (int r = 0; r < 3; ++r) {
+            long double exact = m[3][r];
+            for (int c = 0; c < 3; ++c) exact += (long double)m[c][r] * p[c];
+            CHECK(std::abs(exact - w[r]) <= bound[r] + 1e-300L);
+        }
+    }
+}
+
+TEST_CASE("singular and malformed transforms are rejected")
+{
+    CHECK_THROWS_WITH_AS(Transform<float>::scale({1, 0, 1}), doctest::Contains("singular"), std::invalid_argument);
+    CHECK_THROWS_AS(Transform<double>::translate({0, std::nan(""), 0}), std::invalid_argument);
+    prism::Mat4<double> projective(1.0);
+    projective[0][3] = 0.5;
+    CHECK_THROWS_WITH_AS(Transform<double>{projective}, doctest::Contains("affine"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Transform<float>::rotate(10, {0, 0, 0}), doctest::Contains("rotate axis"), std::invalid_argument);
+}

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+#include <prism/geometry/transformed.hpp>
+#include <prism/prism.hpp>
+
+#include "../support.hpp"
+
+using doctest::Approx;
+using namespace prism;
+
+TEST_CASE_TEMPLATE("a sphere under non-uniform scale is the ellipsoid quadric", T, float, double)
+{
+    const auto to_world = Transform<T>::scale({T(2), T(1), T(0.5)}).then(Transform<T>::rotate_y(T(30))).then(Transform<T>::translate({T(1), T(2), T(3)}));
+    const Transformed squashed(Sphere<T>({T(0), T(0), T(0)}, T(1)), to_world);
+    // The unit sphere as a quadric, moved by the same transform.
+    const auto ellipsoid = Quadric<T>({.a = 1, .e = 1, .h = 1, .j = -1}).transformed(to_world);
+    Pcg32 rng(7u, 7u);
+    int compared = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3<T> eye = Vec3<T>{T(1), T(2), T(3)} + test::random_direction<T>(rng) * T(6);
+        const Ray<T> ray{eye, normalize(Vec3<T>{T(1), T(2), T(3)} + test::random_point<T>(rng, T(1)) - eye)};
+        const auto a = squashed.crossings(ray, Interval<T>::universe());
+        const auto b = ellipsoid.crossings(ray, Interval<T>::universe());
+        if (a.size() != 2 || b.size() != 2) continue; // grazing rays may differ by a touch
+        ++compared;
+        for (int k = 0; k < 2; ++k) {
+            CHECK(a[k].t == Approx(b[k].t).epsilon(1e-3));
+            CHECK(a[k].entering == b[k].entering);
+            CHECK(dot(a[k].normal, b[k].normal) == Approx(1).epsilon(1e-3));
+            CHECK(length(a[k].point - b[k].point) < T(1e-3));
+        }
+        CHECK(squashed.contains(ray.at(T(0.5) * (a[0].t + a[1].t))));
+    }
+    CHECK(compared > 1000);
+    CHECK(squashed.bounds().contains({T(1), T(2), T(3)}));
+}
+
+TEST_CASE_TEMPLATE("a ray leaving a transformed box or sphere never hits it again", T, float, double)
+{
+    Pcg32 rng(3u, 8u);
+    for (double distance : {1.0, 1e3, 1e5}) {
+        INFO("distance " << distance);
+        CHECK(test::reintersections(rng, 3000, [&](Pcg32& r) {
+                  const Vec3<T> centre = test::random_point<T>(r, T(distance));
+                  const auto place = Transform<T>::scale({T(0.5) + r.uniform<T>(), T(0.5) + r.uniform<T>(), T(0.5) + r.uniform<T>()})
+                                         .then(Transform<T>::rotate(T(360) * r.uniform<T>(), test::random_direction<T>(r)))
+                                         .then(Transform<T>::translate(centre));
+                  return std::pair{Transformed(Box<T>({T(-1), T(-1), T(-1)}, {T(1), T(1), T(1)}), place), centre};
+              }) == 0);
+        CHECK(test::reintersections(rng, 3000, [&](Pcg32& r) {
+                  const Vec3<T> centre = test::random_point<T>(r, T(distance));
+                  const auto place = Transform<T>::scale({T(0.5) + r.uniform<T>(), T(0.5) + r.uniform<T>(), T(2)}).then(Transform<T>::translate(centre));
+                  return std::pair{Transformed(Sphere<T>({T(0), T(0), T(0)}, T(1)), place), centre};
+              }) == 0);
+    }
+}
