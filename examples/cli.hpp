@@ -19,6 +19,7 @@ namespace examples {
 struct Options {
     prism::RenderConfig render{};
     std::filesystem::path out = ".";
+    std::filesystem::path povray{}; ///< POV-Ray's PNG of the same scene, to compare with
 };
 
 inline void print_help(const char* program, const char* description, const Options& defaults)
@@ -31,6 +32,7 @@ inline void print_help(const char* program, const char* description, const Optio
                 "  --threads N   worker threads, 0 = all cores (default 0)\n"
                 "  --seed N      random seed (default 0)\n"
                 "  --out DIR     folder for the images, created if missing (default .)\n"
+                "  --povray PNG  POV-Ray's picture of the same scene: also write prism | POV-Ray | difference\n"
                 "  --help        this text\n",
                 program, description, program, defaults.render.width, defaults.render.height, defaults.render.spp);
 }
@@ -65,6 +67,7 @@ inline bool parse(int argc, char** argv, Options& options, const char* descripti
         else if (flag == "--threads") options.render.threads = parse_integer<unsigned>(flag, value, 0, 1024);
         else if (flag == "--seed") options.render.seed = parse_integer<std::uint64_t>(flag, value, 0, (1LL << 62));
         else if (flag == "--out") options.out = value;
+        else if (flag == "--povray") options.povray = value;
         else throw std::invalid_argument("unknown option '" + std::string(flag) + "' (see --help)");
     }
     std::filesystem::create_directories(options.out);

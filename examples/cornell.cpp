@@ -2,6 +2,7 @@
 // cornell: the Whitted part of shared/scenes/cornell_caustics.pov (POV-Ray with
 // Declare=PHOTONS=0): a red/green box, a glass and a mirror sphere, one point light.
 #include "cli.hpp"
+#include "compare.hpp"
 #include "scenes/cornell.hpp"
 
 #include <prism/io/image.hpp>
@@ -17,6 +18,7 @@ int main(int argc, char** argv)
         const prism::Film film = examples::timed_render("cornell", scenes::cornell_camera<float>(), integrator, options.render);
         prism::write_png(film, options.out / "cornell.png");
         prism::write_pfm(film, options.out / "cornell.pfm");
+        if (!options.povray.empty()) examples::write_comparison(film, options.povray, options.out / "cornell_vs_povray.png");
         return 0;
     });
 }

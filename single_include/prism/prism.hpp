@@ -1681,6 +1681,7 @@ template <Scalar T>
 // contains no refraction code.
 
 
+#include <cmath>
 #include <optional>
 
 namespace prism {
@@ -1737,7 +1738,7 @@ private:
         const Vec3<T> n = hit.entering ? hit.normal : -hit.normal;
         Rgb<T> radiance{T(0)};
 
-        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, n);
+        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, n, d);
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
@@ -1778,10 +1779,12 @@ private:
     }
 
     template <class M>
-    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& n) const noexcept
+    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& n, const Vec3<T>& d) const noexcept
     {
         Rgb<T> irradiance{T(0)}; // sum of V E cos over the lights
         Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights
+        Rgb<T> highlight{T(0)};  // POV-Ray's Phong term, when asked for
+        const Vec3<T> mirror = reflect(d, n);
         scene_->for_each_light([&](const auto& light) {
             const LightSample<T> s = light.sample(hit.point);
             const T cos = dot(n, s.wi);
@@ -1790,9 +1793,13 @@ private:
             const Rgb<T> v = scene_->transmittance(shadow, s.distance * (T(1) - shadow_epsilon));
             irradiance += v * s.irradiance * cos;
             unlit *= Rgb<T>(T(1)) - v;
+            if (material.phong > T(0)) {
+                const T alignment = dot(mirror, s.wi);
+                if (alignment > T(0)) highlight += (material.phong * std::pow(alignment, material.phong_size) / pi<T>)*v * s.irradiance;
+            }
         });
         const Rgb<T> albedo = material.albedo.albedo(hit.point);
-        return albedo * ((material.kd / pi<T>)*irradiance + material.ka * scene_->ambient * unlit);
+        return albedo * ((material.kd / pi<T>)*irradiance + material.ka * scene_->ambient * unlit) + highlight;
     }
 
     const SceneT* scene_;
@@ -2158,6 +2165,11 @@ namespace prism {
 
 /// Lambertian reflection, BRDF = albedo / pi, scaled by kd for light from the lights and
 /// by ka for the scene's ambient term (seen only where every light is occluded).
+///
+/// `phong` adds POV-Ray's Phong highlight, phong (R . L)^phong_size E / pi per light,
+/// with R the mirror direction of the viewing ray (Phong 1975, as POV-Ray's `phong`
+/// finish computes it, so that scenes written for POV-Ray look the same). It is a
+/// non-physical highlight and off by default.
 template <Scalar T = float, Texture Albedo = Solid<T>>
 struct Diffuse {
     using scalar_type = T;
@@ -2168,12 +2180,16 @@ struct Diffuse {
     Albedo albedo{};
     T kd = T(1);
     T ka = T(1);
+    T phong = T(0);
+    T phong_size = T(40);
 
     constexpr void validate() const
     {
         albedo.validate();
         detail::require_non_negative("Diffuse kd", kd);
         detail::require_non_negative("Diffuse ka", ka);
+        detail::require_non_negative("Diffuse phong", phong);
+        detail::require_positive("Diffuse phong_size", phong_size);
     }
 };
 
@@ -2666,10 +2682,11 @@ Scene(LightList, Slots...) -> Scene<LightList, Slots...>;
 // <prism/io/image.hpp> for them).
 
 // ---- prism/io/image.hpp ----
-// Image files: PNG (sRGB, 8 bit, through stb_image_write) and PFM (exact linear floats).
+// Image files: PNG (sRGB, 8 bit, through stb_image_write and stb_image) and PFM (exact
+// linear floats).
 //
 // Opt-in: prism/prism.hpp does not include this header, since it needs stb_image_write
-// (Debian: libstb-dev). A file is written whole or not at all: bytes go to a temporary
+// and stb_image (Debian: libstb-dev). A file is written whole or not at all: bytes go to a temporary
 // file beside the target, which is renamed over it only once complete; any failure
 // throws std::runtime_error naming the path and the reason.
 
@@ -2689,6 +2706,29 @@ Scene(LightList, Slots...) -> Scene<LightList, Slots...>;
 #ifdef PRISM_DEFINED_STB_IMPLEMENTATION
 #undef STB_IMAGE_WRITE_IMPLEMENTATION
 #undef PRISM_DEFINED_STB_IMPLEMENTATION
+#endif
+
+#if !defined(STBI_INCLUDE_STB_IMAGE_H)
+// The same for stb_image, reading PNG only.
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#define PRISM_DEFINED_STBI_IMPLEMENTATION
+#endif
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wconversion"
+#pragma GCC diagnostic ignored "-Wsign-conversion"
+#pragma GCC diagnostic ignored "-Wshadow"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#if __has_include(<stb/stb_image.h>)
+#include <stb/stb_image.h>
+#else
+#include <stb_image.h>
+#endif
+#pragma GCC diagnostic pop
+#ifdef PRISM_DEFINED_STBI_IMPLEMENTATION
+#undef STB_IMAGE_IMPLEMENTATION
+#undef PRISM_DEFINED_STBI_IMPLEMENTATION
 #endif
 
 #include <bit>
@@ -2795,6 +2835,26 @@ inline void write_image(const Film& film, const std::filesystem::path& path)
     if (extension == ".png") return write_png(film, path);
     if (extension == ".pfm") return write_pfm(film, path);
     detail::throw_io(path, "unknown image extension '" + extension + "' (use .png or .pfm)");
+}
+
+/// Read an 8-bit PNG (grey, RGB or with alpha) into linear radiance, undoing sRGB.
+[[nodiscard]] inline Film read_png(const std::filesystem::path& path)
+{
+    int width = 0, height = 0, channels = 0;
+    unsigned char* data = stbi_load(path.c_str(), &width, &height, &channels, 3);
+    if (data == nullptr) throw std::runtime_error("prism: cannot read '" + path.string() + "': " + stbi_failure_reason());
+    Film film(width, height);
+    const auto linear = [](unsigned char byte) {
+        const float x = float(byte) / 255.0f;
+        return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
+    };
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const unsigned char* p = data + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x));
+            film.set(x, y, Rgb<float>{linear(p[0]), linear(p[1]), linear(p[2])});
+        }
+    stbi_image_free(data);
+    return film;
 }
 
 /// Read a PFM written by write_pfm (3 channels, either byte order).

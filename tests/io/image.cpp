@@ -63,6 +63,9 @@ TEST_CASE("PNG is sRGB-encoded and complete")
     CHECK(file[1] == 'P');
     CHECK(file[2] == 'N');
     CHECK(file[3] == 'G');
+    // Reading it back gives the same 8-bit values.
+    CHECK(prism::to_srgb8(prism::read_png(dir / "x.png")) == bytes);
+    CHECK_THROWS_WITH_AS((void)prism::read_png(dir / "absent.png"), doctest::Contains("absent.png"), std::runtime_error);
     fs::remove_all(dir);
 }
 

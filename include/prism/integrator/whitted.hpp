@@ -21,6 +21,7 @@
 #include <prism/optics/beer.hpp>
 #include <prism/optics/refract.hpp>
 
+#include <cmath>
 #include <optional>
 
 namespace prism {
@@ -77,7 +78,7 @@ private:
         const Vec3<T> n = hit.entering ? hit.normal : -hit.normal;
         Rgb<T> radiance{T(0)};
 
-        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, n);
+        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, n, d);
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
@@ -118,10 +119,12 @@ private:
     }
 
     template <class M>
-    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& n) const noexcept
+    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& n, const Vec3<T>& d) const noexcept
     {
         Rgb<T> irradiance{T(0)}; // sum of V E cos over the lights
         Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights
+        Rgb<T> highlight{T(0)};  // POV-Ray's Phong term, when asked for
+        const Vec3<T> mirror = reflect(d, n);
         scene_->for_each_light([&](const auto& light) {
             const LightSample<T> s = light.sample(hit.point);
             const T cos = dot(n, s.wi);
@@ -130,9 +133,13 @@ private:
             const Rgb<T> v = scene_->transmittance(shadow, s.distance * (T(1) - shadow_epsilon));
             irradiance += v * s.irradiance * cos;
             unlit *= Rgb<T>(T(1)) - v;
+            if (material.phong > T(0)) {
+                const T alignment = dot(mirror, s.wi);
+                if (alignment > T(0)) highlight += (material.phong * std::pow(alignment, material.phong_size) / pi<T>)*v * s.irradiance;
+            }
         });
         const Rgb<T> albedo = material.albedo.albedo(hit.point);
-        return albedo * ((material.kd / pi<T>)*irradiance + material.ka * scene_->ambient * unlit);
+        return albedo * ((material.kd / pi<T>)*irradiance + material.ka * scene_->ambient * unlit) + highlight;
     }
 
     const SceneT* scene_;

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Image files: PNG (sRGB, 8 bit, through stb_image_write) and PFM (exact linear floats).
+// Image files: PNG (sRGB, 8 bit, through stb_image_write and stb_image) and PFM (exact
+// linear floats).
 //
 // Opt-in: prism/prism.hpp does not include this header, since it needs stb_image_write
-// (Debian: libstb-dev). A file is written whole or not at all: bytes go to a temporary
+// and stb_image (Debian: libstb-dev). A file is written whole or not at all: bytes go to a temporary
 // file beside the target, which is renamed over it only once complete; any failure
 // throws std::runtime_error naming the path and the reason.
 #pragma once
@@ -25,6 +26,29 @@
 #ifdef PRISM_DEFINED_STB_IMPLEMENTATION
 #undef STB_IMAGE_WRITE_IMPLEMENTATION
 #undef PRISM_DEFINED_STB_IMPLEMENTATION
+#endif
+
+#if !defined(STBI_INCLUDE_STB_IMAGE_H)
+// The same for stb_image, reading PNG only.
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#define PRISM_DEFINED_STBI_IMPLEMENTATION
+#endif
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wconversion"
+#pragma GCC diagnostic ignored "-Wsign-conversion"
+#pragma GCC diagnostic ignored "-Wshadow"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#if __has_include(<stb/stb_image.h>)
+#include <stb/stb_image.h>
+#else
+#include <stb_image.h>
+#endif
+#pragma GCC diagnostic pop
+#ifdef PRISM_DEFINED_STBI_IMPLEMENTATION
+#undef STB_IMAGE_IMPLEMENTATION
+#undef PRISM_DEFINED_STBI_IMPLEMENTATION
 #endif
 
 #include <bit>
@@ -131,6 +155,26 @@ inline void write_image(const Film& film, const std::filesystem::path& path)
     if (extension == ".png") return write_png(film, path);
     if (extension == ".pfm") return write_pfm(film, path);
     detail::throw_io(path, "unknown image extension '" + extension + "' (use .png or .pfm)");
+}
+
+/// Read an 8-bit PNG (grey, RGB or with alpha) into linear radiance, undoing sRGB.
+[[nodiscard]] inline Film read_png(const std::filesystem::path& path)
+{
+    int width = 0, height = 0, channels = 0;
+    unsigned char* data = stbi_load(path.c_str(), &width, &height, &channels, 3);
+    if (data == nullptr) throw std::runtime_error("prism: cannot read '" + path.string() + "': " + stbi_failure_reason());
+    Film film(width, height);
+    const auto linear = [](unsigned char byte) {
+        const float x = float(byte) / 255.0f;
+        return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
+    };
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const unsigned char* p = data + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x));
+            film.set(x, y, Rgb<float>{linear(p[0]), linear(p[1]), linear(p[2])});
+        }
+    stbi_image_free(data);
+    return film;
 }
 
 /// Read a PFM written by write_pfm (3 channels, either byte order).
