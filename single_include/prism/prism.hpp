@@ -285,14 +285,16 @@ template <Scalar T>
                                                const Vec3<T>& w) noexcept
 {
     const T d = dot(abs(n), p_error);
-    Vec3<T> offset = d * n;
-    if (dot(w, n) < T(0)) offset = -offset;
-    Vec3<T> po = p + offset;
-    // Round away from p so the offset survives the addition's rounding.
+    const T side = dot(w, n) < T(0) ? T(-1) : T(1);
+    Vec3<T> po = p + (side * d) * n;
+    // Round one ulp further away from the surface on every axis the normal has, so the
+    // offset survives the addition's rounding, and so a point whose error bound is zero
+    // (a box face's snapped coordinate) still leaves the surface: a ray starting exactly
+    // on a face could not tell which side of it it is on.
     for (int i = 0; i < 3; ++i) {
-        if (offset[i] > T(0))
+        if (side * n[i] > T(0))
             po[i] = std::nextafter(po[i], infinity<T>);
-        else if (offset[i] < T(0))
+        else if (side * n[i] < T(0))
             po[i] = std::nextafter(po[i], -infinity<T>);
     }
     return po;

@@ -15,8 +15,8 @@ static_assert(std::same_as<Difference<Sphere<float>, Box<float>, Plane<float>>,
 constexpr auto nothing = difference_of(Sphere<double>({0, 0, 0}, 1), Sphere<double>({0, 0, 0}, 1));
 static_assert(nothing.crossings({{-5, 0, 0}, {1, 0, 0}}, Interval<double>::universe()).empty());
 // A box with a bite: [0, 2]^3 minus [1, 3] x [0, 2] x [0, 2], which shares three faces.
-constexpr auto bitten = difference_of(Box<float>({0, 0, 0}, {2, 2, 2}), Box<float>({1, 0, 0}, {3, 2, 2}));
-constexpr auto bitten_hits = bitten.crossings({{-1, 1, 1}, {1, 0, 0}}, Interval<float>::universe());
+constexpr auto bitten_box = difference_of(Box<float>({0, 0, 0}, {2, 2, 2}), Box<float>({1, 0, 0}, {3, 2, 2}));
+constexpr auto bitten_hits = bitten_box.crossings({{-1, 1, 1}, {1, 0, 0}}, Interval<float>::universe());
 static_assert(bitten_hits.size() == 2 && bitten_hits[0].t == 1 && bitten_hits[1].t == 2 && bitten_hits[1].normal.x == 1);
 #endif
 

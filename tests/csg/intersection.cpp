@@ -10,8 +10,8 @@ using namespace prism;
 
 #if PRISM_CONSTEXPR_VECTORS
 // A lens: two spheres of radius 1.1 with centres 1.2 apart overlap on x in [-0.5, 0.5].
-constexpr auto lens = intersection_of(Sphere<double>({-0.6, 0, 0}, 1.1), Sphere<double>({0.6, 0, 0}, 1.1));
-constexpr auto lens_hits = lens.crossings({{-5, 0, 0}, {1, 0, 0}}, Interval<double>::universe());
+constexpr auto constant_lens = intersection_of(Sphere<double>({-0.6, 0, 0}, 1.1), Sphere<double>({0.6, 0, 0}, 1.1));
+constexpr auto lens_hits = constant_lens.crossings({{-5, 0, 0}, {1, 0, 0}}, Interval<double>::universe());
 static_assert(lens_hits.size() == 2 && lens_hits[0].t > 4.49 && lens_hits[0].t < 4.51 && lens_hits[1].t > 5.49 && lens_hits[1].t < 5.51);
 #endif
 

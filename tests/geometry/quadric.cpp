@@ -241,9 +241,9 @@ TEST_CASE("bad input names the coefficient or parameter")
     CHECK_THROWS_WITH_AS(Quadric<float>({}), "prism: Quadric coefficients are all zero", std::invalid_argument);
     CHECK_THROWS_WITH_AS(Quadric<float>({.j = 2}), doctest::Contains("no x, y or z term"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(Quadric<double>({.a = 1, .f = std::nan("")}), doctest::Contains("coefficient f"), std::invalid_argument);
-    CHECK_THROWS_AS(Quadric<double>::from_povray(1, 1, 1, 0, 0, 0, 0, 0, 0, INFINITY), std::invalid_argument);
-    CHECK_THROWS_WITH_AS(Quadric<float>::cylinder({0, 0, 0}, {0, 1, 0}, -1), doctest::Contains("cylinder radius"), std::invalid_argument);
-    CHECK_THROWS_WITH_AS(Quadric<float>::cone({0, 0, 0}, {0, 0, 0}, 30), doctest::Contains("cone axis"), std::invalid_argument);
-    CHECK_THROWS_AS(Quadric<float>::cone({0, 0, 0}, {0, 0, 1}, 90), std::invalid_argument);
-    CHECK_THROWS_WITH_AS(Quadric<float>::ellipsoid({0, 0, 0}, {1, 0, 1}), doctest::Contains("semi_axes.y"), std::invalid_argument);
+    CHECK_THROWS_AS((void)Quadric<double>::from_povray(1, 1, 1, 0, 0, 0, 0, 0, 0, INFINITY), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((void)Quadric<float>::cylinder({0, 0, 0}, {0, 1, 0}, -1), doctest::Contains("cylinder radius"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((void)Quadric<float>::cone({0, 0, 0}, {0, 0, 0}, 30), doctest::Contains("cone axis"), std::invalid_argument);
+    CHECK_THROWS_AS((void)Quadric<float>::cone({0, 0, 0}, {0, 0, 1}, 90), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((void)Quadric<float>::ellipsoid({0, 0, 0}, {1, 0, 1}), doctest::Contains("semi_axes.y"), std::invalid_argument);
 }
