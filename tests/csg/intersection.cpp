@@ -48,3 +48,31 @@ TEST_CASE("clipping an unbounded quadric to a box caps it")
     CHECK(across[0].t == doctest::Approx(4));
     CHECK(tube.bounds().hi.y == 1);
 }
+
+TEST_CASE("a glass lens made by intersection focuses at the thick-lens back focal distance")
+{
+    // Faces of radius 1.1 (R1 = 1.1, R2 = -1.1), thickness d = 1 on the axis, n = 1.5:
+    // power (n - 1)(1/R1 - 1/R2 + (n - 1) d / (n R1 R2)) = 0.771349, f = 1.296430, and the
+    // back focal distance f (1 - (n - 1) d / (n R1)) = 0.903573 from the back vertex at x = 0.5.
+    const double n = 1.5, r = 1.1, d = 1.0;
+    const double power = (n - 1) * (1 / r + 1 / r - (n - 1) * d / (n * r * r));
+    const double focus = 0.5 + (1 / power) * (1 - (n - 1) * d / (n * r));
+    const auto lens = intersection_of(Sphere<double>({-0.6, 0, 0}, 1.1), Sphere<double>({0.6, 0, 0}, 1.1));
+    for (double height : {1e-3, 2e-3}) {
+        Ray<double> ray{{-3, height, 0}, {1, 0, 0}};
+        // Through the front face, then the back face: refraction at each, normals from the CSG node.
+        for (double eta : {n, 1 / n}) {
+            const auto c = lens.crossings(ray, {0, infinity<double>});
+            REQUIRE(!c.empty());
+            const Crossing<double>& x = c.front();
+            const Vec3<double> facing = x.entering ? x.normal : -x.normal;
+            const auto bent = refract(ray.direction, facing, eta);
+            REQUIRE(bent);
+            ray = spawn_ray(x.point, x.error, x.normal, *bent);
+        }
+        // Where the emerging ray crosses the axis.
+        const double axis_x = ray.origin.x - ray.origin.y * ray.direction.x / ray.direction.y;
+        CHECK(axis_x == doctest::Approx(focus).epsilon(1e-5));
+    }
+    CHECK(focus == doctest::Approx(1.403573).epsilon(1e-6));
+}

@@ -128,3 +128,48 @@ TEST_CASE("depth limit and adaptive cut-off end the recursion")
 using SmallScene = Scene<Lights<PointLight<float>>, Object<Sphere<float>, Diffuse<float>>>;
 static_assert(std::is_constructible_v<Whitted<SmallScene>, const SmallScene&>);
 static_assert(!std::is_constructible_v<Whitted<SmallScene>, SmallScene&&>);
+
+TEST_CASE("CSG objects in a scene: they cast shadows, let light through their bores, and refract")
+{
+    // A bead (a sphere bored along y) over a floor, the light straight above it.
+    const auto bead = difference_of(Sphere<double>({0, 2, 0}, 1), Quadric<double>::cylinder({0, 0, 0}, {0, 1, 0}, 0.3));
+    const Scene scene{Lights{PointLight<double>{.position = {0, 6, 0}, .intensity = Rgb<double>(36)}},
+                      Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(1)}, .kd = 1, .ka = 0}},
+                      Object{bead, Diffuse<double>{.albedo = {.color = Rgb<double>(0.5)}, .kd = 1, .ka = 0}}};
+    const Whitted integrator(scene);
+    const auto floor_at = [&](double x) { return integrator.radiance({{x, 0.5, 0.01}, normalize(Vec3<double>{0, -0.5, -0.01})}).x; };
+    // Under the bore the light comes through: E = I / r^2 = 36 / 36, L = 1/pi.
+    CHECK(floor_at(0) == Approx(1 / std::acos(-1.0)).epsilon(1e-3));
+    // Under the ring of the bead: in shadow.
+    CHECK(floor_at(0.6) == 0);
+    // The bead's top face around the bore is lit from above.
+    CHECK(integrator.radiance({{0.6, 5, 0.3}, normalize(Vec3<double>{0, -1, -0.05})}).x > 0.01);
+
+    // A glass lens from two spheres, absorbing, in front of a uniform sky: along its axis
+    // every inter-reflection stays on the axis, so the slab's closed form holds with
+    // d = 1, the lens's thickness there.
+    const double sigma = 0.7, d = 1, r = 0.04;
+    Scene lens{Lights{PointLight<double>{.intensity = Rgb<double>(0)}},
+               Object{intersection_of(Sphere<double>({-0.6, 0, 0}, 1.1), Sphere<double>({0.6, 0, 0}, 1.1)),
+                      Dielectric<double>{.ior = 1.5, .absorption = Rgb<double>(sigma)}}};
+    lens.background = {1, 1, 1};
+    const double e = std::exp(-sigma * d);
+    CHECK(Whitted(lens, {.max_depth = 60, .min_weight = 0}).radiance({{-5, 0, 0}, {1, 0, 0}}).x ==
+          Approx(r + (1 - r) * (1 - r) * e / (1 - r * e)).epsilon(1e-9));
+}
+
+TEST_CASE("POV-Ray's Phong highlight: phong (R . L)^size E / pi, on top of the diffuse term")
+{
+    // Light straight above a white floor, seen from the mirror direction of the light's
+    // reflection at the point: R . L = 1, so the highlight adds phong E / pi.
+    const double phong = 0.5;
+    const Scene scene{Lights{PointLight<double>{.position = {0, 2, 0}, .intensity = Rgb<double>(4)}},
+                      Object{Plane<double>({0, 1, 0}, 0),
+                             Diffuse<double>{.albedo = {.color = Rgb<double>(0.5)}, .kd = 1, .ka = 0, .phong = phong, .phong_size = 40}}};
+    const Whitted integrator(scene);
+    const double e = 1, inv_pi = 1 / std::acos(-1.0); // E = 4 / 2^2 at normal incidence
+    CHECK(integrator.radiance({{0, 1, 0}, {0, -1, 0}}).x == Approx(0.5 * inv_pi * e + phong * inv_pi * e));
+    // Seen at 60 degrees off the mirror direction, (cos 60)^40 is negligible.
+    const Vec3<double> oblique = normalize(Vec3<double>{std::sqrt(3.0), -1, 0});
+    CHECK(integrator.radiance({-oblique, oblique}).x == Approx(0.5 * inv_pi * e).epsilon(1e-6));
+}
