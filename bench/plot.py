@@ -102,18 +102,58 @@ def acne_chart(rows):
 
 
 def povray_chart(rows):
-    fig, ax = plt.subplots(figsize=(5.5, 3.6))
-    threads = [r["threads"] for r in rows]
-    x = range(len(rows))
-    ax.bar([i - 0.2 for i in x], [float(r["prism_seconds"]) for r in rows], 0.4, label="prism (render time)")
-    ax.bar([i + 0.2 for i in x], [float(r["povray_trace_seconds"]) for r in rows], 0.4, label="POV-Ray 3.7 (trace time)")
-    for i, r in zip(x, rows):
-        ax.annotate(f"{float(r['ratio']):.2f}x", (i - 0.2, float(r["prism_seconds"])), ha="center", va="bottom", fontsize=9)
-    ax.set_xticks(list(x), [f"{t} thread(s)" for t in threads])
-    ax.set_ylabel("seconds (minimum of runs)")
-    ax.set_title("cornell, 512x512, 1 spp, no photons")
+    scenes = list(dict.fromkeys(r["scene"] for r in rows))
+    fig, axes = plt.subplots(1, len(scenes), figsize=(5.2 * len(scenes), 3.6), squeeze=False)
+    for ax, scene in zip(axes[0], scenes):
+        pts = [r for r in rows if r["scene"] == scene]
+        x = range(len(pts))
+        ax.bar([i - 0.2 for i in x], [float(r["prism_seconds"]) for r in pts], 0.4, label="prism (render time)")
+        ax.bar([i + 0.2 for i in x], [float(r["povray_trace_seconds"]) for r in pts], 0.4, label="POV-Ray 3.7 (trace time)")
+        for i, r in zip(x, pts):
+            ax.annotate(f"{float(r['ratio']):.2f}x", (i - 0.2, float(r["prism_seconds"])), ha="center", va="bottom", fontsize=9)
+        ax.set_xticks(list(x), [f"{r['threads']} thread(s)" for r in pts])
+        ax.set_ylabel("seconds (minimum of runs)")
+        ax.set_title(f"{scene}, 512x512, 1 spp")
+        ax.legend(fontsize=8)
+    save(fig, "vs_povray.png")
+
+
+def quadric_chart(rows):
+    experiments = [("asymptotic", "ray tilted eps from a paraboloid's axis (A -> 0)", "eps (rad)", "relative error of t"),
+                   ("grazing", "chord at 1 - delta from a unit sphere's centre", "delta", "relative error of t"),
+                   ("distance", "ellipsoid placed D from the origin", "D", "worst distance of hit point from surface")]
+    fig, axes = plt.subplots(1, 3, figsize=(16, 4.6))
+    for ax, (name, title, xlabel, ylabel) in zip(axes, experiments):
+        pts = [r for r in rows if r["experiment"] == name]
+        for method in dict.fromkeys(r["method"] for r in pts):
+            for scalar, style in (("float", "-"), ("double", "--")):
+                line = [r for r in pts if r["method"] == method and r["scalar"] == scalar and r["error"] != "nan"]
+                ax.plot([float(r["x"]) for r in line], [max(float(r["error"]), 1e-18) for r in line], style, marker="o", markersize=3,
+                        label=f"{method}, {scalar}")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+        ax.set_title(title, fontsize=10)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    axes[0].set_ylim(1e-18, 1e3)
+    axes[0].invert_xaxis()
+    axes[1].invert_xaxis()
+    save(fig, "quadric_roots.png")
+
+
+def composition_chart(rows):
+    fig, ax = plt.subplots(figsize=(5.5, 3.8))
+    k = [int(r["spheres"]) for r in rows]
+    for key, label in (("union_ns", "one Union<...> CSG object"), ("separate_ns", "separate objects"), ("array_ns", "one ObjectArray")):
+        ax.plot(k, [float(r[key]) for r in rows], "o-", label=label)
+    ax.set_xlabel("spheres")
+    ax.set_ylabel("ns per closest-hit query")
+    ax.set_title("cost of composition (same surfaces, same rays)")
+    ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
-    save(fig, "cornell_vs_povray.png")
+    save(fig, "csg_composition.png")
 
 
 def main():
@@ -121,8 +161,12 @@ def main():
         accuracy_charts(rows)
     if (rows := read("acne.csv")):
         acne_chart(rows)
-    if (rows := read("cornell_vs_povray.csv")):
+    if (rows := read("vs_povray.csv")):
         povray_chart(rows)
+    if (rows := read("quadric_roots.csv")):
+        quadric_chart(rows)
+    if (rows := read("csg_composition.csv")):
+        composition_chart(rows)
 
 
 if __name__ == "__main__":

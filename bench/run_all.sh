@@ -11,8 +11,10 @@ cmake --build "$root/build/release"
 mkdir -p "$results"
 # Debian's python3 has matplotlib; a python3 earlier on PATH may not.
 python=/usr/bin/python3
-"$python" "$root/bench/cornell_vs_povray.py" --build "$root/build/release" --out "$results" | tee "$results/cornell_vs_povray.txt"
+"$python" "$root/bench/vs_povray.py" --build "$root/build/release" --out "$results" | tee "$results/vs_povray.txt"
 "$python" "$root/bench/compile_cost.py" --out "$results" | tee "$results/compile_cost.txt"
 "$root/build/release/bench/bench_acne" "$results" > "$results/acne.txt"
+"$root/build/release/bench/bench_quadric_roots" "$results" | tee "$results/quadric_roots.txt"
+"$root/build/release/bench/bench_csg_composition" "$results" | tee "$results/csg_composition.txt"
 "$root/build/release/bench/bench_accuracy" "$results" | tee "$results/accuracy.txt"
 "$python" "$root/bench/plot.py" "$results"

@@ -29,3 +29,12 @@ TEST_CASE_TEMPLATE("the offset origin lies beyond the error box, on the side of 
         else CHECK(along >= bound * 0.999);
     }
 }
+
+TEST_CASE_TEMPLATE("next_float_up and next_float_down step exactly one ulp, like std::nextafter", T, float, double)
+{
+    for (T v : {T(0), T(-0.0), T(1), T(-1), T(1e-30), T(-3.5e20), std::numeric_limits<T>::denorm_min(), -std::numeric_limits<T>::max()}) {
+        CHECK(prism::next_float_up(v) == std::nextafter(v, prism::infinity<T>));
+        CHECK(prism::next_float_down(v) == std::nextafter(v, -prism::infinity<T>));
+    }
+    CHECK(prism::next_float_up(prism::infinity<T>) == prism::infinity<T>);
+}

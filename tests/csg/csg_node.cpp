@@ -206,11 +206,17 @@ TEST_CASE("a ray leaving a CSG surface starts on the side it leaves by")
                 if (std::abs(along) < 0.2) continue;
                 const auto again = tree.crossings(spawn_ray(x.point, x.error, x.normal, w), {0.0, infinity<double>});
                 ++checked;
+                if (again.inside_at_start != (along < 0)) {
+                    const auto o = spawn_ray(x.point, x.error, x.normal, w).origin;
+                    MESSAGE("wrong start: point " << x.point.x << " " << x.point.y << " " << x.point.z << " normal " << x.normal.x << " "
+                            << x.normal.y << " " << x.normal.z << " along " << along << " contains(origin) " << tree.contains(o)
+                            << " err " << x.error.x << " " << x.error.y << " " << x.error.z);
+                }
                 wrong += again.inside_at_start != (along < 0);
             }
         }
     };
-    for (int i = 0; i < 300; ++i) {
+    for (int i = 0; i < 1000; ++i) {
         probe(tree_one<double>(rng));
         probe(tree_two<double>(rng));
         probe(tree_three<double>(rng));

@@ -12,8 +12,11 @@
 #include <prism/core/math.hpp>
 #include <prism/core/ray.hpp>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <type_traits>
 
 namespace prism {
 
@@ -24,6 +27,31 @@ template <Scalar T>
 {
     constexpr T u = std::numeric_limits<T>::epsilon() * T(0.5);
     return T(n) * u / (T(1) - T(n) * u);
+}
+
+/// The next representable value above v (pbrt-v4 NextFloatUp), by stepping its bits:
+/// std::nextafter is an out-of-line library call, and this is on every secondary ray.
+template <Scalar T>
+[[nodiscard]] constexpr T next_float_up(T v) noexcept
+{
+    using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    if (v == infinity<T> || v != v) return v;
+    if (v == T(-0.0)) v = T(0.0); // skip -0 so that the step leaves 0
+    Bits bits = std::bit_cast<Bits>(v);
+    bits = v >= T(0) ? bits + 1 : bits - 1;
+    return std::bit_cast<T>(bits);
+}
+
+/// The next representable value below v.
+template <Scalar T>
+[[nodiscard]] constexpr T next_float_down(T v) noexcept
+{
+    using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    if (v == -infinity<T> || v != v) return v;
+    if (v == T(0.0)) v = T(-0.0);
+    Bits bits = std::bit_cast<Bits>(v);
+    bits = v > T(0) ? bits - 1 : bits + 1;
+    return std::bit_cast<T>(bits);
 }
 
 /// The origin for a ray leaving point p (absolute error bound p_error per axis) of a
@@ -41,9 +69,9 @@ template <Scalar T>
     // on a face could not tell which side of it it is on.
     for (int i = 0; i < 3; ++i) {
         if (side * n[i] > T(0))
-            po[i] = std::nextafter(po[i], infinity<T>);
+            po[i] = next_float_up(po[i]);
         else if (side * n[i] < T(0))
-            po[i] = std::nextafter(po[i], -infinity<T>);
+            po[i] = next_float_down(po[i]);
     }
     return po;
 }

@@ -80,8 +80,10 @@ public:
     [[nodiscard]] const Mat4<T>& matrix() const noexcept { return m_; }
     [[nodiscard]] const Mat4<T>& inverse_matrix() const noexcept { return inverse_; }
 
-    [[nodiscard]] Vec3<T> point(const Vec3<T>& p) const noexcept { return Vec3<T>(m_ * glm::vec<4, T>(p, T(1))); }
-    [[nodiscard]] Vec3<T> vector(const Vec3<T>& v) const noexcept { return Vec3<T>(m_ * glm::vec<4, T>(v, T(0))); }
+    [[nodiscard]] Vec3<T> point(const Vec3<T>& p) const noexcept { return affine_point(m_, p); }
+    [[nodiscard]] Vec3<T> vector(const Vec3<T>& v) const noexcept { return affine_vector(m_, v); }
+    [[nodiscard]] Vec3<T> inverse_point(const Vec3<T>& p) const noexcept { return affine_point(inverse_, p); }
+    [[nodiscard]] Vec3<T> inverse_vector(const Vec3<T>& v) const noexcept { return affine_vector(inverse_, v); }
     /// A surface normal maps by the inverse transpose (unnormalised).
     [[nodiscard]] Vec3<T> normal(const Vec3<T>& n) const noexcept
     {
@@ -91,22 +93,38 @@ public:
     /// The absolute error bound of point(p) for a point p known to within `error` per
     /// axis (pbrt-v4, Transform::operator()(Point3fi)): the incoming error grows by the
     /// matrix, and the matrix product adds gamma(3) of its terms' size.
-    [[nodiscard]] Vec3<T> point_error(const Vec3<T>& p, const Vec3<T>& error) const noexcept
+    [[nodiscard]] Vec3<T> point_error(const Vec3<T>& p, const Vec3<T>& error) const noexcept { return affine_error(m_, p, error); }
+
+    /// The absolute error bound of inverse_point(p) for an exact p.
+    [[nodiscard]] Vec3<T> inverse_point_error(const Vec3<T>& p) const noexcept { return affine_error(inverse_, p, Vec3<T>(T(0))); }
+
+private:
+    Transform(const Mat4<T>& m, const Mat4<T>& inverse) : m_(m), inverse_(inverse) {}
+
+    // The last row of an affine matrix is (0 0 0 1): skip it.
+    [[nodiscard]] static Vec3<T> affine_vector(const Mat4<T>& m, const Vec3<T>& v) noexcept
+    {
+        return {m[0][0] * v.x + m[1][0] * v.y + m[2][0] * v.z, m[0][1] * v.x + m[1][1] * v.y + m[2][1] * v.z,
+                m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z};
+    }
+    [[nodiscard]] static Vec3<T> affine_point(const Mat4<T>& m, const Vec3<T>& p) noexcept
+    {
+        return affine_vector(m, p) + Vec3<T>(m[3]);
+    }
+
+    [[nodiscard]] static Vec3<T> affine_error(const Mat4<T>& m, const Vec3<T>& p, const Vec3<T>& error) noexcept
     {
         Vec3<T> out;
         for (int r = 0; r < 3; ++r) {
-            T carried = T(0), rounding = std::abs(m_[3][r]);
+            T carried = T(0), rounding = std::abs(m[3][r]);
             for (int c = 0; c < 3; ++c) {
-                carried += std::abs(m_[c][r]) * error[c];
-                rounding += std::abs(m_[c][r] * p[c]);
+                carried += std::abs(m[c][r]) * error[c];
+                rounding += std::abs(m[c][r] * p[c]);
             }
             out[r] = (gamma<T>(3) + T(1)) * carried + gamma<T>(3) * rounding;
         }
         return out;
     }
-
-private:
-    Transform(const Mat4<T>& m, const Mat4<T>& inverse) : m_(m), inverse_(inverse) {}
 
     Mat4<T> m_{T(1)};
     Mat4<T> inverse_{T(1)};

@@ -59,14 +59,15 @@ public:
 
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return Op::combine(a_.contains(p), b_.contains(p)); }
 
+    template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         Crossings<T, max_crossings> out;
         // Outside the bounds the ray cannot be inside the result.
         if (bounded_ && bounds_.clip(ray, range).empty()) return out;
 
-        const auto ca = a_.crossings(ray, range);
-        const auto cb = b_.crossings(ray, range);
+        const auto ca = a_.template crossings<Surface>(ray, range);
+        const auto cb = b_.template crossings<Surface>(ray, range);
         bool in_a = ca.inside_at_start, in_b = cb.inside_at_start;
         bool inside = Op::combine(in_a, in_b);
         out.inside_at_start = inside;

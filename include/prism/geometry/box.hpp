@@ -40,6 +40,7 @@ public:
         return lo_.x < p.x && p.x < hi_.x && lo_.y < p.y && p.y < hi_.y && lo_.z < p.z && p.z < hi_.z;
     }
 
+    template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         // Slab test over the whole line, remembering which face bounds the span.
@@ -61,8 +62,10 @@ public:
         }
         if (!(t_near < t_far)) return out; // a miss, or a touch along an edge
         out.inside_at_start = t_near < range.min && range.min < t_far;
-        if (range.surrounds(t_near)) out.push_back(crossing_at(ray, t_near, axis_near, true));
-        if (range.surrounds(t_far)) out.push_back(crossing_at(ray, t_far, axis_far, false));
+        if (range.surrounds(t_near))
+            out.push_back(Surface ? crossing_at(ray, t_near, axis_near, true) : Crossing<T>{.t = t_near, .entering = true});
+        if (range.surrounds(t_far))
+            out.push_back(Surface ? crossing_at(ray, t_far, axis_far, false) : Crossing<T>{.t = t_far, .entering = false});
         return out;
     }
 

@@ -15,7 +15,8 @@
 
 namespace prism {
 
-/// One boundary crossing of a ray with a solid.
+/// One boundary crossing of a ray with a solid. Queries without the surface fill in
+/// only t and entering.
 template <Scalar T>
 struct Crossing {
     T t = infinity<T>;    ///< ray parameter

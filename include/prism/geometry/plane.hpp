@@ -43,6 +43,7 @@ public:
 
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return dot(normal_, p) < offset_; }
 
+    template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 1> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         Crossings<T, 1> out;
@@ -55,7 +56,7 @@ public:
         const T t = -height / denom;
         const bool entering = denom < T(0);
         out.inside_at_start = entering ? t < range.min : range.min < t;
-        if (range.surrounds(t)) out.push_back(crossing_at(ray, t, entering));
+        if (range.surrounds(t)) out.push_back(Surface ? crossing_at(ray, t, entering) : Crossing<T>{.t = t, .entering = entering});
         return out;
     }
 

@@ -52,6 +52,7 @@ public:
         if (!variable && k.j == 0) detail::throw_invalid("Quadric coefficients are all zero");
         if (!variable) detail::throw_invalid("Quadric has no x, y or z term (only the constant ", k.j, ")");
         bounds_ = ellipsoid_bounds();
+        bounded_ = is_finite(bounds_.lo) && is_finite(bounds_.hi);
     }
 
     /// From a 4x4 matrix Q with F(p) = [p 1] Q [p 1]^T; only its symmetric part matters.
@@ -185,8 +186,11 @@ public:
     /// An ellipsoid's box; Aabb::universe() for unbounded quadrics.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
 
+    template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
+        // An ellipsoid: outside its box the ray is outside it.
+        if (bounded_ && bounds_.clip(ray, range).empty()) return {};
         // Compute quadratic coefficients: F(o + t d) = A t^2 + 2 B t + C (errata 1: h dz^2),
         // in the quadric's own coordinates.
         const Vec3<T> o = ray.origin - origin_;
@@ -225,7 +229,7 @@ public:
         for (std::size_t r = 0; r < n; ++r)
             if (roots[r].t <= range.min) out.inside_at_start = roots[r].entering;
         for (std::size_t r = 0; r < n; ++r)
-            if (range.surrounds(roots[r].t)) out.push_back(surface_at({o, d}, roots[r].t, roots[r].entering));
+            if (range.surrounds(roots[r].t)) out.push_back(Surface ? surface_at({o, d}, roots[r].t, roots[r].entering) : roots[r]);
         return out;
     }
 
@@ -322,6 +326,7 @@ private:
     Coefficients k_;
     Vec3<T> origin_{};
     Aabb<T> bounds_;
+    bool bounded_ = false;
 };
 
 static_assert(Shape<Quadric<float>>);

@@ -14,15 +14,18 @@ namespace prism {
 
 /// A solid with a boundary. `crossings(ray, range)` returns every boundary crossing
 /// with t strictly inside `range`, sorted by t, plus whether `ray.at(range.min)` is
-/// inside; `max_crossings` bounds their number at compile time; `bounds()` encloses
-/// the solid (Aabb::universe() for an unbounded one); `contains(p)` says whether a
-/// point is strictly inside (the implicit function, evaluated directly).
+/// inside; `crossings<false>` the same without the surface (point, error, normal), for
+/// queries that need only where and which way: shadow rays, and finding which object
+/// is nearest before asking it for its surface. `max_crossings` bounds their number at
+/// compile time; `bounds()` encloses the solid (Aabb::universe() for an unbounded one);
+/// `contains(p)` says whether a point is strictly inside (the implicit function).
 template <class S>
 concept Shape = requires(const S& shape, const Ray<typename S::scalar_type>& ray,
                          Interval<typename S::scalar_type> range, const Vec3<typename S::scalar_type>& p) {
     requires Scalar<typename S::scalar_type>;
     { S::max_crossings } -> std::convertible_to<std::size_t>;
     { shape.crossings(ray, range) } -> std::same_as<Crossings<typename S::scalar_type, S::max_crossings>>;
+    { shape.template crossings<false>(ray, range) } -> std::same_as<Crossings<typename S::scalar_type, S::max_crossings>>;
     { shape.bounds() } -> std::same_as<Aabb<typename S::scalar_type>>;
     { shape.contains(p) } -> std::same_as<bool>;
 };

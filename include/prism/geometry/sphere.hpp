@@ -37,6 +37,7 @@ public:
         return length_squared(p - center_) < radius_ * radius_;
     }
 
+    template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         // Compute quadratic coefficients: a t^2 + 2 h t + c = 0 with f = o - center
@@ -68,8 +69,8 @@ public:
         // The ray is inside between the roots: it enters at t0 and leaves at t1, as
         // the gradient 2(p - center) points against d at t0 and along it at t1.
         out.inside_at_start = t0 < range.min && range.min < t1;
-        if (range.surrounds(t0)) out.push_back(crossing_at(ray, t0, true));
-        if (range.surrounds(t1)) out.push_back(crossing_at(ray, t1, false));
+        if (range.surrounds(t0)) out.push_back(Surface ? crossing_at(ray, t0, true) : Crossing<T>{.t = t0, .entering = true});
+        if (range.surrounds(t1)) out.push_back(Surface ? crossing_at(ray, t1, false) : Crossing<T>{.t = t1, .entering = false});
         return out;
     }
 

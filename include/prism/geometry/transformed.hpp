@@ -22,7 +22,10 @@ public:
 
     // Transformed Public Methods
 
-    Transformed(S shape, const Transform<T>& to_world) : shape_(std::move(shape)), to_world_(to_world), bounds_(world_bounds()) {}
+    Transformed(S shape, const Transform<T>& to_world) : shape_(std::move(shape)), to_world_(to_world), bounds_(world_bounds())
+    {
+        bounded_ = is_finite(bounds_.lo) && is_finite(bounds_.hi);
+    }
 
     [[nodiscard]] const S& shape() const noexcept { return shape_; }
     [[nodiscard]] const Transform<T>& transform() const noexcept { return to_world_; }
@@ -30,14 +33,25 @@ public:
 
     [[nodiscard]] bool contains(const Vec3<T>& p) const noexcept
     {
-        return shape_.contains(Vec3<T>(to_world_.inverse_matrix() * glm::vec<4, T>(p, T(1))));
+        return shape_.contains(to_world_.inverse_point(p));
     }
 
+    template <bool Surface = true>
     [[nodiscard]] Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        const Mat4<T>& inv = to_world_.inverse_matrix();
-        const Ray<T> local{Vec3<T>(inv * glm::vec<4, T>(ray.origin, T(1))), Vec3<T>(inv * glm::vec<4, T>(ray.direction, T(0)))};
-        Crossings<T, max_crossings> out = shape_.crossings(local, range);
+        // Outside the bounds the ray cannot be inside the shape.
+        if (bounded_ && bounds_.clip(ray, range).empty()) return {};
+        // Carry the ray into the shape's coordinates. The new origin is off by the
+        // rounding of that transform, which can be more than a spawned ray's offset from
+        // the surface it leaves: move it forward along the ray past that error, and
+        // measure t from there (pbrt-v4, Transform::ApplyInverse(Ray)).
+        Ray<T> local{to_world_.inverse_point(ray.origin), to_world_.inverse_vector(ray.direction)};
+        const T length2 = length_squared(local.direction);
+        const T dt = length2 > T(0) ? dot(abs(local.direction), to_world_.inverse_point_error(ray.origin)) / length2 : T(0);
+        local.origin += dt * local.direction;
+        Crossings<T, max_crossings> out = shape_.template crossings<Surface>(local, {range.min, range.max - dt});
+        for (std::size_t k = 0; k < out.count; ++k) out.items[k].t += dt;
+        if constexpr (!Surface) return out;
         for (std::size_t k = 0; k < out.count; ++k) {
             Crossing<T>& c = out.items[k];
             c.error = to_world_.point_error(c.point, c.error);
@@ -69,6 +83,7 @@ private:
     S shape_;
     Transform<T> to_world_;
     Aabb<T> bounds_;
+    bool bounded_ = false;
 };
 
 } // namespace prism

@@ -43,7 +43,7 @@ struct Checker {
         // point, so far-away points cannot overflow an integer conversion.
         const T inv = T(1) / size;
         const T sum = std::floor(p.x * inv) + std::floor(p.y * inv) + std::floor(p.z * inv);
-        return std::fmod(sum, T(2)) == T(0) ? even : odd;
+        return std::floor(sum * T(0.5)) * T(2) == sum ? even : odd;
     }
 
     constexpr void validate() const

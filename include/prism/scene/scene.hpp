@@ -63,14 +63,17 @@ public:
 
     // Scene Queries
 
-    /// The closest crossing with t inside `range`.
+    /// The closest crossing with t inside `range`. Every object is asked for its
+    /// crossings without their surfaces; only the nearest one is then asked again, over
+    /// the same range, for its surface.
     [[nodiscard]] std::optional<Hit<T>> closest_hit(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        std::optional<Hit<T>> best;
+        Nearest nearest{};
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (closest_in_slot<I>(ray, range, best), ...);
+            (nearest_in_slot<I>(ray, range, nearest), ...);
         }(std::index_sequence_for<Slots...>{});
-        return best;
+        if (!nearest.found) return std::nullopt;
+        return surface_in_slot<0>(ray, nearest);
     }
 
     /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
@@ -103,16 +106,37 @@ public:
 private:
     // Scene Private Methods
 
+    /// The nearest object so far, and the range over which it was found nearest.
+    struct Nearest {
+        bool found = false;
+        std::uint32_t slot = 0, index = 0;
+        Interval<T> range{};
+    };
+
     template <std::size_t I>
-    void closest_in_slot(const Ray<T>& ray, Interval<T>& range, std::optional<Hit<T>>& best) const noexcept
+    void nearest_in_slot(const Ray<T>& ray, Interval<T>& range, Nearest& nearest) const noexcept
     {
         const auto objects = objects_of(std::get<I>(slots));
         for (std::size_t k = 0; k < objects.size(); ++k) {
-            const auto crossings = objects[k].shape.crossings(ray, range);
+            const auto crossings = objects[k].shape.template crossings<false>(ray, range);
             if (crossings.empty()) continue;
-            best = Hit<T>{crossings.front(), static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k)};
+            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), range};
             range.max = crossings.front().t;
         }
+    }
+
+    /// The nearest object's first crossing with its surface: the same computation as
+    /// before over the same range, so the same t.
+    template <std::size_t I>
+    std::optional<Hit<T>> surface_in_slot(const Ray<T>& ray, const Nearest& nearest) const noexcept
+    {
+        if constexpr (I + 1 < sizeof...(Slots)) {
+            if (nearest.slot != I) return surface_in_slot<I + 1>(ray, nearest);
+        }
+        const auto crossings = objects_of(std::get<I>(slots))[nearest.index].shape.crossings(ray, nearest.range);
+        PRISM_ASSERT(!crossings.empty());
+        if (crossings.empty()) return std::nullopt;
+        return Hit<T>{crossings.front(), nearest.slot, nearest.index};
     }
 
     template <std::size_t I>
@@ -122,7 +146,7 @@ private:
         using M = typename Slot::material_type;
         const Interval<T> range{T(0), t_max};
         for (const auto& object : objects_of(std::get<I>(slots))) {
-            const auto crossings = object.shape.crossings(ray, range);
+            const auto crossings = object.shape.template crossings<false>(ray, range);
             if constexpr (!transmits<M>) {
                 if (!crossings.empty()) return false;
             } else {
