@@ -45,6 +45,7 @@ public:
         if (!(std::abs(det) > T(64) * std::numeric_limits<T>::epsilon() * scale * scale * scale))
             detail::throw_invalid("Transform is singular (determinant ", det, ")");
         inverse_ = glm::inverse(m);
+        abs_inverse_ = absolute(inverse_);
     }
 
     [[nodiscard]] static Transform translate(const Vec3<T>& offset)
@@ -95,11 +96,23 @@ public:
     /// matrix, and the matrix product adds gamma(3) of its terms' size.
     [[nodiscard]] Vec3<T> point_error(const Vec3<T>& p, const Vec3<T>& error) const noexcept { return affine_error(m_, p, error); }
 
-    /// The absolute error bound of inverse_point(p) for an exact p.
-    [[nodiscard]] Vec3<T> inverse_point_error(const Vec3<T>& p) const noexcept { return affine_error(inverse_, p, Vec3<T>(T(0))); }
+    /// The absolute error bound of inverse_point(p) for an exact p: gamma(3) of the
+    /// size of the terms, |M^-1| |p| + |translation| (|M^-1| kept from construction).
+    [[nodiscard]] Vec3<T> inverse_point_error(const Vec3<T>& p) const noexcept
+    {
+        return gamma<T>(3) * affine_point(abs_inverse_, abs(p));
+    }
 
 private:
-    Transform(const Mat4<T>& m, const Mat4<T>& inverse) : m_(m), inverse_(inverse) {}
+    Transform(const Mat4<T>& m, const Mat4<T>& inverse) : m_(m), inverse_(inverse), abs_inverse_(absolute(inverse)) {}
+
+    [[nodiscard]] static Mat4<T> absolute(const Mat4<T>& m) noexcept
+    {
+        Mat4<T> out;
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) out[c][r] = std::abs(m[c][r]);
+        return out;
+    }
 
     // The last row of an affine matrix is (0 0 0 1): skip it.
     [[nodiscard]] static Vec3<T> affine_vector(const Mat4<T>& m, const Vec3<T>& v) noexcept
@@ -128,6 +141,7 @@ private:
 
     Mat4<T> m_{T(1)};
     Mat4<T> inverse_{T(1)};
+    Mat4<T> abs_inverse_{T(1)};
 };
 
 } // namespace prism

@@ -52,10 +52,14 @@ public:
         // h^2 - a c = a (r^2 - |f - (h/a) d|^2), where the vector is the ray's closest
         // approach to the center.
         const Vec3<T> l = f - (h / a) * d;
-        const T ll = length(l);
+        const T ll2 = length_squared(l);
+        Crossings<T, 2> out;
+        // A clear miss, decided before any square root: |l|^2 is computed to within a few
+        // ulps, so beyond r^2 (1 + 8 eps) the ray passes outside the sphere.
+        if (ll2 > radius_ * radius_ * (T(1) + T(8) * std::numeric_limits<T>::epsilon())) return out;
+        const T ll = prism::sqrt(ll2);
         const T disc = a * (radius_ - ll) * (radius_ + ll);
 
-        Crossings<T, 2> out;
         // A miss, or a tangent (a double root: the ray touches but does not cross).
         if (!(disc > T(0))) return out;
 
