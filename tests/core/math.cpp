@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <prism/core/math.hpp>
+#include <prism/core/rng.hpp>
 
 #include <doctest/doctest.h>
 
@@ -52,4 +53,22 @@ TEST_CASE_TEMPLATE("vector helpers match GLM's own", T, float, double)
     CHECK_FALSE(prism::is_finite(Vec3<T>{T(0), prism::infinity<T>, T(0)}));
     CHECK_FALSE(prism::is_finite(std::numeric_limits<T>::quiet_NaN()));
     CHECK(prism::clamp(std::numeric_limits<T>::quiet_NaN(), T(0), T(1)) == T(0));
+}
+
+TEST_CASE_TEMPLATE("difference_of_products keeps the digits that a*b - c*d cancels", T, float, double)
+{
+    // b^2 - a c for a nearly tangent quadratic: 1 + u against (1 + u/2)^2, whose exact
+    // difference u^2/4 is far below the rounding of either product.
+    const T u = std::numeric_limits<T>::epsilon() * T(64);
+    const T b = T(1) + u / 2, a = T(1), c = T(1) + u;
+    const long double exact = (long double)u * u / 4; // b^2 - a c = u^2 / 4 exactly (u is a power of 2)
+    const T fast = prism::difference_of_products(b, b, a, c);
+    CHECK(std::abs(fast - exact) <= std::abs(exact) * 1e-5L);
+    // Random values: within a couple of roundings of the exact result.
+    prism::Pcg32 rng(3u, 3u);
+    for (int i = 0; i < 10000; ++i) {
+        const T x = rng.uniform<T>(), y = rng.uniform<T>(), z = rng.uniform<T>(), w = rng.uniform<T>();
+        const long double e = (long double)x * y - (long double)z * w;
+        CHECK(std::abs(prism::difference_of_products(x, y, z, w) - e) <= 2 * std::numeric_limits<T>::epsilon() * (std::abs(e) + 1e-30L));
+    }
 }

@@ -134,15 +134,40 @@ template <Scalar T>
 
 namespace prism {
 
-/// a*b - c*d with one rounding error instead of a catastrophic cancellation (Kahan's
-/// algorithm with fused multiply-adds; pbrt-v4 DifferenceOfProducts).
+/// a*b - c*d without catastrophic cancellation (the discriminant of a quadratic).
+///  float:  the products of two floats are exact in double, so computing in double
+///          rounds once, at the end.
+///  double: Kahan's algorithm with fused multiply-adds where the target has them
+///          (pbrt-v4 DifferenceOfProducts); on targets without (baseline x86-64),
+///          std::fma is a slow library call, so Dekker's exact product by splitting.
 template <Scalar T>
 [[nodiscard]] constexpr T difference_of_products(T a, T b, T c, T d) noexcept
 {
-    if (std::is_constant_evaluated()) return a * b - c * d;
-    const T cd = c * d;
-    const T error = std::fma(-c, d, cd);
-    return std::fma(a, b, -cd) + error;
+    if constexpr (sizeof(T) < sizeof(double)) {
+        return T(double(a) * double(b) - double(c) * double(d));
+    } else {
+        if (std::is_constant_evaluated()) return a * b - c * d;
+#if defined(__FMA__) || defined(FP_FAST_FMA)
+        const T cd = c * d;
+        const T error = std::fma(-c, d, cd);
+        return std::fma(a, b, -cd) + error;
+#else
+        // Dekker (1971): x*y = p + e exactly, with x and y split into halves of 26 bits.
+        const auto two_product = [](T x, T y, T& e) {
+            constexpr T split = T(134217729.0); // 2^27 + 1
+            const T p = x * y;
+            const T xs = split * x, ys = split * y;
+            const T xh = xs - (xs - x), yh = ys - (ys - y);
+            const T xl = x - xh, yl = y - yh;
+            e = ((xh * yh - p) + xh * yl + xl * yh) + xl * yl;
+            return p;
+        };
+        T e_ab = T(0), e_cd = T(0);
+        const T ab = two_product(a, b, e_ab);
+        const T cd = two_product(c, d, e_cd);
+        return (ab - cd) + (e_ab - e_cd);
+#endif
+    }
 }
 
 } // namespace prism

@@ -135,11 +135,22 @@ private:
             unlit *= Rgb<T>(T(1)) - v;
             if (material.phong > T(0)) {
                 const T alignment = dot(mirror, s.wi);
-                if (alignment > T(0)) highlight += (material.phong * std::pow(alignment, material.phong_size) / pi<T>)*v * s.irradiance;
+                if (alignment > T(0)) highlight += (material.phong * power(alignment, material.phong_size) / pi<T>)*v * s.irradiance;
             }
         });
         const Rgb<T> albedo = material.albedo.albedo(hit.point);
         return albedo * ((material.kd / pi<T>)*irradiance + material.ka * scene_->ambient * unlit) + highlight;
+    }
+
+    /// x^n: by squaring when n is a whole number up to 1024 (a Phong exponent usually
+    /// is; std::pow is a slow library call), by std::pow otherwise.
+    [[nodiscard]] static T power(T x, T n) noexcept
+    {
+        if (!(n >= T(0) && n <= T(1024) && n == std::floor(n))) return std::pow(x, n);
+        T result = T(1);
+        for (auto e = static_cast<unsigned>(n); e != 0; e >>= 1u, x *= x)
+            if (e & 1u) result *= x;
+        return result;
     }
 
     const SceneT* scene_;

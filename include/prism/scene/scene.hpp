@@ -53,7 +53,11 @@ public:
     Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
     Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
 
-    constexpr Scene(LightList light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...) {}
+    constexpr Scene(LightList light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
+    {
+        // One box around every bounded object: a ray that misses it skips them all.
+        std::apply([this](const auto&... slot) { (add_to_cluster(slot), ...); }, slots);
+    }
 
     constexpr void validate() const
     {
@@ -69,8 +73,9 @@ public:
     [[nodiscard]] std::optional<Hit<T>> closest_hit(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         Nearest nearest{};
+        const bool near_cluster = reaches_cluster(ray, range);
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (nearest_in_slot<I>(ray, range, nearest), ...);
+            (nearest_in_slot<I>(ray, range, nearest, near_cluster), ...);
         }(std::index_sequence_for<Slots...>{});
         if (!nearest.found) return std::nullopt;
         return surface_in_slot<0>(ray, nearest);
@@ -83,8 +88,9 @@ public:
     [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
     {
         Rgb<T> tr{T(1)};
+        const bool near_cluster = reaches_cluster(ray, {T(0), t_max});
         const bool open = [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return (transmittance_of_slot<I>(ray, t_max, tr) && ...);
+            return (transmittance_of_slot<I>(ray, t_max, tr, near_cluster) && ...);
         }(std::index_sequence_for<Slots...>{});
         return open ? tr : Rgb<T>{T(0)};
     }
@@ -104,6 +110,8 @@ public:
     }
 
 private:
+    Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
+
     // Scene Private Methods
 
     /// The nearest object so far, and the range over which it was found nearest.
@@ -113,11 +121,37 @@ private:
         Interval<T> range{};
     };
 
+    template <class S>
+    void add_to_cluster(const S& slot) noexcept
+    {
+        for (const auto& object : objects_of(slot)) {
+            const Aabb<T> b = object.shape.bounds();
+            if (is_finite(b.lo) && is_finite(b.hi)) cluster_ = {component_min(cluster_.lo, b.lo), component_max(cluster_.hi, b.hi)};
+        }
+    }
+
+    /// A ray starting inside the cluster's box (every secondary ray in a closed room)
+    /// needs no slab test.
+    [[nodiscard]] bool reaches_cluster(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        return cluster_.contains(ray.origin) || !cluster_.clip(ray, range).empty();
+    }
+
+    /// Whether the object needs testing: it is unbounded, or the ray comes near the cluster.
+    template <class O>
+    [[nodiscard]] static bool worth_testing(const O& object, bool near_cluster) noexcept
+    {
+        if (near_cluster) return true;
+        const Aabb<T> b = object.shape.bounds();
+        return !(is_finite(b.lo) && is_finite(b.hi));
+    }
+
     template <std::size_t I>
-    void nearest_in_slot(const Ray<T>& ray, Interval<T>& range, Nearest& nearest) const noexcept
+    void nearest_in_slot(const Ray<T>& ray, Interval<T>& range, Nearest& nearest, bool near_cluster) const noexcept
     {
         const auto objects = objects_of(std::get<I>(slots));
         for (std::size_t k = 0; k < objects.size(); ++k) {
+            if (!worth_testing(objects[k], near_cluster)) continue;
             const auto crossings = objects[k].shape.template crossings<false>(ray, range);
             if (crossings.empty()) continue;
             nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), range};
@@ -140,12 +174,13 @@ private:
     }
 
     template <std::size_t I>
-    bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr) const noexcept
+    bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr, bool near_cluster) const noexcept
     {
         using Slot = std::tuple_element_t<I, std::tuple<Slots...>>;
         using M = typename Slot::material_type;
         const Interval<T> range{T(0), t_max};
         for (const auto& object : objects_of(std::get<I>(slots))) {
+            if (!worth_testing(object, near_cluster)) continue;
             const auto crossings = object.shape.template crossings<false>(ray, range);
             if constexpr (!transmits<M>) {
                 if (!crossings.empty()) return false;
