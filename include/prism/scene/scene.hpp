@@ -4,6 +4,7 @@
 
 #include <prism/core/check.hpp>
 #include <prism/core/interval.hpp>
+#include <prism/core/offset.hpp>
 #include <prism/light/light.hpp>
 #include <prism/optics/beer.hpp>
 #include <prism/scene/hit.hpp>
@@ -114,7 +115,8 @@ private:
 
     // Scene Private Methods
 
-    /// The nearest object so far, and the range over which it was found nearest.
+    /// The nearest object so far: where its first crossing is, and the range over
+    /// which it was found.
     struct Nearest {
         bool found = false;
         std::uint32_t slot = 0, index = 0;
@@ -154,13 +156,15 @@ private:
             if (!worth_testing(objects[k], near_cluster)) continue;
             const auto crossings = objects[k].shape.template crossings<false>(ray, range);
             if (crossings.empty()) continue;
-            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), range};
+            // Ending the range just past the crossing keeps every crossing before it, and
+            // so the same first one, while the surface pass refines nothing beyond it.
+            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(crossings.front().t)}};
             range.max = crossings.front().t;
         }
     }
 
     /// The nearest object's first crossing with its surface: the same computation as
-    /// before over the same range, so the same t.
+    /// before over a range that holds the same crossings up to it, so the same t.
     template <std::size_t I>
     std::optional<Hit<T>> surface_in_slot(const Ray<T>& ray, const Nearest& nearest) const noexcept
     {
