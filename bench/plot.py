@@ -119,8 +119,8 @@ def povray_chart(rows):
 
 
 def quadric_chart(rows):
-    experiments = [("asymptotic", "ray tilted eps from a paraboloid's axis (A -> 0)", "eps (rad)", "relative error of t"),
-                   ("grazing", "chord at 1 - delta from a unit sphere's centre", "delta", "relative error of t"),
+    experiments = [("asymptotic", "ray tilted eps from a paraboloid's axis (A -> 0)", "eps (rad)", "relative error of t (a missed root: 1)"),
+                   ("grazing", "chord at 1 - delta from a unit sphere's centre", "delta", "relative error of t (a missed root: 1)"),
                    ("distance", "ellipsoid placed D from the origin", "D", "worst distance of hit point from surface")]
     fig, axes = plt.subplots(1, 3, figsize=(16, 4.6))
     for ax, (name, title, xlabel, ylabel) in zip(axes, experiments):

@@ -53,7 +53,7 @@ std::optional<L> reference_root(const typename Quadric<T>::Coefficients& k, cons
     const L C = a * ox * ox + 2 * b * ox * oy + 2 * c * ox * oz + 2 * dd * ox + e * oy * oy + 2 * f * oy * oz + 2 * g * oy + h * oz * oz +
                 2 * i * oz + j;
     const L disc = B * B - A * C;
-    if (disc < 0) return std::nullopt;
+    if (disc <= 0) return std::nullopt; // no crossing, or a tangent touch: nothing to measure
     const L q = B >= 0 ? -(B + std::sqrt(disc)) : -(B - std::sqrt(disc));
     const L r0 = C / q, r1 = A != 0 ? q / A : INFINITY;
     const L lo = std::min(r0, r1), hi = std::max(r0, r1);
@@ -91,7 +91,7 @@ void run(bench::Csv& csv, const char* scalar)
     for (double delta = 1e-1; delta >= 1e-13; delta /= std::sqrt(10.0)) {
         const Vec3<T> o{T(-5), T(1 - delta), T(0)}, d{T(1), T(0), T(0)};
         const auto ref = reference_root<T>(ball.coefficients(), o, d);
-        if (!ref) continue; // 1 - delta rounded to 1 in this precision: a tangent
+        if (!ref) continue; // 1 - delta rounded to 1 in this precision: the input is a tangent
         csv.row("grazing,%s,textbook,%.6g,%.6g", scalar, delta, relative(textbook_root<T>(ball.coefficients(), o, d), ref));
         csv.row("grazing,%s,prism quadric,%.6g,%.6g", scalar, delta, relative(prism_root<T>(ball, o, d), ref));
         csv.row("grazing,%s,prism sphere,%.6g,%.6g", scalar, delta, relative(prism_root<T>(sphere, o, d), ref));

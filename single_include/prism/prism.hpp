@@ -197,15 +197,40 @@ template <Scalar T>
 
 namespace prism {
 
-/// a*b - c*d with one rounding error instead of a catastrophic cancellation (Kahan's
-/// algorithm with fused multiply-adds; pbrt-v4 DifferenceOfProducts).
+/// a*b - c*d without catastrophic cancellation (the discriminant of a quadratic).
+///  float:  the products of two floats are exact in double, so computing in double
+///          rounds once, at the end.
+///  double: Kahan's algorithm with fused multiply-adds where the target has them
+///          (pbrt-v4 DifferenceOfProducts); on targets without (baseline x86-64),
+///          std::fma is a slow library call, so Dekker's exact product by splitting.
 template <Scalar T>
 [[nodiscard]] constexpr T difference_of_products(T a, T b, T c, T d) noexcept
 {
-    if (std::is_constant_evaluated()) return a * b - c * d;
-    const T cd = c * d;
-    const T error = std::fma(-c, d, cd);
-    return std::fma(a, b, -cd) + error;
+    if constexpr (sizeof(T) < sizeof(double)) {
+        return T(double(a) * double(b) - double(c) * double(d));
+    } else {
+        if (std::is_constant_evaluated()) return a * b - c * d;
+#if defined(__FMA__) || defined(FP_FAST_FMA)
+        const T cd = c * d;
+        const T error = std::fma(-c, d, cd);
+        return std::fma(a, b, -cd) + error;
+#else
+        // Dekker (1971): x*y = p + e exactly, with x and y split into halves of 26 bits.
+        const auto two_product = [](T x, T y, T& e) {
+            constexpr T split = T(134217729.0); // 2^27 + 1
+            const T p = x * y;
+            const T xs = split * x, ys = split * y;
+            const T xh = xs - (xs - x), yh = ys - (ys - y);
+            const T xl = x - xh, yl = y - yh;
+            e = ((xh * yh - p) + xh * yl + xl * yh) + xl * yl;
+            return p;
+        };
+        T e_ab = T(0), e_cd = T(0);
+        const T ab = two_product(a, b, e_ab);
+        const T cd = two_product(c, d, e_cd);
+        return (ab - cd) + (e_ab - e_cd);
+#endif
+    }
 }
 
 } // namespace prism
@@ -264,8 +289,11 @@ struct Ray {
 // OffsetRayOrigin). No other code in prism nudges rays by an epsilon.
 
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <type_traits>
 
 namespace prism {
 
@@ -276,6 +304,31 @@ template <Scalar T>
 {
     constexpr T u = std::numeric_limits<T>::epsilon() * T(0.5);
     return T(n) * u / (T(1) - T(n) * u);
+}
+
+/// The next representable value above v (pbrt-v4 NextFloatUp), by stepping its bits:
+/// std::nextafter is an out-of-line library call, and this is on every secondary ray.
+template <Scalar T>
+[[nodiscard]] constexpr T next_float_up(T v) noexcept
+{
+    using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    if (v == infinity<T> || v != v) return v;
+    if (v == T(-0.0)) v = T(0.0); // skip -0 so that the step leaves 0
+    Bits bits = std::bit_cast<Bits>(v);
+    bits = v >= T(0) ? bits + 1 : bits - 1;
+    return std::bit_cast<T>(bits);
+}
+
+/// The next representable value below v.
+template <Scalar T>
+[[nodiscard]] constexpr T next_float_down(T v) noexcept
+{
+    using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    if (v == -infinity<T> || v != v) return v;
+    if (v == T(0.0)) v = T(-0.0);
+    Bits bits = std::bit_cast<Bits>(v);
+    bits = v > T(0) ? bits - 1 : bits + 1;
+    return std::bit_cast<T>(bits);
 }
 
 /// The origin for a ray leaving point p (absolute error bound p_error per axis) of a
@@ -293,9 +346,9 @@ template <Scalar T>
     // on a face could not tell which side of it it is on.
     for (int i = 0; i < 3; ++i) {
         if (side * n[i] > T(0))
-            po[i] = std::nextafter(po[i], infinity<T>);
+            po[i] = next_float_up(po[i]);
         else if (side * n[i] < T(0))
-            po[i] = std::nextafter(po[i], -infinity<T>);
+            po[i] = next_float_down(po[i]);
     }
     return po;
 }
@@ -528,6 +581,7 @@ public:
         if (!(std::abs(det) > T(64) * std::numeric_limits<T>::epsilon() * scale * scale * scale))
             detail::throw_invalid("Transform is singular (determinant ", det, ")");
         inverse_ = glm::inverse(m);
+        abs_inverse_ = absolute(inverse_);
     }
 
     [[nodiscard]] static Transform translate(const Vec3<T>& offset)
@@ -563,8 +617,10 @@ public:
     [[nodiscard]] const Mat4<T>& matrix() const noexcept { return m_; }
     [[nodiscard]] const Mat4<T>& inverse_matrix() const noexcept { return inverse_; }
 
-    [[nodiscard]] Vec3<T> point(const Vec3<T>& p) const noexcept { return Vec3<T>(m_ * glm::vec<4, T>(p, T(1))); }
-    [[nodiscard]] Vec3<T> vector(const Vec3<T>& v) const noexcept { return Vec3<T>(m_ * glm::vec<4, T>(v, T(0))); }
+    [[nodiscard]] Vec3<T> point(const Vec3<T>& p) const noexcept { return affine_point(m_, p); }
+    [[nodiscard]] Vec3<T> vector(const Vec3<T>& v) const noexcept { return affine_vector(m_, v); }
+    [[nodiscard]] Vec3<T> inverse_point(const Vec3<T>& p) const noexcept { return affine_point(inverse_, p); }
+    [[nodiscard]] Vec3<T> inverse_vector(const Vec3<T>& v) const noexcept { return affine_vector(inverse_, v); }
     /// A surface normal maps by the inverse transpose (unnormalised).
     [[nodiscard]] Vec3<T> normal(const Vec3<T>& n) const noexcept
     {
@@ -574,25 +630,54 @@ public:
     /// The absolute error bound of point(p) for a point p known to within `error` per
     /// axis (pbrt-v4, Transform::operator()(Point3fi)): the incoming error grows by the
     /// matrix, and the matrix product adds gamma(3) of its terms' size.
-    [[nodiscard]] Vec3<T> point_error(const Vec3<T>& p, const Vec3<T>& error) const noexcept
+    [[nodiscard]] Vec3<T> point_error(const Vec3<T>& p, const Vec3<T>& error) const noexcept { return affine_error(m_, p, error); }
+
+    /// The absolute error bound of inverse_point(p) for an exact p: gamma(3) of the
+    /// size of the terms, |M^-1| |p| + |translation| (|M^-1| kept from construction).
+    [[nodiscard]] Vec3<T> inverse_point_error(const Vec3<T>& p) const noexcept
+    {
+        return gamma<T>(3) * affine_point(abs_inverse_, abs(p));
+    }
+
+private:
+    Transform(const Mat4<T>& m, const Mat4<T>& inverse) : m_(m), inverse_(inverse), abs_inverse_(absolute(inverse)) {}
+
+    [[nodiscard]] static Mat4<T> absolute(const Mat4<T>& m) noexcept
+    {
+        Mat4<T> out;
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) out[c][r] = std::abs(m[c][r]);
+        return out;
+    }
+
+    // The last row of an affine matrix is (0 0 0 1): skip it.
+    [[nodiscard]] static Vec3<T> affine_vector(const Mat4<T>& m, const Vec3<T>& v) noexcept
+    {
+        return {m[0][0] * v.x + m[1][0] * v.y + m[2][0] * v.z, m[0][1] * v.x + m[1][1] * v.y + m[2][1] * v.z,
+                m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z};
+    }
+    [[nodiscard]] static Vec3<T> affine_point(const Mat4<T>& m, const Vec3<T>& p) noexcept
+    {
+        return affine_vector(m, p) + Vec3<T>(m[3]);
+    }
+
+    [[nodiscard]] static Vec3<T> affine_error(const Mat4<T>& m, const Vec3<T>& p, const Vec3<T>& error) noexcept
     {
         Vec3<T> out;
         for (int r = 0; r < 3; ++r) {
-            T carried = T(0), rounding = std::abs(m_[3][r]);
+            T carried = T(0), rounding = std::abs(m[3][r]);
             for (int c = 0; c < 3; ++c) {
-                carried += std::abs(m_[c][r]) * error[c];
-                rounding += std::abs(m_[c][r] * p[c]);
+                carried += std::abs(m[c][r]) * error[c];
+                rounding += std::abs(m[c][r] * p[c]);
             }
             out[r] = (gamma<T>(3) + T(1)) * carried + gamma<T>(3) * rounding;
         }
         return out;
     }
 
-private:
-    Transform(const Mat4<T>& m, const Mat4<T>& inverse) : m_(m), inverse_(inverse) {}
-
     Mat4<T> m_{T(1)};
     Mat4<T> inverse_{T(1)};
+    Mat4<T> abs_inverse_{T(1)};
 };
 
 } // namespace prism
@@ -611,7 +696,8 @@ private:
 
 namespace prism {
 
-/// One boundary crossing of a ray with a solid.
+/// One boundary crossing of a ray with a solid. Queries without the surface fill in
+/// only t and entering.
 template <Scalar T>
 struct Crossing {
     T t = infinity<T>;    ///< ray parameter
@@ -659,15 +745,18 @@ namespace prism {
 
 /// A solid with a boundary. `crossings(ray, range)` returns every boundary crossing
 /// with t strictly inside `range`, sorted by t, plus whether `ray.at(range.min)` is
-/// inside; `max_crossings` bounds their number at compile time; `bounds()` encloses
-/// the solid (Aabb::universe() for an unbounded one); `contains(p)` says whether a
-/// point is strictly inside (the implicit function, evaluated directly).
+/// inside; `crossings<false>` the same without the surface (point, error, normal), for
+/// queries that need only where and which way: shadow rays, and finding which object
+/// is nearest before asking it for its surface. `max_crossings` bounds their number at
+/// compile time; `bounds()` encloses the solid (Aabb::universe() for an unbounded one);
+/// `contains(p)` says whether a point is strictly inside (the implicit function).
 template <class S>
 concept Shape = requires(const S& shape, const Ray<typename S::scalar_type>& ray,
                          Interval<typename S::scalar_type> range, const Vec3<typename S::scalar_type>& p) {
     requires Scalar<typename S::scalar_type>;
     { S::max_crossings } -> std::convertible_to<std::size_t>;
     { shape.crossings(ray, range) } -> std::same_as<Crossings<typename S::scalar_type, S::max_crossings>>;
+    { shape.template crossings<false>(ray, range) } -> std::same_as<Crossings<typename S::scalar_type, S::max_crossings>>;
     { shape.bounds() } -> std::same_as<Aabb<typename S::scalar_type>>;
     { shape.contains(p) } -> std::same_as<bool>;
 };
@@ -732,14 +821,15 @@ public:
 
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return Op::combine(a_.contains(p), b_.contains(p)); }
 
+    template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         Crossings<T, max_crossings> out;
         // Outside the bounds the ray cannot be inside the result.
         if (bounded_ && bounds_.clip(ray, range).empty()) return out;
 
-        const auto ca = a_.crossings(ray, range);
-        const auto cb = b_.crossings(ray, range);
+        const auto ca = a_.template crossings<Surface>(ray, range);
+        const auto cb = b_.template crossings<Surface>(ray, range);
         bool in_a = ca.inside_at_start, in_b = cb.inside_at_start;
         bool inside = Op::combine(in_a, in_b);
         out.inside_at_start = inside;
@@ -922,6 +1012,7 @@ public:
         return lo_.x < p.x && p.x < hi_.x && lo_.y < p.y && p.y < hi_.y && lo_.z < p.z && p.z < hi_.z;
     }
 
+    template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         // Slab test over the whole line, remembering which face bounds the span.
@@ -943,8 +1034,10 @@ public:
         }
         if (!(t_near < t_far)) return out; // a miss, or a touch along an edge
         out.inside_at_start = t_near < range.min && range.min < t_far;
-        if (range.surrounds(t_near)) out.push_back(crossing_at(ray, t_near, axis_near, true));
-        if (range.surrounds(t_far)) out.push_back(crossing_at(ray, t_far, axis_far, false));
+        if (range.surrounds(t_near))
+            out.push_back(Surface ? crossing_at(ray, t_near, axis_near, true) : Crossing<T>{.t = t_near, .entering = true});
+        if (range.surrounds(t_far))
+            out.push_back(Surface ? crossing_at(ray, t_far, axis_far, false) : Crossing<T>{.t = t_far, .entering = false});
         return out;
     }
 
@@ -1017,6 +1110,7 @@ public:
 
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return dot(normal_, p) < offset_; }
 
+    template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 1> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         Crossings<T, 1> out;
@@ -1029,7 +1123,7 @@ public:
         const T t = -height / denom;
         const bool entering = denom < T(0);
         out.inside_at_start = entering ? t < range.min : range.min < t;
-        if (range.surrounds(t)) out.push_back(crossing_at(ray, t, entering));
+        if (range.surrounds(t)) out.push_back(Surface ? crossing_at(ray, t, entering) : Crossing<T>{.t = t, .entering = entering});
         return out;
     }
 
@@ -1107,6 +1201,7 @@ public:
         if (!variable && k.j == 0) detail::throw_invalid("Quadric coefficients are all zero");
         if (!variable) detail::throw_invalid("Quadric has no x, y or z term (only the constant ", k.j, ")");
         bounds_ = ellipsoid_bounds();
+        bounded_ = is_finite(bounds_.lo) && is_finite(bounds_.hi);
     }
 
     /// From a 4x4 matrix Q with F(p) = [p 1] Q [p 1]^T; only its symmetric part matters.
@@ -1240,8 +1335,11 @@ public:
     /// An ellipsoid's box; Aabb::universe() for unbounded quadrics.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
 
+    template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
+        // An ellipsoid: outside its box the ray is outside it.
+        if (bounded_ && bounds_.clip(ray, range).empty()) return {};
         // Compute quadratic coefficients: F(o + t d) = A t^2 + 2 B t + C (errata 1: h dz^2),
         // in the quadric's own coordinates.
         const Vec3<T> o = ray.origin - origin_;
@@ -1280,7 +1378,7 @@ public:
         for (std::size_t r = 0; r < n; ++r)
             if (roots[r].t <= range.min) out.inside_at_start = roots[r].entering;
         for (std::size_t r = 0; r < n; ++r)
-            if (range.surrounds(roots[r].t)) out.push_back(surface_at({o, d}, roots[r].t, roots[r].entering));
+            if (range.surrounds(roots[r].t)) out.push_back(Surface ? surface_at({o, d}, roots[r].t, roots[r].entering) : roots[r]);
         return out;
     }
 
@@ -1377,6 +1475,7 @@ private:
     Coefficients k_;
     Vec3<T> origin_{};
     Aabb<T> bounds_;
+    bool bounded_ = false;
 };
 
 static_assert(Shape<Quadric<float>>);
@@ -1419,6 +1518,7 @@ public:
         return length_squared(p - center_) < radius_ * radius_;
     }
 
+    template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         // Compute quadratic coefficients: a t^2 + 2 h t + c = 0 with f = o - center
@@ -1433,10 +1533,14 @@ public:
         // h^2 - a c = a (r^2 - |f - (h/a) d|^2), where the vector is the ray's closest
         // approach to the center.
         const Vec3<T> l = f - (h / a) * d;
-        const T ll = length(l);
+        const T ll2 = length_squared(l);
+        Crossings<T, 2> out;
+        // A clear miss, decided before any square root: |l|^2 is computed to within a few
+        // ulps, so beyond r^2 (1 + 8 eps) the ray passes outside the sphere.
+        if (ll2 > radius_ * radius_ * (T(1) + T(8) * std::numeric_limits<T>::epsilon())) return out;
+        const T ll = prism::sqrt(ll2);
         const T disc = a * (radius_ - ll) * (radius_ + ll);
 
-        Crossings<T, 2> out;
         // A miss, or a tangent (a double root: the ray touches but does not cross).
         if (!(disc > T(0))) return out;
 
@@ -1450,8 +1554,8 @@ public:
         // The ray is inside between the roots: it enters at t0 and leaves at t1, as
         // the gradient 2(p - center) points against d at t0 and along it at t1.
         out.inside_at_start = t0 < range.min && range.min < t1;
-        if (range.surrounds(t0)) out.push_back(crossing_at(ray, t0, true));
-        if (range.surrounds(t1)) out.push_back(crossing_at(ray, t1, false));
+        if (range.surrounds(t0)) out.push_back(Surface ? crossing_at(ray, t0, true) : Crossing<T>{.t = t0, .entering = true});
+        if (range.surrounds(t1)) out.push_back(Surface ? crossing_at(ray, t1, false) : Crossing<T>{.t = t1, .entering = false});
         return out;
     }
 
@@ -1500,7 +1604,10 @@ public:
 
     // Transformed Public Methods
 
-    Transformed(S shape, const Transform<T>& to_world) : shape_(std::move(shape)), to_world_(to_world), bounds_(world_bounds()) {}
+    Transformed(S shape, const Transform<T>& to_world) : shape_(std::move(shape)), to_world_(to_world), bounds_(world_bounds())
+    {
+        bounded_ = is_finite(bounds_.lo) && is_finite(bounds_.hi);
+    }
 
     [[nodiscard]] const S& shape() const noexcept { return shape_; }
     [[nodiscard]] const Transform<T>& transform() const noexcept { return to_world_; }
@@ -1508,14 +1615,25 @@ public:
 
     [[nodiscard]] bool contains(const Vec3<T>& p) const noexcept
     {
-        return shape_.contains(Vec3<T>(to_world_.inverse_matrix() * glm::vec<4, T>(p, T(1))));
+        return shape_.contains(to_world_.inverse_point(p));
     }
 
+    template <bool Surface = true>
     [[nodiscard]] Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        const Mat4<T>& inv = to_world_.inverse_matrix();
-        const Ray<T> local{Vec3<T>(inv * glm::vec<4, T>(ray.origin, T(1))), Vec3<T>(inv * glm::vec<4, T>(ray.direction, T(0)))};
-        Crossings<T, max_crossings> out = shape_.crossings(local, range);
+        // Outside the bounds the ray cannot be inside the shape.
+        if (bounded_ && bounds_.clip(ray, range).empty()) return {};
+        // Carry the ray into the shape's coordinates. The new origin is off by the
+        // rounding of that transform, which can be more than a spawned ray's offset from
+        // the surface it leaves: move it forward along the ray past that error, and
+        // measure t from there (pbrt-v4, Transform::ApplyInverse(Ray)).
+        Ray<T> local{to_world_.inverse_point(ray.origin), to_world_.inverse_vector(ray.direction)};
+        const T length2 = length_squared(local.direction);
+        const T dt = length2 > T(0) ? dot(abs(local.direction), to_world_.inverse_point_error(ray.origin)) / length2 : T(0);
+        local.origin += dt * local.direction;
+        Crossings<T, max_crossings> out = shape_.template crossings<Surface>(local, {range.min, range.max - dt});
+        for (std::size_t k = 0; k < out.count; ++k) out.items[k].t += dt;
+        if constexpr (!Surface) return out;
         for (std::size_t k = 0; k < out.count; ++k) {
             Crossing<T>& c = out.items[k];
             c.error = to_world_.point_error(c.point, c.error);
@@ -1547,6 +1665,7 @@ private:
     S shape_;
     Transform<T> to_world_;
     Aabb<T> bounds_;
+    bool bounded_ = false;
 };
 
 } // namespace prism
@@ -1797,11 +1916,22 @@ private:
             unlit *= Rgb<T>(T(1)) - v;
             if (material.phong > T(0)) {
                 const T alignment = dot(mirror, s.wi);
-                if (alignment > T(0)) highlight += (material.phong * std::pow(alignment, material.phong_size) / pi<T>)*v * s.irradiance;
+                if (alignment > T(0)) highlight += (material.phong * power(alignment, material.phong_size) / pi<T>)*v * s.irradiance;
             }
         });
         const Rgb<T> albedo = material.albedo.albedo(hit.point);
         return albedo * ((material.kd / pi<T>)*irradiance + material.ka * scene_->ambient * unlit) + highlight;
+    }
+
+    /// x^n: by squaring when n is a whole number up to 1024 (a Phong exponent usually
+    /// is; std::pow is a slow library call), by std::pow otherwise.
+    [[nodiscard]] static T power(T x, T n) noexcept
+    {
+        if (!(n >= T(0) && n <= T(1024) && n == std::floor(n))) return std::pow(x, n);
+        T result = T(1);
+        for (auto e = static_cast<unsigned>(n); e != 0; e >>= 1u, x *= x)
+            if (e & 1u) result *= x;
+        return result;
     }
 
     const SceneT* scene_;
@@ -2144,7 +2274,7 @@ struct Checker {
         // point, so far-away points cannot overflow an integer conversion.
         const T inv = T(1) / size;
         const T sum = std::floor(p.x * inv) + std::floor(p.y * inv) + std::floor(p.z * inv);
-        return std::fmod(sum, T(2)) == T(0) ? even : odd;
+        return std::floor(sum * T(0.5)) * T(2) == sum ? even : odd;
     }
 
     constexpr void validate() const
@@ -2571,7 +2701,11 @@ public:
     Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
     Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
 
-    constexpr Scene(LightList light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...) {}
+    constexpr Scene(LightList light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
+    {
+        // One box around every bounded object: a ray that misses it skips them all.
+        std::apply([this](const auto&... slot) { (add_to_cluster(slot), ...); }, slots);
+    }
 
     constexpr void validate() const
     {
@@ -2581,14 +2715,18 @@ public:
 
     // Scene Queries
 
-    /// The closest crossing with t inside `range`.
+    /// The closest crossing with t inside `range`. Every object is asked for its
+    /// crossings without their surfaces; only the nearest one is then asked again, over
+    /// the same range, for its surface.
     [[nodiscard]] std::optional<Hit<T>> closest_hit(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        std::optional<Hit<T>> best;
+        Nearest nearest{};
+        const bool near_cluster = reaches_cluster(ray, range);
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (closest_in_slot<I>(ray, range, best), ...);
+            (nearest_in_slot<I>(ray, range, nearest, near_cluster), ...);
         }(std::index_sequence_for<Slots...>{});
-        return best;
+        if (!nearest.found) return std::nullopt;
+        return surface_in_slot<0>(ray, nearest);
     }
 
     /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
@@ -2598,8 +2736,9 @@ public:
     [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
     {
         Rgb<T> tr{T(1)};
+        const bool near_cluster = reaches_cluster(ray, {T(0), t_max});
         const bool open = [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return (transmittance_of_slot<I>(ray, t_max, tr) && ...);
+            return (transmittance_of_slot<I>(ray, t_max, tr, near_cluster) && ...);
         }(std::index_sequence_for<Slots...>{});
         return open ? tr : Rgb<T>{T(0)};
     }
@@ -2619,28 +2758,81 @@ public:
     }
 
 private:
+    Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
+
     // Scene Private Methods
 
+    /// The nearest object so far: where its first crossing is, and the range over
+    /// which it was found.
+    struct Nearest {
+        bool found = false;
+        std::uint32_t slot = 0, index = 0;
+        Interval<T> range{};
+    };
+
+    template <class S>
+    void add_to_cluster(const S& slot) noexcept
+    {
+        for (const auto& object : objects_of(slot)) {
+            const Aabb<T> b = object.shape.bounds();
+            if (is_finite(b.lo) && is_finite(b.hi)) cluster_ = {component_min(cluster_.lo, b.lo), component_max(cluster_.hi, b.hi)};
+        }
+    }
+
+    /// A ray starting inside the cluster's box (every secondary ray in a closed room)
+    /// needs no slab test.
+    [[nodiscard]] bool reaches_cluster(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        return cluster_.contains(ray.origin) || !cluster_.clip(ray, range).empty();
+    }
+
+    /// Whether the object needs testing: it is unbounded, or the ray comes near the cluster.
+    template <class O>
+    [[nodiscard]] static bool worth_testing(const O& object, bool near_cluster) noexcept
+    {
+        if (near_cluster) return true;
+        const Aabb<T> b = object.shape.bounds();
+        return !(is_finite(b.lo) && is_finite(b.hi));
+    }
+
     template <std::size_t I>
-    void closest_in_slot(const Ray<T>& ray, Interval<T>& range, std::optional<Hit<T>>& best) const noexcept
+    void nearest_in_slot(const Ray<T>& ray, Interval<T>& range, Nearest& nearest, bool near_cluster) const noexcept
     {
         const auto objects = objects_of(std::get<I>(slots));
         for (std::size_t k = 0; k < objects.size(); ++k) {
-            const auto crossings = objects[k].shape.crossings(ray, range);
+            if (!worth_testing(objects[k], near_cluster)) continue;
+            const auto crossings = objects[k].shape.template crossings<false>(ray, range);
             if (crossings.empty()) continue;
-            best = Hit<T>{crossings.front(), static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k)};
+            // Ending the range just past the crossing keeps every crossing before it, and
+            // so the same first one, while the surface pass refines nothing beyond it.
+            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(crossings.front().t)}};
             range.max = crossings.front().t;
         }
     }
 
+    /// The nearest object's first crossing with its surface: the same computation as
+    /// before over a range that holds the same crossings up to it, so the same t.
     template <std::size_t I>
-    bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr) const noexcept
+    std::optional<Hit<T>> surface_in_slot(const Ray<T>& ray, const Nearest& nearest) const noexcept
+    {
+        if constexpr (I + 1 < sizeof...(Slots)) {
+            if (nearest.slot != I) return surface_in_slot<I + 1>(ray, nearest);
+        }
+        const auto crossings = objects_of(std::get<I>(slots))[nearest.index].shape.crossings(ray, nearest.range);
+        PRISM_ASSERT(!crossings.empty());
+        if (crossings.empty()) return std::nullopt;
+        return Hit<T>{crossings.front(), nearest.slot, nearest.index};
+    }
+
+    template <std::size_t I>
+    bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr, bool near_cluster) const noexcept
     {
         using Slot = std::tuple_element_t<I, std::tuple<Slots...>>;
         using M = typename Slot::material_type;
         const Interval<T> range{T(0), t_max};
         for (const auto& object : objects_of(std::get<I>(slots))) {
-            const auto crossings = object.shape.crossings(ray, range);
+            if (!worth_testing(object, near_cluster)) continue;
+            const auto crossings = object.shape.template crossings<false>(ray, range);
             if constexpr (!transmits<M>) {
                 if (!crossings.empty()) return false;
             } else {
