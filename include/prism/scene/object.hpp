@@ -22,8 +22,14 @@ struct Object {
 
     S shape;
     M material;
+    bool bounded = false; ///< the shape has finite bounds (set at construction, for culling)
 
-    constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m)) { material.validate(); }
+    constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m))
+    {
+        material.validate();
+        const Aabb<scalar_type> b = shape.bounds();
+        bounded = is_finite(b.lo) && is_finite(b.hi);
+    }
 };
 
 /// Many objects of one shape and material type, chosen at run time, in one scene slot.

@@ -126,10 +126,8 @@ private:
     template <class S>
     void add_to_cluster(const S& slot) noexcept
     {
-        for (const auto& object : objects_of(slot)) {
-            const Aabb<T> b = object.shape.bounds();
-            if (is_finite(b.lo) && is_finite(b.hi)) cluster_ = {component_min(cluster_.lo, b.lo), component_max(cluster_.hi, b.hi)};
-        }
+        for (const auto& object : objects_of(slot))
+            if (object.bounded) cluster_ = {component_min(cluster_.lo, object.shape.bounds().lo), component_max(cluster_.hi, object.shape.bounds().hi)};
     }
 
     /// A ray starting inside the cluster's box (every secondary ray in a closed room)
@@ -143,9 +141,7 @@ private:
     template <class O>
     [[nodiscard]] static bool worth_testing(const O& object, bool near_cluster) noexcept
     {
-        if (near_cluster) return true;
-        const Aabb<T> b = object.shape.bounds();
-        return !(is_finite(b.lo) && is_finite(b.hi));
+        return near_cluster || !object.bounded;
     }
 
     template <std::size_t I>
