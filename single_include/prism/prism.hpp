@@ -2608,8 +2608,14 @@ struct Object {
 
     S shape;
     M material;
+    bool bounded = false; ///< the shape has finite bounds (set at construction, for culling)
 
-    constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m)) { material.validate(); }
+    constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m))
+    {
+        material.validate();
+        const Aabb<scalar_type> b = shape.bounds();
+        bounded = is_finite(b.lo) && is_finite(b.hi);
+    }
 };
 
 /// Many objects of one shape and material type, chosen at run time, in one scene slot.
@@ -2773,10 +2779,8 @@ private:
     template <class S>
     void add_to_cluster(const S& slot) noexcept
     {
-        for (const auto& object : objects_of(slot)) {
-            const Aabb<T> b = object.shape.bounds();
-            if (is_finite(b.lo) && is_finite(b.hi)) cluster_ = {component_min(cluster_.lo, b.lo), component_max(cluster_.hi, b.hi)};
-        }
+        for (const auto& object : objects_of(slot))
+            if (object.bounded) cluster_ = {component_min(cluster_.lo, object.shape.bounds().lo), component_max(cluster_.hi, object.shape.bounds().hi)};
     }
 
     /// A ray starting inside the cluster's box (every secondary ray in a closed room)
@@ -2790,9 +2794,7 @@ private:
     template <class O>
     [[nodiscard]] static bool worth_testing(const O& object, bool near_cluster) noexcept
     {
-        if (near_cluster) return true;
-        const Aabb<T> b = object.shape.bounds();
-        return !(is_finite(b.lo) && is_finite(b.hi));
+        return near_cluster || !object.bounded;
     }
 
     template <std::size_t I>
