@@ -235,6 +235,276 @@ template <Scalar T>
 
 } // namespace prism
 
+// ---- prism/accel/kd_tree.hpp ----
+// KdTree: k-nearest and radius queries over a point set; pointer-free, constexpr-friendly.
+//
+// The point set is a policy (the PointSet concept, in the spirit of nanoflann's dataset
+// adaptor). The tree is implicit: node n covers a range of points, its children are 2n
+// and 2n + 1 and cover the two halves of the range, split at the median along the axis
+// of largest extent (found with std::nth_element, O(n log n) overall). A node stores
+// only its split value and axis; ranges, and whether a node is a leaf, follow from the
+// point count. The points are copied in tree order, so a leaf is contiguous in memory.
+// Queries allocate nothing; k is a compile-time constant. Neighbours are ordered by
+// (squared distance, index), so ties are broken the same way as a brute-force search.
+// Distances are squared throughout, radii are not.
+
+
+#include <algorithm>
+#include <array>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace prism {
+
+/// A set of points: their count, dimension and coordinates.
+template <class P>
+concept PointSet = requires(const P& points, std::size_t i, std::size_t axis) {
+    requires Scalar<typename P::scalar_type>;
+    { P::dimension } -> std::convertible_to<std::size_t>;
+    { points.size() } -> std::convertible_to<std::size_t>;
+    { points.coordinate(i, axis) } -> std::convertible_to<typename P::scalar_type>;
+};
+
+/// Points kept by the caller in a contiguous array of std::array<T, Dim>.
+template <Scalar T, std::size_t Dim>
+struct ArrayPoints {
+    using scalar_type = T;
+    static constexpr std::size_t dimension = Dim;
+
+    std::span<const std::array<T, Dim>> points;
+
+    [[nodiscard]] constexpr std::size_t size() const noexcept { return points.size(); }
+    [[nodiscard]] constexpr T coordinate(std::size_t i, std::size_t axis) const noexcept { return points[i][axis]; }
+};
+
+/// One neighbour: its squared distance from the query and its index in the point set.
+template <Scalar T>
+struct Neighbour {
+    T distance2 = infinity<T>;
+    std::uint32_t index = 0;
+
+    /// Nearer first; at equal distance, the lower index first.
+    friend constexpr bool operator<(const Neighbour& a, const Neighbour& b) noexcept
+    {
+        return a.distance2 < b.distance2 || (a.distance2 == b.distance2 && a.index < b.index);
+    }
+    friend constexpr bool operator==(const Neighbour&, const Neighbour&) = default;
+};
+
+/// The k nearest neighbours found, nearest first (fewer when the set is smaller).
+template <Scalar T, std::size_t K>
+struct NearestNeighbours {
+    std::array<Neighbour<T>, K> items{};
+    std::size_t count = 0;
+
+    [[nodiscard]] constexpr std::size_t size() const noexcept { return count; }
+    [[nodiscard]] constexpr const Neighbour<T>& operator[](std::size_t i) const noexcept { return items[i]; }
+    [[nodiscard]] constexpr const Neighbour<T>* begin() const noexcept { return items.data(); }
+    [[nodiscard]] constexpr const Neighbour<T>* end() const noexcept { return items.data() + count; }
+};
+
+template <PointSet Points, std::size_t LeafSize = 8>
+class KdTree {
+    static_assert(LeafSize >= 1, "a leaf holds at least one point");
+
+public:
+    using scalar_type = typename Points::scalar_type;
+    using T = scalar_type;
+    static constexpr std::size_t dimension = Points::dimension;
+    static constexpr std::size_t leaf_size = LeafSize;
+    using Point = std::array<T, dimension>;
+
+    // KdTree Public Methods
+
+    /// Build over the points (copied; the set may go away afterwards).
+    constexpr explicit KdTree(const Points& points)
+    {
+        const std::size_t n = points.size();
+        PRISM_ASSERT(n < std::numeric_limits<std::uint32_t>::max());
+        points_.resize(n);
+        index_.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            index_[i] = static_cast<std::uint32_t>(i);
+            for (std::size_t a = 0; a < dimension; ++a) points_[i][a] = static_cast<T>(points.coordinate(i, a));
+        }
+        if (n > LeafSize) {
+            // Heap-numbered nodes: enough for every split of halving ranges down to a leaf.
+            std::size_t nodes = 2;
+            for (std::size_t leaves = 1; (n + leaves - 1) / leaves > LeafSize; leaves *= 2) nodes *= 2;
+            split_.resize(nodes);
+            axis_.resize(nodes);
+            build(1, 0, n);
+        }
+        // Store the points in tree order.
+        std::vector<Point> ordered(n);
+        for (std::size_t i = 0; i < n; ++i) ordered[i] = points_[index_[i]];
+        points_ = std::move(ordered);
+    }
+
+    [[nodiscard]] constexpr std::size_t size() const noexcept { return points_.size(); }
+
+    /// Bytes held by the tree (points in tree order, their indices, the nodes).
+    [[nodiscard]] constexpr std::size_t memory_bytes() const noexcept
+    {
+        return points_.capacity() * sizeof(Point) + index_.capacity() * sizeof(std::uint32_t) + split_.capacity() * sizeof(T) +
+               axis_.capacity();
+    }
+
+    /// The K nearest points to q, nearest first, ties by lower index.
+    template <std::size_t K>
+    [[nodiscard]] constexpr NearestNeighbours<T, K> nearest(const Point& q) const noexcept
+    {
+        static_assert(K >= 1);
+        NearestNeighbours<T, K> heap; // a max-heap on (distance, index) while searching
+        if (points_.empty()) return heap;
+        Point offsets{};
+        search_nearest<K>(q, 1, 0, points_.size(), offsets, heap);
+        if constexpr (K > 1) std::sort_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
+        return heap;
+    }
+
+    /// Call visit(index, distance2) for every point within `radius` of q (distance <=
+    /// radius), in tree order.
+    template <class Visitor>
+    constexpr void within(const Point& q, T radius, Visitor&& visit) const
+    {
+        if (points_.empty() || !(radius >= T(0))) return;
+        Point offsets{};
+        search_within(q, radius * radius, 1, 0, points_.size(), offsets, visit);
+    }
+
+    /// Squared Euclidean distance, as every query computes it.
+    [[nodiscard]] static constexpr T distance2(const Point& a, const Point& b) noexcept
+    {
+        T sum = T(0);
+        for (std::size_t i = 0; i < dimension; ++i) {
+            const T d = a[i] - b[i];
+            sum += d * d;
+        }
+        return sum;
+    }
+
+private:
+    // KdTree Private Methods
+
+    [[nodiscard]] static constexpr std::size_t middle(std::size_t begin, std::size_t end) noexcept { return begin + (end - begin) / 2; }
+
+    constexpr void build(std::size_t node, std::size_t begin, std::size_t end)
+    {
+        if (end - begin <= LeafSize) return;
+        // Split along the axis of largest extent, at the median.
+        Point lo, hi;
+        lo.fill(infinity<T>);
+        hi.fill(-infinity<T>);
+        for (std::size_t i = begin; i < end; ++i)
+            for (std::size_t a = 0; a < dimension; ++a) {
+                const T x = points_[index_[i]][a];
+                lo[a] = x < lo[a] ? x : lo[a];
+                hi[a] = x > hi[a] ? x : hi[a];
+            }
+        std::size_t axis = 0;
+        for (std::size_t a = 1; a < dimension; ++a)
+            if (hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
+        const std::size_t mid = middle(begin, end);
+        std::nth_element(index_.begin() + static_cast<std::ptrdiff_t>(begin), index_.begin() + static_cast<std::ptrdiff_t>(mid),
+                         index_.begin() + static_cast<std::ptrdiff_t>(end),
+                         [this, axis](std::uint32_t x, std::uint32_t y) { return points_[x][axis] < points_[y][axis]; });
+        split_[node] = points_[index_[mid]][axis];
+        axis_[node] = static_cast<std::uint8_t>(axis);
+        build(2 * node, begin, mid);
+        build(2 * node + 1, mid, end);
+    }
+
+    // Both searches keep `offsets`, the squared distance from q to the current cell along
+    // each axis (as nanoflann does); their sum bounds the distance to any point in the
+    // cell from below. Points left of a split are <= its value, right ones >=. The sum is
+    // taken afresh in axis order rather than updated by subtraction: each offset is at
+    // most the matching term of any point's distance2, and rounded sums in the same order
+    // keep that, so a point exactly on a cell's corner is never pruned, and ties at equal
+    // distance resolve by index exactly as in a brute-force search.
+
+    [[nodiscard]] static constexpr T sum(const Point& offsets) noexcept
+    {
+        T total = T(0);
+        for (std::size_t i = 0; i < dimension; ++i) total += offsets[i];
+        return total;
+    }
+
+    template <std::size_t K>
+    constexpr void search_nearest(const Point& q, std::size_t node, std::size_t begin, std::size_t end, Point& offsets,
+                                  NearestNeighbours<T, K>& heap) const noexcept
+    {
+        if (end - begin <= LeafSize) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const Neighbour<T> candidate{distance2(q, points_[i]), index_[i]};
+                if constexpr (K == 1) { // the one nearest: no heap needed
+                    if (heap.count == 0 || candidate < heap.items[0]) heap.items[0] = candidate, heap.count = 1;
+                } else if (heap.count < K) {
+                    heap.items[heap.count++] = candidate;
+                    std::push_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
+                } else if (candidate < heap.items[0]) {
+                    std::pop_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(K));
+                    heap.items[K - 1] = candidate;
+                    std::push_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(K));
+                }
+            }
+            return;
+        }
+        const std::size_t axis = axis_[node];
+        const std::size_t mid = middle(begin, end);
+        const T diff = q[axis] - split_[node];
+        const bool left_first = diff < T(0);
+        if (left_first) search_nearest<K>(q, 2 * node, begin, mid, offsets, heap);
+        else search_nearest<K>(q, 2 * node + 1, mid, end, offsets, heap);
+        // The far side: its cell is diff^2 away along this axis. Equal distances are
+        // searched too, so ties resolve by index exactly as brute force does.
+        const T saved = offsets[axis];
+        offsets[axis] = diff * diff;
+        if (heap.count < K || sum(offsets) <= heap.items[0].distance2) {
+            if (left_first) search_nearest<K>(q, 2 * node + 1, mid, end, offsets, heap);
+            else search_nearest<K>(q, 2 * node, begin, mid, offsets, heap);
+        }
+        offsets[axis] = saved;
+    }
+
+    template <class Visitor>
+    constexpr void search_within(const Point& q, T radius2, std::size_t node, std::size_t begin, std::size_t end, Point& offsets,
+                                 Visitor& visit) const
+    {
+        if (end - begin <= LeafSize) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const T d2 = distance2(q, points_[i]);
+                if (d2 <= radius2) visit(index_[i], d2);
+            }
+            return;
+        }
+        const std::size_t axis = axis_[node];
+        const std::size_t mid = middle(begin, end);
+        const T diff = q[axis] - split_[node];
+        const bool left_first = diff < T(0);
+        if (left_first) search_within(q, radius2, 2 * node, begin, mid, offsets, visit);
+        else search_within(q, radius2, 2 * node + 1, mid, end, offsets, visit);
+        const T saved = offsets[axis];
+        offsets[axis] = diff * diff;
+        if (sum(offsets) <= radius2) {
+            if (left_first) search_within(q, radius2, 2 * node + 1, mid, end, offsets, visit);
+            else search_within(q, radius2, 2 * node, begin, mid, offsets, visit);
+        }
+        offsets[axis] = saved;
+    }
+
+    std::vector<Point> points_;        ///< in tree order (the input order while building)
+    std::vector<std::uint32_t> index_; ///< the point set's index of each point in tree order
+    std::vector<T> split_;             ///< split value of each inner node (heap numbering from 1)
+    std::vector<std::uint8_t> axis_;   ///< split axis of each inner node
+};
+
+} // namespace prism
+
 // ---- prism/core/interval.hpp ----
 // Interval: a range [min, max] of ray parameters or values.
 

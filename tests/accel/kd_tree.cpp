@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: MIT
+// KdTree against brute force: the same neighbours, in the same order, ties included.
+#include <prism/accel/kd_tree.hpp>
+#include <prism/core/rng.hpp>
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+using prism::ArrayPoints;
+using prism::KdTree;
+using prism::Neighbour;
+
+namespace {
+
+template <class T>
+using P3 = std::array<T, 3>;
+
+/// Every point's (distance, index), sorted: the brute-force answer.
+template <class T>
+std::vector<Neighbour<T>> brute_force(const std::vector<P3<T>>& points, const P3<T>& q)
+{
+    std::vector<Neighbour<T>> all;
+    for (std::size_t i = 0; i < points.size(); ++i)
+        all.push_back({KdTree<ArrayPoints<T, 3>>::distance2(q, points[i]), static_cast<std::uint32_t>(i)});
+    std::sort(all.begin(), all.end());
+    return all;
+}
+
+template <class T, std::size_t K, std::size_t Leaf = 8>
+int knn_mismatches(const std::vector<P3<T>>& points, const std::vector<P3<T>>& queries)
+{
+    const KdTree<ArrayPoints<T, 3>, Leaf> tree(ArrayPoints<T, 3>{points});
+    int mismatches = 0;
+    for (const auto& q : queries) {
+        const auto all = brute_force(points, q);
+        const auto got = tree.template nearest<K>(q);
+        const std::size_t expected = std::min(K, all.size());
+        bool same = got.size() == expected;
+        for (std::size_t i = 0; same && i < expected; ++i) same = got[i] == all[i];
+        mismatches += !same;
+    }
+    return mismatches;
+}
+
+template <class T>
+int radius_mismatches(const std::vector<P3<T>>& points, const std::vector<P3<T>>& queries, T radius)
+{
+    const KdTree<ArrayPoints<T, 3>> tree(ArrayPoints<T, 3>{points});
+    int mismatches = 0;
+    for (const auto& q : queries) {
+        std::vector<Neighbour<T>> got;
+        tree.within(q, radius, [&](std::uint32_t index, T d2) { got.push_back({d2, index}); });
+        std::sort(got.begin(), got.end());
+        std::vector<Neighbour<T>> expected;
+        for (const auto& n : brute_force(points, q))
+            if (n.distance2 <= radius * radius) expected.push_back(n);
+        mismatches += got != expected;
+    }
+    return mismatches;
+}
+
+template <class T>
+std::vector<P3<T>> uniform(prism::Pcg32& rng, std::size_t n, T extent = T(1))
+{
+    std::vector<P3<T>> out(n);
+    for (auto& p : out) p = {extent * rng.uniform<T>(), extent * rng.uniform<T>(), extent * rng.uniform<T>()};
+    return out;
+}
+
+/// A dense blob (a caustic) in a sparse uniform background.
+template <class T>
+std::vector<P3<T>> clustered(prism::Pcg32& rng, std::size_t n)
+{
+    std::vector<P3<T>> out = uniform<T>(rng, n / 4);
+    while (out.size() < n) {
+        const T r = T(0.02) * std::sqrt(rng.uniform<T>());
+        const T a = T(6.2831853) * rng.uniform<T>();
+        out.push_back({T(0.5) + r * std::cos(a), T(0.3) + r * std::sin(a), T(0.7)});
+    }
+    return out;
+}
+
+} // namespace
+
+#if PRISM_CONSTEXPR_VECTORS
+// Build and query in a constant expression: a 5 x 4 grid of points in the plane.
+constexpr std::array<std::array<double, 2>, 20> grid = [] {
+    std::array<std::array<double, 2>, 20> p{};
+    for (int i = 0; i < 20; ++i) p[static_cast<std::size_t>(i)] = {double(i % 5), double(i / 5)};
+    return p;
+}();
+constexpr auto grid_nearest = [] {
+    const KdTree<ArrayPoints<double, 2>, 2> tree(ArrayPoints<double, 2>{grid});
+    return tree.nearest<3>({2.1, 1.9});
+}();
+// (2, 2) is index 12 at 0.02; then (2, 1) index 7 at 0.82 and (3, 2) index 13 at 0.82: a tie, lower index first.
+static_assert(grid_nearest.size() == 3 && grid_nearest[0].index == 12 && grid_nearest[1].index == 7 && grid_nearest[2].index == 13);
+constexpr int grid_within = [] {
+    const KdTree<ArrayPoints<double, 2>, 2> tree(ArrayPoints<double, 2>{grid});
+    int count = 0;
+    tree.within({2.0, 2.0}, 1.0, [&](std::uint32_t, double) { ++count; });
+    return count;
+}();
+static_assert(grid_within == 5); // the point and its four neighbours at distance 1
+#endif
+
+TEST_CASE_TEMPLATE("k nearest neighbours equal brute force on random and clustered sets", T, float, double)
+{
+    prism::Pcg32 rng(1u, 1u);
+    const auto random_points = uniform<T>(rng, 5000);
+    const auto queries = uniform<T>(rng, 300);
+    CHECK(knn_mismatches<T, 1>(random_points, queries) == 0);
+    CHECK(knn_mismatches<T, 5>(random_points, queries) == 0);
+    CHECK(knn_mismatches<T, 50>(random_points, queries) == 0);
+    CHECK((knn_mismatches<T, 50, 1>(random_points, queries)) == 0);
+    CHECK((knn_mismatches<T, 50, 32>(random_points, queries)) == 0);
+
+    const auto blob = clustered<T>(rng, 5000);
+    std::vector<P3<T>> near_blob = uniform<T>(rng, 100);
+    for (int i = 0; i < 100; ++i) near_blob.push_back({T(0.5) + T(0.03) * rng.uniform<T>(), T(0.3), T(0.7)});
+    CHECK(knn_mismatches<T, 50>(blob, near_blob) == 0);
+}
+
+TEST_CASE_TEMPLATE("ties, duplicates, flat sets, one point, none", T, float, double)
+{
+    prism::Pcg32 rng(2u, 2u);
+    // 300 copies of one point among others: equal distances resolve by index.
+    auto dupes = uniform<T>(rng, 200);
+    for (int i = 0; i < 300; ++i) dupes.push_back({T(0.25), T(0.25), T(0.25)});
+    for (int i = 0; i < 100; ++i) dupes.push_back(dupes[static_cast<std::size_t>(i)]);
+    std::vector<P3<T>> queries = uniform<T>(rng, 50);
+    queries.push_back({T(0.25), T(0.25), T(0.25)});
+    CHECK(knn_mismatches<T, 50>(dupes, queries) == 0);
+    CHECK(radius_mismatches<T>(dupes, queries, T(0.1)) == 0);
+    // A regular grid: many equal distances.
+    std::vector<P3<T>> lattice;
+    for (int x = 0; x < 12; ++x)
+        for (int y = 0; y < 12; ++y)
+            for (int z = 0; z < 12; ++z) lattice.push_back({T(x), T(y), T(z)});
+    std::vector<P3<T>> lattice_queries{{T(5), T(5), T(5)}, {T(5.5), T(5.5), T(5.5)}, {T(0), T(0), T(0)}, {T(11.5), T(3), T(-1)}};
+    CHECK(knn_mismatches<T, 50>(lattice, lattice_queries) == 0);
+    CHECK(radius_mismatches<T>(lattice, lattice_queries, T(1.5)) == 0);
+    // All points on the plane z = 0.5.
+    auto flat = uniform<T>(rng, 2000);
+    for (auto& p : flat) p[2] = T(0.5);
+    CHECK(knn_mismatches<T, 20>(flat, queries) == 0);
+    CHECK(radius_mismatches<T>(flat, queries, T(0.05)) == 0);
+    // One point, and none.
+    const std::vector<P3<T>> one{{T(1), T(2), T(3)}};
+    CHECK(knn_mismatches<T, 5>(one, queries) == 0);
+    const std::vector<P3<T>> none;
+    const KdTree<ArrayPoints<T, 3>> empty(ArrayPoints<T, 3>{none});
+    CHECK(empty.template nearest<3>({T(0), T(0), T(0)}).size() == 0);
+    int visited = 0;
+    empty.within({T(0), T(0), T(0)}, T(10), [&](std::uint32_t, T) { ++visited; });
+    CHECK(visited == 0);
+}
+
+TEST_CASE_TEMPLATE("radius queries equal brute force", T, float, double)
+{
+    prism::Pcg32 rng(3u, 3u);
+    const auto points = clustered<T>(rng, 20000);
+    const auto queries = uniform<T>(rng, 200);
+    CHECK(radius_mismatches<T>(points, queries, T(0.05)) == 0);
+    CHECK(radius_mismatches<T>(points, queries, T(0)) == 0);
+    CHECK(radius_mismatches<T>(points, {{T(0.5), T(0.3), T(0.7)}}, T(0.01)) == 0); // inside the blob
+}
+
+TEST_CASE("memory and size")
+{
+    prism::Pcg32 rng(4u, 4u);
+    const auto points = uniform<float>(rng, 1000);
+    const KdTree<ArrayPoints<float, 3>> tree(ArrayPoints<float, 3>{points});
+    CHECK(tree.size() == 1000);
+    CHECK(tree.memory_bytes() >= 1000 * (12 + 4));
+}
