@@ -156,6 +156,27 @@ def composition_chart(rows):
     save(fig, "csg_composition.png")
 
 
+def kdtree_chart(rows):
+    n = [int(r["points"]) for r in rows]
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4))
+    for ax, (ours, theirs, title, unit) in zip(axes, (
+            ("build_prism_s", "build_nanoflann_s", "build", "seconds"),
+            ("knn50_prism_ns", "knn50_nanoflann_ns", "k = 50 nearest", "ns per query"),
+            ("radius_prism_ns", "radius_nanoflann_ns", "radius 0.05", "ns per query"))):
+        ax.plot(n, [float(r[ours]) for r in rows], "o-", label="prism KdTree")
+        ax.plot(n, [float(r[theirs]) for r in rows], "s--", label="nanoflann 1.4.3")
+        for x, r in zip(n, rows):
+            ax.annotate(f"{float(r[theirs]) / float(r[ours]):.2f}x", (x, float(r[ours])), textcoords="offset points", xytext=(4, -12), fontsize=8)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("photons")
+        ax.set_ylabel(unit)
+        ax.set_title(f"{title} (nanoflann / prism)")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+    save(fig, "kdtree.png")
+
+
 def main():
     if (rows := read("accuracy.csv")):
         accuracy_charts(rows)
@@ -167,6 +188,8 @@ def main():
         quadric_chart(rows)
     if (rows := read("csg_composition.csv")):
         composition_chart(rows)
+    if (rows := read("kdtree.csv")):
+        kdtree_chart(rows)
 
 
 if __name__ == "__main__":

@@ -16,5 +16,6 @@ python=/usr/bin/python3
 "$root/build/release/bench/bench_acne" "$results" > "$results/acne.txt"
 "$root/build/release/bench/bench_quadric_roots" "$results" | tee "$results/quadric_roots.txt"
 "$root/build/release/bench/bench_csg_composition" "$results" | tee "$results/csg_composition.txt"
+"$root/build/release/bench/bench_kdtree" "$results" | tee "$results/kdtree.txt"
 "$root/build/release/bench/bench_accuracy" "$results" | tee "$results/accuracy.txt"
 "$python" "$root/bench/plot.py" "$results"

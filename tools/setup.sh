@@ -5,7 +5,7 @@
 #   tools/setup.sh --bench  also POV-Ray and matplotlib, for bench/
 set -euo pipefail
 packages=(g++ cmake ninja-build meson python3 libglm-dev doctest-dev libstb-dev)
-if [[ "${1:-}" == "--bench" ]]; then packages+=(povray python3-matplotlib); fi
+if [[ "${1:-}" == "--bench" ]]; then packages+=(povray python3-matplotlib libnanoflann-dev); fi
 
 missing=()
 for p in "${packages[@]}"; do

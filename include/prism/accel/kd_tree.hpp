@@ -193,6 +193,24 @@ private:
     // keep that, so a point exactly on a cell's corner is never pruned, and ties at equal
     // distance resolve by index exactly as in a brute-force search.
 
+    /// Replace the largest of a full max-heap and sift the newcomer down: one pass of
+    /// log K steps, where pop_heap then push_heap take two.
+    template <std::size_t K>
+    static constexpr void replace_top(std::array<Neighbour<T>, K>& heap, const Neighbour<T>& item) noexcept
+    {
+        std::size_t at = 0;
+        for (;;) {
+            const std::size_t left = 2 * at + 1;
+            if (left >= K) break;
+            const std::size_t right = left + 1;
+            const std::size_t larger = right < K && heap[left] < heap[right] ? right : left;
+            if (!(item < heap[larger])) break;
+            heap[at] = heap[larger];
+            at = larger;
+        }
+        heap[at] = item;
+    }
+
     [[nodiscard]] static constexpr T sum(const Point& offsets) noexcept
     {
         T total = T(0);
@@ -213,9 +231,7 @@ private:
                     heap.items[heap.count++] = candidate;
                     std::push_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
                 } else if (candidate < heap.items[0]) {
-                    std::pop_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(K));
-                    heap.items[K - 1] = candidate;
-                    std::push_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(K));
+                    replace_top(heap.items, candidate);
                 }
             }
             return;
