@@ -37,6 +37,9 @@
 #include <prism/optics/beer.hpp>
 #include <prism/optics/fresnel.hpp>
 #include <prism/optics/refract.hpp>
+#include <prism/photon/photon.hpp>
+#include <prism/photon/photon_map.hpp>
+#include <prism/photon/photon_tracer.hpp>
 #include <prism/render/film.hpp>
 #include <prism/render/render.hpp>
 #include <prism/scene/camera.hpp>

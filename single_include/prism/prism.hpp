@@ -2615,6 +2615,515 @@ static_assert(Material<Diffuse<float>>);
 
 } // namespace prism
 
+// ---- prism/photon/photon.hpp ----
+// Photon: what a photon map stores, and the sampling a photon tracer needs.
+//
+// Jensen, "Global Illumination using Photon Maps" (1996) and "Realistic Image Synthesis
+// Using Photon Mapping" (2001), with the seed's errata 4, 6 and 7
+// (shared/seeds/README.md): emission directions uniform on the sphere, each photon
+// carrying the light's power divided by the photons emitted, Russian roulette that
+// scales a survivor's power per channel by reflectance over survival probability.
+
+
+#include <cstdint>
+
+namespace prism {
+
+/// One stored photon: where it landed, the power it carries (W) and where it came from.
+struct Photon {
+    enum Flags : std::uint8_t {
+        direct = 1,  ///< first hit after leaving the light
+        caustic = 2, ///< reached this diffuse surface only by specular bounces (L S+ D)
+        shadow = 4,  ///< a shadow photon: where the straight continuation of a direct photon's path met a further surface
+    };
+
+    Vec3<float> position{};
+    Rgb<float> power{};
+    Vec3<float> from{}; ///< unit direction back toward where the photon came from
+    std::uint8_t flags = 0;
+};
+
+/// A direction uniform on the unit sphere: z = 1 - 2u, phi = 2 pi v (errata 4: no
+/// rejection sampling of a cube, whose accepted points were never normalised).
+template <Scalar T>
+[[nodiscard]] inline Vec3<T> uniform_sphere(Pcg32& rng) noexcept
+{
+    const T z = T(1) - T(2) * rng.uniform<T>();
+    const T r = prism::sqrt(clamp(T(1) - z * z, T(0), T(1)));
+    const T phi = T(2) * pi<T> * rng.uniform<T>();
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+/// A cosine-distributed direction about the unit normal n (Malley's method: a uniform
+/// point on the disk, lifted onto the hemisphere): the diffuse bounce of a photon.
+template <Scalar T>
+[[nodiscard]] inline Vec3<T> cosine_hemisphere(const Vec3<T>& n, Pcg32& rng) noexcept
+{
+    const T r = prism::sqrt(rng.uniform<T>());
+    const T phi = T(2) * pi<T> * rng.uniform<T>();
+    const T x = r * std::cos(phi), y = r * std::sin(phi);
+    const T z = prism::sqrt(clamp(T(1) - x * x - y * y, T(0), T(1)));
+    // An orthonormal frame around n (Duff et al. 2017, "Building an Orthonormal Basis, Revisited").
+    const T sign = std::copysign(T(1), n.z);
+    const T a = T(-1) / (sign + n.z);
+    const T b = n.x * n.y * a;
+    const Vec3<T> s{T(1) + sign * n.x * n.x * a, sign * b, -sign * n.x};
+    const Vec3<T> t{b, sign + n.y * n.y * a, -n.y};
+    return x * s + y * t + z * n;
+}
+
+/// Russian roulette (errata 7): the photon survives with probability p = the largest
+/// channel of its reflectance (at most 1), and a survivor's power is scaled per channel
+/// by reflectance / p, so the expected power leaving is reflectance times the power
+/// arriving, in every channel. Returns false when the photon is absorbed.
+template <Scalar T>
+[[nodiscard]] inline bool russian_roulette(Rgb<T>& power, const Rgb<T>& reflectance, Pcg32& rng) noexcept
+{
+    const T p = clamp(max_component(reflectance), T(0), T(1));
+    if (!(p > T(0)) || rng.uniform<T>() >= p) return false;
+    power *= reflectance / p;
+    return true;
+}
+
+} // namespace prism
+
+// ---- prism/photon/photon_map.hpp ----
+// PhotonMap: photons in a KdTree, and the density estimate of the irradiance they carry.
+
+
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace prism {
+
+/// The photons' positions, as a PointSet for the KdTree.
+struct PhotonPositions {
+    using scalar_type = float;
+    static constexpr std::size_t dimension = 3;
+
+    std::span<const Photon> photons;
+
+    [[nodiscard]] std::size_t size() const noexcept { return photons.size(); }
+    [[nodiscard]] float coordinate(std::size_t i, std::size_t axis) const noexcept { return photons[i].position[static_cast<int>(axis)]; }
+};
+
+class PhotonMap {
+public:
+    using Tree = KdTree<PhotonPositions, 8>;
+
+    PhotonMap() = default;
+
+    /// Own the photons and build the tree over them.
+    explicit PhotonMap(std::vector<Photon> photons) : photons_(std::move(photons)), tree_(std::in_place, PhotonPositions{photons_}) {}
+
+    [[nodiscard]] std::size_t size() const noexcept { return photons_.size(); }
+    [[nodiscard]] const std::vector<Photon>& photons() const noexcept { return photons_; }
+
+    /// Irradiance at p on a surface with unit normal n, from the K nearest photons
+    /// (Jensen 1996, eq. 6 with a diffuse BRDF taken out): E = sum of the powers of
+    /// those arriving on n's side, over the disk pi r^2 that reaches the Kth. Shadow
+    /// photons carry no power and are left out of the count. Calibrated: each photon
+    /// carries power / photons emitted, so the estimate does not depend on the count.
+    template <std::size_t K>
+    [[nodiscard]] Rgb<float> irradiance(const Vec3<float>& p, const Vec3<float>& n) const noexcept
+    {
+        if (!tree_ || photons_.empty()) return Rgb<float>(0.0f);
+        const auto found = tree_->nearest<K>({p.x, p.y, p.z});
+        Rgb<float> sum(0.0f);
+        for (const Neighbour<float>& neighbour : found) {
+            const Photon& photon = photons_[neighbour.index];
+            if (dot(photon.from, n) > 0.0f) sum += photon.power;
+        }
+        const float r2 = found[found.size() - 1].distance2;
+        return r2 > 0.0f ? sum / (pi<float> * r2) : Rgb<float>(0.0f);
+    }
+
+    /// The same within a fixed radius: E = sum of the powers within r over pi r^2.
+    [[nodiscard]] Rgb<float> irradiance_within(const Vec3<float>& p, const Vec3<float>& n, float radius) const noexcept
+    {
+        Rgb<float> sum(0.0f);
+        if (!tree_ || !(radius > 0.0f)) return sum;
+        tree_->within({p.x, p.y, p.z}, radius, [&](std::uint32_t index, float) {
+            const Photon& photon = photons_[index];
+            if (dot(photon.from, n) > 0.0f) sum += photon.power;
+        });
+        return sum / (pi<float> * radius * radius);
+    }
+
+    /// How many of the K nearest photons are direct, and how many are shadow photons
+    /// (Jensen and Christensen 1995: all direct means lit, all shadow means in shadow).
+    template <std::size_t K>
+    [[nodiscard]] std::pair<std::size_t, std::size_t> direct_and_shadow(const Vec3<float>& p) const noexcept
+    {
+        std::size_t direct = 0, shadow = 0;
+        if (!tree_ || photons_.empty()) return {0, 0};
+        for (const Neighbour<float>& neighbour : tree_->nearest<K>({p.x, p.y, p.z})) {
+            const std::uint8_t flags = photons_[neighbour.index].flags;
+            direct += (flags & Photon::direct) != 0;
+            shadow += (flags & Photon::shadow) != 0;
+        }
+        return {direct, shadow};
+    }
+
+private:
+    std::vector<Photon> photons_;
+    std::optional<Tree> tree_;
+};
+
+} // namespace prism
+
+// ---- prism/scene/object.hpp ----
+// Object: a shape with a material; ObjectArray: many of one type in one scene slot.
+
+
+#include <span>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+/// One scene object. Construction validates the material (the shape validated itself).
+template <Shape S, Material M>
+    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
+struct Object {
+    using scalar_type = typename S::scalar_type;
+    using shape_type = S;
+    using material_type = M;
+
+    S shape;
+    M material;
+    bool bounded = false; ///< the shape has finite bounds (set at construction, for culling)
+
+    constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m))
+    {
+        material.validate();
+        const Aabb<scalar_type> b = shape.bounds();
+        bounded = is_finite(b.lo) && is_finite(b.hi);
+    }
+};
+
+/// Many objects of one shape and material type, chosen at run time, in one scene slot.
+template <Shape S, Material M>
+    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
+struct ObjectArray {
+    using scalar_type = typename S::scalar_type;
+    using shape_type = S;
+    using material_type = M;
+
+    std::vector<Object<S, M>> items;
+};
+
+namespace detail {
+
+template <class X>
+struct is_slot : std::false_type {};
+template <class S, class M>
+struct is_slot<Object<S, M>> : std::true_type {};
+template <class S, class M>
+struct is_slot<ObjectArray<S, M>> : std::true_type {};
+
+} // namespace detail
+
+/// A scene slot: an Object or an ObjectArray.
+template <class X>
+concept Slot = detail::is_slot<X>::value;
+
+/// The objects of a slot, as a contiguous range.
+template <class S, class M>
+[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const Object<S, M>& object) noexcept
+{
+    return {&object, 1};
+}
+
+template <class S, class M>
+[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const ObjectArray<S, M>& array) noexcept
+{
+    return {array.items};
+}
+
+} // namespace prism
+
+// ---- prism/photon/photon_tracer.hpp ----
+// trace_photons: emit photons from the lights and follow them through a scene into a
+// global and a caustic photon map (Jensen 1996, section 2.1).
+//
+// Global map: photons emitted uniformly over the sphere from each point light, stored
+// at every diffuse hit (flagged direct on the first, caustic when only specular
+// bounces came before). Caustic map: photons aimed at the bounding spheres of specular
+// objects (POV-Ray's `target`), their power scaled by the aimed cone's share of the
+// sphere, stored only at the first diffuse hit after one or more specular bounces
+// (L S+ D). A diffuse hit continues by Russian roulette on the reflectance albedo kd
+// with a cosine-distributed direction; a dielectric reflects with probability F and
+// refracts otherwise (Beer-Lambert inside); a conductor reflects by roulette on its
+// reflectance. Shadow photons mark where the straight continuation of a direct
+// photon's path meets further diffuse surfaces (Jensen and Christensen 1995; errata 8).
+// Every photon draws from its own random stream, so the maps are the same bits for any
+// thread count.
+
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+#include <type_traits>
+#include <vector>
+
+namespace prism {
+
+struct PhotonTracerConfig {
+    std::size_t global_photons = 200000;  ///< emitted for the global map
+    std::size_t caustic_photons = 200000; ///< emitted toward specular objects for the caustic map
+    int max_bounces = 16;                 ///< bounces followed at most
+    bool shadow_photons = true;
+    std::uint64_t seed = 0;
+    unsigned threads = 0; ///< 0 = all hardware threads
+};
+
+struct PhotonMaps {
+    PhotonMap global;
+    PhotonMap caustic;
+};
+
+namespace detail {
+
+/// A cone of directions from a light toward a specular object's bounding sphere.
+template <Scalar T>
+struct CausticTarget {
+    Vec3<T> from{};
+    Vec3<T> axis{};
+    T cos_half_angle = T(-1); ///< -1: the light is inside the sphere, the cone is everything
+    Rgb<T> power{};           ///< the light's power through this cone: Phi * solid angle / 4 pi
+};
+
+/// A direction uniform within the cone about `axis` with the given cos(half angle).
+template <Scalar T>
+[[nodiscard]] inline Vec3<T> uniform_cone(const Vec3<T>& axis, T cos_half_angle, Pcg32& rng) noexcept
+{
+    const T cos_theta = T(1) - rng.uniform<T>() * (T(1) - cos_half_angle);
+    const T sin_theta = prism::sqrt(clamp(T(1) - cos_theta * cos_theta, T(0), T(1)));
+    const T phi = T(2) * pi<T> * rng.uniform<T>();
+    // Rotate (sin cos phi, sin sin phi, cos) from z onto the axis.
+    const T sign = std::copysign(T(1), axis.z);
+    const T a = T(-1) / (sign + axis.z);
+    const T b = axis.x * axis.y * a;
+    const Vec3<T> s{T(1) + sign * axis.x * axis.x * a, sign * b, -sign * axis.x};
+    const Vec3<T> t{b, sign + axis.y * axis.y * a, -axis.y};
+    return sin_theta * std::cos(phi) * s + sin_theta * std::sin(phi) * t + cos_theta * axis;
+}
+
+template <class SceneT>
+class PhotonTracer {
+public:
+    using T = typename SceneT::scalar_type;
+
+    PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config) : scene_(scene), config_(config)
+    {
+        scene.for_each_light([&](const auto& light) {
+            if constexpr (std::is_same_v<std::remove_cvref_t<decltype(light)>, PointLight<T>>) {
+                lights_.push_back(light);
+                total_power_ += max_component(light.power());
+            }
+        });
+        collect_targets();
+    }
+
+    /// Photons [first, last) of the global map, appended to `out`.
+    void trace_global(std::size_t first, std::size_t last, std::vector<Photon>& out) const
+    {
+        if (lights_.empty() || !(total_power_ > T(0))) return;
+        for (std::size_t i = first; i < last; ++i) {
+            Pcg32 rng(config_.seed, 2 * i);
+            // Choose a light by its share of the power; the photon carries Phi / (N p).
+            const PointLight<T>* light = &lights_.back();
+            T p = T(1), u = rng.uniform<T>() * total_power_;
+            for (const PointLight<T>& l : lights_) {
+                const T share = max_component(l.power());
+                if (u < share) {
+                    light = &l;
+                    p = share / total_power_;
+                    break;
+                }
+                u -= share;
+            }
+            const Rgb<T> power = light->power() / (T(config_.global_photons) * p);
+            follow({light->position, uniform_sphere<T>(rng)}, power, rng, false, out);
+        }
+    }
+
+    /// Photons [first, last) of the caustic map, appended to `out`.
+    void trace_caustic(std::size_t first, std::size_t last, std::vector<Photon>& out) const
+    {
+        if (targets_.empty()) return;
+        for (std::size_t i = first; i < last; ++i) {
+            Pcg32 rng(config_.seed, 2 * i + 1);
+            // Choose a cone by its share of the power aimed at specular objects.
+            const CausticTarget<T>* target = &targets_.back();
+            T p = T(1), u = rng.uniform<T>() * target_power_;
+            for (const CausticTarget<T>& c : targets_) {
+                const T share = max_component(c.power);
+                if (u < share) {
+                    target = &c;
+                    p = share / target_power_;
+                    break;
+                }
+                u -= share;
+            }
+            const Vec3<T> direction =
+                target->cos_half_angle <= T(-1) ? uniform_sphere<T>(rng) : uniform_cone(target->axis, target->cos_half_angle, rng);
+            follow({target->from, direction}, target->power / (T(config_.caustic_photons) * p), rng, true, out);
+        }
+    }
+
+private:
+    /// Follow one photon; in the caustic pass store only L S+ D and stop there.
+    void follow(Ray<T> ray, Rgb<T> power, Pcg32& rng, bool caustic_pass, std::vector<Photon>& out) const
+    {
+        bool direct = true, specular_only = true;
+        for (int bounce = 0; bounce <= config_.max_bounces; ++bounce) {
+            const auto hit = scene_.closest_hit(ray, {T(0), infinity<T>});
+            if (!hit) return;
+            const Crossing<T>& c = hit->crossing;
+            const Vec3<T> d = normalize(ray.direction);
+            const Vec3<T> n = c.entering ? c.normal : -c.normal; // facing the photon
+            const bool go_on = scene_.visit_material(*hit, [&]<class M>(const M& material) -> bool {
+                if constexpr (has_diffuse<M>) {
+                    if (caustic_pass) {
+                        if (!direct && specular_only) out.push_back(photon(c.point, power, d, Photon::caustic));
+                        return false;
+                    }
+                    std::uint8_t flags = direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
+                    if (!direct && specular_only) flags |= Photon::caustic;
+                    out.push_back(photon(c.point, power, d, flags));
+                    if (direct && config_.shadow_photons) store_shadow_photons(c, d, out);
+                    const Rgb<T> reflectance = component_min(material.albedo.albedo(c.point) * material.kd, Rgb<T>(T(1)));
+                    if (!russian_roulette(power, reflectance, rng)) return false;
+                    ray = spawn_ray(c.point, c.error, c.normal, cosine_hemisphere(n, rng));
+                    specular_only = false;
+                } else if constexpr (transmits<M>) {
+                    if (!c.entering) power *= beer_lambert(material.absorption, c.t * length(ray.direction));
+                    const T eta = c.entering ? material.ior : T(1) / material.ior;
+                    const T cos_i = clamp(-dot(d, n), T(0), T(1));
+                    const auto refracted = refract(d, n, eta);
+                    const T fresnel = refracted ? material.fresnel(cos_i, eta) : T(1);
+                    const bool reflect_it = rng.uniform<T>() < fresnel;
+                    if (!russian_roulette(power, Rgb<T>(reflect_it ? material.kr : material.kt), rng)) return false;
+                    ray = spawn_ray(c.point, c.error, c.normal, reflect_it ? reflect(d, n) : *refracted);
+                } else if constexpr (reflects<M>) {
+                    const T cos_i = clamp(-dot(d, n), T(0), T(1));
+                    if (!russian_roulette(power, material.reflectance(cos_i), rng)) return false;
+                    ray = spawn_ray(c.point, c.error, c.normal, reflect(d, n));
+                }
+                return true;
+            });
+            if (!go_on) return;
+            direct = false;
+        }
+    }
+
+    [[nodiscard]] static Photon photon(const Vec3<T>& at, const Rgb<T>& power, const Vec3<T>& travelling, std::uint8_t flags) noexcept
+    {
+        return {Vec3<float>(at), Rgb<float>(power), Vec3<float>(-travelling), flags};
+    }
+
+    /// Shadow photons along the straight line on from a direct photon's first hit.
+    void store_shadow_photons(const Crossing<T>& first, const Vec3<T>& d, std::vector<Photon>& out) const
+    {
+        Ray<T> through = spawn_ray(first.point, first.error, first.normal, d);
+        for (int surfaces = 0; surfaces < 8; ++surfaces) {
+            const auto hit = scene_.closest_hit(through, {T(0), infinity<T>});
+            if (!hit) return;
+            const Crossing<T>& c = hit->crossing;
+            const bool diffuse = scene_.visit_material(*hit, []<class M>(const M&) { return has_diffuse<M>; });
+            if (diffuse) out.push_back(photon(c.point, Rgb<T>(T(0)), d, Photon::shadow));
+            through = spawn_ray(c.point, c.error, c.normal, d);
+        }
+    }
+
+    /// A cone from every point light to every bounded specular object.
+    void collect_targets()
+    {
+        std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
+        for (const auto& t : targets_) target_power_ += max_component(t.power);
+    }
+
+    template <class Slot>
+    void add_targets(const Slot& slot)
+    {
+        using M = typename Slot::material_type;
+        if constexpr (reflects<M> || transmits<M>) {
+            for (const auto& object : objects_of(slot)) {
+                if (!object.bounded) continue;
+                const Aabb<T> b = object.shape.bounds();
+                const Vec3<T> centre = T(0.5) * (b.lo + b.hi);
+                const T radius = T(0.5) * length(b.hi - b.lo);
+                for (const PointLight<T>& light : lights_) {
+                    const Vec3<T> to = centre - light.position;
+                    const T distance = length(to);
+                    CausticTarget<T> target{light.position, to / distance, T(-1), light.power()};
+                    if (distance > radius) {
+                        const T sin_half = radius / distance;
+                        target.cos_half_angle = prism::sqrt(T(1) - sin_half * sin_half);
+                        target.power = light.power() * (T(0.5) * (T(1) - target.cos_half_angle)); // solid angle / 4 pi
+                    }
+                    targets_.push_back(target);
+                }
+            }
+        }
+    }
+
+    const SceneT& scene_;
+    PhotonTracerConfig config_;
+    std::vector<PointLight<T>> lights_;
+    T total_power_ = T(0);
+    std::vector<CausticTarget<T>> targets_;
+    T target_power_ = T(0);
+};
+
+/// Run `trace(first, last, out)` over [0, count) in fixed blocks on worker threads and
+/// concatenate the blocks in order: the result does not depend on the thread count.
+template <class Trace>
+std::vector<Photon> in_blocks(std::size_t count, unsigned threads, Trace&& trace)
+{
+    constexpr std::size_t block = 4096;
+    const std::size_t blocks = (count + block - 1) / block;
+    std::vector<std::vector<Photon>> parts(blocks);
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+        for (std::size_t b = next++; b < blocks; b = next++) trace(b * block, std::min(count, (b + 1) * block), parts[b]);
+    };
+    threads = threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+    threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(blocks, 1)));
+    std::vector<std::thread> workers;
+    for (unsigned i = 1; i < threads; ++i) workers.emplace_back(work);
+    work();
+    for (auto& worker : workers) worker.join();
+    std::vector<Photon> all;
+    for (auto& part : parts) all.insert(all.end(), part.begin(), part.end());
+    return all;
+}
+
+} // namespace detail
+
+/// Trace the global and caustic photon maps of a scene (point lights emit; other
+/// lights do not yet).
+template <class SceneT>
+[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config)
+{
+    const detail::PhotonTracer<SceneT> tracer(scene, config);
+    PhotonMaps maps;
+    maps.global = PhotonMap(detail::in_blocks(config.global_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
+        tracer.trace_global(a, b, out);
+    }));
+    maps.caustic = PhotonMap(detail::in_blocks(config.caustic_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
+        tracer.trace_caustic(a, b, out);
+    }));
+    return maps;
+}
+
+} // namespace prism
+
 // ---- prism/render/film.hpp ----
 // Film: a linear HDR RGB image of radiance values, never NaN or Inf.
 
@@ -2870,78 +3379,6 @@ struct Hit {
     std::uint32_t slot = 0;  ///< the scene slot (compile-time position) of the object
     std::uint32_t index = 0; ///< the object within its slot
 };
-
-} // namespace prism
-
-// ---- prism/scene/object.hpp ----
-// Object: a shape with a material; ObjectArray: many of one type in one scene slot.
-
-
-#include <span>
-#include <type_traits>
-#include <utility>
-#include <vector>
-
-namespace prism {
-
-/// One scene object. Construction validates the material (the shape validated itself).
-template <Shape S, Material M>
-    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
-struct Object {
-    using scalar_type = typename S::scalar_type;
-    using shape_type = S;
-    using material_type = M;
-
-    S shape;
-    M material;
-    bool bounded = false; ///< the shape has finite bounds (set at construction, for culling)
-
-    constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m))
-    {
-        material.validate();
-        const Aabb<scalar_type> b = shape.bounds();
-        bounded = is_finite(b.lo) && is_finite(b.hi);
-    }
-};
-
-/// Many objects of one shape and material type, chosen at run time, in one scene slot.
-template <Shape S, Material M>
-    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
-struct ObjectArray {
-    using scalar_type = typename S::scalar_type;
-    using shape_type = S;
-    using material_type = M;
-
-    std::vector<Object<S, M>> items;
-};
-
-namespace detail {
-
-template <class X>
-struct is_slot : std::false_type {};
-template <class S, class M>
-struct is_slot<Object<S, M>> : std::true_type {};
-template <class S, class M>
-struct is_slot<ObjectArray<S, M>> : std::true_type {};
-
-} // namespace detail
-
-/// A scene slot: an Object or an ObjectArray.
-template <class X>
-concept Slot = detail::is_slot<X>::value;
-
-/// The objects of a slot, as a contiguous range.
-template <class S, class M>
-[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const Object<S, M>& object) noexcept
-{
-    return {&object, 1};
-}
-
-template <class S, class M>
-[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const ObjectArray<S, M>& array) noexcept
-{
-    return {array.items};
-}
 
 } // namespace prism
 

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+#include <prism/photon/photon.hpp>
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+
+using prism::Rgb;
+using prism::Vec3;
+
+TEST_CASE("emission directions are uniform on the sphere (errata 4)")
+{
+    prism::Pcg32 rng(1u, 1u);
+    constexpr int n = 400000;
+    Vec3<double> mean(0.0);
+    std::array<int, 8> octants{};
+    for (int i = 0; i < n; ++i) {
+        const Vec3<double> d = prism::uniform_sphere<double>(rng);
+        REQUIRE(std::abs(prism::length(d) - 1) < 1e-12);
+        mean += d;
+        ++octants[static_cast<std::size_t>((d.x > 0) + 2 * (d.y > 0) + 4 * (d.z > 0))];
+    }
+    mean /= double(n);
+    // Each coordinate of a uniform direction has variance 1/3: the mean's standard error is sqrt(1/3n).
+    const double se = std::sqrt(1.0 / 3 / n);
+    CHECK(std::abs(mean.x) < 4 * se);
+    CHECK(std::abs(mean.y) < 4 * se);
+    CHECK(std::abs(mean.z) < 4 * se);
+    // Octant counts are binomial(n, 1/8): within 4 standard deviations of n/8.
+    const double sd = std::sqrt(n * (1.0 / 8) * (7.0 / 8));
+    for (int count : octants) CHECK(std::abs(count - n / 8.0) < 4 * sd);
+}
+
+TEST_CASE("diffuse bounces are cosine-distributed: E[cos] = 2/3, never below the surface")
+{
+    prism::Pcg32 rng(2u, 2u);
+    const Vec3<double> n = prism::normalize(Vec3<double>{0.3, -0.5, 0.8});
+    constexpr int count = 200000;
+    double sum = 0, sum2 = 0;
+    for (int i = 0; i < count; ++i) {
+        const Vec3<double> d = prism::cosine_hemisphere(n, rng);
+        const double c = prism::dot(d, n);
+        REQUIRE(c >= 0);
+        REQUIRE(std::abs(prism::length(d) - 1) < 1e-9);
+        sum += c;
+        sum2 += c * c;
+    }
+    // For p(w) = cos / pi: E[cos] = 2/3, E[cos^2] = 1/2, so the variance is 1/18.
+    CHECK(std::abs(sum / count - 2.0 / 3) < 4 * std::sqrt(1.0 / 18 / count));
+    CHECK(std::abs(sum2 / count - 0.5) < 0.005);
+}
+
+TEST_CASE("Russian roulette keeps the expected power, channel by channel (errata 7)")
+{
+    prism::Pcg32 rng(3u, 3u);
+    const Rgb<double> reflectance{0.8, 0.4, 0.1};
+    const Rgb<double> start{1.0, 2.0, 3.0};
+    constexpr int n = 400000;
+    Rgb<double> total(0.0);
+    int survived = 0;
+    for (int i = 0; i < n; ++i) {
+        Rgb<double> power = start;
+        if (prism::russian_roulette(power, reflectance, rng)) {
+            total += power;
+            ++survived;
+        }
+    }
+    // Survival with p = 0.8; a survivor carries power * reflectance / 0.8.
+    CHECK(std::abs(double(survived) / n - 0.8) < 4 * std::sqrt(0.8 * 0.2 / n));
+    const Rgb<double> mean = total / double(n);
+    for (int c = 0; c < 3; ++c) {
+        const double expected = start[c] * reflectance[c];
+        const double sd = start[c] * reflectance[c] / 0.8 * std::sqrt(0.8 * 0.2 / n); // Bernoulli times the survivor's power
+        CHECK(std::abs(mean[c] - expected) < 4 * sd);
+    }
+    // Nothing to reflect: always absorbed.
+    Rgb<double> dark{1.0, 1.0, 1.0};
+    CHECK_FALSE(prism::russian_roulette(dark, Rgb<double>(0.0), rng));
+}

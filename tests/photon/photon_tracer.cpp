@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+#include <prism/photon/photon_tracer.hpp>
+#include <prism/prism.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+
+using namespace prism;
+
+namespace {
+
+/// A point light of intensity I at height h over a black floor: only direct photons.
+auto light_over_floor(float intensity, float height)
+{
+    return Scene{Lights{PointLight<float>{.position = {0, height, 0}, .intensity = Rgb<float>(intensity)}},
+                 Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0)}, .kd = 1, .ka = 0}}};
+}
+
+} // namespace
+
+TEST_CASE("calibrated: the photon estimate of a point light's irradiance, E = I h / (h^2 + x^2)^(3/2), for any photon count")
+{
+    const float intensity = 10, height = 1;
+    const auto scene = light_over_floor(intensity, height);
+    const Vec3<float> up{0, 1, 0};
+    double previous_mean = 0;
+    for (std::size_t photons : {std::size_t(100000), std::size_t(400000)}) {
+        const PhotonMaps maps = trace_photons(scene, {.global_photons = photons, .caustic_photons = 0, .shadow_photons = false});
+        // Half the photons go down and land: N/2 stored, each with Phi / N = 4 pi I / N.
+        CHECK(std::abs(double(maps.global.size()) - double(photons) / 2.0) < 4 * std::sqrt(double(photons) / 4.0));
+        // A radius estimate at 12 points: each is a sum of about count photons, so its
+        // relative standard deviation is 1/sqrt(count); the 12-point mean of the ratio
+        // estimate/exact has a standard error of about 1/sqrt(12 count).
+        const float radius = 0.05f;
+        double ratio_sum = 0, expected_count_sum = 0;
+        for (int i = 0; i < 12; ++i) {
+            const float x = 0.1f * float(i);
+            const double exact = intensity * height / std::pow(double(height) * height + double(x) * x, 1.5);
+            const double estimate = maps.global.irradiance_within({x, 0, 0}, up, radius).x;
+            ratio_sum += estimate / exact;
+            expected_count_sum += exact * pi<double> * radius * radius / (4 * pi<double> * intensity / double(photons));
+        }
+        const double mean = ratio_sum / 12;
+        const double se = 1 / std::sqrt(expected_count_sum); // about 1/sqrt(12 * mean count)
+        INFO(photons << " photons: mean estimate / exact = " << mean << ", standard error " << se);
+        // The disk average of E is below its centre value by about (3/4) r^2 / h^2 near
+        // the peak: a bias of 0.2 %, far inside the bound.
+        CHECK(std::abs(mean - 1) < 4 * se + 0.003);
+        if (previous_mean != 0) CHECK(std::abs(mean - previous_mean) < 4 * se + 4 / std::sqrt(expected_count_sum / 4)); // same brightness
+        previous_mean = mean;
+    }
+}
+
+TEST_CASE("energy: in a closed diffuse room the stored power sums to Phi (1 + rho + rho^2 + ...)")
+{
+    // A light inside a box of albedo 0.5: every photon hits a wall, and survives each
+    // bounce with the reflectance. Expected stored power: Phi * sum_{k=0}^{16} rho^k.
+    const float rho = 0.5f, intensity = 1;
+    const Scene scene{Lights{PointLight<float>{.position = {0.1f, 0.2f, -0.1f}, .intensity = Rgb<float>(intensity)}},
+                      Object{Box<float>({-1, -1, -1}, {1, 1, 1}), Diffuse<float>{.albedo = {.color = Rgb<float>(rho)}, .kd = 1, .ka = 0}}};
+    const std::size_t photons = 100000;
+    const PhotonMaps maps = trace_photons(scene, {.global_photons = photons, .caustic_photons = 0, .max_bounces = 16, .shadow_photons = false});
+    double total = 0;
+    for (const Photon& p : maps.global.photons()) total += p.power.x;
+    const double phi = 4 * pi<double> * intensity;
+    const double expected = phi * (1 - std::pow(rho, 17)) / (1 - rho);
+    // Each photon's stored total is Phi/N times a geometric count of bounces (mean 2,
+    // variance rho / (1 - rho)^2 = 2): the sum's relative error is about sqrt(2 / N) / 2.
+    CHECK(std::abs(total / expected - 1) < 4 * std::sqrt(2.0 / double(photons)) / 2);
+    // Every stored photon came from inside, onto an inward-facing wall.
+    int outward = 0;
+    for (const Photon& p : maps.global.photons()) outward += prism::length(Vec3<float>(p.position)) < 0.99f;
+    CHECK(outward == 0);
+}
+
+TEST_CASE("a glass ball's caustic map: photons focused into a peak below it, symmetric about the axis")
+{
+    // Light straight above a glass ball of radius 1 at height 2.5 over a floor: the
+    // caustic lies on the floor under the ball's centre.
+    const Scene scene{Lights{PointLight<float>{.position = {0, 12, 0}, .intensity = Rgb<float>(100)}},
+                      Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
+                      Object{Sphere<float>({0, 2.5f, 0}, 1), Dielectric<float>{.ior = 1.5f}}};
+    const PhotonMaps maps = trace_photons(scene, {.global_photons = 0, .caustic_photons = 200000, .shadow_photons = false});
+    REQUIRE(maps.caustic.size() > 50000);
+    const Vec3<float> up{0, 1, 0};
+    const float centre = maps.caustic.irradiance_within({0, 0, 0}, up, 0.1f).x;
+    const float ring = maps.caustic.irradiance_within({0.9f, 0, 0}, up, 0.1f).x;
+    CHECK(centre > 5 * ring); // focused
+    // Symmetric: the four points at the same distance from the axis agree within noise.
+    const float e[4] = {maps.caustic.irradiance_within({0.3f, 0, 0}, up, 0.1f).x, maps.caustic.irradiance_within({-0.3f, 0, 0}, up, 0.1f).x,
+                        maps.caustic.irradiance_within({0, 0, 0.3f}, up, 0.1f).x, maps.caustic.irradiance_within({0, 0, -0.3f}, up, 0.1f).x};
+    const float mean = 0.25f * (e[0] + e[1] + e[2] + e[3]);
+    for (float v : e) CHECK(std::abs(v - mean) < 0.2f * mean);
+    for (const Photon& p : maps.caustic.photons()) CHECK((p.flags & Photon::caustic) != 0);
+}
+
+TEST_CASE("shadow photons lie behind an occluder; the maps are the same bits for any thread count")
+{
+    const Scene scene{Lights{PointLight<float>{.position = {0, 5, 0}, .intensity = Rgb<float>(10)}},
+                      Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
+                      Object{Box<float>({-1, 2, -1}, {1, 2.2f, 1}), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}}};
+    const PhotonMaps one = trace_photons(scene, {.global_photons = 50000, .caustic_photons = 0, .seed = 5, .threads = 1});
+    const PhotonMaps two = trace_photons(scene, {.global_photons = 50000, .caustic_photons = 0, .seed = 5, .threads = 2});
+    REQUIRE(one.global.size() == two.global.size());
+    CHECK(std::memcmp(one.global.photons().data(), two.global.photons().data(), one.global.size() * sizeof(Photon)) == 0);
+    // Under the slab: only shadow photons among the direct-or-shadow ones; in the open: only direct.
+    const auto [direct_under, shadow_under] = one.global.direct_and_shadow<50>({0, 0, 0});
+    const auto [direct_open, shadow_open] = one.global.direct_and_shadow<50>({3, 0, 0});
+    CHECK(direct_under == 0);
+    CHECK(shadow_under > 0);
+    CHECK(direct_open > 0);
+    CHECK(shadow_open == 0);
+}
