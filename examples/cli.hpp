@@ -20,6 +20,11 @@ struct Options {
     prism::RenderConfig render{};
     std::filesystem::path out = ".";
     std::filesystem::path povray{}; ///< POV-Ray's PNG of the same scene, to compare with
+    // Photon mapping (the photon examples only)
+    std::size_t photons = 200000;
+    std::size_t caustic_photons = 200000;
+    int gather = 0;
+    double radius = 0.1;
 };
 
 inline void print_help(const char* program, const char* description, const Options& defaults)
@@ -33,6 +38,11 @@ inline void print_help(const char* program, const char* description, const Optio
                 "  --seed N      random seed (default 0)\n"
                 "  --out DIR     folder for the images, created if missing (default .)\n"
                 "  --povray PNG  POV-Ray's picture of the same scene: also write prism | POV-Ray | difference\n"
+                "  photon mapping examples:\n"
+                "  --photons N          photons emitted for the global map (default 200000)\n"
+                "  --caustic-photons N  photons aimed at specular objects (default 200000)\n"
+                "  --gather N           final-gather rays per diffuse hit, 0 = read the global map (default 0)\n"
+                "  --radius R           radius of the caustic estimate (default 0.1)\n"
                 "  --help        this text\n",
                 program, description, program, defaults.render.width, defaults.render.height, defaults.render.spp);
 }
@@ -68,6 +78,15 @@ inline bool parse(int argc, char** argv, Options& options, const char* descripti
         else if (flag == "--seed") options.render.seed = parse_integer<std::uint64_t>(flag, value, 0, (1LL << 62));
         else if (flag == "--out") options.out = value;
         else if (flag == "--povray") options.povray = value;
+        else if (flag == "--photons") options.photons = parse_integer<std::size_t>(flag, value, 0, 100000000);
+        else if (flag == "--caustic-photons") options.caustic_photons = parse_integer<std::size_t>(flag, value, 0, 100000000);
+        else if (flag == "--gather") options.gather = parse_integer<int>(flag, value, 0, 4096);
+        else if (flag == "--radius") {
+            char* end = nullptr;
+            options.radius = std::strtod(value, &end);
+            if (end == value || *end != '\0' || !(options.radius > 0 && options.radius < 100))
+                throw std::invalid_argument("--radius expects a number in (0, 100), got '" + std::string(value) + "'");
+        }
         else throw std::invalid_argument("unknown option '" + std::string(flag) + "' (see --help)");
     }
     std::filesystem::create_directories(options.out);

@@ -20,8 +20,12 @@ prism::Camera<T> cornell_camera()
     return {.position = {T(2.78), T(2.73), T(8)}, .look_at = {T(2.78), T(2.73), T(0)}, .up = {T(0), T(1), T(0)}, .fov = T(40)};
 }
 
+/// The Cornell box. `physical_light` swaps POV-Ray's no-falloff light for an
+/// inverse-square one that gives the same irradiance at distance 4, about the middle of
+/// the room (intensity 16 pi): photons thin out as 1 / r^2, so a photon map can only be
+/// consistent with a physical light.
 template <prism::Scalar T, class Fresnel = prism::ExactFresnel>
-auto cornell_scene()
+auto cornell_scene(bool physical_light = false)
 {
     using namespace prism;
     using V = Vec3<T>;
@@ -37,7 +41,8 @@ auto cornell_scene()
         Wall{Box<T>(V{w, -t, 0}, V{w + t, w + t, -(w + t)}), diffuse(T(0.1), T(0.75), T(0.1))}, // right, green
     }};
     Scene scene{
-        Lights{PointLight<T>{.position = {T(2.78), T(5.35), T(-2.60)}, .intensity = Rgb<T>(pi<T>), .falloff = Falloff::none}},
+        Lights{physical_light ? PointLight<T>{.position = {T(2.78), T(5.35), T(-2.60)}, .intensity = Rgb<T>(pi<T> * T(4 * 4))}
+                              : PointLight<T>{.position = {T(2.78), T(5.35), T(-2.60)}, .intensity = Rgb<T>(pi<T>), .falloff = Falloff::none}},
         std::move(walls),
         Object{Sphere<T>({T(3.85), T(1.0), T(-2.0)}, T(1)), Dielectric<T, Fresnel>{.ior = T(1.5)}},
         Object{Sphere<T>({T(1.60), T(1.0), T(-3.6)}, T(1)), Mirror<T>{{.kr = Rgb<T>(T(0.95))}}},

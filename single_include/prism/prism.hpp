@@ -2074,188 +2074,6 @@ template <Scalar T>
 
 } // namespace prism
 
-// ---- prism/integrator/whitted.hpp ----
-// Whitted: recursive ray tracing as the lecture notes write it (Whitted 1980).
-//
-// At each hit:
-//   L = albedo (kd L_diffuse + ka L_ambient prod_lights (1 - V_light)) + kr L_reflect + kt L_transmit
-// with L_diffuse = sum_lights V E cos / pi (a Lambertian BRDF albedo / pi lit by shadow
-// rays; V is the shadow ray's transmittance, so a light seen through glass counts
-// partly), kr and kt weighted by Fresnel on dielectrics, Beer-Lambert absorption along
-// every segment travelled inside a dielectric, a depth limit and an adaptive cut-off
-// when a path's weight becomes negligible (Hall and Greenberg 1983). Every branch is
-// chosen by the material's compile-time traits, so a scene without dielectrics
-// contains no refraction code.
-
-
-#include <cmath>
-#include <optional>
-
-namespace prism {
-
-template <class SceneT>
-class Whitted {
-public:
-    using scalar_type = typename SceneT::scalar_type;
-    using T = scalar_type;
-
-    struct Config {
-        int max_depth = 10;          ///< reflection/refraction bounces followed at most
-        T min_weight = T(1e-3);      ///< stop a branch whose weight on the pixel is below this
-    };
-
-    /// Shadow rays stop this fraction short of a point light, so a light placed on a
-    /// surface is not shadowed by that surface (pbrt's ShadowEpsilon).
-    static constexpr T shadow_epsilon = T(1e-4);
-
-    explicit Whitted(const SceneT& scene, Config config = {}) : scene_(&scene), config_(config)
-    {
-        scene.validate();
-        if (config.max_depth < 0) detail::throw_invalid("Whitted max_depth must be >= 0, got ", config.max_depth);
-        detail::require_non_negative("Whitted min_weight", config.min_weight);
-    }
-
-    /// The integrator keeps a reference to its scene: a temporary scene would dangle.
-    Whitted(const SceneT&& scene, Config config = {}) = delete;
-
-    /// Radiance arriving along the ray (its direction must be unit length).
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1))); }
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1))); }
-
-    [[nodiscard]] const Config& config() const noexcept { return config_; }
-
-private:
-    // Whitted Private Methods
-
-    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight) const noexcept
-    {
-        const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
-        if (!hit) return scene_->background;
-        return scene_->visit_material(*hit, [&](const auto& material) {
-            return shade(material, ray, hit->crossing, depth, weight);
-        });
-    }
-
-    template <class M>
-    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Crossing<T>& hit, int depth,
-                               const Rgb<T>& weight) const noexcept
-    {
-        const Vec3<T>& d = ray.direction;
-        // The normal on the side the ray arrives from.
-        const Vec3<T> n = hit.entering ? hit.normal : -hit.normal;
-        Rgb<T> radiance{T(0)};
-
-        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, n, d);
-
-        if constexpr (reflects<M> || transmits<M>) {
-            if (depth < config_.max_depth) {
-                const T cos_i = clamp(-dot(d, n), T(0), T(1));
-                Rgb<T> kr;
-                [[maybe_unused]] Rgb<T> kt{T(0)};
-                [[maybe_unused]] std::optional<Vec3<T>> refracted;
-                if constexpr (transmits<M>) {
-                    // Split by Fresnel; all light reflects under total internal reflection.
-                    const T eta = hit.entering ? material.ior : T(1) / material.ior;
-                    refracted = refract(d, n, eta);
-                    const T fresnel = refracted ? material.fresnel(cos_i, eta) : T(1);
-                    kr = Rgb<T>(material.kr * fresnel);
-                    kt = Rgb<T>(material.kt * (T(1) - fresnel));
-                } else {
-                    kr = material.reflectance(cos_i);
-                }
-                const Rgb<T> reflect_weight = weight * kr;
-                if (max_component(reflect_weight) > config_.min_weight) {
-                    const Ray<T> reflected = spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n));
-                    radiance += kr * trace(reflected, depth + 1, reflect_weight);
-                }
-                if constexpr (transmits<M>) {
-                    const Rgb<T> transmit_weight = weight * kt;
-                    if (refracted && max_component(transmit_weight) > config_.min_weight) {
-                        const Ray<T> transmitted = spawn_ray(hit.point, hit.error, hit.normal, *refracted);
-                        radiance += kt * trace(transmitted, depth + 1, transmit_weight);
-                    }
-                }
-            }
-        }
-
-        // A ray leaving a dielectric travelled inside it from its origin to here.
-        if constexpr (transmits<M>) {
-            if (!hit.entering) radiance *= beer_lambert(material.absorption, hit.t * length(d));
-        }
-        return radiance;
-    }
-
-    template <class M>
-    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& n, const Vec3<T>& d) const noexcept
-    {
-        Rgb<T> irradiance{T(0)}; // sum of V E cos over the lights
-        Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights
-        Rgb<T> highlight{T(0)};  // POV-Ray's Phong term, when asked for
-        const Vec3<T> mirror = reflect(d, n);
-        scene_->for_each_light([&](const auto& light) {
-            const LightSample<T> s = light.sample(hit.point);
-            const T cos = dot(n, s.wi);
-            if (!(cos > T(0))) return; // the light is behind the surface: V = 0
-            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
-            const Rgb<T> v = scene_->transmittance(shadow, s.distance * (T(1) - shadow_epsilon));
-            irradiance += v * s.irradiance * cos;
-            unlit *= Rgb<T>(T(1)) - v;
-            if (material.phong > T(0)) {
-                const T alignment = dot(mirror, s.wi);
-                if (alignment > T(0)) highlight += (material.phong * power(alignment, material.phong_size) / pi<T>)*v * s.irradiance;
-            }
-        });
-        const Rgb<T> albedo = material.albedo.albedo(hit.point);
-        return albedo * ((material.kd / pi<T>)*irradiance + material.ka * scene_->ambient * unlit) + highlight;
-    }
-
-    /// x^n: by squaring when n is a whole number up to 1024 (a Phong exponent usually
-    /// is; std::pow is a slow library call), by std::pow otherwise.
-    [[nodiscard]] static T power(T x, T n) noexcept
-    {
-        if (!(n >= T(0) && n <= T(1024) && n == std::floor(n))) return std::pow(x, n);
-        T result = T(1);
-        for (auto e = static_cast<unsigned>(n); e != 0; e >>= 1u, x *= x)
-            if (e & 1u) result *= x;
-        return result;
-    }
-
-    const SceneT* scene_;
-    Config config_;
-};
-
-} // namespace prism
-
-// ---- prism/light/directional_light.hpp ----
-// DirectionalLight: parallel light from infinitely far away (the sun).
-
-
-namespace prism {
-
-/// Parallel light travelling along `direction`, with irradiance E on a surface facing it.
-template <Scalar T = float>
-struct DirectionalLight {
-    using scalar_type = T;
-
-    Vec3<T> direction{T(0), T(-1), T(0)};
-    Rgb<T> irradiance{T(1)};
-
-    [[nodiscard]] LightSample<T> sample(const Vec3<T>&) const noexcept
-    {
-        return {-normalize(direction), infinity<T>, irradiance};
-    }
-
-    constexpr void validate() const
-    {
-        detail::require_nonzero("DirectionalLight direction", direction);
-        detail::require_non_negative("DirectionalLight irradiance", irradiance);
-    }
-};
-
-static_assert(Light<DirectionalLight<float>>);
-
-} // namespace prism
-
 // ---- prism/light/point_light.hpp ----
 // PointLight: an isotropic point source.
 
@@ -2296,322 +2114,6 @@ struct PointLight {
 };
 
 static_assert(Light<PointLight<float>>);
-
-} // namespace prism
-
-// ---- prism/optics/fresnel.hpp ----
-// Fresnel reflectance: exact dielectric, Schlick's approximation, complex conductor.
-//
-// cos_i is the cosine of the incident angle (>= 0, measured on the incident side) and
-// eta = n_t / n_i. Formulas from Born & Wolf, "Principles of Optics", section 1.5, in
-// the form of the seed errata 1:
-//   R_s = ((n_i cos_i - n_t cos_t) / (n_i cos_i + n_t cos_t))^2
-//   R_p = ((n_i cos_t - n_t cos_i) / (n_i cos_t + n_t cos_i))^2
-
-
-#include <complex>
-
-namespace prism {
-
-/// Reflectance for s- (perpendicular) and p- (parallel) polarised light.
-template <Scalar T>
-struct PolarisedReflectance {
-    T s;
-    T p;
-};
-
-/// Exact dielectric reflectance by polarisation; both are 1 under total internal reflection.
-template <Scalar T>
-[[nodiscard]] constexpr PolarisedReflectance<T> fresnel_dielectric_polarised(T cos_i, T eta) noexcept
-{
-    cos_i = clamp(cos_i, T(0), T(1));
-    // Compute cos_t with Snell's law
-    const T sin2_t = (T(1) - cos_i * cos_i) / (eta * eta);
-    // Handle total internal reflection
-    if (sin2_t >= T(1)) return {T(1), T(1)};
-    const T cos_t = prism::sqrt(T(1) - sin2_t);
-    // Divided through by n_i, so n_i -> 1 and n_t -> eta.
-    const T r_s = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    const T r_p = (cos_t - eta * cos_i) / (cos_t + eta * cos_i);
-    return {r_s * r_s, r_p * r_p};
-}
-
-/// Exact dielectric reflectance for unpolarised light, (R_s + R_p) / 2; 1 under total
-/// internal reflection. Transmittance is 1 minus it.
-template <Scalar T>
-[[nodiscard]] constexpr T fresnel_dielectric(T cos_i, T eta) noexcept
-{
-    const PolarisedReflectance<T> r = fresnel_dielectric_polarised(cos_i, eta);
-    return T(0.5) * (r.s + r.p);
-}
-
-/// Schlick's approximation (Schlick 1994, "An Inexpensive BRDF Model for Physically-based
-/// Rendering"): R0 + (1 - R0)(1 - cos)^5 with R0 = ((eta - 1)/(eta + 1))^2. The cosine
-/// must be the one on the optically less dense side: going from dense to less dense
-/// (eta < 1) that is cos_t, and the answer is 1 under total internal reflection (seed
-/// errata 3; with cos_i there the error reaches 0.9 near the critical angle).
-template <Scalar T>
-[[nodiscard]] constexpr T fresnel_schlick(T cos_i, T eta) noexcept
-{
-    cos_i = clamp(cos_i, T(0), T(1));
-    T cos = cos_i;
-    if (eta < T(1)) {
-        const T sin2_t = (T(1) - cos_i * cos_i) / (eta * eta);
-        if (sin2_t >= T(1)) return T(1);
-        cos = prism::sqrt(T(1) - sin2_t);
-    }
-    const T r0 = ((eta - T(1)) / (eta + T(1))) * ((eta - T(1)) / (eta + T(1)));
-    const T m = T(1) - cos;
-    const T m2 = m * m;
-    return r0 + (T(1) - r0) * m2 * m2 * m;
-}
-
-/// Reflectance of a conductor with complex index eta = n + i k relative to the outside
-/// medium, unpolarised (pbrt-v4 FrComplex; Born & Wolf 14.2). Metals brighten toward
-/// grazing incidence, unlike a constant kr (seed errata 5).
-template <Scalar T>
-[[nodiscard]] inline T fresnel_conductor(T cos_i, std::complex<T> eta) noexcept
-{
-    using C = std::complex<T>;
-    cos_i = clamp(cos_i, T(0), T(1));
-    const T sin2_i = T(1) - cos_i * cos_i;
-    const C sin2_t = C(sin2_i) / (eta * eta);
-    const C cos_t = std::sqrt(C(1) - sin2_t);
-    const C r_s = (C(cos_i) - eta * cos_t) / (C(cos_i) + eta * cos_t);
-    const C r_p = (eta * C(cos_i) - cos_t) / (eta * C(cos_i) + cos_t);
-    return T(0.5) * (std::norm(r_s) + std::norm(r_p));
-}
-
-// Fresnel policies for Dielectric<T, Policy>
-
-/// The exact dielectric Fresnel equations.
-struct ExactFresnel {
-    template <Scalar T>
-    [[nodiscard]] static constexpr T reflectance(T cos_i, T eta) noexcept
-    {
-        return fresnel_dielectric(cos_i, eta);
-    }
-};
-
-/// Schlick's approximation, evaluated on the less dense side.
-struct SchlickFresnel {
-    template <Scalar T>
-    [[nodiscard]] static constexpr T reflectance(T cos_i, T eta) noexcept
-    {
-        return fresnel_schlick(cos_i, eta);
-    }
-};
-
-/// A Fresnel policy: reflectance(cos_i, eta) in [0, 1].
-template <class P, class T>
-concept FresnelPolicy = Scalar<T> && requires(T cos_i, T eta) {
-    { P::reflectance(cos_i, eta) } -> std::same_as<T>;
-};
-
-static_assert(FresnelPolicy<ExactFresnel, float> && FresnelPolicy<SchlickFresnel, double>);
-
-} // namespace prism
-
-// ---- prism/material/conductor.hpp ----
-// Conductor: a metal mirror, with a constant kr or the complex-index Fresnel equations.
-
-
-#include <complex>
-
-namespace prism {
-
-/// Reflectance independent of angle (the lecture notes' approximation for metals).
-template <Scalar T = float>
-struct ConstantKr {
-    Rgb<T> kr{T(1)};
-
-    [[nodiscard]] constexpr Rgb<T> reflectance(T) const noexcept { return kr; }
-    constexpr void validate() const { detail::require_non_negative("ConstantKr kr", kr); }
-};
-
-/// The Fresnel equations for a complex index n + i k per channel (seed errata 5).
-template <Scalar T = float>
-struct ComplexIor {
-    Rgb<T> eta{T(1)}; ///< real part n
-    Rgb<T> k{T(0)};   ///< extinction coefficient
-
-    [[nodiscard]] Rgb<T> reflectance(T cos_i) const noexcept
-    {
-        return {fresnel_conductor(cos_i, std::complex<T>(eta.x, k.x)),
-                fresnel_conductor(cos_i, std::complex<T>(eta.y, k.y)),
-                fresnel_conductor(cos_i, std::complex<T>(eta.z, k.z))};
-    }
-
-    constexpr void validate() const
-    {
-        detail::require_finite("ComplexIor eta", eta);
-        if (!(eta.x > T(0) && eta.y > T(0) && eta.z > T(0)))
-            detail::throw_invalid("ComplexIor eta must be > 0 in every channel, got ", detail::describe(eta));
-        detail::require_non_negative("ComplexIor k", k);
-    }
-};
-
-/// A perfect specular conductor: mirror reflection weighted by Fresnel(cos_i), no diffuse.
-template <Scalar T = float, class Fresnel = ConstantKr<T>>
-struct Conductor {
-    using scalar_type = T;
-    static constexpr bool has_diffuse = false;
-    static constexpr bool reflects = true;
-    static constexpr bool transmits = false;
-
-    Fresnel fresnel{};
-
-    [[nodiscard]] Rgb<T> reflectance(T cos_i) const noexcept { return fresnel.reflectance(cos_i); }
-    constexpr void validate() const { fresnel.validate(); }
-};
-
-/// A mirror with constant reflectance kr.
-template <Scalar T = float>
-using Mirror = Conductor<T, ConstantKr<T>>;
-
-/// A metal with a measured complex index.
-template <Scalar T = float>
-using Metal = Conductor<T, ComplexIor<T>>;
-
-static_assert(Material<Mirror<float>> && Material<Metal<double>>);
-
-} // namespace prism
-
-// ---- prism/material/dielectric.hpp ----
-// Dielectric: glass or water; Fresnel-weighted reflection and Snell refraction,
-// Beer-Lambert absorption inside.
-
-
-namespace prism {
-
-/// A clear or tinted dielectric. The Fresnel policy (ExactFresnel or SchlickFresnel)
-/// splits light between reflection and refraction; kr and kt are the seed's scale
-/// factors on top; absorption is Beer-Lambert's coefficient per unit length, per channel.
-/// The outside medium has index 1.
-template <Scalar T = float, class Fresnel = ExactFresnel>
-    requires FresnelPolicy<Fresnel, T>
-struct Dielectric {
-    using scalar_type = T;
-    using fresnel_policy = Fresnel;
-    static constexpr bool has_diffuse = false;
-    static constexpr bool reflects = true;
-    static constexpr bool transmits = true;
-
-    T ior = T(1.5);
-    Rgb<T> absorption{T(0)};
-    T kr = T(1);
-    T kt = T(1);
-
-    /// Fresnel reflectance for incident cosine cos_i and eta = n_t / n_i.
-    [[nodiscard]] constexpr T fresnel(T cos_i, T eta) const noexcept { return Fresnel::reflectance(cos_i, eta); }
-
-    constexpr void validate() const
-    {
-        detail::require_positive("Dielectric ior", ior);
-        detail::require_non_negative("Dielectric absorption", absorption);
-        detail::require_non_negative("Dielectric kr", kr);
-        detail::require_non_negative("Dielectric kt", kt);
-    }
-};
-
-static_assert(Material<Dielectric<float>> && Material<Dielectric<double, SchlickFresnel>>);
-
-} // namespace prism
-
-// ---- prism/material/texture.hpp ----
-// Textures: an albedo that may vary with the surface point.
-
-
-#include <cmath>
-
-namespace prism {
-
-/// A texture maps a surface point to an albedo in [0, 1] per channel.
-template <class X>
-concept Texture = requires(const X& texture, const Vec3<typename X::scalar_type>& p) {
-    { texture.albedo(p) } -> std::same_as<Rgb<typename X::scalar_type>>;
-    texture.validate();
-};
-
-/// One colour everywhere.
-template <Scalar T = float>
-struct Solid {
-    using scalar_type = T;
-    Rgb<T> color{T(0.75)};
-
-    [[nodiscard]] constexpr Rgb<T> albedo(const Vec3<T>&) const noexcept { return color; }
-    constexpr void validate() const { detail::require_non_negative("Solid color", color); }
-};
-
-/// A 3D checkerboard of cubes of side `size` (POV-Ray's `checker`): `even` where
-/// floor(x/size) + floor(y/size) + floor(z/size) is even.
-template <Scalar T = float>
-struct Checker {
-    using scalar_type = T;
-    Rgb<T> even{T(0.8)};
-    Rgb<T> odd{T(0.35)};
-    T size = T(1);
-
-    [[nodiscard]] Rgb<T> albedo(const Vec3<T>& p) const noexcept
-    {
-        // Cells are half-open, so a point on a cell face belongs to exactly one cell. A
-        // floor at y = 0 stays in one layer because Plane refines its hit points onto
-        // the plane exactly when the plane is axis-aligned. Parity is taken in floating
-        // point, so far-away points cannot overflow an integer conversion.
-        const T inv = T(1) / size;
-        const T sum = std::floor(p.x * inv) + std::floor(p.y * inv) + std::floor(p.z * inv);
-        return std::floor(sum * T(0.5)) * T(2) == sum ? even : odd;
-    }
-
-    constexpr void validate() const
-    {
-        detail::require_non_negative("Checker even", even);
-        detail::require_non_negative("Checker odd", odd);
-        detail::require_positive("Checker size", size);
-    }
-};
-
-static_assert(Texture<Solid<float>> && Texture<Checker<double>>);
-
-} // namespace prism
-
-// ---- prism/material/diffuse.hpp ----
-// Diffuse: a Lambertian surface with the seed's kd (diffuse) and ka (ambient) factors.
-
-
-namespace prism {
-
-/// Lambertian reflection, BRDF = albedo / pi, scaled by kd for light from the lights and
-/// by ka for the scene's ambient term (seen only where every light is occluded).
-///
-/// `phong` adds POV-Ray's Phong highlight, phong (R . L)^phong_size E / pi per light,
-/// with R the mirror direction of the viewing ray (Phong 1975, as POV-Ray's `phong`
-/// finish computes it, so that scenes written for POV-Ray look the same). It is a
-/// non-physical highlight and off by default.
-template <Scalar T = float, Texture Albedo = Solid<T>>
-struct Diffuse {
-    using scalar_type = T;
-    static constexpr bool has_diffuse = true;
-    static constexpr bool reflects = false;
-    static constexpr bool transmits = false;
-
-    Albedo albedo{};
-    T kd = T(1);
-    T ka = T(1);
-    T phong = T(0);
-    T phong_size = T(40);
-
-    constexpr void validate() const
-    {
-        albedo.validate();
-        detail::require_non_negative("Diffuse kd", kd);
-        detail::require_non_negative("Diffuse ka", ka);
-        detail::require_non_negative("Diffuse phong", phong);
-        detail::require_positive("Diffuse phong_size", phong_size);
-    }
-};
-
-static_assert(Material<Diffuse<float>>);
 
 } // namespace prism
 
@@ -2691,6 +2193,7 @@ template <Scalar T>
 // PhotonMap: photons in a KdTree, and the density estimate of the irradiance they carry.
 
 
+#include <algorithm>
 #include <optional>
 #include <span>
 #include <vector>
@@ -2739,16 +2242,46 @@ public:
         return r2 > 0.0f ? sum / (pi<float> * r2) : Rgb<float>(0.0f);
     }
 
-    /// The same within a fixed radius: E = sum of the powers within r over pi r^2.
-    [[nodiscard]] Rgb<float> irradiance_within(const Vec3<float>& p, const Vec3<float>& n, float radius) const noexcept
+    /// The same within a fixed radius: E = sum of the powers within r over pi r^2,
+    /// leaving out photons with any of the `excluded` flags.
+    [[nodiscard]] Rgb<float> irradiance_within(const Vec3<float>& p, const Vec3<float>& n, float radius,
+                                               std::uint8_t excluded = 0) const noexcept
     {
         Rgb<float> sum(0.0f);
         if (!tree_ || !(radius > 0.0f)) return sum;
         tree_->within({p.x, p.y, p.z}, radius, [&](std::uint32_t index, float) {
             const Photon& photon = photons_[index];
-            if (dot(photon.from, n) > 0.0f) sum += photon.power;
+            if ((photon.flags & excluded) == 0 && dot(photon.from, n) > 0.0f) sum += photon.power;
         });
         return sum / (pi<float> * radius * radius);
+    }
+
+    /// Precompute irradiance at every `stride`-th photon from its K nearest (Christensen
+    /// 1999, "Faster Photon Map Global Illumination"), so that a final-gather ray needs
+    /// one nearest-neighbour lookup instead of a density estimate.
+    template <std::size_t K>
+    void precompute_irradiance(std::size_t stride)
+    {
+        std::vector<Photon> samples;
+        irradiance_.clear();
+        for (std::size_t i = 0; i < photons_.size(); i += std::max<std::size_t>(stride, 1)) {
+            const Photon& photon = photons_[i];
+            if (photon.flags & Photon::shadow) continue;
+            samples.push_back(photon);
+            irradiance_.push_back(irradiance<K>(photon.position, photon.from));
+        }
+        samples_ = std::move(samples);
+        sample_tree_.emplace(PhotonPositions{samples_});
+    }
+
+    /// The precomputed irradiance nearest p among samples that arrived from n's side
+    /// (zero when there are none near).
+    [[nodiscard]] Rgb<float> precomputed_irradiance(const Vec3<float>& p, const Vec3<float>& n) const noexcept
+    {
+        if (!sample_tree_ || samples_.empty()) return Rgb<float>(0.0f);
+        for (const Neighbour<float>& neighbour : sample_tree_->nearest<4>({p.x, p.y, p.z}))
+            if (dot(samples_[neighbour.index].from, n) > 0.0f) return irradiance_[neighbour.index];
+        return Rgb<float>(0.0f);
     }
 
     /// How many of the K nearest photons are direct, and how many are shadow photons
@@ -2769,6 +2302,9 @@ public:
 private:
     std::vector<Photon> photons_;
     std::optional<Tree> tree_;
+    std::vector<Photon> samples_;         ///< photons at which irradiance was precomputed
+    std::vector<Rgb<float>> irradiance_;  ///< their irradiance
+    std::optional<Tree> sample_tree_;
 };
 
 } // namespace prism
@@ -3121,6 +2657,655 @@ template <class SceneT>
     }));
     return maps;
 }
+
+} // namespace prism
+
+// ---- prism/integrator/photon_mapper.hpp ----
+// PhotonMapper: Whitted's direct and specular light, plus caustics and indirect diffuse
+// light from photon maps (Jensen 1996, section 3).
+//
+// At a diffuse point, with the same convention as Whitted (BRDF albedo kd / pi):
+//   direct     shadow rays to the lights (exactly Whitted's term, without ambient)
+//   caustics   the caustic map's irradiance within `caustic_radius`
+//   indirect   final gathering: `gather_rays` cosine-distributed rays, each reading the
+//              global map's irradiance where it lands (L = albedo / pi * E there), so the
+//              blotchy global estimate is seen only after one more bounce. The global
+//              irradiance is precomputed at every 4th photon from its `global_k` nearest
+//              (Christensen 1999), so each gather ray costs one nearest lookup; with
+//              gather_rays = 0 the global map is read directly at the point instead,
+//              counting only photons that are neither direct nor caustic (those two are
+//              computed above), cheaper and blotchier.
+// Mirrors and dielectrics recurse as in Whitted.
+
+
+#include <optional>
+
+namespace prism {
+
+template <class SceneT>
+class PhotonMapper {
+public:
+    using scalar_type = typename SceneT::scalar_type;
+    using T = scalar_type;
+
+    struct Config {
+        PhotonTracerConfig photons{};
+        T caustic_radius = T(0.1); ///< radius of the caustic estimate
+        T global_radius = T(0.25); ///< radius of the global estimate read directly (gather_rays = 0)
+        int gather_rays = 32;      ///< final-gather rays per diffuse hit; 0 reads the global map directly
+        int max_depth = 10;
+        T min_weight = T(1e-3);
+    };
+
+    static constexpr T shadow_epsilon = T(1e-4);
+
+    /// Traces the photon maps (the expensive part), then renders with them.
+    PhotonMapper(const SceneT& scene, Config config) : scene_(&scene), config_(config)
+    {
+        scene.validate();
+        detail::require_positive("PhotonMapper caustic_radius", config.caustic_radius);
+        detail::require_positive("PhotonMapper global_radius", config.global_radius);
+        if (config.gather_rays < 0) detail::throw_invalid("PhotonMapper gather_rays must be >= 0, got ", config.gather_rays);
+        maps_ = trace_photons(scene, config.photons);
+        if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4);
+    }
+    PhotonMapper(const SceneT&& scene, Config config) = delete;
+
+    [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
+
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng); }
+
+private:
+    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng) const noexcept
+    {
+        const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
+        if (!hit) return scene_->background;
+        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, ray, hit->crossing, depth, weight, rng); });
+    }
+
+    template <class M>
+    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Crossing<T>& hit, int depth, const Rgb<T>& weight,
+                               Pcg32& rng) const noexcept
+    {
+        const Vec3<T>& d = ray.direction;
+        const Vec3<T> n = hit.entering ? hit.normal : -hit.normal;
+        Rgb<T> radiance{T(0)};
+        if constexpr (has_diffuse<M>) {
+            const Rgb<T> brdf = material.albedo.albedo(hit.point) * (material.kd / pi<T>);
+            const Vec3<float> p(hit.point), nf(n);
+            Rgb<T> irradiance = direct(hit, n) + Rgb<T>(maps_.caustic.irradiance_within(p, nf, float(config_.caustic_radius)));
+            if (config_.gather_rays > 0) irradiance += gather(hit, n, rng);
+            else irradiance += Rgb<T>(maps_.global.irradiance_within(p, nf, float(config_.global_radius), Photon::direct | Photon::caustic));
+            radiance += brdf * irradiance;
+        }
+        if constexpr (reflects<M> || transmits<M>) {
+            if (depth < config_.max_depth) {
+                const T cos_i = clamp(-dot(d, n), T(0), T(1));
+                Rgb<T> kr;
+                [[maybe_unused]] Rgb<T> kt{T(0)};
+                [[maybe_unused]] std::optional<Vec3<T>> refracted;
+                if constexpr (transmits<M>) {
+                    const T eta = hit.entering ? material.ior : T(1) / material.ior;
+                    refracted = refract(d, n, eta);
+                    const T fresnel = refracted ? material.fresnel(cos_i, eta) : T(1);
+                    kr = Rgb<T>(material.kr * fresnel);
+                    kt = Rgb<T>(material.kt * (T(1) - fresnel));
+                } else {
+                    kr = material.reflectance(cos_i);
+                }
+                if (max_component(weight * kr) > config_.min_weight)
+                    radiance += kr * trace(spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n)), depth + 1, weight * kr, rng);
+                if constexpr (transmits<M>) {
+                    if (refracted && max_component(weight * kt) > config_.min_weight)
+                        radiance += kt * trace(spawn_ray(hit.point, hit.error, hit.normal, *refracted), depth + 1, weight * kt, rng);
+                }
+            }
+        }
+        if constexpr (transmits<M>) {
+            if (!hit.entering) radiance *= beer_lambert(material.absorption, hit.t * length(d));
+        }
+        return radiance;
+    }
+
+    /// Irradiance from the lights by shadow rays.
+    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, const Vec3<T>& n) const noexcept
+    {
+        Rgb<T> irradiance{T(0)};
+        scene_->for_each_light([&](const auto& light) {
+            const LightSample<T> s = light.sample(hit.point);
+            const T cos = dot(n, s.wi);
+            if (!(cos > T(0))) return;
+            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
+            irradiance += scene_->transmittance(shadow, s.distance * (T(1) - shadow_epsilon)) * s.irradiance * cos;
+        });
+        return irradiance;
+    }
+
+    /// Final gathering: E = pi / M sum L_i for cosine-distributed directions, with
+    /// L_i = albedo / pi * E_global where the ray lands on a diffuse surface.
+    [[nodiscard]] Rgb<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Pcg32& rng) const noexcept
+    {
+        Rgb<T> sum{T(0)};
+        for (int i = 0; i < config_.gather_rays; ++i) {
+            const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, cosine_hemisphere(n, rng));
+            const auto next = scene_->closest_hit(ray, {T(0), infinity<T>});
+            if (!next) continue;
+            const Crossing<T>& c = next->crossing;
+            sum += scene_->visit_material(*next, [&]<class M>(const M& material) -> Rgb<T> {
+                if constexpr (has_diffuse<M>) {
+                    const Vec3<T> facing = c.entering ? c.normal : -c.normal;
+                    const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(facing)));
+                    return material.albedo.albedo(c.point) * (material.kd / pi<T>) * e;
+                } else {
+                    return Rgb<T>(T(0)); // light seen through mirrors and glass arrives by the caustic map
+                }
+            });
+        }
+        return sum * (pi<T> / T(config_.gather_rays));
+    }
+
+    const SceneT* scene_;
+    Config config_;
+    PhotonMaps maps_;
+};
+
+} // namespace prism
+
+// ---- prism/integrator/whitted.hpp ----
+// Whitted: recursive ray tracing as the lecture notes write it (Whitted 1980).
+//
+// At each hit:
+//   L = albedo (kd L_diffuse + ka L_ambient prod_lights (1 - V_light)) + kr L_reflect + kt L_transmit
+// with L_diffuse = sum_lights V E cos / pi (a Lambertian BRDF albedo / pi lit by shadow
+// rays; V is the shadow ray's transmittance, so a light seen through glass counts
+// partly), kr and kt weighted by Fresnel on dielectrics, Beer-Lambert absorption along
+// every segment travelled inside a dielectric, a depth limit and an adaptive cut-off
+// when a path's weight becomes negligible (Hall and Greenberg 1983). Every branch is
+// chosen by the material's compile-time traits, so a scene without dielectrics
+// contains no refraction code.
+
+
+#include <cmath>
+#include <optional>
+
+namespace prism {
+
+template <class SceneT>
+class Whitted {
+public:
+    using scalar_type = typename SceneT::scalar_type;
+    using T = scalar_type;
+
+    struct Config {
+        int max_depth = 10;          ///< reflection/refraction bounces followed at most
+        T min_weight = T(1e-3);      ///< stop a branch whose weight on the pixel is below this
+    };
+
+    /// Shadow rays stop this fraction short of a point light, so a light placed on a
+    /// surface is not shadowed by that surface (pbrt's ShadowEpsilon).
+    static constexpr T shadow_epsilon = T(1e-4);
+
+    explicit Whitted(const SceneT& scene, Config config = {}) : scene_(&scene), config_(config)
+    {
+        scene.validate();
+        if (config.max_depth < 0) detail::throw_invalid("Whitted max_depth must be >= 0, got ", config.max_depth);
+        detail::require_non_negative("Whitted min_weight", config.min_weight);
+    }
+
+    /// The integrator keeps a reference to its scene: a temporary scene would dangle.
+    Whitted(const SceneT&& scene, Config config = {}) = delete;
+
+    /// Radiance arriving along the ray (its direction must be unit length).
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1))); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1))); }
+
+    [[nodiscard]] const Config& config() const noexcept { return config_; }
+
+private:
+    // Whitted Private Methods
+
+    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight) const noexcept
+    {
+        const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
+        if (!hit) return scene_->background;
+        return scene_->visit_material(*hit, [&](const auto& material) {
+            return shade(material, ray, hit->crossing, depth, weight);
+        });
+    }
+
+    template <class M>
+    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Crossing<T>& hit, int depth,
+                               const Rgb<T>& weight) const noexcept
+    {
+        const Vec3<T>& d = ray.direction;
+        // The normal on the side the ray arrives from.
+        const Vec3<T> n = hit.entering ? hit.normal : -hit.normal;
+        Rgb<T> radiance{T(0)};
+
+        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, n, d);
+
+        if constexpr (reflects<M> || transmits<M>) {
+            if (depth < config_.max_depth) {
+                const T cos_i = clamp(-dot(d, n), T(0), T(1));
+                Rgb<T> kr;
+                [[maybe_unused]] Rgb<T> kt{T(0)};
+                [[maybe_unused]] std::optional<Vec3<T>> refracted;
+                if constexpr (transmits<M>) {
+                    // Split by Fresnel; all light reflects under total internal reflection.
+                    const T eta = hit.entering ? material.ior : T(1) / material.ior;
+                    refracted = refract(d, n, eta);
+                    const T fresnel = refracted ? material.fresnel(cos_i, eta) : T(1);
+                    kr = Rgb<T>(material.kr * fresnel);
+                    kt = Rgb<T>(material.kt * (T(1) - fresnel));
+                } else {
+                    kr = material.reflectance(cos_i);
+                }
+                const Rgb<T> reflect_weight = weight * kr;
+                if (max_component(reflect_weight) > config_.min_weight) {
+                    const Ray<T> reflected = spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n));
+                    radiance += kr * trace(reflected, depth + 1, reflect_weight);
+                }
+                if constexpr (transmits<M>) {
+                    const Rgb<T> transmit_weight = weight * kt;
+                    if (refracted && max_component(transmit_weight) > config_.min_weight) {
+                        const Ray<T> transmitted = spawn_ray(hit.point, hit.error, hit.normal, *refracted);
+                        radiance += kt * trace(transmitted, depth + 1, transmit_weight);
+                    }
+                }
+            }
+        }
+
+        // A ray leaving a dielectric travelled inside it from its origin to here.
+        if constexpr (transmits<M>) {
+            if (!hit.entering) radiance *= beer_lambert(material.absorption, hit.t * length(d));
+        }
+        return radiance;
+    }
+
+    template <class M>
+    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& n, const Vec3<T>& d) const noexcept
+    {
+        Rgb<T> irradiance{T(0)}; // sum of V E cos over the lights
+        Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights
+        Rgb<T> highlight{T(0)};  // POV-Ray's Phong term, when asked for
+        const Vec3<T> mirror = reflect(d, n);
+        scene_->for_each_light([&](const auto& light) {
+            const LightSample<T> s = light.sample(hit.point);
+            const T cos = dot(n, s.wi);
+            if (!(cos > T(0))) return; // the light is behind the surface: V = 0
+            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
+            const Rgb<T> v = scene_->transmittance(shadow, s.distance * (T(1) - shadow_epsilon));
+            irradiance += v * s.irradiance * cos;
+            unlit *= Rgb<T>(T(1)) - v;
+            if (material.phong > T(0)) {
+                const T alignment = dot(mirror, s.wi);
+                if (alignment > T(0)) highlight += (material.phong * power(alignment, material.phong_size) / pi<T>)*v * s.irradiance;
+            }
+        });
+        const Rgb<T> albedo = material.albedo.albedo(hit.point);
+        return albedo * ((material.kd / pi<T>)*irradiance + material.ka * scene_->ambient * unlit) + highlight;
+    }
+
+    /// x^n: by squaring when n is a whole number up to 1024 (a Phong exponent usually
+    /// is; std::pow is a slow library call), by std::pow otherwise.
+    [[nodiscard]] static T power(T x, T n) noexcept
+    {
+        if (!(n >= T(0) && n <= T(1024) && n == std::floor(n))) return std::pow(x, n);
+        T result = T(1);
+        for (auto e = static_cast<unsigned>(n); e != 0; e >>= 1u, x *= x)
+            if (e & 1u) result *= x;
+        return result;
+    }
+
+    const SceneT* scene_;
+    Config config_;
+};
+
+} // namespace prism
+
+// ---- prism/light/directional_light.hpp ----
+// DirectionalLight: parallel light from infinitely far away (the sun).
+
+
+namespace prism {
+
+/// Parallel light travelling along `direction`, with irradiance E on a surface facing it.
+template <Scalar T = float>
+struct DirectionalLight {
+    using scalar_type = T;
+
+    Vec3<T> direction{T(0), T(-1), T(0)};
+    Rgb<T> irradiance{T(1)};
+
+    [[nodiscard]] LightSample<T> sample(const Vec3<T>&) const noexcept
+    {
+        return {-normalize(direction), infinity<T>, irradiance};
+    }
+
+    constexpr void validate() const
+    {
+        detail::require_nonzero("DirectionalLight direction", direction);
+        detail::require_non_negative("DirectionalLight irradiance", irradiance);
+    }
+};
+
+static_assert(Light<DirectionalLight<float>>);
+
+} // namespace prism
+
+// ---- prism/optics/fresnel.hpp ----
+// Fresnel reflectance: exact dielectric, Schlick's approximation, complex conductor.
+//
+// cos_i is the cosine of the incident angle (>= 0, measured on the incident side) and
+// eta = n_t / n_i. Formulas from Born & Wolf, "Principles of Optics", section 1.5, in
+// the form of the seed errata 1:
+//   R_s = ((n_i cos_i - n_t cos_t) / (n_i cos_i + n_t cos_t))^2
+//   R_p = ((n_i cos_t - n_t cos_i) / (n_i cos_t + n_t cos_i))^2
+
+
+#include <complex>
+
+namespace prism {
+
+/// Reflectance for s- (perpendicular) and p- (parallel) polarised light.
+template <Scalar T>
+struct PolarisedReflectance {
+    T s;
+    T p;
+};
+
+/// Exact dielectric reflectance by polarisation; both are 1 under total internal reflection.
+template <Scalar T>
+[[nodiscard]] constexpr PolarisedReflectance<T> fresnel_dielectric_polarised(T cos_i, T eta) noexcept
+{
+    cos_i = clamp(cos_i, T(0), T(1));
+    // Compute cos_t with Snell's law
+    const T sin2_t = (T(1) - cos_i * cos_i) / (eta * eta);
+    // Handle total internal reflection
+    if (sin2_t >= T(1)) return {T(1), T(1)};
+    const T cos_t = prism::sqrt(T(1) - sin2_t);
+    // Divided through by n_i, so n_i -> 1 and n_t -> eta.
+    const T r_s = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    const T r_p = (cos_t - eta * cos_i) / (cos_t + eta * cos_i);
+    return {r_s * r_s, r_p * r_p};
+}
+
+/// Exact dielectric reflectance for unpolarised light, (R_s + R_p) / 2; 1 under total
+/// internal reflection. Transmittance is 1 minus it.
+template <Scalar T>
+[[nodiscard]] constexpr T fresnel_dielectric(T cos_i, T eta) noexcept
+{
+    const PolarisedReflectance<T> r = fresnel_dielectric_polarised(cos_i, eta);
+    return T(0.5) * (r.s + r.p);
+}
+
+/// Schlick's approximation (Schlick 1994, "An Inexpensive BRDF Model for Physically-based
+/// Rendering"): R0 + (1 - R0)(1 - cos)^5 with R0 = ((eta - 1)/(eta + 1))^2. The cosine
+/// must be the one on the optically less dense side: going from dense to less dense
+/// (eta < 1) that is cos_t, and the answer is 1 under total internal reflection (seed
+/// errata 3; with cos_i there the error reaches 0.9 near the critical angle).
+template <Scalar T>
+[[nodiscard]] constexpr T fresnel_schlick(T cos_i, T eta) noexcept
+{
+    cos_i = clamp(cos_i, T(0), T(1));
+    T cos = cos_i;
+    if (eta < T(1)) {
+        const T sin2_t = (T(1) - cos_i * cos_i) / (eta * eta);
+        if (sin2_t >= T(1)) return T(1);
+        cos = prism::sqrt(T(1) - sin2_t);
+    }
+    const T r0 = ((eta - T(1)) / (eta + T(1))) * ((eta - T(1)) / (eta + T(1)));
+    const T m = T(1) - cos;
+    const T m2 = m * m;
+    return r0 + (T(1) - r0) * m2 * m2 * m;
+}
+
+/// Reflectance of a conductor with complex index eta = n + i k relative to the outside
+/// medium, unpolarised (pbrt-v4 FrComplex; Born & Wolf 14.2). Metals brighten toward
+/// grazing incidence, unlike a constant kr (seed errata 5).
+template <Scalar T>
+[[nodiscard]] inline T fresnel_conductor(T cos_i, std::complex<T> eta) noexcept
+{
+    using C = std::complex<T>;
+    cos_i = clamp(cos_i, T(0), T(1));
+    const T sin2_i = T(1) - cos_i * cos_i;
+    const C sin2_t = C(sin2_i) / (eta * eta);
+    const C cos_t = std::sqrt(C(1) - sin2_t);
+    const C r_s = (C(cos_i) - eta * cos_t) / (C(cos_i) + eta * cos_t);
+    const C r_p = (eta * C(cos_i) - cos_t) / (eta * C(cos_i) + cos_t);
+    return T(0.5) * (std::norm(r_s) + std::norm(r_p));
+}
+
+// Fresnel policies for Dielectric<T, Policy>
+
+/// The exact dielectric Fresnel equations.
+struct ExactFresnel {
+    template <Scalar T>
+    [[nodiscard]] static constexpr T reflectance(T cos_i, T eta) noexcept
+    {
+        return fresnel_dielectric(cos_i, eta);
+    }
+};
+
+/// Schlick's approximation, evaluated on the less dense side.
+struct SchlickFresnel {
+    template <Scalar T>
+    [[nodiscard]] static constexpr T reflectance(T cos_i, T eta) noexcept
+    {
+        return fresnel_schlick(cos_i, eta);
+    }
+};
+
+/// A Fresnel policy: reflectance(cos_i, eta) in [0, 1].
+template <class P, class T>
+concept FresnelPolicy = Scalar<T> && requires(T cos_i, T eta) {
+    { P::reflectance(cos_i, eta) } -> std::same_as<T>;
+};
+
+static_assert(FresnelPolicy<ExactFresnel, float> && FresnelPolicy<SchlickFresnel, double>);
+
+} // namespace prism
+
+// ---- prism/material/conductor.hpp ----
+// Conductor: a metal mirror, with a constant kr or the complex-index Fresnel equations.
+
+
+#include <complex>
+
+namespace prism {
+
+/// Reflectance independent of angle (the lecture notes' approximation for metals).
+template <Scalar T = float>
+struct ConstantKr {
+    Rgb<T> kr{T(1)};
+
+    [[nodiscard]] constexpr Rgb<T> reflectance(T) const noexcept { return kr; }
+    constexpr void validate() const { detail::require_non_negative("ConstantKr kr", kr); }
+};
+
+/// The Fresnel equations for a complex index n + i k per channel (seed errata 5).
+template <Scalar T = float>
+struct ComplexIor {
+    Rgb<T> eta{T(1)}; ///< real part n
+    Rgb<T> k{T(0)};   ///< extinction coefficient
+
+    [[nodiscard]] Rgb<T> reflectance(T cos_i) const noexcept
+    {
+        return {fresnel_conductor(cos_i, std::complex<T>(eta.x, k.x)),
+                fresnel_conductor(cos_i, std::complex<T>(eta.y, k.y)),
+                fresnel_conductor(cos_i, std::complex<T>(eta.z, k.z))};
+    }
+
+    constexpr void validate() const
+    {
+        detail::require_finite("ComplexIor eta", eta);
+        if (!(eta.x > T(0) && eta.y > T(0) && eta.z > T(0)))
+            detail::throw_invalid("ComplexIor eta must be > 0 in every channel, got ", detail::describe(eta));
+        detail::require_non_negative("ComplexIor k", k);
+    }
+};
+
+/// A perfect specular conductor: mirror reflection weighted by Fresnel(cos_i), no diffuse.
+template <Scalar T = float, class Fresnel = ConstantKr<T>>
+struct Conductor {
+    using scalar_type = T;
+    static constexpr bool has_diffuse = false;
+    static constexpr bool reflects = true;
+    static constexpr bool transmits = false;
+
+    Fresnel fresnel{};
+
+    [[nodiscard]] Rgb<T> reflectance(T cos_i) const noexcept { return fresnel.reflectance(cos_i); }
+    constexpr void validate() const { fresnel.validate(); }
+};
+
+/// A mirror with constant reflectance kr.
+template <Scalar T = float>
+using Mirror = Conductor<T, ConstantKr<T>>;
+
+/// A metal with a measured complex index.
+template <Scalar T = float>
+using Metal = Conductor<T, ComplexIor<T>>;
+
+static_assert(Material<Mirror<float>> && Material<Metal<double>>);
+
+} // namespace prism
+
+// ---- prism/material/dielectric.hpp ----
+// Dielectric: glass or water; Fresnel-weighted reflection and Snell refraction,
+// Beer-Lambert absorption inside.
+
+
+namespace prism {
+
+/// A clear or tinted dielectric. The Fresnel policy (ExactFresnel or SchlickFresnel)
+/// splits light between reflection and refraction; kr and kt are the seed's scale
+/// factors on top; absorption is Beer-Lambert's coefficient per unit length, per channel.
+/// The outside medium has index 1.
+template <Scalar T = float, class Fresnel = ExactFresnel>
+    requires FresnelPolicy<Fresnel, T>
+struct Dielectric {
+    using scalar_type = T;
+    using fresnel_policy = Fresnel;
+    static constexpr bool has_diffuse = false;
+    static constexpr bool reflects = true;
+    static constexpr bool transmits = true;
+
+    T ior = T(1.5);
+    Rgb<T> absorption{T(0)};
+    T kr = T(1);
+    T kt = T(1);
+
+    /// Fresnel reflectance for incident cosine cos_i and eta = n_t / n_i.
+    [[nodiscard]] constexpr T fresnel(T cos_i, T eta) const noexcept { return Fresnel::reflectance(cos_i, eta); }
+
+    constexpr void validate() const
+    {
+        detail::require_positive("Dielectric ior", ior);
+        detail::require_non_negative("Dielectric absorption", absorption);
+        detail::require_non_negative("Dielectric kr", kr);
+        detail::require_non_negative("Dielectric kt", kt);
+    }
+};
+
+static_assert(Material<Dielectric<float>> && Material<Dielectric<double, SchlickFresnel>>);
+
+} // namespace prism
+
+// ---- prism/material/texture.hpp ----
+// Textures: an albedo that may vary with the surface point.
+
+
+#include <cmath>
+
+namespace prism {
+
+/// A texture maps a surface point to an albedo in [0, 1] per channel.
+template <class X>
+concept Texture = requires(const X& texture, const Vec3<typename X::scalar_type>& p) {
+    { texture.albedo(p) } -> std::same_as<Rgb<typename X::scalar_type>>;
+    texture.validate();
+};
+
+/// One colour everywhere.
+template <Scalar T = float>
+struct Solid {
+    using scalar_type = T;
+    Rgb<T> color{T(0.75)};
+
+    [[nodiscard]] constexpr Rgb<T> albedo(const Vec3<T>&) const noexcept { return color; }
+    constexpr void validate() const { detail::require_non_negative("Solid color", color); }
+};
+
+/// A 3D checkerboard of cubes of side `size` (POV-Ray's `checker`): `even` where
+/// floor(x/size) + floor(y/size) + floor(z/size) is even.
+template <Scalar T = float>
+struct Checker {
+    using scalar_type = T;
+    Rgb<T> even{T(0.8)};
+    Rgb<T> odd{T(0.35)};
+    T size = T(1);
+
+    [[nodiscard]] Rgb<T> albedo(const Vec3<T>& p) const noexcept
+    {
+        // Cells are half-open, so a point on a cell face belongs to exactly one cell. A
+        // floor at y = 0 stays in one layer because Plane refines its hit points onto
+        // the plane exactly when the plane is axis-aligned. Parity is taken in floating
+        // point, so far-away points cannot overflow an integer conversion.
+        const T inv = T(1) / size;
+        const T sum = std::floor(p.x * inv) + std::floor(p.y * inv) + std::floor(p.z * inv);
+        return std::floor(sum * T(0.5)) * T(2) == sum ? even : odd;
+    }
+
+    constexpr void validate() const
+    {
+        detail::require_non_negative("Checker even", even);
+        detail::require_non_negative("Checker odd", odd);
+        detail::require_positive("Checker size", size);
+    }
+};
+
+static_assert(Texture<Solid<float>> && Texture<Checker<double>>);
+
+} // namespace prism
+
+// ---- prism/material/diffuse.hpp ----
+// Diffuse: a Lambertian surface with the seed's kd (diffuse) and ka (ambient) factors.
+
+
+namespace prism {
+
+/// Lambertian reflection, BRDF = albedo / pi, scaled by kd for light from the lights and
+/// by ka for the scene's ambient term (seen only where every light is occluded).
+///
+/// `phong` adds POV-Ray's Phong highlight, phong (R . L)^phong_size E / pi per light,
+/// with R the mirror direction of the viewing ray (Phong 1975, as POV-Ray's `phong`
+/// finish computes it, so that scenes written for POV-Ray look the same). It is a
+/// non-physical highlight and off by default.
+template <Scalar T = float, Texture Albedo = Solid<T>>
+struct Diffuse {
+    using scalar_type = T;
+    static constexpr bool has_diffuse = true;
+    static constexpr bool reflects = false;
+    static constexpr bool transmits = false;
+
+    Albedo albedo{};
+    T kd = T(1);
+    T ka = T(1);
+    T phong = T(0);
+    T phong_size = T(40);
+
+    constexpr void validate() const
+    {
+        albedo.validate();
+        detail::require_non_negative("Diffuse kd", kd);
+        detail::require_non_negative("Diffuse ka", ka);
+        detail::require_non_negative("Diffuse phong", phong);
+        detail::require_positive("Diffuse phong_size", phong_size);
+    }
+};
+
+static_assert(Material<Diffuse<float>>);
 
 } // namespace prism
 

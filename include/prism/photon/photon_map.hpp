@@ -5,6 +5,7 @@
 #include <prism/accel/kd_tree.hpp>
 #include <prism/photon/photon.hpp>
 
+#include <algorithm>
 #include <optional>
 #include <span>
 #include <vector>
@@ -53,16 +54,46 @@ public:
         return r2 > 0.0f ? sum / (pi<float> * r2) : Rgb<float>(0.0f);
     }
 
-    /// The same within a fixed radius: E = sum of the powers within r over pi r^2.
-    [[nodiscard]] Rgb<float> irradiance_within(const Vec3<float>& p, const Vec3<float>& n, float radius) const noexcept
+    /// The same within a fixed radius: E = sum of the powers within r over pi r^2,
+    /// leaving out photons with any of the `excluded` flags.
+    [[nodiscard]] Rgb<float> irradiance_within(const Vec3<float>& p, const Vec3<float>& n, float radius,
+                                               std::uint8_t excluded = 0) const noexcept
     {
         Rgb<float> sum(0.0f);
         if (!tree_ || !(radius > 0.0f)) return sum;
         tree_->within({p.x, p.y, p.z}, radius, [&](std::uint32_t index, float) {
             const Photon& photon = photons_[index];
-            if (dot(photon.from, n) > 0.0f) sum += photon.power;
+            if ((photon.flags & excluded) == 0 && dot(photon.from, n) > 0.0f) sum += photon.power;
         });
         return sum / (pi<float> * radius * radius);
+    }
+
+    /// Precompute irradiance at every `stride`-th photon from its K nearest (Christensen
+    /// 1999, "Faster Photon Map Global Illumination"), so that a final-gather ray needs
+    /// one nearest-neighbour lookup instead of a density estimate.
+    template <std::size_t K>
+    void precompute_irradiance(std::size_t stride)
+    {
+        std::vector<Photon> samples;
+        irradiance_.clear();
+        for (std::size_t i = 0; i < photons_.size(); i += std::max<std::size_t>(stride, 1)) {
+            const Photon& photon = photons_[i];
+            if (photon.flags & Photon::shadow) continue;
+            samples.push_back(photon);
+            irradiance_.push_back(irradiance<K>(photon.position, photon.from));
+        }
+        samples_ = std::move(samples);
+        sample_tree_.emplace(PhotonPositions{samples_});
+    }
+
+    /// The precomputed irradiance nearest p among samples that arrived from n's side
+    /// (zero when there are none near).
+    [[nodiscard]] Rgb<float> precomputed_irradiance(const Vec3<float>& p, const Vec3<float>& n) const noexcept
+    {
+        if (!sample_tree_ || samples_.empty()) return Rgb<float>(0.0f);
+        for (const Neighbour<float>& neighbour : sample_tree_->nearest<4>({p.x, p.y, p.z}))
+            if (dot(samples_[neighbour.index].from, n) > 0.0f) return irradiance_[neighbour.index];
+        return Rgb<float>(0.0f);
     }
 
     /// How many of the K nearest photons are direct, and how many are shadow photons
@@ -83,6 +114,9 @@ public:
 private:
     std::vector<Photon> photons_;
     std::optional<Tree> tree_;
+    std::vector<Photon> samples_;         ///< photons at which irradiance was precomputed
+    std::vector<Rgb<float>> irradiance_;  ///< their irradiance
+    std::optional<Tree> sample_tree_;
 };
 
 } // namespace prism

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+// cornell_caustics: the Cornell box of shared/scenes/cornell_caustics.pov, photon-mapped:
+// the glass sphere's caustic and the walls' colour bleeding, and pictures of where the
+// global and the caustic photons landed (the seed's figures 13 and 15).
+#include "cli.hpp"
+#include "scenes/cornell.hpp"
+
+#include <prism/io/image.hpp>
+
+#include <chrono>
+
+namespace {
+
+/// Every photon of a map drawn as a dot where the camera sees it, in its own colour.
+template <class T>
+prism::Film photon_picture(const prism::PhotonMap& map, const prism::Camera<T>& camera, int width, int height, float gain)
+{
+    prism::Film film(width, height);
+    std::vector<prism::Rgb<float>> sum(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), prism::Rgb<float>(0.0f));
+    const prism::Vec3<T> forward = prism::normalize(camera.look_at - camera.position);
+    const prism::Vec3<T> right = prism::normalize(prism::cross(forward, camera.up));
+    const prism::Vec3<T> up = prism::cross(right, forward);
+    const T half_width = std::tan(T(0.5) * camera.fov * prism::pi<T> / T(180));
+    const T half_height = half_width * T(height) / T(width);
+    for (const prism::Photon& photon : map.photons()) {
+        if (photon.flags & prism::Photon::shadow) continue;
+        const prism::Vec3<T> v = prism::Vec3<T>(photon.position) - camera.position;
+        const T depth = prism::dot(v, forward);
+        if (depth <= T(0)) continue;
+        const T sx = prism::dot(v, right) / (depth * half_width), sy = prism::dot(v, up) / (depth * half_height);
+        const int x = static_cast<int>((sx + T(1)) * T(0.5) * T(width)), y = static_cast<int>((T(1) - sy) * T(0.5) * T(height));
+        if (x < 0 || y < 0 || x >= width || y >= height) continue;
+        sum[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] += photon.power * gain;
+    }
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) film.set(x, y, sum[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)]);
+    return film;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    return examples::run([&] {
+        examples::Options options;
+        options.render.spp = 4;
+        if (!examples::parse(argc, argv, options, "the Cornell box with photon-mapped caustics and colour bleeding")) return 0;
+        const auto scene = scenes::cornell_scene<float>(true);
+        using Mapper = prism::PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
+        const auto start = std::chrono::steady_clock::now();
+        const Mapper mapper(scene, {.photons = {.global_photons = options.photons, .caustic_photons = options.caustic_photons,
+                                                .seed = options.render.seed, .threads = options.render.threads},
+                                    .caustic_radius = float(options.radius), .gather_rays = options.gather});
+        std::printf("cornell_caustics: %zu global and %zu caustic photons stored in %.3f s\n", mapper.maps().global.size(),
+                    mapper.maps().caustic.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        const auto camera = scenes::cornell_camera<float>();
+        const prism::Film film = examples::timed_render("cornell_caustics", camera, mapper, options.render);
+        prism::write_png(film, options.out / "cornell_caustics.png");
+        prism::write_pfm(film, options.out / "cornell_caustics.pfm");
+        // Where the photons landed: each photon's power, summed per pixel (one photon per
+        // pixel of the global map reads as mid-grey).
+        const float gain = float(options.photons) / 200000.0f * 40.0f;
+        prism::write_png(photon_picture(mapper.maps().global, camera, options.render.width, options.render.height, gain),
+                         options.out / "cornell_global_photons.png");
+        prism::write_png(photon_picture(mapper.maps().caustic, camera, options.render.width, options.render.height, gain),
+                         options.out / "cornell_caustic_photons.png");
+        return 0;
+    });
+}
