@@ -2143,6 +2143,8 @@ struct Photon {
     Rgb<float> power{};
     Vec3<float> from{}; ///< unit direction back toward where the photon came from
     std::uint8_t flags = 0;
+
+    friend bool operator==(const Photon&, const Photon&) = default;
 };
 
 /// A direction uniform on the unit sphere: z = 1 - 2u, phi = 2 pi v (errata 4: no
