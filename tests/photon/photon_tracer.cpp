@@ -113,3 +113,48 @@ TEST_CASE("shadow photons lie behind an occluder; the maps are the same bits for
     CHECK(direct_open > 0);
     CHECK(shadow_open == 0);
 }
+
+TEST_CASE("a glass ball focuses a parallel beam R (2 - n) / (2 (n - 1)) behind its far side")
+{
+    // n = 1.5, R = 1: 0.5 behind the far side. Paraxial rays through the Sphere, refracted
+    // twice, cross the axis there (geometry and optics, no photon map).
+    const double n = 1.5, r = 1.0, focal = r * (2 - n) / (2 * (n - 1));
+    const Sphere<double> ball({0, 0, 0}, r);
+    for (double height : {1e-3, 3e-3}) {
+        Ray<double> ray{{height, 5, 0}, {0, -1, 0}};
+        for (double eta : {n, 1 / n}) {
+            const auto c = ball.crossings(ray, {0, infinity<double>});
+            REQUIRE(!c.empty());
+            const Vec3<double> facing = c[0].entering ? c[0].normal : -c[0].normal;
+            const auto bent = refract(ray.direction, facing, eta);
+            REQUIRE(bent);
+            ray = spawn_ray(c[0].point, c[0].error, c[0].normal, *bent);
+        }
+        const double axis_y = ray.origin.y - ray.origin.x * ray.direction.y / ray.direction.x;
+        CHECK(-r - axis_y == doctest::Approx(focal).epsilon(1e-4));
+    }
+
+    // The caustic map of sunlight through the ball, on a screen at that focus: photons
+    // are densest on the axis and spread symmetrically about it.
+    const Scene scene{Lights{DirectionalLight<float>{.direction = {0, -1, 0}, .irradiance = Rgb<float>(1)}},
+                      Object{Plane<float>({0, 1, 0}, float(-r - focal)), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
+                      Object{Sphere<float>({0, 0, 0}, float(r)), Dielectric<float>{.ior = float(n)}}};
+    const PhotonMaps maps = trace_photons(scene, {.global_photons = 0, .caustic_photons = 300000, .shadow_photons = false});
+    // The photons leave a disk as wide as the sphere around the ball's bounding box
+    // (radius sqrt 3 R): a third of them meet the ball, and most of those pass through.
+    REQUIRE(maps.caustic.size() > 80000);
+    const Vec3<float> up{0, 1, 0};
+    const float y = float(-r - focal);
+    const float centre = maps.caustic.irradiance_within({0, y, 0}, up, 0.02f).x;
+    float ring[4];
+    const float offsets[4][2] = {{0.15f, 0}, {-0.15f, 0}, {0, 0.15f}, {0, -0.15f}};
+    for (int i = 0; i < 4; ++i) ring[i] = maps.caustic.irradiance_within({offsets[i][0], y, offsets[i][1]}, up, 0.02f).x;
+    const float ring_mean = 0.25f * (ring[0] + ring[1] + ring[2] + ring[3]);
+    CHECK(centre > 3 * ring_mean); // the peak is on the axis
+    for (float v : ring) CHECK(std::abs(v - ring_mean) < 0.25f * ring_mean); // symmetric
+    // Calibrated: the ball passes E pi R^2 (less Fresnel reflection) onto the screen.
+    double total = 0;
+    for (const Photon& p : maps.caustic.photons()) total += p.power.x;
+    CHECK(total < std::acos(-1.0) * r * r);
+    CHECK(total > 0.8 * std::acos(-1.0) * r * r);
+}

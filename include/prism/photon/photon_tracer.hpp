@@ -18,6 +18,7 @@
 
 #include <prism/core/offset.hpp>
 #include <prism/geometry/crossings.hpp>
+#include <prism/light/directional_light.hpp>
 #include <prism/light/point_light.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/optics/beer.hpp>
@@ -50,14 +51,30 @@ struct PhotonMaps {
 
 namespace detail {
 
-/// A cone of directions from a light toward a specular object's bounding sphere.
+/// Where caustic photons toward one specular object start: a cone of directions from a
+/// point light, or (parallel light) a disk facing the light, upstream of the scene.
 template <Scalar T>
 struct CausticTarget {
     Vec3<T> from{};
     Vec3<T> axis{};
     T cos_half_angle = T(-1); ///< -1: the light is inside the sphere, the cone is everything
-    Rgb<T> power{};           ///< the light's power through this cone: Phi * solid angle / 4 pi
+    Rgb<T> power{};           ///< the power into this cone (Phi * solid angle / 4 pi) or onto this disk (E pi r^2)
+    T disk_radius = T(0);     ///< > 0: parallel light from a disk of this radius centred on `from`
 };
+
+/// A point uniform on the disk of radius r centred at c, perpendicular to the unit axis.
+template <Scalar T>
+[[nodiscard]] inline Vec3<T> uniform_disk(const Vec3<T>& c, const Vec3<T>& axis, T r, Pcg32& rng) noexcept
+{
+    const T rho = r * prism::sqrt(rng.uniform<T>());
+    const T phi = T(2) * pi<T> * rng.uniform<T>();
+    const T sign = std::copysign(T(1), axis.z);
+    const T a = T(-1) / (sign + axis.z);
+    const T b = axis.x * axis.y * a;
+    const Vec3<T> s{T(1) + sign * axis.x * axis.x * a, sign * b, -sign * axis.x};
+    const Vec3<T> t{b, sign + axis.y * axis.y * a, -axis.y};
+    return c + rho * std::cos(phi) * s + rho * std::sin(phi) * t;
+}
 
 /// A direction uniform within the cone about `axis` with the given cos(half angle).
 template <Scalar T>
@@ -83,9 +100,12 @@ public:
     PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config) : scene_(scene), config_(config)
     {
         scene.for_each_light([&](const auto& light) {
-            if constexpr (std::is_same_v<std::remove_cvref_t<decltype(light)>, PointLight<T>>) {
+            using L = std::remove_cvref_t<decltype(light)>;
+            if constexpr (std::is_same_v<L, PointLight<T>>) {
                 lights_.push_back(light);
                 total_power_ += max_component(light.power());
+            } else if constexpr (std::is_same_v<L, DirectionalLight<T>>) {
+                suns_.push_back(light);
             }
         });
         collect_targets();
@@ -132,9 +152,14 @@ public:
                 }
                 u -= share;
             }
+            const Rgb<T> power = target->power / (T(config_.caustic_photons) * p);
+            if (target->disk_radius > T(0)) {
+                follow({uniform_disk(target->from, target->axis, target->disk_radius, rng), target->axis}, power, rng, true, out);
+                continue;
+            }
             const Vec3<T> direction =
                 target->cos_half_angle <= T(-1) ? uniform_sphere<T>(rng) : uniform_cone(target->axis, target->cos_half_angle, rng);
-            follow({target->from, direction}, target->power / (T(config_.caustic_photons) * p), rng, true, out);
+            follow({target->from, direction}, power, rng, true, out);
         }
     }
 
@@ -203,11 +228,21 @@ private:
         }
     }
 
-    /// A cone from every point light to every bounded specular object.
+    /// A cone from every point light, and a disk for every parallel light, to every
+    /// bounded specular object.
     void collect_targets()
     {
+        // A sphere around everything bounded: parallel photons start outside it.
+        std::apply([&](const auto&... slot) { (add_to_extent(slot), ...); }, scene_.slots);
         std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
         for (const auto& t : targets_) target_power_ += max_component(t.power);
+    }
+
+    template <class Slot>
+    void add_to_extent(const Slot& slot)
+    {
+        for (const auto& object : objects_of(slot))
+            if (object.bounded) extent_ = {component_min(extent_.lo, object.shape.bounds().lo), component_max(extent_.hi, object.shape.bounds().hi)};
     }
 
     template <class Slot>
@@ -231,6 +266,13 @@ private:
                     }
                     targets_.push_back(target);
                 }
+                for (const DirectionalLight<T>& sun : suns_) {
+                    // The disk facing the light, just upstream of everything bounded.
+                    const Vec3<T> axis = normalize(sun.direction);
+                    const Vec3<T> middle = T(0.5) * (extent_.lo + extent_.hi);
+                    const T upstream = length(centre - middle) + T(0.5) * length(extent_.hi - extent_.lo) + radius;
+                    targets_.push_back({centre - upstream * axis, axis, T(-1), sun.irradiance * (pi<T> * radius * radius), radius});
+                }
             }
         }
     }
@@ -238,6 +280,8 @@ private:
     const SceneT& scene_;
     PhotonTracerConfig config_;
     std::vector<PointLight<T>> lights_;
+    std::vector<DirectionalLight<T>> suns_; ///< parallel lights: caustic photons only, for now
+    Aabb<T> extent_{};
     T total_power_ = T(0);
     std::vector<CausticTarget<T>> targets_;
     T target_power_ = T(0);
@@ -268,8 +312,8 @@ std::vector<Photon> in_blocks(std::size_t count, unsigned threads, Trace&& trace
 
 } // namespace detail
 
-/// Trace the global and caustic photon maps of a scene (point lights emit; other
-/// lights do not yet).
+/// Trace the global and caustic photon maps of a scene. Point lights emit into both;
+/// directional lights, for now, only caustic photons (aimed at specular objects).
 template <class SceneT>
 [[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config)
 {
