@@ -26,6 +26,7 @@
 #include <prism/geometry/sphere.hpp>
 #include <prism/geometry/transformed.hpp>
 #include <prism/integrator/photon_mapper.hpp>
+#include <prism/integrator/specular.hpp>
 #include <prism/integrator/whitted.hpp>
 #include <prism/light/directional_light.hpp>
 #include <prism/light/light.hpp>

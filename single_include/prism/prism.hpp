@@ -1956,31 +1956,6 @@ private:
 
 } // namespace prism
 
-// ---- prism/light/light.hpp ----
-// What a light tells a shading point, and the Light concept.
-
-
-#include <concepts>
-
-namespace prism {
-
-/// Light arriving at a point from one light.
-template <Scalar T>
-struct LightSample {
-    Vec3<T> wi{};        ///< unit direction from the point toward the light
-    T distance = T(0);   ///< distance to the light (infinity for a directional light)
-    Rgb<T> irradiance{}; ///< irradiance on a surface facing the light (W/m^2)
-};
-
-template <class L>
-concept Light = requires(const L& light, const Vec3<typename L::scalar_type>& p) {
-    requires Scalar<typename L::scalar_type>;
-    { light.sample(p) } -> std::same_as<LightSample<typename L::scalar_type>>;
-    light.validate();
-};
-
-} // namespace prism
-
 // ---- prism/material/traits.hpp ----
 // Material traits known at compile time, on which integrators branch with if constexpr.
 //
@@ -2019,24 +1994,6 @@ inline constexpr bool transmits = M::transmits;
 
 } // namespace prism
 
-// ---- prism/optics/beer.hpp ----
-// Beer-Lambert absorption in a homogeneous medium.
-
-
-#include <cmath>
-
-namespace prism {
-
-/// Fraction of light left after `distance` through a medium with per-channel
-/// attenuation coefficients sigma (solution of dI/dx = -sigma I): exp(-sigma x).
-template <Scalar T>
-[[nodiscard]] inline Rgb<T> beer_lambert(const Rgb<T>& sigma, T distance) noexcept
-{
-    return {std::exp(-sigma.x * distance), std::exp(-sigma.y * distance), std::exp(-sigma.z * distance)};
-}
-
-} // namespace prism
-
 // ---- prism/optics/refract.hpp ----
 // Mirror reflection and Snell refraction of directions.
 //
@@ -2070,6 +2027,88 @@ template <Scalar T>
     if (sin2_t >= T(1)) return std::nullopt;
     const T cos_t = prism::sqrt(T(1) - sin2_t);
     return d / eta + (cos_i / eta - cos_t) * n;
+}
+
+} // namespace prism
+
+// ---- prism/integrator/specular.hpp ----
+// How a mirror or a dielectric splits the light arriving at it: shared by the integrators.
+
+
+#include <optional>
+
+namespace prism {
+
+/// The weights of the reflected and transmitted rays at a specular surface, and the
+/// transmitted direction (none under total internal reflection or for a conductor).
+template <Scalar T>
+struct SpecularSplit {
+    Rgb<T> kr{T(0)};
+    Rgb<T> kt{T(0)};
+    std::optional<Vec3<T>> refracted;
+};
+
+/// d: the unit incident direction; n: the unit normal facing it; entering: whether d
+/// goes into the material. A dielectric splits by Fresnel (all to reflection under total
+/// internal reflection) times its kr and kt; a conductor reflects by its reflectance.
+template <Material M, Scalar T>
+[[nodiscard]] SpecularSplit<T> specular_split(const M& material, const Vec3<T>& d, const Vec3<T>& n, bool entering) noexcept
+{
+    const T cos_i = clamp(-dot(d, n), T(0), T(1));
+    SpecularSplit<T> split;
+    if constexpr (transmits<M>) {
+        const T eta = entering ? material.ior : T(1) / material.ior;
+        split.refracted = refract(d, n, eta);
+        const T fresnel = split.refracted ? material.fresnel(cos_i, eta) : T(1);
+        split.kr = Rgb<T>(material.kr * fresnel);
+        split.kt = Rgb<T>(material.kt * (T(1) - fresnel));
+    } else {
+        split.kr = material.reflectance(cos_i);
+    }
+    return split;
+}
+
+} // namespace prism
+
+// ---- prism/light/light.hpp ----
+// What a light tells a shading point, and the Light concept.
+
+
+#include <concepts>
+
+namespace prism {
+
+/// Light arriving at a point from one light.
+template <Scalar T>
+struct LightSample {
+    Vec3<T> wi{};        ///< unit direction from the point toward the light
+    T distance = T(0);   ///< distance to the light (infinity for a directional light)
+    Rgb<T> irradiance{}; ///< irradiance on a surface facing the light (W/m^2)
+};
+
+template <class L>
+concept Light = requires(const L& light, const Vec3<typename L::scalar_type>& p) {
+    requires Scalar<typename L::scalar_type>;
+    { light.sample(p) } -> std::same_as<LightSample<typename L::scalar_type>>;
+    light.validate();
+};
+
+} // namespace prism
+
+// ---- prism/optics/beer.hpp ----
+// Beer-Lambert absorption in a homogeneous medium.
+
+
+#include <cmath>
+
+namespace prism {
+
+/// Fraction of light left after `distance` through a medium with per-channel
+/// attenuation coefficients sigma (solution of dI/dx = -sigma I): exp(-sigma x).
+template <Scalar T>
+[[nodiscard]] inline Rgb<T> beer_lambert(const Rgb<T>& sigma, T distance) noexcept
+{
+    return {std::exp(-sigma.x * distance), std::exp(-sigma.y * distance), std::exp(-sigma.z * distance)};
 }
 
 } // namespace prism
@@ -2157,7 +2196,9 @@ static_assert(Light<PointLight<float>>);
 // scales a survivor's power per channel by reflectance over survival probability.
 
 
+#include <cmath>
 #include <cstdint>
+#include <utility>
 
 namespace prism {
 
@@ -2188,6 +2229,17 @@ template <Scalar T>
     return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
+/// Two unit vectors that make an orthonormal frame with the unit vector n (Duff et al.
+/// 2017, "Building an Orthonormal Basis, Revisited").
+template <Scalar T>
+[[nodiscard]] inline std::pair<Vec3<T>, Vec3<T>> orthonormal_frame(const Vec3<T>& n) noexcept
+{
+    const T sign = std::copysign(T(1), n.z);
+    const T a = T(-1) / (sign + n.z);
+    const T b = n.x * n.y * a;
+    return {{T(1) + sign * n.x * n.x * a, sign * b, -sign * n.x}, {b, sign + n.y * n.y * a, -n.y}};
+}
+
 /// A cosine-distributed direction about the unit normal n (Malley's method: a uniform
 /// point on the disk, lifted onto the hemisphere): the diffuse bounce of a photon.
 template <Scalar T>
@@ -2197,12 +2249,7 @@ template <Scalar T>
     const T phi = T(2) * pi<T> * rng.uniform<T>();
     const T x = r * std::cos(phi), y = r * std::sin(phi);
     const T z = prism::sqrt(clamp(T(1) - x * x - y * y, T(0), T(1)));
-    // An orthonormal frame around n (Duff et al. 2017, "Building an Orthonormal Basis, Revisited").
-    const T sign = std::copysign(T(1), n.z);
-    const T a = T(-1) / (sign + n.z);
-    const T b = n.x * n.y * a;
-    const Vec3<T> s{T(1) + sign * n.x * n.x * a, sign * b, -sign * n.x};
-    const Vec3<T> t{b, sign + n.y * n.y * a, -n.y};
+    const auto [s, t] = orthonormal_frame(n);
     return x * s + y * t + z * n;
 }
 
@@ -2473,11 +2520,7 @@ template <Scalar T>
 {
     const T rho = r * prism::sqrt(rng.uniform<T>());
     const T phi = T(2) * pi<T> * rng.uniform<T>();
-    const T sign = std::copysign(T(1), axis.z);
-    const T a = T(-1) / (sign + axis.z);
-    const T b = axis.x * axis.y * a;
-    const Vec3<T> s{T(1) + sign * axis.x * axis.x * a, sign * b, -sign * axis.x};
-    const Vec3<T> t{b, sign + axis.y * axis.y * a, -axis.y};
+    const auto [s, t] = orthonormal_frame(axis);
     return c + rho * std::cos(phi) * s + rho * std::sin(phi) * t;
 }
 
@@ -2488,12 +2531,7 @@ template <Scalar T>
     const T cos_theta = T(1) - rng.uniform<T>() * (T(1) - cos_half_angle);
     const T sin_theta = prism::sqrt(clamp(T(1) - cos_theta * cos_theta, T(0), T(1)));
     const T phi = T(2) * pi<T> * rng.uniform<T>();
-    // Rotate (sin cos phi, sin sin phi, cos) from z onto the axis.
-    const T sign = std::copysign(T(1), axis.z);
-    const T a = T(-1) / (sign + axis.z);
-    const T b = axis.x * axis.y * a;
-    const Vec3<T> s{T(1) + sign * axis.x * axis.x * a, sign * b, -sign * axis.x};
-    const Vec3<T> t{b, sign + axis.y * axis.y * a, -axis.y};
+    const auto [s, t] = orthonormal_frame(axis);
     return sin_theta * std::cos(phi) * s + sin_theta * std::sin(phi) * t + cos_theta * axis;
 }
 
@@ -2815,25 +2853,11 @@ private:
         }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                const T cos_i = clamp(-dot(d, n), T(0), T(1));
-                Rgb<T> kr;
-                [[maybe_unused]] Rgb<T> kt{T(0)};
-                [[maybe_unused]] std::optional<Vec3<T>> refracted;
-                if constexpr (transmits<M>) {
-                    const T eta = hit.entering ? material.ior : T(1) / material.ior;
-                    refracted = refract(d, n, eta);
-                    const T fresnel = refracted ? material.fresnel(cos_i, eta) : T(1);
-                    kr = Rgb<T>(material.kr * fresnel);
-                    kt = Rgb<T>(material.kt * (T(1) - fresnel));
-                } else {
-                    kr = material.reflectance(cos_i);
-                }
-                if (max_component(weight * kr) > config_.min_weight)
-                    radiance += kr * trace(spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n)), depth + 1, weight * kr, rng);
-                if constexpr (transmits<M>) {
-                    if (refracted && max_component(weight * kt) > config_.min_weight)
-                        radiance += kt * trace(spawn_ray(hit.point, hit.error, hit.normal, *refracted), depth + 1, weight * kt, rng);
-                }
+                const SpecularSplit<T> split = specular_split(material, d, n, hit.entering);
+                if (max_component(weight * split.kr) > config_.min_weight)
+                    radiance += split.kr * trace(spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n)), depth + 1, weight * split.kr, rng);
+                if (split.refracted && max_component(weight * split.kt) > config_.min_weight)
+                    radiance += split.kt * trace(spawn_ray(hit.point, hit.error, hit.normal, *split.refracted), depth + 1, weight * split.kt, rng);
             }
         }
         if constexpr (transmits<M>) {
@@ -2961,31 +2985,16 @@ private:
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                const T cos_i = clamp(-dot(d, n), T(0), T(1));
-                Rgb<T> kr;
-                [[maybe_unused]] Rgb<T> kt{T(0)};
-                [[maybe_unused]] std::optional<Vec3<T>> refracted;
-                if constexpr (transmits<M>) {
-                    // Split by Fresnel; all light reflects under total internal reflection.
-                    const T eta = hit.entering ? material.ior : T(1) / material.ior;
-                    refracted = refract(d, n, eta);
-                    const T fresnel = refracted ? material.fresnel(cos_i, eta) : T(1);
-                    kr = Rgb<T>(material.kr * fresnel);
-                    kt = Rgb<T>(material.kt * (T(1) - fresnel));
-                } else {
-                    kr = material.reflectance(cos_i);
-                }
-                const Rgb<T> reflect_weight = weight * kr;
+                const SpecularSplit<T> split = specular_split(material, d, n, hit.entering);
+                const Rgb<T> reflect_weight = weight * split.kr;
                 if (max_component(reflect_weight) > config_.min_weight) {
                     const Ray<T> reflected = spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n));
-                    radiance += kr * trace(reflected, depth + 1, reflect_weight);
+                    radiance += split.kr * trace(reflected, depth + 1, reflect_weight);
                 }
-                if constexpr (transmits<M>) {
-                    const Rgb<T> transmit_weight = weight * kt;
-                    if (refracted && max_component(transmit_weight) > config_.min_weight) {
-                        const Ray<T> transmitted = spawn_ray(hit.point, hit.error, hit.normal, *refracted);
-                        radiance += kt * trace(transmitted, depth + 1, transmit_weight);
-                    }
+                const Rgb<T> transmit_weight = weight * split.kt;
+                if (split.refracted && max_component(transmit_weight) > config_.min_weight) {
+                    const Ray<T> transmitted = spawn_ray(hit.point, hit.error, hit.normal, *split.refracted);
+                    radiance += split.kt * trace(transmitted, depth + 1, transmit_weight);
                 }
             }
         }

@@ -78,3 +78,16 @@ TEST_CASE("Russian roulette keeps the expected power, channel by channel (errata
     Rgb<double> dark{1.0, 1.0, 1.0};
     CHECK_FALSE(prism::russian_roulette(dark, Rgb<double>(0.0), rng));
 }
+
+TEST_CASE("orthonormal frames, including at the poles")
+{
+    prism::Pcg32 rng(4u, 4u);
+    for (int i = 0; i < 1000; ++i) {
+        const Vec3<double> n = i == 0 ? Vec3<double>{0, 0, -1} : i == 1 ? Vec3<double>{0, 0, 1} : prism::uniform_sphere<double>(rng);
+        const auto [s, t] = prism::orthonormal_frame(n);
+        CHECK(std::abs(prism::dot(s, t)) < 1e-12);
+        CHECK(std::abs(prism::dot(s, n)) < 1e-12);
+        CHECK(std::abs(prism::length(s) - 1) < 1e-12);
+        CHECK(prism::dot(prism::cross(s, t), n) == doctest::Approx(1)); // right-handed
+    }
+}

@@ -20,6 +20,7 @@
 #include <prism/core/offset.hpp>
 #include <prism/core/rng.hpp>
 #include <prism/geometry/crossings.hpp>
+#include <prism/integrator/specular.hpp>
 #include <prism/light/light.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/optics/beer.hpp>
@@ -88,25 +89,11 @@ private:
         }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                const T cos_i = clamp(-dot(d, n), T(0), T(1));
-                Rgb<T> kr;
-                [[maybe_unused]] Rgb<T> kt{T(0)};
-                [[maybe_unused]] std::optional<Vec3<T>> refracted;
-                if constexpr (transmits<M>) {
-                    const T eta = hit.entering ? material.ior : T(1) / material.ior;
-                    refracted = refract(d, n, eta);
-                    const T fresnel = refracted ? material.fresnel(cos_i, eta) : T(1);
-                    kr = Rgb<T>(material.kr * fresnel);
-                    kt = Rgb<T>(material.kt * (T(1) - fresnel));
-                } else {
-                    kr = material.reflectance(cos_i);
-                }
-                if (max_component(weight * kr) > config_.min_weight)
-                    radiance += kr * trace(spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n)), depth + 1, weight * kr, rng);
-                if constexpr (transmits<M>) {
-                    if (refracted && max_component(weight * kt) > config_.min_weight)
-                        radiance += kt * trace(spawn_ray(hit.point, hit.error, hit.normal, *refracted), depth + 1, weight * kt, rng);
-                }
+                const SpecularSplit<T> split = specular_split(material, d, n, hit.entering);
+                if (max_component(weight * split.kr) > config_.min_weight)
+                    radiance += split.kr * trace(spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n)), depth + 1, weight * split.kr, rng);
+                if (split.refracted && max_component(weight * split.kt) > config_.min_weight)
+                    radiance += split.kt * trace(spawn_ray(hit.point, hit.error, hit.normal, *split.refracted), depth + 1, weight * split.kt, rng);
             }
         }
         if constexpr (transmits<M>) {

@@ -16,6 +16,7 @@
 #include <prism/core/offset.hpp>
 #include <prism/core/rng.hpp>
 #include <prism/geometry/crossings.hpp>
+#include <prism/integrator/specular.hpp>
 #include <prism/light/light.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/optics/beer.hpp>
@@ -82,31 +83,16 @@ private:
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                const T cos_i = clamp(-dot(d, n), T(0), T(1));
-                Rgb<T> kr;
-                [[maybe_unused]] Rgb<T> kt{T(0)};
-                [[maybe_unused]] std::optional<Vec3<T>> refracted;
-                if constexpr (transmits<M>) {
-                    // Split by Fresnel; all light reflects under total internal reflection.
-                    const T eta = hit.entering ? material.ior : T(1) / material.ior;
-                    refracted = refract(d, n, eta);
-                    const T fresnel = refracted ? material.fresnel(cos_i, eta) : T(1);
-                    kr = Rgb<T>(material.kr * fresnel);
-                    kt = Rgb<T>(material.kt * (T(1) - fresnel));
-                } else {
-                    kr = material.reflectance(cos_i);
-                }
-                const Rgb<T> reflect_weight = weight * kr;
+                const SpecularSplit<T> split = specular_split(material, d, n, hit.entering);
+                const Rgb<T> reflect_weight = weight * split.kr;
                 if (max_component(reflect_weight) > config_.min_weight) {
                     const Ray<T> reflected = spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n));
-                    radiance += kr * trace(reflected, depth + 1, reflect_weight);
+                    radiance += split.kr * trace(reflected, depth + 1, reflect_weight);
                 }
-                if constexpr (transmits<M>) {
-                    const Rgb<T> transmit_weight = weight * kt;
-                    if (refracted && max_component(transmit_weight) > config_.min_weight) {
-                        const Ray<T> transmitted = spawn_ray(hit.point, hit.error, hit.normal, *refracted);
-                        radiance += kt * trace(transmitted, depth + 1, transmit_weight);
-                    }
+                const Rgb<T> transmit_weight = weight * split.kt;
+                if (split.refracted && max_component(transmit_weight) > config_.min_weight) {
+                    const Ray<T> transmitted = spawn_ray(hit.point, hit.error, hit.normal, *split.refracted);
+                    radiance += split.kt * trace(transmitted, depth + 1, transmit_weight);
                 }
             }
         }

@@ -11,7 +11,9 @@
 #include <prism/core/math.hpp>
 #include <prism/core/rng.hpp>
 
+#include <cmath>
 #include <cstdint>
+#include <utility>
 
 namespace prism {
 
@@ -42,6 +44,17 @@ template <Scalar T>
     return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
+/// Two unit vectors that make an orthonormal frame with the unit vector n (Duff et al.
+/// 2017, "Building an Orthonormal Basis, Revisited").
+template <Scalar T>
+[[nodiscard]] inline std::pair<Vec3<T>, Vec3<T>> orthonormal_frame(const Vec3<T>& n) noexcept
+{
+    const T sign = std::copysign(T(1), n.z);
+    const T a = T(-1) / (sign + n.z);
+    const T b = n.x * n.y * a;
+    return {{T(1) + sign * n.x * n.x * a, sign * b, -sign * n.x}, {b, sign + n.y * n.y * a, -n.y}};
+}
+
 /// A cosine-distributed direction about the unit normal n (Malley's method: a uniform
 /// point on the disk, lifted onto the hemisphere): the diffuse bounce of a photon.
 template <Scalar T>
@@ -51,12 +64,7 @@ template <Scalar T>
     const T phi = T(2) * pi<T> * rng.uniform<T>();
     const T x = r * std::cos(phi), y = r * std::sin(phi);
     const T z = prism::sqrt(clamp(T(1) - x * x - y * y, T(0), T(1)));
-    // An orthonormal frame around n (Duff et al. 2017, "Building an Orthonormal Basis, Revisited").
-    const T sign = std::copysign(T(1), n.z);
-    const T a = T(-1) / (sign + n.z);
-    const T b = n.x * n.y * a;
-    const Vec3<T> s{T(1) + sign * n.x * n.x * a, sign * b, -sign * n.x};
-    const Vec3<T> t{b, sign + n.y * n.y * a, -n.y};
+    const auto [s, t] = orthonormal_frame(n);
     return x * s + y * t + z * n;
 }
 

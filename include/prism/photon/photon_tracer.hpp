@@ -68,11 +68,7 @@ template <Scalar T>
 {
     const T rho = r * prism::sqrt(rng.uniform<T>());
     const T phi = T(2) * pi<T> * rng.uniform<T>();
-    const T sign = std::copysign(T(1), axis.z);
-    const T a = T(-1) / (sign + axis.z);
-    const T b = axis.x * axis.y * a;
-    const Vec3<T> s{T(1) + sign * axis.x * axis.x * a, sign * b, -sign * axis.x};
-    const Vec3<T> t{b, sign + axis.y * axis.y * a, -axis.y};
+    const auto [s, t] = orthonormal_frame(axis);
     return c + rho * std::cos(phi) * s + rho * std::sin(phi) * t;
 }
 
@@ -83,12 +79,7 @@ template <Scalar T>
     const T cos_theta = T(1) - rng.uniform<T>() * (T(1) - cos_half_angle);
     const T sin_theta = prism::sqrt(clamp(T(1) - cos_theta * cos_theta, T(0), T(1)));
     const T phi = T(2) * pi<T> * rng.uniform<T>();
-    // Rotate (sin cos phi, sin sin phi, cos) from z onto the axis.
-    const T sign = std::copysign(T(1), axis.z);
-    const T a = T(-1) / (sign + axis.z);
-    const T b = axis.x * axis.y * a;
-    const Vec3<T> s{T(1) + sign * axis.x * axis.x * a, sign * b, -sign * axis.x};
-    const Vec3<T> t{b, sign + axis.y * axis.y * a, -axis.y};
+    const auto [s, t] = orthonormal_frame(axis);
     return sin_theta * std::cos(phi) * s + sin_theta * std::sin(phi) * t + cos_theta * axis;
 }
 
