@@ -25,6 +25,7 @@
 #include <prism/geometry/shape.hpp>
 #include <prism/geometry/sphere.hpp>
 #include <prism/geometry/transformed.hpp>
+#include <prism/integrator/direct.hpp>
 #include <prism/integrator/photon_mapper.hpp>
 #include <prism/integrator/specular.hpp>
 #include <prism/integrator/whitted.hpp>

@@ -1956,6 +1956,60 @@ private:
 
 } // namespace prism
 
+// ---- prism/light/light.hpp ----
+// What a light tells a shading point, and the Light concept.
+
+
+#include <concepts>
+
+namespace prism {
+
+/// Light arriving at a point from one light.
+template <Scalar T>
+struct LightSample {
+    Vec3<T> wi{};        ///< unit direction from the point toward the light
+    T distance = T(0);   ///< distance to the light (infinity for a directional light)
+    Rgb<T> irradiance{}; ///< irradiance on a surface facing the light (W/m^2)
+};
+
+template <class L>
+concept Light = requires(const L& light, const Vec3<typename L::scalar_type>& p) {
+    requires Scalar<typename L::scalar_type>;
+    { light.sample(p) } -> std::same_as<LightSample<typename L::scalar_type>>;
+    light.validate();
+};
+
+} // namespace prism
+
+// ---- prism/integrator/direct.hpp ----
+// Light arriving from each light at a surface point, by shadow rays: shared by the integrators.
+
+
+namespace prism {
+
+/// Shadow rays stop this fraction short of a point light, so a light placed on a
+/// surface is not shadowed by that surface (pbrt's ShadowEpsilon).
+template <Scalar T>
+inline constexpr T shadow_epsilon = T(1e-4);
+
+/// For each light in front of the surface (unit normal n facing the viewer), call
+/// f(sample, v, cos): the light's sample at the point, the shadow ray's transmittance v
+/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface. Lights
+/// behind the surface are not visited: they count as occluded.
+template <class SceneT, Scalar T, class F>
+void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const Vec3<T>& n, F&& f)
+{
+    scene.for_each_light([&](const auto& light) {
+        const LightSample<T> s = light.sample(hit.point);
+        const T cos = dot(n, s.wi);
+        if (!(cos > T(0))) return;
+        const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
+        f(s, scene.transmittance(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
+    });
+}
+
+} // namespace prism
+
 // ---- prism/material/traits.hpp ----
 // Material traits known at compile time, on which integrators branch with if constexpr.
 //
@@ -2067,31 +2121,6 @@ template <Material M, Scalar T>
     }
     return split;
 }
-
-} // namespace prism
-
-// ---- prism/light/light.hpp ----
-// What a light tells a shading point, and the Light concept.
-
-
-#include <concepts>
-
-namespace prism {
-
-/// Light arriving at a point from one light.
-template <Scalar T>
-struct LightSample {
-    Vec3<T> wi{};        ///< unit direction from the point toward the light
-    T distance = T(0);   ///< distance to the light (infinity for a directional light)
-    Rgb<T> irradiance{}; ///< irradiance on a surface facing the light (W/m^2)
-};
-
-template <class L>
-concept Light = requires(const L& light, const Vec3<typename L::scalar_type>& p) {
-    requires Scalar<typename L::scalar_type>;
-    { light.sample(p) } -> std::same_as<LightSample<typename L::scalar_type>>;
-    light.validate();
-};
 
 } // namespace prism
 
@@ -2810,8 +2839,6 @@ public:
         T min_weight = T(1e-3);
     };
 
-    static constexpr T shadow_epsilon = T(1e-4);
-
     /// Traces the photon maps (the expensive part), then renders with them.
     PhotonMapper(const SceneT& scene, Config config) : scene_(&scene), config_(config)
     {
@@ -2870,13 +2897,7 @@ private:
     [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, const Vec3<T>& n) const noexcept
     {
         Rgb<T> irradiance{T(0)};
-        scene_->for_each_light([&](const auto& light) {
-            const LightSample<T> s = light.sample(hit.point);
-            const T cos = dot(n, s.wi);
-            if (!(cos > T(0))) return;
-            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
-            irradiance += scene_->transmittance(shadow, s.distance * (T(1) - shadow_epsilon)) * s.irradiance * cos;
-        });
+        for_each_light_arriving(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
         return irradiance;
     }
 
@@ -2939,10 +2960,6 @@ public:
         int max_depth = 10;          ///< reflection/refraction bounces followed at most
         T min_weight = T(1e-3);      ///< stop a branch whose weight on the pixel is below this
     };
-
-    /// Shadow rays stop this fraction short of a point light, so a light placed on a
-    /// surface is not shadowed by that surface (pbrt's ShadowEpsilon).
-    static constexpr T shadow_epsilon = T(1e-4);
 
     explicit Whitted(const SceneT& scene, Config config = {}) : scene_(&scene), config_(config)
     {
@@ -3013,12 +3030,7 @@ private:
         Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights
         Rgb<T> highlight{T(0)};  // POV-Ray's Phong term, when asked for
         const Vec3<T> mirror = reflect(d, n);
-        scene_->for_each_light([&](const auto& light) {
-            const LightSample<T> s = light.sample(hit.point);
-            const T cos = dot(n, s.wi);
-            if (!(cos > T(0))) return; // the light is behind the surface: V = 0
-            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
-            const Rgb<T> v = scene_->transmittance(shadow, s.distance * (T(1) - shadow_epsilon));
+        for_each_light_arriving(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
             irradiance += v * s.irradiance * cos;
             unlit *= Rgb<T>(T(1)) - v;
             if (material.phong > T(0)) {

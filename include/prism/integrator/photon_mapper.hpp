@@ -20,6 +20,7 @@
 #include <prism/core/offset.hpp>
 #include <prism/core/rng.hpp>
 #include <prism/geometry/crossings.hpp>
+#include <prism/integrator/direct.hpp>
 #include <prism/integrator/specular.hpp>
 #include <prism/light/light.hpp>
 #include <prism/material/traits.hpp>
@@ -45,8 +46,6 @@ public:
         int max_depth = 10;
         T min_weight = T(1e-3);
     };
-
-    static constexpr T shadow_epsilon = T(1e-4);
 
     /// Traces the photon maps (the expensive part), then renders with them.
     PhotonMapper(const SceneT& scene, Config config) : scene_(&scene), config_(config)
@@ -106,13 +105,7 @@ private:
     [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, const Vec3<T>& n) const noexcept
     {
         Rgb<T> irradiance{T(0)};
-        scene_->for_each_light([&](const auto& light) {
-            const LightSample<T> s = light.sample(hit.point);
-            const T cos = dot(n, s.wi);
-            if (!(cos > T(0))) return;
-            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
-            irradiance += scene_->transmittance(shadow, s.distance * (T(1) - shadow_epsilon)) * s.irradiance * cos;
-        });
+        for_each_light_arriving(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
         return irradiance;
     }
 

@@ -16,6 +16,7 @@
 #include <prism/core/offset.hpp>
 #include <prism/core/rng.hpp>
 #include <prism/geometry/crossings.hpp>
+#include <prism/integrator/direct.hpp>
 #include <prism/integrator/specular.hpp>
 #include <prism/light/light.hpp>
 #include <prism/material/traits.hpp>
@@ -37,10 +38,6 @@ public:
         int max_depth = 10;          ///< reflection/refraction bounces followed at most
         T min_weight = T(1e-3);      ///< stop a branch whose weight on the pixel is below this
     };
-
-    /// Shadow rays stop this fraction short of a point light, so a light placed on a
-    /// surface is not shadowed by that surface (pbrt's ShadowEpsilon).
-    static constexpr T shadow_epsilon = T(1e-4);
 
     explicit Whitted(const SceneT& scene, Config config = {}) : scene_(&scene), config_(config)
     {
@@ -111,12 +108,7 @@ private:
         Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights
         Rgb<T> highlight{T(0)};  // POV-Ray's Phong term, when asked for
         const Vec3<T> mirror = reflect(d, n);
-        scene_->for_each_light([&](const auto& light) {
-            const LightSample<T> s = light.sample(hit.point);
-            const T cos = dot(n, s.wi);
-            if (!(cos > T(0))) return; // the light is behind the surface: V = 0
-            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
-            const Rgb<T> v = scene_->transmittance(shadow, s.distance * (T(1) - shadow_epsilon));
+        for_each_light_arriving(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
             irradiance += v * s.irradiance * cos;
             unlit *= Rgb<T>(T(1)) - v;
             if (material.phong > T(0)) {
