@@ -24,7 +24,12 @@ struct Options {
     std::size_t photons = 200000;
     std::size_t caustic_photons = 200000;
     int gather = 0;
-    double radius = 0.1;
+    double radius = 0.1;          ///< the caustic estimate's radius, or its search limit with --k
+    std::size_t k = 0;            ///< > 0: the caustic estimate from the k nearest photons
+    prism::Filter filter = prism::Filter::box;
+    double disk = 1.0;            ///< < 1 flattens the estimate's sphere to a disk (against leaks)
+    std::size_t visibility = 0;   ///< > 0: skip shadow rays where this many nearest photons agree
+    bool povray_light = false;    ///< POV-Ray's no-falloff light, as its scene has it
 };
 
 inline void print_help(const char* program, const char* description, const Options& defaults)
@@ -42,7 +47,12 @@ inline void print_help(const char* program, const char* description, const Optio
                 "  --photons N          photons emitted for the global map (default 200000)\n"
                 "  --caustic-photons N  photons aimed at specular objects (default 200000)\n"
                 "  --gather N           final-gather rays per diffuse hit, 0 = read the global map (default 0)\n"
-                "  --radius R           radius of the caustic estimate (default 0.1)\n"
+                "  --radius R           radius of the caustic estimate, or its search limit with --k (default 0.1)\n"
+                "  --k N                caustic estimate from the N nearest photons, 0 = every photon within R (default 0)\n"
+                "  --filter F           box, cone or gaussian (default box)\n"
+                "  --disk D             keep photons within D R of the tangent plane, < 1 against light leaks (default 1)\n"
+                "  --visibility N       skip shadow rays where the N nearest global photons agree (default 0 = never)\n"
+                "  --light L            physical (inverse-square) or povray (no falloff, as the .pov file) (default physical)\n"
                 "  --help        this text\n",
                 program, description, program, defaults.render.width, defaults.render.height, defaults.render.spp);
 }
@@ -57,6 +67,17 @@ Integer parse_integer(std::string_view flag, const char* text, long long lo, lon
         throw std::invalid_argument(std::string(flag) + " expects an integer in [" + std::to_string(lo) + ", " +
                                     std::to_string(hi) + "], got '" + text + "'");
     return static_cast<Integer>(value);
+}
+
+/// A number in (lo, hi].
+inline double parse_number(std::string_view flag, const char* text, double lo, double hi)
+{
+    char* end = nullptr;
+    const double value = std::strtod(text, &end);
+    if (end == text || *end != '\0' || !(value > lo && value <= hi))
+        throw std::invalid_argument(std::string(flag) + " expects a number in (" + std::to_string(lo) + ", " + std::to_string(hi) +
+                                    "], got '" + text + "'");
+    return value;
 }
 
 /// Parse the shared options; returns false when --help was printed.
@@ -81,11 +102,21 @@ inline bool parse(int argc, char** argv, Options& options, const char* descripti
         else if (flag == "--photons") options.photons = parse_integer<std::size_t>(flag, value, 0, 100000000);
         else if (flag == "--caustic-photons") options.caustic_photons = parse_integer<std::size_t>(flag, value, 0, 100000000);
         else if (flag == "--gather") options.gather = parse_integer<int>(flag, value, 0, 4096);
-        else if (flag == "--radius") {
-            char* end = nullptr;
-            options.radius = std::strtod(value, &end);
-            if (end == value || *end != '\0' || !(options.radius > 0 && options.radius < 100))
-                throw std::invalid_argument("--radius expects a number in (0, 100), got '" + std::string(value) + "'");
+        else if (flag == "--radius") options.radius = parse_number(flag, value, 0, 100);
+        else if (flag == "--disk") options.disk = parse_number(flag, value, 0, 1);
+        else if (flag == "--k") options.k = parse_integer<std::size_t>(flag, value, 0, prism::PhotonMap::max_k);
+        else if (flag == "--visibility") options.visibility = parse_integer<std::size_t>(flag, value, 0, prism::PhotonMap::max_k);
+        else if (flag == "--filter") {
+            const std::string_view f = value;
+            if (f == "box") options.filter = prism::Filter::box;
+            else if (f == "cone") options.filter = prism::Filter::cone;
+            else if (f == "gaussian") options.filter = prism::Filter::gaussian;
+            else throw std::invalid_argument("--filter expects box, cone or gaussian, got '" + std::string(f) + "'");
+        }
+        else if (flag == "--light") {
+            const std::string_view l = value;
+            if (l != "physical" && l != "povray") throw std::invalid_argument("--light expects physical or povray, got '" + std::string(l) + "'");
+            options.povray_light = l == "povray";
         }
         else throw std::invalid_argument("unknown option '" + std::string(flag) + "' (see --help)");
     }

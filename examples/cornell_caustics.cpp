@@ -2,7 +2,12 @@
 // cornell_caustics: the Cornell box of shared/scenes/cornell_caustics.pov, photon-mapped:
 // the glass sphere's caustic and the walls' colour bleeding, and pictures of where the
 // global and the caustic photons landed (the seed's figures 13 and 15).
+//
+// With --povray (POV-Ray's picture with Declare=PHOTONS=1) it renders what POV-Ray does:
+// its no-falloff light and caustics only (POV-Ray's scene has no radiosity, so no global
+// map), and writes prism | POV-Ray | difference.
 #include "cli.hpp"
+#include "compare.hpp"
 #include "scenes/cornell.hpp"
 
 #include <prism/io/image.hpp>
@@ -45,18 +50,25 @@ int main(int argc, char** argv)
         examples::Options options;
         options.render.spp = 4;
         if (!examples::parse(argc, argv, options, "the Cornell box with photon-mapped caustics and colour bleeding")) return 0;
-        const auto scene = scenes::cornell_scene<float>(true);
+        if (!options.povray.empty()) {
+            options.povray_light = true;
+            options.photons = 0;
+        }
+        const auto scene = scenes::cornell_scene<float>(!options.povray_light);
         using Mapper = prism::PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
         const auto start = std::chrono::steady_clock::now();
         const Mapper mapper(scene, {.photons = {.global_photons = options.photons, .caustic_photons = options.caustic_photons,
                                                 .seed = options.render.seed, .threads = options.render.threads},
-                                    .caustic_radius = float(options.radius), .gather_rays = options.gather});
+                                    .caustic = {.k = options.k, .radius = float(options.radius), .filter = options.filter, .disk = float(options.disk)},
+                                    .gather_rays = options.gather,
+                                    .visibility_k = options.visibility});
         std::printf("cornell_caustics: %zu global and %zu caustic photons stored in %.3f s\n", mapper.maps().global.size(),
                     mapper.maps().caustic.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         const auto camera = scenes::cornell_camera<float>();
         const prism::Film film = examples::timed_render("cornell_caustics", camera, mapper, options.render);
         prism::write_png(film, options.out / "cornell_caustics.png");
         prism::write_pfm(film, options.out / "cornell_caustics.pfm");
+        if (!options.povray.empty()) examples::write_comparison(film, options.povray, options.out / "cornell_caustics_vs_povray.png");
         // Where the photons landed: each photon's power, summed per pixel (one photon per
         // pixel of the global map reads as mid-grey).
         const float gain = float(options.photons) / 200000.0f * 40.0f;

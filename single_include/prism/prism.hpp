@@ -244,7 +244,7 @@ template <Scalar T>
 // of largest extent (found with std::nth_element, O(n log n) overall). A node stores
 // only its split value and axis; ranges, and whether a node is a leaf, follow from the
 // point count. The points are copied in tree order, so a leaf is contiguous in memory.
-// Queries allocate nothing; k is a compile-time constant. Neighbours are ordered by
+// Queries allocate nothing; the capacity K is a compile-time constant. Neighbours are ordered by
 // (squared distance, index), so ties are broken the same way as a brute-force search.
 // Distances are squared throughout, radii are not.
 
@@ -358,11 +358,21 @@ public:
     template <std::size_t K>
     [[nodiscard]] constexpr NearestNeighbours<T, K> nearest(const Point& q) const noexcept
     {
+        return nearest<K>(q, K, infinity<T>);
+    }
+
+    /// The k <= K nearest points to q within max_radius (distance <= max_radius), nearest
+    /// first, ties by lower index: K is the capacity, fixed at compile time, k and the
+    /// radius are chosen at run time (Jensen's k-nearest search with a maximum distance).
+    template <std::size_t K>
+    [[nodiscard]] constexpr NearestNeighbours<T, K> nearest(const Point& q, std::size_t k, T max_radius) const noexcept
+    {
         static_assert(K >= 1);
         NearestNeighbours<T, K> heap; // a max-heap on (distance, index) while searching
-        if (points_.empty()) return heap;
+        k = k < K ? k : K;
+        if (points_.empty() || k == 0 || !(max_radius >= T(0))) return heap;
         Point offsets{};
-        search_nearest<K>(q, 1, 0, points_.size(), offsets, heap);
+        search_nearest<K>(q, k, max_radius * max_radius, 1, 0, points_.size(), offsets, heap);
         if constexpr (K > 1) std::sort_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
         return heap;
     }
@@ -427,17 +437,17 @@ private:
     // keep that, so a point exactly on a cell's corner is never pruned, and ties at equal
     // distance resolve by index exactly as in a brute-force search.
 
-    /// Replace the largest of a full max-heap and sift the newcomer down: one pass of
-    /// log K steps, where pop_heap then push_heap take two.
+    /// Replace the largest of a full max-heap of k items and sift the newcomer down: one
+    /// pass of log k steps, where pop_heap then push_heap take two.
     template <std::size_t K>
-    static constexpr void replace_top(std::array<Neighbour<T>, K>& heap, const Neighbour<T>& item) noexcept
+    static constexpr void replace_top(std::array<Neighbour<T>, K>& heap, std::size_t k, const Neighbour<T>& item) noexcept
     {
         std::size_t at = 0;
         for (;;) {
             const std::size_t left = 2 * at + 1;
-            if (left >= K) break;
+            if (left >= k) break;
             const std::size_t right = left + 1;
-            const std::size_t larger = right < K && heap[left] < heap[right] ? right : left;
+            const std::size_t larger = right < k && heap[left] < heap[right] ? right : left;
             if (!(item < heap[larger])) break;
             heap[at] = heap[larger];
             at = larger;
@@ -452,20 +462,22 @@ private:
         return total;
     }
 
+    // The search bound is the k-th distance once k are found, max_radius^2 before.
     template <std::size_t K>
-    constexpr void search_nearest(const Point& q, std::size_t node, std::size_t begin, std::size_t end, Point& offsets,
-                                  NearestNeighbours<T, K>& heap) const noexcept
+    constexpr void search_nearest(const Point& q, std::size_t k, T max2, std::size_t node, std::size_t begin, std::size_t end,
+                                  Point& offsets, NearestNeighbours<T, K>& heap) const noexcept
     {
         if (end - begin <= LeafSize) {
             for (std::size_t i = begin; i < end; ++i) {
                 const Neighbour<T> candidate{distance2(q, points_[i]), index_[i]};
+                if (!(candidate.distance2 <= max2)) continue;
                 if constexpr (K == 1) { // the one nearest: no heap needed
                     if (heap.count == 0 || candidate < heap.items[0]) heap.items[0] = candidate, heap.count = 1;
-                } else if (heap.count < K) {
+                } else if (heap.count < k) {
                     heap.items[heap.count++] = candidate;
                     std::push_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
                 } else if (candidate < heap.items[0]) {
-                    replace_top(heap.items, candidate);
+                    replace_top(heap.items, k, candidate);
                 }
             }
             return;
@@ -474,15 +486,15 @@ private:
         const std::size_t mid = middle(begin, end);
         const T diff = q[axis] - split_[node];
         const bool left_first = diff < T(0);
-        if (left_first) search_nearest<K>(q, 2 * node, begin, mid, offsets, heap);
-        else search_nearest<K>(q, 2 * node + 1, mid, end, offsets, heap);
+        if (left_first) search_nearest<K>(q, k, max2, 2 * node, begin, mid, offsets, heap);
+        else search_nearest<K>(q, k, max2, 2 * node + 1, mid, end, offsets, heap);
         // The far side: its cell is diff^2 away along this axis. Equal distances are
         // searched too, so ties resolve by index exactly as brute force does.
         const T saved = offsets[axis];
         offsets[axis] = diff * diff;
-        if (heap.count < K || sum(offsets) <= heap.items[0].distance2) {
-            if (left_first) search_nearest<K>(q, 2 * node + 1, mid, end, offsets, heap);
-            else search_nearest<K>(q, 2 * node, begin, mid, offsets, heap);
+        if (sum(offsets) <= (heap.count < k ? max2 : heap.items[0].distance2)) {
+            if (left_first) search_nearest<K>(q, k, max2, 2 * node + 1, mid, end, offsets, heap);
+            else search_nearest<K>(q, k, max2, 2 * node, begin, mid, offsets, heap);
         }
         offsets[axis] = saved;
     }
@@ -1995,8 +2007,9 @@ inline constexpr T shadow_epsilon = T(1e-4);
 /// For each light in front of the surface (unit normal n facing the viewer), call
 /// f(sample, v, cos): the light's sample at the point, the shadow ray's transmittance v
 /// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface. Lights
-/// behind the surface are not visited: they count as occluded.
-template <class SceneT, Scalar T, class F>
+/// behind the surface are not visited: they count as occluded. With GlassTransmits =
+/// false, dielectrics cast full shadows (see Scene::transmittance).
+template <bool GlassTransmits = true, class SceneT, Scalar T, class F>
 void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const Vec3<T>& n, F&& f)
 {
     scene.for_each_light([&](const auto& light) {
@@ -2004,7 +2017,7 @@ void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const 
         const T cos = dot(n, s.wi);
         if (!(cos > T(0))) return;
         const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
-        f(s, scene.transmittance(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
+        f(s, scene.template transmittance<GlassTransmits>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
     });
 }
 
@@ -2302,6 +2315,7 @@ template <Scalar T>
 
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <span>
 #include <vector>
@@ -2319,9 +2333,65 @@ struct PhotonPositions {
     [[nodiscard]] float coordinate(std::size_t i, std::size_t axis) const noexcept { return photons[i].position[static_cast<int>(axis)]; }
 };
 
+/// The density estimate's kernel over the disk of radius r that holds the photons.
+enum class Filter : std::uint8_t {
+    box,      ///< every photon counts the same
+    cone,     ///< weight 1 - d / r (Jensen 1996)
+    gaussian, ///< Pavicic's truncated Gaussian, shape as in Jensen (2001), normalised exactly
+};
+
+/// How a density estimate gathers and weighs photons.
+struct Estimator {
+    std::size_t k = 0;   ///< 0: every photon within `radius`; else the k nearest, searched no further than `radius`
+    float radius = 0.1f; ///< the fixed radius, or the k-nearest search's maximum distance
+    Filter filter = Filter::box;
+    float disk = 1.0f;          ///< keep photons within disk * r of the tangent plane; < 1 flattens the sphere against light leaks
+    std::uint8_t excluded = 0;  ///< leave out photons with any of these flags
+};
+
+namespace detail {
+
+/// A filter's weight at squared distance d2 within radius^2 r2, and its mean over the disk
+/// (the normalisation: a uniform density gives back itself).
+struct FilterWeight {
+    Filter filter;
+
+    static constexpr float gaussian_alpha = 0.918f, gaussian_beta = 1.953f;
+
+    [[nodiscard]] float operator()(float d2, float r2) const noexcept
+    {
+        switch (filter) {
+        case Filter::cone: return 1.0f - std::sqrt(d2 / r2);
+        case Filter::gaussian:
+            return gaussian_alpha * (1.0f - (1.0f - std::exp(-gaussian_beta * d2 / (2.0f * r2))) / (1.0f - std::exp(-gaussian_beta)));
+        case Filter::box: break;
+        }
+        return 1.0f;
+    }
+
+    /// Mean weight over the disk. Cone: 1/3. Gaussian: with u = d^2 / r^2 uniform on [0, 1],
+    /// E[exp(-beta u / 2)] = (1 - exp(-beta / 2)) / (beta / 2), which gives 0.531 for
+    /// Jensen's alpha and beta, not 1: dividing by pi r^2 alone would halve the estimate.
+    [[nodiscard]] float mean() const noexcept
+    {
+        switch (filter) {
+        case Filter::cone: return 1.0f / 3.0f;
+        case Filter::gaussian: {
+            const float m = (1.0f - std::exp(-gaussian_beta / 2.0f)) / (gaussian_beta / 2.0f);
+            return gaussian_alpha * (1.0f - (1.0f - m) / (1.0f - std::exp(-gaussian_beta)));
+        }
+        case Filter::box: break;
+        }
+        return 1.0f;
+    }
+};
+
+} // namespace detail
+
 class PhotonMap {
 public:
     using Tree = KdTree<PhotonPositions, 8>;
+    static constexpr std::size_t max_k = 512; ///< the most photons a k-nearest estimate gathers
 
     PhotonMap() = default;
 
@@ -2331,37 +2401,51 @@ public:
     [[nodiscard]] std::size_t size() const noexcept { return photons_.size(); }
     [[nodiscard]] const std::vector<Photon>& photons() const noexcept { return photons_; }
 
-    /// Irradiance at p on a surface with unit normal n, from the K nearest photons
-    /// (Jensen 1996, eq. 6 with a diffuse BRDF taken out): E = sum of the powers of
-    /// those arriving on n's side, over the disk pi r^2 that reaches the Kth. Shadow
-    /// photons carry no power and are left out of the count. Calibrated: each photon
-    /// carries power / photons emitted, so the estimate does not depend on the count.
+    /// Irradiance at p on a surface with unit normal n (Jensen 1996, eq. 6 with a diffuse
+    /// BRDF taken out): the filtered sum of the powers of the photons that arrived on n's
+    /// side, over the disk pi r^2 that holds them. With k nearest, r reaches the k-th
+    /// (or is the search's maximum, when fewer were found: then every photon within it
+    /// was). Shadow photons carry no power. Calibrated: each photon carries power /
+    /// photons emitted, so the estimate does not depend on the count.
+    [[nodiscard]] Rgb<float> irradiance(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator) const noexcept
+    {
+        Rgb<float> sum(0.0f);
+        if (!tree_ || photons_.empty() || !(estimator.radius > 0.0f)) return sum;
+        const detail::FilterWeight weight{estimator.filter};
+        const auto add = [&](std::uint32_t index, float d2, float r2) {
+            const Photon& photon = photons_[index];
+            if ((photon.flags & estimator.excluded) != 0 || !(dot(photon.from, n) > 0.0f)) return;
+            const float height = dot(photon.position - p, n);
+            if (height * height > estimator.disk * estimator.disk * r2) return;
+            sum += photon.power * weight(d2, r2);
+        };
+        float r2 = estimator.radius * estimator.radius;
+        if (estimator.k == 0) {
+            tree_->within({p.x, p.y, p.z}, estimator.radius, [&](std::uint32_t index, float d2) { add(index, d2, r2); });
+        } else {
+            const auto found = tree_->nearest<max_k>({p.x, p.y, p.z}, estimator.k, estimator.radius);
+            if (found.size() == 0) return sum;
+            if (found.size() == std::min(estimator.k, max_k) || !(r2 < infinity<float>)) r2 = found[found.size() - 1].distance2;
+            if (!(r2 > 0.0f)) return Rgb<float>(0.0f);
+            for (const Neighbour<float>& neighbour : found) add(neighbour.index, neighbour.distance2, r2);
+        }
+        return sum / (weight.mean() * pi<float> * r2);
+    }
+
+    /// The box-filtered estimate from the K nearest, searched without limit.
     template <std::size_t K>
     [[nodiscard]] Rgb<float> irradiance(const Vec3<float>& p, const Vec3<float>& n) const noexcept
     {
-        if (!tree_ || photons_.empty()) return Rgb<float>(0.0f);
-        const auto found = tree_->nearest<K>({p.x, p.y, p.z});
-        Rgb<float> sum(0.0f);
-        for (const Neighbour<float>& neighbour : found) {
-            const Photon& photon = photons_[neighbour.index];
-            if (dot(photon.from, n) > 0.0f) sum += photon.power;
-        }
-        const float r2 = found[found.size() - 1].distance2;
-        return r2 > 0.0f ? sum / (pi<float> * r2) : Rgb<float>(0.0f);
+        static_assert(K <= max_k);
+        return irradiance(p, n, {.k = K, .radius = infinity<float>});
     }
 
-    /// The same within a fixed radius: E = sum of the powers within r over pi r^2,
-    /// leaving out photons with any of the `excluded` flags.
+    /// The box-filtered estimate within a fixed radius, leaving out photons with any of
+    /// the `excluded` flags.
     [[nodiscard]] Rgb<float> irradiance_within(const Vec3<float>& p, const Vec3<float>& n, float radius,
                                                std::uint8_t excluded = 0) const noexcept
     {
-        Rgb<float> sum(0.0f);
-        if (!tree_ || !(radius > 0.0f)) return sum;
-        tree_->within({p.x, p.y, p.z}, radius, [&](std::uint32_t index, float) {
-            const Photon& photon = photons_[index];
-            if ((photon.flags & excluded) == 0 && dot(photon.from, n) > 0.0f) sum += photon.power;
-        });
-        return sum / (pi<float> * radius * radius);
+        return irradiance(p, n, {.radius = radius, .excluded = excluded});
     }
 
     /// Precompute irradiance at every `stride`-th photon from its K nearest (Christensen
@@ -2392,17 +2476,19 @@ public:
         return Rgb<float>(0.0f);
     }
 
-    /// How many of the K nearest photons are direct, and how many are shadow photons
-    /// (Jensen and Christensen 1995: all direct means lit, all shadow means in shadow).
-    template <std::size_t K>
-    [[nodiscard]] std::pair<std::size_t, std::size_t> direct_and_shadow(const Vec3<float>& p) const noexcept
+    /// How many of the k nearest photons within max_radius that arrived on n's side are
+    /// direct, and how many are shadow photons (Jensen and Christensen 1995: all direct
+    /// means lit, all shadow means in shadow).
+    [[nodiscard]] std::pair<std::size_t, std::size_t> direct_and_shadow(const Vec3<float>& p, const Vec3<float>& n, std::size_t k,
+                                                                        float max_radius) const noexcept
     {
         std::size_t direct = 0, shadow = 0;
-        if (!tree_ || photons_.empty()) return {0, 0};
-        for (const Neighbour<float>& neighbour : tree_->nearest<K>({p.x, p.y, p.z})) {
-            const std::uint8_t flags = photons_[neighbour.index].flags;
-            direct += (flags & Photon::direct) != 0;
-            shadow += (flags & Photon::shadow) != 0;
+        if (!tree_) return {0, 0};
+        for (const Neighbour<float>& neighbour : tree_->nearest<max_k>({p.x, p.y, p.z}, k, max_radius)) {
+            const Photon& photon = photons_[neighbour.index];
+            if (!(dot(photon.from, n) > 0.0f)) continue;
+            direct += (photon.flags & Photon::direct) != 0;
+            shadow += (photon.flags & Photon::shadow) != 0;
         }
         return {direct, shadow};
     }
@@ -2493,8 +2579,9 @@ template <class S, class M>
 // trace_photons: emit photons from the lights and follow them through a scene into a
 // global and a caustic photon map (Jensen 1996, section 2.1).
 //
-// Global map: photons emitted uniformly over the sphere from each point light, stored
-// at every diffuse hit (flagged direct on the first, caustic when only specular
+// Global map: photons emitted uniformly over the sphere from each point light, and from
+// each parallel light through a disk facing it that covers every bounded object (the
+// projection disk), stored at every diffuse hit (flagged direct on the first, caustic when only specular
 // bounces came before). Caustic map: photons aimed at the bounding spheres of specular
 // objects (POV-Ray's `target`), their power scaled by the aimed cone's share of the
 // sphere, stored only at the first diffuse hit after one or more specular bounces
@@ -2504,7 +2591,10 @@ template <class S, class M>
 // reflectance. Shadow photons mark where the straight continuation of a direct
 // photon's path meets further diffuse surfaces (Jensen and Christensen 1995; errata 8).
 // Every photon draws from its own random stream, so the maps are the same bits for any
-// thread count.
+// thread count. A point light with Falloff::none (POV-Ray's `fade_power 0`) has no
+// physical power; its photons are scaled by the squared length of the path they
+// travelled, as POV-Ray does, so that their estimate gives irradiance that does not
+// fall off with distance either.
 
 
 #include <algorithm>
@@ -2532,15 +2622,17 @@ struct PhotonMaps {
 
 namespace detail {
 
-/// Where caustic photons toward one specular object start: a cone of directions from a
-/// point light, or (parallel light) a disk facing the light, upstream of the scene.
+/// Where a map's photons start: a point light's whole sphere of directions or a cone of
+/// them toward one specular object, or a disk facing a parallel light, upstream of the
+/// scene.
 template <Scalar T>
-struct CausticTarget {
+struct Emitter {
     Vec3<T> from{};
     Vec3<T> axis{};
-    T cos_half_angle = T(-1); ///< -1: the light is inside the sphere, the cone is everything
+    T cos_half_angle = T(-1); ///< -1: every direction
     Rgb<T> power{};           ///< the power into this cone (Phi * solid angle / 4 pi) or onto this disk (E pi r^2)
     T disk_radius = T(0);     ///< > 0: parallel light from a disk of this radius centred on `from`
+    bool distance_squared = false; ///< Falloff::none: scale by the squared path length when stored
 };
 
 /// A point uniform on the disk of radius r centred at c, perpendicular to the unit axis.
@@ -2573,88 +2665,88 @@ public:
     {
         scene.for_each_light([&](const auto& light) {
             using L = std::remove_cvref_t<decltype(light)>;
-            if constexpr (std::is_same_v<L, PointLight<T>>) {
-                lights_.push_back(light);
-                total_power_ += max_component(light.power());
-            } else if constexpr (std::is_same_v<L, DirectionalLight<T>>) {
-                suns_.push_back(light);
-            }
+            if constexpr (std::is_same_v<L, PointLight<T>>) lights_.push_back(light);
+            else if constexpr (std::is_same_v<L, DirectionalLight<T>>) suns_.push_back(light);
         });
-        collect_targets();
+        // A sphere around everything bounded: parallel photons start outside it.
+        std::apply([&](const auto&... slot) { (add_to_extent(slot), ...); }, scene_.slots);
+        for (const PointLight<T>& light : lights_)
+            global_.push_back({light.position, {T(0), T(1), T(0)}, T(-1), light.power(), T(0), light.falloff == Falloff::none});
+        if (!extent_.empty()) {
+            const Vec3<T> middle = T(0.5) * (extent_.lo + extent_.hi);
+            const T radius = T(0.5) * length(extent_.hi - extent_.lo);
+            for (const DirectionalLight<T>& sun : suns_) {
+                const Vec3<T> axis = normalize(sun.direction);
+                global_.push_back({middle - T(2) * radius * axis, axis, T(-1), sun.irradiance * (pi<T> * radius * radius), radius});
+            }
+        }
+        std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
+        for (const auto& e : global_) global_power_ += max_component(e.power);
+        for (const auto& e : targets_) target_power_ += max_component(e.power);
     }
 
     /// Photons [first, last) of the global map, appended to `out`.
     void trace_global(std::size_t first, std::size_t last, std::vector<Photon>& out) const
     {
-        if (lights_.empty() || !(total_power_ > T(0))) return;
-        for (std::size_t i = first; i < last; ++i) {
-            Pcg32 rng(config_.seed, 2 * i);
-            // Choose a light by its share of the power; the photon carries Phi / (N p).
-            const PointLight<T>* light = &lights_.back();
-            T p = T(1), u = rng.uniform<T>() * total_power_;
-            for (const PointLight<T>& l : lights_) {
-                const T share = max_component(l.power());
-                if (u < share) {
-                    light = &l;
-                    p = share / total_power_;
-                    break;
-                }
-                u -= share;
-            }
-            const Rgb<T> power = light->power() / (T(config_.global_photons) * p);
-            follow({light->position, uniform_sphere<T>(rng)}, power, rng, false, out);
-        }
+        for (std::size_t i = first; i < last; ++i) emit(global_, global_power_, config_.global_photons, i, false, out);
     }
 
     /// Photons [first, last) of the caustic map, appended to `out`.
     void trace_caustic(std::size_t first, std::size_t last, std::vector<Photon>& out) const
     {
-        if (targets_.empty()) return;
-        for (std::size_t i = first; i < last; ++i) {
-            Pcg32 rng(config_.seed, 2 * i + 1);
-            // Choose a cone by its share of the power aimed at specular objects.
-            const CausticTarget<T>* target = &targets_.back();
-            T p = T(1), u = rng.uniform<T>() * target_power_;
-            for (const CausticTarget<T>& c : targets_) {
-                const T share = max_component(c.power);
-                if (u < share) {
-                    target = &c;
-                    p = share / target_power_;
-                    break;
-                }
-                u -= share;
-            }
-            const Rgb<T> power = target->power / (T(config_.caustic_photons) * p);
-            if (target->disk_radius > T(0)) {
-                follow({uniform_disk(target->from, target->axis, target->disk_radius, rng), target->axis}, power, rng, true, out);
-                continue;
-            }
-            const Vec3<T> direction =
-                target->cos_half_angle <= T(-1) ? uniform_sphere<T>(rng) : uniform_cone(target->axis, target->cos_half_angle, rng);
-            follow({target->from, direction}, power, rng, true, out);
-        }
+        for (std::size_t i = first; i < last; ++i) emit(targets_, target_power_, config_.caustic_photons, i, true, out);
     }
 
 private:
+    /// Photon i of a map of `count`: choose an emitter by its share of the power (the
+    /// photon carries its power / (count p)), draw where it starts, and follow it.
+    void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass,
+              std::vector<Photon>& out) const
+    {
+        if (emitters.empty() || !(total_power > T(0))) return;
+        Pcg32 rng(config_.seed, 2 * i + (caustic_pass ? 1 : 0));
+        const Emitter<T>* e = &emitters.back();
+        T p = T(1), u = rng.uniform<T>() * total_power;
+        for (const Emitter<T>& candidate : emitters) {
+            const T share = max_component(candidate.power);
+            if (u < share) {
+                e = &candidate;
+                p = share / total_power;
+                break;
+            }
+            u -= share;
+        }
+        const Rgb<T> power = e->power / (T(count) * p);
+        if (e->disk_radius > T(0)) {
+            follow({uniform_disk(e->from, e->axis, e->disk_radius, rng), e->axis}, power, false, rng, caustic_pass, out);
+            return;
+        }
+        const Vec3<T> direction = e->cos_half_angle <= T(-1) ? uniform_sphere<T>(rng) : uniform_cone(e->axis, e->cos_half_angle, rng);
+        follow({e->from, direction}, power, e->distance_squared, rng, caustic_pass, out);
+    }
+
     /// Follow one photon; in the caustic pass store only L S+ D and stop there.
-    void follow(Ray<T> ray, Rgb<T> power, Pcg32& rng, bool caustic_pass, std::vector<Photon>& out) const
+    void follow(Ray<T> ray, Rgb<T> power, bool distance_squared, Pcg32& rng, bool caustic_pass, std::vector<Photon>& out) const
     {
         bool direct = true, specular_only = true;
+        T travelled = T(0);
         for (int bounce = 0; bounce <= config_.max_bounces; ++bounce) {
             const auto hit = scene_.closest_hit(ray, {T(0), infinity<T>});
             if (!hit) return;
             const Crossing<T>& c = hit->crossing;
             const Vec3<T> d = normalize(ray.direction);
+            travelled += c.t * length(ray.direction);
+            const auto stored = [&] { return distance_squared ? power * (travelled * travelled) : power; };
             const Vec3<T> n = c.entering ? c.normal : -c.normal; // facing the photon
             const bool go_on = scene_.visit_material(*hit, [&]<class M>(const M& material) -> bool {
                 if constexpr (has_diffuse<M>) {
                     if (caustic_pass) {
-                        if (!direct && specular_only) out.push_back(photon(c.point, power, d, Photon::caustic));
+                        if (!direct && specular_only) out.push_back(photon(c.point, stored(), d, Photon::caustic));
                         return false;
                     }
                     std::uint8_t flags = direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
                     if (!direct && specular_only) flags |= Photon::caustic;
-                    out.push_back(photon(c.point, power, d, flags));
+                    out.push_back(photon(c.point, stored(), d, flags));
                     if (direct && config_.shadow_photons) store_shadow_photons(c, d, out);
                     const Rgb<T> reflectance = component_min(material.albedo.albedo(c.point) * material.kd, Rgb<T>(T(1)));
                     if (!russian_roulette(power, reflectance, rng)) return false;
@@ -2700,16 +2792,6 @@ private:
         }
     }
 
-    /// A cone from every point light, and a disk for every parallel light, to every
-    /// bounded specular object.
-    void collect_targets()
-    {
-        // A sphere around everything bounded: parallel photons start outside it.
-        std::apply([&](const auto&... slot) { (add_to_extent(slot), ...); }, scene_.slots);
-        std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
-        for (const auto& t : targets_) target_power_ += max_component(t.power);
-    }
-
     template <class Slot>
     void add_to_extent(const Slot& slot)
     {
@@ -2730,7 +2812,7 @@ private:
                 for (const PointLight<T>& light : lights_) {
                     const Vec3<T> to = centre - light.position;
                     const T distance = length(to);
-                    CausticTarget<T> target{light.position, to / distance, T(-1), light.power()};
+                    Emitter<T> target{light.position, to / distance, T(-1), light.power(), T(0), light.falloff == Falloff::none};
                     if (distance > radius) {
                         const T sin_half = radius / distance;
                         target.cos_half_angle = prism::sqrt(T(1) - sin_half * sin_half);
@@ -2752,10 +2834,11 @@ private:
     const SceneT& scene_;
     PhotonTracerConfig config_;
     std::vector<PointLight<T>> lights_;
-    std::vector<DirectionalLight<T>> suns_; ///< parallel lights: caustic photons only, for now
+    std::vector<DirectionalLight<T>> suns_;
     Aabb<T> extent_{};
-    T total_power_ = T(0);
-    std::vector<CausticTarget<T>> targets_;
+    std::vector<Emitter<T>> global_;  ///< every light's emission for the global map
+    T global_power_ = T(0);
+    std::vector<Emitter<T>> targets_; ///< cones and disks toward specular objects, for the caustic map
     T target_power_ = T(0);
 };
 
@@ -2784,8 +2867,8 @@ std::vector<Photon> in_blocks(std::size_t count, unsigned threads, Trace&& trace
 
 } // namespace detail
 
-/// Trace the global and caustic photon maps of a scene. Point lights emit into both;
-/// directional lights, for now, only caustic photons (aimed at specular objects).
+/// Trace the global and caustic photon maps of a scene, from its point and directional
+/// lights.
 template <class SceneT>
 [[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config)
 {
@@ -2807,8 +2890,13 @@ template <class SceneT>
 // light from photon maps (Jensen 1996, section 3).
 //
 // At a diffuse point, with the same convention as Whitted (BRDF albedo kd / pi):
-//   direct     shadow rays to the lights (exactly Whitted's term, without ambient)
-//   caustics   the caustic map's irradiance within `caustic_radius`
+//   direct     shadow rays to the lights (Whitted's term without ambient), with glass
+//              opaque: the light through it is the caustic map's. Optionally a shadow
+//              ray is skipped where the nearest global photons agree that the point is
+//              lit (all direct) or in shadow (all shadow photons; Jensen and
+//              Christensen 1995).
+//   caustics   the caustic map's density estimate (radius or k nearest, box, cone or
+//              Gaussian filter)
 //   indirect   final gathering: `gather_rays` cosine-distributed rays, each reading the
 //              global map's irradiance where it lands (L = albedo / pi * E there), so the
 //              blotchy global estimate is seen only after one more bounce. The global
@@ -2820,6 +2908,7 @@ template <class SceneT>
 // Mirrors and dielectrics recurse as in Whitted.
 
 
+#include <algorithm>
 #include <optional>
 
 namespace prism {
@@ -2832,9 +2921,15 @@ public:
 
     struct Config {
         PhotonTracerConfig photons{};
-        T caustic_radius = T(0.1); ///< radius of the caustic estimate
-        T global_radius = T(0.25); ///< radius of the global estimate read directly (gather_rays = 0)
-        int gather_rays = 32;      ///< final-gather rays per diffuse hit; 0 reads the global map directly
+        Estimator caustic{.radius = 0.1f}; ///< the caustic map's estimate
+        /// The global map's estimate where it is read directly (gather_rays = 0); direct
+        /// and caustic photons are left out, shadow rays and the caustic map count them.
+        Estimator global{.radius = 0.25f, .excluded = Photon::direct | Photon::caustic};
+        int gather_rays = 32; ///< final-gather rays per diffuse hit; 0 reads the global map directly
+        /// > 0: look at this many nearest global photons (within global.radius) before a
+        /// shadow ray, and skip it when they agree. Scenes with one light only: shadow
+        /// photons do not say which light they block.
+        std::size_t visibility_k = 0;
         int max_depth = 10;
         T min_weight = T(1e-3);
     };
@@ -2843,9 +2938,13 @@ public:
     PhotonMapper(const SceneT& scene, Config config) : scene_(&scene), config_(config)
     {
         scene.validate();
-        detail::require_positive("PhotonMapper caustic_radius", config.caustic_radius);
-        detail::require_positive("PhotonMapper global_radius", config.global_radius);
+        validate(config.caustic, "PhotonMapper caustic");
+        validate(config.global, "PhotonMapper global");
         if (config.gather_rays < 0) detail::throw_invalid("PhotonMapper gather_rays must be >= 0, got ", config.gather_rays);
+        int lights = 0;
+        scene.for_each_light([&](const auto&) { ++lights; });
+        if (config.visibility_k > 0 && lights != 1)
+            detail::throw_invalid("PhotonMapper visibility_k needs a scene with exactly one light, got lights: ", lights);
         maps_ = trace_photons(scene, config.photons);
         if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4);
     }
@@ -2855,7 +2954,29 @@ public:
 
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng); }
 
+    /// What the nearest global photons say about the light's visibility at p (normal n
+    /// facing the viewer): true when the `visibility_k` nearest within global.radius
+    /// that arrived on n's side hold direct photons and no shadow photons, false for
+    /// the reverse, nothing when they disagree or too few (under half) are either.
+    [[nodiscard]] std::optional<bool> visibility_from_photons(const Vec3<T>& p, const Vec3<T>& n) const noexcept
+    {
+        if (config_.visibility_k == 0) return std::nullopt;
+        const auto [direct, shadow] =
+            maps_.global.direct_and_shadow(Vec3<float>(p), Vec3<float>(n), config_.visibility_k, config_.global.radius);
+        const std::size_t enough = std::max<std::size_t>(config_.visibility_k / 2, 1);
+        if (direct >= enough && shadow == 0) return true;
+        if (shadow >= enough && direct == 0) return false;
+        return std::nullopt;
+    }
+
 private:
+    static void validate(const Estimator& e, const char* name)
+    {
+        if (!(e.radius > 0.0f)) detail::throw_invalid(name, " radius must be > 0, got ", e.radius);
+        if (e.k > PhotonMap::max_k) detail::throw_invalid(name, " k must be at most ", PhotonMap::max_k, ", got ", e.k);
+        if (!(e.disk > 0.0f)) detail::throw_invalid(name, " disk must be > 0, got ", e.disk);
+    }
+
     [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng) const noexcept
     {
         const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
@@ -2873,9 +2994,9 @@ private:
         if constexpr (has_diffuse<M>) {
             const Rgb<T> brdf = material.albedo.albedo(hit.point) * (material.kd / pi<T>);
             const Vec3<float> p(hit.point), nf(n);
-            Rgb<T> irradiance = direct(hit, n) + Rgb<T>(maps_.caustic.irradiance_within(p, nf, float(config_.caustic_radius)));
+            Rgb<T> irradiance = direct(hit, n) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
             if (config_.gather_rays > 0) irradiance += gather(hit, n, rng);
-            else irradiance += Rgb<T>(maps_.global.irradiance_within(p, nf, float(config_.global_radius), Photon::direct | Photon::caustic));
+            else irradiance += Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
             radiance += brdf * irradiance;
         }
         if constexpr (reflects<M> || transmits<M>) {
@@ -2893,11 +3014,20 @@ private:
         return radiance;
     }
 
-    /// Irradiance from the lights by shadow rays.
+    /// Irradiance from the lights by shadow rays (glass opaque), or by what the photons
+    /// say about visibility where they agree.
     [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, const Vec3<T>& n) const noexcept
     {
         Rgb<T> irradiance{T(0)};
-        for_each_light_arriving(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
+        if (const std::optional<bool> visible = visibility_from_photons(hit.point, n)) {
+            if (!*visible) return irradiance;
+            scene_->for_each_light([&](const auto& light) {
+                const LightSample<T> s = light.sample(hit.point);
+                irradiance += s.irradiance * std::max(dot(n, s.wi), T(0));
+            });
+            return irradiance;
+        }
+        for_each_light_arriving<false>(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
         return irradiance;
     }
 
@@ -3712,13 +3842,16 @@ public:
     /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
     /// object is in the way, otherwise Beer-Lambert absorption (times kt per boundary)
     /// through every dielectric crossed, refraction ignored (the lecture notes' shadow
-    /// rays through transparent objects).
+    /// rays through transparent objects). With GlassTransmits = false dielectrics block
+    /// the ray like any other object: a photon mapper brings the light through them by
+    /// its caustic map instead (as POV-Ray does for photon targets).
+    template <bool GlassTransmits = true>
     [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
     {
         Rgb<T> tr{T(1)};
         const bool near_cluster = reaches_cluster(ray, {T(0), t_max});
         const bool open = [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return (transmittance_of_slot<I>(ray, t_max, tr, near_cluster) && ...);
+            return (transmittance_of_slot<I, GlassTransmits>(ray, t_max, tr, near_cluster) && ...);
         }(std::index_sequence_for<Slots...>{});
         return open ? tr : Rgb<T>{T(0)};
     }
@@ -3800,7 +3933,7 @@ private:
         return Hit<T>{crossings.front(), nearest.slot, nearest.index};
     }
 
-    template <std::size_t I>
+    template <std::size_t I, bool GlassTransmits>
     bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr, bool near_cluster) const noexcept
     {
         using Slot = std::tuple_element_t<I, std::tuple<Slots...>>;
@@ -3809,7 +3942,7 @@ private:
         for (const auto& object : objects_of(std::get<I>(slots))) {
             if (!worth_testing(object, near_cluster)) continue;
             const auto crossings = object.shape.template crossings<false>(ray, range);
-            if constexpr (!transmits<M>) {
+            if constexpr (!transmits<M> || !GlassTransmits) {
                 if (!crossings.empty()) return false;
             } else {
                 // Length of the ray inside the solid within [0, t_max].

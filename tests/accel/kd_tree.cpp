@@ -170,6 +170,28 @@ TEST_CASE_TEMPLATE("radius queries equal brute force", T, float, double)
     CHECK(radius_mismatches<T>(points, {{T(0.5), T(0.3), T(0.7)}}, T(0.01)) == 0); // inside the blob
 }
 
+TEST_CASE_TEMPLATE("k chosen at run time, with a maximum distance, equals brute force", T, float, double)
+{
+    prism::Pcg32 rng(5u, 5u);
+    const auto points = clustered<T>(rng, 8000);
+    auto queries = uniform<T>(rng, 150);
+    queries.push_back({T(0.5), T(0.3), T(0.7)});
+    const KdTree<ArrayPoints<T, 3>> tree(ArrayPoints<T, 3>{points});
+    int mismatches = 0;
+    for (const std::size_t k : {std::size_t(1), std::size_t(7), std::size_t(64), std::size_t(200)})
+        for (const T max_radius : {T(0.01), T(0.04), T(0.2), prism::infinity<T>})
+            for (const auto& q : queries) {
+                std::vector<Neighbour<T>> expected;
+                for (const auto& n : brute_force(points, q))
+                    if (n.distance2 <= max_radius * max_radius && expected.size() < std::min<std::size_t>(k, 128)) expected.push_back(n);
+                const auto got = tree.template nearest<128>(q, k, max_radius); // k = 200 is capped at the capacity 128
+                mismatches += !std::equal(got.begin(), got.end(), expected.begin(), expected.end());
+            }
+    CHECK(mismatches == 0);
+    CHECK(tree.template nearest<8>(queries[0], 0, T(1)).size() == 0);
+    CHECK(tree.template nearest<8>(queries[0], 8, T(-1)).size() == 0);
+}
+
 TEST_CASE("memory and size")
 {
     prism::Pcg32 rng(4u, 4u);

@@ -34,7 +34,7 @@ TEST_CASE("indirect light: a white wall facing a lit red floor turns red")
     const Ray<float> at_face{{3, 1, 0.3f}, normalize(Vec3<float>{-1, 0, -0.1f})};
     // Whitted, with direct light only, sees the face black.
     CHECK(Whitted(scene).radiance(at_face) == Rgb<float>(0.0f));
-    const PhotonMapper mapper(scene, {.photons = {.global_photons = 200000, .caustic_photons = 0}, .global_radius = 0.3f, .gather_rays = 0});
+    const PhotonMapper mapper(scene, {.photons = {.global_photons = 200000, .caustic_photons = 0}, .global = {.radius = 0.3f, .excluded = Photon::direct | Photon::caustic}, .gather_rays = 0});
     Pcg32 rng(2u, 2u);
     const Rgb<float> wall = mapper.radiance(at_face, rng);
     CHECK(wall.x > 0.005f);

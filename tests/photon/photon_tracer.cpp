@@ -106,8 +106,8 @@ TEST_CASE("shadow photons lie behind an occluder; the maps are the same bits for
     REQUIRE(one.global.size() == two.global.size());
     CHECK(one.global.photons() == two.global.photons()); // field by field: the struct has padding
     // Under the slab: only shadow photons among the direct-or-shadow ones; in the open: only direct.
-    const auto [direct_under, shadow_under] = one.global.direct_and_shadow<50>({0, 0, 0});
-    const auto [direct_open, shadow_open] = one.global.direct_and_shadow<50>({3, 0, 0});
+    const auto [direct_under, shadow_under] = one.global.direct_and_shadow({0, 0, 0}, {0, 1, 0}, 50, 1.0f);
+    const auto [direct_open, shadow_open] = one.global.direct_and_shadow({3, 0, 0}, {0, 1, 0}, 50, 1.0f);
     CHECK(direct_under == 0);
     CHECK(shadow_under > 0);
     CHECK(direct_open > 0);

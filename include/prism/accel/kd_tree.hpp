@@ -7,7 +7,7 @@
 // of largest extent (found with std::nth_element, O(n log n) overall). A node stores
 // only its split value and axis; ranges, and whether a node is a leaf, follow from the
 // point count. The points are copied in tree order, so a leaf is contiguous in memory.
-// Queries allocate nothing; k is a compile-time constant. Neighbours are ordered by
+// Queries allocate nothing; the capacity K is a compile-time constant. Neighbours are ordered by
 // (squared distance, index), so ties are broken the same way as a brute-force search.
 // Distances are squared throughout, radii are not.
 #pragma once
@@ -124,11 +124,21 @@ public:
     template <std::size_t K>
     [[nodiscard]] constexpr NearestNeighbours<T, K> nearest(const Point& q) const noexcept
     {
+        return nearest<K>(q, K, infinity<T>);
+    }
+
+    /// The k <= K nearest points to q within max_radius (distance <= max_radius), nearest
+    /// first, ties by lower index: K is the capacity, fixed at compile time, k and the
+    /// radius are chosen at run time (Jensen's k-nearest search with a maximum distance).
+    template <std::size_t K>
+    [[nodiscard]] constexpr NearestNeighbours<T, K> nearest(const Point& q, std::size_t k, T max_radius) const noexcept
+    {
         static_assert(K >= 1);
         NearestNeighbours<T, K> heap; // a max-heap on (distance, index) while searching
-        if (points_.empty()) return heap;
+        k = k < K ? k : K;
+        if (points_.empty() || k == 0 || !(max_radius >= T(0))) return heap;
         Point offsets{};
-        search_nearest<K>(q, 1, 0, points_.size(), offsets, heap);
+        search_nearest<K>(q, k, max_radius * max_radius, 1, 0, points_.size(), offsets, heap);
         if constexpr (K > 1) std::sort_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
         return heap;
     }
@@ -193,17 +203,17 @@ private:
     // keep that, so a point exactly on a cell's corner is never pruned, and ties at equal
     // distance resolve by index exactly as in a brute-force search.
 
-    /// Replace the largest of a full max-heap and sift the newcomer down: one pass of
-    /// log K steps, where pop_heap then push_heap take two.
+    /// Replace the largest of a full max-heap of k items and sift the newcomer down: one
+    /// pass of log k steps, where pop_heap then push_heap take two.
     template <std::size_t K>
-    static constexpr void replace_top(std::array<Neighbour<T>, K>& heap, const Neighbour<T>& item) noexcept
+    static constexpr void replace_top(std::array<Neighbour<T>, K>& heap, std::size_t k, const Neighbour<T>& item) noexcept
     {
         std::size_t at = 0;
         for (;;) {
             const std::size_t left = 2 * at + 1;
-            if (left >= K) break;
+            if (left >= k) break;
             const std::size_t right = left + 1;
-            const std::size_t larger = right < K && heap[left] < heap[right] ? right : left;
+            const std::size_t larger = right < k && heap[left] < heap[right] ? right : left;
             if (!(item < heap[larger])) break;
             heap[at] = heap[larger];
             at = larger;
@@ -218,20 +228,22 @@ private:
         return total;
     }
 
+    // The search bound is the k-th distance once k are found, max_radius^2 before.
     template <std::size_t K>
-    constexpr void search_nearest(const Point& q, std::size_t node, std::size_t begin, std::size_t end, Point& offsets,
-                                  NearestNeighbours<T, K>& heap) const noexcept
+    constexpr void search_nearest(const Point& q, std::size_t k, T max2, std::size_t node, std::size_t begin, std::size_t end,
+                                  Point& offsets, NearestNeighbours<T, K>& heap) const noexcept
     {
         if (end - begin <= LeafSize) {
             for (std::size_t i = begin; i < end; ++i) {
                 const Neighbour<T> candidate{distance2(q, points_[i]), index_[i]};
+                if (!(candidate.distance2 <= max2)) continue;
                 if constexpr (K == 1) { // the one nearest: no heap needed
                     if (heap.count == 0 || candidate < heap.items[0]) heap.items[0] = candidate, heap.count = 1;
-                } else if (heap.count < K) {
+                } else if (heap.count < k) {
                     heap.items[heap.count++] = candidate;
                     std::push_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
                 } else if (candidate < heap.items[0]) {
-                    replace_top(heap.items, candidate);
+                    replace_top(heap.items, k, candidate);
                 }
             }
             return;
@@ -240,15 +252,15 @@ private:
         const std::size_t mid = middle(begin, end);
         const T diff = q[axis] - split_[node];
         const bool left_first = diff < T(0);
-        if (left_first) search_nearest<K>(q, 2 * node, begin, mid, offsets, heap);
-        else search_nearest<K>(q, 2 * node + 1, mid, end, offsets, heap);
+        if (left_first) search_nearest<K>(q, k, max2, 2 * node, begin, mid, offsets, heap);
+        else search_nearest<K>(q, k, max2, 2 * node + 1, mid, end, offsets, heap);
         // The far side: its cell is diff^2 away along this axis. Equal distances are
         // searched too, so ties resolve by index exactly as brute force does.
         const T saved = offsets[axis];
         offsets[axis] = diff * diff;
-        if (heap.count < K || sum(offsets) <= heap.items[0].distance2) {
-            if (left_first) search_nearest<K>(q, 2 * node + 1, mid, end, offsets, heap);
-            else search_nearest<K>(q, 2 * node, begin, mid, offsets, heap);
+        if (sum(offsets) <= (heap.count < k ? max2 : heap.items[0].distance2)) {
+            if (left_first) search_nearest<K>(q, k, max2, 2 * node + 1, mid, end, offsets, heap);
+            else search_nearest<K>(q, k, max2, 2 * node, begin, mid, offsets, heap);
         }
         offsets[axis] = saved;
     }

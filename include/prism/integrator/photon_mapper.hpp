@@ -3,8 +3,13 @@
 // light from photon maps (Jensen 1996, section 3).
 //
 // At a diffuse point, with the same convention as Whitted (BRDF albedo kd / pi):
-//   direct     shadow rays to the lights (exactly Whitted's term, without ambient)
-//   caustics   the caustic map's irradiance within `caustic_radius`
+//   direct     shadow rays to the lights (Whitted's term without ambient), with glass
+//              opaque: the light through it is the caustic map's. Optionally a shadow
+//              ray is skipped where the nearest global photons agree that the point is
+//              lit (all direct) or in shadow (all shadow photons; Jensen and
+//              Christensen 1995).
+//   caustics   the caustic map's density estimate (radius or k nearest, box, cone or
+//              Gaussian filter)
 //   indirect   final gathering: `gather_rays` cosine-distributed rays, each reading the
 //              global map's irradiance where it lands (L = albedo / pi * E there), so the
 //              blotchy global estimate is seen only after one more bounce. The global
@@ -28,6 +33,7 @@
 #include <prism/optics/refract.hpp>
 #include <prism/photon/photon_tracer.hpp>
 
+#include <algorithm>
 #include <optional>
 
 namespace prism {
@@ -40,9 +46,15 @@ public:
 
     struct Config {
         PhotonTracerConfig photons{};
-        T caustic_radius = T(0.1); ///< radius of the caustic estimate
-        T global_radius = T(0.25); ///< radius of the global estimate read directly (gather_rays = 0)
-        int gather_rays = 32;      ///< final-gather rays per diffuse hit; 0 reads the global map directly
+        Estimator caustic{.radius = 0.1f}; ///< the caustic map's estimate
+        /// The global map's estimate where it is read directly (gather_rays = 0); direct
+        /// and caustic photons are left out, shadow rays and the caustic map count them.
+        Estimator global{.radius = 0.25f, .excluded = Photon::direct | Photon::caustic};
+        int gather_rays = 32; ///< final-gather rays per diffuse hit; 0 reads the global map directly
+        /// > 0: look at this many nearest global photons (within global.radius) before a
+        /// shadow ray, and skip it when they agree. Scenes with one light only: shadow
+        /// photons do not say which light they block.
+        std::size_t visibility_k = 0;
         int max_depth = 10;
         T min_weight = T(1e-3);
     };
@@ -51,9 +63,13 @@ public:
     PhotonMapper(const SceneT& scene, Config config) : scene_(&scene), config_(config)
     {
         scene.validate();
-        detail::require_positive("PhotonMapper caustic_radius", config.caustic_radius);
-        detail::require_positive("PhotonMapper global_radius", config.global_radius);
+        validate(config.caustic, "PhotonMapper caustic");
+        validate(config.global, "PhotonMapper global");
         if (config.gather_rays < 0) detail::throw_invalid("PhotonMapper gather_rays must be >= 0, got ", config.gather_rays);
+        int lights = 0;
+        scene.for_each_light([&](const auto&) { ++lights; });
+        if (config.visibility_k > 0 && lights != 1)
+            detail::throw_invalid("PhotonMapper visibility_k needs a scene with exactly one light, got lights: ", lights);
         maps_ = trace_photons(scene, config.photons);
         if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4);
     }
@@ -63,7 +79,29 @@ public:
 
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng); }
 
+    /// What the nearest global photons say about the light's visibility at p (normal n
+    /// facing the viewer): true when the `visibility_k` nearest within global.radius
+    /// that arrived on n's side hold direct photons and no shadow photons, false for
+    /// the reverse, nothing when they disagree or too few (under half) are either.
+    [[nodiscard]] std::optional<bool> visibility_from_photons(const Vec3<T>& p, const Vec3<T>& n) const noexcept
+    {
+        if (config_.visibility_k == 0) return std::nullopt;
+        const auto [direct, shadow] =
+            maps_.global.direct_and_shadow(Vec3<float>(p), Vec3<float>(n), config_.visibility_k, config_.global.radius);
+        const std::size_t enough = std::max<std::size_t>(config_.visibility_k / 2, 1);
+        if (direct >= enough && shadow == 0) return true;
+        if (shadow >= enough && direct == 0) return false;
+        return std::nullopt;
+    }
+
 private:
+    static void validate(const Estimator& e, const char* name)
+    {
+        if (!(e.radius > 0.0f)) detail::throw_invalid(name, " radius must be > 0, got ", e.radius);
+        if (e.k > PhotonMap::max_k) detail::throw_invalid(name, " k must be at most ", PhotonMap::max_k, ", got ", e.k);
+        if (!(e.disk > 0.0f)) detail::throw_invalid(name, " disk must be > 0, got ", e.disk);
+    }
+
     [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng) const noexcept
     {
         const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
@@ -81,9 +119,9 @@ private:
         if constexpr (has_diffuse<M>) {
             const Rgb<T> brdf = material.albedo.albedo(hit.point) * (material.kd / pi<T>);
             const Vec3<float> p(hit.point), nf(n);
-            Rgb<T> irradiance = direct(hit, n) + Rgb<T>(maps_.caustic.irradiance_within(p, nf, float(config_.caustic_radius)));
+            Rgb<T> irradiance = direct(hit, n) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
             if (config_.gather_rays > 0) irradiance += gather(hit, n, rng);
-            else irradiance += Rgb<T>(maps_.global.irradiance_within(p, nf, float(config_.global_radius), Photon::direct | Photon::caustic));
+            else irradiance += Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
             radiance += brdf * irradiance;
         }
         if constexpr (reflects<M> || transmits<M>) {
@@ -101,11 +139,20 @@ private:
         return radiance;
     }
 
-    /// Irradiance from the lights by shadow rays.
+    /// Irradiance from the lights by shadow rays (glass opaque), or by what the photons
+    /// say about visibility where they agree.
     [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, const Vec3<T>& n) const noexcept
     {
         Rgb<T> irradiance{T(0)};
-        for_each_light_arriving(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
+        if (const std::optional<bool> visible = visibility_from_photons(hit.point, n)) {
+            if (!*visible) return irradiance;
+            scene_->for_each_light([&](const auto& light) {
+                const LightSample<T> s = light.sample(hit.point);
+                irradiance += s.irradiance * std::max(dot(n, s.wi), T(0));
+            });
+            return irradiance;
+        }
+        for_each_light_arriving<false>(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
         return irradiance;
     }
 

@@ -6,6 +6,7 @@
 #include <prism/photon/photon.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <span>
 #include <vector>
@@ -23,9 +24,65 @@ struct PhotonPositions {
     [[nodiscard]] float coordinate(std::size_t i, std::size_t axis) const noexcept { return photons[i].position[static_cast<int>(axis)]; }
 };
 
+/// The density estimate's kernel over the disk of radius r that holds the photons.
+enum class Filter : std::uint8_t {
+    box,      ///< every photon counts the same
+    cone,     ///< weight 1 - d / r (Jensen 1996)
+    gaussian, ///< Pavicic's truncated Gaussian, shape as in Jensen (2001), normalised exactly
+};
+
+/// How a density estimate gathers and weighs photons.
+struct Estimator {
+    std::size_t k = 0;   ///< 0: every photon within `radius`; else the k nearest, searched no further than `radius`
+    float radius = 0.1f; ///< the fixed radius, or the k-nearest search's maximum distance
+    Filter filter = Filter::box;
+    float disk = 1.0f;          ///< keep photons within disk * r of the tangent plane; < 1 flattens the sphere against light leaks
+    std::uint8_t excluded = 0;  ///< leave out photons with any of these flags
+};
+
+namespace detail {
+
+/// A filter's weight at squared distance d2 within radius^2 r2, and its mean over the disk
+/// (the normalisation: a uniform density gives back itself).
+struct FilterWeight {
+    Filter filter;
+
+    static constexpr float gaussian_alpha = 0.918f, gaussian_beta = 1.953f;
+
+    [[nodiscard]] float operator()(float d2, float r2) const noexcept
+    {
+        switch (filter) {
+        case Filter::cone: return 1.0f - std::sqrt(d2 / r2);
+        case Filter::gaussian:
+            return gaussian_alpha * (1.0f - (1.0f - std::exp(-gaussian_beta * d2 / (2.0f * r2))) / (1.0f - std::exp(-gaussian_beta)));
+        case Filter::box: break;
+        }
+        return 1.0f;
+    }
+
+    /// Mean weight over the disk. Cone: 1/3. Gaussian: with u = d^2 / r^2 uniform on [0, 1],
+    /// E[exp(-beta u / 2)] = (1 - exp(-beta / 2)) / (beta / 2), which gives 0.531 for
+    /// Jensen's alpha and beta, not 1: dividing by pi r^2 alone would halve the estimate.
+    [[nodiscard]] float mean() const noexcept
+    {
+        switch (filter) {
+        case Filter::cone: return 1.0f / 3.0f;
+        case Filter::gaussian: {
+            const float m = (1.0f - std::exp(-gaussian_beta / 2.0f)) / (gaussian_beta / 2.0f);
+            return gaussian_alpha * (1.0f - (1.0f - m) / (1.0f - std::exp(-gaussian_beta)));
+        }
+        case Filter::box: break;
+        }
+        return 1.0f;
+    }
+};
+
+} // namespace detail
+
 class PhotonMap {
 public:
     using Tree = KdTree<PhotonPositions, 8>;
+    static constexpr std::size_t max_k = 512; ///< the most photons a k-nearest estimate gathers
 
     PhotonMap() = default;
 
@@ -35,37 +92,51 @@ public:
     [[nodiscard]] std::size_t size() const noexcept { return photons_.size(); }
     [[nodiscard]] const std::vector<Photon>& photons() const noexcept { return photons_; }
 
-    /// Irradiance at p on a surface with unit normal n, from the K nearest photons
-    /// (Jensen 1996, eq. 6 with a diffuse BRDF taken out): E = sum of the powers of
-    /// those arriving on n's side, over the disk pi r^2 that reaches the Kth. Shadow
-    /// photons carry no power and are left out of the count. Calibrated: each photon
-    /// carries power / photons emitted, so the estimate does not depend on the count.
+    /// Irradiance at p on a surface with unit normal n (Jensen 1996, eq. 6 with a diffuse
+    /// BRDF taken out): the filtered sum of the powers of the photons that arrived on n's
+    /// side, over the disk pi r^2 that holds them. With k nearest, r reaches the k-th
+    /// (or is the search's maximum, when fewer were found: then every photon within it
+    /// was). Shadow photons carry no power. Calibrated: each photon carries power /
+    /// photons emitted, so the estimate does not depend on the count.
+    [[nodiscard]] Rgb<float> irradiance(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator) const noexcept
+    {
+        Rgb<float> sum(0.0f);
+        if (!tree_ || photons_.empty() || !(estimator.radius > 0.0f)) return sum;
+        const detail::FilterWeight weight{estimator.filter};
+        const auto add = [&](std::uint32_t index, float d2, float r2) {
+            const Photon& photon = photons_[index];
+            if ((photon.flags & estimator.excluded) != 0 || !(dot(photon.from, n) > 0.0f)) return;
+            const float height = dot(photon.position - p, n);
+            if (height * height > estimator.disk * estimator.disk * r2) return;
+            sum += photon.power * weight(d2, r2);
+        };
+        float r2 = estimator.radius * estimator.radius;
+        if (estimator.k == 0) {
+            tree_->within({p.x, p.y, p.z}, estimator.radius, [&](std::uint32_t index, float d2) { add(index, d2, r2); });
+        } else {
+            const auto found = tree_->nearest<max_k>({p.x, p.y, p.z}, estimator.k, estimator.radius);
+            if (found.size() == 0) return sum;
+            if (found.size() == std::min(estimator.k, max_k) || !(r2 < infinity<float>)) r2 = found[found.size() - 1].distance2;
+            if (!(r2 > 0.0f)) return Rgb<float>(0.0f);
+            for (const Neighbour<float>& neighbour : found) add(neighbour.index, neighbour.distance2, r2);
+        }
+        return sum / (weight.mean() * pi<float> * r2);
+    }
+
+    /// The box-filtered estimate from the K nearest, searched without limit.
     template <std::size_t K>
     [[nodiscard]] Rgb<float> irradiance(const Vec3<float>& p, const Vec3<float>& n) const noexcept
     {
-        if (!tree_ || photons_.empty()) return Rgb<float>(0.0f);
-        const auto found = tree_->nearest<K>({p.x, p.y, p.z});
-        Rgb<float> sum(0.0f);
-        for (const Neighbour<float>& neighbour : found) {
-            const Photon& photon = photons_[neighbour.index];
-            if (dot(photon.from, n) > 0.0f) sum += photon.power;
-        }
-        const float r2 = found[found.size() - 1].distance2;
-        return r2 > 0.0f ? sum / (pi<float> * r2) : Rgb<float>(0.0f);
+        static_assert(K <= max_k);
+        return irradiance(p, n, {.k = K, .radius = infinity<float>});
     }
 
-    /// The same within a fixed radius: E = sum of the powers within r over pi r^2,
-    /// leaving out photons with any of the `excluded` flags.
+    /// The box-filtered estimate within a fixed radius, leaving out photons with any of
+    /// the `excluded` flags.
     [[nodiscard]] Rgb<float> irradiance_within(const Vec3<float>& p, const Vec3<float>& n, float radius,
                                                std::uint8_t excluded = 0) const noexcept
     {
-        Rgb<float> sum(0.0f);
-        if (!tree_ || !(radius > 0.0f)) return sum;
-        tree_->within({p.x, p.y, p.z}, radius, [&](std::uint32_t index, float) {
-            const Photon& photon = photons_[index];
-            if ((photon.flags & excluded) == 0 && dot(photon.from, n) > 0.0f) sum += photon.power;
-        });
-        return sum / (pi<float> * radius * radius);
+        return irradiance(p, n, {.radius = radius, .excluded = excluded});
     }
 
     /// Precompute irradiance at every `stride`-th photon from its K nearest (Christensen
@@ -96,17 +167,19 @@ public:
         return Rgb<float>(0.0f);
     }
 
-    /// How many of the K nearest photons are direct, and how many are shadow photons
-    /// (Jensen and Christensen 1995: all direct means lit, all shadow means in shadow).
-    template <std::size_t K>
-    [[nodiscard]] std::pair<std::size_t, std::size_t> direct_and_shadow(const Vec3<float>& p) const noexcept
+    /// How many of the k nearest photons within max_radius that arrived on n's side are
+    /// direct, and how many are shadow photons (Jensen and Christensen 1995: all direct
+    /// means lit, all shadow means in shadow).
+    [[nodiscard]] std::pair<std::size_t, std::size_t> direct_and_shadow(const Vec3<float>& p, const Vec3<float>& n, std::size_t k,
+                                                                        float max_radius) const noexcept
     {
         std::size_t direct = 0, shadow = 0;
-        if (!tree_ || photons_.empty()) return {0, 0};
-        for (const Neighbour<float>& neighbour : tree_->nearest<K>({p.x, p.y, p.z})) {
-            const std::uint8_t flags = photons_[neighbour.index].flags;
-            direct += (flags & Photon::direct) != 0;
-            shadow += (flags & Photon::shadow) != 0;
+        if (!tree_) return {0, 0};
+        for (const Neighbour<float>& neighbour : tree_->nearest<max_k>({p.x, p.y, p.z}, k, max_radius)) {
+            const Photon& photon = photons_[neighbour.index];
+            if (!(dot(photon.from, n) > 0.0f)) continue;
+            direct += (photon.flags & Photon::direct) != 0;
+            shadow += (photon.flags & Photon::shadow) != 0;
         }
         return {direct, shadow};
     }

@@ -2,8 +2,9 @@
 // trace_photons: emit photons from the lights and follow them through a scene into a
 // global and a caustic photon map (Jensen 1996, section 2.1).
 //
-// Global map: photons emitted uniformly over the sphere from each point light, stored
-// at every diffuse hit (flagged direct on the first, caustic when only specular
+// Global map: photons emitted uniformly over the sphere from each point light, and from
+// each parallel light through a disk facing it that covers every bounded object (the
+// projection disk), stored at every diffuse hit (flagged direct on the first, caustic when only specular
 // bounces came before). Caustic map: photons aimed at the bounding spheres of specular
 // objects (POV-Ray's `target`), their power scaled by the aimed cone's share of the
 // sphere, stored only at the first diffuse hit after one or more specular bounces
@@ -13,7 +14,10 @@
 // reflectance. Shadow photons mark where the straight continuation of a direct
 // photon's path meets further diffuse surfaces (Jensen and Christensen 1995; errata 8).
 // Every photon draws from its own random stream, so the maps are the same bits for any
-// thread count.
+// thread count. A point light with Falloff::none (POV-Ray's `fade_power 0`) has no
+// physical power; its photons are scaled by the squared length of the path they
+// travelled, as POV-Ray does, so that their estimate gives irradiance that does not
+// fall off with distance either.
 #pragma once
 
 #include <prism/core/offset.hpp>
@@ -29,6 +33,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <thread>
 #include <type_traits>
 #include <vector>
@@ -51,15 +56,17 @@ struct PhotonMaps {
 
 namespace detail {
 
-/// Where caustic photons toward one specular object start: a cone of directions from a
-/// point light, or (parallel light) a disk facing the light, upstream of the scene.
+/// Where a map's photons start: a point light's whole sphere of directions or a cone of
+/// them toward one specular object, or a disk facing a parallel light, upstream of the
+/// scene.
 template <Scalar T>
-struct CausticTarget {
+struct Emitter {
     Vec3<T> from{};
     Vec3<T> axis{};
-    T cos_half_angle = T(-1); ///< -1: the light is inside the sphere, the cone is everything
+    T cos_half_angle = T(-1); ///< -1: every direction
     Rgb<T> power{};           ///< the power into this cone (Phi * solid angle / 4 pi) or onto this disk (E pi r^2)
     T disk_radius = T(0);     ///< > 0: parallel light from a disk of this radius centred on `from`
+    bool distance_squared = false; ///< Falloff::none: scale by the squared path length when stored
 };
 
 /// A point uniform on the disk of radius r centred at c, perpendicular to the unit axis.
@@ -92,88 +99,88 @@ public:
     {
         scene.for_each_light([&](const auto& light) {
             using L = std::remove_cvref_t<decltype(light)>;
-            if constexpr (std::is_same_v<L, PointLight<T>>) {
-                lights_.push_back(light);
-                total_power_ += max_component(light.power());
-            } else if constexpr (std::is_same_v<L, DirectionalLight<T>>) {
-                suns_.push_back(light);
-            }
+            if constexpr (std::is_same_v<L, PointLight<T>>) lights_.push_back(light);
+            else if constexpr (std::is_same_v<L, DirectionalLight<T>>) suns_.push_back(light);
         });
-        collect_targets();
+        // A sphere around everything bounded: parallel photons start outside it.
+        std::apply([&](const auto&... slot) { (add_to_extent(slot), ...); }, scene_.slots);
+        for (const PointLight<T>& light : lights_)
+            global_.push_back({light.position, {T(0), T(1), T(0)}, T(-1), light.power(), T(0), light.falloff == Falloff::none});
+        if (!extent_.empty()) {
+            const Vec3<T> middle = T(0.5) * (extent_.lo + extent_.hi);
+            const T radius = T(0.5) * length(extent_.hi - extent_.lo);
+            for (const DirectionalLight<T>& sun : suns_) {
+                const Vec3<T> axis = normalize(sun.direction);
+                global_.push_back({middle - T(2) * radius * axis, axis, T(-1), sun.irradiance * (pi<T> * radius * radius), radius});
+            }
+        }
+        std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
+        for (const auto& e : global_) global_power_ += max_component(e.power);
+        for (const auto& e : targets_) target_power_ += max_component(e.power);
     }
 
     /// Photons [first, last) of the global map, appended to `out`.
     void trace_global(std::size_t first, std::size_t last, std::vector<Photon>& out) const
     {
-        if (lights_.empty() || !(total_power_ > T(0))) return;
-        for (std::size_t i = first; i < last; ++i) {
-            Pcg32 rng(config_.seed, 2 * i);
-            // Choose a light by its share of the power; the photon carries Phi / (N p).
-            const PointLight<T>* light = &lights_.back();
-            T p = T(1), u = rng.uniform<T>() * total_power_;
-            for (const PointLight<T>& l : lights_) {
-                const T share = max_component(l.power());
-                if (u < share) {
-                    light = &l;
-                    p = share / total_power_;
-                    break;
-                }
-                u -= share;
-            }
-            const Rgb<T> power = light->power() / (T(config_.global_photons) * p);
-            follow({light->position, uniform_sphere<T>(rng)}, power, rng, false, out);
-        }
+        for (std::size_t i = first; i < last; ++i) emit(global_, global_power_, config_.global_photons, i, false, out);
     }
 
     /// Photons [first, last) of the caustic map, appended to `out`.
     void trace_caustic(std::size_t first, std::size_t last, std::vector<Photon>& out) const
     {
-        if (targets_.empty()) return;
-        for (std::size_t i = first; i < last; ++i) {
-            Pcg32 rng(config_.seed, 2 * i + 1);
-            // Choose a cone by its share of the power aimed at specular objects.
-            const CausticTarget<T>* target = &targets_.back();
-            T p = T(1), u = rng.uniform<T>() * target_power_;
-            for (const CausticTarget<T>& c : targets_) {
-                const T share = max_component(c.power);
-                if (u < share) {
-                    target = &c;
-                    p = share / target_power_;
-                    break;
-                }
-                u -= share;
-            }
-            const Rgb<T> power = target->power / (T(config_.caustic_photons) * p);
-            if (target->disk_radius > T(0)) {
-                follow({uniform_disk(target->from, target->axis, target->disk_radius, rng), target->axis}, power, rng, true, out);
-                continue;
-            }
-            const Vec3<T> direction =
-                target->cos_half_angle <= T(-1) ? uniform_sphere<T>(rng) : uniform_cone(target->axis, target->cos_half_angle, rng);
-            follow({target->from, direction}, power, rng, true, out);
-        }
+        for (std::size_t i = first; i < last; ++i) emit(targets_, target_power_, config_.caustic_photons, i, true, out);
     }
 
 private:
+    /// Photon i of a map of `count`: choose an emitter by its share of the power (the
+    /// photon carries its power / (count p)), draw where it starts, and follow it.
+    void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass,
+              std::vector<Photon>& out) const
+    {
+        if (emitters.empty() || !(total_power > T(0))) return;
+        Pcg32 rng(config_.seed, 2 * i + (caustic_pass ? 1 : 0));
+        const Emitter<T>* e = &emitters.back();
+        T p = T(1), u = rng.uniform<T>() * total_power;
+        for (const Emitter<T>& candidate : emitters) {
+            const T share = max_component(candidate.power);
+            if (u < share) {
+                e = &candidate;
+                p = share / total_power;
+                break;
+            }
+            u -= share;
+        }
+        const Rgb<T> power = e->power / (T(count) * p);
+        if (e->disk_radius > T(0)) {
+            follow({uniform_disk(e->from, e->axis, e->disk_radius, rng), e->axis}, power, false, rng, caustic_pass, out);
+            return;
+        }
+        const Vec3<T> direction = e->cos_half_angle <= T(-1) ? uniform_sphere<T>(rng) : uniform_cone(e->axis, e->cos_half_angle, rng);
+        follow({e->from, direction}, power, e->distance_squared, rng, caustic_pass, out);
+    }
+
     /// Follow one photon; in the caustic pass store only L S+ D and stop there.
-    void follow(Ray<T> ray, Rgb<T> power, Pcg32& rng, bool caustic_pass, std::vector<Photon>& out) const
+    void follow(Ray<T> ray, Rgb<T> power, bool distance_squared, Pcg32& rng, bool caustic_pass, std::vector<Photon>& out) const
     {
         bool direct = true, specular_only = true;
+        T travelled = T(0);
         for (int bounce = 0; bounce <= config_.max_bounces; ++bounce) {
             const auto hit = scene_.closest_hit(ray, {T(0), infinity<T>});
             if (!hit) return;
             const Crossing<T>& c = hit->crossing;
             const Vec3<T> d = normalize(ray.direction);
+            travelled += c.t * length(ray.direction);
+            const auto stored = [&] { return distance_squared ? power * (travelled * travelled) : power; };
             const Vec3<T> n = c.entering ? c.normal : -c.normal; // facing the photon
             const bool go_on = scene_.visit_material(*hit, [&]<class M>(const M& material) -> bool {
                 if constexpr (has_diffuse<M>) {
                     if (caustic_pass) {
-                        if (!direct && specular_only) out.push_back(photon(c.point, power, d, Photon::caustic));
+                        if (!direct && specular_only) out.push_back(photon(c.point, stored(), d, Photon::caustic));
                         return false;
                     }
                     std::uint8_t flags = direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
                     if (!direct && specular_only) flags |= Photon::caustic;
-                    out.push_back(photon(c.point, power, d, flags));
+                    out.push_back(photon(c.point, stored(), d, flags));
                     if (direct && config_.shadow_photons) store_shadow_photons(c, d, out);
                     const Rgb<T> reflectance = component_min(material.albedo.albedo(c.point) * material.kd, Rgb<T>(T(1)));
                     if (!russian_roulette(power, reflectance, rng)) return false;
@@ -219,16 +226,6 @@ private:
         }
     }
 
-    /// A cone from every point light, and a disk for every parallel light, to every
-    /// bounded specular object.
-    void collect_targets()
-    {
-        // A sphere around everything bounded: parallel photons start outside it.
-        std::apply([&](const auto&... slot) { (add_to_extent(slot), ...); }, scene_.slots);
-        std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
-        for (const auto& t : targets_) target_power_ += max_component(t.power);
-    }
-
     template <class Slot>
     void add_to_extent(const Slot& slot)
     {
@@ -243,13 +240,18 @@ private:
         if constexpr (reflects<M> || transmits<M>) {
             for (const auto& object : objects_of(slot)) {
                 if (!object.bounded) continue;
+                // The sphere around the object: its own for a sphere, else around its box.
                 const Aabb<T> b = object.shape.bounds();
-                const Vec3<T> centre = T(0.5) * (b.lo + b.hi);
-                const T radius = T(0.5) * length(b.hi - b.lo);
+                Vec3<T> centre = T(0.5) * (b.lo + b.hi);
+                T radius = T(0.5) * length(b.hi - b.lo);
+                if constexpr (requires { object.shape.center(); object.shape.radius(); }) {
+                    centre = object.shape.center();
+                    radius = object.shape.radius() * (T(1) + T(16) * std::numeric_limits<T>::epsilon());
+                }
                 for (const PointLight<T>& light : lights_) {
                     const Vec3<T> to = centre - light.position;
                     const T distance = length(to);
-                    CausticTarget<T> target{light.position, to / distance, T(-1), light.power()};
+                    Emitter<T> target{light.position, to / distance, T(-1), light.power(), T(0), light.falloff == Falloff::none};
                     if (distance > radius) {
                         const T sin_half = radius / distance;
                         target.cos_half_angle = prism::sqrt(T(1) - sin_half * sin_half);
@@ -271,10 +273,11 @@ private:
     const SceneT& scene_;
     PhotonTracerConfig config_;
     std::vector<PointLight<T>> lights_;
-    std::vector<DirectionalLight<T>> suns_; ///< parallel lights: caustic photons only, for now
+    std::vector<DirectionalLight<T>> suns_;
     Aabb<T> extent_{};
-    T total_power_ = T(0);
-    std::vector<CausticTarget<T>> targets_;
+    std::vector<Emitter<T>> global_;  ///< every light's emission for the global map
+    T global_power_ = T(0);
+    std::vector<Emitter<T>> targets_; ///< cones and disks toward specular objects, for the caustic map
     T target_power_ = T(0);
 };
 
@@ -303,8 +306,8 @@ std::vector<Photon> in_blocks(std::size_t count, unsigned threads, Trace&& trace
 
 } // namespace detail
 
-/// Trace the global and caustic photon maps of a scene. Point lights emit into both;
-/// directional lights, for now, only caustic photons (aimed at specular objects).
+/// Trace the global and caustic photon maps of a scene, from its point and directional
+/// lights.
 template <class SceneT>
 [[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config)
 {

@@ -85,13 +85,16 @@ public:
     /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
     /// object is in the way, otherwise Beer-Lambert absorption (times kt per boundary)
     /// through every dielectric crossed, refraction ignored (the lecture notes' shadow
-    /// rays through transparent objects).
+    /// rays through transparent objects). With GlassTransmits = false dielectrics block
+    /// the ray like any other object: a photon mapper brings the light through them by
+    /// its caustic map instead (as POV-Ray does for photon targets).
+    template <bool GlassTransmits = true>
     [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
     {
         Rgb<T> tr{T(1)};
         const bool near_cluster = reaches_cluster(ray, {T(0), t_max});
         const bool open = [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return (transmittance_of_slot<I>(ray, t_max, tr, near_cluster) && ...);
+            return (transmittance_of_slot<I, GlassTransmits>(ray, t_max, tr, near_cluster) && ...);
         }(std::index_sequence_for<Slots...>{});
         return open ? tr : Rgb<T>{T(0)};
     }
@@ -173,7 +176,7 @@ private:
         return Hit<T>{crossings.front(), nearest.slot, nearest.index};
     }
 
-    template <std::size_t I>
+    template <std::size_t I, bool GlassTransmits>
     bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr, bool near_cluster) const noexcept
     {
         using Slot = std::tuple_element_t<I, std::tuple<Slots...>>;
@@ -182,7 +185,7 @@ private:
         for (const auto& object : objects_of(std::get<I>(slots))) {
             if (!worth_testing(object, near_cluster)) continue;
             const auto crossings = object.shape.template crossings<false>(ray, range);
-            if constexpr (!transmits<M>) {
+            if constexpr (!transmits<M> || !GlassTransmits) {
                 if (!crossings.empty()) return false;
             } else {
                 // Length of the ray inside the solid within [0, t_max].
