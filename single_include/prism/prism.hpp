@@ -2600,6 +2600,7 @@ template <class S, class M>
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <thread>
 #include <type_traits>
 #include <vector>
@@ -2806,9 +2807,14 @@ private:
         if constexpr (reflects<M> || transmits<M>) {
             for (const auto& object : objects_of(slot)) {
                 if (!object.bounded) continue;
+                // The sphere around the object: its own for a sphere, else around its box.
                 const Aabb<T> b = object.shape.bounds();
-                const Vec3<T> centre = T(0.5) * (b.lo + b.hi);
-                const T radius = T(0.5) * length(b.hi - b.lo);
+                Vec3<T> centre = T(0.5) * (b.lo + b.hi);
+                T radius = T(0.5) * length(b.hi - b.lo);
+                if constexpr (requires { object.shape.center(); object.shape.radius(); }) {
+                    centre = object.shape.center();
+                    radius = object.shape.radius() * (T(1) + T(16) * std::numeric_limits<T>::epsilon());
+                }
                 for (const PointLight<T>& light : lights_) {
                     const Vec3<T> to = centre - light.position;
                     const T distance = length(to);
