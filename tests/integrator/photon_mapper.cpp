@@ -45,3 +45,64 @@ TEST_CASE("indirect light: a white wall facing a lit red floor turns red")
     CHECK(gathered.x > 5 * gathered.y);
     CHECK(gathered.x == doctest::Approx(wall.x).epsilon(0.3)); // two estimates of one integral, within their noise
 }
+
+TEST_CASE("glass casts a full shadow for shadow rays: the light through it comes from the caustic map")
+{
+    // A glass ball of radius 1 at height 2.5 under a light at height 6: its paraxial focus
+    // (0.5 R behind its far side) is at 1, so the floor below gets a bright spot.
+    const auto scene_with = [](auto glass) {
+        return Scene{Lights{PointLight<float>{.position = {0, 6, 0}, .intensity = Rgb<float>(30)}},
+                     Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
+                     Object{Sphere<float>({0, 2.5f, 0}, 1), glass}};
+    };
+    const auto scene = scene_with(Dielectric<float>{.ior = 1.5f});
+    const Ray<float> down{{0, 0.4f, 0.3f}, {0, -1, 0}}; // looks at the floor under the ball, past its shadow's centre
+    // Whitted lets the shadow ray through the glass (kt, refraction ignored).
+    CHECK(Whitted(scene).radiance(down).x > 0.1f);
+    // The photon mapper without caustic photons sees a full shadow.
+    Pcg32 rng(3u, 3u);
+    const PhotonMapper dark(scene, {.photons = {.global_photons = 0, .caustic_photons = 0}, .gather_rays = 0});
+    CHECK(dark.radiance(down, rng) == Rgb<float>(0.0f));
+    // With them, the focused light: brighter than the unshadowed floor (E = I / h^2 = 30 / 36).
+    const PhotonMapper lit(scene, {.photons = {.global_photons = 0, .caustic_photons = 200000}, .caustic = {.radius = 0.05f}, .gather_rays = 0});
+    const float open_floor = 0.5f / pi<float> * 30.0f / 36.0f;
+    CHECK(lit.radiance({{0, 0.4f, 0}, {0, -1, 0}}, rng).x > 2 * open_floor);
+}
+
+TEST_CASE("shadow rays saved where photons agree (Jensen and Christensen 1995): same light, fewer rays")
+{
+    // A slab over a floor: a sharp shadow. On a grid of floor points, the photons decide
+    // most points, and where they decide they agree with the shadow ray.
+    const Scene scene{Lights{PointLight<float>{.position = {0, 5, 0}, .intensity = Rgb<float>(25)}},
+                      Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
+                      Object{Box<float>({-1, 2, -1}, {1, 2.2f, 1}), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}}};
+    using Mapper = PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
+    const Mapper::Config base{.photons = {.global_photons = 200000, .caustic_photons = 0}, .gather_rays = 0};
+    Mapper::Config saving = base;
+    saving.visibility_k = 32;
+    const Mapper plain(scene, base), fast(scene, saving);
+    int decided = 0, wrong = 0, points = 0;
+    for (float x = -4; x <= 4; x += 0.1f)
+        for (float z = -4; z <= 4; z += 0.25f) {
+            ++points;
+            const auto said = fast.visibility_from_photons(Vec3<float>{x, 0, z}, Vec3<float>{0, 1, 0});
+            if (!said) continue;
+            ++decided;
+            const Ray<float> shadow{{x, 1e-3f, z}, Vec3<float>{0, 5, 0} - Vec3<float>{x, 1e-3f, z}};
+            wrong += *said != (scene.transmittance(shadow, 0.999f) == Rgb<float>(1));
+        }
+    INFO(decided << " of " << points << " decided, " << wrong << " wrongly");
+    CHECK(decided > points * 8 / 10);
+    CHECK(wrong <= points / 200);
+    // A point well inside the shadow and one well outside render the same either way.
+    Pcg32 rng(4u, 4u);
+    for (const Vec3<float> at : {Vec3<float>{0.3f, 0, 0.2f}, Vec3<float>{3, 0, -2}}) {
+        const Ray<float> ray{at + Vec3<float>{0, 1, 1}, Vec3<float>{0, -1, -1}};
+        CHECK(fast.radiance(ray, rng).x == doctest::Approx(plain.radiance(ray, rng).x).epsilon(1e-5));
+    }
+    // Two lights: shadow photons cannot say which light they block.
+    const Scene two{Lights{PointLight<float>{}, PointLight<float>{.position = {1, 1, 1}}},
+                    Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{}}};
+    using Two = PhotonMapper<std::remove_cvref_t<decltype(two)>>;
+    CHECK_THROWS_AS(Two(two, {.visibility_k = 8}), std::invalid_argument);
+}
