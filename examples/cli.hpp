@@ -26,6 +26,7 @@ struct Options {
     int gather = 0;
     double radius = 0.1;          ///< the caustic estimate's radius, or its search limit with --k
     std::size_t k = 0;            ///< > 0: the caustic estimate from the k nearest photons
+    double global_radius = 0.25;  ///< the global map's estimate, where it is read directly
     prism::Filter filter = prism::Filter::box;
     double disk = 1.0;            ///< < 1 flattens the estimate's sphere to a disk (against leaks)
     std::size_t visibility = 0;   ///< > 0: skip shadow rays where this many nearest photons agree
@@ -49,7 +50,8 @@ inline void print_help(const char* program, const char* description, const Optio
                 "  --gather N           final-gather rays per diffuse hit, 0 = read the global map (default 0)\n"
                 "  --radius R           radius of the caustic estimate, or its search limit with --k (default 0.1)\n"
                 "  --k N                caustic estimate from the N nearest photons, 0 = every photon within R (default 0)\n"
-                "  --filter F           box, cone or gaussian (default box)\n"
+                "  --global-radius R    radius of the global map's estimate where read directly (default 0.25)\n"
+                "  --filter F           box, cone or gaussian, for both estimates (default box)\n"
                 "  --disk D             keep photons within D R of the tangent plane, < 1 against light leaks (default 1)\n"
                 "  --visibility N       skip shadow rays where the N nearest global photons agree (default 0 = never)\n"
                 "  --light L            physical (inverse-square) or povray (no falloff, as the .pov file) (default physical)\n"
@@ -103,6 +105,7 @@ inline bool parse(int argc, char** argv, Options& options, const char* descripti
         else if (flag == "--caustic-photons") options.caustic_photons = parse_integer<std::size_t>(flag, value, 0, 100000000);
         else if (flag == "--gather") options.gather = parse_integer<int>(flag, value, 0, 4096);
         else if (flag == "--radius") options.radius = parse_number(flag, value, 0, 100);
+        else if (flag == "--global-radius") options.global_radius = parse_number(flag, value, 0, 100);
         else if (flag == "--disk") options.disk = parse_number(flag, value, 0, 1);
         else if (flag == "--k") options.k = parse_integer<std::size_t>(flag, value, 0, prism::PhotonMap::max_k);
         else if (flag == "--visibility") options.visibility = parse_integer<std::size_t>(flag, value, 0, prism::PhotonMap::max_k);

@@ -60,6 +60,8 @@ int main(int argc, char** argv)
         const Mapper mapper(scene, {.photons = {.global_photons = options.photons, .caustic_photons = options.caustic_photons,
                                                 .seed = options.render.seed, .threads = options.render.threads},
                                     .caustic = {.k = options.k, .radius = float(options.radius), .filter = options.filter, .disk = float(options.disk)},
+                                    .global = {.radius = float(options.global_radius), .filter = options.filter, .disk = float(options.disk),
+                                               .excluded = prism::Photon::direct | prism::Photon::caustic},
                                     .gather_rays = options.gather,
                                     .visibility_k = options.visibility});
         std::printf("cornell_caustics: %zu global and %zu caustic photons stored in %.3f s\n", mapper.maps().global.size(),

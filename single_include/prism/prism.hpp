@@ -784,10 +784,13 @@ constexpr void require_nonzero(std::string_view name, const Vec3<T>& value)
 } // namespace prism::detail
 
 // ---- prism/core/rng.hpp ----
-// PCG32 random numbers: small state, many independent streams (one per pixel).
+// PCG32 random numbers: small state, many independent streams (one per pixel); and the
+// scrambled Sobol (0,2)-sequence for stratified points in the unit square.
 
 
+#include <array>
 #include <cstdint>
+#include <limits>
 
 namespace prism {
 
@@ -833,6 +836,29 @@ private:
     std::uint64_t state_ = 0;
     std::uint64_t inc_ = 1;
 };
+
+/// Point i of the Sobol (0,2)-sequence in [0, 1)^2, each coordinate scrambled by XOR with
+/// its own 32-bit word (random digit scrambling, which keeps the stratification). Any 2^m
+/// consecutive points from a multiple of 2^m put exactly one point in every elementary
+/// box of area 2^-m (Sobol 1967; the generator of Kollig and Keller 2002). A point
+/// depends only on i, so threads can take any share of the sequence.
+template <Scalar T = double>
+[[nodiscard]] constexpr std::array<T, 2> sobol02(std::uint32_t i, std::uint32_t scramble_x, std::uint32_t scramble_y) noexcept
+{
+    std::uint32_t x = 0, y = 0;
+    for (std::uint32_t v = 1u << 31, bit = 0; i != 0; i >>= 1, v ^= v >> 1, ++bit) {
+        if (i & 1u) {
+            x ^= 1u << (31 - bit); // van der Corput: the bits of i reversed
+            y ^= v;
+        }
+    }
+    x ^= scramble_x;
+    y ^= scramble_y;
+    // Keep the top bits that T holds exactly, so a coordinate is never rounded up to 1.
+    constexpr int bits = std::numeric_limits<T>::digits < 32 ? std::numeric_limits<T>::digits : 32;
+    constexpr T scale = T(1) / T(std::uint64_t(1) << bits);
+    return {T(x >> (32 - bits)) * scale, T(y >> (32 - bits)) * scale};
+}
 
 } // namespace prism
 
@@ -2263,12 +2289,19 @@ struct Photon {
 /// A direction uniform on the unit sphere: z = 1 - 2u, phi = 2 pi v (errata 4: no
 /// rejection sampling of a cube, whose accepted points were never normalised).
 template <Scalar T>
+[[nodiscard]] inline Vec3<T> uniform_sphere(T u, T v) noexcept
+{
+    const T z = T(1) - T(2) * u;
+    const T r = prism::sqrt(clamp(T(1) - z * z, T(0), T(1)));
+    const T phi = T(2) * pi<T> * v;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+template <Scalar T>
 [[nodiscard]] inline Vec3<T> uniform_sphere(Pcg32& rng) noexcept
 {
-    const T z = T(1) - T(2) * rng.uniform<T>();
-    const T r = prism::sqrt(clamp(T(1) - z * z, T(0), T(1)));
-    const T phi = T(2) * pi<T> * rng.uniform<T>();
-    return {r * std::cos(phi), r * std::sin(phi), z};
+    const T u = rng.uniform<T>();
+    return uniform_sphere(u, rng.uniform<T>());
 }
 
 /// Two unit vectors that make an orthonormal frame with the unit vector n (Duff et al.
@@ -2636,23 +2669,25 @@ struct Emitter {
     bool distance_squared = false; ///< Falloff::none: scale by the squared path length when stored
 };
 
-/// A point uniform on the disk of radius r centred at c, perpendicular to the unit axis.
+/// The point (u, v) of the unit square mapped uniformly onto the disk of radius r centred
+/// at c, perpendicular to the unit axis.
 template <Scalar T>
-[[nodiscard]] inline Vec3<T> uniform_disk(const Vec3<T>& c, const Vec3<T>& axis, T r, Pcg32& rng) noexcept
+[[nodiscard]] inline Vec3<T> uniform_disk(const Vec3<T>& c, const Vec3<T>& axis, T r, T u, T v) noexcept
 {
-    const T rho = r * prism::sqrt(rng.uniform<T>());
-    const T phi = T(2) * pi<T> * rng.uniform<T>();
+    const T rho = r * prism::sqrt(u);
+    const T phi = T(2) * pi<T> * v;
     const auto [s, t] = orthonormal_frame(axis);
     return c + rho * std::cos(phi) * s + rho * std::sin(phi) * t;
 }
 
-/// A direction uniform within the cone about `axis` with the given cos(half angle).
+/// (u, v) mapped uniformly onto the directions within the cone about `axis` with the
+/// given cos(half angle).
 template <Scalar T>
-[[nodiscard]] inline Vec3<T> uniform_cone(const Vec3<T>& axis, T cos_half_angle, Pcg32& rng) noexcept
+[[nodiscard]] inline Vec3<T> uniform_cone(const Vec3<T>& axis, T cos_half_angle, T u, T v) noexcept
 {
-    const T cos_theta = T(1) - rng.uniform<T>() * (T(1) - cos_half_angle);
+    const T cos_theta = T(1) - u * (T(1) - cos_half_angle);
     const T sin_theta = prism::sqrt(clamp(T(1) - cos_theta * cos_theta, T(0), T(1)));
-    const T phi = T(2) * pi<T> * rng.uniform<T>();
+    const T phi = T(2) * pi<T> * v;
     const auto [s, t] = orthonormal_frame(axis);
     return sin_theta * std::cos(phi) * s + sin_theta * std::sin(phi) * t + cos_theta * axis;
 }
@@ -2664,6 +2699,9 @@ public:
 
     PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config) : scene_(scene), config_(config)
     {
+        Pcg32 scrambles(config.seed, 0xfeed5eedULL);
+        for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
+        for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
         scene.for_each_light([&](const auto& light) {
             using L = std::remove_cvref_t<decltype(light)>;
             if constexpr (std::is_same_v<L, PointLight<T>>) lights_.push_back(light);
@@ -2700,29 +2738,37 @@ public:
 
 private:
     /// Photon i of a map of `count`: choose an emitter by its share of the power (the
-    /// photon carries its power / (count p)), draw where it starts, and follow it.
+    /// photon carries its power / (count p)), draw where it starts, and follow it. The
+    /// choice and the two numbers that place the photon come from point i of a scrambled
+    /// Sobol (0,2)-sequence, so the photons of each emitter are stratified over its
+    /// directions (or its disk) as on a jittered grid, but for any count; everything after
+    /// the first hit is random.
     void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass,
               std::vector<Photon>& out) const
     {
         if (emitters.empty() || !(total_power > T(0))) return;
         Pcg32 rng(config_.seed, 2 * i + (caustic_pass ? 1 : 0));
+        const std::uint32_t* scramble = caustic_pass ? caustic_scramble_ : global_scramble_;
+        auto [u, v] = sobol02<double>(static_cast<std::uint32_t>(i), scramble[0], scramble[1]);
+        // The emitter whose share of [0, 1) holds u; u rescaled within that share.
         const Emitter<T>* e = &emitters.back();
-        T p = T(1), u = rng.uniform<T>() * total_power;
+        double p = 1, start = 0;
         for (const Emitter<T>& candidate : emitters) {
-            const T share = max_component(candidate.power);
-            if (u < share) {
+            const double share = double(max_component(candidate.power)) / double(total_power);
+            if (u < start + share || &candidate == &emitters.back()) {
                 e = &candidate;
-                p = share / total_power;
+                p = share;
                 break;
             }
-            u -= share;
+            start += share;
         }
-        const Rgb<T> power = e->power / (T(count) * p);
+        u = std::clamp((u - start) / p, 0.0, std::nextafter(1.0, 0.0));
+        const Rgb<T> power = e->power / T(double(count) * p);
         if (e->disk_radius > T(0)) {
-            follow({uniform_disk(e->from, e->axis, e->disk_radius, rng), e->axis}, power, false, rng, caustic_pass, out);
+            follow({uniform_disk(e->from, e->axis, e->disk_radius, T(u), T(v)), e->axis}, power, false, rng, caustic_pass, out);
             return;
         }
-        const Vec3<T> direction = e->cos_half_angle <= T(-1) ? uniform_sphere<T>(rng) : uniform_cone(e->axis, e->cos_half_angle, rng);
+        const Vec3<T> direction = e->cos_half_angle <= T(-1) ? uniform_sphere(T(u), T(v)) : uniform_cone(e->axis, e->cos_half_angle, T(u), T(v));
         follow({e->from, direction}, power, e->distance_squared, rng, caustic_pass, out);
     }
 
@@ -2846,6 +2892,7 @@ private:
     T global_power_ = T(0);
     std::vector<Emitter<T>> targets_; ///< cones and disks toward specular objects, for the caustic map
     T target_power_ = T(0);
+    std::uint32_t global_scramble_[2]{}, caustic_scramble_[2]{}; ///< the Sobol points' scrambling, per map
 };
 
 /// Run `trace(first, last, out)` over [0, count) in fixed blocks on worker threads and

@@ -36,12 +36,19 @@ struct Photon {
 /// A direction uniform on the unit sphere: z = 1 - 2u, phi = 2 pi v (errata 4: no
 /// rejection sampling of a cube, whose accepted points were never normalised).
 template <Scalar T>
+[[nodiscard]] inline Vec3<T> uniform_sphere(T u, T v) noexcept
+{
+    const T z = T(1) - T(2) * u;
+    const T r = prism::sqrt(clamp(T(1) - z * z, T(0), T(1)));
+    const T phi = T(2) * pi<T> * v;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+template <Scalar T>
 [[nodiscard]] inline Vec3<T> uniform_sphere(Pcg32& rng) noexcept
 {
-    const T z = T(1) - T(2) * rng.uniform<T>();
-    const T r = prism::sqrt(clamp(T(1) - z * z, T(0), T(1)));
-    const T phi = T(2) * pi<T> * rng.uniform<T>();
-    return {r * std::cos(phi), r * std::sin(phi), z};
+    const T u = rng.uniform<T>();
+    return uniform_sphere(u, rng.uniform<T>());
 }
 
 /// Two unit vectors that make an orthonormal frame with the unit vector n (Duff et al.

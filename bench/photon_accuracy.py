@@ -1,0 +1,201 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""Photon mapping, error against time: prism and POV-Ray 3.7 on the Cornell caustics scene.
+
+Caustics (shared/scenes/cornell_caustics.pov with PHOTONS=1; prism's cornell_caustics with
+POV-Ray's no-falloff light and no global map, as POV-Ray has no radiosity there):
+  * prism at 3e4 ... 3e6 caustic photons, radius estimates (r = 0.05, 0.1, 0.2, box) and
+    k-nearest estimates (k = 50, 200 with box, cone, Gaussian filters);
+  * POV-Ray at photon `count` 3e4 ... 3e6, its gather settings left at their defaults.
+Each image's RMSE (8-bit sRGB, all pixels and channels, on 0..255) is taken against the
+same renderer's converged picture: prism at 2e7 photons with r = 0.03, POV-Ray at
+count 2e7 with `gather 400, 1600` (more photons per estimate than its defaults). The
+reference's own noise is estimated from a second prism reference with another seed.
+Both are also compared with prism's reference (`rmse_common`), leaving out the pixels
+where the two renderers differ without photons (POV-Ray's specular highlights).
+Time: photon tracing plus rendering as each reports it (prism: photons stored + render
+time; POV-Ray: Photon Time + Trace Time), both with the same threads.
+
+Light leaks and blotches (--leaks, the global map read directly with the physical light):
+global photons 1e4 ... 1e6, the estimate within r = 0.25 as a sphere (box filter) or
+flattened to a disk 0.1 r thick (box, cone, Gaussian), against 1e7 photons with r = 0.08;
+RMSE over the whole image and a crop of one corner for each at 3e4 photons.
+
+Output: photon_accuracy.csv, photon_leaks.csv and photon_leaks_crops.png in --out.
+
+    bench/photon_accuracy.py [--build build/release] [--out bench/results] [--threads 2]
+"""
+import argparse
+import csv
+import pathlib
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.image as mpimg  # noqa: E402
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+SIZE = 512
+COUNTS = [30000, 100000, 300000, 1000000, 3000000]
+PRISM_ESTIMATORS = {  # name -> extra arguments of cornell_caustics
+    "radius 0.05": ["--radius", "0.05"],
+    "radius 0.1": ["--radius", "0.1"],
+    "radius 0.2": ["--radius", "0.2"],
+    "k 50": ["--k", "50", "--radius", "0.5"],
+    "k 200": ["--k", "200", "--radius", "0.5"],
+    "k 200 cone": ["--k", "200", "--radius", "0.5", "--filter", "cone"],
+    "k 200 gaussian": ["--k", "200", "--radius", "0.5", "--filter", "gaussian"],
+}
+
+
+def srgb8(path):
+    image = mpimg.imread(path)[:, :, :3]
+    return np.round(image * 255.0) if image.dtype != np.uint8 else image.astype(float)
+
+
+def rmse(a, b, mask=None):
+    d2 = (a - b) ** 2
+    if mask is not None:
+        d2 = d2[mask]
+    return float(np.sqrt(d2.mean()))
+
+
+def run_prism(binary, threads, folder, args):
+    out = subprocess.run([binary, "--width", str(SIZE), "--height", str(SIZE), "--spp", "1", "--threads", str(threads),
+                          "--out", folder, *args], check=True, capture_output=True, text=True).stdout
+    stored = re.search(r"(\d+) global and (\d+) caustic photons stored in ([0-9.]+) s", out)
+    render = float(re.search(r"render time ([0-9.]+) s", out).group(1))
+    return {"stored": int(stored.group(1)) + int(stored.group(2)), "photon_time": float(stored.group(3)),
+            "render_time": render, "image": srgb8(pathlib.Path(folder) / "cornell_caustics.png")}
+
+
+def run_povray(scene_text, threads, folder, count, gather=None, photons=True):
+    text = scene_text.replace("count 200000 ", f"count {count} ")
+    if gather:
+        text = text.replace("autostop 0", f"autostop 0\n    gather {gather[0]}, {gather[1]}")
+    pov = pathlib.Path(folder) / "scene.pov"
+    pov.write_text(text)
+    png = pathlib.Path(folder) / "povray.png"
+    run = subprocess.run(["povray", "-D", f"+W{SIZE}", f"+H{SIZE}", "-A", f"+WT{threads}", f"-I{pov}", f"+O{png}",
+                          f"Declare=PHOTONS={1 if photons else 0}"], capture_output=True, text=True)
+    if run.returncode != 0:
+        sys.exit("povray failed:\n" + run.stderr[-2000:])
+    seconds = lambda name: float(re.search(name + r" Time:.*\(([0-9.]+) seconds\)", run.stderr).group(1))  # noqa: E731
+    stored = re.search(r"Surface photons stored:\s+(\d+)", run.stderr)
+    return {"stored": int(stored.group(1)) if stored else 0, "photon_time": seconds("Photon") if photons else 0.0,
+            "render_time": seconds("Trace"), "image": srgb8(png)}
+
+
+def caustics(args, binary, scene_text, tmp, out):
+    common = ["--light", "povray", "--photons", "0"]
+    print("references: prism 2e7 photons (two seeds), POV-Ray count 2e7 with gather 400, 1600 ...", flush=True)
+    ref = run_prism(binary, args.threads, tmp, common + ["--caustic-photons", "20000000", "--radius", "0.03"])
+    ref2 = run_prism(binary, args.threads, tmp, common + ["--caustic-photons", "20000000", "--radius", "0.03", "--seed", "1"])
+    pov_ref = run_povray(scene_text, args.threads, tmp, 20000000, gather=(400, 1600))
+    floor = rmse(ref["image"], ref2["image"]) / np.sqrt(2)
+    # Pixels where the two differ without photons: POV-Ray's highlights. prism's Whitted
+    # picture is its photon mapper's without caustics (glass then casts no shadow in
+    # POV-Ray, so the shadow regions are left out as well).
+    pov_plain = run_povray(scene_text, args.threads, tmp, 1000, photons=False)["image"]
+    subprocess.run([str(pathlib.Path(binary).parent / "cornell"), "--width", str(SIZE), "--height", str(SIZE), "--spp", "1",
+                    "--out", tmp], check=True, capture_output=True)
+    prism_plain = srgb8(pathlib.Path(tmp) / "cornell.png")
+    mask = np.repeat((np.abs(pov_plain - prism_plain).max(axis=2) <= 8)[:, :, None], 3, axis=2)
+    print(f"  reference noise (prism, two seeds / sqrt 2): {floor:.3f}; prism vs POV-Ray references: "
+          f"{rmse(ref['image'], pov_ref['image'], mask):.3f} on {mask[:, :, 0].mean() * 100:.1f} % of the pixels", flush=True)
+    rows = []
+
+    def record(renderer, estimator, count, r, own):
+        row = {"renderer": renderer, "estimator": estimator, "photons": count, "stored": r["stored"],
+               "photon_time": r["photon_time"], "render_time": r["render_time"], "time": r["photon_time"] + r["render_time"],
+               "rmse": rmse(r["image"], own), "rmse_common": rmse(r["image"], ref["image"], mask),
+               "mean": float(r["image"].mean()), "reference_noise": floor}
+        rows.append(row)
+        print(f"  {renderer:6} {estimator:15} {count:>8}: {row['time']:6.3f} s  rmse {row['rmse']:6.3f}  "
+              f"common {row['rmse_common']:6.3f}  mean {row['mean']:6.2f}", flush=True)
+
+    for count in COUNTS:
+        best = min((run_povray(scene_text, args.threads, tmp, count) for _ in range(args.repeats)), key=lambda r: r["photon_time"] + r["render_time"])
+        record("povray", "default gather", count, best, pov_ref["image"])
+        for name, extra in PRISM_ESTIMATORS.items():
+            best = min((run_prism(binary, args.threads, tmp, common + ["--caustic-photons", str(count)] + extra) for _ in range(args.repeats)),
+                       key=lambda r: r["photon_time"] + r["render_time"])
+            record("prism", name, count, best, ref["image"])
+    with open(out / "photon_accuracy.csv", "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+    # The headline: for each POV-Ray point, prism's fastest run with no more error.
+    print("prism's time to reach POV-Ray's error (fastest prism run with rmse <= POV-Ray's):")
+    for pov in (r for r in rows if r["renderer"] == "povray"):
+        better = [r for r in rows if r["renderer"] == "prism" and r["rmse"] <= pov["rmse"]]
+        if better:
+            fastest = min(better, key=lambda r: r["time"])
+            print(f"  POV-Ray count {pov['photons']:>8}: rmse {pov['rmse']:.3f} in {pov['time']:.3f} s; prism {fastest['estimator']} "
+                  f"at {fastest['photons']}: rmse {fastest['rmse']:.3f} in {fastest['time']:.3f} s, time ratio {fastest['time'] / pov['time']:.2f}")
+        else:
+            print(f"  POV-Ray count {pov['photons']:>8}: rmse {pov['rmse']:.3f}; no prism run reached it")
+
+
+LEAK_CONFIGS = {
+    "sphere, box": ["--filter", "box", "--disk", "1"],
+    "disk, box": ["--filter", "box", "--disk", "0.1"],
+    "disk, cone": ["--filter", "cone", "--disk", "0.1"],
+    "disk, gaussian": ["--filter", "gaussian", "--disk", "0.1"],
+}
+
+
+def leaks(args, binary, tmp, out):
+    common = ["--caustic-photons", "0", "--gather", "0", "--global-radius", "0.25"]
+    print("light leaks: global map read directly; reference 1e7 photons, r = 0.08, disk 0.1 ...", flush=True)
+    ref = run_prism(binary, args.threads, tmp, ["--caustic-photons", "0", "--gather", "0", "--photons", "10000000",
+                                                 "--global-radius", "0.08", "--disk", "0.1"])
+    rows, crops = [], []
+    for count in [10000, 30000, 100000, 300000, 1000000]:
+        for name, extra in LEAK_CONFIGS.items():
+            r = run_prism(binary, args.threads, tmp, common + ["--photons", str(count)] + extra)
+            row = {"config": name, "photons": count, "time": r["photon_time"] + r["render_time"], "rmse": rmse(r["image"], ref["image"]),
+                   "mean": float(r["image"].mean())}
+            rows.append(row)
+            print(f"  {name:15} {count:>8}: {row['time']:6.3f} s  rmse {row['rmse']:6.3f}  mean {row['mean']:6.2f}", flush=True)
+            if count == 30000:
+                crops.append(r["image"][300:480, 40:220])
+    crops.append(ref["image"][300:480, 40:220])
+    with open(out / "photon_leaks.csv", "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+    gap = np.full((crops[0].shape[0], 4, 3), 255.0)
+    strip = np.concatenate(sum(([c, gap] for c in crops), [])[:-1], axis=1)
+    mpimg.imsave(out / "photon_leaks_crops.png", np.repeat(np.repeat(strip, 2, axis=0), 2, axis=1).astype(np.uint8))
+    print(f"wrote {out / 'photon_leaks_crops.png'}: " + " | ".join(list(LEAK_CONFIGS) + ["reference"]) + " (3e4 photons)")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--build", default=str(ROOT / "build" / "release"))
+    parser.add_argument("--out", default=str(ROOT / "bench" / "results"))
+    parser.add_argument("--threads", type=int, default=2)
+    parser.add_argument("--repeats", type=int, default=2)
+    parser.add_argument("--only", choices=["caustics", "leaks"])
+    args = parser.parse_args()
+    binary = str(pathlib.Path(args.build) / "examples" / "cornell_caustics")
+    scene = ROOT.parent / "shared" / "scenes" / "cornell_caustics.pov"
+    if not scene.exists():
+        sys.exit(f"cannot find {scene}")
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    with tempfile.TemporaryDirectory() as tmp:
+        if args.only != "leaks":
+            caustics(args, binary, scene.read_text(), tmp, out)
+        if args.only != "caustics":
+            leaks(args, binary, tmp, out)
+
+
+if __name__ == "__main__":
+    main()
