@@ -4,13 +4,14 @@
 
 Caustics (shared/scenes/cornell_caustics.pov with PHOTONS=1; prism's cornell_caustics with
 POV-Ray's no-falloff light and no global map, as POV-Ray has no radiosity there):
-  * prism at 3e4 ... 3e6 caustic photons, radius estimates (r = 0.05, 0.1, 0.2, box) and
-    k-nearest estimates (k = 50, 200 with box, cone, Gaussian filters);
-  * POV-Ray at photon `count` 3e4 ... 3e6, its gather settings left at their defaults.
+  * prism at 1e4 ... 3e6 caustic photons, radius estimates (r = 0.05, 0.1, 0.2, box) and
+    k-nearest estimates (k = 50, 100, 200 within a search limit, box, cone, Gaussian);
+  * POV-Ray at photon `count` 1e4 ... 3e6, its gather settings left at their defaults.
 Each image's RMSE (8-bit sRGB, all pixels and channels, on 0..255) is taken against the
 same renderer's converged picture: prism at 2e7 photons with r = 0.03, POV-Ray at
-count 2e7 with `gather 400, 1600` (more photons per estimate than its defaults). The
-reference's own noise is estimated from a second prism reference with another seed.
+count 2e7 with `gather 100, 400` (more photons per estimate than its defaults 20, 100).
+The references' own uncertainty: prism's from a second reference with another seed,
+POV-Ray's from a second one with its default gather.
 Both are also compared with prism's reference (`rmse_common`), leaving out the pixels
 where the two renderers differ without photons (POV-Ray's specular highlights).
 Time: photon tracing plus rendering as each reports it (prism: photons stored + render
@@ -41,17 +42,17 @@ import matplotlib.image as mpimg  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 SIZE = 512
-COUNTS = [30000, 100000, 300000, 1000000, 3000000]
-PRISM_ESTIMATORS = {  # name -> extra arguments of cornell_caustics
-    "radius 0.05": ["--radius", "0.05"],
-    "radius 0.1": ["--radius", "0.1"],
-    "radius 0.2": ["--radius", "0.2"],
-    "k 50": ["--k", "50", "--radius", "0.5"],
-    "k 200": ["--k", "200", "--radius", "0.5"],
-    "k 200 cone": ["--k", "200", "--radius", "0.5", "--filter", "cone"],
-    "k 200 gaussian": ["--k", "200", "--radius", "0.5", "--filter", "gaussian"],
+COUNTS = [10000, 30000, 100000, 300000, 1000000, 3000000]
+PRISM_ESTIMATORS = {  # name -> (extra arguments of cornell_caustics, largest photon count)
+    "radius 0.05": (["--radius", "0.05"], 3000000),
+    "radius 0.1": (["--radius", "0.1"], 3000000),
+    "radius 0.2": (["--radius", "0.2"], 1000000),
+    "k 50 (r <= 0.15)": (["--k", "50", "--radius", "0.15"], 3000000),
+    "k 50 (r <= 0.15) cone": (["--k", "50", "--radius", "0.15", "--filter", "cone"], 3000000),
+    "k 100 (r <= 0.1) cone": (["--k", "100", "--radius", "0.1", "--filter", "cone"], 3000000),
+    "k 100 (r <= 0.1) gaussian": (["--k", "100", "--radius", "0.1", "--filter", "gaussian"], 3000000),
+    "k 200 (r <= 0.1) cone": (["--k", "200", "--radius", "0.1", "--filter", "cone"], 3000000),
 }
-
 
 def srgb8(path):
     image = mpimg.imread(path)[:, :, :3]
@@ -93,11 +94,13 @@ def run_povray(scene_text, threads, folder, count, gather=None, photons=True):
 
 def caustics(args, binary, scene_text, tmp, out):
     common = ["--light", "povray", "--photons", "0"]
-    print("references: prism 2e7 photons (two seeds), POV-Ray count 2e7 with gather 400, 1600 ...", flush=True)
+    print("references: prism 2e7 photons (two seeds), POV-Ray count 2e7 with gather 100, 400 and 20, 100 ...", flush=True)
     ref = run_prism(binary, args.threads, tmp, common + ["--caustic-photons", "20000000", "--radius", "0.03"])
     ref2 = run_prism(binary, args.threads, tmp, common + ["--caustic-photons", "20000000", "--radius", "0.03", "--seed", "1"])
-    pov_ref = run_povray(scene_text, args.threads, tmp, 20000000, gather=(400, 1600))
+    pov_ref = run_povray(scene_text, args.threads, tmp, 20000000, gather=(100, 400))
+    pov_ref2 = run_povray(scene_text, args.threads, tmp, 20000000, gather=(20, 100))
     floor = rmse(ref["image"], ref2["image"]) / np.sqrt(2)
+    print(f"  POV-Ray's references with gather 100, 400 and 20, 100 differ by {rmse(pov_ref['image'], pov_ref2['image']):.3f}")
     # Pixels where the two differ without photons: POV-Ray's highlights. prism's Whitted
     # picture is its photon mapper's without caustics (glass then casts no shadow in
     # POV-Ray, so the shadow regions are left out as well).
@@ -122,7 +125,9 @@ def caustics(args, binary, scene_text, tmp, out):
     for count in COUNTS:
         best = min((run_povray(scene_text, args.threads, tmp, count) for _ in range(args.repeats)), key=lambda r: r["photon_time"] + r["render_time"])
         record("povray", "default gather", count, best, pov_ref["image"])
-        for name, extra in PRISM_ESTIMATORS.items():
+        for name, (extra, largest) in PRISM_ESTIMATORS.items():
+            if count > largest:
+                continue
             best = min((run_prism(binary, args.threads, tmp, common + ["--caustic-photons", str(count)] + extra) for _ in range(args.repeats)),
                        key=lambda r: r["photon_time"] + r["render_time"])
             record("prism", name, count, best, ref["image"])

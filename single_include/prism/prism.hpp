@@ -347,6 +347,17 @@ public:
 
     [[nodiscard]] constexpr std::size_t size() const noexcept { return points_.size(); }
 
+    /// The point set's index of each point in tree order: a leaf's points are
+    /// consecutive, so data kept in this order is read with good locality.
+    [[nodiscard]] constexpr std::span<const std::uint32_t> order() const noexcept { return index_; }
+
+    /// For a caller that has put its own data in order(): from now on a point's index
+    /// is its place in tree order (and ties are broken by that).
+    constexpr void index_in_tree_order() noexcept
+    {
+        for (std::size_t i = 0; i < index_.size(); ++i) index_[i] = static_cast<std::uint32_t>(i);
+    }
+
     /// Bytes held by the tree (points in tree order, their indices, the nodes).
     [[nodiscard]] constexpr std::size_t memory_bytes() const noexcept
     {
@@ -364,7 +375,9 @@ public:
     /// The k <= K nearest points to q within max_radius (distance <= max_radius), nearest
     /// first, ties by lower index: K is the capacity, fixed at compile time, k and the
     /// radius are chosen at run time (Jensen's k-nearest search with a maximum distance).
-    template <std::size_t K>
+    /// Sorted = false leaves them in heap order (the same set, the farthest first), for
+    /// callers that only sum over them.
+    template <std::size_t K, bool Sorted = true>
     [[nodiscard]] constexpr NearestNeighbours<T, K> nearest(const Point& q, std::size_t k, T max_radius) const noexcept
     {
         static_assert(K >= 1);
@@ -373,7 +386,7 @@ public:
         if (points_.empty() || k == 0 || !(max_radius >= T(0))) return heap;
         Point offsets{};
         search_nearest<K>(q, k, max_radius * max_radius, 1, 0, points_.size(), offsets, heap);
-        if constexpr (K > 1) std::sort_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
+        if constexpr (K > 1 && Sorted) std::sort_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
         return heap;
     }
 
@@ -2428,8 +2441,15 @@ public:
 
     PhotonMap() = default;
 
-    /// Own the photons and build the tree over them.
-    explicit PhotonMap(std::vector<Photon> photons) : photons_(std::move(photons)), tree_(std::in_place, PhotonPositions{photons_}) {}
+    /// Own the photons and build the tree over them. The photons are then put in tree
+    /// order, so that every subtree's photons (and each leaf's) lie together in memory
+    /// and an estimate reads them with few cache misses.
+    explicit PhotonMap(std::vector<Photon> photons) : tree_(std::in_place, PhotonPositions{photons})
+    {
+        photons_.reserve(photons.size());
+        for (const std::uint32_t i : tree_->order()) photons_.push_back(photons[i]);
+        tree_->index_in_tree_order();
+    }
 
     [[nodiscard]] std::size_t size() const noexcept { return photons_.size(); }
     [[nodiscard]] const std::vector<Photon>& photons() const noexcept { return photons_; }
@@ -2456,11 +2476,21 @@ public:
         if (estimator.k == 0) {
             tree_->within({p.x, p.y, p.z}, estimator.radius, [&](std::uint32_t index, float d2) { add(index, d2, r2); });
         } else {
-            const auto found = tree_->nearest<max_k>({p.x, p.y, p.z}, estimator.k, estimator.radius);
-            if (found.size() == 0) return sum;
-            if (found.size() == std::min(estimator.k, max_k) || !(r2 < infinity<float>)) r2 = found[found.size() - 1].distance2;
-            if (!(r2 > 0.0f)) return Rgb<float>(0.0f);
-            for (const Neighbour<float>& neighbour : found) add(neighbour.index, neighbour.distance2, r2);
+            // The smallest capacity that holds k: a search's heap is no larger than needed.
+            const auto nearest = [&]<std::size_t Capacity>() {
+                const auto found = tree_->nearest<Capacity, false>({p.x, p.y, p.z}, estimator.k, estimator.radius);
+                if (found.size() == 0) return false;
+                if (found.size() == std::min(estimator.k, Capacity) || !(r2 < infinity<float>)) // the farthest is first
+                    r2 = found[0].distance2;
+                if (!(r2 > 0.0f)) return false;
+                for (const Neighbour<float>& neighbour : found) add(neighbour.index, neighbour.distance2, r2);
+                return true;
+            };
+            const bool any = estimator.k <= 64    ? nearest.template operator()<64>()
+                             : estimator.k <= 128 ? nearest.template operator()<128>()
+                             : estimator.k <= 256 ? nearest.template operator()<256>()
+                                                  : nearest.template operator()<max_k>();
+            if (!any) return Rgb<float>(0.0f);
         }
         return sum / (weight.mean() * pi<float> * r2);
     }

@@ -188,6 +188,25 @@ TEST_CASE_TEMPLATE("k chosen at run time, with a maximum distance, equals brute 
                 mismatches += !std::equal(got.begin(), got.end(), expected.begin(), expected.end());
             }
     CHECK(mismatches == 0);
+    // Unsorted: the same neighbours in heap order, the farthest first.
+    for (const auto& q : queries) {
+        const auto sorted = tree.template nearest<64>(q, 40, T(0.2));
+        const auto heap = tree.template nearest<64, false>(q, 40, T(0.2));
+        std::vector<Neighbour<T>> got(heap.begin(), heap.end());
+        std::sort(got.begin(), got.end());
+        mismatches += !std::equal(got.begin(), got.end(), sorted.begin(), sorted.end());
+        if (heap.size() > 0) mismatches += !(heap[0] == sorted[sorted.size() - 1]);
+    }
+    CHECK(mismatches == 0);
+    // Renumbered in tree order: index i is the point order()[i] of the set.
+    KdTree<ArrayPoints<T, 3>> renumbered(ArrayPoints<T, 3>{points});
+    const std::vector<std::uint32_t> order(renumbered.order().begin(), renumbered.order().end());
+    renumbered.index_in_tree_order();
+    for (const auto& q : queries) {
+        const auto a = tree.template nearest<16>(q), b = renumbered.template nearest<16>(q);
+        for (std::size_t i = 0; i < a.size(); ++i) mismatches += !(a[i].distance2 == b[i].distance2 && order[b[i].index] == a[i].index);
+    }
+    CHECK(mismatches == 0);
     CHECK(tree.template nearest<8>(queries[0], 0, T(1)).size() == 0);
     CHECK(tree.template nearest<8>(queries[0], 8, T(-1)).size() == 0);
 }

@@ -113,6 +113,17 @@ public:
 
     [[nodiscard]] constexpr std::size_t size() const noexcept { return points_.size(); }
 
+    /// The point set's index of each point in tree order: a leaf's points are
+    /// consecutive, so data kept in this order is read with good locality.
+    [[nodiscard]] constexpr std::span<const std::uint32_t> order() const noexcept { return index_; }
+
+    /// For a caller that has put its own data in order(): from now on a point's index
+    /// is its place in tree order (and ties are broken by that).
+    constexpr void index_in_tree_order() noexcept
+    {
+        for (std::size_t i = 0; i < index_.size(); ++i) index_[i] = static_cast<std::uint32_t>(i);
+    }
+
     /// Bytes held by the tree (points in tree order, their indices, the nodes).
     [[nodiscard]] constexpr std::size_t memory_bytes() const noexcept
     {
@@ -130,7 +141,9 @@ public:
     /// The k <= K nearest points to q within max_radius (distance <= max_radius), nearest
     /// first, ties by lower index: K is the capacity, fixed at compile time, k and the
     /// radius are chosen at run time (Jensen's k-nearest search with a maximum distance).
-    template <std::size_t K>
+    /// Sorted = false leaves them in heap order (the same set, the farthest first), for
+    /// callers that only sum over them.
+    template <std::size_t K, bool Sorted = true>
     [[nodiscard]] constexpr NearestNeighbours<T, K> nearest(const Point& q, std::size_t k, T max_radius) const noexcept
     {
         static_assert(K >= 1);
@@ -139,7 +152,7 @@ public:
         if (points_.empty() || k == 0 || !(max_radius >= T(0))) return heap;
         Point offsets{};
         search_nearest<K>(q, k, max_radius * max_radius, 1, 0, points_.size(), offsets, heap);
-        if constexpr (K > 1) std::sort_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
+        if constexpr (K > 1 && Sorted) std::sort_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
         return heap;
     }
 

@@ -86,8 +86,15 @@ public:
 
     PhotonMap() = default;
 
-    /// Own the photons and build the tree over them.
-    explicit PhotonMap(std::vector<Photon> photons) : photons_(std::move(photons)), tree_(std::in_place, PhotonPositions{photons_}) {}
+    /// Own the photons and build the tree over them. The photons are then put in tree
+    /// order, so that every subtree's photons (and each leaf's) lie together in memory
+    /// and an estimate reads them with few cache misses.
+    explicit PhotonMap(std::vector<Photon> photons) : tree_(std::in_place, PhotonPositions{photons})
+    {
+        photons_.reserve(photons.size());
+        for (const std::uint32_t i : tree_->order()) photons_.push_back(photons[i]);
+        tree_->index_in_tree_order();
+    }
 
     [[nodiscard]] std::size_t size() const noexcept { return photons_.size(); }
     [[nodiscard]] const std::vector<Photon>& photons() const noexcept { return photons_; }
@@ -114,11 +121,21 @@ public:
         if (estimator.k == 0) {
             tree_->within({p.x, p.y, p.z}, estimator.radius, [&](std::uint32_t index, float d2) { add(index, d2, r2); });
         } else {
-            const auto found = tree_->nearest<max_k>({p.x, p.y, p.z}, estimator.k, estimator.radius);
-            if (found.size() == 0) return sum;
-            if (found.size() == std::min(estimator.k, max_k) || !(r2 < infinity<float>)) r2 = found[found.size() - 1].distance2;
-            if (!(r2 > 0.0f)) return Rgb<float>(0.0f);
-            for (const Neighbour<float>& neighbour : found) add(neighbour.index, neighbour.distance2, r2);
+            // The smallest capacity that holds k: a search's heap is no larger than needed.
+            const auto nearest = [&]<std::size_t Capacity>() {
+                const auto found = tree_->nearest<Capacity, false>({p.x, p.y, p.z}, estimator.k, estimator.radius);
+                if (found.size() == 0) return false;
+                if (found.size() == std::min(estimator.k, Capacity) || !(r2 < infinity<float>)) // the farthest is first
+                    r2 = found[0].distance2;
+                if (!(r2 > 0.0f)) return false;
+                for (const Neighbour<float>& neighbour : found) add(neighbour.index, neighbour.distance2, r2);
+                return true;
+            };
+            const bool any = estimator.k <= 64    ? nearest.template operator()<64>()
+                             : estimator.k <= 128 ? nearest.template operator()<128>()
+                             : estimator.k <= 256 ? nearest.template operator()<256>()
+                                                  : nearest.template operator()<max_k>();
+            if (!any) return Rgb<float>(0.0f);
         }
         return sum / (weight.mean() * pi<float> * r2);
     }
