@@ -177,6 +177,47 @@ def kdtree_chart(rows):
     save(fig, "kdtree.png")
 
 
+def photon_chart(rows):
+    """Error against time: prism's estimators and POV-Ray, both against prism's reference
+    (left) and each against its own (right)."""
+    fig, axes = plt.subplots(1, 2, figsize=(15, 5.2))
+    for ax, key, title in ((axes[0], "rmse_common", "against prism's 2e7-photon reference (POV-Ray's highlights masked)"),
+                           (axes[1], "rmse", "each against its own reference")):
+        for name in dict.fromkeys(r["estimator"] for r in rows):
+            line = [r for r in rows if r["estimator"] == name]
+            pov = line[0]["renderer"] == "povray"
+            ax.plot([float(r["time"]) for r in line], [float(r[key]) for r in line], "s-" if pov else "o-", linewidth=2.5 if pov else 1.2,
+                    color="black" if pov else None, markersize=4, label=("POV-Ray 3.7, " if pov else "prism, ") + name)
+            if pov or name.startswith("k 100 (r <= 0.1) cone"):
+                for r in line:
+                    ax.annotate(f"{int(r['photons']):.0e}".replace("+0", ""), (float(r["time"]), float(r[key])), textcoords="offset points",
+                                xytext=(3, 3), fontsize=7)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("seconds: photon tracing + rendering, 2 threads")
+        ax.set_ylabel("RMSE, 8-bit sRGB (0..255)")
+        ax.set_title(title, fontsize=10)
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].legend(fontsize=7, loc="upper right")
+    fig.suptitle("Cornell caustics, 512x512, 1e4 ... 3e6 photons (labels: photons emitted / POV-Ray count)", fontsize=10)
+    save(fig, "photon_accuracy.png")
+
+
+def leak_chart(rows):
+    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    for name in dict.fromkeys(r["config"] for r in rows):
+        line = [r for r in rows if r["config"] == name]
+        ax.plot([int(r["photons"]) for r in line], [float(r["rmse"]) for r in line], "o-", label=name)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("global photons")
+    ax.set_ylabel("RMSE against 1e7 photons, 8-bit sRGB")
+    ax.set_title("global map read directly (r = 0.25): sphere or disk, filters", fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, "photon_leaks.png")
+
+
 def main():
     if (rows := read("accuracy.csv")):
         accuracy_charts(rows)
@@ -190,6 +231,10 @@ def main():
         composition_chart(rows)
     if (rows := read("kdtree.csv")):
         kdtree_chart(rows)
+    if (rows := read("photon_accuracy.csv")):
+        photon_chart(rows)
+    if (rows := read("photon_leaks.csv")):
+        leak_chart(rows)
 
 
 if __name__ == "__main__":

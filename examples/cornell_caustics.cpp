@@ -49,6 +49,8 @@ int main(int argc, char** argv)
     return examples::run([&] {
         examples::Options options;
         options.render.spp = 4;
+        options.k = 100; // the caustic estimate: 100 nearest within 0.1, cone filter
+        options.filter = prism::Filter::cone;
         if (!examples::parse(argc, argv, options, "the Cornell box with photon-mapped caustics and colour bleeding")) return 0;
         if (!options.povray.empty()) {
             options.povray_light = true;

@@ -3040,13 +3040,14 @@ public:
     /// What the nearest global photons say about the light's visibility at p (normal n
     /// facing the viewer): true when the `visibility_k` nearest within global.radius
     /// that arrived on n's side hold direct photons and no shadow photons, false for
-    /// the reverse, nothing when they disagree or too few (under half) are either.
+    /// the reverse, nothing when they disagree or too few (under a quarter, or under 2) are
+    /// either.
     [[nodiscard]] std::optional<bool> visibility_from_photons(const Vec3<T>& p, const Vec3<T>& n) const noexcept
     {
         if (config_.visibility_k == 0) return std::nullopt;
         const auto [direct, shadow] =
             maps_.global.direct_and_shadow(Vec3<float>(p), Vec3<float>(n), config_.visibility_k, config_.global.radius);
-        const std::size_t enough = std::max<std::size_t>(config_.visibility_k / 2, 1);
+        const std::size_t enough = std::max<std::size_t>(config_.visibility_k / 4, 2);
         if (direct >= enough && shadow == 0) return true;
         if (shadow >= enough && direct == 0) return false;
         return std::nullopt;
