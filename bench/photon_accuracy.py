@@ -44,10 +44,10 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 SIZE = 512
 COUNTS = [10000, 30000, 100000, 300000, 1000000, 3000000]
 PRISM_ESTIMATORS = {  # name -> (extra arguments of cornell_caustics, largest photon count)
-    "radius 0.05": (["--radius", "0.05"], 3000000),
-    "radius 0.1": (["--radius", "0.1"], 3000000),
-    "radius 0.2": (["--radius", "0.2"], 1000000),
-    "k 50 (r <= 0.15)": (["--k", "50", "--radius", "0.15"], 3000000),
+    "radius 0.05": (["--k", "0", "--radius", "0.05", "--filter", "box"], 3000000),
+    "radius 0.1": (["--k", "0", "--radius", "0.1", "--filter", "box"], 3000000),
+    "radius 0.2": (["--k", "0", "--radius", "0.2", "--filter", "box"], 1000000),
+    "k 50 (r <= 0.15)": (["--k", "50", "--radius", "0.15", "--filter", "box"], 3000000),
     "k 50 (r <= 0.15) cone": (["--k", "50", "--radius", "0.15", "--filter", "cone"], 3000000),
     "k 100 (r <= 0.1) cone": (["--k", "100", "--radius", "0.1", "--filter", "cone"], 3000000),
     "k 100 (r <= 0.1) gaussian": (["--k", "100", "--radius", "0.1", "--filter", "gaussian"], 3000000),

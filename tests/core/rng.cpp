@@ -51,7 +51,7 @@ TEST_CASE("sobol02 is a (0,2)-sequence: 2^m points fill every elementary box of 
     // The definition, checked for m = 10 and every box shape 2^-a x 2^-(m - a), on the
     // first 1024 points and on points 3072..4095, scrambled and not.
     constexpr int m = 10, n = 1 << m;
-    for (const auto [sx, sy] : {std::pair{0u, 0u}, std::pair{0x9e3779b9u, 0x7f4a7c15u}})
+    for (const auto& [sx, sy] : {std::pair{0u, 0u}, std::pair{0x9e3779b9u, 0x7f4a7c15u}})
         for (const std::uint32_t first : {0u, 3u * n}) {
             int bad = 0;
             for (int a = 0; a <= m; ++a) {
