@@ -35,7 +35,7 @@ prism::Film photon_picture(const prism::PhotonMap& map, const prism::Camera<T>& 
         const T sx = prism::dot(v, right) / (depth * half_width), sy = prism::dot(v, up) / (depth * half_height);
         const int x = static_cast<int>((sx + T(1)) * T(0.5) * T(width)), y = static_cast<int>((T(1) - sy) * T(0.5) * T(height));
         if (x < 0 || y < 0 || x >= width || y >= height) continue;
-        sum[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] += photon.power * gain;
+        sum[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] += photon.power() * gain;
     }
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) film.set(x, y, sum[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)]);

@@ -2277,14 +2277,20 @@ static_assert(Light<PointLight<float>>);
 // scales a survivor's power per channel by reflectance over survival probability.
 
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <utility>
 
 namespace prism {
 
-/// One stored photon: where it landed, the power it carries (W) and where it came from.
-struct Photon {
+/// One stored photon, 24 bytes as Jensen's compact record: where it landed (three
+/// floats), the power it carries (W) in shared-exponent RGBE (Ward 1991: 8 bits of
+/// mantissa per channel, rounded to nearest), the direction it came from as two 16-bit
+/// octahedral coordinates (Meyer et al. 2010), and its flags.
+class Photon {
+public:
     enum Flags : std::uint8_t {
         direct = 1,  ///< first hit after leaving the light
         caustic = 2, ///< reached this diffuse surface only by specular bounces (L S+ D)
@@ -2292,12 +2298,73 @@ struct Photon {
     };
 
     Vec3<float> position{};
-    Rgb<float> power{};
-    Vec3<float> from{}; ///< unit direction back toward where the photon came from
     std::uint8_t flags = 0;
 
+    Photon() = default;
+
+    /// `from`: unit direction back toward where the photon came from.
+    Photon(const Vec3<float>& at, const Rgb<float>& power, const Vec3<float>& from, std::uint8_t flag_bits) noexcept
+        : position(at), flags(flag_bits), rgbe_(encode_rgbe(power)), octahedral_(encode_octahedral(from))
+    {
+    }
+
+    [[nodiscard]] Rgb<float> power() const noexcept
+    {
+        if (rgbe_[3] == 0) return Rgb<float>(0.0f);
+        const float scale = std::ldexp(1.0f, int(rgbe_[3]) - (128 + 8));
+        return {float(rgbe_[0]) * scale, float(rgbe_[1]) * scale, float(rgbe_[2]) * scale};
+    }
+
+    [[nodiscard]] Vec3<float> from() const noexcept
+    {
+        const float u = float(octahedral_[0]) / 65535.0f * 2.0f - 1.0f, v = float(octahedral_[1]) / 65535.0f * 2.0f - 1.0f;
+        Vec3<float> d{u, v, 1.0f - std::abs(u) - std::abs(v)};
+        if (d.z < 0.0f) {
+            const float x = d.x;
+            d.x = (1.0f - std::abs(d.y)) * (x >= 0.0f ? 1.0f : -1.0f);
+            d.y = (1.0f - std::abs(x)) * (d.y >= 0.0f ? 1.0f : -1.0f);
+        }
+        return normalize(d);
+    }
+
     friend bool operator==(const Photon&, const Photon&) = default;
+
+private:
+    /// The largest channel's exponent e (max = m 2^(e-8), 128 <= m < 256 after
+    /// rounding), every channel's mantissa rounded to nearest at that exponent.
+    static std::array<std::uint8_t, 4> encode_rgbe(const Rgb<float>& c) noexcept
+    {
+        const float largest = std::max({c.x, c.y, c.z});
+        if (!(largest > 1e-38f)) return {0, 0, 0, 0};
+        int e = 0;
+        std::frexp(largest, &e); // largest = f 2^e, 0.5 <= f < 1
+        float scale = std::ldexp(1.0f, 8 - e);
+        if (std::lround(largest * scale) > 255) { // rounding reached 256: one exponent up
+            ++e;
+            scale *= 0.5f;
+        }
+        const auto mantissa = [&](float x) { return std::uint8_t(std::clamp(std::lround(std::max(x, 0.0f) * scale), 0L, 255L)); };
+        return {mantissa(c.x), mantissa(c.y), mantissa(c.z), std::uint8_t(std::clamp(e + 128, 1, 255))};
+    }
+
+    static std::array<std::uint16_t, 2> encode_octahedral(const Vec3<float>& d) noexcept
+    {
+        const float l1 = std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
+        float u = l1 > 0.0f ? d.x / l1 : 0.0f, v = l1 > 0.0f ? d.y / l1 : 0.0f;
+        if (d.z < 0.0f) {
+            const float x = u;
+            u = (1.0f - std::abs(v)) * (x >= 0.0f ? 1.0f : -1.0f);
+            v = (1.0f - std::abs(x)) * (v >= 0.0f ? 1.0f : -1.0f);
+        }
+        const auto quantise = [](float x) { return std::uint16_t(std::lround((std::clamp(x, -1.0f, 1.0f) * 0.5f + 0.5f) * 65535.0f)); };
+        return {quantise(u), quantise(v)};
+    }
+
+    std::array<std::uint8_t, 4> rgbe_{};
+    std::array<std::uint16_t, 2> octahedral_{};
 };
+
+static_assert(sizeof(Photon) == 24);
 
 /// A direction uniform on the unit sphere: z = 1 - 2u, phi = 2 pi v (errata 4: no
 /// rejection sampling of a cube, whose accepted points were never normalised).
@@ -2467,10 +2534,10 @@ public:
         const detail::FilterWeight weight{estimator.filter};
         const auto add = [&](std::uint32_t index, float d2, float r2) {
             const Photon& photon = photons_[index];
-            if ((photon.flags & estimator.excluded) != 0 || !(dot(photon.from, n) > 0.0f)) return;
+            if ((photon.flags & estimator.excluded) != 0 || !(dot(photon.from(), n) > 0.0f)) return;
             const float height = dot(photon.position - p, n);
             if (height * height > estimator.disk * estimator.disk * r2) return;
-            sum += photon.power * weight(d2, r2);
+            sum += photon.power() * weight(d2, r2);
         };
         float r2 = estimator.radius * estimator.radius;
         if (estimator.k == 0) {
@@ -2523,7 +2590,7 @@ public:
             const Photon& photon = photons_[i];
             if (photon.flags & Photon::shadow) continue;
             samples.push_back(photon);
-            irradiance_.push_back(irradiance<K>(photon.position, photon.from));
+            irradiance_.push_back(irradiance<K>(photon.position, photon.from()));
         }
         samples_ = std::move(samples);
         sample_tree_.emplace(PhotonPositions{samples_});
@@ -2535,7 +2602,7 @@ public:
     {
         if (!sample_tree_ || samples_.empty()) return Rgb<float>(0.0f);
         for (const Neighbour<float>& neighbour : sample_tree_->nearest<4>({p.x, p.y, p.z}))
-            if (dot(samples_[neighbour.index].from, n) > 0.0f) return irradiance_[neighbour.index];
+            if (dot(samples_[neighbour.index].from(), n) > 0.0f) return irradiance_[neighbour.index];
         return Rgb<float>(0.0f);
     }
 
@@ -2549,7 +2616,7 @@ public:
         if (!tree_) return {0, 0};
         for (const Neighbour<float>& neighbour : tree_->nearest<max_k>({p.x, p.y, p.z}, k, max_radius)) {
             const Photon& photon = photons_[neighbour.index];
-            if (!(dot(photon.from, n) > 0.0f)) continue;
+            if (!(dot(photon.from(), n) > 0.0f)) continue;
             direct += (photon.flags & Photon::direct) != 0;
             shadow += (photon.flags & Photon::shadow) != 0;
         }

@@ -111,7 +111,7 @@ TEST_CASE("energy: in a closed diffuse room the stored power sums to Phi (1 + rh
     const std::size_t photons = 100000;
     const PhotonMaps maps = trace_photons(scene, {.global_photons = photons, .caustic_photons = 0, .max_bounces = 16, .shadow_photons = false});
     double total = 0;
-    for (const Photon& p : maps.global.photons()) total += p.power.x;
+    for (const Photon& p : maps.global.photons()) total += p.power().x;
     const double phi = 4 * pi<double> * intensity;
     const double expected = phi * (1 - std::pow(rho, 17)) / (1 - rho);
     // Each photon's stored total is Phi/N times a geometric count of bounces (mean 2,
@@ -202,7 +202,7 @@ TEST_CASE("a glass ball focuses a parallel beam R (2 - n) / (2 (n - 1)) behind i
     for (float v : ring) CHECK(std::abs(v - ring_mean) < 0.25f * ring_mean); // symmetric
     // Calibrated: the ball passes E pi R^2 (less Fresnel reflection) onto the screen.
     double total = 0;
-    for (const Photon& p : maps.caustic.photons()) total += p.power.x;
+    for (const Photon& p : maps.caustic.photons()) total += p.power().x;
     CHECK(total < std::acos(-1.0) * r * r);
     CHECK(total > 0.8 * std::acos(-1.0) * r * r);
 }
