@@ -2279,6 +2279,7 @@ static_assert(Light<PointLight<float>>);
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <utility>
@@ -2310,26 +2311,29 @@ public:
 
     [[nodiscard]] Rgb<float> power() const noexcept
     {
-        if (rgbe_[3] == 0) return Rgb<float>(0.0f);
-        const float scale = std::ldexp(1.0f, int(rgbe_[3]) - (128 + 8));
-        return {float(rgbe_[0]) * scale, float(rgbe_[1]) * scale, float(rgbe_[2]) * scale};
+        // 2^(e - 136) built from its bits where it is a normal float, ldexp below that.
+        const int biased = int(rgbe_[3]) - 136 + 127;
+        const float scale = biased > 0 ? std::bit_cast<float>(std::uint32_t(biased) << 23) : std::ldexp(1.0f, int(rgbe_[3]) - 136);
+        return rgbe_[3] == 0 ? Rgb<float>(0.0f) : Rgb<float>(float(rgbe_[0]) * scale, float(rgbe_[1]) * scale, float(rgbe_[2]) * scale);
     }
 
-    [[nodiscard]] Vec3<float> from() const noexcept
-    {
-        const float u = float(octahedral_[0]) / 65535.0f * 2.0f - 1.0f, v = float(octahedral_[1]) / 65535.0f * 2.0f - 1.0f;
-        Vec3<float> d{u, v, 1.0f - std::abs(u) - std::abs(v)};
-        if (d.z < 0.0f) {
-            const float x = d.x;
-            d.x = (1.0f - std::abs(d.y)) * (x >= 0.0f ? 1.0f : -1.0f);
-            d.y = (1.0f - std::abs(x)) * (d.y >= 0.0f ? 1.0f : -1.0f);
-        }
-        return normalize(d);
-    }
+    /// The unit direction back toward where the photon came from.
+    [[nodiscard]] Vec3<float> from() const noexcept { return normalize(unnormalised_from()); }
+
+    /// Whether the photon arrived on the side of a surface that the normal n points to.
+    [[nodiscard]] bool arrived_on(const Vec3<float>& n) const noexcept { return dot(unnormalised_from(), n) > 0.0f; }
 
     friend bool operator==(const Photon&, const Photon&) = default;
 
 private:
+    [[nodiscard]] Vec3<float> unnormalised_from() const noexcept
+    {
+        const float u = float(octahedral_[0]) * (2.0f / 65535.0f) - 1.0f, v = float(octahedral_[1]) * (2.0f / 65535.0f) - 1.0f;
+        const float z = 1.0f - std::abs(u) - std::abs(v);
+        if (z >= 0.0f) return {u, v, z};
+        return {std::copysign(1.0f - std::abs(v), u), std::copysign(1.0f - std::abs(u), v), z};
+    }
+
     /// The largest channel's exponent e (max = m 2^(e-8), 128 <= m < 256 after
     /// rounding), every channel's mantissa rounded to nearest at that exponent.
     static std::array<std::uint8_t, 4> encode_rgbe(const Rgb<float>& c) noexcept
@@ -2534,7 +2538,7 @@ public:
         const detail::FilterWeight weight{estimator.filter};
         const auto add = [&](std::uint32_t index, float d2, float r2) {
             const Photon& photon = photons_[index];
-            if ((photon.flags & estimator.excluded) != 0 || !(dot(photon.from(), n) > 0.0f)) return;
+            if ((photon.flags & estimator.excluded) != 0 || !photon.arrived_on(n)) return;
             const float height = dot(photon.position - p, n);
             if (height * height > estimator.disk * estimator.disk * r2) return;
             sum += photon.power() * weight(d2, r2);
@@ -2602,7 +2606,7 @@ public:
     {
         if (!sample_tree_ || samples_.empty()) return Rgb<float>(0.0f);
         for (const Neighbour<float>& neighbour : sample_tree_->nearest<4>({p.x, p.y, p.z}))
-            if (dot(samples_[neighbour.index].from(), n) > 0.0f) return irradiance_[neighbour.index];
+            if (samples_[neighbour.index].arrived_on(n)) return irradiance_[neighbour.index];
         return Rgb<float>(0.0f);
     }
 
@@ -2616,7 +2620,7 @@ public:
         if (!tree_) return {0, 0};
         for (const Neighbour<float>& neighbour : tree_->nearest<max_k>({p.x, p.y, p.z}, k, max_radius)) {
             const Photon& photon = photons_[neighbour.index];
-            if (!(dot(photon.from(), n) > 0.0f)) continue;
+            if (!photon.arrived_on(n)) continue;
             direct += (photon.flags & Photon::direct) != 0;
             shadow += (photon.flags & Photon::shadow) != 0;
         }

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <utility>
@@ -44,26 +45,29 @@ public:
 
     [[nodiscard]] Rgb<float> power() const noexcept
     {
-        if (rgbe_[3] == 0) return Rgb<float>(0.0f);
-        const float scale = std::ldexp(1.0f, int(rgbe_[3]) - (128 + 8));
-        return {float(rgbe_[0]) * scale, float(rgbe_[1]) * scale, float(rgbe_[2]) * scale};
+        // 2^(e - 136) built from its bits where it is a normal float, ldexp below that.
+        const int biased = int(rgbe_[3]) - 136 + 127;
+        const float scale = biased > 0 ? std::bit_cast<float>(std::uint32_t(biased) << 23) : std::ldexp(1.0f, int(rgbe_[3]) - 136);
+        return rgbe_[3] == 0 ? Rgb<float>(0.0f) : Rgb<float>(float(rgbe_[0]) * scale, float(rgbe_[1]) * scale, float(rgbe_[2]) * scale);
     }
 
-    [[nodiscard]] Vec3<float> from() const noexcept
-    {
-        const float u = float(octahedral_[0]) / 65535.0f * 2.0f - 1.0f, v = float(octahedral_[1]) / 65535.0f * 2.0f - 1.0f;
-        Vec3<float> d{u, v, 1.0f - std::abs(u) - std::abs(v)};
-        if (d.z < 0.0f) {
-            const float x = d.x;
-            d.x = (1.0f - std::abs(d.y)) * (x >= 0.0f ? 1.0f : -1.0f);
-            d.y = (1.0f - std::abs(x)) * (d.y >= 0.0f ? 1.0f : -1.0f);
-        }
-        return normalize(d);
-    }
+    /// The unit direction back toward where the photon came from.
+    [[nodiscard]] Vec3<float> from() const noexcept { return normalize(unnormalised_from()); }
+
+    /// Whether the photon arrived on the side of a surface that the normal n points to.
+    [[nodiscard]] bool arrived_on(const Vec3<float>& n) const noexcept { return dot(unnormalised_from(), n) > 0.0f; }
 
     friend bool operator==(const Photon&, const Photon&) = default;
 
 private:
+    [[nodiscard]] Vec3<float> unnormalised_from() const noexcept
+    {
+        const float u = float(octahedral_[0]) * (2.0f / 65535.0f) - 1.0f, v = float(octahedral_[1]) * (2.0f / 65535.0f) - 1.0f;
+        const float z = 1.0f - std::abs(u) - std::abs(v);
+        if (z >= 0.0f) return {u, v, z};
+        return {std::copysign(1.0f - std::abs(v), u), std::copysign(1.0f - std::abs(u), v), z};
+    }
+
     /// The largest channel's exponent e (max = m 2^(e-8), 128 <= m < 256 after
     /// rounding), every channel's mantissa rounded to nearest at that exponent.
     static std::array<std::uint8_t, 4> encode_rgbe(const Rgb<float>& c) noexcept

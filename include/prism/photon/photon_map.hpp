@@ -112,7 +112,7 @@ public:
         const detail::FilterWeight weight{estimator.filter};
         const auto add = [&](std::uint32_t index, float d2, float r2) {
             const Photon& photon = photons_[index];
-            if ((photon.flags & estimator.excluded) != 0 || !(dot(photon.from(), n) > 0.0f)) return;
+            if ((photon.flags & estimator.excluded) != 0 || !photon.arrived_on(n)) return;
             const float height = dot(photon.position - p, n);
             if (height * height > estimator.disk * estimator.disk * r2) return;
             sum += photon.power() * weight(d2, r2);
@@ -180,7 +180,7 @@ public:
     {
         if (!sample_tree_ || samples_.empty()) return Rgb<float>(0.0f);
         for (const Neighbour<float>& neighbour : sample_tree_->nearest<4>({p.x, p.y, p.z}))
-            if (dot(samples_[neighbour.index].from(), n) > 0.0f) return irradiance_[neighbour.index];
+            if (samples_[neighbour.index].arrived_on(n)) return irradiance_[neighbour.index];
         return Rgb<float>(0.0f);
     }
 
@@ -194,7 +194,7 @@ public:
         if (!tree_) return {0, 0};
         for (const Neighbour<float>& neighbour : tree_->nearest<max_k>({p.x, p.y, p.z}, k, max_radius)) {
             const Photon& photon = photons_[neighbour.index];
-            if (!(dot(photon.from(), n) > 0.0f)) continue;
+            if (!photon.arrived_on(n)) continue;
             direct += (photon.flags & Photon::direct) != 0;
             shadow += (photon.flags & Photon::shadow) != 0;
         }
