@@ -95,8 +95,9 @@ def run_povray(scene_text, threads, folder, count, gather=None, photons=True):
 def caustics(args, binary, scene_text, tmp, out):
     common = ["--light", "povray", "--photons", "0"]
     print("references: prism 2e7 photons (two seeds), POV-Ray count 2e7 with gather 100, 400 and 20, 100 ...", flush=True)
-    ref = run_prism(binary, args.threads, tmp, common + ["--caustic-photons", "20000000", "--radius", "0.03"])
-    ref2 = run_prism(binary, args.threads, tmp, common + ["--caustic-photons", "20000000", "--radius", "0.03", "--seed", "1"])
+    reference = common + ["--caustic-photons", "20000000", "--k", "0", "--radius", "0.03", "--filter", "box"]
+    ref = run_prism(binary, args.threads, tmp, reference)
+    ref2 = run_prism(binary, args.threads, tmp, reference + ["--seed", "1"])
     pov_ref = run_povray(scene_text, args.threads, tmp, 20000000, gather=(100, 400))
     pov_ref2 = run_povray(scene_text, args.threads, tmp, 20000000, gather=(20, 100))
     floor = rmse(ref["image"], ref2["image"]) / np.sqrt(2)
@@ -165,7 +166,7 @@ def leaks(args, binary, tmp, out):
     common = ["--caustic-photons", "0", "--gather", "0", "--global-radius", "0.25"]
     print("light leaks: global map read directly; reference 1e7 photons, r = 0.08, disk 0.1 ...", flush=True)
     ref = run_prism(binary, args.threads, tmp, ["--caustic-photons", "0", "--gather", "0", "--photons", "10000000",
-                                                 "--global-radius", "0.08", "--disk", "0.1"])
+                                                 "--global-radius", "0.08", "--disk", "0.1", "--filter", "box"])
     rows, crops = [], []
     for count in [10000, 30000, 100000, 300000, 1000000]:
         for name, extra in LEAK_CONFIGS.items():
