@@ -13,7 +13,7 @@
 //   indirect   final gathering: `gather_rays` cosine-distributed rays, each reading the
 //              global map's irradiance where it lands (L = albedo / pi * E there), so the
 //              blotchy global estimate is seen only after one more bounce. The global
-//              irradiance is precomputed at every 4th photon from its `global_k` nearest
+//              irradiance is precomputed at every 4th photon from its 64 nearest
 //              (Christensen 1999), so each gather ray costs one nearest lookup; with
 //              gather_rays = 0 the global map is read directly at the point instead,
 //              counting only photons that are neither direct nor caustic (those two are

@@ -4,16 +4,17 @@
 //
 // Global map: photons emitted uniformly over the sphere from each point light, and from
 // each parallel light through a disk facing it that covers every bounded object (the
-// projection disk), stored at every diffuse hit (flagged direct on the first, caustic when only specular
-// bounces came before). Caustic map: photons aimed at the bounding spheres of specular
-// objects (POV-Ray's `target`), their power scaled by the aimed cone's share of the
-// sphere, stored only at the first diffuse hit after one or more specular bounces
-// (L S+ D). A diffuse hit continues by Russian roulette on the reflectance albedo kd
-// with a cosine-distributed direction; a dielectric reflects with probability F and
-// refracts otherwise (Beer-Lambert inside); a conductor reflects by roulette on its
-// reflectance. Shadow photons mark where the straight continuation of a direct
-// photon's path meets further diffuse surfaces (Jensen and Christensen 1995; errata 8).
-// Every photon draws from its own random stream, so the maps are the same bits for any
+// projection disk), stored at every diffuse hit (flagged direct on the first, caustic
+// when only specular bounces came before). Caustic map: photons aimed at the bounding
+// spheres of specular objects (POV-Ray's `target`), their power scaled by the aimed
+// cone's share of the sphere, stored only at the first diffuse hit after one or more
+// specular bounces (L S+ D). A diffuse hit continues by Russian roulette on the
+// reflectance albedo kd with a cosine-distributed direction; a dielectric reflects with
+// probability F and refracts otherwise (Beer-Lambert inside); a conductor reflects by
+// roulette on its reflectance. Shadow photons mark where the straight continuation of a
+// direct photon's path meets further diffuse surfaces (Jensen and Christensen 1995;
+// errata 8). Photon i starts from point i of a scrambled Sobol sequence and draws the
+// rest of its path from its own random stream, so the maps are the same bits for any
 // thread count. A point light with Falloff::none (POV-Ray's `fade_power 0`) has no
 // physical power; its photons are scaled by the squared length of the path they
 // travelled, as POV-Ray does, so that their estimate gives irradiance that does not
