@@ -26,8 +26,6 @@ int main(int argc, char** argv)
         options.render.spp = 4;
         options.photons = 100000;
         options.caustic_photons = 1000000;
-        options.k = 100;
-        options.filter = Filter::cone;
         if (!examples::parse(int(args.size()), args.data(), options,
                              "a glass ball's caustic on a checkered floor (photon mapping; --whitted: shadow rays through the glass)"))
             return 0;
@@ -43,10 +41,8 @@ int main(int argc, char** argv)
             write_png(examples::timed_render("caustic_sphere", camera, integrator, options.render), options.out / "caustic_sphere_whitted.png");
             return 0;
         }
-        const PhotonMapper mapper(scene, {.photons = {.global_photons = options.photons, .caustic_photons = options.caustic_photons,
-                                                      .seed = options.render.seed, .threads = options.render.threads},
-                                          .caustic = {.k = options.k, .radius = float(options.radius), .filter = options.filter,
-                                                      .disk = float(options.disk)},
+        const PhotonMapper mapper(scene, {.photons = examples::photon_tracer_config(options),
+                                          .caustic = examples::caustic_estimator(options),
                                           .gather_rays = options.gather});
         write_png(examples::timed_render("caustic_sphere", camera, mapper, options.render), options.out / "caustic_sphere.png");
         return 0;

@@ -25,9 +25,9 @@ struct Options {
     std::size_t caustic_photons = 200000;
     int gather = 0;
     double radius = 0.1;          ///< the caustic estimate's radius, or its search limit with --k
-    std::size_t k = 0;            ///< > 0: the caustic estimate from the k nearest photons
+    std::size_t k = 100;          ///< > 0: the caustic estimate from the k nearest photons, 0: all within radius
     double global_radius = 0.25;  ///< the global map's estimate, where it is read directly
-    prism::Filter filter = prism::Filter::box;
+    prism::Filter filter = prism::Filter::cone;
     double disk = 1.0;            ///< < 1 flattens the estimate's sphere to a disk (against leaks)
     std::size_t visibility = 0;   ///< > 0: skip shadow rays where this many nearest photons agree
     bool povray_light = false;    ///< POV-Ray's no-falloff light, as its scene has it
@@ -49,9 +49,9 @@ inline void print_help(const char* program, const char* description, const Optio
                 "  --caustic-photons N  photons aimed at specular objects (default 200000)\n"
                 "  --gather N           final-gather rays per diffuse hit, 0 = read the global map (default 0)\n"
                 "  --radius R           radius of the caustic estimate, or its search limit with --k (default 0.1)\n"
-                "  --k N                caustic estimate from the N nearest photons, 0 = every photon within R (default 0)\n"
+                "  --k N                caustic estimate from the N nearest photons, 0 = every photon within R (default 100)\n"
                 "  --global-radius R    radius of the global map's estimate where read directly (default 0.25)\n"
-                "  --filter F           box, cone or gaussian, for both estimates (default box)\n"
+                "  --filter F           box, cone or gaussian, for both estimates (default cone)\n"
                 "  --disk D             keep photons within D R of the tangent plane, < 1 against light leaks (default 1)\n"
                 "  --visibility N       skip shadow rays where the N nearest global photons agree (default 0 = never)\n"
                 "  --light L            physical (inverse-square) or povray (no falloff, as the .pov file) (default physical)\n"
@@ -125,6 +125,19 @@ inline bool parse(int argc, char** argv, Options& options, const char* descripti
     }
     std::filesystem::create_directories(options.out);
     return true;
+}
+
+/// The photon tracer's settings from the command line.
+inline prism::PhotonTracerConfig photon_tracer_config(const Options& options)
+{
+    return {.global_photons = options.photons, .caustic_photons = options.caustic_photons, .seed = options.render.seed,
+            .threads = options.render.threads};
+}
+
+/// The caustic map's estimate from the command line.
+inline prism::Estimator caustic_estimator(const Options& options)
+{
+    return {.k = options.k, .radius = float(options.radius), .filter = options.filter, .disk = float(options.disk)};
 }
 
 /// Run an example's body, turning exceptions into a message and exit code 1.

@@ -49,8 +49,6 @@ int main(int argc, char** argv)
     return examples::run([&] {
         examples::Options options;
         options.render.spp = 4;
-        options.k = 100; // the caustic estimate: 100 nearest within 0.1, cone filter
-        options.filter = prism::Filter::cone;
         if (!examples::parse(argc, argv, options, "the Cornell box with photon-mapped caustics and colour bleeding")) return 0;
         if (!options.povray.empty()) {
             options.povray_light = true;
@@ -59,9 +57,8 @@ int main(int argc, char** argv)
         const auto scene = scenes::cornell_scene<float>(!options.povray_light);
         using Mapper = prism::PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
         const auto start = std::chrono::steady_clock::now();
-        const Mapper mapper(scene, {.photons = {.global_photons = options.photons, .caustic_photons = options.caustic_photons,
-                                                .seed = options.render.seed, .threads = options.render.threads},
-                                    .caustic = {.k = options.k, .radius = float(options.radius), .filter = options.filter, .disk = float(options.disk)},
+        const Mapper mapper(scene, {.photons = examples::photon_tracer_config(options),
+                                    .caustic = examples::caustic_estimator(options),
                                     .global = {.radius = float(options.global_radius), .filter = options.filter, .disk = float(options.disk),
                                                .excluded = prism::Photon::direct | prism::Photon::caustic},
                                     .gather_rays = options.gather,

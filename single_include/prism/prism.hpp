@@ -2470,37 +2470,47 @@ namespace detail {
 
 /// A filter's weight at squared distance d2 within radius^2 r2, and its mean over the disk
 /// (the normalisation: a uniform density gives back itself).
-struct FilterWeight {
-    Filter filter;
-
+class FilterWeight {
+public:
     static constexpr float gaussian_alpha = 0.918f, gaussian_beta = 1.953f;
+
+    /// The Gaussian's constant denominator and every filter's mean are taken here, once
+    /// per estimate, not once per photon.
+    explicit FilterWeight(Filter filter) noexcept : filter_(filter)
+    {
+        switch (filter) {
+        case Filter::cone: mean_ = 1.0f / 3.0f; break;
+        case Filter::gaussian: {
+            // With u = d^2 / r^2 uniform on [0, 1], E[exp(-beta u / 2)] = (1 - exp(-beta / 2))
+            // / (beta / 2), which gives a mean of 0.531 for Jensen's alpha and beta, not 1:
+            // dividing by pi r^2 alone would halve the estimate.
+            gaussian_denominator_ = 1.0f - std::exp(-gaussian_beta);
+            const float m = (1.0f - std::exp(-gaussian_beta / 2.0f)) / (gaussian_beta / 2.0f);
+            mean_ = gaussian_alpha * (1.0f - (1.0f - m) / gaussian_denominator_);
+            break;
+        }
+        case Filter::box: break;
+        }
+    }
 
     [[nodiscard]] float operator()(float d2, float r2) const noexcept
     {
-        switch (filter) {
+        switch (filter_) {
         case Filter::cone: return 1.0f - std::sqrt(d2 / r2);
         case Filter::gaussian:
-            return gaussian_alpha * (1.0f - (1.0f - std::exp(-gaussian_beta * d2 / (2.0f * r2))) / (1.0f - std::exp(-gaussian_beta)));
+            return gaussian_alpha * (1.0f - (1.0f - std::exp(-gaussian_beta * d2 / (2.0f * r2))) / gaussian_denominator_);
         case Filter::box: break;
         }
         return 1.0f;
     }
 
-    /// Mean weight over the disk. Cone: 1/3. Gaussian: with u = d^2 / r^2 uniform on [0, 1],
-    /// E[exp(-beta u / 2)] = (1 - exp(-beta / 2)) / (beta / 2), which gives 0.531 for
-    /// Jensen's alpha and beta, not 1: dividing by pi r^2 alone would halve the estimate.
-    [[nodiscard]] float mean() const noexcept
-    {
-        switch (filter) {
-        case Filter::cone: return 1.0f / 3.0f;
-        case Filter::gaussian: {
-            const float m = (1.0f - std::exp(-gaussian_beta / 2.0f)) / (gaussian_beta / 2.0f);
-            return gaussian_alpha * (1.0f - (1.0f - m) / (1.0f - std::exp(-gaussian_beta)));
-        }
-        case Filter::box: break;
-        }
-        return 1.0f;
-    }
+    /// Mean weight over the disk. Box 1, cone 1/3, Gaussian 0.531.
+    [[nodiscard]] float mean() const noexcept { return mean_; }
+
+private:
+    Filter filter_;
+    float gaussian_denominator_ = 1.0f;
+    float mean_ = 1.0f;
 };
 
 } // namespace detail
@@ -2535,7 +2545,7 @@ public:
     {
         Rgb<float> sum(0.0f);
         if (!tree_ || photons_.empty() || !(estimator.radius > 0.0f)) return sum;
-        const detail::FilterWeight weight{estimator.filter};
+        const detail::FilterWeight weight(estimator.filter);
         const auto add = [&](std::uint32_t index, float d2, float r2) {
             const Photon& photon = photons_[index];
             if ((photon.flags & estimator.excluded) != 0 || !photon.arrived_on(n)) return;
@@ -2813,14 +2823,9 @@ public:
         std::apply([&](const auto&... slot) { (add_to_extent(slot), ...); }, scene_.slots);
         for (const PointLight<T>& light : lights_)
             global_.push_back({light.position, {T(0), T(1), T(0)}, T(-1), light.power(), T(0), light.falloff == Falloff::none});
-        if (!extent_.empty()) {
-            const Vec3<T> middle = T(0.5) * (extent_.lo + extent_.hi);
-            const T radius = T(0.5) * length(extent_.hi - extent_.lo);
-            for (const DirectionalLight<T>& sun : suns_) {
-                const Vec3<T> axis = normalize(sun.direction);
-                global_.push_back({middle - T(2) * radius * axis, axis, T(-1), sun.irradiance * (pi<T> * radius * radius), radius});
-            }
-        }
+        if (!extent_.empty())
+            for (const DirectionalLight<T>& sun : suns_)
+                global_.push_back(sun_disk(sun, T(0.5) * (extent_.lo + extent_.hi), T(0.5) * length(extent_.hi - extent_.lo)));
         std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);
@@ -2974,15 +2979,19 @@ private:
                     }
                     targets_.push_back(target);
                 }
-                for (const DirectionalLight<T>& sun : suns_) {
-                    // The disk facing the light, just upstream of everything bounded.
-                    const Vec3<T> axis = normalize(sun.direction);
-                    const Vec3<T> middle = T(0.5) * (extent_.lo + extent_.hi);
-                    const T upstream = length(centre - middle) + T(0.5) * length(extent_.hi - extent_.lo) + radius;
-                    targets_.push_back({centre - upstream * axis, axis, T(-1), sun.irradiance * (pi<T> * radius * radius), radius});
-                }
+                for (const DirectionalLight<T>& sun : suns_) targets_.push_back(sun_disk(sun, centre, radius));
             }
         }
+    }
+
+    /// Parallel light onto the sphere (centre, radius): from the disk of that radius facing
+    /// the light, just upstream of everything bounded, carrying E pi r^2.
+    [[nodiscard]] Emitter<T> sun_disk(const DirectionalLight<T>& sun, const Vec3<T>& centre, T radius) const
+    {
+        const Vec3<T> axis = normalize(sun.direction);
+        const Vec3<T> middle = T(0.5) * (extent_.lo + extent_.hi);
+        const T upstream = length(centre - middle) + T(0.5) * length(extent_.hi - extent_.lo) + radius;
+        return {centre - upstream * axis, axis, T(-1), sun.irradiance * (pi<T> * radius * radius), radius};
     }
 
     const SceneT& scene_;

@@ -44,37 +44,47 @@ namespace detail {
 
 /// A filter's weight at squared distance d2 within radius^2 r2, and its mean over the disk
 /// (the normalisation: a uniform density gives back itself).
-struct FilterWeight {
-    Filter filter;
-
+class FilterWeight {
+public:
     static constexpr float gaussian_alpha = 0.918f, gaussian_beta = 1.953f;
+
+    /// The Gaussian's constant denominator and every filter's mean are taken here, once
+    /// per estimate, not once per photon.
+    explicit FilterWeight(Filter filter) noexcept : filter_(filter)
+    {
+        switch (filter) {
+        case Filter::cone: mean_ = 1.0f / 3.0f; break;
+        case Filter::gaussian: {
+            // With u = d^2 / r^2 uniform on [0, 1], E[exp(-beta u / 2)] = (1 - exp(-beta / 2))
+            // / (beta / 2), which gives a mean of 0.531 for Jensen's alpha and beta, not 1:
+            // dividing by pi r^2 alone would halve the estimate.
+            gaussian_denominator_ = 1.0f - std::exp(-gaussian_beta);
+            const float m = (1.0f - std::exp(-gaussian_beta / 2.0f)) / (gaussian_beta / 2.0f);
+            mean_ = gaussian_alpha * (1.0f - (1.0f - m) / gaussian_denominator_);
+            break;
+        }
+        case Filter::box: break;
+        }
+    }
 
     [[nodiscard]] float operator()(float d2, float r2) const noexcept
     {
-        switch (filter) {
+        switch (filter_) {
         case Filter::cone: return 1.0f - std::sqrt(d2 / r2);
         case Filter::gaussian:
-            return gaussian_alpha * (1.0f - (1.0f - std::exp(-gaussian_beta * d2 / (2.0f * r2))) / (1.0f - std::exp(-gaussian_beta)));
+            return gaussian_alpha * (1.0f - (1.0f - std::exp(-gaussian_beta * d2 / (2.0f * r2))) / gaussian_denominator_);
         case Filter::box: break;
         }
         return 1.0f;
     }
 
-    /// Mean weight over the disk. Cone: 1/3. Gaussian: with u = d^2 / r^2 uniform on [0, 1],
-    /// E[exp(-beta u / 2)] = (1 - exp(-beta / 2)) / (beta / 2), which gives 0.531 for
-    /// Jensen's alpha and beta, not 1: dividing by pi r^2 alone would halve the estimate.
-    [[nodiscard]] float mean() const noexcept
-    {
-        switch (filter) {
-        case Filter::cone: return 1.0f / 3.0f;
-        case Filter::gaussian: {
-            const float m = (1.0f - std::exp(-gaussian_beta / 2.0f)) / (gaussian_beta / 2.0f);
-            return gaussian_alpha * (1.0f - (1.0f - m) / (1.0f - std::exp(-gaussian_beta)));
-        }
-        case Filter::box: break;
-        }
-        return 1.0f;
-    }
+    /// Mean weight over the disk. Box 1, cone 1/3, Gaussian 0.531.
+    [[nodiscard]] float mean() const noexcept { return mean_; }
+
+private:
+    Filter filter_;
+    float gaussian_denominator_ = 1.0f;
+    float mean_ = 1.0f;
 };
 
 } // namespace detail
@@ -109,7 +119,7 @@ public:
     {
         Rgb<float> sum(0.0f);
         if (!tree_ || photons_.empty() || !(estimator.radius > 0.0f)) return sum;
-        const detail::FilterWeight weight{estimator.filter};
+        const detail::FilterWeight weight(estimator.filter);
         const auto add = [&](std::uint32_t index, float d2, float r2) {
             const Photon& photon = photons_[index];
             if ((photon.flags & estimator.excluded) != 0 || !photon.arrived_on(n)) return;

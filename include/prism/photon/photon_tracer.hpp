@@ -113,14 +113,9 @@ public:
         std::apply([&](const auto&... slot) { (add_to_extent(slot), ...); }, scene_.slots);
         for (const PointLight<T>& light : lights_)
             global_.push_back({light.position, {T(0), T(1), T(0)}, T(-1), light.power(), T(0), light.falloff == Falloff::none});
-        if (!extent_.empty()) {
-            const Vec3<T> middle = T(0.5) * (extent_.lo + extent_.hi);
-            const T radius = T(0.5) * length(extent_.hi - extent_.lo);
-            for (const DirectionalLight<T>& sun : suns_) {
-                const Vec3<T> axis = normalize(sun.direction);
-                global_.push_back({middle - T(2) * radius * axis, axis, T(-1), sun.irradiance * (pi<T> * radius * radius), radius});
-            }
-        }
+        if (!extent_.empty())
+            for (const DirectionalLight<T>& sun : suns_)
+                global_.push_back(sun_disk(sun, T(0.5) * (extent_.lo + extent_.hi), T(0.5) * length(extent_.hi - extent_.lo)));
         std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);
@@ -274,15 +269,19 @@ private:
                     }
                     targets_.push_back(target);
                 }
-                for (const DirectionalLight<T>& sun : suns_) {
-                    // The disk facing the light, just upstream of everything bounded.
-                    const Vec3<T> axis = normalize(sun.direction);
-                    const Vec3<T> middle = T(0.5) * (extent_.lo + extent_.hi);
-                    const T upstream = length(centre - middle) + T(0.5) * length(extent_.hi - extent_.lo) + radius;
-                    targets_.push_back({centre - upstream * axis, axis, T(-1), sun.irradiance * (pi<T> * radius * radius), radius});
-                }
+                for (const DirectionalLight<T>& sun : suns_) targets_.push_back(sun_disk(sun, centre, radius));
             }
         }
+    }
+
+    /// Parallel light onto the sphere (centre, radius): from the disk of that radius facing
+    /// the light, just upstream of everything bounded, carrying E pi r^2.
+    [[nodiscard]] Emitter<T> sun_disk(const DirectionalLight<T>& sun, const Vec3<T>& centre, T radius) const
+    {
+        const Vec3<T> axis = normalize(sun.direction);
+        const Vec3<T> middle = T(0.5) * (extent_.lo + extent_.hi);
+        const T upstream = length(centre - middle) + T(0.5) * length(extent_.hi - extent_.lo) + radius;
+        return {centre - upstream * axis, axis, T(-1), sun.irradiance * (pi<T> * radius * radius), radius};
     }
 
     const SceneT& scene_;
