@@ -4,6 +4,8 @@
 
 #include <doctest/doctest.h>
 
+#include "../ray_property.hpp"
+
 #include <cmath>
 #include <string>
 
@@ -66,4 +68,40 @@ TEST_CASE("background and ambient are validated")
     auto scene = test_scene();
     scene.ambient = {0, -1, 0};
     CHECK_THROWS_WITH_AS(scene.validate(), doctest::Contains("Scene ambient"), std::invalid_argument);
+}
+
+// The ray property test (tests/ray_property.hpp), a slice of bench/ray_property: every
+// shape, Transformed shapes and CSG trees, 1 to 10^4 from the world origin and from their
+// rays, sizes 1 and 10^-3, float and double, 16k rays each. Before the fixes of issue 10 a
+// float unit ellipsoid lost 0.1 % of its hits from 100 units and most from 10^4.
+TEST_CASE_TEMPLATE("closest_hit loses no hit and spawns on the right side, near and far", T, float, double)
+{
+    using namespace test::property;
+    Counts total;
+    std::uint64_t seed = 11;
+    for_each_case([&]<class Case>() {
+        for (const double distance : {1.0, 1e2, 1e3, 1e4})
+            for (const double size : {1.0, 1e-3}) {
+                Pcg32 rng(seed++, 3u);
+                Counts cell;
+                for (int k = 0; k < 4; ++k) {
+                    try {
+                        cell += fire<Case, T>(place(rng, distance, size), distance, seed * 100 + k, 4096);
+                    } catch (const std::invalid_argument&) {
+                        // a box of 10^-3 at 10^4 has no extent in float: skipped
+                    }
+                }
+                INFO(Case::name, " distance ", distance, " size ", size);
+                CHECK(cell.lost == 0);
+                CHECK(cell.disagree == 0);
+                CHECK(cell.non_finite == 0);
+                CHECK(cell.false_occlusion == 0);
+                total += cell;
+            }
+    });
+    // Spawned rays: a few in 10^5 still start on the wrong side at the edges of CSG trees
+    // (the full bench reports them); everywhere else none.
+    CHECK(total.rays > 1400000);
+    CHECK(double(total.wrong_side) <= 1e-4 * double(total.spawn_checks));
+    MESSAGE(total.rays, " rays: wrong-side spawns ", total.wrong_side, " of ", total.spawn_checks);
 }

@@ -6,6 +6,8 @@
 #include <prism/core/offset.hpp>
 #include <prism/core/ray.hpp>
 
+#include <limits>
+
 namespace prism {
 
 /// Axis-aligned box [lo, hi]; empty when lo > hi on any axis (the default).
@@ -24,6 +26,33 @@ struct Aabb {
         return lo.x <= p.x && p.x <= hi.x && lo.y <= p.y && p.y <= hi.y && lo.z <= p.z && p.z <= hi.z;
     }
 
+    /// Finite on every axis: the box of a bounded shape (false for an empty box too).
+    [[nodiscard]] constexpr bool bounded() const noexcept { return !empty() && is_finite(lo) && is_finite(hi); }
+
+    /// The box grown outward by one float step on every side: a box computed by rounding
+    /// to nearest then holds every point of the exact one.
+    [[nodiscard]] constexpr Aabb rounded_out() const noexcept
+    {
+        Aabb out;
+        for (int axis = 0; axis < 3; ++axis) out.lo[axis] = next_float_down(lo[axis]), out.hi[axis] = next_float_up(hi[axis]);
+        return out;
+    }
+
+    /// Whether the ray may cross a shape inside this (bounded) box at t > t_min: the
+    /// conservative test with which a shape skips its own work. A shape's crossings are
+    /// computed with rounding that grows with the ray origin's distance from it, so a
+    /// ray that just misses the exact shape may still be reported to cross it; the box is
+    /// therefore widened for each ray by gamma(16) of that distance (and of its own
+    /// size), and the answer never depends on where the range ends, so that asking again
+    /// over a shorter range (a scene's surface query) cannot cull what was found before.
+    [[nodiscard]] constexpr bool may_cross(const Ray<T>& ray, T t_min) const noexcept
+    {
+        const Vec3<T> half = T(0.5) * (hi - lo);
+        const T pad = gamma<T>(16) * (max_component(abs(ray.origin - (lo + half))) + max_component(half)) + std::numeric_limits<T>::min();
+        const Aabb wide{lo - Vec3<T>(pad), hi + Vec3<T>(pad)};
+        return wide.contains(ray.origin) || !wide.clip(ray, {t_min, infinity<T>}).empty();
+    }
+
     /// The part of `range` in which the ray is inside the box (empty if none).
     /// Slab test with the far distance widened by 2*gamma(3), so that rounding never
     /// reports a miss for a ray that touches the box (pbrt-v4, Bounds3::IntersectP).
@@ -36,9 +65,10 @@ struct Aabb {
                 if (o < lo[axis] || o > hi[axis]) return {};
                 continue;
             }
-            const T inv = T(1) / d;
-            T t_near = (lo[axis] - o) * inv;
-            T t_far = (hi[axis] - o) * inv;
+            // Divided, not multiplied by 1 / d: for a denormal d that reciprocal is
+            // infinite, and 0 * inf would be NaN where 0 / d is 0.
+            T t_near = (lo[axis] - o) / d;
+            T t_far = (hi[axis] - o) / d;
             if (t_near > t_far) std::swap(t_near, t_far);
             t_far *= T(1) + T(2) * gamma<T>(3);
             if (t_near > range.min) range.min = t_near;

@@ -43,7 +43,7 @@ public:
 
     constexpr CsgNode(A a, B b) : a_(std::move(a)), b_(std::move(b)), bounds_(Op::bounds(a_.bounds(), b_.bounds()))
     {
-        bounded_ = is_finite(bounds_.lo) && is_finite(bounds_.hi);
+        bounded_ = bounds_.bounded();
     }
 
     /// Nested construction for the variadic forms: CsgNode<Op, A, CsgNode<Op, B, C>>(a, b, c).
@@ -63,8 +63,8 @@ public:
     [[nodiscard]] constexpr Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         Crossings<T, max_crossings> out;
-        // Outside the bounds the ray cannot be inside the result.
-        if (bounded_ && bounds_.clip(ray, range).empty()) return out;
+        // A ray that cannot come near the bounds cannot cross the result.
+        if (bounded_ && !bounds_.may_cross(ray, range.min)) return out;
 
         const auto ca = a_.template crossings<Surface>(ray, range);
         const auto cb = b_.template crossings<Surface>(ray, range);

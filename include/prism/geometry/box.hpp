@@ -51,7 +51,7 @@ public:
             const T o = ray.origin[axis];
             const T d = ray.direction[axis];
             if (d == T(0)) { // parallel to this slab
-                if (o < lo_[axis] || o > hi_[axis]) return out;
+                if (o <= lo_[axis] || o >= hi_[axis]) return out; // in or beside a face plane: a touch at most
                 continue;
             }
             T t0 = (lo_[axis] - o) / d;

@@ -41,7 +41,7 @@ public:
 
     /// Throws std::invalid_argument for a non-finite coefficient, an all-zero quadric,
     /// or one with no x, y or z term (a constant is not a surface).
-    constexpr explicit Quadric(const Coefficients& k, const Vec3<T>& origin = Vec3<T>(T(0))) : k_(k), origin_(origin)
+    constexpr explicit Quadric(const Coefficients& k, const Vec3<T>& origin = Vec3<T>(T(0))) : k_(k), given_(k), origin_(origin)
     {
         detail::require_finite("Quadric origin", origin);
         const std::array<T, 10> all{k.a, k.b, k.c, k.d, k.e, k.f, k.g, k.h, k.i, k.j};
@@ -51,8 +51,9 @@ public:
         const bool variable = k.a != 0 || k.b != 0 || k.c != 0 || k.d != 0 || k.e != 0 || k.f != 0 || k.g != 0 || k.h != 0 || k.i != 0;
         if (!variable && k.j == 0) detail::throw_invalid("Quadric coefficients are all zero");
         if (!variable) detail::throw_invalid("Quadric has no x, y or z term (only the constant ", k.j, ")");
+        normalise();
         bounds_ = ellipsoid_bounds();
-        bounded_ = is_finite(bounds_.lo) && is_finite(bounds_.hi);
+        bounded_ = bounds_.bounded();
     }
 
     /// From a 4x4 matrix Q with F(p) = [p 1] Q [p 1]^T; only its symmetric part matters.
@@ -164,8 +165,9 @@ public:
         return Quadric(from_matrix(local).k_, transform.point(origin_));
     }
 
-    /// The coefficients, relative to origin().
-    [[nodiscard]] constexpr const Coefficients& coefficients() const noexcept { return k_; }
+    /// The coefficients as given, relative to origin(). (Crossings are computed from a
+    /// copy scaled by a power of two so that the largest is in [1, 2): the same surface.)
+    [[nodiscard]] constexpr const Coefficients& coefficients() const noexcept { return given_; }
     [[nodiscard]] constexpr const Vec3<T>& origin() const noexcept { return origin_; }
 
     /// Q in world coordinates (computed in T, so rounded for a far-away origin).
@@ -175,13 +177,25 @@ public:
         return glm::transpose(to_local) * local_matrix() * to_local;
     }
 
-    /// F(p).
-    [[nodiscard]] constexpr T evaluate(const Vec3<T>& p) const noexcept { return evaluate_local(p - origin_); }
+    /// F(p), with the coefficients as given.
+    [[nodiscard]] constexpr T evaluate(const Vec3<T>& p) const noexcept
+    {
+        const Coefficients& k = given_;
+        const Vec3<T> v = p - origin_;
+        const Vec3<T> q3v{k.a * v.x + k.b * v.y + k.c * v.z, k.b * v.x + k.e * v.y + k.f * v.z, k.c * v.x + k.f * v.y + k.h * v.z};
+        return dot(v, q3v + T(2) * Vec3<T>(k.d, k.g, k.i)) + k.j;
+    }
 
     /// The gradient of F, 2 (Q3 (p - o) + q): the outward normal direction.
-    [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>& p) const noexcept { return T(2) * half_gradient(p - origin_); }
+    [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>& p) const noexcept
+    {
+        const Coefficients& k = given_;
+        const Vec3<T> v = p - origin_;
+        return T(2) * (Vec3<T>{k.a * v.x + k.b * v.y + k.c * v.z, k.b * v.x + k.e * v.y + k.f * v.z, k.c * v.x + k.f * v.y + k.h * v.z} +
+                       Vec3<T>(k.d, k.g, k.i));
+    }
 
-    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return evaluate(p) < T(0); }
+    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return evaluate_local(p - origin_) < T(0); }
 
     /// An ellipsoid's box; Aabb::universe() for unbounded quadrics.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
@@ -189,8 +203,8 @@ public:
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        // An ellipsoid: outside its box the ray is outside it.
-        if (bounded_ && bounds_.clip(ray, range).empty()) return {};
+        // An ellipsoid: a ray that cannot come near its box cannot cross it.
+        if (bounded_ && !bounds_.may_cross(ray, range.min)) return {};
         // Compute quadratic coefficients: F(o + t d) = A t^2 + 2 B t + C (errata 1: h dz^2),
         // in the quadric's own coordinates.
         const Vec3<T> o = ray.origin - origin_;
@@ -199,7 +213,21 @@ public:
         const T A = dot(d, quadratic_part(d));
         const T B = dot(d, g_o);
         const T C = dot(o, g_o + linear()) + k_.j;
-        const T disc = difference_of_products(B, B, A, C);
+
+        // The discriminant is the same for any point of the line taken as its origin, and
+        // it is exact only near the quadric: from a far origin, C ~ |o|^2 carries a
+        // rounding far larger than B^2 - A C near a hit (a unit ellipsoid seen from 10^4
+        // would lose almost every hit). So it is computed from the ray's closest approach
+        // to the quadric's origin, m = o + t_m d, where the coefficients are of the
+        // quadric's own size, and the surface points are found from there too.
+        const T dd = dot(d, d);
+        const T t_m = -dot(o, d) / dd;
+        const bool moved = is_finite(t_m);
+        const Vec3<T> m = moved ? o + t_m * d : o;
+        const Vec3<T> g_m = half_gradient(m);
+        const T B_m = dot(d, g_m);
+        const T C_m = dot(m, g_m + linear()) + k_.j;
+        const T disc = difference_of_products(B_m, B_m, A, C_m);
 
         Crossings<T, 2> out;
         // No real crossing (disc < 0) or a tangent (disc = 0, a double root): F keeps one
@@ -209,7 +237,9 @@ public:
             return out;
         }
 
-        // Stable roots (errata 3): q = -(B + sign(B) sqrt(disc)); t = C / q and q / A.
+        // Stable roots from the ray's own origin (errata 3): q = -(B + sign(B) sqrt(disc));
+        // t = C / q and q / A, so a root near t = 0 (a ray leaving the surface) has the
+        // sign of C = F(o), the same test that says which side the origin is on.
         // At a root F'(t) = 2(A t + B) = +-2 sqrt(disc): it is -2 sign(B) sqrt(disc) at
         // q / A and +2 sign(B) sqrt(disc) at C / q, so which root enters (F' < 0, the
         // gradient against the ray) follows from sign(B) exactly, for any sign of A.
@@ -228,13 +258,43 @@ public:
         out.inside_at_start = !roots[0].entering;
         for (std::size_t r = 0; r < n; ++r)
             if (roots[r].t <= range.min) out.inside_at_start = roots[r].entering;
-        for (std::size_t r = 0; r < n; ++r)
-            if (range.surrounds(roots[r].t)) out.push_back(Surface ? surface_at({o, d}, roots[r].t, roots[r].entering) : roots[r]);
+        if constexpr (!Surface) {
+            for (std::size_t r = 0; r < n; ++r)
+                if (range.surrounds(roots[r].t)) out.push_back(roots[r]);
+        } else {
+            // The same roots measured from m: s = t - t_m, found as stably there, in the
+            // same order (t grows with s).
+            const T q_m = B_m >= T(0) ? -(B_m + root) : -(B_m - root);
+            std::array<T, 2> s{C_m / q_m, q_m / A};
+            if (s[1] < s[0]) std::swap(s[0], s[1]);
+            for (std::size_t r = 0; r < n; ++r) {
+                if (!range.surrounds(roots[r].t)) continue;
+                // With one root (A = 0) only C_m / q_m is finite.
+                T s_r = n == 1 ? C_m / q_m : s[r];
+                if (!is_finite(s_r)) s_r = roots[r].t - t_m;
+                out.push_back(surface_at(m + s_r * d, d, roots[r].t, roots[r].entering));
+            }
+        }
         return out;
     }
 
 private:
     // Quadric Private Methods
+
+    /// Scale every coefficient by one power of two (exactly) so that the largest is in
+    /// [1, 2): the same surface, but A, B and C of a ray neither overflow nor vanish
+    /// when the user's coefficients are as small as 1e-45 or as large as 1e30.
+    constexpr void normalise() noexcept
+    {
+        T largest = T(0);
+        for (const T x : {k_.a, k_.b, k_.c, k_.d, k_.e, k_.f, k_.g, k_.h, k_.i, k_.j}) largest = std::max(largest, x < T(0) ? -x : x);
+        // By steps of 2, each exact, so that this stays a constant expression.
+        const auto times = [this](T factor) {
+            for (T* x : {&k_.a, &k_.b, &k_.c, &k_.d, &k_.e, &k_.f, &k_.g, &k_.h, &k_.i, &k_.j}) *x *= factor;
+        };
+        for (; largest >= T(2); largest *= T(0.5)) times(T(0.5));
+        for (; largest < T(1); largest *= T(2)) times(T(2));
+    }
 
     static Quadric from_parts(const Mat3<T>& m, const Vec3<T>& q, T j)
     {
@@ -247,7 +307,7 @@ private:
 
     [[nodiscard]] Mat4<T> local_matrix() const noexcept
     {
-        const Coefficients& k = k_;
+        const Coefficients& k = given_;
         return Mat4<T>(k.a, k.b, k.c, k.d, k.b, k.e, k.f, k.g, k.c, k.f, k.h, k.i, k.d, k.g, k.i, k.j);
     }
 
@@ -273,18 +333,18 @@ private:
                m(k_.j);
     }
 
-    /// The crossing at t of a ray given in the quadric's own coordinates.
-    [[nodiscard]] constexpr Crossing<T> surface_at(const Ray<T>& local, T t, bool entering) const noexcept
+    /// The crossing at t of a ray with direction d, near the point p given in the
+    /// quadric's own coordinates.
+    [[nodiscard]] constexpr Crossing<T> surface_at(Vec3<T> point, const Vec3<T>& d, T t, bool entering) const noexcept
     {
-        Vec3<T> point = local.at(t);
         Vec3<T> g = half_gradient(point);
         const T gg = dot(g, g);
         Vec3<T> normal, error;
         if (!(gg > T(0)) || !is_finite(gg)) {
             // A singular point (a cone's apex): no normal; face the ray.
-            const Vec3<T> facing = normalize(local.direction);
+            const Vec3<T> facing = normalize(d);
             normal = entering ? -facing : facing;
-            error = gamma<T>(4) * (abs(local.origin) + abs(t * local.direction));
+            error = gamma<T>(4) * abs(point);
         } else {
             // Refine the hit point with one Newton step along the gradient, onto F = 0.
             point -= (evaluate_local(point) / (T(2) * gg)) * g;
@@ -318,12 +378,16 @@ private:
         const Vec3<T> centre = -inv_q;
         const T level = dot(q, inv_q) - k.j;
         if (!(level > T(0))) return {}; // empty solid
-        // Widened by a relative margin so rounding never clips the surface.
+        // Widened by a relative margin for the rounding of the formula above, then by the
+        // rounding of the sums, and rounded outward: the box holds the whole surface.
         const Vec3<T> half = Vec3<T>(prism::sqrt(level * i00), prism::sqrt(level * i11), prism::sqrt(level * i22)) * T(1.0001);
-        return {origin_ + centre - half, origin_ + centre + half};
+        const Vec3<T> mid = origin_ + centre;
+        const Vec3<T> pad = gamma<T>(4) * (abs(origin_) + abs(centre) + half);
+        return Aabb<T>{mid - half - pad, mid + half + pad}.rounded_out();
     }
 
-    Coefficients k_;
+    Coefficients k_;     ///< normalised: the largest in [1, 2)
+    Coefficients given_; ///< as the user wrote them
     Vec3<T> origin_{};
     Aabb<T> bounds_;
     bool bounded_ = false;

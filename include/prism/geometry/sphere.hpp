@@ -29,7 +29,7 @@ public:
 
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept
     {
-        return {center_ - Vec3<T>(radius_), center_ + Vec3<T>(radius_)};
+        return Aabb<T>{center_ - Vec3<T>(radius_), center_ + Vec3<T>(radius_)}.rounded_out();
     }
 
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
@@ -71,22 +71,25 @@ public:
         if (t0 > t1) std::swap(t0, t1);
 
         // The ray is inside between the roots: it enters at t0 and leaves at t1, as
-        // the gradient 2(p - center) points against d at t0 and along it at t1.
+        // the gradient 2(p - center) points against d at t0 and along it at t1. The
+        // surface points are taken from the closest approach l, at -+sqrt(disc) / a along
+        // the ray from it: exact to the sphere's own scale however far the origin is,
+        // where o + t d would carry the rounding of t (an ulp of the distance).
         out.inside_at_start = t0 < range.min && range.min < t1;
-        if (range.surrounds(t0)) out.push_back(Surface ? crossing_at(ray, t0, true) : Crossing<T>{.t = t0, .entering = true});
-        if (range.surrounds(t1)) out.push_back(Surface ? crossing_at(ray, t1, false) : Crossing<T>{.t = t1, .entering = false});
+        if (range.surrounds(t0)) out.push_back(Surface ? crossing_at(l - (root / a) * d, t0, true) : Crossing<T>{.t = t0, .entering = true});
+        if (range.surrounds(t1)) out.push_back(Surface ? crossing_at(l + (root / a) * d, t1, false) : Crossing<T>{.t = t1, .entering = false});
         return out;
     }
 
 private:
     // Sphere Private Methods
 
-    [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, bool entering) const noexcept
+    [[nodiscard]] constexpr Crossing<T> crossing_at(const Vec3<T>& radial, T t, bool entering) const noexcept
     {
         // Refine the hit point by reprojecting it onto the surface; the remaining error
         // is that of the reprojection (pbrt-v4, Sphere::InteractionFromIntersection).
-        const Vec3<T> radial = ray.at(t) - center_;
-        const Vec3<T> normal = radial * (T(1) / length(radial));
+        const T radial_length = length(radial);
+        const Vec3<T> normal = radial_length > T(0) ? radial * (T(1) / radial_length) : Vec3<T>(T(0), T(0), T(1));
         const Vec3<T> offset = normal * radius_;
         const Vec3<T> point = center_ + offset;
         const Vec3<T> error = gamma<T>(5) * abs(offset) + gamma<T>(1) * abs(point);

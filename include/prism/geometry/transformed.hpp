@@ -24,7 +24,7 @@ public:
 
     Transformed(S shape, const Transform<T>& to_world) : shape_(std::move(shape)), to_world_(to_world), bounds_(world_bounds())
     {
-        bounded_ = is_finite(bounds_.lo) && is_finite(bounds_.hi);
+        bounded_ = bounds_.bounded();
     }
 
     [[nodiscard]] const S& shape() const noexcept { return shape_; }
@@ -39,23 +39,38 @@ public:
     template <bool Surface = true>
     [[nodiscard]] Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        // Outside the bounds the ray cannot be inside the shape.
-        if (bounded_ && bounds_.clip(ray, range).empty()) return {};
+        // A ray that cannot come near the bounds cannot cross the shape.
+        if (bounded_ && !bounds_.may_cross(ray, range.min)) return {};
         // Carry the ray into the shape's coordinates. The new origin is off by the
         // rounding of that transform, which can be more than a spawned ray's offset from
         // the surface it leaves: move it forward along the ray past that error, and
         // measure t from there (pbrt-v4, Transform::ApplyInverse(Ray)).
         Ray<T> local{to_world_.inverse_point(ray.origin), to_world_.inverse_vector(ray.direction)};
         const T length2 = length_squared(local.direction);
-        const T dt = length2 > T(0) ? dot(abs(local.direction), to_world_.inverse_point_error(ray.origin)) / length2 : T(0);
+        T dt = length2 > T(0) ? dot(abs(local.direction), to_world_.inverse_point_error(ray.origin)) / length2 : T(0);
+        if (!is_finite(dt)) dt = T(0);
         local.origin += dt * local.direction;
-        Crossings<T, max_crossings> out = shape_.template crossings<Surface>(local, {range.min, range.max - dt});
-        for (std::size_t k = 0; k < out.count; ++k) out.items[k].t += dt;
+        // The end of the range is carried over two float steps wide and applied again to
+        // the world t: the result keeps every crossing before range.max however the
+        // subtraction rounds, so a query over a shorter range finds the same first one.
+        const Crossings<T, max_crossings> found =
+            shape_.template crossings<Surface>(local, {range.min, next_float_up(next_float_up(range.max - dt))});
+        Crossings<T, max_crossings> out;
+        out.inside_at_start = found.inside_at_start;
+        for (Crossing<T> c : found) {
+            c.t += dt;
+            if (c.t < range.max) out.push_back(c);
+        }
         if constexpr (!Surface) return out;
         for (std::size_t k = 0; k < out.count; ++k) {
             Crossing<T>& c = out.items[k];
-            c.error = to_world_.point_error(c.point, c.error);
-            c.point = to_world_.point(c.point);
+            // The bound also covers the rounding with which a ray spawned here is carried
+            // back into the shape's coordinates, so that it starts on the side it leaves
+            // by there too (moving its origin forward along the ray, above, does not
+            // cover that for a ray leaving at a grazing angle).
+            const Vec3<T> world = to_world_.point(c.point);
+            c.error = to_world_.point_error(c.point, c.error + to_world_.inverse_point_error(world));
+            c.point = world;
             c.normal = normalize(to_world_.normal(c.normal));
         }
         return out;
@@ -75,9 +90,9 @@ private:
             out.lo = component_min(out.lo, w);
             out.hi = component_max(out.hi, w);
         }
-        // Widen by the rounding of the corner transform.
+        // Widen by the rounding of the corner transform, and round outward.
         const Vec3<T> pad = gamma<T>(4) * (abs(out.lo) + abs(out.hi));
-        return {out.lo - pad, out.hi + pad};
+        return Aabb<T>{out.lo - pad, out.hi + pad}.rounded_out();
     }
 
     S shape_;

@@ -133,11 +133,11 @@ private:
             if (object.bounded) cluster_ = {component_min(cluster_.lo, object.shape.bounds().lo), component_max(cluster_.hi, object.shape.bounds().hi)};
     }
 
-    /// A ray starting inside the cluster's box (every secondary ray in a closed room)
-    /// needs no slab test.
+    /// Whether the ray may come near the cluster's box (conservatively, and whatever the
+    /// range's end: Aabb::may_cross).
     [[nodiscard]] bool reaches_cluster(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        return cluster_.contains(ray.origin) || !cluster_.clip(ray, range).empty();
+        return !cluster_.empty() && cluster_.may_cross(ray, range.min);
     }
 
     /// Whether the object needs testing: it is unbounded, or the ray comes near the cluster.
@@ -156,7 +156,9 @@ private:
             const auto crossings = objects[k].shape.template crossings<false>(ray, range);
             if (crossings.empty()) continue;
             // Ending the range just past the crossing keeps every crossing before it, and
-            // so the same first one, while the surface pass refines nothing beyond it.
+            // so the same first one, while the surface pass refines nothing beyond it:
+            // no shape's answer up to a t depends on where its range ends (shapes cull by
+            // Aabb::may_cross, which ignores the end).
             nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(crossings.front().t)}};
             range.max = crossings.front().t;
         }
