@@ -7,6 +7,9 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <sys/stat.h>
+#include <thread>
+#include <vector>
 
 #include <unistd.h>
 
@@ -86,5 +89,54 @@ TEST_CASE("a failed write throws with the path and the reason and leaves no file
     CHECK(files == 0);
     CHECK_THROWS_WITH_AS(prism::write_image(film, dir / "x.tiff"), doctest::Contains("unknown image extension"), std::runtime_error);
     CHECK_THROWS_AS((void)prism::read_pfm(dir / "absent.pfm"), std::runtime_error);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a write goes through to what is not a regular file and never replaces it")
+{
+    // Issue 10: the temporary file was renamed over any target, so a FIFO, a device node
+    // or a symbolic link became a plain file (write_png(film, "/dev/null") as root would
+    // have replaced /dev/null).
+    const fs::path dir = scratch("special");
+    const prism::Film film = gradient();
+    // A FIFO stays a FIFO, and a reader receives the whole PNG.
+    const fs::path fifo = dir / "pipe.png";
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    std::vector<unsigned char> received;
+    std::thread reader([&] {
+        std::ifstream in(fifo, std::ios::binary);
+        received.assign(std::istreambuf_iterator<char>(in), {});
+    });
+    prism::write_png(film, fifo);
+    reader.join();
+    CHECK(fs::is_fifo(fs::symlink_status(fifo)));
+    CHECK(received.size() > 8);
+    std::ofstream(dir / "copy.png", std::ios::binary).write(reinterpret_cast<const char*>(received.data()), std::streamsize(received.size()));
+    CHECK(prism::to_srgb8(prism::read_png(dir / "copy.png")) == prism::to_srgb8(film));
+    // /dev/null takes the bytes and stays a character device.
+    prism::write_pfm(film, "/dev/null");
+    CHECK(fs::is_character_file(fs::symlink_status("/dev/null")));
+    // A symbolic link stays a link; the file it names is replaced whole.
+    const fs::path real = dir / "real.pfm", link = dir / "link.pfm";
+    std::ofstream(real) << "old";
+    fs::create_symlink(real, link);
+    prism::write_pfm(film, link);
+    CHECK(fs::is_symlink(fs::symlink_status(link)));
+    CHECK(prism::read_pfm(real).pixels() == film.pixels());
+    int leftovers = 0;
+    for (const auto& entry : fs::directory_iterator(dir)) leftovers += entry.path().string().find("prism-partial") != std::string::npos;
+    CHECK(leftovers == 0);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("read_pfm checks its header against the file's size before allocating")
+{
+    // Issue 10: 20 bytes made read_pfm allocate 4.8 GB before it reported truncation.
+    const fs::path dir = scratch("pfm-header");
+    std::ofstream(dir / "big.pfm", std::ios::binary) << "PF\n20000 20000\n-1.0\n";
+    CHECK_THROWS_WITH_AS((void)prism::read_pfm(dir / "big.pfm"), doctest::Contains("truncated"), std::runtime_error);
+    CHECK_THROWS_WITH_AS((void)prism::read_pfm(dir / "big.pfm"), doctest::Contains("20000 x 20000"), std::runtime_error);
+    std::ofstream(dir / "nan.pfm", std::ios::binary) << "PF\n1 1\nnan\n";
+    CHECK_THROWS_AS((void)prism::read_pfm(dir / "nan.pfm"), std::runtime_error);
     fs::remove_all(dir);
 }

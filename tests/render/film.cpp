@@ -4,6 +4,9 @@
 #include <doctest/doctest.h>
 
 #include <limits>
+#include <string>
+#include <thread>
+#include <vector>
 
 TEST_CASE("the film never stores NaN, Inf or negative radiance")
 {
@@ -16,4 +19,33 @@ TEST_CASE("the film never stores NaN, Inf or negative radiance")
     CHECK(film.at(1, 0).z == 2.0f);
     CHECK(film.rejected() == 4);
     CHECK_THROWS_AS(prism::Film(0, 3), std::invalid_argument);
+}
+
+TEST_CASE("a film too large for memory says what it needs")
+{
+    try {
+        prism::Film film(65536, 65536);
+        FAIL("a 48 GiB film was allocated");
+    } catch (const std::bad_alloc& e) {
+        const std::string message = e.what();
+        CHECK(message.find("65536 x 65536") != std::string::npos);
+        CHECK(message.find("48.0 GiB") != std::string::npos);
+    }
+}
+
+TEST_CASE("threads setting pixels count the rejected values exactly")
+{
+    // Issue 10: every render thread updated a plain counter (a data race; ThreadSanitizer
+    // runs this test too).
+    prism::Film film(64, 64);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t)
+        threads.emplace_back([&film, t] {
+            for (int y = t; y < 64; y += 4)
+                for (int x = 0; x < 64; ++x) film.set(x, y, prism::Rgb<float>{-1.0f, std::numeric_limits<float>::quiet_NaN(), 0.5f});
+        });
+    for (auto& thread : threads) thread.join();
+    CHECK(film.rejected() == 2 * 64 * 64);
+    const prism::Film copy = film;
+    CHECK(copy.rejected() == 2 * 64 * 64);
 }

@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <cstring>
+#include <limits>
 
 using namespace prism;
 
@@ -61,4 +62,18 @@ TEST_CASE("bad render settings are rejected")
     const Whitted integrator(scene);
     CHECK_THROWS_WITH_AS((void)render(Camera<float>{}, integrator, {.spp = 0}), doctest::Contains("spp"), std::invalid_argument);
     CHECK_THROWS_AS((void)render(Camera<float>{}, integrator, {.width = -4}), std::invalid_argument);
+}
+
+TEST_CASE("a tile as large as int renders the same image")
+{
+    // Issue 10: tile_size = INT_MAX overflowed the tile arithmetic (UBSan) and rendered black.
+    const auto scene = busy_scene();
+    const Whitted integrator(scene);
+    const Camera<float> camera{.position = {0, 1, 6}, .look_at = {0, 0.5f, 0}};
+    const Film tiled = render(camera, integrator, {.width = 40, .height = 30, .progress = false});
+    const Film whole = render(camera, integrator, {.width = 40, .height = 30, .progress = false, .tile_size = std::numeric_limits<int>::max()});
+    CHECK(std::memcmp(tiled.pixels().data(), whole.pixels().data(), tiled.pixels().size() * sizeof(tiled.pixels()[0])) == 0);
+    float sum = 0;
+    for (const auto& p : whole.pixels()) sum += p.x + p.y + p.z;
+    CHECK(sum > 0);
 }

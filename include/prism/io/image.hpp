@@ -3,9 +3,10 @@
 // linear floats).
 //
 // Opt-in: prism/prism.hpp does not include this header, since it needs stb_image_write
-// and stb_image (Debian: libstb-dev). A file is written whole or not at all: bytes go to a temporary
-// file beside the target, which is renamed over it only once complete; any failure
-// throws std::runtime_error naming the path and the reason.
+// and stb_image (Debian: libstb-dev). A regular file is written whole or not at all:
+// bytes go to a temporary file beside the target, which is renamed over it only once
+// complete; a device or FIFO is written through, never replaced; any failure throws
+// std::runtime_error naming the path and the reason.
 #pragma once
 
 #include <prism/core/math.hpp>
@@ -51,6 +52,7 @@
 #undef PRISM_DEFINED_STBI_IMPLEMENTATION
 #endif
 
+#include <atomic>
 #include <bit>
 #include <cerrno>
 #include <cmath>
@@ -62,6 +64,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace prism {
@@ -73,13 +76,43 @@ namespace detail {
     throw std::runtime_error("prism: cannot write '" + path.string() + "': " + reason);
 }
 
-/// Write bytes to path whole or not at all.
+/// Write bytes to path: whole or not at all where the path is a regular file (or
+/// nothing yet). Bytes go to a new temporary file beside it (created exclusively, never
+/// through an existing name), which is renamed over the target only once complete. A
+/// symbolic link is followed to what it names, so the link stays. Anything that is not
+/// a regular file (a device such as /dev/null, a FIFO) is written through, never
+/// replaced: renaming over it would turn it into a plain file.
 inline void write_file_atomically(const std::filesystem::path& path, std::span<const unsigned char> bytes)
 {
-    std::filesystem::path temporary = path;
-    temporary += ".prism-partial";
-    std::FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (file == nullptr) throw_io(path, std::strerror(errno));
+    namespace fs = std::filesystem;
+    std::error_code error;
+    fs::path target = path;
+    if (fs::is_symlink(fs::symlink_status(path, error))) {
+        target = fs::weakly_canonical(path, error);
+        if (error) throw_io(path, "cannot follow the symbolic link: " + error.message());
+    }
+    const fs::file_status status = fs::status(target, error);
+    if (status.type() == fs::file_type::directory) throw_io(path, "it is a directory");
+    const bool regular_or_new = status.type() == fs::file_type::regular || status.type() == fs::file_type::not_found;
+    if (!regular_or_new) {
+        std::FILE* file = std::fopen(target.c_str(), "wb");
+        if (file == nullptr) throw_io(path, std::strerror(errno));
+        const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+        const int write_errno = errno;
+        if (std::fclose(file) != 0 || !written) throw_io(path, std::strerror(written ? errno : write_errno));
+        return;
+    }
+    // A temporary name of our own: "x" opens only a file that did not exist.
+    static std::atomic<unsigned> serial{0};
+    fs::path temporary;
+    std::FILE* file = nullptr;
+    for (int attempt = 0; attempt < 100 && file == nullptr; ++attempt) {
+        temporary = target;
+        temporary += ".prism-partial-" + std::to_string(serial++) + "-" + std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()) % 100000);
+        file = std::fopen(temporary.c_str(), "wbx");
+        if (file == nullptr && errno != EEXIST) throw_io(path, std::strerror(errno));
+    }
+    if (file == nullptr) throw_io(path, "no free temporary name beside it");
     const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
     const int write_errno = errno;
     const bool closed = std::fclose(file) == 0;
@@ -87,8 +120,7 @@ inline void write_file_atomically(const std::filesystem::path& path, std::span<c
         std::remove(temporary.c_str());
         throw_io(path, std::strerror(written ? errno : write_errno));
     }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
+    fs::rename(temporary, target, error);
     if (error) {
         std::remove(temporary.c_str());
         throw_io(path, error.message());
@@ -187,8 +219,19 @@ inline void write_image(const Film& film, const std::filesystem::path& path)
     double scale = 0;
     in >> magic >> width >> height >> scale;
     in.get();
-    if (!in || magic != "PF" || width <= 0 || height <= 0 || scale == 0)
+    if (!in || magic != "PF" || width <= 0 || height <= 0 || scale == 0 || !std::isfinite(scale))
         throw std::runtime_error("prism: cannot read '" + path.string() + "': not an RGB PFM file");
+    // The header is checked against the file's size before anything is allocated: 20
+    // bytes must not make a reader ask for gigabytes.
+    const std::streamoff header_end = in.tellg();
+    in.seekg(0, std::ios::end);
+    const std::streamoff file_size = in.tellg();
+    in.seekg(header_end);
+    const double needed = 12.0 * double(width) * double(height);
+    if (header_end < 0 || file_size < 0 || double(file_size - header_end) < needed)
+        throw std::runtime_error("prism: cannot read '" + path.string() + "': file is truncated (the header says " + std::to_string(width) +
+                                 " x " + std::to_string(height) + " pixels, " + std::to_string(static_cast<long long>(needed)) +
+                                 " bytes, but " + std::to_string(static_cast<long long>(file_size - header_end)) + " follow it)");
     Film film(width, height);
     const bool little = scale < 0;
     std::vector<unsigned char> raw(static_cast<std::size_t>(width) * 12);

@@ -5,17 +5,86 @@
 #include <prism/core/check.hpp>
 #include <prism/core/math.hpp>
 
+#include <atomic>
 #include <cstddef>
+#include <cstdio>
+#include <new>
+#include <string>
+#include <utility>
 #include <vector>
+
+#if __has_include(<unistd.h>)
+#include <unistd.h>
+#endif
 
 namespace prism {
 
+/// Thrown when memory for something the user asked for cannot be had: a std::bad_alloc
+/// that says what was asked for and how much memory it needs.
+class allocation_error : public std::bad_alloc {
+public:
+    explicit allocation_error(std::string message) : message_(std::move(message)) {}
+    [[nodiscard]] const char* what() const noexcept override { return message_.c_str(); }
+
+private:
+    std::string message_;
+};
+
+namespace detail {
+
+/// The machine's physical memory in bytes (0 where it cannot be told).
+[[nodiscard]] inline double physical_memory() noexcept
+{
+#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (pages > 0 && page > 0) return double(pages) * double(page);
+#endif
+    return 0;
+}
+
+/// "12.0 GiB": a byte count for messages.
+[[nodiscard]] inline std::string describe_bytes(double bytes)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+    return text;
+}
+
+} // namespace detail
+
+/// A linear HDR RGB image. Any number of threads may set distinct pixels at once.
 class Film {
 public:
     Film(int width, int height) : width_(width), height_(height)
     {
         if (width <= 0 || height <= 0) detail::throw_invalid("Film size must be positive, got ", width, " x ", height);
-        pixels_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), Rgb<float>(0.0f));
+        const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+        const double bytes = double(count) * sizeof(Rgb<float>);
+        // Asked before allocating: an allocation past physical memory may succeed lazily
+        // and end the process later, when its pages are touched.
+        if (const double memory = detail::physical_memory(); memory > 0 && bytes > memory)
+            throw allocation_error("prism: a Film of " + std::to_string(width) + " x " + std::to_string(height) + " pixels needs " +
+                                   detail::describe_bytes(bytes) + ", more than this machine's " + detail::describe_bytes(memory));
+        try {
+            pixels_.assign(count, Rgb<float>(0.0f));
+        } catch (const std::bad_alloc&) {
+            throw allocation_error("prism: a Film of " + std::to_string(width) + " x " + std::to_string(height) + " pixels needs " +
+                                   detail::describe_bytes(bytes) + ", which could not be allocated");
+        }
+    }
+
+    Film(const Film& other) : width_(other.width_), height_(other.height_), pixels_(other.pixels_), rejected_(other.rejected()) {}
+    Film(Film&& other) noexcept
+        : width_(other.width_), height_(other.height_), pixels_(std::move(other.pixels_)), rejected_(other.rejected())
+    {
+    }
+    Film& operator=(Film other) noexcept
+    {
+        width_ = other.width_;
+        height_ = other.height_;
+        pixels_ = std::move(other.pixels_);
+        rejected_.store(other.rejected(), std::memory_order_relaxed);
+        return *this;
     }
 
     [[nodiscard]] int width() const noexcept { return width_; }
@@ -37,19 +106,19 @@ public:
             const float value = static_cast<float>(radiance[c]);
             const bool good = is_finite(value) && value >= 0.0f;
             v[c] = good ? value : 0.0f;
-            rejected_ += good ? 0 : 1;
+            if (!good) rejected_.fetch_add(1, std::memory_order_relaxed); // render threads share the count
         }
         pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)] = v;
     }
 
     /// How many channel values were replaced by 0 because they were not finite and >= 0.
-    [[nodiscard]] std::size_t rejected() const noexcept { return rejected_; }
+    [[nodiscard]] std::size_t rejected() const noexcept { return rejected_.load(std::memory_order_relaxed); }
 
 private:
     int width_;
     int height_;
     std::vector<Rgb<float>> pixels_;
-    std::size_t rejected_ = 0;
+    std::atomic<std::size_t> rejected_{0};
 };
 
 } // namespace prism

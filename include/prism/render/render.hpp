@@ -66,20 +66,23 @@ template <Integrator I>
     const CameraRays<T> rays = camera.rays(config.width, config.height);
     Film film(config.width, config.height);
 
-    const int tiles_x = (config.width + config.tile_size - 1) / config.tile_size;
-    const int tiles_y = (config.height + config.tile_size - 1) / config.tile_size;
-    const int tile_count = tiles_x * tiles_y;
-    std::atomic<int> next_tile{0};
-    std::atomic<int> tiles_done{0};
+    // Tile arithmetic in 64 bits: a tile_size of INT_MAX, or 65536^2 one-pixel tiles,
+    // overflows int.
+    const std::int64_t tile = config.tile_size;
+    const std::int64_t tiles_x = (std::int64_t(config.width) - 1) / tile + 1;
+    const std::int64_t tiles_y = (std::int64_t(config.height) - 1) / tile + 1;
+    const std::int64_t tile_count = tiles_x * tiles_y;
+    std::atomic<std::int64_t> next_tile{0};
+    std::atomic<std::int64_t> tiles_done{0};
     std::mutex mutex;
     std::condition_variable finished;
     unsigned running = 0;
 
     const auto work = [&] {
-        for (int tile = next_tile++; tile < tile_count; tile = next_tile++) {
-            const int x0 = (tile % tiles_x) * config.tile_size, y0 = (tile / tiles_x) * config.tile_size;
-            const int x1 = std::min(x0 + config.tile_size, config.width);
-            const int y1 = std::min(y0 + config.tile_size, config.height);
+        for (std::int64_t t = next_tile++; t < tile_count; t = next_tile++) {
+            const auto x0 = static_cast<int>((t % tiles_x) * tile), y0 = static_cast<int>((t / tiles_x) * tile);
+            const auto x1 = static_cast<int>(std::min<std::int64_t>(x0 + tile, config.width));
+            const auto y1 = static_cast<int>(std::min<std::int64_t>(y0 + tile, config.height));
             for (int y = y0; y < y1; ++y)
                 for (int x = x0; x < x1; ++x) {
                     const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + x;
@@ -98,7 +101,7 @@ template <Integrator I>
     };
 
     unsigned threads = config.threads != 0 ? config.threads : std::max(1u, std::thread::hardware_concurrency());
-    threads = std::min<unsigned>(threads, static_cast<unsigned>(tile_count));
+    threads = static_cast<unsigned>(std::min<std::int64_t>(threads, tile_count));
     running = threads;
     std::vector<std::thread> workers;
     workers.reserve(threads);
@@ -112,7 +115,7 @@ template <Integrator I>
         while (!finished.wait_for(lock, std::chrono::milliseconds(250), [&] { return running == 0; })) {
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             if (config.progress && seconds > 1.0) {
-                std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", 100 * tiles_done.load() / tile_count, seconds);
+                std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", static_cast<int>(100 * tiles_done.load() / tile_count), seconds);
                 reported = true;
             }
         }
