@@ -58,3 +58,27 @@ TEST_CASE("singular and malformed transforms are rejected")
     CHECK_THROWS_WITH_AS(Transform<double>{projective}, doctest::Contains("affine"), std::invalid_argument);
     CHECK_THROWS_WITH_AS((void)Transform<float>::rotate(10, {0, 0, 0}), doctest::Contains("rotate axis"), std::invalid_argument);
 }
+
+TEST_CASE("then() checks its product, and singular means ill-conditioned, not a small determinant")
+{
+    // Issue 10: then() re-checked nothing, so four scale(1e12) gave an infinite matrix
+    // and translate(3e38) twice gave inf; and scale({1e-6, 1, 1}) was called singular.
+    const auto big = Transform<float>::scale(Vec3<float>(1e12f));
+    CHECK_THROWS_WITH_AS((void)big.then(big).then(big).then(big), doctest::Contains("Transform::then"), std::invalid_argument);
+    const auto far = Transform<float>::translate({3e38f, 0, 0});
+    CHECK_THROWS_WITH_AS((void)far.then(far), doctest::Contains("overflows"), std::invalid_argument);
+    // A legitimate flattening, and a uniformly tiny or huge scale, are well conditioned.
+    const auto flat = Transform<float>::scale({1e-6f, 1, 1});
+    CHECK(flat.inverse_point({1e-6f, 2, 3}).x == doctest::Approx(1));
+    const auto tiny = Transform<float>::scale(Vec3<float>(1e-20f));
+    CHECK(tiny.inverse_point({1e-20f, 0, 0}).x == doctest::Approx(1));
+    CHECK(Transform<double>::scale({1e-12, 1, 1}).inverse_point({1e-12, 0, 0}).x == doctest::Approx(1));
+    // Ill-conditioned for float, fine for double.
+    CHECK_THROWS_WITH_AS((void)Transform<float>::scale({1e-8f, 1, 1}), doctest::Contains("condition number"), std::invalid_argument);
+    // Its inverse would overflow float.
+    CHECK_THROWS_WITH_AS((void)Transform<float>::scale(Vec3<float>(1e-40f)), doctest::Contains("not representable"), std::invalid_argument);
+    // The inverse is still the inverse.
+    const auto t = Transform<double>::rotate(33, {1, 2, 3}).then(Transform<double>::scale({2, 0.5, 3})).then(Transform<double>::translate({4, -5, 6}));
+    const Vec3<double> p{0.3, -0.7, 1.9};
+    CHECK(length(t.inverse_point(t.point(p)) - p) < 1e-14);
+}

@@ -54,3 +54,20 @@ TEST_CASE("bad input names the parameter")
     CHECK_THROWS_WITH_AS(Plane<float>({0, 0, 0}, 1.0f), doctest::Contains("Plane normal"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(Plane<double>({0, 1, 0}, std::nan("")), doctest::Contains("Plane offset"), std::invalid_argument);
 }
+
+TEST_CASE("normals as small as a denormal or as large as 3e38 give the same plane")
+{
+    // Issue 10: (1e-45, 0, 0) and (3e38, 3e38, 0) made |normal| underflow or overflow and
+    // the plane vanished.
+    for (const prism::Vec3<float> n : {prism::Vec3<float>{1e-45f, 0, 0}, prism::Vec3<float>{3e38f, 3e38f, 0}, prism::Vec3<float>{1, 1, 0}}) {
+        const auto plane = prism::Plane<float>::through({1, 0, 0}, n);
+        const auto c = plane.crossings({{5, 0.5f, 0}, {-1, 0, 0}}, prism::Interval<float>::universe());
+        INFO(n.x);
+        REQUIRE(c.size() == 1);
+        CHECK(c[0].entering);
+        CHECK(c[0].point.x == doctest::Approx(n.y == 0 ? 1.0f : 0.5f));
+        CHECK(prism::length(c[0].normal) == doctest::Approx(1));
+    }
+    // x = 1 / 1e-45 is beyond float: said, not wrapped.
+    CHECK_THROWS_WITH_AS(prism::Plane<float>({1e-45f, 0, 0}, 1.0f), doctest::Contains("Plane offset"), std::invalid_argument);
+}

@@ -292,3 +292,12 @@ TEST_CASE("coefficients are normalised by a power of two: tiny or huge quadrics 
     CHECK(c.empty());
     CHECK_FALSE(c.inside_at_start);
 }
+
+TEST_CASE("an ellipsoid's semi-axes are checked by name, not through a coefficient")
+{
+    using namespace prism;
+    // Issue 10: semi-axes 1e20 or 1e-20 reported a coefficient.
+    CHECK_THROWS_WITH_AS((void)Quadric<float>::ellipsoid({0, 0, 0}, {1e20f, 1, 1}), doctest::Contains("semi_axes.x"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((void)Quadric<float>::ellipsoid({0, 0, 0}, {1, 1e-20f, 1}), doctest::Contains("semi_axes.y"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((void)Quadric<float>::cylinder({0, 0, 0}, {0, 0, 1}, 1e-30f), doctest::Contains("cylinder radius"), std::invalid_argument);
+}

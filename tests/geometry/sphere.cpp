@@ -120,3 +120,22 @@ TEST_CASE("bad input names the parameter")
     CHECK_THROWS_WITH_AS(Sphere<float>({0, std::numeric_limits<float>::infinity(), 0}, 1.0f),
                          doctest::Contains("Sphere center"), std::invalid_argument);
 }
+
+TEST_CASE("radii whose square would underflow or overflow are refused by name")
+{
+    using prism::infinity;
+    // Issue 10: radius 1e20 was not hit from inside (r^2 overflows float), 1e-30 not at all.
+    CHECK_THROWS_WITH_AS(Sphere<float>({0, 0, 0}, 1e20f), doctest::Contains("Sphere radius"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Sphere<float>({0, 0, 0}, 1e-30f), doctest::Contains("Sphere radius"), std::invalid_argument);
+    // The limits themselves work, from inside and from outside.
+    for (const float r : {2e-18f, 1e18f}) {
+        const Sphere<float> s({0, 0, 0}, r);
+        const auto inside = s.crossings({{0, 0, 0}, {0, 0, 1}}, {0, infinity<float>});
+        REQUIRE(inside.size() == 1);
+        CHECK(inside[0].t == doctest::Approx(r));
+        const auto outside = s.crossings({{0, 0, -3 * r}, {0, 0, 1}}, {0, infinity<float>});
+        REQUIRE(outside.size() == 2);
+        CHECK(outside[0].t == doctest::Approx(2 * r));
+    }
+    CHECK_NOTHROW(Sphere<double>({0, 0, 0}, 1e100));
+}

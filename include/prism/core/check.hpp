@@ -7,6 +7,8 @@
 
 #include <prism/core/math.hpp>
 
+#include <limits>
+
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -62,6 +64,21 @@ constexpr void require_non_negative(std::string_view name, const Vec3<T>& value)
 {
     if (!(is_finite(value) && value.x >= T(0) && value.y >= T(0) && value.z >= T(0)))
         throw_invalid(name, " must be finite and >= 0 in every channel, got ", describe(value));
+}
+
+/// The lengths a shape may have in T: their squares, and squares of distances a few
+/// times as large, must be normal numbers (float: about 1.7e-18 to 1.2e18).
+template <Scalar T>
+inline constexpr T smallest_length = T(16) * prism::sqrt(std::numeric_limits<T>::min());
+template <Scalar T>
+inline constexpr T largest_length = prism::sqrt(std::numeric_limits<T>::max()) / T(16);
+
+/// A length (a radius, a semi-axis) within [smallest_length, largest_length].
+template <Scalar T>
+constexpr void require_length(std::string_view name, T value)
+{
+    if (!(value >= smallest_length<T> && value <= largest_length<T>))
+        throw_invalid(name, " must be in [", smallest_length<T>, ", ", largest_length<T>, "] for this precision (its square must be a normal number), got ", value);
 }
 
 template <Scalar T>

@@ -8,7 +8,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <type_traits>
 
 namespace prism {
 
@@ -30,7 +33,11 @@ public:
     Transform() = default;
 
     /// From an affine 4x4 matrix (GLM, column-major: m[column][row]). Throws
-    /// std::invalid_argument for a non-finite, non-affine or singular matrix.
+    /// std::invalid_argument for a non-finite, non-affine or singular matrix. Singular
+    /// means ill-conditioned for T: the condition number ||L|| ||L^-1|| of the linear
+    /// part L (infinity norm, computed in higher precision) is at least 1 / (2 eps), or
+    /// the inverse is not representable in T. A flattening such as scale({1e-6, 1, 1}) is
+    /// legitimate however small its determinant; scale({0, 1, 1}) is not.
     explicit Transform(const Mat4<T>& m) : m_(m)
     {
         for (int c = 0; c < 4; ++c)
@@ -38,13 +45,7 @@ public:
                 if (!is_finite(m[c][r])) detail::throw_invalid("Transform matrix must be finite, got ", m[c][r], " at column ", c, " row ", r);
         if (m[0][3] != T(0) || m[1][3] != T(0) || m[2][3] != T(0) || m[3][3] != T(1))
             detail::throw_invalid("Transform matrix must be affine (last row 0 0 0 1)");
-        // Singular when the determinant is negligible beside the size of the linear part.
-        T scale = T(0);
-        for (int c = 0; c < 3; ++c) scale = std::max(scale, length(Vec3<T>(m[c])));
-        const T det = glm::determinant(Mat3<T>(m));
-        if (!(std::abs(det) > T(64) * std::numeric_limits<T>::epsilon() * scale * scale * scale))
-            detail::throw_invalid("Transform is singular (determinant ", det, ")");
-        inverse_ = glm::inverse(m);
+        inverse_ = checked_inverse(m);
         abs_inverse_ = absolute(inverse_);
     }
 
@@ -73,8 +74,17 @@ public:
     [[nodiscard]] static Transform rotate_y(T degrees) { return rotate(degrees, {T(0), T(1), T(0)}); }
     [[nodiscard]] static Transform rotate_z(T degrees) { return rotate(degrees, {T(0), T(0), T(1)}); }
 
-    /// This transform followed by `next`.
-    [[nodiscard]] Transform then(const Transform& next) const { return Transform(next.m_ * m_, inverse_ * next.inverse_); }
+    /// This transform followed by `next`. Throws std::invalid_argument when the product
+    /// overflows or is singular (scale(1e12) four times in float).
+    [[nodiscard]] Transform then(const Transform& next) const
+    {
+        const Mat4<T> product = next.m_ * m_;
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                if (!is_finite(product[c][r]))
+                    detail::throw_invalid("Transform::then: the composed transform overflows (", product[c][r], " at column ", c, " row ", r, ")");
+        return Transform(product);
+    }
 
     [[nodiscard]] Transform inverse() const { return Transform(inverse_, m_); }
 
@@ -105,6 +115,58 @@ public:
 
 private:
     Transform(const Mat4<T>& m, const Mat4<T>& inverse) : m_(m), inverse_(inverse), abs_inverse_(absolute(inverse)) {}
+
+    /// The inverse of an affine matrix, computed in a wider type (double for float, long
+    /// double for double), or a clear error when it is singular for T.
+    [[nodiscard]] static Mat4<T> checked_inverse(const Mat4<T>& m)
+    {
+        using W = std::conditional_t<sizeof(T) < sizeof(double), double, long double>;
+        W a[3][3];
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) a[r][c] = W(m[c][r]);
+        // Scale by the largest entry first: the determinant of a tiny or huge but
+        // well-conditioned matrix must not underflow or overflow.
+        W largest = 0;
+        for (const auto& row : a)
+            for (const W x : row) largest = std::max(largest, x < 0 ? -x : x);
+        if (!(largest > 0)) detail::throw_invalid("Transform is singular (its linear part is zero)");
+        for (auto& row : a)
+            for (W& x : row) x /= largest;
+        // Inverse of the scaled L by cofactors.
+        const W det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                      a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+        W inv[3][3];
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) {
+                const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
+                inv[r][c] = (a[r1][c1] * a[r2][c2] - a[r1][c2] * a[r2][c1]) / det;
+            }
+        // Condition number in the infinity norm (scale-free).
+        W norm = 0, inv_norm = 0;
+        for (int r = 0; r < 3; ++r) {
+            W row = 0, inv_row = 0;
+            for (int c = 0; c < 3; ++c) row += a[r][c] < 0 ? -a[r][c] : a[r][c], inv_row += inv[r][c] < 0 ? -inv[r][c] : inv[r][c];
+            norm = std::max(norm, row);
+            inv_norm = std::max(inv_norm, inv_row);
+        }
+        const W condition = norm * inv_norm;
+        if (!(det != 0) || !(condition < W(0.5) / W(std::numeric_limits<T>::epsilon())))
+            detail::throw_invalid("Transform is singular for this precision (condition number ", double(condition), ", at most ",
+                                  0.5 / double(std::numeric_limits<T>::epsilon()), ")");
+        Mat4<T> out(T(1));
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) out[c][r] = T(inv[r][c] / largest);
+        // The translation of the inverse: -L^-1 t.
+        for (int r = 0; r < 3; ++r) {
+            W sum = 0;
+            for (int c = 0; c < 3; ++c) sum -= (inv[r][c] / largest) * W(m[3][c]);
+            out[3][r] = T(sum);
+        }
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                if (!is_finite(out[c][r])) detail::throw_invalid("Transform's inverse is not representable (", out[c][r], " at column ", c, " row ", r, ")");
+        return out;
+    }
 
     [[nodiscard]] static Mat4<T> absolute(const Mat4<T>& m) noexcept
     {

@@ -24,9 +24,15 @@ public:
     {
         detail::require_nonzero("Plane normal", normal);
         detail::require_finite("Plane offset", offset);
-        const T len = length(normal);
-        normal_ = normal * (T(1) / len);
-        offset_ = offset / len;
+        // Scaled by its largest component before normalising: |normal|^2 of (1e-45, 0, 0)
+        // underflows and of (3e38, 3e38, 0) overflows.
+        const T largest = max_component(abs(normal));
+        const Vec3<T> scaled = normal / largest;
+        const T len = length(scaled);
+        normal_ = scaled * (T(1) / len);
+        offset_ = offset / largest / len;
+        if (!is_finite(offset_))
+            detail::throw_invalid("Plane offset / |normal| must be finite, got ", offset, " / |", detail::describe(normal), "|");
     }
 
     /// The half-space bounded by the plane through `point` with outward `normal`.
@@ -34,7 +40,8 @@ public:
     {
         detail::require_finite("Plane point", point);
         detail::require_nonzero("Plane normal", normal);
-        return Plane(normal, dot(normal, point));
+        const Vec3<T> n = normal / max_component(abs(normal)); // as in the constructor: no overflow in the dot product
+        return Plane(n, dot(n, point));
     }
 
     [[nodiscard]] constexpr const Vec3<T>& normal() const noexcept { return normal_; }

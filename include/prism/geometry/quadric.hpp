@@ -77,9 +77,9 @@ public:
     [[nodiscard]] static Quadric ellipsoid(const Vec3<T>& centre, const Vec3<T>& semi_axes, const Mat3<T>& rotation = Mat3<T>(T(1)))
     {
         detail::require_finite("Quadric::ellipsoid centre", centre);
-        detail::require_positive("Quadric::ellipsoid semi_axes.x", semi_axes.x);
-        detail::require_positive("Quadric::ellipsoid semi_axes.y", semi_axes.y);
-        detail::require_positive("Quadric::ellipsoid semi_axes.z", semi_axes.z);
+        detail::require_length("Quadric::ellipsoid semi_axes.x", semi_axes.x);
+        detail::require_length("Quadric::ellipsoid semi_axes.y", semi_axes.y);
+        detail::require_length("Quadric::ellipsoid semi_axes.z", semi_axes.z);
         const Vec3<T> inv2 = T(1) / (semi_axes * semi_axes);
         const Mat3<T> m = rotation * Mat3<T>(inv2.x, 0, 0, 0, inv2.y, 0, 0, 0, inv2.z) * glm::transpose(rotation);
         return centred(m, centre, T(-1));
@@ -90,7 +90,7 @@ public:
     {
         detail::require_finite("Quadric::cylinder point", point);
         detail::require_nonzero("Quadric::cylinder axis", axis);
-        detail::require_positive("Quadric::cylinder radius", radius);
+        detail::require_length("Quadric::cylinder radius", radius);
         const Vec3<T> u = normalize(axis);
         return centred(Mat3<T>(T(1)) - glm::outerProduct(u, u), point, -radius * radius);
     }

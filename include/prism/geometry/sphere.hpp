@@ -16,12 +16,13 @@ public:
 
     // Sphere Public Methods
 
-    /// A sphere; throws std::invalid_argument for a non-finite center or a radius that
-    /// is not finite and > 0.
+    /// A sphere; throws std::invalid_argument for a non-finite center or a radius outside
+    /// [detail::smallest_length, detail::largest_length] (float: 1.7e-18 to 1.2e18, so
+    /// that r^2 neither underflows nor overflows).
     constexpr Sphere(const Vec3<T>& center, T radius) : center_(center), radius_(radius)
     {
         detail::require_finite("Sphere center", center);
-        detail::require_positive("Sphere radius", radius);
+        detail::require_length("Sphere radius", radius);
     }
 
     [[nodiscard]] constexpr const Vec3<T>& center() const noexcept { return center_; }
