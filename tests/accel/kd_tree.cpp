@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 using prism::ArrayPoints;
@@ -218,4 +219,17 @@ TEST_CASE("memory and size")
     const KdTree<ArrayPoints<float, 3>> tree(ArrayPoints<float, 3>{points});
     CHECK(tree.size() == 1000);
     CHECK(tree.memory_bytes() >= 1000 * (12 + 4));
+}
+
+TEST_CASE("points with a NaN coordinate are refused, naming the point")
+{
+    // Issue 10: a tree over points with NaN coordinates answered 273 of 500 ordinary
+    // k-nearest queries wrongly.
+    std::vector<std::array<float, 3>> points(100, {0.5f, 0.5f, 0.5f});
+    for (std::size_t i = 0; i < points.size(); ++i) points[i][0] = float(i);
+    points[37][1] = std::nanf("");
+    CHECK_THROWS_WITH_AS((prism::KdTree<prism::ArrayPoints<float, 3>>(prism::ArrayPoints<float, 3>{points})), doctest::Contains("point 37"),
+                         std::invalid_argument);
+    points[37][1] = std::numeric_limits<float>::infinity(); // infinite coordinates order like any other
+    CHECK_NOTHROW((prism::KdTree<prism::ArrayPoints<float, 3>>(prism::ArrayPoints<float, 3>{points})));
 }

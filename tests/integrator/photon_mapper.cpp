@@ -4,6 +4,8 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 using namespace prism;
 
 TEST_CASE("the photon mapper's direct light is Whitted's: one radiometric convention")
@@ -105,4 +107,27 @@ TEST_CASE("shadow rays saved where photons agree (Jensen and Christensen 1995): 
                     Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{}}};
     using Two = PhotonMapper<std::remove_cvref_t<decltype(two)>>;
     CHECK_THROWS_AS(Two(two, {.visibility_k = 8}), std::invalid_argument);
+}
+
+TEST_CASE("the photon mapper refuses what Whitted refuses, and estimators out of range")
+{
+    // Issue 10: max_depth -1, min_weight NaN or -1, radius Inf, disk Inf, an out-of-range
+    // Filter and visibility_k 100000 (silently clamped) were all accepted.
+    const Scene scene{Lights{PointLight<float>{.position = {0, 3, 0}, .intensity = Rgb<float>(20)}},
+                      Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{}}};
+    using Mapper = PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
+    using Config = Mapper::Config;
+    const auto refused = [&](Config config, const char* name) {
+        config.photons.global_photons = config.photons.caustic_photons = 100;
+        CHECK_THROWS_WITH_AS(Mapper(scene, config), doctest::Contains(name), std::invalid_argument);
+    };
+    Config c{};
+    c.max_depth = -1, refused(c, "max_depth"), c = {};
+    c.min_weight = std::nanf(""), refused(c, "min_weight"), c = {};
+    c.min_weight = -1, refused(c, "min_weight"), c = {};
+    c.caustic.radius = infinity<float>, refused(c, "caustic radius"), c = {};
+    c.global.disk = infinity<float>, refused(c, "global disk"), c = {};
+    c.caustic.filter = static_cast<Filter>(7), refused(c, "filter"), c = {};
+    c.visibility_k = 100000, refused(c, "visibility_k"), c = {};
+    c.photons.max_bounces = -1, refused(c, "max_bounces"), c = {};
 }

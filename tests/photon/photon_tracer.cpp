@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <string>
 
 using namespace prism;
 
@@ -205,4 +206,31 @@ TEST_CASE("a glass ball focuses a parallel beam R (2 - n) / (2 (n - 1)) behind i
     for (const Photon& p : maps.caustic.photons()) total += p.power().x;
     CHECK(total < std::acos(-1.0) * r * r);
     CHECK(total > 0.8 * std::acos(-1.0) * r * r);
+}
+
+TEST_CASE("bad photon counts and bounces are refused by name, not wrapped or clamped")
+{
+    // Issue 10: max_bounces -1 gave 0 photons, a count of size_t(-5) wrapped to 0, and 2^41
+    // photons ended in a bare std::bad_alloc.
+    const auto scene = light_over_floor(1, 1);
+    CHECK_THROWS_WITH_AS((void)trace_photons(scene, {.max_bounces = -1}), doctest::Contains("max_bounces"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((void)trace_photons(scene, {.global_photons = std::size_t(-5)}), doctest::Contains("global_photons"), std::invalid_argument);
+    try {
+        (void)trace_photons(scene, {.caustic_photons = std::size_t(1) << 41});
+        FAIL("2^41 photons were accepted");
+    } catch (const std::invalid_argument& e) {
+        CHECK(std::string(e.what()).find("caustic_photons") != std::string::npos);
+        CHECK(std::string(e.what()).find("GiB") != std::string::npos);
+    }
+    // Past this machine's memory but within the index: what it needs, as a bad_alloc.
+    CHECK_THROWS_WITH_AS((void)trace_photons(scene, {.global_photons = std::size_t(4000000000)}), doctest::Contains("GiB"), std::bad_alloc);
+}
+
+TEST_CASE("a light whose power overflows float is refused, not traced into empty maps")
+{
+    // Issue 10: intensity 3e38 is finite, but 4 pi I is not: the maps came out empty.
+    CHECK_THROWS_WITH_AS(PointLight<float>{.intensity = Rgb<float>(3e38f)}.validate(), doctest::Contains("power"), std::invalid_argument);
+    const Scene sun{Lights{DirectionalLight<float>{.irradiance = Rgb<float>(3e37f)}},
+                    Object{Sphere<float>({0, 0, 0}, 1e9f), Diffuse<float>{}}};
+    CHECK_THROWS_WITH_AS((void)trace_photons(sun, {.global_photons = 10, .caustic_photons = 0}), doctest::Contains("overflows"), std::invalid_argument);
 }

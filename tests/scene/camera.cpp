@@ -32,3 +32,19 @@ TEST_CASE("degenerate cameras are rejected with the parameter named")
     CHECK_THROWS_AS((Camera<float>{.position = {0, 0, INFINITY}}.validate()), std::invalid_argument);
     CHECK_THROWS_WITH_AS((void)Camera<float>{}.rays(0, 10), doctest::Contains("image size"), std::invalid_argument);
 }
+
+TEST_CASE("a camera whose look_at is 3e38 or 1e-44 away still looks there")
+{
+    // Issue 10: both said "up is parallel to the view direction".
+    const prism::Camera<float> far{.position = {-1.5e38f, 0, 0}, .look_at = {1.5e38f, 0, 0}};
+    CHECK_NOTHROW(far.validate());
+    CHECK(far.forward().x == doctest::Approx(1));
+    const prism::Camera<float> near{.position = {0, 0, 0}, .look_at = {0, 0, -1e-44f}};
+    CHECK_NOTHROW(near.validate());
+    CHECK(near.forward().z == doctest::Approx(-1));
+    const auto rays = near.rays(4, 4);
+    CHECK(prism::is_finite(rays.ray(2, 2).direction));
+    // The reason given for a truly parallel up is still that one.
+    const prism::Camera<float> parallel{.position = {0, 0, 0}, .look_at = {0, 5, 0}};
+    CHECK_THROWS_WITH_AS(parallel.validate(), doctest::Contains("parallel"), std::invalid_argument);
+}

@@ -7,11 +7,13 @@
 // of largest extent (found with std::nth_element, O(n log n) overall). A node stores
 // only its split value and axis; ranges, and whether a node is a leaf, follow from the
 // point count. The points are copied in tree order, so a leaf is contiguous in memory.
-// Queries allocate nothing; the capacity K is a compile-time constant. Neighbours are ordered by
+// Points with a NaN coordinate are refused (std::invalid_argument): they have no place
+// in the order. Queries allocate nothing; the capacity K is a compile-time constant. Neighbours are ordered by
 // (squared distance, index), so ties are broken the same way as a brute-force search.
 // Distances are squared throughout, radii are not.
 #pragma once
 
+#include <prism/core/check.hpp>
 #include <prism/core/config.hpp>
 #include <prism/core/math.hpp>
 
@@ -90,12 +92,18 @@ public:
     constexpr explicit KdTree(const Points& points)
     {
         const std::size_t n = points.size();
-        PRISM_ASSERT(n < std::numeric_limits<std::uint32_t>::max());
+        if (n >= std::numeric_limits<std::uint32_t>::max())
+            detail::throw_invalid("KdTree holds at most ", std::numeric_limits<std::uint32_t>::max() - 1, " points (32-bit indices), got ", n);
         points_.resize(n);
         index_.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
             index_[i] = static_cast<std::uint32_t>(i);
-            for (std::size_t a = 0; a < dimension; ++a) points_[i][a] = static_cast<T>(points.coordinate(i, a));
+            for (std::size_t a = 0; a < dimension; ++a) {
+                points_[i][a] = static_cast<T>(points.coordinate(i, a));
+                // A NaN is neither left nor right of any split: the median partition and
+                // every query's pruning would go wrong for ordinary points too.
+                if (points_[i][a] != points_[i][a]) detail::throw_invalid("KdTree point ", i, " has a NaN coordinate (axis ", a, ")");
+            }
         }
         if (n > LeafSize) {
             // Heap-numbered nodes: enough for every split of halving ranges down to a leaf.

@@ -66,6 +66,11 @@ public:
         validate(config.caustic, "PhotonMapper caustic");
         validate(config.global, "PhotonMapper global");
         if (config.gather_rays < 0) detail::throw_invalid("PhotonMapper gather_rays must be >= 0, got ", config.gather_rays);
+        if (config.max_depth < 0) detail::throw_invalid("PhotonMapper max_depth must be >= 0, got ", config.max_depth);
+        detail::require_non_negative("PhotonMapper min_weight", config.min_weight);
+        if (config.visibility_k > PhotonMap::max_k)
+            detail::throw_invalid("PhotonMapper visibility_k must be at most ", PhotonMap::max_k, ", got ", config.visibility_k);
+        detail::validate(config.photons);
         int lights = 0;
         scene.for_each_light([&](const auto&) { ++lights; });
         if (config.visibility_k > 0 && lights != 1)
@@ -98,9 +103,11 @@ public:
 private:
     static void validate(const Estimator& e, const char* name)
     {
-        if (!(e.radius > 0.0f)) detail::throw_invalid(name, " radius must be > 0, got ", e.radius);
+        if (!(e.radius > 0.0f && is_finite(e.radius))) detail::throw_invalid(name, " radius must be finite and > 0, got ", e.radius);
         if (e.k > PhotonMap::max_k) detail::throw_invalid(name, " k must be at most ", PhotonMap::max_k, ", got ", e.k);
-        if (!(e.disk > 0.0f)) detail::throw_invalid(name, " disk must be > 0, got ", e.disk);
+        if (!(e.disk > 0.0f && e.disk <= 1.0f)) detail::throw_invalid(name, " disk must be in (0, 1], got ", e.disk);
+        if (e.filter != Filter::box && e.filter != Filter::cone && e.filter != Filter::gaussian)
+            detail::throw_invalid(name, " filter must be box, cone or gaussian, got the value ", static_cast<int>(e.filter));
     }
 
     [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng) const noexcept

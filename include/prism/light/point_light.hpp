@@ -37,6 +37,9 @@ struct PointLight {
     {
         detail::require_finite("PointLight position", position);
         detail::require_non_negative("PointLight intensity", intensity);
+        // The photon tracer divides the power among the photons: it must be finite too.
+        if (!is_finite(power()))
+            detail::throw_invalid("PointLight intensity ", detail::describe(intensity), " is too large: its power 4 pi I overflows");
     }
 };
 

@@ -21,6 +21,7 @@
 // fall off with distance either.
 #pragma once
 
+#include <prism/core/check.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/core/rng.hpp>
 #include <prism/geometry/crossings.hpp>
@@ -30,6 +31,7 @@
 #include <prism/optics/beer.hpp>
 #include <prism/optics/refract.hpp>
 #include <prism/photon/photon_map.hpp>
+#include <prism/render/film.hpp>
 #include <prism/scene/object.hpp>
 
 #include <algorithm>
@@ -37,7 +39,9 @@
 #include <cmath>
 #include <limits>
 #include <thread>
+#include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace prism {
@@ -50,6 +54,27 @@ struct PhotonTracerConfig {
     std::uint64_t seed = 0;
     unsigned threads = 0; ///< 0 = all hardware threads
 };
+
+namespace detail {
+
+/// The photons a map may be asked for: its KdTree indexes them in 32 bits.
+inline constexpr std::size_t max_photons = std::numeric_limits<std::uint32_t>::max() - 1;
+
+inline void validate(const PhotonTracerConfig& config)
+{
+    for (const auto& [name, count] : {std::pair{"global_photons", config.global_photons}, std::pair{"caustic_photons", config.caustic_photons}}) {
+        const double bytes = double(count) * sizeof(Photon);
+        if (count > max_photons)
+            throw_invalid("PhotonTracerConfig ", name, " must be at most ", max_photons, " (a map indexes its photons in 32 bits), got ", count,
+                          " (their records alone would need ", describe_bytes(bytes), ")");
+        if (const double memory = physical_memory(); memory > 0 && bytes > memory)
+            throw allocation_error("prism: PhotonTracerConfig " + std::string(name) + " = " + std::to_string(count) + " photons need at least " +
+                                   describe_bytes(bytes) + ", more than this machine's " + describe_bytes(memory));
+    }
+    if (config.max_bounces < 0) throw_invalid("PhotonTracerConfig max_bounces must be >= 0, got ", config.max_bounces);
+}
+
+} // namespace detail
 
 struct PhotonMaps {
     PhotonMap global;
@@ -101,6 +126,7 @@ public:
 
     PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config) : scene_(scene), config_(config)
     {
+        validate(config);
         Pcg32 scrambles(config.seed, 0xfeed5eedULL);
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
@@ -119,6 +145,11 @@ public:
         std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);
+        // A light whose power is finite can still overflow here: a parallel light's
+        // irradiance times the scene's cross-section, or the sum over many lights.
+        if (!is_finite(global_power_) || !is_finite(target_power_))
+            throw_invalid("photon emission: the lights' total power overflows (", global_power_, ", ", target_power_,
+                          "); a DirectionalLight's irradiance times the scene's cross-section pi r^2 must be finite");
     }
 
     /// Photons [first, last) of the global map, appended to `out`.
@@ -328,12 +359,18 @@ template <class SceneT>
 {
     const detail::PhotonTracer<SceneT> tracer(scene, config);
     PhotonMaps maps;
-    maps.global = PhotonMap(detail::in_blocks(config.global_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
-        tracer.trace_global(a, b, out);
-    }));
-    maps.caustic = PhotonMap(detail::in_blocks(config.caustic_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
-        tracer.trace_caustic(a, b, out);
-    }));
+    try {
+        maps.global = PhotonMap(detail::in_blocks(config.global_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
+            tracer.trace_global(a, b, out);
+        }));
+        maps.caustic = PhotonMap(detail::in_blocks(config.caustic_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
+            tracer.trace_caustic(a, b, out);
+        }));
+    } catch (const std::bad_alloc&) {
+        throw allocation_error("prism: tracing " + std::to_string(config.global_photons) + " global and " + std::to_string(config.caustic_photons) +
+                               " caustic photons ran out of memory (each stored photon takes " + std::to_string(sizeof(Photon)) +
+                               " bytes, and a photon may be stored at every diffuse bounce)");
+    }
     return maps;
 }
 

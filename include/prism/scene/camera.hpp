@@ -42,18 +42,30 @@ struct Camera {
         detail::require_finite("Camera fov", fov);
         if (position == look_at) detail::throw_invalid("Camera position and look_at must differ, both are ", detail::describe(position));
         if (!(fov > T(0) && fov < T(180))) detail::throw_invalid("Camera fov must be in (0, 180) degrees, got ", fov);
-        const Vec3<T> forward = normalize(look_at - position);
-        const Vec3<T> side = cross(forward, normalize(up));
+        const Vec3<T> side = cross(forward(), unit(up));
         if (!(length(side) > T(1e-6))) detail::throw_invalid("Camera up ", detail::describe(up), " is parallel to the view direction");
     }
+
+    /// The unit view direction, from position to look_at. Found without overflow or
+    /// underflow for points 3e38 or 1e-44 apart: the difference is halved where it would
+    /// overflow and scaled by its largest component before normalising.
+    [[nodiscard]] Vec3<T> forward() const noexcept
+    {
+        Vec3<T> d = look_at - position;
+        if (!is_finite(d)) d = T(0.5) * look_at - T(0.5) * position;
+        return unit(d);
+    }
+
+    /// v / |v| for any non-zero finite v, however small or large.
+    [[nodiscard]] static Vec3<T> unit(const Vec3<T>& v) noexcept { return normalize(v / max_component(abs(v))); }
 
     /// The rays for a width x height image; validates the camera and the size.
     [[nodiscard]] CameraRays<T> rays(int width, int height) const
     {
         validate();
         if (width <= 0 || height <= 0) detail::throw_invalid("image size must be positive, got ", width, " x ", height);
-        const Vec3<T> forward = normalize(look_at - position);
-        const Vec3<T> right = normalize(cross(forward, up));
+        const Vec3<T> forward = this->forward();
+        const Vec3<T> right = normalize(cross(forward, unit(up)));
         const Vec3<T> true_up = cross(right, forward);
         const T half_width = std::tan(T(0.5) * fov * pi<T> / T(180));
         const T half_height = half_width * T(height) / T(width);
