@@ -27,7 +27,8 @@ int main(int argc, char** argv)
         options.photons = 100000;
         options.caustic_photons = 1000000;
         if (!examples::parse(int(args.size()), args.data(), options,
-                             "a glass ball's caustic on a checkered floor (photon mapping; --whitted: shadow rays through the glass)"))
+                             "a glass ball's caustic on a checkered floor (photon mapping; --whitted: shadow rays through the glass)",
+                             {.photons = true}))
             return 0;
         const Scene scene{
             Lights{PointLight<float>{.position = {-3, 7, -1}, .intensity = Rgb<float>(110)}},

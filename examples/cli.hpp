@@ -2,12 +2,16 @@
 // The command line shared by every example: size, samples, threads, seed, output folder.
 #pragma once
 
+#include <prism/io/image.hpp>
 #include <prism/prism.hpp>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <algorithm>
 #include <exception>
 #include <filesystem>
 #include <stdexcept>
@@ -33,7 +37,16 @@ struct Options {
     bool povray_light = false;    ///< POV-Ray's no-falloff light, as its scene has it
 };
 
-inline void print_help(const char* program, const char* description, const Options& defaults)
+inline void print_photon_help(const Options& defaults);
+
+/// Which families of flags an example takes beyond the shared ones: the others are refused,
+/// not silently ignored.
+struct Accepts {
+    bool povray = false;  ///< --povray PNG
+    bool photons = false; ///< the photon mapping flags
+};
+
+inline void print_help(const char* program, const char* description, const Options& defaults, Accepts accepts)
 {
     std::printf("%s: %s\n\n"
                 "usage: %s [options]\n"
@@ -43,10 +56,18 @@ inline void print_help(const char* program, const char* description, const Optio
                 "  --threads N   worker threads, 0 = all cores (default 0)\n"
                 "  --seed N      random seed (default 0)\n"
                 "  --out DIR     folder for the images, created if missing (default .)\n"
-                "  --povray PNG  POV-Ray's picture of the same scene: also write prism | POV-Ray | difference\n"
-                "  photon mapping examples:\n"
-                "  --photons N          photons emitted for the global map (default 200000)\n"
-                "  --caustic-photons N  photons aimed at specular objects (default 200000)\n"
+                "  --help        this text\n",
+                program, description, program, defaults.render.width, defaults.render.height, defaults.render.spp);
+    if (accepts.povray)
+        std::printf("  --povray PNG  POV-Ray's picture of the same scene (same size): also write prism | POV-Ray | difference\n");
+    if (accepts.photons) print_photon_help(defaults);
+}
+
+inline void print_photon_help(const Options& defaults)
+{
+    std::printf("  photon mapping:\n"
+                "  --photons N          photons emitted for the global map (default %zu)\n"
+                "  --caustic-photons N  photons aimed at specular objects (default %zu)\n"
                 "  --gather N           final-gather rays per diffuse hit, 0 = read the global map (default 0)\n"
                 "  --radius R           radius of the caustic estimate, or its search limit with --k (default 0.1)\n"
                 "  --k N                caustic estimate from the N nearest photons, 0 = every photon within R (default 100)\n"
@@ -54,9 +75,8 @@ inline void print_help(const char* program, const char* description, const Optio
                 "  --filter F           box, cone or gaussian, for both estimates (default cone)\n"
                 "  --disk D             keep photons within D R of the tangent plane, < 1 against light leaks (default 1)\n"
                 "  --visibility N       skip shadow rays where the N nearest global photons agree (default 0 = never)\n"
-                "  --light L            physical (inverse-square) or povray (no falloff, as the .pov file) (default physical)\n"
-                "  --help        this text\n",
-                program, description, program, defaults.render.width, defaults.render.height, defaults.render.spp);
+                "  --light L            physical (inverse-square) or povray (no falloff, as the .pov file) (default physical)\n",
+                defaults.photons, defaults.caustic_photons);
 }
 
 template <class Integer>
@@ -71,7 +91,8 @@ Integer parse_integer(std::string_view flag, const char* text, long long lo, lon
     return static_cast<Integer>(value);
 }
 
-/// A number in (lo, hi].
+/// A number in (lo, hi] that is still > lo once rounded to float (the estimators keep
+/// floats: --radius 1e-300 would become 0).
 inline double parse_number(std::string_view flag, const char* text, double lo, double hi)
 {
     char* end = nullptr;
@@ -79,19 +100,51 @@ inline double parse_number(std::string_view flag, const char* text, double lo, d
     if (end == text || *end != '\0' || !(value > lo && value <= hi))
         throw std::invalid_argument(std::string(flag) + " expects a number in (" + std::to_string(lo) + ", " + std::to_string(hi) +
                                     "], got '" + text + "'");
+    if (!(double(float(value)) > lo))
+        throw std::invalid_argument(std::string(flag) + " expects a number in (" + std::to_string(lo) + ", " + std::to_string(hi) +
+                                    "] that float can hold, got '" + text + "' (it rounds to " + std::to_string(float(value)) + ")");
     return value;
 }
 
-/// Parse the shared options; returns false when --help was printed.
-inline bool parse(int argc, char** argv, Options& options, const char* description)
+/// Refuse an output folder that cannot be written, before anything is rendered.
+inline void check_writable(const std::filesystem::path& folder)
+{
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error) throw std::invalid_argument("--out " + folder.string() + " is not writable: " + error.message());
+    const std::filesystem::path probe = folder / (".prism-write-check-" + std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+    std::FILE* file = std::fopen(probe.c_str(), "wbx");
+    if (file == nullptr) throw std::invalid_argument("--out " + folder.string() + " is not writable: " + std::strerror(errno));
+    std::fclose(file);
+    std::filesystem::remove(probe);
+}
+
+/// Refuse a --povray picture that cannot be read or has another size, before rendering.
+inline void check_povray_picture(const std::filesystem::path& png, int width, int height)
+{
+    const prism::Film picture = prism::read_png(png);
+    if (picture.width() != width || picture.height() != height)
+        throw std::invalid_argument("--povray: " + png.string() + " is " + std::to_string(picture.width()) + "x" +
+                                    std::to_string(picture.height()) + ", the render is " + std::to_string(width) + "x" + std::to_string(height));
+}
+
+/// Parse the shared options and the families the example accepts; returns false when
+/// --help was printed. Checks the output folder and a --povray picture before returning,
+/// so that a bad one is reported before the render, not after it.
+inline bool parse(int argc, char** argv, Options& options, const char* description, Accepts accepts = {})
 {
     const Options defaults = options;
+    constexpr std::string_view photon_flags[] = {"--photons", "--caustic-photons", "--gather", "--radius", "--global-radius",
+                                                 "--disk",    "--k",               "--visibility", "--filter", "--light"};
     for (int i = 1; i < argc; ++i) {
         const std::string_view flag = argv[i];
         if (flag == "--help" || flag == "-h") {
-            print_help(argv[0], description, defaults);
+            print_help(argv[0], description, defaults, accepts);
             return false;
         }
+        const bool photon_flag = std::find(std::begin(photon_flags), std::end(photon_flags), flag) != std::end(photon_flags);
+        if ((photon_flag && !accepts.photons) || (flag == "--povray" && !accepts.povray))
+            throw std::invalid_argument("'" + std::string(flag) + "' does not apply to this example (see --help)");
         if (i + 1 >= argc) throw std::invalid_argument("unknown option or missing value: '" + std::string(flag) + "'");
         const char* value = argv[++i];
         if (flag == "--width") options.render.width = parse_integer<int>(flag, value, 1, 1 << 16);
@@ -123,7 +176,8 @@ inline bool parse(int argc, char** argv, Options& options, const char* descripti
         }
         else throw std::invalid_argument("unknown option '" + std::string(flag) + "' (see --help)");
     }
-    std::filesystem::create_directories(options.out);
+    check_writable(options.out);
+    if (!options.povray.empty()) check_povray_picture(options.povray, options.render.width, options.render.height);
     return true;
 }
 

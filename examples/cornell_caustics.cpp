@@ -49,7 +49,7 @@ int main(int argc, char** argv)
     return examples::run([&] {
         examples::Options options;
         options.render.spp = 4;
-        if (!examples::parse(argc, argv, options, "the Cornell box with photon-mapped caustics and colour bleeding")) return 0;
+        if (!examples::parse(argc, argv, options, "the Cornell box with photon-mapped caustics and colour bleeding", {.povray = true, .photons = true})) return 0;
         if (!options.povray.empty()) {
             options.povray_light = true;
             options.photons = 0;

@@ -12,7 +12,7 @@ int main(int argc, char** argv)
 {
     return examples::run([&] {
         examples::Options options;
-        if (!examples::parse(argc, argv, options, "CSG and general quadrics, as in shared/scenes/csg_quadrics.pov")) return 0;
+        if (!examples::parse(argc, argv, options, "CSG and general quadrics, as in shared/scenes/csg_quadrics.pov", {.povray = true})) return 0;
         const auto scene = scenes::csg_quadrics_scene<float>();
         const prism::Whitted integrator(scene, {.max_depth = 5});
         const prism::Film film = examples::timed_render("csg_quadrics", scenes::csg_quadrics_camera<float>(), integrator, options.render);
