@@ -218,6 +218,41 @@ def leak_chart(rows):
     save(fig, "photon_leaks.png")
 
 
+def ray_property_chart(after, before):
+    """Lost hits and clear hits missed, per distance and size, before and after issue 10."""
+    def cells(rows, scalar):
+        out = {}
+        for r in rows:
+            if r["scalar"] != scalar:
+                continue
+            key = (float(r["distance"]), float(r["size"]))
+            v = out.setdefault(key, [0, 0, 0, 0])
+            v[0] += int(r["lost"])
+            v[1] += int(r["hits"])
+            v[2] += int(r["missed_vs_double"])
+            v[3] += int(r["clear_hits"])
+        return out
+
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.2))
+    panels = [("float", 0, 1, "float: hits the scene lost (% of the shape's own)"),
+              ("double", 0, 1, "double: hits the scene lost (% of the shape's own)"),
+              ("float", 2, 3, "float: clear hits missed (% of the double twin's)")]
+    for ax, (scalar, num, den, title) in zip(axes, panels):
+        a, b = cells(after, scalar), cells(before, scalar) if before else {}
+        keys = sorted(a)
+        x = range(len(keys))
+        pct = lambda d, k: 100.0 * d[k][num] / d[k][den] if k in d and d[k][den] else 0.0
+        if b:
+            ax.bar([i - 0.2 for i in x], [pct(b, k) for k in keys], 0.4, label="before", color="#c44")
+        ax.bar([i + 0.2 for i in x], [pct(a, k) for k in keys], 0.4, label="after", color="#48c")
+        ax.set_xticks(list(x))
+        ax.set_xticklabels([f"{d:g}\n{s:g}" for d, s in keys], fontsize=7)
+        ax.set_xlabel("distance (shape from origin, rays from shape) / size")
+        ax.set_title(title, fontsize=9)
+        ax.legend(fontsize=8)
+    save(fig, "ray_property.png")
+
+
 def main():
     if (rows := read("accuracy.csv")):
         accuracy_charts(rows)
@@ -235,6 +270,8 @@ def main():
         photon_chart(rows)
     if (rows := read("photon_leaks.csv")):
         leak_chart(rows)
+    if (rows := read("ray_property.csv")):
+        ray_property_chart(rows, read("ray_property_before.csv"))
 
 
 if __name__ == "__main__":

@@ -1,24 +1,106 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Run the whole test suite: release build with ctest, the same tests under
-# AddressSanitizer + UndefinedBehaviorSanitizer, and the meson build's `meson test`.
-set -euo pipefail
+# Run the whole test suite, four ways:
+#   release   Release build, every doctest case as a ctest test, plus the single-header
+#             check, the consumer projects and the command-line tests
+#   sanitize  the same cases under AddressSanitizer + UndefinedBehaviorSanitizer, with
+#             PRISM_ASSERT kept active, and a small render
+#   thread    the same cases under ThreadSanitizer, with PRISM_ASSERT active, and 2-thread
+#             renders (Whitted and photon mapping)
+#   meson     the meson build's `meson test`
+# Build output goes to build/logs/; a failing step prints its log. The last line sums up
+# the cases of every run: "test: N passed, N failed".
+set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
-"$root/tools/setup.sh"
+logs="$root/build/logs"
+"$root/tools/setup.sh" || exit 1
+mkdir -p "$logs"
 
-echo "== release build (CMake), all targets =="
-cmake -S "$root" -B "$root/build/release" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$root/build/release" -j "$jobs"
-ctest --test-dir "$root/build/release" --output-on-failure -j "$jobs"
+passed=0 failed=0 summary=()
+# step NAME COMMAND...: run quietly into build/logs/NAME.log; show the log if it fails.
+step() {
+  local name=$1
+  shift
+  if ! "$@" >"$logs/$name.log" 2>&1; then
+    echo "test: step '$name' failed; its log ($logs/$name.log) ends:" >&2
+    tail -n 60 "$logs/$name.log" >&2
+    return 1
+  fi
+}
+# count RUN LOG: add the cases passed and failed that LOG reports (ctest or doctest).
+count() {
+  local run=$1 log=$2 p f
+  if line=$(grep -E "tests passed, [0-9]+ tests? failed out of [0-9]+" "$log" | tail -n 1); then
+    f=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<<"$line")
+    p=$(( $(sed -E 's/.*out of ([0-9]+).*/\1/' <<<"$line") - f ))
+  elif line=$(grep -E "\[doctest\] test cases:" "$log" | tail -n 1); then
+    p=$(sed -E 's/.*\| *([0-9]+) passed.*/\1/' <<<"$line")
+    f=$(sed -E 's/.*\| *([0-9]+) failed.*/\1/' <<<"$line")
+  else
+    p=0 f=1
+  fi
+  passed=$((passed + p)) failed=$((failed + f))
+  summary+=("$run $p/$((p + f))")
+  echo "test: $run: $p passed, $f failed"
+}
+fail() { failed=$((failed + 1)); summary+=("$1 FAILED"); echo "test: $1: failed"; }
 
-echo "== address + undefined-behaviour sanitizers =="
-cmake -S "$root" -B "$root/build/sanitize" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DPRISM_BUILD_BENCH=OFF \
-  -DCMAKE_CXX_FLAGS="-O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" >/dev/null
-cmake --build "$root/build/sanitize" -j "$jobs"
-ctest --test-dir "$root/build/sanitize" --output-on-failure -j "$jobs"
-"$root/build/sanitize/examples/cornell" --width 64 --height 64 --spp 2 --out "$root/build/sanitize/gallery" >/dev/null
+start=$(date +%s)
 
-echo "== meson =="
-if [[ ! -d "$root/build/meson" ]]; then meson setup "$root/build/meson" "$root" >/dev/null; fi
-meson test -C "$root/build/meson" --print-errorlogs
+# Release: no benches (they are not tests).
+release="$root/build/release"
+if step release-build bash -c "cmake -S '$root' -B '$release' -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_BENCH=OFF &&
+                                cmake --build '$release' -j $jobs"; then
+  ctest --test-dir "$release" --output-on-failure -j "$jobs" >"$logs/release-ctest.log" 2>&1 ||
+    grep -A 30 -E "\*\*\*Failed|Exception|FAILED" "$logs/release-ctest.log" | head -n 80
+  count release "$logs/release-ctest.log"
+else
+  fail release
+fi
+
+# Address + undefined-behaviour sanitizers, assertions on.
+sanitize="$root/build/sanitize"
+if step sanitize-build bash -c "cmake -S '$root' -B '$sanitize' -G Ninja -DCMAKE_BUILD_TYPE=Debug -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON \
+      -DCMAKE_CXX_FLAGS='-O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer' &&
+      cmake --build '$sanitize' -j $jobs"; then
+  ctest --test-dir "$sanitize" --output-on-failure -j "$jobs" >"$logs/sanitize-ctest.log" 2>&1 ||
+    grep -A 30 -E "\*\*\*Failed|Exception|FAILED|ERROR: AddressSanitizer|runtime error" "$logs/sanitize-ctest.log" | head -n 80
+  count sanitize "$logs/sanitize-ctest.log"
+  step sanitize-render "$sanitize/examples/cornell" --width 64 --height 64 --spp 2 --out "$sanitize/gallery" || fail sanitize-render
+else
+  fail sanitize
+fi
+
+# ThreadSanitizer, assertions on: the test cases, then renders on 2 threads.
+thread="$root/build/thread"
+export TSAN_OPTIONS="halt_on_error=1 exitcode=66 second_deadlock_stack=1"
+if step thread-build bash -c "cmake -S '$root' -B '$thread' -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON \
+      -DCMAKE_CXX_FLAGS='-O1 -fsanitize=thread' && cmake --build '$thread' -j $jobs --target prism_tests examples"; then
+  "$thread/tests/prism_tests" >"$logs/thread-tests.log" 2>&1 || grep -B 5 -A 40 -E "ThreadSanitizer|ERROR|FAILED" "$logs/thread-tests.log" | head -n 80
+  count thread "$logs/thread-tests.log"
+  step thread-render-whitted "$thread/examples/cornell" --width 96 --height 96 --spp 2 --threads 2 --out "$thread/gallery" || fail thread-render-whitted
+  step thread-render-photons "$thread/examples/cornell_caustics" --width 64 --height 64 --spp 1 --threads 2 --photons 20000 \
+    --caustic-photons 20000 --gather 4 --out "$thread/gallery" || fail thread-render-photons
+else
+  fail thread
+fi
+
+# Meson.
+meson_dir="$root/build/meson"
+if step meson-setup bash -c "[[ -d '$meson_dir' ]] || meson setup '$meson_dir' '$root'"; then
+  meson test -C "$meson_dir" --print-errorlogs >"$logs/meson-test.log" 2>&1 || tail -n 60 "$logs/meson-test.log"
+  # Cases of the doctest binary, plus meson's other tests.
+  if grep -q "\[doctest\] test cases:" "$meson_dir/meson-logs/testlog.txt" 2>/dev/null; then
+    count meson "$meson_dir/meson-logs/testlog.txt"
+  else
+    fail meson
+  fi
+  grep -qE "^Fail: +0 *$" "$logs/meson-test.log" || fail meson-tests
+else
+  fail meson
+fi
+
+echo "test: ${summary[*]} in $(( $(date +%s) - start )) s"
+echo "test: $passed passed, $failed failed"
+[[ $failed -eq 0 ]]

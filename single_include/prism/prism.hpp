@@ -54,11 +54,15 @@ namespace prism::detail {
 
 } // namespace prism::detail
 
-/// Precondition check: compiled out with NDEBUG; in a constant expression a failed
-/// check is a compile error (assert_fail is not constexpr).
-#ifdef NDEBUG
+/// Precondition check: compiled out with NDEBUG unless PRISM_ENABLE_ASSERTIONS is
+/// defined (an optimised build that still checks, as the test suite's sanitizer and
+/// thread-sanitizer runs are); in a constant expression a failed check is a compile error
+/// (assert_fail is not constexpr). PRISM_ASSERTIONS_ENABLED says which (1 or 0).
+#if defined(NDEBUG) && !defined(PRISM_ENABLE_ASSERTIONS)
+#define PRISM_ASSERTIONS_ENABLED 0
 #define PRISM_ASSERT(condition) ((void)0)
 #else
+#define PRISM_ASSERTIONS_ENABLED 1
 #define PRISM_ASSERT(condition) \
     ((condition) ? (void)0 : ::prism::detail::assert_fail(#condition, __FILE__, __LINE__))
 #endif
@@ -235,6 +239,96 @@ template <Scalar T>
 
 } // namespace prism
 
+// ---- prism/core/check.hpp ----
+// Input validation for constructors: a clear std::invalid_argument naming the parameter.
+//
+// These run when a scene is built, never on a hot path. In a constant expression a
+// failed check is a compile error, since a throw cannot be constant-evaluated.
+
+
+#include <limits>
+
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace prism::detail {
+
+template <class... Parts>
+[[noreturn]] inline void throw_invalid(const Parts&... parts)
+{
+    std::ostringstream message;
+    message.precision(9);
+    message << "prism: ";
+    (message << ... << parts);
+    throw std::invalid_argument(message.str());
+}
+
+template <Scalar T>
+inline std::string describe(const Vec3<T>& v)
+{
+    std::ostringstream out;
+    out.precision(9);
+    out << '(' << v.x << ", " << v.y << ", " << v.z << ')';
+    return out.str();
+}
+
+template <Scalar T>
+constexpr void require_finite(std::string_view name, T value)
+{
+    if (!is_finite(value)) throw_invalid(name, " must be finite, got ", value);
+}
+
+template <Scalar T>
+constexpr void require_finite(std::string_view name, const Vec3<T>& value)
+{
+    if (!is_finite(value)) throw_invalid(name, " must be finite, got ", describe(value));
+}
+
+template <Scalar T>
+constexpr void require_positive(std::string_view name, T value)
+{
+    if (!(is_finite(value) && value > T(0))) throw_invalid(name, " must be finite and > 0, got ", value);
+}
+
+template <Scalar T>
+constexpr void require_non_negative(std::string_view name, T value)
+{
+    if (!(is_finite(value) && value >= T(0))) throw_invalid(name, " must be finite and >= 0, got ", value);
+}
+
+template <Scalar T>
+constexpr void require_non_negative(std::string_view name, const Vec3<T>& value)
+{
+    if (!(is_finite(value) && value.x >= T(0) && value.y >= T(0) && value.z >= T(0)))
+        throw_invalid(name, " must be finite and >= 0 in every channel, got ", describe(value));
+}
+
+/// The lengths a shape may have in T: their squares, and squares of distances a few
+/// times as large, must be normal numbers (float: about 1.7e-18 to 1.2e18).
+template <Scalar T>
+inline constexpr T smallest_length = T(16) * prism::sqrt(std::numeric_limits<T>::min());
+template <Scalar T>
+inline constexpr T largest_length = prism::sqrt(std::numeric_limits<T>::max()) / T(16);
+
+/// A length (a radius, a semi-axis) within [smallest_length, largest_length].
+template <Scalar T>
+constexpr void require_length(std::string_view name, T value)
+{
+    if (!(value >= smallest_length<T> && value <= largest_length<T>))
+        throw_invalid(name, " must be in [", smallest_length<T>, ", ", largest_length<T>, "] for this precision (its square must be a normal number), got ", value);
+}
+
+template <Scalar T>
+constexpr void require_nonzero(std::string_view name, const Vec3<T>& value)
+{
+    require_finite(name, value);
+    if (value.x == T(0) && value.y == T(0) && value.z == T(0)) throw_invalid(name, " must not be the zero vector");
+}
+
+} // namespace prism::detail
+
 // ---- prism/accel/kd_tree.hpp ----
 // KdTree: k-nearest and radius queries over a point set; pointer-free, constexpr-friendly.
 //
@@ -244,7 +338,8 @@ template <Scalar T>
 // of largest extent (found with std::nth_element, O(n log n) overall). A node stores
 // only its split value and axis; ranges, and whether a node is a leaf, follow from the
 // point count. The points are copied in tree order, so a leaf is contiguous in memory.
-// Queries allocate nothing; the capacity K is a compile-time constant. Neighbours are ordered by
+// Points with a NaN coordinate are refused (std::invalid_argument): they have no place
+// in the order. Queries allocate nothing; the capacity K is a compile-time constant. Neighbours are ordered by
 // (squared distance, index), so ties are broken the same way as a brute-force search.
 // Distances are squared throughout, radii are not.
 
@@ -324,12 +419,18 @@ public:
     constexpr explicit KdTree(const Points& points)
     {
         const std::size_t n = points.size();
-        PRISM_ASSERT(n < std::numeric_limits<std::uint32_t>::max());
+        if (n >= std::numeric_limits<std::uint32_t>::max())
+            detail::throw_invalid("KdTree holds at most ", std::numeric_limits<std::uint32_t>::max() - 1, " points (32-bit indices), got ", n);
         points_.resize(n);
         index_.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
             index_[i] = static_cast<std::uint32_t>(i);
-            for (std::size_t a = 0; a < dimension; ++a) points_[i][a] = static_cast<T>(points.coordinate(i, a));
+            for (std::size_t a = 0; a < dimension; ++a) {
+                points_[i][a] = static_cast<T>(points.coordinate(i, a));
+                // A NaN is neither left nor right of any split: the median partition and
+                // every query's pruning would go wrong for ordinary points too.
+                if (points_[i][a] != points_[i][a]) detail::throw_invalid("KdTree point ", i, " has a NaN coordinate (axis ", a, ")");
+            }
         }
         if (n > LeafSize) {
             // Heap-numbered nodes: enough for every split of halving ranges down to a leaf.
@@ -678,6 +779,8 @@ template <Scalar T>
 // Aabb: an axis-aligned bounding box and its robust slab test.
 
 
+#include <limits>
+
 namespace prism {
 
 /// Axis-aligned box [lo, hi]; empty when lo > hi on any axis (the default).
@@ -696,6 +799,33 @@ struct Aabb {
         return lo.x <= p.x && p.x <= hi.x && lo.y <= p.y && p.y <= hi.y && lo.z <= p.z && p.z <= hi.z;
     }
 
+    /// Finite on every axis: the box of a bounded shape (false for an empty box too).
+    [[nodiscard]] constexpr bool bounded() const noexcept { return !empty() && is_finite(lo) && is_finite(hi); }
+
+    /// The box grown outward by one float step on every side: a box computed by rounding
+    /// to nearest then holds every point of the exact one.
+    [[nodiscard]] constexpr Aabb rounded_out() const noexcept
+    {
+        Aabb out;
+        for (int axis = 0; axis < 3; ++axis) out.lo[axis] = next_float_down(lo[axis]), out.hi[axis] = next_float_up(hi[axis]);
+        return out;
+    }
+
+    /// Whether the ray may cross a shape inside this (bounded) box at t > t_min: the
+    /// conservative test with which a shape skips its own work. A shape's crossings are
+    /// computed with rounding that grows with the ray origin's distance from it, so a
+    /// ray that just misses the exact shape may still be reported to cross it; the box is
+    /// therefore widened for each ray by gamma(16) of that distance (and of its own
+    /// size), and the answer never depends on where the range ends, so that asking again
+    /// over a shorter range (a scene's surface query) cannot cull what was found before.
+    [[nodiscard]] constexpr bool may_cross(const Ray<T>& ray, T t_min) const noexcept
+    {
+        const Vec3<T> half = T(0.5) * (hi - lo);
+        const T pad = gamma<T>(16) * (max_component(abs(ray.origin - (lo + half))) + max_component(half)) + std::numeric_limits<T>::min();
+        const Aabb wide{lo - Vec3<T>(pad), hi + Vec3<T>(pad)};
+        return wide.contains(ray.origin) || !wide.clip(ray, {t_min, infinity<T>}).empty();
+    }
+
     /// The part of `range` in which the ray is inside the box (empty if none).
     /// Slab test with the far distance widened by 2*gamma(3), so that rounding never
     /// reports a miss for a ray that touches the box (pbrt-v4, Bounds3::IntersectP).
@@ -708,9 +838,10 @@ struct Aabb {
                 if (o < lo[axis] || o > hi[axis]) return {};
                 continue;
             }
-            const T inv = T(1) / d;
-            T t_near = (lo[axis] - o) * inv;
-            T t_far = (hi[axis] - o) * inv;
+            // Divided, not multiplied by 1 / d: for a denormal d that reciprocal is
+            // infinite, and 0 * inf would be NaN where 0 / d is 0.
+            T t_near = (lo[axis] - o) / d;
+            T t_far = (hi[axis] - o) / d;
             if (t_near > t_far) std::swap(t_near, t_far);
             t_far *= T(1) + T(2) * gamma<T>(3);
             if (t_near > range.min) range.min = t_near;
@@ -722,79 +853,6 @@ struct Aabb {
 };
 
 } // namespace prism
-
-// ---- prism/core/check.hpp ----
-// Input validation for constructors: a clear std::invalid_argument naming the parameter.
-//
-// These run when a scene is built, never on a hot path. In a constant expression a
-// failed check is a compile error, since a throw cannot be constant-evaluated.
-
-
-#include <sstream>
-#include <stdexcept>
-#include <string>
-#include <string_view>
-
-namespace prism::detail {
-
-template <class... Parts>
-[[noreturn]] inline void throw_invalid(const Parts&... parts)
-{
-    std::ostringstream message;
-    message.precision(9);
-    message << "prism: ";
-    (message << ... << parts);
-    throw std::invalid_argument(message.str());
-}
-
-template <Scalar T>
-inline std::string describe(const Vec3<T>& v)
-{
-    std::ostringstream out;
-    out.precision(9);
-    out << '(' << v.x << ", " << v.y << ", " << v.z << ')';
-    return out.str();
-}
-
-template <Scalar T>
-constexpr void require_finite(std::string_view name, T value)
-{
-    if (!is_finite(value)) throw_invalid(name, " must be finite, got ", value);
-}
-
-template <Scalar T>
-constexpr void require_finite(std::string_view name, const Vec3<T>& value)
-{
-    if (!is_finite(value)) throw_invalid(name, " must be finite, got ", describe(value));
-}
-
-template <Scalar T>
-constexpr void require_positive(std::string_view name, T value)
-{
-    if (!(is_finite(value) && value > T(0))) throw_invalid(name, " must be finite and > 0, got ", value);
-}
-
-template <Scalar T>
-constexpr void require_non_negative(std::string_view name, T value)
-{
-    if (!(is_finite(value) && value >= T(0))) throw_invalid(name, " must be finite and >= 0, got ", value);
-}
-
-template <Scalar T>
-constexpr void require_non_negative(std::string_view name, const Vec3<T>& value)
-{
-    if (!(is_finite(value) && value.x >= T(0) && value.y >= T(0) && value.z >= T(0)))
-        throw_invalid(name, " must be finite and >= 0 in every channel, got ", describe(value));
-}
-
-template <Scalar T>
-constexpr void require_nonzero(std::string_view name, const Vec3<T>& value)
-{
-    require_finite(name, value);
-    if (value.x == T(0) && value.y == T(0) && value.z == T(0)) throw_invalid(name, " must not be the zero vector");
-}
-
-} // namespace prism::detail
 
 // ---- prism/core/rng.hpp ----
 // PCG32 random numbers: small state, many independent streams (one per pixel); and the
@@ -881,7 +939,10 @@ template <Scalar T = double>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <type_traits>
 
 namespace prism {
 
@@ -903,7 +964,11 @@ public:
     Transform() = default;
 
     /// From an affine 4x4 matrix (GLM, column-major: m[column][row]). Throws
-    /// std::invalid_argument for a non-finite, non-affine or singular matrix.
+    /// std::invalid_argument for a non-finite, non-affine or singular matrix. Singular
+    /// means ill-conditioned for T: the condition number ||L|| ||L^-1|| of the linear
+    /// part L (infinity norm, computed in higher precision) is at least 1 / (2 eps), or
+    /// the inverse is not representable in T. A flattening such as scale({1e-6, 1, 1}) is
+    /// legitimate however small its determinant; scale({0, 1, 1}) is not.
     explicit Transform(const Mat4<T>& m) : m_(m)
     {
         for (int c = 0; c < 4; ++c)
@@ -911,13 +976,7 @@ public:
                 if (!is_finite(m[c][r])) detail::throw_invalid("Transform matrix must be finite, got ", m[c][r], " at column ", c, " row ", r);
         if (m[0][3] != T(0) || m[1][3] != T(0) || m[2][3] != T(0) || m[3][3] != T(1))
             detail::throw_invalid("Transform matrix must be affine (last row 0 0 0 1)");
-        // Singular when the determinant is negligible beside the size of the linear part.
-        T scale = T(0);
-        for (int c = 0; c < 3; ++c) scale = std::max(scale, length(Vec3<T>(m[c])));
-        const T det = glm::determinant(Mat3<T>(m));
-        if (!(std::abs(det) > T(64) * std::numeric_limits<T>::epsilon() * scale * scale * scale))
-            detail::throw_invalid("Transform is singular (determinant ", det, ")");
-        inverse_ = glm::inverse(m);
+        inverse_ = checked_inverse(m);
         abs_inverse_ = absolute(inverse_);
     }
 
@@ -946,8 +1005,17 @@ public:
     [[nodiscard]] static Transform rotate_y(T degrees) { return rotate(degrees, {T(0), T(1), T(0)}); }
     [[nodiscard]] static Transform rotate_z(T degrees) { return rotate(degrees, {T(0), T(0), T(1)}); }
 
-    /// This transform followed by `next`.
-    [[nodiscard]] Transform then(const Transform& next) const { return Transform(next.m_ * m_, inverse_ * next.inverse_); }
+    /// This transform followed by `next`. Throws std::invalid_argument when the product
+    /// overflows or is singular (scale(1e12) four times in float).
+    [[nodiscard]] Transform then(const Transform& next) const
+    {
+        const Mat4<T> product = next.m_ * m_;
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                if (!is_finite(product[c][r]))
+                    detail::throw_invalid("Transform::then: the composed transform overflows (", product[c][r], " at column ", c, " row ", r, ")");
+        return Transform(product);
+    }
 
     [[nodiscard]] Transform inverse() const { return Transform(inverse_, m_); }
 
@@ -978,6 +1046,58 @@ public:
 
 private:
     Transform(const Mat4<T>& m, const Mat4<T>& inverse) : m_(m), inverse_(inverse), abs_inverse_(absolute(inverse)) {}
+
+    /// The inverse of an affine matrix, computed in a wider type (double for float, long
+    /// double for double), or a clear error when it is singular for T.
+    [[nodiscard]] static Mat4<T> checked_inverse(const Mat4<T>& m)
+    {
+        using W = std::conditional_t<sizeof(T) < sizeof(double), double, long double>;
+        W a[3][3];
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) a[r][c] = W(m[c][r]);
+        // Scale by the largest entry first: the determinant of a tiny or huge but
+        // well-conditioned matrix must not underflow or overflow.
+        W largest = 0;
+        for (const auto& row : a)
+            for (const W x : row) largest = std::max(largest, x < 0 ? -x : x);
+        if (!(largest > 0)) detail::throw_invalid("Transform is singular (its linear part is zero)");
+        for (auto& row : a)
+            for (W& x : row) x /= largest;
+        // Inverse of the scaled L by cofactors.
+        const W det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                      a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+        W inv[3][3];
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) {
+                const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
+                inv[r][c] = (a[r1][c1] * a[r2][c2] - a[r1][c2] * a[r2][c1]) / det;
+            }
+        // Condition number in the infinity norm (scale-free).
+        W norm = 0, inv_norm = 0;
+        for (int r = 0; r < 3; ++r) {
+            W row = 0, inv_row = 0;
+            for (int c = 0; c < 3; ++c) row += a[r][c] < 0 ? -a[r][c] : a[r][c], inv_row += inv[r][c] < 0 ? -inv[r][c] : inv[r][c];
+            norm = std::max(norm, row);
+            inv_norm = std::max(inv_norm, inv_row);
+        }
+        const W condition = norm * inv_norm;
+        if (!(det != 0) || !(condition < W(0.5) / W(std::numeric_limits<T>::epsilon())))
+            detail::throw_invalid("Transform is singular for this precision (condition number ", double(condition), ", at most ",
+                                  0.5 / double(std::numeric_limits<T>::epsilon()), ")");
+        Mat4<T> out(T(1));
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) out[c][r] = T(inv[r][c] / largest);
+        // The translation of the inverse: -L^-1 t.
+        for (int r = 0; r < 3; ++r) {
+            W sum = 0;
+            for (int c = 0; c < 3; ++c) sum -= (inv[r][c] / largest) * W(m[3][c]);
+            out[3][r] = T(sum);
+        }
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                if (!is_finite(out[c][r])) detail::throw_invalid("Transform's inverse is not representable (", out[c][r], " at column ", c, " row ", r, ")");
+        return out;
+    }
 
     [[nodiscard]] static Mat4<T> absolute(const Mat4<T>& m) noexcept
     {
@@ -1142,7 +1262,7 @@ public:
 
     constexpr CsgNode(A a, B b) : a_(std::move(a)), b_(std::move(b)), bounds_(Op::bounds(a_.bounds(), b_.bounds()))
     {
-        bounded_ = is_finite(bounds_.lo) && is_finite(bounds_.hi);
+        bounded_ = bounds_.bounded();
     }
 
     /// Nested construction for the variadic forms: CsgNode<Op, A, CsgNode<Op, B, C>>(a, b, c).
@@ -1162,8 +1282,8 @@ public:
     [[nodiscard]] constexpr Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         Crossings<T, max_crossings> out;
-        // Outside the bounds the ray cannot be inside the result.
-        if (bounded_ && bounds_.clip(ray, range).empty()) return out;
+        // A ray that cannot come near the bounds cannot cross the result.
+        if (bounded_ && !bounds_.may_cross(ray, range.min)) return out;
 
         const auto ca = a_.template crossings<Surface>(ray, range);
         const auto cb = b_.template crossings<Surface>(ray, range);
@@ -1360,7 +1480,7 @@ public:
             const T o = ray.origin[axis];
             const T d = ray.direction[axis];
             if (d == T(0)) { // parallel to this slab
-                if (o < lo_[axis] || o > hi_[axis]) return out;
+                if (o <= lo_[axis] || o >= hi_[axis]) return out; // in or beside a face plane: a touch at most
                 continue;
             }
             T t0 = (lo_[axis] - o) / d;
@@ -1428,9 +1548,15 @@ public:
     {
         detail::require_nonzero("Plane normal", normal);
         detail::require_finite("Plane offset", offset);
-        const T len = length(normal);
-        normal_ = normal * (T(1) / len);
-        offset_ = offset / len;
+        // Scaled by its largest component before normalising: |normal|^2 of (1e-45, 0, 0)
+        // underflows and of (3e38, 3e38, 0) overflows.
+        const T largest = max_component(abs(normal));
+        const Vec3<T> scaled = normal / largest;
+        const T len = length(scaled);
+        normal_ = scaled * (T(1) / len);
+        offset_ = offset / largest / len;
+        if (!is_finite(offset_))
+            detail::throw_invalid("Plane offset / |normal| must be finite, got ", offset, " / |", detail::describe(normal), "|");
     }
 
     /// The half-space bounded by the plane through `point` with outward `normal`.
@@ -1438,7 +1564,8 @@ public:
     {
         detail::require_finite("Plane point", point);
         detail::require_nonzero("Plane normal", normal);
-        return Plane(normal, dot(normal, point));
+        const Vec3<T> n = normal / max_component(abs(normal)); // as in the constructor: no overflow in the dot product
+        return Plane(n, dot(n, point));
     }
 
     [[nodiscard]] constexpr const Vec3<T>& normal() const noexcept { return normal_; }
@@ -1527,7 +1654,7 @@ public:
 
     /// Throws std::invalid_argument for a non-finite coefficient, an all-zero quadric,
     /// or one with no x, y or z term (a constant is not a surface).
-    constexpr explicit Quadric(const Coefficients& k, const Vec3<T>& origin = Vec3<T>(T(0))) : k_(k), origin_(origin)
+    constexpr explicit Quadric(const Coefficients& k, const Vec3<T>& origin = Vec3<T>(T(0))) : k_(k), given_(k), origin_(origin)
     {
         detail::require_finite("Quadric origin", origin);
         const std::array<T, 10> all{k.a, k.b, k.c, k.d, k.e, k.f, k.g, k.h, k.i, k.j};
@@ -1537,8 +1664,9 @@ public:
         const bool variable = k.a != 0 || k.b != 0 || k.c != 0 || k.d != 0 || k.e != 0 || k.f != 0 || k.g != 0 || k.h != 0 || k.i != 0;
         if (!variable && k.j == 0) detail::throw_invalid("Quadric coefficients are all zero");
         if (!variable) detail::throw_invalid("Quadric has no x, y or z term (only the constant ", k.j, ")");
+        normalise();
         bounds_ = ellipsoid_bounds();
-        bounded_ = is_finite(bounds_.lo) && is_finite(bounds_.hi);
+        bounded_ = bounds_.bounded();
     }
 
     /// From a 4x4 matrix Q with F(p) = [p 1] Q [p 1]^T; only its symmetric part matters.
@@ -1562,9 +1690,9 @@ public:
     [[nodiscard]] static Quadric ellipsoid(const Vec3<T>& centre, const Vec3<T>& semi_axes, const Mat3<T>& rotation = Mat3<T>(T(1)))
     {
         detail::require_finite("Quadric::ellipsoid centre", centre);
-        detail::require_positive("Quadric::ellipsoid semi_axes.x", semi_axes.x);
-        detail::require_positive("Quadric::ellipsoid semi_axes.y", semi_axes.y);
-        detail::require_positive("Quadric::ellipsoid semi_axes.z", semi_axes.z);
+        detail::require_length("Quadric::ellipsoid semi_axes.x", semi_axes.x);
+        detail::require_length("Quadric::ellipsoid semi_axes.y", semi_axes.y);
+        detail::require_length("Quadric::ellipsoid semi_axes.z", semi_axes.z);
         const Vec3<T> inv2 = T(1) / (semi_axes * semi_axes);
         const Mat3<T> m = rotation * Mat3<T>(inv2.x, 0, 0, 0, inv2.y, 0, 0, 0, inv2.z) * glm::transpose(rotation);
         return centred(m, centre, T(-1));
@@ -1575,7 +1703,7 @@ public:
     {
         detail::require_finite("Quadric::cylinder point", point);
         detail::require_nonzero("Quadric::cylinder axis", axis);
-        detail::require_positive("Quadric::cylinder radius", radius);
+        detail::require_length("Quadric::cylinder radius", radius);
         const Vec3<T> u = normalize(axis);
         return centred(Mat3<T>(T(1)) - glm::outerProduct(u, u), point, -radius * radius);
     }
@@ -1650,8 +1778,9 @@ public:
         return Quadric(from_matrix(local).k_, transform.point(origin_));
     }
 
-    /// The coefficients, relative to origin().
-    [[nodiscard]] constexpr const Coefficients& coefficients() const noexcept { return k_; }
+    /// The coefficients as given, relative to origin(). (Crossings are computed from a
+    /// copy scaled by a power of two so that the largest is in [1, 2): the same surface.)
+    [[nodiscard]] constexpr const Coefficients& coefficients() const noexcept { return given_; }
     [[nodiscard]] constexpr const Vec3<T>& origin() const noexcept { return origin_; }
 
     /// Q in world coordinates (computed in T, so rounded for a far-away origin).
@@ -1661,13 +1790,25 @@ public:
         return glm::transpose(to_local) * local_matrix() * to_local;
     }
 
-    /// F(p).
-    [[nodiscard]] constexpr T evaluate(const Vec3<T>& p) const noexcept { return evaluate_local(p - origin_); }
+    /// F(p), with the coefficients as given.
+    [[nodiscard]] constexpr T evaluate(const Vec3<T>& p) const noexcept
+    {
+        const Coefficients& k = given_;
+        const Vec3<T> v = p - origin_;
+        const Vec3<T> q3v{k.a * v.x + k.b * v.y + k.c * v.z, k.b * v.x + k.e * v.y + k.f * v.z, k.c * v.x + k.f * v.y + k.h * v.z};
+        return dot(v, q3v + T(2) * Vec3<T>(k.d, k.g, k.i)) + k.j;
+    }
 
     /// The gradient of F, 2 (Q3 (p - o) + q): the outward normal direction.
-    [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>& p) const noexcept { return T(2) * half_gradient(p - origin_); }
+    [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>& p) const noexcept
+    {
+        const Coefficients& k = given_;
+        const Vec3<T> v = p - origin_;
+        return T(2) * (Vec3<T>{k.a * v.x + k.b * v.y + k.c * v.z, k.b * v.x + k.e * v.y + k.f * v.z, k.c * v.x + k.f * v.y + k.h * v.z} +
+                       Vec3<T>(k.d, k.g, k.i));
+    }
 
-    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return evaluate(p) < T(0); }
+    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return evaluate_local(p - origin_) < T(0); }
 
     /// An ellipsoid's box; Aabb::universe() for unbounded quadrics.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
@@ -1675,8 +1816,8 @@ public:
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        // An ellipsoid: outside its box the ray is outside it.
-        if (bounded_ && bounds_.clip(ray, range).empty()) return {};
+        // An ellipsoid: a ray that cannot come near its box cannot cross it.
+        if (bounded_ && !bounds_.may_cross(ray, range.min)) return {};
         // Compute quadratic coefficients: F(o + t d) = A t^2 + 2 B t + C (errata 1: h dz^2),
         // in the quadric's own coordinates.
         const Vec3<T> o = ray.origin - origin_;
@@ -1685,7 +1826,21 @@ public:
         const T A = dot(d, quadratic_part(d));
         const T B = dot(d, g_o);
         const T C = dot(o, g_o + linear()) + k_.j;
-        const T disc = difference_of_products(B, B, A, C);
+
+        // The discriminant is the same for any point of the line taken as its origin, and
+        // it is exact only near the quadric: from a far origin, C ~ |o|^2 carries a
+        // rounding far larger than B^2 - A C near a hit (a unit ellipsoid seen from 10^4
+        // would lose almost every hit). So it is computed from the ray's closest approach
+        // to the quadric's origin, m = o + t_m d, where the coefficients are of the
+        // quadric's own size, and the surface points are found from there too.
+        const T dd = dot(d, d);
+        const T t_m = -dot(o, d) / dd;
+        const bool moved = is_finite(t_m);
+        const Vec3<T> m = moved ? o + t_m * d : o;
+        const Vec3<T> g_m = half_gradient(m);
+        const T B_m = dot(d, g_m);
+        const T C_m = dot(m, g_m + linear()) + k_.j;
+        const T disc = difference_of_products(B_m, B_m, A, C_m);
 
         Crossings<T, 2> out;
         // No real crossing (disc < 0) or a tangent (disc = 0, a double root): F keeps one
@@ -1695,7 +1850,9 @@ public:
             return out;
         }
 
-        // Stable roots (errata 3): q = -(B + sign(B) sqrt(disc)); t = C / q and q / A.
+        // Stable roots from the ray's own origin (errata 3): q = -(B + sign(B) sqrt(disc));
+        // t = C / q and q / A, so a root near t = 0 (a ray leaving the surface) has the
+        // sign of C = F(o), the same test that says which side the origin is on.
         // At a root F'(t) = 2(A t + B) = +-2 sqrt(disc): it is -2 sign(B) sqrt(disc) at
         // q / A and +2 sign(B) sqrt(disc) at C / q, so which root enters (F' < 0, the
         // gradient against the ray) follows from sign(B) exactly, for any sign of A.
@@ -1714,13 +1871,43 @@ public:
         out.inside_at_start = !roots[0].entering;
         for (std::size_t r = 0; r < n; ++r)
             if (roots[r].t <= range.min) out.inside_at_start = roots[r].entering;
-        for (std::size_t r = 0; r < n; ++r)
-            if (range.surrounds(roots[r].t)) out.push_back(Surface ? surface_at({o, d}, roots[r].t, roots[r].entering) : roots[r]);
+        if constexpr (!Surface) {
+            for (std::size_t r = 0; r < n; ++r)
+                if (range.surrounds(roots[r].t)) out.push_back(roots[r]);
+        } else {
+            // The same roots measured from m: s = t - t_m, found as stably there, in the
+            // same order (t grows with s).
+            const T q_m = B_m >= T(0) ? -(B_m + root) : -(B_m - root);
+            std::array<T, 2> s{C_m / q_m, q_m / A};
+            if (s[1] < s[0]) std::swap(s[0], s[1]);
+            for (std::size_t r = 0; r < n; ++r) {
+                if (!range.surrounds(roots[r].t)) continue;
+                // With one root (A = 0) only C_m / q_m is finite.
+                T s_r = n == 1 ? C_m / q_m : s[r];
+                if (!is_finite(s_r)) s_r = roots[r].t - t_m;
+                out.push_back(surface_at(m + s_r * d, d, roots[r].t, roots[r].entering));
+            }
+        }
         return out;
     }
 
 private:
     // Quadric Private Methods
+
+    /// Scale every coefficient by one power of two (exactly) so that the largest is in
+    /// [1, 2): the same surface, but A, B and C of a ray neither overflow nor vanish
+    /// when the user's coefficients are as small as 1e-45 or as large as 1e30.
+    constexpr void normalise() noexcept
+    {
+        T largest = T(0);
+        for (const T x : {k_.a, k_.b, k_.c, k_.d, k_.e, k_.f, k_.g, k_.h, k_.i, k_.j}) largest = std::max(largest, x < T(0) ? -x : x);
+        // By steps of 2, each exact, so that this stays a constant expression.
+        const auto times = [this](T factor) {
+            for (T* x : {&k_.a, &k_.b, &k_.c, &k_.d, &k_.e, &k_.f, &k_.g, &k_.h, &k_.i, &k_.j}) *x *= factor;
+        };
+        for (; largest >= T(2); largest *= T(0.5)) times(T(0.5));
+        for (; largest < T(1); largest *= T(2)) times(T(2));
+    }
 
     static Quadric from_parts(const Mat3<T>& m, const Vec3<T>& q, T j)
     {
@@ -1733,7 +1920,7 @@ private:
 
     [[nodiscard]] Mat4<T> local_matrix() const noexcept
     {
-        const Coefficients& k = k_;
+        const Coefficients& k = given_;
         return Mat4<T>(k.a, k.b, k.c, k.d, k.b, k.e, k.f, k.g, k.c, k.f, k.h, k.i, k.d, k.g, k.i, k.j);
     }
 
@@ -1759,18 +1946,18 @@ private:
                m(k_.j);
     }
 
-    /// The crossing at t of a ray given in the quadric's own coordinates.
-    [[nodiscard]] constexpr Crossing<T> surface_at(const Ray<T>& local, T t, bool entering) const noexcept
+    /// The crossing at t of a ray with direction d, near the point p given in the
+    /// quadric's own coordinates.
+    [[nodiscard]] constexpr Crossing<T> surface_at(Vec3<T> point, const Vec3<T>& d, T t, bool entering) const noexcept
     {
-        Vec3<T> point = local.at(t);
         Vec3<T> g = half_gradient(point);
         const T gg = dot(g, g);
         Vec3<T> normal, error;
         if (!(gg > T(0)) || !is_finite(gg)) {
             // A singular point (a cone's apex): no normal; face the ray.
-            const Vec3<T> facing = normalize(local.direction);
+            const Vec3<T> facing = normalize(d);
             normal = entering ? -facing : facing;
-            error = gamma<T>(4) * (abs(local.origin) + abs(t * local.direction));
+            error = gamma<T>(4) * abs(point);
         } else {
             // Refine the hit point with one Newton step along the gradient, onto F = 0.
             point -= (evaluate_local(point) / (T(2) * gg)) * g;
@@ -1804,12 +1991,16 @@ private:
         const Vec3<T> centre = -inv_q;
         const T level = dot(q, inv_q) - k.j;
         if (!(level > T(0))) return {}; // empty solid
-        // Widened by a relative margin so rounding never clips the surface.
+        // Widened by a relative margin for the rounding of the formula above, then by the
+        // rounding of the sums, and rounded outward: the box holds the whole surface.
         const Vec3<T> half = Vec3<T>(prism::sqrt(level * i00), prism::sqrt(level * i11), prism::sqrt(level * i22)) * T(1.0001);
-        return {origin_ + centre - half, origin_ + centre + half};
+        const Vec3<T> mid = origin_ + centre;
+        const Vec3<T> pad = gamma<T>(4) * (abs(origin_) + abs(centre) + half);
+        return Aabb<T>{mid - half - pad, mid + half + pad}.rounded_out();
     }
 
-    Coefficients k_;
+    Coefficients k_;     ///< normalised: the largest in [1, 2)
+    Coefficients given_; ///< as the user wrote them
     Vec3<T> origin_{};
     Aabb<T> bounds_;
     bool bounded_ = false;
@@ -1834,12 +2025,13 @@ public:
 
     // Sphere Public Methods
 
-    /// A sphere; throws std::invalid_argument for a non-finite center or a radius that
-    /// is not finite and > 0.
+    /// A sphere; throws std::invalid_argument for a non-finite center or a radius outside
+    /// [detail::smallest_length, detail::largest_length] (float: 1.7e-18 to 1.2e18, so
+    /// that r^2 neither underflows nor overflows).
     constexpr Sphere(const Vec3<T>& center, T radius) : center_(center), radius_(radius)
     {
         detail::require_finite("Sphere center", center);
-        detail::require_positive("Sphere radius", radius);
+        detail::require_length("Sphere radius", radius);
     }
 
     [[nodiscard]] constexpr const Vec3<T>& center() const noexcept { return center_; }
@@ -1847,7 +2039,7 @@ public:
 
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept
     {
-        return {center_ - Vec3<T>(radius_), center_ + Vec3<T>(radius_)};
+        return Aabb<T>{center_ - Vec3<T>(radius_), center_ + Vec3<T>(radius_)}.rounded_out();
     }
 
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
@@ -1889,22 +2081,25 @@ public:
         if (t0 > t1) std::swap(t0, t1);
 
         // The ray is inside between the roots: it enters at t0 and leaves at t1, as
-        // the gradient 2(p - center) points against d at t0 and along it at t1.
+        // the gradient 2(p - center) points against d at t0 and along it at t1. The
+        // surface points are taken from the closest approach l, at -+sqrt(disc) / a along
+        // the ray from it: exact to the sphere's own scale however far the origin is,
+        // where o + t d would carry the rounding of t (an ulp of the distance).
         out.inside_at_start = t0 < range.min && range.min < t1;
-        if (range.surrounds(t0)) out.push_back(Surface ? crossing_at(ray, t0, true) : Crossing<T>{.t = t0, .entering = true});
-        if (range.surrounds(t1)) out.push_back(Surface ? crossing_at(ray, t1, false) : Crossing<T>{.t = t1, .entering = false});
+        if (range.surrounds(t0)) out.push_back(Surface ? crossing_at(l - (root / a) * d, t0, true) : Crossing<T>{.t = t0, .entering = true});
+        if (range.surrounds(t1)) out.push_back(Surface ? crossing_at(l + (root / a) * d, t1, false) : Crossing<T>{.t = t1, .entering = false});
         return out;
     }
 
 private:
     // Sphere Private Methods
 
-    [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, bool entering) const noexcept
+    [[nodiscard]] constexpr Crossing<T> crossing_at(const Vec3<T>& radial, T t, bool entering) const noexcept
     {
         // Refine the hit point by reprojecting it onto the surface; the remaining error
         // is that of the reprojection (pbrt-v4, Sphere::InteractionFromIntersection).
-        const Vec3<T> radial = ray.at(t) - center_;
-        const Vec3<T> normal = radial * (T(1) / length(radial));
+        const T radial_length = length(radial);
+        const Vec3<T> normal = radial_length > T(0) ? radial * (T(1) / radial_length) : Vec3<T>(T(0), T(0), T(1));
         const Vec3<T> offset = normal * radius_;
         const Vec3<T> point = center_ + offset;
         const Vec3<T> error = gamma<T>(5) * abs(offset) + gamma<T>(1) * abs(point);
@@ -1943,7 +2138,7 @@ public:
 
     Transformed(S shape, const Transform<T>& to_world) : shape_(std::move(shape)), to_world_(to_world), bounds_(world_bounds())
     {
-        bounded_ = is_finite(bounds_.lo) && is_finite(bounds_.hi);
+        bounded_ = bounds_.bounded();
     }
 
     [[nodiscard]] const S& shape() const noexcept { return shape_; }
@@ -1958,23 +2153,38 @@ public:
     template <bool Surface = true>
     [[nodiscard]] Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        // Outside the bounds the ray cannot be inside the shape.
-        if (bounded_ && bounds_.clip(ray, range).empty()) return {};
+        // A ray that cannot come near the bounds cannot cross the shape.
+        if (bounded_ && !bounds_.may_cross(ray, range.min)) return {};
         // Carry the ray into the shape's coordinates. The new origin is off by the
         // rounding of that transform, which can be more than a spawned ray's offset from
         // the surface it leaves: move it forward along the ray past that error, and
         // measure t from there (pbrt-v4, Transform::ApplyInverse(Ray)).
         Ray<T> local{to_world_.inverse_point(ray.origin), to_world_.inverse_vector(ray.direction)};
         const T length2 = length_squared(local.direction);
-        const T dt = length2 > T(0) ? dot(abs(local.direction), to_world_.inverse_point_error(ray.origin)) / length2 : T(0);
+        T dt = length2 > T(0) ? dot(abs(local.direction), to_world_.inverse_point_error(ray.origin)) / length2 : T(0);
+        if (!is_finite(dt)) dt = T(0);
         local.origin += dt * local.direction;
-        Crossings<T, max_crossings> out = shape_.template crossings<Surface>(local, {range.min, range.max - dt});
-        for (std::size_t k = 0; k < out.count; ++k) out.items[k].t += dt;
+        // The end of the range is carried over two float steps wide and applied again to
+        // the world t: the result keeps every crossing before range.max however the
+        // subtraction rounds, so a query over a shorter range finds the same first one.
+        const Crossings<T, max_crossings> found =
+            shape_.template crossings<Surface>(local, {range.min, next_float_up(next_float_up(range.max - dt))});
+        Crossings<T, max_crossings> out;
+        out.inside_at_start = found.inside_at_start;
+        for (Crossing<T> c : found) {
+            c.t += dt;
+            if (c.t < range.max) out.push_back(c);
+        }
         if constexpr (!Surface) return out;
         for (std::size_t k = 0; k < out.count; ++k) {
             Crossing<T>& c = out.items[k];
-            c.error = to_world_.point_error(c.point, c.error);
-            c.point = to_world_.point(c.point);
+            // The bound also covers the rounding with which a ray spawned here is carried
+            // back into the shape's coordinates, so that it starts on the side it leaves
+            // by there too (moving its origin forward along the ray, above, does not
+            // cover that for a ray leaving at a grazing angle).
+            const Vec3<T> world = to_world_.point(c.point);
+            c.error = to_world_.point_error(c.point, c.error + to_world_.inverse_point_error(world));
+            c.point = world;
             c.normal = normalize(to_world_.normal(c.normal));
         }
         return out;
@@ -1994,9 +2204,9 @@ private:
             out.lo = component_min(out.lo, w);
             out.hi = component_max(out.hi, w);
         }
-        // Widen by the rounding of the corner transform.
+        // Widen by the rounding of the corner transform, and round outward.
         const Vec3<T> pad = gamma<T>(4) * (abs(out.lo) + abs(out.hi));
-        return {out.lo - pad, out.hi + pad};
+        return Aabb<T>{out.lo - pad, out.hi + pad}.rounded_out();
     }
 
     S shape_;
@@ -2260,6 +2470,9 @@ struct PointLight {
     {
         detail::require_finite("PointLight position", position);
         detail::require_non_negative("PointLight intensity", intensity);
+        // The photon tracer divides the power among the photons: it must be finite too.
+        if (!is_finite(power()))
+            detail::throw_invalid("PointLight intensity ", detail::describe(intensity), " is too large: its power 4 pi I overflows");
     }
 };
 
@@ -2647,6 +2860,128 @@ private:
 
 } // namespace prism
 
+// ---- prism/render/film.hpp ----
+// Film: a linear HDR RGB image of radiance values, never NaN or Inf.
+
+
+#include <atomic>
+#include <cstddef>
+#include <cstdio>
+#include <new>
+#include <string>
+#include <utility>
+#include <vector>
+
+#if __has_include(<unistd.h>)
+#include <unistd.h>
+#endif
+
+namespace prism {
+
+/// Thrown when memory for something the user asked for cannot be had: a std::bad_alloc
+/// that says what was asked for and how much memory it needs.
+class allocation_error : public std::bad_alloc {
+public:
+    explicit allocation_error(std::string message) : message_(std::move(message)) {}
+    [[nodiscard]] const char* what() const noexcept override { return message_.c_str(); }
+
+private:
+    std::string message_;
+};
+
+namespace detail {
+
+/// The machine's physical memory in bytes (0 where it cannot be told).
+[[nodiscard]] inline double physical_memory() noexcept
+{
+#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (pages > 0 && page > 0) return double(pages) * double(page);
+#endif
+    return 0;
+}
+
+/// "12.0 GiB": a byte count for messages.
+[[nodiscard]] inline std::string describe_bytes(double bytes)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+    return text;
+}
+
+} // namespace detail
+
+/// A linear HDR RGB image. Any number of threads may set distinct pixels at once.
+class Film {
+public:
+    Film(int width, int height) : width_(width), height_(height)
+    {
+        if (width <= 0 || height <= 0) detail::throw_invalid("Film size must be positive, got ", width, " x ", height);
+        const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+        const double bytes = double(count) * sizeof(Rgb<float>);
+        // Asked before allocating: an allocation past physical memory may succeed lazily
+        // and end the process later, when its pages are touched.
+        if (const double memory = detail::physical_memory(); memory > 0 && bytes > memory)
+            throw allocation_error("prism: a Film of " + std::to_string(width) + " x " + std::to_string(height) + " pixels needs " +
+                                   detail::describe_bytes(bytes) + ", more than this machine's " + detail::describe_bytes(memory));
+        try {
+            pixels_.assign(count, Rgb<float>(0.0f));
+        } catch (const std::bad_alloc&) {
+            throw allocation_error("prism: a Film of " + std::to_string(width) + " x " + std::to_string(height) + " pixels needs " +
+                                   detail::describe_bytes(bytes) + ", which could not be allocated");
+        }
+    }
+
+    Film(const Film& other) : width_(other.width_), height_(other.height_), pixels_(other.pixels_), rejected_(other.rejected()) {}
+    Film(Film&& other) noexcept
+        : width_(other.width_), height_(other.height_), pixels_(std::move(other.pixels_)), rejected_(other.rejected())
+    {
+    }
+    Film& operator=(Film other) noexcept
+    {
+        width_ = other.width_;
+        height_ = other.height_;
+        pixels_ = std::move(other.pixels_);
+        rejected_.store(other.rejected(), std::memory_order_relaxed);
+        return *this;
+    }
+
+    [[nodiscard]] int width() const noexcept { return width_; }
+    [[nodiscard]] int height() const noexcept { return height_; }
+    [[nodiscard]] const std::vector<Rgb<float>>& pixels() const noexcept { return pixels_; }
+
+    [[nodiscard]] const Rgb<float>& at(int x, int y) const noexcept
+    {
+        return pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)];
+    }
+
+    /// Store a pixel's radiance. A channel that is NaN, infinite or negative is stored
+    /// as 0 and counted, so no bad number ever reaches an image file.
+    template <Scalar T>
+    void set(int x, int y, const Rgb<T>& radiance) noexcept
+    {
+        Rgb<float> v;
+        for (int c = 0; c < 3; ++c) {
+            const float value = static_cast<float>(radiance[c]);
+            const bool good = is_finite(value) && value >= 0.0f;
+            v[c] = good ? value : 0.0f;
+            if (!good) rejected_.fetch_add(1, std::memory_order_relaxed); // render threads share the count
+        }
+        pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)] = v;
+    }
+
+    /// How many channel values were replaced by 0 because they were not finite and >= 0.
+    [[nodiscard]] std::size_t rejected() const noexcept { return rejected_.load(std::memory_order_relaxed); }
+
+private:
+    int width_;
+    int height_;
+    std::vector<Rgb<float>> pixels_;
+    std::atomic<std::size_t> rejected_{0};
+};
+
+} // namespace prism
+
 // ---- prism/scene/object.hpp ----
 // Object: a shape with a material; ObjectArray: many of one type in one scene slot.
 
@@ -2747,7 +3082,9 @@ template <class S, class M>
 #include <cmath>
 #include <limits>
 #include <thread>
+#include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace prism {
@@ -2760,6 +3097,27 @@ struct PhotonTracerConfig {
     std::uint64_t seed = 0;
     unsigned threads = 0; ///< 0 = all hardware threads
 };
+
+namespace detail {
+
+/// The photons a map may be asked for: its KdTree indexes them in 32 bits.
+inline constexpr std::size_t max_photons = std::numeric_limits<std::uint32_t>::max() - 1;
+
+inline void validate(const PhotonTracerConfig& config)
+{
+    for (const auto& [name, count] : {std::pair{"global_photons", config.global_photons}, std::pair{"caustic_photons", config.caustic_photons}}) {
+        const double bytes = double(count) * sizeof(Photon);
+        if (count > max_photons)
+            throw_invalid("PhotonTracerConfig ", name, " must be at most ", max_photons, " (a map indexes its photons in 32 bits), got ", count,
+                          " (their records alone would need ", describe_bytes(bytes), ")");
+        if (const double memory = physical_memory(); memory > 0 && bytes > memory)
+            throw allocation_error("prism: PhotonTracerConfig " + std::string(name) + " = " + std::to_string(count) + " photons need at least " +
+                                   describe_bytes(bytes) + ", more than this machine's " + describe_bytes(memory));
+    }
+    if (config.max_bounces < 0) throw_invalid("PhotonTracerConfig max_bounces must be >= 0, got ", config.max_bounces);
+}
+
+} // namespace detail
 
 struct PhotonMaps {
     PhotonMap global;
@@ -2811,6 +3169,7 @@ public:
 
     PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config) : scene_(scene), config_(config)
     {
+        validate(config);
         Pcg32 scrambles(config.seed, 0xfeed5eedULL);
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
@@ -2829,6 +3188,11 @@ public:
         std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);
+        // A light whose power is finite can still overflow here: a parallel light's
+        // irradiance times the scene's cross-section, or the sum over many lights.
+        if (!is_finite(global_power_) || !is_finite(target_power_))
+            throw_invalid("photon emission: the lights' total power overflows (", global_power_, ", ", target_power_,
+                          "); a DirectionalLight's irradiance times the scene's cross-section pi r^2 must be finite");
     }
 
     /// Photons [first, last) of the global map, appended to `out`.
@@ -3038,12 +3402,18 @@ template <class SceneT>
 {
     const detail::PhotonTracer<SceneT> tracer(scene, config);
     PhotonMaps maps;
-    maps.global = PhotonMap(detail::in_blocks(config.global_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
-        tracer.trace_global(a, b, out);
-    }));
-    maps.caustic = PhotonMap(detail::in_blocks(config.caustic_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
-        tracer.trace_caustic(a, b, out);
-    }));
+    try {
+        maps.global = PhotonMap(detail::in_blocks(config.global_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
+            tracer.trace_global(a, b, out);
+        }));
+        maps.caustic = PhotonMap(detail::in_blocks(config.caustic_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
+            tracer.trace_caustic(a, b, out);
+        }));
+    } catch (const std::bad_alloc&) {
+        throw allocation_error("prism: tracing " + std::to_string(config.global_photons) + " global and " + std::to_string(config.caustic_photons) +
+                               " caustic photons ran out of memory (each stored photon takes " + std::to_string(sizeof(Photon)) +
+                               " bytes, and a photon may be stored at every diffuse bounce)");
+    }
     return maps;
 }
 
@@ -3105,6 +3475,11 @@ public:
         validate(config.caustic, "PhotonMapper caustic");
         validate(config.global, "PhotonMapper global");
         if (config.gather_rays < 0) detail::throw_invalid("PhotonMapper gather_rays must be >= 0, got ", config.gather_rays);
+        if (config.max_depth < 0) detail::throw_invalid("PhotonMapper max_depth must be >= 0, got ", config.max_depth);
+        detail::require_non_negative("PhotonMapper min_weight", config.min_weight);
+        if (config.visibility_k > PhotonMap::max_k)
+            detail::throw_invalid("PhotonMapper visibility_k must be at most ", PhotonMap::max_k, ", got ", config.visibility_k);
+        detail::validate(config.photons);
         int lights = 0;
         scene.for_each_light([&](const auto&) { ++lights; });
         if (config.visibility_k > 0 && lights != 1)
@@ -3137,9 +3512,11 @@ public:
 private:
     static void validate(const Estimator& e, const char* name)
     {
-        if (!(e.radius > 0.0f)) detail::throw_invalid(name, " radius must be > 0, got ", e.radius);
+        if (!(e.radius > 0.0f && is_finite(e.radius))) detail::throw_invalid(name, " radius must be finite and > 0, got ", e.radius);
         if (e.k > PhotonMap::max_k) detail::throw_invalid(name, " k must be at most ", PhotonMap::max_k, ", got ", e.k);
-        if (!(e.disk > 0.0f)) detail::throw_invalid(name, " disk must be > 0, got ", e.disk);
+        if (!(e.disk > 0.0f && e.disk <= 1.0f)) detail::throw_invalid(name, " disk must be in (0, 1], got ", e.disk);
+        if (e.filter != Filter::box && e.filter != Filter::cone && e.filter != Filter::gaussian)
+            detail::throw_invalid(name, " filter must be box, cone or gaussian, got the value ", static_cast<int>(e.filter));
     }
 
     [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng) const noexcept
@@ -3670,59 +4047,6 @@ static_assert(Material<Diffuse<float>>);
 
 } // namespace prism
 
-// ---- prism/render/film.hpp ----
-// Film: a linear HDR RGB image of radiance values, never NaN or Inf.
-
-
-#include <cstddef>
-#include <vector>
-
-namespace prism {
-
-class Film {
-public:
-    Film(int width, int height) : width_(width), height_(height)
-    {
-        if (width <= 0 || height <= 0) detail::throw_invalid("Film size must be positive, got ", width, " x ", height);
-        pixels_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), Rgb<float>(0.0f));
-    }
-
-    [[nodiscard]] int width() const noexcept { return width_; }
-    [[nodiscard]] int height() const noexcept { return height_; }
-    [[nodiscard]] const std::vector<Rgb<float>>& pixels() const noexcept { return pixels_; }
-
-    [[nodiscard]] const Rgb<float>& at(int x, int y) const noexcept
-    {
-        return pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)];
-    }
-
-    /// Store a pixel's radiance. A channel that is NaN, infinite or negative is stored
-    /// as 0 and counted, so no bad number ever reaches an image file.
-    template <Scalar T>
-    void set(int x, int y, const Rgb<T>& radiance) noexcept
-    {
-        Rgb<float> v;
-        for (int c = 0; c < 3; ++c) {
-            const float value = static_cast<float>(radiance[c]);
-            const bool good = is_finite(value) && value >= 0.0f;
-            v[c] = good ? value : 0.0f;
-            rejected_ += good ? 0 : 1;
-        }
-        pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)] = v;
-    }
-
-    /// How many channel values were replaced by 0 because they were not finite and >= 0.
-    [[nodiscard]] std::size_t rejected() const noexcept { return rejected_; }
-
-private:
-    int width_;
-    int height_;
-    std::vector<Rgb<float>> pixels_;
-    std::size_t rejected_ = 0;
-};
-
-} // namespace prism
-
 // ---- prism/scene/camera.hpp ----
 // Camera: a pinhole camera as a plain struct, and the rays it shoots.
 
@@ -3764,18 +4088,30 @@ struct Camera {
         detail::require_finite("Camera fov", fov);
         if (position == look_at) detail::throw_invalid("Camera position and look_at must differ, both are ", detail::describe(position));
         if (!(fov > T(0) && fov < T(180))) detail::throw_invalid("Camera fov must be in (0, 180) degrees, got ", fov);
-        const Vec3<T> forward = normalize(look_at - position);
-        const Vec3<T> side = cross(forward, normalize(up));
+        const Vec3<T> side = cross(forward(), unit(up));
         if (!(length(side) > T(1e-6))) detail::throw_invalid("Camera up ", detail::describe(up), " is parallel to the view direction");
     }
+
+    /// The unit view direction, from position to look_at. Found without overflow or
+    /// underflow for points 3e38 or 1e-44 apart: the difference is halved where it would
+    /// overflow and scaled by its largest component before normalising.
+    [[nodiscard]] Vec3<T> forward() const noexcept
+    {
+        Vec3<T> d = look_at - position;
+        if (!is_finite(d)) d = T(0.5) * look_at - T(0.5) * position;
+        return unit(d);
+    }
+
+    /// v / |v| for any non-zero finite v, however small or large.
+    [[nodiscard]] static Vec3<T> unit(const Vec3<T>& v) noexcept { return normalize(v / max_component(abs(v))); }
 
     /// The rays for a width x height image; validates the camera and the size.
     [[nodiscard]] CameraRays<T> rays(int width, int height) const
     {
         validate();
         if (width <= 0 || height <= 0) detail::throw_invalid("image size must be positive, got ", width, " x ", height);
-        const Vec3<T> forward = normalize(look_at - position);
-        const Vec3<T> right = normalize(cross(forward, up));
+        const Vec3<T> forward = this->forward();
+        const Vec3<T> right = normalize(cross(forward, unit(up)));
         const Vec3<T> true_up = cross(right, forward);
         const T half_width = std::tan(T(0.5) * fov * pi<T> / T(180));
         const T half_height = half_width * T(height) / T(width);
@@ -3853,20 +4189,23 @@ template <Integrator I>
     const CameraRays<T> rays = camera.rays(config.width, config.height);
     Film film(config.width, config.height);
 
-    const int tiles_x = (config.width + config.tile_size - 1) / config.tile_size;
-    const int tiles_y = (config.height + config.tile_size - 1) / config.tile_size;
-    const int tile_count = tiles_x * tiles_y;
-    std::atomic<int> next_tile{0};
-    std::atomic<int> tiles_done{0};
+    // Tile arithmetic in 64 bits: a tile_size of INT_MAX, or 65536^2 one-pixel tiles,
+    // overflows int.
+    const std::int64_t tile = config.tile_size;
+    const std::int64_t tiles_x = (std::int64_t(config.width) - 1) / tile + 1;
+    const std::int64_t tiles_y = (std::int64_t(config.height) - 1) / tile + 1;
+    const std::int64_t tile_count = tiles_x * tiles_y;
+    std::atomic<std::int64_t> next_tile{0};
+    std::atomic<std::int64_t> tiles_done{0};
     std::mutex mutex;
     std::condition_variable finished;
     unsigned running = 0;
 
     const auto work = [&] {
-        for (int tile = next_tile++; tile < tile_count; tile = next_tile++) {
-            const int x0 = (tile % tiles_x) * config.tile_size, y0 = (tile / tiles_x) * config.tile_size;
-            const int x1 = std::min(x0 + config.tile_size, config.width);
-            const int y1 = std::min(y0 + config.tile_size, config.height);
+        for (std::int64_t t = next_tile++; t < tile_count; t = next_tile++) {
+            const auto x0 = static_cast<int>((t % tiles_x) * tile), y0 = static_cast<int>((t / tiles_x) * tile);
+            const auto x1 = static_cast<int>(std::min<std::int64_t>(x0 + tile, config.width));
+            const auto y1 = static_cast<int>(std::min<std::int64_t>(y0 + tile, config.height));
             for (int y = y0; y < y1; ++y)
                 for (int x = x0; x < x1; ++x) {
                     const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + x;
@@ -3885,7 +4224,7 @@ template <Integrator I>
     };
 
     unsigned threads = config.threads != 0 ? config.threads : std::max(1u, std::thread::hardware_concurrency());
-    threads = std::min<unsigned>(threads, static_cast<unsigned>(tile_count));
+    threads = static_cast<unsigned>(std::min<std::int64_t>(threads, tile_count));
     running = threads;
     std::vector<std::thread> workers;
     workers.reserve(threads);
@@ -3899,7 +4238,7 @@ template <Integrator I>
         while (!finished.wait_for(lock, std::chrono::milliseconds(250), [&] { return running == 0; })) {
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             if (config.progress && seconds > 1.0) {
-                std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", 100 * tiles_done.load() / tile_count, seconds);
+                std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", static_cast<int>(100 * tiles_done.load() / tile_count), seconds);
                 reported = true;
             }
         }
@@ -4055,11 +4394,11 @@ private:
             if (object.bounded) cluster_ = {component_min(cluster_.lo, object.shape.bounds().lo), component_max(cluster_.hi, object.shape.bounds().hi)};
     }
 
-    /// A ray starting inside the cluster's box (every secondary ray in a closed room)
-    /// needs no slab test.
+    /// Whether the ray may come near the cluster's box (conservatively, and whatever the
+    /// range's end: Aabb::may_cross).
     [[nodiscard]] bool reaches_cluster(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        return cluster_.contains(ray.origin) || !cluster_.clip(ray, range).empty();
+        return !cluster_.empty() && cluster_.may_cross(ray, range.min);
     }
 
     /// Whether the object needs testing: it is unbounded, or the ray comes near the cluster.
@@ -4078,7 +4417,9 @@ private:
             const auto crossings = objects[k].shape.template crossings<false>(ray, range);
             if (crossings.empty()) continue;
             // Ending the range just past the crossing keeps every crossing before it, and
-            // so the same first one, while the surface pass refines nothing beyond it.
+            // so the same first one, while the surface pass refines nothing beyond it:
+            // no shape's answer up to a t depends on where its range ends (shapes cull by
+            // Aabb::may_cross, which ignores the end).
             nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(crossings.front().t)}};
             range.max = crossings.front().t;
         }
@@ -4154,9 +4495,10 @@ Scene(LightList, Slots...) -> Scene<LightList, Slots...>;
 // linear floats).
 //
 // Opt-in: prism/prism.hpp does not include this header, since it needs stb_image_write
-// and stb_image (Debian: libstb-dev). A file is written whole or not at all: bytes go to a temporary
-// file beside the target, which is renamed over it only once complete; any failure
-// throws std::runtime_error naming the path and the reason.
+// and stb_image (Debian: libstb-dev). A regular file is written whole or not at all:
+// bytes go to a temporary file beside the target, which is renamed over it only once
+// complete; a device or FIFO is written through, never replaced; any failure throws
+// std::runtime_error naming the path and the reason.
 
 
 #if !defined(INCLUDE_STB_IMAGE_WRITE_H)
@@ -4199,6 +4541,7 @@ Scene(LightList, Slots...) -> Scene<LightList, Slots...>;
 #undef PRISM_DEFINED_STBI_IMPLEMENTATION
 #endif
 
+#include <atomic>
 #include <bit>
 #include <cerrno>
 #include <cmath>
@@ -4210,6 +4553,7 @@ Scene(LightList, Slots...) -> Scene<LightList, Slots...>;
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace prism {
@@ -4221,13 +4565,43 @@ namespace detail {
     throw std::runtime_error("prism: cannot write '" + path.string() + "': " + reason);
 }
 
-/// Write bytes to path whole or not at all.
+/// Write bytes to path: whole or not at all where the path is a regular file (or
+/// nothing yet). Bytes go to a new temporary file beside it (created exclusively, never
+/// through an existing name), which is renamed over the target only once complete. A
+/// symbolic link is followed to what it names, so the link stays. Anything that is not
+/// a regular file (a device such as /dev/null, a FIFO) is written through, never
+/// replaced: renaming over it would turn it into a plain file.
 inline void write_file_atomically(const std::filesystem::path& path, std::span<const unsigned char> bytes)
 {
-    std::filesystem::path temporary = path;
-    temporary += ".prism-partial";
-    std::FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (file == nullptr) throw_io(path, std::strerror(errno));
+    namespace fs = std::filesystem;
+    std::error_code error;
+    fs::path target = path;
+    if (fs::is_symlink(fs::symlink_status(path, error))) {
+        target = fs::weakly_canonical(path, error);
+        if (error) throw_io(path, "cannot follow the symbolic link: " + error.message());
+    }
+    const fs::file_status status = fs::status(target, error);
+    if (status.type() == fs::file_type::directory) throw_io(path, "it is a directory");
+    const bool regular_or_new = status.type() == fs::file_type::regular || status.type() == fs::file_type::not_found;
+    if (!regular_or_new) {
+        std::FILE* file = std::fopen(target.c_str(), "wb");
+        if (file == nullptr) throw_io(path, std::strerror(errno));
+        const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+        const int write_errno = errno;
+        if (std::fclose(file) != 0 || !written) throw_io(path, std::strerror(written ? errno : write_errno));
+        return;
+    }
+    // A temporary name of our own: "x" opens only a file that did not exist.
+    static std::atomic<unsigned> serial{0};
+    fs::path temporary;
+    std::FILE* file = nullptr;
+    for (int attempt = 0; attempt < 100 && file == nullptr; ++attempt) {
+        temporary = target;
+        temporary += ".prism-partial-" + std::to_string(serial++) + "-" + std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()) % 100000);
+        file = std::fopen(temporary.c_str(), "wbx");
+        if (file == nullptr && errno != EEXIST) throw_io(path, std::strerror(errno));
+    }
+    if (file == nullptr) throw_io(path, "no free temporary name beside it");
     const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
     const int write_errno = errno;
     const bool closed = std::fclose(file) == 0;
@@ -4235,8 +4609,7 @@ inline void write_file_atomically(const std::filesystem::path& path, std::span<c
         std::remove(temporary.c_str());
         throw_io(path, std::strerror(written ? errno : write_errno));
     }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
+    fs::rename(temporary, target, error);
     if (error) {
         std::remove(temporary.c_str());
         throw_io(path, error.message());
@@ -4335,8 +4708,19 @@ inline void write_image(const Film& film, const std::filesystem::path& path)
     double scale = 0;
     in >> magic >> width >> height >> scale;
     in.get();
-    if (!in || magic != "PF" || width <= 0 || height <= 0 || scale == 0)
+    if (!in || magic != "PF" || width <= 0 || height <= 0 || scale == 0 || !std::isfinite(scale))
         throw std::runtime_error("prism: cannot read '" + path.string() + "': not an RGB PFM file");
+    // The header is checked against the file's size before anything is allocated: 20
+    // bytes must not make a reader ask for gigabytes.
+    const std::streamoff header_end = in.tellg();
+    in.seekg(0, std::ios::end);
+    const std::streamoff file_size = in.tellg();
+    in.seekg(header_end);
+    const double needed = 12.0 * double(width) * double(height);
+    if (header_end < 0 || file_size < 0 || double(file_size - header_end) < needed)
+        throw std::runtime_error("prism: cannot read '" + path.string() + "': file is truncated (the header says " + std::to_string(width) +
+                                 " x " + std::to_string(height) + " pixels, " + std::to_string(static_cast<long long>(needed)) +
+                                 " bytes, but " + std::to_string(static_cast<long long>(file_size - header_end)) + " follow it)");
     Film film(width, height);
     const bool little = scale < 0;
     std::vector<unsigned char> raw(static_cast<std::size_t>(width) * 12);

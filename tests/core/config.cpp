@@ -22,3 +22,16 @@ TEST_CASE("prism works when GLM was included first with intrinsics and without G
     CHECK(c[1].t == 6.0f);
     CHECK(prism::fresnel_dielectric(1.0f, 1.5f) == doctest::Approx(0.04));
 }
+
+TEST_CASE("PRISM_ASSERT is active where the build asks for it")
+{
+    // tools/test.sh builds its sanitizer runs with -DPRISM_ASSERTIONS=ON, which defines
+    // PRISM_ENABLE_ASSERTIONS and PRISM_EXPECT_ASSERTIONS: the checks must then be live.
+#if defined(PRISM_EXPECT_ASSERTIONS)
+    CHECK(PRISM_ASSERTIONS_ENABLED == 1);
+#elif defined(NDEBUG)
+    CHECK(PRISM_ASSERTIONS_ENABLED == 0);
+#else
+    CHECK(PRISM_ASSERTIONS_ENABLED == 1);
+#endif
+}

@@ -38,11 +38,15 @@ namespace prism::detail {
 
 } // namespace prism::detail
 
-/// Precondition check: compiled out with NDEBUG; in a constant expression a failed
-/// check is a compile error (assert_fail is not constexpr).
-#ifdef NDEBUG
+/// Precondition check: compiled out with NDEBUG unless PRISM_ENABLE_ASSERTIONS is
+/// defined (an optimised build that still checks, as the test suite's sanitizer and
+/// thread-sanitizer runs are); in a constant expression a failed check is a compile error
+/// (assert_fail is not constexpr). PRISM_ASSERTIONS_ENABLED says which (1 or 0).
+#if defined(NDEBUG) && !defined(PRISM_ENABLE_ASSERTIONS)
+#define PRISM_ASSERTIONS_ENABLED 0
 #define PRISM_ASSERT(condition) ((void)0)
 #else
+#define PRISM_ASSERTIONS_ENABLED 1
 #define PRISM_ASSERT(condition) \
     ((condition) ? (void)0 : ::prism::detail::assert_fail(#condition, __FILE__, __LINE__))
 #endif
