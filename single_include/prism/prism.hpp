@@ -811,19 +811,28 @@ struct Aabb {
         return out;
     }
 
-    /// Whether the ray may cross a shape inside this (bounded) box at t > t_min: the
-    /// conservative test with which a shape skips its own work. A shape's crossings are
-    /// computed with rounding that grows with the ray origin's distance from it, so a
-    /// ray that just misses the exact shape may still be reported to cross it; the box is
-    /// therefore widened for each ray by gamma(16) of that distance (and of its own
-    /// size), and the answer never depends on where the range ends, so that asking again
-    /// over a shorter range (a scene's surface query) cannot cull what was found before.
-    [[nodiscard]] constexpr bool may_cross(const Ray<T>& ray, T t_min) const noexcept
+    /// Whether the ray meets the box at some t >= t_min: the test with which a bounded
+    /// shape skips its own work. It ignores where the ray's range ends, so asking a shape
+    /// again over a shorter range (a scene's surface query) cannot cull what it found
+    /// before; and, as clip(), it never reports a miss for a ray that touches the box.
+    [[nodiscard]] constexpr bool reached_after(const Ray<T>& ray, T t_min) const noexcept
     {
+        return !clip(ray, {t_min, infinity<T>}).empty();
+    }
+
+    /// Whether a shape inside this box may report a crossing within `range`: the test
+    /// with which a scene skips objects. A shape's crossings are computed with rounding
+    /// that grows with the ray origin's distance from it, so a ray that just misses the
+    /// exact shape may still be reported to cross it, and the scene must then still ask
+    /// it: the box is widened for each ray by gamma(16) of that distance (and of its own
+    /// size).
+    [[nodiscard]] constexpr bool may_cross(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        if (range.min <= T(0) && range.max >= T(0) && contains(ray.origin)) return true; // most secondary rays in a closed scene
         const Vec3<T> half = T(0.5) * (hi - lo);
         const T pad = gamma<T>(16) * (max_component(abs(ray.origin - (lo + half))) + max_component(half)) + std::numeric_limits<T>::min();
         const Aabb wide{lo - Vec3<T>(pad), hi + Vec3<T>(pad)};
-        return wide.contains(ray.origin) || !wide.clip(ray, {t_min, infinity<T>}).empty();
+        return !wide.clip(ray, range).empty();
     }
 
     /// The part of `range` in which the ray is inside the box (empty if none).
@@ -838,10 +847,12 @@ struct Aabb {
                 if (o < lo[axis] || o > hi[axis]) return {};
                 continue;
             }
-            // Divided, not multiplied by 1 / d: for a denormal d that reciprocal is
-            // infinite, and 0 * inf would be NaN where 0 / d is 0.
-            T t_near = (lo[axis] - o) / d;
-            T t_far = (hi[axis] - o) / d;
+            // 1 / d is clamped to the finite range: for a denormal d it would be
+            // infinite, and 0 * inf is NaN where 0 / d is 0 (a ray starting on a face).
+            constexpr T largest = std::numeric_limits<T>::max();
+            const T inv = clamp(T(1) / d, -largest, largest);
+            T t_near = (lo[axis] - o) * inv;
+            T t_far = (hi[axis] - o) * inv;
             if (t_near > t_far) std::swap(t_near, t_far);
             t_far *= T(1) + T(2) * gamma<T>(3);
             if (t_near > range.min) range.min = t_near;
@@ -1283,7 +1294,7 @@ public:
     {
         Crossings<T, max_crossings> out;
         // A ray that cannot come near the bounds cannot cross the result.
-        if (bounded_ && !bounds_.may_cross(ray, range.min)) return out;
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return out;
 
         const auto ca = a_.template crossings<Surface>(ray, range);
         const auto cb = b_.template crossings<Surface>(ray, range);
@@ -1665,6 +1676,10 @@ public:
         if (!variable && k.j == 0) detail::throw_invalid("Quadric coefficients are all zero");
         if (!variable) detail::throw_invalid("Quadric has no x, y or z term (only the constant ", k.j, ")");
         normalise();
+        // The quadric's own size, squared: |j| over its largest quadratic coefficient
+        // (0 for a cone, whose apex has no size).
+        const T quadratic = std::max({k_.a < T(0) ? -k_.a : k_.a, k_.e < T(0) ? -k_.e : k_.e, k_.h < T(0) ? -k_.h : k_.h});
+        near2_ = quadratic > T(0) ? T(64) * (k_.j < T(0) ? -k_.j : k_.j) / quadratic : T(0);
         bounds_ = ellipsoid_bounds();
         bounded_ = bounds_.bounded();
     }
@@ -1817,7 +1832,7 @@ public:
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         // An ellipsoid: a ray that cannot come near its box cannot cross it.
-        if (bounded_ && !bounds_.may_cross(ray, range.min)) return {};
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return {};
         // Compute quadratic coefficients: F(o + t d) = A t^2 + 2 B t + C (errata 1: h dz^2),
         // in the quadric's own coordinates.
         const Vec3<T> o = ray.origin - origin_;
@@ -1833,13 +1848,20 @@ public:
         // would lose almost every hit). So it is computed from the ray's closest approach
         // to the quadric's origin, m = o + t_m d, where the coefficients are of the
         // quadric's own size, and the surface points are found from there too.
-        const T dd = dot(d, d);
-        const T t_m = -dot(o, d) / dd;
-        const bool moved = is_finite(t_m);
-        const Vec3<T> m = moved ? o + t_m * d : o;
-        const Vec3<T> g_m = half_gradient(m);
-        const T B_m = dot(d, g_m);
-        const T C_m = dot(m, g_m + linear()) + k_.j;
+        // (An origin within 8 of the quadric's own sizes of its origin stays: nothing to gain.)
+        T t_m = T(0), B_m = B, C_m = C;
+        Vec3<T> m = o;
+        if (dot(o, o) > near2_) {
+            t_m = -dot(o, d) / dot(d, d);
+            if (is_finite(t_m)) {
+                m = o + t_m * d;
+                const Vec3<T> g_m = half_gradient(m);
+                B_m = dot(d, g_m);
+                C_m = dot(m, g_m + linear()) + k_.j;
+            } else {
+                t_m = T(0);
+            }
+        }
         const T disc = difference_of_products(B_m, B_m, A, C_m);
 
         Crossings<T, 2> out;
@@ -2003,6 +2025,7 @@ private:
     Coefficients given_; ///< as the user wrote them
     Vec3<T> origin_{};
     Aabb<T> bounds_;
+    T near2_ = T(0); ///< origins within this squared distance of origin_ are solved from where they are
     bool bounded_ = false;
 };
 
@@ -2154,7 +2177,7 @@ public:
     [[nodiscard]] Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         // A ray that cannot come near the bounds cannot cross the shape.
-        if (bounded_ && !bounds_.may_cross(ray, range.min)) return {};
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return {};
         // Carry the ray into the shape's coordinates. The new origin is off by the
         // rounding of that transform, which can be more than a spawned ray's offset from
         // the surface it leaves: move it forward along the ray past that error, and
@@ -2167,14 +2190,13 @@ public:
         // The end of the range is carried over two float steps wide and applied again to
         // the world t: the result keeps every crossing before range.max however the
         // subtraction rounds, so a query over a shorter range finds the same first one.
-        const Crossings<T, max_crossings> found =
-            shape_.template crossings<Surface>(local, {range.min, next_float_up(next_float_up(range.max - dt))});
-        Crossings<T, max_crossings> out;
-        out.inside_at_start = found.inside_at_start;
-        for (Crossing<T> c : found) {
-            c.t += dt;
-            if (c.t < range.max) out.push_back(c);
+        Crossings<T, max_crossings> out = shape_.template crossings<Surface>(local, {range.min, next_float_up(next_float_up(range.max - dt))});
+        std::size_t kept = 0;
+        for (std::size_t k = 0; k < out.count; ++k) {
+            out.items[k].t += dt;
+            if (out.items[k].t < range.max) out.items[kept++] = out.items[k];
         }
+        out.count = kept;
         if constexpr (!Surface) return out;
         for (std::size_t k = 0; k < out.count; ++k) {
             Crossing<T>& c = out.items[k];
@@ -4319,6 +4341,7 @@ public:
     {
         // One box around every bounded object: a ray that misses it skips them all.
         std::apply([this](const auto&... slot) { (add_to_cluster(slot), ...); }, slots);
+        bounded_objects_ = !cluster_.empty();
     }
 
     constexpr void validate() const
@@ -4376,6 +4399,7 @@ public:
 
 private:
     Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
+    bool bounded_objects_ = false;
 
     // Scene Private Methods
 
@@ -4394,11 +4418,12 @@ private:
             if (object.bounded) cluster_ = {component_min(cluster_.lo, object.shape.bounds().lo), component_max(cluster_.hi, object.shape.bounds().hi)};
     }
 
-    /// Whether the ray may come near the cluster's box (conservatively, and whatever the
-    /// range's end: Aabb::may_cross).
+    /// Whether the ray may come near the cluster's box within the range (conservatively:
+    /// Aabb::may_cross). Only the first pass of a query culls by it, so it may use the
+    /// range's end.
     [[nodiscard]] bool reaches_cluster(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        return !cluster_.empty() && cluster_.may_cross(ray, range.min);
+        return bounded_objects_ && cluster_.may_cross(ray, range);
     }
 
     /// Whether the object needs testing: it is unbounded, or the ray comes near the cluster.
@@ -4419,7 +4444,7 @@ private:
             // Ending the range just past the crossing keeps every crossing before it, and
             // so the same first one, while the surface pass refines nothing beyond it:
             // no shape's answer up to a t depends on where its range ends (shapes cull by
-            // Aabb::may_cross, which ignores the end).
+            // Aabb::reached_after, which ignores the end).
             nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(crossings.front().t)}};
             range.max = crossings.front().t;
         }

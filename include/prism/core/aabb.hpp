@@ -38,19 +38,28 @@ struct Aabb {
         return out;
     }
 
-    /// Whether the ray may cross a shape inside this (bounded) box at t > t_min: the
-    /// conservative test with which a shape skips its own work. A shape's crossings are
-    /// computed with rounding that grows with the ray origin's distance from it, so a
-    /// ray that just misses the exact shape may still be reported to cross it; the box is
-    /// therefore widened for each ray by gamma(16) of that distance (and of its own
-    /// size), and the answer never depends on where the range ends, so that asking again
-    /// over a shorter range (a scene's surface query) cannot cull what was found before.
-    [[nodiscard]] constexpr bool may_cross(const Ray<T>& ray, T t_min) const noexcept
+    /// Whether the ray meets the box at some t >= t_min: the test with which a bounded
+    /// shape skips its own work. It ignores where the ray's range ends, so asking a shape
+    /// again over a shorter range (a scene's surface query) cannot cull what it found
+    /// before; and, as clip(), it never reports a miss for a ray that touches the box.
+    [[nodiscard]] constexpr bool reached_after(const Ray<T>& ray, T t_min) const noexcept
     {
+        return !clip(ray, {t_min, infinity<T>}).empty();
+    }
+
+    /// Whether a shape inside this box may report a crossing within `range`: the test
+    /// with which a scene skips objects. A shape's crossings are computed with rounding
+    /// that grows with the ray origin's distance from it, so a ray that just misses the
+    /// exact shape may still be reported to cross it, and the scene must then still ask
+    /// it: the box is widened for each ray by gamma(16) of that distance (and of its own
+    /// size).
+    [[nodiscard]] constexpr bool may_cross(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        if (range.min <= T(0) && range.max >= T(0) && contains(ray.origin)) return true; // most secondary rays in a closed scene
         const Vec3<T> half = T(0.5) * (hi - lo);
         const T pad = gamma<T>(16) * (max_component(abs(ray.origin - (lo + half))) + max_component(half)) + std::numeric_limits<T>::min();
         const Aabb wide{lo - Vec3<T>(pad), hi + Vec3<T>(pad)};
-        return wide.contains(ray.origin) || !wide.clip(ray, {t_min, infinity<T>}).empty();
+        return !wide.clip(ray, range).empty();
     }
 
     /// The part of `range` in which the ray is inside the box (empty if none).
@@ -65,10 +74,12 @@ struct Aabb {
                 if (o < lo[axis] || o > hi[axis]) return {};
                 continue;
             }
-            // Divided, not multiplied by 1 / d: for a denormal d that reciprocal is
-            // infinite, and 0 * inf would be NaN where 0 / d is 0.
-            T t_near = (lo[axis] - o) / d;
-            T t_far = (hi[axis] - o) / d;
+            // 1 / d is clamped to the finite range: for a denormal d it would be
+            // infinite, and 0 * inf is NaN where 0 / d is 0 (a ray starting on a face).
+            constexpr T largest = std::numeric_limits<T>::max();
+            const T inv = clamp(T(1) / d, -largest, largest);
+            T t_near = (lo[axis] - o) * inv;
+            T t_far = (hi[axis] - o) * inv;
             if (t_near > t_far) std::swap(t_near, t_far);
             t_far *= T(1) + T(2) * gamma<T>(3);
             if (t_near > range.min) range.min = t_near;

@@ -64,7 +64,7 @@ public:
     {
         Crossings<T, max_crossings> out;
         // A ray that cannot come near the bounds cannot cross the result.
-        if (bounded_ && !bounds_.may_cross(ray, range.min)) return out;
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return out;
 
         const auto ca = a_.template crossings<Surface>(ray, range);
         const auto cb = b_.template crossings<Surface>(ray, range);

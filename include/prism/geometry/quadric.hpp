@@ -52,6 +52,10 @@ public:
         if (!variable && k.j == 0) detail::throw_invalid("Quadric coefficients are all zero");
         if (!variable) detail::throw_invalid("Quadric has no x, y or z term (only the constant ", k.j, ")");
         normalise();
+        // The quadric's own size, squared: |j| over its largest quadratic coefficient
+        // (0 for a cone, whose apex has no size).
+        const T quadratic = std::max({k_.a < T(0) ? -k_.a : k_.a, k_.e < T(0) ? -k_.e : k_.e, k_.h < T(0) ? -k_.h : k_.h});
+        near2_ = quadratic > T(0) ? T(64) * (k_.j < T(0) ? -k_.j : k_.j) / quadratic : T(0);
         bounds_ = ellipsoid_bounds();
         bounded_ = bounds_.bounded();
     }
@@ -204,7 +208,7 @@ public:
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         // An ellipsoid: a ray that cannot come near its box cannot cross it.
-        if (bounded_ && !bounds_.may_cross(ray, range.min)) return {};
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return {};
         // Compute quadratic coefficients: F(o + t d) = A t^2 + 2 B t + C (errata 1: h dz^2),
         // in the quadric's own coordinates.
         const Vec3<T> o = ray.origin - origin_;
@@ -220,13 +224,20 @@ public:
         // would lose almost every hit). So it is computed from the ray's closest approach
         // to the quadric's origin, m = o + t_m d, where the coefficients are of the
         // quadric's own size, and the surface points are found from there too.
-        const T dd = dot(d, d);
-        const T t_m = -dot(o, d) / dd;
-        const bool moved = is_finite(t_m);
-        const Vec3<T> m = moved ? o + t_m * d : o;
-        const Vec3<T> g_m = half_gradient(m);
-        const T B_m = dot(d, g_m);
-        const T C_m = dot(m, g_m + linear()) + k_.j;
+        // (An origin within 8 of the quadric's own sizes of its origin stays: nothing to gain.)
+        T t_m = T(0), B_m = B, C_m = C;
+        Vec3<T> m = o;
+        if (dot(o, o) > near2_) {
+            t_m = -dot(o, d) / dot(d, d);
+            if (is_finite(t_m)) {
+                m = o + t_m * d;
+                const Vec3<T> g_m = half_gradient(m);
+                B_m = dot(d, g_m);
+                C_m = dot(m, g_m + linear()) + k_.j;
+            } else {
+                t_m = T(0);
+            }
+        }
         const T disc = difference_of_products(B_m, B_m, A, C_m);
 
         Crossings<T, 2> out;
@@ -390,6 +401,7 @@ private:
     Coefficients given_; ///< as the user wrote them
     Vec3<T> origin_{};
     Aabb<T> bounds_;
+    T near2_ = T(0); ///< origins within this squared distance of origin_ are solved from where they are
     bool bounded_ = false;
 };
 

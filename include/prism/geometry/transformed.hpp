@@ -40,7 +40,7 @@ public:
     [[nodiscard]] Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         // A ray that cannot come near the bounds cannot cross the shape.
-        if (bounded_ && !bounds_.may_cross(ray, range.min)) return {};
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return {};
         // Carry the ray into the shape's coordinates. The new origin is off by the
         // rounding of that transform, which can be more than a spawned ray's offset from
         // the surface it leaves: move it forward along the ray past that error, and
@@ -53,14 +53,13 @@ public:
         // The end of the range is carried over two float steps wide and applied again to
         // the world t: the result keeps every crossing before range.max however the
         // subtraction rounds, so a query over a shorter range finds the same first one.
-        const Crossings<T, max_crossings> found =
-            shape_.template crossings<Surface>(local, {range.min, next_float_up(next_float_up(range.max - dt))});
-        Crossings<T, max_crossings> out;
-        out.inside_at_start = found.inside_at_start;
-        for (Crossing<T> c : found) {
-            c.t += dt;
-            if (c.t < range.max) out.push_back(c);
+        Crossings<T, max_crossings> out = shape_.template crossings<Surface>(local, {range.min, next_float_up(next_float_up(range.max - dt))});
+        std::size_t kept = 0;
+        for (std::size_t k = 0; k < out.count; ++k) {
+            out.items[k].t += dt;
+            if (out.items[k].t < range.max) out.items[kept++] = out.items[k];
         }
+        out.count = kept;
         if constexpr (!Surface) return out;
         for (std::size_t k = 0; k < out.count; ++k) {
             Crossing<T>& c = out.items[k];

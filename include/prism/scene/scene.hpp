@@ -58,6 +58,7 @@ public:
     {
         // One box around every bounded object: a ray that misses it skips them all.
         std::apply([this](const auto&... slot) { (add_to_cluster(slot), ...); }, slots);
+        bounded_objects_ = !cluster_.empty();
     }
 
     constexpr void validate() const
@@ -115,6 +116,7 @@ public:
 
 private:
     Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
+    bool bounded_objects_ = false;
 
     // Scene Private Methods
 
@@ -133,11 +135,12 @@ private:
             if (object.bounded) cluster_ = {component_min(cluster_.lo, object.shape.bounds().lo), component_max(cluster_.hi, object.shape.bounds().hi)};
     }
 
-    /// Whether the ray may come near the cluster's box (conservatively, and whatever the
-    /// range's end: Aabb::may_cross).
+    /// Whether the ray may come near the cluster's box within the range (conservatively:
+    /// Aabb::may_cross). Only the first pass of a query culls by it, so it may use the
+    /// range's end.
     [[nodiscard]] bool reaches_cluster(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        return !cluster_.empty() && cluster_.may_cross(ray, range.min);
+        return bounded_objects_ && cluster_.may_cross(ray, range);
     }
 
     /// Whether the object needs testing: it is unbounded, or the ray comes near the cluster.
@@ -158,7 +161,7 @@ private:
             // Ending the range just past the crossing keeps every crossing before it, and
             // so the same first one, while the surface pass refines nothing beyond it:
             // no shape's answer up to a t depends on where its range ends (shapes cull by
-            // Aabb::may_cross, which ignores the end).
+            // Aabb::reached_after, which ignores the end).
             nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(crossings.front().t)}};
             range.max = crossings.front().t;
         }
