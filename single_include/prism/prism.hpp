@@ -4376,7 +4376,9 @@ public:
     [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
     {
         Rgb<T> tr{T(1)};
-        const bool near_cluster = reaches_cluster(ray, {T(0), t_max});
+        // Unwidened: a shadow ray needs no spurious crossing a far-off shape might report
+        // (culling it can only let light through where rounding alone would block it).
+        const bool near_cluster = bounded_objects_ && (cluster_.contains(ray.origin) || !cluster_.clip(ray, {T(0), t_max}).empty());
         const bool open = [&]<std::size_t... I>(std::index_sequence<I...>) {
             return (transmittance_of_slot<I, GlassTransmits>(ray, t_max, tr, near_cluster) && ...);
         }(std::index_sequence_for<Slots...>{});
