@@ -52,8 +52,8 @@ start=$(date +%s)
 release="$root/build/release"
 if step release-build bash -c "cmake -S '$root' -B '$release' -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_BENCH=OFF &&
                                 cmake --build '$release' -j $jobs"; then
-  ctest --test-dir "$release" --output-on-failure -j "$jobs" >"$logs/release-ctest.log" 2>&1 ||
-    grep -A 30 -E "\*\*\*Failed|Exception|FAILED" "$logs/release-ctest.log" | head -n 80
+  ctest --test-dir "$release" -j "$jobs" >"$logs/release-ctest.log" 2>&1 ||
+    ctest --test-dir "$release" --rerun-failed --output-on-failure 2>&1 | tail -n 80
   count release "$logs/release-ctest.log"
 else
   fail release
@@ -64,8 +64,8 @@ sanitize="$root/build/sanitize"
 if step sanitize-build bash -c "cmake -S '$root' -B '$sanitize' -G Ninja -DCMAKE_BUILD_TYPE=Debug -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON \
       -DCMAKE_CXX_FLAGS='-O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer' &&
       cmake --build '$sanitize' -j $jobs"; then
-  ctest --test-dir "$sanitize" --output-on-failure -j "$jobs" >"$logs/sanitize-ctest.log" 2>&1 ||
-    grep -A 30 -E "\*\*\*Failed|Exception|FAILED|ERROR: AddressSanitizer|runtime error" "$logs/sanitize-ctest.log" | head -n 80
+  ctest --test-dir "$sanitize" -j "$jobs" >"$logs/sanitize-ctest.log" 2>&1 ||
+    ctest --test-dir "$sanitize" --rerun-failed --output-on-failure 2>&1 | tail -n 80
   count sanitize "$logs/sanitize-ctest.log"
   step sanitize-render "$sanitize/examples/cornell" --width 64 --height 64 --spp 2 --out "$sanitize/gallery" || fail sanitize-render
 else

@@ -184,19 +184,14 @@ public:
     /// F(p), with the coefficients as given.
     [[nodiscard]] constexpr T evaluate(const Vec3<T>& p) const noexcept
     {
-        const Coefficients& k = given_;
         const Vec3<T> v = p - origin_;
-        const Vec3<T> q3v{k.a * v.x + k.b * v.y + k.c * v.z, k.b * v.x + k.e * v.y + k.f * v.z, k.c * v.x + k.f * v.y + k.h * v.z};
-        return dot(v, q3v + T(2) * Vec3<T>(k.d, k.g, k.i)) + k.j;
+        return dot(v, times_q3(given_, v) + T(2) * Vec3<T>(given_.d, given_.g, given_.i)) + given_.j;
     }
 
     /// The gradient of F, 2 (Q3 (p - o) + q): the outward normal direction.
     [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>& p) const noexcept
     {
-        const Coefficients& k = given_;
-        const Vec3<T> v = p - origin_;
-        return T(2) * (Vec3<T>{k.a * v.x + k.b * v.y + k.c * v.z, k.b * v.x + k.e * v.y + k.f * v.z, k.c * v.x + k.f * v.y + k.h * v.z} +
-                       Vec3<T>(k.d, k.g, k.i));
+        return T(2) * (times_q3(given_, p - origin_) + Vec3<T>(given_.d, given_.g, given_.i));
     }
 
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return evaluate_local(p - origin_) < T(0); }
@@ -326,11 +321,14 @@ private:
 
     [[nodiscard]] constexpr Vec3<T> linear() const noexcept { return {k_.d, k_.g, k_.i}; }
 
-    /// Q3 v, the quadratic part applied to a vector.
-    [[nodiscard]] constexpr Vec3<T> quadratic_part(const Vec3<T>& v) const noexcept
+    /// Q3 v for the coefficients k: their quadratic part applied to a vector.
+    [[nodiscard]] static constexpr Vec3<T> times_q3(const Coefficients& k, const Vec3<T>& v) noexcept
     {
-        return {k_.a * v.x + k_.b * v.y + k_.c * v.z, k_.b * v.x + k_.e * v.y + k_.f * v.z, k_.c * v.x + k_.f * v.y + k_.h * v.z};
+        return {k.a * v.x + k.b * v.y + k.c * v.z, k.b * v.x + k.e * v.y + k.f * v.z, k.c * v.x + k.f * v.y + k.h * v.z};
     }
+
+    /// Q3 v, the (normalised) quadratic part applied to a vector.
+    [[nodiscard]] constexpr Vec3<T> quadratic_part(const Vec3<T>& v) const noexcept { return times_q3(k_, v); }
 
     [[nodiscard]] constexpr Vec3<T> half_gradient(const Vec3<T>& p) const noexcept { return quadratic_part(p) + linear(); }
 
