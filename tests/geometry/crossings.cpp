@@ -14,8 +14,8 @@ TEST_CASE("Crossings keeps its items in order")
 {
     prism::Crossings<float, 3> list;
     CHECK(list.empty());
-    list.push_back({.t = 1.0f, .entering = true});
-    list.push_back({.t = 2.5f});
+    list.push_back(prism::Crossing<float>::without_surface(1.0f, true));
+    list.push_back(prism::Crossing<float>::without_surface(2.5f, false));
     CHECK(list.size() == 2);
     CHECK(list.front().entering);
     float last = -1;

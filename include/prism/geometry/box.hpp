@@ -63,9 +63,9 @@ public:
         if (!(t_near < t_far)) return out; // a miss, or a touch along an edge
         out.inside_at_start = t_near < range.min && range.min < t_far;
         if (range.surrounds(t_near))
-            out.push_back(Surface ? crossing_at(ray, t_near, axis_near, true) : Crossing<T>{.t = t_near, .entering = true});
+            out.push_back(Surface ? crossing_at(ray, t_near, axis_near, true) : Crossing<T>::without_surface(t_near, true));
         if (range.surrounds(t_far))
-            out.push_back(Surface ? crossing_at(ray, t_far, axis_far, false) : Crossing<T>{.t = t_far, .entering = false});
+            out.push_back(Surface ? crossing_at(ray, t_far, axis_far, false) : Crossing<T>::without_surface(t_far, false));
         return out;
     }
 

@@ -63,7 +63,7 @@ public:
         const T t = -height / denom;
         const bool entering = denom < T(0);
         out.inside_at_start = entering ? t < range.min : range.min < t;
-        if (range.surrounds(t)) out.push_back(Surface ? crossing_at(ray, t, entering) : Crossing<T>{.t = t, .entering = entering});
+        if (range.surrounds(t)) out.push_back(Surface ? crossing_at(ray, t, entering) : Crossing<T>::without_surface(t, entering));
         return out;
     }
 

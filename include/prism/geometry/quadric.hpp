@@ -253,11 +253,12 @@ public:
         // is the one root of the linear equation.
         const T root = prism::sqrt(disc);
         const T q = B >= T(0) ? -(B + root) : -(B - root);
-        std::array<Crossing<T>, 2> roots{};
+        std::array<Crossing<T>, 2> roots; // the first n are written
+        if (std::is_constant_evaluated()) roots = {};
         std::size_t n = 0;
-        roots[n++] = {.t = C / q, .entering = B < T(0)};
+        roots[n++] = Crossing<T>::without_surface(C / q, B < T(0));
         const T far = q / A;
-        if (is_finite(far)) roots[n++] = {.t = far, .entering = B >= T(0)};
+        if (is_finite(far)) roots[n++] = Crossing<T>::without_surface(far, B >= T(0));
         if (n == 2 && roots[1].t < roots[0].t) std::swap(roots[0], roots[1]);
 
         // Inside at range.min: the state after the last root before it, else before the first.

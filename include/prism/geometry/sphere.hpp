@@ -77,8 +77,8 @@ public:
         // the ray from it: exact to the sphere's own scale however far the origin is,
         // where o + t d would carry the rounding of t (an ulp of the distance).
         out.inside_at_start = t0 < range.min && range.min < t1;
-        if (range.surrounds(t0)) out.push_back(Surface ? crossing_at(l - (root / a) * d, t0, true) : Crossing<T>{.t = t0, .entering = true});
-        if (range.surrounds(t1)) out.push_back(Surface ? crossing_at(l + (root / a) * d, t1, false) : Crossing<T>{.t = t1, .entering = false});
+        if (range.surrounds(t0)) out.push_back(Surface ? crossing_at(l - (root / a) * d, t0, true) : Crossing<T>::without_surface(t0, true));
+        if (range.surrounds(t1)) out.push_back(Surface ? crossing_at(l + (root / a) * d, t1, false) : Crossing<T>::without_surface(t1, false));
         return out;
     }
 
