@@ -18,3 +18,43 @@ TEST_CASE_TEMPLATE("Aabb clips a ray to the span inside it", T, float, double)
     CHECK(prism::Aabb<T>{}.empty());
     CHECK(prism::Aabb<T>::universe().contains({T(1e30), T(-1e30), T(0)}));
 }
+
+TEST_CASE("a denormal direction from a face is not a miss (0 * inf was NaN)")
+{
+    // Issue 10: a ray starting on a box's top face and going down at 7e-45 per unit came
+    // out NaN on that axis and was culled; the box itself says it crosses.
+    const prism::Aabb<float> box{Vec3<float>{8711.77051f, -46.0414314f, 4909.47168f}, Vec3<float>{8711.77246f, -46.0396309f, 4909.47314f}};
+    const prism::Ray<float> ray{{8711.77148f, 9953.95996f, 4909.47314f}, {7.00649232e-45f, -0.770615876f, -7.00649232e-45f}};
+    const auto span = box.clip(ray, {0, prism::infinity<float>});
+    REQUIRE_FALSE(span.empty());
+    CHECK(span.min == doctest::Approx(12976.6f).epsilon(1e-4));
+    CHECK(box.reached_after(ray, 0));
+}
+
+TEST_CASE_TEMPLATE("reached_after ignores the range's end; rounded_out holds the exact box", T, float, double)
+{
+    const prism::Aabb<T> box{Vec3<T>{T(-1), T(-1), T(-1)}, Vec3<T>{T(1), T(1), T(1)}};
+    const prism::Ray<T> ray{{T(-3), T(0), T(0)}, {T(1), T(0), T(0)}};
+    CHECK(box.clip(ray, {T(0), T(1)}).empty()); // the range ends before the box
+    CHECK(box.reached_after(ray, T(0)));       // but the shape's cull does not look at the end
+    CHECK_FALSE(box.reached_after(ray, T(5))); // nor before the start
+    // 0.1 is not a float: its sum with 1 rounds; the rounded-out box still holds the exact one.
+    const prism::Aabb<T> tenth{Vec3<T>(T(1) + T(0.1)), Vec3<T>(T(3) + T(0.1))};
+    const prism::Aabb<T> out = tenth.rounded_out();
+    CHECK(out.lo.x < tenth.lo.x);
+    CHECK(out.hi.x > tenth.hi.x);
+    CHECK(double(out.lo.x) < 1.1);
+    CHECK(double(out.hi.x) > 3.1);
+}
+
+TEST_CASE("may_cross widens the box per ray by the rounding of the ray's distance")
+{
+    // A unit box 10^4 away: a ray passing 10^-4 beside it may still be reported crossing
+    // by a shape inside (its rounding there is about 10^-3), one passing 1 beside it not.
+    const prism::Aabb<float> box{Vec3<float>{-0.5f, -0.5f, -0.5f}, Vec3<float>{0.5f, 0.5f, 0.5f}};
+    const prism::Ray<float> close{{-1e4f, 0.5001f, 0}, {1, 0, 0}}, clear{{-1e4f, 1.5f, 0}, {1, 0, 0}};
+    CHECK(box.clip(close, {0, prism::infinity<float>}).empty());
+    CHECK(box.may_cross(close, {0, prism::infinity<float>}));
+    CHECK_FALSE(box.may_cross(clear, {0, prism::infinity<float>}));
+    CHECK_FALSE(box.may_cross(close, {0, 100})); // it uses the range's end
+}
