@@ -240,18 +240,40 @@ template <Scalar T>
 } // namespace prism
 
 // ---- prism/core/check.hpp ----
-// Input validation for constructors: a clear std::invalid_argument naming the parameter.
+// Input validation for constructors: a clear std::invalid_argument naming the parameter,
+// and an allocation_error saying what was asked for when it cannot fit in memory.
 //
 // These run when a scene is built, never on a hot path. In a constant expression a
 // failed check is a compile error, since a throw cannot be constant-evaluated.
 
 
+#include <cstdio>
 #include <limits>
-
+#include <new>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
+
+#if __has_include(<unistd.h>)
+#include <unistd.h>
+#endif
+
+namespace prism {
+
+/// Thrown when memory for something the user asked for cannot be had: a std::bad_alloc
+/// that says what was asked for and how much memory it needs.
+class allocation_error : public std::bad_alloc {
+public:
+    explicit allocation_error(std::string message) : message_(std::move(message)) {}
+    [[nodiscard]] const char* what() const noexcept override { return message_.c_str(); }
+
+private:
+    std::string message_;
+};
+
+} // namespace prism
 
 namespace prism::detail {
 
@@ -325,6 +347,33 @@ constexpr void require_nonzero(std::string_view name, const Vec3<T>& value)
 {
     require_finite(name, value);
     if (value.x == T(0) && value.y == T(0) && value.z == T(0)) throw_invalid(name, " must not be the zero vector");
+}
+
+/// The machine's physical memory in bytes (0 where it cannot be told).
+[[nodiscard]] inline double physical_memory() noexcept
+{
+#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (pages > 0 && page > 0) return double(pages) * double(page);
+#endif
+    return 0;
+}
+
+/// "12.0 GiB": a byte count for messages.
+[[nodiscard]] inline std::string describe_bytes(double bytes)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+    return text;
+}
+
+/// Refuse, before allocating, what needs more than the machine's physical memory: such
+/// an allocation may succeed lazily and end the process later, when its pages are
+/// touched. `what` says what was asked for.
+inline void require_memory(const std::string& what, double bytes)
+{
+    if (const double memory = physical_memory(); memory > 0 && bytes > memory)
+        throw allocation_error("prism: " + what + " needs " + describe_bytes(bytes) + ", more than this machine's " + describe_bytes(memory));
 }
 
 } // namespace prism::detail
@@ -2902,128 +2951,6 @@ private:
 
 } // namespace prism
 
-// ---- prism/render/film.hpp ----
-// Film: a linear HDR RGB image of radiance values, never NaN or Inf.
-
-
-#include <atomic>
-#include <cstddef>
-#include <cstdio>
-#include <new>
-#include <string>
-#include <utility>
-#include <vector>
-
-#if __has_include(<unistd.h>)
-#include <unistd.h>
-#endif
-
-namespace prism {
-
-/// Thrown when memory for something the user asked for cannot be had: a std::bad_alloc
-/// that says what was asked for and how much memory it needs.
-class allocation_error : public std::bad_alloc {
-public:
-    explicit allocation_error(std::string message) : message_(std::move(message)) {}
-    [[nodiscard]] const char* what() const noexcept override { return message_.c_str(); }
-
-private:
-    std::string message_;
-};
-
-namespace detail {
-
-/// The machine's physical memory in bytes (0 where it cannot be told).
-[[nodiscard]] inline double physical_memory() noexcept
-{
-#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
-    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
-    if (pages > 0 && page > 0) return double(pages) * double(page);
-#endif
-    return 0;
-}
-
-/// "12.0 GiB": a byte count for messages.
-[[nodiscard]] inline std::string describe_bytes(double bytes)
-{
-    char text[64];
-    std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
-    return text;
-}
-
-} // namespace detail
-
-/// A linear HDR RGB image. Any number of threads may set distinct pixels at once.
-class Film {
-public:
-    Film(int width, int height) : width_(width), height_(height)
-    {
-        if (width <= 0 || height <= 0) detail::throw_invalid("Film size must be positive, got ", width, " x ", height);
-        const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-        const double bytes = double(count) * sizeof(Rgb<float>);
-        // Asked before allocating: an allocation past physical memory may succeed lazily
-        // and end the process later, when its pages are touched.
-        if (const double memory = detail::physical_memory(); memory > 0 && bytes > memory)
-            throw allocation_error("prism: a Film of " + std::to_string(width) + " x " + std::to_string(height) + " pixels needs " +
-                                   detail::describe_bytes(bytes) + ", more than this machine's " + detail::describe_bytes(memory));
-        try {
-            pixels_.assign(count, Rgb<float>(0.0f));
-        } catch (const std::bad_alloc&) {
-            throw allocation_error("prism: a Film of " + std::to_string(width) + " x " + std::to_string(height) + " pixels needs " +
-                                   detail::describe_bytes(bytes) + ", which could not be allocated");
-        }
-    }
-
-    Film(const Film& other) : width_(other.width_), height_(other.height_), pixels_(other.pixels_), rejected_(other.rejected()) {}
-    Film(Film&& other) noexcept
-        : width_(other.width_), height_(other.height_), pixels_(std::move(other.pixels_)), rejected_(other.rejected())
-    {
-    }
-    Film& operator=(Film other) noexcept
-    {
-        width_ = other.width_;
-        height_ = other.height_;
-        pixels_ = std::move(other.pixels_);
-        rejected_.store(other.rejected(), std::memory_order_relaxed);
-        return *this;
-    }
-
-    [[nodiscard]] int width() const noexcept { return width_; }
-    [[nodiscard]] int height() const noexcept { return height_; }
-    [[nodiscard]] const std::vector<Rgb<float>>& pixels() const noexcept { return pixels_; }
-
-    [[nodiscard]] const Rgb<float>& at(int x, int y) const noexcept
-    {
-        return pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)];
-    }
-
-    /// Store a pixel's radiance. A channel that is NaN, infinite or negative is stored
-    /// as 0 and counted, so no bad number ever reaches an image file.
-    template <Scalar T>
-    void set(int x, int y, const Rgb<T>& radiance) noexcept
-    {
-        Rgb<float> v;
-        for (int c = 0; c < 3; ++c) {
-            const float value = static_cast<float>(radiance[c]);
-            const bool good = is_finite(value) && value >= 0.0f;
-            v[c] = good ? value : 0.0f;
-            if (!good) rejected_.fetch_add(1, std::memory_order_relaxed); // render threads share the count
-        }
-        pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)] = v;
-    }
-
-    /// How many channel values were replaced by 0 because they were not finite and >= 0.
-    [[nodiscard]] std::size_t rejected() const noexcept { return rejected_.load(std::memory_order_relaxed); }
-
-private:
-    int width_;
-    int height_;
-    std::vector<Rgb<float>> pixels_;
-    std::atomic<std::size_t> rejected_{0};
-};
-
-} // namespace prism
-
 // ---- prism/scene/object.hpp ----
 // Object: a shape with a material; ObjectArray: many of one type in one scene slot.
 
@@ -3152,9 +3079,7 @@ inline void validate(const PhotonTracerConfig& config)
         if (count > max_photons)
             throw_invalid("PhotonTracerConfig ", name, " must be at most ", max_photons, " (a map indexes its photons in 32 bits), got ", count,
                           " (their records alone would need ", describe_bytes(bytes), ")");
-        if (const double memory = physical_memory(); memory > 0 && bytes > memory)
-            throw allocation_error("prism: PhotonTracerConfig " + std::string(name) + " = " + std::to_string(count) + " photons need at least " +
-                                   describe_bytes(bytes) + ", more than this machine's " + describe_bytes(memory));
+        require_memory("PhotonTracerConfig " + std::string(name) + " = " + std::to_string(count) + " (its photon records alone)", bytes);
     }
     if (config.max_bounces < 0) throw_invalid("PhotonTracerConfig max_bounces must be >= 0, got ", config.max_bounces);
 }
@@ -4089,6 +4014,86 @@ static_assert(Material<Diffuse<float>>);
 
 } // namespace prism
 
+// ---- prism/render/film.hpp ----
+// Film: a linear HDR RGB image of radiance values, never NaN or Inf.
+
+
+#include <atomic>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+
+namespace prism {
+
+/// A linear HDR RGB image. Any number of threads may set distinct pixels at once.
+class Film {
+public:
+    Film(int width, int height) : width_(width), height_(height)
+    {
+        if (width <= 0 || height <= 0) detail::throw_invalid("Film size must be positive, got ", width, " x ", height);
+        const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+        const double bytes = double(count) * sizeof(Rgb<float>);
+        const std::string what = "a Film of " + std::to_string(width) + " x " + std::to_string(height) + " pixels";
+        detail::require_memory(what, bytes);
+        try {
+            pixels_.assign(count, Rgb<float>(0.0f));
+        } catch (const std::bad_alloc&) {
+            throw allocation_error("prism: " + what + " needs " + detail::describe_bytes(bytes) + ", which could not be allocated");
+        }
+    }
+
+    Film(const Film& other) : width_(other.width_), height_(other.height_), pixels_(other.pixels_), rejected_(other.rejected()) {}
+    Film(Film&& other) noexcept
+        : width_(other.width_), height_(other.height_), pixels_(std::move(other.pixels_)), rejected_(other.rejected())
+    {
+    }
+    Film& operator=(Film other) noexcept
+    {
+        width_ = other.width_;
+        height_ = other.height_;
+        pixels_ = std::move(other.pixels_);
+        rejected_.store(other.rejected(), std::memory_order_relaxed);
+        return *this;
+    }
+
+    [[nodiscard]] int width() const noexcept { return width_; }
+    [[nodiscard]] int height() const noexcept { return height_; }
+    [[nodiscard]] const std::vector<Rgb<float>>& pixels() const noexcept { return pixels_; }
+
+    [[nodiscard]] const Rgb<float>& at(int x, int y) const noexcept
+    {
+        return pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)];
+    }
+
+    /// Store a pixel's radiance. A channel that is NaN, infinite or negative is stored
+    /// as 0 and counted, so no bad number ever reaches an image file.
+    template <Scalar T>
+    void set(int x, int y, const Rgb<T>& radiance) noexcept
+    {
+        Rgb<float> v;
+        for (int c = 0; c < 3; ++c) {
+            const float value = static_cast<float>(radiance[c]);
+            const bool good = is_finite(value) && value >= 0.0f;
+            v[c] = good ? value : 0.0f;
+            if (!good) rejected_.fetch_add(1, std::memory_order_relaxed); // render threads share the count
+        }
+        pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)] = v;
+    }
+
+    /// How many channel values were replaced by 0 because they were not finite and >= 0.
+    [[nodiscard]] std::size_t rejected() const noexcept { return rejected_.load(std::memory_order_relaxed); }
+
+private:
+    int width_;
+    int height_;
+    std::vector<Rgb<float>> pixels_;
+    std::atomic<std::size_t> rejected_{0};
+};
+
+} // namespace prism
+
 // ---- prism/scene/camera.hpp ----
 // Camera: a pinhole camera as a plain struct, and the rays it shoots.
 
@@ -4612,6 +4617,16 @@ namespace detail {
     throw std::runtime_error("prism: cannot write '" + path.string() + "': " + reason);
 }
 
+/// Write every byte and close the file: 0, or the errno of what failed first.
+[[nodiscard]] inline int write_and_close(std::FILE* file, std::span<const unsigned char> bytes) noexcept
+{
+    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+    const int write_errno = errno;
+    const bool closed = std::fclose(file) == 0;
+    if (!written) return write_errno != 0 ? write_errno : EIO;
+    return closed ? 0 : (errno != 0 ? errno : EIO);
+}
+
 /// Write bytes to path: whole or not at all where the path is a regular file (or
 /// nothing yet). Bytes go to a new temporary file beside it (created exclusively, never
 /// through an existing name), which is renamed over the target only once complete. A
@@ -4633,9 +4648,7 @@ inline void write_file_atomically(const std::filesystem::path& path, std::span<c
     if (!regular_or_new) {
         std::FILE* file = std::fopen(target.c_str(), "wb");
         if (file == nullptr) throw_io(path, std::strerror(errno));
-        const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-        const int write_errno = errno;
-        if (std::fclose(file) != 0 || !written) throw_io(path, std::strerror(written ? errno : write_errno));
+        if (const int failure = write_and_close(file, bytes)) throw_io(path, std::strerror(failure));
         return;
     }
     // A temporary name of our own: "x" opens only a file that did not exist.
@@ -4649,12 +4662,9 @@ inline void write_file_atomically(const std::filesystem::path& path, std::span<c
         if (file == nullptr && errno != EEXIST) throw_io(path, std::strerror(errno));
     }
     if (file == nullptr) throw_io(path, "no free temporary name beside it");
-    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-    const int write_errno = errno;
-    const bool closed = std::fclose(file) == 0;
-    if (!written || !closed) {
+    if (const int failure = write_and_close(file, bytes)) {
         std::remove(temporary.c_str());
-        throw_io(path, std::strerror(written ? errno : write_errno));
+        throw_io(path, std::strerror(failure));
     }
     fs::rename(temporary, target, error);
     if (error) {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Input validation for constructors: a clear std::invalid_argument naming the parameter.
+// Input validation for constructors: a clear std::invalid_argument naming the parameter,
+// and an allocation_error saying what was asked for when it cannot fit in memory.
 //
 // These run when a scene is built, never on a hot path. In a constant expression a
 // failed check is a compile error, since a throw cannot be constant-evaluated.
@@ -7,12 +8,33 @@
 
 #include <prism/core/math.hpp>
 
+#include <cstdio>
 #include <limits>
-
+#include <new>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
+
+#if __has_include(<unistd.h>)
+#include <unistd.h>
+#endif
+
+namespace prism {
+
+/// Thrown when memory for something the user asked for cannot be had: a std::bad_alloc
+/// that says what was asked for and how much memory it needs.
+class allocation_error : public std::bad_alloc {
+public:
+    explicit allocation_error(std::string message) : message_(std::move(message)) {}
+    [[nodiscard]] const char* what() const noexcept override { return message_.c_str(); }
+
+private:
+    std::string message_;
+};
+
+} // namespace prism
 
 namespace prism::detail {
 
@@ -86,6 +108,33 @@ constexpr void require_nonzero(std::string_view name, const Vec3<T>& value)
 {
     require_finite(name, value);
     if (value.x == T(0) && value.y == T(0) && value.z == T(0)) throw_invalid(name, " must not be the zero vector");
+}
+
+/// The machine's physical memory in bytes (0 where it cannot be told).
+[[nodiscard]] inline double physical_memory() noexcept
+{
+#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (pages > 0 && page > 0) return double(pages) * double(page);
+#endif
+    return 0;
+}
+
+/// "12.0 GiB": a byte count for messages.
+[[nodiscard]] inline std::string describe_bytes(double bytes)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+    return text;
+}
+
+/// Refuse, before allocating, what needs more than the machine's physical memory: such
+/// an allocation may succeed lazily and end the process later, when its pages are
+/// touched. `what` says what was asked for.
+inline void require_memory(const std::string& what, double bytes)
+{
+    if (const double memory = physical_memory(); memory > 0 && bytes > memory)
+        throw allocation_error("prism: " + what + " needs " + describe_bytes(bytes) + ", more than this machine's " + describe_bytes(memory));
 }
 
 } // namespace prism::detail

@@ -76,6 +76,16 @@ namespace detail {
     throw std::runtime_error("prism: cannot write '" + path.string() + "': " + reason);
 }
 
+/// Write every byte and close the file: 0, or the errno of what failed first.
+[[nodiscard]] inline int write_and_close(std::FILE* file, std::span<const unsigned char> bytes) noexcept
+{
+    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+    const int write_errno = errno;
+    const bool closed = std::fclose(file) == 0;
+    if (!written) return write_errno != 0 ? write_errno : EIO;
+    return closed ? 0 : (errno != 0 ? errno : EIO);
+}
+
 /// Write bytes to path: whole or not at all where the path is a regular file (or
 /// nothing yet). Bytes go to a new temporary file beside it (created exclusively, never
 /// through an existing name), which is renamed over the target only once complete. A
@@ -97,9 +107,7 @@ inline void write_file_atomically(const std::filesystem::path& path, std::span<c
     if (!regular_or_new) {
         std::FILE* file = std::fopen(target.c_str(), "wb");
         if (file == nullptr) throw_io(path, std::strerror(errno));
-        const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-        const int write_errno = errno;
-        if (std::fclose(file) != 0 || !written) throw_io(path, std::strerror(written ? errno : write_errno));
+        if (const int failure = write_and_close(file, bytes)) throw_io(path, std::strerror(failure));
         return;
     }
     // A temporary name of our own: "x" opens only a file that did not exist.
@@ -113,12 +121,9 @@ inline void write_file_atomically(const std::filesystem::path& path, std::span<c
         if (file == nullptr && errno != EEXIST) throw_io(path, std::strerror(errno));
     }
     if (file == nullptr) throw_io(path, "no free temporary name beside it");
-    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-    const int write_errno = errno;
-    const bool closed = std::fclose(file) == 0;
-    if (!written || !closed) {
+    if (const int failure = write_and_close(file, bytes)) {
         std::remove(temporary.c_str());
-        throw_io(path, std::strerror(written ? errno : write_errno));
+        throw_io(path, std::strerror(failure));
     }
     fs::rename(temporary, target, error);
     if (error) {

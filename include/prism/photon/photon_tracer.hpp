@@ -31,7 +31,6 @@
 #include <prism/optics/beer.hpp>
 #include <prism/optics/refract.hpp>
 #include <prism/photon/photon_map.hpp>
-#include <prism/render/film.hpp>
 #include <prism/scene/object.hpp>
 
 #include <algorithm>
@@ -67,9 +66,7 @@ inline void validate(const PhotonTracerConfig& config)
         if (count > max_photons)
             throw_invalid("PhotonTracerConfig ", name, " must be at most ", max_photons, " (a map indexes its photons in 32 bits), got ", count,
                           " (their records alone would need ", describe_bytes(bytes), ")");
-        if (const double memory = physical_memory(); memory > 0 && bytes > memory)
-            throw allocation_error("prism: PhotonTracerConfig " + std::string(name) + " = " + std::to_string(count) + " photons need at least " +
-                                   describe_bytes(bytes) + ", more than this machine's " + describe_bytes(memory));
+        require_memory("PhotonTracerConfig " + std::string(name) + " = " + std::to_string(count) + " (its photon records alone)", bytes);
     }
     if (config.max_bounces < 0) throw_invalid("PhotonTracerConfig max_bounces must be >= 0, got ", config.max_bounces);
 }

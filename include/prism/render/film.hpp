@@ -7,50 +7,12 @@
 
 #include <atomic>
 #include <cstddef>
-#include <cstdio>
-#include <new>
 #include <string>
 #include <utility>
 #include <vector>
 
-#if __has_include(<unistd.h>)
-#include <unistd.h>
-#endif
 
 namespace prism {
-
-/// Thrown when memory for something the user asked for cannot be had: a std::bad_alloc
-/// that says what was asked for and how much memory it needs.
-class allocation_error : public std::bad_alloc {
-public:
-    explicit allocation_error(std::string message) : message_(std::move(message)) {}
-    [[nodiscard]] const char* what() const noexcept override { return message_.c_str(); }
-
-private:
-    std::string message_;
-};
-
-namespace detail {
-
-/// The machine's physical memory in bytes (0 where it cannot be told).
-[[nodiscard]] inline double physical_memory() noexcept
-{
-#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
-    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
-    if (pages > 0 && page > 0) return double(pages) * double(page);
-#endif
-    return 0;
-}
-
-/// "12.0 GiB": a byte count for messages.
-[[nodiscard]] inline std::string describe_bytes(double bytes)
-{
-    char text[64];
-    std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
-    return text;
-}
-
-} // namespace detail
 
 /// A linear HDR RGB image. Any number of threads may set distinct pixels at once.
 class Film {
@@ -60,16 +22,12 @@ public:
         if (width <= 0 || height <= 0) detail::throw_invalid("Film size must be positive, got ", width, " x ", height);
         const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
         const double bytes = double(count) * sizeof(Rgb<float>);
-        // Asked before allocating: an allocation past physical memory may succeed lazily
-        // and end the process later, when its pages are touched.
-        if (const double memory = detail::physical_memory(); memory > 0 && bytes > memory)
-            throw allocation_error("prism: a Film of " + std::to_string(width) + " x " + std::to_string(height) + " pixels needs " +
-                                   detail::describe_bytes(bytes) + ", more than this machine's " + detail::describe_bytes(memory));
+        const std::string what = "a Film of " + std::to_string(width) + " x " + std::to_string(height) + " pixels";
+        detail::require_memory(what, bytes);
         try {
             pixels_.assign(count, Rgb<float>(0.0f));
         } catch (const std::bad_alloc&) {
-            throw allocation_error("prism: a Film of " + std::to_string(width) + " x " + std::to_string(height) + " pixels needs " +
-                                   detail::describe_bytes(bytes) + ", which could not be allocated");
+            throw allocation_error("prism: " + what + " needs " + detail::describe_bytes(bytes) + ", which could not be allocated");
         }
     }
 
