@@ -155,10 +155,10 @@ def summary(rows):
 
 
 LEAK_CONFIGS = {
-    "sphere, box": ["--filter", "box", "--disk", "1"],
-    "disk, box": ["--filter", "box", "--disk", "0.1"],
-    "disk, cone": ["--filter", "cone", "--disk", "0.1"],
-    "disk, gaussian": ["--filter", "gaussian", "--disk", "0.1"],
+    "sphere, box": ["--filter", "box", "--max-height-ratio", "1"],
+    "disk, box": ["--filter", "box", "--max-height-ratio", "0.1"],
+    "disk, cone": ["--filter", "cone", "--max-height-ratio", "0.1"],
+    "disk, gaussian": ["--filter", "gaussian", "--max-height-ratio", "0.1"],
 }
 
 
@@ -166,7 +166,7 @@ def leaks(args, binary, tmp, out):
     common = ["--caustic-photons", "0", "--gather", "0", "--global-radius", "0.25"]
     print("light leaks: global map read directly; reference 1e7 photons, r = 0.08, disk 0.1 ...", flush=True)
     ref = run_prism(binary, args.threads, tmp, ["--caustic-photons", "0", "--gather", "0", "--photons", "10000000",
-                                                 "--global-radius", "0.08", "--disk", "0.1", "--filter", "box"])
+                                                 "--global-radius", "0.08", "--max-height-ratio", "0.1", "--filter", "box"])
     rows, crops = [], []
     for count in [10000, 30000, 100000, 300000, 1000000]:
         for name, extra in LEAK_CONFIGS.items():

@@ -42,7 +42,7 @@ int main(int argc, char** argv)
             write_png(examples::timed_render("caustic_sphere", camera, integrator, options.render), options.out / "caustic_sphere_whitted.png");
             return 0;
         }
-        const PhotonMapper mapper(scene, {.photons = examples::photon_tracer_config(options),
+        const PhotonMapper mapper(scene, {.tracing = examples::photon_tracer_config(options),
                                           .caustic = examples::caustic_estimator(options),
                                           .gather_rays = options.gather});
         write_png(examples::timed_render("caustic_sphere", camera, mapper, options.render), options.out / "caustic_sphere.png");

@@ -32,7 +32,7 @@ struct Options {
     std::size_t k = 100;          ///< > 0: the caustic estimate from the k nearest photons, 0: all within radius
     double global_radius = 0.25;  ///< the global map's estimate, where it is read directly
     prism::Filter filter = prism::Filter::cone;
-    double disk = 1.0;            ///< < 1 flattens the estimate's sphere to a disk (against leaks)
+    double max_height_ratio = 1.0; ///< < 1 flattens the estimate's sphere to a disk (against leaks)
     std::size_t visibility = 0;   ///< > 0: skip shadow rays where this many nearest photons agree
     bool povray_light = false;    ///< POV-Ray's no-falloff light, as its scene has it
 };
@@ -73,7 +73,7 @@ inline void print_photon_help(const Options& defaults)
                 "  --k N                caustic estimate from the N nearest photons, 0 = every photon within R (default 100)\n"
                 "  --global-radius R    radius of the global map's estimate where read directly (default 0.25)\n"
                 "  --filter F           box, cone or gaussian, for both estimates (default cone)\n"
-                "  --disk D             keep photons within D R of the tangent plane, < 1 against light leaks (default 1)\n"
+                "  --max-height-ratio H keep photons within H R of the tangent plane, < 1 against light leaks (default 1)\n"
                 "  --visibility N       skip shadow rays where the N nearest global photons agree (default 0 = never)\n"
                 "  --light L            physical (inverse-square) or povray (no falloff, as the .pov file) (default physical)\n",
                 defaults.photons, defaults.caustic_photons);
@@ -135,7 +135,7 @@ inline bool parse(int argc, char** argv, Options& options, const char* descripti
 {
     const Options defaults = options;
     constexpr std::string_view photon_flags[] = {"--photons", "--caustic-photons", "--gather", "--radius", "--global-radius",
-                                                 "--disk",    "--k",               "--visibility", "--filter", "--light"};
+                                                 "--max-height-ratio", "--k",               "--visibility", "--filter", "--light"};
     for (int i = 1; i < argc; ++i) {
         const std::string_view flag = argv[i];
         if (flag == "--help" || flag == "-h") {
@@ -159,7 +159,7 @@ inline bool parse(int argc, char** argv, Options& options, const char* descripti
         else if (flag == "--gather") options.gather = parse_integer<int>(flag, value, 0, 4096);
         else if (flag == "--radius") options.radius = parse_number(flag, value, 0, 100);
         else if (flag == "--global-radius") options.global_radius = parse_number(flag, value, 0, 100);
-        else if (flag == "--disk") options.disk = parse_number(flag, value, 0, 1);
+        else if (flag == "--max-height-ratio") options.max_height_ratio = parse_number(flag, value, 0, 1);
         else if (flag == "--k") options.k = parse_integer<std::size_t>(flag, value, 0, prism::PhotonMap::max_k);
         else if (flag == "--visibility") options.visibility = parse_integer<std::size_t>(flag, value, 0, prism::PhotonMap::max_k);
         else if (flag == "--filter") {
@@ -191,7 +191,7 @@ inline prism::PhotonTracerConfig photon_tracer_config(const Options& options)
 /// The caustic map's estimate from the command line.
 inline prism::Estimator caustic_estimator(const Options& options)
 {
-    return {.k = options.k, .radius = float(options.radius), .filter = options.filter, .disk = float(options.disk)};
+    return {.k = options.k, .radius = float(options.radius), .filter = options.filter, .max_height_ratio = float(options.max_height_ratio)};
 }
 
 /// Run an example's body, turning exceptions into a message and exit code 1.

@@ -57,9 +57,9 @@ int main(int argc, char** argv)
         const auto scene = scenes::cornell_scene<float>(!options.povray_light);
         using Mapper = prism::PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
         const auto start = std::chrono::steady_clock::now();
-        const Mapper mapper(scene, {.photons = examples::photon_tracer_config(options),
+        const Mapper mapper(scene, {.tracing = examples::photon_tracer_config(options),
                                     .caustic = examples::caustic_estimator(options),
-                                    .global = {.radius = float(options.global_radius), .filter = options.filter, .disk = float(options.disk),
+                                    .global = {.radius = float(options.global_radius), .filter = options.filter, .max_height_ratio = float(options.max_height_ratio),
                                                .excluded = prism::Photon::direct | prism::Photon::caustic},
                                     .gather_rays = options.gather,
                                     .visibility_k = options.visibility});

@@ -61,7 +61,7 @@ int main(int argc, char** argv)
         // through it, refracted by both faces, is turned upside down.
         const auto lens = Transformed(intersection_of(Sphere<T>({0, 0, -1.2f}, 1.5f), Sphere<T>({0, 0, 1.2f}, 1.5f)),
                                       Transform<T>::rotate_y(35).then(Transform<T>::translate({0, 1.0f, 0})));
-        figure("glass_lens", lens, Dielectric<T>{.ior = 1.5f, .absorption = {0.02f, 0.01f, 0.0f}}, options);
+        figure("glass_lens", lens, Dielectric<T>{.ior = 1.5f, .interior = {.absorption = {0.02f, 0.01f, 0.0f}}}, options);
         return 0;
     });
 }

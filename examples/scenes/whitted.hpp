@@ -24,7 +24,7 @@ auto whitted_scene()
                Diffuse<T, Checker<T>>{.albedo = {.even = {T(0.85), T(0.15), T(0.1)}, .odd = {T(0.9), T(0.8), T(0.2)}, .size = T(1)},
                                       .kd = T(1), .ka = T(1)}},
         Object{Sphere<T>({T(0.4), T(1.2), T(1.6)}, T(1.2)),
-               Dielectric<T, Fresnel>{.ior = T(1.5), .absorption = {T(0.05), T(0.02), T(0.01)}}},
+               Dielectric<T, Fresnel>{.ior = T(1.5), .interior = {.absorption = {T(0.05), T(0.02), T(0.01)}}}},
         Object{Sphere<T>({T(-1.9), T(1.1), T(-1.6)}, T(1.1)), Mirror<T>{{.kr = Rgb<T>(T(0.9))}}},
         Object{Sphere<T>({T(2.6), T(0.8), T(-1.2)}, T(0.8)), Diffuse<T>{.albedo = {.color = {T(0.15), T(0.3), T(0.8)}}}},
     };

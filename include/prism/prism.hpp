@@ -13,6 +13,7 @@
 #include <prism/core/offset.hpp>
 #include <prism/core/ray.hpp>
 #include <prism/core/rng.hpp>
+#include <prism/core/sampling.hpp>
 #include <prism/core/transform.hpp>
 #include <prism/csg/csg_node.hpp>
 #include <prism/csg/difference.hpp>
@@ -27,7 +28,6 @@
 #include <prism/geometry/transformed.hpp>
 #include <prism/integrator/direct.hpp>
 #include <prism/integrator/photon_mapper.hpp>
-#include <prism/integrator/specular.hpp>
 #include <prism/integrator/whitted.hpp>
 #include <prism/light/directional_light.hpp>
 #include <prism/light/light.hpp>
@@ -35,8 +35,11 @@
 #include <prism/material/conductor.hpp>
 #include <prism/material/dielectric.hpp>
 #include <prism/material/diffuse.hpp>
+#include <prism/material/scattering.hpp>
 #include <prism/material/texture.hpp>
 #include <prism/material/traits.hpp>
+#include <prism/medium/homogeneous.hpp>
+#include <prism/medium/medium.hpp>
 #include <prism/optics/beer.hpp>
 #include <prism/optics/fresnel.hpp>
 #include <prism/optics/refract.hpp>

@@ -11,7 +11,7 @@ TEST_CASE("lights arriving at a point: behind ones skipped, occluded ones with v
     const Scene scene{Lights{PointLight<double>{.position = {0, 4, 0}}, PointLight<double>{.position = {0, -4, 0}},
                              PointLight<double>{.position = {3, 4, 0}}},
                       Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{}},
-                      Object{Box<double>({-1, 1, -1}, {1, 2, 1}), Dielectric<double>{.absorption = Rgb<double>(1)}},
+                      Object{Box<double>({-1, 1, -1}, {1, 2, 1}), Dielectric<double>{.interior = {.absorption = Rgb<double>(1)}}},
                       Object{Sphere<double>({1.5, 2, 0}, 0.5), Diffuse<double>{}}};
     const auto hit = scene.closest_hit({{0, 1e-3, 0}, {0, -1, 0}}, {0, infinity<double>}); // the origin on the floor
     REQUIRE(hit);

@@ -15,7 +15,7 @@ TEST_CASE("the photon mapper's direct light is Whitted's: one radiometric conven
     const Scene scene{Lights{PointLight<float>{.position = {0.5f, 3, -1}, .intensity = Rgb<float>(20)}},
                       Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = {0.7f, 0.5f, 0.3f}}, .kd = 0.9f, .ka = 0}}};
     const Whitted whitted(scene);
-    const PhotonMapper mapper(scene, {.photons = {.global_photons = 20000, .caustic_photons = 0}, .gather_rays = 0});
+    const PhotonMapper mapper(scene, {.tracing = {.global_photons = 20000, .caustic_photons = 0}, .gather_rays = 0});
     Pcg32 rng(1u, 1u);
     for (float x : {-1.0f, 0.0f, 0.7f, 2.0f}) {
         const Ray<float> ray{{x, 1, 2}, normalize(Vec3<float>{0, -1, -1})};
@@ -36,13 +36,13 @@ TEST_CASE("indirect light: a white wall facing a lit red floor turns red")
     const Ray<float> at_face{{3, 1, 0.3f}, normalize(Vec3<float>{-1, 0, -0.1f})};
     // Whitted, with direct light only, sees the face black.
     CHECK(Whitted(scene).radiance(at_face) == Rgb<float>(0.0f));
-    const PhotonMapper mapper(scene, {.photons = {.global_photons = 200000, .caustic_photons = 0}, .global = {.radius = 0.3f, .excluded = Photon::direct | Photon::caustic}, .gather_rays = 0});
+    const PhotonMapper mapper(scene, {.tracing = {.global_photons = 200000, .caustic_photons = 0}, .global = {.radius = 0.3f, .excluded = Photon::direct | Photon::caustic}, .gather_rays = 0});
     Pcg32 rng(2u, 2u);
     const Rgb<float> wall = mapper.radiance(at_face, rng);
     CHECK(wall.x > 0.005f);
     CHECK(wall.x > 5 * wall.y); // colour bleeding: the wall takes the floor's red
     // Final gathering sees the same light.
-    const PhotonMapper gathering(scene, {.photons = {.global_photons = 200000, .caustic_photons = 0}, .gather_rays = 256});
+    const PhotonMapper gathering(scene, {.tracing = {.global_photons = 200000, .caustic_photons = 0}, .gather_rays = 256});
     const Rgb<float> gathered = gathering.radiance(at_face, rng);
     CHECK(gathered.x > 5 * gathered.y);
     CHECK(gathered.x == doctest::Approx(wall.x).epsilon(0.3)); // two estimates of one integral, within their noise
@@ -63,10 +63,10 @@ TEST_CASE("glass casts a full shadow for shadow rays: the light through it comes
     CHECK(Whitted(scene).radiance(down).x > 0.1f);
     // The photon mapper without caustic photons sees a full shadow.
     Pcg32 rng(3u, 3u);
-    const PhotonMapper dark(scene, {.photons = {.global_photons = 0, .caustic_photons = 0}, .gather_rays = 0});
+    const PhotonMapper dark(scene, {.tracing = {.global_photons = 0, .caustic_photons = 0}, .gather_rays = 0});
     CHECK(dark.radiance(down, rng) == Rgb<float>(0.0f));
     // With them, the focused light: brighter than the unshadowed floor (E = I / h^2 = 30 / 36).
-    const PhotonMapper lit(scene, {.photons = {.global_photons = 0, .caustic_photons = 200000}, .caustic = {.radius = 0.05f}, .gather_rays = 0});
+    const PhotonMapper lit(scene, {.tracing = {.global_photons = 0, .caustic_photons = 200000}, .caustic = {.radius = 0.05f}, .gather_rays = 0});
     const float open_floor = 0.5f / pi<float> * 30.0f / 36.0f;
     CHECK(lit.radiance({{0, 0.4f, 0}, {0, -1, 0}}, rng).x > 2 * open_floor);
 }
@@ -79,7 +79,7 @@ TEST_CASE("shadow rays saved where photons agree (Jensen and Christensen 1995): 
                       Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
                       Object{Box<float>({-1, 2, -1}, {1, 2.2f, 1}), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}}};
     using Mapper = PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
-    const Mapper::Config base{.photons = {.global_photons = 200000, .caustic_photons = 0}, .gather_rays = 0};
+    const Mapper::Config base{.tracing = {.global_photons = 200000, .caustic_photons = 0}, .gather_rays = 0};
     Mapper::Config saving = base;
     saving.visibility_k = 32;
     const Mapper plain(scene, base), fast(scene, saving);
@@ -118,7 +118,7 @@ TEST_CASE("the photon mapper refuses what Whitted refuses, and estimators out of
     using Mapper = PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
     using Config = Mapper::Config;
     const auto refused = [&](Config config, const char* name) {
-        config.photons.global_photons = config.photons.caustic_photons = 100;
+        config.tracing.global_photons = config.tracing.caustic_photons = 100;
         CHECK_THROWS_WITH_AS(Mapper(scene, config), doctest::Contains(name), std::invalid_argument);
     };
     Config c{};
@@ -126,8 +126,8 @@ TEST_CASE("the photon mapper refuses what Whitted refuses, and estimators out of
     c.min_weight = std::nanf(""), refused(c, "min_weight"), c = {};
     c.min_weight = -1, refused(c, "min_weight"), c = {};
     c.caustic.radius = infinity<float>, refused(c, "caustic radius"), c = {};
-    c.global.disk = infinity<float>, refused(c, "global disk"), c = {};
+    c.global.max_height_ratio = infinity<float>, refused(c, "global max_height_ratio"), c = {};
     c.caustic.filter = static_cast<Filter>(7), refused(c, "filter"), c = {};
     c.visibility_k = 100000, refused(c, "visibility_k"), c = {};
-    c.photons.max_bounces = -1, refused(c, "max_bounces"), c = {};
+    c.tracing.max_bounces = -1, refused(c, "max_bounces"), c = {};
 }

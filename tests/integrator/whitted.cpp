@@ -67,7 +67,7 @@ TEST_CASE("Beer-Lambert on shadow rays: light through an absorbing slab is atten
     const double thickness = 0.5;
     const Scene scene{Lights{PointLight<double>{.position = {0, 4, 0}, .intensity = Rgb<double>(16)}},
                       Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(1)}, .kd = 1, .ka = 0}},
-                      Object{Box<double>({-5, 1, -5}, {5, 1 + thickness, 5}), Dielectric<double>{.ior = 1.5, .absorption = sigma}}};
+                      Object{Box<double>({-5, 1, -5}, {5, 1 + thickness, 5}), Dielectric<double>{.ior = 1.5, .interior = {.absorption = sigma}}}};
     const Whitted integrator(scene);
     const auto l = integrator.radiance({{0.3, 0.5, 0}, normalize(Vec3<double>{-0.3, -0.5, 0})});
     const double unshadowed = 1 / std::acos(-1.0) * 16 / 16; // E = I / r^2 = 1 at normal incidence
@@ -97,7 +97,7 @@ TEST_CASE("an absorbing glass slab at normal incidence: B (R + (1-R)^2 e^-sd / (
     // Every inter-reflection inside the slab is followed (Stokes' series of the slab).
     const double sigma = 1.0, d = 1.0, r = 0.04;
     Scene slab{Lights{PointLight<double>{.position = {0, 50, 50}, .intensity = Rgb<double>(0)}},
-               Object{Box<double>({-100, -100, -d}, {100, 100, 0}), Dielectric<double>{.ior = 1.5, .absorption = Rgb<double>(sigma)}}};
+               Object{Box<double>({-100, -100, -d}, {100, 100, 0}), Dielectric<double>{.ior = 1.5, .interior = {.absorption = Rgb<double>(sigma)}}}};
     slab.background = {1, 1, 1};
     const Whitted integrator(slab, {.max_depth = 60, .min_weight = 0});
     const double e = std::exp(-sigma * d);
@@ -151,7 +151,7 @@ TEST_CASE("CSG objects in a scene: they cast shadows, let light through their bo
     const double sigma = 0.7, d = 1, r = 0.04;
     Scene lens{Lights{PointLight<double>{.intensity = Rgb<double>(0)}},
                Object{intersection_of(Sphere<double>({-0.6, 0, 0}, 1.1), Sphere<double>({0.6, 0, 0}, 1.1)),
-                      Dielectric<double>{.ior = 1.5, .absorption = Rgb<double>(sigma)}}};
+                      Dielectric<double>{.ior = 1.5, .interior = {.absorption = Rgb<double>(sigma)}}}};
     lens.background = {1, 1, 1};
     const double e = std::exp(-sigma * d);
     CHECK(Whitted(lens, {.max_depth = 60, .min_weight = 0}).radiance({{-5, 0, 0}, {1, 0, 0}}).x ==

@@ -25,6 +25,6 @@ TEST_CASE("bad input names the parameter")
     CHECK_THROWS_WITH_AS(prism::Object(s, Dielectric<float>{.ior = 0}), doctest::Contains("Dielectric ior"), std::invalid_argument);
     CHECK_THROWS_AS(prism::Object(s, Dielectric<float>{.ior = -1.5f}), std::invalid_argument);
     CHECK_THROWS_AS(prism::Object(s, Dielectric<float>{.ior = std::nanf("")}), std::invalid_argument);
-    CHECK_THROWS_WITH_AS(prism::Object(s, Dielectric<float>{.absorption = {0, -1, 0}}), doctest::Contains("absorption"),
+    CHECK_THROWS_WITH_AS(prism::Object(s, Dielectric<float>{.interior = {.absorption = {0, -1, 0}}}), doctest::Contains("absorption"),
                          std::invalid_argument);
 }

@@ -110,7 +110,7 @@ TEST_CASE("the compact photon record: 24 bytes, power to 1/256 relative, directi
         for (int c = 0; c < 3; ++c) worst_power = std::max(worst_power, double(std::abs(back[c] - power[c]) / largest));
         sum_in += power.x / scale;
         sum_out += back.x / scale;
-        const Vec3<double> a(p.from()), b(from); // in double: acos of a float dot cannot resolve below 3e-4 rad
+        const Vec3<double> a(p.toward_source()), b(from); // in double: acos of a float dot cannot resolve below 3e-4 rad
         worst_angle = std::max(worst_angle, std::atan2(prism::length(prism::cross(a, b)), prism::dot(a, b)));
         REQUIRE(p.flags == Photon::caustic);
         REQUIRE(p.position == Vec3<float>{1, 2, 3});

@@ -104,6 +104,6 @@ TEST_CASE("light leaks at a corner: a disk instead of a sphere keeps the wall's 
     // of the disk (its edge cuts a segment of r^2 acos(1/2) - 0.1 sqrt(0.03) = 0.0246
     // from pi r^2 = 0.1257), so it reads 0.8045 E: what a point this near an edge
     // sees, darker, but no leak.
-    const float disk = map.irradiance({0.1f, 0, 0}, up, {.radius = 0.2f, .disk = 0.04f}).x;
+    const float disk = map.irradiance({0.1f, 0, 0}, up, {.radius = 0.2f, .max_height_ratio = 0.04f}).x;
     CHECK(disk == doctest::Approx(0.8045f * floor_e).epsilon(0.04));
 }

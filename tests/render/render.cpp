@@ -15,7 +15,7 @@ auto busy_scene()
 {
     Scene scene{Lights{PointLight<float>{.position = {2, 5, 3}, .intensity = Rgb<float>(40)}},
                 Object{Plane<float>({0, 1, 0}, 0), Diffuse<float, Checker<float>>{}},
-                Object{Sphere<float>({0, 1, 0}, 1), Dielectric<float>{.ior = 1.5f, .absorption = {0.2f, 0.1f, 0.0f}}},
+                Object{Sphere<float>({0, 1, 0}, 1), Dielectric<float>{.ior = 1.5f, .interior = {.absorption = {0.2f, 0.1f, 0.0f}}}},
                 Object{Sphere<float>({2, 0.7f, -1}, 0.7f), Mirror<float>{}}};
     scene.background = {0.3f, 0.5f, 0.9f};
     return scene;

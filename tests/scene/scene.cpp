@@ -22,7 +22,7 @@ auto test_scene()
     }};
     return Scene{Lights{PointLight<double>{.position = {0, 10, 0}}}, std::move(balls),
                  Object{Sphere<double>({0, 0, -7}, 1), Mirror<double>{}},
-                 Object{Sphere<double>({5, 0, 0}, 1), Dielectric<double>{.ior = 1.5, .absorption = {0.5, 1.0, 0.0}}}};
+                 Object{Sphere<double>({5, 0, 0}, 1), Dielectric<double>{.ior = 1.5, .interior = {.absorption = {0.5, 1.0, 0.0}}}}};
 }
 
 } // namespace

@@ -10,6 +10,14 @@
 
 namespace prism {
 
+/// A sphere that encloses a solid: what the photon tracer aims caustic photons at, and
+/// where parallel light's photons start from.
+template <Scalar T>
+struct BoundingSphere {
+    Vec3<T> center{};
+    T radius = T(0);
+};
+
 /// Axis-aligned box [lo, hi]; empty when lo > hi on any axis (the default).
 template <Scalar T>
 struct Aabb {
@@ -21,6 +29,12 @@ struct Aabb {
     /// Every point: the bounds of an unbounded shape such as a half-space.
     [[nodiscard]] static constexpr Aabb universe() noexcept { return {Vec3<T>(-infinity<T>), Vec3<T>(infinity<T>)}; }
 
+    /// The smallest box holding this one and `other`.
+    [[nodiscard]] constexpr Aabb merged(const Aabb& other) const noexcept
+    {
+        return {component_min(lo, other.lo), component_max(hi, other.hi)};
+    }
+
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
     {
         return lo.x <= p.x && p.x <= hi.x && lo.y <= p.y && p.y <= hi.y && lo.z <= p.z && p.z <= hi.z;
@@ -28,6 +42,12 @@ struct Aabb {
 
     /// Finite on every axis: the box of a bounded shape (false for an empty box too).
     [[nodiscard]] constexpr bool bounded() const noexcept { return !empty() && is_finite(lo) && is_finite(hi); }
+
+    /// The sphere through the box's corners (for a bounded box).
+    [[nodiscard]] constexpr BoundingSphere<T> bounding_sphere() const noexcept
+    {
+        return {T(0.5) * (lo + hi), T(0.5) * length(hi - lo)};
+    }
 
     /// The box grown outward by one float step on every side: a box computed by rounding
     /// to nearest then holds every point of the exact one.

@@ -28,6 +28,9 @@ struct Crossing {
     Vec3<T> normal; ///< unit outward normal (the gradient of the inside function)
     bool entering; ///< the ray goes from outside to inside here (gradient . direction < 0)
 
+    /// The unit normal on the side the ray arrives from (outward when it enters).
+    [[nodiscard]] constexpr Vec3<T> facing_normal() const noexcept { return entering ? normal : -normal; }
+
     /// A crossing without its surface: point, error and normal are left unwritten (zeros
     /// in a constant expression), for the queries that never read them.
     [[nodiscard]] static constexpr Crossing without_surface(T t, bool entering) noexcept

@@ -18,7 +18,8 @@ namespace prism {
 /// queries that need only where and which way: shadow rays, and finding which object
 /// is nearest before asking it for its surface. `max_crossings` bounds their number at
 /// compile time; `bounds()` encloses the solid (Aabb::universe() for an unbounded one);
-/// `contains(p)` says whether a point is strictly inside (the implicit function).
+/// `contains(p)` says whether a point is strictly inside (the implicit function). A shape
+/// may also offer `bounding_sphere()` (see HasBoundingSphere).
 template <class S>
 concept Shape = requires(const S& shape, const Ray<typename S::scalar_type>& ray,
                          Interval<typename S::scalar_type> range, const Vec3<typename S::scalar_type>& p) {
@@ -29,5 +30,20 @@ concept Shape = requires(const S& shape, const Ray<typename S::scalar_type>& ray
     { shape.bounds() } -> std::same_as<Aabb<typename S::scalar_type>>;
     { shape.contains(p) } -> std::same_as<bool>;
 };
+
+/// A shape that knows a sphere around itself tighter than the one around its box
+/// (Sphere does). Optional: `bounding_sphere(shape)` falls back to the box's sphere.
+template <class S>
+concept HasBoundingSphere = Shape<S> && requires(const S& shape) {
+    { shape.bounding_sphere() } -> std::same_as<BoundingSphere<typename S::scalar_type>>;
+};
+
+/// A sphere enclosing a bounded shape: its own, or the one through its box's corners.
+template <Shape S>
+[[nodiscard]] constexpr BoundingSphere<typename S::scalar_type> bounding_sphere(const S& shape) noexcept
+{
+    if constexpr (HasBoundingSphere<S>) return shape.bounding_sphere();
+    else return shape.bounds().bounding_sphere();
+}
 
 } // namespace prism

@@ -6,6 +6,8 @@
 #include <prism/core/offset.hpp>
 #include <prism/geometry/shape.hpp>
 
+#include <limits>
+
 namespace prism {
 
 template <Scalar T = float>
@@ -27,6 +29,13 @@ public:
 
     [[nodiscard]] constexpr const Vec3<T>& center() const noexcept { return center_; }
     [[nodiscard]] constexpr T radius() const noexcept { return radius_; }
+
+    /// Its own sphere, the radius grown by 16 epsilon for rounding: tighter than the
+    /// sphere around its box, which a caustic photon aimed at it would mostly miss.
+    [[nodiscard]] constexpr BoundingSphere<T> bounding_sphere() const noexcept
+    {
+        return {center_, radius_ * (T(1) + T(16) * std::numeric_limits<T>::epsilon())};
+    }
 
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept
     {

@@ -26,10 +26,9 @@
 #include <prism/core/rng.hpp>
 #include <prism/geometry/crossings.hpp>
 #include <prism/integrator/direct.hpp>
-#include <prism/integrator/specular.hpp>
 #include <prism/light/light.hpp>
+#include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
-#include <prism/optics/beer.hpp>
 #include <prism/optics/refract.hpp>
 #include <prism/photon/photon_tracer.hpp>
 
@@ -45,7 +44,7 @@ public:
     using T = scalar_type;
 
     struct Config {
-        PhotonTracerConfig photons{};
+        PhotonTracerConfig tracing{}; ///< how many photons, and how they are traced
         Estimator caustic{.radius = 0.1f}; ///< the caustic map's estimate
         /// The global map's estimate where it is read directly (gather_rays = 0); direct
         /// and caustic photons are left out, shadow rays and the caustic map count them.
@@ -60,7 +59,7 @@ public:
     };
 
     /// Traces the photon maps (the expensive part), then renders with them.
-    PhotonMapper(const SceneT& scene, Config config) : scene_(&scene), config_(config)
+    explicit PhotonMapper(const SceneT& scene, Config config = {}) : scene_(&scene), config_(config)
     {
         scene.validate();
         validate(config.caustic, "PhotonMapper caustic");
@@ -70,15 +69,13 @@ public:
         detail::require_non_negative("PhotonMapper min_weight", config.min_weight);
         if (config.visibility_k > PhotonMap::max_k)
             detail::throw_invalid("PhotonMapper visibility_k must be at most ", PhotonMap::max_k, ", got ", config.visibility_k);
-        detail::validate(config.photons);
-        int lights = 0;
-        scene.for_each_light([&](const auto&) { ++lights; });
-        if (config.visibility_k > 0 && lights != 1)
-            detail::throw_invalid("PhotonMapper visibility_k needs a scene with exactly one light, got lights: ", lights);
-        maps_ = trace_photons(scene, config.photons);
+        detail::validate(config.tracing);
+        if (config.visibility_k > 0 && SceneT::light_count != 1)
+            detail::throw_invalid("PhotonMapper visibility_k needs a scene with exactly one light, got lights: ", SceneT::light_count);
+        maps_ = trace_photons(scene, config.tracing);
         if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4);
     }
-    PhotonMapper(const SceneT&& scene, Config config) = delete;
+    PhotonMapper(const SceneT&& scene, Config config = {}) = delete;
 
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
 
@@ -105,7 +102,7 @@ private:
     {
         if (!(e.radius > 0.0f && is_finite(e.radius))) detail::throw_invalid(name, " radius must be finite and > 0, got ", e.radius);
         if (e.k > PhotonMap::max_k) detail::throw_invalid(name, " k must be at most ", PhotonMap::max_k, ", got ", e.k);
-        if (!(e.disk > 0.0f && e.disk <= 1.0f)) detail::throw_invalid(name, " disk must be in (0, 1], got ", e.disk);
+        if (!(e.max_height_ratio > 0.0f && e.max_height_ratio <= 1.0f)) detail::throw_invalid(name, " max_height_ratio must be in (0, 1], got ", e.max_height_ratio);
         if (e.filter != Filter::box && e.filter != Filter::cone && e.filter != Filter::gaussian)
             detail::throw_invalid(name, " filter must be box, cone or gaussian, got the value ", static_cast<int>(e.filter));
     }
@@ -122,28 +119,25 @@ private:
                                Pcg32& rng) const noexcept
     {
         const Vec3<T>& d = ray.direction;
-        const Vec3<T> n = hit.entering ? hit.normal : -hit.normal;
+        const Vec3<T> n = hit.facing_normal();
         Rgb<T> radiance{T(0)};
         if constexpr (has_diffuse<M>) {
-            const Rgb<T> brdf = material.albedo.albedo(hit.point) * (material.kd / pi<T>);
             const Vec3<float> p(hit.point), nf(n);
             Rgb<T> irradiance = direct(hit, n) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
             if (config_.gather_rays > 0) irradiance += gather(hit, n, rng);
             else irradiance += Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
-            radiance += brdf * irradiance;
+            radiance += diffuse_response(material, hit.point).brdf() * irradiance;
         }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                const SpecularSplit<T> split = specular_split(material, d, n, hit.entering);
+                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
                 if (max_component(weight * split.kr) > config_.min_weight)
                     radiance += split.kr * trace(spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n)), depth + 1, weight * split.kr, rng);
                 if (split.refracted && max_component(weight * split.kt) > config_.min_weight)
                     radiance += split.kt * trace(spawn_ray(hit.point, hit.error, hit.normal, *split.refracted), depth + 1, weight * split.kt, rng);
             }
         }
-        if constexpr (transmits<M>) {
-            if (!hit.entering) radiance *= beer_lambert(material.absorption, hit.t * length(d));
-        }
+        attenuate_inside(material, hit, ray, radiance);
         return radiance;
     }
 
@@ -160,7 +154,7 @@ private:
             });
             return irradiance;
         }
-        for_each_light_arriving<false>(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
+        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
         return irradiance;
     }
 
@@ -176,9 +170,8 @@ private:
             const Crossing<T>& c = next->crossing;
             sum += scene_->visit_material(*next, [&]<class M>(const M& material) -> Rgb<T> {
                 if constexpr (has_diffuse<M>) {
-                    const Vec3<T> facing = c.entering ? c.normal : -c.normal;
-                    const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(facing)));
-                    return material.albedo.albedo(c.point) * (material.kd / pi<T>) * e;
+                    const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
+                    return diffuse_response(material, c.point).brdf() * e;
                 } else {
                     return Rgb<T>(T(0)); // light seen through mirrors and glass arrives by the caustic map
                 }

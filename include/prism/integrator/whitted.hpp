@@ -9,7 +9,7 @@
 // every segment travelled inside a dielectric, a depth limit and an adaptive cut-off
 // when a path's weight becomes negligible (Hall and Greenberg 1983). Every branch is
 // chosen by the material's compile-time traits, so a scene without dielectrics
-// contains no refraction code.
+// contains no refraction code; the physics of each branch is material/scattering.hpp's.
 #pragma once
 
 #include <prism/core/check.hpp>
@@ -17,14 +17,10 @@
 #include <prism/core/rng.hpp>
 #include <prism/geometry/crossings.hpp>
 #include <prism/integrator/direct.hpp>
-#include <prism/integrator/specular.hpp>
 #include <prism/light/light.hpp>
+#include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
-#include <prism/optics/beer.hpp>
 #include <prism/optics/refract.hpp>
-
-#include <cmath>
-#include <optional>
 
 namespace prism {
 
@@ -72,15 +68,14 @@ private:
                                const Rgb<T>& weight) const noexcept
     {
         const Vec3<T>& d = ray.direction;
-        // The normal on the side the ray arrives from.
-        const Vec3<T> n = hit.entering ? hit.normal : -hit.normal;
+        const Vec3<T> n = hit.facing_normal();
         Rgb<T> radiance{T(0)};
 
         if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, n, d);
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                const SpecularSplit<T> split = specular_split(material, d, n, hit.entering);
+                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
                 const Rgb<T> reflect_weight = weight * split.kr;
                 if (max_component(reflect_weight) > config_.min_weight) {
                     const Ray<T> reflected = spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n));
@@ -95,9 +90,7 @@ private:
         }
 
         // A ray leaving a dielectric travelled inside it from its origin to here.
-        if constexpr (transmits<M>) {
-            if (!hit.entering) radiance *= beer_lambert(material.absorption, hit.t * length(d));
-        }
+        attenuate_inside(material, hit, ray, radiance);
         return radiance;
     }
 
@@ -106,29 +99,15 @@ private:
     {
         Rgb<T> irradiance{T(0)}; // sum of V E cos over the lights
         Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights
-        Rgb<T> highlight{T(0)};  // POV-Ray's Phong term, when asked for
+        Rgb<T> highlights{T(0)}; // POV-Ray's Phong term, for materials that have one
         const Vec3<T> mirror = reflect(d, n);
         for_each_light_arriving(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
             irradiance += v * s.irradiance * cos;
             unlit *= Rgb<T>(T(1)) - v;
-            if (material.phong > T(0)) {
-                const T alignment = dot(mirror, s.wi);
-                if (alignment > T(0)) highlight += (material.phong * power(alignment, material.phong_size) / pi<T>)*v * s.irradiance;
-            }
+            const T h = highlight(material, mirror, s.wi);
+            if (h > T(0)) highlights += h * v * s.irradiance;
         });
-        const Rgb<T> albedo = material.albedo.albedo(hit.point);
-        return albedo * ((material.kd / pi<T>)*irradiance + material.ka * scene_->ambient * unlit) + highlight;
-    }
-
-    /// x^n: by squaring when n is a whole number up to 1024 (a Phong exponent usually
-    /// is; std::pow is a slow library call), by std::pow otherwise.
-    [[nodiscard]] static T power(T x, T n) noexcept
-    {
-        if (!(n >= T(0) && n <= T(1024) && n == std::floor(n))) return std::pow(x, n);
-        T result = T(1);
-        for (auto e = static_cast<unsigned>(n); e != 0; e >>= 1u, x *= x)
-            if (e & 1u) result *= x;
-        return result;
+        return diffuse_response(material, hit.point).reflected(irradiance, scene_->ambient, unlit) + highlights;
     }
 
     const SceneT* scene_;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <prism/core/check.hpp>
+#include <prism/core/sampling.hpp>
 #include <prism/light/light.hpp>
 
 namespace prism {
@@ -18,6 +19,26 @@ struct DirectionalLight {
     [[nodiscard]] LightSample<T> sample(const Vec3<T>&) const noexcept
     {
         return {-normalize(direction), infinity<T>, irradiance};
+    }
+
+    /// E pi r^2 onto the target sphere, or onto the sphere around the whole scene when
+    /// aimed everywhere (nothing when the scene has nothing bounded to light).
+    [[nodiscard]] Rgb<T> photon_power(const PhotonAim<T>& aim) const noexcept
+    {
+        if (!aim.scene) return Rgb<T>(T(0));
+        const T radius = aim.target ? aim.target->radius : aim.scene->radius;
+        return irradiance * (pi<T> * radius * radius);
+    }
+
+    /// Uniform over the disk of the sphere's radius facing the light, upstream of
+    /// everything bounded (the projection disk), travelling along `direction`.
+    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v) const noexcept
+    {
+        const BoundingSphere<T>& scene = *aim.scene;
+        const BoundingSphere<T>& sphere = aim.target ? *aim.target : scene;
+        const Vec3<T> axis = normalize(direction);
+        const T upstream = length(sphere.center - scene.center) + scene.radius + sphere.radius;
+        return {{uniform_disk(sphere.center - upstream * axis, axis, sphere.radius, u, v), axis}};
     }
 
     constexpr void validate() const

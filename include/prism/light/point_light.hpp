@@ -3,6 +3,7 @@
 #pragma once
 
 #include <prism/core/check.hpp>
+#include <prism/core/sampling.hpp>
 #include <prism/light/light.hpp>
 
 namespace prism {
@@ -33,6 +34,26 @@ struct PointLight {
         return {to_light / r, r, e};
     }
 
+    /// Everywhere: the whole power. Toward a target sphere: the power into the cone that
+    /// holds it (Phi times the cone's solid angle / 4 pi), or the whole power when the
+    /// light is inside it.
+    [[nodiscard]] Rgb<T> photon_power(const PhotonAim<T>& aim) const noexcept
+    {
+        if (!aim.target) return power();
+        const Cone cone = cone_toward(*aim.target);
+        return cone.cos_half_angle <= T(-1) ? power() : power() * (T(0.5) * (T(1) - cone.cos_half_angle));
+    }
+
+    /// Uniform over the sphere of directions, or over the cone toward the target.
+    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v) const noexcept
+    {
+        const bool without_falloff = falloff == Falloff::none;
+        if (!aim.target) return {{position, uniform_sphere(u, v)}, Rgb<T>(T(1)), without_falloff};
+        const Cone cone = cone_toward(*aim.target);
+        const Vec3<T> direction = cone.cos_half_angle <= T(-1) ? uniform_sphere(u, v) : uniform_cone(cone.axis, cone.cos_half_angle, u, v);
+        return {{position, direction}, Rgb<T>(T(1)), without_falloff};
+    }
+
     constexpr void validate() const
     {
         detail::require_finite("PointLight position", position);
@@ -40,6 +61,21 @@ struct PointLight {
         // The photon tracer divides the power among the photons: it must be finite too.
         if (!is_finite(power()))
             detail::throw_invalid("PointLight intensity ", detail::describe(intensity), " is too large: its power 4 pi I overflows");
+    }
+
+private:
+    struct Cone {
+        Vec3<T> axis;
+        T cos_half_angle; ///< -1: every direction (the light is inside the sphere)
+    };
+
+    [[nodiscard]] Cone cone_toward(const BoundingSphere<T>& sphere) const noexcept
+    {
+        const Vec3<T> to = sphere.center - position;
+        const T distance = length(to);
+        if (!(distance > sphere.radius)) return {to / distance, T(-1)};
+        const T sin_half = sphere.radius / distance;
+        return {to / distance, prism::sqrt(T(1) - sin_half * sin_half)};
     }
 };
 

@@ -1,20 +1,21 @@
 // SPDX-License-Identifier: MIT
-// Dielectric: glass or water; Fresnel-weighted reflection and Snell refraction,
-// Beer-Lambert absorption inside.
+// Dielectric: glass or water; Fresnel-weighted reflection and Snell refraction into an
+// interior medium (Beer-Lambert absorption by default).
 #pragma once
 
 #include <prism/core/check.hpp>
 #include <prism/material/traits.hpp>
+#include <prism/medium/homogeneous.hpp>
 #include <prism/optics/fresnel.hpp>
 
 namespace prism {
 
-/// A clear or tinted dielectric. The Fresnel policy (ExactFresnel or SchlickFresnel)
-/// splits light between reflection and refraction; kr and kt are the seed's scale
-/// factors on top; absorption is Beer-Lambert's coefficient per unit length, per channel.
-/// The outside medium has index 1.
-template <Scalar T = float, class Fresnel = ExactFresnel>
-    requires FresnelPolicy<Fresnel, T>
+/// A clear or tinted dielectric of index `ior` (the outside has index 1). The Fresnel
+/// policy (ExactFresnel or SchlickFresnel) splits light between reflection and
+/// refraction; kr and kt are the seed's scale factors on top; `interior` is the medium
+/// inside (Homogeneous: Beer-Lambert absorption per unit length, per channel).
+template <Scalar T = float, class Fresnel = ExactFresnel, Medium Interior = Homogeneous<T>>
+    requires FresnelPolicy<Fresnel, T> && std::same_as<typename Interior::scalar_type, T>
 struct Dielectric {
     using scalar_type = T;
     using fresnel_policy = Fresnel;
@@ -22,18 +23,22 @@ struct Dielectric {
     static constexpr bool reflects = true;
     static constexpr bool transmits = true;
 
-    T ior = T(1.5);
-    Rgb<T> absorption{T(0)};
+    T ior = T(1.5);      ///< the index of refraction inside
+    Interior interior{}; ///< the medium that fills it
     T kr = T(1);
     T kt = T(1);
 
+    [[nodiscard]] constexpr T refractive_index() const noexcept { return ior; }
     /// Fresnel reflectance for incident cosine cos_i and eta = n_t / n_i.
     [[nodiscard]] constexpr T fresnel(T cos_i, T eta) const noexcept { return Fresnel::reflectance(cos_i, eta); }
+    [[nodiscard]] constexpr Rgb<T> reflection_tint() const noexcept { return Rgb<T>(kr); }
+    [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(kt); }
+    [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior; }
 
     constexpr void validate() const
     {
         detail::require_positive("Dielectric ior", ior);
-        detail::require_non_negative("Dielectric absorption", absorption);
+        interior.validate();
         detail::require_non_negative("Dielectric kr", kr);
         detail::require_non_negative("Dielectric kt", kt);
     }

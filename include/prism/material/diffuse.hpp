@@ -6,7 +6,25 @@
 #include <prism/material/texture.hpp>
 #include <prism/material/traits.hpp>
 
+#include <cmath>
+
 namespace prism {
+
+namespace detail {
+
+/// x^n: by squaring when n is a whole number up to 1024 (a Phong exponent usually is;
+/// std::pow is a slow library call), by std::pow otherwise.
+template <Scalar T>
+[[nodiscard]] constexpr T power(T x, T n) noexcept
+{
+    if (!(n >= T(0) && n <= T(1024) && n == std::floor(n))) return std::pow(x, n);
+    T result = T(1);
+    for (auto e = static_cast<unsigned>(n); e != 0; e >>= 1u, x *= x)
+        if (e & 1u) result *= x;
+    return result;
+}
+
+} // namespace detail
 
 /// Lambertian reflection, BRDF = albedo / pi, scaled by kd for light from the lights and
 /// by ka for the scene's ambient term (seen only where every light is occluded).
@@ -27,6 +45,16 @@ struct Diffuse {
     T ka = T(1);
     T phong = T(0);
     T phong_size = T(40);
+
+    [[nodiscard]] constexpr DiffuseResponse<T> diffuse(const Vec3<T>& p) const noexcept { return {albedo.albedo(p), kd, ka}; }
+
+    /// The Phong highlight's weight for cos_alpha = R . L (0 when phong is 0 or the light
+    /// is behind the mirror direction): radiance phong cos_alpha^phong_size E / pi.
+    [[nodiscard]] constexpr T highlight(T cos_alpha) const noexcept
+    {
+        if (!(phong > T(0)) || !(cos_alpha > T(0))) return T(0);
+        return phong * detail::power(cos_alpha, phong_size) / pi<T>;
+    }
 
     constexpr void validate() const
     {

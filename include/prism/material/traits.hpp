@@ -1,19 +1,86 @@
 // SPDX-License-Identifier: MIT
-// Material traits known at compile time, on which integrators branch with if constexpr.
+// What a material can do, as capabilities the integrators branch on with if constexpr.
 //
-// Every material states three facts as static constexpr members:
-//   has_diffuse  it reflects light diffusely (Lambert, albedo / pi), lit by shadow rays
-//   reflects     it has a mirror (delta) reflection lobe
-//   transmits    it refracts light through its interior (a dielectric)
-// A scene whose materials never transmit compiles no refraction code at all.
+// A material declares three facts as static constexpr members, and each fact it
+// declares is a promise of the functions that capability needs, checked by the
+// Material concept (so a promise without its function fails at the user's line, not
+// inside an integrator):
+//   has_diffuse  a Lambertian lobe, lit by shadow rays and photons     DiffuseLobe
+//   reflects     a mirror (delta) reflection that is not a dielectric's DeltaReflection
+//   transmits    a dielectric interface: Fresnel-split delta reflection  DeltaTransmission
+//                and refraction into the medium() that fills it          InteriorMedium
+// A scene whose materials never transmit compiles no refraction code at all. The
+// light transport over these capabilities (what a diffuse point reflects, how an
+// interface splits a ray, how a photon scatters, what a shadow ray lets through) is
+// written once, in material/scattering.hpp; integrators call it and never read a
+// material's fields.
 #pragma once
 
 #include <prism/core/math.hpp>
+#include <prism/medium/medium.hpp>
 
 #include <concepts>
+#include <type_traits>
 
 namespace prism {
 
+/// What a diffuse lobe reflects at one point: Lambert's BRDF albedo kd / pi for light
+/// from the lights, albedo ka for the scene's ambient light (the seed's kd and ka scale
+/// factors on top of a physical albedo).
+template <Scalar T>
+struct DiffuseResponse {
+    Rgb<T> albedo; ///< reflectance at the point, in [0, 1] per channel
+    T kd;          ///< scale on light from the lights
+    T ka;          ///< scale on the ambient term
+
+    /// The BRDF, albedo kd / pi.
+    [[nodiscard]] constexpr Rgb<T> brdf() const noexcept { return albedo * (kd / pi<T>); }
+
+    /// Radiance reflected for irradiance E from the lights and ambient radiance A
+    /// reaching the point unoccluded by the fraction `unlit`: albedo (kd/pi E + ka A unlit).
+    [[nodiscard]] constexpr Rgb<T> reflected(const Rgb<T>& irradiance, const Rgb<T>& ambient, const Rgb<T>& unlit) const noexcept
+    {
+        return albedo * ((kd / pi<T>)*irradiance + ka * ambient * unlit);
+    }
+
+    /// The fraction of a photon's power the lobe sends on (albedo kd, at most 1).
+    [[nodiscard]] constexpr Rgb<T> photon_reflectance() const noexcept { return component_min(albedo * kd, Rgb<T>(T(1))); }
+};
+
+/// A Lambertian lobe: `diffuse(p)` gives its response at the surface point p.
+template <class M>
+concept DiffuseLobe = requires(const M& material, const Vec3<typename M::scalar_type>& p) {
+    { material.diffuse(p) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
+};
+
+/// A mirror that is not an interface (a conductor): `reflectance(cos_i)` per channel for
+/// light arriving at cosine cos_i.
+template <class M>
+concept DeltaReflection = requires(const M& material, typename M::scalar_type cos_i) {
+    { material.reflectance(cos_i) } -> std::same_as<Rgb<typename M::scalar_type>>;
+};
+
+/// A dielectric interface with index `refractive_index()` inside and 1 outside. `fresnel(cos_i, eta)`
+/// is the share of light reflected for the incident cosine cos_i and eta = n_t / n_i
+/// (1 under total internal reflection); the reflected and refracted rays are then
+/// weighted by `reflection_tint()` and `transmission_tint()` (the seed's kr and kt).
+template <class M>
+concept DeltaTransmission = requires(const M& material, typename M::scalar_type cos_i, typename M::scalar_type eta) {
+    { material.refractive_index() } -> std::same_as<typename M::scalar_type>;
+    { material.fresnel(cos_i, eta) } -> std::same_as<typename M::scalar_type>;
+    { material.reflection_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
+    { material.transmission_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
+};
+
+/// The medium filling a transmissive object: `medium()` (see medium/medium.hpp).
+template <class M>
+concept InteriorMedium = requires(const M& material) {
+    requires Medium<std::remove_cvref_t<decltype(material.medium())>>;
+    requires std::same_as<typename std::remove_cvref_t<decltype(material.medium())>::scalar_type, typename M::scalar_type>;
+};
+
+/// A material: its scalar type, the three capability flags, each flag's functions, and
+/// validate() (throws std::invalid_argument for a bad parameter, naming it).
 template <class M>
 concept Material = requires(const M& material) {
     requires Scalar<typename M::scalar_type>;
@@ -21,7 +88,8 @@ concept Material = requires(const M& material) {
     { M::reflects } -> std::convertible_to<bool>;
     { M::transmits } -> std::convertible_to<bool>;
     material.validate();
-};
+} && (!M::has_diffuse || DiffuseLobe<M>) && (!M::reflects || M::transmits || DeltaReflection<M>) &&
+                   (!M::transmits || (DeltaTransmission<M> && InteriorMedium<M>)) && (M::has_diffuse || M::reflects || M::transmits);
 
 /// Purely specular: every scattered direction is a delta (no diffuse lobe).
 template <Material M>

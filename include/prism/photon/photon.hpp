@@ -10,6 +10,7 @@
 
 #include <prism/core/math.hpp>
 #include <prism/core/rng.hpp>
+#include <prism/core/sampling.hpp>
 
 #include <algorithm>
 #include <array>
@@ -37,9 +38,9 @@ public:
 
     Photon() = default;
 
-    /// `from`: unit direction back toward where the photon came from.
-    Photon(const Vec3<float>& at, const Rgb<float>& power, const Vec3<float>& from, std::uint8_t flag_bits) noexcept
-        : position(at), flags(flag_bits), rgbe_(encode_rgbe(power)), octahedral_(encode_octahedral(from))
+    /// `toward_source`: unit direction back toward where the photon came from.
+    Photon(const Vec3<float>& at, const Rgb<float>& power, const Vec3<float>& toward_source, std::uint8_t flag_bits) noexcept
+        : position(at), flags(flag_bits), rgbe_(encode_rgbe(power)), octahedral_(encode_octahedral(toward_source))
     {
     }
 
@@ -52,15 +53,15 @@ public:
     }
 
     /// The unit direction back toward where the photon came from.
-    [[nodiscard]] Vec3<float> from() const noexcept { return normalize(unnormalised_from()); }
+    [[nodiscard]] Vec3<float> toward_source() const noexcept { return normalize(unnormalised_toward_source()); }
 
     /// Whether the photon arrived on the side of a surface that the normal n points to.
-    [[nodiscard]] bool arrived_on(const Vec3<float>& n) const noexcept { return dot(unnormalised_from(), n) > 0.0f; }
+    [[nodiscard]] bool arrived_on(const Vec3<float>& n) const noexcept { return dot(unnormalised_toward_source(), n) > 0.0f; }
 
     friend bool operator==(const Photon&, const Photon&) = default;
 
 private:
-    [[nodiscard]] Vec3<float> unnormalised_from() const noexcept
+    [[nodiscard]] Vec3<float> unnormalised_toward_source() const noexcept
     {
         const float u = float(octahedral_[0]) * (2.0f / 65535.0f) - 1.0f, v = float(octahedral_[1]) * (2.0f / 65535.0f) - 1.0f;
         const float z = 1.0f - std::abs(u) - std::abs(v);
@@ -103,60 +104,5 @@ private:
 };
 
 static_assert(sizeof(Photon) == 24);
-
-/// A direction uniform on the unit sphere: z = 1 - 2u, phi = 2 pi v (errata 4: no
-/// rejection sampling of a cube, whose accepted points were never normalised).
-template <Scalar T>
-[[nodiscard]] inline Vec3<T> uniform_sphere(T u, T v) noexcept
-{
-    const T z = T(1) - T(2) * u;
-    const T r = prism::sqrt(clamp(T(1) - z * z, T(0), T(1)));
-    const T phi = T(2) * pi<T> * v;
-    return {r * std::cos(phi), r * std::sin(phi), z};
-}
-
-template <Scalar T>
-[[nodiscard]] inline Vec3<T> uniform_sphere(Pcg32& rng) noexcept
-{
-    const T u = rng.uniform<T>();
-    return uniform_sphere(u, rng.uniform<T>());
-}
-
-/// Two unit vectors that make an orthonormal frame with the unit vector n (Duff et al.
-/// 2017, "Building an Orthonormal Basis, Revisited").
-template <Scalar T>
-[[nodiscard]] inline std::pair<Vec3<T>, Vec3<T>> orthonormal_frame(const Vec3<T>& n) noexcept
-{
-    const T sign = std::copysign(T(1), n.z);
-    const T a = T(-1) / (sign + n.z);
-    const T b = n.x * n.y * a;
-    return {{T(1) + sign * n.x * n.x * a, sign * b, -sign * n.x}, {b, sign + n.y * n.y * a, -n.y}};
-}
-
-/// A cosine-distributed direction about the unit normal n (Malley's method: a uniform
-/// point on the disk, lifted onto the hemisphere): the diffuse bounce of a photon.
-template <Scalar T>
-[[nodiscard]] inline Vec3<T> cosine_hemisphere(const Vec3<T>& n, Pcg32& rng) noexcept
-{
-    const T r = prism::sqrt(rng.uniform<T>());
-    const T phi = T(2) * pi<T> * rng.uniform<T>();
-    const T x = r * std::cos(phi), y = r * std::sin(phi);
-    const T z = prism::sqrt(clamp(T(1) - x * x - y * y, T(0), T(1)));
-    const auto [s, t] = orthonormal_frame(n);
-    return x * s + y * t + z * n;
-}
-
-/// Russian roulette (errata 7): the photon survives with probability p = the largest
-/// channel of its reflectance (at most 1), and a survivor's power is scaled per channel
-/// by reflectance / p, so the expected power leaving is reflectance times the power
-/// arriving, in every channel. Returns false when the photon is absorbed.
-template <Scalar T>
-[[nodiscard]] inline bool russian_roulette(Rgb<T>& power, const Rgb<T>& reflectance, Pcg32& rng) noexcept
-{
-    const T p = clamp(max_component(reflectance), T(0), T(1));
-    if (!(p > T(0)) || rng.uniform<T>() >= p) return false;
-    power *= reflectance / p;
-    return true;
-}
 
 } // namespace prism

@@ -36,7 +36,7 @@ struct Estimator {
     std::size_t k = 0;   ///< 0: every photon within `radius`; else the k nearest, searched no further than `radius`
     float radius = 0.1f; ///< the fixed radius, or the k-nearest search's maximum distance
     Filter filter = Filter::box;
-    float disk = 1.0f;          ///< keep photons within disk * r of the tangent plane; < 1 flattens the sphere against light leaks
+    float max_height_ratio = 1.0f; ///< keep photons within this times r of the tangent plane; < 1 flattens the sphere to a disk against light leaks
     std::uint8_t excluded = 0;  ///< leave out photons with any of these flags
 };
 
@@ -124,7 +124,7 @@ public:
             const Photon& photon = photons_[index];
             if ((photon.flags & estimator.excluded) != 0 || !photon.arrived_on(n)) return;
             const float height = dot(photon.position - p, n);
-            if (height * height > estimator.disk * estimator.disk * r2) return;
+            if (height * height > estimator.max_height_ratio * estimator.max_height_ratio * r2) return;
             sum += photon.power() * weight(d2, r2);
         };
         float r2 = estimator.radius * estimator.radius;
@@ -178,7 +178,7 @@ public:
             const Photon& photon = photons_[i];
             if (photon.flags & Photon::shadow) continue;
             samples.push_back(photon);
-            irradiance_.push_back(irradiance<K>(photon.position, photon.from()));
+            irradiance_.push_back(irradiance<K>(photon.position, photon.toward_source()));
         }
         samples_ = std::move(samples);
         sample_tree_.emplace(PhotonPositions{samples_});

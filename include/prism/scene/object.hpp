@@ -27,8 +27,7 @@ struct Object {
     constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m))
     {
         material.validate();
-        const Aabb<scalar_type> b = shape.bounds();
-        bounded = is_finite(b.lo) && is_finite(b.hi);
+        bounded = shape.bounds().bounded();
     }
 };
 

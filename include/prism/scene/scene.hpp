@@ -6,7 +6,7 @@
 #include <prism/core/interval.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/light/light.hpp>
-#include <prism/optics/beer.hpp>
+#include <prism/material/scattering.hpp>
 #include <prism/scene/hit.hpp>
 #include <prism/scene/object.hpp>
 
@@ -14,13 +14,16 @@
 #include <cstdint>
 #include <optional>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 namespace prism {
 
-/// The lights of a scene, each of its own type.
+/// The lights of a scene, each of its own type, at least one.
 template <Light... Ls>
 struct Lights {
+    static_assert(sizeof...(Ls) > 0, "Lights{} holds no light: a scene needs at least one (a PointLight, a DirectionalLight, ...)");
+
     std::tuple<Ls...> items;
 
     constexpr explicit Lights(Ls... lights) : items(std::move(lights)...)
@@ -29,10 +32,35 @@ struct Lights {
     }
 };
 
+namespace detail {
+
+template <class X>
+struct is_light_list : std::false_type {};
+template <class... Ls>
+struct is_light_list<Lights<Ls...>> : std::true_type {};
+
+/// Whether every light of the list has scalar type T.
+template <class List, class T>
+inline constexpr bool lights_of_scalar = false;
+template <class... Ls, class T>
+inline constexpr bool lights_of_scalar<Lights<Ls...>, T> = (std::same_as<typename Ls::scalar_type, T> && ...);
+
+} // namespace detail
+
+/// A scene's first argument: Lights{...}.
+template <class X>
+concept LightList = detail::is_light_list<X>::value;
+
+/// How shadow rays treat dielectrics.
+enum class ShadowsThroughGlass : bool {
+    attenuated, ///< light passes, attenuated by the medium and the transmission tint (Whitted)
+    blocked,    ///< glass casts a full shadow: its light arrives by a caustic map instead
+};
+
 /// A scene: its lights, object slots (one type each), background and ambient radiance.
 /// Which shapes and materials exist is part of the type, so integrators compile only
 /// the code those materials need.
-template <class LightList, Slot... Slots>
+template <LightList LightsOfScene, Slot... Slots>
 class Scene {
     static_assert(sizeof...(Slots) > 0, "a scene needs at least one object");
 
@@ -40,6 +68,7 @@ public:
     using scalar_type = typename std::tuple_element_t<0, std::tuple<Slots...>>::scalar_type;
     using T = scalar_type;
     static_assert((std::same_as<typename Slots::scalar_type, T> && ...), "all objects must share one scalar type");
+    static_assert(detail::lights_of_scalar<LightsOfScene, T>, "every light must have the objects' scalar type (a PointLight<float> in a scene of double objects?)");
 
     /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
     static constexpr bool has_transmissive = (transmits<typename Slots::material_type> || ...);
@@ -49,17 +78,21 @@ public:
 
     // Scene Public Members
 
-    LightList lights;
+    LightsOfScene lights;
     std::tuple<Slots...> slots;
     Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
     Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
 
-    constexpr Scene(LightList light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
+    constexpr Scene(LightsOfScene light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
     {
         // One box around every bounded object: a ray that misses it skips them all.
         std::apply([this](const auto&... slot) { (add_to_cluster(slot), ...); }, slots);
         bounded_objects_ = !cluster_.empty();
     }
+
+    /// The box around every bounded object (empty when there is none): the render's
+    /// cull for whole scenes, and the photon tracer's extent.
+    [[nodiscard]] constexpr const Aabb<T>& bounds() const noexcept { return cluster_; }
 
     constexpr void validate() const
     {
@@ -84,12 +117,13 @@ public:
     }
 
     /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
-    /// object is in the way, otherwise Beer-Lambert absorption (times kt per boundary)
-    /// through every dielectric crossed, refraction ignored (the lecture notes' shadow
-    /// rays through transparent objects). With GlassTransmits = false dielectrics block
-    /// the ray like any other object: a photon mapper brings the light through them by
-    /// its caustic map instead (as POV-Ray does for photon targets).
-    template <bool GlassTransmits = true>
+    /// object is in the way, otherwise what every dielectric crossed lets through
+    /// (attenuate_shadow_ray: its medium over the length inside, its tint per boundary;
+    /// refraction ignored, the lecture notes' shadow rays through transparent objects).
+    /// With ShadowsThroughGlass::blocked dielectrics block the ray like any other
+    /// object: a photon mapper brings the light through them by its caustic map instead
+    /// (as POV-Ray does for photon targets).
+    template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated>
     [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
     {
         Rgb<T> tr{T(1)};
@@ -97,7 +131,7 @@ public:
         // (culling it can only let light through where rounding alone would block it).
         const bool near_cluster = bounded_objects_ && (cluster_.contains(ray.origin) || !cluster_.clip(ray, {T(0), t_max}).empty());
         const bool open = [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return (transmittance_of_slot<I, GlassTransmits>(ray, t_max, tr, near_cluster) && ...);
+            return (transmittance_of_slot<I, Glass>(ray, t_max, tr, near_cluster) && ...);
         }(std::index_sequence_for<Slots...>{});
         return open ? tr : Rgb<T>{T(0)};
     }
@@ -116,6 +150,15 @@ public:
         std::apply([&](const auto&... light) { (f(light), ...); }, lights.items);
     }
 
+    static constexpr std::size_t light_count = std::tuple_size_v<decltype(LightsOfScene::items)>;
+
+    /// Call f(light) with light number i (in the order of Lights{...}), with its static type.
+    template <class F>
+    decltype(auto) visit_light(std::size_t i, F&& f) const
+    {
+        return visit_light_at<0>(i, std::forward<F>(f));
+    }
+
 private:
     Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
     bool bounded_objects_ = false;
@@ -131,10 +174,20 @@ private:
     };
 
     template <class S>
-    void add_to_cluster(const S& slot) noexcept
+    constexpr void add_to_cluster(const S& slot) noexcept
     {
         for (const auto& object : objects_of(slot))
-            if (object.bounded) cluster_ = {component_min(cluster_.lo, object.shape.bounds().lo), component_max(cluster_.hi, object.shape.bounds().hi)};
+            if (object.bounded) cluster_ = cluster_.merged(object.shape.bounds());
+    }
+
+    template <std::size_t I, class F>
+    decltype(auto) visit_light_at(std::size_t i, F&& f) const
+    {
+        if constexpr (I + 1 < light_count) {
+            if (i != I) return visit_light_at<I + 1>(i, std::forward<F>(f));
+        }
+        PRISM_ASSERT(i == I);
+        return f(std::get<I>(lights.items));
     }
 
     /// Whether the ray may come near the cluster's box within the range (conservatively:
@@ -183,7 +236,7 @@ private:
         return Hit<T>{crossings.front(), nearest.slot, nearest.index};
     }
 
-    template <std::size_t I, bool GlassTransmits>
+    template <std::size_t I, ShadowsThroughGlass Glass>
     bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr, bool near_cluster) const noexcept
     {
         using Slot = std::tuple_element_t<I, std::tuple<Slots...>>;
@@ -192,21 +245,10 @@ private:
         for (const auto& object : objects_of(std::get<I>(slots))) {
             if (!worth_testing(object, near_cluster)) continue;
             const auto crossings = object.shape.template crossings<false>(ray, range);
-            if constexpr (!transmits<M> || !GlassTransmits) {
+            if constexpr (!transmits<M> || Glass == ShadowsThroughGlass::blocked) {
                 if (!crossings.empty()) return false;
             } else {
-                // Length of the ray inside the solid within [0, t_max].
-                bool inside = crossings.inside_at_start;
-                T previous = T(0), inside_length = T(0);
-                for (const Crossing<T>& c : crossings) {
-                    if (inside) inside_length += c.t - previous;
-                    inside = c.entering;
-                    previous = c.t;
-                }
-                if (inside) inside_length += t_max - previous;
-                if (inside_length > T(0))
-                    tr *= beer_lambert(object.material.absorption, inside_length * length(ray.direction));
-                for (std::size_t k = 0; k < crossings.size(); ++k) tr *= object.material.kt;
+                attenuate_shadow_ray(object.material, crossings, ray, t_max, tr);
                 if (max_component(tr) <= T(0)) return false;
             }
         }
@@ -224,7 +266,7 @@ private:
     }
 };
 
-template <class LightList, class... Slots>
-Scene(LightList, Slots...) -> Scene<LightList, Slots...>;
+template <class L, class... Slots>
+Scene(L, Slots...) -> Scene<L, Slots...>;
 
 } // namespace prism

@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: MIT
+// Light transport over a material's capabilities, written once for every integrator:
+// what a diffuse point reflects, how a delta interface splits a ray, what light keeps
+// while it travels inside an object, what a shadow ray keeps through one, and how a
+// photon scatters. The integrators (Whitted, PhotonMapper), the photon tracer and the
+// scene's shadow rays call these and never read a material's fields, so a new material
+// is one header that satisfies the capability concepts of material/traits.hpp.
+#pragma once
+
+#include <prism/core/rng.hpp>
+#include <prism/core/sampling.hpp>
+#include <prism/geometry/crossings.hpp>
+#include <prism/material/traits.hpp>
+#include <prism/optics/refract.hpp>
+
+#include <cstddef>
+#include <optional>
+
+namespace prism {
+
+// Diffuse lobe
+
+/// The diffuse response at the surface point p.
+template <Material M>
+    requires DiffuseLobe<M>
+[[nodiscard]] constexpr DiffuseResponse<typename M::scalar_type> diffuse_response(const M& material,
+                                                                                 const Vec3<typename M::scalar_type>& p) noexcept
+{
+    return material.diffuse(p);
+}
+
+/// A non-physical highlight (POV-Ray's `phong`), for materials that have one: its weight
+/// for a light in direction wi seen along the mirror direction `mirror` of the viewing
+/// ray (radiance weight * E); 0 for every other material.
+template <Material M>
+[[nodiscard]] constexpr typename M::scalar_type highlight(const M& material, const Vec3<typename M::scalar_type>& mirror,
+                                                          const Vec3<typename M::scalar_type>& wi) noexcept
+{
+    if constexpr (requires { { material.highlight(dot(mirror, wi)) } -> std::same_as<typename M::scalar_type>; })
+        return material.highlight(dot(mirror, wi));
+    else
+        return typename M::scalar_type(0);
+}
+
+// Delta interactions
+
+/// The weights of the reflected and transmitted rays at a specular surface, and the
+/// transmitted direction (none under total internal reflection or for a conductor).
+template <Scalar T>
+struct SpecularSplit {
+    Rgb<T> kr{T(0)};
+    Rgb<T> kt{T(0)};
+    std::optional<Vec3<T>> refracted;
+};
+
+/// How a mirror or an interface splits the unit incident direction d arriving at a
+/// surface whose unit normal n faces it (Crossing::facing_normal); `entering`: d goes
+/// into the material. A dielectric splits by Fresnel (all to reflection under total
+/// internal reflection) times its tints, with eta = n_inside or 1 / n_inside by the
+/// side; a conductor reflects by its reflectance.
+template <Material M>
+    requires(M::reflects || M::transmits)
+[[nodiscard]] SpecularSplit<typename M::scalar_type> delta_split(const M& material, const Vec3<typename M::scalar_type>& d,
+                                                                const Vec3<typename M::scalar_type>& n, bool entering) noexcept
+{
+    using T = typename M::scalar_type;
+    const T cos_i = clamp(-dot(d, n), T(0), T(1));
+    SpecularSplit<T> split;
+    if constexpr (M::transmits) {
+        const T eta = entering ? material.refractive_index() : T(1) / material.refractive_index();
+        split.refracted = refract(d, n, eta);
+        const T fresnel = split.refracted ? material.fresnel(cos_i, eta) : T(1);
+        split.kr = material.reflection_tint() * fresnel;
+        split.kt = material.transmission_tint() * (T(1) - fresnel);
+    } else {
+        split.kr = material.reflectance(cos_i);
+    }
+    return split;
+}
+
+// Media
+
+/// Light that reached `hit` along `ray` from the ray's origin travelled inside the
+/// object's medium when the ray leaves there: multiply `light` by what the medium lets
+/// through over that length. Nothing for a material without an interior.
+template <Material M>
+constexpr void attenuate_inside(const M& material, const Crossing<typename M::scalar_type>& hit,
+                                const Ray<typename M::scalar_type>& ray, Rgb<typename M::scalar_type>& light) noexcept
+{
+    if constexpr (M::transmits) {
+        if (!hit.entering) light *= material.medium().transmittance(hit.t * length(ray.direction));
+    }
+}
+
+/// What a shadow ray along [0, t_max] keeps through one transmissive object, given the
+/// object's crossings (without surfaces) in that range: its medium's transmittance over
+/// the length inside, then its transmission tint once per boundary crossed, multiplied
+/// into `light`. Refraction is ignored: the lecture notes' shadow rays through
+/// transparent objects.
+template <Material M, std::size_t N>
+    requires(M::transmits)
+constexpr void attenuate_shadow_ray(const M& material, const Crossings<typename M::scalar_type, N>& crossings,
+                                    const Ray<typename M::scalar_type>& ray, typename M::scalar_type t_max,
+                                    Rgb<typename M::scalar_type>& light) noexcept
+{
+    using T = typename M::scalar_type;
+    bool inside = crossings.inside_at_start;
+    T previous = T(0), inside_length = T(0);
+    for (const Crossing<T>& c : crossings) {
+        if (inside) inside_length += c.t - previous;
+        inside = c.entering;
+        previous = c.t;
+    }
+    if (inside) inside_length += t_max - previous;
+    if (inside_length > T(0)) light *= material.medium().transmittance(inside_length * length(ray.direction));
+    for (std::size_t k = 0; k < crossings.size(); ++k) light *= material.transmission_tint();
+}
+
+// Photons
+
+/// A photon's next direction after scattering, and whether the bounce was diffuse.
+template <Scalar T>
+struct PhotonBounce {
+    Vec3<T> direction;
+    bool diffuse;
+};
+
+/// Scatter a photon of `power` arriving along the unit direction d at `hit` (n: the
+/// unit normal facing it), by Russian roulette per channel (errata 7): a diffuse lobe
+/// reflects its photon reflectance into a cosine-distributed direction; an interface
+/// reflects with probability F and refracts otherwise, weighted by its tints; a
+/// conductor reflects by its reflectance. A material with a diffuse and a delta lobe
+/// first chooses one by their largest channels, dividing the power by that choice's
+/// probability. Returns nothing when the photon is absorbed; scales `power` otherwise.
+template <Material M>
+[[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
+                                                                                   const Crossing<typename M::scalar_type>& hit,
+                                                                                   const Vec3<typename M::scalar_type>& d,
+                                                                                   const Vec3<typename M::scalar_type>& n,
+                                                                                   Rgb<typename M::scalar_type>& power, Pcg32& rng) noexcept
+{
+    using T = typename M::scalar_type;
+    using Bounce = std::optional<PhotonBounce<T>>;
+    const auto diffuse = [&]() -> Bounce {
+        if constexpr (M::has_diffuse) {
+            if (!russian_roulette(power, material.diffuse(hit.point).photon_reflectance(), rng)) return std::nullopt;
+            return PhotonBounce<T>{cosine_hemisphere(n, rng), true};
+        } else {
+            return std::nullopt;
+        }
+    };
+    const auto delta = [&]() -> Bounce {
+        const T cos_i = clamp(-dot(d, n), T(0), T(1));
+        if constexpr (M::transmits) {
+            const T eta = hit.entering ? material.refractive_index() : T(1) / material.refractive_index();
+            const auto refracted = refract(d, n, eta);
+            const T fresnel = refracted ? material.fresnel(cos_i, eta) : T(1);
+            const bool reflect_it = rng.uniform<T>() < fresnel;
+            if (!russian_roulette(power, reflect_it ? material.reflection_tint() : material.transmission_tint(), rng)) return std::nullopt;
+            return PhotonBounce<T>{reflect_it ? reflect(d, n) : *refracted, false};
+        } else if constexpr (M::reflects) {
+            if (!russian_roulette(power, material.reflectance(cos_i), rng)) return std::nullopt;
+            return PhotonBounce<T>{reflect(d, n), false};
+        } else {
+            return std::nullopt;
+        }
+    };
+    if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
+        // Both lobes: choose one by its share of the reflected light (largest channels).
+        const T w_diffuse = max_component(material.diffuse(hit.point).photon_reflectance());
+        const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
+        const T w_delta = max_component(split.kr + split.kt);
+        if (!(w_diffuse + w_delta > T(0))) return std::nullopt;
+        const T p_diffuse = w_diffuse / (w_diffuse + w_delta);
+        if (rng.uniform<T>() < p_diffuse) {
+            power /= p_diffuse;
+            return diffuse();
+        }
+        power /= T(1) - p_diffuse;
+        return delta();
+    } else if constexpr (M::has_diffuse) {
+        return diffuse();
+    } else {
+        return delta();
+    }
+}
+
+} // namespace prism
