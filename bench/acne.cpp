@@ -60,7 +60,7 @@ void sweep(bench::Csv& csv, const char* shape_name, const char* scalar, auto&& m
             const auto crossings = shape.crossings({eye, d}, {T(0), prism::infinity<T>});
             if (crossings.empty()) continue;
             const prism::Crossing<T>& hit = crossings.front();
-            const Vec3<T> n = hit.entering ? hit.normal : -hit.normal; // facing the eye
+            const Vec3<T> n = hit.facing_normal(); // facing the eye
             // The three secondary directions, all leaving on the eye's side.
             Vec3<T> tangent = prism::cross(n, random_direction<T>(rng));
             tangent = prism::normalize(tangent);

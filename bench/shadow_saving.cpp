@@ -22,13 +22,13 @@ int main(int argc, char** argv)
     using Mapper = prism::PhotonMapper<Scene>;
     const auto camera = scenes::cornell_camera<float>();
     const prism::RenderConfig config{.width = size, .height = size, .spp = 1, .threads = 2, .seed = 1, .progress = false};
-    const Mapper plain(scene, {.photons = {.global_photons = 200000, .caustic_photons = 200000, .seed = 1}, .gather_rays = 0});
+    const Mapper plain(scene, {.tracing = {.global_photons = 200000, .caustic_photons = 200000, .seed = 1}, .gather_rays = 0});
     bench::Csv csv(results / "shadow_saving.csv", "visibility_k,decided,wrong,render_seconds,plain_seconds,rmse,max_difference");
     prism::Film reference(1, 1);
     const double plain_seconds = bench::min_seconds(3, [&] { reference = prism::render(camera, plain, config); });
     std::printf("Cornell box %dx%d, shadow rays skipped where the k nearest global photons agree:\n", size, size);
     for (const std::size_t k : {std::size_t(8), std::size_t(16), std::size_t(32), std::size_t(64)}) {
-        const Mapper saving(scene, {.photons = {.global_photons = 200000, .caustic_photons = 200000, .seed = 1}, .gather_rays = 0,
+        const Mapper saving(scene, {.tracing = {.global_photons = 200000, .caustic_photons = 200000, .seed = 1}, .gather_rays = 0,
                                     .visibility_k = k});
         const prism::CameraRays<float> rays = camera.rays(size, size);
         long points = 0, decided = 0, wrong = 0;
@@ -39,13 +39,13 @@ int main(int argc, char** argv)
                 const bool diffuse = scene.visit_material(*hit, []<class M>(const M&) { return prism::has_diffuse<M>; });
                 if (!diffuse) continue;
                 const prism::Crossing<float>& c = hit->crossing;
-                const prism::Vec3<float> n = c.entering ? c.normal : -c.normal;
+                const prism::Vec3<float> n = c.facing_normal();
                 ++points;
                 const auto said = saving.visibility_from_photons(c.point, n);
                 if (!said) continue;
                 ++decided;
                 bool lit = false;
-                prism::for_each_light_arriving<false>(scene, c, n, [&](const prism::LightSample<float>&, const prism::Rgb<float>& v, float) {
+                prism::for_each_light_arriving<prism::ShadowsThroughGlass::blocked>(scene, c, n, [&](const prism::LightSample<float>&, const prism::Rgb<float>& v, float) {
                     lit = v.x > 0.0f;
                 });
                 wrong += *said != lit;

@@ -318,7 +318,7 @@ Counts fire(const Placement& placement, double distance, std::uint64_t seed, std
         // than a tangent.
         const Vec3<T> d = normalize(ray.direction);
         if (!is_finite(d) || bad) continue;
-        const Vec3<T> facing = c.entering ? c.normal : -c.normal;
+        const Vec3<T> facing = c.facing_normal();
         const Vec3<T> reflected = reflect(d, facing);
         const Vec3<double> p{c.point}, n{c.normal};
         const double delta = 64 * max_component(Vec3<double>(c.error)) + 1e-300;

@@ -54,7 +54,7 @@ int reintersections(prism::Pcg32& rng, int count, Make&& make)
         const auto crossings = shape.crossings({eye, prism::normalize(inside - eye)}, {T(0), prism::infinity<T>});
         if (crossings.empty()) continue;
         const prism::Crossing<T>& hit = crossings.front();
-        const prism::Vec3<T> w = random_hemisphere<T>(rng, hit.entering ? hit.normal : -hit.normal);
+        const prism::Vec3<T> w = random_hemisphere<T>(rng, hit.facing_normal());
         const prism::Ray<T> leaving = prism::spawn_ray(hit.point, hit.error, hit.normal, w);
         self_hits += !shape.crossings(leaving, {T(0), prism::infinity<T>}).empty();
     }

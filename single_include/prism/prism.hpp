@@ -400,6 +400,7 @@ inline void require_memory(const std::string& what, double bytes)
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 namespace prism {
@@ -426,10 +427,11 @@ struct ArrayPoints {
 };
 
 /// One neighbour: its squared distance from the query and its index in the point set.
+/// Trivially default-constructible, so a search's buffer costs nothing to set up.
 template <Scalar T>
 struct Neighbour {
-    T distance2 = infinity<T>;
-    std::uint32_t index = 0;
+    T distance2;
+    std::uint32_t index;
 
     /// Nearer first; at equal distance, the lower index first.
     friend constexpr bool operator<(const Neighbour& a, const Neighbour& b) noexcept
@@ -439,10 +441,93 @@ struct Neighbour {
     friend constexpr bool operator==(const Neighbour&, const Neighbour&) = default;
 };
 
+/// What a search collects. `bound()` is the squared distance beyond which it takes
+/// nothing more (the search prunes every cell farther than that); `add(distance2,
+/// index)` offers it a point within the bound.
+template <class R, class T>
+concept ResultSet = requires(R& results, const R& const_results, T distance2, std::uint32_t index) {
+    { const_results.bound() } -> std::same_as<T>;
+    results.add(distance2, index);
+};
+
+/// The k nearest points within a maximum distance, in a buffer of at least k the caller
+/// owns: a max-heap on (distance, index) while searching, so the farthest is first.
+template <Scalar T>
+class KNearest {
+public:
+    /// k is capped by the buffer's size; max_distance2 is the squared maximum distance.
+    constexpr KNearest(std::span<Neighbour<T>> buffer, std::size_t k, T max_distance2) noexcept
+        : heap_(buffer.data()), k_(k < buffer.size() ? k : buffer.size()), bound_(max_distance2)
+    {
+    }
+
+    [[nodiscard]] constexpr T bound() const noexcept { return bound_; }
+
+    constexpr void add(T distance2, std::uint32_t index) noexcept
+    {
+        const Neighbour<T> candidate{distance2, index};
+        if (count_ < k_) {
+            heap_[count_++] = candidate;
+            std::push_heap(heap_, heap_ + count_);
+            if (count_ == k_) bound_ = heap_[0].distance2;
+        } else if (candidate < heap_[0]) {
+            replace_top(candidate);
+            bound_ = heap_[0].distance2;
+        }
+    }
+
+    [[nodiscard]] constexpr std::size_t size() const noexcept { return count_; }
+    [[nodiscard]] constexpr bool full() const noexcept { return count_ == k_; }
+    [[nodiscard]] constexpr const Neighbour<T>* begin() const noexcept { return heap_; }
+    [[nodiscard]] constexpr const Neighbour<T>* end() const noexcept { return heap_ + count_; }
+    /// The farthest found (the heap's top); only when size() > 0.
+    [[nodiscard]] constexpr const Neighbour<T>& farthest() const noexcept { return heap_[0]; }
+
+    /// Nearest first, ties by lower index (ends the heap order).
+    constexpr void sort() noexcept { std::sort_heap(heap_, heap_ + count_); }
+
+private:
+    /// Replace the largest of the full heap and sift the newcomer down: one pass of log k
+    /// steps, where pop_heap then push_heap take two.
+    constexpr void replace_top(const Neighbour<T>& item) noexcept
+    {
+        std::size_t at = 0;
+        for (;;) {
+            const std::size_t left = 2 * at + 1;
+            if (left >= k_) break;
+            const std::size_t right = left + 1;
+            const std::size_t larger = right < k_ && heap_[left] < heap_[right] ? right : left;
+            if (!(item < heap_[larger])) break;
+            heap_[at] = heap_[larger];
+            at = larger;
+        }
+        heap_[at] = item;
+    }
+
+    Neighbour<T>* heap_;
+    std::size_t k_;
+    std::size_t count_ = 0;
+    T bound_; ///< the maximum distance until k are found, then the k-th nearest's
+};
+
+/// Every point within a radius, handed to visit(index, distance2) in tree order.
+template <Scalar T, class Visitor>
+class WithinRadius {
+public:
+    constexpr WithinRadius(T radius2, Visitor& visit) noexcept : radius2_(radius2), visit_(&visit) {}
+
+    [[nodiscard]] constexpr T bound() const noexcept { return radius2_; }
+    constexpr void add(T distance2, std::uint32_t index) { (*visit_)(index, distance2); }
+
+private:
+    T radius2_;
+    Visitor* visit_;
+};
+
 /// The k nearest neighbours found, nearest first (fewer when the set is smaller).
 template <Scalar T, std::size_t K>
 struct NearestNeighbours {
-    std::array<Neighbour<T>, K> items{};
+    std::array<Neighbour<T>, K> items;
     std::size_t count = 0;
 
     [[nodiscard]] constexpr std::size_t size() const noexcept { return count; }
@@ -515,6 +600,16 @@ public:
                axis_.capacity();
     }
 
+    /// The one search: descend toward q, then visit the far side of each split whose
+    /// cell is within results.bound(), handing results every point within it.
+    template <ResultSet<T> Results>
+    constexpr void search(const Point& q, Results& results) const
+    {
+        if (points_.empty() || !(results.bound() >= T(0))) return;
+        Point offsets{};
+        descend(q, 1, 0, points_.size(), offsets, results);
+    }
+
     /// The K nearest points to q, nearest first, ties by lower index.
     template <std::size_t K>
     [[nodiscard]] constexpr NearestNeighbours<T, K> nearest(const Point& q) const noexcept
@@ -531,13 +626,14 @@ public:
     [[nodiscard]] constexpr NearestNeighbours<T, K> nearest(const Point& q, std::size_t k, T max_radius) const noexcept
     {
         static_assert(K >= 1);
-        NearestNeighbours<T, K> heap; // a max-heap on (distance, index) while searching
-        k = k < K ? k : K;
-        if (points_.empty() || k == 0 || !(max_radius >= T(0))) return heap;
-        Point offsets{};
-        search_nearest<K>(q, k, max_radius * max_radius, 1, 0, points_.size(), offsets, heap);
-        if constexpr (K > 1 && Sorted) std::sort_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
-        return heap;
+        NearestNeighbours<T, K> found;
+        if (std::is_constant_evaluated()) found.items = {};
+        if (k == 0 || !(max_radius >= T(0))) return found;
+        KNearest<T> results(found.items, k, max_radius * max_radius);
+        search(q, results);
+        if constexpr (Sorted) results.sort();
+        found.count = results.size();
+        return found;
     }
 
     /// Call visit(index, distance2) for every point within `radius` of q (distance <=
@@ -545,9 +641,9 @@ public:
     template <class Visitor>
     constexpr void within(const Point& q, T radius, Visitor&& visit) const
     {
-        if (points_.empty() || !(radius >= T(0))) return;
-        Point offsets{};
-        search_within(q, radius * radius, 1, 0, points_.size(), offsets, visit);
+        if (!(radius >= T(0))) return;
+        WithinRadius<T, std::remove_reference_t<Visitor>> results(radius * radius, visit);
+        search(q, results);
     }
 
     /// Squared Euclidean distance, as every query computes it.
@@ -592,31 +688,14 @@ private:
         build(2 * node + 1, mid, end);
     }
 
-    // Both searches keep `offsets`, the squared distance from q to the current cell along
+    // The search keeps `offsets`, the squared distance from q to the current cell along
     // each axis (as nanoflann does); their sum bounds the distance to any point in the
     // cell from below. Points left of a split are <= its value, right ones >=. The sum is
     // taken afresh in axis order rather than updated by subtraction: each offset is at
     // most the matching term of any point's distance2, and rounded sums in the same order
     // keep that, so a point exactly on a cell's corner is never pruned, and ties at equal
-    // distance resolve by index exactly as in a brute-force search.
-
-    /// Replace the largest of a full max-heap of k items and sift the newcomer down: one
-    /// pass of log k steps, where pop_heap then push_heap take two.
-    template <std::size_t K>
-    static constexpr void replace_top(std::array<Neighbour<T>, K>& heap, std::size_t k, const Neighbour<T>& item) noexcept
-    {
-        std::size_t at = 0;
-        for (;;) {
-            const std::size_t left = 2 * at + 1;
-            if (left >= k) break;
-            const std::size_t right = left + 1;
-            const std::size_t larger = right < k && heap[left] < heap[right] ? right : left;
-            if (!(item < heap[larger])) break;
-            heap[at] = heap[larger];
-            at = larger;
-        }
-        heap[at] = item;
-    }
+    // distance resolve by index exactly as in a brute-force search (equal distances are
+    // searched too).
 
     [[nodiscard]] static constexpr T sum(const Point& offsets) noexcept
     {
@@ -625,51 +704,13 @@ private:
         return total;
     }
 
-    // The search bound is the k-th distance once k are found, max_radius^2 before.
-    template <std::size_t K>
-    constexpr void search_nearest(const Point& q, std::size_t k, T max2, std::size_t node, std::size_t begin, std::size_t end,
-                                  Point& offsets, NearestNeighbours<T, K>& heap) const noexcept
-    {
-        if (end - begin <= LeafSize) {
-            for (std::size_t i = begin; i < end; ++i) {
-                const Neighbour<T> candidate{distance2(q, points_[i]), index_[i]};
-                if (!(candidate.distance2 <= max2)) continue;
-                if constexpr (K == 1) { // the one nearest: no heap needed
-                    if (heap.count == 0 || candidate < heap.items[0]) heap.items[0] = candidate, heap.count = 1;
-                } else if (heap.count < k) {
-                    heap.items[heap.count++] = candidate;
-                    std::push_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
-                } else if (candidate < heap.items[0]) {
-                    replace_top(heap.items, k, candidate);
-                }
-            }
-            return;
-        }
-        const std::size_t axis = axis_[node];
-        const std::size_t mid = middle(begin, end);
-        const T diff = q[axis] - split_[node];
-        const bool left_first = diff < T(0);
-        if (left_first) search_nearest<K>(q, k, max2, 2 * node, begin, mid, offsets, heap);
-        else search_nearest<K>(q, k, max2, 2 * node + 1, mid, end, offsets, heap);
-        // The far side: its cell is diff^2 away along this axis. Equal distances are
-        // searched too, so ties resolve by index exactly as brute force does.
-        const T saved = offsets[axis];
-        offsets[axis] = diff * diff;
-        if (sum(offsets) <= (heap.count < k ? max2 : heap.items[0].distance2)) {
-            if (left_first) search_nearest<K>(q, k, max2, 2 * node + 1, mid, end, offsets, heap);
-            else search_nearest<K>(q, k, max2, 2 * node, begin, mid, offsets, heap);
-        }
-        offsets[axis] = saved;
-    }
-
-    template <class Visitor>
-    constexpr void search_within(const Point& q, T radius2, std::size_t node, std::size_t begin, std::size_t end, Point& offsets,
-                                 Visitor& visit) const
+    template <class Results>
+    constexpr void descend(const Point& q, std::size_t node, std::size_t begin, std::size_t end, Point& offsets, Results& results) const
     {
         if (end - begin <= LeafSize) {
             for (std::size_t i = begin; i < end; ++i) {
                 const T d2 = distance2(q, points_[i]);
-                if (d2 <= radius2) visit(index_[i], d2);
+                if (d2 <= results.bound()) results.add(d2, index_[i]);
             }
             return;
         }
@@ -677,13 +718,14 @@ private:
         const std::size_t mid = middle(begin, end);
         const T diff = q[axis] - split_[node];
         const bool left_first = diff < T(0);
-        if (left_first) search_within(q, radius2, 2 * node, begin, mid, offsets, visit);
-        else search_within(q, radius2, 2 * node + 1, mid, end, offsets, visit);
+        if (left_first) descend(q, 2 * node, begin, mid, offsets, results);
+        else descend(q, 2 * node + 1, mid, end, offsets, results);
+        // The far side: its cell is diff^2 away along this axis.
         const T saved = offsets[axis];
         offsets[axis] = diff * diff;
-        if (sum(offsets) <= radius2) {
-            if (left_first) search_within(q, radius2, 2 * node + 1, mid, end, offsets, visit);
-            else search_within(q, radius2, 2 * node, begin, mid, offsets, visit);
+        if (sum(offsets) <= results.bound()) {
+            if (left_first) descend(q, 2 * node + 1, mid, end, offsets, results);
+            else descend(q, 2 * node, begin, mid, offsets, results);
         }
         offsets[axis] = saved;
     }
@@ -832,6 +874,14 @@ template <Scalar T>
 
 namespace prism {
 
+/// A sphere that encloses a solid: what the photon tracer aims caustic photons at, and
+/// where parallel light's photons start from.
+template <Scalar T>
+struct BoundingSphere {
+    Vec3<T> center{};
+    T radius = T(0);
+};
+
 /// Axis-aligned box [lo, hi]; empty when lo > hi on any axis (the default).
 template <Scalar T>
 struct Aabb {
@@ -843,6 +893,12 @@ struct Aabb {
     /// Every point: the bounds of an unbounded shape such as a half-space.
     [[nodiscard]] static constexpr Aabb universe() noexcept { return {Vec3<T>(-infinity<T>), Vec3<T>(infinity<T>)}; }
 
+    /// The smallest box holding this one and `other`.
+    [[nodiscard]] constexpr Aabb merged(const Aabb& other) const noexcept
+    {
+        return {component_min(lo, other.lo), component_max(hi, other.hi)};
+    }
+
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
     {
         return lo.x <= p.x && p.x <= hi.x && lo.y <= p.y && p.y <= hi.y && lo.z <= p.z && p.z <= hi.z;
@@ -850,6 +906,12 @@ struct Aabb {
 
     /// Finite on every axis: the box of a bounded shape (false for an empty box too).
     [[nodiscard]] constexpr bool bounded() const noexcept { return !empty() && is_finite(lo) && is_finite(hi); }
+
+    /// The sphere through the box's corners (for a bounded box).
+    [[nodiscard]] constexpr BoundingSphere<T> bounding_sphere() const noexcept
+    {
+        return {T(0.5) * (lo + hi), T(0.5) * length(hi - lo)};
+    }
 
     /// The box grown outward by one float step on every side: a box computed by rounding
     /// to nearest then holds every point of the exact one.
@@ -989,6 +1051,96 @@ template <Scalar T = double>
     constexpr int bits = std::numeric_limits<T>::digits < 32 ? std::numeric_limits<T>::digits : 32;
     constexpr T scale = T(1) / T(std::uint64_t(1) << bits);
     return {T(x >> (32 - bits)) * scale, T(y >> (32 - bits)) * scale};
+}
+
+} // namespace prism
+
+// ---- prism/core/sampling.hpp ----
+// Sampling: directions and points drawn from the unit square, for lights, photons and
+// diffuse bounces; Russian roulette.
+
+
+#include <cmath>
+#include <utility>
+
+namespace prism {
+
+/// A direction uniform on the unit sphere: z = 1 - 2u, phi = 2 pi v (errata 4: no
+/// rejection sampling of a cube, whose accepted points were never normalised).
+template <Scalar T>
+[[nodiscard]] inline Vec3<T> uniform_sphere(T u, T v) noexcept
+{
+    const T z = T(1) - T(2) * u;
+    const T r = prism::sqrt(clamp(T(1) - z * z, T(0), T(1)));
+    const T phi = T(2) * pi<T> * v;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+template <Scalar T>
+[[nodiscard]] inline Vec3<T> uniform_sphere(Pcg32& rng) noexcept
+{
+    const T u = rng.uniform<T>();
+    return uniform_sphere(u, rng.uniform<T>());
+}
+
+/// Two unit vectors that make an orthonormal frame with the unit vector n (Duff et al.
+/// 2017, "Building an Orthonormal Basis, Revisited").
+template <Scalar T>
+[[nodiscard]] inline std::pair<Vec3<T>, Vec3<T>> orthonormal_frame(const Vec3<T>& n) noexcept
+{
+    const T sign = std::copysign(T(1), n.z);
+    const T a = T(-1) / (sign + n.z);
+    const T b = n.x * n.y * a;
+    return {{T(1) + sign * n.x * n.x * a, sign * b, -sign * n.x}, {b, sign + n.y * n.y * a, -n.y}};
+}
+
+/// A cosine-distributed direction about the unit normal n (Malley's method: a uniform
+/// point on the disk, lifted onto the hemisphere): the diffuse bounce of a photon.
+template <Scalar T>
+[[nodiscard]] inline Vec3<T> cosine_hemisphere(const Vec3<T>& n, Pcg32& rng) noexcept
+{
+    const T r = prism::sqrt(rng.uniform<T>());
+    const T phi = T(2) * pi<T> * rng.uniform<T>();
+    const T x = r * std::cos(phi), y = r * std::sin(phi);
+    const T z = prism::sqrt(clamp(T(1) - x * x - y * y, T(0), T(1)));
+    const auto [s, t] = orthonormal_frame(n);
+    return x * s + y * t + z * n;
+}
+
+/// Russian roulette (errata 7): the photon survives with probability p = the largest
+/// channel of its reflectance (at most 1), and a survivor's power is scaled per channel
+/// by reflectance / p, so the expected power leaving is reflectance times the power
+/// arriving, in every channel. Returns false when the photon is absorbed.
+template <Scalar T>
+[[nodiscard]] inline bool russian_roulette(Rgb<T>& power, const Rgb<T>& reflectance, Pcg32& rng) noexcept
+{
+    const T p = clamp(max_component(reflectance), T(0), T(1));
+    if (!(p > T(0)) || rng.uniform<T>() >= p) return false;
+    power *= reflectance / p;
+    return true;
+}
+
+/// The point (u, v) of the unit square mapped uniformly onto the disk of radius r centred
+/// at c, perpendicular to the unit axis.
+template <Scalar T>
+[[nodiscard]] inline Vec3<T> uniform_disk(const Vec3<T>& c, const Vec3<T>& axis, T r, T u, T v) noexcept
+{
+    const T rho = r * prism::sqrt(u);
+    const T phi = T(2) * pi<T> * v;
+    const auto [s, t] = orthonormal_frame(axis);
+    return c + rho * std::cos(phi) * s + rho * std::sin(phi) * t;
+}
+
+/// (u, v) mapped uniformly onto the directions within the cone about `axis` with the
+/// given cos(half angle).
+template <Scalar T>
+[[nodiscard]] inline Vec3<T> uniform_cone(const Vec3<T>& axis, T cos_half_angle, T u, T v) noexcept
+{
+    const T cos_theta = T(1) - u * (T(1) - cos_half_angle);
+    const T sin_theta = prism::sqrt(clamp(T(1) - cos_theta * cos_theta, T(0), T(1)));
+    const T phi = T(2) * pi<T> * v;
+    const auto [s, t] = orthonormal_frame(axis);
+    return sin_theta * std::cos(phi) * s + sin_theta * std::sin(phi) * t + cos_theta * axis;
 }
 
 } // namespace prism
@@ -1226,6 +1378,9 @@ struct Crossing {
     Vec3<T> normal; ///< unit outward normal (the gradient of the inside function)
     bool entering; ///< the ray goes from outside to inside here (gradient . direction < 0)
 
+    /// The unit normal on the side the ray arrives from (outward when it enters).
+    [[nodiscard]] constexpr Vec3<T> facing_normal() const noexcept { return entering ? normal : -normal; }
+
     /// A crossing without its surface: point, error and normal are left unwritten (zeros
     /// in a constant expression), for the queries that never read them.
     [[nodiscard]] static constexpr Crossing without_surface(T t, bool entering) noexcept
@@ -1287,7 +1442,8 @@ namespace prism {
 /// queries that need only where and which way: shadow rays, and finding which object
 /// is nearest before asking it for its surface. `max_crossings` bounds their number at
 /// compile time; `bounds()` encloses the solid (Aabb::universe() for an unbounded one);
-/// `contains(p)` says whether a point is strictly inside (the implicit function).
+/// `contains(p)` says whether a point is strictly inside (the implicit function). A shape
+/// may also offer `bounding_sphere()` (see HasBoundingSphere).
 template <class S>
 concept Shape = requires(const S& shape, const Ray<typename S::scalar_type>& ray,
                          Interval<typename S::scalar_type> range, const Vec3<typename S::scalar_type>& p) {
@@ -1298,6 +1454,21 @@ concept Shape = requires(const S& shape, const Ray<typename S::scalar_type>& ray
     { shape.bounds() } -> std::same_as<Aabb<typename S::scalar_type>>;
     { shape.contains(p) } -> std::same_as<bool>;
 };
+
+/// A shape that knows a sphere around itself tighter than the one around its box
+/// (Sphere does). Optional: `bounding_sphere(shape)` falls back to the box's sphere.
+template <class S>
+concept HasBoundingSphere = Shape<S> && requires(const S& shape) {
+    { shape.bounding_sphere() } -> std::same_as<BoundingSphere<typename S::scalar_type>>;
+};
+
+/// A sphere enclosing a bounded shape: its own, or the one through its box's corners.
+template <Shape S>
+[[nodiscard]] constexpr BoundingSphere<typename S::scalar_type> bounding_sphere(const S& shape) noexcept
+{
+    if constexpr (HasBoundingSphere<S>) return shape.bounding_sphere();
+    else return shape.bounds().bounding_sphere();
+}
 
 } // namespace prism
 
@@ -2107,6 +2278,8 @@ static_assert(Shape<Quadric<double>>);
 // Sphere: the solid ball |p - center| <= radius.
 
 
+#include <limits>
+
 namespace prism {
 
 template <Scalar T = float>
@@ -2128,6 +2301,13 @@ public:
 
     [[nodiscard]] constexpr const Vec3<T>& center() const noexcept { return center_; }
     [[nodiscard]] constexpr T radius() const noexcept { return radius_; }
+
+    /// Its own sphere, the radius grown by 16 epsilon for rounding: tighter than the
+    /// sphere around its box, which a caustic photon aimed at it would mostly miss.
+    [[nodiscard]] constexpr BoundingSphere<T> bounding_sphere() const noexcept
+    {
+        return {center_, radius_ * (T(1) + T(16) * std::numeric_limits<T>::epsilon())};
+    }
 
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept
     {
@@ -2309,10 +2489,11 @@ private:
 } // namespace prism
 
 // ---- prism/light/light.hpp ----
-// What a light tells a shading point, and the Light concept.
+// What a light tells a shading point and the photon tracer, and the Light concept.
 
 
 #include <concepts>
+#include <optional>
 
 namespace prism {
 
@@ -2324,59 +2505,150 @@ struct LightSample {
     Rgb<T> irradiance{}; ///< irradiance on a surface facing the light (W/m^2)
 };
 
+/// Where the photon tracer asks a light to send photons: toward `target` (a specular
+/// object's bounding sphere, for the caustic map) or, without one, everywhere it shines
+/// (the global map). `scene` encloses every bounded object (absent when there is none):
+/// a light from infinitely far away starts its photons just outside it.
+template <Scalar T>
+struct PhotonAim {
+    std::optional<BoundingSphere<T>> target;
+    std::optional<BoundingSphere<T>> scene;
+};
+
+/// One photon leaving a light: its ray, a weight on the power the tracer gives it (1
+/// when the light's emission is uniform over what it aims at), and whether the light
+/// does not fall off with distance (then the photon's power grows with the square of
+/// the path it travelled when it is stored, as POV-Ray does for `fade_power 0`).
+template <Scalar T>
+struct EmittedPhoton {
+    Ray<T> ray;
+    Rgb<T> weight{T(1)};
+    bool without_falloff = false;
+};
+
+/// A light: `sample(p)`, what arrives at a shading point; `photon_power(aim)`, the power
+/// it sends where it is aimed (0: it sends no photons there); `emit_photon(aim, u, v)`,
+/// the photon for the point (u, v) of the unit square, so that uniform (u, v) give its
+/// emission's distribution over the aim (the photons share photon_power(aim)).
 template <class L>
-concept Light = requires(const L& light, const Vec3<typename L::scalar_type>& p) {
+concept Light = requires(const L& light, const Vec3<typename L::scalar_type>& p, const PhotonAim<typename L::scalar_type>& aim,
+                         typename L::scalar_type u) {
     requires Scalar<typename L::scalar_type>;
     { light.sample(p) } -> std::same_as<LightSample<typename L::scalar_type>>;
+    { light.photon_power(aim) } -> std::same_as<Rgb<typename L::scalar_type>>;
+    { light.emit_photon(aim, u, u) } -> std::same_as<EmittedPhoton<typename L::scalar_type>>;
     light.validate();
 };
 
 } // namespace prism
 
-// ---- prism/integrator/direct.hpp ----
-// Light arriving from each light at a surface point, by shadow rays: shared by the integrators.
-
-
-namespace prism {
-
-/// Shadow rays stop this fraction short of a point light, so a light placed on a
-/// surface is not shadowed by that surface (pbrt's ShadowEpsilon).
-template <Scalar T>
-inline constexpr T shadow_epsilon = T(1e-4);
-
-/// For each light in front of the surface (unit normal n facing the viewer), call
-/// f(sample, v, cos): the light's sample at the point, the shadow ray's transmittance v
-/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface. Lights
-/// behind the surface are not visited: they count as occluded. With GlassTransmits =
-/// false, dielectrics cast full shadows (see Scene::transmittance).
-template <bool GlassTransmits = true, class SceneT, Scalar T, class F>
-void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const Vec3<T>& n, F&& f)
-{
-    scene.for_each_light([&](const auto& light) {
-        const LightSample<T> s = light.sample(hit.point);
-        const T cos = dot(n, s.wi);
-        if (!(cos > T(0))) return;
-        const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
-        f(s, scene.template transmittance<GlassTransmits>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
-    });
-}
-
-} // namespace prism
-
-// ---- prism/material/traits.hpp ----
-// Material traits known at compile time, on which integrators branch with if constexpr.
+// ---- prism/medium/medium.hpp ----
+// The Medium concept: how light fares while it travels through the inside of an object.
 //
-// Every material states three facts as static constexpr members:
-//   has_diffuse  it reflects light diffusely (Lambert, albedo / pi), lit by shadow rays
-//   reflects     it has a mirror (delta) reflection lobe
-//   transmits    it refracts light through its interior (a dielectric)
-// A scene whose materials never transmit compiles no refraction code at all.
+// A transmissive material names the medium that fills it (Dielectric's `interior`), and
+// the integrators ask that medium, through `attenuate_inside` (material/scattering.hpp),
+// what a path of a given length inside it lets through. Today's media keep rays
+// straight; a medium that bends them (a graded index) or that nests inside another
+// (priorities) is one more header here, and extends this interface rather than the
+// integrators.
 
 
 #include <concepts>
 
 namespace prism {
 
+/// A medium in which light travels in straight lines and is attenuated along the way:
+/// `transmittance(distance)` is the fraction of light, per channel, left after that
+/// distance.
+template <class X>
+concept Medium = requires(const X& medium, typename X::scalar_type distance) {
+    requires Scalar<typename X::scalar_type>;
+    { medium.transmittance(distance) } -> std::same_as<Rgb<typename X::scalar_type>>;
+    medium.validate();
+};
+
+} // namespace prism
+
+// ---- prism/material/traits.hpp ----
+// What a material can do, as capabilities the integrators branch on with if constexpr.
+//
+// A material declares three facts as static constexpr members, and each fact it
+// declares is a promise of the functions that capability needs, checked by the
+// Material concept (so a promise without its function fails at the user's line, not
+// inside an integrator):
+//   has_diffuse  a Lambertian lobe, lit by shadow rays and photons     DiffuseLobe
+//   reflects     a mirror (delta) reflection that is not a dielectric's DeltaReflection
+//   transmits    a dielectric interface: Fresnel-split delta reflection  DeltaTransmission
+//                and refraction into the medium() that fills it          InteriorMedium
+// A scene whose materials never transmit compiles no refraction code at all. The
+// light transport over these capabilities (what a diffuse point reflects, how an
+// interface splits a ray, how a photon scatters, what a shadow ray lets through) is
+// written once, in material/scattering.hpp; integrators call it and never read a
+// material's fields.
+
+
+#include <concepts>
+#include <type_traits>
+
+namespace prism {
+
+/// What a diffuse lobe reflects at one point: Lambert's BRDF albedo kd / pi for light
+/// from the lights, albedo ka for the scene's ambient light (the seed's kd and ka scale
+/// factors on top of a physical albedo).
+template <Scalar T>
+struct DiffuseResponse {
+    Rgb<T> albedo; ///< reflectance at the point, in [0, 1] per channel
+    T kd;          ///< scale on light from the lights
+    T ka;          ///< scale on the ambient term
+
+    /// The BRDF, albedo kd / pi.
+    [[nodiscard]] constexpr Rgb<T> brdf() const noexcept { return albedo * (kd / pi<T>); }
+
+    /// Radiance reflected for irradiance E from the lights and ambient radiance A
+    /// reaching the point unoccluded by the fraction `unlit`: albedo (kd/pi E + ka A unlit).
+    [[nodiscard]] constexpr Rgb<T> reflected(const Rgb<T>& irradiance, const Rgb<T>& ambient, const Rgb<T>& unlit) const noexcept
+    {
+        return albedo * ((kd / pi<T>)*irradiance + ka * ambient * unlit);
+    }
+
+    /// The fraction of a photon's power the lobe sends on (albedo kd, at most 1).
+    [[nodiscard]] constexpr Rgb<T> photon_reflectance() const noexcept { return component_min(albedo * kd, Rgb<T>(T(1))); }
+};
+
+/// A Lambertian lobe: `diffuse(p)` gives its response at the surface point p.
+template <class M>
+concept DiffuseLobe = requires(const M& material, const Vec3<typename M::scalar_type>& p) {
+    { material.diffuse(p) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
+};
+
+/// A mirror that is not an interface (a conductor): `reflectance(cos_i)` per channel for
+/// light arriving at cosine cos_i.
+template <class M>
+concept DeltaReflection = requires(const M& material, typename M::scalar_type cos_i) {
+    { material.reflectance(cos_i) } -> std::same_as<Rgb<typename M::scalar_type>>;
+};
+
+/// A dielectric interface with index `refractive_index()` inside and 1 outside. `fresnel(cos_i, eta)`
+/// is the share of light reflected for the incident cosine cos_i and eta = n_t / n_i
+/// (1 under total internal reflection); the reflected and refracted rays are then
+/// weighted by `reflection_tint()` and `transmission_tint()` (the seed's kr and kt).
+template <class M>
+concept DeltaTransmission = requires(const M& material, typename M::scalar_type cos_i, typename M::scalar_type eta) {
+    { material.refractive_index() } -> std::same_as<typename M::scalar_type>;
+    { material.fresnel(cos_i, eta) } -> std::same_as<typename M::scalar_type>;
+    { material.reflection_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
+    { material.transmission_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
+};
+
+/// The medium filling a transmissive object: `medium()` (see medium/medium.hpp).
+template <class M>
+concept InteriorMedium = requires(const M& material) {
+    requires Medium<std::remove_cvref_t<decltype(material.medium())>>;
+    requires std::same_as<typename std::remove_cvref_t<decltype(material.medium())>::scalar_type, typename M::scalar_type>;
+};
+
+/// A material: its scalar type, the three capability flags, each flag's functions, and
+/// validate() (throws std::invalid_argument for a bad parameter, naming it).
 template <class M>
 concept Material = requires(const M& material) {
     requires Scalar<typename M::scalar_type>;
@@ -2384,7 +2656,8 @@ concept Material = requires(const M& material) {
     { M::reflects } -> std::convertible_to<bool>;
     { M::transmits } -> std::convertible_to<bool>;
     material.validate();
-};
+} && (!M::has_diffuse || DiffuseLobe<M>) && (!M::reflects || M::transmits || DeltaReflection<M>) &&
+                   (!M::transmits || (DeltaTransmission<M> && InteriorMedium<M>)) && (M::has_diffuse || M::reflects || M::transmits);
 
 /// Purely specular: every scattered direction is a delta (no diffuse lobe).
 template <Material M>
@@ -2438,13 +2711,45 @@ template <Scalar T>
 
 } // namespace prism
 
-// ---- prism/integrator/specular.hpp ----
-// How a mirror or a dielectric splits the light arriving at it: shared by the integrators.
+// ---- prism/material/scattering.hpp ----
+// Light transport over a material's capabilities, written once for every integrator:
+// what a diffuse point reflects, how a delta interface splits a ray, what light keeps
+// while it travels inside an object, what a shadow ray keeps through one, and how a
+// photon scatters. The integrators (Whitted, PhotonMapper), the photon tracer and the
+// scene's shadow rays call these and never read a material's fields, so a new material
+// is one header that satisfies the capability concepts of material/traits.hpp.
 
 
+#include <cstddef>
 #include <optional>
 
 namespace prism {
+
+// Diffuse lobe
+
+/// The diffuse response at the surface point p.
+template <Material M>
+    requires DiffuseLobe<M>
+[[nodiscard]] constexpr DiffuseResponse<typename M::scalar_type> diffuse_response(const M& material,
+                                                                                 const Vec3<typename M::scalar_type>& p) noexcept
+{
+    return material.diffuse(p);
+}
+
+/// A non-physical highlight (POV-Ray's `phong`), for materials that have one: its weight
+/// for a light in direction wi seen along the mirror direction `mirror` of the viewing
+/// ray (radiance weight * E); 0 for every other material.
+template <Material M>
+[[nodiscard]] constexpr typename M::scalar_type highlight(const M& material, const Vec3<typename M::scalar_type>& mirror,
+                                                          const Vec3<typename M::scalar_type>& wi) noexcept
+{
+    if constexpr (requires { { material.highlight(dot(mirror, wi)) } -> std::same_as<typename M::scalar_type>; })
+        return material.highlight(dot(mirror, wi));
+    else
+        return typename M::scalar_type(0);
+}
+
+// Delta interactions
 
 /// The weights of the reflected and transmitted rays at a specular surface, and the
 /// transmitted direction (none under total internal reflection or for a conductor).
@@ -2455,119 +2760,520 @@ struct SpecularSplit {
     std::optional<Vec3<T>> refracted;
 };
 
-/// d: the unit incident direction; n: the unit normal facing it; entering: whether d
-/// goes into the material. A dielectric splits by Fresnel (all to reflection under total
-/// internal reflection) times its kr and kt; a conductor reflects by its reflectance.
-template <Material M, Scalar T>
-[[nodiscard]] SpecularSplit<T> specular_split(const M& material, const Vec3<T>& d, const Vec3<T>& n, bool entering) noexcept
+/// How a mirror or an interface splits the unit incident direction d arriving at a
+/// surface whose unit normal n faces it (Crossing::facing_normal); `entering`: d goes
+/// into the material. A dielectric splits by Fresnel (all to reflection under total
+/// internal reflection) times its tints, with eta = n_inside or 1 / n_inside by the
+/// side; a conductor reflects by its reflectance.
+template <Material M>
+    requires(M::reflects || M::transmits)
+[[nodiscard]] SpecularSplit<typename M::scalar_type> delta_split(const M& material, const Vec3<typename M::scalar_type>& d,
+                                                                const Vec3<typename M::scalar_type>& n, bool entering) noexcept
 {
+    using T = typename M::scalar_type;
     const T cos_i = clamp(-dot(d, n), T(0), T(1));
     SpecularSplit<T> split;
-    if constexpr (transmits<M>) {
-        const T eta = entering ? material.ior : T(1) / material.ior;
+    if constexpr (M::transmits) {
+        const T eta = entering ? material.refractive_index() : T(1) / material.refractive_index();
         split.refracted = refract(d, n, eta);
         const T fresnel = split.refracted ? material.fresnel(cos_i, eta) : T(1);
-        split.kr = Rgb<T>(material.kr * fresnel);
-        split.kt = Rgb<T>(material.kt * (T(1) - fresnel));
+        split.kr = material.reflection_tint() * fresnel;
+        split.kt = material.transmission_tint() * (T(1) - fresnel);
     } else {
         split.kr = material.reflectance(cos_i);
     }
     return split;
 }
 
-} // namespace prism
+// Media
 
-// ---- prism/optics/beer.hpp ----
-// Beer-Lambert absorption in a homogeneous medium.
-
-
-#include <cmath>
-
-namespace prism {
-
-/// Fraction of light left after `distance` through a medium with per-channel
-/// attenuation coefficients sigma (solution of dI/dx = -sigma I): exp(-sigma x).
-template <Scalar T>
-[[nodiscard]] inline Rgb<T> beer_lambert(const Rgb<T>& sigma, T distance) noexcept
+/// Light that reached `hit` along `ray` from the ray's origin travelled inside the
+/// object's medium when the ray leaves there: multiply `light` by what the medium lets
+/// through over that length. Nothing for a material without an interior.
+template <Material M>
+constexpr void attenuate_inside(const M& material, const Crossing<typename M::scalar_type>& hit,
+                                const Ray<typename M::scalar_type>& ray, Rgb<typename M::scalar_type>& light) noexcept
 {
-    return {std::exp(-sigma.x * distance), std::exp(-sigma.y * distance), std::exp(-sigma.z * distance)};
+    if constexpr (M::transmits) {
+        if (!hit.entering) light *= material.medium().transmittance(hit.t * length(ray.direction));
+    }
+}
+
+/// What a shadow ray along [0, t_max] keeps through one transmissive object, given the
+/// object's crossings (without surfaces) in that range: its medium's transmittance over
+/// the length inside, then its transmission tint once per boundary crossed, multiplied
+/// into `light`. Refraction is ignored: the lecture notes' shadow rays through
+/// transparent objects.
+template <Material M, std::size_t N>
+    requires(M::transmits)
+constexpr void attenuate_shadow_ray(const M& material, const Crossings<typename M::scalar_type, N>& crossings,
+                                    const Ray<typename M::scalar_type>& ray, typename M::scalar_type t_max,
+                                    Rgb<typename M::scalar_type>& light) noexcept
+{
+    using T = typename M::scalar_type;
+    bool inside = crossings.inside_at_start;
+    T previous = T(0), inside_length = T(0);
+    for (const Crossing<T>& c : crossings) {
+        if (inside) inside_length += c.t - previous;
+        inside = c.entering;
+        previous = c.t;
+    }
+    if (inside) inside_length += t_max - previous;
+    if (inside_length > T(0)) light *= material.medium().transmittance(inside_length * length(ray.direction));
+    for (std::size_t k = 0; k < crossings.size(); ++k) light *= material.transmission_tint();
+}
+
+// Photons
+
+/// A photon's next direction after scattering, and whether the bounce was diffuse.
+template <Scalar T>
+struct PhotonBounce {
+    Vec3<T> direction;
+    bool diffuse;
+};
+
+/// Scatter a photon of `power` arriving along the unit direction d at `hit` (n: the
+/// unit normal facing it), by Russian roulette per channel (errata 7): a diffuse lobe
+/// reflects its photon reflectance into a cosine-distributed direction; an interface
+/// reflects with probability F and refracts otherwise, weighted by its tints; a
+/// conductor reflects by its reflectance. A material with a diffuse and a delta lobe
+/// first chooses one by their largest channels, dividing the power by that choice's
+/// probability. Returns nothing when the photon is absorbed; scales `power` otherwise.
+template <Material M>
+[[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
+                                                                                   const Crossing<typename M::scalar_type>& hit,
+                                                                                   const Vec3<typename M::scalar_type>& d,
+                                                                                   const Vec3<typename M::scalar_type>& n,
+                                                                                   Rgb<typename M::scalar_type>& power, Pcg32& rng) noexcept
+{
+    using T = typename M::scalar_type;
+    using Bounce = std::optional<PhotonBounce<T>>;
+    const auto diffuse = [&]() -> Bounce {
+        if constexpr (M::has_diffuse) {
+            if (!russian_roulette(power, material.diffuse(hit.point).photon_reflectance(), rng)) return std::nullopt;
+            return PhotonBounce<T>{cosine_hemisphere(n, rng), true};
+        } else {
+            return std::nullopt;
+        }
+    };
+    const auto delta = [&]() -> Bounce {
+        const T cos_i = clamp(-dot(d, n), T(0), T(1));
+        if constexpr (M::transmits) {
+            const T eta = hit.entering ? material.refractive_index() : T(1) / material.refractive_index();
+            const auto refracted = refract(d, n, eta);
+            const T fresnel = refracted ? material.fresnel(cos_i, eta) : T(1);
+            const bool reflect_it = rng.uniform<T>() < fresnel;
+            if (!russian_roulette(power, reflect_it ? material.reflection_tint() : material.transmission_tint(), rng)) return std::nullopt;
+            return PhotonBounce<T>{reflect_it ? reflect(d, n) : *refracted, false};
+        } else if constexpr (M::reflects) {
+            if (!russian_roulette(power, material.reflectance(cos_i), rng)) return std::nullopt;
+            return PhotonBounce<T>{reflect(d, n), false};
+        } else {
+            return std::nullopt;
+        }
+    };
+    if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
+        // Both lobes: choose one by its share of the reflected light (largest channels).
+        const T w_diffuse = max_component(material.diffuse(hit.point).photon_reflectance());
+        const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
+        const T w_delta = max_component(split.kr + split.kt);
+        if (!(w_diffuse + w_delta > T(0))) return std::nullopt;
+        const T p_diffuse = w_diffuse / (w_diffuse + w_delta);
+        if (rng.uniform<T>() < p_diffuse) {
+            power /= p_diffuse;
+            return diffuse();
+        }
+        power /= T(1) - p_diffuse;
+        return delta();
+    } else if constexpr (M::has_diffuse) {
+        return diffuse();
+    } else {
+        return delta();
+    }
 }
 
 } // namespace prism
 
-// ---- prism/light/directional_light.hpp ----
-// DirectionalLight: parallel light from infinitely far away (the sun).
+// ---- prism/scene/hit.hpp ----
+// Hit: the closest crossing of a ray with a scene, and which object it belongs to.
 
+
+#include <cstdint>
 
 namespace prism {
 
-/// Parallel light travelling along `direction`, with irradiance E on a surface facing it.
-template <Scalar T = float>
-struct DirectionalLight {
-    using scalar_type = T;
-
-    Vec3<T> direction{T(0), T(-1), T(0)};
-    Rgb<T> irradiance{T(1)};
-
-    [[nodiscard]] LightSample<T> sample(const Vec3<T>&) const noexcept
-    {
-        return {-normalize(direction), infinity<T>, irradiance};
-    }
-
-    constexpr void validate() const
-    {
-        detail::require_nonzero("DirectionalLight direction", direction);
-        detail::require_non_negative("DirectionalLight irradiance", irradiance);
-    }
+template <Scalar T>
+struct Hit {
+    Crossing<T> crossing{};  ///< where, with the outward normal and whether the ray enters
+    std::uint32_t slot = 0;  ///< the scene slot (compile-time position) of the object
+    std::uint32_t index = 0; ///< the object within its slot
 };
-
-static_assert(Light<DirectionalLight<float>>);
 
 } // namespace prism
 
-// ---- prism/light/point_light.hpp ----
-// PointLight: an isotropic point source.
+// ---- prism/scene/object.hpp ----
+// Object: a shape with a material; ObjectArray: many of one type in one scene slot.
+
+
+#include <span>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+/// One scene object. Construction validates the material (the shape validated itself).
+template <Shape S, Material M>
+    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
+struct Object {
+    using scalar_type = typename S::scalar_type;
+    using shape_type = S;
+    using material_type = M;
+
+    S shape;
+    M material;
+    bool bounded = false; ///< the shape has finite bounds (set at construction, for culling)
+
+    constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m))
+    {
+        material.validate();
+        bounded = shape.bounds().bounded();
+    }
+};
+
+/// Many objects of one shape and material type, chosen at run time, in one scene slot.
+template <Shape S, Material M>
+    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
+struct ObjectArray {
+    using scalar_type = typename S::scalar_type;
+    using shape_type = S;
+    using material_type = M;
+
+    std::vector<Object<S, M>> items;
+};
+
+namespace detail {
+
+template <class X>
+struct is_slot : std::false_type {};
+template <class S, class M>
+struct is_slot<Object<S, M>> : std::true_type {};
+template <class S, class M>
+struct is_slot<ObjectArray<S, M>> : std::true_type {};
+
+} // namespace detail
+
+/// A scene slot: an Object or an ObjectArray.
+template <class X>
+concept Slot = detail::is_slot<X>::value;
+
+/// The objects of a slot, as a contiguous range.
+template <class S, class M>
+[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const Object<S, M>& object) noexcept
+{
+    return {&object, 1};
+}
+
+template <class S, class M>
+[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const ObjectArray<S, M>& array) noexcept
+{
+    return {array.items};
+}
+
+} // namespace prism
+
+// ---- prism/scene/scene.hpp ----
+// Scene: lights and object slots fixed at compile time; closest-hit and shadow queries.
+
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+namespace prism {
+
+/// The lights of a scene, each of its own type, at least one.
+template <Light... Ls>
+struct Lights {
+    static_assert(sizeof...(Ls) > 0, "Lights{} holds no light: a scene needs at least one (a PointLight, a DirectionalLight, ...)");
+
+    std::tuple<Ls...> items;
+
+    constexpr explicit Lights(Ls... lights) : items(std::move(lights)...)
+    {
+        std::apply([](const auto&... light) { (light.validate(), ...); }, items);
+    }
+};
+
+namespace detail {
+
+template <class X>
+struct is_light_list : std::false_type {};
+template <class... Ls>
+struct is_light_list<Lights<Ls...>> : std::true_type {};
+
+/// Whether every light of the list has scalar type T.
+template <class List, class T>
+inline constexpr bool lights_of_scalar = false;
+template <class... Ls, class T>
+inline constexpr bool lights_of_scalar<Lights<Ls...>, T> = (std::same_as<typename Ls::scalar_type, T> && ...);
+
+} // namespace detail
+
+/// A scene's first argument: Lights{...}.
+template <class X>
+concept LightList = detail::is_light_list<X>::value;
+
+/// How shadow rays treat dielectrics.
+enum class ShadowsThroughGlass : bool {
+    attenuated, ///< light passes, attenuated by the medium and the transmission tint (Whitted)
+    blocked,    ///< glass casts a full shadow: its light arrives by a caustic map instead
+};
+
+/// A scene: its lights, object slots (one type each), background and ambient radiance.
+/// Which shapes and materials exist is part of the type, so integrators compile only
+/// the code those materials need.
+template <LightList LightsOfScene, Slot... Slots>
+class Scene {
+    static_assert(sizeof...(Slots) > 0, "a scene needs at least one object");
+
+public:
+    using scalar_type = typename std::tuple_element_t<0, std::tuple<Slots...>>::scalar_type;
+    using T = scalar_type;
+    static_assert((std::same_as<typename Slots::scalar_type, T> && ...), "all objects must share one scalar type");
+    static_assert(detail::lights_of_scalar<LightsOfScene, T>, "every light must have the objects' scalar type (a PointLight<float> in a scene of double objects?)");
+
+    /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
+    static constexpr bool has_transmissive = (transmits<typename Slots::material_type> || ...);
+    /// Some material has a mirror lobe.
+    static constexpr bool has_specular = (reflects<typename Slots::material_type> || ...) || has_transmissive;
+    static constexpr std::size_t slot_count = sizeof...(Slots);
+
+    // Scene Public Members
+
+    LightsOfScene lights;
+    std::tuple<Slots...> slots;
+    Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
+    Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
+
+    constexpr Scene(LightsOfScene light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
+    {
+        // One box around every bounded object: a ray that misses it skips them all.
+        std::apply([this](const auto&... slot) { (add_to_cluster(slot), ...); }, slots);
+        bounded_objects_ = !cluster_.empty();
+    }
+
+    /// The box around every bounded object (empty when there is none): the render's
+    /// cull for whole scenes, and the photon tracer's extent.
+    [[nodiscard]] constexpr const Aabb<T>& bounds() const noexcept { return cluster_; }
+
+    constexpr void validate() const
+    {
+        detail::require_non_negative("Scene background", background);
+        detail::require_non_negative("Scene ambient", ambient);
+    }
+
+    // Scene Queries
+
+    /// The closest crossing with t inside `range`. Every object is asked for its
+    /// crossings without their surfaces; only the nearest one is then asked again, over
+    /// the same range, for its surface.
+    [[nodiscard]] std::optional<Hit<T>> closest_hit(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        Nearest nearest{};
+        const bool near_cluster = reaches_cluster(ray, range);
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (nearest_in_slot<I>(ray, range, nearest, near_cluster), ...);
+        }(std::index_sequence_for<Slots...>{});
+        if (!nearest.found) return std::nullopt;
+        return surface_in_slot<0>(ray, nearest);
+    }
+
+    /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
+    /// object is in the way, otherwise what every dielectric crossed lets through
+    /// (attenuate_shadow_ray: its medium over the length inside, its tint per boundary;
+    /// refraction ignored, the lecture notes' shadow rays through transparent objects).
+    /// With ShadowsThroughGlass::blocked dielectrics block the ray like any other
+    /// object: a photon mapper brings the light through them by its caustic map instead
+    /// (as POV-Ray does for photon targets).
+    template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated>
+    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
+    {
+        Rgb<T> tr{T(1)};
+        // Unwidened: a shadow ray needs no spurious crossing a far-off shape might report
+        // (culling it can only let light through where rounding alone would block it).
+        const bool near_cluster = bounded_objects_ && (cluster_.contains(ray.origin) || !cluster_.clip(ray, {T(0), t_max}).empty());
+        const bool open = [&]<std::size_t... I>(std::index_sequence<I...>) {
+            return (transmittance_of_slot<I, Glass>(ray, t_max, tr, near_cluster) && ...);
+        }(std::index_sequence_for<Slots...>{});
+        return open ? tr : Rgb<T>{T(0)};
+    }
+
+    /// Call f(material) with the material of the hit object, with its static type.
+    template <class F>
+    decltype(auto) visit_material(const Hit<T>& hit, F&& f) const
+    {
+        return visit_slot<0>(hit, std::forward<F>(f));
+    }
+
+    /// Call f(light) for every light.
+    template <class F>
+    void for_each_light(F&& f) const
+    {
+        std::apply([&](const auto&... light) { (f(light), ...); }, lights.items);
+    }
+
+    static constexpr std::size_t light_count = std::tuple_size_v<decltype(LightsOfScene::items)>;
+
+    /// Call f(light) with light number i (in the order of Lights{...}), with its static type.
+    template <class F>
+    decltype(auto) visit_light(std::size_t i, F&& f) const
+    {
+        return visit_light_at<0>(i, std::forward<F>(f));
+    }
+
+private:
+    Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
+    bool bounded_objects_ = false;
+
+    // Scene Private Methods
+
+    /// The nearest object so far: where its first crossing is, and the range over
+    /// which it was found.
+    struct Nearest {
+        bool found = false;
+        std::uint32_t slot = 0, index = 0;
+        Interval<T> range{};
+    };
+
+    template <class S>
+    constexpr void add_to_cluster(const S& slot) noexcept
+    {
+        for (const auto& object : objects_of(slot))
+            if (object.bounded) cluster_ = cluster_.merged(object.shape.bounds());
+    }
+
+    template <std::size_t I, class F>
+    decltype(auto) visit_light_at(std::size_t i, F&& f) const
+    {
+        if constexpr (I + 1 < light_count) {
+            if (i != I) return visit_light_at<I + 1>(i, std::forward<F>(f));
+        }
+        PRISM_ASSERT(i == I);
+        return f(std::get<I>(lights.items));
+    }
+
+    /// Whether the ray may come near the cluster's box within the range (conservatively:
+    /// Aabb::may_cross). Only the first pass of a query culls by it, so it may use the
+    /// range's end.
+    [[nodiscard]] bool reaches_cluster(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        return bounded_objects_ && cluster_.may_cross(ray, range);
+    }
+
+    /// Whether the object needs testing: it is unbounded, or the ray comes near the cluster.
+    template <class O>
+    [[nodiscard]] static bool worth_testing(const O& object, bool near_cluster) noexcept
+    {
+        return near_cluster || !object.bounded;
+    }
+
+    template <std::size_t I>
+    void nearest_in_slot(const Ray<T>& ray, Interval<T>& range, Nearest& nearest, bool near_cluster) const noexcept
+    {
+        const auto objects = objects_of(std::get<I>(slots));
+        for (std::size_t k = 0; k < objects.size(); ++k) {
+            if (!worth_testing(objects[k], near_cluster)) continue;
+            const auto crossings = objects[k].shape.template crossings<false>(ray, range);
+            if (crossings.empty()) continue;
+            // Ending the range just past the crossing keeps every crossing before it, and
+            // so the same first one, while the surface pass refines nothing beyond it:
+            // no shape's answer up to a t depends on where its range ends (shapes cull by
+            // Aabb::reached_after, which ignores the end).
+            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(crossings.front().t)}};
+            range.max = crossings.front().t;
+        }
+    }
+
+    /// The nearest object's first crossing with its surface: the same computation as
+    /// before over a range that holds the same crossings up to it, so the same t.
+    template <std::size_t I>
+    std::optional<Hit<T>> surface_in_slot(const Ray<T>& ray, const Nearest& nearest) const noexcept
+    {
+        if constexpr (I + 1 < sizeof...(Slots)) {
+            if (nearest.slot != I) return surface_in_slot<I + 1>(ray, nearest);
+        }
+        const auto crossings = objects_of(std::get<I>(slots))[nearest.index].shape.crossings(ray, nearest.range);
+        PRISM_ASSERT(!crossings.empty());
+        if (crossings.empty()) return std::nullopt;
+        return Hit<T>{crossings.front(), nearest.slot, nearest.index};
+    }
+
+    template <std::size_t I, ShadowsThroughGlass Glass>
+    bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr, bool near_cluster) const noexcept
+    {
+        using Slot = std::tuple_element_t<I, std::tuple<Slots...>>;
+        using M = typename Slot::material_type;
+        const Interval<T> range{T(0), t_max};
+        for (const auto& object : objects_of(std::get<I>(slots))) {
+            if (!worth_testing(object, near_cluster)) continue;
+            const auto crossings = object.shape.template crossings<false>(ray, range);
+            if constexpr (!transmits<M> || Glass == ShadowsThroughGlass::blocked) {
+                if (!crossings.empty()) return false;
+            } else {
+                attenuate_shadow_ray(object.material, crossings, ray, t_max, tr);
+                if (max_component(tr) <= T(0)) return false;
+            }
+        }
+        return true;
+    }
+
+    template <std::size_t I, class F>
+    decltype(auto) visit_slot(const Hit<T>& hit, F&& f) const
+    {
+        if constexpr (I + 1 < sizeof...(Slots)) {
+            if (hit.slot != I) return visit_slot<I + 1>(hit, std::forward<F>(f));
+        }
+        PRISM_ASSERT(hit.slot == I);
+        return f(objects_of(std::get<I>(slots))[hit.index].material);
+    }
+};
+
+template <class L, class... Slots>
+Scene(L, Slots...) -> Scene<L, Slots...>;
+
+} // namespace prism
+
+// ---- prism/integrator/direct.hpp ----
+// Light arriving from each light at a surface point, by shadow rays: shared by the integrators.
 
 
 namespace prism {
 
-enum class Falloff {
-    inverse_square, ///< physical: E = I / r^2
-    none,           ///< E = I at any distance; only to mirror POV-Ray's `fade_power 0`
-};
+/// Shadow rays stop this fraction short of a point light, so a light placed on a
+/// surface is not shadowed by that surface (pbrt's ShadowEpsilon).
+template <Scalar T>
+inline constexpr T shadow_epsilon = T(1e-4);
 
-/// A point light of radiant intensity I (W/sr, per channel); its power is 4 pi I.
-template <Scalar T = float>
-struct PointLight {
-    using scalar_type = T;
-
-    Vec3<T> position{};
-    Rgb<T> intensity{T(1)};
-    Falloff falloff = Falloff::inverse_square;
-
-    /// Radiant power Phi = 4 pi I.
-    [[nodiscard]] constexpr Rgb<T> power() const noexcept { return T(4) * pi<T> * intensity; }
-
-    [[nodiscard]] LightSample<T> sample(const Vec3<T>& p) const noexcept
-    {
-        const Vec3<T> to_light = position - p;
-        const T r2 = length_squared(to_light);
-        const T r = prism::sqrt(r2);
-        const Rgb<T> e = falloff == Falloff::inverse_square ? intensity / r2 : intensity;
-        return {to_light / r, r, e};
-    }
-
-    constexpr void validate() const
-    {
-        detail::require_finite("PointLight position", position);
-        detail::require_non_negative("PointLight intensity", intensity);
-        // The photon tracer divides the power among the photons: it must be finite too.
-        if (!is_finite(power()))
-            detail::throw_invalid("PointLight intensity ", detail::describe(intensity), " is too large: its power 4 pi I overflows");
-    }
-};
-
-static_assert(Light<PointLight<float>>);
+/// For each light in front of the surface (unit normal n facing the viewer), call
+/// f(sample, v, cos): the light's sample at the point, the shadow ray's transmittance v
+/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface. Lights
+/// behind the surface are not visited: they count as occluded. How dielectrics shadow:
+/// see Scene::transmittance.
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
+void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const Vec3<T>& n, F&& f)
+{
+    scene.for_each_light([&](const auto& light) {
+        const LightSample<T> s = light.sample(hit.point);
+        const T cos = dot(n, s.wi);
+        if (!(cos > T(0))) return;
+        const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
+        f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
+    });
+}
 
 } // namespace prism
 
@@ -2607,9 +3313,9 @@ public:
 
     Photon() = default;
 
-    /// `from`: unit direction back toward where the photon came from.
-    Photon(const Vec3<float>& at, const Rgb<float>& power, const Vec3<float>& from, std::uint8_t flag_bits) noexcept
-        : position(at), flags(flag_bits), rgbe_(encode_rgbe(power)), octahedral_(encode_octahedral(from))
+    /// `toward_source`: unit direction back toward where the photon came from.
+    Photon(const Vec3<float>& at, const Rgb<float>& power, const Vec3<float>& toward_source, std::uint8_t flag_bits) noexcept
+        : position(at), flags(flag_bits), rgbe_(encode_rgbe(power)), octahedral_(encode_octahedral(toward_source))
     {
     }
 
@@ -2622,15 +3328,15 @@ public:
     }
 
     /// The unit direction back toward where the photon came from.
-    [[nodiscard]] Vec3<float> from() const noexcept { return normalize(unnormalised_from()); }
+    [[nodiscard]] Vec3<float> toward_source() const noexcept { return normalize(unnormalised_toward_source()); }
 
     /// Whether the photon arrived on the side of a surface that the normal n points to.
-    [[nodiscard]] bool arrived_on(const Vec3<float>& n) const noexcept { return dot(unnormalised_from(), n) > 0.0f; }
+    [[nodiscard]] bool arrived_on(const Vec3<float>& n) const noexcept { return dot(unnormalised_toward_source(), n) > 0.0f; }
 
     friend bool operator==(const Photon&, const Photon&) = default;
 
 private:
-    [[nodiscard]] Vec3<float> unnormalised_from() const noexcept
+    [[nodiscard]] Vec3<float> unnormalised_toward_source() const noexcept
     {
         const float u = float(octahedral_[0]) * (2.0f / 65535.0f) - 1.0f, v = float(octahedral_[1]) * (2.0f / 65535.0f) - 1.0f;
         const float z = 1.0f - std::abs(u) - std::abs(v);
@@ -2674,61 +3380,6 @@ private:
 
 static_assert(sizeof(Photon) == 24);
 
-/// A direction uniform on the unit sphere: z = 1 - 2u, phi = 2 pi v (errata 4: no
-/// rejection sampling of a cube, whose accepted points were never normalised).
-template <Scalar T>
-[[nodiscard]] inline Vec3<T> uniform_sphere(T u, T v) noexcept
-{
-    const T z = T(1) - T(2) * u;
-    const T r = prism::sqrt(clamp(T(1) - z * z, T(0), T(1)));
-    const T phi = T(2) * pi<T> * v;
-    return {r * std::cos(phi), r * std::sin(phi), z};
-}
-
-template <Scalar T>
-[[nodiscard]] inline Vec3<T> uniform_sphere(Pcg32& rng) noexcept
-{
-    const T u = rng.uniform<T>();
-    return uniform_sphere(u, rng.uniform<T>());
-}
-
-/// Two unit vectors that make an orthonormal frame with the unit vector n (Duff et al.
-/// 2017, "Building an Orthonormal Basis, Revisited").
-template <Scalar T>
-[[nodiscard]] inline std::pair<Vec3<T>, Vec3<T>> orthonormal_frame(const Vec3<T>& n) noexcept
-{
-    const T sign = std::copysign(T(1), n.z);
-    const T a = T(-1) / (sign + n.z);
-    const T b = n.x * n.y * a;
-    return {{T(1) + sign * n.x * n.x * a, sign * b, -sign * n.x}, {b, sign + n.y * n.y * a, -n.y}};
-}
-
-/// A cosine-distributed direction about the unit normal n (Malley's method: a uniform
-/// point on the disk, lifted onto the hemisphere): the diffuse bounce of a photon.
-template <Scalar T>
-[[nodiscard]] inline Vec3<T> cosine_hemisphere(const Vec3<T>& n, Pcg32& rng) noexcept
-{
-    const T r = prism::sqrt(rng.uniform<T>());
-    const T phi = T(2) * pi<T> * rng.uniform<T>();
-    const T x = r * std::cos(phi), y = r * std::sin(phi);
-    const T z = prism::sqrt(clamp(T(1) - x * x - y * y, T(0), T(1)));
-    const auto [s, t] = orthonormal_frame(n);
-    return x * s + y * t + z * n;
-}
-
-/// Russian roulette (errata 7): the photon survives with probability p = the largest
-/// channel of its reflectance (at most 1), and a survivor's power is scaled per channel
-/// by reflectance / p, so the expected power leaving is reflectance times the power
-/// arriving, in every channel. Returns false when the photon is absorbed.
-template <Scalar T>
-[[nodiscard]] inline bool russian_roulette(Rgb<T>& power, const Rgb<T>& reflectance, Pcg32& rng) noexcept
-{
-    const T p = clamp(max_component(reflectance), T(0), T(1));
-    if (!(p > T(0)) || rng.uniform<T>() >= p) return false;
-    power *= reflectance / p;
-    return true;
-}
-
 } // namespace prism
 
 // ---- prism/photon/photon_map.hpp ----
@@ -2736,6 +3387,7 @@ template <Scalar T>
 
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <span>
@@ -2766,7 +3418,7 @@ struct Estimator {
     std::size_t k = 0;   ///< 0: every photon within `radius`; else the k nearest, searched no further than `radius`
     float radius = 0.1f; ///< the fixed radius, or the k-nearest search's maximum distance
     Filter filter = Filter::box;
-    float disk = 1.0f;          ///< keep photons within disk * r of the tangent plane; < 1 flattens the sphere against light leaks
+    float max_height_ratio = 1.0f; ///< keep photons within this times r of the tangent plane; < 1 flattens the sphere to a disk against light leaks
     std::uint8_t excluded = 0;  ///< leave out photons with any of these flags
 };
 
@@ -2854,28 +3506,20 @@ public:
             const Photon& photon = photons_[index];
             if ((photon.flags & estimator.excluded) != 0 || !photon.arrived_on(n)) return;
             const float height = dot(photon.position - p, n);
-            if (height * height > estimator.disk * estimator.disk * r2) return;
+            if (height * height > estimator.max_height_ratio * estimator.max_height_ratio * r2) return;
             sum += photon.power() * weight(d2, r2);
         };
         float r2 = estimator.radius * estimator.radius;
         if (estimator.k == 0) {
             tree_->within({p.x, p.y, p.z}, estimator.radius, [&](std::uint32_t index, float d2) { add(index, d2, r2); });
         } else {
-            // The smallest capacity that holds k: a search's heap is no larger than needed.
-            const auto nearest = [&]<std::size_t Capacity>() {
-                const auto found = tree_->nearest<Capacity, false>({p.x, p.y, p.z}, estimator.k, estimator.radius);
-                if (found.size() == 0) return false;
-                if (found.size() == std::min(estimator.k, Capacity) || !(r2 < infinity<float>)) // the farthest is first
-                    r2 = found[0].distance2;
-                if (!(r2 > 0.0f)) return false;
-                for (const Neighbour<float>& neighbour : found) add(neighbour.index, neighbour.distance2, r2);
-                return true;
-            };
-            const bool any = estimator.k <= 64    ? nearest.template operator()<64>()
-                             : estimator.k <= 128 ? nearest.template operator()<128>()
-                             : estimator.k <= 256 ? nearest.template operator()<256>()
-                                                  : nearest.template operator()<max_k>();
-            if (!any) return Rgb<float>(0.0f);
+            std::array<Neighbour<float>, max_k> buffer;
+            KNearest<float> found(buffer, estimator.k, r2);
+            tree_->search({p.x, p.y, p.z}, found);
+            if (found.size() == 0) return sum;
+            if (found.full() || !(r2 < infinity<float>)) r2 = found.farthest().distance2;
+            if (!(r2 > 0.0f)) return Rgb<float>(0.0f);
+            for (const Neighbour<float>& neighbour : found) add(neighbour.index, neighbour.distance2, r2);
         }
         return sum / (weight.mean() * pi<float> * r2);
     }
@@ -2908,7 +3552,7 @@ public:
             const Photon& photon = photons_[i];
             if (photon.flags & Photon::shadow) continue;
             samples.push_back(photon);
-            irradiance_.push_back(irradiance<K>(photon.position, photon.from()));
+            irradiance_.push_back(irradiance<K>(photon.position, photon.toward_source()));
         }
         samples_ = std::move(samples);
         sample_tree_.emplace(PhotonPositions{samples_});
@@ -2931,8 +3575,11 @@ public:
                                                                         float max_radius) const noexcept
     {
         std::size_t direct = 0, shadow = 0;
-        if (!tree_) return {0, 0};
-        for (const Neighbour<float>& neighbour : tree_->nearest<max_k>({p.x, p.y, p.z}, k, max_radius)) {
+        if (!tree_ || !(max_radius >= 0.0f)) return {0, 0};
+        std::array<Neighbour<float>, max_k> buffer;
+        KNearest<float> found(buffer, k, max_radius * max_radius);
+        tree_->search({p.x, p.y, p.z}, found);
+        for (const Neighbour<float>& neighbour : found) {
             const Photon& photon = photons_[neighbour.index];
             if (!photon.arrived_on(n)) continue;
             direct += (photon.flags & Photon::direct) != 0;
@@ -2951,108 +3598,35 @@ private:
 
 } // namespace prism
 
-// ---- prism/scene/object.hpp ----
-// Object: a shape with a material; ObjectArray: many of one type in one scene slot.
-
-
-#include <span>
-#include <type_traits>
-#include <utility>
-#include <vector>
-
-namespace prism {
-
-/// One scene object. Construction validates the material (the shape validated itself).
-template <Shape S, Material M>
-    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
-struct Object {
-    using scalar_type = typename S::scalar_type;
-    using shape_type = S;
-    using material_type = M;
-
-    S shape;
-    M material;
-    bool bounded = false; ///< the shape has finite bounds (set at construction, for culling)
-
-    constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m))
-    {
-        material.validate();
-        const Aabb<scalar_type> b = shape.bounds();
-        bounded = is_finite(b.lo) && is_finite(b.hi);
-    }
-};
-
-/// Many objects of one shape and material type, chosen at run time, in one scene slot.
-template <Shape S, Material M>
-    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
-struct ObjectArray {
-    using scalar_type = typename S::scalar_type;
-    using shape_type = S;
-    using material_type = M;
-
-    std::vector<Object<S, M>> items;
-};
-
-namespace detail {
-
-template <class X>
-struct is_slot : std::false_type {};
-template <class S, class M>
-struct is_slot<Object<S, M>> : std::true_type {};
-template <class S, class M>
-struct is_slot<ObjectArray<S, M>> : std::true_type {};
-
-} // namespace detail
-
-/// A scene slot: an Object or an ObjectArray.
-template <class X>
-concept Slot = detail::is_slot<X>::value;
-
-/// The objects of a slot, as a contiguous range.
-template <class S, class M>
-[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const Object<S, M>& object) noexcept
-{
-    return {&object, 1};
-}
-
-template <class S, class M>
-[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const ObjectArray<S, M>& array) noexcept
-{
-    return {array.items};
-}
-
-} // namespace prism
-
 // ---- prism/photon/photon_tracer.hpp ----
 // trace_photons: emit photons from the lights and follow them through a scene into a
 // global and a caustic photon map (Jensen 1996, section 2.1).
 //
-// Global map: photons emitted uniformly over the sphere from each point light, and from
-// each parallel light through a disk facing it that covers every bounded object (the
-// projection disk), stored at every diffuse hit (flagged direct on the first, caustic
-// when only specular bounces came before). Caustic map: photons aimed at the bounding
-// spheres of specular objects (POV-Ray's `target`), their power scaled by the aimed
-// cone's share of the sphere, stored only at the first diffuse hit after one or more
-// specular bounces (L S+ D). A diffuse hit continues by Russian roulette on the
-// reflectance albedo kd with a cosine-distributed direction; a dielectric reflects with
-// probability F and refracts otherwise (Beer-Lambert inside); a conductor reflects by
-// roulette on its reflectance. Shadow photons mark where the straight continuation of a
+// Global map: each light emits everywhere it shines (Light::emit_photon with no target:
+// a point light over its whole sphere, a parallel light through a disk facing it that
+// covers every bounded object), and photons are stored at every diffuse hit (flagged
+// direct on the first, caustic when only specular bounces came before). Caustic map:
+// each light aims at the bounding sphere of every specular object (POV-Ray's `target`;
+// bounding_sphere(shape)), and photons are stored only at the first diffuse hit after
+// one or more specular bounces (L S+ D). Every bounce is scatter_photon's (Russian
+// roulette per channel, material/scattering.hpp), and light travelling inside an object
+// is attenuated by its medium. Shadow photons mark where the straight continuation of a
 // direct photon's path meets further diffuse surfaces (Jensen and Christensen 1995;
 // errata 8). Photon i starts from point i of a scrambled Sobol sequence and draws the
 // rest of its path from its own random stream, so the maps are the same bits for any
-// thread count. A point light with Falloff::none (POV-Ray's `fade_power 0`) has no
-// physical power; its photons are scaled by the squared length of the path they
-// travelled, as POV-Ray does, so that their estimate gives irradiance that does not
-// fall off with distance either.
+// thread count. A light without falloff (POV-Ray's `fade_power 0`) has no physical
+// power; its photons are scaled by the squared length of the path they travelled, as
+// POV-Ray does, so that their estimate gives irradiance that does not fall off with
+// distance either.
 
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <thread>
+#include <optional>
 #include <string>
-#include <type_traits>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -3093,41 +3667,14 @@ struct PhotonMaps {
 
 namespace detail {
 
-/// Where a map's photons start: a point light's whole sphere of directions or a cone of
-/// them toward one specular object, or a disk facing a parallel light, upstream of the
-/// scene.
+/// One light aimed somewhere (everywhere, or at one specular object): a share of a
+/// map's photons in proportion to `power`.
 template <Scalar T>
 struct Emitter {
-    Vec3<T> from{};
-    Vec3<T> axis{};
-    T cos_half_angle = T(-1); ///< -1: every direction
-    Rgb<T> power{};           ///< the power into this cone (Phi * solid angle / 4 pi) or onto this disk (E pi r^2)
-    T disk_radius = T(0);     ///< > 0: parallel light from a disk of this radius centred on `from`
-    bool distance_squared = false; ///< Falloff::none: scale by the squared path length when stored
+    std::size_t light = 0; ///< its number in the scene's Lights{...}
+    PhotonAim<T> aim{};
+    Rgb<T> power{};        ///< Light::photon_power(aim)
 };
-
-/// The point (u, v) of the unit square mapped uniformly onto the disk of radius r centred
-/// at c, perpendicular to the unit axis.
-template <Scalar T>
-[[nodiscard]] inline Vec3<T> uniform_disk(const Vec3<T>& c, const Vec3<T>& axis, T r, T u, T v) noexcept
-{
-    const T rho = r * prism::sqrt(u);
-    const T phi = T(2) * pi<T> * v;
-    const auto [s, t] = orthonormal_frame(axis);
-    return c + rho * std::cos(phi) * s + rho * std::sin(phi) * t;
-}
-
-/// (u, v) mapped uniformly onto the directions within the cone about `axis` with the
-/// given cos(half angle).
-template <Scalar T>
-[[nodiscard]] inline Vec3<T> uniform_cone(const Vec3<T>& axis, T cos_half_angle, T u, T v) noexcept
-{
-    const T cos_theta = T(1) - u * (T(1) - cos_half_angle);
-    const T sin_theta = prism::sqrt(clamp(T(1) - cos_theta * cos_theta, T(0), T(1)));
-    const T phi = T(2) * pi<T> * v;
-    const auto [s, t] = orthonormal_frame(axis);
-    return sin_theta * std::cos(phi) * s + sin_theta * std::sin(phi) * t + cos_theta * axis;
-}
 
 template <class SceneT>
 class PhotonTracer {
@@ -3140,18 +3687,9 @@ public:
         Pcg32 scrambles(config.seed, 0xfeed5eedULL);
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
-        scene.for_each_light([&](const auto& light) {
-            using L = std::remove_cvref_t<decltype(light)>;
-            if constexpr (std::is_same_v<L, PointLight<T>>) lights_.push_back(light);
-            else if constexpr (std::is_same_v<L, DirectionalLight<T>>) suns_.push_back(light);
-        });
         // A sphere around everything bounded: parallel photons start outside it.
-        std::apply([&](const auto&... slot) { (add_to_extent(slot), ...); }, scene_.slots);
-        for (const PointLight<T>& light : lights_)
-            global_.push_back({light.position, {T(0), T(1), T(0)}, T(-1), light.power(), T(0), light.falloff == Falloff::none});
-        if (!extent_.empty())
-            for (const DirectionalLight<T>& sun : suns_)
-                global_.push_back(sun_disk(sun, T(0.5) * (extent_.lo + extent_.hi), T(0.5) * length(extent_.hi - extent_.lo)));
+        if (!scene.bounds().empty()) scene_sphere_ = scene.bounds().bounding_sphere();
+        add_emitters(global_, std::nullopt);
         std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);
@@ -3176,11 +3714,11 @@ public:
 
 private:
     /// Photon i of a map of `count`: choose an emitter by its share of the power (the
-    /// photon carries its power / (count p)), draw where it starts, and follow it. The
-    /// choice and the two numbers that place the photon come from point i of a scrambled
-    /// Sobol (0,2)-sequence, so the photons of each emitter are stratified over its
-    /// directions (or its disk) as on a jittered grid, but for any count; everything after
-    /// the first hit is random.
+    /// photon carries its power / (count p)), let its light place the photon, and follow
+    /// it. The choice and the two numbers that place the photon come from point i of a
+    /// scrambled Sobol (0,2)-sequence, so the photons of each emitter are stratified over
+    /// its directions (or its disk) as on a jittered grid, but for any count; everything
+    /// after the first hit is random.
     void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass,
               std::vector<Photon>& out) const
     {
@@ -3201,17 +3739,13 @@ private:
             start += share;
         }
         u = std::clamp((u - start) / p, 0.0, std::nextafter(1.0, 0.0));
-        const Rgb<T> power = e->power / T(double(count) * p);
-        if (e->disk_radius > T(0)) {
-            follow({uniform_disk(e->from, e->axis, e->disk_radius, T(u), T(v)), e->axis}, power, false, rng, caustic_pass, out);
-            return;
-        }
-        const Vec3<T> direction = e->cos_half_angle <= T(-1) ? uniform_sphere(T(u), T(v)) : uniform_cone(e->axis, e->cos_half_angle, T(u), T(v));
-        follow({e->from, direction}, power, e->distance_squared, rng, caustic_pass, out);
+        const EmittedPhoton<T> photon =
+            scene_.visit_light(e->light, [&](const auto& light) { return light.emit_photon(e->aim, T(u), T(v)); });
+        follow(photon.ray, e->power / T(double(count) * p) * photon.weight, photon.without_falloff, rng, caustic_pass, out);
     }
 
     /// Follow one photon; in the caustic pass store only L S+ D and stop there.
-    void follow(Ray<T> ray, Rgb<T> power, bool distance_squared, Pcg32& rng, bool caustic_pass, std::vector<Photon>& out) const
+    void follow(Ray<T> ray, Rgb<T> power, bool without_falloff, Pcg32& rng, bool caustic_pass, std::vector<Photon>& out) const
     {
         bool direct = true, specular_only = true;
         T travelled = T(0);
@@ -3221,9 +3755,8 @@ private:
             const Crossing<T>& c = hit->crossing;
             const Vec3<T> d = normalize(ray.direction);
             travelled += c.t * length(ray.direction);
-            const auto stored = [&] { return distance_squared ? power * (travelled * travelled) : power; };
-            const Vec3<T> n = c.entering ? c.normal : -c.normal; // facing the photon
-            const bool go_on = scene_.visit_material(*hit, [&]<class M>(const M& material) -> bool {
+            const auto stored = [&] { return without_falloff ? power * (travelled * travelled) : power; };
+            const bool scattered = scene_.visit_material(*hit, [&]<class M>(const M& material) -> bool {
                 if constexpr (has_diffuse<M>) {
                     if (caustic_pass) {
                         if (!direct && specular_only) out.push_back(photon(c.point, stored(), d, Photon::caustic));
@@ -3233,27 +3766,15 @@ private:
                     if (!direct && specular_only) flags |= Photon::caustic;
                     out.push_back(photon(c.point, stored(), d, flags));
                     if (direct && config_.shadow_photons) store_shadow_photons(c, d, out);
-                    const Rgb<T> reflectance = component_min(material.albedo.albedo(c.point) * material.kd, Rgb<T>(T(1)));
-                    if (!russian_roulette(power, reflectance, rng)) return false;
-                    ray = spawn_ray(c.point, c.error, c.normal, cosine_hemisphere(n, rng));
-                    specular_only = false;
-                } else if constexpr (transmits<M>) {
-                    if (!c.entering) power *= beer_lambert(material.absorption, c.t * length(ray.direction));
-                    const T eta = c.entering ? material.ior : T(1) / material.ior;
-                    const T cos_i = clamp(-dot(d, n), T(0), T(1));
-                    const auto refracted = refract(d, n, eta);
-                    const T fresnel = refracted ? material.fresnel(cos_i, eta) : T(1);
-                    const bool reflect_it = rng.uniform<T>() < fresnel;
-                    if (!russian_roulette(power, Rgb<T>(reflect_it ? material.kr : material.kt), rng)) return false;
-                    ray = spawn_ray(c.point, c.error, c.normal, reflect_it ? reflect(d, n) : *refracted);
-                } else if constexpr (reflects<M>) {
-                    const T cos_i = clamp(-dot(d, n), T(0), T(1));
-                    if (!russian_roulette(power, material.reflectance(cos_i), rng)) return false;
-                    ray = spawn_ray(c.point, c.error, c.normal, reflect(d, n));
                 }
+                attenuate_inside(material, c, ray, power);
+                const auto bounce = scatter_photon(material, c, d, c.facing_normal(), power, rng);
+                if (!bounce) return false;
+                ray = spawn_ray(c.point, c.error, c.normal, bounce->direction);
+                if (bounce->diffuse) specular_only = false;
                 return true;
             });
-            if (!go_on) return;
+            if (!scattered) return;
             direct = false;
         }
     }
@@ -3277,62 +3798,33 @@ private:
         }
     }
 
-    template <class Slot>
-    void add_to_extent(const Slot& slot)
+    /// Every light aimed at `target` (or everywhere), where it sends any power.
+    void add_emitters(std::vector<Emitter<T>>& emitters, const std::optional<BoundingSphere<T>>& target)
     {
-        for (const auto& object : objects_of(slot))
-            if (object.bounded) extent_ = {component_min(extent_.lo, object.shape.bounds().lo), component_max(extent_.hi, object.shape.bounds().hi)};
+        const PhotonAim<T> aim{target, scene_sphere_};
+        for (std::size_t i = 0; i < SceneT::light_count; ++i) {
+            const Rgb<T> power = scene_.visit_light(i, [&](const auto& light) { return light.photon_power(aim); });
+            if (max_component(power) > T(0)) emitters.push_back({i, aim, power});
+        }
     }
 
+    /// Every light aimed at each bounded specular object of the slot.
     template <class Slot>
     void add_targets(const Slot& slot)
     {
         using M = typename Slot::material_type;
         if constexpr (reflects<M> || transmits<M>) {
-            for (const auto& object : objects_of(slot)) {
-                if (!object.bounded) continue;
-                // The sphere around the object: its own for a sphere, else around its box.
-                const Aabb<T> b = object.shape.bounds();
-                Vec3<T> centre = T(0.5) * (b.lo + b.hi);
-                T radius = T(0.5) * length(b.hi - b.lo);
-                if constexpr (requires { object.shape.center(); object.shape.radius(); }) {
-                    centre = object.shape.center();
-                    radius = object.shape.radius() * (T(1) + T(16) * std::numeric_limits<T>::epsilon());
-                }
-                for (const PointLight<T>& light : lights_) {
-                    const Vec3<T> to = centre - light.position;
-                    const T distance = length(to);
-                    Emitter<T> target{light.position, to / distance, T(-1), light.power(), T(0), light.falloff == Falloff::none};
-                    if (distance > radius) {
-                        const T sin_half = radius / distance;
-                        target.cos_half_angle = prism::sqrt(T(1) - sin_half * sin_half);
-                        target.power = light.power() * (T(0.5) * (T(1) - target.cos_half_angle)); // solid angle / 4 pi
-                    }
-                    targets_.push_back(target);
-                }
-                for (const DirectionalLight<T>& sun : suns_) targets_.push_back(sun_disk(sun, centre, radius));
-            }
+            for (const auto& object : objects_of(slot))
+                if (object.bounded) add_emitters(targets_, bounding_sphere(object.shape));
         }
-    }
-
-    /// Parallel light onto the sphere (centre, radius): from the disk of that radius facing
-    /// the light, just upstream of everything bounded, carrying E pi r^2.
-    [[nodiscard]] Emitter<T> sun_disk(const DirectionalLight<T>& sun, const Vec3<T>& centre, T radius) const
-    {
-        const Vec3<T> axis = normalize(sun.direction);
-        const Vec3<T> middle = T(0.5) * (extent_.lo + extent_.hi);
-        const T upstream = length(centre - middle) + T(0.5) * length(extent_.hi - extent_.lo) + radius;
-        return {centre - upstream * axis, axis, T(-1), sun.irradiance * (pi<T> * radius * radius), radius};
     }
 
     const SceneT& scene_;
     PhotonTracerConfig config_;
-    std::vector<PointLight<T>> lights_;
-    std::vector<DirectionalLight<T>> suns_;
-    Aabb<T> extent_{};
-    std::vector<Emitter<T>> global_;  ///< every light's emission for the global map
+    std::optional<BoundingSphere<T>> scene_sphere_; ///< around everything bounded
+    std::vector<Emitter<T>> global_;  ///< every light aimed everywhere, for the global map
     T global_power_ = T(0);
-    std::vector<Emitter<T>> targets_; ///< cones and disks toward specular objects, for the caustic map
+    std::vector<Emitter<T>> targets_; ///< every light aimed at each specular object, for the caustic map
     T target_power_ = T(0);
     std::uint32_t global_scramble_[2]{}, caustic_scramble_[2]{}; ///< the Sobol points' scrambling, per map
 };
@@ -3340,7 +3832,7 @@ private:
 /// Run `trace(first, last, out)` over [0, count) in fixed blocks on worker threads and
 /// concatenate the blocks in order: the result does not depend on the thread count.
 template <class Trace>
-std::vector<Photon> in_blocks(std::size_t count, unsigned threads, Trace&& trace)
+std::vector<Photon> trace_in_fixed_blocks(std::size_t count, unsigned threads, Trace&& trace)
 {
     constexpr std::size_t block = 4096;
     const std::size_t blocks = (count + block - 1) / block;
@@ -3362,18 +3854,17 @@ std::vector<Photon> in_blocks(std::size_t count, unsigned threads, Trace&& trace
 
 } // namespace detail
 
-/// Trace the global and caustic photon maps of a scene, from its point and directional
-/// lights.
+/// Trace the global and caustic photon maps of a scene, from its lights.
 template <class SceneT>
 [[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config)
 {
     const detail::PhotonTracer<SceneT> tracer(scene, config);
     PhotonMaps maps;
     try {
-        maps.global = PhotonMap(detail::in_blocks(config.global_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
+        maps.global = PhotonMap(detail::trace_in_fixed_blocks(config.global_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
             tracer.trace_global(a, b, out);
         }));
-        maps.caustic = PhotonMap(detail::in_blocks(config.caustic_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
+        maps.caustic = PhotonMap(detail::trace_in_fixed_blocks(config.caustic_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
             tracer.trace_caustic(a, b, out);
         }));
     } catch (const std::bad_alloc&) {
@@ -3421,7 +3912,7 @@ public:
     using T = scalar_type;
 
     struct Config {
-        PhotonTracerConfig photons{};
+        PhotonTracerConfig tracing{}; ///< how many photons, and how they are traced
         Estimator caustic{.radius = 0.1f}; ///< the caustic map's estimate
         /// The global map's estimate where it is read directly (gather_rays = 0); direct
         /// and caustic photons are left out, shadow rays and the caustic map count them.
@@ -3436,7 +3927,7 @@ public:
     };
 
     /// Traces the photon maps (the expensive part), then renders with them.
-    PhotonMapper(const SceneT& scene, Config config) : scene_(&scene), config_(config)
+    explicit PhotonMapper(const SceneT& scene, Config config = {}) : scene_(&scene), config_(config)
     {
         scene.validate();
         validate(config.caustic, "PhotonMapper caustic");
@@ -3446,15 +3937,13 @@ public:
         detail::require_non_negative("PhotonMapper min_weight", config.min_weight);
         if (config.visibility_k > PhotonMap::max_k)
             detail::throw_invalid("PhotonMapper visibility_k must be at most ", PhotonMap::max_k, ", got ", config.visibility_k);
-        detail::validate(config.photons);
-        int lights = 0;
-        scene.for_each_light([&](const auto&) { ++lights; });
-        if (config.visibility_k > 0 && lights != 1)
-            detail::throw_invalid("PhotonMapper visibility_k needs a scene with exactly one light, got lights: ", lights);
-        maps_ = trace_photons(scene, config.photons);
+        detail::validate(config.tracing);
+        if (config.visibility_k > 0 && SceneT::light_count != 1)
+            detail::throw_invalid("PhotonMapper visibility_k needs a scene with exactly one light, got lights: ", SceneT::light_count);
+        maps_ = trace_photons(scene, config.tracing);
         if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4);
     }
-    PhotonMapper(const SceneT&& scene, Config config) = delete;
+    PhotonMapper(const SceneT&& scene, Config config = {}) = delete;
 
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
 
@@ -3481,7 +3970,7 @@ private:
     {
         if (!(e.radius > 0.0f && is_finite(e.radius))) detail::throw_invalid(name, " radius must be finite and > 0, got ", e.radius);
         if (e.k > PhotonMap::max_k) detail::throw_invalid(name, " k must be at most ", PhotonMap::max_k, ", got ", e.k);
-        if (!(e.disk > 0.0f && e.disk <= 1.0f)) detail::throw_invalid(name, " disk must be in (0, 1], got ", e.disk);
+        if (!(e.max_height_ratio > 0.0f && e.max_height_ratio <= 1.0f)) detail::throw_invalid(name, " max_height_ratio must be in (0, 1], got ", e.max_height_ratio);
         if (e.filter != Filter::box && e.filter != Filter::cone && e.filter != Filter::gaussian)
             detail::throw_invalid(name, " filter must be box, cone or gaussian, got the value ", static_cast<int>(e.filter));
     }
@@ -3498,28 +3987,25 @@ private:
                                Pcg32& rng) const noexcept
     {
         const Vec3<T>& d = ray.direction;
-        const Vec3<T> n = hit.entering ? hit.normal : -hit.normal;
+        const Vec3<T> n = hit.facing_normal();
         Rgb<T> radiance{T(0)};
         if constexpr (has_diffuse<M>) {
-            const Rgb<T> brdf = material.albedo.albedo(hit.point) * (material.kd / pi<T>);
             const Vec3<float> p(hit.point), nf(n);
             Rgb<T> irradiance = direct(hit, n) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
             if (config_.gather_rays > 0) irradiance += gather(hit, n, rng);
             else irradiance += Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
-            radiance += brdf * irradiance;
+            radiance += diffuse_response(material, hit.point).brdf() * irradiance;
         }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                const SpecularSplit<T> split = specular_split(material, d, n, hit.entering);
+                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
                 if (max_component(weight * split.kr) > config_.min_weight)
                     radiance += split.kr * trace(spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n)), depth + 1, weight * split.kr, rng);
                 if (split.refracted && max_component(weight * split.kt) > config_.min_weight)
                     radiance += split.kt * trace(spawn_ray(hit.point, hit.error, hit.normal, *split.refracted), depth + 1, weight * split.kt, rng);
             }
         }
-        if constexpr (transmits<M>) {
-            if (!hit.entering) radiance *= beer_lambert(material.absorption, hit.t * length(d));
-        }
+        attenuate_inside(material, hit, ray, radiance);
         return radiance;
     }
 
@@ -3536,7 +4022,7 @@ private:
             });
             return irradiance;
         }
-        for_each_light_arriving<false>(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
+        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
         return irradiance;
     }
 
@@ -3552,9 +4038,8 @@ private:
             const Crossing<T>& c = next->crossing;
             sum += scene_->visit_material(*next, [&]<class M>(const M& material) -> Rgb<T> {
                 if constexpr (has_diffuse<M>) {
-                    const Vec3<T> facing = c.entering ? c.normal : -c.normal;
-                    const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(facing)));
-                    return material.albedo.albedo(c.point) * (material.kd / pi<T>) * e;
+                    const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
+                    return diffuse_response(material, c.point).brdf() * e;
                 } else {
                     return Rgb<T>(T(0)); // light seen through mirrors and glass arrives by the caustic map
                 }
@@ -3581,11 +4066,8 @@ private:
 // every segment travelled inside a dielectric, a depth limit and an adaptive cut-off
 // when a path's weight becomes negligible (Hall and Greenberg 1983). Every branch is
 // chosen by the material's compile-time traits, so a scene without dielectrics
-// contains no refraction code.
+// contains no refraction code; the physics of each branch is material/scattering.hpp's.
 
-
-#include <cmath>
-#include <optional>
 
 namespace prism {
 
@@ -3633,15 +4115,14 @@ private:
                                const Rgb<T>& weight) const noexcept
     {
         const Vec3<T>& d = ray.direction;
-        // The normal on the side the ray arrives from.
-        const Vec3<T> n = hit.entering ? hit.normal : -hit.normal;
+        const Vec3<T> n = hit.facing_normal();
         Rgb<T> radiance{T(0)};
 
         if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, n, d);
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                const SpecularSplit<T> split = specular_split(material, d, n, hit.entering);
+                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
                 const Rgb<T> reflect_weight = weight * split.kr;
                 if (max_component(reflect_weight) > config_.min_weight) {
                     const Ray<T> reflected = spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n));
@@ -3656,9 +4137,7 @@ private:
         }
 
         // A ray leaving a dielectric travelled inside it from its origin to here.
-        if constexpr (transmits<M>) {
-            if (!hit.entering) radiance *= beer_lambert(material.absorption, hit.t * length(d));
-        }
+        attenuate_inside(material, hit, ray, radiance);
         return radiance;
     }
 
@@ -3667,34 +4146,151 @@ private:
     {
         Rgb<T> irradiance{T(0)}; // sum of V E cos over the lights
         Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights
-        Rgb<T> highlight{T(0)};  // POV-Ray's Phong term, when asked for
+        Rgb<T> highlights{T(0)}; // POV-Ray's Phong term, for materials that have one
         const Vec3<T> mirror = reflect(d, n);
         for_each_light_arriving(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
             irradiance += v * s.irradiance * cos;
             unlit *= Rgb<T>(T(1)) - v;
-            if (material.phong > T(0)) {
-                const T alignment = dot(mirror, s.wi);
-                if (alignment > T(0)) highlight += (material.phong * power(alignment, material.phong_size) / pi<T>)*v * s.irradiance;
-            }
+            const T h = highlight(material, mirror, s.wi);
+            if (h > T(0)) highlights += h * v * s.irradiance;
         });
-        const Rgb<T> albedo = material.albedo.albedo(hit.point);
-        return albedo * ((material.kd / pi<T>)*irradiance + material.ka * scene_->ambient * unlit) + highlight;
-    }
-
-    /// x^n: by squaring when n is a whole number up to 1024 (a Phong exponent usually
-    /// is; std::pow is a slow library call), by std::pow otherwise.
-    [[nodiscard]] static T power(T x, T n) noexcept
-    {
-        if (!(n >= T(0) && n <= T(1024) && n == std::floor(n))) return std::pow(x, n);
-        T result = T(1);
-        for (auto e = static_cast<unsigned>(n); e != 0; e >>= 1u, x *= x)
-            if (e & 1u) result *= x;
-        return result;
+        return diffuse_response(material, hit.point).reflected(irradiance, scene_->ambient, unlit) + highlights;
     }
 
     const SceneT* scene_;
     Config config_;
 };
+
+} // namespace prism
+
+// ---- prism/light/directional_light.hpp ----
+// DirectionalLight: parallel light from infinitely far away (the sun).
+
+
+namespace prism {
+
+/// Parallel light travelling along `direction`, with irradiance E on a surface facing it.
+template <Scalar T = float>
+struct DirectionalLight {
+    using scalar_type = T;
+
+    Vec3<T> direction{T(0), T(-1), T(0)};
+    Rgb<T> irradiance{T(1)};
+
+    [[nodiscard]] LightSample<T> sample(const Vec3<T>&) const noexcept
+    {
+        return {-normalize(direction), infinity<T>, irradiance};
+    }
+
+    /// E pi r^2 onto the target sphere, or onto the sphere around the whole scene when
+    /// aimed everywhere (nothing when the scene has nothing bounded to light).
+    [[nodiscard]] Rgb<T> photon_power(const PhotonAim<T>& aim) const noexcept
+    {
+        if (!aim.scene) return Rgb<T>(T(0));
+        const T radius = aim.target ? aim.target->radius : aim.scene->radius;
+        return irradiance * (pi<T> * radius * radius);
+    }
+
+    /// Uniform over the disk of the sphere's radius facing the light, upstream of
+    /// everything bounded (the projection disk), travelling along `direction`.
+    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v) const noexcept
+    {
+        const BoundingSphere<T>& scene = *aim.scene;
+        const BoundingSphere<T>& sphere = aim.target ? *aim.target : scene;
+        const Vec3<T> axis = normalize(direction);
+        const T upstream = length(sphere.center - scene.center) + scene.radius + sphere.radius;
+        return {{uniform_disk(sphere.center - upstream * axis, axis, sphere.radius, u, v), axis}};
+    }
+
+    constexpr void validate() const
+    {
+        detail::require_nonzero("DirectionalLight direction", direction);
+        detail::require_non_negative("DirectionalLight irradiance", irradiance);
+    }
+};
+
+static_assert(Light<DirectionalLight<float>>);
+
+} // namespace prism
+
+// ---- prism/light/point_light.hpp ----
+// PointLight: an isotropic point source.
+
+
+namespace prism {
+
+enum class Falloff {
+    inverse_square, ///< physical: E = I / r^2
+    none,           ///< E = I at any distance; only to mirror POV-Ray's `fade_power 0`
+};
+
+/// A point light of radiant intensity I (W/sr, per channel); its power is 4 pi I.
+template <Scalar T = float>
+struct PointLight {
+    using scalar_type = T;
+
+    Vec3<T> position{};
+    Rgb<T> intensity{T(1)};
+    Falloff falloff = Falloff::inverse_square;
+
+    /// Radiant power Phi = 4 pi I.
+    [[nodiscard]] constexpr Rgb<T> power() const noexcept { return T(4) * pi<T> * intensity; }
+
+    [[nodiscard]] LightSample<T> sample(const Vec3<T>& p) const noexcept
+    {
+        const Vec3<T> to_light = position - p;
+        const T r2 = length_squared(to_light);
+        const T r = prism::sqrt(r2);
+        const Rgb<T> e = falloff == Falloff::inverse_square ? intensity / r2 : intensity;
+        return {to_light / r, r, e};
+    }
+
+    /// Everywhere: the whole power. Toward a target sphere: the power into the cone that
+    /// holds it (Phi times the cone's solid angle / 4 pi), or the whole power when the
+    /// light is inside it.
+    [[nodiscard]] Rgb<T> photon_power(const PhotonAim<T>& aim) const noexcept
+    {
+        if (!aim.target) return power();
+        const Cone cone = cone_toward(*aim.target);
+        return cone.cos_half_angle <= T(-1) ? power() : power() * (T(0.5) * (T(1) - cone.cos_half_angle));
+    }
+
+    /// Uniform over the sphere of directions, or over the cone toward the target.
+    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v) const noexcept
+    {
+        const bool without_falloff = falloff == Falloff::none;
+        if (!aim.target) return {{position, uniform_sphere(u, v)}, Rgb<T>(T(1)), without_falloff};
+        const Cone cone = cone_toward(*aim.target);
+        const Vec3<T> direction = cone.cos_half_angle <= T(-1) ? uniform_sphere(u, v) : uniform_cone(cone.axis, cone.cos_half_angle, u, v);
+        return {{position, direction}, Rgb<T>(T(1)), without_falloff};
+    }
+
+    constexpr void validate() const
+    {
+        detail::require_finite("PointLight position", position);
+        detail::require_non_negative("PointLight intensity", intensity);
+        // The photon tracer divides the power among the photons: it must be finite too.
+        if (!is_finite(power()))
+            detail::throw_invalid("PointLight intensity ", detail::describe(intensity), " is too large: its power 4 pi I overflows");
+    }
+
+private:
+    struct Cone {
+        Vec3<T> axis;
+        T cos_half_angle; ///< -1: every direction (the light is inside the sphere)
+    };
+
+    [[nodiscard]] Cone cone_toward(const BoundingSphere<T>& sphere) const noexcept
+    {
+        const Vec3<T> to = sphere.center - position;
+        const T distance = length(to);
+        if (!(distance > sphere.radius)) return {to / distance, T(-1)};
+        const T sin_half = sphere.radius / distance;
+        return {to / distance, prism::sqrt(T(1) - sin_half * sin_half)};
+    }
+};
+
+static_assert(Light<PointLight<float>>);
 
 } // namespace prism
 
@@ -3876,19 +4472,61 @@ static_assert(Material<Mirror<float>> && Material<Metal<double>>);
 
 } // namespace prism
 
-// ---- prism/material/dielectric.hpp ----
-// Dielectric: glass or water; Fresnel-weighted reflection and Snell refraction,
-// Beer-Lambert absorption inside.
+// ---- prism/optics/beer.hpp ----
+// Beer-Lambert absorption in a homogeneous medium.
+
+
+#include <cmath>
+
+namespace prism {
+
+/// Fraction of light left after `distance` through a medium with per-channel
+/// attenuation coefficients sigma (solution of dI/dx = -sigma I): exp(-sigma x).
+template <Scalar T>
+[[nodiscard]] inline Rgb<T> beer_lambert(const Rgb<T>& sigma, T distance) noexcept
+{
+    return {std::exp(-sigma.x * distance), std::exp(-sigma.y * distance), std::exp(-sigma.z * distance)};
+}
+
+} // namespace prism
+
+// ---- prism/medium/homogeneous.hpp ----
+// Homogeneous: a medium that absorbs the same everywhere (Beer-Lambert).
 
 
 namespace prism {
 
-/// A clear or tinted dielectric. The Fresnel policy (ExactFresnel or SchlickFresnel)
-/// splits light between reflection and refraction; kr and kt are the seed's scale
-/// factors on top; absorption is Beer-Lambert's coefficient per unit length, per channel.
-/// The outside medium has index 1.
-template <Scalar T = float, class Fresnel = ExactFresnel>
-    requires FresnelPolicy<Fresnel, T>
+/// A uniform absorbing medium: `absorption` is Beer-Lambert's coefficient per unit
+/// length, per channel (0: clear).
+template <Scalar T = float>
+struct Homogeneous {
+    using scalar_type = T;
+
+    Rgb<T> absorption{T(0)};
+
+    /// exp(-absorption distance), per channel.
+    [[nodiscard]] Rgb<T> transmittance(T distance) const noexcept { return beer_lambert(absorption, distance); }
+
+    constexpr void validate() const { detail::require_non_negative("Homogeneous absorption", absorption); }
+};
+
+static_assert(Medium<Homogeneous<float>> && Medium<Homogeneous<double>>);
+
+} // namespace prism
+
+// ---- prism/material/dielectric.hpp ----
+// Dielectric: glass or water; Fresnel-weighted reflection and Snell refraction into an
+// interior medium (Beer-Lambert absorption by default).
+
+
+namespace prism {
+
+/// A clear or tinted dielectric of index `ior` (the outside has index 1). The Fresnel
+/// policy (ExactFresnel or SchlickFresnel) splits light between reflection and
+/// refraction; kr and kt are the seed's scale factors on top; `interior` is the medium
+/// inside (Homogeneous: Beer-Lambert absorption per unit length, per channel).
+template <Scalar T = float, class Fresnel = ExactFresnel, Medium Interior = Homogeneous<T>>
+    requires FresnelPolicy<Fresnel, T> && std::same_as<typename Interior::scalar_type, T>
 struct Dielectric {
     using scalar_type = T;
     using fresnel_policy = Fresnel;
@@ -3896,18 +4534,22 @@ struct Dielectric {
     static constexpr bool reflects = true;
     static constexpr bool transmits = true;
 
-    T ior = T(1.5);
-    Rgb<T> absorption{T(0)};
+    T ior = T(1.5);      ///< the index of refraction inside
+    Interior interior{}; ///< the medium that fills it
     T kr = T(1);
     T kt = T(1);
 
+    [[nodiscard]] constexpr T refractive_index() const noexcept { return ior; }
     /// Fresnel reflectance for incident cosine cos_i and eta = n_t / n_i.
     [[nodiscard]] constexpr T fresnel(T cos_i, T eta) const noexcept { return Fresnel::reflectance(cos_i, eta); }
+    [[nodiscard]] constexpr Rgb<T> reflection_tint() const noexcept { return Rgb<T>(kr); }
+    [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(kt); }
+    [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior; }
 
     constexpr void validate() const
     {
         detail::require_positive("Dielectric ior", ior);
-        detail::require_non_negative("Dielectric absorption", absorption);
+        interior.validate();
         detail::require_non_negative("Dielectric kr", kr);
         detail::require_non_negative("Dielectric kt", kt);
     }
@@ -3978,7 +4620,25 @@ static_assert(Texture<Solid<float>> && Texture<Checker<double>>);
 // Diffuse: a Lambertian surface with the seed's kd (diffuse) and ka (ambient) factors.
 
 
+#include <cmath>
+
 namespace prism {
+
+namespace detail {
+
+/// x^n: by squaring when n is a whole number up to 1024 (a Phong exponent usually is;
+/// std::pow is a slow library call), by std::pow otherwise.
+template <Scalar T>
+[[nodiscard]] constexpr T power(T x, T n) noexcept
+{
+    if (!(n >= T(0) && n <= T(1024) && n == std::floor(n))) return std::pow(x, n);
+    T result = T(1);
+    for (auto e = static_cast<unsigned>(n); e != 0; e >>= 1u, x *= x)
+        if (e & 1u) result *= x;
+    return result;
+}
+
+} // namespace detail
 
 /// Lambertian reflection, BRDF = albedo / pi, scaled by kd for light from the lights and
 /// by ka for the scene's ambient term (seen only where every light is occluded).
@@ -3999,6 +4659,16 @@ struct Diffuse {
     T ka = T(1);
     T phong = T(0);
     T phong_size = T(40);
+
+    [[nodiscard]] constexpr DiffuseResponse<T> diffuse(const Vec3<T>& p) const noexcept { return {albedo.albedo(p), kd, ka}; }
+
+    /// The Phong highlight's weight for cos_alpha = R . L (0 when phong is 0 or the light
+    /// is behind the mirror direction): radiance phong cos_alpha^phong_size E / pi.
+    [[nodiscard]] constexpr T highlight(T cos_alpha) const noexcept
+    {
+        if (!(phong > T(0)) || !(cos_alpha > T(0))) return T(0);
+        return phong * detail::power(cos_alpha, phong_size) / pi<T>;
+    }
 
     constexpr void validate() const
     {
@@ -4294,246 +4964,6 @@ template <Integrator I>
     if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
     return film;
 }
-
-} // namespace prism
-
-// ---- prism/scene/hit.hpp ----
-// Hit: the closest crossing of a ray with a scene, and which object it belongs to.
-
-
-#include <cstdint>
-
-namespace prism {
-
-template <Scalar T>
-struct Hit {
-    Crossing<T> crossing{};  ///< where, with the outward normal and whether the ray enters
-    std::uint32_t slot = 0;  ///< the scene slot (compile-time position) of the object
-    std::uint32_t index = 0; ///< the object within its slot
-};
-
-} // namespace prism
-
-// ---- prism/scene/scene.hpp ----
-// Scene: lights and object slots fixed at compile time; closest-hit and shadow queries.
-
-
-#include <cstddef>
-#include <cstdint>
-#include <optional>
-#include <tuple>
-#include <utility>
-
-namespace prism {
-
-/// The lights of a scene, each of its own type.
-template <Light... Ls>
-struct Lights {
-    std::tuple<Ls...> items;
-
-    constexpr explicit Lights(Ls... lights) : items(std::move(lights)...)
-    {
-        std::apply([](const auto&... light) { (light.validate(), ...); }, items);
-    }
-};
-
-/// A scene: its lights, object slots (one type each), background and ambient radiance.
-/// Which shapes and materials exist is part of the type, so integrators compile only
-/// the code those materials need.
-template <class LightList, Slot... Slots>
-class Scene {
-    static_assert(sizeof...(Slots) > 0, "a scene needs at least one object");
-
-public:
-    using scalar_type = typename std::tuple_element_t<0, std::tuple<Slots...>>::scalar_type;
-    using T = scalar_type;
-    static_assert((std::same_as<typename Slots::scalar_type, T> && ...), "all objects must share one scalar type");
-
-    /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
-    static constexpr bool has_transmissive = (transmits<typename Slots::material_type> || ...);
-    /// Some material has a mirror lobe.
-    static constexpr bool has_specular = (reflects<typename Slots::material_type> || ...) || has_transmissive;
-    static constexpr std::size_t slot_count = sizeof...(Slots);
-
-    // Scene Public Members
-
-    LightList lights;
-    std::tuple<Slots...> slots;
-    Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
-    Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
-
-    constexpr Scene(LightList light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
-    {
-        // One box around every bounded object: a ray that misses it skips them all.
-        std::apply([this](const auto&... slot) { (add_to_cluster(slot), ...); }, slots);
-        bounded_objects_ = !cluster_.empty();
-    }
-
-    constexpr void validate() const
-    {
-        detail::require_non_negative("Scene background", background);
-        detail::require_non_negative("Scene ambient", ambient);
-    }
-
-    // Scene Queries
-
-    /// The closest crossing with t inside `range`. Every object is asked for its
-    /// crossings without their surfaces; only the nearest one is then asked again, over
-    /// the same range, for its surface.
-    [[nodiscard]] std::optional<Hit<T>> closest_hit(const Ray<T>& ray, Interval<T> range) const noexcept
-    {
-        Nearest nearest{};
-        const bool near_cluster = reaches_cluster(ray, range);
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (nearest_in_slot<I>(ray, range, nearest, near_cluster), ...);
-        }(std::index_sequence_for<Slots...>{});
-        if (!nearest.found) return std::nullopt;
-        return surface_in_slot<0>(ray, nearest);
-    }
-
-    /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
-    /// object is in the way, otherwise Beer-Lambert absorption (times kt per boundary)
-    /// through every dielectric crossed, refraction ignored (the lecture notes' shadow
-    /// rays through transparent objects). With GlassTransmits = false dielectrics block
-    /// the ray like any other object: a photon mapper brings the light through them by
-    /// its caustic map instead (as POV-Ray does for photon targets).
-    template <bool GlassTransmits = true>
-    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
-    {
-        Rgb<T> tr{T(1)};
-        // Unwidened: a shadow ray needs no spurious crossing a far-off shape might report
-        // (culling it can only let light through where rounding alone would block it).
-        const bool near_cluster = bounded_objects_ && (cluster_.contains(ray.origin) || !cluster_.clip(ray, {T(0), t_max}).empty());
-        const bool open = [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return (transmittance_of_slot<I, GlassTransmits>(ray, t_max, tr, near_cluster) && ...);
-        }(std::index_sequence_for<Slots...>{});
-        return open ? tr : Rgb<T>{T(0)};
-    }
-
-    /// Call f(material) with the material of the hit object, with its static type.
-    template <class F>
-    decltype(auto) visit_material(const Hit<T>& hit, F&& f) const
-    {
-        return visit_slot<0>(hit, std::forward<F>(f));
-    }
-
-    /// Call f(light) for every light.
-    template <class F>
-    void for_each_light(F&& f) const
-    {
-        std::apply([&](const auto&... light) { (f(light), ...); }, lights.items);
-    }
-
-private:
-    Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
-    bool bounded_objects_ = false;
-
-    // Scene Private Methods
-
-    /// The nearest object so far: where its first crossing is, and the range over
-    /// which it was found.
-    struct Nearest {
-        bool found = false;
-        std::uint32_t slot = 0, index = 0;
-        Interval<T> range{};
-    };
-
-    template <class S>
-    void add_to_cluster(const S& slot) noexcept
-    {
-        for (const auto& object : objects_of(slot))
-            if (object.bounded) cluster_ = {component_min(cluster_.lo, object.shape.bounds().lo), component_max(cluster_.hi, object.shape.bounds().hi)};
-    }
-
-    /// Whether the ray may come near the cluster's box within the range (conservatively:
-    /// Aabb::may_cross). Only the first pass of a query culls by it, so it may use the
-    /// range's end.
-    [[nodiscard]] bool reaches_cluster(const Ray<T>& ray, Interval<T> range) const noexcept
-    {
-        return bounded_objects_ && cluster_.may_cross(ray, range);
-    }
-
-    /// Whether the object needs testing: it is unbounded, or the ray comes near the cluster.
-    template <class O>
-    [[nodiscard]] static bool worth_testing(const O& object, bool near_cluster) noexcept
-    {
-        return near_cluster || !object.bounded;
-    }
-
-    template <std::size_t I>
-    void nearest_in_slot(const Ray<T>& ray, Interval<T>& range, Nearest& nearest, bool near_cluster) const noexcept
-    {
-        const auto objects = objects_of(std::get<I>(slots));
-        for (std::size_t k = 0; k < objects.size(); ++k) {
-            if (!worth_testing(objects[k], near_cluster)) continue;
-            const auto crossings = objects[k].shape.template crossings<false>(ray, range);
-            if (crossings.empty()) continue;
-            // Ending the range just past the crossing keeps every crossing before it, and
-            // so the same first one, while the surface pass refines nothing beyond it:
-            // no shape's answer up to a t depends on where its range ends (shapes cull by
-            // Aabb::reached_after, which ignores the end).
-            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(crossings.front().t)}};
-            range.max = crossings.front().t;
-        }
-    }
-
-    /// The nearest object's first crossing with its surface: the same computation as
-    /// before over a range that holds the same crossings up to it, so the same t.
-    template <std::size_t I>
-    std::optional<Hit<T>> surface_in_slot(const Ray<T>& ray, const Nearest& nearest) const noexcept
-    {
-        if constexpr (I + 1 < sizeof...(Slots)) {
-            if (nearest.slot != I) return surface_in_slot<I + 1>(ray, nearest);
-        }
-        const auto crossings = objects_of(std::get<I>(slots))[nearest.index].shape.crossings(ray, nearest.range);
-        PRISM_ASSERT(!crossings.empty());
-        if (crossings.empty()) return std::nullopt;
-        return Hit<T>{crossings.front(), nearest.slot, nearest.index};
-    }
-
-    template <std::size_t I, bool GlassTransmits>
-    bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr, bool near_cluster) const noexcept
-    {
-        using Slot = std::tuple_element_t<I, std::tuple<Slots...>>;
-        using M = typename Slot::material_type;
-        const Interval<T> range{T(0), t_max};
-        for (const auto& object : objects_of(std::get<I>(slots))) {
-            if (!worth_testing(object, near_cluster)) continue;
-            const auto crossings = object.shape.template crossings<false>(ray, range);
-            if constexpr (!transmits<M> || !GlassTransmits) {
-                if (!crossings.empty()) return false;
-            } else {
-                // Length of the ray inside the solid within [0, t_max].
-                bool inside = crossings.inside_at_start;
-                T previous = T(0), inside_length = T(0);
-                for (const Crossing<T>& c : crossings) {
-                    if (inside) inside_length += c.t - previous;
-                    inside = c.entering;
-                    previous = c.t;
-                }
-                if (inside) inside_length += t_max - previous;
-                if (inside_length > T(0))
-                    tr *= beer_lambert(object.material.absorption, inside_length * length(ray.direction));
-                for (std::size_t k = 0; k < crossings.size(); ++k) tr *= object.material.kt;
-                if (max_component(tr) <= T(0)) return false;
-            }
-        }
-        return true;
-    }
-
-    template <std::size_t I, class F>
-    decltype(auto) visit_slot(const Hit<T>& hit, F&& f) const
-    {
-        if constexpr (I + 1 < sizeof...(Slots)) {
-            if (hit.slot != I) return visit_slot<I + 1>(hit, std::forward<F>(f));
-        }
-        PRISM_ASSERT(hit.slot == I);
-        return f(objects_of(std::get<I>(slots))[hit.index].material);
-    }
-};
-
-template <class LightList, class... Slots>
-Scene(LightList, Slots...) -> Scene<LightList, Slots...>;
 
 } // namespace prism
 

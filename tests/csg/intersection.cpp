@@ -65,7 +65,7 @@ TEST_CASE("a glass lens made by intersection focuses at the thick-lens back foca
             const auto c = lens.crossings(ray, {0, infinity<double>});
             REQUIRE(!c.empty());
             const Crossing<double>& x = c.front();
-            const Vec3<double> facing = x.entering ? x.normal : -x.normal;
+            const Vec3<double> facing = x.facing_normal();
             const auto bent = refract(ray.direction, facing, eta);
             REQUIRE(bent);
             ray = spawn_ray(x.point, x.error, x.normal, *bent);

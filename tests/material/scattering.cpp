@@ -1,30 +1,137 @@
 // SPDX-License-Identifier: MIT
-#include <prism/integrator/specular.hpp>
 #include <prism/material/conductor.hpp>
 #include <prism/material/dielectric.hpp>
+#include <prism/material/diffuse.hpp>
+#include <prism/material/scattering.hpp>
 
 #include <doctest/doctest.h>
 
 #include <cmath>
 
+using prism::Rgb;
 using prism::Vec3;
+using doctest::Approx;
 
-TEST_CASE("the specular split: Fresnel times kr and kt for glass, all reflected past the critical angle, kr for metal")
+TEST_CASE("the delta split: Fresnel times kr and kt for glass, all reflected past the critical angle, kr for metal")
 {
     const prism::Dielectric<double> glass{.ior = 1.5, .kr = 1, .kt = 0.9};
     const Vec3<double> n{0, 1, 0};
-    // Normal incidence going in: R = 0.04.
-    const auto in = prism::specular_split(glass, Vec3<double>{0, -1, 0}, n, true);
-    CHECK(in.kr.x == doctest::Approx(0.04));
-    CHECK(in.kt.x == doctest::Approx(0.9 * 0.96));
+    // Normal incidence going in: R = ((1.5 - 1) / (1.5 + 1))^2 = 0.04.
+    const auto in = prism::delta_split(glass, Vec3<double>{0, -1, 0}, n, true);
+    CHECK(in.kr.x == Approx(0.04));
+    CHECK(in.kt.x == Approx(0.9 * 0.96));
     REQUIRE(in.refracted);
     // 45 degrees going out of glass: past 41.8 degrees, total internal reflection.
-    const auto out = prism::specular_split(glass, prism::normalize(Vec3<double>{1, -1, 0}), n, false);
+    const auto out = prism::delta_split(glass, prism::normalize(Vec3<double>{1, -1, 0}), n, false);
     CHECK_FALSE(out.refracted);
     CHECK(out.kr.x == 1);
     CHECK(out.kt.x == 0);
+    // 30 degrees going in: Snell gives sin t = 0.5 / 1.5.
+    const auto oblique = prism::delta_split(glass, Vec3<double>{0.5, -std::sqrt(0.75), 0}, n, true);
+    REQUIRE(oblique.refracted);
+    CHECK(oblique.refracted->x == Approx(0.5 / 1.5));
     const prism::Mirror<double> mirror{{.kr = {0.9, 0.5, 0.1}}};
-    const auto m = prism::specular_split(mirror, prism::normalize(Vec3<double>{1, -1, 0}), n, true);
+    const auto m = prism::delta_split(mirror, prism::normalize(Vec3<double>{1, -1, 0}), n, true);
     CHECK(m.kr.y == 0.5);
     CHECK_FALSE(m.refracted);
+}
+
+TEST_CASE("the diffuse response: BRDF albedo kd / pi, the seed's ambient term, photons keep albedo kd at most 1")
+{
+    const prism::Diffuse<double> matte{.albedo = {.color = {0.5, 0.25, 0.8}}, .kd = 1.5, .ka = 0.2};
+    const auto r = prism::diffuse_response(matte, Vec3<double>{0, 0, 0});
+    CHECK(r.brdf().x == Approx(0.75 / std::acos(-1.0)));
+    // E = 2 from the lights, ambient 3 seen where half the light is blocked.
+    CHECK(r.reflected(Rgb<double>(2), Rgb<double>(3), Rgb<double>(0.5)).y == Approx(0.25 * (1.5 / std::acos(-1.0) * 2 + 0.2 * 3 * 0.5)));
+    CHECK(r.photon_reflectance().z == 1.0); // 0.8 * 1.5 = 1.2: a photon cannot gain power
+    CHECK(r.photon_reflectance().x == Approx(0.75));
+}
+
+TEST_CASE("a highlight only where a material has one: POV-Ray's phong (R.L)^size / pi")
+{
+    const prism::Diffuse<double> shiny{.phong = 0.5, .phong_size = 4};
+    const Vec3<double> mirror{0, 1, 0}, wi = prism::normalize(Vec3<double>{1, 1, 0});
+    CHECK(prism::highlight(shiny, mirror, wi) == Approx(0.5 * 0.25 / std::acos(-1.0))); // cos^4 45 degrees = 1/4
+    CHECK(prism::highlight(shiny, mirror, -wi) == 0.0);
+    CHECK(prism::highlight(prism::Diffuse<double>{}, mirror, wi) == 0.0);
+    CHECK(prism::highlight(prism::Mirror<double>{}, mirror, wi) == 0.0);
+}
+
+TEST_CASE("light inside glass: Beer-Lambert over the path, on leaving only; shadow rays add the tint per boundary")
+{
+    const prism::Dielectric<double> glass{.interior = {.absorption = {0.5, 1.0, 0.0}}, .kt = 0.9};
+    const prism::Ray<double> ray{{0, 0, 0}, {2, 0, 0}}; // not unit: distance is t |d|
+    prism::Crossing<double> leaving = prism::Crossing<double>::without_surface(1.5, false);
+    Rgb<double> light(1);
+    prism::attenuate_inside(glass, leaving, ray, light);
+    CHECK(light.x == Approx(std::exp(-0.5 * 3)));
+    CHECK(light.z == 1.0);
+    const prism::Crossing<double> entering = prism::Crossing<double>::without_surface(1.5, true);
+    Rgb<double> outside(1);
+    prism::attenuate_inside(glass, entering, ray, outside);
+    CHECK(outside == Rgb<double>(1));
+    // A shadow ray through a ball: in at t = 1, out at t = 2, on to t_max = 5.
+    prism::Crossings<double, 2> chord;
+    chord.push_back(prism::Crossing<double>::without_surface(1, true));
+    chord.push_back(prism::Crossing<double>::without_surface(2, false));
+    Rgb<double> tr(1);
+    prism::attenuate_shadow_ray(glass, chord, ray, 5.0, tr);
+    CHECK(tr.y == Approx(std::exp(-1.0 * 2) * 0.81));
+    // Starting inside, ending inside: the whole [0, t_max] is in the glass, no boundary.
+    prism::Crossings<double, 2> within;
+    within.inside_at_start = true;
+    Rgb<double> inside(1);
+    prism::attenuate_shadow_ray(glass, within, ray, 0.25, inside);
+    CHECK(inside.y == Approx(std::exp(-1.0 * 0.5)));
+}
+
+namespace {
+
+/// The mean power a photon of power 1 leaves with, per lobe, over n scatterings.
+template <class M>
+std::pair<Rgb<double>, Rgb<double>> mean_scattered(const M& material, const Vec3<double>& d, int n)
+{
+    prism::Pcg32 rng(7, 3);
+    const Vec3<double> up{0, 1, 0};
+    prism::Crossing<double> hit = prism::Crossing<double>::without_surface(1, true);
+    hit.point = {0, 0, 0};
+    hit.normal = up;
+    Rgb<double> diffuse(0), specular(0);
+    for (int i = 0; i < n; ++i) {
+        Rgb<double> power(1);
+        const auto bounce = prism::scatter_photon(material, hit, d, up, power, rng);
+        if (!bounce) continue;
+        if (bounce->diffuse) {
+            CHECK(prism::dot(bounce->direction, up) >= 0);
+            diffuse += power;
+        } else {
+            specular += power;
+        }
+    }
+    return {diffuse / double(n), specular / double(n)};
+}
+
+} // namespace
+
+TEST_CASE("photon scattering is unbiased per channel: the mean power leaving is the reflectance, per lobe")
+{
+    const int n = 400000;
+    const Vec3<double> d = prism::normalize(Vec3<double>{1, -1, 0});
+    // Standard error of a roulette mean with survival p: sqrt(p (1 - p) / n) (r / p)
+    // at most 1.6e-3 here; 4 sigma.
+    const double tolerance = 7e-3;
+    const prism::Diffuse<double> matte{.albedo = {.color = {0.6, 0.3, 0.1}}};
+    const auto [d1, s1] = mean_scattered(matte, d, n);
+    CHECK(d1.x == Approx(0.6).epsilon(tolerance / 0.6));
+    CHECK(d1.y == Approx(0.3).epsilon(tolerance / 0.3));
+    CHECK(d1.z == Approx(0.1).epsilon(tolerance / 0.1 * 2));
+    CHECK(s1 == Rgb<double>(0));
+    const prism::Mirror<double> mirror{{.kr = {0.9, 0.5, 0.2}}};
+    const auto [d2, s2] = mean_scattered(mirror, d, n);
+    CHECK(d2 == Rgb<double>(0));
+    CHECK(s2.y == Approx(0.5).epsilon(tolerance / 0.5));
+    // Glass at 45 degrees: F = 0.0502399 reflected, the rest refracted, both kr = kt = 1.
+    const prism::Dielectric<double> glass{};
+    const auto [d3, s3] = mean_scattered(glass, d, n);
+    CHECK(s3.x == Approx(1.0).epsilon(1e-12)); // reflected or refracted, the power is kept
 }

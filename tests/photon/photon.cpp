@@ -120,5 +120,5 @@ TEST_CASE("the compact photon record: 24 bytes, power to 1/256 relative, directi
     CHECK(std::abs(sum_out / sum_in - 1) < 1e-4); // rounding to nearest: no bias in sums
     CHECK(worst_angle < 1e-4);                    // 16-bit octahedral: about 2 / 65535 of a radian at worst
     CHECK(Photon({0, 0, 0}, Rgb<float>(0), {0, 0, 1}, Photon::shadow).power() == Rgb<float>(0.0f));
-    CHECK(Photon({0, 0, 0}, Rgb<float>(1), {0, 0, -1}, 0).from().z == doctest::Approx(-1.0f)); // the octahedron's folded half
+    CHECK(Photon({0, 0, 0}, Rgb<float>(1), {0, 0, -1}, 0).toward_source().z == doctest::Approx(-1.0f)); // the octahedron's folded half
 }

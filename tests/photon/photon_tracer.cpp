@@ -174,7 +174,7 @@ TEST_CASE("a glass ball focuses a parallel beam R (2 - n) / (2 (n - 1)) behind i
         for (double eta : {n, 1 / n}) {
             const auto c = ball.crossings(ray, {0, infinity<double>});
             REQUIRE(!c.empty());
-            const Vec3<double> facing = c[0].entering ? c[0].normal : -c[0].normal;
+            const Vec3<double> facing = c[0].facing_normal();
             const auto bent = refract(ray.direction, facing, eta);
             REQUIRE(bent);
             ray = spawn_ray(c[0].point, c[0].error, c[0].normal, *bent);

@@ -59,8 +59,8 @@ TEST_CASE("transmittance: opaque blocks, a dielectric absorbs by Beer-Lambert al
     // Ending inside the glass: half the chord.
     CHECK(scene.transmittance({{0, 0, 0}, {1, 0, 0}}, 5).y == doctest::Approx(std::exp(-1.0)));
     // For a photon mapper glass is opaque: its caustic map brings the light through.
-    CHECK(scene.transmittance<false>({{0, 0, 0}, {1, 0, 0}}, 100) == Rgb<double>(0));
-    CHECK(scene.transmittance<false>({{0, 0, 0}, {1, 0, 0}}, 3.9) == Rgb<double>(1));
+    CHECK(scene.transmittance<prism::ShadowsThroughGlass::blocked>({{0, 0, 0}, {1, 0, 0}}, 100) == Rgb<double>(0));
+    CHECK(scene.transmittance<prism::ShadowsThroughGlass::blocked>({{0, 0, 0}, {1, 0, 0}}, 3.9) == Rgb<double>(1));
 }
 
 TEST_CASE("background and ambient are validated")

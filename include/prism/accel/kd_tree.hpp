@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 namespace prism {
@@ -50,10 +51,11 @@ struct ArrayPoints {
 };
 
 /// One neighbour: its squared distance from the query and its index in the point set.
+/// Trivially default-constructible, so a search's buffer costs nothing to set up.
 template <Scalar T>
 struct Neighbour {
-    T distance2 = infinity<T>;
-    std::uint32_t index = 0;
+    T distance2;
+    std::uint32_t index;
 
     /// Nearer first; at equal distance, the lower index first.
     friend constexpr bool operator<(const Neighbour& a, const Neighbour& b) noexcept
@@ -63,10 +65,93 @@ struct Neighbour {
     friend constexpr bool operator==(const Neighbour&, const Neighbour&) = default;
 };
 
+/// What a search collects. `bound()` is the squared distance beyond which it takes
+/// nothing more (the search prunes every cell farther than that); `add(distance2,
+/// index)` offers it a point within the bound.
+template <class R, class T>
+concept ResultSet = requires(R& results, const R& const_results, T distance2, std::uint32_t index) {
+    { const_results.bound() } -> std::same_as<T>;
+    results.add(distance2, index);
+};
+
+/// The k nearest points within a maximum distance, in a buffer of at least k the caller
+/// owns: a max-heap on (distance, index) while searching, so the farthest is first.
+template <Scalar T>
+class KNearest {
+public:
+    /// k is capped by the buffer's size; max_distance2 is the squared maximum distance.
+    constexpr KNearest(std::span<Neighbour<T>> buffer, std::size_t k, T max_distance2) noexcept
+        : heap_(buffer.data()), k_(k < buffer.size() ? k : buffer.size()), bound_(max_distance2)
+    {
+    }
+
+    [[nodiscard]] constexpr T bound() const noexcept { return bound_; }
+
+    constexpr void add(T distance2, std::uint32_t index) noexcept
+    {
+        const Neighbour<T> candidate{distance2, index};
+        if (count_ < k_) {
+            heap_[count_++] = candidate;
+            std::push_heap(heap_, heap_ + count_);
+            if (count_ == k_) bound_ = heap_[0].distance2;
+        } else if (candidate < heap_[0]) {
+            replace_top(candidate);
+            bound_ = heap_[0].distance2;
+        }
+    }
+
+    [[nodiscard]] constexpr std::size_t size() const noexcept { return count_; }
+    [[nodiscard]] constexpr bool full() const noexcept { return count_ == k_; }
+    [[nodiscard]] constexpr const Neighbour<T>* begin() const noexcept { return heap_; }
+    [[nodiscard]] constexpr const Neighbour<T>* end() const noexcept { return heap_ + count_; }
+    /// The farthest found (the heap's top); only when size() > 0.
+    [[nodiscard]] constexpr const Neighbour<T>& farthest() const noexcept { return heap_[0]; }
+
+    /// Nearest first, ties by lower index (ends the heap order).
+    constexpr void sort() noexcept { std::sort_heap(heap_, heap_ + count_); }
+
+private:
+    /// Replace the largest of the full heap and sift the newcomer down: one pass of log k
+    /// steps, where pop_heap then push_heap take two.
+    constexpr void replace_top(const Neighbour<T>& item) noexcept
+    {
+        std::size_t at = 0;
+        for (;;) {
+            const std::size_t left = 2 * at + 1;
+            if (left >= k_) break;
+            const std::size_t right = left + 1;
+            const std::size_t larger = right < k_ && heap_[left] < heap_[right] ? right : left;
+            if (!(item < heap_[larger])) break;
+            heap_[at] = heap_[larger];
+            at = larger;
+        }
+        heap_[at] = item;
+    }
+
+    Neighbour<T>* heap_;
+    std::size_t k_;
+    std::size_t count_ = 0;
+    T bound_; ///< the maximum distance until k are found, then the k-th nearest's
+};
+
+/// Every point within a radius, handed to visit(index, distance2) in tree order.
+template <Scalar T, class Visitor>
+class WithinRadius {
+public:
+    constexpr WithinRadius(T radius2, Visitor& visit) noexcept : radius2_(radius2), visit_(&visit) {}
+
+    [[nodiscard]] constexpr T bound() const noexcept { return radius2_; }
+    constexpr void add(T distance2, std::uint32_t index) { (*visit_)(index, distance2); }
+
+private:
+    T radius2_;
+    Visitor* visit_;
+};
+
 /// The k nearest neighbours found, nearest first (fewer when the set is smaller).
 template <Scalar T, std::size_t K>
 struct NearestNeighbours {
-    std::array<Neighbour<T>, K> items{};
+    std::array<Neighbour<T>, K> items;
     std::size_t count = 0;
 
     [[nodiscard]] constexpr std::size_t size() const noexcept { return count; }
@@ -139,6 +224,16 @@ public:
                axis_.capacity();
     }
 
+    /// The one search: descend toward q, then visit the far side of each split whose
+    /// cell is within results.bound(), handing results every point within it.
+    template <ResultSet<T> Results>
+    constexpr void search(const Point& q, Results& results) const
+    {
+        if (points_.empty() || !(results.bound() >= T(0))) return;
+        Point offsets{};
+        descend(q, 1, 0, points_.size(), offsets, results);
+    }
+
     /// The K nearest points to q, nearest first, ties by lower index.
     template <std::size_t K>
     [[nodiscard]] constexpr NearestNeighbours<T, K> nearest(const Point& q) const noexcept
@@ -155,13 +250,14 @@ public:
     [[nodiscard]] constexpr NearestNeighbours<T, K> nearest(const Point& q, std::size_t k, T max_radius) const noexcept
     {
         static_assert(K >= 1);
-        NearestNeighbours<T, K> heap; // a max-heap on (distance, index) while searching
-        k = k < K ? k : K;
-        if (points_.empty() || k == 0 || !(max_radius >= T(0))) return heap;
-        Point offsets{};
-        search_nearest<K>(q, k, max_radius * max_radius, 1, 0, points_.size(), offsets, heap);
-        if constexpr (K > 1 && Sorted) std::sort_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
-        return heap;
+        NearestNeighbours<T, K> found;
+        if (std::is_constant_evaluated()) found.items = {};
+        if (k == 0 || !(max_radius >= T(0))) return found;
+        KNearest<T> results(found.items, k, max_radius * max_radius);
+        search(q, results);
+        if constexpr (Sorted) results.sort();
+        found.count = results.size();
+        return found;
     }
 
     /// Call visit(index, distance2) for every point within `radius` of q (distance <=
@@ -169,9 +265,9 @@ public:
     template <class Visitor>
     constexpr void within(const Point& q, T radius, Visitor&& visit) const
     {
-        if (points_.empty() || !(radius >= T(0))) return;
-        Point offsets{};
-        search_within(q, radius * radius, 1, 0, points_.size(), offsets, visit);
+        if (!(radius >= T(0))) return;
+        WithinRadius<T, std::remove_reference_t<Visitor>> results(radius * radius, visit);
+        search(q, results);
     }
 
     /// Squared Euclidean distance, as every query computes it.
@@ -216,31 +312,14 @@ private:
         build(2 * node + 1, mid, end);
     }
 
-    // Both searches keep `offsets`, the squared distance from q to the current cell along
+    // The search keeps `offsets`, the squared distance from q to the current cell along
     // each axis (as nanoflann does); their sum bounds the distance to any point in the
     // cell from below. Points left of a split are <= its value, right ones >=. The sum is
     // taken afresh in axis order rather than updated by subtraction: each offset is at
     // most the matching term of any point's distance2, and rounded sums in the same order
     // keep that, so a point exactly on a cell's corner is never pruned, and ties at equal
-    // distance resolve by index exactly as in a brute-force search.
-
-    /// Replace the largest of a full max-heap of k items and sift the newcomer down: one
-    /// pass of log k steps, where pop_heap then push_heap take two.
-    template <std::size_t K>
-    static constexpr void replace_top(std::array<Neighbour<T>, K>& heap, std::size_t k, const Neighbour<T>& item) noexcept
-    {
-        std::size_t at = 0;
-        for (;;) {
-            const std::size_t left = 2 * at + 1;
-            if (left >= k) break;
-            const std::size_t right = left + 1;
-            const std::size_t larger = right < k && heap[left] < heap[right] ? right : left;
-            if (!(item < heap[larger])) break;
-            heap[at] = heap[larger];
-            at = larger;
-        }
-        heap[at] = item;
-    }
+    // distance resolve by index exactly as in a brute-force search (equal distances are
+    // searched too).
 
     [[nodiscard]] static constexpr T sum(const Point& offsets) noexcept
     {
@@ -249,51 +328,13 @@ private:
         return total;
     }
 
-    // The search bound is the k-th distance once k are found, max_radius^2 before.
-    template <std::size_t K>
-    constexpr void search_nearest(const Point& q, std::size_t k, T max2, std::size_t node, std::size_t begin, std::size_t end,
-                                  Point& offsets, NearestNeighbours<T, K>& heap) const noexcept
-    {
-        if (end - begin <= LeafSize) {
-            for (std::size_t i = begin; i < end; ++i) {
-                const Neighbour<T> candidate{distance2(q, points_[i]), index_[i]};
-                if (!(candidate.distance2 <= max2)) continue;
-                if constexpr (K == 1) { // the one nearest: no heap needed
-                    if (heap.count == 0 || candidate < heap.items[0]) heap.items[0] = candidate, heap.count = 1;
-                } else if (heap.count < k) {
-                    heap.items[heap.count++] = candidate;
-                    std::push_heap(heap.items.begin(), heap.items.begin() + static_cast<std::ptrdiff_t>(heap.count));
-                } else if (candidate < heap.items[0]) {
-                    replace_top(heap.items, k, candidate);
-                }
-            }
-            return;
-        }
-        const std::size_t axis = axis_[node];
-        const std::size_t mid = middle(begin, end);
-        const T diff = q[axis] - split_[node];
-        const bool left_first = diff < T(0);
-        if (left_first) search_nearest<K>(q, k, max2, 2 * node, begin, mid, offsets, heap);
-        else search_nearest<K>(q, k, max2, 2 * node + 1, mid, end, offsets, heap);
-        // The far side: its cell is diff^2 away along this axis. Equal distances are
-        // searched too, so ties resolve by index exactly as brute force does.
-        const T saved = offsets[axis];
-        offsets[axis] = diff * diff;
-        if (sum(offsets) <= (heap.count < k ? max2 : heap.items[0].distance2)) {
-            if (left_first) search_nearest<K>(q, k, max2, 2 * node + 1, mid, end, offsets, heap);
-            else search_nearest<K>(q, k, max2, 2 * node, begin, mid, offsets, heap);
-        }
-        offsets[axis] = saved;
-    }
-
-    template <class Visitor>
-    constexpr void search_within(const Point& q, T radius2, std::size_t node, std::size_t begin, std::size_t end, Point& offsets,
-                                 Visitor& visit) const
+    template <class Results>
+    constexpr void descend(const Point& q, std::size_t node, std::size_t begin, std::size_t end, Point& offsets, Results& results) const
     {
         if (end - begin <= LeafSize) {
             for (std::size_t i = begin; i < end; ++i) {
                 const T d2 = distance2(q, points_[i]);
-                if (d2 <= radius2) visit(index_[i], d2);
+                if (d2 <= results.bound()) results.add(d2, index_[i]);
             }
             return;
         }
@@ -301,13 +342,14 @@ private:
         const std::size_t mid = middle(begin, end);
         const T diff = q[axis] - split_[node];
         const bool left_first = diff < T(0);
-        if (left_first) search_within(q, radius2, 2 * node, begin, mid, offsets, visit);
-        else search_within(q, radius2, 2 * node + 1, mid, end, offsets, visit);
+        if (left_first) descend(q, 2 * node, begin, mid, offsets, results);
+        else descend(q, 2 * node + 1, mid, end, offsets, results);
+        // The far side: its cell is diff^2 away along this axis.
         const T saved = offsets[axis];
         offsets[axis] = diff * diff;
-        if (sum(offsets) <= radius2) {
-            if (left_first) search_within(q, radius2, 2 * node + 1, mid, end, offsets, visit);
-            else search_within(q, radius2, 2 * node, begin, mid, offsets, visit);
+        if (sum(offsets) <= results.bound()) {
+            if (left_first) descend(q, 2 * node + 1, mid, end, offsets, results);
+            else descend(q, 2 * node, begin, mid, offsets, results);
         }
         offsets[axis] = saved;
     }

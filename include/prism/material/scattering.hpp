@@ -7,6 +7,7 @@
 // is one header that satisfies the capability concepts of material/traits.hpp.
 #pragma once
 
+#include <prism/core/ray.hpp>
 #include <prism/core/rng.hpp>
 #include <prism/core/sampling.hpp>
 #include <prism/geometry/crossings.hpp>

@@ -6,6 +6,7 @@
 #include <prism/photon/photon.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <span>
@@ -131,21 +132,13 @@ public:
         if (estimator.k == 0) {
             tree_->within({p.x, p.y, p.z}, estimator.radius, [&](std::uint32_t index, float d2) { add(index, d2, r2); });
         } else {
-            // The smallest capacity that holds k: a search's heap is no larger than needed.
-            const auto nearest = [&]<std::size_t Capacity>() {
-                const auto found = tree_->nearest<Capacity, false>({p.x, p.y, p.z}, estimator.k, estimator.radius);
-                if (found.size() == 0) return false;
-                if (found.size() == std::min(estimator.k, Capacity) || !(r2 < infinity<float>)) // the farthest is first
-                    r2 = found[0].distance2;
-                if (!(r2 > 0.0f)) return false;
-                for (const Neighbour<float>& neighbour : found) add(neighbour.index, neighbour.distance2, r2);
-                return true;
-            };
-            const bool any = estimator.k <= 64    ? nearest.template operator()<64>()
-                             : estimator.k <= 128 ? nearest.template operator()<128>()
-                             : estimator.k <= 256 ? nearest.template operator()<256>()
-                                                  : nearest.template operator()<max_k>();
-            if (!any) return Rgb<float>(0.0f);
+            std::array<Neighbour<float>, max_k> buffer;
+            KNearest<float> found(buffer, estimator.k, r2);
+            tree_->search({p.x, p.y, p.z}, found);
+            if (found.size() == 0) return sum;
+            if (found.full() || !(r2 < infinity<float>)) r2 = found.farthest().distance2;
+            if (!(r2 > 0.0f)) return Rgb<float>(0.0f);
+            for (const Neighbour<float>& neighbour : found) add(neighbour.index, neighbour.distance2, r2);
         }
         return sum / (weight.mean() * pi<float> * r2);
     }
@@ -201,8 +194,11 @@ public:
                                                                         float max_radius) const noexcept
     {
         std::size_t direct = 0, shadow = 0;
-        if (!tree_) return {0, 0};
-        for (const Neighbour<float>& neighbour : tree_->nearest<max_k>({p.x, p.y, p.z}, k, max_radius)) {
+        if (!tree_ || !(max_radius >= 0.0f)) return {0, 0};
+        std::array<Neighbour<float>, max_k> buffer;
+        KNearest<float> found(buffer, k, max_radius * max_radius);
+        tree_->search({p.x, p.y, p.z}, found);
+        for (const Neighbour<float>& neighbour : found) {
             const Photon& photon = photons_[neighbour.index];
             if (!photon.arrived_on(n)) continue;
             direct += (photon.flags & Photon::direct) != 0;
