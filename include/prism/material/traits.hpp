@@ -79,8 +79,9 @@ concept InteriorMedium = requires(const M& material) {
     requires std::same_as<typename std::remove_cvref_t<decltype(material.medium())>::scalar_type, typename M::scalar_type>;
 };
 
-/// A material: its scalar type, the three capability flags, each flag's functions, and
-/// validate() (throws std::invalid_argument for a bad parameter, naming it).
+/// A material: its scalar type, the three capability flags and validate() (throws
+/// std::invalid_argument for a bad parameter, naming it), and for each flag it sets,
+/// that capability's functions. A compiler reports an unkept promise on its own line.
 template <class M>
 concept Material = requires(const M& material) {
     requires Scalar<typename M::scalar_type>;
@@ -88,8 +89,11 @@ concept Material = requires(const M& material) {
     { M::reflects } -> std::convertible_to<bool>;
     { M::transmits } -> std::convertible_to<bool>;
     material.validate();
-} && (!M::has_diffuse || DiffuseLobe<M>) && (!M::reflects || M::transmits || DeltaReflection<M>) &&
-                   (!M::transmits || (DeltaTransmission<M> && InteriorMedium<M>)) && (M::has_diffuse || M::reflects || M::transmits);
+} && (M::has_diffuse || M::reflects || M::transmits) // a material does at least one thing
+  && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) -> DiffuseResponse<T>
+  && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i) -> Rgb<T>
+  && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, eta), reflection_tint(), transmission_tint()
+  && (!M::transmits || InteriorMedium<M>);          // transmits promises medium(), a Medium of the same scalar type
 
 /// Purely specular: every scattered direction is a delta (no diffuse lobe).
 template <Material M>

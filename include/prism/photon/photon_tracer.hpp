@@ -267,7 +267,7 @@ std::vector<Photon> trace_in_fixed_blocks(std::size_t count, unsigned threads, T
 
 /// Trace the global and caustic photon maps of a scene, from its lights.
 template <class SceneT>
-[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config)
+[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config = {})
 {
     const detail::PhotonTracer<SceneT> tracer(scene, config);
     PhotonMaps maps;

@@ -58,7 +58,7 @@ template <Scalar T>
 /// Render an image. The same scene, seed and spp give the same bits for any thread
 /// count: every pixel draws from its own random stream and is written by one thread.
 template <Integrator I>
-[[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
+[[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
     using T = typename I::scalar_type;
     if (config.spp < 1) detail::throw_invalid("RenderConfig spp must be >= 1, got ", config.spp);

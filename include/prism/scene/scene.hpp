@@ -39,9 +39,10 @@ struct is_light_list : std::false_type {};
 template <class... Ls>
 struct is_light_list<Lights<Ls...>> : std::true_type {};
 
-/// Whether every light of the list has scalar type T.
+/// Whether every light of the list has scalar type T (true for what is no list: that
+/// has its own error).
 template <class List, class T>
-inline constexpr bool lights_of_scalar = false;
+inline constexpr bool lights_of_scalar = true;
 template <class... Ls, class T>
 inline constexpr bool lights_of_scalar<Lights<Ls...>, T> = (std::same_as<typename Ls::scalar_type, T> && ...);
 
@@ -60,8 +61,9 @@ enum class ShadowsThroughGlass : bool {
 /// A scene: its lights, object slots (one type each), background and ambient radiance.
 /// Which shapes and materials exist is part of the type, so integrators compile only
 /// the code those materials need.
-template <LightList LightsOfScene, Slot... Slots>
+template <class LightsOfScene, Slot... Slots>
 class Scene {
+    static_assert(LightList<LightsOfScene>, "a Scene's first argument must be its lights as Lights{...}, e.g. Scene{Lights{PointLight<float>{...}}, objects...}");
     static_assert(sizeof...(Slots) > 0, "a scene needs at least one object");
 
 public:
