@@ -12,7 +12,11 @@ Trace Time. The minimum of the runs is kept (least disturbed by other load on a 
 machine). Also writes prism | POV-Ray | difference for each scene and reports how far
 apart the pictures are. Output: vs_povray.csv.
 
-    bench/vs_povray.py [--build build/release] [--out bench/results] [--repeats 7]
+With --baseline BUILD, an earlier build of prism (e.g. a worktree of the commit before a
+change) runs in the same loop, and its time and ratio are reported beside the current
+one's: a before/after comparison under the same load.
+
+    bench/vs_povray.py [--build build/release] [--baseline BUILD] [--out bench/results] [--repeats 7]
 """
 import argparse
 import csv
@@ -57,6 +61,7 @@ def main():
     parser.add_argument("--build", default=str(ROOT / "build" / "release"))
     parser.add_argument("--out", default=str(ROOT / "bench" / "results"))
     parser.add_argument("--repeats", type=int, default=7)
+    parser.add_argument("--baseline", help="another prism build to time in the same runs (before/after a change)")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -67,16 +72,24 @@ def main():
         scene = find_scene(pov_file)
         with tempfile.TemporaryDirectory() as folder:
             for threads in (1, 2):
-                prism_runs, pov_runs = [], []
+                prism_runs, pov_runs, base_runs = [], [], []
                 for _ in range(args.repeats):
                     prism_runs.append(prism_time(binary, threads, folder))
                     pov_runs.append(povray_time(scene, extra, threads, folder))
+                    if args.baseline:
+                        with tempfile.TemporaryDirectory() as base_folder:
+                            base_runs.append(prism_time(pathlib.Path(args.baseline) / "examples" / example, threads, base_folder))
                 p, v = min(prism_runs), min(pov_runs)
+                median = lambda runs: sorted(runs)[len(runs) // 2]
                 rows.append({"scene": example, "threads": threads, "prism_seconds": p, "povray_trace_seconds": v, "ratio": p / v,
-                             "prism_median": sorted(prism_runs)[len(prism_runs) // 2],
-                             "povray_median": sorted(pov_runs)[len(pov_runs) // 2]})
+                             "prism_median": median(prism_runs), "povray_median": median(pov_runs)})
                 print(f"{example} threads {threads}: prism {p:.4f} s, POV-Ray trace {v:.4f} s, prism/POV-Ray = {p / v:.2f}"
                       f" (medians {rows[-1]['prism_median']:.4f} / {rows[-1]['povray_median']:.4f})")
+                if base_runs:
+                    b = min(base_runs)
+                    rows[-1].update({"baseline_seconds": b, "baseline_ratio": b / v, "baseline_median": median(base_runs)})
+                    print(f"{example} threads {threads}: baseline {b:.4f} s, baseline/POV-Ray = {b / v:.2f}; current/baseline = "
+                          f"{p / b:.3f} (min), {median(prism_runs) / median(base_runs):.3f} (median)")
             difference = compare(pathlib.Path(folder) / f"{example}.png", pathlib.Path(folder) / "povray.png",
                                  out / f"{example}_vs_povray_images.png")
             print(f"{example}: {difference}")

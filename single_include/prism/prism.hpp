@@ -2493,7 +2493,6 @@ private:
 
 
 #include <concepts>
-#include <optional>
 
 namespace prism {
 
@@ -2506,13 +2505,13 @@ struct LightSample {
 };
 
 /// Where the photon tracer asks a light to send photons: toward `target` (a specular
-/// object's bounding sphere, for the caustic map) or, without one, everywhere it shines
-/// (the global map). `scene` encloses every bounded object (absent when there is none):
-/// a light from infinitely far away starts its photons just outside it.
+/// object's bounding sphere, for the caustic map) or, when it is null, everywhere it
+/// shines (the global map). `scene` encloses every bounded object (null when there is
+/// none): a light from infinitely far away starts its photons just outside it.
 template <Scalar T>
 struct PhotonAim {
-    std::optional<BoundingSphere<T>> target;
-    std::optional<BoundingSphere<T>> scene;
+    const BoundingSphere<T>* target = nullptr;
+    const BoundingSphere<T>* scene = nullptr;
 };
 
 /// One photon leaving a light: its ray, a weight on the power the tracer gives it (1
@@ -2647,8 +2646,9 @@ concept InteriorMedium = requires(const M& material) {
     requires std::same_as<typename std::remove_cvref_t<decltype(material.medium())>::scalar_type, typename M::scalar_type>;
 };
 
-/// A material: its scalar type, the three capability flags, each flag's functions, and
-/// validate() (throws std::invalid_argument for a bad parameter, naming it).
+/// A material: its scalar type, the three capability flags and validate() (throws
+/// std::invalid_argument for a bad parameter, naming it), and for each flag it sets,
+/// that capability's functions. A compiler reports an unkept promise on its own line.
 template <class M>
 concept Material = requires(const M& material) {
     requires Scalar<typename M::scalar_type>;
@@ -2656,8 +2656,11 @@ concept Material = requires(const M& material) {
     { M::reflects } -> std::convertible_to<bool>;
     { M::transmits } -> std::convertible_to<bool>;
     material.validate();
-} && (!M::has_diffuse || DiffuseLobe<M>) && (!M::reflects || M::transmits || DeltaReflection<M>) &&
-                   (!M::transmits || (DeltaTransmission<M> && InteriorMedium<M>)) && (M::has_diffuse || M::reflects || M::transmits);
+} && (M::has_diffuse || M::reflects || M::transmits) // a material does at least one thing
+  && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) -> DiffuseResponse<T>
+  && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i) -> Rgb<T>
+  && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, eta), reflection_tint(), transmission_tint()
+  && (!M::transmits || InteriorMedium<M>);          // transmits promises medium(), a Medium of the same scalar type
 
 /// Purely specular: every scattered direction is a delta (no diffuse lobe).
 template <Material M>
@@ -2751,13 +2754,16 @@ template <Material M>
 
 // Delta interactions
 
-/// The weights of the reflected and transmitted rays at a specular surface, and the
-/// transmitted direction (none under total internal reflection or for a conductor).
+/// The weights of the reflected and transmitted rays at a specular surface, the
+/// transmitted direction (none under total internal reflection or for a conductor), and
+/// the share of light reflected before the tints (Fresnel's F; 1 for a conductor): a
+/// photon's chance to reflect.
 template <Scalar T>
 struct SpecularSplit {
     Rgb<T> kr{T(0)};
     Rgb<T> kt{T(0)};
     std::optional<Vec3<T>> refracted;
+    T reflected_share = T(1);
 };
 
 /// How a mirror or an interface splits the unit incident direction d arriving at a
@@ -2779,6 +2785,7 @@ template <Material M>
         const T fresnel = split.refracted ? material.fresnel(cos_i, eta) : T(1);
         split.kr = material.reflection_tint() * fresnel;
         split.kt = material.transmission_tint() * (T(1) - fresnel);
+        split.reflected_share = fresnel;
     } else {
         split.kr = material.reflectance(cos_i);
     }
@@ -2857,17 +2864,17 @@ template <Material M>
         }
     };
     const auto delta = [&]() -> Bounce {
-        const T cos_i = clamp(-dot(d, n), T(0), T(1));
-        if constexpr (M::transmits) {
-            const T eta = hit.entering ? material.refractive_index() : T(1) / material.refractive_index();
-            const auto refracted = refract(d, n, eta);
-            const T fresnel = refracted ? material.fresnel(cos_i, eta) : T(1);
-            const bool reflect_it = rng.uniform<T>() < fresnel;
-            if (!russian_roulette(power, reflect_it ? material.reflection_tint() : material.transmission_tint(), rng)) return std::nullopt;
-            return PhotonBounce<T>{reflect_it ? reflect(d, n) : *refracted, false};
-        } else if constexpr (M::reflects) {
-            if (!russian_roulette(power, material.reflectance(cos_i), rng)) return std::nullopt;
-            return PhotonBounce<T>{reflect(d, n), false};
+        if constexpr (M::reflects || M::transmits) {
+            const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
+            if constexpr (M::transmits) {
+                // Reflect with probability F, refract otherwise; each then by its tint.
+                const bool reflect_it = rng.uniform<T>() < split.reflected_share;
+                if (!russian_roulette(power, reflect_it ? material.reflection_tint() : material.transmission_tint(), rng)) return std::nullopt;
+                return PhotonBounce<T>{reflect_it ? reflect(d, n) : *split.refracted, false};
+            } else {
+                if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
+                return PhotonBounce<T>{reflect(d, n), false};
+            }
         } else {
             return std::nullopt;
         }
@@ -3015,9 +3022,10 @@ struct is_light_list : std::false_type {};
 template <class... Ls>
 struct is_light_list<Lights<Ls...>> : std::true_type {};
 
-/// Whether every light of the list has scalar type T.
+/// Whether every light of the list has scalar type T (true for what is no list: that
+/// has its own error).
 template <class List, class T>
-inline constexpr bool lights_of_scalar = false;
+inline constexpr bool lights_of_scalar = true;
 template <class... Ls, class T>
 inline constexpr bool lights_of_scalar<Lights<Ls...>, T> = (std::same_as<typename Ls::scalar_type, T> && ...);
 
@@ -3036,8 +3044,9 @@ enum class ShadowsThroughGlass : bool {
 /// A scene: its lights, object slots (one type each), background and ambient radiance.
 /// Which shapes and materials exist is part of the type, so integrators compile only
 /// the code those materials need.
-template <LightList LightsOfScene, Slot... Slots>
+template <class LightsOfScene, Slot... Slots>
 class Scene {
+    static_assert(LightList<LightsOfScene>, "a Scene's first argument must be its lights as Lights{...}, e.g. Scene{Lights{PointLight<float>{...}}, objects...}");
     static_assert(sizeof...(Slots) > 0, "a scene needs at least one object");
 
 public:
@@ -3624,7 +3633,6 @@ private:
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <string>
 #include <thread>
 #include <utility>
@@ -3671,9 +3679,10 @@ namespace detail {
 /// map's photons in proportion to `power`.
 template <Scalar T>
 struct Emitter {
-    std::size_t light = 0; ///< its number in the scene's Lights{...}
-    PhotonAim<T> aim{};
-    Rgb<T> power{};        ///< Light::photon_power(aim)
+    std::size_t light = 0;      ///< its number in the scene's Lights{...}
+    bool aimed = false;         ///< at `target`; else everywhere
+    BoundingSphere<T> target{};
+    Rgb<T> power{};             ///< Light::photon_power of this aim
 };
 
 template <class SceneT>
@@ -3688,8 +3697,9 @@ public:
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
         // A sphere around everything bounded: parallel photons start outside it.
-        if (!scene.bounds().empty()) scene_sphere_ = scene.bounds().bounding_sphere();
-        add_emitters(global_, std::nullopt);
+        bounded_ = !scene.bounds().empty();
+        if (bounded_) scene_sphere_ = scene.bounds().bounding_sphere();
+        add_emitters(global_, false, {});
         std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);
@@ -3740,7 +3750,7 @@ private:
         }
         u = std::clamp((u - start) / p, 0.0, std::nextafter(1.0, 0.0));
         const EmittedPhoton<T> photon =
-            scene_.visit_light(e->light, [&](const auto& light) { return light.emit_photon(e->aim, T(u), T(v)); });
+            scene_.visit_light(e->light, [&](const auto& light) { return light.emit_photon(aim(*e), T(u), T(v)); });
         follow(photon.ray, e->power / T(double(count) * p) * photon.weight, photon.without_falloff, rng, caustic_pass, out);
     }
 
@@ -3768,10 +3778,10 @@ private:
                     if (direct && config_.shadow_photons) store_shadow_photons(c, d, out);
                 }
                 attenuate_inside(material, c, ray, power);
-                const auto bounce = scatter_photon(material, c, d, c.facing_normal(), power, rng);
-                if (!bounce) return false;
-                ray = spawn_ray(c.point, c.error, c.normal, bounce->direction);
-                if (bounce->diffuse) specular_only = false;
+                const auto next = scatter_photon(material, c, d, c.facing_normal(), power, rng);
+                if (!next) return false;
+                ray = spawn_ray(c.point, c.error, c.normal, next->direction);
+                if (next->diffuse) specular_only = false;
                 return true;
             });
             if (!scattered) return;
@@ -3798,13 +3808,18 @@ private:
         }
     }
 
-    /// Every light aimed at `target` (or everywhere), where it sends any power.
-    void add_emitters(std::vector<Emitter<T>>& emitters, const std::optional<BoundingSphere<T>>& target)
+    [[nodiscard]] PhotonAim<T> aim(const Emitter<T>& e) const noexcept
     {
-        const PhotonAim<T> aim{target, scene_sphere_};
+        return {e.aimed ? &e.target : nullptr, bounded_ ? &scene_sphere_ : nullptr};
+    }
+
+    /// Every light aimed at `target` (or everywhere when not `aimed`), where it sends any power.
+    void add_emitters(std::vector<Emitter<T>>& emitters, bool aimed, const BoundingSphere<T>& target)
+    {
         for (std::size_t i = 0; i < SceneT::light_count; ++i) {
-            const Rgb<T> power = scene_.visit_light(i, [&](const auto& light) { return light.photon_power(aim); });
-            if (max_component(power) > T(0)) emitters.push_back({i, aim, power});
+            Emitter<T> e{i, aimed, target, {}};
+            e.power = scene_.visit_light(i, [&](const auto& light) { return light.photon_power(aim(e)); });
+            if (max_component(e.power) > T(0)) emitters.push_back(e);
         }
     }
 
@@ -3815,13 +3830,14 @@ private:
         using M = typename Slot::material_type;
         if constexpr (reflects<M> || transmits<M>) {
             for (const auto& object : objects_of(slot))
-                if (object.bounded) add_emitters(targets_, bounding_sphere(object.shape));
+                if (object.bounded) add_emitters(targets_, true, bounding_sphere(object.shape));
         }
     }
 
     const SceneT& scene_;
     PhotonTracerConfig config_;
-    std::optional<BoundingSphere<T>> scene_sphere_; ///< around everything bounded
+    bool bounded_ = false;             ///< the scene holds something bounded
+    BoundingSphere<T> scene_sphere_{}; ///< around it
     std::vector<Emitter<T>> global_;  ///< every light aimed everywhere, for the global map
     T global_power_ = T(0);
     std::vector<Emitter<T>> targets_; ///< every light aimed at each specular object, for the caustic map
@@ -3856,7 +3872,7 @@ std::vector<Photon> trace_in_fixed_blocks(std::size_t count, unsigned threads, T
 
 /// Trace the global and caustic photon maps of a scene, from its lights.
 template <class SceneT>
-[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config)
+[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config = {})
 {
     const detail::PhotonTracer<SceneT> tracer(scene, config);
     PhotonMaps maps;
@@ -4898,7 +4914,7 @@ template <Scalar T>
 /// Render an image. The same scene, seed and spp give the same bits for any thread
 /// count: every pixel draws from its own random stream and is written by one thread.
 template <Integrator I>
-[[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
+[[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
     using T = typename I::scalar_type;
     if (config.spp < 1) detail::throw_invalid("RenderConfig spp must be >= 1, got ", config.spp);

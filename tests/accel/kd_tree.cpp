@@ -233,3 +233,41 @@ TEST_CASE("points with a NaN coordinate are refused, naming the point")
     points[37][1] = std::numeric_limits<float>::infinity(); // infinite coordinates order like any other
     CHECK_NOTHROW((prism::KdTree<prism::ArrayPoints<float, 3>>(prism::ArrayPoints<float, 3>{points})));
 }
+
+namespace {
+
+/// A result set of the caller's own: the summed weight 1 - d/r of every point within r
+/// (a cone filter), with no list kept at all.
+template <class T>
+struct ConeSum {
+    T radius2;
+    T sum = T(0);
+    [[nodiscard]] T bound() const noexcept { return radius2; }
+    void add(T distance2, std::uint32_t) noexcept { sum += T(1) - std::sqrt(distance2 / radius2); }
+};
+
+} // namespace
+
+TEST_CASE_TEMPLATE("the one search takes a result set of the caller's own; KNearest fills the caller's buffer", T, float, double)
+{
+    static_assert(prism::ResultSet<ConeSum<T>, T> && prism::ResultSet<prism::KNearest<T>, T>);
+    prism::Pcg32 rng(9u, 9u);
+    const auto points = clustered<T>(rng, 5000);
+    const KdTree<ArrayPoints<T, 3>> tree(ArrayPoints<T, 3>{points});
+    for (const auto& q : uniform<T>(rng, 50)) {
+        ConeSum<T> cone{T(0.1) * T(0.1)};
+        tree.search(q, cone);
+        T expected = T(0);
+        for (const auto& n : brute_force(points, q))
+            if (n.distance2 <= cone.radius2) expected += T(1) - std::sqrt(n.distance2 / cone.radius2);
+        CHECK(cone.sum == doctest::Approx(expected).epsilon(1e-4));
+        // A buffer of 10 caps k = 30 at 10: the 10 nearest.
+        std::array<Neighbour<T>, 10> buffer;
+        prism::KNearest<T> found(buffer, 30, prism::infinity<T>);
+        tree.search(q, found);
+        found.sort();
+        const auto all = brute_force(points, q);
+        CHECK(found.size() == 10);
+        CHECK(std::equal(found.begin(), found.end(), all.begin()));
+    }
+}

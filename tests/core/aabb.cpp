@@ -58,3 +58,17 @@ TEST_CASE("may_cross widens the box per ray by the rounding of the ray's distanc
     CHECK_FALSE(box.may_cross(clear, {0, prism::infinity<float>}));
     CHECK_FALSE(box.may_cross(close, {0, 100})); // it uses the range's end
 }
+
+TEST_CASE("merged boxes and the sphere through a box's corners")
+{
+    const prism::Aabb<double> a{{0, 0, 0}, {1, 2, 2}}, b{{-1, 1, 1}, {0.5, 1.5, 4}};
+    const auto m = a.merged(b);
+    CHECK(m.lo == prism::Vec3<double>{-1, 0, 0});
+    CHECK(m.hi == prism::Vec3<double>{1, 2, 4});
+    CHECK(prism::Aabb<double>{}.merged(a).lo == a.lo); // the empty box is merging's identity
+    const auto s = a.bounding_sphere();
+    CHECK(s.center == prism::Vec3<double>{0.5, 1, 1});
+    CHECK(s.radius == doctest::Approx(1.5)); // half the diagonal sqrt(1 + 4 + 4)
+    CHECK(a.bounded());
+    CHECK_FALSE(prism::Aabb<double>::universe().bounded());
+}

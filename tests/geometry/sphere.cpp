@@ -139,3 +139,16 @@ TEST_CASE("radii whose square would underflow or overflow are refused by name")
     }
     CHECK_NOTHROW(Sphere<double>({0, 0, 0}, 1e100));
 }
+
+TEST_CASE("a sphere's bounding sphere is its own (a hair larger); other shapes get their box's")
+{
+    const prism::Sphere<float> ball({1, 2, 3}, 2);
+    const prism::BoundingSphere<float> own = prism::bounding_sphere(ball);
+    CHECK(own.center == prism::Vec3<float>{1, 2, 3});
+    CHECK(own.radius >= 2.0f);
+    CHECK(own.radius < 2.0f * (1 + 1e-5f)); // the box's sphere would be sqrt(3) times larger
+    const prism::Box<float> box({0, 0, 0}, {2, 2, 2});
+    const prism::BoundingSphere<float> around = prism::bounding_sphere(box);
+    CHECK(around.radius >= std::sqrt(3.0f));
+    CHECK(prism::length(around.center - prism::Vec3<float>{1, 1, 1}) < 1e-5f);
+}

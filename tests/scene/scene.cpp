@@ -63,6 +63,26 @@ TEST_CASE("transmittance: opaque blocks, a dielectric absorbs by Beer-Lambert al
     CHECK(scene.transmittance<prism::ShadowsThroughGlass::blocked>({{0, 0, 0}, {1, 0, 0}}, 3.9) == Rgb<double>(1));
 }
 
+TEST_CASE("bounds() holds every bounded object; lights are visited by number with their own types")
+{
+    const auto scene = test_scene();
+    CHECK(scene.bounds().lo.x <= -1);
+    CHECK(scene.bounds().hi.x >= 6);
+    CHECK(scene.bounds().lo.z <= -11);
+    CHECK(scene.bounds().hi.z >= 1);
+    CHECK(scene.bounds().bounded());
+    const Scene two{Lights{PointLight<double>{.position = {0, 10, 0}}, DirectionalLight<double>{.irradiance = Rgb<double>(3)}},
+                    Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{}}};
+    static_assert(decltype(two)::light_count == 2);
+    CHECK(two.bounds().empty()); // a half-space only: nothing bounded
+    const double kind = two.visit_light(1, []<class L>(const L& light) {
+        if constexpr (std::same_as<L, DirectionalLight<double>>) return light.irradiance.x;
+        else return -1.0;
+    });
+    CHECK(kind == 3);
+    CHECK(two.visit_light(0, [](const auto& light) { return light.sample({0, 0, 0}).distance; }) == 10);
+}
+
 TEST_CASE("background and ambient are validated")
 {
     auto scene = test_scene();

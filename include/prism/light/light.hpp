@@ -7,7 +7,6 @@
 #include <prism/core/ray.hpp>
 
 #include <concepts>
-#include <optional>
 
 namespace prism {
 
@@ -20,13 +19,13 @@ struct LightSample {
 };
 
 /// Where the photon tracer asks a light to send photons: toward `target` (a specular
-/// object's bounding sphere, for the caustic map) or, without one, everywhere it shines
-/// (the global map). `scene` encloses every bounded object (absent when there is none):
-/// a light from infinitely far away starts its photons just outside it.
+/// object's bounding sphere, for the caustic map) or, when it is null, everywhere it
+/// shines (the global map). `scene` encloses every bounded object (null when there is
+/// none): a light from infinitely far away starts its photons just outside it.
 template <Scalar T>
 struct PhotonAim {
-    std::optional<BoundingSphere<T>> target;
-    std::optional<BoundingSphere<T>> scene;
+    const BoundingSphere<T>* target = nullptr;
+    const BoundingSphere<T>* scene = nullptr;
 };
 
 /// One photon leaving a light: its ray, a weight on the power the tracer gives it (1

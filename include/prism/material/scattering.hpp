@@ -45,13 +45,16 @@ template <Material M>
 
 // Delta interactions
 
-/// The weights of the reflected and transmitted rays at a specular surface, and the
-/// transmitted direction (none under total internal reflection or for a conductor).
+/// The weights of the reflected and transmitted rays at a specular surface, the
+/// transmitted direction (none under total internal reflection or for a conductor), and
+/// the share of light reflected before the tints (Fresnel's F; 1 for a conductor): a
+/// photon's chance to reflect.
 template <Scalar T>
 struct SpecularSplit {
     Rgb<T> kr{T(0)};
     Rgb<T> kt{T(0)};
     std::optional<Vec3<T>> refracted;
+    T reflected_share = T(1);
 };
 
 /// How a mirror or an interface splits the unit incident direction d arriving at a
@@ -73,6 +76,7 @@ template <Material M>
         const T fresnel = split.refracted ? material.fresnel(cos_i, eta) : T(1);
         split.kr = material.reflection_tint() * fresnel;
         split.kt = material.transmission_tint() * (T(1) - fresnel);
+        split.reflected_share = fresnel;
     } else {
         split.kr = material.reflectance(cos_i);
     }
@@ -151,17 +155,17 @@ template <Material M>
         }
     };
     const auto delta = [&]() -> Bounce {
-        const T cos_i = clamp(-dot(d, n), T(0), T(1));
-        if constexpr (M::transmits) {
-            const T eta = hit.entering ? material.refractive_index() : T(1) / material.refractive_index();
-            const auto refracted = refract(d, n, eta);
-            const T fresnel = refracted ? material.fresnel(cos_i, eta) : T(1);
-            const bool reflect_it = rng.uniform<T>() < fresnel;
-            if (!russian_roulette(power, reflect_it ? material.reflection_tint() : material.transmission_tint(), rng)) return std::nullopt;
-            return PhotonBounce<T>{reflect_it ? reflect(d, n) : *refracted, false};
-        } else if constexpr (M::reflects) {
-            if (!russian_roulette(power, material.reflectance(cos_i), rng)) return std::nullopt;
-            return PhotonBounce<T>{reflect(d, n), false};
+        if constexpr (M::reflects || M::transmits) {
+            const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
+            if constexpr (M::transmits) {
+                // Reflect with probability F, refract otherwise; each then by its tint.
+                const bool reflect_it = rng.uniform<T>() < split.reflected_share;
+                if (!russian_roulette(power, reflect_it ? material.reflection_tint() : material.transmission_tint(), rng)) return std::nullopt;
+                return PhotonBounce<T>{reflect_it ? reflect(d, n) : *split.refracted, false};
+            } else {
+                if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
+                return PhotonBounce<T>{reflect(d, n), false};
+            }
         } else {
             return std::nullopt;
         }

@@ -35,7 +35,6 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <string>
 #include <thread>
 #include <utility>
@@ -82,9 +81,10 @@ namespace detail {
 /// map's photons in proportion to `power`.
 template <Scalar T>
 struct Emitter {
-    std::size_t light = 0; ///< its number in the scene's Lights{...}
-    PhotonAim<T> aim{};
-    Rgb<T> power{};        ///< Light::photon_power(aim)
+    std::size_t light = 0;      ///< its number in the scene's Lights{...}
+    bool aimed = false;         ///< at `target`; else everywhere
+    BoundingSphere<T> target{};
+    Rgb<T> power{};             ///< Light::photon_power of this aim
 };
 
 template <class SceneT>
@@ -99,8 +99,9 @@ public:
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
         // A sphere around everything bounded: parallel photons start outside it.
-        if (!scene.bounds().empty()) scene_sphere_ = scene.bounds().bounding_sphere();
-        add_emitters(global_, std::nullopt);
+        bounded_ = !scene.bounds().empty();
+        if (bounded_) scene_sphere_ = scene.bounds().bounding_sphere();
+        add_emitters(global_, false, {});
         std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);
@@ -151,7 +152,7 @@ private:
         }
         u = std::clamp((u - start) / p, 0.0, std::nextafter(1.0, 0.0));
         const EmittedPhoton<T> photon =
-            scene_.visit_light(e->light, [&](const auto& light) { return light.emit_photon(e->aim, T(u), T(v)); });
+            scene_.visit_light(e->light, [&](const auto& light) { return light.emit_photon(aim(*e), T(u), T(v)); });
         follow(photon.ray, e->power / T(double(count) * p) * photon.weight, photon.without_falloff, rng, caustic_pass, out);
     }
 
@@ -179,10 +180,10 @@ private:
                     if (direct && config_.shadow_photons) store_shadow_photons(c, d, out);
                 }
                 attenuate_inside(material, c, ray, power);
-                const auto bounce = scatter_photon(material, c, d, c.facing_normal(), power, rng);
-                if (!bounce) return false;
-                ray = spawn_ray(c.point, c.error, c.normal, bounce->direction);
-                if (bounce->diffuse) specular_only = false;
+                const auto next = scatter_photon(material, c, d, c.facing_normal(), power, rng);
+                if (!next) return false;
+                ray = spawn_ray(c.point, c.error, c.normal, next->direction);
+                if (next->diffuse) specular_only = false;
                 return true;
             });
             if (!scattered) return;
@@ -209,13 +210,18 @@ private:
         }
     }
 
-    /// Every light aimed at `target` (or everywhere), where it sends any power.
-    void add_emitters(std::vector<Emitter<T>>& emitters, const std::optional<BoundingSphere<T>>& target)
+    [[nodiscard]] PhotonAim<T> aim(const Emitter<T>& e) const noexcept
     {
-        const PhotonAim<T> aim{target, scene_sphere_};
+        return {e.aimed ? &e.target : nullptr, bounded_ ? &scene_sphere_ : nullptr};
+    }
+
+    /// Every light aimed at `target` (or everywhere when not `aimed`), where it sends any power.
+    void add_emitters(std::vector<Emitter<T>>& emitters, bool aimed, const BoundingSphere<T>& target)
+    {
         for (std::size_t i = 0; i < SceneT::light_count; ++i) {
-            const Rgb<T> power = scene_.visit_light(i, [&](const auto& light) { return light.photon_power(aim); });
-            if (max_component(power) > T(0)) emitters.push_back({i, aim, power});
+            Emitter<T> e{i, aimed, target, {}};
+            e.power = scene_.visit_light(i, [&](const auto& light) { return light.photon_power(aim(e)); });
+            if (max_component(e.power) > T(0)) emitters.push_back(e);
         }
     }
 
@@ -226,13 +232,14 @@ private:
         using M = typename Slot::material_type;
         if constexpr (reflects<M> || transmits<M>) {
             for (const auto& object : objects_of(slot))
-                if (object.bounded) add_emitters(targets_, bounding_sphere(object.shape));
+                if (object.bounded) add_emitters(targets_, true, bounding_sphere(object.shape));
         }
     }
 
     const SceneT& scene_;
     PhotonTracerConfig config_;
-    std::optional<BoundingSphere<T>> scene_sphere_; ///< around everything bounded
+    bool bounded_ = false;             ///< the scene holds something bounded
+    BoundingSphere<T> scene_sphere_{}; ///< around it
     std::vector<Emitter<T>> global_;  ///< every light aimed everywhere, for the global map
     T global_power_ = T(0);
     std::vector<Emitter<T>> targets_; ///< every light aimed at each specular object, for the caustic map
