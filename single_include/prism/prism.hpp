@@ -2627,14 +2627,15 @@ concept DeltaReflection = requires(const M& material, typename M::scalar_type co
     { material.reflectance(cos_i) } -> std::same_as<Rgb<typename M::scalar_type>>;
 };
 
-/// A dielectric interface with index `refractive_index()` inside and 1 outside. `fresnel(cos_i, eta)`
-/// is the share of light reflected for the incident cosine cos_i and eta = n_t / n_i
-/// (1 under total internal reflection); the reflected and refracted rays are then
-/// weighted by `reflection_tint()` and `transmission_tint()` (the seed's kr and kt).
+/// A dielectric interface with index `refractive_index()` inside and 1 outside.
+/// `fresnel(cos_i, cos_t, eta)` is the share of light reflected for the incident and
+/// refracted cosines and eta = n_t / n_i (asked only where light refracts: under total
+/// internal reflection all of it is reflected); the reflected and refracted rays are
+/// then weighted by `reflection_tint()` and `transmission_tint()` (the seed's kr and kt).
 template <class M>
 concept DeltaTransmission = requires(const M& material, typename M::scalar_type cos_i, typename M::scalar_type eta) {
     { material.refractive_index() } -> std::same_as<typename M::scalar_type>;
-    { material.fresnel(cos_i, eta) } -> std::same_as<typename M::scalar_type>;
+    { material.fresnel(cos_i, cos_i, eta) } -> std::same_as<typename M::scalar_type>;
     { material.reflection_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
     { material.transmission_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
 };
@@ -2659,7 +2660,7 @@ concept Material = requires(const M& material) {
 } && (M::has_diffuse || M::reflects || M::transmits) // a material does at least one thing
   && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) -> DiffuseResponse<T>
   && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i) -> Rgb<T>
-  && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, eta), reflection_tint(), transmission_tint()
+  && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta), reflection_tint(), transmission_tint()
   && (!M::transmits || InteriorMedium<M>);          // transmits promises medium(), a Medium of the same scalar type
 
 /// Purely specular: every scattered direction is a delta (no diffuse lobe).
@@ -2696,12 +2697,20 @@ template <Scalar T>
     return d - (T(2) * dot(d, n)) * n;
 }
 
+/// A refracted direction and the cosine of its angle with the normal (on the far side).
+template <Scalar T>
+struct Refraction {
+    Vec3<T> direction;
+    T cos_t;
+};
+
 /// Snell refraction of the unit direction d through a surface with unit normal n
-/// facing d, into a medium of relative index eta = n_t / n_i. Returns no direction
-/// under total internal reflection. The result is unit length:
+/// facing d, into a medium of relative index eta = n_t / n_i, with cos_t for the Fresnel
+/// equations (computed once, here). Returns nothing under total internal reflection.
+/// The direction is unit length:
 ///   t = d / eta + (cos_i / eta - cos_t) n,  cos_t = sqrt(1 - (1 - cos_i^2) / eta^2).
 template <Scalar T>
-[[nodiscard]] constexpr std::optional<Vec3<T>> refract(const Vec3<T>& d, const Vec3<T>& n, T eta) noexcept
+[[nodiscard]] constexpr std::optional<Refraction<T>> refraction(const Vec3<T>& d, const Vec3<T>& n, T eta) noexcept
 {
     const T cos_i = -dot(d, n);
     const T sin2_i = T(1) - cos_i * cos_i > T(0) ? T(1) - cos_i * cos_i : T(0);
@@ -2709,7 +2718,15 @@ template <Scalar T>
     // Handle total internal reflection
     if (sin2_t >= T(1)) return std::nullopt;
     const T cos_t = prism::sqrt(T(1) - sin2_t);
-    return d / eta + (cos_i / eta - cos_t) * n;
+    return Refraction<T>{d / eta + (cos_i / eta - cos_t) * n, cos_t};
+}
+
+/// The refracted direction alone (see refraction).
+template <Scalar T>
+[[nodiscard]] constexpr std::optional<Vec3<T>> refract(const Vec3<T>& d, const Vec3<T>& n, T eta) noexcept
+{
+    if (const auto r = refraction(d, n, eta)) return r->direction;
+    return std::nullopt;
 }
 
 } // namespace prism
@@ -2781,8 +2798,10 @@ template <Material M>
     SpecularSplit<T> split;
     if constexpr (M::transmits) {
         const T eta = entering ? material.refractive_index() : T(1) / material.refractive_index();
-        split.refracted = refract(d, n, eta);
-        const T fresnel = split.refracted ? material.fresnel(cos_i, eta) : T(1);
+        // Snell's cos_t, found once, serves the direction and the Fresnel equations.
+        const auto refracted = refraction(d, n, eta);
+        if (refracted) split.refracted = refracted->direction;
+        const T fresnel = refracted ? material.fresnel(cos_i, refracted->cos_t, eta) : T(1);
         split.kr = material.reflection_tint() * fresnel;
         split.kt = material.transmission_tint() * (T(1) - fresnel);
         split.reflected_share = fresnel;
@@ -4331,6 +4350,18 @@ struct PolarisedReflectance {
     T p;
 };
 
+/// Exact dielectric reflectance by polarisation, given the refracted cosine cos_t (as
+/// refraction() computes it, so it is computed once per interaction).
+template <Scalar T>
+[[nodiscard]] constexpr PolarisedReflectance<T> fresnel_dielectric_polarised(T cos_i, T cos_t, T eta) noexcept
+{
+    cos_i = clamp(cos_i, T(0), T(1));
+    // Divided through by n_i, so n_i -> 1 and n_t -> eta.
+    const T r_s = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    const T r_p = (cos_t - eta * cos_i) / (cos_t + eta * cos_i);
+    return {r_s * r_s, r_p * r_p};
+}
+
 /// Exact dielectric reflectance by polarisation; both are 1 under total internal reflection.
 template <Scalar T>
 [[nodiscard]] constexpr PolarisedReflectance<T> fresnel_dielectric_polarised(T cos_i, T eta) noexcept
@@ -4340,11 +4371,7 @@ template <Scalar T>
     const T sin2_t = (T(1) - cos_i * cos_i) / (eta * eta);
     // Handle total internal reflection
     if (sin2_t >= T(1)) return {T(1), T(1)};
-    const T cos_t = prism::sqrt(T(1) - sin2_t);
-    // Divided through by n_i, so n_i -> 1 and n_t -> eta.
-    const T r_s = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    const T r_p = (cos_t - eta * cos_i) / (cos_t + eta * cos_i);
-    return {r_s * r_s, r_p * r_p};
+    return fresnel_dielectric_polarised(cos_i, prism::sqrt(T(1) - sin2_t), eta);
 }
 
 /// Exact dielectric reflectance for unpolarised light, (R_s + R_p) / 2; 1 under total
@@ -4356,25 +4383,38 @@ template <Scalar T>
     return T(0.5) * (r.s + r.p);
 }
 
+/// The same, given the refracted cosine cos_t (no total internal reflection).
+template <Scalar T>
+[[nodiscard]] constexpr T fresnel_dielectric(T cos_i, T cos_t, T eta) noexcept
+{
+    const PolarisedReflectance<T> r = fresnel_dielectric_polarised(cos_i, cos_t, eta);
+    return T(0.5) * (r.s + r.p);
+}
+
 /// Schlick's approximation (Schlick 1994, "An Inexpensive BRDF Model for Physically-based
 /// Rendering"): R0 + (1 - R0)(1 - cos)^5 with R0 = ((eta - 1)/(eta + 1))^2. The cosine
 /// must be the one on the optically less dense side: going from dense to less dense
 /// (eta < 1) that is cos_t, and the answer is 1 under total internal reflection (seed
 /// errata 3; with cos_i there the error reaches 0.9 near the critical angle).
 template <Scalar T>
-[[nodiscard]] constexpr T fresnel_schlick(T cos_i, T eta) noexcept
+[[nodiscard]] constexpr T fresnel_schlick(T cos_i, T cos_t, T eta) noexcept
 {
-    cos_i = clamp(cos_i, T(0), T(1));
-    T cos = cos_i;
-    if (eta < T(1)) {
-        const T sin2_t = (T(1) - cos_i * cos_i) / (eta * eta);
-        if (sin2_t >= T(1)) return T(1);
-        cos = prism::sqrt(T(1) - sin2_t);
-    }
+    const T cos = eta < T(1) ? cos_t : clamp(cos_i, T(0), T(1));
     const T r0 = ((eta - T(1)) / (eta + T(1))) * ((eta - T(1)) / (eta + T(1)));
     const T m = T(1) - cos;
     const T m2 = m * m;
     return r0 + (T(1) - r0) * m2 * m2 * m;
+}
+
+/// Schlick's approximation from cos_i alone: cos_t found here (1 under total internal
+/// reflection).
+template <Scalar T>
+[[nodiscard]] constexpr T fresnel_schlick(T cos_i, T eta) noexcept
+{
+    cos_i = clamp(cos_i, T(0), T(1));
+    const T sin2_t = (T(1) - cos_i * cos_i) / (eta * eta);
+    if (eta < T(1) && sin2_t >= T(1)) return T(1);
+    return fresnel_schlick(cos_i, eta < T(1) ? prism::sqrt(T(1) - sin2_t) : T(0), eta);
 }
 
 /// Reflectance of a conductor with complex index eta = n + i k relative to the outside
@@ -4402,6 +4442,11 @@ struct ExactFresnel {
     {
         return fresnel_dielectric(cos_i, eta);
     }
+    template <Scalar T>
+    [[nodiscard]] static constexpr T reflectance(T cos_i, T cos_t, T eta) noexcept
+    {
+        return fresnel_dielectric(cos_i, cos_t, eta);
+    }
 };
 
 /// Schlick's approximation, evaluated on the less dense side.
@@ -4411,12 +4456,19 @@ struct SchlickFresnel {
     {
         return fresnel_schlick(cos_i, eta);
     }
+    template <Scalar T>
+    [[nodiscard]] static constexpr T reflectance(T cos_i, T cos_t, T eta) noexcept
+    {
+        return fresnel_schlick(cos_i, cos_t, eta);
+    }
 };
 
-/// A Fresnel policy: reflectance(cos_i, eta) in [0, 1].
+/// A Fresnel policy: reflectance(cos_i, eta) in [0, 1] (1 under total internal
+/// reflection), and reflectance(cos_i, cos_t, eta) given the refracted cosine.
 template <class P, class T>
 concept FresnelPolicy = Scalar<T> && requires(T cos_i, T eta) {
     { P::reflectance(cos_i, eta) } -> std::same_as<T>;
+    { P::reflectance(cos_i, cos_i, eta) } -> std::same_as<T>;
 };
 
 static_assert(FresnelPolicy<ExactFresnel, float> && FresnelPolicy<SchlickFresnel, double>);
@@ -4556,8 +4608,8 @@ struct Dielectric {
     T kt = T(1);
 
     [[nodiscard]] constexpr T refractive_index() const noexcept { return ior; }
-    /// Fresnel reflectance for incident cosine cos_i and eta = n_t / n_i.
-    [[nodiscard]] constexpr T fresnel(T cos_i, T eta) const noexcept { return Fresnel::reflectance(cos_i, eta); }
+    /// Fresnel reflectance for the incident and refracted cosines and eta = n_t / n_i.
+    [[nodiscard]] constexpr T fresnel(T cos_i, T cos_t, T eta) const noexcept { return Fresnel::reflectance(cos_i, cos_t, eta); }
     [[nodiscard]] constexpr Rgb<T> reflection_tint() const noexcept { return Rgb<T>(kr); }
     [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(kt); }
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior; }

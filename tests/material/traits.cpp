@@ -53,7 +53,7 @@ struct CoatedGlass {
     static constexpr bool transmits = true;
 
     [[nodiscard]] double refractive_index() const noexcept { return 1.5; }
-    [[nodiscard]] double fresnel(double, double) const noexcept { return 0.01; }
+    [[nodiscard]] double fresnel(double, double, double) const noexcept { return 0.01; }
     [[nodiscard]] Rgb<double> reflection_tint() const noexcept { return Rgb<double>(1); }
     [[nodiscard]] Rgb<double> transmission_tint() const noexcept { return {0.5, 1, 0.5}; }
     [[nodiscard]] prism::Homogeneous<double> medium() const noexcept { return {.absorption = {0, 0, 0.4}}; }
@@ -76,7 +76,7 @@ struct GlassWithoutMedium {
     static constexpr bool reflects = true;
     static constexpr bool transmits = true;
     [[nodiscard]] double refractive_index() const noexcept { return 1.5; }
-    [[nodiscard]] double fresnel(double, double) const noexcept { return 0.04; }
+    [[nodiscard]] double fresnel(double, double, double) const noexcept { return 0.04; }
     [[nodiscard]] Rgb<double> reflection_tint() const noexcept { return Rgb<double>(1); }
     [[nodiscard]] Rgb<double> transmission_tint() const noexcept { return Rgb<double>(1); }
     void validate() const {}

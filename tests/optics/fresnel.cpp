@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
+#include <prism/core/rng.hpp>
 #include <prism/optics/fresnel.hpp>
+#include <prism/optics/refract.hpp>
 
 #include <doctest/doctest.h>
 
@@ -85,4 +87,27 @@ TEST_CASE("conductor Fresnel with a complex index")
     CHECK(prism::fresnel_conductor(0.12, aluminium) < prism::fresnel_conductor(1.0, aluminium));
     CHECK(prism::fresnel_conductor(0.002, aluminium) > prism::fresnel_conductor(1.0, aluminium));
     CHECK(prism::fresnel_conductor(0.0, aluminium) == Approx(1));
+}
+
+TEST_CASE_TEMPLATE("with cos_t from refraction(), both policies give the very bits of their cos_i-only forms", T, float, double)
+{
+    // The fast path (Snell's cos_t found once, by refraction) against its slow twin.
+    prism::Pcg32 rng(12u, 12u);
+    int differ = 0, refracted = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const T u = rng.uniform<T>();
+        const prism::Vec3<T> n{T(0), T(1), T(0)};
+        const prism::Vec3<T> d = prism::normalize(prism::Vec3<T>{u, -(T(1) - u) - T(1e-3) * rng.uniform<T>(), rng.uniform<T>() - T(0.5)});
+        for (const T eta : {T(1.5), T(1) / T(1.5), T(1.333), T(2.4), T(1) / T(2.4)}) {
+            const auto r = prism::refraction(d, n, eta);
+            if (!r) continue;
+            ++refracted;
+            const T cos_i = prism::clamp(-prism::dot(d, n), T(0), T(1));
+            differ += prism::ExactFresnel::reflectance(cos_i, r->cos_t, eta) != prism::ExactFresnel::reflectance(cos_i, eta);
+            differ += prism::SchlickFresnel::reflectance(cos_i, r->cos_t, eta) != prism::SchlickFresnel::reflectance(cos_i, eta);
+            differ += !(r->cos_t == doctest::Approx(-prism::dot(r->direction, n)).epsilon(1e-5));
+        }
+    }
+    CHECK(refracted > 500000);
+    CHECK(differ == 0);
 }

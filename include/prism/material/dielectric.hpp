@@ -29,8 +29,8 @@ struct Dielectric {
     T kt = T(1);
 
     [[nodiscard]] constexpr T refractive_index() const noexcept { return ior; }
-    /// Fresnel reflectance for incident cosine cos_i and eta = n_t / n_i.
-    [[nodiscard]] constexpr T fresnel(T cos_i, T eta) const noexcept { return Fresnel::reflectance(cos_i, eta); }
+    /// Fresnel reflectance for the incident and refracted cosines and eta = n_t / n_i.
+    [[nodiscard]] constexpr T fresnel(T cos_i, T cos_t, T eta) const noexcept { return Fresnel::reflectance(cos_i, cos_t, eta); }
     [[nodiscard]] constexpr Rgb<T> reflection_tint() const noexcept { return Rgb<T>(kr); }
     [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(kt); }
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior; }

@@ -72,8 +72,10 @@ template <Material M>
     SpecularSplit<T> split;
     if constexpr (M::transmits) {
         const T eta = entering ? material.refractive_index() : T(1) / material.refractive_index();
-        split.refracted = refract(d, n, eta);
-        const T fresnel = split.refracted ? material.fresnel(cos_i, eta) : T(1);
+        // Snell's cos_t, found once, serves the direction and the Fresnel equations.
+        const auto refracted = refraction(d, n, eta);
+        if (refracted) split.refracted = refracted->direction;
+        const T fresnel = refracted ? material.fresnel(cos_i, refracted->cos_t, eta) : T(1);
         split.kr = material.reflection_tint() * fresnel;
         split.kt = material.transmission_tint() * (T(1) - fresnel);
         split.reflected_share = fresnel;

@@ -60,14 +60,15 @@ concept DeltaReflection = requires(const M& material, typename M::scalar_type co
     { material.reflectance(cos_i) } -> std::same_as<Rgb<typename M::scalar_type>>;
 };
 
-/// A dielectric interface with index `refractive_index()` inside and 1 outside. `fresnel(cos_i, eta)`
-/// is the share of light reflected for the incident cosine cos_i and eta = n_t / n_i
-/// (1 under total internal reflection); the reflected and refracted rays are then
-/// weighted by `reflection_tint()` and `transmission_tint()` (the seed's kr and kt).
+/// A dielectric interface with index `refractive_index()` inside and 1 outside.
+/// `fresnel(cos_i, cos_t, eta)` is the share of light reflected for the incident and
+/// refracted cosines and eta = n_t / n_i (asked only where light refracts: under total
+/// internal reflection all of it is reflected); the reflected and refracted rays are
+/// then weighted by `reflection_tint()` and `transmission_tint()` (the seed's kr and kt).
 template <class M>
 concept DeltaTransmission = requires(const M& material, typename M::scalar_type cos_i, typename M::scalar_type eta) {
     { material.refractive_index() } -> std::same_as<typename M::scalar_type>;
-    { material.fresnel(cos_i, eta) } -> std::same_as<typename M::scalar_type>;
+    { material.fresnel(cos_i, cos_i, eta) } -> std::same_as<typename M::scalar_type>;
     { material.reflection_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
     { material.transmission_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
 };
@@ -92,7 +93,7 @@ concept Material = requires(const M& material) {
 } && (M::has_diffuse || M::reflects || M::transmits) // a material does at least one thing
   && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) -> DiffuseResponse<T>
   && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i) -> Rgb<T>
-  && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, eta), reflection_tint(), transmission_tint()
+  && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta), reflection_tint(), transmission_tint()
   && (!M::transmits || InteriorMedium<M>);          // transmits promises medium(), a Medium of the same scalar type
 
 /// Purely specular: every scattered direction is a delta (no diffuse lobe).

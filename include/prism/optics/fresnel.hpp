@@ -21,6 +21,18 @@ struct PolarisedReflectance {
     T p;
 };
 
+/// Exact dielectric reflectance by polarisation, given the refracted cosine cos_t (as
+/// refraction() computes it, so it is computed once per interaction).
+template <Scalar T>
+[[nodiscard]] constexpr PolarisedReflectance<T> fresnel_dielectric_polarised(T cos_i, T cos_t, T eta) noexcept
+{
+    cos_i = clamp(cos_i, T(0), T(1));
+    // Divided through by n_i, so n_i -> 1 and n_t -> eta.
+    const T r_s = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    const T r_p = (cos_t - eta * cos_i) / (cos_t + eta * cos_i);
+    return {r_s * r_s, r_p * r_p};
+}
+
 /// Exact dielectric reflectance by polarisation; both are 1 under total internal reflection.
 template <Scalar T>
 [[nodiscard]] constexpr PolarisedReflectance<T> fresnel_dielectric_polarised(T cos_i, T eta) noexcept
@@ -30,11 +42,7 @@ template <Scalar T>
     const T sin2_t = (T(1) - cos_i * cos_i) / (eta * eta);
     // Handle total internal reflection
     if (sin2_t >= T(1)) return {T(1), T(1)};
-    const T cos_t = prism::sqrt(T(1) - sin2_t);
-    // Divided through by n_i, so n_i -> 1 and n_t -> eta.
-    const T r_s = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    const T r_p = (cos_t - eta * cos_i) / (cos_t + eta * cos_i);
-    return {r_s * r_s, r_p * r_p};
+    return fresnel_dielectric_polarised(cos_i, prism::sqrt(T(1) - sin2_t), eta);
 }
 
 /// Exact dielectric reflectance for unpolarised light, (R_s + R_p) / 2; 1 under total
@@ -46,25 +54,38 @@ template <Scalar T>
     return T(0.5) * (r.s + r.p);
 }
 
+/// The same, given the refracted cosine cos_t (no total internal reflection).
+template <Scalar T>
+[[nodiscard]] constexpr T fresnel_dielectric(T cos_i, T cos_t, T eta) noexcept
+{
+    const PolarisedReflectance<T> r = fresnel_dielectric_polarised(cos_i, cos_t, eta);
+    return T(0.5) * (r.s + r.p);
+}
+
 /// Schlick's approximation (Schlick 1994, "An Inexpensive BRDF Model for Physically-based
 /// Rendering"): R0 + (1 - R0)(1 - cos)^5 with R0 = ((eta - 1)/(eta + 1))^2. The cosine
 /// must be the one on the optically less dense side: going from dense to less dense
 /// (eta < 1) that is cos_t, and the answer is 1 under total internal reflection (seed
 /// errata 3; with cos_i there the error reaches 0.9 near the critical angle).
 template <Scalar T>
-[[nodiscard]] constexpr T fresnel_schlick(T cos_i, T eta) noexcept
+[[nodiscard]] constexpr T fresnel_schlick(T cos_i, T cos_t, T eta) noexcept
 {
-    cos_i = clamp(cos_i, T(0), T(1));
-    T cos = cos_i;
-    if (eta < T(1)) {
-        const T sin2_t = (T(1) - cos_i * cos_i) / (eta * eta);
-        if (sin2_t >= T(1)) return T(1);
-        cos = prism::sqrt(T(1) - sin2_t);
-    }
+    const T cos = eta < T(1) ? cos_t : clamp(cos_i, T(0), T(1));
     const T r0 = ((eta - T(1)) / (eta + T(1))) * ((eta - T(1)) / (eta + T(1)));
     const T m = T(1) - cos;
     const T m2 = m * m;
     return r0 + (T(1) - r0) * m2 * m2 * m;
+}
+
+/// Schlick's approximation from cos_i alone: cos_t found here (1 under total internal
+/// reflection).
+template <Scalar T>
+[[nodiscard]] constexpr T fresnel_schlick(T cos_i, T eta) noexcept
+{
+    cos_i = clamp(cos_i, T(0), T(1));
+    const T sin2_t = (T(1) - cos_i * cos_i) / (eta * eta);
+    if (eta < T(1) && sin2_t >= T(1)) return T(1);
+    return fresnel_schlick(cos_i, eta < T(1) ? prism::sqrt(T(1) - sin2_t) : T(0), eta);
 }
 
 /// Reflectance of a conductor with complex index eta = n + i k relative to the outside
@@ -92,6 +113,11 @@ struct ExactFresnel {
     {
         return fresnel_dielectric(cos_i, eta);
     }
+    template <Scalar T>
+    [[nodiscard]] static constexpr T reflectance(T cos_i, T cos_t, T eta) noexcept
+    {
+        return fresnel_dielectric(cos_i, cos_t, eta);
+    }
 };
 
 /// Schlick's approximation, evaluated on the less dense side.
@@ -101,12 +127,19 @@ struct SchlickFresnel {
     {
         return fresnel_schlick(cos_i, eta);
     }
+    template <Scalar T>
+    [[nodiscard]] static constexpr T reflectance(T cos_i, T cos_t, T eta) noexcept
+    {
+        return fresnel_schlick(cos_i, cos_t, eta);
+    }
 };
 
-/// A Fresnel policy: reflectance(cos_i, eta) in [0, 1].
+/// A Fresnel policy: reflectance(cos_i, eta) in [0, 1] (1 under total internal
+/// reflection), and reflectance(cos_i, cos_t, eta) given the refracted cosine.
 template <class P, class T>
 concept FresnelPolicy = Scalar<T> && requires(T cos_i, T eta) {
     { P::reflectance(cos_i, eta) } -> std::same_as<T>;
+    { P::reflectance(cos_i, cos_i, eta) } -> std::same_as<T>;
 };
 
 static_assert(FresnelPolicy<ExactFresnel, float> && FresnelPolicy<SchlickFresnel, double>);
