@@ -109,8 +109,12 @@ def povray_chart(rows):
         x = range(len(pts))
         ax.bar([i - 0.2 for i in x], [float(r["prism_seconds"]) for r in pts], 0.4, label="prism (render time)")
         ax.bar([i + 0.2 for i in x], [float(r["povray_trace_seconds"]) for r in pts], 0.4, label="POV-Ray 3.7 (trace time)")
+        if all(r.get("baseline_seconds") for r in pts):  # an earlier build, timed in the same runs
+            ax.scatter([i - 0.2 for i in x], [float(r["baseline_seconds"]) for r in pts], marker="_", s=600, color="black",
+                       label="prism, baseline build", zorder=3)
         for i, r in zip(x, pts):
-            ax.annotate(f"{float(r['ratio']):.2f}x", (i - 0.2, float(r["prism_seconds"])), ha="center", va="bottom", fontsize=9)
+            ax.annotate(f"{float(r['ratio']):.2f}x", (i - 0.2, 0.5 * float(r["prism_seconds"])), ha="center", va="center", fontsize=9,
+                        color="white")
         ax.set_xticks(list(x), [f"{r['threads']} thread(s)" for r in pts])
         ax.set_ylabel("seconds (minimum of runs)")
         ax.set_title(f"{scene}, 512x512, 1 spp")
