@@ -71,6 +71,13 @@ TEST_CASE("a spot light defined in a test lights a disk, by shadow rays and by i
         const double r2 = x * x + 4, expected = intensity * (2 / std::sqrt(r2)) / r2;
         CHECK(maps.global.irradiance_within({float(x), 0, 0}, {0, 1, 0}, 0.15f).x == doctest::Approx(expected).epsilon(0.05));
     }
+    // Whitted's shadow rays: L = albedo / pi E inside the disk, nothing outside it.
+    const prism::Scene grey{prism::Lights{SpotLight{.position = {0, 2, 0}, .cos_cutoff = 0.8, .intensity = Rgb<double>(intensity)}},
+                            prism::Object{prism::Plane<double>({0, 1, 0}, 0), prism::Diffuse<double>{.albedo = {.color = Rgb<double>(0.5)}}}};
+    const prism::Whitted whitted(grey);
+    const double r2 = 1 + 4;
+    CHECK(whitted.radiance(prism::Ray<double>{{1, 1, 0}, {0, -1, 0}}).x == doctest::Approx(0.5 / prism::pi<double> * intensity * (2 / std::sqrt(r2)) / r2));
+    CHECK(whitted.radiance(prism::Ray<double>{{2, 1, 0}, {0, -1, 0}}).x == 0);
 }
 
 TEST_CASE("photon aims: a point light into a target's cone carries Phi times its solid angle / 4 pi; a parallel light E pi r^2")

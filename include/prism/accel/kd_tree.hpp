@@ -85,8 +85,11 @@ public:
     {
     }
 
+    /// The maximum distance squared until k are found, then the k-th nearest's.
     [[nodiscard]] constexpr T bound() const noexcept { return bound_; }
 
+    /// Keep the point while fewer than k are found, else when it is nearer (ties: lower
+    /// index) than the farthest kept, which it replaces.
     constexpr void add(T distance2, std::uint32_t index) noexcept
     {
         const Neighbour<T> candidate{distance2, index};
@@ -100,7 +103,9 @@ public:
         }
     }
 
+    /// How many are kept (at most k).
     [[nodiscard]] constexpr std::size_t size() const noexcept { return count_; }
+    /// Whether k are kept: then the k-th nearest is farthest().
     [[nodiscard]] constexpr bool full() const noexcept { return count_ == k_; }
     [[nodiscard]] constexpr const Neighbour<T>* begin() const noexcept { return heap_; }
     [[nodiscard]] constexpr const Neighbour<T>* end() const noexcept { return heap_ + count_; }
@@ -140,7 +145,9 @@ class WithinRadius {
 public:
     constexpr WithinRadius(T radius2, Visitor& visit) noexcept : radius2_(radius2), visit_(&visit) {}
 
+    /// The radius squared, fixed.
     [[nodiscard]] constexpr T bound() const noexcept { return radius2_; }
+    /// Hand the point to the visitor.
     constexpr void add(T distance2, std::uint32_t index) { (*visit_)(index, distance2); }
 
 private:

@@ -28,9 +28,12 @@ struct Dielectric {
     T kr = T(1);
     T kt = T(1);
 
+    // Dielectric capabilities (DeltaTransmission, InteriorMedium)
+
     [[nodiscard]] constexpr T refractive_index() const noexcept { return ior; }
     /// Fresnel reflectance for the incident and refracted cosines and eta = n_t / n_i.
     [[nodiscard]] constexpr T fresnel(T cos_i, T cos_t, T eta) const noexcept { return Fresnel::reflectance(cos_i, cos_t, eta); }
+    /// The seed's kr on the reflected ray and kt on the refracted one, grey.
     [[nodiscard]] constexpr Rgb<T> reflection_tint() const noexcept { return Rgb<T>(kr); }
     [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(kt); }
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior; }
