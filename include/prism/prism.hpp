@@ -38,6 +38,7 @@
 #include <prism/material/scattering.hpp>
 #include <prism/material/texture.hpp>
 #include <prism/material/traits.hpp>
+#include <prism/medium/graded_index.hpp>
 #include <prism/medium/homogeneous.hpp>
 #include <prism/medium/medium.hpp>
 #include <prism/optics/beer.hpp>
