@@ -257,6 +257,27 @@ def ray_property_chart(after, before):
     save(fig, "ray_property.png")
 
 
+def graded_index_chart(rows):
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    labels = {"adaptive": "Sharma RKN, step doubling (tolerance)", "fixed": "Sharma RKN, fixed steps (dt)",
+              "layers": "lecture notes: flat layers + Snell (layers)"}
+    for method, label in labels.items():
+        pts = [r for r in rows if r["method"] == method]
+        if not pts:
+            continue
+        x = [float(r["ns_per_ray"]) for r in pts]
+        y = [max(float(r["error"]), 1e-16) for r in pts]
+        ax.loglog(x, y, "o-", label=label)
+        for xi, yi, r in zip(x, y, pts):
+            ax.annotate(r["parameter"], (xi, yi), textcoords="offset points", xytext=(3, 3), fontsize=7)
+    ax.set_xlabel("ns per ray (min of 5 runs)")
+    ax.set_ylabel("|x - exact| where the ray reaches y = 4")
+    ax.set_title("graded-index air n = 1 + 0.05 y: error against time", fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, "graded_index.png")
+
+
 def main():
     if (rows := read("accuracy.csv")):
         accuracy_charts(rows)
@@ -274,6 +295,8 @@ def main():
         photon_chart(rows)
     if (rows := read("photon_leaks.csv")):
         leak_chart(rows)
+    if (rows := read("graded_index.csv")):
+        graded_index_chart(rows)
     if (rows := read("ray_property.csv")):
         ray_property_chart(rows, read("ray_property_before.csv"))
 

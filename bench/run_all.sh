@@ -20,5 +20,6 @@ python=/usr/bin/python3
 "$root/build/release/bench/bench_accuracy" "$results" | tee "$results/accuracy.txt"
 "$root/build/release/bench/bench_shadow_saving" "$results" | tee "$results/shadow_saving.txt"
 "$root/build/release/bench/bench_ray_property" "$results" | tee "$results/ray_property.txt"
+"$root/build/release/bench/bench_graded_index" "$results" | tee "$results/graded_index.txt"
 "$python" "$root/bench/photon_accuracy.py" --build "$root/build/release" --out "$results" | tee "$results/photon_accuracy.txt"
 "$python" "$root/bench/plot.py" "$results"

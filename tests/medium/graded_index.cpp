@@ -157,3 +157,24 @@ TEST_CASE("fields agree with their formulas; a callable's gradient by central di
     CHECK_THROWS_WITH_AS(prism::LayeredMedium(flat, 0.0, 1.0, 0), doctest::Contains("layers"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(prism::AdaptiveStepper(flat, {.tolerance = -1}), doctest::Contains("tolerance"), std::invalid_argument);
 }
+
+TEST_CASE("n = 1 + g y, where grad(n^2) is not constant: adaptive steps reach x = (K/g)(acosh(n/K) - acosh(n0/K)) to their tolerance")
+{
+    // The stratified invariant n cos(theta) = K integrated: dx/dy = K / sqrt(n^2 - K^2).
+    const double g = 0.05, theta0 = 0.3;
+    const prism::LinearIndex<double> field{.n0 = 1, .slope = g};
+    const double k = std::cos(theta0);
+    for (const double tolerance : {1e-6, 1e-9}) {
+        const prism::AdaptiveStepper stepper(field, {.tolerance = tolerance});
+        CurvedRay<double> ray = prism::curved_ray(field, prism::Ray<double>{{0, 0, 0}, {std::cos(theta0), std::sin(theta0), 0}});
+        double dt = 0, worst = 0;
+        for (int i = 0; i < 200; ++i) {
+            stepper.step(ray, dt);
+            const double expected = k / g * (std::acosh(field.index(ray.position) / k) - std::acosh(1.0 / k));
+            worst = std::max(worst, std::abs(ray.position.x - expected));
+        }
+        INFO("tolerance " << tolerance << ": reached y = " << ray.position.y);
+        CHECK(ray.position.y > 10);
+        CHECK(worst < 200 * tolerance); // at most the per-step tolerance times the steps taken
+    }
+}
