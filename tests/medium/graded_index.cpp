@@ -153,6 +153,11 @@ TEST_CASE("fields agree with their formulas; a callable's gradient by central di
                          std::invalid_argument);
     CHECK_THROWS_WITH_AS((prism::HeatedLayer<double>{.drop = 2}.validate()), doctest::Contains("drop"), std::invalid_argument);
     const prism::LinearIndex<double> flat{};
+    const prism::LayeredMedium four(flat, 0.0, 1.0, 4);
+    CHECK(four.layer_of(0.6) == 2);
+    CHECK(four.layer_of(1e300) == 3); // clamped before the conversion to int, not after
+    CHECK(four.layer_of(-1e300) == 0);
+    CHECK(four.layer_of(std::nan("")) == 0);
     CHECK_THROWS_WITH_AS(prism::LayeredMedium(flat, 1.0, 0.0, 4), doctest::Contains("top"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(prism::LayeredMedium(flat, 0.0, 1.0, 0), doctest::Contains("layers"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(prism::AdaptiveStepper(flat, {.tolerance = -1}), doctest::Contains("tolerance"), std::invalid_argument);

@@ -260,10 +260,13 @@ public:
 
     [[nodiscard]] int layers() const noexcept { return layers_; }
 
-    /// The layer holding height y (clamped into [0, layers)).
+    /// The layer holding height y (clamped into [0, layers); in floating point first, so a
+    /// far-off or NaN height never overflows the conversion to int).
     [[nodiscard]] int layer_of(T y) const noexcept
     {
-        return std::clamp(static_cast<int>(std::floor((y - bottom_) / height_)), 0, layers_ - 1);
+        const T layer = std::floor((y - bottom_) / height_);
+        if (!(layer > T(0))) return 0;
+        return layer < T(layers_ - 1) ? static_cast<int>(layer) : layers_ - 1;
     }
 
     /// The index of layer i: the field at its middle height (x = z = 0: stratified fields).
