@@ -42,6 +42,7 @@
 #include <prism/medium/homogeneous.hpp>
 #include <prism/medium/medium.hpp>
 #include <prism/optics/beer.hpp>
+#include <prism/optics/dispersion.hpp>
 #include <prism/optics/fresnel.hpp>
 #include <prism/optics/refract.hpp>
 #include <prism/photon/photon.hpp>
