@@ -2881,47 +2881,40 @@ template <Material M>
 {
     using T = typename M::scalar_type;
     using Bounce = std::optional<PhotonBounce<T>>;
-    const auto diffuse = [&]() -> Bounce {
-        if constexpr (M::has_diffuse) {
-            if (!russian_roulette(power, material.diffuse(hit.point).photon_reflectance(), rng)) return std::nullopt;
-            return PhotonBounce<T>{cosine_hemisphere(n, rng), true};
-        } else {
-            return std::nullopt;
-        }
+    // Each lobe's scattering, given what the material does here (computed once, also for
+    // choosing between two lobes).
+    const auto scatter_diffusely = [&](const Rgb<T>& reflectance) -> Bounce {
+        if (!russian_roulette(power, reflectance, rng)) return std::nullopt;
+        return PhotonBounce<T>{cosine_hemisphere(n, rng), true};
     };
-    const auto delta = [&]() -> Bounce {
-        if constexpr (M::reflects || M::transmits) {
-            const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
-            if constexpr (M::transmits) {
-                // Reflect with probability F, refract otherwise; each then by its tint.
-                const bool reflect_it = rng.uniform<T>() < split.reflected_share;
-                if (!russian_roulette(power, reflect_it ? material.reflection_tint() : material.transmission_tint(), rng)) return std::nullopt;
-                return PhotonBounce<T>{reflect_it ? reflect(d, n) : *split.refracted, false};
-            } else {
-                if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
-                return PhotonBounce<T>{reflect(d, n), false};
-            }
+    const auto scatter_specularly = [&](const SpecularSplit<T>& split) -> Bounce {
+        if constexpr (M::transmits) {
+            // Reflect with probability F, refract otherwise; each then by its tint.
+            const bool reflect_it = rng.uniform<T>() < split.reflected_share;
+            if (!russian_roulette(power, reflect_it ? material.reflection_tint() : material.transmission_tint(), rng)) return std::nullopt;
+            return PhotonBounce<T>{reflect_it ? reflect(d, n) : *split.refracted, false};
         } else {
-            return std::nullopt;
+            if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
+            return PhotonBounce<T>{reflect(d, n), false};
         }
     };
     if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
         // Both lobes: choose one by its share of the reflected light (largest channels).
-        const T w_diffuse = max_component(material.diffuse(hit.point).photon_reflectance());
+        const Rgb<T> reflectance = diffuse_response(material, hit.point).photon_reflectance();
         const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
-        const T w_delta = max_component(split.kr + split.kt);
+        const T w_diffuse = max_component(reflectance), w_delta = max_component(split.kr + split.kt);
         if (!(w_diffuse + w_delta > T(0))) return std::nullopt;
         const T p_diffuse = w_diffuse / (w_diffuse + w_delta);
         if (rng.uniform<T>() < p_diffuse) {
             power /= p_diffuse;
-            return diffuse();
+            return scatter_diffusely(reflectance);
         }
         power /= T(1) - p_diffuse;
-        return delta();
+        return scatter_specularly(split);
     } else if constexpr (M::has_diffuse) {
-        return diffuse();
+        return scatter_diffusely(diffuse_response(material, hit.point).photon_reflectance());
     } else {
-        return delta();
+        return scatter_specularly(delta_split(material, d, n, hit.entering));
     }
 }
 
@@ -3723,8 +3716,7 @@ public:
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
         // A sphere around everything bounded: parallel photons start outside it.
-        bounded_ = !scene.bounds().empty();
-        if (bounded_) scene_sphere_ = scene.bounds().bounding_sphere();
+        if (!scene.bounds().empty()) scene_sphere_ = scene.bounds().bounding_sphere();
         add_emitters(global_, false, {});
         std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
         for (const auto& e : global_) global_power_ += max_component(e.power);
@@ -3836,7 +3828,7 @@ private:
 
     [[nodiscard]] PhotonAim<T> aim(const Emitter<T>& e) const noexcept
     {
-        return {e.aimed ? &e.target : nullptr, bounded_ ? &scene_sphere_ : nullptr};
+        return {e.aimed ? &e.target : nullptr, scene_.bounds().empty() ? nullptr : &scene_sphere_};
     }
 
     /// Every light aimed at `target` (or everywhere when not `aimed`), where it sends any power.
@@ -3862,8 +3854,7 @@ private:
 
     const SceneT& scene_;
     PhotonTracerConfig config_;
-    bool bounded_ = false;             ///< the scene holds something bounded
-    BoundingSphere<T> scene_sphere_{}; ///< around it
+    BoundingSphere<T> scene_sphere_{}; ///< around everything bounded (when anything is)
     std::vector<Emitter<T>> global_;  ///< every light aimed everywhere, for the global map
     T global_power_ = T(0);
     std::vector<Emitter<T>> targets_; ///< every light aimed at each specular object, for the caustic map

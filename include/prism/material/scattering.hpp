@@ -148,47 +148,40 @@ template <Material M>
 {
     using T = typename M::scalar_type;
     using Bounce = std::optional<PhotonBounce<T>>;
-    const auto diffuse = [&]() -> Bounce {
-        if constexpr (M::has_diffuse) {
-            if (!russian_roulette(power, material.diffuse(hit.point).photon_reflectance(), rng)) return std::nullopt;
-            return PhotonBounce<T>{cosine_hemisphere(n, rng), true};
-        } else {
-            return std::nullopt;
-        }
+    // Each lobe's scattering, given what the material does here (computed once, also for
+    // choosing between two lobes).
+    const auto scatter_diffusely = [&](const Rgb<T>& reflectance) -> Bounce {
+        if (!russian_roulette(power, reflectance, rng)) return std::nullopt;
+        return PhotonBounce<T>{cosine_hemisphere(n, rng), true};
     };
-    const auto delta = [&]() -> Bounce {
-        if constexpr (M::reflects || M::transmits) {
-            const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
-            if constexpr (M::transmits) {
-                // Reflect with probability F, refract otherwise; each then by its tint.
-                const bool reflect_it = rng.uniform<T>() < split.reflected_share;
-                if (!russian_roulette(power, reflect_it ? material.reflection_tint() : material.transmission_tint(), rng)) return std::nullopt;
-                return PhotonBounce<T>{reflect_it ? reflect(d, n) : *split.refracted, false};
-            } else {
-                if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
-                return PhotonBounce<T>{reflect(d, n), false};
-            }
+    const auto scatter_specularly = [&](const SpecularSplit<T>& split) -> Bounce {
+        if constexpr (M::transmits) {
+            // Reflect with probability F, refract otherwise; each then by its tint.
+            const bool reflect_it = rng.uniform<T>() < split.reflected_share;
+            if (!russian_roulette(power, reflect_it ? material.reflection_tint() : material.transmission_tint(), rng)) return std::nullopt;
+            return PhotonBounce<T>{reflect_it ? reflect(d, n) : *split.refracted, false};
         } else {
-            return std::nullopt;
+            if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
+            return PhotonBounce<T>{reflect(d, n), false};
         }
     };
     if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
         // Both lobes: choose one by its share of the reflected light (largest channels).
-        const T w_diffuse = max_component(material.diffuse(hit.point).photon_reflectance());
+        const Rgb<T> reflectance = diffuse_response(material, hit.point).photon_reflectance();
         const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
-        const T w_delta = max_component(split.kr + split.kt);
+        const T w_diffuse = max_component(reflectance), w_delta = max_component(split.kr + split.kt);
         if (!(w_diffuse + w_delta > T(0))) return std::nullopt;
         const T p_diffuse = w_diffuse / (w_diffuse + w_delta);
         if (rng.uniform<T>() < p_diffuse) {
             power /= p_diffuse;
-            return diffuse();
+            return scatter_diffusely(reflectance);
         }
         power /= T(1) - p_diffuse;
-        return delta();
+        return scatter_specularly(split);
     } else if constexpr (M::has_diffuse) {
-        return diffuse();
+        return scatter_diffusely(diffuse_response(material, hit.point).photon_reflectance());
     } else {
-        return delta();
+        return scatter_specularly(delta_split(material, d, n, hit.entering));
     }
 }
 

@@ -99,8 +99,7 @@ public:
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
         // A sphere around everything bounded: parallel photons start outside it.
-        bounded_ = !scene.bounds().empty();
-        if (bounded_) scene_sphere_ = scene.bounds().bounding_sphere();
+        if (!scene.bounds().empty()) scene_sphere_ = scene.bounds().bounding_sphere();
         add_emitters(global_, false, {});
         std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
         for (const auto& e : global_) global_power_ += max_component(e.power);
@@ -212,7 +211,7 @@ private:
 
     [[nodiscard]] PhotonAim<T> aim(const Emitter<T>& e) const noexcept
     {
-        return {e.aimed ? &e.target : nullptr, bounded_ ? &scene_sphere_ : nullptr};
+        return {e.aimed ? &e.target : nullptr, scene_.bounds().empty() ? nullptr : &scene_sphere_};
     }
 
     /// Every light aimed at `target` (or everywhere when not `aimed`), where it sends any power.
@@ -238,8 +237,7 @@ private:
 
     const SceneT& scene_;
     PhotonTracerConfig config_;
-    bool bounded_ = false;             ///< the scene holds something bounded
-    BoundingSphere<T> scene_sphere_{}; ///< around it
+    BoundingSphere<T> scene_sphere_{}; ///< around everything bounded (when anything is)
     std::vector<Emitter<T>> global_;  ///< every light aimed everywhere, for the global map
     T global_power_ = T(0);
     std::vector<Emitter<T>> targets_; ///< every light aimed at each specular object, for the caustic map
