@@ -4,7 +4,7 @@
 #   tools/setup.sh          build, test and example needs
 #   tools/setup.sh --bench  also POV-Ray and matplotlib, for bench/
 set -euo pipefail
-packages=(g++ cmake ninja-build meson python3 libglm-dev doctest-dev libstb-dev)
+packages=(g++ cmake ninja-build meson python3 libglm-dev doctest-dev libstb-dev colord-data)
 if [[ "${1:-}" == "--bench" ]]; then packages+=(povray python3-matplotlib libnanoflann-dev); fi
 
 missing=()

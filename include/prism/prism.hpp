@@ -37,6 +37,7 @@
 #include <prism/material/diffuse.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/texture.hpp>
+#include <prism/material/thin_film.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/medium/graded_index.hpp>
 #include <prism/medium/homogeneous.hpp>
@@ -45,6 +46,7 @@
 #include <prism/optics/dispersion.hpp>
 #include <prism/optics/fresnel.hpp>
 #include <prism/optics/refract.hpp>
+#include <prism/optics/thin_film.hpp>
 #include <prism/photon/photon.hpp>
 #include <prism/photon/photon_map.hpp>
 #include <prism/photon/photon_tracer.hpp>
@@ -54,3 +56,6 @@
 #include <prism/scene/hit.hpp>
 #include <prism/scene/object.hpp>
 #include <prism/scene/scene.hpp>
+#include <prism/spectrum/cie.hpp>
+#include <prism/spectrum/cie_tables.hpp>
+#include <prism/spectrum/metals.hpp>

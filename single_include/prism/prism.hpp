@@ -2627,25 +2627,50 @@ concept DiffuseLobe = requires(const M& material, const Vec3<typename M::scalar_
     { material.diffuse(p) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
 };
 
-/// A mirror that is not an interface (a conductor): `reflectance(cos_i)` per channel for
-/// light arriving at cosine cos_i.
+/// What a delta interaction sees at a surface point: the incident cosine, the refracted
+/// one and eta = n_t / n_i (where light refracts), the side (`entering`: arriving from
+/// outside) and the point. Materials whose response varies over the surface (a film of
+/// textured thickness) or with the side (a coating on the outside) take this whole.
+template <Scalar T>
+struct SpecularQuery {
+    T cos_i;
+    T cos_t;
+    T eta;
+    bool entering;
+    Vec3<T> point;
+};
+
+/// A mirror that is not an interface (a conductor): its reflectance per channel for
+/// light arriving at cosine cos_i, as `reflectance(cos_i)` or, where it varies over
+/// the surface, `reflectance(SpecularQuery)`.
 template <class M>
 concept DeltaReflection = requires(const M& material, typename M::scalar_type cos_i) {
     { material.reflectance(cos_i) } -> std::same_as<Rgb<typename M::scalar_type>>;
+} || requires(const M& material, const SpecularQuery<typename M::scalar_type>& query) {
+    { material.reflectance(query) } -> std::same_as<Rgb<typename M::scalar_type>>;
 };
+
+/// A Fresnel reflectance: one share for every channel, or one per channel (a thin film).
+template <class F, class T>
+concept FresnelShare = std::same_as<F, T> || std::same_as<F, Rgb<T>>;
 
 /// A dielectric interface with index `refractive_index()` inside and 1 outside.
 /// `fresnel(cos_i, cos_t, eta)` is the share of light reflected for the incident and
-/// refracted cosines and eta = n_t / n_i (asked only where light refracts: under total
-/// internal reflection all of it is reflected); the reflected and refracted rays are
-/// then weighted by `reflection_tint()` and `transmission_tint()` (the seed's kr and kt).
+/// refracted cosines and eta = n_t / n_i, or `fresnel(SpecularQuery)` where it varies
+/// over the surface or with the side; either returns one share or one per channel, and
+/// is asked only where light refracts (under total internal reflection all of it is
+/// reflected). The reflected and refracted rays are then weighted by
+/// `reflection_tint()` and `transmission_tint()` (the seed's kr and kt).
 template <class M>
-concept DeltaTransmission = requires(const M& material, typename M::scalar_type cos_i, typename M::scalar_type eta) {
+concept DeltaTransmission = requires(const M& material) {
     { material.refractive_index() } -> std::same_as<typename M::scalar_type>;
-    { material.fresnel(cos_i, cos_i, eta) } -> std::same_as<typename M::scalar_type>;
     { material.reflection_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
     { material.transmission_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
-};
+} && (requires(const M& material, typename M::scalar_type cos_i) {
+    { material.fresnel(cos_i, cos_i, cos_i) } -> FresnelShare<typename M::scalar_type>;
+} || requires(const M& material, const SpecularQuery<typename M::scalar_type>& query) {
+    { material.fresnel(query) } -> FresnelShare<typename M::scalar_type>;
+});
 
 /// The medium filling a transmissive object: `medium()` (see medium/medium.hpp).
 template <class M>
@@ -2666,8 +2691,8 @@ concept Material = requires(const M& material) {
     material.validate();
 } && (M::has_diffuse || M::reflects || M::transmits) // a material does at least one thing
   && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) -> DiffuseResponse<T>
-  && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i) -> Rgb<T>
-  && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta), reflection_tint(), transmission_tint()
+  && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i or query) -> Rgb<T>
+  && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta or query), reflection_tint(), transmission_tint()
   && (!M::transmits || InteriorMedium<M>);          // transmits promises medium(), a Medium of the same scalar type
 
 /// Purely specular: every scattered direction is a delta (no diffuse lobe).
@@ -2780,25 +2805,56 @@ template <Material M>
 
 /// The weights of the reflected and transmitted rays at a specular surface, the
 /// transmitted direction (none under total internal reflection or for a conductor), and
-/// the share of light reflected before the tints (Fresnel's F; 1 for a conductor): a
-/// photon's chance to reflect.
+/// the Fresnel reflectance before the tints (1 for a conductor; per channel for a thin
+/// film): a photon reflects with the probability `reflected_share`, its mean.
 template <Scalar T>
 struct SpecularSplit {
     Rgb<T> kr{T(0)};
     Rgb<T> kt{T(0)};
     std::optional<Vec3<T>> refracted;
+    Rgb<T> fresnel{T(1)};
     T reflected_share = T(1);
+
+    /// Whether Fresnel's share is the same in every channel (then a photon's choice
+    /// between reflection and refraction needs no reweighting).
+    [[nodiscard]] constexpr bool fresnel_is_grey() const noexcept { return fresnel.x == fresnel.y && fresnel.y == fresnel.z; }
 };
 
-/// How a mirror or an interface splits the unit incident direction d arriving at a
-/// surface whose unit normal n faces it (Crossing::facing_normal); `entering`: d goes
-/// into the material. A dielectric splits by Fresnel (all to reflection under total
-/// internal reflection) times its tints, with eta = n_inside or 1 / n_inside by the
-/// side; a conductor reflects by its reflectance.
+namespace detail {
+
+/// A conductor's reflectance, from cos_i alone or from the whole query.
+template <Material M>
+[[nodiscard]] Rgb<typename M::scalar_type> conductor_reflectance(const M& material, const SpecularQuery<typename M::scalar_type>& q) noexcept
+{
+    if constexpr (requires { material.reflectance(q.cos_i); })
+        return material.reflectance(q.cos_i);
+    else
+        return material.reflectance(q);
+}
+
+/// An interface's Fresnel share (one, or one per channel), from the cosines and eta or
+/// from the whole query.
+template <Material M>
+[[nodiscard]] auto interface_fresnel(const M& material, const SpecularQuery<typename M::scalar_type>& q) noexcept
+{
+    if constexpr (requires { material.fresnel(q.cos_i, q.cos_t, q.eta); })
+        return material.fresnel(q.cos_i, q.cos_t, q.eta);
+    else
+        return material.fresnel(q);
+}
+
+} // namespace detail
+
+/// How a mirror or an interface at point p splits the unit incident direction d
+/// arriving at a surface whose unit normal n faces it (Crossing::facing_normal);
+/// `entering`: d goes into the material. A dielectric splits by Fresnel (all to
+/// reflection under total internal reflection) times its tints, with eta = n_inside or
+/// 1 / n_inside by the side; a conductor reflects by its reflectance.
 template <Material M>
     requires(M::reflects || M::transmits)
 [[nodiscard]] SpecularSplit<typename M::scalar_type> delta_split(const M& material, const Vec3<typename M::scalar_type>& d,
-                                                                const Vec3<typename M::scalar_type>& n, bool entering) noexcept
+                                                                const Vec3<typename M::scalar_type>& n, bool entering,
+                                                                const Vec3<typename M::scalar_type>& p) noexcept
 {
     using T = typename M::scalar_type;
     const T cos_i = clamp(-dot(d, n), T(0), T(1));
@@ -2808,12 +2864,19 @@ template <Material M>
         // Snell's cos_t, found once, serves the direction and the Fresnel equations.
         const auto refracted = refraction(d, n, eta);
         if (refracted) split.refracted = refracted->direction;
-        const T fresnel = refracted ? material.fresnel(cos_i, refracted->cos_t, eta) : T(1);
-        split.kr = material.reflection_tint() * fresnel;
-        split.kt = material.transmission_tint() * (T(1) - fresnel);
-        split.reflected_share = fresnel;
+        if (refracted) {
+            const auto fresnel = detail::interface_fresnel(material, SpecularQuery<T>{cos_i, refracted->cos_t, eta, entering, p});
+            if constexpr (std::same_as<decltype(fresnel), const T>) {
+                split.reflected_share = fresnel;
+            } else {
+                split.reflected_share = (fresnel.x + fresnel.y + fresnel.z) / T(3);
+            }
+            split.fresnel = Rgb<T>(fresnel);
+        }
+        split.kr = material.reflection_tint() * split.fresnel;
+        split.kt = material.transmission_tint() * (Rgb<T>(T(1)) - split.fresnel);
     } else {
-        split.kr = material.reflectance(cos_i);
+        split.kr = detail::conductor_reflectance(material, SpecularQuery<T>{cos_i, T(0), T(1), entering, p});
     }
     return split;
 }
@@ -2889,9 +2952,14 @@ template <Material M>
     };
     const auto scatter_specularly = [&](const SpecularSplit<T>& split) -> Bounce {
         if constexpr (M::transmits) {
-            // Reflect with probability F, refract otherwise; each then by its tint.
+            // Reflect with probability F (the mean of F per channel), refract otherwise;
+            // each then by its tint. Per-channel F weighs the survivor by F / mean.
             const bool reflect_it = rng.uniform<T>() < split.reflected_share;
             if (!russian_roulette(power, reflect_it ? material.reflection_tint() : material.transmission_tint(), rng)) return std::nullopt;
+            if (!split.fresnel_is_grey()) {
+                power *= reflect_it ? split.fresnel / split.reflected_share
+                                    : (Rgb<T>(T(1)) - split.fresnel) / (T(1) - split.reflected_share);
+            }
             return PhotonBounce<T>{reflect_it ? reflect(d, n) : *split.refracted, false};
         } else {
             if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
@@ -2901,7 +2969,7 @@ template <Material M>
     if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
         // Both lobes: choose one by its share of the reflected light (largest channels).
         const Rgb<T> reflectance = diffuse_response(material, hit.point).photon_reflectance();
-        const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
+        const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point);
         const T w_diffuse = max_component(reflectance), w_delta = max_component(split.kr + split.kt);
         if (!(w_diffuse + w_delta > T(0))) return std::nullopt;
         const T p_diffuse = w_diffuse / (w_diffuse + w_delta);
@@ -2914,7 +2982,7 @@ template <Material M>
     } else if constexpr (M::has_diffuse) {
         return scatter_diffusely(diffuse_response(material, hit.point).photon_reflectance());
     } else {
-        return scatter_specularly(delta_split(material, d, n, hit.entering));
+        return scatter_specularly(delta_split(material, d, n, hit.entering, hit.point));
     }
 }
 
@@ -4031,7 +4099,7 @@ private:
         }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
+                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point);
                 if (max_component(weight * split.kr) > config_.min_weight)
                     radiance += split.kr * trace(spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n)), depth + 1, weight * split.kr, rng);
                 if (split.refracted && max_component(weight * split.kt) > config_.min_weight)
@@ -4155,7 +4223,7 @@ private:
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
+                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point);
                 const Rgb<T> reflect_weight = weight * split.kr;
                 if (max_component(reflect_weight) > config_.min_weight) {
                     const Ray<T> reflected = spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n));
@@ -4473,10 +4541,343 @@ static_assert(FresnelPolicy<ExactFresnel, float> && FresnelPolicy<SchlickFresnel
 
 } // namespace prism
 
+// ---- prism/spectrum/cie_tables.hpp ----
+// Generated by tools/cie_tables.py from Debian's colord-data; do not edit.
+// The CIE 1931 2-degree standard observer and the CIE standard illuminant D65
+// (CIE 015:2004; ISO/CIE 11664-1 and 11664-2), 360-830 nm every 5 nm.
+
+namespace prism::cie::tables {
+
+inline constexpr int first_nm = 360;
+inline constexpr int last_nm = 830;
+inline constexpr int step_nm = 5;
+inline constexpr int count = (last_nm - first_nm) / step_nm + 1;
+
+/// Colour matching function x-bar(lambda).
+inline constexpr double x_bar[count] = {
+    0.0001299, 0.0002321, 0.0004149, 0.0007416, 0.001368, 0.002236,
+    0.004243, 0.00765, 0.01431, 0.02319, 0.04351, 0.07763,
+    0.13438, 0.21477, 0.2839, 0.3285, 0.34828, 0.34806,
+    0.3362, 0.3187, 0.2908, 0.2511, 0.19536, 0.1421,
+    0.09564, 0.05795001, 0.03201, 0.0147, 0.0049, 0.0024,
+    0.0093, 0.0291, 0.06327, 0.1096, 0.1655, 0.2257499,
+    0.2904, 0.3597, 0.4334499, 0.5120501, 0.5945, 0.6784,
+    0.7621, 0.8425, 0.9163, 0.9786, 1.0263, 1.0567,
+    1.0622, 1.0456, 1.0026, 0.9384, 0.8544499, 0.7514,
+    0.6424, 0.5419, 0.4479, 0.3608, 0.2835, 0.2187,
+    0.1649, 0.1212, 0.0874, 0.0636, 0.04677, 0.0329,
+    0.0227, 0.01584, 0.01135916, 0.008110916, 0.005790346, 0.004109457,
+    0.002899327, 0.00204919, 0.001439971, 0.0009999493, 0.0006900786, 0.0004760213,
+    0.0003323011, 0.0002348261, 0.0001661505, 0.000117413, 0.00008307527, 0.00005870652,
+    0.00004150994, 0.00002935326, 0.00002067383, 0.00001455977, 0.00001025398, 0.000007221456,
+    0.000005085868, 0.000003581652, 0.000002522525, 0.000001776509, 0.000001251141};
+
+/// Colour matching function y-bar(lambda), the photopic luminous efficiency V(lambda).
+inline constexpr double y_bar[count] = {
+    0.000003917, 0.000006965, 0.00001239, 0.00002202, 0.000039, 0.000064,
+    0.00012, 0.000217, 0.000396, 0.00064, 0.00121, 0.00218,
+    0.004, 0.0073, 0.0116, 0.01684, 0.023, 0.0298,
+    0.038, 0.048, 0.06, 0.0739, 0.09098, 0.1126,
+    0.13902, 0.1693, 0.20802, 0.2586, 0.323, 0.4073,
+    0.503, 0.6082, 0.71, 0.7932, 0.862, 0.9148501,
+    0.954, 0.9803, 0.9949501, 1.0, 0.995, 0.9786,
+    0.952, 0.9154, 0.87, 0.8163, 0.757, 0.6949,
+    0.631, 0.5668, 0.503, 0.4412, 0.381, 0.321,
+    0.265, 0.217, 0.175, 0.1382, 0.107, 0.0816,
+    0.061, 0.04458, 0.032, 0.0232, 0.017, 0.01192,
+    0.00821, 0.005723, 0.004102, 0.002929, 0.002091, 0.001484,
+    0.001047, 0.00074, 0.00052, 0.0003611, 0.0002492, 0.0001719,
+    0.00012, 0.0000848, 0.00006, 0.0000424, 0.00003, 0.0000212,
+    0.00001499, 0.0000106, 0.0000074657, 0.0000052578, 0.0000037029, 0.0000026078,
+    0.0000018366, 0.0000012934, 0.00000091093, 0.00000064153, 0.00000045181};
+
+/// Colour matching function z-bar(lambda).
+inline constexpr double z_bar[count] = {
+    0.0006061, 0.001086, 0.001946, 0.003486, 0.006450001, 0.01054999,
+    0.02005001, 0.03621, 0.06785001, 0.1102, 0.2074, 0.3713,
+    0.6456, 1.0390501, 1.3856, 1.62296, 1.74706, 1.7826,
+    1.77211, 1.7441, 1.6692, 1.5281, 1.28764, 1.0419,
+    0.8129501, 0.6162, 0.46518, 0.3533, 0.272, 0.2123,
+    0.1582, 0.1117, 0.07824999, 0.05725001, 0.04216, 0.02984,
+    0.0203, 0.0134, 0.008749999, 0.005749999, 0.0039, 0.002749999,
+    0.0021, 0.0018, 0.001650001, 0.0014, 0.0011, 0.001,
+    0.0008, 0.0006, 0.00034, 0.00024, 0.00019, 0.0001,
+    0.00004999999, 0.00003, 0.00002, 0.00001, 0.0, 0.0,
+    0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+    0.0, 0.0, 0.0, 0.0, 0.0};
+
+/// Relative spectral power of illuminant D65, 1 at 560 nm.
+inline constexpr double d65[count] = {
+    0.466383, 0.493637, 0.520891, 0.510323, 0.499755, 0.523118,
+    0.546482, 0.687015, 0.827549, 0.871204, 0.91486, 0.924589,
+    0.934318, 0.90057, 0.866823, 0.957736, 1.04865, 1.10936,
+    1.17008, 1.1741, 1.17812, 1.16336, 1.14861, 1.15392,
+    1.15923, 1.12367, 1.08811, 1.09082, 1.09354, 1.08578,
+    1.07802, 1.06296, 1.0479, 1.06239, 1.07689, 1.06047,
+    1.04405, 1.04225, 1.04046, 1.02023, 1.0, 0.981671,
+    0.963342, 0.960611, 0.95788, 0.922368, 0.886856, 0.893459,
+    0.900062, 0.898026, 0.895991, 0.886489, 0.876987, 0.854936,
+    0.832886, 0.834939, 0.836992, 0.81863, 0.800268, 0.801207,
+    0.802146, 0.812462, 0.822778, 0.80281, 0.782842, 0.740027,
+    0.697213, 0.706652, 0.716091, 0.72979, 0.74349, 0.679765,
+    0.61604, 0.657448, 0.698856, 0.724863, 0.75087, 0.693398,
+    0.635927, 0.550054, 0.464182, 0.566118, 0.668054, 0.650941,
+    0.633828, 0.638434, 0.64304, 0.618779, 0.594519, 0.557054,
+    0.51959, 0.546998, 0.574406, 0.588765, 0.603125};
+
+} // namespace prism::cie::tables
+
+// ---- prism/spectrum/cie.hpp ----
+// From spectra to linear sRGB: the CIE 1931 observer, illuminant D65 and the sRGB
+// primaries, so that a reflectance known per wavelength (a metal's, a thin film's)
+// becomes the RGB triple the renderer multiplies by, by integration over the visible
+// spectrum rather than by sampling three wavelengths.
+//
+// A reflectance R(lambda) seen under D65 has tristimulus values
+//   X = sum R x-bar D65 / sum y-bar D65   (likewise Y, Z; 5 nm steps, as CIE 015 sums)
+// and linear sRGB M X, with M the XYZ -> sRGB matrix derived below from the primaries
+// and white point of IEC 61966-2-1. A perfect white (R = 1) should give (1, 1, 1); the
+// tabulated D65 lands within 2e-3 of the rounded white point sRGB is defined with, so
+// the result is divided by the white's RGB (a von Kries correction of that size): a
+// reflectance of 1 is exactly white and a grey one exactly grey.
+
+
+#include <array>
+
+namespace prism::cie {
+
+/// The wavelengths the tables cover, in nanometres.
+inline constexpr double lambda_min = tables::first_nm;
+inline constexpr double lambda_max = tables::last_nm;
+
+/// The wavelength of table entry i, in nanometres.
+[[nodiscard]] constexpr double wavelength(int i) noexcept { return tables::first_nm + i * tables::step_nm; }
+
+/// A 3x3 matrix in row-major order, usable in constant expressions.
+using Matrix3 = std::array<std::array<double, 3>, 3>;
+
+[[nodiscard]] constexpr std::array<double, 3> multiply(const Matrix3& m, const std::array<double, 3>& v) noexcept
+{
+    return {m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2], m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
+            m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2]};
+}
+
+[[nodiscard]] constexpr Matrix3 inverse(const Matrix3& m) noexcept
+{
+    const double c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1];
+    const double c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2];
+    const double c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
+    const double det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
+    return {{{c00 / det, (m[0][2] * m[2][1] - m[0][1] * m[2][2]) / det, (m[0][1] * m[1][2] - m[0][2] * m[1][1]) / det},
+             {c01 / det, (m[0][0] * m[2][2] - m[0][2] * m[2][0]) / det, (m[0][2] * m[1][0] - m[0][0] * m[1][2]) / det},
+             {c02 / det, (m[0][1] * m[2][0] - m[0][0] * m[2][1]) / det, (m[0][0] * m[1][1] - m[0][1] * m[1][0]) / det}}};
+}
+
+/// XYZ (Y = 1) of the colour with chromaticity (x, y).
+[[nodiscard]] constexpr std::array<double, 3> xyz_of_chromaticity(double x, double y) noexcept
+{
+    return {x / y, 1.0, (1.0 - x - y) / y};
+}
+
+/// The XYZ -> linear sRGB matrix, derived from the sRGB primaries R (0.64, 0.33),
+/// G (0.30, 0.60), B (0.15, 0.06) and the D65 white point (0.3127, 0.3290): the
+/// columns of sRGB -> XYZ are the primaries scaled so that they sum to the white.
+[[nodiscard]] constexpr Matrix3 xyz_to_linear_srgb_matrix() noexcept
+{
+    const auto r = xyz_of_chromaticity(0.64, 0.33), g = xyz_of_chromaticity(0.30, 0.60), b = xyz_of_chromaticity(0.15, 0.06);
+    const Matrix3 primaries{{{r[0], g[0], b[0]}, {r[1], g[1], b[1]}, {r[2], g[2], b[2]}}};
+    const auto scale = multiply(inverse(primaries), xyz_of_chromaticity(0.3127, 0.3290));
+    Matrix3 to_xyz{};
+    for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col) to_xyz[row][col] = primaries[row][col] * scale[col];
+    return inverse(to_xyz);
+}
+
+inline constexpr Matrix3 xyz_to_linear_srgb = xyz_to_linear_srgb_matrix();
+
+namespace detail {
+
+/// Sum over the table of f(i) times D65 times each matching function, divided by the
+/// sum of y-bar D65: the XYZ of the reflectance f under D65, with Y = 1 for f = 1.
+template <class F>
+[[nodiscard]] constexpr std::array<double, 3> xyz_under_d65(F&& f)
+{
+    std::array<double, 3> xyz{};
+    double norm = 0;
+    for (int i = 0; i < tables::count; ++i) {
+        const double w = tables::d65[i], value = f(i);
+        xyz[0] += value * tables::x_bar[i] * w;
+        xyz[1] += value * tables::y_bar[i] * w;
+        xyz[2] += value * tables::z_bar[i] * w;
+        norm += tables::y_bar[i] * w;
+    }
+    for (double& c : xyz) c /= norm;
+    return xyz;
+}
+
+/// The linear sRGB of a perfect white reflector under the tabulated D65.
+inline constexpr std::array<double, 3> white_rgb = multiply(xyz_to_linear_srgb, xyz_under_d65([](int) { return 1.0; }));
+
+} // namespace detail
+
+/// The linear sRGB of a reflectance spectrum: `reflectance(lambda_nm)` is called at
+/// every tabulated wavelength, 360 to 830 nm in 5 nm steps, and integrated under D65
+/// (see the top of this file). A reflectance of 1 gives exactly (1, 1, 1).
+template <Scalar T, class F>
+[[nodiscard]] constexpr Rgb<T> reflectance_to_rgb(F&& reflectance)
+{
+    const auto rgb = multiply(xyz_to_linear_srgb, detail::xyz_under_d65([&](int i) { return double(reflectance(wavelength(i))); }));
+    return {T(rgb[0] / detail::white_rgb[0]), T(rgb[1] / detail::white_rgb[1]), T(rgb[2] / detail::white_rgb[2])};
+}
+
+/// The linear sRGB of a reflectance spectrum (values in [0, 1]) clipped to [0, 1] per
+/// channel: a colour outside the sRGB gamut (gold's red comes to 1.022, a saturated
+/// thin-film green has a negative red) would otherwise make a surface return more light
+/// than reaches it in one channel, or a negative amount. The clip is the gamut mapping
+/// of every reflectance prism reduces from a spectrum; reflectance_to_rgb is exact.
+template <Scalar T, class F>
+[[nodiscard]] constexpr Rgb<T> reflectance_to_rgb_in_gamut(F&& reflectance)
+{
+    const Rgb<T> rgb = reflectance_to_rgb<T>(reflectance);
+    return {clamp(rgb.x, T(0), T(1)), clamp(rgb.y, T(0), T(1)), clamp(rgb.z, T(0), T(1))};
+}
+
+/// The XYZ of a reflectance spectrum under D65 (Y = 1 for a perfect white), for tests
+/// and for colours outside sRGB.
+template <class F>
+[[nodiscard]] constexpr std::array<double, 3> reflectance_to_xyz(F&& reflectance)
+{
+    return detail::xyz_under_d65([&](int i) { return double(reflectance(wavelength(i))); });
+}
+
+} // namespace prism::cie
+
+// ---- prism/spectrum/metals.hpp ----
+// Measured complex refractive indices n + i k of metals, for Fresnel reflectance per
+// wavelength (optics/fresnel.hpp: fresnel_conductor) and, integrated against the CIE
+// observer, per RGB channel (material/conductor.hpp: MeasuredConductor).
+//
+// The data are measurements of evaporated films (P. B. Johnson and R. W. Christy,
+// Phys. Rev. B 6, 4370 (1972), for Au, Ag and Cu; Palik's Handbook of Optical Constants
+// of Solids for Al), as resampled to photon energies 1.40 to 4.15 eV in 0.05 eV steps
+// (886 to 299 nm) in the metal tables pbrt-v4 ships (Apache-2.0). prism stores them in
+// order of increasing photon energy and interpolates linearly in photon energy, the
+// variable they were measured on.
+
+
+#include <array>
+#include <complex>
+
+namespace prism::metals {
+
+/// Photon energy (eV) times wavelength (nm): h c.
+inline constexpr double hc_ev_nm = 1239.84193;
+
+/// A metal's index n + i k at photon energies 1.40 + 0.05 i eV, i = 0 .. 55 (so in
+/// order of increasing energy, decreasing wavelength).
+struct MeasuredIndex {
+    static constexpr int count = 56;
+    static constexpr double lowest_ev = 1.40; ///< entry 0: 885.6 nm
+    static constexpr double step_ev = 0.05;   ///< entry count - 1: 4.15 eV, 298.8 nm
+
+    std::array<double, count> eta; ///< real part n, entry i at energy lowest_ev + i step_ev
+    std::array<double, count> k;   ///< extinction coefficient
+
+    /// The wavelength of entry i, in nanometres.
+    [[nodiscard]] static constexpr double wavelength(int i) noexcept { return hc_ev_nm / (lowest_ev + step_ev * i); }
+
+    /// The index at `lambda_nm`, linear in photon energy between entries; beyond the
+    /// table (below 298.8 or above 885.6 nm, outside the visible) the end entry.
+    [[nodiscard]] constexpr std::complex<double> at(double lambda_nm) const noexcept
+    {
+        const double u = (hc_ev_nm / lambda_nm - lowest_ev) / step_ev;
+        if (!(u > 0)) return {eta[0], k[0]};
+        if (u >= count - 1) return {eta[count - 1], k[count - 1]};
+        const int i = int(u);
+        const double f = u - i;
+        return {eta[i] + f * (eta[i + 1] - eta[i]), k[i] + f * (k[i + 1] - k[i])};
+    }
+};
+
+/// Gold (Au).
+inline constexpr MeasuredIndex gold{
+    .eta = {0.21, 0.198125, 0.188, 0.181375, 0.176, 0.1695, 0.164, 0.160875,
+      0.16, 0.161, 0.166, 0.17775, 0.194, 0.212375, 0.236, 0.267625,
+      0.306, 0.3455, 0.402, 0.49175, 0.608, 0.7545, 0.916, 1.08675,
+      1.242, 1.345875, 1.426, 1.502125, 1.562, 1.59625, 1.616, 1.628,
+      1.636, 1.64725, 1.658, 1.666, 1.674, 1.68475, 1.696, 1.705875,
+      1.716, 1.727625, 1.74, 1.7525, 1.766, 1.782, 1.798, 1.812,
+      1.824, 1.83425, 1.84, 1.837125, 1.83, 1.822625, 1.812, 1.795},
+    .k = {5.88, 5.63125, 5.39, 5.125813, 4.86, 4.610188, 4.357, 4.087687,
+      3.8, 3.445812, 3.15, 3.07, 3.06, 3.015, 2.97, 2.940625,
+      2.88, 2.730625, 2.54, 2.32625, 2.12, 1.9565, 1.84, 1.797375,
+      1.796, 1.814625, 1.846, 1.875875, 1.904, 1.9245, 1.94, 1.951375,
+      1.958, 1.959375, 1.956, 1.94775, 1.936, 1.9225, 1.906, 1.883,
+      1.862, 1.852375, 1.848, 1.84525, 1.846, 1.85175, 1.86, 1.86825,
+      1.878, 1.891375, 1.904, 1.911375, 1.916, 1.918875, 1.92, 1.920375}};
+
+/// Silver (Ag).
+inline constexpr MeasuredIndex silver{
+    .eta = {0.163, 0.151938, 0.145, 0.142563, 0.143, 0.145875, 0.148, 0.144313,
+      0.14, 0.140063, 0.14, 0.136125, 0.131, 0.1255, 0.121, 0.119313,
+      0.12, 0.124375, 0.129, 0.130063, 0.13, 0.129938, 0.13, 0.13025,
+      0.132, 0.137313, 0.144, 0.151063, 0.157, 0.1585, 0.16, 0.166688,
+      0.173, 0.172625, 0.173, 0.182, 0.192, 0.198063, 0.2, 0.192063,
+      0.186, 0.194813, 0.209, 0.221438, 0.238, 0.253313, 0.294, 0.388125,
+      0.526, 0.719062, 0.932, 1.142062, 1.323, 1.4325, 1.496, 1.519},
+    .k = {5.95, 5.720624, 5.5, 5.28875, 5.09, 4.908125, 4.74, 4.58625,
+      4.44, 4.293125, 4.15, 4.010625, 3.88, 3.76625, 3.66, 3.55375,
+      3.45, 3.348125, 3.25, 3.159375, 3.07, 2.97375, 2.88, 2.798125,
+      2.72, 2.64, 2.56, 2.47875, 2.4, 2.329375, 2.26, 2.18625,
+      2.11, 2.029375, 1.95, 1.87875, 1.81, 1.735, 1.67, 1.641875,
+      1.61, 1.53375, 1.44, 1.34525, 1.24, 1.120687, 0.986, 0.818563,
+      0.663, 0.554375, 0.504, 0.550875, 0.647, 0.761063, 0.882, 1.08}};
+
+/// Copper (Cu).
+inline constexpr MeasuredIndex copper{
+    .eta = {0.3, 0.28, 0.26, 0.254188, 0.25, 0.2365, 0.223, 0.21625,
+      0.213, 0.20925, 0.214, 0.230813, 0.272, 0.35125, 0.468, 0.645875,
+      0.826, 0.950375, 1.04, 1.092437, 1.12, 1.131562, 1.135, 1.142812,
+      1.15, 1.155312, 1.16, 1.165312, 1.17, 1.172812, 1.175, 1.178125,
+      1.18, 1.1775, 1.175, 1.174375, 1.18, 1.2, 1.225, 1.249062,
+      1.27, 1.281563, 1.29, 1.300313, 1.31, 1.317812, 1.325, 1.334375,
+      1.34, 1.3325, 1.325, 1.329063, 1.34, 1.358438, 1.38, 1.400313},
+    .k = {5.717, 5.485625, 5.26, 5.034125, 4.817, 4.619563, 4.43, 4.239563,
+      4.05, 3.863125, 3.67, 3.458187, 3.24, 3.01075, 2.809, 2.678062,
+      2.599, 2.5765, 2.583, 2.595562, 2.605, 2.589625, 2.564, 2.535875,
+      2.504, 2.469187, 2.433, 2.397625, 2.362, 2.326, 2.289, 2.249938,
+      2.21, 2.160063, 2.13, 2.177188, 2.21, 2.121562, 2.015, 1.972438,
+      1.95, 1.931688, 1.916, 1.89425, 1.872, 1.85175, 1.834, 1.822125,
+      1.81, 1.791625, 1.77, 1.744563, 1.72, 1.703313, 1.687, 1.662125}};
+
+/// Aluminium (Al).
+inline constexpr MeasuredIndex aluminium{
+    .eta = {2.24, 2.58, 2.74, 2.8, 2.63, 2.41, 2.14, 1.91,
+      1.74, 1.6, 1.49, 1.39, 1.3, 1.22, 1.15, 1.08,
+      1.02, 0.963, 0.912, 0.867, 0.826, 0.789, 0.755, 0.72375,
+      0.695, 0.668625, 0.644, 0.620313, 0.598, 0.577313, 0.558, 0.540063,
+      0.523, 0.506188, 0.49, 0.474688, 0.46, 0.445688, 0.432, 0.419125,
+      0.407, 0.39575, 0.385, 0.374375, 0.364, 0.353813, 0.344, 0.33475,
+      0.326, 0.317875, 0.31, 0.301875, 0.294, 0.286813, 0.28, 0.273375},
+    .k = {8.21, 8.21, 8.31, 8.45, 8.6, 8.62, 8.57, 8.39,
+      8.21, 8.01, 7.82, 7.65, 7.48, 7.31, 7.15, 7.0,
+      6.85, 6.7, 6.55, 6.42, 6.28, 6.15, 6.03, 5.915,
+      5.8, 5.69, 5.58, 5.48, 5.38, 5.29, 5.2, 5.10875,
+      5.02, 4.938125, 4.86, 4.784375, 4.71, 4.63375, 4.56, 4.49375,
+      4.43, 4.365, 4.3, 4.23375, 4.17, 4.11375, 4.06, 4.005,
+      3.95, 3.894375, 3.84, 3.789375, 3.74, 3.689375, 3.64, 3.59375}};
+
+} // namespace prism::metals
+
 // ---- prism/material/conductor.hpp ----
 // Conductor: a metal mirror, with a constant kr or the complex-index Fresnel equations.
 
 
+#include <array>
 #include <complex>
 
 namespace prism {
@@ -4512,7 +4913,56 @@ struct ComplexIor {
     }
 };
 
+/// A metal with a measured spectral index (spectrum/metals.hpp): the exact Fresnel
+/// reflectance at each wavelength, integrated against the CIE observer under D65 into
+/// linear sRGB (not three wavelengths sampled) and clipped to the gamut (cie.hpp),
+/// tabulated once at construction at `table_size` incident cosines and interpolated
+/// linearly. `spectral_reflectance` gives the exact value at one wavelength, for rays
+/// that carry one.
+template <Scalar T = float>
+class MeasuredConductor {
+public:
+    static constexpr int table_size = 129;
+
+    explicit MeasuredConductor(const metals::MeasuredIndex& index) : index_(&index)
+    {
+        for (int i = 0; i < table_size; ++i) table_[std::size_t(i)] = integrated_reflectance(T(i) / T(table_size - 1));
+    }
+
+    /// The RGB reflectance at the incident cosine cos_i, from the table.
+    [[nodiscard]] constexpr Rgb<T> reflectance(T cos_i) const noexcept
+    {
+        const T u = clamp(cos_i, T(0), T(1)) * T(table_size - 1);
+        const int i = std::min(int(u), table_size - 2);
+        const T f = u - T(i);
+        return table_[std::size_t(i)] + (table_[std::size_t(i + 1)] - table_[std::size_t(i)]) * f;
+    }
+
+    /// The RGB reflectance integrated over the spectrum at cos_i, in gamut (what the table holds).
+    [[nodiscard]] Rgb<T> integrated_reflectance(T cos_i) const
+    {
+        return cie::reflectance_to_rgb_in_gamut<T>([&](double lambda) { return spectral_reflectance(double(cos_i), lambda); });
+    }
+
+    /// The exact unpolarised reflectance at one wavelength (nanometres).
+    template <Scalar U>
+    [[nodiscard]] U spectral_reflectance(U cos_i, U lambda_nm) const noexcept
+    {
+        const std::complex<double> n = index_->at(double(lambda_nm));
+        return U(fresnel_conductor(double(cos_i), n));
+    }
+
+    [[nodiscard]] constexpr const metals::MeasuredIndex& index() const noexcept { return *index_; }
+    constexpr void validate() const {}
+
+private:
+    const metals::MeasuredIndex* index_; // static data of spectrum/metals.hpp, or the user's
+    std::array<Rgb<T>, table_size> table_{};
+};
+
 /// A perfect specular conductor: mirror reflection weighted by Fresnel(cos_i), no diffuse.
+/// A Fresnel policy with `reflectance(SpecularQuery)` (a film of textured thickness)
+/// makes the conductor's reflectance vary over the surface.
 template <Scalar T = float, class Fresnel = ConstantKr<T>>
 struct Conductor {
     using scalar_type = T;
@@ -4522,7 +4972,16 @@ struct Conductor {
 
     Fresnel fresnel{};
 
-    [[nodiscard]] Rgb<T> reflectance(T cos_i) const noexcept { return fresnel.reflectance(cos_i); }
+    [[nodiscard]] Rgb<T> reflectance(T cos_i) const noexcept
+        requires requires(const Fresnel& f, T c) { f.reflectance(c); }
+    {
+        return fresnel.reflectance(cos_i);
+    }
+    [[nodiscard]] Rgb<T> reflectance(const SpecularQuery<T>& query) const noexcept
+        requires requires(const Fresnel& f, const SpecularQuery<T>& q) { f.reflectance(q); }
+    {
+        return fresnel.reflectance(query);
+    }
     constexpr void validate() const { fresnel.validate(); }
 };
 
@@ -4530,11 +4989,18 @@ struct Conductor {
 template <Scalar T = float>
 using Mirror = Conductor<T, ConstantKr<T>>;
 
-/// A metal with a measured complex index.
+/// A metal with a complex index per RGB channel.
 template <Scalar T = float>
 using Metal = Conductor<T, ComplexIor<T>>;
 
-static_assert(Material<Mirror<float>> && Material<Metal<double>>);
+/// A metal with a measured spectral index, e.g. measured_metal<float>(metals::gold).
+template <Scalar T = float>
+[[nodiscard]] Conductor<T, MeasuredConductor<T>> measured_metal(const metals::MeasuredIndex& index)
+{
+    return {MeasuredConductor<T>(index)};
+}
+
+static_assert(Material<Mirror<float>> && Material<Metal<double>> && Material<Conductor<float, MeasuredConductor<float>>>);
 
 } // namespace prism
 
@@ -4750,6 +5216,351 @@ struct Diffuse {
 };
 
 static_assert(Material<Diffuse<float>>);
+
+} // namespace prism
+
+// ---- prism/optics/thin_film.hpp ----
+// Thin-film interference: the exact reflectance and transmittance of one film between
+// two media, by Airy's sum of the multiply reflected amplitudes (Born & Wolf,
+// "Principles of Optics", section 7.6.1; Heavens, "Optical Properties of Thin Solid
+// Films"), per polarisation and per wavelength.
+//
+// Medium 0 (incident, real index n0) | film 1 (index n1, thickness d) | substrate 2
+// (complex index n2 = n + i k: a dielectric, or a metal). With the cosines c_j of the
+// angles in each medium (n0 sin0 = n_j sin_j, the branch with Im(n_j c_j) >= 0: a wave
+// that decays as it goes in) and the interface amplitudes
+//   r_ij^s = (n_i c_i - n_j c_j) / (n_i c_i + n_j c_j)   t_ij^s = 2 n_i c_i / (n_i c_i + n_j c_j)
+//   r_ij^p = (n_j c_i - n_i c_j) / (n_j c_i + n_i c_j)   t_ij^p = 2 n_i c_i / (n_j c_i + n_i c_j)
+// the film's phase thickness beta = 2 pi n1 c1 d / lambda sums the geometric series of
+// its internal reflections to
+//   r = (r01 + r12 e^{2 i beta}) / (1 + r01 r12 e^{2 i beta})
+//   t = t01 t12 e^{i beta} / (1 + r01 r12 e^{2 i beta})
+// and R = |r|^2, T = Re(n2 c2) / (n0 c0) |t|^2 (s; p likewise in the magnetic field).
+
+
+#include <complex>
+
+namespace prism {
+
+/// One film over a substrate, seen from an incident medium; thickness in nanometres.
+template <Scalar T>
+struct FilmStack {
+    T incident = T(1);                   ///< n0, real
+    std::complex<T> film{T(1.33)};       ///< n1 (a non-absorbing film has k = 0)
+    T thickness_nm = T(0);               ///< d
+    std::complex<T> substrate{T(1)};     ///< n2
+};
+
+/// Reflectance and transmittance by polarisation; the unpolarised values are their means.
+template <Scalar T>
+struct FilmResponse {
+    PolarisedReflectance<T> reflectance;
+    PolarisedReflectance<T> transmittance;
+
+    [[nodiscard]] constexpr T reflected() const noexcept { return T(0.5) * (reflectance.s + reflectance.p); }
+    [[nodiscard]] constexpr T transmitted() const noexcept { return T(0.5) * (transmittance.s + transmittance.p); }
+};
+
+namespace detail {
+
+/// n_j c_j in medium j for the invariant n0 sin0, on the branch whose wave decays
+/// going in (Im >= 0); c_j itself is n_j c_j / n_j.
+template <Scalar T>
+[[nodiscard]] std::complex<T> normal_wavenumber(std::complex<T> n, T n0_sin0) noexcept
+{
+    std::complex<T> nc = std::sqrt(n * n - std::complex<T>(n0_sin0 * n0_sin0));
+    if (nc.imag() < T(0) || (nc.imag() == T(0) && nc.real() < T(0))) nc = -nc;
+    return nc;
+}
+
+} // namespace detail
+
+/// The film's response at the incident cosine cos0 (in medium 0) and wavelength
+/// lambda_nm (in vacuum, nanometres): Airy's formula above.
+template <Scalar T>
+[[nodiscard]] FilmResponse<T> thin_film(const FilmStack<T>& stack, T cos0, T lambda_nm) noexcept
+{
+    using C = std::complex<T>;
+    cos0 = clamp(cos0, T(0), T(1));
+    const C n0(stack.incident), n1 = stack.film, n2 = stack.substrate;
+    const T invariant = stack.incident * std::sqrt(T(1) - cos0 * cos0);
+    // q_j = n_j c_j, the normal component of each medium's wave vector over k0.
+    const C q0(stack.incident * cos0), q1 = detail::normal_wavenumber(n1, invariant), q2 = detail::normal_wavenumber(n2, invariant);
+    // s: r = (q_i - q_j) / (q_i + q_j); p, in the magnetic field with u_j = q_j / n_j^2 = c_j / n_j:
+    // r = (u_i - u_j) / (u_i + u_j), which is (n_j c_i - n_i c_j) / (n_j c_i + n_i c_j).
+    const auto interface = [](C a, C b) { return (a - b) / (a + b); };
+    const auto transmit = [](C a, C b) { return T(2) * a / (a + b); };
+    const C u0 = q0 / (n0 * n0), u1 = q1 / (n1 * n1), u2 = q2 / (n2 * n2);
+    const C phase = std::exp(C(0, T(2) * pi<T> * stack.thickness_nm / lambda_nm) * q1); // e^{i beta}
+    const C phase2 = phase * phase;
+
+    const C r01s = interface(q0, q1), r12s = interface(q1, q2);
+    const C r01p = interface(u0, u1), r12p = interface(u1, u2);
+    const C den_s = C(1) + r01s * r12s * phase2, den_p = C(1) + r01p * r12p * phase2;
+    const C rs = (r01s + r12s * phase2) / den_s, rp = (r01p + r12p * phase2) / den_p;
+
+    FilmResponse<T> out{{std::norm(rs), std::norm(rp)}, {T(0), T(0)}};
+    if (q0.real() > T(0)) {
+        // The normal energy flux is Re(q) |E|^2 for s and Re(u) |H|^2 for p, whose
+        // interfaces match (E, q E) and (H, u H) alike: t = 2 a / (a + b) per interface.
+        const C ts = transmit(q0, q1) * transmit(q1, q2) * phase / den_s;
+        const C tp = transmit(u0, u1) * transmit(u1, u2) * phase / den_p;
+        out.transmittance.s = q2.real() / q0.real() * std::norm(ts);
+        out.transmittance.p = u2.real() / u0.real() * std::norm(tp);
+    }
+    return out;
+}
+
+} // namespace prism
+
+// ---- prism/material/thin_film.hpp ----
+// Thin-film iridescence: a soap film, an oil slick, an anodised or tempered metal.
+//
+// A film of real index n_f and thickness d (which may vary over the surface: a soap
+// bubble drains thinner at the top) coats a substrate. Its reflectance at each
+// wavelength is Airy's exact sum (optics/thin_film.hpp); integrated against the CIE
+// observer under D65 it becomes the RGB the renderer uses (spectrum/cie.hpp). That
+// integral costs 95 Airy evaluations, far too many per ray, so each material tabulates
+// it once at construction over the incident cosine and the thickness, and a ray reads
+// the table bilinearly. bench/thin_film.cpp charts the table's error and speed against
+// the exact integral; FilmTable::Config sets its resolution.
+//
+//   ThinFilmConductor  a Fresnel policy for Conductor: a film over a metal
+//   CoatedDielectric   a dielectric interface with a film on its outside: a soap bubble
+//                      (ior 1: air on both sides), oil on water
+
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <vector>
+
+namespace prism {
+
+/// A film thickness that is the same everywhere, in nanometres.
+template <Scalar T = float>
+struct UniformThickness {
+    using scalar_type = T;
+    T nm = T(300);
+
+    [[nodiscard]] constexpr T at(const Vec3<T>&) const noexcept { return nm; }
+    [[nodiscard]] constexpr T lowest_nm() const noexcept { return nm; }
+    [[nodiscard]] constexpr T highest_nm() const noexcept { return nm; }
+    constexpr void validate() const { detail::require_non_negative("UniformThickness nm", nm); }
+};
+
+/// A film thickness that varies over the surface: `thickness(p)` in nanometres, which
+/// must stay within [lowest_nm, highest_nm] (the range the tables cover; a value
+/// outside reads the nearest edge of the table, and is caught by PRISM_ASSERT).
+template <Scalar T, class F>
+    requires std::is_invocable_r_v<T, const F&, const Vec3<T>&>
+struct ThicknessTexture {
+    using scalar_type = T;
+    F thickness;
+    T lowest = T(0);
+    T highest = T(1000);
+
+    [[nodiscard]] T at(const Vec3<T>& p) const noexcept
+    {
+        const T d = thickness(p);
+        PRISM_ASSERT(d >= lowest && d <= highest);
+        return d;
+    }
+    [[nodiscard]] constexpr T lowest_nm() const noexcept { return lowest; }
+    [[nodiscard]] constexpr T highest_nm() const noexcept { return highest; }
+    constexpr void validate() const
+    {
+        detail::require_non_negative("ThicknessTexture lowest", lowest);
+        detail::require_finite("ThicknessTexture highest", highest);
+        if (!(highest >= lowest)) detail::throw_invalid("ThicknessTexture highest must be >= lowest (", lowest, "), got ", highest);
+    }
+};
+
+/// A film thickness: `at(p)` within [lowest_nm(), highest_nm()], and validate().
+template <class X>
+concept FilmThickness = requires(const X& x, const Vec3<typename X::scalar_type>& p) {
+    { x.at(p) } -> std::same_as<typename X::scalar_type>;
+    { x.lowest_nm() } -> std::same_as<typename X::scalar_type>;
+    { x.highest_nm() } -> std::same_as<typename X::scalar_type>;
+    x.validate();
+};
+
+/// The RGB reflectance of one film stack tabulated over the incident cosine (uniform in
+/// sqrt(cos_i), which packs entries towards grazing incidence, where reflectance climbs
+/// steeply to 1) and the thickness (uniform over the texture's range), read bilinearly.
+template <Scalar T>
+class FilmTable {
+public:
+    struct Config {
+        int cosines = 65;           ///< entries over sqrt(cos_i) in [0, 1]
+        T thickness_step_nm = T(2); ///< spacing of the entries over the thickness
+    };
+
+    FilmTable() = default;
+
+    /// Tabulate `spectral(cos_i, lambda_nm, d)`, a film's reflectance at one
+    /// wavelength, integrated over the spectrum, at thicknesses d in [lowest_nm, highest_nm].
+    template <class Spectral>
+    FilmTable(const Spectral& spectral, T lowest_nm, T highest_nm, Config config) : lowest_(lowest_nm)
+    {
+        if (config.cosines < 2) detail::throw_invalid("FilmTable cosines must be >= 2, got ", config.cosines);
+        detail::require_positive("FilmTable thickness_step_nm", config.thickness_step_nm);
+        cosines_ = config.cosines;
+        thicknesses_ = 1 + int(std::ceil((highest_nm - lowest_nm) / config.thickness_step_nm));
+        step_ = thicknesses_ > 1 ? (highest_nm - lowest_nm) / T(thicknesses_ - 1) : T(1);
+        table_.resize(std::size_t(cosines_) * std::size_t(thicknesses_));
+        for (int j = 0; j < thicknesses_; ++j)
+            for (int i = 0; i < cosines_; ++i) {
+                const T root = T(i) / T(cosines_ - 1);
+                table_[index(i, j)] = integrate(spectral, root * root, lowest_ + step_ * T(j));
+            }
+    }
+
+    /// A film's reflectance integrated over the spectrum at cos_i and thickness d,
+    /// computed exactly (95 wavelengths): what the table holds at its entries.
+    template <class Spectral>
+    [[nodiscard]] static Rgb<T> integrate(const Spectral& spectral, T cos_i, T d)
+    {
+        return cie::reflectance_to_rgb_in_gamut<T>([&](double lambda) { return spectral(double(cos_i), lambda, double(d)); });
+    }
+
+    /// The tabulated reflectance at cos_i and thickness d (bilinear).
+    [[nodiscard]] Rgb<T> operator()(T cos_i, T d) const noexcept
+    {
+        const T u = std::sqrt(clamp(cos_i, T(0), T(1))) * T(cosines_ - 1);
+        const int i = std::min(int(u), cosines_ - 2);
+        const T fu = u - T(i);
+        const T v = thicknesses_ > 1 ? clamp((d - lowest_) / step_, T(0), T(thicknesses_ - 1)) : T(0);
+        const int j = std::min(int(v), std::max(thicknesses_ - 2, 0));
+        const T fv = v - T(j);
+        const int j1 = std::min(j + 1, thicknesses_ - 1);
+        const Rgb<T> a = table_[index(i, j)] + (table_[index(i + 1, j)] - table_[index(i, j)]) * fu;
+        const Rgb<T> b = table_[index(i, j1)] + (table_[index(i + 1, j1)] - table_[index(i, j1)]) * fu;
+        return a + (b - a) * fv;
+    }
+
+    [[nodiscard]] std::size_t entries() const noexcept { return table_.size(); }
+
+private:
+    [[nodiscard]] std::size_t index(int i, int j) const noexcept { return std::size_t(j) * std::size_t(cosines_) + std::size_t(i); }
+
+    T lowest_ = T(0);
+    T step_ = T(1);
+    int cosines_ = 0;
+    int thicknesses_ = 0;
+    std::vector<Rgb<T>> table_;
+};
+
+/// A film of real index `film_index` and thickness `thickness` over a metal (a measured
+/// spectral index, or one complex index for every wavelength): a Fresnel policy for
+/// Conductor, e.g. anodised titanium or tempered steel's colours.
+template <Scalar T = float, FilmThickness Thickness = UniformThickness<T>>
+class ThinFilmConductor {
+public:
+    ThinFilmConductor(T film_index, Thickness thickness, const metals::MeasuredIndex& substrate,
+                      typename FilmTable<T>::Config config = {})
+        : ThinFilmConductor(film_index, thickness, &substrate, {}, config)
+    {
+    }
+
+    ThinFilmConductor(T film_index, Thickness thickness, std::complex<double> substrate, typename FilmTable<T>::Config config = {})
+        : ThinFilmConductor(film_index, thickness, nullptr, substrate, config)
+    {
+    }
+
+    /// The tabulated reflectance where the query's point is.
+    [[nodiscard]] Rgb<T> reflectance(const SpecularQuery<T>& q) const noexcept { return table_(q.cos_i, thickness_.at(q.point)); }
+
+    [[nodiscard]] const FilmTable<T>& table() const noexcept { return table_; }
+    constexpr void validate() const {} // checked at construction
+
+    /// The exact reflectance at one wavelength, for rays that carry one.
+    [[nodiscard]] double spectral_reflectance(double cos_i, double lambda_nm, double d) const noexcept
+    {
+        return thin_film(FilmStack<double>{1.0, film_index_, d, substrate(lambda_nm)}, cos_i, lambda_nm).reflected();
+    }
+
+private:
+    ThinFilmConductor(T film_index, Thickness thickness, const metals::MeasuredIndex* measured, std::complex<double> constant,
+                      typename FilmTable<T>::Config config)
+        : film_index_((detail::require_positive("ThinFilmConductor film_index", film_index), double(film_index))),
+          thickness_((thickness.validate(), thickness)), measured_(measured), constant_(constant)
+    {
+        if (!measured) {
+            detail::require_positive("ThinFilmConductor substrate eta", constant.real());
+            detail::require_non_negative("ThinFilmConductor substrate k", constant.imag());
+        }
+        table_ = FilmTable<T>([&](double c, double l, double d) { return spectral_reflectance(c, l, d); }, thickness.lowest_nm(),
+                              thickness.highest_nm(), config);
+    }
+
+    [[nodiscard]] std::complex<double> substrate(double lambda_nm) const noexcept { return measured_ ? measured_->at(lambda_nm) : constant_; }
+
+    double film_index_;
+    Thickness thickness_;
+    const metals::MeasuredIndex* measured_; // static data of spectrum/metals.hpp, or the user's
+    std::complex<double> constant_;
+    FilmTable<T> table_;
+};
+
+/// A dielectric interface (index `ior` inside, 1 outside) coated on its outside with a
+/// film of real index `film_index` and thickness `thickness`: a soap bubble is a film
+/// with air on both sides (ior 1), an oil slick a film over water (ior 1.333). The film
+/// does not bend light (its faces are parallel), so rays refract as at the bare
+/// interface, but it splits them per channel: reflectance R from Airy's sum, tabulated
+/// for light arriving from outside, and transmittance 1 - R (the film absorbs nothing).
+template <Scalar T = float, FilmThickness Thickness = UniformThickness<T>, Medium Interior = Homogeneous<T>>
+    requires std::same_as<typename Thickness::scalar_type, T> && std::same_as<typename Interior::scalar_type, T>
+class CoatedDielectric {
+public:
+    using scalar_type = T;
+    static constexpr bool has_diffuse = false;
+    static constexpr bool reflects = true;
+    static constexpr bool transmits = true;
+
+    CoatedDielectric(T ior, T film_index, Thickness thickness, Interior interior = {}, typename FilmTable<T>::Config config = {})
+        : ior_((detail::require_positive("CoatedDielectric ior", ior), ior)),
+          film_index_((detail::require_positive("CoatedDielectric film_index", film_index), film_index)),
+          thickness_((thickness.validate(), thickness)), interior_((interior.validate(), interior))
+    {
+        from_outside_ = FilmTable<T>([&](double c, double l, double d) { return spectral_reflectance(c, l, d, true); },
+                                     thickness.lowest_nm(), thickness.highest_nm(), config);
+    }
+
+    // Dielectric capabilities (DeltaTransmission, InteriorMedium)
+
+    [[nodiscard]] constexpr T refractive_index() const noexcept { return ior_; }
+    /// The film's reflectance per channel. Light arriving from inside reflects as much
+    /// as light arriving from outside along its refracted path would: the stack absorbs
+    /// nothing, so its transmittance, and with it its reflectance, is reciprocal. One
+    /// table, read at the outside cosine, serves both sides, and never straddles the
+    /// critical angle.
+    [[nodiscard]] Rgb<T> fresnel(const SpecularQuery<T>& q) const noexcept
+    {
+        return from_outside_(q.entering ? q.cos_i : q.cos_t, thickness_.at(q.point));
+    }
+    [[nodiscard]] constexpr Rgb<T> reflection_tint() const noexcept { return Rgb<T>(T(1)); }
+    [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(T(1)); }
+    [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior_; }
+    constexpr void validate() const {} // checked at construction
+
+    /// The exact reflectance at one wavelength, arriving from outside or from inside.
+    [[nodiscard]] double spectral_reflectance(double cos_i, double lambda_nm, double d, bool from_outside) const noexcept
+    {
+        const double outside = 1.0, inside = double(ior_);
+        const FilmStack<double> stack{from_outside ? outside : inside, double(film_index_), d, from_outside ? inside : outside};
+        return thin_film(stack, cos_i, lambda_nm).reflected();
+    }
+
+private:
+    T ior_;
+    T film_index_;
+    Thickness thickness_;
+    Interior interior_;
+    FilmTable<T> from_outside_;
+};
+
+static_assert(Material<CoatedDielectric<float>>);
 
 } // namespace prism
 

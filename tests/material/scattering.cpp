@@ -17,21 +17,21 @@ TEST_CASE("the delta split: Fresnel times kr and kt for glass, all reflected pas
     const prism::Dielectric<double> glass{.ior = 1.5, .kr = 1, .kt = 0.9};
     const Vec3<double> n{0, 1, 0};
     // Normal incidence going in: R = ((1.5 - 1) / (1.5 + 1))^2 = 0.04.
-    const auto in = prism::delta_split(glass, Vec3<double>{0, -1, 0}, n, true);
+    const auto in = prism::delta_split(glass, Vec3<double>{0, -1, 0}, n, true, Vec3<double>{});
     CHECK(in.kr.x == Approx(0.04));
     CHECK(in.kt.x == Approx(0.9 * 0.96));
     REQUIRE(in.refracted);
     // 45 degrees going out of glass: past 41.8 degrees, total internal reflection.
-    const auto out = prism::delta_split(glass, prism::normalize(Vec3<double>{1, -1, 0}), n, false);
+    const auto out = prism::delta_split(glass, prism::normalize(Vec3<double>{1, -1, 0}), n, false, Vec3<double>{});
     CHECK_FALSE(out.refracted);
     CHECK(out.kr.x == 1);
     CHECK(out.kt.x == 0);
     // 30 degrees going in: Snell gives sin t = 0.5 / 1.5.
-    const auto oblique = prism::delta_split(glass, Vec3<double>{0.5, -std::sqrt(0.75), 0}, n, true);
+    const auto oblique = prism::delta_split(glass, Vec3<double>{0.5, -std::sqrt(0.75), 0}, n, true, Vec3<double>{});
     REQUIRE(oblique.refracted);
     CHECK(oblique.refracted->x == Approx(0.5 / 1.5));
     const prism::Mirror<double> mirror{{.kr = {0.9, 0.5, 0.1}}};
-    const auto m = prism::delta_split(mirror, prism::normalize(Vec3<double>{1, -1, 0}), n, true);
+    const auto m = prism::delta_split(mirror, prism::normalize(Vec3<double>{1, -1, 0}), n, true, Vec3<double>{});
     CHECK(m.kr.y == 0.5);
     CHECK_FALSE(m.refracted);
 }

@@ -130,7 +130,7 @@ private:
         }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
+                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point);
                 if (max_component(weight * split.kr) > config_.min_weight)
                     radiance += split.kr * trace(spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n)), depth + 1, weight * split.kr, rng);
                 if (split.refracted && max_component(weight * split.kt) > config_.min_weight)

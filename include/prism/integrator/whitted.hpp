@@ -75,7 +75,7 @@ private:
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
+                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point);
                 const Rgb<T> reflect_weight = weight * split.kr;
                 if (max_component(reflect_weight) > config_.min_weight) {
                     const Ray<T> reflected = spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n));

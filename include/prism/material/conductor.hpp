@@ -5,7 +5,10 @@
 #include <prism/core/check.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/optics/fresnel.hpp>
+#include <prism/spectrum/cie.hpp>
+#include <prism/spectrum/metals.hpp>
 
+#include <array>
 #include <complex>
 
 namespace prism {
@@ -41,7 +44,56 @@ struct ComplexIor {
     }
 };
 
+/// A metal with a measured spectral index (spectrum/metals.hpp): the exact Fresnel
+/// reflectance at each wavelength, integrated against the CIE observer under D65 into
+/// linear sRGB (not three wavelengths sampled) and clipped to the gamut (cie.hpp),
+/// tabulated once at construction at `table_size` incident cosines and interpolated
+/// linearly. `spectral_reflectance` gives the exact value at one wavelength, for rays
+/// that carry one.
+template <Scalar T = float>
+class MeasuredConductor {
+public:
+    static constexpr int table_size = 129;
+
+    explicit MeasuredConductor(const metals::MeasuredIndex& index) : index_(&index)
+    {
+        for (int i = 0; i < table_size; ++i) table_[std::size_t(i)] = integrated_reflectance(T(i) / T(table_size - 1));
+    }
+
+    /// The RGB reflectance at the incident cosine cos_i, from the table.
+    [[nodiscard]] constexpr Rgb<T> reflectance(T cos_i) const noexcept
+    {
+        const T u = clamp(cos_i, T(0), T(1)) * T(table_size - 1);
+        const int i = std::min(int(u), table_size - 2);
+        const T f = u - T(i);
+        return table_[std::size_t(i)] + (table_[std::size_t(i + 1)] - table_[std::size_t(i)]) * f;
+    }
+
+    /// The RGB reflectance integrated over the spectrum at cos_i, in gamut (what the table holds).
+    [[nodiscard]] Rgb<T> integrated_reflectance(T cos_i) const
+    {
+        return cie::reflectance_to_rgb_in_gamut<T>([&](double lambda) { return spectral_reflectance(double(cos_i), lambda); });
+    }
+
+    /// The exact unpolarised reflectance at one wavelength (nanometres).
+    template <Scalar U>
+    [[nodiscard]] U spectral_reflectance(U cos_i, U lambda_nm) const noexcept
+    {
+        const std::complex<double> n = index_->at(double(lambda_nm));
+        return U(fresnel_conductor(double(cos_i), n));
+    }
+
+    [[nodiscard]] constexpr const metals::MeasuredIndex& index() const noexcept { return *index_; }
+    constexpr void validate() const {}
+
+private:
+    const metals::MeasuredIndex* index_; // static data of spectrum/metals.hpp, or the user's
+    std::array<Rgb<T>, table_size> table_{};
+};
+
 /// A perfect specular conductor: mirror reflection weighted by Fresnel(cos_i), no diffuse.
+/// A Fresnel policy with `reflectance(SpecularQuery)` (a film of textured thickness)
+/// makes the conductor's reflectance vary over the surface.
 template <Scalar T = float, class Fresnel = ConstantKr<T>>
 struct Conductor {
     using scalar_type = T;
@@ -51,7 +103,16 @@ struct Conductor {
 
     Fresnel fresnel{};
 
-    [[nodiscard]] Rgb<T> reflectance(T cos_i) const noexcept { return fresnel.reflectance(cos_i); }
+    [[nodiscard]] Rgb<T> reflectance(T cos_i) const noexcept
+        requires requires(const Fresnel& f, T c) { f.reflectance(c); }
+    {
+        return fresnel.reflectance(cos_i);
+    }
+    [[nodiscard]] Rgb<T> reflectance(const SpecularQuery<T>& query) const noexcept
+        requires requires(const Fresnel& f, const SpecularQuery<T>& q) { f.reflectance(q); }
+    {
+        return fresnel.reflectance(query);
+    }
     constexpr void validate() const { fresnel.validate(); }
 };
 
@@ -59,10 +120,17 @@ struct Conductor {
 template <Scalar T = float>
 using Mirror = Conductor<T, ConstantKr<T>>;
 
-/// A metal with a measured complex index.
+/// A metal with a complex index per RGB channel.
 template <Scalar T = float>
 using Metal = Conductor<T, ComplexIor<T>>;
 
-static_assert(Material<Mirror<float>> && Material<Metal<double>>);
+/// A metal with a measured spectral index, e.g. measured_metal<float>(metals::gold).
+template <Scalar T = float>
+[[nodiscard]] Conductor<T, MeasuredConductor<T>> measured_metal(const metals::MeasuredIndex& index)
+{
+    return {MeasuredConductor<T>(index)};
+}
+
+static_assert(Material<Mirror<float>> && Material<Metal<double>> && Material<Conductor<float, MeasuredConductor<float>>>);
 
 } // namespace prism

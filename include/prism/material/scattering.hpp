@@ -47,25 +47,56 @@ template <Material M>
 
 /// The weights of the reflected and transmitted rays at a specular surface, the
 /// transmitted direction (none under total internal reflection or for a conductor), and
-/// the share of light reflected before the tints (Fresnel's F; 1 for a conductor): a
-/// photon's chance to reflect.
+/// the Fresnel reflectance before the tints (1 for a conductor; per channel for a thin
+/// film): a photon reflects with the probability `reflected_share`, its mean.
 template <Scalar T>
 struct SpecularSplit {
     Rgb<T> kr{T(0)};
     Rgb<T> kt{T(0)};
     std::optional<Vec3<T>> refracted;
+    Rgb<T> fresnel{T(1)};
     T reflected_share = T(1);
+
+    /// Whether Fresnel's share is the same in every channel (then a photon's choice
+    /// between reflection and refraction needs no reweighting).
+    [[nodiscard]] constexpr bool fresnel_is_grey() const noexcept { return fresnel.x == fresnel.y && fresnel.y == fresnel.z; }
 };
 
-/// How a mirror or an interface splits the unit incident direction d arriving at a
-/// surface whose unit normal n faces it (Crossing::facing_normal); `entering`: d goes
-/// into the material. A dielectric splits by Fresnel (all to reflection under total
-/// internal reflection) times its tints, with eta = n_inside or 1 / n_inside by the
-/// side; a conductor reflects by its reflectance.
+namespace detail {
+
+/// A conductor's reflectance, from cos_i alone or from the whole query.
+template <Material M>
+[[nodiscard]] Rgb<typename M::scalar_type> conductor_reflectance(const M& material, const SpecularQuery<typename M::scalar_type>& q) noexcept
+{
+    if constexpr (requires { material.reflectance(q.cos_i); })
+        return material.reflectance(q.cos_i);
+    else
+        return material.reflectance(q);
+}
+
+/// An interface's Fresnel share (one, or one per channel), from the cosines and eta or
+/// from the whole query.
+template <Material M>
+[[nodiscard]] auto interface_fresnel(const M& material, const SpecularQuery<typename M::scalar_type>& q) noexcept
+{
+    if constexpr (requires { material.fresnel(q.cos_i, q.cos_t, q.eta); })
+        return material.fresnel(q.cos_i, q.cos_t, q.eta);
+    else
+        return material.fresnel(q);
+}
+
+} // namespace detail
+
+/// How a mirror or an interface at point p splits the unit incident direction d
+/// arriving at a surface whose unit normal n faces it (Crossing::facing_normal);
+/// `entering`: d goes into the material. A dielectric splits by Fresnel (all to
+/// reflection under total internal reflection) times its tints, with eta = n_inside or
+/// 1 / n_inside by the side; a conductor reflects by its reflectance.
 template <Material M>
     requires(M::reflects || M::transmits)
 [[nodiscard]] SpecularSplit<typename M::scalar_type> delta_split(const M& material, const Vec3<typename M::scalar_type>& d,
-                                                                const Vec3<typename M::scalar_type>& n, bool entering) noexcept
+                                                                const Vec3<typename M::scalar_type>& n, bool entering,
+                                                                const Vec3<typename M::scalar_type>& p) noexcept
 {
     using T = typename M::scalar_type;
     const T cos_i = clamp(-dot(d, n), T(0), T(1));
@@ -75,12 +106,19 @@ template <Material M>
         // Snell's cos_t, found once, serves the direction and the Fresnel equations.
         const auto refracted = refraction(d, n, eta);
         if (refracted) split.refracted = refracted->direction;
-        const T fresnel = refracted ? material.fresnel(cos_i, refracted->cos_t, eta) : T(1);
-        split.kr = material.reflection_tint() * fresnel;
-        split.kt = material.transmission_tint() * (T(1) - fresnel);
-        split.reflected_share = fresnel;
+        if (refracted) {
+            const auto fresnel = detail::interface_fresnel(material, SpecularQuery<T>{cos_i, refracted->cos_t, eta, entering, p});
+            if constexpr (std::same_as<decltype(fresnel), const T>) {
+                split.reflected_share = fresnel;
+            } else {
+                split.reflected_share = (fresnel.x + fresnel.y + fresnel.z) / T(3);
+            }
+            split.fresnel = Rgb<T>(fresnel);
+        }
+        split.kr = material.reflection_tint() * split.fresnel;
+        split.kt = material.transmission_tint() * (Rgb<T>(T(1)) - split.fresnel);
     } else {
-        split.kr = material.reflectance(cos_i);
+        split.kr = detail::conductor_reflectance(material, SpecularQuery<T>{cos_i, T(0), T(1), entering, p});
     }
     return split;
 }
@@ -156,9 +194,14 @@ template <Material M>
     };
     const auto scatter_specularly = [&](const SpecularSplit<T>& split) -> Bounce {
         if constexpr (M::transmits) {
-            // Reflect with probability F, refract otherwise; each then by its tint.
+            // Reflect with probability F (the mean of F per channel), refract otherwise;
+            // each then by its tint. Per-channel F weighs the survivor by F / mean.
             const bool reflect_it = rng.uniform<T>() < split.reflected_share;
             if (!russian_roulette(power, reflect_it ? material.reflection_tint() : material.transmission_tint(), rng)) return std::nullopt;
+            if (!split.fresnel_is_grey()) {
+                power *= reflect_it ? split.fresnel / split.reflected_share
+                                    : (Rgb<T>(T(1)) - split.fresnel) / (T(1) - split.reflected_share);
+            }
             return PhotonBounce<T>{reflect_it ? reflect(d, n) : *split.refracted, false};
         } else {
             if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
@@ -168,7 +211,7 @@ template <Material M>
     if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
         // Both lobes: choose one by its share of the reflected light (largest channels).
         const Rgb<T> reflectance = diffuse_response(material, hit.point).photon_reflectance();
-        const SpecularSplit<T> split = delta_split(material, d, n, hit.entering);
+        const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point);
         const T w_diffuse = max_component(reflectance), w_delta = max_component(split.kr + split.kt);
         if (!(w_diffuse + w_delta > T(0))) return std::nullopt;
         const T p_diffuse = w_diffuse / (w_diffuse + w_delta);
@@ -181,7 +224,7 @@ template <Material M>
     } else if constexpr (M::has_diffuse) {
         return scatter_diffusely(diffuse_response(material, hit.point).photon_reflectance());
     } else {
-        return scatter_specularly(delta_split(material, d, n, hit.entering));
+        return scatter_specularly(delta_split(material, d, n, hit.entering, hit.point));
     }
 }
 

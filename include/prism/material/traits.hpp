@@ -53,25 +53,50 @@ concept DiffuseLobe = requires(const M& material, const Vec3<typename M::scalar_
     { material.diffuse(p) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
 };
 
-/// A mirror that is not an interface (a conductor): `reflectance(cos_i)` per channel for
-/// light arriving at cosine cos_i.
+/// What a delta interaction sees at a surface point: the incident cosine, the refracted
+/// one and eta = n_t / n_i (where light refracts), the side (`entering`: arriving from
+/// outside) and the point. Materials whose response varies over the surface (a film of
+/// textured thickness) or with the side (a coating on the outside) take this whole.
+template <Scalar T>
+struct SpecularQuery {
+    T cos_i;
+    T cos_t;
+    T eta;
+    bool entering;
+    Vec3<T> point;
+};
+
+/// A mirror that is not an interface (a conductor): its reflectance per channel for
+/// light arriving at cosine cos_i, as `reflectance(cos_i)` or, where it varies over
+/// the surface, `reflectance(SpecularQuery)`.
 template <class M>
 concept DeltaReflection = requires(const M& material, typename M::scalar_type cos_i) {
     { material.reflectance(cos_i) } -> std::same_as<Rgb<typename M::scalar_type>>;
+} || requires(const M& material, const SpecularQuery<typename M::scalar_type>& query) {
+    { material.reflectance(query) } -> std::same_as<Rgb<typename M::scalar_type>>;
 };
+
+/// A Fresnel reflectance: one share for every channel, or one per channel (a thin film).
+template <class F, class T>
+concept FresnelShare = std::same_as<F, T> || std::same_as<F, Rgb<T>>;
 
 /// A dielectric interface with index `refractive_index()` inside and 1 outside.
 /// `fresnel(cos_i, cos_t, eta)` is the share of light reflected for the incident and
-/// refracted cosines and eta = n_t / n_i (asked only where light refracts: under total
-/// internal reflection all of it is reflected); the reflected and refracted rays are
-/// then weighted by `reflection_tint()` and `transmission_tint()` (the seed's kr and kt).
+/// refracted cosines and eta = n_t / n_i, or `fresnel(SpecularQuery)` where it varies
+/// over the surface or with the side; either returns one share or one per channel, and
+/// is asked only where light refracts (under total internal reflection all of it is
+/// reflected). The reflected and refracted rays are then weighted by
+/// `reflection_tint()` and `transmission_tint()` (the seed's kr and kt).
 template <class M>
-concept DeltaTransmission = requires(const M& material, typename M::scalar_type cos_i, typename M::scalar_type eta) {
+concept DeltaTransmission = requires(const M& material) {
     { material.refractive_index() } -> std::same_as<typename M::scalar_type>;
-    { material.fresnel(cos_i, cos_i, eta) } -> std::same_as<typename M::scalar_type>;
     { material.reflection_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
     { material.transmission_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
-};
+} && (requires(const M& material, typename M::scalar_type cos_i) {
+    { material.fresnel(cos_i, cos_i, cos_i) } -> FresnelShare<typename M::scalar_type>;
+} || requires(const M& material, const SpecularQuery<typename M::scalar_type>& query) {
+    { material.fresnel(query) } -> FresnelShare<typename M::scalar_type>;
+});
 
 /// The medium filling a transmissive object: `medium()` (see medium/medium.hpp).
 template <class M>
@@ -92,8 +117,8 @@ concept Material = requires(const M& material) {
     material.validate();
 } && (M::has_diffuse || M::reflects || M::transmits) // a material does at least one thing
   && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) -> DiffuseResponse<T>
-  && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i) -> Rgb<T>
-  && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta), reflection_tint(), transmission_tint()
+  && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i or query) -> Rgb<T>
+  && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta or query), reflection_tint(), transmission_tint()
   && (!M::transmits || InteriorMedium<M>);          // transmits promises medium(), a Medium of the same scalar type
 
 /// Purely specular: every scattered direction is a delta (no diffuse lobe).
