@@ -278,6 +278,42 @@ def graded_index_chart(rows):
     save(fig, "graded_index.png")
 
 
+def dispersion_chart(rows):
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    pts = [r for r in rows if int(r["bands"]) < 64]
+    x = [float(r["seconds"]) for r in pts]
+    y = [float(r["rmse"]) for r in pts]
+    ax.loglog(x, y, "o-", label="Whitted, white light split into N bands")
+    for xi, yi, r in zip(x, y, pts):
+        ax.annotate(r["bands"], (xi, yi), textcoords="offset points", xytext=(3, 3), fontsize=7)
+    ax.set_xlabel("seconds per 320x240 render, 1 thread (min of 3)")
+    ax.set_ylabel("RMSE against 64 bands")
+    ax.set_title("dispersion: an F2 prism over a checkerboard, error against time", fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, "dispersion.png")
+
+
+def thin_film_chart(rows):
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    soap = [r for r in rows if r["what"] == "soap"]
+    for step in sorted({r["step_nm"] for r in soap}, key=float):
+        pts = [r for r in soap if r["step_nm"] == step]
+        x = [float(r["build_ms"]) for r in pts]
+        y = [float(r["worst"]) for r in pts]
+        ax.loglog(x, y, "o-", label=f"table, {step} nm thickness step (worst)")
+        for xi, yi, r in zip(x, y, pts):
+            ax.annotate(r["cosines"], (xi, yi), textcoords="offset points", xytext=(3, 3), fontsize=7)
+    if soap:
+        ax.set_title(f"soap film 20-900 nm: table error against build time (labels: cosines)\n"
+                     f"a lookup {float(soap[0]['lookup_ns']):.0f} ns, the exact spectral integral {float(soap[0]['exact_ns']) / 1000:.1f} us", fontsize=9)
+    ax.set_xlabel("ms to build the table")
+    ax.set_ylabel("worst RGB error against the exact integral (cos >= 0.05)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, "thin_film.png")
+
+
 def main():
     if (rows := read("accuracy.csv")):
         accuracy_charts(rows)
@@ -297,6 +333,10 @@ def main():
         leak_chart(rows)
     if (rows := read("graded_index.csv")):
         graded_index_chart(rows)
+    if (rows := read("dispersion.csv")):
+        dispersion_chart(rows)
+    if (rows := read("thin_film.csv")):
+        thin_film_chart(rows)
     if (rows := read("ray_property.csv")):
         ray_property_chart(rows, read("ray_property_before.csv"))
 

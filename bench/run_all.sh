@@ -21,5 +21,7 @@ python=/usr/bin/python3
 "$root/build/release/bench/bench_shadow_saving" "$results" | tee "$results/shadow_saving.txt"
 "$root/build/release/bench/bench_ray_property" "$results" | tee "$results/ray_property.txt"
 "$root/build/release/bench/bench_graded_index" "$results" | tee "$results/graded_index.txt"
+"$root/build/release/bench/bench_dispersion" "$results" | tee "$results/dispersion.txt"
+"$root/build/release/bench/bench_thin_film" "$results" | tee "$results/thin_film.txt"
 "$python" "$root/bench/photon_accuracy.py" --build "$root/build/release" --out "$results" | tee "$results/photon_accuracy.txt"
 "$python" "$root/bench/plot.py" "$results"

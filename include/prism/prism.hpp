@@ -35,6 +35,7 @@
 #include <prism/material/conductor.hpp>
 #include <prism/material/dielectric.hpp>
 #include <prism/material/diffuse.hpp>
+#include <prism/material/dispersive.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/texture.hpp>
 #include <prism/material/thin_film.hpp>
@@ -56,6 +57,7 @@
 #include <prism/scene/hit.hpp>
 #include <prism/scene/object.hpp>
 #include <prism/scene/scene.hpp>
+#include <prism/spectrum/bands.hpp>
 #include <prism/spectrum/cie.hpp>
 #include <prism/spectrum/cie_tables.hpp>
 #include <prism/spectrum/metals.hpp>

@@ -64,3 +64,17 @@ TEST_CASE("a 60 degree BK7 prism at minimum deviation deviates each wavelength b
     const auto deviation = [&](double wavelength) { return 2 * std::asin(prism::glass::bk7<double>.index(wavelength) * 0.5) / deg - 60; };
     CHECK(deviation(fraunhofer::F) - deviation(fraunhofer::C) == Approx(0.708).epsilon(0.02));
 }
+
+TEST_CASE("Water at 20 C: the CRC Handbook's n_F, n_D, n_C and Abbe number")
+{
+    const auto& water = prism::glass::water<double>;
+    CHECK(water.index(fraunhofer::F) == Approx(1.33712).epsilon(1e-6));
+    CHECK(water.index(589.2938) == Approx(1.33299).epsilon(1e-6));
+    CHECK(water.index(fraunhofer::C) == Approx(1.33115).epsilon(1e-6));
+    CHECK((water.index(589.2938) - 1) / (water.index(fraunhofer::F) - water.index(fraunhofer::C)) == Approx(55.8).epsilon(2e-3));
+    // The handbook's 1.34275 at the mercury violet line, 404.66 nm, from a fit through F, D, C.
+    CHECK(std::abs(water.index(404.66) - 1.34275) < 1e-3);
+    // Sellmeier with any number of terms: four, one of them zero, equals three.
+    const prism::Sellmeier<double, 4> bk7_4{{1.03961212, 0.231792344, 1.01046945, 0}, {0.00600069867, 0.0200179144, 103.560653, 0}};
+    CHECK(bk7_4.index(500) == prism::glass::bk7<double>.index(500));
+}

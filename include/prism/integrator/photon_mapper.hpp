@@ -56,10 +56,13 @@ public:
         std::size_t visibility_k = 0;
         int max_depth = 10;
         T min_weight = T(1e-3);
+        /// Wavelength bands white camera rays split into at a dispersive interface (as
+        /// Whitted's); photons take their own wavelengths (PhotonTracerConfig).
+        int dispersion_bands = 8;
     };
 
     /// Traces the photon maps (the expensive part), then renders with them.
-    explicit PhotonMapper(const SceneT& scene, Config config = {}) : scene_(&scene), config_(config)
+    explicit PhotonMapper(const SceneT& scene, Config config = {}) : scene_(&scene), config_(config), bands_(config.dispersion_bands)
     {
         scene.validate();
         validate(config.caustic, "PhotonMapper caustic");
@@ -79,7 +82,7 @@ public:
 
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
 
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0)); }
 
     /// What the nearest global photons say about the light's visibility at p (normal n
     /// facing the viewer): true when the `visibility_k` nearest within global.radius
@@ -107,16 +110,17 @@ private:
             detail::throw_invalid(name, " filter must be box, cone or gaussian, got the value ", static_cast<int>(e.filter));
     }
 
-    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng) const noexcept
+    /// Radiance along the ray for light of one wavelength (nanometres), or of all (0).
+    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength) const noexcept
     {
         const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
         if (!hit) return scene_->background;
-        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, ray, hit->crossing, depth, weight, rng); });
+        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, ray, hit->crossing, depth, weight, rng, wavelength); });
     }
 
     template <class M>
     [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Crossing<T>& hit, int depth, const Rgb<T>& weight,
-                               Pcg32& rng) const noexcept
+                               Pcg32& rng, T wavelength) const noexcept
     {
         const Vec3<T>& d = ray.direction;
         const Vec3<T> n = hit.facing_normal();
@@ -130,11 +134,10 @@ private:
         }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point);
-                if (max_component(weight * split.kr) > config_.min_weight)
-                    radiance += split.kr * trace(spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n)), depth + 1, weight * split.kr, rng);
-                if (split.refracted && max_component(weight * split.kt) > config_.min_weight)
-                    radiance += split.kt * trace(spawn_ray(hit.point, hit.error, hit.normal, *split.refracted), depth + 1, weight * split.kt, rng);
+                for_each_delta_ray(material, d, n, hit, wavelength, bands_, [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda) {
+                    if (max_component(weight * k) > config_.min_weight)
+                        radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1, weight * k, rng, lambda);
+                });
             }
         }
         attenuate_inside(material, hit, ray, radiance);
@@ -182,6 +185,7 @@ private:
 
     const SceneT* scene_;
     Config config_;
+    SpectralBands<T> bands_;
     PhotonMaps maps_;
 };
 

@@ -33,9 +33,12 @@ public:
     struct Config {
         int max_depth = 10;          ///< reflection/refraction bounces followed at most
         T min_weight = T(1e-3);      ///< stop a branch whose weight on the pixel is below this
+        /// Wavelength bands white light splits into where it refracts through a dispersive
+        /// interface (1 to 81; POV-Ray's dispersion_samples, 7 by default there).
+        int dispersion_bands = 8;
     };
 
-    explicit Whitted(const SceneT& scene, Config config = {}) : scene_(&scene), config_(config)
+    explicit Whitted(const SceneT& scene, Config config = {}) : scene_(&scene), config_(config), bands_(config.dispersion_bands)
     {
         scene.validate();
         if (config.max_depth < 0) detail::throw_invalid("Whitted max_depth must be >= 0, got ", config.max_depth);
@@ -46,26 +49,28 @@ public:
     Whitted(const SceneT&& scene, Config config = {}) = delete;
 
     /// Radiance arriving along the ray (its direction must be unit length).
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1))); }
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1))); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0)); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0)); }
 
     [[nodiscard]] const Config& config() const noexcept { return config_; }
 
 private:
     // Whitted Private Methods
 
-    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight) const noexcept
+    /// Radiance along the ray for light of one wavelength (nanometres), or of all (0):
+    /// a ray carries one once it has refracted through a dispersive interface.
+    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength) const noexcept
     {
         const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
         if (!hit) return scene_->background;
         return scene_->visit_material(*hit, [&](const auto& material) {
-            return shade(material, ray, hit->crossing, depth, weight);
+            return shade(material, ray, hit->crossing, depth, weight, wavelength);
         });
     }
 
     template <class M>
     [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Crossing<T>& hit, int depth,
-                               const Rgb<T>& weight) const noexcept
+                               const Rgb<T>& weight, T wavelength) const noexcept
     {
         const Vec3<T>& d = ray.direction;
         const Vec3<T> n = hit.facing_normal();
@@ -75,17 +80,11 @@ private:
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point);
-                const Rgb<T> reflect_weight = weight * split.kr;
-                if (max_component(reflect_weight) > config_.min_weight) {
-                    const Ray<T> reflected = spawn_ray(hit.point, hit.error, hit.normal, reflect(d, n));
-                    radiance += split.kr * trace(reflected, depth + 1, reflect_weight);
-                }
-                const Rgb<T> transmit_weight = weight * split.kt;
-                if (split.refracted && max_component(transmit_weight) > config_.min_weight) {
-                    const Ray<T> transmitted = spawn_ray(hit.point, hit.error, hit.normal, *split.refracted);
-                    radiance += split.kt * trace(transmitted, depth + 1, transmit_weight);
-                }
+                for_each_delta_ray(material, d, n, hit, wavelength, bands_, [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda) {
+                    const Rgb<T> next_weight = weight * k;
+                    if (max_component(next_weight) > config_.min_weight)
+                        radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1, next_weight, lambda);
+                });
             }
         }
 
@@ -112,6 +111,7 @@ private:
 
     const SceneT* scene_;
     Config config_;
+    SpectralBands<T> bands_;
 };
 
 } // namespace prism

@@ -13,6 +13,7 @@
 #include <prism/geometry/crossings.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/optics/refract.hpp>
+#include <prism/spectrum/bands.hpp>
 
 #include <cstddef>
 #include <optional>
@@ -87,22 +88,37 @@ template <Material M>
 
 } // namespace detail
 
+/// The index of a transmissive material for light of a wavelength (nanometres; 0 for
+/// white light): a dispersive one's at that wavelength, any other's own.
+template <Material M>
+    requires(M::transmits)
+[[nodiscard]] typename M::scalar_type index_at(const M& material, typename M::scalar_type wavelength_nm) noexcept
+{
+    if constexpr (disperses<M>) {
+        if (wavelength_nm > 0) return material.refractive_index(wavelength_nm);
+    }
+    return material.refractive_index();
+}
+
 /// How a mirror or an interface at point p splits the unit incident direction d
 /// arriving at a surface whose unit normal n faces it (Crossing::facing_normal);
-/// `entering`: d goes into the material. A dielectric splits by Fresnel (all to
-/// reflection under total internal reflection) times its tints, with eta = n_inside or
-/// 1 / n_inside by the side; a conductor reflects by its reflectance.
+/// `entering`: d goes into the material; light of one wavelength (nanometres), or 0 for
+/// white light. A dielectric splits by Fresnel (all to reflection under total internal
+/// reflection) times its tints, with eta = n_inside or 1 / n_inside by the side (n at the
+/// wavelength for a dispersive one); a conductor reflects by its reflectance.
 template <Material M>
     requires(M::reflects || M::transmits)
 [[nodiscard]] SpecularSplit<typename M::scalar_type> delta_split(const M& material, const Vec3<typename M::scalar_type>& d,
                                                                 const Vec3<typename M::scalar_type>& n, bool entering,
-                                                                const Vec3<typename M::scalar_type>& p) noexcept
+                                                                const Vec3<typename M::scalar_type>& p,
+                                                                typename M::scalar_type wavelength_nm = 0) noexcept
 {
     using T = typename M::scalar_type;
     const T cos_i = clamp(-dot(d, n), T(0), T(1));
     SpecularSplit<T> split;
     if constexpr (M::transmits) {
-        const T eta = entering ? material.refractive_index() : T(1) / material.refractive_index();
+        const T n_inside = index_at(material, wavelength_nm);
+        const T eta = entering ? n_inside : T(1) / n_inside;
         // Snell's cos_t, found once, serves the direction and the Fresnel equations.
         const auto refracted = refraction(d, n, eta);
         if (refracted) split.refracted = refracted->direction;
@@ -121,6 +137,37 @@ template <Material M>
         split.kr = detail::conductor_reflectance(material, SpecularQuery<T>{cos_i, T(0), T(1), entering, p});
     }
     return split;
+}
+
+/// The rays a mirror or an interface sends on, each passed to
+/// emit(direction, weight, wavelength_nm): the reflected ray, then the refracted one. Where
+/// white light (wavelength 0) meets a dispersive interface it refracts band by band, one
+/// ray per band of `bands`, each weighted by its band's share of white and carrying its
+/// wavelength; the reflected ray, whose direction no wavelength changes, stays white,
+/// weighted by the bands' reflectances summed (so white light meeting a dispersive
+/// interface costs one ray more per band, not per band squared).
+template <Material M, class Emit>
+    requires(M::reflects || M::transmits)
+void for_each_delta_ray(const M& material, const Vec3<typename M::scalar_type>& d, const Vec3<typename M::scalar_type>& n,
+                        const Crossing<typename M::scalar_type>& hit, typename M::scalar_type wavelength_nm,
+                        const SpectralBands<typename M::scalar_type>& bands, Emit&& emit)
+{
+    using T = typename M::scalar_type;
+    if constexpr (disperses<M>) {
+        if (wavelength_nm == T(0)) {
+            Rgb<T> kr{T(0)};
+            for (const WavelengthBand<T>& band : bands) {
+                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, band.wavelength_nm);
+                kr += band.weight * split.kr;
+                if (split.refracted) emit(*split.refracted, band.weight * split.kt, band.wavelength_nm);
+            }
+            emit(reflect(d, n), kr, T(0));
+            return;
+        }
+    }
+    const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, wavelength_nm);
+    emit(reflect(d, n), split.kr, wavelength_nm);
+    if (split.refracted) emit(*split.refracted, split.kt, wavelength_nm);
 }
 
 // Media
@@ -176,13 +223,15 @@ struct PhotonBounce {
 /// reflects with probability F and refracts otherwise, weighted by its tints; a
 /// conductor reflects by its reflectance. A material with a diffuse and a delta lobe
 /// first chooses one by their largest channels, dividing the power by that choice's
-/// probability. Returns nothing when the photon is absorbed; scales `power` otherwise.
+/// probability. A photon of one wavelength (nanometres; 0: white) refracts at its
+/// index. Returns nothing when the photon is absorbed; scales `power` otherwise.
 template <Material M>
 [[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
                                                                                    const Crossing<typename M::scalar_type>& hit,
                                                                                    const Vec3<typename M::scalar_type>& d,
                                                                                    const Vec3<typename M::scalar_type>& n,
-                                                                                   Rgb<typename M::scalar_type>& power, Pcg32& rng) noexcept
+                                                                                   Rgb<typename M::scalar_type>& power, Pcg32& rng,
+                                                                                   typename M::scalar_type wavelength_nm = 0) noexcept
 {
     using T = typename M::scalar_type;
     using Bounce = std::optional<PhotonBounce<T>>;
@@ -211,7 +260,7 @@ template <Material M>
     if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
         // Both lobes: choose one by its share of the reflected light (largest channels).
         const Rgb<T> reflectance = diffuse_response(material, hit.point).photon_reflectance();
-        const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point);
+        const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, wavelength_nm);
         const T w_diffuse = max_component(reflectance), w_delta = max_component(split.kr + split.kt);
         if (!(w_diffuse + w_delta > T(0))) return std::nullopt;
         const T p_diffuse = w_diffuse / (w_diffuse + w_delta);
@@ -224,7 +273,7 @@ template <Material M>
     } else if constexpr (M::has_diffuse) {
         return scatter_diffusely(diffuse_response(material, hit.point).photon_reflectance());
     } else {
-        return scatter_specularly(delta_split(material, d, n, hit.entering, hit.point));
+        return scatter_specularly(delta_split(material, d, n, hit.entering, hit.point, wavelength_nm));
     }
 }
 

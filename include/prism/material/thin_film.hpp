@@ -235,6 +235,7 @@ public:
     [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(T(1)); }
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior_; }
     constexpr void validate() const {} // checked at construction
+    [[nodiscard]] std::size_t table_entries() const noexcept { return from_outside_.entries(); }
 
     /// The exact reflectance at one wavelength, arriving from outside or from inside.
     [[nodiscard]] double spectral_reflectance(double cos_i, double lambda_nm, double d, bool from_outside) const noexcept

@@ -121,6 +121,15 @@ concept Material = requires(const M& material) {
   && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta or query), reflection_tint(), transmission_tint()
   && (!M::transmits || InteriorMedium<M>);          // transmits promises medium(), a Medium of the same scalar type
 
+/// A dispersive interface: besides the DeltaTransmission functions, `disperses = true`
+/// and `refractive_index(wavelength_nm)`, the index at a vacuum wavelength in nanometres
+/// (refractive_index() is then the index for white light where it is not split).
+template <class M>
+concept Dispersive = requires(const M& material, typename M::scalar_type wavelength_nm) {
+    requires bool(M::disperses);
+    { material.refractive_index(wavelength_nm) } -> std::same_as<typename M::scalar_type>;
+};
+
 /// Purely specular: every scattered direction is a delta (no diffuse lobe).
 template <Material M>
 inline constexpr bool is_delta = !M::has_diffuse && (M::reflects || M::transmits);
@@ -133,5 +142,8 @@ inline constexpr bool reflects = M::reflects;
 
 template <Material M>
 inline constexpr bool transmits = M::transmits;
+
+template <Material M>
+inline constexpr bool disperses = M::transmits && Dispersive<M>;
 
 } // namespace prism

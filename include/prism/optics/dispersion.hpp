@@ -21,25 +21,25 @@ concept Dispersion = requires(const D& dispersion, typename D::scalar_type wavel
     dispersion.validate();
 };
 
-/// Sellmeier's formula with three terms, as glass makers publish it:
+/// Sellmeier's formula, with three terms as glass makers publish it (or `Terms`):
 ///   n^2 = 1 + sum_i B_i lambda^2 / (lambda^2 - C_i),  lambda in micrometres, C_i in um^2.
-template <Scalar T = double>
+template <Scalar T = double, std::size_t Terms = 3>
 struct Sellmeier {
     using scalar_type = T;
-    std::array<T, 3> b{};
-    std::array<T, 3> c{};
+    std::array<T, Terms> b{};
+    std::array<T, Terms> c{};
 
     [[nodiscard]] T index(T wavelength_nm) const noexcept
     {
         const T l2 = (wavelength_nm * T(1e-3)) * (wavelength_nm * T(1e-3));
         T n2 = T(1);
-        for (std::size_t i = 0; i < 3; ++i) n2 += b[i] * l2 / (l2 - c[i]);
+        for (std::size_t i = 0; i < Terms; ++i) n2 += b[i] * l2 / (l2 - c[i]);
         return std::sqrt(n2);
     }
 
     constexpr void validate() const
     {
-        for (std::size_t i = 0; i < 3; ++i) {
+        for (std::size_t i = 0; i < Terms; ++i) {
             detail::require_finite("Sellmeier B", b[i]);
             if (!(c[i] >= T(0) && c[i] == c[i])) detail::throw_invalid("Sellmeier C must be >= 0 (um^2), got ", c[i]);
         }
@@ -86,7 +86,7 @@ template <Dispersion D>
     return (glass.index(T(fraunhofer::d)) - T(1)) / (glass.index(T(fraunhofer::F)) - glass.index(T(fraunhofer::C)));
 }
 
-/// Named glasses: Schott's published Sellmeier coefficients (optical glass data sheets).
+/// Named glasses (Schott's published Sellmeier coefficients, from their data sheets) and water.
 namespace glass {
 /// N-BK7, the common crown: n_d = 1.51680, V_d = 64.17.
 template <Scalar T = double>
@@ -94,6 +94,11 @@ inline constexpr Sellmeier<T> bk7{{T(1.03961212), T(0.231792344), T(1.01046945)}
 /// F2, a flint: n_d = 1.62004, V_d = 36.37.
 template <Scalar T = double>
 inline constexpr Sellmeier<T> f2{{T(1.34533359), T(0.209073176), T(0.937357162)}, {T(0.00997743871), T(0.0470450767), T(111.886764)}};
+/// Water at 20 C: Cauchy's formula through the CRC Handbook's n_F = 1.33712,
+/// n_D = 1.33299 (589.29 nm) and n_C = 1.33115 (so V = 55.8); within 7e-4 of the
+/// handbook down to 405 nm.
+template <Scalar T = double>
+inline constexpr Cauchy<T> water{.a = T(1.32263793), .b = T(3.96229730e-3), .c = T(-1.27573712e-4)};
 } // namespace glass
 
 } // namespace prism

@@ -30,6 +30,7 @@
 #include <prism/material/traits.hpp>
 #include <prism/photon/photon_map.hpp>
 #include <prism/scene/object.hpp>
+#include <prism/spectrum/bands.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -49,6 +50,10 @@ struct PhotonTracerConfig {
     bool shadow_photons = true;
     std::uint64_t seed = 0;
     unsigned threads = 0; ///< 0 = all hardware threads
+    /// A white photon meeting a dispersive interface takes one of this many wavelength
+    /// bands at random (1 to 81), its power scaled by the band's share of white times
+    /// the band count, and keeps that wavelength from then on.
+    int dispersion_bands = SpectralBands<float>::max_count;
 };
 
 namespace detail {
@@ -66,6 +71,8 @@ inline void validate(const PhotonTracerConfig& config)
         require_memory("PhotonTracerConfig " + std::string(name) + " = " + std::to_string(count) + " (its photon records alone)", bytes);
     }
     if (config.max_bounces < 0) throw_invalid("PhotonTracerConfig max_bounces must be >= 0, got ", config.max_bounces);
+    if (config.dispersion_bands < 1 || config.dispersion_bands > SpectralBands<float>::max_count)
+        throw_invalid("PhotonTracerConfig dispersion_bands must be in [1, ", SpectralBands<float>::max_count, "], got ", config.dispersion_bands);
 }
 
 } // namespace detail
@@ -92,9 +99,9 @@ class PhotonTracer {
 public:
     using T = typename SceneT::scalar_type;
 
-    PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config) : scene_(scene), config_(config)
+    PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config)
+        : scene_(scene), config_((detail::validate(config), config)), bands_(config.dispersion_bands)
     {
-        validate(config);
         Pcg32 scrambles(config.seed, 0xfeed5eedULL);
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
@@ -160,6 +167,7 @@ private:
     {
         bool direct = true, specular_only = true;
         T travelled = T(0);
+        T wavelength = T(0); // white until a dispersive interface splits it
         for (int bounce = 0; bounce <= config_.max_bounces; ++bounce) {
             const auto hit = scene_.closest_hit(ray, {T(0), infinity<T>});
             if (!hit) return;
@@ -179,7 +187,16 @@ private:
                     if (direct && config_.shadow_photons) store_shadow_photons(c, d, out);
                 }
                 attenuate_inside(material, c, ray, power);
-                const auto next = scatter_photon(material, c, d, c.facing_normal(), power, rng);
+                if constexpr (disperses<M>) {
+                    if (wavelength == T(0)) {
+                        // One band at random: its share of white, over its probability 1 / count.
+                        const int count = bands_.size();
+                        const WavelengthBand<T>& band = bands_[std::min(int(rng.uniform<T>() * T(count)), count - 1)];
+                        power *= band.weight * T(count);
+                        wavelength = band.wavelength_nm;
+                    }
+                }
+                const auto next = scatter_photon(material, c, d, c.facing_normal(), power, rng, wavelength);
                 if (!next) return false;
                 ray = spawn_ray(c.point, c.error, c.normal, next->direction);
                 if (next->diffuse) specular_only = false;
@@ -237,6 +254,7 @@ private:
 
     const SceneT& scene_;
     PhotonTracerConfig config_;
+    SpectralBands<T> bands_; ///< for photons meeting a dispersive interface
     BoundingSphere<T> scene_sphere_{}; ///< around everything bounded (when anything is)
     std::vector<Emitter<T>> global_;  ///< every light aimed everywhere, for the global map
     T global_power_ = T(0);
