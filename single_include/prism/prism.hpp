@@ -2997,22 +2997,31 @@ template <class F>
 // each refracting with the index at its band's wavelength and carrying the band's share
 // of white (POV-Ray's `dispersion_samples`, with the shares from the CIE observer rather
 // than a hue ramp). The visible range 380-780 nm (81 of the CIE table's 5 nm samples) is
-// cut into `count` bands of adjacent samples; a band's RGB is the linear sRGB of its
-// samples under D65 (spectrum/cie.hpp), negative channels (spectral colours lie outside
-// the sRGB gamut) set to 0, and every channel then scaled so that the bands sum to
-// exactly (1, 1, 1): white light that meets nothing dispersive is unchanged, and a band
-// never carries negative light.
+// cut into `count` bands of adjacent samples; a band's share is the linear sRGB of its
+// samples under D65 (spectrum/cie.hpp), every channel scaled so that the bands sum to
+// (1, 1, 1) (to rounding): white light that meets nothing dispersive is unchanged.
+//
+// Spectral colours lie outside the sRGB gamut, so a band's share can be negative in a
+// channel (blue-green light has negative red). `weight` keeps the sign: camera rays
+// summed over all bands then integrate a spectrum exactly as cie::reflectance_to_rgb
+// does (a gold mirror seen through a prism keeps gold's colour), and a pixel of pure
+// spectral light may come out negative in a channel (written as 0). Photons carry power
+// that must not be negative, so they use `photon_weight`: the negative channels set to 0
+// and the bands rescaled to sum to white again (a gamut clip, which shifts the colour of
+// strongly coloured surfaces seen in dispersed light by up to 0.1 for gold).
 
 
 #include <array>
 
 namespace prism {
 
-/// One band: its wavelength (the mean of its samples, nanometres) and its share of white.
+/// One band: its wavelength (the mean of its samples, nanometres) and its share of
+/// white, signed (for camera rays) and clipped to be non-negative (for photons).
 template <Scalar T>
 struct WavelengthBand {
     T wavelength_nm;
     Rgb<T> weight;
+    Rgb<T> photon_weight;
 };
 
 /// White light cut into `count` bands (1 to max_count).
@@ -3025,7 +3034,7 @@ public:
     constexpr explicit SpectralBands(int count) : count_(count)
     {
         if (count < 1 || count > max_count) detail::throw_invalid("dispersion_bands must be in [1, ", max_count, "], got ", count);
-        std::array<double, 3> total{};
+        std::array<double, 3> total{}, total_clipped{};
         std::array<std::array<double, 3>, max_count> rgb{};
         for (int b = 0; b < count; ++b) {
             // Samples [begin, end) of the 81, split as evenly as integers allow.
@@ -3040,16 +3049,18 @@ public:
                 lambda += cie::wavelength(s);
             }
             rgb[std::size_t(b)] = cie::multiply(cie::xyz_to_linear_srgb, xyz);
-            for (int c = 0; c < 3; ++c) {
-                double& v = rgb[std::size_t(b)][std::size_t(c)];
-                v = v > 0 ? v : 0;
-                total[std::size_t(c)] += v;
+            for (std::size_t c = 0; c < 3; ++c) {
+                const double v = rgb[std::size_t(b)][c];
+                total[c] += v;
+                total_clipped[c] += v > 0 ? v : 0;
             }
             bands_[std::size_t(b)].wavelength_nm = T(lambda / (end - begin));
         }
         for (int b = 0; b < count; ++b) {
             const auto& v = rgb[std::size_t(b)];
             bands_[std::size_t(b)].weight = {T(v[0] / total[0]), T(v[1] / total[1]), T(v[2] / total[2])};
+            const auto clipped = [&](std::size_t c) { return T((v[c] > 0 ? v[c] : 0) / total_clipped[c]); };
+            bands_[std::size_t(b)].photon_weight = {clipped(0), clipped(1), clipped(2)};
         }
     }
 
@@ -3124,10 +3135,16 @@ struct SpecularSplit {
 
 namespace detail {
 
-/// A conductor's reflectance, from cos_i alone or from the whole query.
+/// A conductor's reflectance, from cos_i alone or from the whole query; for light of
+/// one wavelength, the material's value at that wavelength where it has one
+/// (`reflectance_at(query, wavelength)`: a measured metal, a film), grey.
 template <Material M>
-[[nodiscard]] Rgb<typename M::scalar_type> conductor_reflectance(const M& material, const SpecularQuery<typename M::scalar_type>& q) noexcept
+[[nodiscard]] Rgb<typename M::scalar_type> conductor_reflectance(const M& material, const SpecularQuery<typename M::scalar_type>& q,
+                                                                 typename M::scalar_type wavelength_nm) noexcept
 {
+    if constexpr (requires { { material.reflectance_at(q, wavelength_nm) } -> std::same_as<typename M::scalar_type>; }) {
+        if (wavelength_nm > 0) return Rgb<typename M::scalar_type>(material.reflectance_at(q, wavelength_nm));
+    }
     if constexpr (requires { material.reflectance(q.cos_i); })
         return material.reflectance(q.cos_i);
     else
@@ -3135,14 +3152,22 @@ template <Material M>
 }
 
 /// An interface's Fresnel share (one, or one per channel), from the cosines and eta or
-/// from the whole query.
+/// from the whole query; for light of one wavelength, the material's value at that
+/// wavelength where it has one (`fresnel_at(query, wavelength)`: a film), grey.
 template <Material M>
-[[nodiscard]] auto interface_fresnel(const M& material, const SpecularQuery<typename M::scalar_type>& q) noexcept
+[[nodiscard]] auto interface_fresnel(const M& material, const SpecularQuery<typename M::scalar_type>& q,
+                                     typename M::scalar_type wavelength_nm) noexcept
 {
-    if constexpr (requires { material.fresnel(q.cos_i, q.cos_t, q.eta); })
-        return material.fresnel(q.cos_i, q.cos_t, q.eta);
-    else
+    using T = typename M::scalar_type;
+    if constexpr (requires { { material.fresnel_at(q, wavelength_nm) } -> std::same_as<T>; }) {
+        using Share = decltype(material.fresnel(q));
+        if (wavelength_nm > 0) return Share(material.fresnel_at(q, wavelength_nm));
         return material.fresnel(q);
+    } else if constexpr (requires { material.fresnel(q.cos_i, q.cos_t, q.eta); }) {
+        return material.fresnel(q.cos_i, q.cos_t, q.eta);
+    } else {
+        return material.fresnel(q);
+    }
 }
 
 } // namespace detail
@@ -3182,7 +3207,8 @@ template <Material M>
         const auto refracted = refraction(d, n, eta);
         if (refracted) split.refracted = refracted->direction;
         if (refracted) {
-            const auto fresnel = detail::interface_fresnel(material, SpecularQuery<T>{cos_i, refracted->cos_t, eta, entering, p});
+            const SpecularQuery<T> query{cos_i, refracted->cos_t, eta, entering, p};
+            const auto fresnel = detail::interface_fresnel(material, query, wavelength_nm);
             if constexpr (std::same_as<decltype(fresnel), const T>) {
                 split.reflected_share = fresnel;
             } else {
@@ -3193,7 +3219,7 @@ template <Material M>
         split.kr = material.reflection_tint() * split.fresnel;
         split.kt = material.transmission_tint() * (Rgb<T>(T(1)) - split.fresnel);
     } else {
-        split.kr = detail::conductor_reflectance(material, SpecularQuery<T>{cos_i, T(0), T(1), entering, p});
+        split.kr = detail::conductor_reflectance(material, SpecularQuery<T>{cos_i, T(0), T(1), entering, p}, wavelength_nm);
     }
     return split;
 }
@@ -4085,7 +4111,7 @@ struct PhotonTracerConfig {
     std::uint64_t seed = 0;
     unsigned threads = 0; ///< 0 = all hardware threads
     /// A white photon meeting a dispersive interface takes one of this many wavelength
-    /// bands at random (1 to 81), its power scaled by the band's share of white times
+    /// bands at random (1 to 81), its power scaled by the band's photon_weight times
     /// the band count, and keeps that wavelength from then on.
     int dispersion_bands = SpectralBands<float>::max_count;
 };
@@ -4223,10 +4249,10 @@ private:
                 attenuate_inside(material, c, ray, power);
                 if constexpr (disperses<M>) {
                     if (wavelength == T(0)) {
-                        // One band at random: its share of white, over its probability 1 / count.
+                        // One band at random: its (non-negative) share of white, over its probability 1 / count.
                         const int count = bands_.size();
                         const WavelengthBand<T>& band = bands_[std::min(int(rng.uniform<T>() * T(count)), count - 1)];
-                        power *= band.weight * T(count);
+                        power *= band.photon_weight * T(count);
                         wavelength = band.wavelength_nm;
                     }
                 }
@@ -5108,6 +5134,9 @@ public:
         return U(fresnel_conductor(double(cos_i), n));
     }
 
+    /// The exact reflectance at the query's cosine and one wavelength.
+    [[nodiscard]] T reflectance_at(const SpecularQuery<T>& q, T wavelength_nm) const noexcept { return spectral_reflectance(q.cos_i, wavelength_nm); }
+
     [[nodiscard]] constexpr const metals::MeasuredIndex& index() const noexcept { return *index_; }
     constexpr void validate() const {}
 
@@ -5137,6 +5166,13 @@ struct Conductor {
         requires requires(const Fresnel& f, const SpecularQuery<T>& q) { f.reflectance(q); }
     {
         return fresnel.reflectance(query);
+    }
+    /// The reflectance at one wavelength, for light that carries one (a band of
+    /// dispersed light), where the Fresnel policy knows it.
+    [[nodiscard]] T reflectance_at(const SpecularQuery<T>& query, T wavelength_nm) const noexcept
+        requires requires(const Fresnel& f, const SpecularQuery<T>& q, T l) { { f.reflectance_at(q, l) } -> std::same_as<T>; }
+    {
+        return fresnel.reflectance_at(query, wavelength_nm);
     }
     constexpr void validate() const { fresnel.validate(); }
 };
@@ -5794,6 +5830,10 @@ public:
     {
         return thin_film(FilmStack<double>{1.0, film_index_, d, substrate(lambda_nm)}, cos_i, lambda_nm).reflected();
     }
+    [[nodiscard]] T reflectance_at(const SpecularQuery<T>& q, T wavelength_nm) const noexcept
+    {
+        return T(spectral_reflectance(double(q.cos_i), double(wavelength_nm), double(thickness_.at(q.point))));
+    }
 
 private:
     ThinFilmConductor(T film_index, Thickness thickness, const metals::MeasuredIndex* measured, std::complex<double> constant,
@@ -5859,6 +5899,12 @@ public:
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior_; }
     constexpr void validate() const {} // checked at construction
     [[nodiscard]] std::size_t table_entries() const noexcept { return from_outside_.entries(); }
+
+    /// The film's exact reflectance at one wavelength, for light that carries one.
+    [[nodiscard]] T fresnel_at(const SpecularQuery<T>& q, T wavelength_nm) const noexcept
+    {
+        return T(spectral_reflectance(double(q.cos_i), double(wavelength_nm), double(thickness_.at(q.point)), q.entering));
+    }
 
     /// The exact reflectance at one wavelength, arriving from outside or from inside.
     [[nodiscard]] double spectral_reflectance(double cos_i, double lambda_nm, double d, bool from_outside) const noexcept

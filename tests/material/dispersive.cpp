@@ -97,31 +97,44 @@ TEST_CASE("White light at a dispersive interface: one refracted ray per band, on
     CHECK(rays == 2);
 }
 
-TEST_CASE("Wavelength bands: non-negative, summing to white, each band's wavelength inside it")
+TEST_CASE("Wavelength bands: summing to white, signed for camera rays, non-negative for photons, each wavelength inside its band")
 {
     for (int count : {1, 2, 3, 7, 8, 16, 32, 64, 81}) {
         const SpectralBands<double> bands(count);
-        Rgb<double> sum(0);
+        Rgb<double> sum(0), photon_sum(0);
         double previous = 0;
         for (const auto& band : bands) {
-            CHECK(band.weight.x >= 0);
-            CHECK(band.weight.y >= 0);
-            CHECK(band.weight.z >= 0);
+            CHECK(band.photon_weight.x >= 0);
+            CHECK(band.photon_weight.y >= 0);
+            CHECK(band.photon_weight.z >= 0);
             CHECK(band.wavelength_nm > previous);
             CHECK(band.wavelength_nm >= 380);
             CHECK(band.wavelength_nm <= 780);
             previous = band.wavelength_nm;
             sum += band.weight;
+            photon_sum += band.photon_weight;
         }
-        CHECK(sum.x == Approx(1).epsilon(1e-12));
-        CHECK(sum.y == Approx(1).epsilon(1e-12));
-        CHECK(sum.z == Approx(1).epsilon(1e-12));
+        for (const Rgb<double>& s : {sum, photon_sum}) {
+            CHECK(s.x == Approx(1).epsilon(1e-12));
+            CHECK(s.y == Approx(1).epsilon(1e-12));
+            CHECK(s.z == Approx(1).epsilon(1e-12));
+        }
     }
-    // Red light is red, blue light blue.
+    // With one band per sample, the signed weights integrate a spectrum as
+    // cie::reflectance_to_rgb does (over 380-780 nm rather than 360-830).
+    const auto spectrum = [](double lambda) { return 0.5 + 0.4 * std::sin(lambda / 37.0); };
+    Rgb<double> banded(0);
+    for (const auto& band : SpectralBands<double>(81)) banded += band.weight * spectrum(band.wavelength_nm);
+    const Rgb<double> integral = cie::reflectance_to_rgb<double>(spectrum);
+    CHECK(std::abs(banded.x - integral.x) < 2e-3);
+    CHECK(std::abs(banded.y - integral.y) < 2e-3);
+    CHECK(std::abs(banded.z - integral.z) < 2e-3);
+    // Blue-green light has negative red: kept for camera rays, clipped for photons.
     const SpectralBands<double> three(3);
-    CHECK(three[0].weight.z > 0.9); // 380-515 nm: most of the blue
-    CHECK(three[2].weight.x > 0);
-    CHECK(three[2].weight.y == 0);
+    CHECK(three[0].photon_weight.z > 0.9); // 380-515 nm: most of the blue
+    CHECK(three[2].photon_weight.y == 0);
+    CHECK(three[0].weight.x < 0);
+    CHECK(three[0].photon_weight.x == 0);
     CHECK_THROWS_WITH_AS(SpectralBands<double>(0), doctest::Contains("dispersion_bands"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(SpectralBands<double>(82), doctest::Contains("dispersion_bands"), std::invalid_argument);
 }

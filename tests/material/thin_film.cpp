@@ -113,6 +113,11 @@ TEST_CASE("A thin film over gold: thickness 0 is bare gold; photons through a co
     const auto s = prism::delta_split(oil, d, up, true, {});
     CHECK(worst_channel(s.kr + s.kt, Rgb<double>(1)) < 1e-12);
     CHECK(!s.fresnel_is_grey());
+    // Light of one wavelength (a band of dispersed light) reads the exact Airy value.
+    const auto band = prism::delta_split(oil, d, up, true, {}, 550.0);
+    const double cos_i = -prism::dot(d, up);
+    CHECK(band.kr.x == Approx(oil.spectral_reflectance(cos_i, 550.0, 300.0, true)).epsilon(1e-6));
+    CHECK(band.fresnel_is_grey());
     prism::Pcg32 rng(5, 9);
     prism::Crossing<double> hit = prism::Crossing<double>::without_surface(1, true);
     hit.point = {0, 0, 0};

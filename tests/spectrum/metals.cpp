@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <prism/material/conductor.hpp>
+#include <prism/material/scattering.hpp>
+#include <prism/spectrum/bands.hpp>
 #include <prism/spectrum/metals.hpp>
 
 #include <doctest/doctest.h>
@@ -63,4 +65,27 @@ TEST_CASE("MeasuredConductor's table against its exact integral at 10^4 cosines"
         }
         CHECK(worst < 5e-4);
     }
+}
+
+TEST_CASE("A band of dispersed light meets a measured metal at its own wavelength; the bands add up to the RGB integral")
+{
+    const auto gold = prism::measured_metal<double>(metals::gold);
+    const prism::Vec3<double> d{0.6, -0.8, 0}, up{0, 1, 0};
+    // One band: the exact reflectance at its wavelength, the same in every channel.
+    const auto band = prism::delta_split(gold, d, up, true, {}, 550.0);
+    CHECK(band.kr.x == Approx(gold.fresnel.spectral_reflectance(0.8, 550.0)).epsilon(1e-12));
+    CHECK(band.kr.y == band.kr.x);
+    CHECK(band.kr.z == band.kr.x);
+    // All 81 bands, each weighted by its (signed) share of white, integrate gold's
+    // spectrum as the RGB reduction does: gold seen in dispersed light is still gold.
+    prism::Rgb<double> sum(0);
+    for (const auto& b : prism::SpectralBands<double>(81)) sum += b.weight * gold.fresnel.spectral_reflectance(0.8, b.wavelength_nm);
+    const auto integral = prism::cie::reflectance_to_rgb<double>([&](double l) { return gold.fresnel.spectral_reflectance(0.8, l); });
+    CHECK(std::abs(sum.x - integral.x) < 3e-3);
+    CHECK(std::abs(sum.y - integral.y) < 3e-3);
+    CHECK(std::abs(sum.z - integral.z) < 3e-3);
+    // White light reads the table: the same integral, clipped to the gamut.
+    const auto white = prism::delta_split(gold, d, up, true, {});
+    CHECK(white.kr.x == Approx(std::min(integral.x, 1.0)).epsilon(1e-3));
+    CHECK(white.kr.z == Approx(integral.z).epsilon(1e-3));
 }

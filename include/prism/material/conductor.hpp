@@ -83,6 +83,9 @@ public:
         return U(fresnel_conductor(double(cos_i), n));
     }
 
+    /// The exact reflectance at the query's cosine and one wavelength.
+    [[nodiscard]] T reflectance_at(const SpecularQuery<T>& q, T wavelength_nm) const noexcept { return spectral_reflectance(q.cos_i, wavelength_nm); }
+
     [[nodiscard]] constexpr const metals::MeasuredIndex& index() const noexcept { return *index_; }
     constexpr void validate() const {}
 
@@ -112,6 +115,13 @@ struct Conductor {
         requires requires(const Fresnel& f, const SpecularQuery<T>& q) { f.reflectance(q); }
     {
         return fresnel.reflectance(query);
+    }
+    /// The reflectance at one wavelength, for light that carries one (a band of
+    /// dispersed light), where the Fresnel policy knows it.
+    [[nodiscard]] T reflectance_at(const SpecularQuery<T>& query, T wavelength_nm) const noexcept
+        requires requires(const Fresnel& f, const SpecularQuery<T>& q, T l) { { f.reflectance_at(q, l) } -> std::same_as<T>; }
+    {
+        return fresnel.reflectance_at(query, wavelength_nm);
     }
     constexpr void validate() const { fresnel.validate(); }
 };

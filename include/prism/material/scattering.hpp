@@ -65,10 +65,16 @@ struct SpecularSplit {
 
 namespace detail {
 
-/// A conductor's reflectance, from cos_i alone or from the whole query.
+/// A conductor's reflectance, from cos_i alone or from the whole query; for light of
+/// one wavelength, the material's value at that wavelength where it has one
+/// (`reflectance_at(query, wavelength)`: a measured metal, a film), grey.
 template <Material M>
-[[nodiscard]] Rgb<typename M::scalar_type> conductor_reflectance(const M& material, const SpecularQuery<typename M::scalar_type>& q) noexcept
+[[nodiscard]] Rgb<typename M::scalar_type> conductor_reflectance(const M& material, const SpecularQuery<typename M::scalar_type>& q,
+                                                                 typename M::scalar_type wavelength_nm) noexcept
 {
+    if constexpr (requires { { material.reflectance_at(q, wavelength_nm) } -> std::same_as<typename M::scalar_type>; }) {
+        if (wavelength_nm > 0) return Rgb<typename M::scalar_type>(material.reflectance_at(q, wavelength_nm));
+    }
     if constexpr (requires { material.reflectance(q.cos_i); })
         return material.reflectance(q.cos_i);
     else
@@ -76,14 +82,22 @@ template <Material M>
 }
 
 /// An interface's Fresnel share (one, or one per channel), from the cosines and eta or
-/// from the whole query.
+/// from the whole query; for light of one wavelength, the material's value at that
+/// wavelength where it has one (`fresnel_at(query, wavelength)`: a film), grey.
 template <Material M>
-[[nodiscard]] auto interface_fresnel(const M& material, const SpecularQuery<typename M::scalar_type>& q) noexcept
+[[nodiscard]] auto interface_fresnel(const M& material, const SpecularQuery<typename M::scalar_type>& q,
+                                     typename M::scalar_type wavelength_nm) noexcept
 {
-    if constexpr (requires { material.fresnel(q.cos_i, q.cos_t, q.eta); })
-        return material.fresnel(q.cos_i, q.cos_t, q.eta);
-    else
+    using T = typename M::scalar_type;
+    if constexpr (requires { { material.fresnel_at(q, wavelength_nm) } -> std::same_as<T>; }) {
+        using Share = decltype(material.fresnel(q));
+        if (wavelength_nm > 0) return Share(material.fresnel_at(q, wavelength_nm));
         return material.fresnel(q);
+    } else if constexpr (requires { material.fresnel(q.cos_i, q.cos_t, q.eta); }) {
+        return material.fresnel(q.cos_i, q.cos_t, q.eta);
+    } else {
+        return material.fresnel(q);
+    }
 }
 
 } // namespace detail
@@ -123,7 +137,8 @@ template <Material M>
         const auto refracted = refraction(d, n, eta);
         if (refracted) split.refracted = refracted->direction;
         if (refracted) {
-            const auto fresnel = detail::interface_fresnel(material, SpecularQuery<T>{cos_i, refracted->cos_t, eta, entering, p});
+            const SpecularQuery<T> query{cos_i, refracted->cos_t, eta, entering, p};
+            const auto fresnel = detail::interface_fresnel(material, query, wavelength_nm);
             if constexpr (std::same_as<decltype(fresnel), const T>) {
                 split.reflected_share = fresnel;
             } else {
@@ -134,7 +149,7 @@ template <Material M>
         split.kr = material.reflection_tint() * split.fresnel;
         split.kt = material.transmission_tint() * (Rgb<T>(T(1)) - split.fresnel);
     } else {
-        split.kr = detail::conductor_reflectance(material, SpecularQuery<T>{cos_i, T(0), T(1), entering, p});
+        split.kr = detail::conductor_reflectance(material, SpecularQuery<T>{cos_i, T(0), T(1), entering, p}, wavelength_nm);
     }
     return split;
 }

@@ -171,6 +171,10 @@ public:
     {
         return thin_film(FilmStack<double>{1.0, film_index_, d, substrate(lambda_nm)}, cos_i, lambda_nm).reflected();
     }
+    [[nodiscard]] T reflectance_at(const SpecularQuery<T>& q, T wavelength_nm) const noexcept
+    {
+        return T(spectral_reflectance(double(q.cos_i), double(wavelength_nm), double(thickness_.at(q.point))));
+    }
 
 private:
     ThinFilmConductor(T film_index, Thickness thickness, const metals::MeasuredIndex* measured, std::complex<double> constant,
@@ -236,6 +240,12 @@ public:
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior_; }
     constexpr void validate() const {} // checked at construction
     [[nodiscard]] std::size_t table_entries() const noexcept { return from_outside_.entries(); }
+
+    /// The film's exact reflectance at one wavelength, for light that carries one.
+    [[nodiscard]] T fresnel_at(const SpecularQuery<T>& q, T wavelength_nm) const noexcept
+    {
+        return T(spectral_reflectance(double(q.cos_i), double(wavelength_nm), double(thickness_.at(q.point)), q.entering));
+    }
 
     /// The exact reflectance at one wavelength, arriving from outside or from inside.
     [[nodiscard]] double spectral_reflectance(double cos_i, double lambda_nm, double d, bool from_outside) const noexcept

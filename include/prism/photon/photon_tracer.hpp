@@ -51,7 +51,7 @@ struct PhotonTracerConfig {
     std::uint64_t seed = 0;
     unsigned threads = 0; ///< 0 = all hardware threads
     /// A white photon meeting a dispersive interface takes one of this many wavelength
-    /// bands at random (1 to 81), its power scaled by the band's share of white times
+    /// bands at random (1 to 81), its power scaled by the band's photon_weight times
     /// the band count, and keeps that wavelength from then on.
     int dispersion_bands = SpectralBands<float>::max_count;
 };
@@ -189,10 +189,10 @@ private:
                 attenuate_inside(material, c, ray, power);
                 if constexpr (disperses<M>) {
                     if (wavelength == T(0)) {
-                        // One band at random: its share of white, over its probability 1 / count.
+                        // One band at random: its (non-negative) share of white, over its probability 1 / count.
                         const int count = bands_.size();
                         const WavelengthBand<T>& band = bands_[std::min(int(rng.uniform<T>() * T(count)), count - 1)];
-                        power *= band.weight * T(count);
+                        power *= band.photon_weight * T(count);
                         wavelength = band.wavelength_nm;
                     }
                 }
