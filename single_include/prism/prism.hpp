@@ -3187,22 +3187,25 @@ template <Material M>
 /// How a mirror or an interface at point p splits the unit incident direction d
 /// arriving at a surface whose unit normal n faces it (Crossing::facing_normal);
 /// `entering`: d goes into the material; light of one wavelength (nanometres), or 0 for
-/// white light. A dielectric splits by Fresnel (all to reflection under total internal
-/// reflection) times its tints, with eta = n_inside or 1 / n_inside by the side (n at the
+/// white light; `outside_index`: the index of the medium on the material's other side
+/// (1, the scene's air, unless the object is nested in another: medium/nesting.hpp). A
+/// dielectric splits by Fresnel (all to reflection under total internal reflection)
+/// times its tints, with eta = n_inside / n_outside or its inverse by the side (n at the
 /// wavelength for a dispersive one); a conductor reflects by its reflectance.
 template <Material M>
     requires(M::reflects || M::transmits)
 [[nodiscard]] SpecularSplit<typename M::scalar_type> delta_split(const M& material, const Vec3<typename M::scalar_type>& d,
                                                                 const Vec3<typename M::scalar_type>& n, bool entering,
                                                                 const Vec3<typename M::scalar_type>& p,
-                                                                typename M::scalar_type wavelength_nm = 0) noexcept
+                                                                typename M::scalar_type wavelength_nm = 0,
+                                                                typename M::scalar_type outside_index = 1) noexcept
 {
     using T = typename M::scalar_type;
     const T cos_i = clamp(-dot(d, n), T(0), T(1));
     SpecularSplit<T> split;
     if constexpr (M::transmits) {
         const T n_inside = index_at(material, wavelength_nm);
-        const T eta = entering ? n_inside : T(1) / n_inside;
+        const T eta = entering ? n_inside / outside_index : outside_index / n_inside;
         // Snell's cos_t, found once, serves the direction and the Fresnel equations.
         const auto refracted = refraction(d, n, eta);
         if (refracted) split.refracted = refracted->direction;
@@ -3225,34 +3228,36 @@ template <Material M>
 }
 
 /// The rays a mirror or an interface sends on, each passed to
-/// emit(direction, weight, wavelength_nm): the reflected ray, then the refracted one. Where
-/// white light (wavelength 0) meets a dispersive interface it refracts band by band, one
-/// ray per band of `bands`, each weighted by its band's share of white and carrying its
-/// wavelength; the reflected ray, whose direction no wavelength changes, stays white,
-/// weighted by the bands' reflectances summed (so white light meeting a dispersive
-/// interface costs one ray more per band, not per band squared).
-template <Material M, class Emit>
+/// emit(direction, weight, wavelength_nm, transmitted): the reflected ray, then the
+/// refracted one. `outside_index(wavelength_nm)` is the index of the medium on the
+/// material's other side. Where white light (wavelength 0) meets a dispersive interface
+/// it refracts band by band, one ray per band of `bands`, each weighted by its band's
+/// share of white and carrying its wavelength; the reflected ray, whose direction no
+/// wavelength changes, stays white, weighted by the bands' reflectances summed (so white
+/// light meeting a dispersive interface costs one ray more per band, not per band squared).
+template <Material M, class OutsideIndex, class Emit>
     requires(M::reflects || M::transmits)
 void for_each_delta_ray(const M& material, const Vec3<typename M::scalar_type>& d, const Vec3<typename M::scalar_type>& n,
                         const Crossing<typename M::scalar_type>& hit, typename M::scalar_type wavelength_nm,
-                        const SpectralBands<typename M::scalar_type>& bands, Emit&& emit)
+                        const SpectralBands<typename M::scalar_type>& bands, OutsideIndex&& outside_index, Emit&& emit)
 {
     using T = typename M::scalar_type;
     if constexpr (disperses<M>) {
         if (wavelength_nm == T(0)) {
             Rgb<T> kr{T(0)};
             for (const WavelengthBand<T>& band : bands) {
-                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, band.wavelength_nm);
+                const SpecularSplit<T> split =
+                    delta_split(material, d, n, hit.entering, hit.point, band.wavelength_nm, T(outside_index(band.wavelength_nm)));
                 kr += band.weight * split.kr;
-                if (split.refracted) emit(*split.refracted, band.weight * split.kt, band.wavelength_nm);
+                if (split.refracted) emit(*split.refracted, band.weight * split.kt, band.wavelength_nm, true);
             }
-            emit(reflect(d, n), kr, T(0));
+            emit(reflect(d, n), kr, T(0), false);
             return;
         }
     }
-    const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, wavelength_nm);
-    emit(reflect(d, n), split.kr, wavelength_nm);
-    if (split.refracted) emit(*split.refracted, split.kt, wavelength_nm);
+    const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, wavelength_nm, T(outside_index(wavelength_nm)));
+    emit(reflect(d, n), split.kr, wavelength_nm, false);
+    if (split.refracted) emit(*split.refracted, split.kt, wavelength_nm, true);
 }
 
 // Media
@@ -3309,14 +3314,15 @@ struct PhotonBounce {
 /// conductor reflects by its reflectance. A material with a diffuse and a delta lobe
 /// first chooses one by their largest channels, dividing the power by that choice's
 /// probability. A photon of one wavelength (nanometres; 0: white) refracts at its
-/// index. Returns nothing when the photon is absorbed; scales `power` otherwise.
+/// index; `outside_index` is the index on the material's other side (1: air). Returns nothing when the photon is absorbed; scales `power` otherwise.
 template <Material M>
 [[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
                                                                                    const Crossing<typename M::scalar_type>& hit,
                                                                                    const Vec3<typename M::scalar_type>& d,
                                                                                    const Vec3<typename M::scalar_type>& n,
                                                                                    Rgb<typename M::scalar_type>& power, Pcg32& rng,
-                                                                                   typename M::scalar_type wavelength_nm = 0) noexcept
+                                                                                   typename M::scalar_type wavelength_nm = 0,
+                                                                                   typename M::scalar_type outside_index = 1) noexcept
 {
     using T = typename M::scalar_type;
     using Bounce = std::optional<PhotonBounce<T>>;
@@ -3345,7 +3351,7 @@ template <Material M>
     if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
         // Both lobes: choose one by its share of the reflected light (largest channels).
         const Rgb<T> reflectance = diffuse_response(material, hit.point).photon_reflectance();
-        const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, wavelength_nm);
+        const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, wavelength_nm, outside_index);
         const T w_diffuse = max_component(reflectance), w_delta = max_component(split.kr + split.kt);
         if (!(w_diffuse + w_delta > T(0))) return std::nullopt;
         const T p_diffuse = w_diffuse / (w_diffuse + w_delta);
@@ -3358,7 +3364,7 @@ template <Material M>
     } else if constexpr (M::has_diffuse) {
         return scatter_diffusely(diffuse_response(material, hit.point).photon_reflectance());
     } else {
-        return scatter_specularly(delta_split(material, d, n, hit.entering, hit.point, wavelength_nm));
+        return scatter_specularly(delta_split(material, d, n, hit.entering, hit.point, wavelength_nm, outside_index));
     }
 }
 
@@ -3745,6 +3751,174 @@ void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const 
         const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
         f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
     });
+}
+
+} // namespace prism
+
+// ---- prism/medium/nesting.hpp ----
+// Nested dielectrics: the media a ray is inside of, so that water in a glass, an air
+// bubble in glass or a glass in water refract with the right n1 / n2 at every interface.
+//
+// A ray carries the transmissive objects it has entered (a MediumStack). At an
+// interface, the medium on the far side is the one the ray is inside of apart from this
+// object: the stack's top (or the scene's air, index 1, when it is empty). Overlapping
+// volumes resolve by priority (Schmidt and Budge, "Simple Nested Dielectrics in Ray
+// Traced Images", JGT 2002): a material may set `priority` (0 by default), and a
+// surface of an object whose priority is below that of the medium the ray is in is a
+// false interface: the ray passes it unchanged, only noting that it entered or left. So
+// water modelled to overlap a glass's inner wall slightly (no coincident surfaces) is
+// cut by the glass, which has the higher priority. Among equal priorities the most
+// recently entered object is the medium, which is right for properly nested objects.
+
+
+#include <array>
+#include <cstdint>
+
+namespace prism {
+
+/// A material's nesting priority: its `priority` member, or 0.
+template <Material M>
+[[nodiscard]] constexpr int nesting_priority(const M& material) noexcept
+{
+    if constexpr (requires { { material.priority } -> std::convertible_to<int>; })
+        return int(material.priority);
+    else
+        return 0;
+}
+
+/// An object a ray is inside of: where it is in the scene, and its priority.
+struct Inside {
+    std::uint32_t slot = 0;
+    std::uint32_t index = 0;
+    int priority = 0;
+
+    [[nodiscard]] constexpr bool same_object(const Inside& other) const noexcept { return slot == other.slot && index == other.index; }
+};
+
+/// The transmissive objects a ray is inside of, at most `capacity` deep (a ray entering
+/// more than that many at once forgets the oldest, and is then outside it).
+class MediumStack {
+public:
+    static constexpr std::size_t capacity = 8;
+
+    [[nodiscard]] constexpr bool empty() const noexcept { return count_ == 0; }
+    [[nodiscard]] constexpr std::size_t size() const noexcept { return count_; }
+
+    /// The medium the ray travels in: the highest priority, the latest entered among equals.
+    [[nodiscard]] constexpr const Inside* top() const noexcept
+    {
+        const Inside* best = nullptr;
+        for (std::size_t i = 0; i < count_; ++i)
+            if (best == nullptr || items_[i].priority >= best->priority) best = &items_[i];
+        return best;
+    }
+
+    [[nodiscard]] constexpr bool contains(const Inside& object) const noexcept
+    {
+        for (std::size_t i = 0; i < count_; ++i)
+            if (items_[i].same_object(object)) return true;
+        return false;
+    }
+
+    /// This stack with `object` entered.
+    [[nodiscard]] constexpr MediumStack entered(const Inside& object) const noexcept
+    {
+        MediumStack next = *this;
+        if (next.count_ == capacity) next.remove_at(0);
+        next.items_[next.count_++] = object;
+        return next;
+    }
+
+    /// This stack with `object` left (unchanged if the ray was not inside it).
+    [[nodiscard]] constexpr MediumStack left(const Inside& object) const noexcept
+    {
+        MediumStack next = *this;
+        for (std::size_t i = next.count_; i-- > 0;)
+            if (next.items_[i].same_object(object)) {
+                next.remove_at(i);
+                break;
+            }
+        return next;
+    }
+
+private:
+    constexpr void remove_at(std::size_t i) noexcept
+    {
+        for (std::size_t j = i + 1; j < count_; ++j) items_[j - 1] = items_[j];
+        --count_;
+    }
+
+    std::array<Inside, capacity> items_{};
+    std::size_t count_ = 0;
+};
+
+/// What a ray meeting a transmissive object's surface does there, given the media it is
+/// in: whether the interface is real (false: the ray passes it unchanged), and the
+/// media beyond it, for a ray that crosses (refracted, or passing a false interface); a
+/// reflected ray stays in the current ones. The medium on the object's other side is
+/// the current one when entering and the one beyond when leaving (`outside_of`).
+struct Interface {
+    bool real = true;
+    MediumStack beyond{};
+};
+
+/// The interface a ray in `media` meets at a surface of `object` (entering or leaving).
+[[nodiscard]] constexpr Interface nested_interface(const MediumStack& media, const Inside& object, bool entering) noexcept
+{
+    Interface result;
+    if (entering) {
+        result.beyond = media.entered(object);
+        const Inside* current = media.top();
+        result.real = current == nullptr || current->priority <= object.priority;
+        return result;
+    }
+    result.beyond = media.left(object);
+    const Inside* current = media.top();
+    // Leaving an object the ray is inside of but that is not its medium (a higher-priority
+    // object overlaps it here): false. Leaving one it never entered (the camera started
+    // inside it): real, as without nesting.
+    result.real = current == nullptr || current->same_object(object) || !media.contains(object);
+    return result;
+}
+
+/// The object whose medium lies on the far side of a real interface from the object's
+/// inside (none: the scene's air): the medium the ray is in when it enters, the one it
+/// will be in when it leaves.
+[[nodiscard]] constexpr const Inside* outside_of(const MediumStack& media, const Interface& face, bool entering) noexcept
+{
+    return entering ? media.top() : face.beyond.top();
+}
+
+/// The refractive index of the medium of `object` for light of one wavelength (0: white):
+/// 1 for none (the scene's air) or for an object that does not transmit.
+template <class SceneT>
+[[nodiscard]] typename SceneT::scalar_type index_of(const SceneT& scene, const Inside* object, typename SceneT::scalar_type wavelength_nm) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    if (object == nullptr) return T(1);
+    return scene.visit_material(Hit<T>{{}, object->slot, object->index}, [&]<class M>(const M& material) -> T {
+        if constexpr (M::transmits)
+            return index_at(material, wavelength_nm);
+        else
+            return T(1);
+    });
+}
+
+/// Light that reached `hit` along `ray` travelled in the medium the ray is in: multiply
+/// by what it lets through over that length. A ray known to be in no object leaving a
+/// dielectric travelled inside it (the camera started there, or no nesting is tracked).
+template <class SceneT, Material M>
+void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& material, const Crossing<typename M::scalar_type>& hit,
+                       const Ray<typename M::scalar_type>& ray, Rgb<typename M::scalar_type>& light) noexcept
+{
+    using T = typename M::scalar_type;
+    if (const Inside* in = media.top()) {
+        scene.visit_material(Hit<T>{{}, in->slot, in->index}, [&]<class N>(const N& medium_material) {
+            if constexpr (N::transmits) light *= medium_material.medium().transmittance(hit.t * length(ray.direction));
+        });
+    } else {
+        attenuate_inside(material, hit, ray, light);
+    }
 }
 
 } // namespace prism
@@ -4169,6 +4343,7 @@ public:
         if (!scene.bounds().empty()) scene_sphere_ = scene.bounds().bounding_sphere();
         add_emitters(global_, false, {});
         std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
+        drop_nested_targets();
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);
         // A light whose power is finite can still overflow here: a parallel light's
@@ -4219,6 +4394,9 @@ private:
         u = std::clamp((u - start) / p, 0.0, std::nextafter(1.0, 0.0));
         const EmittedPhoton<T> photon =
             scene_.visit_light(e->light, [&](const auto& light) { return light.emit_photon(aim(*e), T(u), T(v)); });
+        // Where two targets' cones overlap, a direction is the first target's to carry:
+        // counted by both, the light sent that way would be counted twice.
+        if (e->aimed && aimed_at_earlier_target(emitters, *e, photon.ray)) return;
         follow(photon.ray, e->power / T(double(count) * p) * photon.weight, photon.without_falloff, rng, caustic_pass, out);
     }
 
@@ -4228,6 +4406,7 @@ private:
         bool direct = true, specular_only = true;
         T travelled = T(0);
         T wavelength = T(0); // white until a dispersive interface splits it
+        MediumStack media;   // the transmissive objects the photon is inside of
         for (int bounce = 0; bounce <= config_.max_bounces; ++bounce) {
             const auto hit = scene_.closest_hit(ray, {T(0), infinity<T>});
             if (!hit) return;
@@ -4235,18 +4414,33 @@ private:
             const Vec3<T> d = normalize(ray.direction);
             travelled += c.t * length(ray.direction);
             const auto stored = [&] { return without_falloff ? power * (travelled * travelled) : power; };
-            const bool scattered = scene_.visit_material(*hit, [&]<class M>(const M& material) -> bool {
+            enum class Next { absorbed, scattered, passed };
+            const Next next_step = scene_.visit_material(*hit, [&]<class M>(const M& material) -> Next {
+                // What the medium it travelled in let through, before anything else.
+                attenuate_segment(scene_, media, material, c, ray, power);
                 if constexpr (has_diffuse<M>) {
                     if (caustic_pass) {
                         if (!direct && specular_only) out.push_back(photon(c.point, stored(), d, Photon::caustic));
-                        return false;
+                        return Next::absorbed;
                     }
                     std::uint8_t flags = direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
                     if (!direct && specular_only) flags |= Photon::caustic;
                     out.push_back(photon(c.point, stored(), d, flags));
                     if (direct && config_.shadow_photons) store_shadow_photons(c, d, out);
                 }
-                attenuate_inside(material, c, ray, power);
+                // The media beyond the surface, the object whose medium lies on its far
+                // side, and false interfaces (inside a medium of higher priority) passed.
+                Interface face{true, media};
+                const Inside* outside = nullptr;
+                if constexpr (transmits<M>) {
+                    face = nested_interface(media, {hit->slot, hit->index, nesting_priority(material)}, c.entering);
+                    if (!face.real) {
+                        ray = spawn_ray(c.point, c.error, c.normal, d);
+                        media = face.beyond;
+                        return Next::passed;
+                    }
+                    outside = outside_of(media, face, c.entering);
+                }
                 if constexpr (disperses<M>) {
                     if (wavelength == T(0)) {
                         // One band at random: its (non-negative) share of white, over its probability 1 / count.
@@ -4256,14 +4450,16 @@ private:
                         wavelength = band.wavelength_nm;
                     }
                 }
-                const auto next = scatter_photon(material, c, d, c.facing_normal(), power, rng, wavelength);
-                if (!next) return false;
+                const Vec3<T> n = c.facing_normal();
+                const auto next = scatter_photon(material, c, d, n, power, rng, wavelength, index_of(scene_, outside, wavelength));
+                if (!next) return Next::absorbed;
                 ray = spawn_ray(c.point, c.error, c.normal, next->direction);
                 if (next->diffuse) specular_only = false;
-                return true;
+                if (transmits<M> && dot(next->direction, n) < T(0)) media = face.beyond; // refracted
+                return Next::scattered;
             });
-            if (!scattered) return;
-            direct = false;
+            if (next_step == Next::absorbed) return;
+            if (next_step == Next::scattered) direct = false;
         }
     }
 
@@ -4299,6 +4495,41 @@ private:
             e.power = scene_.visit_light(i, [&](const auto& light) { return light.photon_power(aim(e)); });
             if (max_component(e.power) > T(0)) emitters.push_back(e);
         }
+    }
+
+    /// Whether a photon of emitter e leaving along `ray` also heads for the target of an
+    /// earlier emitter of the same light (its ray meets that target's sphere).
+    [[nodiscard]] static bool aimed_at_earlier_target(const std::vector<Emitter<T>>& emitters, const Emitter<T>& e, const Ray<T>& ray) noexcept
+    {
+        const Vec3<T> d = normalize(ray.direction);
+        for (const Emitter<T>& other : emitters) {
+            if (&other == &e) return false;
+            if (!other.aimed || other.light != e.light) continue;
+            const Vec3<T> oc = other.target.center - ray.origin;
+            const T along = dot(oc, d), off2 = length_squared(oc) - along * along, r2 = other.target.radius * other.target.radius;
+            if (off2 <= r2 && (along > T(0) || length_squared(oc) <= r2)) return true;
+        }
+        return false;
+    }
+
+    /// Drop the targets whose sphere lies inside another target's (an object nested in a
+    /// glass): every photon aimed at them would be the outer target's to carry.
+    void drop_nested_targets()
+    {
+        std::vector<Emitter<T>> kept;
+        for (std::size_t i = 0; i < targets_.size(); ++i) {
+            const BoundingSphere<T>& a = targets_[i].target;
+            bool nested = false;
+            for (std::size_t j = 0; j < targets_.size() && !nested; ++j) {
+                if (j == i || targets_[j].light != targets_[i].light) continue;
+                const BoundingSphere<T>& b = targets_[j].target;
+                const bool inside = length(a.center - b.center) + a.radius <= b.radius;
+                const bool same = a.center == b.center && a.radius == b.radius;
+                nested = inside && (!same || j < i); // of two equal spheres, keep the first
+            }
+            if (!nested) kept.push_back(targets_[i]);
+        }
+        targets_ = std::move(kept);
     }
 
     /// Every light aimed at each bounded specular object of the slot.
@@ -4444,7 +4675,7 @@ public:
 
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
 
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0)); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), {}); }
 
     /// What the nearest global photons say about the light's visibility at p (normal n
     /// facing the viewer): true when the `visibility_k` nearest within global.radius
@@ -4472,18 +4703,20 @@ private:
             detail::throw_invalid(name, " filter must be box, cone or gaussian, got the value ", static_cast<int>(e.filter));
     }
 
-    /// Radiance along the ray for light of one wavelength (nanometres), or of all (0).
-    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength) const noexcept
+    /// Radiance along the ray for light of one wavelength (nanometres), or of all (0), in
+    /// the transmissive objects `media` (medium/nesting.hpp).
+    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength, const MediumStack& media) const noexcept
     {
         const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
         if (!hit) return scene_->background;
-        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, ray, hit->crossing, depth, weight, rng, wavelength); });
+        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, ray, *hit, depth, weight, rng, wavelength, media); });
     }
 
     template <class M>
-    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Crossing<T>& hit, int depth, const Rgb<T>& weight,
-                               Pcg32& rng, T wavelength) const noexcept
+    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight, Pcg32& rng,
+                               T wavelength, const MediumStack& media) const noexcept
     {
+        const Crossing<T>& hit = h.crossing;
         const Vec3<T>& d = ray.direction;
         const Vec3<T> n = hit.facing_normal();
         Rgb<T> radiance{T(0)};
@@ -4496,13 +4729,27 @@ private:
         }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                for_each_delta_ray(material, d, n, hit, wavelength, bands_, [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda) {
-                    if (max_component(weight * k) > config_.min_weight)
-                        radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1, weight * k, rng, lambda);
-                });
+                const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
+                    const auto outside_index = [&](T lambda) { return index_of(*scene_, outside, lambda); };
+                    for_each_delta_ray(material, d, n, hit, wavelength, bands_, outside_index,
+                                       [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
+                                           if (max_component(weight * k) > config_.min_weight)
+                                               radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1, weight * k,
+                                                                     rng, lambda, transmitted ? beyond : media);
+                                       });
+                };
+                if constexpr (transmits<M>) {
+                    const Interface face = nested_interface(media, {h.slot, h.index, nesting_priority(material)}, hit.entering);
+                    if (face.real)
+                        follow(face.beyond, outside_of(media, face, hit.entering));
+                    else
+                        radiance = trace(spawn_ray(hit.point, hit.error, hit.normal, d), depth + 1, weight, rng, wavelength, face.beyond);
+                } else {
+                    follow(media, nullptr);
+                }
             }
         }
-        attenuate_inside(material, hit, ray, radiance);
+        attenuate_segment(*scene_, media, material, hit, ray, radiance);
         return radiance;
     }
 
@@ -4594,8 +4841,8 @@ public:
     Whitted(const SceneT&& scene, Config config = {}) = delete;
 
     /// Radiance arriving along the ray (its direction must be unit length).
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0)); }
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0)); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
 
     [[nodiscard]] const Config& config() const noexcept { return config_; }
 
@@ -4603,20 +4850,22 @@ private:
     // Whitted Private Methods
 
     /// Radiance along the ray for light of one wavelength (nanometres), or of all (0):
-    /// a ray carries one once it has refracted through a dispersive interface.
-    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength) const noexcept
+    /// a ray carries one once it has refracted through a dispersive interface. `media`:
+    /// the transmissive objects the ray is inside of (medium/nesting.hpp).
+    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength, const MediumStack& media) const noexcept
     {
         const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
         if (!hit) return scene_->background;
         return scene_->visit_material(*hit, [&](const auto& material) {
-            return shade(material, ray, hit->crossing, depth, weight, wavelength);
+            return shade(material, ray, *hit, depth, weight, wavelength, media);
         });
     }
 
     template <class M>
-    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Crossing<T>& hit, int depth,
-                               const Rgb<T>& weight, T wavelength) const noexcept
+    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight,
+                               T wavelength, const MediumStack& media) const noexcept
     {
+        const Crossing<T>& hit = h.crossing;
         const Vec3<T>& d = ray.direction;
         const Vec3<T> n = hit.facing_normal();
         Rgb<T> radiance{T(0)};
@@ -4625,16 +4874,32 @@ private:
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                for_each_delta_ray(material, d, n, hit, wavelength, bands_, [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda) {
-                    const Rgb<T> next_weight = weight * k;
-                    if (max_component(next_weight) > config_.min_weight)
-                        radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1, next_weight, lambda);
-                });
+                // Reflected rays stay in the ray's media; refracted ones go on in `beyond`,
+                // and the medium of `outside` lies on the surface's far side.
+                const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
+                    const auto outside_index = [&](T lambda) { return index_of(*scene_, outside, lambda); };
+                    for_each_delta_ray(material, d, n, hit, wavelength, bands_, outside_index,
+                                       [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
+                                           const Rgb<T> next_weight = weight * k;
+                                           if (max_component(next_weight) > config_.min_weight)
+                                               radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1,
+                                                                     next_weight, lambda, transmitted ? beyond : media);
+                                       });
+                };
+                if constexpr (transmits<M>) {
+                    const Interface face = nested_interface(media, {h.slot, h.index, nesting_priority(material)}, hit.entering);
+                    if (face.real)
+                        follow(face.beyond, outside_of(media, face, hit.entering));
+                    else // a surface inside a medium of higher priority: the ray passes on
+                        radiance = trace(spawn_ray(hit.point, hit.error, hit.normal, d), depth + 1, weight, wavelength, face.beyond);
+                } else {
+                    follow(media, nullptr);
+                }
             }
         }
 
-        // A ray leaving a dielectric travelled inside it from its origin to here.
-        attenuate_inside(material, hit, ray, radiance);
+        // The light arriving here travelled in the ray's medium from its origin.
+        attenuate_segment(*scene_, media, material, hit, ray, radiance);
         return radiance;
     }
 
@@ -5262,6 +5527,7 @@ struct Dielectric {
     Interior interior{}; ///< the medium that fills it
     T kr = T(1);
     T kt = T(1);
+    int priority = 0; ///< where it overlaps another transmissive object, the higher priority's medium wins (medium/nesting.hpp)
 
     // Dielectric capabilities (DeltaTransmission, InteriorMedium)
 
@@ -5540,6 +5806,7 @@ struct DispersiveDielectric {
     Interior interior{};
     T kr = T(1);
     T kt = T(1);
+    int priority = 0; ///< where it overlaps another transmissive object, the higher priority's medium wins (medium/nesting.hpp)
 
     /// The index at a vacuum wavelength in nanometres.
     [[nodiscard]] T refractive_index(T wavelength_nm) const noexcept

@@ -71,8 +71,10 @@ TEST_CASE("White light at a dispersive interface: one refracted ray per band, on
     hit.normal = n;
     Rgb<double> total(0);
     int refracted = 0, reflected = 0;
-    for_each_delta_ray(glass, d, n, hit, 0.0, bands, [&](const Vec3<double>& direction, const Rgb<double>& k, double lambda) {
+    const auto air = [](double) { return 1.0; };
+    for_each_delta_ray(glass, d, n, hit, 0.0, bands, air, [&](const Vec3<double>& direction, const Rgb<double>& k, double lambda, bool transmitted) {
         total += k;
+        CHECK(transmitted == (prism::dot(direction, n) < 0));
         if (prism::dot(direction, n) > 0) {
             ++reflected;
             CHECK(lambda == 0);
@@ -90,7 +92,7 @@ TEST_CASE("White light at a dispersive interface: one refracted ray per band, on
     CHECK(total.z == Approx(1).epsilon(1e-12));
     // Light that already has a wavelength is not split again.
     int rays = 0;
-    for_each_delta_ray(glass, d, n, hit, 500.0, bands, [&](const Vec3<double>&, const Rgb<double>&, double lambda) {
+    for_each_delta_ray(glass, d, n, hit, 500.0, bands, air, [&](const Vec3<double>&, const Rgb<double>&, double lambda, bool) {
         CHECK(lambda == 500.0);
         ++rays;
     });

@@ -238,3 +238,27 @@ TEST_CASE("a light whose power overflows float is refused, not traced into empty
                     Object{Sphere<float>({0, 0, 0}, 1e9f), Diffuse<float>{}}};
     CHECK_THROWS_WITH_AS((void)trace_photons(sun, {.global_photons = 10, .caustic_photons = 0}), doctest::Contains("overflows"), std::invalid_argument);
 }
+
+TEST_CASE("Caustic photons aimed at targets whose cones overlap carry what unaimed photons on the same paths carry")
+{
+    // Two glass balls, one partly in front of the other as the light sees them: a
+    // direction toward both belongs to one target only (before, it was counted for both).
+    const Scene scene{Lights{PointLight<double>{.position = {0, 8, 0}, .intensity = Rgb<double>(50)}},
+                      Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(0)}}},
+                      Object{Sphere<double>({0, 1, 0}, 1), Dielectric<double>{.ior = 1.5}},
+                      Object{Sphere<double>({0.8, 3.2, 0.3}, 0.7), Dielectric<double>{.ior = 1.5}}};
+    const PhotonMaps maps = trace_photons(scene, {.global_photons = 2000000, .caustic_photons = 200000, .shadow_photons = false});
+    double aimed = 0, unaimed = 0;
+    for (const Photon& p : maps.caustic.photons()) aimed += p.power().x;
+    std::size_t count = 0;
+    for (const Photon& p : maps.global.photons())
+        if (p.flags & Photon::caustic) {
+            unaimed += p.power().x;
+            ++count;
+        }
+    // The unaimed sum has a relative standard error of about 1 / sqrt(count) (each such
+    // photon carries the same power): 4 sigma.
+    INFO("aimed ", aimed, ", unaimed ", unaimed, " from ", count, " photons");
+    CHECK(count > 10000);
+    CHECK(std::abs(aimed - unaimed) < 4 * unaimed / std::sqrt(double(count)));
+}

@@ -29,6 +29,7 @@
 #include <prism/light/light.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
+#include <prism/medium/nesting.hpp>
 #include <prism/optics/refract.hpp>
 #include <prism/photon/photon_tracer.hpp>
 
@@ -82,7 +83,7 @@ public:
 
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
 
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0)); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), {}); }
 
     /// What the nearest global photons say about the light's visibility at p (normal n
     /// facing the viewer): true when the `visibility_k` nearest within global.radius
@@ -110,18 +111,20 @@ private:
             detail::throw_invalid(name, " filter must be box, cone or gaussian, got the value ", static_cast<int>(e.filter));
     }
 
-    /// Radiance along the ray for light of one wavelength (nanometres), or of all (0).
-    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength) const noexcept
+    /// Radiance along the ray for light of one wavelength (nanometres), or of all (0), in
+    /// the transmissive objects `media` (medium/nesting.hpp).
+    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength, const MediumStack& media) const noexcept
     {
         const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
         if (!hit) return scene_->background;
-        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, ray, hit->crossing, depth, weight, rng, wavelength); });
+        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, ray, *hit, depth, weight, rng, wavelength, media); });
     }
 
     template <class M>
-    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Crossing<T>& hit, int depth, const Rgb<T>& weight,
-                               Pcg32& rng, T wavelength) const noexcept
+    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight, Pcg32& rng,
+                               T wavelength, const MediumStack& media) const noexcept
     {
+        const Crossing<T>& hit = h.crossing;
         const Vec3<T>& d = ray.direction;
         const Vec3<T> n = hit.facing_normal();
         Rgb<T> radiance{T(0)};
@@ -134,13 +137,27 @@ private:
         }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                for_each_delta_ray(material, d, n, hit, wavelength, bands_, [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda) {
-                    if (max_component(weight * k) > config_.min_weight)
-                        radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1, weight * k, rng, lambda);
-                });
+                const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
+                    const auto outside_index = [&](T lambda) { return index_of(*scene_, outside, lambda); };
+                    for_each_delta_ray(material, d, n, hit, wavelength, bands_, outside_index,
+                                       [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
+                                           if (max_component(weight * k) > config_.min_weight)
+                                               radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1, weight * k,
+                                                                     rng, lambda, transmitted ? beyond : media);
+                                       });
+                };
+                if constexpr (transmits<M>) {
+                    const Interface face = nested_interface(media, {h.slot, h.index, nesting_priority(material)}, hit.entering);
+                    if (face.real)
+                        follow(face.beyond, outside_of(media, face, hit.entering));
+                    else
+                        radiance = trace(spawn_ray(hit.point, hit.error, hit.normal, d), depth + 1, weight, rng, wavelength, face.beyond);
+                } else {
+                    follow(media, nullptr);
+                }
             }
         }
-        attenuate_inside(material, hit, ray, radiance);
+        attenuate_segment(*scene_, media, material, hit, ray, radiance);
         return radiance;
     }
 

@@ -20,7 +20,10 @@
 #include <prism/light/light.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
+#include <prism/medium/nesting.hpp>
 #include <prism/optics/refract.hpp>
+#include <prism/scene/hit.hpp>
+#include <prism/spectrum/bands.hpp>
 
 namespace prism {
 
@@ -49,8 +52,8 @@ public:
     Whitted(const SceneT&& scene, Config config = {}) = delete;
 
     /// Radiance arriving along the ray (its direction must be unit length).
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0)); }
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0)); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
 
     [[nodiscard]] const Config& config() const noexcept { return config_; }
 
@@ -58,20 +61,22 @@ private:
     // Whitted Private Methods
 
     /// Radiance along the ray for light of one wavelength (nanometres), or of all (0):
-    /// a ray carries one once it has refracted through a dispersive interface.
-    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength) const noexcept
+    /// a ray carries one once it has refracted through a dispersive interface. `media`:
+    /// the transmissive objects the ray is inside of (medium/nesting.hpp).
+    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength, const MediumStack& media) const noexcept
     {
         const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
         if (!hit) return scene_->background;
         return scene_->visit_material(*hit, [&](const auto& material) {
-            return shade(material, ray, hit->crossing, depth, weight, wavelength);
+            return shade(material, ray, *hit, depth, weight, wavelength, media);
         });
     }
 
     template <class M>
-    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Crossing<T>& hit, int depth,
-                               const Rgb<T>& weight, T wavelength) const noexcept
+    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight,
+                               T wavelength, const MediumStack& media) const noexcept
     {
+        const Crossing<T>& hit = h.crossing;
         const Vec3<T>& d = ray.direction;
         const Vec3<T> n = hit.facing_normal();
         Rgb<T> radiance{T(0)};
@@ -80,16 +85,32 @@ private:
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
-                for_each_delta_ray(material, d, n, hit, wavelength, bands_, [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda) {
-                    const Rgb<T> next_weight = weight * k;
-                    if (max_component(next_weight) > config_.min_weight)
-                        radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1, next_weight, lambda);
-                });
+                // Reflected rays stay in the ray's media; refracted ones go on in `beyond`,
+                // and the medium of `outside` lies on the surface's far side.
+                const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
+                    const auto outside_index = [&](T lambda) { return index_of(*scene_, outside, lambda); };
+                    for_each_delta_ray(material, d, n, hit, wavelength, bands_, outside_index,
+                                       [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
+                                           const Rgb<T> next_weight = weight * k;
+                                           if (max_component(next_weight) > config_.min_weight)
+                                               radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1,
+                                                                     next_weight, lambda, transmitted ? beyond : media);
+                                       });
+                };
+                if constexpr (transmits<M>) {
+                    const Interface face = nested_interface(media, {h.slot, h.index, nesting_priority(material)}, hit.entering);
+                    if (face.real)
+                        follow(face.beyond, outside_of(media, face, hit.entering));
+                    else // a surface inside a medium of higher priority: the ray passes on
+                        radiance = trace(spawn_ray(hit.point, hit.error, hit.normal, d), depth + 1, weight, wavelength, face.beyond);
+                } else {
+                    follow(media, nullptr);
+                }
             }
         }
 
-        // A ray leaving a dielectric travelled inside it from its origin to here.
-        attenuate_inside(material, hit, ray, radiance);
+        // The light arriving here travelled in the ray's medium from its origin.
+        attenuate_segment(*scene_, media, material, hit, ray, radiance);
         return radiance;
     }
 

@@ -27,6 +27,7 @@ struct Dielectric {
     Interior interior{}; ///< the medium that fills it
     T kr = T(1);
     T kt = T(1);
+    int priority = 0; ///< where it overlaps another transmissive object, the higher priority's medium wins (medium/nesting.hpp)
 
     // Dielectric capabilities (DeltaTransmission, InteriorMedium)
 

@@ -31,6 +31,7 @@ struct DispersiveDielectric {
     Interior interior{};
     T kr = T(1);
     T kt = T(1);
+    int priority = 0; ///< where it overlaps another transmissive object, the higher priority's medium wins (medium/nesting.hpp)
 
     /// The index at a vacuum wavelength in nanometres.
     [[nodiscard]] T refractive_index(T wavelength_nm) const noexcept

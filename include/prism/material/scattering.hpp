@@ -117,22 +117,25 @@ template <Material M>
 /// How a mirror or an interface at point p splits the unit incident direction d
 /// arriving at a surface whose unit normal n faces it (Crossing::facing_normal);
 /// `entering`: d goes into the material; light of one wavelength (nanometres), or 0 for
-/// white light. A dielectric splits by Fresnel (all to reflection under total internal
-/// reflection) times its tints, with eta = n_inside or 1 / n_inside by the side (n at the
+/// white light; `outside_index`: the index of the medium on the material's other side
+/// (1, the scene's air, unless the object is nested in another: medium/nesting.hpp). A
+/// dielectric splits by Fresnel (all to reflection under total internal reflection)
+/// times its tints, with eta = n_inside / n_outside or its inverse by the side (n at the
 /// wavelength for a dispersive one); a conductor reflects by its reflectance.
 template <Material M>
     requires(M::reflects || M::transmits)
 [[nodiscard]] SpecularSplit<typename M::scalar_type> delta_split(const M& material, const Vec3<typename M::scalar_type>& d,
                                                                 const Vec3<typename M::scalar_type>& n, bool entering,
                                                                 const Vec3<typename M::scalar_type>& p,
-                                                                typename M::scalar_type wavelength_nm = 0) noexcept
+                                                                typename M::scalar_type wavelength_nm = 0,
+                                                                typename M::scalar_type outside_index = 1) noexcept
 {
     using T = typename M::scalar_type;
     const T cos_i = clamp(-dot(d, n), T(0), T(1));
     SpecularSplit<T> split;
     if constexpr (M::transmits) {
         const T n_inside = index_at(material, wavelength_nm);
-        const T eta = entering ? n_inside : T(1) / n_inside;
+        const T eta = entering ? n_inside / outside_index : outside_index / n_inside;
         // Snell's cos_t, found once, serves the direction and the Fresnel equations.
         const auto refracted = refraction(d, n, eta);
         if (refracted) split.refracted = refracted->direction;
@@ -155,34 +158,36 @@ template <Material M>
 }
 
 /// The rays a mirror or an interface sends on, each passed to
-/// emit(direction, weight, wavelength_nm): the reflected ray, then the refracted one. Where
-/// white light (wavelength 0) meets a dispersive interface it refracts band by band, one
-/// ray per band of `bands`, each weighted by its band's share of white and carrying its
-/// wavelength; the reflected ray, whose direction no wavelength changes, stays white,
-/// weighted by the bands' reflectances summed (so white light meeting a dispersive
-/// interface costs one ray more per band, not per band squared).
-template <Material M, class Emit>
+/// emit(direction, weight, wavelength_nm, transmitted): the reflected ray, then the
+/// refracted one. `outside_index(wavelength_nm)` is the index of the medium on the
+/// material's other side. Where white light (wavelength 0) meets a dispersive interface
+/// it refracts band by band, one ray per band of `bands`, each weighted by its band's
+/// share of white and carrying its wavelength; the reflected ray, whose direction no
+/// wavelength changes, stays white, weighted by the bands' reflectances summed (so white
+/// light meeting a dispersive interface costs one ray more per band, not per band squared).
+template <Material M, class OutsideIndex, class Emit>
     requires(M::reflects || M::transmits)
 void for_each_delta_ray(const M& material, const Vec3<typename M::scalar_type>& d, const Vec3<typename M::scalar_type>& n,
                         const Crossing<typename M::scalar_type>& hit, typename M::scalar_type wavelength_nm,
-                        const SpectralBands<typename M::scalar_type>& bands, Emit&& emit)
+                        const SpectralBands<typename M::scalar_type>& bands, OutsideIndex&& outside_index, Emit&& emit)
 {
     using T = typename M::scalar_type;
     if constexpr (disperses<M>) {
         if (wavelength_nm == T(0)) {
             Rgb<T> kr{T(0)};
             for (const WavelengthBand<T>& band : bands) {
-                const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, band.wavelength_nm);
+                const SpecularSplit<T> split =
+                    delta_split(material, d, n, hit.entering, hit.point, band.wavelength_nm, T(outside_index(band.wavelength_nm)));
                 kr += band.weight * split.kr;
-                if (split.refracted) emit(*split.refracted, band.weight * split.kt, band.wavelength_nm);
+                if (split.refracted) emit(*split.refracted, band.weight * split.kt, band.wavelength_nm, true);
             }
-            emit(reflect(d, n), kr, T(0));
+            emit(reflect(d, n), kr, T(0), false);
             return;
         }
     }
-    const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, wavelength_nm);
-    emit(reflect(d, n), split.kr, wavelength_nm);
-    if (split.refracted) emit(*split.refracted, split.kt, wavelength_nm);
+    const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, wavelength_nm, T(outside_index(wavelength_nm)));
+    emit(reflect(d, n), split.kr, wavelength_nm, false);
+    if (split.refracted) emit(*split.refracted, split.kt, wavelength_nm, true);
 }
 
 // Media
@@ -239,14 +244,15 @@ struct PhotonBounce {
 /// conductor reflects by its reflectance. A material with a diffuse and a delta lobe
 /// first chooses one by their largest channels, dividing the power by that choice's
 /// probability. A photon of one wavelength (nanometres; 0: white) refracts at its
-/// index. Returns nothing when the photon is absorbed; scales `power` otherwise.
+/// index; `outside_index` is the index on the material's other side (1: air). Returns nothing when the photon is absorbed; scales `power` otherwise.
 template <Material M>
 [[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
                                                                                    const Crossing<typename M::scalar_type>& hit,
                                                                                    const Vec3<typename M::scalar_type>& d,
                                                                                    const Vec3<typename M::scalar_type>& n,
                                                                                    Rgb<typename M::scalar_type>& power, Pcg32& rng,
-                                                                                   typename M::scalar_type wavelength_nm = 0) noexcept
+                                                                                   typename M::scalar_type wavelength_nm = 0,
+                                                                                   typename M::scalar_type outside_index = 1) noexcept
 {
     using T = typename M::scalar_type;
     using Bounce = std::optional<PhotonBounce<T>>;
@@ -275,7 +281,7 @@ template <Material M>
     if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
         // Both lobes: choose one by its share of the reflected light (largest channels).
         const Rgb<T> reflectance = diffuse_response(material, hit.point).photon_reflectance();
-        const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, wavelength_nm);
+        const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, wavelength_nm, outside_index);
         const T w_diffuse = max_component(reflectance), w_delta = max_component(split.kr + split.kt);
         if (!(w_diffuse + w_delta > T(0))) return std::nullopt;
         const T p_diffuse = w_diffuse / (w_diffuse + w_delta);
@@ -288,7 +294,7 @@ template <Material M>
     } else if constexpr (M::has_diffuse) {
         return scatter_diffusely(diffuse_response(material, hit.point).photon_reflectance());
     } else {
-        return scatter_specularly(delta_split(material, d, n, hit.entering, hit.point, wavelength_nm));
+        return scatter_specularly(delta_split(material, d, n, hit.entering, hit.point, wavelength_nm, outside_index));
     }
 }
 

@@ -28,6 +28,7 @@
 #include <prism/light/light.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
+#include <prism/medium/nesting.hpp>
 #include <prism/photon/photon_map.hpp>
 #include <prism/scene/object.hpp>
 #include <prism/spectrum/bands.hpp>
@@ -109,6 +110,7 @@ public:
         if (!scene.bounds().empty()) scene_sphere_ = scene.bounds().bounding_sphere();
         add_emitters(global_, false, {});
         std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
+        drop_nested_targets();
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);
         // A light whose power is finite can still overflow here: a parallel light's
@@ -159,6 +161,9 @@ private:
         u = std::clamp((u - start) / p, 0.0, std::nextafter(1.0, 0.0));
         const EmittedPhoton<T> photon =
             scene_.visit_light(e->light, [&](const auto& light) { return light.emit_photon(aim(*e), T(u), T(v)); });
+        // Where two targets' cones overlap, a direction is the first target's to carry:
+        // counted by both, the light sent that way would be counted twice.
+        if (e->aimed && aimed_at_earlier_target(emitters, *e, photon.ray)) return;
         follow(photon.ray, e->power / T(double(count) * p) * photon.weight, photon.without_falloff, rng, caustic_pass, out);
     }
 
@@ -168,6 +173,7 @@ private:
         bool direct = true, specular_only = true;
         T travelled = T(0);
         T wavelength = T(0); // white until a dispersive interface splits it
+        MediumStack media;   // the transmissive objects the photon is inside of
         for (int bounce = 0; bounce <= config_.max_bounces; ++bounce) {
             const auto hit = scene_.closest_hit(ray, {T(0), infinity<T>});
             if (!hit) return;
@@ -175,18 +181,33 @@ private:
             const Vec3<T> d = normalize(ray.direction);
             travelled += c.t * length(ray.direction);
             const auto stored = [&] { return without_falloff ? power * (travelled * travelled) : power; };
-            const bool scattered = scene_.visit_material(*hit, [&]<class M>(const M& material) -> bool {
+            enum class Next { absorbed, scattered, passed };
+            const Next next_step = scene_.visit_material(*hit, [&]<class M>(const M& material) -> Next {
+                // What the medium it travelled in let through, before anything else.
+                attenuate_segment(scene_, media, material, c, ray, power);
                 if constexpr (has_diffuse<M>) {
                     if (caustic_pass) {
                         if (!direct && specular_only) out.push_back(photon(c.point, stored(), d, Photon::caustic));
-                        return false;
+                        return Next::absorbed;
                     }
                     std::uint8_t flags = direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
                     if (!direct && specular_only) flags |= Photon::caustic;
                     out.push_back(photon(c.point, stored(), d, flags));
                     if (direct && config_.shadow_photons) store_shadow_photons(c, d, out);
                 }
-                attenuate_inside(material, c, ray, power);
+                // The media beyond the surface, the object whose medium lies on its far
+                // side, and false interfaces (inside a medium of higher priority) passed.
+                Interface face{true, media};
+                const Inside* outside = nullptr;
+                if constexpr (transmits<M>) {
+                    face = nested_interface(media, {hit->slot, hit->index, nesting_priority(material)}, c.entering);
+                    if (!face.real) {
+                        ray = spawn_ray(c.point, c.error, c.normal, d);
+                        media = face.beyond;
+                        return Next::passed;
+                    }
+                    outside = outside_of(media, face, c.entering);
+                }
                 if constexpr (disperses<M>) {
                     if (wavelength == T(0)) {
                         // One band at random: its (non-negative) share of white, over its probability 1 / count.
@@ -196,14 +217,16 @@ private:
                         wavelength = band.wavelength_nm;
                     }
                 }
-                const auto next = scatter_photon(material, c, d, c.facing_normal(), power, rng, wavelength);
-                if (!next) return false;
+                const Vec3<T> n = c.facing_normal();
+                const auto next = scatter_photon(material, c, d, n, power, rng, wavelength, index_of(scene_, outside, wavelength));
+                if (!next) return Next::absorbed;
                 ray = spawn_ray(c.point, c.error, c.normal, next->direction);
                 if (next->diffuse) specular_only = false;
-                return true;
+                if (transmits<M> && dot(next->direction, n) < T(0)) media = face.beyond; // refracted
+                return Next::scattered;
             });
-            if (!scattered) return;
-            direct = false;
+            if (next_step == Next::absorbed) return;
+            if (next_step == Next::scattered) direct = false;
         }
     }
 
@@ -239,6 +262,41 @@ private:
             e.power = scene_.visit_light(i, [&](const auto& light) { return light.photon_power(aim(e)); });
             if (max_component(e.power) > T(0)) emitters.push_back(e);
         }
+    }
+
+    /// Whether a photon of emitter e leaving along `ray` also heads for the target of an
+    /// earlier emitter of the same light (its ray meets that target's sphere).
+    [[nodiscard]] static bool aimed_at_earlier_target(const std::vector<Emitter<T>>& emitters, const Emitter<T>& e, const Ray<T>& ray) noexcept
+    {
+        const Vec3<T> d = normalize(ray.direction);
+        for (const Emitter<T>& other : emitters) {
+            if (&other == &e) return false;
+            if (!other.aimed || other.light != e.light) continue;
+            const Vec3<T> oc = other.target.center - ray.origin;
+            const T along = dot(oc, d), off2 = length_squared(oc) - along * along, r2 = other.target.radius * other.target.radius;
+            if (off2 <= r2 && (along > T(0) || length_squared(oc) <= r2)) return true;
+        }
+        return false;
+    }
+
+    /// Drop the targets whose sphere lies inside another target's (an object nested in a
+    /// glass): every photon aimed at them would be the outer target's to carry.
+    void drop_nested_targets()
+    {
+        std::vector<Emitter<T>> kept;
+        for (std::size_t i = 0; i < targets_.size(); ++i) {
+            const BoundingSphere<T>& a = targets_[i].target;
+            bool nested = false;
+            for (std::size_t j = 0; j < targets_.size() && !nested; ++j) {
+                if (j == i || targets_[j].light != targets_[i].light) continue;
+                const BoundingSphere<T>& b = targets_[j].target;
+                const bool inside = length(a.center - b.center) + a.radius <= b.radius;
+                const bool same = a.center == b.center && a.radius == b.radius;
+                nested = inside && (!same || j < i); // of two equal spheres, keep the first
+            }
+            if (!nested) kept.push_back(targets_[i]);
+        }
+        targets_ = std::move(kept);
     }
 
     /// Every light aimed at each bounded specular object of the slot.
