@@ -40,9 +40,11 @@
 #include <prism/material/texture.hpp>
 #include <prism/material/thin_film.hpp>
 #include <prism/material/traits.hpp>
+#include <prism/medium/air.hpp>
 #include <prism/medium/graded_index.hpp>
 #include <prism/medium/homogeneous.hpp>
 #include <prism/medium/medium.hpp>
+#include <prism/medium/nesting.hpp>
 #include <prism/optics/beer.hpp>
 #include <prism/optics/dispersion.hpp>
 #include <prism/optics/fresnel.hpp>

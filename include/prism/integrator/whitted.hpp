@@ -20,6 +20,7 @@
 #include <prism/light/light.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
+#include <prism/medium/air.hpp>
 #include <prism/medium/nesting.hpp>
 #include <prism/optics/refract.hpp>
 #include <prism/scene/hit.hpp>
@@ -27,7 +28,9 @@
 
 namespace prism {
 
-template <class SceneT>
+/// Whitted over `scene` with its air: StraightAir (the default), or GradedAir, through
+/// which rays outside every object curve (medium/air.hpp).
+template <class SceneT, class Air = StraightAir>
 class Whitted {
 public:
     using scalar_type = typename SceneT::scalar_type;
@@ -41,15 +44,17 @@ public:
         int dispersion_bands = 8;
     };
 
-    explicit Whitted(const SceneT& scene, Config config = {}) : scene_(&scene), config_(config), bands_(config.dispersion_bands)
+    explicit Whitted(const SceneT& scene, Config config = {}, Air air = {})
+        : scene_(&scene), config_(config), bands_(config.dispersion_bands), air_(std::move(air))
     {
         scene.validate();
+        air_.validate();
         if (config.max_depth < 0) detail::throw_invalid("Whitted max_depth must be >= 0, got ", config.max_depth);
         detail::require_non_negative("Whitted min_weight", config.min_weight);
     }
 
     /// The integrator keeps a reference to its scene: a temporary scene would dangle.
-    Whitted(const SceneT&& scene, Config config = {}) = delete;
+    Whitted(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
 
     /// Radiance arriving along the ray (its direction must be unit length).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
@@ -65,6 +70,17 @@ private:
     /// the transmissive objects the ray is inside of (medium/nesting.hpp).
     [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength, const MediumStack& media) const noexcept
     {
+        if constexpr (Air::curved) {
+            // In the air (inside no object) the ray curves; it lands on a chord.
+            if (media.empty()) {
+                Ray<T> segment = ray;
+                const auto hit = first_hit_through(*scene_, air_, ray, segment);
+                if (!hit) return scene_->background;
+                return scene_->visit_material(*hit, [&](const auto& material) {
+                    return shade(material, segment, *hit, depth, weight, wavelength, media);
+                });
+            }
+        }
         const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
         if (!hit) return scene_->background;
         return scene_->visit_material(*hit, [&](const auto& material) {
@@ -133,6 +149,7 @@ private:
     const SceneT* scene_;
     Config config_;
     SpectralBands<T> bands_;
+    Air air_;
 };
 
 } // namespace prism

@@ -212,8 +212,8 @@ public:
 
     /// Advance `ray` by one accepted step; `dt` carries the step size from one call to
     /// the next (start with 0: the first step is then config.first_step long). Returns
-    /// the arc length covered (about n dt).
-    T step(CurvedRay<T>& ray, T& dt) const noexcept
+    /// the arc length covered (about n dt); `accepted`, if given, receives the step's dt.
+    T step(CurvedRay<T>& ray, T& dt, T* accepted = nullptr) const noexcept
     {
         const T n = length(ray.optical);
         if (!(dt > T(0))) dt = config_.first_step / n;
@@ -225,6 +225,7 @@ public:
             const T scale = error > T(0) ? T(0.9) * std::pow(config_.tolerance / error, T(0.2)) : T(4);
             if (error <= config_.tolerance || dt * n <= std::numeric_limits<T>::epsilon() * (T(1) + max_component(abs(ray.position)))) {
                 const T covered = length(half.position - ray.position);
+                if (accepted != nullptr) *accepted = dt;
                 ray = {half.position + (half.position - whole.position) / T(15), half.optical + (half.optical - whole.optical) / T(15)};
                 dt *= std::clamp(scale, T(0.2), T(4));
                 return covered;

@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: MIT
+// The scene's air: uniform (rays go straight, the default) or of a varying index
+// (graded-index air: mirages, a flattened setting sun), through which rays curve.
+//
+// GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
+// field must be uniform, and rays go straight there. Inside, a ray follows the ray
+// equation by AdaptiveStepper's steps, and each step's chord is tested against the
+// scene: the first surface a chord meets is where the ray lands (a chord is within the
+// stepper's tolerance of the true path). Surfaces shade as usual; the rays they send on
+// (reflected, refracted into nothing dispersive... any ray back in the air) curve again.
+// Shadow rays stay straight: over the few metres to kilometres a scene spans, air bends
+// light by well under a degree, enough to move an image (the mirage) and too little to
+// move a shadow's edge visibly; tracing the curved path that reaches a light is a
+// boundary-value problem left for later.
+#pragma once
+
+#include <prism/core/aabb.hpp>
+#include <prism/core/check.hpp>
+#include <prism/core/ray.hpp>
+#include <prism/medium/graded_index.hpp>
+#include <prism/scene/hit.hpp>
+
+#include <optional>
+
+namespace prism {
+
+/// Uniform air of index 1: rays are straight.
+struct StraightAir {
+    static constexpr bool curved = false;
+    constexpr void validate() const {}
+};
+
+/// Air whose index is `field` inside `region` (uniform outside it); rays through it curve.
+template <IndexField F>
+struct GradedAir {
+    using scalar_type = typename F::scalar_type;
+    using T = scalar_type;
+    static constexpr bool curved = true;
+
+    F field{};
+    Aabb<T> region{};                                   ///< where the index varies
+    typename AdaptiveStepper<F>::Config stepping{};     ///< the stepper's tolerance and step lengths
+    /// A chord that meets a surface is halved (Sharma steps of half the dt) until it is
+    /// at most this long, so the landing point lies on the curve, not on a chord that
+    /// cuts under it (a chord of length L sags by about L^2 / (8 R) from a path of radius R).
+    T landing_chord = T(1e-3);
+    int max_steps = 1000000;                            ///< a ray still in the air after this many steps is lost (background)
+
+    void validate() const
+    {
+        field.validate();
+        if (!region.bounded()) detail::throw_invalid("GradedAir region must be a bounded, non-empty box");
+        if (max_steps < 1) detail::throw_invalid("GradedAir max_steps must be >= 1, got ", max_steps);
+        detail::require_positive("GradedAir landing_chord", landing_chord);
+        (void)AdaptiveStepper<F>(field, stepping); // checks the stepping
+    }
+};
+
+/// Where a ray through curved air first meets a surface of the scene, or nothing; on a
+/// hit, `segment` is the straight piece (unit direction) on which it lies, the ray to
+/// shade with.
+template <class SceneT, IndexField F>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const GradedAir<F>& air,
+                                                                                const Ray<typename SceneT::scalar_type>& ray,
+                                                                                Ray<typename SceneT::scalar_type>& segment) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    static_assert(std::same_as<T, typename F::scalar_type>, "GradedAir's field must have the scene's scalar type");
+    segment = {ray.origin, normalize(ray.direction)};
+    const Interval<T> inside = air.region.clip(segment, {T(0), infinity<T>});
+    if (inside.empty()) return scene.closest_hit(segment, {T(0), infinity<T>});
+    // Straight up to the box.
+    if (inside.min > T(0)) {
+        if (auto hit = scene.closest_hit(segment, {T(0), inside.min})) return hit;
+    }
+    CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(std::max(inside.min, T(0))), segment.direction});
+    const AdaptiveStepper<F> stepper(air.field, air.stepping);
+    T dt = T(0);
+    for (int i = 0; i < air.max_steps; ++i) {
+        const CurvedRay<T> start = curved;
+        T taken = T(0);
+        stepper.step(curved, dt, &taken);
+        const Vec3<T> chord = curved.position - start.position;
+        const T chord_length = length(chord);
+        if (!(chord_length > T(0))) continue;
+        segment = {start.position, chord / chord_length};
+        if (auto hit = scene.closest_hit(segment, {T(0), chord_length})) {
+            // Home in on the landing point along the curve: halve the step while its
+            // chord is long, keeping the half whose chord meets the surface.
+            CurvedRay<T> from = start;
+            T h = taken;
+            T length_now = chord_length;
+            while (length_now > air.landing_chord && h > T(0)) {
+                h /= T(2);
+                const CurvedRay<T> middle = sharma_step(air.field, from, h);
+                const Vec3<T> first = middle.position - from.position;
+                const T first_length = length(first);
+                if (!(first_length > T(0))) break;
+                const Ray<T> first_segment{from.position, first / first_length};
+                if (auto near = scene.closest_hit(first_segment, {T(0), first_length})) {
+                    segment = first_segment;
+                    hit = near;
+                    length_now = first_length;
+                    continue;
+                }
+                const CurvedRay<T> end = sharma_step(air.field, middle, h);
+                const Vec3<T> second = end.position - middle.position;
+                const T second_length = length(second);
+                if (!(second_length > T(0))) break;
+                const Ray<T> second_segment{middle.position, second / second_length};
+                auto far = scene.closest_hit(second_segment, {T(0), second_length});
+                if (!far) break; // the curve grazes past where the chord met it: keep the chord's hit
+                segment = second_segment;
+                hit = far;
+                from = middle;
+                length_now = second_length;
+            }
+            return hit;
+        }
+        if (!air.region.contains(curved.position)) {
+            // Out of the box: straight from here on.
+            segment = {curved.position, curved.direction()};
+            return scene.closest_hit(segment, {T(0), infinity<T>});
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace prism

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+#include <prism/prism.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+using doctest::Approx;
+using namespace prism;
+
+namespace {
+
+/// A floor albedo that records where it was hit: red = x / 100.
+struct XRecorder {
+    using scalar_type = double;
+    [[nodiscard]] Rgb<double> albedo(const Vec3<double>& p) const noexcept { return {p.x / 100, 0, 0}; }
+    void validate() const {}
+};
+
+/// A floor lit from straight above with E = pi: a point's radiance is its albedo.
+auto recording_floor()
+{
+    return Scene{Lights{DirectionalLight<double>{.direction = {0, -1, 0}, .irradiance = Rgb<double>(std::numbers::pi)}},
+                 Object{Plane<double>({0, 1, 0}, 0), Diffuse<double, XRecorder>{.albedo = {}, .kd = 1, .ka = 0}}};
+}
+
+} // namespace
+
+TEST_CASE("Whitted through graded air: a ray in n^2 = a + b y lands where its exact parabola meets the floor")
+{
+    // n^2 = 1 - 0.02 y: the index falls with height, so a rising ray bends back down along
+    // y(x) = y0 + tan(theta0) x + b x^2 / (4 K^2), K = n(y0) cos(theta0).
+    const double a = 1, b = -0.02, y0 = 1, theta0 = 0.2;
+    const GradedAir<LinearSquareIndex<double>> air{.field = {.a = a, .b = b},
+                                                   .region = {{-100, -1, -100}, {100, 10, 100}},
+                                                   .stepping = {.tolerance = 1e-9, .first_step = 0.01, .max_step = 5}};
+    const auto scene = recording_floor();
+    const Whitted integrator(scene, {}, air);
+    const double k = std::sqrt(a + b * y0) * std::cos(theta0), c = b / (4 * k * k), t = std::tan(theta0);
+    const double x_exact = (-t - std::sqrt(t * t - 4 * c * y0)) / (2 * c);
+    CHECK(x_exact == Approx(42.58).epsilon(1e-3));
+    const Rgb<double> seen = integrator.radiance(Ray<double>{{0, y0, 0}, {std::cos(theta0), std::sin(theta0), 0}});
+    CHECK(100 * seen.x == Approx(x_exact).epsilon(1e-6));
+    // Straight air: the rising ray never comes down.
+    const Whitted straight(scene);
+    CHECK(straight.radiance(Ray<double>{{0, y0, 0}, {std::cos(theta0), std::sin(theta0), 0}}) == scene.background);
+    // Aimed down, it lands at y0 / tan(theta).
+    CHECK(100 * straight.radiance(Ray<double>{{0, y0, 0}, {std::cos(theta0), -std::sin(theta0), 0}}).x == Approx(y0 / t).epsilon(1e-9));
+}
+
+TEST_CASE("Graded air of uniform index sees what straight air sees")
+{
+    const auto scene = recording_floor();
+    const GradedAir<LinearIndex<double>> uniform{.field = {.n0 = 1, .slope = 0}, .region = {{-100, -1, -100}, {100, 10, 100}},
+                                                 .stepping = {.tolerance = 1e-6, .first_step = 0.5, .max_step = 3}};
+    const Whitted curved(scene, {}, uniform);
+    const Whitted straight(scene);
+    for (double angle : {0.05, 0.2, 0.7, 1.4}) {
+        const Ray<double> ray{{-3, 2, 1}, {std::cos(angle), -std::sin(angle), 0.1}};
+        CHECK(curved.radiance(ray).x == Approx(straight.radiance(ray).x).epsilon(1e-12));
+    }
+}
+
+TEST_CASE("The inferior mirage in Whitted: over a road 30 K hot, a ray aimed 0.3 degrees down sees the sky")
+{
+    const Scene road{Lights{DirectionalLight<double>{.direction = {0, -1, 0.2}}},
+                     Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(0.2)}}}};
+    const GradedAir<HeatedLayer<double>> hot{.field = {.drop = 3e-5, .thickness = 0.3},
+                                             .region = {{-2000, -1, -2000}, {2000, 4, 2000}},
+                                             .stepping = {.tolerance = 1e-6, .first_step = 0.1, .max_step = 20}};
+    const Whitted mirage(road, {}, hot);
+    const Whitted plain(road);
+    const double down = 0.3 * std::numbers::pi / 180;
+    const Ray<double> ray{{0, 1.5, 0}, {std::cos(down), -std::sin(down), 0}};
+    CHECK(plain.radiance(ray) != road.background); // straight, it meets the road 286 m away
+    CHECK(mirage.radiance(ray) == road.background); // curved, it turns 0.235 m above it and rises
+    // Aimed more steeply than the mirage's critical angle (about sqrt(2 drop) = 0.44 deg), it lands.
+    const double steep = 1.0 * std::numbers::pi / 180;
+    CHECK(mirage.radiance(Ray<double>{{0, 1.5, 0}, {std::cos(steep), -std::sin(steep), 0}}) != road.background);
+}
+
+TEST_CASE("GradedAir refuses what it cannot trace")
+{
+    const auto scene = recording_floor();
+    CHECK_THROWS_WITH_AS(Whitted(scene, {}, GradedAir<LinearIndex<double>>{.field = {.n0 = 1, .slope = 0.01}}), doctest::Contains("GradedAir region"),
+                         std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Whitted(scene, {}, GradedAir<LinearIndex<double>>{.field = {.n0 = 1, .slope = 0.01}, .region = {{0, 0, 0}, {1, 1, 1}}, .max_steps = 0}),
+                         doctest::Contains("max_steps"), std::invalid_argument);
+}
