@@ -4,10 +4,15 @@
 // 3e-5 at the road, recovering over 0.3 m (HeatedLayer); rays looking down at less than
 // about 0.44 degrees turn before they reach the road and rise again, so the sky shows on
 // the road like water and distant objects stand on their own upside-down images (the
-// inferior mirage). Beside it, the same scene in uniform air.
+// inferior mirage). Then a superior mirage over a cold sea: warm air above 25 m (an
+// index 1.2e-5 lower, over about 3 m) bends rising rays back down, so a ship 8 km away
+// looms higher and taller, and a band of distant sea shows in the sky. Each beside the
+// same scene in uniform air.
 #include "cli.hpp"
 
 #include <prism/io/image.hpp>
+
+#include <cmath>
 
 namespace {
 
@@ -28,6 +33,24 @@ auto road_scene()
     return scene;
 }
 
+/// The index over a cold sea under an inversion: warmer, thinner air above about 25 m.
+struct Inversion {
+    T operator()(const prism::Vec3<T>& p) const { return T(1.000293) - T(1.2e-5) * (T(1) + std::tanh((p.y - T(25)) / T(3))) / T(2); }
+};
+
+auto sea_scene()
+{
+    using namespace prism;
+    Scene scene{Lights{DirectionalLight<T>{.direction = {T(-0.3), T(-0.5), T(0.4)}, .irradiance = Rgb<T>(T(3))}},
+                Object{Plane<T>({0, 1, 0}, 0),
+                       Diffuse<T, Checker<T>>{.albedo = {.even = {T(0.05), T(0.12), T(0.2)}, .odd = {T(0.06), T(0.14), T(0.24)}, .size = T(20)}}},
+                Object{Box<T>({T(8000), T(0), T(-60)}, {T(8100), T(12), T(60)}), Diffuse<T>{.albedo = {.color = {T(0.8), T(0.8), T(0.75)}}}},
+                Object{Box<T>({T(8030), T(12), T(-15)}, {T(8060), T(30), T(15)}), Diffuse<T>{.albedo = {.color = {T(0.7), T(0.2), T(0.1)}}}}};
+    scene.background = {T(0.5), T(0.65), T(0.9)};
+    scene.ambient = Rgb<T>(T(0.25));
+    return scene;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -38,7 +61,7 @@ int main(int argc, char** argv)
         options.render.width = 640;
         options.render.height = 240;
         options.render.spp = 4;
-        if (!examples::parse(argc, argv, options, "an inferior mirage over a hot road (graded-index air), beside uniform air"))
+        if (!examples::parse(argc, argv, options, "an inferior mirage over a hot road and a superior mirage over a cold sea (graded-index air), beside uniform air"))
             return 0;
         const Camera<T> camera{.position = {0, T(1.5), 0}, .look_at = {T(500), T(1.0), T(2)}, .up = {0, 1, 0}, .fov = T(5)};
         const auto scene = road_scene();
@@ -49,6 +72,17 @@ int main(int argc, char** argv)
         write_png(examples::timed_render("mirage", camera, integrator, options.render), options.out / "mirage.png");
         const Whitted straight(scene);
         write_png(examples::timed_render("mirage_plain", camera, straight, options.render), options.out / "mirage_plain.png");
+
+        const Camera<T> sea_camera{.position = {0, T(3), 0}, .look_at = {T(8000), T(14), T(0)}, .up = {0, 1, 0}, .fov = T(2)};
+        const auto sea = sea_scene();
+        const GradedAir<IndexFunction<T, Inversion>> inversion{.field = {.function = Inversion{}, .h = T(0.01)},
+                                                               .region = {{T(-1000), T(-1), T(-9000)}, {T(9000), T(60), T(9000)}},
+                                                               .stepping = {.tolerance = T(1e-3), .first_step = T(5), .max_step = T(400)}};
+        const Whitted looming(sea, {}, inversion);
+        write_png(examples::timed_render("superior_mirage", sea_camera, looming, options.render), options.out / "superior_mirage.png");
+        const Whitted sea_straight(sea);
+        write_png(examples::timed_render("superior_mirage_plain", sea_camera, sea_straight, options.render),
+                  options.out / "superior_mirage_plain.png");
         return 0;
     });
 }
