@@ -3923,6 +3923,460 @@ void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& m
 
 } // namespace prism
 
+// ---- prism/medium/graded_index.hpp ----
+// Graded-index media: air whose index of refraction varies in space (mirages, a setting
+// sun flattened by the atmosphere), and the two ways of tracing a ray through it.
+//
+// A ray in a medium of index n(x) follows the ray equation d/ds (n dx/ds) = grad n.
+// With the optical direction T = n dx/ds (a vector of length n) and the parameter t,
+// dt = ds / n, it becomes d^2 x / dt^2 = n grad n = grad(n^2) / 2, which Sharma, Kumar
+// and Ghatak (1982, "Tracing rays through graded-index media: a new method", Applied
+// Optics 21(6)) integrate with a Runge-Kutta-Nystrom step: `sharma_step`. Its error is
+// controlled by step doubling in `AdaptiveStepper`. The lecture notes' own method,
+// "divide the air into layers and keep bending the light", is `LayeredMedium`: straight
+// segments through flat layers of constant index, refracted by Snell at each boundary.
+//
+// Index fields are policies (IndexField): a stratified linear n(y), n^2 linear in y
+// (whose rays are exact parabolas), an exponential atmosphere, a heated layer over a
+// road, and any callable. Stratified fields vary along y (up).
+
+
+#include <algorithm>
+#include <cmath>
+#include <concepts>
+#include <limits>
+
+namespace prism {
+
+/// An index of refraction that varies in space: `index(p)` and its gradient
+/// `gradient(p)`, both finite and the index > 0 wherever a ray goes.
+template <class F>
+concept IndexField = requires(const F& field, const Vec3<typename F::scalar_type>& p) {
+    requires Scalar<typename F::scalar_type>;
+    { field.index(p) } -> std::same_as<typename F::scalar_type>;
+    { field.gradient(p) } -> std::same_as<Vec3<typename F::scalar_type>>;
+    field.validate();
+};
+
+// Index Field Policies
+
+/// n(y) = n0 + slope y.
+template <Scalar T = double>
+struct LinearIndex {
+    using scalar_type = T;
+    T n0 = T(1);
+    T slope = T(0); ///< dn/dy
+
+    [[nodiscard]] constexpr T index(const Vec3<T>& p) const noexcept { return n0 + slope * p.y; }
+    [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>&) const noexcept { return {T(0), slope, T(0)}; }
+    constexpr void validate() const
+    {
+        detail::require_positive("LinearIndex n0", n0);
+        detail::require_finite("LinearIndex slope", slope);
+    }
+};
+
+/// n(y)^2 = a + b y (where a + b y > 0): the field whose rays are exact parabolas,
+/// y(x) = y0 + tan(theta0) x + b x^2 / (4 K^2) with K = n(y0) cos(theta0).
+template <Scalar T = double>
+struct LinearSquareIndex {
+    using scalar_type = T;
+    T a = T(1);
+    T b = T(0);
+
+    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return std::sqrt(a + b * p.y); }
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept { return {T(0), b / (T(2) * index(p)), T(0)}; }
+    constexpr void validate() const
+    {
+        detail::require_positive("LinearSquareIndex a", a);
+        detail::require_finite("LinearSquareIndex b", b);
+    }
+};
+
+/// The standard exponential atmosphere: n(h) = 1 + (n0 - 1) e^(-h / H), h = y - ground.
+/// Defaults: sea-level air at 15 C (n0 - 1 = 2.93e-4, visible light) and H = 8.5 km, in
+/// metres.
+template <Scalar T = double>
+struct ExponentialAtmosphere {
+    using scalar_type = T;
+    T n0 = T(1.000293);
+    T scale_height = T(8500);
+    T ground = T(0);
+
+    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return T(1) + (n0 - T(1)) * std::exp(-(p.y - ground) / scale_height); }
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
+    {
+        return {T(0), -(n0 - T(1)) / scale_height * std::exp(-(p.y - ground) / scale_height), T(0)};
+    }
+    constexpr void validate() const
+    {
+        detail::require_positive("ExponentialAtmosphere n0", n0);
+        detail::require_positive("ExponentialAtmosphere scale_height", scale_height);
+        detail::require_finite("ExponentialAtmosphere ground", ground);
+    }
+};
+
+/// Hot air over a road: n(y) = n_air - drop e^(-(y - ground) / thickness). The air at the
+/// road is hotter, so its index is lower by `drop` (about 1e-6 per kelvin: 3e-5 for a
+/// road 30 K above the air), and rays grazing it bend back up (an inferior mirage).
+template <Scalar T = double>
+struct HeatedLayer {
+    using scalar_type = T;
+    T n_air = T(1.000293);
+    T drop = T(3e-5);
+    T thickness = T(0.3); ///< metres over which the excess heat falls by e
+    T ground = T(0);
+
+    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return n_air - drop * std::exp(-(p.y - ground) / thickness); }
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
+    {
+        return {T(0), drop / thickness * std::exp(-(p.y - ground) / thickness), T(0)};
+    }
+    constexpr void validate() const
+    {
+        detail::require_positive("HeatedLayer n_air", n_air);
+        detail::require_finite("HeatedLayer drop", drop);
+        if (!(drop < n_air)) detail::throw_invalid("HeatedLayer drop must be below n_air (", n_air, "), got ", drop);
+        detail::require_positive("HeatedLayer thickness", thickness);
+        detail::require_finite("HeatedLayer ground", ground);
+    }
+};
+
+/// Any index n(p) given as a callable; its gradient by central differences of step h.
+template <Scalar T, class F>
+    requires std::regular_invocable<const F&, const Vec3<T>&>
+struct IndexFunction {
+    using scalar_type = T;
+    F function;
+    T h = T(1e-4);
+
+    [[nodiscard]] T index(const Vec3<T>& p) const { return function(p); }
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const
+    {
+        const T inv = T(1) / (T(2) * h);
+        return {(function(p + Vec3<T>(h, 0, 0)) - function(p - Vec3<T>(h, 0, 0))) * inv,
+                (function(p + Vec3<T>(0, h, 0)) - function(p - Vec3<T>(0, h, 0))) * inv,
+                (function(p + Vec3<T>(0, 0, h)) - function(p - Vec3<T>(0, 0, h))) * inv};
+    }
+    constexpr void validate() const { detail::require_positive("IndexFunction h", h); }
+};
+
+static_assert(IndexField<LinearIndex<double>> && IndexField<LinearSquareIndex<float>> && IndexField<ExponentialAtmosphere<double>> &&
+              IndexField<HeatedLayer<double>>);
+
+// Curved Rays
+
+/// A ray inside a graded medium: where it is, and its optical direction n dx/ds (a
+/// vector of length n(position): the unit direction times the local index).
+template <Scalar T>
+struct CurvedRay {
+    Vec3<T> position;
+    Vec3<T> optical;
+
+    [[nodiscard]] Vec3<T> direction() const noexcept { return normalize(optical); }
+};
+
+/// The curved ray leaving `ray.origin` along `ray.direction` (any length) in the field.
+template <IndexField F>
+[[nodiscard]] CurvedRay<typename F::scalar_type> curved_ray(const F& field, const Ray<typename F::scalar_type>& ray) noexcept
+{
+    return {ray.origin, field.index(ray.origin) * normalize(ray.direction)};
+}
+
+/// grad(n^2) / 2 = n grad n: the ray's acceleration in the parameter t (dt = ds / n).
+template <IndexField F>
+[[nodiscard]] Vec3<typename F::scalar_type> bending(const F& field, const Vec3<typename F::scalar_type>& p) noexcept
+{
+    return field.index(p) * field.gradient(p);
+}
+
+/// One Runge-Kutta-Nystrom step of dt in t (Sharma et al. 1982, eq. 12), fourth order:
+///   A = dt D(x), B = dt D(x + dt/2 T + dt/8 A), C = dt D(x + dt T + dt/2 B),
+///   x' = x + dt (T + (A + 2B) / 6),  T' = T + (A + 4B + C) / 6,
+/// exact when D is constant (n^2 linear in space). The arc length covered is about n dt.
+template <IndexField F>
+[[nodiscard]] CurvedRay<typename F::scalar_type> sharma_step(const F& field, const CurvedRay<typename F::scalar_type>& ray,
+                                                             typename F::scalar_type dt) noexcept
+{
+    using T = typename F::scalar_type;
+    const Vec3<T>& x = ray.position;
+    const Vec3<T>& t = ray.optical;
+    const Vec3<T> a = dt * bending(field, x);
+    const Vec3<T> b = dt * bending(field, x + (dt / T(2)) * t + (dt / T(8)) * a);
+    const Vec3<T> c = dt * bending(field, x + dt * t + (dt / T(2)) * b);
+    return {x + dt * (t + (a + T(2) * b) / T(6)), t + (a + T(4) * b + c) / T(6)};
+}
+
+/// Sharma steps whose length adapts to keep each step's position error under
+/// `tolerance` (absolute, in scene units), estimated by step doubling: a step of dt
+/// against two of dt / 2, whose difference is 15/16 of the larger one's error for a
+/// fourth-order method; the two half steps are kept (Richardson-extrapolated).
+template <IndexField F>
+class AdaptiveStepper {
+public:
+    using T = typename F::scalar_type;
+
+    struct Config {
+        T tolerance = T(1e-6);  ///< position error allowed per step
+        T first_step = T(0.1);  ///< the first step's arc length
+        T max_step = T(10);     ///< no step longer than this arc length
+    };
+
+    explicit AdaptiveStepper(const F& field, Config config = {}) : field_(&field), config_(config)
+    {
+        field.validate();
+        detail::require_positive("AdaptiveStepper tolerance", config.tolerance);
+        detail::require_positive("AdaptiveStepper first_step", config.first_step);
+        detail::require_positive("AdaptiveStepper max_step", config.max_step);
+    }
+
+    /// Advance `ray` by one accepted step; `dt` carries the step size from one call to
+    /// the next (start with 0: the first step is then config.first_step long). Returns
+    /// the arc length covered (about n dt); `accepted`, if given, receives the step's dt.
+    T step(CurvedRay<T>& ray, T& dt, T* accepted = nullptr) const noexcept
+    {
+        const T n = length(ray.optical);
+        if (!(dt > T(0))) dt = config_.first_step / n;
+        dt = std::min(dt, config_.max_step / n);
+        for (;;) {
+            const CurvedRay<T> whole = sharma_step(*field_, ray, dt);
+            const CurvedRay<T> half = sharma_step(*field_, sharma_step(*field_, ray, dt / T(2)), dt / T(2));
+            const T error = length(half.position - whole.position) * (T(16) / T(15));
+            const T scale = error > T(0) ? T(0.9) * std::pow(config_.tolerance / error, T(0.2)) : T(4);
+            if (error <= config_.tolerance || dt * n <= std::numeric_limits<T>::epsilon() * (T(1) + max_component(abs(ray.position)))) {
+                const T covered = length(half.position - ray.position);
+                if (accepted != nullptr) *accepted = dt;
+                ray = {half.position + (half.position - whole.position) / T(15), half.optical + (half.optical - whole.optical) / T(15)};
+                dt *= std::clamp(scale, T(0.2), T(4));
+                return covered;
+            }
+            dt *= std::clamp(scale, T(0.1), T(0.9));
+        }
+    }
+
+private:
+    const F* field_;
+    Config config_;
+};
+
+// The Lecture Notes' Layers
+
+/// The air between y = bottom and y = top cut into `layers` flat layers, each of the
+/// field's index at its middle height; a ray goes straight within a layer and refracts
+/// by Snell's law (or reflects totally) at each boundary.
+template <IndexField F>
+class LayeredMedium {
+public:
+    using T = typename F::scalar_type;
+
+    LayeredMedium(const F& field, T bottom, T top, int layers) : field_(&field), bottom_(bottom), top_(top), layers_(layers)
+    {
+        field.validate();
+        detail::require_finite("LayeredMedium bottom", bottom);
+        detail::require_finite("LayeredMedium top", top);
+        if (!(top > bottom)) detail::throw_invalid("LayeredMedium top must be above bottom (", bottom, "), got ", top);
+        if (layers < 1) detail::throw_invalid("LayeredMedium layers must be >= 1, got ", layers);
+        height_ = (top - bottom) / T(layers);
+    }
+
+    [[nodiscard]] int layers() const noexcept { return layers_; }
+
+    /// The layer holding height y (clamped into [0, layers); in floating point first, so a
+    /// far-off or NaN height never overflows the conversion to int).
+    [[nodiscard]] int layer_of(T y) const noexcept
+    {
+        const T layer = std::floor((y - bottom_) / height_);
+        if (!(layer > T(0))) return 0;
+        return layer < T(layers_ - 1) ? static_cast<int>(layer) : layers_ - 1;
+    }
+
+    /// The index of layer i: the field at its middle height (x = z = 0: stratified fields).
+    [[nodiscard]] T index_of(int layer) const noexcept { return field_->index({T(0), bottom_ + (T(layer) + T(0.5)) * height_, T(0)}); }
+
+    /// From `origin` in layer `layer` along the unit `direction`, straight to the layer's
+    /// next boundary and across it (or back, under total internal reflection). Returns
+    /// false when the ray leaves the layers (through the top or the bottom) or runs
+    /// horizontally; then `origin` is where it left.
+    bool step(Vec3<T>& origin, Vec3<T>& direction, int& layer) const noexcept
+    {
+        if (direction.y == T(0)) return false;
+        const bool up = direction.y > T(0);
+        const T boundary = bottom_ + T(layer + (up ? 1 : 0)) * height_;
+        origin = origin + ((boundary - origin.y) / direction.y) * direction;
+        origin.y = boundary;
+        const int next = layer + (up ? 1 : -1);
+        if (next < 0 || next >= layers_) return false;
+        const Vec3<T> facing{T(0), up ? T(-1) : T(1), T(0)};
+        if (const auto r = refraction(direction, facing, index_of(next) / index_of(layer))) {
+            direction = normalize(r->direction);
+            layer = next;
+        } else {
+            direction = reflect(direction, facing);
+        }
+        return true;
+    }
+
+private:
+    const F* field_;
+    T bottom_, top_, height_ = T(1);
+    int layers_;
+};
+
+} // namespace prism
+
+// ---- prism/medium/air.hpp ----
+// The scene's air: uniform (rays go straight, the default) or of a varying index
+// (graded-index air: mirages, a flattened setting sun), through which rays curve.
+//
+// GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
+// field must be uniform, and rays go straight there. Inside, a ray follows the ray
+// equation by AdaptiveStepper's steps, and each step's chord is tested against the
+// scene: the first surface a chord meets is where the ray lands (a chord is within the
+// stepper's tolerance of the true path). Surfaces shade as usual; the rays they send on
+// (reflected, refracted into nothing dispersive... any ray back in the air) curve again.
+// Shadow rays stay straight: over the few metres to kilometres a scene spans, air bends
+// light by well under a degree, enough to move an image (the mirage) and too little to
+// move a shadow's edge visibly; tracing the curved path that reaches a light is a
+// boundary-value problem left for later.
+
+
+#include <optional>
+
+namespace prism {
+
+/// Uniform air of index 1: rays are straight.
+struct StraightAir {
+    static constexpr bool curved = false;
+    constexpr void validate() const {}
+};
+
+/// Air whose index is `field` inside `region` (uniform outside it); rays through it curve.
+template <IndexField F>
+struct GradedAir {
+    using scalar_type = typename F::scalar_type;
+    using T = scalar_type;
+    static constexpr bool curved = true;
+
+    F field{};
+    Aabb<T> region{};                                   ///< where the index varies
+    typename AdaptiveStepper<F>::Config stepping{};     ///< the stepper's tolerance and step lengths
+    /// A chord that meets a surface is halved (Sharma steps of half the dt) until it is
+    /// at most this long, so the landing point lies on the curve, not on a chord that
+    /// cuts under it (a chord of length L sags by about L^2 / (8 R) from a path of radius R).
+    T landing_chord = T(1e-3);
+    int max_steps = 1000000;                            ///< a ray still in the air after this many steps is lost (background)
+
+    void validate() const
+    {
+        field.validate();
+        if (!region.bounded()) detail::throw_invalid("GradedAir region must be a bounded, non-empty box");
+        if (max_steps < 1) detail::throw_invalid("GradedAir max_steps must be >= 1, got ", max_steps);
+        detail::require_positive("GradedAir landing_chord", landing_chord);
+        (void)AdaptiveStepper<F>(field, stepping); // checks the stepping
+    }
+};
+
+/// Where a ray through curved air first meets a surface of the scene, or nothing; on a
+/// hit, `segment` is the straight piece (unit direction) on which it lies, the ray to
+/// shade with, and `path` (if given) receives the length of the whole curved path.
+template <class SceneT, IndexField F>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const GradedAir<F>& air,
+                                                                                const Ray<typename SceneT::scalar_type>& ray,
+                                                                                Ray<typename SceneT::scalar_type>& segment,
+                                                                                typename SceneT::scalar_type* path = nullptr) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    static_assert(std::same_as<T, typename F::scalar_type>, "GradedAir's field must have the scene's scalar type");
+    T travelled = T(0); // along the path, up to `segment`'s origin
+    const auto landed = [&](std::optional<Hit<T>> hit) {
+        if (hit && path != nullptr) *path = travelled + hit->crossing.t;
+        return hit;
+    };
+    segment = {ray.origin, normalize(ray.direction)};
+    const Interval<T> inside = air.region.clip(segment, {T(0), infinity<T>});
+    if (inside.empty()) return landed(scene.closest_hit(segment, {T(0), infinity<T>}));
+    // Straight up to the box.
+    if (inside.min > T(0)) {
+        if (auto hit = scene.closest_hit(segment, {T(0), inside.min})) return landed(hit);
+        travelled = inside.min;
+    }
+    CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(std::max(inside.min, T(0))), segment.direction});
+    const AdaptiveStepper<F> stepper(air.field, air.stepping);
+    T dt = T(0);
+    for (int i = 0; i < air.max_steps; ++i) {
+        const CurvedRay<T> start = curved;
+        T taken = T(0);
+        stepper.step(curved, dt, &taken);
+        const Vec3<T> chord = curved.position - start.position;
+        const T chord_length = length(chord);
+        if (!(chord_length > T(0))) continue;
+        segment = {start.position, chord / chord_length};
+        if (auto hit = scene.closest_hit(segment, {T(0), chord_length})) {
+            // Home in on the landing point along the curve: halve the step while its
+            // chord is long, keeping the half whose chord meets the surface.
+            CurvedRay<T> from = start;
+            T h = taken;
+            T length_now = chord_length;
+            while (length_now > air.landing_chord && h > T(0)) {
+                h /= T(2);
+                const CurvedRay<T> middle = sharma_step(air.field, from, h);
+                const Vec3<T> first = middle.position - from.position;
+                const T first_length = length(first);
+                if (!(first_length > T(0))) break;
+                const Ray<T> first_segment{from.position, first / first_length};
+                if (auto near = scene.closest_hit(first_segment, {T(0), first_length})) {
+                    segment = first_segment;
+                    hit = near;
+                    length_now = first_length;
+                    continue;
+                }
+                const CurvedRay<T> end = sharma_step(air.field, middle, h);
+                const Vec3<T> second = end.position - middle.position;
+                const T second_length = length(second);
+                if (!(second_length > T(0))) break;
+                const Ray<T> second_segment{middle.position, second / second_length};
+                auto far = scene.closest_hit(second_segment, {T(0), second_length});
+                if (!far) break; // the curve grazes past where the chord met it: keep the chord's hit
+                segment = second_segment;
+                hit = far;
+                from = middle;
+                travelled += first_length;
+                length_now = second_length;
+            }
+            return landed(hit);
+        }
+        travelled += chord_length;
+        if (!air.region.contains(curved.position)) {
+            // Out of the box: straight from here on.
+            segment = {curved.position, curved.direction()};
+            return landed(scene.closest_hit(segment, {T(0), infinity<T>}));
+        }
+    }
+    return std::nullopt;
+}
+
+/// The first surface a ray in the air meets: along the curve in GradedAir, straight in
+/// StraightAir (where `segment` is the ray itself). `path`, if given, receives the
+/// length travelled to it.
+template <class SceneT, class Air>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_in_air(const SceneT& scene, const Air& air,
+                                                                               const Ray<typename SceneT::scalar_type>& ray,
+                                                                               Ray<typename SceneT::scalar_type>& segment,
+                                                                               typename SceneT::scalar_type* path = nullptr) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    if constexpr (Air::curved) {
+        return first_hit_through(scene, air, ray, segment, path);
+    } else {
+        segment = ray;
+        auto hit = scene.closest_hit(ray, {T(0), infinity<T>});
+        if (hit && path != nullptr) *path = hit->crossing.t * length(ray.direction);
+        return hit;
+    }
+}
+
+} // namespace prism
+
 // ---- prism/photon/photon.hpp ----
 // Photon: what a photon map stores, and the sampling a photon tracer needs.
 //
@@ -4328,14 +4782,15 @@ struct Emitter {
     Rgb<T> power{};             ///< Light::photon_power of this aim
 };
 
-template <class SceneT>
+template <class SceneT, class Air = StraightAir>
 class PhotonTracer {
 public:
     using T = typename SceneT::scalar_type;
 
-    PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config)
-        : scene_(scene), config_((detail::validate(config), config)), bands_(config.dispersion_bands)
+    PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config, const Air& air = {})
+        : scene_(scene), config_((detail::validate(config), config)), bands_(config.dispersion_bands), air_(air)
     {
+        air_.validate();
         Pcg32 scrambles(config.seed, 0xfeed5eedULL);
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
@@ -4408,16 +4863,20 @@ private:
         T wavelength = T(0); // white until a dispersive interface splits it
         MediumStack media;   // the transmissive objects the photon is inside of
         for (int bounce = 0; bounce <= config_.max_bounces; ++bounce) {
-            const auto hit = scene_.closest_hit(ray, {T(0), infinity<T>});
+            // In the air a photon follows the air's curve; inside objects, straight lines.
+            Ray<T> segment = ray;
+            T path = T(0);
+            const auto hit = media.empty() ? first_hit_in_air(scene_, air_, ray, segment, &path)
+                                           : first_hit_in_air(scene_, StraightAir{}, ray, segment, &path);
             if (!hit) return;
             const Crossing<T>& c = hit->crossing;
-            const Vec3<T> d = normalize(ray.direction);
-            travelled += c.t * length(ray.direction);
+            const Vec3<T> d = normalize(segment.direction);
+            travelled += path;
             const auto stored = [&] { return without_falloff ? power * (travelled * travelled) : power; };
             enum class Next { absorbed, scattered, passed };
             const Next next_step = scene_.visit_material(*hit, [&]<class M>(const M& material) -> Next {
                 // What the medium it travelled in let through, before anything else.
-                attenuate_segment(scene_, media, material, c, ray, power);
+                attenuate_segment(scene_, media, material, c, segment, power);
                 if constexpr (has_diffuse<M>) {
                     if (caustic_pass) {
                         if (!direct && specular_only) out.push_back(photon(c.point, stored(), d, Photon::caustic));
@@ -4546,6 +5005,7 @@ private:
     const SceneT& scene_;
     PhotonTracerConfig config_;
     SpectralBands<T> bands_; ///< for photons meeting a dispersive interface
+    Air air_;                ///< the scene's air: photons in it curve in GradedAir
     BoundingSphere<T> scene_sphere_{}; ///< around everything bounded (when anything is)
     std::vector<Emitter<T>> global_;  ///< every light aimed everywhere, for the global map
     T global_power_ = T(0);
@@ -4580,10 +5040,10 @@ std::vector<Photon> trace_in_fixed_blocks(std::size_t count, unsigned threads, T
 } // namespace detail
 
 /// Trace the global and caustic photon maps of a scene, from its lights.
-template <class SceneT>
-[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config = {})
+template <class SceneT, class Air = StraightAir>
+[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config = {}, const Air& air = {})
 {
-    const detail::PhotonTracer<SceneT> tracer(scene, config);
+    const detail::PhotonTracer<SceneT, Air> tracer(scene, config, air);
     PhotonMaps maps;
     try {
         maps.global = PhotonMap(detail::trace_in_fixed_blocks(config.global_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
@@ -4630,7 +5090,9 @@ template <class SceneT>
 
 namespace prism {
 
-template <class SceneT>
+/// The photon mapper over `scene` with its air (StraightAir, or GradedAir: camera rays,
+/// gather rays and photons in the air curve; medium/air.hpp).
+template <class SceneT, class Air = StraightAir>
 class PhotonMapper {
 public:
     using scalar_type = typename SceneT::scalar_type;
@@ -4655,9 +5117,11 @@ public:
     };
 
     /// Traces the photon maps (the expensive part), then renders with them.
-    explicit PhotonMapper(const SceneT& scene, Config config = {}) : scene_(&scene), config_(config), bands_(config.dispersion_bands)
+    explicit PhotonMapper(const SceneT& scene, Config config = {}, Air air = {})
+        : scene_(&scene), config_(config), bands_(config.dispersion_bands), air_(std::move(air))
     {
         scene.validate();
+        air_.validate();
         validate(config.caustic, "PhotonMapper caustic");
         validate(config.global, "PhotonMapper global");
         if (config.gather_rays < 0) detail::throw_invalid("PhotonMapper gather_rays must be >= 0, got ", config.gather_rays);
@@ -4668,10 +5132,10 @@ public:
         detail::validate(config.tracing);
         if (config.visibility_k > 0 && SceneT::light_count != 1)
             detail::throw_invalid("PhotonMapper visibility_k needs a scene with exactly one light, got lights: ", SceneT::light_count);
-        maps_ = trace_photons(scene, config.tracing);
+        maps_ = trace_photons(scene, config.tracing, air_);
         if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4);
     }
-    PhotonMapper(const SceneT&& scene, Config config = {}) = delete;
+    PhotonMapper(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
 
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
 
@@ -4707,9 +5171,10 @@ private:
     /// the transmissive objects `media` (medium/nesting.hpp).
     [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength, const MediumStack& media) const noexcept
     {
-        const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
+        Ray<T> segment = ray;
+        const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
         if (!hit) return scene_->background;
-        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, ray, *hit, depth, weight, rng, wavelength, media); });
+        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
     }
 
     template <class M>
@@ -4723,7 +5188,7 @@ private:
         if constexpr (has_diffuse<M>) {
             const Vec3<float> p(hit.point), nf(n);
             Rgb<T> irradiance = direct(hit, n) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
-            if (config_.gather_rays > 0) irradiance += gather(hit, n, rng);
+            if (config_.gather_rays > 0) irradiance += gather(hit, n, rng, media.empty());
             else irradiance += Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
             radiance += diffuse_response(material, hit.point).brdf() * irradiance;
         }
@@ -4771,13 +5236,15 @@ private:
     }
 
     /// Final gathering: E = pi / M sum L_i for cosine-distributed directions, with
-    /// L_i = albedo / pi * E_global where the ray lands on a diffuse surface.
-    [[nodiscard]] Rgb<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Pcg32& rng) const noexcept
+    /// L_i = albedo / pi * E_global where the ray lands on a diffuse surface; from a
+    /// surface in the air (`in_air`), the gather rays follow the air's curve.
+    [[nodiscard]] Rgb<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Pcg32& rng, bool in_air) const noexcept
     {
         Rgb<T> sum{T(0)};
         for (int i = 0; i < config_.gather_rays; ++i) {
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, cosine_hemisphere(n, rng));
-            const auto next = scene_->closest_hit(ray, {T(0), infinity<T>});
+            Ray<T> segment = ray;
+            const auto next = in_air ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
             if (!next) continue;
             const Crossing<T>& c = next->crossing;
             sum += scene_->visit_material(*next, [&]<class M>(const M& material) -> Rgb<T> {
@@ -4795,433 +5262,9 @@ private:
     const SceneT* scene_;
     Config config_;
     SpectralBands<T> bands_;
+    Air air_;
     PhotonMaps maps_;
 };
-
-} // namespace prism
-
-// ---- prism/medium/graded_index.hpp ----
-// Graded-index media: air whose index of refraction varies in space (mirages, a setting
-// sun flattened by the atmosphere), and the two ways of tracing a ray through it.
-//
-// A ray in a medium of index n(x) follows the ray equation d/ds (n dx/ds) = grad n.
-// With the optical direction T = n dx/ds (a vector of length n) and the parameter t,
-// dt = ds / n, it becomes d^2 x / dt^2 = n grad n = grad(n^2) / 2, which Sharma, Kumar
-// and Ghatak (1982, "Tracing rays through graded-index media: a new method", Applied
-// Optics 21(6)) integrate with a Runge-Kutta-Nystrom step: `sharma_step`. Its error is
-// controlled by step doubling in `AdaptiveStepper`. The lecture notes' own method,
-// "divide the air into layers and keep bending the light", is `LayeredMedium`: straight
-// segments through flat layers of constant index, refracted by Snell at each boundary.
-//
-// Index fields are policies (IndexField): a stratified linear n(y), n^2 linear in y
-// (whose rays are exact parabolas), an exponential atmosphere, a heated layer over a
-// road, and any callable. Stratified fields vary along y (up).
-
-
-#include <algorithm>
-#include <cmath>
-#include <concepts>
-#include <limits>
-
-namespace prism {
-
-/// An index of refraction that varies in space: `index(p)` and its gradient
-/// `gradient(p)`, both finite and the index > 0 wherever a ray goes.
-template <class F>
-concept IndexField = requires(const F& field, const Vec3<typename F::scalar_type>& p) {
-    requires Scalar<typename F::scalar_type>;
-    { field.index(p) } -> std::same_as<typename F::scalar_type>;
-    { field.gradient(p) } -> std::same_as<Vec3<typename F::scalar_type>>;
-    field.validate();
-};
-
-// Index Field Policies
-
-/// n(y) = n0 + slope y.
-template <Scalar T = double>
-struct LinearIndex {
-    using scalar_type = T;
-    T n0 = T(1);
-    T slope = T(0); ///< dn/dy
-
-    [[nodiscard]] constexpr T index(const Vec3<T>& p) const noexcept { return n0 + slope * p.y; }
-    [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>&) const noexcept { return {T(0), slope, T(0)}; }
-    constexpr void validate() const
-    {
-        detail::require_positive("LinearIndex n0", n0);
-        detail::require_finite("LinearIndex slope", slope);
-    }
-};
-
-/// n(y)^2 = a + b y (where a + b y > 0): the field whose rays are exact parabolas,
-/// y(x) = y0 + tan(theta0) x + b x^2 / (4 K^2) with K = n(y0) cos(theta0).
-template <Scalar T = double>
-struct LinearSquareIndex {
-    using scalar_type = T;
-    T a = T(1);
-    T b = T(0);
-
-    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return std::sqrt(a + b * p.y); }
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept { return {T(0), b / (T(2) * index(p)), T(0)}; }
-    constexpr void validate() const
-    {
-        detail::require_positive("LinearSquareIndex a", a);
-        detail::require_finite("LinearSquareIndex b", b);
-    }
-};
-
-/// The standard exponential atmosphere: n(h) = 1 + (n0 - 1) e^(-h / H), h = y - ground.
-/// Defaults: sea-level air at 15 C (n0 - 1 = 2.93e-4, visible light) and H = 8.5 km, in
-/// metres.
-template <Scalar T = double>
-struct ExponentialAtmosphere {
-    using scalar_type = T;
-    T n0 = T(1.000293);
-    T scale_height = T(8500);
-    T ground = T(0);
-
-    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return T(1) + (n0 - T(1)) * std::exp(-(p.y - ground) / scale_height); }
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
-    {
-        return {T(0), -(n0 - T(1)) / scale_height * std::exp(-(p.y - ground) / scale_height), T(0)};
-    }
-    constexpr void validate() const
-    {
-        detail::require_positive("ExponentialAtmosphere n0", n0);
-        detail::require_positive("ExponentialAtmosphere scale_height", scale_height);
-        detail::require_finite("ExponentialAtmosphere ground", ground);
-    }
-};
-
-/// Hot air over a road: n(y) = n_air - drop e^(-(y - ground) / thickness). The air at the
-/// road is hotter, so its index is lower by `drop` (about 1e-6 per kelvin: 3e-5 for a
-/// road 30 K above the air), and rays grazing it bend back up (an inferior mirage).
-template <Scalar T = double>
-struct HeatedLayer {
-    using scalar_type = T;
-    T n_air = T(1.000293);
-    T drop = T(3e-5);
-    T thickness = T(0.3); ///< metres over which the excess heat falls by e
-    T ground = T(0);
-
-    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return n_air - drop * std::exp(-(p.y - ground) / thickness); }
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
-    {
-        return {T(0), drop / thickness * std::exp(-(p.y - ground) / thickness), T(0)};
-    }
-    constexpr void validate() const
-    {
-        detail::require_positive("HeatedLayer n_air", n_air);
-        detail::require_finite("HeatedLayer drop", drop);
-        if (!(drop < n_air)) detail::throw_invalid("HeatedLayer drop must be below n_air (", n_air, "), got ", drop);
-        detail::require_positive("HeatedLayer thickness", thickness);
-        detail::require_finite("HeatedLayer ground", ground);
-    }
-};
-
-/// Any index n(p) given as a callable; its gradient by central differences of step h.
-template <Scalar T, class F>
-    requires std::regular_invocable<const F&, const Vec3<T>&>
-struct IndexFunction {
-    using scalar_type = T;
-    F function;
-    T h = T(1e-4);
-
-    [[nodiscard]] T index(const Vec3<T>& p) const { return function(p); }
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const
-    {
-        const T inv = T(1) / (T(2) * h);
-        return {(function(p + Vec3<T>(h, 0, 0)) - function(p - Vec3<T>(h, 0, 0))) * inv,
-                (function(p + Vec3<T>(0, h, 0)) - function(p - Vec3<T>(0, h, 0))) * inv,
-                (function(p + Vec3<T>(0, 0, h)) - function(p - Vec3<T>(0, 0, h))) * inv};
-    }
-    constexpr void validate() const { detail::require_positive("IndexFunction h", h); }
-};
-
-static_assert(IndexField<LinearIndex<double>> && IndexField<LinearSquareIndex<float>> && IndexField<ExponentialAtmosphere<double>> &&
-              IndexField<HeatedLayer<double>>);
-
-// Curved Rays
-
-/// A ray inside a graded medium: where it is, and its optical direction n dx/ds (a
-/// vector of length n(position): the unit direction times the local index).
-template <Scalar T>
-struct CurvedRay {
-    Vec3<T> position;
-    Vec3<T> optical;
-
-    [[nodiscard]] Vec3<T> direction() const noexcept { return normalize(optical); }
-};
-
-/// The curved ray leaving `ray.origin` along `ray.direction` (any length) in the field.
-template <IndexField F>
-[[nodiscard]] CurvedRay<typename F::scalar_type> curved_ray(const F& field, const Ray<typename F::scalar_type>& ray) noexcept
-{
-    return {ray.origin, field.index(ray.origin) * normalize(ray.direction)};
-}
-
-/// grad(n^2) / 2 = n grad n: the ray's acceleration in the parameter t (dt = ds / n).
-template <IndexField F>
-[[nodiscard]] Vec3<typename F::scalar_type> bending(const F& field, const Vec3<typename F::scalar_type>& p) noexcept
-{
-    return field.index(p) * field.gradient(p);
-}
-
-/// One Runge-Kutta-Nystrom step of dt in t (Sharma et al. 1982, eq. 12), fourth order:
-///   A = dt D(x), B = dt D(x + dt/2 T + dt/8 A), C = dt D(x + dt T + dt/2 B),
-///   x' = x + dt (T + (A + 2B) / 6),  T' = T + (A + 4B + C) / 6,
-/// exact when D is constant (n^2 linear in space). The arc length covered is about n dt.
-template <IndexField F>
-[[nodiscard]] CurvedRay<typename F::scalar_type> sharma_step(const F& field, const CurvedRay<typename F::scalar_type>& ray,
-                                                             typename F::scalar_type dt) noexcept
-{
-    using T = typename F::scalar_type;
-    const Vec3<T>& x = ray.position;
-    const Vec3<T>& t = ray.optical;
-    const Vec3<T> a = dt * bending(field, x);
-    const Vec3<T> b = dt * bending(field, x + (dt / T(2)) * t + (dt / T(8)) * a);
-    const Vec3<T> c = dt * bending(field, x + dt * t + (dt / T(2)) * b);
-    return {x + dt * (t + (a + T(2) * b) / T(6)), t + (a + T(4) * b + c) / T(6)};
-}
-
-/// Sharma steps whose length adapts to keep each step's position error under
-/// `tolerance` (absolute, in scene units), estimated by step doubling: a step of dt
-/// against two of dt / 2, whose difference is 15/16 of the larger one's error for a
-/// fourth-order method; the two half steps are kept (Richardson-extrapolated).
-template <IndexField F>
-class AdaptiveStepper {
-public:
-    using T = typename F::scalar_type;
-
-    struct Config {
-        T tolerance = T(1e-6);  ///< position error allowed per step
-        T first_step = T(0.1);  ///< the first step's arc length
-        T max_step = T(10);     ///< no step longer than this arc length
-    };
-
-    explicit AdaptiveStepper(const F& field, Config config = {}) : field_(&field), config_(config)
-    {
-        field.validate();
-        detail::require_positive("AdaptiveStepper tolerance", config.tolerance);
-        detail::require_positive("AdaptiveStepper first_step", config.first_step);
-        detail::require_positive("AdaptiveStepper max_step", config.max_step);
-    }
-
-    /// Advance `ray` by one accepted step; `dt` carries the step size from one call to
-    /// the next (start with 0: the first step is then config.first_step long). Returns
-    /// the arc length covered (about n dt); `accepted`, if given, receives the step's dt.
-    T step(CurvedRay<T>& ray, T& dt, T* accepted = nullptr) const noexcept
-    {
-        const T n = length(ray.optical);
-        if (!(dt > T(0))) dt = config_.first_step / n;
-        dt = std::min(dt, config_.max_step / n);
-        for (;;) {
-            const CurvedRay<T> whole = sharma_step(*field_, ray, dt);
-            const CurvedRay<T> half = sharma_step(*field_, sharma_step(*field_, ray, dt / T(2)), dt / T(2));
-            const T error = length(half.position - whole.position) * (T(16) / T(15));
-            const T scale = error > T(0) ? T(0.9) * std::pow(config_.tolerance / error, T(0.2)) : T(4);
-            if (error <= config_.tolerance || dt * n <= std::numeric_limits<T>::epsilon() * (T(1) + max_component(abs(ray.position)))) {
-                const T covered = length(half.position - ray.position);
-                if (accepted != nullptr) *accepted = dt;
-                ray = {half.position + (half.position - whole.position) / T(15), half.optical + (half.optical - whole.optical) / T(15)};
-                dt *= std::clamp(scale, T(0.2), T(4));
-                return covered;
-            }
-            dt *= std::clamp(scale, T(0.1), T(0.9));
-        }
-    }
-
-private:
-    const F* field_;
-    Config config_;
-};
-
-// The Lecture Notes' Layers
-
-/// The air between y = bottom and y = top cut into `layers` flat layers, each of the
-/// field's index at its middle height; a ray goes straight within a layer and refracts
-/// by Snell's law (or reflects totally) at each boundary.
-template <IndexField F>
-class LayeredMedium {
-public:
-    using T = typename F::scalar_type;
-
-    LayeredMedium(const F& field, T bottom, T top, int layers) : field_(&field), bottom_(bottom), top_(top), layers_(layers)
-    {
-        field.validate();
-        detail::require_finite("LayeredMedium bottom", bottom);
-        detail::require_finite("LayeredMedium top", top);
-        if (!(top > bottom)) detail::throw_invalid("LayeredMedium top must be above bottom (", bottom, "), got ", top);
-        if (layers < 1) detail::throw_invalid("LayeredMedium layers must be >= 1, got ", layers);
-        height_ = (top - bottom) / T(layers);
-    }
-
-    [[nodiscard]] int layers() const noexcept { return layers_; }
-
-    /// The layer holding height y (clamped into [0, layers); in floating point first, so a
-    /// far-off or NaN height never overflows the conversion to int).
-    [[nodiscard]] int layer_of(T y) const noexcept
-    {
-        const T layer = std::floor((y - bottom_) / height_);
-        if (!(layer > T(0))) return 0;
-        return layer < T(layers_ - 1) ? static_cast<int>(layer) : layers_ - 1;
-    }
-
-    /// The index of layer i: the field at its middle height (x = z = 0: stratified fields).
-    [[nodiscard]] T index_of(int layer) const noexcept { return field_->index({T(0), bottom_ + (T(layer) + T(0.5)) * height_, T(0)}); }
-
-    /// From `origin` in layer `layer` along the unit `direction`, straight to the layer's
-    /// next boundary and across it (or back, under total internal reflection). Returns
-    /// false when the ray leaves the layers (through the top or the bottom) or runs
-    /// horizontally; then `origin` is where it left.
-    bool step(Vec3<T>& origin, Vec3<T>& direction, int& layer) const noexcept
-    {
-        if (direction.y == T(0)) return false;
-        const bool up = direction.y > T(0);
-        const T boundary = bottom_ + T(layer + (up ? 1 : 0)) * height_;
-        origin = origin + ((boundary - origin.y) / direction.y) * direction;
-        origin.y = boundary;
-        const int next = layer + (up ? 1 : -1);
-        if (next < 0 || next >= layers_) return false;
-        const Vec3<T> facing{T(0), up ? T(-1) : T(1), T(0)};
-        if (const auto r = refraction(direction, facing, index_of(next) / index_of(layer))) {
-            direction = normalize(r->direction);
-            layer = next;
-        } else {
-            direction = reflect(direction, facing);
-        }
-        return true;
-    }
-
-private:
-    const F* field_;
-    T bottom_, top_, height_ = T(1);
-    int layers_;
-};
-
-} // namespace prism
-
-// ---- prism/medium/air.hpp ----
-// The scene's air: uniform (rays go straight, the default) or of a varying index
-// (graded-index air: mirages, a flattened setting sun), through which rays curve.
-//
-// GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
-// field must be uniform, and rays go straight there. Inside, a ray follows the ray
-// equation by AdaptiveStepper's steps, and each step's chord is tested against the
-// scene: the first surface a chord meets is where the ray lands (a chord is within the
-// stepper's tolerance of the true path). Surfaces shade as usual; the rays they send on
-// (reflected, refracted into nothing dispersive... any ray back in the air) curve again.
-// Shadow rays stay straight: over the few metres to kilometres a scene spans, air bends
-// light by well under a degree, enough to move an image (the mirage) and too little to
-// move a shadow's edge visibly; tracing the curved path that reaches a light is a
-// boundary-value problem left for later.
-
-
-#include <optional>
-
-namespace prism {
-
-/// Uniform air of index 1: rays are straight.
-struct StraightAir {
-    static constexpr bool curved = false;
-    constexpr void validate() const {}
-};
-
-/// Air whose index is `field` inside `region` (uniform outside it); rays through it curve.
-template <IndexField F>
-struct GradedAir {
-    using scalar_type = typename F::scalar_type;
-    using T = scalar_type;
-    static constexpr bool curved = true;
-
-    F field{};
-    Aabb<T> region{};                                   ///< where the index varies
-    typename AdaptiveStepper<F>::Config stepping{};     ///< the stepper's tolerance and step lengths
-    /// A chord that meets a surface is halved (Sharma steps of half the dt) until it is
-    /// at most this long, so the landing point lies on the curve, not on a chord that
-    /// cuts under it (a chord of length L sags by about L^2 / (8 R) from a path of radius R).
-    T landing_chord = T(1e-3);
-    int max_steps = 1000000;                            ///< a ray still in the air after this many steps is lost (background)
-
-    void validate() const
-    {
-        field.validate();
-        if (!region.bounded()) detail::throw_invalid("GradedAir region must be a bounded, non-empty box");
-        if (max_steps < 1) detail::throw_invalid("GradedAir max_steps must be >= 1, got ", max_steps);
-        detail::require_positive("GradedAir landing_chord", landing_chord);
-        (void)AdaptiveStepper<F>(field, stepping); // checks the stepping
-    }
-};
-
-/// Where a ray through curved air first meets a surface of the scene, or nothing; on a
-/// hit, `segment` is the straight piece (unit direction) on which it lies, the ray to
-/// shade with.
-template <class SceneT, IndexField F>
-[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const GradedAir<F>& air,
-                                                                                const Ray<typename SceneT::scalar_type>& ray,
-                                                                                Ray<typename SceneT::scalar_type>& segment) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    static_assert(std::same_as<T, typename F::scalar_type>, "GradedAir's field must have the scene's scalar type");
-    segment = {ray.origin, normalize(ray.direction)};
-    const Interval<T> inside = air.region.clip(segment, {T(0), infinity<T>});
-    if (inside.empty()) return scene.closest_hit(segment, {T(0), infinity<T>});
-    // Straight up to the box.
-    if (inside.min > T(0)) {
-        if (auto hit = scene.closest_hit(segment, {T(0), inside.min})) return hit;
-    }
-    CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(std::max(inside.min, T(0))), segment.direction});
-    const AdaptiveStepper<F> stepper(air.field, air.stepping);
-    T dt = T(0);
-    for (int i = 0; i < air.max_steps; ++i) {
-        const CurvedRay<T> start = curved;
-        T taken = T(0);
-        stepper.step(curved, dt, &taken);
-        const Vec3<T> chord = curved.position - start.position;
-        const T chord_length = length(chord);
-        if (!(chord_length > T(0))) continue;
-        segment = {start.position, chord / chord_length};
-        if (auto hit = scene.closest_hit(segment, {T(0), chord_length})) {
-            // Home in on the landing point along the curve: halve the step while its
-            // chord is long, keeping the half whose chord meets the surface.
-            CurvedRay<T> from = start;
-            T h = taken;
-            T length_now = chord_length;
-            while (length_now > air.landing_chord && h > T(0)) {
-                h /= T(2);
-                const CurvedRay<T> middle = sharma_step(air.field, from, h);
-                const Vec3<T> first = middle.position - from.position;
-                const T first_length = length(first);
-                if (!(first_length > T(0))) break;
-                const Ray<T> first_segment{from.position, first / first_length};
-                if (auto near = scene.closest_hit(first_segment, {T(0), first_length})) {
-                    segment = first_segment;
-                    hit = near;
-                    length_now = first_length;
-                    continue;
-                }
-                const CurvedRay<T> end = sharma_step(air.field, middle, h);
-                const Vec3<T> second = end.position - middle.position;
-                const T second_length = length(second);
-                if (!(second_length > T(0))) break;
-                const Ray<T> second_segment{middle.position, second / second_length};
-                auto far = scene.closest_hit(second_segment, {T(0), second_length});
-                if (!far) break; // the curve grazes past where the chord met it: keep the chord's hit
-                segment = second_segment;
-                hit = far;
-                from = middle;
-                length_now = second_length;
-            }
-            return hit;
-        }
-        if (!air.region.contains(curved.position)) {
-            // Out of the box: straight from here on.
-            segment = {curved.position, curved.direction()};
-            return scene.closest_hit(segment, {T(0), infinity<T>});
-        }
-    }
-    return std::nullopt;
-}
 
 } // namespace prism
 
@@ -5287,7 +5330,7 @@ private:
             // In the air (inside no object) the ray curves; it lands on a chord.
             if (media.empty()) {
                 Ray<T> segment = ray;
-                const auto hit = first_hit_through(*scene_, air_, ray, segment);
+                const auto hit = first_hit_in_air(*scene_, air_, ray, segment);
                 if (!hit) return scene_->background;
                 return scene_->visit_material(*hit, [&](const auto& material) {
                     return shade(material, segment, *hit, depth, weight, wavelength, media);

@@ -87,3 +87,49 @@ TEST_CASE("GradedAir refuses what it cannot trace")
     CHECK_THROWS_WITH_AS(Whitted(scene, {}, GradedAir<LinearIndex<double>>{.field = {.n0 = 1, .slope = 0.01}, .region = {{0, 0, 0}, {1, 1, 1}}, .max_steps = 0}),
                          doctest::Contains("max_steps"), std::invalid_argument);
 }
+
+TEST_CASE("Photons through graded air land along their exact parabolas")
+{
+    // A point light 1 above the floor in n^2 = 1 - 0.005 y. A photon launched at
+    // u = tan(theta0) lands at the distance r where 0 = y0 + u r + b r^2 (1 + u^2) / (4 n0^2),
+    // arriving with slope u + b r (1 + u^2) / (2 n0^2): for each landed photon, one of the
+    // two launch angles that reach r must give the slope it arrived with.
+    const double b = -0.005, y0 = 1, n0sq = 1 + b * y0;
+    const Scene scene{Lights{PointLight<double>{.position = {0, y0, 0}, .intensity = Rgb<double>(1)}},
+                      Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(0)}}}};
+    const GradedAir<LinearSquareIndex<double>> air{.field = {.a = 1, .b = b}, .region = {{-500, -1, -500}, {500, 150, 500}},
+                                                   .stepping = {.tolerance = 1e-8, .first_step = 0.01, .max_step = 5}};
+    const PhotonMaps maps = trace_photons(scene, {.global_photons = 20000, .caustic_photons = 0, .shadow_photons = false}, air);
+    int checked = 0;
+    double worst = 0;
+    for (const Photon& photon : maps.global.photons()) {
+        const double r = std::hypot(double(photon.position.x), double(photon.position.z));
+        if (r < 0.5 || r > 390) continue; // the farthest any photon reaches is 399
+        const Vec3<double> d = -Vec3<double>(photon.toward_source());
+        const double slope = d.y / std::hypot(d.x, d.z);
+        const double qa = b * r * r / (4 * n0sq), qb = r, qc = y0 + qa;
+        const double disc = qb * qb - 4 * qa * qc;
+        REQUIRE(disc >= 0);
+        double best = 1e300;
+        for (const double u : {(-qb + std::sqrt(disc)) / (2 * qa), (-qb - std::sqrt(disc)) / (2 * qa)})
+            best = std::min(best, std::abs(slope - (u + b * r * (1 + u * u) / (2 * n0sq))));
+        worst = std::max(worst, best / (1 + std::abs(slope)));
+        ++checked;
+    }
+    INFO(checked, " photons checked");
+    CHECK(checked > 2000);
+    CHECK(worst < 1e-3); // the stored direction's precision (16-bit octahedral) is about 3e-5
+}
+
+TEST_CASE("Shadow rays in graded air stay straight (documented): a wall on the straight line shades the point")
+{
+    const Scene scene{Lights{DirectionalLight<double>{.direction = {1, -1, 0}, .irradiance = Rgb<double>(3)}},
+                      Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(0.5)}}},
+                      Object{Box<double>({-2, 0, -5}, {-1.9, 3, 5}), Diffuse<double>{.albedo = {.color = Rgb<double>(0.5)}}}};
+    const GradedAir<LinearSquareIndex<double>> air{.field = {.a = 1, .b = -0.02}, .region = {{-50, -1, -50}, {50, 10, 50}}};
+    const Whitted curved(scene, {}, air);
+    const Whitted straight(scene);
+    const Ray<double> down{{0, 2, 0}, {0, -1, 0}}; // vertical: the stratified air does not bend it
+    CHECK(curved.radiance(down) == straight.radiance(down));
+    CHECK(straight.radiance(down).x == Approx(0.5 * scene.ambient.x).epsilon(1e-12)); // in the wall's shadow: ambient only
+}

@@ -38,7 +38,9 @@
 
 namespace prism {
 
-template <class SceneT>
+/// The photon mapper over `scene` with its air (StraightAir, or GradedAir: camera rays,
+/// gather rays and photons in the air curve; medium/air.hpp).
+template <class SceneT, class Air = StraightAir>
 class PhotonMapper {
 public:
     using scalar_type = typename SceneT::scalar_type;
@@ -63,9 +65,11 @@ public:
     };
 
     /// Traces the photon maps (the expensive part), then renders with them.
-    explicit PhotonMapper(const SceneT& scene, Config config = {}) : scene_(&scene), config_(config), bands_(config.dispersion_bands)
+    explicit PhotonMapper(const SceneT& scene, Config config = {}, Air air = {})
+        : scene_(&scene), config_(config), bands_(config.dispersion_bands), air_(std::move(air))
     {
         scene.validate();
+        air_.validate();
         validate(config.caustic, "PhotonMapper caustic");
         validate(config.global, "PhotonMapper global");
         if (config.gather_rays < 0) detail::throw_invalid("PhotonMapper gather_rays must be >= 0, got ", config.gather_rays);
@@ -76,10 +80,10 @@ public:
         detail::validate(config.tracing);
         if (config.visibility_k > 0 && SceneT::light_count != 1)
             detail::throw_invalid("PhotonMapper visibility_k needs a scene with exactly one light, got lights: ", SceneT::light_count);
-        maps_ = trace_photons(scene, config.tracing);
+        maps_ = trace_photons(scene, config.tracing, air_);
         if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4);
     }
-    PhotonMapper(const SceneT&& scene, Config config = {}) = delete;
+    PhotonMapper(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
 
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
 
@@ -115,9 +119,10 @@ private:
     /// the transmissive objects `media` (medium/nesting.hpp).
     [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength, const MediumStack& media) const noexcept
     {
-        const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
+        Ray<T> segment = ray;
+        const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
         if (!hit) return scene_->background;
-        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, ray, *hit, depth, weight, rng, wavelength, media); });
+        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
     }
 
     template <class M>
@@ -131,7 +136,7 @@ private:
         if constexpr (has_diffuse<M>) {
             const Vec3<float> p(hit.point), nf(n);
             Rgb<T> irradiance = direct(hit, n) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
-            if (config_.gather_rays > 0) irradiance += gather(hit, n, rng);
+            if (config_.gather_rays > 0) irradiance += gather(hit, n, rng, media.empty());
             else irradiance += Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
             radiance += diffuse_response(material, hit.point).brdf() * irradiance;
         }
@@ -179,13 +184,15 @@ private:
     }
 
     /// Final gathering: E = pi / M sum L_i for cosine-distributed directions, with
-    /// L_i = albedo / pi * E_global where the ray lands on a diffuse surface.
-    [[nodiscard]] Rgb<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Pcg32& rng) const noexcept
+    /// L_i = albedo / pi * E_global where the ray lands on a diffuse surface; from a
+    /// surface in the air (`in_air`), the gather rays follow the air's curve.
+    [[nodiscard]] Rgb<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Pcg32& rng, bool in_air) const noexcept
     {
         Rgb<T> sum{T(0)};
         for (int i = 0; i < config_.gather_rays; ++i) {
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, cosine_hemisphere(n, rng));
-            const auto next = scene_->closest_hit(ray, {T(0), infinity<T>});
+            Ray<T> segment = ray;
+            const auto next = in_air ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
             if (!next) continue;
             const Crossing<T>& c = next->crossing;
             sum += scene_->visit_material(*next, [&]<class M>(const M& material) -> Rgb<T> {
@@ -203,6 +210,7 @@ private:
     const SceneT* scene_;
     Config config_;
     SpectralBands<T> bands_;
+    Air air_;
     PhotonMaps maps_;
 };
 

@@ -74,7 +74,7 @@ private:
             // In the air (inside no object) the ray curves; it lands on a chord.
             if (media.empty()) {
                 Ray<T> segment = ray;
-                const auto hit = first_hit_through(*scene_, air_, ray, segment);
+                const auto hit = first_hit_in_air(*scene_, air_, ray, segment);
                 if (!hit) return scene_->background;
                 return scene_->visit_material(*hit, [&](const auto& material) {
                     return shade(material, segment, *hit, depth, weight, wavelength, media);

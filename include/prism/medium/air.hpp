@@ -58,20 +58,27 @@ struct GradedAir {
 
 /// Where a ray through curved air first meets a surface of the scene, or nothing; on a
 /// hit, `segment` is the straight piece (unit direction) on which it lies, the ray to
-/// shade with.
+/// shade with, and `path` (if given) receives the length of the whole curved path.
 template <class SceneT, IndexField F>
 [[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const GradedAir<F>& air,
                                                                                 const Ray<typename SceneT::scalar_type>& ray,
-                                                                                Ray<typename SceneT::scalar_type>& segment) noexcept
+                                                                                Ray<typename SceneT::scalar_type>& segment,
+                                                                                typename SceneT::scalar_type* path = nullptr) noexcept
 {
     using T = typename SceneT::scalar_type;
     static_assert(std::same_as<T, typename F::scalar_type>, "GradedAir's field must have the scene's scalar type");
+    T travelled = T(0); // along the path, up to `segment`'s origin
+    const auto landed = [&](std::optional<Hit<T>> hit) {
+        if (hit && path != nullptr) *path = travelled + hit->crossing.t;
+        return hit;
+    };
     segment = {ray.origin, normalize(ray.direction)};
     const Interval<T> inside = air.region.clip(segment, {T(0), infinity<T>});
-    if (inside.empty()) return scene.closest_hit(segment, {T(0), infinity<T>});
+    if (inside.empty()) return landed(scene.closest_hit(segment, {T(0), infinity<T>}));
     // Straight up to the box.
     if (inside.min > T(0)) {
-        if (auto hit = scene.closest_hit(segment, {T(0), inside.min})) return hit;
+        if (auto hit = scene.closest_hit(segment, {T(0), inside.min})) return landed(hit);
+        travelled = inside.min;
     }
     CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(std::max(inside.min, T(0))), segment.direction});
     const AdaptiveStepper<F> stepper(air.field, air.stepping);
@@ -113,17 +120,39 @@ template <class SceneT, IndexField F>
                 segment = second_segment;
                 hit = far;
                 from = middle;
+                travelled += first_length;
                 length_now = second_length;
             }
-            return hit;
+            return landed(hit);
         }
+        travelled += chord_length;
         if (!air.region.contains(curved.position)) {
             // Out of the box: straight from here on.
             segment = {curved.position, curved.direction()};
-            return scene.closest_hit(segment, {T(0), infinity<T>});
+            return landed(scene.closest_hit(segment, {T(0), infinity<T>}));
         }
     }
     return std::nullopt;
+}
+
+/// The first surface a ray in the air meets: along the curve in GradedAir, straight in
+/// StraightAir (where `segment` is the ray itself). `path`, if given, receives the
+/// length travelled to it.
+template <class SceneT, class Air>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_in_air(const SceneT& scene, const Air& air,
+                                                                               const Ray<typename SceneT::scalar_type>& ray,
+                                                                               Ray<typename SceneT::scalar_type>& segment,
+                                                                               typename SceneT::scalar_type* path = nullptr) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    if constexpr (Air::curved) {
+        return first_hit_through(scene, air, ray, segment, path);
+    } else {
+        segment = ray;
+        auto hit = scene.closest_hit(ray, {T(0), infinity<T>});
+        if (hit && path != nullptr) *path = hit->crossing.t * length(ray.direction);
+        return hit;
+    }
 }
 
 } // namespace prism

@@ -28,6 +28,7 @@
 #include <prism/light/light.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
+#include <prism/medium/air.hpp>
 #include <prism/medium/nesting.hpp>
 #include <prism/photon/photon_map.hpp>
 #include <prism/scene/object.hpp>
@@ -95,14 +96,15 @@ struct Emitter {
     Rgb<T> power{};             ///< Light::photon_power of this aim
 };
 
-template <class SceneT>
+template <class SceneT, class Air = StraightAir>
 class PhotonTracer {
 public:
     using T = typename SceneT::scalar_type;
 
-    PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config)
-        : scene_(scene), config_((detail::validate(config), config)), bands_(config.dispersion_bands)
+    PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config, const Air& air = {})
+        : scene_(scene), config_((detail::validate(config), config)), bands_(config.dispersion_bands), air_(air)
     {
+        air_.validate();
         Pcg32 scrambles(config.seed, 0xfeed5eedULL);
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
@@ -175,16 +177,20 @@ private:
         T wavelength = T(0); // white until a dispersive interface splits it
         MediumStack media;   // the transmissive objects the photon is inside of
         for (int bounce = 0; bounce <= config_.max_bounces; ++bounce) {
-            const auto hit = scene_.closest_hit(ray, {T(0), infinity<T>});
+            // In the air a photon follows the air's curve; inside objects, straight lines.
+            Ray<T> segment = ray;
+            T path = T(0);
+            const auto hit = media.empty() ? first_hit_in_air(scene_, air_, ray, segment, &path)
+                                           : first_hit_in_air(scene_, StraightAir{}, ray, segment, &path);
             if (!hit) return;
             const Crossing<T>& c = hit->crossing;
-            const Vec3<T> d = normalize(ray.direction);
-            travelled += c.t * length(ray.direction);
+            const Vec3<T> d = normalize(segment.direction);
+            travelled += path;
             const auto stored = [&] { return without_falloff ? power * (travelled * travelled) : power; };
             enum class Next { absorbed, scattered, passed };
             const Next next_step = scene_.visit_material(*hit, [&]<class M>(const M& material) -> Next {
                 // What the medium it travelled in let through, before anything else.
-                attenuate_segment(scene_, media, material, c, ray, power);
+                attenuate_segment(scene_, media, material, c, segment, power);
                 if constexpr (has_diffuse<M>) {
                     if (caustic_pass) {
                         if (!direct && specular_only) out.push_back(photon(c.point, stored(), d, Photon::caustic));
@@ -313,6 +319,7 @@ private:
     const SceneT& scene_;
     PhotonTracerConfig config_;
     SpectralBands<T> bands_; ///< for photons meeting a dispersive interface
+    Air air_;                ///< the scene's air: photons in it curve in GradedAir
     BoundingSphere<T> scene_sphere_{}; ///< around everything bounded (when anything is)
     std::vector<Emitter<T>> global_;  ///< every light aimed everywhere, for the global map
     T global_power_ = T(0);
@@ -347,10 +354,10 @@ std::vector<Photon> trace_in_fixed_blocks(std::size_t count, unsigned threads, T
 } // namespace detail
 
 /// Trace the global and caustic photon maps of a scene, from its lights.
-template <class SceneT>
-[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config = {})
+template <class SceneT, class Air = StraightAir>
+[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config = {}, const Air& air = {})
 {
-    const detail::PhotonTracer<SceneT> tracer(scene, config);
+    const detail::PhotonTracer<SceneT, Air> tracer(scene, config, air);
     PhotonMaps maps;
     try {
         maps.global = PhotonMap(detail::trace_in_fixed_blocks(config.global_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
