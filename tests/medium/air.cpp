@@ -133,3 +133,25 @@ TEST_CASE("Shadow rays in graded air stay straight (documented): a wall on the s
     CHECK(curved.radiance(down) == straight.radiance(down));
     CHECK(straight.radiance(down).x == Approx(0.5 * scene.ambient.x).epsilon(1e-12)); // in the wall's shadow: ambient only
 }
+
+TEST_CASE("The lecture notes' layered air in Whitted approaches the exact landing point at first order in the layer height")
+{
+    // n^2 = 1 - 0.02 y; a ray from y = 3 heading 0.2 rad below the horizon follows the
+    // parabola y0 + tan(theta0) x + b x^2 / (4 K^2) down to the floor. Layers between
+    // y = -1 and 4 (the floor at y = 0 on a layer boundary for every count here).
+    const double a = 1, b = -0.02, y0 = 3, theta0 = -0.2;
+    const double k = std::sqrt(a + b * y0) * std::cos(theta0), c = b / (4 * k * k), t = std::tan(theta0);
+    const double x_exact = (-t - std::sqrt(t * t - 4 * c * y0)) / (2 * c);
+    const auto scene = recording_floor();
+    const Ray<double> ray{{0, y0, 0}, {std::cos(theta0), std::sin(theta0), 0}};
+    double previous = 1e300;
+    for (int layers : {10, 100, 1000, 10000}) {
+        const Whitted layered(scene, {}, LayeredAir<LinearSquareIndex<double>>{.field = {.a = a, .b = b}, .bottom = -1, .top = 4, .layers = layers});
+        const double error = std::abs(100 * layered.radiance(ray).x - x_exact);
+        INFO(layers, " layers: error ", error);
+        CHECK(error < previous);
+        CHECK(error < 20.0 / layers); // first order in h = 5 / layers
+        CHECK(error > 0.01 / layers); // and no better: the layers are an approximation
+        previous = error;
+    }
+}

@@ -20,9 +20,27 @@
 #include <prism/medium/graded_index.hpp>
 #include <prism/scene/hit.hpp>
 
+#include <limits>
 #include <optional>
 
 namespace prism {
+
+namespace detail {
+
+/// A straight piece of a path, tested against the scene a hair past its end: a surface
+/// exactly where one piece ends and the next begins (a floor on a layer boundary) is
+/// otherwise missed by both, the first ending just short of it by rounding, the second
+/// starting on it.
+template <class SceneT>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> hit_on_piece(const SceneT& scene, const Ray<typename SceneT::scalar_type>& piece,
+                                                                           typename SceneT::scalar_type piece_length) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    const T slack = T(64) * std::numeric_limits<T>::epsilon() * (piece_length + max_component(abs(piece.origin)));
+    return scene.closest_hit(piece, {T(0), piece_length + slack});
+}
+
+} // namespace detail
 
 /// Uniform air of index 1: rays are straight.
 struct StraightAir {
@@ -55,6 +73,69 @@ struct GradedAir {
         (void)AdaptiveStepper<F>(field, stepping); // checks the stepping
     }
 };
+
+/// The lecture notes' air: `layers` flat layers between heights `bottom` and `top`, each
+/// of the field's index at its middle height (stratified fields only); a ray goes
+/// straight within a layer and refracts by Snell's law (or reflects totally) at each
+/// boundary; above and below the layers it goes straight. The second policy beside
+/// GradedAir, for comparison: it keeps n cos(theta) exactly but converges only at first
+/// order in the layer height (bench/graded_index.cpp).
+template <IndexField F>
+struct LayeredAir {
+    using scalar_type = typename F::scalar_type;
+    using T = scalar_type;
+    static constexpr bool curved = true;
+
+    F field{};
+    T bottom = T(0);
+    T top = T(1);
+    int layers = 100;
+
+    void validate() const { (void)LayeredMedium<F>(field, bottom, top, layers); }
+};
+
+/// Where a ray through layered air first meets a surface (see first_hit_through below).
+template <class SceneT, IndexField F>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const LayeredAir<F>& air,
+                                                                                const Ray<typename SceneT::scalar_type>& ray,
+                                                                                Ray<typename SceneT::scalar_type>& segment,
+                                                                                typename SceneT::scalar_type* path = nullptr) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    static_assert(std::same_as<T, typename F::scalar_type>, "LayeredAir's field must have the scene's scalar type");
+    const LayeredMedium<F> medium(air.field, air.bottom, air.top, air.layers);
+    T travelled = T(0);
+    const auto landed = [&](std::optional<Hit<T>> hit) {
+        if (hit && path != nullptr) *path = travelled + hit->crossing.t;
+        return hit;
+    };
+    segment = {ray.origin, normalize(ray.direction)};
+    const Interval<T> inside = Aabb<T>{{-infinity<T>, air.bottom, -infinity<T>}, {infinity<T>, air.top, infinity<T>}}.clip(segment, {T(0), infinity<T>});
+    if (inside.empty()) return landed(scene.closest_hit(segment, {T(0), infinity<T>}));
+    if (inside.min > T(0)) {
+        if (auto hit = scene.closest_hit(segment, {T(0), inside.min})) return landed(hit);
+        travelled = inside.min;
+    }
+    Vec3<T> origin = segment.at(std::max(inside.min, T(0))), direction = segment.direction;
+    // Entering through the top or bottom face, the ray starts in the layer it enters.
+    int layer = medium.layer_of(origin.y + (direction.y > T(0) ? T(0.5) : T(-0.5)) * (air.top - air.bottom) / T(air.layers));
+    for (int i = 0; i < 4 * air.layers + 4; ++i) {
+        const Vec3<T> start = origin, heading = direction;
+        const bool inside_layers = medium.step(origin, direction, layer);
+        const T length_now = length(origin - start);
+        segment = {start, heading};
+        if (length_now > T(0)) {
+            if (auto hit = detail::hit_on_piece(scene, segment, length_now)) return landed(hit);
+        }
+        travelled += length_now;
+        if (!inside_layers) {
+            if (heading.y == T(0)) return landed(scene.closest_hit(segment, {T(0), infinity<T>})); // level: straight on
+            segment = {origin, direction};
+            return landed(scene.closest_hit(segment, {T(0), infinity<T>}));
+        }
+    }
+    return std::nullopt;
+}
 
 /// Where a ray through curved air first meets a surface of the scene, or nothing; on a
 /// hit, `segment` is the straight piece (unit direction) on which it lies, the ray to
@@ -91,7 +172,7 @@ template <class SceneT, IndexField F>
         const T chord_length = length(chord);
         if (!(chord_length > T(0))) continue;
         segment = {start.position, chord / chord_length};
-        if (auto hit = scene.closest_hit(segment, {T(0), chord_length})) {
+        if (auto hit = detail::hit_on_piece(scene, segment, chord_length)) {
             // Home in on the landing point along the curve: halve the step while its
             // chord is long, keeping the half whose chord meets the surface.
             CurvedRay<T> from = start;
@@ -104,7 +185,7 @@ template <class SceneT, IndexField F>
                 const T first_length = length(first);
                 if (!(first_length > T(0))) break;
                 const Ray<T> first_segment{from.position, first / first_length};
-                if (auto near = scene.closest_hit(first_segment, {T(0), first_length})) {
+                if (auto near = detail::hit_on_piece(scene, first_segment, first_length)) {
                     segment = first_segment;
                     hit = near;
                     length_now = first_length;
@@ -115,7 +196,7 @@ template <class SceneT, IndexField F>
                 const T second_length = length(second);
                 if (!(second_length > T(0))) break;
                 const Ray<T> second_segment{middle.position, second / second_length};
-                auto far = scene.closest_hit(second_segment, {T(0), second_length});
+                auto far = detail::hit_on_piece(scene, second_segment, second_length);
                 if (!far) break; // the curve grazes past where the chord met it: keep the chord's hit
                 segment = second_segment;
                 hit = far;
