@@ -3,30 +3,27 @@
 // (Johnson & Christy; Palik), reduced to RGB by integration against the CIE observer,
 // beside the lecture notes' constant kr of the same normal-incidence colour.
 #include "cli.hpp"
+#include "scenes/sphere_row.hpp"
 
 #include <prism/io/image.hpp>
 
+#include <tuple>
+
 namespace {
+
+/// Two coloured balls behind the camera, for the metals to reflect.
+auto reflected_balls()
+{
+    using namespace prism;
+    using T = float;
+    return std::tuple{Object{Sphere<T>({T(-2), T(2), T(11)}, T(2)), Diffuse<T>{.albedo = {.color = {T(0.2), T(0.4), T(0.8)}}}},
+                      Object{Sphere<T>({T(2.5), T(1.5), T(10)}, T(1.5)), Diffuse<T>{.albedo = {.color = {T(0.8), T(0.2), T(0.15)}}}}};
+}
 
 template <class Material>
 auto metal_row(const Material (&materials)[4])
 {
-    using namespace prism;
-    using T = float;
-    Scene scene{
-        Lights{DirectionalLight<T>{.direction = {T(0.35), T(-0.8), T(0.5)}, .irradiance = Rgb<T>(T(3))}},
-        Object{Plane<T>({T(0), T(1), T(0)}, T(0)),
-               Diffuse<T, Checker<T>>{.albedo = {.even = Rgb<T>(T(0.85)), .odd = Rgb<T>(T(0.12)), .size = T(1)}}},
-        Object{Sphere<T>({T(-3.3), T(1), T(0)}, T(1)), materials[0]},
-        Object{Sphere<T>({T(-1.1), T(1), T(0)}, T(1)), materials[1]},
-        Object{Sphere<T>({T(1.1), T(1), T(0)}, T(1)), materials[2]},
-        Object{Sphere<T>({T(3.3), T(1), T(0)}, T(1)), materials[3]},
-        Object{Sphere<T>({T(-2), T(2), T(11)}, T(2)), Diffuse<T>{.albedo = {.color = {T(0.2), T(0.4), T(0.8)}}}},
-        Object{Sphere<T>({T(2.5), T(1.5), T(10)}, T(1.5)), Diffuse<T>{.albedo = {.color = {T(0.8), T(0.2), T(0.15)}}}},
-    };
-    scene.background = {T(0.5), T(0.65), T(0.9)};
-    scene.ambient = Rgb<T>(T(0.15));
-    return scene;
+    return std::apply([&](auto... balls) { return scenes::sphere_row(materials, balls...); }, reflected_balls());
 }
 
 } // namespace
@@ -42,7 +39,7 @@ int main(int argc, char** argv)
             return 0;
         using T = float;
         namespace metals = prism::metals;
-        const prism::Camera<T> camera{.position = {0, 2.4f, 8.5f}, .look_at = {0, 0.9f, 0}, .up = {0, 1, 0}, .fov = 62};
+        const prism::Camera<T> camera = scenes::sphere_row_camera();
         using Measured = prism::Conductor<T, prism::MeasuredConductor<T>>;
         const Measured measured[4] = {prism::measured_metal<T>(metals::gold), prism::measured_metal<T>(metals::silver),
                                       prism::measured_metal<T>(metals::copper), prism::measured_metal<T>(metals::aluminium)};

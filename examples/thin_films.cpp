@@ -4,6 +4,7 @@
 // (an oxide film 0-150 nm thick); each film by Airy's exact sum per wavelength,
 // integrated against the CIE observer.
 #include "cli.hpp"
+#include "scenes/sphere_row.hpp"
 
 #include <prism/io/image.hpp>
 
@@ -69,24 +70,6 @@ auto bubble_scene(const Bubble& big, const Bubble& small)
     return scene;
 }
 
-template <class Material>
-auto anodised_scene(const Material (&materials)[4])
-{
-    using namespace prism;
-    Scene scene{
-        Lights{DirectionalLight<T>{.direction = {T(0.35), T(-0.8), T(0.5)}, .irradiance = Rgb<T>(T(3))}},
-        Object{Plane<T>({T(0), T(1), T(0)}, T(0)),
-               Diffuse<T, Checker<T>>{.albedo = {.even = Rgb<T>(T(0.85)), .odd = Rgb<T>(T(0.12)), .size = T(1)}}},
-        Object{Sphere<T>({T(-3.3), T(1), T(0)}, T(1)), materials[0]},
-        Object{Sphere<T>({T(-1.1), T(1), T(0)}, T(1)), materials[1]},
-        Object{Sphere<T>({T(1.1), T(1), T(0)}, T(1)), materials[2]},
-        Object{Sphere<T>({T(3.3), T(1), T(0)}, T(1)), materials[3]},
-    };
-    scene.background = {T(0.55), T(0.7), T(0.95)};
-    scene.ambient = Rgb<T>(T(0.15));
-    return scene;
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -114,7 +97,7 @@ int main(int argc, char** argv)
         // Anodised titanium: a titanium dioxide film (n = 2.4) 0, 60, 100 and 150 nm thick
         // over titanium (n = 2.16 + 2.93 i at 550 nm, Johnson & Christy 1974, one index for
         // every wavelength: prism has no spectral table for titanium).
-        const Camera<T> row_camera{.position = {0, 2.4f, 8.5f}, .look_at = {0, 0.9f, 0}, .up = {0, 1, 0}, .fov = 62};
+        const Camera<T> row_camera = scenes::sphere_row_camera();
         using Anodised = Conductor<T, ThinFilmConductor<T>>;
         const std::complex<double> titanium(2.16, 2.93);
         const Anodised anodised[4] = {
@@ -122,7 +105,7 @@ int main(int argc, char** argv)
             Anodised{ThinFilmConductor<T>(T(2.4), UniformThickness<T>{60}, titanium)},
             Anodised{ThinFilmConductor<T>(T(2.4), UniformThickness<T>{100}, titanium)},
             Anodised{ThinFilmConductor<T>(T(2.4), UniformThickness<T>{150}, titanium)}};
-        const auto row = anodised_scene(anodised);
+        const auto row = scenes::sphere_row(anodised);
         const Whitted row_integrator(row);
         write_png(examples::timed_render("anodised", row_camera, row_integrator, options.render), options.out / "anodised.png");
         return 0;

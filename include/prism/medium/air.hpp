@@ -40,6 +40,39 @@ template <class SceneT>
     return scene.closest_hit(piece, {T(0), piece_length + slack});
 }
 
+/// The length of a path up to its current piece, told where the path lands.
+template <Scalar T>
+struct PathLength {
+    T travelled = T(0);
+    T* out = nullptr;
+
+    [[nodiscard]] std::optional<Hit<T>> landed(std::optional<Hit<T>> hit) const noexcept
+    {
+        if (hit && out != nullptr) *out = travelled + hit->crossing.t;
+        return hit;
+    }
+};
+
+/// The straight start of a path toward a slab or box of air: the surface it meets before
+/// reaching the box (`hit`), or whether it reaches the box at all and how far away.
+template <Scalar T>
+struct Approach {
+    std::optional<Hit<T>> hit;
+    bool reaches = false;
+    T distance = T(0);
+};
+
+template <class SceneT>
+[[nodiscard]] Approach<typename SceneT::scalar_type> approach(const SceneT& scene, const Aabb<typename SceneT::scalar_type>& box,
+                                                            const Ray<typename SceneT::scalar_type>& segment) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    const Interval<T> inside = box.clip(segment, {T(0), infinity<T>});
+    if (inside.empty()) return {scene.closest_hit(segment, {T(0), infinity<T>}), false, T(0)};
+    if (inside.min > T(0)) return {scene.closest_hit(segment, {T(0), inside.min}), true, inside.min};
+    return {std::nullopt, true, T(0)};
+}
+
 } // namespace detail
 
 /// Uniform air of index 1: rays are straight.
@@ -104,19 +137,12 @@ template <class SceneT, IndexField F>
     using T = typename SceneT::scalar_type;
     static_assert(std::same_as<T, typename F::scalar_type>, "LayeredAir's field must have the scene's scalar type");
     const LayeredMedium<F> medium(air.field, air.bottom, air.top, air.layers);
-    T travelled = T(0);
-    const auto landed = [&](std::optional<Hit<T>> hit) {
-        if (hit && path != nullptr) *path = travelled + hit->crossing.t;
-        return hit;
-    };
     segment = {ray.origin, normalize(ray.direction)};
-    const Interval<T> inside = Aabb<T>{{-infinity<T>, air.bottom, -infinity<T>}, {infinity<T>, air.top, infinity<T>}}.clip(segment, {T(0), infinity<T>});
-    if (inside.empty()) return landed(scene.closest_hit(segment, {T(0), infinity<T>}));
-    if (inside.min > T(0)) {
-        if (auto hit = scene.closest_hit(segment, {T(0), inside.min})) return landed(hit);
-        travelled = inside.min;
-    }
-    Vec3<T> origin = segment.at(std::max(inside.min, T(0))), direction = segment.direction;
+    detail::PathLength<T> length_so_far{T(0), path};
+    const auto start = detail::approach(scene, Aabb<T>{{-infinity<T>, air.bottom, -infinity<T>}, {infinity<T>, air.top, infinity<T>}}, segment);
+    if (start.hit || !start.reaches) return length_so_far.landed(start.hit);
+    length_so_far.travelled = start.distance;
+    Vec3<T> origin = segment.at(start.distance), direction = segment.direction;
     // Entering through the top or bottom face, the ray starts in the layer it enters.
     int layer = medium.layer_of(origin.y + (direction.y > T(0) ? T(0.5) : T(-0.5)) * (air.top - air.bottom) / T(air.layers));
     for (int i = 0; i < 4 * air.layers + 4; ++i) {
@@ -125,13 +151,13 @@ template <class SceneT, IndexField F>
         const T length_now = length(origin - start);
         segment = {start, heading};
         if (length_now > T(0)) {
-            if (auto hit = detail::hit_on_piece(scene, segment, length_now)) return landed(hit);
+            if (auto hit = detail::hit_on_piece(scene, segment, length_now)) return length_so_far.landed(hit);
         }
-        travelled += length_now;
+        length_so_far.travelled += length_now;
         if (!inside_layers) {
-            if (heading.y == T(0)) return landed(scene.closest_hit(segment, {T(0), infinity<T>})); // level: straight on
+            if (heading.y == T(0)) return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>})); // level: straight on
             segment = {origin, direction};
-            return landed(scene.closest_hit(segment, {T(0), infinity<T>}));
+            return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>}));
         }
     }
     return std::nullopt;
@@ -148,20 +174,12 @@ template <class SceneT, IndexField F>
 {
     using T = typename SceneT::scalar_type;
     static_assert(std::same_as<T, typename F::scalar_type>, "GradedAir's field must have the scene's scalar type");
-    T travelled = T(0); // along the path, up to `segment`'s origin
-    const auto landed = [&](std::optional<Hit<T>> hit) {
-        if (hit && path != nullptr) *path = travelled + hit->crossing.t;
-        return hit;
-    };
     segment = {ray.origin, normalize(ray.direction)};
-    const Interval<T> inside = air.region.clip(segment, {T(0), infinity<T>});
-    if (inside.empty()) return landed(scene.closest_hit(segment, {T(0), infinity<T>}));
-    // Straight up to the box.
-    if (inside.min > T(0)) {
-        if (auto hit = scene.closest_hit(segment, {T(0), inside.min})) return landed(hit);
-        travelled = inside.min;
-    }
-    CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(std::max(inside.min, T(0))), segment.direction});
+    detail::PathLength<T> length_so_far{T(0), path}; // along the path, up to `segment`'s origin
+    const auto start = detail::approach(scene, air.region, segment);
+    if (start.hit || !start.reaches) return length_so_far.landed(start.hit);
+    length_so_far.travelled = start.distance;
+    CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(start.distance), segment.direction});
     const AdaptiveStepper<F> stepper(air.field, air.stepping);
     T dt = T(0);
     for (int i = 0; i < air.max_steps; ++i) {
@@ -201,16 +219,16 @@ template <class SceneT, IndexField F>
                 segment = second_segment;
                 hit = far;
                 from = middle;
-                travelled += first_length;
+                length_so_far.travelled += first_length;
                 length_now = second_length;
             }
-            return landed(hit);
+            return length_so_far.landed(hit);
         }
-        travelled += chord_length;
+        length_so_far.travelled += chord_length;
         if (!air.region.contains(curved.position)) {
             // Out of the box: straight from here on.
             segment = {curved.position, curved.direction()};
-            return landed(scene.closest_hit(segment, {T(0), infinity<T>}));
+            return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>}));
         }
     }
     return std::nullopt;
