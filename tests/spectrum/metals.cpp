@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
 using doctest::Approx;
 namespace metals = prism::metals;
@@ -88,4 +90,14 @@ TEST_CASE("A band of dispersed light meets a measured metal at its own wavelengt
     const auto white = prism::delta_split(gold, d, up, true, {});
     CHECK(white.kr.x == Approx(std::min(integral.x, 1.0)).epsilon(1e-3));
     CHECK(white.kr.z == Approx(integral.z).epsilon(1e-3));
+}
+
+TEST_CASE("A measured index with a non-physical entry is refused, naming it")
+{
+    metals::MeasuredIndex bad = metals::gold;
+    bad.eta[7] = -0.2;
+    CHECK_THROWS_WITH_AS(prism::MeasuredConductor<float>{bad}, doctest::Contains("MeasuredConductor eta"), std::invalid_argument);
+    bad = metals::gold;
+    bad.k[3] = std::numeric_limits<double>::quiet_NaN();
+    CHECK_THROWS_WITH_AS(prism::MeasuredConductor<float>{bad}, doctest::Contains("MeasuredConductor k"), std::invalid_argument);
 }

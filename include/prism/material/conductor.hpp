@@ -57,8 +57,16 @@ public:
 
     explicit MeasuredConductor(const metals::MeasuredIndex& index) : index_(&index)
     {
+        for (int i = 0; i < metals::MeasuredIndex::count; ++i) {
+            const double n = index.eta[std::size_t(i)], k = index.k[std::size_t(i)];
+            if (!(n > 0 && n < infinity<double>)) detail::throw_invalid("MeasuredConductor eta must be finite and > 0, got ", n, " at entry ", i);
+            if (!(k >= 0 && k < infinity<double>)) detail::throw_invalid("MeasuredConductor k must be finite and >= 0, got ", k, " at entry ", i);
+        }
         for (int i = 0; i < table_size; ++i) table_[std::size_t(i)] = integrated_reflectance(T(i) / T(table_size - 1));
     }
+
+    /// It keeps a reference to its index (static data, or the user's): not a temporary.
+    MeasuredConductor(const metals::MeasuredIndex&&) = delete;
 
     /// The RGB reflectance at the incident cosine cos_i, from the table.
     [[nodiscard]] constexpr Rgb<T> reflectance(T cos_i) const noexcept
@@ -140,6 +148,8 @@ template <Scalar T = float>
 {
     return {MeasuredConductor<T>(index)};
 }
+template <Scalar T = float>
+Conductor<T, MeasuredConductor<T>> measured_metal(const metals::MeasuredIndex&&) = delete; // it would dangle
 
 static_assert(Material<Mirror<float>> && Material<Metal<double>> && Material<Conductor<float, MeasuredConductor<float>>>);
 

@@ -155,6 +155,9 @@ public:
     {
     }
 
+    /// It keeps a reference to a measured substrate (static data, or the user's): not a temporary.
+    ThinFilmConductor(T, Thickness, const metals::MeasuredIndex&&, typename FilmTable<T>::Config = {}) = delete;
+
     ThinFilmConductor(T film_index, Thickness thickness, std::complex<double> substrate, typename FilmTable<T>::Config config = {})
         : ThinFilmConductor(film_index, thickness, nullptr, substrate, config)
     {
