@@ -139,10 +139,10 @@ template <class SceneT, IndexField F>
     const LayeredMedium<F> medium(air.field, air.bottom, air.top, air.layers);
     segment = {ray.origin, normalize(ray.direction)};
     detail::PathLength<T> length_so_far{T(0), path};
-    const auto start = detail::approach(scene, Aabb<T>{{-infinity<T>, air.bottom, -infinity<T>}, {infinity<T>, air.top, infinity<T>}}, segment);
-    if (start.hit || !start.reaches) return length_so_far.landed(start.hit);
-    length_so_far.travelled = start.distance;
-    Vec3<T> origin = segment.at(start.distance), direction = segment.direction;
+    const auto to_box = detail::approach(scene, Aabb<T>{{-infinity<T>, air.bottom, -infinity<T>}, {infinity<T>, air.top, infinity<T>}}, segment);
+    if (to_box.hit || !to_box.reaches) return length_so_far.landed(to_box.hit);
+    length_so_far.travelled = to_box.distance;
+    Vec3<T> origin = segment.at(to_box.distance), direction = segment.direction;
     // Entering through the top or bottom face, the ray starts in the layer it enters.
     int layer = medium.layer_of(origin.y + (direction.y > T(0) ? T(0.5) : T(-0.5)) * (air.top - air.bottom) / T(air.layers));
     for (int i = 0; i < 4 * air.layers + 4; ++i) {
@@ -176,10 +176,10 @@ template <class SceneT, IndexField F>
     static_assert(std::same_as<T, typename F::scalar_type>, "GradedAir's field must have the scene's scalar type");
     segment = {ray.origin, normalize(ray.direction)};
     detail::PathLength<T> length_so_far{T(0), path}; // along the path, up to `segment`'s origin
-    const auto start = detail::approach(scene, air.region, segment);
-    if (start.hit || !start.reaches) return length_so_far.landed(start.hit);
-    length_so_far.travelled = start.distance;
-    CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(start.distance), segment.direction});
+    const auto to_box = detail::approach(scene, air.region, segment);
+    if (to_box.hit || !to_box.reaches) return length_so_far.landed(to_box.hit);
+    length_so_far.travelled = to_box.distance;
+    CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(to_box.distance), segment.direction});
     const AdaptiveStepper<F> stepper(air.field, air.stepping);
     T dt = T(0);
     for (int i = 0; i < air.max_steps; ++i) {
