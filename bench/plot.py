@@ -257,45 +257,37 @@ def ray_property_chart(after, before):
     save(fig, "ray_property.png")
 
 
-def graded_index_chart(rows):
+def methods_chart(rows, labels, x_key, y_key, floor, xlabel, ylabel, title, name):
+    """Error against time on log-log axes, one line per method, each point labelled by its parameter."""
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    labels = {"adaptive": "Sharma RKN, step doubling (tolerance)", "fixed": "Sharma RKN, fixed steps (dt)",
-              "layers": "lecture notes: flat layers + Snell (layers)"}
     for method, label in labels.items():
         pts = [r for r in rows if r["method"] == method]
         if not pts:
             continue
-        x = [float(r["ns_per_ray"]) for r in pts]
-        y = [max(float(r["error"]), 1e-16) for r in pts]
+        x = [float(r[x_key]) for r in pts]
+        y = [max(float(r[y_key]), floor) for r in pts]
         ax.loglog(x, y, "o-", label=label)
         for xi, yi, r in zip(x, y, pts):
             ax.annotate(r["parameter"], (xi, yi), textcoords="offset points", xytext=(3, 3), fontsize=7)
-    ax.set_xlabel("ns per ray (min of 5 runs)")
-    ax.set_ylabel("|x - exact| where the ray reaches y = 4")
-    ax.set_title("graded-index air n = 1 + 0.05 y: error against time", fontsize=10)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
-    save(fig, "graded_index.png")
+    save(fig, name)
+
+
+def graded_index_chart(rows):
+    methods_chart(rows, {"adaptive": "Sharma RKN, step doubling (tolerance)", "fixed": "Sharma RKN, fixed steps (dt)",
+                         "layers": "lecture notes: flat layers + Snell (layers)"},
+                  "ns_per_ray", "error", 1e-16, "ns per ray (min of 5 runs)", "|x - exact| where the ray reaches y = 4",
+                  "graded-index air n = 1 + 0.05 y: error against time", "graded_index.png")
 
 
 def graded_index_image_chart(rows):
-    fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    labels = {"adaptive": "GradedAir: Sharma RKN, step doubling (tolerance)", "layers": "LayeredAir: the notes' flat layers (layers)"}
-    for method, label in labels.items():
-        pts = [r for r in rows if r["method"] == method]
-        if not pts:
-            continue
-        x = [float(r["seconds"]) for r in pts]
-        y = [max(float(r["rmse"]), 1e-10) for r in pts]
-        ax.loglog(x, y, "o-", label=label)
-        for xi, yi, r in zip(x, y, pts):
-            ax.annotate(r["parameter"], (xi, yi), textcoords="offset points", xytext=(3, 3), fontsize=7)
-    ax.set_xlabel("seconds per 160x60 render, 1 thread (min of 3)")
-    ax.set_ylabel("RMSE against GradedAir at tolerance 1e-9")
-    ax.set_title("the mirage over a hot road, whole pictures: error against time", fontsize=10)
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
-    save(fig, "graded_index_image.png")
+    methods_chart(rows, {"adaptive": "GradedAir: Sharma RKN, step doubling (tolerance)", "layers": "LayeredAir: the notes' flat layers (layers)"},
+                  "seconds", "rmse", 1e-10, "seconds per 160x60 render, 1 thread (min of 3)", "RMSE against GradedAir at tolerance 1e-9",
+                  "the mirage over a hot road, whole pictures: error against time", "graded_index_image.png")
 
 
 def dispersion_chart(rows):
