@@ -3387,374 +3387,6 @@ struct Hit {
 
 } // namespace prism
 
-// ---- prism/scene/object.hpp ----
-// Object: a shape with a material; ObjectArray: many of one type in one scene slot.
-
-
-#include <span>
-#include <type_traits>
-#include <utility>
-#include <vector>
-
-namespace prism {
-
-/// One scene object. Construction validates the material (the shape validated itself).
-template <Shape S, Material M>
-    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
-struct Object {
-    using scalar_type = typename S::scalar_type;
-    using shape_type = S;
-    using material_type = M;
-
-    S shape;
-    M material;
-    bool bounded = false; ///< the shape has finite bounds (set at construction, for culling)
-
-    constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m))
-    {
-        material.validate();
-        bounded = shape.bounds().bounded();
-    }
-};
-
-/// Many objects of one shape and material type, chosen at run time, in one scene slot.
-template <Shape S, Material M>
-    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
-struct ObjectArray {
-    using scalar_type = typename S::scalar_type;
-    using shape_type = S;
-    using material_type = M;
-
-    std::vector<Object<S, M>> items;
-};
-
-namespace detail {
-
-template <class X>
-struct is_slot : std::false_type {};
-template <class S, class M>
-struct is_slot<Object<S, M>> : std::true_type {};
-template <class S, class M>
-struct is_slot<ObjectArray<S, M>> : std::true_type {};
-
-} // namespace detail
-
-/// A scene slot: an Object or an ObjectArray.
-template <class X>
-concept Slot = detail::is_slot<X>::value;
-
-/// The objects of a slot, as a contiguous range.
-template <class S, class M>
-[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const Object<S, M>& object) noexcept
-{
-    return {&object, 1};
-}
-
-template <class S, class M>
-[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const ObjectArray<S, M>& array) noexcept
-{
-    return {array.items};
-}
-
-} // namespace prism
-
-// ---- prism/scene/scene.hpp ----
-// Scene: lights and object slots fixed at compile time; closest-hit and shadow queries.
-
-
-#include <cstddef>
-#include <cstdint>
-#include <optional>
-#include <tuple>
-#include <type_traits>
-#include <utility>
-
-namespace prism {
-
-/// The lights of a scene, each of its own type, at least one.
-template <Light... Ls>
-struct Lights {
-    static_assert(sizeof...(Ls) > 0, "Lights{} holds no light: a scene needs at least one (a PointLight, a DirectionalLight, ...)");
-
-    std::tuple<Ls...> items;
-
-    constexpr explicit Lights(Ls... lights) : items(std::move(lights)...)
-    {
-        std::apply([](const auto&... light) { (light.validate(), ...); }, items);
-    }
-};
-
-namespace detail {
-
-template <class X>
-struct is_light_list : std::false_type {};
-template <class... Ls>
-struct is_light_list<Lights<Ls...>> : std::true_type {};
-
-/// Whether every light of the list has scalar type T (true for what is no list: that
-/// has its own error).
-template <class List, class T>
-inline constexpr bool lights_of_scalar = true;
-template <class... Ls, class T>
-inline constexpr bool lights_of_scalar<Lights<Ls...>, T> = (std::same_as<typename Ls::scalar_type, T> && ...);
-
-} // namespace detail
-
-/// A scene's first argument: Lights{...}.
-template <class X>
-concept LightList = detail::is_light_list<X>::value;
-
-/// How shadow rays treat dielectrics.
-enum class ShadowsThroughGlass : bool {
-    attenuated, ///< light passes, attenuated by the medium and the transmission tint (Whitted)
-    blocked,    ///< glass casts a full shadow: its light arrives by a caustic map instead
-};
-
-/// A scene: its lights, object slots (one type each), background and ambient radiance.
-/// Which shapes and materials exist is part of the type, so integrators compile only
-/// the code those materials need.
-template <class LightsOfScene, Slot... Slots>
-class Scene {
-    static_assert(LightList<LightsOfScene>, "a Scene's first argument must be its lights as Lights{...}, e.g. Scene{Lights{PointLight<float>{...}}, objects...}");
-    static_assert(sizeof...(Slots) > 0, "a scene needs at least one object");
-
-public:
-    using scalar_type = typename std::tuple_element_t<0, std::tuple<Slots...>>::scalar_type;
-    using T = scalar_type;
-    static_assert((std::same_as<typename Slots::scalar_type, T> && ...), "all objects must share one scalar type");
-    static_assert(detail::lights_of_scalar<LightsOfScene, T>, "every light must have the objects' scalar type (a PointLight<float> in a scene of double objects?)");
-
-    /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
-    static constexpr bool has_transmissive = (transmits<typename Slots::material_type> || ...);
-    /// Some material has a mirror lobe.
-    static constexpr bool has_specular = (reflects<typename Slots::material_type> || ...) || has_transmissive;
-    static constexpr std::size_t slot_count = sizeof...(Slots);
-
-    // Scene Public Members
-
-    LightsOfScene lights;
-    std::tuple<Slots...> slots;
-    Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
-    Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
-
-    constexpr Scene(LightsOfScene light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
-    {
-        // One box around every bounded object: a ray that misses it skips them all.
-        std::apply([this](const auto&... slot) { (add_to_cluster(slot), ...); }, slots);
-        bounded_objects_ = !cluster_.empty();
-    }
-
-    /// The box around every bounded object (empty when there is none): the render's
-    /// cull for whole scenes, and the photon tracer's extent.
-    [[nodiscard]] constexpr const Aabb<T>& bounds() const noexcept { return cluster_; }
-
-    constexpr void validate() const
-    {
-        detail::require_non_negative("Scene background", background);
-        detail::require_non_negative("Scene ambient", ambient);
-    }
-
-    // Scene Queries
-
-    /// The closest crossing with t inside `range`. Every object is asked for its
-    /// crossings without their surfaces; only the nearest one is then asked again, over
-    /// the same range, for its surface.
-    [[nodiscard]] std::optional<Hit<T>> closest_hit(const Ray<T>& ray, Interval<T> range) const noexcept
-    {
-        Nearest nearest{};
-        const bool near_cluster = reaches_cluster(ray, range);
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (nearest_in_slot<I>(ray, range, nearest, near_cluster), ...);
-        }(std::index_sequence_for<Slots...>{});
-        if (!nearest.found) return std::nullopt;
-        return surface_in_slot<0>(ray, nearest);
-    }
-
-    /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
-    /// object is in the way, otherwise what every dielectric crossed lets through
-    /// (attenuate_shadow_ray: its medium over the length inside, its tint per boundary;
-    /// refraction ignored, the lecture notes' shadow rays through transparent objects).
-    /// With ShadowsThroughGlass::blocked dielectrics block the ray like any other
-    /// object: a photon mapper brings the light through them by its caustic map instead
-    /// (as POV-Ray does for photon targets).
-    template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated>
-    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
-    {
-        Rgb<T> tr{T(1)};
-        // Unwidened: a shadow ray needs no spurious crossing a far-off shape might report
-        // (culling it can only let light through where rounding alone would block it).
-        const bool near_cluster = bounded_objects_ && (cluster_.contains(ray.origin) || !cluster_.clip(ray, {T(0), t_max}).empty());
-        const bool open = [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return (transmittance_of_slot<I, Glass>(ray, t_max, tr, near_cluster) && ...);
-        }(std::index_sequence_for<Slots...>{});
-        return open ? tr : Rgb<T>{T(0)};
-    }
-
-    /// Call f(material) with the material of the hit object, with its static type.
-    template <class F>
-    decltype(auto) visit_material(const Hit<T>& hit, F&& f) const
-    {
-        return visit_slot<0>(hit, std::forward<F>(f));
-    }
-
-    /// Call f(light) for every light.
-    template <class F>
-    void for_each_light(F&& f) const
-    {
-        std::apply([&](const auto&... light) { (f(light), ...); }, lights.items);
-    }
-
-    static constexpr std::size_t light_count = std::tuple_size_v<decltype(LightsOfScene::items)>;
-
-    /// Call f(light) with light number i (in the order of Lights{...}), with its static type.
-    template <class F>
-    decltype(auto) visit_light(std::size_t i, F&& f) const
-    {
-        return visit_light_at<0>(i, std::forward<F>(f));
-    }
-
-private:
-    Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
-    bool bounded_objects_ = false;
-
-    // Scene Private Methods
-
-    /// The nearest object so far: where its first crossing is, and the range over
-    /// which it was found.
-    struct Nearest {
-        bool found = false;
-        std::uint32_t slot = 0, index = 0;
-        Interval<T> range{};
-    };
-
-    template <class S>
-    constexpr void add_to_cluster(const S& slot) noexcept
-    {
-        for (const auto& object : objects_of(slot))
-            if (object.bounded) cluster_ = cluster_.merged(object.shape.bounds());
-    }
-
-    template <std::size_t I, class F>
-    decltype(auto) visit_light_at(std::size_t i, F&& f) const
-    {
-        if constexpr (I + 1 < light_count) {
-            if (i != I) return visit_light_at<I + 1>(i, std::forward<F>(f));
-        }
-        PRISM_ASSERT(i == I);
-        return f(std::get<I>(lights.items));
-    }
-
-    /// Whether the ray may come near the cluster's box within the range (conservatively:
-    /// Aabb::may_cross). Only the first pass of a query culls by it, so it may use the
-    /// range's end.
-    [[nodiscard]] bool reaches_cluster(const Ray<T>& ray, Interval<T> range) const noexcept
-    {
-        return bounded_objects_ && cluster_.may_cross(ray, range);
-    }
-
-    /// Whether the object needs testing: it is unbounded, or the ray comes near the cluster.
-    template <class O>
-    [[nodiscard]] static bool worth_testing(const O& object, bool near_cluster) noexcept
-    {
-        return near_cluster || !object.bounded;
-    }
-
-    template <std::size_t I>
-    void nearest_in_slot(const Ray<T>& ray, Interval<T>& range, Nearest& nearest, bool near_cluster) const noexcept
-    {
-        const auto objects = objects_of(std::get<I>(slots));
-        for (std::size_t k = 0; k < objects.size(); ++k) {
-            if (!worth_testing(objects[k], near_cluster)) continue;
-            const auto crossings = objects[k].shape.template crossings<false>(ray, range);
-            if (crossings.empty()) continue;
-            // Ending the range just past the crossing keeps every crossing before it, and
-            // so the same first one, while the surface pass refines nothing beyond it:
-            // no shape's answer up to a t depends on where its range ends (shapes cull by
-            // Aabb::reached_after, which ignores the end).
-            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(crossings.front().t)}};
-            range.max = crossings.front().t;
-        }
-    }
-
-    /// The nearest object's first crossing with its surface: the same computation as
-    /// before over a range that holds the same crossings up to it, so the same t.
-    template <std::size_t I>
-    std::optional<Hit<T>> surface_in_slot(const Ray<T>& ray, const Nearest& nearest) const noexcept
-    {
-        if constexpr (I + 1 < sizeof...(Slots)) {
-            if (nearest.slot != I) return surface_in_slot<I + 1>(ray, nearest);
-        }
-        const auto crossings = objects_of(std::get<I>(slots))[nearest.index].shape.crossings(ray, nearest.range);
-        PRISM_ASSERT(!crossings.empty());
-        if (crossings.empty()) return std::nullopt;
-        return Hit<T>{crossings.front(), nearest.slot, nearest.index};
-    }
-
-    template <std::size_t I, ShadowsThroughGlass Glass>
-    bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr, bool near_cluster) const noexcept
-    {
-        using Slot = std::tuple_element_t<I, std::tuple<Slots...>>;
-        using M = typename Slot::material_type;
-        const Interval<T> range{T(0), t_max};
-        for (const auto& object : objects_of(std::get<I>(slots))) {
-            if (!worth_testing(object, near_cluster)) continue;
-            const auto crossings = object.shape.template crossings<false>(ray, range);
-            if constexpr (!transmits<M> || Glass == ShadowsThroughGlass::blocked) {
-                if (!crossings.empty()) return false;
-            } else {
-                attenuate_shadow_ray(object.material, crossings, ray, t_max, tr);
-                if (max_component(tr) <= T(0)) return false;
-            }
-        }
-        return true;
-    }
-
-    template <std::size_t I, class F>
-    decltype(auto) visit_slot(const Hit<T>& hit, F&& f) const
-    {
-        if constexpr (I + 1 < sizeof...(Slots)) {
-            if (hit.slot != I) return visit_slot<I + 1>(hit, std::forward<F>(f));
-        }
-        PRISM_ASSERT(hit.slot == I);
-        return f(objects_of(std::get<I>(slots))[hit.index].material);
-    }
-};
-
-template <class L, class... Slots>
-Scene(L, Slots...) -> Scene<L, Slots...>;
-
-} // namespace prism
-
-// ---- prism/integrator/direct.hpp ----
-// Light arriving from each light at a surface point, by shadow rays: shared by the integrators.
-
-
-namespace prism {
-
-/// Shadow rays stop this fraction short of a point light, so a light placed on a
-/// surface is not shadowed by that surface (pbrt's ShadowEpsilon).
-template <Scalar T>
-inline constexpr T shadow_epsilon = T(1e-4);
-
-/// For each light in front of the surface (unit normal n facing the viewer), call
-/// f(sample, v, cos): the light's sample at the point, the shadow ray's transmittance v
-/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface. Lights
-/// behind the surface are not visited: they count as occluded. How dielectrics shadow:
-/// see Scene::transmittance.
-template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
-void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const Vec3<T>& n, F&& f)
-{
-    scene.for_each_light([&](const auto& light) {
-        const LightSample<T> s = light.sample(hit.point);
-        const T cos = dot(n, s.wi);
-        if (!(cos > T(0))) return;
-        const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
-        f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
-    });
-}
-
-} // namespace prism
-
 // ---- prism/medium/nesting.hpp ----
 // Nested dielectrics: the media a ray is inside of, so that water in a glass, an air
 // bubble in glass or a glass in water refract with the right n1 / n2 at every interface.
@@ -3919,6 +3551,464 @@ void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& m
     } else {
         attenuate_inside(material, hit, ray, light);
     }
+}
+
+} // namespace prism
+
+// ---- prism/scene/object.hpp ----
+// Object: a shape with a material; ObjectArray: many of one type in one scene slot.
+
+
+#include <span>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+/// One scene object. Construction validates the material (the shape validated itself).
+template <Shape S, Material M>
+    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
+struct Object {
+    using scalar_type = typename S::scalar_type;
+    using shape_type = S;
+    using material_type = M;
+
+    S shape;
+    M material;
+    bool bounded = false; ///< the shape has finite bounds (set at construction, for culling)
+
+    constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m))
+    {
+        material.validate();
+        bounded = shape.bounds().bounded();
+    }
+};
+
+/// Many objects of one shape and material type, chosen at run time, in one scene slot.
+template <Shape S, Material M>
+    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
+struct ObjectArray {
+    using scalar_type = typename S::scalar_type;
+    using shape_type = S;
+    using material_type = M;
+
+    std::vector<Object<S, M>> items;
+};
+
+namespace detail {
+
+template <class X>
+struct is_slot : std::false_type {};
+template <class S, class M>
+struct is_slot<Object<S, M>> : std::true_type {};
+template <class S, class M>
+struct is_slot<ObjectArray<S, M>> : std::true_type {};
+
+} // namespace detail
+
+/// A scene slot: an Object or an ObjectArray.
+template <class X>
+concept Slot = detail::is_slot<X>::value;
+
+/// The objects of a slot, as a contiguous range.
+template <class S, class M>
+[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const Object<S, M>& object) noexcept
+{
+    return {&object, 1};
+}
+
+template <class S, class M>
+[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const ObjectArray<S, M>& array) noexcept
+{
+    return {array.items};
+}
+
+} // namespace prism
+
+// ---- prism/scene/scene.hpp ----
+// Scene: lights and object slots fixed at compile time; closest-hit and shadow queries.
+
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+namespace prism {
+
+/// The lights of a scene, each of its own type, at least one.
+template <Light... Ls>
+struct Lights {
+    static_assert(sizeof...(Ls) > 0, "Lights{} holds no light: a scene needs at least one (a PointLight, a DirectionalLight, ...)");
+
+    std::tuple<Ls...> items;
+
+    constexpr explicit Lights(Ls... lights) : items(std::move(lights)...)
+    {
+        std::apply([](const auto&... light) { (light.validate(), ...); }, items);
+    }
+};
+
+namespace detail {
+
+template <class X>
+struct is_light_list : std::false_type {};
+template <class... Ls>
+struct is_light_list<Lights<Ls...>> : std::true_type {};
+
+/// Whether every light of the list has scalar type T (true for what is no list: that
+/// has its own error).
+template <class List, class T>
+inline constexpr bool lights_of_scalar = true;
+template <class... Ls, class T>
+inline constexpr bool lights_of_scalar<Lights<Ls...>, T> = (std::same_as<typename Ls::scalar_type, T> && ...);
+
+} // namespace detail
+
+/// A scene's first argument: Lights{...}.
+template <class X>
+concept LightList = detail::is_light_list<X>::value;
+
+/// How shadow rays treat dielectrics.
+enum class ShadowsThroughGlass : bool {
+    attenuated, ///< light passes, attenuated by the medium and the transmission tint (Whitted)
+    blocked,    ///< glass casts a full shadow: its light arrives by a caustic map instead
+};
+
+namespace detail {
+
+/// Where a shadow ray meets a transmissive object's boundary (or starts inside it), kept
+/// to resolve overlapping objects by priority; a fixed number, no allocation.
+template <Scalar T>
+struct ShadowBoundaries {
+    struct Boundary {
+        T t;
+        std::uint32_t slot;
+        std::uint32_t index;
+        bool entering;
+        bool at_start; ///< the ray starts inside the object (no boundary crossed)
+    };
+    static constexpr std::size_t capacity = 32;
+    std::array<Boundary, capacity> items;
+    std::size_t count = 0;
+    bool overflow = false;
+
+    constexpr void add(const Boundary& b) noexcept
+    {
+        if (count == capacity) overflow = true;
+        else items[count++] = b;
+    }
+
+    /// Sort by t; whether two objects' insides overlap anywhere along the ray.
+    constexpr bool sort_and_find_overlap() noexcept
+    {
+        if (overflow) return false;
+        for (std::size_t i = 1; i < count; ++i)
+            for (std::size_t j = i; j > 0 && items[j].t < items[j - 1].t; --j) std::swap(items[j], items[j - 1]);
+        int depth = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            depth += items[i].entering || items[i].at_start ? 1 : -1;
+            if (depth >= 2) return true;
+        }
+        return false;
+    }
+};
+
+} // namespace detail
+
+/// A scene: its lights, object slots (one type each), background and ambient radiance.
+/// Which shapes and materials exist is part of the type, so integrators compile only
+/// the code those materials need.
+template <class LightsOfScene, Slot... Slots>
+class Scene {
+    static_assert(LightList<LightsOfScene>, "a Scene's first argument must be its lights as Lights{...}, e.g. Scene{Lights{PointLight<float>{...}}, objects...}");
+    static_assert(sizeof...(Slots) > 0, "a scene needs at least one object");
+
+public:
+    using scalar_type = typename std::tuple_element_t<0, std::tuple<Slots...>>::scalar_type;
+    using T = scalar_type;
+    static_assert((std::same_as<typename Slots::scalar_type, T> && ...), "all objects must share one scalar type");
+    static_assert(detail::lights_of_scalar<LightsOfScene, T>, "every light must have the objects' scalar type (a PointLight<float> in a scene of double objects?)");
+
+    /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
+    static constexpr bool has_transmissive = (transmits<typename Slots::material_type> || ...);
+    /// Some material has a mirror lobe.
+    static constexpr bool has_specular = (reflects<typename Slots::material_type> || ...) || has_transmissive;
+    static constexpr std::size_t slot_count = sizeof...(Slots);
+
+    // Scene Public Members
+
+    LightsOfScene lights;
+    std::tuple<Slots...> slots;
+    Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
+    Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
+
+    constexpr Scene(LightsOfScene light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
+    {
+        // One box around every bounded object: a ray that misses it skips them all.
+        std::apply([this](const auto&... slot) { (add_to_cluster(slot), ...); }, slots);
+        bounded_objects_ = !cluster_.empty();
+    }
+
+    /// The box around every bounded object (empty when there is none): the render's
+    /// cull for whole scenes, and the photon tracer's extent.
+    [[nodiscard]] constexpr const Aabb<T>& bounds() const noexcept { return cluster_; }
+
+    constexpr void validate() const
+    {
+        detail::require_non_negative("Scene background", background);
+        detail::require_non_negative("Scene ambient", ambient);
+    }
+
+    // Scene Queries
+
+    /// The closest crossing with t inside `range`. Every object is asked for its
+    /// crossings without their surfaces; only the nearest one is then asked again, over
+    /// the same range, for its surface.
+    [[nodiscard]] std::optional<Hit<T>> closest_hit(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        Nearest nearest{};
+        const bool near_cluster = reaches_cluster(ray, range);
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (nearest_in_slot<I>(ray, range, nearest, near_cluster), ...);
+        }(std::index_sequence_for<Slots...>{});
+        if (!nearest.found) return std::nullopt;
+        return surface_in_slot<0>(ray, nearest);
+    }
+
+    /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
+    /// object is in the way, otherwise what every dielectric crossed lets through
+    /// (attenuate_shadow_ray: its medium over the length inside, its tint per boundary;
+    /// refraction ignored, the lecture notes' shadow rays through transparent objects).
+    /// With ShadowsThroughGlass::blocked dielectrics block the ray like any other
+    /// object: a photon mapper brings the light through them by its caustic map instead
+    /// (as POV-Ray does for photon targets).
+    template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated>
+    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
+    {
+        Rgb<T> tr{T(1)};
+        // Unwidened: a shadow ray needs no spurious crossing a far-off shape might report
+        // (culling it can only let light through where rounding alone would block it).
+        const bool near_cluster = bounded_objects_ && (cluster_.contains(ray.origin) || !cluster_.clip(ray, {T(0), t_max}).empty());
+        detail::ShadowBoundaries<T> boundaries;
+        const bool open = [&]<std::size_t... I>(std::index_sequence<I...>) {
+            return (transmittance_of_slot<I, Glass>(ray, t_max, tr, near_cluster, boundaries) && ...);
+        }(std::index_sequence_for<Slots...>{});
+        if (!open) return Rgb<T>{T(0)};
+        // Where transmissive objects overlap, the higher priority's medium fills the
+        // overlap (medium/nesting.hpp): walk the boundaries in order instead.
+        if constexpr (has_transmissive && Glass == ShadowsThroughGlass::attenuated) {
+            if (boundaries.sort_and_find_overlap()) return transmittance_by_priority(ray, t_max, boundaries);
+        }
+        return tr;
+    }
+
+    /// Call f(material) with the material of the hit object, with its static type.
+    template <class F>
+    decltype(auto) visit_material(const Hit<T>& hit, F&& f) const
+    {
+        return visit_slot<0>(hit, std::forward<F>(f));
+    }
+
+    /// Call f(light) for every light.
+    template <class F>
+    void for_each_light(F&& f) const
+    {
+        std::apply([&](const auto&... light) { (f(light), ...); }, lights.items);
+    }
+
+    static constexpr std::size_t light_count = std::tuple_size_v<decltype(LightsOfScene::items)>;
+
+    /// Call f(light) with light number i (in the order of Lights{...}), with its static type.
+    template <class F>
+    decltype(auto) visit_light(std::size_t i, F&& f) const
+    {
+        return visit_light_at<0>(i, std::forward<F>(f));
+    }
+
+private:
+    Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
+    bool bounded_objects_ = false;
+
+    // Scene Private Methods
+
+    /// The nearest object so far: where its first crossing is, and the range over
+    /// which it was found.
+    struct Nearest {
+        bool found = false;
+        std::uint32_t slot = 0, index = 0;
+        Interval<T> range{};
+    };
+
+    template <class S>
+    constexpr void add_to_cluster(const S& slot) noexcept
+    {
+        for (const auto& object : objects_of(slot))
+            if (object.bounded) cluster_ = cluster_.merged(object.shape.bounds());
+    }
+
+    template <std::size_t I, class F>
+    decltype(auto) visit_light_at(std::size_t i, F&& f) const
+    {
+        if constexpr (I + 1 < light_count) {
+            if (i != I) return visit_light_at<I + 1>(i, std::forward<F>(f));
+        }
+        PRISM_ASSERT(i == I);
+        return f(std::get<I>(lights.items));
+    }
+
+    /// Whether the ray may come near the cluster's box within the range (conservatively:
+    /// Aabb::may_cross). Only the first pass of a query culls by it, so it may use the
+    /// range's end.
+    [[nodiscard]] bool reaches_cluster(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        return bounded_objects_ && cluster_.may_cross(ray, range);
+    }
+
+    /// Whether the object needs testing: it is unbounded, or the ray comes near the cluster.
+    template <class O>
+    [[nodiscard]] static bool worth_testing(const O& object, bool near_cluster) noexcept
+    {
+        return near_cluster || !object.bounded;
+    }
+
+    template <std::size_t I>
+    void nearest_in_slot(const Ray<T>& ray, Interval<T>& range, Nearest& nearest, bool near_cluster) const noexcept
+    {
+        const auto objects = objects_of(std::get<I>(slots));
+        for (std::size_t k = 0; k < objects.size(); ++k) {
+            if (!worth_testing(objects[k], near_cluster)) continue;
+            const auto crossings = objects[k].shape.template crossings<false>(ray, range);
+            if (crossings.empty()) continue;
+            // Ending the range just past the crossing keeps every crossing before it, and
+            // so the same first one, while the surface pass refines nothing beyond it:
+            // no shape's answer up to a t depends on where its range ends (shapes cull by
+            // Aabb::reached_after, which ignores the end).
+            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(crossings.front().t)}};
+            range.max = crossings.front().t;
+        }
+    }
+
+    /// The nearest object's first crossing with its surface: the same computation as
+    /// before over a range that holds the same crossings up to it, so the same t.
+    template <std::size_t I>
+    std::optional<Hit<T>> surface_in_slot(const Ray<T>& ray, const Nearest& nearest) const noexcept
+    {
+        if constexpr (I + 1 < sizeof...(Slots)) {
+            if (nearest.slot != I) return surface_in_slot<I + 1>(ray, nearest);
+        }
+        const auto crossings = objects_of(std::get<I>(slots))[nearest.index].shape.crossings(ray, nearest.range);
+        PRISM_ASSERT(!crossings.empty());
+        if (crossings.empty()) return std::nullopt;
+        return Hit<T>{crossings.front(), nearest.slot, nearest.index};
+    }
+
+    template <std::size_t I, ShadowsThroughGlass Glass>
+    bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr, bool near_cluster, detail::ShadowBoundaries<T>& boundaries) const noexcept
+    {
+        using Slot = std::tuple_element_t<I, std::tuple<Slots...>>;
+        using M = typename Slot::material_type;
+        const Interval<T> range{T(0), t_max};
+        std::uint32_t index = 0;
+        for (const auto& object : objects_of(std::get<I>(slots))) {
+            const std::uint32_t this_index = index++;
+            if (!worth_testing(object, near_cluster)) continue;
+            const auto crossings = object.shape.template crossings<false>(ray, range);
+            if constexpr (!transmits<M> || Glass == ShadowsThroughGlass::blocked) {
+                if (!crossings.empty()) return false;
+            } else {
+                attenuate_shadow_ray(object.material, crossings, ray, t_max, tr);
+                if (max_component(tr) <= T(0)) return false;
+                if (crossings.inside_at_start) boundaries.add({T(0), std::uint32_t(I), this_index, true, true});
+                for (const Crossing<T>& c : crossings) boundaries.add({c.t, std::uint32_t(I), this_index, c.entering, false});
+            }
+        }
+        return true;
+    }
+
+    /// A shadow ray through overlapping transmissive objects: each stretch attenuated by
+    /// the medium of the object it is in (the highest priority, medium/nesting.hpp), a
+    /// transmission tint at each real interface, none at a false one.
+    [[nodiscard]] Rgb<T> transmittance_by_priority(const Ray<T>& ray, T t_max, const detail::ShadowBoundaries<T>& boundaries) const noexcept
+    {
+        Rgb<T> tr{T(1)};
+        const T speed = length(ray.direction);
+        MediumStack media;
+        T previous = T(0);
+        const auto attenuate_to = [&](T t) {
+            if (const Inside* in = media.top()) {
+                visit_material(Hit<T>{{}, in->slot, in->index}, [&]<class N>(const N& material) {
+                    if constexpr (transmits<N>) tr *= material.medium().transmittance((t - previous) * speed);
+                });
+            }
+            previous = t;
+        };
+        for (std::size_t i = 0; i < boundaries.count; ++i) {
+            const auto& b = boundaries.items[i];
+            attenuate_to(b.t);
+            visit_material(Hit<T>{{}, b.slot, b.index}, [&]<class N>(const N& material) {
+                if constexpr (transmits<N>) {
+                    const Inside object{b.slot, b.index, nesting_priority(material)};
+                    if (b.at_start) {
+                        media = media.entered(object);
+                        return;
+                    }
+                    const Interface face = nested_interface(media, object, b.entering);
+                    if (face.real) tr *= material.transmission_tint();
+                    media = face.beyond;
+                }
+            });
+        }
+        attenuate_to(t_max);
+        return tr;
+    }
+
+    template <std::size_t I, class F>
+    decltype(auto) visit_slot(const Hit<T>& hit, F&& f) const
+    {
+        if constexpr (I + 1 < sizeof...(Slots)) {
+            if (hit.slot != I) return visit_slot<I + 1>(hit, std::forward<F>(f));
+        }
+        PRISM_ASSERT(hit.slot == I);
+        return f(objects_of(std::get<I>(slots))[hit.index].material);
+    }
+};
+
+template <class L, class... Slots>
+Scene(L, Slots...) -> Scene<L, Slots...>;
+
+} // namespace prism
+
+// ---- prism/integrator/direct.hpp ----
+// Light arriving from each light at a surface point, by shadow rays: shared by the integrators.
+
+
+namespace prism {
+
+/// Shadow rays stop this fraction short of a point light, so a light placed on a
+/// surface is not shadowed by that surface (pbrt's ShadowEpsilon).
+template <Scalar T>
+inline constexpr T shadow_epsilon = T(1e-4);
+
+/// For each light in front of the surface (unit normal n facing the viewer), call
+/// f(sample, v, cos): the light's sample at the point, the shadow ray's transmittance v
+/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface. Lights
+/// behind the surface are not visited: they count as occluded. How dielectrics shadow:
+/// see Scene::transmittance.
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
+void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const Vec3<T>& n, F&& f)
+{
+    scene.for_each_light([&](const auto& light) {
+        const LightSample<T> s = light.sample(hit.point);
+        const T cos = dot(n, s.wi);
+        if (!(cos > T(0))) return;
+        const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
+        f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
+    });
 }
 
 } // namespace prism

@@ -187,3 +187,27 @@ TEST_CASE("A glass sphere nested in a sphere of the same glass is invisible, to 
     CHECK(focus2 == Approx(focus1).epsilon(0.02));
     CHECK(focus1 > 0.3 * total1); // the focus holds much of it: a real test
 }
+
+TEST_CASE("Shadow rays through overlapping objects: the higher priority's medium fills the overlap, no tint at a false interface")
+{
+    // Glass (priority 2, absorbing 0.5 per unit, kt 0.9) over water (priority 1, 0.2, kt 0.8)
+    // that reaches 0.2 into the glass. A shadow ray straight up through both: water over
+    // [-1, 0], glass over [0, 1] (the overlap is glass), tints at y = -1, 0 and 1 only.
+    const Scene scene{Lights{DirectionalLight<double>{}},
+                      Object{Box<double>({-5, 0, -5}, {5, 1, 5}), Dielectric<double>{.ior = 1.5, .interior = {.absorption = Rgb<double>(0.5)}, .kt = 0.9, .priority = 2}},
+                      Object{Box<double>({-5, -1, -5}, {5, 0.2, 5}), Dielectric<double>{.ior = 1.33, .interior = {.absorption = Rgb<double>(0.2)}, .kt = 0.8, .priority = 1}}};
+    const Ray<double> up{{0, -2, 0}, {0, 1, 0}};
+    const double expected = 0.8 * std::exp(-0.2 * 1.0) * 0.9 * std::exp(-0.5 * 1.0) * 0.9;
+    CHECK(scene.transmittance(up, 5.0).x == Approx(expected).epsilon(1e-12));
+    // Each object on its own (before: 0.8^2 e^(-0.2 * 1.2) 0.9^2 e^(-0.5), the overlap counted twice).
+    const double per_object = 0.8 * 0.8 * std::exp(-0.2 * 1.2) * 0.9 * 0.9 * std::exp(-0.5);
+    CHECK(std::abs(expected - per_object) > 0.05);
+    // Starting inside the overlap: glass over [0.1, 1], one tint, at y = 1.
+    const Ray<double> from_overlap{{0, 0.1, 0}, {0, 1, 0}};
+    CHECK(scene.transmittance(from_overlap, 3.0).x == Approx(std::exp(-0.5 * 0.9) * 0.9).epsilon(1e-12));
+    // Objects that do not overlap keep the per-object rule exactly.
+    const Scene apart{Lights{DirectionalLight<double>{}},
+                      Object{Box<double>({-5, 0, -5}, {5, 1, 5}), Dielectric<double>{.ior = 1.5, .interior = {.absorption = Rgb<double>(0.5)}, .kt = 0.9}},
+                      Object{Box<double>({-5, -1, -5}, {5, -0.5, 5}), Dielectric<double>{.ior = 1.33, .interior = {.absorption = Rgb<double>(0.2)}, .kt = 0.8}}};
+    CHECK(apart.transmittance(up, 5.0).x == Approx(0.9 * 0.9 * std::exp(-0.5) * 0.8 * 0.8 * std::exp(-0.2 * 0.5)).epsilon(1e-12));
+}

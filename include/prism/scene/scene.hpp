@@ -7,9 +7,11 @@
 #include <prism/core/offset.hpp>
 #include <prism/light/light.hpp>
 #include <prism/material/scattering.hpp>
+#include <prism/medium/nesting.hpp>
 #include <prism/scene/hit.hpp>
 #include <prism/scene/object.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -57,6 +59,47 @@ enum class ShadowsThroughGlass : bool {
     attenuated, ///< light passes, attenuated by the medium and the transmission tint (Whitted)
     blocked,    ///< glass casts a full shadow: its light arrives by a caustic map instead
 };
+
+namespace detail {
+
+/// Where a shadow ray meets a transmissive object's boundary (or starts inside it), kept
+/// to resolve overlapping objects by priority; a fixed number, no allocation.
+template <Scalar T>
+struct ShadowBoundaries {
+    struct Boundary {
+        T t;
+        std::uint32_t slot;
+        std::uint32_t index;
+        bool entering;
+        bool at_start; ///< the ray starts inside the object (no boundary crossed)
+    };
+    static constexpr std::size_t capacity = 32;
+    std::array<Boundary, capacity> items;
+    std::size_t count = 0;
+    bool overflow = false;
+
+    constexpr void add(const Boundary& b) noexcept
+    {
+        if (count == capacity) overflow = true;
+        else items[count++] = b;
+    }
+
+    /// Sort by t; whether two objects' insides overlap anywhere along the ray.
+    constexpr bool sort_and_find_overlap() noexcept
+    {
+        if (overflow) return false;
+        for (std::size_t i = 1; i < count; ++i)
+            for (std::size_t j = i; j > 0 && items[j].t < items[j - 1].t; --j) std::swap(items[j], items[j - 1]);
+        int depth = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            depth += items[i].entering || items[i].at_start ? 1 : -1;
+            if (depth >= 2) return true;
+        }
+        return false;
+    }
+};
+
+} // namespace detail
 
 /// A scene: its lights, object slots (one type each), background and ambient radiance.
 /// Which shapes and materials exist is part of the type, so integrators compile only
@@ -132,10 +175,17 @@ public:
         // Unwidened: a shadow ray needs no spurious crossing a far-off shape might report
         // (culling it can only let light through where rounding alone would block it).
         const bool near_cluster = bounded_objects_ && (cluster_.contains(ray.origin) || !cluster_.clip(ray, {T(0), t_max}).empty());
+        detail::ShadowBoundaries<T> boundaries;
         const bool open = [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return (transmittance_of_slot<I, Glass>(ray, t_max, tr, near_cluster) && ...);
+            return (transmittance_of_slot<I, Glass>(ray, t_max, tr, near_cluster, boundaries) && ...);
         }(std::index_sequence_for<Slots...>{});
-        return open ? tr : Rgb<T>{T(0)};
+        if (!open) return Rgb<T>{T(0)};
+        // Where transmissive objects overlap, the higher priority's medium fills the
+        // overlap (medium/nesting.hpp): walk the boundaries in order instead.
+        if constexpr (has_transmissive && Glass == ShadowsThroughGlass::attenuated) {
+            if (boundaries.sort_and_find_overlap()) return transmittance_by_priority(ray, t_max, boundaries);
+        }
+        return tr;
     }
 
     /// Call f(material) with the material of the hit object, with its static type.
@@ -239,12 +289,14 @@ private:
     }
 
     template <std::size_t I, ShadowsThroughGlass Glass>
-    bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr, bool near_cluster) const noexcept
+    bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr, bool near_cluster, detail::ShadowBoundaries<T>& boundaries) const noexcept
     {
         using Slot = std::tuple_element_t<I, std::tuple<Slots...>>;
         using M = typename Slot::material_type;
         const Interval<T> range{T(0), t_max};
+        std::uint32_t index = 0;
         for (const auto& object : objects_of(std::get<I>(slots))) {
+            const std::uint32_t this_index = index++;
             if (!worth_testing(object, near_cluster)) continue;
             const auto crossings = object.shape.template crossings<false>(ray, range);
             if constexpr (!transmits<M> || Glass == ShadowsThroughGlass::blocked) {
@@ -252,9 +304,48 @@ private:
             } else {
                 attenuate_shadow_ray(object.material, crossings, ray, t_max, tr);
                 if (max_component(tr) <= T(0)) return false;
+                if (crossings.inside_at_start) boundaries.add({T(0), std::uint32_t(I), this_index, true, true});
+                for (const Crossing<T>& c : crossings) boundaries.add({c.t, std::uint32_t(I), this_index, c.entering, false});
             }
         }
         return true;
+    }
+
+    /// A shadow ray through overlapping transmissive objects: each stretch attenuated by
+    /// the medium of the object it is in (the highest priority, medium/nesting.hpp), a
+    /// transmission tint at each real interface, none at a false one.
+    [[nodiscard]] Rgb<T> transmittance_by_priority(const Ray<T>& ray, T t_max, const detail::ShadowBoundaries<T>& boundaries) const noexcept
+    {
+        Rgb<T> tr{T(1)};
+        const T speed = length(ray.direction);
+        MediumStack media;
+        T previous = T(0);
+        const auto attenuate_to = [&](T t) {
+            if (const Inside* in = media.top()) {
+                visit_material(Hit<T>{{}, in->slot, in->index}, [&]<class N>(const N& material) {
+                    if constexpr (transmits<N>) tr *= material.medium().transmittance((t - previous) * speed);
+                });
+            }
+            previous = t;
+        };
+        for (std::size_t i = 0; i < boundaries.count; ++i) {
+            const auto& b = boundaries.items[i];
+            attenuate_to(b.t);
+            visit_material(Hit<T>{{}, b.slot, b.index}, [&]<class N>(const N& material) {
+                if constexpr (transmits<N>) {
+                    const Inside object{b.slot, b.index, nesting_priority(material)};
+                    if (b.at_start) {
+                        media = media.entered(object);
+                        return;
+                    }
+                    const Interface face = nested_interface(media, object, b.entering);
+                    if (face.real) tr *= material.transmission_tint();
+                    media = face.beyond;
+                }
+            });
+        }
+        attenuate_to(t_max);
+        return tr;
     }
 
     template <std::size_t I, class F>
