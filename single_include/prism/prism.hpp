@@ -4915,7 +4915,9 @@ private:
 #include <limits>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace prism {
@@ -5078,7 +5080,9 @@ private:
                 }
                 // The media beyond the surface, the object whose medium lies on its far
                 // side, and false interfaces (inside a medium of higher priority) passed.
-                Interface face{true, media};
+                // (Only transmissive materials keep an interface: no copy of the media
+                // for the diffuse and mirror hits that make most of a photon's bounces.)
+                [[maybe_unused]] std::conditional_t<transmits<M>, Interface, std::monostate> face{};
                 const Inside* outside = nullptr;
                 if constexpr (transmits<M>) {
                     face = nested_interface(media, {hit->slot, hit->index, nesting_priority(material)}, c.entering);
@@ -5103,7 +5107,9 @@ private:
                 if (!next) return Next::absorbed;
                 ray = spawn_ray(c.point, c.error, c.normal, next->direction);
                 if (next->diffuse) specular_only = false;
-                if (transmits<M> && dot(next->direction, n) < T(0)) media = face.beyond; // refracted
+                if constexpr (transmits<M>) {
+                    if (dot(next->direction, n) < T(0)) media = face.beyond; // refracted
+                }
                 return Next::scattered;
             });
             if (next_step == Next::absorbed) return;
