@@ -27,6 +27,8 @@
 #include <prism/geometry/sphere.hpp>
 #include <prism/geometry/transformed.hpp>
 #include <prism/integrator/direct.hpp>
+#include <prism/integrator/light_tracer.hpp>
+#include <prism/integrator/path_tracer.hpp>
 #include <prism/integrator/photon_mapper.hpp>
 #include <prism/integrator/whitted.hpp>
 #include <prism/light/directional_light.hpp>
@@ -53,6 +55,7 @@
 #include <prism/photon/photon.hpp>
 #include <prism/photon/photon_map.hpp>
 #include <prism/photon/photon_tracer.hpp>
+#include <prism/photon/random_walk.hpp>
 #include <prism/render/film.hpp>
 #include <prism/render/render.hpp>
 #include <prism/scene/camera.hpp>

@@ -2,6 +2,8 @@
 #include <prism/integrator/whitted.hpp>
 #include <prism/prism.hpp>
 
+#include "../furnace.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -172,4 +174,18 @@ TEST_CASE("POV-Ray's Phong highlight: phong (R . L)^size E / pi, on top of the d
     // Seen at 60 degrees off the mirror direction, (cos 60)^40 is negligible.
     const Vec3<double> oblique = normalize(Vec3<double>{std::sqrt(3.0), -1, 0});
     CHECK(integrator.radiance({-oblique, oblique}).x == Approx(0.5 * inv_pi * e).epsilon(1e-6));
+}
+
+TEST_CASE("Whitted's furnace: inside a diffuse sphere of albedo 0.5 the walls read their direct light, 0.5, with one light or four")
+{
+    for (const bool four : {false, true}) {
+        CAPTURE(four);
+        const auto scene = test::furnace_scene(four);
+        const Whitted whitted(scene);
+        CHECK(test::furnace_mean(four, [&](const Ray<float>& ray, Pcg32&) { return whitted.radiance(ray); }, 20000, false) ==
+              doctest::Approx(1.0).epsilon(1e-4));
+    }
+    // One light at the centre: 0.5 everywhere, exactly.
+    const auto scene = test::furnace_scene(false);
+    CHECK(Whitted(scene).radiance({{0, 0, 0}, {0, 0, 1}}).x == doctest::Approx(0.5f).epsilon(1e-5));
 }

@@ -14,16 +14,17 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <utility>
 
 namespace prism {
 
-/// One stored photon, 24 bytes as Jensen's compact record: where it landed (three
-/// floats), the power it carries (W) in shared-exponent RGBE (Ward 1991: 8 bits of
-/// mantissa per channel, rounded to nearest), the direction it came from as two 16-bit
+/// One stored photon, 28 bytes: where it landed (three floats), the power it carries
+/// (W) with a shared exponent and a 16-bit mantissa per channel (rounded to nearest:
+/// 2^-16 relative at worst, so a map of equal photons sums to its power to 10^-5; Ward's
+/// 8-bit RGBE read a furnace 0.25 % bright), the direction it came from and the normal
+/// of the surface it landed on (facing the side it arrived from), each as two 16-bit
 /// octahedral coordinates (Meyer et al. 2010), and its flags.
 class Photon {
 public:
@@ -34,56 +35,68 @@ public:
     };
 
     Vec3<float> position{};
-    std::uint8_t flags = 0;
 
     Photon() = default;
 
-    /// `toward_source`: unit direction back toward where the photon came from.
-    Photon(const Vec3<float>& at, const Rgb<float>& power, const Vec3<float>& toward_source, std::uint8_t flag_bits) noexcept
-        : position(at), flags(flag_bits), rgbe_(encode_rgbe(power)), octahedral_(encode_octahedral(toward_source))
+    /// `toward_source`: unit direction back toward where the photon came from;
+    /// `normal`: the unit normal of the surface it landed on, on the side it arrived from.
+    Photon(const Vec3<float>& at, const Rgb<float>& power, const Vec3<float>& toward_source, const Vec3<float>& normal, std::uint8_t flag_bits) noexcept
+        : position(at), direction_(encode_octahedral(toward_source)), normal_(encode_octahedral(normal)), flags(flag_bits)
     {
+        encode_power(power);
     }
 
     [[nodiscard]] Rgb<float> power() const noexcept
     {
-        // 2^(e - 136) built from its bits where it is a normal float, ldexp below that.
-        const int biased = int(rgbe_[3]) - 136 + 127;
-        const float scale = biased > 0 ? std::bit_cast<float>(std::uint32_t(biased) << 23) : std::ldexp(1.0f, int(rgbe_[3]) - 136);
-        return rgbe_[3] == 0 ? Rgb<float>(0.0f) : Rgb<float>(float(rgbe_[0]) * scale, float(rgbe_[1]) * scale, float(rgbe_[2]) * scale);
+        if (exponent_ == 0) return Rgb<float>(0.0f);
+        const float scale = std::ldexp(1.0f, int(exponent_) - 144); // 2^(e - 16), e = exponent_ - 128
+        return {float(mantissa_[0]) * scale, float(mantissa_[1]) * scale, float(mantissa_[2]) * scale};
     }
 
     /// The unit direction back toward where the photon came from.
-    [[nodiscard]] Vec3<float> toward_source() const noexcept { return normalize(unnormalised_toward_source()); }
+    [[nodiscard]] Vec3<float> toward_source() const noexcept { return normalize(decode_octahedral(direction_)); }
 
-    /// Whether the photon arrived on the side of a surface that the normal n points to.
-    [[nodiscard]] bool arrived_on(const Vec3<float>& n) const noexcept { return dot(unnormalised_toward_source(), n) > 0.0f; }
+    /// The unit normal of the surface the photon landed on, on its side.
+    [[nodiscard]] Vec3<float> normal() const noexcept { return normalize(decode_octahedral(normal_)); }
+
+    /// Whether the photon lies on a surface facing the way n does: the cosine between its
+    /// normal and n exceeds `min_cos`. The other side of a thin wall (normals opposite)
+    /// and a perpendicular wall in a corner are left out; a curved surface is kept where
+    /// it turns by less than acos(min_cos).
+    [[nodiscard]] bool faces(const Vec3<float>& n, float min_cos) const noexcept
+    {
+        const Vec3<float> m = decode_octahedral(normal_);
+        const float d = dot(m, n);
+        return d > 0.0f && d * d > min_cos * min_cos * length_squared(m) * length_squared(n);
+    }
 
     friend bool operator==(const Photon&, const Photon&) = default;
 
 private:
-    [[nodiscard]] Vec3<float> unnormalised_toward_source() const noexcept
+    [[nodiscard]] static Vec3<float> decode_octahedral(const std::array<std::uint16_t, 2>& q) noexcept
     {
-        const float u = float(octahedral_[0]) * (2.0f / 65535.0f) - 1.0f, v = float(octahedral_[1]) * (2.0f / 65535.0f) - 1.0f;
+        const float u = float(q[0]) * (2.0f / 65535.0f) - 1.0f, v = float(q[1]) * (2.0f / 65535.0f) - 1.0f;
         const float z = 1.0f - std::abs(u) - std::abs(v);
         if (z >= 0.0f) return {u, v, z};
         return {std::copysign(1.0f - std::abs(v), u), std::copysign(1.0f - std::abs(u), v), z};
     }
 
-    /// The largest channel's exponent e (max = m 2^(e-8), 128 <= m < 256 after
-    /// rounding), every channel's mantissa rounded to nearest at that exponent.
-    static std::array<std::uint8_t, 4> encode_rgbe(const Rgb<float>& c) noexcept
+    /// The largest channel's exponent e (max = m 2^(e-16), 2^15 <= m < 2^16 after
+    /// rounding), every channel's mantissa rounded to nearest at that exponent. Worked
+    /// in double, where 2^(16 - e) cannot overflow; e is kept within [-127, 127], so a
+    /// power below 2^-128 keeps fewer bits and one above 2^127 (not a photon's) saturates.
+    void encode_power(const Rgb<float>& c) noexcept
     {
-        const float largest = std::max({c.x, c.y, c.z});
-        if (!(largest > 1e-38f)) return {0, 0, 0, 0};
+        const double largest = std::max({c.x, c.y, c.z});
+        if (!(largest > 0.0) || !std::isfinite(largest)) return; // carries nothing
         int e = 0;
         std::frexp(largest, &e); // largest = f 2^e, 0.5 <= f < 1
-        float scale = std::ldexp(1.0f, 8 - e);
-        if (std::lround(largest * scale) > 255) { // rounding reached 256: one exponent up
-            ++e;
-            scale *= 0.5f;
-        }
-        const auto mantissa = [&](float x) { return std::uint8_t(std::clamp(std::lround(std::max(x, 0.0f) * scale), 0L, 255L)); };
-        return {mantissa(c.x), mantissa(c.y), mantissa(c.z), std::uint8_t(std::clamp(e + 128, 1, 255))};
+        if (std::llround(std::ldexp(largest, 16 - e)) > 65535) ++e; // rounding reached 2^16: one exponent up
+        e = std::clamp(e, -127, 127);
+        const double scale = std::ldexp(1.0, 16 - e);
+        for (int i = 0; i < 3; ++i) mantissa_[i] = std::uint16_t(std::clamp(std::llround(std::max(double(c[i]), 0.0) * scale), 0LL, 65535LL));
+        exponent_ = std::uint8_t(e + 128);
+        if (mantissa_ == std::array<std::uint16_t, 3>{}) exponent_ = 0;
     }
 
     static std::array<std::uint16_t, 2> encode_octahedral(const Vec3<float>& d) noexcept
@@ -99,10 +112,15 @@ private:
         return {quantise(u), quantise(v)};
     }
 
-    std::array<std::uint8_t, 4> rgbe_{};
-    std::array<std::uint16_t, 2> octahedral_{};
+    std::array<std::uint16_t, 3> mantissa_{};
+    std::array<std::uint16_t, 2> direction_{};
+    std::array<std::uint16_t, 2> normal_{};
+    std::uint8_t exponent_ = 0; ///< 0: no power; else the shared exponent + 128
+
+public:
+    std::uint8_t flags = 0;
 };
 
-static_assert(sizeof(Photon) == 24);
+static_assert(sizeof(Photon) == 28);
 
 } // namespace prism

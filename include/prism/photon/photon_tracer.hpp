@@ -31,6 +31,7 @@
 #include <prism/medium/air.hpp>
 #include <prism/medium/nesting.hpp>
 #include <prism/photon/photon_map.hpp>
+#include <prism/photon/random_walk.hpp>
 #include <prism/scene/object.hpp>
 #include <prism/spectrum/bands.hpp>
 
@@ -127,24 +128,34 @@ public:
     /// Photons [first, last) of the global map, appended to `out`.
     void trace_global(std::size_t first, std::size_t last, std::vector<Photon>& out) const
     {
-        for (std::size_t i = first; i < last; ++i) emit(global_, global_power_, config_.global_photons, i, false, out);
+        for (std::size_t i = first; i < last; ++i) store(global_, global_power_, config_.global_photons, i, false, out);
     }
 
     /// Photons [first, last) of the caustic map, appended to `out`.
     void trace_caustic(std::size_t first, std::size_t last, std::vector<Photon>& out) const
     {
-        for (std::size_t i = first; i < last; ++i) emit(targets_, target_power_, config_.caustic_photons, i, true, out);
+        for (std::size_t i = first; i < last; ++i) store(targets_, target_power_, config_.caustic_photons, i, true, out);
+    }
+
+    /// Light paths [first, last) of `count` aimed at the specular objects as the caustic
+    /// map's photons are, each walked to its end: visit(material, vertex, power) at every
+    /// diffuse surface returns whether the walk goes on (the light tracer's paths).
+    template <class Visit>
+    void walk_aimed(std::size_t first, std::size_t last, std::size_t count, Visit&& visit) const
+    {
+        for (std::size_t i = first; i < last; ++i) emit(targets_, target_power_, count, i, true, visit);
     }
 
 private:
     /// Photon i of a map of `count`: choose an emitter by its share of the power (the
-    /// photon carries its power / (count p)), let its light place the photon, and follow
-    /// it. The choice and the two numbers that place the photon come from point i of a
-    /// scrambled Sobol (0,2)-sequence, so the photons of each emitter are stratified over
-    /// its directions (or its disk) as on a jittered grid, but for any count; everything
-    /// after the first hit is random.
-    void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass,
-              std::vector<Photon>& out) const
+    /// photon carries its power / (count p)), let its light place the photon, and walk
+    /// it (random_walk), calling visit(material, vertex, stored power) at each diffuse
+    /// surface. The choice and the two numbers that place the photon come from point i of
+    /// a scrambled Sobol (0,2)-sequence, so the photons of each emitter are stratified
+    /// over its directions (or its disk) as on a jittered grid, but for any count;
+    /// everything after the first hit is random.
+    template <class Visit>
+    void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, Visit&& visit) const
     {
         if (emitters.empty() || !(total_power > T(0))) return;
         Pcg32 rng(config_.seed, 2 * i + (caustic_pass ? 1 : 0));
@@ -168,83 +179,36 @@ private:
         // Where two targets' cones overlap, a direction is the first target's to carry:
         // counted by both, the light sent that way would be counted twice.
         if (e->aimed && aimed_at_earlier_target(emitters, *e, photon.ray)) return;
-        follow(photon.ray, e->power / T(double(count) * p) * photon.weight, photon.without_falloff, rng, caustic_pass, out);
+        // A light without falloff: the power a photon stores grows with its path squared.
+        const bool without_falloff = photon.without_falloff;
+        random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, config_.max_bounces,
+                    [&]<class M>(const M& material, const WalkVertex<T>& at) {
+                        return visit(material, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
+                    },
+                    [](const Ray<T>&, const Rgb<T>&, bool) {});
     }
 
-    /// Follow one photon; in the caustic pass store only L S+ D and stop there.
-    void follow(Ray<T> ray, Rgb<T> power, bool without_falloff, Pcg32& rng, bool caustic_pass, std::vector<Photon>& out) const
+    /// Store photon i: in the caustic pass only L S+ D, ending the walk there.
+    void store(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, std::vector<Photon>& out) const
     {
-        bool direct = true, specular_only = true;
-        T travelled = T(0);
-        T wavelength = T(0); // white until a dispersive interface splits it
-        MediumStack media;   // the transmissive objects the photon is inside of
-        for (int bounce = 0; bounce <= config_.max_bounces; ++bounce) {
-            // In the air a photon follows the air's curve; inside objects, straight lines.
-            Ray<T> segment = ray;
-            T path = T(0);
-            const auto hit = media.empty() ? first_hit_in_air(scene_, air_, ray, segment, &path)
-                                           : first_hit_in_air(scene_, StraightAir{}, ray, segment, &path);
-            if (!hit) return;
-            const Crossing<T>& c = hit->crossing;
-            const Vec3<T> d = normalize(segment.direction);
-            travelled += path;
-            const auto stored = [&] { return without_falloff ? power * (travelled * travelled) : power; };
-            enum class Next { absorbed, scattered, passed };
-            const Next next_step = scene_.visit_material(*hit, [&]<class M>(const M& material) -> Next {
-                // What the medium it travelled in let through, before anything else.
-                attenuate_segment(scene_, media, material, c, segment, power);
-                if constexpr (has_diffuse<M>) {
-                    if (caustic_pass) {
-                        if (!direct && specular_only) out.push_back(photon(c.point, stored(), d, Photon::caustic));
-                        return Next::absorbed;
-                    }
-                    std::uint8_t flags = direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
-                    if (!direct && specular_only) flags |= Photon::caustic;
-                    out.push_back(photon(c.point, stored(), d, flags));
-                    if (direct && config_.shadow_photons) store_shadow_photons(c, d, out);
-                }
-                // The media beyond the surface, the object whose medium lies on its far
-                // side, and false interfaces (inside a medium of higher priority) passed.
-                // (Only transmissive materials keep an interface: no copy of the media
-                // for the diffuse and mirror hits that make most of a photon's bounces.)
-                [[maybe_unused]] std::conditional_t<transmits<M>, Interface, std::monostate> face{};
-                const Inside* outside = nullptr;
-                if constexpr (transmits<M>) {
-                    face = nested_interface(media, {hit->slot, hit->index, nesting_priority(material)}, c.entering);
-                    if (!face.real) {
-                        ray = spawn_ray(c.point, c.error, c.normal, d);
-                        media = face.beyond;
-                        return Next::passed;
-                    }
-                    outside = outside_of(media, face, c.entering);
-                }
-                if constexpr (disperses<M>) {
-                    if (wavelength == T(0)) {
-                        // One band at random: its (non-negative) share of white, over its probability 1 / count.
-                        const int count = bands_.size();
-                        const WavelengthBand<T>& band = bands_[std::min(int(rng.uniform<T>() * T(count)), count - 1)];
-                        power *= band.photon_weight * T(count);
-                        wavelength = band.wavelength_nm;
-                    }
-                }
-                const Vec3<T> n = c.facing_normal();
-                const auto next = scatter_photon(material, c, d, n, power, rng, wavelength, index_of(scene_, outside, wavelength));
-                if (!next) return Next::absorbed;
-                ray = spawn_ray(c.point, c.error, c.normal, next->direction);
-                if (next->diffuse) specular_only = false;
-                if constexpr (transmits<M>) {
-                    if (dot(next->direction, n) < T(0)) media = face.beyond; // refracted
-                }
-                return Next::scattered;
-            });
-            if (next_step == Next::absorbed) return;
-            if (next_step == Next::scattered) direct = false;
-        }
+        emit(emitters, total_power, count, i, caustic_pass, [&](const auto&, const WalkVertex<T>& at, const Rgb<T>& power) {
+            const Crossing<T>& c = at.crossing();
+            if (caustic_pass) {
+                if (!at.direct && at.specular_only) out.push_back(photon(c, power, at.direction, Photon::caustic));
+                return false;
+            }
+            std::uint8_t flags = at.direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
+            if (!at.direct && at.specular_only) flags |= Photon::caustic;
+            out.push_back(photon(c, power, at.direction, flags));
+            if (at.direct && config_.shadow_photons) store_shadow_photons(c, at.direction, out);
+            return true;
+        });
     }
 
-    [[nodiscard]] static Photon photon(const Vec3<T>& at, const Rgb<T>& power, const Vec3<T>& travelling, std::uint8_t flags) noexcept
+    /// The photon stored where `travelling` met the surface of crossing c.
+    [[nodiscard]] static Photon photon(const Crossing<T>& c, const Rgb<T>& power, const Vec3<T>& travelling, std::uint8_t flags) noexcept
     {
-        return {Vec3<float>(at), Rgb<float>(power), Vec3<float>(-travelling), flags};
+        return {Vec3<float>(c.point), Rgb<float>(power), Vec3<float>(-travelling), Vec3<float>(c.facing_normal()), flags};
     }
 
     /// Shadow photons along the straight line on from a direct photon's first hit.
@@ -256,7 +220,7 @@ private:
             if (!hit) return;
             const Crossing<T>& c = hit->crossing;
             const bool diffuse = scene_.visit_material(*hit, []<class M>(const M&) { return has_diffuse<M>; });
-            if (diffuse) out.push_back(photon(c.point, Rgb<T>(T(0)), d, Photon::shadow));
+            if (diffuse) out.push_back(photon(c, Rgb<T>(T(0)), d, Photon::shadow));
             through = spawn_ray(c.point, c.error, c.normal, d);
         }
     }

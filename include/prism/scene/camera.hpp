@@ -6,6 +6,7 @@
 #include <prism/core/ray.hpp>
 
 #include <cmath>
+#include <optional>
 
 namespace prism {
 
@@ -22,6 +23,30 @@ struct CameraRays {
     {
         return {origin, normalize(top_left + x * pixel_right + y * pixel_down)};
     }
+
+    /// Where a point is seen: image position (x, y) in pixels from the top-left corner
+    /// (inside the image when 0 <= x < width, 0 <= y < height), its distance from the
+    /// pinhole and the cosine between the view direction and the ray to it.
+    struct Projection {
+        T x, y, distance, cos;
+    };
+
+    /// The point's projection, or nothing when it is not in front of the camera.
+    [[nodiscard]] std::optional<Projection> project(const Vec3<T>& p) const noexcept
+    {
+        const Vec3<T> forward = normalize(cross(pixel_right, pixel_down));
+        const Vec3<T> v = p - origin;
+        const T depth = dot(v, forward), distance = length(v);
+        if (!(depth > T(0)) || !(distance > T(0))) return std::nullopt;
+        const Vec3<T> on_plane = v / depth - top_left; // the image plane lies at distance 1
+        return Projection{dot(on_plane, pixel_right) / length_squared(pixel_right), dot(on_plane, pixel_down) / length_squared(pixel_down),
+                          distance, depth / distance};
+    }
+
+    /// One pixel's area on the image plane at distance 1: a pixel's value is the mean
+    /// radiance over it, so light arriving at the pinhole from a point seen at cosine
+    /// cos adds E / (pixel_area cos^3) (pixel area to solid angle: cos^3 / distance^2).
+    [[nodiscard]] T pixel_area() const noexcept { return length(pixel_right) * length(pixel_down); }
 };
 
 /// A pinhole camera. `fov` is the horizontal field of view in degrees, as POV-Ray's `angle`.

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+// random_walk: the path a photon takes through a scene, shared by the photon tracer, the
+// light tracer and the path tracer (a camera path carries importance by the same rules).
+//
+// From a ray carrying `power`, hit by hit: the medium the path crossed attenuates it;
+// at a diffuse surface the caller's `on_diffuse` sees the vertex (and may stop the walk);
+// false interfaces (inside a medium of higher priority) are passed; a white path meeting
+// a dispersive interface takes one wavelength band at random; then scatter_photon picks
+// the next direction by Russian roulette (material/scattering.hpp). In the air the path
+// follows the air's curve (GradedAir), inside objects straight lines.
+#pragma once
+
+#include <prism/core/offset.hpp>
+#include <prism/core/rng.hpp>
+#include <prism/geometry/crossings.hpp>
+#include <prism/material/scattering.hpp>
+#include <prism/material/traits.hpp>
+#include <prism/medium/air.hpp>
+#include <prism/medium/nesting.hpp>
+#include <prism/scene/hit.hpp>
+#include <prism/spectrum/bands.hpp>
+
+#include <algorithm>
+#include <type_traits>
+#include <variant>
+
+namespace prism {
+
+/// A walk at a diffuse surface, before it scatters there.
+template <Scalar T>
+struct WalkVertex {
+    const Hit<T>& hit;
+    const Vec3<T>& direction; ///< unit, arriving
+    const Rgb<T>& power;      ///< what the path carries here, after the medium it crossed
+    bool direct;              ///< nothing scattered it yet (a photon's first hit)
+    bool specular_only;       ///< every scattering so far was specular
+    bool first_specular;      ///< the first scattering was specular (the vertex next to the path's start: L S ...)
+    T travelled;              ///< the path's length so far
+    T wavelength;             ///< 0 while white
+    const MediumStack& media; ///< the transmissive objects the path is inside of
+
+    [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
+};
+
+/// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
+/// on_diffuse(material, WalkVertex) is called at every diffuse surface and returns false
+/// to end the walk there; on_escape(ray, power, specular_only) when the path leaves the
+/// scene.
+template <class SceneT, class Air, class OnDiffuse, class OnEscape>
+void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
+                 Rgb<typename SceneT::scalar_type> power, Pcg32& rng, int max_bounces, OnDiffuse&& on_diffuse, OnEscape&& on_escape)
+{
+    using T = typename SceneT::scalar_type;
+    bool direct = true, specular_only = true, first_specular = false;
+    T travelled = T(0);
+    T wavelength = T(0); // white until a dispersive interface splits it
+    MediumStack media;   // the transmissive objects the path is inside of
+    for (int bounce = 0; bounce <= max_bounces; ++bounce) {
+        // In the air a path follows the air's curve; inside objects, straight lines.
+        Ray<T> segment = ray;
+        T path = T(0);
+        const auto hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, &path)
+                                       : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
+        if (!hit) {
+            on_escape(segment, power, specular_only);
+            return;
+        }
+        const Crossing<T>& c = hit->crossing;
+        const Vec3<T> d = normalize(segment.direction);
+        travelled += path;
+        enum class Next { absorbed, scattered, passed };
+        const Next next_step = scene.visit_material(*hit, [&]<class M>(const M& material) -> Next {
+            // What the medium it travelled in let through, before anything else.
+            attenuate_segment(scene, media, material, c, segment, power);
+            if constexpr (has_diffuse<M>) {
+                if (!on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, specular_only, first_specular, travelled, wavelength, media})) return Next::absorbed;
+            }
+            // The media beyond the surface, the object whose medium lies on its far
+            // side, and false interfaces (inside a medium of higher priority) passed.
+            // (Only transmissive materials keep an interface: no copy of the media for
+            // the diffuse and mirror hits that make most of a path's bounces.)
+            [[maybe_unused]] std::conditional_t<transmits<M>, Interface, std::monostate> face{};
+            const Inside* outside = nullptr;
+            if constexpr (transmits<M>) {
+                face = nested_interface(media, {hit->slot, hit->index, nesting_priority(material)}, c.entering);
+                if (!face.real) {
+                    ray = spawn_ray(c.point, c.error, c.normal, d);
+                    media = face.beyond;
+                    return Next::passed;
+                }
+                outside = outside_of(media, face, c.entering);
+            }
+            if constexpr (disperses<M>) {
+                if (wavelength == T(0)) {
+                    // One band at random: its (non-negative) share of white, over its probability 1 / count.
+                    const int count = bands.size();
+                    const WavelengthBand<T>& band = bands[std::min(int(rng.uniform<T>() * T(count)), count - 1)];
+                    power *= band.photon_weight * T(count);
+                    wavelength = band.wavelength_nm;
+                }
+            }
+            const Vec3<T> n = c.facing_normal();
+            const auto next = scatter_photon(material, c, d, n, power, rng, wavelength, index_of(scene, outside, wavelength));
+            if (!next) return Next::absorbed;
+            ray = spawn_ray(c.point, c.error, c.normal, next->direction);
+            if (next->diffuse) specular_only = false;
+            if (direct) first_specular = !next->diffuse;
+            if constexpr (transmits<M>) {
+                if (dot(next->direction, n) < T(0)) media = face.beyond; // refracted
+            }
+            return Next::scattered;
+        });
+        if (next_step == Next::absorbed) return;
+        if (next_step == Next::scattered) direct = false;
+    }
+}
+
+} // namespace prism

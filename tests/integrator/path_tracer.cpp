@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+#include <prism/integrator/path_tracer.hpp>
+#include <prism/prism.hpp>
+
+#include "../furnace.hpp"
+
+#include <doctest/doctest.h>
+
+using namespace prism;
+
+TEST_CASE("the path tracer's furnace: inside a diffuse sphere of albedo 0.5 the walls read 1.0, with one light or four")
+{
+    for (const bool four : {false, true}) {
+        CAPTURE(four);
+        const auto scene = test::furnace_scene(four);
+        const PathTracer tracer(scene);
+        const double mean = test::furnace_mean(four, [&](const Ray<float>& ray, Pcg32& rng) { return tracer.radiance(ray, rng); }, 400000);
+        CHECK(mean == doctest::Approx(1.0).epsilon(0.005));
+    }
+}
+
+TEST_CASE("a path tracer's first bounce is Whitted's direct light, and the walls' colour bleeds into what they light")
+{
+    // A lit floor alone: every path leaving it escapes, so the path tracer reads exactly
+    // Whitted's direct light, sample for sample.
+    const Scene floor{Lights{PointLight<float>{.position = {0.5f, 3, -1}, .intensity = Rgb<float>(20)}},
+                      Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = {0.7f, 0.5f, 0.3f}}, .kd = 0.9f, .ka = 0}}};
+    const Whitted whitted(floor);
+    const PathTracer tracer(floor);
+    Pcg32 rng(4u, 4u);
+    for (float x : {-1.0f, 0.0f, 0.7f, 2.0f}) {
+        const Ray<float> ray{{x, 1, 2}, normalize(Vec3<float>{0, -1, -1})};
+        const Rgb<float> a = whitted.radiance(ray), b = tracer.radiance(ray, rng);
+        for (int c = 0; c < 3; ++c) CHECK(b[c] == doctest::Approx(a[c]).epsilon(1e-5));
+    }
+    CHECK_THROWS_WITH_AS(PathTracer(floor, {.max_depth = -1}), doctest::Contains("PathTracer max_depth must be >= 0, got -1"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(PathTracer(floor, {.dispersion_bands = 0}), doctest::Contains("PathTracer dispersion_bands must be in [1, 81], got 0"),
+                         std::invalid_argument);
+}
