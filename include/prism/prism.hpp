@@ -11,6 +11,7 @@
 #include <prism/core/interval.hpp>
 #include <prism/core/math.hpp>
 #include <prism/core/offset.hpp>
+#include <prism/core/parallel.hpp>
 #include <prism/core/ray.hpp>
 #include <prism/core/rng.hpp>
 #include <prism/core/sampling.hpp>
@@ -30,6 +31,7 @@
 #include <prism/integrator/light_tracer.hpp>
 #include <prism/integrator/path_tracer.hpp>
 #include <prism/integrator/photon_mapper.hpp>
+#include <prism/integrator/progressive.hpp>
 #include <prism/integrator/whitted.hpp>
 #include <prism/light/directional_light.hpp>
 #include <prism/light/light.hpp>

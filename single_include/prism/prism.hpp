@@ -378,6 +378,45 @@ inline void require_memory(const std::string& what, double bytes)
 
 } // namespace prism::detail
 
+// ---- prism/core/parallel.hpp ----
+// Threads for the loops whose every iteration writes its own place: the result is the
+// same for any thread count.
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+namespace prism::detail {
+
+/// The threads to use for `requested` (0 = all hardware threads).
+[[nodiscard]] inline unsigned worker_count(unsigned requested) noexcept
+{
+    return requested != 0 ? requested : std::max(1u, std::thread::hardware_concurrency());
+}
+
+/// f(i) for every i in [0, count), in chunks taken by up to `threads` threads (0 = all
+/// hardware threads); f must write only what belongs to i.
+template <class F>
+void parallel_for(std::size_t count, unsigned threads, F&& f)
+{
+    constexpr std::size_t chunk = 256;
+    const std::size_t chunks = (count + chunk - 1) / chunk;
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+        for (std::size_t c = next++; c < chunks; c = next++)
+            for (std::size_t i = c * chunk, end = std::min(count, (c + 1) * chunk); i < end; ++i) f(i);
+    };
+    const auto workers_wanted = std::min<std::size_t>(worker_count(threads), std::max<std::size_t>(chunks, 1));
+    std::vector<std::thread> workers;
+    for (std::size_t i = 1; i < workers_wanted; ++i) workers.emplace_back(work);
+    work();
+    for (auto& worker : workers) worker.join();
+}
+
+} // namespace prism::detail
+
 // ---- prism/accel/kd_tree.hpp ----
 // KdTree: k-nearest and radius queries over a point set; pointer-free, constexpr-friendly.
 //
@@ -400,6 +439,7 @@ inline void require_memory(const std::string& what, double bytes)
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -556,8 +596,10 @@ public:
 
     // KdTree Public Methods
 
-    /// Build over the points (copied; the set may go away afterwards).
-    constexpr explicit KdTree(const Points& points)
+    /// Build over the points (copied; the set may go away afterwards), the subtrees of
+    /// large ranges on up to `threads` threads (0 = all hardware threads). The tree is
+    /// the same for any thread count: the subtrees own disjoint ranges and nodes.
+    constexpr explicit KdTree(const Points& points, unsigned threads = 1)
     {
         const std::size_t n = points.size();
         if (n >= std::numeric_limits<std::uint32_t>::max())
@@ -579,11 +621,16 @@ public:
             for (std::size_t leaves = 1; (n + leaves - 1) / leaves > LeafSize; leaves *= 2) nodes *= 2;
             split_.resize(nodes);
             axis_.resize(nodes);
-            build(1, 0, n);
+            if (std::is_constant_evaluated()) build(1, 0, n);
+            else build_on_threads(1, 0, n, detail::worker_count(threads));
         }
         // Store the points in tree order.
         std::vector<Point> ordered(n);
-        for (std::size_t i = 0; i < n; ++i) ordered[i] = points_[index_[i]];
+        if (std::is_constant_evaluated()) {
+            for (std::size_t i = 0; i < n; ++i) ordered[i] = points_[index_[i]];
+        } else {
+            detail::parallel_for(n, threads, [&](std::size_t i) { ordered[i] = points_[index_[i]]; });
+        }
         points_ = std::move(ordered);
     }
 
@@ -669,10 +716,32 @@ private:
 
     [[nodiscard]] static constexpr std::size_t middle(std::size_t begin, std::size_t end) noexcept { return begin + (end - begin) / 2; }
 
+    /// Ranges smaller than this are not worth a thread of their own.
+    static constexpr std::size_t parallel_range = std::size_t(1) << 15;
+
+    /// build(), with the two halves of a large range on threads of their own (not in a
+    /// constant expression).
+    void build_on_threads(std::size_t node, std::size_t begin, std::size_t end, unsigned threads)
+    {
+        if (threads <= 1 || end - begin < parallel_range) return build(node, begin, end);
+        const std::size_t mid = split(node, begin, end);
+        std::thread left([&] { build_on_threads(2 * node, begin, mid, threads / 2); });
+        build_on_threads(2 * node + 1, mid, end, threads - threads / 2);
+        left.join();
+    }
+
     constexpr void build(std::size_t node, std::size_t begin, std::size_t end)
     {
         if (end - begin <= LeafSize) return;
-        // Split along the axis of largest extent, at the median.
+        const std::size_t mid = split(node, begin, end);
+        build(2 * node, begin, mid);
+        build(2 * node + 1, mid, end);
+    }
+
+    /// Split node's range along the axis of largest extent at the median; returns the
+    /// middle.
+    constexpr std::size_t split(std::size_t node, std::size_t begin, std::size_t end)
+    {
         Point lo, hi;
         lo.fill(infinity<T>);
         hi.fill(-infinity<T>);
@@ -691,8 +760,7 @@ private:
                          [this, axis](std::uint32_t x, std::uint32_t y) { return points_[x][axis] < points_[y][axis]; });
         split_[node] = points_[index_[mid]][axis];
         axis_[node] = static_cast<std::uint8_t>(axis);
-        build(2 * node, begin, mid);
-        build(2 * node + 1, mid, end);
+        return mid;
     }
 
     // The search keeps `offsets`, the squared distance from q to the current cell along
@@ -4793,13 +4861,15 @@ public:
 
     PhotonMap() = default;
 
-    /// Own the photons and build the tree over them. The photons are then put in tree
+    /// Own the photons and build the tree over them (on up to `threads` threads, 0 = all
+    /// hardware threads; the same tree for any count). The photons are then put in tree
     /// order, so that every subtree's photons (and each leaf's) lie together in memory
     /// and an estimate reads them with few cache misses.
-    explicit PhotonMap(std::vector<Photon> photons) : tree_(std::in_place, PhotonPositions{photons})
+    explicit PhotonMap(std::vector<Photon> photons, unsigned threads = 1) : tree_(std::in_place, PhotonPositions{photons}, threads)
     {
-        photons_.reserve(photons.size());
-        for (const std::uint32_t i : tree_->order()) photons_.push_back(photons[i]);
+        photons_.resize(photons.size());
+        const auto order = tree_->order();
+        detail::parallel_for(order.size(), threads, [&](std::size_t i) { photons_[i] = photons[order[i]]; });
         tree_->index_in_tree_order();
     }
 
@@ -4863,19 +4933,18 @@ public:
     /// Precompute irradiance at every `stride`-th photon from its K nearest (Christensen
     /// 1999, "Faster Photon Map Global Illumination"), so that a final-gather ray needs
     /// one nearest-neighbour lookup instead of a density estimate.
+    /// The estimates run on up to `threads` threads (0 = all hardware threads), each
+    /// written to its sample's place: the same values for any count.
     template <std::size_t K>
-    void precompute_irradiance(std::size_t stride)
+    void precompute_irradiance(std::size_t stride, unsigned threads = 1)
     {
         std::vector<Photon> samples;
-        irradiance_.clear();
-        for (std::size_t i = 0; i < photons_.size(); i += std::max<std::size_t>(stride, 1)) {
-            const Photon& photon = photons_[i];
-            if (photon.flags & Photon::shadow) continue;
-            samples.push_back(photon);
-            irradiance_.push_back(irradiance<K>(photon.position, photon.normal()));
-        }
+        for (std::size_t i = 0; i < photons_.size(); i += std::max<std::size_t>(stride, 1))
+            if (!(photons_[i].flags & Photon::shadow)) samples.push_back(photons_[i]);
+        irradiance_.assign(samples.size(), Rgb<float>(0.0f));
+        detail::parallel_for(samples.size(), threads, [&](std::size_t i) { irradiance_[i] = irradiance<K>(samples[i].position, samples[i].normal()); });
         samples_ = std::move(samples);
-        sample_tree_.emplace(PhotonPositions{samples_});
+        sample_tree_.emplace(PhotonPositions{samples_}, threads);
     }
 
     /// The precomputed irradiance nearest p among samples on surfaces facing n's way
@@ -5314,42 +5383,69 @@ private:
 
 /// Run `trace(first, last, out)` over [0, count) in fixed blocks on worker threads and
 /// concatenate the blocks in order: the result does not depend on the thread count.
+/// Each worker appends to a vector of its own (no allocation per block: many threads
+/// allocating and first touching large blocks at once wait on each other in the
+/// kernel) and notes where each of its blocks lies.
 template <class Trace>
 std::vector<Photon> trace_in_fixed_blocks(std::size_t count, unsigned threads, Trace&& trace)
 {
     constexpr std::size_t block = 4096;
     const std::size_t blocks = (count + block - 1) / block;
-    std::vector<std::vector<Photon>> parts(blocks);
-    std::atomic<std::size_t> next{0};
-    const auto work = [&] {
-        for (std::size_t b = next++; b < blocks; b = next++) trace(b * block, std::min(count, (b + 1) * block), parts[b]);
+    threads = static_cast<unsigned>(std::min<std::size_t>(worker_count(threads), std::max<std::size_t>(blocks, 1)));
+    struct Part {
+        unsigned worker = 0;
+        std::size_t begin = 0, end = 0;
     };
-    threads = threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
-    threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(blocks, 1)));
+    std::vector<Part> parts(blocks);
+    std::vector<std::vector<Photon>> local(threads);
+    std::atomic<std::size_t> next{0};
+    const auto work = [&](unsigned worker) {
+        std::vector<Photon>& out = local[worker];
+        for (std::size_t b = next++; b < blocks; b = next++) {
+            const std::size_t begin = out.size();
+            trace(b * block, std::min(count, (b + 1) * block), out);
+            parts[b] = {worker, begin, out.size()};
+        }
+    };
     std::vector<std::thread> workers;
-    for (unsigned i = 1; i < threads; ++i) workers.emplace_back(work);
-    work();
+    for (unsigned i = 1; i < threads; ++i) workers.emplace_back(work, i);
+    work(0);
     for (auto& worker : workers) worker.join();
+    std::size_t total = 0;
+    for (const Part& part : parts) total += part.end - part.begin;
     std::vector<Photon> all;
-    for (auto& part : parts) all.insert(all.end(), part.begin(), part.end());
+    all.reserve(total);
+    for (const Part& part : parts) {
+        const auto first = local[part.worker].begin();
+        all.insert(all.end(), first + std::ptrdiff_t(part.begin), first + std::ptrdiff_t(part.end));
+    }
     return all;
 }
 
 } // namespace detail
 
-/// Trace the global and caustic photon maps of a scene, from its lights.
+/// Trace the global and caustic photon maps of a scene, from its lights: photons
+/// [pass N, (pass + 1) N) of each map's sequence, N its count in `config`. Pass 0 is the
+/// maps; every pass is an independent set of the same size and power (progressive photon
+/// mapping's), since each photon's Sobol point and random stream come from its index.
+/// The trees are built on config.threads threads, the same for any count.
 template <class SceneT, class Air = StraightAir>
-[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config = {}, const Air& air = {})
+[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config = {}, const Air& air = {}, std::size_t pass = 0)
 {
     const detail::PhotonTracer<SceneT, Air> tracer(scene, config, air);
+    // Photon indices are Sobol indices: 32 bits.
+    for (const std::size_t count : {config.global_photons, config.caustic_photons})
+        if (count > 0 && pass >= (std::size_t(1) << 32) / count)
+            detail::throw_invalid("trace_photons pass ", pass, " of ", count, " photons reaches past photon index 2^32 (the Sobol sequence's length)");
     PhotonMaps maps;
     try {
+        const std::size_t global_first = pass * config.global_photons, caustic_first = pass * config.caustic_photons;
         maps.global = PhotonMap(detail::trace_in_fixed_blocks(config.global_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
-            tracer.trace_global(a, b, out);
-        }));
+            tracer.trace_global(global_first + a, global_first + b, out);
+        }), config.threads);
         maps.caustic = PhotonMap(detail::trace_in_fixed_blocks(config.caustic_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
-            tracer.trace_caustic(a, b, out);
-        }));
+            tracer.trace_caustic(caustic_first + a, caustic_first + b, out);
+        }), config.threads);
     } catch (const std::bad_alloc&) {
         throw allocation_error("prism: tracing " + std::to_string(config.global_photons) + " global and " + std::to_string(config.caustic_photons) +
                                " caustic photons ran out of memory (each stored photon takes " + std::to_string(sizeof(Photon)) +
@@ -5630,7 +5726,7 @@ template <class SceneT, class Air = StraightAir>
 
     constexpr std::size_t block = 16384;
     const std::size_t blocks = (config.paths + block - 1) / block;
-    unsigned threads = config.threads != 0 ? config.threads : std::max(1u, std::thread::hardware_concurrency());
+    unsigned threads = detail::worker_count(config.threads);
     threads = unsigned(std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(blocks, 1)));
     std::vector<std::vector<Rgb<float>>> buffers(threads, std::vector<Rgb<float>>(pixels));
     std::vector<Rgb<double>> sum(pixels, Rgb<double>(0.0));
@@ -5789,7 +5885,19 @@ public:
     };
 
     /// Traces the photon maps (the expensive part), then renders with them.
-    explicit PhotonMapper(const SceneT& scene, Config config = {}, Air air = {})
+    explicit PhotonMapper(const SceneT& scene, Config config = {}, Air air = {}) : PhotonMapper(scene, config, std::nullopt, std::move(air)) {}
+    PhotonMapper(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
+
+    /// Renders with maps traced already (trace_photons with config.tracing: a pass of
+    /// progressive photon mapping).
+    PhotonMapper(const SceneT& scene, Config config, PhotonMaps maps, Air air = {})
+        : PhotonMapper(scene, config, std::optional<PhotonMaps>(std::move(maps)), std::move(air))
+    {
+    }
+    PhotonMapper(const SceneT&& scene, Config config, PhotonMaps maps, Air air = {}) = delete;
+
+private:
+    PhotonMapper(const SceneT& scene, Config config, std::optional<PhotonMaps> maps, Air air)
         : scene_(&scene), config_(config), bands_(config.dispersion_bands), air_(std::move(air))
     {
         scene.validate();
@@ -5804,10 +5912,11 @@ public:
         detail::validate(config.tracing);
         if (config.visibility_k > 0 && SceneT::light_count != 1)
             detail::throw_invalid("PhotonMapper visibility_k needs a scene with exactly one light, got lights: ", SceneT::light_count);
-        maps_ = trace_photons(scene, config.tracing, air_);
-        if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4);
+        maps_ = maps ? std::move(*maps) : trace_photons(scene, config.tracing, air_);
+        if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4, config.tracing.threads);
     }
-    PhotonMapper(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
+
+public:
 
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
 
@@ -5938,6 +6047,254 @@ private:
     Air air_;
     PhotonMaps maps_;
 };
+
+} // namespace prism
+
+// ---- prism/render/render.hpp ----
+// render(): camera rays per pixel, tiles on std::thread workers, one RNG stream per pixel.
+
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <concepts>
+#include <condition_variable>
+#include <cstdint>
+#include <cstdio>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace prism {
+
+/// An integrator: the radiance along a camera ray, drawing random numbers from rng.
+template <class I>
+concept Integrator = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
+    { integrator.radiance(ray, rng) } -> std::same_as<Rgb<typename I::scalar_type>>;
+};
+
+struct RenderConfig {
+    int width = 512;
+    int height = 512;
+    int spp = 1;             ///< samples per pixel; 1 samples the pixel centre
+    unsigned threads = 0;    ///< worker threads; 0 = all hardware threads
+    std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image
+    bool progress = true;    ///< report progress on stderr once a render passes one second
+    int tile_size = 16;      ///< pixels per side of the square work unit
+};
+
+namespace detail {
+
+/// Sub-pixel position of sample s of n: the centre when n = 1; otherwise jittered
+/// in an m x m grid of strata (m = floor(sqrt(n))), any further samples uniform. The
+/// jitter is drawn as float in every precision, so float and double renders of one
+/// seed sample the same positions and differ only by their arithmetic.
+template <Scalar T>
+[[nodiscard]] inline std::pair<T, T> pixel_sample(int s, int n, Pcg32& rng) noexcept
+{
+    if (n == 1) return {T(0.5), T(0.5)};
+    const int m = static_cast<int>(std::sqrt(static_cast<double>(n)));
+    const T u = T(rng.uniform<float>()), v = T(rng.uniform<float>());
+    if (s < m * m) return {(T(s % m) + u) / T(m), (T(s / m) + v) / T(m)};
+    return {u, v};
+}
+
+} // namespace detail
+
+/// Render an image. The same scene, seed and spp give the same bits for any thread
+/// count: every pixel draws from its own random stream and is written by one thread.
+template <Integrator I>
+[[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
+{
+    using T = typename I::scalar_type;
+    if (config.spp < 1) detail::throw_invalid("RenderConfig spp must be >= 1, got ", config.spp);
+    if (config.tile_size < 1) detail::throw_invalid("RenderConfig tile_size must be >= 1, got ", config.tile_size);
+    const CameraRays<T> rays = camera.rays(config.width, config.height);
+    Film film(config.width, config.height);
+
+    // Tile arithmetic in 64 bits: a tile_size of INT_MAX, or 65536^2 one-pixel tiles,
+    // overflows int.
+    const std::int64_t tile = config.tile_size;
+    const std::int64_t tiles_x = (std::int64_t(config.width) - 1) / tile + 1;
+    const std::int64_t tiles_y = (std::int64_t(config.height) - 1) / tile + 1;
+    const std::int64_t tile_count = tiles_x * tiles_y;
+    std::atomic<std::int64_t> next_tile{0};
+    std::atomic<std::int64_t> tiles_done{0};
+    std::mutex mutex;
+    std::condition_variable finished;
+    unsigned running = 0;
+
+    const auto work = [&] {
+        for (std::int64_t t = next_tile++; t < tile_count; t = next_tile++) {
+            const auto x0 = static_cast<int>((t % tiles_x) * tile), y0 = static_cast<int>((t / tiles_x) * tile);
+            const auto x1 = static_cast<int>(std::min<std::int64_t>(x0 + tile, config.width));
+            const auto y1 = static_cast<int>(std::min<std::int64_t>(y0 + tile, config.height));
+            for (int y = y0; y < y1; ++y)
+                for (int x = x0; x < x1; ++x) {
+                    const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + x;
+                    Pcg32 rng(config.seed, pixel);
+                    Rgb<T> sum{T(0)};
+                    for (int s = 0; s < config.spp; ++s) {
+                        const auto [dx, dy] = detail::pixel_sample<T>(s, config.spp, rng);
+                        sum += integrator.radiance(rays.ray(T(x) + dx, T(y) + dy), rng);
+                    }
+                    film.set(x, y, sum / T(config.spp));
+                }
+            ++tiles_done;
+        }
+        const std::lock_guard lock(mutex);
+        if (--running == 0) finished.notify_all();
+    };
+
+    unsigned threads = detail::worker_count(config.threads);
+    threads = static_cast<unsigned>(std::min<std::int64_t>(threads, tile_count));
+    running = threads;
+    std::vector<std::thread> workers;
+    workers.reserve(threads);
+    for (unsigned i = 0; i < threads; ++i) workers.emplace_back(work);
+
+    // Report progress while waiting, once the render has taken more than a second.
+    const auto start = std::chrono::steady_clock::now();
+    bool reported = false;
+    {
+        std::unique_lock lock(mutex);
+        while (!finished.wait_for(lock, std::chrono::milliseconds(250), [&] { return running == 0; })) {
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (config.progress && seconds > 1.0) {
+                std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", static_cast<int>(100 * tiles_done.load() / tile_count), seconds);
+                reported = true;
+            }
+        }
+    }
+    for (auto& worker : workers) worker.join();
+    if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
+    return film;
+}
+
+} // namespace prism
+
+// ---- prism/integrator/progressive.hpp ----
+// render_progressive: stochastic progressive photon mapping (Hachisuka and Jensen 2009)
+// in the probabilistic form of Knaus and Zwicker (2011), which converges to the right
+// image as the passes go on.
+//
+// Each pass traces fresh photon maps (photons [p N, (p + 1) N) of each map's Sobol
+// sequence: trace_photons' pass p) and renders one image with the photon mapper, reading
+// the maps directly (no final gather) with radii that shrink from pass to pass,
+//     r_{p+1}^2 = r_p^2 (p + alpha) / (p + 1)      (p counted from 1, alpha = 2/3),
+// the same for every pixel. The image is the mean of the passes' images. A pass's
+// estimate is biased by its radius and noisy by its photon count; as r^2 falls as
+// p^(alpha - 1), the bias vanishes, while the mean of p passes still averages the noise
+// down: the error falls as p^(-alpha / 2) = p^(-1/3) (Knaus and Zwicker, section 4).
+// No per-pixel statistics are kept, so a pass is as cheap as the photon mapper's, any
+// pass count is deterministic, and passes on different threads or machines add up.
+// Direct light is by shadow rays (each pass at a new sample position in the pixel,
+// which also anti-aliases), caustics from the caustic map, the rest from the global
+// map. Photons on the far side of a thin surface never count (their surface faces the
+// other way: PhotonMap::irradiance).
+
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace prism {
+
+/// The radius of pass `pass` (from 0) when the first is r0: r^2 shrinks by
+/// (p + alpha) / (p + 1) from pass p to p + 1 (p from 1).
+[[nodiscard]] inline double progressive_radius(double r0, double alpha, std::size_t pass) noexcept
+{
+    double r2 = r0 * r0;
+    for (std::size_t p = 1; p <= pass; ++p) r2 *= (double(p) + alpha) / double(p + 1);
+    return std::sqrt(r2);
+}
+
+template <class SceneT, class Air = StraightAir>
+struct ProgressiveConfig {
+    /// Each pass's photon mapper: photons per pass (tracing), the first pass's radii
+    /// (caustic and global, radius estimates: k = 0) and the camera paths' settings.
+    /// gather_rays and visibility_k must be 0.
+    typename PhotonMapper<SceneT, Air>::Config pass{.caustic = {.radius = 0.1f},
+                                                    .global = {.radius = 0.25f, .excluded = Photon::direct | Photon::caustic},
+                                                    .gather_rays = 0};
+    double alpha = 2.0 / 3.0; ///< in (0, 1): how much of the radius each pass keeps
+    std::size_t passes = 64;  ///< at most this many; 0 = until `seconds`
+    double seconds = 0;       ///< > 0: stop after the pass that ends past this time (the pass count then varies)
+    std::size_t first_pass = 0; ///< passes [first_pass, first_pass + passes): one share of a render split across machines
+};
+
+/// What a run of passes made: their images' sum, kept in double so that the sums of
+/// shares of one render (first_pass) add up to the whole render's bit for bit (a
+/// double holds the sum of a few million floats exactly).
+struct ProgressiveResult {
+    int width{}, height{};
+    std::vector<Rgb<double>> sum; ///< per pixel, row by row from the top
+    std::size_t passes{};         ///< how many were rendered
+    double seconds{};
+
+    /// Add another share of the same render.
+    ProgressiveResult& operator+=(const ProgressiveResult& other)
+    {
+        if (other.width != width || other.height != height)
+            detail::throw_invalid("ProgressiveResult of ", other.width, " x ", other.height, " added to one of ", width, " x ", height);
+        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += other.sum[i];
+        passes += other.passes;
+        seconds += other.seconds;
+        return *this;
+    }
+
+    /// The mean of the passes' images.
+    [[nodiscard]] Film image() const
+    {
+        Film mean(width, height);
+        const double n = double(std::max<std::size_t>(passes, 1));
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) mean.set(x, y, sum[std::size_t(y) * std::size_t(width) + std::size_t(x)] / n);
+        return mean;
+    }
+};
+
+/// Render `scene` by progressive photon mapping: `render`'s size, samples per pixel per
+/// pass, threads and seed; the same bits for any thread count.
+template <class SceneT, class Air = StraightAir>
+[[nodiscard]] ProgressiveResult render_progressive(const Camera<typename SceneT::scalar_type>& camera, const SceneT& scene,
+                                                   const ProgressiveConfig<SceneT, Air>& config, const RenderConfig& render_config, const Air& air = {})
+{
+    if (!(config.alpha > 0.0 && config.alpha < 1.0)) detail::throw_invalid("ProgressiveConfig alpha must be in (0, 1), got ", config.alpha);
+    if (config.pass.gather_rays != 0) detail::throw_invalid("ProgressiveConfig pass.gather_rays must be 0 (the maps are read directly), got ", config.pass.gather_rays);
+    if (config.pass.visibility_k != 0) detail::throw_invalid("ProgressiveConfig pass.visibility_k must be 0, got ", config.pass.visibility_k);
+    if (config.pass.caustic.k != 0 || config.pass.global.k != 0)
+        detail::throw_invalid("ProgressiveConfig estimates must be by radius (k = 0), got k = ", config.pass.caustic.k, " and ", config.pass.global.k);
+    if (!(config.seconds >= 0.0 && std::isfinite(config.seconds))) detail::throw_invalid("ProgressiveConfig seconds must be finite and >= 0, got ", config.seconds);
+    if (config.passes == 0 && config.seconds == 0.0) detail::throw_invalid("ProgressiveConfig needs passes > 0 or seconds > 0");
+    (void)camera.rays(render_config.width, render_config.height); // validates both before the first pass
+
+    const auto start = std::chrono::steady_clock::now();
+    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    ProgressiveResult result{render_config.width, render_config.height,
+                             std::vector<Rgb<double>>(std::size_t(render_config.width) * std::size_t(render_config.height), Rgb<double>(0.0)), 0, 0.0};
+    for (std::size_t pass = config.first_pass; config.passes == 0 || pass < config.first_pass + config.passes; ++pass) {
+        typename PhotonMapper<SceneT, Air>::Config mapper_config = config.pass;
+        mapper_config.caustic.radius = float(progressive_radius(config.pass.caustic.radius, config.alpha, pass));
+        mapper_config.global.radius = float(progressive_radius(config.pass.global.radius, config.alpha, pass));
+        const PhotonMapper<SceneT, Air> mapper(scene, mapper_config, trace_photons(scene, config.pass.tracing, air, pass), air);
+        RenderConfig pass_render = render_config;
+        pass_render.seed = render_config.seed + 0x9e3779b97f4a7c15ULL * (pass + 1); // a fresh sample in every pixel
+        pass_render.progress = false;
+        const Film image = render(camera, mapper, pass_render);
+        for (std::size_t i = 0; i < result.sum.size(); ++i) result.sum[i] += Rgb<double>(image.pixels()[i]);
+        ++result.passes;
+        if (render_config.progress)
+            std::fprintf(stderr, "\rprism: progressive pass %zu, r = %.4g / %.4g (%.1f s)", result.passes, double(mapper_config.caustic.radius),
+                         double(mapper_config.global.radius), elapsed());
+        if (config.seconds > 0.0 && elapsed() >= config.seconds) break;
+    }
+    if (render_config.progress) std::fprintf(stderr, "\n");
+    result.seconds = elapsed();
+    return result;
+}
 
 } // namespace prism
 
@@ -7360,130 +7717,6 @@ private:
 };
 
 static_assert(Material<CoatedDielectric<float>>);
-
-} // namespace prism
-
-// ---- prism/render/render.hpp ----
-// render(): camera rays per pixel, tiles on std::thread workers, one RNG stream per pixel.
-
-
-#include <algorithm>
-#include <atomic>
-#include <chrono>
-#include <cmath>
-#include <concepts>
-#include <condition_variable>
-#include <cstdint>
-#include <cstdio>
-#include <mutex>
-#include <thread>
-#include <vector>
-
-namespace prism {
-
-/// An integrator: the radiance along a camera ray, drawing random numbers from rng.
-template <class I>
-concept Integrator = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
-    { integrator.radiance(ray, rng) } -> std::same_as<Rgb<typename I::scalar_type>>;
-};
-
-struct RenderConfig {
-    int width = 512;
-    int height = 512;
-    int spp = 1;             ///< samples per pixel; 1 samples the pixel centre
-    unsigned threads = 0;    ///< worker threads; 0 = all hardware threads
-    std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image
-    bool progress = true;    ///< report progress on stderr once a render passes one second
-    int tile_size = 16;      ///< pixels per side of the square work unit
-};
-
-namespace detail {
-
-/// Sub-pixel position of sample s of n: the centre when n = 1; otherwise jittered
-/// in an m x m grid of strata (m = floor(sqrt(n))), any further samples uniform. The
-/// jitter is drawn as float in every precision, so float and double renders of one
-/// seed sample the same positions and differ only by their arithmetic.
-template <Scalar T>
-[[nodiscard]] inline std::pair<T, T> pixel_sample(int s, int n, Pcg32& rng) noexcept
-{
-    if (n == 1) return {T(0.5), T(0.5)};
-    const int m = static_cast<int>(std::sqrt(static_cast<double>(n)));
-    const T u = T(rng.uniform<float>()), v = T(rng.uniform<float>());
-    if (s < m * m) return {(T(s % m) + u) / T(m), (T(s / m) + v) / T(m)};
-    return {u, v};
-}
-
-} // namespace detail
-
-/// Render an image. The same scene, seed and spp give the same bits for any thread
-/// count: every pixel draws from its own random stream and is written by one thread.
-template <Integrator I>
-[[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
-{
-    using T = typename I::scalar_type;
-    if (config.spp < 1) detail::throw_invalid("RenderConfig spp must be >= 1, got ", config.spp);
-    if (config.tile_size < 1) detail::throw_invalid("RenderConfig tile_size must be >= 1, got ", config.tile_size);
-    const CameraRays<T> rays = camera.rays(config.width, config.height);
-    Film film(config.width, config.height);
-
-    // Tile arithmetic in 64 bits: a tile_size of INT_MAX, or 65536^2 one-pixel tiles,
-    // overflows int.
-    const std::int64_t tile = config.tile_size;
-    const std::int64_t tiles_x = (std::int64_t(config.width) - 1) / tile + 1;
-    const std::int64_t tiles_y = (std::int64_t(config.height) - 1) / tile + 1;
-    const std::int64_t tile_count = tiles_x * tiles_y;
-    std::atomic<std::int64_t> next_tile{0};
-    std::atomic<std::int64_t> tiles_done{0};
-    std::mutex mutex;
-    std::condition_variable finished;
-    unsigned running = 0;
-
-    const auto work = [&] {
-        for (std::int64_t t = next_tile++; t < tile_count; t = next_tile++) {
-            const auto x0 = static_cast<int>((t % tiles_x) * tile), y0 = static_cast<int>((t / tiles_x) * tile);
-            const auto x1 = static_cast<int>(std::min<std::int64_t>(x0 + tile, config.width));
-            const auto y1 = static_cast<int>(std::min<std::int64_t>(y0 + tile, config.height));
-            for (int y = y0; y < y1; ++y)
-                for (int x = x0; x < x1; ++x) {
-                    const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + x;
-                    Pcg32 rng(config.seed, pixel);
-                    Rgb<T> sum{T(0)};
-                    for (int s = 0; s < config.spp; ++s) {
-                        const auto [dx, dy] = detail::pixel_sample<T>(s, config.spp, rng);
-                        sum += integrator.radiance(rays.ray(T(x) + dx, T(y) + dy), rng);
-                    }
-                    film.set(x, y, sum / T(config.spp));
-                }
-            ++tiles_done;
-        }
-        const std::lock_guard lock(mutex);
-        if (--running == 0) finished.notify_all();
-    };
-
-    unsigned threads = config.threads != 0 ? config.threads : std::max(1u, std::thread::hardware_concurrency());
-    threads = static_cast<unsigned>(std::min<std::int64_t>(threads, tile_count));
-    running = threads;
-    std::vector<std::thread> workers;
-    workers.reserve(threads);
-    for (unsigned i = 0; i < threads; ++i) workers.emplace_back(work);
-
-    // Report progress while waiting, once the render has taken more than a second.
-    const auto start = std::chrono::steady_clock::now();
-    bool reported = false;
-    {
-        std::unique_lock lock(mutex);
-        while (!finished.wait_for(lock, std::chrono::milliseconds(250), [&] { return running == 0; })) {
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (config.progress && seconds > 1.0) {
-                std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", static_cast<int>(100 * tiles_done.load() / tile_count), seconds);
-                reported = true;
-            }
-        }
-    }
-    for (auto& worker : workers) worker.join();
-    if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
-    return film;
-}
 
 } // namespace prism
 

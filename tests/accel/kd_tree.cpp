@@ -271,3 +271,18 @@ TEST_CASE_TEMPLATE("the one search takes a result set of the caller's own; KNear
         CHECK(std::equal(found.begin(), found.end(), all.begin()));
     }
 }
+
+TEST_CASE("a tree built on several threads is the tree built on one, and answers as brute force")
+{
+    // 300 000 points: ranges above 2^15 are split on threads of their own.
+    prism::Pcg32 rng(21u, 21u);
+    const auto points = clustered<float>(rng, 300000);
+    const KdTree<ArrayPoints<float, 3>> one(ArrayPoints<float, 3>{points}, 1), three(ArrayPoints<float, 3>{points}, 3);
+    CHECK(std::ranges::equal(one.order(), three.order()));
+    const auto queries = uniform<float>(rng, 20);
+    for (const auto& q : queries) {
+        const auto got = three.nearest<8>(q);
+        const auto all = brute_force(points, q);
+        for (std::size_t i = 0; i < got.size(); ++i) CHECK(got[i] == all[i]);
+    }
+}

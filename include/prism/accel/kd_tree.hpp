@@ -16,6 +16,7 @@
 #include <prism/core/check.hpp>
 #include <prism/core/config.hpp>
 #include <prism/core/math.hpp>
+#include <prism/core/parallel.hpp>
 
 #include <algorithm>
 #include <array>
@@ -24,6 +25,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -180,8 +182,10 @@ public:
 
     // KdTree Public Methods
 
-    /// Build over the points (copied; the set may go away afterwards).
-    constexpr explicit KdTree(const Points& points)
+    /// Build over the points (copied; the set may go away afterwards), the subtrees of
+    /// large ranges on up to `threads` threads (0 = all hardware threads). The tree is
+    /// the same for any thread count: the subtrees own disjoint ranges and nodes.
+    constexpr explicit KdTree(const Points& points, unsigned threads = 1)
     {
         const std::size_t n = points.size();
         if (n >= std::numeric_limits<std::uint32_t>::max())
@@ -203,11 +207,16 @@ public:
             for (std::size_t leaves = 1; (n + leaves - 1) / leaves > LeafSize; leaves *= 2) nodes *= 2;
             split_.resize(nodes);
             axis_.resize(nodes);
-            build(1, 0, n);
+            if (std::is_constant_evaluated()) build(1, 0, n);
+            else build_on_threads(1, 0, n, detail::worker_count(threads));
         }
         // Store the points in tree order.
         std::vector<Point> ordered(n);
-        for (std::size_t i = 0; i < n; ++i) ordered[i] = points_[index_[i]];
+        if (std::is_constant_evaluated()) {
+            for (std::size_t i = 0; i < n; ++i) ordered[i] = points_[index_[i]];
+        } else {
+            detail::parallel_for(n, threads, [&](std::size_t i) { ordered[i] = points_[index_[i]]; });
+        }
         points_ = std::move(ordered);
     }
 
@@ -293,10 +302,32 @@ private:
 
     [[nodiscard]] static constexpr std::size_t middle(std::size_t begin, std::size_t end) noexcept { return begin + (end - begin) / 2; }
 
+    /// Ranges smaller than this are not worth a thread of their own.
+    static constexpr std::size_t parallel_range = std::size_t(1) << 15;
+
+    /// build(), with the two halves of a large range on threads of their own (not in a
+    /// constant expression).
+    void build_on_threads(std::size_t node, std::size_t begin, std::size_t end, unsigned threads)
+    {
+        if (threads <= 1 || end - begin < parallel_range) return build(node, begin, end);
+        const std::size_t mid = split(node, begin, end);
+        std::thread left([&] { build_on_threads(2 * node, begin, mid, threads / 2); });
+        build_on_threads(2 * node + 1, mid, end, threads - threads / 2);
+        left.join();
+    }
+
     constexpr void build(std::size_t node, std::size_t begin, std::size_t end)
     {
         if (end - begin <= LeafSize) return;
-        // Split along the axis of largest extent, at the median.
+        const std::size_t mid = split(node, begin, end);
+        build(2 * node, begin, mid);
+        build(2 * node + 1, mid, end);
+    }
+
+    /// Split node's range along the axis of largest extent at the median; returns the
+    /// middle.
+    constexpr std::size_t split(std::size_t node, std::size_t begin, std::size_t end)
+    {
         Point lo, hi;
         lo.fill(infinity<T>);
         hi.fill(-infinity<T>);
@@ -315,8 +346,7 @@ private:
                          [this, axis](std::uint32_t x, std::uint32_t y) { return points_[x][axis] < points_[y][axis]; });
         split_[node] = points_[index_[mid]][axis];
         axis_[node] = static_cast<std::uint8_t>(axis);
-        build(2 * node, begin, mid);
-        build(2 * node + 1, mid, end);
+        return mid;
     }
 
     // The search keeps `offsets`, the squared distance from q to the current cell along

@@ -22,6 +22,7 @@
 
 #include <prism/core/check.hpp>
 #include <prism/core/offset.hpp>
+#include <prism/core/parallel.hpp>
 #include <prism/photon/photon_tracer.hpp>
 #include <prism/photon/random_walk.hpp>
 #include <prism/render/film.hpp>
@@ -92,7 +93,7 @@ template <class SceneT, class Air = StraightAir>
 
     constexpr std::size_t block = 16384;
     const std::size_t blocks = (config.paths + block - 1) / block;
-    unsigned threads = config.threads != 0 ? config.threads : std::max(1u, std::thread::hardware_concurrency());
+    unsigned threads = detail::worker_count(config.threads);
     threads = unsigned(std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(blocks, 1)));
     std::vector<std::vector<Rgb<float>>> buffers(threads, std::vector<Rgb<float>>(pixels));
     std::vector<Rgb<double>> sum(pixels, Rgb<double>(0.0));

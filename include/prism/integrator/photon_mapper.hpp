@@ -65,7 +65,19 @@ public:
     };
 
     /// Traces the photon maps (the expensive part), then renders with them.
-    explicit PhotonMapper(const SceneT& scene, Config config = {}, Air air = {})
+    explicit PhotonMapper(const SceneT& scene, Config config = {}, Air air = {}) : PhotonMapper(scene, config, std::nullopt, std::move(air)) {}
+    PhotonMapper(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
+
+    /// Renders with maps traced already (trace_photons with config.tracing: a pass of
+    /// progressive photon mapping).
+    PhotonMapper(const SceneT& scene, Config config, PhotonMaps maps, Air air = {})
+        : PhotonMapper(scene, config, std::optional<PhotonMaps>(std::move(maps)), std::move(air))
+    {
+    }
+    PhotonMapper(const SceneT&& scene, Config config, PhotonMaps maps, Air air = {}) = delete;
+
+private:
+    PhotonMapper(const SceneT& scene, Config config, std::optional<PhotonMaps> maps, Air air)
         : scene_(&scene), config_(config), bands_(config.dispersion_bands), air_(std::move(air))
     {
         scene.validate();
@@ -80,10 +92,11 @@ public:
         detail::validate(config.tracing);
         if (config.visibility_k > 0 && SceneT::light_count != 1)
             detail::throw_invalid("PhotonMapper visibility_k needs a scene with exactly one light, got lights: ", SceneT::light_count);
-        maps_ = trace_photons(scene, config.tracing, air_);
-        if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4);
+        maps_ = maps ? std::move(*maps) : trace_photons(scene, config.tracing, air_);
+        if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4, config.tracing.threads);
     }
-    PhotonMapper(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
+
+public:
 
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
 

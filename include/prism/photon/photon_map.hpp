@@ -3,6 +3,7 @@
 #pragma once
 
 #include <prism/accel/kd_tree.hpp>
+#include <prism/core/parallel.hpp>
 #include <prism/photon/photon.hpp>
 
 #include <algorithm>
@@ -105,13 +106,15 @@ public:
 
     PhotonMap() = default;
 
-    /// Own the photons and build the tree over them. The photons are then put in tree
+    /// Own the photons and build the tree over them (on up to `threads` threads, 0 = all
+    /// hardware threads; the same tree for any count). The photons are then put in tree
     /// order, so that every subtree's photons (and each leaf's) lie together in memory
     /// and an estimate reads them with few cache misses.
-    explicit PhotonMap(std::vector<Photon> photons) : tree_(std::in_place, PhotonPositions{photons})
+    explicit PhotonMap(std::vector<Photon> photons, unsigned threads = 1) : tree_(std::in_place, PhotonPositions{photons}, threads)
     {
-        photons_.reserve(photons.size());
-        for (const std::uint32_t i : tree_->order()) photons_.push_back(photons[i]);
+        photons_.resize(photons.size());
+        const auto order = tree_->order();
+        detail::parallel_for(order.size(), threads, [&](std::size_t i) { photons_[i] = photons[order[i]]; });
         tree_->index_in_tree_order();
     }
 
@@ -175,19 +178,18 @@ public:
     /// Precompute irradiance at every `stride`-th photon from its K nearest (Christensen
     /// 1999, "Faster Photon Map Global Illumination"), so that a final-gather ray needs
     /// one nearest-neighbour lookup instead of a density estimate.
+    /// The estimates run on up to `threads` threads (0 = all hardware threads), each
+    /// written to its sample's place: the same values for any count.
     template <std::size_t K>
-    void precompute_irradiance(std::size_t stride)
+    void precompute_irradiance(std::size_t stride, unsigned threads = 1)
     {
         std::vector<Photon> samples;
-        irradiance_.clear();
-        for (std::size_t i = 0; i < photons_.size(); i += std::max<std::size_t>(stride, 1)) {
-            const Photon& photon = photons_[i];
-            if (photon.flags & Photon::shadow) continue;
-            samples.push_back(photon);
-            irradiance_.push_back(irradiance<K>(photon.position, photon.normal()));
-        }
+        for (std::size_t i = 0; i < photons_.size(); i += std::max<std::size_t>(stride, 1))
+            if (!(photons_[i].flags & Photon::shadow)) samples.push_back(photons_[i]);
+        irradiance_.assign(samples.size(), Rgb<float>(0.0f));
+        detail::parallel_for(samples.size(), threads, [&](std::size_t i) { irradiance_[i] = irradiance<K>(samples[i].position, samples[i].normal()); });
         samples_ = std::move(samples);
-        sample_tree_.emplace(PhotonPositions{samples_});
+        sample_tree_.emplace(PhotonPositions{samples_}, threads);
     }
 
     /// The precomputed irradiance nearest p among samples on surfaces facing n's way

@@ -22,6 +22,7 @@
 
 #include <prism/core/check.hpp>
 #include <prism/core/offset.hpp>
+#include <prism/core/parallel.hpp>
 #include <prism/core/rng.hpp>
 #include <prism/geometry/crossings.hpp>
 #include <prism/geometry/shape.hpp>
@@ -300,42 +301,69 @@ private:
 
 /// Run `trace(first, last, out)` over [0, count) in fixed blocks on worker threads and
 /// concatenate the blocks in order: the result does not depend on the thread count.
+/// Each worker appends to a vector of its own (no allocation per block: many threads
+/// allocating and first touching large blocks at once wait on each other in the
+/// kernel) and notes where each of its blocks lies.
 template <class Trace>
 std::vector<Photon> trace_in_fixed_blocks(std::size_t count, unsigned threads, Trace&& trace)
 {
     constexpr std::size_t block = 4096;
     const std::size_t blocks = (count + block - 1) / block;
-    std::vector<std::vector<Photon>> parts(blocks);
-    std::atomic<std::size_t> next{0};
-    const auto work = [&] {
-        for (std::size_t b = next++; b < blocks; b = next++) trace(b * block, std::min(count, (b + 1) * block), parts[b]);
+    threads = static_cast<unsigned>(std::min<std::size_t>(worker_count(threads), std::max<std::size_t>(blocks, 1)));
+    struct Part {
+        unsigned worker = 0;
+        std::size_t begin = 0, end = 0;
     };
-    threads = threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
-    threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(blocks, 1)));
+    std::vector<Part> parts(blocks);
+    std::vector<std::vector<Photon>> local(threads);
+    std::atomic<std::size_t> next{0};
+    const auto work = [&](unsigned worker) {
+        std::vector<Photon>& out = local[worker];
+        for (std::size_t b = next++; b < blocks; b = next++) {
+            const std::size_t begin = out.size();
+            trace(b * block, std::min(count, (b + 1) * block), out);
+            parts[b] = {worker, begin, out.size()};
+        }
+    };
     std::vector<std::thread> workers;
-    for (unsigned i = 1; i < threads; ++i) workers.emplace_back(work);
-    work();
+    for (unsigned i = 1; i < threads; ++i) workers.emplace_back(work, i);
+    work(0);
     for (auto& worker : workers) worker.join();
+    std::size_t total = 0;
+    for (const Part& part : parts) total += part.end - part.begin;
     std::vector<Photon> all;
-    for (auto& part : parts) all.insert(all.end(), part.begin(), part.end());
+    all.reserve(total);
+    for (const Part& part : parts) {
+        const auto first = local[part.worker].begin();
+        all.insert(all.end(), first + std::ptrdiff_t(part.begin), first + std::ptrdiff_t(part.end));
+    }
     return all;
 }
 
 } // namespace detail
 
-/// Trace the global and caustic photon maps of a scene, from its lights.
+/// Trace the global and caustic photon maps of a scene, from its lights: photons
+/// [pass N, (pass + 1) N) of each map's sequence, N its count in `config`. Pass 0 is the
+/// maps; every pass is an independent set of the same size and power (progressive photon
+/// mapping's), since each photon's Sobol point and random stream come from its index.
+/// The trees are built on config.threads threads, the same for any count.
 template <class SceneT, class Air = StraightAir>
-[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config = {}, const Air& air = {})
+[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config = {}, const Air& air = {}, std::size_t pass = 0)
 {
     const detail::PhotonTracer<SceneT, Air> tracer(scene, config, air);
+    // Photon indices are Sobol indices: 32 bits.
+    for (const std::size_t count : {config.global_photons, config.caustic_photons})
+        if (count > 0 && pass >= (std::size_t(1) << 32) / count)
+            detail::throw_invalid("trace_photons pass ", pass, " of ", count, " photons reaches past photon index 2^32 (the Sobol sequence's length)");
     PhotonMaps maps;
     try {
+        const std::size_t global_first = pass * config.global_photons, caustic_first = pass * config.caustic_photons;
         maps.global = PhotonMap(detail::trace_in_fixed_blocks(config.global_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
-            tracer.trace_global(a, b, out);
-        }));
+            tracer.trace_global(global_first + a, global_first + b, out);
+        }), config.threads);
         maps.caustic = PhotonMap(detail::trace_in_fixed_blocks(config.caustic_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
-            tracer.trace_caustic(a, b, out);
-        }));
+            tracer.trace_caustic(caustic_first + a, caustic_first + b, out);
+        }), config.threads);
     } catch (const std::bad_alloc&) {
         throw allocation_error("prism: tracing " + std::to_string(config.global_photons) + " global and " + std::to_string(config.caustic_photons) +
                                " caustic photons ran out of memory (each stored photon takes " + std::to_string(sizeof(Photon)) +

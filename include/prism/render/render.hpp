@@ -3,6 +3,7 @@
 #pragma once
 
 #include <prism/core/check.hpp>
+#include <prism/core/parallel.hpp>
 #include <prism/core/rng.hpp>
 #include <prism/render/film.hpp>
 #include <prism/scene/camera.hpp>
@@ -100,7 +101,7 @@ template <Integrator I>
         if (--running == 0) finished.notify_all();
     };
 
-    unsigned threads = config.threads != 0 ? config.threads : std::max(1u, std::thread::hardware_concurrency());
+    unsigned threads = detail::worker_count(config.threads);
     threads = static_cast<unsigned>(std::min<std::int64_t>(threads, tile_count));
     running = threads;
     std::vector<std::thread> workers;

@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: MIT
+#include <prism/integrator/progressive.hpp>
+#include <prism/prism.hpp>
+
+#include "../furnace.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <vector>
+
+using namespace prism;
+
+TEST_CASE("the radius schedule: r^2 shrinks by (p + alpha) / (p + 1), as p^(alpha - 1) in the end")
+{
+    CHECK(progressive_radius(0.2, 2.0 / 3.0, 0) == 0.2);
+    CHECK(progressive_radius(0.2, 2.0 / 3.0, 1) == doctest::Approx(0.2 * std::sqrt((1 + 2.0 / 3.0) / 2)));
+    CHECK(progressive_radius(0.2, 0.5, 2) == doctest::Approx(0.2 * std::sqrt(1.5 / 2 * 2.5 / 3)));
+    // prod_{p=1}^{P} (p + a) / (p + 1) = Gamma(P + 1 + a) / (Gamma(1 + a) Gamma(P + 2)).
+    for (const double alpha : {0.5, 2.0 / 3.0, 0.9})
+        for (const std::size_t pass : {10u, 1000u, 100000u}) {
+            const double gamma = std::exp(std::lgamma(double(pass) + 1 + alpha) - std::lgamma(1 + alpha) - std::lgamma(double(pass) + 2));
+            CHECK(progressive_radius(1.0, alpha, pass) == doctest::Approx(std::sqrt(gamma)).epsilon(1e-9));
+        }
+}
+
+namespace {
+
+/// A floor lit through a mirror (light_tracer.cpp's scene, with the light low: its
+/// mirror image at (-0.15, 0.15, 0) makes a sharp caustic next to the mirror, whose
+/// irradiance E = R I h / (h^2 + (x + 0.15)^2 + z^2)^(3/2) changes over 0.15).
+auto low_mirror_scene()
+{
+    return Scene{Lights{PointLight<float>{.position = {0.15f, 0.15f, 0}, .intensity = Rgb<float>(1)}},
+                 Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
+                 Object{Box<float>({-0.1f, 0, -1}, {0, 1, 1}), Mirror<float>{{.kr = Rgb<float>(0.8f)}}}};
+}
+
+/// The RMS relative error of the caustic map's radiance at 16 floor points near the
+/// mirror after each of `passes` passes (cumulative means), for radii that shrink
+/// (alpha < 1) or stay (alpha = 1). The points lie further than the first radius from
+/// the mirror's foot: a disk that reaches past the edge of the lit floor reads low by
+/// a bias that falls as r, not r^2, and the error as p^(-1/6).
+std::vector<double> caustic_errors(double alpha, std::size_t passes)
+{
+    const auto scene = low_mirror_scene();
+    using Mapper = PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
+    const Mapper::Config config{.tracing = {.global_photons = 0, .caustic_photons = 20000, .shadow_photons = false, .seed = 1, .threads = 1},
+                                .caustic = {.radius = 0.15f},
+                                .gather_rays = 0};
+    std::vector<Vec3<float>> points;
+    std::vector<double> expected, sums(16, 0.0), errors;
+    for (int i = 0; i < 16; ++i) {
+        const Vec3<float> p{0.16f + 0.03f * float(i), 0, 0.05f};
+        const double dx = double(p.x) + 0.15, h = 0.15;
+        points.push_back(p);
+        expected.push_back(0.5 / pi<double> * 0.8 * h / std::pow(h * h + dx * dx + 0.05 * 0.05, 1.5));
+    }
+    for (std::size_t pass = 0; pass < passes; ++pass) {
+        const PhotonMaps maps = trace_photons(scene, config.tracing, StraightAir{}, pass);
+        const float r = float(alpha < 1 ? progressive_radius(0.15, alpha, pass) : 0.15);
+        double squares = 0;
+        for (int i = 0; i < 16; ++i) {
+            const Rgb<float> e = maps.caustic.irradiance(points[std::size_t(i)], {0, 1, 0}, {.radius = r});
+            sums[std::size_t(i)] += 0.5 / pi<double> * double(e.x);
+            squares += std::pow(sums[std::size_t(i)] / double(pass + 1) / expected[std::size_t(i)] - 1, 2);
+        }
+        errors.push_back(std::sqrt(squares / 16));
+    }
+    return errors;
+}
+
+} // namespace
+
+TEST_CASE("progressive photon mapping converges where a fixed radius stops: a sharp caustic, error against its closed form")
+{
+    // The error of the mean of p passes: noise falls as p^(-1/2) for both, but the
+    // fixed radius keeps its blur (the peak is flattened by its 0.15 disk), while the
+    // shrinking one loses it: Knaus and Zwicker's rate, p^(-alpha/2) = p^(-1/3).
+    const std::vector<double> shrinking = caustic_errors(2.0 / 3.0, 128), fixed = caustic_errors(1.0, 128);
+    const auto slope = [](const std::vector<double>& e, std::size_t a, std::size_t b) { return std::log(e[b - 1] / e[a - 1]) / std::log(double(b) / double(a)); };
+    MESSAGE("shrinking: ", shrinking[3], " ", shrinking[15], " ", shrinking[127], "; fixed: ", fixed[3], " ", fixed[15], " ", fixed[127]);
+    CHECK(slope(shrinking, 4, 128) < -0.2);
+    CHECK(slope(shrinking, 4, 128) > -0.6);
+    CHECK(slope(fixed, 16, 128) > -0.1); // flat: the bias is all that is left
+    CHECK(shrinking[127] < 0.6 * fixed[127]);
+}
+
+TEST_CASE("progressive photon mapping's furnace reads 1.0, and passes split over runs add up to the whole bit for bit")
+{
+    for (const bool four : {false, true}) {
+        CAPTURE(four);
+        const auto scene = test::furnace_scene(four);
+        using S = std::remove_cvref_t<decltype(scene)>;
+        ProgressiveConfig<S> config;
+        config.pass.tracing = {.global_photons = 50000, .caustic_photons = 0, .max_bounces = 64, .shadow_photons = false, .seed = 4};
+        config.passes = 8;
+        const Camera<float> camera{.position = {0, 0, 0}, .look_at = {0, 0, 1}, .fov = 90};
+        constexpr int size = 24;
+        const ProgressiveResult result = render_progressive(camera, scene, config, {.width = size, .height = size, .threads = 2, .progress = false});
+        CHECK(result.passes == 8);
+        const Film image = result.image();
+        const CameraRays<float> rays = camera.rays(size, size);
+        double ratio = 0;
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const Vec3<double> wall(rays.ray(float(x) + 0.5f, float(y) + 0.5f).direction);
+                ratio += image.at(x, y).x / test::furnace_radiance(wall, four, true);
+            }
+        CHECK(ratio / (size * size) == doctest::Approx(1.0).epsilon(0.005));
+        if (four) continue;
+        // Passes [0, 3) and [3, 8) in two runs, on other thread counts: the same sum.
+        ProgressiveConfig<S> first = config, second = config;
+        first.passes = 3;
+        second.first_pass = 3;
+        second.passes = 5;
+        ProgressiveResult split = render_progressive(camera, scene, first, {.width = size, .height = size, .threads = 1, .progress = false});
+        split += render_progressive(camera, scene, second, {.width = size, .height = size, .threads = 3, .progress = false});
+        CHECK(split.passes == 8);
+        CHECK(split.sum == result.sum);
+    }
+}
+
+TEST_CASE("progressive photon mapping refuses settings that cannot converge or cannot stop")
+{
+    const auto scene = test::furnace_scene(false);
+    using S = std::remove_cvref_t<decltype(scene)>;
+    const Camera<float> camera{.position = {0, 0, 0}, .look_at = {0, 0, 1}, .fov = 90};
+    const RenderConfig small{.width = 4, .height = 4, .progress = false};
+    const auto refuses = [&](auto change, const char* message) {
+        ProgressiveConfig<S> config;
+        config.pass.tracing.global_photons = 100;
+        change(config);
+        CHECK_THROWS_WITH_AS((void)render_progressive(camera, scene, config, small), doctest::Contains(message), std::invalid_argument);
+    };
+    refuses([](auto& c) { c.alpha = 1.0; }, "alpha must be in (0, 1), got 1");
+    refuses([](auto& c) { c.alpha = 0.0; }, "alpha must be in (0, 1), got 0");
+    refuses([](auto& c) { c.pass.gather_rays = 8; }, "gather_rays must be 0");
+    refuses([](auto& c) { c.pass.global.k = 50; }, "must be by radius (k = 0)");
+    refuses([](auto& c) { c.passes = 0; }, "needs passes > 0 or seconds > 0");
+    refuses([](auto& c) { c.seconds = -1; }, "seconds must be finite and >= 0, got -1");
+    ProgressiveConfig<S> far;
+    far.pass.tracing.global_photons = 1 << 20;
+    far.first_pass = 4096;
+    CHECK_THROWS_WITH_AS((void)render_progressive(camera, scene, far, small), doctest::Contains("reaches past photon index 2^32"), std::invalid_argument);
+}
