@@ -24,8 +24,10 @@ prism::Camera<T> cornell_camera()
 /// inverse-square one that gives the same irradiance at distance 4, about the middle of
 /// the room (intensity 16 pi): photons thin out as 1 / r^2, so a photon map can only be
 /// consistent with a physical light.
-template <prism::Scalar T, class Fresnel = prism::ExactFresnel>
-auto cornell_scene(bool physical_light = false)
+/// The five walls: white floor, ceiling and back, red left, green right, albedo 0.75 x
+/// kd 0.8 as the .pov's pigment x diffuse; open toward the camera.
+template <prism::Scalar T>
+auto cornell_walls()
 {
     using namespace prism;
     using V = Vec3<T>;
@@ -33,17 +35,32 @@ auto cornell_scene(bool physical_light = false)
     const auto diffuse = [](T r, T g, T b) { return Diffuse<T>{.albedo = {.color = {r, g, b}}, .kd = T(0.8), .ka = T(0)}; };
     const auto white = diffuse(T(0.75), T(0.75), T(0.75));
     using Wall = Object<Box<T>, Diffuse<T>>;
-    ObjectArray<Box<T>, Diffuse<T>> walls{{
+    return ObjectArray<Box<T>, Diffuse<T>>{{
         Wall{Box<T>(V{-t, -t, 0}, V{w + t, 0, -(w + t)}), white},                             // floor
         Wall{Box<T>(V{-t, w, 0}, V{w + t, w + t, -(w + t)}), white},                          // ceiling
         Wall{Box<T>(V{-t, -t, -w}, V{w + t, w + t, -(w + t)}), white},                        // back
         Wall{Box<T>(V{-t, -t, 0}, V{0, w + t, -(w + t)}), diffuse(T(0.75), T(0.1), T(0.1))},  // left, red
         Wall{Box<T>(V{w, -t, 0}, V{w + t, w + t, -(w + t)}), diffuse(T(0.1), T(0.75), T(0.1))}, // right, green
     }};
+}
+
+/// shared/scenes/cornell_diffuse.md: the walls alone under a point light of 20 W/sr,
+/// the scene Blender's Cycles renders too (bench/cycles_cornell.py).
+template <prism::Scalar T>
+auto cornell_diffuse_scene()
+{
+    using namespace prism;
+    return Scene{Lights{PointLight<T>{.position = {T(2.78), T(5.35), T(-2.60)}, .intensity = Rgb<T>(T(20))}}, cornell_walls<T>()};
+}
+
+template <prism::Scalar T, class Fresnel = prism::ExactFresnel>
+auto cornell_scene(bool physical_light = false)
+{
+    using namespace prism;
     Scene scene{
         Lights{physical_light ? PointLight<T>{.position = {T(2.78), T(5.35), T(-2.60)}, .intensity = Rgb<T>(pi<T> * T(4 * 4))}
                               : PointLight<T>{.position = {T(2.78), T(5.35), T(-2.60)}, .intensity = Rgb<T>(pi<T>), .falloff = Falloff::none}},
-        std::move(walls),
+        cornell_walls<T>(),
         Object{Sphere<T>({T(3.85), T(1.0), T(-2.0)}, T(1)), Dielectric<T, Fresnel>{.ior = T(1.5)}},
         Object{Sphere<T>({T(1.60), T(1.0), T(-3.6)}, T(1)), Mirror<T>{{.kr = Rgb<T>(T(0.95))}}},
     };

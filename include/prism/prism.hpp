@@ -28,6 +28,7 @@
 #include <prism/geometry/sphere.hpp>
 #include <prism/geometry/transformed.hpp>
 #include <prism/integrator/direct.hpp>
+#include <prism/integrator/irradiance_cache.hpp>
 #include <prism/integrator/light_tracer.hpp>
 #include <prism/integrator/path_tracer.hpp>
 #include <prism/integrator/photon_mapper.hpp>

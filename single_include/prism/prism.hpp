@@ -4081,6 +4081,250 @@ void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const 
 
 } // namespace prism
 
+// ---- prism/integrator/irradiance_cache.hpp ----
+// The final gather's hemisphere, stratified, with irradiance gradients (Ward and
+// Heckbert 1992), and an irradiance cache that interpolates between gathers.
+//
+// gather_hemisphere: M x N cells of equal projected solid angle (sin^2 theta uniform in
+// j, phi in k), one jittered ray each: E = pi / (M N) sum L_jk. From the same rays,
+// the rotational gradient (how E turns with the normal) and the translational one (how
+// it moves along the surface), in the notation of Krivanek and Gautron's "Practical
+// Global Illumination with Irradiance Caching" (2009), section 2.2:
+//   rotational     pi / (M N) sum_k v_k sum_j (-tan theta_j) L_jk   (tan theta_j and v_k
+//                  the cell's means, v a quarter turn back from u)
+//   translational  sum_k u_k (2 pi / N) sum_{j>=1} cos^2 theta_j- sin theta_j- (L_jk - L_j-1,k) / min(R_jk, R_j-1,k)
+//                + sum_k v_k- sum_j cos theta_j (cos theta_j- - cos theta_j+) (L_jk - L_j,k-1) / (sin theta_j min(R_jk, R_j,k-1))
+// with theta_j- and theta_j+ the cell's edges, u_k and v_k the base-plane directions at
+// the cell's azimuth and a quarter turn from it, v_k- at the edge between k - 1 and k.
+//
+// IrradianceCache: records of (p, n, E, gradients, R) where R, the distance over which E
+// may change, is the nearest hit of the gather (rays within 10 degrees of the tangent
+// plane left out), limited by E / |grad E|, clamped between a few pixels' footprint
+// and a fraction of the scene, and by each neighbour's R plus its distance (Krivanek's
+// neighbour clamping). A record is used at p with normal n where
+//     eps = kappa max(|p - p_i| / R_i, sqrt(1 - n . n_i) / sqrt(1 - cos 10 deg)) < 1,
+// weighted by 1 - eps (Tabellion and Lamourlette 2004: weights that fall to 0 at the
+// edge of a record's reach, so no seams), and not where the record lies in front of p.
+
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace prism {
+
+/// What a gather over the hemisphere found.
+template <Scalar T>
+struct HemisphereGather {
+    Rgb<T> irradiance{T(0)};
+    std::array<Rgb<T>, 3> rotational{};    ///< d E / d (rotation about axis a): per axis a, per channel
+    std::array<Rgb<T>, 3> translational{}; ///< d E / d x_a: per axis a, per channel
+    T nearest = infinity<T>;               ///< the nearest hit of rays at least 10 degrees above the tangent plane
+};
+
+/// A gather over the hemisphere about unit n in M x N stratified cells:
+/// sample(direction) returns {radiance arriving, distance to where it came from
+/// (infinity when nothing)}. With Gradients, each cell's radiance and distance are
+/// kept for them (the one allocation, per gather: a cache record's); without, nothing
+/// is allocated.
+template <bool Gradients, Scalar T, class Sample>
+[[nodiscard]] HemisphereGather<T> gather_hemisphere(const Vec3<T>& n, int m, int cells_n, Pcg32& rng, Sample&& sample)
+{
+    const auto [t, b] = orthonormal_frame(n);
+    const std::size_t count = std::size_t(m) * std::size_t(cells_n);
+    std::vector<Rgb<T>> radiance;
+    std::vector<T> distance;
+    if constexpr (Gradients) {
+        radiance.resize(count);
+        distance.resize(count);
+    }
+    const auto in_plane = [&](T phi) { return t * std::cos(phi) + b * std::sin(phi); };
+    HemisphereGather<T> g;
+    for (int j = 0; j < m; ++j)
+        for (int k = 0; k < cells_n; ++k) {
+            const T sin2 = (T(j) + rng.uniform<T>()) / T(m), phi = T(2) * pi<T> * (T(k) + rng.uniform<T>()) / T(cells_n);
+            const T cos_theta = std::sqrt(std::max(T(0), T(1) - sin2));
+            const auto [l, d] = sample(normalize(in_plane(phi) * std::sqrt(sin2) + n * cos_theta));
+            if constexpr (Gradients) {
+                radiance[std::size_t(j * cells_n + k)] = l;
+                distance[std::size_t(j * cells_n + k)] = d;
+            }
+            g.irradiance += l;
+            if (cos_theta > T(0.173648)) g.nearest = std::min(g.nearest, d); // 10 degrees
+        }
+    const T cell = pi<T> / T(count);
+    g.irradiance *= cell;
+    if constexpr (!Gradients) return g;
+    // The rotational term weighs each cell by its mean of tan theta and of v over the
+    // cell (not their values at its centre, which read 8 % low at M = 32): with s =
+    // sin^2 theta uniform in [j/M, (j+1)/M], the mean of tan theta is M (F(b) - F(a)),
+    // F(s) = asin(sqrt s) - sqrt(s (1 - s)); v's mean over the cell's azimuths is v at
+    // its centre times sin(pi / N) / (pi / N).
+    const auto f = [](T x) { return std::asin(std::sqrt(x)) - std::sqrt(x * (T(1) - x)); };
+    const T sinc = std::sin(pi<T> / T(cells_n)) / (pi<T> / T(cells_n));
+    for (int j = 0; j < m; ++j) {
+        const T sin_minus = std::sqrt(T(j) / T(m)), cos_minus = std::sqrt(T(1) - T(j) / T(m));
+        const T cos_plus = std::sqrt(std::max(T(0), T(1) - T(j + 1) / T(m)));
+        const T sin_mid = std::sqrt((T(j) + T(0.5)) / T(m)), cos_mid = std::sqrt(T(1) - (T(j) + T(0.5)) / T(m));
+        for (int k = 0; k < cells_n; ++k) {
+            const T phi = T(2) * pi<T> * (T(k) + T(0.5)) / T(cells_n);
+            const Vec3<T> u_k = in_plane(phi), v_k = in_plane(phi - pi<T> / T(2));
+            const Vec3<T> v_edge = in_plane(T(2) * pi<T> * T(k) / T(cells_n) + pi<T> / T(2));
+            const std::size_t at = std::size_t(j * cells_n + k);
+            const T mean_tan = T(m) * (f(T(j + 1) / T(m)) - f(T(j) / T(m)));
+            const Rgb<T> rot = radiance[at] * (-mean_tan * sinc * cell);
+            for (int a = 0; a < 3; ++a) g.rotational[std::size_t(a)] += rot * v_k[a];
+            if (j > 0) {
+                const std::size_t below = std::size_t((j - 1) * cells_n + k);
+                const T r = std::min(distance[at], distance[below]);
+                if (r < infinity<T>) {
+                    const Rgb<T> dl = (radiance[at] - radiance[below]) * (T(2) * pi<T> / T(cells_n) * cos_minus * cos_minus * sin_minus / r);
+                    for (int a = 0; a < 3; ++a) g.translational[std::size_t(a)] += dl * u_k[a];
+                }
+            }
+            const std::size_t before = std::size_t(j * cells_n + (k + cells_n - 1) % cells_n);
+            const T r = std::min(distance[at], distance[before]);
+            if (r < infinity<T>) {
+                const Rgb<T> dl = (radiance[at] - radiance[before]) * (cos_mid * (cos_minus - cos_plus) / (sin_mid * r));
+                for (int a = 0; a < 3; ++a) g.translational[std::size_t(a)] += dl * v_edge[a];
+            }
+        }
+    }
+    return g;
+}
+
+/// One cached gather.
+template <Scalar T>
+struct IrradianceRecord {
+    Vec3<T> p{}, n{};
+    HemisphereGather<T> gather{};
+    T radius = T(0); ///< R: how far E may be carried
+};
+
+/// The positions of a cache's records, as a PointSet for the KdTree.
+template <Scalar T>
+struct RecordPositions {
+    using scalar_type = T;
+    static constexpr std::size_t dimension = 3;
+    std::span<const IrradianceRecord<T>> records;
+    [[nodiscard]] std::size_t size() const noexcept { return records.size(); }
+    [[nodiscard]] T coordinate(std::size_t i, std::size_t axis) const noexcept { return records[i].p[int(axis)]; }
+};
+
+template <Scalar T>
+class IrradianceCache {
+public:
+    /// sqrt(1 - cos 10 degrees): a normal turned by 10 degrees counts as far as a point R away.
+    static constexpr T normal_scale = T(0.1321); // sqrt(1 - 0.98481)
+
+    IrradianceCache() = default;
+    explicit IrradianceCache(T accuracy, bool gradients = true) : accuracy_(accuracy), gradients_(gradients) {}
+
+    [[nodiscard]] std::size_t size() const noexcept { return records_.size(); }
+    [[nodiscard]] const std::vector<IrradianceRecord<T>>& records() const noexcept { return records_; }
+
+    /// Add records (in the order given: the cache is then the same for any thread count
+    /// that computed them), clamping each one's radius by its neighbours' and theirs by
+    /// its own, then index them.
+    void add(std::vector<IrradianceRecord<T>> fresh)
+    {
+        for (IrradianceRecord<T>& record : fresh) {
+            for (IrradianceRecord<T>& other : nearby(record.p, record.radius)) {
+                const T d = length(record.p - other.p);
+                record.radius = std::min(record.radius, other.radius + d);
+                other.radius = std::min(other.radius, record.radius + d);
+            }
+            records_.push_back(record);
+            largest_ = std::max(largest_, record.radius);
+            pending_.push_back(records_.size() - 1);
+            if (pending_.size() > 64) reindex();
+        }
+        reindex();
+    }
+
+    /// The interpolated irradiance at p with unit normal n, or nothing where no record reaches.
+    [[nodiscard]] std::optional<Rgb<T>> irradiance(const Vec3<T>& p, const Vec3<T>& n) const noexcept
+    {
+        Rgb<T> sum{T(0)};
+        T weights = T(0);
+        visit_within(p, largest_ / accuracy_, [&](const IrradianceRecord<T>& r) {
+            const T w = weight(r, p, n);
+            if (!(w > T(0))) return;
+            Rgb<T> e = r.gather.irradiance;
+            if (gradients_) {
+                const Vec3<T> turn = cross(r.n, n), moved = p - r.p;
+                for (int a = 0; a < 3; ++a) e += r.gather.rotational[std::size_t(a)] * turn[a] + r.gather.translational[std::size_t(a)] * moved[a];
+                e = max(e, Rgb<T>(T(0)));
+            }
+            sum += e * w;
+            weights += w;
+        });
+        if (!(weights > T(0))) return std::nullopt;
+        return sum / weights;
+    }
+
+    /// Whether some record reaches p with normal n.
+    [[nodiscard]] bool covers(const Vec3<T>& p, const Vec3<T>& n) const noexcept
+    {
+        bool found = false;
+        visit_within(p, largest_ / accuracy_, [&](const IrradianceRecord<T>& r) { found = found || weight(r, p, n) > T(0); });
+        return found;
+    }
+
+private:
+    /// Tabellion and Lamourlette's weight, 0 outside the record's reach or where the
+    /// record lies in front of p (Ward: its hemisphere sees something p's does not).
+    [[nodiscard]] T weight(const IrradianceRecord<T>& r, const Vec3<T>& p, const Vec3<T>& n) const noexcept
+    {
+        const Vec3<T> moved = p - r.p;
+        const T turned = std::sqrt(std::max(T(0), T(1) - dot(n, r.n)));
+        const T eps = accuracy_ * std::max(length(moved) / r.radius, turned / normal_scale);
+        if (!(eps < T(1))) return T(0);
+        if (dot(moved, (n + r.n) * T(0.5)) < -T(0.05) * r.radius) return T(0);
+        return T(1) - eps;
+    }
+
+    /// visit(record) for each record within `reach` of p: through the tree for the
+    /// indexed ones, one by one for the few added since.
+    template <class Visit>
+    void visit_within(const Vec3<T>& p, T reach, Visit&& visit) const
+    {
+        if (tree_) tree_->within({p.x, p.y, p.z}, reach, [&](std::uint32_t i, T) { visit(records_[i]); });
+        for (const std::size_t i : pending_)
+            if (length_squared(records_[i].p - p) <= reach * reach) visit(records_[i]);
+    }
+
+    /// The records within radius + largest of p (those whose clamping may involve p's).
+    std::vector<std::reference_wrapper<IrradianceRecord<T>>> nearby(const Vec3<T>& p, T radius)
+    {
+        std::vector<std::reference_wrapper<IrradianceRecord<T>>> out;
+        const T reach = radius + largest_;
+        if (tree_) tree_->within({p.x, p.y, p.z}, reach, [&](std::uint32_t i, T) { out.push_back(records_[i]); });
+        for (const std::size_t i : pending_)
+            if (length_squared(records_[i].p - p) <= reach * reach) out.push_back(records_[i]);
+        return out;
+    }
+
+    void reindex()
+    {
+        tree_.emplace(RecordPositions<T>{records_});
+        pending_.clear();
+    }
+
+    T accuracy_ = T(1);
+    bool gradients_ = true;
+    std::vector<IrradianceRecord<T>> records_;
+    std::optional<KdTree<RecordPositions<T>, 8>> tree_;
+    std::vector<std::size_t> pending_;   ///< records added since the tree was built
+    T largest_ = T(0);                   ///< the largest radius
+};
+
+} // namespace prism
+
 // ---- prism/medium/graded_index.hpp ----
 // Graded-index media: air whose index of refraction varies in space (mirages, a setting
 // sun flattened by the atmosphere), and the two ways of tracing a ray through it.
@@ -5830,226 +6074,6 @@ private:
 
 } // namespace prism
 
-// ---- prism/integrator/photon_mapper.hpp ----
-// PhotonMapper: Whitted's direct and specular light, plus caustics and indirect diffuse
-// light from photon maps (Jensen 1996, section 3).
-//
-// At a diffuse point, with the same convention as Whitted (BRDF albedo kd / pi):
-//   direct     shadow rays to the lights (Whitted's term without ambient), with glass
-//              opaque: the light through it is the caustic map's. Optionally a shadow
-//              ray is skipped where the nearest global photons agree that the point is
-//              lit (all direct) or in shadow (all shadow photons; Jensen and
-//              Christensen 1995).
-//   caustics   the caustic map's density estimate (radius or k nearest, box, cone or
-//              Gaussian filter)
-//   indirect   final gathering: `gather_rays` cosine-distributed rays, each reading the
-//              global map's irradiance where it lands (L = albedo / pi * E there), so the
-//              blotchy global estimate is seen only after one more bounce. The global
-//              irradiance is precomputed at every 4th photon from its 64 nearest
-//              (Christensen 1999), so each gather ray costs one nearest lookup; with
-//              gather_rays = 0 the global map is read directly at the point instead,
-//              counting only photons that are neither direct nor caustic (those two are
-//              computed above), cheaper and blotchier.
-// Mirrors and dielectrics recurse as in Whitted.
-
-
-#include <algorithm>
-#include <optional>
-
-namespace prism {
-
-/// The photon mapper over `scene` with its air (StraightAir, or GradedAir: camera rays,
-/// gather rays and photons in the air curve; medium/air.hpp).
-template <class SceneT, class Air = StraightAir>
-class PhotonMapper {
-public:
-    using scalar_type = typename SceneT::scalar_type;
-    using T = scalar_type;
-
-    struct Config {
-        PhotonTracerConfig tracing{}; ///< how many photons, and how they are traced
-        Estimator caustic{.radius = 0.1f}; ///< the caustic map's estimate
-        /// The global map's estimate where it is read directly (gather_rays = 0); direct
-        /// and caustic photons are left out, shadow rays and the caustic map count them.
-        Estimator global{.radius = 0.25f, .excluded = Photon::direct | Photon::caustic};
-        int gather_rays = 32; ///< final-gather rays per diffuse hit; 0 reads the global map directly
-        /// > 0: look at this many nearest global photons (within global.radius) before a
-        /// shadow ray, and skip it when they agree. Scenes with one light only: shadow
-        /// photons do not say which light they block.
-        std::size_t visibility_k = 0;
-        int max_depth = 10;
-        T min_weight = T(1e-3);
-        /// Wavelength bands white camera rays split into at a dispersive interface (as
-        /// Whitted's); photons take their own wavelengths (PhotonTracerConfig).
-        int dispersion_bands = 8;
-    };
-
-    /// Traces the photon maps (the expensive part), then renders with them.
-    explicit PhotonMapper(const SceneT& scene, Config config = {}, Air air = {}) : PhotonMapper(scene, config, std::nullopt, std::move(air)) {}
-    PhotonMapper(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
-
-    /// Renders with maps traced already (trace_photons with config.tracing: a pass of
-    /// progressive photon mapping).
-    PhotonMapper(const SceneT& scene, Config config, PhotonMaps maps, Air air = {})
-        : PhotonMapper(scene, config, std::optional<PhotonMaps>(std::move(maps)), std::move(air))
-    {
-    }
-    PhotonMapper(const SceneT&& scene, Config config, PhotonMaps maps, Air air = {}) = delete;
-
-private:
-    PhotonMapper(const SceneT& scene, Config config, std::optional<PhotonMaps> maps, Air air)
-        : scene_(&scene), config_(config), bands_(config.dispersion_bands), air_(std::move(air))
-    {
-        scene.validate();
-        air_.validate();
-        validate(config.caustic, "PhotonMapper caustic");
-        validate(config.global, "PhotonMapper global");
-        if (config.gather_rays < 0) detail::throw_invalid("PhotonMapper gather_rays must be >= 0, got ", config.gather_rays);
-        if (config.max_depth < 0) detail::throw_invalid("PhotonMapper max_depth must be >= 0, got ", config.max_depth);
-        detail::require_non_negative("PhotonMapper min_weight", config.min_weight);
-        if (config.visibility_k > PhotonMap::max_k)
-            detail::throw_invalid("PhotonMapper visibility_k must be at most ", PhotonMap::max_k, ", got ", config.visibility_k);
-        detail::validate(config.tracing);
-        if (config.visibility_k > 0 && SceneT::light_count != 1)
-            detail::throw_invalid("PhotonMapper visibility_k needs a scene with exactly one light, got lights: ", SceneT::light_count);
-        maps_ = maps ? std::move(*maps) : trace_photons(scene, config.tracing, air_);
-        if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4, config.tracing.threads);
-    }
-
-public:
-
-    [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
-
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), {}); }
-
-    /// What the nearest global photons say about the light's visibility at p (normal n
-    /// facing the viewer): true when the `visibility_k` nearest within global.radius
-    /// that arrived on n's side hold direct photons and no shadow photons, false for
-    /// the reverse, nothing when they disagree or too few (under a quarter, or under 2) are
-    /// either.
-    [[nodiscard]] std::optional<bool> visibility_from_photons(const Vec3<T>& p, const Vec3<T>& n) const noexcept
-    {
-        if (config_.visibility_k == 0) return std::nullopt;
-        const auto [direct, shadow] =
-            maps_.global.direct_and_shadow(Vec3<float>(p), Vec3<float>(n), config_.visibility_k, config_.global.radius);
-        const std::size_t enough = std::max<std::size_t>(config_.visibility_k / 4, 2);
-        if (direct >= enough && shadow == 0) return true;
-        if (shadow >= enough && direct == 0) return false;
-        return std::nullopt;
-    }
-
-private:
-    static void validate(const Estimator& e, const char* name)
-    {
-        if (!(e.radius > 0.0f && is_finite(e.radius))) detail::throw_invalid(name, " radius must be finite and > 0, got ", e.radius);
-        if (e.k > PhotonMap::max_k) detail::throw_invalid(name, " k must be at most ", PhotonMap::max_k, ", got ", e.k);
-        if (!(e.max_height_ratio > 0.0f && e.max_height_ratio <= 1.0f)) detail::throw_invalid(name, " max_height_ratio must be in (0, 1], got ", e.max_height_ratio);
-        if (!(e.surface_cos >= 0.0f && e.surface_cos < 1.0f)) detail::throw_invalid(name, " surface_cos must be in [0, 1), got ", e.surface_cos);
-        if (e.filter != Filter::box && e.filter != Filter::cone && e.filter != Filter::gaussian)
-            detail::throw_invalid(name, " filter must be box, cone or gaussian, got the value ", static_cast<int>(e.filter));
-    }
-
-    /// Radiance along the ray for light of one wavelength (nanometres), or of all (0), in
-    /// the transmissive objects `media` (medium/nesting.hpp).
-    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength, const MediumStack& media) const noexcept
-    {
-        Ray<T> segment = ray;
-        const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
-        if (!hit) return scene_->background;
-        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
-    }
-
-    template <class M>
-    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight, Pcg32& rng,
-                               T wavelength, const MediumStack& media) const noexcept
-    {
-        const Crossing<T>& hit = h.crossing;
-        const Vec3<T>& d = ray.direction;
-        const Vec3<T> n = hit.facing_normal();
-        Rgb<T> radiance{T(0)};
-        if constexpr (has_diffuse<M>) {
-            const Vec3<float> p(hit.point), nf(n);
-            Rgb<T> irradiance = direct(hit, n) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
-            if (config_.gather_rays > 0) irradiance += gather(hit, n, rng, media.empty());
-            else irradiance += Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
-            radiance += diffuse_response(material, hit.point).brdf() * irradiance;
-        }
-        if constexpr (reflects<M> || transmits<M>) {
-            if (depth < config_.max_depth) {
-                const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
-                    const auto outside_index = [&](T lambda) { return index_of(*scene_, outside, lambda); };
-                    for_each_delta_ray(material, d, n, hit, wavelength, bands_, outside_index,
-                                       [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
-                                           if (max_component(weight * k) > config_.min_weight)
-                                               radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1, weight * k,
-                                                                     rng, lambda, transmitted ? beyond : media);
-                                       });
-                };
-                if constexpr (transmits<M>) {
-                    const Interface face = nested_interface(media, {h.slot, h.index, nesting_priority(material)}, hit.entering);
-                    if (face.real)
-                        follow(face.beyond, outside_of(media, face, hit.entering));
-                    else
-                        radiance = trace(spawn_ray(hit.point, hit.error, hit.normal, d), depth + 1, weight, rng, wavelength, face.beyond);
-                } else {
-                    follow(media, nullptr);
-                }
-            }
-        }
-        attenuate_segment(*scene_, media, material, hit, ray, radiance);
-        return radiance;
-    }
-
-    /// Irradiance from the lights by shadow rays (glass opaque), or by what the photons
-    /// say about visibility where they agree.
-    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, const Vec3<T>& n) const noexcept
-    {
-        Rgb<T> irradiance{T(0)};
-        if (const std::optional<bool> visible = visibility_from_photons(hit.point, n)) {
-            if (!*visible) return irradiance;
-            scene_->for_each_light([&](const auto& light) {
-                const LightSample<T> s = light.sample(hit.point);
-                irradiance += s.irradiance * std::max(dot(n, s.wi), T(0));
-            });
-            return irradiance;
-        }
-        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
-        return irradiance;
-    }
-
-    /// Final gathering: E = pi / M sum L_i for cosine-distributed directions, with
-    /// L_i = albedo / pi * E_global where the ray lands on a diffuse surface; from a
-    /// surface in the air (`in_air`), the gather rays follow the air's curve.
-    [[nodiscard]] Rgb<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Pcg32& rng, bool in_air) const noexcept
-    {
-        Rgb<T> sum{T(0)};
-        for (int i = 0; i < config_.gather_rays; ++i) {
-            const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, cosine_hemisphere(n, rng));
-            Ray<T> segment = ray;
-            const auto next = in_air ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
-            if (!next) continue;
-            const Crossing<T>& c = next->crossing;
-            sum += scene_->visit_material(*next, [&]<class M>(const M& material) -> Rgb<T> {
-                if constexpr (has_diffuse<M>) {
-                    const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
-                    return diffuse_response(material, c.point).brdf() * e;
-                } else {
-                    return Rgb<T>(T(0)); // light seen through mirrors and glass arrives by the caustic map
-                }
-            });
-        }
-        return sum * (pi<T> / T(config_.gather_rays));
-    }
-
-    const SceneT* scene_;
-    Config config_;
-    SpectralBands<T> bands_;
-    Air air_;
-    PhotonMaps maps_;
-};
-
-} // namespace prism
-
 // ---- prism/render/render.hpp ----
 // render(): camera rays per pixel, tiles on std::thread workers, one RNG stream per pixel.
 
@@ -6171,6 +6195,347 @@ template <Integrator I>
     if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
     return film;
 }
+
+} // namespace prism
+
+// ---- prism/integrator/photon_mapper.hpp ----
+// PhotonMapper: Whitted's direct and specular light, plus caustics and indirect diffuse
+// light from photon maps (Jensen 1996, section 3).
+//
+// At a diffuse point, with the same convention as Whitted (BRDF albedo kd / pi):
+//   direct     shadow rays to the lights (Whitted's term without ambient), with glass
+//              opaque: the light through it is the caustic map's. Optionally a shadow
+//              ray is skipped where the nearest global photons agree that the point is
+//              lit (all direct) or in shadow (all shadow photons; Jensen and
+//              Christensen 1995).
+//   caustics   the caustic map's density estimate (radius or k nearest, box, cone or
+//              Gaussian filter)
+//   indirect   final gathering: `gather_rays` cosine-distributed rays, each reading the
+//              global map's irradiance where it lands (L = albedo / pi * E there), so the
+//              blotchy global estimate is seen only after one more bounce. The global
+//              irradiance is precomputed at every 4th photon from its 64 nearest
+//              (Christensen 1999), so each gather ray costs one nearest lookup; with
+//              gather_rays = 0 the global map is read directly at the point instead,
+//              counting only photons that are neither direct nor caustic (those two are
+//              computed above), cheaper and blotchier.
+// Mirrors and dielectrics recurse as in Whitted.
+
+
+#include <algorithm>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+/// The photon mapper over `scene` with its air (StraightAir, or GradedAir: camera rays,
+/// gather rays and photons in the air curve; medium/air.hpp).
+template <class SceneT, class Air = StraightAir>
+class PhotonMapper {
+public:
+    using scalar_type = typename SceneT::scalar_type;
+    using T = scalar_type;
+
+    struct Config {
+        PhotonTracerConfig tracing{}; ///< how many photons, and how they are traced
+        Estimator caustic{.radius = 0.1f}; ///< the caustic map's estimate
+        /// The global map's estimate where it is read directly (gather_rays = 0); direct
+        /// and caustic photons are left out, shadow rays and the caustic map count them.
+        Estimator global{.radius = 0.25f, .excluded = Photon::direct | Photon::caustic};
+        int gather_rays = 32; ///< final-gather rays per diffuse hit (stratified); 0 reads the global map directly
+        /// An irradiance cache in front of the final gather (cache_irradiance builds it
+        /// for a camera): gathers of `rays` rays at records placed where the camera
+        /// needs them, interpolated with their gradients in between.
+        struct IrradianceCaching {
+            int rays = 1024;          ///< gather rays per record
+            float accuracy = 1.0f;    ///< kappa: a record reaches R / kappa (and 10 degrees / kappa of normal)
+            float min_pixels = 3.0f;  ///< R at least this many pixel footprints
+            float max_pixels = 40.0f; ///< and at most this many
+            bool gradients = true;
+        } irradiance_cache{};
+        /// > 0: look at this many nearest global photons (within global.radius) before a
+        /// shadow ray, and skip it when they agree. Scenes with one light only: shadow
+        /// photons do not say which light they block.
+        std::size_t visibility_k = 0;
+        int max_depth = 10;
+        T min_weight = T(1e-3);
+        /// Wavelength bands white camera rays split into at a dispersive interface (as
+        /// Whitted's); photons take their own wavelengths (PhotonTracerConfig).
+        int dispersion_bands = 8;
+    };
+
+    /// Traces the photon maps (the expensive part), then renders with them.
+    explicit PhotonMapper(const SceneT& scene, Config config = {}, Air air = {}) : PhotonMapper(scene, config, std::nullopt, std::move(air)) {}
+    PhotonMapper(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
+
+    /// Renders with maps traced already (trace_photons with config.tracing: a pass of
+    /// progressive photon mapping).
+    PhotonMapper(const SceneT& scene, Config config, PhotonMaps maps, Air air = {})
+        : PhotonMapper(scene, config, std::optional<PhotonMaps>(std::move(maps)), std::move(air))
+    {
+    }
+    PhotonMapper(const SceneT&& scene, Config config, PhotonMaps maps, Air air = {}) = delete;
+
+private:
+    PhotonMapper(const SceneT& scene, Config config, std::optional<PhotonMaps> maps, Air air)
+        : scene_(&scene), config_(config), bands_(config.dispersion_bands), air_(std::move(air))
+    {
+        scene.validate();
+        air_.validate();
+        validate(config.caustic, "PhotonMapper caustic");
+        validate(config.global, "PhotonMapper global");
+        if (config.gather_rays < 0) detail::throw_invalid("PhotonMapper gather_rays must be >= 0, got ", config.gather_rays);
+        const auto& cache = config.irradiance_cache;
+        if (cache.rays < 1) detail::throw_invalid("PhotonMapper irradiance_cache.rays must be >= 1, got ", cache.rays);
+        if (!(cache.accuracy > 0.0f && is_finite(cache.accuracy))) detail::throw_invalid("PhotonMapper irradiance_cache.accuracy must be finite and > 0, got ", cache.accuracy);
+        if (!(cache.min_pixels > 0.0f && cache.min_pixels <= cache.max_pixels && is_finite(cache.max_pixels)))
+            detail::throw_invalid("PhotonMapper irradiance_cache needs 0 < min_pixels <= max_pixels, finite, got ", cache.min_pixels, " and ", cache.max_pixels);
+        if (config.max_depth < 0) detail::throw_invalid("PhotonMapper max_depth must be >= 0, got ", config.max_depth);
+        detail::require_non_negative("PhotonMapper min_weight", config.min_weight);
+        if (config.visibility_k > PhotonMap::max_k)
+            detail::throw_invalid("PhotonMapper visibility_k must be at most ", PhotonMap::max_k, ", got ", config.visibility_k);
+        detail::validate(config.tracing);
+        if (config.visibility_k > 0 && SceneT::light_count != 1)
+            detail::throw_invalid("PhotonMapper visibility_k needs a scene with exactly one light, got lights: ", SceneT::light_count);
+        gather_cells_m_ = std::max(1, int(std::lround(std::sqrt(double(config.gather_rays) / pi<double>))));
+        gather_cells_n_ = std::max(1, config.gather_rays / gather_cells_m_);
+        maps_ = maps ? std::move(*maps) : trace_photons(scene, config.tracing, air_);
+        if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4, config.tracing.threads);
+    }
+
+public:
+
+    [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
+    [[nodiscard]] const IrradianceCache<T>& irradiance_cache() const noexcept { return cache_; }
+
+    /// Build the irradiance cache for what `camera` sees at `render`'s size, before
+    /// rendering with it: pixels on grids of halving spacing (the coarsest about an
+    /// eighth of the image) are visited, and where the first diffuse surface a pixel's
+    /// centre sees is not yet reached by a record, a record is gathered there. Each
+    /// grid's records are gathered in parallel, each from its own random stream, and
+    /// added in pixel order: the cache is the same for any thread count. Surfaces the
+    /// camera sees only through mirrors or glass keep their own gathers.
+    void cache_irradiance(const Camera<T>& camera, const RenderConfig& render)
+    {
+        if (config_.gather_rays == 0) detail::throw_invalid("PhotonMapper cache_irradiance needs gather_rays > 0 (the cache sits in front of the final gather)");
+        const CameraRays<T> rays = camera.rays(render.width, render.height);
+        const auto& settings = config_.irradiance_cache;
+        cache_ = IrradianceCache<T>(T(settings.accuracy), settings.gradients);
+        const T pixel = length(rays.pixel_right);
+        int stride = 1;
+        while (stride * 16 <= std::min(render.width, render.height)) stride *= 2;
+        struct Candidate {
+            Crossing<T> hit;
+            Vec3<T> n;
+            T footprint;
+            std::size_t stream;
+        };
+        for (int level = 0; stride >= 1; stride /= 2, ++level) {
+            const int columns = (render.width + stride - 1) / stride, rows = (render.height + stride - 1) / stride;
+            std::vector<std::optional<Candidate>> found(std::size_t(columns) * std::size_t(rows));
+            detail::parallel_for(found.size(), render.threads, [&](std::size_t i) {
+                const int x = int(i % std::size_t(columns)) * stride, y = int(i / std::size_t(columns)) * stride;
+                const auto seen = first_diffuse_seen(rays.ray(T(x) + T(0.5), T(y) + T(0.5)));
+                if (!seen || cache_.covers(seen->first.point, seen->first.facing_normal())) return;
+                const std::size_t pixel_index = std::size_t(y) * std::size_t(render.width) + std::size_t(x);
+                found[i] = Candidate{seen->first, seen->first.facing_normal(), seen->second * pixel,
+                                     pixel_index + std::size_t(level) * std::size_t(render.width) * std::size_t(render.height)};
+            });
+            std::vector<Candidate> candidates;
+            for (const auto& c : found)
+                if (c) candidates.push_back(*c);
+            std::vector<IrradianceRecord<T>> records(candidates.size());
+            detail::parallel_for(candidates.size(), render.threads, [&](std::size_t i) {
+                const Candidate& c = candidates[i];
+                Pcg32 rng(render.seed ^ 0x1cac4eULL, c.stream);
+                const int m = std::max(1, int(std::lround(std::sqrt(T(settings.rays) / pi<T>))));
+                const int cells_n = std::max(1, settings.rays / m);
+                IrradianceRecord<T> r{c.hit.point, c.n, gather<true>(c.hit, c.n, rng, true, m, cells_n), T(0)};
+                T radius = r.gather.nearest;
+                if (settings.gradients)
+                    for (int ch = 0; ch < 3; ++ch) {
+                        const T slope = length(Vec3<T>{r.gather.translational[0][ch], r.gather.translational[1][ch], r.gather.translational[2][ch]});
+                        if (slope > T(0)) radius = std::min(radius, r.gather.irradiance[ch] / slope);
+                    }
+                r.radius = std::clamp(radius, T(settings.min_pixels) * c.footprint, T(settings.max_pixels) * c.footprint);
+                records[i] = r;
+            });
+            cache_.add(std::move(records));
+        }
+    }
+
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), {}); }
+
+    /// What the nearest global photons say about the light's visibility at p (normal n
+    /// facing the viewer): true when the `visibility_k` nearest within global.radius
+    /// that arrived on n's side hold direct photons and no shadow photons, false for
+    /// the reverse, nothing when they disagree or too few (under a quarter, or under 2) are
+    /// either.
+    [[nodiscard]] std::optional<bool> visibility_from_photons(const Vec3<T>& p, const Vec3<T>& n) const noexcept
+    {
+        if (config_.visibility_k == 0) return std::nullopt;
+        const auto [direct, shadow] =
+            maps_.global.direct_and_shadow(Vec3<float>(p), Vec3<float>(n), config_.visibility_k, config_.global.radius);
+        const std::size_t enough = std::max<std::size_t>(config_.visibility_k / 4, 2);
+        if (direct >= enough && shadow == 0) return true;
+        if (shadow >= enough && direct == 0) return false;
+        return std::nullopt;
+    }
+
+private:
+    static void validate(const Estimator& e, const char* name)
+    {
+        if (!(e.radius > 0.0f && is_finite(e.radius))) detail::throw_invalid(name, " radius must be finite and > 0, got ", e.radius);
+        if (e.k > PhotonMap::max_k) detail::throw_invalid(name, " k must be at most ", PhotonMap::max_k, ", got ", e.k);
+        if (!(e.max_height_ratio > 0.0f && e.max_height_ratio <= 1.0f)) detail::throw_invalid(name, " max_height_ratio must be in (0, 1], got ", e.max_height_ratio);
+        if (!(e.surface_cos >= 0.0f && e.surface_cos < 1.0f)) detail::throw_invalid(name, " surface_cos must be in [0, 1), got ", e.surface_cos);
+        if (e.filter != Filter::box && e.filter != Filter::cone && e.filter != Filter::gaussian)
+            detail::throw_invalid(name, " filter must be box, cone or gaussian, got the value ", static_cast<int>(e.filter));
+    }
+
+    /// Radiance along the ray for light of one wavelength (nanometres), or of all (0), in
+    /// the transmissive objects `media` (medium/nesting.hpp).
+    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength, const MediumStack& media) const noexcept
+    {
+        Ray<T> segment = ray;
+        const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
+        if (!hit) return scene_->background;
+        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
+    }
+
+    template <class M>
+    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight, Pcg32& rng,
+                               T wavelength, const MediumStack& media) const noexcept
+    {
+        const Crossing<T>& hit = h.crossing;
+        const Vec3<T>& d = ray.direction;
+        const Vec3<T> n = hit.facing_normal();
+        Rgb<T> radiance{T(0)};
+        if constexpr (has_diffuse<M>) {
+            const Vec3<float> p(hit.point), nf(n);
+            Rgb<T> irradiance = direct(hit, n) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
+            if (config_.gather_rays > 0) {
+                const std::optional<Rgb<T>> cached = media.empty() ? cache_.irradiance(hit.point, n) : std::nullopt;
+                irradiance += cached ? *cached : gather(hit, n, rng, media.empty(), gather_cells_m_, gather_cells_n_).irradiance;
+            }
+            else irradiance += Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
+            radiance += diffuse_response(material, hit.point).brdf() * irradiance;
+        }
+        if constexpr (reflects<M> || transmits<M>) {
+            if (depth < config_.max_depth) {
+                const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
+                    const auto outside_index = [&](T lambda) { return index_of(*scene_, outside, lambda); };
+                    for_each_delta_ray(material, d, n, hit, wavelength, bands_, outside_index,
+                                       [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
+                                           if (max_component(weight * k) > config_.min_weight)
+                                               radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1, weight * k,
+                                                                     rng, lambda, transmitted ? beyond : media);
+                                       });
+                };
+                if constexpr (transmits<M>) {
+                    const Interface face = nested_interface(media, {h.slot, h.index, nesting_priority(material)}, hit.entering);
+                    if (face.real)
+                        follow(face.beyond, outside_of(media, face, hit.entering));
+                    else
+                        radiance = trace(spawn_ray(hit.point, hit.error, hit.normal, d), depth + 1, weight, rng, wavelength, face.beyond);
+                } else {
+                    follow(media, nullptr);
+                }
+            }
+        }
+        attenuate_segment(*scene_, media, material, hit, ray, radiance);
+        return radiance;
+    }
+
+    /// Irradiance from the lights by shadow rays (glass opaque), or by what the photons
+    /// say about visibility where they agree.
+    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, const Vec3<T>& n) const noexcept
+    {
+        Rgb<T> irradiance{T(0)};
+        if (const std::optional<bool> visible = visibility_from_photons(hit.point, n)) {
+            if (!*visible) return irradiance;
+            scene_->for_each_light([&](const auto& light) {
+                const LightSample<T> s = light.sample(hit.point);
+                irradiance += s.irradiance * std::max(dot(n, s.wi), T(0));
+            });
+            return irradiance;
+        }
+        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
+        return irradiance;
+    }
+
+    /// The first diffuse surface a camera ray sees in the air, following mirrors and
+    /// glass along their stronger branch (reflected or refracted), and the length of
+    /// the path to it; nothing when the ray leaves, or ends inside glass.
+    [[nodiscard]] std::optional<std::pair<Crossing<T>, T>> first_diffuse_seen(Ray<T> ray) const noexcept
+    {
+        T travelled = T(0);
+        bool inside = false;
+        for (int depth = 0; depth <= config_.max_depth; ++depth) {
+            Ray<T> segment = ray;
+            T path = T(0);
+            const auto hit = inside ? first_hit_in_air(*scene_, StraightAir{}, ray, segment, &path) : first_hit_in_air(*scene_, air_, ray, segment, &path);
+            if (!hit) return std::nullopt;
+            travelled += path;
+            const Crossing<T>& c = hit->crossing;
+            const Vec3<T> d = normalize(segment.direction);
+            std::optional<Vec3<T>> next;
+            const bool diffuse = scene_->visit_material(*hit, [&]<class M>(const M& material) {
+                if constexpr (has_diffuse<M>) {
+                    return true;
+                } else {
+                    const SpecularSplit<T> split = delta_split(material, d, c.facing_normal(), c.entering, c.point);
+                    if (split.refracted && max_component(split.kt) >= max_component(split.kr)) next = *split.refracted;
+                    else if (max_component(split.kr) > T(0)) next = reflect(d, c.facing_normal());
+                    return false;
+                }
+            });
+            if (diffuse) {
+                if (inside) return std::nullopt;
+                return std::pair{c, travelled};
+            }
+            if (!next) return std::nullopt;
+            if (dot(*next, c.facing_normal()) < T(0)) inside = !inside; // refracted: through the surface
+            ray = spawn_ray(c.point, c.error, c.normal, *next);
+        }
+        return std::nullopt;
+    }
+
+    /// Final gathering over m x cells_n stratified cells (gather_hemisphere). Each ray
+    /// walks on through mirrors and glass as a photon would (random_walk: Russian
+    /// roulette by reflectance, Fresnel's choice at glass) to the first diffuse surface,
+    /// where L = albedo / pi * E_global (the global map's precomputed irradiance, which
+    /// holds every photon there): paths D S+ D carry colour bleeding seen in a mirror or
+    /// through glass, and no light is counted twice, since light from a light through
+    /// mirrors and glass only (L S+) is the caustic map's and a point light is never hit.
+    /// From a surface in the air (`in_air`), the rays follow the air's curve.
+    template <bool Gradients = false>
+    [[nodiscard]] HemisphereGather<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Pcg32& rng, bool in_air, int m, int cells_n) const
+    {
+        return gather_hemisphere<Gradients, T>(n, m, cells_n, rng, [&](const Vec3<T>& direction) {
+            std::pair<Rgb<T>, T> found{Rgb<T>(T(0)), infinity<T>};
+            const auto at_diffuse = [&]<class M>(const M& material, const WalkVertex<T>& at) {
+                const Crossing<T>& c = at.crossing();
+                const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
+                found = {at.power * diffuse_response(material, c.point).brdf() * e, at.travelled};
+                return false;
+            };
+            const auto escaped = [](const Ray<T>&, const Rgb<T>&, bool) {};
+            const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, direction);
+            if (in_air) random_walk(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
+            else random_walk(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
+            return found;
+        });
+    }
+
+    const SceneT* scene_;
+    Config config_;
+    SpectralBands<T> bands_;
+    Air air_;
+    PhotonMaps maps_;
+    IrradianceCache<T> cache_{};
+    int gather_cells_m_ = 1, gather_cells_n_ = 1; ///< the final gather's strata: m x n about gather_rays, n about pi m
+};
 
 } // namespace prism
 

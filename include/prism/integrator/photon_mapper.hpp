@@ -23,18 +23,25 @@
 
 #include <prism/core/check.hpp>
 #include <prism/core/offset.hpp>
+#include <prism/core/parallel.hpp>
 #include <prism/core/rng.hpp>
 #include <prism/geometry/crossings.hpp>
 #include <prism/integrator/direct.hpp>
+#include <prism/integrator/irradiance_cache.hpp>
 #include <prism/light/light.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/medium/nesting.hpp>
 #include <prism/optics/refract.hpp>
 #include <prism/photon/photon_tracer.hpp>
+#include <prism/photon/random_walk.hpp>
+#include <prism/render/render.hpp>
+#include <prism/scene/camera.hpp>
 
 #include <algorithm>
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace prism {
 
@@ -52,7 +59,17 @@ public:
         /// The global map's estimate where it is read directly (gather_rays = 0); direct
         /// and caustic photons are left out, shadow rays and the caustic map count them.
         Estimator global{.radius = 0.25f, .excluded = Photon::direct | Photon::caustic};
-        int gather_rays = 32; ///< final-gather rays per diffuse hit; 0 reads the global map directly
+        int gather_rays = 32; ///< final-gather rays per diffuse hit (stratified); 0 reads the global map directly
+        /// An irradiance cache in front of the final gather (cache_irradiance builds it
+        /// for a camera): gathers of `rays` rays at records placed where the camera
+        /// needs them, interpolated with their gradients in between.
+        struct IrradianceCaching {
+            int rays = 1024;          ///< gather rays per record
+            float accuracy = 1.0f;    ///< kappa: a record reaches R / kappa (and 10 degrees / kappa of normal)
+            float min_pixels = 3.0f;  ///< R at least this many pixel footprints
+            float max_pixels = 40.0f; ///< and at most this many
+            bool gradients = true;
+        } irradiance_cache{};
         /// > 0: look at this many nearest global photons (within global.radius) before a
         /// shadow ray, and skip it when they agree. Scenes with one light only: shadow
         /// photons do not say which light they block.
@@ -85,6 +102,11 @@ private:
         validate(config.caustic, "PhotonMapper caustic");
         validate(config.global, "PhotonMapper global");
         if (config.gather_rays < 0) detail::throw_invalid("PhotonMapper gather_rays must be >= 0, got ", config.gather_rays);
+        const auto& cache = config.irradiance_cache;
+        if (cache.rays < 1) detail::throw_invalid("PhotonMapper irradiance_cache.rays must be >= 1, got ", cache.rays);
+        if (!(cache.accuracy > 0.0f && is_finite(cache.accuracy))) detail::throw_invalid("PhotonMapper irradiance_cache.accuracy must be finite and > 0, got ", cache.accuracy);
+        if (!(cache.min_pixels > 0.0f && cache.min_pixels <= cache.max_pixels && is_finite(cache.max_pixels)))
+            detail::throw_invalid("PhotonMapper irradiance_cache needs 0 < min_pixels <= max_pixels, finite, got ", cache.min_pixels, " and ", cache.max_pixels);
         if (config.max_depth < 0) detail::throw_invalid("PhotonMapper max_depth must be >= 0, got ", config.max_depth);
         detail::require_non_negative("PhotonMapper min_weight", config.min_weight);
         if (config.visibility_k > PhotonMap::max_k)
@@ -92,6 +114,8 @@ private:
         detail::validate(config.tracing);
         if (config.visibility_k > 0 && SceneT::light_count != 1)
             detail::throw_invalid("PhotonMapper visibility_k needs a scene with exactly one light, got lights: ", SceneT::light_count);
+        gather_cells_m_ = std::max(1, int(std::lround(std::sqrt(double(config.gather_rays) / pi<double>))));
+        gather_cells_n_ = std::max(1, config.gather_rays / gather_cells_m_);
         maps_ = maps ? std::move(*maps) : trace_photons(scene, config.tracing, air_);
         if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4, config.tracing.threads);
     }
@@ -99,6 +123,63 @@ private:
 public:
 
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
+    [[nodiscard]] const IrradianceCache<T>& irradiance_cache() const noexcept { return cache_; }
+
+    /// Build the irradiance cache for what `camera` sees at `render`'s size, before
+    /// rendering with it: pixels on grids of halving spacing (the coarsest about an
+    /// eighth of the image) are visited, and where the first diffuse surface a pixel's
+    /// centre sees is not yet reached by a record, a record is gathered there. Each
+    /// grid's records are gathered in parallel, each from its own random stream, and
+    /// added in pixel order: the cache is the same for any thread count. Surfaces the
+    /// camera sees only through mirrors or glass keep their own gathers.
+    void cache_irradiance(const Camera<T>& camera, const RenderConfig& render)
+    {
+        if (config_.gather_rays == 0) detail::throw_invalid("PhotonMapper cache_irradiance needs gather_rays > 0 (the cache sits in front of the final gather)");
+        const CameraRays<T> rays = camera.rays(render.width, render.height);
+        const auto& settings = config_.irradiance_cache;
+        cache_ = IrradianceCache<T>(T(settings.accuracy), settings.gradients);
+        const T pixel = length(rays.pixel_right);
+        int stride = 1;
+        while (stride * 16 <= std::min(render.width, render.height)) stride *= 2;
+        struct Candidate {
+            Crossing<T> hit;
+            Vec3<T> n;
+            T footprint;
+            std::size_t stream;
+        };
+        for (int level = 0; stride >= 1; stride /= 2, ++level) {
+            const int columns = (render.width + stride - 1) / stride, rows = (render.height + stride - 1) / stride;
+            std::vector<std::optional<Candidate>> found(std::size_t(columns) * std::size_t(rows));
+            detail::parallel_for(found.size(), render.threads, [&](std::size_t i) {
+                const int x = int(i % std::size_t(columns)) * stride, y = int(i / std::size_t(columns)) * stride;
+                const auto seen = first_diffuse_seen(rays.ray(T(x) + T(0.5), T(y) + T(0.5)));
+                if (!seen || cache_.covers(seen->first.point, seen->first.facing_normal())) return;
+                const std::size_t pixel_index = std::size_t(y) * std::size_t(render.width) + std::size_t(x);
+                found[i] = Candidate{seen->first, seen->first.facing_normal(), seen->second * pixel,
+                                     pixel_index + std::size_t(level) * std::size_t(render.width) * std::size_t(render.height)};
+            });
+            std::vector<Candidate> candidates;
+            for (const auto& c : found)
+                if (c) candidates.push_back(*c);
+            std::vector<IrradianceRecord<T>> records(candidates.size());
+            detail::parallel_for(candidates.size(), render.threads, [&](std::size_t i) {
+                const Candidate& c = candidates[i];
+                Pcg32 rng(render.seed ^ 0x1cac4eULL, c.stream);
+                const int m = std::max(1, int(std::lround(std::sqrt(T(settings.rays) / pi<T>))));
+                const int cells_n = std::max(1, settings.rays / m);
+                IrradianceRecord<T> r{c.hit.point, c.n, gather<true>(c.hit, c.n, rng, true, m, cells_n), T(0)};
+                T radius = r.gather.nearest;
+                if (settings.gradients)
+                    for (int ch = 0; ch < 3; ++ch) {
+                        const T slope = length(Vec3<T>{r.gather.translational[0][ch], r.gather.translational[1][ch], r.gather.translational[2][ch]});
+                        if (slope > T(0)) radius = std::min(radius, r.gather.irradiance[ch] / slope);
+                    }
+                r.radius = std::clamp(radius, T(settings.min_pixels) * c.footprint, T(settings.max_pixels) * c.footprint);
+                records[i] = r;
+            });
+            cache_.add(std::move(records));
+        }
+    }
 
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), {}); }
 
@@ -150,7 +231,10 @@ private:
         if constexpr (has_diffuse<M>) {
             const Vec3<float> p(hit.point), nf(n);
             Rgb<T> irradiance = direct(hit, n) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
-            if (config_.gather_rays > 0) irradiance += gather(hit, n, rng, media.empty());
+            if (config_.gather_rays > 0) {
+                const std::optional<Rgb<T>> cached = media.empty() ? cache_.irradiance(hit.point, n) : std::nullopt;
+                irradiance += cached ? *cached : gather(hit, n, rng, media.empty(), gather_cells_m_, gather_cells_n_).irradiance;
+            }
             else irradiance += Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
             radiance += diffuse_response(material, hit.point).brdf() * irradiance;
         }
@@ -197,28 +281,68 @@ private:
         return irradiance;
     }
 
-    /// Final gathering: E = pi / M sum L_i for cosine-distributed directions, with
-    /// L_i = albedo / pi * E_global where the ray lands on a diffuse surface; from a
-    /// surface in the air (`in_air`), the gather rays follow the air's curve.
-    [[nodiscard]] Rgb<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Pcg32& rng, bool in_air) const noexcept
+    /// The first diffuse surface a camera ray sees in the air, following mirrors and
+    /// glass along their stronger branch (reflected or refracted), and the length of
+    /// the path to it; nothing when the ray leaves, or ends inside glass.
+    [[nodiscard]] std::optional<std::pair<Crossing<T>, T>> first_diffuse_seen(Ray<T> ray) const noexcept
     {
-        Rgb<T> sum{T(0)};
-        for (int i = 0; i < config_.gather_rays; ++i) {
-            const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, cosine_hemisphere(n, rng));
+        T travelled = T(0);
+        bool inside = false;
+        for (int depth = 0; depth <= config_.max_depth; ++depth) {
             Ray<T> segment = ray;
-            const auto next = in_air ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
-            if (!next) continue;
-            const Crossing<T>& c = next->crossing;
-            sum += scene_->visit_material(*next, [&]<class M>(const M& material) -> Rgb<T> {
+            T path = T(0);
+            const auto hit = inside ? first_hit_in_air(*scene_, StraightAir{}, ray, segment, &path) : first_hit_in_air(*scene_, air_, ray, segment, &path);
+            if (!hit) return std::nullopt;
+            travelled += path;
+            const Crossing<T>& c = hit->crossing;
+            const Vec3<T> d = normalize(segment.direction);
+            std::optional<Vec3<T>> next;
+            const bool diffuse = scene_->visit_material(*hit, [&]<class M>(const M& material) {
                 if constexpr (has_diffuse<M>) {
-                    const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
-                    return diffuse_response(material, c.point).brdf() * e;
+                    return true;
                 } else {
-                    return Rgb<T>(T(0)); // light seen through mirrors and glass arrives by the caustic map
+                    const SpecularSplit<T> split = delta_split(material, d, c.facing_normal(), c.entering, c.point);
+                    if (split.refracted && max_component(split.kt) >= max_component(split.kr)) next = *split.refracted;
+                    else if (max_component(split.kr) > T(0)) next = reflect(d, c.facing_normal());
+                    return false;
                 }
             });
+            if (diffuse) {
+                if (inside) return std::nullopt;
+                return std::pair{c, travelled};
+            }
+            if (!next) return std::nullopt;
+            if (dot(*next, c.facing_normal()) < T(0)) inside = !inside; // refracted: through the surface
+            ray = spawn_ray(c.point, c.error, c.normal, *next);
         }
-        return sum * (pi<T> / T(config_.gather_rays));
+        return std::nullopt;
+    }
+
+    /// Final gathering over m x cells_n stratified cells (gather_hemisphere). Each ray
+    /// walks on through mirrors and glass as a photon would (random_walk: Russian
+    /// roulette by reflectance, Fresnel's choice at glass) to the first diffuse surface,
+    /// where L = albedo / pi * E_global (the global map's precomputed irradiance, which
+    /// holds every photon there): paths D S+ D carry colour bleeding seen in a mirror or
+    /// through glass, and no light is counted twice, since light from a light through
+    /// mirrors and glass only (L S+) is the caustic map's and a point light is never hit.
+    /// From a surface in the air (`in_air`), the rays follow the air's curve.
+    template <bool Gradients = false>
+    [[nodiscard]] HemisphereGather<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Pcg32& rng, bool in_air, int m, int cells_n) const
+    {
+        return gather_hemisphere<Gradients, T>(n, m, cells_n, rng, [&](const Vec3<T>& direction) {
+            std::pair<Rgb<T>, T> found{Rgb<T>(T(0)), infinity<T>};
+            const auto at_diffuse = [&]<class M>(const M& material, const WalkVertex<T>& at) {
+                const Crossing<T>& c = at.crossing();
+                const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
+                found = {at.power * diffuse_response(material, c.point).brdf() * e, at.travelled};
+                return false;
+            };
+            const auto escaped = [](const Ray<T>&, const Rgb<T>&, bool) {};
+            const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, direction);
+            if (in_air) random_walk(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
+            else random_walk(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
+            return found;
+        });
     }
 
     const SceneT* scene_;
@@ -226,6 +350,8 @@ private:
     SpectralBands<T> bands_;
     Air air_;
     PhotonMaps maps_;
+    IrradianceCache<T> cache_{};
+    int gather_cells_m_ = 1, gather_cells_n_ = 1; ///< the final gather's strata: m x n about gather_rays, n about pi m
 };
 
 } // namespace prism

@@ -1,0 +1,197 @@
+# SPDX-License-Identifier: MIT
+# Blender's Cycles renders shared/scenes/cornell_diffuse.md, the outside reference for
+# prism's diffuse Cornell box. Run headless:
+#
+#   blender -b --factory-startup --python bench/cycles_cornell.py -- OUT.pfm SAMPLES [SEED] [SIZE]
+#   blender -b --factory-startup --python bench/cycles_cornell.py -- --calibrate OUT.txt
+#
+# The scene's coordinates are the .pov files' (y up, camera along +z); Blender is z up
+# and right-handed, so (x, y, z) -> (x, z, y): a reflection, which turns the left-handed
+# POV frame into Blender's right-handed one and keeps the picture.
+#
+# Settings that keep Cycles radiometric and comparable: CPU, 2 threads, view transform
+# Standard with no look, exposure 0, gamma 1 (the EXR holds scene-linear radiance
+# anyway), a black world (the factory world emits grey), point light radius 0, no
+# clamping, light threshold 0, adaptive sampling and denoising off, 64 bounces of
+# everything, a 1-pixel box filter. The render is saved as float EXR, read back inside
+# Blender (Debian has no python3-openexr) and written as PFM.
+#
+# --calibrate measures Blender's point-light power per unit of radiant intensity: a
+# diffuse plane of albedo 0.5 two metres below a light of 100 W, seen by a small
+# orthographic camera looking straight down, reads L = (0.5 / pi) I / h^2; the script
+# writes P / I (4 pi = 12.566 when the light is an isotropic point of radiant intensity
+# P / (4 pi)).
+import math
+import os
+import struct
+import sys
+import tempfile
+import time
+
+import bpy
+
+argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+calibrate = bool(argv) and argv[0] == "--calibrate"
+if calibrate:
+    argv = argv[1:]
+out_path = argv[0]
+samples = int(argv[1]) if len(argv) > 1 and not calibrate else 64
+seed = int(argv[2]) if len(argv) > 2 else 0
+size = int(argv[3]) if len(argv) > 3 else 256
+
+W = 5.55
+INTENSITY = 20.0  # W/sr, each channel (cornell_diffuse.md)
+
+
+def blender(p):
+    """POV-style (x, y, z) -> Blender (x, z, y)."""
+    return (p[0], p[2], p[1])
+
+
+scene = bpy.context.scene
+for obj in list(bpy.data.objects):
+    bpy.data.objects.remove(obj, do_unlink=True)
+
+scene.render.engine = "CYCLES"
+cycles = scene.cycles
+cycles.device = "CPU"
+cycles.samples = samples
+cycles.seed = seed
+cycles.use_adaptive_sampling = False
+cycles.use_denoising = False
+cycles.sample_clamp_direct = 0.0
+cycles.sample_clamp_indirect = 0.0
+cycles.light_sampling_threshold = 0.0
+cycles.max_bounces = 64
+cycles.diffuse_bounces = 64
+cycles.glossy_bounces = 64
+cycles.transmission_bounces = 64
+cycles.transparent_max_bounces = 64
+cycles.caustics_reflective = True
+cycles.caustics_refractive = True
+cycles.pixel_filter_type = "BOX"
+cycles.filter_width = 1.0
+scene.render.threads_mode = "FIXED"
+scene.render.threads = 2
+scene.render.resolution_x = size
+scene.render.resolution_y = size
+scene.render.resolution_percentage = 100
+scene.render.film_transparent = False
+scene.view_settings.view_transform = "Standard"
+scene.view_settings.look = "None"
+scene.view_settings.exposure = 0.0
+scene.view_settings.gamma = 1.0
+scene.display_settings.display_device = "sRGB"
+scene.render.image_settings.file_format = "OPEN_EXR"
+scene.render.image_settings.color_depth = "32"
+scene.render.image_settings.exr_codec = "NONE"
+
+world = bpy.data.worlds.new("black")
+world.use_nodes = True
+world.node_tree.nodes["Background"].inputs["Color"].default_value = (0, 0, 0, 1)
+world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
+scene.world = world
+
+
+def diffuse(name, rgb):
+    m = bpy.data.materials.new(name)
+    m.use_nodes = True
+    nodes = m.node_tree.nodes
+    nodes.clear()
+    bsdf = nodes.new("ShaderNodeBsdfDiffuse")
+    bsdf.inputs["Color"].default_value = (rgb[0], rgb[1], rgb[2], 1)
+    bsdf.inputs["Roughness"].default_value = 0.0
+    out = nodes.new("ShaderNodeOutputMaterial")
+    m.node_tree.links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
+    return m
+
+
+def quad(name, corners, material):
+    """A one-sided-looking (Cycles shades both sides) quad from four POV-style corners."""
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata([blender(c) for c in corners], [], [(0, 1, 2, 3)])
+    obj = bpy.data.objects.new(name, mesh)
+    obj.data.materials.append(material)
+    scene.collection.objects.link(obj)
+
+
+def point_light(position, power):
+    light = bpy.data.lights.new("light", type="POINT")
+    light.energy = power
+    light.shadow_soft_size = 0.0  # radius 0: an ideal point
+    light.color = (1, 1, 1)
+    obj = bpy.data.objects.new("light", light)
+    obj.location = blender(position)
+    scene.collection.objects.link(obj)
+
+
+def camera(position, look_at, fov_deg, ortho_scale=None):
+    cam = bpy.data.cameras.new("camera")
+    if ortho_scale:
+        cam.type = "ORTHO"
+        cam.ortho_scale = ortho_scale
+    else:
+        cam.sensor_fit = "HORIZONTAL"
+        cam.angle = math.radians(fov_deg)
+    obj = bpy.data.objects.new("camera", cam)
+    obj.location = blender(position)
+    d = [look_at[i] - position[i] for i in range(3)]
+    # Point the camera's -Z at the target, its +Y toward Blender's +z (POV's +y).
+    from mathutils import Vector
+    obj.rotation_euler = Vector(blender(d)).to_track_quat("-Z", "Y").to_euler()
+    scene.collection.objects.link(obj)
+    scene.camera = obj
+
+
+def render_to_pixels():
+    """Render, save float EXR, read it back: (width, height, rows of RGB floats, bottom row first)."""
+    folder = tempfile.mkdtemp()
+    exr = os.path.join(folder, "render.exr")
+    scene.render.filepath = exr
+    start = time.time()
+    bpy.ops.render.render(write_still=True)
+    seconds = time.time() - start
+    image = bpy.data.images.load(exr)
+    w, h = image.size
+    px = list(image.pixels)  # RGBA, bottom row first
+    return w, h, px, seconds
+
+
+if calibrate:
+    h = 2.0
+    power = 100.0
+    quad("plane", [(-5, 0, -5), (5, 0, -5), (5, 0, 5), (-5, 0, 5)], diffuse("grey", (0.5, 0.5, 0.5)))
+    point_light((0, h, 0), power)
+    camera((0, 1.0, 0), (0, 0, 0.0001), 0, ortho_scale=0.02)
+    scene.render.resolution_x = scene.render.resolution_y = 16
+    cycles.samples = 256
+    w, hgt, px, seconds = render_to_pixels()
+    radiance = sum(px[i] for i in range(0, len(px), 4)) / (w * hgt)
+    intensity = radiance * math.pi / 0.5 * h * h
+    with open(out_path, "w") as f:
+        f.write("power_W,radiance,intensity_W_per_sr,power_over_intensity\n")
+        f.write("%g,%.6g,%.6g,%.6g\n" % (power, radiance, intensity, power / intensity))
+    print("cycles calibration: L = %.6g, I = %.6g W/sr, P / I = %.5f (4 pi = %.5f)" % (radiance, intensity, power / intensity, 4 * math.pi))
+    sys.exit(0)
+
+white = diffuse("white", (0.6, 0.6, 0.6))
+red = diffuse("red", (0.6, 0.08, 0.08))
+green = diffuse("green", (0.08, 0.6, 0.08))
+quad("floor", [(0, 0, 0), (W, 0, 0), (W, 0, W), (0, 0, W)], white)
+quad("ceiling", [(0, W, 0), (0, W, W), (W, W, W), (W, W, 0)], white)
+quad("back", [(0, 0, W), (W, 0, W), (W, W, W), (0, W, W)], white)
+quad("left", [(0, 0, 0), (0, 0, W), (0, W, W), (0, W, 0)], red)
+quad("right", [(W, 0, 0), (W, W, 0), (W, W, W), (W, 0, W)], green)
+point_light((2.78, 5.35, 2.60), 4 * math.pi * INTENSITY)
+camera((2.78, 2.73, -8.0), (2.78, 2.73, 0.0), 40.0)
+
+w, h, px, seconds = render_to_pixels()
+with open(out_path, "wb") as f:
+    f.write(b"PF\n%d %d\n-1.0\n" % (w, h))  # PFM rows run bottom to top, as Blender's
+    data = []
+    for i in range(0, len(px), 4):
+        data.extend(px[i:i + 3])
+    f.write(struct.pack("<%df" % len(data), *data))
+with open(out_path + ".txt", "w") as f:
+    f.write("samples,seconds\n%d,%.3f\n" % (samples, seconds))
+print("cycles: %d spp at %dx%d in %.2f s -> %s" % (samples, w, h, seconds, out_path))

@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: MIT
+#include <prism/integrator/irradiance_cache.hpp>
+#include <prism/prism.hpp>
+
+#include "../furnace.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+using namespace prism;
+
+TEST_CASE("the stratified gather: E = pi L under a uniform sky, and the gradients of fields known in closed form")
+{
+    Pcg32 rng(1u, 1u);
+    const Vec3<double> up{0, 0, 1};
+    // A uniform sky of radiance 2: E = 2 pi, exactly (every cell carries its share),
+    // and no gradient.
+    const auto uniform = gather_hemisphere<true, double>(up, 16, 50, rng, [](const Vec3<double>&) { return std::pair{Rgb<double>(2.0), infinity<double>}; });
+    CHECK(uniform.irradiance.x == doctest::Approx(2 * pi<double>).epsilon(1e-12));
+    for (int a = 0; a < 3; ++a) {
+        CHECK(length(uniform.rotational[std::size_t(a)]) < 1e-9);
+        CHECK(length(uniform.translational[std::size_t(a)]) < 1e-9);
+    }
+    // A sky L = 1 + w.x: E(n) = pi + (2 pi / 3) n.x, so tilting the normal from z
+    // toward x by d (n x n' = (0, d, 0)) raises E by (2 pi / 3) d: the rotational
+    // gradient is (0, 2 pi / 3, 0).
+    const auto sky = gather_hemisphere<true, double>(up, 32, 100, rng, [](const Vec3<double>& w) { return std::pair{Rgb<double>(1 + w.x), infinity<double>}; });
+    CHECK(sky.irradiance.x == doctest::Approx(pi<double>).epsilon(1e-3));
+    CHECK(sky.rotational[1].x == doctest::Approx(2 * pi<double> / 3).epsilon(0.005));
+    CHECK(std::abs(sky.rotational[0].x) < 0.05);
+    // A ceiling at height 1 whose radiance grows along x, L = 1 + 0.5 x: at the origin
+    // E(x0) = pi (1 + 0.5 x0) (the odd part cancels), so the translational gradient is
+    // (pi / 2, 0, 0).
+    const auto ceiling = gather_hemisphere<true, double>(up, 32, 100, rng, [](const Vec3<double>& w) {
+        const double t = 1 / w.z;
+        return std::pair{Rgb<double>(1 + 0.5 * w.x * t), t};
+    });
+    CHECK(ceiling.irradiance.x == doctest::Approx(pi<double>).epsilon(0.01));
+    CHECK(ceiling.translational[0].x == doctest::Approx(pi<double> / 2).epsilon(0.1));
+    CHECK(std::abs(ceiling.translational[1].x) < 0.1);
+    // The nearest hit above 10 degrees: the ceiling straight up, 1 away (to a cell).
+    CHECK(ceiling.nearest == doctest::Approx(1.0).epsilon(0.01));
+}
+
+TEST_CASE("an irradiance record reaches R / kappa, fades to 0 at its edge, and carries its gradients")
+{
+    IrradianceCache<double> cache(1.0);
+    HemisphereGather<double> g;
+    g.irradiance = Rgb<double>(2.0);
+    g.translational = {Rgb<double>(0.5), Rgb<double>(0.0), Rgb<double>(0.0)};
+    cache.add({IrradianceRecord<double>{{0, 0, 0}, {0, 0, 1}, g, 1.0}});
+    CHECK(cache.irradiance({0, 0, 0}, {0, 0, 1})->x == doctest::Approx(2.0));
+    CHECK(cache.irradiance({0.5, 0, 0}, {0, 0, 1})->x == doctest::Approx(2.25)); // E + 0.5 dE/dx
+    CHECK(!cache.irradiance({1.01, 0, 0}, {0, 0, 1}));                           // beyond R
+    CHECK(!cache.irradiance({0, 0, 0}, normalize(Vec3<double>{0.2, 0, 1})));     // turned by 11 degrees
+    CHECK(cache.irradiance({0.3, 0, 0.5}, {0, 0, 1}).has_value());               // above the record: it sees what p sees
+    CHECK(!cache.irradiance({0.3, 0, -0.5}, {0, 0, 1}));                         // the record lies in front of p
+    // A neighbour added 0.2 away with R = 0.1 clamps the first to 0.3: (0.35, 0, 0) is
+    // then out of its reach.
+    cache.add({IrradianceRecord<double>{{0.2, 0, 0}, {0, 0, 1}, HemisphereGather<double>{}, 0.1}});
+    CHECK(cache.records()[0].radius == doctest::Approx(0.3));
+    CHECK(cache.irradiance({-0.35, 0, 0}, {0, 0, 1}) == std::nullopt);
+}
+
+TEST_CASE("the final gather's furnace with and without the irradiance cache, and the cache is the same for any thread count")
+{
+    for (const bool four : {false, true}) {
+        CAPTURE(four);
+        const auto scene = test::furnace_scene(four);
+        using Mapper = PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
+        Mapper::Config config{.tracing = {.global_photons = 200000, .caustic_photons = 0, .max_bounces = 64, .seed = 2}, .gather_rays = 64};
+        config.irradiance_cache.rays = 256;
+        Mapper mapper(scene, config);
+        const Camera<float> camera{.position = {0, 0, 0}, .look_at = {0, 0, 1}, .fov = 90};
+        constexpr int size = 32;
+        const RenderConfig render_config{.width = size, .height = size, .threads = 2, .progress = false};
+        mapper.cache_irradiance(camera, render_config);
+        CHECK(mapper.irradiance_cache().size() > 4);
+        const Film image = render(camera, mapper, render_config);
+        const CameraRays<float> rays = camera.rays(size, size);
+        double ratio = 0;
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x)
+                ratio += image.at(x, y).x / test::furnace_radiance(Vec3<double>(rays.ray(float(x) + 0.5f, float(y) + 0.5f).direction), four, true);
+        CHECK(ratio / (size * size) == doctest::Approx(1.0).epsilon(0.005));
+        if (four) continue;
+        Mapper one(scene, config);
+        one.cache_irradiance(camera, {.width = size, .height = size, .threads = 1, .progress = false});
+        REQUIRE(one.irradiance_cache().size() == mapper.irradiance_cache().size());
+        for (std::size_t i = 0; i < one.irradiance_cache().size(); ++i) {
+            CHECK(one.irradiance_cache().records()[i].p == mapper.irradiance_cache().records()[i].p);
+            CHECK(one.irradiance_cache().records()[i].gather.irradiance == mapper.irradiance_cache().records()[i].gather.irradiance);
+        }
+    }
+}
