@@ -93,7 +93,7 @@ def run_povray(scene_text, threads, folder, count, gather=None, photons=True):
 
 
 def caustics(args, binary, scene_text, tmp, out):
-    common = ["--light", "povray", "--photons", "0"]
+    common = ["--light", "povray", "--photons", "0", "--method", "direct"]
     print("references: prism 2e7 photons (two seeds), POV-Ray count 2e7 with gather 100, 400 and 20, 100 ...", flush=True)
     reference = common + ["--caustic-photons", "20000000", "--k", "0", "--radius", "0.03", "--filter", "box"]
     ref = run_prism(binary, args.threads, tmp, reference)
@@ -163,9 +163,9 @@ LEAK_CONFIGS = {
 
 
 def leaks(args, binary, tmp, out):
-    common = ["--caustic-photons", "0", "--gather", "0", "--global-radius", "0.25"]
+    common = ["--caustic-photons", "0", "--method", "direct", "--global-radius", "0.25"]
     print("light leaks: global map read directly; reference 1e7 photons, r = 0.08, disk 0.1 ...", flush=True)
-    ref = run_prism(binary, args.threads, tmp, ["--caustic-photons", "0", "--gather", "0", "--photons", "10000000",
+    ref = run_prism(binary, args.threads, tmp, ["--caustic-photons", "0", "--method", "direct", "--photons", "10000000",
                                                  "--global-radius", "0.08", "--max-height-ratio", "0.1", "--filter", "box"])
     rows, crops = [], []
     for count in [10000, 30000, 100000, 300000, 1000000]:

@@ -326,7 +326,35 @@ def thin_film_chart(rows):
     save(fig, "thin_film.png")
 
 
+def methods_vs_time_chart(rows):
+    """Error against prism's reference vs time: a column per scene, linear radiance above,
+    the display range (clamped to 1) below; a curve per method."""
+    scenes = [("diffuse", "diffuse Cornell box (Cycles renders it too)"), ("glass", "Cornell box, glass and mirror balls")]
+    metrics = [("rmse", "RMSE, linear radiance"), ("rmse_display", "RMSE, display range (radiance clamped to 1)")]
+    fig, axes = plt.subplots(2, 2, figsize=(12, 9))
+    for column, (scene, title) in enumerate(scenes):
+        methods = []
+        for r in rows:
+            if r["scene"] == scene and r["method"] not in methods:
+                methods.append(r["method"])
+        for row, (key, ylabel) in enumerate(metrics):
+            ax = axes[row][column]
+            for method in methods:
+                points = sorted((float(r["seconds"]), float(r[key])) for r in rows if r["scene"] == scene and r["method"] == method)
+                points = [p for p in points if p[1] > 0]
+                style = "k--" if method == "Cycles" else "-"
+                ax.loglog([p[0] for p in points], [p[1] for p in points], style, marker="o", label=method)
+            ax.set_xlabel("render time (s, 2 threads)")
+            ax.set_ylabel(ylabel + "\nagainst prism's reference, its noise removed")
+            ax.set_title(title)
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize=8)
+    save(fig, "methods_vs_time.png")
+
+
 def main():
+    if (rows := read("methods_vs_time.csv")):
+        methods_vs_time_chart(rows)
     if (rows := read("accuracy.csv")):
         accuracy_charts(rows)
     if (rows := read("acne.csv")):

@@ -4,6 +4,7 @@
 // figure 16). With --whitted it is rendered instead as the lecture notes' shadow rays see
 // it: light passing straight through the glass, no focus.
 #include "cli.hpp"
+#include "methods.hpp"
 
 #include <prism/io/image.hpp>
 
@@ -26,6 +27,7 @@ int main(int argc, char** argv)
         options.render.spp = 4;
         options.photons = 100000;
         options.caustic_photons = 1000000;
+        options.method = "direct"; // one light over an open floor: little indirect light to gather
         if (!examples::parse(int(args.size()), args.data(), options,
                              "a glass ball's caustic on a checkered floor (photon mapping; --whitted: shadow rays through the glass)",
                              {.photons = true}))
@@ -42,10 +44,7 @@ int main(int argc, char** argv)
             write_png(examples::timed_render("caustic_sphere", camera, integrator, options.render), options.out / "caustic_sphere_whitted.png");
             return 0;
         }
-        const PhotonMapper mapper(scene, {.tracing = examples::photon_tracer_config(options),
-                                          .caustic = examples::caustic_estimator(options),
-                                          .gather_rays = options.gather});
-        write_png(examples::timed_render("caustic_sphere", camera, mapper, options.render), options.out / "caustic_sphere.png");
+        write_png(examples::render_by_method("caustic_sphere", scene, camera, options), options.out / "caustic_sphere.png");
         return 0;
     });
 }

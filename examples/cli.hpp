@@ -27,7 +27,7 @@ struct Options {
     // Photon mapping (the photon examples only)
     std::size_t photons = 200000;
     std::size_t caustic_photons = 200000;
-    int gather = 0;
+    int gather = 64; ///< final-gather rays (gather and cache)
     double radius = 0.1;          ///< the caustic estimate's radius, or its search limit with --k
     std::size_t k = 100;          ///< > 0: the caustic estimate from the k nearest photons, 0: all within radius
     double global_radius = 0.25;  ///< the global map's estimate, where it is read directly
@@ -35,6 +35,11 @@ struct Options {
     double max_height_ratio = 1.0; ///< < 1 flattens the estimate's sphere to a disk (against leaks)
     std::size_t visibility = 0;   ///< > 0: skip shadow rays where this many nearest photons agree
     bool povray_light = false;    ///< POV-Ray's no-falloff light, as its scene has it
+    /// How indirect light is found: direct (the global map read at the point), gather
+    /// (final gathering), cache (final gathering behind an irradiance cache),
+    /// progressive (progressive photon mapping), reference (path tracing + light tracing)
+    std::string method = "cache";
+    std::size_t passes = 64; ///< progressive photon mapping's passes
 };
 
 inline void print_photon_help(const Options& defaults);
@@ -68,15 +73,21 @@ inline void print_photon_help(const Options& defaults)
     std::printf("  photon mapping:\n"
                 "  --photons N          photons emitted for the global map (default %zu)\n"
                 "  --caustic-photons N  photons aimed at specular objects (default %zu)\n"
-                "  --gather N           final-gather rays per diffuse hit, 0 = read the global map (default 0)\n"
+                "  --gather N           final-gather rays per diffuse hit, for --method gather and cache (default %d)\n"
                 "  --radius R           radius of the caustic estimate, or its search limit with --k (default 0.1)\n"
                 "  --k N                caustic estimate from the N nearest photons, 0 = every photon within R (default 100)\n"
                 "  --global-radius R    radius of the global map's estimate where read directly (default 0.25)\n"
                 "  --filter F           box, cone or gaussian, for both estimates (default cone)\n"
                 "  --max-height-ratio H keep photons within H R of the tangent plane, < 1 against light leaks (default 1)\n"
                 "  --visibility N       skip shadow rays where the N nearest global photons agree (default 0 = never)\n"
-                "  --light L            physical (inverse-square) or povray (no falloff, as the .pov file) (default physical)\n",
-                defaults.photons, defaults.caustic_photons);
+                "  --light L            physical (inverse-square) or povray (no falloff, as the .pov file) (default physical)\n"
+                "  --method M           indirect light by: direct (the global map read at the point), gather (final gathering),\n"
+                "                       cache (final gathering behind an irradiance cache), progressive (progressive photon\n"
+                "                       mapping: --photons and --caustic-photons per pass, --radius and --global-radius the first\n"
+                "                       pass's radii), reference (unbiased: path tracing plus light tracing, --spp samples per\n"
+                "                       pixel and as many light paths) (default %s)\n"
+                "  --passes N           progressive photon mapping's passes (default %zu)\n",
+                defaults.photons, defaults.caustic_photons, defaults.gather, defaults.method.c_str(), defaults.passes);
 }
 
 template <class Integer>
@@ -135,7 +146,8 @@ inline bool parse(int argc, char** argv, Options& options, const char* descripti
 {
     const Options defaults = options;
     constexpr std::string_view photon_flags[] = {"--photons", "--caustic-photons", "--gather", "--radius", "--global-radius",
-                                                 "--max-height-ratio", "--k",               "--visibility", "--filter", "--light"};
+                                                 "--max-height-ratio", "--k",               "--visibility", "--filter", "--light",
+                                                 "--method",           "--passes"};
     for (int i = 1; i < argc; ++i) {
         const std::string_view flag = argv[i];
         if (flag == "--help" || flag == "-h") {
@@ -156,7 +168,7 @@ inline bool parse(int argc, char** argv, Options& options, const char* descripti
         else if (flag == "--povray") options.povray = value;
         else if (flag == "--photons") options.photons = parse_integer<std::size_t>(flag, value, 0, 100000000);
         else if (flag == "--caustic-photons") options.caustic_photons = parse_integer<std::size_t>(flag, value, 0, 100000000);
-        else if (flag == "--gather") options.gather = parse_integer<int>(flag, value, 0, 4096);
+        else if (flag == "--gather") options.gather = parse_integer<int>(flag, value, 1, 4096);
         else if (flag == "--radius") options.radius = parse_number(flag, value, 0, 100);
         else if (flag == "--global-radius") options.global_radius = parse_number(flag, value, 0, 100);
         else if (flag == "--max-height-ratio") options.max_height_ratio = parse_number(flag, value, 0, 1);
@@ -169,6 +181,13 @@ inline bool parse(int argc, char** argv, Options& options, const char* descripti
             else if (f == "gaussian") options.filter = prism::Filter::gaussian;
             else throw std::invalid_argument("--filter expects box, cone or gaussian, got '" + std::string(f) + "'");
         }
+        else if (flag == "--method") {
+            const std::string_view m = value;
+            if (m != "direct" && m != "gather" && m != "cache" && m != "progressive" && m != "reference")
+                throw std::invalid_argument("--method expects direct, gather, cache, progressive or reference, got '" + std::string(m) + "'");
+            options.method = m;
+        }
+        else if (flag == "--passes") options.passes = parse_integer<std::size_t>(flag, value, 1, 1000000);
         else if (flag == "--light") {
             const std::string_view l = value;
             if (l != "physical" && l != "povray") throw std::invalid_argument("--light expects physical or povray, got '" + std::string(l) + "'");

@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: MIT
 // cornell_caustics: the Cornell box of shared/scenes/cornell_caustics.pov, photon-mapped:
-// the glass sphere's caustic and the walls' colour bleeding, and pictures of where the
-// global and the caustic photons landed (the seed's figures 13 and 15).
+// the glass sphere's caustic and the walls' colour bleeding (by default a final gather
+// behind an irradiance cache; --method chooses another estimator), and pictures of where
+// the global and the caustic photons landed (the seed's figures 13 and 15).
 //
 // With --povray (POV-Ray's picture with Declare=PHOTONS=1) it renders what POV-Ray does:
 // its no-falloff light and caustics only (POV-Ray's scene has no radiosity, so no global
 // map), and writes prism | POV-Ray | difference.
 #include "cli.hpp"
 #include "compare.hpp"
+#include "methods.hpp"
 #include "scenes/cornell.hpp"
 
 #include <prism/io/image.hpp>
@@ -54,29 +56,23 @@ int main(int argc, char** argv)
             options.povray_light = true;
             options.photons = 0;
         }
+        if (options.povray_light && options.method != "direct") {
+            // POV-Ray's scene has no radiosity: its light is caustics and direct light only.
+            if (!options.povray.empty()) options.method = "direct";
+            else throw std::invalid_argument("--light povray (POV-Ray's no-falloff light, no global light) renders with --method direct only: add --method direct");
+        }
         const auto scene = scenes::cornell_scene<float>(!options.povray_light);
-        using Mapper = prism::PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
-        const auto start = std::chrono::steady_clock::now();
-        const Mapper mapper(scene, {.tracing = examples::photon_tracer_config(options),
-                                    .caustic = examples::caustic_estimator(options),
-                                    .global = {.radius = float(options.global_radius), .filter = options.filter, .max_height_ratio = float(options.max_height_ratio),
-                                               .excluded = prism::Photon::direct | prism::Photon::caustic},
-                                    .gather_rays = options.gather,
-                                    .visibility_k = options.visibility});
-        std::printf("cornell_caustics: %zu global and %zu caustic photons stored in %.3f s\n", mapper.maps().global.size(),
-                    mapper.maps().caustic.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         const auto camera = scenes::cornell_camera<float>();
-        const prism::Film film = examples::timed_render("cornell_caustics", camera, mapper, options.render);
+        const prism::Film film = examples::render_by_method("cornell_caustics", scene, camera, options);
         prism::write_png(film, options.out / "cornell_caustics.png");
         prism::write_pfm(film, options.out / "cornell_caustics.pfm");
         if (!options.povray.empty()) examples::write_comparison(film, options.povray, options.out / "cornell_caustics_vs_povray.png");
         // Where the photons landed: each photon's power, summed per pixel (one photon per
         // pixel of the global map reads as mid-grey).
+        const prism::PhotonMaps maps = prism::trace_photons(scene, examples::photon_tracer_config(options));
         const float gain = float(options.photons) / 200000.0f * 40.0f;
-        prism::write_png(photon_picture(mapper.maps().global, camera, options.render.width, options.render.height, gain),
-                         options.out / "cornell_global_photons.png");
-        prism::write_png(photon_picture(mapper.maps().caustic, camera, options.render.width, options.render.height, gain),
-                         options.out / "cornell_caustic_photons.png");
+        prism::write_png(photon_picture(maps.global, camera, options.render.width, options.render.height, gain), options.out / "cornell_global_photons.png");
+        prism::write_png(photon_picture(maps.caustic, camera, options.render.width, options.render.height, gain), options.out / "cornell_caustic_photons.png");
         return 0;
     });
 }

@@ -5,6 +5,7 @@
 // wavelength where it first refracts and follows F2's Sellmeier index from then on.
 // Beside it, the same prism of a glass that does not disperse (n = n_d): one white beam.
 #include "cli.hpp"
+#include "methods.hpp"
 
 #include <prism/io/image.hpp>
 
@@ -84,17 +85,14 @@ int main(int argc, char** argv)
         options.caustic_photons = 1000000;
         options.radius = 0.04;
         options.k = 0;
+        options.method = "direct"; // its light is the spectrum's caustic; the global map lights the rest
         if (!examples::parse(argc, argv, options, "white light through a flint prism onto the floor: a spectrum (photon mapping)", {.photons = true}))
             return 0;
         const Camera<T> camera{.position = {T(-1.5), T(8.5), T(9)}, .look_at = {T(1.4), T(2.4), T(0)}, .up = {0, 1, 0}, .fov = 50};
-        const PhotonMapper<std::remove_cvref_t<decltype(rainbow_scene(DispersiveDielectric<T>{}))>>::Config config{
-            .tracing = examples::photon_tracer_config(options), .caustic = examples::caustic_estimator(options), .gather_rays = options.gather};
         const auto scene = rainbow_scene(DispersiveDielectric<T>{.glass = glass::f2<double>});
-        const PhotonMapper mapper(scene, config);
-        write_png(examples::timed_render("prism_rainbow", camera, mapper, options.render), options.out / "prism_rainbow.png");
+        write_png(examples::render_by_method("prism_rainbow", scene, camera, options), options.out / "prism_rainbow.png");
         const auto plain = rainbow_scene(Dielectric<T>{.ior = T(glass::f2<double>.index(fraunhofer::d))});
-        const PhotonMapper plain_mapper(plain, {.tracing = config.tracing, .caustic = config.caustic, .gather_rays = config.gather_rays});
-        write_png(examples::timed_render("prism_rainbow_plain", camera, plain_mapper, options.render), options.out / "prism_rainbow_plain.png");
+        write_png(examples::render_by_method("prism_rainbow_plain", plain, camera, options), options.out / "prism_rainbow_plain.png");
         return 0;
     });
 }

@@ -6106,18 +6106,22 @@ struct RenderConfig {
     std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image
     bool progress = true;    ///< report progress on stderr once a render passes one second
     int tile_size = 16;      ///< pixels per side of the square work unit
+    /// With spp = 1: the pixel's centre (true), or a uniform point in it (false: a render
+    /// that is one pass of many, as progressive photon mapping's, then anti-aliases over
+    /// its passes).
+    bool single_sample_at_centre = true;
 };
 
 namespace detail {
 
-/// Sub-pixel position of sample s of n: the centre when n = 1; otherwise jittered
-/// in an m x m grid of strata (m = floor(sqrt(n))), any further samples uniform. The
-/// jitter is drawn as float in every precision, so float and double renders of one
-/// seed sample the same positions and differ only by their arithmetic.
+/// Sub-pixel position of sample s of n: the centre when n = 1 and `centre`; otherwise
+/// jittered in an m x m grid of strata (m = floor(sqrt(n))), any further samples
+/// uniform. The jitter is drawn as float in every precision, so float and double renders
+/// of one seed sample the same positions and differ only by their arithmetic.
 template <Scalar T>
-[[nodiscard]] inline std::pair<T, T> pixel_sample(int s, int n, Pcg32& rng) noexcept
+[[nodiscard]] inline std::pair<T, T> pixel_sample(int s, int n, Pcg32& rng, bool centre = true) noexcept
 {
-    if (n == 1) return {T(0.5), T(0.5)};
+    if (n == 1 && centre) return {T(0.5), T(0.5)};
     const int m = static_cast<int>(std::sqrt(static_cast<double>(n)));
     const T u = T(rng.uniform<float>()), v = T(rng.uniform<float>());
     if (s < m * m) return {(T(s % m) + u) / T(m), (T(s / m) + v) / T(m)};
@@ -6160,7 +6164,7 @@ template <Integrator I>
                     Pcg32 rng(config.seed, pixel);
                     Rgb<T> sum{T(0)};
                     for (int s = 0; s < config.spp; ++s) {
-                        const auto [dx, dy] = detail::pixel_sample<T>(s, config.spp, rng);
+                        const auto [dx, dy] = detail::pixel_sample<T>(s, config.spp, rng, config.single_sample_at_centre);
                         sum += integrator.radiance(rays.ray(T(x) + dx, T(y) + dy), rng);
                     }
                     film.set(x, y, sum / T(config.spp));
@@ -6247,7 +6251,7 @@ public:
         /// for a camera): gathers of `rays` rays at records placed where the camera
         /// needs them, interpolated with their gradients in between.
         struct IrradianceCaching {
-            int rays = 1024;          ///< gather rays per record
+            int rays = 4096;          ///< gather rays per record (fewer leave the records' noise as blotches)
             float accuracy = 1.0f;    ///< kappa: a record reaches R / kappa (and 10 degrees / kappa of normal)
             float min_pixels = 3.0f;  ///< R at least this many pixel footprints
             float max_pixels = 40.0f; ///< and at most this many
@@ -6555,7 +6559,8 @@ private:
 // No per-pixel statistics are kept, so a pass is as cheap as the photon mapper's, any
 // pass count is deterministic, and passes on different threads or machines add up.
 // Direct light is by shadow rays (each pass at a new sample position in the pixel,
-// which also anti-aliases), caustics from the caustic map, the rest from the global
+// even at one sample per pixel, which also anti-aliases; at the pixel's centre every
+// pass, a light's hot spot kept an error of 0.11 in the Cornell box), caustics from the caustic map, the rest from the global
 // map. Photons on the far side of a thin surface never count (their surface faces the
 // other way: PhotonMap::irradiance).
 
@@ -6648,6 +6653,7 @@ template <class SceneT, class Air = StraightAir>
         RenderConfig pass_render = render_config;
         pass_render.seed = render_config.seed + 0x9e3779b97f4a7c15ULL * (pass + 1); // a fresh sample in every pixel
         pass_render.progress = false;
+        pass_render.single_sample_at_centre = false; // anti-aliased over the passes
         const Film image = render(camera, mapper, pass_render);
         for (std::size_t i = 0; i < result.sum.size(); ++i) result.sum[i] += Rgb<double>(image.pixels()[i]);
         ++result.passes;

@@ -4,6 +4,8 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 #include <cstring>
 #include <limits>
 
@@ -54,6 +56,17 @@ TEST_CASE("stratified sub-pixel samples cover the pixel once per stratum")
     }
     for (auto& row : hits)
         for (int h : row) CHECK(h == 1);
+    // One sample not at the centre (a pass of progressive photon mapping, whose passes
+    // average over the pixel): uniform over it, so 10 000 of them fill every ninth.
+    int ninths[3][3] = {};
+    for (int i = 0; i < 10000; ++i) {
+        const auto [u, v] = detail::pixel_sample<float>(0, 1, rng, false);
+        REQUIRE(u >= 0.0f);
+        REQUIRE(u < 1.0f);
+        ++ninths[int(u * 3)][int(v * 3)];
+    }
+    for (auto& row : ninths)
+        for (int h : row) CHECK(std::abs(h - 1111) < 120); // 3.5 standard deviations
 }
 
 TEST_CASE("bad render settings are rejected")

@@ -64,7 +64,7 @@ public:
         /// for a camera): gathers of `rays` rays at records placed where the camera
         /// needs them, interpolated with their gradients in between.
         struct IrradianceCaching {
-            int rays = 1024;          ///< gather rays per record
+            int rays = 4096;          ///< gather rays per record (fewer leave the records' noise as blotches)
             float accuracy = 1.0f;    ///< kappa: a record reaches R / kappa (and 10 degrees / kappa of normal)
             float min_pixels = 3.0f;  ///< R at least this many pixel footprints
             float max_pixels = 40.0f; ///< and at most this many

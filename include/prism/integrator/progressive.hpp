@@ -14,7 +14,8 @@
 // No per-pixel statistics are kept, so a pass is as cheap as the photon mapper's, any
 // pass count is deterministic, and passes on different threads or machines add up.
 // Direct light is by shadow rays (each pass at a new sample position in the pixel,
-// which also anti-aliases), caustics from the caustic map, the rest from the global
+// even at one sample per pixel, which also anti-aliases; at the pixel's centre every
+// pass, a light's hot spot kept an error of 0.11 in the Cornell box), caustics from the caustic map, the rest from the global
 // map. Photons on the far side of a thin surface never count (their surface faces the
 // other way: PhotonMap::irradiance).
 #pragma once
@@ -113,6 +114,7 @@ template <class SceneT, class Air = StraightAir>
         RenderConfig pass_render = render_config;
         pass_render.seed = render_config.seed + 0x9e3779b97f4a7c15ULL * (pass + 1); // a fresh sample in every pixel
         pass_render.progress = false;
+        pass_render.single_sample_at_centre = false; // anti-aliased over the passes
         const Film image = render(camera, mapper, pass_render);
         for (std::size_t i = 0; i < result.sum.size(); ++i) result.sum[i] += Rgb<double>(image.pixels()[i]);
         ++result.passes;

@@ -36,18 +36,22 @@ struct RenderConfig {
     std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image
     bool progress = true;    ///< report progress on stderr once a render passes one second
     int tile_size = 16;      ///< pixels per side of the square work unit
+    /// With spp = 1: the pixel's centre (true), or a uniform point in it (false: a render
+    /// that is one pass of many, as progressive photon mapping's, then anti-aliases over
+    /// its passes).
+    bool single_sample_at_centre = true;
 };
 
 namespace detail {
 
-/// Sub-pixel position of sample s of n: the centre when n = 1; otherwise jittered
-/// in an m x m grid of strata (m = floor(sqrt(n))), any further samples uniform. The
-/// jitter is drawn as float in every precision, so float and double renders of one
-/// seed sample the same positions and differ only by their arithmetic.
+/// Sub-pixel position of sample s of n: the centre when n = 1 and `centre`; otherwise
+/// jittered in an m x m grid of strata (m = floor(sqrt(n))), any further samples
+/// uniform. The jitter is drawn as float in every precision, so float and double renders
+/// of one seed sample the same positions and differ only by their arithmetic.
 template <Scalar T>
-[[nodiscard]] inline std::pair<T, T> pixel_sample(int s, int n, Pcg32& rng) noexcept
+[[nodiscard]] inline std::pair<T, T> pixel_sample(int s, int n, Pcg32& rng, bool centre = true) noexcept
 {
-    if (n == 1) return {T(0.5), T(0.5)};
+    if (n == 1 && centre) return {T(0.5), T(0.5)};
     const int m = static_cast<int>(std::sqrt(static_cast<double>(n)));
     const T u = T(rng.uniform<float>()), v = T(rng.uniform<float>());
     if (s < m * m) return {(T(s % m) + u) / T(m), (T(s / m) + v) / T(m)};
@@ -90,7 +94,7 @@ template <Integrator I>
                     Pcg32 rng(config.seed, pixel);
                     Rgb<T> sum{T(0)};
                     for (int s = 0; s < config.spp; ++s) {
-                        const auto [dx, dy] = detail::pixel_sample<T>(s, config.spp, rng);
+                        const auto [dx, dy] = detail::pixel_sample<T>(s, config.spp, rng, config.single_sample_at_centre);
                         sum += integrator.radiance(rays.ray(T(x) + dx, T(y) + dy), rng);
                     }
                     film.set(x, y, sum / T(config.spp));
