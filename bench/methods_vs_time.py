@@ -98,7 +98,7 @@ def main():
     args = ap.parse_args()
     only = set(args.methods.split(",")) if args.methods else None
     if args.rescore:
-        return rescore(os.path.join(args.build, "methods_vs_time"), args.reference_spp)
+        return rescore(os.path.join(args.build, "methods_vs_time"))
     work = os.path.join(args.build, "methods_vs_time")
     os.makedirs(work, exist_ok=True)
     efforts = {
@@ -154,16 +154,20 @@ def main():
             kept = [r for r in csv.DictReader(f)
                     if r["method"].replace("prism ", "").lower() not in only and not (r["method"] == "Cycles" and "cycles" in only)]
         rows = [(r["scene"], r["method"], r["effort"], float(r["seconds"])) + tuple(float(r[k]) for k in COLUMNS) for r in kept] + rows
+    write_csv(path, rows)
+    print("wrote", path)
+    strip(work, efforts, cycles_spp)
+
+
+def write_csv(path, rows):
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["scene", "method", "effort", "seconds"] + COLUMNS)
         for r in rows:
             w.writerow([r[0], r[1], r[2], "%.4f" % r[3]] + ["%.6f" % x for x in r[4:]])
-    print("wrote", path)
-    strip(work, efforts, cycles_spp)
 
 
-def rescore(work, reference_spp):
+def rescore(work):
     path = os.path.join(here, "results", "methods_vs_time.csv")
     with open(path) as f:
         old = list(csv.DictReader(f))
@@ -173,11 +177,7 @@ def rescore(work, reference_spp):
         method = r["method"].replace("prism ", "")
         name = "cycles_%s.pfm" % r["effort"] if method == "Cycles" else "%s_%s_%s.pfm" % (r["scene"], method, r["effort"])
         rows.append((r["scene"], r["method"], r["effort"], float(r["seconds"])) + scorers[r["scene"]](read_pfm(os.path.join(work, name))))
-    with open(path, "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["scene", "method", "effort", "seconds"] + COLUMNS)
-        for r in rows:
-            w.writerow([r[0], r[1], r[2], "%.4f" % r[3]] + ["%.6f" % x for x in r[4:]])
+    write_csv(path, rows)
     print("rescored", path)
 
 

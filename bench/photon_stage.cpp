@@ -4,12 +4,13 @@
 // alternate between the thread counts (these machines are shared and noisy) and the
 // ratio of min and median times is reported; every run's maps must be the same bits.
 //
-// usage: bench_photon_stage [photons per map] [runs]   (default 1000000, 5)
+// usage: bench_photon_stage [RESULTS_DIR] [photons per map] [runs]   (default bench/results, 1000000, 5)
 #include "common.hpp"
 #include "scenes/cornell.hpp"
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <vector>
 
 namespace {
@@ -42,8 +43,9 @@ double median(std::vector<double> v)
 
 int main(int argc, char** argv)
 {
-    const std::size_t photons = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 1000000;
-    const int runs = argc > 2 ? std::atoi(argv[2]) : 5;
+    const std::filesystem::path results = argc > 1 ? argv[1] : "bench/results";
+    const std::size_t photons = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 1000000;
+    const int runs = argc > 3 ? std::atoi(argv[3]) : 5;
     std::vector<double> trace[2], pre[2];
     prism::PhotonMaps reference;
     bool same = true;
@@ -56,7 +58,7 @@ int main(int argc, char** argv)
             if (run == 0 && threads == 1) reference = std::move(maps);
             else same = same && maps.global.photons() == reference.global.photons() && maps.caustic.photons() == reference.caustic.photons();
         }
-    bench::Csv csv("bench/results/photon_stage.csv", "stage,threads,min_s,median_s");
+    bench::Csv csv(results / "photon_stage.csv", "stage,threads,min_s,median_s");
     for (int i = 0; i < 2; ++i) {
         csv.row("trace_and_build,%d,%.4f,%.4f", i + 1, *std::min_element(trace[i].begin(), trace[i].end()), median(trace[i]));
         csv.row("precompute_irradiance,%d,%.4f,%.4f", i + 1, *std::min_element(pre[i].begin(), pre[i].end()), median(pre[i]));

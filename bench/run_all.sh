@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Run every measurement and draw the charts into bench/results (a few minutes).
+# Run every measurement and draw the charts into bench/results (about an hour: the
+# photon accuracy and methods-against-time runs take most of it).
 #   bench/run_all.sh
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -23,5 +24,8 @@ python=/usr/bin/python3
 "$root/build/release/bench/bench_graded_index" "$results" | tee "$results/graded_index.txt"
 "$root/build/release/bench/bench_dispersion" "$results" | tee "$results/dispersion.txt"
 "$root/build/release/bench/bench_thin_film" "$results" | tee "$results/thin_film.txt"
+"$root/build/release/bench/bench_photon_stage" "$results" | tee "$results/photon_stage.txt"
+"$python" "$root/bench/methods_vs_time.py" "$root/build/release" | tee "$results/methods_vs_time.txt"
+"$python" "$root/bench/cycles_agreement.py" "$root/build/release" | tee "$results/cycles_agreement.txt"
 "$python" "$root/bench/photon_accuracy.py" --build "$root/build/release" --out "$results" | tee "$results/photon_accuracy.txt"
 "$python" "$root/bench/plot.py" "$results"

@@ -2,10 +2,10 @@
 # SPDX-License-Identifier: MIT
 # Install what prism needs from Debian, if anything is missing.
 #   tools/setup.sh          build, test and example needs
-#   tools/setup.sh --bench  also POV-Ray and matplotlib, for bench/
+#   tools/setup.sh --bench  also POV-Ray, Blender (Cycles, about 700 MB), nanoflann, matplotlib and PIL, for bench/
 set -euo pipefail
 packages=(g++ cmake ninja-build meson python3 libglm-dev doctest-dev libstb-dev colord-data)
-if [[ "${1:-}" == "--bench" ]]; then packages+=(povray python3-matplotlib libnanoflann-dev); fi
+if [[ "${1:-}" == "--bench" ]]; then packages+=(povray blender python3-matplotlib python3-pil libnanoflann-dev); fi
 
 missing=()
 for p in "${packages[@]}"; do
