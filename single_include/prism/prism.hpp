@@ -6246,7 +6246,9 @@ public:
         /// The global map's estimate where it is read directly (gather_rays = 0); direct
         /// and caustic photons are left out, shadow rays and the caustic map count them.
         Estimator global{.radius = 0.25f, .excluded = Photon::direct | Photon::caustic};
-        int gather_rays = 32; ///< final-gather rays per diffuse hit (stratified); 0 reads the global map directly
+        /// Final-gather rays per diffuse hit, stratified in m x n cells (n about pi m, m n
+        /// at most this); 0 reads the global map directly.
+        int gather_rays = 32;
         /// An irradiance cache in front of the final gather (cache_irradiance builds it
         /// for a camera): gathers of `rays` rays at records placed where the camera
         /// needs them, interpolated with their gradients in between.
@@ -6308,17 +6310,17 @@ private:
     }
 
 public:
-
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
     [[nodiscard]] const IrradianceCache<T>& irradiance_cache() const noexcept { return cache_; }
 
     /// Build the irradiance cache for what `camera` sees at `render`'s size, before
-    /// rendering with it: pixels on grids of halving spacing (the coarsest about an
-    /// eighth of the image) are visited, and where the first diffuse surface a pixel's
-    /// centre sees is not yet reached by a record, a record is gathered there. Each
-    /// grid's records are gathered in parallel, each from its own random stream, and
-    /// added in pixel order: the cache is the same for any thread count. Surfaces the
-    /// camera sees only through mirrors or glass keep their own gathers.
+    /// rendering with it: pixels on grids of halving spacing (the coarsest about a
+    /// sixteenth of the image) are visited, and where the first diffuse surface a
+    /// pixel's centre sees (through mirrors and glass, along the stronger branch) is not
+    /// yet reached by a record, a record is gathered there. Each grid's records are
+    /// gathered in parallel, each from its own random stream, and added in pixel order:
+    /// the cache is the same for any thread count. Points no record reaches (the weaker
+    /// branch of a glass, points inside glass) keep their own gathers.
     void cache_irradiance(const Camera<T>& camera, const RenderConfig& render)
     {
         if (config_.gather_rays == 0) detail::throw_invalid("PhotonMapper cache_irradiance needs gather_rays > 0 (the cache sits in front of the final gather)");
