@@ -89,12 +89,13 @@ TEST_CASE("light leaks at a corner: the wall's photons face another way; a disk 
     // A dark floor (x > 0, 0.01 per photon on a 0.02 grid: E = 25) meets a bright wall
     // x = 0 whose photons arrive from (0.6, 0.8, 0), up and to the right: they would pass
     // a test of their arrival direction against the floor's normal, and leak onto the
-    // floor next to the wall. Their surface faces +x, 90 degrees from the floor's: out.
+    // floor next to the wall. Their surface faces (1, 0.2, 0), 79 degrees from the
+    // floor's (a wall leaning back a little): out, at the default 60 degrees.
     std::vector<Photon> photons;
     const float h = 0.02f;
     floor_grid(photons, 0, 1, h, 0.01f, {0, 1, 0});
     for (float y = h / 2; y < 1; y += h)
-        for (float z = -1 + h / 2; z < 1; z += h) photons.push_back({{0, y, z}, Rgb<float>(0.1f), {0.6f, 0.8f, 0}, {1, 0, 0}, 0});
+        for (float z = -1 + h / 2; z < 1; z += h) photons.push_back({{0, y, z}, Rgb<float>(0.1f), {0.6f, 0.8f, 0}, normalize(Vec3<float>{1, 0.2f, 0}), 0});
     // A bright ledge 0.05 above the floor beyond the wall (x < 0), facing up as the floor does.
     for (float x = -1 + h / 2; x < 0; x += h)
         for (float z = -1 + h / 2; z < 1; z += h) photons.push_back({{x, 0.05f, z}, Rgb<float>(0.1f), {0, 1, 0}, {0, 1, 0}, 0});
@@ -113,9 +114,8 @@ TEST_CASE("light leaks at a corner: the wall's photons face another way; a disk 
     // but no leak; and so does the sphere once the ledge is 0.25 away.
     const float disk = map.irradiance({0.1f, 0, 0}, up, {.radius = 0.2f, .max_height_ratio = 0.04f}).x;
     CHECK(disk == doctest::Approx(0.8045f * floor_e).epsilon(0.04));
-    // With every surface facing up's way admitted (surface_cos 0), the wall would leak too
-    // (its normal, quantised, is 1.5e-5 off the perpendicular); a point 0.19 from it (and
-    // 0.206 from the ledge) sees the wall's photons only then.
+    // With every surface facing up's way admitted (surface_cos 0), the wall leaks too: a
+    // point 0.19 from it (and 0.206 from the ledge) sees the wall's photons only then.
     const float kept_out = map.irradiance({0.19f, 0, 0}, up, {.radius = 0.2f}).x;
     CHECK(kept_out == doctest::Approx(map.irradiance({0.19f, 0, 0}, up, {.radius = 0.2f, .max_height_ratio = 0.04f}).x));
     CHECK(map.irradiance({0.19f, 0, 0}, up, {.radius = 0.2f, .surface_cos = 0.0f}).x > 1.5f * kept_out);
