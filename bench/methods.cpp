@@ -3,11 +3,16 @@
 // bench/methods_vs_time.py: writes the image as PFM and prints "seconds S" (the whole
 // render: photons, cache, passes or paths, and camera rays), 2 threads.
 //
-// usage: bench_methods diffuse|glass METHOD EFFORT OUT.pfm [SIZE] [SEED]
-//   METHOD direct | gather | cache | progressive | reference; EFFORT is, per method:
+// usage: bench_methods diffuse|glass|povray METHOD EFFORT OUT.pfm [SIZE] [SEED]
+//   povray is the glass box in POV-Ray's model (shared/scenes/cornell_caustics.pov: its
+//   no-falloff light, direct light and caustics only; no global photons, and the
+//   reference takes no diffuse bounce).
+//   METHOD direct | gather | cache | progressive | reference | mask; EFFORT is, per method:
 //   direct: photons (global and caustic); gather: final-gather rays (2e5 photons);
 //   cache: rays per record (2e5 photons); progressive: passes (5e4 + 5e4 photons each);
-//   reference: samples per pixel (and as many light paths)
+//   reference: samples per pixel (and as many light paths); mask: samples per pixel,
+//   and the image is the share of each pixel whose camera ray meets a diffuse surface
+//   first (1 where the pixel sees only walls).
 #include "common.hpp"
 #include "methods.hpp"
 #include "scenes/cornell.hpp"
@@ -15,6 +20,7 @@
 #include <prism/io/image.hpp>
 
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 namespace {
@@ -29,12 +35,25 @@ double render_one(const SceneT& scene, examples::Options options, const std::str
     return seconds;
 }
 
+/// The share of a pixel whose camera rays meet a diffuse surface first (an Integrator).
+template <class SceneT>
+struct SeesDiffuseFirst {
+    using scalar_type = float;
+    const SceneT* scene;
+    [[nodiscard]] prism::Rgb<float> radiance(const prism::Ray<float>& ray, prism::Pcg32&) const noexcept
+    {
+        const auto hit = scene->closest_hit(ray, {0.0f, std::numeric_limits<float>::infinity()});
+        const bool diffuse = hit && scene->visit_material(*hit, []<class M>(const M&) { return prism::has_diffuse<M> && !prism::reflects<M> && !prism::transmits<M>; });
+        return prism::Rgb<float>(diffuse ? 1.0f : 0.0f);
+    }
+};
+
 } // namespace
 
 int main(int argc, char** argv)
 {
     if (argc < 5) {
-        std::fprintf(stderr, "usage: bench_methods diffuse|glass METHOD EFFORT OUT.pfm [SIZE] [SEED]\n");
+        std::fprintf(stderr, "usage: bench_methods diffuse|glass|povray METHOD EFFORT OUT.pfm [SIZE] [SEED]\n");
         return 1;
     }
     const std::string which = argv[1], method = argv[2], out = argv[4];
@@ -47,23 +66,31 @@ int main(int argc, char** argv)
     options.render.spp = 4;
     options.method = method;
     options.photons = 200000;
-    options.caustic_photons = which == "glass" ? 200000 : 0;
+    const bool povray = which == "povray", glass = which == "glass" || povray;
+    options.povray_light = povray;
+    options.caustic_photons = glass ? 200000 : 0;
     if (method == "direct") {
         options.photons = std::size_t(effort);
-        if (which == "glass") options.caustic_photons = std::size_t(effort);
+        if (glass) options.caustic_photons = std::size_t(effort);
     } else if (method == "gather" || method == "cache") {
         options.gather = method == "gather" ? int(effort) : 64;
     } else if (method == "progressive") {
         options.passes = std::size_t(effort);
         options.photons = 50000;
-        if (which == "glass") options.caustic_photons = 50000;
+        if (glass) options.caustic_photons = 50000;
         options.render.spp = 1;
-    } else if (method == "reference") {
+    } else if (method == "reference" || method == "mask") {
         options.render.spp = int(effort);
     }
+    if (povray) options.photons = 0; // POV-Ray's model: no global light
     const auto run = [&](const auto& scene) {
         // The cache's rays per record are the effort: set through a mapper config the
         // examples' helper does not expose, so render here.
+        if (method == "mask") {
+            const prism::Film film = prism::render(scenes::cornell_camera<float>(), SeesDiffuseFirst<std::remove_cvref_t<decltype(scene)>>{&scene}, options.render);
+            prism::write_pfm(film, out);
+            return 0.0;
+        }
         if (method == "cache") {
             using Mapper = prism::PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
             const auto start = std::chrono::steady_clock::now();
@@ -78,7 +105,7 @@ int main(int argc, char** argv)
         }
         return render_one(scene, options, out);
     };
-    const double seconds = which == "glass" ? run(scenes::cornell_scene<float>(true)) : run(scenes::cornell_diffuse_scene<float>());
+    const double seconds = glass ? run(scenes::cornell_scene<float>(!povray)) : run(scenes::cornell_diffuse_scene<float>());
     std::printf("seconds %.4f\n", seconds);
     return 0;
 }

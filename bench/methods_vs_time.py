@@ -1,10 +1,16 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 # Error against time for every global illumination method prism has, against prism's
-# unbiased reference (path tracing + light tracing at high effort), and Blender's
-# Cycles on the diffuse box, all in one run on 2 threads:
+# unbiased reference (path tracing + light tracing at high effort), Blender's Cycles on
+# the diffuse box and POV-Ray 3.7 on its own caustics scene, all in one run on 2 threads:
 #   diffuse  shared/scenes/cornell_diffuse.md (Cycles renders it too)
 #   glass    the Cornell box with the glass and mirror balls, physical light
+#   povray   shared/scenes/cornell_caustics.pov in POV-Ray's model: its no-falloff light,
+#            direct light and caustics only (no radiosity); prism's reference takes no
+#            diffuse bounce. POV-Ray writes linear Radiance HDR; its time is the Photon
+#            and Trace Times it reports. Errors are over the pixels that see only walls
+#            (86 %): a caustic seen in the mirror ball (E S D S L) is a path no unbiased
+#            method samples, and POV-Ray adds Phong highlights to the balls.
 # Errors are against the converged image: the reference's own noise, measured from its
 # two halves, is taken out in quadrature (the raw RMSE is in the CSV too). Writes bench/results/methods_vs_time.csv; bench/plot.py draws methods_vs_time.png.
 #
@@ -13,6 +19,7 @@ import argparse
 import csv
 import math
 import os
+import re
 import struct
 import subprocess
 import sys
@@ -38,9 +45,46 @@ def write_pfm(path, image):
         f.write(struct.pack("<%df" % len(data), *data))
 
 
-def rmse(a, b):
+def read_hdr(path):
+    """A Radiance RGBE picture (new-style run-length scanlines, as POV-Ray writes), as
+    read_pfm's (width, height, values), bottom row first."""
+    with open(path, "rb") as f:
+        data = f.read()
+    start = data.index(b"\n\n") + 2
+    end = data.index(b"\n", start)
+    fields = data[start:end].split()
+    assert fields[0] == b"-Y" and fields[2] == b"+X", fields
+    h, w = int(fields[1]), int(fields[3])
+    pos, rows = end + 1, []
+    for _ in range(h):
+        assert data[pos] == 2 and data[pos + 1] == 2 and (data[pos + 2] << 8 | data[pos + 3]) == w, "not a run-length scanline"
+        pos += 4
+        channels = []
+        for _ in range(4):
+            line = bytearray()
+            while len(line) < w:
+                n = data[pos]
+                if n > 128:
+                    line += bytes([data[pos + 1]]) * (n - 128)
+                    pos += 2
+                else:
+                    line += data[pos + 1:pos + 1 + n]
+                    pos += 1 + n
+            channels.append(line)
+        row = []
+        for r, g, b, e in zip(*channels):
+            scale = math.ldexp(1.0, e - 136) if e else 0.0
+            row += [(r + 0.5) * scale if e else 0.0, (g + 0.5) * scale if e else 0.0, (b + 0.5) * scale if e else 0.0]
+        rows.append(row)
+    return w, h, [v for row in reversed(rows) for v in row]
+
+
+def rmse(a, b, mask=None):
     assert a[0] == b[0] and a[1] == b[1]
-    return math.sqrt(sum((x - y) ** 2 for x, y in zip(a[2], b[2])) / len(a[2]))
+    if mask is None:
+        return math.sqrt(sum((x - y) ** 2 for x, y in zip(a[2], b[2])) / len(a[2]))
+    pairs = [(x, y) for x, y, m in zip(a[2], b[2], mask) if m]
+    return math.sqrt(sum((x - y) ** 2 for x, y in pairs) / len(pairs))
 
 
 COLUMNS = ["rmse", "rmse_raw", "reference_noise", "rmse_display", "rmse_display_raw", "reference_noise_display"]
@@ -53,19 +97,20 @@ class Scorer:
     saturates): there a light's hot spot and a caustic's peak, a few hundred pixels that
     hold most of the linear error, count as what a viewer sees."""
 
-    def __init__(self, halves):
+    def __init__(self, halves, mask=None):
         w, h = halves[0][0], halves[0][1]
+        self.mask = mask  # per value: True where it counts (None: everywhere)
         self.ref = (w, h, [(a + b) / 2 for a, b in zip(halves[0][2], halves[1][2])])
         clamp = lambda img: (img[0], img[1], [min(v, 1.0) for v in img[2]])
         clamped = [clamp(x) for x in halves]
         self.ref_display = (w, h, [(a + b) / 2 for a, b in zip(clamped[0][2], clamped[1][2])])
-        self.noise = rmse(*halves) / 2
-        self.display_noise = rmse(*clamped) / 2
+        self.noise = rmse(*halves, mask) / 2
+        self.display_noise = rmse(*clamped, mask) / 2
         self.clamp = clamp
 
     def __call__(self, image):
-        raw = rmse(image, self.ref)
-        display = rmse(self.clamp(image), self.ref_display)
+        raw = rmse(image, self.ref, self.mask)
+        display = rmse(self.clamp(image), self.ref_display, self.mask)
         fix = lambda e, n: math.sqrt(max(e * e - n * n, 0.0))
         return (fix(raw, self.noise), raw, self.noise, fix(display, self.display_noise), display, self.display_noise)
 
@@ -77,6 +122,28 @@ def run(build, scene, method, effort, out, size, seed=0):
         if line.startswith("seconds "):
             return float(line.split()[1])
     raise RuntimeError(result.stdout)
+
+
+POVRAY_SCENE = os.path.join(root, "..", "shared", "scenes", "cornell_caustics.pov")
+# POV-Ray's anti-aliasing for a pixel's mean, as prism's references: every pixel (threshold
+# 0) on a jittered 2 x 2 grid, about prism's 4 samples per pixel. Without it POV-Ray
+# samples each pixel's centre, and edges and shadow boundaries differ from a pixel's mean.
+POVRAY_AA = ["+A0.0", "+AM1", "+R2", "+J"]
+
+
+def povray(count, out, size, antialias):
+    """POV-Ray's picture with `count` photons (its default gather); returns its Photon
+    plus Trace Time."""
+    folder = os.path.dirname(out)
+    with open(POVRAY_SCENE) as f:
+        text = f.read().replace("count 200000 ", "count %d " % count)
+    pov = os.path.join(folder, "cornell_caustics_%d.pov" % count)
+    with open(pov, "w") as f:
+        f.write(text)
+    result = subprocess.run(["povray", "-D", "+W%d" % size, "+H%d" % size, "+WT2", "-I" + pov, "+O" + out, "+FH", "Declare=PHOTONS=1"]
+                            + (POVRAY_AA if antialias else ["-A"]), capture_output=True, text=True, check=True)
+    seconds = lambda name: float(re.search(name + r" Time:.*\(([0-9.]+) seconds\)", result.stderr).group(1))  # noqa: E731
+    return seconds("Photon") + seconds("Trace")
 
 
 def cycles(spp, out, seed, size):
@@ -93,10 +160,12 @@ def main():
     ap.add_argument("--reference-spp", type=int, default=4096)
     ap.add_argument("--quick", action="store_true", help="fewer and smaller runs (a smoke test)")
     ap.add_argument("--rescore", action="store_true", help="score the renders already in BUILD_DIR/methods_vs_time again (no rendering)")
-    ap.add_argument("--methods", help="comma-separated: re-run only these (direct, gather, cache, progressive, reference, cycles), "
+    ap.add_argument("--methods", help="comma-separated: re-run only these (direct, gather, cache, progressive, reference, cycles, povray), "
                     "keeping the CSV's other rows and the references already rendered")
+    ap.add_argument("--scenes", default="diffuse,glass,povray", help="comma-separated: run only these scenes, keeping the CSV's other rows")
     args = ap.parse_args()
     only = set(args.methods.split(",")) if args.methods else None
+    scenes = args.scenes.split(",")
     if args.rescore:
         return rescore(os.path.join(args.build, "methods_vs_time"))
     work = os.path.join(args.build, "methods_vs_time")
@@ -112,8 +181,15 @@ def main():
     if args.quick:
         efforts = {m: e[:2] for m, e in efforts.items()}
         cycles_spp = cycles_spp[:2]
+    povray_counts = [10000, 30000, 100000, 300000, 1000000, 3000000]
+    per_scene = {"diffuse": efforts, "glass": efforts,
+                 "povray": {"direct": [10000, 30000, 100000, 300000, 1000000, 3000000], "progressive": efforts["progressive"],
+                            "reference": efforts["reference"]}}
+    if args.quick:
+        povray_counts = povray_counts[:2]
+        per_scene["povray"] = {m: e[:2] for m, e in per_scene["povray"].items()}
     rows = []
-    for scene in ["diffuse", "glass"]:
+    for scene in scenes:
         # The reference: two halves from different seeds, averaged. Their difference
         # measures its own noise, sigma^2 = RMSE(h1, h2)^2 / 4, which every error
         # against it contains: E[(x - ref)^2] = MSE(x) + sigma^2. The charts show
@@ -128,10 +204,10 @@ def main():
         w, h = halves[0][0], halves[0][1]
         ref = (w, h, [(a + b) / 2 for a, b in zip(halves[0][2], halves[1][2])])
         write_pfm(os.path.join(work, "%s_reference.pfm" % scene), ref)
-        score = Scorer(halves)
+        score = Scorer(halves, wall_mask(args.build, work, scene, args.size))
         print("%s: reference, %d spp in two halves, %.1f s, its own noise %.5f (display range %.5f)" %
               (scene, args.reference_spp, ref_seconds, score.noise, score.display_noise), flush=True)
-        for method, levels in efforts.items():
+        for method, levels in per_scene[scene].items():
             if only and method not in only:
                 continue
             for effort in levels:
@@ -148,15 +224,41 @@ def main():
                     print("%s: Cycles %d spp: %.2f s, RMSE %.5f, in the display range %.5f" % (scene, spp, seconds, rows[-1][4], rows[-1][7]), flush=True)
             except (FileNotFoundError, subprocess.CalledProcessError) as e:
                 print("Cycles not run (%s): install blender (tools/setup.sh --bench)" % e, file=sys.stderr)
+        if scene == "povray" and (not only or "povray" in only):
+            try:
+                for antialias in (False, True):
+                    name = "POV-Ray, anti-aliased" if antialias else "POV-Ray"
+                    for count in povray_counts:
+                        out = os.path.join(work, "povray_%d%s.hdr" % (count, "_aa" if antialias else ""))
+                        seconds = povray(count, out, args.size, antialias)
+                        rows.append((scene, name, count, seconds) + score(read_hdr(out)))
+                        print("%s: %s %d photons: %.2f s, RMSE %.5f, in the display range %.5f" % (scene, name, count, seconds, rows[-1][4], rows[-1][7]),
+                              flush=True)
+            except (FileNotFoundError, subprocess.CalledProcessError) as e:
+                print("POV-Ray not run (%s): install povray (tools/setup.sh --bench)" % e, file=sys.stderr)
     path = os.path.join(here, "results", "methods_vs_time.csv")
-    if only and os.path.exists(path):  # keep the rows of the methods not re-run
+    if (only or len(scenes) < 3) and os.path.exists(path):  # keep the rows not re-run
         with open(path) as f:
-            kept = [r for r in csv.DictReader(f)
-                    if r["method"].replace("prism ", "").lower() not in only and not (r["method"] == "Cycles" and "cycles" in only)]
+            kept = [r for r in csv.DictReader(f) if r["scene"] not in scenes or (only and method_key(r["method"]) not in only)]
         rows = [(r["scene"], r["method"], r["effort"], float(r["seconds"])) + tuple(float(r[k]) for k in COLUMNS) for r in kept] + rows
     write_csv(path, rows)
     print("wrote", path)
     strip(work, efforts, cycles_spp)
+
+
+def method_key(method):
+    """A CSV row's method as --methods names it: direct ... reference, cycles, povray."""
+    return method.replace("prism ", "").split(",")[0].replace("-", "").lower()
+
+
+def wall_mask(build, work, scene, size):
+    """The values that count in the povray scene's errors: pixels whose every sample
+    (8 x 8) sees a wall first. None (all) for the other scenes."""
+    if scene != "povray":
+        return None
+    out = os.path.join(work, "povray_mask.pfm")
+    run(build, scene, "mask", 64, out, size)
+    return [v == 1.0 for v in read_pfm(out)[2]]
 
 
 def write_csv(path, rows):
@@ -171,12 +273,20 @@ def rescore(work):
     path = os.path.join(here, "results", "methods_vs_time.csv")
     with open(path) as f:
         old = list(csv.DictReader(f))
-    scorers = {scene: Scorer([read_pfm(os.path.join(work, "%s_reference_%d.pfm" % (scene, seed))) for seed in (101, 102)]) for scene in ("diffuse", "glass")}
+    masks = {scene: [v == 1.0 for v in read_pfm(os.path.join(work, "povray_mask.pfm"))[2]] if scene == "povray" else None
+             for scene in ("diffuse", "glass", "povray")}
+    scorers = {scene: Scorer([read_pfm(os.path.join(work, "%s_reference_%d.pfm" % (scene, seed))) for seed in (101, 102)], masks[scene])
+               for scene in {r["scene"] for r in old}}
     rows = []
     for r in old:
-        method = r["method"].replace("prism ", "")
-        name = "cycles_%s.pfm" % r["effort"] if method == "Cycles" else "%s_%s_%s.pfm" % (r["scene"], method, r["effort"])
-        rows.append((r["scene"], r["method"], r["effort"], float(r["seconds"])) + scorers[r["scene"]](read_pfm(os.path.join(work, name))))
+        method = method_key(r["method"])
+        if method == "cycles":
+            image = read_pfm(os.path.join(work, "cycles_%s.pfm" % r["effort"]))
+        elif method == "povray":
+            image = read_hdr(os.path.join(work, "povray_%s%s.hdr" % (r["effort"], "_aa" if "anti" in r["method"] else "")))
+        else:
+            image = read_pfm(os.path.join(work, "%s_%s_%s.pfm" % (r["scene"], method, r["effort"])))
+        rows.append((r["scene"], r["method"], r["effort"], float(r["seconds"])) + scorers[r["scene"]](image))
     write_csv(path, rows)
     print("rescored", path)
 
@@ -190,18 +300,20 @@ def strip(work, efforts, cycles_spp):
     srgb = lambda v: int(255 * max(0.0, min(1.0, (12.92 * v if v <= 0.0031308 else 1.055 * v ** (1 / 2.4) - 0.055))) + 0.5)
 
     def picture(path):
-        w, h, d = read_pfm(path)
+        w, h, d = read_hdr(path) if path.endswith(".hdr") else read_pfm(path)
         img = Image.new("RGB", (w, h))
         img.putdata([tuple(srgb(d[3 * ((h - 1 - i // w) * w + i % w) + k]) for k in range(3)) for i in range(w * h)])
         return img
 
     rows = []
-    for scene in ["glass", "diffuse"]:
+    for scene in ["glass", "diffuse", "povray"]:
         cells = [("direct map, 1e6", "%s_direct_1000000.pfm" % scene), ("final gather, 64", "%s_gather_64.pfm" % scene),
                  ("cached gather", "%s_cache_4096.pfm" % scene), ("progressive, 64", "%s_progressive_64.pfm" % scene),
                  ("reference", "%s_reference.pfm" % scene)]
         if scene == "diffuse":
             cells.append(("Cycles %d spp" % cycles_spp[-1], "cycles_%d.pfm" % cycles_spp[-1]))
+        if scene == "povray":
+            cells = [("POV-Ray's model: direct map, 1e6", cells[0][1]), cells[3], cells[4], ("POV-Ray, 1e6, anti-aliased", "povray_1000000_aa.hdr")]
         rows.append([(label, os.path.join(work, name)) for label, name in cells if os.path.exists(os.path.join(work, name))])
     if not rows or not rows[0]:
         return

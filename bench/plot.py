@@ -208,17 +208,18 @@ def photon_chart(rows):
 
 
 def leak_chart(rows):
-    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    fig, ax = plt.subplots(figsize=(7.5, 4.6))
     for name in dict.fromkeys(r["config"] for r in rows):
-        line = [r for r in rows if r["config"] == name]
-        ax.plot([int(r["photons"]) for r in line], [float(r["rmse"]) for r in line], "o-", label=name)
+        line = sorted((float(r["time"]), float(r["rmse"])) for r in rows if r["config"] == name)
+        style = "o--" if "," in name else "s-"  # the global map's shapes dashed, the newer estimators solid
+        ax.plot([p[0] for p in line], [p[1] for p in line], style, label=name)
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel("global photons")
-    ax.set_ylabel("RMSE against 1e7 photons, 8-bit sRGB")
-    ax.set_title("global map read directly (r = 0.25): sphere or disk, filters", fontsize=10)
+    ax.set_xlabel("render time (s, 2 threads)")
+    ax.set_ylabel("RMSE, 8-bit sRGB, against path tracing\n(its noise removed)")
+    ax.set_title("diffuse box: global map read directly (r = 0.25; sphere or disk, filters)\nand issue 13's estimators", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=7)
     save(fig, "photon_leaks.png")
 
 
@@ -329,9 +330,11 @@ def thin_film_chart(rows):
 def methods_vs_time_chart(rows):
     """Error against prism's reference vs time: a column per scene, linear radiance above,
     the display range (clamped to 1) below; a curve per method."""
-    scenes = [("diffuse", "diffuse Cornell box (Cycles renders it too)"), ("glass", "Cornell box, glass and mirror balls")]
+    scenes = [("diffuse", "diffuse Cornell box (Cycles renders it too)"), ("glass", "Cornell box, glass and mirror balls"),
+              ("povray", "glass box in POV-Ray's model (direct + caustics),\nover the pixels that see walls")]
+    scenes = [(scene, title) for scene, title in scenes if any(r["scene"] == scene for r in rows)]
     metrics = [("rmse", "RMSE, linear radiance"), ("rmse_display", "RMSE, display range (radiance clamped to 1)")]
-    fig, axes = plt.subplots(2, 2, figsize=(12, 9))
+    fig, axes = plt.subplots(2, len(scenes), figsize=(6 * len(scenes), 9), squeeze=False)
     for column, (scene, title) in enumerate(scenes):
         methods = []
         for r in rows:
@@ -342,7 +345,7 @@ def methods_vs_time_chart(rows):
             for method in methods:
                 points = sorted((float(r["seconds"]), float(r[key])) for r in rows if r["scene"] == scene and r["method"] == method)
                 points = [p for p in points if p[1] > 0]
-                style = "k--" if method == "Cycles" else "-"
+                style = {"Cycles": "k--", "POV-Ray": "k--", "POV-Ray, anti-aliased": "k:"}.get(method, "-")
                 ax.loglog([p[0] for p in points], [p[1] for p in points], style, marker="o", label=method)
             ax.set_xlabel("render time (s, 2 threads)")
             ax.set_ylabel(ylabel + "\nagainst prism's reference, its noise removed")

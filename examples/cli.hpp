@@ -34,7 +34,7 @@ struct Options {
     prism::Filter filter = prism::Filter::cone;
     double max_height_ratio = 1.0; ///< < 1 flattens the estimate's sphere to a disk (against leaks)
     std::size_t visibility = 0;   ///< > 0: skip shadow rays where this many nearest photons agree
-    bool povray_light = false;    ///< POV-Ray's no-falloff light, as its scene has it
+    bool povray_light = false;    ///< POV-Ray's model: its no-falloff light, direct light and caustics only
     /// How indirect light is found: direct (the global map read at the point), gather
     /// (final gathering), cache (final gathering behind an irradiance cache),
     /// progressive (progressive photon mapping), reference (path tracing + light tracing)
@@ -80,7 +80,8 @@ inline void print_photon_help(const Options& defaults)
                 "  --filter F           box, cone or gaussian, for both estimates (default cone)\n"
                 "  --max-height-ratio H keep photons within H R of the tangent plane, < 1 against light leaks (default 1)\n"
                 "  --visibility N       skip shadow rays where the N nearest global photons agree (default 0 = never)\n"
-                "  --light L            physical (inverse-square) or povray (no falloff, as the .pov file) (default physical)\n"
+                "  --light L            physical (inverse-square) or povray (POV-Ray's model: no falloff, as the .pov file,\n"
+                "                       direct light and caustics only) (default physical)\n"
                 "  --method M           indirect light by: direct (the global map read at the point), gather (final gathering),\n"
                 "                       cache (final gathering behind an irradiance cache), progressive (progressive photon\n"
                 "                       mapping: --photons and --caustic-photons per pass, --radius and --global-radius the first\n"

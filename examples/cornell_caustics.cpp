@@ -4,9 +4,10 @@
 // behind an irradiance cache; --method chooses another estimator), and pictures of where
 // the global and the caustic photons landed (the seed's figures 13 and 15).
 //
-// With --povray (POV-Ray's picture with Declare=PHOTONS=1) it renders what POV-Ray does:
-// its no-falloff light and caustics only (POV-Ray's scene has no radiosity, so no global
-// map), and writes prism | POV-Ray | difference.
+// With --light povray it renders what POV-Ray does: its no-falloff light, direct light
+// and caustics only (POV-Ray's scene has no radiosity, so no global map, and the
+// reference takes no diffuse bounce). --povray PNG (POV-Ray's picture with
+// Declare=PHOTONS=1) implies it and writes prism | POV-Ray | difference.
 #include "cli.hpp"
 #include "compare.hpp"
 #include "methods.hpp"
@@ -54,12 +55,15 @@ int main(int argc, char** argv)
         if (!examples::parse(argc, argv, options, "the Cornell box with photon-mapped caustics and colour bleeding", {.povray = true, .photons = true})) return 0;
         if (!options.povray.empty()) {
             options.povray_light = true;
-            options.photons = 0;
+            if (options.method == "gather" || options.method == "cache") options.method = "direct";
         }
-        if (options.povray_light && options.method != "direct") {
-            // POV-Ray's scene has no radiosity: its light is caustics and direct light only.
-            if (!options.povray.empty()) options.method = "direct";
-            else throw std::invalid_argument("--light povray (POV-Ray's no-falloff light, no global light) renders with --method direct only: add --method direct");
+        if (options.povray_light) {
+            // POV-Ray's scene has no radiosity: its light is direct light and caustics only,
+            // so no global map (render_by_method: no diffuse bounce for the reference).
+            if (options.method == "gather" || options.method == "cache")
+                throw std::invalid_argument("--light povray (POV-Ray's model: direct light and caustics, no global light) renders with --method direct, "
+                                            "progressive or reference, got '" + options.method + "'");
+            options.photons = 0;
         }
         const auto scene = scenes::cornell_scene<float>(!options.povray_light);
         const auto camera = scenes::cornell_camera<float>();

@@ -16,6 +16,7 @@ namespace examples {
 ///   cache        final gathering behind an irradiance cache built for this camera
 ///   progressive  options.passes passes of progressive photon mapping (photons per pass)
 ///   reference    path tracing (options.render.spp) plus light tracing (as many paths)
+/// With options.povray_light (POV-Ray's model) the reference takes no diffuse bounce.
 template <class SceneT>
 prism::Film render_by_method(const char* name, const SceneT& scene, const prism::Camera<typename SceneT::scalar_type>& camera, const Options& options)
 {
@@ -30,12 +31,14 @@ prism::Film render_by_method(const char* name, const SceneT& scene, const prism:
                                    .visibility_k = options.visibility};
     const std::string& method = options.method;
     if (method == "reference") {
-        const prism::Film paths = prism::render(camera, prism::PathTracer(scene), options.render);
+        // POV-Ray's model lights the first diffuse surface only: no diffuse bounce.
+        const int bounces = options.povray_light ? 0 : 256;
+        const prism::Film paths = prism::render(camera, prism::PathTracer(scene, {.max_diffuse_bounces = bounces}), options.render);
         const double traced = seconds();
         const std::size_t light_paths = std::size_t(options.render.spp) * std::size_t(options.render.width) * std::size_t(options.render.height);
         const prism::Film light = prism::light_trace(scene, camera,
                                                      {.width = options.render.width, .height = options.render.height, .paths = light_paths,
-                                                      .seed = options.render.seed, .threads = options.render.threads});
+                                                      .max_diffuse_bounces = bounces, .seed = options.render.seed, .threads = options.render.threads});
         prism::Film sum(paths.width(), paths.height());
         for (int y = 0; y < sum.height(); ++y)
             for (int x = 0; x < sum.width(); ++x) sum.set(x, y, paths.at(x, y) + light.at(x, y));

@@ -5256,13 +5256,14 @@ struct WalkVertex {
     const Vec3<T>& direction; ///< unit, arriving
     const Rgb<T>& power;      ///< what the path carries here, after the medium it crossed
     bool direct;              ///< nothing scattered it yet (a photon's first hit)
-    bool specular_only;       ///< every scattering so far was specular
+    int diffuse_bounces;      ///< diffuse scatterings so far (0: every scattering so far was specular)
     bool first_specular;      ///< the first scattering was specular (the vertex next to the path's start: L S ...)
     T travelled;              ///< the path's length so far
     T wavelength;             ///< 0 while white
     const MediumStack& media; ///< the transmissive objects the path is inside of
 
     [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
+    [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
 };
 
 /// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
@@ -5274,7 +5275,8 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                  Rgb<typename SceneT::scalar_type> power, Pcg32& rng, int max_bounces, OnDiffuse&& on_diffuse, OnEscape&& on_escape)
 {
     using T = typename SceneT::scalar_type;
-    bool direct = true, specular_only = true, first_specular = false;
+    bool direct = true, first_specular = false;
+    int diffuse_bounces = 0;
     T travelled = T(0);
     T wavelength = T(0); // white until a dispersive interface splits it
     MediumStack media;   // the transmissive objects the path is inside of
@@ -5285,7 +5287,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         const auto hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, &path)
                                        : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
         if (!hit) {
-            on_escape(segment, power, specular_only);
+            on_escape(segment, power, diffuse_bounces == 0);
             return;
         }
         const Crossing<T>& c = hit->crossing;
@@ -5296,7 +5298,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             // What the medium it travelled in let through, before anything else.
             attenuate_segment(scene, media, material, c, segment, power);
             if constexpr (has_diffuse<M>) {
-                if (!on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, specular_only, first_specular, travelled, wavelength, media})) return Next::absorbed;
+                if (!on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media})) return Next::absorbed;
             }
             // The media beyond the surface, the object whose medium lies on its far
             // side, and false interfaces (inside a medium of higher priority) passed.
@@ -5326,7 +5328,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             const auto next = scatter_photon(material, c, d, n, power, rng, wavelength, index_of(scene, outside, wavelength));
             if (!next) return Next::absorbed;
             ray = spawn_ray(c.point, c.error, c.normal, next->direction);
-            if (next->diffuse) specular_only = false;
+            if (next->diffuse) ++diffuse_bounces;
             if (direct) first_specular = !next->diffuse;
             if constexpr (transmits<M>) {
                 if (dot(next->direction, n) < T(0)) media = face.beyond; // refracted
@@ -5521,11 +5523,11 @@ private:
         emit(emitters, total_power, count, i, caustic_pass, [&](const auto&, const WalkVertex<T>& at, const Rgb<T>& power) {
             const Crossing<T>& c = at.crossing();
             if (caustic_pass) {
-                if (!at.direct && at.specular_only) out.push_back(photon(c, power, at.direction, Photon::caustic));
+                if (!at.direct && at.specular_only()) out.push_back(photon(c, power, at.direction, Photon::caustic));
                 return false;
             }
             std::uint8_t flags = at.direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
-            if (!at.direct && at.specular_only) flags |= Photon::caustic;
+            if (!at.direct && at.specular_only()) flags |= Photon::caustic;
             out.push_back(photon(c, power, at.direction, flags));
             if (at.direct && config_.shadow_photons) store_shadow_photons(c, at.direction, out);
             return true;
@@ -5918,6 +5920,7 @@ struct LightTracerConfig {
     int height = 512;
     std::size_t paths = 1000000; ///< light paths aimed at the specular objects
     int max_bounces = 256;       ///< surfaces a path may meet; Russian roulette ends it long before
+    int max_diffuse_bounces = 256; ///< as PathTracer's: 0 joins a path to the camera at its first diffuse surface only
     std::uint64_t seed = 0;
     unsigned threads = 0;        ///< 0 = all hardware threads
     int dispersion_bands = SpectralBands<float>::max_count; ///< as PhotonTracerConfig's
@@ -5931,6 +5934,8 @@ template <class SceneT, class Air = StraightAir>
                                const Air& air = {})
 {
     using T = typename SceneT::scalar_type;
+    if (config.max_diffuse_bounces < 0)
+        detail::throw_invalid("LightTracerConfig max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
     const CameraRays<T> rays = camera.rays(config.width, config.height);
     const detail::PhotonTracer<SceneT, Air> tracer(scene,
                                                    {.global_photons = 0,
@@ -5952,19 +5957,20 @@ template <class SceneT, class Air = StraightAir>
             // has a delta lobe, the scattering here decides whose the path is.
             if (at.direct) return reflects<M> || transmits<M>;
             if (!at.first_specular) return false;
+            const bool go_on = at.diffuse_bounces < config.max_diffuse_bounces;
             const Crossing<T>& c = at.crossing();
             const auto seen = rays.project(c.point);
-            if (!seen || !(seen->x >= T(0) && seen->x < T(config.width) && seen->y >= T(0) && seen->y < T(config.height))) return true;
+            if (!seen || !(seen->x >= T(0) && seen->x < T(config.width) && seen->y >= T(0) && seen->y < T(config.height))) return go_on;
             const Vec3<T> to_camera = (rays.origin - c.point) / seen->distance;
             const T cos_x = dot(c.facing_normal(), to_camera);
-            if (!(cos_x > T(0))) return true; // the camera sees the other side
+            if (!(cos_x > T(0))) return go_on; // the camera sees the other side
             const Rgb<T> v = scene.template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
                                                                                          seen->distance);
-            if (!(max_component(v) > T(0))) return true;
+            if (!(max_component(v) > T(0))) return go_on;
             const T importance = cos_x / (seen->distance * seen->distance * area * seen->cos * seen->cos * seen->cos);
             const std::size_t pixel = std::size_t(seen->y) * width + std::size_t(seen->x);
             out[pixel] += Rgb<float>(power * diffuse_response(material, c.point).brdf() * v * importance);
-            return true;
+            return go_on;
         });
     };
 
@@ -6023,6 +6029,10 @@ public:
 
     struct Config {
         int max_depth = 256; ///< surfaces a path may meet; Russian roulette ends it long before
+        /// Diffuse bounces a path may take: 0 lights each pixel's first diffuse surface by
+        /// shadow rays and goes no further (direct light, seen directly or through
+        /// mirrors and glass), as POV-Ray without radiosity; 1 adds one bounce, and so on.
+        int max_diffuse_bounces = 256;
         /// A white path meeting a dispersive interface takes one of this many wavelength
         /// bands at random (1 to 81), as a photon does.
         int dispersion_bands = SpectralBands<float>::max_count;
@@ -6034,6 +6044,7 @@ public:
         scene.validate();
         air_.validate();
         if (config.max_depth < 0) detail::throw_invalid("PathTracer max_depth must be >= 0, got ", config.max_depth);
+        if (config.max_diffuse_bounces < 0) detail::throw_invalid("PathTracer max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
     }
     PathTracer(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
 
@@ -6050,7 +6061,7 @@ public:
                         for_each_light_arriving<ShadowsThroughGlass::blocked>(
                             *scene_, c, c.facing_normal(), [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
                         sum += at.power * diffuse_response(material, c.point).brdf() * irradiance;
-                        return true;
+                        return at.diffuse_bounces < config_.max_diffuse_bounces;
                     },
                     [&](const Ray<T>&, const Rgb<T>& weight, bool specular_only) {
                         if (specular_only) sum += weight * scene_->background;

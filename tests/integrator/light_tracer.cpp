@@ -67,6 +67,40 @@ TEST_CASE("light tracing: a mirror's image of a point light on a floor, L S D E,
     CHECK(worst_direct < 0.02); // the light's own term, by shadow rays (4 samples over the pixel)
 }
 
+TEST_CASE("light tracing with no diffuse bounce keeps L S D E alone: a ceiling added, the floor still reads the mirror image's closed form")
+{
+    // A diffuse ceiling at y = 4 the camera cannot see: it adds L S D(ceiling) D(floor) E
+    // paths, which a limit of 0 diffuse bounces leaves out (as POV-Ray's caustic photons).
+    const auto scene = Scene{Lights{PointLight<float>{.position = {1, 2, 0}, .intensity = Rgb<float>(intensity)}},
+                             Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
+                             Object{Plane<float>({0, 1, 0}, 4), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
+                             Object{Box<float>({-0.1f, 0, -3}, {0, 4, 3}), Mirror<float>{{.kr = Rgb<float>(reflectance)}}}};
+    const Camera<float> camera{.position = {1.5f, 3, 0}, .look_at = {1.5f, 0, 0}, .up = {0, 0, -1}, .fov = 40};
+    constexpr int size = 8;
+    LightTracerConfig config{.width = size, .height = size, .paths = 2000000, .max_diffuse_bounces = 0, .seed = 3, .threads = 2};
+    const Film first = light_trace(scene, camera, config);
+    config.max_diffuse_bounces = 256;
+    const Film all = light_trace(scene, camera, config);
+    const CameraRays<float> rays = camera.rays(size, size);
+    double first_sum = 0, all_sum = 0, expected = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            for (int j = 0; j < 64; ++j) {
+                const Ray<float> ray = rays.ray(float(x) + (float(j % 8) + 0.5f) / 8, float(y) + (float(j / 8) + 0.5f) / 8);
+                const Vec3<double> p = Vec3<double>(ray.origin) + Vec3<double>(ray.direction) * (-double(ray.origin.y) / double(ray.direction.y));
+                expected += floor_radiance(p, {-1, 2, 0}, reflectance * intensity) / 64;
+            }
+            first_sum += first.at(x, y).x;
+            all_sum += all.at(x, y).x;
+        }
+    CHECK(first_sum / expected == doctest::Approx(1.0).epsilon(0.01));
+    MESSAGE("with the ceiling's bounce: ", all_sum / expected);
+    CHECK(all_sum / expected > 1.05);
+    config.max_diffuse_bounces = -1;
+    CHECK_THROWS_WITH_AS((void)light_trace(scene, camera, config), doctest::Contains("LightTracerConfig max_diffuse_bounces must be >= 0, got -1"),
+                         std::invalid_argument);
+}
+
 TEST_CASE("the light tracer's image is the same bits for any thread count, and bad sizes are refused")
 {
     const auto scene = mirror_scene();

@@ -6,6 +6,8 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 using namespace prism;
 
 TEST_CASE("the path tracer's furnace: inside a diffuse sphere of albedo 0.5 the walls read 1.0, with one light or four")
@@ -17,6 +19,22 @@ TEST_CASE("the path tracer's furnace: inside a diffuse sphere of albedo 0.5 the 
         const double mean = test::furnace_mean(four, [&](const Ray<float>& ray, Pcg32& rng) { return tracer.radiance(ray, rng); }, 400000);
         CHECK(mean == doctest::Approx(1.0).epsilon(0.005));
     }
+}
+
+TEST_CASE("the path tracer's diffuse bounce limit: the furnace's partial sums 0.5 (1 + 0.5 + ... + 0.5^n), and bad limits refused")
+{
+    // With the light at the centre every wall point gets E = pi directly, and each
+    // diffuse bounce gives back half of the previous one: L = 0.5 * sum of 0.5^k, k <= n.
+    // furnace_mean(gi = false) divides by the direct term 0.5.
+    const auto scene = test::furnace_scene(false);
+    for (const int bounces : {0, 1, 2}) {
+        CAPTURE(bounces);
+        const PathTracer tracer(scene, {.max_diffuse_bounces = bounces});
+        const double mean = test::furnace_mean(false, [&](const Ray<float>& ray, Pcg32& rng) { return tracer.radiance(ray, rng); }, 200000, false);
+        CHECK(mean == doctest::Approx(2 - std::pow(0.5, bounces)).epsilon(0.005));
+    }
+    CHECK_THROWS_WITH_AS(PathTracer(scene, {.max_diffuse_bounces = -1}), doctest::Contains("PathTracer max_diffuse_bounces must be >= 0, got -1"),
+                         std::invalid_argument);
 }
 
 TEST_CASE("a path tracer's first bounce is Whitted's direct light, and the walls' colour bleeds into what they light")

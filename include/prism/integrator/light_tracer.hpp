@@ -41,6 +41,7 @@ struct LightTracerConfig {
     int height = 512;
     std::size_t paths = 1000000; ///< light paths aimed at the specular objects
     int max_bounces = 256;       ///< surfaces a path may meet; Russian roulette ends it long before
+    int max_diffuse_bounces = 256; ///< as PathTracer's: 0 joins a path to the camera at its first diffuse surface only
     std::uint64_t seed = 0;
     unsigned threads = 0;        ///< 0 = all hardware threads
     int dispersion_bands = SpectralBands<float>::max_count; ///< as PhotonTracerConfig's
@@ -54,6 +55,8 @@ template <class SceneT, class Air = StraightAir>
                                const Air& air = {})
 {
     using T = typename SceneT::scalar_type;
+    if (config.max_diffuse_bounces < 0)
+        detail::throw_invalid("LightTracerConfig max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
     const CameraRays<T> rays = camera.rays(config.width, config.height);
     const detail::PhotonTracer<SceneT, Air> tracer(scene,
                                                    {.global_photons = 0,
@@ -75,19 +78,20 @@ template <class SceneT, class Air = StraightAir>
             // has a delta lobe, the scattering here decides whose the path is.
             if (at.direct) return reflects<M> || transmits<M>;
             if (!at.first_specular) return false;
+            const bool go_on = at.diffuse_bounces < config.max_diffuse_bounces;
             const Crossing<T>& c = at.crossing();
             const auto seen = rays.project(c.point);
-            if (!seen || !(seen->x >= T(0) && seen->x < T(config.width) && seen->y >= T(0) && seen->y < T(config.height))) return true;
+            if (!seen || !(seen->x >= T(0) && seen->x < T(config.width) && seen->y >= T(0) && seen->y < T(config.height))) return go_on;
             const Vec3<T> to_camera = (rays.origin - c.point) / seen->distance;
             const T cos_x = dot(c.facing_normal(), to_camera);
-            if (!(cos_x > T(0))) return true; // the camera sees the other side
+            if (!(cos_x > T(0))) return go_on; // the camera sees the other side
             const Rgb<T> v = scene.template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
                                                                                          seen->distance);
-            if (!(max_component(v) > T(0))) return true;
+            if (!(max_component(v) > T(0))) return go_on;
             const T importance = cos_x / (seen->distance * seen->distance * area * seen->cos * seen->cos * seen->cos);
             const std::size_t pixel = std::size_t(seen->y) * width + std::size_t(seen->x);
             out[pixel] += Rgb<float>(power * diffuse_response(material, c.point).brdf() * v * importance);
-            return true;
+            return go_on;
         });
     };
 

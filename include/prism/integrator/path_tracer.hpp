@@ -38,6 +38,10 @@ public:
 
     struct Config {
         int max_depth = 256; ///< surfaces a path may meet; Russian roulette ends it long before
+        /// Diffuse bounces a path may take: 0 lights each pixel's first diffuse surface by
+        /// shadow rays and goes no further (direct light, seen directly or through
+        /// mirrors and glass), as POV-Ray without radiosity; 1 adds one bounce, and so on.
+        int max_diffuse_bounces = 256;
         /// A white path meeting a dispersive interface takes one of this many wavelength
         /// bands at random (1 to 81), as a photon does.
         int dispersion_bands = SpectralBands<float>::max_count;
@@ -49,6 +53,7 @@ public:
         scene.validate();
         air_.validate();
         if (config.max_depth < 0) detail::throw_invalid("PathTracer max_depth must be >= 0, got ", config.max_depth);
+        if (config.max_diffuse_bounces < 0) detail::throw_invalid("PathTracer max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
     }
     PathTracer(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
 
@@ -65,7 +70,7 @@ public:
                         for_each_light_arriving<ShadowsThroughGlass::blocked>(
                             *scene_, c, c.facing_normal(), [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
                         sum += at.power * diffuse_response(material, c.point).brdf() * irradiance;
-                        return true;
+                        return at.diffuse_bounces < config_.max_diffuse_bounces;
                     },
                     [&](const Ray<T>&, const Rgb<T>& weight, bool specular_only) {
                         if (specular_only) sum += weight * scene_->background;

@@ -195,11 +195,11 @@ private:
         emit(emitters, total_power, count, i, caustic_pass, [&](const auto&, const WalkVertex<T>& at, const Rgb<T>& power) {
             const Crossing<T>& c = at.crossing();
             if (caustic_pass) {
-                if (!at.direct && at.specular_only) out.push_back(photon(c, power, at.direction, Photon::caustic));
+                if (!at.direct && at.specular_only()) out.push_back(photon(c, power, at.direction, Photon::caustic));
                 return false;
             }
             std::uint8_t flags = at.direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
-            if (!at.direct && at.specular_only) flags |= Photon::caustic;
+            if (!at.direct && at.specular_only()) flags |= Photon::caustic;
             out.push_back(photon(c, power, at.direction, flags));
             if (at.direct && config_.shadow_photons) store_shadow_photons(c, at.direction, out);
             return true;

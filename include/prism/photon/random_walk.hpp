@@ -33,13 +33,14 @@ struct WalkVertex {
     const Vec3<T>& direction; ///< unit, arriving
     const Rgb<T>& power;      ///< what the path carries here, after the medium it crossed
     bool direct;              ///< nothing scattered it yet (a photon's first hit)
-    bool specular_only;       ///< every scattering so far was specular
+    int diffuse_bounces;      ///< diffuse scatterings so far (0: every scattering so far was specular)
     bool first_specular;      ///< the first scattering was specular (the vertex next to the path's start: L S ...)
     T travelled;              ///< the path's length so far
     T wavelength;             ///< 0 while white
     const MediumStack& media; ///< the transmissive objects the path is inside of
 
     [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
+    [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
 };
 
 /// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
@@ -51,7 +52,8 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                  Rgb<typename SceneT::scalar_type> power, Pcg32& rng, int max_bounces, OnDiffuse&& on_diffuse, OnEscape&& on_escape)
 {
     using T = typename SceneT::scalar_type;
-    bool direct = true, specular_only = true, first_specular = false;
+    bool direct = true, first_specular = false;
+    int diffuse_bounces = 0;
     T travelled = T(0);
     T wavelength = T(0); // white until a dispersive interface splits it
     MediumStack media;   // the transmissive objects the path is inside of
@@ -62,7 +64,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         const auto hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, &path)
                                        : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
         if (!hit) {
-            on_escape(segment, power, specular_only);
+            on_escape(segment, power, diffuse_bounces == 0);
             return;
         }
         const Crossing<T>& c = hit->crossing;
@@ -73,7 +75,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             // What the medium it travelled in let through, before anything else.
             attenuate_segment(scene, media, material, c, segment, power);
             if constexpr (has_diffuse<M>) {
-                if (!on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, specular_only, first_specular, travelled, wavelength, media})) return Next::absorbed;
+                if (!on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media})) return Next::absorbed;
             }
             // The media beyond the surface, the object whose medium lies on its far
             // side, and false interfaces (inside a medium of higher priority) passed.
@@ -103,7 +105,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             const auto next = scatter_photon(material, c, d, n, power, rng, wavelength, index_of(scene, outside, wavelength));
             if (!next) return Next::absorbed;
             ray = spawn_ray(c.point, c.error, c.normal, next->direction);
-            if (next->diffuse) specular_only = false;
+            if (next->diffuse) ++diffuse_bounces;
             if (direct) first_specular = !next->diffuse;
             if constexpr (transmits<M>) {
                 if (dot(next->direction, n) < T(0)) media = face.beyond; // refracted
