@@ -3,7 +3,7 @@
 // bench/methods_vs_time.py: writes the image as PFM and prints "seconds S" (the whole
 // render: photons, cache, passes or paths, and camera rays), 2 threads.
 //
-// usage: bench_methods diffuse|glass|povray METHOD EFFORT OUT.pfm [SIZE] [SEED]
+// usage: bench_methods diffuse|glass|povray METHOD EFFORT OUT.pfm [SIZE] [SEED] [SPP]
 //   povray is the glass box in POV-Ray's model (shared/scenes/cornell_caustics.pov: its
 //   no-falloff light, direct light and caustics only; no global photons, and the
 //   reference takes no diffuse bounce).
@@ -53,7 +53,7 @@ struct SeesDiffuseFirst {
 int main(int argc, char** argv)
 {
     if (argc < 5) {
-        std::fprintf(stderr, "usage: bench_methods diffuse|glass|povray METHOD EFFORT OUT.pfm [SIZE] [SEED]\n");
+        std::fprintf(stderr, "usage: bench_methods diffuse|glass|povray METHOD EFFORT OUT.pfm [SIZE] [SEED] [SPP]\n");
         return 1;
     }
     const std::string which = argv[1], method = argv[2], out = argv[4];
@@ -83,6 +83,7 @@ int main(int argc, char** argv)
         options.render.spp = int(effort);
     }
     if (povray) options.photons = 0; // POV-Ray's model: no global light
+    if (argc > 7) options.render.spp = std::atoi(argv[7]); // 1: the pixel's centre, as POV-Ray without anti-aliasing
     const auto run = [&](const auto& scene) {
         // The cache's rays per record are the effort: set through a mapper config the
         // examples' helper does not expose, so render here.

@@ -17,9 +17,12 @@
 # usage: bench/methods_vs_time.py BUILD_DIR [--size 256] [--reference-spp 4096] [--quick]
 import argparse
 import csv
+import functools
 import math
 import os
 import re
+import shutil
+import statistics
 import struct
 import subprocess
 import sys
@@ -116,7 +119,9 @@ class Scorer:
 
 
 def run(build, scene, method, effort, out, size, seed=0):
-    result = subprocess.run([os.path.join(build, "bench", "bench_methods"), scene, method, str(effort), out, str(size), str(seed)],
+    """One bench_methods render; a method "direct, 1 spp" samples each pixel's centre once."""
+    spp = [str(seed), "1"] if method.endswith("1 spp") else [str(seed)]
+    result = subprocess.run([os.path.join(build, "bench", "bench_methods"), scene, method.split(",")[0], str(effort), out, str(size)] + spp,
                             capture_output=True, text=True, check=True)
     for line in result.stdout.splitlines():
         if line.startswith("seconds "):
@@ -162,10 +167,16 @@ def main():
     ap.add_argument("--rescore", action="store_true", help="score the renders already in BUILD_DIR/methods_vs_time again (no rendering)")
     ap.add_argument("--methods", help="comma-separated: re-run only these (direct, gather, cache, progressive, reference, cycles, povray), "
                     "keeping the CSV's other rows and the references already rendered")
+    ap.add_argument("--repeats", type=int, default=3, help="interleaved rounds of every timed render (min and median kept)")
+    ap.add_argument("--summary", action="store_true", help="only print the time-to-error ratios of the CSV")
     ap.add_argument("--scenes", default="diffuse,glass,povray", help="comma-separated: run only these scenes, keeping the CSV's other rows")
     args = ap.parse_args()
     only = set(args.methods.split(",")) if args.methods else None
     scenes = args.scenes.split(",")
+    if args.summary:
+        with open(os.path.join(here, "results", "methods_vs_time.csv")) as f:
+            return summary([(r["scene"], r["method"], r["effort"], float(r["seconds"]), float(r.get("seconds_median") or r["seconds"])) +
+                            tuple(float(r[k]) for k in COLUMNS) for r in csv.DictReader(f)])
     if args.rescore:
         return rescore(os.path.join(args.build, "methods_vs_time"))
     work = os.path.join(args.build, "methods_vs_time")
@@ -183,8 +194,9 @@ def main():
         cycles_spp = cycles_spp[:2]
     povray_counts = [10000, 30000, 100000, 300000, 1000000, 3000000]
     per_scene = {"diffuse": efforts, "glass": efforts,
-                 "povray": {"direct": [10000, 30000, 100000, 300000, 1000000, 3000000], "progressive": efforts["progressive"],
-                            "reference": efforts["reference"]}}
+                 "povray": {"direct": [10000, 30000, 100000, 300000, 1000000, 3000000],
+                            "direct, 1 spp": [10000, 30000, 100000, 300000, 1000000, 3000000], "progressive": efforts["progressive"],
+                            "reference": [1, 2] + efforts["reference"]}}
     if args.quick:
         povray_counts = povray_counts[:2]
         per_scene["povray"] = {m: e[:2] for m, e in per_scene["povray"].items()}
@@ -207,42 +219,47 @@ def main():
         score = Scorer(halves, wall_mask(args.build, work, scene, args.size))
         print("%s: reference, %d spp in two halves, %.1f s, its own noise %.5f (display range %.5f)" %
               (scene, args.reference_spp, ref_seconds, score.noise, score.display_noise), flush=True)
+        # Every render of the scene, then each timed in --repeats interleaved rounds
+        # (min and median kept; the pictures are the same bits every round).
+        jobs = []  # (method, effort, output, render: () -> seconds, reader)
         for method, levels in per_scene[scene].items():
-            if only and method not in only:
-                continue
-            for effort in levels:
-                out = os.path.join(work, "%s_%s_%s.pfm" % (scene, method, effort))
-                seconds = run(args.build, scene, method, effort, out, args.size)
-                rows.append((scene, "prism " + method, effort, seconds) + score(read_pfm(out)))
-                print("%s: %s %s: %.2f s, RMSE %.5f, in the display range %.5f" % (scene, method, effort, seconds, rows[-1][4], rows[-1][7]), flush=True)
+            if not only or method_key(method) in only:
+                for effort in levels:
+                    out = os.path.join(work, "%s_%s_%s.pfm" % (scene, method.replace(", 1 spp", "1spp"), effort))
+                    jobs.append(("prism " + method, effort, out, functools.partial(run, args.build, scene, method, effort, out, args.size), read_pfm))
         if scene == "diffuse" and (not only or "cycles" in only):
-            try:
+            if shutil.which("blender"):
                 for spp in cycles_spp:
                     out = os.path.join(work, "cycles_%d.pfm" % spp)
-                    seconds = cycles(spp, out, 1, args.size)
-                    rows.append((scene, "Cycles", spp, seconds) + score(read_pfm(out)))
-                    print("%s: Cycles %d spp: %.2f s, RMSE %.5f, in the display range %.5f" % (scene, spp, seconds, rows[-1][4], rows[-1][7]), flush=True)
-            except (FileNotFoundError, subprocess.CalledProcessError) as e:
-                print("Cycles not run (%s): install blender (tools/setup.sh --bench)" % e, file=sys.stderr)
+                    jobs.append(("Cycles", spp, out, functools.partial(cycles, spp, out, 1, args.size), read_pfm))
+            else:
+                print("Cycles not run: install blender (tools/setup.sh --bench)", file=sys.stderr)
         if scene == "povray" and (not only or "povray" in only):
-            try:
+            if shutil.which("povray"):
                 for antialias in (False, True):
-                    name = "POV-Ray, anti-aliased" if antialias else "POV-Ray"
                     for count in povray_counts:
                         out = os.path.join(work, "povray_%d%s.hdr" % (count, "_aa" if antialias else ""))
-                        seconds = povray(count, out, args.size, antialias)
-                        rows.append((scene, name, count, seconds) + score(read_hdr(out)))
-                        print("%s: %s %d photons: %.2f s, RMSE %.5f, in the display range %.5f" % (scene, name, count, seconds, rows[-1][4], rows[-1][7]),
-                              flush=True)
-            except (FileNotFoundError, subprocess.CalledProcessError) as e:
-                print("POV-Ray not run (%s): install povray (tools/setup.sh --bench)" % e, file=sys.stderr)
+                        jobs.append(("POV-Ray, anti-aliased" if antialias else "POV-Ray", count, out,
+                                     functools.partial(povray, count, out, args.size, antialias), read_hdr))
+            else:
+                print("POV-Ray not run: install povray (tools/setup.sh --bench)", file=sys.stderr)
+        times = [[] for _ in jobs]
+        for _ in range(args.repeats):
+            for job, seconds in zip(jobs, times):
+                seconds.append(job[3]())
+        for (method, effort, out, _, reader), seconds in zip(jobs, times):
+            rows.append((scene, method, effort, min(seconds), statistics.median(seconds)) + score(reader(out)))
+            print("%s: %s %s: %.3f s (median %.3f), RMSE %.5f, in the display range %.5f" % (scene, method, effort, rows[-1][3], rows[-1][4], rows[-1][5],
+                                                                                             rows[-1][8]), flush=True)
     path = os.path.join(here, "results", "methods_vs_time.csv")
     if (only or len(scenes) < 3) and os.path.exists(path):  # keep the rows not re-run
         with open(path) as f:
             kept = [r for r in csv.DictReader(f) if r["scene"] not in scenes or (only and method_key(r["method"]) not in only)]
-        rows = [(r["scene"], r["method"], r["effort"], float(r["seconds"])) + tuple(float(r[k]) for k in COLUMNS) for r in kept] + rows
+        rows = [(r["scene"], r["method"], r["effort"], float(r["seconds"]), float(r.get("seconds_median") or r["seconds"])) +
+                tuple(float(r[k]) for k in COLUMNS) for r in kept] + rows
     write_csv(path, rows)
     print("wrote", path)
+    summary(rows)
     strip(work, efforts, cycles_spp)
 
 
@@ -264,9 +281,39 @@ def wall_mask(build, work, scene, size):
 def write_csv(path, rows):
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["scene", "method", "effort", "seconds"] + COLUMNS)
+        w.writerow(["scene", "method", "effort", "seconds", "seconds_median"] + COLUMNS)
         for r in rows:
-            w.writerow([r[0], r[1], r[2], "%.4f" % r[3]] + ["%.6f" % x for x in r[4:]])
+            w.writerow([r[0], r[1], r[2], "%.4f" % r[3], "%.4f" % r[4]] + ["%.6f" % x for x in r[5:]])
+
+
+def time_to_reach(points, error):
+    """The time a method needs for `error`, on the log-log line between its two measured
+    points that bracket it (its first point if that is already as good; None if none
+    reaches it). points: (seconds, error), by effort."""
+    points = sorted(points)
+    for (t0, e0), (t1, e1) in zip([(None, None)] + points, points):
+        if e1 <= error:
+            if t0 is None or e0 <= error or e0 == e1:
+                return t1
+            return math.exp(math.log(t0) + (math.log(t1) - math.log(t0)) * (math.log(error) - math.log(e0)) / (math.log(e1) - math.log(e0)))
+    return None
+
+
+def summary(rows):
+    """For every picture of an outside renderer, prism's fastest method to the same error,
+    as a ratio of that renderer's time (min times; the target is <= 0.5)."""
+    for column, name in ((5, "linear"), (8, "display range")):
+        print("time to reach the outside renderer's error (%s RMSE), as a ratio of its time:" % name)
+        for r in rows:
+            if r[1].startswith("prism"):
+                continue
+            best = None
+            for method in dict.fromkeys(x[1] for x in rows if x[0] == r[0] and x[1].startswith("prism")):
+                t = time_to_reach([(x[3], x[column]) for x in rows if x[0] == r[0] and x[1] == method], r[column])
+                if t is not None and (best is None or t < best[0]):
+                    best = (t, method)
+            verdict = "not reached" if best is None else "%s in %.3f s, ratio %.2f" % (best[1], best[0], best[0] / r[3])
+            print("  %-8s %-22s %8s: %.4f in %.3f s; prism %s" % (r[0], r[1], r[2], r[column], r[3], verdict))
 
 
 def rescore(work):
@@ -285,10 +332,12 @@ def rescore(work):
         elif method == "povray":
             image = read_hdr(os.path.join(work, "povray_%s%s.hdr" % (r["effort"], "_aa" if "anti" in r["method"] else "")))
         else:
-            image = read_pfm(os.path.join(work, "%s_%s_%s.pfm" % (r["scene"], method, r["effort"])))
-        rows.append((r["scene"], r["method"], r["effort"], float(r["seconds"])) + scorers[r["scene"]](image))
+            image = read_pfm(os.path.join(work, "%s_%s_%s.pfm" % (r["scene"], r["method"].replace("prism ", "").replace(", 1 spp", "1spp"), r["effort"])))
+        rows.append((r["scene"], r["method"], r["effort"], float(r["seconds"]), float(r.get("seconds_median") or r["seconds"])) +
+                    scorers[r["scene"]](image))
     write_csv(path, rows)
     print("rescored", path)
+    summary(rows)
 
 
 def strip(work, efforts, cycles_spp):
