@@ -4,6 +4,7 @@
 // <prism/io/image.hpp> for them).
 #pragma once
 
+#include <prism/accel/bvh.hpp>
 #include <prism/accel/kd_tree.hpp>
 #include <prism/core/aabb.hpp>
 #include <prism/core/check.hpp>

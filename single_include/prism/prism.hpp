@@ -239,6 +239,244 @@ template <Scalar T>
 
 } // namespace prism
 
+// ---- prism/core/interval.hpp ----
+// Interval: a range [min, max] of ray parameters or values.
+
+
+namespace prism {
+
+/// A closed range of reals; empty when min > max.
+template <Scalar T>
+struct Interval {
+    T min = infinity<T>;
+    T max = -infinity<T>;
+
+    [[nodiscard]] constexpr bool empty() const noexcept { return !(min <= max); }
+    /// min <= x <= max.
+    [[nodiscard]] constexpr bool contains(T x) const noexcept { return min <= x && x <= max; }
+    /// min < x < max.
+    [[nodiscard]] constexpr bool surrounds(T x) const noexcept { return min < x && x < max; }
+    [[nodiscard]] constexpr T size() const noexcept { return max - min; }
+
+    /// Every real number.
+    [[nodiscard]] static constexpr Interval universe() noexcept { return {-infinity<T>, infinity<T>}; }
+};
+
+} // namespace prism
+
+// ---- prism/core/ray.hpp ----
+// Ray: an origin and a direction; points along it are origin + t * direction.
+
+
+namespace prism {
+
+/// A ray. The direction need not be unit length: t is measured in multiples of it.
+template <Scalar T>
+struct Ray {
+    Vec3<T> origin{};
+    Vec3<T> direction{T(0), T(0), T(-1)};
+
+    /// The point origin + t * direction.
+    [[nodiscard]] constexpr Vec3<T> at(T t) const noexcept { return origin + t * direction; }
+};
+
+} // namespace prism
+
+// ---- prism/core/offset.hpp ----
+// Robust spawning of secondary rays: the one place self-intersection is handled.
+//
+// A shape reports each hit point together with a bound on its floating-point error.
+// A new ray starts from the hit point pushed along the geometric normal just past
+// that bound, to the side the ray leaves by, then rounded one more ulp away, so it
+// can never start on the wrong side of the surface it leaves (Pharr, Jakob and
+// Humphreys, "Physically Based Rendering", 4th ed., section 6.8.6; pbrt-v4
+// OffsetRayOrigin). No other code in prism nudges rays by an epsilon.
+
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+
+namespace prism {
+
+/// Higham's gamma(n) = n u / (1 - n u), u = machine epsilon / 2: the relative error
+/// bound of n successive rounded operations.
+template <Scalar T>
+[[nodiscard]] constexpr T gamma(int n) noexcept
+{
+    constexpr T u = std::numeric_limits<T>::epsilon() * T(0.5);
+    return T(n) * u / (T(1) - T(n) * u);
+}
+
+/// The next representable value above v (pbrt-v4 NextFloatUp), by stepping its bits:
+/// std::nextafter is an out-of-line library call, and this is on every secondary ray.
+template <Scalar T>
+[[nodiscard]] constexpr T next_float_up(T v) noexcept
+{
+    using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    if (v == infinity<T> || v != v) return v;
+    if (v == T(-0.0)) v = T(0.0); // skip -0 so that the step leaves 0
+    Bits bits = std::bit_cast<Bits>(v);
+    bits = v >= T(0) ? bits + 1 : bits - 1;
+    return std::bit_cast<T>(bits);
+}
+
+/// The next representable value below v.
+template <Scalar T>
+[[nodiscard]] constexpr T next_float_down(T v) noexcept
+{
+    using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    if (v == -infinity<T> || v != v) return v;
+    if (v == T(0.0)) v = T(-0.0);
+    Bits bits = std::bit_cast<Bits>(v);
+    bits = v > T(0) ? bits - 1 : bits + 1;
+    return std::bit_cast<T>(bits);
+}
+
+/// The origin for a ray leaving point p (absolute error bound p_error per axis) of a
+/// surface with geometric normal n, in direction w.
+template <Scalar T>
+[[nodiscard]] inline Vec3<T> offset_ray_origin(const Vec3<T>& p, const Vec3<T>& p_error, const Vec3<T>& n,
+                                               const Vec3<T>& w) noexcept
+{
+    const T d = dot(abs(n), p_error);
+    const T side = dot(w, n) < T(0) ? T(-1) : T(1);
+    Vec3<T> po = p + (side * d) * n;
+    // Round one ulp further away from the surface on every axis the normal has, so the
+    // offset survives the addition's rounding, and so a point whose error bound is zero
+    // (a box face's snapped coordinate) still leaves the surface: a ray starting exactly
+    // on a face could not tell which side of it it is on.
+    for (int i = 0; i < 3; ++i) {
+        if (side * n[i] > T(0))
+            po[i] = next_float_up(po[i]);
+        else if (side * n[i] < T(0))
+            po[i] = next_float_down(po[i]);
+    }
+    return po;
+}
+
+/// A ray leaving a surface point in direction w.
+template <Scalar T>
+[[nodiscard]] inline Ray<T> spawn_ray(const Vec3<T>& p, const Vec3<T>& p_error, const Vec3<T>& n,
+                                      const Vec3<T>& w) noexcept
+{
+    return {offset_ray_origin(p, p_error, n, w), w};
+}
+
+} // namespace prism
+
+// ---- prism/core/aabb.hpp ----
+// Aabb: an axis-aligned bounding box and its robust slab test.
+
+
+#include <limits>
+
+namespace prism {
+
+/// A sphere that encloses a solid: what the photon tracer aims caustic photons at, and
+/// where parallel light's photons start from.
+template <Scalar T>
+struct BoundingSphere {
+    Vec3<T> center{};
+    T radius = T(0);
+};
+
+/// Axis-aligned box [lo, hi]; empty when lo > hi on any axis (the default).
+template <Scalar T>
+struct Aabb {
+    Vec3<T> lo{infinity<T>};
+    Vec3<T> hi{-infinity<T>};
+
+    [[nodiscard]] constexpr bool empty() const noexcept { return !(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z); }
+
+    /// Every point: the bounds of an unbounded shape such as a half-space.
+    [[nodiscard]] static constexpr Aabb universe() noexcept { return {Vec3<T>(-infinity<T>), Vec3<T>(infinity<T>)}; }
+
+    /// The smallest box holding this one and `other`.
+    [[nodiscard]] constexpr Aabb merged(const Aabb& other) const noexcept
+    {
+        return {component_min(lo, other.lo), component_max(hi, other.hi)};
+    }
+
+    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
+    {
+        return lo.x <= p.x && p.x <= hi.x && lo.y <= p.y && p.y <= hi.y && lo.z <= p.z && p.z <= hi.z;
+    }
+
+    /// Finite on every axis: the box of a bounded shape (false for an empty box too).
+    [[nodiscard]] constexpr bool bounded() const noexcept { return !empty() && is_finite(lo) && is_finite(hi); }
+
+    /// The sphere through the box's corners (for a bounded box).
+    [[nodiscard]] constexpr BoundingSphere<T> bounding_sphere() const noexcept
+    {
+        return {T(0.5) * (lo + hi), T(0.5) * length(hi - lo)};
+    }
+
+    /// The box grown outward by one float step on every side: a box computed by rounding
+    /// to nearest then holds every point of the exact one.
+    [[nodiscard]] constexpr Aabb rounded_out() const noexcept
+    {
+        Aabb out;
+        for (int axis = 0; axis < 3; ++axis) out.lo[axis] = next_float_down(lo[axis]), out.hi[axis] = next_float_up(hi[axis]);
+        return out;
+    }
+
+    /// Whether the ray meets the box at some t >= t_min: the test with which a bounded
+    /// shape skips its own work. It ignores where the ray's range ends, so asking a shape
+    /// again over a shorter range (a scene's surface query) cannot cull what it found
+    /// before; and, as clip(), it never reports a miss for a ray that touches the box.
+    [[nodiscard]] constexpr bool reached_after(const Ray<T>& ray, T t_min) const noexcept
+    {
+        return !clip(ray, {t_min, infinity<T>}).empty();
+    }
+
+    /// Whether a shape inside this box may report a crossing within `range`: the test
+    /// with which a scene skips objects. A shape's crossings are computed with rounding
+    /// that grows with the ray origin's distance from it, so a ray that just misses the
+    /// exact shape may still be reported to cross it, and the scene must then still ask
+    /// it: the box is widened for each ray by gamma(16) of that distance (and of its own
+    /// size).
+    [[nodiscard]] constexpr bool may_cross(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        if (range.min <= T(0) && range.max >= T(0) && contains(ray.origin)) return true; // most secondary rays in a closed scene
+        const Vec3<T> half = T(0.5) * (hi - lo);
+        const T pad = gamma<T>(16) * (max_component(abs(ray.origin - (lo + half))) + max_component(half)) + std::numeric_limits<T>::min();
+        const Aabb wide{lo - Vec3<T>(pad), hi + Vec3<T>(pad)};
+        return !wide.clip(ray, range).empty();
+    }
+
+    /// The part of `range` in which the ray is inside the box (empty if none).
+    /// Slab test with the far distance widened by 2*gamma(3), so that rounding never
+    /// reports a miss for a ray that touches the box (pbrt-v4, Bounds3::IntersectP).
+    [[nodiscard]] constexpr Interval<T> clip(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        for (int axis = 0; axis < 3; ++axis) {
+            const T o = ray.origin[axis];
+            const T d = ray.direction[axis];
+            if (d == T(0)) {
+                if (o < lo[axis] || o > hi[axis]) return {};
+                continue;
+            }
+            // 1 / d is clamped to the finite range: for a denormal d it would be
+            // infinite, and 0 * inf is NaN where 0 / d is 0 (a ray starting on a face).
+            constexpr T largest = std::numeric_limits<T>::max();
+            const T inv = clamp(T(1) / d, -largest, largest);
+            T t_near = (lo[axis] - o) * inv;
+            T t_far = (hi[axis] - o) * inv;
+            if (t_near > t_far) std::swap(t_near, t_far);
+            t_far *= T(1) + T(2) * gamma<T>(3);
+            if (t_near > range.min) range.min = t_near;
+            if (t_far < range.max) range.max = t_far;
+            if (range.min > range.max) return {};
+        }
+        return range;
+    }
+};
+
+} // namespace prism
+
 // ---- prism/core/check.hpp ----
 // Input validation for constructors: a clear std::invalid_argument naming the parameter,
 // and an allocation_error saying what was asked for when it cannot fit in memory.
@@ -377,6 +615,282 @@ inline void require_memory(const std::string& what, double bytes)
 }
 
 } // namespace prism::detail
+
+// ---- prism/accel/bvh.hpp ----
+// Bvh: a bounding volume hierarchy over boxes, for ray queries (after madmann91's bvh v2:
+// a flat node array, a Config, the query a template of the traversal).
+//
+// Build: top-down, binned surface area heuristic (Wald 2007). At each node the
+// primitives' centroids are binned along each axis, every bin boundary is costed as
+//     C = C_trav + C_isect (A_left n_left + A_right n_right) / A_node
+// and the cheapest split is taken, unless a leaf of n primitives (C_isect n) is cheaper
+// and holds no more than max_leaf_size. Primitives whose centroids coincide are split by
+// count. Below depth 48 only count splits are made, so no tree is deeper than 48 + 32
+// levels and traversal needs a fixed stack. The two children of a node are adjacent in
+// the array, so a node stores its box, the index of its first child or primitive, and a
+// primitive count (0 for an inner node): 32 bytes in float.
+//
+// Traversal visits children nearest first and never misses a primitive whose box the
+// ray may cross: each node's box is tested as Aabb::may_cross tests an object's box
+// (widened by gamma(16) of the ray origin's distance, the far slab by 2 gamma(3)), and a
+// node's widened box holds each widened box inside it. So a scene that accelerates its
+// linear scan with a Bvh tests every object that scan would have tested, and finds the
+// same hit. The query is the caller's: visit(primitive, range) may shrink range.max
+// (closest hit) or return true to stop (any hit). Queries allocate nothing.
+
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <span>
+#include <vector>
+
+namespace prism {
+
+struct BvhConfig {
+    int max_leaf_size = 4;      ///< a leaf holds at most this many primitives (>= 1)
+    int bins = 16;              ///< SAH bins per axis (2 to 256)
+    float traversal_cost = 1;   ///< C_trav, relative to one primitive test
+};
+
+template <Scalar T>
+struct BvhNode {
+    Aabb<T> box;
+    std::uint32_t first = 0; ///< first child (inner node) or first primitive (leaf)
+    std::uint32_t count = 0; ///< primitives in a leaf; 0 for an inner node
+
+    [[nodiscard]] constexpr bool leaf() const noexcept { return count != 0; }
+};
+
+namespace detail {
+
+/// A ray with its slabs' reciprocals worked out once, for many box tests.
+template <Scalar T>
+struct SlabRay {
+    Vec3<T> origin, direction, inverse;
+
+    constexpr explicit SlabRay(const Ray<T>& ray) noexcept : origin(ray.origin), direction(ray.direction)
+    {
+        constexpr T largest = std::numeric_limits<T>::max();
+        for (int axis = 0; axis < 3; ++axis) inverse[axis] = direction[axis] == T(0) ? T(0) : clamp(T(1) / direction[axis], -largest, largest);
+    }
+
+    /// Aabb::may_cross's interval (empty if the ray cannot cross the box within range),
+    /// with the same arithmetic: the same answer for every box and ray.
+    [[nodiscard]] constexpr Interval<T> may_cross(const Aabb<T>& box, Interval<T> range) const noexcept
+    {
+        if (range.min <= T(0) && range.max >= T(0) && box.contains(origin)) return range;
+        const Vec3<T> half = T(0.5) * (box.hi - box.lo);
+        const T pad = gamma<T>(16) * (max_component(abs(origin - (box.lo + half))) + max_component(half)) + std::numeric_limits<T>::min();
+        for (int axis = 0; axis < 3; ++axis) {
+            const T lo = box.lo[axis] - pad, hi = box.hi[axis] + pad, o = origin[axis];
+            if (direction[axis] == T(0)) {
+                if (o < lo || o > hi) return {};
+                continue;
+            }
+            T t_near = (lo - o) * inverse[axis];
+            T t_far = (hi - o) * inverse[axis];
+            if (t_near > t_far) std::swap(t_near, t_far);
+            t_far *= T(1) + T(2) * gamma<T>(3);
+            if (t_near > range.min) range.min = t_near;
+            if (t_far < range.max) range.max = t_far;
+            if (range.min > range.max) return {};
+        }
+        return range;
+    }
+};
+
+template <Scalar T>
+constexpr T half_area(const Aabb<T>& b) noexcept
+{
+    const Vec3<T> d = b.hi - b.lo;
+    return d.x * d.y + d.y * d.z + d.z * d.x;
+}
+
+} // namespace detail
+
+template <Scalar T>
+class Bvh {
+public:
+    using scalar_type = T;
+    static constexpr int max_depth = 48 + 32;
+
+    constexpr Bvh() = default;
+
+    /// The hierarchy over `boxes`; primitive i is boxes[i]. Every box must be bounded
+    /// (finite, not empty): unbounded shapes are tested on their own, beside the tree.
+    constexpr explicit Bvh(std::span<const Aabb<T>> boxes, BvhConfig config = {})
+    {
+        if (config.max_leaf_size < 1) detail::throw_invalid("BvhConfig max_leaf_size must be >= 1, got ", config.max_leaf_size);
+        if (config.bins < 2 || config.bins > 256) detail::throw_invalid("BvhConfig bins must be in [2, 256], got ", config.bins);
+        if (!(config.traversal_cost >= 0.0f)) detail::throw_invalid("BvhConfig traversal_cost must be >= 0, got ", config.traversal_cost);
+        if (boxes.size() >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
+            detail::throw_invalid("Bvh takes fewer than 2^32 - 1 primitives, got ", boxes.size());
+        for (std::size_t i = 0; i < boxes.size(); ++i)
+            if (!boxes[i].bounded()) detail::throw_invalid("Bvh primitive ", i, " has no finite box: test unbounded shapes beside the tree");
+        if (boxes.empty()) return;
+        build(boxes, config);
+    }
+
+    [[nodiscard]] constexpr std::span<const BvhNode<T>> nodes() const noexcept { return nodes_; }
+    /// The primitives in leaf order: a leaf holds primitives()[first, first + count).
+    [[nodiscard]] constexpr std::span<const std::uint32_t> primitives() const noexcept { return primitives_; }
+    [[nodiscard]] constexpr std::size_t size() const noexcept { return primitives_.size(); }
+    [[nodiscard]] constexpr int depth() const noexcept { return depth_; }
+
+    /// Visit, nearest node first, every primitive whose box the ray may cross within
+    /// `range`: visit(primitive, range) tests it, may shrink range.max to a hit it found,
+    /// and returns true to end the query (an any-hit query's first hit).
+    /// Returns whether a visit ended it.
+    template <class Visit>
+    constexpr bool traverse(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
+    {
+        if (nodes_.empty()) return false;
+        const detail::SlabRay<T> slab(ray);
+        if (slab.may_cross(nodes_[0].box, range).empty()) return false;
+        std::array<std::uint32_t, max_depth + 1> stack{};
+        int top = 0;
+        std::uint32_t at = 0;
+        for (;;) {
+            const BvhNode<T>& node = nodes_[at];
+            if (node.leaf()) {
+                for (std::uint32_t k = node.first; k < node.first + node.count; ++k)
+                    if (visit(primitives_[k], range)) return true;
+            } else {
+                const std::uint32_t left = node.first, right = node.first + 1;
+                const Interval<T> a = slab.may_cross(nodes_[left].box, range), b = slab.may_cross(nodes_[right].box, range);
+                const bool hit_a = !a.empty(), hit_b = !b.empty();
+                if (hit_a && hit_b) {
+                    const bool left_first = a.min <= b.min;
+                    stack[std::size_t(top++)] = left_first ? right : left;
+                    at = left_first ? left : right;
+                    continue;
+                }
+                if (hit_a || hit_b) {
+                    at = hit_a ? left : right;
+                    continue;
+                }
+            }
+            // Next on the stack, skipping nodes the shrunk range no longer reaches.
+            for (;;) {
+                if (top == 0) return false;
+                at = stack[std::size_t(--top)];
+                if (!slab.may_cross(nodes_[at].box, range).empty()) break;
+            }
+        }
+    }
+
+private:
+    constexpr void build(std::span<const Aabb<T>> boxes, const BvhConfig& config)
+    {
+        const auto n = std::uint32_t(boxes.size());
+        std::vector<Vec3<T>> centers(n);
+        for (std::uint32_t i = 0; i < n; ++i) centers[i] = T(0.5) * (boxes[i].lo + boxes[i].hi);
+        primitives_.resize(n);
+        std::iota(primitives_.begin(), primitives_.end(), std::uint32_t(0));
+        nodes_.reserve(2 * std::size_t(n) - 1);
+        nodes_.push_back({bounds(boxes, 0, n), 0, n});
+        struct Pending {
+            std::uint32_t node;
+            int depth;
+        };
+        std::vector<Pending> pending{{0, 1}};
+        depth_ = 1;
+        const std::size_t bins = std::size_t(config.bins);
+        while (!pending.empty()) {
+            const auto [index, depth] = pending.back();
+            pending.pop_back();
+            depth_ = std::max(depth_, depth);
+            const std::uint32_t first = nodes_[index].first, count = nodes_[index].count;
+            if (count <= 1) continue;
+            // The centroids' bounds: the bins span them.
+            Aabb<T> middle;
+            for (std::uint32_t k = first; k < first + count; ++k) middle = middle.merged({centers[primitives_[k]], centers[primitives_[k]]});
+            const auto begin = primitives_.begin() + first, end = begin + count;
+            std::uint32_t split = 0; // primitives [first, first + split) go left
+            if (depth < 48 && !(middle.lo == middle.hi)) {
+                // Binned SAH over the three axes.
+                T best_cost = infinity<T>;
+                int best_axis = -1;
+                std::size_t best_bin = 0;
+                for (int axis = 0; axis < 3; ++axis) {
+                    const T extent = middle.hi[axis] - middle.lo[axis];
+                    if (!(extent > T(0))) continue;
+                    std::array<Aabb<T>, 256> bin_box{};
+                    std::array<std::size_t, 256> bin_count{};
+                    const T scale = T(bins) / extent;
+                    for (std::uint32_t k = first; k < first + count; ++k) {
+                        const std::uint32_t p = primitives_[k];
+                        const std::size_t b = bin_of(centers[p][axis], middle.lo[axis], scale, bins);
+                        bin_box[b] = bin_box[b].merged(boxes[p]);
+                        ++bin_count[b];
+                    }
+                    // Right-to-left sweep of areas and counts, then left to right.
+                    std::array<T, 256> right_cost{};
+                    Aabb<T> right_box;
+                    std::size_t right_count = 0;
+                    for (std::size_t b = bins - 1; b > 0; --b) {
+                        right_box = right_box.merged(bin_box[b]);
+                        right_count += bin_count[b];
+                        right_cost[b] = right_count ? detail::half_area(right_box) * T(right_count) : T(0);
+                    }
+                    Aabb<T> left_box;
+                    std::size_t left_count = 0;
+                    for (std::size_t b = 1; b < bins; ++b) {
+                        left_box = left_box.merged(bin_box[b - 1]);
+                        left_count += bin_count[b - 1];
+                        if (left_count == 0 || left_count == count) continue;
+                        const T cost = detail::half_area(left_box) * T(left_count) + right_cost[b];
+                        if (cost < best_cost) best_cost = cost, best_axis = axis, best_bin = b;
+                    }
+                }
+                const T area = detail::half_area(nodes_[index].box);
+                const T leaf_cost = T(count), split_cost = T(config.traversal_cost) + (area > T(0) ? best_cost / area : T(count));
+                if (best_axis < 0 || (leaf_cost <= split_cost && count <= std::uint32_t(config.max_leaf_size))) continue; // a leaf
+                const T lo = middle.lo[best_axis], scale = T(bins) / (middle.hi[best_axis] - middle.lo[best_axis]);
+                split = std::uint32_t(std::partition(begin, end, [&](std::uint32_t p) { return bin_of(centers[p][best_axis], lo, scale, bins) < best_bin; }) - begin);
+            } else {
+                if (count <= std::uint32_t(config.max_leaf_size)) continue; // coincident centroids: a leaf if it may be one
+                // By count: the lower half along the widest centroid axis (all equal: any half).
+                const int axis = index_of_max(middle.hi - middle.lo);
+                split = count / 2;
+                std::nth_element(begin, begin + split, end, [&](std::uint32_t a, std::uint32_t b) {
+                    return centers[a][axis] < centers[b][axis] || (centers[a][axis] == centers[b][axis] && a < b);
+                });
+            }
+            const std::uint32_t child = std::uint32_t(nodes_.size());
+            nodes_.push_back({bounds(boxes, first, split), first, split});
+            nodes_.push_back({bounds(boxes, first + split, count - split), first + split, count - split});
+            nodes_[index].first = child;
+            nodes_[index].count = 0;
+            pending.push_back({child + 1, depth + 1});
+            pending.push_back({child, depth + 1});
+        }
+    }
+
+    [[nodiscard]] static constexpr std::size_t bin_of(T c, T lo, T scale, std::size_t bins) noexcept
+    {
+        const T b = (c - lo) * scale;
+        return b >= T(bins) ? bins - 1 : (b > T(0) ? std::size_t(b) : 0);
+    }
+
+    [[nodiscard]] static constexpr int index_of_max(const Vec3<T>& v) noexcept { return v.x >= v.y ? (v.x >= v.z ? 0 : 2) : (v.y >= v.z ? 1 : 2); }
+
+    [[nodiscard]] constexpr Aabb<T> bounds(std::span<const Aabb<T>> boxes, std::uint32_t first, std::uint32_t count) const noexcept
+    {
+        Aabb<T> box;
+        for (std::uint32_t k = first; k < first + count; ++k) box = box.merged(boxes[primitives_[k]]);
+        return box;
+    }
+
+    std::vector<BvhNode<T>> nodes_;
+    std::vector<std::uint32_t> primitives_;
+    int depth_ = 0;
+};
+
+} // namespace prism
 
 // ---- prism/core/parallel.hpp ----
 // Threads for the loops whose every iteration writes its own place: the result is the
@@ -809,244 +1323,6 @@ private:
     std::vector<std::uint32_t> index_; ///< the point set's index of each point in tree order
     std::vector<T> split_;             ///< split value of each inner node (heap numbering from 1)
     std::vector<std::uint8_t> axis_;   ///< split axis of each inner node
-};
-
-} // namespace prism
-
-// ---- prism/core/interval.hpp ----
-// Interval: a range [min, max] of ray parameters or values.
-
-
-namespace prism {
-
-/// A closed range of reals; empty when min > max.
-template <Scalar T>
-struct Interval {
-    T min = infinity<T>;
-    T max = -infinity<T>;
-
-    [[nodiscard]] constexpr bool empty() const noexcept { return !(min <= max); }
-    /// min <= x <= max.
-    [[nodiscard]] constexpr bool contains(T x) const noexcept { return min <= x && x <= max; }
-    /// min < x < max.
-    [[nodiscard]] constexpr bool surrounds(T x) const noexcept { return min < x && x < max; }
-    [[nodiscard]] constexpr T size() const noexcept { return max - min; }
-
-    /// Every real number.
-    [[nodiscard]] static constexpr Interval universe() noexcept { return {-infinity<T>, infinity<T>}; }
-};
-
-} // namespace prism
-
-// ---- prism/core/ray.hpp ----
-// Ray: an origin and a direction; points along it are origin + t * direction.
-
-
-namespace prism {
-
-/// A ray. The direction need not be unit length: t is measured in multiples of it.
-template <Scalar T>
-struct Ray {
-    Vec3<T> origin{};
-    Vec3<T> direction{T(0), T(0), T(-1)};
-
-    /// The point origin + t * direction.
-    [[nodiscard]] constexpr Vec3<T> at(T t) const noexcept { return origin + t * direction; }
-};
-
-} // namespace prism
-
-// ---- prism/core/offset.hpp ----
-// Robust spawning of secondary rays: the one place self-intersection is handled.
-//
-// A shape reports each hit point together with a bound on its floating-point error.
-// A new ray starts from the hit point pushed along the geometric normal just past
-// that bound, to the side the ray leaves by, then rounded one more ulp away, so it
-// can never start on the wrong side of the surface it leaves (Pharr, Jakob and
-// Humphreys, "Physically Based Rendering", 4th ed., section 6.8.6; pbrt-v4
-// OffsetRayOrigin). No other code in prism nudges rays by an epsilon.
-
-
-#include <bit>
-#include <cmath>
-#include <cstdint>
-#include <limits>
-#include <type_traits>
-
-namespace prism {
-
-/// Higham's gamma(n) = n u / (1 - n u), u = machine epsilon / 2: the relative error
-/// bound of n successive rounded operations.
-template <Scalar T>
-[[nodiscard]] constexpr T gamma(int n) noexcept
-{
-    constexpr T u = std::numeric_limits<T>::epsilon() * T(0.5);
-    return T(n) * u / (T(1) - T(n) * u);
-}
-
-/// The next representable value above v (pbrt-v4 NextFloatUp), by stepping its bits:
-/// std::nextafter is an out-of-line library call, and this is on every secondary ray.
-template <Scalar T>
-[[nodiscard]] constexpr T next_float_up(T v) noexcept
-{
-    using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
-    if (v == infinity<T> || v != v) return v;
-    if (v == T(-0.0)) v = T(0.0); // skip -0 so that the step leaves 0
-    Bits bits = std::bit_cast<Bits>(v);
-    bits = v >= T(0) ? bits + 1 : bits - 1;
-    return std::bit_cast<T>(bits);
-}
-
-/// The next representable value below v.
-template <Scalar T>
-[[nodiscard]] constexpr T next_float_down(T v) noexcept
-{
-    using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
-    if (v == -infinity<T> || v != v) return v;
-    if (v == T(0.0)) v = T(-0.0);
-    Bits bits = std::bit_cast<Bits>(v);
-    bits = v > T(0) ? bits - 1 : bits + 1;
-    return std::bit_cast<T>(bits);
-}
-
-/// The origin for a ray leaving point p (absolute error bound p_error per axis) of a
-/// surface with geometric normal n, in direction w.
-template <Scalar T>
-[[nodiscard]] inline Vec3<T> offset_ray_origin(const Vec3<T>& p, const Vec3<T>& p_error, const Vec3<T>& n,
-                                               const Vec3<T>& w) noexcept
-{
-    const T d = dot(abs(n), p_error);
-    const T side = dot(w, n) < T(0) ? T(-1) : T(1);
-    Vec3<T> po = p + (side * d) * n;
-    // Round one ulp further away from the surface on every axis the normal has, so the
-    // offset survives the addition's rounding, and so a point whose error bound is zero
-    // (a box face's snapped coordinate) still leaves the surface: a ray starting exactly
-    // on a face could not tell which side of it it is on.
-    for (int i = 0; i < 3; ++i) {
-        if (side * n[i] > T(0))
-            po[i] = next_float_up(po[i]);
-        else if (side * n[i] < T(0))
-            po[i] = next_float_down(po[i]);
-    }
-    return po;
-}
-
-/// A ray leaving a surface point in direction w.
-template <Scalar T>
-[[nodiscard]] inline Ray<T> spawn_ray(const Vec3<T>& p, const Vec3<T>& p_error, const Vec3<T>& n,
-                                      const Vec3<T>& w) noexcept
-{
-    return {offset_ray_origin(p, p_error, n, w), w};
-}
-
-} // namespace prism
-
-// ---- prism/core/aabb.hpp ----
-// Aabb: an axis-aligned bounding box and its robust slab test.
-
-
-#include <limits>
-
-namespace prism {
-
-/// A sphere that encloses a solid: what the photon tracer aims caustic photons at, and
-/// where parallel light's photons start from.
-template <Scalar T>
-struct BoundingSphere {
-    Vec3<T> center{};
-    T radius = T(0);
-};
-
-/// Axis-aligned box [lo, hi]; empty when lo > hi on any axis (the default).
-template <Scalar T>
-struct Aabb {
-    Vec3<T> lo{infinity<T>};
-    Vec3<T> hi{-infinity<T>};
-
-    [[nodiscard]] constexpr bool empty() const noexcept { return !(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z); }
-
-    /// Every point: the bounds of an unbounded shape such as a half-space.
-    [[nodiscard]] static constexpr Aabb universe() noexcept { return {Vec3<T>(-infinity<T>), Vec3<T>(infinity<T>)}; }
-
-    /// The smallest box holding this one and `other`.
-    [[nodiscard]] constexpr Aabb merged(const Aabb& other) const noexcept
-    {
-        return {component_min(lo, other.lo), component_max(hi, other.hi)};
-    }
-
-    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
-    {
-        return lo.x <= p.x && p.x <= hi.x && lo.y <= p.y && p.y <= hi.y && lo.z <= p.z && p.z <= hi.z;
-    }
-
-    /// Finite on every axis: the box of a bounded shape (false for an empty box too).
-    [[nodiscard]] constexpr bool bounded() const noexcept { return !empty() && is_finite(lo) && is_finite(hi); }
-
-    /// The sphere through the box's corners (for a bounded box).
-    [[nodiscard]] constexpr BoundingSphere<T> bounding_sphere() const noexcept
-    {
-        return {T(0.5) * (lo + hi), T(0.5) * length(hi - lo)};
-    }
-
-    /// The box grown outward by one float step on every side: a box computed by rounding
-    /// to nearest then holds every point of the exact one.
-    [[nodiscard]] constexpr Aabb rounded_out() const noexcept
-    {
-        Aabb out;
-        for (int axis = 0; axis < 3; ++axis) out.lo[axis] = next_float_down(lo[axis]), out.hi[axis] = next_float_up(hi[axis]);
-        return out;
-    }
-
-    /// Whether the ray meets the box at some t >= t_min: the test with which a bounded
-    /// shape skips its own work. It ignores where the ray's range ends, so asking a shape
-    /// again over a shorter range (a scene's surface query) cannot cull what it found
-    /// before; and, as clip(), it never reports a miss for a ray that touches the box.
-    [[nodiscard]] constexpr bool reached_after(const Ray<T>& ray, T t_min) const noexcept
-    {
-        return !clip(ray, {t_min, infinity<T>}).empty();
-    }
-
-    /// Whether a shape inside this box may report a crossing within `range`: the test
-    /// with which a scene skips objects. A shape's crossings are computed with rounding
-    /// that grows with the ray origin's distance from it, so a ray that just misses the
-    /// exact shape may still be reported to cross it, and the scene must then still ask
-    /// it: the box is widened for each ray by gamma(16) of that distance (and of its own
-    /// size).
-    [[nodiscard]] constexpr bool may_cross(const Ray<T>& ray, Interval<T> range) const noexcept
-    {
-        if (range.min <= T(0) && range.max >= T(0) && contains(ray.origin)) return true; // most secondary rays in a closed scene
-        const Vec3<T> half = T(0.5) * (hi - lo);
-        const T pad = gamma<T>(16) * (max_component(abs(ray.origin - (lo + half))) + max_component(half)) + std::numeric_limits<T>::min();
-        const Aabb wide{lo - Vec3<T>(pad), hi + Vec3<T>(pad)};
-        return !wide.clip(ray, range).empty();
-    }
-
-    /// The part of `range` in which the ray is inside the box (empty if none).
-    /// Slab test with the far distance widened by 2*gamma(3), so that rounding never
-    /// reports a miss for a ray that touches the box (pbrt-v4, Bounds3::IntersectP).
-    [[nodiscard]] constexpr Interval<T> clip(const Ray<T>& ray, Interval<T> range) const noexcept
-    {
-        for (int axis = 0; axis < 3; ++axis) {
-            const T o = ray.origin[axis];
-            const T d = ray.direction[axis];
-            if (d == T(0)) {
-                if (o < lo[axis] || o > hi[axis]) return {};
-                continue;
-            }
-            // 1 / d is clamped to the finite range: for a denormal d it would be
-            // infinite, and 0 * inf is NaN where 0 / d is 0 (a ray starting on a face).
-            constexpr T largest = std::numeric_limits<T>::max();
-            const T inv = clamp(T(1) / d, -largest, largest);
-            T t_near = (lo[axis] - o) * inv;
-            T t_far = (hi[axis] - o) * inv;
-            if (t_near > t_far) std::swap(t_near, t_far);
-            t_far *= T(1) + T(2) * gamma<T>(3);
-            if (t_near > range.min) range.min = t_near;
-            if (t_far < range.max) range.max = t_far;
-            if (range.min > range.max) return {};
-        }
-        return range;
-    }
 };
 
 } // namespace prism

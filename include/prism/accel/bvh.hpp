@@ -1,0 +1,279 @@
+// SPDX-License-Identifier: MIT
+// Bvh: a bounding volume hierarchy over boxes, for ray queries (after madmann91's bvh v2:
+// a flat node array, a Config, the query a template of the traversal).
+//
+// Build: top-down, binned surface area heuristic (Wald 2007). At each node the
+// primitives' centroids are binned along each axis, every bin boundary is costed as
+//     C = C_trav + C_isect (A_left n_left + A_right n_right) / A_node
+// and the cheapest split is taken, unless a leaf of n primitives (C_isect n) is cheaper
+// and holds no more than max_leaf_size. Primitives whose centroids coincide are split by
+// count. Below depth 48 only count splits are made, so no tree is deeper than 48 + 32
+// levels and traversal needs a fixed stack. The two children of a node are adjacent in
+// the array, so a node stores its box, the index of its first child or primitive, and a
+// primitive count (0 for an inner node): 32 bytes in float.
+//
+// Traversal visits children nearest first and never misses a primitive whose box the
+// ray may cross: each node's box is tested as Aabb::may_cross tests an object's box
+// (widened by gamma(16) of the ray origin's distance, the far slab by 2 gamma(3)), and a
+// node's widened box holds each widened box inside it. So a scene that accelerates its
+// linear scan with a Bvh tests every object that scan would have tested, and finds the
+// same hit. The query is the caller's: visit(primitive, range) may shrink range.max
+// (closest hit) or return true to stop (any hit). Queries allocate nothing.
+#pragma once
+
+#include <prism/core/aabb.hpp>
+#include <prism/core/check.hpp>
+#include <prism/core/math.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <span>
+#include <vector>
+
+namespace prism {
+
+struct BvhConfig {
+    int max_leaf_size = 4;      ///< a leaf holds at most this many primitives (>= 1)
+    int bins = 16;              ///< SAH bins per axis (2 to 256)
+    float traversal_cost = 1;   ///< C_trav, relative to one primitive test
+};
+
+template <Scalar T>
+struct BvhNode {
+    Aabb<T> box;
+    std::uint32_t first = 0; ///< first child (inner node) or first primitive (leaf)
+    std::uint32_t count = 0; ///< primitives in a leaf; 0 for an inner node
+
+    [[nodiscard]] constexpr bool leaf() const noexcept { return count != 0; }
+};
+
+namespace detail {
+
+/// A ray with its slabs' reciprocals worked out once, for many box tests.
+template <Scalar T>
+struct SlabRay {
+    Vec3<T> origin, direction, inverse;
+
+    constexpr explicit SlabRay(const Ray<T>& ray) noexcept : origin(ray.origin), direction(ray.direction)
+    {
+        constexpr T largest = std::numeric_limits<T>::max();
+        for (int axis = 0; axis < 3; ++axis) inverse[axis] = direction[axis] == T(0) ? T(0) : clamp(T(1) / direction[axis], -largest, largest);
+    }
+
+    /// Aabb::may_cross's interval (empty if the ray cannot cross the box within range),
+    /// with the same arithmetic: the same answer for every box and ray.
+    [[nodiscard]] constexpr Interval<T> may_cross(const Aabb<T>& box, Interval<T> range) const noexcept
+    {
+        if (range.min <= T(0) && range.max >= T(0) && box.contains(origin)) return range;
+        const Vec3<T> half = T(0.5) * (box.hi - box.lo);
+        const T pad = gamma<T>(16) * (max_component(abs(origin - (box.lo + half))) + max_component(half)) + std::numeric_limits<T>::min();
+        for (int axis = 0; axis < 3; ++axis) {
+            const T lo = box.lo[axis] - pad, hi = box.hi[axis] + pad, o = origin[axis];
+            if (direction[axis] == T(0)) {
+                if (o < lo || o > hi) return {};
+                continue;
+            }
+            T t_near = (lo - o) * inverse[axis];
+            T t_far = (hi - o) * inverse[axis];
+            if (t_near > t_far) std::swap(t_near, t_far);
+            t_far *= T(1) + T(2) * gamma<T>(3);
+            if (t_near > range.min) range.min = t_near;
+            if (t_far < range.max) range.max = t_far;
+            if (range.min > range.max) return {};
+        }
+        return range;
+    }
+};
+
+template <Scalar T>
+constexpr T half_area(const Aabb<T>& b) noexcept
+{
+    const Vec3<T> d = b.hi - b.lo;
+    return d.x * d.y + d.y * d.z + d.z * d.x;
+}
+
+} // namespace detail
+
+template <Scalar T>
+class Bvh {
+public:
+    using scalar_type = T;
+    static constexpr int max_depth = 48 + 32;
+
+    constexpr Bvh() = default;
+
+    /// The hierarchy over `boxes`; primitive i is boxes[i]. Every box must be bounded
+    /// (finite, not empty): unbounded shapes are tested on their own, beside the tree.
+    constexpr explicit Bvh(std::span<const Aabb<T>> boxes, BvhConfig config = {})
+    {
+        if (config.max_leaf_size < 1) detail::throw_invalid("BvhConfig max_leaf_size must be >= 1, got ", config.max_leaf_size);
+        if (config.bins < 2 || config.bins > 256) detail::throw_invalid("BvhConfig bins must be in [2, 256], got ", config.bins);
+        if (!(config.traversal_cost >= 0.0f)) detail::throw_invalid("BvhConfig traversal_cost must be >= 0, got ", config.traversal_cost);
+        if (boxes.size() >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
+            detail::throw_invalid("Bvh takes fewer than 2^32 - 1 primitives, got ", boxes.size());
+        for (std::size_t i = 0; i < boxes.size(); ++i)
+            if (!boxes[i].bounded()) detail::throw_invalid("Bvh primitive ", i, " has no finite box: test unbounded shapes beside the tree");
+        if (boxes.empty()) return;
+        build(boxes, config);
+    }
+
+    [[nodiscard]] constexpr std::span<const BvhNode<T>> nodes() const noexcept { return nodes_; }
+    /// The primitives in leaf order: a leaf holds primitives()[first, first + count).
+    [[nodiscard]] constexpr std::span<const std::uint32_t> primitives() const noexcept { return primitives_; }
+    [[nodiscard]] constexpr std::size_t size() const noexcept { return primitives_.size(); }
+    [[nodiscard]] constexpr int depth() const noexcept { return depth_; }
+
+    /// Visit, nearest node first, every primitive whose box the ray may cross within
+    /// `range`: visit(primitive, range) tests it, may shrink range.max to a hit it found,
+    /// and returns true to end the query (an any-hit query's first hit).
+    /// Returns whether a visit ended it.
+    template <class Visit>
+    constexpr bool traverse(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
+    {
+        if (nodes_.empty()) return false;
+        const detail::SlabRay<T> slab(ray);
+        if (slab.may_cross(nodes_[0].box, range).empty()) return false;
+        std::array<std::uint32_t, max_depth + 1> stack{};
+        int top = 0;
+        std::uint32_t at = 0;
+        for (;;) {
+            const BvhNode<T>& node = nodes_[at];
+            if (node.leaf()) {
+                for (std::uint32_t k = node.first; k < node.first + node.count; ++k)
+                    if (visit(primitives_[k], range)) return true;
+            } else {
+                const std::uint32_t left = node.first, right = node.first + 1;
+                const Interval<T> a = slab.may_cross(nodes_[left].box, range), b = slab.may_cross(nodes_[right].box, range);
+                const bool hit_a = !a.empty(), hit_b = !b.empty();
+                if (hit_a && hit_b) {
+                    const bool left_first = a.min <= b.min;
+                    stack[std::size_t(top++)] = left_first ? right : left;
+                    at = left_first ? left : right;
+                    continue;
+                }
+                if (hit_a || hit_b) {
+                    at = hit_a ? left : right;
+                    continue;
+                }
+            }
+            // Next on the stack, skipping nodes the shrunk range no longer reaches.
+            for (;;) {
+                if (top == 0) return false;
+                at = stack[std::size_t(--top)];
+                if (!slab.may_cross(nodes_[at].box, range).empty()) break;
+            }
+        }
+    }
+
+private:
+    constexpr void build(std::span<const Aabb<T>> boxes, const BvhConfig& config)
+    {
+        const auto n = std::uint32_t(boxes.size());
+        std::vector<Vec3<T>> centers(n);
+        for (std::uint32_t i = 0; i < n; ++i) centers[i] = T(0.5) * (boxes[i].lo + boxes[i].hi);
+        primitives_.resize(n);
+        std::iota(primitives_.begin(), primitives_.end(), std::uint32_t(0));
+        nodes_.reserve(2 * std::size_t(n) - 1);
+        nodes_.push_back({bounds(boxes, 0, n), 0, n});
+        struct Pending {
+            std::uint32_t node;
+            int depth;
+        };
+        std::vector<Pending> pending{{0, 1}};
+        depth_ = 1;
+        const std::size_t bins = std::size_t(config.bins);
+        while (!pending.empty()) {
+            const auto [index, depth] = pending.back();
+            pending.pop_back();
+            depth_ = std::max(depth_, depth);
+            const std::uint32_t first = nodes_[index].first, count = nodes_[index].count;
+            if (count <= 1) continue;
+            // The centroids' bounds: the bins span them.
+            Aabb<T> middle;
+            for (std::uint32_t k = first; k < first + count; ++k) middle = middle.merged({centers[primitives_[k]], centers[primitives_[k]]});
+            const auto begin = primitives_.begin() + first, end = begin + count;
+            std::uint32_t split = 0; // primitives [first, first + split) go left
+            if (depth < 48 && !(middle.lo == middle.hi)) {
+                // Binned SAH over the three axes.
+                T best_cost = infinity<T>;
+                int best_axis = -1;
+                std::size_t best_bin = 0;
+                for (int axis = 0; axis < 3; ++axis) {
+                    const T extent = middle.hi[axis] - middle.lo[axis];
+                    if (!(extent > T(0))) continue;
+                    std::array<Aabb<T>, 256> bin_box{};
+                    std::array<std::size_t, 256> bin_count{};
+                    const T scale = T(bins) / extent;
+                    for (std::uint32_t k = first; k < first + count; ++k) {
+                        const std::uint32_t p = primitives_[k];
+                        const std::size_t b = bin_of(centers[p][axis], middle.lo[axis], scale, bins);
+                        bin_box[b] = bin_box[b].merged(boxes[p]);
+                        ++bin_count[b];
+                    }
+                    // Right-to-left sweep of areas and counts, then left to right.
+                    std::array<T, 256> right_cost{};
+                    Aabb<T> right_box;
+                    std::size_t right_count = 0;
+                    for (std::size_t b = bins - 1; b > 0; --b) {
+                        right_box = right_box.merged(bin_box[b]);
+                        right_count += bin_count[b];
+                        right_cost[b] = right_count ? detail::half_area(right_box) * T(right_count) : T(0);
+                    }
+                    Aabb<T> left_box;
+                    std::size_t left_count = 0;
+                    for (std::size_t b = 1; b < bins; ++b) {
+                        left_box = left_box.merged(bin_box[b - 1]);
+                        left_count += bin_count[b - 1];
+                        if (left_count == 0 || left_count == count) continue;
+                        const T cost = detail::half_area(left_box) * T(left_count) + right_cost[b];
+                        if (cost < best_cost) best_cost = cost, best_axis = axis, best_bin = b;
+                    }
+                }
+                const T area = detail::half_area(nodes_[index].box);
+                const T leaf_cost = T(count), split_cost = T(config.traversal_cost) + (area > T(0) ? best_cost / area : T(count));
+                if (best_axis < 0 || (leaf_cost <= split_cost && count <= std::uint32_t(config.max_leaf_size))) continue; // a leaf
+                const T lo = middle.lo[best_axis], scale = T(bins) / (middle.hi[best_axis] - middle.lo[best_axis]);
+                split = std::uint32_t(std::partition(begin, end, [&](std::uint32_t p) { return bin_of(centers[p][best_axis], lo, scale, bins) < best_bin; }) - begin);
+            } else {
+                if (count <= std::uint32_t(config.max_leaf_size)) continue; // coincident centroids: a leaf if it may be one
+                // By count: the lower half along the widest centroid axis (all equal: any half).
+                const int axis = index_of_max(middle.hi - middle.lo);
+                split = count / 2;
+                std::nth_element(begin, begin + split, end, [&](std::uint32_t a, std::uint32_t b) {
+                    return centers[a][axis] < centers[b][axis] || (centers[a][axis] == centers[b][axis] && a < b);
+                });
+            }
+            const std::uint32_t child = std::uint32_t(nodes_.size());
+            nodes_.push_back({bounds(boxes, first, split), first, split});
+            nodes_.push_back({bounds(boxes, first + split, count - split), first + split, count - split});
+            nodes_[index].first = child;
+            nodes_[index].count = 0;
+            pending.push_back({child + 1, depth + 1});
+            pending.push_back({child, depth + 1});
+        }
+    }
+
+    [[nodiscard]] static constexpr std::size_t bin_of(T c, T lo, T scale, std::size_t bins) noexcept
+    {
+        const T b = (c - lo) * scale;
+        return b >= T(bins) ? bins - 1 : (b > T(0) ? std::size_t(b) : 0);
+    }
+
+    [[nodiscard]] static constexpr int index_of_max(const Vec3<T>& v) noexcept { return v.x >= v.y ? (v.x >= v.z ? 0 : 2) : (v.y >= v.z ? 1 : 2); }
+
+    [[nodiscard]] constexpr Aabb<T> bounds(std::span<const Aabb<T>> boxes, std::uint32_t first, std::uint32_t count) const noexcept
+    {
+        Aabb<T> box;
+        for (std::uint32_t k = first; k < first + count; ++k) box = box.merged(boxes[primitives_[k]]);
+        return box;
+    }
+
+    std::vector<BvhNode<T>> nodes_;
+    std::vector<std::uint32_t> primitives_;
+    int depth_ = 0;
+};
+
+} // namespace prism

@@ -1,0 +1,294 @@
+// SPDX-License-Identifier: MIT
+// Bvh against brute force: the same nearest hit, at the same t, for every ray.
+#include <prism/accel/bvh.hpp>
+#include <prism/core/rng.hpp>
+#include <prism/core/sampling.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <vector>
+
+using namespace prism;
+
+namespace {
+
+template <class T>
+struct Ball {
+    Vec3<T> center;
+    T radius;
+
+    [[nodiscard]] Aabb<T> box() const { return Aabb<T>{center - Vec3<T>(radius), center + Vec3<T>(radius)}.rounded_out(); }
+
+    /// The nearest crossing within range, or infinity; worked out in long double, so
+    /// that a ray from far away finds no spurious crossing.
+    [[nodiscard]] T hit(const Ray<T>& ray, Interval<T> range) const
+    {
+        using L = long double;
+        const L ox = L(ray.origin.x) - L(center.x), oy = L(ray.origin.y) - L(center.y), oz = L(ray.origin.z) - L(center.z);
+        const L dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
+        const L a = dx * dx + dy * dy + dz * dz, b = ox * dx + oy * dy + oz * dz, c = ox * ox + oy * oy + oz * oz - L(radius) * L(radius);
+        const L disc = b * b - a * c;
+        if (disc < 0) return infinity<T>;
+        const L root = std::sqrt(disc);
+        for (const L t : {(-b - root) / a, (-b + root) / a})
+            if (T(t) >= range.min && T(t) <= range.max) return T(t);
+        return infinity<T>;
+    }
+};
+
+template <class T>
+bool holds(const Aabb<T>& outer, const Aabb<T>& inner)
+{
+    return outer.contains(inner.lo) && outer.contains(inner.hi);
+}
+
+template <class T>
+struct Found {
+    T t = infinity<T>;
+    std::uint32_t index = std::uint32_t(-1);
+    friend bool operator==(const Found&, const Found&) = default;
+};
+
+/// The nearest hit, ties to the lower index, by a scene's linear scan: every ball whose
+/// box the ray may cross (a naive quadratic in float finds spurious hits from far away,
+/// and the box keeps them out, as it does in a scene).
+template <class T>
+Found<T> brute_force(const std::vector<Ball<T>>& balls, const Ray<T>& ray, Interval<T> range)
+{
+    Found<T> best;
+    for (std::uint32_t i = 0; i < balls.size(); ++i) {
+        if (!balls[i].box().may_cross(ray, range)) continue;
+        const T t = balls[i].hit(ray, range);
+        if (t < best.t || (t == best.t && t < infinity<T> && i < best.index)) best = {t, i};
+    }
+    return best;
+}
+
+template <class T>
+Found<T> by_bvh(const Bvh<T>& bvh, const std::vector<Ball<T>>& balls, const Ray<T>& ray, Interval<T> range, int* visits = nullptr)
+{
+    Found<T> best;
+    bvh.traverse(ray, range, [&](std::uint32_t i, Interval<T>& r) {
+        if (visits) ++*visits;
+        const T t = balls[i].hit(ray, r);
+        if (t < best.t || (t == best.t && t < infinity<T> && i < best.index)) best = {t, i}, r.max = t;
+        return false;
+    });
+    return best;
+}
+
+template <class T>
+std::vector<Aabb<T>> boxes_of(const std::vector<Ball<T>>& balls)
+{
+    std::vector<Aabb<T>> boxes;
+    for (const auto& b : balls) boxes.push_back(b.box());
+    return boxes;
+}
+
+template <class T>
+std::vector<Ball<T>> random_balls(int n, Pcg32& rng, T spread, T size)
+{
+    std::vector<Ball<T>> balls;
+    for (int i = 0; i < n; ++i) {
+        const Vec3<T> c{rng.uniform<T>(), rng.uniform<T>(), rng.uniform<T>()};
+        balls.push_back({(c - Vec3<T>(T(0.5))) * spread, size * (T(0.05) + rng.uniform<T>())});
+    }
+    return balls;
+}
+
+/// Rays of every kind: from inside the cloud, from far away (1e4 times its size),
+/// axis-aligned, and with a denormal component.
+template <class T>
+Ray<T> random_ray(Pcg32& rng, T spread, int kind)
+{
+    const Vec3<T> target = (Vec3<T>{rng.uniform<T>(), rng.uniform<T>(), rng.uniform<T>()} - Vec3<T>(T(0.5))) * spread;
+    switch (kind % 4) {
+    case 0: return {target, uniform_sphere<T>(rng)};
+    case 1: {
+        const Vec3<T> from = target - uniform_sphere<T>(rng) * (spread * T(1e4));
+        return {from, normalize(target - from)};
+    }
+    case 2: {
+        Vec3<T> d{0};
+        d[int(rng.uniform<T>() * T(2.999))] = rng.uniform<T>() < T(0.5) ? T(-1) : T(1);
+        return {target - d * spread, d};
+    }
+    default: {
+        Vec3<T> d = uniform_sphere<T>(rng);
+        d[int(rng.uniform<T>() * T(2.999))] = std::numeric_limits<T>::denorm_min();
+        return {target - d * spread, normalize(d)};
+    }
+    }
+}
+
+} // namespace
+
+TEST_CASE_TEMPLATE("the node test is Aabb::may_cross, with the reciprocals worked out once", T, float, double)
+{
+    Pcg32 rng(11u, 3u);
+    int mismatches = 0, crossed = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const Ball<T> ball{(Vec3<T>{rng.uniform<T>(), rng.uniform<T>(), rng.uniform<T>()} - Vec3<T>(T(0.5))) * T(10), T(0.01) + rng.uniform<T>()};
+        const Ray<T> ray = random_ray<T>(rng, T(10), i);
+        const Interval<T> range{T(0), i % 3 == 0 ? infinity<T> : T(20) * rng.uniform<T>()};
+        const bool slow = ball.box().may_cross(ray, range);
+        const bool fast = !detail::SlabRay<T>(ray).may_cross(ball.box(), range).empty();
+        mismatches += slow != fast;
+        crossed += slow;
+    }
+    CHECK(mismatches == 0);
+    CHECK(crossed > 1000);
+}
+
+TEST_CASE_TEMPLATE("the nearest hit through the Bvh is brute force's, same ball and same t, for every ray", T, float, double)
+{
+    Pcg32 rng(5u, 9u);
+    for (const int n : {1, 2, 7, 100, 3000}) {
+        CAPTURE(n);
+        const auto balls = random_balls<T>(n, rng, T(10), T(3) / std::cbrt(T(n)));
+        const Bvh<T> bvh(boxes_of(balls));
+        int mismatches = 0, hits = 0;
+        const int rays = n >= 1000 ? 3000 : 40000; // brute force costs n per ray
+        for (int i = 0; i < rays; ++i) {
+            const Ray<T> ray = random_ray<T>(rng, T(10), i);
+            const Interval<T> range{T(0), infinity<T>};
+            const Found<T> a = brute_force(balls, ray, range), b = by_bvh(bvh, balls, ray, range);
+            mismatches += !(a == b);
+            hits += a.t < infinity<T>;
+        }
+        CHECK(mismatches == 0);
+        CHECK(hits > rays / 20);
+    }
+}
+
+TEST_CASE("an any-hit query stops at its first hit and agrees with brute force on whether there is one")
+{
+    Pcg32 rng(7u, 1u);
+    const auto balls = random_balls<float>(500, rng, 10.0f, 0.3f);
+    const Bvh<float> bvh(boxes_of(balls));
+    int mismatches = 0, blocked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Ray<float> ray = random_ray<float>(rng, 10.0f, i);
+        const Interval<float> range{0.0f, 5.0f * rng.uniform<float>()};
+        Interval<float> r = range;
+        int tests_after_hit = 0;
+        bool hit = false;
+        bvh.traverse(ray, r, [&](std::uint32_t k, Interval<float>& rr) {
+            tests_after_hit += hit;
+            hit = balls[k].hit(ray, rr) < infinity<float>;
+            return hit;
+        });
+        mismatches += hit != (brute_force(balls, ray, range).t < infinity<float>);
+        blocked += hit;
+        CHECK(tests_after_hit == 0);
+    }
+    CHECK(mismatches == 0);
+    CHECK(blocked > 500);
+}
+
+TEST_CASE("the tree's shape: every primitive once, children inside their parent, leaves within max_leaf_size")
+{
+    Pcg32 rng(3u, 3u);
+    for (const int leaf : {1, 4, 8}) {
+        const auto balls = random_balls<float>(5000, rng, 10.0f, 0.1f);
+        const auto boxes = boxes_of(balls);
+        const Bvh<float> bvh(boxes, {.max_leaf_size = leaf});
+        std::vector<int> seen(balls.size(), 0);
+        bool inside = true, small = true;
+        for (const auto& node : bvh.nodes()) {
+            if (node.leaf()) {
+                small = small && node.count <= std::uint32_t(leaf);
+                for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+                    const std::uint32_t p = bvh.primitives()[k];
+                    ++seen[p];
+                    inside = inside && holds(node.box, boxes[p]);
+                }
+            } else
+                for (const std::uint32_t c : {node.first, node.first + 1}) inside = inside && holds(node.box, bvh.nodes()[c].box);
+        }
+        CHECK(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
+        CHECK(inside);
+        CHECK(small);
+        CHECK(bvh.nodes().size() <= 2 * balls.size() - 1);
+    }
+}
+
+TEST_CASE("degenerate sets: identical boxes, one box, exponentially spaced boxes; depth stays bounded")
+{
+    // 1000 copies of one ball: centroids coincide, so the tree splits by count.
+    const std::vector<Ball<double>> same(1000, Ball<double>{{1, 2, 3}, 0.5});
+    const Bvh<double> bvh(boxes_of(same));
+    CHECK(bvh.depth() <= 12);
+    const Ray<double> ray{{1, 2, -5}, {0, 0, 1}};
+    CHECK(by_bvh(bvh, same, ray, {0, infinity<double>}) == Found<double>{7.5, 0});
+    // One ball.
+    const std::vector<Ball<double>> one{{{0, 0, 0}, 1}};
+    CHECK(by_bvh(Bvh<double>(boxes_of(one)), one, {{0, 0, -5}, {0, 0, 1}}, {0, infinity<double>}).t == doctest::Approx(4.0));
+    // Balls at 2^k along x, k = 0..200: the SAH would cut one off at each level; past
+    // depth 48 the tree splits by count.
+    std::vector<Ball<double>> spaced;
+    for (int k = 0; k < 200; ++k) spaced.push_back({{std::ldexp(1.0, k), 0, 0}, std::ldexp(0.25, k)});
+    const Bvh<double> deep(boxes_of(spaced));
+    CHECK(deep.depth() <= Bvh<double>::max_depth);
+    Pcg32 rng(1u, 1u);
+    int mismatches = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Ray<double> r{{std::ldexp(1.0, int(rng.uniform<double>() * 190)), 0, -1}, normalize(uniform_sphere<double>(rng) + Vec3<double>(0, 0, 1))};
+        mismatches += !(by_bvh(deep, spaced, r, {0, infinity<double>}) == brute_force(spaced, r, {0, infinity<double>}));
+    }
+    CHECK(mismatches == 0);
+    // No primitives: no hit.
+    CHECK(by_bvh(Bvh<double>(std::span<const Aabb<double>>{}), same, ray, {0, infinity<double>}).t == infinity<double>);
+}
+
+TEST_CASE("work per ray grows as log N: nodes visited from 10^2 to 10^4 balls")
+{
+    Pcg32 rng(9u, 2u);
+    double visits_per_ray[2] = {0, 0};
+    for (int j = 0; j < 2; ++j) {
+        const int n = j == 0 ? 100 : 10000;
+        const auto balls = random_balls<float>(n, rng, 10.0f, 2.0f / std::cbrt(float(n)));
+        const Bvh<float> bvh(boxes_of(balls));
+        int visits = 0;
+        for (int i = 0; i < 20000; ++i) (void)by_bvh(bvh, balls, {{-20, 0, 0}, normalize(Vec3<float>(20, 10 * rng.uniform<float>() - 5, 10 * rng.uniform<float>() - 5))}, {0, infinity<float>}, &visits);
+        visits_per_ray[j] = visits / 20000.0;
+    }
+    MESSAGE("primitives tested per ray: ", visits_per_ray[0], " at 10^2, ", visits_per_ray[1], " at 10^4");
+    CHECK(visits_per_ray[0] > 0.2);
+    CHECK(visits_per_ray[1] < 4 * visits_per_ray[0]); // a linear scan: 100x
+}
+
+TEST_CASE("bad input is refused, naming it")
+{
+    std::vector<Aabb<float>> boxes{{{0, 0, 0}, {1, 1, 1}}, Aabb<float>::universe()};
+    CHECK_THROWS_WITH_AS(Bvh<float>{boxes}, doctest::Contains("Bvh primitive 1 has no finite box"), std::invalid_argument);
+    boxes[1] = {{0, std::nanf(""), 0}, {1, 1, 1}};
+    CHECK_THROWS_WITH_AS(Bvh<float>{boxes}, doctest::Contains("Bvh primitive 1 has no finite box"), std::invalid_argument);
+    boxes[1] = Aabb<float>{};
+    CHECK_THROWS_WITH_AS(Bvh<float>{boxes}, doctest::Contains("Bvh primitive 1"), std::invalid_argument);
+    boxes.pop_back();
+    CHECK_THROWS_WITH_AS((Bvh<float>{boxes, {.max_leaf_size = 0}}), doctest::Contains("max_leaf_size must be >= 1, got 0"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((Bvh<float>{boxes, {.bins = 1}}), doctest::Contains("bins must be in [2, 256], got 1"), std::invalid_argument);
+}
+
+namespace {
+
+/// Built and queried at compile time: 8 unit cubes along x, a ray down the row.
+constexpr int constexpr_query()
+{
+    std::array<Aabb<double>, 8> boxes{};
+    for (int i = 0; i < 8; ++i) boxes[std::size_t(i)] = {{2.0 * i, 0, 0}, {2.0 * i + 1, 1, 1}};
+    const Bvh<double> bvh(boxes, {.max_leaf_size = 1});
+    Interval<double> range{0, infinity<double>};
+    int first = -1;
+    bvh.traverse({{-1, 0.5, 0.5}, {1, 0, 0}}, range, [&](std::uint32_t i, Interval<double>& r) {
+        const double t = 2.0 * i + 1; // where the ray enters cube i
+        if (t < r.max) r.max = t, first = int(i);
+        return false;
+    });
+    return first;
+}
+static_assert(constexpr_query() == 0);
+
+} // namespace
