@@ -3981,6 +3981,7 @@ template <class S, class M>
 #include <tuple>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace prism {
 
@@ -4062,6 +4063,41 @@ struct ShadowBoundaries {
     }
 };
 
+/// What a slot keeps to find its objects: nothing for one object; for an ObjectArray of
+/// at least tree_from bounded objects, a Bvh over them and the list of its unbounded ones
+/// (tested on every ray). Fewer are scanned: the Cornell box's five walls render 20 %
+/// slower through a tree.
+template <class SlotT>
+struct SlotIndex {
+    static constexpr bool accelerated = false;
+    constexpr explicit SlotIndex(const SlotT&) noexcept {}
+};
+
+template <class S, class M>
+struct SlotIndex<ObjectArray<S, M>> {
+    using T = typename S::scalar_type;
+    static constexpr bool accelerated = true;
+    static constexpr std::size_t tree_from = 8;
+    bool tree = false;                   ///< false: the array is scanned
+    Bvh<T> bvh;                          ///< over bounded[...]
+    std::vector<std::uint32_t> bounded;  ///< the object behind each of the tree's primitives
+    std::vector<std::uint32_t> unbounded;
+
+    explicit SlotIndex(const ObjectArray<S, M>& array) : tree(array.items.size() >= tree_from)
+    {
+        if (!tree) return;
+        std::vector<Aabb<T>> boxes;
+        for (std::uint32_t k = 0; k < array.items.size(); ++k) {
+            if (array.items[k].bounded) {
+                bounded.push_back(k);
+                boxes.push_back(array.items[k].shape.bounds());
+            } else
+                unbounded.push_back(k);
+        }
+        bvh = Bvh<T>(boxes);
+    }
+};
+
 } // namespace detail
 
 /// A scene: its lights, object slots (one type each), background and ambient radiance.
@@ -4091,7 +4127,9 @@ public:
     Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
     Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
 
-    constexpr Scene(LightsOfScene light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
+    constexpr Scene(LightsOfScene light_list, Slots... objects)
+        : lights(std::move(light_list)), slots(std::move(objects)...),
+          indices_(std::apply([](const auto&... slot) { return std::tuple<detail::SlotIndex<Slots>...>(detail::SlotIndex<Slots>(slot)...); }, slots))
     {
         // One box around every bounded object: a ray that misses it skips them all.
         std::apply([this](const auto&... slot) { (add_to_cluster(slot), ...); }, slots);
@@ -4177,6 +4215,9 @@ public:
 private:
     Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
     bool bounded_objects_ = false;
+    /// Each slot's index (a Bvh for an ObjectArray), built with the scene: the slots are
+    /// not to be changed after it.
+    std::tuple<detail::SlotIndex<Slots>...> indices_;
 
     // Scene Private Methods
 
@@ -4223,6 +4264,10 @@ private:
     template <std::size_t I>
     void nearest_in_slot(const Ray<T>& ray, Interval<T>& range, Nearest& nearest, bool near_cluster) const noexcept
     {
+        using Index = std::tuple_element_t<I, std::tuple<detail::SlotIndex<Slots>...>>;
+        if constexpr (Index::accelerated) {
+            if (std::get<I>(indices_).tree) return nearest_in_tree<I>(ray, range, nearest, near_cluster);
+        }
         const auto objects = objects_of(std::get<I>(slots));
         for (std::size_t k = 0; k < objects.size(); ++k) {
             if (!worth_testing(objects[k], near_cluster)) continue;
@@ -4235,6 +4280,32 @@ private:
             nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(crossings.front().t)}};
             range.max = crossings.front().t;
         }
+    }
+
+    /// nearest_in_slot through the slot's Bvh: the same object at the same t.
+    template <std::size_t I>
+    [[gnu::noinline]] void nearest_in_tree(const Ray<T>& ray, Interval<T>& range, Nearest& nearest, bool near_cluster) const noexcept
+    {
+        const auto objects = objects_of(std::get<I>(slots));
+        const auto& index = std::get<I>(indices_);
+        PRISM_ASSERT(index.bvh.size() + index.unbounded.size() == objects.size());
+        // Crossings lie strictly inside the range, so in a scan in index order the first
+        // object at a t wins a tie. The tree visits objects in another order: one that
+        // comes before the nearest so far is asked up to just past its t, so that it
+        // takes a tie as it would have in the scan.
+        const auto test = [&](std::uint32_t k, Interval<T>& r) {
+            const bool before = nearest.found && nearest.slot == I && k < nearest.index;
+            const auto crossings = objects[k].shape.template crossings<false>(ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r);
+            if (crossings.empty()) return;
+            nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(crossings.front().t)}};
+            r.max = crossings.front().t;
+        };
+        for (const std::uint32_t k : index.unbounded) test(k, range);
+        if (near_cluster)
+            index.bvh.traverse(ray, range, [&](std::uint32_t p, Interval<T>& r) {
+                test(index.bounded[p], r);
+                return false;
+            });
     }
 
     /// The nearest object's first crossing with its surface: the same computation as
@@ -4257,6 +4328,13 @@ private:
         using Slot = std::tuple_element_t<I, std::tuple<Slots...>>;
         using M = typename Slot::material_type;
         const Interval<T> range{T(0), t_max};
+        using Index = std::tuple_element_t<I, std::tuple<detail::SlotIndex<Slots>...>>;
+        if constexpr (Index::accelerated && (!transmits<M> || Glass == ShadowsThroughGlass::blocked)) {
+            // Opaque: any crossing blocks the ray, in whatever order the tree finds it.
+            // (Transmissive objects multiply their attenuations in index order below,
+            // so that the product is the same bits.)
+            if (std::get<I>(indices_).tree) return !blocked_in_tree<I>(ray, range, near_cluster);
+        }
         std::uint32_t index = 0;
         for (const auto& object : objects_of(std::get<I>(slots))) {
             const std::uint32_t this_index = index++;
@@ -4272,6 +4350,19 @@ private:
             }
         }
         return true;
+    }
+
+    /// Whether an object of the slot's Bvh (or an unbounded one) crosses the ray in range.
+    template <std::size_t I>
+    [[gnu::noinline]] bool blocked_in_tree(const Ray<T>& ray, Interval<T> range, bool near_cluster) const noexcept
+    {
+        const auto objects = objects_of(std::get<I>(slots));
+        const auto& index = std::get<I>(indices_);
+        const auto blocks = [&](std::uint32_t k) { return !objects[k].shape.template crossings<false>(ray, range).empty(); };
+        for (const std::uint32_t k : index.unbounded)
+            if (blocks(k)) return true;
+        Interval<T> r = range;
+        return near_cluster && index.bvh.traverse(ray, r, [&](std::uint32_t p, Interval<T>&) { return blocks(index.bounded[p]); });
     }
 
     /// A shadow ray through overlapping transmissive objects: each stretch attenuated by

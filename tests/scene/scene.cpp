@@ -125,3 +125,72 @@ TEST_CASE_TEMPLATE("closest_hit loses no hit and spawns on the right side, near 
     CHECK(double(total.wrong_side) <= 1e-4 * double(total.spawn_checks));
     MESSAGE(total.rays, " rays: wrong-side spawns ", total.wrong_side, " of ", total.spawn_checks);
 }
+
+namespace {
+
+/// The linear scan the scene did before its arrays had a Bvh: every object asked in
+/// slot and index order; crossings lie strictly inside the range, so the first object at
+/// a t wins a tie.
+template <class SceneT, class R>
+auto scanned_hit(const SceneT& scene, const R& ray, Interval<float> range)
+{
+    struct Best {
+        float t = infinity<float>;
+        std::uint32_t slot = 9, index = 0;
+    } best;
+    std::uint32_t slot = 0;
+    std::apply([&](const auto&... arrays) {
+        ([&](const auto& array) {
+            for (std::uint32_t k = 0; k < array.items.size(); ++k) {
+                const auto c = array.items[k].shape.crossings(ray, range);
+                if (!c.empty()) best = {c.front().t, slot, k}, range.max = c.front().t;
+            }
+            ++slot;
+        }(arrays), ...);
+    }, scene.slots);
+    return best;
+}
+
+} // namespace
+
+TEST_CASE("an array's Bvh finds what a scan of every object finds: the same object at the same t, and the same shadows")
+{
+    Pcg32 rng(21u, 4u);
+    ObjectArray<Sphere<float>, Diffuse<float>> balls;
+    for (int i = 0; i < 1000; ++i) {
+        const Vec3<float> c = (Vec3<float>{rng.uniform<float>(), rng.uniform<float>(), rng.uniform<float>()} - Vec3<float>(0.5f)) * 20.0f;
+        balls.items.push_back({Sphere<float>(c, 0.1f + 0.5f * rng.uniform<float>()), Diffuse<float>{}});
+    }
+    // Coincident twins: a tie at the same t, which the first one wins.
+    balls.items.push_back(balls.items[17]);
+    ObjectArray<Plane<float>, Diffuse<float>> planes{{{Plane<float>({0, 1, 0}, -12), Diffuse<float>{}}, {Plane<float>({1, 0, 0}, 12), Diffuse<float>{}}}};
+    const Scene scene{Lights{PointLight<float>{.position = {0, 30, 0}}}, std::move(balls), std::move(planes)};
+    int mismatches = 0, shadow_mismatches = 0, hits = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3<float> target = (Vec3<float>{rng.uniform<float>(), rng.uniform<float>(), rng.uniform<float>()} - Vec3<float>(0.5f)) * 20.0f;
+        Vec3<float> d = uniform_sphere<float>(rng);
+        if (i % 5 == 1) d = {0, 0, i % 2 ? 1.0f : -1.0f}; // axis-aligned
+        const float distance = i % 5 == 2 ? 1e4f : (i % 5 == 3 ? 30.0f : 0.0f); // far away, outside, inside the cloud
+        const Ray<float> ray{target - d * distance, d};
+        const Interval<float> range{0, infinity<float>};
+        const auto hit = scene.closest_hit(ray, range);
+        const auto scan = scanned_hit(scene, ray, range);
+        if (hit) ++hits;
+        mismatches += hit ? !(hit->crossing.t == scan.t && hit->slot == scan.slot && hit->index == scan.index) : scan.t < infinity<float>;
+        // A shadow ray to a point on the way: blocked exactly where the scan finds a crossing.
+        const float t_max = distance + 10.0f * rng.uniform<float>();
+        const bool open = max_component(scene.transmittance(ray, t_max)) > 0.0f;
+        shadow_mismatches += open != !(scanned_hit(scene, ray, {0, t_max}).t < infinity<float>);
+    }
+    CHECK(mismatches == 0);
+    CHECK(shadow_mismatches == 0);
+    CHECK(hits > 10000);
+    // The twins: a ray through both reports the later copy.
+    const auto& twins = std::get<0>(scene.slots).items;
+    const Vec3<float> c = twins.back().shape.center();
+    const Ray<float> ray{c, {0, 0, -1}}; // from the centre: both exit at the same t
+    const auto hit = scene.closest_hit(ray, {0, infinity<float>});
+    REQUIRE(hit);
+    CHECK(hit->index == 17);
+    CHECK(scanned_hit(scene, ray, {0, infinity<float>}).index == 17);
+}
