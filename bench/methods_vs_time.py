@@ -225,7 +225,7 @@ def main():
         for method, levels in per_scene[scene].items():
             if not only or method_key(method) in only:
                 for effort in levels:
-                    out = os.path.join(work, "%s_%s_%s.pfm" % (scene, method.replace(", 1 spp", "1spp"), effort))
+                    out = os.path.join(work, prism_render_name(scene, method, effort))
                     jobs.append(("prism " + method, effort, out, functools.partial(run, args.build, scene, method, effort, out, args.size), read_pfm))
         if scene == "diffuse" and (not only or "cycles" in only):
             if shutil.which("blender"):
@@ -261,6 +261,11 @@ def main():
     print("wrote", path)
     summary(rows)
     strip(work, efforts, cycles_spp)
+
+
+def prism_render_name(scene, method, effort):
+    """The file a prism render is kept in: povray_direct1spp_10000.pfm for "direct, 1 spp"."""
+    return "%s_%s_%s.pfm" % (scene, method.replace(", 1 spp", "1spp"), effort)
 
 
 def method_key(method):
@@ -332,7 +337,7 @@ def rescore(work):
         elif method == "povray":
             image = read_hdr(os.path.join(work, "povray_%s%s.hdr" % (r["effort"], "_aa" if "anti" in r["method"] else "")))
         else:
-            image = read_pfm(os.path.join(work, "%s_%s_%s.pfm" % (r["scene"], r["method"].replace("prism ", "").replace(", 1 spp", "1spp"), r["effort"])))
+            image = read_pfm(os.path.join(work, prism_render_name(r["scene"], r["method"].replace("prism ", ""), r["effort"])))
         rows.append((r["scene"], r["method"], r["effort"], float(r["seconds"]), float(r.get("seconds_median") or r["seconds"])) +
                     scorers[r["scene"]](image))
     write_csv(path, rows)

@@ -102,8 +102,8 @@ struct ShadowBoundaries {
 };
 
 /// What a slot keeps to find its objects: nothing for one object; for an ObjectArray of
-/// at least tree_from bounded objects, a Bvh over them and the list of its unbounded ones
-/// (tested on every ray). Fewer are scanned: the Cornell box's five walls render 20 %
+/// at least tree_from objects, a Bvh over its bounded ones and the list of its unbounded
+/// ones (tested on every ray). Fewer are scanned: the Cornell box's five walls render 20 %
 /// slower through a tree.
 template <class SlotT>
 struct SlotIndex {
@@ -302,8 +302,7 @@ private:
     template <std::size_t I>
     void nearest_in_slot(const Ray<T>& ray, Interval<T>& range, Nearest& nearest, bool near_cluster) const noexcept
     {
-        using Index = std::tuple_element_t<I, std::tuple<detail::SlotIndex<Slots>...>>;
-        if constexpr (Index::accelerated) {
+        if constexpr (detail::SlotIndex<std::tuple_element_t<I, std::tuple<Slots...>>>::accelerated) {
             if (std::get<I>(indices_).tree) return nearest_in_tree<I>(ray, range, nearest, near_cluster);
         }
         const auto objects = objects_of(std::get<I>(slots));
@@ -322,7 +321,7 @@ private:
 
     /// nearest_in_slot through the slot's Bvh: the same object at the same t.
     template <std::size_t I>
-    [[gnu::noinline]] void nearest_in_tree(const Ray<T>& ray, Interval<T>& range, Nearest& nearest, bool near_cluster) const noexcept
+    void nearest_in_tree(const Ray<T>& ray, Interval<T>& range, Nearest& nearest, bool near_cluster) const noexcept
     {
         const auto objects = objects_of(std::get<I>(slots));
         const auto& index = std::get<I>(indices_);
@@ -366,8 +365,7 @@ private:
         using Slot = std::tuple_element_t<I, std::tuple<Slots...>>;
         using M = typename Slot::material_type;
         const Interval<T> range{T(0), t_max};
-        using Index = std::tuple_element_t<I, std::tuple<detail::SlotIndex<Slots>...>>;
-        if constexpr (Index::accelerated && (!transmits<M> || Glass == ShadowsThroughGlass::blocked)) {
+        if constexpr (detail::SlotIndex<Slot>::accelerated && (!transmits<M> || Glass == ShadowsThroughGlass::blocked)) {
             // Opaque: any crossing blocks the ray, in whatever order the tree finds it.
             // (Transmissive objects multiply their attenuations in index order below,
             // so that the product is the same bits.)
@@ -392,7 +390,7 @@ private:
 
     /// Whether an object of the slot's Bvh (or an unbounded one) crosses the ray in range.
     template <std::size_t I>
-    [[gnu::noinline]] bool blocked_in_tree(const Ray<T>& ray, Interval<T> range, bool near_cluster) const noexcept
+    bool blocked_in_tree(const Ray<T>& ray, Interval<T> range, bool near_cluster) const noexcept
     {
         const auto objects = objects_of(std::get<I>(slots));
         const auto& index = std::get<I>(indices_);
