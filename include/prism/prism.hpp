@@ -23,11 +23,13 @@
 #include <prism/csg/union.hpp>
 #include <prism/geometry/box.hpp>
 #include <prism/geometry/crossings.hpp>
+#include <prism/geometry/mesh_builders.hpp>
 #include <prism/geometry/plane.hpp>
 #include <prism/geometry/quadric.hpp>
 #include <prism/geometry/shape.hpp>
 #include <prism/geometry/sphere.hpp>
 #include <prism/geometry/transformed.hpp>
+#include <prism/geometry/triangle_mesh.hpp>
 #include <prism/integrator/direct.hpp>
 #include <prism/integrator/irradiance_cache.hpp>
 #include <prism/integrator/light_tracer.hpp>

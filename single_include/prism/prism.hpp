@@ -747,6 +747,21 @@ public:
     template <class Visit>
     constexpr bool traverse(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
     {
+        return walk(ray, range, [&](std::uint32_t k, Interval<T>& r) { return visit(primitives_[k], r); });
+    }
+
+    /// traverse, with visit given a primitive's position k in leaf order (primitives()[k])
+    /// instead: for callers that store their primitives in that order, as TriangleMesh does.
+    template <class Visit>
+    constexpr bool traverse_in_leaf_order(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
+    {
+        return walk(ray, range, visit);
+    }
+
+private:
+    template <class Visit>
+    constexpr bool walk(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
+    {
         if (nodes_.empty()) return false;
         const detail::SlabRay<T> slab(ray);
         if (slab.may_cross(nodes_[0].box, range).empty()) return false;
@@ -757,7 +772,7 @@ public:
             const BvhNode<T>& node = nodes_[at];
             if (node.leaf()) {
                 for (std::uint32_t k = node.first; k < node.first + node.count; ++k)
-                    if (visit(primitives_[k], range)) return true;
+                    if (visit(k, range)) return true;
             } else {
                 const std::uint32_t left = node.first, right = node.first + 1;
                 const Interval<T> a = slab.may_cross(nodes_[left].box, range), b = slab.may_cross(nodes_[right].box, range);
@@ -782,7 +797,6 @@ public:
         }
     }
 
-private:
     constexpr void build(std::span<const Aabb<T>> boxes, const BvhConfig& config)
     {
         const auto n = std::uint32_t(boxes.size());
@@ -1821,6 +1835,35 @@ template <Shape S>
     else return shape.bounds().bounding_sphere();
 }
 
+/// A shape with a lean closest-hit query: first_crossing(ray, range) gives the t of
+/// crossings<false>(ray, range).front() (infinity when there is none) without building
+/// the list, and any_crossing whether that list is non-empty.
+template <class S>
+concept HasFirstCrossing = Shape<S> && requires(const S& shape, const Ray<typename S::scalar_type>& ray, Interval<typename S::scalar_type> range) {
+    { shape.first_crossing(ray, range) } -> std::same_as<typename S::scalar_type>;
+    { shape.any_crossing(ray, range) } -> std::same_as<bool>;
+};
+
+/// The t of the shape's first crossing strictly inside `range`, or infinity.
+template <Shape S>
+[[nodiscard]] constexpr typename S::scalar_type first_crossing(const S& shape, const Ray<typename S::scalar_type>& ray, Interval<typename S::scalar_type> range) noexcept
+{
+    if constexpr (HasFirstCrossing<S>) {
+        return shape.first_crossing(ray, range);
+    } else {
+        const auto crossings = shape.template crossings<false>(ray, range);
+        return crossings.empty() ? infinity<typename S::scalar_type> : crossings.front().t;
+    }
+}
+
+/// Whether the shape crosses the ray strictly inside `range`.
+template <Shape S>
+[[nodiscard]] constexpr bool any_crossing(const S& shape, const Ray<typename S::scalar_type>& ray, Interval<typename S::scalar_type> range) noexcept
+{
+    if constexpr (HasFirstCrossing<S>) return shape.any_crossing(ray, range);
+    else return !shape.template crossings<false>(ray, range).empty();
+}
+
 } // namespace prism
 
 // ---- prism/csg/csg_node.hpp ----
@@ -2126,6 +2169,487 @@ private:
 
 static_assert(Shape<Box<float>>);
 static_assert(Shape<Box<double>>);
+
+} // namespace prism
+
+// ---- prism/geometry/triangle_mesh.hpp ----
+// TriangleMesh: a solid (or an open surface) bounded by triangles, with its own Bvh.
+//
+// The ray-triangle test is Woop, Benthin & Wald's watertight one ("Watertight
+// Ray/Triangle Intersection", JCGT 2013), with pbrt-v4's bound on t: the vertices are
+// moved to the ray's origin and sheared so the ray runs along +z; the three 2D edge
+// functions then decide the hit by their signs alone. A vertex shared by two triangles
+// is carried through the same arithmetic for both, so a ray through their common edge
+// finds at least one of them: no ray slips between the triangles of a closed mesh. An
+// edge function that rounds to exactly zero is worked out again in double.
+//
+// A mesh is a closed solid when every edge is shared by exactly two triangles that
+// run along it in opposite directions (checked at construction): then it has an
+// inside, works as a CSG child and as glass, and a ray enters where the triangle's
+// normal (right-handed: (b - a) x (c - a), outward) faces against it. Any other mesh is
+// an open surface: a ray crosses it wherever it hits it, entering on the normal's side,
+// and it is never inside (a shadow ray through an open glass surface meets boundaries
+// that do not pair up: use a closed mesh for glass).
+//
+// Crossings: a ray through an edge or vertex hits every triangle around it at one t.
+// Those hits are merged by their orientation: all entering (or all leaving) are one
+// crossing; a ray that touches the surface there (as many entering as leaving) is
+// reported as both, in the order that keeps the ray outside (or inside) after them.
+// At most N crossings are reported, the nearest N: a closed mesh that a ray crosses more
+// often within one query's range gives a CSG node or a shadow ray through glass only
+// its first N (2 to 64; 8 by default).
+//
+// The mesh's data (vertices in leaf order, the Bvh) is immutable and shared: copies of
+// a mesh, and Transformed meshes in an ObjectArray (instances), hold one copy of it.
+
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+/// Three vertex indices, counter-clockwise seen from outside.
+using TriangleIndices = std::array<std::uint32_t, 3>;
+
+namespace detail {
+
+/// A ray sheared so that it runs along +z from the origin (Woop et al. 2013): the same
+/// for every triangle it is tested against.
+template <Scalar T>
+struct ShearedRay {
+    Vec3<T> origin, direction;
+    int kx = 0, ky = 1, kz = 2;
+    T sx = 0, sy = 0, sz = 0;
+
+    explicit ShearedRay(const Ray<T>& ray) noexcept : origin(ray.origin), direction(ray.direction)
+    {
+        const Vec3<T> a = prism::abs(ray.direction);
+        kz = a.x >= a.y ? (a.x >= a.z ? 0 : 2) : (a.y >= a.z ? 1 : 2);
+        kx = kz == 2 ? 0 : kz + 1;
+        ky = kx == 2 ? 0 : kx + 1;
+        sz = T(1) / direction[kz];
+        sx = -direction[kx] * sz;
+        sy = -direction[ky] * sz;
+    }
+};
+
+/// Where a ray hits a triangle: t and the barycentric weights of its three corners.
+template <Scalar T>
+struct TriangleHit {
+    T t;
+    std::array<T, 3> b;
+    bool entering;
+};
+
+/// The watertight test. Hits with t strictly inside `range` (and beyond the bound of
+/// t's own rounding, so never the triangle a ray was spawned from) are returned.
+template <Scalar T>
+[[nodiscard]] inline bool hit_triangle(const ShearedRay<T>& ray, const std::array<Vec3<T>, 3>& corner, Interval<T> range, TriangleHit<T>& out) noexcept
+{
+    // Translate to the ray's origin, permute and shear.
+    std::array<Vec3<T>, 3> p;
+    for (int i = 0; i < 3; ++i) {
+        const Vec3<T> q = corner[std::size_t(i)] - ray.origin;
+        p[std::size_t(i)] = {q[ray.kx] + ray.sx * q[ray.kz], q[ray.ky] + ray.sy * q[ray.kz], q[ray.kz]};
+    }
+    // Plain products: an edge shared by two triangles gets exactly opposite values in
+    // them (the subtraction rounds symmetrically), so a ray is inside exactly one of
+    // them, or on the edge of both.
+    T e0 = p[1].x * p[2].y - p[1].y * p[2].x;
+    T e1 = p[2].x * p[0].y - p[2].y * p[0].x;
+    T e2 = p[0].x * p[1].y - p[0].y * p[1].x;
+    if constexpr (sizeof(T) < sizeof(double)) {
+        // On an edge to float precision: decide it in double.
+        if (e0 == T(0) || e1 == T(0) || e2 == T(0)) {
+            e0 = T(double(p[1].x) * double(p[2].y) - double(p[1].y) * double(p[2].x));
+            e1 = T(double(p[2].x) * double(p[0].y) - double(p[2].y) * double(p[0].x));
+            e2 = T(double(p[0].x) * double(p[1].y) - double(p[0].y) * double(p[1].x));
+        }
+    }
+    if ((e0 < T(0) || e1 < T(0) || e2 < T(0)) && (e0 > T(0) || e1 > T(0) || e2 > T(0))) return false;
+    const T det = e0 + e1 + e2;
+    if (det == T(0)) return false; // edge-on, or a degenerate triangle
+    const T z0 = p[0].z * ray.sz, z1 = p[1].z * ray.sz, z2 = p[2].z * ray.sz;
+    const T t_scaled = e0 * z0 + e1 * z1 + e2 * z2;
+    const T inv_det = T(1) / det;
+    const T t = t_scaled * inv_det;
+    if (!range.surrounds(t)) return false;
+    // t is above zero by more than its rounding (pbrt-v4, Triangle::Intersect).
+    const T max_z = max_component(Vec3<T>(std::abs(z0), std::abs(z1), std::abs(z2)));
+    const T max_x = max_component(Vec3<T>(std::abs(p[0].x), std::abs(p[1].x), std::abs(p[2].x)));
+    const T max_y = max_component(Vec3<T>(std::abs(p[0].y), std::abs(p[1].y), std::abs(p[2].y)));
+    const T delta_z = gamma<T>(3) * max_z;
+    const T delta_x = gamma<T>(5) * (max_x + max_z), delta_y = gamma<T>(5) * (max_y + max_z);
+    const T delta_e = T(2) * (gamma<T>(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+    const T max_e = max_component(Vec3<T>(std::abs(e0), std::abs(e1), std::abs(e2)));
+    const T delta_t = T(3) * (gamma<T>(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * std::abs(inv_det);
+    if (!(t > delta_t)) return false;
+    // det is the sheared normal's z, dot(direction, normal) / direction[kz] (the
+    // permutation is cyclic, the shear of determinant 1): it enters where that is < 0.
+    out = {t, {e0 * inv_det, e1 * inv_det, e2 * inv_det}, (det < T(0)) != (ray.sz < T(0))};
+    return true;
+}
+
+template <Scalar T>
+struct MeshData {
+    std::vector<std::array<Vec3<T>, 3>> corners; ///< per triangle, in the Bvh's leaf order
+    std::vector<std::uint32_t> input_index;      ///< the triangle's index in the input
+    Bvh<T> bvh;
+    Aabb<T> bounds;
+    bool closed = false;
+};
+
+} // namespace detail
+
+template <Scalar T = float, std::size_t N = 8>
+class TriangleMesh {
+    static_assert(N >= 2 && N <= 64, "a TriangleMesh reports 2 to 64 crossings");
+
+public:
+    using scalar_type = T;
+    static constexpr std::size_t max_crossings = N;
+
+    /// A mesh of `triangles` over `positions`; throws std::invalid_argument for no
+    /// triangle, an index past the positions, a non-finite position, or a closed mesh
+    /// whose triangles wind inward (negative volume: reverse each triangle's order).
+    TriangleMesh(std::span<const Vec3<T>> positions, std::span<const TriangleIndices> triangles, BvhConfig config = {})
+    {
+        if (triangles.empty()) detail::throw_invalid("TriangleMesh triangles must not be empty");
+        for (std::size_t i = 0; i < positions.size(); ++i)
+            if (!is_finite(positions[i])) detail::throw_invalid("TriangleMesh position ", i, " must be finite, got ", detail::describe(positions[i]));
+        for (std::size_t f = 0; f < triangles.size(); ++f)
+            for (const std::uint32_t v : triangles[f])
+                if (v >= positions.size()) detail::throw_invalid("TriangleMesh triangle ", f, " has vertex index ", v, ", past the ", positions.size(), " positions");
+        auto data = std::make_shared<detail::MeshData<T>>();
+        data->closed = is_closed(triangles);
+        if (data->closed) {
+            // Six times the signed volume (the divergence theorem over the faces, about
+            // the first vertex so that a mesh far from the origin loses nothing to
+            // cancellation), in double: a closed mesh must wind outward.
+            double volume6 = 0;
+            const Vec3<double> r(positions[triangles[0][0]]);
+            for (const TriangleIndices& f : triangles)
+                volume6 += dot(Vec3<double>(positions[f[0]]) - r, cross(Vec3<double>(positions[f[1]]) - r, Vec3<double>(positions[f[2]]) - r));
+            if (volume6 < 0) detail::throw_invalid("TriangleMesh is closed but its triangles wind inward (volume ", volume6 / 6, "): reverse each triangle's vertex order");
+        }
+        std::vector<Aabb<T>> boxes(triangles.size());
+        for (std::size_t f = 0; f < triangles.size(); ++f) {
+            Aabb<T> box;
+            for (const std::uint32_t v : triangles[f]) box = box.merged({positions[v], positions[v]});
+            boxes[f] = box.rounded_out();
+            data->bounds = data->bounds.merged(boxes[f]);
+        }
+        data->bvh = Bvh<T>(boxes, config);
+        const auto order = data->bvh.primitives();
+        data->corners.resize(order.size());
+        data->input_index.assign(order.begin(), order.end());
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            const TriangleIndices& f = triangles[order[k]];
+            data->corners[k] = {positions[f[0]], positions[f[1]], positions[f[2]]};
+        }
+        data_ = std::move(data);
+    }
+
+    TriangleMesh(const std::vector<Vec3<T>>& positions, const std::vector<TriangleIndices>& triangles, BvhConfig config = {})
+        : TriangleMesh(std::span<const Vec3<T>>(positions), std::span<const TriangleIndices>(triangles), config)
+    {
+    }
+
+    [[nodiscard]] bool closed() const noexcept { return data_->closed; }
+    [[nodiscard]] std::size_t triangle_count() const noexcept { return data_->corners.size(); }
+    [[nodiscard]] const Bvh<T>& bvh() const noexcept { return data_->bvh; }
+    [[nodiscard]] Aabb<T> bounds() const noexcept { return data_->bounds; }
+    /// Bytes held by the shared data (vertices, indices, Bvh), for every copy together.
+    [[nodiscard]] std::size_t memory_bytes() const noexcept
+    {
+        const auto& d = *data_;
+        return sizeof(d) + d.corners.size() * (sizeof(d.corners[0]) + sizeof(d.input_index[0])) + d.bvh.nodes().size() * sizeof(BvhNode<T>) +
+               d.bvh.primitives().size() * sizeof(std::uint32_t);
+    }
+
+    /// Inside a closed mesh: the first crossing along a fixed direction from p leaves it.
+    [[nodiscard]] bool contains(const Vec3<T>& p) const noexcept
+    {
+        if (!data_->closed || !data_->bounds.contains(p)) return false;
+        // An irrational-looking direction, unlikely to run along an edge.
+        return inside_before(Ray<T>{p, Vec3<T>(T(0.5773502), T(0.5773503), T(0.5773504))}, T(0));
+    }
+
+    /// The t of the first crossing strictly inside `range`, or infinity: what
+    /// crossings<false>(ray, range).front().t gives, found by a closest-hit query alone.
+    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        const detail::ShearedRay<T> sheared(ray);
+        T nearest = infinity<T>;
+        data_->bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t k, Interval<T>& r) {
+            detail::TriangleHit<T> h;
+            if (detail::hit_triangle(sheared, data_->corners[k], r, h)) nearest = r.max = h.t;
+            return false;
+        });
+        return nearest;
+    }
+
+    /// Whether any crossing lies strictly inside `range` (a shadow ray's query).
+    [[nodiscard]] bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        const detail::ShearedRay<T> sheared(ray);
+        return data_->bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t k, Interval<T>& r) {
+            detail::TriangleHit<T> h;
+            return detail::hit_triangle(sheared, data_->corners[k], r, h);
+        });
+    }
+
+    template <bool Surface = true>
+    [[nodiscard]] Crossings<T, N> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        Crossings<T, N> out;
+        const Hits hits = gather(ray, range);
+        const bool closed = data_->closed;
+        // Inside at the start of a closed mesh: its first crossing (not a touch) leaves it.
+        bool inside = false;
+        if (closed) {
+            int net = 0;
+            for (std::size_t i = 0; i < hits.count && net == 0; i = group_end(hits, i)) net = net_of(hits, i, group_end(hits, i));
+            inside = net != 0 ? net < 0 : inside_before(ray, range.min);
+        }
+        out.inside_at_start = inside;
+        for (std::size_t i = 0; i < hits.count && out.count < N;) {
+            const std::size_t end = group_end(hits, i);
+            const int net = net_of(hits, i, end);
+            const Hit& h = hits.items[i];
+            if (net == 0) {
+                // A touch: in and out again (or out and in), on the first hit's triangle.
+                if (out.count + 2 > N) break;
+                push<Surface>(out, h, !inside);
+                push<Surface>(out, h, inside);
+            } else if (!closed || (net > 0) != inside) {
+                // (A closed mesh's hits that agree with where the ray already is, which
+                // only rounding at a near-touch can give, cross nothing.)
+                push<Surface>(out, h, net > 0);
+                if (closed) inside = net > 0;
+            }
+            i = end;
+        }
+        return out;
+    }
+
+private:
+    struct Hit {
+        T t;
+        std::uint32_t triangle; ///< leaf order
+        std::array<T, 3> b;
+        bool entering;
+    };
+    /// The nearest N hits, sorted by t then triangle.
+    struct Hits {
+        std::array<Hit, N> items;
+        std::size_t count = 0;
+    };
+
+    [[nodiscard]] Hits gather(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        const detail::ShearedRay<T> sheared(ray);
+        Hits hits;
+        data_->bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t k, Interval<T>& r) {
+            detail::TriangleHit<T> h;
+            if (!detail::hit_triangle(sheared, data_->corners[k], r, h)) return false;
+            const Hit hit{h.t, k, h.b, h.entering};
+            const auto before = [](const Hit& a, const Hit& b) { return a.t < b.t || (a.t == b.t && a.triangle < b.triangle); };
+            if (hits.count == N) {
+                if (!before(hit, hits.items[N - 1])) return false;
+                --hits.count;
+            }
+            std::size_t j = hits.count++;
+            for (; j > 0 && before(hit, hits.items[j - 1]); --j) hits.items[j] = hits.items[j - 1];
+            hits.items[j] = hit;
+            // Full: nothing beyond the last kept hit can enter (ties are kept by the
+            // next float up).
+            if (hits.count == N) r.max = std::min(r.max, next_float_up(hits.items[N - 1].t));
+            return false;
+        });
+        return hits;
+    }
+
+    [[nodiscard]] static std::size_t group_end(const Hits& hits, std::size_t i) noexcept
+    {
+        std::size_t end = i + 1;
+        while (end < hits.count && hits.items[end].t == hits.items[i].t) ++end;
+        return end;
+    }
+
+    [[nodiscard]] static int net_of(const Hits& hits, std::size_t begin, std::size_t end) noexcept
+    {
+        int net = 0;
+        for (std::size_t k = begin; k < end; ++k) net += hits.items[k].entering ? 1 : -1;
+        return net;
+    }
+
+    /// Whether ray.at(t) is inside the closed mesh: the first crossing group after t that
+    /// is not a touch leaves it.
+    [[nodiscard]] bool inside_before(const Ray<T>& ray, T t) const noexcept
+    {
+        for (int guard = 0; guard < 64; ++guard) {
+            const T first = first_crossing(ray, {t, infinity<T>});
+            if (!(first < infinity<T>)) return false;
+            const Hits at = gather(ray, {next_float_down(first), next_float_up(first)});
+            const int net = at.count ? net_of(at, 0, group_end(at, 0)) : 0;
+            if (net != 0) return net < 0;
+            t = first;
+        }
+        return false;
+    }
+
+    template <bool Surface>
+    void push(Crossings<T, N>& out, const Hit& h, bool entering) const noexcept
+    {
+        if constexpr (!Surface) {
+            out.push_back(Crossing<T>::without_surface(h.t, entering));
+        } else {
+            const auto& c = data_->corners[h.triangle];
+            // The point from the barycentric weights, exact to the triangle's own scale
+            // (pbrt-v4: an error of gamma(7) of the weighted corners).
+            const Vec3<T> a = h.b[0] * c[0], b = h.b[1] * c[1], d = h.b[2] * c[2];
+            const Vec3<T> point = a + b + d;
+            const Vec3<T> error = gamma<T>(7) * (prism::abs(a) + prism::abs(b) + prism::abs(d));
+            // The outward normal as the triangle winds (non-zero: a degenerate triangle
+            // is never hit).
+            const Vec3<T> normal = normalize(cross(c[1] - c[0], c[2] - c[0]));
+            out.push_back({h.t, point, error, normal, entering});
+        }
+    }
+
+    [[nodiscard]] static bool is_closed(std::span<const TriangleIndices> triangles)
+    {
+        // Every directed edge once, and its reverse once.
+        std::vector<std::uint64_t> edges;
+        edges.reserve(3 * triangles.size());
+        for (const TriangleIndices& f : triangles)
+            for (int i = 0; i < 3; ++i) {
+                const std::uint32_t a = f[std::size_t(i)], b = f[std::size_t((i + 1) % 3)];
+                if (a == b) return false;
+                edges.push_back(std::uint64_t(a) << 32 | b);
+            }
+        std::sort(edges.begin(), edges.end());
+        if (std::adjacent_find(edges.begin(), edges.end()) != edges.end()) return false;
+        for (const std::uint64_t e : edges)
+            if (!std::binary_search(edges.begin(), edges.end(), (e << 32) | (e >> 32))) return false;
+        return true;
+    }
+
+    std::shared_ptr<const detail::MeshData<T>> data_;
+};
+
+static_assert(Shape<TriangleMesh<float>>);
+static_assert(Shape<TriangleMesh<double>>);
+
+} // namespace prism
+
+// ---- prism/geometry/mesh_builders.hpp ----
+// Generated triangle meshes: a geodesic sphere, a box, a height field.
+
+
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+/// Positions and triangles, counter-clockwise seen from outside: what a TriangleMesh is
+/// built from.
+template <Scalar T>
+struct MeshBuffers {
+    std::vector<Vec3<T>> positions;
+    std::vector<TriangleIndices> triangles;
+};
+
+/// A geodesic sphere: an icosahedron with each triangle split in four `subdivisions`
+/// times, every vertex on the sphere (20 * 4^subdivisions triangles). Closed.
+template <Scalar T = float>
+[[nodiscard]] MeshBuffers<T> icosphere(const Vec3<T>& center, T radius, int subdivisions)
+{
+    detail::require_finite("icosphere center", center);
+    detail::require_positive("icosphere radius", radius);
+    if (subdivisions < 0 || subdivisions > 10) detail::throw_invalid("icosphere subdivisions must be in [0, 10], got ", subdivisions);
+    const double g = (1 + std::sqrt(5.0)) / 2;
+    std::vector<Vec3<double>> unit = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                                      {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    for (auto& v : unit) v = normalize(v);
+    std::vector<TriangleIndices> faces = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                          {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+                                          {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+    for (int level = 0; level < subdivisions; ++level) {
+        std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> middle;
+        const auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
+            const auto key = std::minmax(a, b);
+            const auto [at, fresh] = middle.try_emplace(key, std::uint32_t(unit.size()));
+            if (fresh) unit.push_back(normalize(unit[a] + unit[b]));
+            return at->second;
+        };
+        std::vector<TriangleIndices> finer;
+        finer.reserve(4 * faces.size());
+        for (const auto& [a, b, c] : faces) {
+            const std::uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+            finer.push_back({a, ab, ca});
+            finer.push_back({b, bc, ab});
+            finer.push_back({c, ca, bc});
+            finer.push_back({ab, bc, ca});
+        }
+        faces = std::move(finer);
+    }
+    MeshBuffers<T> out;
+    out.positions.reserve(unit.size());
+    for (const auto& v : unit) out.positions.push_back(center + radius * Vec3<T>(v));
+    out.triangles = std::move(faces);
+    return out;
+}
+
+/// The box [lo, hi] as 12 triangles. Closed.
+template <Scalar T = float>
+[[nodiscard]] MeshBuffers<T> box_mesh(const Vec3<T>& lo, const Vec3<T>& hi)
+{
+    detail::require_finite("box_mesh lo", lo);
+    detail::require_finite("box_mesh hi", hi);
+    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) detail::throw_invalid("box_mesh lo must be below hi on every axis, got ", detail::describe(lo), " and ", detail::describe(hi));
+    MeshBuffers<T> out;
+    for (int k = 0; k < 8; ++k) out.positions.push_back({k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z});
+    // Two triangles a face, wound outward.
+    out.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                     {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+    return out;
+}
+
+/// The surface y = height(x, z) over [x0, x1] x [z0, z1], sampled at (cells + 1)^2
+/// points: 2 cells^2 triangles, facing +y. Open.
+template <Scalar T = float, class Height>
+[[nodiscard]] MeshBuffers<T> height_field(T x0, T x1, T z0, T z1, int cells, Height&& height)
+{
+    if (cells < 1 || cells > 16384) detail::throw_invalid("height_field cells must be in [1, 16384], got ", cells);
+    if (!(x0 < x1)) detail::throw_invalid("height_field x0 must be below x1, got ", x0, " and ", x1);
+    if (!(z0 < z1)) detail::throw_invalid("height_field z0 must be below z1, got ", z0, " and ", z1);
+    MeshBuffers<T> out;
+    const auto n = std::uint32_t(cells);
+    for (std::uint32_t j = 0; j <= n; ++j)
+        for (std::uint32_t i = 0; i <= n; ++i) {
+            const T x = x0 + (x1 - x0) * T(i) / T(n), z = z0 + (z1 - z0) * T(j) / T(n);
+            const T y = T(height(x, z));
+            if (!is_finite(y)) detail::throw_invalid("height_field height(", x, ", ", z, ") must be finite, got ", y);
+            out.positions.push_back({x, y, z});
+        }
+    for (std::uint32_t j = 0; j < n; ++j)
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const std::uint32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+            out.triangles.push_back({a, c, b});
+            out.triangles.push_back({b, c, d});
+        }
+    return out;
+}
 
 } // namespace prism
 
@@ -2673,6 +3197,48 @@ public:
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
+        Crossings<T, 2> out;
+        const Roots r = roots(ray);
+        if (!r.real) return out;
+        // The ray is inside between the roots: it enters at t0 and leaves at t1, as
+        // the gradient 2(p - center) points against d at t0 and along it at t1. The
+        // surface points are taken from the closest approach l, at -+sqrt(disc) / a along
+        // the ray from it: exact to the sphere's own scale however far the origin is,
+        // where o + t d would carry the rounding of t (an ulp of the distance).
+        out.inside_at_start = r.t0 < range.min && range.min < r.t1;
+        if (range.surrounds(r.t0)) out.push_back(Surface ? crossing_at(r.closest - r.half_chord * ray.direction, r.t0, true) : Crossing<T>::without_surface(r.t0, true));
+        if (range.surrounds(r.t1)) out.push_back(Surface ? crossing_at(r.closest + r.half_chord * ray.direction, r.t1, false) : Crossing<T>::without_surface(r.t1, false));
+        return out;
+    }
+
+    /// crossings<false>(ray, range).front().t (infinity if none), without the list.
+    [[nodiscard]] constexpr T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        const Roots r = roots(ray);
+        if (!r.real) return infinity<T>;
+        return range.surrounds(r.t0) ? r.t0 : (range.surrounds(r.t1) ? r.t1 : infinity<T>);
+    }
+
+    [[nodiscard]] constexpr bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        return first_crossing(ray, range) < infinity<T>;
+    }
+
+private:
+    // Sphere Private Methods
+
+    /// Where the ray's line crosses the sphere: t0 < t1, or no real pair (a miss or a
+    /// tangent); the closest approach to the center and the half chord over a, from
+    /// which the crossing points are taken.
+    struct Roots {
+        bool real = false;
+        T t0 = 0, t1 = 0;
+        Vec3<T> closest{};
+        T half_chord = 0;
+    };
+
+    [[nodiscard]] constexpr Roots roots(const Ray<T>& ray) const noexcept
+    {
         // Compute quadratic coefficients: a t^2 + 2 h t + c = 0 with f = o - center
         const Vec3<T> f = ray.origin - center_;
         const Vec3<T>& d = ray.direction;
@@ -2686,15 +3252,14 @@ public:
         // approach to the center.
         const Vec3<T> l = f - (h / a) * d;
         const T ll2 = length_squared(l);
-        Crossings<T, 2> out;
         // A clear miss, decided before any square root: |l|^2 is computed to within a few
         // ulps, so beyond r^2 (1 + 8 eps) the ray passes outside the sphere.
-        if (ll2 > radius_ * radius_ * (T(1) + T(8) * std::numeric_limits<T>::epsilon())) return out;
+        if (ll2 > radius_ * radius_ * (T(1) + T(8) * std::numeric_limits<T>::epsilon())) return {};
         const T ll = prism::sqrt(ll2);
         const T disc = a * (radius_ - ll) * (radius_ + ll);
 
         // A miss, or a tangent (a double root: the ray touches but does not cross).
-        if (!(disc > T(0))) return out;
+        if (!(disc > T(0))) return {};
 
         // Stable roots: q = -(h + sign(h) sqrt(disc)), t = q / a and c / q.
         const T root = prism::sqrt(disc);
@@ -2702,20 +3267,8 @@ public:
         T t0 = q / a;
         T t1 = q != T(0) ? c / q : -t0;
         if (t0 > t1) std::swap(t0, t1);
-
-        // The ray is inside between the roots: it enters at t0 and leaves at t1, as
-        // the gradient 2(p - center) points against d at t0 and along it at t1. The
-        // surface points are taken from the closest approach l, at -+sqrt(disc) / a along
-        // the ray from it: exact to the sphere's own scale however far the origin is,
-        // where o + t d would carry the rounding of t (an ulp of the distance).
-        out.inside_at_start = t0 < range.min && range.min < t1;
-        if (range.surrounds(t0)) out.push_back(Surface ? crossing_at(l - (root / a) * d, t0, true) : Crossing<T>::without_surface(t0, true));
-        if (range.surrounds(t1)) out.push_back(Surface ? crossing_at(l + (root / a) * d, t1, false) : Crossing<T>::without_surface(t1, false));
-        return out;
+        return {true, t0, t1, l, root / a};
     }
-
-private:
-    // Sphere Private Methods
 
     [[nodiscard]] constexpr Crossing<T> crossing_at(const Vec3<T>& radial, T t, bool entering) const noexcept
     {
@@ -2778,15 +3331,7 @@ public:
     {
         // A ray that cannot come near the bounds cannot cross the shape.
         if (bounded_ && !bounds_.reached_after(ray, range.min)) return {};
-        // Carry the ray into the shape's coordinates. The new origin is off by the
-        // rounding of that transform, which can be more than a spawned ray's offset from
-        // the surface it leaves: move it forward along the ray past that error, and
-        // measure t from there (pbrt-v4, Transform::ApplyInverse(Ray)).
-        Ray<T> local{to_world_.inverse_point(ray.origin), to_world_.inverse_vector(ray.direction)};
-        const T length2 = length_squared(local.direction);
-        T dt = length2 > T(0) ? dot(abs(local.direction), to_world_.inverse_point_error(ray.origin)) / length2 : T(0);
-        if (!is_finite(dt)) dt = T(0);
-        local.origin += dt * local.direction;
+        const auto [local, dt] = to_local(ray);
         // The end of the range is carried over two float steps wide and applied again to
         // the world t: the result keeps every crossing before range.max however the
         // subtraction rounds, so a query over a shorter range finds the same first one.
@@ -2812,7 +3357,41 @@ public:
         return out;
     }
 
+    /// crossings<false>(ray, range).front().t (infinity if none): the shape's own lean
+    /// query, when it has one, in its coordinates.
+    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
+        const auto [local, dt] = to_local(ray);
+        const T t = prism::first_crossing(shape_, local, {range.min, next_float_up(next_float_up(range.max - dt))}) + dt;
+        return t < range.max ? t : infinity<T>;
+    }
+
+    [[nodiscard]] bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        return first_crossing(ray, range) < infinity<T>;
+    }
+
 private:
+    struct LocalRay {
+        Ray<T> ray;
+        T dt; ///< local t + dt = world t
+    };
+
+    /// The ray in the shape's coordinates. The new origin is off by the rounding of that
+    /// transform, which can be more than a spawned ray's offset from the surface it
+    /// leaves: it is moved forward along the ray past that error, and t measured from
+    /// there (pbrt-v4, Transform::ApplyInverse(Ray)).
+    [[nodiscard]] LocalRay to_local(const Ray<T>& ray) const noexcept
+    {
+        Ray<T> local{to_world_.inverse_point(ray.origin), to_world_.inverse_vector(ray.direction)};
+        const T length2 = length_squared(local.direction);
+        T dt = length2 > T(0) ? dot(abs(local.direction), to_world_.inverse_point_error(ray.origin)) / length2 : T(0);
+        if (!is_finite(dt)) dt = T(0);
+        local.origin += dt * local.direction;
+        return {local, dt};
+    }
+
     /// The box around the eight transformed corners of the shape's box.
     [[nodiscard]] Aabb<T> world_bounds() const noexcept
     {
@@ -4270,14 +4849,14 @@ private:
         const auto objects = objects_of(std::get<I>(slots));
         for (std::size_t k = 0; k < objects.size(); ++k) {
             if (!worth_testing(objects[k], near_cluster)) continue;
-            const auto crossings = objects[k].shape.template crossings<false>(ray, range);
-            if (crossings.empty()) continue;
+            const T t = first_crossing(objects[k].shape, ray, range);
+            if (!(t < infinity<T>)) continue;
             // Ending the range just past the crossing keeps every crossing before it, and
             // so the same first one, while the surface pass refines nothing beyond it:
             // no shape's answer up to a t depends on where its range ends (shapes cull by
             // Aabb::reached_after, which ignores the end).
-            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(crossings.front().t)}};
-            range.max = crossings.front().t;
+            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(t)}};
+            range.max = t;
         }
     }
 
@@ -4294,10 +4873,10 @@ private:
         // takes a tie as it would have in the scan.
         const auto test = [&](std::uint32_t k, Interval<T>& r) {
             const bool before = nearest.found && nearest.slot == I && k < nearest.index;
-            const auto crossings = objects[k].shape.template crossings<false>(ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r);
-            if (crossings.empty()) return;
-            nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(crossings.front().t)}};
-            r.max = crossings.front().t;
+            const T t = first_crossing(objects[k].shape, ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r);
+            if (!(t < infinity<T>)) return;
+            nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}};
+            r.max = t;
         };
         for (const std::uint32_t k : index.unbounded) test(k, range);
         if (near_cluster)
@@ -4337,10 +4916,10 @@ private:
         for (const auto& object : objects_of(std::get<I>(slots))) {
             const std::uint32_t this_index = index++;
             if (!worth_testing(object, near_cluster)) continue;
-            const auto crossings = object.shape.template crossings<false>(ray, range);
             if constexpr (!transmits<M> || Glass == ShadowsThroughGlass::blocked) {
-                if (!crossings.empty()) return false;
+                if (any_crossing(object.shape, ray, range)) return false;
             } else {
+                const auto crossings = object.shape.template crossings<false>(ray, range);
                 attenuate_shadow_ray(object.material, crossings, ray, t_max, tr);
                 if (max_component(tr) <= T(0)) return false;
                 if (crossings.inside_at_start) boundaries.add({T(0), std::uint32_t(I), this_index, true, true});
@@ -4356,7 +4935,7 @@ private:
     {
         const auto objects = objects_of(std::get<I>(slots));
         const auto& index = std::get<I>(indices_);
-        const auto blocks = [&](std::uint32_t k) { return !objects[k].shape.template crossings<false>(ray, range).empty(); };
+        const auto blocks = [&](std::uint32_t k) { return any_crossing(objects[k].shape, ray, range); };
         for (const std::uint32_t k : index.unbounded)
             if (blocks(k)) return true;
         Interval<T> r = range;

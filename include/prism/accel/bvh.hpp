@@ -133,6 +133,21 @@ public:
     template <class Visit>
     constexpr bool traverse(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
     {
+        return walk(ray, range, [&](std::uint32_t k, Interval<T>& r) { return visit(primitives_[k], r); });
+    }
+
+    /// traverse, with visit given a primitive's position k in leaf order (primitives()[k])
+    /// instead: for callers that store their primitives in that order, as TriangleMesh does.
+    template <class Visit>
+    constexpr bool traverse_in_leaf_order(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
+    {
+        return walk(ray, range, visit);
+    }
+
+private:
+    template <class Visit>
+    constexpr bool walk(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
+    {
         if (nodes_.empty()) return false;
         const detail::SlabRay<T> slab(ray);
         if (slab.may_cross(nodes_[0].box, range).empty()) return false;
@@ -143,7 +158,7 @@ public:
             const BvhNode<T>& node = nodes_[at];
             if (node.leaf()) {
                 for (std::uint32_t k = node.first; k < node.first + node.count; ++k)
-                    if (visit(primitives_[k], range)) return true;
+                    if (visit(k, range)) return true;
             } else {
                 const std::uint32_t left = node.first, right = node.first + 1;
                 const Interval<T> a = slab.may_cross(nodes_[left].box, range), b = slab.may_cross(nodes_[right].box, range);
@@ -168,7 +183,6 @@ public:
         }
     }
 
-private:
     constexpr void build(std::span<const Aabb<T>> boxes, const BvhConfig& config)
     {
         const auto n = std::uint32_t(boxes.size());

@@ -46,4 +46,33 @@ template <Shape S>
     else return shape.bounds().bounding_sphere();
 }
 
+/// A shape with a lean closest-hit query: first_crossing(ray, range) gives the t of
+/// crossings<false>(ray, range).front() (infinity when there is none) without building
+/// the list, and any_crossing whether that list is non-empty.
+template <class S>
+concept HasFirstCrossing = Shape<S> && requires(const S& shape, const Ray<typename S::scalar_type>& ray, Interval<typename S::scalar_type> range) {
+    { shape.first_crossing(ray, range) } -> std::same_as<typename S::scalar_type>;
+    { shape.any_crossing(ray, range) } -> std::same_as<bool>;
+};
+
+/// The t of the shape's first crossing strictly inside `range`, or infinity.
+template <Shape S>
+[[nodiscard]] constexpr typename S::scalar_type first_crossing(const S& shape, const Ray<typename S::scalar_type>& ray, Interval<typename S::scalar_type> range) noexcept
+{
+    if constexpr (HasFirstCrossing<S>) {
+        return shape.first_crossing(ray, range);
+    } else {
+        const auto crossings = shape.template crossings<false>(ray, range);
+        return crossings.empty() ? infinity<typename S::scalar_type> : crossings.front().t;
+    }
+}
+
+/// Whether the shape crosses the ray strictly inside `range`.
+template <Shape S>
+[[nodiscard]] constexpr bool any_crossing(const S& shape, const Ray<typename S::scalar_type>& ray, Interval<typename S::scalar_type> range) noexcept
+{
+    if constexpr (HasFirstCrossing<S>) return shape.any_crossing(ray, range);
+    else return !shape.template crossings<false>(ray, range).empty();
+}
+
 } // namespace prism

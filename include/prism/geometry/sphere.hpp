@@ -50,6 +50,48 @@ public:
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
+        Crossings<T, 2> out;
+        const Roots r = roots(ray);
+        if (!r.real) return out;
+        // The ray is inside between the roots: it enters at t0 and leaves at t1, as
+        // the gradient 2(p - center) points against d at t0 and along it at t1. The
+        // surface points are taken from the closest approach l, at -+sqrt(disc) / a along
+        // the ray from it: exact to the sphere's own scale however far the origin is,
+        // where o + t d would carry the rounding of t (an ulp of the distance).
+        out.inside_at_start = r.t0 < range.min && range.min < r.t1;
+        if (range.surrounds(r.t0)) out.push_back(Surface ? crossing_at(r.closest - r.half_chord * ray.direction, r.t0, true) : Crossing<T>::without_surface(r.t0, true));
+        if (range.surrounds(r.t1)) out.push_back(Surface ? crossing_at(r.closest + r.half_chord * ray.direction, r.t1, false) : Crossing<T>::without_surface(r.t1, false));
+        return out;
+    }
+
+    /// crossings<false>(ray, range).front().t (infinity if none), without the list.
+    [[nodiscard]] constexpr T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        const Roots r = roots(ray);
+        if (!r.real) return infinity<T>;
+        return range.surrounds(r.t0) ? r.t0 : (range.surrounds(r.t1) ? r.t1 : infinity<T>);
+    }
+
+    [[nodiscard]] constexpr bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        return first_crossing(ray, range) < infinity<T>;
+    }
+
+private:
+    // Sphere Private Methods
+
+    /// Where the ray's line crosses the sphere: t0 < t1, or no real pair (a miss or a
+    /// tangent); the closest approach to the center and the half chord over a, from
+    /// which the crossing points are taken.
+    struct Roots {
+        bool real = false;
+        T t0 = 0, t1 = 0;
+        Vec3<T> closest{};
+        T half_chord = 0;
+    };
+
+    [[nodiscard]] constexpr Roots roots(const Ray<T>& ray) const noexcept
+    {
         // Compute quadratic coefficients: a t^2 + 2 h t + c = 0 with f = o - center
         const Vec3<T> f = ray.origin - center_;
         const Vec3<T>& d = ray.direction;
@@ -63,15 +105,14 @@ public:
         // approach to the center.
         const Vec3<T> l = f - (h / a) * d;
         const T ll2 = length_squared(l);
-        Crossings<T, 2> out;
         // A clear miss, decided before any square root: |l|^2 is computed to within a few
         // ulps, so beyond r^2 (1 + 8 eps) the ray passes outside the sphere.
-        if (ll2 > radius_ * radius_ * (T(1) + T(8) * std::numeric_limits<T>::epsilon())) return out;
+        if (ll2 > radius_ * radius_ * (T(1) + T(8) * std::numeric_limits<T>::epsilon())) return {};
         const T ll = prism::sqrt(ll2);
         const T disc = a * (radius_ - ll) * (radius_ + ll);
 
         // A miss, or a tangent (a double root: the ray touches but does not cross).
-        if (!(disc > T(0))) return out;
+        if (!(disc > T(0))) return {};
 
         // Stable roots: q = -(h + sign(h) sqrt(disc)), t = q / a and c / q.
         const T root = prism::sqrt(disc);
@@ -79,20 +120,8 @@ public:
         T t0 = q / a;
         T t1 = q != T(0) ? c / q : -t0;
         if (t0 > t1) std::swap(t0, t1);
-
-        // The ray is inside between the roots: it enters at t0 and leaves at t1, as
-        // the gradient 2(p - center) points against d at t0 and along it at t1. The
-        // surface points are taken from the closest approach l, at -+sqrt(disc) / a along
-        // the ray from it: exact to the sphere's own scale however far the origin is,
-        // where o + t d would carry the rounding of t (an ulp of the distance).
-        out.inside_at_start = t0 < range.min && range.min < t1;
-        if (range.surrounds(t0)) out.push_back(Surface ? crossing_at(l - (root / a) * d, t0, true) : Crossing<T>::without_surface(t0, true));
-        if (range.surrounds(t1)) out.push_back(Surface ? crossing_at(l + (root / a) * d, t1, false) : Crossing<T>::without_surface(t1, false));
-        return out;
+        return {true, t0, t1, l, root / a};
     }
-
-private:
-    // Sphere Private Methods
 
     [[nodiscard]] constexpr Crossing<T> crossing_at(const Vec3<T>& radial, T t, bool entering) const noexcept
     {

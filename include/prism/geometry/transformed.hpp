@@ -41,15 +41,7 @@ public:
     {
         // A ray that cannot come near the bounds cannot cross the shape.
         if (bounded_ && !bounds_.reached_after(ray, range.min)) return {};
-        // Carry the ray into the shape's coordinates. The new origin is off by the
-        // rounding of that transform, which can be more than a spawned ray's offset from
-        // the surface it leaves: move it forward along the ray past that error, and
-        // measure t from there (pbrt-v4, Transform::ApplyInverse(Ray)).
-        Ray<T> local{to_world_.inverse_point(ray.origin), to_world_.inverse_vector(ray.direction)};
-        const T length2 = length_squared(local.direction);
-        T dt = length2 > T(0) ? dot(abs(local.direction), to_world_.inverse_point_error(ray.origin)) / length2 : T(0);
-        if (!is_finite(dt)) dt = T(0);
-        local.origin += dt * local.direction;
+        const auto [local, dt] = to_local(ray);
         // The end of the range is carried over two float steps wide and applied again to
         // the world t: the result keeps every crossing before range.max however the
         // subtraction rounds, so a query over a shorter range finds the same first one.
@@ -75,7 +67,41 @@ public:
         return out;
     }
 
+    /// crossings<false>(ray, range).front().t (infinity if none): the shape's own lean
+    /// query, when it has one, in its coordinates.
+    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
+        const auto [local, dt] = to_local(ray);
+        const T t = prism::first_crossing(shape_, local, {range.min, next_float_up(next_float_up(range.max - dt))}) + dt;
+        return t < range.max ? t : infinity<T>;
+    }
+
+    [[nodiscard]] bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        return first_crossing(ray, range) < infinity<T>;
+    }
+
 private:
+    struct LocalRay {
+        Ray<T> ray;
+        T dt; ///< local t + dt = world t
+    };
+
+    /// The ray in the shape's coordinates. The new origin is off by the rounding of that
+    /// transform, which can be more than a spawned ray's offset from the surface it
+    /// leaves: it is moved forward along the ray past that error, and t measured from
+    /// there (pbrt-v4, Transform::ApplyInverse(Ray)).
+    [[nodiscard]] LocalRay to_local(const Ray<T>& ray) const noexcept
+    {
+        Ray<T> local{to_world_.inverse_point(ray.origin), to_world_.inverse_vector(ray.direction)};
+        const T length2 = length_squared(local.direction);
+        T dt = length2 > T(0) ? dot(abs(local.direction), to_world_.inverse_point_error(ray.origin)) / length2 : T(0);
+        if (!is_finite(dt)) dt = T(0);
+        local.origin += dt * local.direction;
+        return {local, dt};
+    }
+
     /// The box around the eight transformed corners of the shape's box.
     [[nodiscard]] Aabb<T> world_bounds() const noexcept
     {

@@ -308,14 +308,14 @@ private:
         const auto objects = objects_of(std::get<I>(slots));
         for (std::size_t k = 0; k < objects.size(); ++k) {
             if (!worth_testing(objects[k], near_cluster)) continue;
-            const auto crossings = objects[k].shape.template crossings<false>(ray, range);
-            if (crossings.empty()) continue;
+            const T t = first_crossing(objects[k].shape, ray, range);
+            if (!(t < infinity<T>)) continue;
             // Ending the range just past the crossing keeps every crossing before it, and
             // so the same first one, while the surface pass refines nothing beyond it:
             // no shape's answer up to a t depends on where its range ends (shapes cull by
             // Aabb::reached_after, which ignores the end).
-            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(crossings.front().t)}};
-            range.max = crossings.front().t;
+            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(t)}};
+            range.max = t;
         }
     }
 
@@ -332,10 +332,10 @@ private:
         // takes a tie as it would have in the scan.
         const auto test = [&](std::uint32_t k, Interval<T>& r) {
             const bool before = nearest.found && nearest.slot == I && k < nearest.index;
-            const auto crossings = objects[k].shape.template crossings<false>(ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r);
-            if (crossings.empty()) return;
-            nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(crossings.front().t)}};
-            r.max = crossings.front().t;
+            const T t = first_crossing(objects[k].shape, ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r);
+            if (!(t < infinity<T>)) return;
+            nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}};
+            r.max = t;
         };
         for (const std::uint32_t k : index.unbounded) test(k, range);
         if (near_cluster)
@@ -375,10 +375,10 @@ private:
         for (const auto& object : objects_of(std::get<I>(slots))) {
             const std::uint32_t this_index = index++;
             if (!worth_testing(object, near_cluster)) continue;
-            const auto crossings = object.shape.template crossings<false>(ray, range);
             if constexpr (!transmits<M> || Glass == ShadowsThroughGlass::blocked) {
-                if (!crossings.empty()) return false;
+                if (any_crossing(object.shape, ray, range)) return false;
             } else {
+                const auto crossings = object.shape.template crossings<false>(ray, range);
                 attenuate_shadow_ray(object.material, crossings, ray, t_max, tr);
                 if (max_component(tr) <= T(0)) return false;
                 if (crossings.inside_at_start) boundaries.add({T(0), std::uint32_t(I), this_index, true, true});
@@ -394,7 +394,7 @@ private:
     {
         const auto objects = objects_of(std::get<I>(slots));
         const auto& index = std::get<I>(indices_);
-        const auto blocks = [&](std::uint32_t k) { return !objects[k].shape.template crossings<false>(ray, range).empty(); };
+        const auto blocks = [&](std::uint32_t k) { return any_crossing(objects[k].shape, ray, range); };
         for (const std::uint32_t k : index.unbounded)
             if (blocks(k)) return true;
         Interval<T> r = range;

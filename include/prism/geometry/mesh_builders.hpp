@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: MIT
+// Generated triangle meshes: a geodesic sphere, a box, a height field.
+#pragma once
+
+#include <prism/core/check.hpp>
+#include <prism/core/math.hpp>
+#include <prism/geometry/triangle_mesh.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+/// Positions and triangles, counter-clockwise seen from outside: what a TriangleMesh is
+/// built from.
+template <Scalar T>
+struct MeshBuffers {
+    std::vector<Vec3<T>> positions;
+    std::vector<TriangleIndices> triangles;
+};
+
+/// A geodesic sphere: an icosahedron with each triangle split in four `subdivisions`
+/// times, every vertex on the sphere (20 * 4^subdivisions triangles). Closed.
+template <Scalar T = float>
+[[nodiscard]] MeshBuffers<T> icosphere(const Vec3<T>& center, T radius, int subdivisions)
+{
+    detail::require_finite("icosphere center", center);
+    detail::require_positive("icosphere radius", radius);
+    if (subdivisions < 0 || subdivisions > 10) detail::throw_invalid("icosphere subdivisions must be in [0, 10], got ", subdivisions);
+    const double g = (1 + std::sqrt(5.0)) / 2;
+    std::vector<Vec3<double>> unit = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                                      {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    for (auto& v : unit) v = normalize(v);
+    std::vector<TriangleIndices> faces = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                          {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+                                          {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+    for (int level = 0; level < subdivisions; ++level) {
+        std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> middle;
+        const auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
+            const auto key = std::minmax(a, b);
+            const auto [at, fresh] = middle.try_emplace(key, std::uint32_t(unit.size()));
+            if (fresh) unit.push_back(normalize(unit[a] + unit[b]));
+            return at->second;
+        };
+        std::vector<TriangleIndices> finer;
+        finer.reserve(4 * faces.size());
+        for (const auto& [a, b, c] : faces) {
+            const std::uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+            finer.push_back({a, ab, ca});
+            finer.push_back({b, bc, ab});
+            finer.push_back({c, ca, bc});
+            finer.push_back({ab, bc, ca});
+        }
+        faces = std::move(finer);
+    }
+    MeshBuffers<T> out;
+    out.positions.reserve(unit.size());
+    for (const auto& v : unit) out.positions.push_back(center + radius * Vec3<T>(v));
+    out.triangles = std::move(faces);
+    return out;
+}
+
+/// The box [lo, hi] as 12 triangles. Closed.
+template <Scalar T = float>
+[[nodiscard]] MeshBuffers<T> box_mesh(const Vec3<T>& lo, const Vec3<T>& hi)
+{
+    detail::require_finite("box_mesh lo", lo);
+    detail::require_finite("box_mesh hi", hi);
+    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) detail::throw_invalid("box_mesh lo must be below hi on every axis, got ", detail::describe(lo), " and ", detail::describe(hi));
+    MeshBuffers<T> out;
+    for (int k = 0; k < 8; ++k) out.positions.push_back({k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z});
+    // Two triangles a face, wound outward.
+    out.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                     {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+    return out;
+}
+
+/// The surface y = height(x, z) over [x0, x1] x [z0, z1], sampled at (cells + 1)^2
+/// points: 2 cells^2 triangles, facing +y. Open.
+template <Scalar T = float, class Height>
+[[nodiscard]] MeshBuffers<T> height_field(T x0, T x1, T z0, T z1, int cells, Height&& height)
+{
+    if (cells < 1 || cells > 16384) detail::throw_invalid("height_field cells must be in [1, 16384], got ", cells);
+    if (!(x0 < x1)) detail::throw_invalid("height_field x0 must be below x1, got ", x0, " and ", x1);
+    if (!(z0 < z1)) detail::throw_invalid("height_field z0 must be below z1, got ", z0, " and ", z1);
+    MeshBuffers<T> out;
+    const auto n = std::uint32_t(cells);
+    for (std::uint32_t j = 0; j <= n; ++j)
+        for (std::uint32_t i = 0; i <= n; ++i) {
+            const T x = x0 + (x1 - x0) * T(i) / T(n), z = z0 + (z1 - z0) * T(j) / T(n);
+            const T y = T(height(x, z));
+            if (!is_finite(y)) detail::throw_invalid("height_field height(", x, ", ", z, ") must be finite, got ", y);
+            out.positions.push_back({x, y, z});
+        }
+    for (std::uint32_t j = 0; j < n; ++j)
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const std::uint32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+            out.triangles.push_back({a, c, b});
+            out.triangles.push_back({b, c, d});
+        }
+    return out;
+}
+
+} // namespace prism

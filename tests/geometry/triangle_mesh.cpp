@@ -1,0 +1,278 @@
+// SPDX-License-Identifier: MIT
+#include <prism/geometry/triangle_mesh.hpp>
+
+#include "../support.hpp"
+
+#include <cmath>
+#include <vector>
+
+using prism::Interval;
+using prism::Pcg32;
+using prism::Ray;
+using prism::TriangleIndices;
+using prism::TriangleMesh;
+using prism::Vec3;
+
+namespace {
+
+/// Moller-Trumbore in long double: an independent test for rays that pass well clear of
+/// every edge. Returns t, or a negative value for a miss.
+template <class T>
+long double moller_trumbore(const Ray<T>& ray, const std::array<Vec3<T>, 3>& c, long double& margin)
+{
+    using L = long double;
+    const L o[3] = {ray.origin.x, ray.origin.y, ray.origin.z}, d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
+    L p0[3], e1[3], e2[3];
+    for (int i = 0; i < 3; ++i) p0[i] = c[0][i], e1[i] = L(c[1][i]) - L(c[0][i]), e2[i] = L(c[2][i]) - L(c[0][i]);
+    const auto crs = [](const L* a, const L* b, L* r) { r[0] = a[1] * b[2] - a[2] * b[1], r[1] = a[2] * b[0] - a[0] * b[2], r[2] = a[0] * b[1] - a[1] * b[0]; };
+    const auto dt = [](const L* a, const L* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    L p[3], q[3], s[3];
+    crs(d, e2, p);
+    const L det = dt(e1, p);
+    if (det == 0) return margin = 0, -1;
+    for (int i = 0; i < 3; ++i) s[i] = o[i] - p0[i];
+    const L u = dt(s, p) / det;
+    crs(s, e1, q);
+    const L v = dt(d, q) / det;
+    margin = std::min({u, v, 1 - u - v});
+    if (margin < 0) return -1;
+    return dt(e2, q) / det;
+}
+
+template <class T>
+std::vector<Vec3<T>> soup_positions(Pcg32& rng, int triangles, T extent, T size)
+{
+    std::vector<Vec3<T>> p;
+    for (int i = 0; i < triangles; ++i) {
+        const Vec3<T> c = test::random_point<T>(rng, extent);
+        for (int k = 0; k < 3; ++k) p.push_back(c + test::random_point<T>(rng, size));
+    }
+    return p;
+}
+
+std::vector<TriangleIndices> soup_triangles(int triangles)
+{
+    std::vector<TriangleIndices> f;
+    for (std::uint32_t i = 0; i < std::uint32_t(triangles); ++i) f.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+    return f;
+}
+
+} // namespace
+
+TEST_CASE_TEMPLATE("a triangle's hit against Moller-Trumbore in long double, away from its edges", T, float, double)
+{
+    Pcg32 rng(11u, 14u);
+    int hits = 0, compared = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const std::array<Vec3<T>, 3> c{test::random_point<T>(rng, T(1)), test::random_point<T>(rng, T(1)), test::random_point<T>(rng, T(1))};
+        // Aimed near the triangle: about half hit it.
+        const T u = T(1.6) * rng.uniform<T>() - T(0.3), v = T(1.6) * rng.uniform<T>() - T(0.3);
+        const Vec3<T> origin = test::random_point<T>(rng, T(4));
+        const Ray<T> ray{origin, prism::normalize(c[0] + u * (c[1] - c[0]) + v * (c[2] - c[0]) - origin)};
+        long double margin = 0;
+        const long double t = moller_trumbore(ray, c, margin);
+        prism::detail::TriangleHit<T> h{};
+        const bool hit = prism::detail::hit_triangle(prism::detail::ShearedRay<T>(ray), c, {T(0), prism::infinity<T>}, h);
+        // Too near an edge, the origin, or the triangle's plane to judge at float precision.
+        const Vec3<T> n = prism::normalize(prism::cross(c[1] - c[0], c[2] - c[0]));
+        if (std::fabs(double(margin)) < 1e-4 || (t >= 0 && t < 1e-3) || std::abs(prism::dot(n, ray.direction)) < T(0.01)) continue;
+        ++compared;
+        REQUIRE(hit == (t > 0));
+        if (!hit) continue;
+        ++hits;
+        CHECK(double(h.t) == doctest::Approx(double(t)).epsilon(sizeof(T) == 4 ? 1e-4 : 1e-11));
+        CHECK(h.entering == (prism::dot(n, ray.direction) < T(0)));
+        const Vec3<T> p = h.b[0] * c[0] + h.b[1] * c[1] + h.b[2] * c[2];
+        CHECK(prism::length(p - ray.at(h.t)) < (sizeof(T) == 4 ? 1e-4 : 1e-12) * (1 + std::abs(double(h.t))));
+    }
+    CHECK(compared > 180000);
+    CHECK(hits > 30000);
+}
+
+TEST_CASE_TEMPLATE("a mesh's Bvh finds what testing every triangle finds", T, float, double)
+{
+    Pcg32 rng(5u, 14u);
+    for (const int n : {1, 7, 100, 3000}) {
+        const auto positions = soup_positions<T>(rng, n, T(10), T(1));
+        const auto triangles = soup_triangles(n);
+        const TriangleMesh<T> mesh(positions, triangles);
+        CHECK_FALSE(mesh.closed());
+        for (int i = 0; i < 3000; ++i) {
+            Ray<T> ray{test::random_point<T>(rng, T(12)), test::random_direction<T>(rng)};
+            if (i % 3 == 1) ray.origin *= T(1000);  // far away
+            if (i % 3 == 2) ray.direction[i % 3] = 0; // axis-parallel
+            ray.direction = prism::normalize(test::random_point<T>(rng, T(10)) - ray.origin);
+            const Interval<T> range{T(0), prism::infinity<T>};
+            const prism::detail::ShearedRay<T> sheared(ray);
+            T nearest = prism::infinity<T>;
+            for (int f = 0; f < n; ++f) {
+                prism::detail::TriangleHit<T> h;
+                const std::array<Vec3<T>, 3> c{positions[std::size_t(3 * f)], positions[std::size_t(3 * f + 1)], positions[std::size_t(3 * f + 2)]};
+                if (prism::detail::hit_triangle(sheared, c, range, h)) nearest = std::min(nearest, h.t);
+            }
+            REQUIRE(mesh.first_crossing(ray, range) == nearest);
+            CHECK(mesh.any_crossing(ray, range) == (nearest < prism::infinity<T>));
+            const auto list = mesh.template crossings<false>(ray, range);
+            CHECK(list.empty() == !(nearest < prism::infinity<T>));
+            if (!list.empty()) CHECK(list.front().t == nearest);
+            for (std::size_t k = 1; k < list.size(); ++k) CHECK(list[k - 1].t <= list[k].t);
+        }
+    }
+}
+
+TEST_CASE_TEMPLATE("no ray slips through a closed mesh: aimed at its vertices, edges and faces", T, float, double)
+{
+    // A geodesic sphere (5120 triangles), and the same far from the origin.
+    Pcg32 rng(3u, 14u);
+    for (const T offset : {T(0), T(1e4)}) {
+        const Vec3<T> center(offset, T(-0.5) * offset, T(0.25) * offset);
+        const auto buffers = prism::icosphere<T>(center, T(1), 4);
+        const TriangleMesh<T> mesh(buffers.positions, buffers.triangles);
+        REQUIRE(mesh.closed());
+        int missed = 0, wrong = 0, aimed = 0;
+        // t = 1 at the target, up to the rounding of the target and the direction.
+        const T tolerance = T(1e-4) + T(16) * std::numeric_limits<T>::epsilon() * offset;
+        for (const auto& f : buffers.triangles) {
+            const Vec3<T> a = buffers.positions[f[0]], b = buffers.positions[f[1]], c = buffers.positions[f[2]];
+            // A vertex, the middle of an edge (as rounded), and the centroid.
+            for (const Vec3<T> target : {a, T(0.5) * (a + b), (a + b + c) / T(3)}) {
+                // From a side that sees the target well inside the silhouette.
+                Vec3<T> eye;
+                do eye = center + T(3) * test::random_direction<T>(rng);
+                while (prism::dot(prism::normalize(target - center), prism::normalize(eye - target)) < T(0.2));
+                const Ray<T> ray{eye, target - eye};
+                ++aimed;
+                const auto list = mesh.crossings(ray, {T(0), prism::infinity<T>});
+                // Enters once at the target (t = 1) and leaves once.
+                missed += list.empty();
+                if (!list.empty()) wrong += list.size() != 2 || !list[0].entering || list[1].entering || list.inside_at_start || std::abs(list[0].t - T(1)) > tolerance;
+            }
+        }
+        CHECK(aimed == 3 * 5120);
+        CHECK(missed == 0);
+        CHECK(wrong == 0);
+    }
+}
+
+TEST_CASE("a touch at a convex edge enters and leaves at one t; a ray through a face edge crosses once")
+{
+    const auto cube = prism::box_mesh<float>({0, 0, 0}, {1, 1, 1});
+    const TriangleMesh<float> mesh(cube.positions, cube.triangles);
+    REQUIRE(mesh.closed());
+    // Along z = 0.5, grazing the edge x = y = 1 from outside: it meets the faces x = 1
+    // (entering) and y = 1 (leaving) at t = 1.
+    const Ray<float> graze{{2, 0, 0.5f}, {-1, 1, 0}};
+    const auto touch = mesh.crossings(graze, {0, prism::infinity<float>});
+    REQUIRE(touch.size() == 2);
+    CHECK(touch[0].t == 1);
+    CHECK(touch[1].t == 1);
+    CHECK(touch[0].entering);
+    CHECK_FALSE(touch[1].entering);
+    CHECK_FALSE(touch.inside_at_start);
+    CHECK(mesh.first_crossing(graze, {0, prism::infinity<float>}) == 1);
+    // Through the diagonal edge that splits the face z = 0 into two triangles: both
+    // triangles are hit at t = 1 and merged into one entering crossing.
+    const auto through = mesh.crossings({{0.25f, 0.25f, -1}, {0, 0, 1}}, {0, prism::infinity<float>});
+    REQUIRE(through.size() == 2);
+    CHECK(through[0].t == 1);
+    CHECK(through[0].entering);
+    CHECK(through[1].t == 2);
+    CHECK_FALSE(through[1].entering);
+    // From inside: the range starts inside, and a range past its far face sees nothing.
+    const auto inside = mesh.crossings({{0.5f, 0.5f, 0.5f}, {0, 0, 1}}, {0, prism::infinity<float>});
+    CHECK(inside.inside_at_start);
+    REQUIRE(inside.size() == 1);
+    CHECK(inside[0].t == 0.5f);
+    CHECK(inside[0].normal.z == 1);
+    const auto inside_short = mesh.crossings({{0.5f, 0.5f, 0.5f}, {0, 0, 1}}, {0, 0.25f});
+    CHECK(inside_short.inside_at_start);
+    CHECK(inside_short.empty());
+}
+
+TEST_CASE("a closed mesh's inside agrees with the box it tessellates")
+{
+    const auto cube = prism::box_mesh<double>({-1, -2, -3}, {3, 2, 1});
+    const TriangleMesh<double> mesh(cube.positions, cube.triangles);
+    const prism::Box<double> box({-1, -2, -3}, {3, 2, 1});
+    Pcg32 rng(9u, 14u);
+    int disagree = 0;
+    for (int i = 0; i < 100000; ++i) {
+        const Vec3<double> p = test::random_point<double>(rng, 4.0);
+        disagree += mesh.contains(p) != box.contains(p);
+        const Ray<double> ray{p, test::random_direction<double>(rng)};
+        const auto a = mesh.crossings(ray, {0, prism::infinity<double>});
+        const auto b = box.crossings(ray, {0, prism::infinity<double>});
+        REQUIRE(a.size() == b.size());
+        CHECK(a.inside_at_start == b.inside_at_start);
+        for (std::size_t k = 0; k < a.size(); ++k) {
+            CHECK(a[k].t == doctest::Approx(b[k].t).epsilon(1e-12));
+            CHECK(a[k].entering == b[k].entering);
+            CHECK(prism::dot(a[k].normal, b[k].normal) == doctest::Approx(1));
+        }
+    }
+    CHECK(disagree == 0);
+}
+
+TEST_CASE("a closed mesh works as a CSG child: a sphere minus a tessellated box is a sphere minus the box")
+{
+    const auto cube = prism::box_mesh<double>({-0.5, -0.5, -2}, {0.5, 0.5, 2});
+    using Cut = prism::Difference<prism::Sphere<double>, TriangleMesh<double>>;
+    using Exact = prism::Difference<prism::Sphere<double>, prism::Box<double>>;
+    const Cut cut(prism::Sphere<double>({0, 0, 0}, 1), TriangleMesh<double>(cube.positions, cube.triangles));
+    const Exact exact(prism::Sphere<double>({0, 0, 0}, 1), prism::Box<double>({-0.5, -0.5, -2}, {0.5, 0.5, 2}));
+    Pcg32 rng(4u, 14u);
+    for (int i = 0; i < 20000; ++i) {
+        const Ray<double> ray{test::random_point<double>(rng, 2.0), test::random_direction<double>(rng)};
+        const auto a = cut.crossings(ray, {0, prism::infinity<double>});
+        const auto b = exact.crossings(ray, {0, prism::infinity<double>});
+        REQUIRE(a.size() == b.size());
+        CHECK(a.inside_at_start == b.inside_at_start);
+        for (std::size_t k = 0; k < a.size(); ++k) CHECK(a[k].t == doctest::Approx(b[k].t).epsilon(1e-12));
+    }
+}
+
+TEST_CASE_TEMPLATE("a ray leaving a mesh's surface never hits the triangle it left", T, float, double)
+{
+    // Convex meshes (pbrt-v4's reintersection test), small and far from the origin.
+    Pcg32 rng(2u, 14u);
+    const int self_hits = test::reintersections(rng, 20000, [](Pcg32& r) {
+        const T scale = T(std::pow(10.0, 2 * r.uniform<double>() - 2)); // 0.01 to 1: the eye 5 away is outside
+        const Vec3<T> center = test::random_point<T>(r, T(1e4) * r.uniform<T>());
+        const auto b = prism::icosphere<T>(center, scale, 2);
+        return std::pair{TriangleMesh<T>(b.positions, b.triangles), center};
+    });
+    CHECK(self_hits == 0);
+}
+
+TEST_CASE("a mesh is closed only when every edge pairs with its reverse, and must wind outward")
+{
+    auto sphere = prism::icosphere<float>({0, 0, 0}, 1, 1);
+    CHECK(TriangleMesh<float>(sphere.positions, sphere.triangles).closed());
+    auto open = sphere;
+    open.triangles.pop_back();
+    const TriangleMesh<float> cup(open.positions, open.triangles);
+    CHECK_FALSE(cup.closed());
+    CHECK_FALSE(cup.contains({0, 0, 0}));
+    CHECK_FALSE(cup.crossings({{0, 0, 0}, {0, 0, 1}}, {0, prism::infinity<float>}).inside_at_start);
+    auto inward = sphere;
+    for (auto& f : inward.triangles) std::swap(f[1], f[2]);
+    CHECK_THROWS_WITH_AS(TriangleMesh<float>(inward.positions, inward.triangles), doctest::Contains("wind inward"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(TriangleMesh<float>(sphere.positions, std::vector<TriangleIndices>{}), doctest::Contains("triangles must not be empty"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(TriangleMesh<float>(sphere.positions, std::vector<TriangleIndices>{{0, 1, 9999}}), doctest::Contains("vertex index 9999"), std::invalid_argument);
+    auto nan = sphere;
+    nan.positions[3].y = std::nanf("");
+    CHECK_THROWS_WITH_AS(TriangleMesh<float>(nan.positions, nan.triangles), doctest::Contains("position 3 must be finite"), std::invalid_argument);
+}
+
+TEST_CASE("copies of a mesh share its data; transformed copies are instances")
+{
+    const auto b = prism::icosphere<float>({0, 0, 0}, 1, 3);
+    const TriangleMesh<float> mesh(b.positions, b.triangles);
+    const prism::Transformed<TriangleMesh<float>> moved(mesh, prism::Transform<float>::translate({5, 0, 0}));
+    CHECK(&moved.shape().bvh() == &mesh.bvh());
+    // Hit through the instance where the moved sphere is.
+    const float t = moved.first_crossing({{5, 0, -3}, {0, 0, 1}}, {0, prism::infinity<float>});
+    CHECK(t == doctest::Approx(2).epsilon(0.01));
+    CHECK(moved.crossings<false>({{5, 0, -3}, {0, 0, 1}}, {0, prism::infinity<float>}).front().t == t);
+    CHECK(mesh.memory_bytes() > 1280 * 36);
+}
