@@ -4,8 +4,8 @@
 #   tools/setup.sh          build, test and example needs
 #   tools/setup.sh --bench  also POV-Ray, Blender (Cycles, about 700 MB), nanoflann, matplotlib and PIL, for bench/
 set -euo pipefail
-packages=(g++ cmake ninja-build meson python3 libglm-dev doctest-dev libstb-dev colord-data)
-if [[ "${1:-}" == "--bench" ]]; then packages+=(povray blender python3-matplotlib python3-pil libnanoflann-dev); fi
+packages=(g++ cmake ninja-build meson python3 libglm-dev doctest-dev libstb-dev colord-data libtinyobjloader-dev)
+if [[ "${1:-}" == "--bench" ]]; then packages+=(povray blender python3-matplotlib python3-pil libnanoflann-dev libembree-dev); fi
 
 missing=()
 for p in "${packages[@]}"; do

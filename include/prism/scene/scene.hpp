@@ -117,14 +117,16 @@ struct SlotIndex<ObjectArray<S, M>> {
     static constexpr bool accelerated = true;
     static constexpr std::size_t tree_from = 8;
     bool tree = false;                   ///< false: the array is scanned
-    Bvh<T> bvh;                          ///< over bounded[...]
-    std::vector<std::uint32_t> bounded;  ///< the object behind each of the tree's primitives
+    Bvh<T> bvh;                          ///< over the bounded objects
+    std::vector<S> shapes;               ///< the bounded objects' shapes, in the Bvh's leaf order
+    std::vector<std::uint32_t> object;   ///< the object behind each of them
     std::vector<std::uint32_t> unbounded;
 
     explicit SlotIndex(const ObjectArray<S, M>& array) : tree(array.items.size() >= tree_from)
     {
         if (!tree) return;
         std::vector<Aabb<T>> boxes;
+        std::vector<std::uint32_t> bounded;
         for (std::uint32_t k = 0; k < array.items.size(); ++k) {
             if (array.items[k].bounded) {
                 bounded.push_back(k);
@@ -133,6 +135,12 @@ struct SlotIndex<ObjectArray<S, M>> {
                 unbounded.push_back(k);
         }
         bvh = Bvh<T>(boxes);
+        // The shapes a traversal tests, side by side as it meets them (a copy: the
+        // objects' materials stay out of the cache's way).
+        for (const std::uint32_t p : bvh.primitives()) {
+            object.push_back(bounded[p]);
+            shapes.push_back(array.items[bounded[p]].shape);
+        }
     }
 };
 
@@ -325,22 +333,22 @@ private:
     {
         const auto objects = objects_of(std::get<I>(slots));
         const auto& index = std::get<I>(indices_);
-        PRISM_ASSERT(index.bvh.size() + index.unbounded.size() == objects.size());
+        PRISM_ASSERT(index.shapes.size() + index.unbounded.size() == objects.size());
         // Crossings lie strictly inside the range, so in a scan in index order the first
         // object at a t wins a tie. The tree visits objects in another order: one that
         // comes before the nearest so far is asked up to just past its t, so that it
         // takes a tie as it would have in the scan.
-        const auto test = [&](std::uint32_t k, Interval<T>& r) {
+        const auto test = [&](const auto& shape, std::uint32_t k, Interval<T>& r) {
             const bool before = nearest.found && nearest.slot == I && k < nearest.index;
-            const T t = first_crossing(objects[k].shape, ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r);
+            const T t = first_crossing(shape, ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r);
             if (!(t < infinity<T>)) return;
             nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}};
             r.max = t;
         };
-        for (const std::uint32_t k : index.unbounded) test(k, range);
+        for (const std::uint32_t k : index.unbounded) test(objects[k].shape, k, range);
         if (near_cluster)
-            index.bvh.traverse(ray, range, [&](std::uint32_t p, Interval<T>& r) {
-                test(index.bounded[p], r);
+            index.bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t p, Interval<T>& r) {
+                test(index.shapes[p], index.object[p], r);
                 return false;
             });
     }
@@ -394,11 +402,10 @@ private:
     {
         const auto objects = objects_of(std::get<I>(slots));
         const auto& index = std::get<I>(indices_);
-        const auto blocks = [&](std::uint32_t k) { return any_crossing(objects[k].shape, ray, range); };
         for (const std::uint32_t k : index.unbounded)
-            if (blocks(k)) return true;
+            if (any_crossing(objects[k].shape, ray, range)) return true;
         Interval<T> r = range;
-        return near_cluster && index.bvh.traverse(ray, r, [&](std::uint32_t p, Interval<T>&) { return blocks(index.bounded[p]); });
+        return near_cluster && index.bvh.traverse_in_leaf_order(ray, r, [&](std::uint32_t p, Interval<T>&) { return any_crossing(index.shapes[p], ray, range); });
     }
 
     /// A shadow ray through overlapping transmissive objects: each stretch attenuated by

@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: MIT
+// prism's Bvh against Embree 3 (libembree-dev, used here only), on the same geometry and
+// the same rays in one run.
+//
+// Geometry: N random spheres in [-1, 1]^3 filling 5 % of it (N = 1e2 ... 1e6; Embree's
+// point-sphere primitive), and triangle meshes (the Stanford bunny if its OBJ is given,
+// a geodesic sphere and a 10^6-triangle terrain). Rays: 1000^2 primary rays from a
+// camera, then one cosine-distributed bounce ray from every primary hit (the same rays
+// for both; prism's hit gives the bounce ray). Closest hit, Embree's rtcIntersect1 (its
+// single-ray API) against Scene::closest_hit (which also works out the winner's
+// surface), on 1 and 2 threads. Times: the minimum and median of `repeats` interleaved
+// rounds. Build: prism's on one thread; Embree's on its own (TBB) threads.
+// Agreement: the share of rays where both hit, or both miss, with t within 1e-3.
+//   bench_bvh_vs_embree [results-folder] [repeats] [bunny.obj]
+#include "common.hpp"
+
+#include <prism/io/mesh.hpp>
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using namespace prism;
+using T = float;
+
+/// A point uniform in [-1, 1]^3.
+Vec3<T> test_point(Pcg32& rng)
+{
+    return {T(2) * rng.uniform<T>() - T(1), T(2) * rng.uniform<T>() - T(1), T(2) * rng.uniform<T>() - T(1)};
+}
+
+struct Rays {
+    std::vector<Ray<T>> primary, bounce;
+};
+
+/// Seconds to trace `rays` on `threads` threads, each taking a contiguous half.
+template <class Trace>
+double trace_seconds(const std::vector<Ray<T>>& rays, int threads, Trace&& trace)
+{
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<std::thread> pool;
+    const std::size_t n = rays.size();
+    for (int k = 0; k < threads; ++k) pool.emplace_back([&, k] { trace(n * std::size_t(k) / std::size_t(threads), n * std::size_t(k + 1) / std::size_t(threads)); });
+    for (auto& t : pool) t.join();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+/// Primary rays from a camera 4 units from the origin, seeing [-1.3, 1.3]^2 at it.
+std::vector<Ray<T>> camera_rays(int size, const Vec3<T>& eye, const Vec3<T>& at, T half_width)
+{
+    std::vector<Ray<T>> rays;
+    const Vec3<T> forward = normalize(at - eye);
+    const Vec3<T> right = normalize(cross(forward, Vec3<T>(0, 1, 0))), up = cross(right, forward);
+    const T scale = half_width / length(at - eye);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const T u = (T(2) * (T(x) + T(0.5)) / T(size) - T(1)) * scale, v = (T(1) - T(2) * (T(y) + T(0.5)) / T(size)) * scale;
+            rays.push_back({eye, normalize(forward + u * right + v * up)});
+        }
+    return rays;
+}
+
+class Embree {
+public:
+    explicit Embree(int threads)
+    {
+        const std::string config = "threads=" + std::to_string(threads);
+        device_ = rtcNewDevice(config.c_str());
+        if (device_ == nullptr) throw std::runtime_error("rtcNewDevice failed");
+    }
+    Embree(const Embree&) = delete;
+    Embree& operator=(const Embree&) = delete;
+    ~Embree()
+    {
+        if (scene_ != nullptr) rtcReleaseScene(scene_);
+        rtcReleaseDevice(device_);
+    }
+
+    /// Point spheres (x, y, z, r); returns the build time.
+    double spheres(const std::vector<Sphere<T>>& balls)
+    {
+        const auto start = std::chrono::steady_clock::now();
+        begin();
+        RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), balls.size()));
+        for (std::size_t i = 0; i < balls.size(); ++i) {
+            v[4 * i] = balls[i].center().x, v[4 * i + 1] = balls[i].center().y, v[4 * i + 2] = balls[i].center().z;
+            v[4 * i + 3] = balls[i].radius();
+        }
+        return end(g, start);
+    }
+
+    double triangles(const MeshBuffers<T>& mesh)
+    {
+        const auto start = std::chrono::steady_clock::now();
+        begin();
+        RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i) v[3 * i] = mesh.positions[i].x, v[3 * i + 1] = mesh.positions[i].y, v[3 * i + 2] = mesh.positions[i].z;
+        auto* f = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangles.size()));
+        for (std::size_t i = 0; i < mesh.triangles.size(); ++i) f[3 * i] = mesh.triangles[i][0], f[3 * i + 1] = mesh.triangles[i][1], f[3 * i + 2] = mesh.triangles[i][2];
+        return end(g, start);
+    }
+
+    /// The t of the closest hit, or infinity.
+    [[nodiscard]] float closest(const Ray<T>& ray) const
+    {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRayHit rh{};
+        rh.ray.org_x = ray.origin.x, rh.ray.org_y = ray.origin.y, rh.ray.org_z = ray.origin.z;
+        rh.ray.dir_x = ray.direction.x, rh.ray.dir_y = ray.direction.y, rh.ray.dir_z = ray.direction.z;
+        rh.ray.tnear = 0, rh.ray.tfar = infinity<float>, rh.ray.mask = ~0u;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(scene_, &context, &rh);
+        return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? infinity<float> : rh.ray.tfar;
+    }
+
+private:
+    void begin()
+    {
+        if (scene_ != nullptr) rtcReleaseScene(scene_);
+        scene_ = rtcNewScene(device_);
+    }
+    double end(RTCGeometry g, std::chrono::steady_clock::time_point start)
+    {
+        rtcCommitGeometry(g);
+        rtcAttachGeometry(scene_, g);
+        rtcReleaseGeometry(g);
+        rtcCommitScene(scene_);
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+
+    RTCDevice device_ = nullptr;
+    RTCScene scene_ = nullptr;
+};
+
+/// Primary rays and, from each primary hit, a cosine bounce ray (prism's hit point and
+/// normal, offset as prism spawns rays).
+template <class SceneT>
+Rays make_rays(const SceneT& scene, std::vector<Ray<T>> primary)
+{
+    Rays rays{std::move(primary), {}};
+    Pcg32 rng(7u, 7u);
+    for (const Ray<T>& r : rays.primary)
+        if (const auto hit = scene.closest_hit(r, {T(0), infinity<T>})) {
+            const Vec3<T> n = hit->crossing.facing_normal();
+            rays.bounce.push_back(spawn_ray(hit->crossing.point, hit->crossing.error, hit->crossing.normal, cosine_hemisphere(n, rng)));
+        }
+    return rays;
+}
+
+struct Row {
+    std::string geometry;
+    std::size_t count;
+    double prism_build, embree_build;
+};
+
+/// Times both on both ray sets and thread counts, interleaved, and writes the rows.
+template <class SceneT>
+void race(bench::Csv& csv, const Row& row, const SceneT& scene, Embree& embree, const Rays& rays, int repeats)
+{
+    for (const auto* set : {&rays.primary, &rays.bounce}) {
+        const char* kind = set == &rays.primary ? "primary" : "bounce";
+        // Agreement.
+        std::size_t agree = 0, hits = 0;
+        for (const Ray<T>& r : *set) {
+            const auto h = scene.closest_hit(r, {T(0), infinity<T>});
+            const float te = embree.closest(r);
+            const float tp = h ? h->crossing.t : infinity<float>;
+            hits += h.has_value();
+            agree += (!h && !(te < infinity<float>)) || (h && std::abs(tp - te) <= 1e-3f * std::max(1.0f, tp));
+        }
+        for (const int threads : {1, 2}) {
+            std::vector<double> tp, te;
+            std::vector<long> sink(2, 0);
+            for (int round = 0; round < repeats; ++round) {
+                tp.push_back(trace_seconds(*set, threads, [&](std::size_t a, std::size_t b) {
+                    long h = 0;
+                    for (std::size_t i = a; i < b; ++i) h += scene.closest_hit((*set)[i], {T(0), infinity<T>}).has_value();
+                    if (a == 0) sink[0] = h;
+                }));
+                te.push_back(trace_seconds(*set, threads, [&](std::size_t a, std::size_t b) {
+                    long h = 0;
+                    for (std::size_t i = a; i < b; ++i) h += embree.closest((*set)[i]) < infinity<float>;
+                    if (a == 0) sink[1] = h;
+                }));
+            }
+            const double n = double(set->size());
+            const double p_min = n / *std::min_element(tp.begin(), tp.end()) / 1e6, e_min = n / *std::min_element(te.begin(), te.end()) / 1e6;
+            const double p_med = n / median(tp) / 1e6, e_med = n / median(te) / 1e6;
+            csv.row("%s,%zu,%s,%d,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.5f,%.5f", row.geometry.c_str(), row.count, kind, threads, set->size(), p_min, p_med, e_min,
+                    e_med, row.prism_build, row.embree_build, double(agree) / n, double(hits) / n);
+            std::printf("%-9s %8zu %-7s %d thr: prism %7.2f Mrays/s, Embree %7.2f (ratio min-time %.2f, median %.2f); build %.3f s vs %.3f s; agree %.5f, hit %.3f\n",
+                        row.geometry.c_str(), row.count, kind, threads, p_min, e_min, p_min / e_min, p_med / e_med, row.prism_build, row.embree_build,
+                        double(agree) / n, double(hits) / n);
+            std::fflush(stdout);
+        }
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    const std::filesystem::path out = argc > 1 ? argv[1] : "bench/results";
+    const int repeats = argc > 2 ? std::atoi(argv[2]) : 3;
+    const std::string bunny = argc > 3 ? argv[3] : "";
+    if (repeats < 1) {
+        std::fprintf(stderr, "bench_bvh_vs_embree: repeats must be >= 1, got '%s'\n", argv[2]);
+        return 2;
+    }
+    bench::Csv csv(out / "bvh_vs_embree.csv",
+                   "geometry,count,rays,threads,ray_count,prism_mrays_min,prism_mrays_median,embree_mrays_min,embree_mrays_median,prism_build_s,embree_build_s,agree,hit_share");
+    Embree embree(2);
+    const Lights lights{PointLight<T>{}};
+    const auto primary = camera_rays(1000, {T(0.3), T(0.4), T(-4)}, {T(0), T(0), T(0)}, T(1.3));
+
+    for (const std::size_t n : {std::size_t(100), std::size_t(1000), std::size_t(10000), std::size_t(100000), std::size_t(1000000)}) {
+        Pcg32 rng(1u, 1u);
+        const T radius = T(std::cbrt(0.05 * 8 / (4.0 / 3 * pi<double> * double(n))));
+        std::vector<Sphere<T>> balls;
+        ObjectArray<Sphere<T>, Diffuse<T>> array;
+        for (std::size_t i = 0; i < n; ++i) {
+            balls.emplace_back(test_point(rng), radius);
+            array.items.emplace_back(balls.back(), Diffuse<T>{});
+        }
+        auto start = std::chrono::steady_clock::now();
+        const Scene scene{lights, std::move(array)};
+        const double prism_build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double embree_build = embree.spheres(balls);
+        race(csv, {"spheres", n, prism_build, embree_build}, scene, embree, make_rays(scene, primary), repeats);
+    }
+
+    std::vector<std::pair<std::string, MeshBuffers<T>>> meshes;
+    if (!bunny.empty()) {
+        // The bunny, scaled into [-1, 1]^3.
+        MeshBuffers<T> b = load_obj<T>(bunny);
+        Aabb<T> box;
+        for (const auto& p : b.positions) box = box.merged({p, p});
+        const Vec3<T> middle = T(0.5) * (box.lo + box.hi);
+        const T scale = T(2) / max_component(box.hi - box.lo);
+        for (auto& p : b.positions) p = (p - middle) * scale;
+        meshes.emplace_back("bunny", std::move(b));
+    }
+    meshes.emplace_back("sphere", icosphere<T>({T(0), T(0), T(0)}, T(1), 7));
+    meshes.emplace_back("terrain", height_field<T>(T(-1.5), T(1.5), T(-1.5), T(1.5), 707, [](T x, T z) {
+                            return T(0.15) * std::sin(T(7) * x) * std::cos(T(5) * z) + T(0.05) * std::sin(T(31) * x + T(17) * z) - T(0.3);
+                        }));
+    for (const auto& [name, buffers] : meshes) {
+        auto start = std::chrono::steady_clock::now();
+        const Scene scene{lights, Object{TriangleMesh<T>(buffers.positions, buffers.triangles), Diffuse<T>{}}};
+        const double prism_build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double embree_build = embree.triangles(buffers);
+        race(csv, {name, buffers.triangles.size(), prism_build, embree_build}, scene, embree, make_rays(scene, primary), repeats);
+    }
+    return 0;
+}
