@@ -1825,6 +1825,8 @@ struct Crossings {
 
 #include <concepts>
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 
 namespace prism {
 
@@ -1889,6 +1891,40 @@ template <Shape S>
 {
     if constexpr (HasFirstCrossing<S>) return shape.any_crossing(ray, range);
     else return !shape.template crossings<false>(ray, range).empty();
+}
+
+/// A shape whose lean query names what it found (a mesh: the triangle), so that its
+/// surface there needs no second search: first_crossing(ray, range, hint) is
+/// first_crossing(ray, range) and sets the hint; surface_crossing(ray, range, hint),
+/// over a range that ends just past that t, is crossings(ray, range).front().
+template <class S>
+concept HasHintedSurface = HasFirstCrossing<S> && requires(const S& shape, const Ray<typename S::scalar_type>& ray, Interval<typename S::scalar_type> range,
+                                                           std::uint32_t& hint) {
+    { shape.first_crossing(ray, range, hint) } -> std::same_as<typename S::scalar_type>;
+    { shape.surface_crossing(ray, range, std::uint32_t{}) } -> std::same_as<std::optional<Crossing<typename S::scalar_type>>>;
+};
+
+/// first_crossing, setting `hint` for surface_crossing where the shape gives one.
+template <Shape S>
+[[nodiscard]] constexpr typename S::scalar_type first_crossing(const S& shape, const Ray<typename S::scalar_type>& ray, Interval<typename S::scalar_type> range,
+                                                               std::uint32_t& hint) noexcept
+{
+    if constexpr (HasHintedSurface<S>) return shape.first_crossing(ray, range, hint);
+    else return first_crossing(shape, ray, range);
+}
+
+/// crossings(ray, range).front(), if any: found from the hint where the shape takes one.
+template <Shape S>
+[[nodiscard]] constexpr std::optional<Crossing<typename S::scalar_type>> surface_crossing(const S& shape, const Ray<typename S::scalar_type>& ray,
+                                                                                          Interval<typename S::scalar_type> range, std::uint32_t hint) noexcept
+{
+    if constexpr (HasHintedSurface<S>) {
+        return shape.surface_crossing(ray, range, hint);
+    } else {
+        const auto crossings = shape.crossings(ray, range);
+        if (crossings.empty()) return std::nullopt;
+        return crossings.front();
+    }
 }
 
 } // namespace prism
@@ -2234,6 +2270,7 @@ static_assert(Shape<Box<double>>);
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -2273,16 +2310,18 @@ struct TriangleHit {
     bool entering;
 };
 
-/// The watertight test. Hits with t strictly inside `range` (and beyond the bound of
-/// t's own rounding, so never the triangle a ray was spawned from) are returned.
-template <Scalar T>
-[[nodiscard]] inline bool hit_triangle(const ShearedRay<T>& ray, const std::array<Vec3<T>, 3>& corner, Interval<T> range, TriangleHit<T>& out) noexcept
+/// hit_triangle for a ray whose largest direction component is on axis Kz (the
+/// permutation known at compile time).
+template <int Kz, Scalar T>
+[[nodiscard, gnu::always_inline]] inline bool hit_triangle_along(const ShearedRay<T>& ray, const std::array<Vec3<T>, 3>& corner, Interval<T> range,
+                                                                 TriangleHit<T>& out) noexcept
 {
+    constexpr int kx = Kz == 2 ? 0 : Kz + 1, ky = kx == 2 ? 0 : kx + 1;
     // Translate to the ray's origin, permute and shear.
     std::array<Vec3<T>, 3> p;
     for (int i = 0; i < 3; ++i) {
         const Vec3<T> q = corner[std::size_t(i)] - ray.origin;
-        p[std::size_t(i)] = {q[ray.kx] + ray.sx * q[ray.kz], q[ray.ky] + ray.sy * q[ray.kz], q[ray.kz]};
+        p[std::size_t(i)] = {q[kx] + ray.sx * q[Kz], q[ky] + ray.sy * q[Kz], q[Kz]};
     }
     // Plain products: an edge shared by two triangles gets exactly opposite values in
     // them (the subtraction rounds symmetrically), so a ray is inside exactly one of
@@ -2320,6 +2359,20 @@ template <Scalar T>
     // permutation is cyclic, the shear of determinant 1): it enters where that is < 0.
     out = {t, {e0 * inv_det, e1 * inv_det, e2 * inv_det}, (det < T(0)) != (ray.sz < T(0))};
     return true;
+}
+
+/// The watertight test. Hits with t strictly inside `range` (and beyond the bound of
+/// t's own rounding, so never the triangle a ray was spawned from) are returned.
+template <Scalar T>
+[[nodiscard, gnu::always_inline]] inline bool hit_triangle(const ShearedRay<T>& ray, const std::array<Vec3<T>, 3>& corner, Interval<T> range,
+                                                           TriangleHit<T>& out) noexcept
+{
+    // The same branch for every triangle a ray meets: predicted.
+    switch (ray.kz) {
+    case 0: return hit_triangle_along<0>(ray, corner, range, out);
+    case 1: return hit_triangle_along<1>(ray, corner, range, out);
+    default: return hit_triangle_along<2>(ray, corner, range, out);
+    }
 }
 
 template <Scalar T>
@@ -2411,14 +2464,39 @@ public:
     /// crossings<false>(ray, range).front().t gives, found by a closest-hit query alone.
     [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
+        std::uint32_t triangle = 0;
+        return first_crossing(ray, range, triangle);
+    }
+
+    /// first_crossing, naming the triangle hit (for surface_crossing).
+    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t& triangle) const noexcept
+    {
         const detail::ShearedRay<T> sheared(ray);
         T nearest = infinity<T>;
         data_->bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t k, Interval<T>& r) {
             detail::TriangleHit<T> h;
-            if (detail::hit_triangle(sheared, data_->corners[k], r, h)) nearest = r.max = h.t;
+            if (detail::hit_triangle(sheared, data_->corners[k], r, h)) nearest = r.max = h.t, triangle = k;
             return false;
         });
         return nearest;
+    }
+
+    /// crossings(ray, range).front(), from the triangle first_crossing named: a hit
+    /// inside it (off its edges) is the only one at its t, but where two triangles not
+    /// sharing an edge meet the ray at the same float t (a self-intersecting mesh).
+    /// A hit on an edge takes the search.
+    [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t triangle) const noexcept
+    {
+        detail::TriangleHit<T> h;
+        if (triangle < data_->corners.size() && detail::hit_triangle(detail::ShearedRay<T>(ray), data_->corners[triangle], range, h) && h.b[0] > T(0) &&
+            h.b[1] > T(0) && h.b[2] > T(0)) {
+            Crossings<T, N> one;
+            push<true>(one, {h.t, triangle, h.b, h.entering}, h.entering);
+            return one.front();
+        }
+        const auto all = crossings(ray, range);
+        if (all.empty()) return std::nullopt;
+        return all.front();
     }
 
     /// Whether any crossing lies strictly inside `range` (a shadow ray's query).
@@ -3370,17 +3448,7 @@ public:
         }
         out.count = kept;
         if constexpr (!Surface) return out;
-        for (std::size_t k = 0; k < out.count; ++k) {
-            Crossing<T>& c = out.items[k];
-            // The bound also covers the rounding with which a ray spawned here is carried
-            // back into the shape's coordinates, so that it starts on the side it leaves
-            // by there too (moving its origin forward along the ray, above, does not
-            // cover that for a ray leaving at a grazing angle).
-            const Vec3<T> world = to_world_.point(c.point);
-            c.error = to_world_.point_error(c.point, c.error + to_world_.inverse_point_error(world));
-            c.point = world;
-            c.normal = normalize(to_world_.normal(c.normal));
-        }
+        for (std::size_t k = 0; k < out.count; ++k) to_world(out.items[k]);
         return out;
     }
 
@@ -3397,6 +3465,30 @@ public:
     [[nodiscard]] bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         return first_crossing(ray, range) < infinity<T>;
+    }
+
+    /// first_crossing, with the shape's hint for surface_crossing (a mesh's triangle).
+    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t& hint) const noexcept
+        requires HasHintedSurface<S>
+    {
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
+        const auto [local, dt] = to_local(ray);
+        const T t = shape_.first_crossing(local, {range.min, next_float_up(next_float_up(range.max - dt))}, hint) + dt;
+        return t < range.max ? t : infinity<T>;
+    }
+
+    /// crossings(ray, range).front(), from the shape's hint.
+    [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t hint) const noexcept
+        requires HasHintedSurface<S>
+    {
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return std::nullopt;
+        const auto [local, dt] = to_local(ray);
+        std::optional<Crossing<T>> c = shape_.surface_crossing(local, {range.min, next_float_up(next_float_up(range.max - dt))}, hint);
+        if (!c) return c;
+        c->t += dt;
+        if (!(c->t < range.max)) return std::nullopt;
+        to_world(*c);
+        return c;
     }
 
 private:
@@ -3417,6 +3509,19 @@ private:
         if (!is_finite(dt)) dt = T(0);
         local.origin += dt * local.direction;
         return {local, dt};
+    }
+
+    /// A crossing found in the shape's coordinates, carried to the world's.
+    void to_world(Crossing<T>& c) const noexcept
+    {
+        // The bound also covers the rounding with which a ray spawned here is carried
+        // back into the shape's coordinates, so that it starts on the side it leaves by
+        // there too (moving its origin forward along the ray, above, does not cover that
+        // for a ray leaving at a grazing angle).
+        const Vec3<T> world = to_world_.point(c.point);
+        c.error = to_world_.point_error(c.point, c.error + to_world_.inverse_point_error(world));
+        c.point = world;
+        c.normal = normalize(to_world_.normal(c.normal));
     }
 
     /// The box around the eight transformed corners of the shape's box.
@@ -4841,6 +4946,7 @@ private:
         bool found = false;
         std::uint32_t slot = 0, index = 0;
         Interval<T> range{};
+        std::uint32_t hint = 0; ///< the shape's own (a mesh's triangle), for surface_crossing
     };
 
     template <class S>
@@ -4884,13 +4990,14 @@ private:
         const auto objects = objects_of(std::get<I>(slots));
         for (std::size_t k = 0; k < objects.size(); ++k) {
             if (!worth_testing(objects[k], near_cluster)) continue;
-            const T t = first_crossing(objects[k].shape, ray, range);
+            std::uint32_t hint = 0;
+            const T t = first_crossing(objects[k].shape, ray, range, hint);
             if (!(t < infinity<T>)) continue;
             // Ending the range just past the crossing keeps every crossing before it, and
             // so the same first one, while the surface pass refines nothing beyond it:
             // no shape's answer up to a t depends on where its range ends (shapes cull by
             // Aabb::reached_after, which ignores the end).
-            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(t)}};
+            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(t)}, hint};
             range.max = t;
         }
     }
@@ -4908,9 +5015,10 @@ private:
         // takes a tie as it would have in the scan.
         const auto test = [&](const auto& shape, std::uint32_t k, Interval<T>& r) {
             const bool before = nearest.found && nearest.slot == I && k < nearest.index;
-            const T t = first_crossing(shape, ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r);
+            std::uint32_t hint = 0;
+            const T t = first_crossing(shape, ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
             if (!(t < infinity<T>)) return;
-            nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}};
+            nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}, hint};
             r.max = t;
         };
         for (const std::uint32_t k : index.unbounded) test(objects[k].shape, k, range);
@@ -4929,10 +5037,10 @@ private:
         if constexpr (I + 1 < sizeof...(Slots)) {
             if (nearest.slot != I) return surface_in_slot<I + 1>(ray, nearest);
         }
-        const auto crossings = objects_of(std::get<I>(slots))[nearest.index].shape.crossings(ray, nearest.range);
-        PRISM_ASSERT(!crossings.empty());
-        if (crossings.empty()) return std::nullopt;
-        return Hit<T>{crossings.front(), nearest.slot, nearest.index};
+        const auto crossing = surface_crossing(objects_of(std::get<I>(slots))[nearest.index].shape, ray, nearest.range, nearest.hint);
+        PRISM_ASSERT(crossing.has_value());
+        if (!crossing) return std::nullopt;
+        return Hit<T>{*crossing, nearest.slot, nearest.index};
     }
 
     template <std::size_t I, ShadowsThroughGlass Glass>

@@ -25,13 +25,28 @@ int disagreements(const S& shape, Pcg32& rng, int rays)
         const T first = prism::first_crossing(shape, ray, range);
         wrong += list.empty() ? first != prism::infinity<T> : first != list.front().t;
         wrong += prism::any_crossing(shape, ray, range) == list.empty();
+        // The surface from the hint: the full list's first crossing over the range that
+        // ends just past it (the scene's surface pass), bit for bit.
+        std::uint32_t hint = 0;
+        const T t = prism::first_crossing(shape, ray, range, hint);
+        if (!(t < prism::infinity<T>)) continue;
+        const Interval<T> to_it{range.min, prism::next_float_up(t)};
+        const auto surface = prism::surface_crossing(shape, ray, to_it, hint);
+        const auto full = shape.crossings(ray, to_it);
+        if (!surface || full.empty()) {
+            ++wrong;
+            continue;
+        }
+        const prism::Crossing<T>& lean = *surface;
+        const prism::Crossing<T>& slow = full.front();
+        wrong += lean.t != slow.t || lean.entering != slow.entering || lean.point != slow.point || lean.normal != slow.normal || lean.error != slow.error;
     }
     return wrong;
 }
 
 } // namespace
 
-TEST_CASE_TEMPLATE("the lean first-crossing query gives the full list's first t, for every kind of shape", T, float, double)
+TEST_CASE_TEMPLATE("the lean first-crossing query gives the full list's first t, and its hinted surface the full list's, for every kind of shape", T, float, double)
 {
     Pcg32 rng(8u, 1u);
     const prism::Sphere<T> ball({T(0.3), T(-0.2), T(0.1)}, T(1.2));
@@ -45,6 +60,7 @@ TEST_CASE_TEMPLATE("the lean first-crossing query gives the full list's first t,
     CHECK(disagreements(cut, rng, 100000) == 0);
     const auto b = prism::icosphere<T>({T(0), T(0), T(0)}, T(1), 2);
     const prism::TriangleMesh<T> mesh(b.positions, b.triangles);
+    static_assert(prism::HasHintedSurface<prism::TriangleMesh<T>> && prism::HasHintedSurface<prism::Transformed<prism::TriangleMesh<T>>>);
     CHECK(disagreements(mesh, rng, 100000) == 0);
     CHECK(disagreements(prism::Transformed<prism::TriangleMesh<T>>(mesh, prism::Transform<T>::translate({T(0.5), T(0), T(0)})), rng, 100000) == 0);
 }

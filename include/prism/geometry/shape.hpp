@@ -9,6 +9,8 @@
 
 #include <concepts>
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 
 namespace prism {
 
@@ -73,6 +75,40 @@ template <Shape S>
 {
     if constexpr (HasFirstCrossing<S>) return shape.any_crossing(ray, range);
     else return !shape.template crossings<false>(ray, range).empty();
+}
+
+/// A shape whose lean query names what it found (a mesh: the triangle), so that its
+/// surface there needs no second search: first_crossing(ray, range, hint) is
+/// first_crossing(ray, range) and sets the hint; surface_crossing(ray, range, hint),
+/// over a range that ends just past that t, is crossings(ray, range).front().
+template <class S>
+concept HasHintedSurface = HasFirstCrossing<S> && requires(const S& shape, const Ray<typename S::scalar_type>& ray, Interval<typename S::scalar_type> range,
+                                                           std::uint32_t& hint) {
+    { shape.first_crossing(ray, range, hint) } -> std::same_as<typename S::scalar_type>;
+    { shape.surface_crossing(ray, range, std::uint32_t{}) } -> std::same_as<std::optional<Crossing<typename S::scalar_type>>>;
+};
+
+/// first_crossing, setting `hint` for surface_crossing where the shape gives one.
+template <Shape S>
+[[nodiscard]] constexpr typename S::scalar_type first_crossing(const S& shape, const Ray<typename S::scalar_type>& ray, Interval<typename S::scalar_type> range,
+                                                               std::uint32_t& hint) noexcept
+{
+    if constexpr (HasHintedSurface<S>) return shape.first_crossing(ray, range, hint);
+    else return first_crossing(shape, ray, range);
+}
+
+/// crossings(ray, range).front(), if any: found from the hint where the shape takes one.
+template <Shape S>
+[[nodiscard]] constexpr std::optional<Crossing<typename S::scalar_type>> surface_crossing(const S& shape, const Ray<typename S::scalar_type>& ray,
+                                                                                          Interval<typename S::scalar_type> range, std::uint32_t hint) noexcept
+{
+    if constexpr (HasHintedSurface<S>) {
+        return shape.surface_crossing(ray, range, hint);
+    } else {
+        const auto crossings = shape.crossings(ray, range);
+        if (crossings.empty()) return std::nullopt;
+        return crossings.front();
+    }
 }
 
 } // namespace prism

@@ -53,17 +53,7 @@ public:
         }
         out.count = kept;
         if constexpr (!Surface) return out;
-        for (std::size_t k = 0; k < out.count; ++k) {
-            Crossing<T>& c = out.items[k];
-            // The bound also covers the rounding with which a ray spawned here is carried
-            // back into the shape's coordinates, so that it starts on the side it leaves
-            // by there too (moving its origin forward along the ray, above, does not
-            // cover that for a ray leaving at a grazing angle).
-            const Vec3<T> world = to_world_.point(c.point);
-            c.error = to_world_.point_error(c.point, c.error + to_world_.inverse_point_error(world));
-            c.point = world;
-            c.normal = normalize(to_world_.normal(c.normal));
-        }
+        for (std::size_t k = 0; k < out.count; ++k) to_world(out.items[k]);
         return out;
     }
 
@@ -80,6 +70,30 @@ public:
     [[nodiscard]] bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         return first_crossing(ray, range) < infinity<T>;
+    }
+
+    /// first_crossing, with the shape's hint for surface_crossing (a mesh's triangle).
+    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t& hint) const noexcept
+        requires HasHintedSurface<S>
+    {
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
+        const auto [local, dt] = to_local(ray);
+        const T t = shape_.first_crossing(local, {range.min, next_float_up(next_float_up(range.max - dt))}, hint) + dt;
+        return t < range.max ? t : infinity<T>;
+    }
+
+    /// crossings(ray, range).front(), from the shape's hint.
+    [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t hint) const noexcept
+        requires HasHintedSurface<S>
+    {
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return std::nullopt;
+        const auto [local, dt] = to_local(ray);
+        std::optional<Crossing<T>> c = shape_.surface_crossing(local, {range.min, next_float_up(next_float_up(range.max - dt))}, hint);
+        if (!c) return c;
+        c->t += dt;
+        if (!(c->t < range.max)) return std::nullopt;
+        to_world(*c);
+        return c;
     }
 
 private:
@@ -100,6 +114,19 @@ private:
         if (!is_finite(dt)) dt = T(0);
         local.origin += dt * local.direction;
         return {local, dt};
+    }
+
+    /// A crossing found in the shape's coordinates, carried to the world's.
+    void to_world(Crossing<T>& c) const noexcept
+    {
+        // The bound also covers the rounding with which a ray spawned here is carried
+        // back into the shape's coordinates, so that it starts on the side it leaves by
+        // there too (moving its origin forward along the ray, above, does not cover that
+        // for a ray leaving at a grazing angle).
+        const Vec3<T> world = to_world_.point(c.point);
+        c.error = to_world_.point_error(c.point, c.error + to_world_.inverse_point_error(world));
+        c.point = world;
+        c.normal = normalize(to_world_.normal(c.normal));
     }
 
     /// The box around the eight transformed corners of the shape's box.

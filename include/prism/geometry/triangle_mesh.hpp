@@ -38,6 +38,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -77,16 +78,18 @@ struct TriangleHit {
     bool entering;
 };
 
-/// The watertight test. Hits with t strictly inside `range` (and beyond the bound of
-/// t's own rounding, so never the triangle a ray was spawned from) are returned.
-template <Scalar T>
-[[nodiscard]] inline bool hit_triangle(const ShearedRay<T>& ray, const std::array<Vec3<T>, 3>& corner, Interval<T> range, TriangleHit<T>& out) noexcept
+/// hit_triangle for a ray whose largest direction component is on axis Kz (the
+/// permutation known at compile time).
+template <int Kz, Scalar T>
+[[nodiscard, gnu::always_inline]] inline bool hit_triangle_along(const ShearedRay<T>& ray, const std::array<Vec3<T>, 3>& corner, Interval<T> range,
+                                                                 TriangleHit<T>& out) noexcept
 {
+    constexpr int kx = Kz == 2 ? 0 : Kz + 1, ky = kx == 2 ? 0 : kx + 1;
     // Translate to the ray's origin, permute and shear.
     std::array<Vec3<T>, 3> p;
     for (int i = 0; i < 3; ++i) {
         const Vec3<T> q = corner[std::size_t(i)] - ray.origin;
-        p[std::size_t(i)] = {q[ray.kx] + ray.sx * q[ray.kz], q[ray.ky] + ray.sy * q[ray.kz], q[ray.kz]};
+        p[std::size_t(i)] = {q[kx] + ray.sx * q[Kz], q[ky] + ray.sy * q[Kz], q[Kz]};
     }
     // Plain products: an edge shared by two triangles gets exactly opposite values in
     // them (the subtraction rounds symmetrically), so a ray is inside exactly one of
@@ -124,6 +127,20 @@ template <Scalar T>
     // permutation is cyclic, the shear of determinant 1): it enters where that is < 0.
     out = {t, {e0 * inv_det, e1 * inv_det, e2 * inv_det}, (det < T(0)) != (ray.sz < T(0))};
     return true;
+}
+
+/// The watertight test. Hits with t strictly inside `range` (and beyond the bound of
+/// t's own rounding, so never the triangle a ray was spawned from) are returned.
+template <Scalar T>
+[[nodiscard, gnu::always_inline]] inline bool hit_triangle(const ShearedRay<T>& ray, const std::array<Vec3<T>, 3>& corner, Interval<T> range,
+                                                           TriangleHit<T>& out) noexcept
+{
+    // The same branch for every triangle a ray meets: predicted.
+    switch (ray.kz) {
+    case 0: return hit_triangle_along<0>(ray, corner, range, out);
+    case 1: return hit_triangle_along<1>(ray, corner, range, out);
+    default: return hit_triangle_along<2>(ray, corner, range, out);
+    }
 }
 
 template <Scalar T>
@@ -215,14 +232,39 @@ public:
     /// crossings<false>(ray, range).front().t gives, found by a closest-hit query alone.
     [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
+        std::uint32_t triangle = 0;
+        return first_crossing(ray, range, triangle);
+    }
+
+    /// first_crossing, naming the triangle hit (for surface_crossing).
+    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t& triangle) const noexcept
+    {
         const detail::ShearedRay<T> sheared(ray);
         T nearest = infinity<T>;
         data_->bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t k, Interval<T>& r) {
             detail::TriangleHit<T> h;
-            if (detail::hit_triangle(sheared, data_->corners[k], r, h)) nearest = r.max = h.t;
+            if (detail::hit_triangle(sheared, data_->corners[k], r, h)) nearest = r.max = h.t, triangle = k;
             return false;
         });
         return nearest;
+    }
+
+    /// crossings(ray, range).front(), from the triangle first_crossing named: a hit
+    /// inside it (off its edges) is the only one at its t, but where two triangles not
+    /// sharing an edge meet the ray at the same float t (a self-intersecting mesh).
+    /// A hit on an edge takes the search.
+    [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t triangle) const noexcept
+    {
+        detail::TriangleHit<T> h;
+        if (triangle < data_->corners.size() && detail::hit_triangle(detail::ShearedRay<T>(ray), data_->corners[triangle], range, h) && h.b[0] > T(0) &&
+            h.b[1] > T(0) && h.b[2] > T(0)) {
+            Crossings<T, N> one;
+            push<true>(one, {h.t, triangle, h.b, h.entering}, h.entering);
+            return one.front();
+        }
+        const auto all = crossings(ray, range);
+        if (all.empty()) return std::nullopt;
+        return all.front();
     }
 
     /// Whether any crossing lies strictly inside `range` (a shadow ray's query).

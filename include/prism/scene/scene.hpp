@@ -273,6 +273,7 @@ private:
         bool found = false;
         std::uint32_t slot = 0, index = 0;
         Interval<T> range{};
+        std::uint32_t hint = 0; ///< the shape's own (a mesh's triangle), for surface_crossing
     };
 
     template <class S>
@@ -316,13 +317,14 @@ private:
         const auto objects = objects_of(std::get<I>(slots));
         for (std::size_t k = 0; k < objects.size(); ++k) {
             if (!worth_testing(objects[k], near_cluster)) continue;
-            const T t = first_crossing(objects[k].shape, ray, range);
+            std::uint32_t hint = 0;
+            const T t = first_crossing(objects[k].shape, ray, range, hint);
             if (!(t < infinity<T>)) continue;
             // Ending the range just past the crossing keeps every crossing before it, and
             // so the same first one, while the surface pass refines nothing beyond it:
             // no shape's answer up to a t depends on where its range ends (shapes cull by
             // Aabb::reached_after, which ignores the end).
-            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(t)}};
+            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(t)}, hint};
             range.max = t;
         }
     }
@@ -340,9 +342,10 @@ private:
         // takes a tie as it would have in the scan.
         const auto test = [&](const auto& shape, std::uint32_t k, Interval<T>& r) {
             const bool before = nearest.found && nearest.slot == I && k < nearest.index;
-            const T t = first_crossing(shape, ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r);
+            std::uint32_t hint = 0;
+            const T t = first_crossing(shape, ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
             if (!(t < infinity<T>)) return;
-            nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}};
+            nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}, hint};
             r.max = t;
         };
         for (const std::uint32_t k : index.unbounded) test(objects[k].shape, k, range);
@@ -361,10 +364,10 @@ private:
         if constexpr (I + 1 < sizeof...(Slots)) {
             if (nearest.slot != I) return surface_in_slot<I + 1>(ray, nearest);
         }
-        const auto crossings = objects_of(std::get<I>(slots))[nearest.index].shape.crossings(ray, nearest.range);
-        PRISM_ASSERT(!crossings.empty());
-        if (crossings.empty()) return std::nullopt;
-        return Hit<T>{crossings.front(), nearest.slot, nearest.index};
+        const auto crossing = surface_crossing(objects_of(std::get<I>(slots))[nearest.index].shape, ray, nearest.range, nearest.hint);
+        PRISM_ASSERT(crossing.has_value());
+        if (!crossing) return std::nullopt;
+        return Hit<T>{*crossing, nearest.slot, nearest.index};
     }
 
     template <std::size_t I, ShadowsThroughGlass Glass>
