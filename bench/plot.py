@@ -181,6 +181,46 @@ def kdtree_chart(rows):
     save(fig, "kdtree.png")
 
 
+def embree_chart(rows):
+    """Mrays/s of prism and Embree 3 against object count (spheres), and their ratio for
+    every geometry, from the minimum times of interleaved rounds."""
+    fig, axes = plt.subplots(1, 2, figsize=(13, 4.2))
+    ax = axes[0]
+    for kind, style in (("primary", "-"), ("bounce", "--")):
+        sel = [r for r in rows if r["geometry"] == "spheres" and r["rays"] == kind and r["threads"] == "1"]
+        n = [int(r["count"]) for r in sel]
+        ax.plot(n, [float(r["prism_mrays_min"]) for r in sel], "o" + style, color="C0", label=f"prism, {kind} rays")
+        ax.plot(n, [float(r["embree_mrays_min"]) for r in sel], "s" + style, color="C1", label=f"Embree 3, {kind} rays")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("spheres")
+    ax.set_ylabel("million rays per second (1 thread)")
+    ax.set_title("closest hit among N spheres")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    ax = axes[1]
+    labels, ratios = [], {}
+    for r in rows:
+        count = int(r["count"])
+        label = f"{count:.0e} spheres".replace("e+0", "e") if r["geometry"] == "spheres" else f"{r['geometry']}, {count / 1000:.0f}k triangles"
+        if label not in labels:
+            labels.append(label)
+        key = (r["rays"], r["threads"])
+        ratios.setdefault(key, {})[label] = float(r["prism_mrays_min"]) / float(r["embree_mrays_min"])
+    width = 0.2
+    for i, (key, values) in enumerate(sorted(ratios.items())):
+        xs = [j + (i - 1.5) * width for j in range(len(labels))]
+        ax.bar(xs, [values.get(label, 0) for label in labels], width, label=f"{key[0]} rays, {key[1]} thread{'s' if key[1] != '1' else ''}")
+    ax.axhline(1.0, color="k", lw=0.8)
+    ax.axhline(0.67, color="gray", lw=0.8, ls=":")
+    ax.set_xticks(range(len(labels)))
+    ax.set_xticklabels(labels, rotation=30, ha="right", fontsize=8)
+    ax.set_ylabel("prism rays/s ÷ Embree rays/s")
+    ax.set_title("ratio (1.0: as fast as Embree; dotted: 0.67)")
+    ax.legend(fontsize=7)
+    save(fig, "bvh_vs_embree.png")
+
+
 def photon_chart(rows):
     """Error against time: prism's estimators and POV-Ray, both against prism's reference
     (left) and each against its own (right)."""
@@ -370,6 +410,8 @@ def main():
         composition_chart(rows)
     if (rows := read("kdtree.csv")):
         kdtree_chart(rows)
+    if (rows := read("bvh_vs_embree.csv")):
+        embree_chart(rows)
     if (rows := read("photon_accuracy.csv")):
         photon_chart(rows)
     if (rows := read("photon_leaks.csv")):
