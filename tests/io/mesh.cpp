@@ -3,6 +3,8 @@
 
 #include "../support.hpp"
 
+#include <bit>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -53,4 +55,89 @@ TEST_CASE("polygons are split into triangles, and a broken file is refused with 
     CHECK_THROWS_AS((void)prism::load_obj<float>(past), std::runtime_error);
     for (const auto& p : {empty, past}) fs::remove(p);
     fs::remove(fs::temp_directory_path() / ("prism-mesh-test-" + std::to_string(::getpid()) + "-quad.obj"));
+}
+
+namespace {
+
+/// Appends v as `Size` bytes of the given byte order.
+template <class V>
+void put(std::string& out, V v, bool big)
+{
+    char bytes[sizeof(V)];
+    std::memcpy(bytes, &v, sizeof(V));
+    if (big == (std::endian::native == std::endian::little)) std::reverse(bytes, bytes + sizeof(V));
+    out.append(bytes, sizeof(V));
+}
+
+/// The bunny as a PLY file, written here (not by prism): with extra vertex properties
+/// (a normal, a colour), an extra element, and faces whose lists are uchar + int.
+std::string bunny_ply(const prism::MeshBuffers<float>& b, const std::string& format)
+{
+    std::string text = "ply\nformat " + format + " 1.0\ncomment from tests/io/mesh.cpp\nelement vertex " + std::to_string(b.positions.size()) +
+                       "\nproperty float x\nproperty float nx\nproperty float y\nproperty float z\nproperty uchar red\nelement face " +
+                       std::to_string(b.triangles.size()) + "\nproperty list uchar int vertex_indices\nproperty ushort flags\nelement edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n";
+    const bool ascii = format == "ascii", big = format == "binary_big_endian";
+    for (const auto& p : b.positions) {
+        if (ascii) {
+            char line[200];
+            std::snprintf(line, sizeof line, "%.9g 0.5 %.9g %.9g 200\n", double(p.x), double(p.y), double(p.z));
+            text += line;
+        } else {
+            put(text, p.x, big), put(text, 0.5f, big), put(text, p.y, big), put(text, p.z, big), put(text, std::uint8_t(200), big);
+        }
+    }
+    for (const auto& f : b.triangles) {
+        if (ascii) text += "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) + " 7\n";
+        else put(text, std::uint8_t(3), big), put(text, std::int32_t(f[0]), big), put(text, std::int32_t(f[1]), big), put(text, std::int32_t(f[2]), big),
+            put(text, std::uint16_t(7), big);
+    }
+    if (ascii) text += "0 1\n";
+    else put(text, std::int32_t(0), big), put(text, std::int32_t(1), big);
+    return text;
+}
+
+} // namespace
+
+TEST_CASE("a PLY file in ASCII and in binary of either byte order holds the OBJ's bunny")
+{
+    const auto obj = prism::load_obj<float>(fs::path(PRISM_TEST_ASSETS) / "bunny.obj");
+    for (const std::string format : {"ascii", "binary_little_endian", "binary_big_endian"}) {
+        CAPTURE(format);
+        const fs::path path = write_file("bunny-" + format + ".ply", bunny_ply(obj, format));
+        const auto ply = prism::load_mesh<float>(path);
+        REQUIRE(ply.positions.size() == obj.positions.size());
+        REQUIRE(ply.triangles.size() == obj.triangles.size());
+        CHECK(ply.positions == obj.positions);
+        CHECK(ply.triangles == obj.triangles);
+        fs::remove(path);
+    }
+    // A quad and a pentagon: fans of 2 and 3 triangles.
+    const fs::path poly = write_file("poly.ply", "ply\nformat ascii 1.0\nelement vertex 5\nproperty double x\nproperty double y\nproperty double z\n"
+                                                 "element face 2\nproperty list uchar uint vertex_index\nend_header\n"
+                                                 "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 1.5 0\n4 0 1 2 3\n5 0 1 2 4 3\n");
+    const auto shapes = prism::load_ply<double>(poly);
+    CHECK(shapes.triangles.size() == 5);
+    CHECK(shapes.triangles[1] == prism::TriangleIndices{0, 2, 3});
+    fs::remove(poly);
+}
+
+TEST_CASE("a broken PLY file is refused with its path and the reason")
+{
+    const auto refused = [](const std::string& name, const std::string& text, const char* reason) {
+        const fs::path path = write_file(name, text);
+        CHECK_THROWS_WITH_AS((void)prism::load_mesh<float>(path), doctest::Contains(reason), std::runtime_error);
+        fs::remove(path);
+    };
+    const std::string head = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                             "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    refused("magic.ply", "plx\n", "does not start with 'ply'");
+    refused("format.ply", "ply\nformat binary_middle_endian 1.0\nend_header\n", "binary_middle_endian");
+    refused("unended.ply", "ply\nformat ascii 1.0\nelement vertex 3\n", "no end_header");
+    refused("type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\nend_header\n", "a type PLY does not define");
+    refused("noz.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n", "lacks an x, y or z");
+    refused("short.ply", head + std::string(20, '\0'), "ends early");
+    refused("past.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
+                        "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n", "refers to vertex 5");
+    refused("word.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 zero 0\n", "not a number");
+    refused("mesh.stl", "solid\n", "neither .obj nor .ply");
 }
