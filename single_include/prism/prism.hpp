@@ -680,7 +680,6 @@ struct SlabRay {
     /// face lo - pad is at (lo - (o + pad)) / d from the origin.
     Vec3<T> near_origin, far_origin;
     std::array<bool, 3> negative{}; ///< the ray runs toward -axis: it meets hi first
-    T pad = 0;
 
     /// `magnitude`: the largest coordinate magnitude of every box to be tested.
     constexpr SlabRay(const Ray<T>& ray, T magnitude) noexcept
@@ -689,7 +688,7 @@ struct SlabRay {
         // half size, as max components), which is at most gamma(16) (|o| + 2 magnitude).
         // gamma(20) covers that and the rounding of o +- pad (two ulps of |o| or |lo|),
         // so that every box is at least as wide here as there.
-        pad = gamma<T>(20) * (max_component(prism::abs(ray.origin)) + T(2) * magnitude) + std::numeric_limits<T>::min();
+        const T pad = gamma<T>(20) * (max_component(prism::abs(ray.origin)) + T(2) * magnitude) + std::numeric_limits<T>::min();
         constexpr T largest = std::numeric_limits<T>::max();
         for (int axis = 0; axis < 3; ++axis) {
             const T d = ray.direction[axis];
@@ -2490,9 +2489,7 @@ public:
         detail::TriangleHit<T> h;
         if (triangle < data_->corners.size() && detail::hit_triangle(detail::ShearedRay<T>(ray), data_->corners[triangle], range, h) && h.b[0] > T(0) &&
             h.b[1] > T(0) && h.b[2] > T(0)) {
-            Crossings<T, N> one;
-            push<true>(one, {h.t, triangle, h.b, h.entering}, h.entering);
-            return one.front();
+            return surface_at({h.t, triangle, h.b, h.entering}, h.entering);
         }
         const auto all = crossings(ray, range);
         if (all.empty()) return std::nullopt;
@@ -2612,20 +2609,23 @@ private:
     template <bool Surface>
     void push(Crossings<T, N>& out, const Hit& h, bool entering) const noexcept
     {
-        if constexpr (!Surface) {
-            out.push_back(Crossing<T>::without_surface(h.t, entering));
-        } else {
-            const auto& c = data_->corners[h.triangle];
-            // The point from the barycentric weights, exact to the triangle's own scale
-            // (pbrt-v4: an error of gamma(7) of the weighted corners).
-            const Vec3<T> a = h.b[0] * c[0], b = h.b[1] * c[1], d = h.b[2] * c[2];
-            const Vec3<T> point = a + b + d;
-            const Vec3<T> error = gamma<T>(7) * (prism::abs(a) + prism::abs(b) + prism::abs(d));
-            // The outward normal as the triangle winds (non-zero: a degenerate triangle
-            // is never hit).
-            const Vec3<T> normal = normalize(cross(c[1] - c[0], c[2] - c[0]));
-            out.push_back({h.t, point, error, normal, entering});
-        }
+        if constexpr (!Surface) out.push_back(Crossing<T>::without_surface(h.t, entering));
+        else out.push_back(surface_at(h, entering));
+    }
+
+    /// The crossing at a hit, with its surface.
+    [[nodiscard]] Crossing<T> surface_at(const Hit& h, bool entering) const noexcept
+    {
+        const auto& c = data_->corners[h.triangle];
+        // The point from the barycentric weights, exact to the triangle's own scale
+        // (pbrt-v4: an error of gamma(7) of the weighted corners).
+        const Vec3<T> a = h.b[0] * c[0], b = h.b[1] * c[1], d = h.b[2] * c[2];
+        const Vec3<T> point = a + b + d;
+        const Vec3<T> error = gamma<T>(7) * (prism::abs(a) + prism::abs(b) + prism::abs(d));
+        // The outward normal as the triangle winds (non-zero: a degenerate triangle is
+        // never hit).
+        const Vec3<T> normal = normalize(cross(c[1] - c[0], c[2] - c[0]));
+        return {h.t, point, error, normal, entering};
     }
 
     [[nodiscard]] static bool is_closed(std::span<const TriangleIndices> triangles)
@@ -3400,6 +3400,8 @@ static_assert(Shape<Sphere<double>>);
 // Transformed: any shape moved by an affine transform (rotate, scale, translate, shear).
 
 
+#include <cstdint>
+#include <optional>
 #include <utility>
 
 namespace prism {
@@ -3456,10 +3458,8 @@ public:
     /// query, when it has one, in its coordinates.
     [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
-        const auto [local, dt] = to_local(ray);
-        const T t = prism::first_crossing(shape_, local, {range.min, next_float_up(next_float_up(range.max - dt))}) + dt;
-        return t < range.max ? t : infinity<T>;
+        std::uint32_t unused = 0;
+        return first_crossing_with(ray, range, unused);
     }
 
     [[nodiscard]] bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
@@ -3471,10 +3471,7 @@ public:
     [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t& hint) const noexcept
         requires HasHintedSurface<S>
     {
-        if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
-        const auto [local, dt] = to_local(ray);
-        const T t = shape_.first_crossing(local, {range.min, next_float_up(next_float_up(range.max - dt))}, hint) + dt;
-        return t < range.max ? t : infinity<T>;
+        return first_crossing_with(ray, range, hint);
     }
 
     /// crossings(ray, range).front(), from the shape's hint.
@@ -3492,6 +3489,15 @@ public:
     }
 
 private:
+    /// The shape's first crossing (and its hint, where it gives one), in world t.
+    [[nodiscard]] T first_crossing_with(const Ray<T>& ray, Interval<T> range, std::uint32_t& hint) const noexcept
+    {
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
+        const auto [local, dt] = to_local(ray);
+        const T t = prism::first_crossing(shape_, local, {range.min, next_float_up(next_float_up(range.max - dt))}, hint) + dt;
+        return t < range.max ? t : infinity<T>;
+    }
+
     struct LocalRay {
         Ray<T> ray;
         T dt; ///< local t + dt = world t

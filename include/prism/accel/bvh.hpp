@@ -66,7 +66,6 @@ struct SlabRay {
     /// face lo - pad is at (lo - (o + pad)) / d from the origin.
     Vec3<T> near_origin, far_origin;
     std::array<bool, 3> negative{}; ///< the ray runs toward -axis: it meets hi first
-    T pad = 0;
 
     /// `magnitude`: the largest coordinate magnitude of every box to be tested.
     constexpr SlabRay(const Ray<T>& ray, T magnitude) noexcept
@@ -75,7 +74,7 @@ struct SlabRay {
         // half size, as max components), which is at most gamma(16) (|o| + 2 magnitude).
         // gamma(20) covers that and the rounding of o +- pad (two ulps of |o| or |lo|),
         // so that every box is at least as wide here as there.
-        pad = gamma<T>(20) * (max_component(prism::abs(ray.origin)) + T(2) * magnitude) + std::numeric_limits<T>::min();
+        const T pad = gamma<T>(20) * (max_component(prism::abs(ray.origin)) + T(2) * magnitude) + std::numeric_limits<T>::min();
         constexpr T largest = std::numeric_limits<T>::max();
         for (int axis = 0; axis < 3; ++axis) {
             const T d = ray.direction[axis];

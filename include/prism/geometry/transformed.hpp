@@ -5,6 +5,8 @@
 #include <prism/core/transform.hpp>
 #include <prism/geometry/shape.hpp>
 
+#include <cstdint>
+#include <optional>
 #include <utility>
 
 namespace prism {
@@ -61,10 +63,8 @@ public:
     /// query, when it has one, in its coordinates.
     [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
-        const auto [local, dt] = to_local(ray);
-        const T t = prism::first_crossing(shape_, local, {range.min, next_float_up(next_float_up(range.max - dt))}) + dt;
-        return t < range.max ? t : infinity<T>;
+        std::uint32_t unused = 0;
+        return first_crossing_with(ray, range, unused);
     }
 
     [[nodiscard]] bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
@@ -76,10 +76,7 @@ public:
     [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t& hint) const noexcept
         requires HasHintedSurface<S>
     {
-        if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
-        const auto [local, dt] = to_local(ray);
-        const T t = shape_.first_crossing(local, {range.min, next_float_up(next_float_up(range.max - dt))}, hint) + dt;
-        return t < range.max ? t : infinity<T>;
+        return first_crossing_with(ray, range, hint);
     }
 
     /// crossings(ray, range).front(), from the shape's hint.
@@ -97,6 +94,15 @@ public:
     }
 
 private:
+    /// The shape's first crossing (and its hint, where it gives one), in world t.
+    [[nodiscard]] T first_crossing_with(const Ray<T>& ray, Interval<T> range, std::uint32_t& hint) const noexcept
+    {
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
+        const auto [local, dt] = to_local(ray);
+        const T t = prism::first_crossing(shape_, local, {range.min, next_float_up(next_float_up(range.max - dt))}, hint) + dt;
+        return t < range.max ? t : infinity<T>;
+    }
+
     struct LocalRay {
         Ray<T> ray;
         T dt; ///< local t + dt = world t

@@ -258,9 +258,7 @@ public:
         detail::TriangleHit<T> h;
         if (triangle < data_->corners.size() && detail::hit_triangle(detail::ShearedRay<T>(ray), data_->corners[triangle], range, h) && h.b[0] > T(0) &&
             h.b[1] > T(0) && h.b[2] > T(0)) {
-            Crossings<T, N> one;
-            push<true>(one, {h.t, triangle, h.b, h.entering}, h.entering);
-            return one.front();
+            return surface_at({h.t, triangle, h.b, h.entering}, h.entering);
         }
         const auto all = crossings(ray, range);
         if (all.empty()) return std::nullopt;
@@ -380,20 +378,23 @@ private:
     template <bool Surface>
     void push(Crossings<T, N>& out, const Hit& h, bool entering) const noexcept
     {
-        if constexpr (!Surface) {
-            out.push_back(Crossing<T>::without_surface(h.t, entering));
-        } else {
-            const auto& c = data_->corners[h.triangle];
-            // The point from the barycentric weights, exact to the triangle's own scale
-            // (pbrt-v4: an error of gamma(7) of the weighted corners).
-            const Vec3<T> a = h.b[0] * c[0], b = h.b[1] * c[1], d = h.b[2] * c[2];
-            const Vec3<T> point = a + b + d;
-            const Vec3<T> error = gamma<T>(7) * (prism::abs(a) + prism::abs(b) + prism::abs(d));
-            // The outward normal as the triangle winds (non-zero: a degenerate triangle
-            // is never hit).
-            const Vec3<T> normal = normalize(cross(c[1] - c[0], c[2] - c[0]));
-            out.push_back({h.t, point, error, normal, entering});
-        }
+        if constexpr (!Surface) out.push_back(Crossing<T>::without_surface(h.t, entering));
+        else out.push_back(surface_at(h, entering));
+    }
+
+    /// The crossing at a hit, with its surface.
+    [[nodiscard]] Crossing<T> surface_at(const Hit& h, bool entering) const noexcept
+    {
+        const auto& c = data_->corners[h.triangle];
+        // The point from the barycentric weights, exact to the triangle's own scale
+        // (pbrt-v4: an error of gamma(7) of the weighted corners).
+        const Vec3<T> a = h.b[0] * c[0], b = h.b[1] * c[1], d = h.b[2] * c[2];
+        const Vec3<T> point = a + b + d;
+        const Vec3<T> error = gamma<T>(7) * (prism::abs(a) + prism::abs(b) + prism::abs(d));
+        // The outward normal as the triangle winds (non-zero: a degenerate triangle is
+        // never hit).
+        const Vec3<T> normal = normalize(cross(c[1] - c[0], c[2] - c[0]));
+        return {h.t, point, error, normal, entering};
     }
 
     [[nodiscard]] static bool is_closed(std::span<const TriangleIndices> triangles)
