@@ -38,25 +38,32 @@ prism::Vec3<T> random_hemisphere(prism::Pcg32& rng, const prism::Vec3<T>& n)
 
 namespace test {
 
-/// pbrt-v4's TestReintersectConvex, for any convex shape: `count` times, make(rng)
-/// returns a shape and a point inside it; a ray from a random point 5 units from there
-/// hits it, and a ray leaving the hit point to the side it came from (the outside of a
-/// convex solid) must never cross the shape again. Returns the number of self-hits.
-template <class Make>
-int reintersections(prism::Pcg32& rng, int count, Make&& make)
+/// One try of pbrt-v4's TestReintersectConvex, for any convex shape with a point inside
+/// it: a ray from a random point 5 units from there hits it, and a ray leaving the hit
+/// point to the side it came from (the outside of a convex solid) must never cross the
+/// shape again. Whether it does.
+template <class S, prism::Scalar T>
+bool reintersects(prism::Pcg32& rng, const S& shape, const prism::Vec3<T>& inside)
 {
-    using Placed = decltype(make(rng));
-    using T = typename decltype(Placed::first)::scalar_type;
+    const prism::Vec3<T> eye = inside + random_direction<T>(rng) * T(5);
+    const auto crossings = shape.crossings({eye, prism::normalize(inside - eye)}, {T(0), prism::infinity<T>});
+    if (crossings.empty()) return false;
+    const prism::Crossing<T>& hit = crossings.front();
+    const prism::Vec3<T> w = random_hemisphere<T>(rng, hit.facing_normal());
+    const prism::Ray<T> leaving = prism::spawn_ray(hit.point, hit.error, hit.normal, w);
+    return !shape.crossings(leaving, {T(0), prism::infinity<T>}).empty();
+}
+
+/// reintersects, `count` times: make(rng) returns a shape and a point inside it, and
+/// `rays_per_shape` tries go to each (more for shapes slow to build, as meshes).
+/// Returns the number of self-hits.
+template <class Make>
+int reintersections(prism::Pcg32& rng, int count, Make&& make, int rays_per_shape = 1)
+{
     int self_hits = 0;
     for (int i = 0; i < count; ++i) {
         const auto [shape, inside] = make(rng);
-        const prism::Vec3<T> eye = inside + random_direction<T>(rng) * T(5);
-        const auto crossings = shape.crossings({eye, prism::normalize(inside - eye)}, {T(0), prism::infinity<T>});
-        if (crossings.empty()) continue;
-        const prism::Crossing<T>& hit = crossings.front();
-        const prism::Vec3<T> w = random_hemisphere<T>(rng, hit.facing_normal());
-        const prism::Ray<T> leaving = prism::spawn_ray(hit.point, hit.error, hit.normal, w);
-        self_hits += !shape.crossings(leaving, {T(0), prism::infinity<T>}).empty();
+        for (int j = 0; j < rays_per_shape; ++j) self_hits += reintersects(rng, shape, inside);
     }
     return self_hits;
 }

@@ -6,6 +6,8 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <vector>
 
@@ -148,6 +150,43 @@ TEST_CASE_TEMPLATE("the node test keeps every box Aabb::may_cross keeps, and lit
     CHECK(extra < crossed / 50);
 }
 
+TEST_CASE_TEMPLATE("the four-lane node test is the one-box test in every lane, bit for bit", T, float, double)
+{
+    // SlabLanes (SIMD, what a traversal runs) and SlabRay's four-lane loop (what a
+    // constant evaluation runs) against SlabRay::may_cross, one box at a time; unused
+    // lanes (empty boxes) are never crossed.
+    Pcg32 rng(2u, 8u);
+    int mismatches = 0, crossed = 0;
+    for (int i = 0; i < 50000; ++i) {
+        const T scale = i % 4 == 3 ? T(1e5) : T(10);
+        BvhNode<T> node;
+        T magnitude = 0;
+        const int used = 1 + i % 4;
+        for (int c = 0; c < 4; ++c) {
+            const Ball<T> ball{(Vec3<T>{rng.uniform<T>(), rng.uniform<T>(), rng.uniform<T>()} - Vec3<T>(T(0.5))) * scale, T(0.01) + rng.uniform<T>() * scale / 4};
+            const Aabb<T> box = c < used ? ball.box() : Aabb<T>{};
+            node.set(c, box, 0, 0);
+            if (c < used) magnitude = std::max({magnitude, max_component(abs(box.lo)), max_component(abs(box.hi))});
+        }
+        Ray<T> ray = random_ray<T>(rng, scale, i);
+        if (i % 8 == 6) ray.direction = -ray.direction;
+        const Interval<T> range{i % 5 == 0 ? T(0) : scale * rng.uniform<T>(), i % 3 == 0 ? infinity<T> : T(2) * scale * rng.uniform<T>()};
+        const detail::SlabRay<T> slab(ray, magnitude);
+        std::array<T, 4> near{};
+        const unsigned hits = detail::SlabLanes<T>(slab).may_cross(node, range, near);
+        std::array<T, 4> near_scalar{};
+        mismatches += slab.may_cross(node, range, near_scalar) != hits;
+        for (int c = 0; c < 4; ++c) {
+            const Interval<T> one = slab.may_cross(node.box(c), range);
+            const bool hit = (hits >> c) & 1u;
+            mismatches += hit != !one.empty() || (hit && std::bit_cast<std::array<unsigned char, sizeof(T)>>(near[std::size_t(c)]) != std::bit_cast<std::array<unsigned char, sizeof(T)>>(one.min)) || (hit && c >= used);
+            crossed += hit;
+        }
+    }
+    CHECK(mismatches == 0);
+    CHECK(crossed > 3000);
+}
+
 TEST_CASE_TEMPLATE("the nearest hit through the Bvh is brute force's, same ball and same t, for every ray", T, float, double)
 {
     Pcg32 rng(5u, 9u);
@@ -201,23 +240,42 @@ TEST_CASE("the tree's shape: every primitive once, children inside their parent,
         const auto balls = random_balls<float>(5000, rng, 10.0f, 0.1f);
         const auto boxes = boxes_of(balls);
         const Bvh<float> bvh(boxes, {.max_leaf_size = leaf});
-        std::vector<int> seen(balls.size(), 0);
-        bool inside = true, small = true;
+        std::vector<int> seen(balls.size(), 0), parents(bvh.nodes().size(), 0);
+        bool inside = true, small = true, packed = true;
         for (const auto& node : bvh.nodes()) {
-            if (node.leaf()) {
-                small = small && node.count <= std::uint32_t(leaf);
-                for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
-                    const std::uint32_t p = bvh.primitives()[k];
-                    ++seen[p];
-                    inside = inside && holds(node.box, boxes[p]);
+            int used = 0;
+            for (int c = 0; c < 4; ++c) {
+                if (!node.used(c)) {
+                    packed = packed && node.count[std::size_t(c)] == 0;
+                    continue;
                 }
-            } else
-                for (const std::uint32_t c : {node.first, node.first + 1}) inside = inside && holds(node.box, bvh.nodes()[c].box);
+                ++used;
+                if (node.leaf(c)) {
+                    small = small && node.count[std::size_t(c)] <= std::uint32_t(leaf);
+                    for (std::uint32_t k = node.first[std::size_t(c)]; k < node.first[std::size_t(c)] + node.count[std::size_t(c)]; ++k) {
+                        const std::uint32_t p = bvh.primitives()[k];
+                        ++seen[p];
+                        inside = inside && holds(node.box(c), boxes[p]);
+                    }
+                } else {
+                    const auto& child = bvh.nodes()[node.first[std::size_t(c)]];
+                    ++parents[node.first[std::size_t(c)]];
+                    for (int g = 0; g < 4; ++g)
+                        if (child.used(g)) inside = inside && holds(node.box(c), child.box(g));
+                }
+            }
+            // Four children, but where the binary tree ran out of nodes to split.
+            packed = packed && used >= 2;
         }
         CHECK(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
+        CHECK(parents[0] == 0);
+        CHECK(std::all_of(parents.begin() + 1, parents.end(), [](int p) { return p == 1; }));
         CHECK(inside);
         CHECK(small);
-        CHECK(bvh.nodes().size() <= 2 * balls.size() - 1);
+        CHECK(packed);
+        // A binary tree has n - 1 inner nodes at most; a 4-wide one about a third of that.
+        CHECK(bvh.nodes().size() <= balls.size() / 2);
+        CHECK(bvh.bounds().lo == boxes_of(balls)[0].merged(bvh.bounds()).lo);
     }
 }
 

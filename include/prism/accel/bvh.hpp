@@ -7,20 +7,23 @@
 //     C = C_trav + C_isect (A_left n_left + A_right n_right) / A_node
 // and the cheapest split is taken, unless a leaf of n primitives (C_isect n) is cheaper
 // and holds no more than max_leaf_size. Primitives whose centroids coincide are split by
-// count. Below depth 48 only count splits are made, so no tree is deeper than 48 + 32
-// levels and traversal needs a fixed stack. The two children of a node are adjacent in
-// the array, so a node stores its box, the index of its first child or primitive, and a
-// primitive count (0 for an inner node): 32 bytes in float.
+// count. Below depth 48 only count splits are made, so no binary tree is deeper than
+// 48 + 32 levels and traversal needs a fixed stack. The binary tree is then collapsed
+// into a 4-wide one (as Embree's BVH4): each node takes its children's children, the
+// largest first, until it has four, so a ray tests four boxes at once, side by side in
+// memory (128 bytes a node in float), with one SIMD instruction per step, and meets
+// half as many levels.
 //
 // Traversal visits children nearest first and never misses a primitive whose box the
 // ray may cross (Aabb::may_cross: the box widened by gamma(16) of the ray origin's
 // distance, the far slab by 2 gamma(3)). Every box is widened by one pad per ray that
 // is at least as wide as that for any box of the tree (from the root box's largest
 // coordinate), so a node's widened box holds each widened box inside it, and the test
-// per node is a plain slab test (Ize 2013). So a scene that accelerates its linear
-// scan with a Bvh tests every object that scan would have tested, and finds the same
-// hit. The query is the caller's: visit(primitive, range) may shrink range.max
-// (closest hit) or return true to stop (any hit). Queries allocate nothing.
+// per node is a plain slab test (Ize 2013), the same arithmetic in each lane as in
+// SlabRay::may_cross. So a scene that accelerates its linear scan with a Bvh tests
+// every object that scan would have tested, and finds the same hit. The query is the
+// caller's: visit(primitive, range) may shrink range.max (closest hit) or return true
+// to stop (any hit). Queries allocate nothing.
 #pragma once
 
 #include <prism/core/aabb.hpp>
@@ -45,13 +48,34 @@ struct BvhConfig {
     float traversal_cost = 1;   ///< C_trav, relative to one primitive test
 };
 
+/// A node of the 4-wide tree: up to four children, each a node or a leaf, their boxes
+/// side by side (lane c of bounds[axis] is child c's lo[axis], of bounds[3 + axis] its
+/// hi[axis]). An unused lane holds the empty box (lo +inf, hi -inf), which every ray
+/// misses, and count 0.
 template <Scalar T>
-struct BvhNode {
-    Aabb<T> box;
-    std::uint32_t first = 0; ///< first child (inner node) or first primitive (leaf)
-    std::uint32_t count = 0; ///< primitives in a leaf; 0 for an inner node
+struct alignas(64) BvhNode {
+    static constexpr int width = 4;
+    std::array<std::array<T, width>, 6> bounds{};
+    std::array<std::uint32_t, width> first{}; ///< child node, or a leaf's first primitive
+    std::array<std::uint32_t, width> count{}; ///< a leaf's primitives; 0 for a node (or unused)
 
-    [[nodiscard]] constexpr bool leaf() const noexcept { return count != 0; }
+    [[nodiscard]] constexpr bool leaf(int lane) const noexcept { return count[std::size_t(lane)] != 0; }
+    [[nodiscard]] constexpr bool used(int lane) const noexcept { return bounds[0][std::size_t(lane)] <= bounds[3][std::size_t(lane)]; }
+    [[nodiscard]] constexpr Aabb<T> box(int lane) const noexcept
+    {
+        const auto c = std::size_t(lane);
+        return {{bounds[0][c], bounds[1][c], bounds[2][c]}, {bounds[3][c], bounds[4][c], bounds[5][c]}};
+    }
+    constexpr void set(int lane, const Aabb<T>& box, std::uint32_t first_, std::uint32_t count_) noexcept
+    {
+        const auto c = std::size_t(lane);
+        for (int axis = 0; axis < 3; ++axis) {
+            bounds[std::size_t(axis)][c] = box.lo[axis];
+            bounds[std::size_t(axis + 3)][c] = box.hi[axis];
+        }
+        first[c] = first_;
+        count[c] = count_;
+    }
 };
 
 namespace detail {
@@ -110,6 +134,66 @@ struct SlabRay {
         }
         return range.min <= range.max ? range : Interval<T>{};
     }
+
+    /// may_cross for the four children of a node at once: a bit per child the ray may
+    /// cross, and in `near` where its part of the range begins (for compile time; at run
+    /// time SlabLanes does the same in SIMD).
+    [[nodiscard]] constexpr unsigned may_cross(const BvhNode<T>& node, Interval<T> range, std::array<T, 4>& near) const noexcept
+    {
+        unsigned hits = 0;
+        for (int lane = 0; lane < 4; ++lane) {
+            const Interval<T> r = may_cross(node.box(lane), range);
+            near[std::size_t(lane)] = r.min;
+            hits |= r.empty() ? 0u : 1u << lane;
+        }
+        return hits;
+    }
+};
+
+/// SlabRay's four-child test in SIMD (GCC's vector extensions, which clang shares):
+/// the same arithmetic in each lane as SlabRay::may_cross, with the ray's values
+/// broadcast and the faces it meets first chosen once per ray.
+template <Scalar T>
+struct SlabLanes {
+    typedef T Lanes __attribute__((vector_size(4 * sizeof(T))));
+    Lanes near_origin[3], far_origin[3], inverse[3];
+    std::size_t near_face[3], far_face[3]; ///< rows of BvhNode::bounds
+
+    explicit SlabLanes(const SlabRay<T>& slab) noexcept
+    {
+        for (int axis = 0; axis < 3; ++axis) {
+            near_origin[axis] = Lanes{} + slab.near_origin[axis];
+            far_origin[axis] = Lanes{} + slab.far_origin[axis];
+            inverse[axis] = Lanes{} + slab.inverse[axis];
+            const std::size_t n = slab.negative[std::size_t(axis)];
+            near_face[axis] = std::size_t(axis) + 3 * n;
+            far_face[axis] = std::size_t(axis) + 3 * (1 - n);
+        }
+    }
+
+    [[nodiscard, gnu::always_inline]] unsigned may_cross(const BvhNode<T>& node, Interval<T> range, std::array<T, 4>& near) const noexcept
+    {
+        constexpr T widen = T(1) + T(2) * gamma<T>(3);
+        Lanes lo = Lanes{} + range.min, hi = Lanes{} + range.max;
+        for (int axis = 0; axis < 3; ++axis) {
+            Lanes near_side, far_side;
+            __builtin_memcpy(&near_side, node.bounds[near_face[axis]].data(), sizeof(Lanes));
+            __builtin_memcpy(&far_side, node.bounds[far_face[axis]].data(), sizeof(Lanes));
+            const Lanes t_near = (near_side - near_origin[axis]) * inverse[axis];
+            const Lanes t_far = (far_side - far_origin[axis]) * inverse[axis] * widen;
+            // A NaN (0 * inf) compares false and leaves the range as it was.
+            lo = t_near > lo ? t_near : lo;
+            hi = t_far < hi ? t_far : hi;
+        }
+        const auto crossed = lo <= hi;
+        __builtin_memcpy(near.data(), &lo, sizeof(Lanes));
+#if defined(__SSE__)
+        if constexpr (sizeof(T) == 4) return unsigned(__builtin_ia32_movmskps((Lanes)crossed));
+#endif
+        unsigned hits = 0;
+        for (int lane = 0; lane < 4; ++lane) hits |= crossed[lane] ? 1u << lane : 0u;
+        return hits;
+    }
 };
 
 template <Scalar T>
@@ -125,6 +209,7 @@ template <Scalar T>
 class Bvh {
 public:
     using scalar_type = T;
+    /// The binary tree's depth bound; the 4-wide tree is no deeper.
     static constexpr int max_depth = 48 + 32;
 
     constexpr Bvh() = default;
@@ -141,14 +226,18 @@ public:
         for (std::size_t i = 0; i < boxes.size(); ++i)
             if (!boxes[i].bounded()) detail::throw_invalid("Bvh primitive ", i, " has no finite box: test unbounded shapes beside the tree");
         if (boxes.empty()) return;
-        build(boxes, config);
+        collapse(build(boxes, config));
     }
 
+    /// The 4-wide nodes, the root first.
     [[nodiscard]] constexpr std::span<const BvhNode<T>> nodes() const noexcept { return nodes_; }
     /// The primitives in leaf order: a leaf holds primitives()[first, first + count).
     [[nodiscard]] constexpr std::span<const std::uint32_t> primitives() const noexcept { return primitives_; }
     [[nodiscard]] constexpr std::size_t size() const noexcept { return primitives_.size(); }
+    /// The depth of the binary tree the build made (the 4-wide one is about half as deep).
     [[nodiscard]] constexpr int depth() const noexcept { return depth_; }
+    /// The box around every primitive (empty for none).
+    [[nodiscard]] constexpr const Aabb<T>& bounds() const noexcept { return bounds_; }
 
     /// Visit, nearest node first, every primitive whose box the ray may cross within
     /// `range`: visit(primitive, range) tests it, may shrink range.max to a hit it found,
@@ -169,66 +258,147 @@ public:
     }
 
 private:
+    /// A binary node of the build: its box, its first child (the second is next to it) or
+    /// first primitive, and its primitive count (0 for an inner node).
+    struct BinaryNode {
+        Aabb<T> box;
+        std::uint32_t first = 0;
+        std::uint32_t count = 0;
+    };
+
+    /// A child met but not yet visited: a node (count 0) or a leaf, and where the ray's
+    /// range within its box begins.
+    struct Pending {
+        std::uint32_t first, count;
+        T near;
+    };
+
     template <class Visit>
     constexpr bool walk(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
     {
         if (nodes_.empty()) return false;
         const detail::SlabRay<T> slab(ray, magnitude_);
-        if (slab.may_cross(nodes_[0].box, range).empty()) return false;
-        std::array<std::uint32_t, max_depth + 1> stack{};
+        if (std::is_constant_evaluated()) return walk_with(slab, range, visit);
+        return walk_with(detail::SlabLanes<T>(slab), range, visit);
+    }
+
+    template <class Slab, class Visit>
+    constexpr bool walk_with(const Slab& slab, Interval<T>& range, Visit&& visit) const
+    {
+        // A node pushes at most three children, on at most max_depth levels. (Left
+        // uninitialized: clearing its 3 kB would cost more than a short query.)
+        std::array<Pending, 3 * max_depth + 1> stack;
         int top = 0;
-        std::uint32_t at = 0;
+        Pending at{0, 0, T(0)};
         for (;;) {
-            const BvhNode<T>& node = nodes_[at];
-            if (node.leaf()) {
-                for (std::uint32_t k = node.first; k < node.first + node.count; ++k)
-                    if (visit(k, range)) return true;
+            if (at.count == 0) {
+                // A node: its children the ray may cross, nearest first; the nearest is
+                // taken next, the others wait on the stack, the farthest deepest.
+                const BvhNode<T>& node = nodes_[at.first];
+                std::array<T, 4> near{};
+                unsigned hits = slab.may_cross(node, range, near);
+                if (hits != 0) {
+                    std::array<Pending, 4> met;
+                    int n = 0;
+                    for (; hits != 0; hits &= hits - 1) {
+                        const auto lane = std::size_t(std::countr_zero(hits));
+                        Pending p{node.first[lane], node.count[lane], near[lane]};
+                        int k = n++;
+                        for (; k > 0 && met[std::size_t(k - 1)].near > p.near; --k) met[std::size_t(k)] = met[std::size_t(k - 1)];
+                        met[std::size_t(k)] = p;
+                    }
+                    for (int k = n - 1; k > 0; --k) stack[std::size_t(top++)] = met[std::size_t(k)];
+                    at = met[0];
+                    continue;
+                }
             } else {
-                const std::uint32_t left = node.first, right = node.first + 1;
-                const Interval<T> a = slab.may_cross(nodes_[left].box, range), b = slab.may_cross(nodes_[right].box, range);
-                const bool hit_a = !a.empty(), hit_b = !b.empty();
-                if (hit_a && hit_b) {
-                    const bool left_first = a.min <= b.min;
-                    stack[std::size_t(top++)] = left_first ? right : left;
-                    at = left_first ? left : right;
-                    continue;
-                }
-                if (hit_a || hit_b) {
-                    at = hit_a ? left : right;
-                    continue;
-                }
+                for (std::uint32_t k = at.first; k < at.first + at.count; ++k)
+                    if (visit(k, range)) return true;
             }
-            // Next on the stack, skipping nodes the shrunk range no longer reaches.
+            // Next on the stack, skipping children the shrunk range no longer reaches
+            // (range.min stays, so the child's part of it is [near, range.max]).
             for (;;) {
                 if (top == 0) return false;
                 at = stack[std::size_t(--top)];
-                if (!slab.may_cross(nodes_[at].box, range).empty()) break;
+                if (at.near <= range.max) break;
             }
         }
     }
 
-    constexpr void build(std::span<const Aabb<T>> boxes, const BvhConfig& config)
+    /// Collapses the binary tree into nodes_: each node takes the binary node's children
+    /// and then, while it has fewer than four, splits its largest child that is no leaf.
+    constexpr void collapse(const std::vector<BinaryNode>& binary)
+    {
+        bounds_ = binary[0].box;
+        magnitude_ = std::max(max_component(prism::abs(bounds_.lo)), max_component(prism::abs(bounds_.hi)));
+        struct Job {
+            std::uint32_t binary, node;
+        };
+        std::vector<Job> jobs{{0, 0}};
+        nodes_.push_back(empty_node());
+        while (!jobs.empty()) {
+            const Job job = jobs.back();
+            jobs.pop_back();
+            std::array<std::uint32_t, 4> children{job.binary};
+            int n = 1;
+            if (binary[job.binary].count == 0) children = {binary[job.binary].first, binary[job.binary].first + 1}, n = 2;
+            while (n < 4) {
+                int largest = -1;
+                for (int c = 0; c < n; ++c) {
+                    const BinaryNode& b = binary[children[std::size_t(c)]];
+                    if (b.count == 0 && (largest < 0 || detail::half_area(b.box) > detail::half_area(binary[children[std::size_t(largest)]].box))) largest = c;
+                }
+                if (largest < 0) break;
+                // Its two children take its place, in order, so leaves keep their order.
+                const std::uint32_t split = binary[children[std::size_t(largest)]].first;
+                for (int c = n; c > largest + 1; --c) children[std::size_t(c)] = children[std::size_t(c - 1)];
+                children[std::size_t(largest)] = split;
+                children[std::size_t(largest + 1)] = split + 1;
+                ++n;
+            }
+            for (int c = 0; c < n; ++c) {
+                const BinaryNode& b = binary[children[std::size_t(c)]];
+                std::uint32_t first = b.first;
+                if (b.count == 0) {
+                    first = std::uint32_t(nodes_.size());
+                    nodes_.push_back(empty_node());
+                    jobs.push_back({children[std::size_t(c)], first});
+                }
+                nodes_[job.node].set(c, b.box, first, b.count);
+            }
+        }
+    }
+
+    [[nodiscard]] static constexpr BvhNode<T> empty_node() noexcept
+    {
+        BvhNode<T> node;
+        for (int c = 0; c < BvhNode<T>::width; ++c) node.set(c, Aabb<T>{}, 0, 0);
+        return node;
+    }
+
+    /// The binary tree, its root first; fills primitives_ and depth_.
+    [[nodiscard]] constexpr std::vector<BinaryNode> build(std::span<const Aabb<T>> boxes, const BvhConfig& config)
     {
         const auto n = std::uint32_t(boxes.size());
         std::vector<Vec3<T>> centers(n);
         for (std::uint32_t i = 0; i < n; ++i) centers[i] = T(0.5) * (boxes[i].lo + boxes[i].hi);
         primitives_.resize(n);
         std::iota(primitives_.begin(), primitives_.end(), std::uint32_t(0));
-        nodes_.reserve(2 * std::size_t(n) - 1);
-        nodes_.push_back({bounds(boxes, 0, n), 0, n});
-        magnitude_ = std::max(max_component(prism::abs(nodes_[0].box.lo)), max_component(prism::abs(nodes_[0].box.hi)));
-        struct Pending {
+        std::vector<BinaryNode> nodes;
+        nodes.reserve(2 * std::size_t(n) - 1);
+        nodes.push_back({bounds(boxes, 0, n), 0, n});
+        struct Open {
             std::uint32_t node;
             int depth;
         };
-        std::vector<Pending> pending{{0, 1}};
+        std::vector<Open> pending{{0, 1}};
         depth_ = 1;
         const std::size_t bins = std::size_t(config.bins);
         while (!pending.empty()) {
             const auto [index, depth] = pending.back();
             pending.pop_back();
             depth_ = std::max(depth_, depth);
-            const std::uint32_t first = nodes_[index].first, count = nodes_[index].count;
+            const std::uint32_t first = nodes[index].first, count = nodes[index].count;
             if (count <= 1) continue;
             // The centroids' bounds: the bins span them.
             Aabb<T> middle;
@@ -271,7 +441,7 @@ private:
                         if (cost < best_cost) best_cost = cost, best_axis = axis, best_bin = b;
                     }
                 }
-                const T area = detail::half_area(nodes_[index].box);
+                const T area = detail::half_area(nodes[index].box);
                 const T leaf_cost = T(count), split_cost = T(config.traversal_cost) + (area > T(0) ? best_cost / area : T(count));
                 if (best_axis < 0 || (leaf_cost <= split_cost && count <= std::uint32_t(config.max_leaf_size))) continue; // a leaf
                 const T lo = middle.lo[best_axis], scale = T(bins) / (middle.hi[best_axis] - middle.lo[best_axis]);
@@ -285,14 +455,15 @@ private:
                     return centers[a][axis] < centers[b][axis] || (centers[a][axis] == centers[b][axis] && a < b);
                 });
             }
-            const std::uint32_t child = std::uint32_t(nodes_.size());
-            nodes_.push_back({bounds(boxes, first, split), first, split});
-            nodes_.push_back({bounds(boxes, first + split, count - split), first + split, count - split});
-            nodes_[index].first = child;
-            nodes_[index].count = 0;
+            const std::uint32_t child = std::uint32_t(nodes.size());
+            nodes.push_back({bounds(boxes, first, split), first, split});
+            nodes.push_back({bounds(boxes, first + split, count - split), first + split, count - split});
+            nodes[index].first = child;
+            nodes[index].count = 0;
             pending.push_back({child + 1, depth + 1});
             pending.push_back({child, depth + 1});
         }
+        return nodes;
     }
 
     [[nodiscard]] static constexpr std::size_t bin_of(T c, T lo, T scale, std::size_t bins) noexcept
@@ -312,6 +483,7 @@ private:
 
     std::vector<BvhNode<T>> nodes_;
     std::vector<std::uint32_t> primitives_;
+    Aabb<T> bounds_{};
     T magnitude_ = 0; ///< the largest coordinate magnitude of the root's box
     int depth_ = 0;
 };
