@@ -221,6 +221,30 @@ def embree_chart(rows):
     save(fig, "bvh_vs_embree.png")
 
 
+def bvh_quality_chart(rows):
+    """Trace time against build time per Bvh setting, one panel per geometry (the trace
+    axis from 0: the settings differ by a few per cent)."""
+    geometries = []
+    for r in rows:
+        key = (r["geometry"], r["count"])
+        if key not in geometries:
+            geometries.append(key)
+    fig, axes = plt.subplots(1, len(geometries), figsize=(3.2 * len(geometries), 3.6))
+    for ax, (geometry, count) in zip(axes, geometries):
+        sel = [r for r in rows if r["geometry"] == geometry and r["count"] == count]
+        for i, r in enumerate(sel):
+            ax.plot(float(r["build_s"]), 1e3 / float(r["mrays"]), "o", color=f"C{i}", label=f"{r['setting']} (SAH {float(r['sah_cost']):.2f})")
+        ax.set_xscale("log")
+        ax.set_ylim(0, 1.25e3 / min(float(r["mrays"]) for r in sel))
+        ax.set_xlabel("build (s)")
+        ax.set_ylabel("trace (ns per ray, 1 thread)")
+        n = int(count)
+        ax.set_title(f"{n:.0e} spheres".replace("e+0", "e") if geometry == "spheres" else f"{geometry}, {n / 1000:.0f}k triangles", fontsize=9)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=6)
+    save(fig, "bvh_quality.png")
+
+
 def photon_chart(rows):
     """Error against time: prism's estimators and POV-Ray, both against prism's reference
     (left) and each against its own (right)."""
@@ -412,6 +436,8 @@ def main():
         kdtree_chart(rows)
     if (rows := read("bvh_vs_embree.csv")):
         embree_chart(rows)
+    if (rows := read("bvh_quality.csv")):
+        bvh_quality_chart(rows)
     if (rows := read("photon_accuracy.csv")):
         photon_chart(rows)
     if (rows := read("photon_leaks.csv")):

@@ -102,6 +102,12 @@ std::vector<Ball<T>> random_balls(int n, Pcg32& rng, T spread, T size)
 /// Rays of every kind: from inside the cloud, from far away (1e4 times its size),
 /// axis-aligned, and with a denormal component.
 template <class T>
+Vec3<T> random_point_in(Pcg32& rng, T half_size)
+{
+    return (Vec3<T>{rng.uniform<T>(), rng.uniform<T>(), rng.uniform<T>()} * T(2) - Vec3<T>(T(1))) * half_size;
+}
+
+template <class T>
 Ray<T> random_ray(Pcg32& rng, T spread, int kind)
 {
     const Vec3<T> target = (Vec3<T>{rng.uniform<T>(), rng.uniform<T>(), rng.uniform<T>()} - Vec3<T>(T(0.5))) * spread;
@@ -191,20 +197,23 @@ TEST_CASE_TEMPLATE("the nearest hit through the Bvh is brute force's, same ball 
 {
     Pcg32 rng(5u, 9u);
     for (const int n : {1, 2, 7, 100, 3000}) {
-        CAPTURE(n);
         const auto balls = random_balls<T>(n, rng, T(10), T(3) / std::cbrt(T(n)));
-        const Bvh<T> bvh(boxes_of(balls));
-        int mismatches = 0, hits = 0;
-        const int rays = n >= 1000 ? 3000 : 40000; // brute force costs n per ray
-        for (int i = 0; i < rays; ++i) {
-            const Ray<T> ray = random_ray<T>(rng, T(10), i);
-            const Interval<T> range{T(0), infinity<T>};
-            const Found<T> a = brute_force(balls, ray, range), b = by_bvh(bvh, balls, ray, range);
-            mismatches += !(a == b);
-            hits += a.t < infinity<T>;
+        for (const BvhSplit split : {BvhSplit::binned, BvhSplit::sweep}) {
+            CAPTURE(n);
+            CAPTURE(int(split));
+            const Bvh<T> bvh(boxes_of(balls), {.split = split});
+            int mismatches = 0, hits = 0;
+            const int rays = n >= 1000 ? 3000 : 40000; // brute force costs n per ray
+            for (int i = 0; i < rays; ++i) {
+                const Ray<T> ray = random_ray<T>(rng, T(10), i);
+                const Interval<T> range{T(0), infinity<T>};
+                const Found<T> a = brute_force(balls, ray, range), b = by_bvh(bvh, balls, ray, range);
+                mismatches += !(a == b);
+                hits += a.t < infinity<T>;
+            }
+            CHECK(mismatches == 0);
+            CHECK(hits > rays / 20);
         }
-        CHECK(mismatches == 0);
-        CHECK(hits > rays / 20);
     }
 }
 
@@ -237,46 +246,67 @@ TEST_CASE("the tree's shape: every primitive once, children inside their parent,
 {
     Pcg32 rng(3u, 3u);
     for (const int leaf : {1, 4, 8}) {
-        const auto balls = random_balls<float>(5000, rng, 10.0f, 0.1f);
-        const auto boxes = boxes_of(balls);
-        const Bvh<float> bvh(boxes, {.max_leaf_size = leaf});
-        std::vector<int> seen(balls.size(), 0), parents(bvh.nodes().size(), 0);
-        bool inside = true, small = true, packed = true;
-        for (const auto& node : bvh.nodes()) {
-            int used = 0;
-            for (int c = 0; c < 4; ++c) {
-                if (!node.used(c)) {
-                    packed = packed && node.count[std::size_t(c)] == 0;
-                    continue;
-                }
-                ++used;
-                if (node.leaf(c)) {
-                    small = small && node.count[std::size_t(c)] <= std::uint32_t(leaf);
-                    for (std::uint32_t k = node.first[std::size_t(c)]; k < node.first[std::size_t(c)] + node.count[std::size_t(c)]; ++k) {
-                        const std::uint32_t p = bvh.primitives()[k];
-                        ++seen[p];
-                        inside = inside && holds(node.box(c), boxes[p]);
+        for (const BvhSplit split : {BvhSplit::binned, BvhSplit::sweep}) {
+            const auto balls = random_balls<float>(5000, rng, 10.0f, 0.1f);
+            const auto boxes = boxes_of(balls);
+            const Bvh<float> bvh(boxes, {.max_leaf_size = leaf, .split = split});
+            std::vector<int> seen(balls.size(), 0), parents(bvh.nodes().size(), 0);
+            bool inside = true, small = true, packed = true;
+            for (const auto& node : bvh.nodes()) {
+                int used = 0;
+                for (int c = 0; c < 4; ++c) {
+                    if (!node.used(c)) {
+                        packed = packed && node.count[std::size_t(c)] == 0;
+                        continue;
                     }
-                } else {
-                    const auto& child = bvh.nodes()[node.first[std::size_t(c)]];
-                    ++parents[node.first[std::size_t(c)]];
-                    for (int g = 0; g < 4; ++g)
-                        if (child.used(g)) inside = inside && holds(node.box(c), child.box(g));
+                    ++used;
+                    if (node.leaf(c)) {
+                        small = small && node.count[std::size_t(c)] <= std::uint32_t(leaf);
+                        for (std::uint32_t k = node.first[std::size_t(c)]; k < node.first[std::size_t(c)] + node.count[std::size_t(c)]; ++k) {
+                            const std::uint32_t p = bvh.primitives()[k];
+                            ++seen[p];
+                            inside = inside && holds(node.box(c), boxes[p]);
+                        }
+                    } else {
+                        const auto& child = bvh.nodes()[node.first[std::size_t(c)]];
+                        ++parents[node.first[std::size_t(c)]];
+                        for (int g = 0; g < 4; ++g)
+                            if (child.used(g)) inside = inside && holds(node.box(c), child.box(g));
+                    }
                 }
+                // Two children at least: a node of one would be a wasted level.
+                packed = packed && used >= 2;
             }
-            // Four children, but where the binary tree ran out of nodes to split.
-            packed = packed && used >= 2;
+            CHECK(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
+            CHECK(parents[0] == 0);
+            CHECK(std::all_of(parents.begin() + 1, parents.end(), [](int p) { return p == 1; }));
+            CHECK(inside);
+            CHECK(small);
+            CHECK(packed);
+            // A binary tree has n - 1 inner nodes at most; a 4-wide one about a third of that.
+            CHECK(bvh.nodes().size() <= balls.size() / 2);
+            Aabb<float> all;
+            for (const auto& box : boxes) all = all.merged(box);
+            CHECK((bvh.bounds().lo == all.lo && bvh.bounds().hi == all.hi));
         }
-        CHECK(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
-        CHECK(parents[0] == 0);
-        CHECK(std::all_of(parents.begin() + 1, parents.end(), [](int p) { return p == 1; }));
-        CHECK(inside);
-        CHECK(small);
-        CHECK(packed);
-        // A binary tree has n - 1 inner nodes at most; a 4-wide one about a third of that.
-        CHECK(bvh.nodes().size() <= balls.size() / 2);
-        CHECK(bvh.bounds().lo == boxes_of(balls)[0].merged(bvh.bounds()).lo);
     }
+}
+
+TEST_CASE("the sweep's tree costs less than the binned one by the surface area heuristic, and both far less than one leaf")
+{
+    // Clustered balls of very different sizes, where 16 bins place planes coarsely.
+    Pcg32 rng(4u, 4u);
+    std::vector<Ball<float>> balls;
+    for (int cluster = 0; cluster < 20; ++cluster) {
+        const Vec3<float> c = random_point_in<float>(rng, 100.0f);
+        for (int i = 0; i < 500; ++i) balls.push_back({c + random_point_in<float>(rng, 3.0f), 0.01f + 0.5f * rng.uniform<float>() * rng.uniform<float>()});
+    }
+    const double binned = Bvh<float>(boxes_of(balls)).sah_cost(), sweep = Bvh<float>(boxes_of(balls), {.split = BvhSplit::sweep}).sah_cost();
+    const double coarse = Bvh<float>(boxes_of(balls), {.bins = 4}).sah_cost();
+    MESSAGE("SAH cost: 4 bins ", coarse, ", 16 bins ", binned, ", sweep ", sweep, " (one leaf: ", balls.size(), ")");
+    CHECK(sweep < binned);
+    CHECK(binned < coarse);
+    CHECK(sweep < 0.01 * double(balls.size()));
 }
 
 TEST_CASE("degenerate sets: identical boxes, one box, exponentially spaced boxes; depth stays bounded")
@@ -335,6 +365,7 @@ TEST_CASE("bad input is refused, naming it")
     boxes.pop_back();
     CHECK_THROWS_WITH_AS((Bvh<float>{boxes, {.max_leaf_size = 0}}), doctest::Contains("max_leaf_size must be >= 1, got 0"), std::invalid_argument);
     CHECK_THROWS_WITH_AS((Bvh<float>{boxes, {.bins = 1}}), doctest::Contains("bins must be in [2, 256], got 1"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((Bvh<float>{boxes, {.split = BvhSplit(7)}}), doctest::Contains("split must be binned or sweep, got 7"), std::invalid_argument);
 }
 
 namespace {
