@@ -5,10 +5,11 @@
 // Geometry: N random spheres in [-1, 1]^3 filling 5 % of it (N = 1e2 ... 1e6; Embree's
 // point-sphere primitive), and triangle meshes (the Stanford bunny if its OBJ is given,
 // a geodesic sphere and a 10^6-triangle terrain). Rays: 1000^2 primary rays from a
-// camera, then one cosine-distributed bounce ray from every primary hit (the same rays
-// for both; prism's hit gives the bounce ray). Closest hit, Embree's rtcIntersect1 (its
-// single-ray API) against Scene::closest_hit (which also works out the winner's
-// surface), on 1 and 2 threads. Times: the minimum and median of `repeats` interleaved
+// camera, then from every primary hit one cosine-distributed bounce ray and one shadow
+// ray to a point light (the same rays for both; prism's hit gives them). Closest hit,
+// Embree's rtcIntersect1 (its single-ray API) against Scene::closest_hit (which also
+// works out the winner's surface); for shadow rays rtcOccluded1 against
+// Scene::transmittance (any hit); on 1 and 2 threads. Times: the minimum and median of `repeats` interleaved
 // rounds. Build: prism's on one thread; Embree's on its own (TBB) threads.
 // Agreement: the share of rays where both hit, or both miss, with t within 1e-3.
 //   bench_bvh_vs_embree [results-folder] [repeats] [bunny.obj]
@@ -38,7 +39,12 @@ Vec3<T> test_point(Pcg32& rng)
 
 struct Rays {
     std::vector<Ray<T>> primary, bounce;
+    std::vector<Ray<T>> shadow; ///< from each primary hit toward the light, unit direction
+    std::vector<T> shadow_end;  ///< where each shadow ray stops: just short of the light
 };
+
+/// The light the shadow rays go to, above and in front of the geometry.
+const Vec3<T> light_position{T(2), T(3), T(-4)};
 
 /// Seconds to trace `rays` on `threads` threads, each taking a contiguous half.
 template <class Trace>
@@ -115,6 +121,19 @@ public:
         return end(g, start);
     }
 
+    /// Whether anything lies on the ray between 0 and t_max.
+    [[nodiscard]] bool occluded(const Ray<T>& ray, float t_max) const
+    {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRay r{};
+        r.org_x = ray.origin.x, r.org_y = ray.origin.y, r.org_z = ray.origin.z;
+        r.dir_x = ray.direction.x, r.dir_y = ray.direction.y, r.dir_z = ray.direction.z;
+        r.tnear = 0, r.tfar = t_max, r.mask = ~0u;
+        rtcOccluded1(scene_, &context, &r);
+        return r.tfar < 0; // Embree marks an occluded ray with tfar = -inf
+    }
+
     /// The t of the closest hit, or infinity.
     [[nodiscard]] float closest(const Ray<T>& ray) const
     {
@@ -153,12 +172,16 @@ private:
 template <class SceneT>
 Rays make_rays(const SceneT& scene, std::vector<Ray<T>> primary)
 {
-    Rays rays{std::move(primary), {}};
+    Rays rays{std::move(primary), {}, {}, {}};
     Pcg32 rng(7u, 7u);
     for (const Ray<T>& r : rays.primary)
         if (const auto hit = scene.closest_hit(r, {T(0), infinity<T>})) {
-            const Vec3<T> n = hit->crossing.facing_normal();
-            rays.bounce.push_back(spawn_ray(hit->crossing.point, hit->crossing.error, hit->crossing.normal, cosine_hemisphere(n, rng)));
+            const Crossing<T>& c = hit->crossing;
+            rays.bounce.push_back(spawn_ray(c.point, c.error, c.normal, cosine_hemisphere(c.facing_normal(), rng)));
+            const Ray<T> to_light = spawn_ray(c.point, c.error, c.normal, light_position - c.point);
+            const T distance = length(light_position - to_light.origin);
+            rays.shadow.push_back({to_light.origin, (light_position - to_light.origin) / distance});
+            rays.shadow_end.push_back(distance * T(0.9999));
         }
     return rays;
 }
@@ -173,11 +196,26 @@ struct Row {
 template <class SceneT>
 void race(bench::Csv& csv, const Row& row, const SceneT& scene, Embree& embree, const Rays& rays, int repeats)
 {
-    for (const auto* set : {&rays.primary, &rays.bounce}) {
-        const char* kind = set == &rays.primary ? "primary" : "bounce";
+    for (const auto* set : {&rays.primary, &rays.bounce, &rays.shadow}) {
+        const bool shadow = set == &rays.shadow;
+        const char* kind = set == &rays.primary ? "primary" : (shadow ? "shadow" : "bounce");
+        // A shadow ray asks whether anything blocks it (prism: the transmittance of a
+        // scene of opaque objects, an any-hit query; Embree: rtcOccluded1); the others ask
+        // for the closest hit.
+        const auto prism_hit = [&](std::size_t i) {
+            return shadow ? scene.transmittance((*set)[i], rays.shadow_end[i]).r == T(0) : scene.closest_hit((*set)[i], {T(0), infinity<T>}).has_value();
+        };
+        const auto embree_hit = [&](std::size_t i) { return shadow ? embree.occluded((*set)[i], rays.shadow_end[i]) : embree.closest((*set)[i]) < infinity<float>; };
         // Agreement.
         std::size_t agree = 0, hits = 0;
-        for (const Ray<T>& r : *set) {
+        for (std::size_t i = 0; i < set->size(); ++i) {
+            const Ray<T>& r = (*set)[i];
+            if (shadow) {
+                const bool blocked = prism_hit(i);
+                hits += blocked;
+                agree += blocked == embree_hit(i);
+                continue;
+            }
             const auto h = scene.closest_hit(r, {T(0), infinity<T>});
             const float te = embree.closest(r);
             const float tp = h ? h->crossing.t : infinity<float>;
@@ -190,12 +228,12 @@ void race(bench::Csv& csv, const Row& row, const SceneT& scene, Embree& embree, 
             for (int round = 0; round < repeats; ++round) {
                 tp.push_back(trace_seconds(*set, threads, [&](std::size_t a, std::size_t b) {
                     long h = 0;
-                    for (std::size_t i = a; i < b; ++i) h += scene.closest_hit((*set)[i], {T(0), infinity<T>}).has_value();
+                    for (std::size_t i = a; i < b; ++i) h += prism_hit(i);
                     if (a == 0) sink[0] = h;
                 }));
                 te.push_back(trace_seconds(*set, threads, [&](std::size_t a, std::size_t b) {
                     long h = 0;
-                    for (std::size_t i = a; i < b; ++i) h += embree.closest((*set)[i]) < infinity<float>;
+                    for (std::size_t i = a; i < b; ++i) h += embree_hit(i);
                     if (a == 0) sink[1] = h;
                 }));
             }

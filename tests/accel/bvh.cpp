@@ -219,25 +219,29 @@ TEST_CASE_TEMPLATE("the nearest hit through the Bvh is brute force's, same ball 
 
 TEST_CASE("an any-hit query stops at its first hit and agrees with brute force on whether there is one")
 {
+    // Nearest first (traverse) and in no order (any_in_leaf_order, a shadow ray's).
     Pcg32 rng(7u, 1u);
     const auto balls = random_balls<float>(500, rng, 10.0f, 0.3f);
     const Bvh<float> bvh(boxes_of(balls));
-    int mismatches = 0, blocked = 0;
+    int mismatches = 0, blocked = 0, tests_after_hit = 0;
     for (int i = 0; i < 20000; ++i) {
         const Ray<float> ray = random_ray<float>(rng, 10.0f, i);
         const Interval<float> range{0.0f, 5.0f * rng.uniform<float>()};
-        Interval<float> r = range;
-        int tests_after_hit = 0;
-        bool hit = false;
-        bvh.traverse(ray, r, [&](std::uint32_t k, Interval<float>& rr) {
-            tests_after_hit += hit;
-            hit = balls[k].hit(ray, rr) < infinity<float>;
-            return hit;
-        });
-        mismatches += hit != (brute_force(balls, ray, range).t < infinity<float>);
-        blocked += hit;
-        CHECK(tests_after_hit == 0);
+        const bool truth = brute_force(balls, ray, range).t < infinity<float>;
+        for (const bool ordered : {true, false}) {
+            Interval<float> r = range;
+            bool hit = false;
+            const auto visit = [&](std::uint32_t k, Interval<float>& rr) {
+                tests_after_hit += hit;
+                hit = balls[ordered ? k : bvh.primitives()[k]].hit(ray, rr) < infinity<float>;
+                return hit;
+            };
+            const bool stopped = ordered ? bvh.traverse(ray, r, visit) : bvh.any_in_leaf_order(ray, r, visit);
+            mismatches += hit != truth || stopped != hit;
+        }
+        blocked += truth;
     }
+    CHECK(tests_after_hit == 0);
     CHECK(mismatches == 0);
     CHECK(blocked > 500);
 }

@@ -16,16 +16,16 @@
 // memory (128 bytes a node in float), with one SIMD instruction per step, and meets
 // half as many levels.
 //
-// Traversal visits children nearest first and never misses a primitive whose box the
-// ray may cross (Aabb::may_cross: the box widened by gamma(16) of the ray origin's
-// distance, the far slab by 2 gamma(3)). Every box is widened by one pad per ray that
-// is at least as wide as that for any box of the tree (from the root box's largest
-// coordinate), so a node's widened box holds each widened box inside it, and the test
-// per node is a plain slab test (Ize 2013), the same arithmetic in each lane as in
-// SlabRay::may_cross. So a scene that accelerates its linear scan with a Bvh tests
-// every object that scan would have tested, and finds the same hit. The query is the
-// caller's: visit(primitive, range) may shrink range.max (closest hit) or return true
-// to stop (any hit). Queries allocate nothing.
+// Traversal visits children nearest first (an any-hit query's in any order) and never
+// misses a primitive whose box the ray may cross (Aabb::may_cross: the box widened by
+// gamma(16) of the ray origin's distance, the far slab by 2 gamma(3)). Every box is
+// widened by one pad per ray that is at least as wide as that for any box of the tree
+// (from the root box's largest coordinate), so a node's widened box holds each widened
+// box inside it, and the test per node is a plain slab test (Ize 2013), the same
+// arithmetic in each lane as in SlabRay::may_cross. So a scene that accelerates its
+// linear scan with a Bvh tests every object that scan would have tested, and finds the
+// same hit. The query is the caller's: visit(primitive, range) may shrink range.max
+// (closest hit) or return true to stop (any hit). Queries allocate nothing.
 #pragma once
 
 #include <prism/core/aabb.hpp>
@@ -270,7 +270,7 @@ public:
     template <class Visit>
     constexpr bool traverse(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
     {
-        return walk(ray, range, [&](std::uint32_t k, Interval<T>& r) { return visit(primitives_[k], r); });
+        return walk<true>(ray, range, [&](std::uint32_t k, Interval<T>& r) { return visit(primitives_[k], r); });
     }
 
     /// traverse, with visit given a primitive's position k in leaf order (primitives()[k])
@@ -278,7 +278,16 @@ public:
     template <class Visit>
     constexpr bool traverse_in_leaf_order(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
     {
-        return walk(ray, range, visit);
+        return walk<true>(ray, range, visit);
+    }
+
+    /// traverse_in_leaf_order for a query that takes any hit (a shadow ray's): the same
+    /// primitives, in no particular order (children are not sorted by distance), until a
+    /// visit returns true.
+    template <class Visit>
+    constexpr bool any_in_leaf_order(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
+    {
+        return walk<false>(ray, range, visit);
     }
 
 private:
@@ -297,16 +306,17 @@ private:
         T near;
     };
 
-    template <class Visit>
+    /// The traversal; `Nearest`: children nearest first (else in lane order).
+    template <bool Nearest, class Visit>
     constexpr bool walk(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
     {
         if (nodes_.empty()) return false;
         const detail::SlabRay<T> slab(ray, magnitude_);
-        if (std::is_constant_evaluated()) return walk_with(slab, range, visit);
-        return walk_with(detail::SlabLanes<T>(slab), range, visit);
+        if (std::is_constant_evaluated()) return walk_with<Nearest>(slab, range, visit);
+        return walk_with<Nearest>(detail::SlabLanes<T>(slab), range, visit);
     }
 
-    template <class Slab, class Visit>
+    template <bool Nearest, class Slab, class Visit>
     constexpr bool walk_with(const Slab& slab, Interval<T>& range, Visit&& visit) const
     {
         // A node pushes at most three children, on at most max_depth levels. (Left
@@ -328,7 +338,8 @@ private:
                         const auto lane = std::size_t(std::countr_zero(hits));
                         Pending p{node.first[lane], node.count[lane], near[lane]};
                         int k = n++;
-                        for (; k > 0 && met[std::size_t(k - 1)].near > p.near; --k) met[std::size_t(k)] = met[std::size_t(k - 1)];
+                        if constexpr (Nearest)
+                            for (; k > 0 && met[std::size_t(k - 1)].near > p.near; --k) met[std::size_t(k)] = met[std::size_t(k - 1)];
                         met[std::size_t(k)] = p;
                     }
                     for (int k = n - 1; k > 0; --k) stack[std::size_t(top++)] = met[std::size_t(k)];

@@ -269,7 +269,7 @@ public:
     [[nodiscard]] bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         const detail::ShearedRay<T> sheared(ray);
-        return data_->bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t k, Interval<T>& r) {
+        return data_->bvh.any_in_leaf_order(ray, range, [&](std::uint32_t k, Interval<T>& r) {
             detail::TriangleHit<T> h;
             return detail::hit_triangle(sheared, data_->corners[k], r, h);
         });

@@ -408,7 +408,7 @@ private:
         for (const std::uint32_t k : index.unbounded)
             if (any_crossing(objects[k].shape, ray, range)) return true;
         Interval<T> r = range;
-        return near_cluster && index.bvh.traverse_in_leaf_order(ray, r, [&](std::uint32_t p, Interval<T>&) { return any_crossing(index.shapes[p], ray, range); });
+        return near_cluster && index.bvh.any_in_leaf_order(ray, r, [&](std::uint32_t p, Interval<T>&) { return any_crossing(index.shapes[p], ray, range); });
     }
 
     /// A shadow ray through overlapping transmissive objects: each stretch attenuated by
