@@ -71,6 +71,8 @@ struct SphereSet {
         for (const std::uint32_t p : bvh.primitives()) balls.push_back(input[p]);
     }
 
+    [[nodiscard]] const Bvh<T>& tree() const { return bvh; }
+
     [[nodiscard]] T nearest(const Ray<T>& ray) const
     {
         Interval<T> range{T(0), infinity<T>};
@@ -100,6 +102,8 @@ struct MeshSet {
     TriangleMesh<T> mesh;
 
     MeshSet(const MeshBuffers<T>& buffers, const BvhConfig& config) : mesh(buffers.positions, buffers.triangles, config) {}
+
+    [[nodiscard]] const Bvh<T>& tree() const { return mesh.bvh(); }
 
     [[nodiscard]] T nearest(const Ray<T>& ray) const { return mesh.first_crossing(ray, {T(0), infinity<T>}); }
 
@@ -134,10 +138,7 @@ void measure(bench::Csv& csv, const std::string& geometry, std::size_t count, co
             sums[s] = sum;
         }
     for (std::size_t s = 0; s < std::size(settings); ++s) {
-        const Bvh<T>& bvh = [&]() -> const Bvh<T>& {
-            if constexpr (std::is_same_v<Set, MeshSet>) return sets[s].mesh.bvh();
-            else return sets[s].bvh;
-        }();
+        const Bvh<T>& bvh = sets[s].tree();
         const double mrays = double(rays.size()) / trace[s] / 1e6;
         csv.row("%s,%zu,%s,%.5f,%.4f,%.4f,%zu,%d", geometry.c_str(), count, settings[s].name, build[s], mrays, bvh.sah_cost(), bvh.nodes().size(), int(sums[s] == sums[1]));
         std::printf("%-8s %8zu %-10s build %8.4f s, trace %6.2f Mrays/s, SAH cost %7.3f, %zu nodes, same hits as binned 16: %s\n", geometry.c_str(), count, settings[s].name,

@@ -7,8 +7,9 @@
 //     C = C_trav + C_isect (A_left n_left + A_right n_right) / A_node
 // and the cheapest split is taken, unless a leaf of n primitives (C_isect n) is cheaper
 // and holds no more than max_leaf_size. (BvhSplit::sweep costs instead every split
-// between neighbours in centroid order, sorting on each axis: a slower build, a tree a
-// few per cent cheaper to trace.) Primitives whose centroids coincide are split by
+// between neighbours in centroid order, sorting on each axis: a build 2-3.5 times as
+// long, for an SAH cost 0.1-0.6 % lower in bench/bvh_quality.cpp.) Primitives whose
+// centroids coincide are split by
 // count. Below depth 48 only count splits are made, so no binary tree is deeper than
 // 48 + 32 levels and traversal needs a fixed stack. The binary tree is then collapsed
 // into a 4-wide one (as Embree's BVH4): each node takes its children's children, the
@@ -47,7 +48,7 @@ namespace prism {
 /// How the build chooses a node's split.
 enum class BvhSplit {
     binned, ///< the best of `bins` - 1 planes per axis (Wald 2007): fast, near the sweep's quality
-    sweep,  ///< the best between any two neighbours in centroid order: O(n log^2 n), the best SAH tree
+    sweep,  ///< the best between any two neighbours in centroid order: O(n log^2 n), the lowest SAH cost
 };
 
 struct BvhConfig {
@@ -64,9 +65,16 @@ struct BvhConfig {
 template <Scalar T>
 struct alignas(64) BvhNode {
     static constexpr int width = 4;
-    std::array<std::array<T, width>, 6> bounds{};
+    std::array<std::array<T, width>, 6> bounds = empty_bounds(); ///< every lane unused until set
     std::array<std::uint32_t, width> first{}; ///< child node, or a leaf's first primitive
     std::array<std::uint32_t, width> count{}; ///< a leaf's primitives; 0 for a node (or unused)
+
+    [[nodiscard]] static constexpr std::array<std::array<T, width>, 6> empty_bounds() noexcept
+    {
+        std::array<std::array<T, width>, 6> b{};
+        for (std::size_t row = 0; row < 6; ++row) b[row].fill(row < 3 ? infinity<T> : -infinity<T>);
+        return b;
+    }
 
     [[nodiscard]] constexpr bool leaf(int lane) const noexcept { return count[std::size_t(lane)] != 0; }
     [[nodiscard]] constexpr bool used(int lane) const noexcept { return bounds[0][std::size_t(lane)] <= bounds[3][std::size_t(lane)]; }
@@ -100,6 +108,10 @@ struct SlabRay {
     Vec3<T> near_origin, far_origin;
     std::array<bool, 3> negative{}; ///< the ray runs toward -axis: it meets hi first
 
+    /// The far slab's widening: rounding never reports a miss for a ray that touches a
+    /// box (pbrt-v4, Bounds3::IntersectP).
+    static constexpr T far_widening = T(1) + T(2) * gamma<T>(3);
+
     /// `magnitude`: the largest coordinate magnitude of every box to be tested.
     constexpr SlabRay(const Ray<T>& ray, T magnitude) noexcept
     {
@@ -132,11 +144,10 @@ struct SlabRay {
     /// of a traversal's work, and a call per node costs a quarter of it.)
     [[nodiscard, gnu::always_inline]] constexpr Interval<T> may_cross(const Aabb<T>& box, Interval<T> range) const noexcept
     {
-        constexpr T widen = T(1) + T(2) * gamma<T>(3);
         for (int axis = 0; axis < 3; ++axis) {
             const bool n = negative[std::size_t(axis)];
             const T t_near = ((n ? box.hi[axis] : box.lo[axis]) - near_origin[axis]) * inverse[axis];
-            const T t_far = ((n ? box.lo[axis] : box.hi[axis]) - far_origin[axis]) * inverse[axis] * widen;
+            const T t_far = ((n ? box.lo[axis] : box.hi[axis]) - far_origin[axis]) * inverse[axis] * far_widening;
             // A NaN (0 * inf) compares false and leaves the range as it was.
             range.min = t_near > range.min ? t_near : range.min;
             range.max = t_far < range.max ? t_far : range.max;
@@ -147,10 +158,10 @@ struct SlabRay {
     /// may_cross for the four children of a node at once: a bit per child the ray may
     /// cross, and in `near` where its part of the range begins (for compile time; at run
     /// time SlabLanes does the same in SIMD).
-    [[nodiscard]] constexpr unsigned may_cross(const BvhNode<T>& node, Interval<T> range, std::array<T, 4>& near) const noexcept
+    [[nodiscard]] constexpr unsigned may_cross(const BvhNode<T>& node, Interval<T> range, std::array<T, BvhNode<T>::width>& near) const noexcept
     {
         unsigned hits = 0;
-        for (int lane = 0; lane < 4; ++lane) {
+        for (int lane = 0; lane < BvhNode<T>::width; ++lane) {
             const Interval<T> r = may_cross(node.box(lane), range);
             near[std::size_t(lane)] = r.min;
             hits |= r.empty() ? 0u : 1u << lane;
@@ -164,7 +175,8 @@ struct SlabRay {
 /// broadcast and the faces it meets first chosen once per ray.
 template <Scalar T>
 struct SlabLanes {
-    typedef T Lanes __attribute__((vector_size(4 * sizeof(T))));
+    static constexpr int width = BvhNode<T>::width;
+    typedef T Lanes __attribute__((vector_size(width * sizeof(T))));
     Lanes near_origin[3], far_origin[3], inverse[3];
     std::size_t near_face[3], far_face[3]; ///< rows of BvhNode::bounds
 
@@ -180,16 +192,15 @@ struct SlabLanes {
         }
     }
 
-    [[nodiscard, gnu::always_inline]] unsigned may_cross(const BvhNode<T>& node, Interval<T> range, std::array<T, 4>& near) const noexcept
+    [[nodiscard, gnu::always_inline]] unsigned may_cross(const BvhNode<T>& node, Interval<T> range, std::array<T, width>& near) const noexcept
     {
-        constexpr T widen = T(1) + T(2) * gamma<T>(3);
         Lanes lo = Lanes{} + range.min, hi = Lanes{} + range.max;
         for (int axis = 0; axis < 3; ++axis) {
             Lanes near_side, far_side;
             __builtin_memcpy(&near_side, node.bounds[near_face[axis]].data(), sizeof(Lanes));
             __builtin_memcpy(&far_side, node.bounds[far_face[axis]].data(), sizeof(Lanes));
             const Lanes t_near = (near_side - near_origin[axis]) * inverse[axis];
-            const Lanes t_far = (far_side - far_origin[axis]) * inverse[axis] * widen;
+            const Lanes t_far = (far_side - far_origin[axis]) * inverse[axis] * SlabRay<T>::far_widening;
             // A NaN (0 * inf) compares false and leaves the range as it was.
             lo = t_near > lo ? t_near : lo;
             hi = t_far < hi ? t_far : hi;
@@ -197,10 +208,10 @@ struct SlabLanes {
         const auto crossed = lo <= hi;
         __builtin_memcpy(near.data(), &lo, sizeof(Lanes));
 #if defined(__SSE__)
-        if constexpr (sizeof(T) == 4) return unsigned(__builtin_ia32_movmskps((Lanes)crossed));
+        if constexpr (sizeof(T) == 4 && width == 4) return unsigned(__builtin_ia32_movmskps((Lanes)crossed));
 #endif
         unsigned hits = 0;
-        for (int lane = 0; lane < 4; ++lane) hits |= crossed[lane] ? 1u << lane : 0u;
+        for (int lane = 0; lane < width; ++lane) hits |= crossed[lane] ? 1u << lane : 0u;
         return hits;
     }
 };
@@ -220,6 +231,7 @@ public:
     using scalar_type = T;
     /// The binary tree's depth bound; the 4-wide tree is no deeper.
     static constexpr int max_depth = 48 + 32;
+    static constexpr int width = BvhNode<T>::width;
 
     constexpr Bvh() = default;
 
@@ -258,7 +270,7 @@ public:
         if (nodes_.empty() || !(root > 0)) return double(size());
         double cost = node_cost; // the root node
         for (const BvhNode<T>& node : nodes_)
-            for (int c = 0; c < BvhNode<T>::width; ++c)
+            for (int c = 0; c < width; ++c)
                 if (node.used(c)) cost += double(detail::half_area(node.box(c))) / root * (node.leaf(c) ? double(node.count[std::size_t(c)]) : node_cost);
         return cost;
     }
@@ -319,20 +331,21 @@ private:
     template <bool Nearest, class Slab, class Visit>
     constexpr bool walk_with(const Slab& slab, Interval<T>& range, Visit&& visit) const
     {
-        // A node pushes at most three children, on at most max_depth levels. (Left
+        // A node pushes all its children but one, on at most max_depth levels. (Left
         // uninitialized: clearing its 3 kB would cost more than a short query.)
-        std::array<Pending, 3 * max_depth + 1> stack;
+        std::array<Pending, (width - 1) * max_depth + 1> stack;
         int top = 0;
         Pending at{0, 0, T(0)};
         for (;;) {
             if (at.count == 0) {
-                // A node: its children the ray may cross, nearest first; the nearest is
-                // taken next, the others wait on the stack, the farthest deepest.
+                // A node: its children the ray may cross, nearest first (or in lane
+                // order); the first is taken next, the others wait on the stack, the
+                // last deepest.
                 const BvhNode<T>& node = nodes_[at.first];
-                std::array<T, 4> near{};
+                std::array<T, width> near{};
                 unsigned hits = slab.may_cross(node, range, near);
                 if (hits != 0) {
-                    std::array<Pending, 4> met;
+                    std::array<Pending, width> met;
                     int n = 0;
                     for (; hits != 0; hits &= hits - 1) {
                         const auto lane = std::size_t(std::countr_zero(hits));
@@ -361,7 +374,7 @@ private:
     }
 
     /// Collapses the binary tree into nodes_: each node takes the binary node's children
-    /// and then, while it has fewer than four, splits its largest child that is no leaf.
+    /// and then, while it has fewer than `width`, splits its largest child that is no leaf.
     constexpr void collapse(const std::vector<BinaryNode>& binary)
     {
         bounds_ = binary[0].box;
@@ -370,14 +383,14 @@ private:
             std::uint32_t binary, node;
         };
         std::vector<Job> jobs{{0, 0}};
-        nodes_.push_back(empty_node());
+        nodes_.emplace_back();
         while (!jobs.empty()) {
             const Job job = jobs.back();
             jobs.pop_back();
-            std::array<std::uint32_t, 4> children{job.binary};
+            std::array<std::uint32_t, width> children{job.binary};
             int n = 1;
             if (binary[job.binary].count == 0) children = {binary[job.binary].first, binary[job.binary].first + 1}, n = 2;
-            while (n < 4) {
+            while (n < width) {
                 int largest = -1;
                 for (int c = 0; c < n; ++c) {
                     const BinaryNode& b = binary[children[std::size_t(c)]];
@@ -396,19 +409,12 @@ private:
                 std::uint32_t first = b.first;
                 if (b.count == 0) {
                     first = std::uint32_t(nodes_.size());
-                    nodes_.push_back(empty_node());
+                    nodes_.emplace_back();
                     jobs.push_back({children[std::size_t(c)], first});
                 }
                 nodes_[job.node].set(c, b.box, first, b.count);
             }
         }
-    }
-
-    [[nodiscard]] static constexpr BvhNode<T> empty_node() noexcept
-    {
-        BvhNode<T> node;
-        for (int c = 0; c < BvhNode<T>::width; ++c) node.set(c, Aabb<T>{}, 0, 0);
-        return node;
     }
 
     /// The binary tree, its root first; fills primitives_ and depth_.
