@@ -45,7 +45,7 @@ int main(int argc, char** argv)
                 if (!said) continue;
                 ++decided;
                 bool lit = false;
-                prism::for_each_light_arriving<prism::ShadowsThroughGlass::blocked>(scene, c, n, [&](const prism::LightSample<float>&, const prism::Rgb<float>& v, float) {
+                prism::for_each_light_arriving<prism::ShadowsThroughGlass::blocked>(scene, c, [&](const prism::LightSample<float>&, const prism::Rgb<float>& v, float) {
                     lit = v.x > 0.0f;
                 });
                 wrong += *said != lit;

@@ -2,7 +2,8 @@
 // glass_bunny: the Stanford bunny (a closed 3674-triangle mesh, assets/bunny.obj) in
 // glass on a checkered floor under a point light, photon-mapped: the bunny focuses the
 // light into a caustic inside its shadow. Around it, twelve small clay bunnies: one mesh
-// and one Bvh shared by twelve transforms (instances, a two-level hierarchy).
+// and one Bvh shared by twelve transforms (instances, a two-level hierarchy). The file
+// has no normals; smooth vertex normals (vertex_normals) shade it.
 #include "cli.hpp"
 #include "methods.hpp"
 
@@ -28,8 +29,12 @@ int main(int argc, char** argv)
                              {.photons = true}))
             return 0;
         // The bunny is 9.66 tall with its feet at y = 0 (to 0.003): 2.1 tall here.
-        const MeshBuffers<float> buffers = load_obj<float>(std::filesystem::path(PRISM_ASSET_DIR) / "bunny.obj");
-        const TriangleMesh<float> bunny(buffers.positions, buffers.triangles);
+        // The file has no normals: smooth ones from the faces around each vertex, so the
+        // glass refracts as a smooth bunny would (a faceted one breaks the caustic into
+        // the facets' little images).
+        MeshBuffers<float> buffers = load_obj<float>(std::filesystem::path(PRISM_ASSET_DIR) / "bunny.obj");
+        buffers.normals = vertex_normals(buffers);
+        const TriangleMesh<float> bunny(buffers);
         const Transform<float> big = Transform<float>::scale(Vec3<float>(0.22f)).then(Transform<float>::rotate_y(-20)).then(Transform<float>::translate({0, 0.001f, 0}));
         ObjectArray<Transformed<TriangleMesh<float>>, Diffuse<float>> clay;
         for (int i = 0; i < 12; ++i) {

@@ -93,6 +93,10 @@ concept Scalar = std::floating_point<T>;
 template <Scalar T>
 using Vec3 = glm::vec<3, T, glm::defaultp>;
 
+/// A point in 2D: surface (texture) coordinates.
+template <Scalar T>
+using Vec2 = glm::vec<2, T, glm::defaultp>;
+
 /// Linear RGB: radiance, irradiance, albedo or a per-channel factor.
 template <Scalar T>
 using Rgb = glm::vec<3, T, glm::defaultp>;
@@ -2019,9 +2023,25 @@ struct Crossing {
     Vec3<T> error; ///< absolute error bound of `point`, per axis
     Vec3<T> normal; ///< unit outward normal (the gradient of the inside function)
     bool entering; ///< the ray goes from outside to inside here (gradient . direction < 0)
+    Vec3<T> shading; ///< unit outward shading normal: a mesh's interpolated vertex normal, else `normal`
+    Vec2<T> uv;      ///< surface coordinates: a mesh's interpolated ones, else (0, 0)
+
+    /// A crossing of a surface without vertex normals or coordinates: it shades with
+    /// its true normal.
+    [[nodiscard]] static constexpr Crossing flat(T t, const Vec3<T>& point, const Vec3<T>& error, const Vec3<T>& normal, bool entering) noexcept
+    {
+        return {t, point, error, normal, entering, normal, Vec2<T>(T(0))};
+    }
 
     /// The unit normal on the side the ray arrives from (outward when it enters).
     [[nodiscard]] constexpr Vec3<T> facing_normal() const noexcept { return entering ? normal : -normal; }
+
+    /// The unit shading normal, turned to the side the ray arrives from as `normal` is
+    /// (it may still lean away from the ray: see material/scattering.hpp).
+    [[nodiscard]] constexpr Vec3<T> facing_shading() const noexcept { return entering ? shading : -shading; }
+
+    /// Whether the shading normal is the true one (every shape but a mesh with vertex normals).
+    [[nodiscard]] constexpr bool shades_flat() const noexcept { return shading == normal; }
 
     /// A crossing without its surface: point, error and normal are left unwritten (zeros
     /// in a constant expression), for the queries that never read them.
@@ -2263,7 +2283,7 @@ public:
             inside = now;
             // The result's surface here is the first child's where it has one.
             Crossing<T> c = from_a != nullptr ? *from_a : *from_b;
-            if (from_a == nullptr && Op::flips_second) c.normal = -c.normal;
+            if (from_a == nullptr && Op::flips_second) c.normal = -c.normal, c.shading = -c.shading;
             c.entering = now;
             out.push_back(c);
         }
@@ -2473,7 +2493,7 @@ private:
         point[axis] = high_face ? hi_[axis] : lo_[axis];
         error[axis] = T(0);
         normal[axis] = high_face ? T(1) : T(-1);
-        return {t, point, error, normal, entering};
+        return Crossing<T>::flat(t, point, error, normal, entering);
     }
 
     Vec3<T> lo_{};
@@ -2512,12 +2532,18 @@ static_assert(Shape<Box<double>>);
 // often within one query's range gives a CSG node or a shadow ray through glass only
 // its first N (2 to 64; 8 by default).
 //
+// Vertex normals and coordinates (optional, one per position): a hit's shading normal
+// is its vertex normals interpolated by the barycentric weights (the true normal where
+// that leans to the other side of the triangle), and its uv likewise. They change how
+// the surface shades (material/scattering.hpp), never where it is or which side is out.
+//
 // The mesh's data (vertices in leaf order, the Bvh) is immutable and shared: copies of
 // a mesh, and Transformed meshes in an ObjectArray (instances), hold one copy of it.
 
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -2529,6 +2555,16 @@ namespace prism {
 
 /// Three vertex indices, counter-clockwise seen from outside.
 using TriangleIndices = std::array<std::uint32_t, 3>;
+
+/// Positions and triangles, counter-clockwise seen from outside, and optionally a unit
+/// normal and surface coordinates per position: what a TriangleMesh is built from.
+template <Scalar T>
+struct MeshBuffers {
+    std::vector<Vec3<T>> positions;
+    std::vector<TriangleIndices> triangles;
+    std::vector<Vec3<T>> normals; ///< per position, pointing out, or empty (shade flat)
+    std::vector<Vec2<T>> uvs;     ///< per position, or empty (uv (0, 0))
+};
 
 namespace detail {
 
@@ -2629,6 +2665,8 @@ template <Scalar T>
 struct MeshData {
     std::vector<std::array<Vec3<T>, 3>> corners; ///< per triangle, in the Bvh's leaf order
     std::vector<std::uint32_t> input_index;      ///< the triangle's index in the input
+    std::vector<std::array<Vec3<T>, 3>> normals; ///< per triangle, its corners' unit normals (or none)
+    std::vector<std::array<Vec2<T>, 3>> uvs;     ///< per triangle, its corners' coordinates (or none)
     Bvh<T> bvh;
     Aabb<T> bounds;
     bool closed = false;
@@ -2644,10 +2682,14 @@ public:
     using scalar_type = T;
     static constexpr std::size_t max_crossings = N;
 
-    /// A mesh of `triangles` over `positions`; throws std::invalid_argument for no
-    /// triangle, an index past the positions, a non-finite position, or a closed mesh
-    /// whose triangles wind inward (negative volume: reverse each triangle's order).
-    TriangleMesh(std::span<const Vec3<T>> positions, std::span<const TriangleIndices> triangles, BvhConfig config = {})
+    /// A mesh of `triangles` over `positions`, with a normal and coordinates per position
+    /// where `normals` and `uvs` are not empty; throws std::invalid_argument for no
+    /// triangle, an index past the positions, a non-finite position, a closed mesh whose
+    /// triangles wind inward (negative volume: reverse each triangle's order), normals or
+    /// uvs not one per position, a normal that is not finite and non-zero, a non-finite
+    /// uv, or a triangle whose three normals all point against its winding.
+    TriangleMesh(std::span<const Vec3<T>> positions, std::span<const TriangleIndices> triangles, BvhConfig config = {},
+                 std::span<const Vec3<T>> normals = {}, std::span<const Vec2<T>> uvs = {})
     {
         if (triangles.empty()) detail::throw_invalid("TriangleMesh triangles must not be empty");
         for (std::size_t i = 0; i < positions.size(); ++i)
@@ -2655,6 +2697,8 @@ public:
         for (std::size_t f = 0; f < triangles.size(); ++f)
             for (const std::uint32_t v : triangles[f])
                 if (v >= positions.size()) detail::throw_invalid("TriangleMesh triangle ", f, " has vertex index ", v, ", past the ", positions.size(), " positions");
+        std::vector<Vec3<T>> unit_normals(normals.size());
+        validate_attributes(positions, triangles, normals, uvs, unit_normals);
         auto data = std::make_shared<detail::MeshData<T>>();
         data->closed = is_closed(triangles);
         if (data->closed) {
@@ -2682,6 +2726,20 @@ public:
             const TriangleIndices& f = triangles[order[k]];
             data->corners[k] = {positions[f[0]], positions[f[1]], positions[f[2]]};
         }
+        if (!normals.empty()) {
+            data->normals.resize(order.size());
+            for (std::size_t k = 0; k < order.size(); ++k) {
+                const TriangleIndices& f = triangles[order[k]];
+                data->normals[k] = {unit_normals[f[0]], unit_normals[f[1]], unit_normals[f[2]]};
+            }
+        }
+        if (!uvs.empty()) {
+            data->uvs.resize(order.size());
+            for (std::size_t k = 0; k < order.size(); ++k) {
+                const TriangleIndices& f = triangles[order[k]];
+                data->uvs[k] = {uvs[f[0]], uvs[f[1]], uvs[f[2]]};
+            }
+        }
         data_ = std::move(data);
     }
 
@@ -2690,16 +2748,26 @@ public:
     {
     }
 
+    /// The mesh of `mesh`'s buffers, with its normals and uvs where it has them.
+    explicit TriangleMesh(const MeshBuffers<T>& mesh, BvhConfig config = {})
+        : TriangleMesh(std::span<const Vec3<T>>(mesh.positions), std::span<const TriangleIndices>(mesh.triangles), config,
+                       std::span<const Vec3<T>>(mesh.normals), std::span<const Vec2<T>>(mesh.uvs))
+    {
+    }
+
     [[nodiscard]] bool closed() const noexcept { return data_->closed; }
+    [[nodiscard]] bool has_normals() const noexcept { return !data_->normals.empty(); }
+    [[nodiscard]] bool has_uvs() const noexcept { return !data_->uvs.empty(); }
     [[nodiscard]] std::size_t triangle_count() const noexcept { return data_->corners.size(); }
     [[nodiscard]] const Bvh<T>& bvh() const noexcept { return data_->bvh; }
     [[nodiscard]] Aabb<T> bounds() const noexcept { return data_->bounds; }
-    /// Bytes held by the shared data (vertices, indices, Bvh), for every copy together.
+    /// Bytes held by the shared data (vertices, normals, uvs, indices, Bvh), for every
+    /// copy together.
     [[nodiscard]] std::size_t memory_bytes() const noexcept
     {
         const auto& d = *data_;
-        return sizeof(d) + d.corners.size() * (sizeof(d.corners[0]) + sizeof(d.input_index[0])) + d.bvh.nodes().size() * sizeof(BvhNode<T>) +
-               d.bvh.primitives().size() * sizeof(std::uint32_t);
+        return sizeof(d) + d.corners.size() * (sizeof(d.corners[0]) + sizeof(d.input_index[0])) + d.normals.size() * sizeof(d.normals[0]) +
+               d.uvs.size() * sizeof(d.uvs[0]) + d.bvh.nodes().size() * sizeof(BvhNode<T>) + d.bvh.primitives().size() * sizeof(std::uint32_t);
     }
 
     /// Inside a closed mesh: the first crossing along a fixed direction from p leaves it.
@@ -2876,7 +2944,45 @@ private:
         // The outward normal as the triangle winds (non-zero: a degenerate triangle is
         // never hit).
         const Vec3<T> normal = normalize(cross(c[1] - c[0], c[2] - c[0]));
-        return {h.t, point, error, normal, entering};
+        Crossing<T> out = Crossing<T>::flat(h.t, point, error, normal, entering);
+        if (!data_->normals.empty()) {
+            const auto& n = data_->normals[h.triangle];
+            const Vec3<T> shading = h.b[0] * n[0] + h.b[1] * n[1] + h.b[2] * n[2];
+            // Leaning over the triangle's edge (opposed normals across a fold): flat.
+            if (dot(shading, normal) > T(0)) out.shading = normalize(shading);
+        }
+        if (!data_->uvs.empty()) {
+            const auto& uv = data_->uvs[h.triangle];
+            out.uv = h.b[0] * uv[0] + h.b[1] * uv[1] + h.b[2] * uv[2];
+        }
+        return out;
+    }
+
+    static void validate_attributes(std::span<const Vec3<T>> positions, std::span<const TriangleIndices> triangles, std::span<const Vec3<T>> normals,
+                                    std::span<const Vec2<T>> uvs, std::vector<Vec3<T>>& unit_normals)
+    {
+        if (!normals.empty() && normals.size() != positions.size())
+            detail::throw_invalid("TriangleMesh normals must be one per position (", positions.size(), "), got ", normals.size());
+        if (!uvs.empty() && uvs.size() != positions.size())
+            detail::throw_invalid("TriangleMesh uvs must be one per position (", positions.size(), "), got ", uvs.size());
+        for (std::size_t i = 0; i < uvs.size(); ++i)
+            if (!std::isfinite(uvs[i].x) || !std::isfinite(uvs[i].y))
+                detail::throw_invalid("TriangleMesh uv ", i, " must be finite, got (", uvs[i].x, ", ", uvs[i].y, ")");
+        for (std::size_t i = 0; i < normals.size(); ++i) {
+            const Vec3<double> n(normals[i]);
+            const double len = length(n);
+            if (!is_finite(normals[i]) || !(len > 0) || !std::isfinite(len))
+                detail::throw_invalid("TriangleMesh normal ", i, " must be finite and non-zero, got ", detail::describe(normals[i]));
+            unit_normals[i] = Vec3<T>(n / len);
+        }
+        if (normals.empty()) return;
+        for (std::size_t f = 0; f < triangles.size(); ++f) {
+            const TriangleIndices& v = triangles[f];
+            const Vec3<double> a(positions[v[0]]), face = cross(Vec3<double>(positions[v[1]]) - a, Vec3<double>(positions[v[2]]) - a);
+            if (dot(face, Vec3<double>(unit_normals[v[0]])) < 0 && dot(face, Vec3<double>(unit_normals[v[1]])) < 0 &&
+                dot(face, Vec3<double>(unit_normals[v[2]])) < 0)
+                detail::throw_invalid("TriangleMesh triangle ", f, " has all three normals pointing against its winding: reverse the normals or the vertex order");
+        }
     }
 
     [[nodiscard]] static bool is_closed(std::span<const TriangleIndices> triangles)
@@ -2909,6 +3015,7 @@ static_assert(Shape<TriangleMesh<double>>);
 // Generated triangle meshes: a geodesic sphere, a box, a height field.
 
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -2917,13 +3024,36 @@ static_assert(Shape<TriangleMesh<double>>);
 
 namespace prism {
 
-/// Positions and triangles, counter-clockwise seen from outside: what a TriangleMesh is
-/// built from.
+/// Smooth normals for `mesh`, one per position: the normals of the triangles around
+/// each vertex weighted by their angles there (Thuermer & Wuethrich 1998, so a vertex's
+/// normal does not depend on how its neighbourhood is split into triangles). A position
+/// that no non-degenerate triangle uses gets (0, 1, 0): it is never shaded.
 template <Scalar T>
-struct MeshBuffers {
-    std::vector<Vec3<T>> positions;
-    std::vector<TriangleIndices> triangles;
-};
+[[nodiscard]] std::vector<Vec3<T>> vertex_normals(const MeshBuffers<T>& mesh)
+{
+    std::vector<Vec3<double>> sum(mesh.positions.size(), Vec3<double>(0));
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+        const TriangleIndices& v = mesh.triangles[f];
+        for (const std::uint32_t i : v)
+            if (i >= mesh.positions.size()) detail::throw_invalid("vertex_normals triangle ", f, " has vertex index ", i, ", past the ", mesh.positions.size(), " positions");
+        const std::array<Vec3<double>, 3> p = {Vec3<double>(mesh.positions[v[0]]), Vec3<double>(mesh.positions[v[1]]), Vec3<double>(mesh.positions[v[2]])};
+        const Vec3<double> face = cross(p[1] - p[0], p[2] - p[0]);
+        const double area2 = length(face);
+        if (!(area2 > 0)) continue;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Vec3<double> e1 = p[(k + 1) % 3] - p[k], e2 = p[(k + 2) % 3] - p[k];
+            // The corner's angle, from atan2 (accurate at small and large angles alike).
+            const double angle = std::atan2(length(cross(e1, e2)), dot(e1, e2));
+            sum[v[k]] += face * (angle / area2);
+        }
+    }
+    std::vector<Vec3<T>> out(sum.size());
+    for (std::size_t i = 0; i < sum.size(); ++i) {
+        const double len = length(sum[i]);
+        out[i] = len > 0 ? Vec3<T>(sum[i] / len) : Vec3<T>(T(0), T(1), T(0));
+    }
+    return out;
+}
 
 /// A geodesic sphere: an icosahedron with each triangle split in four `subdivisions`
 /// times, every vertex on the sphere (20 * 4^subdivisions triangles). Closed.
@@ -3087,7 +3217,7 @@ private:
         const Vec3<T> n_abs = abs(normal_);
         const T along = gamma<T>(4) * (dot(n_abs, abs(point)) + (offset_ < T(0) ? -offset_ : offset_));
         const Vec3<T> error = along * n_abs + gamma<T>(1) * abs(point);
-        return {t, point, error, normal_, entering};
+        return Crossing<T>::flat(t, point, error, normal_, entering);
     }
 
     Vec3<T> normal_{T(0), T(1), T(0)};
@@ -3464,7 +3594,7 @@ private:
         }
         // Back to world coordinates: one more rounding of the sum.
         const Vec3<T> world = point + origin_;
-        return {t, world, error + gamma<T>(1) * abs(world), normal, entering};
+        return Crossing<T>::flat(t, world, error + gamma<T>(1) * abs(world), normal, entering);
     }
 
     /// Bounds of an ellipsoid (Q3 positive definite, solid non-empty), else the universe:
@@ -3635,7 +3765,7 @@ private:
         const Vec3<T> offset = normal * radius_;
         const Vec3<T> point = center_ + offset;
         const Vec3<T> error = gamma<T>(5) * abs(offset) + gamma<T>(1) * abs(point);
-        return {t, point, error, normal, entering};
+        return Crossing<T>::flat(t, point, error, normal, entering);
     }
 
     Vec3<T> center_;
@@ -3778,7 +3908,9 @@ private:
         const Vec3<T> world = to_world_.point(c.point);
         c.error = to_world_.point_error(c.point, c.error + to_world_.inverse_point_error(world));
         c.point = world;
+        const bool flat = c.shades_flat();
         c.normal = normalize(to_world_.normal(c.normal));
+        c.shading = flat ? c.normal : normalize(to_world_.normal(c.shading));
     }
 
     /// The box around the eight transformed corners of the shape's box.
@@ -3933,10 +4065,13 @@ struct DiffuseResponse {
     [[nodiscard]] constexpr Rgb<T> photon_reflectance() const noexcept { return component_min(albedo * kd, Rgb<T>(T(1))); }
 };
 
-/// A Lambertian lobe: `diffuse(p)` gives its response at the surface point p.
+/// A Lambertian lobe: `diffuse(p)`, or `diffuse(p, uv)` for one that reads surface
+/// coordinates, gives its response at the surface point p.
 template <class M>
 concept DiffuseLobe = requires(const M& material, const Vec3<typename M::scalar_type>& p) {
     { material.diffuse(p) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
+} || requires(const M& material, const Vec3<typename M::scalar_type>& p, const Vec2<typename M::scalar_type>& uv) {
+    { material.diffuse(p, uv) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
 };
 
 /// What a delta interaction sees at a surface point: the incident cosine, the refracted
@@ -4002,7 +4137,7 @@ concept Material = requires(const M& material) {
     { M::transmits } -> std::convertible_to<bool>;
     material.validate();
 } && (M::has_diffuse || M::reflects || M::transmits) // a material does at least one thing
-  && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) -> DiffuseResponse<T>
+  && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) or diffuse(p, uv) -> DiffuseResponse<T>
   && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i or query) -> Rgb<T>
   && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta or query), reflection_tint(), transmission_tint()
   && (!M::transmits || InteriorMedium<M>);          // transmits promises medium(), a Medium of the same scalar type
@@ -4402,15 +4537,61 @@ private:
 
 namespace prism {
 
+// Shading normals
+//
+// A mesh with vertex normals shades with its interpolated normal (Crossing::shading)
+// while its true normal still says where the surface is. Lobes are taken about the
+// shading normal; the true one keeps every ray on its side:
+// - light from the lights counts where it arrives above both (the cosine is the
+//   shading normal's);
+// - a mirror or an interface turns rays about the shading normal unless a ray would
+//   leave on the wrong side of the true surface (a reflection into the solid, a
+//   refraction back out), and then about the true normal (delta_normal);
+// - a photon scattered by a diffuse lobe leaves cosine-distributed about the shading
+//   normal, with Veach's adjoint correction (1997, section 5.3.6) for the shading
+//   normal's asymmetry, and is absorbed where it would go into the solid
+//   (scatter_photon);
+// - photon density estimates stay the true surface's irradiance (they omit the
+//   per-photon factor |w.ns| / |w.ng| of a shading normal).
+// For every other shape the shading normal is the true one and all of this reduces to
+// the true normal's arithmetic, bit for bit.
+
+namespace detail {
+
+/// Whether a ray sent on by a delta interaction leaves on the right side of the true
+/// surface (ng: its unit normal facing the arriving ray): back for a reflection,
+/// through for a refraction.
+template <Scalar T>
+[[nodiscard]] constexpr bool leaves_correctly(const Vec3<T>& direction, bool transmitted, const Vec3<T>& ng) noexcept
+{
+    return transmitted ? dot(direction, ng) < T(0) : dot(direction, ng) > T(0);
+}
+
+} // namespace detail
+
 // Diffuse lobe
 
-/// The diffuse response at the surface point p.
+/// The diffuse response at a crossing's point (and surface coordinates, for a lobe that
+/// reads them).
 template <Material M>
     requires DiffuseLobe<M>
 [[nodiscard]] constexpr DiffuseResponse<typename M::scalar_type> diffuse_response(const M& material,
-                                                                                 const Vec3<typename M::scalar_type>& p) noexcept
+                                                                                 const Crossing<typename M::scalar_type>& at) noexcept
 {
-    return material.diffuse(p);
+    if constexpr (requires { material.diffuse(at.point, at.uv); })
+        return material.diffuse(at.point, at.uv);
+    else
+        return material.diffuse(at.point);
+}
+
+/// The cosine weighting light from the unit direction wi at `hit` for a diffuse lobe:
+/// the shading normal's cosine (n_shading: Crossing::facing_shading) where wi is above
+/// it and above the true surface (n_true: Crossing::facing_normal), else 0.
+template <Scalar T>
+[[nodiscard]] constexpr T shading_cosine(const Vec3<T>& n_shading, const Vec3<T>& n_true, const Vec3<T>& wi) noexcept
+{
+    const T cos = dot(n_shading, wi);
+    return cos > T(0) && dot(n_true, wi) > T(0) ? cos : T(0);
 }
 
 /// A non-physical highlight (POV-Ray's `phong`), for materials that have one: its weight
@@ -4539,6 +4720,30 @@ template <Material M>
     return split;
 }
 
+/// The unit normal a mirror or an interface at `hit` turns the unit direction d about,
+/// for light of one wavelength (0: white; outside_index as for delta_split): the
+/// shading normal facing d where d arrives against it and the reflected and refracted
+/// rays about it leave on the right side of the true surface, the true normal facing d
+/// elsewhere (and always, for a surface that shades flat).
+template <Material M>
+    requires(M::reflects || M::transmits)
+[[nodiscard]] Vec3<typename M::scalar_type> delta_normal(const M& material, const Vec3<typename M::scalar_type>& d,
+                                                         const Crossing<typename M::scalar_type>& hit,
+                                                         typename M::scalar_type wavelength_nm = 0,
+                                                         typename M::scalar_type outside_index = 1) noexcept
+{
+    using T = typename M::scalar_type;
+    const Vec3<T> ng = hit.facing_normal();
+    if (hit.shades_flat()) return ng;
+    const Vec3<T> ns = hit.facing_shading();
+    if (!(dot(d, ns) < T(0)) || !detail::leaves_correctly(reflect(d, ns), false, ng)) return ng;
+    if constexpr (M::transmits) {
+        const SpecularSplit<T> split = delta_split(material, d, ns, hit.entering, hit.point, wavelength_nm, outside_index);
+        if (split.refracted && !detail::leaves_correctly(*split.refracted, true, ng)) return ng;
+    }
+    return ns;
+}
+
 /// The rays a mirror or an interface sends on, each passed to
 /// emit(direction, weight, wavelength_nm, transmitted): the reflected ray, then the
 /// refracted one. `outside_index(wavelength_nm)` is the index of the medium on the
@@ -4547,15 +4752,28 @@ template <Material M>
 /// share of white and carrying its wavelength; the reflected ray, whose direction no
 /// wavelength changes, stays white, weighted by the bands' reflectances summed (so white
 /// light meeting a dispersive interface costs one ray more per band, not per band squared).
+/// The rays turn about delta_normal's normal (for white light meeting a dispersive
+/// interface, about the shading normal only if every band's refraction about it leaves
+/// correctly).
 template <Material M, class OutsideIndex, class Emit>
     requires(M::reflects || M::transmits)
-void for_each_delta_ray(const M& material, const Vec3<typename M::scalar_type>& d, const Vec3<typename M::scalar_type>& n,
-                        const Crossing<typename M::scalar_type>& hit, typename M::scalar_type wavelength_nm,
-                        const SpectralBands<typename M::scalar_type>& bands, OutsideIndex&& outside_index, Emit&& emit)
+void for_each_delta_ray(const M& material, const Vec3<typename M::scalar_type>& d, const Crossing<typename M::scalar_type>& hit,
+                        typename M::scalar_type wavelength_nm, const SpectralBands<typename M::scalar_type>& bands,
+                        OutsideIndex&& outside_index, Emit&& emit)
 {
     using T = typename M::scalar_type;
+    Vec3<T> n = hit.shades_flat() ? hit.facing_normal() : delta_normal(material, d, hit, wavelength_nm, T(outside_index(wavelength_nm)));
     if constexpr (disperses<M>) {
         if (wavelength_nm == T(0)) {
+            if (n != hit.facing_normal())
+                for (const WavelengthBand<T>& band : bands) {
+                    const SpecularSplit<T> split =
+                        delta_split(material, d, n, hit.entering, hit.point, band.wavelength_nm, T(outside_index(band.wavelength_nm)));
+                    if (split.refracted && !detail::leaves_correctly(*split.refracted, true, hit.facing_normal())) {
+                        n = hit.facing_normal();
+                        break;
+                    }
+                }
             Rgb<T> kr{T(0)};
             for (const WavelengthBand<T>& band : bands) {
                 const SpecularSplit<T> split =
@@ -4612,6 +4830,11 @@ constexpr void attenuate_shadow_ray(const M& material, const Crossings<typename 
 
 // Photons
 
+/// What a path carries: light from the lights (a photon: importance transport, whose
+/// scattering at a shading normal takes Veach's adjoint correction), or importance from
+/// the camera (a camera path: radiance transport).
+enum class Transport { importance, radiance };
+
 /// A photon's next direction after scattering, and whether the bounce was diffuse.
 template <Scalar T>
 struct PhotonBounce {
@@ -4619,19 +4842,23 @@ struct PhotonBounce {
     bool diffuse;
 };
 
-/// Scatter a photon of `power` arriving along the unit direction d at `hit` (n: the
-/// unit normal facing it), by Russian roulette per channel (errata 7): a diffuse lobe
-/// reflects its photon reflectance into a cosine-distributed direction; an interface
-/// reflects with probability F and refracts otherwise, weighted by its tints; a
-/// conductor reflects by its reflectance. A material with a diffuse and a delta lobe
-/// first chooses one by their largest channels, dividing the power by that choice's
-/// probability. A photon of one wavelength (nanometres; 0: white) refracts at its
-/// index; `outside_index` is the index on the material's other side (1: air). Returns nothing when the photon is absorbed; scales `power` otherwise.
-template <Material M>
+/// Scatter a photon of `power` arriving along the unit direction d at `hit`, by Russian
+/// roulette per channel (errata 7): a diffuse lobe reflects its photon reflectance into
+/// a cosine-distributed direction; an interface reflects with probability F and
+/// refracts otherwise, weighted by its tints; a conductor reflects by its reflectance.
+/// A material with a diffuse and a delta lobe first chooses one by their largest
+/// channels, dividing the power by that choice's probability. A photon of one
+/// wavelength (nanometres; 0: white) refracts at its index; `outside_index` is the index
+/// on the material's other side (1: air). Returns nothing when the photon is absorbed;
+/// scales `power` otherwise. With a shading normal (see above), the diffuse direction is
+/// cosine-distributed about it and a diffuse bounce sent into the solid is absorbed; a
+/// photon (Transport::importance) also takes Veach's correction |d.ns| |w.ng| /
+/// (|d.ng| |w.ns|) and is absorbed where it arrives behind the shading normal. A camera
+/// path (Transport::radiance) scatters by the same rules without them.
+template <Transport Mode = Transport::importance, Material M>
 [[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
                                                                                    const Crossing<typename M::scalar_type>& hit,
                                                                                    const Vec3<typename M::scalar_type>& d,
-                                                                                   const Vec3<typename M::scalar_type>& n,
                                                                                    Rgb<typename M::scalar_type>& power, Pcg32& rng,
                                                                                    typename M::scalar_type wavelength_nm = 0,
                                                                                    typename M::scalar_type outside_index = 1) noexcept
@@ -4640,11 +4867,24 @@ template <Material M>
     using Bounce = std::optional<PhotonBounce<T>>;
     // Each lobe's scattering, given what the material does here (computed once, also for
     // choosing between two lobes).
+    const Vec3<T> n = hit.facing_normal();
     const auto scatter_diffusely = [&](const Rgb<T>& reflectance) -> Bounce {
         if (!russian_roulette(power, reflectance, rng)) return std::nullopt;
-        return PhotonBounce<T>{cosine_hemisphere(n, rng), true};
+        if (hit.shades_flat()) return PhotonBounce<T>{cosine_hemisphere(n, rng), true};
+        const Vec3<T> ns = hit.facing_shading();
+        const Vec3<T> w = cosine_hemisphere(ns, rng);
+        const T w_g = dot(w, n);
+        if (!(w_g > T(0))) return std::nullopt;
+        if constexpr (Mode == Transport::importance) {
+            const T d_s = -dot(d, ns), d_g = -dot(d, n), w_s = dot(w, ns);
+            if (!(d_s > T(0))) return std::nullopt;
+            const T correction = (d_s * w_g) / (d_g * w_s);
+            if (!(correction < infinity<T>)) return std::nullopt; // d_g or w_s rounded to 0: no finite weight
+            power *= correction;
+        }
+        return PhotonBounce<T>{w, true};
     };
-    const auto scatter_specularly = [&](const SpecularSplit<T>& split) -> Bounce {
+    const auto scatter_specularly = [&](const SpecularSplit<T>& split, const Vec3<T>& about) -> Bounce {
         if constexpr (M::transmits) {
             // Reflect with probability F (the mean of F per channel), refract otherwise;
             // each then by its tint. Per-channel F weighs the survivor by F / mean.
@@ -4654,16 +4894,17 @@ template <Material M>
                 power *= reflect_it ? split.fresnel / split.reflected_share
                                     : (Rgb<T>(T(1)) - split.fresnel) / (T(1) - split.reflected_share);
             }
-            return PhotonBounce<T>{reflect_it ? reflect(d, n) : *split.refracted, false};
+            return PhotonBounce<T>{reflect_it ? reflect(d, about) : *split.refracted, false};
         } else {
             if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
-            return PhotonBounce<T>{reflect(d, n), false};
+            return PhotonBounce<T>{reflect(d, about), false};
         }
     };
     if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
         // Both lobes: choose one by its share of the reflected light (largest channels).
-        const Rgb<T> reflectance = diffuse_response(material, hit.point).photon_reflectance();
-        const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, wavelength_nm, outside_index);
+        const Rgb<T> reflectance = diffuse_response(material, hit).photon_reflectance();
+        const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
+        const SpecularSplit<T> split = delta_split(material, d, n_delta, hit.entering, hit.point, wavelength_nm, outside_index);
         const T w_diffuse = max_component(reflectance), w_delta = max_component(split.kr + split.kt);
         if (!(w_diffuse + w_delta > T(0))) return std::nullopt;
         const T p_diffuse = w_diffuse / (w_diffuse + w_delta);
@@ -4672,11 +4913,12 @@ template <Material M>
             return scatter_diffusely(reflectance);
         }
         power /= T(1) - p_diffuse;
-        return scatter_specularly(split);
+        return scatter_specularly(split, n_delta);
     } else if constexpr (M::has_diffuse) {
-        return scatter_diffusely(diffuse_response(material, hit.point).photon_reflectance());
+        return scatter_diffusely(diffuse_response(material, hit).photon_reflectance());
     } else {
-        return scatter_specularly(delta_split(material, d, n, hit.entering, hit.point, wavelength_nm, outside_index));
+        const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
+        return scatter_specularly(delta_split(material, d, n_delta, hit.entering, hit.point, wavelength_nm, outside_index), n_delta);
     }
 }
 
@@ -5405,17 +5647,18 @@ namespace prism {
 template <Scalar T>
 inline constexpr T shadow_epsilon = T(1e-4);
 
-/// For each light in front of the surface (unit normal n facing the viewer), call
+/// For each light in front of the surface on the side the ray arrived from, call
 /// f(sample, v, cos): the light's sample at the point, the shadow ray's transmittance v
-/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface. Lights
-/// behind the surface are not visited: they count as occluded. How dielectrics shadow:
-/// see Scene::transmittance.
+/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface (the
+/// shading normal's: shading_cosine). Lights behind the surface are not visited: they
+/// count as occluded. How dielectrics shadow: see Scene::transmittance.
 template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
-void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const Vec3<T>& n, F&& f)
+void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, F&& f)
 {
+    const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
     scene.for_each_light([&](const auto& light) {
         const LightSample<T> s = light.sample(hit.point);
-        const T cos = dot(n, s.wi);
+        const T cos = shading_cosine(n_shading, n, s.wi);
         if (!(cos > T(0))) return;
         const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
         f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
@@ -6612,8 +6855,8 @@ struct WalkVertex {
 /// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
 /// on_diffuse(material, WalkVertex) is called at every diffuse surface and returns false
 /// to end the walk there; on_escape(ray, power, specular_only) when the path leaves the
-/// scene.
-template <class SceneT, class Air, class OnDiffuse, class OnEscape>
+/// scene. `Mode`: whether the path is a photon's or a camera's (scatter_photon).
+template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
                  Rgb<typename SceneT::scalar_type> power, Pcg32& rng, int max_bounces, OnDiffuse&& on_diffuse, OnEscape&& on_escape)
 {
@@ -6668,7 +6911,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 }
             }
             const Vec3<T> n = c.facing_normal();
-            const auto next = scatter_photon(material, c, d, n, power, rng, wavelength, index_of(scene, outside, wavelength));
+            const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, index_of(scene, outside, wavelength));
             if (!next) return Next::absorbed;
             ray = spawn_ray(c.point, c.error, c.normal, next->direction);
             if (next->diffuse) ++diffuse_bounces;
@@ -7310,9 +7553,15 @@ template <class SceneT, class Air = StraightAir>
             const Rgb<T> v = scene.template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
                                                                                          seen->distance);
             if (!(max_component(v) > T(0))) return go_on;
-            const T importance = cos_x / (seen->distance * seen->distance * area * seen->cos * seen->cos * seen->cos);
+            T importance = cos_x / (seen->distance * seen->distance * area * seen->cos * seen->cos * seen->cos);
+            // A shading normal weighs the light arriving here by its own cosine over the
+            // true one (scattering.hpp).
+            if (!c.shades_flat()) {
+                importance *= shading_cosine(c.facing_shading(), c.facing_normal(), -at.direction) / -dot(at.direction, c.facing_normal());
+                if (!(importance < infinity<T>)) return go_on;
+            }
             const std::size_t pixel = std::size_t(seen->y) * width + std::size_t(seen->x);
-            out[pixel] += Rgb<float>(power * diffuse_response(material, c.point).brdf() * v * importance);
+            out[pixel] += Rgb<float>(power * diffuse_response(material, c).brdf() * v * importance);
             return go_on;
         });
     };
@@ -7397,13 +7646,13 @@ public:
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept
     {
         Rgb<T> sum{T(0)};
-        random_walk(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth,
+        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth,
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         const Crossing<T>& c = at.crossing();
                         Rgb<T> irradiance{T(0)};
                         for_each_light_arriving<ShadowsThroughGlass::blocked>(
-                            *scene_, c, c.facing_normal(), [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
-                        sum += at.power * diffuse_response(material, c.point).brdf() * irradiance;
+                            *scene_, c, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
+                        sum += at.power * diffuse_response(material, c).brdf() * irradiance;
                         return at.diffuse_bounces < config_.max_diffuse_bounces;
                     },
                     [&](const Ray<T>&, const Rgb<T>& weight, bool specular_only) {
@@ -7696,9 +7945,9 @@ public:
             detail::parallel_for(found.size(), render.threads, [&](std::size_t i) {
                 const int x = int(i % std::size_t(columns)) * stride, y = int(i / std::size_t(columns)) * stride;
                 const auto seen = first_diffuse_seen(rays.ray(T(x) + T(0.5), T(y) + T(0.5)));
-                if (!seen || cache_.covers(seen->first.point, seen->first.facing_normal())) return;
+                if (!seen || cache_.covers(seen->first.point, seen->first.facing_shading())) return;
                 const std::size_t pixel_index = std::size_t(y) * std::size_t(render.width) + std::size_t(x);
-                found[i] = Candidate{seen->first, seen->first.facing_normal(), seen->second * pixel,
+                found[i] = Candidate{seen->first, seen->first.facing_shading(), seen->second * pixel,
                                      pixel_index + std::size_t(level) * std::size_t(render.width) * std::size_t(render.height)};
             });
             std::vector<Candidate> candidates;
@@ -7773,19 +8022,21 @@ private:
         Rgb<T> radiance{T(0)};
         if constexpr (has_diffuse<M>) {
             const Vec3<float> p(hit.point), nf(n);
-            Rgb<T> irradiance = direct(hit, n) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
+            Rgb<T> irradiance = direct(hit) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
             if (config_.gather_rays > 0) {
-                const std::optional<Rgb<T>> cached = media.empty() ? cache_.irradiance(hit.point, n) : std::nullopt;
-                irradiance += cached ? *cached : gather(hit, n, rng, media.empty(), gather_cells_m_, gather_cells_n_).irradiance;
+                // The final gather (and the cache of its results) is over the shading normal's hemisphere.
+                const Vec3<T> n_shading = hit.facing_shading();
+                const std::optional<Rgb<T>> cached = media.empty() ? cache_.irradiance(hit.point, n_shading) : std::nullopt;
+                irradiance += cached ? *cached : gather(hit, n_shading, rng, media.empty(), gather_cells_m_, gather_cells_n_).irradiance;
             }
             else irradiance += Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
-            radiance += diffuse_response(material, hit.point).brdf() * irradiance;
+            radiance += diffuse_response(material, hit).brdf() * irradiance;
         }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
                 const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
                     const auto outside_index = [&](T lambda) { return index_of(*scene_, outside, lambda); };
-                    for_each_delta_ray(material, d, n, hit, wavelength, bands_, outside_index,
+                    for_each_delta_ray(material, d, hit, wavelength, bands_, outside_index,
                                        [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
                                            if (max_component(weight * k) > config_.min_weight)
                                                radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1, weight * k,
@@ -7809,18 +8060,19 @@ private:
 
     /// Irradiance from the lights by shadow rays (glass opaque), or by what the photons
     /// say about visibility where they agree.
-    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, const Vec3<T>& n) const noexcept
+    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit) const noexcept
     {
         Rgb<T> irradiance{T(0)};
-        if (const std::optional<bool> visible = visibility_from_photons(hit.point, n)) {
+        if (const std::optional<bool> visible = visibility_from_photons(hit.point, hit.facing_normal())) {
             if (!*visible) return irradiance;
+            const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
             scene_->for_each_light([&](const auto& light) {
                 const LightSample<T> s = light.sample(hit.point);
-                irradiance += s.irradiance * std::max(dot(n, s.wi), T(0));
+                irradiance += s.irradiance * shading_cosine(n_shading, n, s.wi);
             });
             return irradiance;
         }
-        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
+        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
         return irradiance;
     }
 
@@ -7844,9 +8096,10 @@ private:
                 if constexpr (has_diffuse<M>) {
                     return true;
                 } else {
-                    const SpecularSplit<T> split = delta_split(material, d, c.facing_normal(), c.entering, c.point);
+                    const Vec3<T> n = delta_normal(material, d, c);
+                    const SpecularSplit<T> split = delta_split(material, d, n, c.entering, c.point);
                     if (split.refracted && max_component(split.kt) >= max_component(split.kr)) next = *split.refracted;
-                    else if (max_component(split.kr) > T(0)) next = reflect(d, c.facing_normal());
+                    else if (max_component(split.kr) > T(0)) next = reflect(d, n);
                     return false;
                 }
             });
@@ -7877,13 +8130,15 @@ private:
             const auto at_diffuse = [&]<class M>(const M& material, const WalkVertex<T>& at) {
                 const Crossing<T>& c = at.crossing();
                 const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
-                found = {at.power * diffuse_response(material, c.point).brdf() * e, at.travelled};
+                found = {at.power * diffuse_response(material, c).brdf() * e, at.travelled};
                 return false;
             };
             const auto escaped = [](const Ray<T>&, const Rgb<T>&, bool) {};
+            // (About a shading normal, a direction may lead into the solid: no light.)
+            if (!hit.shades_flat() && !(dot(direction, hit.facing_normal()) > T(0))) return found;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, direction);
-            if (in_air) random_walk(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
-            else random_walk(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
+            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
             return found;
         });
     }
@@ -8107,10 +8362,9 @@ private:
     {
         const Crossing<T>& hit = h.crossing;
         const Vec3<T>& d = ray.direction;
-        const Vec3<T> n = hit.facing_normal();
         Rgb<T> radiance{T(0)};
 
-        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, n, d);
+        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, d);
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
@@ -8118,7 +8372,7 @@ private:
                 // and the medium of `outside` lies on the surface's far side.
                 const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
                     const auto outside_index = [&](T lambda) { return index_of(*scene_, outside, lambda); };
-                    for_each_delta_ray(material, d, n, hit, wavelength, bands_, outside_index,
+                    for_each_delta_ray(material, d, hit, wavelength, bands_, outside_index,
                                        [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
                                            const Rgb<T> next_weight = weight * k;
                                            if (max_component(next_weight) > config_.min_weight)
@@ -8144,19 +8398,19 @@ private:
     }
 
     template <class M>
-    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& n, const Vec3<T>& d) const noexcept
+    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& d) const noexcept
     {
         Rgb<T> irradiance{T(0)}; // sum of V E cos over the lights
         Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights
         Rgb<T> highlights{T(0)}; // POV-Ray's Phong term, for materials that have one
-        const Vec3<T> mirror = reflect(d, n);
-        for_each_light_arriving(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+        const Vec3<T> mirror = reflect(d, hit.facing_shading());
+        for_each_light_arriving(*scene_, hit, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
             irradiance += v * s.irradiance * cos;
             unlit *= Rgb<T>(T(1)) - v;
             const T h = highlight(material, mirror, s.wi);
             if (h > T(0)) highlights += h * v * s.irradiance;
         });
-        return diffuse_response(material, hit.point).reflected(irradiance, scene_->ambient, unlit) + highlights;
+        return diffuse_response(material, hit).reflected(irradiance, scene_->ambient, unlit) + highlights;
     }
 
     const SceneT* scene_;
@@ -8811,12 +9065,27 @@ static_assert(Material<Dielectric<float>> && Material<Dielectric<double, Schlick
 
 namespace prism {
 
-/// A texture maps a surface point to an albedo in [0, 1] per channel.
+/// A texture maps a surface point, `albedo(p)`, or a point and its surface coordinates,
+/// `albedo(p, uv)` (a mesh's interpolated uv; (0, 0) elsewhere: Crossing::uv), to an
+/// albedo in [0, 1] per channel.
 template <class X>
-concept Texture = requires(const X& texture, const Vec3<typename X::scalar_type>& p) {
-    { texture.albedo(p) } -> std::same_as<Rgb<typename X::scalar_type>>;
-    texture.validate();
-};
+concept Texture = requires(const X& texture) { texture.validate(); } &&
+                  (requires(const X& texture, const Vec3<typename X::scalar_type>& p) {
+                      { texture.albedo(p) } -> std::same_as<Rgb<typename X::scalar_type>>;
+                  } || requires(const X& texture, const Vec3<typename X::scalar_type>& p, const Vec2<typename X::scalar_type>& uv) {
+                      { texture.albedo(p, uv) } -> std::same_as<Rgb<typename X::scalar_type>>;
+                  });
+
+/// A texture's albedo at point p with surface coordinates uv, whichever it reads.
+template <Texture X>
+[[nodiscard]] constexpr Rgb<typename X::scalar_type> albedo_at(const X& texture, const Vec3<typename X::scalar_type>& p,
+                                                               const Vec2<typename X::scalar_type>& uv) noexcept
+{
+    if constexpr (requires { texture.albedo(p, uv); })
+        return texture.albedo(p, uv);
+    else
+        return texture.albedo(p);
+}
 
 /// One colour everywhere.
 template <Scalar T = float>
@@ -8856,7 +9125,31 @@ struct Checker {
     }
 };
 
-static_assert(Texture<Solid<float>> && Texture<Checker<double>>);
+/// A checkerboard in surface coordinates: squares of side `size` in (u, v), `even`
+/// where floor(u/size) + floor(v/size) is even (the square [0, size)^2 is even).
+template <Scalar T = float>
+struct UvChecker {
+    using scalar_type = T;
+    Rgb<T> even{T(0.8)};
+    Rgb<T> odd{T(0.35)};
+    T size = T(0.125);
+
+    [[nodiscard]] Rgb<T> albedo(const Vec3<T>&, const Vec2<T>& uv) const noexcept
+    {
+        const T inv = T(1) / size;
+        const T sum = std::floor(uv.x * inv) + std::floor(uv.y * inv);
+        return std::floor(sum * T(0.5)) * T(2) == sum ? even : odd;
+    }
+
+    constexpr void validate() const
+    {
+        detail::require_non_negative("UvChecker even", even);
+        detail::require_non_negative("UvChecker odd", odd);
+        detail::require_positive("UvChecker size", size);
+    }
+};
+
+static_assert(Texture<Solid<float>> && Texture<Checker<double>> && Texture<UvChecker<float>>);
 
 } // namespace prism
 
@@ -8904,7 +9197,7 @@ struct Diffuse {
     T phong = T(0);
     T phong_size = T(40);
 
-    [[nodiscard]] constexpr DiffuseResponse<T> diffuse(const Vec3<T>& p) const noexcept { return {albedo.albedo(p), kd, ka}; }
+    [[nodiscard]] constexpr DiffuseResponse<T> diffuse(const Vec3<T>& p, const Vec2<T>& uv) const noexcept { return {albedo_at(albedo, p, uv), kd, ka}; }
 
     /// The Phong highlight's weight for cos_alpha = R . L (0 when phong is 0 or the light
     /// is behind the mirror direction): radiance phong cos_alpha^phong_size E / pi.

@@ -277,3 +277,134 @@ TEST_CASE("copies of a mesh share its data; transformed copies are instances")
     CHECK(moved.crossings<false>({{5, 0, -3}, {0, 0, 1}}, {0, prism::infinity<float>}).front().t == t);
     CHECK(mesh.memory_bytes() > 1280 * 36);
 }
+
+TEST_CASE_TEMPLATE("vertex normals shade a tessellated sphere as the sphere: the interpolated normal is the true sphere's to the interpolation's error", T, float, double)
+{
+    // The icosphere's vertices lie on the unit sphere, so their exact normals are the
+    // positions themselves. Between them the interpolated normal is off the sphere's by
+    // at most about theta^2 / 8 for an edge of angle theta (~0.06 rad at 4 subdivisions:
+    // 4e-4 rad), the facet's own normal by up to theta / sqrt(3) (~0.03 rad).
+    const auto buffers = prism::icosphere<T>({0, 0, 0}, 1, 4);
+    prism::MeshBuffers<T> smooth = buffers;
+    smooth.normals = buffers.positions;
+    const TriangleMesh<T> mesh(smooth);
+    CHECK(mesh.has_normals());
+    CHECK_FALSE(mesh.has_uvs());
+    // Angle-weighted vertex normals of the same mesh are the sphere's to a few 1e-3 (the
+    // subdivided triangles are not all alike around a vertex): a tenth of a facet's error.
+    const std::vector<Vec3<T>> estimated = prism::vertex_normals(buffers);
+    double worst_vertex = 0;
+    for (std::size_t i = 0; i < estimated.size(); ++i)
+        worst_vertex = std::max(worst_vertex, std::acos(std::min(1.0, double(prism::dot(estimated[i], buffers.positions[i])))));
+    CHECK(worst_vertex < 5e-3);
+    Pcg32 rng(41, 2);
+    double worst_shading = 0, worst_facet = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3<T> from = test::random_direction<T>(rng) * T(3);
+        const Vec3<T> at = test::random_direction<T>(rng) * T(0.9);
+        const auto all = mesh.crossings({from, at - from}, {T(0), prism::infinity<T>});
+        REQUIRE(all.size() == 2);
+        for (const auto& c : all) {
+            const Vec3<double> sphere = prism::normalize(Vec3<double>(c.point));
+            worst_shading = std::max(worst_shading, std::acos(std::min(1.0, prism::dot(sphere, Vec3<double>(c.shading)))));
+            worst_facet = std::max(worst_facet, std::acos(std::min(1.0, prism::dot(sphere, Vec3<double>(c.normal)))));
+            CHECK(std::abs(prism::length(c.shading) - T(1)) < T(1e-5));
+        }
+    }
+    CHECK(worst_shading < 1e-3);
+    CHECK(worst_facet > 0.01); // the facets alone are visibly off
+}
+
+TEST_CASE_TEMPLATE("uvs interpolate: an affine map of the positions comes back exactly at every hit", T, float, double)
+{
+    // A square [0, 2] x [0, 2] at y = 0, split in two, with uv = (x / 2, 1 - z / 2).
+    prism::MeshBuffers<T> square;
+    square.positions = {{0, 0, 0}, {2, 0, 0}, {2, 0, 2}, {0, 0, 2}};
+    square.triangles = {{0, 2, 1}, {0, 3, 2}};
+    for (const Vec3<T>& p : square.positions) square.uvs.push_back({p.x / 2, 1 - p.z / 2});
+    const TriangleMesh<T> mesh(square);
+    CHECK(mesh.has_uvs());
+    Pcg32 rng(3, 8);
+    for (int i = 0; i < 10000; ++i) {
+        const T x = T(2) * rng.uniform<T>(), z = T(2) * rng.uniform<T>();
+        const auto all = mesh.crossings({{x, 1, z}, {0, -1, 0}}, {T(0), prism::infinity<T>});
+        if (all.empty()) continue; // a ray exactly through the diagonal may touch
+        const auto& c = all.front();
+        CHECK(c.uv.x == doctest::Approx(x / 2).epsilon(1e-5));
+        CHECK(c.uv.y == doctest::Approx(1 - z / 2).epsilon(1e-5));
+        CHECK(c.shading == c.normal); // no normals: flat
+    }
+}
+
+TEST_CASE("a shading normal that leans over to the triangle's back gives way to the true normal")
+{
+    // Corners 1 and 2 lean far past the edge; corner 0 stands up. Near corner 0 the
+    // interpolation is above the triangle, near the far edge behind it.
+    prism::MeshBuffers<double> leaning;
+    leaning.positions = {{0, 0, 0}, {1, 0, 0}, {0, 0, -1}};
+    leaning.triangles = {{0, 1, 2}};
+    leaning.normals = {{0, 1, 0}, {0, -1, 0.2}, {0.2, -1, 0}};
+    const TriangleMesh<double> mesh(leaning);
+    const auto near_0 = mesh.crossings({{0.05, 1, -0.05}, {0, -1, 0}}, {0, prism::infinity<double>});
+    REQUIRE(near_0.size() == 1);
+    CHECK(prism::dot(near_0.front().shading, near_0.front().normal) > 0.5);
+    CHECK(near_0.front().shading != near_0.front().normal);
+    const auto far_edge = mesh.crossings({{0.45, 1, -0.45}, {0, -1, 0}}, {0, prism::infinity<double>});
+    REQUIRE(far_edge.size() == 1);
+    CHECK(far_edge.front().shading == far_edge.front().normal);
+}
+
+TEST_CASE("a transformed mesh carries its shading normal as a normal, and a CSG difference turns it with the surface")
+{
+    const auto buffers = prism::icosphere<double>({0, 0, 0}, 1, 2);
+    prism::MeshBuffers<double> smooth = buffers;
+    smooth.normals = buffers.positions;
+    const TriangleMesh<double> mesh(smooth);
+    // Squashed to an ellipsoid x^2/4 + y^2 + z^2 = 1: normals go by the inverse transpose.
+    const prism::Transformed<TriangleMesh<double>> squashed(mesh, prism::Transform<double>::scale({2, 1, 1}));
+    Pcg32 rng(9, 4);
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3<double> from = test::random_direction<double>(rng) * 5.0;
+        const Vec3<double> at = test::random_direction<double>(rng) * 0.5;
+        const Ray<double> ray{from, at - from};
+        const auto world = squashed.crossings(ray, {0, prism::infinity<double>});
+        const auto local = mesh.crossings({{from.x / 2, from.y, from.z}, {ray.direction.x / 2, ray.direction.y, ray.direction.z}}, {0, prism::infinity<double>});
+        REQUIRE(world.size() == local.size());
+        for (std::size_t k = 0; k < world.size(); ++k) {
+            const Vec3<double> expected = prism::normalize(Vec3<double>{local[k].shading.x / 2, local[k].shading.y, local[k].shading.z});
+            CHECK(prism::length(world[k].shading - expected) < 1e-12);
+        }
+    }
+    // A ball with a smooth mesh ball cut out of its middle: inside the cavity's wall the
+    // outward normal of the difference points into the cavity, and so does its shading.
+    const prism::Difference<prism::Sphere<double>, TriangleMesh<double>> shell(prism::Sphere<double>({0, 0, 0}, 2), mesh);
+    const auto through = shell.crossings({{-3, 0.1, 0.05}, {1, 0, 0}}, {0, prism::infinity<double>});
+    REQUIRE(through.size() == 4);
+    for (std::size_t k = 1; k < 3; ++k) {
+        CHECK(prism::dot(through[k].shading, through[k].normal) > 0.9);
+        CHECK(prism::dot(through[k].normal, through[k].point) < 0); // into the cavity, toward the centre
+    }
+}
+
+TEST_CASE("vertex normals and uvs are checked: one per position, finite, non-zero, not all against the winding")
+{
+    prism::MeshBuffers<float> b;
+    b.positions = {{0, 0, 0}, {1, 0, 0}, {0, 0, -1}};
+    b.triangles = {{0, 1, 2}};
+    b.normals = {{0, 1, 0}, {0, 1, 0}};
+    CHECK_THROWS_WITH_AS(TriangleMesh<float>{b}, "prism: TriangleMesh normals must be one per position (3), got 2", std::invalid_argument);
+    b.normals = {{0, 1, 0}, {0, 0, 0}, {0, 1, 0}};
+    CHECK_THROWS_WITH_AS(TriangleMesh<float>{b}, doctest::Contains("TriangleMesh normal 1 must be finite and non-zero"), std::invalid_argument);
+    b.normals = {{0, -1, 0}, {0, -1, 0}, {0.1f, -1, 0}};
+    CHECK_THROWS_WITH_AS(TriangleMesh<float>{b}, doctest::Contains("TriangleMesh triangle 0 has all three normals pointing against its winding"), std::invalid_argument);
+    b.normals = {{0, 2, 0}, {0, 1, 0}, {0, 1, 0}}; // need not be unit: normalised
+    b.uvs = {{0, 0}, {1, 0}};
+    CHECK_THROWS_WITH_AS(TriangleMesh<float>{b}, "prism: TriangleMesh uvs must be one per position (3), got 2", std::invalid_argument);
+    b.uvs = {{0, 0}, {1, 0}, {0, std::numeric_limits<float>::quiet_NaN()}};
+    CHECK_THROWS_WITH_AS(TriangleMesh<float>{b}, doctest::Contains("TriangleMesh uv 2 must be finite"), std::invalid_argument);
+    b.uvs = {{0, 0}, {1, 0}, {0, 1}};
+    const TriangleMesh<float> mesh(b);
+    const auto c = mesh.crossings({{0.2f, 1, -0.2f}, {0, -1, 0}}, {0, prism::infinity<float>}).front();
+    CHECK(c.shading.y == doctest::Approx(1));
+    CHECK(mesh.memory_bytes() == TriangleMesh<float>(b.positions, b.triangles).memory_bytes() + 3 * sizeof(Vec3<float>) + 3 * sizeof(prism::Vec2<float>));
+}

@@ -189,3 +189,33 @@ TEST_CASE("Whitted's furnace: inside a diffuse sphere of albedo 0.5 the walls re
     const auto scene = test::furnace_scene(false);
     CHECK(Whitted(scene).radiance({{0, 0, 0}, {0, 0, 1}}).x == doctest::Approx(0.5f).epsilon(1e-5));
 }
+
+TEST_CASE("a mesh floor with tilted vertex normals shades by the shading normal's cosine: L = albedo I cos(ns, wi) / (pi r^2)")
+{
+    // Two triangles at y = 0 whose four vertex normals all lean 0.4 rad toward +x: the
+    // interpolated normal is that one everywhere. The light is placed so that some
+    // points see it above the true surface but behind the shading normal (black).
+    const double lean = 0.4;
+    const Vec3<double> ns{std::sin(lean), std::cos(lean), 0};
+    MeshBuffers<double> floor;
+    floor.positions = {{-4, 0, -4}, {4, 0, -4}, {4, 0, 4}, {-4, 0, 4}};
+    floor.triangles = {{0, 2, 1}, {0, 3, 2}};
+    floor.normals.assign(4, ns);
+    const Vec3<double> light_at{-2, 0.6, 0};
+    const Scene scene{Lights{PointLight<double>{.position = light_at, .intensity = Rgb<double>(10)}},
+                      Object{TriangleMesh<double>(floor), Diffuse<double>{.albedo = {.color = Rgb<double>(0.5)}, .ka = 0}}};
+    const Whitted integrator(scene);
+    int lit = 0, dark = 0;
+    for (double x = -3.5; x <= 3.5; x += 0.25)
+        for (double z = -3; z <= 3; z += 1.5) {
+            const Vec3<double> p{x, 0, z};
+            const Rgb<double> radiance = integrator.radiance(Ray<double>{p + Vec3<double>{0, 1, 0.5}, Vec3<double>{0, -1, -0.5}});
+            const Vec3<double> to_light = light_at - p;
+            const double r2 = dot(to_light, to_light), cos_s = dot(ns, to_light) / std::sqrt(r2);
+            const double expected = cos_s > 0 ? 0.5 / std::acos(-1.0) * 10 * cos_s / r2 : 0.0;
+            CHECK(radiance.x == Approx(expected).epsilon(1e-9));
+            (expected > 0 ? lit : dark) += 1;
+        }
+    CHECK(lit > 20);
+    CHECK(dark > 20);
+}

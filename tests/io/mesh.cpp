@@ -141,3 +141,54 @@ TEST_CASE("a broken PLY file is refused with its path and the reason")
     refused("word.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 zero 0\n", "not a number");
     refused("mesh.stl", "solid\n", "neither .obj nor .ply");
 }
+
+TEST_CASE("vertex normals and texture coordinates are read where every face has them; a vertex used with two normals becomes two")
+{
+    // A unit cube's top and front faces: corner (0, 1, 1) and (1, 1, 1) are shared with
+    // different normals (one per face, as an exporter writes a hard edge).
+    const std::string cube = "v 0 1 0\nv 1 1 0\nv 1 1 1\nv 0 1 1\nv 0 0 1\nv 1 0 1\n"
+                             "vn 0 1 0\nvn 0 0 2\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                             "f 1/1/1 4/4/1 3/3/1 2/2/1\nf 5/1/2 6/2/2 3/3/2 4/4/2\n";
+    const fs::path path = write_file("cube.obj", cube);
+    const auto mesh = prism::load_obj<double>(path);
+    CHECK(mesh.positions.size() == 8); // 4 on top, 4 in front: two corners twice
+    REQUIRE(mesh.normals.size() == 8);
+    REQUIRE(mesh.uvs.size() == 8);
+    CHECK(mesh.triangles.size() == 4);
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+        for (const std::uint32_t v : mesh.triangles[f]) {
+            const prism::Vec3<double> expected = f < 2 ? prism::Vec3<double>{0, 1, 0} : prism::Vec3<double>{0, 0, 2};
+            CHECK(mesh.normals[v] == expected); // as in the file; TriangleMesh makes them unit
+        }
+    CHECK(mesh.uvs[0] == prism::Vec2<double>{0, 0});
+    CHECK(mesh.uvs[1] == prism::Vec2<double>{0, 1});
+    // The front face shades with its own normal at the shared edge.
+    const prism::TriangleMesh<double> shape(mesh);
+    const auto front = shape.crossings({{0.5, 0.5, 3}, {0, 0, -1}}, {0, prism::infinity<double>});
+    REQUIRE(front.size() == 1);
+    CHECK(front.front().shading == prism::Vec3<double>{0, 0, 1});
+    CHECK(front.front().uv.x == doctest::Approx(0.5));
+    // One face without normals: none are read (and the positions keep their numbering).
+    const fs::path partial = write_file("partial.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 1 3 4\n");
+    const auto flat = prism::load_obj<float>(partial);
+    CHECK(flat.normals.empty());
+    CHECK(flat.positions.size() == 4);
+    // A zero normal is refused, naming it.
+    const fs::path zero = write_file("zero.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n");
+    CHECK_THROWS_WITH_AS((void)prism::load_obj<float>(zero), doctest::Contains("normal 1 is (0, 0, 0)"), std::runtime_error);
+    // PLY: nx ny nz and u v (or s t) on the vertex element.
+    const fs::path ply = write_file("normals.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                                                   "property float nx\nproperty float ny\nproperty float nz\nproperty float s\nproperty float t\n"
+                                                   "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                                                   "0 0 0 0 0 1 0 0\n1 0 0 0 0 1 1 0\n0 1 0 0 0.6 0.8 0 1\n3 0 1 2\n");
+    const auto read = prism::load_ply<double>(ply);
+    REQUIRE(read.normals.size() == 3);
+    CHECK(read.normals[2] == prism::Vec3<double>{0, 0.6, 0.8});
+    REQUIRE(read.uvs.size() == 3);
+    CHECK(read.uvs[2] == prism::Vec2<double>{0, 1});
+    const fs::path ply_zero = write_file("zero.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                                                     "property float nx\nproperty float ny\nproperty float nz\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                                                     "0 0 0 0 0 1\n1 0 0 0 0 0\n0 1 0 0 0 1\n3 0 1 2\n");
+    CHECK_THROWS_WITH_AS((void)prism::load_ply<float>(ply_zero), doctest::Contains("the normal of vertex 1 is (0, 0, 0)"), std::runtime_error);
+    for (const auto& p : {path, partial, zero, ply, ply_zero}) fs::remove(p);
+}

@@ -66,13 +66,11 @@ TEST_CASE("White light at a dispersive interface: one refracted ray per band, on
     const DispersiveDielectric<double> glass{};
     const SpectralBands<double> bands(8);
     const Vec3<double> n{0, 1, 0}, d = normalize(Vec3<double>{1, -1, 0});
-    Crossing<double> hit = Crossing<double>::without_surface(1, true);
-    hit.point = {0, 0, 0};
-    hit.normal = n;
+    const auto hit = Crossing<double>::flat(1, {0, 0, 0}, {0, 0, 0}, n, true);
     Rgb<double> total(0);
     int refracted = 0, reflected = 0;
     const auto air = [](double) { return 1.0; };
-    for_each_delta_ray(glass, d, n, hit, 0.0, bands, air, [&](const Vec3<double>& direction, const Rgb<double>& k, double lambda, bool transmitted) {
+    for_each_delta_ray(glass, d, hit, 0.0, bands, air, [&](const Vec3<double>& direction, const Rgb<double>& k, double lambda, bool transmitted) {
         total += k;
         CHECK(transmitted == (prism::dot(direction, n) < 0));
         if (prism::dot(direction, n) > 0) {
@@ -92,7 +90,7 @@ TEST_CASE("White light at a dispersive interface: one refracted ray per band, on
     CHECK(total.z == Approx(1).epsilon(1e-12));
     // Light that already has a wavelength is not split again.
     int rays = 0;
-    for_each_delta_ray(glass, d, n, hit, 500.0, bands, air, [&](const Vec3<double>&, const Rgb<double>&, double lambda, bool) {
+    for_each_delta_ray(glass, d, hit, 500.0, bands, air, [&](const Vec3<double>&, const Rgb<double>&, double lambda, bool) {
         CHECK(lambda == 500.0);
         ++rays;
     });

@@ -39,7 +39,7 @@ TEST_CASE("the delta split: Fresnel times kr and kt for glass, all reflected pas
 TEST_CASE("the diffuse response: BRDF albedo kd / pi, the seed's ambient term, photons keep albedo kd at most 1")
 {
     const prism::Diffuse<double> matte{.albedo = {.color = {0.5, 0.25, 0.8}}, .kd = 1.5, .ka = 0.2};
-    const auto r = prism::diffuse_response(matte, Vec3<double>{0, 0, 0});
+    const auto r = prism::diffuse_response(matte, prism::Crossing<double>::flat(1, {0, 0, 0}, {0, 0, 0}, {0, 1, 0}, true));
     CHECK(r.brdf().x == Approx(0.75 / std::acos(-1.0)));
     // E = 2 from the lights, ambient 3 seen where half the light is blocked.
     CHECK(r.reflected(Rgb<double>(2), Rgb<double>(3), Rgb<double>(0.5)).y == Approx(0.25 * (1.5 / std::acos(-1.0) * 2 + 0.2 * 3 * 0.5)));
@@ -93,13 +93,11 @@ std::pair<Rgb<double>, Rgb<double>> mean_scattered(const M& material, const Vec3
 {
     prism::Pcg32 rng(7, 3);
     const Vec3<double> up{0, 1, 0};
-    prism::Crossing<double> hit = prism::Crossing<double>::without_surface(1, true);
-    hit.point = {0, 0, 0};
-    hit.normal = up;
+    const auto hit = prism::Crossing<double>::flat(1, {0, 0, 0}, {0, 0, 0}, up, true);
     Rgb<double> diffuse(0), specular(0);
     for (int i = 0; i < n; ++i) {
         Rgb<double> power(1);
-        const auto bounce = prism::scatter_photon(material, hit, d, up, power, rng);
+        const auto bounce = prism::scatter_photon(material, hit, d, power, rng);
         if (!bounce) continue;
         if (bounce->diffuse) {
             CHECK(prism::dot(bounce->direction, up) >= 0);
@@ -134,4 +132,79 @@ TEST_CASE("photon scattering is unbiased per channel: the mean power leaving is 
     const prism::Dielectric<double> glass{};
     const auto [d3, s3] = mean_scattered(glass, d, n);
     CHECK(s3.x == Approx(1.0).epsilon(1e-12)); // reflected or refracted, the power is kept
+}
+
+namespace {
+
+/// A crossing of the plane y = 0 from above whose shading normal leans alpha radians
+/// toward +x.
+prism::Crossing<double> leaning_hit(double alpha)
+{
+    auto hit = prism::Crossing<double>::flat(1, {0, 0, 0}, {0, 0, 0}, {0, 1, 0}, true);
+    hit.shading = {std::sin(alpha), std::cos(alpha), 0};
+    return hit;
+}
+
+} // namespace
+
+TEST_CASE("a diffuse photon at a shading normal: Veach's adjoint correction, against the integral over both hemispheres")
+{
+    // For a photon arriving along d, the lobe scatters f_s(d -> w) = rho / pi |d.ns| / |d.ng|
+    // toward every w above both the shading and the true normal (Veach 1997, 5.3.6), so the
+    // power leaving is rho |d.ns| / |d.ng| (1 / pi) int over both hemispheres of |w.ng| dw
+    // = rho |d.ns| / |d.ng| (1 + cos alpha) / 2 (the two hemispheres overlap in all but a
+    // lune of angle alpha, whose projected solid angle is pi (1 - cos alpha) / 2). A camera
+    // path (radiance) keeps rho for every direction above both: rho (1 + cos alpha) / 2.
+    const prism::Diffuse<double> matte{.albedo = {.color = {0.8, 0.8, 0.8}}};
+    const int n = 400000;
+    for (const double alpha : {0.2, 0.6}) {
+        const auto hit = leaning_hit(alpha);
+        for (const Vec3<double> d : {prism::normalize(Vec3<double>{1, -1, 0}), prism::normalize(Vec3<double>{-0.3, -1, 0.2})}) {
+            prism::Pcg32 rng(11, 5);
+            double importance = 0, radiance = 0;
+            for (int i = 0; i < n; ++i) {
+                Rgb<double> power(1);
+                if (const auto b = prism::scatter_photon<prism::Transport::importance>(matte, hit, d, power, rng)) {
+                    CHECK(prism::dot(b->direction, hit.normal) > 0);
+                    importance += power.x;
+                }
+                power = Rgb<double>(1);
+                if (prism::scatter_photon<prism::Transport::radiance>(matte, hit, d, power, rng)) radiance += power.x;
+            }
+            const double overlap = (1 + std::cos(alpha)) / 2;
+            const double ratio = -prism::dot(d, hit.shading) / -prism::dot(d, hit.normal);
+            CHECK(importance / n == Approx(0.8 * ratio * overlap).epsilon(0.01));
+            CHECK(radiance / n == Approx(0.8 * overlap).epsilon(0.01));
+        }
+    }
+}
+
+TEST_CASE("a shading normal: light counts by its cosine above both normals; a mirror turns about it unless a ray would cross the true surface")
+{
+    const auto hit = leaning_hit(0.3);
+    const Vec3<double> ns = hit.shading, ng = hit.normal;
+    const Vec3<double> wi = prism::normalize(Vec3<double>{1, 2, 0.5});
+    CHECK(prism::shading_cosine(ns, ng, wi) == prism::dot(ns, wi));
+    CHECK(prism::shading_cosine(ns, ng, prism::normalize(Vec3<double>{-1, 0.2, 0})) == 0); // above the surface, behind the shading normal
+    CHECK(prism::shading_cosine(ns, ng, prism::normalize(Vec3<double>{1, -0.1, 0})) == 0); // below the surface
+    const prism::Mirror<double> mirror{};
+    // Steep: the mirror direction about ns stays above the surface.
+    const Vec3<double> steep = prism::normalize(Vec3<double>{0.2, -1, 0});
+    CHECK(prism::delta_normal(mirror, steep, hit) == ns);
+    // Low toward +x, still against ns: reflected about ns it would go under the surface.
+    const Vec3<double> grazing = prism::normalize(Vec3<double>{1, -0.4, 0});
+    CHECK(prism::dot(grazing, ns) < 0);
+    CHECK(prism::reflect(grazing, ns).y < 0);
+    CHECK(prism::delta_normal(mirror, grazing, hit) == ng);
+    // Glass: the refracted ray about ns must go down through the surface.
+    const prism::Dielectric<double> glass{};
+    CHECK(prism::delta_normal(glass, steep, hit) == ns);
+    const auto split = prism::delta_split(glass, steep, ns, true, Vec3<double>{});
+    REQUIRE(split.refracted);
+    CHECK(prism::dot(*split.refracted, ng) < 0);
+    // Arriving behind ns: the true normal.
+    CHECK(prism::delta_normal(mirror, prism::normalize(Vec3<double>{1, -0.1, 0}), hit) == ng);
+    // A flat hit turns about its true normal, facing the ray.
+    const auto flat = prism::Crossing<double>::flat(1, {0, 0, 0}, {0, 0, 0}, {0, 1, 0}, false);
+    CHECK(prism::delta_normal(glass, Vec3<double>{0, 1, 0}, flat) == Vec3<double>{0, -1, 0});
 }

@@ -119,14 +119,12 @@ TEST_CASE("A thin film over gold: thickness 0 is bare gold; photons through a co
     CHECK(band.kr.x == Approx(oil.spectral_reflectance(cos_i, 550.0, 300.0, true)).epsilon(1e-6));
     CHECK(band.fresnel_is_grey());
     prism::Pcg32 rng(5, 9);
-    prism::Crossing<double> hit = prism::Crossing<double>::without_surface(1, true);
-    hit.point = {0, 0, 0};
-    hit.normal = up;
+    const auto hit = prism::Crossing<double>::flat(1, {0, 0, 0}, {0, 0, 0}, up, true);
     Rgb<double> reflected(0), refracted(0);
     const int n = 400000;
     for (int i = 0; i < n; ++i) {
         Rgb<double> power(1);
-        const auto bounce = prism::scatter_photon(oil, hit, d, up, power, rng);
+        const auto bounce = prism::scatter_photon(oil, hit, d, power, rng);
         REQUIRE(bounce);
         (prism::dot(bounce->direction, up) > 0 ? reflected : refracted) += power;
     }

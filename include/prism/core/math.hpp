@@ -26,6 +26,10 @@ concept Scalar = std::floating_point<T>;
 template <Scalar T>
 using Vec3 = glm::vec<3, T, glm::defaultp>;
 
+/// A point in 2D: surface (texture) coordinates.
+template <Scalar T>
+using Vec2 = glm::vec<2, T, glm::defaultp>;
+
 /// Linear RGB: radiance, irradiance, albedo or a per-channel factor.
 template <Scalar T>
 using Rgb = glm::vec<3, T, glm::defaultp>;

@@ -85,7 +85,7 @@ public:
             inside = now;
             // The result's surface here is the first child's where it has one.
             Crossing<T> c = from_a != nullptr ? *from_a : *from_b;
-            if (from_a == nullptr && Op::flips_second) c.normal = -c.normal;
+            if (from_a == nullptr && Op::flips_second) c.normal = -c.normal, c.shading = -c.shading;
             c.entering = now;
             out.push_back(c);
         }

@@ -85,7 +85,7 @@ private:
         point[axis] = high_face ? hi_[axis] : lo_[axis];
         error[axis] = T(0);
         normal[axis] = high_face ? T(1) : T(-1);
-        return {t, point, error, normal, entering};
+        return Crossing<T>::flat(t, point, error, normal, entering);
     }
 
     Vec3<T> lo_{};

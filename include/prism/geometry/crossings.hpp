@@ -27,9 +27,25 @@ struct Crossing {
     Vec3<T> error; ///< absolute error bound of `point`, per axis
     Vec3<T> normal; ///< unit outward normal (the gradient of the inside function)
     bool entering; ///< the ray goes from outside to inside here (gradient . direction < 0)
+    Vec3<T> shading; ///< unit outward shading normal: a mesh's interpolated vertex normal, else `normal`
+    Vec2<T> uv;      ///< surface coordinates: a mesh's interpolated ones, else (0, 0)
+
+    /// A crossing of a surface without vertex normals or coordinates: it shades with
+    /// its true normal.
+    [[nodiscard]] static constexpr Crossing flat(T t, const Vec3<T>& point, const Vec3<T>& error, const Vec3<T>& normal, bool entering) noexcept
+    {
+        return {t, point, error, normal, entering, normal, Vec2<T>(T(0))};
+    }
 
     /// The unit normal on the side the ray arrives from (outward when it enters).
     [[nodiscard]] constexpr Vec3<T> facing_normal() const noexcept { return entering ? normal : -normal; }
+
+    /// The unit shading normal, turned to the side the ray arrives from as `normal` is
+    /// (it may still lean away from the ray: see material/scattering.hpp).
+    [[nodiscard]] constexpr Vec3<T> facing_shading() const noexcept { return entering ? shading : -shading; }
+
+    /// Whether the shading normal is the true one (every shape but a mesh with vertex normals).
+    [[nodiscard]] constexpr bool shades_flat() const noexcept { return shading == normal; }
 
     /// A crossing without its surface: point, error and normal are left unwritten (zeros
     /// in a constant expression), for the queries that never read them.

@@ -6,6 +6,7 @@
 #include <prism/core/math.hpp>
 #include <prism/geometry/triangle_mesh.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -14,13 +15,36 @@
 
 namespace prism {
 
-/// Positions and triangles, counter-clockwise seen from outside: what a TriangleMesh is
-/// built from.
+/// Smooth normals for `mesh`, one per position: the normals of the triangles around
+/// each vertex weighted by their angles there (Thuermer & Wuethrich 1998, so a vertex's
+/// normal does not depend on how its neighbourhood is split into triangles). A position
+/// that no non-degenerate triangle uses gets (0, 1, 0): it is never shaded.
 template <Scalar T>
-struct MeshBuffers {
-    std::vector<Vec3<T>> positions;
-    std::vector<TriangleIndices> triangles;
-};
+[[nodiscard]] std::vector<Vec3<T>> vertex_normals(const MeshBuffers<T>& mesh)
+{
+    std::vector<Vec3<double>> sum(mesh.positions.size(), Vec3<double>(0));
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+        const TriangleIndices& v = mesh.triangles[f];
+        for (const std::uint32_t i : v)
+            if (i >= mesh.positions.size()) detail::throw_invalid("vertex_normals triangle ", f, " has vertex index ", i, ", past the ", mesh.positions.size(), " positions");
+        const std::array<Vec3<double>, 3> p = {Vec3<double>(mesh.positions[v[0]]), Vec3<double>(mesh.positions[v[1]]), Vec3<double>(mesh.positions[v[2]])};
+        const Vec3<double> face = cross(p[1] - p[0], p[2] - p[0]);
+        const double area2 = length(face);
+        if (!(area2 > 0)) continue;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Vec3<double> e1 = p[(k + 1) % 3] - p[k], e2 = p[(k + 2) % 3] - p[k];
+            // The corner's angle, from atan2 (accurate at small and large angles alike).
+            const double angle = std::atan2(length(cross(e1, e2)), dot(e1, e2));
+            sum[v[k]] += face * (angle / area2);
+        }
+    }
+    std::vector<Vec3<T>> out(sum.size());
+    for (std::size_t i = 0; i < sum.size(); ++i) {
+        const double len = length(sum[i]);
+        out[i] = len > 0 ? Vec3<T>(sum[i] / len) : Vec3<T>(T(0), T(1), T(0));
+    }
+    return out;
+}
 
 /// A geodesic sphere: an icosahedron with each triangle split in four `subdivisions`
 /// times, every vertex on the sphere (20 * 4^subdivisions triangles). Closed.

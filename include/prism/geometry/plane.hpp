@@ -80,7 +80,7 @@ private:
         const Vec3<T> n_abs = abs(normal_);
         const T along = gamma<T>(4) * (dot(n_abs, abs(point)) + (offset_ < T(0) ? -offset_ : offset_));
         const Vec3<T> error = along * n_abs + gamma<T>(1) * abs(point);
-        return {t, point, error, normal_, entering};
+        return Crossing<T>::flat(t, point, error, normal_, entering);
     }
 
     Vec3<T> normal_{T(0), T(1), T(0)};

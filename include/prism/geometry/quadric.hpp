@@ -368,7 +368,7 @@ private:
         }
         // Back to world coordinates: one more rounding of the sum.
         const Vec3<T> world = point + origin_;
-        return {t, world, error + gamma<T>(1) * abs(world), normal, entering};
+        return Crossing<T>::flat(t, world, error + gamma<T>(1) * abs(world), normal, entering);
     }
 
     /// Bounds of an ellipsoid (Q3 positive definite, solid non-empty), else the universe:

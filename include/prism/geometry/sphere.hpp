@@ -132,7 +132,7 @@ private:
         const Vec3<T> offset = normal * radius_;
         const Vec3<T> point = center_ + offset;
         const Vec3<T> error = gamma<T>(5) * abs(offset) + gamma<T>(1) * abs(point);
-        return {t, point, error, normal, entering};
+        return Crossing<T>::flat(t, point, error, normal, entering);
     }
 
     Vec3<T> center_;

@@ -132,7 +132,9 @@ private:
         const Vec3<T> world = to_world_.point(c.point);
         c.error = to_world_.point_error(c.point, c.error + to_world_.inverse_point_error(world));
         c.point = world;
+        const bool flat = c.shades_flat();
         c.normal = normalize(to_world_.normal(c.normal));
+        c.shading = flat ? c.normal : normalize(to_world_.normal(c.shading));
     }
 
     /// The box around the eight transformed corners of the shape's box.

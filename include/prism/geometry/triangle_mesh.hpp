@@ -25,6 +25,11 @@
 // often within one query's range gives a CSG node or a shadow ray through glass only
 // its first N (2 to 64; 8 by default).
 //
+// Vertex normals and coordinates (optional, one per position): a hit's shading normal
+// is its vertex normals interpolated by the barycentric weights (the true normal where
+// that leans to the other side of the triangle), and its uv likewise. They change how
+// the surface shades (material/scattering.hpp), never where it is or which side is out.
+//
 // The mesh's data (vertices in leaf order, the Bvh) is immutable and shared: copies of
 // a mesh, and Transformed meshes in an ObjectArray (instances), hold one copy of it.
 #pragma once
@@ -36,6 +41,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -47,6 +53,16 @@ namespace prism {
 
 /// Three vertex indices, counter-clockwise seen from outside.
 using TriangleIndices = std::array<std::uint32_t, 3>;
+
+/// Positions and triangles, counter-clockwise seen from outside, and optionally a unit
+/// normal and surface coordinates per position: what a TriangleMesh is built from.
+template <Scalar T>
+struct MeshBuffers {
+    std::vector<Vec3<T>> positions;
+    std::vector<TriangleIndices> triangles;
+    std::vector<Vec3<T>> normals; ///< per position, pointing out, or empty (shade flat)
+    std::vector<Vec2<T>> uvs;     ///< per position, or empty (uv (0, 0))
+};
 
 namespace detail {
 
@@ -147,6 +163,8 @@ template <Scalar T>
 struct MeshData {
     std::vector<std::array<Vec3<T>, 3>> corners; ///< per triangle, in the Bvh's leaf order
     std::vector<std::uint32_t> input_index;      ///< the triangle's index in the input
+    std::vector<std::array<Vec3<T>, 3>> normals; ///< per triangle, its corners' unit normals (or none)
+    std::vector<std::array<Vec2<T>, 3>> uvs;     ///< per triangle, its corners' coordinates (or none)
     Bvh<T> bvh;
     Aabb<T> bounds;
     bool closed = false;
@@ -162,10 +180,14 @@ public:
     using scalar_type = T;
     static constexpr std::size_t max_crossings = N;
 
-    /// A mesh of `triangles` over `positions`; throws std::invalid_argument for no
-    /// triangle, an index past the positions, a non-finite position, or a closed mesh
-    /// whose triangles wind inward (negative volume: reverse each triangle's order).
-    TriangleMesh(std::span<const Vec3<T>> positions, std::span<const TriangleIndices> triangles, BvhConfig config = {})
+    /// A mesh of `triangles` over `positions`, with a normal and coordinates per position
+    /// where `normals` and `uvs` are not empty; throws std::invalid_argument for no
+    /// triangle, an index past the positions, a non-finite position, a closed mesh whose
+    /// triangles wind inward (negative volume: reverse each triangle's order), normals or
+    /// uvs not one per position, a normal that is not finite and non-zero, a non-finite
+    /// uv, or a triangle whose three normals all point against its winding.
+    TriangleMesh(std::span<const Vec3<T>> positions, std::span<const TriangleIndices> triangles, BvhConfig config = {},
+                 std::span<const Vec3<T>> normals = {}, std::span<const Vec2<T>> uvs = {})
     {
         if (triangles.empty()) detail::throw_invalid("TriangleMesh triangles must not be empty");
         for (std::size_t i = 0; i < positions.size(); ++i)
@@ -173,6 +195,8 @@ public:
         for (std::size_t f = 0; f < triangles.size(); ++f)
             for (const std::uint32_t v : triangles[f])
                 if (v >= positions.size()) detail::throw_invalid("TriangleMesh triangle ", f, " has vertex index ", v, ", past the ", positions.size(), " positions");
+        std::vector<Vec3<T>> unit_normals(normals.size());
+        validate_attributes(positions, triangles, normals, uvs, unit_normals);
         auto data = std::make_shared<detail::MeshData<T>>();
         data->closed = is_closed(triangles);
         if (data->closed) {
@@ -200,6 +224,20 @@ public:
             const TriangleIndices& f = triangles[order[k]];
             data->corners[k] = {positions[f[0]], positions[f[1]], positions[f[2]]};
         }
+        if (!normals.empty()) {
+            data->normals.resize(order.size());
+            for (std::size_t k = 0; k < order.size(); ++k) {
+                const TriangleIndices& f = triangles[order[k]];
+                data->normals[k] = {unit_normals[f[0]], unit_normals[f[1]], unit_normals[f[2]]};
+            }
+        }
+        if (!uvs.empty()) {
+            data->uvs.resize(order.size());
+            for (std::size_t k = 0; k < order.size(); ++k) {
+                const TriangleIndices& f = triangles[order[k]];
+                data->uvs[k] = {uvs[f[0]], uvs[f[1]], uvs[f[2]]};
+            }
+        }
         data_ = std::move(data);
     }
 
@@ -208,16 +246,26 @@ public:
     {
     }
 
+    /// The mesh of `mesh`'s buffers, with its normals and uvs where it has them.
+    explicit TriangleMesh(const MeshBuffers<T>& mesh, BvhConfig config = {})
+        : TriangleMesh(std::span<const Vec3<T>>(mesh.positions), std::span<const TriangleIndices>(mesh.triangles), config,
+                       std::span<const Vec3<T>>(mesh.normals), std::span<const Vec2<T>>(mesh.uvs))
+    {
+    }
+
     [[nodiscard]] bool closed() const noexcept { return data_->closed; }
+    [[nodiscard]] bool has_normals() const noexcept { return !data_->normals.empty(); }
+    [[nodiscard]] bool has_uvs() const noexcept { return !data_->uvs.empty(); }
     [[nodiscard]] std::size_t triangle_count() const noexcept { return data_->corners.size(); }
     [[nodiscard]] const Bvh<T>& bvh() const noexcept { return data_->bvh; }
     [[nodiscard]] Aabb<T> bounds() const noexcept { return data_->bounds; }
-    /// Bytes held by the shared data (vertices, indices, Bvh), for every copy together.
+    /// Bytes held by the shared data (vertices, normals, uvs, indices, Bvh), for every
+    /// copy together.
     [[nodiscard]] std::size_t memory_bytes() const noexcept
     {
         const auto& d = *data_;
-        return sizeof(d) + d.corners.size() * (sizeof(d.corners[0]) + sizeof(d.input_index[0])) + d.bvh.nodes().size() * sizeof(BvhNode<T>) +
-               d.bvh.primitives().size() * sizeof(std::uint32_t);
+        return sizeof(d) + d.corners.size() * (sizeof(d.corners[0]) + sizeof(d.input_index[0])) + d.normals.size() * sizeof(d.normals[0]) +
+               d.uvs.size() * sizeof(d.uvs[0]) + d.bvh.nodes().size() * sizeof(BvhNode<T>) + d.bvh.primitives().size() * sizeof(std::uint32_t);
     }
 
     /// Inside a closed mesh: the first crossing along a fixed direction from p leaves it.
@@ -394,7 +442,45 @@ private:
         // The outward normal as the triangle winds (non-zero: a degenerate triangle is
         // never hit).
         const Vec3<T> normal = normalize(cross(c[1] - c[0], c[2] - c[0]));
-        return {h.t, point, error, normal, entering};
+        Crossing<T> out = Crossing<T>::flat(h.t, point, error, normal, entering);
+        if (!data_->normals.empty()) {
+            const auto& n = data_->normals[h.triangle];
+            const Vec3<T> shading = h.b[0] * n[0] + h.b[1] * n[1] + h.b[2] * n[2];
+            // Leaning over the triangle's edge (opposed normals across a fold): flat.
+            if (dot(shading, normal) > T(0)) out.shading = normalize(shading);
+        }
+        if (!data_->uvs.empty()) {
+            const auto& uv = data_->uvs[h.triangle];
+            out.uv = h.b[0] * uv[0] + h.b[1] * uv[1] + h.b[2] * uv[2];
+        }
+        return out;
+    }
+
+    static void validate_attributes(std::span<const Vec3<T>> positions, std::span<const TriangleIndices> triangles, std::span<const Vec3<T>> normals,
+                                    std::span<const Vec2<T>> uvs, std::vector<Vec3<T>>& unit_normals)
+    {
+        if (!normals.empty() && normals.size() != positions.size())
+            detail::throw_invalid("TriangleMesh normals must be one per position (", positions.size(), "), got ", normals.size());
+        if (!uvs.empty() && uvs.size() != positions.size())
+            detail::throw_invalid("TriangleMesh uvs must be one per position (", positions.size(), "), got ", uvs.size());
+        for (std::size_t i = 0; i < uvs.size(); ++i)
+            if (!std::isfinite(uvs[i].x) || !std::isfinite(uvs[i].y))
+                detail::throw_invalid("TriangleMesh uv ", i, " must be finite, got (", uvs[i].x, ", ", uvs[i].y, ")");
+        for (std::size_t i = 0; i < normals.size(); ++i) {
+            const Vec3<double> n(normals[i]);
+            const double len = length(n);
+            if (!is_finite(normals[i]) || !(len > 0) || !std::isfinite(len))
+                detail::throw_invalid("TriangleMesh normal ", i, " must be finite and non-zero, got ", detail::describe(normals[i]));
+            unit_normals[i] = Vec3<T>(n / len);
+        }
+        if (normals.empty()) return;
+        for (std::size_t f = 0; f < triangles.size(); ++f) {
+            const TriangleIndices& v = triangles[f];
+            const Vec3<double> a(positions[v[0]]), face = cross(Vec3<double>(positions[v[1]]) - a, Vec3<double>(positions[v[2]]) - a);
+            if (dot(face, Vec3<double>(unit_normals[v[0]])) < 0 && dot(face, Vec3<double>(unit_normals[v[1]])) < 0 &&
+                dot(face, Vec3<double>(unit_normals[v[2]])) < 0)
+                detail::throw_invalid("TriangleMesh triangle ", f, " has all three normals pointing against its winding: reverse the normals or the vertex order");
+        }
     }
 
     [[nodiscard]] static bool is_closed(std::span<const TriangleIndices> triangles)

@@ -5,6 +5,7 @@
 #include <prism/core/offset.hpp>
 #include <prism/geometry/crossings.hpp>
 #include <prism/light/light.hpp>
+#include <prism/material/scattering.hpp>
 #include <prism/scene/scene.hpp>
 
 namespace prism {
@@ -14,17 +15,18 @@ namespace prism {
 template <Scalar T>
 inline constexpr T shadow_epsilon = T(1e-4);
 
-/// For each light in front of the surface (unit normal n facing the viewer), call
+/// For each light in front of the surface on the side the ray arrived from, call
 /// f(sample, v, cos): the light's sample at the point, the shadow ray's transmittance v
-/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface. Lights
-/// behind the surface are not visited: they count as occluded. How dielectrics shadow:
-/// see Scene::transmittance.
+/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface (the
+/// shading normal's: shading_cosine). Lights behind the surface are not visited: they
+/// count as occluded. How dielectrics shadow: see Scene::transmittance.
 template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
-void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const Vec3<T>& n, F&& f)
+void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, F&& f)
 {
+    const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
     scene.for_each_light([&](const auto& light) {
         const LightSample<T> s = light.sample(hit.point);
-        const T cos = dot(n, s.wi);
+        const T cos = shading_cosine(n_shading, n, s.wi);
         if (!(cos > T(0))) return;
         const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
         f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);

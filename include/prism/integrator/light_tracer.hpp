@@ -88,9 +88,15 @@ template <class SceneT, class Air = StraightAir>
             const Rgb<T> v = scene.template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
                                                                                          seen->distance);
             if (!(max_component(v) > T(0))) return go_on;
-            const T importance = cos_x / (seen->distance * seen->distance * area * seen->cos * seen->cos * seen->cos);
+            T importance = cos_x / (seen->distance * seen->distance * area * seen->cos * seen->cos * seen->cos);
+            // A shading normal weighs the light arriving here by its own cosine over the
+            // true one (scattering.hpp).
+            if (!c.shades_flat()) {
+                importance *= shading_cosine(c.facing_shading(), c.facing_normal(), -at.direction) / -dot(at.direction, c.facing_normal());
+                if (!(importance < infinity<T>)) return go_on;
+            }
             const std::size_t pixel = std::size_t(seen->y) * width + std::size_t(seen->x);
-            out[pixel] += Rgb<float>(power * diffuse_response(material, c.point).brdf() * v * importance);
+            out[pixel] += Rgb<float>(power * diffuse_response(material, c).brdf() * v * importance);
             return go_on;
         });
     };

@@ -63,13 +63,13 @@ public:
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept
     {
         Rgb<T> sum{T(0)};
-        random_walk(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth,
+        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth,
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         const Crossing<T>& c = at.crossing();
                         Rgb<T> irradiance{T(0)};
                         for_each_light_arriving<ShadowsThroughGlass::blocked>(
-                            *scene_, c, c.facing_normal(), [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
-                        sum += at.power * diffuse_response(material, c.point).brdf() * irradiance;
+                            *scene_, c, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
+                        sum += at.power * diffuse_response(material, c).brdf() * irradiance;
                         return at.diffuse_bounces < config_.max_diffuse_bounces;
                     },
                     [&](const Ray<T>&, const Rgb<T>& weight, bool specular_only) {

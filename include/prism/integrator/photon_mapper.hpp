@@ -155,9 +155,9 @@ public:
             detail::parallel_for(found.size(), render.threads, [&](std::size_t i) {
                 const int x = int(i % std::size_t(columns)) * stride, y = int(i / std::size_t(columns)) * stride;
                 const auto seen = first_diffuse_seen(rays.ray(T(x) + T(0.5), T(y) + T(0.5)));
-                if (!seen || cache_.covers(seen->first.point, seen->first.facing_normal())) return;
+                if (!seen || cache_.covers(seen->first.point, seen->first.facing_shading())) return;
                 const std::size_t pixel_index = std::size_t(y) * std::size_t(render.width) + std::size_t(x);
-                found[i] = Candidate{seen->first, seen->first.facing_normal(), seen->second * pixel,
+                found[i] = Candidate{seen->first, seen->first.facing_shading(), seen->second * pixel,
                                      pixel_index + std::size_t(level) * std::size_t(render.width) * std::size_t(render.height)};
             });
             std::vector<Candidate> candidates;
@@ -232,19 +232,21 @@ private:
         Rgb<T> radiance{T(0)};
         if constexpr (has_diffuse<M>) {
             const Vec3<float> p(hit.point), nf(n);
-            Rgb<T> irradiance = direct(hit, n) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
+            Rgb<T> irradiance = direct(hit) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
             if (config_.gather_rays > 0) {
-                const std::optional<Rgb<T>> cached = media.empty() ? cache_.irradiance(hit.point, n) : std::nullopt;
-                irradiance += cached ? *cached : gather(hit, n, rng, media.empty(), gather_cells_m_, gather_cells_n_).irradiance;
+                // The final gather (and the cache of its results) is over the shading normal's hemisphere.
+                const Vec3<T> n_shading = hit.facing_shading();
+                const std::optional<Rgb<T>> cached = media.empty() ? cache_.irradiance(hit.point, n_shading) : std::nullopt;
+                irradiance += cached ? *cached : gather(hit, n_shading, rng, media.empty(), gather_cells_m_, gather_cells_n_).irradiance;
             }
             else irradiance += Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
-            radiance += diffuse_response(material, hit.point).brdf() * irradiance;
+            radiance += diffuse_response(material, hit).brdf() * irradiance;
         }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
                 const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
                     const auto outside_index = [&](T lambda) { return index_of(*scene_, outside, lambda); };
-                    for_each_delta_ray(material, d, n, hit, wavelength, bands_, outside_index,
+                    for_each_delta_ray(material, d, hit, wavelength, bands_, outside_index,
                                        [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
                                            if (max_component(weight * k) > config_.min_weight)
                                                radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1, weight * k,
@@ -268,18 +270,19 @@ private:
 
     /// Irradiance from the lights by shadow rays (glass opaque), or by what the photons
     /// say about visibility where they agree.
-    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, const Vec3<T>& n) const noexcept
+    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit) const noexcept
     {
         Rgb<T> irradiance{T(0)};
-        if (const std::optional<bool> visible = visibility_from_photons(hit.point, n)) {
+        if (const std::optional<bool> visible = visibility_from_photons(hit.point, hit.facing_normal())) {
             if (!*visible) return irradiance;
+            const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
             scene_->for_each_light([&](const auto& light) {
                 const LightSample<T> s = light.sample(hit.point);
-                irradiance += s.irradiance * std::max(dot(n, s.wi), T(0));
+                irradiance += s.irradiance * shading_cosine(n_shading, n, s.wi);
             });
             return irradiance;
         }
-        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
+        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
         return irradiance;
     }
 
@@ -303,9 +306,10 @@ private:
                 if constexpr (has_diffuse<M>) {
                     return true;
                 } else {
-                    const SpecularSplit<T> split = delta_split(material, d, c.facing_normal(), c.entering, c.point);
+                    const Vec3<T> n = delta_normal(material, d, c);
+                    const SpecularSplit<T> split = delta_split(material, d, n, c.entering, c.point);
                     if (split.refracted && max_component(split.kt) >= max_component(split.kr)) next = *split.refracted;
-                    else if (max_component(split.kr) > T(0)) next = reflect(d, c.facing_normal());
+                    else if (max_component(split.kr) > T(0)) next = reflect(d, n);
                     return false;
                 }
             });
@@ -336,13 +340,15 @@ private:
             const auto at_diffuse = [&]<class M>(const M& material, const WalkVertex<T>& at) {
                 const Crossing<T>& c = at.crossing();
                 const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
-                found = {at.power * diffuse_response(material, c.point).brdf() * e, at.travelled};
+                found = {at.power * diffuse_response(material, c).brdf() * e, at.travelled};
                 return false;
             };
             const auto escaped = [](const Ray<T>&, const Rgb<T>&, bool) {};
+            // (About a shading normal, a direction may lead into the solid: no light.)
+            if (!hit.shades_flat() && !(dot(direction, hit.facing_normal()) > T(0))) return found;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, direction);
-            if (in_air) random_walk(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
-            else random_walk(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
+            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
             return found;
         });
     }

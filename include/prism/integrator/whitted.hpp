@@ -94,10 +94,9 @@ private:
     {
         const Crossing<T>& hit = h.crossing;
         const Vec3<T>& d = ray.direction;
-        const Vec3<T> n = hit.facing_normal();
         Rgb<T> radiance{T(0)};
 
-        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, n, d);
+        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, d);
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
@@ -105,7 +104,7 @@ private:
                 // and the medium of `outside` lies on the surface's far side.
                 const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
                     const auto outside_index = [&](T lambda) { return index_of(*scene_, outside, lambda); };
-                    for_each_delta_ray(material, d, n, hit, wavelength, bands_, outside_index,
+                    for_each_delta_ray(material, d, hit, wavelength, bands_, outside_index,
                                        [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
                                            const Rgb<T> next_weight = weight * k;
                                            if (max_component(next_weight) > config_.min_weight)
@@ -131,19 +130,19 @@ private:
     }
 
     template <class M>
-    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& n, const Vec3<T>& d) const noexcept
+    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& d) const noexcept
     {
         Rgb<T> irradiance{T(0)}; // sum of V E cos over the lights
         Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights
         Rgb<T> highlights{T(0)}; // POV-Ray's Phong term, for materials that have one
-        const Vec3<T> mirror = reflect(d, n);
-        for_each_light_arriving(*scene_, hit, n, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+        const Vec3<T> mirror = reflect(d, hit.facing_shading());
+        for_each_light_arriving(*scene_, hit, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
             irradiance += v * s.irradiance * cos;
             unlit *= Rgb<T>(T(1)) - v;
             const T h = highlight(material, mirror, s.wi);
             if (h > T(0)) highlights += h * v * s.irradiance;
         });
-        return diffuse_response(material, hit.point).reflected(irradiance, scene_->ambient, unlit) + highlights;
+        return diffuse_response(material, hit).reflected(irradiance, scene_->ambient, unlit) + highlights;
     }
 
     const SceneT* scene_;

@@ -5,8 +5,12 @@
 // Opt-in: prism/prism.hpp does not include this header, and a program that does links
 // tinyobjloader (the CMake target prism::mesh_io does both). Polygons are split into
 // triangles (a fan from their first vertex), every group of the file goes into one
-// MeshBuffers; OBJ positions are read as float (tinyobjloader's real_t); normals, texture
-// coordinates and other properties in the file are not read. Any failure throws
+// MeshBuffers; OBJ positions are read as float (tinyobjloader's real_t). Vertex normals
+// (OBJ vn, PLY nx ny nz) and texture coordinates (OBJ vt, PLY u v, s t or texture_u
+// texture_v) are read when every vertex of every face has them, and left out (the
+// mesh shades flat, uv (0, 0)) when any lacks them; an OBJ vertex used with different
+// normals or coordinates becomes one vertex per combination. Colours and other
+// properties are not read. Any failure, a zero or non-finite normal among them, throws
 // std::runtime_error naming the path and the reason. load_mesh picks the reader by the
 // file's extension.
 #pragma once
@@ -16,6 +20,7 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cctype>
 #include <cerrno>
@@ -23,6 +28,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -44,24 +50,48 @@ template <Scalar T = float>
         throw std::runtime_error("cannot read mesh '" + path.string() + "': " + (reason.empty() ? "unknown error" : reason));
     }
     const auto& attrib = reader.GetAttrib();
+    const auto fail = [&](const std::string& reason) { throw std::runtime_error("cannot read mesh '" + path.string() + "': " + reason); };
+    const std::size_t positions = attrib.vertices.size() / 3, normals = attrib.normals.size() / 3, uvs = attrib.texcoords.size() / 2;
+    // Normals and coordinates only where every face corner names one (in range).
+    bool with_normals = normals > 0, with_uvs = uvs > 0;
+    for (const auto& shape : reader.GetShapes())
+        for (const tinyobj::index_t& corner : shape.mesh.indices) {
+            if (corner.vertex_index < 0 || std::size_t(corner.vertex_index) >= positions)
+                fail("a face refers to vertex " + std::to_string(corner.vertex_index) + " of " + std::to_string(positions));
+            with_normals = with_normals && corner.normal_index >= 0 && std::size_t(corner.normal_index) < normals;
+            with_uvs = with_uvs && corner.texcoord_index >= 0 && std::size_t(corner.texcoord_index) < uvs;
+        }
     MeshBuffers<T> out;
-    out.positions.reserve(attrib.vertices.size() / 3);
-    for (std::size_t i = 0; i + 2 < attrib.vertices.size(); i += 3)
-        out.positions.push_back({T(attrib.vertices[i]), T(attrib.vertices[i + 1]), T(attrib.vertices[i + 2])});
+    const auto position = [&](int v) { return Vec3<T>(T(attrib.vertices[3 * std::size_t(v)]), T(attrib.vertices[3 * std::size_t(v) + 1]), T(attrib.vertices[3 * std::size_t(v) + 2])); };
+    // One vertex per (position, normal, uv) used, in order of first use; positions alone
+    // keep the file's numbering.
+    std::map<std::array<int, 3>, std::uint32_t> vertex_of;
+    if (!with_normals && !with_uvs)
+        for (std::size_t v = 0; v < positions; ++v) out.positions.push_back(position(int(v)));
+    const auto vertex = [&](const tinyobj::index_t& corner) -> std::uint32_t {
+        if (!with_normals && !with_uvs) return std::uint32_t(corner.vertex_index);
+        const std::array<int, 3> key{corner.vertex_index, with_normals ? corner.normal_index : -1, with_uvs ? corner.texcoord_index : -1};
+        const auto [at, fresh] = vertex_of.try_emplace(key, std::uint32_t(out.positions.size()));
+        if (fresh) {
+            out.positions.push_back(position(key[0]));
+            if (with_normals) {
+                const std::size_t n = 3 * std::size_t(key[1]);
+                const Vec3<T> normal(T(attrib.normals[n]), T(attrib.normals[n + 1]), T(attrib.normals[n + 2]));
+                if (!is_finite(normal) || !(length(Vec3<double>(normal)) > 0)) fail("normal " + std::to_string(key[1] + 1) + " is " + detail::describe(normal));
+                out.normals.push_back(normal);
+            }
+            if (with_uvs) {
+                const std::size_t t = 2 * std::size_t(key[2]);
+                out.uvs.push_back({T(attrib.texcoords[t]), T(attrib.texcoords[t + 1])});
+            }
+        }
+        return at->second;
+    };
     for (const auto& shape : reader.GetShapes()) {
         const auto& indices = shape.mesh.indices;
-        for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
-            TriangleIndices f{};
-            for (std::size_t k = 0; k < 3; ++k) {
-                const int v = indices[i + k].vertex_index;
-                if (v < 0 || std::size_t(v) >= out.positions.size())
-                    throw std::runtime_error("cannot read mesh '" + path.string() + "': a face refers to vertex " + std::to_string(v) + " of " + std::to_string(out.positions.size()));
-                f[k] = std::uint32_t(v);
-            }
-            out.triangles.push_back(f);
-        }
+        for (std::size_t i = 0; i + 2 < indices.size(); i += 3) out.triangles.push_back({vertex(indices[i]), vertex(indices[i + 1]), vertex(indices[i + 2])});
     }
-    if (out.triangles.empty()) throw std::runtime_error("cannot read mesh '" + path.string() + "': it has no faces");
+    if (out.triangles.empty()) fail("it has no faces");
     return out;
 }
 
@@ -178,21 +208,29 @@ template <Scalar T = float>
     MeshBuffers<T> out;
     for (const detail::PlyElement& element : elements) {
         const bool vertices = element.name == "vertex", faces = element.name == "face";
-        int axis_of[3] = {-1, -1, -1};
+        // Which scalar property holds x, y, z, nx, ny, nz, u, v.
+        std::array<int, 8> slot_of;
+        slot_of.fill(-1);
+        bool with_normals = false, with_uvs = false;
         if (vertices) {
+            const std::array<std::array<const char*, 3>, 8> names = {{{"x", "x", "x"}, {"y", "y", "y"}, {"z", "z", "z"}, {"nx", "nx", "nx"},
+                                                                    {"ny", "ny", "ny"}, {"nz", "nz", "nz"}, {"u", "s", "texture_u"}, {"v", "t", "texture_v"}}};
             for (std::size_t k = 0; k < element.properties.size(); ++k)
-                for (int a = 0; a < 3; ++a)
-                    if (element.properties[k].name == std::string(1, char('x' + a)) && element.properties[k].count_type.empty()) axis_of[a] = int(k);
-            if (axis_of[0] < 0 || axis_of[1] < 0 || axis_of[2] < 0) fail("its vertex element lacks an x, y or z property");
+                for (std::size_t a = 0; a < names.size(); ++a)
+                    for (const char* spelling : names[a])
+                        if (element.properties[k].name == spelling && element.properties[k].count_type.empty()) slot_of[a] = int(k);
+            if (slot_of[0] < 0 || slot_of[1] < 0 || slot_of[2] < 0) fail("its vertex element lacks an x, y or z property");
+            with_normals = slot_of[3] >= 0 && slot_of[4] >= 0 && slot_of[5] >= 0;
+            with_uvs = slot_of[6] >= 0 && slot_of[7] >= 0;
         }
         for (std::uint64_t item = 0; item < element.count; ++item) {
-            Vec3<T> p{};
+            std::array<double, 8> at{};
             for (std::size_t k = 0; k < element.properties.size(); ++k) {
                 const detail::PlyProperty& property = element.properties[k];
                 if (property.count_type.empty()) {
                     const double v = reader.value(property.type);
-                    for (int a = 0; a < 3; ++a)
-                        if (vertices && axis_of[a] == int(k)) p[a] = T(v);
+                    for (std::size_t a = 0; a < at.size(); ++a)
+                        if (vertices && slot_of[a] == int(k)) at[a] = v;
                     continue;
                 }
                 const double count = reader.value(property.count_type);
@@ -208,7 +246,15 @@ template <Scalar T = float>
                 }
                 for (std::size_t i = 1; i + 1 < polygon.size(); ++i) out.triangles.push_back({polygon[0], polygon[i], polygon[i + 1]});
             }
-            if (vertices) out.positions.push_back(p);
+            if (vertices) {
+                out.positions.push_back({T(at[0]), T(at[1]), T(at[2])});
+                if (with_normals) {
+                    const Vec3<T> normal{T(at[3]), T(at[4]), T(at[5])};
+                    if (!is_finite(normal) || !(length(Vec3<double>(normal)) > 0)) fail("the normal of vertex " + std::to_string(item) + " is " + detail::describe(normal));
+                    out.normals.push_back(normal);
+                }
+                if (with_uvs) out.uvs.push_back({T(at[6]), T(at[7])});
+            }
         }
     }
     if (out.triangles.empty()) fail("it has no faces");

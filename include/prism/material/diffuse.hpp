@@ -46,7 +46,7 @@ struct Diffuse {
     T phong = T(0);
     T phong_size = T(40);
 
-    [[nodiscard]] constexpr DiffuseResponse<T> diffuse(const Vec3<T>& p) const noexcept { return {albedo.albedo(p), kd, ka}; }
+    [[nodiscard]] constexpr DiffuseResponse<T> diffuse(const Vec3<T>& p, const Vec2<T>& uv) const noexcept { return {albedo_at(albedo, p, uv), kd, ka}; }
 
     /// The Phong highlight's weight for cos_alpha = R . L (0 when phong is 0 or the light
     /// is behind the mirror direction): radiance phong cos_alpha^phong_size E / pi.

@@ -20,15 +20,61 @@
 
 namespace prism {
 
+// Shading normals
+//
+// A mesh with vertex normals shades with its interpolated normal (Crossing::shading)
+// while its true normal still says where the surface is. Lobes are taken about the
+// shading normal; the true one keeps every ray on its side:
+// - light from the lights counts where it arrives above both (the cosine is the
+//   shading normal's);
+// - a mirror or an interface turns rays about the shading normal unless a ray would
+//   leave on the wrong side of the true surface (a reflection into the solid, a
+//   refraction back out), and then about the true normal (delta_normal);
+// - a photon scattered by a diffuse lobe leaves cosine-distributed about the shading
+//   normal, with Veach's adjoint correction (1997, section 5.3.6) for the shading
+//   normal's asymmetry, and is absorbed where it would go into the solid
+//   (scatter_photon);
+// - photon density estimates stay the true surface's irradiance (they omit the
+//   per-photon factor |w.ns| / |w.ng| of a shading normal).
+// For every other shape the shading normal is the true one and all of this reduces to
+// the true normal's arithmetic, bit for bit.
+
+namespace detail {
+
+/// Whether a ray sent on by a delta interaction leaves on the right side of the true
+/// surface (ng: its unit normal facing the arriving ray): back for a reflection,
+/// through for a refraction.
+template <Scalar T>
+[[nodiscard]] constexpr bool leaves_correctly(const Vec3<T>& direction, bool transmitted, const Vec3<T>& ng) noexcept
+{
+    return transmitted ? dot(direction, ng) < T(0) : dot(direction, ng) > T(0);
+}
+
+} // namespace detail
+
 // Diffuse lobe
 
-/// The diffuse response at the surface point p.
+/// The diffuse response at a crossing's point (and surface coordinates, for a lobe that
+/// reads them).
 template <Material M>
     requires DiffuseLobe<M>
 [[nodiscard]] constexpr DiffuseResponse<typename M::scalar_type> diffuse_response(const M& material,
-                                                                                 const Vec3<typename M::scalar_type>& p) noexcept
+                                                                                 const Crossing<typename M::scalar_type>& at) noexcept
 {
-    return material.diffuse(p);
+    if constexpr (requires { material.diffuse(at.point, at.uv); })
+        return material.diffuse(at.point, at.uv);
+    else
+        return material.diffuse(at.point);
+}
+
+/// The cosine weighting light from the unit direction wi at `hit` for a diffuse lobe:
+/// the shading normal's cosine (n_shading: Crossing::facing_shading) where wi is above
+/// it and above the true surface (n_true: Crossing::facing_normal), else 0.
+template <Scalar T>
+[[nodiscard]] constexpr T shading_cosine(const Vec3<T>& n_shading, const Vec3<T>& n_true, const Vec3<T>& wi) noexcept
+{
+    const T cos = dot(n_shading, wi);
+    return cos > T(0) && dot(n_true, wi) > T(0) ? cos : T(0);
 }
 
 /// A non-physical highlight (POV-Ray's `phong`), for materials that have one: its weight
@@ -157,6 +203,30 @@ template <Material M>
     return split;
 }
 
+/// The unit normal a mirror or an interface at `hit` turns the unit direction d about,
+/// for light of one wavelength (0: white; outside_index as for delta_split): the
+/// shading normal facing d where d arrives against it and the reflected and refracted
+/// rays about it leave on the right side of the true surface, the true normal facing d
+/// elsewhere (and always, for a surface that shades flat).
+template <Material M>
+    requires(M::reflects || M::transmits)
+[[nodiscard]] Vec3<typename M::scalar_type> delta_normal(const M& material, const Vec3<typename M::scalar_type>& d,
+                                                         const Crossing<typename M::scalar_type>& hit,
+                                                         typename M::scalar_type wavelength_nm = 0,
+                                                         typename M::scalar_type outside_index = 1) noexcept
+{
+    using T = typename M::scalar_type;
+    const Vec3<T> ng = hit.facing_normal();
+    if (hit.shades_flat()) return ng;
+    const Vec3<T> ns = hit.facing_shading();
+    if (!(dot(d, ns) < T(0)) || !detail::leaves_correctly(reflect(d, ns), false, ng)) return ng;
+    if constexpr (M::transmits) {
+        const SpecularSplit<T> split = delta_split(material, d, ns, hit.entering, hit.point, wavelength_nm, outside_index);
+        if (split.refracted && !detail::leaves_correctly(*split.refracted, true, ng)) return ng;
+    }
+    return ns;
+}
+
 /// The rays a mirror or an interface sends on, each passed to
 /// emit(direction, weight, wavelength_nm, transmitted): the reflected ray, then the
 /// refracted one. `outside_index(wavelength_nm)` is the index of the medium on the
@@ -165,15 +235,28 @@ template <Material M>
 /// share of white and carrying its wavelength; the reflected ray, whose direction no
 /// wavelength changes, stays white, weighted by the bands' reflectances summed (so white
 /// light meeting a dispersive interface costs one ray more per band, not per band squared).
+/// The rays turn about delta_normal's normal (for white light meeting a dispersive
+/// interface, about the shading normal only if every band's refraction about it leaves
+/// correctly).
 template <Material M, class OutsideIndex, class Emit>
     requires(M::reflects || M::transmits)
-void for_each_delta_ray(const M& material, const Vec3<typename M::scalar_type>& d, const Vec3<typename M::scalar_type>& n,
-                        const Crossing<typename M::scalar_type>& hit, typename M::scalar_type wavelength_nm,
-                        const SpectralBands<typename M::scalar_type>& bands, OutsideIndex&& outside_index, Emit&& emit)
+void for_each_delta_ray(const M& material, const Vec3<typename M::scalar_type>& d, const Crossing<typename M::scalar_type>& hit,
+                        typename M::scalar_type wavelength_nm, const SpectralBands<typename M::scalar_type>& bands,
+                        OutsideIndex&& outside_index, Emit&& emit)
 {
     using T = typename M::scalar_type;
+    Vec3<T> n = hit.shades_flat() ? hit.facing_normal() : delta_normal(material, d, hit, wavelength_nm, T(outside_index(wavelength_nm)));
     if constexpr (disperses<M>) {
         if (wavelength_nm == T(0)) {
+            if (n != hit.facing_normal())
+                for (const WavelengthBand<T>& band : bands) {
+                    const SpecularSplit<T> split =
+                        delta_split(material, d, n, hit.entering, hit.point, band.wavelength_nm, T(outside_index(band.wavelength_nm)));
+                    if (split.refracted && !detail::leaves_correctly(*split.refracted, true, hit.facing_normal())) {
+                        n = hit.facing_normal();
+                        break;
+                    }
+                }
             Rgb<T> kr{T(0)};
             for (const WavelengthBand<T>& band : bands) {
                 const SpecularSplit<T> split =
@@ -230,6 +313,11 @@ constexpr void attenuate_shadow_ray(const M& material, const Crossings<typename 
 
 // Photons
 
+/// What a path carries: light from the lights (a photon: importance transport, whose
+/// scattering at a shading normal takes Veach's adjoint correction), or importance from
+/// the camera (a camera path: radiance transport).
+enum class Transport { importance, radiance };
+
 /// A photon's next direction after scattering, and whether the bounce was diffuse.
 template <Scalar T>
 struct PhotonBounce {
@@ -237,19 +325,23 @@ struct PhotonBounce {
     bool diffuse;
 };
 
-/// Scatter a photon of `power` arriving along the unit direction d at `hit` (n: the
-/// unit normal facing it), by Russian roulette per channel (errata 7): a diffuse lobe
-/// reflects its photon reflectance into a cosine-distributed direction; an interface
-/// reflects with probability F and refracts otherwise, weighted by its tints; a
-/// conductor reflects by its reflectance. A material with a diffuse and a delta lobe
-/// first chooses one by their largest channels, dividing the power by that choice's
-/// probability. A photon of one wavelength (nanometres; 0: white) refracts at its
-/// index; `outside_index` is the index on the material's other side (1: air). Returns nothing when the photon is absorbed; scales `power` otherwise.
-template <Material M>
+/// Scatter a photon of `power` arriving along the unit direction d at `hit`, by Russian
+/// roulette per channel (errata 7): a diffuse lobe reflects its photon reflectance into
+/// a cosine-distributed direction; an interface reflects with probability F and
+/// refracts otherwise, weighted by its tints; a conductor reflects by its reflectance.
+/// A material with a diffuse and a delta lobe first chooses one by their largest
+/// channels, dividing the power by that choice's probability. A photon of one
+/// wavelength (nanometres; 0: white) refracts at its index; `outside_index` is the index
+/// on the material's other side (1: air). Returns nothing when the photon is absorbed;
+/// scales `power` otherwise. With a shading normal (see above), the diffuse direction is
+/// cosine-distributed about it and a diffuse bounce sent into the solid is absorbed; a
+/// photon (Transport::importance) also takes Veach's correction |d.ns| |w.ng| /
+/// (|d.ng| |w.ns|) and is absorbed where it arrives behind the shading normal. A camera
+/// path (Transport::radiance) scatters by the same rules without them.
+template <Transport Mode = Transport::importance, Material M>
 [[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
                                                                                    const Crossing<typename M::scalar_type>& hit,
                                                                                    const Vec3<typename M::scalar_type>& d,
-                                                                                   const Vec3<typename M::scalar_type>& n,
                                                                                    Rgb<typename M::scalar_type>& power, Pcg32& rng,
                                                                                    typename M::scalar_type wavelength_nm = 0,
                                                                                    typename M::scalar_type outside_index = 1) noexcept
@@ -258,11 +350,24 @@ template <Material M>
     using Bounce = std::optional<PhotonBounce<T>>;
     // Each lobe's scattering, given what the material does here (computed once, also for
     // choosing between two lobes).
+    const Vec3<T> n = hit.facing_normal();
     const auto scatter_diffusely = [&](const Rgb<T>& reflectance) -> Bounce {
         if (!russian_roulette(power, reflectance, rng)) return std::nullopt;
-        return PhotonBounce<T>{cosine_hemisphere(n, rng), true};
+        if (hit.shades_flat()) return PhotonBounce<T>{cosine_hemisphere(n, rng), true};
+        const Vec3<T> ns = hit.facing_shading();
+        const Vec3<T> w = cosine_hemisphere(ns, rng);
+        const T w_g = dot(w, n);
+        if (!(w_g > T(0))) return std::nullopt;
+        if constexpr (Mode == Transport::importance) {
+            const T d_s = -dot(d, ns), d_g = -dot(d, n), w_s = dot(w, ns);
+            if (!(d_s > T(0))) return std::nullopt;
+            const T correction = (d_s * w_g) / (d_g * w_s);
+            if (!(correction < infinity<T>)) return std::nullopt; // d_g or w_s rounded to 0: no finite weight
+            power *= correction;
+        }
+        return PhotonBounce<T>{w, true};
     };
-    const auto scatter_specularly = [&](const SpecularSplit<T>& split) -> Bounce {
+    const auto scatter_specularly = [&](const SpecularSplit<T>& split, const Vec3<T>& about) -> Bounce {
         if constexpr (M::transmits) {
             // Reflect with probability F (the mean of F per channel), refract otherwise;
             // each then by its tint. Per-channel F weighs the survivor by F / mean.
@@ -272,16 +377,17 @@ template <Material M>
                 power *= reflect_it ? split.fresnel / split.reflected_share
                                     : (Rgb<T>(T(1)) - split.fresnel) / (T(1) - split.reflected_share);
             }
-            return PhotonBounce<T>{reflect_it ? reflect(d, n) : *split.refracted, false};
+            return PhotonBounce<T>{reflect_it ? reflect(d, about) : *split.refracted, false};
         } else {
             if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
-            return PhotonBounce<T>{reflect(d, n), false};
+            return PhotonBounce<T>{reflect(d, about), false};
         }
     };
     if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
         // Both lobes: choose one by its share of the reflected light (largest channels).
-        const Rgb<T> reflectance = diffuse_response(material, hit.point).photon_reflectance();
-        const SpecularSplit<T> split = delta_split(material, d, n, hit.entering, hit.point, wavelength_nm, outside_index);
+        const Rgb<T> reflectance = diffuse_response(material, hit).photon_reflectance();
+        const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
+        const SpecularSplit<T> split = delta_split(material, d, n_delta, hit.entering, hit.point, wavelength_nm, outside_index);
         const T w_diffuse = max_component(reflectance), w_delta = max_component(split.kr + split.kt);
         if (!(w_diffuse + w_delta > T(0))) return std::nullopt;
         const T p_diffuse = w_diffuse / (w_diffuse + w_delta);
@@ -290,11 +396,12 @@ template <Material M>
             return scatter_diffusely(reflectance);
         }
         power /= T(1) - p_diffuse;
-        return scatter_specularly(split);
+        return scatter_specularly(split, n_delta);
     } else if constexpr (M::has_diffuse) {
-        return scatter_diffusely(diffuse_response(material, hit.point).photon_reflectance());
+        return scatter_diffusely(diffuse_response(material, hit).photon_reflectance());
     } else {
-        return scatter_specularly(delta_split(material, d, n, hit.entering, hit.point, wavelength_nm, outside_index));
+        const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
+        return scatter_specularly(delta_split(material, d, n_delta, hit.entering, hit.point, wavelength_nm, outside_index), n_delta);
     }
 }
 

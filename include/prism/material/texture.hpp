@@ -9,12 +9,27 @@
 
 namespace prism {
 
-/// A texture maps a surface point to an albedo in [0, 1] per channel.
+/// A texture maps a surface point, `albedo(p)`, or a point and its surface coordinates,
+/// `albedo(p, uv)` (a mesh's interpolated uv; (0, 0) elsewhere: Crossing::uv), to an
+/// albedo in [0, 1] per channel.
 template <class X>
-concept Texture = requires(const X& texture, const Vec3<typename X::scalar_type>& p) {
-    { texture.albedo(p) } -> std::same_as<Rgb<typename X::scalar_type>>;
-    texture.validate();
-};
+concept Texture = requires(const X& texture) { texture.validate(); } &&
+                  (requires(const X& texture, const Vec3<typename X::scalar_type>& p) {
+                      { texture.albedo(p) } -> std::same_as<Rgb<typename X::scalar_type>>;
+                  } || requires(const X& texture, const Vec3<typename X::scalar_type>& p, const Vec2<typename X::scalar_type>& uv) {
+                      { texture.albedo(p, uv) } -> std::same_as<Rgb<typename X::scalar_type>>;
+                  });
+
+/// A texture's albedo at point p with surface coordinates uv, whichever it reads.
+template <Texture X>
+[[nodiscard]] constexpr Rgb<typename X::scalar_type> albedo_at(const X& texture, const Vec3<typename X::scalar_type>& p,
+                                                               const Vec2<typename X::scalar_type>& uv) noexcept
+{
+    if constexpr (requires { texture.albedo(p, uv); })
+        return texture.albedo(p, uv);
+    else
+        return texture.albedo(p);
+}
 
 /// One colour everywhere.
 template <Scalar T = float>
@@ -54,6 +69,30 @@ struct Checker {
     }
 };
 
-static_assert(Texture<Solid<float>> && Texture<Checker<double>>);
+/// A checkerboard in surface coordinates: squares of side `size` in (u, v), `even`
+/// where floor(u/size) + floor(v/size) is even (the square [0, size)^2 is even).
+template <Scalar T = float>
+struct UvChecker {
+    using scalar_type = T;
+    Rgb<T> even{T(0.8)};
+    Rgb<T> odd{T(0.35)};
+    T size = T(0.125);
+
+    [[nodiscard]] Rgb<T> albedo(const Vec3<T>&, const Vec2<T>& uv) const noexcept
+    {
+        const T inv = T(1) / size;
+        const T sum = std::floor(uv.x * inv) + std::floor(uv.y * inv);
+        return std::floor(sum * T(0.5)) * T(2) == sum ? even : odd;
+    }
+
+    constexpr void validate() const
+    {
+        detail::require_non_negative("UvChecker even", even);
+        detail::require_non_negative("UvChecker odd", odd);
+        detail::require_positive("UvChecker size", size);
+    }
+};
+
+static_assert(Texture<Solid<float>> && Texture<Checker<double>> && Texture<UvChecker<float>>);
 
 } // namespace prism

@@ -47,10 +47,13 @@ struct DiffuseResponse {
     [[nodiscard]] constexpr Rgb<T> photon_reflectance() const noexcept { return component_min(albedo * kd, Rgb<T>(T(1))); }
 };
 
-/// A Lambertian lobe: `diffuse(p)` gives its response at the surface point p.
+/// A Lambertian lobe: `diffuse(p)`, or `diffuse(p, uv)` for one that reads surface
+/// coordinates, gives its response at the surface point p.
 template <class M>
 concept DiffuseLobe = requires(const M& material, const Vec3<typename M::scalar_type>& p) {
     { material.diffuse(p) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
+} || requires(const M& material, const Vec3<typename M::scalar_type>& p, const Vec2<typename M::scalar_type>& uv) {
+    { material.diffuse(p, uv) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
 };
 
 /// What a delta interaction sees at a surface point: the incident cosine, the refracted
@@ -116,7 +119,7 @@ concept Material = requires(const M& material) {
     { M::transmits } -> std::convertible_to<bool>;
     material.validate();
 } && (M::has_diffuse || M::reflects || M::transmits) // a material does at least one thing
-  && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) -> DiffuseResponse<T>
+  && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) or diffuse(p, uv) -> DiffuseResponse<T>
   && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i or query) -> Rgb<T>
   && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta or query), reflection_tint(), transmission_tint()
   && (!M::transmits || InteriorMedium<M>);          // transmits promises medium(), a Medium of the same scalar type

@@ -46,8 +46,8 @@ struct WalkVertex {
 /// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
 /// on_diffuse(material, WalkVertex) is called at every diffuse surface and returns false
 /// to end the walk there; on_escape(ray, power, specular_only) when the path leaves the
-/// scene.
-template <class SceneT, class Air, class OnDiffuse, class OnEscape>
+/// scene. `Mode`: whether the path is a photon's or a camera's (scatter_photon).
+template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
                  Rgb<typename SceneT::scalar_type> power, Pcg32& rng, int max_bounces, OnDiffuse&& on_diffuse, OnEscape&& on_escape)
 {
@@ -102,7 +102,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 }
             }
             const Vec3<T> n = c.facing_normal();
-            const auto next = scatter_photon(material, c, d, n, power, rng, wavelength, index_of(scene, outside, wavelength));
+            const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, index_of(scene, outside, wavelength));
             if (!next) return Next::absorbed;
             ray = spawn_ray(c.point, c.error, c.normal, next->direction);
             if (next->diffuse) ++diffuse_bounces;
