@@ -12,7 +12,11 @@
 // Scene::transmittance (any hit); on 1 and 2 threads. Times: the minimum and median of `repeats` interleaved
 // rounds. Build: prism's on one thread; Embree's on its own (TBB) threads.
 // Agreement: the share of rays where both hit, or both miss, with t within 1e-3.
-//   bench_bvh_vs_embree [results-folder] [repeats] [bunny.obj]
+// Embree picks its kernels by the CPU at run time (AVX2 or AVX-512 where there are);
+// prism is compiled for the baseline x86-64 (SSE2). `embree-isa` (sse4.2, avx2, ...)
+// holds Embree to one instruction set, to tell the algorithms apart from the ISA; that
+// run writes bvh_vs_embree_<isa>.csv.
+//   bench_bvh_vs_embree [results-folder] [repeats] [bunny.obj] [embree-isa]
 #include "common.hpp"
 
 #include <prism/io/mesh.hpp>
@@ -81,9 +85,9 @@ std::vector<Ray<T>> camera_rays(int size, const Vec3<T>& eye, const Vec3<T>& at,
 
 class Embree {
 public:
-    explicit Embree(int threads)
+    Embree(int threads, const std::string& isa)
     {
-        const std::string config = "threads=" + std::to_string(threads);
+        const std::string config = "threads=" + std::to_string(threads) + (isa.empty() ? "" : ",isa=" + isa);
         device_ = rtcNewDevice(config.c_str());
         if (device_ == nullptr) throw std::runtime_error("rtcNewDevice failed");
     }
@@ -257,13 +261,18 @@ int main(int argc, char** argv)
     const std::filesystem::path out = argc > 1 ? argv[1] : "bench/results";
     const int repeats = argc > 2 ? std::atoi(argv[2]) : 3;
     const std::string bunny = argc > 3 ? argv[3] : "";
+    const std::string isa = argc > 4 ? argv[4] : "";
+    if (isa.find_first_of(",=") != std::string::npos) {
+        std::fprintf(stderr, "bench_bvh_vs_embree: embree-isa must be one instruction set name (sse4.2, avx2, ...), got '%s'\n", isa.c_str());
+        return 2;
+    }
     if (repeats < 1) {
         std::fprintf(stderr, "bench_bvh_vs_embree: repeats must be >= 1, got '%s'\n", argv[2]);
         return 2;
     }
-    bench::Csv csv(out / "bvh_vs_embree.csv",
+    bench::Csv csv(out / (isa.empty() ? std::string("bvh_vs_embree.csv") : "bvh_vs_embree_" + isa + ".csv"),
                    "geometry,count,rays,threads,ray_count,prism_mrays_min,prism_mrays_median,embree_mrays_min,embree_mrays_median,prism_build_s,embree_build_s,agree,hit_share");
-    Embree embree(2);
+    Embree embree(2, isa);
     const Lights lights{PointLight<T>{}};
     const auto primary = camera_rays(1000, {T(0.3), T(0.4), T(-4)}, {T(0), T(0), T(0)}, T(1.3));
 

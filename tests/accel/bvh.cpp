@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 using namespace prism;
@@ -311,6 +312,35 @@ TEST_CASE("the sweep's tree costs less than the binned one by the surface area h
     CHECK(sweep < binned);
     CHECK(binned < coarse);
     CHECK(sweep < 0.01 * double(balls.size()));
+}
+
+TEST_CASE_TEMPLATE("a build on several threads makes one thread's tree, node for node", T, float, double)
+{
+    // Clusters and a uniform spread, 5 * 10^4 boxes: the build leaves dozens of subtrees
+    // to its threads. Compared with the one-thread build (the serial twin), bit for bit.
+    Pcg32 rng(8u, 3u);
+    std::vector<Ball<T>> balls = random_balls<T>(30000, rng, T(50), T(0.3));
+    for (int cluster = 0; cluster < 40; ++cluster) {
+        const Vec3<T> c = random_point_in<T>(rng, T(50));
+        for (int i = 0; i < 500; ++i) balls.push_back({c + random_point_in<T>(rng, T(1)), T(0.01) + T(0.2) * rng.uniform<T>()});
+    }
+    const auto boxes = boxes_of(balls);
+    for (const BvhSplit split : {BvhSplit::binned, BvhSplit::sweep}) {
+        const Bvh<T> one(boxes, {.split = split, .threads = 1});
+        for (const unsigned threads : {2u, 3u, 8u}) {
+            CAPTURE(threads);
+            const Bvh<T> many(boxes, {.split = split, .threads = threads});
+            REQUIRE(many.nodes().size() == one.nodes().size());
+            CHECK(std::equal(many.primitives().begin(), many.primitives().end(), one.primitives().begin(), one.primitives().end()));
+            bool same = true;
+            for (std::size_t i = 0; i < one.nodes().size(); ++i) {
+                const auto &a = many.nodes()[i], &b = one.nodes()[i];
+                same = same && a.first == b.first && a.count == b.count && std::memcmp(a.bounds.data(), b.bounds.data(), sizeof a.bounds) == 0;
+            }
+            CHECK(same);
+            CHECK(many.depth() == one.depth());
+        }
+    }
 }
 
 TEST_CASE("degenerate sets: identical boxes, one box, exponentially spaced boxes; depth stays bounded")

@@ -32,6 +32,7 @@
 #include <prism/core/aabb.hpp>
 #include <prism/core/check.hpp>
 #include <prism/core/math.hpp>
+#include <prism/core/parallel.hpp>
 
 #include <algorithm>
 #include <array>
@@ -39,6 +40,8 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <optional>
+#include <utility>
 #include <span>
 #include <type_traits>
 #include <vector>
@@ -56,6 +59,7 @@ struct BvhConfig {
     int bins = 16;                       ///< SAH bins per axis (2 to 256), for BvhSplit::binned
     float traversal_cost = 1;            ///< C_trav, relative to one primitive test
     BvhSplit split = BvhSplit::binned;
+    unsigned threads = 0;                ///< build threads (0: every hardware thread); the tree is the same for any number
 };
 
 /// A node of the 4-wide tree: up to four children, each a node or a leaf, their boxes
@@ -311,6 +315,29 @@ private:
         std::uint32_t count = 0;
     };
 
+    /// Fewer primitives than this are built on one thread (starting one costs more).
+    static constexpr std::uint32_t parallel_build_size = 1u << 14;
+
+    /// A node of the build still to split, at its depth.
+    struct Open {
+        std::uint32_t node;
+        int depth;
+    };
+
+    /// A primitive during the build: its box and its index.
+    struct Ref {
+        Aabb<T> box;
+        std::uint32_t index;
+
+        [[nodiscard]] constexpr Vec3<T> center() const noexcept { return T(0.5) * (box.lo + box.hi); }
+        /// Ordered by the center's coordinate on `axis`, ties by index.
+        [[nodiscard]] constexpr bool before(const Ref& other, int axis) const noexcept
+        {
+            const T a = center()[axis], b = other.center()[axis];
+            return a < b || (a == b && index < other.index);
+        }
+    };
+
     /// A child met but not yet visited: a node (count 0) or a leaf, and where the ray's
     /// range within its box begins.
     struct Pending {
@@ -383,6 +410,9 @@ private:
             std::uint32_t binary, node;
         };
         std::vector<Job> jobs{{0, 0}};
+        // A 4-wide node takes at least one binary inner node (half the binary nodes, less
+        // one, are inner); what is not used is given back below.
+        nodes_.reserve(binary.size() / 2 + 1);
         nodes_.emplace_back();
         while (!jobs.empty()) {
             const Job job = jobs.back();
@@ -415,38 +445,96 @@ private:
                 nodes_[job.node].set(c, b.box, first, b.count);
             }
         }
+        nodes_.shrink_to_fit();
     }
 
     /// The binary tree, its root first; fills primitives_ and depth_.
     [[nodiscard]] constexpr std::vector<BinaryNode> build(std::span<const Aabb<T>> boxes, const BvhConfig& config)
     {
         const auto n = std::uint32_t(boxes.size());
-        std::vector<Vec3<T>> centers(n);
-        for (std::uint32_t i = 0; i < n; ++i) centers[i] = T(0.5) * (boxes[i].lo + boxes[i].hi);
-        primitives_.resize(n);
-        std::iota(primitives_.begin(), primitives_.end(), std::uint32_t(0));
+        // The primitives' boxes travel with their indices, partitioned in place: every
+        // pass over a node's primitives reads memory in order (indices into `boxes`
+        // would make each a random access: a build of 10^6 took four times as long).
+        std::vector<Ref> refs(n);
+        for (std::uint32_t i = 0; i < n; ++i) refs[i] = {boxes[i], i};
         std::vector<BinaryNode> nodes;
         nodes.reserve(2 * std::size_t(n) - 1);
-        nodes.push_back({bounds(boxes, 0, n), 0, n});
-        struct Open {
-            std::uint32_t node;
-            int depth;
-        };
-        std::vector<Open> pending{{0, 1}};
-        depth_ = 1;
+        nodes.push_back({bounds_of(refs, 0, n), 0, n});
+        // On several threads (for 2^14 primitives or more): the nodes of fewer than
+        // `grain` primitives are left for later as whole subtrees, built side by side
+        // (each splits its own range of refs into its own nodes) and then appended.
+        // Every node is split as one thread would split it, so the tree is the same for
+        // any thread count. (`threads` is no const initializer: that one would be
+        // constant-evaluated, and say 1.)
+        unsigned threads = 1;
+        if (!std::is_constant_evaluated() && n >= parallel_build_size) threads = build_threads(config.threads);
+        const std::uint32_t grain = threads > 1 ? std::max<std::uint32_t>(n / (16 * threads), 1024) : std::numeric_limits<std::uint32_t>::max();
+        std::vector<Open> subtrees;
+        depth_ = split_nodes(refs, nodes, {0, 1}, config, [&](const Open& open) {
+            if (threads > 1 && nodes[open.node].count <= grain) return subtrees.push_back(open), true;
+            return false;
+        });
+        if (subtrees.empty()) return finish(refs, nodes);
+        std::vector<std::vector<BinaryNode>> parts(subtrees.size());
+        std::vector<int> depths(subtrees.size());
+        run_parallel(subtrees.size(), threads, [&](std::size_t i) {
+            parts[i] = {nodes[subtrees[i].node]};
+            depths[i] = split_nodes(refs, parts[i], {0, subtrees[i].depth}, config, [](const Open&) { return false; });
+        });
+        for (std::size_t i = 0; i < subtrees.size(); ++i) {
+            // The part's node j > 0 goes to base + j - 1; its root replaces the node it grew from.
+            const auto base = std::uint32_t(nodes.size());
+            for (std::size_t j = 0; j < parts[i].size(); ++j) {
+                BinaryNode node = parts[i][j];
+                if (node.count == 0) node.first += base - 1;
+                if (j == 0) nodes[subtrees[i].node] = node;
+                else nodes.push_back(node);
+            }
+            depth_ = std::max(depth_, depths[i]);
+        }
+        return finish(refs, nodes);
+    }
+
+    /// The primitives' order, from the refs the build partitioned; returns the nodes.
+    [[nodiscard]] constexpr std::vector<BinaryNode> finish(const std::vector<Ref>& refs, std::vector<BinaryNode>& nodes)
+    {
+        primitives_.resize(refs.size());
+        for (std::size_t k = 0; k < refs.size(); ++k) primitives_[k] = refs[k].index;
+        return std::move(nodes);
+    }
+
+    /// Split `nodes`' node `root` (a leaf holding its range of refs) and its children
+    /// until they are leaves, appending the children to `nodes`; a node that
+    /// `defer(open)` takes is left as it is. Returns the deepest depth reached.
+    template <class Defer>
+    [[nodiscard]] static constexpr int split_nodes(std::vector<Ref>& refs, std::vector<BinaryNode>& nodes, Open root, const BvhConfig& config, Defer&& defer)
+    {
+        std::vector<Open> pending{root};
+        int deepest = root.depth;
         const std::size_t bins = std::size_t(config.bins);
-        std::vector<T> swept(config.split == BvhSplit::sweep ? n : 0); // the sweep's right-hand costs
+        std::vector<T> swept(config.split == BvhSplit::sweep ? nodes[root.node].count : 0); // the sweep's right-hand costs
+        // The binned split's scratch: per axis, each bin's box and count, and the box of
+        // the bins from b on (only the first `bins` of each are used, and reset per node).
+        std::array<std::array<Aabb<T>, 256>, 3> bin_box;
+        std::array<std::array<std::uint32_t, 256>, 3> bin_count;
+        std::array<Aabb<T>, 256> right_box;
+        std::array<T, 256> right_cost;
         while (!pending.empty()) {
-            const auto [index, depth] = pending.back();
+            const Open open = pending.back();
+            const auto [index, depth] = open;
             pending.pop_back();
-            depth_ = std::max(depth_, depth);
+            deepest = std::max(deepest, depth);
             const std::uint32_t first = nodes[index].first, count = nodes[index].count;
-            if (count <= 1) continue;
+            if (count <= 1 || defer(open)) continue;
             // The centroids' bounds: the bins span them.
             Aabb<T> middle;
-            for (std::uint32_t k = first; k < first + count; ++k) middle = middle.merged({centers[primitives_[k]], centers[primitives_[k]]});
-            const auto begin = primitives_.begin() + first, end = begin + count;
+            for (std::uint32_t k = first; k < first + count; ++k) {
+                const Vec3<T> c = refs[k].center();
+                middle = middle.merged({c, c});
+            }
+            const auto begin = refs.begin() + first, end = begin + count;
             std::uint32_t split = 0; // primitives [first, first + split) go left
+            std::optional<std::array<Aabb<T>, 2>> children; // their boxes, where the split found them
             if (depth < 48 && !(middle.lo == middle.hi) && config.split == BvhSplit::sweep) {
                 // Every split between neighbours in centroid order, on each axis.
                 T best_cost = infinity<T>;
@@ -454,79 +542,94 @@ private:
                 std::uint32_t best_split = 0;
                 for (int axis = 0; axis < 3; ++axis) {
                     if (!(middle.hi[axis] - middle.lo[axis] > T(0))) continue;
-                    sort_by_center(begin, end, centers, axis);
-                    Aabb<T> right_box;
+                    sort_by_center(begin, end, axis);
+                    Aabb<T> right;
                     for (std::uint32_t k = count - 1; k > 0; --k) {
-                        right_box = right_box.merged(boxes[begin[k]]);
-                        swept[k] = detail::half_area(right_box) * T(count - k);
+                        right = right.merged(begin[k].box);
+                        swept[k] = detail::half_area(right) * T(count - k);
                     }
-                    Aabb<T> left_box;
+                    Aabb<T> left;
                     for (std::uint32_t k = 1; k < count; ++k) {
-                        left_box = left_box.merged(boxes[begin[k - 1]]);
-                        const T cost = detail::half_area(left_box) * T(k) + swept[k];
+                        left = left.merged(begin[k - 1].box);
+                        const T cost = detail::half_area(left) * T(k) + swept[k];
                         if (cost < best_cost) best_cost = cost, best_axis = axis, best_split = k;
                     }
                 }
                 if (best_axis < 0 || prefer_leaf(best_cost, nodes[index].box, count, config)) continue;
-                if (best_axis != 2) sort_by_center(begin, end, centers, best_axis);
+                if (best_axis != 2) sort_by_center(begin, end, best_axis);
                 split = best_split;
             } else if (depth < 48 && !(middle.lo == middle.hi)) {
-                // Binned SAH over the three axes.
+                // Binned SAH over the three axes, binned in one pass.
+                std::array<T, 3> scale{};
+                for (int axis = 0; axis < 3; ++axis) {
+                    const T extent = middle.hi[axis] - middle.lo[axis];
+                    scale[std::size_t(axis)] = extent > T(0) ? T(bins) / extent : T(0);
+                    std::fill_n(bin_box[std::size_t(axis)].begin(), bins, Aabb<T>{});
+                    std::fill_n(bin_count[std::size_t(axis)].begin(), bins, std::uint32_t(0));
+                }
+                for (auto it = begin; it != end; ++it) {
+                    const Vec3<T> c = it->center();
+                    for (std::size_t axis = 0; axis < 3; ++axis) {
+                        if (!(scale[axis] > T(0))) continue;
+                        const std::size_t b = bin_of(c[int(axis)], middle.lo[int(axis)], scale[axis], bins);
+                        bin_box[axis][b] = bin_box[axis][b].merged(it->box);
+                        ++bin_count[axis][b];
+                    }
+                }
                 T best_cost = infinity<T>;
                 int best_axis = -1;
                 std::size_t best_bin = 0;
-                for (int axis = 0; axis < 3; ++axis) {
-                    const T extent = middle.hi[axis] - middle.lo[axis];
-                    if (!(extent > T(0))) continue;
-                    std::array<Aabb<T>, 256> bin_box{};
-                    std::array<std::size_t, 256> bin_count{};
-                    const T scale = T(bins) / extent;
-                    for (std::uint32_t k = first; k < first + count; ++k) {
-                        const std::uint32_t p = primitives_[k];
-                        const std::size_t b = bin_of(centers[p][axis], middle.lo[axis], scale, bins);
-                        bin_box[b] = bin_box[b].merged(boxes[p]);
-                        ++bin_count[b];
-                    }
+                std::array<Aabb<T>, 2> best_boxes{};
+                for (std::size_t axis = 0; axis < 3; ++axis) {
+                    if (!(scale[axis] > T(0))) continue;
                     // Right-to-left sweep of areas and counts, then left to right.
-                    std::array<T, 256> right_cost{};
-                    Aabb<T> right_box;
-                    std::size_t right_count = 0;
+                    Aabb<T> right;
+                    std::uint32_t right_count = 0;
                     for (std::size_t b = bins - 1; b > 0; --b) {
-                        right_box = right_box.merged(bin_box[b]);
-                        right_count += bin_count[b];
-                        right_cost[b] = right_count ? detail::half_area(right_box) * T(right_count) : T(0);
+                        right = right.merged(bin_box[axis][b]);
+                        right_count += bin_count[axis][b];
+                        right_box[b] = right;
+                        right_cost[b] = right_count ? detail::half_area(right) * T(right_count) : T(0);
                     }
-                    Aabb<T> left_box;
-                    std::size_t left_count = 0;
+                    Aabb<T> left;
+                    std::uint32_t left_count = 0;
                     for (std::size_t b = 1; b < bins; ++b) {
-                        left_box = left_box.merged(bin_box[b - 1]);
-                        left_count += bin_count[b - 1];
+                        left = left.merged(bin_box[axis][b - 1]);
+                        left_count += bin_count[axis][b - 1];
                         if (left_count == 0 || left_count == count) continue;
-                        const T cost = detail::half_area(left_box) * T(left_count) + right_cost[b];
-                        if (cost < best_cost) best_cost = cost, best_axis = axis, best_bin = b;
+                        const T cost = detail::half_area(left) * T(left_count) + right_cost[b];
+                        if (cost < best_cost) best_cost = cost, best_axis = int(axis), best_bin = b, best_boxes = {left, right_box[b]};
                     }
                 }
                 if (best_axis < 0 || prefer_leaf(best_cost, nodes[index].box, count, config)) continue;
-                const T lo = middle.lo[best_axis], scale = T(bins) / (middle.hi[best_axis] - middle.lo[best_axis]);
-                split = std::uint32_t(std::partition(begin, end, [&](std::uint32_t p) { return bin_of(centers[p][best_axis], lo, scale, bins) < best_bin; }) - begin);
+                const T lo = middle.lo[best_axis], axis_scale = scale[std::size_t(best_axis)];
+                split = std::uint32_t(std::partition(begin, end, [&](const Ref& r) { return bin_of(r.center()[best_axis], lo, axis_scale, bins) < best_bin; }) - begin);
+                children = best_boxes;
             } else {
                 if (count <= std::uint32_t(config.max_leaf_size)) continue; // coincident centroids: a leaf if it may be one
                 // By count: the lower half along the widest centroid axis (all equal: any half).
                 const int axis = index_of_max(middle.hi - middle.lo);
                 split = count / 2;
-                std::nth_element(begin, begin + split, end, [&](std::uint32_t a, std::uint32_t b) {
-                    return centers[a][axis] < centers[b][axis] || (centers[a][axis] == centers[b][axis] && a < b);
-                });
+                std::nth_element(begin, begin + split, end, [&](const Ref& a, const Ref& b) { return a.before(b, axis); });
             }
+            if (!children) children = std::array<Aabb<T>, 2>{bounds_of(refs, first, split), bounds_of(refs, first + split, count - split)};
             const std::uint32_t child = std::uint32_t(nodes.size());
-            nodes.push_back({bounds(boxes, first, split), first, split});
-            nodes.push_back({bounds(boxes, first + split, count - split), first + split, count - split});
+            nodes.push_back({(*children)[0], first, split});
+            nodes.push_back({(*children)[1], first + split, count - split});
             nodes[index].first = child;
             nodes[index].count = 0;
             pending.push_back({child + 1, depth + 1});
             pending.push_back({child, depth + 1});
         }
-        return nodes;
+        return deepest;
+    }
+
+    [[nodiscard]] static unsigned build_threads(unsigned requested) noexcept { return detail::worker_count(requested); }
+
+    template <class F>
+    static void run_parallel(std::size_t count, unsigned threads, F&& f)
+    {
+        detail::parallel_for(count, threads, f, 1);
     }
 
     /// Whether a leaf of `count` primitives costs no more than the best split (of summed
@@ -540,9 +643,9 @@ private:
 
     /// Sorts primitives by their centers' coordinate on `axis`, ties by index.
     template <class It>
-    static constexpr void sort_by_center(It begin, It end, const std::vector<Vec3<T>>& centers, int axis)
+    static constexpr void sort_by_center(It begin, It end, int axis)
     {
-        std::sort(begin, end, [&](std::uint32_t a, std::uint32_t b) { return centers[a][axis] < centers[b][axis] || (centers[a][axis] == centers[b][axis] && a < b); });
+        std::sort(begin, end, [&](const Ref& a, const Ref& b) { return a.before(b, axis); });
     }
 
     [[nodiscard]] static constexpr std::size_t bin_of(T c, T lo, T scale, std::size_t bins) noexcept
@@ -553,10 +656,10 @@ private:
 
     [[nodiscard]] static constexpr int index_of_max(const Vec3<T>& v) noexcept { return v.x >= v.y ? (v.x >= v.z ? 0 : 2) : (v.y >= v.z ? 1 : 2); }
 
-    [[nodiscard]] constexpr Aabb<T> bounds(std::span<const Aabb<T>> boxes, std::uint32_t first, std::uint32_t count) const noexcept
+    [[nodiscard]] static constexpr Aabb<T> bounds_of(const std::vector<Ref>& refs, std::uint32_t first, std::uint32_t count) noexcept
     {
         Aabb<T> box;
-        for (std::uint32_t k = first; k < first + count; ++k) box = box.merged(boxes[primitives_[k]]);
+        for (std::uint32_t k = first; k < first + count; ++k) box = box.merged(refs[k].box);
         return box;
     }
 

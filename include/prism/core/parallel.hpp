@@ -17,12 +17,11 @@ namespace prism::detail {
     return requested != 0 ? requested : std::max(1u, std::thread::hardware_concurrency());
 }
 
-/// f(i) for every i in [0, count), in chunks taken by up to `threads` threads (0 = all
-/// hardware threads); f must write only what belongs to i.
+/// f(i) for every i in [0, count), in chunks of `chunk` taken by up to `threads` threads
+/// (0 = all hardware threads); f must write only what belongs to i.
 template <class F>
-void parallel_for(std::size_t count, unsigned threads, F&& f)
+void parallel_for(std::size_t count, unsigned threads, F&& f, std::size_t chunk = 256)
 {
-    constexpr std::size_t chunk = 256;
     const std::size_t chunks = (count + chunk - 1) / chunk;
     std::atomic<std::size_t> next{0};
     const auto work = [&] {
