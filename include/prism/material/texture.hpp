@@ -78,12 +78,8 @@ struct UvChecker {
     Rgb<T> odd{T(0.35)};
     T size = T(0.125);
 
-    [[nodiscard]] Rgb<T> albedo(const Vec3<T>&, const Vec2<T>& uv) const noexcept
-    {
-        const T inv = T(1) / size;
-        const T sum = std::floor(uv.x * inv) + std::floor(uv.y * inv);
-        return std::floor(sum * T(0.5)) * T(2) == sum ? even : odd;
-    }
+    /// Checker's cells in the plane (u, v, 0).
+    [[nodiscard]] Rgb<T> albedo(const Vec3<T>&, const Vec2<T>& uv) const noexcept { return Checker<T>{even, odd, size}.albedo({uv.x, uv.y, T(0)}); }
 
     constexpr void validate() const
     {
