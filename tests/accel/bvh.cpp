@@ -316,18 +316,19 @@ TEST_CASE("the sweep's tree costs less than the binned one by the surface area h
 
 TEST_CASE_TEMPLATE("a build on several threads makes one thread's tree, node for node", T, float, double)
 {
-    // Clusters and a uniform spread, 5 * 10^4 boxes: the build leaves dozens of subtrees
-    // to its threads. Compared with the one-thread build (the serial twin), bit for bit.
+    // Clusters and a uniform spread, 17 000 boxes (a threaded build needs 2^14): the build
+    // leaves a dozen subtrees to its threads. Compared with the one-thread build (the
+    // serial twin), bit for bit.
     Pcg32 rng(8u, 3u);
-    std::vector<Ball<T>> balls = random_balls<T>(30000, rng, T(50), T(0.3));
-    for (int cluster = 0; cluster < 40; ++cluster) {
+    std::vector<Ball<T>> balls = random_balls<T>(12000, rng, T(50), T(0.3));
+    for (int cluster = 0; cluster < 20; ++cluster) {
         const Vec3<T> c = random_point_in<T>(rng, T(50));
-        for (int i = 0; i < 500; ++i) balls.push_back({c + random_point_in<T>(rng, T(1)), T(0.01) + T(0.2) * rng.uniform<T>()});
+        for (int i = 0; i < 250; ++i) balls.push_back({c + random_point_in<T>(rng, T(1)), T(0.01) + T(0.2) * rng.uniform<T>()});
     }
     const auto boxes = boxes_of(balls);
     for (const BvhSplit split : {BvhSplit::binned, BvhSplit::sweep}) {
         const Bvh<T> one(boxes, {.split = split, .threads = 1});
-        for (const unsigned threads : {2u, 3u, 8u}) {
+        for (const unsigned threads : {2u, 3u}) {
             CAPTURE(threads);
             const Bvh<T> many(boxes, {.split = split, .threads = threads});
             REQUIRE(many.nodes().size() == one.nodes().size());
