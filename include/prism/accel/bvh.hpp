@@ -39,7 +39,6 @@
 #include <bit>
 #include <cstdint>
 #include <limits>
-#include <numeric>
 #include <optional>
 #include <utility>
 #include <span>
@@ -467,7 +466,7 @@ private:
         // any thread count. (`threads` is no const initializer: that one would be
         // constant-evaluated, and say 1.)
         unsigned threads = 1;
-        if (!std::is_constant_evaluated() && n >= parallel_build_size) threads = build_threads(config.threads);
+        if (!std::is_constant_evaluated() && n >= parallel_build_size) threads = detail::worker_count(config.threads);
         const std::uint32_t grain = threads > 1 ? std::max<std::uint32_t>(n / (16 * threads), 1024) : std::numeric_limits<std::uint32_t>::max();
         std::vector<Open> subtrees;
         depth_ = split_nodes(refs, nodes, {0, 1}, config, [&](const Open& open) {
@@ -477,10 +476,10 @@ private:
         if (subtrees.empty()) return finish(refs, nodes);
         std::vector<std::vector<BinaryNode>> parts(subtrees.size());
         std::vector<int> depths(subtrees.size());
-        run_parallel(subtrees.size(), threads, [&](std::size_t i) {
+        detail::parallel_for(subtrees.size(), threads, [&](std::size_t i) {
             parts[i] = {nodes[subtrees[i].node]};
             depths[i] = split_nodes(refs, parts[i], {0, subtrees[i].depth}, config, [](const Open&) { return false; });
-        });
+        }, 1); // a subtree at a time
         for (std::size_t i = 0; i < subtrees.size(); ++i) {
             // The part's node j > 0 goes to base + j - 1; its root replaces the node it grew from.
             const auto base = std::uint32_t(nodes.size());
@@ -622,14 +621,6 @@ private:
             pending.push_back({child, depth + 1});
         }
         return deepest;
-    }
-
-    [[nodiscard]] static unsigned build_threads(unsigned requested) noexcept { return detail::worker_count(requested); }
-
-    template <class F>
-    static void run_parallel(std::size_t count, unsigned threads, F&& f)
-    {
-        detail::parallel_for(count, threads, f, 1);
     }
 
     /// Whether a leaf of `count` primitives costs no more than the best split (of summed
