@@ -106,13 +106,19 @@ namespace detail {
 template <Scalar T>
 struct SlabRay {
     Vec3<T> inverse;
+    /// inverse * far_widening: the far face's distance, widened by the one product.
+    /// (Infinite for a denormal d: the far face is then at +-inf, or NaN, which the test
+    /// ignores; never a miss.)
+    Vec3<T> far_inverse;
     /// The origin moved by the pad, for the near and far faces of each slab: the widened
     /// face lo - pad is at (lo - (o + pad)) / d from the origin.
     Vec3<T> near_origin, far_origin;
     std::array<bool, 3> negative{}; ///< the ray runs toward -axis: it meets hi first
 
     /// The far slab's widening: rounding never reports a miss for a ray that touches a
-    /// box (pbrt-v4, Bounds3::IntersectP).
+    /// box (pbrt-v4, Bounds3::IntersectP). Folded into far_inverse, the far distance
+    /// takes four roundings (o - pad, 1 / d, the widening, the product) where pbrt's takes
+    /// three and the widening's own, and 2 gamma(3) covers both.
     static constexpr T far_widening = T(1) + T(2) * gamma<T>(3);
 
     /// `magnitude`: the largest coordinate magnitude of every box to be tested.
@@ -130,6 +136,7 @@ struct SlabRay {
             // infinite reciprocal of its sign, so the slab is all or nothing (NaN only
             // for an origin exactly on a widened face, which the test then ignores).
             inverse[axis] = d == T(0) ? (negative_zero(d) ? -infinity<T> : infinity<T>) : clamp(T(1) / d, -largest, largest);
+            far_inverse[axis] = inverse[axis] * far_widening;
             negative[std::size_t(axis)] = inverse[axis] < T(0);
             near_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] - pad : ray.origin[axis] + pad;
             far_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] + pad : ray.origin[axis] - pad;
@@ -147,16 +154,23 @@ struct SlabRay {
     /// of a traversal's work, and a call per node costs a quarter of it.)
     [[nodiscard, gnu::always_inline]] constexpr Interval<T> may_cross(const Aabb<T>& box, Interval<T> range) const noexcept
     {
+        std::array<T, 3> t_near{}, t_far{};
         for (int axis = 0; axis < 3; ++axis) {
             const bool n = negative[std::size_t(axis)];
-            const T t_near = ((n ? box.hi[axis] : box.lo[axis]) - near_origin[axis]) * inverse[axis];
-            const T t_far = ((n ? box.lo[axis] : box.hi[axis]) - far_origin[axis]) * inverse[axis] * far_widening;
-            // A NaN (0 * inf) compares false and leaves the range as it was.
-            range.min = t_near > range.min ? t_near : range.min;
-            range.max = t_far < range.max ? t_far : range.max;
+            t_near[std::size_t(axis)] = ((n ? box.hi[axis] : box.lo[axis]) - near_origin[axis]) * inverse[axis];
+            t_far[std::size_t(axis)] = ((n ? box.lo[axis] : box.hi[axis]) - far_origin[axis]) * far_inverse[axis];
         }
+        range.min = later(later(t_near[0], t_near[1]), later(t_near[2], range.min));
+        range.max = sooner(sooner(t_far[0], t_far[1]), sooner(t_far[2], range.max));
         return range.min <= range.max ? range : Interval<T>{};
     }
+
+    /// max and min, paired as a tree (two steps deep instead of three), in the form of
+    /// SSE's maxps and minps: a NaN (0 * inf, an axis-parallel ray starting on a widened
+    /// face) in the first argument gives the second. A NaN in the second drops its pair,
+    /// which only widens the test.
+    [[nodiscard, gnu::always_inline]] static constexpr T later(T a, T b) noexcept { return a > b ? a : b; }
+    [[nodiscard, gnu::always_inline]] static constexpr T sooner(T a, T b) noexcept { return a < b ? a : b; }
 
     /// may_cross for the four children of a node at once: a bit per child the ray may
     /// cross, and in `near` where its part of the range begins (for compile time; at run
@@ -180,7 +194,7 @@ template <Scalar T>
 struct SlabLanes {
     static constexpr int width = BvhNode<T>::width;
     typedef T Lanes __attribute__((vector_size(width * sizeof(T))));
-    Lanes near_origin[3], far_origin[3], inverse[3];
+    Lanes near_origin[3], far_origin[3], inverse[3], far_inverse[3];
     std::size_t near_face[3], far_face[3]; ///< rows of BvhNode::bounds
 
     explicit SlabLanes(const SlabRay<T>& slab) noexcept
@@ -189,6 +203,7 @@ struct SlabLanes {
             near_origin[axis] = Lanes{} + slab.near_origin[axis];
             far_origin[axis] = Lanes{} + slab.far_origin[axis];
             inverse[axis] = Lanes{} + slab.inverse[axis];
+            far_inverse[axis] = Lanes{} + slab.far_inverse[axis];
             const std::size_t n = slab.negative[std::size_t(axis)];
             near_face[axis] = std::size_t(axis) + 3 * n;
             far_face[axis] = std::size_t(axis) + 3 * (1 - n);
@@ -197,17 +212,20 @@ struct SlabLanes {
 
     [[nodiscard, gnu::always_inline]] unsigned may_cross(const BvhNode<T>& node, Interval<T> range, std::array<T, width>& near) const noexcept
     {
-        Lanes lo = Lanes{} + range.min, hi = Lanes{} + range.max;
+        Lanes t_near[3], t_far[3];
         for (int axis = 0; axis < 3; ++axis) {
             Lanes near_side, far_side;
             __builtin_memcpy(&near_side, node.bounds[near_face[axis]].data(), sizeof(Lanes));
             __builtin_memcpy(&far_side, node.bounds[far_face[axis]].data(), sizeof(Lanes));
-            const Lanes t_near = (near_side - near_origin[axis]) * inverse[axis];
-            const Lanes t_far = (far_side - far_origin[axis]) * inverse[axis] * SlabRay<T>::far_widening;
-            // A NaN (0 * inf) compares false and leaves the range as it was.
-            lo = t_near > lo ? t_near : lo;
-            hi = t_far < hi ? t_far : hi;
+            t_near[axis] = (near_side - near_origin[axis]) * inverse[axis];
+            t_far[axis] = (far_side - far_origin[axis]) * far_inverse[axis];
         }
+        // SlabRay::later and sooner, written out (a function returning a vector wider
+        // than the target's registers changes the ABI, and GCC says so).
+        const Lanes min = Lanes{} + range.min, max = Lanes{} + range.max;
+        const Lanes near01 = t_near[0] > t_near[1] ? t_near[0] : t_near[1], near2 = t_near[2] > min ? t_near[2] : min;
+        const Lanes far01 = t_far[0] < t_far[1] ? t_far[0] : t_far[1], far2 = t_far[2] < max ? t_far[2] : max;
+        const Lanes lo = near01 > near2 ? near01 : near2, hi = far01 < far2 ? far01 : far2;
         const auto crossed = lo <= hi;
         __builtin_memcpy(near.data(), &lo, sizeof(Lanes));
 #if defined(__SSE__)
@@ -371,6 +389,24 @@ private:
                 std::array<T, width> near{};
                 unsigned hits = slab.may_cross(node, range, near);
                 if (hits != 0) {
+                    // One child or two (most nodes deep in the tree) take no sort: fewer
+                    // branches for the processor to mispredict on incoherent rays.
+                    const auto child = [&](unsigned mask) {
+                        const auto lane = std::size_t(std::countr_zero(mask));
+                        return Pending{node.first[lane], node.count[lane], near[lane]};
+                    };
+                    const unsigned rest = hits & (hits - 1);
+                    if (rest == 0) {
+                        at = child(hits);
+                        continue;
+                    }
+                    if ((rest & (rest - 1)) == 0) {
+                        Pending first = child(hits), second = child(rest);
+                        if (Nearest && second.near < first.near) std::swap(first, second);
+                        stack[std::size_t(top++)] = second;
+                        at = first;
+                        continue;
+                    }
                     std::array<Pending, width> met;
                     int n = 0;
                     for (; hits != 0; hits &= hits - 1) {

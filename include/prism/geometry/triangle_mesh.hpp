@@ -121,7 +121,9 @@ template <int Kz, Scalar T>
             e2 = T(double(p[0].x) * double(p[1].y) - double(p[0].y) * double(p[1].x));
         }
     }
-    if ((e0 < T(0) || e1 < T(0) || e2 < T(0)) && (e0 > T(0) || e1 > T(0) || e2 > T(0))) return false;
+    // One branch, not six (the signs are as good as random over incoherent rays).
+    const bool below = (e0 < T(0)) | (e1 < T(0)) | (e2 < T(0)), above = (e0 > T(0)) | (e1 > T(0)) | (e2 > T(0));
+    if (below & above) return false;
     const T det = e0 + e1 + e2;
     if (det == T(0)) return false; // edge-on, or a degenerate triangle
     const T z0 = p[0].z * ray.sz, z1 = p[1].z * ray.sz, z2 = p[2].z * ray.sz;
