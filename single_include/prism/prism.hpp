@@ -2221,10 +2221,12 @@ struct Crossings {
 // The Shape concept: what every primitive, transformed shape and CSG node provides.
 
 
+#include <array>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <utility>
 
 namespace prism {
 
@@ -2291,21 +2293,32 @@ template <Shape S>
     else return !shape.template crossings<false>(ray, range).empty();
 }
 
-/// A shape whose lean query names what it found (a mesh: the triangle), so that its
-/// surface there needs no second search: first_crossing(ray, range, hint) is
-/// first_crossing(ray, range) and sets the hint; surface_crossing(ray, range, hint),
-/// over a range that ends just past that t, is crossings(ray, range).front().
+/// What a shape's lean query found, kept for its surface: a mesh's triangle, and the t
+/// and barycentric weights at which its ray met it (in the shape's own frame).
+template <Scalar T>
+struct SurfaceHint {
+    std::uint32_t index = 0;
+    T t = 0;
+    std::array<T, 3> b{}; ///< all zero: nothing found, search again
+    bool entering = false;
+};
+
+/// A shape whose lean query names what it found (a mesh: the triangle, where it was
+/// met), so that its surface there needs no second search: first_crossing(ray, range,
+/// hint) is first_crossing(ray, range) and sets the hint; surface_crossing(ray, range,
+/// hint), for the same ray over a range that ends just past that t, is
+/// crossings(ray, range).front().
 template <class S>
 concept HasHintedSurface = HasFirstCrossing<S> && requires(const S& shape, const Ray<typename S::scalar_type>& ray, Interval<typename S::scalar_type> range,
-                                                           std::uint32_t& hint) {
+                                                           SurfaceHint<typename S::scalar_type>& hint) {
     { shape.first_crossing(ray, range, hint) } -> std::same_as<typename S::scalar_type>;
-    { shape.surface_crossing(ray, range, std::uint32_t{}) } -> std::same_as<std::optional<Crossing<typename S::scalar_type>>>;
+    { shape.surface_crossing(ray, range, std::as_const(hint)) } -> std::same_as<std::optional<Crossing<typename S::scalar_type>>>;
 };
 
 /// first_crossing, setting `hint` for surface_crossing where the shape gives one.
 template <Shape S>
 [[nodiscard]] constexpr typename S::scalar_type first_crossing(const S& shape, const Ray<typename S::scalar_type>& ray, Interval<typename S::scalar_type> range,
-                                                               std::uint32_t& hint) noexcept
+                                                               SurfaceHint<typename S::scalar_type>& hint) noexcept
 {
     if constexpr (HasHintedSurface<S>) return shape.first_crossing(ray, range, hint);
     else return first_crossing(shape, ray, range);
@@ -2314,7 +2327,8 @@ template <Shape S>
 /// crossings(ray, range).front(), if any: found from the hint where the shape takes one.
 template <Shape S>
 [[nodiscard]] constexpr std::optional<Crossing<typename S::scalar_type>> surface_crossing(const S& shape, const Ray<typename S::scalar_type>& ray,
-                                                                                          Interval<typename S::scalar_type> range, std::uint32_t hint) noexcept
+                                                                                          Interval<typename S::scalar_type> range,
+                                                                                          const SurfaceHint<typename S::scalar_type>& hint) noexcept
 {
     if constexpr (HasHintedSurface<S>) {
         return shape.surface_crossing(ray, range, hint);
@@ -2912,34 +2926,34 @@ public:
     /// crossings<false>(ray, range).front().t gives, found by a closest-hit query alone.
     [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        std::uint32_t triangle = 0;
-        return first_crossing(ray, range, triangle);
+        SurfaceHint<T> hint;
+        return first_crossing(ray, range, hint);
     }
 
-    /// first_crossing, naming the triangle hit (for surface_crossing).
-    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t& triangle) const noexcept
+    /// first_crossing, keeping the triangle hit and where (for surface_crossing).
+    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
     {
         const detail::ShearedRay<T> sheared(ray);
-        T nearest = infinity<T>;
+        detail::TriangleHit<T> nearest{infinity<T>, {}, false};
+        std::uint32_t triangle = 0;
         data_->bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t k, Interval<T>& r) {
             detail::TriangleHit<T> h;
-            if (detail::hit_triangle(sheared, data_->corners[k], r, h)) nearest = r.max = h.t, triangle = k;
+            if (detail::hit_triangle(sheared, data_->corners[k], r, h)) nearest = h, r.max = h.t, triangle = k;
             return false;
         });
-        return nearest;
+        if (nearest.t < infinity<T>) hint = {triangle, nearest.t, nearest.b, nearest.entering};
+        return nearest.t;
     }
 
-    /// crossings(ray, range).front(), from the triangle first_crossing named: a hit
-    /// inside it (off its edges) is the only one at its t, but where two triangles not
-    /// sharing an edge meet the ray at the same float t (a self-intersecting mesh).
-    /// A hit on an edge takes the search.
-    [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t triangle) const noexcept
+    /// crossings(ray, range).front(), from the hit first_crossing kept (the same ray
+    /// tested against the same triangle, so the same numbers): a hit inside it (off its
+    /// edges) is the only one at its t, but where two triangles not sharing an edge meet
+    /// the ray at the same float t (a self-intersecting mesh). A hit on an edge, or
+    /// outside `range`, takes the search.
+    [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, const SurfaceHint<T>& hint) const noexcept
     {
-        detail::TriangleHit<T> h;
-        if (triangle < data_->corners.size() && detail::hit_triangle(detail::ShearedRay<T>(ray), data_->corners[triangle], range, h) && h.b[0] > T(0) &&
-            h.b[1] > T(0) && h.b[2] > T(0)) {
-            return surface_at({h.t, triangle, h.b, h.entering}, h.entering);
-        }
+        if (hint.index < data_->corners.size() && range.surrounds(hint.t) && hint.b[0] > T(0) && hint.b[1] > T(0) && hint.b[2] > T(0))
+            return surface_at({hint.t, hint.index, hint.b, hint.entering}, hint.entering);
         const auto all = crossings(ray, range);
         if (all.empty()) return std::nullopt;
         return all.front();
@@ -3969,7 +3983,7 @@ public:
     /// query, when it has one, in its coordinates.
     [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        std::uint32_t unused = 0;
+        SurfaceHint<T> unused;
         return first_crossing_with(ray, range, unused);
     }
 
@@ -3979,14 +3993,14 @@ public:
     }
 
     /// first_crossing, with the shape's hint for surface_crossing (a mesh's triangle).
-    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t& hint) const noexcept
+    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
         requires HasHintedSurface<S>
     {
         return first_crossing_with(ray, range, hint);
     }
 
     /// crossings(ray, range).front(), from the shape's hint.
-    [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t hint) const noexcept
+    [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, const SurfaceHint<T>& hint) const noexcept
         requires HasHintedSurface<S>
     {
         if (bounded_ && !bounds_.reached_after(ray, range.min)) return std::nullopt;
@@ -4001,7 +4015,7 @@ public:
 
 private:
     /// The shape's first crossing (and its hint, where it gives one), in world t.
-    [[nodiscard]] T first_crossing_with(const Ray<T>& ray, Interval<T> range, std::uint32_t& hint) const noexcept
+    [[nodiscard]] T first_crossing_with(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
     {
         if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
         const auto [local, dt] = to_local(ray);
@@ -5575,7 +5589,7 @@ private:
         bool found = false;
         std::uint32_t slot = 0, index = 0;
         Interval<T> range{};
-        std::uint32_t hint = 0; ///< the shape's own (a mesh's triangle), for surface_crossing
+        SurfaceHint<T> hint{}; ///< the shape's own (a mesh's triangle), for surface_crossing
     };
 
     template <class S>
@@ -5619,7 +5633,7 @@ private:
         const auto objects = objects_of(std::get<I>(slots));
         for (std::size_t k = 0; k < objects.size(); ++k) {
             if (!worth_testing(objects[k], near_cluster)) continue;
-            std::uint32_t hint = 0;
+            SurfaceHint<T> hint;
             const T t = first_crossing(objects[k].shape, ray, range, hint);
             if (!(t < infinity<T>)) continue;
             // Ending the range just past the crossing keeps every crossing before it, and
@@ -5639,21 +5653,24 @@ private:
         const auto& index = std::get<I>(indices_);
         PRISM_ASSERT(index.shapes.size() + index.unbounded.size() == objects.size());
         // Crossings lie strictly inside the range, so in a scan in index order the first
-        // object at a t wins a tie. The tree visits objects in another order: one that
-        // comes before the nearest so far is asked up to just past its t, so that it
-        // takes a tie as it would have in the scan.
-        const auto test = [&](const auto& shape, std::uint32_t k, Interval<T>& r) {
-            const bool before = nearest.found && nearest.slot == I && k < nearest.index;
-            std::uint32_t hint = 0;
-            const T t = first_crossing(shape, ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
-            if (!(t < infinity<T>)) return;
+        // object at a t wins a tie. The tree visits objects in another order: each is
+        // asked up to just past the nearest t so far, and a crossing at that t (a tie)
+        // is taken by an object that comes before the nearest in index order, as the
+        // scan would have. (So an object's index is read only where it hits: one load
+        // from another array less per primitive the tree visits.)
+        const auto test = [&](const auto& shape, auto&& index_of, Interval<T>& r) {
+            SurfaceHint<T> hint;
+            const T t = first_crossing(shape, ray, {r.min, next_float_up(r.max)}, hint);
+            if (!(t < infinity<T>) || t > r.max) return;
+            const std::uint32_t k = index_of();
+            if (t == r.max && !(nearest.found && nearest.slot == I && k < nearest.index)) return;
             nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}, hint};
             r.max = t;
         };
-        for (const std::uint32_t k : index.unbounded) test(objects[k].shape, k, range);
+        for (const std::uint32_t k : index.unbounded) test(objects[k].shape, [k] { return k; }, range);
         if (near_cluster)
             index.bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t p, Interval<T>& r) {
-                test(index.shapes[p], index.object[p], r);
+                test(index.shapes[p], [&] { return index.object[p]; }, r);
                 return false;
             });
     }

@@ -27,7 +27,7 @@ int disagreements(const S& shape, Pcg32& rng, int rays)
         wrong += prism::any_crossing(shape, ray, range) == list.empty();
         // The surface from the hint: the full list's first crossing over the range that
         // ends just past it (the scene's surface pass), bit for bit.
-        std::uint32_t hint = 0;
+        prism::SurfaceHint<T> hint;
         const T t = prism::first_crossing(shape, ray, range, hint);
         if (!(t < prism::infinity<T>)) continue;
         const Interval<T> to_it{range.min, prism::next_float_up(t)};

@@ -7,10 +7,12 @@
 #include <prism/core/ray.hpp>
 #include <prism/geometry/crossings.hpp>
 
+#include <array>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <utility>
 
 namespace prism {
 
@@ -77,21 +79,32 @@ template <Shape S>
     else return !shape.template crossings<false>(ray, range).empty();
 }
 
-/// A shape whose lean query names what it found (a mesh: the triangle), so that its
-/// surface there needs no second search: first_crossing(ray, range, hint) is
-/// first_crossing(ray, range) and sets the hint; surface_crossing(ray, range, hint),
-/// over a range that ends just past that t, is crossings(ray, range).front().
+/// What a shape's lean query found, kept for its surface: a mesh's triangle, and the t
+/// and barycentric weights at which its ray met it (in the shape's own frame).
+template <Scalar T>
+struct SurfaceHint {
+    std::uint32_t index = 0;
+    T t = 0;
+    std::array<T, 3> b{}; ///< all zero: nothing found, search again
+    bool entering = false;
+};
+
+/// A shape whose lean query names what it found (a mesh: the triangle, where it was
+/// met), so that its surface there needs no second search: first_crossing(ray, range,
+/// hint) is first_crossing(ray, range) and sets the hint; surface_crossing(ray, range,
+/// hint), for the same ray over a range that ends just past that t, is
+/// crossings(ray, range).front().
 template <class S>
 concept HasHintedSurface = HasFirstCrossing<S> && requires(const S& shape, const Ray<typename S::scalar_type>& ray, Interval<typename S::scalar_type> range,
-                                                           std::uint32_t& hint) {
+                                                           SurfaceHint<typename S::scalar_type>& hint) {
     { shape.first_crossing(ray, range, hint) } -> std::same_as<typename S::scalar_type>;
-    { shape.surface_crossing(ray, range, std::uint32_t{}) } -> std::same_as<std::optional<Crossing<typename S::scalar_type>>>;
+    { shape.surface_crossing(ray, range, std::as_const(hint)) } -> std::same_as<std::optional<Crossing<typename S::scalar_type>>>;
 };
 
 /// first_crossing, setting `hint` for surface_crossing where the shape gives one.
 template <Shape S>
 [[nodiscard]] constexpr typename S::scalar_type first_crossing(const S& shape, const Ray<typename S::scalar_type>& ray, Interval<typename S::scalar_type> range,
-                                                               std::uint32_t& hint) noexcept
+                                                               SurfaceHint<typename S::scalar_type>& hint) noexcept
 {
     if constexpr (HasHintedSurface<S>) return shape.first_crossing(ray, range, hint);
     else return first_crossing(shape, ray, range);
@@ -100,7 +113,8 @@ template <Shape S>
 /// crossings(ray, range).front(), if any: found from the hint where the shape takes one.
 template <Shape S>
 [[nodiscard]] constexpr std::optional<Crossing<typename S::scalar_type>> surface_crossing(const S& shape, const Ray<typename S::scalar_type>& ray,
-                                                                                          Interval<typename S::scalar_type> range, std::uint32_t hint) noexcept
+                                                                                          Interval<typename S::scalar_type> range,
+                                                                                          const SurfaceHint<typename S::scalar_type>& hint) noexcept
 {
     if constexpr (HasHintedSurface<S>) {
         return shape.surface_crossing(ray, range, hint);

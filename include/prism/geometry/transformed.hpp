@@ -63,7 +63,7 @@ public:
     /// query, when it has one, in its coordinates.
     [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        std::uint32_t unused = 0;
+        SurfaceHint<T> unused;
         return first_crossing_with(ray, range, unused);
     }
 
@@ -73,14 +73,14 @@ public:
     }
 
     /// first_crossing, with the shape's hint for surface_crossing (a mesh's triangle).
-    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t& hint) const noexcept
+    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
         requires HasHintedSurface<S>
     {
         return first_crossing_with(ray, range, hint);
     }
 
     /// crossings(ray, range).front(), from the shape's hint.
-    [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t hint) const noexcept
+    [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, const SurfaceHint<T>& hint) const noexcept
         requires HasHintedSurface<S>
     {
         if (bounded_ && !bounds_.reached_after(ray, range.min)) return std::nullopt;
@@ -95,7 +95,7 @@ public:
 
 private:
     /// The shape's first crossing (and its hint, where it gives one), in world t.
-    [[nodiscard]] T first_crossing_with(const Ray<T>& ray, Interval<T> range, std::uint32_t& hint) const noexcept
+    [[nodiscard]] T first_crossing_with(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
     {
         if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
         const auto [local, dt] = to_local(ray);

@@ -282,34 +282,34 @@ public:
     /// crossings<false>(ray, range).front().t gives, found by a closest-hit query alone.
     [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        std::uint32_t triangle = 0;
-        return first_crossing(ray, range, triangle);
+        SurfaceHint<T> hint;
+        return first_crossing(ray, range, hint);
     }
 
-    /// first_crossing, naming the triangle hit (for surface_crossing).
-    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t& triangle) const noexcept
+    /// first_crossing, keeping the triangle hit and where (for surface_crossing).
+    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
     {
         const detail::ShearedRay<T> sheared(ray);
-        T nearest = infinity<T>;
+        detail::TriangleHit<T> nearest{infinity<T>, {}, false};
+        std::uint32_t triangle = 0;
         data_->bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t k, Interval<T>& r) {
             detail::TriangleHit<T> h;
-            if (detail::hit_triangle(sheared, data_->corners[k], r, h)) nearest = r.max = h.t, triangle = k;
+            if (detail::hit_triangle(sheared, data_->corners[k], r, h)) nearest = h, r.max = h.t, triangle = k;
             return false;
         });
-        return nearest;
+        if (nearest.t < infinity<T>) hint = {triangle, nearest.t, nearest.b, nearest.entering};
+        return nearest.t;
     }
 
-    /// crossings(ray, range).front(), from the triangle first_crossing named: a hit
-    /// inside it (off its edges) is the only one at its t, but where two triangles not
-    /// sharing an edge meet the ray at the same float t (a self-intersecting mesh).
-    /// A hit on an edge takes the search.
-    [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, std::uint32_t triangle) const noexcept
+    /// crossings(ray, range).front(), from the hit first_crossing kept (the same ray
+    /// tested against the same triangle, so the same numbers): a hit inside it (off its
+    /// edges) is the only one at its t, but where two triangles not sharing an edge meet
+    /// the ray at the same float t (a self-intersecting mesh). A hit on an edge, or
+    /// outside `range`, takes the search.
+    [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, const SurfaceHint<T>& hint) const noexcept
     {
-        detail::TriangleHit<T> h;
-        if (triangle < data_->corners.size() && detail::hit_triangle(detail::ShearedRay<T>(ray), data_->corners[triangle], range, h) && h.b[0] > T(0) &&
-            h.b[1] > T(0) && h.b[2] > T(0)) {
-            return surface_at({h.t, triangle, h.b, h.entering}, h.entering);
-        }
+        if (hint.index < data_->corners.size() && range.surrounds(hint.t) && hint.b[0] > T(0) && hint.b[1] > T(0) && hint.b[2] > T(0))
+            return surface_at({hint.t, hint.index, hint.b, hint.entering}, hint.entering);
         const auto all = crossings(ray, range);
         if (all.empty()) return std::nullopt;
         return all.front();
