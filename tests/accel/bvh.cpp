@@ -401,6 +401,25 @@ TEST_CASE("bad input is refused, naming it")
     CHECK_THROWS_WITH_AS((Bvh<float>{boxes, {.max_leaf_size = 0}}), doctest::Contains("max_leaf_size must be >= 1, got 0"), std::invalid_argument);
     CHECK_THROWS_WITH_AS((Bvh<float>{boxes, {.bins = 1}}), doctest::Contains("bins must be in [2, 256], got 1"), std::invalid_argument);
     CHECK_THROWS_WITH_AS((Bvh<float>{boxes, {.split = BvhSplit(7)}}), doctest::Contains("split must be binned or sweep, got 7"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((Bvh<float>{boxes, {.leaf_block = 0}}), doctest::Contains("leaf_block must be >= 1, got 0"), std::invalid_argument);
+}
+
+TEST_CASE("a leaf of up to leaf_block primitives costs one test: four cubes far apart make one leaf with blocks of four, four leaves without")
+{
+    // Unit cubes at x = 0, 10, 20, 30. The root's box has half area 31 + 1 + 31 = 63,
+    // each half's 11 + 1 + 11 = 23. One test at a time, a leaf of four costs 4 and the
+    // split 1 + (23 * 2 + 23 * 2) / 63 = 2.46 (and a pair 2 against 1 + (3 + 3) / 23):
+    // four leaves of one. A block of four costs 1, the split 1 + (23 + 23) / 63: a leaf.
+    std::vector<Aabb<float>> cubes;
+    for (int i = 0; i < 4; ++i) cubes.push_back({{10.0f * float(i), 0, 0}, {10.0f * float(i) + 1, 1, 1}});
+    for (const int block : {1, 4}) {
+        const Bvh<float> bvh(cubes, {.max_leaf_size = 4, .leaf_block = block});
+        std::vector<std::uint32_t> leaves;
+        for (const auto& node : bvh.nodes())
+            for (int c = 0; c < BvhNode<float>::width; ++c)
+                if (node.used(c) && node.leaf(c)) leaves.push_back(node.count[std::size_t(c)]);
+        CHECK(leaves == (block == 1 ? std::vector<std::uint32_t>{1, 1, 1, 1} : std::vector<std::uint32_t>{4}));
+    }
 }
 
 namespace {

@@ -6,7 +6,9 @@
 // primitives' centroids are binned along each axis, every bin boundary is costed as
 //     C = C_trav + C_isect (A_left n_left + A_right n_right) / A_node
 // and the cheapest split is taken, unless a leaf of n primitives (C_isect n) is cheaper
-// and holds no more than max_leaf_size. (BvhSplit::sweep costs instead every split
+// and holds no more than max_leaf_size. (With leaf_block b, for a caller that tests b
+// primitives at once, as TriangleMesh does four, every n above is ceil(n / b), as in
+// Embree's builders.) (BvhSplit::sweep costs instead every split
 // between neighbours in centroid order, sorting on each axis: a build 2-3.5 times as
 // long, for an SAH cost 0.1-0.6 % lower in bench/bvh_quality.cpp.) Primitives whose
 // centroids coincide are split by
@@ -56,7 +58,8 @@ enum class BvhSplit {
 struct BvhConfig {
     int max_leaf_size = 4;               ///< a leaf holds at most this many primitives (>= 1)
     int bins = 16;                       ///< SAH bins per axis (2 to 256), for BvhSplit::binned
-    float traversal_cost = 1;            ///< C_trav, relative to one primitive test
+    float traversal_cost = 1;            ///< C_trav, relative to one leaf test of leaf_block primitives
+    int leaf_block = 1;                  ///< primitives a leaf tests at once (TriangleMesh: 4): n cost ceil(n / leaf_block) tests
     BvhSplit split = BvhSplit::binned;
     unsigned threads = 0;                ///< build threads (0: every hardware thread); the tree is the same for any number
 };
@@ -262,6 +265,7 @@ public:
     {
         if (config.max_leaf_size < 1) detail::throw_invalid("BvhConfig max_leaf_size must be >= 1, got ", config.max_leaf_size);
         if (config.bins < 2 || config.bins > 256) detail::throw_invalid("BvhConfig bins must be in [2, 256], got ", config.bins);
+        if (config.leaf_block < 1) detail::throw_invalid("BvhConfig leaf_block must be >= 1, got ", config.leaf_block);
         if (!(config.traversal_cost >= 0.0f)) detail::throw_invalid("BvhConfig traversal_cost must be >= 0, got ", config.traversal_cost);
         if (config.split != BvhSplit::binned && config.split != BvhSplit::sweep) detail::throw_invalid("BvhConfig split must be binned or sweep, got ", int(config.split));
         if (boxes.size() >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
@@ -303,7 +307,7 @@ public:
     template <class Visit>
     constexpr bool traverse(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
     {
-        return walk<true>(ray, range, [&](std::uint32_t k, Interval<T>& r) { return visit(primitives_[k], r); });
+        return walk<true>(ray, range, each_primitive([&](std::uint32_t k, Interval<T>& r) { return visit(primitives_[k], r); }));
     }
 
     /// traverse, with visit given a primitive's position k in leaf order (primitives()[k])
@@ -311,7 +315,7 @@ public:
     template <class Visit>
     constexpr bool traverse_in_leaf_order(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
     {
-        return walk<true>(ray, range, visit);
+        return walk<true>(ray, range, each_primitive(visit));
     }
 
     /// traverse_in_leaf_order for a query that takes any hit (a shadow ray's): the same
@@ -319,6 +323,22 @@ public:
     /// visit returns true.
     template <class Visit>
     constexpr bool any_in_leaf_order(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
+    {
+        return walk<false>(ray, range, each_primitive(visit));
+    }
+
+    /// traverse_in_leaf_order a leaf at a time: visit(first, count, range) tests the
+    /// primitives at leaf-order positions [first, first + count) (for callers that test
+    /// several at once), may shrink range.max, and returns true to end the query.
+    template <class Visit>
+    constexpr bool traverse_leaves(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
+    {
+        return walk<true>(ray, range, visit);
+    }
+
+    /// any_in_leaf_order a leaf at a time (as traverse_leaves).
+    template <class Visit>
+    constexpr bool any_leaf(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
     {
         return walk<false>(ray, range, visit);
     }
@@ -362,7 +382,19 @@ private:
         T near;
     };
 
-    /// The traversal; `Nearest`: children nearest first (else in lane order).
+    /// A leaf's visit from a primitive's: each in turn, until one ends the query.
+    template <class Visit>
+    [[nodiscard]] static constexpr auto each_primitive(Visit&& visit) noexcept
+    {
+        return [&visit](std::uint32_t first, std::uint32_t count, Interval<T>& range) {
+            for (std::uint32_t k = first; k < first + count; ++k)
+                if (visit(k, range)) return true;
+            return false;
+        };
+    }
+
+    /// The traversal, visit(first, count, range) for each leaf; `Nearest`: children
+    /// nearest first (else in lane order).
     template <bool Nearest, class Visit>
     constexpr bool walk(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
     {
@@ -422,8 +454,7 @@ private:
                     continue;
                 }
             } else {
-                for (std::uint32_t k = at.first; k < at.first + at.count; ++k)
-                    if (visit(k, range)) return true;
+                if (visit(at.first, at.count, range)) return true;
             }
             // Next on the stack, skipping children the shrunk range no longer reaches
             // (range.min stays, so the child's part of it is [near, range.max]).
@@ -581,12 +612,12 @@ private:
                     Aabb<T> right;
                     for (std::uint32_t k = count - 1; k > 0; --k) {
                         right = right.merged(begin[k].box);
-                        swept[k] = detail::half_area(right) * T(count - k);
+                        swept[k] = detail::half_area(right) * tests(count - k, config);
                     }
                     Aabb<T> left;
                     for (std::uint32_t k = 1; k < count; ++k) {
                         left = left.merged(begin[k - 1].box);
-                        const T cost = detail::half_area(left) * T(k) + swept[k];
+                        const T cost = detail::half_area(left) * tests(k, config) + swept[k];
                         if (cost < best_cost) best_cost = cost, best_axis = axis, best_split = k;
                     }
                 }
@@ -624,7 +655,7 @@ private:
                         right = right.merged(bin_box[axis][b]);
                         right_count += bin_count[axis][b];
                         right_box[b] = right;
-                        right_cost[b] = right_count ? detail::half_area(right) * T(right_count) : T(0);
+                        right_cost[b] = right_count ? detail::half_area(right) * tests(right_count, config) : T(0);
                     }
                     Aabb<T> left;
                     std::uint32_t left_count = 0;
@@ -632,7 +663,7 @@ private:
                         left = left.merged(bin_box[axis][b - 1]);
                         left_count += bin_count[axis][b - 1];
                         if (left_count == 0 || left_count == count) continue;
-                        const T cost = detail::half_area(left) * T(left_count) + right_cost[b];
+                        const T cost = detail::half_area(left) * tests(left_count, config) + right_cost[b];
                         if (cost < best_cost) best_cost = cost, best_axis = int(axis), best_bin = b, best_boxes = {left, right_box[b]};
                     }
                 }
@@ -664,8 +695,15 @@ private:
     [[nodiscard]] static constexpr bool prefer_leaf(T best_cost, const Aabb<T>& box, std::uint32_t count, const BvhConfig& config) noexcept
     {
         const T area = detail::half_area(box);
-        const T leaf_cost = T(count), split_cost = T(config.traversal_cost) + (area > T(0) ? best_cost / area : T(count));
+        const T leaf_cost = tests(count, config), split_cost = T(config.traversal_cost) + (area > T(0) ? best_cost / area : leaf_cost);
         return leaf_cost <= split_cost && count <= std::uint32_t(config.max_leaf_size);
+    }
+
+    /// The leaf tests `count` primitives take: one per leaf_block of them.
+    [[nodiscard]] static constexpr T tests(std::uint32_t count, const BvhConfig& config) noexcept
+    {
+        const auto block = std::uint32_t(config.leaf_block);
+        return T((count + block - 1) / block);
     }
 
     /// Sorts primitives by their centers' coordinate on `axis`, ties by index.
