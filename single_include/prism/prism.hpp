@@ -5812,24 +5812,21 @@ private:
         const auto& index = std::get<I>(indices_);
         PRISM_ASSERT(index.shapes.size() + index.unbounded.size() == objects.size());
         // Crossings lie strictly inside the range, so in a scan in index order the first
-        // object at a t wins a tie. The tree visits objects in another order: each is
-        // asked up to just past the nearest t so far, and a crossing at that t (a tie)
-        // is taken by an object that comes before the nearest in index order, as the
-        // scan would have. (So an object's index is read only where it hits: one load
-        // from another array less per primitive the tree visits.)
-        const auto test = [&](const auto& shape, auto&& index_of, Interval<T>& r) {
+        // object at a t wins a tie. The tree visits objects in another order: one that
+        // comes before the nearest so far is asked up to just past its t, so that it
+        // takes a tie as it would have in the scan.
+        const auto test = [&](const auto& shape, std::uint32_t k, Interval<T>& r) {
+            const bool before = nearest.found && nearest.slot == I && k < nearest.index;
             SurfaceHint<T> hint;
-            const T t = first_crossing(shape, ray, {r.min, next_float_up(r.max)}, hint);
-            if (!(t < infinity<T>) || t > r.max) return;
-            const std::uint32_t k = index_of();
-            if (t == r.max && !(nearest.found && nearest.slot == I && k < nearest.index)) return;
+            const T t = first_crossing(shape, ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
+            if (!(t < infinity<T>)) return;
             nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}, hint};
             r.max = t;
         };
-        for (const std::uint32_t k : index.unbounded) test(objects[k].shape, [k] { return k; }, range);
+        for (const std::uint32_t k : index.unbounded) test(objects[k].shape, k, range);
         if (near_cluster)
             index.bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t p, Interval<T>& r) {
-                test(index.shapes[p], [&] { return index.object[p]; }, r);
+                test(index.shapes[p], index.object[p], r);
                 return false;
             });
     }
