@@ -210,6 +210,25 @@ void race(bench::Csv& csv, const Row& row, const SceneT& scene, Embree& embree, 
             return shadow ? scene.transmittance((*set)[i], rays.shadow_end[i]).r == T(0) : scene.closest_hit((*set)[i], {T(0), infinity<T>}).has_value();
         };
         const auto embree_hit = [&](std::size_t i) { return shadow ? embree.occluded((*set)[i], rays.shadow_end[i]) : embree.closest((*set)[i]) < infinity<float>; };
+        // The timed loops: one query each, so that the compiler inlines that one alone
+        // (a loop over prism_hit, holding both queries, traced the bunny's primary rays
+        // at two thirds of the speed).
+        const auto prism_hits = [&](std::size_t a, std::size_t b) {
+            long h = 0;
+            if (shadow)
+                for (std::size_t i = a; i < b; ++i) h += scene.transmittance((*set)[i], rays.shadow_end[i]).r == T(0);
+            else
+                for (std::size_t i = a; i < b; ++i) h += scene.closest_hit((*set)[i], {T(0), infinity<T>}).has_value();
+            return h;
+        };
+        const auto embree_hits = [&](std::size_t a, std::size_t b) {
+            long h = 0;
+            if (shadow)
+                for (std::size_t i = a; i < b; ++i) h += embree.occluded((*set)[i], rays.shadow_end[i]);
+            else
+                for (std::size_t i = a; i < b; ++i) h += embree.closest((*set)[i]) < infinity<float>;
+            return h;
+        };
         // Agreement.
         std::size_t agree = 0, hits = 0;
         for (std::size_t i = 0; i < set->size(); ++i) {
@@ -231,13 +250,11 @@ void race(bench::Csv& csv, const Row& row, const SceneT& scene, Embree& embree, 
             std::vector<long> sink(2, 0);
             for (int round = 0; round < repeats; ++round) {
                 tp.push_back(trace_seconds(*set, threads, [&](std::size_t a, std::size_t b) {
-                    long h = 0;
-                    for (std::size_t i = a; i < b; ++i) h += prism_hit(i);
+                    const long h = prism_hits(a, b);
                     if (a == 0) sink[0] = h;
                 }));
                 te.push_back(trace_seconds(*set, threads, [&](std::size_t a, std::size_t b) {
-                    long h = 0;
-                    for (std::size_t i = a; i < b; ++i) h += embree_hit(i);
+                    const long h = embree_hits(a, b);
                     if (a == 0) sink[1] = h;
                 }));
             }
