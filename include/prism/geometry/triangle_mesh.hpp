@@ -225,7 +225,6 @@ template <Scalar T>
 struct MeshData {
     std::vector<TriangleBlock<T>> blocks;        ///< the corners, a leaf's at a time
     std::vector<std::uint32_t> slot;             ///< per triangle, in the Bvh's leaf order: its block * 4 + lane
-    std::vector<std::uint32_t> input_index;      ///< the triangle's index in the input
     std::vector<std::array<Vec3<T>, 3>> normals; ///< per triangle, its corners' unit normals (or none)
     std::vector<std::array<Vec2<T>, 3>> uvs;     ///< per triangle, its corners' coordinates (or none)
     Bvh<T> bvh;
@@ -290,7 +289,6 @@ public:
         }
         data->bvh = Bvh<T>(boxes, config);
         const auto order = data->bvh.primitives();
-        data->input_index.assign(order.begin(), order.end());
         make_blocks(*data, positions, triangles);
         if (!normals.empty()) {
             data->normals.resize(order.size());
@@ -324,7 +322,7 @@ public:
     [[nodiscard]] bool closed() const noexcept { return data_->closed; }
     [[nodiscard]] bool has_normals() const noexcept { return !data_->normals.empty(); }
     [[nodiscard]] bool has_uvs() const noexcept { return !data_->uvs.empty(); }
-    [[nodiscard]] std::size_t triangle_count() const noexcept { return data_->input_index.size(); }
+    [[nodiscard]] std::size_t triangle_count() const noexcept { return data_->bvh.size(); }
     [[nodiscard]] const Bvh<T>& bvh() const noexcept { return data_->bvh; }
     [[nodiscard]] Aabb<T> bounds() const noexcept { return data_->bounds; }
     /// Bytes held by the shared data (vertices, normals, uvs, indices, Bvh), for every
@@ -332,7 +330,7 @@ public:
     [[nodiscard]] std::size_t memory_bytes() const noexcept
     {
         const auto& d = *data_;
-        return sizeof(d) + d.input_index.size() * (sizeof(d.input_index[0]) + sizeof(d.slot[0])) +
+        return sizeof(d) + d.slot.size() * sizeof(d.slot[0]) +
                d.blocks.size() * sizeof(d.blocks[0]) + d.normals.size() * sizeof(d.normals[0]) +
                d.uvs.size() * sizeof(d.uvs[0]) + d.bvh.nodes().size() * sizeof(BvhNode<T>) + d.bvh.primitives().size() * sizeof(std::uint32_t);
     }
@@ -462,7 +460,8 @@ private:
     static void make_blocks(detail::MeshData<T>& data, std::span<const Vec3<T>> positions, std::span<const TriangleIndices> triangles)
     {
         constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
-        data.slot.assign(data.input_index.size(), 0);
+        const auto input = data.bvh.primitives(); // the triangle at each leaf-order position
+        data.slot.assign(input.size(), 0);
         for (const BvhNode<T>& node : data.bvh.nodes())
             for (int c = 0; c < BvhNode<T>::width; ++c) {
                 if (!node.used(c) || !node.leaf(c)) continue;
@@ -473,7 +472,7 @@ private:
                     for (std::uint32_t lane = 0; lane < width; ++lane) {
                         const std::uint32_t at = std::min(k + lane, first + count - 1);
                         if (at == k + lane) data.slot[at] = block * width + lane;
-                        const TriangleIndices& f = triangles[data.input_index[at]];
+                        const TriangleIndices& f = triangles[input[at]];
                         for (std::size_t i = 0; i < 3; ++i)
                             for (int axis = 0; axis < 3; ++axis) b.corner[3 * i + std::size_t(axis)][lane] = positions[f[i]][axis];
                     }
