@@ -666,9 +666,9 @@ void parallel_for(std::size_t count, unsigned threads, F&& f, std::size_t chunk 
 // primitives' centroids are binned along each axis, every bin boundary is costed as
 //     C = C_trav + C_isect (A_left n_left + A_right n_right) / A_node
 // and the cheapest split is taken, unless a leaf of n primitives (C_isect n) is cheaper
-// and holds no more than max_leaf_size. (With leaf_block b, for a caller that tests b
-// primitives at once, as TriangleMesh does four, every n above is ceil(n / b), as in
-// Embree's builders.) (BvhSplit::sweep costs instead every split
+// and holds no more than max_leaf_size. For a caller that tests b primitives at once
+// (BvhConfig::leaf_block; TriangleMesh tests four), every n above is ceil(n / b), as in
+// Embree's builders. (BvhSplit::sweep costs instead every split
 // between neighbours in centroid order, sorting on each axis: a build 2-3.5 times as
 // long, for an SAH cost 0.1-0.6 % lower in bench/bvh_quality.cpp.) Primitives whose
 // centroids coincide are split by
@@ -2717,8 +2717,11 @@ static_assert(Shape<Box<double>>);
 // that leans to the other side of the triangle), and its uv likewise. They change how
 // the surface shades (material/scattering.hpp), never where it is or which side is out.
 //
-// The mesh's data (vertices in leaf order, the Bvh) is immutable and shared: copies of
-// a mesh, and Transformed meshes in an ObjectArray (instances), hold one copy of it.
+// Storage and queries: the corners are kept a leaf at a time, four triangles side by
+// side (TriangleBlock), and a leaf's triangles meet the edge test four at once before
+// those it keeps take the whole test; the Bvh costs a leaf of up to four as one test.
+// The mesh's data (corner blocks, the Bvh) is immutable and shared: copies of a mesh,
+// and Transformed meshes in an ObjectArray (instances), hold one copy of it.
 
 
 #include <algorithm>
@@ -3007,7 +3010,7 @@ public:
     [[nodiscard]] std::size_t triangle_count() const noexcept { return data_->bvh.size(); }
     [[nodiscard]] const Bvh<T>& bvh() const noexcept { return data_->bvh; }
     [[nodiscard]] Aabb<T> bounds() const noexcept { return data_->bounds; }
-    /// Bytes held by the shared data (vertices, normals, uvs, indices, Bvh), for every
+    /// Bytes held by the shared data (corner blocks and slots, normals, uvs, Bvh), for every
     /// copy together.
     [[nodiscard]] std::size_t memory_bytes() const noexcept
     {

@@ -6,9 +6,9 @@
 // primitives' centroids are binned along each axis, every bin boundary is costed as
 //     C = C_trav + C_isect (A_left n_left + A_right n_right) / A_node
 // and the cheapest split is taken, unless a leaf of n primitives (C_isect n) is cheaper
-// and holds no more than max_leaf_size. (With leaf_block b, for a caller that tests b
-// primitives at once, as TriangleMesh does four, every n above is ceil(n / b), as in
-// Embree's builders.) (BvhSplit::sweep costs instead every split
+// and holds no more than max_leaf_size. For a caller that tests b primitives at once
+// (BvhConfig::leaf_block; TriangleMesh tests four), every n above is ceil(n / b), as in
+// Embree's builders. (BvhSplit::sweep costs instead every split
 // between neighbours in centroid order, sorting on each axis: a build 2-3.5 times as
 // long, for an SAH cost 0.1-0.6 % lower in bench/bvh_quality.cpp.) Primitives whose
 // centroids coincide are split by

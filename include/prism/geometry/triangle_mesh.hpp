@@ -30,8 +30,11 @@
 // that leans to the other side of the triangle), and its uv likewise. They change how
 // the surface shades (material/scattering.hpp), never where it is or which side is out.
 //
-// The mesh's data (vertices in leaf order, the Bvh) is immutable and shared: copies of
-// a mesh, and Transformed meshes in an ObjectArray (instances), hold one copy of it.
+// Storage and queries: the corners are kept a leaf at a time, four triangles side by
+// side (TriangleBlock), and a leaf's triangles meet the edge test four at once before
+// those it keeps take the whole test; the Bvh costs a leaf of up to four as one test.
+// The mesh's data (corner blocks, the Bvh) is immutable and shared: copies of a mesh,
+// and Transformed meshes in an ObjectArray (instances), hold one copy of it.
 #pragma once
 
 #include <prism/accel/bvh.hpp>
@@ -325,7 +328,7 @@ public:
     [[nodiscard]] std::size_t triangle_count() const noexcept { return data_->bvh.size(); }
     [[nodiscard]] const Bvh<T>& bvh() const noexcept { return data_->bvh; }
     [[nodiscard]] Aabb<T> bounds() const noexcept { return data_->bounds; }
-    /// Bytes held by the shared data (vertices, normals, uvs, indices, Bvh), for every
+    /// Bytes held by the shared data (corner blocks and slots, normals, uvs, Bvh), for every
     /// copy together.
     [[nodiscard]] std::size_t memory_bytes() const noexcept
     {
