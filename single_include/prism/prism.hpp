@@ -674,10 +674,11 @@ void parallel_for(std::size_t count, unsigned threads, F&& f, std::size_t chunk 
 // centroids coincide are split by
 // count. Below depth 48 only count splits are made, so no binary tree is deeper than
 // 48 + 32 levels and traversal needs a fixed stack. The binary tree is then collapsed
-// into a 4-wide one (as Embree's BVH4): each node takes its children's children, the
-// largest first, until it has four, so a ray tests four boxes at once, side by side in
-// memory (128 bytes a node in float), with one SIMD instruction per step, and meets
-// half as many levels.
+// into a wide one (as Embree's BVH4 and BVH8): each node takes its children's children,
+// the largest first, until it has Width (4, or 8 in float where the target has AVX), so
+// a ray tests four or eight boxes at once, side by side in memory (128 or 256 bytes a
+// node in float), with one SIMD instruction per step, and meets a half or a third as
+// many levels.
 //
 // Traversal visits children nearest first (an any-hit query's in any order) and never
 // misses a primitive whose box the ray may cross (Aabb::may_cross: the box widened by
@@ -719,13 +720,31 @@ struct BvhConfig {
     unsigned threads = 0;                ///< build threads (0: every hardware thread); the tree is the same for any number
 };
 
-/// A node of the 4-wide tree: up to four children, each a node or a leaf, their boxes
-/// side by side (lane c of bounds[axis] is child c's lo[axis], of bounds[3 + axis] its
-/// hi[axis]). An unused lane holds the empty box (lo +inf, hi -inf), which every ray
-/// misses, and count 0.
-template <Scalar T>
+namespace detail {
+
+/// The node width a Bvh<T> takes unless told: eight children where the target has AVX
+/// and T is float (a face's eight coordinates fill one 256-bit register, and the tree
+/// has a third fewer levels), else four (one 128-bit register in float, 256 in double).
+/// Every translation unit of a program should be compiled for the same target, as with
+/// any header-only SIMD library: Bvh<float> names a different tree in each.
+template <class T>
+inline constexpr int default_bvh_width =
+#if defined(__AVX__)
+    sizeof(T) == 4 ? 8 : 4;
+#else
+    4;
+#endif
+
+} // namespace detail
+
+/// A node of the Width-wide tree (4 or 8): up to Width children, each a node or a leaf,
+/// their boxes side by side (lane c of bounds[axis] is child c's lo[axis], of
+/// bounds[3 + axis] its hi[axis]). An unused lane holds the empty box (lo +inf, hi -inf),
+/// which every ray misses, and count 0.
+template <Scalar T, int Width = detail::default_bvh_width<T>>
 struct alignas(64) BvhNode {
-    static constexpr int width = 4;
+    static_assert(Width == 4 || Width == 8, "a BvhNode has 4 or 8 children");
+    static constexpr int width = Width;
     std::array<std::array<T, width>, 6> bounds = empty_bounds(); ///< every lane unused until set
     std::array<std::uint32_t, width> first{}; ///< child node, or a leaf's first primitive
     std::array<std::uint32_t, width> count{}; ///< a leaf's primitives; 0 for a node (or unused)
@@ -830,13 +849,14 @@ struct SlabRay {
     [[nodiscard, gnu::always_inline]] static constexpr T later(T a, T b) noexcept { return a > b ? a : b; }
     [[nodiscard, gnu::always_inline]] static constexpr T sooner(T a, T b) noexcept { return a < b ? a : b; }
 
-    /// may_cross for the four children of a node at once: a bit per child the ray may
+    /// may_cross for the children of a node at once: a bit per child the ray may
     /// cross, and in `near` where its part of the range begins (for compile time; at run
     /// time SlabLanes does the same in SIMD).
-    [[nodiscard]] constexpr unsigned may_cross(const BvhNode<T>& node, Interval<T> range, std::array<T, BvhNode<T>::width>& near) const noexcept
+    template <int Width>
+    [[nodiscard]] constexpr unsigned may_cross(const BvhNode<T, Width>& node, Interval<T> range, std::array<T, std::size_t(Width)>& near) const noexcept
     {
         unsigned hits = 0;
-        for (int lane = 0; lane < BvhNode<T>::width; ++lane) {
+        for (int lane = 0; lane < Width; ++lane) {
             const Interval<T> r = may_cross(node.box(lane), range);
             near[std::size_t(lane)] = r.min;
             hits |= r.empty() ? 0u : 1u << lane;
@@ -845,12 +865,12 @@ struct SlabRay {
     }
 };
 
-/// SlabRay's four-child test in SIMD (GCC's vector extensions, which clang shares):
-/// the same arithmetic in each lane as SlabRay::may_cross, with the ray's values
+/// SlabRay's test of a node's children in SIMD (GCC's vector extensions, which clang
+/// shares): the same arithmetic in each lane as SlabRay::may_cross, with the ray's values
 /// broadcast and the faces it meets first chosen once per ray.
-template <Scalar T>
+template <Scalar T, int Width>
 struct SlabLanes {
-    static constexpr int width = BvhNode<T>::width;
+    static constexpr int width = Width;
     typedef T Lanes __attribute__((vector_size(width * sizeof(T))));
     Lanes near_origin[3], far_origin[3], inverse[3], far_inverse[3];
     std::size_t near_face[3], far_face[3]; ///< rows of BvhNode::bounds
@@ -868,7 +888,7 @@ struct SlabLanes {
         }
     }
 
-    [[nodiscard, gnu::always_inline]] unsigned may_cross(const BvhNode<T>& node, Interval<T> range, std::array<T, width>& near) const noexcept
+    [[nodiscard, gnu::always_inline]] unsigned may_cross(const BvhNode<T, Width>& node, Interval<T> range, std::array<T, width>& near) const noexcept
     {
         Lanes t_near[3], t_far[3];
         for (int axis = 0; axis < 3; ++axis) {
@@ -889,6 +909,10 @@ struct SlabLanes {
 #if defined(__SSE__)
         if constexpr (sizeof(T) == 4 && width == 4) return unsigned(__builtin_ia32_movmskps((Lanes)crossed));
 #endif
+#if defined(__AVX__)
+        if constexpr (sizeof(T) == 4 && width == 8) return unsigned(__builtin_ia32_movmskps256((Lanes)crossed));
+        if constexpr (sizeof(T) == 8 && width == 4) return unsigned(__builtin_ia32_movmskpd256((Lanes)crossed));
+#endif
         unsigned hits = 0;
         for (int lane = 0; lane < width; ++lane) hits |= crossed[lane] ? 1u << lane : 0u;
         return hits;
@@ -904,13 +928,14 @@ constexpr T half_area(const Aabb<T>& b) noexcept
 
 } // namespace detail
 
-template <Scalar T>
+template <Scalar T, int Width = detail::default_bvh_width<T>>
 class Bvh {
 public:
     using scalar_type = T;
-    /// The binary tree's depth bound; the 4-wide tree is no deeper.
+    using Node = BvhNode<T, Width>;
+    /// The binary tree's depth bound; the wide tree is no deeper.
     static constexpr int max_depth = 48 + 32;
-    static constexpr int width = BvhNode<T>::width;
+    static constexpr int width = Width;
 
     constexpr Bvh() = default;
 
@@ -931,25 +956,25 @@ public:
         collapse(build(boxes, config));
     }
 
-    /// The 4-wide nodes, the root first.
-    [[nodiscard]] constexpr std::span<const BvhNode<T>> nodes() const noexcept { return nodes_; }
+    /// The wide nodes, the root first.
+    [[nodiscard]] constexpr std::span<const Node> nodes() const noexcept { return nodes_; }
     /// The primitives in leaf order: a leaf holds primitives()[first, first + count).
     [[nodiscard]] constexpr std::span<const std::uint32_t> primitives() const noexcept { return primitives_; }
     [[nodiscard]] constexpr std::size_t size() const noexcept { return primitives_.size(); }
-    /// The depth of the binary tree the build made (the 4-wide one is about half as deep).
+    /// The depth of the binary tree the build made (the wide one is a half or a third as deep).
     [[nodiscard]] constexpr int depth() const noexcept { return depth_; }
     /// The box around every primitive (empty for none).
     [[nodiscard]] constexpr const Aabb<T>& bounds() const noexcept { return bounds_; }
 
     /// The tree's expected cost for a ray through its box (the surface area heuristic,
-    /// in primitive tests): each node's box area, times `node_cost` (a four-box test), and
+    /// in primitive tests): each node's box area, times `node_cost` (a node's box test), and
     /// each leaf's, times its primitives, over the root's area.
     [[nodiscard]] constexpr double sah_cost(double node_cost = 1) const noexcept
     {
         const double root = double(detail::half_area(bounds_));
         if (nodes_.empty() || !(root > 0)) return double(size());
         double cost = node_cost; // the root node
-        for (const BvhNode<T>& node : nodes_)
+        for (const Node& node : nodes_)
             for (int c = 0; c < width; ++c)
                 if (node.used(c)) cost += double(detail::half_area(node.box(c))) / root * (node.leaf(c) ? double(node.count[std::size_t(c)]) : node_cost);
         return cost;
@@ -1056,7 +1081,7 @@ private:
         if (nodes_.empty()) return false;
         const detail::SlabRay<T> slab(ray, magnitude_);
         if (std::is_constant_evaluated()) return walk_with<Nearest>(slab, range, visit);
-        return walk_with<Nearest>(detail::SlabLanes<T>(slab), range, visit);
+        return walk_with<Nearest>(detail::SlabLanes<T, Width>(slab), range, visit);
     }
 
     template <bool Nearest, class Slab, class Visit>
@@ -1072,7 +1097,7 @@ private:
                 // A node: its children the ray may cross, nearest first (or in lane
                 // order); the first is taken next, the others wait on the stack, the
                 // last deepest.
-                const BvhNode<T>& node = nodes_[at.first];
+                const Node& node = nodes_[at.first];
                 std::array<T, width> near{};
                 unsigned hits = slab.may_cross(node, range, near);
                 if (hits != 0) {
@@ -1131,7 +1156,7 @@ private:
             std::uint32_t binary, node;
         };
         std::vector<Job> jobs{{0, 0}};
-        // A 4-wide node takes at least one binary inner node (half the binary nodes, less
+        // A wide node takes at least one binary inner node (half the binary nodes, less
         // one, are inner); what is not used is given back below.
         nodes_.reserve(binary.size() / 2 + 1);
         nodes_.emplace_back();
@@ -1383,7 +1408,7 @@ private:
         return box;
     }
 
-    std::vector<BvhNode<T>> nodes_;
+    std::vector<Node> nodes_;
     std::vector<std::uint32_t> primitives_;
     Aabb<T> bounds_{};
     T magnitude_ = 0; ///< the largest coordinate magnitude of the root's box
@@ -3017,7 +3042,7 @@ public:
         const auto& d = *data_;
         return sizeof(d) + d.slot.size() * sizeof(d.slot[0]) +
                d.blocks.size() * sizeof(d.blocks[0]) + d.normals.size() * sizeof(d.normals[0]) +
-               d.uvs.size() * sizeof(d.uvs[0]) + d.bvh.nodes().size() * sizeof(BvhNode<T>) + d.bvh.primitives().size() * sizeof(std::uint32_t);
+               d.uvs.size() * sizeof(d.uvs[0]) + d.bvh.nodes().size() * sizeof(typename Bvh<T>::Node) + d.bvh.primitives().size() * sizeof(std::uint32_t);
     }
 
     /// Inside a closed mesh: the first crossing along a fixed direction from p leaves it.
@@ -3147,8 +3172,8 @@ private:
         constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
         const auto input = data.bvh.primitives(); // the triangle at each leaf-order position
         data.slot.assign(input.size(), 0);
-        for (const BvhNode<T>& node : data.bvh.nodes())
-            for (int c = 0; c < BvhNode<T>::width; ++c) {
+        for (const auto& node : data.bvh.nodes())
+            for (int c = 0; c < Bvh<T>::width; ++c) {
                 if (!node.used(c) || !node.leaf(c)) continue;
                 const std::uint32_t first = node.first[std::size_t(c)], count = node.count[std::size_t(c)];
                 for (std::uint32_t k = first; k < first + count; k += width) {

@@ -68,8 +68,8 @@ Found<T> brute_force(const std::vector<Ball<T>>& balls, const Ray<T>& ray, Inter
     return best;
 }
 
-template <class T>
-Found<T> by_bvh(const Bvh<T>& bvh, const std::vector<Ball<T>>& balls, const Ray<T>& ray, Interval<T> range, int* visits = nullptr)
+template <class T, int W>
+Found<T> by_bvh(const Bvh<T, W>& bvh, const std::vector<Ball<T>>& balls, const Ray<T>& ray, Interval<T> range, int* visits = nullptr)
 {
     Found<T> best;
     bvh.traverse(ray, range, [&](std::uint32_t i, Interval<T>& r) {
@@ -157,19 +157,23 @@ TEST_CASE_TEMPLATE("the node test keeps every box Aabb::may_cross keeps, and lit
     CHECK(extra < crossed / 50);
 }
 
-TEST_CASE_TEMPLATE("the four-lane node test is the one-box test in every lane, bit for bit", T, float, double)
+namespace {
+
+/// SlabLanes (SIMD, what a traversal runs) and SlabRay's lane loop (what a constant
+/// evaluation runs) against SlabRay::may_cross, one box at a time, for a node of W
+/// children; unused lanes (empty boxes) are never crossed.
+template <class T, int W>
+void check_node_test()
 {
-    // SlabLanes (SIMD, what a traversal runs) and SlabRay's four-lane loop (what a
-    // constant evaluation runs) against SlabRay::may_cross, one box at a time; unused
-    // lanes (empty boxes) are never crossed.
+    CAPTURE(W);
     Pcg32 rng(2u, 8u);
     int mismatches = 0, crossed = 0;
     for (int i = 0; i < 50000; ++i) {
         const T scale = i % 4 == 3 ? T(1e5) : T(10);
-        BvhNode<T> node;
+        BvhNode<T, W> node;
         T magnitude = 0;
-        const int used = 1 + i % 4;
-        for (int c = 0; c < 4; ++c) {
+        const int used = 1 + i % W;
+        for (int c = 0; c < W; ++c) {
             const Ball<T> ball{(Vec3<T>{rng.uniform<T>(), rng.uniform<T>(), rng.uniform<T>()} - Vec3<T>(T(0.5))) * scale, T(0.01) + rng.uniform<T>() * scale / 4};
             const Aabb<T> box = c < used ? ball.box() : Aabb<T>{};
             node.set(c, box, 0, 0);
@@ -179,11 +183,11 @@ TEST_CASE_TEMPLATE("the four-lane node test is the one-box test in every lane, b
         if (i % 8 == 6) ray.direction = -ray.direction;
         const Interval<T> range{i % 5 == 0 ? T(0) : scale * rng.uniform<T>(), i % 3 == 0 ? infinity<T> : T(2) * scale * rng.uniform<T>()};
         const detail::SlabRay<T> slab(ray, magnitude);
-        std::array<T, 4> near{};
-        const unsigned hits = detail::SlabLanes<T>(slab).may_cross(node, range, near);
-        std::array<T, 4> near_scalar{};
+        std::array<T, W> near{};
+        const unsigned hits = detail::SlabLanes<T, W>(slab).may_cross(node, range, near);
+        std::array<T, W> near_scalar{};
         mismatches += slab.may_cross(node, range, near_scalar) != hits;
-        for (int c = 0; c < 4; ++c) {
+        for (int c = 0; c < W; ++c) {
             const Interval<T> one = slab.may_cross(node.box(c), range);
             const bool hit = (hits >> c) & 1u;
             mismatches += hit != !one.empty() || (hit && std::bit_cast<std::array<unsigned char, sizeof(T)>>(near[std::size_t(c)]) != std::bit_cast<std::array<unsigned char, sizeof(T)>>(one.min)) || (hit && c >= used);
@@ -191,10 +195,18 @@ TEST_CASE_TEMPLATE("the four-lane node test is the one-box test in every lane, b
         }
     }
     CHECK(mismatches == 0);
-    CHECK(crossed > 3000);
+    CHECK(crossed > 750 * W);
 }
 
-TEST_CASE_TEMPLATE("the nearest hit through the Bvh is brute force's, same ball and same t, for every ray", T, float, double)
+} // namespace
+
+TEST_CASE_TEMPLATE("the node test in SIMD is the one-box test in every lane, bit for bit, for 4 and 8 lanes", T, float, double)
+{
+    check_node_test<T, 4>();
+    check_node_test<T, 8>();
+}
+
+TEST_CASE_TEMPLATE("the nearest hit through the Bvh is brute force's, same ball and same t, for every ray (4 and 8 wide)", T, float, double)
 {
     Pcg32 rng(5u, 9u);
     for (const int n : {1, 2, 7, 100, 3000}) {
@@ -202,14 +214,15 @@ TEST_CASE_TEMPLATE("the nearest hit through the Bvh is brute force's, same ball 
         for (const BvhSplit split : {BvhSplit::binned, BvhSplit::sweep}) {
             CAPTURE(n);
             CAPTURE(int(split));
-            const Bvh<T> bvh(boxes_of(balls), {.split = split});
+            const Bvh<T, 4> four(boxes_of(balls), {.split = split});
+            const Bvh<T, 8> eight(boxes_of(balls), {.split = split});
             int mismatches = 0, hits = 0;
             const int rays = n >= 1000 ? 3000 : 40000; // brute force costs n per ray
             for (int i = 0; i < rays; ++i) {
                 const Ray<T> ray = random_ray<T>(rng, T(10), i);
                 const Interval<T> range{T(0), infinity<T>};
-                const Found<T> a = brute_force(balls, ray, range), b = by_bvh(bvh, balls, ray, range);
-                mismatches += !(a == b);
+                const Found<T> a = brute_force(balls, ray, range);
+                mismatches += !(a == by_bvh(four, balls, ray, range)) + !(a == by_bvh(eight, balls, ray, range));
                 hits += a.t < infinity<T>;
             }
             CHECK(mismatches == 0);
@@ -218,12 +231,12 @@ TEST_CASE_TEMPLATE("the nearest hit through the Bvh is brute force's, same ball 
     }
 }
 
-TEST_CASE("an any-hit query stops at its first hit and agrees with brute force on whether there is one")
+TEST_CASE_TEMPLATE("an any-hit query stops at its first hit and agrees with brute force on whether there is one", Tree, Bvh<float, 4>, Bvh<float, 8>)
 {
     // Nearest first (traverse) and in no order (any_in_leaf_order, a shadow ray's).
     Pcg32 rng(7u, 1u);
     const auto balls = random_balls<float>(500, rng, 10.0f, 0.3f);
-    const Bvh<float> bvh(boxes_of(balls));
+    const Tree bvh(boxes_of(balls));
     int mismatches = 0, blocked = 0, tests_after_hit = 0;
     for (int i = 0; i < 20000; ++i) {
         const Ray<float> ray = random_ray<float>(rng, 10.0f, i);
@@ -247,19 +260,19 @@ TEST_CASE("an any-hit query stops at its first hit and agrees with brute force o
     CHECK(blocked > 500);
 }
 
-TEST_CASE("the tree's shape: every primitive once, children inside their parent, leaves within max_leaf_size")
+TEST_CASE_TEMPLATE("the tree's shape: every primitive once, children inside their parent, leaves within max_leaf_size", Tree, Bvh<float, 4>, Bvh<float, 8>)
 {
     Pcg32 rng(3u, 3u);
     for (const int leaf : {1, 4, 8}) {
         for (const BvhSplit split : {BvhSplit::binned, BvhSplit::sweep}) {
             const auto balls = random_balls<float>(5000, rng, 10.0f, 0.1f);
             const auto boxes = boxes_of(balls);
-            const Bvh<float> bvh(boxes, {.max_leaf_size = leaf, .split = split});
+            const Tree bvh(boxes, {.max_leaf_size = leaf, .split = split});
             std::vector<int> seen(balls.size(), 0), parents(bvh.nodes().size(), 0);
             bool inside = true, small = true, packed = true;
             for (const auto& node : bvh.nodes()) {
                 int used = 0;
-                for (int c = 0; c < 4; ++c) {
+                for (int c = 0; c < Tree::width; ++c) {
                     if (!node.used(c)) {
                         packed = packed && node.count[std::size_t(c)] == 0;
                         continue;
@@ -275,7 +288,7 @@ TEST_CASE("the tree's shape: every primitive once, children inside their parent,
                     } else {
                         const auto& child = bvh.nodes()[node.first[std::size_t(c)]];
                         ++parents[node.first[std::size_t(c)]];
-                        for (int g = 0; g < 4; ++g)
+                        for (int g = 0; g < Tree::width; ++g)
                             if (child.used(g)) inside = inside && holds(node.box(c), child.box(g));
                     }
                 }
@@ -288,8 +301,11 @@ TEST_CASE("the tree's shape: every primitive once, children inside their parent,
             CHECK(inside);
             CHECK(small);
             CHECK(packed);
-            // A binary tree has n - 1 inner nodes at most; a 4-wide one about a third of that.
+            // A binary tree has n - 1 inner nodes at most; a 4-wide one about a third of
+            // that, and an 8-wide one (whose nodes near the leaves are partly filled)
+            // about two thirds of the 4-wide one's.
             CHECK(bvh.nodes().size() <= balls.size() / 2);
+            if (Tree::width == 8) CHECK(bvh.nodes().size() <= Bvh<float, 4>(boxes, {.max_leaf_size = leaf, .split = split}).nodes().size() * 3 / 4);
             Aabb<float> all;
             for (const auto& box : boxes) all = all.merged(box);
             CHECK((bvh.bounds().lo == all.lo && bvh.bounds().hi == all.hi));
@@ -425,11 +441,12 @@ TEST_CASE("a leaf of up to leaf_block primitives costs one test: four cubes far 
 namespace {
 
 /// Built and queried at compile time: 8 unit cubes along x, a ray down the row.
+template <int W>
 constexpr int constexpr_query()
 {
     std::array<Aabb<double>, 8> boxes{};
     for (int i = 0; i < 8; ++i) boxes[std::size_t(i)] = {{2.0 * i, 0, 0}, {2.0 * i + 1, 1, 1}};
-    const Bvh<double> bvh(boxes, {.max_leaf_size = 1});
+    const Bvh<double, W> bvh(boxes, {.max_leaf_size = 1});
     Interval<double> range{0, infinity<double>};
     int first = -1;
     bvh.traverse({{-1, 0.5, 0.5}, {1, 0, 0}}, range, [&](std::uint32_t i, Interval<double>& r) {
@@ -439,6 +456,7 @@ constexpr int constexpr_query()
     });
     return first;
 }
-static_assert(constexpr_query() == 0);
+static_assert(constexpr_query<4>() == 0);
+static_assert(constexpr_query<8>() == 0);
 
 } // namespace

@@ -335,7 +335,7 @@ public:
         const auto& d = *data_;
         return sizeof(d) + d.slot.size() * sizeof(d.slot[0]) +
                d.blocks.size() * sizeof(d.blocks[0]) + d.normals.size() * sizeof(d.normals[0]) +
-               d.uvs.size() * sizeof(d.uvs[0]) + d.bvh.nodes().size() * sizeof(BvhNode<T>) + d.bvh.primitives().size() * sizeof(std::uint32_t);
+               d.uvs.size() * sizeof(d.uvs[0]) + d.bvh.nodes().size() * sizeof(typename Bvh<T>::Node) + d.bvh.primitives().size() * sizeof(std::uint32_t);
     }
 
     /// Inside a closed mesh: the first crossing along a fixed direction from p leaves it.
@@ -465,8 +465,8 @@ private:
         constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
         const auto input = data.bvh.primitives(); // the triangle at each leaf-order position
         data.slot.assign(input.size(), 0);
-        for (const BvhNode<T>& node : data.bvh.nodes())
-            for (int c = 0; c < BvhNode<T>::width; ++c) {
+        for (const auto& node : data.bvh.nodes())
+            for (int c = 0; c < Bvh<T>::width; ++c) {
                 if (!node.used(c) || !node.leaf(c)) continue;
                 const std::uint32_t first = node.first[std::size_t(c)], count = node.count[std::size_t(c)];
                 for (std::uint32_t k = first; k < first + count; k += width) {
