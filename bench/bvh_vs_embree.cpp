@@ -13,9 +13,10 @@
 // rounds. Build: prism's on one thread; Embree's on its own (TBB) threads.
 // Agreement: the share of rays where both hit, or both miss, with t within 1e-3.
 // Embree picks its kernels by the CPU at run time (AVX2 or AVX-512 where there are);
-// prism is compiled for the baseline x86-64 (SSE2). `embree-isa` (sse4.2, avx2, ...)
-// holds Embree to one instruction set, to tell the algorithms apart from the ISA; that
-// run writes bvh_vs_embree_<isa>.csv.
+// prism is compiled for the baseline x86-64 (SSE2, 4-wide nodes), or for AVX2 as
+// bench_bvh_vs_embree_avx2 (8-wide nodes), whose files are named ..._prism-avx2.
+// `embree-isa` (sse4.2, avx2, ...) holds Embree to one instruction set, to tell the
+// algorithms apart from the ISA; that run writes bvh_vs_embree[_prism-avx2]_<isa>.csv.
 //   bench_bvh_vs_embree [results-folder] [repeats] [bunny.obj] [embree-isa]
 #include "common.hpp"
 
@@ -287,7 +288,13 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "bench_bvh_vs_embree: repeats must be >= 1, got '%s'\n", argv[2]);
         return 2;
     }
-    bench::Csv csv(out / (isa.empty() ? std::string("bvh_vs_embree.csv") : "bvh_vs_embree_" + isa + ".csv"),
+#if defined(__AVX2__)
+    const std::string name = "bvh_vs_embree_prism-avx2";
+#else
+    const std::string name = "bvh_vs_embree";
+#endif
+    std::printf("prism: Bvh<float> nodes %d wide; Embree: %s\n", Bvh<T>::width, isa.empty() ? "as it comes" : ("held to " + isa).c_str());
+    bench::Csv csv(out / (name + (isa.empty() ? "" : "_" + isa) + ".csv"),
                    "geometry,count,rays,threads,ray_count,prism_mrays_min,prism_mrays_median,embree_mrays_min,embree_mrays_median,prism_build_s,embree_build_s,agree,hit_share");
     Embree embree(2, isa);
     const Lights lights{PointLight<T>{}};

@@ -181,7 +181,7 @@ def kdtree_chart(rows):
     save(fig, "kdtree.png")
 
 
-def embree_chart(rows, name="bvh_vs_embree.png", embree="Embree 3"):
+def embree_chart(rows, name="bvh_vs_embree.png", embree="Embree 3", prism="prism"):
     """Mrays/s of prism and Embree 3 against object count (spheres), and their ratio for
     every geometry, from the minimum times of interleaved rounds."""
     fig, axes = plt.subplots(1, 2, figsize=(13, 4.2))
@@ -189,7 +189,7 @@ def embree_chart(rows, name="bvh_vs_embree.png", embree="Embree 3"):
     for kind, style in (("primary", "-"), ("bounce", "--")):
         sel = [r for r in rows if r["geometry"] == "spheres" and r["rays"] == kind and r["threads"] == "1"]
         n = [int(r["count"]) for r in sel]
-        ax.plot(n, [float(r["prism_mrays_min"]) for r in sel], "o" + style, color="C0", label=f"prism, {kind} rays")
+        ax.plot(n, [float(r["prism_mrays_min"]) for r in sel], "o" + style, color="C0", label=f"{prism}, {kind} rays")
         ax.plot(n, [float(r["embree_mrays_min"]) for r in sel], "s" + style, color="C1", label=f"{embree}, {kind} rays")
     ax.set_xscale("log")
     ax.set_yscale("log")
@@ -215,7 +215,7 @@ def embree_chart(rows, name="bvh_vs_embree.png", embree="Embree 3"):
     ax.axhline(0.67, color="gray", lw=0.8, ls=":")
     ax.set_xticks(range(len(labels)))
     ax.set_xticklabels(labels, rotation=30, ha="right", fontsize=8)
-    ax.set_ylabel(f"prism rays/s ÷ {embree} rays/s")
+    ax.set_ylabel(f"{prism} rays/s ÷ {embree} rays/s")
     ax.set_title("ratio (1.0: as fast as Embree; dotted: 0.67); shadow: any hit")
     ax.legend(fontsize=7)
     save(fig, name)
@@ -438,6 +438,10 @@ def main():
         embree_chart(rows)
     if (rows := read("bvh_vs_embree_sse4.2.csv")):
         embree_chart(rows, "bvh_vs_embree_sse4.2.png", "Embree 3 held to SSE4.2")
+    if (rows := read("bvh_vs_embree_prism-avx2.csv")):
+        embree_chart(rows, "bvh_vs_embree_prism-avx2.png", "Embree 3", "prism (AVX2, 8-wide)")
+    if (rows := read("bvh_vs_embree_prism-avx2_avx2.csv")):
+        embree_chart(rows, "bvh_vs_embree_prism-avx2_avx2.png", "Embree 3 held to AVX2", "prism (AVX2, 8-wide)")
     if (rows := read("bvh_quality.csv")):
         bvh_quality_chart(rows)
     if (rows := read("photon_accuracy.csv")):

@@ -20,6 +20,10 @@ python=/usr/bin/python3
 "$root/build/release/bench/bench_kdtree" "$results" | tee "$results/kdtree.txt"
 "$root/build/release/bench/bench_bvh_vs_embree" "$results" 5 "$root/assets/bunny.obj" | tee "$results/bvh_vs_embree.txt"
 "$root/build/release/bench/bench_bvh_vs_embree" "$results" 5 "$root/assets/bunny.obj" sse4.2 | tee "$results/bvh_vs_embree_sse4.2.txt"
+if grep -qw avx2 /proc/cpuinfo; then
+  "$root/build/release/bench/bench_bvh_vs_embree_avx2" "$results" 5 "$root/assets/bunny.obj" | tee "$results/bvh_vs_embree_prism-avx2.txt"
+  "$root/build/release/bench/bench_bvh_vs_embree_avx2" "$results" 5 "$root/assets/bunny.obj" avx2 | tee "$results/bvh_vs_embree_prism-avx2_avx2.txt"
+fi
 "$root/build/release/bench/bench_bvh_quality" "$results" 3 | tee "$results/bvh_quality.txt"
 "$root/build/release/bench/bench_accuracy" "$results" | tee "$results/accuracy.txt"
 "$root/build/release/bench/bench_shadow_saving" "$results" | tee "$results/shadow_saving.txt"
