@@ -1211,18 +1211,18 @@ private:
                         at = first;
                         continue;
                     }
-                    std::array<Pending, width> met;
-                    int n = 0;
+                    // Onto the stack, sorted as they go (the nearest on top), and the
+                    // nearest taken off again.
+                    const int base = top;
                     for (; hits != 0; hits &= hits - 1) {
                         const auto lane = std::size_t(std::countr_zero(hits));
-                        Pending p{node.first[lane], node.count[lane], near[lane]};
-                        int k = n++;
+                        const Pending p{node.first[lane], node.count[lane], near[lane]};
+                        int k = top++;
                         if constexpr (Nearest)
-                            for (; k > 0 && met[std::size_t(k - 1)].near > p.near; --k) met[std::size_t(k)] = met[std::size_t(k - 1)];
-                        met[std::size_t(k)] = p;
+                            for (; k > base && stack[std::size_t(k - 1)].near < p.near; --k) stack[std::size_t(k)] = stack[std::size_t(k - 1)];
+                        stack[std::size_t(k)] = p;
                     }
-                    for (int k = n - 1; k > 0; --k) stack[std::size_t(top++)] = met[std::size_t(k)];
-                    at = met[0];
+                    at = stack[std::size_t(--top)];
                     continue;
                 }
             } else {
