@@ -274,7 +274,11 @@ private:
         std::uint32_t slot = 0, index = 0;
         Interval<T> range{};
         SurfaceHint<T> hint{}; ///< the shape's own (a mesh's triangle), for surface_crossing
+        /// Where a slot's tree keeps its copy of the shape (else none): the surface pass
+        /// reads that copy, which the test has just brought into the cache.
+        std::uint32_t copy = no_copy;
     };
+    static constexpr std::uint32_t no_copy = ~std::uint32_t(0);
 
     template <class S>
     constexpr void add_to_cluster(const S& slot) noexcept
@@ -340,18 +344,18 @@ private:
         // object at a t wins a tie. The tree visits objects in another order: one that
         // comes before the nearest so far is asked up to just past its t, so that it
         // takes a tie as it would have in the scan.
-        const auto test = [&](const auto& shape, std::uint32_t k, Interval<T>& r) {
+        const auto test = [&](const auto& shape, std::uint32_t k, std::uint32_t copy, Interval<T>& r) {
             const bool before = nearest.found && nearest.slot == I && k < nearest.index;
             SurfaceHint<T> hint;
             const T t = first_crossing(shape, ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
             if (!(t < infinity<T>)) return;
-            nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}, hint};
+            nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}, hint, copy};
             r.max = t;
         };
-        for (const std::uint32_t k : index.unbounded) test(objects[k].shape, k, range);
+        for (const std::uint32_t k : index.unbounded) test(objects[k].shape, k, no_copy, range);
         if (near_cluster)
             index.bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t p, Interval<T>& r) {
-                test(index.shapes[p], index.object[p], r);
+                test(index.shapes[p], index.object[p], p, r);
                 return false;
             });
     }
@@ -364,7 +368,12 @@ private:
         if constexpr (I + 1 < sizeof...(Slots)) {
             if (nearest.slot != I) return surface_in_slot<I + 1>(ray, nearest);
         }
-        const auto crossing = surface_crossing(objects_of(std::get<I>(slots))[nearest.index].shape, ray, nearest.range, nearest.hint);
+        const auto& shape = [&]() -> const auto& {
+            if constexpr (detail::SlotIndex<std::tuple_element_t<I, std::tuple<Slots...>>>::accelerated)
+                if (nearest.copy != no_copy) return std::get<I>(indices_).shapes[nearest.copy]; // the same shape, bit for bit
+            return objects_of(std::get<I>(slots))[nearest.index].shape;
+        }();
+        const auto crossing = surface_crossing(shape, ray, nearest.range, nearest.hint);
         PRISM_ASSERT(crossing.has_value());
         if (!crossing) return std::nullopt;
         return Hit<T>{*crossing, nearest.slot, nearest.index};
