@@ -953,6 +953,7 @@ public:
         for (std::size_t i = 0; i < boxes.size(); ++i)
             if (!boxes[i].bounded()) detail::throw_invalid("Bvh primitive ", i, " has no finite box: test unbounded shapes beside the tree");
         if (boxes.empty()) return;
+        leaf_block_ = config.leaf_block;
         const std::vector<BinaryNode> binary = build(boxes, config);
         bounds_ = binary[0].box;
         magnitude_ = std::max(max_component(prism::abs(bounds_.lo)), max_component(prism::abs(bounds_.hi)));
@@ -970,8 +971,9 @@ public:
     [[nodiscard]] constexpr const Aabb<T>& bounds() const noexcept { return bounds_; }
 
     /// The tree's expected cost for a ray through its box (the surface area heuristic,
-    /// in primitive tests): each node's box area, times `node_cost` (a node's box test), and
-    /// each leaf's, times its primitives, over the root's area.
+    /// in leaf tests of BvhConfig::leaf_block primitives): each node's box area, times
+    /// `node_cost` (a node's box test), and each leaf's, times its tests, over the root's
+    /// area.
     [[nodiscard]] constexpr double sah_cost(double node_cost = 1) const noexcept
     {
         const double root = double(detail::half_area(bounds_));
@@ -979,7 +981,9 @@ public:
         double cost = node_cost; // the root node
         for (const Node& node : nodes_)
             for (int c = 0; c < width; ++c)
-                if (node.used(c)) cost += double(detail::half_area(node.box(c))) / root * (node.leaf(c) ? double(node.count[std::size_t(c)]) : node_cost);
+                if (node.used(c))
+                    cost += double(detail::half_area(node.box(c))) / root *
+                            (node.leaf(c) ? double(tests(node.count[std::size_t(c)], {.leaf_block = leaf_block_})) : node_cost);
         return cost;
     }
 
@@ -1457,6 +1461,7 @@ private:
     Aabb<T> bounds_{};
     T magnitude_ = 0; ///< the largest coordinate magnitude of the root's box
     int depth_ = 0;
+    int leaf_block_ = 1; ///< BvhConfig::leaf_block, for sah_cost
 };
 
 } // namespace prism

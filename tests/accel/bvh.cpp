@@ -534,6 +534,9 @@ TEST_CASE("a leaf of up to leaf_block primitives costs one test: four cubes far 
             for (int c = 0; c < BvhNode<float>::width; ++c)
                 if (node.used(c) && node.leaf(c)) leaves.push_back(node.count[std::size_t(c)]);
         CHECK(leaves == (block == 1 ? std::vector<std::uint32_t>{1, 1, 1, 1} : std::vector<std::uint32_t>{4}));
+        // The root node, and four leaves of area 3 / 63 and one test each, or one leaf of
+        // the root's area and one test.
+        CHECK(bvh.sah_cost() == doctest::Approx(block == 1 ? 1 + 4 * 3.0 / 63 : 2.0));
     }
 }
 
