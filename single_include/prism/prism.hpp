@@ -5687,7 +5687,8 @@ struct SlotIndex<ObjectArray<S, M>> {
         }
         bvh = Bvh<T>(boxes);
         // The shapes a traversal tests, side by side as it meets them (a copy: the
-        // objects' materials stay out of the cache's way).
+        // objects' materials stay out of the cache's way), and the surface pass takes
+        // the nearest from here too.
         for (const std::uint32_t p : bvh.primitives()) {
             object.push_back(bounded[p]);
             shapes.push_back(array.items[bounded[p]].shape);
