@@ -342,21 +342,23 @@ private:
         const auto& index = std::get<I>(indices_);
         PRISM_ASSERT(index.shapes.size() + index.unbounded.size() == objects.size());
         // Crossings lie strictly inside the range, so in a scan in index order the first
-        // object at a t wins a tie. The tree visits objects in another order: one that
-        // comes before the nearest so far is asked up to just past its t, so that it
-        // takes a tie as it would have in the scan.
-        const auto test = [&](const auto& shape, std::uint32_t k, std::uint32_t copy, Interval<T>& r) {
-            const bool before = nearest.found && nearest.slot == I && k < nearest.index;
+        // object at a t wins a tie. The tree visits objects in another order: once an
+        // object is found, each is asked up to just past its t, and one at exactly that t
+        // wins only if it comes before it (as it would have in the scan). Which object
+        // that is, is looked up only for a crossing, not for every test.
+        const auto test = [&](const auto& shape, const auto& object_index, std::uint32_t copy, Interval<T>& r) {
             SurfaceHint<T> hint;
-            const T t = first_crossing(shape, ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
+            const T t = first_crossing(shape, ray, nearest.found ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
             if (!(t < infinity<T>)) return;
+            const std::uint32_t k = object_index();
+            if (!(t < r.max) && !(nearest.slot == I && k < nearest.index)) return;
             nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}, hint, copy};
             r.max = t;
         };
-        for (const std::uint32_t k : index.unbounded) test(objects[k].shape, k, no_copy, range);
+        for (const std::uint32_t k : index.unbounded) test(objects[k].shape, [k] { return k; }, no_copy, range);
         if (near_cluster)
             index.bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t p, Interval<T>& r) {
-                test(index.shapes[p], index.object[p], p, r);
+                test(index.shapes[p], [&] { return index.object[p]; }, p, r);
                 return false;
             });
     }
