@@ -101,7 +101,11 @@ struct SphereSet {
 struct MeshSet {
     TriangleMesh<T> mesh;
 
-    MeshSet(const MeshBuffers<T>& buffers, const BvhConfig& config) : mesh(buffers.positions, buffers.triangles, config) {}
+    /// The setting, with the mesh's blocks of four triangles a leaf test.
+    MeshSet(const MeshBuffers<T>& buffers, BvhConfig config)
+        : mesh(buffers.positions, buffers.triangles, (config.leaf_block = TriangleMesh<T>::bvh_config().leaf_block, config))
+    {
+    }
 
     [[nodiscard]] const Bvh<T>& tree() const { return mesh.bvh(); }
 

@@ -715,7 +715,7 @@ struct BvhConfig {
     int max_leaf_size = 4;               ///< a leaf holds at most this many primitives (>= 1)
     int bins = 16;                       ///< SAH bins per axis (2 to 256), for BvhSplit::binned
     float traversal_cost = 1;            ///< C_trav, relative to one leaf test of leaf_block primitives
-    int leaf_block = 1;                  ///< primitives a leaf tests at once (TriangleMesh: 4): n cost ceil(n / leaf_block) tests
+    int leaf_block = 1;                  ///< primitives a leaf tests at once (TriangleMesh: 4): n cost ceil(n / leaf_block) tests, and each leaf starts a block in leaf order
     BvhSplit split = BvhSplit::binned;
     unsigned threads = 0;                ///< build threads (0: every hardware thread); the tree is the same for any number
 };
@@ -963,8 +963,13 @@ public:
     /// The wide nodes, the root first.
     [[nodiscard]] constexpr std::span<const Node> nodes() const noexcept { return nodes_; }
     /// The primitives in leaf order: a leaf holds primitives()[first, first + count).
+    /// With BvhConfig::leaf_block b > 1, every leaf's first is a multiple of b, and the
+    /// positions from its end to the next multiple hold its last primitive again: a
+    /// caller that keeps its primitives in blocks of b in this order finds a leaf's first
+    /// block at first / b, with no table to look it up in.
     [[nodiscard]] constexpr std::span<const std::uint32_t> primitives() const noexcept { return primitives_; }
-    [[nodiscard]] constexpr std::size_t size() const noexcept { return primitives_.size(); }
+    /// The number of primitives (primitives() also holds the padding of leaf blocks).
+    [[nodiscard]] constexpr std::size_t size() const noexcept { return size_; }
     /// The depth of the binary tree the build made (the wide one is a half or a third as deep).
     [[nodiscard]] constexpr int depth() const noexcept { return depth_; }
     /// The box around every primitive (empty for none).
@@ -1268,7 +1273,7 @@ private:
             if (threads > 1 && nodes[open.node].count <= grain) return subtrees.push_back(open), true;
             return false;
         });
-        if (subtrees.empty()) return finish(refs, nodes);
+        if (subtrees.empty()) return finish(refs, nodes, config);
         std::vector<std::vector<BinaryNode>> parts(subtrees.size());
         std::vector<int> depths(subtrees.size());
         detail::parallel_for(subtrees.size(), threads, [&](std::size_t i) {
@@ -1286,14 +1291,36 @@ private:
             }
             depth_ = std::max(depth_, depths[i]);
         }
-        return finish(refs, nodes);
+        return finish(refs, nodes, config);
     }
 
-    /// The primitives' order, from the refs the build partitioned; returns the nodes.
-    [[nodiscard]] constexpr std::vector<BinaryNode> finish(const std::vector<Ref>& refs, std::vector<BinaryNode>& nodes)
+    /// The primitives' order, from the refs the build partitioned, each leaf moved up to
+    /// start a block of leaf_block (see primitives()); returns the nodes.
+    [[nodiscard]] constexpr std::vector<BinaryNode> finish(const std::vector<Ref>& refs, std::vector<BinaryNode>& nodes, const BvhConfig& config)
     {
-        primitives_.resize(refs.size());
-        for (std::size_t k = 0; k < refs.size(); ++k) primitives_[k] = refs[k].index;
+        const auto n = std::uint32_t(refs.size()), block = std::uint32_t(config.leaf_block);
+        size_ = n;
+        if (block == 1) {
+            primitives_.resize(n);
+            for (std::uint32_t k = 0; k < n; ++k) primitives_[k] = refs[k].index;
+            return std::move(nodes);
+        }
+        // shift[k]: the padding of the leaves that end at or before position k, all of
+        // which come before the leaf holding k (the leaves partition [0, n)).
+        std::vector<std::uint64_t> shift(std::size_t(n) + 1, 0);
+        for (const BinaryNode& node : nodes)
+            if (node.count != 0) shift[node.first + node.count] = (block - node.count % block) % block;
+        for (std::size_t k = 1; k <= n; ++k) shift[k] += shift[k - 1];
+        if (std::uint64_t(n) + shift[n] >= std::numeric_limits<std::uint32_t>::max())
+            detail::throw_invalid("Bvh's leaf order, padded to blocks of ", block, ", must hold fewer than 2^32 - 1 positions, got ", std::uint64_t(n) + shift[n]);
+        primitives_.assign(std::size_t(n + shift[n]), 0);
+        for (std::uint32_t k = 0; k < n; ++k) primitives_[std::size_t(k + shift[k])] = refs[k].index;
+        for (BinaryNode& node : nodes) {
+            if (node.count == 0) continue;
+            node.first += std::uint32_t(shift[node.first]);
+            const std::uint32_t last = primitives_[node.first + node.count - 1];
+            for (std::uint32_t k = node.count; k % block != 0; ++k) primitives_[node.first + k] = last;
+        }
         return std::move(nodes);
     }
 
@@ -1459,6 +1486,7 @@ private:
     std::vector<Node> nodes_;
     std::vector<std::uint32_t> primitives_;
     Aabb<T> bounds_{};
+    std::size_t size_ = 0; ///< primitives, without the padding of leaf blocks
     T magnitude_ = 0; ///< the largest coordinate magnitude of the root's box
     int depth_ = 0;
     int leaf_block_ = 1; ///< BvhConfig::leaf_block, for sah_cost
@@ -2982,8 +3010,7 @@ template <Scalar T>
 
 template <Scalar T>
 struct MeshData {
-    std::vector<TriangleBlock<T>> blocks;        ///< the corners, a leaf's at a time
-    std::vector<std::uint32_t> slot;             ///< per triangle, in the Bvh's leaf order: its block * 4 + lane
+    std::vector<TriangleBlock<T>> blocks;        ///< the corners in the Bvh's leaf order (position k: block k / 4, lane k % 4)
     std::vector<std::array<Vec3<T>, 3>> normals; ///< per triangle, its corners' unit normals (or none)
     std::vector<std::array<Vec2<T>, 3>> uvs;     ///< per triangle, its corners' coordinates (or none)
     Bvh<T> bvh;
@@ -3015,11 +3042,15 @@ public:
     /// triangle, an index past the positions, a non-finite position, a closed mesh whose
     /// triangles wind inward (negative volume: reverse each triangle's order), normals or
     /// uvs not one per position, a normal that is not finite and non-zero, a non-finite
-    /// uv, or a triangle whose three normals all point against its winding.
+    /// uv, a triangle whose three normals all point against its winding, or a
+    /// config.leaf_block that is not a multiple of four (bvh_config() is the default).
     TriangleMesh(std::span<const Vec3<T>> positions, std::span<const TriangleIndices> triangles, BvhConfig config = bvh_config(),
                  std::span<const Vec3<T>> normals = {}, std::span<const Vec2<T>> uvs = {})
     {
         if (triangles.empty()) detail::throw_invalid("TriangleMesh triangles must not be empty");
+        if (config.leaf_block < 1 || config.leaf_block % detail::TriangleBlock<T>::width != 0)
+            detail::throw_invalid("TriangleMesh BvhConfig leaf_block must be a multiple of ", detail::TriangleBlock<T>::width, " (its triangles are tested in blocks), got ",
+                                  config.leaf_block);
         for (std::size_t i = 0; i < positions.size(); ++i)
             if (!is_finite(positions[i])) detail::throw_invalid("TriangleMesh position ", i, " must be finite, got ", detail::describe(positions[i]));
         for (std::size_t f = 0; f < triangles.size(); ++f)
@@ -3084,13 +3115,12 @@ public:
     [[nodiscard]] std::size_t triangle_count() const noexcept { return data_->bvh.size(); }
     [[nodiscard]] const Bvh<T>& bvh() const noexcept { return data_->bvh; }
     [[nodiscard]] Aabb<T> bounds() const noexcept { return data_->bounds; }
-    /// Bytes held by the shared data (corner blocks and slots, normals, uvs, Bvh), for every
+    /// Bytes held by the shared data (corner blocks, normals, uvs, Bvh), for every
     /// copy together.
     [[nodiscard]] std::size_t memory_bytes() const noexcept
     {
         const auto& d = *data_;
-        return sizeof(d) + d.slot.size() * sizeof(d.slot[0]) +
-               d.blocks.size() * sizeof(d.blocks[0]) + d.normals.size() * sizeof(d.normals[0]) +
+        return sizeof(d) + d.blocks.size() * sizeof(d.blocks[0]) + d.normals.size() * sizeof(d.normals[0]) +
                d.uvs.size() * sizeof(d.uvs[0]) + d.bvh.nodes().size() * sizeof(typename Bvh<T>::Node) + d.bvh.primitives().size() * sizeof(std::uint32_t);
     }
 
@@ -3135,7 +3165,7 @@ public:
     /// outside `range`, takes the search.
     [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, const SurfaceHint<T>& hint) const noexcept
     {
-        if (hint.index < triangle_count() && range.surrounds(hint.t) && hint.b[0] > T(0) && hint.b[1] > T(0) && hint.b[2] > T(0))
+        if (hint.index < data_->bvh.primitives().size() && range.surrounds(hint.t) && hint.b[0] > T(0) && hint.b[1] > T(0) && hint.b[2] > T(0))
             return surface_at({hint.t, hint.index, hint.b, hint.entering}, hint.entering);
         const auto all = crossings(ray, range);
         if (all.empty()) return std::nullopt;
@@ -3195,7 +3225,7 @@ private:
     [[gnu::always_inline]] bool for_each_maybe_hit(const detail::ShearedRay<T>& ray, std::uint32_t first, std::uint32_t count, Test&& test) const noexcept
     {
         constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
-        const detail::TriangleBlock<T>* block = &data_->blocks[data_->slot[first] / width];
+        const detail::TriangleBlock<T>* block = &data_->blocks[first / width]; // a leaf starts a block
         for (std::uint32_t k = first; k < first + count; k += width, ++block) {
             const std::uint32_t lanes = std::min(width, first + count - k);
             for (unsigned maybe = detail::edge_test(ray, *block) & ((1u << lanes) - 1); maybe != 0; maybe &= maybe - 1) {
@@ -3210,33 +3240,22 @@ private:
     [[nodiscard]] std::array<Vec3<T>, 3> corners(std::uint32_t k) const noexcept
     {
         constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
-        const std::uint32_t slot = data_->slot[k];
-        return data_->blocks[slot / width].triangle(slot % width);
+        return data_->blocks[k / width].triangle(k % width);
     }
 
-    /// The corners in blocks, a leaf's at a time from its first block's lane 0 (its last
-    /// triangle repeated to fill its last block).
+    /// The corners in blocks of four in the Bvh's leaf order, where each leaf starts a
+    /// block and its last triangle fills its last block (Bvh::primitives()).
     static void make_blocks(detail::MeshData<T>& data, std::span<const Vec3<T>> positions, std::span<const TriangleIndices> triangles)
     {
         constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
-        const auto input = data.bvh.primitives(); // the triangle at each leaf-order position
-        data.slot.assign(input.size(), 0);
-        for (const auto& node : data.bvh.nodes())
-            for (int c = 0; c < Bvh<T>::width; ++c) {
-                if (!node.used(c) || !node.leaf(c)) continue;
-                const std::uint32_t first = node.first[std::size_t(c)], count = node.count[std::size_t(c)];
-                for (std::uint32_t k = first; k < first + count; k += width) {
-                    const auto block = std::uint32_t(data.blocks.size());
-                    detail::TriangleBlock<T>& b = data.blocks.emplace_back();
-                    for (std::uint32_t lane = 0; lane < width; ++lane) {
-                        const std::uint32_t at = std::min(k + lane, first + count - 1);
-                        if (at == k + lane) data.slot[at] = block * width + lane;
-                        const TriangleIndices& f = triangles[input[at]];
-                        for (std::size_t i = 0; i < 3; ++i)
-                            for (int axis = 0; axis < 3; ++axis) b.corner[3 * i + std::size_t(axis)][lane] = positions[f[i]][axis];
-                    }
-                }
-            }
+        const auto order = data.bvh.primitives(); // the triangle at each leaf-order position
+        PRISM_ASSERT(order.size() % width == 0);
+        data.blocks.resize(order.size() / width);
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            const TriangleIndices& f = triangles[order[k]];
+            for (std::size_t i = 0; i < 3; ++i)
+                for (int axis = 0; axis < 3; ++axis) data.blocks[k / width].corner[3 * i + std::size_t(axis)][k % width] = positions[f[i]][axis];
+        }
     }
 
     struct Hit {
@@ -5893,21 +5912,23 @@ private:
         const auto& index = std::get<I>(indices_);
         PRISM_ASSERT(index.shapes.size() + index.unbounded.size() == objects.size());
         // Crossings lie strictly inside the range, so in a scan in index order the first
-        // object at a t wins a tie. The tree visits objects in another order: one that
-        // comes before the nearest so far is asked up to just past its t, so that it
-        // takes a tie as it would have in the scan.
-        const auto test = [&](const auto& shape, std::uint32_t k, std::uint32_t copy, Interval<T>& r) {
-            const bool before = nearest.found && nearest.slot == I && k < nearest.index;
+        // object at a t wins a tie. The tree visits objects in another order: once an
+        // object is found, each is asked up to just past its t, and one at exactly that t
+        // wins only if it comes before it (as it would have in the scan). Which object
+        // that is, is looked up only for a crossing, not for every test.
+        const auto test = [&](const auto& shape, const auto& object_index, std::uint32_t copy, Interval<T>& r) {
             SurfaceHint<T> hint;
-            const T t = first_crossing(shape, ray, before ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
+            const T t = first_crossing(shape, ray, nearest.found ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
             if (!(t < infinity<T>)) return;
+            const std::uint32_t k = object_index();
+            if (!(t < r.max) && !(nearest.slot == I && k < nearest.index)) return;
             nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}, hint, copy};
             r.max = t;
         };
-        for (const std::uint32_t k : index.unbounded) test(objects[k].shape, k, no_copy, range);
+        for (const std::uint32_t k : index.unbounded) test(objects[k].shape, [k] { return k; }, no_copy, range);
         if (near_cluster)
             index.bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t p, Interval<T>& r) {
-                test(index.shapes[p], index.object[p], p, r);
+                test(index.shapes[p], [&] { return index.object[p]; }, p, r);
                 return false;
             });
     }

@@ -260,16 +260,18 @@ TEST_CASE_TEMPLATE("an any-hit query stops at its first hit and agrees with brut
     CHECK(blocked > 500);
 }
 
-TEST_CASE_TEMPLATE("the tree's shape: every primitive once, children inside their parent, leaves within max_leaf_size", Tree, Bvh<float, 4>, Bvh<float, 8>)
+TEST_CASE_TEMPLATE("the tree's shape: every primitive once, children inside their parent, leaves within max_leaf_size and starting a block", Tree, Bvh<float, 4>,
+                   Bvh<float, 8>)
 {
     Pcg32 rng(3u, 3u);
-    for (const int leaf : {1, 4, 8}) {
+    for (const auto [leaf, block] : {std::pair{1, 1}, {4, 1}, {8, 1}, {8, 3}, {16, 4}}) {
         for (const BvhSplit split : {BvhSplit::binned, BvhSplit::sweep}) {
             const auto balls = random_balls<float>(5000, rng, 10.0f, 0.1f);
             const auto boxes = boxes_of(balls);
-            const Tree bvh(boxes, {.max_leaf_size = leaf, .split = split});
+            const Tree bvh(boxes, {.max_leaf_size = leaf, .leaf_block = block, .split = split});
             std::vector<int> seen(balls.size(), 0), parents(bvh.nodes().size(), 0);
-            bool inside = true, small = true, packed = true;
+            bool inside = true, small = true, packed = true, blocked = true;
+            std::size_t positions = 0; // the leaves' positions, padded to whole blocks
             for (const auto& node : bvh.nodes()) {
                 int used = 0;
                 for (int c = 0; c < Tree::width; ++c) {
@@ -279,7 +281,13 @@ TEST_CASE_TEMPLATE("the tree's shape: every primitive once, children inside thei
                     }
                     ++used;
                     if (node.leaf(c)) {
-                        small = small && node.count[std::size_t(c)] <= std::uint32_t(leaf);
+                        const std::uint32_t first = node.first[std::size_t(c)], count = node.count[std::size_t(c)];
+                        small = small && count <= std::uint32_t(leaf);
+                        // A leaf starts a block; its last primitive fills the block's rest.
+                        const std::uint32_t padded = (count + std::uint32_t(block) - 1) / std::uint32_t(block) * std::uint32_t(block);
+                        blocked = blocked && first % std::uint32_t(block) == 0;
+                        for (std::uint32_t k = first + count; k < first + padded; ++k) blocked = blocked && bvh.primitives()[k] == bvh.primitives()[first + count - 1];
+                        positions += padded;
                         for (std::uint32_t k = node.first[std::size_t(c)]; k < node.first[std::size_t(c)] + node.count[std::size_t(c)]; ++k) {
                             const std::uint32_t p = bvh.primitives()[k];
                             ++seen[p];
@@ -296,6 +304,10 @@ TEST_CASE_TEMPLATE("the tree's shape: every primitive once, children inside thei
                 packed = packed && used >= 2;
             }
             CHECK(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
+            CHECK(blocked);
+            CHECK(positions == bvh.primitives().size());
+            CHECK(bvh.size() == balls.size());
+            if (block == 1) CHECK(bvh.primitives().size() == balls.size());
             CHECK(parents[0] == 0);
             CHECK(std::all_of(parents.begin() + 1, parents.end(), [](int p) { return p == 1; }));
             CHECK(inside);

@@ -89,13 +89,13 @@ TEST_CASE_TEMPLATE("a triangle's hit against Moller-Trumbore in long double, awa
     CHECK(hits > 30000);
 }
 
-TEST_CASE_TEMPLATE("a mesh's Bvh finds what testing every triangle finds", T, float, double)
+TEST_CASE_TEMPLATE("a mesh's Bvh finds what testing every triangle finds (leaves of blocks of 4 or 8)", T, float, double)
 {
     Pcg32 rng(5u, 14u);
-    for (const int n : {1, 7, 100, 3000}) {
+    for (const auto [n, block] : {std::pair{1, 4}, {7, 4}, {100, 4}, {3000, 4}, {7, 8}, {3000, 8}}) {
         const auto positions = soup_positions<T>(rng, n, T(10), T(1));
         const auto triangles = soup_triangles(n);
-        const TriangleMesh<T> mesh(positions, triangles);
+        const TriangleMesh<T> mesh(positions, triangles, {.max_leaf_size = 2 * block, .leaf_block = block});
         CHECK_FALSE(mesh.closed());
         for (int i = 0; i < 3000; ++i) {
             Ray<T> ray{test::random_point<T>(rng, T(12)), test::random_direction<T>(rng)};
@@ -453,5 +453,9 @@ TEST_CASE("vertex normals and uvs are checked: one per position, finite, non-zer
     const TriangleMesh<float> mesh(b);
     const auto c = mesh.crossings({{0.2f, 1, -0.2f}, {0, -1, 0}}, {0, prism::infinity<float>}).front();
     CHECK(c.shading.y == doctest::Approx(1));
-    CHECK(mesh.memory_bytes() == TriangleMesh<float>(b.positions, b.triangles).memory_bytes() + 3 * sizeof(Vec3<float>) + 3 * sizeof(prism::Vec2<float>));
+    // Normals and uvs are kept at every leaf-order position, with the padding of the blocks of four.
+    CHECK(mesh.bvh().primitives().size() == 4);
+    CHECK_THROWS_WITH_AS(TriangleMesh<float>(b.positions, b.triangles, {.leaf_block = 2}),
+                         "prism: TriangleMesh BvhConfig leaf_block must be a multiple of 4 (its triangles are tested in blocks), got 2", std::invalid_argument);
+    CHECK(mesh.memory_bytes() == TriangleMesh<float>(b.positions, b.triangles).memory_bytes() + 4 * (3 * sizeof(Vec3<float>) + 3 * sizeof(prism::Vec2<float>)));
 }

@@ -60,7 +60,7 @@ struct BvhConfig {
     int max_leaf_size = 4;               ///< a leaf holds at most this many primitives (>= 1)
     int bins = 16;                       ///< SAH bins per axis (2 to 256), for BvhSplit::binned
     float traversal_cost = 1;            ///< C_trav, relative to one leaf test of leaf_block primitives
-    int leaf_block = 1;                  ///< primitives a leaf tests at once (TriangleMesh: 4): n cost ceil(n / leaf_block) tests
+    int leaf_block = 1;                  ///< primitives a leaf tests at once (TriangleMesh: 4): n cost ceil(n / leaf_block) tests, and each leaf starts a block in leaf order
     BvhSplit split = BvhSplit::binned;
     unsigned threads = 0;                ///< build threads (0: every hardware thread); the tree is the same for any number
 };
@@ -308,8 +308,13 @@ public:
     /// The wide nodes, the root first.
     [[nodiscard]] constexpr std::span<const Node> nodes() const noexcept { return nodes_; }
     /// The primitives in leaf order: a leaf holds primitives()[first, first + count).
+    /// With BvhConfig::leaf_block b > 1, every leaf's first is a multiple of b, and the
+    /// positions from its end to the next multiple hold its last primitive again: a
+    /// caller that keeps its primitives in blocks of b in this order finds a leaf's first
+    /// block at first / b, with no table to look it up in.
     [[nodiscard]] constexpr std::span<const std::uint32_t> primitives() const noexcept { return primitives_; }
-    [[nodiscard]] constexpr std::size_t size() const noexcept { return primitives_.size(); }
+    /// The number of primitives (primitives() also holds the padding of leaf blocks).
+    [[nodiscard]] constexpr std::size_t size() const noexcept { return size_; }
     /// The depth of the binary tree the build made (the wide one is a half or a third as deep).
     [[nodiscard]] constexpr int depth() const noexcept { return depth_; }
     /// The box around every primitive (empty for none).
@@ -613,7 +618,7 @@ private:
             if (threads > 1 && nodes[open.node].count <= grain) return subtrees.push_back(open), true;
             return false;
         });
-        if (subtrees.empty()) return finish(refs, nodes);
+        if (subtrees.empty()) return finish(refs, nodes, config);
         std::vector<std::vector<BinaryNode>> parts(subtrees.size());
         std::vector<int> depths(subtrees.size());
         detail::parallel_for(subtrees.size(), threads, [&](std::size_t i) {
@@ -631,14 +636,36 @@ private:
             }
             depth_ = std::max(depth_, depths[i]);
         }
-        return finish(refs, nodes);
+        return finish(refs, nodes, config);
     }
 
-    /// The primitives' order, from the refs the build partitioned; returns the nodes.
-    [[nodiscard]] constexpr std::vector<BinaryNode> finish(const std::vector<Ref>& refs, std::vector<BinaryNode>& nodes)
+    /// The primitives' order, from the refs the build partitioned, each leaf moved up to
+    /// start a block of leaf_block (see primitives()); returns the nodes.
+    [[nodiscard]] constexpr std::vector<BinaryNode> finish(const std::vector<Ref>& refs, std::vector<BinaryNode>& nodes, const BvhConfig& config)
     {
-        primitives_.resize(refs.size());
-        for (std::size_t k = 0; k < refs.size(); ++k) primitives_[k] = refs[k].index;
+        const auto n = std::uint32_t(refs.size()), block = std::uint32_t(config.leaf_block);
+        size_ = n;
+        if (block == 1) {
+            primitives_.resize(n);
+            for (std::uint32_t k = 0; k < n; ++k) primitives_[k] = refs[k].index;
+            return std::move(nodes);
+        }
+        // shift[k]: the padding of the leaves that end at or before position k, all of
+        // which come before the leaf holding k (the leaves partition [0, n)).
+        std::vector<std::uint64_t> shift(std::size_t(n) + 1, 0);
+        for (const BinaryNode& node : nodes)
+            if (node.count != 0) shift[node.first + node.count] = (block - node.count % block) % block;
+        for (std::size_t k = 1; k <= n; ++k) shift[k] += shift[k - 1];
+        if (std::uint64_t(n) + shift[n] >= std::numeric_limits<std::uint32_t>::max())
+            detail::throw_invalid("Bvh's leaf order, padded to blocks of ", block, ", must hold fewer than 2^32 - 1 positions, got ", std::uint64_t(n) + shift[n]);
+        primitives_.assign(std::size_t(n + shift[n]), 0);
+        for (std::uint32_t k = 0; k < n; ++k) primitives_[std::size_t(k + shift[k])] = refs[k].index;
+        for (BinaryNode& node : nodes) {
+            if (node.count == 0) continue;
+            node.first += std::uint32_t(shift[node.first]);
+            const std::uint32_t last = primitives_[node.first + node.count - 1];
+            for (std::uint32_t k = node.count; k % block != 0; ++k) primitives_[node.first + k] = last;
+        }
         return std::move(nodes);
     }
 
@@ -804,6 +831,7 @@ private:
     std::vector<Node> nodes_;
     std::vector<std::uint32_t> primitives_;
     Aabb<T> bounds_{};
+    std::size_t size_ = 0; ///< primitives, without the padding of leaf blocks
     T magnitude_ = 0; ///< the largest coordinate magnitude of the root's box
     int depth_ = 0;
     int leaf_block_ = 1; ///< BvhConfig::leaf_block, for sah_cost

@@ -226,8 +226,7 @@ template <Scalar T>
 
 template <Scalar T>
 struct MeshData {
-    std::vector<TriangleBlock<T>> blocks;        ///< the corners, a leaf's at a time
-    std::vector<std::uint32_t> slot;             ///< per triangle, in the Bvh's leaf order: its block * 4 + lane
+    std::vector<TriangleBlock<T>> blocks;        ///< the corners in the Bvh's leaf order (position k: block k / 4, lane k % 4)
     std::vector<std::array<Vec3<T>, 3>> normals; ///< per triangle, its corners' unit normals (or none)
     std::vector<std::array<Vec2<T>, 3>> uvs;     ///< per triangle, its corners' coordinates (or none)
     Bvh<T> bvh;
@@ -259,11 +258,15 @@ public:
     /// triangle, an index past the positions, a non-finite position, a closed mesh whose
     /// triangles wind inward (negative volume: reverse each triangle's order), normals or
     /// uvs not one per position, a normal that is not finite and non-zero, a non-finite
-    /// uv, or a triangle whose three normals all point against its winding.
+    /// uv, a triangle whose three normals all point against its winding, or a
+    /// config.leaf_block that is not a multiple of four (bvh_config() is the default).
     TriangleMesh(std::span<const Vec3<T>> positions, std::span<const TriangleIndices> triangles, BvhConfig config = bvh_config(),
                  std::span<const Vec3<T>> normals = {}, std::span<const Vec2<T>> uvs = {})
     {
         if (triangles.empty()) detail::throw_invalid("TriangleMesh triangles must not be empty");
+        if (config.leaf_block < 1 || config.leaf_block % detail::TriangleBlock<T>::width != 0)
+            detail::throw_invalid("TriangleMesh BvhConfig leaf_block must be a multiple of ", detail::TriangleBlock<T>::width, " (its triangles are tested in blocks), got ",
+                                  config.leaf_block);
         for (std::size_t i = 0; i < positions.size(); ++i)
             if (!is_finite(positions[i])) detail::throw_invalid("TriangleMesh position ", i, " must be finite, got ", detail::describe(positions[i]));
         for (std::size_t f = 0; f < triangles.size(); ++f)
@@ -328,13 +331,12 @@ public:
     [[nodiscard]] std::size_t triangle_count() const noexcept { return data_->bvh.size(); }
     [[nodiscard]] const Bvh<T>& bvh() const noexcept { return data_->bvh; }
     [[nodiscard]] Aabb<T> bounds() const noexcept { return data_->bounds; }
-    /// Bytes held by the shared data (corner blocks and slots, normals, uvs, Bvh), for every
+    /// Bytes held by the shared data (corner blocks, normals, uvs, Bvh), for every
     /// copy together.
     [[nodiscard]] std::size_t memory_bytes() const noexcept
     {
         const auto& d = *data_;
-        return sizeof(d) + d.slot.size() * sizeof(d.slot[0]) +
-               d.blocks.size() * sizeof(d.blocks[0]) + d.normals.size() * sizeof(d.normals[0]) +
+        return sizeof(d) + d.blocks.size() * sizeof(d.blocks[0]) + d.normals.size() * sizeof(d.normals[0]) +
                d.uvs.size() * sizeof(d.uvs[0]) + d.bvh.nodes().size() * sizeof(typename Bvh<T>::Node) + d.bvh.primitives().size() * sizeof(std::uint32_t);
     }
 
@@ -379,7 +381,7 @@ public:
     /// outside `range`, takes the search.
     [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, const SurfaceHint<T>& hint) const noexcept
     {
-        if (hint.index < triangle_count() && range.surrounds(hint.t) && hint.b[0] > T(0) && hint.b[1] > T(0) && hint.b[2] > T(0))
+        if (hint.index < data_->bvh.primitives().size() && range.surrounds(hint.t) && hint.b[0] > T(0) && hint.b[1] > T(0) && hint.b[2] > T(0))
             return surface_at({hint.t, hint.index, hint.b, hint.entering}, hint.entering);
         const auto all = crossings(ray, range);
         if (all.empty()) return std::nullopt;
@@ -439,7 +441,7 @@ private:
     [[gnu::always_inline]] bool for_each_maybe_hit(const detail::ShearedRay<T>& ray, std::uint32_t first, std::uint32_t count, Test&& test) const noexcept
     {
         constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
-        const detail::TriangleBlock<T>* block = &data_->blocks[data_->slot[first] / width];
+        const detail::TriangleBlock<T>* block = &data_->blocks[first / width]; // a leaf starts a block
         for (std::uint32_t k = first; k < first + count; k += width, ++block) {
             const std::uint32_t lanes = std::min(width, first + count - k);
             for (unsigned maybe = detail::edge_test(ray, *block) & ((1u << lanes) - 1); maybe != 0; maybe &= maybe - 1) {
@@ -454,33 +456,22 @@ private:
     [[nodiscard]] std::array<Vec3<T>, 3> corners(std::uint32_t k) const noexcept
     {
         constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
-        const std::uint32_t slot = data_->slot[k];
-        return data_->blocks[slot / width].triangle(slot % width);
+        return data_->blocks[k / width].triangle(k % width);
     }
 
-    /// The corners in blocks, a leaf's at a time from its first block's lane 0 (its last
-    /// triangle repeated to fill its last block).
+    /// The corners in blocks of four in the Bvh's leaf order, where each leaf starts a
+    /// block and its last triangle fills its last block (Bvh::primitives()).
     static void make_blocks(detail::MeshData<T>& data, std::span<const Vec3<T>> positions, std::span<const TriangleIndices> triangles)
     {
         constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
-        const auto input = data.bvh.primitives(); // the triangle at each leaf-order position
-        data.slot.assign(input.size(), 0);
-        for (const auto& node : data.bvh.nodes())
-            for (int c = 0; c < Bvh<T>::width; ++c) {
-                if (!node.used(c) || !node.leaf(c)) continue;
-                const std::uint32_t first = node.first[std::size_t(c)], count = node.count[std::size_t(c)];
-                for (std::uint32_t k = first; k < first + count; k += width) {
-                    const auto block = std::uint32_t(data.blocks.size());
-                    detail::TriangleBlock<T>& b = data.blocks.emplace_back();
-                    for (std::uint32_t lane = 0; lane < width; ++lane) {
-                        const std::uint32_t at = std::min(k + lane, first + count - 1);
-                        if (at == k + lane) data.slot[at] = block * width + lane;
-                        const TriangleIndices& f = triangles[input[at]];
-                        for (std::size_t i = 0; i < 3; ++i)
-                            for (int axis = 0; axis < 3; ++axis) b.corner[3 * i + std::size_t(axis)][lane] = positions[f[i]][axis];
-                    }
-                }
-            }
+        const auto order = data.bvh.primitives(); // the triangle at each leaf-order position
+        PRISM_ASSERT(order.size() % width == 0);
+        data.blocks.resize(order.size() / width);
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            const TriangleIndices& f = triangles[order[k]];
+            for (std::size_t i = 0; i < 3; ++i)
+                for (int axis = 0; axis < 3; ++axis) data.blocks[k / width].corner[3 * i + std::size_t(axis)][k % width] = positions[f[i]][axis];
+        }
     }
 
     struct Hit {
