@@ -1,9 +1,14 @@
 // SPDX-License-Identifier: MIT
-// The command line shared by every example: size, samples, threads, seed, output folder.
+// The command line shared by every example: size, samples, threads, seed, output folder,
+// and the parts of a render split across machines (crop windows, ranges of passes),
+// written as EXR with their exact sums for tools/merge to add up.
 #pragma once
 
 #include <prism/io/image.hpp>
 #include <prism/prism.hpp>
+#ifdef PRISM_EXAMPLES_EXR
+#include <prism/io/exr.hpp>
+#endif
 
 #include <cerrno>
 #include <chrono>
@@ -12,8 +17,12 @@
 #include <cstdlib>
 #include <cstring>
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
 #include <exception>
 #include <filesystem>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -40,9 +49,17 @@ struct Options {
     /// progressive (progressive photon mapping), reference (path tracing + light tracing)
     std::string method = "cache";
     std::size_t passes = 64; ///< progressive photon mapping's passes
+    std::size_t first_pass = 0; ///< its first (--passes a:b)
+    // A part of a render split across machines
+    std::string crop;          ///< --crop as given (resolved into render.crop once the size is known)
+    bool part = false;         ///< --crop or --passes a:b: write EXR with the exact sums
+    bool exr = false;          ///< --exr: also write EXR (with the means only, unless a part)
+    std::string program;       ///< the example's name
+    bool photon_example = false; ///< the example takes the photon mapping flags
 };
 
 inline void print_photon_help(const Options& defaults);
+
 
 /// Which families of flags an example takes beyond the shared ones: the others are refused,
 /// not silently ignored.
@@ -61,6 +78,14 @@ inline void print_help(const char* program, const char* description, const Optio
                 "  --threads N   worker threads, 0 = all cores (default 0)\n"
                 "  --seed N      random seed (default 0)\n"
                 "  --out DIR     folder for the images, created if missing (default .)\n"
+                "  --crop X0,X1,Y0,Y1\n"
+                "                render only pixels [X0, X1) x [Y0, Y1), from the top left; with a decimal point, as\n"
+                "                fractions of the width and height (pbrt's --cropwindow); the same bits as those pixels\n"
+                "                of the whole render (default: the whole image)\n"
+                "  --passes A:B  render only passes [A, B): samples of --spp, or progressive photon mapping's passes;\n"
+                "                parts add up with tools/merge to the whole render's bits (default: all)\n"
+                "  --exr         also write each image as EXR (float RGB and the render's settings); a part (--crop,\n"
+                "                --passes A:B) always writes EXR, with its exact sums (default: off)\n"
                 "  --help        this text\n",
                 program, description, program, defaults.render.width, defaults.render.height, defaults.render.spp);
     if (accepts.povray)
@@ -87,7 +112,7 @@ inline void print_photon_help(const Options& defaults)
                 "                       mapping: --photons and --caustic-photons per pass, --radius and --global-radius the first\n"
                 "                       pass's radii), reference (unbiased: path tracing plus light tracing, --spp samples per\n"
                 "                       pixel and as many light paths) (default %s)\n"
-                "  --passes N           progressive photon mapping's passes (default %zu)\n",
+                "  --passes N           progressive photon mapping's passes, or A:B for passes [A, B) of them (default %zu)\n",
                 defaults.photons, defaults.caustic_photons, defaults.gather, defaults.method.c_str(), defaults.passes);
 }
 
@@ -118,6 +143,55 @@ inline double parse_number(std::string_view flag, const char* text, double lo, d
     return value;
 }
 
+/// --crop X0,X1,Y0,Y1 for a width x height image: pixels [X0, X1) x [Y0, Y1), or, if
+/// any value has a decimal point or an exponent, fractions of the image (pbrt's
+/// --cropwindow: pixels from ceil(X0 width) to ceil(X1 width), and so for y).
+inline prism::PixelWindow parse_crop(const std::string& text, int width, int height)
+{
+    const auto refuse = [&](const std::string& why) {
+        throw std::invalid_argument("--crop expects X0,X1,Y0,Y1 as pixels (0 <= X0 < X1 <= width) or fractions of the image (0.0 to 1.0), got '" + text +
+                                    "'" + why);
+    };
+    std::array<std::string, 4> parts;
+    std::size_t start = 0;
+    for (std::size_t k = 0; k < 4; ++k) {
+        const std::size_t comma = text.find(',', start);
+        if ((k < 3) == (comma == std::string::npos)) refuse("");
+        parts[k] = text.substr(start, k < 3 ? comma - start : std::string::npos);
+        start = comma + 1;
+    }
+    const bool fractions = text.find_first_of(".eE") != std::string::npos;
+    std::array<double, 4> v{};
+    for (std::size_t k = 0; k < 4; ++k) {
+        char* end = nullptr;
+        errno = 0;
+        v[k] = fractions ? std::strtod(parts[k].c_str(), &end) : double(std::strtoll(parts[k].c_str(), &end, 10));
+        if (parts[k].empty() || errno != 0 || *end != '\0' || !(v[k] >= 0.0 && v[k] <= (fractions ? 1.0 : double(k < 2 ? width : height)))) refuse("");
+    }
+    prism::PixelWindow w;
+    if (fractions)
+        w = {int(std::ceil(v[0] * width)), int(std::ceil(v[2] * height)), int(std::ceil(v[1] * width)), int(std::ceil(v[3] * height))};
+    else
+        w = {int(v[0]), int(v[2]), int(v[1]), int(v[3])};
+    if (w.empty())
+        refuse(fractions ? " (no pixel of the " + std::to_string(width) + "x" + std::to_string(height) + " image is inside)"
+                         : " (X0 < X1 and Y0 < Y1 within the " + std::to_string(width) + "x" + std::to_string(height) + " image)");
+    return w;
+}
+
+/// --passes A:B, a range of passes; nullopt when the text is a single count.
+inline std::optional<prism::PassRange> parse_pass_range(const char* text)
+{
+    const std::string_view t = text;
+    const std::size_t colon = t.find(':');
+    if (colon == std::string_view::npos) return std::nullopt;
+    const std::string first(t.substr(0, colon)), last(t.substr(colon + 1));
+    const auto a = parse_integer<std::uint64_t>("--passes", first.c_str(), 0, 1LL << 40);
+    const auto b = parse_integer<std::uint64_t>("--passes", last.c_str(), 1, 1LL << 40);
+    if (a >= b) throw std::invalid_argument("--passes expects A:B with A < B, got '" + std::string(t) + "'");
+    return prism::PassRange{a, b};
+}
+
 /// Refuse an output folder that cannot be written, before anything is rendered.
 inline void check_writable(const std::filesystem::path& folder)
 {
@@ -146,14 +220,22 @@ inline void check_povray_picture(const std::filesystem::path& png, int width, in
 inline bool parse(int argc, char** argv, Options& options, const char* description, Accepts accepts = {})
 {
     const Options defaults = options;
+    options.program = std::filesystem::path(argv[0]).filename().string();
+    options.photon_example = accepts.photons;
+    std::optional<prism::PassRange> pass_range;
+    bool pass_count = false;
     constexpr std::string_view photon_flags[] = {"--photons", "--caustic-photons", "--gather", "--radius", "--global-radius",
                                                  "--max-height-ratio", "--k",               "--visibility", "--filter", "--light",
-                                                 "--method",           "--passes"};
+                                                 "--method"};
     for (int i = 1; i < argc; ++i) {
         const std::string_view flag = argv[i];
         if (flag == "--help" || flag == "-h") {
             print_help(argv[0], description, defaults, accepts);
             return false;
+        }
+        if (flag == "--exr") {
+            options.exr = true;
+            continue;
         }
         const bool photon_flag = std::find(std::begin(photon_flags), std::end(photon_flags), flag) != std::end(photon_flags);
         if ((photon_flag && !accepts.photons) || (flag == "--povray" && !accepts.povray))
@@ -188,7 +270,18 @@ inline bool parse(int argc, char** argv, Options& options, const char* descripti
                 throw std::invalid_argument("--method expects direct, gather, cache, progressive or reference, got '" + std::string(m) + "'");
             options.method = m;
         }
-        else if (flag == "--passes") options.passes = parse_integer<std::size_t>(flag, value, 1, 1000000);
+        else if (flag == "--crop") options.crop = value;
+        else if (flag == "--passes") {
+            if (const auto range = parse_pass_range(value)) {
+                pass_range = range;
+            } else {
+                if (!accepts.photons)
+                    throw std::invalid_argument("--passes N counts progressive photon mapping's passes; to render samples A to B of --spp give A:B, got '" +
+                                                std::string(value) + "'");
+                options.passes = parse_integer<std::size_t>(flag, value, 1, 1000000);
+                pass_count = true;
+            }
+        }
         else if (flag == "--light") {
             const std::string_view l = value;
             if (l != "physical" && l != "povray") throw std::invalid_argument("--light expects physical or povray, got '" + std::string(l) + "'");
@@ -196,6 +289,31 @@ inline bool parse(int argc, char** argv, Options& options, const char* descripti
         }
         else throw std::invalid_argument("unknown option '" + std::string(flag) + "' (see --help)");
     }
+    // The parts of a render split across machines.
+    if (!options.crop.empty()) options.render.crop = parse_crop(options.crop, options.render.width, options.render.height);
+    const bool progressive = accepts.photons && options.method == "progressive";
+    if (pass_count && !progressive)
+        throw std::invalid_argument("--passes " + std::to_string(options.passes) + " counts progressive photon mapping's passes (--method progressive); "
+                                    "to render samples A to B of --spp give A:B");
+    if (pass_range) {
+        if (progressive) {
+            options.first_pass = pass_range->first;
+            options.passes = pass_range->count();
+        } else {
+            if (pass_range->last > std::uint64_t(options.render.spp))
+                throw std::invalid_argument("--passes " + std::to_string(pass_range->first) + ":" + std::to_string(pass_range->last) + " reaches past the " +
+                                            std::to_string(options.render.spp) + " samples of --spp");
+            options.render.passes = *pass_range;
+        }
+    }
+    options.part = !options.crop.empty() || pass_range.has_value();
+    if (options.part && !options.povray.empty())
+        throw std::invalid_argument("--povray compares whole pictures: it cannot go with --crop or --passes A:B");
+#ifndef PRISM_EXAMPLES_EXR
+    if (options.part || options.exr)
+        throw std::invalid_argument(std::string(options.part ? "--crop and --passes A:B write" : "--exr writes") +
+                                    " EXR, and this build has no OpenEXR (Debian: libopenexr-dev)");
+#endif
     check_writable(options.out);
     if (!options.povray.empty()) check_povray_picture(options.povray, options.render.width, options.render.height);
     return true;
@@ -226,16 +344,84 @@ int run(Body&& body) noexcept
     }
 }
 
-/// Render and report the render time (camera rays to finished film) on stdout.
+/// Every setting that changes a bit of the image, written out: parts of one render
+/// must agree on it (tools/merge refuses them otherwise). Thread count, output and the
+/// part's own window and passes change no bit and are left out.
+inline std::string settings(const Options& options)
+{
+    const auto number = [](double x) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.17g", x);
+        return std::string(text);
+    };
+    const prism::RenderConfig& r = options.render;
+    std::string text = "program=" + options.program + " width=" + std::to_string(r.width) + " height=" + std::to_string(r.height) +
+                       " spp=" + std::to_string(r.spp) + " seed=" + std::to_string(r.seed);
+    if (options.photon_example) {
+        const char* filters[] = {"box", "cone", "gaussian"};
+        text += " method=" + options.method + " photons=" + std::to_string(options.photons) + " caustic-photons=" +
+                std::to_string(options.caustic_photons) + " gather=" + std::to_string(options.gather) + " radius=" + number(options.radius) +
+                " k=" + std::to_string(options.k) + " global-radius=" + number(options.global_radius) + " filter=" + filters[int(options.filter)] +
+                " max-height-ratio=" + number(options.max_height_ratio) + " visibility=" + std::to_string(options.visibility) +
+                " light=" + (options.povray_light ? "povray" : "physical");
+    }
+    return text;
+}
+
+/// An image rendered: its name, the exact sums of its window and passes, the render time.
+struct Rendered {
+    std::string name;
+    prism::Accumulation sums;
+    double seconds = 0;
+
+    [[nodiscard]] prism::Film image() const { return sums.image(); }
+};
+
+/// Write an image as name.png (and name.pfm, exact floats, with `pfm`); as name.exr too
+/// with --exr, and always for a part of a render (--crop, --passes A:B), with the exact
+/// sums and the metadata tools/merge needs to add it to the other parts.
+inline void save(const Rendered& rendered, const Options& options, bool pfm = false)
+{
+    const prism::Film film = rendered.image();
+    prism::write_png(film, options.out / (rendered.name + ".png"));
+    if (pfm) prism::write_pfm(film, options.out / (rendered.name + ".pfm"));
+#ifdef PRISM_EXAMPLES_EXR
+    if (options.exr || options.part) {
+        const prism::PixelWindow& w = rendered.sums.window();
+        const bool progressive = options.photon_example && options.method == "progressive";
+        const std::uint64_t first = progressive ? options.first_pass : (options.render.passes.empty() ? 0 : options.render.passes.first);
+        const std::uint64_t last = progressive ? options.first_pass + options.passes
+                                               : (options.render.passes.empty() ? std::uint64_t(options.render.spp) : options.render.passes.last);
+        char seconds[32];
+        std::snprintf(seconds, sizeof seconds, "%.3f", rendered.seconds);
+        std::map<std::string, std::string> attributes{
+            {"prism.image", rendered.name},
+            {"prism.settings", settings(options)},
+            {"prism.seed", std::to_string(options.render.seed)},
+            {"prism.spp", std::to_string(options.render.spp)},
+            {"prism.part.crop", std::to_string(w.x0) + "," + std::to_string(w.x1) + "," + std::to_string(w.y0) + "," + std::to_string(w.y1)},
+            {"prism.part.passes", std::to_string(first) + ":" + std::to_string(last)},
+            {"prism.part.seconds", seconds}};
+        if (options.photon_example) {
+            attributes["prism.method"] = options.method;
+            attributes["prism.photons"] = std::to_string(options.photons) + " global, " + std::to_string(options.caustic_photons) + " caustic" +
+                                          (progressive ? " per pass" : "");
+        }
+        prism::write_exr(prism::to_exr(rendered.sums, options.part, attributes), options.out / (rendered.name + ".exr"));
+    }
+#endif
+}
+
+/// Render and report the render time (camera rays to finished sums) on stdout.
 template <class Integrator>
-prism::Film timed_render(const char* name, const prism::Camera<typename Integrator::scalar_type>& camera,
-                         const Integrator& integrator, const prism::RenderConfig& config)
+Rendered timed_render(const std::string& name, const prism::Camera<typename Integrator::scalar_type>& camera, const Integrator& integrator,
+                      const prism::RenderConfig& config)
 {
     const auto start = std::chrono::steady_clock::now();
-    prism::Film film = prism::render(camera, integrator, config);
+    prism::Accumulation sums = prism::render_sums(camera, integrator, config);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("%s: %dx%d, %d spp, render time %.4f s\n", name, config.width, config.height, config.spp, seconds);
-    return film;
+    std::printf("%s: %dx%d, %d spp, render time %.4f s\n", name.c_str(), config.width, config.height, config.spp, seconds);
+    return {name, std::move(sums), seconds};
 }
 
 } // namespace examples

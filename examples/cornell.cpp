@@ -15,10 +15,9 @@ int main(int argc, char** argv)
             return 0;
         const auto scene = scenes::cornell_scene<float>();
         const prism::Whitted integrator(scene, {.max_depth = 10});
-        const prism::Film film = examples::timed_render("cornell", scenes::cornell_camera<float>(), integrator, options.render);
-        prism::write_png(film, options.out / "cornell.png");
-        prism::write_pfm(film, options.out / "cornell.pfm");
-        if (!options.povray.empty()) examples::write_comparison(film, options.povray, options.out / "cornell_vs_povray.png");
+        const examples::Rendered rendered = examples::timed_render("cornell", scenes::cornell_camera<float>(), integrator, options.render);
+        examples::save(rendered, options, true);
+        if (!options.povray.empty()) examples::write_comparison(rendered.image(), options.povray, options.out / "cornell_vs_povray.png");
         return 0;
     });
 }

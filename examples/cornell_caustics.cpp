@@ -67,10 +67,10 @@ int main(int argc, char** argv)
         }
         const auto scene = scenes::cornell_scene<float>(!options.povray_light);
         const auto camera = scenes::cornell_camera<float>();
-        const prism::Film film = examples::render_by_method("cornell_caustics", scene, camera, options);
-        prism::write_png(film, options.out / "cornell_caustics.png");
-        prism::write_pfm(film, options.out / "cornell_caustics.pfm");
-        if (!options.povray.empty()) examples::write_comparison(film, options.povray, options.out / "cornell_caustics_vs_povray.png");
+        const examples::Rendered rendered = examples::render_by_method("cornell_caustics", scene, camera, options);
+        examples::save(rendered, options, true);
+        if (!options.povray.empty()) examples::write_comparison(rendered.image(), options.povray, options.out / "cornell_caustics_vs_povray.png");
+        if (options.part) return 0; // the photon pictures below are of the whole image, for one machine to draw
         // Where the photons landed: each photon's power, summed per pixel (one photon per
         // pixel of the global map reads as mid-grey).
         const prism::PhotonMaps maps = prism::trace_photons(scene, examples::photon_tracer_config(options));

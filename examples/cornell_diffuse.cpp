@@ -17,9 +17,7 @@ int main(int argc, char** argv)
         options.caustic_photons = 0; // nothing specular
         if (!examples::parse(argc, argv, options, "the diffuse Cornell box shared with Blender's Cycles (colour bleeding)", {.photons = true})) return 0;
         const auto scene = scenes::cornell_diffuse_scene<float>();
-        const prism::Film film = examples::render_by_method("cornell_diffuse", scene, scenes::cornell_camera<float>(), options);
-        prism::write_png(film, options.out / "cornell_diffuse.png");
-        prism::write_pfm(film, options.out / "cornell_diffuse.pfm");
+        examples::save(examples::render_by_method("cornell_diffuse", scene, scenes::cornell_camera<float>(), options), options, true);
         return 0;
     });
 }

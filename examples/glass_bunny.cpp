@@ -56,7 +56,7 @@ int main(int argc, char** argv)
             std::move(clay),
         };
         const Camera<float> camera{.position = {4.2f, 3.6f, 6.2f}, .look_at = {0.5f, 0.6f, 0.3f}, .up = {0, 1, 0}, .fov = 45};
-        write_png(examples::render_by_method("glass_bunny", scene, camera, options), options.out / "glass_bunny.png");
+        examples::save(examples::render_by_method("glass_bunny", scene, camera, options), options);
         return 0;
     });
 }

@@ -18,7 +18,7 @@ namespace examples {
 ///   reference    path tracing (options.render.spp) plus light tracing (as many paths)
 /// With options.povray_light (POV-Ray's model) the reference takes no diffuse bounce.
 template <class SceneT>
-prism::Film render_by_method(const char* name, const SceneT& scene, const prism::Camera<typename SceneT::scalar_type>& camera, const Options& options)
+Rendered render_by_method(const std::string& name, const SceneT& scene, const prism::Camera<typename SceneT::scalar_type>& camera, const Options& options)
 {
     using Mapper = prism::PhotonMapper<SceneT>;
     const auto start = std::chrono::steady_clock::now();
@@ -33,39 +33,44 @@ prism::Film render_by_method(const char* name, const SceneT& scene, const prism:
     if (method == "reference") {
         // POV-Ray's model lights the first diffuse surface only: no diffuse bounce.
         const int bounces = options.povray_light ? 0 : 256;
-        const prism::Film paths = prism::render(camera, prism::PathTracer(scene, {.max_diffuse_bounces = bounces}), options.render);
+        const prism::RenderConfig& r = options.render;
+        prism::Accumulation sums = prism::render_sums(camera, prism::PathTracer(scene, {.max_diffuse_bounces = bounces}), r);
         const double traced = seconds();
-        const std::size_t light_paths = std::size_t(options.render.spp) * std::size_t(options.render.width) * std::size_t(options.render.height);
-        const prism::Film light = prism::light_trace(scene, camera,
-                                                     {.width = options.render.width, .height = options.render.height, .paths = light_paths,
-                                                      .max_diffuse_bounces = bounces, .seed = options.render.seed, .threads = options.render.threads});
-        prism::Film sum(paths.width(), paths.height());
-        for (int y = 0; y < sum.height(); ++y)
-            for (int x = 0; x < sum.width(); ++x) sum.set(x, y, paths.at(x, y) + light.at(x, y));
-        std::printf("%s: reference, %d spp path tracing %.3f s + %zu light paths %.3f s = %.3f s\n", name, options.render.spp, traced, light_paths,
-                    seconds() - traced, seconds());
-        return sum;
+        // As many light paths as camera samples: pass s takes paths [s W H, (s + 1) W H),
+        // each splat counted spp times, as the camera samples are summed.
+        const std::uint64_t frame = std::uint64_t(r.width) * std::uint64_t(r.height);
+        const prism::PassRange samples = r.passes.empty() ? prism::PassRange{0, std::uint64_t(r.spp)} : r.passes;
+        prism::light_trace_into(sums, scene, camera,
+                                {.width = r.width, .height = r.height, .paths = std::uint64_t(r.spp) * frame, .max_diffuse_bounces = bounces,
+                                 .seed = r.seed, .threads = r.threads, .crop = r.crop, .traced = {samples.first * frame, samples.last * frame}},
+                                double(r.spp));
+        std::printf("%s: reference, %llu spp path tracing %.3f s + %llu light paths %.3f s = %.3f s\n", name.c_str(),
+                    static_cast<unsigned long long>(samples.count()), traced, static_cast<unsigned long long>(samples.count() * frame), seconds() - traced,
+                    seconds());
+        return {name, std::move(sums), seconds()};
     }
     if (method == "progressive") {
         prism::ProgressiveConfig<SceneT> progressive;
         progressive.pass = config;
         progressive.pass.caustic.k = 0; // progressive estimates are by radius
         progressive.passes = options.passes;
-        const prism::ProgressiveResult result = prism::render_progressive(camera, scene, progressive, options.render);
-        std::printf("%s: progressive photon mapping, %zu passes of %zu + %zu photons, %.3f s\n", name, result.passes, options.photons,
+        progressive.first_pass = options.first_pass;
+        prism::ProgressiveResult result = prism::render_progressive(camera, scene, progressive, options.render);
+        std::printf("%s: progressive photon mapping, %zu passes of %zu + %zu photons, %.3f s\n", name.c_str(), result.passes, options.photons,
                     options.caustic_photons, seconds());
-        return result.image();
+        return {name, std::move(result.sums), seconds()};
     }
     Mapper mapper(scene, config);
     const double traced = seconds();
-    std::printf("%s: %zu global and %zu caustic photons stored in %.3f s\n", name, mapper.maps().global.size(), mapper.maps().caustic.size(), traced);
+    std::printf("%s: %zu global and %zu caustic photons stored in %.3f s\n", name.c_str(), mapper.maps().global.size(), mapper.maps().caustic.size(), traced);
     if (method == "cache") {
         mapper.cache_irradiance(camera, options.render);
-        std::printf("%s: irradiance cache of %zu records in %.3f s\n", name, mapper.irradiance_cache().size(), seconds() - traced);
+        std::printf("%s: irradiance cache of %zu records in %.3f s\n", name.c_str(), mapper.irradiance_cache().size(), seconds() - traced);
     }
-    prism::Film film = timed_render(name, camera, mapper, options.render);
-    std::printf("%s: %s, total %.3f s\n", name, method.c_str(), seconds());
-    return film;
+    Rendered rendered = timed_render(name, camera, mapper, options.render);
+    std::printf("%s: %s, total %.3f s\n", name.c_str(), method.c_str(), seconds());
+    rendered.seconds = seconds();
+    return rendered;
 }
 
 } // namespace examples

@@ -90,9 +90,9 @@ int main(int argc, char** argv)
             return 0;
         const Camera<T> camera{.position = {T(-1.5), T(8.5), T(9)}, .look_at = {T(1.4), T(2.4), T(0)}, .up = {0, 1, 0}, .fov = 50};
         const auto scene = rainbow_scene(DispersiveDielectric<T>{.glass = glass::f2<double>});
-        write_png(examples::render_by_method("prism_rainbow", scene, camera, options), options.out / "prism_rainbow.png");
+        examples::save(examples::render_by_method("prism_rainbow", scene, camera, options), options);
         const auto plain = rainbow_scene(Dielectric<T>{.ior = T(glass::f2<double>.index(fraunhofer::d))});
-        write_png(examples::render_by_method("prism_rainbow_plain", plain, camera, options), options.out / "prism_rainbow_plain.png");
+        examples::save(examples::render_by_method("prism_rainbow_plain", plain, camera, options), options);
         return 0;
     });
 }

@@ -16,8 +16,7 @@ int main(int argc, char** argv)
             return 0;
         const auto scene = scenes::whitted_scene<float>();
         const prism::Whitted integrator(scene);
-        const prism::Film film = examples::timed_render("whitted", scenes::whitted_camera<float>(), integrator, options.render);
-        prism::write_png(film, options.out / "whitted.png");
+        examples::save(examples::timed_render("whitted", scenes::whitted_camera<float>(), integrator, options.render), options);
         return 0;
     });
 }

@@ -7768,12 +7768,266 @@ public:
 
     /// How many channel values were replaced by 0 because they were not finite and >= 0.
     [[nodiscard]] std::size_t rejected() const noexcept { return rejected_.load(std::memory_order_relaxed); }
+    /// Count values rejected before they reached this film (an Accumulation's samples).
+    void count_rejected(std::size_t count) noexcept { rejected_.fetch_add(count, std::memory_order_relaxed); }
 
 private:
     int width_;
     int height_;
     std::vector<Rgb<float>> pixels_;
     std::atomic<std::size_t> rejected_{0};
+};
+
+} // namespace prism
+
+// ---- prism/render/accumulation.hpp ----
+// Accumulation: a render's samples summed exactly per pixel over a window of the image,
+// so that a render split by pixels (crop windows), by passes, over threads or over
+// machines adds up to the same bits as the render made in one piece.
+//
+// Floating-point addition is not associative: (a + b) + c and a + (b + c) can differ in
+// the last bit, and far more when a and c differ by many orders of magnitude, so sums
+// made in parts and added in another order would not reproduce the whole. Here each
+// sample is rounded once, to the nearest multiple of 2^-64, and summed as a 128-bit
+// integer (ExactSum), whose addition is exact, associative and commutative. That one
+// rounding depends on the sample alone; it keeps every float sample in [2^-41, 2^40)
+// (4.5e-13 to 1.1e12) exactly and moves any other by at most 2^-65 (2.7e-20).
+
+
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace prism {
+
+/// A rectangle of an image's pixels, [x0, x1) x [y0, y1); pbrt's pixel bounds.
+struct PixelWindow {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+
+    [[nodiscard]] constexpr int width() const noexcept { return x1 - x0; }
+    [[nodiscard]] constexpr int height() const noexcept { return y1 - y0; }
+    [[nodiscard]] constexpr bool empty() const noexcept { return x1 <= x0 || y1 <= y0; }
+    [[nodiscard]] constexpr std::size_t area() const noexcept { return empty() ? 0 : std::size_t(width()) * std::size_t(height()); }
+    [[nodiscard]] constexpr bool contains(int x, int y) const noexcept { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+    [[nodiscard]] constexpr bool contains(const PixelWindow& w) const noexcept
+    {
+        return w.x0 >= x0 && w.x1 <= x1 && w.y0 >= y0 && w.y1 <= y1;
+    }
+    [[nodiscard]] constexpr bool overlaps(const PixelWindow& w) const noexcept
+    {
+        return w.x0 < x1 && x0 < w.x1 && w.y0 < y1 && y0 < w.y1;
+    }
+    /// The whole of a width x height image.
+    [[nodiscard]] static constexpr PixelWindow whole(int width, int height) noexcept { return {0, 0, width, height}; }
+    friend constexpr bool operator==(const PixelWindow&, const PixelWindow&) = default;
+};
+
+/// A range of passes [first, last): camera samples of each pixel, or photon passes.
+struct PassRange {
+    std::uint64_t first = 0, last = 0;
+
+    [[nodiscard]] constexpr std::uint64_t count() const noexcept { return last > first ? last - first : 0; }
+    [[nodiscard]] constexpr bool empty() const noexcept { return last <= first; }
+    [[nodiscard]] constexpr bool overlaps(const PassRange& r) const noexcept { return r.first < last && first < r.last; }
+    friend constexpr bool operator==(const PassRange&, const PassRange&) = default;
+};
+
+// GCC and Clang's 128-bit integers; -Wpedantic would name them an extension.
+__extension__ using Int128 = __int128;
+__extension__ using UInt128 = unsigned __int128;
+
+/// A signed fixed-point number with 64 integer and 64 fraction bits: samples rounded
+/// once to a multiple of 2^-64 and summed with no further rounding.
+class ExactSum {
+public:
+    /// Samples are refused from this magnitude on (the render counts them as rejected,
+    /// as it does NaN): 2^23 such samples could not overflow the 64 integer bits.
+    static constexpr double limit = 0x1p40;
+
+    constexpr ExactSum() noexcept = default;
+
+    /// x rounded to the nearest multiple of 2^-64 (halves away from zero). |x| < limit.
+    [[nodiscard]] static ExactSum of(double x) noexcept
+    {
+        PRISM_ASSERT(std::abs(x) < limit);
+        // x 2^64 is exact (a power of two) and below 2^104; below 2^52 in magnitude it
+        // may have a fraction, which round() removes exactly; above, it is an integer.
+        return from_bits(Int128(std::round(std::ldexp(x, 64))));
+    }
+
+    /// Whether x is a sample this type takes: finite and |x| < limit.
+    [[nodiscard]] static constexpr bool takes(double x) noexcept { return x > -limit && x < limit; }
+
+    [[nodiscard]] static constexpr ExactSum from_bits(Int128 bits) noexcept
+    {
+        ExactSum s;
+        s.bits_ = bits;
+        return s;
+    }
+    [[nodiscard]] constexpr Int128 bits() const noexcept { return bits_; }
+
+    /// Add `other`; false (and this unchanged) when the sum would pass 2^63 in magnitude.
+    [[nodiscard]] constexpr bool add(const ExactSum& other) noexcept
+    {
+        Int128 sum{};
+        if (__builtin_add_overflow(bits_, other.bits_, &sum)) return false;
+        bits_ = sum;
+        return true;
+    }
+
+    /// The sum, rounded once to double.
+    [[nodiscard]] double value() const noexcept { return std::ldexp(double(bits_), -64); }
+
+    friend constexpr bool operator==(const ExactSum&, const ExactSum&) = default;
+
+private:
+    Int128 bits_ = 0;
+};
+
+namespace detail {
+
+/// The mean a sum of `weight` samples stands for, as the film stores it: the one place
+/// an Accumulation becomes a float, so every way of making the same sums gives the same
+/// bits.
+[[nodiscard]] inline float mean(const ExactSum& sum, std::uint64_t weight) noexcept
+{
+    return weight == 0 ? 0.0f : static_cast<float>(sum.value() / static_cast<double>(weight));
+}
+
+} // namespace detail
+
+/// Exact per-pixel sums of named channels ("R", "G", "B" first) and the per-pixel
+/// weight (samples or passes summed) over a window of a width x height image. Threads
+/// may add to distinct pixels at once.
+class Accumulation {
+public:
+    Accumulation(int width, int height, PixelWindow window, std::vector<std::string> channels = {"R", "G", "B"})
+        : width_(width), height_(height), window_(window), channels_(std::move(channels))
+    {
+        if (width <= 0 || height <= 0) detail::throw_invalid("Accumulation size must be positive, got ", width, " x ", height);
+        if (window.empty() || !PixelWindow::whole(width, height).contains(window))
+            detail::throw_invalid("Accumulation window [", window.x0, ", ", window.x1, ") x [", window.y0, ", ", window.y1,
+                                  ") must be a non-empty part of the ", width, " x ", height, " image");
+        if (channels_.size() < 3 || channels_[0] != "R" || channels_[1] != "G" || channels_[2] != "B")
+            detail::throw_invalid("Accumulation channels must begin with R, G, B");
+        const std::size_t pixels = window.area();
+        const double bytes = double(pixels) * double(channels_.size() * sizeof(ExactSum) + sizeof(std::uint64_t));
+        const std::string what = "an Accumulation of " + std::to_string(window.width()) + " x " + std::to_string(window.height()) + " pixels";
+        detail::require_memory(what, bytes);
+        try {
+            sums_.assign(pixels * channels_.size(), ExactSum{});
+            weights_.assign(pixels, 0);
+        } catch (const std::bad_alloc&) {
+            throw allocation_error("prism: " + what + " needs " + detail::describe_bytes(bytes) + ", which could not be allocated");
+        }
+    }
+
+    Accumulation(const Accumulation& other)
+        : width_(other.width_), height_(other.height_), window_(other.window_), channels_(other.channels_), sums_(other.sums_),
+          weights_(other.weights_), rejected_(other.rejected()), overflowed_(other.overflowed())
+    {
+    }
+    Accumulation(Accumulation&& other) noexcept
+        : width_(other.width_), height_(other.height_), window_(other.window_), channels_(std::move(other.channels_)),
+          sums_(std::move(other.sums_)), weights_(std::move(other.weights_)), rejected_(other.rejected()), overflowed_(other.overflowed())
+    {
+    }
+    Accumulation& operator=(Accumulation other) noexcept
+    {
+        width_ = other.width_;
+        height_ = other.height_;
+        window_ = other.window_;
+        channels_ = std::move(other.channels_);
+        sums_ = std::move(other.sums_);
+        weights_ = std::move(other.weights_);
+        rejected_.store(other.rejected(), std::memory_order_relaxed);
+        overflowed_.store(other.overflowed(), std::memory_order_relaxed);
+        return *this;
+    }
+
+    [[nodiscard]] int width() const noexcept { return width_; }
+    [[nodiscard]] int height() const noexcept { return height_; }
+    [[nodiscard]] const PixelWindow& window() const noexcept { return window_; }
+    [[nodiscard]] const std::vector<std::string>& channels() const noexcept { return channels_; }
+
+    /// Pixel (x, y)'s sums, one per channel; (x, y) in image coordinates, inside the window.
+    [[nodiscard]] std::span<const ExactSum> sums(int x, int y) const noexcept
+    {
+        return {sums_.data() + index(x, y) * channels_.size(), channels_.size()};
+    }
+    [[nodiscard]] std::uint64_t weight(int x, int y) const noexcept { return weights_[index(x, y)]; }
+
+    /// Add sums (one per channel) and a weight to pixel (x, y). A sum that would
+    /// overflow is left out and flagged (overflowed()).
+    void add(int x, int y, std::span<const ExactSum> sums, std::uint64_t weight) noexcept
+    {
+        PRISM_ASSERT(sums.size() == channels_.size());
+        const std::size_t i = index(x, y);
+        for (std::size_t c = 0; c < sums.size(); ++c)
+            if (!sums_[i * channels_.size() + c].add(sums[c])) overflowed_.store(true, std::memory_order_relaxed);
+        if (__builtin_add_overflow(weights_[i], weight, &weights_[i])) overflowed_.store(true, std::memory_order_relaxed);
+    }
+
+    /// Count sample values left out for not being finite (or negative, or past
+    /// ExactSum::limit) where the channel allows no such value.
+    void reject(std::size_t count) noexcept { rejected_.fetch_add(count, std::memory_order_relaxed); }
+    [[nodiscard]] std::size_t rejected() const noexcept { return rejected_.load(std::memory_order_relaxed); }
+    /// Whether some sum or weight would have overflowed (and was left out): the sums
+    /// are then wrong, and image() refuses them.
+    [[nodiscard]] bool overflowed() const noexcept { return overflowed_.load(std::memory_order_relaxed); }
+
+    /// Add a part of the same image: its window inside this one, the same channels.
+    Accumulation& operator+=(const Accumulation& part)
+    {
+        if (part.width_ != width_ || part.height_ != height_)
+            detail::throw_invalid("Accumulation of a ", part.width_, " x ", part.height_, " image added to one of ", width_, " x ", height_);
+        if (part.channels_ != channels_) detail::throw_invalid("Accumulation added to one with other channels");
+        if (!window_.contains(part.window_))
+            detail::throw_invalid("Accumulation window [", part.window_.x0, ", ", part.window_.x1, ") x [", part.window_.y0, ", ", part.window_.y1,
+                                  ") added to one of [", window_.x0, ", ", window_.x1, ") x [", window_.y0, ", ", window_.y1, ")");
+        for (int y = part.window_.y0; y < part.window_.y1; ++y)
+            for (int x = part.window_.x0; x < part.window_.x1; ++x) add(x, y, part.sums(x, y), part.weight(x, y));
+        reject(part.rejected());
+        if (part.overflowed()) overflowed_.store(true, std::memory_order_relaxed);
+        return *this;
+    }
+
+    /// The mean of channels first, first + 1, first + 2 over the window, per pixel:
+    /// sum / weight, 0 where the weight is 0.
+    [[nodiscard]] Film image(std::size_t first = 0) const
+    {
+        if (overflowed()) detail::throw_invalid("Accumulation overflowed (a sum passed 2^63): its image would be wrong");
+        if (first + 3 > channels_.size()) detail::throw_invalid("Accumulation image from channel ", first, " of ", channels_.size());
+        Film film(window_.width(), window_.height());
+        for (int y = window_.y0; y < window_.y1; ++y)
+            for (int x = window_.x0; x < window_.x1; ++x) {
+                const auto s = sums(x, y);
+                const std::uint64_t w = weight(x, y);
+                film.set(x - window_.x0, y - window_.y0,
+                         Rgb<float>(detail::mean(s[first], w), detail::mean(s[first + 1], w), detail::mean(s[first + 2], w)));
+            }
+        film.count_rejected(rejected());
+        return film;
+    }
+
+private:
+    [[nodiscard]] std::size_t index(int x, int y) const noexcept
+    {
+        PRISM_ASSERT(window_.contains(x, y));
+        return std::size_t(y - window_.y0) * std::size_t(window_.width()) + std::size_t(x - window_.x0);
+    }
+
+    int width_;
+    int height_;
+    PixelWindow window_;
+    std::vector<std::string> channels_;
+    std::vector<ExactSum> sums_;
+    std::vector<std::uint64_t> weights_;
+    std::atomic<std::size_t> rejected_{0};
+    std::atomic<bool> overflowed_{false};
 };
 
 } // namespace prism
@@ -7882,6 +8136,232 @@ struct Camera {
 
 } // namespace prism
 
+// ---- prism/render/render.hpp ----
+// render(): camera rays per pixel, tiles on std::thread workers, one RNG stream per
+// sample of each pixel; a crop window or a range of the samples renders a part of the
+// image that adds up with the other parts to the whole, bit for bit.
+
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <concepts>
+#include <condition_variable>
+#include <cstdint>
+#include <cstdio>
+#include <mutex>
+#include <span>
+#include <thread>
+#include <vector>
+
+namespace prism {
+
+/// An integrator: the radiance along a camera ray, drawing random numbers from rng.
+template <class I>
+concept Integrator = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
+    { integrator.radiance(ray, rng) } -> std::same_as<Rgb<typename I::scalar_type>>;
+};
+
+struct RenderConfig {
+    int width = 512;
+    int height = 512;
+    int spp = 1;             ///< samples per pixel; 1 samples the pixel centre
+    unsigned threads = 0;    ///< worker threads; 0 = all hardware threads
+    std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image
+    bool progress = true;    ///< report progress on stderr once a render passes one second
+    int tile_size = 16;      ///< pixels per side of the square work unit
+    /// With spp = 1: the pixel's centre (true), or a uniform point in it (false: a render
+    /// that is one pass of many, as progressive photon mapping's, then anti-aliases over
+    /// its passes).
+    bool single_sample_at_centre = true;
+    /// The pixels to render, inside width x height; empty (the default): all of them. A
+    /// pixel's samples depend only on the seed, the pixel and the sample's number, so a
+    /// crop is the same bits as those pixels of the whole render.
+    PixelWindow crop{};
+    /// The samples of each pixel to take, [first, last) of spp; empty (the default):
+    /// all. Renders of disjoint ranges add up (render_sums, Accumulation) to the render
+    /// of their union, bit for bit.
+    PassRange passes{};
+};
+
+namespace detail {
+
+/// Sub-pixel position of sample s of n: the centre when n = 1 and `centre`; otherwise
+/// jittered in an m x m grid of strata (m = floor(sqrt(n))), any further samples
+/// uniform. The jitter is drawn as float in every precision, so float and double renders
+/// of one seed sample the same positions and differ only by their arithmetic.
+template <Scalar T>
+[[nodiscard]] inline std::pair<T, T> pixel_sample(int s, int n, Pcg32& rng, bool centre = true) noexcept
+{
+    if (n == 1 && centre) return {T(0.5), T(0.5)};
+    const int m = static_cast<int>(std::sqrt(static_cast<double>(n)));
+    const T u = T(rng.uniform<float>()), v = T(rng.uniform<float>());
+    if (s < m * m) return {(T(s % m) + u) / T(m), (T(s / m) + v) / T(m)};
+    return {u, v};
+}
+
+/// The seed of a pixel's sample s: the render's seed moved by a bijective 64-bit hash of
+/// s (MurmurHash3's finaliser, which maps 0 to 0), so each sample starts its pixel's
+/// stream at its own far-apart place and sample s is the same whichever samples are
+/// taken with it.
+[[nodiscard]] constexpr std::uint64_t sample_seed(std::uint64_t seed, std::uint64_t s) noexcept
+{
+    s ^= s >> 33;
+    s *= 0xff51afd7ed558ccdULL;
+    s ^= s >> 33;
+    s *= 0xc4ceb9fe1a85ec53ULL;
+    s ^= s >> 33;
+    return seed + s;
+}
+
+/// The window a config renders, checked against its image.
+[[nodiscard]] inline PixelWindow render_window(const RenderConfig& config)
+{
+    if (config.crop == PixelWindow{}) return PixelWindow::whole(config.width, config.height);
+    const PixelWindow& c = config.crop;
+    if (c.empty() || !PixelWindow::whole(config.width, config.height).contains(c))
+        throw_invalid("RenderConfig crop [", c.x0, ", ", c.x1, ") x [", c.y0, ", ", c.y1, ") must be a non-empty part of the ", config.width, " x ",
+                      config.height, " image");
+    return c;
+}
+
+/// The samples a config takes, checked against its spp.
+[[nodiscard]] inline PassRange render_passes(const RenderConfig& config)
+{
+    if (config.spp < 1) throw_invalid("RenderConfig spp must be >= 1, got ", config.spp);
+    if (config.passes == PassRange{}) return {0, std::uint64_t(config.spp)};
+    if (config.passes.empty() || config.passes.last > std::uint64_t(config.spp))
+        throw_invalid("RenderConfig passes [", config.passes.first, ", ", config.passes.last, ") must be a non-empty range of the spp = ", config.spp,
+                      " samples");
+    return config.passes;
+}
+
+/// Render the config's window and samples, handing each pixel's exact sums to
+/// `store(x, y, sums, samples)` (one thread per pixel; any pixel on any thread).
+template <Integrator I, class Store>
+void render_pixels(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config, Store&& store)
+{
+    using T = typename I::scalar_type;
+    if (config.tile_size < 1) throw_invalid("RenderConfig tile_size must be >= 1, got ", config.tile_size);
+    const PassRange samples = render_passes(config);
+    const CameraRays<T> rays = camera.rays(config.width, config.height);
+    const PixelWindow window = render_window(config);
+
+    // Tile arithmetic in 64 bits: a tile_size of INT_MAX, or 65536^2 one-pixel tiles,
+    // overflows int.
+    const std::int64_t tile = config.tile_size;
+    const std::int64_t tiles_x = (std::int64_t(window.width()) - 1) / tile + 1;
+    const std::int64_t tiles_y = (std::int64_t(window.height()) - 1) / tile + 1;
+    const std::int64_t tile_count = tiles_x * tiles_y;
+    std::atomic<std::int64_t> next_tile{0};
+    std::atomic<std::int64_t> tiles_done{0};
+    std::mutex mutex;
+    std::condition_variable finished;
+    unsigned running = 0;
+
+    const auto work = [&] {
+        for (std::int64_t t = next_tile++; t < tile_count; t = next_tile++) {
+            const auto x0 = static_cast<int>(window.x0 + (t % tiles_x) * tile), y0 = static_cast<int>(window.y0 + (t / tiles_x) * tile);
+            const auto x1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(x0) + tile, window.x1));
+            const auto y1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(y0) + tile, window.y1));
+            for (int y = y0; y < y1; ++y)
+                for (int x = x0; x < x1; ++x) {
+                    const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
+                    std::array<ExactSum, 3> sum{};
+                    std::size_t rejected = 0;
+                    for (std::uint64_t s = samples.first; s < samples.last; ++s) {
+                        Pcg32 rng(sample_seed(config.seed, s), pixel);
+                        const auto [dx, dy] = pixel_sample<T>(int(s), config.spp, rng, config.single_sample_at_centre);
+                        const Rgb<T> radiance = integrator.radiance(rays.ray(T(x) + dx, T(y) + dy), rng);
+                        for (int c = 0; c < 3; ++c) {
+                            // Radiance is never negative: NaN, Inf, < 0 or past ExactSum's
+                            // limit are counted and add 0.
+                            const double v = double(radiance[c]);
+                            if (v >= 0.0 && ExactSum::takes(v)) (void)sum[std::size_t(c)].add(ExactSum::of(v));
+                            else ++rejected;
+                        }
+                    }
+                    store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
+                }
+            ++tiles_done;
+        }
+        const std::lock_guard lock(mutex);
+        if (--running == 0) finished.notify_all();
+    };
+
+    unsigned threads = worker_count(config.threads);
+    threads = static_cast<unsigned>(std::min<std::int64_t>(threads, tile_count));
+    running = threads;
+    std::vector<std::thread> workers;
+    workers.reserve(threads);
+    for (unsigned i = 0; i < threads; ++i) workers.emplace_back(work);
+
+    // Report progress while waiting, once the render has taken more than a second.
+    const auto start = std::chrono::steady_clock::now();
+    bool reported = false;
+    {
+        std::unique_lock lock(mutex);
+        while (!finished.wait_for(lock, std::chrono::milliseconds(250), [&] { return running == 0; })) {
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (config.progress && seconds > 1.0) {
+                std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", static_cast<int>(100 * tiles_done.load() / tile_count), seconds);
+                reported = true;
+            }
+        }
+    }
+    for (auto& worker : workers) worker.join();
+    if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
+}
+
+} // namespace detail
+
+/// Render a part of an image into `sums`: the config's crop window (which `sums`'
+/// window must contain) and samples, each pixel's sum and sample count added to those
+/// there. The parts of one render, added in any order, give the same bits.
+template <Integrator I>
+void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
+{
+    const PixelWindow window = detail::render_window(config);
+    if (sums.width() != config.width || sums.height() != config.height || !sums.window().contains(window))
+        detail::throw_invalid("render_into: the Accumulation (", sums.width(), " x ", sums.height(), ", window [", sums.window().x0, ", ",
+                              sums.window().x1, ") x [", sums.window().y0, ", ", sums.window().y1, ")) does not hold the render's window");
+    if (sums.channels().size() != 3) detail::throw_invalid("render_into renders R, G, B only, the Accumulation has ", sums.channels().size(), " channels");
+    detail::render_pixels(camera, integrator, config, [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+        sums.add(x, y, sum, weight);
+        if (rejected != 0) sums.reject(rejected);
+    });
+}
+
+/// A part of an image as exact sums (its crop window, its samples): add the parts of a
+/// render split across machines, then take image() for the whole render's bits.
+template <Integrator I>
+[[nodiscard]] Accumulation render_sums(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
+{
+    Accumulation sums(config.width, config.height, detail::render_window(config));
+    render_into(sums, camera, integrator, config);
+    return sums;
+}
+
+/// Render an image: the config's crop window (the whole image by default), each pixel
+/// the mean of its samples. The same scene, seed and spp give the same bits for any
+/// thread count, crop or split of the samples: every sample draws from its own random
+/// stream, and a pixel's samples are summed exactly (Accumulation).
+template <Integrator I>
+[[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
+{
+    const PixelWindow window = detail::render_window(config);
+    Film film(window.width(), window.height());
+    detail::render_pixels(camera, integrator, config, [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+        film.set(x - window.x0, y - window.y0, Rgb<float>(detail::mean(sum[0], weight), detail::mean(sum[1], weight), detail::mean(sum[2], weight)));
+        if (rejected != 0) film.count_rejected(rejected);
+    });
+    return film;
+}
+
+} // namespace prism
+
 // ---- prism/integrator/light_tracer.hpp ----
 // light_trace: the light-tracing half of prism's reference estimator, for the paths a
 // path tracer cannot find: those whose vertex next to the light is specular (a point
@@ -7899,12 +8379,15 @@ struct Camera {
 // Paths whose first vertex is diffuse are the path tracer's (integrator/path_tracer.hpp),
 // so the two add up without counting any path twice.
 //
-// Deterministic: paths are taken in fixed blocks, each block splats into its own
-// buffer, and the buffers are added in block order, so the image is the same bits for
-// any thread count.
+// Deterministic: each thread splats into its own exact sums (render/accumulation.hpp),
+// whose addition has no rounding, so the image is the same bits for any thread count,
+// and renders of disjoint ranges of the paths (or crops of the image) add up to the
+// whole.
 
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <thread>
 #include <vector>
@@ -7920,19 +8403,32 @@ struct LightTracerConfig {
     std::uint64_t seed = 0;
     unsigned threads = 0;        ///< 0 = all hardware threads
     int dispersion_bands = SpectralBands<float>::max_count; ///< as PhotonTracerConfig's
+    /// The pixels to splat into; empty (the default): all. Every path is still traced:
+    /// a path's end cannot be known before it is walked.
+    PixelWindow crop{};
+    /// The paths to trace, [first, last) of `paths`; empty (the default): all of them.
+    PassRange traced{};
 };
 
-/// The light tracer's image of `scene` through `camera`: radiance per pixel from the
-/// paths L S+ (S|D)* D E. Add it to a PathTracer render of the same camera and size for
-/// the reference.
+/// Add the light tracer's splats of `scene` through `camera` (radiance from the paths
+/// L S+ (S|D)* D E), times `scale`, to the R, G, B sums of `sums`, which must hold the
+/// config's crop window; weights are left as they are. The reference estimator adds
+/// them to a PathTracer's samples (scale: its samples per pixel).
 template <class SceneT, class Air = StraightAir>
-[[nodiscard]] Film light_trace(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera, const LightTracerConfig& config,
-                               const Air& air = {})
+void light_trace_into(Accumulation& sums, const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera, const LightTracerConfig& config,
+                      double scale = 1.0, const Air& air = {})
 {
     using T = typename SceneT::scalar_type;
     if (config.max_diffuse_bounces < 0)
         detail::throw_invalid("LightTracerConfig max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
+    if (!(scale > 0.0 && std::isfinite(scale))) detail::throw_invalid("light_trace_into scale must be finite and > 0, got ", scale);
     const CameraRays<T> rays = camera.rays(config.width, config.height);
+    const PixelWindow window = detail::render_window({.width = config.width, .height = config.height, .crop = config.crop});
+    if (sums.width() != config.width || sums.height() != config.height || !sums.window().contains(window))
+        detail::throw_invalid("light_trace_into: the Accumulation does not hold the LightTracerConfig's window");
+    const PassRange traced = config.traced == PassRange{} ? PassRange{0, config.paths} : config.traced;
+    if (traced.empty() || traced.last > config.paths)
+        detail::throw_invalid("LightTracerConfig traced [", traced.first, ", ", traced.last, ") must be a non-empty range of the ", config.paths, " paths");
     const detail::PhotonTracer<SceneT, Air> tracer(scene,
                                                    {.global_photons = 0,
                                                     .caustic_photons = config.paths,
@@ -7942,12 +8438,10 @@ template <class SceneT, class Air = StraightAir>
                                                     .threads = config.threads,
                                                     .dispersion_bands = config.dispersion_bands},
                                                    air);
-    const std::size_t width = std::size_t(config.width), pixels = width * std::size_t(config.height);
     const T area = rays.pixel_area();
 
-    // One block of paths splatted into `out` (zeroed first).
-    const auto trace_block = [&](std::size_t first, std::size_t last, std::vector<Rgb<float>>& out) {
-        std::fill(out.begin(), out.end(), Rgb<float>(0.0f));
+    // A block of paths splatted into `out`.
+    const auto trace_block = [&](std::uint64_t first, std::uint64_t last, Accumulation& out) {
         tracer.walk_aimed(first, last, config.paths, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
             // A first hit on a diffuse lobe is the path tracer's; where the material also
             // has a delta lobe, the scattering here decides whose the path is.
@@ -7956,7 +8450,7 @@ template <class SceneT, class Air = StraightAir>
             const bool go_on = at.diffuse_bounces < config.max_diffuse_bounces;
             const Crossing<T>& c = at.crossing();
             const auto seen = rays.project(c.point);
-            if (!seen || !(seen->x >= T(0) && seen->x < T(config.width) && seen->y >= T(0) && seen->y < T(config.height))) return go_on;
+            if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return go_on;
             const Vec3<T> to_camera = (rays.origin - c.point) / seen->distance;
             const T cos_x = dot(c.facing_normal(), to_camera);
             if (!(cos_x > T(0))) return go_on; // the camera sees the other side
@@ -7970,31 +8464,54 @@ template <class SceneT, class Air = StraightAir>
                 importance *= shading_cosine(c.facing_shading(), c.facing_normal(), -at.direction) / -dot(at.direction, c.facing_normal());
                 if (!(importance < infinity<T>)) return go_on;
             }
-            const std::size_t pixel = std::size_t(seen->y) * width + std::size_t(seen->x);
-            out[pixel] += Rgb<float>(power * diffuse_response(material, c).brdf() * v * importance);
+            const Rgb<float> splat(power * diffuse_response(material, c).brdf() * v * importance);
+            std::array<ExactSum, 3> add{};
+            for (int k = 0; k < 3; ++k) {
+                const double value = double(splat[k]) * scale;
+                if (value >= 0.0 && ExactSum::takes(value)) add[std::size_t(k)] = ExactSum::of(value);
+                else out.reject(1);
+            }
+            out.add(int(seen->x), int(seen->y), add, 0);
             return go_on;
         });
     };
 
-    constexpr std::size_t block = 16384;
-    const std::size_t blocks = (config.paths + block - 1) / block;
+    // Blocks of paths dealt to threads as they ask; each thread's sums are exact, so
+    // which thread took which block changes no bit.
+    constexpr std::uint64_t block = 16384;
+    const std::uint64_t blocks = (traced.count() + block - 1) / block;
     unsigned threads = detail::worker_count(config.threads);
-    threads = unsigned(std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(blocks, 1)));
-    std::vector<std::vector<Rgb<float>>> buffers(threads, std::vector<Rgb<float>>(pixels));
-    std::vector<Rgb<double>> sum(pixels, Rgb<double>(0.0));
-    for (std::size_t wave = 0; wave < blocks; wave += threads) {
-        const std::size_t count = std::min<std::size_t>(threads, blocks - wave);
-        const auto run = [&](std::size_t k) { trace_block((wave + k) * block, std::min(config.paths, (wave + k + 1) * block), buffers[k]); };
-        std::vector<std::thread> workers;
-        for (std::size_t k = 1; k < count; ++k) workers.emplace_back(run, k);
-        run(0);
-        for (auto& worker : workers) worker.join();
-        for (std::size_t k = 0; k < count; ++k) // in block order, whatever the thread count
-            for (std::size_t i = 0; i < pixels; ++i) sum[i] += Rgb<double>(buffers[k][i]);
-    }
-    Film film(config.width, config.height);
-    for (std::size_t i = 0; i < pixels; ++i) film.set(int(i % width), int(i / width), sum[i]);
-    return film;
+    threads = unsigned(std::clamp<std::uint64_t>(threads, 1, blocks));
+    std::vector<Accumulation> buffers;
+    buffers.reserve(threads);
+    for (unsigned k = 0; k < threads; ++k) buffers.emplace_back(config.width, config.height, window);
+    std::atomic<std::uint64_t> next{0};
+    const auto run = [&](unsigned k) {
+        for (std::uint64_t b = next++; b < blocks; b = next++)
+            trace_block(traced.first + b * block, std::min(traced.last, traced.first + (b + 1) * block), buffers[k]);
+    };
+    std::vector<std::thread> workers;
+    for (unsigned k = 1; k < threads; ++k) workers.emplace_back(run, k);
+    run(0);
+    for (auto& worker : workers) worker.join();
+    for (const Accumulation& buffer : buffers) sums += buffer;
+}
+
+/// The light tracer's image of `scene` through `camera` (the config's crop window):
+/// radiance per pixel from the paths L S+ (S|D)* D E. Add it to a PathTracer render of
+/// the same camera and size for the reference.
+template <class SceneT, class Air = StraightAir>
+[[nodiscard]] Film light_trace(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera, const LightTracerConfig& config,
+                               const Air& air = {})
+{
+    (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
+    Accumulation sums(config.width, config.height, detail::render_window({.width = config.width, .height = config.height, .crop = config.crop}));
+    light_trace_into(sums, scene, camera, config, 1.0, air);
+    const PixelWindow& w = sums.window();
+    const std::array<ExactSum, 3> none{};
+    for (int y = w.y0; y < w.y1; ++y)
+        for (int x = w.x0; x < w.x1; ++x) sums.add(x, y, none, 1); // the splats are the pixel's value, not a sum of samples
+    return sums.image();
 }
 
 } // namespace prism
@@ -8084,134 +8601,6 @@ private:
     SpectralBands<T> bands_;
     Air air_;
 };
-
-} // namespace prism
-
-// ---- prism/render/render.hpp ----
-// render(): camera rays per pixel, tiles on std::thread workers, one RNG stream per pixel.
-
-
-#include <algorithm>
-#include <atomic>
-#include <chrono>
-#include <cmath>
-#include <concepts>
-#include <condition_variable>
-#include <cstdint>
-#include <cstdio>
-#include <mutex>
-#include <thread>
-#include <vector>
-
-namespace prism {
-
-/// An integrator: the radiance along a camera ray, drawing random numbers from rng.
-template <class I>
-concept Integrator = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
-    { integrator.radiance(ray, rng) } -> std::same_as<Rgb<typename I::scalar_type>>;
-};
-
-struct RenderConfig {
-    int width = 512;
-    int height = 512;
-    int spp = 1;             ///< samples per pixel; 1 samples the pixel centre
-    unsigned threads = 0;    ///< worker threads; 0 = all hardware threads
-    std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image
-    bool progress = true;    ///< report progress on stderr once a render passes one second
-    int tile_size = 16;      ///< pixels per side of the square work unit
-    /// With spp = 1: the pixel's centre (true), or a uniform point in it (false: a render
-    /// that is one pass of many, as progressive photon mapping's, then anti-aliases over
-    /// its passes).
-    bool single_sample_at_centre = true;
-};
-
-namespace detail {
-
-/// Sub-pixel position of sample s of n: the centre when n = 1 and `centre`; otherwise
-/// jittered in an m x m grid of strata (m = floor(sqrt(n))), any further samples
-/// uniform. The jitter is drawn as float in every precision, so float and double renders
-/// of one seed sample the same positions and differ only by their arithmetic.
-template <Scalar T>
-[[nodiscard]] inline std::pair<T, T> pixel_sample(int s, int n, Pcg32& rng, bool centre = true) noexcept
-{
-    if (n == 1 && centre) return {T(0.5), T(0.5)};
-    const int m = static_cast<int>(std::sqrt(static_cast<double>(n)));
-    const T u = T(rng.uniform<float>()), v = T(rng.uniform<float>());
-    if (s < m * m) return {(T(s % m) + u) / T(m), (T(s / m) + v) / T(m)};
-    return {u, v};
-}
-
-} // namespace detail
-
-/// Render an image. The same scene, seed and spp give the same bits for any thread
-/// count: every pixel draws from its own random stream and is written by one thread.
-template <Integrator I>
-[[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
-{
-    using T = typename I::scalar_type;
-    if (config.spp < 1) detail::throw_invalid("RenderConfig spp must be >= 1, got ", config.spp);
-    if (config.tile_size < 1) detail::throw_invalid("RenderConfig tile_size must be >= 1, got ", config.tile_size);
-    const CameraRays<T> rays = camera.rays(config.width, config.height);
-    Film film(config.width, config.height);
-
-    // Tile arithmetic in 64 bits: a tile_size of INT_MAX, or 65536^2 one-pixel tiles,
-    // overflows int.
-    const std::int64_t tile = config.tile_size;
-    const std::int64_t tiles_x = (std::int64_t(config.width) - 1) / tile + 1;
-    const std::int64_t tiles_y = (std::int64_t(config.height) - 1) / tile + 1;
-    const std::int64_t tile_count = tiles_x * tiles_y;
-    std::atomic<std::int64_t> next_tile{0};
-    std::atomic<std::int64_t> tiles_done{0};
-    std::mutex mutex;
-    std::condition_variable finished;
-    unsigned running = 0;
-
-    const auto work = [&] {
-        for (std::int64_t t = next_tile++; t < tile_count; t = next_tile++) {
-            const auto x0 = static_cast<int>((t % tiles_x) * tile), y0 = static_cast<int>((t / tiles_x) * tile);
-            const auto x1 = static_cast<int>(std::min<std::int64_t>(x0 + tile, config.width));
-            const auto y1 = static_cast<int>(std::min<std::int64_t>(y0 + tile, config.height));
-            for (int y = y0; y < y1; ++y)
-                for (int x = x0; x < x1; ++x) {
-                    const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + x;
-                    Pcg32 rng(config.seed, pixel);
-                    Rgb<T> sum{T(0)};
-                    for (int s = 0; s < config.spp; ++s) {
-                        const auto [dx, dy] = detail::pixel_sample<T>(s, config.spp, rng, config.single_sample_at_centre);
-                        sum += integrator.radiance(rays.ray(T(x) + dx, T(y) + dy), rng);
-                    }
-                    film.set(x, y, sum / T(config.spp));
-                }
-            ++tiles_done;
-        }
-        const std::lock_guard lock(mutex);
-        if (--running == 0) finished.notify_all();
-    };
-
-    unsigned threads = detail::worker_count(config.threads);
-    threads = static_cast<unsigned>(std::min<std::int64_t>(threads, tile_count));
-    running = threads;
-    std::vector<std::thread> workers;
-    workers.reserve(threads);
-    for (unsigned i = 0; i < threads; ++i) workers.emplace_back(work);
-
-    // Report progress while waiting, once the render has taken more than a second.
-    const auto start = std::chrono::steady_clock::now();
-    bool reported = false;
-    {
-        std::unique_lock lock(mutex);
-        while (!finished.wait_for(lock, std::chrono::milliseconds(250), [&] { return running == 0; })) {
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (config.progress && seconds > 1.0) {
-                std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", static_cast<int>(100 * tiles_done.load() / tile_count), seconds);
-                reported = true;
-            }
-        }
-    }
-    for (auto& worker : workers) worker.join();
-    if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
-    return film;
-}
 
 } // namespace prism
 
@@ -8616,35 +9005,25 @@ struct ProgressiveConfig {
     std::size_t first_pass = 0; ///< passes [first_pass, first_pass + passes): one share of a render split across machines
 };
 
-/// What a run of passes made: their images' sum, kept in double so that the sums of
-/// shares of one render (first_pass) add up to the whole render's bit for bit (a
-/// double holds the sum of a few million floats exactly).
+/// What a run of passes made: the exact sums of their samples (Accumulation), so that
+/// the sums of shares of one render (first_pass) add up to the whole render's, bit for
+/// bit, in any order.
 struct ProgressiveResult {
-    int width{}, height{};
-    std::vector<Rgb<double>> sum; ///< per pixel, row by row from the top
-    std::size_t passes{};         ///< how many were rendered
+    Accumulation sums;    ///< every pass's samples; a pixel's weight is passes x spp
+    std::size_t passes{}; ///< how many were rendered
     double seconds{};
 
     /// Add another share of the same render.
     ProgressiveResult& operator+=(const ProgressiveResult& other)
     {
-        if (other.width != width || other.height != height)
-            detail::throw_invalid("ProgressiveResult of ", other.width, " x ", other.height, " added to one of ", width, " x ", height);
-        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += other.sum[i];
+        sums += other.sums;
         passes += other.passes;
         seconds += other.seconds;
         return *this;
     }
 
     /// The mean of the passes' images.
-    [[nodiscard]] Film image() const
-    {
-        Film mean(width, height);
-        const double n = double(std::max<std::size_t>(passes, 1));
-        for (int y = 0; y < height; ++y)
-            for (int x = 0; x < width; ++x) mean.set(x, y, sum[std::size_t(y) * std::size_t(width) + std::size_t(x)] / n);
-        return mean;
-    }
+    [[nodiscard]] Film image() const { return sums.image(); }
 };
 
 /// Render `scene` by progressive photon mapping: `render`'s size, samples per pixel per
@@ -8661,11 +9040,13 @@ template <class SceneT, class Air = StraightAir>
     if (!(config.seconds >= 0.0 && std::isfinite(config.seconds))) detail::throw_invalid("ProgressiveConfig seconds must be finite and >= 0, got ", config.seconds);
     if (config.passes == 0 && config.seconds == 0.0) detail::throw_invalid("ProgressiveConfig needs passes > 0 or seconds > 0");
     (void)camera.rays(render_config.width, render_config.height); // validates both before the first pass
+    if (render_config.passes != PassRange{})
+        detail::throw_invalid("render_progressive takes its passes from ProgressiveConfig (first_pass, passes), not RenderConfig passes [",
+                              render_config.passes.first, ", ", render_config.passes.last, ")");
 
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-    ProgressiveResult result{render_config.width, render_config.height,
-                             std::vector<Rgb<double>>(std::size_t(render_config.width) * std::size_t(render_config.height), Rgb<double>(0.0)), 0, 0.0};
+    ProgressiveResult result{Accumulation(render_config.width, render_config.height, detail::render_window(render_config)), 0, 0.0};
     for (std::size_t pass = config.first_pass; config.passes == 0 || pass < config.first_pass + config.passes; ++pass) {
         typename PhotonMapper<SceneT, Air>::Config mapper_config = config.pass;
         mapper_config.caustic.radius = float(progressive_radius(config.pass.caustic.radius, config.alpha, pass));
@@ -8675,11 +9056,10 @@ template <class SceneT, class Air = StraightAir>
         pass_render.seed = render_config.seed + 0x9e3779b97f4a7c15ULL * (pass + 1); // a fresh sample in every pixel
         pass_render.progress = false;
         pass_render.single_sample_at_centre = false; // anti-aliased over the passes
-        const Film image = render(camera, mapper, pass_render);
-        for (std::size_t i = 0; i < result.sum.size(); ++i) result.sum[i] += Rgb<double>(image.pixels()[i]);
+        render_into(result.sums, camera, mapper, pass_render);
         ++result.passes;
         if (render_config.progress)
-            std::fprintf(stderr, "\rprism: progressive pass %zu, r = %.4g / %.4g (%.1f s)", result.passes, double(mapper_config.caustic.radius),
+            std::fprintf(stderr, "\rprism: progressive pass %zu, r = %.4g / %.4g (%.1f s)", pass + 1, double(mapper_config.caustic.radius),
                          double(mapper_config.global.radius), elapsed());
         if (config.seconds > 0.0 && elapsed() >= config.seconds) break;
     }

@@ -10,7 +10,7 @@ program=$1
 shift
 stderr=$("$program" --out "$out" "$@" 2>&1 >/dev/null) # a later --out in ARGS overrides
 status=$?
-images=$(find "$out" -name '*.png' -o -name '*.pfm' | wc -l)
+images=$(find "$out" -name '*.png' -o -name '*.pfm' -o -name '*.exr' | wc -l)
 rm -rf "$out"
 lines=$(printf '%s\n' "$stderr" | grep -c .)
 echo "exit $status, $lines line(s) on stderr, $images image(s): $stderr"

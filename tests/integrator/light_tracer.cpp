@@ -6,6 +6,8 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+
 #include <cmath>
 
 using namespace prism;
@@ -42,7 +44,7 @@ TEST_CASE("light tracing: a mirror's image of a point light on a floor, L S D E,
     const Camera<float> camera{.position = {1.5f, 3, 0}, .look_at = {1.5f, 0, 0}, .up = {0, 0, -1}, .fov = 40};
     constexpr int size = 16;
     const Film traced = light_trace(scene, camera, {.width = size, .height = size, .paths = 8000000, .seed = 3, .threads = 2});
-    const Film pathed = render(camera, PathTracer(scene), {.width = size, .height = size, .spp = 4, .threads = 2, .progress = false});
+    const Film pathed = render(camera, PathTracer(scene), {.width = size, .height = size, .spp = 16, .threads = 2, .progress = false});
     const CameraRays<float> rays = camera.rays(size, size);
     double mirror_sum = 0, mirror_expected = 0, worst_direct = 0, squares = 0;
     for (int y = 0; y < size; ++y)
@@ -64,7 +66,7 @@ TEST_CASE("light tracing: a mirror's image of a point light on a floor, L S D E,
     // Noise alone: 4.0 % per pixel at 2 million paths, 1.9 % at 8 million.
     MESSAGE("relative RMS per pixel ", std::sqrt(squares / (size * size)));
     CHECK(std::sqrt(squares / (size * size)) < 0.025);
-    CHECK(worst_direct < 0.02); // the light's own term, by shadow rays (4 samples over the pixel)
+    CHECK(worst_direct < 0.02); // the light's own term, by shadow rays (16 samples over the pixel)
 }
 
 TEST_CASE("light tracing with no diffuse bounce keeps L S D E alone: a ceiling added, the floor still reads the mirror image's closed form")
@@ -112,4 +114,45 @@ TEST_CASE("the light tracer's image is the same bits for any thread count, and b
     LightTracerConfig bad = config;
     bad.width = 0;
     CHECK_THROWS_WITH_AS((void)light_trace(scene, camera, bad), doctest::Contains("image size must be positive"), std::invalid_argument);
+    bad = config;
+    bad.traced = {39000, 40001};
+    CHECK_THROWS_WITH_AS((void)light_trace(scene, camera, bad), doctest::Contains("traced [39000, 40001) must be a non-empty range of the 40000 paths"),
+                         std::invalid_argument);
+    bad = config;
+    bad.crop = {0, 0, 13, 9};
+    CHECK_THROWS_WITH_AS((void)light_trace(scene, camera, bad), doctest::Contains("crop [0, 13) x [0, 9)"), std::invalid_argument);
+}
+
+TEST_CASE("the light tracer's ranges of paths and crops add up to the whole image, bit for bit")
+{
+    const auto scene = mirror_scene();
+    const Camera<float> camera{.position = {1.5f, 3, 0}, .look_at = {1.5f, 0, 0}, .up = {0, 0, -1}, .fov = 40};
+    const LightTracerConfig config{.width = 12, .height = 9, .paths = 100000, .seed = 5, .threads = 2};
+    Accumulation whole(12, 9, PixelWindow::whole(12, 9));
+    light_trace_into(whole, scene, camera, config);
+    // Paths [0, 30000) and [30000, 100000), the second in two crops.
+    Accumulation parts(12, 9, PixelWindow::whole(12, 9));
+    LightTracerConfig part = config;
+    part.traced = {30000, 100000};
+    part.crop = {0, 0, 12, 4};
+    light_trace_into(parts, scene, camera, part);
+    part.crop = {0, 4, 12, 9};
+    light_trace_into(parts, scene, camera, part);
+    part.crop = {};
+    part.traced = {0, 30000};
+    part.threads = 1;
+    light_trace_into(parts, scene, camera, part);
+    int lit = 0;
+    for (int y = 0; y < 9; ++y)
+        for (int x = 0; x < 12; ++x) {
+            REQUIRE(std::equal(parts.sums(x, y).begin(), parts.sums(x, y).end(), whole.sums(x, y).begin()));
+            lit += whole.sums(x, y)[0].bits() > 0;
+        }
+    CHECK(lit > 20); // the test sees the caustic
+    // A crop of light_trace's image is those pixels of the whole image.
+    part = config;
+    part.crop = {3, 2, 9, 7};
+    const Film crop = light_trace(scene, camera, part), image = light_trace(scene, camera, config);
+    for (int y = 2; y < 7; ++y)
+        for (int x = 3; x < 9; ++x) CHECK(crop.at(x - 3, y - 2) == image.at(x, y));
 }

@@ -90,3 +90,109 @@ TEST_CASE("a tile as large as int renders the same image")
     for (const auto& p : whole.pixels()) sum += p.x + p.y + p.z;
     CHECK(sum > 0);
 }
+
+namespace {
+
+bool same_bits(const Film& a, const Film& b)
+{
+    return a.width() == b.width() && a.height() == b.height() &&
+           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixels().size() * sizeof(a.pixels()[0])) == 0;
+}
+
+/// The window w of film.
+Film cut(const Film& film, PixelWindow w)
+{
+    Film part(w.width(), w.height());
+    for (int y = w.y0; y < w.y1; ++y)
+        for (int x = w.x0; x < w.x1; ++x) part.set(x - w.x0, y - w.y0, film.at(x, y));
+    return part;
+}
+
+} // namespace
+
+TEST_CASE("a crop window is the same bits as those pixels of the whole render")
+{
+    const auto scene = busy_scene();
+    const Whitted integrator(scene);
+    const Camera<float> camera{.position = {0, 2, 6}, .look_at = {0, 1, 0}, .fov = 50};
+    RenderConfig config{.width = 61, .height = 43, .spp = 3, .threads = 2, .seed = 9, .progress = false, .tile_size = 8};
+    const Film whole = render(camera, integrator, config);
+    for (const PixelWindow w : {PixelWindow{0, 0, 61, 43}, PixelWindow{0, 0, 1, 1}, PixelWindow{60, 42, 61, 43}, PixelWindow{13, 7, 50, 31},
+                                PixelWindow{5, 0, 6, 43}, PixelWindow{0, 20, 61, 21}}) {
+        config.crop = w;
+        for (unsigned threads : {1u, 3u}) {
+            config.threads = threads;
+            const Film crop = render(camera, integrator, config);
+            CHECK(crop.width() == w.width());
+            CHECK(crop.height() == w.height());
+            CHECK(same_bits(crop, cut(whole, w)));
+        }
+    }
+}
+
+TEST_CASE("renders of disjoint sample ranges and crops add up to the whole render, bit for bit")
+{
+    const auto scene = busy_scene();
+    const Whitted integrator(scene);
+    const Camera<float> camera{.position = {0, 2, 6}, .look_at = {0, 1, 0}, .fov = 50};
+    const RenderConfig config{.width = 40, .height = 30, .spp = 7, .threads = 2, .seed = 5, .progress = false};
+    const Film whole = render(camera, integrator, config);
+    // Samples [0, 2), [2, 3) and [3, 7), on other thread counts, the last in two crops,
+    // added in an order of their own.
+    Accumulation sums(40, 30, PixelWindow::whole(40, 30));
+    RenderConfig part = config;
+    part.passes = {3, 7};
+    part.threads = 1;
+    part.crop = {0, 0, 40, 11};
+    sums += render_sums(camera, integrator, part);
+    part.crop = {0, 11, 40, 30};
+    sums += render_sums(camera, integrator, part);
+    part.crop = {};
+    part.passes = {0, 2};
+    part.threads = 3;
+    render_into(sums, camera, integrator, part);
+    part.passes = {2, 3};
+    sums += render_sums(camera, integrator, part);
+    CHECK(sums.weight(0, 0) == 7);
+    CHECK(sums.weight(39, 29) == 7);
+    CHECK(same_bits(sums.image(), whole));
+    CHECK(same_bits(render_sums(camera, integrator, config).image(), whole));
+
+    // Sample s is the same whichever samples go with it: one sample alone is the whole
+    // render at spp = 1 only where the render's samples are the same, so compare the
+    // sums of [0, 1) with [0, 1) taken in a render of [0, 4).
+    part = config;
+    part.passes = {1, 2};
+    const Accumulation second = render_sums(camera, integrator, part);
+    part.passes = {0, 2};
+    Accumulation both = render_sums(camera, integrator, part);
+    part.passes = {0, 1};
+    Accumulation first = render_sums(camera, integrator, part);
+    first += second;
+    for (int y = 0; y < 30; ++y)
+        for (int x = 0; x < 40; ++x) REQUIRE(std::equal(first.sums(x, y).begin(), first.sums(x, y).end(), both.sums(x, y).begin()));
+}
+
+TEST_CASE("a crop or a sample range outside the image is refused with its values")
+{
+    const auto scene = busy_scene();
+    const Whitted integrator(scene);
+    const Camera<float> camera{};
+    const RenderConfig base{.width = 8, .height = 6, .spp = 4, .progress = false};
+    RenderConfig bad = base;
+    bad.crop = {0, 0, 9, 6};
+    CHECK_THROWS_WITH_AS((void)render(camera, integrator, bad), doctest::Contains("crop [0, 9) x [0, 6) must be a non-empty part of the 8 x 6 image"),
+                         std::invalid_argument);
+    bad.crop = {3, 2, 3, 5};
+    CHECK_THROWS_WITH_AS((void)render(camera, integrator, bad), doctest::Contains("crop [3, 3) x [2, 5)"), std::invalid_argument);
+    bad.crop = {-1, 0, 4, 4};
+    CHECK_THROWS_AS((void)render(camera, integrator, bad), std::invalid_argument);
+    bad = base;
+    bad.passes = {2, 5};
+    CHECK_THROWS_WITH_AS((void)render(camera, integrator, bad), doctest::Contains("passes [2, 5) must be a non-empty range of the spp = 4 samples"),
+                         std::invalid_argument);
+    bad.passes = {3, 3};
+    CHECK_THROWS_AS((void)render_sums(camera, integrator, bad), std::invalid_argument);
+    Accumulation small(8, 6, {0, 0, 4, 6});
+    CHECK_THROWS_WITH_AS(render_into(small, camera, integrator, base), doctest::Contains("does not hold the render's window"), std::invalid_argument);
+}

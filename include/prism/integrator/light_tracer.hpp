@@ -15,9 +15,10 @@
 // Paths whose first vertex is diffuse are the path tracer's (integrator/path_tracer.hpp),
 // so the two add up without counting any path twice.
 //
-// Deterministic: paths are taken in fixed blocks, each block splats into its own
-// buffer, and the buffers are added in block order, so the image is the same bits for
-// any thread count.
+// Deterministic: each thread splats into its own exact sums (render/accumulation.hpp),
+// whose addition has no rounding, so the image is the same bits for any thread count,
+// and renders of disjoint ranges of the paths (or crops of the image) add up to the
+// whole.
 #pragma once
 
 #include <prism/core/check.hpp>
@@ -25,11 +26,15 @@
 #include <prism/core/parallel.hpp>
 #include <prism/photon/photon_tracer.hpp>
 #include <prism/photon/random_walk.hpp>
+#include <prism/render/accumulation.hpp>
 #include <prism/render/film.hpp>
+#include <prism/render/render.hpp>
 #include <prism/scene/camera.hpp>
 #include <prism/scene/scene.hpp>
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <thread>
 #include <vector>
@@ -45,19 +50,32 @@ struct LightTracerConfig {
     std::uint64_t seed = 0;
     unsigned threads = 0;        ///< 0 = all hardware threads
     int dispersion_bands = SpectralBands<float>::max_count; ///< as PhotonTracerConfig's
+    /// The pixels to splat into; empty (the default): all. Every path is still traced:
+    /// a path's end cannot be known before it is walked.
+    PixelWindow crop{};
+    /// The paths to trace, [first, last) of `paths`; empty (the default): all of them.
+    PassRange traced{};
 };
 
-/// The light tracer's image of `scene` through `camera`: radiance per pixel from the
-/// paths L S+ (S|D)* D E. Add it to a PathTracer render of the same camera and size for
-/// the reference.
+/// Add the light tracer's splats of `scene` through `camera` (radiance from the paths
+/// L S+ (S|D)* D E), times `scale`, to the R, G, B sums of `sums`, which must hold the
+/// config's crop window; weights are left as they are. The reference estimator adds
+/// them to a PathTracer's samples (scale: its samples per pixel).
 template <class SceneT, class Air = StraightAir>
-[[nodiscard]] Film light_trace(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera, const LightTracerConfig& config,
-                               const Air& air = {})
+void light_trace_into(Accumulation& sums, const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera, const LightTracerConfig& config,
+                      double scale = 1.0, const Air& air = {})
 {
     using T = typename SceneT::scalar_type;
     if (config.max_diffuse_bounces < 0)
         detail::throw_invalid("LightTracerConfig max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
+    if (!(scale > 0.0 && std::isfinite(scale))) detail::throw_invalid("light_trace_into scale must be finite and > 0, got ", scale);
     const CameraRays<T> rays = camera.rays(config.width, config.height);
+    const PixelWindow window = detail::render_window({.width = config.width, .height = config.height, .crop = config.crop});
+    if (sums.width() != config.width || sums.height() != config.height || !sums.window().contains(window))
+        detail::throw_invalid("light_trace_into: the Accumulation does not hold the LightTracerConfig's window");
+    const PassRange traced = config.traced == PassRange{} ? PassRange{0, config.paths} : config.traced;
+    if (traced.empty() || traced.last > config.paths)
+        detail::throw_invalid("LightTracerConfig traced [", traced.first, ", ", traced.last, ") must be a non-empty range of the ", config.paths, " paths");
     const detail::PhotonTracer<SceneT, Air> tracer(scene,
                                                    {.global_photons = 0,
                                                     .caustic_photons = config.paths,
@@ -67,12 +85,10 @@ template <class SceneT, class Air = StraightAir>
                                                     .threads = config.threads,
                                                     .dispersion_bands = config.dispersion_bands},
                                                    air);
-    const std::size_t width = std::size_t(config.width), pixels = width * std::size_t(config.height);
     const T area = rays.pixel_area();
 
-    // One block of paths splatted into `out` (zeroed first).
-    const auto trace_block = [&](std::size_t first, std::size_t last, std::vector<Rgb<float>>& out) {
-        std::fill(out.begin(), out.end(), Rgb<float>(0.0f));
+    // A block of paths splatted into `out`.
+    const auto trace_block = [&](std::uint64_t first, std::uint64_t last, Accumulation& out) {
         tracer.walk_aimed(first, last, config.paths, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
             // A first hit on a diffuse lobe is the path tracer's; where the material also
             // has a delta lobe, the scattering here decides whose the path is.
@@ -81,7 +97,7 @@ template <class SceneT, class Air = StraightAir>
             const bool go_on = at.diffuse_bounces < config.max_diffuse_bounces;
             const Crossing<T>& c = at.crossing();
             const auto seen = rays.project(c.point);
-            if (!seen || !(seen->x >= T(0) && seen->x < T(config.width) && seen->y >= T(0) && seen->y < T(config.height))) return go_on;
+            if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return go_on;
             const Vec3<T> to_camera = (rays.origin - c.point) / seen->distance;
             const T cos_x = dot(c.facing_normal(), to_camera);
             if (!(cos_x > T(0))) return go_on; // the camera sees the other side
@@ -95,31 +111,54 @@ template <class SceneT, class Air = StraightAir>
                 importance *= shading_cosine(c.facing_shading(), c.facing_normal(), -at.direction) / -dot(at.direction, c.facing_normal());
                 if (!(importance < infinity<T>)) return go_on;
             }
-            const std::size_t pixel = std::size_t(seen->y) * width + std::size_t(seen->x);
-            out[pixel] += Rgb<float>(power * diffuse_response(material, c).brdf() * v * importance);
+            const Rgb<float> splat(power * diffuse_response(material, c).brdf() * v * importance);
+            std::array<ExactSum, 3> add{};
+            for (int k = 0; k < 3; ++k) {
+                const double value = double(splat[k]) * scale;
+                if (value >= 0.0 && ExactSum::takes(value)) add[std::size_t(k)] = ExactSum::of(value);
+                else out.reject(1);
+            }
+            out.add(int(seen->x), int(seen->y), add, 0);
             return go_on;
         });
     };
 
-    constexpr std::size_t block = 16384;
-    const std::size_t blocks = (config.paths + block - 1) / block;
+    // Blocks of paths dealt to threads as they ask; each thread's sums are exact, so
+    // which thread took which block changes no bit.
+    constexpr std::uint64_t block = 16384;
+    const std::uint64_t blocks = (traced.count() + block - 1) / block;
     unsigned threads = detail::worker_count(config.threads);
-    threads = unsigned(std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(blocks, 1)));
-    std::vector<std::vector<Rgb<float>>> buffers(threads, std::vector<Rgb<float>>(pixels));
-    std::vector<Rgb<double>> sum(pixels, Rgb<double>(0.0));
-    for (std::size_t wave = 0; wave < blocks; wave += threads) {
-        const std::size_t count = std::min<std::size_t>(threads, blocks - wave);
-        const auto run = [&](std::size_t k) { trace_block((wave + k) * block, std::min(config.paths, (wave + k + 1) * block), buffers[k]); };
-        std::vector<std::thread> workers;
-        for (std::size_t k = 1; k < count; ++k) workers.emplace_back(run, k);
-        run(0);
-        for (auto& worker : workers) worker.join();
-        for (std::size_t k = 0; k < count; ++k) // in block order, whatever the thread count
-            for (std::size_t i = 0; i < pixels; ++i) sum[i] += Rgb<double>(buffers[k][i]);
-    }
-    Film film(config.width, config.height);
-    for (std::size_t i = 0; i < pixels; ++i) film.set(int(i % width), int(i / width), sum[i]);
-    return film;
+    threads = unsigned(std::clamp<std::uint64_t>(threads, 1, blocks));
+    std::vector<Accumulation> buffers;
+    buffers.reserve(threads);
+    for (unsigned k = 0; k < threads; ++k) buffers.emplace_back(config.width, config.height, window);
+    std::atomic<std::uint64_t> next{0};
+    const auto run = [&](unsigned k) {
+        for (std::uint64_t b = next++; b < blocks; b = next++)
+            trace_block(traced.first + b * block, std::min(traced.last, traced.first + (b + 1) * block), buffers[k]);
+    };
+    std::vector<std::thread> workers;
+    for (unsigned k = 1; k < threads; ++k) workers.emplace_back(run, k);
+    run(0);
+    for (auto& worker : workers) worker.join();
+    for (const Accumulation& buffer : buffers) sums += buffer;
+}
+
+/// The light tracer's image of `scene` through `camera` (the config's crop window):
+/// radiance per pixel from the paths L S+ (S|D)* D E. Add it to a PathTracer render of
+/// the same camera and size for the reference.
+template <class SceneT, class Air = StraightAir>
+[[nodiscard]] Film light_trace(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera, const LightTracerConfig& config,
+                               const Air& air = {})
+{
+    (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
+    Accumulation sums(config.width, config.height, detail::render_window({.width = config.width, .height = config.height, .crop = config.crop}));
+    light_trace_into(sums, scene, camera, config, 1.0, air);
+    const PixelWindow& w = sums.window();
+    const std::array<ExactSum, 3> none{};
+    for (int y = w.y0; y < w.y1; ++y)
+        for (int x = w.x0; x < w.x1; ++x) sums.add(x, y, none, 1); // the splats are the pixel's value, not a sum of samples
+    return sums.image();
 }
 
 } // namespace prism

@@ -22,6 +22,7 @@
 
 #include <prism/core/check.hpp>
 #include <prism/integrator/photon_mapper.hpp>
+#include <prism/render/accumulation.hpp>
 #include <prism/render/film.hpp>
 #include <prism/render/render.hpp>
 #include <prism/scene/camera.hpp>
@@ -56,35 +57,25 @@ struct ProgressiveConfig {
     std::size_t first_pass = 0; ///< passes [first_pass, first_pass + passes): one share of a render split across machines
 };
 
-/// What a run of passes made: their images' sum, kept in double so that the sums of
-/// shares of one render (first_pass) add up to the whole render's bit for bit (a
-/// double holds the sum of a few million floats exactly).
+/// What a run of passes made: the exact sums of their samples (Accumulation), so that
+/// the sums of shares of one render (first_pass) add up to the whole render's, bit for
+/// bit, in any order.
 struct ProgressiveResult {
-    int width{}, height{};
-    std::vector<Rgb<double>> sum; ///< per pixel, row by row from the top
-    std::size_t passes{};         ///< how many were rendered
+    Accumulation sums;    ///< every pass's samples; a pixel's weight is passes x spp
+    std::size_t passes{}; ///< how many were rendered
     double seconds{};
 
     /// Add another share of the same render.
     ProgressiveResult& operator+=(const ProgressiveResult& other)
     {
-        if (other.width != width || other.height != height)
-            detail::throw_invalid("ProgressiveResult of ", other.width, " x ", other.height, " added to one of ", width, " x ", height);
-        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += other.sum[i];
+        sums += other.sums;
         passes += other.passes;
         seconds += other.seconds;
         return *this;
     }
 
     /// The mean of the passes' images.
-    [[nodiscard]] Film image() const
-    {
-        Film mean(width, height);
-        const double n = double(std::max<std::size_t>(passes, 1));
-        for (int y = 0; y < height; ++y)
-            for (int x = 0; x < width; ++x) mean.set(x, y, sum[std::size_t(y) * std::size_t(width) + std::size_t(x)] / n);
-        return mean;
-    }
+    [[nodiscard]] Film image() const { return sums.image(); }
 };
 
 /// Render `scene` by progressive photon mapping: `render`'s size, samples per pixel per
@@ -101,11 +92,13 @@ template <class SceneT, class Air = StraightAir>
     if (!(config.seconds >= 0.0 && std::isfinite(config.seconds))) detail::throw_invalid("ProgressiveConfig seconds must be finite and >= 0, got ", config.seconds);
     if (config.passes == 0 && config.seconds == 0.0) detail::throw_invalid("ProgressiveConfig needs passes > 0 or seconds > 0");
     (void)camera.rays(render_config.width, render_config.height); // validates both before the first pass
+    if (render_config.passes != PassRange{})
+        detail::throw_invalid("render_progressive takes its passes from ProgressiveConfig (first_pass, passes), not RenderConfig passes [",
+                              render_config.passes.first, ", ", render_config.passes.last, ")");
 
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-    ProgressiveResult result{render_config.width, render_config.height,
-                             std::vector<Rgb<double>>(std::size_t(render_config.width) * std::size_t(render_config.height), Rgb<double>(0.0)), 0, 0.0};
+    ProgressiveResult result{Accumulation(render_config.width, render_config.height, detail::render_window(render_config)), 0, 0.0};
     for (std::size_t pass = config.first_pass; config.passes == 0 || pass < config.first_pass + config.passes; ++pass) {
         typename PhotonMapper<SceneT, Air>::Config mapper_config = config.pass;
         mapper_config.caustic.radius = float(progressive_radius(config.pass.caustic.radius, config.alpha, pass));
@@ -115,11 +108,10 @@ template <class SceneT, class Air = StraightAir>
         pass_render.seed = render_config.seed + 0x9e3779b97f4a7c15ULL * (pass + 1); // a fresh sample in every pixel
         pass_render.progress = false;
         pass_render.single_sample_at_centre = false; // anti-aliased over the passes
-        const Film image = render(camera, mapper, pass_render);
-        for (std::size_t i = 0; i < result.sum.size(); ++i) result.sum[i] += Rgb<double>(image.pixels()[i]);
+        render_into(result.sums, camera, mapper, pass_render);
         ++result.passes;
         if (render_config.progress)
-            std::fprintf(stderr, "\rprism: progressive pass %zu, r = %.4g / %.4g (%.1f s)", result.passes, double(mapper_config.caustic.radius),
+            std::fprintf(stderr, "\rprism: progressive pass %zu, r = %.4g / %.4g (%.1f s)", pass + 1, double(mapper_config.caustic.radius),
                          double(mapper_config.global.radius), elapsed());
         if (config.seconds > 0.0 && elapsed() >= config.seconds) break;
     }

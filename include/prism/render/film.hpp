@@ -71,6 +71,8 @@ public:
 
     /// How many channel values were replaced by 0 because they were not finite and >= 0.
     [[nodiscard]] std::size_t rejected() const noexcept { return rejected_.load(std::memory_order_relaxed); }
+    /// Count values rejected before they reached this film (an Accumulation's samples).
+    void count_rejected(std::size_t count) noexcept { rejected_.fetch_add(count, std::memory_order_relaxed); }
 
 private:
     int width_;

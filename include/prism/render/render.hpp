@@ -1,14 +1,19 @@
 // SPDX-License-Identifier: MIT
-// render(): camera rays per pixel, tiles on std::thread workers, one RNG stream per pixel.
+// render(): camera rays per pixel, tiles on std::thread workers, one RNG stream per
+// sample of each pixel; a crop window or a range of the samples renders a part of the
+// image that adds up with the other parts to the whole, bit for bit.
 #pragma once
 
 #include <prism/core/check.hpp>
+#include <prism/core/config.hpp>
 #include <prism/core/parallel.hpp>
 #include <prism/core/rng.hpp>
+#include <prism/render/accumulation.hpp>
 #include <prism/render/film.hpp>
 #include <prism/scene/camera.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -17,6 +22,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <mutex>
+#include <span>
 #include <thread>
 #include <vector>
 
@@ -40,6 +46,14 @@ struct RenderConfig {
     /// that is one pass of many, as progressive photon mapping's, then anti-aliases over
     /// its passes).
     bool single_sample_at_centre = true;
+    /// The pixels to render, inside width x height; empty (the default): all of them. A
+    /// pixel's samples depend only on the seed, the pixel and the sample's number, so a
+    /// crop is the same bits as those pixels of the whole render.
+    PixelWindow crop{};
+    /// The samples of each pixel to take, [first, last) of spp; empty (the default):
+    /// all. Renders of disjoint ranges add up (render_sums, Accumulation) to the render
+    /// of their union, bit for bit.
+    PassRange passes{};
 };
 
 namespace detail {
@@ -58,24 +72,58 @@ template <Scalar T>
     return {u, v};
 }
 
-} // namespace detail
+/// The seed of a pixel's sample s: the render's seed moved by a bijective 64-bit hash of
+/// s (MurmurHash3's finaliser, which maps 0 to 0), so each sample starts its pixel's
+/// stream at its own far-apart place and sample s is the same whichever samples are
+/// taken with it.
+[[nodiscard]] constexpr std::uint64_t sample_seed(std::uint64_t seed, std::uint64_t s) noexcept
+{
+    s ^= s >> 33;
+    s *= 0xff51afd7ed558ccdULL;
+    s ^= s >> 33;
+    s *= 0xc4ceb9fe1a85ec53ULL;
+    s ^= s >> 33;
+    return seed + s;
+}
 
-/// Render an image. The same scene, seed and spp give the same bits for any thread
-/// count: every pixel draws from its own random stream and is written by one thread.
-template <Integrator I>
-[[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
+/// The window a config renders, checked against its image.
+[[nodiscard]] inline PixelWindow render_window(const RenderConfig& config)
+{
+    if (config.crop == PixelWindow{}) return PixelWindow::whole(config.width, config.height);
+    const PixelWindow& c = config.crop;
+    if (c.empty() || !PixelWindow::whole(config.width, config.height).contains(c))
+        throw_invalid("RenderConfig crop [", c.x0, ", ", c.x1, ") x [", c.y0, ", ", c.y1, ") must be a non-empty part of the ", config.width, " x ",
+                      config.height, " image");
+    return c;
+}
+
+/// The samples a config takes, checked against its spp.
+[[nodiscard]] inline PassRange render_passes(const RenderConfig& config)
+{
+    if (config.spp < 1) throw_invalid("RenderConfig spp must be >= 1, got ", config.spp);
+    if (config.passes == PassRange{}) return {0, std::uint64_t(config.spp)};
+    if (config.passes.empty() || config.passes.last > std::uint64_t(config.spp))
+        throw_invalid("RenderConfig passes [", config.passes.first, ", ", config.passes.last, ") must be a non-empty range of the spp = ", config.spp,
+                      " samples");
+    return config.passes;
+}
+
+/// Render the config's window and samples, handing each pixel's exact sums to
+/// `store(x, y, sums, samples)` (one thread per pixel; any pixel on any thread).
+template <Integrator I, class Store>
+void render_pixels(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config, Store&& store)
 {
     using T = typename I::scalar_type;
-    if (config.spp < 1) detail::throw_invalid("RenderConfig spp must be >= 1, got ", config.spp);
-    if (config.tile_size < 1) detail::throw_invalid("RenderConfig tile_size must be >= 1, got ", config.tile_size);
+    if (config.tile_size < 1) throw_invalid("RenderConfig tile_size must be >= 1, got ", config.tile_size);
+    const PassRange samples = render_passes(config);
     const CameraRays<T> rays = camera.rays(config.width, config.height);
-    Film film(config.width, config.height);
+    const PixelWindow window = render_window(config);
 
     // Tile arithmetic in 64 bits: a tile_size of INT_MAX, or 65536^2 one-pixel tiles,
     // overflows int.
     const std::int64_t tile = config.tile_size;
-    const std::int64_t tiles_x = (std::int64_t(config.width) - 1) / tile + 1;
-    const std::int64_t tiles_y = (std::int64_t(config.height) - 1) / tile + 1;
+    const std::int64_t tiles_x = (std::int64_t(window.width()) - 1) / tile + 1;
+    const std::int64_t tiles_y = (std::int64_t(window.height()) - 1) / tile + 1;
     const std::int64_t tile_count = tiles_x * tiles_y;
     std::atomic<std::int64_t> next_tile{0};
     std::atomic<std::int64_t> tiles_done{0};
@@ -85,19 +133,27 @@ template <Integrator I>
 
     const auto work = [&] {
         for (std::int64_t t = next_tile++; t < tile_count; t = next_tile++) {
-            const auto x0 = static_cast<int>((t % tiles_x) * tile), y0 = static_cast<int>((t / tiles_x) * tile);
-            const auto x1 = static_cast<int>(std::min<std::int64_t>(x0 + tile, config.width));
-            const auto y1 = static_cast<int>(std::min<std::int64_t>(y0 + tile, config.height));
+            const auto x0 = static_cast<int>(window.x0 + (t % tiles_x) * tile), y0 = static_cast<int>(window.y0 + (t / tiles_x) * tile);
+            const auto x1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(x0) + tile, window.x1));
+            const auto y1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(y0) + tile, window.y1));
             for (int y = y0; y < y1; ++y)
                 for (int x = x0; x < x1; ++x) {
-                    const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + x;
-                    Pcg32 rng(config.seed, pixel);
-                    Rgb<T> sum{T(0)};
-                    for (int s = 0; s < config.spp; ++s) {
-                        const auto [dx, dy] = detail::pixel_sample<T>(s, config.spp, rng, config.single_sample_at_centre);
-                        sum += integrator.radiance(rays.ray(T(x) + dx, T(y) + dy), rng);
+                    const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
+                    std::array<ExactSum, 3> sum{};
+                    std::size_t rejected = 0;
+                    for (std::uint64_t s = samples.first; s < samples.last; ++s) {
+                        Pcg32 rng(sample_seed(config.seed, s), pixel);
+                        const auto [dx, dy] = pixel_sample<T>(int(s), config.spp, rng, config.single_sample_at_centre);
+                        const Rgb<T> radiance = integrator.radiance(rays.ray(T(x) + dx, T(y) + dy), rng);
+                        for (int c = 0; c < 3; ++c) {
+                            // Radiance is never negative: NaN, Inf, < 0 or past ExactSum's
+                            // limit are counted and add 0.
+                            const double v = double(radiance[c]);
+                            if (v >= 0.0 && ExactSum::takes(v)) (void)sum[std::size_t(c)].add(ExactSum::of(v));
+                            else ++rejected;
+                        }
                     }
-                    film.set(x, y, sum / T(config.spp));
+                    store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
                 }
             ++tiles_done;
         }
@@ -105,7 +161,7 @@ template <Integrator I>
         if (--running == 0) finished.notify_all();
     };
 
-    unsigned threads = detail::worker_count(config.threads);
+    unsigned threads = worker_count(config.threads);
     threads = static_cast<unsigned>(std::min<std::int64_t>(threads, tile_count));
     running = threads;
     std::vector<std::thread> workers;
@@ -127,6 +183,50 @@ template <Integrator I>
     }
     for (auto& worker : workers) worker.join();
     if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
+}
+
+} // namespace detail
+
+/// Render a part of an image into `sums`: the config's crop window (which `sums`'
+/// window must contain) and samples, each pixel's sum and sample count added to those
+/// there. The parts of one render, added in any order, give the same bits.
+template <Integrator I>
+void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
+{
+    const PixelWindow window = detail::render_window(config);
+    if (sums.width() != config.width || sums.height() != config.height || !sums.window().contains(window))
+        detail::throw_invalid("render_into: the Accumulation (", sums.width(), " x ", sums.height(), ", window [", sums.window().x0, ", ",
+                              sums.window().x1, ") x [", sums.window().y0, ", ", sums.window().y1, ")) does not hold the render's window");
+    if (sums.channels().size() != 3) detail::throw_invalid("render_into renders R, G, B only, the Accumulation has ", sums.channels().size(), " channels");
+    detail::render_pixels(camera, integrator, config, [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+        sums.add(x, y, sum, weight);
+        if (rejected != 0) sums.reject(rejected);
+    });
+}
+
+/// A part of an image as exact sums (its crop window, its samples): add the parts of a
+/// render split across machines, then take image() for the whole render's bits.
+template <Integrator I>
+[[nodiscard]] Accumulation render_sums(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
+{
+    Accumulation sums(config.width, config.height, detail::render_window(config));
+    render_into(sums, camera, integrator, config);
+    return sums;
+}
+
+/// Render an image: the config's crop window (the whole image by default), each pixel
+/// the mean of its samples. The same scene, seed and spp give the same bits for any
+/// thread count, crop or split of the samples: every sample draws from its own random
+/// stream, and a pixel's samples are summed exactly (Accumulation).
+template <Integrator I>
+[[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
+{
+    const PixelWindow window = detail::render_window(config);
+    Film film(window.width(), window.height());
+    detail::render_pixels(camera, integrator, config, [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+        film.set(x - window.x0, y - window.y0, Rgb<float>(detail::mean(sum[0], weight), detail::mean(sum[1], weight), detail::mean(sum[2], weight)));
+        if (rejected != 0) film.count_rejected(rejected);
+    });
     return film;
 }
 

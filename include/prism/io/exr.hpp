@@ -1,0 +1,254 @@
+// SPDX-License-Identifier: MIT
+// OpenEXR files: float layers over a data window inside the display window, string
+// metadata, and a render's exact sums, so that the parts of a render split across
+// machines can be read back and added up to the whole render's bits.
+//
+// Opt-in: prism/prism.hpp does not include this header, since it needs OpenEXR
+// (Debian: libopenexr-dev; CMake: prism::exr_io). Files are written as image.hpp writes
+// PNG: whole or not at all over a regular file, through a device or FIFO, any failure a
+// std::runtime_error naming the path. Layers are named as EXR's convention has them,
+// "layer.channel" ("albedo.R"); R, G and B are the image itself.
+//
+// An Accumulation is stored as the mean of each of its channels (FLOAT, for any EXR
+// viewer) and, for a part to be added to others, its exact sums: a channel's 128 bits
+// as four UINT channels "sum.<channel>.0" (lowest word) to ".3", and the pixel's 64-bit
+// weight as "weight.0" and "weight.1".
+#pragma once
+
+#include <prism/io/image.hpp>
+#include <prism/render/accumulation.hpp>
+#include <prism/render/film.hpp>
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIO.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace prism {
+
+/// One channel of an ExrImage: its values over the data window, row by row from the top.
+struct ExrChannel {
+    std::string name;
+    std::variant<std::vector<float>, std::vector<std::uint32_t>> values;
+};
+
+/// An EXR file as prism writes and reads it: FLOAT and UINT channels over `window` (the
+/// data window) of a width x height image (the display window), and string attributes.
+struct ExrImage {
+    int width = 0, height = 0;
+    PixelWindow window{};
+    std::vector<ExrChannel> channels;
+    std::map<std::string, std::string> attributes;
+
+    /// The channel named `name`, or nullptr.
+    [[nodiscard]] const ExrChannel* find(const std::string& name) const noexcept
+    {
+        for (const ExrChannel& c : channels)
+            if (c.name == name) return &c;
+        return nullptr;
+    }
+};
+
+namespace detail {
+
+/// OpenEXR's output into memory, so the file can then be written whole or not at all.
+class ExrMemoryStream final : public Imf::OStream {
+public:
+    ExrMemoryStream() : Imf::OStream("memory") {}
+    void write(const char c[], int n) override
+    {
+        if (position_ + std::size_t(n) > bytes.size()) bytes.resize(position_ + std::size_t(n));
+        std::memcpy(bytes.data() + position_, c, std::size_t(n));
+        position_ += std::size_t(n);
+    }
+    std::uint64_t tellp() override { return position_; }
+    void seekp(std::uint64_t position) override { position_ = std::size_t(position); }
+
+    std::vector<unsigned char> bytes;
+
+private:
+    std::size_t position_ = 0;
+};
+
+[[nodiscard]] inline Imath::Box2i exr_box(const PixelWindow& w) { return {{w.x0, w.y0}, {w.x1 - 1, w.y1 - 1}}; }
+
+/// The Slice OpenEXR reads or writes a channel's values through.
+template <class Value>
+[[nodiscard]] Imf::Slice exr_slice(Value* values, const PixelWindow& w)
+{
+    constexpr Imf::PixelType type = std::is_same_v<std::remove_const_t<Value>, float> ? Imf::FLOAT : Imf::UINT;
+    return Imf::Slice::Make(type, const_cast<std::remove_const_t<Value>*>(values), exr_box(w), sizeof(Value), sizeof(Value) * std::size_t(w.width()));
+}
+
+} // namespace detail
+
+/// Write `image` as an EXR file (ZIP-compressed scan lines).
+inline void write_exr(const ExrImage& image, const std::filesystem::path& path)
+{
+    if (image.width <= 0 || image.height <= 0)
+        detail::throw_io(path, "the image size must be positive, got " + std::to_string(image.width) + " x " + std::to_string(image.height));
+    if (image.window.empty() || !PixelWindow::whole(image.width, image.height).contains(image.window))
+        detail::throw_io(path, "the data window must be a non-empty part of the image");
+    if (image.channels.empty()) detail::throw_io(path, "an image needs a channel");
+    std::vector<unsigned char> bytes;
+    try {
+        Imf::Header header(detail::exr_box(PixelWindow::whole(image.width, image.height)), detail::exr_box(image.window));
+        header.compression() = Imf::ZIP_COMPRESSION;
+        for (const auto& [name, value] : image.attributes) header.insert(name, Imf::StringAttribute(value));
+        Imf::FrameBuffer frame;
+        for (const ExrChannel& c : image.channels) {
+            if (header.channels().findChannel(c.name) != nullptr) detail::throw_io(path, "two channels named '" + c.name + "'");
+            const bool floats = std::holds_alternative<std::vector<float>>(c.values);
+            const std::size_t count = floats ? std::get<0>(c.values).size() : std::get<1>(c.values).size();
+            if (count != image.window.area())
+                detail::throw_io(path, "channel '" + c.name + "' has " + std::to_string(count) + " values for " + std::to_string(image.window.area()) + " pixels");
+            header.channels().insert(c.name, Imf::Channel(floats ? Imf::FLOAT : Imf::UINT));
+            frame.insert(c.name, floats ? detail::exr_slice(std::get<0>(c.values).data(), image.window)
+                                        : detail::exr_slice(std::get<1>(c.values).data(), image.window));
+        }
+        detail::ExrMemoryStream stream;
+        {
+            Imf::OutputFile file(stream, header);
+            file.setFrameBuffer(frame);
+            file.writePixels(image.window.height());
+        }
+        bytes = std::move(stream.bytes);
+    } catch (const std::runtime_error&) {
+        throw;
+    } catch (const std::exception& e) {
+        detail::throw_io(path, std::string("OpenEXR: ") + e.what());
+    }
+    detail::write_file_atomically(path, bytes);
+}
+
+/// Read an EXR file: its FLOAT and HALF channels as float, its UINT channels as they
+/// are, and its string attributes.
+[[nodiscard]] inline ExrImage read_exr(const std::filesystem::path& path)
+{
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imf::Header& header = file.header();
+        const Imath::Box2i display = header.displayWindow(), data = header.dataWindow();
+        ExrImage image;
+        if (display.min.x != 0 || display.min.y != 0)
+            throw std::runtime_error("the display window starts at (" + std::to_string(display.min.x) + ", " + std::to_string(display.min.y) +
+                                     "), not (0, 0)");
+        image.width = display.max.x + 1;
+        image.height = display.max.y + 1;
+        image.window = {data.min.x, data.min.y, data.max.x + 1, data.max.y + 1};
+        if (image.window.empty() || !PixelWindow::whole(image.width, image.height).contains(image.window))
+            throw std::runtime_error("the data window is not inside the display window");
+        for (auto a = header.begin(); a != header.end(); ++a)
+            if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&a.attribute())) image.attributes[a.name()] = text->value();
+        Imf::FrameBuffer frame;
+        for (auto c = header.channels().begin(); c != header.channels().end(); ++c) {
+            if (c.channel().xSampling != 1 || c.channel().ySampling != 1)
+                throw std::runtime_error("channel '" + std::string(c.name()) + "' is subsampled");
+            ExrChannel& channel = image.channels.emplace_back(ExrChannel{c.name(), {}});
+            if (c.channel().type == Imf::UINT) channel.values = std::vector<std::uint32_t>(image.window.area());
+            else channel.values = std::vector<float>(image.window.area());
+        }
+        for (ExrChannel& c : image.channels)
+            frame.insert(c.name, std::holds_alternative<std::vector<float>>(c.values) ? detail::exr_slice(std::get<0>(c.values).data(), image.window)
+                                                                                      : detail::exr_slice(std::get<1>(c.values).data(), image.window));
+        file.setFrameBuffer(frame);
+        file.readPixels(data.min.y, data.max.y);
+        return image;
+    } catch (const std::exception& e) {
+        throw std::runtime_error("prism: cannot read '" + path.string() + "': " + e.what());
+    }
+}
+
+/// A film as an EXR image: R, G, B over the whole image.
+[[nodiscard]] inline ExrImage to_exr(const Film& film, std::map<std::string, std::string> attributes = {})
+{
+    ExrImage image{film.width(), film.height(), PixelWindow::whole(film.width(), film.height()), {}, std::move(attributes)};
+    for (int c = 0; c < 3; ++c) {
+        std::vector<float> values(film.pixels().size());
+        for (std::size_t i = 0; i < values.size(); ++i) values[i] = film.pixels()[i][c];
+        image.channels.push_back({std::string(1, "RGB"[c]), std::move(values)});
+    }
+    return image;
+}
+
+/// An Accumulation as an EXR image over its window: each channel's mean (sum / weight,
+/// 0 where the weight is 0), and with `exact` the sums and weights themselves, bit for
+/// bit, for to_accumulation to add to other parts.
+[[nodiscard]] inline ExrImage to_exr(const Accumulation& sums, bool exact, std::map<std::string, std::string> attributes = {})
+{
+    if (sums.overflowed()) detail::throw_invalid("to_exr: the Accumulation overflowed (a sum passed 2^63)");
+    const PixelWindow& w = sums.window();
+    ExrImage image{sums.width(), sums.height(), w, {}, std::move(attributes)};
+    const std::size_t n = sums.channels().size();
+    for (std::size_t c = 0; c < n; ++c) {
+        std::vector<float> mean;
+        mean.reserve(w.area());
+        for (int y = w.y0; y < w.y1; ++y)
+            for (int x = w.x0; x < w.x1; ++x) mean.push_back(detail::mean(sums.sums(x, y)[c], sums.weight(x, y)));
+        image.channels.push_back({sums.channels()[c], std::move(mean)});
+    }
+    if (!exact) return image;
+    for (std::size_t c = 0; c < n; ++c)
+        for (int word = 0; word < 4; ++word) {
+            std::vector<std::uint32_t> bits;
+            bits.reserve(w.area());
+            for (int y = w.y0; y < w.y1; ++y)
+                for (int x = w.x0; x < w.x1; ++x)
+                    bits.push_back(std::uint32_t(static_cast<UInt128>(sums.sums(x, y)[c].bits()) >> (32 * word)));
+            image.channels.push_back({"sum." + sums.channels()[c] + "." + std::to_string(word), std::move(bits)});
+        }
+    for (int word = 0; word < 2; ++word) {
+        std::vector<std::uint32_t> bits;
+        bits.reserve(w.area());
+        for (int y = w.y0; y < w.y1; ++y)
+            for (int x = w.x0; x < w.x1; ++x) bits.push_back(std::uint32_t(sums.weight(x, y) >> (32 * word)));
+        image.channels.push_back({"weight." + std::to_string(word), std::move(bits)});
+    }
+    return image;
+}
+
+/// The exact sums of an image written by to_exr(sums, exact = true), over its data
+/// window; `channels` lists what to take (R, G, B first). Throws naming what is missing.
+[[nodiscard]] inline Accumulation to_accumulation(const ExrImage& image, std::vector<std::string> channels = {"R", "G", "B"})
+{
+    const auto words = [&](const std::string& name) -> const std::vector<std::uint32_t>& {
+        const ExrChannel* c = image.find(name);
+        if (c == nullptr || !std::holds_alternative<std::vector<std::uint32_t>>(c->values))
+            detail::throw_invalid("to_accumulation: the image has no UINT channel '", name, "' (it was not written with its exact sums)");
+        return std::get<1>(c->values);
+    };
+    Accumulation sums(image.width, image.height, image.window, channels);
+    const PixelWindow& w = image.window;
+    const auto& weight_lo = words("weight.0");
+    const auto& weight_hi = words("weight.1");
+    std::vector<const std::vector<std::uint32_t>*> parts;
+    for (const std::string& channel : channels)
+        for (int word = 0; word < 4; ++word) parts.push_back(&words("sum." + channel + "." + std::to_string(word)));
+    std::vector<ExactSum> pixel(channels.size());
+    std::size_t i = 0;
+    for (int y = w.y0; y < w.y1; ++y)
+        for (int x = w.x0; x < w.x1; ++x, ++i) {
+            for (std::size_t c = 0; c < channels.size(); ++c) {
+                UInt128 bits = 0;
+                for (int word = 3; word >= 0; --word) bits = (bits << 32) | (*parts[c * 4 + std::size_t(word)])[i];
+                pixel[c] = ExactSum::from_bits(static_cast<Int128>(bits));
+            }
+            sums.add(x, y, pixel, (std::uint64_t(weight_hi[i]) << 32) | weight_lo[i]);
+        }
+    return sums;
+}
+
+} // namespace prism

@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: MIT
+// Accumulation: a render's samples summed exactly per pixel over a window of the image,
+// so that a render split by pixels (crop windows), by passes, over threads or over
+// machines adds up to the same bits as the render made in one piece.
+//
+// Floating-point addition is not associative: (a + b) + c and a + (b + c) can differ in
+// the last bit, and far more when a and c differ by many orders of magnitude, so sums
+// made in parts and added in another order would not reproduce the whole. Here each
+// sample is rounded once, to the nearest multiple of 2^-64, and summed as a 128-bit
+// integer (ExactSum), whose addition is exact, associative and commutative. That one
+// rounding depends on the sample alone; it keeps every float sample in [2^-41, 2^40)
+// (4.5e-13 to 1.1e12) exactly and moves any other by at most 2^-65 (2.7e-20).
+#pragma once
+
+#include <prism/core/check.hpp>
+#include <prism/core/math.hpp>
+#include <prism/render/film.hpp>
+
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace prism {
+
+/// A rectangle of an image's pixels, [x0, x1) x [y0, y1); pbrt's pixel bounds.
+struct PixelWindow {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+
+    [[nodiscard]] constexpr int width() const noexcept { return x1 - x0; }
+    [[nodiscard]] constexpr int height() const noexcept { return y1 - y0; }
+    [[nodiscard]] constexpr bool empty() const noexcept { return x1 <= x0 || y1 <= y0; }
+    [[nodiscard]] constexpr std::size_t area() const noexcept { return empty() ? 0 : std::size_t(width()) * std::size_t(height()); }
+    [[nodiscard]] constexpr bool contains(int x, int y) const noexcept { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+    [[nodiscard]] constexpr bool contains(const PixelWindow& w) const noexcept
+    {
+        return w.x0 >= x0 && w.x1 <= x1 && w.y0 >= y0 && w.y1 <= y1;
+    }
+    [[nodiscard]] constexpr bool overlaps(const PixelWindow& w) const noexcept
+    {
+        return w.x0 < x1 && x0 < w.x1 && w.y0 < y1 && y0 < w.y1;
+    }
+    /// The whole of a width x height image.
+    [[nodiscard]] static constexpr PixelWindow whole(int width, int height) noexcept { return {0, 0, width, height}; }
+    friend constexpr bool operator==(const PixelWindow&, const PixelWindow&) = default;
+};
+
+/// A range of passes [first, last): camera samples of each pixel, or photon passes.
+struct PassRange {
+    std::uint64_t first = 0, last = 0;
+
+    [[nodiscard]] constexpr std::uint64_t count() const noexcept { return last > first ? last - first : 0; }
+    [[nodiscard]] constexpr bool empty() const noexcept { return last <= first; }
+    [[nodiscard]] constexpr bool overlaps(const PassRange& r) const noexcept { return r.first < last && first < r.last; }
+    friend constexpr bool operator==(const PassRange&, const PassRange&) = default;
+};
+
+// GCC and Clang's 128-bit integers; -Wpedantic would name them an extension.
+__extension__ using Int128 = __int128;
+__extension__ using UInt128 = unsigned __int128;
+
+/// A signed fixed-point number with 64 integer and 64 fraction bits: samples rounded
+/// once to a multiple of 2^-64 and summed with no further rounding.
+class ExactSum {
+public:
+    /// Samples are refused from this magnitude on (the render counts them as rejected,
+    /// as it does NaN): 2^23 such samples could not overflow the 64 integer bits.
+    static constexpr double limit = 0x1p40;
+
+    constexpr ExactSum() noexcept = default;
+
+    /// x rounded to the nearest multiple of 2^-64 (halves away from zero). |x| < limit.
+    [[nodiscard]] static ExactSum of(double x) noexcept
+    {
+        PRISM_ASSERT(std::abs(x) < limit);
+        // x 2^64 is exact (a power of two) and below 2^104; below 2^52 in magnitude it
+        // may have a fraction, which round() removes exactly; above, it is an integer.
+        return from_bits(Int128(std::round(std::ldexp(x, 64))));
+    }
+
+    /// Whether x is a sample this type takes: finite and |x| < limit.
+    [[nodiscard]] static constexpr bool takes(double x) noexcept { return x > -limit && x < limit; }
+
+    [[nodiscard]] static constexpr ExactSum from_bits(Int128 bits) noexcept
+    {
+        ExactSum s;
+        s.bits_ = bits;
+        return s;
+    }
+    [[nodiscard]] constexpr Int128 bits() const noexcept { return bits_; }
+
+    /// Add `other`; false (and this unchanged) when the sum would pass 2^63 in magnitude.
+    [[nodiscard]] constexpr bool add(const ExactSum& other) noexcept
+    {
+        Int128 sum{};
+        if (__builtin_add_overflow(bits_, other.bits_, &sum)) return false;
+        bits_ = sum;
+        return true;
+    }
+
+    /// The sum, rounded once to double.
+    [[nodiscard]] double value() const noexcept { return std::ldexp(double(bits_), -64); }
+
+    friend constexpr bool operator==(const ExactSum&, const ExactSum&) = default;
+
+private:
+    Int128 bits_ = 0;
+};
+
+namespace detail {
+
+/// The mean a sum of `weight` samples stands for, as the film stores it: the one place
+/// an Accumulation becomes a float, so every way of making the same sums gives the same
+/// bits.
+[[nodiscard]] inline float mean(const ExactSum& sum, std::uint64_t weight) noexcept
+{
+    return weight == 0 ? 0.0f : static_cast<float>(sum.value() / static_cast<double>(weight));
+}
+
+} // namespace detail
+
+/// Exact per-pixel sums of named channels ("R", "G", "B" first) and the per-pixel
+/// weight (samples or passes summed) over a window of a width x height image. Threads
+/// may add to distinct pixels at once.
+class Accumulation {
+public:
+    Accumulation(int width, int height, PixelWindow window, std::vector<std::string> channels = {"R", "G", "B"})
+        : width_(width), height_(height), window_(window), channels_(std::move(channels))
+    {
+        if (width <= 0 || height <= 0) detail::throw_invalid("Accumulation size must be positive, got ", width, " x ", height);
+        if (window.empty() || !PixelWindow::whole(width, height).contains(window))
+            detail::throw_invalid("Accumulation window [", window.x0, ", ", window.x1, ") x [", window.y0, ", ", window.y1,
+                                  ") must be a non-empty part of the ", width, " x ", height, " image");
+        if (channels_.size() < 3 || channels_[0] != "R" || channels_[1] != "G" || channels_[2] != "B")
+            detail::throw_invalid("Accumulation channels must begin with R, G, B");
+        const std::size_t pixels = window.area();
+        const double bytes = double(pixels) * double(channels_.size() * sizeof(ExactSum) + sizeof(std::uint64_t));
+        const std::string what = "an Accumulation of " + std::to_string(window.width()) + " x " + std::to_string(window.height()) + " pixels";
+        detail::require_memory(what, bytes);
+        try {
+            sums_.assign(pixels * channels_.size(), ExactSum{});
+            weights_.assign(pixels, 0);
+        } catch (const std::bad_alloc&) {
+            throw allocation_error("prism: " + what + " needs " + detail::describe_bytes(bytes) + ", which could not be allocated");
+        }
+    }
+
+    Accumulation(const Accumulation& other)
+        : width_(other.width_), height_(other.height_), window_(other.window_), channels_(other.channels_), sums_(other.sums_),
+          weights_(other.weights_), rejected_(other.rejected()), overflowed_(other.overflowed())
+    {
+    }
+    Accumulation(Accumulation&& other) noexcept
+        : width_(other.width_), height_(other.height_), window_(other.window_), channels_(std::move(other.channels_)),
+          sums_(std::move(other.sums_)), weights_(std::move(other.weights_)), rejected_(other.rejected()), overflowed_(other.overflowed())
+    {
+    }
+    Accumulation& operator=(Accumulation other) noexcept
+    {
+        width_ = other.width_;
+        height_ = other.height_;
+        window_ = other.window_;
+        channels_ = std::move(other.channels_);
+        sums_ = std::move(other.sums_);
+        weights_ = std::move(other.weights_);
+        rejected_.store(other.rejected(), std::memory_order_relaxed);
+        overflowed_.store(other.overflowed(), std::memory_order_relaxed);
+        return *this;
+    }
+
+    [[nodiscard]] int width() const noexcept { return width_; }
+    [[nodiscard]] int height() const noexcept { return height_; }
+    [[nodiscard]] const PixelWindow& window() const noexcept { return window_; }
+    [[nodiscard]] const std::vector<std::string>& channels() const noexcept { return channels_; }
+
+    /// Pixel (x, y)'s sums, one per channel; (x, y) in image coordinates, inside the window.
+    [[nodiscard]] std::span<const ExactSum> sums(int x, int y) const noexcept
+    {
+        return {sums_.data() + index(x, y) * channels_.size(), channels_.size()};
+    }
+    [[nodiscard]] std::uint64_t weight(int x, int y) const noexcept { return weights_[index(x, y)]; }
+
+    /// Add sums (one per channel) and a weight to pixel (x, y). A sum that would
+    /// overflow is left out and flagged (overflowed()).
+    void add(int x, int y, std::span<const ExactSum> sums, std::uint64_t weight) noexcept
+    {
+        PRISM_ASSERT(sums.size() == channels_.size());
+        const std::size_t i = index(x, y);
+        for (std::size_t c = 0; c < sums.size(); ++c)
+            if (!sums_[i * channels_.size() + c].add(sums[c])) overflowed_.store(true, std::memory_order_relaxed);
+        if (__builtin_add_overflow(weights_[i], weight, &weights_[i])) overflowed_.store(true, std::memory_order_relaxed);
+    }
+
+    /// Count sample values left out for not being finite (or negative, or past
+    /// ExactSum::limit) where the channel allows no such value.
+    void reject(std::size_t count) noexcept { rejected_.fetch_add(count, std::memory_order_relaxed); }
+    [[nodiscard]] std::size_t rejected() const noexcept { return rejected_.load(std::memory_order_relaxed); }
+    /// Whether some sum or weight would have overflowed (and was left out): the sums
+    /// are then wrong, and image() refuses them.
+    [[nodiscard]] bool overflowed() const noexcept { return overflowed_.load(std::memory_order_relaxed); }
+
+    /// Add a part of the same image: its window inside this one, the same channels.
+    Accumulation& operator+=(const Accumulation& part)
+    {
+        if (part.width_ != width_ || part.height_ != height_)
+            detail::throw_invalid("Accumulation of a ", part.width_, " x ", part.height_, " image added to one of ", width_, " x ", height_);
+        if (part.channels_ != channels_) detail::throw_invalid("Accumulation added to one with other channels");
+        if (!window_.contains(part.window_))
+            detail::throw_invalid("Accumulation window [", part.window_.x0, ", ", part.window_.x1, ") x [", part.window_.y0, ", ", part.window_.y1,
+                                  ") added to one of [", window_.x0, ", ", window_.x1, ") x [", window_.y0, ", ", window_.y1, ")");
+        for (int y = part.window_.y0; y < part.window_.y1; ++y)
+            for (int x = part.window_.x0; x < part.window_.x1; ++x) add(x, y, part.sums(x, y), part.weight(x, y));
+        reject(part.rejected());
+        if (part.overflowed()) overflowed_.store(true, std::memory_order_relaxed);
+        return *this;
+    }
+
+    /// The mean of channels first, first + 1, first + 2 over the window, per pixel:
+    /// sum / weight, 0 where the weight is 0.
+    [[nodiscard]] Film image(std::size_t first = 0) const
+    {
+        if (overflowed()) detail::throw_invalid("Accumulation overflowed (a sum passed 2^63): its image would be wrong");
+        if (first + 3 > channels_.size()) detail::throw_invalid("Accumulation image from channel ", first, " of ", channels_.size());
+        Film film(window_.width(), window_.height());
+        for (int y = window_.y0; y < window_.y1; ++y)
+            for (int x = window_.x0; x < window_.x1; ++x) {
+                const auto s = sums(x, y);
+                const std::uint64_t w = weight(x, y);
+                film.set(x - window_.x0, y - window_.y0,
+                         Rgb<float>(detail::mean(s[first], w), detail::mean(s[first + 1], w), detail::mean(s[first + 2], w)));
+            }
+        film.count_rejected(rejected());
+        return film;
+    }
+
+private:
+    [[nodiscard]] std::size_t index(int x, int y) const noexcept
+    {
+        PRISM_ASSERT(window_.contains(x, y));
+        return std::size_t(y - window_.y0) * std::size_t(window_.width()) + std::size_t(x - window_.x0);
+    }
+
+    int width_;
+    int height_;
+    PixelWindow window_;
+    std::vector<std::string> channels_;
+    std::vector<ExactSum> sums_;
+    std::vector<std::uint64_t> weights_;
+    std::atomic<std::size_t> rejected_{0};
+    std::atomic<bool> overflowed_{false};
+};
+
+} // namespace prism

@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: MIT
+#include <prism/io/exr.hpp>
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+
+#include <sys/stat.h>
+
+using namespace prism;
+
+namespace {
+
+std::filesystem::path scratch(const std::string& name)
+{
+    const auto folder = std::filesystem::temp_directory_path() / "prism-exr-test";
+    std::filesystem::create_directories(folder);
+    return folder / name;
+}
+
+/// What a command prints on stdout.
+std::string output_of(const std::string& command)
+{
+    std::string text;
+    if (std::FILE* pipe = popen(command.c_str(), "r")) {
+        std::array<char, 4096> buffer{};
+        while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) text.append(buffer.data(), n);
+        pclose(pipe);
+    }
+    return text;
+}
+
+} // namespace
+
+TEST_CASE("an EXR file reads back with its channels, data window and attributes, bit for bit")
+{
+    ExrImage image{7, 5, {2, 1, 6, 4}, {}, {{"prism.scene", "test"}, {"prism.seed", "42"}}};
+    std::vector<float> r(12), g(12), b(12);
+    std::vector<std::uint32_t> u(12);
+    for (std::size_t i = 0; i < 12; ++i) {
+        r[i] = float(i) * 0.1f;
+        g[i] = std::numeric_limits<float>::denorm_min() * float(i); // denormals survive
+        b[i] = 1e30f / float(i + 1);
+        u[i] = 0xfffffff0u + std::uint32_t(i);
+    }
+    image.channels = {{"R", r}, {"G", g}, {"B", b}, {"count", u}};
+    const auto path = scratch("round_trip.exr");
+    write_exr(image, path);
+    const ExrImage back = read_exr(path);
+    CHECK(back.width == 7);
+    CHECK(back.height == 5);
+    CHECK(back.window == PixelWindow{2, 1, 6, 4});
+    CHECK(back.attributes.at("prism.scene") == "test");
+    CHECK(back.attributes.at("prism.seed") == "42");
+    REQUIRE(back.find("R") != nullptr);
+    CHECK(std::get<std::vector<float>>(back.find("R")->values) == r);
+    CHECK(std::get<std::vector<float>>(back.find("G")->values) == g);
+    CHECK(std::get<std::vector<float>>(back.find("B")->values) == b);
+    CHECK(std::get<std::vector<std::uint32_t>>(back.find("count")->values) == u);
+    CHECK(back.find("A") == nullptr);
+
+    // OpenEXR's own tool reads the same windows and metadata.
+    if (std::system("command -v exrheader > /dev/null 2>&1") == 0) {
+        const std::string header = output_of("exrheader " + path.string());
+        CHECK(header.find("displayWindow (type box2i): (0 0) - (6 4)") != std::string::npos);
+        CHECK(header.find("dataWindow (type box2i): (2 1) - (5 3)") != std::string::npos);
+        CHECK(header.find("prism.scene (type string): \"test\"") != std::string::npos);
+        CHECK(header.find("count, 32-bit unsigned integer") != std::string::npos);
+        CHECK(header.find("zip, multi-scanline blocks") != std::string::npos);
+    } else {
+        MESSAGE("exrheader (Debian: openexr) is not installed: its check is skipped");
+    }
+}
+
+TEST_CASE("an Accumulation's exact sums go through an EXR file unchanged")
+{
+    Accumulation sums(9, 6, {3, 2, 8, 6}, {"R", "G", "B", "depth"});
+    for (int y = 2; y < 6; ++y)
+        for (int x = 3; x < 8; ++x) {
+            // Sums whose bits reach every one of the four words, some negative.
+            const ExactSum s[4] = {ExactSum::of(1e11 * x + 1e-12 * y), ExactSum::of(0x1p-64 * (x + 1)),
+                                   ExactSum::from_bits((Int128(x) << 100) + y), ExactSum::of(-2.5 * y)};
+            sums.add(x, y, s, (std::uint64_t(1) << 40) + std::uint64_t(x));
+        }
+    const auto path = scratch("sums.exr");
+    write_exr(to_exr(sums, true, {{"prism.scene", "sums"}}), path);
+    const ExrImage image = read_exr(path);
+    const Accumulation back = to_accumulation(image, {"R", "G", "B", "depth"});
+    CHECK(back.window() == sums.window());
+    for (int y = 2; y < 6; ++y)
+        for (int x = 3; x < 8; ++x) {
+            REQUIRE(std::equal(back.sums(x, y).begin(), back.sums(x, y).end(), sums.sums(x, y).begin()));
+            REQUIRE(back.weight(x, y) == sums.weight(x, y));
+        }
+    // The means are there for any viewer: depth -2.5 y over 2^40 + x samples.
+    const auto& depth = std::get<std::vector<float>>(image.find("depth")->values);
+    CHECK(depth[0] == float(-2.5 * 2 / double((std::uint64_t(1) << 40) + 3)));
+    // Without the sums, there is nothing to add up, and the error says so.
+    write_exr(to_exr(sums, false), path);
+    CHECK_THROWS_WITH_AS((void)to_accumulation(read_exr(path)), doctest::Contains("has no UINT channel 'weight.0'"), std::invalid_argument);
+}
+
+TEST_CASE("EXR errors name the file and the reason, and a failed write leaves no file")
+{
+    const auto missing = scratch("missing.exr");
+    std::filesystem::remove(missing);
+    const std::string missing_name = missing.string();
+    CHECK_THROWS_WITH_AS((void)read_exr(missing), doctest::Contains(missing_name.c_str()), std::runtime_error);
+    const auto junk = scratch("junk.exr");
+    std::ofstream(junk) << "not an EXR file";
+    const std::string junk_message = "cannot read '" + junk.string() + "'";
+    CHECK_THROWS_WITH_AS((void)read_exr(junk), doctest::Contains(junk_message.c_str()), std::runtime_error);
+    // A truncated file: the first half of a real one.
+    const auto whole = scratch("whole.exr"), first_half = scratch("half.exr");
+    write_exr(to_exr(Film(64, 64)), whole);
+    const auto size = std::filesystem::file_size(whole);
+    std::filesystem::copy_file(whole, first_half, std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::resize_file(first_half, size / 2);
+    CHECK_THROWS_WITH_AS((void)read_exr(first_half), doctest::Contains("cannot read"), std::runtime_error);
+
+    ExrImage bad{4, 4, {0, 0, 4, 4}, {{"R", std::vector<float>(15)}}, {}};
+    const auto target = scratch("bad.exr");
+    std::filesystem::remove(target);
+    CHECK_THROWS_WITH_AS(write_exr(bad, target), doctest::Contains("channel 'R' has 15 values for 16 pixels"), std::runtime_error);
+    CHECK(!std::filesystem::exists(target));
+    bad.channels = {{"R", std::vector<float>(16)}, {"R", std::vector<float>(16)}};
+    CHECK_THROWS_WITH_AS(write_exr(bad, target), doctest::Contains("two channels named 'R'"), std::runtime_error);
+    bad.window = {0, 0, 5, 4};
+    CHECK_THROWS_WITH_AS(write_exr(bad, target), doctest::Contains("data window"), std::runtime_error);
+    CHECK(!std::filesystem::exists(target));
+    CHECK_THROWS_WITH_AS(write_exr(to_exr(Film(2, 2)), std::filesystem::temp_directory_path()), doctest::Contains("is a directory"), std::runtime_error);
+}

@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+#include <prism/render/accumulation.hpp>
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+using namespace prism;
+
+TEST_CASE("ExactSum keeps every float sample from 2^-41 to 2^40 exactly, and rounds smaller ones to 2^-64")
+{
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> exponent(-41, 40);
+    for (int i = 0; i < 100000; ++i) {
+        const float x = float(std::exp2(exponent(random)));
+        REQUIRE(ExactSum::of(x).value() == double(x));
+        REQUIRE(ExactSum::of(-x).value() == -double(x));
+    }
+    CHECK(ExactSum::of(0x1p-64).bits() == 1);
+    CHECK(ExactSum::of(0x1p-66).bits() == 0);      // a quarter of the step: down
+    CHECK(ExactSum::of(0x3p-66).bits() == 1);      // three quarters: up
+    CHECK(ExactSum::of(0x1p-65).bits() == 1);      // a half: away from zero
+    CHECK(ExactSum::of(-0x1p-65).bits() == -1);
+    CHECK(ExactSum::takes(0x1p40 - 1));
+    CHECK(!ExactSum::takes(0x1p40));
+    CHECK(!ExactSum::takes(std::numeric_limits<double>::quiet_NaN()));
+    CHECK(!ExactSum::takes(std::numeric_limits<double>::infinity()));
+}
+
+TEST_CASE("ExactSum adds without rounding, so any order and grouping gives the same bits")
+{
+    // (2^40 - 1) + 2^-40 - (2^40 - 1) is 2^-40; in double the small term is lost (it
+    // needs 80 bits beside the large one), and the sum comes out 0.
+    const double big = 0x1p40 - 1, small = 0x1p-40;
+    ExactSum sum;
+    REQUIRE(sum.add(ExactSum::of(big)));
+    REQUIRE(sum.add(ExactSum::of(small)));
+    REQUIRE(sum.add(ExactSum::of(-big)));
+    CHECK(sum.value() == small);
+    CHECK((big + small) - big != small); // what a double sum gives
+
+    // A pixel's samples from 1e-10 to 1e10, summed whole, in two parts, and shuffled.
+    std::mt19937_64 random(3);
+    std::uniform_real_distribution<double> exponent(-10, 10);
+    std::vector<float> samples(4096);
+    for (float& s : samples) s = float(std::pow(10.0, exponent(random)));
+    const auto total = [](auto first, auto last) {
+        ExactSum s;
+        for (auto i = first; i != last; ++i) REQUIRE(s.add(ExactSum::of(*i)));
+        return s;
+    };
+    const ExactSum whole = total(samples.begin(), samples.end());
+    for (std::size_t cut : {1u, 1000u, 2047u, 4095u}) {
+        ExactSum parts = total(samples.begin(), samples.begin() + std::ptrdiff_t(cut));
+        REQUIRE(parts.add(total(samples.begin() + std::ptrdiff_t(cut), samples.end())));
+        CHECK(parts == whole);
+    }
+    std::shuffle(samples.begin(), samples.end(), random);
+    CHECK(total(samples.begin(), samples.end()) == whole);
+    // The same samples in double, in the two orders, differ: the reason for ExactSum.
+    double forward = 0, backward = 0;
+    std::sort(samples.begin(), samples.end());
+    for (float s : samples) forward += s;
+    for (auto s = samples.rbegin(); s != samples.rend(); ++s) backward += *s;
+    CHECK(forward != backward);
+}
+
+TEST_CASE("ExactSum and Accumulation refuse to overflow instead of wrapping")
+{
+    ExactSum s = ExactSum::from_bits(std::numeric_limits<Int128>::max() - 5);
+    CHECK(!s.add(ExactSum::from_bits(6)));
+    CHECK(s.bits() == std::numeric_limits<Int128>::max() - 5); // unchanged
+    Accumulation sums(1, 1, {0, 0, 1, 1});
+    const ExactSum near[3] = {ExactSum::from_bits(std::numeric_limits<Int128>::max() - 5), {}, {}};
+    sums.add(0, 0, near, 1);
+    CHECK(!sums.overflowed());
+    CHECK_NOTHROW((void)sums.image());
+    sums.add(0, 0, near, 1);
+    CHECK(sums.overflowed());
+    CHECK_THROWS_WITH_AS((void)sums.image(), doctest::Contains("overflowed"), std::invalid_argument);
+}
+
+TEST_CASE("an Accumulation stitches windows of one image and refuses what does not fit")
+{
+    // A 5 x 4 image whose pixel (x, y) is x + 10 y, made in two windows and whole.
+    const auto make = [](PixelWindow w) {
+        Accumulation a(5, 4, w);
+        for (int y = w.y0; y < w.y1; ++y)
+            for (int x = w.x0; x < w.x1; ++x) {
+                const ExactSum v = ExactSum::of(3.0 * (x + 10 * y)); // three samples' sum
+                const ExactSum s[3] = {v, v, ExactSum::of(0.5)};
+                a.add(x, y, s, 3);
+            }
+        return a;
+    };
+    Accumulation whole(5, 4, PixelWindow::whole(5, 4));
+    whole += make({0, 0, 5, 1});
+    whole += make({0, 1, 5, 4});
+    const Film image = whole.image();
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 5; ++x) {
+            CHECK(image.at(x, y).x == float(x + 10 * y));
+            CHECK(image.at(x, y).z == float(0.5 / 3.0));
+        }
+    const Film crop = make({1, 2, 3, 4}).image();
+    CHECK(crop.width() == 2);
+    CHECK(crop.height() == 2);
+    CHECK(crop.at(0, 0) == image.at(1, 2));
+    CHECK(crop.at(1, 1) == image.at(2, 3));
+
+    Accumulation part(5, 4, {1, 1, 3, 3});
+    CHECK_THROWS_WITH_AS(part += make({0, 0, 5, 1}), doctest::Contains("window [0, 5) x [0, 1) added to one of [1, 3) x [1, 3)"), std::invalid_argument);
+    Accumulation other_size(6, 4, {0, 0, 5, 4});
+    CHECK_THROWS_WITH_AS(other_size += make({0, 0, 5, 1}), doctest::Contains("5 x 4 image added to one of 6 x 4"), std::invalid_argument);
+    Accumulation more(5, 4, {0, 0, 5, 4}, {"R", "G", "B", "depth"});
+    CHECK_THROWS_WITH_AS(more += make({0, 0, 5, 1}), doctest::Contains("other channels"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Accumulation(5, 4, {0, 0, 6, 4}), doctest::Contains("window [0, 6) x [0, 4) must be a non-empty part of the 5 x 4 image"),
+                         std::invalid_argument);
+    CHECK_THROWS_AS(Accumulation(5, 4, {2, 0, 2, 4}), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Accumulation(5, 4, {0, 0, 5, 4}, {"G", "R", "B"}), doctest::Contains("must begin with R, G, B"), std::invalid_argument);
+    // A pixel no part reached has weight 0 and reads 0.
+    CHECK(part.image().at(0, 0) == Rgb<float>(0.0f));
+}
