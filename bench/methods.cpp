@@ -29,7 +29,7 @@ template <class SceneT>
 double render_one(const SceneT& scene, examples::Options options, const std::string& out)
 {
     const auto start = std::chrono::steady_clock::now();
-    const prism::Film film = examples::render_by_method("bench", scene, scenes::cornell_camera<float>(), options);
+    const prism::Film film = examples::render_by_method("bench", scene, scenes::cornell_camera<float>(), options).image();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     prism::write_pfm(film, out);
     return seconds;

@@ -41,7 +41,7 @@ int main(int argc, char** argv)
         const Camera<float> camera{.position = {4.5f, 4.2f, 6.5f}, .look_at = {0.8f, 0.3f, 0.2f}, .up = {0, 1, 0}, .fov = 45};
         if (whitted) {
             const Whitted integrator(scene, {.max_depth = 10});
-            examples::save(examples::timed_render("caustic_sphere", camera, integrator, options.render), options);
+            examples::save(examples::timed_render("caustic_sphere", camera, integrator, options), options);
             return 0;
         }
         examples::save(examples::render_by_method("caustic_sphere", scene, camera, options), options);

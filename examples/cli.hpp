@@ -412,13 +412,17 @@ inline void save(const Rendered& rendered, const Options& options, bool pfm = fa
 #endif
 }
 
-/// Render and report the render time (camera rays to finished sums) on stdout.
+/// Render with the options' settings and report the render time (camera rays to
+/// finished sums) on stdout. Where EXR is written, with the layers the integrator has
+/// (render_layers: the image's bits are the same).
 template <class Integrator>
 Rendered timed_render(const std::string& name, const prism::Camera<typename Integrator::scalar_type>& camera, const Integrator& integrator,
-                      const prism::RenderConfig& config)
+                      const Options& options)
 {
+    const prism::RenderConfig& config = options.render;
     const auto start = std::chrono::steady_clock::now();
-    prism::Accumulation sums = prism::render_sums(camera, integrator, config);
+    prism::Accumulation sums =
+        options.exr || options.part ? prism::render_layers(camera, integrator, config) : prism::render_sums(camera, integrator, config);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s: %dx%d, %d spp, render time %.4f s\n", name.c_str(), config.width, config.height, config.spp, seconds);
     return {name, std::move(sums), seconds};

@@ -15,7 +15,7 @@ int main(int argc, char** argv)
             return 0;
         const auto scene = scenes::cornell_scene<float>();
         const prism::Whitted integrator(scene, {.max_depth = 10});
-        const examples::Rendered rendered = examples::timed_render("cornell", scenes::cornell_camera<float>(), integrator, options.render);
+        const examples::Rendered rendered = examples::timed_render("cornell", scenes::cornell_camera<float>(), integrator, options);
         examples::save(rendered, options, true);
         if (!options.povray.empty()) examples::write_comparison(rendered.image(), options.povray, options.out / "cornell_vs_povray.png");
         return 0;

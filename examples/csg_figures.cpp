@@ -27,7 +27,7 @@ void figure(const std::string& name, S shape, M material, const examples::Option
     scene.background = {0.55f, 0.65f, 0.8f};
     const Camera<T> camera{.position = {0, 2.2f, 5.5f}, .look_at = {0, 1, 0}, .fov = 45};
     const Whitted integrator(scene);
-    examples::save(examples::timed_render("figure_" + name, camera, integrator, options.render), options);
+    examples::save(examples::timed_render("figure_" + name, camera, integrator, options), options);
 }
 
 } // namespace

@@ -15,7 +15,7 @@ int main(int argc, char** argv)
         if (!examples::parse(argc, argv, options, "CSG and general quadrics, as in shared/scenes/csg_quadrics.pov", {.povray = true})) return 0;
         const auto scene = scenes::csg_quadrics_scene<float>();
         const prism::Whitted integrator(scene, {.max_depth = 5});
-        const examples::Rendered rendered = examples::timed_render("csg_quadrics", scenes::csg_quadrics_camera<float>(), integrator, options.render);
+        const examples::Rendered rendered = examples::timed_render("csg_quadrics", scenes::csg_quadrics_camera<float>(), integrator, options);
         examples::save(rendered, options);
         if (!options.povray.empty()) examples::write_comparison(rendered.image(), options.povray, options.out / "csg_quadrics_vs_povray.png");
         return 0;

@@ -65,11 +65,11 @@ int main(int argc, char** argv)
         // Nested: the water overlaps the glass's inner wall and base by 1 mm.
         const auto nested = scene_with(water(T(0.921), T(0.149)));
         const Whitted integrator(nested, {.max_depth = 16});
-        examples::save(examples::timed_render("glass_of_water", camera, integrator, options.render), options);
+        examples::save(examples::timed_render("glass_of_water", camera, integrator, options), options);
         // Without nesting: the water stops 1 mm short of the glass, leaving an air gap.
         const auto gap = scene_with(water(T(0.919), T(0.151)));
         const Whitted gap_integrator(gap, {.max_depth = 16});
-        examples::save(examples::timed_render("glass_of_water_air_gap", camera, gap_integrator, options.render), options);
+        examples::save(examples::timed_render("glass_of_water_air_gap", camera, gap_integrator, options), options);
         return 0;
     });
 }

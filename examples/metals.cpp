@@ -49,10 +49,10 @@ int main(int argc, char** argv)
 
         const auto scene = metal_row(measured);
         const prism::Whitted integrator(scene);
-        examples::save(examples::timed_render("metals", camera, integrator, options.render), options);
+        examples::save(examples::timed_render("metals", camera, integrator, options), options);
         const auto plain_scene = metal_row(plain);
         const prism::Whitted plain_integrator(plain_scene);
-        examples::save(examples::timed_render("metals_plain", camera, plain_integrator, options.render), options);
+        examples::save(examples::timed_render("metals_plain", camera, plain_integrator, options), options);
         return 0;
     });
 }

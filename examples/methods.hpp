@@ -67,7 +67,7 @@ Rendered render_by_method(const std::string& name, const SceneT& scene, const pr
         mapper.cache_irradiance(camera, options.render);
         std::printf("%s: irradiance cache of %zu records in %.3f s\n", name.c_str(), mapper.irradiance_cache().size(), seconds() - traced);
     }
-    Rendered rendered = timed_render(name, camera, mapper, options.render);
+    Rendered rendered = timed_render(name, camera, mapper, options);
     std::printf("%s: %s, total %.3f s\n", name.c_str(), method.c_str(), seconds());
     rendered.seconds = seconds();
     return rendered;

@@ -69,9 +69,9 @@ int main(int argc, char** argv)
                                                 .region = {{T(-5000), T(-1), T(-5000)}, {T(5000), T(4), T(5000)}},
                                                 .stepping = {.tolerance = T(1e-5), .first_step = T(1), .max_step = T(25)}};
         const Whitted integrator(scene, {}, hot_air);
-        examples::save(examples::timed_render("mirage", camera, integrator, options.render), options);
+        examples::save(examples::timed_render("mirage", camera, integrator, options), options);
         const Whitted straight(scene);
-        examples::save(examples::timed_render("mirage_plain", camera, straight, options.render), options);
+        examples::save(examples::timed_render("mirage_plain", camera, straight, options), options);
 
         const Camera<T> sea_camera{.position = {0, T(3), 0}, .look_at = {T(8000), T(14), T(0)}, .up = {0, 1, 0}, .fov = T(2)};
         const auto sea = sea_scene();
@@ -79,9 +79,9 @@ int main(int argc, char** argv)
                                                                .region = {{T(-1000), T(-1), T(-9000)}, {T(9000), T(60), T(9000)}},
                                                                .stepping = {.tolerance = T(1e-3), .first_step = T(5), .max_step = T(400)}};
         const Whitted looming(sea, {}, inversion);
-        examples::save(examples::timed_render("superior_mirage", sea_camera, looming, options.render), options);
+        examples::save(examples::timed_render("superior_mirage", sea_camera, looming, options), options);
         const Whitted sea_straight(sea);
-        examples::save(examples::timed_render("superior_mirage_plain", sea_camera, sea_straight, options.render), options);
+        examples::save(examples::timed_render("superior_mirage_plain", sea_camera, sea_straight, options), options);
         return 0;
     });
 }

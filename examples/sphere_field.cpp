@@ -42,7 +42,7 @@ int main(int argc, char** argv)
         scene.ambient = Rgb<T>(T(0.08));
         const Camera<T> camera{.position = {0, T(1.6), T(-6)}, .look_at = {0, T(0.2), T(6)}, .up = {0, 1, 0}, .fov = 50};
         const Whitted integrator(scene, {.max_depth = 6});
-        examples::save(examples::timed_render("sphere_field", camera, integrator, options.render), options);
+        examples::save(examples::timed_render("sphere_field", camera, integrator, options), options);
         return 0;
     });
 }

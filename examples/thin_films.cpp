@@ -88,10 +88,10 @@ int main(int argc, char** argv)
         const Bubble big(T(1), T(1.33), SoapFilm{big_film, T(20), T(900)}), small(T(1), T(1.33), SoapFilm{small_film, T(20), T(900)});
         const auto bubbles = bubble_scene(big, small);
         const Whitted bubble_integrator(bubbles, {.max_depth = 12});
-        examples::save(examples::timed_render("soap_bubble", bubble_camera, bubble_integrator, options.render), options);
+        examples::save(examples::timed_render("soap_bubble", bubble_camera, bubble_integrator, options), options);
         const auto plain_bubbles = bubble_scene(IncoherentFilm{}, IncoherentFilm{});
         const Whitted plain_bubble_integrator(plain_bubbles, {.max_depth = 12});
-        examples::save(examples::timed_render("soap_bubble_plain", bubble_camera, plain_bubble_integrator, options.render), options);
+        examples::save(examples::timed_render("soap_bubble_plain", bubble_camera, plain_bubble_integrator, options), options);
 
         // Anodised titanium: a titanium dioxide film (n = 2.4) 0, 60, 100 and 150 nm thick
         // over titanium (n = 2.16 + 2.93 i at 550 nm, Johnson & Christy 1974, one index for
@@ -106,7 +106,7 @@ int main(int argc, char** argv)
             Anodised{ThinFilmConductor<T>(T(2.4), UniformThickness<T>{150}, titanium)}};
         const auto row = scenes::sphere_row(anodised);
         const Whitted row_integrator(row);
-        examples::save(examples::timed_render("anodised", row_camera, row_integrator, options.render), options);
+        examples::save(examples::timed_render("anodised", row_camera, row_integrator, options), options);
         return 0;
     });
 }

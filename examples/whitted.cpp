@@ -16,7 +16,7 @@ int main(int argc, char** argv)
             return 0;
         const auto scene = scenes::whitted_scene<float>();
         const prism::Whitted integrator(scene);
-        examples::save(examples::timed_render("whitted", scenes::whitted_camera<float>(), integrator, options.render), options);
+        examples::save(examples::timed_render("whitted", scenes::whitted_camera<float>(), integrator, options), options);
         return 0;
     });
 }

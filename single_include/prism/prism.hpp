@@ -8032,6 +8032,104 @@ private:
 
 } // namespace prism
 
+// ---- prism/render/layers.hpp ----
+// The layers a render can write beside its image (EXR's arbitrary output variables):
+// per sample, what the camera ray meets first (its albedo, shading normal and distance,
+// and whether it meets anything at all: coverage), and, for an integrator that splits
+// its light by where it came from, the parts (the photon mapper's direct light,
+// caustics and indirect light). They are summed per pixel exactly as the image is
+// (render/accumulation.hpp), so a crop or a range of passes of them adds up too.
+
+
+#include <concepts>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace prism {
+
+/// The first surface a camera ray meets.
+template <Scalar T>
+struct SurfaceSample {
+    Rgb<T> albedo;  ///< a diffuse lobe's reflectance there; 1 for a surface with delta lobes only (glass, mirrors)
+    Vec3<T> normal; ///< the shading normal, facing the ray
+    T distance;     ///< the path's length from the camera's pinhole (along a curved ray in graded air)
+};
+
+/// What `ray` meets first in `scene` through `air` (straight or graded), as an
+/// integrator that starts its camera rays in that air sees it.
+template <class SceneT, class Air>
+[[nodiscard]] std::optional<SurfaceSample<typename SceneT::scalar_type>> first_surface(const SceneT& scene, const Air& air,
+                                                                                      const Ray<typename SceneT::scalar_type>& ray) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    Ray<T> segment = ray;
+    T path = 0;
+    const auto hit = first_hit_in_air(scene, air, ray, segment, &path);
+    if (!hit) return std::nullopt;
+    const Rgb<T> albedo = scene.visit_material(*hit, [&]<class M>(const M& material) {
+        if constexpr (has_diffuse<M>) return diffuse_response(material, hit->crossing).albedo;
+        else return Rgb<T>(T(1));
+    });
+    return SurfaceSample<T>{albedo, hit->crossing.facing_shading(), path};
+}
+
+/// Radiance split by the light's last stretch before the camera path's diffuse surface:
+/// straight from a light (shadow rays) or the background, through specular surfaces
+/// from a light (caustics), or off other diffuse surfaces (indirect).
+template <Scalar T>
+struct LightParts {
+    Rgb<T> direct{T(0)};
+    Rgb<T> caustic{T(0)};
+    Rgb<T> indirect{T(0)};
+
+    [[nodiscard]] constexpr Rgb<T> sum() const noexcept { return direct + caustic + indirect; }
+    constexpr LightParts& operator+=(const LightParts& o) noexcept
+    {
+        direct += o.direct;
+        caustic += o.caustic;
+        indirect += o.indirect;
+        return *this;
+    }
+    constexpr LightParts& operator*=(const Rgb<T>& k) noexcept
+    {
+        direct *= k;
+        caustic *= k;
+        indirect *= k;
+        return *this;
+    }
+    [[nodiscard]] friend constexpr LightParts operator*(const Rgb<T>& k, LightParts p) noexcept { return p *= k; }
+};
+
+/// An integrator that can say what its camera rays meet first (render_layers' surface
+/// layers).
+template <class I>
+concept SeesSurfaces = requires(const I& integrator, const Ray<typename I::scalar_type>& ray) {
+    { integrator.first_surface(ray) } -> std::same_as<std::optional<SurfaceSample<typename I::scalar_type>>>;
+};
+
+/// An integrator that splits its radiance into LightParts (whose sum is its radiance).
+template <class I>
+concept SplitsLight = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
+    { integrator.radiance_parts(ray, rng) } -> std::same_as<LightParts<typename I::scalar_type>>;
+};
+
+/// The channels render_layers writes for an integrator: R, G, B; A (the fraction of
+/// samples that met a surface); albedo, normal and Z (distance), each summed over the
+/// samples that met one, so that albedo / A is the mean albedo of those; and the
+/// light's parts where the integrator splits it.
+template <class I>
+[[nodiscard]] std::vector<std::string> layer_channels()
+{
+    std::vector<std::string> names{"R", "G", "B"};
+    if constexpr (SeesSurfaces<I>) names.insert(names.end(), {"A", "albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y", "normal.Z", "Z"});
+    if constexpr (SplitsLight<I>)
+        names.insert(names.end(), {"direct.R", "direct.G", "direct.B", "caustic.R", "caustic.G", "caustic.B", "indirect.R", "indirect.G", "indirect.B"});
+    return names;
+}
+
+} // namespace prism
+
 // ---- prism/scene/camera.hpp ----
 // Camera: a pinhole camera as a plain struct, and the rays it shoots.
 
@@ -8238,12 +8336,37 @@ template <Scalar T>
     return config.passes;
 }
 
-/// Render the config's window and samples, handing each pixel's exact sums to
-/// `store(x, y, sums, samples)` (one thread per pixel; any pixel on any thread).
-template <Integrator I, class Store>
-void render_pixels(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config, Store&& store)
+/// Add a radiance sample to sums [first, first + 3): radiance is never negative, so a
+/// channel that is NaN, infinite, < 0 or past ExactSum::limit adds 0 and is counted.
+template <std::size_t N, Scalar T>
+[[nodiscard]] std::size_t add_radiance(std::array<ExactSum, N>& sums, std::size_t first, const Rgb<T>& radiance) noexcept
 {
-    using T = typename I::scalar_type;
+    std::size_t rejected = 0;
+    for (int c = 0; c < 3; ++c) {
+        const double v = double(radiance[c]);
+        if (v >= 0.0 && ExactSum::takes(v)) (void)sums[first + std::size_t(c)].add(ExactSum::of(v));
+        else ++rejected;
+    }
+    return rejected;
+}
+
+/// Add a signed sample (a normal's component) to sums[i]: one not finite, or past
+/// ExactSum::limit, adds 0 and is counted.
+template <std::size_t N>
+[[nodiscard]] std::size_t add_value(std::array<ExactSum, N>& sums, std::size_t i, double value) noexcept
+{
+    if (!ExactSum::takes(value)) return 1;
+    (void)sums[i].add(ExactSum::of(value));
+    return 0;
+}
+
+/// Render the config's window and samples: `sample(ray, rng, sums)` adds one sample to
+/// a pixel's N sums and returns how many values it rejected; `store(x, y, sums,
+/// samples, rejected)` then takes the pixel (one thread per pixel; any pixel on any
+/// thread).
+template <std::size_t N, Scalar T, class Sample, class Store>
+void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&& sample, Store&& store)
+{
     if (config.tile_size < 1) throw_invalid("RenderConfig tile_size must be >= 1, got ", config.tile_size);
     const PassRange samples = render_passes(config);
     const CameraRays<T> rays = camera.rays(config.width, config.height);
@@ -8269,19 +8392,12 @@ void render_pixels(const Camera<typename I::scalar_type>& camera, const I& integ
             for (int y = y0; y < y1; ++y)
                 for (int x = x0; x < x1; ++x) {
                     const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
-                    std::array<ExactSum, 3> sum{};
+                    std::array<ExactSum, N> sum{};
                     std::size_t rejected = 0;
                     for (std::uint64_t s = samples.first; s < samples.last; ++s) {
                         Pcg32 rng(sample_seed(config.seed, s), pixel);
                         const auto [dx, dy] = pixel_sample<T>(int(s), config.spp, rng, config.single_sample_at_centre);
-                        const Rgb<T> radiance = integrator.radiance(rays.ray(T(x) + dx, T(y) + dy), rng);
-                        for (int c = 0; c < 3; ++c) {
-                            // Radiance is never negative: NaN, Inf, < 0 or past ExactSum's
-                            // limit are counted and add 0.
-                            const double v = double(radiance[c]);
-                            if (v >= 0.0 && ExactSum::takes(v)) (void)sum[std::size_t(c)].add(ExactSum::of(v));
-                            else ++rejected;
-                        }
+                        rejected += sample(rays.ray(T(x) + dx, T(y) + dy), rng, sum);
                     }
                     store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
                 }
@@ -8328,10 +8444,14 @@ void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& came
         detail::throw_invalid("render_into: the Accumulation (", sums.width(), " x ", sums.height(), ", window [", sums.window().x0, ", ",
                               sums.window().x1, ") x [", sums.window().y0, ", ", sums.window().y1, ")) does not hold the render's window");
     if (sums.channels().size() != 3) detail::throw_invalid("render_into renders R, G, B only, the Accumulation has ", sums.channels().size(), " channels");
-    detail::render_pixels(camera, integrator, config, [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
-        sums.add(x, y, sum, weight);
-        if (rejected != 0) sums.reject(rejected);
-    });
+    using T = typename I::scalar_type;
+    detail::render_pixels<3>(
+        camera, config,
+        [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
+        [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+            sums.add(x, y, sum, weight);
+            if (rejected != 0) sums.reject(rejected);
+        });
 }
 
 /// A part of an image as exact sums (its crop window, its samples): add the parts of a
@@ -8344,6 +8464,46 @@ template <Integrator I>
     return sums;
 }
 
+/// A part of an image with its layers (render/layers.hpp): R, G, B and, as the
+/// integrator allows, coverage, albedo, normal and distance of the first surface, and
+/// the light's parts; layer_channels<I>() names them. Its R, G, B are render_sums' bits:
+/// the layers are worked out beside the image, from the same camera rays.
+template <Integrator I>
+[[nodiscard]] Accumulation render_layers(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
+{
+    using T = typename I::scalar_type;
+    constexpr std::size_t surface = SeesSurfaces<I> ? 8 : 0, parts = SplitsLight<I> ? 9 : 0, n = 3 + surface + parts;
+    Accumulation sums(config.width, config.height, detail::render_window(config), layer_channels<I>());
+    detail::render_pixels<n>(
+        camera, config,
+        [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, n>& sum) {
+            std::size_t rejected = 0;
+            if constexpr (SplitsLight<I>) {
+                const LightParts<T> light = integrator.radiance_parts(ray, rng);
+                rejected += detail::add_radiance(sum, 0, light.sum());
+                rejected += detail::add_radiance(sum, 3 + surface, light.direct);
+                rejected += detail::add_radiance(sum, 6 + surface, light.caustic);
+                rejected += detail::add_radiance(sum, 9 + surface, light.indirect);
+            } else {
+                rejected += detail::add_radiance(sum, 0, integrator.radiance(ray, rng));
+            }
+            if constexpr (SeesSurfaces<I>) {
+                if (const auto seen = integrator.first_surface(ray)) {
+                    rejected += detail::add_value(sum, 3, 1.0);
+                    rejected += detail::add_radiance(sum, 4, seen->albedo);
+                    for (int c = 0; c < 3; ++c) rejected += detail::add_value(sum, 7 + std::size_t(c), double(seen->normal[c]));
+                    rejected += detail::add_value(sum, 10, double(seen->distance));
+                }
+            }
+            return rejected;
+        },
+        [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+            sums.add(x, y, sum, weight);
+            if (rejected != 0) sums.reject(rejected);
+        });
+    return sums;
+}
+
 /// Render an image: the config's crop window (the whole image by default), each pixel
 /// the mean of its samples. The same scene, seed and spp give the same bits for any
 /// thread count, crop or split of the samples: every sample draws from its own random
@@ -8353,10 +8513,14 @@ template <Integrator I>
 {
     const PixelWindow window = detail::render_window(config);
     Film film(window.width(), window.height());
-    detail::render_pixels(camera, integrator, config, [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
-        film.set(x - window.x0, y - window.y0, Rgb<float>(detail::mean(sum[0], weight), detail::mean(sum[1], weight), detail::mean(sum[2], weight)));
-        if (rejected != 0) film.count_rejected(rejected);
-    });
+    using T = typename I::scalar_type;
+    detail::render_pixels<3>(
+        camera, config,
+        [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
+        [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+            film.set(x - window.x0, y - window.y0, Rgb<float>(detail::mean(sum[0], weight), detail::mean(sum[1], weight), detail::mean(sum[2], weight)));
+            if (rejected != 0) film.count_rejected(rejected);
+        });
     return film;
 }
 
@@ -8588,6 +8752,9 @@ public:
         return sum;
     }
 
+    /// What a camera ray meets first (render_layers).
+    [[nodiscard]] std::optional<SurfaceSample<T>> first_surface(const Ray<T>& ray) const noexcept { return prism::first_surface(*scene_, air_, ray); }
+
 private:
     static SpectralBands<T> checked_bands(int count)
     {
@@ -8772,7 +8939,14 @@ public:
         }
     }
 
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), {}); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return radiance_parts(ray, rng).sum(); }
+
+    /// The radiance along a camera ray by where its light came from last: the lights by
+    /// shadow rays (and the background), the caustic map, the indirect estimate.
+    [[nodiscard]] LightParts<T> radiance_parts(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), {}); }
+
+    /// What a camera ray meets first (render_layers).
+    [[nodiscard]] std::optional<SurfaceSample<T>> first_surface(const Ray<T>& ray) const noexcept { return prism::first_surface(*scene_, air_, ray); }
 
     /// What the nearest global photons say about the light's visibility at p (normal n
     /// facing the viewer): true when the `visibility_k` nearest within global.radius
@@ -8803,33 +8977,34 @@ private:
 
     /// Radiance along the ray for light of one wavelength (nanometres), or of all (0), in
     /// the transmissive objects `media` (medium/nesting.hpp).
-    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength, const MediumStack& media) const noexcept
+    [[nodiscard]] LightParts<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength, const MediumStack& media) const noexcept
     {
         Ray<T> segment = ray;
         const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
-        if (!hit) return scene_->background;
+        if (!hit) return {.direct = scene_->background};
         return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
     }
 
     template <class M>
-    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight, Pcg32& rng,
-                               T wavelength, const MediumStack& media) const noexcept
+    [[nodiscard]] LightParts<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight, Pcg32& rng,
+                                      T wavelength, const MediumStack& media) const noexcept
     {
         const Crossing<T>& hit = h.crossing;
         const Vec3<T>& d = ray.direction;
         const Vec3<T> n = hit.facing_normal();
-        Rgb<T> radiance{T(0)};
+        LightParts<T> radiance;
         if constexpr (has_diffuse<M>) {
             const Vec3<float> p(hit.point), nf(n);
-            Rgb<T> irradiance = direct(hit) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
+            const Rgb<T> brdf = diffuse_response(material, hit).brdf();
+            radiance.direct = brdf * direct(hit);
+            radiance.caustic = brdf * Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
             if (config_.gather_rays > 0) {
                 // The final gather (and the cache of its results) is over the shading normal's hemisphere.
                 const Vec3<T> n_shading = hit.facing_shading();
                 const std::optional<Rgb<T>> cached = media.empty() ? cache_.irradiance(hit.point, n_shading) : std::nullopt;
-                irradiance += cached ? *cached : gather(hit, n_shading, rng, media.empty(), gather_cells_m_, gather_cells_n_).irradiance;
+                radiance.indirect = brdf * (cached ? *cached : gather(hit, n_shading, rng, media.empty(), gather_cells_m_, gather_cells_n_).irradiance);
             }
-            else irradiance += Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
-            radiance += diffuse_response(material, hit).brdf() * irradiance;
+            else radiance.indirect = brdf * Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
         }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
@@ -8853,8 +9028,9 @@ private:
                 }
             }
         }
-        attenuate_segment(*scene_, media, material, hit, ray, radiance);
-        return radiance;
+        Rgb<T> kept(T(1)); // what the way here keeps of the light (Beer-Lambert), once for the three parts
+        attenuate_segment(*scene_, media, material, hit, ray, kept);
+        return radiance *= kept;
     }
 
     /// Irradiance from the lights by shadow rays (glass opaque), or by what the photons
@@ -9117,6 +9293,9 @@ public:
     /// Radiance arriving along the ray (its direction must be unit length).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
+
+    /// What a camera ray meets first (render_layers).
+    [[nodiscard]] std::optional<SurfaceSample<T>> first_surface(const Ray<T>& ray) const noexcept { return prism::first_surface(*scene_, air_, ray); }
 
     [[nodiscard]] const Config& config() const noexcept { return config_; }
 

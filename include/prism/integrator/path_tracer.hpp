@@ -25,6 +25,7 @@
 #include <prism/material/scattering.hpp>
 #include <prism/medium/air.hpp>
 #include <prism/photon/random_walk.hpp>
+#include <prism/render/layers.hpp>
 #include <prism/spectrum/bands.hpp>
 
 namespace prism {
@@ -77,6 +78,9 @@ public:
                     });
         return sum;
     }
+
+    /// What a camera ray meets first (render_layers).
+    [[nodiscard]] std::optional<SurfaceSample<T>> first_surface(const Ray<T>& ray) const noexcept { return prism::first_surface(*scene_, air_, ray); }
 
 private:
     static SpectralBands<T> checked_bands(int count)

@@ -35,6 +35,7 @@
 #include <prism/optics/refract.hpp>
 #include <prism/photon/photon_tracer.hpp>
 #include <prism/photon/random_walk.hpp>
+#include <prism/render/layers.hpp>
 #include <prism/render/render.hpp>
 #include <prism/scene/camera.hpp>
 
@@ -183,7 +184,14 @@ public:
         }
     }
 
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), {}); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return radiance_parts(ray, rng).sum(); }
+
+    /// The radiance along a camera ray by where its light came from last: the lights by
+    /// shadow rays (and the background), the caustic map, the indirect estimate.
+    [[nodiscard]] LightParts<T> radiance_parts(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), {}); }
+
+    /// What a camera ray meets first (render_layers).
+    [[nodiscard]] std::optional<SurfaceSample<T>> first_surface(const Ray<T>& ray) const noexcept { return prism::first_surface(*scene_, air_, ray); }
 
     /// What the nearest global photons say about the light's visibility at p (normal n
     /// facing the viewer): true when the `visibility_k` nearest within global.radius
@@ -214,33 +222,34 @@ private:
 
     /// Radiance along the ray for light of one wavelength (nanometres), or of all (0), in
     /// the transmissive objects `media` (medium/nesting.hpp).
-    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength, const MediumStack& media) const noexcept
+    [[nodiscard]] LightParts<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength, const MediumStack& media) const noexcept
     {
         Ray<T> segment = ray;
         const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
-        if (!hit) return scene_->background;
+        if (!hit) return {.direct = scene_->background};
         return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
     }
 
     template <class M>
-    [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight, Pcg32& rng,
-                               T wavelength, const MediumStack& media) const noexcept
+    [[nodiscard]] LightParts<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight, Pcg32& rng,
+                                      T wavelength, const MediumStack& media) const noexcept
     {
         const Crossing<T>& hit = h.crossing;
         const Vec3<T>& d = ray.direction;
         const Vec3<T> n = hit.facing_normal();
-        Rgb<T> radiance{T(0)};
+        LightParts<T> radiance;
         if constexpr (has_diffuse<M>) {
             const Vec3<float> p(hit.point), nf(n);
-            Rgb<T> irradiance = direct(hit) + Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
+            const Rgb<T> brdf = diffuse_response(material, hit).brdf();
+            radiance.direct = brdf * direct(hit);
+            radiance.caustic = brdf * Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
             if (config_.gather_rays > 0) {
                 // The final gather (and the cache of its results) is over the shading normal's hemisphere.
                 const Vec3<T> n_shading = hit.facing_shading();
                 const std::optional<Rgb<T>> cached = media.empty() ? cache_.irradiance(hit.point, n_shading) : std::nullopt;
-                irradiance += cached ? *cached : gather(hit, n_shading, rng, media.empty(), gather_cells_m_, gather_cells_n_).irradiance;
+                radiance.indirect = brdf * (cached ? *cached : gather(hit, n_shading, rng, media.empty(), gather_cells_m_, gather_cells_n_).irradiance);
             }
-            else irradiance += Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
-            radiance += diffuse_response(material, hit).brdf() * irradiance;
+            else radiance.indirect = brdf * Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
         }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
@@ -264,8 +273,9 @@ private:
                 }
             }
         }
-        attenuate_segment(*scene_, media, material, hit, ray, radiance);
-        return radiance;
+        Rgb<T> kept(T(1)); // what the way here keeps of the light (Beer-Lambert), once for the three parts
+        attenuate_segment(*scene_, media, material, hit, ray, kept);
+        return radiance *= kept;
     }
 
     /// Irradiance from the lights by shadow rays (glass opaque), or by what the photons

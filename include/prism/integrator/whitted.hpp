@@ -23,6 +23,7 @@
 #include <prism/medium/air.hpp>
 #include <prism/medium/nesting.hpp>
 #include <prism/optics/refract.hpp>
+#include <prism/render/layers.hpp>
 #include <prism/scene/hit.hpp>
 #include <prism/spectrum/bands.hpp>
 
@@ -59,6 +60,9 @@ public:
     /// Radiance arriving along the ray (its direction must be unit length).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
+
+    /// What a camera ray meets first (render_layers).
+    [[nodiscard]] std::optional<SurfaceSample<T>> first_surface(const Ray<T>& ray) const noexcept { return prism::first_surface(*scene_, air_, ray); }
 
     [[nodiscard]] const Config& config() const noexcept { return config_; }
 

@@ -10,6 +10,7 @@
 #include <prism/core/rng.hpp>
 #include <prism/render/accumulation.hpp>
 #include <prism/render/film.hpp>
+#include <prism/render/layers.hpp>
 #include <prism/scene/camera.hpp>
 
 #include <algorithm>
@@ -108,12 +109,37 @@ template <Scalar T>
     return config.passes;
 }
 
-/// Render the config's window and samples, handing each pixel's exact sums to
-/// `store(x, y, sums, samples)` (one thread per pixel; any pixel on any thread).
-template <Integrator I, class Store>
-void render_pixels(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config, Store&& store)
+/// Add a radiance sample to sums [first, first + 3): radiance is never negative, so a
+/// channel that is NaN, infinite, < 0 or past ExactSum::limit adds 0 and is counted.
+template <std::size_t N, Scalar T>
+[[nodiscard]] std::size_t add_radiance(std::array<ExactSum, N>& sums, std::size_t first, const Rgb<T>& radiance) noexcept
 {
-    using T = typename I::scalar_type;
+    std::size_t rejected = 0;
+    for (int c = 0; c < 3; ++c) {
+        const double v = double(radiance[c]);
+        if (v >= 0.0 && ExactSum::takes(v)) (void)sums[first + std::size_t(c)].add(ExactSum::of(v));
+        else ++rejected;
+    }
+    return rejected;
+}
+
+/// Add a signed sample (a normal's component) to sums[i]: one not finite, or past
+/// ExactSum::limit, adds 0 and is counted.
+template <std::size_t N>
+[[nodiscard]] std::size_t add_value(std::array<ExactSum, N>& sums, std::size_t i, double value) noexcept
+{
+    if (!ExactSum::takes(value)) return 1;
+    (void)sums[i].add(ExactSum::of(value));
+    return 0;
+}
+
+/// Render the config's window and samples: `sample(ray, rng, sums)` adds one sample to
+/// a pixel's N sums and returns how many values it rejected; `store(x, y, sums,
+/// samples, rejected)` then takes the pixel (one thread per pixel; any pixel on any
+/// thread).
+template <std::size_t N, Scalar T, class Sample, class Store>
+void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&& sample, Store&& store)
+{
     if (config.tile_size < 1) throw_invalid("RenderConfig tile_size must be >= 1, got ", config.tile_size);
     const PassRange samples = render_passes(config);
     const CameraRays<T> rays = camera.rays(config.width, config.height);
@@ -139,19 +165,12 @@ void render_pixels(const Camera<typename I::scalar_type>& camera, const I& integ
             for (int y = y0; y < y1; ++y)
                 for (int x = x0; x < x1; ++x) {
                     const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
-                    std::array<ExactSum, 3> sum{};
+                    std::array<ExactSum, N> sum{};
                     std::size_t rejected = 0;
                     for (std::uint64_t s = samples.first; s < samples.last; ++s) {
                         Pcg32 rng(sample_seed(config.seed, s), pixel);
                         const auto [dx, dy] = pixel_sample<T>(int(s), config.spp, rng, config.single_sample_at_centre);
-                        const Rgb<T> radiance = integrator.radiance(rays.ray(T(x) + dx, T(y) + dy), rng);
-                        for (int c = 0; c < 3; ++c) {
-                            // Radiance is never negative: NaN, Inf, < 0 or past ExactSum's
-                            // limit are counted and add 0.
-                            const double v = double(radiance[c]);
-                            if (v >= 0.0 && ExactSum::takes(v)) (void)sum[std::size_t(c)].add(ExactSum::of(v));
-                            else ++rejected;
-                        }
+                        rejected += sample(rays.ray(T(x) + dx, T(y) + dy), rng, sum);
                     }
                     store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
                 }
@@ -198,10 +217,14 @@ void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& came
         detail::throw_invalid("render_into: the Accumulation (", sums.width(), " x ", sums.height(), ", window [", sums.window().x0, ", ",
                               sums.window().x1, ") x [", sums.window().y0, ", ", sums.window().y1, ")) does not hold the render's window");
     if (sums.channels().size() != 3) detail::throw_invalid("render_into renders R, G, B only, the Accumulation has ", sums.channels().size(), " channels");
-    detail::render_pixels(camera, integrator, config, [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
-        sums.add(x, y, sum, weight);
-        if (rejected != 0) sums.reject(rejected);
-    });
+    using T = typename I::scalar_type;
+    detail::render_pixels<3>(
+        camera, config,
+        [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
+        [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+            sums.add(x, y, sum, weight);
+            if (rejected != 0) sums.reject(rejected);
+        });
 }
 
 /// A part of an image as exact sums (its crop window, its samples): add the parts of a
@@ -214,6 +237,46 @@ template <Integrator I>
     return sums;
 }
 
+/// A part of an image with its layers (render/layers.hpp): R, G, B and, as the
+/// integrator allows, coverage, albedo, normal and distance of the first surface, and
+/// the light's parts; layer_channels<I>() names them. Its R, G, B are render_sums' bits:
+/// the layers are worked out beside the image, from the same camera rays.
+template <Integrator I>
+[[nodiscard]] Accumulation render_layers(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
+{
+    using T = typename I::scalar_type;
+    constexpr std::size_t surface = SeesSurfaces<I> ? 8 : 0, parts = SplitsLight<I> ? 9 : 0, n = 3 + surface + parts;
+    Accumulation sums(config.width, config.height, detail::render_window(config), layer_channels<I>());
+    detail::render_pixels<n>(
+        camera, config,
+        [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, n>& sum) {
+            std::size_t rejected = 0;
+            if constexpr (SplitsLight<I>) {
+                const LightParts<T> light = integrator.radiance_parts(ray, rng);
+                rejected += detail::add_radiance(sum, 0, light.sum());
+                rejected += detail::add_radiance(sum, 3 + surface, light.direct);
+                rejected += detail::add_radiance(sum, 6 + surface, light.caustic);
+                rejected += detail::add_radiance(sum, 9 + surface, light.indirect);
+            } else {
+                rejected += detail::add_radiance(sum, 0, integrator.radiance(ray, rng));
+            }
+            if constexpr (SeesSurfaces<I>) {
+                if (const auto seen = integrator.first_surface(ray)) {
+                    rejected += detail::add_value(sum, 3, 1.0);
+                    rejected += detail::add_radiance(sum, 4, seen->albedo);
+                    for (int c = 0; c < 3; ++c) rejected += detail::add_value(sum, 7 + std::size_t(c), double(seen->normal[c]));
+                    rejected += detail::add_value(sum, 10, double(seen->distance));
+                }
+            }
+            return rejected;
+        },
+        [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+            sums.add(x, y, sum, weight);
+            if (rejected != 0) sums.reject(rejected);
+        });
+    return sums;
+}
+
 /// Render an image: the config's crop window (the whole image by default), each pixel
 /// the mean of its samples. The same scene, seed and spp give the same bits for any
 /// thread count, crop or split of the samples: every sample draws from its own random
@@ -223,10 +286,14 @@ template <Integrator I>
 {
     const PixelWindow window = detail::render_window(config);
     Film film(window.width(), window.height());
-    detail::render_pixels(camera, integrator, config, [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
-        film.set(x - window.x0, y - window.y0, Rgb<float>(detail::mean(sum[0], weight), detail::mean(sum[1], weight), detail::mean(sum[2], weight)));
-        if (rejected != 0) film.count_rejected(rejected);
-    });
+    using T = typename I::scalar_type;
+    detail::render_pixels<3>(
+        camera, config,
+        [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
+        [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+            film.set(x - window.x0, y - window.y0, Rgb<float>(detail::mean(sum[0], weight), detail::mean(sum[1], weight), detail::mean(sum[2], weight)));
+            if (rejected != 0) film.count_rejected(rejected);
+        });
     return film;
 }
 

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+// The layers a render can write beside its image (EXR's arbitrary output variables):
+// per sample, what the camera ray meets first (its albedo, shading normal and distance,
+// and whether it meets anything at all: coverage), and, for an integrator that splits
+// its light by where it came from, the parts (the photon mapper's direct light,
+// caustics and indirect light). They are summed per pixel exactly as the image is
+// (render/accumulation.hpp), so a crop or a range of passes of them adds up too.
+#pragma once
+
+#include <prism/core/math.hpp>
+#include <prism/core/ray.hpp>
+#include <prism/core/rng.hpp>
+#include <prism/material/scattering.hpp>
+#include <prism/material/traits.hpp>
+#include <prism/medium/air.hpp>
+
+#include <concepts>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace prism {
+
+/// The first surface a camera ray meets.
+template <Scalar T>
+struct SurfaceSample {
+    Rgb<T> albedo;  ///< a diffuse lobe's reflectance there; 1 for a surface with delta lobes only (glass, mirrors)
+    Vec3<T> normal; ///< the shading normal, facing the ray
+    T distance;     ///< the path's length from the camera's pinhole (along a curved ray in graded air)
+};
+
+/// What `ray` meets first in `scene` through `air` (straight or graded), as an
+/// integrator that starts its camera rays in that air sees it.
+template <class SceneT, class Air>
+[[nodiscard]] std::optional<SurfaceSample<typename SceneT::scalar_type>> first_surface(const SceneT& scene, const Air& air,
+                                                                                      const Ray<typename SceneT::scalar_type>& ray) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    Ray<T> segment = ray;
+    T path = 0;
+    const auto hit = first_hit_in_air(scene, air, ray, segment, &path);
+    if (!hit) return std::nullopt;
+    const Rgb<T> albedo = scene.visit_material(*hit, [&]<class M>(const M& material) {
+        if constexpr (has_diffuse<M>) return diffuse_response(material, hit->crossing).albedo;
+        else return Rgb<T>(T(1));
+    });
+    return SurfaceSample<T>{albedo, hit->crossing.facing_shading(), path};
+}
+
+/// Radiance split by the light's last stretch before the camera path's diffuse surface:
+/// straight from a light (shadow rays) or the background, through specular surfaces
+/// from a light (caustics), or off other diffuse surfaces (indirect).
+template <Scalar T>
+struct LightParts {
+    Rgb<T> direct{T(0)};
+    Rgb<T> caustic{T(0)};
+    Rgb<T> indirect{T(0)};
+
+    [[nodiscard]] constexpr Rgb<T> sum() const noexcept { return direct + caustic + indirect; }
+    constexpr LightParts& operator+=(const LightParts& o) noexcept
+    {
+        direct += o.direct;
+        caustic += o.caustic;
+        indirect += o.indirect;
+        return *this;
+    }
+    constexpr LightParts& operator*=(const Rgb<T>& k) noexcept
+    {
+        direct *= k;
+        caustic *= k;
+        indirect *= k;
+        return *this;
+    }
+    [[nodiscard]] friend constexpr LightParts operator*(const Rgb<T>& k, LightParts p) noexcept { return p *= k; }
+};
+
+/// An integrator that can say what its camera rays meet first (render_layers' surface
+/// layers).
+template <class I>
+concept SeesSurfaces = requires(const I& integrator, const Ray<typename I::scalar_type>& ray) {
+    { integrator.first_surface(ray) } -> std::same_as<std::optional<SurfaceSample<typename I::scalar_type>>>;
+};
+
+/// An integrator that splits its radiance into LightParts (whose sum is its radiance).
+template <class I>
+concept SplitsLight = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
+    { integrator.radiance_parts(ray, rng) } -> std::same_as<LightParts<typename I::scalar_type>>;
+};
+
+/// The channels render_layers writes for an integrator: R, G, B; A (the fraction of
+/// samples that met a surface); albedo, normal and Z (distance), each summed over the
+/// samples that met one, so that albedo / A is the mean albedo of those; and the
+/// light's parts where the integrator splits it.
+template <class I>
+[[nodiscard]] std::vector<std::string> layer_channels()
+{
+    std::vector<std::string> names{"R", "G", "B"};
+    if constexpr (SeesSurfaces<I>) names.insert(names.end(), {"A", "albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y", "normal.Z", "Z"});
+    if constexpr (SplitsLight<I>)
+        names.insert(names.end(), {"direct.R", "direct.G", "direct.B", "caustic.R", "caustic.G", "caustic.B", "indirect.R", "indirect.G", "indirect.B"});
+    return names;
+}
+
+} // namespace prism
