@@ -332,16 +332,23 @@ inline prism::Estimator caustic_estimator(const Options& options)
     return {.k = options.k, .radius = float(options.radius), .filter = options.filter, .max_height_ratio = float(options.max_height_ratio)};
 }
 
-/// Run an example's body, turning exceptions into a message and exit code 1.
+/// Run an example's body, turning exceptions into a message on `errors` (none if null)
+/// and exit code 1.
 template <class Body>
-int run(Body&& body) noexcept
+int run(std::FILE* errors, Body&& body) noexcept
 {
     try {
         return body();
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "error: %s\n", e.what());
+        if (errors != nullptr) std::fprintf(errors, "error: %s\n", e.what());
         return 1;
     }
+}
+
+template <class Body>
+int run(Body&& body) noexcept
+{
+    return run(stderr, body);
 }
 
 /// Every setting that changes a bit of the image, written out: parts of one render

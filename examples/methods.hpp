@@ -10,6 +10,19 @@
 
 namespace examples {
 
+/// The photon mapper's settings from the command line (for --method direct, gather and
+/// cache; progressive passes take them too).
+template <class SceneT>
+typename prism::PhotonMapper<SceneT>::Config photon_mapper_config(const Options& options)
+{
+    return {.tracing = photon_tracer_config(options),
+            .caustic = caustic_estimator(options),
+            .global = {.radius = float(options.global_radius), .filter = options.filter, .max_height_ratio = float(options.max_height_ratio),
+                       .excluded = prism::Photon::direct | prism::Photon::caustic},
+            .gather_rays = options.method == "gather" || options.method == "cache" ? options.gather : 0,
+            .visibility_k = options.visibility};
+}
+
 /// Render `scene` through `camera` by options.method, reporting the stages' times on stdout:
 ///   direct       the photon mapper reading the global map at the point
 ///   gather       final gathering (options.gather stratified rays)
@@ -23,12 +36,7 @@ Rendered render_by_method(const std::string& name, const SceneT& scene, const pr
     using Mapper = prism::PhotonMapper<SceneT>;
     const auto start = std::chrono::steady_clock::now();
     const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-    typename Mapper::Config config{.tracing = photon_tracer_config(options),
-                                   .caustic = caustic_estimator(options),
-                                   .global = {.radius = float(options.global_radius), .filter = options.filter,
-                                              .max_height_ratio = float(options.max_height_ratio), .excluded = prism::Photon::direct | prism::Photon::caustic},
-                                   .gather_rays = options.method == "gather" || options.method == "cache" ? options.gather : 0,
-                                   .visibility_k = options.visibility};
+    const typename Mapper::Config config = photon_mapper_config<SceneT>(options);
     const std::string& method = options.method;
     if (method == "reference") {
         // POV-Ray's model lights the first diffuse surface only: no diffuse bounce.

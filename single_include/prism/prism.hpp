@@ -7666,6 +7666,57 @@ std::vector<Photon> trace_in_fixed_blocks(std::size_t count, unsigned threads, T
 
 } // namespace detail
 
+namespace detail {
+
+[[nodiscard]] inline allocation_error photons_out_of_memory(const PhotonTracerConfig& config)
+{
+    return allocation_error("prism: tracing " + std::to_string(config.global_photons) + " global and " + std::to_string(config.caustic_photons) +
+                            " caustic photons ran out of memory (each stored photon takes " + std::to_string(sizeof(Photon)) +
+                            " bytes, and a photon may be stored at every diffuse bounce)");
+}
+
+} // namespace detail
+
+/// The photons one process of `parts` traces of a pass (a distributed trace's share):
+/// of each map, photon indices [count part / parts, count (part + 1) / parts) of pass
+/// `pass`, in index order and not yet in a tree. Each photon's Sobol point and random
+/// stream come from its index, so the shares of parts 0 to parts - 1, put end to end,
+/// are the photons trace_photons finds, bit for bit.
+struct PhotonShare {
+    std::vector<Photon> global, caustic;
+};
+
+template <class SceneT, class Air = StraightAir>
+[[nodiscard]] PhotonShare trace_photon_share(const SceneT& scene, const PhotonTracerConfig& config, const Air& air, std::size_t pass, std::size_t part,
+                                             std::size_t parts)
+{
+    if (parts < 1 || parts >= (std::size_t(1) << 31) || part >= parts)
+        detail::throw_invalid("trace_photon_share part ", part, " of ", parts, ": expected 0 <= part < parts < 2^31");
+    const detail::PhotonTracer<SceneT, Air> tracer(scene, config, air);
+    // Photon indices are Sobol indices: 32 bits.
+    for (const std::size_t count : {config.global_photons, config.caustic_photons})
+        if (count > 0 && pass >= (std::size_t(1) << 32) / count)
+            detail::throw_invalid("trace_photons pass ", pass, " of ", count, " photons reaches past photon index 2^32 (the Sobol sequence's length)");
+    // floor(count k / parts) without overflow (parts < 2^31): with count = q parts + r,
+    // it is q k + floor(r k / parts).
+    const auto share_first = [&](std::size_t count, std::size_t k) { return count / parts * k + count % parts * k / parts; };
+    PhotonShare share;
+    try {
+        for (const bool caustic : {false, true}) {
+            const std::size_t count = caustic ? config.caustic_photons : config.global_photons;
+            const std::size_t first = pass * count + share_first(count, part), last = pass * count + share_first(count, part + 1);
+            (caustic ? share.caustic : share.global) =
+                detail::trace_in_fixed_blocks(last - first, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
+                    if (caustic) tracer.trace_caustic(first + a, first + b, out);
+                    else tracer.trace_global(first + a, first + b, out);
+                });
+        }
+    } catch (const std::bad_alloc&) {
+        throw detail::photons_out_of_memory(config);
+    }
+    return share;
+}
+
 /// Trace the global and caustic photon maps of a scene, from its lights: photons
 /// [pass N, (pass + 1) N) of each map's sequence, N its count in `config`. Pass 0 is the
 /// maps; every pass is an independent set of the same size and power (progressive photon
@@ -7674,24 +7725,13 @@ std::vector<Photon> trace_in_fixed_blocks(std::size_t count, unsigned threads, T
 template <class SceneT, class Air = StraightAir>
 [[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config = {}, const Air& air = {}, std::size_t pass = 0)
 {
-    const detail::PhotonTracer<SceneT, Air> tracer(scene, config, air);
-    // Photon indices are Sobol indices: 32 bits.
-    for (const std::size_t count : {config.global_photons, config.caustic_photons})
-        if (count > 0 && pass >= (std::size_t(1) << 32) / count)
-            detail::throw_invalid("trace_photons pass ", pass, " of ", count, " photons reaches past photon index 2^32 (the Sobol sequence's length)");
+    PhotonShare all = trace_photon_share(scene, config, air, pass, 0, 1);
     PhotonMaps maps;
     try {
-        const std::size_t global_first = pass * config.global_photons, caustic_first = pass * config.caustic_photons;
-        maps.global = PhotonMap(detail::trace_in_fixed_blocks(config.global_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
-            tracer.trace_global(global_first + a, global_first + b, out);
-        }), config.threads);
-        maps.caustic = PhotonMap(detail::trace_in_fixed_blocks(config.caustic_photons, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
-            tracer.trace_caustic(caustic_first + a, caustic_first + b, out);
-        }), config.threads);
+        maps.global = PhotonMap(std::move(all.global), config.threads);
+        maps.caustic = PhotonMap(std::move(all.caustic), config.threads);
     } catch (const std::bad_alloc&) {
-        throw allocation_error("prism: tracing " + std::to_string(config.global_photons) + " global and " + std::to_string(config.caustic_photons) +
-                               " caustic photons ran out of memory (each stored photon takes " + std::to_string(sizeof(Photon)) +
-                               " bytes, and a photon may be stored at every diffuse bounce)");
+        throw detail::photons_out_of_memory(config);
     }
     return maps;
 }

@@ -262,3 +262,29 @@ TEST_CASE("Caustic photons aimed at targets whose cones overlap carry what unaim
     CHECK(count > 10000);
     CHECK(std::abs(aimed - unaimed) < 4 * unaimed / std::sqrt(double(count)));
 }
+
+TEST_CASE("shares of a distributed trace, put end to end, make trace_photons' maps; a bad share is refused")
+{
+    const Scene scene{Lights{PointLight<float>{.position = {0, 5, 0}, .intensity = Rgb<float>(10)}},
+                      Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
+                      Object{Sphere<float>({0, 1.5f, 0}, 0.5f), Dielectric<float>{.ior = 1.5f}}};
+    const PhotonTracerConfig config{.global_photons = 9001, .caustic_photons = 7003, .seed = 3, .threads = 2};
+    for (const std::size_t pass : {std::size_t(0), std::size_t(2)}) {
+        const PhotonMaps whole = trace_photons(scene, config, StraightAir{}, pass);
+        REQUIRE(whole.caustic.size() > 100); // the ball's caustic
+        for (const std::size_t parts : {std::size_t(1), std::size_t(3), std::size_t(7)}) {
+            std::vector<Photon> global, caustic;
+            for (std::size_t part = 0; part < parts; ++part) {
+                const PhotonShare share = trace_photon_share(scene, config, StraightAir{}, pass, part, parts);
+                global.insert(global.end(), share.global.begin(), share.global.end());
+                caustic.insert(caustic.end(), share.caustic.begin(), share.caustic.end());
+            }
+            // The tree orders its photons: the same photons in, the same tree out.
+            CHECK(global.size() == whole.global.size());
+            CHECK(PhotonMap(global, 2).photons() == whole.global.photons());
+            CHECK(PhotonMap(caustic, 1).photons() == whole.caustic.photons());
+        }
+    }
+    CHECK_THROWS_WITH_AS((void)trace_photon_share(scene, config, StraightAir{}, 0, 3, 3), doctest::Contains("part 3 of 3"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((void)trace_photon_share(scene, config, StraightAir{}, 0, 0, 0), doctest::Contains("part 0 of 0"), std::invalid_argument);
+}

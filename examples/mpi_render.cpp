@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: MIT
+// mpi_render: cornell_caustics' photon-mapped Cornell box rendered by the ranks of an MPI
+// job (distributed/mpi.hpp): each rank traces its share of the photons, the maps are
+// all-gathered, tiles are dealt to whichever rank asks next, and rank 0 writes the
+// image, the same bits as `cornell_caustics` with the same flags writes in one process.
+//
+//   mpirun -np 4 mpi_render --width 256 --height 256 --threads 1 --out images
+//
+// It takes cornell_caustics' flags (--method direct, gather or cache) and --tile N, the
+// side of the square of pixels dealt at a time. With --method cache every rank builds
+// the whole irradiance cache (its records are found in the order one process finds
+// them: sharing them is the next step). Rank 0 prints the stages' times and each
+// rank's traffic.
+#include "cli.hpp"
+#include "methods.hpp"
+#include "scenes/cornell.hpp"
+
+#include <prism/distributed/mpi.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <vector>
+
+int main(int argc, char** argv)
+{
+    MPI_Init(&argc, &argv);
+    int tile = 64;
+    bool communicating = false;
+    // --tile is this program's own; the rest are cornell_caustics'.
+    std::vector<char*> args;
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    const int code = examples::run(rank == 0 ? stderr : nullptr, [&] {
+        for (int i = 0; i < argc; ++i) {
+            if (std::string_view(argv[i]) == "--tile") {
+                if (i + 1 >= argc) throw std::invalid_argument("--tile expects an integer in [1, 65536], got nothing");
+                tile = examples::parse_integer<int>("--tile", argv[++i], 1, 1 << 16);
+            } else {
+                args.push_back(argv[i]);
+            }
+        }
+        for (char* arg : args)
+            if (std::string_view(arg) == "--help" || std::string_view(arg) == "-h")
+                std::printf("mpi_render: cornell_caustics' flags, and\n  --tile N      side of the square of pixels dealt to a rank at a time (default 64)\n\n");
+        examples::Options options;
+        options.render.spp = 4;
+        if (!examples::parse(int(args.size()), args.data(), options, "the Cornell box with photon-mapped caustics, on MPI ranks",
+                             {.photons = true}))
+            return 0;
+        options.program = "cornell_caustics"; // the same settings as that program's, for tools/merge
+        if (options.method != "direct" && options.method != "gather" && options.method != "cache")
+            throw std::invalid_argument("--method expects direct, gather or cache on MPI ranks, got '" + options.method + "'");
+        if (!options.render.passes.empty()) throw std::invalid_argument("--passes A:B is for one machine's part: mpi_render renders every pass");
+        const int ranks = prism::mpi::size();
+        const auto scene = scenes::cornell_scene<float>(!options.povray_light);
+        const auto camera = scenes::cornell_camera<float>();
+        const auto config = examples::photon_mapper_config<std::remove_cvref_t<decltype(scene)>>(options);
+
+        // Everything above fails alike on every rank (the same flags); from here on a
+        // rank that fails leaves the others waiting, and the job is aborted.
+        communicating = true;
+        const auto start = std::chrono::steady_clock::now();
+        const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+        prism::mpi::Traffic traffic;
+        prism::PhotonMaps maps = prism::mpi::trace_photons(MPI_COMM_WORLD, scene, config.tracing, prism::StraightAir{}, 0, &traffic);
+        const double traced = seconds();
+        prism::PhotonMapper mapper(scene, config, std::move(maps));
+        if (options.method == "cache") mapper.cache_irradiance(camera, options.render);
+        const double cached = seconds();
+        const bool layers = options.exr || options.part;
+        std::optional<prism::Accumulation> sums = layers ? prism::mpi::render_layers(MPI_COMM_WORLD, camera, mapper, options.render, tile, &traffic)
+                                                         : prism::mpi::render_sums(MPI_COMM_WORLD, camera, mapper, options.render, tile, &traffic);
+        const double rendered = seconds();
+
+        // Each rank's traffic, printed by rank 0.
+        const std::uint64_t mine[5] = {traffic.photon_bytes_sent, traffic.photon_bytes_received, traffic.film_bytes, traffic.tiles,
+                                       std::uint64_t(rendered * 1e6)};
+        std::vector<std::uint64_t> all(rank == 0 ? 5 * std::size_t(ranks) : 0);
+        MPI_Gather(mine, 5, MPI_UINT64_T, all.data(), 5, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+        if (rank != 0) return 0;
+        std::printf("cornell_caustics on %d ranks: photons traced and gathered %.3f s, irradiance cache %.3f s, render %.3f s\n", ranks, traced,
+                    cached - traced, rendered - cached);
+        for (int r = 0; r < ranks; ++r) {
+            const std::uint64_t* t = &all[5 * std::size_t(r)];
+            std::printf("  rank %d: photons sent %llu B, received %llu B; film %llu B; %llu tiles; done at %.3f s\n", r, (unsigned long long)t[0],
+                        (unsigned long long)t[1], (unsigned long long)t[2], (unsigned long long)t[3], double(t[4]) / 1e6);
+        }
+        examples::save(examples::Rendered{"cornell_caustics", std::move(*sums), rendered}, options, true);
+        return 0;
+    });
+    if (code != 0 && communicating) MPI_Abort(MPI_COMM_WORLD, code); // the other ranks would wait for this one
+    MPI_Finalize();
+    return code;
+}

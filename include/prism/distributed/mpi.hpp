@@ -1,0 +1,281 @@
+// SPDX-License-Identifier: MIT
+// Rendering on the ranks of an MPI communicator, with the bits of a render in one
+// process.
+//
+// Opt-in: prism/prism.hpp does not include this header, since it needs MPI (Debian:
+// libopenmpi-dev; CMake: prism::mpi). Call each function on every rank of the
+// communicator, with the same arguments: they are collective.
+//
+// - Photons: each rank traces a contiguous share of each map's photon indices
+//   (trace_photon_share; a photon's Sobol point and random stream come from its
+//   index), the shares are all-gathered in rank order, and every rank builds the same
+//   trees from the same photons as trace_photons would in one process.
+// - Pixels: the image is cut into square tiles, dealt one at a time to whichever rank
+//   asks next (a counter on rank 0, read and raised by MPI's one-sided fetch-and-add, so
+//   a fast rank takes more), each rendered as render_sums renders it on the rank's
+//   threads. A pixel's samples depend only on the seed, the pixel and the sample's
+//   number, and its sums are exact (render/accumulation.hpp), so rank 0, adding the
+//   tiles it receives into an empty image, has the single-process render's bits for
+//   any number of ranks and any dealing.
+#pragma once
+
+#include <prism/photon/photon_tracer.hpp>
+#include <prism/render/accumulation.hpp>
+#include <prism/render/layers.hpp>
+#include <prism/render/render.hpp>
+
+#include <mpi.h>
+
+#include <climits>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace prism::mpi {
+
+/// What a rank sent and received, in bytes, and the tiles it rendered.
+struct Traffic {
+    std::uint64_t photon_bytes_sent = 0;     ///< its photons, to every other rank
+    std::uint64_t photon_bytes_received = 0; ///< the other ranks' photons
+    std::uint64_t film_bytes = 0;            ///< its tiles' sums sent to rank 0 (rank 0: those it received)
+    std::uint64_t tiles = 0;                 ///< tiles it rendered
+};
+
+namespace detail {
+
+inline void check(int code, const char* call)
+{
+    if (code == MPI_SUCCESS) return;
+    char text[MPI_MAX_ERROR_STRING];
+    int length = 0;
+    MPI_Error_string(code, text, &length);
+    throw std::runtime_error(std::string("prism::mpi: ") + call + " failed: " + std::string(text, std::size_t(length)));
+}
+
+/// An element count MPI takes (an int), or a clear error.
+inline int count_of(std::uint64_t n, const char* what)
+{
+    if (n > std::uint64_t(INT_MAX)) prism::detail::throw_invalid("prism::mpi: ", n, " ", what, " in one message, more than MPI's int count takes");
+    return int(n);
+}
+
+/// Every rank's photons, end to end in rank order, on every rank.
+inline std::vector<Photon> all_gather(MPI_Comm comm, const std::vector<Photon>& mine, Traffic* traffic)
+{
+    int size = 0;
+    check(MPI_Comm_size(comm, &size), "MPI_Comm_size");
+    const unsigned long long n = mine.size();
+    std::vector<unsigned long long> counts(static_cast<std::size_t>(size), 0);
+    check(MPI_Allgather(&n, 1, MPI_UNSIGNED_LONG_LONG, counts.data(), 1, MPI_UNSIGNED_LONG_LONG, comm), "MPI_Allgather");
+    std::vector<int> receive(static_cast<std::size_t>(size)), offset(static_cast<std::size_t>(size));
+    std::uint64_t total = 0;
+    for (std::size_t r = 0; r < counts.size(); ++r) {
+        receive[r] = count_of(counts[r], "photons");
+        offset[r] = count_of(total, "photons");
+        total += counts[r];
+    }
+    (void)count_of(total, "photons");
+    // A photon as one element of sizeof(Photon) bytes: counts in photons, not bytes.
+    MPI_Datatype photon{};
+    check(MPI_Type_contiguous(int(sizeof(Photon)), MPI_BYTE, &photon), "MPI_Type_contiguous");
+    check(MPI_Type_commit(&photon), "MPI_Type_commit");
+    std::vector<Photon> all(total);
+    const int code = MPI_Allgatherv(mine.data(), int(n), photon, all.data(), receive.data(), offset.data(), photon, comm);
+    MPI_Type_free(&photon);
+    check(code, "MPI_Allgatherv");
+    if (traffic != nullptr) {
+        traffic->photon_bytes_sent += std::uint64_t(n) * std::uint64_t(size - 1) * sizeof(Photon);
+        traffic->photon_bytes_received += (total - n) * sizeof(Photon);
+    }
+    return all;
+}
+
+/// The tiles of `window`, tile x tile pixels (the last of a row or column shorter).
+struct Tiles {
+    PixelWindow window;
+    int tile;
+    std::int64_t across, down;
+
+    Tiles(const PixelWindow& w, int t) : window(w), tile(t), across((std::int64_t(w.width()) - 1) / t + 1), down((std::int64_t(w.height()) - 1) / t + 1) {}
+    [[nodiscard]] std::int64_t count() const noexcept { return across * down; }
+    [[nodiscard]] PixelWindow operator[](std::int64_t i) const noexcept
+    {
+        const int x0 = window.x0 + int(i % across) * tile, y0 = window.y0 + int(i / across) * tile;
+        return {x0, y0, std::min(x0 + tile, window.x1), std::min(y0 + tile, window.y1)};
+    }
+};
+
+/// A shared counter on rank 0 that any rank raises by one and reads (the next tile).
+class TileCounter {
+public:
+    explicit TileCounter(MPI_Comm comm)
+    {
+        int rank = 0;
+        check(MPI_Comm_rank(comm, &rank), "MPI_Comm_rank");
+        check(MPI_Win_allocate(rank == 0 ? MPI_Aint(sizeof(std::int64_t)) : 0, int(sizeof(std::int64_t)), MPI_INFO_NULL, comm, &base_, &window_),
+              "MPI_Win_allocate");
+        if (rank == 0) *static_cast<std::int64_t*>(base_) = 0;
+        // Every rank's counter is set before any rank takes a tile.
+        check(MPI_Barrier(comm), "MPI_Barrier");
+        check(MPI_Win_lock_all(0, window_), "MPI_Win_lock_all");
+    }
+    TileCounter(const TileCounter&) = delete;
+    TileCounter& operator=(const TileCounter&) = delete;
+    ~TileCounter()
+    {
+        MPI_Win_unlock_all(window_);
+        MPI_Win_free(&window_);
+    }
+
+    [[nodiscard]] std::int64_t next()
+    {
+        const std::int64_t one = 1;
+        std::int64_t got = 0;
+        check(MPI_Fetch_and_op(&one, &got, MPI_INT64_T, 0, 0, MPI_SUM, window_), "MPI_Fetch_and_op");
+        check(MPI_Win_flush(0, window_), "MPI_Win_flush");
+        return got;
+    }
+
+private:
+    MPI_Win window_{};
+    void* base_ = nullptr;
+};
+
+/// Deal `config`'s tiles over the ranks, render each with render_part(tile config) (an
+/// Accumulation over the tile, with `channels`), and add them up on rank 0.
+template <class RenderPart>
+std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& config, int tile, const std::vector<std::string>& channels, Traffic* traffic,
+                                         RenderPart&& render_part)
+{
+    int rank = 0, size = 0;
+    check(MPI_Comm_rank(comm, &rank), "MPI_Comm_rank");
+    check(MPI_Comm_size(comm, &size), "MPI_Comm_size");
+    // The same checks on every rank, before any communication: all refuse, or none.
+    if (tile < 1) prism::detail::throw_invalid("prism::mpi tile must be >= 1, got ", tile);
+    const PixelWindow window = prism::detail::render_window(config);
+    (void)prism::detail::render_passes(config);
+    const Tiles tiles(window, tile);
+
+    // Each tile's record: its number, the values it rejected, whether a sum overflowed,
+    // then per pixel (in rows) its weight and each channel's 128 bits as two words.
+    std::vector<std::uint64_t> mine;
+    const std::size_t words_per_pixel = 1 + 2 * channels.size();
+    {
+        TileCounter counter(comm);
+        for (std::int64_t t = counter.next(); t < tiles.count(); t = counter.next()) {
+            RenderConfig part = config;
+            part.crop = tiles[t];
+            const Accumulation sums = render_part(part);
+            mine.insert(mine.end(), {std::uint64_t(t), std::uint64_t(sums.rejected()), std::uint64_t(sums.overflowed())});
+            for (int y = part.crop.y0; y < part.crop.y1; ++y)
+                for (int x = part.crop.x0; x < part.crop.x1; ++x) {
+                    mine.push_back(sums.weight(x, y));
+                    for (const ExactSum& s : sums.sums(x, y)) {
+                        const auto bits = static_cast<UInt128>(s.bits());
+                        mine.push_back(std::uint64_t(bits));
+                        mine.push_back(std::uint64_t(bits >> 64));
+                    }
+                }
+            if (traffic != nullptr) ++traffic->tiles;
+        }
+    }
+
+    // Rank 0 gathers the records and adds each tile into the image, which begins empty:
+    // exact sums, so the same bits as one process's.
+    const unsigned long long n = mine.size();
+    std::vector<unsigned long long> counts(std::size_t(rank == 0 ? size : 0));
+    check(MPI_Gather(&n, 1, MPI_UNSIGNED_LONG_LONG, counts.data(), 1, MPI_UNSIGNED_LONG_LONG, 0, comm), "MPI_Gather");
+    std::vector<int> receive(counts.size()), offset(counts.size());
+    std::uint64_t total = 0;
+    for (std::size_t r = 0; r < counts.size(); ++r) {
+        receive[r] = count_of(counts[r], "film words");
+        offset[r] = count_of(total, "film words");
+        total += counts[r];
+    }
+    std::vector<std::uint64_t> all(rank == 0 ? total : 0);
+    check(MPI_Gatherv(mine.data(), count_of(n, "film words"), MPI_UINT64_T, all.data(), receive.data(), offset.data(), MPI_UINT64_T, 0, comm),
+          "MPI_Gatherv");
+    if (traffic != nullptr) traffic->film_bytes += (rank == 0 ? total - n : n) * sizeof(std::uint64_t);
+    if (rank != 0) return std::nullopt;
+
+    Accumulation image(config.width, config.height, window, channels);
+    std::vector<ExactSum> pixel(channels.size());
+    std::size_t at = 0;
+    std::uint64_t rejected = 0;
+    bool overflowed = false;
+    std::int64_t received = 0;
+    while (at < all.size()) {
+        const PixelWindow w = tiles[std::int64_t(all[at])];
+        rejected += all[at + 1];
+        overflowed |= all[at + 2] != 0;
+        at += 3;
+        for (int y = w.y0; y < w.y1; ++y)
+            for (int x = w.x0; x < w.x1; ++x) {
+                const std::uint64_t weight = all[at];
+                for (std::size_t c = 0; c < channels.size(); ++c)
+                    pixel[c] = ExactSum::from_bits(static_cast<Int128>((UInt128(all[at + 2 + 2 * c]) << 64) | UInt128(all[at + 1 + 2 * c])));
+                image.add(x, y, pixel, weight);
+                at += words_per_pixel;
+            }
+        ++received;
+    }
+    PRISM_ASSERT(at == all.size());
+    if (received != tiles.count())
+        throw std::runtime_error("prism::mpi: rank 0 received " + std::to_string(received) + " of " + std::to_string(tiles.count()) + " tiles");
+    if (overflowed) prism::detail::throw_invalid("prism::mpi: a tile's sums overflowed (a sum passed 2^63): the image would be wrong");
+    image.reject(std::size_t(rejected));
+    return image;
+}
+
+} // namespace detail
+
+[[nodiscard]] inline int rank(MPI_Comm comm = MPI_COMM_WORLD)
+{
+    int r = 0;
+    detail::check(MPI_Comm_rank(comm, &r), "MPI_Comm_rank");
+    return r;
+}
+
+[[nodiscard]] inline int size(MPI_Comm comm = MPI_COMM_WORLD)
+{
+    int s = 0;
+    detail::check(MPI_Comm_size(comm, &s), "MPI_Comm_size");
+    return s;
+}
+
+/// trace_photons over the ranks of `comm`: every rank returns the maps one process
+/// would trace, having traced 1 / size of the photons.
+template <class SceneT, class Air = StraightAir>
+[[nodiscard]] PhotonMaps trace_photons(MPI_Comm comm, const SceneT& scene, const PhotonTracerConfig& config = {}, const Air& air = {},
+                                       std::size_t pass = 0, Traffic* traffic = nullptr)
+{
+    PhotonShare mine = trace_photon_share(scene, config, air, pass, std::size_t(rank(comm)), std::size_t(size(comm)));
+    PhotonMaps maps;
+    maps.global = PhotonMap(detail::all_gather(comm, mine.global, traffic), config.threads);
+    maps.caustic = PhotonMap(detail::all_gather(comm, mine.caustic, traffic), config.threads);
+    return maps;
+}
+
+/// render_sums over the ranks of `comm`, `tile` x `tile` pixels dealt at a time (each
+/// rendered on config.threads threads): rank 0 returns the sums, bit for bit those of
+/// render_sums in one process; the other ranks return nullopt.
+template <Integrator I>
+[[nodiscard]] std::optional<Accumulation> render_sums(MPI_Comm comm, const Camera<typename I::scalar_type>& camera, const I& integrator,
+                                                      const RenderConfig& config = {}, int tile = 64, Traffic* traffic = nullptr)
+{
+    return detail::render_dealt(comm, config, tile, {"R", "G", "B"}, traffic,
+                                [&](const RenderConfig& part) { return prism::render_sums(camera, integrator, part); });
+}
+
+/// render_layers (render/layers.hpp) over the ranks of `comm`, as render_sums.
+template <Integrator I>
+[[nodiscard]] std::optional<Accumulation> render_layers(MPI_Comm comm, const Camera<typename I::scalar_type>& camera, const I& integrator,
+                                                        const RenderConfig& config = {}, int tile = 64, Traffic* traffic = nullptr)
+{
+    return detail::render_dealt(comm, config, tile, layer_channels<I>(), traffic,
+                                [&](const RenderConfig& part) { return prism::render_layers(camera, integrator, part); });
+}
+
+} // namespace prism::mpi
