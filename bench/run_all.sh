@@ -35,4 +35,5 @@ fi
 "$python" "$root/bench/methods_vs_time.py" "$root/build/release" | tee "$results/methods_vs_time.txt"
 "$python" "$root/bench/cycles_agreement.py" "$root/build/release" | tee "$results/cycles_agreement.txt"
 "$python" "$root/bench/photon_accuracy.py" --build "$root/build/release" --out "$results" | tee "$results/photon_accuracy.txt"
+"$python" "$root/bench/mpi_scaling.py" --build "$root/build/release" --out "$results" | tee "$results/mpi_scaling.txt"
 "$python" "$root/bench/plot.py" "$results"

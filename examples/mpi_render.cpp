@@ -63,8 +63,12 @@ int main(int argc, char** argv)
         const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
         prism::mpi::Traffic traffic;
         prism::PhotonMaps maps = prism::mpi::trace_photons(MPI_COMM_WORLD, scene, config.tracing, prism::StraightAir{}, 0, &traffic);
+        using Mapper = prism::PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
+        if (config.gather_rays > 0)
+            prism::mpi::precompute_irradiance<Mapper::precomputed_k>(MPI_COMM_WORLD, maps.global, Mapper::precomputed_stride, config.tracing.threads,
+                                                                    &traffic);
         const double traced = seconds();
-        prism::PhotonMapper mapper(scene, config, std::move(maps));
+        Mapper mapper(scene, config, std::move(maps));
         if (options.method == "cache") mapper.cache_irradiance(camera, options.render);
         const double cached = seconds();
         const bool layers = options.exr || options.part;
@@ -72,18 +76,21 @@ int main(int argc, char** argv)
                                                          : prism::mpi::render_sums(MPI_COMM_WORLD, camera, mapper, options.render, tile, &traffic);
         const double rendered = seconds();
 
-        // Each rank's traffic, printed by rank 0.
-        const std::uint64_t mine[5] = {traffic.photon_bytes_sent, traffic.photon_bytes_received, traffic.film_bytes, traffic.tiles,
-                                       std::uint64_t(rendered * 1e6)};
-        std::vector<std::uint64_t> all(rank == 0 ? 5 * std::size_t(ranks) : 0);
-        MPI_Gather(mine, 5, MPI_UINT64_T, all.data(), 5, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+        // Each rank's traffic and stage times, printed by rank 0.
+        constexpr int fields = 11;
+        const double mine[fields] = {double(traffic.photon_bytes_sent), double(traffic.photon_bytes_received), double(traffic.film_bytes),
+                                     double(traffic.tiles), traffic.trace_seconds, traffic.photon_gather_seconds, traffic.tree_seconds,
+                                     traffic.irradiance_seconds, traffic.render_seconds, traffic.film_gather_seconds, rendered};
+        std::vector<double> all(rank == 0 ? fields * std::size_t(ranks) : 0);
+        MPI_Gather(mine, fields, MPI_DOUBLE, all.data(), fields, MPI_DOUBLE, 0, MPI_COMM_WORLD);
         if (rank != 0) return 0;
-        std::printf("cornell_caustics on %d ranks: photons traced and gathered %.3f s, irradiance cache %.3f s, render %.3f s\n", ranks, traced,
-                    cached - traced, rendered - cached);
+        std::printf("cornell_caustics on %d ranks: photon maps %.3f s, irradiance cache %.3f s, render %.3f s, total %.3f s\n", ranks, traced,
+                    cached - traced, rendered - cached, rendered);
         for (int r = 0; r < ranks; ++r) {
-            const std::uint64_t* t = &all[5 * std::size_t(r)];
-            std::printf("  rank %d: photons sent %llu B, received %llu B; film %llu B; %llu tiles; done at %.3f s\n", r, (unsigned long long)t[0],
-                        (unsigned long long)t[1], (unsigned long long)t[2], (unsigned long long)t[3], double(t[4]) / 1e6);
+            const double* t = &all[fields * std::size_t(r)];
+            std::printf("  rank %d: photons sent %.0f B, received %.0f B; film %.0f B; %.0f tiles; trace %.4f s, photon gather %.4f s, trees %.4f s, "
+                        "irradiance %.4f s, render %.4f s, film gather %.4f s; done at %.3f s\n",
+                        r, t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8], t[9], t[10]);
         }
         examples::save(examples::Rendered{"cornell_caustics", std::move(*sums), rendered}, options, true);
         return 0;

@@ -31,16 +31,24 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace prism::mpi {
 
-/// What a rank sent and received, in bytes, and the tiles it rendered.
+/// What a rank sent and received, in bytes, the tiles it rendered, and the seconds each
+/// stage took it (added up over calls).
 struct Traffic {
-    std::uint64_t photon_bytes_sent = 0;     ///< its photons, to every other rank
-    std::uint64_t photon_bytes_received = 0; ///< the other ranks' photons
+    std::uint64_t photon_bytes_sent = 0;     ///< its photons (and precomputed irradiance), to every other rank
+    std::uint64_t photon_bytes_received = 0; ///< the other ranks' photons (and precomputed irradiance)
     std::uint64_t film_bytes = 0;            ///< its tiles' sums sent to rank 0 (rank 0: those it received)
     std::uint64_t tiles = 0;                 ///< tiles it rendered
+    double trace_seconds = 0;                ///< tracing its share of the photons
+    double photon_gather_seconds = 0;        ///< the all-gathers (with the wait for the slowest rank)
+    double tree_seconds = 0;                 ///< building the maps' trees (every rank builds them all)
+    double irradiance_seconds = 0;           ///< precomputing irradiance at its share of the global photons, and the all-gather
+    double render_seconds = 0;               ///< rendering its tiles
+    double film_gather_seconds = 0;          ///< the film's gather (with the wait for the slowest rank) and, on rank 0, adding it up
 };
 
 namespace detail {
@@ -54,6 +62,20 @@ inline void check(int code, const char* call)
     throw std::runtime_error(std::string("prism::mpi: ") + call + " failed: " + std::string(text, std::size_t(length)));
 }
 
+/// Seconds since the last lap (or the start).
+class Stopwatch {
+public:
+    double lap() noexcept
+    {
+        const double now = MPI_Wtime(), seconds = now - last_;
+        last_ = now;
+        return seconds;
+    }
+
+private:
+    double last_ = MPI_Wtime();
+};
+
 /// An element count MPI takes (an int), or a clear error.
 inline int count_of(std::uint64_t n, const char* what)
 {
@@ -61,9 +83,12 @@ inline int count_of(std::uint64_t n, const char* what)
     return int(n);
 }
 
-/// Every rank's photons, end to end in rank order, on every rank.
-inline std::vector<Photon> all_gather(MPI_Comm comm, const std::vector<Photon>& mine, Traffic* traffic)
+/// Every rank's items, end to end in rank order, on every rank (the bytes each rank
+/// sent and received added to traffic's photon counts).
+template <class Item>
+std::vector<Item> all_gather(MPI_Comm comm, const std::vector<Item>& mine, Traffic* traffic)
 {
+    static_assert(std::is_trivially_copyable_v<Item>);
     int size = 0;
     check(MPI_Comm_size(comm, &size), "MPI_Comm_size");
     const unsigned long long n = mine.size();
@@ -72,22 +97,22 @@ inline std::vector<Photon> all_gather(MPI_Comm comm, const std::vector<Photon>& 
     std::vector<int> receive(static_cast<std::size_t>(size)), offset(static_cast<std::size_t>(size));
     std::uint64_t total = 0;
     for (std::size_t r = 0; r < counts.size(); ++r) {
-        receive[r] = count_of(counts[r], "photons");
-        offset[r] = count_of(total, "photons");
+        receive[r] = count_of(counts[r], "items");
+        offset[r] = count_of(total, "items");
         total += counts[r];
     }
-    (void)count_of(total, "photons");
-    // A photon as one element of sizeof(Photon) bytes: counts in photons, not bytes.
-    MPI_Datatype photon{};
-    check(MPI_Type_contiguous(int(sizeof(Photon)), MPI_BYTE, &photon), "MPI_Type_contiguous");
-    check(MPI_Type_commit(&photon), "MPI_Type_commit");
-    std::vector<Photon> all(total);
-    const int code = MPI_Allgatherv(mine.data(), int(n), photon, all.data(), receive.data(), offset.data(), photon, comm);
-    MPI_Type_free(&photon);
+    (void)count_of(total, "items");
+    // An item as one element of sizeof(Item) bytes: counts in items, not bytes.
+    MPI_Datatype item{};
+    check(MPI_Type_contiguous(int(sizeof(Item)), MPI_BYTE, &item), "MPI_Type_contiguous");
+    check(MPI_Type_commit(&item), "MPI_Type_commit");
+    std::vector<Item> all(total);
+    const int code = MPI_Allgatherv(mine.data(), int(n), item, all.data(), receive.data(), offset.data(), item, comm);
+    MPI_Type_free(&item);
     check(code, "MPI_Allgatherv");
     if (traffic != nullptr) {
-        traffic->photon_bytes_sent += std::uint64_t(n) * std::uint64_t(size - 1) * sizeof(Photon);
-        traffic->photon_bytes_received += (total - n) * sizeof(Photon);
+        traffic->photon_bytes_sent += std::uint64_t(n) * std::uint64_t(size - 1) * sizeof(Item);
+        traffic->photon_bytes_received += (total - n) * sizeof(Item);
     }
     return all;
 }
@@ -160,6 +185,7 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
 
     // Each tile's record: its number, the values it rejected, whether a sum overflowed,
     // then per pixel (in rows) its weight and each channel's 128 bits as two words.
+    Stopwatch clock;
     std::vector<std::uint64_t> mine;
     const std::size_t words_per_pixel = 1 + 2 * channels.size();
     {
@@ -167,6 +193,7 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
         for (std::int64_t t = counter.next(); t < tiles.count(); t = counter.next()) {
             RenderConfig part = config;
             part.crop = tiles[t];
+            part.progress = false; // a tile's progress says nothing of the image's
             const Accumulation sums = render_part(part);
             mine.insert(mine.end(), {std::uint64_t(t), std::uint64_t(sums.rejected()), std::uint64_t(sums.overflowed())});
             for (int y = part.crop.y0; y < part.crop.y1; ++y)
@@ -181,6 +208,8 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
             if (traffic != nullptr) ++traffic->tiles;
         }
     }
+
+    if (traffic != nullptr) traffic->render_seconds += clock.lap();
 
     // Rank 0 gathers the records and adds each tile into the image, which begins empty:
     // exact sums, so the same bits as one process's.
@@ -198,7 +227,10 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
     check(MPI_Gatherv(mine.data(), count_of(n, "film words"), MPI_UINT64_T, all.data(), receive.data(), offset.data(), MPI_UINT64_T, 0, comm),
           "MPI_Gatherv");
     if (traffic != nullptr) traffic->film_bytes += (rank == 0 ? total - n : n) * sizeof(std::uint64_t);
-    if (rank != 0) return std::nullopt;
+    if (rank != 0) {
+        if (traffic != nullptr) traffic->film_gather_seconds += clock.lap();
+        return std::nullopt;
+    }
 
     Accumulation image(config.width, config.height, window, channels);
     std::vector<ExactSum> pixel(channels.size());
@@ -226,6 +258,7 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
         throw std::runtime_error("prism::mpi: rank 0 received " + std::to_string(received) + " of " + std::to_string(tiles.count()) + " tiles");
     if (overflowed) prism::detail::throw_invalid("prism::mpi: a tile's sums overflowed (a sum passed 2^63): the image would be wrong");
     image.reject(std::size_t(rejected));
+    if (traffic != nullptr) traffic->film_gather_seconds += clock.lap();
     return image;
 }
 
@@ -251,11 +284,39 @@ template <class SceneT, class Air = StraightAir>
 [[nodiscard]] PhotonMaps trace_photons(MPI_Comm comm, const SceneT& scene, const PhotonTracerConfig& config = {}, const Air& air = {},
                                        std::size_t pass = 0, Traffic* traffic = nullptr)
 {
+    detail::Stopwatch clock;
     PhotonShare mine = trace_photon_share(scene, config, air, pass, std::size_t(rank(comm)), std::size_t(size(comm)));
+    const double traced = clock.lap();
+    std::vector<Photon> global = detail::all_gather(comm, mine.global, traffic), caustic = detail::all_gather(comm, mine.caustic, traffic);
+    const double gathered = clock.lap();
     PhotonMaps maps;
-    maps.global = PhotonMap(detail::all_gather(comm, mine.global, traffic), config.threads);
-    maps.caustic = PhotonMap(detail::all_gather(comm, mine.caustic, traffic), config.threads);
+    maps.global = PhotonMap(std::move(global), config.threads);
+    maps.caustic = PhotonMap(std::move(caustic), config.threads);
+    if (traffic != nullptr) {
+        traffic->trace_seconds += traced;
+        traffic->photon_gather_seconds += gathered;
+        traffic->tree_seconds += clock.lap();
+    }
     return maps;
+}
+
+/// PhotonMap::precompute_irradiance<K> over the ranks of `comm`: each estimates a share
+/// of the samples, and every rank's map receives them all (the same values as in one
+/// process). PhotonMapper<S>::precomputed_k and precomputed_stride are the mapper's.
+template <std::size_t K>
+void precompute_irradiance(MPI_Comm comm, PhotonMap& map, std::size_t stride, unsigned threads = 1, Traffic* traffic = nullptr)
+{
+    detail::Stopwatch clock;
+    std::vector<Photon> samples = map.irradiance_samples(stride);
+    const std::size_t n = samples.size(), r = std::size_t(rank(comm)), p = std::size_t(size(comm));
+    const std::size_t first = n / p * r + n % p * r / p, last = n / p * (r + 1) + n % p * (r + 1) / p;
+    std::vector<Rgb<float>> mine(last - first);
+    prism::detail::parallel_for(mine.size(), threads, [&](std::size_t i) {
+        const Photon& sample = samples[first + i];
+        mine[i] = map.irradiance<K>(sample.position, sample.normal());
+    });
+    map.set_precomputed_irradiance(std::move(samples), detail::all_gather(comm, mine, traffic), threads);
+    if (traffic != nullptr) traffic->irradiance_seconds += clock.lap();
 }
 
 /// render_sums over the ranks of `comm`, `tile` x `tile` pixels dealt at a time (each

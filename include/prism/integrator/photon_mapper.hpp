@@ -120,10 +120,16 @@ private:
         gather_cells_m_ = std::max(1, int(std::lround(std::sqrt(double(config.gather_rays) / pi<double>))));
         gather_cells_n_ = std::max(1, config.gather_rays / gather_cells_m_);
         maps_ = maps ? std::move(*maps) : trace_photons(scene, config.tracing, air_);
-        if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4, config.tracing.threads);
+        if (config.gather_rays > 0 && !maps_.global.has_precomputed_irradiance())
+            maps_.global.template precompute_irradiance<precomputed_k>(precomputed_stride, config.tracing.threads);
     }
 
 public:
+    /// The final gather reads irradiance precomputed at every precomputed_stride-th global
+    /// photon from its precomputed_k nearest (PhotonMap::precompute_irradiance), which the
+    /// constructor works out unless the maps it is given have it already.
+    static constexpr std::size_t precomputed_k = 64, precomputed_stride = 4;
+
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
     [[nodiscard]] const IrradianceCache<T>& irradiance_cache() const noexcept { return cache_; }
 

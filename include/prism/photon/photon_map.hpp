@@ -183,14 +183,35 @@ public:
     template <std::size_t K>
     void precompute_irradiance(std::size_t stride, unsigned threads = 1)
     {
+        std::vector<Photon> samples = irradiance_samples(stride);
+        std::vector<Rgb<float>> values(samples.size(), Rgb<float>(0.0f));
+        detail::parallel_for(samples.size(), threads, [&](std::size_t i) { values[i] = irradiance<K>(samples[i].position, samples[i].normal()); });
+        set_precomputed_irradiance(std::move(samples), std::move(values), threads);
+    }
+
+    /// The photons precompute_irradiance estimates at: every `stride`-th, but for shadow
+    /// photons.
+    [[nodiscard]] std::vector<Photon> irradiance_samples(std::size_t stride) const
+    {
         std::vector<Photon> samples;
         for (std::size_t i = 0; i < photons_.size(); i += std::max<std::size_t>(stride, 1))
             if (!(photons_[i].flags & Photon::shadow)) samples.push_back(photons_[i]);
-        irradiance_.assign(samples.size(), Rgb<float>(0.0f));
-        detail::parallel_for(samples.size(), threads, [&](std::size_t i) { irradiance_[i] = irradiance<K>(samples[i].position, samples[i].normal()); });
+        return samples;
+    }
+
+    /// Irradiance precomputed elsewhere (by processes that each estimated a share of the
+    /// samples): irradiance[i] = irradiance<K>(samples[i]'s position and normal), samples
+    /// from irradiance_samples.
+    void set_precomputed_irradiance(std::vector<Photon> samples, std::vector<Rgb<float>> irradiance, unsigned threads = 1)
+    {
+        if (samples.size() != irradiance.size())
+            detail::throw_invalid("PhotonMap set_precomputed_irradiance: ", samples.size(), " samples and ", irradiance.size(), " irradiance values");
+        irradiance_ = std::move(irradiance);
         samples_ = std::move(samples);
         sample_tree_.emplace(PhotonPositions{samples_}, threads);
     }
+
+    [[nodiscard]] bool has_precomputed_irradiance() const noexcept { return sample_tree_.has_value(); }
 
     /// The precomputed irradiance nearest p among samples on surfaces facing n's way
     /// (zero when there are none near).
