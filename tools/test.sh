@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Run the whole test suite, four ways:
+# Run the whole test suite, five ways:
 #   release   Release build, every doctest case as a ctest test, plus the single-header
 #             check, the consumer projects and the command-line tests
 #   sanitize  the same cases under AddressSanitizer + UndefinedBehaviorSanitizer, with
 #             PRISM_ASSERT kept active, and a small render
 #   thread    the same cases under ThreadSanitizer, with PRISM_ASSERT active, and 2-thread
 #             renders (Whitted and photon mapping)
+#   fuzz      each libFuzzer target (tests/fuzz/) for 60 s, under ASan + UBSan
 #   meson     the meson build's `meson test`, compiled for AVX2 where the CPU has it (so
 #             the suite also runs with Bvh<float>'s 8-wide nodes)
 # Build output goes to build/logs/; a failing step prints its log. The last line sums up
@@ -67,7 +68,7 @@ sanitize="$root/build/sanitize"
 if step sanitize-build bash -c "cmake -S '$root' -B '$sanitize' -G Ninja -DCMAKE_BUILD_TYPE=Debug -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON \
       -DPRISM_TESTS_PCH=ON -DCMAKE_CXX_FLAGS_DEBUG=-g1 \
       -DCMAKE_CXX_FLAGS='-O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer' &&
-      cmake --build '$sanitize' -j $jobs --target prism_tests cli_examples"; then
+      cmake --build '$sanitize' -j $jobs --target prism_tests cli_examples fuzz_corpus_tests"; then
   ctest --test-dir "$sanitize" -j "$jobs" >"$logs/sanitize-ctest.log" 2>&1 ||
     ctest --test-dir "$sanitize" --rerun-failed --output-on-failure 2>&1 | tail -n 80
   count sanitize "$logs/sanitize-ctest.log"
@@ -98,6 +99,15 @@ if step thread-build bash -c "cmake -S '$root' -B '$thread' -G Ninja -DCMAKE_BUI
     --caustic-photons 20000 --gather 4 --out "$thread/gallery" || fail thread-render-photons
 else
   fail thread
+fi
+
+# libFuzzer (clang) under ASan + UBSan: each target (tests/fuzz/) for 60 s from its
+# committed corpus; a crash fails the run and leaves its input in build/fuzz/.
+if step fuzz "$root/tools/fuzz.sh" 60; then
+  grep "^fuzz:" "$logs/fuzz.log"
+  passed=$((passed + 1)) summary+=("fuzz ok")
+else
+  fail fuzz
 fi
 
 # Meson, for AVX2 where the CPU has it: the other runs take the baseline's 4-wide Bvh

@@ -4,6 +4,7 @@
 #include "../support.hpp"
 
 #include <cmath>
+#include <limits>
 
 using doctest::Approx;
 using prism::Interval;
@@ -300,4 +301,30 @@ TEST_CASE("an ellipsoid's semi-axes are checked by name, not through a coefficie
     CHECK_THROWS_WITH_AS((void)Quadric<float>::ellipsoid({0, 0, 0}, {1e20f, 1, 1}), doctest::Contains("semi_axes.x"), std::invalid_argument);
     CHECK_THROWS_WITH_AS((void)Quadric<float>::ellipsoid({0, 0, 0}, {1, 1e-20f, 1}), doctest::Contains("semi_axes.y"), std::invalid_argument);
     CHECK_THROWS_WITH_AS((void)Quadric<float>::cylinder({0, 0, 0}, {0, 0, 1}, 1e-30f), doctest::Contains("cylinder radius"), std::invalid_argument);
+}
+
+TEST_CASE("regressions from fuzzing: a gradient of 1e-23 still gives unit normals; a crossing beyond float's reach is not reported")
+{
+    using prism::Ray;
+    using prism::infinity;
+    // tests/fuzz/regressions/quadric/denormal_gradient: -97.38 x^2 plus terms of 2.7e-43,
+    // crossed near x = 5e-23, where g . g underflows.
+    const float tiny = 195 * std::numeric_limits<float>::denorm_min();
+    const auto flat = Quadric<float>::from_povray(-97.3804f, tiny, tiny, tiny, tiny, tiny, tiny, tiny, tiny, tiny);
+    const auto c = flat.crossings(Ray<float>{{-1e-22f, 0, 0}, {1, 0, 0}}, {0.0f, 1.0f}); // normals of length 1.029 and 1 before
+    REQUIRE(c.size() == 2);
+    for (const auto& x : c) {
+        CHECK(prism::length(x.normal) == Approx(1).epsilon(1e-6));
+        CHECK(prism::is_finite(x.error));
+    }
+    // tests/fuzz/regressions/quadric/non_finite_crossing: an open quadric met by a ray of
+    // speed 1000 at t = 1.9e38, whose point is -inf: now no crossing there, for either query.
+    const auto open = Quadric<float>::from_povray(std::numeric_limits<float>::denorm_min(), std::numeric_limits<float>::denorm_min(), 3.0268e-43f, 0, 0,
+                                                  -0.0572514f, 0, 0.0784877f, 0, 5.32493e-44f);
+    const Ray<float> ray{{0, -1, 0}, {0, 0, -1000}};
+    const Interval<float> range{0.0f, infinity<float>};
+    const auto far = open.crossings(ray, range);
+    for (const auto& x : far) CHECK(prism::is_finite(x.point));
+    CHECK(far.empty());
+    CHECK(prism::first_crossing(open, ray, range) == infinity<float>);
 }

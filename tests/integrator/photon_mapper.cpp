@@ -128,6 +128,9 @@ TEST_CASE("the photon mapper refuses what Whitted refuses, and estimators out of
     c.min_weight = std::nanf(""), refused(c, "min_weight"), c = {};
     c.min_weight = -1, refused(c, "min_weight"), c = {};
     c.caustic.radius = infinity<float>, refused(c, "caustic radius"), c = {};
+    // Found by fuzzing: a radius whose square underflows gave NaN estimates.
+    c.caustic.radius = 1e-20f, refused(c, "caustic radius must be in [1.1e-19, 1.8e19]"), c = {};
+    c.global.radius = 2e19f, refused(c, "global radius must be in [1.1e-19, 1.8e19]"), c = {};
     c.global.max_height_ratio = infinity<float>, refused(c, "global max_height_ratio"), c = {};
     c.caustic.filter = static_cast<Filter>(7), refused(c, "filter"), c = {};
     c.visibility_k = 100000, refused(c, "visibility_k"), c = {};

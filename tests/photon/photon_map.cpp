@@ -156,3 +156,16 @@ TEST_CASE("the far side of a thin wall is not this side, and a curved surface ke
     }
     CHECK(sum / 50 == doctest::Approx(e).epsilon(0.015)); // arrival-direction test: 0.9 e
 }
+
+TEST_CASE("regression from fuzzing: a radius whose square underflows estimates nothing, not NaN")
+{
+    // tests/fuzz/regressions/photon_map/estimate: one photon, k = 0, radius 4.2e-45,
+    // the Gaussian filter: 0 / 0 before.
+    const PhotonMap map(std::vector<Photon>{Photon({0, 0, 0}, Rgb<float>(1.0f), {0, 1, 0}, {0, 1, 0}, 0)});
+    for (const Filter filter : {Filter::box, Filter::cone, Filter::gaussian}) {
+        const Rgb<float> e = map.irradiance({0, 0, 0}, {0, 1, 0}, {.radius = 4.2039e-45f, .filter = filter});
+        CHECK(e == Rgb<float>(0.0f));
+    }
+    // A radius whose square is a normal float still sees the photon.
+    CHECK(map.irradiance({0, 0, 0}, {0, 1, 0}, {.radius = 1e-10f}).x > 0.0f);
+}

@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 
 namespace prism {
 
@@ -265,9 +266,13 @@ public:
         out.inside_at_start = !roots[0].entering;
         for (std::size_t r = 0; r < n; ++r)
             if (roots[r].t <= range.min) out.inside_at_start = roots[r].entering;
+        // A root is a crossing where it lies inside the range and float can hold its point
+        // with room to spare (a ray nearly along an open quadric may meet it at t = 1e38,
+        // whose point is infinite); the same test for both queries, so that they agree.
+        const auto kept = [&](T t) { return range.surrounds(t) && is_finite(T(4) * (ray.origin + t * d)); };
         if constexpr (!Surface) {
             for (std::size_t r = 0; r < n; ++r)
-                if (range.surrounds(roots[r].t)) out.push_back(roots[r]);
+                if (kept(roots[r].t)) out.push_back(roots[r]);
         } else {
             // The same roots measured from m: s = t - t_m, found as stably there, in the
             // same order (t grows with s).
@@ -275,7 +280,7 @@ public:
             std::array<T, 2> s{C_m / q_m, q_m / A};
             if (s[1] < s[0]) std::swap(s[0], s[1]);
             for (std::size_t r = 0; r < n; ++r) {
-                if (!range.surrounds(roots[r].t)) continue;
+                if (!kept(roots[r].t)) continue;
                 // With one root (A = 0) only C_m / q_m is finite.
                 T s_r = n == 1 ? C_m / q_m : s[r];
                 if (!is_finite(s_r)) s_r = roots[r].t - t_m;
@@ -350,21 +355,38 @@ private:
         Vec3<T> g = half_gradient(point);
         const T gg = dot(g, g);
         Vec3<T> normal, error;
-        if (!(gg > T(0)) || !is_finite(gg)) {
-            // A singular point (a cone's apex): no normal; face the ray.
-            const Vec3<T> facing = normalize(d);
-            normal = entering ? -facing : facing;
-            error = gamma<T>(4) * abs(point);
-        } else {
-            // Refine the hit point with one Newton step along the gradient, onto F = 0.
-            point -= (evaluate_local(point) / (T(2) * gg)) * g;
+        bool singular = !(gg > T(0)) || !is_finite(gg);
+        if (!singular) {
+            // Refine the hit point with one Newton step along the gradient, onto F = 0
+            // (kept only where finite: a gradient of 1e-20 may throw it to infinity).
+            const Vec3<T> refined = point - (evaluate_local(point) / (T(2) * gg)) * g;
+            if (is_finite(refined)) point = refined;
             g = half_gradient(point);
-            const T g_length = length(g);
-            normal = g * (T(1) / g_length);
+            // |g| as length(g), unless g . g is so small that it has lost digits (or is
+            // 0): then from g over its largest component, which cannot underflow (a
+            // quadric of denormal coefficients had normals of length 1.2).
+            T g_length = length(g);
+            if (g_length * g_length >= std::numeric_limits<T>::min() / std::numeric_limits<T>::epsilon() && is_finite(g_length)) {
+                normal = g * (T(1) / g_length);
+            } else {
+                const T largest = max_component(abs(g));
+                const Vec3<T> scaled = largest > T(0) && is_finite(largest) ? g / largest : Vec3<T>(T(0));
+                const T scaled_length = length(scaled);
+                normal = scaled * (T(1) / scaled_length);
+                g_length = largest * scaled_length;
+            }
             // What is left is F's rounding, gamma(12) of its terms, over |grad F| = 2 |g|,
             // along the normal; along the surface the point carries its own rounding.
             const T along = gamma<T>(12) * magnitude(point) / (T(2) * g_length);
             error = along * abs(normal) + gamma<T>(2) * abs(point);
+            // A gradient too small to give a normal or a finite bound: as singular.
+            singular = !is_finite(normal) || !is_finite(error);
+        }
+        if (singular) {
+            // A singular point (a cone's apex): no normal; face the ray.
+            const Vec3<T> facing = normalize(d);
+            normal = entering ? -facing : facing;
+            error = gamma<T>(4) * abs(point);
         }
         // Back to world coordinates: one more rounding of the sum.
         const Vec3<T> world = point + origin_;

@@ -218,7 +218,9 @@ public:
 private:
     static void validate(const Estimator& e, const char* name)
     {
-        if (!(e.radius > 0.0f && is_finite(e.radius))) detail::throw_invalid(name, " radius must be finite and > 0, got ", e.radius);
+        // The estimates divide by pi r^2: its square must be a finite, normal float.
+        if (!(e.radius * e.radius >= std::numeric_limits<float>::min() && is_finite(e.radius * e.radius)))
+            detail::throw_invalid(name, " radius must be in [1.1e-19, 1.8e19] (its square a finite, normal float), got ", e.radius);
         if (e.k > PhotonMap::max_k) detail::throw_invalid(name, " k must be at most ", PhotonMap::max_k, ", got ", e.k);
         if (!(e.max_height_ratio > 0.0f && e.max_height_ratio <= 1.0f)) detail::throw_invalid(name, " max_height_ratio must be in (0, 1], got ", e.max_height_ratio);
         if (!(e.surface_cos >= 0.0f && e.surface_cos < 1.0f)) detail::throw_invalid(name, " surface_cos must be in [0, 1), got ", e.surface_cos);

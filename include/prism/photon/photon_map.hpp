@@ -143,6 +143,9 @@ public:
         };
         float r2 = estimator.radius * estimator.radius;
         if (estimator.k == 0) {
+            // A radius whose square underflows (below 1e-19) holds no density float can
+            // state: nothing, as for k nearest all at one point (it divided 0 by 0).
+            if (!(r2 > 0.0f)) return sum;
             tree_->within({p.x, p.y, p.z}, estimator.radius, [&](std::uint32_t index, float d2) { add(index, d2, r2); });
         } else {
             std::array<Neighbour<float>, max_k> buffer;

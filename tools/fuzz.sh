@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Fuzz prism with libFuzzer (clang, Debian: clang libclang-rt-14-dev), under
+# AddressSanitizer and UndefinedBehaviorSanitizer with PRISM_ASSERT active:
+#   tools/fuzz.sh [SECONDS]     each target for SECONDS (default 30)
+# Targets (tests/fuzz/): quadric (crossings of any ten coefficients), csg (trees of
+# every operator), photon_map (the KD-tree against brute force, the estimates). Each
+# starts from its committed corpus, tests/fuzz/corpus/<target>/, and writes what it
+# finds into build/fuzz/<target>/ (copy inputs worth keeping into the corpus); a crash
+# leaves its input as build/fuzz/crash-<target>-*, and the script fails.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+seconds=${1:-30}
+out="$root/build/fuzz"
+mkdir -p "$out"
+flags=(-std=c++20 -O1 -g1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -DPRISM_ENABLE_ASSERTIONS
+       -DGLM_FORCE_PURE -I"$root/include")
+status=0
+for target in quadric csg photon_map; do
+  clang++ "${flags[@]}" "$root/tests/fuzz/$target.cpp" -o "$out/fuzz_$target"
+  mkdir -p "$out/$target" "$root/tests/fuzz/corpus/$target"
+  if ! "$out/fuzz_$target" "$out/$target" "$root/tests/fuzz/corpus/$target" -max_total_time="$seconds" -max_len=512 \
+       -artifact_prefix="$out/crash-$target-" -print_final_stats=1 >"$out/$target.log" 2>&1; then
+    echo "fuzz: $target FAILED; its log ends:"
+    tail -n 40 "$out/$target.log"
+    status=1
+  fi
+  runs=$(grep -E "stat::number_of_executed_units" "$out/$target.log" | awk '{print $2}')
+  echo "fuzz: $target: ${runs:-?} inputs in ${seconds} s, corpus $(ls "$out/$target" "$root/tests/fuzz/corpus/$target" | grep -vc ':$\|^$')"
+done
+exit $status
