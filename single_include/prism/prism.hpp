@@ -3647,6 +3647,7 @@ static_assert(Shape<Plane<double>>);
 
 #include <algorithm>
 #include <array>
+#include <limits>
 
 namespace prism {
 
@@ -3889,9 +3890,13 @@ public:
         out.inside_at_start = !roots[0].entering;
         for (std::size_t r = 0; r < n; ++r)
             if (roots[r].t <= range.min) out.inside_at_start = roots[r].entering;
+        // A root is a crossing where it lies inside the range and float can hold its point
+        // with room to spare (a ray nearly along an open quadric may meet it at t = 1e38,
+        // whose point is infinite); the same test for both queries, so that they agree.
+        const auto kept = [&](T t) { return range.surrounds(t) && is_finite(T(4) * (ray.origin + t * d)); };
         if constexpr (!Surface) {
             for (std::size_t r = 0; r < n; ++r)
-                if (range.surrounds(roots[r].t)) out.push_back(roots[r]);
+                if (kept(roots[r].t)) out.push_back(roots[r]);
         } else {
             // The same roots measured from m: s = t - t_m, found as stably there, in the
             // same order (t grows with s).
@@ -3899,7 +3904,7 @@ public:
             std::array<T, 2> s{C_m / q_m, q_m / A};
             if (s[1] < s[0]) std::swap(s[0], s[1]);
             for (std::size_t r = 0; r < n; ++r) {
-                if (!range.surrounds(roots[r].t)) continue;
+                if (!kept(roots[r].t)) continue;
                 // With one root (A = 0) only C_m / q_m is finite.
                 T s_r = n == 1 ? C_m / q_m : s[r];
                 if (!is_finite(s_r)) s_r = roots[r].t - t_m;
@@ -3974,21 +3979,38 @@ private:
         Vec3<T> g = half_gradient(point);
         const T gg = dot(g, g);
         Vec3<T> normal, error;
-        if (!(gg > T(0)) || !is_finite(gg)) {
-            // A singular point (a cone's apex): no normal; face the ray.
-            const Vec3<T> facing = normalize(d);
-            normal = entering ? -facing : facing;
-            error = gamma<T>(4) * abs(point);
-        } else {
-            // Refine the hit point with one Newton step along the gradient, onto F = 0.
-            point -= (evaluate_local(point) / (T(2) * gg)) * g;
+        bool singular = !(gg > T(0)) || !is_finite(gg);
+        if (!singular) {
+            // Refine the hit point with one Newton step along the gradient, onto F = 0
+            // (kept only where finite: a gradient of 1e-20 may throw it to infinity).
+            const Vec3<T> refined = point - (evaluate_local(point) / (T(2) * gg)) * g;
+            if (is_finite(refined)) point = refined;
             g = half_gradient(point);
-            const T g_length = length(g);
-            normal = g * (T(1) / g_length);
+            // |g| as length(g), unless g . g is so small that it has lost digits (or is
+            // 0): then from g over its largest component, which cannot underflow (a
+            // quadric of denormal coefficients had normals of length 1.2).
+            T g_length = length(g);
+            if (g_length * g_length >= std::numeric_limits<T>::min() / std::numeric_limits<T>::epsilon() && is_finite(g_length)) {
+                normal = g * (T(1) / g_length);
+            } else {
+                const T largest = max_component(abs(g));
+                const Vec3<T> scaled = largest > T(0) && is_finite(largest) ? g / largest : Vec3<T>(T(0));
+                const T scaled_length = length(scaled);
+                normal = scaled * (T(1) / scaled_length);
+                g_length = largest * scaled_length;
+            }
             // What is left is F's rounding, gamma(12) of its terms, over |grad F| = 2 |g|,
             // along the normal; along the surface the point carries its own rounding.
             const T along = gamma<T>(12) * magnitude(point) / (T(2) * g_length);
             error = along * abs(normal) + gamma<T>(2) * abs(point);
+            // A gradient too small to give a normal or a finite bound: as singular.
+            singular = !is_finite(normal) || !is_finite(error);
+        }
+        if (singular) {
+            // A singular point (a cone's apex): no normal; face the ray.
+            const Vec3<T> facing = normalize(d);
+            normal = entering ? -facing : facing;
+            error = gamma<T>(4) * abs(point);
         }
         // Back to world coordinates: one more rounding of the sum.
         const Vec3<T> world = point + origin_;
@@ -7138,6 +7160,9 @@ public:
         };
         float r2 = estimator.radius * estimator.radius;
         if (estimator.k == 0) {
+            // A radius whose square underflows (below 1e-19) holds no density float can
+            // state: nothing, as for k nearest all at one point (it divided 0 by 0).
+            if (!(r2 > 0.0f)) return sum;
             tree_->within({p.x, p.y, p.z}, estimator.radius, [&](std::uint32_t index, float d2) { add(index, d2, r2); });
         } else {
             std::array<Neighbour<float>, max_k> buffer;
@@ -7178,14 +7203,35 @@ public:
     template <std::size_t K>
     void precompute_irradiance(std::size_t stride, unsigned threads = 1)
     {
+        std::vector<Photon> samples = irradiance_samples(stride);
+        std::vector<Rgb<float>> values(samples.size(), Rgb<float>(0.0f));
+        detail::parallel_for(samples.size(), threads, [&](std::size_t i) { values[i] = irradiance<K>(samples[i].position, samples[i].normal()); });
+        set_precomputed_irradiance(std::move(samples), std::move(values), threads);
+    }
+
+    /// The photons precompute_irradiance estimates at: every `stride`-th, but for shadow
+    /// photons.
+    [[nodiscard]] std::vector<Photon> irradiance_samples(std::size_t stride) const
+    {
         std::vector<Photon> samples;
         for (std::size_t i = 0; i < photons_.size(); i += std::max<std::size_t>(stride, 1))
             if (!(photons_[i].flags & Photon::shadow)) samples.push_back(photons_[i]);
-        irradiance_.assign(samples.size(), Rgb<float>(0.0f));
-        detail::parallel_for(samples.size(), threads, [&](std::size_t i) { irradiance_[i] = irradiance<K>(samples[i].position, samples[i].normal()); });
+        return samples;
+    }
+
+    /// Irradiance precomputed elsewhere (by processes that each estimated a share of the
+    /// samples): irradiance[i] = irradiance<K>(samples[i]'s position and normal), samples
+    /// from irradiance_samples.
+    void set_precomputed_irradiance(std::vector<Photon> samples, std::vector<Rgb<float>> irradiance, unsigned threads = 1)
+    {
+        if (samples.size() != irradiance.size())
+            detail::throw_invalid("PhotonMap set_precomputed_irradiance: ", samples.size(), " samples and ", irradiance.size(), " irradiance values");
+        irradiance_ = std::move(irradiance);
         samples_ = std::move(samples);
         sample_tree_.emplace(PhotonPositions{samples_}, threads);
     }
+
+    [[nodiscard]] bool has_precomputed_irradiance() const noexcept { return sample_tree_.has_value(); }
 
     /// The precomputed irradiance nearest p among samples on surfaces facing n's way
     /// (zero when there are none near).
@@ -8915,10 +8961,16 @@ private:
         gather_cells_m_ = std::max(1, int(std::lround(std::sqrt(double(config.gather_rays) / pi<double>))));
         gather_cells_n_ = std::max(1, config.gather_rays / gather_cells_m_);
         maps_ = maps ? std::move(*maps) : trace_photons(scene, config.tracing, air_);
-        if (config.gather_rays > 0) maps_.global.precompute_irradiance<64>(4, config.tracing.threads);
+        if (config.gather_rays > 0 && !maps_.global.has_precomputed_irradiance())
+            maps_.global.template precompute_irradiance<precomputed_k>(precomputed_stride, config.tracing.threads);
     }
 
 public:
+    /// The final gather reads irradiance precomputed at every precomputed_stride-th global
+    /// photon from its precomputed_k nearest (PhotonMap::precompute_irradiance), which the
+    /// constructor works out unless the maps it is given have it already.
+    static constexpr std::size_t precomputed_k = 64, precomputed_stride = 4;
+
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
     [[nodiscard]] const IrradianceCache<T>& irradiance_cache() const noexcept { return cache_; }
 
@@ -9007,7 +9059,9 @@ public:
 private:
     static void validate(const Estimator& e, const char* name)
     {
-        if (!(e.radius > 0.0f && is_finite(e.radius))) detail::throw_invalid(name, " radius must be finite and > 0, got ", e.radius);
+        // The estimates divide by pi r^2: its square must be a finite, normal float.
+        if (!(e.radius * e.radius >= std::numeric_limits<float>::min() && is_finite(e.radius * e.radius)))
+            detail::throw_invalid(name, " radius must be in [1.1e-19, 1.8e19] (its square a finite, normal float), got ", e.radius);
         if (e.k > PhotonMap::max_k) detail::throw_invalid(name, " k must be at most ", PhotonMap::max_k, ", got ", e.k);
         if (!(e.max_height_ratio > 0.0f && e.max_height_ratio <= 1.0f)) detail::throw_invalid(name, " max_height_ratio must be in (0, 1], got ", e.max_height_ratio);
         if (!(e.surface_cos >= 0.0f && e.surface_cos < 1.0f)) detail::throw_invalid(name, " surface_cos must be in [0, 1), got ", e.surface_cos);
