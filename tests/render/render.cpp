@@ -196,3 +196,75 @@ TEST_CASE("a crop or a sample range outside the image is refused with its values
     Accumulation small(8, 6, {0, 0, 4, 6});
     CHECK_THROWS_WITH_AS(render_into(small, camera, integrator, base), doctest::Contains("does not hold the render's window"), std::invalid_argument);
 }
+
+TEST_CASE("random scenes, hostile cameras: no sample of any integrator is NaN, infinite or negative")
+{
+    // Issue 15's property test over whole renders: scenes of random spheres (tiny to
+    // huge, some coincident), boxes of glass (some a sheet), mirror quadrics (open ones cut
+    // to a box) and a CSG lens, at 1 to 10^4 from the origin, lit by a point light and a
+    // directional light, seen from cameras far away, inside objects or grazing the
+    // floor, rendered by Whitted, the path tracer and the photon mapper. Every sample
+    // the render rejects (not finite, or negative) is counted by the film: none may be.
+    using S = Sphere<float>;
+    Pcg32 rng(2026u, 15u);
+    const auto uniform = [&](float lo, float hi) { return lo + (hi - lo) * rng.uniform<float>(); };
+    const auto point = [&](float r) { return Vec3<float>(uniform(-r, r), uniform(-r, r), uniform(-r, r)); };
+    std::size_t renders = 0, samples = 0, lit = 0;
+    for (int trial = 0; trial < 6; ++trial) {
+        const float far = std::pow(10.0f, float(trial % 5)); // 1 to 10^4 from the origin
+        const Vec3<float> centre = point(far);
+        ObjectArray<S, Diffuse<float>> balls;
+        ObjectArray<Box<float>, Dielectric<float>> glass;
+        using Cut = Intersection<Transformed<Quadric<float>>, Box<float>>; // an open quadric cut to a box
+        ObjectArray<Cut, Mirror<float>> mirrors;
+        for (int i = 0; i < 12; ++i) {
+            const float size = std::pow(10.0f, uniform(-3.0f, 1.0f));
+            const Vec3<float> at = centre + point(4.0f);
+            balls.items.emplace_back(S(at, size), Diffuse<float>{.albedo = {.color = Rgb<float>(uniform(0, 1), uniform(0, 1), uniform(0, 1))}});
+            if (i % 4 == 0) balls.items.emplace_back(S(at, size), Diffuse<float>{}); // a coincident twin
+            const Vec3<float> half(size, i % 3 == 0 ? std::max(size * 1e-4f, far * 1e-5f) : size * uniform(0.01f, 1), size); // some a sheet
+            glass.items.emplace_back(Box<float>(at - half + Vec3<float>(1, 0, 0), at + half + Vec3<float>(1, 0, 0)),
+                                     Dielectric<float>{.ior = uniform(1.0f, 2.5f)});
+        }
+        const auto cut = [&](const Quadric<float>& q, const Transform<float>& to_world) {
+            const Vec3<float> at = to_world.point({0, 0, 0});
+            return Cut(Transformed<Quadric<float>>(q, to_world), Box<float>(at - Vec3<float>(1.5f), at + Vec3<float>(1.5f)));
+        };
+        mirrors.items.emplace_back(cut(Quadric<float>::cylinder({0, 0, 0}, {0, 1, 0}, 0.5f), Transform<float>::translate(centre + point(3.0f))), Mirror<float>{});
+        mirrors.items.emplace_back(cut(Quadric<float>::ellipsoid({0, 0, 0}, {1.0f, 0.2f, 0.5f}),
+                                       Transform<float>::rotate(uniform(0, 90), {1, 1, 0}).then(Transform<float>::translate(centre))),
+                                   Mirror<float>{});
+        mirrors.items.emplace_back(cut(Quadric<float>::hyperboloid_one_sheet(0.3f, 0.3f, 0.5f), Transform<float>::translate(centre + point(2.0f))),
+                                   Mirror<float>{});
+        const auto lens = intersection_of(S(centre + Vec3<float>(0, 1, 0.5f), 1), S(centre + Vec3<float>(0, 1, -0.5f), 1));
+        Scene scene{Lights{PointLight<float>{.position = centre + Vec3<float>(0, 6, 0), .intensity = Rgb<float>(50 * far * far)},
+                           DirectionalLight<float>{.direction = normalize(point(1.0f) + Vec3<float>(0, -2, 0)), .irradiance = Rgb<float>(0.5f)}},
+                    Object{Plane<float>({0, 1, 0}, centre.y - 2), Diffuse<float>{}}, std::move(balls), std::move(glass), std::move(mirrors),
+                    Object{lens, Dielectric<float>{.ior = 1.5f}}};
+        scene.background = {0.2f, 0.3f, 0.4f};
+        // Far away, inside a ball, grazing the floor.
+        const std::array<Camera<float>, 3> cameras{
+            Camera<float>{.position = centre + Vec3<float>(0, 3, 40), .look_at = centre, .fov = 30},
+            Camera<float>{.position = centre + point(1.0f), .look_at = centre + point(3.0f) + Vec3<float>(5, 0, 0), .fov = 120},
+            Camera<float>{.position = centre + Vec3<float>(0, -2.0f + 1e-4f, 8), .look_at = centre + Vec3<float>(0, -2, 0), .fov = 60}};
+        const RenderConfig config{.width = 24, .height = 16, .spp = 2, .seed = std::uint64_t(trial), .progress = false};
+        const Whitted whitted(scene);
+        const PathTracer path(scene, {.max_diffuse_bounces = 4});
+        const PhotonMapper mapper(scene, {.tracing = {.global_photons = 3000, .caustic_photons = 3000, .seed = std::uint64_t(trial)}, .gather_rays = 8});
+        for (const auto& camera : cameras) {
+            for (const Film& film : {render(camera, whitted, config), render(camera, path, config), render(camera, mapper, config)}) {
+                CHECK(film.rejected() == 0);
+                for (const auto& p : film.pixels()) {
+                    REQUIRE(std::isfinite(p.x));
+                    REQUIRE(p.x >= 0.0f);
+                    lit += p.x > 0.0f;
+                }
+                ++renders;
+                samples += std::size_t(config.width * config.height * config.spp);
+            }
+        }
+    }
+    MESSAGE(renders << " renders, " << samples << " camera samples, " << lit << " pixels with light");
+    CHECK(renders == 54);
+    CHECK(lit > renders * 24 * 16 / 2); // the scenes are seen, not black
+}
