@@ -159,3 +159,29 @@ TEST_CASE("the photon mapper's furnace: 1.0 within 0.5 %, read directly and by f
         }
     }
 }
+
+TEST_CASE("regression: the final gather sees no light through a wall (a ball inside a closed ball lit from outside)")
+{
+    // Found by the random-scene test: a gather ray meeting a surface no photon reaches
+    // (here the top of a small ball inside a closed big one) read the precomputed
+    // irradiance of the nearest sample facing its way, however far: the lit top of the
+    // big ball, 0.3 above it through the wall: 3.6 % of the lit floor's brightness. A
+    // sample now answers only within the disk its estimate came from: 0.5 % is left,
+    // where a sparse sample's disk reaches through the wall.
+    const Scene scene{Lights{PointLight<float>{.position = {0, 8, 0}, .intensity = Rgb<float>(200)}},
+                      Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{}}, Object{Sphere<float>({0, 2, 0}, 1.5f), Diffuse<float>{}},
+                      Object{Sphere<float>({0, 2.9f, 0}, 0.3f), Diffuse<float>{}}};
+    const PhotonMapper mapper(scene, {.tracing = {.global_photons = 40000, .caustic_photons = 0, .seed = 1}, .gather_rays = 64});
+    const auto mean = [&](const Camera<float>& camera) {
+        const Film film = render(camera, mapper, {.width = 16, .height = 16, .spp = 1, .progress = false});
+        double sum = 0;
+        for (const auto& p : film.pixels()) sum += p.x;
+        return sum / double(film.pixels().size());
+    };
+    // The inside of the big ball, which no light reaches, and the lit floor outside it.
+    const double inside = mean({.position = {0.5f, 1.5f, 0}, .look_at = {0, 3, 0.01f}, .fov = 120});
+    const double outside = mean({.position = {4, 2, 0}, .look_at = {4, 0, 0.01f}, .fov = 30});
+    MESSAGE("inside " << inside << ", outside " << outside);
+    CHECK(outside > 0.1);
+    CHECK(inside < 0.01 * outside);
+}

@@ -169,3 +169,15 @@ TEST_CASE("regression from fuzzing: a radius whose square underflows estimates n
     // A radius whose square is a normal float still sees the photon.
     CHECK(map.irradiance({0, 0, 0}, {0, 1, 0}, {.radius = 1e-10f}).x > 0.0f);
 }
+
+TEST_CASE("a precomputed irradiance sample answers only within the disk its estimate came from")
+{
+    // 10^4 photons on the square [-1, 1]^2 of the floor, E = 2: a sample's 64 nearest
+    // reach about 0.09. Inside the square the lookup reads E; 0.5 beyond its edge, where
+    // no photon landed, it reads nothing (it read E before: the nearest sample facing up).
+    PhotonMap map = uniform_floor(10000, 2.0f, 3);
+    map.precompute_irradiance<64>(4);
+    CHECK(map.precomputed_irradiance({0, 0, 0}, {0, 1, 0}).x == doctest::Approx(2.0).epsilon(0.25));
+    CHECK(map.precomputed_irradiance({1.5f, 0, 0}, {0, 1, 0}).x == 0.0f);
+    CHECK(map.precomputed_irradiance({0, 0.5f, 0}, {0, 1, 0}).x == 0.0f); // above the floor, out of every disk
+}

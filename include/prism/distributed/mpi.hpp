@@ -310,11 +310,8 @@ void precompute_irradiance(MPI_Comm comm, PhotonMap& map, std::size_t stride, un
     std::vector<Photon> samples = map.irradiance_samples(stride);
     const std::size_t n = samples.size(), r = std::size_t(rank(comm)), p = std::size_t(size(comm));
     const std::size_t first = n / p * r + n % p * r / p, last = n / p * (r + 1) + n % p * (r + 1) / p;
-    std::vector<Rgb<float>> mine(last - first);
-    prism::detail::parallel_for(mine.size(), threads, [&](std::size_t i) {
-        const Photon& sample = samples[first + i];
-        mine[i] = map.irradiance<K>(sample.position, sample.normal());
-    });
+    std::vector<PrecomputedIrradiance> mine(last - first);
+    prism::detail::parallel_for(mine.size(), threads, [&](std::size_t i) { mine[i] = map.precomputed_estimate<K>(samples[first + i]); });
     map.set_precomputed_irradiance(std::move(samples), detail::all_gather(comm, mine, traffic), threads);
     if (traffic != nullptr) traffic->irradiance_seconds += clock.lap();
 }

@@ -99,6 +99,12 @@ private:
 
 } // namespace detail
 
+/// A density estimate and the squared radius of the disk it was gathered over.
+struct PrecomputedIrradiance {
+    Rgb<float> irradiance{0.0f};
+    float radius2 = 0;
+};
+
 class PhotonMap {
 public:
     using Tree = KdTree<PhotonPositions, 8>;
@@ -131,8 +137,15 @@ public:
     /// emitted, so the estimate does not depend on the count.
     [[nodiscard]] Rgb<float> irradiance(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator) const noexcept
     {
+        return estimate(p, n, estimator).irradiance;
+    }
+
+    /// irradiance(), with the squared radius of the disk it was gathered over (0 where
+    /// no photon was found).
+    [[nodiscard]] PrecomputedIrradiance estimate(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator) const noexcept
+    {
         Rgb<float> sum(0.0f);
-        if (!tree_ || photons_.empty() || !(estimator.radius > 0.0f)) return sum;
+        if (!tree_ || photons_.empty() || !(estimator.radius > 0.0f)) return {sum, 0.0f};
         const detail::FilterWeight weight(estimator.filter);
         const auto add = [&](std::uint32_t index, float d2, float r2) {
             const Photon& photon = photons_[index];
@@ -145,21 +158,21 @@ public:
         if (estimator.k == 0) {
             // A radius whose square underflows (below 1e-19) holds no density float can
             // state: nothing, as for k nearest all at one point (it divided 0 by 0).
-            if (!(r2 > 0.0f)) return sum;
+            if (!(r2 > 0.0f)) return {sum, 0.0f};
             tree_->within({p.x, p.y, p.z}, estimator.radius, [&](std::uint32_t index, float d2) { add(index, d2, r2); });
         } else {
             std::array<Neighbour<float>, max_k> buffer;
             KNearest<float> found(buffer, estimator.k, r2);
             tree_->search({p.x, p.y, p.z}, found);
-            if (found.size() == 0) return sum;
+            if (found.size() == 0) return {sum, 0.0f};
             const bool rim = found.full();
             if (rim || !(r2 < infinity<float>)) r2 = found.farthest().distance2;
-            if (!(r2 > 0.0f)) return Rgb<float>(0.0f);
+            if (!(r2 > 0.0f)) return {Rgb<float>(0.0f), 0.0f};
             const std::uint32_t on_rim = rim ? found.farthest().index : std::numeric_limits<std::uint32_t>::max();
             for (const Neighbour<float>& neighbour : found)
                 if (neighbour.index != on_rim) add(neighbour.index, neighbour.distance2, r2);
         }
-        return sum / (weight.mean() * pi<float> * r2);
+        return {sum / (weight.mean() * pi<float> * r2), r2};
     }
 
     /// The box-filtered estimate from the K nearest, searched without limit.
@@ -187,9 +200,17 @@ public:
     void precompute_irradiance(std::size_t stride, unsigned threads = 1)
     {
         std::vector<Photon> samples = irradiance_samples(stride);
-        std::vector<Rgb<float>> values(samples.size(), Rgb<float>(0.0f));
-        detail::parallel_for(samples.size(), threads, [&](std::size_t i) { values[i] = irradiance<K>(samples[i].position, samples[i].normal()); });
+        std::vector<PrecomputedIrradiance> values(samples.size());
+        detail::parallel_for(samples.size(), threads, [&](std::size_t i) { values[i] = precomputed_estimate<K>(samples[i]); });
         set_precomputed_irradiance(std::move(samples), std::move(values), threads);
+    }
+
+    /// The estimate precompute_irradiance<K> keeps at a sample.
+    template <std::size_t K>
+    [[nodiscard]] PrecomputedIrradiance precomputed_estimate(const Photon& sample) const noexcept
+    {
+        static_assert(K <= max_k);
+        return estimate(sample.position, sample.normal(), {.k = K, .radius = infinity<float>});
     }
 
     /// The photons precompute_irradiance estimates at: every `stride`-th, but for shadow
@@ -203,13 +224,13 @@ public:
     }
 
     /// Irradiance precomputed elsewhere (by processes that each estimated a share of the
-    /// samples): irradiance[i] = irradiance<K>(samples[i]'s position and normal), samples
-    /// from irradiance_samples.
-    void set_precomputed_irradiance(std::vector<Photon> samples, std::vector<Rgb<float>> irradiance, unsigned threads = 1)
+    /// samples): estimates[i] = precomputed_estimate<K>(samples[i]), samples from
+    /// irradiance_samples.
+    void set_precomputed_irradiance(std::vector<Photon> samples, std::vector<PrecomputedIrradiance> estimates, unsigned threads = 1)
     {
-        if (samples.size() != irradiance.size())
-            detail::throw_invalid("PhotonMap set_precomputed_irradiance: ", samples.size(), " samples and ", irradiance.size(), " irradiance values");
-        irradiance_ = std::move(irradiance);
+        if (samples.size() != estimates.size())
+            detail::throw_invalid("PhotonMap set_precomputed_irradiance: ", samples.size(), " samples and ", estimates.size(), " estimates");
+        irradiance_ = std::move(estimates);
         samples_ = std::move(samples);
         sample_tree_.emplace(PhotonPositions{samples_}, threads);
     }
@@ -217,12 +238,16 @@ public:
     [[nodiscard]] bool has_precomputed_irradiance() const noexcept { return sample_tree_.has_value(); }
 
     /// The precomputed irradiance nearest p among samples on surfaces facing n's way
-    /// (zero when there are none near).
+    /// whose estimate's disk reaches p (zero when there are none). Without that reach, a
+    /// point no photon can reach (inside a closed diffuse ball, the floor beneath it) read
+    /// the nearest sample outside, however far: light through walls.
     [[nodiscard]] Rgb<float> precomputed_irradiance(const Vec3<float>& p, const Vec3<float>& n) const noexcept
     {
         if (!sample_tree_ || samples_.empty()) return Rgb<float>(0.0f);
-        for (const Neighbour<float>& neighbour : sample_tree_->nearest<4>({p.x, p.y, p.z}))
-            if (samples_[neighbour.index].faces(n, Estimator{}.surface_cos)) return irradiance_[neighbour.index];
+        for (const Neighbour<float>& neighbour : sample_tree_->nearest<4>({p.x, p.y, p.z})) {
+            const PrecomputedIrradiance& e = irradiance_[neighbour.index];
+            if (neighbour.distance2 <= e.radius2 && samples_[neighbour.index].faces(n, Estimator{}.surface_cos)) return e.irradiance;
+        }
         return Rgb<float>(0.0f);
     }
 
@@ -250,7 +275,7 @@ private:
     std::vector<Photon> photons_;
     std::optional<Tree> tree_;
     std::vector<Photon> samples_;         ///< photons at which irradiance was precomputed
-    std::vector<Rgb<float>> irradiance_;  ///< their irradiance
+    std::vector<PrecomputedIrradiance> irradiance_; ///< their irradiance, and the squared radius it was estimated over
     std::optional<Tree> sample_tree_;
 };
 
