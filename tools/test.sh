@@ -68,7 +68,7 @@ sanitize="$root/build/sanitize"
 if step sanitize-build bash -c "cmake -S '$root' -B '$sanitize' -G Ninja -DCMAKE_BUILD_TYPE=Debug -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON \
       -DPRISM_TESTS_PCH=ON -DCMAKE_CXX_FLAGS_DEBUG=-g1 \
       -DCMAKE_CXX_FLAGS='-O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer' &&
-      cmake --build '$sanitize' -j $jobs --target prism_tests cli_examples fuzz_corpus_tests"; then
+      cmake --build '$sanitize' -j $jobs --target prism_tests cli_examples test_programs"; then
   ctest --test-dir "$sanitize" -j "$jobs" >"$logs/sanitize-ctest.log" 2>&1 ||
     ctest --test-dir "$sanitize" --rerun-failed --output-on-failure 2>&1 | tail -n 80
   count sanitize "$logs/sanitize-ctest.log"
