@@ -23,6 +23,18 @@ typename prism::PhotonMapper<SceneT>::Config photon_mapper_config(const Options&
             .visibility_k = options.visibility};
 }
 
+/// Progressive photon mapping's settings from the command line (--method progressive).
+template <class SceneT>
+prism::ProgressiveConfig<SceneT> progressive_config(const Options& options)
+{
+    prism::ProgressiveConfig<SceneT> progressive;
+    progressive.pass = photon_mapper_config<SceneT>(options);
+    progressive.pass.caustic.k = 0; // progressive estimates are by radius
+    progressive.passes = options.passes;
+    progressive.first_pass = options.first_pass;
+    return progressive;
+}
+
 /// Render `scene` through `camera` by options.method, reporting the stages' times on stdout:
 ///   direct       the photon mapper reading the global map at the point
 ///   gather       final gathering (options.gather stratified rays)
@@ -58,12 +70,7 @@ Rendered render_by_method(const std::string& name, const SceneT& scene, const pr
         return {name, std::move(sums), seconds()};
     }
     if (method == "progressive") {
-        prism::ProgressiveConfig<SceneT> progressive;
-        progressive.pass = config;
-        progressive.pass.caustic.k = 0; // progressive estimates are by radius
-        progressive.passes = options.passes;
-        progressive.first_pass = options.first_pass;
-        prism::ProgressiveResult result = prism::render_progressive(camera, scene, progressive, options.render);
+        prism::ProgressiveResult result = prism::render_progressive(camera, scene, progressive_config<SceneT>(options), options.render);
         std::printf("%s: progressive photon mapping, %zu passes of %zu + %zu photons, %.3f s\n", name.c_str(), result.passes, options.photons,
                     options.caustic_photons, seconds());
         return {name, std::move(result.sums), seconds()};

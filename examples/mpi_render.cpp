@@ -6,8 +6,9 @@
 //
 //   mpirun -np 4 mpi_render --width 256 --height 256 --threads 1 --out images
 //
-// It takes cornell_caustics' flags (--method direct, gather or cache) and --tile N, the
-// side of the square of pixels dealt at a time. With --method cache every rank builds
+// It takes cornell_caustics' flags (--method direct, gather, cache or progressive, whose
+// passes are dealt to the ranks instead of tiles) and --tile N, the side of the square of
+// pixels dealt at a time. With --method cache every rank builds
 // the whole irradiance cache (its records are found in the order one process finds
 // them: sharing them is the next step). Rank 0 prints the stages' times and each
 // rank's traffic.
@@ -48,9 +49,10 @@ int main(int argc, char** argv)
                              {.photons = true}))
             return 0;
         options.program = "cornell_caustics"; // the same settings as that program's, for tools/merge
-        if (options.method != "direct" && options.method != "gather" && options.method != "cache")
-            throw std::invalid_argument("--method expects direct, gather or cache on MPI ranks, got '" + options.method + "'");
-        if (!options.render.passes.empty()) throw std::invalid_argument("--passes A:B is for one machine's part: mpi_render renders every pass");
+        if (options.method == "reference")
+            throw std::invalid_argument("--method expects direct, gather, cache or progressive on MPI ranks, got '" + options.method + "'");
+        if (!options.render.passes.empty() || options.first_pass != 0)
+            throw std::invalid_argument("--passes A:B is for one machine's part: mpi_render renders every pass");
         const int ranks = prism::mpi::size();
         const auto scene = scenes::cornell_scene<float>(!options.povray_light);
         const auto camera = scenes::cornell_camera<float>();
@@ -62,6 +64,35 @@ int main(int argc, char** argv)
         const auto start = std::chrono::steady_clock::now();
         const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
         prism::mpi::Traffic traffic;
+        // Each rank's traffic and stage times, printed by rank 0 (every rank calls it).
+        const auto report = [&](const prism::mpi::Traffic& t, double done) {
+            constexpr int fields = 11;
+            const double mine[fields] = {double(t.photon_bytes_sent), double(t.photon_bytes_received), double(t.film_bytes), double(t.tiles),
+                                         t.trace_seconds, t.photon_gather_seconds, t.tree_seconds, t.irradiance_seconds, t.render_seconds,
+                                         t.film_gather_seconds, done};
+            std::vector<double> all(rank == 0 ? fields * std::size_t(ranks) : 0);
+            MPI_Gather(mine, fields, MPI_DOUBLE, all.data(), fields, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+            if (rank != 0) return;
+            for (int r = 0; r < ranks; ++r) {
+                const double* v = &all[fields * std::size_t(r)];
+                std::printf("  rank %d: photons sent %.0f B, received %.0f B; film %.0f B; %.0f tiles; trace %.4f s, photon gather %.4f s, trees %.4f s, "
+                            "irradiance %.4f s, render %.4f s, film gather %.4f s; done at %.3f s\n",
+                            r, v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10]);
+            }
+        };
+        if (options.method == "progressive") {
+            // Passes dealt to the ranks, each tracing its own photons.
+            using S = std::remove_cvref_t<decltype(scene)>;
+            std::optional<prism::ProgressiveResult> result =
+                prism::mpi::render_progressive(MPI_COMM_WORLD, camera, scene, examples::progressive_config<S>(options), options.render, prism::StraightAir{},
+                                               &traffic);
+            const double done = seconds();
+            report(traffic, done);
+            if (rank != 0) return 0;
+            std::printf("cornell_caustics on %d ranks: progressive photon mapping, %zu passes, total %.3f s\n", ranks, result->passes, done);
+            examples::save(examples::Rendered{"cornell_caustics", std::move(result->sums), done}, options, true);
+            return 0;
+        }
         prism::PhotonMaps maps = prism::mpi::trace_photons(MPI_COMM_WORLD, scene, config.tracing, prism::StraightAir{}, 0, &traffic);
         using Mapper = prism::PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
         if (config.gather_rays > 0)
@@ -76,22 +107,10 @@ int main(int argc, char** argv)
                                                          : prism::mpi::render_sums(MPI_COMM_WORLD, camera, mapper, options.render, tile, &traffic);
         const double rendered = seconds();
 
-        // Each rank's traffic and stage times, printed by rank 0.
-        constexpr int fields = 11;
-        const double mine[fields] = {double(traffic.photon_bytes_sent), double(traffic.photon_bytes_received), double(traffic.film_bytes),
-                                     double(traffic.tiles), traffic.trace_seconds, traffic.photon_gather_seconds, traffic.tree_seconds,
-                                     traffic.irradiance_seconds, traffic.render_seconds, traffic.film_gather_seconds, rendered};
-        std::vector<double> all(rank == 0 ? fields * std::size_t(ranks) : 0);
-        MPI_Gather(mine, fields, MPI_DOUBLE, all.data(), fields, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+        report(traffic, rendered);
         if (rank != 0) return 0;
         std::printf("cornell_caustics on %d ranks: photon maps %.3f s, irradiance cache %.3f s, render %.3f s, total %.3f s\n", ranks, traced,
                     cached - traced, rendered - cached, rendered);
-        for (int r = 0; r < ranks; ++r) {
-            const double* t = &all[fields * std::size_t(r)];
-            std::printf("  rank %d: photons sent %.0f B, received %.0f B; film %.0f B; %.0f tiles; trace %.4f s, photon gather %.4f s, trees %.4f s, "
-                        "irradiance %.4f s, render %.4f s, film gather %.4f s; done at %.3f s\n",
-                        r, t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8], t[9], t[10]);
-        }
         examples::save(examples::Rendered{"cornell_caustics", std::move(*sums), rendered}, options, true);
         return 0;
     });

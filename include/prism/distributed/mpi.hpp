@@ -17,8 +17,11 @@
 //   number, and its sums are exact (render/accumulation.hpp), so rank 0, adding the
 //   tiles it receives into an empty image, has the single-process render's bits for
 //   any number of ranks and any dealing.
+// - Progressive photon mapping: its passes are dealt the same way, each rank summing
+//   its own, and the ranks' sums added up on rank 0 by a reduction of 128-bit integers.
 #pragma once
 
+#include <prism/integrator/progressive.hpp>
 #include <prism/photon/photon_tracer.hpp>
 #include <prism/render/accumulation.hpp>
 #include <prism/render/layers.hpp>
@@ -27,6 +30,7 @@
 #include <mpi.h>
 
 #include <climits>
+#include <limits>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -41,13 +45,13 @@ namespace prism::mpi {
 struct Traffic {
     std::uint64_t photon_bytes_sent = 0;     ///< its photons (and precomputed irradiance), to every other rank
     std::uint64_t photon_bytes_received = 0; ///< the other ranks' photons (and precomputed irradiance)
-    std::uint64_t film_bytes = 0;            ///< its tiles' sums sent to rank 0 (rank 0: those it received)
-    std::uint64_t tiles = 0;                 ///< tiles it rendered
+    std::uint64_t film_bytes = 0;            ///< its tiles' sums sent to rank 0 (rank 0: those it received), or its share of a reduction
+    std::uint64_t tiles = 0;                 ///< tiles (or progressive passes) it rendered
     double trace_seconds = 0;                ///< tracing its share of the photons
     double photon_gather_seconds = 0;        ///< the all-gathers (with the wait for the slowest rank)
     double tree_seconds = 0;                 ///< building the maps' trees (every rank builds them all)
     double irradiance_seconds = 0;           ///< precomputing irradiance at its share of the global photons, and the all-gather
-    double render_seconds = 0;               ///< rendering its tiles
+    double render_seconds = 0;               ///< rendering its tiles (or passes)
     double film_gather_seconds = 0;          ///< the film's gather (with the wait for the slowest rank) and, on rank 0, adding it up
 };
 
@@ -62,7 +66,7 @@ inline void check(int code, const char* call)
     throw std::runtime_error(std::string("prism::mpi: ") + call + " failed: " + std::string(text, std::size_t(length)));
 }
 
-/// Seconds since the last lap (or the start).
+/// Seconds since the last lap (or the start), and since the start.
 class Stopwatch {
 public:
     double lap() noexcept
@@ -71,9 +75,10 @@ public:
         last_ = now;
         return seconds;
     }
+    [[nodiscard]] double total() const noexcept { return MPI_Wtime() - start_; }
 
 private:
-    double last_ = MPI_Wtime();
+    double start_ = MPI_Wtime(), last_ = start_;
 };
 
 /// An element count MPI takes (an int), or a clear error.
@@ -132,10 +137,11 @@ struct Tiles {
     }
 };
 
-/// A shared counter on rank 0 that any rank raises by one and reads (the next tile).
-class TileCounter {
+/// A shared counter on rank 0 that any rank raises by one and reads (the next tile or
+/// pass to take).
+class WorkCounter {
 public:
-    explicit TileCounter(MPI_Comm comm)
+    explicit WorkCounter(MPI_Comm comm)
     {
         int rank = 0;
         check(MPI_Comm_rank(comm, &rank), "MPI_Comm_rank");
@@ -146,9 +152,9 @@ public:
         check(MPI_Barrier(comm), "MPI_Barrier");
         check(MPI_Win_lock_all(0, window_), "MPI_Win_lock_all");
     }
-    TileCounter(const TileCounter&) = delete;
-    TileCounter& operator=(const TileCounter&) = delete;
-    ~TileCounter()
+    WorkCounter(const WorkCounter&) = delete;
+    WorkCounter& operator=(const WorkCounter&) = delete;
+    ~WorkCounter()
     {
         MPI_Win_unlock_all(window_);
         MPI_Win_free(&window_);
@@ -189,7 +195,7 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
     std::vector<std::uint64_t> mine;
     const std::size_t words_per_pixel = 1 + 2 * channels.size();
     {
-        TileCounter counter(comm);
+        WorkCounter counter(comm);
         for (std::int64_t t = counter.next(); t < tiles.count(); t = counter.next()) {
             RenderConfig part = config;
             part.crop = tiles[t];
@@ -262,6 +268,77 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
     return image;
 }
 
+/// 128-bit integers (two 64-bit words, low first) summed by MPI_Reduce. An overflow, or
+/// an operand that overflowed before, gives the lowest value, which no exact sum or
+/// weight can be (their magnitudes stay below 2^127): rank 0 then refuses the result.
+inline constexpr Int128 overflowed_sum = Int128(UInt128(1) << 127);
+
+inline void add_int128(void* in, void* inout, int* count, MPI_Datatype*)
+{
+    auto* a = static_cast<std::uint64_t*>(in);
+    auto* b = static_cast<std::uint64_t*>(inout);
+    for (int i = 0; i < *count; ++i, a += 2, b += 2) {
+        const auto x = static_cast<Int128>((UInt128(a[1]) << 64) | a[0]), y = static_cast<Int128>((UInt128(b[1]) << 64) | b[0]);
+        Int128 sum = 0;
+        if (x == overflowed_sum || y == overflowed_sum || __builtin_add_overflow(x, y, &sum)) sum = overflowed_sum;
+        b[0] = std::uint64_t(UInt128(sum));
+        b[1] = std::uint64_t(UInt128(sum) >> 64);
+    }
+}
+
+/// Every rank's `sums` (the same window and channels on each) added up on rank 0, by a
+/// reduction of 128-bit integers: the exact sums of every share.
+inline std::optional<Accumulation> reduce_sums(MPI_Comm comm, const Accumulation& sums, Traffic* traffic)
+{
+    int rank = 0;
+    check(MPI_Comm_rank(comm, &rank), "MPI_Comm_rank");
+    const PixelWindow& w = sums.window();
+    const std::size_t channels = sums.channels().size(), per_pixel = 1 + channels;
+    // Per pixel: the weight, then each channel's sum, each as two words.
+    std::vector<std::uint64_t> mine, all;
+    mine.reserve(2 * per_pixel * w.area());
+    for (int y = w.y0; y < w.y1; ++y)
+        for (int x = w.x0; x < w.x1; ++x) {
+            mine.insert(mine.end(), {sums.weight(x, y), 0});
+            for (const ExactSum& s : sums.sums(x, y)) {
+                const auto bits = static_cast<UInt128>(s.bits());
+                mine.insert(mine.end(), {std::uint64_t(bits), std::uint64_t(bits >> 64)});
+            }
+        }
+    if (rank == 0) all.resize(mine.size());
+    MPI_Datatype int128{};
+    MPI_Op sum{};
+    check(MPI_Type_contiguous(2, MPI_UINT64_T, &int128), "MPI_Type_contiguous");
+    check(MPI_Type_commit(&int128), "MPI_Type_commit");
+    check(MPI_Op_create(&add_int128, 1, &sum), "MPI_Op_create");
+    const int code = MPI_Reduce(mine.data(), all.data(), count_of(mine.size() / 2, "128-bit sums"), int128, sum, 0, comm);
+    MPI_Op_free(&sum);
+    MPI_Type_free(&int128);
+    check(code, "MPI_Reduce");
+    unsigned long long rejected = sums.rejected(), total_rejected = 0;
+    int overflowed = sums.overflowed() ? 1 : 0, any_overflowed = 0;
+    check(MPI_Reduce(&rejected, &total_rejected, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, 0, comm), "MPI_Reduce");
+    check(MPI_Reduce(&overflowed, &any_overflowed, 1, MPI_INT, MPI_LOR, 0, comm), "MPI_Reduce");
+    if (traffic != nullptr) traffic->film_bytes += mine.size() * sizeof(std::uint64_t);
+    if (rank != 0) return std::nullopt;
+
+    Accumulation image(sums.width(), sums.height(), w, sums.channels());
+    std::vector<ExactSum> pixel(channels);
+    const auto word = [&](std::size_t i) { return static_cast<Int128>((UInt128(all[2 * i + 1]) << 64) | all[2 * i]); };
+    std::size_t at = 0;
+    for (int y = w.y0; y < w.y1; ++y)
+        for (int x = w.x0; x < w.x1; ++x, at += per_pixel) {
+            bool bad = any_overflowed != 0;
+            for (std::size_t i = at; i < at + per_pixel; ++i) bad |= word(i) == overflowed_sum;
+            if (bad || word(at) < 0 || word(at) > Int128(std::numeric_limits<std::uint64_t>::max()))
+                prism::detail::throw_invalid("prism::mpi: the ranks' sums overflowed (a sum passed 2^63): the image would be wrong");
+            for (std::size_t c = 0; c < channels; ++c) pixel[c] = ExactSum::from_bits(word(at + 1 + c));
+            image.add(x, y, pixel, std::uint64_t(word(at)));
+        }
+    image.reject(std::size_t(total_rejected));
+    return image;
+}
+
 } // namespace detail
 
 [[nodiscard]] inline int rank(MPI_Comm comm = MPI_COMM_WORLD)
@@ -314,6 +391,43 @@ void precompute_irradiance(MPI_Comm comm, PhotonMap& map, std::size_t stride, un
     prism::detail::parallel_for(mine.size(), threads, [&](std::size_t i) { mine[i] = map.precomputed_estimate<K>(samples[first + i]); });
     map.set_precomputed_irradiance(std::move(samples), detail::all_gather(comm, mine, traffic), threads);
     if (traffic != nullptr) traffic->irradiance_seconds += clock.lap();
+}
+
+/// render_progressive over the ranks of `comm`: passes [first_pass, first_pass + passes)
+/// dealt one at a time to whichever rank asks next, each rendered by render_progressive
+/// on the rank's threads (its photons traced there), every rank's passes summed exactly
+/// and the shares added up on rank 0 by a reduction of 128-bit sums. Rank 0 returns the
+/// single-process result's bits (its `seconds` are rank 0's); the others nullopt.
+/// config.passes must be > 0: a time budget would make the pass count depend on the
+/// machines.
+template <class SceneT, class Air = StraightAir>
+[[nodiscard]] std::optional<ProgressiveResult> render_progressive(MPI_Comm comm, const Camera<typename SceneT::scalar_type>& camera, const SceneT& scene,
+                                                                  const ProgressiveConfig<SceneT, Air>& config, const RenderConfig& render_config,
+                                                                  const Air& air = {}, Traffic* traffic = nullptr)
+{
+    prism::detail::validate_progressive(camera, config, render_config);
+    if (config.passes == 0 || config.seconds != 0.0)
+        prism::detail::throw_invalid("prism::mpi::render_progressive takes a pass count (ProgressiveConfig passes > 0, seconds 0), got passes ",
+                                     config.passes, " and seconds ", config.seconds);
+    detail::Stopwatch clock;
+    Accumulation mine(render_config.width, render_config.height, prism::detail::render_window(render_config));
+    {
+        detail::WorkCounter counter(comm);
+        for (std::int64_t k = counter.next(); k < std::int64_t(config.passes); k = counter.next()) {
+            ProgressiveConfig<SceneT, Air> one = config;
+            one.first_pass = config.first_pass + std::size_t(k);
+            one.passes = 1;
+            RenderConfig quiet = render_config;
+            quiet.progress = false;
+            mine += prism::render_progressive(camera, scene, one, quiet, air).sums;
+            if (traffic != nullptr) ++traffic->tiles;
+        }
+    }
+    if (traffic != nullptr) traffic->render_seconds += clock.lap();
+    std::optional<Accumulation> sums = detail::reduce_sums(comm, mine, traffic);
+    if (traffic != nullptr) traffic->film_gather_seconds += clock.lap();
+    if (!sums) return std::nullopt;
+    return ProgressiveResult{std::move(*sums), config.passes, clock.total()};
 }
 
 /// render_sums over the ranks of `comm`, `tile` x `tile` pixels dealt at a time (each

@@ -78,11 +78,12 @@ struct ProgressiveResult {
     [[nodiscard]] Film image() const { return sums.image(); }
 };
 
-/// Render `scene` by progressive photon mapping: `render`'s size, samples per pixel per
-/// pass, threads and seed; the same bits for any thread count.
-template <class SceneT, class Air = StraightAir>
-[[nodiscard]] ProgressiveResult render_progressive(const Camera<typename SceneT::scalar_type>& camera, const SceneT& scene,
-                                                   const ProgressiveConfig<SceneT, Air>& config, const RenderConfig& render_config, const Air& air = {})
+namespace detail {
+
+/// render_progressive's checks, before its first pass (and before a distributed render
+/// deals any: every process refuses alike).
+template <class SceneT, class Air>
+void validate_progressive(const Camera<typename SceneT::scalar_type>& camera, const ProgressiveConfig<SceneT, Air>& config, const RenderConfig& render_config)
 {
     if (!(config.alpha > 0.0 && config.alpha < 1.0)) detail::throw_invalid("ProgressiveConfig alpha must be in (0, 1), got ", config.alpha);
     if (config.pass.gather_rays != 0) detail::throw_invalid("ProgressiveConfig pass.gather_rays must be 0 (the maps are read directly), got ", config.pass.gather_rays);
@@ -95,6 +96,17 @@ template <class SceneT, class Air = StraightAir>
     if (render_config.passes != PassRange{})
         detail::throw_invalid("render_progressive takes its passes from ProgressiveConfig (first_pass, passes), not RenderConfig passes [",
                               render_config.passes.first, ", ", render_config.passes.last, ")");
+}
+
+} // namespace detail
+
+/// Render `scene` by progressive photon mapping: `render`'s size, samples per pixel per
+/// pass, threads and seed; the same bits for any thread count.
+template <class SceneT, class Air = StraightAir>
+[[nodiscard]] ProgressiveResult render_progressive(const Camera<typename SceneT::scalar_type>& camera, const SceneT& scene,
+                                                   const ProgressiveConfig<SceneT, Air>& config, const RenderConfig& render_config, const Air& air = {})
+{
+    detail::validate_progressive(camera, config, render_config);
 
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
