@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The command line shared by every example: size, samples, threads, seed, output folder,
 // and the parts of a render split across machines (crop windows, ranges of passes),
-// written as EXR with their exact sums for tools/merge to add up.
+// written as EXR with their exact sums for prism_merge to add up.
 #pragma once
 
 #include <prism/io/image.hpp>
@@ -83,7 +83,7 @@ inline void print_help(const char* program, const char* description, const Optio
                 "                fractions of the width and height (pbrt's --cropwindow); the same bits as those pixels\n"
                 "                of the whole render (default: the whole image)\n"
                 "  --passes A:B  render only passes [A, B): samples of --spp, or progressive photon mapping's passes;\n"
-                "                parts add up with tools/merge to the whole render's bits (default: all)\n"
+                "                parts add up with prism_merge to the whole render's bits (default: all)\n"
                 "  --exr         also write each image as EXR (float RGB and the render's settings); a part (--crop,\n"
                 "                --passes A:B) always writes EXR, with its exact sums (default: off)\n"
                 "  --help        this text\n",
@@ -352,7 +352,7 @@ int run(Body&& body) noexcept
 }
 
 /// Every setting that changes a bit of the image, written out: parts of one render
-/// must agree on it (tools/merge refuses them otherwise). Thread count, output and the
+/// must agree on it (prism_merge refuses them otherwise). Thread count, output and the
 /// part's own window and passes change no bit and are left out.
 inline std::string settings(const Options& options)
 {
@@ -386,7 +386,7 @@ struct Rendered {
 
 /// Write an image as name.png (and name.pfm, exact floats, with `pfm`); as name.exr too
 /// with --exr, and always for a part of a render (--crop, --passes A:B), with the exact
-/// sums and the metadata tools/merge needs to add it to the other parts.
+/// sums and the metadata prism_merge needs to add it to the other parts.
 inline void save(const Rendered& rendered, const Options& options, bool pfm = false)
 {
     const prism::Film film = rendered.image();

@@ -48,7 +48,7 @@ int main(int argc, char** argv)
         if (!examples::parse(int(args.size()), args.data(), options, "the Cornell box with photon-mapped caustics, on MPI ranks",
                              {.photons = true}))
             return 0;
-        options.program = "cornell_caustics"; // the same settings as that program's, for tools/merge
+        options.program = "cornell_caustics"; // the same settings as that program's, for prism_merge
         if (options.method == "reference")
             throw std::invalid_argument("--method expects direct, gather, cache or progressive on MPI ranks, got '" + options.method + "'");
         if (!options.render.passes.empty() || options.first_pass != 0)
