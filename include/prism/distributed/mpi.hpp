@@ -88,6 +88,37 @@ inline int count_of(std::uint64_t n, const char* what)
     return int(n);
 }
 
+/// Where each rank's part lies in a message of all ranks' parts (counts in elements).
+struct Displacements {
+    std::vector<int> counts, offsets;
+    std::uint64_t total = 0;
+};
+
+inline Displacements displacements(const std::vector<unsigned long long>& counts, const char* what)
+{
+    Displacements d;
+    for (const unsigned long long n : counts) {
+        d.counts.push_back(count_of(n, what));
+        d.offsets.push_back(count_of(d.total, what));
+        d.total += n;
+    }
+    (void)count_of(d.total, what);
+    return d;
+}
+
+/// A pixel's weight and exact sums as the messages carry them: each a 128-bit integer,
+/// two 64-bit words, low first.
+inline void append_pixel(std::vector<std::uint64_t>& words, const Accumulation& sums, int x, int y)
+{
+    words.insert(words.end(), {sums.weight(x, y), 0});
+    for (const ExactSum& s : sums.sums(x, y)) {
+        const auto bits = static_cast<UInt128>(s.bits());
+        words.insert(words.end(), {std::uint64_t(bits), std::uint64_t(bits >> 64)});
+    }
+}
+
+[[nodiscard]] inline Int128 int128_at(const std::uint64_t* words) noexcept { return static_cast<Int128>((UInt128(words[1]) << 64) | words[0]); }
+
 /// Every rank's items, end to end in rank order, on every rank (the bytes each rank
 /// sent and received added to traffic's photon counts).
 template <class Item>
@@ -99,20 +130,14 @@ std::vector<Item> all_gather(MPI_Comm comm, const std::vector<Item>& mine, Traff
     const unsigned long long n = mine.size();
     std::vector<unsigned long long> counts(static_cast<std::size_t>(size), 0);
     check(MPI_Allgather(&n, 1, MPI_UNSIGNED_LONG_LONG, counts.data(), 1, MPI_UNSIGNED_LONG_LONG, comm), "MPI_Allgather");
-    std::vector<int> receive(static_cast<std::size_t>(size)), offset(static_cast<std::size_t>(size));
-    std::uint64_t total = 0;
-    for (std::size_t r = 0; r < counts.size(); ++r) {
-        receive[r] = count_of(counts[r], "items");
-        offset[r] = count_of(total, "items");
-        total += counts[r];
-    }
-    (void)count_of(total, "items");
+    const Displacements parts = displacements(counts, "items");
+    const std::uint64_t total = parts.total;
     // An item as one element of sizeof(Item) bytes: counts in items, not bytes.
     MPI_Datatype item{};
     check(MPI_Type_contiguous(int(sizeof(Item)), MPI_BYTE, &item), "MPI_Type_contiguous");
     check(MPI_Type_commit(&item), "MPI_Type_commit");
     std::vector<Item> all(total);
-    const int code = MPI_Allgatherv(mine.data(), int(n), item, all.data(), receive.data(), offset.data(), item, comm);
+    const int code = MPI_Allgatherv(mine.data(), int(n), item, all.data(), parts.counts.data(), parts.offsets.data(), item, comm);
     MPI_Type_free(&item);
     check(code, "MPI_Allgatherv");
     if (traffic != nullptr) {
@@ -190,10 +215,10 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
     const Tiles tiles(window, tile);
 
     // Each tile's record: its number, the values it rejected, whether a sum overflowed,
-    // then per pixel (in rows) its weight and each channel's 128 bits as two words.
+    // then its pixels in rows (append_pixel).
     Stopwatch clock;
     std::vector<std::uint64_t> mine;
-    const std::size_t words_per_pixel = 1 + 2 * channels.size();
+    const std::size_t words_per_pixel = 2 * (1 + channels.size());
     {
         WorkCounter counter(comm);
         for (std::int64_t t = counter.next(); t < tiles.count(); t = counter.next()) {
@@ -203,14 +228,7 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
             const Accumulation sums = render_part(part);
             mine.insert(mine.end(), {std::uint64_t(t), std::uint64_t(sums.rejected()), std::uint64_t(sums.overflowed())});
             for (int y = part.crop.y0; y < part.crop.y1; ++y)
-                for (int x = part.crop.x0; x < part.crop.x1; ++x) {
-                    mine.push_back(sums.weight(x, y));
-                    for (const ExactSum& s : sums.sums(x, y)) {
-                        const auto bits = static_cast<UInt128>(s.bits());
-                        mine.push_back(std::uint64_t(bits));
-                        mine.push_back(std::uint64_t(bits >> 64));
-                    }
-                }
+                for (int x = part.crop.x0; x < part.crop.x1; ++x) append_pixel(mine, sums, x, y);
             if (traffic != nullptr) ++traffic->tiles;
         }
     }
@@ -222,15 +240,11 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
     const unsigned long long n = mine.size();
     std::vector<unsigned long long> counts(std::size_t(rank == 0 ? size : 0));
     check(MPI_Gather(&n, 1, MPI_UNSIGNED_LONG_LONG, counts.data(), 1, MPI_UNSIGNED_LONG_LONG, 0, comm), "MPI_Gather");
-    std::vector<int> receive(counts.size()), offset(counts.size());
-    std::uint64_t total = 0;
-    for (std::size_t r = 0; r < counts.size(); ++r) {
-        receive[r] = count_of(counts[r], "film words");
-        offset[r] = count_of(total, "film words");
-        total += counts[r];
-    }
+    const Displacements parts = displacements(counts, "film words");
+    const std::uint64_t total = parts.total;
     std::vector<std::uint64_t> all(rank == 0 ? total : 0);
-    check(MPI_Gatherv(mine.data(), count_of(n, "film words"), MPI_UINT64_T, all.data(), receive.data(), offset.data(), MPI_UINT64_T, 0, comm),
+    check(MPI_Gatherv(mine.data(), count_of(n, "film words"), MPI_UINT64_T, all.data(), parts.counts.data(), parts.offsets.data(), MPI_UINT64_T, 0,
+                      comm),
           "MPI_Gatherv");
     if (traffic != nullptr) traffic->film_bytes += (rank == 0 ? total - n : n) * sizeof(std::uint64_t);
     if (rank != 0) {
@@ -251,10 +265,8 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
         at += 3;
         for (int y = w.y0; y < w.y1; ++y)
             for (int x = w.x0; x < w.x1; ++x) {
-                const std::uint64_t weight = all[at];
-                for (std::size_t c = 0; c < channels.size(); ++c)
-                    pixel[c] = ExactSum::from_bits(static_cast<Int128>((UInt128(all[at + 2 + 2 * c]) << 64) | UInt128(all[at + 1 + 2 * c])));
-                image.add(x, y, pixel, weight);
+                for (std::size_t c = 0; c < channels.size(); ++c) pixel[c] = ExactSum::from_bits(int128_at(&all[at + 2 + 2 * c]));
+                image.add(x, y, pixel, all[at]);
                 at += words_per_pixel;
             }
         ++received;
@@ -278,7 +290,7 @@ inline void add_int128(void* in, void* inout, int* count, MPI_Datatype*)
     auto* a = static_cast<std::uint64_t*>(in);
     auto* b = static_cast<std::uint64_t*>(inout);
     for (int i = 0; i < *count; ++i, a += 2, b += 2) {
-        const auto x = static_cast<Int128>((UInt128(a[1]) << 64) | a[0]), y = static_cast<Int128>((UInt128(b[1]) << 64) | b[0]);
+        const Int128 x = int128_at(a), y = int128_at(b);
         Int128 sum = 0;
         if (x == overflowed_sum || y == overflowed_sum || __builtin_add_overflow(x, y, &sum)) sum = overflowed_sum;
         b[0] = std::uint64_t(UInt128(sum));
@@ -294,17 +306,10 @@ inline std::optional<Accumulation> reduce_sums(MPI_Comm comm, const Accumulation
     check(MPI_Comm_rank(comm, &rank), "MPI_Comm_rank");
     const PixelWindow& w = sums.window();
     const std::size_t channels = sums.channels().size(), per_pixel = 1 + channels;
-    // Per pixel: the weight, then each channel's sum, each as two words.
     std::vector<std::uint64_t> mine, all;
     mine.reserve(2 * per_pixel * w.area());
     for (int y = w.y0; y < w.y1; ++y)
-        for (int x = w.x0; x < w.x1; ++x) {
-            mine.insert(mine.end(), {sums.weight(x, y), 0});
-            for (const ExactSum& s : sums.sums(x, y)) {
-                const auto bits = static_cast<UInt128>(s.bits());
-                mine.insert(mine.end(), {std::uint64_t(bits), std::uint64_t(bits >> 64)});
-            }
-        }
+        for (int x = w.x0; x < w.x1; ++x) append_pixel(mine, sums, x, y);
     if (rank == 0) all.resize(mine.size());
     MPI_Datatype int128{};
     MPI_Op sum{};
@@ -324,7 +329,7 @@ inline std::optional<Accumulation> reduce_sums(MPI_Comm comm, const Accumulation
 
     Accumulation image(sums.width(), sums.height(), w, sums.channels());
     std::vector<ExactSum> pixel(channels);
-    const auto word = [&](std::size_t i) { return static_cast<Int128>((UInt128(all[2 * i + 1]) << 64) | all[2 * i]); };
+    const auto word = [&](std::size_t i) { return int128_at(&all[2 * i]); };
     std::size_t at = 0;
     for (int y = w.y0; y < w.y1; ++y)
         for (int x = w.x0; x < w.x1; ++x, at += per_pixel) {
