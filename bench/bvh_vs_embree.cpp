@@ -331,12 +331,12 @@ int main(int argc, char** argv)
     meshes.emplace_back("terrain", height_field<T>(T(-1.5), T(1.5), T(-1.5), T(1.5), 707, [](T x, T z) {
                             return T(0.15) * std::sin(T(7) * x) * std::cos(T(5) * z) + T(0.05) * std::sin(T(31) * x + T(17) * z) - T(0.3);
                         }));
-    for (const auto& [name, buffers] : meshes) {
+    for (const auto& [mesh_name, buffers] : meshes) {
         auto start = std::chrono::steady_clock::now();
         const Scene scene{lights, Object{TriangleMesh<T>(buffers.positions, buffers.triangles), Diffuse<T>{}}};
         const double prism_build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const double embree_build = embree.triangles(buffers);
-        race(csv, {name, buffers.triangles.size(), prism_build, embree_build}, scene, embree, make_rays(scene, primary), repeats);
+        race(csv, {mesh_name, buffers.triangles.size(), prism_build, embree_build}, scene, embree, make_rays(scene, primary), repeats);
     }
     return 0;
 }

@@ -92,7 +92,7 @@ TEST_CASE_TEMPLATE("a triangle's hit against Moller-Trumbore in long double, awa
 TEST_CASE_TEMPLATE("a mesh's Bvh finds what testing every triangle finds (leaves of blocks of 4 or 8)", T, float, double)
 {
     Pcg32 rng(5u, 14u);
-    for (const auto [n, block] : {std::pair{1, 4}, {7, 4}, {100, 4}, {3000, 4}, {7, 8}, {3000, 8}}) {
+    for (const auto& [n, block] : {std::pair{1, 4}, {7, 4}, {100, 4}, {3000, 4}, {7, 8}, {3000, 8}}) {
         const auto positions = soup_positions<T>(rng, n, T(10), T(1));
         const auto triangles = soup_triangles(n);
         const TriangleMesh<T> mesh(positions, triangles, {.max_leaf_size = 2 * block, .leaf_block = block});

@@ -32,6 +32,30 @@ TEST_CASE("ExactSum keeps every float sample from 2^-41 to 2^40 exactly, and rou
     CHECK(!ExactSum::takes(std::numeric_limits<double>::infinity()));
 }
 
+TEST_CASE("ExactSum::of, done in integers, equals the library's round(ldexp(x, 64)) for doubles of every size")
+{
+    // The reference: the formula of() replaced (the library's calls), on doubles of
+    // every exponent from denormals to the limit, both signs, with random mantissas and
+    // with halves and their neighbours (the rounding's edge), and in constant evaluation.
+    const auto reference = [](double x) { return Int128(std::round(std::ldexp(x, 64))); };
+    std::mt19937_64 random(11);
+    std::uniform_int_distribution<int> exponent(-1074, 39);
+    std::uniform_int_distribution<std::uint64_t> mantissa(0, (std::uint64_t(1) << 53) - 1);
+    for (int i = 0; i < 1000000; ++i) {
+        const double x = std::ldexp(double(mantissa(random)), exponent(random) - 52);
+        if (!(x < ExactSum::limit)) continue;
+        REQUIRE(ExactSum::of(x).bits() == reference(x));
+        REQUIRE(ExactSum::of(-x).bits() == reference(-x));
+    }
+    for (int k = -120; k <= 39; ++k)
+        for (const double x : {std::ldexp(1.0, k), std::ldexp(3.0, k - 1), std::ldexp(5.0, k - 2)})
+            for (const double y : {x, std::nextafter(x, 0.0), std::nextafter(x, 1e300), -x})
+                if (std::abs(y) < ExactSum::limit) REQUIRE(ExactSum::of(y).bits() == reference(y));
+    for (const double x : {0.0, -0.0, std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::min(), std::nextafter(ExactSum::limit, 0.0)})
+        CHECK(ExactSum::of(x).bits() == reference(x));
+    static_assert(ExactSum::of(0.75).bits() == Int128(3) << 62 && ExactSum::of(-0x1p-65).bits() == -1);
+}
+
 TEST_CASE("ExactSum adds without rounding, so any order and grouping gives the same bits")
 {
     // (2^40 - 1) + 2^-40 - (2^40 - 1) is 2^-40; in double the small term is lost (it

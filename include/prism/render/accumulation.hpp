@@ -17,6 +17,7 @@
 #include <prism/render/film.hpp>
 
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -71,13 +72,26 @@ public:
 
     constexpr ExactSum() noexcept = default;
 
-    /// x rounded to the nearest multiple of 2^-64 (halves away from zero). |x| < limit.
-    [[nodiscard]] static ExactSum of(double x) noexcept
+    /// x rounded to the nearest multiple of 2^-64 (halves away from zero), which is
+    /// Int128(round(ldexp(x, 64))). |x| < limit.
+    [[nodiscard]] static constexpr ExactSum of(double x) noexcept
     {
-        PRISM_ASSERT(std::abs(x) < limit);
-        // x 2^64 is exact (a power of two) and below 2^104; below 2^52 in magnitude it
-        // may have a fraction, which round() removes exactly; above, it is an integer.
-        return from_bits(Int128(std::round(std::ldexp(x, 64))));
+        PRISM_ASSERT(x > -limit && x < limit);
+        // From x's bits, in integers: |x| = m 2^(e - 1075) (e the biased exponent, m
+        // with its leading one, or a denormal's m at e = 1), so |x| 2^64 = m 2^s. (The
+        // library's ldexp, round and double-to-__int128 conversion are calls, one a
+        // sample and channel: 5 % of a Whitted render of the Cornell box.)
+        const auto bits = std::bit_cast<std::uint64_t>(x);
+        const auto biased = int((bits >> 52) & 0x7ff);
+        const std::uint64_t fraction = bits & ((std::uint64_t(1) << 52) - 1);
+        const std::uint64_t m = biased == 0 ? fraction : fraction | (std::uint64_t(1) << 52);
+        const int s = (biased == 0 ? 1 : biased) - 1075 + 64;
+        UInt128 magnitude = 0;
+        if (s >= 0) magnitude = UInt128(m) << s; // below 2^(40 + 64): no bit lost
+        else if (s > -54) magnitude = (m + (std::uint64_t(1) << (-s - 1))) >> -s; // half up: away from zero
+        // (s <= -54: m 2^s < 2^53 2^-54, nearer 0.)
+        const auto value = Int128(magnitude);
+        return from_bits((bits >> 63) != 0 ? -value : value);
     }
 
     /// Whether x is a sample this type takes: finite and |x| < limit.
@@ -101,7 +115,7 @@ public:
     }
 
     /// The sum, rounded once to double.
-    [[nodiscard]] double value() const noexcept { return std::ldexp(double(bits_), -64); }
+    [[nodiscard]] double value() const noexcept { return double(bits_) * 0x1p-64; } // exact scaling: the double is 0 or at least 1
 
     friend constexpr bool operator==(const ExactSum&, const ExactSum&) = default;
 
