@@ -85,12 +85,18 @@ public:
         const auto biased = int((bits >> 52) & 0x7ff);
         const std::uint64_t fraction = bits & ((std::uint64_t(1) << 52) - 1);
         const std::uint64_t m = biased == 0 ? fraction : fraction | (std::uint64_t(1) << 52);
-        const int s = (biased == 0 ? 1 : biased) - 1075 + 64;
-        UInt128 magnitude = 0;
-        if (s >= 0) magnitude = UInt128(m) << s; // below 2^(40 + 64): no bit lost
-        else if (s > -54) magnitude = (m + (std::uint64_t(1) << (-s - 1))) >> -s; // half up: away from zero
-        // (s <= -54: m 2^s < 2^53 2^-54, nearer 0.)
-        const auto value = Int128(magnitude);
+        const int s = (biased == 0 ? 1 : biased) - 1075 + 64; // below 40 + 12 (|x| < 2^40)
+        // The two 64-bit halves, each by one shift (a shift of the whole 128 bits by a
+        // variable count is a branch or a select more, and this is done for every
+        // sample and channel).
+        std::uint64_t high = 0, low = 0;
+        if (s >= 0) {
+            low = m << s;
+            high = (m >> 1) >> (63 - s); // m >> (64 - s), and 0 for s = 0
+        } else if (s > -54) {
+            low = (m + (std::uint64_t(1) << (-s - 1))) >> -s; // half up: away from zero
+        } // (s <= -54: m 2^s < 2^53 2^-54, nearer 0.)
+        const auto value = Int128((UInt128(high) << 64) | low);
         return from_bits((bits >> 63) != 0 ? -value : value);
     }
 
