@@ -185,7 +185,7 @@ TEST_CASE("an array's Bvh finds what a scan of every object finds: the same obje
     CHECK(mismatches == 0);
     CHECK(shadow_mismatches == 0);
     CHECK(hits > 10000);
-    // The twins: a ray through both reports the later copy.
+    // The twins: a ray through both reports the first copy.
     const auto& twins = std::get<0>(scene.slots).items;
     const Vec3<float> c = twins.back().shape.center();
     const Ray<float> ray{c, {0, 0, -1}}; // from the centre: both exit at the same t
@@ -193,4 +193,44 @@ TEST_CASE("an array's Bvh finds what a scan of every object finds: the same obje
     REQUIRE(hit);
     CHECK(hit->index == 17);
     CHECK(scanned_hit(scene, ray, {0, infinity<float>}).index == 17);
+}
+
+TEST_CASE("slots are visited nearest first, and find what a scan of the slots in turn finds, ties across slots included")
+{
+    // Two clouds in two treed slots, the far one (for rays along +z) first, and twins of
+    // some of its balls in the near slot: a ray meets the near slot's box first, finds a
+    // twin there, and must still report the far slot's copy, at the same t (the scan
+    // asks the far slot first). Before them a scanned slot of three balls (too few for a
+    // tree), also twinned in the near slot; after them a scanned slot of planes.
+    Pcg32 rng(33u, 5u);
+    const auto random_point = [&] { return (Vec3<float>{rng.uniform<float>(), rng.uniform<float>(), rng.uniform<float>()} - Vec3<float>(0.5f)) * 20.0f; };
+    ObjectArray<Sphere<float>, Diffuse<float>> few, far, near;
+    for (int i = 0; i < 600; ++i) {
+        const Vec3<float> c = random_point();
+        (c.z > 0 ? far : near).items.push_back({Sphere<float>(c, 0.2f + 0.6f * rng.uniform<float>()), Diffuse<float>{}});
+    }
+    for (std::size_t k = 0; k < far.items.size(); k += 7) near.items.push_back(far.items[k]);
+    for (const float x : {-4.0f, 0.0f, 4.0f}) few.items.push_back({Sphere<float>({x, 1.0f, 6.0f}, 1.5f), Diffuse<float>{}});
+    for (const auto& ball : few.items) near.items.push_back(ball);
+    ObjectArray<Plane<float>, Diffuse<float>> planes{{{Plane<float>({0, 1, 0}, -12), Diffuse<float>{}}, {Plane<float>({0, 0, 1}, -12), Diffuse<float>{}}}};
+    const Scene scene{Lights{PointLight<float>{.position = {0, 30, 0}}}, std::move(few), std::move(far), std::move(near), std::move(planes)};
+    int mismatches = 0, hits = 0;
+    std::array<int, 4> wins{};
+    for (int i = 0; i < 40000; ++i) {
+        const Vec3<float> target = i % 4 == 0 ? Vec3<float>{8.0f * (rng.uniform<float>() - 0.5f), 1.0f + 2.0f * (rng.uniform<float>() - 0.5f), 6.0f} : random_point();
+        Vec3<float> d = i % 2 ? normalize(Vec3<float>{0.3f * (rng.uniform<float>() - 0.5f), 0.3f * (rng.uniform<float>() - 0.5f), 1.0f}) : uniform_sphere<float>(rng);
+        if (i % 7 == 3) d = {0, 0, 1}; // axis-aligned
+        const float distance = i % 3 == 0 ? 40.0f : (i % 3 == 1 ? 1e4f : 0.0f);
+        const Ray<float> ray{target - d * distance, d};
+        const auto hit = scene.closest_hit(ray, {0, infinity<float>});
+        const auto scan = scanned_hit(scene, ray, {0, infinity<float>});
+        hits += hit.has_value();
+        if (hit) ++wins[hit->slot];
+        mismatches += hit ? !(hit->crossing.t == scan.t && hit->slot == scan.slot && hit->index == scan.index) : scan.t < infinity<float>;
+    }
+    CHECK(mismatches == 0);
+    CHECK(hits > 20000);
+    CHECK(wins[0] > 1000); // the scanned slot's balls beat their twins
+    CHECK(wins[1] > 1000);
+    CHECK(wins[2] > 1000);
 }
