@@ -5773,6 +5773,12 @@ public:
         // One box around every bounded object: a ray that misses it skips them all.
         std::apply([this](const auto&... slot) { (add_to_cluster(slot), ...); }, slots);
         bounded_objects_ = !cluster_.empty();
+        // Each slot's own box, for visiting the slots nearest first, which pays where a
+        // slot has a tree to cull by the range the nearer slots have shrunk.
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((slot_reach_[I] = reach_of(std::get<I>(slots))), ...);
+            nearest_first_ = sizeof...(Slots) > 1 && (has_tree<I>() || ...);
+        }(std::index_sequence_for<Slots...>{});
     }
 
     /// The box around every bounded object (empty when there is none): the render's
@@ -5794,9 +5800,28 @@ public:
     {
         Nearest nearest{};
         const bool near_cluster = reaches_cluster(ray, range);
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (nearest_in_slot<I>(ray, range, nearest, near_cluster), ...);
-        }(std::index_sequence_for<Slots...>{});
+        if (nearest_first_ && near_cluster) {
+            // The slots in the order the ray enters their boxes: a nearer slot's hit
+            // shrinks the range before a farther slot's tree is walked. Which object wins
+            // does not depend on the order (a tie at one t goes to the lower slot, then
+            // the lower index, as in a scan of the slots in turn).
+            std::array<std::pair<T, std::uint32_t>, sizeof...(Slots)> order;
+            for (std::uint32_t k = 0; k < order.size(); ++k) order[k] = {slot_reach_[k].entry(ray, range), k};
+            for (std::size_t i = 1; i < order.size(); ++i)
+                for (std::size_t j = i; j > 0 && order[j].first < order[j - 1].first; --j) std::swap(order[j], order[j - 1]);
+            // (A slot whose box the ray misses comes last and is still asked: rounding may
+            // report a crossing just outside a shape's box, and each slot culls with a
+            // box widened for that.)
+            for (const auto& entry : order) {
+                [&]<std::size_t... I>(std::index_sequence<I...>) {
+                    ((entry.second == I ? nearest_in_slot<I>(ray, range, nearest, true) : void()), ...);
+                }(std::index_sequence_for<Slots...>{});
+            }
+        } else {
+            [&]<std::size_t... I>(std::index_sequence<I...>) {
+                (nearest_in_slot<I>(ray, range, nearest, near_cluster), ...);
+            }(std::index_sequence_for<Slots...>{});
+        }
         if (!nearest.found) return std::nullopt;
         return surface_in_slot<0>(ray, nearest);
     }
@@ -5858,6 +5883,24 @@ private:
     /// not to be changed after it.
     std::tuple<detail::SlotIndex<Slots>...> indices_;
 
+    /// Where a ray may first meet a slot's objects, for ordering the slots (never for
+    /// skipping one: each culls its own objects by the range).
+    struct SlotReach {
+        Aabb<T> box{};          ///< around its bounded objects
+        bool unbounded = false; ///< it has an unbounded object: met from the range's start
+        /// Where the ray enters the box within the range (the range's start for an
+        /// unbounded object; infinity where it misses the box, or the slot is empty):
+        /// only the order of the slots, so no widening.
+        [[nodiscard]] constexpr T entry(const Ray<T>& ray, Interval<T> range) const noexcept
+        {
+            if (unbounded) return range.min;
+            const Interval<T> inside = box.empty() ? Interval<T>{} : box.clip(ray, range);
+            return inside.empty() ? infinity<T> : inside.min;
+        }
+    };
+    std::array<SlotReach, sizeof...(Slots)> slot_reach_{};
+    bool nearest_first_ = false; ///< two slots or more, one with a tree: visit them nearest first
+
     // Scene Private Methods
 
     /// The nearest object so far: where its first crossing is, and the range over
@@ -5878,6 +5921,24 @@ private:
     {
         for (const auto& object : objects_of(slot))
             if (object.bounded) cluster_ = cluster_.merged(object.shape.bounds());
+    }
+
+    template <class S>
+    [[nodiscard]] static constexpr SlotReach reach_of(const S& slot) noexcept
+    {
+        SlotReach reach;
+        for (const auto& object : objects_of(slot)) {
+            if (object.bounded) reach.box = reach.box.merged(object.shape.bounds());
+            else reach.unbounded = true;
+        }
+        return reach;
+    }
+
+    template <std::size_t I>
+    [[nodiscard]] constexpr bool has_tree() const noexcept
+    {
+        if constexpr (detail::SlotIndex<std::tuple_element_t<I, std::tuple<Slots...>>>::accelerated) return std::get<I>(indices_).tree;
+        return false;
     }
 
     template <std::size_t I, class F>
@@ -5915,8 +5976,11 @@ private:
         for (std::size_t k = 0; k < objects.size(); ++k) {
             if (!worth_testing(objects[k], near_cluster)) continue;
             SurfaceHint<T> hint;
-            const T t = first_crossing(objects[k].shape, ray, range, hint);
-            if (!(t < infinity<T>)) continue;
+            // Visited after a later slot's find (nearest first): a crossing at its t
+            // wins too, as it would have in a scan of the slots in turn.
+            const bool wins_tie = nearest.found && nearest.slot > I;
+            const T t = first_crossing(objects[k].shape, ray, wins_tie ? Interval<T>{range.min, next_float_up(range.max)} : range, hint);
+            if (!(t < infinity<T>) || (wins_tie && t > range.max)) continue;
             // Ending the range just past the crossing keeps every crossing before it, and
             // so the same first one, while the surface pass refines nothing beyond it:
             // no shape's answer up to a t depends on where its range ends (shapes cull by
@@ -5943,7 +6007,7 @@ private:
             const T t = first_crossing(shape, ray, nearest.found ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
             if (!(t < infinity<T>)) return;
             const std::uint32_t k = object_index();
-            if (!(t < r.max) && !(nearest.slot == I && k < nearest.index)) return;
+            if (!(t < r.max) && !(nearest.slot > I || (nearest.slot == I && k < nearest.index))) return;
             nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}, hint, copy};
             r.max = t;
         };
@@ -7906,6 +7970,7 @@ private:
 
 
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -7960,13 +8025,32 @@ public:
 
     constexpr ExactSum() noexcept = default;
 
-    /// x rounded to the nearest multiple of 2^-64 (halves away from zero). |x| < limit.
-    [[nodiscard]] static ExactSum of(double x) noexcept
+    /// x rounded to the nearest multiple of 2^-64 (halves away from zero), which is
+    /// Int128(round(ldexp(x, 64))). |x| < limit.
+    [[nodiscard]] static constexpr ExactSum of(double x) noexcept
     {
-        PRISM_ASSERT(std::abs(x) < limit);
-        // x 2^64 is exact (a power of two) and below 2^104; below 2^52 in magnitude it
-        // may have a fraction, which round() removes exactly; above, it is an integer.
-        return from_bits(Int128(std::round(std::ldexp(x, 64))));
+        PRISM_ASSERT(x > -limit && x < limit);
+        // From x's bits, in integers: |x| = m 2^(e - 1075) (e the biased exponent, m
+        // with its leading one, or a denormal's m at e = 1), so |x| 2^64 = m 2^s. (The
+        // library's ldexp, round and double-to-__int128 conversion are calls, one a
+        // sample and channel: 5 % of a Whitted render of the Cornell box.)
+        const auto bits = std::bit_cast<std::uint64_t>(x);
+        const auto biased = int((bits >> 52) & 0x7ff);
+        const std::uint64_t fraction = bits & ((std::uint64_t(1) << 52) - 1);
+        const std::uint64_t m = biased == 0 ? fraction : fraction | (std::uint64_t(1) << 52);
+        const int s = (biased == 0 ? 1 : biased) - 1075 + 64; // below 40 + 12 (|x| < 2^40)
+        // The two 64-bit halves, each by one shift (a shift of the whole 128 bits by a
+        // variable count is a branch or a select more, and this is done for every
+        // sample and channel).
+        std::uint64_t high = 0, low = 0;
+        if (s >= 0) {
+            low = m << s;
+            high = (m >> 1) >> (63 - s); // m >> (64 - s), and 0 for s = 0
+        } else if (s > -54) {
+            low = (m + (std::uint64_t(1) << (-s - 1))) >> -s; // half up: away from zero
+        } // (s <= -54: m 2^s < 2^53 2^-54, nearer 0.)
+        const auto value = Int128((UInt128(high) << 64) | low);
+        return from_bits((bits >> 63) != 0 ? -value : value);
     }
 
     /// Whether x is a sample this type takes: finite and |x| < limit.
@@ -7990,7 +8074,7 @@ public:
     }
 
     /// The sum, rounded once to double.
-    [[nodiscard]] double value() const noexcept { return std::ldexp(double(bits_), -64); }
+    [[nodiscard]] double value() const noexcept { return double(bits_) * 0x1p-64; } // exact scaling: the double is 0 or at least 1
 
     friend constexpr bool operator==(const ExactSum&, const ExactSum&) = default;
 
