@@ -178,15 +178,15 @@ public:
         : lights(std::move(light_list)), slots(std::move(objects)...),
           indices_(std::apply([](const auto&... slot) { return std::tuple<detail::SlotIndex<Slots>...>(detail::SlotIndex<Slots>(slot)...); }, slots))
     {
-        // One box around every bounded object: a ray that misses it skips them all.
-        std::apply([this](const auto&... slot) { (add_to_cluster(slot), ...); }, slots);
-        bounded_objects_ = !cluster_.empty();
         // Each slot's own box, for visiting the slots nearest first, which pays where a
-        // slot has a tree to cull by the range the nearer slots have shrunk.
+        // slot has a tree to cull by the range the nearer slots have shrunk; and one box
+        // around them all: a ray that misses it skips every bounded object.
         [&]<std::size_t... I>(std::index_sequence<I...>) {
             ((slot_reach_[I] = reach_of(std::get<I>(slots))), ...);
             nearest_first_ = sizeof...(Slots) > 1 && (has_tree<I>() || ...);
         }(std::index_sequence_for<Slots...>{});
+        for (const SlotReach& reach : slot_reach_) cluster_ = cluster_.merged(reach.box);
+        bounded_objects_ = !cluster_.empty();
     }
 
     /// The box around every bounded object (empty when there is none): the render's
@@ -325,13 +325,6 @@ private:
     static constexpr std::uint32_t no_copy = ~std::uint32_t(0);
 
     template <class S>
-    constexpr void add_to_cluster(const S& slot) noexcept
-    {
-        for (const auto& object : objects_of(slot))
-            if (object.bounded) cluster_ = cluster_.merged(object.shape.bounds());
-    }
-
-    template <class S>
     [[nodiscard]] static constexpr SlotReach reach_of(const S& slot) noexcept
     {
         SlotReach reach;
@@ -388,7 +381,7 @@ private:
             // wins too, as it would have in a scan of the slots in turn.
             const bool wins_tie = nearest.found && nearest.slot > I;
             const T t = first_crossing(objects[k].shape, ray, wins_tie ? Interval<T>{range.min, next_float_up(range.max)} : range, hint);
-            if (!(t < infinity<T>) || (wins_tie && t > range.max)) continue;
+            if (!(t < infinity<T>)) continue;
             // Ending the range just past the crossing keeps every crossing before it, and
             // so the same first one, while the surface pass refines nothing beyond it:
             // no shape's answer up to a t depends on where its range ends (shapes cull by
