@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Fuzz prism with libFuzzer (clang, Debian: clang libclang-rt-14-dev), under
+# Fuzz prism with libFuzzer (clang 19, Debian: clang-19 libclang-rt-19-dev), under
 # AddressSanitizer and UndefinedBehaviorSanitizer with PRISM_ASSERT active:
 #   tools/fuzz.sh [SECONDS]     each target for SECONDS (default 30)
 # Targets (tests/fuzz/): quadric (crossings of any ten coefficients), csg (trees of
@@ -17,7 +17,7 @@ flags=(-std=c++20 -O1 -g1 -fsanitize=fuzzer,address,undefined -fno-sanitize-reco
        -DGLM_FORCE_PURE -I"$root/include")
 status=0
 for target in quadric csg photon_map; do
-  clang++ "${flags[@]}" "$root/tests/fuzz/$target.cpp" -o "$out/fuzz_$target"
+  clang++-19 "${flags[@]}" "$root/tests/fuzz/$target.cpp" -o "$out/fuzz_$target"
   mkdir -p "$out/$target" "$root/tests/fuzz/corpus/$target"
   if ! "$out/fuzz_$target" "$out/$target" "$root/tests/fuzz/corpus/$target" -max_total_time="$seconds" -max_len=512 \
        -artifact_prefix="$out/crash-$target-" -print_final_stats=1 >"$out/$target.log" 2>&1; then

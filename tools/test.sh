@@ -1,15 +1,19 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Run the whole test suite, five ways:
-#   release   Release build, every doctest case as a ctest test, plus the single-header
-#             check, the consumer projects and the command-line tests
-#   sanitize  the same cases under AddressSanitizer + UndefinedBehaviorSanitizer, with
-#             PRISM_ASSERT kept active, and a small render
-#   thread    the same cases under ThreadSanitizer, with PRISM_ASSERT active, and 2-thread
-#             renders (Whitted and photon mapping)
+# Run the whole test suite, five ways, on two compilers and two standard libraries:
+#   release   g++ 12 and libstdc++, Release: every doctest case as a ctest test, plus the
+#             single-header check, the consumer projects and the command-line tests
+#   sanitize  g++, the same cases under AddressSanitizer + UndefinedBehaviorSanitizer,
+#             with PRISM_ASSERT kept active, and a small render
+#   thread    clang 19 and libstdc++, the same cases under ThreadSanitizer, with
+#             PRISM_ASSERT active, and 2-thread renders (Whitted and photon mapping)
+#   libc++    clang 19 and libc++, Release, for AVX2 where the CPU has it (so the suite
+#             also runs with Bvh<float>'s 8-wide nodes): every case, the examples and the
+#             command-line tests (without OpenEXR, tinyobjloader and MPI, which Debian
+#             builds for libstdc++)
 #   fuzz      each libFuzzer target (tests/fuzz/) for 60 s, under ASan + UBSan
-#   meson     the meson build's `meson test`, compiled for AVX2 where the CPU has it (so
-#             the suite also runs with Bvh<float>'s 8-wide nodes)
+# and the meson build's own test (a consumer project takes prism as a subproject).
+# Every build treats a warning as an error (-Wall -Wextra -Wpedantic and more, -Werror).
 # Build output goes to build/logs/; a failing step prints its log. The last line sums up
 # the cases of every run: "test: N passed, N failed".
 set -uo pipefail
@@ -52,7 +56,7 @@ start=$(date +%s)
 
 # Release: no benches (they are not tests).
 release="$root/build/release"
-if step release-build bash -c "cmake -S '$root' -B '$release' -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_BENCH=OFF &&
+if step release-build bash -c "cmake -S '$root' -B '$release' -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_BENCH=OFF -DPRISM_WERROR=ON &&
                                 cmake --build '$release' -j $jobs"; then
   ctest --test-dir "$release" -j "$jobs" >"$logs/release-ctest.log" 2>&1 ||
     ctest --test-dir "$release" --rerun-failed --output-on-failure 2>&1 | tail -n 80
@@ -65,7 +69,7 @@ fi
 sanitize="$root/build/sanitize"
 # Line tables only (-g1: a third less compile time than -g), the tests with prism.hpp
 # precompiled, and only the examples the tests run.
-if step sanitize-build bash -c "cmake -S '$root' -B '$sanitize' -G Ninja -DCMAKE_BUILD_TYPE=Debug -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON \
+if step sanitize-build bash -c "cmake -S '$root' -B '$sanitize' -G Ninja -DCMAKE_BUILD_TYPE=Debug -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON -DPRISM_WERROR=ON \
       -DPRISM_TESTS_PCH=ON -DCMAKE_CXX_FLAGS_DEBUG=-g1 \
       -DCMAKE_CXX_FLAGS='-O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer' &&
       cmake --build '$sanitize' -j $jobs --target prism_tests cli_examples test_programs"; then
@@ -77,12 +81,12 @@ else
   fail sanitize
 fi
 
-# ThreadSanitizer, assertions on, -O2 with line tables: the test cases in two processes
-# at once (the photon and integrator files, about half the time, and the rest), then
-# renders on 2 threads.
+# ThreadSanitizer (clang 19, libstdc++), assertions on, -O2 with line tables: the test
+# cases in two processes at once (the photon and integrator files, about half the time,
+# and the rest), then renders on 2 threads.
 thread="$root/build/thread"
 export TSAN_OPTIONS="halt_on_error=1 exitcode=66 second_deadlock_stack=1"
-if step thread-build bash -c "cmake -S '$root' -B '$thread' -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON \
+if step thread-build bash -c "cmake -S '$root' -B '$thread' -G Ninja -DCMAKE_CXX_COMPILER=clang++-19 -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON -DPRISM_WERROR=ON \
       -DPRISM_TESTS_PCH=ON -DCMAKE_CXX_FLAGS_RELWITHDEBINFO='-O2 -g1 -DNDEBUG' -DCMAKE_CXX_FLAGS=-fsanitize=thread &&
       cmake --build '$thread' -j $jobs --target prism_tests cornell cornell_caustics"; then
   half='*/photon/*,*/integrator/*'
@@ -101,6 +105,20 @@ else
   fail thread
 fi
 
+# clang 19 with libc++, Release, for AVX2 where the CPU has it: the other runs take the
+# baseline's 4-wide Bvh nodes, this one the 8-wide ones.
+libcxx="$root/build/libcxx"
+avx2=""
+grep -qw avx2 /proc/cpuinfo && avx2=-mavx2
+if step libcxx-build bash -c "cmake -S '$root' -B '$libcxx' -G Ninja -DCMAKE_CXX_COMPILER=clang++-19 -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_BENCH=OFF -DPRISM_WERROR=ON \
+      -DCMAKE_CXX_FLAGS='-stdlib=libc++ $avx2' && cmake --build '$libcxx' -j $jobs"; then
+  ctest --test-dir "$libcxx" -j "$jobs" >"$logs/libcxx-ctest.log" 2>&1 ||
+    ctest --test-dir "$libcxx" --rerun-failed --output-on-failure 2>&1 | tail -n 80
+  count libc++ "$logs/libcxx-ctest.log"
+else
+  fail libc++
+fi
+
 # libFuzzer (clang) under ASan + UBSan: each target (tests/fuzz/) for 60 s from its
 # committed corpus; a crash fails the run and leaves its input in build/fuzz/.
 if step fuzz "$root/tools/fuzz.sh" 60; then
@@ -110,20 +128,18 @@ else
   fail fuzz
 fi
 
-# Meson, for AVX2 where the CPU has it: the other runs take the baseline's 4-wide Bvh
-# nodes, this one the 8-wide ones.
+# Meson: its own build of prism as a subproject of a consumer project, and the
+# single-header check (the suite itself is the CMake builds' above).
 meson_dir="$root/build/meson"
-meson_args=()
-grep -qw avx2 /proc/cpuinfo && meson_args=(-Dcpp_args=-mavx2)
-if step meson-setup bash -c "[[ -d '$meson_dir' ]] || meson setup '$meson_dir' '$root' ${meson_args[*]}"; then
-  meson test -C "$meson_dir" --print-errorlogs >"$logs/meson-test.log" 2>&1 || tail -n 60 "$logs/meson-test.log"
-  # Cases of the doctest binary, plus meson's other tests.
-  if grep -q "\[doctest\] test cases:" "$meson_dir/meson-logs/testlog.txt" 2>/dev/null; then
-    count meson "$meson_dir/meson-logs/testlog.txt"
+if step meson-setup bash -c "[[ -d '$meson_dir' ]] || meson setup '$meson_dir' '$root'"; then
+  if meson test -C "$meson_dir" --print-errorlogs >"$logs/meson-test.log" 2>&1 && grep -qE "^Fail: +0 *$" "$logs/meson-test.log"; then
+    p=$(sed -nE 's/^Ok: +([0-9]+) *$/\1/p' "$logs/meson-test.log")
+    passed=$((passed + p)) summary+=("meson $p/$p")
+    echo "test: meson: $p passed, 0 failed"
   else
+    tail -n 60 "$logs/meson-test.log"
     fail meson
   fi
-  grep -qE "^Fail: +0 *$" "$logs/meson-test.log" || fail meson-tests
 else
   fail meson
 fi

@@ -264,7 +264,7 @@ TEST_CASE_TEMPLATE("the tree's shape: every primitive once, children inside thei
                    Bvh<float, 8>)
 {
     Pcg32 rng(3u, 3u);
-    for (const auto [leaf, block] : {std::pair{1, 1}, {4, 1}, {8, 1}, {8, 3}, {16, 4}}) {
+    for (const auto& [leaf, block] : {std::pair{1, 1}, {4, 1}, {8, 1}, {8, 3}, {16, 4}}) {
         for (const BvhSplit split : {BvhSplit::binned, BvhSplit::sweep}) {
             const auto balls = random_balls<float>(5000, rng, 10.0f, 0.1f);
             const auto boxes = boxes_of(balls);

@@ -234,3 +234,199 @@ TEST_CASE("slots are visited nearest first, and find what a scan of the slots in
     CHECK(wins[1] > 1000);
     CHECK(wins[2] > 1000);
 }
+
+namespace {
+
+/// A sphere that is a type of its own: one scene slot per I.
+template <std::size_t I>
+struct Kind : Sphere<float> {
+    using Sphere<float>::Sphere;
+};
+
+/// The slow, obvious twin of the scene's queries, for slots of any kind: every object of
+/// every slot asked in turn, over the whole range; the first object at the nearest t wins.
+template <class SceneT>
+auto scan_of_slots(const SceneT& scene, const Ray<float>& ray, Interval<float> range)
+{
+    struct Best {
+        float t = infinity<float>;
+        std::uint32_t slot = ~0u, index = 0;
+    } best;
+    std::uint32_t slot = 0;
+    std::apply([&](const auto&... slots) {
+        ([&](const auto& one) {
+            std::uint32_t k = 0;
+            for (const auto& object : objects_of(one)) {
+                const float t = first_crossing(object.shape, ray, range);
+                if (t < best.t) best = {t, slot, k};
+                ++k;
+            }
+            ++slot;
+        }(slots), ...);
+    }, scene.slots);
+    return best;
+}
+
+/// What a shadow ray lets through, by the scan: 0 at an opaque crossing, else each
+/// transmissive object's attenuation in slot and index order (for objects that do not
+/// overlap, where no priority walk is needed).
+template <class SceneT>
+Rgb<float> scanned_transmittance(const SceneT& scene, const Ray<float>& ray, float t_max)
+{
+    Rgb<float> tr{1.0f};
+    bool blocked = false;
+    std::apply([&](const auto&... slots) {
+        ([&](const auto& one) {
+            for (const auto& object : objects_of(one)) {
+                using M = std::remove_cvref_t<decltype(object.material)>;
+                if constexpr (transmits<M>) attenuate_shadow_ray(object.material, object.shape.template crossings<false>(ray, {0.0f, t_max}), ray, t_max, tr);
+                else blocked = blocked || any_crossing(object.shape, ray, {0.0f, t_max});
+            }
+        }(slots), ...);
+    }, scene.slots);
+    return blocked ? Rgb<float>{0.0f} : tr;
+}
+
+/// 40 slots of 40 distinct types: Kind<0..35> balls (one object each, or arrays of a few,
+/// or a large array), two of glass, twins across slots and within one, and two planes.
+auto many_types_scene(Pcg32& rng)
+{
+    const auto random_point = [&] { return (Vec3<float>{rng.uniform<float>(), rng.uniform<float>(), rng.uniform<float>()} - Vec3<float>(0.5f)) * 20.0f; };
+    const auto ball = [&]<std::size_t I>(Index<I>) {
+        ObjectArray<Kind<I>, Diffuse<float>> slot;
+        const std::size_t n = I % 9 == 0 ? 200 : (I % 3 == 0 ? 5 : 1);
+        for (std::size_t k = 0; k < n; ++k) slot.items.push_back({Kind<I>(random_point(), 0.3f + rng.uniform<float>()), Diffuse<float>{}});
+        return slot;
+    };
+    auto balls = [&]<std::size_t... I>(std::index_sequence<I...>) { return std::tuple{ball(Index<I>{})...}; }(std::make_index_sequence<36>{});
+    // Twins: slot 7's ball again in slot 30, slot 9's first ball again at its end, and a
+    // sphere in slot 0 again as a glass one (a tie between an opaque and a glass object).
+    std::get<30>(balls).items.push_back({Kind<30>(std::get<7>(balls).items[0].shape.center(), std::get<7>(balls).items[0].shape.radius()), Diffuse<float>{}});
+    std::get<9>(balls).items.push_back(std::get<9>(balls).items[0]);
+    ObjectArray<Sphere<float>, Dielectric<float>> glass;
+    glass.items.push_back({Sphere<float>(std::get<0>(balls).items[3].shape.center(), std::get<0>(balls).items[3].shape.radius()), Dielectric<float>{.ior = 1.5f}});
+    for (int k = 0; k < 50; ++k) // on a grid, apart
+        glass.items.push_back({Sphere<float>({4.0f * float(k % 5) - 8.0f, 4.0f * float(k / 5 % 5) - 8.0f, 8.0f * float(k / 25) - 4.0f}, 1.2f),
+                               Dielectric<float>{.ior = 1.5f, .interior = {.absorption = {0.1f, 0.2f, 0.3f}}}});
+    const Object tinted{Box<float>({-3, -3, -3}, {-2, 9, -2}), Dielectric<float>{.ior = 1.33f, .interior = {.absorption = {0.3f, 0.1f, 0.0f}}}};
+    const Object floor{Plane<float>({0, 1, 0}, -11), Diffuse<float>{}};
+    const Object wall{Plane<float>({0, 0, 1}, -11), Diffuse<float>{}};
+    return std::apply([&](auto&... slots) { return Scene{Lights{PointLight<float>{.position = {0, 30, 0}}}, std::move(slots)..., std::move(glass), tinted, floor, wall}; }, balls);
+}
+
+} // namespace
+
+TEST_CASE("a scene of many different types keeps one tree over them all, and finds what a scan of the slots finds: the same object at the same t, and the same shadows")
+{
+    Pcg32 rng(41u, 6u);
+    const auto scene = many_types_scene(rng);
+    static_assert(decltype(scene)::slot_count == 40);
+    REQUIRE(scene.has_tree());
+    const auto random_point = [&] { return (Vec3<float>{rng.uniform<float>(), rng.uniform<float>(), rng.uniform<float>()} - Vec3<float>(0.5f)) * 20.0f; };
+    int mismatches = 0, hits = 0, shadow_mismatches = 0, shadows_through_glass = 0, blocked = 0;
+    std::array<int, 40> wins{};
+    for (int i = 0; i < 40000; ++i) {
+        const Vec3<float> target = random_point();
+        Vec3<float> d = uniform_sphere<float>(rng);
+        if (i % 7 == 3) d = {0, 0, 1}; // axis-aligned
+        const float distance = i % 3 == 0 ? 40.0f : (i % 3 == 1 ? 1e4f : 0.0f); // outside, far away, inside
+        const Ray<float> ray{target - d * distance, d};
+        const auto hit = scene.closest_hit(ray, {0, infinity<float>});
+        const auto scan = scan_of_slots(scene, ray, {0, infinity<float>});
+        hits += hit.has_value();
+        if (hit) ++wins[hit->slot];
+        mismatches += hit ? !(hit->crossing.t == scan.t && hit->slot == scan.slot && hit->index == scan.index) : scan.t < infinity<float>;
+        // Shadow rays: the same bits as the scan's product (the glass does not overlap
+        // but for the twin of an opaque ball and what it overlaps, where the ball blocks
+        // the ray anyway).
+        const float t_max = distance + 25.0f * rng.uniform<float>();
+        const Rgb<float> tr = scene.transmittance(ray, t_max), expected = scanned_transmittance(scene, ray, t_max);
+        shadow_mismatches += !(tr.r == expected.r && tr.g == expected.g && tr.b == expected.b);
+        shadows_through_glass += tr.r > 0.0f && tr.r < 1.0f;
+        blocked += tr.r == 0.0f;
+        // With glass blocking too, open exactly where the scan finds no crossing at all.
+        const bool open = max_component(scene.transmittance<ShadowsThroughGlass::blocked>(ray, t_max)) > 0.0f;
+        shadow_mismatches += open != !(scan_of_slots(scene, ray, {0, t_max}).t < infinity<float>);
+    }
+    CHECK(mismatches == 0);
+    CHECK(shadow_mismatches == 0);
+    CHECK(hits > 30000);
+    CHECK(shadows_through_glass > 200);
+    CHECK(blocked > 5000);
+    // Every kind of slot wins somewhere: one ball, a few, a large array, glass, planes.
+    CHECK(wins[1] > 0);
+    CHECK(wins[3] > 0);
+    CHECK(wins[9] > 100);
+    CHECK(wins[36] > 0);
+    CHECK(wins[37] > 0);
+    CHECK(wins[38] > 1000);
+    // The twins: the lower slot wins, then the lower index.
+    for (const auto& [slot, index, centre] : {std::tuple{7u, 0u, std::get<7>(scene.slots).items[0].shape.center()},
+                                              std::tuple{9u, 0u, std::get<9>(scene.slots).items[0].shape.center()},
+                                              std::tuple{0u, 3u, std::get<0>(scene.slots).items[3].shape.center()}}) {
+        const auto hit = scene.closest_hit({centre, {0, 0, -1}}, {0, infinity<float>}); // from the centre: the twins exit at the same t
+        REQUIRE(hit);
+        CHECK(hit->slot == slot);
+        CHECK(hit->index == index);
+    }
+}
+
+TEST_CASE("a shadow ray through more glass than the scene's tree gathers is attenuated by every piece, in the scan's order")
+{
+    // 100 glass balls of two types in a row along the ray (the tree gathers 64), between
+    // opaque balls of six more types off the ray.
+    ObjectArray<Sphere<float>, Dielectric<float>> row;
+    ObjectArray<Kind<0>, Dielectric<float>> other_row;
+    for (int k = 0; k < 100; ++k) {
+        const Sphere<float> s({float(k), 0, 0}, 0.3f);
+        const Dielectric<float> glass{.ior = 1.5f, .interior = {.absorption = {0.01f * float(k % 7), 0.02f, 0.003f * float(k % 5)}}};
+        if (k % 3 == 0) other_row.items.push_back({Kind<0>(s.center(), s.radius()), glass});
+        else row.items.push_back({s, glass});
+    }
+    const Scene scene{Lights{PointLight<float>{}}, std::move(row), std::move(other_row), Object{Kind<1>({0, 5, 0}, 1), Diffuse<float>{}},
+                      Object{Kind<2>({10, 5, 0}, 1), Diffuse<float>{}}, Object{Kind<3>({20, 5, 0}, 1), Diffuse<float>{}},
+                      Object{Kind<4>({30, 5, 0}, 1), Diffuse<float>{}}, Object{Kind<5>({40, 5, 0}, 1), Diffuse<float>{}},
+                      Object{Kind<6>({50, 5, 0}, 1), Diffuse<float>{}}};
+    REQUIRE(scene.has_tree());
+    for (const float t_max : {10.0f, 50.0f, 120.0f}) {
+        const Ray<float> ray{{-1, 0.01f, 0.02f}, {1, 0, 0}};
+        const Rgb<float> tr = scene.transmittance(ray, t_max), expected = scanned_transmittance(scene, ray, t_max);
+        CHECK(tr.r == expected.r);
+        CHECK(tr.g == expected.g);
+        CHECK(tr.b == expected.b);
+        CHECK(tr.g < 1.0f);
+    }
+}
+
+TEST_CASE("overlapping glass: the scene's tree gives a shadow ray the bits the glass alone gives it")
+{
+    // Nested glass (priority walk) among opaque objects of eight types: where no opaque
+    // object is in the way, the light passing is what a scene of the glass alone (no tree
+    // of its own: one slot) lets through.
+    Pcg32 rng(43u, 7u);
+    ObjectArray<Sphere<float>, Dielectric<float>> glass;
+    for (int k = 0; k < 7; ++k) // too few for a tree of their own
+        glass.items.push_back({Sphere<float>({float(k % 4) - 1.5f, float(k / 4) - 1.0f, 0}, 0.9f),
+                               Dielectric<float>{.ior = 1.5f, .interior = {.absorption = {0.2f, 0.1f * float(k % 3), 0.05f}}, .priority = k % 3}});
+    const Scene alone{Lights{PointLight<float>{}}, glass};
+    const auto opaque = [&]<std::size_t I>(Index<I>) { return Object{Kind<I>({8.0f * std::cos(float(I)), 8.0f * std::sin(float(I)), 3.0f}, 1.0f), Diffuse<float>{}}; };
+    const auto scene = [&]<std::size_t... I>(std::index_sequence<I...>) { return Scene{Lights{PointLight<float>{}}, glass, opaque(Index<I>{})...}; }(std::make_index_sequence<8>{});
+    const auto opaque_only = [&]<std::size_t... I>(std::index_sequence<I...>) { return Scene{Lights{PointLight<float>{}}, opaque(Index<I>{})...}; }(std::make_index_sequence<8>{});
+    REQUIRE(scene.has_tree());
+    REQUIRE(!alone.has_tree());
+    int mismatches = 0, nested = 0, blocked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3<float> from{12.0f * (rng.uniform<float>() - 0.5f), 12.0f * (rng.uniform<float>() - 0.5f), 12.0f * (rng.uniform<float>() - 0.5f)};
+        const Ray<float> ray{from, uniform_sphere<float>(rng)};
+        const float t_max = 20.0f * rng.uniform<float>();
+        const Rgb<float> tr = scene.transmittance(ray, t_max);
+        const bool open = opaque_only.transmittance(ray, t_max).r > 0.0f;
+        const Rgb<float> expected = open ? alone.transmittance(ray, t_max) : Rgb<float>{0.0f};
+        blocked += !open;
+        nested += open && expected.r < 0.99f;
+        mismatches += !(tr.r == expected.r && tr.g == expected.g && tr.b == expected.b);
+    }
+    CHECK(mismatches == 0);
+    CHECK(blocked > 500);
+    CHECK(nested > 500);
+}

@@ -127,14 +127,14 @@ namespace detail {
 /// Bvh::traverse).
 template <Scalar T>
 struct SlabRay {
-    Vec3<T> inverse;
+    Vec3<T> inverse{T(0)}; // (initialized: clang's constant evaluation assigns no inactive union member of GLM's vectors)
     /// inverse * far_widening: the far face's distance, widened by the one product.
     /// (Infinite for a denormal d: the far face is then at +-inf, or NaN, which the test
     /// ignores; never a miss.)
-    Vec3<T> far_inverse;
+    Vec3<T> far_inverse{T(0)};
     /// The origin moved by the pad, for the near and far faces of each slab: the widened
     /// face lo - pad is at (lo - (o + pad)) / d from the origin.
-    Vec3<T> near_origin, far_origin;
+    Vec3<T> near_origin{T(0)}, far_origin{T(0)};
     std::array<bool, 3> negative{}; ///< the ray runs toward -axis: it meets hi first
 
     /// The far slab's widening: rounding never reports a miss for a ray that touches a

@@ -4,6 +4,7 @@
 
 #include <prism/accel/bvh.hpp>
 #include <prism/core/check.hpp>
+#include <prism/core/dispatch.hpp>
 #include <prism/core/interval.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/light/light.hpp>
@@ -16,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -101,62 +103,69 @@ struct ShadowBoundaries {
     }
 };
 
-/// What a slot keeps to find its objects: nothing for one object; for an ObjectArray of
-/// at least tree_from objects, a Bvh over its bounded ones and the list of its unbounded
-/// ones (tested on every ray). Fewer are scanned: the Cornell box's five walls render 20 %
-/// slower through a tree.
-template <class SlotT>
-struct SlotIndex {
-    static constexpr bool accelerated = false;
-    constexpr explicit SlotIndex(const SlotT&) noexcept {}
-};
-
-template <class S, class M>
-struct SlotIndex<ObjectArray<S, M>> {
-    using T = typename S::scalar_type;
-    static constexpr bool accelerated = true;
-    static constexpr std::size_t tree_from = 8;
-    bool tree = false;                   ///< false: the array is scanned
-    Bvh<T> bvh;                          ///< over the bounded objects
-    std::vector<S> shapes;               ///< the bounded objects' shapes, in the Bvh's leaf order
-    std::vector<std::uint32_t> object;   ///< the object behind each of them
-    std::vector<std::uint32_t> unbounded;
-
-    explicit SlotIndex(const ObjectArray<S, M>& array) : tree(array.items.size() >= tree_from)
+/// An object's place in a scene: its slot, and its index within the slot. Keys order the
+/// objects as a scan of the slots in turn meets them, which is how ties are settled.
+struct ObjectKey {
+    std::uint32_t slot, index; // (no initializers: ShadowKeys' array is left uninitialized)
+    [[nodiscard]] constexpr bool before(const ObjectKey& other) const noexcept
     {
-        if (!tree) return;
-        std::vector<Aabb<T>> boxes;
-        std::vector<std::uint32_t> bounded;
-        for (std::uint32_t k = 0; k < array.items.size(); ++k) {
-            if (array.items[k].bounded) {
-                bounded.push_back(k);
-                boxes.push_back(array.items[k].shape.bounds());
-            } else
-                unbounded.push_back(k);
-        }
-        bvh = Bvh<T>(boxes);
-        // The shapes a traversal tests, side by side as it meets them (a copy: the
-        // objects' materials stay out of the cache's way), and the surface pass takes
-        // the nearest from here too.
-        for (const std::uint32_t p : bvh.primitives()) {
-            object.push_back(bounded[p]);
-            shapes.push_back(array.items[bounded[p]].shape);
-        }
+        return slot < other.slot || (slot == other.slot && index < other.index);
     }
 };
+
+/// The transmissive objects whose boxes a shadow ray meets, gathered by the scene's tree
+/// in its own order, to be attenuated in the order of a scan (a product is the same bits
+/// only in the same order); a fixed number, no allocation.
+struct ShadowKeys {
+    static constexpr std::size_t capacity = 64;
+    std::array<ObjectKey, capacity> items; // (left uninitialized: clearing it would cost more than most shadow rays)
+    std::size_t count = 0;
+    bool overflow = false;
+
+    constexpr void add(const ObjectKey& key) noexcept
+    {
+        if (count == capacity) overflow = true;
+        else items[count++] = key;
+    }
+
+    /// The keys gathered, sorted (insertion sort: a shadow ray meets few).
+    [[nodiscard]] constexpr std::span<const ObjectKey> sorted() noexcept
+    {
+        for (std::size_t i = 1; i < count; ++i)
+            for (std::size_t j = i; j > 0 && items[j].before(items[j - 1]); --j) std::swap(items[j], items[j - 1]);
+        return {items.data(), count};
+    }
+};
+
+/// Nothing: what a scene of several slots keeps in place of its one slot's shapes.
+struct NoShapes {};
 
 } // namespace detail
 
 /// A scene: its lights, object slots (one type each), background and ambient radiance.
 /// Which shapes and materials exist is part of the type, so integrators compile only
 /// the code those materials need.
+///
+/// Finding what a ray meets: the scene keeps one Bvh over the bounded objects of all its
+/// slots (when there are at least tree_from; fewer are scanned: the Cornell box's seven
+/// render 20 % slower through a tree), and tests its unbounded ones on every ray. A leaf
+/// reaches its object's code through a table with an entry per slot (core/dispatch.hpp),
+/// so a ray costs log N in the objects whatever their types, and the code compiled grows
+/// linearly with the slots: the traversal is compiled once, only the leaf test once per
+/// slot. (A scene of one slot calls its leaf test directly, and keeps its shapes in leaf
+/// order beside the tree.) Whatever order the objects are met in, the answer is the same
+/// object at the same t: a tie at one t goes to the lower slot, then the lower index, as
+/// in a scan of the slots in turn.
 template <class LightsOfScene, Slot... Slots>
 class Scene {
     static_assert(LightList<LightsOfScene>, "a Scene's first argument must be its lights as Lights{...}, e.g. Scene{Lights{PointLight<float>{...}}, objects...}");
     static_assert(sizeof...(Slots) > 0, "a scene needs at least one object");
 
+    template <std::size_t I>
+    using SlotAt = std::tuple_element_t<I, std::tuple<Slots...>>;
+
 public:
-    using scalar_type = typename std::tuple_element_t<0, std::tuple<Slots...>>::scalar_type;
+    using scalar_type = typename SlotAt<0>::scalar_type;
     using T = scalar_type;
     static_assert((std::same_as<typename Slots::scalar_type, T> && ...), "all objects must share one scalar type");
     static_assert(detail::lights_of_scalar<LightsOfScene, T>, "every light must have the objects' scalar type (a PointLight<float> in a scene of double objects?)");
@@ -166,6 +175,8 @@ public:
     /// Some material has a mirror lobe.
     static constexpr bool has_specular = (reflects<typename Slots::material_type> || ...) || has_transmissive;
     static constexpr std::size_t slot_count = sizeof...(Slots);
+    /// The fewest bounded objects the scene builds its tree over.
+    static constexpr std::size_t tree_from = 8;
 
     // Scene Public Members
 
@@ -174,19 +185,38 @@ public:
     Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
     Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
 
-    constexpr Scene(LightsOfScene light_list, Slots... objects)
-        : lights(std::move(light_list)), slots(std::move(objects)...),
-          indices_(std::apply([](const auto&... slot) { return std::tuple<detail::SlotIndex<Slots>...>(detail::SlotIndex<Slots>(slot)...); }, slots))
+    constexpr Scene(LightsOfScene light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
     {
-        // Each slot's own box, for visiting the slots nearest first, which pays where a
-        // slot has a tree to cull by the range the nearer slots have shrunk; and one box
-        // around them all: a ray that misses it skips every bounded object.
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            ((slot_reach_[I] = reach_of(std::get<I>(slots))), ...);
-            nearest_first_ = sizeof...(Slots) > 1 && (has_tree<I>() || ...);
-        }(std::index_sequence_for<Slots...>{});
-        for (const SlotReach& reach : slot_reach_) cluster_ = cluster_.merged(reach.box);
+        // Every object's key, bounded or not, in key order; the transmissive ones again,
+        // and one box around every bounded object (a ray that misses it skips them all).
+        std::vector<Aabb<T>> boxes;
+        for_each_slot([&]<std::size_t I>(Index<I>) {
+            const auto list = objects_of(std::get<I>(slots));
+            for (std::uint32_t k = 0; k < list.size(); ++k) {
+                const detail::ObjectKey key{std::uint32_t(I), k};
+                if (list[k].bounded) {
+                    boxes.push_back(list[k].shape.bounds());
+                    cluster_ = cluster_.merged(boxes.back());
+                    keys_.push_back(key);
+                } else {
+                    unbounded_.push_back(key);
+                }
+                if constexpr (transmits<typename SlotAt<I>::material_type>) glass_.push_back(key);
+            }
+        });
         bounded_objects_ = !cluster_.empty();
+        if (keys_.size() < tree_from) return;
+        tree_ = Bvh<T>(boxes);
+        const std::vector<detail::ObjectKey> in_key_order = std::move(keys_);
+        keys_.clear();
+        for (const std::uint32_t p : tree_.primitives()) {
+            keys_.push_back(in_key_order[p]);
+            // One slot: its shapes side by side as a traversal meets them (a copy: the
+            // objects' materials stay out of the cache's way), and the surface pass
+            // takes the nearest from here too.
+            if constexpr (slot_count == 1) shapes_.push_back(objects_of(std::get<0>(slots))[in_key_order[p].index].shape);
+        }
+        has_tree_ = true;
     }
 
     /// The box around every bounded object (empty when there is none): the render's
@@ -199,6 +229,9 @@ public:
         detail::require_non_negative("Scene ambient", ambient);
     }
 
+    /// Whether the scene keeps a tree over its bounded objects (at least tree_from).
+    [[nodiscard]] constexpr bool has_tree() const noexcept { return has_tree_; }
+
     // Scene Queries
 
     /// The closest crossing with t inside `range`. Every object is asked for its
@@ -207,31 +240,20 @@ public:
     [[nodiscard]] std::optional<Hit<T>> closest_hit(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         Nearest nearest{};
-        const bool near_cluster = reaches_cluster(ray, range);
-        if (nearest_first_ && near_cluster) {
-            // The slots in the order the ray enters their boxes: a nearer slot's hit
-            // shrinks the range before a farther slot's tree is walked. Which object wins
-            // does not depend on the order (a tie at one t goes to the lower slot, then
-            // the lower index, as in a scan of the slots in turn).
-            std::array<std::pair<T, std::uint32_t>, sizeof...(Slots)> order;
-            for (std::uint32_t k = 0; k < order.size(); ++k) order[k] = {slot_reach_[k].entry(ray, range), k};
-            for (std::size_t i = 1; i < order.size(); ++i)
-                for (std::size_t j = i; j > 0 && order[j].first < order[j - 1].first; --j) std::swap(order[j], order[j - 1]);
-            // (A slot whose box the ray misses comes last and is still asked: rounding may
-            // report a crossing just outside a shape's box, and each slot culls with a
-            // box widened for that.)
-            for (const auto& entry : order) {
-                [&]<std::size_t... I>(std::index_sequence<I...>) {
-                    ((entry.second == I ? nearest_in_slot<I>(ray, range, nearest, true) : void()), ...);
-                }(std::index_sequence_for<Slots...>{});
-            }
-        } else {
-            [&]<std::size_t... I>(std::index_sequence<I...>) {
-                (nearest_in_slot<I>(ray, range, nearest, near_cluster), ...);
-            }(std::index_sequence_for<Slots...>{});
+        for (const detail::ObjectKey& key : unbounded_) nearest_of(key, no_copy, ray, range, nearest);
+        if (has_tree_) {
+            tree_.traverse_in_leaf_order(ray, range, [&](std::uint32_t p, Interval<T>& r) {
+                nearest_of(keys_[p], p, ray, r, nearest);
+                return false;
+            });
+        } else if (bounded_objects_ && cluster_.may_cross(ray, range)) {
+            scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) {
+                test_nearest<I>(object_at<I>(k).shape, {std::uint32_t(I), k}, no_copy, ray, range, nearest);
+                return false;
+            });
         }
         if (!nearest.found) return std::nullopt;
-        return surface_in_slot<0>(ray, nearest);
+        return dispatch<slot_count>(nearest.slot, [&]<std::size_t I>(Index<I>) { return surface_in_slot<I>(ray, nearest); });
     }
 
     /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
@@ -245,14 +267,8 @@ public:
     [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
     {
         Rgb<T> tr{T(1)};
-        // Unwidened: a shadow ray needs no spurious crossing a far-off shape might report
-        // (culling it can only let light through where rounding alone would block it).
-        const bool near_cluster = bounded_objects_ && (cluster_.contains(ray.origin) || !cluster_.clip(ray, {T(0), t_max}).empty());
         detail::ShadowBoundaries<T> boundaries;
-        const bool open = [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return (transmittance_of_slot<I, Glass>(ray, t_max, tr, near_cluster, boundaries) && ...);
-        }(std::index_sequence_for<Slots...>{});
-        if (!open) return Rgb<T>{T(0)};
+        if (!open_along<Glass>(ray, t_max, tr, boundaries)) return Rgb<T>{T(0)};
         // Where transmissive objects overlap, the higher priority's medium fills the
         // overlap (medium/nesting.hpp): walk the boundaries in order instead.
         if constexpr (has_transmissive && Glass == ShadowsThroughGlass::attenuated) {
@@ -265,7 +281,10 @@ public:
     template <class F>
     decltype(auto) visit_material(const Hit<T>& hit, F&& f) const
     {
-        return visit_slot<0>(hit, std::forward<F>(f));
+        return dispatch<slot_count>(hit.slot, [&]<std::size_t I>(Index<I>) -> decltype(auto) {
+            PRISM_ASSERT(hit.index < objects_of(std::get<I>(slots)).size());
+            return f(objects_of(std::get<I>(slots))[hit.index].material);
+        });
     }
 
     /// Call f(light) for every light.
@@ -281,33 +300,22 @@ public:
     template <class F>
     decltype(auto) visit_light(std::size_t i, F&& f) const
     {
-        return visit_light_at<0>(i, std::forward<F>(f));
+        return dispatch<light_count>(i, [&]<std::size_t I>(Index<I>) -> decltype(auto) { return f(std::get<I>(lights.items)); });
     }
 
 private:
     Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
     bool bounded_objects_ = false;
-    /// Each slot's index (a Bvh for an ObjectArray), built with the scene: the slots are
-    /// not to be changed after it.
-    std::tuple<detail::SlotIndex<Slots>...> indices_;
-
-    /// Where a ray may first meet a slot's objects, for ordering the slots (never for
-    /// skipping one: each culls its own objects by the range).
-    struct SlotReach {
-        Aabb<T> box{};          ///< around its bounded objects
-        bool unbounded = false; ///< it has an unbounded object: met from the range's start
-        /// Where the ray enters the box within the range (the range's start for an
-        /// unbounded object; infinity where it misses the box, or the slot is empty):
-        /// only the order of the slots, so no widening.
-        [[nodiscard]] constexpr T entry(const Ray<T>& ray, Interval<T> range) const noexcept
-        {
-            if (unbounded) return range.min;
-            const Interval<T> inside = box.empty() ? Interval<T>{} : box.clip(ray, range);
-            return inside.empty() ? infinity<T> : inside.min;
-        }
-    };
-    std::array<SlotReach, sizeof...(Slots)> slot_reach_{};
-    bool nearest_first_ = false; ///< two slots or more, one with a tree: visit them nearest first
+    bool has_tree_ = false;
+    Bvh<T> tree_; ///< over the bounded objects (when there are at least tree_from)
+    /// The object behind each of the tree's primitives, in its leaf order; without a tree
+    /// the bounded objects in key order. Built with the scene: the slots are not to be
+    /// changed after it.
+    std::vector<detail::ObjectKey> keys_;
+    std::vector<detail::ObjectKey> unbounded_; ///< in key order
+    std::vector<detail::ObjectKey> glass_;     ///< the transmissive objects, in key order
+    /// A scene of one slot: its bounded shapes in the tree's leaf order.
+    [[no_unique_address]] std::conditional_t<slot_count == 1, std::vector<typename SlotAt<0>::shape_type>, detail::NoShapes> shapes_;
 
     // Scene Private Methods
 
@@ -318,106 +326,73 @@ private:
         std::uint32_t slot = 0, index = 0;
         Interval<T> range{};
         SurfaceHint<T> hint{}; ///< the shape's own (a mesh's triangle), for surface_crossing
-        /// Where a slot's tree keeps its copy of the shape (else none): the surface pass
-        /// reads that copy, which the test has just brought into the cache.
+        /// Where shapes_ keeps a copy of the shape (else none): the surface pass reads
+        /// that copy, which the test has just brought into the cache.
         std::uint32_t copy = no_copy;
     };
     static constexpr std::uint32_t no_copy = ~std::uint32_t(0);
 
-    template <class S>
-    [[nodiscard]] static constexpr SlotReach reach_of(const S& slot) noexcept
+    /// f(Index<I>{}) for every slot I, in order.
+    template <class F>
+    static constexpr void for_each_slot(F&& f)
     {
-        SlotReach reach;
-        for (const auto& object : objects_of(slot)) {
-            if (object.bounded) reach.box = reach.box.merged(object.shape.bounds());
-            else reach.unbounded = true;
-        }
-        return reach;
+        [&]<std::size_t... I>(std::index_sequence<I...>) { (f(Index<I>{}), ...); }(std::index_sequence_for<Slots...>{});
     }
 
     template <std::size_t I>
-    [[nodiscard]] constexpr bool has_tree() const noexcept
+    [[nodiscard]] const auto& object_at(std::uint32_t k) const noexcept
     {
-        if constexpr (detail::SlotIndex<std::tuple_element_t<I, std::tuple<Slots...>>>::accelerated) return std::get<I>(indices_).tree;
-        return false;
+        return objects_of(std::get<I>(slots))[k];
     }
 
-    template <std::size_t I, class F>
-    decltype(auto) visit_light_at(std::size_t i, F&& f) const
+    /// The object behind the key (at position `copy` of shapes_, if it is there) asked for
+    /// the nearest, through the slot table. In whatever order the objects come, once one
+    /// is found each is asked up to just past its t, and one at exactly that t wins only
+    /// if its key comes first (as it would have in a scan of the slots in turn).
+    void nearest_of(const detail::ObjectKey& key, std::uint32_t copy, const Ray<T>& ray, Interval<T>& r, Nearest& nearest) const noexcept
     {
-        if constexpr (I + 1 < light_count) {
-            if (i != I) return visit_light_at<I + 1>(i, std::forward<F>(f));
+        dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) {
+            if constexpr (slot_count == 1)
+                if (copy != no_copy) return test_nearest<I>(shapes_[copy], key, copy, ray, r, nearest);
+            test_nearest<I>(object_at<I>(key.index).shape, key, no_copy, ray, r, nearest);
+        });
+    }
+
+    template <std::size_t I, class S>
+    void test_nearest(const S& shape, const detail::ObjectKey& key, std::uint32_t copy, const Ray<T>& ray, Interval<T>& r, Nearest& nearest) const noexcept
+    {
+        SurfaceHint<T> hint;
+        const T t = first_crossing(shape, ray, nearest.found ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
+        if (!(t < infinity<T>)) return;
+        if (!(t < r.max) && !key.before({nearest.slot, nearest.index})) return;
+        // Ending the range just past the crossing keeps every crossing before it, and so
+        // the same first one, while the surface pass refines nothing beyond it: no shape's
+        // answer up to a t depends on where its range ends (shapes cull by
+        // Aabb::reached_after, which ignores the end).
+        nearest = {true, key.slot, key.index, {r.min, next_float_up(t)}, hint, copy};
+        r.max = t;
+    }
+
+    /// visit(Index<I>{}, k) for every bounded object of a scene without a tree, in key
+    /// order, until one returns true (whether one did): for a few slots, the slots in
+    /// turn, each call inlined; for more, through the slot table.
+    template <class Visit>
+    bool scan_bounded(Visit&& visit) const noexcept
+    {
+        if constexpr (slot_count <= dispatch_chain_up_to) {
+            return [&]<std::size_t... I>(std::index_sequence<I...>) {
+                return ([&] {
+                    const auto list = objects_of(std::get<I>(slots));
+                    for (std::uint32_t k = 0; k < list.size(); ++k)
+                        if (list[k].bounded && visit(Index<I>{}, k)) return true;
+                    return false;
+                }() || ...);
+            }(std::index_sequence_for<Slots...>{});
+        } else {
+            for (const detail::ObjectKey& key : keys_)
+                if (dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) { return visit(Index<I>{}, key.index); })) return true;
+            return false;
         }
-        PRISM_ASSERT(i == I);
-        return f(std::get<I>(lights.items));
-    }
-
-    /// Whether the ray may come near the cluster's box within the range (conservatively:
-    /// Aabb::may_cross). Only the first pass of a query culls by it, so it may use the
-    /// range's end.
-    [[nodiscard]] bool reaches_cluster(const Ray<T>& ray, Interval<T> range) const noexcept
-    {
-        return bounded_objects_ && cluster_.may_cross(ray, range);
-    }
-
-    /// Whether the object needs testing: it is unbounded, or the ray comes near the cluster.
-    template <class O>
-    [[nodiscard]] static bool worth_testing(const O& object, bool near_cluster) noexcept
-    {
-        return near_cluster || !object.bounded;
-    }
-
-    template <std::size_t I>
-    void nearest_in_slot(const Ray<T>& ray, Interval<T>& range, Nearest& nearest, bool near_cluster) const noexcept
-    {
-        if constexpr (detail::SlotIndex<std::tuple_element_t<I, std::tuple<Slots...>>>::accelerated) {
-            if (std::get<I>(indices_).tree) return nearest_in_tree<I>(ray, range, nearest, near_cluster);
-        }
-        const auto objects = objects_of(std::get<I>(slots));
-        for (std::size_t k = 0; k < objects.size(); ++k) {
-            if (!worth_testing(objects[k], near_cluster)) continue;
-            SurfaceHint<T> hint;
-            // Visited after a later slot's find (nearest first): a crossing at its t
-            // wins too, as it would have in a scan of the slots in turn.
-            const bool wins_tie = nearest.found && nearest.slot > I;
-            const T t = first_crossing(objects[k].shape, ray, wins_tie ? Interval<T>{range.min, next_float_up(range.max)} : range, hint);
-            if (!(t < infinity<T>)) continue;
-            // Ending the range just past the crossing keeps every crossing before it, and
-            // so the same first one, while the surface pass refines nothing beyond it:
-            // no shape's answer up to a t depends on where its range ends (shapes cull by
-            // Aabb::reached_after, which ignores the end).
-            nearest = {true, static_cast<std::uint32_t>(I), static_cast<std::uint32_t>(k), {range.min, next_float_up(t)}, hint};
-            range.max = t;
-        }
-    }
-
-    /// nearest_in_slot through the slot's Bvh: the same object at the same t.
-    template <std::size_t I>
-    void nearest_in_tree(const Ray<T>& ray, Interval<T>& range, Nearest& nearest, bool near_cluster) const noexcept
-    {
-        const auto objects = objects_of(std::get<I>(slots));
-        const auto& index = std::get<I>(indices_);
-        PRISM_ASSERT(index.shapes.size() + index.unbounded.size() == objects.size());
-        // Crossings lie strictly inside the range, so in a scan in index order the first
-        // object at a t wins a tie. The tree visits objects in another order: once an
-        // object is found, each is asked up to just past its t, and one at exactly that t
-        // wins only if it comes before it (as it would have in the scan). Which object
-        // that is, is looked up only for a crossing, not for every test.
-        const auto test = [&](const auto& shape, const auto& object_index, std::uint32_t copy, Interval<T>& r) {
-            SurfaceHint<T> hint;
-            const T t = first_crossing(shape, ray, nearest.found ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
-            if (!(t < infinity<T>)) return;
-            const std::uint32_t k = object_index();
-            if (!(t < r.max) && !(nearest.slot > I || (nearest.slot == I && k < nearest.index))) return;
-            nearest = {true, static_cast<std::uint32_t>(I), k, {r.min, next_float_up(t)}, hint, copy};
-            r.max = t;
-        };
-        for (const std::uint32_t k : index.unbounded) test(objects[k].shape, [k] { return k; }, no_copy, range);
-        if (near_cluster)
-            index.bvh.traverse_in_leaf_order(ray, range, [&](std::uint32_t p, Interval<T>& r) {
-                test(index.shapes[p], [&] { return index.object[p]; }, p, r);
-                return false;
-            });
     }
 
     /// The nearest object's first crossing with its surface: the same computation as
@@ -425,13 +400,10 @@ private:
     template <std::size_t I>
     std::optional<Hit<T>> surface_in_slot(const Ray<T>& ray, const Nearest& nearest) const noexcept
     {
-        if constexpr (I + 1 < sizeof...(Slots)) {
-            if (nearest.slot != I) return surface_in_slot<I + 1>(ray, nearest);
-        }
         const auto& shape = [&]() -> const auto& {
-            if constexpr (detail::SlotIndex<std::tuple_element_t<I, std::tuple<Slots...>>>::accelerated)
-                if (nearest.copy != no_copy) return std::get<I>(indices_).shapes[nearest.copy]; // the same shape, bit for bit
-            return objects_of(std::get<I>(slots))[nearest.index].shape;
+            if constexpr (slot_count == 1)
+                if (nearest.copy != no_copy) return shapes_[nearest.copy]; // the same shape, bit for bit
+            return object_at<I>(nearest.index).shape;
         }();
         const auto crossing = surface_crossing(shape, ray, nearest.range, nearest.hint);
         PRISM_ASSERT(crossing.has_value());
@@ -439,45 +411,62 @@ private:
         return Hit<T>{*crossing, nearest.slot, nearest.index};
     }
 
+    /// Whether the slot's material lets a shadow ray through (attenuated) rather than
+    /// blocking it.
     template <std::size_t I, ShadowsThroughGlass Glass>
-    bool transmittance_of_slot(const Ray<T>& ray, T t_max, Rgb<T>& tr, bool near_cluster, detail::ShadowBoundaries<T>& boundaries) const noexcept
+    static constexpr bool attenuates = transmits<typename SlotAt<I>::material_type> && Glass == ShadowsThroughGlass::attenuated;
+
+    /// transmittance's first pass: whether the ray is open. Opaque objects end it at their
+    /// first crossing, in whatever order they are met; the transmissive ones met are
+    /// gathered, then attenuate it in key order (a product is the same bits only in the
+    /// same order), where they cross it, marked in `boundaries`.
+    template <ShadowsThroughGlass Glass>
+    bool open_along(const Ray<T>& ray, T t_max, Rgb<T>& tr, detail::ShadowBoundaries<T>& boundaries) const noexcept
     {
-        using Slot = std::tuple_element_t<I, std::tuple<Slots...>>;
-        using M = typename Slot::material_type;
         const Interval<T> range{T(0), t_max};
-        if constexpr (detail::SlotIndex<Slot>::accelerated && (!transmits<M> || Glass == ShadowsThroughGlass::blocked)) {
-            // Opaque: any crossing blocks the ray, in whatever order the tree finds it.
-            // (Transmissive objects multiply their attenuations in index order below,
-            // so that the product is the same bits.)
-            if (std::get<I>(indices_).tree) return !blocked_in_tree<I>(ray, range, near_cluster);
-        }
-        std::uint32_t index = 0;
-        for (const auto& object : objects_of(std::get<I>(slots))) {
-            const std::uint32_t this_index = index++;
-            if (!worth_testing(object, near_cluster)) continue;
-            if constexpr (!transmits<M> || Glass == ShadowsThroughGlass::blocked) {
-                if (any_crossing(object.shape, ray, range)) return false;
+        detail::ShadowKeys met;
+        const auto blocks_in = [&]<std::size_t I>(Index<I>, std::uint32_t k, std::uint32_t copy) {
+            if constexpr (attenuates<I, Glass>) {
+                met.add({std::uint32_t(I), k});
+                return false;
             } else {
-                const auto crossings = object.shape.template crossings<false>(ray, range);
-                attenuate_shadow_ray(object.material, crossings, ray, t_max, tr);
+                if constexpr (slot_count == 1)
+                    if (copy != no_copy) return any_crossing(shapes_[copy], ray, range);
+                return any_crossing(object_at<I>(k).shape, ray, range);
+            }
+        };
+        const auto blocks = [&](const detail::ObjectKey& key, std::uint32_t copy) {
+            return dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) { return blocks_in(Index<I>{}, key.index, copy); });
+        };
+        for (const detail::ObjectKey& key : unbounded_)
+            if (blocks(key, no_copy)) return false;
+        if (has_tree_) {
+            Interval<T> r = range;
+            if (tree_.any_in_leaf_order(ray, r, [&](std::uint32_t p, Interval<T>&) { return blocks(keys_[p], p); })) return false;
+        } else if (bounded_objects_ && (cluster_.contains(ray.origin) || !cluster_.clip(ray, range).empty())) {
+            // (Unwidened: a shadow ray needs no spurious crossing a far-off shape might
+            // report; culling it can only let light through where rounding alone would
+            // block it.)
+            if (scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) { return blocks_in(Index<I>{}, k, no_copy); })) return false;
+        }
+        if constexpr (has_transmissive && Glass == ShadowsThroughGlass::attenuated) {
+            // More met than the list holds: every transmissive object, in key order (one
+            // the ray misses changes nothing).
+            const std::span<const detail::ObjectKey> in_order = met.overflow ? std::span<const detail::ObjectKey>(glass_) : met.sorted();
+            for (const detail::ObjectKey& key : in_order) {
+                dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) {
+                    if constexpr (attenuates<I, Glass>) {
+                        const auto& object = object_at<I>(key.index);
+                        const auto crossings = object.shape.template crossings<false>(ray, range);
+                        attenuate_shadow_ray(object.material, crossings, ray, t_max, tr);
+                        if (crossings.inside_at_start) boundaries.add({T(0), key.slot, key.index, true, true});
+                        for (const Crossing<T>& c : crossings) boundaries.add({c.t, key.slot, key.index, c.entering, false});
+                    }
+                });
                 if (max_component(tr) <= T(0)) return false;
-                if (crossings.inside_at_start) boundaries.add({T(0), std::uint32_t(I), this_index, true, true});
-                for (const Crossing<T>& c : crossings) boundaries.add({c.t, std::uint32_t(I), this_index, c.entering, false});
             }
         }
         return true;
-    }
-
-    /// Whether an object of the slot's Bvh (or an unbounded one) crosses the ray in range.
-    template <std::size_t I>
-    bool blocked_in_tree(const Ray<T>& ray, Interval<T> range, bool near_cluster) const noexcept
-    {
-        const auto objects = objects_of(std::get<I>(slots));
-        const auto& index = std::get<I>(indices_);
-        for (const std::uint32_t k : index.unbounded)
-            if (any_crossing(objects[k].shape, ray, range)) return true;
-        Interval<T> r = range;
-        return near_cluster && index.bvh.any_in_leaf_order(ray, r, [&](std::uint32_t p, Interval<T>&) { return any_crossing(index.shapes[p], ray, range); });
     }
 
     /// A shadow ray through overlapping transmissive objects: each stretch attenuated by
@@ -515,16 +504,6 @@ private:
         }
         attenuate_to(t_max);
         return tr;
-    }
-
-    template <std::size_t I, class F>
-    decltype(auto) visit_slot(const Hit<T>& hit, F&& f) const
-    {
-        if constexpr (I + 1 < sizeof...(Slots)) {
-            if (hit.slot != I) return visit_slot<I + 1>(hit, std::forward<F>(f));
-        }
-        PRISM_ASSERT(hit.slot == I);
-        return f(objects_of(std::get<I>(slots))[hit.index].material);
     }
 };
 
