@@ -8,7 +8,7 @@
 int main()
 {
     using namespace prism;
-    const auto walls = std::get<0>(scenes::cornell_scene<float>().slots);
+    const auto walls = prism::get<0>(scenes::cornell_scene<float>().slots);
     const Scene scene{Lights{PointLight<float>{.position = {2.78f, 5.35f, -2.60f}, .intensity = Rgb<float>(pi<float>), .falloff = Falloff::none}},
                       walls,
                       Object{Sphere<float>({3.85f, 1.0f, -2.0f}, 1.0f), Diffuse<float>{.albedo = {.color = Rgb<float>(0.75f)}, .kd = 0.8f, .ka = 0}},

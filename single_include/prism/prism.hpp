@@ -2733,34 +2733,62 @@ public:
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        // Slab test over the whole line, remembering which face bounds the span.
+        Crossings<T, 2> out;
+        const Span span = span_of(ray);
+        if (!span.hit) return out;
+        out.inside_at_start = span.t_near < range.min && range.min < span.t_far;
+        if (range.surrounds(span.t_near))
+            out.push_back(Surface ? crossing_at(ray, span.t_near, span.axis_near, true) : Crossing<T>::without_surface(span.t_near, true));
+        if (range.surrounds(span.t_far))
+            out.push_back(Surface ? crossing_at(ray, span.t_far, span.axis_far, false) : Crossing<T>::without_surface(span.t_far, false));
+        return out;
+    }
+
+    /// The t of crossings<false>(ray, range).front() (infinity for none), without the list.
+    [[nodiscard]] constexpr T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        const Span span = span_of(ray);
+        if (!span.hit) return infinity<T>;
+        if (range.surrounds(span.t_near)) return span.t_near;
+        return range.surrounds(span.t_far) ? span.t_far : infinity<T>;
+    }
+
+    /// Whether crossings<false>(ray, range) is non-empty.
+    [[nodiscard]] constexpr bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        return first_crossing(ray, range) < infinity<T>;
+    }
+
+private:
+    // Box Private Methods
+
+    /// Where the line of the ray is inside the box, and which faces bound that span.
+    struct Span {
+        bool hit = false; ///< false for a miss, or a touch along an edge or a face
         T t_near = -infinity<T>, t_far = infinity<T>;
         int axis_near = -1, axis_far = -1;
-        Crossings<T, 2> out;
+    };
+
+    [[nodiscard]] constexpr Span span_of(const Ray<T>& ray) const noexcept
+    {
+        // Slab test over the whole line, remembering which face bounds the span.
+        Span span;
         for (int axis = 0; axis < 3; ++axis) {
             const T o = ray.origin[axis];
             const T d = ray.direction[axis];
             if (d == T(0)) { // parallel to this slab
-                if (o <= lo_[axis] || o >= hi_[axis]) return out; // in or beside a face plane: a touch at most
+                if (o <= lo_[axis] || o >= hi_[axis]) return span; // in or beside a face plane: a touch at most
                 continue;
             }
             T t0 = (lo_[axis] - o) / d;
             T t1 = (hi_[axis] - o) / d;
             if (t0 > t1) std::swap(t0, t1);
-            if (t0 > t_near) t_near = t0, axis_near = axis;
-            if (t1 < t_far) t_far = t1, axis_far = axis;
+            if (t0 > span.t_near) span.t_near = t0, span.axis_near = axis;
+            if (t1 < span.t_far) span.t_far = t1, span.axis_far = axis;
         }
-        if (!(t_near < t_far)) return out; // a miss, or a touch along an edge
-        out.inside_at_start = t_near < range.min && range.min < t_far;
-        if (range.surrounds(t_near))
-            out.push_back(Surface ? crossing_at(ray, t_near, axis_near, true) : Crossing<T>::without_surface(t_near, true));
-        if (range.surrounds(t_far))
-            out.push_back(Surface ? crossing_at(ray, t_far, axis_far, false) : Crossing<T>::without_surface(t_far, false));
-        return out;
+        span.hit = span.t_near < span.t_far;
+        return span;
     }
-
-private:
-    // Box Private Methods
 
     [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, int axis, bool entering) const noexcept
     {
@@ -2784,6 +2812,7 @@ private:
 
 static_assert(Shape<Box<float>>);
 static_assert(Shape<Box<double>>);
+static_assert(HasFirstCrossing<Box<float>>);
 
 } // namespace prism
 
@@ -5415,6 +5444,106 @@ decltype(auto) dispatch(std::size_t i, F&& f)
 
 } // namespace prism
 
+// ---- prism/core/pack.hpp ----
+// Pack<Ts...>: a tuple without recursion, for packs of hundreds of types (a scene's slots).
+
+#include <cstddef>
+#include <initializer_list>
+#include <type_traits>
+#include <utility>
+
+namespace prism {
+
+namespace detail {
+
+template <std::size_t I, class T>
+struct PackItem {
+    T value;
+};
+
+/// Every item a base of its own, side by side: std::tuple (libstdc++, libc++) nests one
+/// base in the next, so a tuple of N types is N instantiations deep, and 1024 slots pass
+/// the compilers' depth limit (900 for g++).
+template <class Sequence, class... Ts>
+struct PackItems;
+
+template <std::size_t... I, class... Ts>
+struct PackItems<std::index_sequence<I...>, Ts...> : PackItem<I, Ts>... {
+    constexpr explicit PackItems(Ts... values) : PackItem<I, Ts>{std::move(values)}... {}
+};
+
+// Item I by the one base PackItem<I, T>, T deduced: no walk over the pack.
+template <std::size_t I, class T>
+constexpr const T& item(const PackItem<I, T>& p) noexcept
+{
+    return p.value;
+}
+
+template <std::size_t I, class T>
+constexpr T& item(PackItem<I, T>& p) noexcept
+{
+    return p.value;
+}
+
+template <std::size_t I, class T>
+T item_type(const PackItem<I, T>&); // only in decltype
+
+/// Whether every / some value is true: for a pack expanded into a braced list, which has
+/// no depth (clang nests a fold expression's terms, and refuses more than 256).
+constexpr bool all_of(std::initializer_list<bool> values) noexcept
+{
+    for (const bool v : values)
+        if (!v) return false;
+    return true;
+}
+
+constexpr bool any_of(std::initializer_list<bool> values) noexcept
+{
+    for (const bool v : values)
+        if (v) return true;
+    return false;
+}
+
+} // namespace detail
+
+/// A fixed list of values of the types Ts, item I read by get<I>(pack).
+template <class... Ts>
+struct Pack : detail::PackItems<std::index_sequence_for<Ts...>, Ts...> {
+    static constexpr std::size_t size = sizeof...(Ts);
+
+    constexpr explicit Pack(Ts... values) : detail::PackItems<std::index_sequence_for<Ts...>, Ts...>(std::move(values)...) {}
+
+    /// f(item 0, item 1, ...), as std::apply.
+    template <class F>
+    constexpr decltype(auto) apply(F&& f) const
+    {
+        return [&]<std::size_t... I>(std::index_sequence<I...>) -> decltype(auto) {
+            return f(detail::item<I>(*this)...);
+        }(std::index_sequence_for<Ts...>{});
+    }
+};
+
+/// Item I of a pack.
+template <std::size_t I, class... Ts>
+[[nodiscard]] constexpr const auto& get(const Pack<Ts...>& pack) noexcept
+{
+    static_assert(I < sizeof...(Ts), "get<I>: I is past the pack's end");
+    return detail::item<I>(pack);
+}
+
+template <std::size_t I, class... Ts>
+[[nodiscard]] constexpr auto& get(Pack<Ts...>& pack) noexcept
+{
+    static_assert(I < sizeof...(Ts), "get<I>: I is past the pack's end");
+    return detail::item<I>(pack);
+}
+
+/// The type of item I of a pack.
+template <std::size_t I, class P>
+using pack_element_t = decltype(detail::item_type<I>(std::declval<const P&>()));
+
+} // namespace prism
+
 // ---- prism/scene/hit.hpp ----
 // Hit: the closest crossing of a ray with a scene, and which object it belongs to.
 
@@ -5824,18 +5953,18 @@ class Scene {
     static_assert(sizeof...(Slots) > 0, "a scene needs at least one object");
 
     template <std::size_t I>
-    using SlotAt = std::tuple_element_t<I, std::tuple<Slots...>>;
+    using SlotAt = pack_element_t<I, Pack<Slots...>>;
 
 public:
     using scalar_type = typename SlotAt<0>::scalar_type;
     using T = scalar_type;
-    static_assert((std::same_as<typename Slots::scalar_type, T> && ...), "all objects must share one scalar type");
+    static_assert(detail::all_of({std::same_as<typename Slots::scalar_type, T>...}), "all objects must share one scalar type");
     static_assert(detail::lights_of_scalar<LightsOfScene, T>, "every light must have the objects' scalar type (a PointLight<float> in a scene of double objects?)");
 
     /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
-    static constexpr bool has_transmissive = (transmits<typename Slots::material_type> || ...);
+    static constexpr bool has_transmissive = detail::any_of({transmits<typename Slots::material_type>...});
     /// Some material has a mirror lobe.
-    static constexpr bool has_specular = (reflects<typename Slots::material_type> || ...) || has_transmissive;
+    static constexpr bool has_specular = detail::any_of({reflects<typename Slots::material_type>...}) || has_transmissive;
     static constexpr std::size_t slot_count = sizeof...(Slots);
     /// The fewest bounded objects the scene builds its tree over.
     static constexpr std::size_t tree_from = 8;
@@ -5843,7 +5972,7 @@ public:
     // Scene Public Members
 
     LightsOfScene lights;
-    std::tuple<Slots...> slots;
+    Pack<Slots...> slots; ///< get<I>(slots) is slot I
     Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
     Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
 
@@ -5853,7 +5982,7 @@ public:
         // and one box around every bounded object (a ray that misses it skips them all).
         std::vector<Aabb<T>> boxes;
         for_each_slot([&]<std::size_t I>(Index<I>) {
-            const auto list = objects_of(std::get<I>(slots));
+            const auto list = objects_of(get<I>(slots));
             for (std::uint32_t k = 0; k < list.size(); ++k) {
                 const detail::ObjectKey key{std::uint32_t(I), k};
                 if (list[k].bounded) {
@@ -5876,7 +6005,7 @@ public:
             // One slot: its shapes side by side as a traversal meets them (a copy: the
             // objects' materials stay out of the cache's way), and the surface pass
             // takes the nearest from here too.
-            if constexpr (slot_count == 1) shapes_.push_back(objects_of(std::get<0>(slots))[in_key_order[p].index].shape);
+            if constexpr (slot_count == 1) shapes_.push_back(objects_of(get<0>(slots))[in_key_order[p].index].shape);
         }
         has_tree_ = true;
     }
@@ -5944,8 +6073,8 @@ public:
     decltype(auto) visit_material(const Hit<T>& hit, F&& f) const
     {
         return dispatch<slot_count>(hit.slot, [&]<std::size_t I>(Index<I>) -> decltype(auto) {
-            PRISM_ASSERT(hit.index < objects_of(std::get<I>(slots)).size());
-            return f(objects_of(std::get<I>(slots))[hit.index].material);
+            PRISM_ASSERT(hit.index < objects_of(get<I>(slots)).size());
+            return f(objects_of(get<I>(slots))[hit.index].material);
         });
     }
 
@@ -5994,17 +6123,18 @@ private:
     };
     static constexpr std::uint32_t no_copy = ~std::uint32_t(0);
 
-    /// f(Index<I>{}) for every slot I, in order.
+    /// f(Index<I>{}) for every slot I, in order (a braced list, not a fold: clang nests a
+    /// fold's terms, and refuses more than 256).
     template <class F>
     static constexpr void for_each_slot(F&& f)
     {
-        [&]<std::size_t... I>(std::index_sequence<I...>) { (f(Index<I>{}), ...); }(std::index_sequence_for<Slots...>{});
+        [&]<std::size_t... I>(std::index_sequence<I...>) { [[maybe_unused]] const int in_order[] = {(f(Index<I>{}), 0)...}; }(std::index_sequence_for<Slots...>{});
     }
 
     template <std::size_t I>
     [[nodiscard]] const auto& object_at(std::uint32_t k) const noexcept
     {
-        return objects_of(std::get<I>(slots))[k];
+        return objects_of(get<I>(slots))[k];
     }
 
     /// The object behind the key (at position `copy` of shapes_, if it is there) asked for
@@ -6044,7 +6174,7 @@ private:
         if constexpr (slot_count <= dispatch_chain_up_to) {
             return [&]<std::size_t... I>(std::index_sequence<I...>) {
                 return ([&] {
-                    const auto list = objects_of(std::get<I>(slots));
+                    const auto list = objects_of(get<I>(slots));
                     for (std::uint32_t k = 0; k < list.size(); ++k)
                         if (list[k].bounded && visit(Index<I>{}, k)) return true;
                     return false;
@@ -7616,7 +7746,7 @@ public:
         // A sphere around everything bounded: parallel photons start outside it.
         if (!scene.bounds().empty()) scene_sphere_ = scene.bounds().bounding_sphere();
         add_emitters(global_, false, {});
-        std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
+        scene_.slots.apply([&](const auto&... slot) { [[maybe_unused]] const int in_order[] = {(add_targets(slot), 0)...}; });
         drop_nested_targets();
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);

@@ -570,7 +570,18 @@ constexpr int constexpr_query()
     });
     return first;
 }
+// libstdc++ 12 default-fills a new vector of a trivial type through storage whose
+// lifetime has not begun, which clang's constant evaluation refuses (g++'s and libc++'s
+// are fine): there the same query is checked at run time below.
+#if !(defined(__clang__) && defined(__GLIBCXX__))
 static_assert(constexpr_query<4>() == 0);
 static_assert(constexpr_query<8>() == 0);
+#endif
 
 } // namespace
+
+TEST_CASE("the compile-time query's answer, at run time")
+{
+    CHECK(constexpr_query<4>() == 0);
+    CHECK(constexpr_query<8>() == 0);
+}

@@ -57,3 +57,34 @@ TEST_CASE("bad input names the parameter")
     CHECK_THROWS_WITH_AS(Box<float>({0, 0, 0}, {1, 0, 1}), doctest::Contains("Box extent"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(Box<float>({0, 0, std::nanf("")}, {1, 1, 1}), doctest::Contains("Box corner_a"), std::invalid_argument);
 }
+
+TEST_CASE_TEMPLATE("a box's lean first_crossing and any_crossing give what its crossing list gives, bit for bit", T, float, double)
+{
+    // The slow, obvious twin: crossings<false>(ray, range).front(). Rays from anywhere,
+    // many along an axis or in a face's plane, over ranges starting before, inside and
+    // past the box.
+    prism::Pcg32 rng(51u, 3u);
+    const auto coordinate = [&](T scale) {
+        const std::uint32_t pick = rng.next_u32() % 8;
+        if (pick == 0) return T(-1);
+        if (pick == 1) return T(2);
+        return scale * (T(2) * rng.uniform<T>() - T(1));
+    };
+    const Box<T> box({T(-1), T(0.5), T(-2)}, {T(2), T(3), T(1)});
+    int differences = 0, hits = 0;
+    for (int i = 0; i < 400000; ++i) {
+        const Vec3<T> origin{coordinate(T(5)), coordinate(T(5)), coordinate(T(5))};
+        Vec3<T> direction{coordinate(T(1)), coordinate(T(1)), coordinate(T(1))};
+        if (i % 5 == 0) direction[i % 3] = T(0);
+        if (direction == Vec3<T>(T(0))) continue;
+        const prism::Ray<T> ray{origin, direction};
+        const T start = i % 3 == 0 ? T(0) : T(4) * (rng.uniform<T>() - T(0.25));
+        const Interval<T> range{start, i % 4 == 0 ? prism::infinity<T> : start + T(6) * rng.uniform<T>()};
+        const auto list = box.template crossings<false>(ray, range);
+        const T expected = list.empty() ? prism::infinity<T> : list.front().t;
+        hits += !list.empty();
+        differences += !(box.first_crossing(ray, range) == expected) + (box.any_crossing(ray, range) != !list.empty());
+    }
+    CHECK(differences == 0);
+    CHECK(hits > 20000);
+}

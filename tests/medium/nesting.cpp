@@ -117,7 +117,7 @@ TEST_CASE("Total internal reflection at a glass-water interface starts at asin(1
     const Scene scene{Lights{DirectionalLight<double>{}},
                       Object{Box<double>({-50, 0, -50}, {50, 1, 50}), Dielectric<double>{.ior = 1.5, .priority = 2}},
                       Object{Box<double>({-50, -1, -50}, {50, 0.01, 50}), Dielectric<double>{.ior = 1.33, .priority = 1}}};
-    const Dielectric<double>& glass = std::get<0>(scene.slots).material;
+    const Dielectric<double>& glass = get<0>(scene.slots).material;
     const double critical = std::asin(1.33 / 1.5);
     CHECK(critical * 180 / std::numbers::pi == Approx(62.457).epsilon(1e-4));
     const MediumStack in_glass = MediumStack{}.entered({0, 0, 2});

@@ -43,34 +43,62 @@ public:
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        // Slab test over the whole line, remembering which face bounds the span.
+        Crossings<T, 2> out;
+        const Span span = span_of(ray);
+        if (!span.hit) return out;
+        out.inside_at_start = span.t_near < range.min && range.min < span.t_far;
+        if (range.surrounds(span.t_near))
+            out.push_back(Surface ? crossing_at(ray, span.t_near, span.axis_near, true) : Crossing<T>::without_surface(span.t_near, true));
+        if (range.surrounds(span.t_far))
+            out.push_back(Surface ? crossing_at(ray, span.t_far, span.axis_far, false) : Crossing<T>::without_surface(span.t_far, false));
+        return out;
+    }
+
+    /// The t of crossings<false>(ray, range).front() (infinity for none), without the list.
+    [[nodiscard]] constexpr T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        const Span span = span_of(ray);
+        if (!span.hit) return infinity<T>;
+        if (range.surrounds(span.t_near)) return span.t_near;
+        return range.surrounds(span.t_far) ? span.t_far : infinity<T>;
+    }
+
+    /// Whether crossings<false>(ray, range) is non-empty.
+    [[nodiscard]] constexpr bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        return first_crossing(ray, range) < infinity<T>;
+    }
+
+private:
+    // Box Private Methods
+
+    /// Where the line of the ray is inside the box, and which faces bound that span.
+    struct Span {
+        bool hit = false; ///< false for a miss, or a touch along an edge or a face
         T t_near = -infinity<T>, t_far = infinity<T>;
         int axis_near = -1, axis_far = -1;
-        Crossings<T, 2> out;
+    };
+
+    [[nodiscard]] constexpr Span span_of(const Ray<T>& ray) const noexcept
+    {
+        // Slab test over the whole line, remembering which face bounds the span.
+        Span span;
         for (int axis = 0; axis < 3; ++axis) {
             const T o = ray.origin[axis];
             const T d = ray.direction[axis];
             if (d == T(0)) { // parallel to this slab
-                if (o <= lo_[axis] || o >= hi_[axis]) return out; // in or beside a face plane: a touch at most
+                if (o <= lo_[axis] || o >= hi_[axis]) return span; // in or beside a face plane: a touch at most
                 continue;
             }
             T t0 = (lo_[axis] - o) / d;
             T t1 = (hi_[axis] - o) / d;
             if (t0 > t1) std::swap(t0, t1);
-            if (t0 > t_near) t_near = t0, axis_near = axis;
-            if (t1 < t_far) t_far = t1, axis_far = axis;
+            if (t0 > span.t_near) span.t_near = t0, span.axis_near = axis;
+            if (t1 < span.t_far) span.t_far = t1, span.axis_far = axis;
         }
-        if (!(t_near < t_far)) return out; // a miss, or a touch along an edge
-        out.inside_at_start = t_near < range.min && range.min < t_far;
-        if (range.surrounds(t_near))
-            out.push_back(Surface ? crossing_at(ray, t_near, axis_near, true) : Crossing<T>::without_surface(t_near, true));
-        if (range.surrounds(t_far))
-            out.push_back(Surface ? crossing_at(ray, t_far, axis_far, false) : Crossing<T>::without_surface(t_far, false));
-        return out;
+        span.hit = span.t_near < span.t_far;
+        return span;
     }
-
-private:
-    // Box Private Methods
 
     [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, int axis, bool entering) const noexcept
     {
@@ -94,5 +122,6 @@ private:
 
 static_assert(Shape<Box<float>>);
 static_assert(Shape<Box<double>>);
+static_assert(HasFirstCrossing<Box<float>>);
 
 } // namespace prism

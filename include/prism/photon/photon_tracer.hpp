@@ -115,7 +115,7 @@ public:
         // A sphere around everything bounded: parallel photons start outside it.
         if (!scene.bounds().empty()) scene_sphere_ = scene.bounds().bounding_sphere();
         add_emitters(global_, false, {});
-        std::apply([&](const auto&... slot) { (add_targets(slot), ...); }, scene_.slots);
+        scene_.slots.apply([&](const auto&... slot) { [[maybe_unused]] const int in_order[] = {(add_targets(slot), 0)...}; });
         drop_nested_targets();
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);

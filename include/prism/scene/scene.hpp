@@ -5,6 +5,7 @@
 #include <prism/accel/bvh.hpp>
 #include <prism/core/check.hpp>
 #include <prism/core/dispatch.hpp>
+#include <prism/core/pack.hpp>
 #include <prism/core/interval.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/light/light.hpp>
@@ -162,18 +163,18 @@ class Scene {
     static_assert(sizeof...(Slots) > 0, "a scene needs at least one object");
 
     template <std::size_t I>
-    using SlotAt = std::tuple_element_t<I, std::tuple<Slots...>>;
+    using SlotAt = pack_element_t<I, Pack<Slots...>>;
 
 public:
     using scalar_type = typename SlotAt<0>::scalar_type;
     using T = scalar_type;
-    static_assert((std::same_as<typename Slots::scalar_type, T> && ...), "all objects must share one scalar type");
+    static_assert(detail::all_of({std::same_as<typename Slots::scalar_type, T>...}), "all objects must share one scalar type");
     static_assert(detail::lights_of_scalar<LightsOfScene, T>, "every light must have the objects' scalar type (a PointLight<float> in a scene of double objects?)");
 
     /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
-    static constexpr bool has_transmissive = (transmits<typename Slots::material_type> || ...);
+    static constexpr bool has_transmissive = detail::any_of({transmits<typename Slots::material_type>...});
     /// Some material has a mirror lobe.
-    static constexpr bool has_specular = (reflects<typename Slots::material_type> || ...) || has_transmissive;
+    static constexpr bool has_specular = detail::any_of({reflects<typename Slots::material_type>...}) || has_transmissive;
     static constexpr std::size_t slot_count = sizeof...(Slots);
     /// The fewest bounded objects the scene builds its tree over.
     static constexpr std::size_t tree_from = 8;
@@ -181,7 +182,7 @@ public:
     // Scene Public Members
 
     LightsOfScene lights;
-    std::tuple<Slots...> slots;
+    Pack<Slots...> slots; ///< get<I>(slots) is slot I
     Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
     Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
 
@@ -191,7 +192,7 @@ public:
         // and one box around every bounded object (a ray that misses it skips them all).
         std::vector<Aabb<T>> boxes;
         for_each_slot([&]<std::size_t I>(Index<I>) {
-            const auto list = objects_of(std::get<I>(slots));
+            const auto list = objects_of(get<I>(slots));
             for (std::uint32_t k = 0; k < list.size(); ++k) {
                 const detail::ObjectKey key{std::uint32_t(I), k};
                 if (list[k].bounded) {
@@ -214,7 +215,7 @@ public:
             // One slot: its shapes side by side as a traversal meets them (a copy: the
             // objects' materials stay out of the cache's way), and the surface pass
             // takes the nearest from here too.
-            if constexpr (slot_count == 1) shapes_.push_back(objects_of(std::get<0>(slots))[in_key_order[p].index].shape);
+            if constexpr (slot_count == 1) shapes_.push_back(objects_of(get<0>(slots))[in_key_order[p].index].shape);
         }
         has_tree_ = true;
     }
@@ -282,8 +283,8 @@ public:
     decltype(auto) visit_material(const Hit<T>& hit, F&& f) const
     {
         return dispatch<slot_count>(hit.slot, [&]<std::size_t I>(Index<I>) -> decltype(auto) {
-            PRISM_ASSERT(hit.index < objects_of(std::get<I>(slots)).size());
-            return f(objects_of(std::get<I>(slots))[hit.index].material);
+            PRISM_ASSERT(hit.index < objects_of(get<I>(slots)).size());
+            return f(objects_of(get<I>(slots))[hit.index].material);
         });
     }
 
@@ -332,17 +333,18 @@ private:
     };
     static constexpr std::uint32_t no_copy = ~std::uint32_t(0);
 
-    /// f(Index<I>{}) for every slot I, in order.
+    /// f(Index<I>{}) for every slot I, in order (a braced list, not a fold: clang nests a
+    /// fold's terms, and refuses more than 256).
     template <class F>
     static constexpr void for_each_slot(F&& f)
     {
-        [&]<std::size_t... I>(std::index_sequence<I...>) { (f(Index<I>{}), ...); }(std::index_sequence_for<Slots...>{});
+        [&]<std::size_t... I>(std::index_sequence<I...>) { [[maybe_unused]] const int in_order[] = {(f(Index<I>{}), 0)...}; }(std::index_sequence_for<Slots...>{});
     }
 
     template <std::size_t I>
     [[nodiscard]] const auto& object_at(std::uint32_t k) const noexcept
     {
-        return objects_of(std::get<I>(slots))[k];
+        return objects_of(get<I>(slots))[k];
     }
 
     /// The object behind the key (at position `copy` of shapes_, if it is there) asked for
@@ -382,7 +384,7 @@ private:
         if constexpr (slot_count <= dispatch_chain_up_to) {
             return [&]<std::size_t... I>(std::index_sequence<I...>) {
                 return ([&] {
-                    const auto list = objects_of(std::get<I>(slots));
+                    const auto list = objects_of(get<I>(slots));
                     for (std::uint32_t k = 0; k < list.size(); ++k)
                         if (list[k].bounded && visit(Index<I>{}, k)) return true;
                     return false;
