@@ -1,6 +1,13 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""What a scene pays for its materials: the Cornell box with glass and mirror spheres
+"""What compiling costs, and what a scene pays for its materials.
+
+    bench/compile_cost.py --translation-units [--units A,B] [--include DIR] [--label NAME]
+        CPU seconds and peak memory of the compiler (g++ and clang++-19, -O2) for each
+        example and each test file: results/compile_cost_units.csv (rows appended,
+        labelled, so that a run on another checkout's include/ sits beside this one).
+
+What a scene pays for its materials: the Cornell box with glass and mirror spheres
 (bench/scene_full.cpp) against the same box with diffuse spheres
 (bench/scene_diffuse_only.cpp), whose Whitted integrator compiles no reflection or
 refraction code. Compile time (g++ -O2, minimum of 3), size of the code (.text),
@@ -19,11 +26,49 @@ import time
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
 
+def compile_units(args):
+    """Each example and test file compiled alone (no precompiled header), g++ and clang."""
+    include = pathlib.Path(args.include or ROOT / "include")
+    units = sorted((ROOT / "examples").glob("*.cpp")) + sorted(p for p in (ROOT / "tests").glob("*/*.cpp") if p.parent.name not in ("fuzz",))
+    units = [u for u in units if u.name not in ("mpi_render.cpp",) and u.relative_to(ROOT).as_posix() not in ("tests/io/exr.cpp", "tests/io/mesh.cpp")]
+    if args.units:
+        units = [u for u in units if u.relative_to(ROOT).as_posix() in args.units.split(",")]
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    path = out / "compile_cost_units.csv"
+    new_file = not path.exists()
+    with open(path, "a", newline="") as f:
+        writer = csv.writer(f)
+        if new_file:
+            writer.writerow(["label", "compiler", "unit", "cpu_seconds", "peak_mb"])
+        for compiler in ("g++", "clang++-19"):
+            for unit in units:
+                command = ["/usr/bin/time", "-f", "%U %S %M", compiler, "-std=c++20", "-O2", "-DNDEBUG", "-DGLM_FORCE_PURE",
+                           f"-I{include}", f"-I{ROOT / 'examples'}", f"-DPRISM_TEST_ASSETS=\"{ROOT / 'assets'}\"",
+                           f"-DPRISM_ASSET_DIR=\"{ROOT / 'assets'}\"", "-c", str(unit), "-o", "/dev/null"]
+                run = subprocess.run(command, capture_output=True, text=True)
+                user, system, peak = run.stderr.strip().splitlines()[-1].split()
+                if run.returncode != 0:
+                    print(f"{compiler} {unit.relative_to(ROOT)}: does not compile")
+                    continue
+                row = [args.label, compiler, unit.relative_to(ROOT).as_posix(), f"{float(user) + float(system):.2f}", f"{int(peak) / 1024:.0f}"]
+                writer.writerow(row)
+                f.flush()
+                print(" ".join(row))
+    print(f"wrote {path}")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default=str(ROOT / "bench" / "results"))
     parser.add_argument("--cxx", default="g++")
+    parser.add_argument("--translation-units", action="store_true")
+    parser.add_argument("--include", help="the include/ folder to compile against (default: this checkout's)")
+    parser.add_argument("--label", default="this checkout")
+    parser.add_argument("--units", help="only these, comma-separated (e.g. examples/whitted.cpp)")
     args = parser.parse_args()
+    if args.translation_units:
+        return compile_units(args)
     rows = []
     with tempfile.TemporaryDirectory() as folder:
         for variant in ("scene_diffuse_only", "scene_full"):

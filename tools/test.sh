@@ -13,7 +13,7 @@
 #             builds for libstdc++)
 #   fuzz      each libFuzzer target (tests/fuzz/) for 60 s, under ASan + UBSan
 # and the meson build's own test (a consumer project takes prism as a subproject).
-# Every build treats a warning as an error (-Wall -Wextra -Wpedantic and more, -Werror).
+# Every CMake build treats a warning as an error (-Wall -Wextra -Wpedantic and more, -Werror).
 # Build output goes to build/logs/; a failing step prints its log. The last line sums up
 # the cases of every run: "test: N passed, N failed".
 set -uo pipefail
