@@ -162,10 +162,13 @@ struct NoShapes {};
 /// order beside the tree.) Whatever order the objects are met in, the answer is the same
 /// object at the same t: a tie at one t goes to the lower slot, then the lower index, as
 /// in a scan of the slots in turn.
-template <class LightsOfScene, Slot... Slots>
+// (Slots is checked by a static_assert, not constrained as `Slot... Slots`: clang checks a
+// constrained pack as a fold expression, and refuses one of more than 256 terms.)
+template <class LightsOfScene, class... Slots>
 class Scene {
     static_assert(LightList<LightsOfScene>, "a Scene's first argument must be its lights as Lights{...}, e.g. Scene{Lights{PointLight<float>{...}}, objects...}");
     static_assert(sizeof...(Slots) > 0, "a scene needs at least one object");
+    static_assert(detail::all_of({Slot<Slots>...}), "a Scene's objects must each be an Object{shape, material} or an ObjectArray");
 
     template <std::size_t I>
     using SlotAt = pack_element_t<I, Pack<Slots...>>;
