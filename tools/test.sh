@@ -3,8 +3,9 @@
 # Run the whole test suite, five ways, on two compilers and two standard libraries:
 #   release   g++ 12 and libstdc++, Release: every doctest case as a ctest test, plus the
 #             single-header check, the consumer projects and the command-line tests
-#   sanitize  g++, the same cases under AddressSanitizer + UndefinedBehaviorSanitizer,
-#             with PRISM_ASSERT kept active, and a small render
+#   sanitize  clang 19 and libstdc++, the same cases under AddressSanitizer +
+#             UndefinedBehaviorSanitizer, with PRISM_ASSERT kept active, on the portable
+#             paths (no __int128, no vector extensions), and a small render
 #   thread    clang 19 and libstdc++, the same cases under ThreadSanitizer, with
 #             PRISM_ASSERT active, and 2-thread renders (Whitted and photon mapping)
 #   libc++    clang 19 and libc++, Release, for AVX2 where the CPU has it (so the suite
@@ -65,13 +66,15 @@ else
   fail release
 fi
 
-# Address + undefined-behaviour sanitizers, assertions on.
+# Address + undefined-behaviour sanitizers (clang 19, libstdc++), assertions on, and the
+# portable paths: the exact sums in two 64-bit words instead of __int128, and the BVH's
+# and triangle blocks' scalar twins instead of vector extensions.
 sanitize="$root/build/sanitize"
 # Line tables only (-g1: a third less compile time than -g), the tests with prism.hpp
 # precompiled, and only the examples the tests run.
-if step sanitize-build bash -c "cmake -S '$root' -B '$sanitize' -G Ninja -DCMAKE_BUILD_TYPE=Debug -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON -DPRISM_WERROR=ON \
+if step sanitize-build bash -c "cmake -S '$root' -B '$sanitize' -G Ninja -DCMAKE_CXX_COMPILER=clang++-19 -DCMAKE_BUILD_TYPE=Debug -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON -DPRISM_WERROR=ON \
       -DPRISM_TESTS_PCH=ON -DCMAKE_CXX_FLAGS_DEBUG=-g1 \
-      -DCMAKE_CXX_FLAGS='-O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer' &&
+      -DCMAKE_CXX_FLAGS='-O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -DPRISM_PORTABLE_INT128 -DPRISM_NO_VECTOR_EXTENSIONS' &&
       cmake --build '$sanitize' -j $jobs --target prism_tests cli_examples test_programs"; then
   ctest --test-dir "$sanitize" -j "$jobs" >"$logs/sanitize-ctest.log" 2>&1 ||
     ctest --test-dir "$sanitize" --rerun-failed --output-on-failure 2>&1 | tail -n 80

@@ -44,6 +44,16 @@
 #define PRISM_CONSTEXPR_VECTORS 0
 #endif
 
+/// 1 when the compiler has GCC's vector extensions (GCC and Clang do): the BVH's node
+/// test and the triangle blocks' edge test use them. Without them, or with
+/// PRISM_NO_VECTOR_EXTENSIONS defined, both take their scalar twins, the same arithmetic
+/// lane by lane, with the same bits.
+#if defined(__GNUC__) && !defined(PRISM_NO_VECTOR_EXTENSIONS)
+#define PRISM_VECTOR_EXTENSIONS 1
+#else
+#define PRISM_VECTOR_EXTENSIONS 0
+#endif
+
 namespace prism::detail {
 
 [[noreturn]] inline void assert_fail(const char* expression, const char* file, int line) noexcept
@@ -865,6 +875,7 @@ struct SlabRay {
     }
 };
 
+#if PRISM_VECTOR_EXTENSIONS
 /// SlabRay's test of a node's children in SIMD (GCC's vector extensions, which clang
 /// shares): the same arithmetic in each lane as SlabRay::may_cross, with the ray's values
 /// broadcast and the faces it meets first chosen once per ray.
@@ -918,6 +929,7 @@ struct SlabLanes {
         return hits;
     }
 };
+#endif
 
 template <Scalar T>
 constexpr T half_area(const Aabb<T>& b) noexcept
@@ -1182,7 +1194,11 @@ private:
         if (nodes_.empty()) return false;
         const detail::SlabRay<T> slab(ray, magnitude_);
         if (std::is_constant_evaluated()) return walk_with<Nearest>(slab, range, visit);
+#if PRISM_VECTOR_EXTENSIONS
         return walk_with<Nearest>(detail::SlabLanes<T, Width>(slab), range, visit);
+#else
+        return walk_with<Nearest>(slab, range, visit);
+#endif
     }
 
     template <bool Nearest, class Slab, class Visit>
@@ -3000,6 +3016,7 @@ struct TriangleBlock {
 /// rejects; a lane with an edge function of 0 (which hit_triangle decides again in
 /// double) is kept. Over incoherent rays most triangles a leaf offers are missed, and
 /// this rejects four in about the time hit_triangle takes for one.
+#if PRISM_VECTOR_EXTENSIONS
 template <int Kz, Scalar T>
 [[nodiscard, gnu::always_inline]] inline unsigned edge_test_along(const ShearedRay<T>& ray, const TriangleBlock<T>& block) noexcept
 {
@@ -3025,16 +3042,57 @@ template <int Kz, Scalar T>
     for (int lane = 0; lane < width; ++lane) maybe |= missed[lane] ? 0u : 1u << lane;
     return maybe;
 }
+#endif
+
+/// edge_test_along one lane at a time, with the same arithmetic: where the compiler has
+/// no vector extensions, and the twin the SIMD test is checked against.
+template <int Kz, Scalar T>
+[[nodiscard]] inline unsigned edge_test_lanewise_along(const ShearedRay<T>& ray, const TriangleBlock<T>& block) noexcept
+{
+    constexpr int kx = Kz == 2 ? 0 : Kz + 1, ky = kx == 2 ? 0 : kx + 1;
+    unsigned maybe = 0;
+    for (std::size_t lane = 0; lane < std::size_t(TriangleBlock<T>::width); ++lane) {
+        T px[3], py[3];
+        for (std::size_t i = 0; i < 3; ++i) {
+            const T x = block.corner[3 * i + kx][lane] - ray.origin[kx], y = block.corner[3 * i + ky][lane] - ray.origin[ky],
+                    z = block.corner[3 * i + Kz][lane] - ray.origin[Kz];
+            px[i] = x + ray.sx * z;
+            py[i] = y + ray.sy * z;
+        }
+        const T e0 = px[1] * py[2] - py[1] * px[2];
+        const T e1 = px[2] * py[0] - py[2] * px[0];
+        const T e2 = px[0] * py[1] - py[0] * px[1];
+        const bool missed = (e0 < T(0) || e1 < T(0) || e2 < T(0)) && (e0 > T(0) || e1 > T(0) || e2 > T(0)) &&
+                            !(e0 == T(0) || e1 == T(0) || e2 == T(0));
+        maybe |= missed ? 0u : 1u << lane;
+    }
+    return maybe;
+}
+
+/// edge_test_lanewise_along for the ray's axis.
+template <Scalar T>
+[[nodiscard]] inline unsigned edge_test_lanewise(const ShearedRay<T>& ray, const TriangleBlock<T>& block) noexcept
+{
+    switch (ray.kz) {
+    case 0: return edge_test_lanewise_along<0>(ray, block);
+    case 1: return edge_test_lanewise_along<1>(ray, block);
+    default: return edge_test_lanewise_along<2>(ray, block);
+    }
+}
 
 /// edge_test_along for the ray's axis.
 template <Scalar T>
 [[nodiscard, gnu::always_inline]] inline unsigned edge_test(const ShearedRay<T>& ray, const TriangleBlock<T>& block) noexcept
 {
+#if !PRISM_VECTOR_EXTENSIONS
+    return edge_test_lanewise(ray, block);
+#else
     switch (ray.kz) {
     case 0: return edge_test_along<0>(ray, block);
     case 1: return edge_test_along<1>(ray, block);
     default: return edge_test_along<2>(ray, block);
     }
+#endif
 }
 
 template <Scalar T>
@@ -8068,6 +8126,149 @@ template <class SceneT, class Air = StraightAir>
 
 } // namespace prism
 
+// ---- prism/core/int128.hpp ----
+// A 128-bit signed integer, two's complement, with only what exact sums need: made from
+// and read as two 64-bit words, negated, added with overflow detected, and rounded once
+// to double. Two implementations with the same bits: the compiler's __int128 where it
+// has one (GCC and Clang on 64-bit targets), and two 64-bit words anywhere (MSVC has no
+// 128-bit integer). Int128 is the first, or the second where there is no __int128 or
+// PRISM_PORTABLE_INT128 is defined; both are compiled and compared in every test build.
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+namespace prism {
+namespace detail {
+
+/// The portable 128-bit integer: two 64-bit words.
+class WordsInt128 {
+public:
+    constexpr WordsInt128() noexcept = default;
+
+    /// The integer whose two's-complement bits are high 2^64 + low.
+    [[nodiscard]] static constexpr WordsInt128 from_words(std::uint64_t low, std::uint64_t high) noexcept
+    {
+        WordsInt128 x;
+        x.low_ = low;
+        x.high_ = high;
+        return x;
+    }
+    [[nodiscard]] static constexpr WordsInt128 from_int64(std::int64_t v) noexcept
+    {
+        return from_words(std::uint64_t(v), v < 0 ? ~std::uint64_t(0) : 0);
+    }
+    [[nodiscard]] constexpr std::uint64_t low() const noexcept { return low_; }
+    [[nodiscard]] constexpr std::uint64_t high() const noexcept { return high_; }
+    [[nodiscard]] constexpr bool negative() const noexcept { return (high_ >> 63) != 0; }
+
+    /// -x, modulo 2^128 (the lowest value is its own negation).
+    [[nodiscard]] constexpr WordsInt128 operator-() const noexcept
+    {
+        return from_words(~low_ + 1, ~high_ + std::uint64_t(low_ == 0));
+    }
+
+    /// Add `other`; false (and this unchanged) when the sum is not a 128-bit integer.
+    [[nodiscard]] constexpr bool add(const WordsInt128& other) noexcept
+    {
+        const std::uint64_t low = low_ + other.low_;
+        const std::uint64_t high = high_ + other.high_ + std::uint64_t(low < low_);
+        // Overflow: both operands have a sign the sum does not.
+        if ((((high_ ^ high) & (other.high_ ^ high)) >> 63) != 0) return false;
+        low_ = low;
+        high_ = high;
+        return true;
+    }
+
+    /// The nearest double (ties to even), as a conversion of __int128 gives it.
+    [[nodiscard]] double to_double() const noexcept
+    {
+        const WordsInt128 magnitude = negative() ? -*this : *this; // the lowest: 2^127, read unsigned
+        std::uint64_t high = magnitude.high_, low = magnitude.low_;
+        if (high == 0 && low == 0) return 0.0;
+        // Shift the leading one to bit 127; its top 64 bits are then `high`.
+        const int zeros = high != 0 ? std::countl_zero(high) : 64 + std::countl_zero(low);
+        if (zeros >= 64) {
+            high = low << (zeros - 64);
+            low = 0;
+        } else if (zeros > 0) {
+            high = (high << zeros) | (low >> (64 - zeros));
+            low <<= zeros;
+        }
+        // 53 bits kept; the 11 below and `low` decide the rounding.
+        std::uint64_t mantissa = high >> 11;
+        const std::uint64_t rest = high & 0x7ff, half = 0x400;
+        if (rest > half || (rest == half && (low != 0 || (mantissa & 1) != 0))) ++mantissa; // 2^53 at most: exact
+        const double value = std::ldexp(double(mantissa), 75 - zeros);
+        return negative() ? -value : value;
+    }
+
+    friend constexpr bool operator==(const WordsInt128&, const WordsInt128&) = default;
+
+private:
+    std::uint64_t low_ = 0, high_ = 0;
+};
+
+#if defined(__SIZEOF_INT128__)
+/// The compiler's 128-bit integer, behind WordsInt128's interface.
+class NativeInt128 {
+public:
+    // -Wpedantic names __int128 an extension.
+    __extension__ using Bits = __int128;
+    __extension__ using UnsignedBits = unsigned __int128;
+
+    constexpr NativeInt128() noexcept = default;
+
+    [[nodiscard]] static constexpr NativeInt128 from_words(std::uint64_t low, std::uint64_t high) noexcept
+    {
+        NativeInt128 x;
+        x.bits_ = Bits((UnsignedBits(high) << 64) | low);
+        return x;
+    }
+    [[nodiscard]] static constexpr NativeInt128 from_int64(std::int64_t v) noexcept
+    {
+        NativeInt128 x;
+        x.bits_ = v;
+        return x;
+    }
+    [[nodiscard]] constexpr std::uint64_t low() const noexcept { return std::uint64_t(UnsignedBits(bits_)); }
+    [[nodiscard]] constexpr std::uint64_t high() const noexcept { return std::uint64_t(UnsignedBits(bits_) >> 64); }
+    [[nodiscard]] constexpr bool negative() const noexcept { return bits_ < 0; }
+
+    [[nodiscard]] constexpr NativeInt128 operator-() const noexcept
+    {
+        NativeInt128 x;
+        x.bits_ = Bits(UnsignedBits(0) - UnsignedBits(bits_)); // wraps, as WordsInt128's does
+        return x;
+    }
+
+    [[nodiscard]] constexpr bool add(const NativeInt128& other) noexcept
+    {
+        Bits sum{};
+        if (__builtin_add_overflow(bits_, other.bits_, &sum)) return false;
+        bits_ = sum;
+        return true;
+    }
+
+    [[nodiscard]] double to_double() const noexcept { return double(bits_); }
+
+    friend constexpr bool operator==(const NativeInt128&, const NativeInt128&) = default;
+
+private:
+    Bits bits_ = 0;
+};
+#endif
+
+} // namespace detail
+
+#if defined(__SIZEOF_INT128__) && !defined(PRISM_PORTABLE_INT128)
+using Int128 = detail::NativeInt128;
+#else
+using Int128 = detail::WordsInt128;
+#endif
+
+} // namespace prism
+
 // ---- prism/render/film.hpp ----
 // Film: a linear HDR RGB image of radiance values, never NaN or Inf.
 
@@ -8159,7 +8360,7 @@ private:
 // the last bit, and far more when a and c differ by many orders of magnitude, so sums
 // made in parts and added in another order would not reproduce the whole. Here each
 // sample is rounded once, to the nearest multiple of 2^-64, and summed as a 128-bit
-// integer (ExactSum), whose addition is exact, associative and commutative. That one
+// integer (ExactSum, core/int128.hpp), whose addition is exact, associative and commutative. That one
 // rounding depends on the sample alone; it keeps every float sample in [2^-41, 2^40)
 // (4.5e-13 to 1.1e12) exactly and moves any other by at most 2^-65 (2.7e-20).
 
@@ -8168,6 +8369,7 @@ private:
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -8206,28 +8408,26 @@ struct PassRange {
     friend constexpr bool operator==(const PassRange&, const PassRange&) = default;
 };
 
-// GCC and Clang's 128-bit integers; -Wpedantic would name them an extension.
-__extension__ using Int128 = __int128;
-__extension__ using UInt128 = unsigned __int128;
-
 /// A signed fixed-point number with 64 integer and 64 fraction bits: samples rounded
-/// once to a multiple of 2^-64 and summed with no further rounding.
-class ExactSum {
+/// once to a multiple of 2^-64 and summed with no further rounding. `Integer` is one of
+/// core/int128.hpp's 128-bit integers (their bits are the same); ExactSum takes Int128.
+template <class Integer>
+class BasicExactSum {
 public:
     /// Samples are refused from this magnitude on (the render counts them as rejected,
     /// as it does NaN): 2^23 such samples could not overflow the 64 integer bits.
     static constexpr double limit = 0x1p40;
 
-    constexpr ExactSum() noexcept = default;
+    constexpr BasicExactSum() noexcept = default;
 
     /// x rounded to the nearest multiple of 2^-64 (halves away from zero), which is
-    /// Int128(round(ldexp(x, 64))). |x| < limit.
-    [[nodiscard]] static constexpr ExactSum of(double x) noexcept
+    /// round(ldexp(x, 64)) as an integer. |x| < limit.
+    [[nodiscard]] static constexpr BasicExactSum of(double x) noexcept
     {
         PRISM_ASSERT(x > -limit && x < limit);
         // From x's bits, in integers: |x| = m 2^(e - 1075) (e the biased exponent, m
         // with its leading one, or a denormal's m at e = 1), so |x| 2^64 = m 2^s. (The
-        // library's ldexp, round and double-to-__int128 conversion are calls, one a
+        // library's ldexp, round and double-to-integer conversion are calls, one a
         // sample and channel: 5 % of a Whitted render of the Cornell box.)
         const auto bits = std::bit_cast<std::uint64_t>(x);
         const auto biased = int((bits >> 52) & 0x7ff);
@@ -8244,38 +8444,36 @@ public:
         } else if (s > -54) {
             low = (m + (std::uint64_t(1) << (-s - 1))) >> -s; // half up: away from zero
         } // (s <= -54: m 2^s < 2^53 2^-54, nearer 0.)
-        const auto value = Int128((UInt128(high) << 64) | low);
+        const Integer value = Integer::from_words(low, high);
         return from_bits((bits >> 63) != 0 ? -value : value);
     }
 
     /// Whether x is a sample this type takes: finite and |x| < limit.
     [[nodiscard]] static constexpr bool takes(double x) noexcept { return x > -limit && x < limit; }
 
-    [[nodiscard]] static constexpr ExactSum from_bits(Int128 bits) noexcept
+    /// The sum whose value is bits 2^-64.
+    [[nodiscard]] static constexpr BasicExactSum from_bits(Integer bits) noexcept
     {
-        ExactSum s;
+        BasicExactSum s;
         s.bits_ = bits;
         return s;
     }
-    [[nodiscard]] constexpr Int128 bits() const noexcept { return bits_; }
+    [[nodiscard]] constexpr Integer bits() const noexcept { return bits_; }
 
     /// Add `other`; false (and this unchanged) when the sum would pass 2^63 in magnitude.
-    [[nodiscard]] constexpr bool add(const ExactSum& other) noexcept
-    {
-        Int128 sum{};
-        if (__builtin_add_overflow(bits_, other.bits_, &sum)) return false;
-        bits_ = sum;
-        return true;
-    }
+    [[nodiscard]] constexpr bool add(const BasicExactSum& other) noexcept { return bits_.add(other.bits_); }
 
     /// The sum, rounded once to double.
-    [[nodiscard]] double value() const noexcept { return double(bits_) * 0x1p-64; } // exact scaling: the double is 0 or at least 1
+    [[nodiscard]] double value() const noexcept { return bits_.to_double() * 0x1p-64; } // exact scaling: the double is 0 or at least 1
 
-    friend constexpr bool operator==(const ExactSum&, const ExactSum&) = default;
+    friend constexpr bool operator==(const BasicExactSum&, const BasicExactSum&) = default;
 
 private:
-    Int128 bits_ = 0;
+    Integer bits_{};
 };
+
+/// The exact sum every film, render and file of prism uses.
+using ExactSum = BasicExactSum<Int128>;
 
 namespace detail {
 
@@ -8358,7 +8556,10 @@ public:
         const std::size_t i = index(x, y);
         for (std::size_t c = 0; c < sums.size(); ++c)
             if (!sums_[i * channels_.size() + c].add(sums[c])) overflowed_.store(true, std::memory_order_relaxed);
-        if (__builtin_add_overflow(weights_[i], weight, &weights_[i])) overflowed_.store(true, std::memory_order_relaxed);
+        if (weight > std::numeric_limits<std::uint64_t>::max() - weights_[i])
+            overflowed_.store(true, std::memory_order_relaxed);
+        else
+            weights_[i] += weight;
     }
 
     /// Count sample values left out for not being finite (or negative, or past

@@ -184,7 +184,11 @@ void check_node_test()
         const Interval<T> range{i % 5 == 0 ? T(0) : scale * rng.uniform<T>(), i % 3 == 0 ? infinity<T> : T(2) * scale * rng.uniform<T>()};
         const detail::SlabRay<T> slab(ray, magnitude);
         std::array<T, W> near{};
+#if PRISM_VECTOR_EXTENSIONS
         const unsigned hits = detail::SlabLanes<T, W>(slab).may_cross(node, range, near);
+#else
+        const unsigned hits = slab.may_cross(node, range, near); // a build without vector extensions: the scalar loop alone
+#endif
         std::array<T, W> near_scalar{};
         mismatches += slab.may_cross(node, range, near_scalar) != hits;
         for (int c = 0; c < W; ++c) {

@@ -120,12 +120,12 @@ TEST_CASE_TEMPLATE("a mesh's Bvh finds what testing every triangle finds (leaves
     }
 }
 
-TEST_CASE_TEMPLATE("the four-lane edge test keeps every triangle hit_triangle hits, and rejects most others", T, float, double)
+TEST_CASE_TEMPLATE("the four-lane edge test keeps every triangle hit_triangle hits, rejects most others, and equals its lane-by-lane twin", T, float, double)
 {
     // Fans of triangles around shared vertices and edges (a ray through one is on the
     // edge of its neighbours), rays aimed at corners, edge points and random points.
     Pcg32 rng(17u, 2u);
-    int lost = 0, hits = 0, misses = 0, rejected = 0;
+    int lost = 0, hits = 0, misses = 0, rejected = 0, lanewise_differs = 0;
     for (int i = 0; i < 20000; ++i) {
         const T scale = i % 4 == 3 ? T(1e4) : T(1);
         const Vec3<T> center = test::random_point<T>(rng, T(2)) * scale;
@@ -148,6 +148,7 @@ TEST_CASE_TEMPLATE("the four-lane edge test keeps every triangle hit_triangle hi
         const Ray<T> ray{eye, target - eye};
         const prism::detail::ShearedRay<T> sheared(ray);
         const unsigned kept = prism::detail::edge_test(sheared, block);
+        lanewise_differs += kept != prism::detail::edge_test_lanewise(sheared, block); // the scalar twin: the same bits
         for (std::uint32_t lane = 0; lane < 4; ++lane) {
             prism::detail::TriangleHit<T> h;
             REQUIRE(block.triangle(lane) == fan[lane]);
@@ -163,6 +164,7 @@ TEST_CASE_TEMPLATE("the four-lane edge test keeps every triangle hit_triangle hi
     CHECK(lost == 0);
     CHECK(hits > 10000);
     CHECK(rejected > misses / 2);
+    CHECK(lanewise_differs == 0);
 }
 
 TEST_CASE_TEMPLATE("no ray slips through a closed mesh: aimed at its vertices, edges and faces", T, float, double)

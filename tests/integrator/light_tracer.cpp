@@ -146,7 +146,7 @@ TEST_CASE("the light tracer's ranges of paths and crops add up to the whole imag
     for (int y = 0; y < 9; ++y)
         for (int x = 0; x < 12; ++x) {
             REQUIRE(std::equal(parts.sums(x, y).begin(), parts.sums(x, y).end(), whole.sums(x, y).begin()));
-            lit += whole.sums(x, y)[0].bits() > 0;
+            lit += whole.sums(x, y)[0].value() > 0;
         }
     CHECK(lit > 20); // the test sees the caustic
     // A crop of light_trace's image is those pixels of the whole image.

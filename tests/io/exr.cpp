@@ -84,7 +84,7 @@ TEST_CASE("an Accumulation's exact sums go through an EXR file unchanged")
         for (int x = 3; x < 8; ++x) {
             // Sums whose bits reach every one of the four words, some negative.
             const ExactSum s[4] = {ExactSum::of(1e11 * x + 1e-12 * y), ExactSum::of(0x1p-64 * (x + 1)),
-                                   ExactSum::from_bits((Int128(x) << 100) + y), ExactSum::of(-2.5 * y)};
+                                   ExactSum::from_bits(Int128::from_words(std::uint64_t(y), std::uint64_t(x) << 36)), ExactSum::of(-2.5 * y)};
             sums.add(x, y, s, (std::uint64_t(1) << 40) + std::uint64_t(x));
         }
     const auto path = scratch("sums.exr");

@@ -21,15 +21,25 @@ TEST_CASE("ExactSum keeps every float sample from 2^-41 to 2^40 exactly, and rou
         REQUIRE(ExactSum::of(x).value() == double(x));
         REQUIRE(ExactSum::of(-x).value() == -double(x));
     }
-    CHECK(ExactSum::of(0x1p-64).bits() == 1);
-    CHECK(ExactSum::of(0x1p-66).bits() == 0);      // a quarter of the step: down
-    CHECK(ExactSum::of(0x3p-66).bits() == 1);      // three quarters: up
-    CHECK(ExactSum::of(0x1p-65).bits() == 1);      // a half: away from zero
-    CHECK(ExactSum::of(-0x1p-65).bits() == -1);
+    CHECK(ExactSum::of(0x1p-64).bits() == Int128::from_int64(1));
+    CHECK(ExactSum::of(0x1p-66).bits() == Int128::from_int64(0));  // a quarter of the step: down
+    CHECK(ExactSum::of(0x3p-66).bits() == Int128::from_int64(1));  // three quarters: up
+    CHECK(ExactSum::of(0x1p-65).bits() == Int128::from_int64(1));  // a half: away from zero
+    CHECK(ExactSum::of(-0x1p-65).bits() == Int128::from_int64(-1));
     CHECK(ExactSum::takes(0x1p40 - 1));
     CHECK(!ExactSum::takes(0x1p40));
     CHECK(!ExactSum::takes(std::numeric_limits<double>::quiet_NaN()));
     CHECK(!ExactSum::takes(std::numeric_limits<double>::infinity()));
+}
+
+// round(ldexp(x, 64)) as a 128-bit integer, from doubles alone: the integral double's
+// two 64-bit halves (each exact), negated in two's complement when x < 0.
+[[nodiscard]] static Int128 rounded_reference(double x)
+{
+    const double v = std::abs(std::round(std::ldexp(x, 64)));
+    const double high = std::floor(std::ldexp(v, -64));
+    const auto magnitude = Int128::from_words(std::uint64_t(v - std::ldexp(high, 64)), std::uint64_t(high));
+    return std::signbit(x) && v != 0 ? -magnitude : magnitude;
 }
 
 TEST_CASE("ExactSum::of, done in integers, equals the library's round(ldexp(x, 64)) for doubles of every size")
@@ -37,7 +47,7 @@ TEST_CASE("ExactSum::of, done in integers, equals the library's round(ldexp(x, 6
     // The reference: the formula of() replaced (the library's calls), on doubles of
     // every exponent from denormals to the limit, both signs, with random mantissas and
     // with halves and their neighbours (the rounding's edge), and in constant evaluation.
-    const auto reference = [](double x) { return Int128(std::round(std::ldexp(x, 64))); };
+    const auto reference = rounded_reference;
     std::mt19937_64 random(11);
     std::uniform_int_distribution<int> exponent(-1074, 39);
     std::uniform_int_distribution<std::uint64_t> mantissa(0, (std::uint64_t(1) << 53) - 1);
@@ -53,7 +63,19 @@ TEST_CASE("ExactSum::of, done in integers, equals the library's round(ldexp(x, 6
                 if (std::abs(y) < ExactSum::limit) REQUIRE(ExactSum::of(y).bits() == reference(y));
     for (const double x : {0.0, -0.0, std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::min(), std::nextafter(ExactSum::limit, 0.0)})
         CHECK(ExactSum::of(x).bits() == reference(x));
-    static_assert(ExactSum::of(0.75).bits() == Int128(3) << 62 && ExactSum::of(-0x1p-65).bits() == -1);
+    static_assert(ExactSum::of(0.75).bits() == Int128::from_words(std::uint64_t(3) << 62, 0) && ExactSum::of(-0x1p-65).bits() == Int128::from_int64(-1));
+    // The portable words give the same sums.
+    using Portable = BasicExactSum<detail::WordsInt128>;
+    static_assert(Portable::of(0.75).bits() == detail::WordsInt128::from_words(std::uint64_t(3) << 62, 0));
+    for (int i = 0; i < 100000; ++i) {
+        const double x = std::ldexp(double(mantissa(random)), exponent(random) - 52);
+        if (!(x < ExactSum::limit)) continue;
+        for (const double y : {x, -x}) {
+            const auto words = Portable::of(y).bits();
+            REQUIRE(Int128::from_words(words.low(), words.high()) == reference(y));
+            REQUIRE(Portable::of(y).value() == ExactSum::of(y).value());
+        }
+    }
 }
 
 TEST_CASE("ExactSum adds without rounding, so any order and grouping gives the same bits")
@@ -96,11 +118,13 @@ TEST_CASE("ExactSum adds without rounding, so any order and grouping gives the s
 
 TEST_CASE("ExactSum and Accumulation refuse to overflow instead of wrapping")
 {
-    ExactSum s = ExactSum::from_bits(std::numeric_limits<Int128>::max() - 5);
-    CHECK(!s.add(ExactSum::from_bits(6)));
-    CHECK(s.bits() == std::numeric_limits<Int128>::max() - 5); // unchanged
+    const Int128 highest_but_5 = Int128::from_words(~std::uint64_t(0) - 5, ~std::uint64_t(0) >> 1); // 2^127 - 6
+    ExactSum s = ExactSum::from_bits(highest_but_5);
+    CHECK(!s.add(ExactSum::from_bits(Int128::from_int64(6))));
+    CHECK(s.bits() == highest_but_5); // unchanged
+    CHECK(s.add(ExactSum::from_bits(Int128::from_int64(5))));
     Accumulation sums(1, 1, {0, 0, 1, 1});
-    const ExactSum near[3] = {ExactSum::from_bits(std::numeric_limits<Int128>::max() - 5), {}, {}};
+    const ExactSum near[3] = {ExactSum::from_bits(highest_but_5), {}, {}};
     sums.add(0, 0, near, 1);
     CHECK(!sums.overflowed());
     CHECK_NOTHROW((void)sums.image());

@@ -210,6 +210,7 @@ struct SlabRay {
     }
 };
 
+#if PRISM_VECTOR_EXTENSIONS
 /// SlabRay's test of a node's children in SIMD (GCC's vector extensions, which clang
 /// shares): the same arithmetic in each lane as SlabRay::may_cross, with the ray's values
 /// broadcast and the faces it meets first chosen once per ray.
@@ -263,6 +264,7 @@ struct SlabLanes {
         return hits;
     }
 };
+#endif
 
 template <Scalar T>
 constexpr T half_area(const Aabb<T>& b) noexcept
@@ -527,7 +529,11 @@ private:
         if (nodes_.empty()) return false;
         const detail::SlabRay<T> slab(ray, magnitude_);
         if (std::is_constant_evaluated()) return walk_with<Nearest>(slab, range, visit);
+#if PRISM_VECTOR_EXTENSIONS
         return walk_with<Nearest>(detail::SlabLanes<T, Width>(slab), range, visit);
+#else
+        return walk_with<Nearest>(slab, range, visit);
+#endif
     }
 
     template <bool Nearest, class Slab, class Visit>

@@ -28,6 +28,16 @@
 #define PRISM_CONSTEXPR_VECTORS 0
 #endif
 
+/// 1 when the compiler has GCC's vector extensions (GCC and Clang do): the BVH's node
+/// test and the triangle blocks' edge test use them. Without them, or with
+/// PRISM_NO_VECTOR_EXTENSIONS defined, both take their scalar twins, the same arithmetic
+/// lane by lane, with the same bits.
+#if defined(__GNUC__) && !defined(PRISM_NO_VECTOR_EXTENSIONS)
+#define PRISM_VECTOR_EXTENSIONS 1
+#else
+#define PRISM_VECTOR_EXTENSIONS 0
+#endif
+
 namespace prism::detail {
 
 [[noreturn]] inline void assert_fail(const char* expression, const char* file, int line) noexcept

@@ -111,13 +111,10 @@ inline Displacements displacements(const std::vector<unsigned long long>& counts
 inline void append_pixel(std::vector<std::uint64_t>& words, const Accumulation& sums, int x, int y)
 {
     words.insert(words.end(), {sums.weight(x, y), 0});
-    for (const ExactSum& s : sums.sums(x, y)) {
-        const auto bits = static_cast<UInt128>(s.bits());
-        words.insert(words.end(), {std::uint64_t(bits), std::uint64_t(bits >> 64)});
-    }
+    for (const ExactSum& s : sums.sums(x, y)) words.insert(words.end(), {s.bits().low(), s.bits().high()});
 }
 
-[[nodiscard]] inline Int128 int128_at(const std::uint64_t* words) noexcept { return static_cast<Int128>((UInt128(words[1]) << 64) | words[0]); }
+[[nodiscard]] inline Int128 int128_at(const std::uint64_t* words) noexcept { return Int128::from_words(words[0], words[1]); }
 
 /// Every rank's items, end to end in rank order, on every rank (the bytes each rank
 /// sent and received added to traffic's photon counts).
@@ -283,7 +280,7 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
 /// 128-bit integers (two 64-bit words, low first) summed by MPI_Reduce. An overflow, or
 /// an operand that overflowed before, gives the lowest value, which no exact sum or
 /// weight can be (their magnitudes stay below 2^127): rank 0 then refuses the result.
-inline constexpr Int128 overflowed_sum = Int128(UInt128(1) << 127);
+inline constexpr Int128 overflowed_sum = Int128::from_words(0, std::uint64_t(1) << 63);
 
 inline void add_int128(void* in, void* inout, int* count, MPI_Datatype*)
 {
@@ -291,10 +288,10 @@ inline void add_int128(void* in, void* inout, int* count, MPI_Datatype*)
     auto* b = static_cast<std::uint64_t*>(inout);
     for (int i = 0; i < *count; ++i, a += 2, b += 2) {
         const Int128 x = int128_at(a), y = int128_at(b);
-        Int128 sum = 0;
-        if (x == overflowed_sum || y == overflowed_sum || __builtin_add_overflow(x, y, &sum)) sum = overflowed_sum;
-        b[0] = std::uint64_t(UInt128(sum));
-        b[1] = std::uint64_t(UInt128(sum) >> 64);
+        Int128 sum = x;
+        if (x == overflowed_sum || y == overflowed_sum || !sum.add(y)) sum = overflowed_sum;
+        b[0] = sum.low();
+        b[1] = sum.high();
     }
 }
 
@@ -335,10 +332,10 @@ inline std::optional<Accumulation> reduce_sums(MPI_Comm comm, const Accumulation
         for (int x = w.x0; x < w.x1; ++x, at += per_pixel) {
             bool bad = any_overflowed != 0;
             for (std::size_t i = at; i < at + per_pixel; ++i) bad |= word(i) == overflowed_sum;
-            if (bad || word(at) < 0 || word(at) > Int128(std::numeric_limits<std::uint64_t>::max()))
+            if (bad || word(at).high() != 0) // a weight is an unsigned 64-bit integer
                 prism::detail::throw_invalid("prism::mpi: the ranks' sums overflowed (a sum passed 2^63): the image would be wrong");
             for (std::size_t c = 0; c < channels; ++c) pixel[c] = ExactSum::from_bits(word(at + 1 + c));
-            image.add(x, y, pixel, std::uint64_t(word(at)));
+            image.add(x, y, pixel, word(at).low());
         }
     image.reject(std::size_t(total_rejected));
     return image;

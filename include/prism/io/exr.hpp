@@ -206,8 +206,10 @@ inline void write_exr(const ExrImage& image, const std::filesystem::path& path)
             std::vector<std::uint32_t> bits;
             bits.reserve(w.area());
             for (int y = w.y0; y < w.y1; ++y)
-                for (int x = w.x0; x < w.x1; ++x)
-                    bits.push_back(std::uint32_t(static_cast<UInt128>(sums.sums(x, y)[c].bits()) >> (32 * word)));
+                for (int x = w.x0; x < w.x1; ++x) {
+                    const Int128 sum = sums.sums(x, y)[c].bits();
+                    bits.push_back(std::uint32_t((word < 2 ? sum.low() : sum.high()) >> (32 * (word % 2))));
+                }
             image.channels.push_back({"sum." + sums.channels()[c] + "." + std::to_string(word), std::move(bits)});
         }
     for (int word = 0; word < 2; ++word) {
@@ -242,9 +244,8 @@ inline void write_exr(const ExrImage& image, const std::filesystem::path& path)
     for (int y = w.y0; y < w.y1; ++y)
         for (int x = w.x0; x < w.x1; ++x, ++i) {
             for (std::size_t c = 0; c < channels.size(); ++c) {
-                UInt128 bits = 0;
-                for (int word = 3; word >= 0; --word) bits = (bits << 32) | (*parts[c * 4 + std::size_t(word)])[i];
-                pixel[c] = ExactSum::from_bits(static_cast<Int128>(bits));
+                const auto word = [&](std::size_t k) { return std::uint64_t((*parts[c * 4 + k])[i]); };
+                pixel[c] = ExactSum::from_bits(Int128::from_words(word(1) << 32 | word(0), word(3) << 32 | word(2)));
             }
             sums.add(x, y, pixel, (std::uint64_t(weight_hi[i]) << 32) | weight_lo[i]);
         }

@@ -7,12 +7,13 @@
 // the last bit, and far more when a and c differ by many orders of magnitude, so sums
 // made in parts and added in another order would not reproduce the whole. Here each
 // sample is rounded once, to the nearest multiple of 2^-64, and summed as a 128-bit
-// integer (ExactSum), whose addition is exact, associative and commutative. That one
+// integer (ExactSum, core/int128.hpp), whose addition is exact, associative and commutative. That one
 // rounding depends on the sample alone; it keeps every float sample in [2^-41, 2^40)
 // (4.5e-13 to 1.1e12) exactly and moves any other by at most 2^-65 (2.7e-20).
 #pragma once
 
 #include <prism/core/check.hpp>
+#include <prism/core/int128.hpp>
 #include <prism/core/math.hpp>
 #include <prism/render/film.hpp>
 
@@ -20,6 +21,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -58,28 +60,26 @@ struct PassRange {
     friend constexpr bool operator==(const PassRange&, const PassRange&) = default;
 };
 
-// GCC and Clang's 128-bit integers; -Wpedantic would name them an extension.
-__extension__ using Int128 = __int128;
-__extension__ using UInt128 = unsigned __int128;
-
 /// A signed fixed-point number with 64 integer and 64 fraction bits: samples rounded
-/// once to a multiple of 2^-64 and summed with no further rounding.
-class ExactSum {
+/// once to a multiple of 2^-64 and summed with no further rounding. `Integer` is one of
+/// core/int128.hpp's 128-bit integers (their bits are the same); ExactSum takes Int128.
+template <class Integer>
+class BasicExactSum {
 public:
     /// Samples are refused from this magnitude on (the render counts them as rejected,
     /// as it does NaN): 2^23 such samples could not overflow the 64 integer bits.
     static constexpr double limit = 0x1p40;
 
-    constexpr ExactSum() noexcept = default;
+    constexpr BasicExactSum() noexcept = default;
 
     /// x rounded to the nearest multiple of 2^-64 (halves away from zero), which is
-    /// Int128(round(ldexp(x, 64))). |x| < limit.
-    [[nodiscard]] static constexpr ExactSum of(double x) noexcept
+    /// round(ldexp(x, 64)) as an integer. |x| < limit.
+    [[nodiscard]] static constexpr BasicExactSum of(double x) noexcept
     {
         PRISM_ASSERT(x > -limit && x < limit);
         // From x's bits, in integers: |x| = m 2^(e - 1075) (e the biased exponent, m
         // with its leading one, or a denormal's m at e = 1), so |x| 2^64 = m 2^s. (The
-        // library's ldexp, round and double-to-__int128 conversion are calls, one a
+        // library's ldexp, round and double-to-integer conversion are calls, one a
         // sample and channel: 5 % of a Whitted render of the Cornell box.)
         const auto bits = std::bit_cast<std::uint64_t>(x);
         const auto biased = int((bits >> 52) & 0x7ff);
@@ -96,38 +96,36 @@ public:
         } else if (s > -54) {
             low = (m + (std::uint64_t(1) << (-s - 1))) >> -s; // half up: away from zero
         } // (s <= -54: m 2^s < 2^53 2^-54, nearer 0.)
-        const auto value = Int128((UInt128(high) << 64) | low);
+        const Integer value = Integer::from_words(low, high);
         return from_bits((bits >> 63) != 0 ? -value : value);
     }
 
     /// Whether x is a sample this type takes: finite and |x| < limit.
     [[nodiscard]] static constexpr bool takes(double x) noexcept { return x > -limit && x < limit; }
 
-    [[nodiscard]] static constexpr ExactSum from_bits(Int128 bits) noexcept
+    /// The sum whose value is bits 2^-64.
+    [[nodiscard]] static constexpr BasicExactSum from_bits(Integer bits) noexcept
     {
-        ExactSum s;
+        BasicExactSum s;
         s.bits_ = bits;
         return s;
     }
-    [[nodiscard]] constexpr Int128 bits() const noexcept { return bits_; }
+    [[nodiscard]] constexpr Integer bits() const noexcept { return bits_; }
 
     /// Add `other`; false (and this unchanged) when the sum would pass 2^63 in magnitude.
-    [[nodiscard]] constexpr bool add(const ExactSum& other) noexcept
-    {
-        Int128 sum{};
-        if (__builtin_add_overflow(bits_, other.bits_, &sum)) return false;
-        bits_ = sum;
-        return true;
-    }
+    [[nodiscard]] constexpr bool add(const BasicExactSum& other) noexcept { return bits_.add(other.bits_); }
 
     /// The sum, rounded once to double.
-    [[nodiscard]] double value() const noexcept { return double(bits_) * 0x1p-64; } // exact scaling: the double is 0 or at least 1
+    [[nodiscard]] double value() const noexcept { return bits_.to_double() * 0x1p-64; } // exact scaling: the double is 0 or at least 1
 
-    friend constexpr bool operator==(const ExactSum&, const ExactSum&) = default;
+    friend constexpr bool operator==(const BasicExactSum&, const BasicExactSum&) = default;
 
 private:
-    Int128 bits_ = 0;
+    Integer bits_{};
 };
+
+/// The exact sum every film, render and file of prism uses.
+using ExactSum = BasicExactSum<Int128>;
 
 namespace detail {
 
@@ -210,7 +208,10 @@ public:
         const std::size_t i = index(x, y);
         for (std::size_t c = 0; c < sums.size(); ++c)
             if (!sums_[i * channels_.size() + c].add(sums[c])) overflowed_.store(true, std::memory_order_relaxed);
-        if (__builtin_add_overflow(weights_[i], weight, &weights_[i])) overflowed_.store(true, std::memory_order_relaxed);
+        if (weight > std::numeric_limits<std::uint64_t>::max() - weights_[i])
+            overflowed_.store(true, std::memory_order_relaxed);
+        else
+            weights_[i] += weight;
     }
 
     /// Count sample values left out for not being finite (or negative, or past
