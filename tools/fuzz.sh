@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Fuzz prism with libFuzzer (clang 19, Debian: clang-19 libclang-rt-19-dev), under
-# AddressSanitizer and UndefinedBehaviorSanitizer with PRISM_ASSERT active:
+# Fuzz prism with libFuzzer (clang 19, Debian: clang-19 libclang-rt-19-dev), one target
+# per core at a time, under AddressSanitizer and UndefinedBehaviorSanitizer with
+# PRISM_ASSERT active:
 #   tools/fuzz.sh [SECONDS]     each target for SECONDS (default 30)
 # Targets (tests/fuzz/): quadric (crossings of any ten coefficients), csg (trees of
 # every operator), photon_map (the KD-tree against brute force, the estimates). Each
@@ -15,17 +16,37 @@ out="$root/build/fuzz"
 mkdir -p "$out"
 flags=(-std=c++20 -O1 -g1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -DPRISM_ENABLE_ASSERTIONS
        -DGLM_FORCE_PURE -I"$root/include")
-status=0
-for target in quadric csg photon_map; do
-  clang++-19 "${flags[@]}" "$root/tests/fuzz/$target.cpp" -o "$out/fuzz_$target"
+# fuzz_one TARGET: build it, fuzz it, and leave a line (or a failure and its log) in
+# build/fuzz/TARGET.report.
+fuzz_one() {
+  local target=$1 report="$out/$1.report"
   mkdir -p "$out/$target" "$root/tests/fuzz/corpus/$target"
+  if ! clang++-19 "${flags[@]}" "$root/tests/fuzz/$target.cpp" -o "$out/fuzz_$target" >"$out/$target.log" 2>&1; then
+    { echo "fuzz: $target FAILED to build:"; tail -n 40 "$out/$target.log"; } >"$report"
+    return 0
+  fi
   if ! "$out/fuzz_$target" "$out/$target" "$root/tests/fuzz/corpus/$target" -max_total_time="$seconds" -max_len=512 \
        -artifact_prefix="$out/crash-$target-" -print_final_stats=1 >"$out/$target.log" 2>&1; then
-    echo "fuzz: $target FAILED; its log ends:"
-    tail -n 40 "$out/$target.log"
-    status=1
+    { echo "fuzz: $target FAILED; its log ends:"; tail -n 40 "$out/$target.log"; } >"$report"
+    return 0
   fi
+  local runs
   runs=$(grep -E "stat::number_of_executed_units" "$out/$target.log" | awk '{print $2}')
-  echo "fuzz: $target: ${runs:-?} inputs in ${seconds} s, corpus $(ls "$out/$target" "$root/tests/fuzz/corpus/$target" | grep -vc ':$\|^$')"
+  echo "fuzz: $target: ${runs:-?} inputs in ${seconds} s, corpus $(ls "$out/$target" "$root/tests/fuzz/corpus/$target" | grep -vc ':$\|^$')" >"$report"
+}
+
+# One target per core at a time, each for SECONDS of its own.
+targets=(quadric csg photon_map)
+cores=$(nproc)
+rm -f "$out"/*.report
+for target in "${targets[@]}"; do
+  while (( $(jobs -rp | wc -l) >= cores )); do wait -n || true; done
+  fuzz_one "$target" &
+done
+wait
+status=0
+for target in "${targets[@]}"; do
+  cat "$out/$target.report" 2>/dev/null || echo "fuzz: $target FAILED: no report"
+  grep -q FAILED "$out/$target.report" 2>/dev/null && status=1
 done
 exit $status

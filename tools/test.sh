@@ -55,9 +55,11 @@ fail() { failed=$((failed + 1)); summary+=("$1 FAILED"); echo "test: $1: failed"
 
 start=$(date +%s)
 
-# Release: no benches (they are not tests).
+# Release: no benches (they are not tests); the tests with prism.hpp precompiled, eight
+# files to a translation unit (the libc++ build below compiles each test file alone, on
+# its own includes).
 release="$root/build/release"
-if step release-build bash -c "cmake -S '$root' -B '$release' -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_BENCH=OFF -DPRISM_WERROR=ON &&
+if step release-build bash -c "cmake -S '$root' -B '$release' -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_BENCH=OFF -DPRISM_WERROR=ON -DPRISM_TESTS_PCH=ON -DPRISM_TESTS_UNITY=ON &&
                                 cmake --build '$release' -j $jobs"; then
   ctest --test-dir "$release" -j "$jobs" >"$logs/release-ctest.log" 2>&1 ||
     ctest --test-dir "$release" --rerun-failed --output-on-failure 2>&1 | tail -n 80
@@ -73,7 +75,7 @@ sanitize="$root/build/sanitize"
 # Line tables only (-g1: a third less compile time than -g), the tests with prism.hpp
 # precompiled, and only the examples the tests run.
 if step sanitize-build bash -c "cmake -S '$root' -B '$sanitize' -G Ninja -DCMAKE_CXX_COMPILER=clang++-19 -DCMAKE_BUILD_TYPE=Debug -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON -DPRISM_WERROR=ON \
-      -DPRISM_TESTS_PCH=ON -DCMAKE_CXX_FLAGS_DEBUG=-g1 \
+      -DPRISM_TESTS_PCH=ON -DPRISM_TESTS_UNITY=ON -DCMAKE_CXX_FLAGS_DEBUG=-g1 \
       -DCMAKE_CXX_FLAGS='-O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -DPRISM_PORTABLE_INT128 -DPRISM_NO_VECTOR_EXTENSIONS' &&
       cmake --build '$sanitize' -j $jobs --target prism_tests cli_examples test_programs"; then
   ctest --test-dir "$sanitize" -j "$jobs" >"$logs/sanitize-ctest.log" 2>&1 ||
@@ -90,7 +92,7 @@ fi
 thread="$root/build/thread"
 export TSAN_OPTIONS="halt_on_error=1 exitcode=66 second_deadlock_stack=1"
 if step thread-build bash -c "cmake -S '$root' -B '$thread' -G Ninja -DCMAKE_CXX_COMPILER=clang++-19 -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON -DPRISM_WERROR=ON \
-      -DPRISM_TESTS_PCH=ON -DCMAKE_CXX_FLAGS_RELWITHDEBINFO='-O2 -g1 -DNDEBUG' -DCMAKE_CXX_FLAGS=-fsanitize=thread &&
+      -DPRISM_TESTS_PCH=ON -DPRISM_TESTS_UNITY=ON -DCMAKE_CXX_FLAGS_RELWITHDEBINFO='-O2 -g1 -DNDEBUG' -DCMAKE_CXX_FLAGS=-fsanitize=thread &&
       cmake --build '$thread' -j $jobs --target prism_tests cornell cornell_caustics"; then
   half='*/photon/*,*/integrator/*'
   "$thread/tests/prism_tests" --source-file="$half" >"$logs/thread-tests-1.log" 2>&1 &

@@ -26,7 +26,7 @@ prism::Film gradient()
 }
 
 /// An empty folder of this test case's own: ctest runs cases in parallel processes.
-fs::path scratch(const std::string& name)
+fs::path scratch_folder(const std::string& name)
 {
     const fs::path dir = fs::temp_directory_path() / ("prism-io-test-" + name + "-" + std::to_string(::getpid()));
     fs::remove_all(dir);
@@ -38,7 +38,7 @@ fs::path scratch(const std::string& name)
 
 TEST_CASE("PFM round-trips every float exactly")
 {
-    const fs::path dir = scratch("pfm");
+    const fs::path dir = scratch_folder("pfm");
     const prism::Film film = gradient();
     prism::write_image(film, dir / "g.pfm");
     const prism::Film back = prism::read_pfm(dir / "g.pfm");
@@ -51,7 +51,7 @@ TEST_CASE("PFM round-trips every float exactly")
 
 TEST_CASE("PNG is sRGB-encoded and complete")
 {
-    const fs::path dir = scratch("png");
+    const fs::path dir = scratch_folder("png");
     prism::Film film(2, 1);
     film.set(0, 0, prism::Rgb<float>{0.0f, 0.5f, 1.0f});
     film.set(1, 0, prism::Rgb<float>{0.0031308f, 0.2f, 5.0f});
@@ -74,7 +74,7 @@ TEST_CASE("PNG is sRGB-encoded and complete")
 
 TEST_CASE("a failed write throws with the path and the reason and leaves no file")
 {
-    const fs::path dir = scratch("failure");
+    const fs::path dir = scratch_folder("failure");
     const prism::Film film = gradient();
     const fs::path missing = dir / "no" / "such" / "folder" / "x.png";
     CHECK_THROWS_WITH_AS(prism::write_png(film, missing), doctest::Contains(missing.c_str()), std::runtime_error);
@@ -97,7 +97,7 @@ TEST_CASE("a write goes through to what is not a regular file and never replaces
     // Issue 10: the temporary file was renamed over any target, so a FIFO, a device node
     // or a symbolic link became a plain file (write_png(film, "/dev/null") as root would
     // have replaced /dev/null).
-    const fs::path dir = scratch("special");
+    const fs::path dir = scratch_folder("special");
     const prism::Film film = gradient();
     // A FIFO stays a FIFO, and a reader receives the whole PNG.
     const fs::path fifo = dir / "pipe.png";
@@ -132,7 +132,7 @@ TEST_CASE("a write goes through to what is not a regular file and never replaces
 TEST_CASE("read_pfm checks its header against the file's size before allocating")
 {
     // Issue 10: 20 bytes made read_pfm allocate 4.8 GB before it reported truncation.
-    const fs::path dir = scratch("pfm-header");
+    const fs::path dir = scratch_folder("pfm-header");
     std::ofstream(dir / "big.pfm", std::ios::binary) << "PF\n20000 20000\n-1.0\n";
     CHECK_THROWS_WITH_AS((void)prism::read_pfm(dir / "big.pfm"), doctest::Contains("truncated"), std::runtime_error);
     CHECK_THROWS_WITH_AS((void)prism::read_pfm(dir / "big.pfm"), doctest::Contains("20000 x 20000"), std::runtime_error);
