@@ -6,12 +6,21 @@
 // the program is compiled (-DPRISM_BENCH_TYPES=S), N at run time.
 //   bench_many_types N [N ...]        prints one CSV line per N on stdout:
 //   types,objects,closest_ns_types,closest_ns_one,shadow_ns_types,shadow_ns_one,hits_types,hits_one
+// Compiled with -DPRISM_BENCH_RENDER=1 it also renders both scenes with the Whitted
+// integrator (a 128 x 128 image, one sample per pixel, one thread), the issue's own
+// measure of a scene's cost, and prints a second line per N:
+//   render,types,objects,ms_types,ms_one,same_bits
 // bench/compile_cost.py compiles it for S = 1 to 1024 and draws the chart.
 #include <prism/core/rng.hpp>
 #include <prism/geometry/sphere.hpp>
 #include <prism/light/point_light.hpp>
 #include <prism/material/diffuse.hpp>
 #include <prism/scene/scene.hpp>
+#if PRISM_BENCH_RENDER
+#include <prism/integrator/whitted.hpp>
+#include <prism/render/render.hpp>
+#include <prism/scene/camera.hpp>
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -114,6 +123,25 @@ void measure(std::size_t n)
     const auto [closest_many, shadow_many] = ns_per_ray(many, primary, shadow, hits_many);
     const auto [closest_one, shadow_one] = ns_per_ray(one, primary, shadow, hits_one);
     std::printf("%zu,%zu,%.2f,%.2f,%.2f,%.2f,%ld,%ld\n", types, n, closest_many, closest_one, shadow_many, shadow_one, hits_many, hits_one);
+#if PRISM_BENCH_RENDER
+    const Camera<T> camera{.position = {T(0), T(0), T(4)}, .look_at = {T(0), T(0), T(0)}, .up = {T(0), T(1), T(0)}, .fov = T(40)};
+    const RenderConfig config{.width = 128, .height = 128, .spp = 1, .threads = 1, .progress = false};
+    const auto render_ms = [&](const auto& scene, Film& film) {
+        double best = 1e300;
+        for (int repeat = 0; repeat < 3; ++repeat) {
+            const auto start = std::chrono::steady_clock::now();
+            film = render(camera, Whitted(scene), config);
+            best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        }
+        return 1e3 * best;
+    };
+    Film film_many(1, 1), film_one(1, 1);
+    const double ms_many = render_ms(many, film_many), ms_one = render_ms(one, film_one);
+    bool same = true;
+    for (int y = 0; y < config.height; ++y)
+        for (int x = 0; x < config.width; ++x) same = same && film_many.at(x, y) == film_one.at(x, y);
+    std::printf("render,%zu,%zu,%.2f,%.2f,%d\n", types, n, ms_many, ms_one, same ? 1 : 0);
+#endif
     std::fflush(stdout);
 }
 

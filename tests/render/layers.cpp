@@ -24,7 +24,7 @@ auto floor_scene()
     return scene;
 }
 
-const Camera<float> camera{.position = {0, 2, 2}, .look_at = {0, 1.2f, -2}, .fov = 60};
+const Camera<float> layers_camera{.position = {0, 2, 2}, .look_at = {0, 1.2f, -2}, .fov = 60};
 
 double channel(const Accumulation& sums, int x, int y, std::size_t c) { return sums.sums(x, y)[c].value() / double(sums.weight(x, y)); }
 
@@ -41,10 +41,10 @@ TEST_CASE("the surface layers: coverage, albedo, normal and distance of the firs
     const auto scene = floor_scene();
     const Whitted integrator(scene);
     const RenderConfig config{.width = width, .height = height, .spp = 1, .threads = 2, .progress = false};
-    const Accumulation layers = render_layers(camera, integrator, config);
+    const Accumulation layers = render_layers(layers_camera, integrator, config);
     CHECK(layers.channels() == layer_channels<Whitted<std::remove_cvref_t<decltype(scene)>>>());
     REQUIRE(layers.channels().size() == 11);
-    const CameraRays<float> rays = camera.rays(width, height);
+    const CameraRays<float> rays = layers_camera.rays(width, height);
     int floor = 0, sky = 0;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
@@ -86,8 +86,8 @@ TEST_CASE("render_layers' image is render_sums' bits, and its crops and sample r
     const auto scene = floor_scene();
     const Whitted integrator(scene);
     RenderConfig config{.width = width, .height = height, .spp = 4, .threads = 2, .seed = 3, .progress = false};
-    const Accumulation layers = render_layers(camera, integrator, config);
-    const Accumulation image = render_sums(camera, integrator, config);
+    const Accumulation layers = render_layers(layers_camera, integrator, config);
+    const Accumulation image = render_sums(layers_camera, integrator, config);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) REQUIRE(std::equal(image.sums(x, y).begin(), image.sums(x, y).end(), layers.sums(x, y).begin()));
     // Anti-aliased edges: coverage between 0 and 1 on the horizon.
@@ -101,13 +101,13 @@ TEST_CASE("render_layers' image is render_sums' bits, and its crops and sample r
     Accumulation parts(width, height, PixelWindow::whole(width, height), layers.channels());
     config.passes = {0, 1};
     config.crop = {0, 0, width, 13};
-    parts += render_layers(camera, integrator, config);
+    parts += render_layers(layers_camera, integrator, config);
     config.crop = {0, 13, width, height};
-    parts += render_layers(camera, integrator, config);
+    parts += render_layers(layers_camera, integrator, config);
     config.crop = {};
     config.passes = {1, 4};
     config.threads = 1;
-    parts += render_layers(camera, integrator, config);
+    parts += render_layers(layers_camera, integrator, config);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) REQUIRE(std::equal(parts.sums(x, y).begin(), parts.sums(x, y).end(), layers.sums(x, y).begin()));
 }
@@ -118,9 +118,9 @@ TEST_CASE("the photon mapper's light parts add up to its image: direct, caustic 
     using S = std::remove_cvref_t<decltype(scene)>;
     const PhotonMapper<S> mapper(scene, {.tracing = {.global_photons = 20000, .caustic_photons = 20000, .seed = 2}, .gather_rays = 0});
     const RenderConfig config{.width = width, .height = height, .spp = 2, .threads = 2, .progress = false};
-    const Accumulation layers = render_layers(camera, mapper, config);
+    const Accumulation layers = render_layers(layers_camera, mapper, config);
     REQUIRE(layers.channels().size() == 20);
-    const Accumulation image = render_sums(camera, mapper, config);
+    const Accumulation image = render_sums(layers_camera, mapper, config);
     double direct = 0, caustic = 0, indirect = 0;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
