@@ -5,7 +5,7 @@
 #include "compare.hpp"
 #include "scenes/cornell.hpp"
 
-#include <prism/io/image.hpp>
+#include <prism/prism.hpp>
 
 int main(int argc, char** argv)
 {
@@ -17,7 +17,7 @@ int main(int argc, char** argv)
         const prism::Whitted integrator(scene, {.max_depth = 10});
         const examples::Rendered rendered = examples::timed_render("cornell", scenes::cornell_camera<float>(), integrator, options);
         examples::save(rendered, options, true);
-        if (!options.povray.empty()) examples::write_comparison(rendered.image(), options.povray, options.out / "cornell_vs_povray.png");
+        if (!options.povray.empty()) examples::write_comparison(rendered.image(), options.povray, examples::output_file(options, "cornell_vs_povray.png"));
         return 0;
     });
 }

@@ -13,6 +13,7 @@
 #include "methods.hpp"
 #include "scenes/cornell.hpp"
 
+#include <prism/prism.hpp>
 #include <prism/io/image.hpp>
 
 #include <chrono>
@@ -69,14 +70,14 @@ int main(int argc, char** argv)
         const auto camera = scenes::cornell_camera<float>();
         const examples::Rendered rendered = examples::render_by_method("cornell_caustics", scene, camera, options);
         examples::save(rendered, options, true);
-        if (!options.povray.empty()) examples::write_comparison(rendered.image(), options.povray, options.out / "cornell_caustics_vs_povray.png");
+        if (!options.povray.empty()) examples::write_comparison(rendered.image(), options.povray, examples::output_file(options, "cornell_caustics_vs_povray.png"));
         if (options.part) return 0; // the photon pictures below are of the whole image, for one machine to draw
         // Where the photons landed: each photon's power, summed per pixel (one photon per
         // pixel of the global map reads as mid-grey).
         const prism::PhotonMaps maps = prism::trace_photons(scene, examples::photon_tracer_config(options));
         const float gain = float(options.photons) / 200000.0f * 40.0f;
-        prism::write_png(photon_picture(maps.global, camera, options.render.width, options.render.height, gain), options.out / "cornell_global_photons.png");
-        prism::write_png(photon_picture(maps.caustic, camera, options.render.width, options.render.height, gain), options.out / "cornell_caustic_photons.png");
+        prism::write_png(photon_picture(maps.global, camera, options.render.width, options.render.height, gain), examples::output_file(options, "cornell_global_photons.png"));
+        prism::write_png(photon_picture(maps.caustic, camera, options.render.width, options.render.height, gain), examples::output_file(options, "cornell_caustic_photons.png"));
         return 0;
     });
 }

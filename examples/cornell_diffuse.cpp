@@ -7,7 +7,7 @@
 #include "methods.hpp"
 #include "scenes/cornell.hpp"
 
-#include <prism/io/image.hpp>
+#include <prism/prism.hpp>
 
 int main(int argc, char** argv)
 {

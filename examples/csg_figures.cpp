@@ -5,7 +5,7 @@
 // both of its faces. One image each, figure_*.png.
 #include "cli.hpp"
 
-#include <prism/io/image.hpp>
+#include <prism/prism.hpp>
 
 #include <string>
 

@@ -6,7 +6,7 @@
 #include "compare.hpp"
 #include "scenes/csg_quadrics.hpp"
 
-#include <prism/io/image.hpp>
+#include <prism/prism.hpp>
 
 int main(int argc, char** argv)
 {
@@ -17,7 +17,7 @@ int main(int argc, char** argv)
         const prism::Whitted integrator(scene, {.max_depth = 5});
         const examples::Rendered rendered = examples::timed_render("csg_quadrics", scenes::csg_quadrics_camera<float>(), integrator, options);
         examples::save(rendered, options);
-        if (!options.povray.empty()) examples::write_comparison(rendered.image(), options.povray, options.out / "csg_quadrics_vs_povray.png");
+        if (!options.povray.empty()) examples::write_comparison(rendered.image(), options.povray, examples::output_file(options, "csg_quadrics_vs_povray.png"));
         return 0;
     });
 }

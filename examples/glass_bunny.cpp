@@ -7,7 +7,7 @@
 #include "cli.hpp"
 #include "methods.hpp"
 
-#include <prism/io/image.hpp>
+#include <prism/prism.hpp>
 #include <prism/io/mesh.hpp>
 
 #ifndef PRISM_ASSET_DIR

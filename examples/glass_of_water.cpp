@@ -8,7 +8,7 @@
 // wall) that a real glass of water does not have.
 #include "cli.hpp"
 
-#include <prism/io/image.hpp>
+#include <prism/prism.hpp>
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include "cli.hpp"
 #include "scenes/sphere_row.hpp"
 
-#include <prism/io/image.hpp>
+#include <prism/prism.hpp>
 
 #include <tuple>
 

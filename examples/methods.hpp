@@ -5,10 +5,19 @@
 
 #include "cli.hpp"
 
+#include <prism/prism.hpp>
+
 #include <chrono>
 #include <cstdio>
 
 namespace examples {
+
+/// The photon tracer's settings from the command line.
+inline prism::PhotonTracerConfig photon_tracer_config(const Options& options)
+{
+    return {.global_photons = options.photons, .caustic_photons = options.caustic_photons, .seed = options.render.seed,
+            .threads = options.render.threads};
+}
 
 /// The photon mapper's settings from the command line (for --method direct, gather and
 /// cache; progressive passes take them too).

@@ -10,7 +10,7 @@
 // same scene in uniform air.
 #include "cli.hpp"
 
-#include <prism/io/image.hpp>
+#include <prism/prism.hpp>
 
 #include <cmath>
 

@@ -16,6 +16,7 @@
 #include "methods.hpp"
 #include "scenes/cornell.hpp"
 
+#include <prism/prism.hpp>
 #include <prism/distributed/mpi.hpp>
 
 #include <chrono>

@@ -4,7 +4,7 @@
 // own Bvh, so a ray costs about log N tests, not N (Whitted: sun, sky, mirrors).
 #include "cli.hpp"
 
-#include <prism/io/image.hpp>
+#include <prism/prism.hpp>
 
 int main(int argc, char** argv)
 {

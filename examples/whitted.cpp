@@ -3,7 +3,7 @@
 #include "cli.hpp"
 #include "scenes/whitted.hpp"
 
-#include <prism/io/image.hpp>
+#include <prism/integrator/whitted.hpp>
 
 int main(int argc, char** argv)
 {

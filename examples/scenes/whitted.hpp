@@ -2,7 +2,16 @@
 // The classic Whitted (1980) picture: a glass and a mirror sphere over a checkerboard.
 #pragma once
 
-#include <prism/prism.hpp>
+#include <prism/geometry/plane.hpp>
+#include <prism/geometry/sphere.hpp>
+#include <prism/light/directional_light.hpp>
+#include <prism/material/conductor.hpp>
+#include <prism/material/dielectric.hpp>
+#include <prism/material/diffuse.hpp>
+#include <prism/material/texture.hpp>
+#include <prism/optics/fresnel.hpp>
+#include <prism/scene/camera.hpp>
+#include <prism/scene/scene.hpp>
 
 namespace scenes {
 
