@@ -254,7 +254,7 @@ public:
                 });
         } else if (bounded_objects_ && cluster_.may_cross(ray, range)) {
             scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) {
-                test_nearest<I>(object_at<I>(k).shape, {std::uint32_t(I), k}, no_copy, ray, range, nearest);
+                test_nearest<I, true>(object_at<I>(k).shape, {std::uint32_t(I), k}, no_copy, ray, range, nearest);
                 return false;
             });
         }
@@ -381,13 +381,16 @@ private:
         });
     }
 
-    template <std::size_t I, class S>
+    /// InKeyOrder: the objects come in key order (a scan), so none can win a tie with one
+    /// found before it, and the range need not reach past the nearest t.
+    template <std::size_t I, bool InKeyOrder = false, class S>
     void test_nearest(const S& shape, const detail::ObjectKey& key, std::uint32_t copy, const Ray<T>& ray, Interval<T>& r, Nearest& nearest) const noexcept
     {
         SurfaceHint<T> hint;
-        const T t = first_crossing(shape, ray, nearest.found ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
+        const T t = first_crossing(shape, ray, !InKeyOrder && nearest.found ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
         if (!(t < infinity<T>)) return;
-        if (!(t < r.max) && !key.before({nearest.slot, nearest.index})) return;
+        if constexpr (!InKeyOrder)
+            if (!(t < r.max) && !key.before({nearest.slot, nearest.index})) return;
         // Ending the range just past the crossing keeps every crossing before it, and so
         // the same first one, while the surface pass refines nothing beyond it: no shape's
         // answer up to a t depends on where its range ends (shapes cull by
