@@ -12,6 +12,7 @@
 #             also runs with Bvh<float>'s 8-wide nodes): every case, the examples and the
 #             command-line tests (without OpenEXR, tinyobjloader and MPI, which Debian
 #             builds for libstdc++)
+#   headers   each public header compiled alone (tools/check_headers.sh)
 #   fuzz      each libFuzzer target (tests/fuzz/) for 60 s, under ASan + UBSan
 # and the meson build's own test (a consumer project takes prism as a subproject).
 # Every CMake build treats a warning as an error (-Wall -Wextra -Wpedantic and more, -Werror).
@@ -55,9 +56,9 @@ fail() { failed=$((failed + 1)); summary+=("$1 FAILED"); echo "test: $1: failed"
 
 start=$(date +%s)
 
-# Release: no benches (they are not tests); the tests with prism.hpp precompiled, eight
-# files to a translation unit (the libc++ build below compiles each test file alone, on
-# its own includes).
+# Release: no benches (they are not tests); the tests, in every build, with prism.hpp
+# precompiled and eight files to a translation unit (tools/check_headers.sh then checks
+# that each header compiles on its own includes).
 release="$root/build/release"
 if step release-build bash -c "cmake -S '$root' -B '$release' -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_BENCH=OFF -DPRISM_WERROR=ON -DPRISM_TESTS_PCH=ON -DPRISM_TESTS_UNITY=ON &&
                                 cmake --build '$release' -j $jobs"; then
@@ -116,12 +117,20 @@ libcxx="$root/build/libcxx"
 avx2=""
 grep -qw avx2 /proc/cpuinfo && avx2=-mavx2
 if step libcxx-build bash -c "cmake -S '$root' -B '$libcxx' -G Ninja -DCMAKE_CXX_COMPILER=clang++-19 -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_BENCH=OFF -DPRISM_WERROR=ON \
-      -DCMAKE_CXX_FLAGS='-stdlib=libc++ $avx2' && cmake --build '$libcxx' -j $jobs"; then
+      -DPRISM_TESTS_PCH=ON -DPRISM_TESTS_UNITY=ON -DCMAKE_CXX_FLAGS='-stdlib=libc++ $avx2' && cmake --build '$libcxx' -j $jobs"; then
   ctest --test-dir "$libcxx" -j "$jobs" >"$logs/libcxx-ctest.log" 2>&1 ||
     ctest --test-dir "$libcxx" --rerun-failed --output-on-failure 2>&1 | tail -n 80
   count libc++ "$logs/libcxx-ctest.log"
 else
   fail libc++
+fi
+
+# Each public header on its own includes (the builds above precompile prism.hpp).
+if step headers "$root/tools/check_headers.sh"; then
+  tail -n 1 "$logs/headers.log"
+  passed=$((passed + 1)) summary+=("headers ok")
+else
+  fail headers
 fi
 
 # libFuzzer (clang) under ASan + UBSan: each target (tests/fuzz/) for 60 s from its
