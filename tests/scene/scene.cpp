@@ -235,6 +235,27 @@ TEST_CASE("slots are visited nearest first, and find what a scan of the slots in
     CHECK(wins[2] > 1000);
 }
 
+TEST_CASE("a scanned scene gives a tie to the lower slot even when an unbounded object in a later slot is asked first")
+{
+    // No tree (two objects): the plane (unbounded, slot 1) is asked before the scan of
+    // the bounded ones, and meets the ray at t = 4, where the ball (slot 0) does too. A
+    // scan of the slots in turn finds the ball first, and the plane's equal t does not
+    // replace it.
+    const Scene scene{Lights{PointLight<float>{.position = {0, 30, 0}}},
+                      ObjectArray<Sphere<float>, Diffuse<float>>{{{Sphere<float>({0, 0, 0}, 1), Diffuse<float>{}}}},
+                      ObjectArray<Plane<float>, Diffuse<float>>{{{Plane<float>({0, 0, 1}, -1), Diffuse<float>{}}}}};
+    REQUIRE(!scene.has_tree());
+    for (const float x : {0.0f, 0.25f, -0.5f}) {
+        CAPTURE(x);
+        const Ray<float> ray{{x, 0, -5}, {0, 0, 1}};
+        const auto scan = scanned_hit(scene, ray, {0, infinity<float>});
+        const auto hit = scene.closest_hit(ray, {0, infinity<float>});
+        REQUIRE(hit.has_value());
+        CHECK(hit->crossing.t == scan.t);
+        CHECK(hit->slot == scan.slot);
+    }
+}
+
 namespace {
 
 /// A sphere that is a type of its own: one scene slot per I.

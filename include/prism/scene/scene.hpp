@@ -227,7 +227,6 @@ public:
     /// cull for whole scenes, and the photon tracer's extent.
     [[nodiscard]] constexpr const Aabb<T>& bounds() const noexcept { return cluster_; }
 
-
     constexpr void validate() const
     {
         detail::require_non_negative("Scene background", background);
@@ -253,8 +252,11 @@ public:
                     return false;
                 });
         } else if (bounded_objects_ && cluster_.may_cross(ray, range)) {
+            // The scan meets objects in key order: with nothing unbounded found before it,
+            // no object can win a tie with one found before it.
+            const bool in_key_order = !nearest.found;
             scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) {
-                test_nearest<I, true>(object_at<I>(k).shape, {std::uint32_t(I), k}, no_copy, ray, range, nearest);
+                test_nearest<I>(object_at<I>(k).shape, {std::uint32_t(I), k}, no_copy, ray, range, nearest, in_key_order);
                 return false;
             });
         }
@@ -381,16 +383,18 @@ private:
         });
     }
 
-    /// InKeyOrder: the objects come in key order (a scan), so none can win a tie with one
-    /// found before it, and the range need not reach past the nearest t.
-    template <std::size_t I, bool InKeyOrder = false, class S>
-    void test_nearest(const S& shape, const detail::ObjectKey& key, std::uint32_t copy, const Ray<T>& ray, Interval<T>& r, Nearest& nearest) const noexcept
+    /// in_key_order: every object found so far came before this one in key order (a scan
+    /// with nothing found before it), so this one cannot win a tie at the nearest t, and
+    /// its range need not reach past it.
+    template <std::size_t I, class S>
+    void test_nearest(const S& shape, const detail::ObjectKey& key, std::uint32_t copy, const Ray<T>& ray, Interval<T>& r, Nearest& nearest,
+                      bool in_key_order = false) const noexcept
     {
         SurfaceHint<T> hint;
-        const T t = first_crossing(shape, ray, !InKeyOrder && nearest.found ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
+        const bool may_tie = nearest.found && !in_key_order;
+        const T t = first_crossing(shape, ray, may_tie ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
         if (!(t < infinity<T>)) return;
-        if constexpr (!InKeyOrder)
-            if (!(t < r.max) && !key.before({nearest.slot, nearest.index})) return;
+        if (may_tie && !(t < r.max) && !key.before({nearest.slot, nearest.index})) return;
         // Ending the range just past the crossing keeps every crossing before it, and so
         // the same first one, while the surface pass refines nothing beyond it: no shape's
         // answer up to a t depends on where its range ends (shapes cull by
