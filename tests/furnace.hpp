@@ -10,7 +10,11 @@
 
 #include <prism/prism.hpp>
 
+#include "readme_material.hpp" // README.md's recipe for a material
+
+#include <algorithm>
 #include <array>
+#include <cstdint>
 
 namespace test {
 
@@ -62,6 +66,74 @@ double furnace_mean(bool four, Radiance&& radiance, int count, bool gi = true, s
         sum += double(radiance({eye, d}, rng).x) / furnace_radiance(p, four, gi);
     }
     return sum / count;
+}
+
+// The two-lobe furnace: the same sphere, its wall a Lambertian base of albedo rho_d
+// under a clear coat that mirrors a constant rho_s (README's recipe for a material,
+// outside the library), lit by one light of intensity pi at the centre. Inside a sphere a mirror
+// sends every chord to another chord, so the radiance leaving the wall is the same
+// everywhere (but along the exact normals, a set of no measure): L = L_d / (1 - rho_s),
+// with L_d = rho_d E / pi. The wall's irradiance E is the light's E0 = pi, plus the
+// light mirrored back through the centre to the opposite wall any number of times
+// (E0 rho_s^k: caustics, L S+ D), plus pi L from the wall around:
+//     E = E0 / (1 - rho_s) + rho_d E / (1 - rho_s)  =>  E = E0 / (1 - rho_s - rho_d),
+//     L = rho_d / ((1 - rho_s) (1 - rho_s - rho_d))                 (E0 = pi).
+// Each estimator reads its own part of it:
+//   Whitted (direct light and mirrors)    rho_d / (1 - rho_s)
+//   path tracer (E (S|D)* D L)            L_D = rho_d / (1 - rho_s - rho_d)
+//   light tracer (L S (S|D)* D E)         (1 - rho_s) (L - L_D): of the paths that leave
+//                                         the light by the coat, those the camera sees
+//                                         directly (none can find E S+ D ... S L: both
+//                                         ends of it are delta, integrator/path_tracer.hpp)
+//   photon mapping (every path)           L
+
+/// The material is README's recipe for a material (ClearCoat, compiled from README.md by
+/// tools/snippets.py), at its defaults.
+inline constexpr float coat_diffuse = ClearCoat{}.base.x, coat_mirror = ClearCoat{}.coat;
+
+inline auto coated_furnace_scene()
+{
+    using namespace prism;
+    return Scene{Lights{PointLight<float>{.position = {0, 0, 0}, .intensity = Rgb<float>(pi<float>)}}, Object{Sphere<float>({0, 0, 0}, 1), ClearCoat{}}};
+}
+
+/// The closed forms above, for each estimator's share of the paths.
+struct CoatedFurnace {
+    static constexpr double d = coat_diffuse, s = coat_mirror;
+    static constexpr double whitted = d / (1 - s);
+    static constexpr double path_tracer = d / (1 - s - d);
+    static constexpr double all = d / ((1 - s) * (1 - s - d));
+    static constexpr double light_tracer = (1 - s) * (all - path_tracer);
+};
+
+/// The mean and the largest of `count` samples radiance(ray, rng).x along rays from
+/// near the centre in uniform directions.
+struct SampleStats {
+    double mean = 0;
+    double largest = 0;
+};
+
+template <class Radiance>
+SampleStats coated_furnace_samples(Radiance&& radiance, int count, std::uint64_t seed = 1)
+{
+    prism::Pcg32 rng(seed, 7u);
+    const prism::Vec3<float> eye{0.01f, 0.02f, 0.03f};
+    SampleStats stats;
+    for (int i = 0; i < count; ++i) {
+        const double value = double(radiance(prism::Ray<float>{eye, prism::uniform_sphere<float>(rng)}, rng).x);
+        stats.mean += value / count;
+        stats.largest = std::max(stats.largest, value);
+    }
+    return stats;
+}
+
+/// The mean over an image's pixels (the camera inside the coated furnace).
+inline double image_mean(const prism::Film& image)
+{
+    double sum = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) sum += image.at(x, y).x;
+    return sum / (double(image.width()) * image.height());
 }
 
 } // namespace test

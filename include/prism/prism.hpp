@@ -30,7 +30,6 @@
 #include <prism/geometry/sphere.hpp>
 #include <prism/geometry/transformed.hpp>
 #include <prism/geometry/triangle_mesh.hpp>
-#include <prism/integrator/direct.hpp>
 #include <prism/integrator/irradiance_cache.hpp>
 #include <prism/integrator/light_tracer.hpp>
 #include <prism/integrator/path_tracer.hpp>
@@ -58,11 +57,12 @@
 #include <prism/optics/fresnel.hpp>
 #include <prism/optics/refract.hpp>
 #include <prism/optics/thin_film.hpp>
+#include <prism/photon/estimator.hpp>
 #include <prism/photon/photon.hpp>
 #include <prism/photon/photon_map.hpp>
 #include <prism/photon/photon_tracer.hpp>
-#include <prism/photon/random_walk.hpp>
 #include <prism/render/film.hpp>
+#include <prism/render/layers.hpp>
 #include <prism/render/render.hpp>
 #include <prism/scene/camera.hpp>
 #include <prism/scene/hit.hpp>
@@ -72,3 +72,8 @@
 #include <prism/spectrum/cie.hpp>
 #include <prism/spectrum/cie_tables.hpp>
 #include <prism/spectrum/metals.hpp>
+#include <prism/transport/direct.hpp>
+#include <prism/transport/first_surface.hpp>
+#include <prism/transport/media.hpp>
+#include <prism/transport/random_walk.hpp>
+#include <prism/transport/travel.hpp>

@@ -4446,6 +4446,250 @@ private:
 
 } // namespace prism
 
+// ---- prism/integrator/irradiance_cache.hpp ----
+// The final gather's hemisphere, stratified, with irradiance gradients (Ward and
+// Heckbert 1992), and an irradiance cache that interpolates between gathers.
+//
+// gather_hemisphere: M x N cells of equal projected solid angle (sin^2 theta uniform in
+// j, phi in k), one jittered ray each: E = pi / (M N) sum L_jk. From the same rays,
+// the rotational gradient (how E turns with the normal) and the translational one (how
+// it moves along the surface), in the notation of Krivanek and Gautron's "Practical
+// Global Illumination with Irradiance Caching" (2009), section 2.2:
+//   rotational     pi / (M N) sum_k v_k sum_j (-tan theta_j) L_jk   (tan theta_j and v_k
+//                  the cell's means, v a quarter turn back from u)
+//   translational  sum_k u_k (2 pi / N) sum_{j>=1} cos^2 theta_j- sin theta_j- (L_jk - L_j-1,k) / min(R_jk, R_j-1,k)
+//                + sum_k v_k- sum_j cos theta_j (cos theta_j- - cos theta_j+) (L_jk - L_j,k-1) / (sin theta_j min(R_jk, R_j,k-1))
+// with theta_j- and theta_j+ the cell's edges, u_k and v_k the base-plane directions at
+// the cell's azimuth and a quarter turn from it, v_k- at the edge between k - 1 and k.
+//
+// IrradianceCache: records of (p, n, E, gradients, R) where R, the distance over which E
+// may change, is the nearest hit of the gather (rays within 10 degrees of the tangent
+// plane left out), limited by E / |grad E|, clamped between a few pixels' footprint
+// and a fraction of the scene, and by each neighbour's R plus its distance (Krivanek's
+// neighbour clamping). A record is used at p with normal n where
+//     eps = kappa max(|p - p_i| / R_i, sqrt(1 - n . n_i) / sqrt(1 - cos 10 deg)) < 1,
+// weighted by 1 - eps (Tabellion and Lamourlette 2004: weights that fall to 0 at the
+// edge of a record's reach, so no seams), and not where the record lies in front of p.
+
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace prism {
+
+/// What a gather over the hemisphere found.
+template <Scalar T>
+struct HemisphereGather {
+    Rgb<T> irradiance{T(0)};
+    std::array<Rgb<T>, 3> rotational{};    ///< d E / d (rotation about axis a): per axis a, per channel
+    std::array<Rgb<T>, 3> translational{}; ///< d E / d x_a: per axis a, per channel
+    T nearest = infinity<T>;               ///< the nearest hit of rays at least 10 degrees above the tangent plane
+};
+
+/// A gather over the hemisphere about unit n in M x N stratified cells:
+/// sample(direction) returns {radiance arriving, distance to where it came from
+/// (infinity when nothing)}. With Gradients, each cell's radiance and distance are
+/// kept for them (the one allocation, per gather: a cache record's); without, nothing
+/// is allocated.
+template <bool Gradients, Scalar T, class Sample>
+[[nodiscard]] HemisphereGather<T> gather_hemisphere(const Vec3<T>& n, int m, int cells_n, Pcg32& rng, Sample&& sample)
+{
+    const auto [t, b] = orthonormal_frame(n);
+    const std::size_t count = std::size_t(m) * std::size_t(cells_n);
+    std::vector<Rgb<T>> radiance;
+    std::vector<T> distance;
+    if constexpr (Gradients) {
+        radiance.resize(count);
+        distance.resize(count);
+    }
+    const auto in_plane = [&](T phi) { return t * std::cos(phi) + b * std::sin(phi); };
+    HemisphereGather<T> g;
+    for (int j = 0; j < m; ++j)
+        for (int k = 0; k < cells_n; ++k) {
+            const T sin2 = (T(j) + rng.uniform<T>()) / T(m), phi = T(2) * pi<T> * (T(k) + rng.uniform<T>()) / T(cells_n);
+            const T cos_theta = std::sqrt(std::max(T(0), T(1) - sin2));
+            const auto [l, d] = sample(normalize(in_plane(phi) * std::sqrt(sin2) + n * cos_theta));
+            if constexpr (Gradients) {
+                radiance[std::size_t(j * cells_n + k)] = l;
+                distance[std::size_t(j * cells_n + k)] = d;
+            }
+            g.irradiance += l;
+            if (cos_theta > T(0.173648)) g.nearest = std::min(g.nearest, d); // 10 degrees
+        }
+    const T cell = pi<T> / T(count);
+    g.irradiance *= cell;
+    if constexpr (!Gradients) return g;
+    // The rotational term weighs each cell by its mean of tan theta and of v over the
+    // cell (not their values at its centre, which read 8 % low at M = 32): with s =
+    // sin^2 theta uniform in [j/M, (j+1)/M], the mean of tan theta is M (F(b) - F(a)),
+    // F(s) = asin(sqrt s) - sqrt(s (1 - s)); v's mean over the cell's azimuths is v at
+    // its centre times sin(pi / N) / (pi / N).
+    const auto f = [](T x) { return std::asin(std::sqrt(x)) - std::sqrt(x * (T(1) - x)); };
+    const T sinc = std::sin(pi<T> / T(cells_n)) / (pi<T> / T(cells_n));
+    for (int j = 0; j < m; ++j) {
+        const T sin_minus = std::sqrt(T(j) / T(m)), cos_minus = std::sqrt(T(1) - T(j) / T(m));
+        const T cos_plus = std::sqrt(std::max(T(0), T(1) - T(j + 1) / T(m)));
+        const T sin_mid = std::sqrt((T(j) + T(0.5)) / T(m)), cos_mid = std::sqrt(T(1) - (T(j) + T(0.5)) / T(m));
+        for (int k = 0; k < cells_n; ++k) {
+            const T phi = T(2) * pi<T> * (T(k) + T(0.5)) / T(cells_n);
+            const Vec3<T> u_k = in_plane(phi), v_k = in_plane(phi - pi<T> / T(2));
+            const Vec3<T> v_edge = in_plane(T(2) * pi<T> * T(k) / T(cells_n) + pi<T> / T(2));
+            const std::size_t at = std::size_t(j * cells_n + k);
+            const T mean_tan = T(m) * (f(T(j + 1) / T(m)) - f(T(j) / T(m)));
+            const Rgb<T> rot = radiance[at] * (-mean_tan * sinc * cell);
+            for (int a = 0; a < 3; ++a) g.rotational[std::size_t(a)] += rot * v_k[a];
+            if (j > 0) {
+                const std::size_t below = std::size_t((j - 1) * cells_n + k);
+                const T r = std::min(distance[at], distance[below]);
+                if (r < infinity<T>) {
+                    const Rgb<T> dl = (radiance[at] - radiance[below]) * (T(2) * pi<T> / T(cells_n) * cos_minus * cos_minus * sin_minus / r);
+                    for (int a = 0; a < 3; ++a) g.translational[std::size_t(a)] += dl * u_k[a];
+                }
+            }
+            const std::size_t before = std::size_t(j * cells_n + (k + cells_n - 1) % cells_n);
+            const T r = std::min(distance[at], distance[before]);
+            if (r < infinity<T>) {
+                const Rgb<T> dl = (radiance[at] - radiance[before]) * (cos_mid * (cos_minus - cos_plus) / (sin_mid * r));
+                for (int a = 0; a < 3; ++a) g.translational[std::size_t(a)] += dl * v_edge[a];
+            }
+        }
+    }
+    return g;
+}
+
+/// One cached gather.
+template <Scalar T>
+struct IrradianceRecord {
+    Vec3<T> p{}, n{};
+    HemisphereGather<T> gather{};
+    T radius = T(0); ///< R: how far E may be carried
+};
+
+/// The positions of a cache's records, as a PointSet for the KdTree.
+template <Scalar T>
+struct RecordPositions {
+    using scalar_type = T;
+    static constexpr std::size_t dimension = 3;
+    std::span<const IrradianceRecord<T>> records;
+    [[nodiscard]] std::size_t size() const noexcept { return records.size(); }
+    [[nodiscard]] T coordinate(std::size_t i, std::size_t axis) const noexcept { return records[i].p[int(axis)]; }
+};
+
+template <Scalar T>
+class IrradianceCache {
+public:
+    /// sqrt(1 - cos 10 degrees): a normal turned by 10 degrees counts as far as a point R away.
+    static constexpr T normal_scale = T(0.1321); // sqrt(1 - 0.98481)
+
+    IrradianceCache() = default;
+    explicit IrradianceCache(T accuracy, bool gradients = true) : accuracy_(accuracy), gradients_(gradients) {}
+
+    [[nodiscard]] std::size_t size() const noexcept { return records_.size(); }
+    [[nodiscard]] const std::vector<IrradianceRecord<T>>& records() const noexcept { return records_; }
+
+    /// Add records (in the order given: the cache is then the same for any thread count
+    /// that computed them), clamping each one's radius by its neighbours' and theirs by
+    /// its own, then index them.
+    void add(std::vector<IrradianceRecord<T>> fresh)
+    {
+        for (IrradianceRecord<T>& record : fresh) {
+            for (IrradianceRecord<T>& other : nearby(record.p, record.radius)) {
+                const T d = length(record.p - other.p);
+                record.radius = std::min(record.radius, other.radius + d);
+                other.radius = std::min(other.radius, record.radius + d);
+            }
+            records_.push_back(record);
+            largest_ = std::max(largest_, record.radius);
+            pending_.push_back(records_.size() - 1);
+            if (pending_.size() > 64) reindex();
+        }
+        reindex();
+    }
+
+    /// The interpolated irradiance at p with unit normal n, or nothing where no record reaches.
+    [[nodiscard]] std::optional<Rgb<T>> irradiance(const Vec3<T>& p, const Vec3<T>& n) const noexcept
+    {
+        Rgb<T> sum{T(0)};
+        T weights = T(0);
+        visit_within(p, largest_ / accuracy_, [&](const IrradianceRecord<T>& r) {
+            const T w = weight(r, p, n);
+            if (!(w > T(0))) return;
+            Rgb<T> e = r.gather.irradiance;
+            if (gradients_) {
+                const Vec3<T> turn = cross(r.n, n), moved = p - r.p;
+                for (int a = 0; a < 3; ++a) e += r.gather.rotational[std::size_t(a)] * turn[a] + r.gather.translational[std::size_t(a)] * moved[a];
+                e = max(e, Rgb<T>(T(0)));
+            }
+            sum += e * w;
+            weights += w;
+        });
+        if (!(weights > T(0))) return std::nullopt;
+        return sum / weights;
+    }
+
+    /// Whether some record reaches p with normal n.
+    [[nodiscard]] bool covers(const Vec3<T>& p, const Vec3<T>& n) const noexcept
+    {
+        bool found = false;
+        visit_within(p, largest_ / accuracy_, [&](const IrradianceRecord<T>& r) { found = found || weight(r, p, n) > T(0); });
+        return found;
+    }
+
+private:
+    /// Tabellion and Lamourlette's weight, 0 outside the record's reach or where the
+    /// record lies in front of p (Ward: its hemisphere sees something p's does not).
+    [[nodiscard]] T weight(const IrradianceRecord<T>& r, const Vec3<T>& p, const Vec3<T>& n) const noexcept
+    {
+        const Vec3<T> moved = p - r.p;
+        const T turned = std::sqrt(std::max(T(0), T(1) - dot(n, r.n)));
+        const T eps = accuracy_ * std::max(length(moved) / r.radius, turned / normal_scale);
+        if (!(eps < T(1))) return T(0);
+        if (dot(moved, (n + r.n) * T(0.5)) < -T(0.05) * r.radius) return T(0);
+        return T(1) - eps;
+    }
+
+    /// visit(record) for each record within `reach` of p: through the tree for the
+    /// indexed ones, one by one for the few added since.
+    template <class Visit>
+    void visit_within(const Vec3<T>& p, T reach, Visit&& visit) const
+    {
+        if (tree_) tree_->within({p.x, p.y, p.z}, reach, [&](std::uint32_t i, T) { visit(records_[i]); });
+        for (const std::size_t i : pending_)
+            if (length_squared(records_[i].p - p) <= reach * reach) visit(records_[i]);
+    }
+
+    /// The records within radius + largest of p (those whose clamping may involve p's).
+    std::vector<std::reference_wrapper<IrradianceRecord<T>>> nearby(const Vec3<T>& p, T radius)
+    {
+        std::vector<std::reference_wrapper<IrradianceRecord<T>>> out;
+        const T reach = radius + largest_;
+        if (tree_) tree_->within({p.x, p.y, p.z}, reach, [&](std::uint32_t i, T) { out.push_back(records_[i]); });
+        for (const std::size_t i : pending_)
+            if (length_squared(records_[i].p - p) <= reach * reach) out.push_back(records_[i]);
+        return out;
+    }
+
+    void reindex()
+    {
+        tree_.emplace(RecordPositions<T>{records_});
+        pending_.clear();
+    }
+
+    T accuracy_ = T(1);
+    bool gradients_ = true;
+    std::vector<IrradianceRecord<T>> records_;
+    std::optional<KdTree<RecordPositions<T>, 8>> tree_;
+    std::vector<std::size_t> pending_;   ///< records added since the tree was built
+    T largest_ = T(0);                   ///< the largest radius
+};
+
+} // namespace prism
+
 // ---- prism/light/light.hpp ----
 // What a light tells a shading point and the photon tracer, and the Light concept.
 
@@ -5039,6 +5283,7 @@ private:
 // is one header that satisfies the capability concepts of material/traits.hpp.
 
 
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 
@@ -5349,34 +5594,44 @@ struct PhotonBounce {
     bool diffuse;
 };
 
+/// The lobes a scattering may take: none (the path ends), the delta ones only (a caustic
+/// photon or a final-gather ray goes on past a diffuse lobe whose light is counted
+/// already), or all of them.
+enum class Lobes { none, delta, all };
+
 /// Scatter a photon of `power` arriving along the unit direction d at `hit`, by Russian
 /// roulette per channel (errata 7): a diffuse lobe reflects its photon reflectance into
 /// a cosine-distributed direction; an interface reflects with probability F and
 /// refracts otherwise, weighted by its tints; a conductor reflects by its reflectance.
-/// A material with a diffuse and a delta lobe first chooses one by their largest
-/// channels, dividing the power by that choice's probability. A photon of one
-/// wavelength (nanometres; 0: white) refracts at its index; `outside_index` is the index
-/// on the material's other side (1: air). Returns nothing when the photon is absorbed;
-/// scales `power` otherwise. With a shading normal (see above), the diffuse direction is
-/// cosine-distributed about it and a diffuse bounce sent into the solid is absorbed; a
-/// photon (Transport::importance) also takes Veach's correction |d.ns| |w.ng| /
-/// (|d.ng| |w.ns|) and is absorbed where it arrives behind the shading normal. A camera
-/// path (Transport::radiance) scatters by the same rules without them.
+/// A material with a diffuse and a delta lobe makes one decision over its lobes (the
+/// diffuse one, the reflection, the refraction): each is taken with the probability of
+/// its reflectance (its largest channel) and none with what is left, so a survivor's
+/// power is multiplied by its lobe's reflectance over that probability, at most 1 per
+/// channel, and stays bounded however many bounces it takes (where the lobes' largest
+/// channels sum above 1 they are scaled down together). `lobes`: which of them it may
+/// take. A photon of one wavelength (nanometres; 0: white) refracts at its index;
+/// `outside_index` is the index on the material's other side (1: air). Returns nothing
+/// when the photon is absorbed; scales `power` otherwise. With a shading normal (see
+/// above), the diffuse direction is cosine-distributed about it and a diffuse bounce
+/// sent into the solid is absorbed; a photon (Transport::importance) also takes Veach's
+/// correction |d.ns| |w.ng| / (|d.ng| |w.ns|) and is absorbed where it arrives behind
+/// the shading normal. A camera path (Transport::radiance) scatters by the same rules
+/// without them.
 template <Transport Mode = Transport::importance, Material M>
 [[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
                                                                                    const Crossing<typename M::scalar_type>& hit,
                                                                                    const Vec3<typename M::scalar_type>& d,
                                                                                    Rgb<typename M::scalar_type>& power, Pcg32& rng,
                                                                                    typename M::scalar_type wavelength_nm = 0,
-                                                                                   typename M::scalar_type outside_index = 1) noexcept
+                                                                                   typename M::scalar_type outside_index = 1,
+                                                                                   Lobes lobes = Lobes::all) noexcept
 {
     using T = typename M::scalar_type;
     using Bounce = std::optional<PhotonBounce<T>>;
-    // Each lobe's scattering, given what the material does here (computed once, also for
-    // choosing between two lobes).
+    if (lobes == Lobes::none) return std::nullopt;
     const Vec3<T> n = hit.facing_normal();
-    const auto scatter_diffusely = [&](const Rgb<T>& reflectance) -> Bounce {
-        if (!russian_roulette(power, reflectance, rng)) return std::nullopt;
+    // A diffuse bounce's direction, once the lobe is taken.
+    const auto diffuse_direction = [&]() -> Bounce {
         if (hit.shades_flat()) return PhotonBounce<T>{cosine_hemisphere(n, rng), true};
         const Vec3<T> ns = hit.facing_shading();
         const Vec3<T> w = cosine_hemisphere(ns, rng);
@@ -5391,7 +5646,35 @@ template <Transport Mode = Transport::importance, Material M>
         }
         return PhotonBounce<T>{w, true};
     };
-    const auto scatter_specularly = [&](const SpecularSplit<T>& split, const Vec3<T>& about) -> Bounce {
+    if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
+        // One decision over the lobes, each by its reflectance.
+        const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
+        const SpecularSplit<T> split = delta_split(material, d, n_delta, hit.entering, hit.point, wavelength_nm, outside_index);
+        const Rgb<T> diffuse = lobes == Lobes::all ? diffuse_response(material, hit).photon_reflectance() : Rgb<T>(T(0));
+        const Rgb<T> transmitted = split.refracted ? split.kt : Rgb<T>(T(0));
+        const T w_diffuse = max_component(diffuse), w_reflected = max_component(split.kr), w_transmitted = max_component(transmitted);
+        const T scale = std::max(T(1), w_diffuse + w_reflected + w_transmitted);
+        if (!(scale < infinity<T>)) return std::nullopt;
+        const T u = rng.uniform<T>() * scale;
+        if (u < w_diffuse) {
+            power *= diffuse * (scale / w_diffuse);
+            return diffuse_direction();
+        }
+        if (u < w_diffuse + w_reflected) {
+            power *= split.kr * (scale / w_reflected);
+            return PhotonBounce<T>{reflect(d, n_delta), false};
+        }
+        if (u < w_diffuse + w_reflected + w_transmitted) {
+            power *= transmitted * (scale / w_transmitted);
+            return PhotonBounce<T>{*split.refracted, false};
+        }
+        return std::nullopt;
+    } else if constexpr (M::has_diffuse) {
+        if (lobes != Lobes::all || !russian_roulette(power, diffuse_response(material, hit).photon_reflectance(), rng)) return std::nullopt;
+        return diffuse_direction();
+    } else {
+        const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
+        const SpecularSplit<T> split = delta_split(material, d, n_delta, hit.entering, hit.point, wavelength_nm, outside_index);
         if constexpr (M::transmits) {
             // Reflect with probability F (the mean of F per channel), refract otherwise;
             // each then by its tint. Per-channel F weighs the survivor by F / mean.
@@ -5401,1269 +5684,13 @@ template <Transport Mode = Transport::importance, Material M>
                 power *= reflect_it ? split.fresnel / split.reflected_share
                                     : (Rgb<T>(T(1)) - split.fresnel) / (T(1) - split.reflected_share);
             }
-            return PhotonBounce<T>{reflect_it ? reflect(d, about) : *split.refracted, false};
+            return PhotonBounce<T>{reflect_it ? reflect(d, n_delta) : *split.refracted, false};
         } else {
             if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
-            return PhotonBounce<T>{reflect(d, about), false};
-        }
-    };
-    if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
-        // Both lobes: choose one by its share of the reflected light (largest channels).
-        const Rgb<T> reflectance = diffuse_response(material, hit).photon_reflectance();
-        const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
-        const SpecularSplit<T> split = delta_split(material, d, n_delta, hit.entering, hit.point, wavelength_nm, outside_index);
-        const T w_diffuse = max_component(reflectance), w_delta = max_component(split.kr + split.kt);
-        if (!(w_diffuse + w_delta > T(0))) return std::nullopt;
-        const T p_diffuse = w_diffuse / (w_diffuse + w_delta);
-        if (rng.uniform<T>() < p_diffuse) {
-            power /= p_diffuse;
-            return scatter_diffusely(reflectance);
-        }
-        power /= T(1) - p_diffuse;
-        return scatter_specularly(split, n_delta);
-    } else if constexpr (M::has_diffuse) {
-        return scatter_diffusely(diffuse_response(material, hit).photon_reflectance());
-    } else {
-        const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
-        return scatter_specularly(delta_split(material, d, n_delta, hit.entering, hit.point, wavelength_nm, outside_index), n_delta);
-    }
-}
-
-} // namespace prism
-
-// ---- prism/core/dispatch.hpp ----
-// dispatch<N>(i, f): call f with the compile-time index I = i, through a table of one
-// function per index, built once from the index pack (no recursion over the pack).
-
-
-#include <array>
-#include <cstddef>
-#include <type_traits>
-#include <utility>
-
-namespace prism {
-
-/// A compile-time index, as dispatch passes it.
-template <std::size_t I>
-using Index = std::integral_constant<std::size_t, I>;
-
-namespace detail {
-
-template <std::size_t I, class R, class F>
-R call_at(F& f)
-{
-    return f(Index<I>{});
-}
-
-/// One entry an index: a pack expansion, so a table of 1024 entries costs 1024 small
-/// instantiations side by side, not a chain 1024 deep.
-template <class R, class F, std::size_t... I>
-inline constexpr std::array<R (*)(F&), sizeof...(I)> dispatch_table{&call_at<I, R, F>...};
-
-template <class R, class F, std::size_t... I>
-constexpr auto table_of(std::index_sequence<I...>) noexcept -> const std::array<R (*)(F&), sizeof...(I)>&
-{
-    return dispatch_table<R, F, I...>;
-}
-
-/// A chain of comparisons, for a few indices: each call inlined where it is made.
-template <std::size_t I, std::size_t N, class F>
-decltype(auto) dispatch_chain(std::size_t i, F& f)
-{
-    if constexpr (I + 1 < N) {
-        if (i != I) return dispatch_chain<I + 1, N>(i, f);
-    }
-    return f(Index<I>{});
-}
-
-} // namespace detail
-
-/// Up to this many indices, dispatch compares (each call inlined: the Cornell box's three
-/// slots render 22 % slower through a table); beyond, it goes through a table.
-inline constexpr std::size_t dispatch_chain_up_to = 8;
-
-/// f(Index<i>{}) for a run-time i < N: a scene slot or a light, chosen at run time, with
-/// its static type. Every f(Index<I>{}) must return the same type. A few indices are
-/// compared in turn; more go through a table (one indirect call), so the cost of a
-/// dispatch and the code the compiler instantiates for it grow with N no faster than
-/// the table, and no chain of instantiations grows with it.
-template <std::size_t N, class F>
-decltype(auto) dispatch(std::size_t i, F&& f)
-{
-    static_assert(N > 0, "dispatch over no index");
-    PRISM_ASSERT(i < N);
-    using R = decltype(f(Index<0>{}));
-    if constexpr (N <= dispatch_chain_up_to) {
-        return detail::dispatch_chain<0, N>(i, f);
-    } else {
-        return detail::table_of<R, std::remove_reference_t<F>>(std::make_index_sequence<N>{})[i](f);
-    }
-}
-
-} // namespace prism
-
-// ---- prism/core/pack.hpp ----
-// Pack<Ts...>: a tuple without recursion, for packs of hundreds of types (a scene's slots).
-
-#include <cstddef>
-#include <initializer_list>
-#include <type_traits>
-#include <utility>
-
-namespace prism {
-
-namespace detail {
-
-template <std::size_t I, class T>
-struct PackItem {
-    T value;
-};
-
-/// Every item a base of its own, side by side: std::tuple (libstdc++, libc++) nests one
-/// base in the next, so a tuple of N types is N instantiations deep, and 1024 slots pass
-/// the compilers' depth limit (900 for g++).
-template <class Sequence, class... Ts>
-struct PackItems;
-
-template <std::size_t... I, class... Ts>
-struct PackItems<std::index_sequence<I...>, Ts...> : PackItem<I, Ts>... {
-    constexpr explicit PackItems(Ts... values) : PackItem<I, Ts>{std::move(values)}... {}
-};
-
-// Item I by the one base PackItem<I, T>, T deduced: no walk over the pack.
-template <std::size_t I, class T>
-constexpr const T& item(const PackItem<I, T>& p) noexcept
-{
-    return p.value;
-}
-
-template <std::size_t I, class T>
-constexpr T& item(PackItem<I, T>& p) noexcept
-{
-    return p.value;
-}
-
-template <std::size_t I, class T>
-T item_type(const PackItem<I, T>&); // only in decltype
-
-/// Whether every / some value is true: for a pack expanded into a braced list, which has
-/// no depth (clang nests a fold expression's terms, and refuses more than 256).
-constexpr bool all_of(std::initializer_list<bool> values) noexcept
-{
-    for (const bool v : values)
-        if (!v) return false;
-    return true;
-}
-
-constexpr bool any_of(std::initializer_list<bool> values) noexcept
-{
-    for (const bool v : values)
-        if (v) return true;
-    return false;
-}
-
-} // namespace detail
-
-/// A fixed list of values of the types Ts, item I read by get<I>(pack).
-template <class... Ts>
-struct Pack : detail::PackItems<std::index_sequence_for<Ts...>, Ts...> {
-    static constexpr std::size_t size = sizeof...(Ts);
-
-    constexpr explicit Pack(Ts... values) : detail::PackItems<std::index_sequence_for<Ts...>, Ts...>(std::move(values)...) {}
-
-    /// f(item 0, item 1, ...), as std::apply.
-    template <class F>
-    constexpr decltype(auto) apply(F&& f) const
-    {
-        return [&]<std::size_t... I>(std::index_sequence<I...>) -> decltype(auto) {
-            return f(detail::item<I>(*this)...);
-        }(std::index_sequence_for<Ts...>{});
-    }
-};
-
-/// Item I of a pack.
-template <std::size_t I, class... Ts>
-[[nodiscard]] constexpr const auto& get(const Pack<Ts...>& pack) noexcept
-{
-    static_assert(I < sizeof...(Ts), "get<I>: I is past the pack's end");
-    return detail::item<I>(pack);
-}
-
-template <std::size_t I, class... Ts>
-[[nodiscard]] constexpr auto& get(Pack<Ts...>& pack) noexcept
-{
-    static_assert(I < sizeof...(Ts), "get<I>: I is past the pack's end");
-    return detail::item<I>(pack);
-}
-
-/// The type of item I of a pack.
-template <std::size_t I, class P>
-using pack_element_t = decltype(detail::item_type<I>(std::declval<const P&>()));
-
-} // namespace prism
-
-// ---- prism/scene/hit.hpp ----
-// Hit: the closest crossing of a ray with a scene, and which object it belongs to.
-
-
-#include <cstdint>
-
-namespace prism {
-
-template <Scalar T>
-struct Hit {
-    Crossing<T> crossing{};  ///< where, with the outward normal and whether the ray enters
-    std::uint32_t slot = 0;  ///< the scene slot (compile-time position) of the object
-    std::uint32_t index = 0; ///< the object within its slot
-};
-
-} // namespace prism
-
-// ---- prism/medium/nesting.hpp ----
-// Nested dielectrics: the media a ray is inside of, so that water in a glass, an air
-// bubble in glass or a glass in water refract with the right n1 / n2 at every interface.
-//
-// A ray carries the transmissive objects it has entered (a MediumStack). At an
-// interface, the medium on the far side is the one the ray is inside of apart from this
-// object: the stack's top (or the scene's air, index 1, when it is empty). Overlapping
-// volumes resolve by priority (Schmidt and Budge, "Simple Nested Dielectrics in Ray
-// Traced Images", JGT 2002): a material may set `priority` (0 by default), and a
-// surface of an object whose priority is below that of the medium the ray is in is a
-// false interface: the ray passes it unchanged, only noting that it entered or left. So
-// water modelled to overlap a glass's inner wall slightly (no coincident surfaces) is
-// cut by the glass, which has the higher priority. Among equal priorities the most
-// recently entered object is the medium, which is right for properly nested objects.
-
-
-#include <array>
-#include <cstdint>
-
-namespace prism {
-
-/// A material's nesting priority: its `priority` member, or 0.
-template <Material M>
-[[nodiscard]] constexpr int nesting_priority(const M& material) noexcept
-{
-    if constexpr (requires { { material.priority } -> std::convertible_to<int>; })
-        return int(material.priority);
-    else
-        return 0;
-}
-
-/// An object a ray is inside of: where it is in the scene, and its priority.
-struct Inside {
-    std::uint32_t slot = 0;
-    std::uint32_t index = 0;
-    int priority = 0;
-
-    [[nodiscard]] constexpr bool same_object(const Inside& other) const noexcept { return slot == other.slot && index == other.index; }
-};
-
-/// The transmissive objects a ray is inside of, at most `capacity` deep (a ray entering
-/// more than that many at once forgets the oldest, and is then outside it).
-class MediumStack {
-public:
-    static constexpr std::size_t capacity = 8;
-
-    [[nodiscard]] constexpr bool empty() const noexcept { return count_ == 0; }
-    [[nodiscard]] constexpr std::size_t size() const noexcept { return count_; }
-
-    /// The medium the ray travels in: the highest priority, the latest entered among equals.
-    [[nodiscard]] constexpr const Inside* top() const noexcept
-    {
-        const Inside* best = nullptr;
-        for (std::size_t i = 0; i < count_; ++i)
-            if (best == nullptr || items_[i].priority >= best->priority) best = &items_[i];
-        return best;
-    }
-
-    [[nodiscard]] constexpr bool contains(const Inside& object) const noexcept
-    {
-        for (std::size_t i = 0; i < count_; ++i)
-            if (items_[i].same_object(object)) return true;
-        return false;
-    }
-
-    /// This stack with `object` entered.
-    [[nodiscard]] constexpr MediumStack entered(const Inside& object) const noexcept
-    {
-        MediumStack next = *this;
-        if (next.count_ == capacity) next.remove_at(0);
-        next.items_[next.count_++] = object;
-        return next;
-    }
-
-    /// This stack with `object` left (unchanged if the ray was not inside it).
-    [[nodiscard]] constexpr MediumStack left(const Inside& object) const noexcept
-    {
-        MediumStack next = *this;
-        for (std::size_t i = next.count_; i-- > 0;)
-            if (next.items_[i].same_object(object)) {
-                next.remove_at(i);
-                break;
-            }
-        return next;
-    }
-
-private:
-    constexpr void remove_at(std::size_t i) noexcept
-    {
-        for (std::size_t j = i + 1; j < count_; ++j) items_[j - 1] = items_[j];
-        --count_;
-    }
-
-    std::array<Inside, capacity> items_{};
-    std::size_t count_ = 0;
-};
-
-/// What a ray meeting a transmissive object's surface does there, given the media it is
-/// in: whether the interface is real (false: the ray passes it unchanged), and the
-/// media beyond it, for a ray that crosses (refracted, or passing a false interface); a
-/// reflected ray stays in the current ones. The medium on the object's other side is
-/// the current one when entering and the one beyond when leaving (`outside_of`).
-struct Interface {
-    bool real = true;
-    MediumStack beyond{};
-};
-
-/// The interface a ray in `media` meets at a surface of `object` (entering or leaving).
-[[nodiscard]] constexpr Interface nested_interface(const MediumStack& media, const Inside& object, bool entering) noexcept
-{
-    Interface result;
-    if (entering) {
-        result.beyond = media.entered(object);
-        const Inside* current = media.top();
-        result.real = current == nullptr || current->priority <= object.priority;
-        return result;
-    }
-    result.beyond = media.left(object);
-    const Inside* current = media.top();
-    // Leaving an object the ray is inside of but that is not its medium (a higher-priority
-    // object overlaps it here): false. Leaving one it never entered (the camera started
-    // inside it): real, as without nesting.
-    result.real = current == nullptr || current->same_object(object) || !media.contains(object);
-    return result;
-}
-
-/// The object whose medium lies on the far side of a real interface from the object's
-/// inside (none: the scene's air): the medium the ray is in when it enters, the one it
-/// will be in when it leaves.
-[[nodiscard]] constexpr const Inside* outside_of(const MediumStack& media, const Interface& face, bool entering) noexcept
-{
-    return entering ? media.top() : face.beyond.top();
-}
-
-/// The refractive index of the medium of `object` for light of one wavelength (0: white):
-/// 1 for none (the scene's air) or for an object that does not transmit.
-template <class SceneT>
-[[nodiscard]] typename SceneT::scalar_type index_of(const SceneT& scene, const Inside* object, typename SceneT::scalar_type wavelength_nm) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    if (object == nullptr) return T(1);
-    return scene.visit_material(Hit<T>{{}, object->slot, object->index}, [&]<class M>(const M& material) -> T {
-        if constexpr (M::transmits)
-            return index_at(material, wavelength_nm);
-        else
-            return T(1);
-    });
-}
-
-/// Light that reached `hit` along `ray` travelled in the medium the ray is in: multiply
-/// by what it lets through over that length. A ray known to be in no object leaving a
-/// dielectric travelled inside it (the camera started there, or no nesting is tracked).
-template <class SceneT, Material M>
-void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& material, const Crossing<typename M::scalar_type>& hit,
-                       const Ray<typename M::scalar_type>& ray, Rgb<typename M::scalar_type>& light) noexcept
-{
-    using T = typename M::scalar_type;
-    if (const Inside* in = media.top()) {
-        scene.visit_material(Hit<T>{{}, in->slot, in->index}, [&]<class N>(const N& medium_material) {
-            if constexpr (N::transmits) light *= medium_material.medium().transmittance(hit.t * length(ray.direction));
-        });
-    } else {
-        attenuate_inside(material, hit, ray, light);
-    }
-}
-
-} // namespace prism
-
-// ---- prism/scene/object.hpp ----
-// Object: a shape with a material; ObjectArray: many of one type in one scene slot.
-
-
-#include <span>
-#include <type_traits>
-#include <utility>
-#include <vector>
-
-namespace prism {
-
-/// One scene object. Construction validates the material (the shape validated itself).
-template <Shape S, Material M>
-    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
-struct Object {
-    using scalar_type = typename S::scalar_type;
-    using shape_type = S;
-    using material_type = M;
-
-    S shape;
-    M material;
-    bool bounded = false; ///< the shape has finite bounds (set at construction, for culling)
-
-    constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m))
-    {
-        material.validate();
-        bounded = shape.bounds().bounded();
-    }
-};
-
-/// Many objects of one shape and material type, chosen at run time, in one scene slot.
-template <Shape S, Material M>
-    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
-struct ObjectArray {
-    using scalar_type = typename S::scalar_type;
-    using shape_type = S;
-    using material_type = M;
-
-    std::vector<Object<S, M>> items;
-};
-
-namespace detail {
-
-template <class X>
-struct is_slot : std::false_type {};
-template <class S, class M>
-struct is_slot<Object<S, M>> : std::true_type {};
-template <class S, class M>
-struct is_slot<ObjectArray<S, M>> : std::true_type {};
-
-} // namespace detail
-
-/// A scene slot: an Object or an ObjectArray.
-template <class X>
-concept Slot = detail::is_slot<X>::value;
-
-/// The objects of a slot, as a contiguous range.
-template <class S, class M>
-[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const Object<S, M>& object) noexcept
-{
-    return {&object, 1};
-}
-
-template <class S, class M>
-[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const ObjectArray<S, M>& array) noexcept
-{
-    return {array.items};
-}
-
-} // namespace prism
-
-// ---- prism/scene/scene.hpp ----
-// Scene: lights and object slots fixed at compile time; closest-hit and shadow queries.
-
-
-#include <array>
-#include <cstddef>
-#include <cstdint>
-#include <optional>
-#include <span>
-#include <tuple>
-#include <type_traits>
-#include <utility>
-#include <vector>
-
-namespace prism {
-
-/// The lights of a scene, each of its own type, at least one.
-template <Light... Ls>
-struct Lights {
-    static_assert(sizeof...(Ls) > 0, "Lights{} holds no light: a scene needs at least one (a PointLight, a DirectionalLight, ...)");
-
-    std::tuple<Ls...> items;
-
-    constexpr explicit Lights(Ls... lights) : items(std::move(lights)...)
-    {
-        std::apply([](const auto&... light) { (light.validate(), ...); }, items);
-    }
-};
-
-namespace detail {
-
-template <class X>
-struct is_light_list : std::false_type {};
-template <class... Ls>
-struct is_light_list<Lights<Ls...>> : std::true_type {};
-
-/// Whether every light of the list has scalar type T (true for what is no list: that
-/// has its own error).
-template <class List, class T>
-inline constexpr bool lights_of_scalar = true;
-template <class... Ls, class T>
-inline constexpr bool lights_of_scalar<Lights<Ls...>, T> = (std::same_as<typename Ls::scalar_type, T> && ...);
-
-} // namespace detail
-
-/// A scene's first argument: Lights{...}.
-template <class X>
-concept LightList = detail::is_light_list<X>::value;
-
-/// How shadow rays treat dielectrics.
-enum class ShadowsThroughGlass : bool {
-    attenuated, ///< light passes, attenuated by the medium and the transmission tint (Whitted)
-    blocked,    ///< glass casts a full shadow: its light arrives by a caustic map instead
-};
-
-namespace detail {
-
-/// Where a shadow ray meets a transmissive object's boundary (or starts inside it), kept
-/// to resolve overlapping objects by priority; a fixed number, no allocation.
-template <Scalar T>
-struct ShadowBoundaries {
-    struct Boundary {
-        T t;
-        std::uint32_t slot;
-        std::uint32_t index;
-        bool entering;
-        bool at_start; ///< the ray starts inside the object (no boundary crossed)
-    };
-    static constexpr std::size_t capacity = 32;
-    std::array<Boundary, capacity> items;
-    std::size_t count = 0;
-    bool overflow = false;
-
-    constexpr void add(const Boundary& b) noexcept
-    {
-        if (count == capacity) overflow = true;
-        else items[count++] = b;
-    }
-
-    /// Sort by t; whether two objects' insides overlap anywhere along the ray.
-    constexpr bool sort_and_find_overlap() noexcept
-    {
-        if (overflow) return false;
-        for (std::size_t i = 1; i < count; ++i)
-            for (std::size_t j = i; j > 0 && items[j].t < items[j - 1].t; --j) std::swap(items[j], items[j - 1]);
-        int depth = 0;
-        for (std::size_t i = 0; i < count; ++i) {
-            depth += items[i].entering || items[i].at_start ? 1 : -1;
-            if (depth >= 2) return true;
-        }
-        return false;
-    }
-};
-
-/// An object's place in a scene: its slot, and its index within the slot. Keys order the
-/// objects as a scan of the slots in turn meets them, which is how ties are settled.
-struct ObjectKey {
-    std::uint32_t slot, index; // (no initializers: ShadowKeys' array is left uninitialized)
-    [[nodiscard]] constexpr bool before(const ObjectKey& other) const noexcept
-    {
-        return slot < other.slot || (slot == other.slot && index < other.index);
-    }
-};
-
-/// The transmissive objects whose boxes a shadow ray meets, gathered by the scene's tree
-/// in its own order, to be attenuated in the order of a scan (a product is the same bits
-/// only in the same order); a fixed number, no allocation.
-struct ShadowKeys {
-    static constexpr std::size_t capacity = 64;
-    std::array<ObjectKey, capacity> items; // (left uninitialized: clearing it would cost more than most shadow rays)
-    std::size_t count = 0;
-    bool overflow = false;
-
-    constexpr void add(const ObjectKey& key) noexcept
-    {
-        if (count == capacity) overflow = true;
-        else items[count++] = key;
-    }
-
-    /// The keys gathered, sorted (insertion sort: a shadow ray meets few).
-    [[nodiscard]] constexpr std::span<const ObjectKey> sorted() noexcept
-    {
-        for (std::size_t i = 1; i < count; ++i)
-            for (std::size_t j = i; j > 0 && items[j].before(items[j - 1]); --j) std::swap(items[j], items[j - 1]);
-        return {items.data(), count};
-    }
-};
-
-template <class X>
-struct is_object_array : std::false_type {};
-template <class S, class M>
-struct is_object_array<ObjectArray<S, M>> : std::true_type {};
-
-/// Nothing: what a scene of several slots keeps in place of its one slot's shapes.
-struct NoShapes {};
-
-} // namespace detail
-
-/// A scene: its lights, object slots (one type each), background and ambient radiance.
-/// Which shapes and materials exist is part of the type, so integrators compile only
-/// the code those materials need.
-///
-/// Finding what a ray meets: the scene keeps one Bvh over the bounded objects of all its
-/// slots (when there are at least tree_from; fewer are scanned: the Cornell box's seven
-/// render 20 % slower through a tree), and tests its unbounded ones on every ray. A leaf
-/// reaches its object's code through a table with an entry per slot (core/dispatch.hpp),
-/// so a ray costs log N in the objects whatever their types, and the code compiled grows
-/// linearly with the slots: the traversal is compiled once, only the leaf test once per
-/// slot. (A scene of one slot calls its leaf test directly, and keeps its shapes in leaf
-/// order beside the tree.) Whatever order the objects are met in, the answer is the same
-/// object at the same t: a tie at one t goes to the lower slot, then the lower index, as
-/// in a scan of the slots in turn.
-// (Slots is checked by a static_assert, not constrained as `Slot... Slots`: clang checks a
-// constrained pack as a fold expression, and refuses one of more than 256 terms.)
-template <class LightsOfScene, class... Slots>
-class Scene {
-    static_assert(LightList<LightsOfScene>, "a Scene's first argument must be its lights as Lights{...}, e.g. Scene{Lights{PointLight<float>{...}}, objects...}");
-    static_assert(sizeof...(Slots) > 0, "a scene needs at least one object");
-    static_assert(detail::all_of({Slot<Slots>...}), "a Scene's objects must each be an Object{shape, material} or an ObjectArray");
-
-    template <std::size_t I>
-    using SlotAt = pack_element_t<I, Pack<Slots...>>;
-
-public:
-    using scalar_type = typename SlotAt<0>::scalar_type;
-    using T = scalar_type;
-    static_assert(detail::all_of({std::same_as<typename Slots::scalar_type, T>...}), "all objects must share one scalar type");
-    static_assert(detail::lights_of_scalar<LightsOfScene, T>, "every light must have the objects' scalar type (a PointLight<float> in a scene of double objects?)");
-
-    /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
-    static constexpr bool has_transmissive = detail::any_of({transmits<typename Slots::material_type>...});
-    /// Some material has a mirror lobe.
-    static constexpr bool has_specular = detail::any_of({reflects<typename Slots::material_type>...}) || has_transmissive;
-    static constexpr std::size_t slot_count = sizeof...(Slots);
-    /// The fewest bounded objects the scene builds its tree over.
-    static constexpr std::size_t tree_from = 8;
-    /// Whether the scene may need a tree: some slot is an array, or there are tree_from
-    /// slots. (A scene of a few single objects compiles no tree code: Whitted's four
-    /// compile 1.5 s faster.)
-    static constexpr bool may_have_tree = slot_count >= tree_from || detail::any_of({detail::is_object_array<Slots>::value...});
-
-    // Scene Public Members
-
-    LightsOfScene lights;
-    Pack<Slots...> slots; ///< get<I>(slots) is slot I
-    Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
-    Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
-
-    constexpr Scene(LightsOfScene light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
-    {
-        // Every object's key, bounded or not, in key order; the transmissive ones again,
-        // and one box around every bounded object (a ray that misses it skips them all).
-        std::vector<Aabb<T>> boxes;
-        for_each_slot([&]<std::size_t I>(Index<I>) {
-            const auto list = objects_of(get<I>(slots));
-            for (std::uint32_t k = 0; k < list.size(); ++k) {
-                const detail::ObjectKey key{std::uint32_t(I), k};
-                if (list[k].bounded) {
-                    boxes.push_back(list[k].shape.bounds());
-                    cluster_ = cluster_.merged(boxes.back());
-                    keys_.push_back(key);
-                } else {
-                    unbounded_.push_back(key);
-                }
-                if constexpr (transmits<typename SlotAt<I>::material_type>) glass_.push_back(key);
-            }
-        });
-        bounded_objects_ = !cluster_.empty();
-        if constexpr (may_have_tree) {
-            if (keys_.size() >= tree_from) build_tree(boxes);
+            return PhotonBounce<T>{reflect(d, n_delta), false};
         }
     }
-
-    /// The box around every bounded object (empty when there is none): the render's
-    /// cull for whole scenes, and the photon tracer's extent.
-    [[nodiscard]] constexpr const Aabb<T>& bounds() const noexcept { return cluster_; }
-
-    constexpr void validate() const
-    {
-        detail::require_non_negative("Scene background", background);
-        detail::require_non_negative("Scene ambient", ambient);
-    }
-
-    /// Whether the scene keeps a tree over its bounded objects (at least tree_from).
-    [[nodiscard]] constexpr bool has_tree() const noexcept { return has_tree_; }
-
-    // Scene Queries
-
-    /// The closest crossing with t inside `range`. Every object is asked for its
-    /// crossings without their surfaces; only the nearest one is then asked again, over
-    /// the same range, for its surface.
-    [[nodiscard]] std::optional<Hit<T>> closest_hit(const Ray<T>& ray, Interval<T> range) const noexcept
-    {
-        Nearest nearest{};
-        for (const detail::ObjectKey& key : unbounded_) nearest_of(key, no_copy, ray, range, nearest);
-        if (has_tree_) {
-            if constexpr (may_have_tree)
-                tree_.traverse_in_leaf_order(ray, range, [&](std::uint32_t p, Interval<T>& r) {
-                    nearest_of(keys_[p], p, ray, r, nearest);
-                    return false;
-                });
-        } else if (bounded_objects_ && cluster_.may_cross(ray, range)) {
-            // The scan meets objects in key order: with nothing unbounded found before it,
-            // no object can win a tie with one found before it.
-            const bool in_key_order = !nearest.found;
-            scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) {
-                test_nearest<I>(object_at<I>(k).shape, {std::uint32_t(I), k}, no_copy, ray, range, nearest, in_key_order);
-                return false;
-            });
-        }
-        if (!nearest.found) return std::nullopt;
-        return dispatch<slot_count>(nearest.slot, [&]<std::size_t I>(Index<I>) { return surface_in_slot<I>(ray, nearest); });
-    }
-
-    /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
-    /// object is in the way, otherwise what every dielectric crossed lets through
-    /// (attenuate_shadow_ray: its medium over the length inside, its tint per boundary;
-    /// refraction ignored, the lecture notes' shadow rays through transparent objects).
-    /// With ShadowsThroughGlass::blocked dielectrics block the ray like any other
-    /// object: a photon mapper brings the light through them by its caustic map instead
-    /// (as POV-Ray does for photon targets).
-    template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated>
-    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
-    {
-        Rgb<T> tr{T(1)};
-        detail::ShadowBoundaries<T> boundaries;
-        if (!open_along<Glass>(ray, t_max, tr, boundaries)) return Rgb<T>{T(0)};
-        // Where transmissive objects overlap, the higher priority's medium fills the
-        // overlap (medium/nesting.hpp): walk the boundaries in order instead.
-        if constexpr (has_transmissive && Glass == ShadowsThroughGlass::attenuated) {
-            if (boundaries.sort_and_find_overlap()) return transmittance_by_priority(ray, t_max, boundaries);
-        }
-        return tr;
-    }
-
-    /// Call f(material) with the material of the hit object, with its static type.
-    template <class F>
-    decltype(auto) visit_material(const Hit<T>& hit, F&& f) const
-    {
-        return dispatch<slot_count>(hit.slot, [&]<std::size_t I>(Index<I>) -> decltype(auto) {
-            PRISM_ASSERT(hit.index < objects_of(get<I>(slots)).size());
-            return f(objects_of(get<I>(slots))[hit.index].material);
-        });
-    }
-
-    /// Call f(light) for every light.
-    template <class F>
-    void for_each_light(F&& f) const
-    {
-        std::apply([&](const auto&... light) { (f(light), ...); }, lights.items);
-    }
-
-    static constexpr std::size_t light_count = std::tuple_size_v<decltype(LightsOfScene::items)>;
-
-    /// Call f(light) with light number i (in the order of Lights{...}), with its static type.
-    template <class F>
-    decltype(auto) visit_light(std::size_t i, F&& f) const
-    {
-        return dispatch<light_count>(i, [&]<std::size_t I>(Index<I>) -> decltype(auto) { return f(std::get<I>(lights.items)); });
-    }
-
-private:
-    Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
-    bool bounded_objects_ = false;
-    bool has_tree_ = false;
-    Bvh<T> tree_; ///< over the bounded objects (when there are at least tree_from)
-    /// The object behind each of the tree's primitives, in its leaf order; without a tree
-    /// the bounded objects in key order. Built with the scene: the slots are not to be
-    /// changed after it.
-    std::vector<detail::ObjectKey> keys_;
-    std::vector<detail::ObjectKey> unbounded_; ///< in key order
-    std::vector<detail::ObjectKey> glass_;     ///< the transmissive objects, in key order
-    /// A scene of one slot: its bounded shapes in the tree's leaf order.
-    [[no_unique_address]] std::conditional_t<slot_count == 1, std::vector<typename SlotAt<0>::shape_type>, detail::NoShapes> shapes_;
-
-    // Scene Private Methods
-
-    /// The tree over the bounded objects' boxes (in key order), and the keys in its leaf order.
-    void build_tree(const std::vector<Aabb<T>>& boxes)
-    {
-        tree_ = Bvh<T>(boxes);
-        const std::vector<detail::ObjectKey> in_key_order = std::move(keys_);
-        keys_.clear();
-        for (const std::uint32_t p : tree_.primitives()) {
-            keys_.push_back(in_key_order[p]);
-            // One slot: its shapes side by side as a traversal meets them (a copy: the
-            // objects' materials stay out of the cache's way), and the surface pass
-            // takes the nearest from here too.
-            if constexpr (slot_count == 1) shapes_.push_back(objects_of(get<0>(slots))[in_key_order[p].index].shape);
-        }
-        has_tree_ = true;
-    }
-
-    /// The nearest object so far: where its first crossing is, and the range over
-    /// which it was found.
-    struct Nearest {
-        bool found = false;
-        std::uint32_t slot = 0, index = 0;
-        Interval<T> range{};
-        SurfaceHint<T> hint{}; ///< the shape's own (a mesh's triangle), for surface_crossing
-        /// Where shapes_ keeps a copy of the shape (else none): the surface pass reads
-        /// that copy, which the test has just brought into the cache.
-        std::uint32_t copy = no_copy;
-    };
-    static constexpr std::uint32_t no_copy = ~std::uint32_t(0);
-
-    /// f(Index<I>{}) for every slot I, in order (a braced list, not a fold: clang nests a
-    /// fold's terms, and refuses more than 256).
-    template <class F>
-    static constexpr void for_each_slot(F&& f)
-    {
-        [&]<std::size_t... I>(std::index_sequence<I...>) { [[maybe_unused]] const int in_order[] = {(f(Index<I>{}), 0)...}; }(std::index_sequence_for<Slots...>{});
-    }
-
-    template <std::size_t I>
-    [[nodiscard]] const auto& object_at(std::uint32_t k) const noexcept
-    {
-        return objects_of(get<I>(slots))[k];
-    }
-
-    /// The object behind the key (at position `copy` of shapes_, if it is there) asked for
-    /// the nearest, through the slot table. In whatever order the objects come, once one
-    /// is found each is asked up to just past its t, and one at exactly that t wins only
-    /// if its key comes first (as it would have in a scan of the slots in turn).
-    void nearest_of(const detail::ObjectKey& key, std::uint32_t copy, const Ray<T>& ray, Interval<T>& r, Nearest& nearest) const noexcept
-    {
-        dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) {
-            if constexpr (slot_count == 1)
-                if (copy != no_copy) return test_nearest<I>(shapes_[copy], key, copy, ray, r, nearest);
-            test_nearest<I>(object_at<I>(key.index).shape, key, no_copy, ray, r, nearest);
-        });
-    }
-
-    /// in_key_order: every object found so far came before this one in key order (a scan
-    /// with nothing found before it), so this one cannot win a tie at the nearest t, and
-    /// its range need not reach past it.
-    template <std::size_t I, class S>
-    void test_nearest(const S& shape, const detail::ObjectKey& key, std::uint32_t copy, const Ray<T>& ray, Interval<T>& r, Nearest& nearest,
-                      bool in_key_order = false) const noexcept
-    {
-        SurfaceHint<T> hint;
-        const bool may_tie = nearest.found && !in_key_order;
-        const T t = first_crossing(shape, ray, may_tie ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
-        if (!(t < infinity<T>)) return;
-        if (may_tie && !(t < r.max) && !key.before({nearest.slot, nearest.index})) return;
-        // Ending the range just past the crossing keeps every crossing before it, and so
-        // the same first one, while the surface pass refines nothing beyond it: no shape's
-        // answer up to a t depends on where its range ends (shapes cull by
-        // Aabb::reached_after, which ignores the end).
-        nearest = {true, key.slot, key.index, {r.min, next_float_up(t)}, hint, copy};
-        r.max = t;
-    }
-
-    /// visit(Index<I>{}, k) for every bounded object of a scene without a tree, in key
-    /// order, until one returns true (whether one did): for a few slots, the slots in
-    /// turn, each call inlined; for more, through the slot table.
-    template <class Visit>
-    bool scan_bounded(Visit&& visit) const noexcept
-    {
-        if constexpr (slot_count <= dispatch_chain_up_to) {
-            return [&]<std::size_t... I>(std::index_sequence<I...>) {
-                return ([&] {
-                    const auto list = objects_of(get<I>(slots));
-                    for (std::uint32_t k = 0; k < list.size(); ++k)
-                        if (list[k].bounded && visit(Index<I>{}, k)) return true;
-                    return false;
-                }() || ...);
-            }(std::index_sequence_for<Slots...>{});
-        } else {
-            for (const detail::ObjectKey& key : keys_)
-                if (dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) { return visit(Index<I>{}, key.index); })) return true;
-            return false;
-        }
-    }
-
-    /// The nearest object's first crossing with its surface: the same computation as
-    /// before over a range that holds the same crossings up to it, so the same t.
-    template <std::size_t I>
-    std::optional<Hit<T>> surface_in_slot(const Ray<T>& ray, const Nearest& nearest) const noexcept
-    {
-        const auto& shape = [&]() -> const auto& {
-            if constexpr (slot_count == 1)
-                if (nearest.copy != no_copy) return shapes_[nearest.copy]; // the same shape, bit for bit
-            return object_at<I>(nearest.index).shape;
-        }();
-        const auto crossing = surface_crossing(shape, ray, nearest.range, nearest.hint);
-        PRISM_ASSERT(crossing.has_value());
-        if (!crossing) return std::nullopt;
-        return Hit<T>{*crossing, nearest.slot, nearest.index};
-    }
-
-    /// Whether the slot's material lets a shadow ray through (attenuated) rather than
-    /// blocking it.
-    template <std::size_t I, ShadowsThroughGlass Glass>
-    static constexpr bool attenuates = transmits<typename SlotAt<I>::material_type> && Glass == ShadowsThroughGlass::attenuated;
-
-    /// transmittance's first pass: whether the ray is open. Opaque objects end it at their
-    /// first crossing, in whatever order they are met; the transmissive ones met are
-    /// gathered, then attenuate it in key order (a product is the same bits only in the
-    /// same order), where they cross it, marked in `boundaries`.
-    template <ShadowsThroughGlass Glass>
-    bool open_along(const Ray<T>& ray, T t_max, Rgb<T>& tr, detail::ShadowBoundaries<T>& boundaries) const noexcept
-    {
-        const Interval<T> range{T(0), t_max};
-        detail::ShadowKeys met;
-        const auto blocks_in = [&]<std::size_t I>(Index<I>, std::uint32_t k, std::uint32_t copy) {
-            if constexpr (attenuates<I, Glass>) {
-                met.add({std::uint32_t(I), k});
-                return false;
-            } else {
-                if constexpr (slot_count == 1)
-                    if (copy != no_copy) return any_crossing(shapes_[copy], ray, range);
-                return any_crossing(object_at<I>(k).shape, ray, range);
-            }
-        };
-        const auto blocks = [&](const detail::ObjectKey& key, std::uint32_t copy) {
-            return dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) { return blocks_in(Index<I>{}, key.index, copy); });
-        };
-        for (const detail::ObjectKey& key : unbounded_)
-            if (blocks(key, no_copy)) return false;
-        if (has_tree_) {
-            if constexpr (may_have_tree) {
-                Interval<T> r = range;
-                if (tree_.any_in_leaf_order(ray, r, [&](std::uint32_t p, Interval<T>&) { return blocks(keys_[p], p); })) return false;
-            }
-        } else if (bounded_objects_ && (cluster_.contains(ray.origin) || !cluster_.clip(ray, range).empty())) {
-            // (Unwidened: a shadow ray needs no spurious crossing a far-off shape might
-            // report; culling it can only let light through where rounding alone would
-            // block it.)
-            if (scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) { return blocks_in(Index<I>{}, k, no_copy); })) return false;
-        }
-        if constexpr (has_transmissive && Glass == ShadowsThroughGlass::attenuated) {
-            // More met than the list holds: every transmissive object, in key order (one
-            // the ray misses changes nothing).
-            const std::span<const detail::ObjectKey> in_order = met.overflow ? std::span<const detail::ObjectKey>(glass_) : met.sorted();
-            for (const detail::ObjectKey& key : in_order) {
-                dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) {
-                    if constexpr (attenuates<I, Glass>) {
-                        const auto& object = object_at<I>(key.index);
-                        const auto crossings = object.shape.template crossings<false>(ray, range);
-                        attenuate_shadow_ray(object.material, crossings, ray, t_max, tr);
-                        if (crossings.inside_at_start) boundaries.add({T(0), key.slot, key.index, true, true});
-                        for (const Crossing<T>& c : crossings) boundaries.add({c.t, key.slot, key.index, c.entering, false});
-                    }
-                });
-                if (max_component(tr) <= T(0)) return false;
-            }
-        }
-        return true;
-    }
-
-    /// A shadow ray through overlapping transmissive objects: each stretch attenuated by
-    /// the medium of the object it is in (the highest priority, medium/nesting.hpp), a
-    /// transmission tint at each real interface, none at a false one.
-    [[nodiscard]] Rgb<T> transmittance_by_priority(const Ray<T>& ray, T t_max, const detail::ShadowBoundaries<T>& boundaries) const noexcept
-    {
-        Rgb<T> tr{T(1)};
-        const T speed = length(ray.direction);
-        MediumStack media;
-        T previous = T(0);
-        const auto attenuate_to = [&](T t) {
-            if (const Inside* in = media.top()) {
-                visit_material(Hit<T>{{}, in->slot, in->index}, [&]<class N>(const N& material) {
-                    if constexpr (transmits<N>) tr *= material.medium().transmittance((t - previous) * speed);
-                });
-            }
-            previous = t;
-        };
-        for (std::size_t i = 0; i < boundaries.count; ++i) {
-            const auto& b = boundaries.items[i];
-            attenuate_to(b.t);
-            visit_material(Hit<T>{{}, b.slot, b.index}, [&]<class N>(const N& material) {
-                if constexpr (transmits<N>) {
-                    const Inside object{b.slot, b.index, nesting_priority(material)};
-                    if (b.at_start) {
-                        media = media.entered(object);
-                        return;
-                    }
-                    const Interface face = nested_interface(media, object, b.entering);
-                    if (face.real) tr *= material.transmission_tint();
-                    media = face.beyond;
-                }
-            });
-        }
-        attenuate_to(t_max);
-        return tr;
-    }
-};
-
-template <class L, class... Slots>
-Scene(L, Slots...) -> Scene<L, Slots...>;
-
-} // namespace prism
-
-// ---- prism/integrator/direct.hpp ----
-// Light arriving from each light at a surface point, by shadow rays: shared by the integrators.
-
-
-namespace prism {
-
-/// Shadow rays stop this fraction short of a point light, so a light placed on a
-/// surface is not shadowed by that surface (pbrt's ShadowEpsilon).
-template <Scalar T>
-inline constexpr T shadow_epsilon = T(1e-4);
-
-/// For each light in front of the surface on the side the ray arrived from, call
-/// f(sample, v, cos): the light's sample at the point, the shadow ray's transmittance v
-/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface (the
-/// shading normal's: shading_cosine). Lights behind the surface are not visited: they
-/// count as occluded. How dielectrics shadow: see Scene::transmittance.
-template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
-void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, F&& f)
-{
-    const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
-    scene.for_each_light([&](const auto& light) {
-        const LightSample<T> s = light.sample(hit.point);
-        const T cos = shading_cosine(n_shading, n, s.wi);
-        if (!(cos > T(0))) return;
-        const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
-        f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
-    });
 }
-
-} // namespace prism
-
-// ---- prism/integrator/irradiance_cache.hpp ----
-// The final gather's hemisphere, stratified, with irradiance gradients (Ward and
-// Heckbert 1992), and an irradiance cache that interpolates between gathers.
-//
-// gather_hemisphere: M x N cells of equal projected solid angle (sin^2 theta uniform in
-// j, phi in k), one jittered ray each: E = pi / (M N) sum L_jk. From the same rays,
-// the rotational gradient (how E turns with the normal) and the translational one (how
-// it moves along the surface), in the notation of Krivanek and Gautron's "Practical
-// Global Illumination with Irradiance Caching" (2009), section 2.2:
-//   rotational     pi / (M N) sum_k v_k sum_j (-tan theta_j) L_jk   (tan theta_j and v_k
-//                  the cell's means, v a quarter turn back from u)
-//   translational  sum_k u_k (2 pi / N) sum_{j>=1} cos^2 theta_j- sin theta_j- (L_jk - L_j-1,k) / min(R_jk, R_j-1,k)
-//                + sum_k v_k- sum_j cos theta_j (cos theta_j- - cos theta_j+) (L_jk - L_j,k-1) / (sin theta_j min(R_jk, R_j,k-1))
-// with theta_j- and theta_j+ the cell's edges, u_k and v_k the base-plane directions at
-// the cell's azimuth and a quarter turn from it, v_k- at the edge between k - 1 and k.
-//
-// IrradianceCache: records of (p, n, E, gradients, R) where R, the distance over which E
-// may change, is the nearest hit of the gather (rays within 10 degrees of the tangent
-// plane left out), limited by E / |grad E|, clamped between a few pixels' footprint
-// and a fraction of the scene, and by each neighbour's R plus its distance (Krivanek's
-// neighbour clamping). A record is used at p with normal n where
-//     eps = kappa max(|p - p_i| / R_i, sqrt(1 - n . n_i) / sqrt(1 - cos 10 deg)) < 1,
-// weighted by 1 - eps (Tabellion and Lamourlette 2004: weights that fall to 0 at the
-// edge of a record's reach, so no seams), and not where the record lies in front of p.
-
-
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <functional>
-#include <optional>
-#include <span>
-#include <vector>
-
-namespace prism {
-
-/// What a gather over the hemisphere found.
-template <Scalar T>
-struct HemisphereGather {
-    Rgb<T> irradiance{T(0)};
-    std::array<Rgb<T>, 3> rotational{};    ///< d E / d (rotation about axis a): per axis a, per channel
-    std::array<Rgb<T>, 3> translational{}; ///< d E / d x_a: per axis a, per channel
-    T nearest = infinity<T>;               ///< the nearest hit of rays at least 10 degrees above the tangent plane
-};
-
-/// A gather over the hemisphere about unit n in M x N stratified cells:
-/// sample(direction) returns {radiance arriving, distance to where it came from
-/// (infinity when nothing)}. With Gradients, each cell's radiance and distance are
-/// kept for them (the one allocation, per gather: a cache record's); without, nothing
-/// is allocated.
-template <bool Gradients, Scalar T, class Sample>
-[[nodiscard]] HemisphereGather<T> gather_hemisphere(const Vec3<T>& n, int m, int cells_n, Pcg32& rng, Sample&& sample)
-{
-    const auto [t, b] = orthonormal_frame(n);
-    const std::size_t count = std::size_t(m) * std::size_t(cells_n);
-    std::vector<Rgb<T>> radiance;
-    std::vector<T> distance;
-    if constexpr (Gradients) {
-        radiance.resize(count);
-        distance.resize(count);
-    }
-    const auto in_plane = [&](T phi) { return t * std::cos(phi) + b * std::sin(phi); };
-    HemisphereGather<T> g;
-    for (int j = 0; j < m; ++j)
-        for (int k = 0; k < cells_n; ++k) {
-            const T sin2 = (T(j) + rng.uniform<T>()) / T(m), phi = T(2) * pi<T> * (T(k) + rng.uniform<T>()) / T(cells_n);
-            const T cos_theta = std::sqrt(std::max(T(0), T(1) - sin2));
-            const auto [l, d] = sample(normalize(in_plane(phi) * std::sqrt(sin2) + n * cos_theta));
-            if constexpr (Gradients) {
-                radiance[std::size_t(j * cells_n + k)] = l;
-                distance[std::size_t(j * cells_n + k)] = d;
-            }
-            g.irradiance += l;
-            if (cos_theta > T(0.173648)) g.nearest = std::min(g.nearest, d); // 10 degrees
-        }
-    const T cell = pi<T> / T(count);
-    g.irradiance *= cell;
-    if constexpr (!Gradients) return g;
-    // The rotational term weighs each cell by its mean of tan theta and of v over the
-    // cell (not their values at its centre, which read 8 % low at M = 32): with s =
-    // sin^2 theta uniform in [j/M, (j+1)/M], the mean of tan theta is M (F(b) - F(a)),
-    // F(s) = asin(sqrt s) - sqrt(s (1 - s)); v's mean over the cell's azimuths is v at
-    // its centre times sin(pi / N) / (pi / N).
-    const auto f = [](T x) { return std::asin(std::sqrt(x)) - std::sqrt(x * (T(1) - x)); };
-    const T sinc = std::sin(pi<T> / T(cells_n)) / (pi<T> / T(cells_n));
-    for (int j = 0; j < m; ++j) {
-        const T sin_minus = std::sqrt(T(j) / T(m)), cos_minus = std::sqrt(T(1) - T(j) / T(m));
-        const T cos_plus = std::sqrt(std::max(T(0), T(1) - T(j + 1) / T(m)));
-        const T sin_mid = std::sqrt((T(j) + T(0.5)) / T(m)), cos_mid = std::sqrt(T(1) - (T(j) + T(0.5)) / T(m));
-        for (int k = 0; k < cells_n; ++k) {
-            const T phi = T(2) * pi<T> * (T(k) + T(0.5)) / T(cells_n);
-            const Vec3<T> u_k = in_plane(phi), v_k = in_plane(phi - pi<T> / T(2));
-            const Vec3<T> v_edge = in_plane(T(2) * pi<T> * T(k) / T(cells_n) + pi<T> / T(2));
-            const std::size_t at = std::size_t(j * cells_n + k);
-            const T mean_tan = T(m) * (f(T(j + 1) / T(m)) - f(T(j) / T(m)));
-            const Rgb<T> rot = radiance[at] * (-mean_tan * sinc * cell);
-            for (int a = 0; a < 3; ++a) g.rotational[std::size_t(a)] += rot * v_k[a];
-            if (j > 0) {
-                const std::size_t below = std::size_t((j - 1) * cells_n + k);
-                const T r = std::min(distance[at], distance[below]);
-                if (r < infinity<T>) {
-                    const Rgb<T> dl = (radiance[at] - radiance[below]) * (T(2) * pi<T> / T(cells_n) * cos_minus * cos_minus * sin_minus / r);
-                    for (int a = 0; a < 3; ++a) g.translational[std::size_t(a)] += dl * u_k[a];
-                }
-            }
-            const std::size_t before = std::size_t(j * cells_n + (k + cells_n - 1) % cells_n);
-            const T r = std::min(distance[at], distance[before]);
-            if (r < infinity<T>) {
-                const Rgb<T> dl = (radiance[at] - radiance[before]) * (cos_mid * (cos_minus - cos_plus) / (sin_mid * r));
-                for (int a = 0; a < 3; ++a) g.translational[std::size_t(a)] += dl * v_edge[a];
-            }
-        }
-    }
-    return g;
-}
-
-/// One cached gather.
-template <Scalar T>
-struct IrradianceRecord {
-    Vec3<T> p{}, n{};
-    HemisphereGather<T> gather{};
-    T radius = T(0); ///< R: how far E may be carried
-};
-
-/// The positions of a cache's records, as a PointSet for the KdTree.
-template <Scalar T>
-struct RecordPositions {
-    using scalar_type = T;
-    static constexpr std::size_t dimension = 3;
-    std::span<const IrradianceRecord<T>> records;
-    [[nodiscard]] std::size_t size() const noexcept { return records.size(); }
-    [[nodiscard]] T coordinate(std::size_t i, std::size_t axis) const noexcept { return records[i].p[int(axis)]; }
-};
-
-template <Scalar T>
-class IrradianceCache {
-public:
-    /// sqrt(1 - cos 10 degrees): a normal turned by 10 degrees counts as far as a point R away.
-    static constexpr T normal_scale = T(0.1321); // sqrt(1 - 0.98481)
-
-    IrradianceCache() = default;
-    explicit IrradianceCache(T accuracy, bool gradients = true) : accuracy_(accuracy), gradients_(gradients) {}
-
-    [[nodiscard]] std::size_t size() const noexcept { return records_.size(); }
-    [[nodiscard]] const std::vector<IrradianceRecord<T>>& records() const noexcept { return records_; }
-
-    /// Add records (in the order given: the cache is then the same for any thread count
-    /// that computed them), clamping each one's radius by its neighbours' and theirs by
-    /// its own, then index them.
-    void add(std::vector<IrradianceRecord<T>> fresh)
-    {
-        for (IrradianceRecord<T>& record : fresh) {
-            for (IrradianceRecord<T>& other : nearby(record.p, record.radius)) {
-                const T d = length(record.p - other.p);
-                record.radius = std::min(record.radius, other.radius + d);
-                other.radius = std::min(other.radius, record.radius + d);
-            }
-            records_.push_back(record);
-            largest_ = std::max(largest_, record.radius);
-            pending_.push_back(records_.size() - 1);
-            if (pending_.size() > 64) reindex();
-        }
-        reindex();
-    }
-
-    /// The interpolated irradiance at p with unit normal n, or nothing where no record reaches.
-    [[nodiscard]] std::optional<Rgb<T>> irradiance(const Vec3<T>& p, const Vec3<T>& n) const noexcept
-    {
-        Rgb<T> sum{T(0)};
-        T weights = T(0);
-        visit_within(p, largest_ / accuracy_, [&](const IrradianceRecord<T>& r) {
-            const T w = weight(r, p, n);
-            if (!(w > T(0))) return;
-            Rgb<T> e = r.gather.irradiance;
-            if (gradients_) {
-                const Vec3<T> turn = cross(r.n, n), moved = p - r.p;
-                for (int a = 0; a < 3; ++a) e += r.gather.rotational[std::size_t(a)] * turn[a] + r.gather.translational[std::size_t(a)] * moved[a];
-                e = max(e, Rgb<T>(T(0)));
-            }
-            sum += e * w;
-            weights += w;
-        });
-        if (!(weights > T(0))) return std::nullopt;
-        return sum / weights;
-    }
-
-    /// Whether some record reaches p with normal n.
-    [[nodiscard]] bool covers(const Vec3<T>& p, const Vec3<T>& n) const noexcept
-    {
-        bool found = false;
-        visit_within(p, largest_ / accuracy_, [&](const IrradianceRecord<T>& r) { found = found || weight(r, p, n) > T(0); });
-        return found;
-    }
-
-private:
-    /// Tabellion and Lamourlette's weight, 0 outside the record's reach or where the
-    /// record lies in front of p (Ward: its hemisphere sees something p's does not).
-    [[nodiscard]] T weight(const IrradianceRecord<T>& r, const Vec3<T>& p, const Vec3<T>& n) const noexcept
-    {
-        const Vec3<T> moved = p - r.p;
-        const T turned = std::sqrt(std::max(T(0), T(1) - dot(n, r.n)));
-        const T eps = accuracy_ * std::max(length(moved) / r.radius, turned / normal_scale);
-        if (!(eps < T(1))) return T(0);
-        if (dot(moved, (n + r.n) * T(0.5)) < -T(0.05) * r.radius) return T(0);
-        return T(1) - eps;
-    }
-
-    /// visit(record) for each record within `reach` of p: through the tree for the
-    /// indexed ones, one by one for the few added since.
-    template <class Visit>
-    void visit_within(const Vec3<T>& p, T reach, Visit&& visit) const
-    {
-        if (tree_) tree_->within({p.x, p.y, p.z}, reach, [&](std::uint32_t i, T) { visit(records_[i]); });
-        for (const std::size_t i : pending_)
-            if (length_squared(records_[i].p - p) <= reach * reach) visit(records_[i]);
-    }
-
-    /// The records within radius + largest of p (those whose clamping may involve p's).
-    std::vector<std::reference_wrapper<IrradianceRecord<T>>> nearby(const Vec3<T>& p, T radius)
-    {
-        std::vector<std::reference_wrapper<IrradianceRecord<T>>> out;
-        const T reach = radius + largest_;
-        if (tree_) tree_->within({p.x, p.y, p.z}, reach, [&](std::uint32_t i, T) { out.push_back(records_[i]); });
-        for (const std::size_t i : pending_)
-            if (length_squared(records_[i].p - p) <= reach * reach) out.push_back(records_[i]);
-        return out;
-    }
-
-    void reindex()
-    {
-        tree_.emplace(RecordPositions<T>{records_});
-        pending_.clear();
-    }
-
-    T accuracy_ = T(1);
-    bool gradients_ = true;
-    std::vector<IrradianceRecord<T>> records_;
-    std::optional<KdTree<RecordPositions<T>, 8>> tree_;
-    std::vector<std::size_t> pending_;   ///< records added since the tree was built
-    T largest_ = T(0);                   ///< the largest radius
-};
 
 } // namespace prism
 
@@ -6973,15 +6000,94 @@ private:
 // (graded-index air: mirages, a flattened setting sun), through which rays curve.
 //
 // GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
-// field must be uniform, and rays go straight there. Inside, a ray follows the ray
-// equation by AdaptiveStepper's steps, and each step's chord is tested against the
-// scene: the first surface a chord meets is where the ray lands (a chord is within the
-// stepper's tolerance of the true path). Surfaces shade as usual; the rays they send on
-// (reflected, refracted into nothing dispersive... any ray back in the air) curve again.
-// Shadow rays stay straight: over the few metres to kilometres a scene spans, air bends
-// light by well under a degree, enough to move an image (the mirage) and too little to
-// move a shadow's edge visibly; tracing the curved path that reaches a light is a
-// boundary-value problem left for later.
+// field must be uniform, and rays go straight there. LayeredAir is the lecture notes'
+// flat layers. How a ray travels through either to the first surface it meets is
+// transport/travel.hpp's.
+
+
+namespace prism {
+
+/// Uniform air of index 1: rays are straight.
+struct StraightAir {
+    static constexpr bool curved = false;
+    constexpr void validate() const {}
+};
+
+/// Air whose index is `field` inside `region` (uniform outside it); rays through it curve.
+template <IndexField F>
+struct GradedAir {
+    using scalar_type = typename F::scalar_type;
+    using T = scalar_type;
+    static constexpr bool curved = true;
+
+    F field{};
+    Aabb<T> region{};                                   ///< where the index varies
+    typename AdaptiveStepper<F>::Config stepping{};     ///< the stepper's tolerance and step lengths
+    /// A chord that meets a surface is halved (Sharma steps of half the dt) until it is
+    /// at most this long, so the landing point lies on the curve, not on a chord that
+    /// cuts under it (a chord of length L sags by about L^2 / (8 R) from a path of radius R).
+    T landing_chord = T(1e-3);
+    int max_steps = 1000000;                            ///< a ray still in the air after this many steps is lost (background)
+
+    void validate() const
+    {
+        field.validate();
+        if (!region.bounded()) detail::throw_invalid("GradedAir region must be a bounded, non-empty box");
+        if (max_steps < 1) detail::throw_invalid("GradedAir max_steps must be >= 1, got ", max_steps);
+        detail::require_positive("GradedAir landing_chord", landing_chord);
+        (void)AdaptiveStepper<F>(field, stepping); // checks the stepping
+    }
+};
+
+/// The lecture notes' air: `layers` flat layers between heights `bottom` and `top`, each
+/// of the field's index at its middle height (stratified fields only); a ray goes
+/// straight within a layer and refracts by Snell's law (or reflects totally) at each
+/// boundary; above and below the layers it goes straight. The second policy beside
+/// GradedAir, for comparison: it keeps n cos(theta) exactly but converges only at first
+/// order in the layer height (bench/graded_index.cpp).
+template <IndexField F>
+struct LayeredAir {
+    using scalar_type = typename F::scalar_type;
+    using T = scalar_type;
+    static constexpr bool curved = true;
+
+    F field{};
+    T bottom = T(0);
+    T top = T(1);
+    int layers = 100;
+
+    void validate() const { (void)LayeredMedium<F>(field, bottom, top, layers); }
+};
+
+} // namespace prism
+
+// ---- prism/scene/hit.hpp ----
+// Hit: the closest crossing of a ray with a scene, and which object it belongs to.
+
+
+#include <cstdint>
+
+namespace prism {
+
+template <Scalar T>
+struct Hit {
+    Crossing<T> crossing{};  ///< where, with the outward normal and whether the ray enters
+    std::uint32_t slot = 0;  ///< the scene slot (compile-time position) of the object
+    std::uint32_t index = 0; ///< the object within its slot
+};
+
+} // namespace prism
+
+// ---- prism/transport/travel.hpp ----
+// How a ray travels through the scene's air to the first surface it meets
+// (first_hit_in_air): straight in StraightAir; in GradedAir it follows the ray equation
+// by AdaptiveStepper's steps, and each step's chord is tested against the scene: the
+// first surface a chord meets is where the ray lands (a chord is within the stepper's
+// tolerance of the true path). Surfaces shade as usual; the rays they send on (any ray
+// back in the air) curve again. Shadow rays stay straight: over the few metres to
+// kilometres a scene spans, air bends light by well under a degree, enough to move an
+// image (the mirage) and too little to move a shadow's edge visibly; tracing the curved
+// path that reaches a light is a boundary-value problem left for later.
 
 
 #include <limits>
@@ -7038,58 +6144,6 @@ template <class SceneT>
 }
 
 } // namespace detail
-
-/// Uniform air of index 1: rays are straight.
-struct StraightAir {
-    static constexpr bool curved = false;
-    constexpr void validate() const {}
-};
-
-/// Air whose index is `field` inside `region` (uniform outside it); rays through it curve.
-template <IndexField F>
-struct GradedAir {
-    using scalar_type = typename F::scalar_type;
-    using T = scalar_type;
-    static constexpr bool curved = true;
-
-    F field{};
-    Aabb<T> region{};                                   ///< where the index varies
-    typename AdaptiveStepper<F>::Config stepping{};     ///< the stepper's tolerance and step lengths
-    /// A chord that meets a surface is halved (Sharma steps of half the dt) until it is
-    /// at most this long, so the landing point lies on the curve, not on a chord that
-    /// cuts under it (a chord of length L sags by about L^2 / (8 R) from a path of radius R).
-    T landing_chord = T(1e-3);
-    int max_steps = 1000000;                            ///< a ray still in the air after this many steps is lost (background)
-
-    void validate() const
-    {
-        field.validate();
-        if (!region.bounded()) detail::throw_invalid("GradedAir region must be a bounded, non-empty box");
-        if (max_steps < 1) detail::throw_invalid("GradedAir max_steps must be >= 1, got ", max_steps);
-        detail::require_positive("GradedAir landing_chord", landing_chord);
-        (void)AdaptiveStepper<F>(field, stepping); // checks the stepping
-    }
-};
-
-/// The lecture notes' air: `layers` flat layers between heights `bottom` and `top`, each
-/// of the field's index at its middle height (stratified fields only); a ray goes
-/// straight within a layer and refracts by Snell's law (or reflects totally) at each
-/// boundary; above and below the layers it goes straight. The second policy beside
-/// GradedAir, for comparison: it keeps n cos(theta) exactly but converges only at first
-/// order in the layer height (bench/graded_index.cpp).
-template <IndexField F>
-struct LayeredAir {
-    using scalar_type = typename F::scalar_type;
-    using T = scalar_type;
-    static constexpr bool curved = true;
-
-    F field{};
-    T bottom = T(0);
-    T top = T(1);
-    int layers = 100;
-
-    void validate() const { (void)LayeredMedium<F>(field, bottom, top, layers); }
-};
 
 /// Where a ray through layered air first meets a surface (see first_hit_through below).
 template <class SceneT, IndexField F>
@@ -7216,6 +6270,145 @@ template <class SceneT, class Air>
         if (hit && path != nullptr) *path = hit->crossing.t * length(ray.direction);
         return hit;
     }
+}
+
+} // namespace prism
+
+// ---- prism/medium/nesting.hpp ----
+// Nested dielectrics: the media a ray is inside of, so that water in a glass, an air
+// bubble in glass or a glass in water refract with the right n1 / n2 at every interface.
+//
+// A ray carries the transmissive objects it has entered (a MediumStack). At an
+// interface, the medium on the far side is the one the ray is inside of apart from this
+// object: the stack's top (or the scene's air, index 1, when it is empty). Overlapping
+// volumes resolve by priority (Schmidt and Budge, "Simple Nested Dielectrics in Ray
+// Traced Images", JGT 2002): a material may set `priority` (0 by default), and a
+// surface of an object whose priority is below that of the medium the ray is in is a
+// false interface: the ray passes it unchanged, only noting that it entered or left. So
+// water modelled to overlap a glass's inner wall slightly (no coincident surfaces) is
+// cut by the glass, which has the higher priority. Among equal priorities the most
+// recently entered object is the medium, which is right for properly nested objects.
+// What the media do to light on its way (their index, their attenuation) is
+// transport/media.hpp's.
+
+#include <array>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+
+namespace prism {
+
+/// A material's nesting priority: its `priority` member, or 0.
+template <class M>
+[[nodiscard]] constexpr int nesting_priority(const M& material) noexcept
+{
+    if constexpr (requires { { material.priority } -> std::convertible_to<int>; })
+        return int(material.priority);
+    else
+        return 0;
+}
+
+/// An object a ray is inside of: where it is in the scene, and its priority.
+struct Inside {
+    std::uint32_t slot = 0;
+    std::uint32_t index = 0;
+    int priority = 0;
+
+    [[nodiscard]] constexpr bool same_object(const Inside& other) const noexcept { return slot == other.slot && index == other.index; }
+};
+
+/// The transmissive objects a ray is inside of, at most `capacity` deep (a ray entering
+/// more than that many at once forgets the oldest, and is then outside it).
+class MediumStack {
+public:
+    static constexpr std::size_t capacity = 8;
+
+    [[nodiscard]] constexpr bool empty() const noexcept { return count_ == 0; }
+    [[nodiscard]] constexpr std::size_t size() const noexcept { return count_; }
+
+    /// The medium the ray travels in: the highest priority, the latest entered among equals.
+    [[nodiscard]] constexpr const Inside* top() const noexcept
+    {
+        const Inside* best = nullptr;
+        for (std::size_t i = 0; i < count_; ++i)
+            if (best == nullptr || items_[i].priority >= best->priority) best = &items_[i];
+        return best;
+    }
+
+    [[nodiscard]] constexpr bool contains(const Inside& object) const noexcept
+    {
+        for (std::size_t i = 0; i < count_; ++i)
+            if (items_[i].same_object(object)) return true;
+        return false;
+    }
+
+    /// This stack with `object` entered.
+    [[nodiscard]] constexpr MediumStack entered(const Inside& object) const noexcept
+    {
+        MediumStack next = *this;
+        if (next.count_ == capacity) next.remove_at(0);
+        next.items_[next.count_++] = object;
+        return next;
+    }
+
+    /// This stack with `object` left (unchanged if the ray was not inside it).
+    [[nodiscard]] constexpr MediumStack left(const Inside& object) const noexcept
+    {
+        MediumStack next = *this;
+        for (std::size_t i = next.count_; i-- > 0;)
+            if (next.items_[i].same_object(object)) {
+                next.remove_at(i);
+                break;
+            }
+        return next;
+    }
+
+private:
+    constexpr void remove_at(std::size_t i) noexcept
+    {
+        for (std::size_t j = i + 1; j < count_; ++j) items_[j - 1] = items_[j];
+        --count_;
+    }
+
+    std::array<Inside, capacity> items_{};
+    std::size_t count_ = 0;
+};
+
+/// What a ray meeting a transmissive object's surface does there, given the media it is
+/// in: whether the interface is real (false: the ray passes it unchanged), and the
+/// media beyond it, for a ray that crosses (refracted, or passing a false interface); a
+/// reflected ray stays in the current ones. The medium on the object's other side is
+/// the current one when entering and the one beyond when leaving (`outside_of`).
+struct Interface {
+    bool real = true;
+    MediumStack beyond{};
+};
+
+/// The interface a ray in `media` meets at a surface of `object` (entering or leaving).
+[[nodiscard]] constexpr Interface nested_interface(const MediumStack& media, const Inside& object, bool entering) noexcept
+{
+    Interface result;
+    if (entering) {
+        result.beyond = media.entered(object);
+        const Inside* current = media.top();
+        result.real = current == nullptr || current->priority <= object.priority;
+        return result;
+    }
+    result.beyond = media.left(object);
+    const Inside* current = media.top();
+    // Leaving an object the ray is inside of but that is not its medium (a higher-priority
+    // object overlaps it here): false. Leaving one it never entered (the camera started
+    // inside it): real, as without nesting.
+    result.real = current == nullptr || current->same_object(object) || !media.contains(object);
+    return result;
+}
+
+/// The object whose medium lies on the far side of a real interface from the object's
+/// inside (none: the scene's air): the medium the ray is in when it enters, the one it
+/// will be in when it leaves.
+[[nodiscard]] constexpr const Inside* outside_of(const MediumStack& media, const Interface& face, bool entering) noexcept
+{
+    return entering ? media.top() : face.beyond.top();
 }
 
 } // namespace prism
@@ -7634,7 +6827,47 @@ private:
 
 } // namespace prism
 
-// ---- prism/photon/random_walk.hpp ----
+// ---- prism/transport/media.hpp ----
+// What the media a path is in (medium/nesting.hpp's MediumStack) do to light on its way:
+// the index on an interface's far side, and the attenuation along a segment.
+
+
+namespace prism {
+
+/// The refractive index of the medium of `object` for light of one wavelength (0: white):
+/// 1 for none (the scene's air) or for an object that does not transmit.
+template <class SceneT>
+[[nodiscard]] typename SceneT::scalar_type index_of(const SceneT& scene, const Inside* object, typename SceneT::scalar_type wavelength_nm) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    if (object == nullptr) return T(1);
+    return scene.visit_material(object->slot, object->index, [&]<class M>(const M& material) -> T {
+        if constexpr (M::transmits)
+            return index_at(material, wavelength_nm);
+        else
+            return T(1);
+    });
+}
+
+/// Light that reached `hit` along `ray` travelled in the medium the ray is in: multiply
+/// by what it lets through over that length. A ray known to be in no object leaving a
+/// dielectric travelled inside it (the camera started there, or no nesting is tracked).
+template <class SceneT, Material M>
+void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& material, const Crossing<typename M::scalar_type>& hit,
+                       const Ray<typename M::scalar_type>& ray, Rgb<typename M::scalar_type>& light) noexcept
+{
+    if (const Inside* in = media.top()) {
+        scene.visit_material(in->slot, in->index, [&]<class N>(const N& medium_material) {
+            if constexpr (N::transmits) light *= medium_material.medium().transmittance(hit.t * length(ray.direction));
+        });
+    } else {
+        attenuate_inside(material, hit, ray, light);
+    }
+}
+
+} // namespace prism
+
+// ---- prism/transport/random_walk.hpp ----
 // random_walk: the path a photon takes through a scene, shared by the photon tracer, the
 // light tracer and the path tracer (a camera path carries importance by the same rules).
 //
@@ -7647,6 +6880,7 @@ private:
 
 
 #include <algorithm>
+#include <concepts>
 #include <type_traits>
 #include <variant>
 
@@ -7670,8 +6904,9 @@ struct WalkVertex {
 };
 
 /// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
-/// on_diffuse(material, WalkVertex) is called at every diffuse surface and returns false
-/// to end the walk there; on_escape(ray, power, specular_only) when the path leaves the
+/// on_diffuse(material, WalkVertex) is called at every diffuse surface and returns the
+/// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
+/// there); on_escape(ray, power, specular_only) when the path leaves the
 /// scene. `Mode`: whether the path is a photon's or a camera's (scatter_photon).
 template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
@@ -7700,8 +6935,12 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         const Next next_step = scene.visit_material(*hit, [&]<class M>(const M& material) -> Next {
             // What the medium it travelled in let through, before anything else.
             attenuate_segment(scene, media, material, c, segment, power);
+            Lobes lobes = Lobes::all;
             if constexpr (has_diffuse<M>) {
-                if (!on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media})) return Next::absorbed;
+                const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media});
+                if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
+                else lobes = go_on;
+                if (lobes == Lobes::none) return Next::absorbed;
             }
             // The media beyond the surface, the object whose medium lies on its far
             // side, and false interfaces (inside a medium of higher priority) passed.
@@ -7728,7 +6967,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 }
             }
             const Vec3<T> n = c.facing_normal();
-            const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, index_of(scene, outside, wavelength));
+            const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, index_of(scene, outside, wavelength), lobes);
             if (!next) return Next::absorbed;
             ray = spawn_ray(c.point, c.error, c.normal, next->direction);
             if (next->diffuse) ++diffuse_bounces;
@@ -7846,7 +7085,13 @@ public:
         // A sphere around everything bounded: parallel photons start outside it.
         if (!scene.bounds().empty()) scene_sphere_ = scene.bounds().bounding_sphere();
         add_emitters(global_, false, {});
-        scene_.slots.apply([&](const auto&... slot) { [[maybe_unused]] const int in_order[] = {(add_targets(slot), 0)...}; });
+        // Every light aimed at each bounded specular object.
+        scene.for_each_object([&]<class Object>(const Object& object) {
+            using M = typename Object::material_type;
+            if constexpr (reflects<M> || transmits<M>) {
+                if (object.bounded) add_emitters(targets_, true, bounding_sphere(object.shape));
+            }
+        });
         drop_nested_targets();
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);
@@ -7920,20 +7165,22 @@ private:
                     [](const Ray<T>&, const Rgb<T>&, bool) {});
     }
 
-    /// Store photon i: in the caustic pass only L S+ D, ending the walk there.
+    /// Store photon i: in the caustic pass only L S+ D, going on past it only by delta lobes.
     void store(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, std::vector<Photon>& out) const
     {
-        emit(emitters, total_power, count, i, caustic_pass, [&](const auto&, const WalkVertex<T>& at, const Rgb<T>& power) {
+        emit(emitters, total_power, count, i, caustic_pass, [&]<class M>(const M&, const WalkVertex<T>& at, const Rgb<T>& power) {
             const Crossing<T>& c = at.crossing();
             if (caustic_pass) {
                 if (!at.direct && at.specular_only()) out.push_back(photon(c, power, at.direction, Photon::caustic));
-                return false;
+                // What a diffuse lobe sends on is the global map's; a delta lobe (a coat
+                // over the diffuse one) may still send a caustic on.
+                return (reflects<M> || transmits<M>) && at.specular_only() ? Lobes::delta : Lobes::none;
             }
             std::uint8_t flags = at.direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
             if (!at.direct && at.specular_only()) flags |= Photon::caustic;
             out.push_back(photon(c, power, at.direction, flags));
             if (at.direct && config_.shadow_photons) store_shadow_photons(c, at.direction, out);
-            return true;
+            return Lobes::all;
         });
     }
 
@@ -8005,17 +7252,6 @@ private:
             if (!nested) kept.push_back(targets_[i]);
         }
         targets_ = std::move(kept);
-    }
-
-    /// Every light aimed at each bounded specular object of the slot.
-    template <class Slot>
-    void add_targets(const Slot& slot)
-    {
-        using M = typename Slot::material_type;
-        if constexpr (reflects<M> || transmits<M>) {
-            for (const auto& object : objects_of(slot))
-                if (object.bounded) add_emitters(targets_, true, bounding_sphere(object.shape));
-        }
     }
 
     const SceneT& scene_;
@@ -8642,19 +7878,13 @@ private:
 
 } // namespace prism
 
-// ---- prism/render/layers.hpp ----
-// The layers a render can write beside its image (EXR's arbitrary output variables):
-// per sample, what the camera ray meets first (its albedo, shading normal and distance,
-// and whether it meets anything at all: coverage), and, for an integrator that splits
-// its light by where it came from, the parts (the photon mapper's direct light,
-// caustics and indirect light). They are summed per pixel exactly as the image is
-// (render/accumulation.hpp), so a crop or a range of passes of them adds up too.
+// ---- prism/transport/first_surface.hpp ----
+// What a camera ray meets first (its albedo, shading normal and distance): the surface
+// layers a render writes beside its image (render/layers.hpp), the same for every
+// integrator.
 
 
-#include <concepts>
 #include <optional>
-#include <string>
-#include <vector>
 
 namespace prism {
 
@@ -8683,6 +7913,24 @@ template <class SceneT, class Air>
     });
     return SurfaceSample<T>{albedo, hit->crossing.facing_shading(), path};
 }
+
+} // namespace prism
+
+// ---- prism/render/layers.hpp ----
+// The layers a render can write beside its image (EXR's arbitrary output variables):
+// per sample, what the camera ray meets first (its albedo, shading normal and distance,
+// and whether it meets anything at all: coverage), and, for an integrator that splits
+// its light by where it came from, the parts (the photon mapper's direct light,
+// caustics and indirect light). They are summed per pixel exactly as the image is
+// (render/accumulation.hpp), so a crop or a range of passes of them adds up too.
+
+
+#include <concepts>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace prism {
 
 /// Radiance split by the light's last stretch before the camera path's diffuse surface:
 /// straight from a light (shadow rays) or the background, through specular surfaces
@@ -9136,6 +8384,800 @@ template <Integrator I>
 
 } // namespace prism
 
+// ---- prism/core/dispatch.hpp ----
+// dispatch<N>(i, f): call f with the compile-time index I = i, through a table of one
+// function per index, built once from the index pack (no recursion over the pack).
+
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+namespace prism {
+
+/// A compile-time index, as dispatch passes it.
+template <std::size_t I>
+using Index = std::integral_constant<std::size_t, I>;
+
+namespace detail {
+
+template <std::size_t I, class R, class F>
+R call_at(F& f)
+{
+    return f(Index<I>{});
+}
+
+/// One entry an index: a pack expansion, so a table of 1024 entries costs 1024 small
+/// instantiations side by side, not a chain 1024 deep.
+template <class R, class F, std::size_t... I>
+inline constexpr std::array<R (*)(F&), sizeof...(I)> dispatch_table{&call_at<I, R, F>...};
+
+template <class R, class F, std::size_t... I>
+constexpr auto table_of(std::index_sequence<I...>) noexcept -> const std::array<R (*)(F&), sizeof...(I)>&
+{
+    return dispatch_table<R, F, I...>;
+}
+
+/// A chain of comparisons, for a few indices: each call inlined where it is made.
+template <std::size_t I, std::size_t N, class F>
+decltype(auto) dispatch_chain(std::size_t i, F& f)
+{
+    if constexpr (I + 1 < N) {
+        if (i != I) return dispatch_chain<I + 1, N>(i, f);
+    }
+    return f(Index<I>{});
+}
+
+} // namespace detail
+
+/// Up to this many indices, dispatch compares (each call inlined: the Cornell box's three
+/// slots render 22 % slower through a table); beyond, it goes through a table.
+inline constexpr std::size_t dispatch_chain_up_to = 8;
+
+/// f(Index<i>{}) for a run-time i < N: a scene slot or a light, chosen at run time, with
+/// its static type. Every f(Index<I>{}) must return the same type. A few indices are
+/// compared in turn; more go through a table (one indirect call), so the cost of a
+/// dispatch and the code the compiler instantiates for it grow with N no faster than
+/// the table, and no chain of instantiations grows with it.
+template <std::size_t N, class F>
+decltype(auto) dispatch(std::size_t i, F&& f)
+{
+    static_assert(N > 0, "dispatch over no index");
+    PRISM_ASSERT(i < N);
+    using R = decltype(f(Index<0>{}));
+    if constexpr (N <= dispatch_chain_up_to) {
+        return detail::dispatch_chain<0, N>(i, f);
+    } else {
+        return detail::table_of<R, std::remove_reference_t<F>>(std::make_index_sequence<N>{})[i](f);
+    }
+}
+
+} // namespace prism
+
+// ---- prism/core/pack.hpp ----
+// Pack<Ts...>: a tuple without recursion, for packs of hundreds of types (a scene's slots).
+
+#include <cstddef>
+#include <initializer_list>
+#include <type_traits>
+#include <utility>
+
+namespace prism {
+
+namespace detail {
+
+template <std::size_t I, class T>
+struct PackItem {
+    T value;
+};
+
+/// Every item a base of its own, side by side: std::tuple (libstdc++, libc++) nests one
+/// base in the next, so a tuple of N types is N instantiations deep, and 1024 slots pass
+/// the compilers' depth limit (900 for g++).
+template <class Sequence, class... Ts>
+struct PackItems;
+
+template <std::size_t... I, class... Ts>
+struct PackItems<std::index_sequence<I...>, Ts...> : PackItem<I, Ts>... {
+    constexpr explicit PackItems(Ts... values) : PackItem<I, Ts>{std::move(values)}... {}
+};
+
+// Item I by the one base PackItem<I, T>, T deduced: no walk over the pack.
+template <std::size_t I, class T>
+constexpr const T& item(const PackItem<I, T>& p) noexcept
+{
+    return p.value;
+}
+
+template <std::size_t I, class T>
+constexpr T& item(PackItem<I, T>& p) noexcept
+{
+    return p.value;
+}
+
+template <std::size_t I, class T>
+T item_type(const PackItem<I, T>&); // only in decltype
+
+/// Whether every / some value is true: for a pack expanded into a braced list, which has
+/// no depth (clang nests a fold expression's terms, and refuses more than 256).
+constexpr bool all_of(std::initializer_list<bool> values) noexcept
+{
+    for (const bool v : values)
+        if (!v) return false;
+    return true;
+}
+
+constexpr bool any_of(std::initializer_list<bool> values) noexcept
+{
+    for (const bool v : values)
+        if (v) return true;
+    return false;
+}
+
+} // namespace detail
+
+/// A fixed list of values of the types Ts, item I read by get<I>(pack).
+template <class... Ts>
+struct Pack : detail::PackItems<std::index_sequence_for<Ts...>, Ts...> {
+    static constexpr std::size_t size = sizeof...(Ts);
+
+    constexpr explicit Pack(Ts... values) : detail::PackItems<std::index_sequence_for<Ts...>, Ts...>(std::move(values)...) {}
+
+    /// f(item 0, item 1, ...), as std::apply.
+    template <class F>
+    constexpr decltype(auto) apply(F&& f) const
+    {
+        return [&]<std::size_t... I>(std::index_sequence<I...>) -> decltype(auto) {
+            return f(detail::item<I>(*this)...);
+        }(std::index_sequence_for<Ts...>{});
+    }
+};
+
+/// Item I of a pack.
+template <std::size_t I, class... Ts>
+[[nodiscard]] constexpr const auto& get(const Pack<Ts...>& pack) noexcept
+{
+    static_assert(I < sizeof...(Ts), "get<I>: I is past the pack's end");
+    return detail::item<I>(pack);
+}
+
+template <std::size_t I, class... Ts>
+[[nodiscard]] constexpr auto& get(Pack<Ts...>& pack) noexcept
+{
+    static_assert(I < sizeof...(Ts), "get<I>: I is past the pack's end");
+    return detail::item<I>(pack);
+}
+
+/// The type of item I of a pack.
+template <std::size_t I, class P>
+using pack_element_t = decltype(detail::item_type<I>(std::declval<const P&>()));
+
+} // namespace prism
+
+// ---- prism/scene/object.hpp ----
+// Object: a shape with a material; ObjectArray: many of one type in one scene slot.
+
+
+#include <span>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+/// One scene object. Construction validates the material (the shape validated itself).
+template <Shape S, Material M>
+    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
+struct Object {
+    using scalar_type = typename S::scalar_type;
+    using shape_type = S;
+    using material_type = M;
+
+    S shape;
+    M material;
+    bool bounded = false; ///< the shape has finite bounds (set at construction, for culling)
+
+    constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m))
+    {
+        material.validate();
+        bounded = shape.bounds().bounded();
+    }
+};
+
+/// Many objects of one shape and material type, chosen at run time, in one scene slot.
+template <Shape S, Material M>
+    requires std::same_as<typename S::scalar_type, typename M::scalar_type>
+struct ObjectArray {
+    using scalar_type = typename S::scalar_type;
+    using shape_type = S;
+    using material_type = M;
+
+    std::vector<Object<S, M>> items;
+};
+
+namespace detail {
+
+template <class X>
+struct is_slot : std::false_type {};
+template <class S, class M>
+struct is_slot<Object<S, M>> : std::true_type {};
+template <class S, class M>
+struct is_slot<ObjectArray<S, M>> : std::true_type {};
+
+} // namespace detail
+
+/// A scene slot: an Object or an ObjectArray.
+template <class X>
+concept Slot = detail::is_slot<X>::value;
+
+/// The objects of a slot, as a contiguous range.
+template <class S, class M>
+[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const Object<S, M>& object) noexcept
+{
+    return {&object, 1};
+}
+
+template <class S, class M>
+[[nodiscard]] constexpr std::span<const Object<S, M>> objects_of(const ObjectArray<S, M>& array) noexcept
+{
+    return {array.items};
+}
+
+} // namespace prism
+
+// ---- prism/scene/scene.hpp ----
+// Scene: lights and object slots fixed at compile time; closest-hit and shadow queries.
+
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+/// The lights of a scene, each of its own type, at least one.
+template <Light... Ls>
+struct Lights {
+    static_assert(sizeof...(Ls) > 0, "Lights{} holds no light: a scene needs at least one (a PointLight, a DirectionalLight, ...)");
+
+    std::tuple<Ls...> items;
+
+    constexpr explicit Lights(Ls... lights) : items(std::move(lights)...)
+    {
+        std::apply([](const auto&... light) { (light.validate(), ...); }, items);
+    }
+};
+
+namespace detail {
+
+template <class X>
+struct is_light_list : std::false_type {};
+template <class... Ls>
+struct is_light_list<Lights<Ls...>> : std::true_type {};
+
+/// Whether every light of the list has scalar type T (true for what is no list: that
+/// has its own error).
+template <class List, class T>
+inline constexpr bool lights_of_scalar = true;
+template <class... Ls, class T>
+inline constexpr bool lights_of_scalar<Lights<Ls...>, T> = (std::same_as<typename Ls::scalar_type, T> && ...);
+
+} // namespace detail
+
+/// A scene's first argument: Lights{...}.
+template <class X>
+concept LightList = detail::is_light_list<X>::value;
+
+/// How shadow rays treat dielectrics.
+enum class ShadowsThroughGlass : bool {
+    attenuated, ///< light passes, attenuated by the medium and the transmission tint (Whitted)
+    blocked,    ///< glass casts a full shadow: its light arrives by a caustic map instead
+};
+
+namespace detail {
+
+/// Where a shadow ray meets a transmissive object's boundary (or starts inside it), kept
+/// to resolve overlapping objects by priority; a fixed number, no allocation.
+template <Scalar T>
+struct ShadowBoundaries {
+    struct Boundary {
+        T t;
+        std::uint32_t slot;
+        std::uint32_t index;
+        bool entering;
+        bool at_start; ///< the ray starts inside the object (no boundary crossed)
+    };
+    static constexpr std::size_t capacity = 32;
+    std::array<Boundary, capacity> items;
+    std::size_t count = 0;
+    bool overflow = false;
+
+    constexpr void add(const Boundary& b) noexcept
+    {
+        if (count == capacity) overflow = true;
+        else items[count++] = b;
+    }
+
+    /// Sort by t; whether two objects' insides overlap anywhere along the ray.
+    constexpr bool sort_and_find_overlap() noexcept
+    {
+        if (overflow) return false;
+        for (std::size_t i = 1; i < count; ++i)
+            for (std::size_t j = i; j > 0 && items[j].t < items[j - 1].t; --j) std::swap(items[j], items[j - 1]);
+        int depth = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            depth += items[i].entering || items[i].at_start ? 1 : -1;
+            if (depth >= 2) return true;
+        }
+        return false;
+    }
+};
+
+/// An object's place in a scene: its slot, and its index within the slot. Keys order the
+/// objects as a scan of the slots in turn meets them, which is how ties are settled.
+struct ObjectKey {
+    std::uint32_t slot, index; // (no initializers: ShadowKeys' array is left uninitialized)
+    [[nodiscard]] constexpr bool before(const ObjectKey& other) const noexcept
+    {
+        return slot < other.slot || (slot == other.slot && index < other.index);
+    }
+};
+
+/// The transmissive objects whose boxes a shadow ray meets, gathered by the scene's tree
+/// in its own order, to be attenuated in the order of a scan (a product is the same bits
+/// only in the same order); a fixed number, no allocation.
+struct ShadowKeys {
+    static constexpr std::size_t capacity = 64;
+    std::array<ObjectKey, capacity> items; // (left uninitialized: clearing it would cost more than most shadow rays)
+    std::size_t count = 0;
+    bool overflow = false;
+
+    constexpr void add(const ObjectKey& key) noexcept
+    {
+        if (count == capacity) overflow = true;
+        else items[count++] = key;
+    }
+
+    /// The keys gathered, sorted (insertion sort: a shadow ray meets few).
+    [[nodiscard]] constexpr std::span<const ObjectKey> sorted() noexcept
+    {
+        for (std::size_t i = 1; i < count; ++i)
+            for (std::size_t j = i; j > 0 && items[j].before(items[j - 1]); --j) std::swap(items[j], items[j - 1]);
+        return {items.data(), count};
+    }
+};
+
+template <class X>
+struct is_object_array : std::false_type {};
+template <class S, class M>
+struct is_object_array<ObjectArray<S, M>> : std::true_type {};
+
+/// Nothing: what a scene of several slots keeps in place of its one slot's shapes.
+struct NoShapes {};
+
+} // namespace detail
+
+/// A scene: its lights, object slots (one type each), background and ambient radiance.
+/// Which shapes and materials exist is part of the type, so integrators compile only
+/// the code those materials need.
+///
+/// Finding what a ray meets: the scene keeps one Bvh over the bounded objects of all its
+/// slots (when there are at least tree_from; fewer are scanned: the Cornell box's seven
+/// render 20 % slower through a tree), and tests its unbounded ones on every ray. A leaf
+/// reaches its object's code through a table with an entry per slot (core/dispatch.hpp),
+/// so a ray costs log N in the objects whatever their types, and the code compiled grows
+/// linearly with the slots: the traversal is compiled once, only the leaf test once per
+/// slot. (A scene of one slot calls its leaf test directly, and keeps its shapes in leaf
+/// order beside the tree.) Whatever order the objects are met in, the answer is the same
+/// object at the same t: a tie at one t goes to the lower slot, then the lower index, as
+/// in a scan of the slots in turn.
+// (Slots is checked by a static_assert, not constrained as `Slot... Slots`: clang checks a
+// constrained pack as a fold expression, and refuses one of more than 256 terms.)
+template <class LightsOfScene, class... Slots>
+class Scene {
+    static_assert(LightList<LightsOfScene>, "a Scene's first argument must be its lights as Lights{...}, e.g. Scene{Lights{PointLight<float>{...}}, objects...}");
+    static_assert(sizeof...(Slots) > 0, "a scene needs at least one object");
+    static_assert(detail::all_of({Slot<Slots>...}), "a Scene's objects must each be an Object{shape, material} or an ObjectArray");
+
+    template <std::size_t I>
+    using SlotAt = pack_element_t<I, Pack<Slots...>>;
+
+public:
+    using scalar_type = typename SlotAt<0>::scalar_type;
+    using T = scalar_type;
+    static_assert(detail::all_of({std::same_as<typename Slots::scalar_type, T>...}), "all objects must share one scalar type");
+    static_assert(detail::lights_of_scalar<LightsOfScene, T>, "every light must have the objects' scalar type (a PointLight<float> in a scene of double objects?)");
+
+    /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
+    static constexpr bool has_transmissive = detail::any_of({transmits<typename Slots::material_type>...});
+    /// Some material has a mirror lobe.
+    static constexpr bool has_specular = detail::any_of({reflects<typename Slots::material_type>...}) || has_transmissive;
+    static constexpr std::size_t slot_count = sizeof...(Slots);
+    /// The fewest bounded objects the scene builds its tree over.
+    static constexpr std::size_t tree_from = 8;
+    /// Whether the scene may need a tree: some slot is an array, or there are tree_from
+    /// slots. (A scene of a few single objects compiles no tree code: Whitted's four
+    /// compile 1.5 s faster.)
+    static constexpr bool may_have_tree = slot_count >= tree_from || detail::any_of({detail::is_object_array<Slots>::value...});
+
+    // Scene Public Members
+
+    LightsOfScene lights;
+    Pack<Slots...> slots; ///< get<I>(slots) is slot I
+    Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
+    Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
+
+    constexpr Scene(LightsOfScene light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
+    {
+        // Every object's key, bounded or not, in key order; the transmissive ones again,
+        // and one box around every bounded object (a ray that misses it skips them all).
+        std::vector<Aabb<T>> boxes;
+        for_each_slot([&]<std::size_t I>(Index<I>) {
+            const auto list = objects_of(get<I>(slots));
+            for (std::uint32_t k = 0; k < list.size(); ++k) {
+                const detail::ObjectKey key{std::uint32_t(I), k};
+                if (list[k].bounded) {
+                    boxes.push_back(list[k].shape.bounds());
+                    cluster_ = cluster_.merged(boxes.back());
+                    keys_.push_back(key);
+                } else {
+                    unbounded_.push_back(key);
+                }
+                if constexpr (transmits<typename SlotAt<I>::material_type>) glass_.push_back(key);
+            }
+        });
+        bounded_objects_ = !cluster_.empty();
+        if constexpr (may_have_tree) {
+            if (keys_.size() >= tree_from) build_tree(boxes);
+        }
+    }
+
+    /// The box around every bounded object (empty when there is none): the render's
+    /// cull for whole scenes, and the photon tracer's extent.
+    [[nodiscard]] constexpr const Aabb<T>& bounds() const noexcept { return cluster_; }
+
+    constexpr void validate() const
+    {
+        detail::require_non_negative("Scene background", background);
+        detail::require_non_negative("Scene ambient", ambient);
+    }
+
+    /// Whether the scene keeps a tree over its bounded objects (at least tree_from).
+    [[nodiscard]] constexpr bool has_tree() const noexcept { return has_tree_; }
+
+    // Scene Queries
+
+    /// The closest crossing with t inside `range`. Every object is asked for its
+    /// crossings without their surfaces; only the nearest one is then asked again, over
+    /// the same range, for its surface.
+    [[nodiscard]] std::optional<Hit<T>> closest_hit(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        Nearest nearest{};
+        for (const detail::ObjectKey& key : unbounded_) nearest_of(key, no_copy, ray, range, nearest);
+        if (has_tree_) {
+            if constexpr (may_have_tree)
+                tree_.traverse_in_leaf_order(ray, range, [&](std::uint32_t p, Interval<T>& r) {
+                    nearest_of(keys_[p], p, ray, r, nearest);
+                    return false;
+                });
+        } else if (bounded_objects_ && cluster_.may_cross(ray, range)) {
+            // The scan meets objects in key order: with nothing unbounded found before it,
+            // no object can win a tie with one found before it.
+            const bool in_key_order = !nearest.found;
+            scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) {
+                test_nearest<I>(object_at<I>(k).shape, {std::uint32_t(I), k}, no_copy, ray, range, nearest, in_key_order);
+                return false;
+            });
+        }
+        if (!nearest.found) return std::nullopt;
+        return dispatch<slot_count>(nearest.slot, [&]<std::size_t I>(Index<I>) { return surface_in_slot<I>(ray, nearest); });
+    }
+
+    /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
+    /// object is in the way, otherwise what every dielectric crossed lets through
+    /// (attenuate_shadow_ray: its medium over the length inside, its tint per boundary;
+    /// refraction ignored, the lecture notes' shadow rays through transparent objects).
+    /// With ShadowsThroughGlass::blocked dielectrics block the ray like any other
+    /// object: a photon mapper brings the light through them by its caustic map instead
+    /// (as POV-Ray does for photon targets).
+    template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated>
+    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
+    {
+        Rgb<T> tr{T(1)};
+        detail::ShadowBoundaries<T> boundaries;
+        if (!open_along<Glass>(ray, t_max, tr, boundaries)) return Rgb<T>{T(0)};
+        // Where transmissive objects overlap, the higher priority's medium fills the
+        // overlap (medium/nesting.hpp): walk the boundaries in order instead.
+        if constexpr (has_transmissive && Glass == ShadowsThroughGlass::attenuated) {
+            if (boundaries.sort_and_find_overlap()) return transmittance_by_priority(ray, t_max, boundaries);
+        }
+        return tr;
+    }
+
+    /// Call f(material) with the material of object `index` of slot `slot`, with its
+    /// static type.
+    template <class F>
+    decltype(auto) visit_material(std::uint32_t slot, std::uint32_t index, F&& f) const
+    {
+        return dispatch<slot_count>(slot, [&]<std::size_t I>(Index<I>) -> decltype(auto) {
+            PRISM_ASSERT(index < objects_of(get<I>(slots)).size());
+            return f(objects_of(get<I>(slots))[index].material);
+        });
+    }
+
+    /// Call f(material) with the material of the hit object, with its static type.
+    template <class F>
+    decltype(auto) visit_material(const Hit<T>& hit, F&& f) const
+    {
+        return visit_material(hit.slot, hit.index, std::forward<F>(f));
+    }
+
+    /// Call f(object) for every object (its shape, material and whether it is bounded),
+    /// with its static type, slot by slot and in each slot in order.
+    template <class F>
+    void for_each_object(F&& f) const
+    {
+        for_each_slot([&]<std::size_t I>(Index<I>) {
+            for (const auto& object : objects_of(get<I>(slots))) f(object);
+        });
+    }
+
+    /// Call f(light) for every light.
+    template <class F>
+    void for_each_light(F&& f) const
+    {
+        std::apply([&](const auto&... light) { (f(light), ...); }, lights.items);
+    }
+
+    static constexpr std::size_t light_count = std::tuple_size_v<decltype(LightsOfScene::items)>;
+
+    /// Call f(light) with light number i (in the order of Lights{...}), with its static type.
+    template <class F>
+    decltype(auto) visit_light(std::size_t i, F&& f) const
+    {
+        return dispatch<light_count>(i, [&]<std::size_t I>(Index<I>) -> decltype(auto) { return f(std::get<I>(lights.items)); });
+    }
+
+private:
+    Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
+    bool bounded_objects_ = false;
+    bool has_tree_ = false;
+    Bvh<T> tree_; ///< over the bounded objects (when there are at least tree_from)
+    /// The object behind each of the tree's primitives, in its leaf order; without a tree
+    /// the bounded objects in key order. Built with the scene: the slots are not to be
+    /// changed after it.
+    std::vector<detail::ObjectKey> keys_;
+    std::vector<detail::ObjectKey> unbounded_; ///< in key order
+    std::vector<detail::ObjectKey> glass_;     ///< the transmissive objects, in key order
+    /// A scene of one slot: its bounded shapes in the tree's leaf order.
+    [[no_unique_address]] std::conditional_t<slot_count == 1, std::vector<typename SlotAt<0>::shape_type>, detail::NoShapes> shapes_;
+
+    // Scene Private Methods
+
+    /// The tree over the bounded objects' boxes (in key order), and the keys in its leaf order.
+    void build_tree(const std::vector<Aabb<T>>& boxes)
+    {
+        tree_ = Bvh<T>(boxes);
+        const std::vector<detail::ObjectKey> in_key_order = std::move(keys_);
+        keys_.clear();
+        for (const std::uint32_t p : tree_.primitives()) {
+            keys_.push_back(in_key_order[p]);
+            // One slot: its shapes side by side as a traversal meets them (a copy: the
+            // objects' materials stay out of the cache's way), and the surface pass
+            // takes the nearest from here too.
+            if constexpr (slot_count == 1) shapes_.push_back(objects_of(get<0>(slots))[in_key_order[p].index].shape);
+        }
+        has_tree_ = true;
+    }
+
+    /// The nearest object so far: where its first crossing is, and the range over
+    /// which it was found.
+    struct Nearest {
+        bool found = false;
+        std::uint32_t slot = 0, index = 0;
+        Interval<T> range{};
+        SurfaceHint<T> hint{}; ///< the shape's own (a mesh's triangle), for surface_crossing
+        /// Where shapes_ keeps a copy of the shape (else none): the surface pass reads
+        /// that copy, which the test has just brought into the cache.
+        std::uint32_t copy = no_copy;
+    };
+    static constexpr std::uint32_t no_copy = ~std::uint32_t(0);
+
+    /// f(Index<I>{}) for every slot I, in order (a braced list, not a fold: clang nests a
+    /// fold's terms, and refuses more than 256).
+    template <class F>
+    static constexpr void for_each_slot(F&& f)
+    {
+        [&]<std::size_t... I>(std::index_sequence<I...>) { [[maybe_unused]] const int in_order[] = {(f(Index<I>{}), 0)...}; }(std::index_sequence_for<Slots...>{});
+    }
+
+    template <std::size_t I>
+    [[nodiscard]] const auto& object_at(std::uint32_t k) const noexcept
+    {
+        return objects_of(get<I>(slots))[k];
+    }
+
+    /// The object behind the key (at position `copy` of shapes_, if it is there) asked for
+    /// the nearest, through the slot table. In whatever order the objects come, once one
+    /// is found each is asked up to just past its t, and one at exactly that t wins only
+    /// if its key comes first (as it would have in a scan of the slots in turn).
+    void nearest_of(const detail::ObjectKey& key, std::uint32_t copy, const Ray<T>& ray, Interval<T>& r, Nearest& nearest) const noexcept
+    {
+        dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) {
+            if constexpr (slot_count == 1)
+                if (copy != no_copy) return test_nearest<I>(shapes_[copy], key, copy, ray, r, nearest);
+            test_nearest<I>(object_at<I>(key.index).shape, key, no_copy, ray, r, nearest);
+        });
+    }
+
+    /// in_key_order: every object found so far came before this one in key order (a scan
+    /// with nothing found before it), so this one cannot win a tie at the nearest t, and
+    /// its range need not reach past it.
+    template <std::size_t I, class S>
+    void test_nearest(const S& shape, const detail::ObjectKey& key, std::uint32_t copy, const Ray<T>& ray, Interval<T>& r, Nearest& nearest,
+                      bool in_key_order = false) const noexcept
+    {
+        SurfaceHint<T> hint;
+        const bool may_tie = nearest.found && !in_key_order;
+        const T t = first_crossing(shape, ray, may_tie ? Interval<T>{r.min, next_float_up(r.max)} : r, hint);
+        if (!(t < infinity<T>)) return;
+        if (may_tie && !(t < r.max) && !key.before({nearest.slot, nearest.index})) return;
+        // Ending the range just past the crossing keeps every crossing before it, and so
+        // the same first one, while the surface pass refines nothing beyond it: no shape's
+        // answer up to a t depends on where its range ends (shapes cull by
+        // Aabb::reached_after, which ignores the end).
+        nearest = {true, key.slot, key.index, {r.min, next_float_up(t)}, hint, copy};
+        r.max = t;
+    }
+
+    /// visit(Index<I>{}, k) for every bounded object of a scene without a tree, in key
+    /// order, until one returns true (whether one did): for a few slots, the slots in
+    /// turn, each call inlined; for more, through the slot table.
+    template <class Visit>
+    bool scan_bounded(Visit&& visit) const noexcept
+    {
+        if constexpr (slot_count <= dispatch_chain_up_to) {
+            return [&]<std::size_t... I>(std::index_sequence<I...>) {
+                return ([&] {
+                    const auto list = objects_of(get<I>(slots));
+                    for (std::uint32_t k = 0; k < list.size(); ++k)
+                        if (list[k].bounded && visit(Index<I>{}, k)) return true;
+                    return false;
+                }() || ...);
+            }(std::index_sequence_for<Slots...>{});
+        } else {
+            for (const detail::ObjectKey& key : keys_)
+                if (dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) { return visit(Index<I>{}, key.index); })) return true;
+            return false;
+        }
+    }
+
+    /// The nearest object's first crossing with its surface: the same computation as
+    /// before over a range that holds the same crossings up to it, so the same t.
+    template <std::size_t I>
+    std::optional<Hit<T>> surface_in_slot(const Ray<T>& ray, const Nearest& nearest) const noexcept
+    {
+        const auto& shape = [&]() -> const auto& {
+            if constexpr (slot_count == 1)
+                if (nearest.copy != no_copy) return shapes_[nearest.copy]; // the same shape, bit for bit
+            return object_at<I>(nearest.index).shape;
+        }();
+        const auto crossing = surface_crossing(shape, ray, nearest.range, nearest.hint);
+        PRISM_ASSERT(crossing.has_value());
+        if (!crossing) return std::nullopt;
+        return Hit<T>{*crossing, nearest.slot, nearest.index};
+    }
+
+    /// Whether the slot's material lets a shadow ray through (attenuated) rather than
+    /// blocking it.
+    template <std::size_t I, ShadowsThroughGlass Glass>
+    static constexpr bool attenuates = transmits<typename SlotAt<I>::material_type> && Glass == ShadowsThroughGlass::attenuated;
+
+    /// transmittance's first pass: whether the ray is open. Opaque objects end it at their
+    /// first crossing, in whatever order they are met; the transmissive ones met are
+    /// gathered, then attenuate it in key order (a product is the same bits only in the
+    /// same order), where they cross it, marked in `boundaries`.
+    template <ShadowsThroughGlass Glass>
+    bool open_along(const Ray<T>& ray, T t_max, Rgb<T>& tr, detail::ShadowBoundaries<T>& boundaries) const noexcept
+    {
+        const Interval<T> range{T(0), t_max};
+        detail::ShadowKeys met;
+        const auto blocks_in = [&]<std::size_t I>(Index<I>, std::uint32_t k, std::uint32_t copy) {
+            if constexpr (attenuates<I, Glass>) {
+                met.add({std::uint32_t(I), k});
+                return false;
+            } else {
+                if constexpr (slot_count == 1)
+                    if (copy != no_copy) return any_crossing(shapes_[copy], ray, range);
+                return any_crossing(object_at<I>(k).shape, ray, range);
+            }
+        };
+        const auto blocks = [&](const detail::ObjectKey& key, std::uint32_t copy) {
+            return dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) { return blocks_in(Index<I>{}, key.index, copy); });
+        };
+        for (const detail::ObjectKey& key : unbounded_)
+            if (blocks(key, no_copy)) return false;
+        if (has_tree_) {
+            if constexpr (may_have_tree) {
+                Interval<T> r = range;
+                if (tree_.any_in_leaf_order(ray, r, [&](std::uint32_t p, Interval<T>&) { return blocks(keys_[p], p); })) return false;
+            }
+        } else if (bounded_objects_ && (cluster_.contains(ray.origin) || !cluster_.clip(ray, range).empty())) {
+            // (Unwidened: a shadow ray needs no spurious crossing a far-off shape might
+            // report; culling it can only let light through where rounding alone would
+            // block it.)
+            if (scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) { return blocks_in(Index<I>{}, k, no_copy); })) return false;
+        }
+        if constexpr (has_transmissive && Glass == ShadowsThroughGlass::attenuated) {
+            // More met than the list holds: every transmissive object, in key order (one
+            // the ray misses changes nothing).
+            const std::span<const detail::ObjectKey> in_order = met.overflow ? std::span<const detail::ObjectKey>(glass_) : met.sorted();
+            for (const detail::ObjectKey& key : in_order) {
+                dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) {
+                    if constexpr (attenuates<I, Glass>) {
+                        const auto& object = object_at<I>(key.index);
+                        const auto crossings = object.shape.template crossings<false>(ray, range);
+                        attenuate_shadow_ray(object.material, crossings, ray, t_max, tr);
+                        if (crossings.inside_at_start) boundaries.add({T(0), key.slot, key.index, true, true});
+                        for (const Crossing<T>& c : crossings) boundaries.add({c.t, key.slot, key.index, c.entering, false});
+                    }
+                });
+                if (max_component(tr) <= T(0)) return false;
+            }
+        }
+        return true;
+    }
+
+    /// A shadow ray through overlapping transmissive objects: each stretch attenuated by
+    /// the medium of the object it is in (the highest priority, medium/nesting.hpp), a
+    /// transmission tint at each real interface, none at a false one.
+    [[nodiscard]] Rgb<T> transmittance_by_priority(const Ray<T>& ray, T t_max, const detail::ShadowBoundaries<T>& boundaries) const noexcept
+    {
+        Rgb<T> tr{T(1)};
+        const T speed = length(ray.direction);
+        MediumStack media;
+        T previous = T(0);
+        const auto attenuate_to = [&](T t) {
+            if (const Inside* in = media.top()) {
+                visit_material(in->slot, in->index, [&]<class N>(const N& material) {
+                    if constexpr (transmits<N>) tr *= material.medium().transmittance((t - previous) * speed);
+                });
+            }
+            previous = t;
+        };
+        for (std::size_t i = 0; i < boundaries.count; ++i) {
+            const auto& b = boundaries.items[i];
+            attenuate_to(b.t);
+            visit_material(b.slot, b.index, [&]<class N>(const N& material) {
+                if constexpr (transmits<N>) {
+                    const Inside object{b.slot, b.index, nesting_priority(material)};
+                    if (b.at_start) {
+                        media = media.entered(object);
+                        return;
+                    }
+                    const Interface face = nested_interface(media, object, b.entering);
+                    if (face.real) tr *= material.transmission_tint();
+                    media = face.beyond;
+                }
+            });
+        }
+        attenuate_to(t_max);
+        return tr;
+    }
+};
+
+template <class L, class... Slots>
+Scene(L, Slots...) -> Scene<L, Slots...>;
+
+} // namespace prism
+
 // ---- prism/integrator/light_tracer.hpp ----
 // light_trace: the light-tracing half of prism's reference estimator, for the paths a
 // path tracer cannot find: those whose vertex next to the light is specular (a point
@@ -9143,7 +9185,7 @@ template <Integrator I>
 //
 // Light paths are emitted as the caustic map's photons are (aimed at each specular
 // object's bounding sphere, stratified by a scrambled Sobol sequence) and walked to
-// their end (photon/random_walk.hpp). At every diffuse vertex after a first specular
+// their end (transport/random_walk.hpp). At every diffuse vertex after a first specular
 // bounce, the path is joined to the pinhole by a shadow ray (glass opaque), adding
 // to the pixel it lands in
 //     power * (albedo / pi) * cos_x / (d^2 * A * cos_c^3)
@@ -9290,11 +9332,42 @@ template <class SceneT, class Air = StraightAir>
 
 } // namespace prism
 
+// ---- prism/transport/direct.hpp ----
+// Light arriving from each light at a surface point, by shadow rays: shared by the integrators.
+
+
+namespace prism {
+
+/// Shadow rays stop this fraction short of a point light, so a light placed on a
+/// surface is not shadowed by that surface (pbrt's ShadowEpsilon).
+template <Scalar T>
+inline constexpr T shadow_epsilon = T(1e-4);
+
+/// For each light in front of the surface on the side the ray arrived from, call
+/// f(sample, v, cos): the light's sample at the point, the shadow ray's transmittance v
+/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface (the
+/// shading normal's: shading_cosine). Lights behind the surface are not visited: they
+/// count as occluded. How dielectrics shadow: see Scene::transmittance.
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
+void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, F&& f)
+{
+    const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
+    scene.for_each_light([&](const auto& light) {
+        const LightSample<T> s = light.sample(hit.point);
+        const T cos = shading_cosine(n_shading, n, s.wi);
+        if (!(cos > T(0))) return;
+        const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
+        f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
+    });
+}
+
+} // namespace prism
+
 // ---- prism/integrator/path_tracer.hpp ----
 // PathTracer: the unbiased half of prism's reference estimator (the light tracer is the
 // other half, integrator/light_tracer.hpp).
 //
-// A camera path walks the scene as a photon does (photon/random_walk.hpp: Russian
+// A camera path walks the scene as a photon does (transport/random_walk.hpp: Russian
 // roulette by reflectance, Fresnel-weighted choice at glass, one wavelength band at a
 // dispersive interface) and, at every diffuse vertex, adds the light arriving from each
 // light by a shadow ray: next-event estimation, the only way a path can meet a point or
@@ -9709,7 +9782,8 @@ private:
 
     /// Final gathering over m x cells_n stratified cells (gather_hemisphere). Each ray
     /// walks on through mirrors and glass as a photon would (random_walk: Russian
-    /// roulette by reflectance, Fresnel's choice at glass) to the first diffuse surface,
+    /// roulette by reflectance, Fresnel's choice at glass) to the first diffuse surface
+    /// (and on through the delta lobes of a surface that also has one),
     /// where L = albedo / pi * E_global (the global map's precomputed irradiance, which
     /// holds every photon there): paths D S+ D carry colour bleeding seen in a mirror or
     /// through glass, and no light is counted twice, since light from a light through
@@ -9723,8 +9797,11 @@ private:
             const auto at_diffuse = [&]<class M>(const M& material, const WalkVertex<T>& at) {
                 const Crossing<T>& c = at.crossing();
                 const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
-                found = {at.power * diffuse_response(material, c).brdf() * e, at.travelled};
-                return false;
+                found.first += at.power * diffuse_response(material, c).brdf() * e;
+                found.second = std::min(found.second, at.travelled);
+                // The diffuse lobe's light is counted; a delta lobe beside it (a coat) still
+                // mirrors what lies beyond.
+                return reflects<M> || transmits<M> ? Lobes::delta : Lobes::none;
             };
             const auto escaped = [](const Ray<T>&, const Rgb<T>&, bool) {};
             // (About a shading normal, a direction may lead into the solid: no light.)

@@ -94,3 +94,22 @@ TEST_CASE("the final gather's furnace with and without the irradiance cache, and
         }
     }
 }
+
+TEST_CASE("the irradiance cache in the two-lobe furnace: every path, within 1 %")
+{
+    const auto scene = test::coated_furnace_scene();
+    using Mapper = PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
+    Mapper::Config config{.tracing = {.global_photons = 200000, .caustic_photons = 200000, .max_bounces = 64, .seed = 2},
+                          .caustic = {.radius = 0.1f},
+                          .gather_rays = 64,
+                          .max_depth = 16};
+    config.irradiance_cache.rays = 256;
+    Mapper mapper(scene, config);
+    const Camera<float> camera{.position = {0.01f, 0.02f, 0.03f}, .look_at = {0.3f, 0.2f, 1}, .fov = 90};
+    const RenderConfig render_config{.width = 32, .height = 32, .threads = 2, .progress = false};
+    mapper.cache_irradiance(camera, render_config);
+    CHECK(mapper.irradiance_cache().size() > 4);
+    const double mean = test::image_mean(render(camera, mapper, render_config));
+    MESSAGE("mean ", mean, " (closed form ", test::CoatedFurnace::all, ")");
+    CHECK(mean == doctest::Approx(test::CoatedFurnace::all).epsilon(0.01));
+}

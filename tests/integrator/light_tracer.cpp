@@ -4,6 +4,8 @@
 #include <prism/prism.hpp>
 #include <prism/render/render.hpp>
 
+#include "../furnace.hpp"
+
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -155,4 +157,15 @@ TEST_CASE("the light tracer's ranges of paths and crops add up to the whole imag
     const Film crop = light_trace(scene, camera, part), image = light_trace(scene, camera, config);
     for (int y = 2; y < 7; ++y)
         for (int x = 3; x < 9; ++x) CHECK(crop.at(x - 3, y - 2) == image.at(x, y));
+}
+
+TEST_CASE("the light tracer in the two-lobe furnace: the paths that leave the light by the coat's mirror, seen directly, within 1 %")
+{
+    const auto scene = test::coated_furnace_scene();
+    const Camera<float> camera{.position = {0.01f, 0.02f, 0.03f}, .look_at = {0.3f, 0.2f, 1}, .fov = 90};
+    constexpr int size = 8;
+    const Film traced = light_trace(scene, camera, {.width = size, .height = size, .paths = 4000000, .seed = 5, .threads = 2});
+    const double mean = test::image_mean(traced);
+    MESSAGE("light tracer ", mean, " (closed form ", test::CoatedFurnace::light_tracer, ")");
+    CHECK(mean == doctest::Approx(test::CoatedFurnace::light_tracer).epsilon(0.01));
 }

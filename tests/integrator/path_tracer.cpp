@@ -55,3 +55,22 @@ TEST_CASE("a path tracer's first bounce is Whitted's direct light, and the walls
     CHECK_THROWS_WITH_AS(PathTracer(floor, {.dispersion_bands = 0}), doctest::Contains("PathTracer dispersion_bands must be in [1, 81], got 0"),
                          std::invalid_argument);
 }
+
+TEST_CASE("the path tracer in the two-lobe furnace: rho_d / (1 - rho_s - rho_d) within 1 %, and no sample far above the mean")
+{
+    // A path picks the base with probability rho_d, the coat with rho_s and ends with
+    // 1 - rho_d - rho_s, so its weight stays 1: a sample is the sum of its vertices'
+    // direct light (0.5 each; 23.5 the largest of these). Before, a lobe was picked by
+    // its share of rho_d + rho_s and then played Russian roulette with its own
+    // reflectance: the weight grew by 1.4 or 3.5 per bounce, and single samples reached
+    // 10^4 times the mean.
+    const auto scene = test::coated_furnace_scene();
+    const PathTracer tracer(scene);
+    const test::SampleStats stats =
+        test::coated_furnace_samples([&](const Ray<float>& ray, Pcg32& rng) { return tracer.radiance(ray, rng); }, 400000);
+    MESSAGE("mean ", stats.mean, " (closed form ", test::CoatedFurnace::path_tracer, "), largest sample ", stats.largest);
+    CHECK(stats.mean == doctest::Approx(test::CoatedFurnace::path_tracer).epsilon(0.01));
+    // A vertex adds 0.5 at most (its direct light): 50 is a path of 100 vertices, which
+    // survives with probability 0.7^100 = 3e-16.
+    CHECK(stats.largest < 50);
+}

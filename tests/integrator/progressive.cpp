@@ -157,3 +157,18 @@ TEST_CASE("progressive photon mapping refuses settings that cannot converge or c
     far.first_pass = 4096;
     CHECK_THROWS_WITH_AS((void)render_progressive(camera, scene, far, small), doctest::Contains("reaches past photon index 2^32"), std::invalid_argument);
 }
+
+TEST_CASE("progressive photon mapping in the two-lobe furnace: every path, within 1 %")
+{
+    const auto scene = test::coated_furnace_scene();
+    using S = std::remove_cvref_t<decltype(scene)>;
+    ProgressiveConfig<S> config;
+    config.pass.tracing = {.global_photons = 50000, .caustic_photons = 50000, .max_bounces = 64, .shadow_photons = false, .seed = 4};
+    config.pass.max_depth = 16;
+    config.passes = 8;
+    const Camera<float> camera{.position = {0.01f, 0.02f, 0.03f}, .look_at = {0.3f, 0.2f, 1}, .fov = 90};
+    const ProgressiveResult result = render_progressive(camera, scene, config, {.width = 24, .height = 24, .threads = 2, .progress = false});
+    const double mean = test::image_mean(result.image());
+    MESSAGE("mean ", mean, " (closed form ", test::CoatedFurnace::all, ")");
+    CHECK(mean == doctest::Approx(test::CoatedFurnace::all).epsilon(0.01));
+}

@@ -219,3 +219,14 @@ TEST_CASE("a mesh floor with tilted vertex normals shades by the shading normal'
     CHECK(lit > 20);
     CHECK(dark > 20);
 }
+
+TEST_CASE("Whitted in the two-lobe furnace: direct light on the base and the coat's mirror images, rho_d / (1 - rho_s), within 1 %")
+{
+    // The coat's mirror images recurse (0.2^k falls under min_weight 1e-4 after 6), the
+    // base reads its direct light: 0.5 / 0.8 = 0.625.
+    const auto scene = test::coated_furnace_scene();
+    const Whitted whitted(scene, {.max_depth = 16, .min_weight = 1e-6f});
+    const test::SampleStats stats = test::coated_furnace_samples([&](const Ray<float>& ray, Pcg32&) { return whitted.radiance(ray); }, 2000);
+    CHECK(stats.mean == doctest::Approx(test::CoatedFurnace::whitted).epsilon(0.01));
+    CHECK(stats.largest <= 1.001 * test::CoatedFurnace::whitted); // no sample is random: every one reads the same
+}

@@ -6,7 +6,9 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 using prism::Rgb;
 using prism::Vec3;
@@ -132,6 +134,65 @@ TEST_CASE("photon scattering is unbiased per channel: the mean power leaving is 
     const prism::Dielectric<double> glass{};
     const auto [d3, s3] = mean_scattered(glass, d, n);
     CHECK(s3.x == Approx(1.0).epsilon(1e-12)); // reflected or refracted, the power is kept
+}
+
+namespace {
+
+/// Two lobes: Lambert of albedo `base` under a mirror of reflectance `coat` (a material
+/// only this file knows).
+struct CoatedMatte {
+    using scalar_type = double;
+    static constexpr bool has_diffuse = true;
+    static constexpr bool reflects = true;
+    static constexpr bool transmits = false;
+
+    Rgb<double> base;
+    Rgb<double> coat;
+
+    [[nodiscard]] prism::DiffuseResponse<double> diffuse(const Vec3<double>&) const noexcept { return {base, 1.0, 0.0}; }
+    [[nodiscard]] Rgb<double> reflectance(double) const noexcept { return coat; }
+    void validate() const {}
+};
+
+} // namespace
+
+TEST_CASE("two lobes: one decision picks each with its reflectance, so the mean is right per lobe and a survivor's power never grows")
+{
+    // Before, a lobe was picked by its share of the two (0.6 and 0.3 here: 2/3 and
+    // 1/3) and then played Russian roulette with its own reflectance, so a survivor came
+    // out with power 1.5 (or 3 after the coat); over bounces that grew without bound.
+    const int n = 400000;
+    const double tolerance = 7e-3;
+    const Vec3<double> d = prism::normalize(Vec3<double>{1, -1, 0});
+    const auto hit = prism::Crossing<double>::flat(1, {0, 0, 0}, {0, 0, 0}, {0, 1, 0}, true);
+    for (const auto& [material, largest_allowed] : {std::pair{CoatedMatte{{0.6, 0.3, 0.1}, {0.2, 0.1, 0.3}}, 1.0},
+                                                    // Lobes summing above 1 (1.4 in red) are scaled down together.
+                                                    std::pair{CoatedMatte{{0.9, 0.3, 0.1}, {0.5, 0.1, 0.3}}, 1.4}}) {
+        CAPTURE(material.base.x);
+        for (const prism::Lobes lobes : {prism::Lobes::all, prism::Lobes::delta}) {
+            CAPTURE(int(lobes));
+            prism::Pcg32 rng(7, 3);
+            Rgb<double> diffuse(0), specular(0);
+            double largest = 0;
+            for (int i = 0; i < n; ++i) {
+                Rgb<double> power(1);
+                const auto bounce = prism::scatter_photon(material, hit, d, power, rng, 0.0, 1.0, lobes);
+                if (!bounce) continue;
+                largest = std::max(largest, prism::max_component(power));
+                (bounce->diffuse ? diffuse : specular) += power / double(n);
+            }
+            CHECK(largest <= largest_allowed * (1 + 1e-12));
+            const Rgb<double> expected_diffuse = lobes == prism::Lobes::all ? material.base : Rgb<double>(0);
+            for (int c = 0; c < 3; ++c) {
+                CHECK(diffuse[c] == Approx(expected_diffuse[c]).epsilon(tolerance / std::max(expected_diffuse[c], 0.1)));
+                CHECK(specular[c] == Approx(material.coat[c]).epsilon(tolerance / material.coat[c]));
+            }
+        }
+        // No lobe at all: the path ends.
+        prism::Pcg32 rng(1, 1);
+        Rgb<double> power(1);
+        CHECK(!prism::scatter_photon(material, hit, d, power, rng, 0.0, 1.0, prism::Lobes::none));
+    }
 }
 
 namespace {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <prism/prism.hpp>
 
+#include "readme_material.hpp" // README.md's recipe for a material
+
 #include <doctest/doctest.h>
 
 // Every material states its traits; the scene derives what code its integrator needs.
@@ -159,4 +161,14 @@ TEST_CASE("coated glass defined in a test: Whitted sums its own Fresnel, tint an
         const double expected = t * t * std::exp(c == 2 ? -0.4 * 0.5 : 0.0) * 10 / (apparent * apparent);
         CHECK(maps.caustic.irradiance_within({0, 0, 0}, {0, 1, 0}, 0.25f)[c] == doctest::Approx(expected).epsilon(0.03));
     }
+}
+
+TEST_CASE("README's recipe for a material compiles as written and refuses a bad parameter by name")
+{
+    // README.md's code block, compiled from there (tools/snippets.py); tests/furnace.hpp
+    // renders it in every integrator.
+    static_assert(prism::Material<ClearCoat>);
+    CHECK_NOTHROW(ClearCoat{}.validate());
+    CHECK_THROWS_WITH_AS(ClearCoat{.coat = 0.6f}.validate(), doctest::Contains("ClearCoat coat must be >= 0 and coat + base at most 1, got 0.6"),
+                         std::invalid_argument);
 }

@@ -2,8 +2,11 @@
 #include <prism/photon/photon_tracer.hpp>
 #include <prism/prism.hpp>
 
+#include "../furnace.hpp"
+
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -287,4 +290,30 @@ TEST_CASE("shares of a distributed trace, put end to end, make trace_photons' ma
     }
     CHECK_THROWS_WITH_AS((void)trace_photon_share(scene, config, StraightAir{}, 0, 3, 3), doctest::Contains("part 3 of 3"), std::invalid_argument);
     CHECK_THROWS_WITH_AS((void)trace_photon_share(scene, config, StraightAir{}, 0, 0, 0), doctest::Contains("part 0 of 0"), std::invalid_argument);
+}
+
+TEST_CASE("photons off a two-lobe surface keep their power: a lobe is picked with its own reflectance, and the coat's light reaches the caustic map")
+{
+    // In the two-lobe furnace (tests/furnace.hpp) each bounce picks the base with
+    // probability rho_d = 0.5, the coat with rho_s = 0.2, and absorbs otherwise, so every
+    // stored photon carries the light's power over the photon count (4 pi^2 / N), as in a
+    // grey scene of one lobe. Before, a lobe was picked by its share of rho_d + rho_s and
+    // then survived by its own reflectance, and a photon's power grew 1.4 or 3.5 times
+    // per bounce. And the caustic map had no photon at all: its pass stopped at the first
+    // surface with a diffuse lobe, before any photon could take the coat.
+    const auto scene = test::coated_furnace_scene();
+    constexpr std::size_t count = 100000;
+    const PhotonMaps maps = trace_photons(scene, {.global_photons = count, .caustic_photons = count, .max_bounces = 64, .seed = 9});
+    const double each = 4 * pi<double> * pi<double> / double(count);
+    for (const PhotonMap* map : {&maps.global, &maps.caustic}) {
+        double largest = 0, total = 0;
+        for (const Photon& photon : map->photons()) {
+            largest = std::max(largest, double(photon.power().x));
+            total += double(photon.power().x);
+        }
+        CHECK(largest <= each * (1 + 1e-4));
+        // The caustic map holds the light's power Phi each time the coat alone has
+        // mirrored it k >= 1 times: Phi (rho_s + rho_s^2 + ...) = Phi rho_s / (1 - rho_s).
+        if (map == &maps.caustic) CHECK(total == doctest::Approx(4 * pi<double> * pi<double> * test::coat_mirror / (1 - test::coat_mirror)).epsilon(0.02));
+    }
 }

@@ -5,7 +5,7 @@
 //
 // Light paths are emitted as the caustic map's photons are (aimed at each specular
 // object's bounding sphere, stratified by a scrambled Sobol sequence) and walked to
-// their end (photon/random_walk.hpp). At every diffuse vertex after a first specular
+// their end (transport/random_walk.hpp). At every diffuse vertex after a first specular
 // bounce, the path is joined to the pinhole by a shadow ray (glass opaque), adding
 // to the pixel it lands in
 //     power * (albedo / pi) * cos_x / (d^2 * A * cos_c^3)
@@ -25,7 +25,7 @@
 #include <prism/core/offset.hpp>
 #include <prism/core/parallel.hpp>
 #include <prism/photon/photon_tracer.hpp>
-#include <prism/photon/random_walk.hpp>
+#include <prism/transport/random_walk.hpp>
 #include <prism/render/accumulation.hpp>
 #include <prism/render/film.hpp>
 #include <prism/render/render.hpp>

@@ -2,7 +2,7 @@
 // PathTracer: the unbiased half of prism's reference estimator (the light tracer is the
 // other half, integrator/light_tracer.hpp).
 //
-// A camera path walks the scene as a photon does (photon/random_walk.hpp: Russian
+// A camera path walks the scene as a photon does (transport/random_walk.hpp: Russian
 // roulette by reflectance, Fresnel-weighted choice at glass, one wavelength band at a
 // dispersive interface) and, at every diffuse vertex, adds the light arriving from each
 // light by a shadow ray: next-event estimation, the only way a path can meet a point or
@@ -21,10 +21,11 @@
 
 #include <prism/core/check.hpp>
 #include <prism/core/rng.hpp>
-#include <prism/integrator/direct.hpp>
+#include <prism/transport/direct.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/medium/air.hpp>
-#include <prism/photon/random_walk.hpp>
+#include <prism/transport/travel.hpp>
+#include <prism/transport/random_walk.hpp>
 #include <prism/render/layers.hpp>
 #include <prism/spectrum/bands.hpp>
 

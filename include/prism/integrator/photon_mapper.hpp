@@ -26,7 +26,6 @@
 #include <prism/core/parallel.hpp>
 #include <prism/core/rng.hpp>
 #include <prism/geometry/crossings.hpp>
-#include <prism/integrator/direct.hpp>
 #include <prism/integrator/irradiance_cache.hpp>
 #include <prism/light/light.hpp>
 #include <prism/material/scattering.hpp>
@@ -34,10 +33,13 @@
 #include <prism/medium/nesting.hpp>
 #include <prism/optics/refract.hpp>
 #include <prism/photon/photon_tracer.hpp>
-#include <prism/photon/random_walk.hpp>
 #include <prism/render/layers.hpp>
 #include <prism/render/render.hpp>
 #include <prism/scene/camera.hpp>
+#include <prism/transport/direct.hpp>
+#include <prism/transport/media.hpp>
+#include <prism/transport/random_walk.hpp>
+#include <prism/transport/travel.hpp>
 
 #include <algorithm>
 #include <optional>
@@ -344,7 +346,8 @@ private:
 
     /// Final gathering over m x cells_n stratified cells (gather_hemisphere). Each ray
     /// walks on through mirrors and glass as a photon would (random_walk: Russian
-    /// roulette by reflectance, Fresnel's choice at glass) to the first diffuse surface,
+    /// roulette by reflectance, Fresnel's choice at glass) to the first diffuse surface
+    /// (and on through the delta lobes of a surface that also has one),
     /// where L = albedo / pi * E_global (the global map's precomputed irradiance, which
     /// holds every photon there): paths D S+ D carry colour bleeding seen in a mirror or
     /// through glass, and no light is counted twice, since light from a light through
@@ -358,8 +361,11 @@ private:
             const auto at_diffuse = [&]<class M>(const M& material, const WalkVertex<T>& at) {
                 const Crossing<T>& c = at.crossing();
                 const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
-                found = {at.power * diffuse_response(material, c).brdf() * e, at.travelled};
-                return false;
+                found.first += at.power * diffuse_response(material, c).brdf() * e;
+                found.second = std::min(found.second, at.travelled);
+                // The diffuse lobe's light is counted; a delta lobe beside it (a coat) still
+                // mirrors what lies beyond.
+                return reflects<M> || transmits<M> ? Lobes::delta : Lobes::none;
             };
             const auto escaped = [](const Ray<T>&, const Rgb<T>&, bool) {};
             // (About a shading normal, a direction may lead into the solid: no light.)

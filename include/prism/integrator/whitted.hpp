@@ -16,16 +16,17 @@
 #include <prism/core/offset.hpp>
 #include <prism/core/rng.hpp>
 #include <prism/geometry/crossings.hpp>
-#include <prism/integrator/direct.hpp>
 #include <prism/light/light.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
-#include <prism/medium/air.hpp>
 #include <prism/medium/nesting.hpp>
 #include <prism/optics/refract.hpp>
 #include <prism/render/layers.hpp>
 #include <prism/scene/hit.hpp>
 #include <prism/spectrum/bands.hpp>
+#include <prism/transport/direct.hpp>
+#include <prism/transport/media.hpp>
+#include <prism/transport/travel.hpp>
 
 namespace prism {
 

@@ -15,6 +15,7 @@
 #include <prism/optics/refract.hpp>
 #include <prism/spectrum/bands.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 
@@ -325,34 +326,44 @@ struct PhotonBounce {
     bool diffuse;
 };
 
+/// The lobes a scattering may take: none (the path ends), the delta ones only (a caustic
+/// photon or a final-gather ray goes on past a diffuse lobe whose light is counted
+/// already), or all of them.
+enum class Lobes { none, delta, all };
+
 /// Scatter a photon of `power` arriving along the unit direction d at `hit`, by Russian
 /// roulette per channel (errata 7): a diffuse lobe reflects its photon reflectance into
 /// a cosine-distributed direction; an interface reflects with probability F and
 /// refracts otherwise, weighted by its tints; a conductor reflects by its reflectance.
-/// A material with a diffuse and a delta lobe first chooses one by their largest
-/// channels, dividing the power by that choice's probability. A photon of one
-/// wavelength (nanometres; 0: white) refracts at its index; `outside_index` is the index
-/// on the material's other side (1: air). Returns nothing when the photon is absorbed;
-/// scales `power` otherwise. With a shading normal (see above), the diffuse direction is
-/// cosine-distributed about it and a diffuse bounce sent into the solid is absorbed; a
-/// photon (Transport::importance) also takes Veach's correction |d.ns| |w.ng| /
-/// (|d.ng| |w.ns|) and is absorbed where it arrives behind the shading normal. A camera
-/// path (Transport::radiance) scatters by the same rules without them.
+/// A material with a diffuse and a delta lobe makes one decision over its lobes (the
+/// diffuse one, the reflection, the refraction): each is taken with the probability of
+/// its reflectance (its largest channel) and none with what is left, so a survivor's
+/// power is multiplied by its lobe's reflectance over that probability, at most 1 per
+/// channel, and stays bounded however many bounces it takes (where the lobes' largest
+/// channels sum above 1 they are scaled down together). `lobes`: which of them it may
+/// take. A photon of one wavelength (nanometres; 0: white) refracts at its index;
+/// `outside_index` is the index on the material's other side (1: air). Returns nothing
+/// when the photon is absorbed; scales `power` otherwise. With a shading normal (see
+/// above), the diffuse direction is cosine-distributed about it and a diffuse bounce
+/// sent into the solid is absorbed; a photon (Transport::importance) also takes Veach's
+/// correction |d.ns| |w.ng| / (|d.ng| |w.ns|) and is absorbed where it arrives behind
+/// the shading normal. A camera path (Transport::radiance) scatters by the same rules
+/// without them.
 template <Transport Mode = Transport::importance, Material M>
 [[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
                                                                                    const Crossing<typename M::scalar_type>& hit,
                                                                                    const Vec3<typename M::scalar_type>& d,
                                                                                    Rgb<typename M::scalar_type>& power, Pcg32& rng,
                                                                                    typename M::scalar_type wavelength_nm = 0,
-                                                                                   typename M::scalar_type outside_index = 1) noexcept
+                                                                                   typename M::scalar_type outside_index = 1,
+                                                                                   Lobes lobes = Lobes::all) noexcept
 {
     using T = typename M::scalar_type;
     using Bounce = std::optional<PhotonBounce<T>>;
-    // Each lobe's scattering, given what the material does here (computed once, also for
-    // choosing between two lobes).
+    if (lobes == Lobes::none) return std::nullopt;
     const Vec3<T> n = hit.facing_normal();
-    const auto scatter_diffusely = [&](const Rgb<T>& reflectance) -> Bounce {
-        if (!russian_roulette(power, reflectance, rng)) return std::nullopt;
+    // A diffuse bounce's direction, once the lobe is taken.
+    const auto diffuse_direction = [&]() -> Bounce {
         if (hit.shades_flat()) return PhotonBounce<T>{cosine_hemisphere(n, rng), true};
         const Vec3<T> ns = hit.facing_shading();
         const Vec3<T> w = cosine_hemisphere(ns, rng);
@@ -367,7 +378,35 @@ template <Transport Mode = Transport::importance, Material M>
         }
         return PhotonBounce<T>{w, true};
     };
-    const auto scatter_specularly = [&](const SpecularSplit<T>& split, const Vec3<T>& about) -> Bounce {
+    if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
+        // One decision over the lobes, each by its reflectance.
+        const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
+        const SpecularSplit<T> split = delta_split(material, d, n_delta, hit.entering, hit.point, wavelength_nm, outside_index);
+        const Rgb<T> diffuse = lobes == Lobes::all ? diffuse_response(material, hit).photon_reflectance() : Rgb<T>(T(0));
+        const Rgb<T> transmitted = split.refracted ? split.kt : Rgb<T>(T(0));
+        const T w_diffuse = max_component(diffuse), w_reflected = max_component(split.kr), w_transmitted = max_component(transmitted);
+        const T scale = std::max(T(1), w_diffuse + w_reflected + w_transmitted);
+        if (!(scale < infinity<T>)) return std::nullopt;
+        const T u = rng.uniform<T>() * scale;
+        if (u < w_diffuse) {
+            power *= diffuse * (scale / w_diffuse);
+            return diffuse_direction();
+        }
+        if (u < w_diffuse + w_reflected) {
+            power *= split.kr * (scale / w_reflected);
+            return PhotonBounce<T>{reflect(d, n_delta), false};
+        }
+        if (u < w_diffuse + w_reflected + w_transmitted) {
+            power *= transmitted * (scale / w_transmitted);
+            return PhotonBounce<T>{*split.refracted, false};
+        }
+        return std::nullopt;
+    } else if constexpr (M::has_diffuse) {
+        if (lobes != Lobes::all || !russian_roulette(power, diffuse_response(material, hit).photon_reflectance(), rng)) return std::nullopt;
+        return diffuse_direction();
+    } else {
+        const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
+        const SpecularSplit<T> split = delta_split(material, d, n_delta, hit.entering, hit.point, wavelength_nm, outside_index);
         if constexpr (M::transmits) {
             // Reflect with probability F (the mean of F per channel), refract otherwise;
             // each then by its tint. Per-channel F weighs the survivor by F / mean.
@@ -377,31 +416,11 @@ template <Transport Mode = Transport::importance, Material M>
                 power *= reflect_it ? split.fresnel / split.reflected_share
                                     : (Rgb<T>(T(1)) - split.fresnel) / (T(1) - split.reflected_share);
             }
-            return PhotonBounce<T>{reflect_it ? reflect(d, about) : *split.refracted, false};
+            return PhotonBounce<T>{reflect_it ? reflect(d, n_delta) : *split.refracted, false};
         } else {
             if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
-            return PhotonBounce<T>{reflect(d, about), false};
+            return PhotonBounce<T>{reflect(d, n_delta), false};
         }
-    };
-    if constexpr (M::has_diffuse && (M::reflects || M::transmits)) {
-        // Both lobes: choose one by its share of the reflected light (largest channels).
-        const Rgb<T> reflectance = diffuse_response(material, hit).photon_reflectance();
-        const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
-        const SpecularSplit<T> split = delta_split(material, d, n_delta, hit.entering, hit.point, wavelength_nm, outside_index);
-        const T w_diffuse = max_component(reflectance), w_delta = max_component(split.kr + split.kt);
-        if (!(w_diffuse + w_delta > T(0))) return std::nullopt;
-        const T p_diffuse = w_diffuse / (w_diffuse + w_delta);
-        if (rng.uniform<T>() < p_diffuse) {
-            power /= p_diffuse;
-            return scatter_diffusely(reflectance);
-        }
-        power /= T(1) - p_diffuse;
-        return scatter_specularly(split, n_delta);
-    } else if constexpr (M::has_diffuse) {
-        return scatter_diffusely(diffuse_response(material, hit).photon_reflectance());
-    } else {
-        const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
-        return scatter_specularly(delta_split(material, d, n_delta, hit.entering, hit.point, wavelength_nm, outside_index), n_delta);
     }
 }
 

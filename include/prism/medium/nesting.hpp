@@ -12,21 +12,19 @@
 // water modelled to overlap a glass's inner wall slightly (no coincident surfaces) is
 // cut by the glass, which has the higher priority. Among equal priorities the most
 // recently entered object is the medium, which is right for properly nested objects.
+// What the media do to light on its way (their index, their attenuation) is
+// transport/media.hpp's.
 #pragma once
 
-#include <prism/core/math.hpp>
-#include <prism/core/ray.hpp>
-#include <prism/material/scattering.hpp>
-#include <prism/material/traits.hpp>
-#include <prism/scene/hit.hpp>
-
 #include <array>
+#include <concepts>
+#include <cstddef>
 #include <cstdint>
 
 namespace prism {
 
 /// A material's nesting priority: its `priority` member, or 0.
-template <Material M>
+template <class M>
 [[nodiscard]] constexpr int nesting_priority(const M& material) noexcept
 {
     if constexpr (requires { { material.priority } -> std::convertible_to<int>; })
@@ -136,38 +134,6 @@ struct Interface {
 [[nodiscard]] constexpr const Inside* outside_of(const MediumStack& media, const Interface& face, bool entering) noexcept
 {
     return entering ? media.top() : face.beyond.top();
-}
-
-/// The refractive index of the medium of `object` for light of one wavelength (0: white):
-/// 1 for none (the scene's air) or for an object that does not transmit.
-template <class SceneT>
-[[nodiscard]] typename SceneT::scalar_type index_of(const SceneT& scene, const Inside* object, typename SceneT::scalar_type wavelength_nm) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    if (object == nullptr) return T(1);
-    return scene.visit_material(Hit<T>{{}, object->slot, object->index}, [&]<class M>(const M& material) -> T {
-        if constexpr (M::transmits)
-            return index_at(material, wavelength_nm);
-        else
-            return T(1);
-    });
-}
-
-/// Light that reached `hit` along `ray` travelled in the medium the ray is in: multiply
-/// by what it lets through over that length. A ray known to be in no object leaving a
-/// dielectric travelled inside it (the camera started there, or no nesting is tracked).
-template <class SceneT, Material M>
-void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& material, const Crossing<typename M::scalar_type>& hit,
-                       const Ray<typename M::scalar_type>& ray, Rgb<typename M::scalar_type>& light) noexcept
-{
-    using T = typename M::scalar_type;
-    if (const Inside* in = media.top()) {
-        scene.visit_material(Hit<T>{{}, in->slot, in->index}, [&]<class N>(const N& medium_material) {
-            if constexpr (N::transmits) light *= medium_material.medium().transmittance(hit.t * length(ray.direction));
-        });
-    } else {
-        attenuate_inside(material, hit, ray, light);
-    }
 }
 
 } // namespace prism

@@ -30,10 +30,10 @@
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/medium/air.hpp>
+#include <prism/transport/travel.hpp>
 #include <prism/medium/nesting.hpp>
 #include <prism/photon/photon_map.hpp>
-#include <prism/photon/random_walk.hpp>
-#include <prism/scene/object.hpp>
+#include <prism/transport/random_walk.hpp>
 #include <prism/spectrum/bands.hpp>
 
 #include <algorithm>
@@ -115,7 +115,13 @@ public:
         // A sphere around everything bounded: parallel photons start outside it.
         if (!scene.bounds().empty()) scene_sphere_ = scene.bounds().bounding_sphere();
         add_emitters(global_, false, {});
-        scene_.slots.apply([&](const auto&... slot) { [[maybe_unused]] const int in_order[] = {(add_targets(slot), 0)...}; });
+        // Every light aimed at each bounded specular object.
+        scene.for_each_object([&]<class Object>(const Object& object) {
+            using M = typename Object::material_type;
+            if constexpr (reflects<M> || transmits<M>) {
+                if (object.bounded) add_emitters(targets_, true, bounding_sphere(object.shape));
+            }
+        });
         drop_nested_targets();
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);
@@ -189,20 +195,22 @@ private:
                     [](const Ray<T>&, const Rgb<T>&, bool) {});
     }
 
-    /// Store photon i: in the caustic pass only L S+ D, ending the walk there.
+    /// Store photon i: in the caustic pass only L S+ D, going on past it only by delta lobes.
     void store(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, std::vector<Photon>& out) const
     {
-        emit(emitters, total_power, count, i, caustic_pass, [&](const auto&, const WalkVertex<T>& at, const Rgb<T>& power) {
+        emit(emitters, total_power, count, i, caustic_pass, [&]<class M>(const M&, const WalkVertex<T>& at, const Rgb<T>& power) {
             const Crossing<T>& c = at.crossing();
             if (caustic_pass) {
                 if (!at.direct && at.specular_only()) out.push_back(photon(c, power, at.direction, Photon::caustic));
-                return false;
+                // What a diffuse lobe sends on is the global map's; a delta lobe (a coat
+                // over the diffuse one) may still send a caustic on.
+                return (reflects<M> || transmits<M>) && at.specular_only() ? Lobes::delta : Lobes::none;
             }
             std::uint8_t flags = at.direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
             if (!at.direct && at.specular_only()) flags |= Photon::caustic;
             out.push_back(photon(c, power, at.direction, flags));
             if (at.direct && config_.shadow_photons) store_shadow_photons(c, at.direction, out);
-            return true;
+            return Lobes::all;
         });
     }
 
@@ -274,17 +282,6 @@ private:
             if (!nested) kept.push_back(targets_[i]);
         }
         targets_ = std::move(kept);
-    }
-
-    /// Every light aimed at each bounded specular object of the slot.
-    template <class Slot>
-    void add_targets(const Slot& slot)
-    {
-        using M = typename Slot::material_type;
-        if constexpr (reflects<M> || transmits<M>) {
-            for (const auto& object : objects_of(slot))
-                if (object.bounded) add_emitters(targets_, true, bounding_sphere(object.shape));
-        }
     }
 
     const SceneT& scene_;

@@ -285,13 +285,31 @@ public:
         return tr;
     }
 
+    /// Call f(material) with the material of object `index` of slot `slot`, with its
+    /// static type.
+    template <class F>
+    decltype(auto) visit_material(std::uint32_t slot, std::uint32_t index, F&& f) const
+    {
+        return dispatch<slot_count>(slot, [&]<std::size_t I>(Index<I>) -> decltype(auto) {
+            PRISM_ASSERT(index < objects_of(get<I>(slots)).size());
+            return f(objects_of(get<I>(slots))[index].material);
+        });
+    }
+
     /// Call f(material) with the material of the hit object, with its static type.
     template <class F>
     decltype(auto) visit_material(const Hit<T>& hit, F&& f) const
     {
-        return dispatch<slot_count>(hit.slot, [&]<std::size_t I>(Index<I>) -> decltype(auto) {
-            PRISM_ASSERT(hit.index < objects_of(get<I>(slots)).size());
-            return f(objects_of(get<I>(slots))[hit.index].material);
+        return visit_material(hit.slot, hit.index, std::forward<F>(f));
+    }
+
+    /// Call f(object) for every object (its shape, material and whether it is bounded),
+    /// with its static type, slot by slot and in each slot in order.
+    template <class F>
+    void for_each_object(F&& f) const
+    {
+        for_each_slot([&]<std::size_t I>(Index<I>) {
+            for (const auto& object : objects_of(get<I>(slots))) f(object);
         });
     }
 
@@ -512,7 +530,7 @@ private:
         T previous = T(0);
         const auto attenuate_to = [&](T t) {
             if (const Inside* in = media.top()) {
-                visit_material(Hit<T>{{}, in->slot, in->index}, [&]<class N>(const N& material) {
+                visit_material(in->slot, in->index, [&]<class N>(const N& material) {
                     if constexpr (transmits<N>) tr *= material.medium().transmittance((t - previous) * speed);
                 });
             }
@@ -521,7 +539,7 @@ private:
         for (std::size_t i = 0; i < boundaries.count; ++i) {
             const auto& b = boundaries.items[i];
             attenuate_to(b.t);
-            visit_material(Hit<T>{{}, b.slot, b.index}, [&]<class N>(const N& material) {
+            visit_material(b.slot, b.index, [&]<class N>(const N& material) {
                 if constexpr (transmits<N>) {
                     const Inside object{b.slot, b.index, nesting_priority(material)};
                     if (b.at_start) {

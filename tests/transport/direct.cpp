@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <prism/integrator/direct.hpp>
+#include <prism/transport/direct.hpp>
 #include <prism/prism.hpp>
 
 #include <doctest/doctest.h>

@@ -15,12 +15,14 @@
 #include <prism/geometry/crossings.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
-#include <prism/medium/air.hpp>
 #include <prism/medium/nesting.hpp>
 #include <prism/scene/hit.hpp>
 #include <prism/spectrum/bands.hpp>
+#include <prism/transport/media.hpp>
+#include <prism/transport/travel.hpp>
 
 #include <algorithm>
+#include <concepts>
 #include <type_traits>
 #include <variant>
 
@@ -44,8 +46,9 @@ struct WalkVertex {
 };
 
 /// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
-/// on_diffuse(material, WalkVertex) is called at every diffuse surface and returns false
-/// to end the walk there; on_escape(ray, power, specular_only) when the path leaves the
+/// on_diffuse(material, WalkVertex) is called at every diffuse surface and returns the
+/// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
+/// there); on_escape(ray, power, specular_only) when the path leaves the
 /// scene. `Mode`: whether the path is a photon's or a camera's (scatter_photon).
 template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
@@ -74,8 +77,12 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         const Next next_step = scene.visit_material(*hit, [&]<class M>(const M& material) -> Next {
             // What the medium it travelled in let through, before anything else.
             attenuate_segment(scene, media, material, c, segment, power);
+            Lobes lobes = Lobes::all;
             if constexpr (has_diffuse<M>) {
-                if (!on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media})) return Next::absorbed;
+                const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media});
+                if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
+                else lobes = go_on;
+                if (lobes == Lobes::none) return Next::absorbed;
             }
             // The media beyond the surface, the object whose medium lies on its far
             // side, and false interfaces (inside a medium of higher priority) passed.
@@ -102,7 +109,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 }
             }
             const Vec3<T> n = c.facing_normal();
-            const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, index_of(scene, outside, wavelength));
+            const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, index_of(scene, outside, wavelength), lobes);
             if (!next) return Next::absorbed;
             ray = spawn_ray(c.point, c.error, c.normal, next->direction);
             if (next->diffuse) ++diffuse_bounces;
