@@ -631,12 +631,17 @@ inline void require_memory(const std::string& what, double bytes)
 } // namespace prism::detail
 
 // ---- prism/core/parallel.hpp ----
-// Threads for the loops whose every iteration writes its own place: the result is the
-// same for any thread count.
+// The one way prism runs work on threads: blocks of work dealt to workers as they ask
+// (render tiles, photon shares, light-tracer paths, irradiance records). Each block
+// writes only what belongs to it, or to its worker's own buffer, so the result is the
+// same for any thread count; progress is an observer's, on the calling thread.
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <cstddef>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -648,22 +653,61 @@ namespace prism::detail {
     return requested != 0 ? requested : std::max(1u, std::thread::hardware_concurrency());
 }
 
+/// The workers parallel_blocks runs for `blocks` blocks on `threads` (0 = all hardware
+/// threads): never more than there are blocks, at least one.
+[[nodiscard]] inline unsigned workers_for(std::size_t blocks, unsigned threads) noexcept
+{
+    return unsigned(std::clamp<std::size_t>(worker_count(threads), 1, std::max<std::size_t>(blocks, 1)));
+}
+
+/// No observer: the calling thread works as worker 0.
+struct Unwatched {};
+
+/// work(block, worker) for every block in [0, blocks), each taken by the next worker to
+/// ask; worker in [0, workers_for(blocks, threads)), so a caller may keep a buffer per
+/// worker. With an observer, the calling thread leaves the work to the workers and calls
+/// watch(blocks_done) every `every` until they finish (a progress report); without one,
+/// it works beside them.
+template <class Work, class Watch = Unwatched>
+void parallel_blocks(std::size_t blocks, unsigned threads, Work&& work, Watch&& watch = {},
+                     std::chrono::milliseconds every = std::chrono::milliseconds(250))
+{
+    constexpr bool watched = !std::is_same_v<std::remove_cvref_t<Watch>, Unwatched>;
+    const unsigned workers = workers_for(blocks, threads);
+    std::atomic<std::size_t> next{0}, done{0};
+    std::mutex mutex;
+    std::condition_variable finished;
+    unsigned running = workers;
+    const auto run = [&](unsigned worker) {
+        for (std::size_t b = next++; b < blocks; b = next++) {
+            work(b, worker);
+            if constexpr (watched) ++done;
+        }
+        if constexpr (watched) {
+            const std::lock_guard lock(mutex);
+            if (--running == 0) finished.notify_all();
+        }
+    };
+    std::vector<std::thread> pool;
+    pool.reserve(workers);
+    for (unsigned w = watched ? 0 : 1; w < workers; ++w) pool.emplace_back(run, w);
+    if constexpr (watched) {
+        std::unique_lock lock(mutex);
+        while (!finished.wait_for(lock, every, [&] { return running == 0; })) watch(done.load());
+    } else {
+        run(0);
+    }
+    for (auto& thread : pool) thread.join();
+}
+
 /// f(i) for every i in [0, count), in chunks of `chunk` taken by up to `threads` threads
 /// (0 = all hardware threads); f must write only what belongs to i.
 template <class F>
 void parallel_for(std::size_t count, unsigned threads, F&& f, std::size_t chunk = 256)
 {
-    const std::size_t chunks = (count + chunk - 1) / chunk;
-    std::atomic<std::size_t> next{0};
-    const auto work = [&] {
-        for (std::size_t c = next++; c < chunks; c = next++)
-            for (std::size_t i = c * chunk, end = std::min(count, (c + 1) * chunk); i < end; ++i) f(i);
-    };
-    const auto workers_wanted = std::min<std::size_t>(worker_count(threads), std::max<std::size_t>(chunks, 1));
-    std::vector<std::thread> workers;
-    for (std::size_t i = 1; i < workers_wanted; ++i) workers.emplace_back(work);
-    work();
-    for (auto& worker : workers) worker.join();
+    parallel_blocks((count + chunk - 1) / chunk, threads, [&](std::size_t c, unsigned) {
+        for (std::size_t i = c * chunk, end = std::min(count, (c + 1) * chunk); i < end; ++i) f(i);
+    });
 }
 
 } // namespace prism::detail
@@ -7007,11 +7051,9 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
 
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <string>
-#include <thread>
 #include <type_traits>
 #include <utility>
 #include <variant>
@@ -7276,26 +7318,18 @@ std::vector<Photon> trace_in_fixed_blocks(std::size_t count, unsigned threads, T
 {
     constexpr std::size_t block = 4096;
     const std::size_t blocks = (count + block - 1) / block;
-    threads = static_cast<unsigned>(std::min<std::size_t>(worker_count(threads), std::max<std::size_t>(blocks, 1)));
     struct Part {
         unsigned worker = 0;
         std::size_t begin = 0, end = 0;
     };
     std::vector<Part> parts(blocks);
-    std::vector<std::vector<Photon>> local(threads);
-    std::atomic<std::size_t> next{0};
-    const auto work = [&](unsigned worker) {
+    std::vector<std::vector<Photon>> local(workers_for(blocks, threads));
+    parallel_blocks(blocks, threads, [&](std::size_t b, unsigned worker) {
         std::vector<Photon>& out = local[worker];
-        for (std::size_t b = next++; b < blocks; b = next++) {
-            const std::size_t begin = out.size();
-            trace(b * block, std::min(count, (b + 1) * block), out);
-            parts[b] = {worker, begin, out.size()};
-        }
-    };
-    std::vector<std::thread> workers;
-    for (unsigned i = 1; i < threads; ++i) workers.emplace_back(work, i);
-    work(0);
-    for (auto& worker : workers) worker.join();
+        const std::size_t begin = out.size();
+        trace(b * block, std::min(count, (b + 1) * block), out);
+        parts[b] = {worker, begin, out.size()};
+    });
     std::size_t total = 0;
     for (const Part& part : parts) total += part.end - part.begin;
     std::vector<Photon> all;
@@ -8093,23 +8127,19 @@ struct Camera {
 } // namespace prism
 
 // ---- prism/render/render.hpp ----
-// render(): camera rays per pixel, tiles on std::thread workers, one RNG stream per
+// render(): camera rays per pixel, tiles dealt to worker threads (core/parallel.hpp), one RNG stream per
 // sample of each pixel; a crop window or a range of the samples renders a part of the
 // image that adds up with the other parts to the whole, bit for bit.
 
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <concepts>
-#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
-#include <mutex>
 #include <span>
-#include <thread>
 #include <vector>
 
 namespace prism {
@@ -8236,56 +8266,34 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
     const std::int64_t tiles_x = (std::int64_t(window.width()) - 1) / tile + 1;
     const std::int64_t tiles_y = (std::int64_t(window.height()) - 1) / tile + 1;
     const std::int64_t tile_count = tiles_x * tiles_y;
-    std::atomic<std::int64_t> next_tile{0};
-    std::atomic<std::int64_t> tiles_done{0};
-    std::mutex mutex;
-    std::condition_variable finished;
-    unsigned running = 0;
-
-    const auto work = [&] {
-        for (std::int64_t t = next_tile++; t < tile_count; t = next_tile++) {
-            const auto x0 = static_cast<int>(window.x0 + (t % tiles_x) * tile), y0 = static_cast<int>(window.y0 + (t / tiles_x) * tile);
-            const auto x1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(x0) + tile, window.x1));
-            const auto y1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(y0) + tile, window.y1));
-            for (int y = y0; y < y1; ++y)
-                for (int x = x0; x < x1; ++x) {
-                    const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
-                    std::array<ExactSum, N> sum{};
-                    std::size_t rejected = 0;
-                    for (std::uint64_t s = samples.first; s < samples.last; ++s) {
-                        Pcg32 rng(sample_seed(config.seed, s), pixel);
-                        const auto [dx, dy] = pixel_sample<T>(int(s), config.spp, rng, config.single_sample_at_centre);
-                        rejected += sample(rays.ray(T(x) + dx, T(y) + dy), rng, sum);
-                    }
-                    store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
-                }
-            ++tiles_done;
-        }
-        const std::lock_guard lock(mutex);
-        if (--running == 0) finished.notify_all();
-    };
-
-    unsigned threads = worker_count(config.threads);
-    threads = static_cast<unsigned>(std::min<std::int64_t>(threads, tile_count));
-    running = threads;
-    std::vector<std::thread> workers;
-    workers.reserve(threads);
-    for (unsigned i = 0; i < threads; ++i) workers.emplace_back(work);
-
     // Report progress while waiting, once the render has taken more than a second.
     const auto start = std::chrono::steady_clock::now();
     bool reported = false;
-    {
-        std::unique_lock lock(mutex);
-        while (!finished.wait_for(lock, std::chrono::milliseconds(250), [&] { return running == 0; })) {
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (config.progress && seconds > 1.0) {
-                std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", static_cast<int>(100 * tiles_done.load() / tile_count), seconds);
-                reported = true;
-            }
+    const auto progress = [&](std::size_t tiles_done) {
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (config.progress && seconds > 1.0) {
+            std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", static_cast<int>(100 * std::int64_t(tiles_done) / tile_count), seconds);
+            reported = true;
         }
-    }
-    for (auto& worker : workers) worker.join();
+    };
+    parallel_blocks(std::size_t(tile_count), config.threads, [&](std::size_t block, unsigned) {
+        const auto t = std::int64_t(block);
+        const auto x0 = static_cast<int>(window.x0 + (t % tiles_x) * tile), y0 = static_cast<int>(window.y0 + (t / tiles_x) * tile);
+        const auto x1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(x0) + tile, window.x1));
+        const auto y1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(y0) + tile, window.y1));
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
+                std::array<ExactSum, N> sum{};
+                std::size_t rejected = 0;
+                for (std::uint64_t s = samples.first; s < samples.last; ++s) {
+                    Pcg32 rng(sample_seed(config.seed, s), pixel);
+                    const auto [dx, dy] = pixel_sample<T>(int(s), config.spp, rng, config.single_sample_at_centre);
+                    rejected += sample(rays.ray(T(x) + dx, T(y) + dy), rng, sum);
+                }
+                store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
+            }
+    }, progress);
     if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
 }
 
@@ -9203,9 +9211,7 @@ Scene(L, Slots...) -> Scene<L, Slots...>;
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
-#include <thread>
 #include <vector>
 
 namespace prism {
@@ -9296,20 +9302,13 @@ void light_trace_into(Accumulation& sums, const SceneT& scene, const Camera<type
     // which thread took which block changes no bit.
     constexpr std::uint64_t block = 16384;
     const std::uint64_t blocks = (traced.count() + block - 1) / block;
-    unsigned threads = detail::worker_count(config.threads);
-    threads = unsigned(std::clamp<std::uint64_t>(threads, 1, blocks));
     std::vector<Accumulation> buffers;
-    buffers.reserve(threads);
-    for (unsigned k = 0; k < threads; ++k) buffers.emplace_back(config.width, config.height, window);
-    std::atomic<std::uint64_t> next{0};
-    const auto run = [&](unsigned k) {
-        for (std::uint64_t b = next++; b < blocks; b = next++)
-            trace_block(traced.first + b * block, std::min(traced.last, traced.first + (b + 1) * block), buffers[k]);
-    };
-    std::vector<std::thread> workers;
-    for (unsigned k = 1; k < threads; ++k) workers.emplace_back(run, k);
-    run(0);
-    for (auto& worker : workers) worker.join();
+    const unsigned workers = detail::workers_for(blocks, config.threads);
+    buffers.reserve(workers);
+    for (unsigned k = 0; k < workers; ++k) buffers.emplace_back(config.width, config.height, window);
+    detail::parallel_blocks(blocks, config.threads, [&](std::size_t b, unsigned worker) {
+        trace_block(traced.first + b * block, std::min(traced.last, traced.first + (b + 1) * block), buffers[worker]);
+    });
     for (const Accumulation& buffer : buffers) sums += buffer;
 }
 

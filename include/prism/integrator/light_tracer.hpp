@@ -34,9 +34,7 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
-#include <thread>
 #include <vector>
 
 namespace prism {
@@ -127,20 +125,13 @@ void light_trace_into(Accumulation& sums, const SceneT& scene, const Camera<type
     // which thread took which block changes no bit.
     constexpr std::uint64_t block = 16384;
     const std::uint64_t blocks = (traced.count() + block - 1) / block;
-    unsigned threads = detail::worker_count(config.threads);
-    threads = unsigned(std::clamp<std::uint64_t>(threads, 1, blocks));
     std::vector<Accumulation> buffers;
-    buffers.reserve(threads);
-    for (unsigned k = 0; k < threads; ++k) buffers.emplace_back(config.width, config.height, window);
-    std::atomic<std::uint64_t> next{0};
-    const auto run = [&](unsigned k) {
-        for (std::uint64_t b = next++; b < blocks; b = next++)
-            trace_block(traced.first + b * block, std::min(traced.last, traced.first + (b + 1) * block), buffers[k]);
-    };
-    std::vector<std::thread> workers;
-    for (unsigned k = 1; k < threads; ++k) workers.emplace_back(run, k);
-    run(0);
-    for (auto& worker : workers) worker.join();
+    const unsigned workers = detail::workers_for(blocks, config.threads);
+    buffers.reserve(workers);
+    for (unsigned k = 0; k < workers; ++k) buffers.emplace_back(config.width, config.height, window);
+    detail::parallel_blocks(blocks, config.threads, [&](std::size_t b, unsigned worker) {
+        trace_block(traced.first + b * block, std::min(traced.last, traced.first + (b + 1) * block), buffers[worker]);
+    });
     for (const Accumulation& buffer : buffers) sums += buffer;
 }
 

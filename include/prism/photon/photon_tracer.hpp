@@ -37,11 +37,9 @@
 #include <prism/spectrum/bands.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <string>
-#include <thread>
 #include <type_traits>
 #include <utility>
 #include <variant>
@@ -306,26 +304,18 @@ std::vector<Photon> trace_in_fixed_blocks(std::size_t count, unsigned threads, T
 {
     constexpr std::size_t block = 4096;
     const std::size_t blocks = (count + block - 1) / block;
-    threads = static_cast<unsigned>(std::min<std::size_t>(worker_count(threads), std::max<std::size_t>(blocks, 1)));
     struct Part {
         unsigned worker = 0;
         std::size_t begin = 0, end = 0;
     };
     std::vector<Part> parts(blocks);
-    std::vector<std::vector<Photon>> local(threads);
-    std::atomic<std::size_t> next{0};
-    const auto work = [&](unsigned worker) {
+    std::vector<std::vector<Photon>> local(workers_for(blocks, threads));
+    parallel_blocks(blocks, threads, [&](std::size_t b, unsigned worker) {
         std::vector<Photon>& out = local[worker];
-        for (std::size_t b = next++; b < blocks; b = next++) {
-            const std::size_t begin = out.size();
-            trace(b * block, std::min(count, (b + 1) * block), out);
-            parts[b] = {worker, begin, out.size()};
-        }
-    };
-    std::vector<std::thread> workers;
-    for (unsigned i = 1; i < threads; ++i) workers.emplace_back(work, i);
-    work(0);
-    for (auto& worker : workers) worker.join();
+        const std::size_t begin = out.size();
+        trace(b * block, std::min(count, (b + 1) * block), out);
+        parts[b] = {worker, begin, out.size()};
+    });
     std::size_t total = 0;
     for (const Part& part : parts) total += part.end - part.begin;
     std::vector<Photon> all;

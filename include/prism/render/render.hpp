@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// render(): camera rays per pixel, tiles on std::thread workers, one RNG stream per
+// render(): camera rays per pixel, tiles dealt to worker threads (core/parallel.hpp), one RNG stream per
 // sample of each pixel; a crop window or a range of the samples renders a part of the
 // image that adds up with the other parts to the whole, bit for bit.
 #pragma once
@@ -15,16 +15,12 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <concepts>
-#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
-#include <mutex>
 #include <span>
-#include <thread>
 #include <vector>
 
 namespace prism {
@@ -151,56 +147,34 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
     const std::int64_t tiles_x = (std::int64_t(window.width()) - 1) / tile + 1;
     const std::int64_t tiles_y = (std::int64_t(window.height()) - 1) / tile + 1;
     const std::int64_t tile_count = tiles_x * tiles_y;
-    std::atomic<std::int64_t> next_tile{0};
-    std::atomic<std::int64_t> tiles_done{0};
-    std::mutex mutex;
-    std::condition_variable finished;
-    unsigned running = 0;
-
-    const auto work = [&] {
-        for (std::int64_t t = next_tile++; t < tile_count; t = next_tile++) {
-            const auto x0 = static_cast<int>(window.x0 + (t % tiles_x) * tile), y0 = static_cast<int>(window.y0 + (t / tiles_x) * tile);
-            const auto x1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(x0) + tile, window.x1));
-            const auto y1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(y0) + tile, window.y1));
-            for (int y = y0; y < y1; ++y)
-                for (int x = x0; x < x1; ++x) {
-                    const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
-                    std::array<ExactSum, N> sum{};
-                    std::size_t rejected = 0;
-                    for (std::uint64_t s = samples.first; s < samples.last; ++s) {
-                        Pcg32 rng(sample_seed(config.seed, s), pixel);
-                        const auto [dx, dy] = pixel_sample<T>(int(s), config.spp, rng, config.single_sample_at_centre);
-                        rejected += sample(rays.ray(T(x) + dx, T(y) + dy), rng, sum);
-                    }
-                    store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
-                }
-            ++tiles_done;
-        }
-        const std::lock_guard lock(mutex);
-        if (--running == 0) finished.notify_all();
-    };
-
-    unsigned threads = worker_count(config.threads);
-    threads = static_cast<unsigned>(std::min<std::int64_t>(threads, tile_count));
-    running = threads;
-    std::vector<std::thread> workers;
-    workers.reserve(threads);
-    for (unsigned i = 0; i < threads; ++i) workers.emplace_back(work);
-
     // Report progress while waiting, once the render has taken more than a second.
     const auto start = std::chrono::steady_clock::now();
     bool reported = false;
-    {
-        std::unique_lock lock(mutex);
-        while (!finished.wait_for(lock, std::chrono::milliseconds(250), [&] { return running == 0; })) {
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (config.progress && seconds > 1.0) {
-                std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", static_cast<int>(100 * tiles_done.load() / tile_count), seconds);
-                reported = true;
-            }
+    const auto progress = [&](std::size_t tiles_done) {
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (config.progress && seconds > 1.0) {
+            std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", static_cast<int>(100 * std::int64_t(tiles_done) / tile_count), seconds);
+            reported = true;
         }
-    }
-    for (auto& worker : workers) worker.join();
+    };
+    parallel_blocks(std::size_t(tile_count), config.threads, [&](std::size_t block, unsigned) {
+        const auto t = std::int64_t(block);
+        const auto x0 = static_cast<int>(window.x0 + (t % tiles_x) * tile), y0 = static_cast<int>(window.y0 + (t / tiles_x) * tile);
+        const auto x1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(x0) + tile, window.x1));
+        const auto y1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(y0) + tile, window.y1));
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
+                std::array<ExactSum, N> sum{};
+                std::size_t rejected = 0;
+                for (std::uint64_t s = samples.first; s < samples.last; ++s) {
+                    Pcg32 rng(sample_seed(config.seed, s), pixel);
+                    const auto [dx, dy] = pixel_sample<T>(int(s), config.spp, rng, config.single_sample_at_centre);
+                    rejected += sample(rays.ray(T(x) + dx, T(y) + dy), rng, sum);
+                }
+                store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
+            }
+    }, progress);
     if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
 }
 
