@@ -32,16 +32,28 @@ typename prism::PhotonMapper<SceneT>::Config photon_mapper_config(const Options&
             .visibility_k = options.visibility};
 }
 
-/// Progressive photon mapping's settings from the command line (--method progressive).
+/// Progressive photon mapping's settings from the command line (--method progressive):
+/// --spp samples per pixel in each pass.
 template <class SceneT>
 prism::ProgressiveConfig<SceneT> progressive_config(const Options& options)
 {
     prism::ProgressiveConfig<SceneT> progressive;
     progressive.pass = photon_mapper_config<SceneT>(options);
     progressive.pass.caustic.k = 0; // progressive estimates are by radius
-    progressive.passes = options.passes;
-    progressive.first_pass = options.first_pass;
+    progressive.samples = options.render.spp;
     return progressive;
+}
+
+/// The render settings of an integrator of passes: progressive photon mapping's passes
+/// are --passes N (or A:B), the reference's --spp.
+inline prism::RenderConfig pass_render_config(const Options& options)
+{
+    prism::RenderConfig r = options.render;
+    if (options.method == "progressive") {
+        r.spp = int(options.first_pass + options.passes);
+        r.passes = {options.first_pass, options.first_pass + options.passes};
+    }
+    return r;
 }
 
 /// Render `scene` through `camera` by options.method, reporting the stages' times on stdout:
@@ -57,34 +69,22 @@ Rendered render_by_method(const std::string& name, const SceneT& scene, const pr
     using Mapper = prism::PhotonMapper<SceneT>;
     const auto start = std::chrono::steady_clock::now();
     const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-    const typename Mapper::Config config = photon_mapper_config<SceneT>(options);
     const std::string& method = options.method;
     if (method == "reference") {
         // POV-Ray's model lights the first diffuse surface only: no diffuse bounce.
-        const int bounces = options.povray_light ? 0 : 256;
-        const prism::RenderConfig& r = options.render;
-        prism::Accumulation sums = prism::render_sums(camera, prism::PathTracer(scene, {.max_diffuse_bounces = bounces}), r);
-        const double traced = seconds();
-        // As many light paths as camera samples: pass s takes paths [s W H, (s + 1) W H),
-        // each splat counted spp times, as the camera samples are summed.
-        const std::uint64_t frame = std::uint64_t(r.width) * std::uint64_t(r.height);
-        const prism::PassRange samples = r.passes.empty() ? prism::PassRange{0, std::uint64_t(r.spp)} : r.passes;
-        prism::light_trace_into(sums, scene, camera,
-                                {.width = r.width, .height = r.height, .paths = std::uint64_t(r.spp) * frame, .max_diffuse_bounces = bounces,
-                                 .seed = r.seed, .threads = r.threads, .crop = r.crop, .traced = {samples.first * frame, samples.last * frame}},
-                                double(r.spp));
-        std::printf("%s: reference, %llu spp path tracing %.3f s + %llu light paths %.3f s = %.3f s\n", name.c_str(),
-                    static_cast<unsigned long long>(samples.count()), traced, static_cast<unsigned long long>(samples.count() * frame), seconds() - traced,
-                    seconds());
+        const prism::Reference reference(scene, {.max_diffuse_bounces = options.povray_light ? 0 : 256});
+        prism::Accumulation sums = prism::render_sums(camera, reference, pass_render_config(options));
+        std::printf("%s: reference, %d spp of path tracing and as many light paths, %.3f s\n", name.c_str(), options.render.spp, seconds());
         return {name, std::move(sums), seconds()};
     }
     if (method == "progressive") {
-        prism::ProgressiveResult result = prism::render_progressive(camera, scene, progressive_config<SceneT>(options), options.render);
-        std::printf("%s: progressive photon mapping, %zu passes of %zu + %zu photons, %.3f s\n", name.c_str(), result.passes, options.photons,
+        const prism::ProgressivePhotonMapper<SceneT> progressive(scene, progressive_config<SceneT>(options));
+        prism::Accumulation sums = prism::render_sums(camera, progressive, pass_render_config(options));
+        std::printf("%s: progressive photon mapping, %zu passes of %zu + %zu photons, %.3f s\n", name.c_str(), options.passes, options.photons,
                     options.caustic_photons, seconds());
-        return {name, std::move(result.sums), seconds()};
+        return {name, std::move(sums), seconds()};
     }
-    Mapper mapper(scene, config);
+    Mapper mapper(scene, photon_mapper_config<SceneT>(options));
     const double traced = seconds();
     std::printf("%s: %zu global and %zu caustic photons stored in %.3f s\n", name.c_str(), mapper.maps().global.size(), mapper.maps().caustic.size(), traced);
     if (method == "cache") {

@@ -84,14 +84,14 @@ int main(int argc, char** argv)
         if (options.method == "progressive") {
             // Passes dealt to the ranks, each tracing its own photons.
             using S = std::remove_cvref_t<decltype(scene)>;
-            std::optional<prism::ProgressiveResult> result =
-                prism::mpi::render_progressive(MPI_COMM_WORLD, camera, scene, examples::progressive_config<S>(options), options.render, prism::StraightAir{},
-                                               &traffic);
+            const prism::ProgressivePhotonMapper<S> progressive(scene, examples::progressive_config<S>(options));
+            std::optional<prism::Accumulation> result =
+                prism::mpi::render_sums(MPI_COMM_WORLD, camera, progressive, examples::pass_render_config(options), tile, &traffic);
             const double done = seconds();
             report(traffic, done);
             if (rank != 0) return 0;
-            std::printf("cornell_caustics on %d ranks: progressive photon mapping, %zu passes, total %.3f s\n", ranks, result->passes, done);
-            examples::save(examples::Rendered{"cornell_caustics", std::move(result->sums), done}, options, true);
+            std::printf("cornell_caustics on %d ranks: progressive photon mapping, %zu passes, total %.3f s\n", ranks, options.passes, done);
+            examples::save(examples::Rendered{"cornell_caustics", std::move(*result), done}, options, true);
             return 0;
         }
         prism::PhotonMaps maps = prism::mpi::trace_photons(MPI_COMM_WORLD, scene, config.tracing, prism::StraightAir{}, 0, &traffic);

@@ -35,6 +35,7 @@
 #include <prism/integrator/path_tracer.hpp>
 #include <prism/integrator/photon_mapper.hpp>
 #include <prism/integrator/progressive.hpp>
+#include <prism/integrator/reference.hpp>
 #include <prism/integrator/whitted.hpp>
 #include <prism/light/directional_light.hpp>
 #include <prism/light/light.hpp>

@@ -7993,11 +7993,12 @@ struct LightParts {
     [[nodiscard]] friend constexpr LightParts operator*(const Rgb<T>& k, LightParts p) noexcept { return p *= k; }
 };
 
-/// An integrator that can say what its camera rays meet first (render_layers' surface
-/// layers).
+/// An integrator whose camera rays start in a scene's air (its scene() and air()), so
+/// that what they meet first is first_surface's (transport/first_surface.hpp): the
+/// surface layers of render_layers.
 template <class I>
 concept SeesSurfaces = requires(const I& integrator, const Ray<typename I::scalar_type>& ray) {
-    { integrator.first_surface(ray) } -> std::same_as<std::optional<SurfaceSample<typename I::scalar_type>>>;
+    { first_surface(integrator.scene(), integrator.air(), ray) } -> std::same_as<std::optional<SurfaceSample<typename I::scalar_type>>>;
 };
 
 /// An integrator that splits its radiance into LightParts (whose sum is its radiance).
@@ -8144,12 +8145,6 @@ struct Camera {
 
 namespace prism {
 
-/// An integrator: the radiance along a camera ray, drawing random numbers from rng.
-template <class I>
-concept Integrator = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
-    { integrator.radiance(ray, rng) } -> std::same_as<Rgb<typename I::scalar_type>>;
-};
-
 struct RenderConfig {
     int width = 512;
     int height = 512;
@@ -8171,6 +8166,31 @@ struct RenderConfig {
     /// of their union, bit for bit.
     PassRange passes{};
 };
+
+/// An integrator of the first kind: the radiance along a camera ray, drawing random
+/// numbers from rng (Whitted, PhotonMapper, PathTracer). render() takes config.spp
+/// samples in every pixel of the crop window.
+template <class I>
+concept RayEstimator = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
+    { integrator.radiance(ray, rng) } -> std::same_as<Rgb<typename I::scalar_type>>;
+};
+
+/// An integrator of the second kind: an estimate of the whole image in passes, each
+/// splatting over it (LightTracer, ProgressivePhotonMapper, Reference).
+/// add_passes(sums, camera, config) adds to `sums` (which holds the config's crop window)
+/// the sums of passes config.passes of config.spp (all of them when empty) over the
+/// window, and their weights (the samples they took in each pixel, or one per pass), so
+/// that sums / weight is the mean of the passes' images; the same bits for any thread count, and windows or
+/// ranges of passes rendered apart add up to the whole.
+template <class I>
+concept PassEstimator = requires(const I& integrator, Accumulation& sums, const Camera<typename I::scalar_type>& camera, const RenderConfig& config) {
+    integrator.add_passes(sums, camera, config);
+};
+
+/// An integrator: either kind. render(camera, integrator, config) and its siblings take
+/// both, and so do their MPI versions (distributed/mpi.hpp).
+template <class I>
+concept Integrator = RayEstimator<I> || PassEstimator<I>;
 
 namespace detail {
 
@@ -8300,8 +8320,8 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
 } // namespace detail
 
 /// Render a part of an image into `sums`: the config's crop window (which `sums`'
-/// window must contain) and samples, each pixel's sum and sample count added to those
-/// there. The parts of one render, added in any order, give the same bits.
+/// window must contain) and samples (or passes), each pixel's sum and weight added to
+/// those there. The parts of one render, added in any order, give the same bits.
 template <Integrator I>
 void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
 {
@@ -8311,13 +8331,19 @@ void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& came
                               sums.window().x1, ") x [", sums.window().y0, ", ", sums.window().y1, ")) does not hold the render's window");
     if (sums.channels().size() != 3) detail::throw_invalid("render_into renders R, G, B only, the Accumulation has ", sums.channels().size(), " channels");
     using T = typename I::scalar_type;
-    detail::render_pixels<3>(
-        camera, config,
-        [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
-        [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
-            sums.add(x, y, sum, weight);
-            if (rejected != 0) sums.reject(rejected);
-        });
+    if constexpr (RayEstimator<I>) {
+        detail::render_pixels<3>(
+            camera, config,
+            [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
+            [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+                sums.add(x, y, sum, weight);
+                if (rejected != 0) sums.reject(rejected);
+            });
+    } else {
+        (void)detail::render_passes(config);
+        (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
+        integrator.add_passes(sums, camera, config);
+    }
 }
 
 /// A part of an image as exact sums (its crop window, its samples): add the parts of a
@@ -8325,6 +8351,7 @@ void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& came
 template <Integrator I>
 [[nodiscard]] Accumulation render_sums(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
+    (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
     Accumulation sums(config.width, config.height, detail::render_window(config));
     render_into(sums, camera, integrator, config);
     return sums;
@@ -8333,8 +8360,9 @@ template <Integrator I>
 /// A part of an image with its layers (render/layers.hpp): R, G, B and, as the
 /// integrator allows, coverage, albedo, normal and distance of the first surface, and
 /// the light's parts; layer_channels<I>() names them. Its R, G, B are render_sums' bits:
-/// the layers are worked out beside the image, from the same camera rays.
-template <Integrator I>
+/// the layers are worked out beside the image, from the same camera rays. (An integrator
+/// of passes has no camera rays of its own: R, G, B only.)
+template <RayEstimator I>
 [[nodiscard]] Accumulation render_layers(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
     using T = typename I::scalar_type;
@@ -8354,7 +8382,7 @@ template <Integrator I>
                 rejected += detail::add_radiance(sum, 0, integrator.radiance(ray, rng));
             }
             if constexpr (SeesSurfaces<I>) {
-                if (const auto seen = integrator.first_surface(ray)) {
+                if (const auto seen = first_surface(integrator.scene(), integrator.air(), ray)) {
                     rejected += detail::add_value(sum, 3, 1.0);
                     rejected += detail::add_radiance(sum, 4, seen->albedo);
                     for (int c = 0; c < 3; ++c) rejected += detail::add_value(sum, 7 + std::size_t(c), double(seen->normal[c]));
@@ -8374,7 +8402,21 @@ template <Integrator I>
 /// the mean of its samples. The same scene, seed and spp give the same bits for any
 /// thread count, crop or split of the samples: every sample draws from its own random
 /// stream, and a pixel's samples are summed exactly (Accumulation).
-template <Integrator I>
+template <PassEstimator I>
+[[nodiscard]] Accumulation render_layers(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
+{
+    return render_sums(camera, integrator, config);
+}
+
+/// Render an image: the config's crop window (the whole image by default), each pixel
+/// the mean of its samples (or passes).
+template <PassEstimator I>
+[[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
+{
+    return render_sums(camera, integrator, config).image();
+}
+
+template <RayEstimator I>
 [[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
     const PixelWindow window = detail::render_window(config);
@@ -9187,7 +9229,7 @@ Scene(L, Slots...) -> Scene<L, Slots...>;
 } // namespace prism
 
 // ---- prism/integrator/light_tracer.hpp ----
-// light_trace: the light-tracing half of prism's reference estimator, for the paths a
+// LightTracer: the light-tracing half of prism's reference estimator, for the paths a
 // path tracer cannot find: those whose vertex next to the light is specular (a point
 // light's caustics through glass or off a mirror), L S+ (S|D)* D E.
 //
@@ -9203,131 +9245,147 @@ Scene(L, Slots...) -> Scene<L, Slots...>;
 // Paths whose first vertex is diffuse are the path tracer's (integrator/path_tracer.hpp),
 // so the two add up without counting any path twice.
 //
-// Deterministic: each thread splats into its own exact sums (render/accumulation.hpp),
-// whose addition has no rounding, so the image is the same bits for any thread count,
-// and renders of disjoint ranges of the paths (or crops of the image) add up to the
-// whole.
+// An integrator of passes (render/render.hpp's PassEstimator): pass s traces paths
+// [s P, (s + 1) P) of one sequence, P = LightTracerConfig::paths, and the image is the mean
+// of the passes'. Deterministic: each thread splats into its own exact sums
+// (render/accumulation.hpp), whose addition has no rounding, so the image is the same
+// bits for any thread count, and renders of disjoint ranges of the passes (or crops of
+// the image) add up to the whole.
 
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace prism {
 
 struct LightTracerConfig {
-    int width = 512;
-    int height = 512;
-    std::size_t paths = 1000000; ///< light paths aimed at the specular objects
-    int max_bounces = 256;       ///< surfaces a path may meet; Russian roulette ends it long before
+    std::size_t paths = 1000000;   ///< light paths per pass, aimed at the specular objects
+    int max_bounces = 256;         ///< surfaces a path may meet; Russian roulette ends it long before
     int max_diffuse_bounces = 256; ///< as PathTracer's: 0 joins a path to the camera at its first diffuse surface only
-    std::uint64_t seed = 0;
-    unsigned threads = 0;        ///< 0 = all hardware threads
     int dispersion_bands = SpectralBands<float>::max_count; ///< as PhotonTracerConfig's
-    /// The pixels to splat into; empty (the default): all. Every path is still traced:
-    /// a path's end cannot be known before it is walked.
-    PixelWindow crop{};
-    /// The paths to trace, [first, last) of `paths`; empty (the default): all of them.
-    PassRange traced{};
 };
 
-/// Add the light tracer's splats of `scene` through `camera` (radiance from the paths
-/// L S+ (S|D)* D E), times `scale`, to the R, G, B sums of `sums`, which must hold the
-/// config's crop window; weights are left as they are. The reference estimator adds
-/// them to a PathTracer's samples (scale: its samples per pixel).
+/// Light tracing of `scene` in its air: radiance from the paths L S+ (S|D)* D E. Add it to a
+/// PathTracer render of the same camera and size for the reference (integrator/reference.hpp).
 template <class SceneT, class Air = StraightAir>
-void light_trace_into(Accumulation& sums, const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera, const LightTracerConfig& config,
-                      double scale = 1.0, const Air& air = {})
-{
-    using T = typename SceneT::scalar_type;
-    if (config.max_diffuse_bounces < 0)
-        detail::throw_invalid("LightTracerConfig max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
-    if (!(scale > 0.0 && std::isfinite(scale))) detail::throw_invalid("light_trace_into scale must be finite and > 0, got ", scale);
-    const CameraRays<T> rays = camera.rays(config.width, config.height);
-    const PixelWindow window = detail::render_window({.width = config.width, .height = config.height, .crop = config.crop});
-    if (sums.width() != config.width || sums.height() != config.height || !sums.window().contains(window))
-        detail::throw_invalid("light_trace_into: the Accumulation does not hold the LightTracerConfig's window");
-    const PassRange traced = config.traced == PassRange{} ? PassRange{0, config.paths} : config.traced;
-    if (traced.empty() || traced.last > config.paths)
-        detail::throw_invalid("LightTracerConfig traced [", traced.first, ", ", traced.last, ") must be a non-empty range of the ", config.paths, " paths");
-    const detail::PhotonTracer<SceneT, Air> tracer(scene,
-                                                   {.global_photons = 0,
-                                                    .caustic_photons = config.paths,
-                                                    .max_bounces = config.max_bounces,
-                                                    .shadow_photons = false,
-                                                    .seed = config.seed,
-                                                    .threads = config.threads,
-                                                    .dispersion_bands = config.dispersion_bands},
-                                                   air);
-    const T area = rays.pixel_area();
+class LightTracer {
+public:
+    using scalar_type = typename SceneT::scalar_type;
+    using T = scalar_type;
 
-    // A block of paths splatted into `out`.
-    const auto trace_block = [&](std::uint64_t first, std::uint64_t last, Accumulation& out) {
-        tracer.walk_aimed(first, last, config.paths, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
-            // A first hit on a diffuse lobe is the path tracer's; where the material also
-            // has a delta lobe, the scattering here decides whose the path is.
-            if (at.direct) return reflects<M> || transmits<M>;
-            if (!at.first_specular) return false;
-            const bool go_on = at.diffuse_bounces < config.max_diffuse_bounces;
-            const Crossing<T>& c = at.crossing();
-            const auto seen = rays.project(c.point);
-            if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return go_on;
-            const Vec3<T> to_camera = (rays.origin - c.point) / seen->distance;
-            const T cos_x = dot(c.facing_normal(), to_camera);
-            if (!(cos_x > T(0))) return go_on; // the camera sees the other side
-            const Rgb<T> v = scene.template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
-                                                                                         seen->distance);
-            if (!(max_component(v) > T(0))) return go_on;
-            T importance = cos_x / (seen->distance * seen->distance * area * seen->cos * seen->cos * seen->cos);
-            // A shading normal weighs the light arriving here by its own cosine over the
-            // true one (scattering.hpp).
-            if (!c.shades_flat()) {
-                importance *= shading_cosine(c.facing_shading(), c.facing_normal(), -at.direction) / -dot(at.direction, c.facing_normal());
-                if (!(importance < infinity<T>)) return go_on;
-            }
-            const Rgb<float> splat(power * diffuse_response(material, c).brdf() * v * importance);
-            std::array<ExactSum, 3> add{};
-            for (int k = 0; k < 3; ++k) {
-                const double value = double(splat[k]) * scale;
-                if (value >= 0.0 && ExactSum::takes(value)) add[std::size_t(k)] = ExactSum::of(value);
-                else out.reject(1);
-            }
-            out.add(int(seen->x), int(seen->y), add, 0);
-            return go_on;
+    explicit LightTracer(const SceneT& scene, LightTracerConfig config = {}, Air air = {}) : scene_(&scene), config_(config), air_(std::move(air))
+    {
+        scene.validate();
+        air_.validate();
+        if (config.paths == 0) detail::throw_invalid("LightTracerConfig paths must be >= 1, got 0");
+        if (config.max_diffuse_bounces < 0)
+            detail::throw_invalid("LightTracerConfig max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
+        detail::validate(tracer_config(1, 0, 1));
+    }
+    LightTracer(const SceneT&& scene, LightTracerConfig config = {}, Air air = {}) = delete;
+
+    [[nodiscard]] const LightTracerConfig& config() const noexcept { return config_; }
+
+    /// Passes config.passes of config.spp (render/render.hpp's PassEstimator).
+    void add_passes(Accumulation& sums, const Camera<T>& camera, const RenderConfig& config) const
+    {
+        add_splats(sums, camera, config);
+        const PassRange passes = detail::render_passes(config);
+        const PixelWindow window = detail::render_window(config);
+        const std::array<ExactSum, 3> none{};
+        for (int y = window.y0; y < window.y1; ++y)
+            for (int x = window.x0; x < window.x1; ++x) sums.add(x, y, none, passes.count());
+    }
+
+    /// The splats of passes config.passes of config.spp over the config's crop window,
+    /// without their weights, each pass's counted as one sample's: added to the sums of
+    /// another estimator's config.spp samples per pixel, their mean is the sum of both
+    /// estimates (the reference).
+    void add_splats(Accumulation& sums, const Camera<T>& camera, const RenderConfig& config) const
+    {
+        const CameraRays<T> rays = camera.rays(config.width, config.height);
+        const PixelWindow window = detail::render_window(config);
+        const PassRange passes = detail::render_passes(config);
+        if (sums.width() != config.width || sums.height() != config.height || !sums.window().contains(window))
+            detail::throw_invalid("LightTracer: the Accumulation does not hold the RenderConfig's window");
+        const std::uint64_t per_pass = config_.paths;
+        if (std::uint64_t(config.spp) > std::numeric_limits<std::uint64_t>::max() / per_pass)
+            detail::throw_invalid("LightTracer: ", config.spp, " passes of ", per_pass, " paths overflow a 64-bit path index");
+        const std::uint64_t count = std::uint64_t(config.spp) * per_pass;
+        const PassRange traced{passes.first * per_pass, passes.last * per_pass};
+        const detail::PhotonTracer<SceneT, Air> tracer(*scene_, tracer_config(count, config.seed, config.threads), air_);
+        const T area = rays.pixel_area();
+        const double scale = double(config.spp);
+        // A block of paths splatted into `out`.
+        const auto trace_block = [&](std::uint64_t first, std::uint64_t last, Accumulation& out) {
+            tracer.walk_aimed(first, last, count, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
+                // A first hit on a diffuse lobe is the path tracer's; where the material also
+                // has a delta lobe, the scattering here decides whose the path is.
+                if (at.direct) return reflects<M> || transmits<M>;
+                if (!at.first_specular) return false;
+                const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
+                const Crossing<T>& c = at.crossing();
+                const auto seen = rays.project(c.point);
+                if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return go_on;
+                const Vec3<T> to_camera = (rays.origin - c.point) / seen->distance;
+                const T cos_x = dot(c.facing_normal(), to_camera);
+                if (!(cos_x > T(0))) return go_on; // the camera sees the other side
+                const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
+                                                                                               seen->distance);
+                if (!(max_component(v) > T(0))) return go_on;
+                T importance = cos_x / (seen->distance * seen->distance * area * seen->cos * seen->cos * seen->cos);
+                // A shading normal weighs the light arriving here by its own cosine over the
+                // true one (scattering.hpp).
+                if (!c.shades_flat()) {
+                    importance *= shading_cosine(c.facing_shading(), c.facing_normal(), -at.direction) / -dot(at.direction, c.facing_normal());
+                    if (!(importance < infinity<T>)) return go_on;
+                }
+                const Rgb<float> splat(power * diffuse_response(material, c).brdf() * v * importance);
+                std::array<ExactSum, 3> add{};
+                for (int k = 0; k < 3; ++k) {
+                    const double value = double(splat[k]) * scale;
+                    if (value >= 0.0 && ExactSum::takes(value)) add[std::size_t(k)] = ExactSum::of(value);
+                    else out.reject(1);
+                }
+                out.add(int(seen->x), int(seen->y), add, 0);
+                return go_on;
+            });
+        };
+        // Blocks of paths dealt to threads as they ask; each thread's sums are exact, so
+        // which thread took which block changes no bit.
+        constexpr std::uint64_t block = 16384;
+        const std::uint64_t blocks = (traced.count() + block - 1) / block;
+        std::vector<Accumulation> buffers;
+        const unsigned workers = detail::workers_for(blocks, config.threads);
+        buffers.reserve(workers);
+        for (unsigned k = 0; k < workers; ++k) buffers.emplace_back(config.width, config.height, window);
+        detail::parallel_blocks(blocks, config.threads, [&](std::size_t b, unsigned worker) {
+            trace_block(traced.first + b * block, std::min(traced.last, traced.first + (b + 1) * block), buffers[worker]);
         });
-    };
+        for (const Accumulation& buffer : buffers) sums += buffer;
+    }
 
-    // Blocks of paths dealt to threads as they ask; each thread's sums are exact, so
-    // which thread took which block changes no bit.
-    constexpr std::uint64_t block = 16384;
-    const std::uint64_t blocks = (traced.count() + block - 1) / block;
-    std::vector<Accumulation> buffers;
-    const unsigned workers = detail::workers_for(blocks, config.threads);
-    buffers.reserve(workers);
-    for (unsigned k = 0; k < workers; ++k) buffers.emplace_back(config.width, config.height, window);
-    detail::parallel_blocks(blocks, config.threads, [&](std::size_t b, unsigned worker) {
-        trace_block(traced.first + b * block, std::min(traced.last, traced.first + (b + 1) * block), buffers[worker]);
-    });
-    for (const Accumulation& buffer : buffers) sums += buffer;
-}
+private:
+    /// The photon tracer's settings for `count` paths in all.
+    [[nodiscard]] PhotonTracerConfig tracer_config(std::uint64_t count, std::uint64_t seed, unsigned threads) const noexcept
+    {
+        return {.global_photons = 0,
+                .caustic_photons = count,
+                .max_bounces = config_.max_bounces,
+                .shadow_photons = false,
+                .seed = seed,
+                .threads = threads,
+                .dispersion_bands = config_.dispersion_bands};
+    }
 
-/// The light tracer's image of `scene` through `camera` (the config's crop window):
-/// radiance per pixel from the paths L S+ (S|D)* D E. Add it to a PathTracer render of
-/// the same camera and size for the reference.
-template <class SceneT, class Air = StraightAir>
-[[nodiscard]] Film light_trace(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera, const LightTracerConfig& config,
-                               const Air& air = {})
-{
-    (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
-    Accumulation sums(config.width, config.height, detail::render_window({.width = config.width, .height = config.height, .crop = config.crop}));
-    light_trace_into(sums, scene, camera, config, 1.0, air);
-    const PixelWindow& w = sums.window();
-    const std::array<ExactSum, 3> none{};
-    for (int y = w.y0; y < w.y1; ++y)
-        for (int x = w.x0; x < w.x1; ++x) sums.add(x, y, none, 1); // the splats are the pixel's value, not a sum of samples
-    return sums.image();
-}
+    const SceneT* scene_;
+    LightTracerConfig config_;
+    Air air_;
+};
 
 } // namespace prism
 
@@ -9434,8 +9492,9 @@ public:
         return sum;
     }
 
-    /// What a camera ray meets first (render_layers).
-    [[nodiscard]] std::optional<SurfaceSample<T>> first_surface(const Ray<T>& ray) const noexcept { return prism::first_surface(*scene_, air_, ray); }
+    /// The scene and the air its camera rays start in (render_layers' surface layers).
+    [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
+    [[nodiscard]] const Air& air() const noexcept { return air_; }
 
 private:
     static SpectralBands<T> checked_bands(int count)
@@ -9633,8 +9692,9 @@ public:
     /// shadow rays (and the background), the caustic map, the indirect estimate.
     [[nodiscard]] LightParts<T> radiance_parts(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), {}); }
 
-    /// What a camera ray meets first (render_layers).
-    [[nodiscard]] std::optional<SurfaceSample<T>> first_surface(const Ray<T>& ray) const noexcept { return prism::first_surface(*scene_, air_, ray); }
+    /// The scene and the air its camera rays start in (render_layers' surface layers).
+    [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
+    [[nodiscard]] const Air& air() const noexcept { return air_; }
 
     /// What the nearest global photons say about the light's visibility at p (normal n
     /// facing the viewer): true when the `visibility_k` nearest within global.radius
@@ -9824,7 +9884,7 @@ private:
 } // namespace prism
 
 // ---- prism/integrator/progressive.hpp ----
-// render_progressive: stochastic progressive photon mapping (Hachisuka and Jensen 2009)
+// ProgressivePhotonMapper: stochastic progressive photon mapping (Hachisuka and Jensen 2009)
 // in the probabilistic form of Knaus and Zwicker (2011), which converges to the right
 // image as the passes go on.
 //
@@ -9837,7 +9897,9 @@ private:
 // p^(alpha - 1), the bias vanishes, while the mean of p passes still averages the noise
 // down: the error falls as p^(-alpha / 2) = p^(-1/3) (Knaus and Zwicker, section 4).
 // No per-pixel statistics are kept, so a pass is as cheap as the photon mapper's, any
-// pass count is deterministic, and passes on different threads or machines add up.
+// pass count is deterministic, and passes on different threads or machines add up: an
+// integrator of passes (render/render.hpp's PassEstimator), whose RenderConfig::spp counts
+// the passes and RenderConfig::passes picks a range of them.
 // Direct light is by shadow rays (each pass at a new sample position in the pixel,
 // even at one sample per pixel, which also anti-aliases; at the pixel's centre every
 // pass, a light's hot spot kept an error of 0.11 in the Cornell box), caustics from the caustic map, the rest from the global
@@ -9848,7 +9910,7 @@ private:
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <vector>
+#include <utility>
 
 namespace prism {
 
@@ -9870,85 +9932,125 @@ struct ProgressiveConfig {
                                                     .global = {.radius = 0.25f, .excluded = Photon::direct | Photon::caustic},
                                                     .gather_rays = 0};
     double alpha = 2.0 / 3.0; ///< in (0, 1): how much of the radius each pass keeps
-    std::size_t passes = 64;  ///< at most this many; 0 = until `seconds`
-    double seconds = 0;       ///< > 0: stop after the pass that ends past this time (the pass count then varies)
-    std::size_t first_pass = 0; ///< passes [first_pass, first_pass + passes): one share of a render split across machines
+    int samples = 1;          ///< jittered camera samples per pixel in each pass
+    /// > 0: stop after the pass that ends past this time (the pass count then varies, and
+    /// so do the image's bits); 0: every pass of the render.
+    double seconds = 0;
 };
 
-/// What a run of passes made: the exact sums of their samples (Accumulation), so that
-/// the sums of shares of one render (first_pass) add up to the whole render's, bit for
-/// bit, in any order.
-struct ProgressiveResult {
-    Accumulation sums;    ///< every pass's samples; a pixel's weight is passes x spp
-    std::size_t passes{}; ///< how many were rendered
-    double seconds{};
-
-    /// Add another share of the same render.
-    ProgressiveResult& operator+=(const ProgressiveResult& other)
-    {
-        sums += other.sums;
-        passes += other.passes;
-        seconds += other.seconds;
-        return *this;
-    }
-
-    /// The mean of the passes' images.
-    [[nodiscard]] Film image() const { return sums.image(); }
-};
-
-namespace detail {
-
-/// render_progressive's checks, before its first pass (and before a distributed render
-/// deals any: every process refuses alike).
-template <class SceneT, class Air>
-void validate_progressive(const Camera<typename SceneT::scalar_type>& camera, const ProgressiveConfig<SceneT, Air>& config, const RenderConfig& render_config)
-{
-    if (!(config.alpha > 0.0 && config.alpha < 1.0)) detail::throw_invalid("ProgressiveConfig alpha must be in (0, 1), got ", config.alpha);
-    if (config.pass.gather_rays != 0) detail::throw_invalid("ProgressiveConfig pass.gather_rays must be 0 (the maps are read directly), got ", config.pass.gather_rays);
-    if (config.pass.visibility_k != 0) detail::throw_invalid("ProgressiveConfig pass.visibility_k must be 0, got ", config.pass.visibility_k);
-    if (config.pass.caustic.k != 0 || config.pass.global.k != 0)
-        detail::throw_invalid("ProgressiveConfig estimates must be by radius (k = 0), got k = ", config.pass.caustic.k, " and ", config.pass.global.k);
-    if (!(config.seconds >= 0.0 && std::isfinite(config.seconds))) detail::throw_invalid("ProgressiveConfig seconds must be finite and >= 0, got ", config.seconds);
-    if (config.passes == 0 && config.seconds == 0.0) detail::throw_invalid("ProgressiveConfig needs passes > 0 or seconds > 0");
-    (void)camera.rays(render_config.width, render_config.height); // validates both before the first pass
-    if (render_config.passes != PassRange{})
-        detail::throw_invalid("render_progressive takes its passes from ProgressiveConfig (first_pass, passes), not RenderConfig passes [",
-                              render_config.passes.first, ", ", render_config.passes.last, ")");
-}
-
-} // namespace detail
-
-/// Render `scene` by progressive photon mapping: `render`'s size, samples per pixel per
-/// pass, threads and seed; the same bits for any thread count.
+/// Progressive photon mapping of `scene` in its air: pass p (from 0) traces photon pass p
+/// (trace_photons) and renders `samples` jittered samples per pixel with the photon mapper
+/// at pass p's radii. The same bits for any thread count.
 template <class SceneT, class Air = StraightAir>
-[[nodiscard]] ProgressiveResult render_progressive(const Camera<typename SceneT::scalar_type>& camera, const SceneT& scene,
-                                                   const ProgressiveConfig<SceneT, Air>& config, const RenderConfig& render_config, const Air& air = {})
-{
-    detail::validate_progressive(camera, config, render_config);
+class ProgressivePhotonMapper {
+public:
+    using scalar_type = typename SceneT::scalar_type;
+    using T = scalar_type;
+    using Config = ProgressiveConfig<SceneT, Air>;
 
-    const auto start = std::chrono::steady_clock::now();
-    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-    ProgressiveResult result{Accumulation(render_config.width, render_config.height, detail::render_window(render_config)), 0, 0.0};
-    for (std::size_t pass = config.first_pass; config.passes == 0 || pass < config.first_pass + config.passes; ++pass) {
-        typename PhotonMapper<SceneT, Air>::Config mapper_config = config.pass;
-        mapper_config.caustic.radius = float(progressive_radius(config.pass.caustic.radius, config.alpha, pass));
-        mapper_config.global.radius = float(progressive_radius(config.pass.global.radius, config.alpha, pass));
-        const PhotonMapper<SceneT, Air> mapper(scene, mapper_config, trace_photons(scene, config.pass.tracing, air, pass), air);
-        RenderConfig pass_render = render_config;
-        pass_render.seed = render_config.seed + 0x9e3779b97f4a7c15ULL * (pass + 1); // a fresh sample in every pixel
-        pass_render.progress = false;
-        pass_render.single_sample_at_centre = false; // anti-aliased over the passes
-        render_into(result.sums, camera, mapper, pass_render);
-        ++result.passes;
-        if (render_config.progress)
-            std::fprintf(stderr, "\rprism: progressive pass %zu, r = %.4g / %.4g (%.1f s)", pass + 1, double(mapper_config.caustic.radius),
-                         double(mapper_config.global.radius), elapsed());
-        if (config.seconds > 0.0 && elapsed() >= config.seconds) break;
+    explicit ProgressivePhotonMapper(const SceneT& scene, Config config = {}, Air air = {}) : scene_(&scene), config_(config), air_(std::move(air))
+    {
+        scene.validate();
+        air_.validate();
+        if (!(config.alpha > 0.0 && config.alpha < 1.0)) detail::throw_invalid("ProgressiveConfig alpha must be in (0, 1), got ", config.alpha);
+        if (config.pass.gather_rays != 0) detail::throw_invalid("ProgressiveConfig pass.gather_rays must be 0 (the maps are read directly), got ", config.pass.gather_rays);
+        if (config.pass.visibility_k != 0) detail::throw_invalid("ProgressiveConfig pass.visibility_k must be 0, got ", config.pass.visibility_k);
+        if (config.pass.caustic.k != 0 || config.pass.global.k != 0)
+            detail::throw_invalid("ProgressiveConfig estimates must be by radius (k = 0), got k = ", config.pass.caustic.k, " and ", config.pass.global.k);
+        if (config.samples < 1) detail::throw_invalid("ProgressiveConfig samples must be >= 1, got ", config.samples);
+        if (!(config.seconds >= 0.0 && std::isfinite(config.seconds))) detail::throw_invalid("ProgressiveConfig seconds must be finite and >= 0, got ", config.seconds);
+        detail::validate(config.pass.tracing);
     }
-    if (render_config.progress) std::fprintf(stderr, "\n");
-    result.seconds = elapsed();
-    return result;
-}
+    ProgressivePhotonMapper(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
+
+    [[nodiscard]] const Config& config() const noexcept { return config_; }
+
+    /// Passes config.passes of config.spp, each of `samples` samples per pixel, in order;
+    /// with a time budget, up to the pass that ends past it (the samples of the passes
+    /// rendered are the pixels' weight).
+    void add_passes(Accumulation& sums, const Camera<T>& camera, const RenderConfig& config) const
+    {
+        const PassRange passes = detail::render_passes(config);
+        const auto start = std::chrono::steady_clock::now();
+        const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+        for (std::uint64_t pass = passes.first; pass < passes.last; ++pass) {
+            typename PhotonMapper<SceneT, Air>::Config mapper_config = config_.pass;
+            mapper_config.caustic.radius = float(progressive_radius(config_.pass.caustic.radius, config_.alpha, pass));
+            mapper_config.global.radius = float(progressive_radius(config_.pass.global.radius, config_.alpha, pass));
+            const PhotonMapper<SceneT, Air> mapper(*scene_, mapper_config, trace_photons(*scene_, config_.pass.tracing, air_, pass), air_);
+            RenderConfig pass_render = config;
+            pass_render.spp = config_.samples;
+            pass_render.passes = {};
+            pass_render.seed = config.seed + 0x9e3779b97f4a7c15ULL * (pass + 1); // a fresh sample in every pixel
+            pass_render.progress = false;
+            pass_render.single_sample_at_centre = false; // anti-aliased over the passes
+            render_into(sums, camera, mapper, pass_render);
+            if (config.progress)
+                std::fprintf(stderr, "\rprism: progressive pass %llu, r = %.4g / %.4g (%.1f s)", static_cast<unsigned long long>(pass + 1),
+                             double(mapper_config.caustic.radius), double(mapper_config.global.radius), elapsed());
+            if (config_.seconds > 0.0 && elapsed() >= config_.seconds) break;
+        }
+        if (config.progress) std::fprintf(stderr, "\n");
+    }
+
+private:
+    const SceneT* scene_;
+    Config config_;
+    Air air_;
+};
+
+} // namespace prism
+
+// ---- prism/integrator/reference.hpp ----
+// Reference: prism's unbiased estimator, a path tracer's camera samples plus a light
+// tracer's splats (integrator/path_tracer.hpp, integrator/light_tracer.hpp). The two count
+// disjoint sets of paths, so their sum is every path either can sample. An integrator of
+// passes: pass s is the path tracer's sample s of every pixel and the light tracer's pass
+// s, of as many light paths as the image has pixels (LightTracerConfig::paths = width x
+// height), so each pass costs about as many paths from either end.
+
+
+#include <cstdint>
+#include <utility>
+
+namespace prism {
+
+template <class SceneT, class Air = StraightAir>
+class Reference {
+public:
+    using scalar_type = typename SceneT::scalar_type;
+    using T = scalar_type;
+
+    struct Config {
+        /// Diffuse bounces either half may take (0: direct light only, as POV-Ray without
+        /// radiosity; the light tracer then joins a path to the camera at its first diffuse
+        /// surface only).
+        int max_diffuse_bounces = 256;
+    };
+
+    explicit Reference(const SceneT& scene, Config config = {}, Air air = {})
+        : scene_(&scene), config_(config), air_(std::move(air)), paths_(scene, {.max_diffuse_bounces = config.max_diffuse_bounces}, air_)
+    {
+    }
+    Reference(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
+
+    /// Passes config.passes of config.spp: the path tracer's samples, weighted as they
+    /// are, and the light tracer's passes of width x height paths each, splatted beside
+    /// them with no weight of their own.
+    void add_passes(Accumulation& sums, const Camera<T>& camera, const RenderConfig& config) const
+    {
+        render_into(sums, camera, paths_, config);
+        const LightTracer<SceneT, Air> lights(
+            *scene_, {.paths = std::uint64_t(config.width) * std::uint64_t(config.height), .max_diffuse_bounces = config_.max_diffuse_bounces}, air_);
+        lights.add_splats(sums, camera, config);
+    }
+
+private:
+    const SceneT* scene_;
+    Config config_;
+    Air air_;
+    PathTracer<SceneT, Air> paths_;
+};
 
 } // namespace prism
 
@@ -10000,8 +10102,9 @@ public:
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
 
-    /// What a camera ray meets first (render_layers).
-    [[nodiscard]] std::optional<SurfaceSample<T>> first_surface(const Ray<T>& ray) const noexcept { return prism::first_surface(*scene_, air_, ray); }
+    /// The scene and the air its camera rays start in (render_layers' surface layers).
+    [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
+    [[nodiscard]] const Air& air() const noexcept { return air_; }
 
     [[nodiscard]] const Config& config() const noexcept { return config_; }
 

@@ -45,7 +45,7 @@ TEST_CASE("light tracing: a mirror's image of a point light on a floor, L S D E,
     const auto scene = mirror_scene();
     const Camera<float> camera{.position = {1.5f, 3, 0}, .look_at = {1.5f, 0, 0}, .up = {0, 0, -1}, .fov = 40};
     constexpr int size = 16;
-    const Film traced = light_trace(scene, camera, {.width = size, .height = size, .paths = 8000000, .seed = 3, .threads = 2});
+    const Film traced = render(camera, LightTracer(scene, {.paths = 8000000}), {.width = size, .height = size, .threads = 2, .seed = 3, .progress = false});
     const Film pathed = render(camera, PathTracer(scene), {.width = size, .height = size, .spp = 16, .threads = 2, .progress = false});
     const CameraRays<float> rays = camera.rays(size, size);
     double mirror_sum = 0, mirror_expected = 0, worst_direct = 0, squares = 0;
@@ -81,10 +81,9 @@ TEST_CASE("light tracing with no diffuse bounce keeps L S D E alone: a ceiling a
                              Object{Box<float>({-0.1f, 0, -3}, {0, 4, 3}), Mirror<float>{{.kr = Rgb<float>(reflectance)}}}};
     const Camera<float> camera{.position = {1.5f, 3, 0}, .look_at = {1.5f, 0, 0}, .up = {0, 0, -1}, .fov = 40};
     constexpr int size = 8;
-    LightTracerConfig config{.width = size, .height = size, .paths = 2000000, .max_diffuse_bounces = 0, .seed = 3, .threads = 2};
-    const Film first = light_trace(scene, camera, config);
-    config.max_diffuse_bounces = 256;
-    const Film all = light_trace(scene, camera, config);
+    const RenderConfig render_config{.width = size, .height = size, .threads = 2, .seed = 3, .progress = false};
+    const Film first = render(camera, LightTracer(scene, {.paths = 2000000, .max_diffuse_bounces = 0}), render_config);
+    const Film all = render(camera, LightTracer(scene, {.paths = 2000000}), render_config);
     const CameraRays<float> rays = camera.rays(size, size);
     double first_sum = 0, all_sum = 0, expected = 0;
     for (int y = 0; y < size; ++y)
@@ -100,61 +99,70 @@ TEST_CASE("light tracing with no diffuse bounce keeps L S D E alone: a ceiling a
     CHECK(first_sum / expected == doctest::Approx(1.0).epsilon(0.01));
     MESSAGE("with the ceiling's bounce: ", all_sum / expected);
     CHECK(all_sum / expected > 1.05);
-    config.max_diffuse_bounces = -1;
-    CHECK_THROWS_WITH_AS((void)light_trace(scene, camera, config), doctest::Contains("LightTracerConfig max_diffuse_bounces must be >= 0, got -1"),
+    CHECK_THROWS_WITH_AS(LightTracer(scene, {.max_diffuse_bounces = -1}), doctest::Contains("LightTracerConfig max_diffuse_bounces must be >= 0, got -1"),
                          std::invalid_argument);
+    CHECK_THROWS_WITH_AS(LightTracer(scene, {.paths = 0}), doctest::Contains("LightTracerConfig paths must be >= 1, got 0"), std::invalid_argument);
 }
 
 TEST_CASE("the light tracer's image is the same bits for any thread count, and bad sizes are refused")
 {
     const auto scene = mirror_scene();
     const Camera<float> camera{.position = {1.5f, 3, 0}, .look_at = {1.5f, 0, 0}, .up = {0, 0, -1}, .fov = 40};
-    const LightTracerConfig config{.width = 12, .height = 9, .paths = 40000, .seed = 5, .threads = 1};
-    LightTracerConfig two = config;
+    const LightTracer tracer(scene, {.paths = 40000});
+    const RenderConfig config{.width = 12, .height = 9, .threads = 1, .seed = 5, .progress = false};
+    RenderConfig two = config;
     two.threads = 2;
-    CHECK(light_trace(scene, camera, config).pixels() == light_trace(scene, camera, two).pixels());
-    LightTracerConfig bad = config;
+    CHECK(render(camera, tracer, config).pixels() == render(camera, tracer, two).pixels());
+    RenderConfig bad = config;
     bad.width = 0;
-    CHECK_THROWS_WITH_AS((void)light_trace(scene, camera, bad), doctest::Contains("image size must be positive"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((void)render(camera, tracer, bad), doctest::Contains("image size must be positive"), std::invalid_argument);
     bad = config;
-    bad.traced = {39000, 40001};
-    CHECK_THROWS_WITH_AS((void)light_trace(scene, camera, bad), doctest::Contains("traced [39000, 40001) must be a non-empty range of the 40000 paths"),
+    bad.spp = 4;
+    bad.passes = {3, 5};
+    CHECK_THROWS_WITH_AS((void)render(camera, tracer, bad), doctest::Contains("RenderConfig passes [3, 5) must be a non-empty range of the spp = 4"),
                          std::invalid_argument);
     bad = config;
     bad.crop = {0, 0, 13, 9};
-    CHECK_THROWS_WITH_AS((void)light_trace(scene, camera, bad), doctest::Contains("crop [0, 13) x [0, 9)"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((void)render(camera, tracer, bad), doctest::Contains("crop [0, 13) x [0, 9)"), std::invalid_argument);
 }
 
-TEST_CASE("the light tracer's ranges of paths and crops add up to the whole image, bit for bit")
+TEST_CASE("the light tracer's ranges of passes and crops add up to the whole image, bit for bit")
 {
     const auto scene = mirror_scene();
     const Camera<float> camera{.position = {1.5f, 3, 0}, .look_at = {1.5f, 0, 0}, .up = {0, 0, -1}, .fov = 40};
-    const LightTracerConfig config{.width = 12, .height = 9, .paths = 100000, .seed = 5, .threads = 2};
-    Accumulation whole(12, 9, PixelWindow::whole(12, 9));
-    light_trace_into(whole, scene, camera, config);
-    // Paths [0, 30000) and [30000, 100000), the second in two crops.
+    // Ten passes of 10000 paths.
+    const LightTracer tracer(scene, {.paths = 10000});
+    const RenderConfig config{.width = 12, .height = 9, .spp = 10, .threads = 2, .seed = 5, .progress = false};
+    const Accumulation whole = render_sums(camera, tracer, config);
+    // Passes [0, 3) and [3, 10), the second in two crops.
     Accumulation parts(12, 9, PixelWindow::whole(12, 9));
-    LightTracerConfig part = config;
-    part.traced = {30000, 100000};
+    RenderConfig part = config;
+    part.passes = {3, 10};
     part.crop = {0, 0, 12, 4};
-    light_trace_into(parts, scene, camera, part);
+    render_into(parts, camera, tracer, part);
     part.crop = {0, 4, 12, 9};
-    light_trace_into(parts, scene, camera, part);
+    render_into(parts, camera, tracer, part);
     part.crop = {};
-    part.traced = {0, 30000};
+    part.passes = {0, 3};
     part.threads = 1;
-    light_trace_into(parts, scene, camera, part);
+    render_into(parts, camera, tracer, part);
     int lit = 0;
     for (int y = 0; y < 9; ++y)
         for (int x = 0; x < 12; ++x) {
             REQUIRE(std::equal(parts.sums(x, y).begin(), parts.sums(x, y).end(), whole.sums(x, y).begin()));
+            CHECK(parts.weight(x, y) == 10);
             lit += whole.sums(x, y)[0].value() > 0;
         }
     CHECK(lit > 20); // the test sees the caustic
-    // A crop of light_trace's image is those pixels of the whole image.
+    // Ten passes of 10000 paths are one of 100000: the same paths, each splat weighed alike.
+    const Film one = render(camera, LightTracer(scene, {.paths = 100000}), {.width = 12, .height = 9, .threads = 2, .seed = 5, .progress = false});
+    const Film ten = whole.image();
+    for (int y = 0; y < 9; ++y)
+        for (int x = 0; x < 12; ++x) CHECK(ten.at(x, y).x == doctest::Approx(one.at(x, y).x).epsilon(1e-5));
+    // A crop of the image is those pixels of the whole image.
     part = config;
     part.crop = {3, 2, 9, 7};
-    const Film crop = light_trace(scene, camera, part), image = light_trace(scene, camera, config);
+    const Film crop = render(camera, tracer, part), image = render(camera, tracer, config);
     for (int y = 2; y < 7; ++y)
         for (int x = 3; x < 9; ++x) CHECK(crop.at(x - 3, y - 2) == image.at(x, y));
 }
@@ -164,7 +172,7 @@ TEST_CASE("the light tracer in the two-lobe furnace: the paths that leave the li
     const auto scene = test::coated_furnace_scene();
     const Camera<float> camera{.position = {0.01f, 0.02f, 0.03f}, .look_at = {0.3f, 0.2f, 1}, .fov = 90};
     constexpr int size = 8;
-    const Film traced = light_trace(scene, camera, {.width = size, .height = size, .paths = 4000000, .seed = 5, .threads = 2});
+    const Film traced = render(camera, LightTracer(scene, {.paths = 4000000}), {.width = size, .height = size, .threads = 2, .seed = 5, .progress = false});
     const double mean = test::image_mean(traced);
     MESSAGE("light tracer ", mean, " (closed form ", test::CoatedFurnace::light_tracer, ")");
     CHECK(mean == doctest::Approx(test::CoatedFurnace::light_tracer).epsilon(0.01));

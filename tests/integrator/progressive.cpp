@@ -96,12 +96,14 @@ TEST_CASE("progressive photon mapping's furnace reads 1.0, and passes split over
         using S = std::remove_cvref_t<decltype(scene)>;
         ProgressiveConfig<S> config;
         config.pass.tracing = {.global_photons = 50000, .caustic_photons = 0, .max_bounces = 64, .shadow_photons = false, .seed = 4};
-        config.passes = 8;
+        const ProgressivePhotonMapper<S> progressive(scene, config);
         const Camera<float> camera{.position = {0, 0, 0}, .look_at = {0, 0, 1}, .fov = 90};
         constexpr int size = 24;
-        const ProgressiveResult result = render_progressive(camera, scene, config, {.width = size, .height = size, .threads = 2, .progress = false});
-        CHECK(result.passes == 8);
-        const Film image = result.image();
+        // Eight passes: RenderConfig::spp counts an integrator's passes.
+        const RenderConfig eight{.width = size, .height = size, .spp = 8, .threads = 2, .progress = false};
+        const Accumulation sums = render_sums(camera, progressive, eight);
+        CHECK(sums.weight(0, 0) == 8);
+        const Film image = sums.image();
         const CameraRays<float> rays = camera.rays(size, size);
         double ratio = 0;
         for (int y = 0; y < size; ++y)
@@ -112,24 +114,25 @@ TEST_CASE("progressive photon mapping's furnace reads 1.0, and passes split over
         CHECK(ratio / (size * size) == doctest::Approx(1.0).epsilon(0.005));
         if (four) continue;
         // Passes [0, 3) and [3, 8) in two runs, on other thread counts: the same sum.
-        ProgressiveConfig<S> first = config, second = config;
-        first.passes = 3;
-        second.first_pass = 3;
-        second.passes = 5;
-        ProgressiveResult split = render_progressive(camera, scene, first, {.width = size, .height = size, .threads = 1, .progress = false});
-        split += render_progressive(camera, scene, second, {.width = size, .height = size, .threads = 3, .progress = false});
-        CHECK(split.passes == 8);
+        RenderConfig first = eight, second = eight;
+        first.passes = {0, 3};
+        first.threads = 1;
+        second.passes = {3, 8};
+        second.threads = 3;
+        Accumulation split = render_sums(camera, progressive, first);
+        split += render_sums(camera, progressive, second);
+        CHECK(split.weight(0, 0) == 8);
         const Film joined = split.image();
         CHECK(std::memcmp(joined.pixels().data(), image.pixels().data(), image.pixels().size() * sizeof(image.pixels()[0])) == 0);
         // A crop of passes [3, 8): the same sums as those pixels of the whole share.
-        RenderConfig crop{.width = size, .height = size, .threads = 2, .progress = false};
+        RenderConfig crop = second;
         crop.crop = {5, 9, 17, 12};
-        const ProgressiveResult part = render_progressive(camera, scene, second, crop);
-        const ProgressiveResult share = render_progressive(camera, scene, second, {.width = size, .height = size, .threads = 1, .progress = false});
+        const Accumulation part = render_sums(camera, progressive, crop);
+        const Accumulation share = render_sums(camera, progressive, second);
         for (int y = 9; y < 12; ++y)
             for (int x = 5; x < 17; ++x) {
-                CHECK(part.sums.weight(x, y) == 5);
-                REQUIRE(std::equal(part.sums.sums(x, y).begin(), part.sums.sums(x, y).end(), share.sums.sums(x, y).begin()));
+                CHECK(part.weight(x, y) == 5);
+                REQUIRE(std::equal(part.sums(x, y).begin(), part.sums(x, y).end(), share.sums(x, y).begin()));
             }
     }
 }
@@ -144,18 +147,21 @@ TEST_CASE("progressive photon mapping refuses settings that cannot converge or c
         ProgressiveConfig<S> config;
         config.pass.tracing.global_photons = 100;
         change(config);
-        CHECK_THROWS_WITH_AS((void)render_progressive(camera, scene, config, small), doctest::Contains(message), std::invalid_argument);
+        CHECK_THROWS_WITH_AS((void)ProgressivePhotonMapper<S>(scene, config), doctest::Contains(message), std::invalid_argument);
     };
     refuses([](auto& c) { c.alpha = 1.0; }, "alpha must be in (0, 1), got 1");
     refuses([](auto& c) { c.alpha = 0.0; }, "alpha must be in (0, 1), got 0");
     refuses([](auto& c) { c.pass.gather_rays = 8; }, "gather_rays must be 0");
     refuses([](auto& c) { c.pass.global.k = 50; }, "must be by radius (k = 0)");
-    refuses([](auto& c) { c.passes = 0; }, "needs passes > 0 or seconds > 0");
+    refuses([](auto& c) { c.samples = 0; }, "samples must be >= 1, got 0");
     refuses([](auto& c) { c.seconds = -1; }, "seconds must be finite and >= 0, got -1");
     ProgressiveConfig<S> far;
     far.pass.tracing.global_photons = 1 << 20;
-    far.first_pass = 4096;
-    CHECK_THROWS_WITH_AS((void)render_progressive(camera, scene, far, small), doctest::Contains("reaches past photon index 2^32"), std::invalid_argument);
+    RenderConfig late = small;
+    late.spp = 4097;
+    late.passes = {4096, 4097};
+    CHECK_THROWS_WITH_AS((void)render(camera, ProgressivePhotonMapper<S>(scene, far), late), doctest::Contains("reaches past photon index 2^32"),
+                         std::invalid_argument);
 }
 
 TEST_CASE("progressive photon mapping in the two-lobe furnace: every path, within 1 %")
@@ -165,10 +171,9 @@ TEST_CASE("progressive photon mapping in the two-lobe furnace: every path, withi
     ProgressiveConfig<S> config;
     config.pass.tracing = {.global_photons = 50000, .caustic_photons = 50000, .max_bounces = 64, .shadow_photons = false, .seed = 4};
     config.pass.max_depth = 16;
-    config.passes = 8;
     const Camera<float> camera{.position = {0.01f, 0.02f, 0.03f}, .look_at = {0.3f, 0.2f, 1}, .fov = 90};
-    const ProgressiveResult result = render_progressive(camera, scene, config, {.width = 24, .height = 24, .threads = 2, .progress = false});
-    const double mean = test::image_mean(result.image());
+    const Film image = render(camera, ProgressivePhotonMapper<S>(scene, config), {.width = 24, .height = 24, .spp = 8, .threads = 2, .progress = false});
+    const double mean = test::image_mean(image);
     MESSAGE("mean ", mean, " (closed form ", test::CoatedFurnace::all, ")");
     CHECK(mean == doctest::Approx(test::CoatedFurnace::all).epsilon(0.01));
 }

@@ -395,52 +395,46 @@ void precompute_irradiance(MPI_Comm comm, PhotonMap& map, std::size_t stride, un
     if (traffic != nullptr) traffic->irradiance_seconds += clock.lap();
 }
 
-/// render_progressive over the ranks of `comm`: passes [first_pass, first_pass + passes)
-/// dealt one at a time to whichever rank asks next, each rendered by render_progressive
-/// on the rank's threads (its photons traced there), every rank's passes summed exactly
-/// and the shares added up on rank 0 by a reduction of 128-bit sums. Rank 0 returns the
-/// single-process result's bits (its `seconds` are rank 0's); the others nullopt.
-/// config.passes must be > 0: a time budget would make the pass count depend on the
-/// machines.
-template <class SceneT, class Air = StraightAir>
-[[nodiscard]] std::optional<ProgressiveResult> render_progressive(MPI_Comm comm, const Camera<typename SceneT::scalar_type>& camera, const SceneT& scene,
-                                                                  const ProgressiveConfig<SceneT, Air>& config, const RenderConfig& render_config,
-                                                                  const Air& air = {}, Traffic* traffic = nullptr)
-{
-    prism::detail::validate_progressive(camera, config, render_config);
-    if (config.passes == 0 || config.seconds != 0.0)
-        prism::detail::throw_invalid("prism::mpi::render_progressive takes a pass count (ProgressiveConfig passes > 0, seconds 0), got passes ",
-                                     config.passes, " and seconds ", config.seconds);
-    detail::Stopwatch clock;
-    Accumulation mine(render_config.width, render_config.height, prism::detail::render_window(render_config));
-    {
-        detail::WorkCounter counter(comm);
-        for (std::int64_t k = counter.next(); k < std::int64_t(config.passes); k = counter.next()) {
-            ProgressiveConfig<SceneT, Air> one = config;
-            one.first_pass = config.first_pass + std::size_t(k);
-            one.passes = 1;
-            RenderConfig quiet = render_config;
-            quiet.progress = false;
-            mine += prism::render_progressive(camera, scene, one, quiet, air).sums;
-            if (traffic != nullptr) ++traffic->tiles;
-        }
-    }
-    if (traffic != nullptr) traffic->render_seconds += clock.lap();
-    std::optional<Accumulation> sums = detail::reduce_sums(comm, mine, traffic);
-    if (traffic != nullptr) traffic->film_gather_seconds += clock.lap();
-    if (!sums) return std::nullopt;
-    return ProgressiveResult{std::move(*sums), config.passes, clock.total()};
-}
-
-/// render_sums over the ranks of `comm`, `tile` x `tile` pixels dealt at a time (each
-/// rendered on config.threads threads): rank 0 returns the sums, bit for bit those of
-/// render_sums in one process; the other ranks return nullopt.
+/// render_sums over the ranks of `comm`: rank 0 returns the sums, bit for bit those of
+/// render_sums in one process; the other ranks return nullopt. An integrator of camera
+/// rays is dealt `tile` x `tile` pixels at a time (each rendered on config.threads
+/// threads); one of passes (PassEstimator) is dealt one pass at a time to whichever rank
+/// asks next (its photons or light paths traced there), every rank's passes summed exactly
+/// and the shares added up on rank 0 by a reduction of 128-bit sums. A time budget
+/// (ProgressiveConfig::seconds) would make the pass count depend on the machines: it is
+/// refused.
 template <Integrator I>
 [[nodiscard]] std::optional<Accumulation> render_sums(MPI_Comm comm, const Camera<typename I::scalar_type>& camera, const I& integrator,
                                                       const RenderConfig& config = {}, int tile = 64, Traffic* traffic = nullptr)
 {
-    return detail::render_dealt(comm, config, tile, {"R", "G", "B"}, traffic,
-                                [&](const RenderConfig& part) { return prism::render_sums(camera, integrator, part); });
+    if constexpr (RayEstimator<I>) {
+        return detail::render_dealt(comm, config, tile, {"R", "G", "B"}, traffic,
+                                    [&](const RenderConfig& part) { return prism::render_sums(camera, integrator, part); });
+    } else {
+        if constexpr (requires { integrator.config().seconds; }) {
+            if (integrator.config().seconds != 0.0)
+                prism::detail::throw_invalid("prism::mpi::render_sums takes a pass count, not a time budget: seconds must be 0, got ",
+                                             integrator.config().seconds);
+        }
+        const PassRange passes = prism::detail::render_passes(config);
+        (void)camera.rays(config.width, config.height); // every rank refuses alike, before any pass
+        detail::Stopwatch clock;
+        Accumulation mine(config.width, config.height, prism::detail::render_window(config));
+        {
+            detail::WorkCounter counter(comm);
+            for (std::int64_t k = counter.next(); k < std::int64_t(passes.count()); k = counter.next()) {
+                RenderConfig one = config;
+                one.passes = {passes.first + std::uint64_t(k), passes.first + std::uint64_t(k) + 1};
+                one.progress = false;
+                prism::render_into(mine, camera, integrator, one);
+                if (traffic != nullptr) ++traffic->tiles;
+            }
+        }
+        if (traffic != nullptr) traffic->render_seconds += clock.lap();
+        std::optional<Accumulation> sums = detail::reduce_sums(comm, mine, traffic);
+        if (traffic != nullptr) traffic->film_gather_seconds += clock.lap();
+        return sums;
+    }
 }
 
 /// render_layers (render/layers.hpp) over the ranks of `comm`, as render_sums.
@@ -448,8 +442,12 @@ template <Integrator I>
 [[nodiscard]] std::optional<Accumulation> render_layers(MPI_Comm comm, const Camera<typename I::scalar_type>& camera, const I& integrator,
                                                         const RenderConfig& config = {}, int tile = 64, Traffic* traffic = nullptr)
 {
-    return detail::render_dealt(comm, config, tile, layer_channels<I>(), traffic,
-                                [&](const RenderConfig& part) { return prism::render_layers(camera, integrator, part); });
+    if constexpr (RayEstimator<I>) {
+        return detail::render_dealt(comm, config, tile, layer_channels<I>(), traffic,
+                                    [&](const RenderConfig& part) { return prism::render_layers(camera, integrator, part); });
+    } else {
+        return render_sums(comm, camera, integrator, config, tile, traffic);
+    }
 }
 
 } // namespace prism::mpi

@@ -26,7 +26,6 @@
 #include <prism/medium/air.hpp>
 #include <prism/transport/travel.hpp>
 #include <prism/transport/random_walk.hpp>
-#include <prism/render/layers.hpp>
 #include <prism/spectrum/bands.hpp>
 
 namespace prism {
@@ -80,8 +79,9 @@ public:
         return sum;
     }
 
-    /// What a camera ray meets first (render_layers).
-    [[nodiscard]] std::optional<SurfaceSample<T>> first_surface(const Ray<T>& ray) const noexcept { return prism::first_surface(*scene_, air_, ray); }
+    /// The scene and the air its camera rays start in (render_layers' surface layers).
+    [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
+    [[nodiscard]] const Air& air() const noexcept { return air_; }
 
 private:
     static SpectralBands<T> checked_bands(int count)

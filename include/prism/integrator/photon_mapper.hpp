@@ -198,8 +198,9 @@ public:
     /// shadow rays (and the background), the caustic map, the indirect estimate.
     [[nodiscard]] LightParts<T> radiance_parts(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), {}); }
 
-    /// What a camera ray meets first (render_layers).
-    [[nodiscard]] std::optional<SurfaceSample<T>> first_surface(const Ray<T>& ray) const noexcept { return prism::first_surface(*scene_, air_, ray); }
+    /// The scene and the air its camera rays start in (render_layers' surface layers).
+    [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
+    [[nodiscard]] const Air& air() const noexcept { return air_; }
 
     /// What the nearest global photons say about the light's visibility at p (normal n
     /// facing the viewer): true when the `visibility_k` nearest within global.radius

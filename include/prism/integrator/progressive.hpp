@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// render_progressive: stochastic progressive photon mapping (Hachisuka and Jensen 2009)
+// ProgressivePhotonMapper: stochastic progressive photon mapping (Hachisuka and Jensen 2009)
 // in the probabilistic form of Knaus and Zwicker (2011), which converges to the right
 // image as the passes go on.
 //
@@ -12,7 +12,9 @@
 // p^(alpha - 1), the bias vanishes, while the mean of p passes still averages the noise
 // down: the error falls as p^(-alpha / 2) = p^(-1/3) (Knaus and Zwicker, section 4).
 // No per-pixel statistics are kept, so a pass is as cheap as the photon mapper's, any
-// pass count is deterministic, and passes on different threads or machines add up.
+// pass count is deterministic, and passes on different threads or machines add up: an
+// integrator of passes (render/render.hpp's PassEstimator), whose RenderConfig::spp counts
+// the passes and RenderConfig::passes picks a range of them.
 // Direct light is by shadow rays (each pass at a new sample position in the pixel,
 // even at one sample per pixel, which also anti-aliases; at the pixel's centre every
 // pass, a light's hot spot kept an error of 0.11 in the Cornell box), caustics from the caustic map, the rest from the global
@@ -30,7 +32,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <vector>
+#include <utility>
 
 namespace prism {
 
@@ -52,84 +54,71 @@ struct ProgressiveConfig {
                                                     .global = {.radius = 0.25f, .excluded = Photon::direct | Photon::caustic},
                                                     .gather_rays = 0};
     double alpha = 2.0 / 3.0; ///< in (0, 1): how much of the radius each pass keeps
-    std::size_t passes = 64;  ///< at most this many; 0 = until `seconds`
-    double seconds = 0;       ///< > 0: stop after the pass that ends past this time (the pass count then varies)
-    std::size_t first_pass = 0; ///< passes [first_pass, first_pass + passes): one share of a render split across machines
+    int samples = 1;          ///< jittered camera samples per pixel in each pass
+    /// > 0: stop after the pass that ends past this time (the pass count then varies, and
+    /// so do the image's bits); 0: every pass of the render.
+    double seconds = 0;
 };
 
-/// What a run of passes made: the exact sums of their samples (Accumulation), so that
-/// the sums of shares of one render (first_pass) add up to the whole render's, bit for
-/// bit, in any order.
-struct ProgressiveResult {
-    Accumulation sums;    ///< every pass's samples; a pixel's weight is passes x spp
-    std::size_t passes{}; ///< how many were rendered
-    double seconds{};
-
-    /// Add another share of the same render.
-    ProgressiveResult& operator+=(const ProgressiveResult& other)
-    {
-        sums += other.sums;
-        passes += other.passes;
-        seconds += other.seconds;
-        return *this;
-    }
-
-    /// The mean of the passes' images.
-    [[nodiscard]] Film image() const { return sums.image(); }
-};
-
-namespace detail {
-
-/// render_progressive's checks, before its first pass (and before a distributed render
-/// deals any: every process refuses alike).
-template <class SceneT, class Air>
-void validate_progressive(const Camera<typename SceneT::scalar_type>& camera, const ProgressiveConfig<SceneT, Air>& config, const RenderConfig& render_config)
-{
-    if (!(config.alpha > 0.0 && config.alpha < 1.0)) detail::throw_invalid("ProgressiveConfig alpha must be in (0, 1), got ", config.alpha);
-    if (config.pass.gather_rays != 0) detail::throw_invalid("ProgressiveConfig pass.gather_rays must be 0 (the maps are read directly), got ", config.pass.gather_rays);
-    if (config.pass.visibility_k != 0) detail::throw_invalid("ProgressiveConfig pass.visibility_k must be 0, got ", config.pass.visibility_k);
-    if (config.pass.caustic.k != 0 || config.pass.global.k != 0)
-        detail::throw_invalid("ProgressiveConfig estimates must be by radius (k = 0), got k = ", config.pass.caustic.k, " and ", config.pass.global.k);
-    if (!(config.seconds >= 0.0 && std::isfinite(config.seconds))) detail::throw_invalid("ProgressiveConfig seconds must be finite and >= 0, got ", config.seconds);
-    if (config.passes == 0 && config.seconds == 0.0) detail::throw_invalid("ProgressiveConfig needs passes > 0 or seconds > 0");
-    (void)camera.rays(render_config.width, render_config.height); // validates both before the first pass
-    if (render_config.passes != PassRange{})
-        detail::throw_invalid("render_progressive takes its passes from ProgressiveConfig (first_pass, passes), not RenderConfig passes [",
-                              render_config.passes.first, ", ", render_config.passes.last, ")");
-}
-
-} // namespace detail
-
-/// Render `scene` by progressive photon mapping: `render`'s size, samples per pixel per
-/// pass, threads and seed; the same bits for any thread count.
+/// Progressive photon mapping of `scene` in its air: pass p (from 0) traces photon pass p
+/// (trace_photons) and renders `samples` jittered samples per pixel with the photon mapper
+/// at pass p's radii. The same bits for any thread count.
 template <class SceneT, class Air = StraightAir>
-[[nodiscard]] ProgressiveResult render_progressive(const Camera<typename SceneT::scalar_type>& camera, const SceneT& scene,
-                                                   const ProgressiveConfig<SceneT, Air>& config, const RenderConfig& render_config, const Air& air = {})
-{
-    detail::validate_progressive(camera, config, render_config);
+class ProgressivePhotonMapper {
+public:
+    using scalar_type = typename SceneT::scalar_type;
+    using T = scalar_type;
+    using Config = ProgressiveConfig<SceneT, Air>;
 
-    const auto start = std::chrono::steady_clock::now();
-    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-    ProgressiveResult result{Accumulation(render_config.width, render_config.height, detail::render_window(render_config)), 0, 0.0};
-    for (std::size_t pass = config.first_pass; config.passes == 0 || pass < config.first_pass + config.passes; ++pass) {
-        typename PhotonMapper<SceneT, Air>::Config mapper_config = config.pass;
-        mapper_config.caustic.radius = float(progressive_radius(config.pass.caustic.radius, config.alpha, pass));
-        mapper_config.global.radius = float(progressive_radius(config.pass.global.radius, config.alpha, pass));
-        const PhotonMapper<SceneT, Air> mapper(scene, mapper_config, trace_photons(scene, config.pass.tracing, air, pass), air);
-        RenderConfig pass_render = render_config;
-        pass_render.seed = render_config.seed + 0x9e3779b97f4a7c15ULL * (pass + 1); // a fresh sample in every pixel
-        pass_render.progress = false;
-        pass_render.single_sample_at_centre = false; // anti-aliased over the passes
-        render_into(result.sums, camera, mapper, pass_render);
-        ++result.passes;
-        if (render_config.progress)
-            std::fprintf(stderr, "\rprism: progressive pass %zu, r = %.4g / %.4g (%.1f s)", pass + 1, double(mapper_config.caustic.radius),
-                         double(mapper_config.global.radius), elapsed());
-        if (config.seconds > 0.0 && elapsed() >= config.seconds) break;
+    explicit ProgressivePhotonMapper(const SceneT& scene, Config config = {}, Air air = {}) : scene_(&scene), config_(config), air_(std::move(air))
+    {
+        scene.validate();
+        air_.validate();
+        if (!(config.alpha > 0.0 && config.alpha < 1.0)) detail::throw_invalid("ProgressiveConfig alpha must be in (0, 1), got ", config.alpha);
+        if (config.pass.gather_rays != 0) detail::throw_invalid("ProgressiveConfig pass.gather_rays must be 0 (the maps are read directly), got ", config.pass.gather_rays);
+        if (config.pass.visibility_k != 0) detail::throw_invalid("ProgressiveConfig pass.visibility_k must be 0, got ", config.pass.visibility_k);
+        if (config.pass.caustic.k != 0 || config.pass.global.k != 0)
+            detail::throw_invalid("ProgressiveConfig estimates must be by radius (k = 0), got k = ", config.pass.caustic.k, " and ", config.pass.global.k);
+        if (config.samples < 1) detail::throw_invalid("ProgressiveConfig samples must be >= 1, got ", config.samples);
+        if (!(config.seconds >= 0.0 && std::isfinite(config.seconds))) detail::throw_invalid("ProgressiveConfig seconds must be finite and >= 0, got ", config.seconds);
+        detail::validate(config.pass.tracing);
     }
-    if (render_config.progress) std::fprintf(stderr, "\n");
-    result.seconds = elapsed();
-    return result;
-}
+    ProgressivePhotonMapper(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
+
+    [[nodiscard]] const Config& config() const noexcept { return config_; }
+
+    /// Passes config.passes of config.spp, each of `samples` samples per pixel, in order;
+    /// with a time budget, up to the pass that ends past it (the samples of the passes
+    /// rendered are the pixels' weight).
+    void add_passes(Accumulation& sums, const Camera<T>& camera, const RenderConfig& config) const
+    {
+        const PassRange passes = detail::render_passes(config);
+        const auto start = std::chrono::steady_clock::now();
+        const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+        for (std::uint64_t pass = passes.first; pass < passes.last; ++pass) {
+            typename PhotonMapper<SceneT, Air>::Config mapper_config = config_.pass;
+            mapper_config.caustic.radius = float(progressive_radius(config_.pass.caustic.radius, config_.alpha, pass));
+            mapper_config.global.radius = float(progressive_radius(config_.pass.global.radius, config_.alpha, pass));
+            const PhotonMapper<SceneT, Air> mapper(*scene_, mapper_config, trace_photons(*scene_, config_.pass.tracing, air_, pass), air_);
+            RenderConfig pass_render = config;
+            pass_render.spp = config_.samples;
+            pass_render.passes = {};
+            pass_render.seed = config.seed + 0x9e3779b97f4a7c15ULL * (pass + 1); // a fresh sample in every pixel
+            pass_render.progress = false;
+            pass_render.single_sample_at_centre = false; // anti-aliased over the passes
+            render_into(sums, camera, mapper, pass_render);
+            if (config.progress)
+                std::fprintf(stderr, "\rprism: progressive pass %llu, r = %.4g / %.4g (%.1f s)", static_cast<unsigned long long>(pass + 1),
+                             double(mapper_config.caustic.radius), double(mapper_config.global.radius), elapsed());
+            if (config_.seconds > 0.0 && elapsed() >= config_.seconds) break;
+        }
+        if (config.progress) std::fprintf(stderr, "\n");
+    }
+
+private:
+    const SceneT* scene_;
+    Config config_;
+    Air air_;
+};
 
 } // namespace prism

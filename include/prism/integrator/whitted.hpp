@@ -21,7 +21,6 @@
 #include <prism/material/traits.hpp>
 #include <prism/medium/nesting.hpp>
 #include <prism/optics/refract.hpp>
-#include <prism/render/layers.hpp>
 #include <prism/scene/hit.hpp>
 #include <prism/spectrum/bands.hpp>
 #include <prism/transport/direct.hpp>
@@ -62,8 +61,9 @@ public:
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
 
-    /// What a camera ray meets first (render_layers).
-    [[nodiscard]] std::optional<SurfaceSample<T>> first_surface(const Ray<T>& ray) const noexcept { return prism::first_surface(*scene_, air_, ray); }
+    /// The scene and the air its camera rays start in (render_layers' surface layers).
+    [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
+    [[nodiscard]] const Air& air() const noexcept { return air_; }
 
     [[nodiscard]] const Config& config() const noexcept { return config_; }
 

@@ -46,11 +46,12 @@ struct LightParts {
     [[nodiscard]] friend constexpr LightParts operator*(const Rgb<T>& k, LightParts p) noexcept { return p *= k; }
 };
 
-/// An integrator that can say what its camera rays meet first (render_layers' surface
-/// layers).
+/// An integrator whose camera rays start in a scene's air (its scene() and air()), so
+/// that what they meet first is first_surface's (transport/first_surface.hpp): the
+/// surface layers of render_layers.
 template <class I>
 concept SeesSurfaces = requires(const I& integrator, const Ray<typename I::scalar_type>& ray) {
-    { integrator.first_surface(ray) } -> std::same_as<std::optional<SurfaceSample<typename I::scalar_type>>>;
+    { first_surface(integrator.scene(), integrator.air(), ray) } -> std::same_as<std::optional<SurfaceSample<typename I::scalar_type>>>;
 };
 
 /// An integrator that splits its radiance into LightParts (whose sum is its radiance).

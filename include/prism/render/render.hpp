@@ -25,12 +25,6 @@
 
 namespace prism {
 
-/// An integrator: the radiance along a camera ray, drawing random numbers from rng.
-template <class I>
-concept Integrator = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
-    { integrator.radiance(ray, rng) } -> std::same_as<Rgb<typename I::scalar_type>>;
-};
-
 struct RenderConfig {
     int width = 512;
     int height = 512;
@@ -52,6 +46,31 @@ struct RenderConfig {
     /// of their union, bit for bit.
     PassRange passes{};
 };
+
+/// An integrator of the first kind: the radiance along a camera ray, drawing random
+/// numbers from rng (Whitted, PhotonMapper, PathTracer). render() takes config.spp
+/// samples in every pixel of the crop window.
+template <class I>
+concept RayEstimator = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
+    { integrator.radiance(ray, rng) } -> std::same_as<Rgb<typename I::scalar_type>>;
+};
+
+/// An integrator of the second kind: an estimate of the whole image in passes, each
+/// splatting over it (LightTracer, ProgressivePhotonMapper, Reference).
+/// add_passes(sums, camera, config) adds to `sums` (which holds the config's crop window)
+/// the sums of passes config.passes of config.spp (all of them when empty) over the
+/// window, and their weights (the samples they took in each pixel, or one per pass), so
+/// that sums / weight is the mean of the passes' images; the same bits for any thread count, and windows or
+/// ranges of passes rendered apart add up to the whole.
+template <class I>
+concept PassEstimator = requires(const I& integrator, Accumulation& sums, const Camera<typename I::scalar_type>& camera, const RenderConfig& config) {
+    integrator.add_passes(sums, camera, config);
+};
+
+/// An integrator: either kind. render(camera, integrator, config) and its siblings take
+/// both, and so do their MPI versions (distributed/mpi.hpp).
+template <class I>
+concept Integrator = RayEstimator<I> || PassEstimator<I>;
 
 namespace detail {
 
@@ -181,8 +200,8 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
 } // namespace detail
 
 /// Render a part of an image into `sums`: the config's crop window (which `sums`'
-/// window must contain) and samples, each pixel's sum and sample count added to those
-/// there. The parts of one render, added in any order, give the same bits.
+/// window must contain) and samples (or passes), each pixel's sum and weight added to
+/// those there. The parts of one render, added in any order, give the same bits.
 template <Integrator I>
 void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
 {
@@ -192,13 +211,19 @@ void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& came
                               sums.window().x1, ") x [", sums.window().y0, ", ", sums.window().y1, ")) does not hold the render's window");
     if (sums.channels().size() != 3) detail::throw_invalid("render_into renders R, G, B only, the Accumulation has ", sums.channels().size(), " channels");
     using T = typename I::scalar_type;
-    detail::render_pixels<3>(
-        camera, config,
-        [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
-        [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
-            sums.add(x, y, sum, weight);
-            if (rejected != 0) sums.reject(rejected);
-        });
+    if constexpr (RayEstimator<I>) {
+        detail::render_pixels<3>(
+            camera, config,
+            [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
+            [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+                sums.add(x, y, sum, weight);
+                if (rejected != 0) sums.reject(rejected);
+            });
+    } else {
+        (void)detail::render_passes(config);
+        (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
+        integrator.add_passes(sums, camera, config);
+    }
 }
 
 /// A part of an image as exact sums (its crop window, its samples): add the parts of a
@@ -206,6 +231,7 @@ void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& came
 template <Integrator I>
 [[nodiscard]] Accumulation render_sums(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
+    (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
     Accumulation sums(config.width, config.height, detail::render_window(config));
     render_into(sums, camera, integrator, config);
     return sums;
@@ -214,8 +240,9 @@ template <Integrator I>
 /// A part of an image with its layers (render/layers.hpp): R, G, B and, as the
 /// integrator allows, coverage, albedo, normal and distance of the first surface, and
 /// the light's parts; layer_channels<I>() names them. Its R, G, B are render_sums' bits:
-/// the layers are worked out beside the image, from the same camera rays.
-template <Integrator I>
+/// the layers are worked out beside the image, from the same camera rays. (An integrator
+/// of passes has no camera rays of its own: R, G, B only.)
+template <RayEstimator I>
 [[nodiscard]] Accumulation render_layers(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
     using T = typename I::scalar_type;
@@ -235,7 +262,7 @@ template <Integrator I>
                 rejected += detail::add_radiance(sum, 0, integrator.radiance(ray, rng));
             }
             if constexpr (SeesSurfaces<I>) {
-                if (const auto seen = integrator.first_surface(ray)) {
+                if (const auto seen = first_surface(integrator.scene(), integrator.air(), ray)) {
                     rejected += detail::add_value(sum, 3, 1.0);
                     rejected += detail::add_radiance(sum, 4, seen->albedo);
                     for (int c = 0; c < 3; ++c) rejected += detail::add_value(sum, 7 + std::size_t(c), double(seen->normal[c]));
@@ -255,7 +282,21 @@ template <Integrator I>
 /// the mean of its samples. The same scene, seed and spp give the same bits for any
 /// thread count, crop or split of the samples: every sample draws from its own random
 /// stream, and a pixel's samples are summed exactly (Accumulation).
-template <Integrator I>
+template <PassEstimator I>
+[[nodiscard]] Accumulation render_layers(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
+{
+    return render_sums(camera, integrator, config);
+}
+
+/// Render an image: the config's crop window (the whole image by default), each pixel
+/// the mean of its samples (or passes).
+template <PassEstimator I>
+[[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
+{
+    return render_sums(camera, integrator, config).image();
+}
+
+template <RayEstimator I>
 [[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
     const PixelWindow window = detail::render_window(config);

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+// Reference: prism's unbiased estimator, a path tracer's camera samples plus a light
+// tracer's splats (integrator/path_tracer.hpp, integrator/light_tracer.hpp). The two count
+// disjoint sets of paths, so their sum is every path either can sample. An integrator of
+// passes: pass s is the path tracer's sample s of every pixel and the light tracer's pass
+// s, of as many light paths as the image has pixels (LightTracerConfig::paths = width x
+// height), so each pass costs about as many paths from either end.
+#pragma once
+
+#include <prism/integrator/light_tracer.hpp>
+#include <prism/integrator/path_tracer.hpp>
+#include <prism/render/accumulation.hpp>
+#include <prism/render/render.hpp>
+#include <prism/scene/camera.hpp>
+
+#include <cstdint>
+#include <utility>
+
+namespace prism {
+
+template <class SceneT, class Air = StraightAir>
+class Reference {
+public:
+    using scalar_type = typename SceneT::scalar_type;
+    using T = scalar_type;
+
+    struct Config {
+        /// Diffuse bounces either half may take (0: direct light only, as POV-Ray without
+        /// radiosity; the light tracer then joins a path to the camera at its first diffuse
+        /// surface only).
+        int max_diffuse_bounces = 256;
+    };
+
+    explicit Reference(const SceneT& scene, Config config = {}, Air air = {})
+        : scene_(&scene), config_(config), air_(std::move(air)), paths_(scene, {.max_diffuse_bounces = config.max_diffuse_bounces}, air_)
+    {
+    }
+    Reference(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
+
+    /// Passes config.passes of config.spp: the path tracer's samples, weighted as they
+    /// are, and the light tracer's passes of width x height paths each, splatted beside
+    /// them with no weight of their own.
+    void add_passes(Accumulation& sums, const Camera<T>& camera, const RenderConfig& config) const
+    {
+        render_into(sums, camera, paths_, config);
+        const LightTracer<SceneT, Air> lights(
+            *scene_, {.paths = std::uint64_t(config.width) * std::uint64_t(config.height), .max_diffuse_bounces = config_.max_diffuse_bounces}, air_);
+        lights.add_splats(sums, camera, config);
+    }
+
+private:
+    const SceneT* scene_;
+    Config config_;
+    Air air_;
+    PathTracer<SceneT, Air> paths_;
+};
+
+} // namespace prism
