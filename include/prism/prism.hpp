@@ -5,6 +5,7 @@
 #pragma once
 
 #include <prism/accel/bvh.hpp>
+#include <prism/accel/bvh_node.hpp>
 #include <prism/accel/kd_tree.hpp>
 #include <prism/core/aabb.hpp>
 #include <prism/core/check.hpp>
@@ -29,6 +30,7 @@
 #include <prism/geometry/shape.hpp>
 #include <prism/geometry/sphere.hpp>
 #include <prism/geometry/transformed.hpp>
+#include <prism/geometry/triangle.hpp>
 #include <prism/geometry/triangle_mesh.hpp>
 #include <prism/integrator/irradiance_cache.hpp>
 #include <prism/integrator/light_tracer.hpp>
@@ -67,8 +69,11 @@
 #include <prism/render/render.hpp>
 #include <prism/scene/camera.hpp>
 #include <prism/scene/hit.hpp>
+#include <prism/scene/lights.hpp>
 #include <prism/scene/object.hpp>
+#include <prism/scene/object_key.hpp>
 #include <prism/scene/scene.hpp>
+#include <prism/scene/shadow.hpp>
 #include <prism/spectrum/bands.hpp>
 #include <prism/spectrum/cie.hpp>
 #include <prism/spectrum/cie_tables.hpp>

@@ -491,6 +491,225 @@ struct Aabb {
 
 } // namespace prism
 
+// ---- prism/accel/bvh_node.hpp ----
+// A node of a Bvh (accel/bvh.hpp) and the test a ray makes of it: up to Width children
+// whose boxes lie side by side, and a ray prepared once (SlabRay) to test them all at once,
+// in SIMD where the compiler has vector extensions (SlabLanes) and lane by lane otherwise,
+// the same arithmetic in each lane. Every box is widened by one pad per ray (see Bvh), so
+// the test is a plain slab test (Ize 2013) that never culls a box Aabb::may_cross keeps.
+
+
+#include <array>
+#include <cstdint>
+#include <limits>
+
+namespace prism {
+
+namespace detail {
+
+/// The node width a Bvh<T> takes unless told: eight children where the target has AVX
+/// and T is float (a face's eight coordinates fill one 256-bit register, and the tree
+/// has a third fewer levels), else four (one 128-bit register in float, 256 in double).
+/// Every translation unit of a program should be compiled for the same target, as with
+/// any header-only SIMD library: Bvh<float> names a different tree in each.
+template <class T>
+inline constexpr int default_bvh_width =
+#if defined(__AVX__)
+    sizeof(T) == 4 ? 8 : 4;
+#else
+    4;
+#endif
+
+} // namespace detail
+
+/// A node of the Width-wide tree (4 or 8): up to Width children, each a node or a leaf,
+/// their boxes side by side (lane c of bounds[axis] is child c's lo[axis], of
+/// bounds[3 + axis] its hi[axis]). An unused lane holds the empty box (lo +inf, hi -inf),
+/// which every ray misses, and count 0.
+template <Scalar T, int Width = detail::default_bvh_width<T>>
+struct alignas(64) BvhNode {
+    static_assert(Width == 4 || Width == 8, "a BvhNode has 4 or 8 children");
+    static constexpr int width = Width;
+    std::array<std::array<T, width>, 6> bounds = empty_bounds(); ///< every lane unused until set
+    std::array<std::uint32_t, width> first{}; ///< child node, or a leaf's first primitive
+    std::array<std::uint32_t, width> count{}; ///< a leaf's primitives; 0 for a node (or unused)
+
+    [[nodiscard]] static constexpr std::array<std::array<T, width>, 6> empty_bounds() noexcept
+    {
+        std::array<std::array<T, width>, 6> b{};
+        for (std::size_t row = 0; row < 6; ++row) b[row].fill(row < 3 ? infinity<T> : -infinity<T>);
+        return b;
+    }
+
+    [[nodiscard]] constexpr bool leaf(int lane) const noexcept { return count[std::size_t(lane)] != 0; }
+    [[nodiscard]] constexpr bool used(int lane) const noexcept { return bounds[0][std::size_t(lane)] <= bounds[3][std::size_t(lane)]; }
+    [[nodiscard]] constexpr Aabb<T> box(int lane) const noexcept
+    {
+        const auto c = std::size_t(lane);
+        return {{bounds[0][c], bounds[1][c], bounds[2][c]}, {bounds[3][c], bounds[4][c], bounds[5][c]}};
+    }
+    constexpr void set(int lane, const Aabb<T>& box, std::uint32_t first_, std::uint32_t count_) noexcept
+    {
+        const auto c = std::size_t(lane);
+        for (int axis = 0; axis < 3; ++axis) {
+            bounds[std::size_t(axis)][c] = box.lo[axis];
+            bounds[std::size_t(axis + 3)][c] = box.hi[axis];
+        }
+        first[c] = first_;
+        count[c] = count_;
+    }
+};
+
+namespace detail {
+
+/// A ray prepared for many box tests: its slabs' reciprocals, which face of each slab
+/// it meets first, and its origin moved by one padding for every box of a tree (see
+/// Bvh::traverse).
+template <Scalar T>
+struct SlabRay {
+    Vec3<T> inverse{T(0)}; // (initialized: clang's constant evaluation assigns no inactive union member of GLM's vectors)
+    /// inverse * far_widening: the far face's distance, widened by the one product.
+    /// (Infinite for a denormal d: the far face is then at +-inf, or NaN, which the test
+    /// ignores; never a miss.)
+    Vec3<T> far_inverse{T(0)};
+    /// The origin moved by the pad, for the near and far faces of each slab: the widened
+    /// face lo - pad is at (lo - (o + pad)) / d from the origin.
+    Vec3<T> near_origin{T(0)}, far_origin{T(0)};
+    std::array<bool, 3> negative{}; ///< the ray runs toward -axis: it meets hi first
+
+    /// The far slab's widening: rounding never reports a miss for a ray that touches a
+    /// box (pbrt-v4, Bounds3::IntersectP). Folded into far_inverse, the far distance
+    /// takes four roundings (o - pad, 1 / d, the widening, the product) where pbrt's takes
+    /// three and the widening's own, and 2 gamma(3) covers both.
+    static constexpr T far_widening = T(1) + T(2) * gamma<T>(3);
+
+    /// `magnitude`: the largest coordinate magnitude of every box to be tested.
+    constexpr SlabRay(const Ray<T>& ray, T magnitude) noexcept
+    {
+        // Aabb::may_cross widens a box by gamma(16) (|o - c| + h) (c its center, h its
+        // half size, as max components), which is at most gamma(16) (|o| + 2 magnitude).
+        // gamma(20) covers that and the rounding of o +- pad (two ulps of |o| or |lo|),
+        // so that every box is at least as wide here as there.
+        const T pad = gamma<T>(20) * (max_component(prism::abs(ray.origin)) + T(2) * magnitude) + std::numeric_limits<T>::min();
+        constexpr T largest = std::numeric_limits<T>::max();
+        for (int axis = 0; axis < 3; ++axis) {
+            const T d = ray.direction[axis];
+            // 1/d, kept finite for a denormal d (no 0 * inf: no NaN); a zero d gives an
+            // infinite reciprocal of its sign, so the slab is all or nothing (NaN only
+            // for an origin exactly on a widened face, which the test then ignores).
+            inverse[axis] = d == T(0) ? (negative_zero(d) ? -infinity<T> : infinity<T>) : clamp(T(1) / d, -largest, largest);
+            far_inverse[axis] = inverse[axis] * far_widening;
+            negative[std::size_t(axis)] = inverse[axis] < T(0);
+            near_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] - pad : ray.origin[axis] + pad;
+            far_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] + pad : ray.origin[axis] - pad;
+        }
+    }
+
+    [[nodiscard]] static constexpr bool negative_zero(T zero) noexcept
+    {
+        using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+        return (std::bit_cast<Bits>(zero) >> (8 * sizeof(T) - 1)) != 0;
+    }
+
+    /// The part of `range` in which the ray may be inside the widened box (empty if
+    /// none): never empty where Aabb::may_cross is true. (Inlined by force: it is most
+    /// of a traversal's work, and a call per node costs a quarter of it.)
+    [[nodiscard, gnu::always_inline]] constexpr Interval<T> may_cross(const Aabb<T>& box, Interval<T> range) const noexcept
+    {
+        std::array<T, 3> t_near{}, t_far{};
+        for (int axis = 0; axis < 3; ++axis) {
+            const bool n = negative[std::size_t(axis)];
+            t_near[std::size_t(axis)] = ((n ? box.hi[axis] : box.lo[axis]) - near_origin[axis]) * inverse[axis];
+            t_far[std::size_t(axis)] = ((n ? box.lo[axis] : box.hi[axis]) - far_origin[axis]) * far_inverse[axis];
+        }
+        range.min = later(later(t_near[0], t_near[1]), later(t_near[2], range.min));
+        range.max = sooner(sooner(t_far[0], t_far[1]), sooner(t_far[2], range.max));
+        return range.min <= range.max ? range : Interval<T>{};
+    }
+
+    /// max and min, paired as a tree (two steps deep instead of three), in the form of
+    /// SSE's maxps and minps: a NaN (0 * inf, an axis-parallel ray starting on a widened
+    /// face) in the first argument gives the second. A NaN in the second drops its pair,
+    /// which only widens the test.
+    [[nodiscard, gnu::always_inline]] static constexpr T later(T a, T b) noexcept { return a > b ? a : b; }
+    [[nodiscard, gnu::always_inline]] static constexpr T sooner(T a, T b) noexcept { return a < b ? a : b; }
+
+    /// may_cross for the children of a node at once: a bit per child the ray may
+    /// cross, and in `near` where its part of the range begins (for compile time; at run
+    /// time SlabLanes does the same in SIMD).
+    template <int Width>
+    [[nodiscard]] constexpr unsigned may_cross(const BvhNode<T, Width>& node, Interval<T> range, std::array<T, std::size_t(Width)>& near) const noexcept
+    {
+        unsigned hits = 0;
+        for (int lane = 0; lane < Width; ++lane) {
+            const Interval<T> r = may_cross(node.box(lane), range);
+            near[std::size_t(lane)] = r.min;
+            hits |= r.empty() ? 0u : 1u << lane;
+        }
+        return hits;
+    }
+};
+
+#if PRISM_VECTOR_EXTENSIONS
+/// SlabRay's test of a node's children in SIMD (GCC's vector extensions, which clang
+/// shares): the same arithmetic in each lane as SlabRay::may_cross, with the ray's values
+/// broadcast and the faces it meets first chosen once per ray.
+template <Scalar T, int Width>
+struct SlabLanes {
+    static constexpr int width = Width;
+    typedef T Lanes __attribute__((vector_size(width * sizeof(T))));
+    Lanes near_origin[3], far_origin[3], inverse[3], far_inverse[3];
+    std::size_t near_face[3], far_face[3]; ///< rows of BvhNode::bounds
+
+    explicit SlabLanes(const SlabRay<T>& slab) noexcept
+    {
+        for (int axis = 0; axis < 3; ++axis) {
+            near_origin[axis] = Lanes{} + slab.near_origin[axis];
+            far_origin[axis] = Lanes{} + slab.far_origin[axis];
+            inverse[axis] = Lanes{} + slab.inverse[axis];
+            far_inverse[axis] = Lanes{} + slab.far_inverse[axis];
+            const std::size_t n = slab.negative[std::size_t(axis)];
+            near_face[axis] = std::size_t(axis) + 3 * n;
+            far_face[axis] = std::size_t(axis) + 3 * (1 - n);
+        }
+    }
+
+    [[nodiscard, gnu::always_inline]] unsigned may_cross(const BvhNode<T, Width>& node, Interval<T> range, std::array<T, width>& near) const noexcept
+    {
+        Lanes t_near[3], t_far[3];
+        for (int axis = 0; axis < 3; ++axis) {
+            Lanes near_side, far_side;
+            __builtin_memcpy(&near_side, node.bounds[near_face[axis]].data(), sizeof(Lanes));
+            __builtin_memcpy(&far_side, node.bounds[far_face[axis]].data(), sizeof(Lanes));
+            t_near[axis] = (near_side - near_origin[axis]) * inverse[axis];
+            t_far[axis] = (far_side - far_origin[axis]) * far_inverse[axis];
+        }
+        // SlabRay::later and sooner, written out (a function returning a vector wider
+        // than the target's registers changes the ABI, and GCC says so).
+        const Lanes min = Lanes{} + range.min, max = Lanes{} + range.max;
+        const Lanes near01 = t_near[0] > t_near[1] ? t_near[0] : t_near[1], near2 = t_near[2] > min ? t_near[2] : min;
+        const Lanes far01 = t_far[0] < t_far[1] ? t_far[0] : t_far[1], far2 = t_far[2] < max ? t_far[2] : max;
+        const Lanes lo = near01 > near2 ? near01 : near2, hi = far01 < far2 ? far01 : far2;
+        const auto crossed = lo <= hi;
+        __builtin_memcpy(near.data(), &lo, sizeof(Lanes));
+#if defined(__SSE__)
+        if constexpr (sizeof(T) == 4 && width == 4) return unsigned(__builtin_ia32_movmskps((Lanes)crossed));
+#endif
+#if defined(__AVX__)
+        if constexpr (sizeof(T) == 4 && width == 8) return unsigned(__builtin_ia32_movmskps256((Lanes)crossed));
+        if constexpr (sizeof(T) == 8 && width == 4) return unsigned(__builtin_ia32_movmskpd256((Lanes)crossed));
+#endif
+        unsigned hits = 0;
+        for (int lane = 0; lane < width; ++lane) hits |= crossed[lane] ? 1u << lane : 0u;
+        return hits;
+    }
+};
+#endif
+
+} // namespace detail
+
+} // namespace prism
+
 // ---- prism/core/check.hpp ----
 // Input validation for constructors: a clear std::invalid_argument naming the parameter,
 // and an allocation_error saying what was asked for when it cannot fit in memory.
@@ -734,7 +953,7 @@ void parallel_for(std::size_t count, unsigned threads, F&& f, std::size_t chunk 
 // (128 or 256 bytes a node in float), with one SIMD instruction per step, and meets a
 // half or a third as many levels.
 //
-// Traversal visits children nearest first (an any-hit query's in any order) and never
+// Traversal (its node and the node's box test: accel/bvh_node.hpp) visits children nearest first (an any-hit query's in any order) and never
 // misses a primitive whose box the ray may cross (Aabb::may_cross: the box widened by
 // gamma(16) of the ray origin's distance, the far slab by 2 gamma(3)). Every box is
 // widened by one pad per ray that is at least as wide as that for any box of the tree
@@ -775,205 +994,6 @@ struct BvhConfig {
 };
 
 namespace detail {
-
-/// The node width a Bvh<T> takes unless told: eight children where the target has AVX
-/// and T is float (a face's eight coordinates fill one 256-bit register, and the tree
-/// has a third fewer levels), else four (one 128-bit register in float, 256 in double).
-/// Every translation unit of a program should be compiled for the same target, as with
-/// any header-only SIMD library: Bvh<float> names a different tree in each.
-template <class T>
-inline constexpr int default_bvh_width =
-#if defined(__AVX__)
-    sizeof(T) == 4 ? 8 : 4;
-#else
-    4;
-#endif
-
-} // namespace detail
-
-/// A node of the Width-wide tree (4 or 8): up to Width children, each a node or a leaf,
-/// their boxes side by side (lane c of bounds[axis] is child c's lo[axis], of
-/// bounds[3 + axis] its hi[axis]). An unused lane holds the empty box (lo +inf, hi -inf),
-/// which every ray misses, and count 0.
-template <Scalar T, int Width = detail::default_bvh_width<T>>
-struct alignas(64) BvhNode {
-    static_assert(Width == 4 || Width == 8, "a BvhNode has 4 or 8 children");
-    static constexpr int width = Width;
-    std::array<std::array<T, width>, 6> bounds = empty_bounds(); ///< every lane unused until set
-    std::array<std::uint32_t, width> first{}; ///< child node, or a leaf's first primitive
-    std::array<std::uint32_t, width> count{}; ///< a leaf's primitives; 0 for a node (or unused)
-
-    [[nodiscard]] static constexpr std::array<std::array<T, width>, 6> empty_bounds() noexcept
-    {
-        std::array<std::array<T, width>, 6> b{};
-        for (std::size_t row = 0; row < 6; ++row) b[row].fill(row < 3 ? infinity<T> : -infinity<T>);
-        return b;
-    }
-
-    [[nodiscard]] constexpr bool leaf(int lane) const noexcept { return count[std::size_t(lane)] != 0; }
-    [[nodiscard]] constexpr bool used(int lane) const noexcept { return bounds[0][std::size_t(lane)] <= bounds[3][std::size_t(lane)]; }
-    [[nodiscard]] constexpr Aabb<T> box(int lane) const noexcept
-    {
-        const auto c = std::size_t(lane);
-        return {{bounds[0][c], bounds[1][c], bounds[2][c]}, {bounds[3][c], bounds[4][c], bounds[5][c]}};
-    }
-    constexpr void set(int lane, const Aabb<T>& box, std::uint32_t first_, std::uint32_t count_) noexcept
-    {
-        const auto c = std::size_t(lane);
-        for (int axis = 0; axis < 3; ++axis) {
-            bounds[std::size_t(axis)][c] = box.lo[axis];
-            bounds[std::size_t(axis + 3)][c] = box.hi[axis];
-        }
-        first[c] = first_;
-        count[c] = count_;
-    }
-};
-
-namespace detail {
-
-/// A ray prepared for many box tests: its slabs' reciprocals, which face of each slab
-/// it meets first, and its origin moved by one padding for every box of a tree (see
-/// Bvh::traverse).
-template <Scalar T>
-struct SlabRay {
-    Vec3<T> inverse{T(0)}; // (initialized: clang's constant evaluation assigns no inactive union member of GLM's vectors)
-    /// inverse * far_widening: the far face's distance, widened by the one product.
-    /// (Infinite for a denormal d: the far face is then at +-inf, or NaN, which the test
-    /// ignores; never a miss.)
-    Vec3<T> far_inverse{T(0)};
-    /// The origin moved by the pad, for the near and far faces of each slab: the widened
-    /// face lo - pad is at (lo - (o + pad)) / d from the origin.
-    Vec3<T> near_origin{T(0)}, far_origin{T(0)};
-    std::array<bool, 3> negative{}; ///< the ray runs toward -axis: it meets hi first
-
-    /// The far slab's widening: rounding never reports a miss for a ray that touches a
-    /// box (pbrt-v4, Bounds3::IntersectP). Folded into far_inverse, the far distance
-    /// takes four roundings (o - pad, 1 / d, the widening, the product) where pbrt's takes
-    /// three and the widening's own, and 2 gamma(3) covers both.
-    static constexpr T far_widening = T(1) + T(2) * gamma<T>(3);
-
-    /// `magnitude`: the largest coordinate magnitude of every box to be tested.
-    constexpr SlabRay(const Ray<T>& ray, T magnitude) noexcept
-    {
-        // Aabb::may_cross widens a box by gamma(16) (|o - c| + h) (c its center, h its
-        // half size, as max components), which is at most gamma(16) (|o| + 2 magnitude).
-        // gamma(20) covers that and the rounding of o +- pad (two ulps of |o| or |lo|),
-        // so that every box is at least as wide here as there.
-        const T pad = gamma<T>(20) * (max_component(prism::abs(ray.origin)) + T(2) * magnitude) + std::numeric_limits<T>::min();
-        constexpr T largest = std::numeric_limits<T>::max();
-        for (int axis = 0; axis < 3; ++axis) {
-            const T d = ray.direction[axis];
-            // 1/d, kept finite for a denormal d (no 0 * inf: no NaN); a zero d gives an
-            // infinite reciprocal of its sign, so the slab is all or nothing (NaN only
-            // for an origin exactly on a widened face, which the test then ignores).
-            inverse[axis] = d == T(0) ? (negative_zero(d) ? -infinity<T> : infinity<T>) : clamp(T(1) / d, -largest, largest);
-            far_inverse[axis] = inverse[axis] * far_widening;
-            negative[std::size_t(axis)] = inverse[axis] < T(0);
-            near_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] - pad : ray.origin[axis] + pad;
-            far_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] + pad : ray.origin[axis] - pad;
-        }
-    }
-
-    [[nodiscard]] static constexpr bool negative_zero(T zero) noexcept
-    {
-        using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
-        return (std::bit_cast<Bits>(zero) >> (8 * sizeof(T) - 1)) != 0;
-    }
-
-    /// The part of `range` in which the ray may be inside the widened box (empty if
-    /// none): never empty where Aabb::may_cross is true. (Inlined by force: it is most
-    /// of a traversal's work, and a call per node costs a quarter of it.)
-    [[nodiscard, gnu::always_inline]] constexpr Interval<T> may_cross(const Aabb<T>& box, Interval<T> range) const noexcept
-    {
-        std::array<T, 3> t_near{}, t_far{};
-        for (int axis = 0; axis < 3; ++axis) {
-            const bool n = negative[std::size_t(axis)];
-            t_near[std::size_t(axis)] = ((n ? box.hi[axis] : box.lo[axis]) - near_origin[axis]) * inverse[axis];
-            t_far[std::size_t(axis)] = ((n ? box.lo[axis] : box.hi[axis]) - far_origin[axis]) * far_inverse[axis];
-        }
-        range.min = later(later(t_near[0], t_near[1]), later(t_near[2], range.min));
-        range.max = sooner(sooner(t_far[0], t_far[1]), sooner(t_far[2], range.max));
-        return range.min <= range.max ? range : Interval<T>{};
-    }
-
-    /// max and min, paired as a tree (two steps deep instead of three), in the form of
-    /// SSE's maxps and minps: a NaN (0 * inf, an axis-parallel ray starting on a widened
-    /// face) in the first argument gives the second. A NaN in the second drops its pair,
-    /// which only widens the test.
-    [[nodiscard, gnu::always_inline]] static constexpr T later(T a, T b) noexcept { return a > b ? a : b; }
-    [[nodiscard, gnu::always_inline]] static constexpr T sooner(T a, T b) noexcept { return a < b ? a : b; }
-
-    /// may_cross for the children of a node at once: a bit per child the ray may
-    /// cross, and in `near` where its part of the range begins (for compile time; at run
-    /// time SlabLanes does the same in SIMD).
-    template <int Width>
-    [[nodiscard]] constexpr unsigned may_cross(const BvhNode<T, Width>& node, Interval<T> range, std::array<T, std::size_t(Width)>& near) const noexcept
-    {
-        unsigned hits = 0;
-        for (int lane = 0; lane < Width; ++lane) {
-            const Interval<T> r = may_cross(node.box(lane), range);
-            near[std::size_t(lane)] = r.min;
-            hits |= r.empty() ? 0u : 1u << lane;
-        }
-        return hits;
-    }
-};
-
-#if PRISM_VECTOR_EXTENSIONS
-/// SlabRay's test of a node's children in SIMD (GCC's vector extensions, which clang
-/// shares): the same arithmetic in each lane as SlabRay::may_cross, with the ray's values
-/// broadcast and the faces it meets first chosen once per ray.
-template <Scalar T, int Width>
-struct SlabLanes {
-    static constexpr int width = Width;
-    typedef T Lanes __attribute__((vector_size(width * sizeof(T))));
-    Lanes near_origin[3], far_origin[3], inverse[3], far_inverse[3];
-    std::size_t near_face[3], far_face[3]; ///< rows of BvhNode::bounds
-
-    explicit SlabLanes(const SlabRay<T>& slab) noexcept
-    {
-        for (int axis = 0; axis < 3; ++axis) {
-            near_origin[axis] = Lanes{} + slab.near_origin[axis];
-            far_origin[axis] = Lanes{} + slab.far_origin[axis];
-            inverse[axis] = Lanes{} + slab.inverse[axis];
-            far_inverse[axis] = Lanes{} + slab.far_inverse[axis];
-            const std::size_t n = slab.negative[std::size_t(axis)];
-            near_face[axis] = std::size_t(axis) + 3 * n;
-            far_face[axis] = std::size_t(axis) + 3 * (1 - n);
-        }
-    }
-
-    [[nodiscard, gnu::always_inline]] unsigned may_cross(const BvhNode<T, Width>& node, Interval<T> range, std::array<T, width>& near) const noexcept
-    {
-        Lanes t_near[3], t_far[3];
-        for (int axis = 0; axis < 3; ++axis) {
-            Lanes near_side, far_side;
-            __builtin_memcpy(&near_side, node.bounds[near_face[axis]].data(), sizeof(Lanes));
-            __builtin_memcpy(&far_side, node.bounds[far_face[axis]].data(), sizeof(Lanes));
-            t_near[axis] = (near_side - near_origin[axis]) * inverse[axis];
-            t_far[axis] = (far_side - far_origin[axis]) * far_inverse[axis];
-        }
-        // SlabRay::later and sooner, written out (a function returning a vector wider
-        // than the target's registers changes the ABI, and GCC says so).
-        const Lanes min = Lanes{} + range.min, max = Lanes{} + range.max;
-        const Lanes near01 = t_near[0] > t_near[1] ? t_near[0] : t_near[1], near2 = t_near[2] > min ? t_near[2] : min;
-        const Lanes far01 = t_far[0] < t_far[1] ? t_far[0] : t_far[1], far2 = t_far[2] < max ? t_far[2] : max;
-        const Lanes lo = near01 > near2 ? near01 : near2, hi = far01 < far2 ? far01 : far2;
-        const auto crossed = lo <= hi;
-        __builtin_memcpy(near.data(), &lo, sizeof(Lanes));
-#if defined(__SSE__)
-        if constexpr (sizeof(T) == 4 && width == 4) return unsigned(__builtin_ia32_movmskps((Lanes)crossed));
-#endif
-#if defined(__AVX__)
-        if constexpr (sizeof(T) == 4 && width == 8) return unsigned(__builtin_ia32_movmskps256((Lanes)crossed));
-        if constexpr (sizeof(T) == 8 && width == 4) return unsigned(__builtin_ia32_movmskpd256((Lanes)crossed));
-#endif
-        unsigned hits = 0;
-        for (int lane = 0; lane < width; ++lane) hits |= crossed[lane] ? 1u << lane : 0u;
-        return hits;
-    }
-};
-#endif
 
 template <Scalar T>
 constexpr T half_area(const Aabb<T>& b) noexcept
@@ -2876,72 +2896,24 @@ static_assert(HasFirstCrossing<Box<float>>);
 
 } // namespace prism
 
-// ---- prism/geometry/triangle_mesh.hpp ----
-// TriangleMesh: a solid (or an open surface) bounded by triangles, with its own Bvh.
-//
-// The ray-triangle test is Woop, Benthin & Wald's watertight one ("Watertight
-// Ray/Triangle Intersection", JCGT 2013), with pbrt-v4's bound on t: the vertices are
+// ---- prism/geometry/triangle.hpp ----
+// The ray-triangle test: Woop, Benthin & Wald's watertight one ("Watertight
+// Ray/Triangle Intersection", JCGT 2013), with pbrt-v4's bound on t. The vertices are
 // moved to the ray's origin and sheared so the ray runs along +z; the three 2D edge
 // functions then decide the hit by their signs alone. A vertex shared by two triangles
 // is carried through the same arithmetic for both, so a ray through their common edge
 // finds at least one of them: no ray slips between the triangles of a closed mesh. An
 // edge function that rounds to exactly zero is worked out again in double.
-//
-// A mesh is a closed solid when every edge is shared by exactly two triangles that
-// run along it in opposite directions (checked at construction): then it has an
-// inside, works as a CSG child and as glass, and a ray enters where the triangle's
-// normal (right-handed: (b - a) x (c - a), outward) faces against it. Any other mesh is
-// an open surface: a ray crosses it wherever it hits it, entering on the normal's side,
-// and it is never inside (a shadow ray through an open glass surface meets boundaries
-// that do not pair up: use a closed mesh for glass).
-//
-// Crossings: a ray through an edge or vertex hits every triangle around it at one t.
-// Those hits are merged by their orientation: all entering (or all leaving) are one
-// crossing; a ray that touches the surface there (as many entering as leaving) is
-// reported as both, in the order that keeps the ray outside (or inside) after them.
-// At most N crossings are reported, the nearest N: a closed mesh that a ray crosses more
-// often within one query's range gives a CSG node or a shadow ray through glass only
-// its first N (2 to 64; 8 by default).
-//
-// Vertex normals and coordinates (optional, one per position): a hit's shading normal
-// is its vertex normals interpolated by the barycentric weights (the true normal where
-// that leans to the other side of the triangle), and its uv likewise. They change how
-// the surface shades (material/scattering.hpp), never where it is or which side is out.
-//
-// Storage and queries: the corners are kept a leaf at a time, four triangles side by
-// side (TriangleBlock), and a leaf's triangles meet the edge test four at once before
-// those it keeps take the whole test; the Bvh costs a leaf of up to four as one test.
-// The mesh's data (corner blocks, the Bvh) is immutable and shared: copies of a mesh,
-// and Transformed meshes in an ObjectArray (instances), hold one copy of it.
+// TriangleBlock keeps four triangles' corners side by side, so that the edge test meets
+// four at once (in SIMD where the compiler has vector extensions, lane by lane
+// otherwise: the same bits) before those it keeps take the whole test.
 
 
-#include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <memory>
-#include <optional>
-#include <span>
-#include <utility>
-#include <vector>
 
-namespace prism {
-
-/// Three vertex indices, counter-clockwise seen from outside.
-using TriangleIndices = std::array<std::uint32_t, 3>;
-
-/// Positions and triangles, counter-clockwise seen from outside, and optionally a unit
-/// normal and surface coordinates per position: what a TriangleMesh is built from.
-template <Scalar T>
-struct MeshBuffers {
-    std::vector<Vec3<T>> positions;
-    std::vector<TriangleIndices> triangles;
-    std::vector<Vec3<T>> normals; ///< per position, pointing out, or empty (shade flat)
-    std::vector<Vec2<T>> uvs;     ///< per position, or empty (uv (0, 0))
-};
-
-namespace detail {
+namespace prism::detail {
 
 /// A ray sheared so that it runs along +z from the origin (Woop et al. 2013): the same
 /// for every triangle it is tested against.
@@ -3138,6 +3110,70 @@ template <Scalar T>
     }
 #endif
 }
+
+} // namespace prism::detail
+
+// ---- prism/geometry/triangle_mesh.hpp ----
+// TriangleMesh: a solid (or an open surface) bounded by triangles, with its own Bvh.
+//
+// The ray-triangle test is geometry/triangle.hpp's (watertight: no ray slips between
+// the triangles of a closed mesh).
+//
+// A mesh is a closed solid when every edge is shared by exactly two triangles that
+// run along it in opposite directions (checked at construction): then it has an
+// inside, works as a CSG child and as glass, and a ray enters where the triangle's
+// normal (right-handed: (b - a) x (c - a), outward) faces against it. Any other mesh is
+// an open surface: a ray crosses it wherever it hits it, entering on the normal's side,
+// and it is never inside (a shadow ray through an open glass surface meets boundaries
+// that do not pair up: use a closed mesh for glass).
+//
+// Crossings: a ray through an edge or vertex hits every triangle around it at one t.
+// Those hits are merged by their orientation: all entering (or all leaving) are one
+// crossing; a ray that touches the surface there (as many entering as leaving) is
+// reported as both, in the order that keeps the ray outside (or inside) after them.
+// At most N crossings are reported, the nearest N: a closed mesh that a ray crosses more
+// often within one query's range gives a CSG node or a shadow ray through glass only
+// its first N (2 to 64; 8 by default).
+//
+// Vertex normals and coordinates (optional, one per position): a hit's shading normal
+// is its vertex normals interpolated by the barycentric weights (the true normal where
+// that leans to the other side of the triangle), and its uv likewise. They change how
+// the surface shades (material/scattering.hpp), never where it is or which side is out.
+//
+// Storage and queries: the corners are kept a leaf at a time, four triangles side by
+// side (TriangleBlock), and a leaf's triangles meet the edge test four at once before
+// those it keeps take the whole test; the Bvh costs a leaf of up to four as one test.
+// The mesh's data (corner blocks, the Bvh) is immutable and shared: copies of a mesh,
+// and Transformed meshes in an ObjectArray (instances), hold one copy of it.
+
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+/// Three vertex indices, counter-clockwise seen from outside.
+using TriangleIndices = std::array<std::uint32_t, 3>;
+
+/// Positions and triangles, counter-clockwise seen from outside, and optionally a unit
+/// normal and surface coordinates per position: what a TriangleMesh is built from.
+template <Scalar T>
+struct MeshBuffers {
+    std::vector<Vec3<T>> positions;
+    std::vector<TriangleIndices> triangles;
+    std::vector<Vec3<T>> normals; ///< per position, pointing out, or empty (shade flat)
+    std::vector<Vec2<T>> uvs;     ///< per position, or empty (uv (0, 0))
+};
+
+namespace detail {
 
 template <Scalar T>
 struct MeshData {
@@ -8605,6 +8641,52 @@ using pack_element_t = decltype(detail::item_type<I>(std::declval<const P&>()));
 
 } // namespace prism
 
+// ---- prism/scene/lights.hpp ----
+// Lights{...}: a scene's lights, each of its own type, at least one, all of one scalar type.
+
+
+#include <concepts>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+namespace prism {
+
+/// The lights of a scene, each of its own type, at least one.
+template <Light... Ls>
+struct Lights {
+    static_assert(sizeof...(Ls) > 0, "Lights{} holds no light: a scene needs at least one (a PointLight, a DirectionalLight, ...)");
+
+    std::tuple<Ls...> items;
+
+    constexpr explicit Lights(Ls... lights) : items(std::move(lights)...)
+    {
+        std::apply([](const auto&... light) { (light.validate(), ...); }, items);
+    }
+};
+
+namespace detail {
+
+template <class X>
+struct is_light_list : std::false_type {};
+template <class... Ls>
+struct is_light_list<Lights<Ls...>> : std::true_type {};
+
+/// Whether every light of the list has scalar type T (true for what is no list: that
+/// has its own error).
+template <class List, class T>
+inline constexpr bool lights_of_scalar = true;
+template <class... Ls, class T>
+inline constexpr bool lights_of_scalar<Lights<Ls...>, T> = (std::same_as<typename Ls::scalar_type, T> && ...);
+
+} // namespace detail
+
+/// A scene's first argument: Lights{...}.
+template <class X>
+concept LightList = detail::is_light_list<X>::value;
+
+} // namespace prism
+
 // ---- prism/scene/object.hpp ----
 // Object: a shape with a material; ObjectArray: many of one type in one scene slot.
 
@@ -8676,54 +8758,68 @@ template <class S, class M>
 
 } // namespace prism
 
-// ---- prism/scene/scene.hpp ----
-// Scene: lights and object slots fixed at compile time; closest-hit and shadow queries.
+// ---- prism/scene/object_key.hpp ----
+// Where an object is in a scene (its slot, and its index in the slot), and the order that
+// settles ties: whatever order a query meets objects in, the answer is the object a scan of
+// the slots in turn would have met first.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <utility>
+
+namespace prism::detail {
+
+/// An object's place in a scene: its slot, and its index within the slot. Keys order the
+/// objects as a scan of the slots in turn meets them, which is how ties are settled.
+struct ObjectKey {
+    std::uint32_t slot, index; // (no initializers: ShadowKeys' array is left uninitialized)
+    [[nodiscard]] constexpr bool before(const ObjectKey& other) const noexcept
+    {
+        return slot < other.slot || (slot == other.slot && index < other.index);
+    }
+};
+
+/// The transmissive objects whose boxes a shadow ray meets, gathered by the scene's tree
+/// in its own order, to be attenuated in the order of a scan (a product is the same bits
+/// only in the same order); a fixed number, no allocation.
+struct ShadowKeys {
+    static constexpr std::size_t capacity = 64;
+    std::array<ObjectKey, capacity> items; // (left uninitialized: clearing it would cost more than most shadow rays)
+    std::size_t count = 0;
+    bool overflow = false;
+
+    constexpr void add(const ObjectKey& key) noexcept
+    {
+        if (count == capacity) overflow = true;
+        else items[count++] = key;
+    }
+
+    /// The keys gathered, sorted (insertion sort: a shadow ray meets few).
+    [[nodiscard]] constexpr std::span<const ObjectKey> sorted() noexcept
+    {
+        for (std::size_t i = 1; i < count; ++i)
+            for (std::size_t j = i; j > 0 && items[j].before(items[j - 1]); --j) std::swap(items[j], items[j - 1]);
+        return {items.data(), count};
+    }
+};
+
+} // namespace prism::detail
+
+// ---- prism/scene/shadow.hpp ----
+// How a shadow ray crosses glass: blocked (its light arrives by a caustic map instead), or
+// attenuated by what each dielectric it crosses lets through, and where transmissive
+// objects overlap, walked boundary by boundary in the order of their priorities
+// (medium/nesting.hpp).
 
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <optional>
-#include <span>
-#include <tuple>
-#include <type_traits>
 #include <utility>
-#include <vector>
 
 namespace prism {
-
-/// The lights of a scene, each of its own type, at least one.
-template <Light... Ls>
-struct Lights {
-    static_assert(sizeof...(Ls) > 0, "Lights{} holds no light: a scene needs at least one (a PointLight, a DirectionalLight, ...)");
-
-    std::tuple<Ls...> items;
-
-    constexpr explicit Lights(Ls... lights) : items(std::move(lights)...)
-    {
-        std::apply([](const auto&... light) { (light.validate(), ...); }, items);
-    }
-};
-
-namespace detail {
-
-template <class X>
-struct is_light_list : std::false_type {};
-template <class... Ls>
-struct is_light_list<Lights<Ls...>> : std::true_type {};
-
-/// Whether every light of the list has scalar type T (true for what is no list: that
-/// has its own error).
-template <class List, class T>
-inline constexpr bool lights_of_scalar = true;
-template <class... Ls, class T>
-inline constexpr bool lights_of_scalar<Lights<Ls...>, T> = (std::same_as<typename Ls::scalar_type, T> && ...);
-
-} // namespace detail
-
-/// A scene's first argument: Lights{...}.
-template <class X>
-concept LightList = detail::is_light_list<X>::value;
 
 /// How shadow rays treat dielectrics.
 enum class ShadowsThroughGlass : bool {
@@ -8770,39 +8866,67 @@ struct ShadowBoundaries {
     }
 };
 
-/// An object's place in a scene: its slot, and its index within the slot. Keys order the
-/// objects as a scan of the slots in turn meets them, which is how ties are settled.
-struct ObjectKey {
-    std::uint32_t slot, index; // (no initializers: ShadowKeys' array is left uninitialized)
-    [[nodiscard]] constexpr bool before(const ObjectKey& other) const noexcept
-    {
-        return slot < other.slot || (slot == other.slot && index < other.index);
+/// A shadow ray through overlapping transmissive objects of `scene`: each stretch
+/// attenuated by the medium of the object it is in (the highest priority), a
+/// transmission tint at each real interface, none at a false one.
+template <class SceneT, Scalar T>
+[[nodiscard]] Rgb<T> transmittance_by_priority(const SceneT& scene, const Ray<T>& ray, T t_max, const ShadowBoundaries<T>& boundaries) noexcept
+{
+    Rgb<T> tr{T(1)};
+    const T speed = length(ray.direction);
+    MediumStack media;
+    T previous = T(0);
+    const auto attenuate_to = [&](T t) {
+        if (const Inside* in = media.top()) {
+            scene.visit_material(in->slot, in->index, [&]<class N>(const N& material) {
+                if constexpr (transmits<N>) tr *= material.medium().transmittance((t - previous) * speed);
+            });
+        }
+        previous = t;
+    };
+    for (std::size_t i = 0; i < boundaries.count; ++i) {
+        const auto& b = boundaries.items[i];
+        attenuate_to(b.t);
+        scene.visit_material(b.slot, b.index, [&]<class N>(const N& material) {
+            if constexpr (transmits<N>) {
+                const Inside object{b.slot, b.index, nesting_priority(material)};
+                if (b.at_start) {
+                    media = media.entered(object);
+                    return;
+                }
+                const Interface face = nested_interface(media, object, b.entering);
+                if (face.real) tr *= material.transmission_tint();
+                media = face.beyond;
+            }
+        });
     }
-};
+    attenuate_to(t_max);
+    return tr;
+}
 
-/// The transmissive objects whose boxes a shadow ray meets, gathered by the scene's tree
-/// in its own order, to be attenuated in the order of a scan (a product is the same bits
-/// only in the same order); a fixed number, no allocation.
-struct ShadowKeys {
-    static constexpr std::size_t capacity = 64;
-    std::array<ObjectKey, capacity> items; // (left uninitialized: clearing it would cost more than most shadow rays)
-    std::size_t count = 0;
-    bool overflow = false;
+} // namespace detail
 
-    constexpr void add(const ObjectKey& key) noexcept
-    {
-        if (count == capacity) overflow = true;
-        else items[count++] = key;
-    }
+} // namespace prism
 
-    /// The keys gathered, sorted (insertion sort: a shadow ray meets few).
-    [[nodiscard]] constexpr std::span<const ObjectKey> sorted() noexcept
-    {
-        for (std::size_t i = 1; i < count; ++i)
-            for (std::size_t j = i; j > 0 && items[j].before(items[j - 1]); --j) std::swap(items[j], items[j - 1]);
-        return {items.data(), count};
-    }
-};
+// ---- prism/scene/scene.hpp ----
+// Scene: lights and object slots fixed at compile time; closest-hit and shadow queries.
+// Its lights are scene/lights.hpp's, the order that settles ties scene/object_key.hpp's,
+// and how shadow rays cross glass scene/shadow.hpp's.
+
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+namespace detail {
 
 template <class X>
 struct is_object_array : std::false_type {};
@@ -8946,7 +9070,7 @@ public:
         // Where transmissive objects overlap, the higher priority's medium fills the
         // overlap (medium/nesting.hpp): walk the boundaries in order instead.
         if constexpr (has_transmissive && Glass == ShadowsThroughGlass::attenuated) {
-            if (boundaries.sort_and_find_overlap()) return transmittance_by_priority(ray, t_max, boundaries);
+            if (boundaries.sort_and_find_overlap()) return detail::transmittance_by_priority(*this, ray, t_max, boundaries);
         }
         return tr;
     }
@@ -9183,43 +9307,6 @@ private:
             }
         }
         return true;
-    }
-
-    /// A shadow ray through overlapping transmissive objects: each stretch attenuated by
-    /// the medium of the object it is in (the highest priority, medium/nesting.hpp), a
-    /// transmission tint at each real interface, none at a false one.
-    [[nodiscard]] Rgb<T> transmittance_by_priority(const Ray<T>& ray, T t_max, const detail::ShadowBoundaries<T>& boundaries) const noexcept
-    {
-        Rgb<T> tr{T(1)};
-        const T speed = length(ray.direction);
-        MediumStack media;
-        T previous = T(0);
-        const auto attenuate_to = [&](T t) {
-            if (const Inside* in = media.top()) {
-                visit_material(in->slot, in->index, [&]<class N>(const N& material) {
-                    if constexpr (transmits<N>) tr *= material.medium().transmittance((t - previous) * speed);
-                });
-            }
-            previous = t;
-        };
-        for (std::size_t i = 0; i < boundaries.count; ++i) {
-            const auto& b = boundaries.items[i];
-            attenuate_to(b.t);
-            visit_material(b.slot, b.index, [&]<class N>(const N& material) {
-                if constexpr (transmits<N>) {
-                    const Inside object{b.slot, b.index, nesting_priority(material)};
-                    if (b.at_start) {
-                        media = media.entered(object);
-                        return;
-                    }
-                    const Interface face = nested_interface(media, object, b.entering);
-                    if (face.real) tr *= material.transmission_tint();
-                    media = face.beyond;
-                }
-            });
-        }
-        attenuate_to(t_max);
-        return tr;
     }
 };
 

@@ -20,7 +20,7 @@
 // (128 or 256 bytes a node in float), with one SIMD instruction per step, and meets a
 // half or a third as many levels.
 //
-// Traversal visits children nearest first (an any-hit query's in any order) and never
+// Traversal (its node and the node's box test: accel/bvh_node.hpp) visits children nearest first (an any-hit query's in any order) and never
 // misses a primitive whose box the ray may cross (Aabb::may_cross: the box widened by
 // gamma(16) of the ray origin's distance, the far slab by 2 gamma(3)). Every box is
 // widened by one pad per ray that is at least as wide as that for any box of the tree
@@ -32,6 +32,7 @@
 // (closest hit) or return true to stop (any hit). Queries allocate nothing.
 #pragma once
 
+#include <prism/accel/bvh_node.hpp>
 #include <prism/core/aabb.hpp>
 #include <prism/core/check.hpp>
 #include <prism/core/math.hpp>
@@ -66,205 +67,6 @@ struct BvhConfig {
 };
 
 namespace detail {
-
-/// The node width a Bvh<T> takes unless told: eight children where the target has AVX
-/// and T is float (a face's eight coordinates fill one 256-bit register, and the tree
-/// has a third fewer levels), else four (one 128-bit register in float, 256 in double).
-/// Every translation unit of a program should be compiled for the same target, as with
-/// any header-only SIMD library: Bvh<float> names a different tree in each.
-template <class T>
-inline constexpr int default_bvh_width =
-#if defined(__AVX__)
-    sizeof(T) == 4 ? 8 : 4;
-#else
-    4;
-#endif
-
-} // namespace detail
-
-/// A node of the Width-wide tree (4 or 8): up to Width children, each a node or a leaf,
-/// their boxes side by side (lane c of bounds[axis] is child c's lo[axis], of
-/// bounds[3 + axis] its hi[axis]). An unused lane holds the empty box (lo +inf, hi -inf),
-/// which every ray misses, and count 0.
-template <Scalar T, int Width = detail::default_bvh_width<T>>
-struct alignas(64) BvhNode {
-    static_assert(Width == 4 || Width == 8, "a BvhNode has 4 or 8 children");
-    static constexpr int width = Width;
-    std::array<std::array<T, width>, 6> bounds = empty_bounds(); ///< every lane unused until set
-    std::array<std::uint32_t, width> first{}; ///< child node, or a leaf's first primitive
-    std::array<std::uint32_t, width> count{}; ///< a leaf's primitives; 0 for a node (or unused)
-
-    [[nodiscard]] static constexpr std::array<std::array<T, width>, 6> empty_bounds() noexcept
-    {
-        std::array<std::array<T, width>, 6> b{};
-        for (std::size_t row = 0; row < 6; ++row) b[row].fill(row < 3 ? infinity<T> : -infinity<T>);
-        return b;
-    }
-
-    [[nodiscard]] constexpr bool leaf(int lane) const noexcept { return count[std::size_t(lane)] != 0; }
-    [[nodiscard]] constexpr bool used(int lane) const noexcept { return bounds[0][std::size_t(lane)] <= bounds[3][std::size_t(lane)]; }
-    [[nodiscard]] constexpr Aabb<T> box(int lane) const noexcept
-    {
-        const auto c = std::size_t(lane);
-        return {{bounds[0][c], bounds[1][c], bounds[2][c]}, {bounds[3][c], bounds[4][c], bounds[5][c]}};
-    }
-    constexpr void set(int lane, const Aabb<T>& box, std::uint32_t first_, std::uint32_t count_) noexcept
-    {
-        const auto c = std::size_t(lane);
-        for (int axis = 0; axis < 3; ++axis) {
-            bounds[std::size_t(axis)][c] = box.lo[axis];
-            bounds[std::size_t(axis + 3)][c] = box.hi[axis];
-        }
-        first[c] = first_;
-        count[c] = count_;
-    }
-};
-
-namespace detail {
-
-/// A ray prepared for many box tests: its slabs' reciprocals, which face of each slab
-/// it meets first, and its origin moved by one padding for every box of a tree (see
-/// Bvh::traverse).
-template <Scalar T>
-struct SlabRay {
-    Vec3<T> inverse{T(0)}; // (initialized: clang's constant evaluation assigns no inactive union member of GLM's vectors)
-    /// inverse * far_widening: the far face's distance, widened by the one product.
-    /// (Infinite for a denormal d: the far face is then at +-inf, or NaN, which the test
-    /// ignores; never a miss.)
-    Vec3<T> far_inverse{T(0)};
-    /// The origin moved by the pad, for the near and far faces of each slab: the widened
-    /// face lo - pad is at (lo - (o + pad)) / d from the origin.
-    Vec3<T> near_origin{T(0)}, far_origin{T(0)};
-    std::array<bool, 3> negative{}; ///< the ray runs toward -axis: it meets hi first
-
-    /// The far slab's widening: rounding never reports a miss for a ray that touches a
-    /// box (pbrt-v4, Bounds3::IntersectP). Folded into far_inverse, the far distance
-    /// takes four roundings (o - pad, 1 / d, the widening, the product) where pbrt's takes
-    /// three and the widening's own, and 2 gamma(3) covers both.
-    static constexpr T far_widening = T(1) + T(2) * gamma<T>(3);
-
-    /// `magnitude`: the largest coordinate magnitude of every box to be tested.
-    constexpr SlabRay(const Ray<T>& ray, T magnitude) noexcept
-    {
-        // Aabb::may_cross widens a box by gamma(16) (|o - c| + h) (c its center, h its
-        // half size, as max components), which is at most gamma(16) (|o| + 2 magnitude).
-        // gamma(20) covers that and the rounding of o +- pad (two ulps of |o| or |lo|),
-        // so that every box is at least as wide here as there.
-        const T pad = gamma<T>(20) * (max_component(prism::abs(ray.origin)) + T(2) * magnitude) + std::numeric_limits<T>::min();
-        constexpr T largest = std::numeric_limits<T>::max();
-        for (int axis = 0; axis < 3; ++axis) {
-            const T d = ray.direction[axis];
-            // 1/d, kept finite for a denormal d (no 0 * inf: no NaN); a zero d gives an
-            // infinite reciprocal of its sign, so the slab is all or nothing (NaN only
-            // for an origin exactly on a widened face, which the test then ignores).
-            inverse[axis] = d == T(0) ? (negative_zero(d) ? -infinity<T> : infinity<T>) : clamp(T(1) / d, -largest, largest);
-            far_inverse[axis] = inverse[axis] * far_widening;
-            negative[std::size_t(axis)] = inverse[axis] < T(0);
-            near_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] - pad : ray.origin[axis] + pad;
-            far_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] + pad : ray.origin[axis] - pad;
-        }
-    }
-
-    [[nodiscard]] static constexpr bool negative_zero(T zero) noexcept
-    {
-        using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
-        return (std::bit_cast<Bits>(zero) >> (8 * sizeof(T) - 1)) != 0;
-    }
-
-    /// The part of `range` in which the ray may be inside the widened box (empty if
-    /// none): never empty where Aabb::may_cross is true. (Inlined by force: it is most
-    /// of a traversal's work, and a call per node costs a quarter of it.)
-    [[nodiscard, gnu::always_inline]] constexpr Interval<T> may_cross(const Aabb<T>& box, Interval<T> range) const noexcept
-    {
-        std::array<T, 3> t_near{}, t_far{};
-        for (int axis = 0; axis < 3; ++axis) {
-            const bool n = negative[std::size_t(axis)];
-            t_near[std::size_t(axis)] = ((n ? box.hi[axis] : box.lo[axis]) - near_origin[axis]) * inverse[axis];
-            t_far[std::size_t(axis)] = ((n ? box.lo[axis] : box.hi[axis]) - far_origin[axis]) * far_inverse[axis];
-        }
-        range.min = later(later(t_near[0], t_near[1]), later(t_near[2], range.min));
-        range.max = sooner(sooner(t_far[0], t_far[1]), sooner(t_far[2], range.max));
-        return range.min <= range.max ? range : Interval<T>{};
-    }
-
-    /// max and min, paired as a tree (two steps deep instead of three), in the form of
-    /// SSE's maxps and minps: a NaN (0 * inf, an axis-parallel ray starting on a widened
-    /// face) in the first argument gives the second. A NaN in the second drops its pair,
-    /// which only widens the test.
-    [[nodiscard, gnu::always_inline]] static constexpr T later(T a, T b) noexcept { return a > b ? a : b; }
-    [[nodiscard, gnu::always_inline]] static constexpr T sooner(T a, T b) noexcept { return a < b ? a : b; }
-
-    /// may_cross for the children of a node at once: a bit per child the ray may
-    /// cross, and in `near` where its part of the range begins (for compile time; at run
-    /// time SlabLanes does the same in SIMD).
-    template <int Width>
-    [[nodiscard]] constexpr unsigned may_cross(const BvhNode<T, Width>& node, Interval<T> range, std::array<T, std::size_t(Width)>& near) const noexcept
-    {
-        unsigned hits = 0;
-        for (int lane = 0; lane < Width; ++lane) {
-            const Interval<T> r = may_cross(node.box(lane), range);
-            near[std::size_t(lane)] = r.min;
-            hits |= r.empty() ? 0u : 1u << lane;
-        }
-        return hits;
-    }
-};
-
-#if PRISM_VECTOR_EXTENSIONS
-/// SlabRay's test of a node's children in SIMD (GCC's vector extensions, which clang
-/// shares): the same arithmetic in each lane as SlabRay::may_cross, with the ray's values
-/// broadcast and the faces it meets first chosen once per ray.
-template <Scalar T, int Width>
-struct SlabLanes {
-    static constexpr int width = Width;
-    typedef T Lanes __attribute__((vector_size(width * sizeof(T))));
-    Lanes near_origin[3], far_origin[3], inverse[3], far_inverse[3];
-    std::size_t near_face[3], far_face[3]; ///< rows of BvhNode::bounds
-
-    explicit SlabLanes(const SlabRay<T>& slab) noexcept
-    {
-        for (int axis = 0; axis < 3; ++axis) {
-            near_origin[axis] = Lanes{} + slab.near_origin[axis];
-            far_origin[axis] = Lanes{} + slab.far_origin[axis];
-            inverse[axis] = Lanes{} + slab.inverse[axis];
-            far_inverse[axis] = Lanes{} + slab.far_inverse[axis];
-            const std::size_t n = slab.negative[std::size_t(axis)];
-            near_face[axis] = std::size_t(axis) + 3 * n;
-            far_face[axis] = std::size_t(axis) + 3 * (1 - n);
-        }
-    }
-
-    [[nodiscard, gnu::always_inline]] unsigned may_cross(const BvhNode<T, Width>& node, Interval<T> range, std::array<T, width>& near) const noexcept
-    {
-        Lanes t_near[3], t_far[3];
-        for (int axis = 0; axis < 3; ++axis) {
-            Lanes near_side, far_side;
-            __builtin_memcpy(&near_side, node.bounds[near_face[axis]].data(), sizeof(Lanes));
-            __builtin_memcpy(&far_side, node.bounds[far_face[axis]].data(), sizeof(Lanes));
-            t_near[axis] = (near_side - near_origin[axis]) * inverse[axis];
-            t_far[axis] = (far_side - far_origin[axis]) * far_inverse[axis];
-        }
-        // SlabRay::later and sooner, written out (a function returning a vector wider
-        // than the target's registers changes the ABI, and GCC says so).
-        const Lanes min = Lanes{} + range.min, max = Lanes{} + range.max;
-        const Lanes near01 = t_near[0] > t_near[1] ? t_near[0] : t_near[1], near2 = t_near[2] > min ? t_near[2] : min;
-        const Lanes far01 = t_far[0] < t_far[1] ? t_far[0] : t_far[1], far2 = t_far[2] < max ? t_far[2] : max;
-        const Lanes lo = near01 > near2 ? near01 : near2, hi = far01 < far2 ? far01 : far2;
-        const auto crossed = lo <= hi;
-        __builtin_memcpy(near.data(), &lo, sizeof(Lanes));
-#if defined(__SSE__)
-        if constexpr (sizeof(T) == 4 && width == 4) return unsigned(__builtin_ia32_movmskps((Lanes)crossed));
-#endif
-#if defined(__AVX__)
-        if constexpr (sizeof(T) == 4 && width == 8) return unsigned(__builtin_ia32_movmskps256((Lanes)crossed));
-        if constexpr (sizeof(T) == 8 && width == 4) return unsigned(__builtin_ia32_movmskpd256((Lanes)crossed));
-#endif
-        unsigned hits = 0;
-        for (int lane = 0; lane < width; ++lane) hits |= crossed[lane] ? 1u << lane : 0u;
-        return hits;
-    }
-};
-#endif
 
 template <Scalar T>
 constexpr T half_area(const Aabb<T>& b) noexcept

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Scene: lights and object slots fixed at compile time; closest-hit and shadow queries.
+// Its lights are scene/lights.hpp's, the order that settles ties scene/object_key.hpp's,
+// and how shadow rays cross glass scene/shadow.hpp's.
 #pragma once
 
 #include <prism/accel/bvh.hpp>
@@ -10,9 +12,11 @@
 #include <prism/core/offset.hpp>
 #include <prism/light/light.hpp>
 #include <prism/material/scattering.hpp>
-#include <prism/medium/nesting.hpp>
 #include <prism/scene/hit.hpp>
+#include <prism/scene/lights.hpp>
 #include <prism/scene/object.hpp>
+#include <prism/scene/object_key.hpp>
+#include <prism/scene/shadow.hpp>
 
 #include <array>
 #include <cstddef>
@@ -26,117 +30,7 @@
 
 namespace prism {
 
-/// The lights of a scene, each of its own type, at least one.
-template <Light... Ls>
-struct Lights {
-    static_assert(sizeof...(Ls) > 0, "Lights{} holds no light: a scene needs at least one (a PointLight, a DirectionalLight, ...)");
-
-    std::tuple<Ls...> items;
-
-    constexpr explicit Lights(Ls... lights) : items(std::move(lights)...)
-    {
-        std::apply([](const auto&... light) { (light.validate(), ...); }, items);
-    }
-};
-
 namespace detail {
-
-template <class X>
-struct is_light_list : std::false_type {};
-template <class... Ls>
-struct is_light_list<Lights<Ls...>> : std::true_type {};
-
-/// Whether every light of the list has scalar type T (true for what is no list: that
-/// has its own error).
-template <class List, class T>
-inline constexpr bool lights_of_scalar = true;
-template <class... Ls, class T>
-inline constexpr bool lights_of_scalar<Lights<Ls...>, T> = (std::same_as<typename Ls::scalar_type, T> && ...);
-
-} // namespace detail
-
-/// A scene's first argument: Lights{...}.
-template <class X>
-concept LightList = detail::is_light_list<X>::value;
-
-/// How shadow rays treat dielectrics.
-enum class ShadowsThroughGlass : bool {
-    attenuated, ///< light passes, attenuated by the medium and the transmission tint (Whitted)
-    blocked,    ///< glass casts a full shadow: its light arrives by a caustic map instead
-};
-
-namespace detail {
-
-/// Where a shadow ray meets a transmissive object's boundary (or starts inside it), kept
-/// to resolve overlapping objects by priority; a fixed number, no allocation.
-template <Scalar T>
-struct ShadowBoundaries {
-    struct Boundary {
-        T t;
-        std::uint32_t slot;
-        std::uint32_t index;
-        bool entering;
-        bool at_start; ///< the ray starts inside the object (no boundary crossed)
-    };
-    static constexpr std::size_t capacity = 32;
-    std::array<Boundary, capacity> items;
-    std::size_t count = 0;
-    bool overflow = false;
-
-    constexpr void add(const Boundary& b) noexcept
-    {
-        if (count == capacity) overflow = true;
-        else items[count++] = b;
-    }
-
-    /// Sort by t; whether two objects' insides overlap anywhere along the ray.
-    constexpr bool sort_and_find_overlap() noexcept
-    {
-        if (overflow) return false;
-        for (std::size_t i = 1; i < count; ++i)
-            for (std::size_t j = i; j > 0 && items[j].t < items[j - 1].t; --j) std::swap(items[j], items[j - 1]);
-        int depth = 0;
-        for (std::size_t i = 0; i < count; ++i) {
-            depth += items[i].entering || items[i].at_start ? 1 : -1;
-            if (depth >= 2) return true;
-        }
-        return false;
-    }
-};
-
-/// An object's place in a scene: its slot, and its index within the slot. Keys order the
-/// objects as a scan of the slots in turn meets them, which is how ties are settled.
-struct ObjectKey {
-    std::uint32_t slot, index; // (no initializers: ShadowKeys' array is left uninitialized)
-    [[nodiscard]] constexpr bool before(const ObjectKey& other) const noexcept
-    {
-        return slot < other.slot || (slot == other.slot && index < other.index);
-    }
-};
-
-/// The transmissive objects whose boxes a shadow ray meets, gathered by the scene's tree
-/// in its own order, to be attenuated in the order of a scan (a product is the same bits
-/// only in the same order); a fixed number, no allocation.
-struct ShadowKeys {
-    static constexpr std::size_t capacity = 64;
-    std::array<ObjectKey, capacity> items; // (left uninitialized: clearing it would cost more than most shadow rays)
-    std::size_t count = 0;
-    bool overflow = false;
-
-    constexpr void add(const ObjectKey& key) noexcept
-    {
-        if (count == capacity) overflow = true;
-        else items[count++] = key;
-    }
-
-    /// The keys gathered, sorted (insertion sort: a shadow ray meets few).
-    [[nodiscard]] constexpr std::span<const ObjectKey> sorted() noexcept
-    {
-        for (std::size_t i = 1; i < count; ++i)
-            for (std::size_t j = i; j > 0 && items[j].before(items[j - 1]); --j) std::swap(items[j], items[j - 1]);
-        return {items.data(), count};
-    }
-};
 
 template <class X>
 struct is_object_array : std::false_type {};
@@ -280,7 +174,7 @@ public:
         // Where transmissive objects overlap, the higher priority's medium fills the
         // overlap (medium/nesting.hpp): walk the boundaries in order instead.
         if constexpr (has_transmissive && Glass == ShadowsThroughGlass::attenuated) {
-            if (boundaries.sort_and_find_overlap()) return transmittance_by_priority(ray, t_max, boundaries);
+            if (boundaries.sort_and_find_overlap()) return detail::transmittance_by_priority(*this, ray, t_max, boundaries);
         }
         return tr;
     }
@@ -517,43 +411,6 @@ private:
             }
         }
         return true;
-    }
-
-    /// A shadow ray through overlapping transmissive objects: each stretch attenuated by
-    /// the medium of the object it is in (the highest priority, medium/nesting.hpp), a
-    /// transmission tint at each real interface, none at a false one.
-    [[nodiscard]] Rgb<T> transmittance_by_priority(const Ray<T>& ray, T t_max, const detail::ShadowBoundaries<T>& boundaries) const noexcept
-    {
-        Rgb<T> tr{T(1)};
-        const T speed = length(ray.direction);
-        MediumStack media;
-        T previous = T(0);
-        const auto attenuate_to = [&](T t) {
-            if (const Inside* in = media.top()) {
-                visit_material(in->slot, in->index, [&]<class N>(const N& material) {
-                    if constexpr (transmits<N>) tr *= material.medium().transmittance((t - previous) * speed);
-                });
-            }
-            previous = t;
-        };
-        for (std::size_t i = 0; i < boundaries.count; ++i) {
-            const auto& b = boundaries.items[i];
-            attenuate_to(b.t);
-            visit_material(b.slot, b.index, [&]<class N>(const N& material) {
-                if constexpr (transmits<N>) {
-                    const Inside object{b.slot, b.index, nesting_priority(material)};
-                    if (b.at_start) {
-                        media = media.entered(object);
-                        return;
-                    }
-                    const Interface face = nested_interface(media, object, b.entering);
-                    if (face.real) tr *= material.transmission_tint();
-                    media = face.beyond;
-                }
-            });
-        }
-        attenuate_to(t_max);
-        return tr;
     }
 };
 

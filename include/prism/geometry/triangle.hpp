@@ -1,0 +1,221 @@
+// SPDX-License-Identifier: MIT
+// The ray-triangle test: Woop, Benthin & Wald's watertight one ("Watertight
+// Ray/Triangle Intersection", JCGT 2013), with pbrt-v4's bound on t. The vertices are
+// moved to the ray's origin and sheared so the ray runs along +z; the three 2D edge
+// functions then decide the hit by their signs alone. A vertex shared by two triangles
+// is carried through the same arithmetic for both, so a ray through their common edge
+// finds at least one of them: no ray slips between the triangles of a closed mesh. An
+// edge function that rounds to exactly zero is worked out again in double.
+// TriangleBlock keeps four triangles' corners side by side, so that the edge test meets
+// four at once (in SIMD where the compiler has vector extensions, lane by lane
+// otherwise: the same bits) before those it keeps take the whole test.
+#pragma once
+
+#include <prism/core/config.hpp>
+#include <prism/core/interval.hpp>
+#include <prism/core/math.hpp>
+#include <prism/core/ray.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+namespace prism::detail {
+
+/// A ray sheared so that it runs along +z from the origin (Woop et al. 2013): the same
+/// for every triangle it is tested against.
+template <Scalar T>
+struct ShearedRay {
+    Vec3<T> origin, direction;
+    int kx = 0, ky = 1, kz = 2;
+    T sx = 0, sy = 0, sz = 0;
+
+    explicit ShearedRay(const Ray<T>& ray) noexcept : origin(ray.origin), direction(ray.direction)
+    {
+        const Vec3<T> a = prism::abs(ray.direction);
+        kz = a.x >= a.y ? (a.x >= a.z ? 0 : 2) : (a.y >= a.z ? 1 : 2);
+        kx = kz == 2 ? 0 : kz + 1;
+        ky = kx == 2 ? 0 : kx + 1;
+        sz = T(1) / direction[kz];
+        sx = -direction[kx] * sz;
+        sy = -direction[ky] * sz;
+    }
+};
+
+/// Where a ray hits a triangle: t and the barycentric weights of its three corners.
+template <Scalar T>
+struct TriangleHit {
+    T t;
+    std::array<T, 3> b;
+    bool entering;
+};
+
+/// hit_triangle for a ray whose largest direction component is on axis Kz (the
+/// permutation known at compile time).
+template <int Kz, Scalar T>
+[[nodiscard, gnu::always_inline]] inline bool hit_triangle_along(const ShearedRay<T>& ray, const std::array<Vec3<T>, 3>& corner, Interval<T> range,
+                                                                 TriangleHit<T>& out) noexcept
+{
+    constexpr int kx = Kz == 2 ? 0 : Kz + 1, ky = kx == 2 ? 0 : kx + 1;
+    // Translate to the ray's origin, permute and shear.
+    std::array<Vec3<T>, 3> p;
+    for (int i = 0; i < 3; ++i) {
+        const Vec3<T> q = corner[std::size_t(i)] - ray.origin;
+        p[std::size_t(i)] = {q[kx] + ray.sx * q[Kz], q[ky] + ray.sy * q[Kz], q[Kz]};
+    }
+    // Plain products: an edge shared by two triangles gets exactly opposite values in
+    // them (the subtraction rounds symmetrically), so a ray is inside exactly one of
+    // them, or on the edge of both.
+    T e0 = p[1].x * p[2].y - p[1].y * p[2].x;
+    T e1 = p[2].x * p[0].y - p[2].y * p[0].x;
+    T e2 = p[0].x * p[1].y - p[0].y * p[1].x;
+    if constexpr (sizeof(T) < sizeof(double)) {
+        // On an edge to float precision: decide it in double.
+        if (e0 == T(0) || e1 == T(0) || e2 == T(0)) {
+            e0 = T(double(p[1].x) * double(p[2].y) - double(p[1].y) * double(p[2].x));
+            e1 = T(double(p[2].x) * double(p[0].y) - double(p[2].y) * double(p[0].x));
+            e2 = T(double(p[0].x) * double(p[1].y) - double(p[0].y) * double(p[1].x));
+        }
+    }
+    // One branch, not six (the signs are as good as random over incoherent rays).
+    const bool below = (e0 < T(0)) | (e1 < T(0)) | (e2 < T(0)), above = (e0 > T(0)) | (e1 > T(0)) | (e2 > T(0));
+    if (below & above) return false;
+    const T det = e0 + e1 + e2;
+    if (det == T(0)) return false; // edge-on, or a degenerate triangle
+    const T z0 = p[0].z * ray.sz, z1 = p[1].z * ray.sz, z2 = p[2].z * ray.sz;
+    const T t_scaled = e0 * z0 + e1 * z1 + e2 * z2;
+    const T inv_det = T(1) / det;
+    const T t = t_scaled * inv_det;
+    if (!range.surrounds(t)) return false;
+    // t is above zero by more than its rounding (pbrt-v4, Triangle::Intersect).
+    const T max_z = max_component(Vec3<T>(std::abs(z0), std::abs(z1), std::abs(z2)));
+    const T max_x = max_component(Vec3<T>(std::abs(p[0].x), std::abs(p[1].x), std::abs(p[2].x)));
+    const T max_y = max_component(Vec3<T>(std::abs(p[0].y), std::abs(p[1].y), std::abs(p[2].y)));
+    const T delta_z = gamma<T>(3) * max_z;
+    const T delta_x = gamma<T>(5) * (max_x + max_z), delta_y = gamma<T>(5) * (max_y + max_z);
+    const T delta_e = T(2) * (gamma<T>(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+    const T max_e = max_component(Vec3<T>(std::abs(e0), std::abs(e1), std::abs(e2)));
+    const T delta_t = T(3) * (gamma<T>(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * std::abs(inv_det);
+    if (!(t > delta_t)) return false;
+    // det is the sheared normal's z, dot(direction, normal) / direction[kz] (the
+    // permutation is cyclic, the shear of determinant 1): it enters where that is < 0.
+    out = {t, {e0 * inv_det, e1 * inv_det, e2 * inv_det}, (det < T(0)) != (ray.sz < T(0))};
+    return true;
+}
+
+/// The watertight test. Hits with t strictly inside `range` (and beyond the bound of
+/// t's own rounding, so never the triangle a ray was spawned from) are returned.
+template <Scalar T>
+[[nodiscard, gnu::always_inline]] inline bool hit_triangle(const ShearedRay<T>& ray, const std::array<Vec3<T>, 3>& corner, Interval<T> range,
+                                                           TriangleHit<T>& out) noexcept
+{
+    // The same branch for every triangle a ray meets: predicted.
+    switch (ray.kz) {
+    case 0: return hit_triangle_along<0>(ray, corner, range, out);
+    case 1: return hit_triangle_along<1>(ray, corner, range, out);
+    default: return hit_triangle_along<2>(ray, corner, range, out);
+    }
+}
+
+/// Up to four triangles of a leaf, their corners side by side: lane j of row 3 c + axis
+/// is triangle j's corner c on that axis. (A leaf of fewer fills the rest with its last.)
+template <Scalar T>
+struct TriangleBlock {
+    static constexpr int width = 4;
+    std::array<std::array<T, width>, 9> corner{};
+
+    /// Lane `lane`'s three corners.
+    [[nodiscard]] std::array<Vec3<T>, 3> triangle(std::uint32_t lane) const noexcept
+    {
+        std::array<Vec3<T>, 3> t;
+        for (std::size_t i = 0; i < 3; ++i) t[i] = {corner[3 * i][lane], corner[3 * i + 1][lane], corner[3 * i + 2][lane]};
+        return t;
+    }
+};
+
+/// hit_triangle's edge test on a block's four triangles at once: a bit per lane that may
+/// be hit, for hit_triangle to decide. Each lane's edge functions are hit_triangle's, the
+/// same operations in the same order, so a lane whose signs differ is one hit_triangle
+/// rejects; a lane with an edge function of 0 (which hit_triangle decides again in
+/// double) is kept. Over incoherent rays most triangles a leaf offers are missed, and
+/// this rejects four in about the time hit_triangle takes for one.
+#if PRISM_VECTOR_EXTENSIONS
+template <int Kz, Scalar T>
+[[nodiscard, gnu::always_inline]] inline unsigned edge_test_along(const ShearedRay<T>& ray, const TriangleBlock<T>& block) noexcept
+{
+    constexpr int kx = Kz == 2 ? 0 : Kz + 1, ky = kx == 2 ? 0 : kx + 1;
+    constexpr int width = TriangleBlock<T>::width;
+    typedef T Lanes __attribute__((vector_size(width * sizeof(T))));
+    Lanes px[3], py[3];
+    for (int i = 0; i < 3; ++i) {
+        Lanes x, y, z;
+        __builtin_memcpy(&x, block.corner[std::size_t(3 * i + kx)].data(), sizeof(Lanes));
+        __builtin_memcpy(&y, block.corner[std::size_t(3 * i + ky)].data(), sizeof(Lanes));
+        __builtin_memcpy(&z, block.corner[std::size_t(3 * i + Kz)].data(), sizeof(Lanes));
+        x -= ray.origin[kx], y -= ray.origin[ky], z -= ray.origin[Kz];
+        px[i] = x + ray.sx * z;
+        py[i] = y + ray.sy * z;
+    }
+    const Lanes e0 = px[1] * py[2] - py[1] * px[2];
+    const Lanes e1 = px[2] * py[0] - py[2] * px[0];
+    const Lanes e2 = px[0] * py[1] - py[0] * px[1];
+    const auto missed = ((e0 < T(0)) | (e1 < T(0)) | (e2 < T(0))) & ((e0 > T(0)) | (e1 > T(0)) | (e2 > T(0))) &
+                        ~((e0 == T(0)) | (e1 == T(0)) | (e2 == T(0)));
+    unsigned maybe = 0;
+    for (int lane = 0; lane < width; ++lane) maybe |= missed[lane] ? 0u : 1u << lane;
+    return maybe;
+}
+#endif
+
+/// edge_test_along one lane at a time, with the same arithmetic: where the compiler has
+/// no vector extensions, and the twin the SIMD test is checked against.
+template <int Kz, Scalar T>
+[[nodiscard]] inline unsigned edge_test_lanewise_along(const ShearedRay<T>& ray, const TriangleBlock<T>& block) noexcept
+{
+    constexpr int kx = Kz == 2 ? 0 : Kz + 1, ky = kx == 2 ? 0 : kx + 1;
+    unsigned maybe = 0;
+    for (std::size_t lane = 0; lane < std::size_t(TriangleBlock<T>::width); ++lane) {
+        T px[3], py[3];
+        for (std::size_t i = 0; i < 3; ++i) {
+            const T x = block.corner[3 * i + kx][lane] - ray.origin[kx], y = block.corner[3 * i + ky][lane] - ray.origin[ky],
+                    z = block.corner[3 * i + Kz][lane] - ray.origin[Kz];
+            px[i] = x + ray.sx * z;
+            py[i] = y + ray.sy * z;
+        }
+        const T e0 = px[1] * py[2] - py[1] * px[2];
+        const T e1 = px[2] * py[0] - py[2] * px[0];
+        const T e2 = px[0] * py[1] - py[0] * px[1];
+        const bool missed = (e0 < T(0) || e1 < T(0) || e2 < T(0)) && (e0 > T(0) || e1 > T(0) || e2 > T(0)) &&
+                            !(e0 == T(0) || e1 == T(0) || e2 == T(0));
+        maybe |= missed ? 0u : 1u << lane;
+    }
+    return maybe;
+}
+
+/// edge_test_lanewise_along for the ray's axis.
+template <Scalar T>
+[[nodiscard]] inline unsigned edge_test_lanewise(const ShearedRay<T>& ray, const TriangleBlock<T>& block) noexcept
+{
+    switch (ray.kz) {
+    case 0: return edge_test_lanewise_along<0>(ray, block);
+    case 1: return edge_test_lanewise_along<1>(ray, block);
+    default: return edge_test_lanewise_along<2>(ray, block);
+    }
+}
+
+/// edge_test_along for the ray's axis.
+template <Scalar T>
+[[nodiscard, gnu::always_inline]] inline unsigned edge_test(const ShearedRay<T>& ray, const TriangleBlock<T>& block) noexcept
+{
+#if !PRISM_VECTOR_EXTENSIONS
+    return edge_test_lanewise(ray, block);
+#else
+    switch (ray.kz) {
+    case 0: return edge_test_along<0>(ray, block);
+    case 1: return edge_test_along<1>(ray, block);
+    default: return edge_test_along<2>(ray, block);
+    }
+#endif
+}
+
+} // namespace prism::detail

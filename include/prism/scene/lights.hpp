@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// Lights{...}: a scene's lights, each of its own type, at least one, all of one scalar type.
+#pragma once
+
+#include <prism/light/light.hpp>
+
+#include <concepts>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+namespace prism {
+
+/// The lights of a scene, each of its own type, at least one.
+template <Light... Ls>
+struct Lights {
+    static_assert(sizeof...(Ls) > 0, "Lights{} holds no light: a scene needs at least one (a PointLight, a DirectionalLight, ...)");
+
+    std::tuple<Ls...> items;
+
+    constexpr explicit Lights(Ls... lights) : items(std::move(lights)...)
+    {
+        std::apply([](const auto&... light) { (light.validate(), ...); }, items);
+    }
+};
+
+namespace detail {
+
+template <class X>
+struct is_light_list : std::false_type {};
+template <class... Ls>
+struct is_light_list<Lights<Ls...>> : std::true_type {};
+
+/// Whether every light of the list has scalar type T (true for what is no list: that
+/// has its own error).
+template <class List, class T>
+inline constexpr bool lights_of_scalar = true;
+template <class... Ls, class T>
+inline constexpr bool lights_of_scalar<Lights<Ls...>, T> = (std::same_as<typename Ls::scalar_type, T> && ...);
+
+} // namespace detail
+
+/// A scene's first argument: Lights{...}.
+template <class X>
+concept LightList = detail::is_light_list<X>::value;
+
+} // namespace prism
