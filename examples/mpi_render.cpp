@@ -6,7 +6,7 @@
 //
 //   mpirun -np 4 mpi_render --width 256 --height 256 --threads 1 --out images
 //
-// It takes cornell_caustics' flags (--method direct, gather, cache or progressive, whose
+// It takes cornell_caustics' flags (--method direct, gather, cache, progressive or reference, whose
 // passes are dealt to the ranks instead of tiles) and --tile N, the side of the square of
 // pixels dealt at a time. With --method cache every rank builds
 // the whole irradiance cache (its records are found in the order one process finds
@@ -50,8 +50,6 @@ int main(int argc, char** argv)
                              {.photons = true}))
             return 0;
         options.program = "cornell_caustics"; // the same settings as that program's, for prism_merge
-        if (options.method == "reference")
-            throw std::invalid_argument("--method expects direct, gather, cache or progressive on MPI ranks, got '" + options.method + "'");
         if (!options.render.passes.empty() || options.first_pass != 0)
             throw std::invalid_argument("--passes A:B is for one machine's part: mpi_render renders every pass");
         const int ranks = prism::mpi::size();
@@ -81,6 +79,18 @@ int main(int argc, char** argv)
                             r, v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10]);
             }
         };
+        if (options.method == "reference") {
+            // Passes (a camera sample in every pixel and as many light paths) dealt to the ranks.
+            const prism::Reference reference(scene, {.max_diffuse_bounces = options.povray_light ? 0 : 256});
+            std::optional<prism::Accumulation> result =
+                prism::mpi::render_sums(MPI_COMM_WORLD, camera, reference, examples::pass_render_config(options), tile, &traffic);
+            const double done = seconds();
+            report(traffic, done);
+            if (rank != 0) return 0;
+            std::printf("cornell_caustics on %d ranks: reference, %d passes, total %.3f s\n", ranks, options.render.spp, done);
+            examples::save(examples::Rendered{"cornell_caustics", std::move(*result), done}, options, true);
+            return 0;
+        }
         if (options.method == "progressive") {
             // Passes dealt to the ranks, each tracing its own photons.
             using S = std::remove_cvref_t<decltype(scene)>;

@@ -862,6 +862,7 @@ inline void require_memory(const std::string& what, double bytes)
 #include <cstddef>
 #include <mutex>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace prism::detail {
