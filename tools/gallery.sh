@@ -6,10 +6,11 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$(realpath -m "${1:-gallery}")
 "$root/tools/setup.sh"
-cmake -S "$root" -B "$root/build/release" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_TESTS=OFF >/dev/null
-cmake --build "$root/build/release" --target examples
+# A build tree of its own: sharing the test command's would switch its tests off.
+cmake -S "$root" -B "$root/build/gallery" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_TESTS=OFF -DPRISM_BUILD_BENCH=OFF >/dev/null
+cmake --build "$root/build/gallery" --target examples
 mkdir -p "$out"
-for example in $(cat "$root/build/release/examples/list.txt"); do
-  "$root/build/release/examples/$example" --out "$out"
+for example in $(cat "$root/build/gallery/examples/list.txt"); do
+  "$root/build/gallery/examples/$example" --out "$out"
 done
 echo "gallery: images in $out"

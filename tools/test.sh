@@ -60,7 +60,7 @@ start=$(date +%s)
 # precompiled and eight files to a translation unit (tools/check_headers.sh then checks
 # that each header compiles on its own includes).
 release="$root/build/release"
-if step release-build bash -c "cmake -S '$root' -B '$release' -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_BENCH=OFF -DPRISM_WERROR=ON -DPRISM_TESTS_PCH=ON -DPRISM_TESTS_UNITY=ON &&
+if step release-build bash -c "cmake -S '$root' -B '$release' -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_TESTS=ON -DPRISM_BUILD_BENCH=OFF -DPRISM_WERROR=ON -DPRISM_TESTS_PCH=ON -DPRISM_TESTS_UNITY=ON &&
                                 cmake --build '$release' -j $jobs"; then
   ctest --test-dir "$release" -j "$jobs" >"$logs/release-ctest.log" 2>&1 ||
     ctest --test-dir "$release" --rerun-failed --output-on-failure 2>&1 | tail -n 80
