@@ -5,6 +5,7 @@
 #pragma once
 
 #include <prism/accel/bvh.hpp>
+#include <prism/accel/bvh_build.hpp>
 #include <prism/accel/bvh_node.hpp>
 #include <prism/accel/kd_tree.hpp>
 #include <prism/core/aabb.hpp>
