@@ -14,6 +14,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+
+#include <unistd.h>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -147,7 +149,10 @@ void check_writable(const std::string& folder_name)
     std::error_code error;
     std::filesystem::create_directories(folder, error);
     if (error) throw std::invalid_argument("--out " + folder.string() + " is not writable: " + error.message());
-    const std::filesystem::path probe = folder / (".prism-write-check-" + std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+    // Named by the process and the time: processes started together (MPI ranks) probe
+    // the same folder at once, and one's probe must not be taken for the other's.
+    const std::filesystem::path probe = folder / (".prism-write-check-" + std::to_string(::getpid()) + "-" +
+                                                  std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
     std::FILE* file = std::fopen(probe.c_str(), "wbx");
     if (file == nullptr) throw std::invalid_argument("--out " + folder.string() + " is not writable: " + std::strerror(errno));
     std::fclose(file);

@@ -125,7 +125,12 @@ int main(int argc, char** argv)
         examples::save(examples::Rendered{"cornell_caustics", std::move(*sums), rendered}, options, true);
         return 0;
     });
-    if (code != 0 && communicating) MPI_Abort(MPI_COMM_WORLD, code); // the other ranks would wait for this one
+    // A rank that failed may leave the others waiting in a collective: after they began
+    // communicating, or before, where its failure was its own (every rank checks the same
+    // flags, but not at the same instant). One process alone just ends.
+    int ranks = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+    if (code != 0 && (communicating || ranks > 1)) MPI_Abort(MPI_COMM_WORLD, code);
     MPI_Finalize();
     return code;
 }
