@@ -10,7 +10,7 @@
 
 #include <prism/prism.hpp>
 
-#include "readme_material.hpp" // README.md's recipe for a material
+#include "guide_material.hpp" // docs/guide.md's recipe for a material
 
 #include <algorithm>
 #include <array>
@@ -69,7 +69,7 @@ double furnace_mean(bool four, Radiance&& radiance, int count, bool gi = true, s
 }
 
 // The two-lobe furnace: the same sphere, its wall a Lambertian base of albedo rho_d
-// under a clear coat that mirrors a constant rho_s (README's recipe for a material,
+// under a clear coat that mirrors a constant rho_s (the user guide's recipe for a material,
 // outside the library), lit by one light of intensity pi at the centre. Inside a sphere a mirror
 // sends every chord to another chord, so the radiance leaving the wall is the same
 // everywhere (but along the exact normals, a set of no measure): L = L_d / (1 - rho_s),
@@ -87,7 +87,7 @@ double furnace_mean(bool four, Radiance&& radiance, int count, bool gi = true, s
 //                                         ends of it are delta, integrator/path_tracer.hpp)
 //   photon mapping (every path)           L
 
-/// The material is README's recipe for a material (ClearCoat, compiled from README.md by
+/// The material is the user guide's recipe for a material (ClearCoat, compiled from docs/guide.md by
 /// tools/snippets.py), at its defaults.
 inline constexpr float coat_diffuse = ClearCoat{}.base.x, coat_mirror = ClearCoat{}.coat;
 

@@ -13,6 +13,7 @@
 #             command-line tests (without OpenEXR, tinyobjloader and MPI, which Debian
 #             builds for libstdc++)
 #   headers   each public header compiled alone (tools/check_headers.sh)
+#   docs      the API reference (Doxygen, tools/docs.sh), failing on any warning
 #   fuzz      each libFuzzer target (tests/fuzz/) for 60 s, under ASan + UBSan
 # and the meson build's own test (a consumer project takes prism as a subproject).
 # Every CMake build treats a warning as an error (-Wall -Wextra -Wpedantic and more, -Werror).
@@ -131,6 +132,14 @@ if step headers "$root/tools/check_headers.sh"; then
   passed=$((passed + 1)) summary+=("headers ok")
 else
   fail headers
+fi
+
+# The API reference (Doxygen): any warning about a comment fails.
+if step docs "$root/tools/docs.sh"; then
+  tail -n 1 "$logs/docs.log"
+  passed=$((passed + 1)) summary+=("docs ok")
+else
+  fail docs
 fi
 
 # libFuzzer (clang) under ASan + UBSan: each target (tests/fuzz/) for 60 s from its

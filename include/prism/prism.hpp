@@ -4,6 +4,8 @@
 // <prism/io/image.hpp> for them).
 #pragma once
 
+#include <prism/version.hpp>
+
 #include <prism/accel/bvh.hpp>
 #include <prism/accel/bvh_build.hpp>
 #include <prism/accel/bvh_node.hpp>

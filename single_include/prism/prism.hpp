@@ -15,6 +15,24 @@
 //     write_png(film, "out.png");
 #pragma once
 
+// ---- prism/version.hpp ----
+/// @file
+/// prism's version. CMakeLists.txt reads its project version from these three lines, meson.build
+/// and CHANGELOG.md are checked against them (tools/check_version.py, a test), and
+/// `find_package(prism 0.1 CONFIG)` and `pkg-config --modversion prism` report it.
+
+#define PRISM_VERSION_MAJOR 0
+#define PRISM_VERSION_MINOR 1
+#define PRISM_VERSION_PATCH 0
+
+/// The version as one number that orders releases: major · 10000 + minor · 100 + patch.
+#define PRISM_VERSION (PRISM_VERSION_MAJOR * 10000 + PRISM_VERSION_MINOR * 100 + PRISM_VERSION_PATCH)
+
+#define PRISM_DETAIL_STRINGIFY(x) #x
+#define PRISM_DETAIL_VERSION_STRING(a, b, c) PRISM_DETAIL_STRINGIFY(a) "." PRISM_DETAIL_STRINGIFY(b) "." PRISM_DETAIL_STRINGIFY(c)
+/// The version as text, "major.minor.patch".
+#define PRISM_VERSION_STRING PRISM_DETAIL_VERSION_STRING(PRISM_VERSION_MAJOR, PRISM_VERSION_MINOR, PRISM_VERSION_PATCH)
+
 // ---- prism/core/config.hpp ----
 // prism configuration: the PRISM_ macros and the one place GLM is included.
 //
@@ -31,6 +49,7 @@
 #if !defined(GLM_VERSION) && !defined(GLM_FORCE_PURE)
 #define GLM_FORCE_PURE
 #endif
+
 
 #include <glm/glm.hpp>
 
@@ -957,6 +976,7 @@ enum class BvhSplit {
     sweep,  ///< the best between any two neighbours in centroid order: O(n log^2 n), the lowest SAH cost
 };
 
+/// How a Bvh is built: the split search, the leaf size, the threads.
 struct BvhConfig {
     int max_leaf_size = 4;               ///< a leaf holds at most this many primitives (>= 1)
     int bins = 16;                       ///< SAH bins per axis (2 to 256), for BvhSplit::binned
@@ -1394,6 +1414,8 @@ public:
 
 namespace prism {
 
+/// A bounding volume hierarchy over boxes (binned SAH, collapsed to nodes of Width children),
+/// walked nearest child first with the query as the caller's visitor; constexpr.
 template <Scalar T, int Width = detail::default_bvh_width<T>>
 class Bvh {
 public:
@@ -1788,6 +1810,8 @@ struct NearestNeighbours {
     [[nodiscard]] constexpr const Neighbour<T>* end() const noexcept { return items.data() + count; }
 };
 
+/// A pointer-free KD-tree over a PointSet: one search over a result-set policy
+/// (KNearest, WithinRadius or the caller's own); constexpr.
 template <PointSet Points, std::size_t LeafSize = 8>
 class KdTree {
     static_assert(LeafSize >= 1, "a leaf holds at least one point");
@@ -2107,7 +2131,7 @@ template <Scalar T = double>
 
 namespace prism {
 
-/// A direction uniform on the unit sphere: z = 1 - 2u, phi = 2 pi v (errata 4: no
+/// A direction uniform on the unit sphere: z = 1 - 2u, phi = 2 pi v (no
 /// rejection sampling of a cube, whose accepted points were never normalised).
 template <Scalar T>
 [[nodiscard]] inline Vec3<T> uniform_sphere(T u, T v) noexcept
@@ -2149,7 +2173,7 @@ template <Scalar T>
     return x * s + y * t + z * n;
 }
 
-/// Russian roulette (errata 7): the photon survives with probability p = the largest
+/// Russian roulette (Arvo and Kirk 1990, "Particle transport and image synthesis"): the photon survives with probability p = the largest
 /// channel of its reflectance (at most 1), and a survivor's power is scaled per channel
 /// by reflectance / p, so the expected power leaving is reflectance times the power
 /// arriving, in every channel. Returns false when the photon is absorbed.
@@ -2638,6 +2662,8 @@ concept CsgOperation = requires(bool a, bool b) {
     { Op::flips_second } -> std::convertible_to<bool>;
 };
 
+/// A CSG node: the solid Op makes of A and B (Roth 1982, "Ray casting for modeling solids"),
+/// found by merging the children's sorted crossings; itself a Shape, so nodes nest.
 template <CsgOperation Op, Shape A, Shape B>
     requires std::same_as<typename A::scalar_type, typename B::scalar_type>
 class CsgNode {
@@ -2745,6 +2771,7 @@ constexpr Aabb<T> aabb_intersection(const Aabb<T>& a, const Aabb<T>& b) noexcept
 
 namespace prism {
 
+/// The CSG operation A ∪ B: inside either.
 struct UnionOp {
     static constexpr bool flips_second = false;
     [[nodiscard]] static constexpr bool combine(bool a, bool b) noexcept { return a || b; }
@@ -2771,6 +2798,7 @@ template <Shape A, Shape B, Shape... Rest>
 
 namespace prism {
 
+/// The CSG operation A - B: inside A and not inside B.
 struct DifferenceOp {
     /// The subtracted solid's surface bounds the result from the other side.
     static constexpr bool flips_second = true;
@@ -2799,6 +2827,7 @@ template <Shape A, Shape B, Shape... Rest>
 
 namespace prism {
 
+/// The CSG operation A ∩ B: inside both.
 struct IntersectionOp {
     static constexpr bool flips_second = false;
     [[nodiscard]] static constexpr bool combine(bool a, bool b) noexcept { return a && b; }
@@ -2826,6 +2855,7 @@ template <Shape A, Shape B, Shape... Rest>
 
 namespace prism {
 
+/// The solid axis-aligned box [lo, hi]: a Shape with at most two crossings per ray.
 template <Scalar T = float>
 class Box {
 public:
@@ -3235,6 +3265,8 @@ struct MeshData {
 
 } // namespace detail
 
+/// A mesh of triangles with its own Bvh (N triangles a leaf at most): a closed solid or an open
+/// surface. Copies share the mesh, so Transformed copies are instances.
 template <Scalar T = float, std::size_t N = 8>
 class TriangleMesh {
     static_assert(N >= 2 && N <= 64, "a TriangleMesh reports 2 to 64 crossings");
@@ -3847,7 +3879,8 @@ static_assert(Shape<Plane<double>>);
 //
 //   F(p) = a x^2 + 2b xy + 2c xz + 2d x + e y^2 + 2f yz + 2g y + h z^2 + 2i z + j
 //
-// (the seed's form, 000_81f2033c38ead54b.txt section 2, with errata 1-3 applied), or
+// (the factors of 2 keep Q below symmetric; the form of Hanrahan 1983, "Ray tracing
+// algebraic surfaces", SIGGRAPH), or
 // F(p) = [p 1] Q [p 1]^T with the symmetric matrix Q = [[a b c d] [b e f g] [c f h i] [d g i j]].
 // Cones, cylinders and hyperboloids are not convex and most quadrics are unbounded:
 // the crossings are classified by the sign of the gradient along the ray, never by the
@@ -3866,13 +3899,14 @@ static_assert(Shape<Plane<double>>);
 
 namespace prism {
 
+/// The solid F(p) < 0 of a general second-degree surface, with stable roots and named factories.
 template <Scalar T = float>
 class Quadric {
 public:
     using scalar_type = T;
     static constexpr std::size_t max_crossings = 2;
 
-    /// The ten coefficients of the seed's form (note the factors of 2 on mixed and linear terms).
+    /// The ten coefficients of the form above (note the factors of 2 on mixed and linear terms).
     struct Coefficients {
         T a = 0, b = 0, c = 0, d = 0, e = 0, f = 0, g = 0, h = 0, i = 0, j = 0;
     };
@@ -4044,7 +4078,7 @@ public:
     {
         // An ellipsoid: a ray that cannot come near its box cannot cross it.
         if (bounded_ && !bounds_.reached_after(ray, range.min)) return {};
-        // Compute quadratic coefficients: F(o + t d) = A t^2 + 2 B t + C (errata 1: h dz^2),
+        // Compute quadratic coefficients: F(o + t d) = A t^2 + 2 B t + C (h multiplies dz^2),
         // in the quadric's own coordinates.
         const Vec3<T> o = ray.origin - origin_;
         const Vec3<T>& d = ray.direction;
@@ -4083,7 +4117,7 @@ public:
             return out;
         }
 
-        // Stable roots from the ray's own origin (errata 3): q = -(B + sign(B) sqrt(disc));
+        // Stable roots from the ray's own origin (Press et al. 2007, "Numerical Recipes", 3rd edition, section 5.6): q = -(B + sign(B) sqrt(disc));
         // t = C / q and q / A, so a root near t = 0 (a ray leaving the surface) has the
         // sign of C = F(o), the same test that says which side the origin is on.
         // At a root F'(t) = 2(A t + B) = +-2 sqrt(disc): it is -2 sign(B) sqrt(disc) at
@@ -4278,6 +4312,7 @@ static_assert(Shape<Quadric<double>>);
 
 namespace prism {
 
+/// The solid sphere: a Shape with at most two crossings per ray.
 template <Scalar T = float>
 class Sphere {
 public:
@@ -4708,6 +4743,8 @@ struct RecordPositions {
     [[nodiscard]] T coordinate(std::size_t i, std::size_t axis) const noexcept { return records[i].p[int(axis)]; }
 };
 
+/// Ward's irradiance cache (Ward and Heckbert 1992, "Irradiance gradients"): gathered
+/// irradiance records with gradients, interpolated between them.
 template <Scalar T>
 class IrradianceCache {
 public:
@@ -4922,7 +4959,7 @@ concept Medium = requires(const X& medium, typename X::scalar_type distance) {
 namespace prism {
 
 /// What a diffuse lobe reflects at one point: Lambert's BRDF albedo kd / pi for light
-/// from the lights, albedo ka for the scene's ambient light (the seed's kd and ka scale
+/// from the lights, albedo ka for the scene's ambient light (Whitted's kd and ka scale
 /// factors on top of a physical albedo).
 template <Scalar T>
 struct DiffuseResponse {
@@ -4986,7 +5023,7 @@ concept FresnelShare = std::same_as<F, T> || std::same_as<F, Rgb<T>>;
 /// over the surface or with the side; either returns one share or one per channel, and
 /// is asked only where light refracts (under total internal reflection all of it is
 /// reflected). The reflected and refracted rays are then weighted by
-/// `reflection_tint()` and `transmission_tint()` (the seed's kr and kt).
+/// `reflection_tint()` and `transmission_tint()` (Whitted's kr and kt).
 template <class M>
 concept DeltaTransmission = requires(const M& material) {
     { material.refractive_index() } -> std::same_as<typename M::scalar_type>;
@@ -5053,7 +5090,8 @@ inline constexpr bool disperses = M::transmits && Dispersive<M>;
 //
 // Conventions: d is the incident direction (travelling toward the surface), n is the
 // unit normal on the side d comes from (dot(d, n) < 0), so cos(theta_i) = -dot(d, n)
-// (seed errata 4), and eta = n_t / n_i, the index of the far side over the near side.
+// (as in Pharr, Jakob and Humphreys 2023, "Physically Based Rendering", 4th edition,
+// section 4.5), and eta = n_t / n_i, the index of the far side over the near side.
 
 
 #include <optional>
@@ -5687,7 +5725,7 @@ constexpr void attenuate_inside(const M& material, const Crossing<typename M::sc
 /// What a shadow ray along [0, t_max] keeps through one transmissive object, given the
 /// object's crossings (without surfaces) in that range: its medium's transmittance over
 /// the length inside, then its transmission tint once per boundary crossed, multiplied
-/// into `light`. Refraction is ignored: the lecture notes' shadow rays through
+/// into `light`. Refraction is ignored: the classic Whitted shadow rays through
 /// transparent objects.
 template <Material M, std::size_t N>
     requires(M::transmits)
@@ -5728,7 +5766,7 @@ struct PhotonBounce {
 enum class Lobes { none, delta, all };
 
 /// Scatter a photon of `power` arriving along the unit direction d at `hit`, by Russian
-/// roulette per channel (errata 7): a diffuse lobe reflects its photon reflectance into
+/// roulette per channel (Jensen 2001, section 2.4): a diffuse lobe reflects its photon reflectance into
 /// a cosine-distributed direction; an interface reflects with probability F and
 /// refracts otherwise, weighted by its tints; a conductor reflects by its reflectance.
 /// A material with a diffuse and a delta lobe makes one decision over its lobes (the
@@ -5831,7 +5869,7 @@ template <Transport Mode = Transport::importance, Material M>
 // dt = ds / n, it becomes d^2 x / dt^2 = n grad n = grad(n^2) / 2, which Sharma, Kumar
 // and Ghatak (1982, "Tracing rays through graded-index media: a new method", Applied
 // Optics 21(6)) integrate with a Runge-Kutta-Nystrom step: `sharma_step`. Its error is
-// controlled by step doubling in `AdaptiveStepper`. The lecture notes' own method,
+// controlled by step doubling in `AdaptiveStepper`. The classic textbook method,
 // "divide the air into layers and keep bending the light", is `LayeredMedium`: straight
 // segments through flat layers of constant index, refracted by Snell at each boundary.
 //
@@ -6015,6 +6053,7 @@ class AdaptiveStepper {
 public:
     using T = typename F::scalar_type;
 
+    /// How the stepper controls its error: the tolerance per step and the step sizes it may take.
     struct Config {
         T tolerance = T(1e-6);  ///< position error allowed per step
         T first_step = T(0.1);  ///< the first step's arc length
@@ -6058,7 +6097,7 @@ private:
     Config config_;
 };
 
-// The Lecture Notes' Layers
+// Flat Layers of Constant Index
 
 /// The air between y = bottom and y = top cut into `layers` flat layers, each of the
 /// field's index at its middle height; a ray goes straight within a layer and refracts
@@ -6128,8 +6167,8 @@ private:
 // (graded-index air: mirages, a flattened setting sun), through which rays curve.
 //
 // GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
-// field must be uniform, and rays go straight there. LayeredAir is the lecture notes'
-// flat layers. How a ray travels through either to the first surface it meets is
+// field must be uniform, and rays go straight there. LayeredAir is flat layers of
+// constant index, refracting at each boundary. How a ray travels through either to the first surface it meets is
 // transport/travel.hpp's.
 
 
@@ -6167,7 +6206,7 @@ struct GradedAir {
     }
 };
 
-/// The lecture notes' air: `layers` flat layers between heights `bottom` and `top`, each
+/// Layered air: `layers` flat layers between heights `bottom` and `top`, each
 /// of the field's index at its middle height (stratified fields only); a ray goes
 /// straight within a layer and refracts by Snell's law (or reflects totally) at each
 /// boundary; above and below the layers it goes straight. The second policy beside
@@ -6197,6 +6236,7 @@ struct LayeredAir {
 
 namespace prism {
 
+/// The surface a ray meets first: the crossing (point, normal, side) and which object it is.
 template <Scalar T>
 struct Hit {
     Crossing<T> crossing{};  ///< where, with the outward normal and whether the ray enters
@@ -6629,8 +6669,7 @@ private:
 // Photon: what a photon map stores, and the sampling a photon tracer needs.
 //
 // Jensen, "Global Illumination using Photon Maps" (1996) and "Realistic Image Synthesis
-// Using Photon Mapping" (2001), with the seed's errata 4, 6 and 7
-// (shared/seeds/README.md): emission directions uniform on the sphere, each photon
+// Using Photon Mapping" (2001): emission directions uniform on the sphere, each photon
 // carrying the light's power divided by the photons emitted, Russian roulette that
 // scales a survivor's power per channel by reflectance over survival probability.
 
@@ -6779,6 +6818,7 @@ struct PrecomputedIrradiance {
     float radius2 = 0;
 };
 
+/// Photons in KD-tree order, with radius and k-nearest radiance estimates (Jensen 2001).
 class PhotonMap {
 public:
     using Tree = KdTree<PhotonPositions, 8>;
@@ -7125,8 +7165,8 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
 // one or more specular bounces (L S+ D). Every bounce is scatter_photon's (Russian
 // roulette per channel, material/scattering.hpp), and light travelling inside an object
 // is attenuated by its medium. Shadow photons mark where the straight continuation of a
-// direct photon's path meets further diffuse surfaces (Jensen and Christensen 1995;
-// errata 8). Photon i starts from point i of a scrambled Sobol sequence and draws the
+// direct photon's path meets further diffuse surfaces (Jensen and Christensen 1995,
+// "Efficiently rendering shadows using the photon map"). Photon i starts from point i of a scrambled Sobol sequence and draws the
 // rest of its path from its own random stream, so the maps are the same bits for any
 // thread count. A light without falloff (POV-Ray's `fade_power 0`) has no physical
 // power; its photons are scaled by the squared length of the path they travelled, as
@@ -7145,6 +7185,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
 
 namespace prism {
 
+/// How many photons are traced, and how.
 struct PhotonTracerConfig {
     std::size_t global_photons = 200000;  ///< emitted for the global map
     std::size_t caustic_photons = 200000; ///< emitted toward specular objects for the caustic map
@@ -7179,6 +7220,7 @@ inline void validate(const PhotonTracerConfig& config)
 
 } // namespace detail
 
+/// The maps one photon tracing gives: global, caustic and shadow photons.
 struct PhotonMaps {
     PhotonMap global;
     PhotonMap caustic;
@@ -8229,6 +8271,7 @@ struct Camera {
 
 namespace prism {
 
+/// What render() renders: size, samples, threads, seed, and the part of the image (crop, passes).
 struct RenderConfig {
     int width = 512;
     int height = 512;
@@ -9034,7 +9077,7 @@ public:
     LightsOfScene lights;
     Pack<Slots...> slots; ///< get<I>(slots) is slot I
     Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
-    Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
+    Rgb<T> ambient{T(0)};    ///< the ambient term of Whitted (1980), added where every light is occluded
 
     constexpr Scene(LightsOfScene light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
     {
@@ -9105,7 +9148,7 @@ public:
     /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
     /// object is in the way, otherwise what every dielectric crossed lets through
     /// (attenuate_shadow_ray: its medium over the length inside, its tint per boundary;
-    /// refraction ignored, the lecture notes' shadow rays through transparent objects).
+    /// refraction ignored, the classic Whitted shadow rays through transparent objects).
     /// With ShadowsThroughGlass::blocked dielectrics block the ray like any other
     /// object: a photon mapper brings the light through them by its caustic map instead
     /// (as POV-Ray does for photon targets).
@@ -9397,6 +9440,7 @@ Scene(L, Slots...) -> Scene<L, Slots...>;
 
 namespace prism {
 
+/// A LightTracer's settings: paths a pass, bounces, wavelength bands.
 struct LightTracerConfig {
     std::size_t paths = 1000000;   ///< light paths per pass, aimed at the specular objects
     int max_bounces = 256;         ///< surfaces a path may meet; Russian roulette ends it long before
@@ -9585,6 +9629,7 @@ public:
     using scalar_type = typename SceneT::scalar_type;
     using T = scalar_type;
 
+    /// A PathTracer's settings.
     struct Config {
         int max_depth = 256; ///< surfaces a path may meet; Russian roulette ends it long before
         /// Diffuse bounces a path may take: 0 lights each pixel's first diffuse surface by
@@ -9685,6 +9730,8 @@ public:
     using scalar_type = typename SceneT::scalar_type;
     using T = scalar_type;
 
+    /// A PhotonMapper's settings: photon tracing, the two maps' estimates, the final gather,
+    /// the irradiance cache and the shadow-ray saving.
     struct Config {
         PhotonTracerConfig tracing{}; ///< how many photons, and how they are traced
         Estimator caustic{.radius = 0.1f}; ///< the caustic map's estimate
@@ -10058,6 +10105,8 @@ namespace prism {
     return std::sqrt(r2);
 }
 
+/// A ProgressivePhotonMapper's settings: each pass's photon mapper, the radius schedule's alpha,
+/// and when to stop.
 template <class SceneT, class Air = StraightAir>
 struct ProgressiveConfig {
     /// Each pass's photon mapper: photons per pass (tracing), the first pass's radii
@@ -10150,12 +10199,15 @@ private:
 
 namespace prism {
 
+/// prism's unbiased reference: a PathTracer and a LightTracer, which count disjoint sets of
+/// paths, summed in every pass.
 template <class SceneT, class Air = StraightAir>
 class Reference {
 public:
     using scalar_type = typename SceneT::scalar_type;
     using T = scalar_type;
 
+    /// A Reference's settings, shared by its two halves.
     struct Config {
         /// Diffuse bounces either half may take (0: direct light only, as POV-Ray without
         /// radiosity; the light tracer then joins a path to the camera at its first diffuse
@@ -10190,7 +10242,8 @@ private:
 } // namespace prism
 
 // ---- prism/integrator/whitted.hpp ----
-// Whitted: recursive ray tracing as the lecture notes write it (Whitted 1980).
+// Whitted: recursive ray tracing (Whitted 1980, "An improved illumination model for
+// shaded display", Communications of the ACM 23(6)).
 //
 // At each hit:
 //   L = albedo (kd L_diffuse + ka L_ambient prod_lights (1 - V_light)) + kr L_reflect + kt L_transmit
@@ -10213,6 +10266,7 @@ public:
     using scalar_type = typename SceneT::scalar_type;
     using T = scalar_type;
 
+    /// A Whitted integrator's settings.
     struct Config {
         int max_depth = 10;          ///< reflection/refraction bounces followed at most
         T min_weight = T(1e-3);      ///< stop a branch whose weight on the pixel is below this
@@ -10469,8 +10523,8 @@ static_assert(Light<PointLight<float>>);
 // Fresnel reflectance: exact dielectric, Schlick's approximation, complex conductor.
 //
 // cos_i is the cosine of the incident angle (>= 0, measured on the incident side) and
-// eta = n_t / n_i. Formulas from Born & Wolf, "Principles of Optics", section 1.5, in
-// the form of the seed errata 1:
+// eta = n_t / n_i. Formulas from Born and Wolf (1999, "Principles of Optics", 7th
+// edition, section 1.5.2):
 //   R_s = ((n_i cos_i - n_t cos_t) / (n_i cos_i + n_t cos_t))^2
 //   R_p = ((n_i cos_t - n_t cos_i) / (n_i cos_t + n_t cos_i))^2
 
@@ -10530,8 +10584,8 @@ template <Scalar T>
 /// Schlick's approximation (Schlick 1994, "An Inexpensive BRDF Model for Physically-based
 /// Rendering"): R0 + (1 - R0)(1 - cos)^5 with R0 = ((eta - 1)/(eta + 1))^2. The cosine
 /// must be the one on the optically less dense side: going from dense to less dense
-/// (eta < 1) that is cos_t, and the answer is 1 under total internal reflection (seed
-/// errata 3; with cos_i there the error reaches 0.9 near the critical angle).
+/// (eta < 1) that is cos_t, and the answer is 1 under total internal reflection (with
+/// cos_i there the error reaches 0.9 near the critical angle; tests/optics/fresnel.cpp).
 template <Scalar T>
 [[nodiscard]] constexpr T fresnel_schlick(T cos_i, T cos_t, T eta) noexcept
 {
@@ -10555,7 +10609,7 @@ template <Scalar T>
 
 /// Reflectance of a conductor with complex index eta = n + i k relative to the outside
 /// medium, unpolarised (pbrt-v4 FrComplex; Born & Wolf 14.2). Metals brighten toward
-/// grazing incidence, unlike a constant kr (seed errata 5).
+/// grazing incidence, unlike a constant kr.
 template <Scalar T>
 [[nodiscard]] inline T fresnel_conductor(T cos_i, std::complex<T> eta) noexcept
 {
@@ -10737,7 +10791,7 @@ inline constexpr MeasuredIndex aluminium{
 
 namespace prism {
 
-/// Reflectance independent of angle (the lecture notes' approximation for metals).
+/// Reflectance independent of angle (the common approximation for metals, as in Whitted 1980).
 template <Scalar T = float>
 struct ConstantKr {
     Rgb<T> kr{T(1)};
@@ -10746,7 +10800,7 @@ struct ConstantKr {
     constexpr void validate() const { detail::require_non_negative("ConstantKr kr", kr); }
 };
 
-/// The Fresnel equations for a complex index n + i k per channel (seed errata 5).
+/// The Fresnel equations for a complex index n + i k per channel (Born and Wolf 1999, section 14.2).
 template <Scalar T = float>
 struct ComplexIor {
     Rgb<T> eta{T(1)}; ///< real part n
@@ -10930,7 +10984,7 @@ namespace prism {
 
 /// A clear or tinted dielectric of index `ior` (the outside has index 1). The Fresnel
 /// policy (ExactFresnel or SchlickFresnel) splits light between reflection and
-/// refraction; kr and kt are the seed's scale factors on top; `interior` is the medium
+/// refraction; kr and kt are Whitted's (1980) scale factors on top; `interior` is the medium
 /// inside (Homogeneous: Beer-Lambert absorption per unit length, per channel).
 template <Scalar T = float, class Fresnel = ExactFresnel, Medium Interior = Homogeneous<T>>
     requires FresnelPolicy<Fresnel, T> && std::same_as<typename Interior::scalar_type, T>
@@ -10952,7 +11006,7 @@ struct Dielectric {
     [[nodiscard]] constexpr T refractive_index() const noexcept { return ior; }
     /// Fresnel reflectance for the incident and refracted cosines and eta = n_t / n_i.
     [[nodiscard]] constexpr T fresnel(T cos_i, T cos_t, T eta) const noexcept { return Fresnel::reflectance(cos_i, cos_t, eta); }
-    /// The seed's kr on the reflected ray and kt on the refracted one, grey.
+    /// Whitted's kr on the reflected ray and kt on the refracted one, grey.
     [[nodiscard]] constexpr Rgb<T> reflection_tint() const noexcept { return Rgb<T>(kr); }
     [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(kt); }
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior; }
@@ -11063,7 +11117,7 @@ static_assert(Texture<Solid<float>> && Texture<Checker<double>> && Texture<UvChe
 } // namespace prism
 
 // ---- prism/material/diffuse.hpp ----
-// Diffuse: a Lambertian surface with the seed's kd (diffuse) and ka (ambient) factors.
+// Diffuse: a Lambertian surface with Whitted's (1980) kd (diffuse) and ka (ambient) factors.
 
 
 #include <cmath>
@@ -11244,7 +11298,7 @@ namespace prism {
 /// wavelength bands where it refracts through it (Whitted::Config::dispersion_bands),
 /// and each band, and each photon, then refracts at its own index; refractive_index()
 /// without a wavelength is n_d (587.56 nm). Otherwise it is Dielectric: the Fresnel
-/// policy, the interior medium and the seed's kr and kt.
+/// policy, the interior medium and Whitted's kr and kt.
 template <Scalar T = float, Dispersion Glass = Sellmeier<double>, class Fresnel = ExactFresnel, Medium Interior = Homogeneous<T>>
     requires FresnelPolicy<Fresnel, T> && std::same_as<typename Interior::scalar_type, T>
 struct DispersiveDielectric {
@@ -11462,6 +11516,7 @@ concept FilmThickness = requires(const X& x, const Vec3<typename X::scalar_type>
 template <Scalar T>
 class FilmTable {
 public:
+    /// The table's resolution over the incident cosine and over the film's thickness.
     struct Config {
         int cosines = 65;           ///< entries over sqrt(cos_i) in [0, 1]
         T thickness_step_nm = T(2); ///< spacing of the entries over the thickness

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <prism/prism.hpp>
 
-#include "readme_material.hpp" // README.md's recipe for a material
+#include "guide_material.hpp" // docs/guide.md's recipe for a material
 
 #include <doctest/doctest.h>
 
@@ -24,7 +24,7 @@ TEST_CASE("scene traits follow from the material types")
 }
 
 // Materials defined here only, with no change to any integrator: the proof that a new
-// material is one header (see README, "Adding a material, a light or a shape").
+// material is one header (see docs/guide.md, "Materials", and docs/contributing.md).
 
 namespace {
 
@@ -163,9 +163,9 @@ TEST_CASE("coated glass defined in a test: Whitted sums its own Fresnel, tint an
     }
 }
 
-TEST_CASE("README's recipe for a material compiles as written and refuses a bad parameter by name")
+TEST_CASE("The user guide's recipe for a material compiles as written and refuses a bad parameter by name")
 {
-    // README.md's code block, compiled from there (tools/snippets.py); tests/furnace.hpp
+    // docs/guide.md's code block, compiled from there (tools/snippets.py); tests/furnace.hpp
     // renders it in every integrator.
     static_assert(prism::Material<ClearCoat>);
     CHECK_NOTHROW(ClearCoat{}.validate());

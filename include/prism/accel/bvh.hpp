@@ -52,6 +52,8 @@
 
 namespace prism {
 
+/// A bounding volume hierarchy over boxes (binned SAH, collapsed to nodes of Width children),
+/// walked nearest child first with the query as the caller's visitor; constexpr.
 template <Scalar T, int Width = detail::default_bvh_width<T>>
 class Bvh {
 public:

@@ -29,6 +29,7 @@ enum class BvhSplit {
     sweep,  ///< the best between any two neighbours in centroid order: O(n log^2 n), the lowest SAH cost
 };
 
+/// How a Bvh is built: the split search, the leaf size, the threads.
 struct BvhConfig {
     int max_leaf_size = 4;               ///< a leaf holds at most this many primitives (>= 1)
     int bins = 16;                       ///< SAH bins per axis (2 to 256), for BvhSplit::binned

@@ -169,6 +169,8 @@ struct NearestNeighbours {
     [[nodiscard]] constexpr const Neighbour<T>* end() const noexcept { return items.data() + count; }
 };
 
+/// A pointer-free KD-tree over a PointSet: one search over a result-set policy
+/// (KNearest, WithinRadius or the caller's own); constexpr.
 template <PointSet Points, std::size_t LeafSize = 8>
 class KdTree {
     static_assert(LeafSize >= 1, "a leaf holds at least one point");

@@ -16,6 +16,8 @@
 #define GLM_FORCE_PURE
 #endif
 
+#include <prism/version.hpp>
+
 #include <glm/glm.hpp>
 
 #include <cstdio>

@@ -11,7 +11,7 @@
 
 namespace prism {
 
-/// A direction uniform on the unit sphere: z = 1 - 2u, phi = 2 pi v (errata 4: no
+/// A direction uniform on the unit sphere: z = 1 - 2u, phi = 2 pi v (no
 /// rejection sampling of a cube, whose accepted points were never normalised).
 template <Scalar T>
 [[nodiscard]] inline Vec3<T> uniform_sphere(T u, T v) noexcept
@@ -53,7 +53,7 @@ template <Scalar T>
     return x * s + y * t + z * n;
 }
 
-/// Russian roulette (errata 7): the photon survives with probability p = the largest
+/// Russian roulette (Arvo and Kirk 1990, "Particle transport and image synthesis"): the photon survives with probability p = the largest
 /// channel of its reflectance (at most 1), and a survivor's power is scaled per channel
 /// by reflectance / p, so the expected power leaving is reflectance times the power
 /// arriving, in every channel. Returns false when the photon is absorbed.

@@ -30,6 +30,8 @@ concept CsgOperation = requires(bool a, bool b) {
     { Op::flips_second } -> std::convertible_to<bool>;
 };
 
+/// A CSG node: the solid Op makes of A and B (Roth 1982, "Ray casting for modeling solids"),
+/// found by merging the children's sorted crossings; itself a Shape, so nodes nest.
 template <CsgOperation Op, Shape A, Shape B>
     requires std::same_as<typename A::scalar_type, typename B::scalar_type>
 class CsgNode {

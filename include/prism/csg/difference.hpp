@@ -6,6 +6,7 @@
 
 namespace prism {
 
+/// The CSG operation A - B: inside A and not inside B.
 struct DifferenceOp {
     /// The subtracted solid's surface bounds the result from the other side.
     static constexpr bool flips_second = true;

@@ -6,6 +6,7 @@
 
 namespace prism {
 
+/// The CSG operation A ∪ B: inside either.
 struct UnionOp {
     static constexpr bool flips_second = false;
     [[nodiscard]] static constexpr bool combine(bool a, bool b) noexcept { return a || b; }

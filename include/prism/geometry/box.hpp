@@ -8,6 +8,7 @@
 
 namespace prism {
 
+/// The solid axis-aligned box [lo, hi]: a Shape with at most two crossings per ray.
 template <Scalar T = float>
 class Box {
 public:

@@ -3,7 +3,8 @@
 //
 //   F(p) = a x^2 + 2b xy + 2c xz + 2d x + e y^2 + 2f yz + 2g y + h z^2 + 2i z + j
 //
-// (the seed's form, 000_81f2033c38ead54b.txt section 2, with errata 1-3 applied), or
+// (the factors of 2 keep Q below symmetric; the form of Hanrahan 1983, "Ray tracing
+// algebraic surfaces", SIGGRAPH), or
 // F(p) = [p 1] Q [p 1]^T with the symmetric matrix Q = [[a b c d] [b e f g] [c f h i] [d g i j]].
 // Cones, cylinders and hyperboloids are not convex and most quadrics are unbounded:
 // the crossings are classified by the sign of the gradient along the ray, never by the
@@ -27,13 +28,14 @@
 
 namespace prism {
 
+/// The solid F(p) < 0 of a general second-degree surface, with stable roots and named factories.
 template <Scalar T = float>
 class Quadric {
 public:
     using scalar_type = T;
     static constexpr std::size_t max_crossings = 2;
 
-    /// The ten coefficients of the seed's form (note the factors of 2 on mixed and linear terms).
+    /// The ten coefficients of the form above (note the factors of 2 on mixed and linear terms).
     struct Coefficients {
         T a = 0, b = 0, c = 0, d = 0, e = 0, f = 0, g = 0, h = 0, i = 0, j = 0;
     };
@@ -205,7 +207,7 @@ public:
     {
         // An ellipsoid: a ray that cannot come near its box cannot cross it.
         if (bounded_ && !bounds_.reached_after(ray, range.min)) return {};
-        // Compute quadratic coefficients: F(o + t d) = A t^2 + 2 B t + C (errata 1: h dz^2),
+        // Compute quadratic coefficients: F(o + t d) = A t^2 + 2 B t + C (h multiplies dz^2),
         // in the quadric's own coordinates.
         const Vec3<T> o = ray.origin - origin_;
         const Vec3<T>& d = ray.direction;
@@ -244,7 +246,7 @@ public:
             return out;
         }
 
-        // Stable roots from the ray's own origin (errata 3): q = -(B + sign(B) sqrt(disc));
+        // Stable roots from the ray's own origin (Press et al. 2007, "Numerical Recipes", 3rd edition, section 5.6): q = -(B + sign(B) sqrt(disc));
         // t = C / q and q / A, so a root near t = 0 (a ray leaving the surface) has the
         // sign of C = F(o), the same test that says which side the origin is on.
         // At a root F'(t) = 2(A t + B) = +-2 sqrt(disc): it is -2 sign(B) sqrt(disc) at

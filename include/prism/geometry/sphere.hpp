@@ -10,6 +10,7 @@
 
 namespace prism {
 
+/// The solid sphere: a Shape with at most two crossings per ray.
 template <Scalar T = float>
 class Sphere {
 public:

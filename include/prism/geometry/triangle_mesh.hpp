@@ -78,6 +78,8 @@ struct MeshData {
 
 } // namespace detail
 
+/// A mesh of triangles with its own Bvh (N triangles a leaf at most): a closed solid or an open
+/// surface. Copies share the mesh, so Transformed copies are instances.
 template <Scalar T = float, std::size_t N = 8>
 class TriangleMesh {
     static_assert(N >= 2 && N <= 64, "a TriangleMesh reports 2 to 64 crossings");

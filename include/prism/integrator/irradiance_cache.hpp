@@ -137,6 +137,8 @@ struct RecordPositions {
     [[nodiscard]] T coordinate(std::size_t i, std::size_t axis) const noexcept { return records[i].p[int(axis)]; }
 };
 
+/// Ward's irradiance cache (Ward and Heckbert 1992, "Irradiance gradients"): gathered
+/// irradiance records with gradients, interpolated between them.
 template <Scalar T>
 class IrradianceCache {
 public:

@@ -43,6 +43,7 @@
 
 namespace prism {
 
+/// A LightTracer's settings: paths a pass, bounces, wavelength bands.
 struct LightTracerConfig {
     std::size_t paths = 1000000;   ///< light paths per pass, aimed at the specular objects
     int max_bounces = 256;         ///< surfaces a path may meet; Russian roulette ends it long before

@@ -37,6 +37,7 @@ public:
     using scalar_type = typename SceneT::scalar_type;
     using T = scalar_type;
 
+    /// A PathTracer's settings.
     struct Config {
         int max_depth = 256; ///< surfaces a path may meet; Russian roulette ends it long before
         /// Diffuse bounces a path may take: 0 lights each pixel's first diffuse surface by

@@ -56,6 +56,8 @@ public:
     using scalar_type = typename SceneT::scalar_type;
     using T = scalar_type;
 
+    /// A PhotonMapper's settings: photon tracing, the two maps' estimates, the final gather,
+    /// the irradiance cache and the shadow-ray saving.
     struct Config {
         PhotonTracerConfig tracing{}; ///< how many photons, and how they are traced
         Estimator caustic{.radius = 0.1f}; ///< the caustic map's estimate

@@ -45,6 +45,8 @@ namespace prism {
     return std::sqrt(r2);
 }
 
+/// A ProgressivePhotonMapper's settings: each pass's photon mapper, the radius schedule's alpha,
+/// and when to stop.
 template <class SceneT, class Air = StraightAir>
 struct ProgressiveConfig {
     /// Each pass's photon mapper: photons per pass (tracing), the first pass's radii

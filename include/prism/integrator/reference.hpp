@@ -18,12 +18,15 @@
 
 namespace prism {
 
+/// prism's unbiased reference: a PathTracer and a LightTracer, which count disjoint sets of
+/// paths, summed in every pass.
 template <class SceneT, class Air = StraightAir>
 class Reference {
 public:
     using scalar_type = typename SceneT::scalar_type;
     using T = scalar_type;
 
+    /// A Reference's settings, shared by its two halves.
     struct Config {
         /// Diffuse bounces either half may take (0: direct light only, as POV-Ray without
         /// radiosity; the light tracer then joins a path to the camera at its first diffuse

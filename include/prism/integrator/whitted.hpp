@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Whitted: recursive ray tracing as the lecture notes write it (Whitted 1980).
+// Whitted: recursive ray tracing (Whitted 1980, "An improved illumination model for
+// shaded display", Communications of the ACM 23(6)).
 //
 // At each hit:
 //   L = albedo (kd L_diffuse + ka L_ambient prod_lights (1 - V_light)) + kr L_reflect + kt L_transmit
@@ -37,6 +38,7 @@ public:
     using scalar_type = typename SceneT::scalar_type;
     using T = scalar_type;
 
+    /// A Whitted integrator's settings.
     struct Config {
         int max_depth = 10;          ///< reflection/refraction bounces followed at most
         T min_weight = T(1e-3);      ///< stop a branch whose weight on the pixel is below this

@@ -13,7 +13,7 @@
 
 namespace prism {
 
-/// Reflectance independent of angle (the lecture notes' approximation for metals).
+/// Reflectance independent of angle (the common approximation for metals, as in Whitted 1980).
 template <Scalar T = float>
 struct ConstantKr {
     Rgb<T> kr{T(1)};
@@ -22,7 +22,7 @@ struct ConstantKr {
     constexpr void validate() const { detail::require_non_negative("ConstantKr kr", kr); }
 };
 
-/// The Fresnel equations for a complex index n + i k per channel (seed errata 5).
+/// The Fresnel equations for a complex index n + i k per channel (Born and Wolf 1999, section 14.2).
 template <Scalar T = float>
 struct ComplexIor {
     Rgb<T> eta{T(1)}; ///< real part n

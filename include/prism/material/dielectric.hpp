@@ -12,7 +12,7 @@ namespace prism {
 
 /// A clear or tinted dielectric of index `ior` (the outside has index 1). The Fresnel
 /// policy (ExactFresnel or SchlickFresnel) splits light between reflection and
-/// refraction; kr and kt are the seed's scale factors on top; `interior` is the medium
+/// refraction; kr and kt are Whitted's (1980) scale factors on top; `interior` is the medium
 /// inside (Homogeneous: Beer-Lambert absorption per unit length, per channel).
 template <Scalar T = float, class Fresnel = ExactFresnel, Medium Interior = Homogeneous<T>>
     requires FresnelPolicy<Fresnel, T> && std::same_as<typename Interior::scalar_type, T>
@@ -34,7 +34,7 @@ struct Dielectric {
     [[nodiscard]] constexpr T refractive_index() const noexcept { return ior; }
     /// Fresnel reflectance for the incident and refracted cosines and eta = n_t / n_i.
     [[nodiscard]] constexpr T fresnel(T cos_i, T cos_t, T eta) const noexcept { return Fresnel::reflectance(cos_i, cos_t, eta); }
-    /// The seed's kr on the reflected ray and kt on the refracted one, grey.
+    /// Whitted's kr on the reflected ray and kt on the refracted one, grey.
     [[nodiscard]] constexpr Rgb<T> reflection_tint() const noexcept { return Rgb<T>(kr); }
     [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(kt); }
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior; }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Diffuse: a Lambertian surface with the seed's kd (diffuse) and ka (ambient) factors.
+// Diffuse: a Lambertian surface with Whitted's (1980) kd (diffuse) and ka (ambient) factors.
 #pragma once
 
 #include <prism/core/check.hpp>

@@ -16,7 +16,7 @@ namespace prism {
 /// wavelength bands where it refracts through it (Whitted::Config::dispersion_bands),
 /// and each band, and each photon, then refracts at its own index; refractive_index()
 /// without a wavelength is n_d (587.56 nm). Otherwise it is Dielectric: the Fresnel
-/// policy, the interior medium and the seed's kr and kt.
+/// policy, the interior medium and Whitted's kr and kt.
 template <Scalar T = float, Dispersion Glass = Sellmeier<double>, class Fresnel = ExactFresnel, Medium Interior = Homogeneous<T>>
     requires FresnelPolicy<Fresnel, T> && std::same_as<typename Interior::scalar_type, T>
 struct DispersiveDielectric {

@@ -291,7 +291,7 @@ constexpr void attenuate_inside(const M& material, const Crossing<typename M::sc
 /// What a shadow ray along [0, t_max] keeps through one transmissive object, given the
 /// object's crossings (without surfaces) in that range: its medium's transmittance over
 /// the length inside, then its transmission tint once per boundary crossed, multiplied
-/// into `light`. Refraction is ignored: the lecture notes' shadow rays through
+/// into `light`. Refraction is ignored: the classic Whitted shadow rays through
 /// transparent objects.
 template <Material M, std::size_t N>
     requires(M::transmits)
@@ -332,7 +332,7 @@ struct PhotonBounce {
 enum class Lobes { none, delta, all };
 
 /// Scatter a photon of `power` arriving along the unit direction d at `hit`, by Russian
-/// roulette per channel (errata 7): a diffuse lobe reflects its photon reflectance into
+/// roulette per channel (Jensen 2001, section 2.4): a diffuse lobe reflects its photon reflectance into
 /// a cosine-distributed direction; an interface reflects with probability F and
 /// refracts otherwise, weighted by its tints; a conductor reflects by its reflectance.
 /// A material with a diffuse and a delta lobe makes one decision over its lobes (the

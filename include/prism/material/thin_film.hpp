@@ -83,6 +83,7 @@ concept FilmThickness = requires(const X& x, const Vec3<typename X::scalar_type>
 template <Scalar T>
 class FilmTable {
 public:
+    /// The table's resolution over the incident cosine and over the film's thickness.
     struct Config {
         int cosines = 65;           ///< entries over sqrt(cos_i) in [0, 1]
         T thickness_step_nm = T(2); ///< spacing of the entries over the thickness

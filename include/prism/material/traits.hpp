@@ -25,7 +25,7 @@
 namespace prism {
 
 /// What a diffuse lobe reflects at one point: Lambert's BRDF albedo kd / pi for light
-/// from the lights, albedo ka for the scene's ambient light (the seed's kd and ka scale
+/// from the lights, albedo ka for the scene's ambient light (Whitted's kd and ka scale
 /// factors on top of a physical albedo).
 template <Scalar T>
 struct DiffuseResponse {
@@ -89,7 +89,7 @@ concept FresnelShare = std::same_as<F, T> || std::same_as<F, Rgb<T>>;
 /// over the surface or with the side; either returns one share or one per channel, and
 /// is asked only where light refracts (under total internal reflection all of it is
 /// reflected). The reflected and refracted rays are then weighted by
-/// `reflection_tint()` and `transmission_tint()` (the seed's kr and kt).
+/// `reflection_tint()` and `transmission_tint()` (Whitted's kr and kt).
 template <class M>
 concept DeltaTransmission = requires(const M& material) {
     { material.refractive_index() } -> std::same_as<typename M::scalar_type>;

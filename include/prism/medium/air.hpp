@@ -3,8 +3,8 @@
 // (graded-index air: mirages, a flattened setting sun), through which rays curve.
 //
 // GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
-// field must be uniform, and rays go straight there. LayeredAir is the lecture notes'
-// flat layers. How a ray travels through either to the first surface it meets is
+// field must be uniform, and rays go straight there. LayeredAir is flat layers of
+// constant index, refracting at each boundary. How a ray travels through either to the first surface it meets is
 // transport/travel.hpp's.
 #pragma once
 
@@ -46,7 +46,7 @@ struct GradedAir {
     }
 };
 
-/// The lecture notes' air: `layers` flat layers between heights `bottom` and `top`, each
+/// Layered air: `layers` flat layers between heights `bottom` and `top`, each
 /// of the field's index at its middle height (stratified fields only); a ray goes
 /// straight within a layer and refracts by Snell's law (or reflects totally) at each
 /// boundary; above and below the layers it goes straight. The second policy beside

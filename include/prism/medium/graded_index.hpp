@@ -7,7 +7,7 @@
 // dt = ds / n, it becomes d^2 x / dt^2 = n grad n = grad(n^2) / 2, which Sharma, Kumar
 // and Ghatak (1982, "Tracing rays through graded-index media: a new method", Applied
 // Optics 21(6)) integrate with a Runge-Kutta-Nystrom step: `sharma_step`. Its error is
-// controlled by step doubling in `AdaptiveStepper`. The lecture notes' own method,
+// controlled by step doubling in `AdaptiveStepper`. The classic textbook method,
 // "divide the air into layers and keep bending the light", is `LayeredMedium`: straight
 // segments through flat layers of constant index, refracted by Snell at each boundary.
 //
@@ -196,6 +196,7 @@ class AdaptiveStepper {
 public:
     using T = typename F::scalar_type;
 
+    /// How the stepper controls its error: the tolerance per step and the step sizes it may take.
     struct Config {
         T tolerance = T(1e-6);  ///< position error allowed per step
         T first_step = T(0.1);  ///< the first step's arc length
@@ -239,7 +240,7 @@ private:
     Config config_;
 };
 
-// The Lecture Notes' Layers
+// Flat Layers of Constant Index
 
 /// The air between y = bottom and y = top cut into `layers` flat layers, each of the
 /// field's index at its middle height; a ray goes straight within a layer and refracts

@@ -2,8 +2,8 @@
 // Fresnel reflectance: exact dielectric, Schlick's approximation, complex conductor.
 //
 // cos_i is the cosine of the incident angle (>= 0, measured on the incident side) and
-// eta = n_t / n_i. Formulas from Born & Wolf, "Principles of Optics", section 1.5, in
-// the form of the seed errata 1:
+// eta = n_t / n_i. Formulas from Born and Wolf (1999, "Principles of Optics", 7th
+// edition, section 1.5.2):
 //   R_s = ((n_i cos_i - n_t cos_t) / (n_i cos_i + n_t cos_t))^2
 //   R_p = ((n_i cos_t - n_t cos_i) / (n_i cos_t + n_t cos_i))^2
 #pragma once
@@ -65,8 +65,8 @@ template <Scalar T>
 /// Schlick's approximation (Schlick 1994, "An Inexpensive BRDF Model for Physically-based
 /// Rendering"): R0 + (1 - R0)(1 - cos)^5 with R0 = ((eta - 1)/(eta + 1))^2. The cosine
 /// must be the one on the optically less dense side: going from dense to less dense
-/// (eta < 1) that is cos_t, and the answer is 1 under total internal reflection (seed
-/// errata 3; with cos_i there the error reaches 0.9 near the critical angle).
+/// (eta < 1) that is cos_t, and the answer is 1 under total internal reflection (with
+/// cos_i there the error reaches 0.9 near the critical angle; tests/optics/fresnel.cpp).
 template <Scalar T>
 [[nodiscard]] constexpr T fresnel_schlick(T cos_i, T cos_t, T eta) noexcept
 {
@@ -90,7 +90,7 @@ template <Scalar T>
 
 /// Reflectance of a conductor with complex index eta = n + i k relative to the outside
 /// medium, unpolarised (pbrt-v4 FrComplex; Born & Wolf 14.2). Metals brighten toward
-/// grazing incidence, unlike a constant kr (seed errata 5).
+/// grazing incidence, unlike a constant kr.
 template <Scalar T>
 [[nodiscard]] inline T fresnel_conductor(T cos_i, std::complex<T> eta) noexcept
 {

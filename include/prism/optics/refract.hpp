@@ -3,7 +3,8 @@
 //
 // Conventions: d is the incident direction (travelling toward the surface), n is the
 // unit normal on the side d comes from (dot(d, n) < 0), so cos(theta_i) = -dot(d, n)
-// (seed errata 4), and eta = n_t / n_i, the index of the far side over the near side.
+// (as in Pharr, Jakob and Humphreys 2023, "Physically Based Rendering", 4th edition,
+// section 4.5), and eta = n_t / n_i, the index of the far side over the near side.
 #pragma once
 
 #include <prism/core/math.hpp>

@@ -2,8 +2,7 @@
 // Photon: what a photon map stores, and the sampling a photon tracer needs.
 //
 // Jensen, "Global Illumination using Photon Maps" (1996) and "Realistic Image Synthesis
-// Using Photon Mapping" (2001), with the seed's errata 4, 6 and 7
-// (shared/seeds/README.md): emission directions uniform on the sphere, each photon
+// Using Photon Mapping" (2001): emission directions uniform on the sphere, each photon
 // carrying the light's power divided by the photons emitted, Russian roulette that
 // scales a survivor's power per channel by reflectance over survival probability.
 #pragma once

@@ -34,6 +34,7 @@ struct PrecomputedIrradiance {
     float radius2 = 0;
 };
 
+/// Photons in KD-tree order, with radius and k-nearest radiance estimates (Jensen 2001).
 class PhotonMap {
 public:
     using Tree = KdTree<PhotonPositions, 8>;

@@ -11,8 +11,8 @@
 // one or more specular bounces (L S+ D). Every bounce is scatter_photon's (Russian
 // roulette per channel, material/scattering.hpp), and light travelling inside an object
 // is attenuated by its medium. Shadow photons mark where the straight continuation of a
-// direct photon's path meets further diffuse surfaces (Jensen and Christensen 1995;
-// errata 8). Photon i starts from point i of a scrambled Sobol sequence and draws the
+// direct photon's path meets further diffuse surfaces (Jensen and Christensen 1995,
+// "Efficiently rendering shadows using the photon map"). Photon i starts from point i of a scrambled Sobol sequence and draws the
 // rest of its path from its own random stream, so the maps are the same bits for any
 // thread count. A light without falloff (POV-Ray's `fade_power 0`) has no physical
 // power; its photons are scaled by the squared length of the path they travelled, as
@@ -47,6 +47,7 @@
 
 namespace prism {
 
+/// How many photons are traced, and how.
 struct PhotonTracerConfig {
     std::size_t global_photons = 200000;  ///< emitted for the global map
     std::size_t caustic_photons = 200000; ///< emitted toward specular objects for the caustic map
@@ -81,6 +82,7 @@ inline void validate(const PhotonTracerConfig& config)
 
 } // namespace detail
 
+/// The maps one photon tracing gives: global, caustic and shadow photons.
 struct PhotonMaps {
     PhotonMap global;
     PhotonMap caustic;

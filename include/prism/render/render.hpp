@@ -25,6 +25,7 @@
 
 namespace prism {
 
+/// What render() renders: size, samples, threads, seed, and the part of the image (crop, passes).
 struct RenderConfig {
     int width = 512;
     int height = 512;

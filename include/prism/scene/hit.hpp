@@ -8,6 +8,7 @@
 
 namespace prism {
 
+/// The surface a ray meets first: the crossing (point, normal, side) and which object it is.
 template <Scalar T>
 struct Hit {
     Crossing<T> crossing{};  ///< where, with the outward normal and whether the ray enters

@@ -90,7 +90,7 @@ public:
     LightsOfScene lights;
     Pack<Slots...> slots; ///< get<I>(slots) is slot I
     Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
-    Rgb<T> ambient{T(0)};    ///< the notes' ambient term, added where every light is occluded
+    Rgb<T> ambient{T(0)};    ///< the ambient term of Whitted (1980), added where every light is occluded
 
     constexpr Scene(LightsOfScene light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
     {
@@ -161,7 +161,7 @@ public:
     /// Fraction of light passing along the ray from t = 0 to t_max: 0 when an opaque
     /// object is in the way, otherwise what every dielectric crossed lets through
     /// (attenuate_shadow_ray: its medium over the length inside, its tint per boundary;
-    /// refraction ignored, the lecture notes' shadow rays through transparent objects).
+    /// refraction ignored, the classic Whitted shadow rays through transparent objects).
     /// With ShadowsThroughGlass::blocked dielectrics block the ray like any other
     /// object: a photon mapper brings the light through them by its caustic map instead
     /// (as POV-Ray does for photon targets).

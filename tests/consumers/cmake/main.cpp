@@ -4,6 +4,14 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string_view>
+
+// The version the package manager found (find_package's prism_VERSION, pkg-config's
+// --modversion) is the one in the header.
+#ifdef PRISM_EXPECTED_VERSION
+static_assert(std::string_view(PRISM_VERSION_STRING) == PRISM_EXPECTED_VERSION);
+#endif
+static_assert(PRISM_VERSION == PRISM_VERSION_MAJOR * 10000 + PRISM_VERSION_MINOR * 100 + PRISM_VERSION_PATCH);
 
 int main()
 {
