@@ -5,8 +5,11 @@
 /// `find_package(prism 0.1 CONFIG)` and `pkg-config --modversion prism` report it.
 #pragma once
 
+/// The major version: a change of it may break a program that compiled.
 #define PRISM_VERSION_MAJOR 0
+/// The minor version: new capabilities (before 1.0, the API may change with it).
 #define PRISM_VERSION_MINOR 1
+/// The patch version: fixes only.
 #define PRISM_VERSION_PATCH 0
 
 /// The version as one number that orders releases: major · 10000 + minor · 100 + patch.

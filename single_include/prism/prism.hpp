@@ -21,8 +21,11 @@
 /// and CHANGELOG.md are checked against them (tools/check_version.py, a test), and
 /// `find_package(prism 0.1 CONFIG)` and `pkg-config --modversion prism` report it.
 
+/// The major version: a change of it may break a program that compiled.
 #define PRISM_VERSION_MAJOR 0
+/// The minor version: new capabilities (before 1.0, the API may change with it).
 #define PRISM_VERSION_MINOR 1
+/// The patch version: fixes only.
 #define PRISM_VERSION_PATCH 0
 
 /// The version as one number that orders releases: major · 10000 + minor · 100 + patch.
@@ -281,14 +284,16 @@ namespace prism {
 /// A closed range of reals; empty when min > max.
 template <Scalar T>
 struct Interval {
-    T min = infinity<T>;
-    T max = -infinity<T>;
+    T min = infinity<T>; ///< the lower end
+    T max = -infinity<T>; ///< the upper end
 
+    /// Whether the interval holds no value (min > max, or NaN).
     [[nodiscard]] constexpr bool empty() const noexcept { return !(min <= max); }
     /// min <= x <= max.
     [[nodiscard]] constexpr bool contains(T x) const noexcept { return min <= x && x <= max; }
     /// min < x < max.
     [[nodiscard]] constexpr bool surrounds(T x) const noexcept { return min < x && x < max; }
+    /// max - min.
     [[nodiscard]] constexpr T size() const noexcept { return max - min; }
 
     /// Every real number.
@@ -306,8 +311,8 @@ namespace prism {
 /// A ray. The direction need not be unit length: t is measured in multiples of it.
 template <Scalar T>
 struct Ray {
-    Vec3<T> origin{};
-    Vec3<T> direction{T(0), T(0), T(-1)};
+    Vec3<T> origin{}; ///< where the ray starts
+    Vec3<T> direction{T(0), T(0), T(-1)}; ///< where it goes, of any non-zero length: t counts multiples of it
 
     /// The point origin + t * direction.
     [[nodiscard]] constexpr Vec3<T> at(T t) const noexcept { return origin + t * direction; }
@@ -412,16 +417,17 @@ namespace prism {
 /// where parallel light's photons start from.
 template <Scalar T>
 struct BoundingSphere {
-    Vec3<T> center{};
-    T radius = T(0);
+    Vec3<T> center{}; ///< the sphere's centre
+    T radius = T(0); ///< its radius
 };
 
 /// Axis-aligned box [lo, hi]; empty when lo > hi on any axis (the default).
 template <Scalar T>
 struct Aabb {
-    Vec3<T> lo{infinity<T>};
-    Vec3<T> hi{-infinity<T>};
+    Vec3<T> lo{infinity<T>}; ///< the least corner
+    Vec3<T> hi{-infinity<T>}; ///< the greatest corner
 
+    /// Whether the box holds no point (lo > hi on some axis, or NaN).
     [[nodiscard]] constexpr bool empty() const noexcept { return !(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z); }
 
     /// Every point: the bounds of an unbounded shape such as a half-space.
@@ -433,6 +439,7 @@ struct Aabb {
         return {component_min(lo, other.lo), component_max(hi, other.hi)};
     }
 
+    /// Whether p is in the box, faces included.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
     {
         return lo.x <= p.x && p.x <= hi.x && lo.y <= p.y && p.y <= hi.y && lo.z <= p.z && p.z <= hi.z;
@@ -548,11 +555,13 @@ inline constexpr int default_bvh_width =
 template <Scalar T, int Width = detail::default_bvh_width<T>>
 struct alignas(64) BvhNode {
     static_assert(Width == 4 || Width == 8, "a BvhNode has 4 or 8 children");
+    /// Children per node.
     static constexpr int width = Width;
     std::array<std::array<T, width>, 6> bounds = empty_bounds(); ///< every lane unused until set
     std::array<std::uint32_t, width> first{}; ///< child node, or a leaf's first primitive
     std::array<std::uint32_t, width> count{}; ///< a leaf's primitives; 0 for a node (or unused)
 
+    /// Every lane's box empty (lo +inf, hi -inf): the bounds of a fresh node.
     [[nodiscard]] static constexpr std::array<std::array<T, width>, 6> empty_bounds() noexcept
     {
         std::array<std::array<T, width>, 6> b{};
@@ -560,13 +569,17 @@ struct alignas(64) BvhNode {
         return b;
     }
 
+    /// Whether child `lane` is a leaf.
     [[nodiscard]] constexpr bool leaf(int lane) const noexcept { return count[std::size_t(lane)] != 0; }
+    /// Whether child `lane` is in use (its box is not empty).
     [[nodiscard]] constexpr bool used(int lane) const noexcept { return bounds[0][std::size_t(lane)] <= bounds[3][std::size_t(lane)]; }
+    /// Child `lane`'s box.
     [[nodiscard]] constexpr Aabb<T> box(int lane) const noexcept
     {
         const auto c = std::size_t(lane);
         return {{bounds[0][c], bounds[1][c], bounds[2][c]}, {bounds[3][c], bounds[4][c], bounds[5][c]}};
     }
+    /// Make child `lane` the box `box` over a node (count_ 0, first_ its index) or a leaf (count_ primitives from first_).
     constexpr void set(int lane, const Aabb<T>& box, std::uint32_t first_, std::uint32_t count_) noexcept
     {
         const auto c = std::size_t(lane);
@@ -756,7 +769,9 @@ namespace prism {
 /// that says what was asked for and how much memory it needs.
 class allocation_error : public std::bad_alloc {
 public:
+    /// An error that says what was asked for and how much memory it needed.
     explicit allocation_error(std::string message) : message_(std::move(message)) {}
+    /// The message given at construction.
     [[nodiscard]] const char* what() const noexcept override { return message_.c_str(); }
 
 private:
@@ -982,7 +997,7 @@ struct BvhConfig {
     int bins = 16;                       ///< SAH bins per axis (2 to 256), for BvhSplit::binned
     float traversal_cost = 1;            ///< C_trav, relative to one leaf test of leaf_block primitives
     int leaf_block = 1;                  ///< primitives a leaf tests at once (TriangleMesh: 4): n cost ceil(n / leaf_block) tests, and each leaf starts a block in leaf order
-    BvhSplit split = BvhSplit::binned;
+    BvhSplit split = BvhSplit::binned; ///< how splits are searched: binned SAH, or every split between neighbours (sweep)
     unsigned threads = 0;                ///< build threads (0: every hardware thread); the tree is the same for any number
 };
 
@@ -1419,10 +1434,13 @@ namespace prism {
 template <Scalar T, int Width = detail::default_bvh_width<T>>
 class Bvh {
 public:
+    /// The precision of the boxes.
     using scalar_type = T;
+    /// The tree's node type.
     using Node = BvhNode<T, Width>;
     /// The binary tree's depth bound; the wide tree is no deeper.
     static constexpr int max_depth = 48 + 32;
+    /// Children per node: 4, or 8 for float where the compiler targets AVX.
     static constexpr int width = Width;
 
     constexpr Bvh() = default;
@@ -1684,12 +1702,16 @@ concept PointSet = requires(const P& points, std::size_t i, std::size_t axis) {
 /// Points kept by the caller in a contiguous array of std::array<T, Dim>.
 template <Scalar T, std::size_t Dim>
 struct ArrayPoints {
+    /// The coordinates' type.
     using scalar_type = T;
+    /// The number of coordinates a point has.
     static constexpr std::size_t dimension = Dim;
 
-    std::span<const std::array<T, Dim>> points;
+    std::span<const std::array<T, Dim>> points; ///< the points, which the caller keeps alive
 
+    /// The number of points.
     [[nodiscard]] constexpr std::size_t size() const noexcept { return points.size(); }
+    /// Coordinate `axis` of point i.
     [[nodiscard]] constexpr T coordinate(std::size_t i, std::size_t axis) const noexcept { return points[i][axis]; }
 };
 
@@ -1697,14 +1719,15 @@ struct ArrayPoints {
 /// Trivially default-constructible, so a search's buffer costs nothing to set up.
 template <Scalar T>
 struct Neighbour {
-    T distance2;
-    std::uint32_t index;
+    T distance2; ///< the squared distance from the query
+    std::uint32_t index; ///< the point's index in the point set
 
     /// Nearer first; at equal distance, the lower index first.
     friend constexpr bool operator<(const Neighbour& a, const Neighbour& b) noexcept
     {
         return a.distance2 < b.distance2 || (a.distance2 == b.distance2 && a.index < b.index);
     }
+    /// Neighbours are equal when distance and index are.
     friend constexpr bool operator==(const Neighbour&, const Neighbour&) = default;
 };
 
@@ -1750,7 +1773,9 @@ public:
     [[nodiscard]] constexpr std::size_t size() const noexcept { return count_; }
     /// Whether k are kept: then the k-th nearest is farthest().
     [[nodiscard]] constexpr bool full() const noexcept { return count_ == k_; }
+    /// The first neighbour kept (in heap order, not sorted).
     [[nodiscard]] constexpr const Neighbour<T>* begin() const noexcept { return heap_; }
+    /// One past the last neighbour kept.
     [[nodiscard]] constexpr const Neighbour<T>* end() const noexcept { return heap_ + count_; }
     /// The farthest found (the heap's top); only when size() > 0.
     [[nodiscard]] constexpr const Neighbour<T>& farthest() const noexcept { return heap_[0]; }
@@ -1786,6 +1811,7 @@ private:
 template <Scalar T, class Visitor>
 class WithinRadius {
 public:
+    /// A search for every point within sqrt(radius2), each handed to `visit`, which must outlive the search.
     constexpr WithinRadius(T radius2, Visitor& visit) noexcept : radius2_(radius2), visit_(&visit) {}
 
     /// The radius squared, fixed.
@@ -1801,12 +1827,16 @@ private:
 /// The k nearest neighbours found, nearest first (fewer when the set is smaller).
 template <Scalar T, std::size_t K>
 struct NearestNeighbours {
-    std::array<Neighbour<T>, K> items;
-    std::size_t count = 0;
+    std::array<Neighbour<T>, K> items; ///< the neighbours, nearest first; the first `count` are valid
+    std::size_t count = 0; ///< how many were found
 
+    /// How many were found.
     [[nodiscard]] constexpr std::size_t size() const noexcept { return count; }
+    /// The i-th nearest.
     [[nodiscard]] constexpr const Neighbour<T>& operator[](std::size_t i) const noexcept { return items[i]; }
+    /// The nearest.
     [[nodiscard]] constexpr const Neighbour<T>* begin() const noexcept { return items.data(); }
+    /// One past the farthest found.
     [[nodiscard]] constexpr const Neighbour<T>* end() const noexcept { return items.data() + count; }
 };
 
@@ -1817,10 +1847,15 @@ class KdTree {
     static_assert(LeafSize >= 1, "a leaf holds at least one point");
 
 public:
+    /// The coordinates' type.
     using scalar_type = typename Points::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
+    /// The number of coordinates a point has.
     static constexpr std::size_t dimension = Points::dimension;
+    /// The most points a leaf holds.
     static constexpr std::size_t leaf_size = LeafSize;
+    /// A point, copied into tree order.
     using Point = std::array<T, dimension>;
 
     // KdTree Public Methods
@@ -1863,6 +1898,7 @@ public:
         points_ = std::move(ordered);
     }
 
+    /// The number of points.
     [[nodiscard]] constexpr std::size_t size() const noexcept { return points_.size(); }
 
     /// The point set's index of each point in tree order: a leaf's points are
@@ -2061,6 +2097,7 @@ class Pcg32 {
 public:
     constexpr Pcg32() noexcept : Pcg32(0x853c49e6748fea9bULL, 0xda3e39cb94b95bdbULL) {}
 
+    /// A generator at `seed` on stream `stream`: each pair gives its own sequence.
     constexpr Pcg32(std::uint64_t seed, std::uint64_t stream) noexcept : inc_((stream << 1u) | 1u)
     {
         next_u32();
@@ -2258,6 +2295,7 @@ public:
         abs_inverse_ = absolute(inverse_);
     }
 
+    /// Translation by `offset`.
     [[nodiscard]] static Transform translate(const Vec3<T>& offset)
     {
         detail::require_finite("Transform translate", offset);
@@ -2279,8 +2317,11 @@ public:
         detail::require_nonzero("Transform rotate axis", axis);
         return Transform(glm::rotate(Mat4<T>(T(1)), degrees * pi<T> / T(180), normalize(axis)));
     }
+    /// Rotation by `degrees` about x.
     [[nodiscard]] static Transform rotate_x(T degrees) { return rotate(degrees, {T(1), T(0), T(0)}); }
+    /// Rotation by `degrees` about y.
     [[nodiscard]] static Transform rotate_y(T degrees) { return rotate(degrees, {T(0), T(1), T(0)}); }
+    /// Rotation by `degrees` about z.
     [[nodiscard]] static Transform rotate_z(T degrees) { return rotate(degrees, {T(0), T(0), T(1)}); }
 
     /// This transform followed by `next`. Throws std::invalid_argument when the product
@@ -2295,14 +2336,21 @@ public:
         return Transform(product);
     }
 
+    /// The inverse transform.
     [[nodiscard]] Transform inverse() const { return Transform(inverse_, m_); }
 
+    /// The 4x4 matrix, acting on column vectors.
     [[nodiscard]] const Mat4<T>& matrix() const noexcept { return m_; }
+    /// The inverse's matrix.
     [[nodiscard]] const Mat4<T>& inverse_matrix() const noexcept { return inverse_; }
 
+    /// p transformed as a point.
     [[nodiscard]] Vec3<T> point(const Vec3<T>& p) const noexcept { return affine_point(m_, p); }
+    /// v transformed as a direction (no translation).
     [[nodiscard]] Vec3<T> vector(const Vec3<T>& v) const noexcept { return affine_vector(m_, v); }
+    /// p carried back by the inverse.
     [[nodiscard]] Vec3<T> inverse_point(const Vec3<T>& p) const noexcept { return affine_point(inverse_, p); }
+    /// v carried back by the inverse (no translation).
     [[nodiscard]] Vec3<T> inverse_vector(const Vec3<T>& v) const noexcept { return affine_vector(inverse_, v); }
     /// A surface normal maps by the inverse transpose (unnormalised).
     [[nodiscard]] Vec3<T> normal(const Vec3<T>& n) const noexcept
@@ -2478,10 +2526,11 @@ struct Crossing {
 /// The sorted boundary crossings of a ray within a range, at most N of them.
 template <Scalar T, std::size_t N>
 struct Crossings {
+    /// The most crossings the list can hold.
     static constexpr std::size_t capacity = N;
 
     std::array<Crossing<T>, N> items; ///< the first `count` are set; the rest are unwritten (zeros in a constant expression)
-    std::size_t count = 0;
+    std::size_t count = 0; ///< how many crossings are set
     bool inside_at_start = false; ///< the ray is inside the solid at the start of the range
 
     constexpr Crossings() noexcept
@@ -2491,11 +2540,17 @@ struct Crossings {
         if (std::is_constant_evaluated()) items = {};
     }
 
+    /// The number of crossings.
     [[nodiscard]] constexpr std::size_t size() const noexcept { return count; }
+    /// Whether the ray crosses no boundary in the range.
     [[nodiscard]] constexpr bool empty() const noexcept { return count == 0; }
+    /// The i-th crossing, nearest first.
     [[nodiscard]] constexpr const Crossing<T>& operator[](std::size_t i) const noexcept { return items[i]; }
+    /// The nearest crossing; only when not empty().
     [[nodiscard]] constexpr const Crossing<T>& front() const noexcept { return items[0]; }
+    /// The nearest crossing.
     [[nodiscard]] constexpr const Crossing<T>* begin() const noexcept { return items.data(); }
+    /// One past the farthest crossing.
     [[nodiscard]] constexpr const Crossing<T>* end() const noexcept { return items.data() + count; }
 
     /// Append a crossing at or after the last one.
@@ -2589,10 +2644,10 @@ template <Shape S>
 /// and barycentric weights at which its ray met it (in the shape's own frame).
 template <Scalar T>
 struct SurfaceHint {
-    std::uint32_t index = 0;
-    T t = 0;
+    std::uint32_t index = 0; ///< the triangle found (a mesh's leaf-order index)
+    T t = 0; ///< where along the ray
     std::array<T, 3> b{}; ///< all zero: nothing found, search again
-    bool entering = false;
+    bool entering = false; ///< whether the ray enters the solid there
 };
 
 /// A shape whose lean query names what it found (a mesh: the triangle, where it was
@@ -2668,13 +2723,18 @@ template <CsgOperation Op, Shape A, Shape B>
     requires std::same_as<typename A::scalar_type, typename B::scalar_type>
 class CsgNode {
 public:
+    /// The children's precision.
     using scalar_type = typename A::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
+    /// The CSG operation (UnionOp, IntersectionOp, DifferenceOp).
     using operation = Op;
+    /// The most crossings: the children's together.
     static constexpr std::size_t max_crossings = A::max_crossings + B::max_crossings;
 
     // CsgNode Public Methods
 
+    /// The node Op(a, b); its box is Op's of the children's boxes.
     constexpr CsgNode(A a, B b) : a_(std::move(a)), b_(std::move(b)), bounds_(Op::bounds(a_.bounds(), b_.bounds()))
     {
         bounded_ = bounds_.bounded();
@@ -2687,12 +2747,17 @@ public:
     {
     }
 
+    /// The first child.
     [[nodiscard]] constexpr const A& first() const noexcept { return a_; }
+    /// The second child.
     [[nodiscard]] constexpr const B& second() const noexcept { return b_; }
+    /// The box around the result (conservative: Op of the children's boxes).
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
 
+    /// Whether p is inside: Op of whether it is inside each child.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return Op::combine(a_.contains(p), b_.contains(p)); }
 
+    /// Every crossing of `ray` within `range`, sorted: the children's crossings merged, each kept where it changes whether the ray is inside the result (Roth 1982).
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
@@ -2773,8 +2838,11 @@ namespace prism {
 
 /// The CSG operation A ∪ B: inside either.
 struct UnionOp {
+    /// The second solid's surface bounds the result from the same side as the first's.
     static constexpr bool flips_second = false;
+    /// Inside the union: inside either.
     [[nodiscard]] static constexpr bool combine(bool a, bool b) noexcept { return a || b; }
+    /// The union lies within the box around both boxes.
     template <Scalar T>
     [[nodiscard]] static constexpr Aabb<T> bounds(const Aabb<T>& a, const Aabb<T>& b) noexcept { return detail::aabb_union(a, b); }
 };
@@ -2802,7 +2870,9 @@ namespace prism {
 struct DifferenceOp {
     /// The subtracted solid's surface bounds the result from the other side.
     static constexpr bool flips_second = true;
+    /// Inside the difference: inside a and not inside b.
     [[nodiscard]] static constexpr bool combine(bool a, bool b) noexcept { return a && !b; }
+    /// The difference lies within a's box.
     template <Scalar T>
     [[nodiscard]] static constexpr Aabb<T> bounds(const Aabb<T>& a, const Aabb<T>&) noexcept { return a; }
 };
@@ -2829,8 +2899,11 @@ namespace prism {
 
 /// The CSG operation A ∩ B: inside both.
 struct IntersectionOp {
+    /// The second solid's surface bounds the result from the same side as the first's.
     static constexpr bool flips_second = false;
+    /// Inside the intersection: inside both.
     [[nodiscard]] static constexpr bool combine(bool a, bool b) noexcept { return a && b; }
+    /// The intersection lies within both boxes' overlap.
     template <Scalar T>
     [[nodiscard]] static constexpr Aabb<T> bounds(const Aabb<T>& a, const Aabb<T>& b) noexcept { return detail::aabb_intersection(a, b); }
 };
@@ -2859,7 +2932,9 @@ namespace prism {
 template <Scalar T = float>
 class Box {
 public:
+    /// The precision of the corners and the crossings.
     using scalar_type = T;
+    /// At most two crossings: in and out.
     static constexpr std::size_t max_crossings = 2;
 
     // Box Public Methods
@@ -2879,15 +2954,20 @@ public:
         }
     }
 
+    /// The least corner.
     [[nodiscard]] constexpr const Vec3<T>& lo() const noexcept { return lo_; }
+    /// The greatest corner.
     [[nodiscard]] constexpr const Vec3<T>& hi() const noexcept { return hi_; }
+    /// The box itself, as an Aabb.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return {lo_, hi_}; }
 
+    /// Whether p is strictly inside (the faces are the surface).
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
     {
         return lo_.x < p.x && p.x < hi_.x && lo_.y < p.y && p.y < hi_.y && lo_.z < p.z && p.z < hi_.z;
     }
 
+    /// Every crossing of `ray` within `range` (at most two), sorted, by the slab test, with each hit point snapped onto its face.
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
@@ -3245,8 +3325,8 @@ using TriangleIndices = std::array<std::uint32_t, 3>;
 /// normal and surface coordinates per position: what a TriangleMesh is built from.
 template <Scalar T>
 struct MeshBuffers {
-    std::vector<Vec3<T>> positions;
-    std::vector<TriangleIndices> triangles;
+    std::vector<Vec3<T>> positions; ///< the vertices
+    std::vector<TriangleIndices> triangles; ///< three indices into positions per triangle
     std::vector<Vec3<T>> normals; ///< per position, pointing out, or empty (shade flat)
     std::vector<Vec2<T>> uvs;     ///< per position, or empty (uv (0, 0))
 };
@@ -3265,14 +3345,16 @@ struct MeshData {
 
 } // namespace detail
 
-/// A mesh of triangles with its own Bvh (N triangles a leaf at most): a closed solid or an open
+/// A mesh of triangles with its own Bvh, reporting the nearest N crossings: a closed solid or an open
 /// surface. Copies share the mesh, so Transformed copies are instances.
 template <Scalar T = float, std::size_t N = 8>
 class TriangleMesh {
     static_assert(N >= 2 && N <= 64, "a TriangleMesh reports 2 to 64 crossings");
 
 public:
+    /// The precision of the vertices and the crossings.
     using scalar_type = T;
+    /// The most crossings a query reports: the nearest N (a CSG node or a shadow ray through glass sees only those).
     static constexpr std::size_t max_crossings = N;
 
     /// The Bvh settings a mesh is built with unless given others: its leaves are tested
@@ -3344,6 +3426,7 @@ public:
         data_ = std::move(data);
     }
 
+    /// The mesh of `positions` and `triangles`, without normals or uvs; throws as the span constructor does.
     TriangleMesh(const std::vector<Vec3<T>>& positions, const std::vector<TriangleIndices>& triangles, BvhConfig config = bvh_config())
         : TriangleMesh(std::span<const Vec3<T>>(positions), std::span<const TriangleIndices>(triangles), config)
     {
@@ -3356,11 +3439,17 @@ public:
     {
     }
 
+    /// Whether every directed edge is matched by its reverse once (a closed solid with an inside), found at construction.
     [[nodiscard]] bool closed() const noexcept { return data_->closed; }
+    /// Whether the mesh has vertex normals (smooth shading).
     [[nodiscard]] bool has_normals() const noexcept { return !data_->normals.empty(); }
+    /// Whether the mesh has surface coordinates.
     [[nodiscard]] bool has_uvs() const noexcept { return !data_->uvs.empty(); }
+    /// The number of triangles.
     [[nodiscard]] std::size_t triangle_count() const noexcept { return data_->bvh.size(); }
+    /// The mesh's own Bvh over its triangles.
     [[nodiscard]] const Bvh<T>& bvh() const noexcept { return data_->bvh; }
+    /// The box around every vertex.
     [[nodiscard]] Aabb<T> bounds() const noexcept { return data_->bounds; }
     /// Bytes held by the shared data (corner blocks, normals, uvs, Bvh), for every
     /// copy together.
@@ -3431,6 +3520,7 @@ public:
         });
     }
 
+    /// Every crossing of `ray` within `range` (at most N), sorted, by the watertight ray-triangle test.
     template <bool Surface = true>
     [[nodiscard]] Crossings<T, N> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
@@ -3795,7 +3885,9 @@ namespace prism {
 template <Scalar T = float>
 class Plane {
 public:
+    /// The precision of the plane and the crossings.
     using scalar_type = T;
+    /// At most one crossing.
     static constexpr std::size_t max_crossings = 1;
 
     // Plane Public Methods
@@ -3826,12 +3918,17 @@ public:
         return Plane(n, dot(n, point));
     }
 
+    /// The outward unit normal.
     [[nodiscard]] constexpr const Vec3<T>& normal() const noexcept { return normal_; }
+    /// The solid is dot(normal(), p) < offset().
     [[nodiscard]] constexpr T offset() const noexcept { return offset_; }
+    /// Unbounded: every point.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return Aabb<T>::universe(); }
 
+    /// Whether p is inside: dot(normal, p) < offset.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return dot(normal_, p) < offset_; }
 
+    /// The crossing of `ray` within `range`, if it meets the plane there, with its point refined onto the plane.
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 1> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
@@ -3903,12 +4000,23 @@ namespace prism {
 template <Scalar T = float>
 class Quadric {
 public:
+    /// The precision of the coefficients and the crossings.
     using scalar_type = T;
+    /// At most two crossings: the equation along a ray is of degree 2.
     static constexpr std::size_t max_crossings = 2;
 
     /// The ten coefficients of the form above (note the factors of 2 on mixed and linear terms).
     struct Coefficients {
-        T a = 0, b = 0, c = 0, d = 0, e = 0, f = 0, g = 0, h = 0, i = 0, j = 0;
+        T a = 0; ///< the a of a x^2
+        T b = 0; ///< the b of 2b xy
+        T c = 0; ///< the c of 2c xz
+        T d = 0; ///< the d of 2d x
+        T e = 0; ///< the e of e y^2
+        T f = 0; ///< the f of 2f yz
+        T g = 0; ///< the g of 2g y
+        T h = 0; ///< the h of h z^2
+        T i = 0; ///< the i of 2i z
+        T j = 0; ///< the constant term
     };
 
     // Quadric Public Methods
@@ -4046,6 +4154,7 @@ public:
     /// The coefficients as given, relative to origin(). (Crossings are computed from a
     /// copy scaled by a power of two so that the largest is in [1, 2): the same surface.)
     [[nodiscard]] constexpr const Coefficients& coefficients() const noexcept { return given_; }
+    /// The point the coefficients are relative to (their own origin, for precision far from the world's).
     [[nodiscard]] constexpr const Vec3<T>& origin() const noexcept { return origin_; }
 
     /// Q in world coordinates (computed in T, so rounded for a far-away origin).
@@ -4068,11 +4177,13 @@ public:
         return T(2) * (times_q3(given_, p - origin_) + Vec3<T>(given_.d, given_.g, given_.i));
     }
 
+    /// Whether p is inside: F(p) < 0.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return evaluate_local(p - origin_) < T(0); }
 
     /// An ellipsoid's box; Aabb::universe() for unbounded quadrics.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
 
+    /// Every crossing of `ray` within `range`, sorted, each entering or leaving by the sign of the gradient along the ray.
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
@@ -4316,7 +4427,9 @@ namespace prism {
 template <Scalar T = float>
 class Sphere {
 public:
+    /// The precision of the sphere and the crossings.
     using scalar_type = T;
+    /// At most two crossings: in and out.
     static constexpr std::size_t max_crossings = 2;
 
     // Sphere Public Methods
@@ -4330,7 +4443,9 @@ public:
         detail::require_length("Sphere radius", radius);
     }
 
+    /// The centre.
     [[nodiscard]] constexpr const Vec3<T>& center() const noexcept { return center_; }
+    /// The radius.
     [[nodiscard]] constexpr T radius() const noexcept { return radius_; }
 
     /// Its own sphere, the radius grown by 16 epsilon for rounding: tighter than the
@@ -4340,16 +4455,19 @@ public:
         return {center_, radius_ * (T(1) + T(16) * std::numeric_limits<T>::epsilon())};
     }
 
+    /// The box around the sphere, rounded outward.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept
     {
         return Aabb<T>{center_ - Vec3<T>(radius_), center_ + Vec3<T>(radius_)}.rounded_out();
     }
 
+    /// Whether p is strictly inside.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
     {
         return length_squared(p - center_) < radius_ * radius_;
     }
 
+    /// Every crossing of `ray` within `range` (at most two), sorted, the roots taken from the ray's closest approach to the centre (Haines et al. 2019, "Precision improvements for ray/sphere intersection").
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
@@ -4375,6 +4493,7 @@ public:
         return range.surrounds(r.t0) ? r.t0 : (range.surrounds(r.t1) ? r.t1 : infinity<T>);
     }
 
+    /// Whether the ray crosses the sphere within `range` (a shadow ray's query).
     [[nodiscard]] constexpr bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         return first_crossing(ray, range) < infinity<T>;
@@ -4464,26 +4583,35 @@ namespace prism {
 template <Shape S>
 class Transformed {
 public:
+    /// The shape's precision.
     using scalar_type = typename S::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
+    /// As many crossings as the shape has.
     static constexpr std::size_t max_crossings = S::max_crossings;
 
     // Transformed Public Methods
 
+    /// `shape` moved into the world by `to_world`.
     Transformed(S shape, const Transform<T>& to_world) : shape_(std::move(shape)), to_world_(to_world), bounds_(world_bounds())
     {
         bounded_ = bounds_.bounded();
     }
 
+    /// The shape, in its own frame.
     [[nodiscard]] const S& shape() const noexcept { return shape_; }
+    /// The transform from the shape's frame to the world.
     [[nodiscard]] const Transform<T>& transform() const noexcept { return to_world_; }
+    /// The world box around the shape's transformed box, rounded outward.
     [[nodiscard]] Aabb<T> bounds() const noexcept { return bounds_; }
 
+    /// Whether world point p is inside the shape.
     [[nodiscard]] bool contains(const Vec3<T>& p) const noexcept
     {
         return shape_.contains(to_world_.inverse_point(p));
     }
 
+    /// Every crossing of the world `ray` within `range`: the shape's, in the shape's frame, carried back with normals by the inverse transpose and error bounds through the matrix.
     template <bool Surface = true>
     [[nodiscard]] Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
@@ -4513,6 +4641,7 @@ public:
         return first_crossing_with(ray, range, unused);
     }
 
+    /// Whether the ray crosses the shape within `range` (a shadow ray's query).
     [[nodiscard]] bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         return first_crossing(ray, range) < infinity<T>;
@@ -4648,7 +4777,7 @@ namespace prism {
 /// What a gather over the hemisphere found.
 template <Scalar T>
 struct HemisphereGather {
-    Rgb<T> irradiance{T(0)};
+    Rgb<T> irradiance{T(0)}; ///< the irradiance E, per channel
     std::array<Rgb<T>, 3> rotational{};    ///< d E / d (rotation about axis a): per axis a, per channel
     std::array<Rgb<T>, 3> translational{}; ///< d E / d x_a: per axis a, per channel
     T nearest = infinity<T>;               ///< the nearest hit of rays at least 10 degrees above the tangent plane
@@ -4728,18 +4857,23 @@ template <bool Gradients, Scalar T, class Sample>
 /// One cached gather.
 template <Scalar T>
 struct IrradianceRecord {
-    Vec3<T> p{}, n{};
-    HemisphereGather<T> gather{};
+    Vec3<T> p{}; ///< where the gather was taken
+    Vec3<T> n{}; ///< the surface's normal there
+    HemisphereGather<T> gather{}; ///< the gather: E and its gradients
     T radius = T(0); ///< R: how far E may be carried
 };
 
 /// The positions of a cache's records, as a PointSet for the KdTree.
 template <Scalar T>
 struct RecordPositions {
+    /// The coordinates' type.
     using scalar_type = T;
+    /// Positions in 3-D.
     static constexpr std::size_t dimension = 3;
-    std::span<const IrradianceRecord<T>> records;
+    std::span<const IrradianceRecord<T>> records; ///< the cache's records
+    /// The number of records.
     [[nodiscard]] std::size_t size() const noexcept { return records.size(); }
+    /// Coordinate `axis` of record i's position.
     [[nodiscard]] T coordinate(std::size_t i, std::size_t axis) const noexcept { return records[i].p[int(axis)]; }
 };
 
@@ -4752,9 +4886,12 @@ public:
     static constexpr T normal_scale = T(0.1321); // sqrt(1 - 0.98481)
 
     IrradianceCache() = default;
+    /// An empty cache whose records reach R / accuracy (kappa), with or without gradients.
     explicit IrradianceCache(T accuracy, bool gradients = true) : accuracy_(accuracy), gradients_(gradients) {}
 
+    /// The number of records.
     [[nodiscard]] std::size_t size() const noexcept { return records_.size(); }
+    /// The records, in the order they were added.
     [[nodiscard]] const std::vector<IrradianceRecord<T>>& records() const noexcept { return records_; }
 
     /// Add records (in the order given: the cache is then the same for any thread count
@@ -4877,8 +5014,8 @@ struct LightSample {
 /// none): a light from infinitely far away starts its photons just outside it.
 template <Scalar T>
 struct PhotonAim {
-    const BoundingSphere<T>* target = nullptr;
-    const BoundingSphere<T>* scene = nullptr;
+    const BoundingSphere<T>* target = nullptr; ///< a specular object's bounding sphere to aim at, or null: everywhere
+    const BoundingSphere<T>* scene = nullptr; ///< the sphere around every bounded object, or null
 };
 
 /// One photon leaving a light: its ray, a weight on the power the tracer gives it (1
@@ -4887,9 +5024,9 @@ struct PhotonAim {
 /// the path it travelled when it is stored, as POV-Ray does for `fade_power 0`).
 template <Scalar T>
 struct EmittedPhoton {
-    Ray<T> ray;
-    Rgb<T> weight{T(1)};
-    bool without_falloff = false;
+    Ray<T> ray; ///< where the photon starts and where it goes
+    Rgb<T> weight{T(1)}; ///< the weight on the power the tracer gives it
+    bool without_falloff = false; ///< whether the light does not fall off with distance
 };
 
 /// A light: `sample(p)`, what arrives at a shading point; `photon_power(aim)`, the power
@@ -4996,11 +5133,11 @@ concept DiffuseLobe = requires(const M& material, const Vec3<typename M::scalar_
 /// textured thickness) or with the side (a coating on the outside) take this whole.
 template <Scalar T>
 struct SpecularQuery {
-    T cos_i;
-    T cos_t;
-    T eta;
-    bool entering;
-    Vec3<T> point;
+    T cos_i; ///< cosine of the incident angle, >= 0
+    T cos_t; ///< cosine of the refracted angle (0 where nothing refracts)
+    T eta; ///< n_t / n_i
+    bool entering; ///< the light arrives from outside
+    Vec3<T> point; ///< where on the surface
 };
 
 /// A mirror that is not an interface (a conductor): its reflectance per channel for
@@ -5108,8 +5245,8 @@ template <Scalar T>
 /// A refracted direction and the cosine of its angle with the normal (on the far side).
 template <Scalar T>
 struct Refraction {
-    Vec3<T> direction;
-    T cos_t;
+    Vec3<T> direction; ///< unit refracted direction
+    T cos_t; ///< cosine between it and the normal, on the far side
 };
 
 /// Snell refraction of the unit direction d through a surface with unit normal n
@@ -5383,18 +5520,20 @@ namespace prism {
 /// white, signed (for camera rays) and clipped to be non-negative (for photons).
 template <Scalar T>
 struct WavelengthBand {
-    T wavelength_nm;
-    Rgb<T> weight;
-    Rgb<T> photon_weight;
+    T wavelength_nm; ///< the band's wavelength in nanometres
+    Rgb<T> weight; ///< its share of white for camera rays (signed)
+    Rgb<T> photon_weight; ///< its share of white for photons (non-negative)
 };
 
 /// White light cut into `count` bands (1 to max_count).
 template <Scalar T>
 class SpectralBands {
 public:
+    /// The CIE table's entry at 380 nm.
     static constexpr int first_sample = (380 - cie::tables::first_nm) / cie::tables::step_nm;
     static constexpr int max_count = 81; ///< one band per 5 nm sample, 380-780 nm
 
+    /// White cut into `count` bands; throws std::invalid_argument for count outside [1, max_count].
     constexpr explicit SpectralBands(int count) : count_(count)
     {
         if (count < 1 || count > max_count) detail::throw_invalid("dispersion_bands must be in [1, ", max_count, "], got ", count);
@@ -5428,9 +5567,13 @@ public:
         }
     }
 
+    /// The number of bands.
     [[nodiscard]] constexpr int size() const noexcept { return count_; }
+    /// Band i.
     [[nodiscard]] constexpr const WavelengthBand<T>& operator[](int i) const noexcept { return bands_[std::size_t(i)]; }
+    /// The first band.
     [[nodiscard]] constexpr const WavelengthBand<T>* begin() const noexcept { return bands_.data(); }
+    /// One past the last band.
     [[nodiscard]] constexpr const WavelengthBand<T>* end() const noexcept { return bands_.data() + count_; }
 
 private:
@@ -5533,11 +5676,11 @@ template <Material M>
 /// film): a photon reflects with the probability `reflected_share`, its mean.
 template <Scalar T>
 struct SpecularSplit {
-    Rgb<T> kr{T(0)};
-    Rgb<T> kt{T(0)};
-    std::optional<Vec3<T>> refracted;
-    Rgb<T> fresnel{T(1)};
-    T reflected_share = T(1);
+    Rgb<T> kr{T(0)}; ///< the reflected ray's weight per channel
+    Rgb<T> kt{T(0)}; ///< the transmitted ray's weight per channel
+    std::optional<Vec3<T>> refracted; ///< the transmitted direction, if any
+    Rgb<T> fresnel{T(1)}; ///< the Fresnel reflectance before the tints
+    T reflected_share = T(1); ///< the probability a photon reflects
 
     /// Whether Fresnel's share is the same in every channel (then a photon's choice
     /// between reflection and refraction needs no reweighting).
@@ -5756,8 +5899,8 @@ enum class Transport { importance, radiance };
 /// A photon's next direction after scattering, and whether the bounce was diffuse.
 template <Scalar T>
 struct PhotonBounce {
-    Vec3<T> direction;
-    bool diffuse;
+    Vec3<T> direction; ///< the new direction
+    bool diffuse; ///< whether the bounce was off the diffuse lobe
 };
 
 /// The lobes a scattering may take: none (the path ends), the delta ones only (a caustic
@@ -5900,12 +6043,16 @@ concept IndexField = requires(const F& field, const Vec3<typename F::scalar_type
 /// n(y) = n0 + slope y.
 template <Scalar T = double>
 struct LinearIndex {
+    /// The precision of the field's values.
     using scalar_type = T;
-    T n0 = T(1);
+    T n0 = T(1); ///< index at y = 0
     T slope = T(0); ///< dn/dy
 
+    /// The index at p: n0 + slope y.
     [[nodiscard]] constexpr T index(const Vec3<T>& p) const noexcept { return n0 + slope * p.y; }
+    /// The index's gradient, (0, slope, 0) everywhere.
     [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>&) const noexcept { return {T(0), slope, T(0)}; }
+    /// Throws std::invalid_argument, naming the parameter, for n0 <= 0 or a slope that is not finite.
     constexpr void validate() const
     {
         detail::require_positive("LinearIndex n0", n0);
@@ -5917,12 +6064,16 @@ struct LinearIndex {
 /// y(x) = y0 + tan(theta0) x + b x^2 / (4 K^2) with K = n(y0) cos(theta0).
 template <Scalar T = double>
 struct LinearSquareIndex {
+    /// The precision of the field's values.
     using scalar_type = T;
-    T a = T(1);
-    T b = T(0);
+    T a = T(1); ///< n^2 at y = 0
+    T b = T(0); ///< d(n^2)/dy
 
+    /// The index at p: sqrt(a + b y).
     [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return std::sqrt(a + b * p.y); }
+    /// The index's gradient: (0, b / 2n, 0).
     [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept { return {T(0), b / (T(2) * index(p)), T(0)}; }
+    /// Throws std::invalid_argument, naming the parameter, for a <= 0 or a b that is not finite.
     constexpr void validate() const
     {
         detail::require_positive("LinearSquareIndex a", a);
@@ -5935,16 +6086,20 @@ struct LinearSquareIndex {
 /// metres.
 template <Scalar T = double>
 struct ExponentialAtmosphere {
+    /// The precision of the field's values.
     using scalar_type = T;
-    T n0 = T(1.000293);
-    T scale_height = T(8500);
-    T ground = T(0);
+    T n0 = T(1.000293); ///< index at the ground
+    T scale_height = T(8500); ///< height over which n - 1 falls by e (metres)
+    T ground = T(0); ///< height of the ground
 
+    /// The index at p: 1 + (n0 - 1) exp(-(y - ground) / scale_height).
     [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return T(1) + (n0 - T(1)) * std::exp(-(p.y - ground) / scale_height); }
+    /// The index's gradient, along y.
     [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
     {
         return {T(0), -(n0 - T(1)) / scale_height * std::exp(-(p.y - ground) / scale_height), T(0)};
     }
+    /// Throws std::invalid_argument, naming the parameter, for n0 or scale_height <= 0 or a ground that is not finite.
     constexpr void validate() const
     {
         detail::require_positive("ExponentialAtmosphere n0", n0);
@@ -5958,17 +6113,21 @@ struct ExponentialAtmosphere {
 /// road 30 K above the air), and rays grazing it bend back up (an inferior mirage).
 template <Scalar T = double>
 struct HeatedLayer {
+    /// The precision of the field's values.
     using scalar_type = T;
-    T n_air = T(1.000293);
-    T drop = T(3e-5);
+    T n_air = T(1.000293); ///< index of the air far above the ground
+    T drop = T(3e-5); ///< how much lower the index is at the ground
     T thickness = T(0.3); ///< metres over which the excess heat falls by e
-    T ground = T(0);
+    T ground = T(0); ///< height of the ground
 
+    /// The index at p: n_air - drop exp(-(y - ground) / thickness).
     [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return n_air - drop * std::exp(-(p.y - ground) / thickness); }
+    /// The index's gradient, along y.
     [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
     {
         return {T(0), drop / thickness * std::exp(-(p.y - ground) / thickness), T(0)};
     }
+    /// Throws std::invalid_argument, naming the parameter, for n_air or thickness <= 0, or a drop that is not finite or not below n_air.
     constexpr void validate() const
     {
         detail::require_positive("HeatedLayer n_air", n_air);
@@ -5983,11 +6142,14 @@ struct HeatedLayer {
 template <Scalar T, class F>
     requires std::regular_invocable<const F&, const Vec3<T>&>
 struct IndexFunction {
+    /// The precision of the field's values.
     using scalar_type = T;
-    F function;
-    T h = T(1e-4);
+    F function; ///< n(p), any callable
+    T h = T(1e-4); ///< step of the central differences that give the gradient
 
+    /// The index at p: function(p).
     [[nodiscard]] T index(const Vec3<T>& p) const { return function(p); }
+    /// The index's gradient by central differences of step h.
     [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const
     {
         const T inv = T(1) / (T(2) * h);
@@ -5995,6 +6157,7 @@ struct IndexFunction {
                 (function(p + Vec3<T>(0, h, 0)) - function(p - Vec3<T>(0, h, 0))) * inv,
                 (function(p + Vec3<T>(0, 0, h)) - function(p - Vec3<T>(0, 0, h))) * inv};
     }
+    /// Throws std::invalid_argument for h <= 0.
     constexpr void validate() const { detail::require_positive("IndexFunction h", h); }
 };
 
@@ -6007,9 +6170,10 @@ static_assert(IndexField<LinearIndex<double>> && IndexField<LinearSquareIndex<fl
 /// vector of length n(position): the unit direction times the local index).
 template <Scalar T>
 struct CurvedRay {
-    Vec3<T> position;
-    Vec3<T> optical;
+    Vec3<T> position; ///< where the ray is
+    Vec3<T> optical; ///< the optical direction, n times the unit tangent
 
+    /// The unit tangent of the ray.
     [[nodiscard]] Vec3<T> direction() const noexcept { return normalize(optical); }
 };
 
@@ -6051,6 +6215,7 @@ template <IndexField F>
 template <IndexField F>
 class AdaptiveStepper {
 public:
+    /// The field's precision.
     using T = typename F::scalar_type;
 
     /// How the stepper controls its error: the tolerance per step and the step sizes it may take.
@@ -6060,6 +6225,7 @@ public:
         T max_step = T(10);     ///< no step longer than this arc length
     };
 
+    /// A stepper through `field` (which must outlive it).
     explicit AdaptiveStepper(const F& field, Config config = {}) : field_(&field), config_(config)
     {
         field.validate();
@@ -6105,8 +6271,10 @@ private:
 template <IndexField F>
 class LayeredMedium {
 public:
+    /// The field's precision.
     using T = typename F::scalar_type;
 
+    /// `layers` flat layers of `field` between heights `bottom` and `top` (which must outlive it); throws for bottom >= top or layers < 1.
     LayeredMedium(const F& field, T bottom, T top, int layers) : field_(&field), bottom_(bottom), top_(top), layers_(layers)
     {
         field.validate();
@@ -6117,6 +6285,7 @@ public:
         height_ = (top - bottom) / T(layers);
     }
 
+    /// The number of layers.
     [[nodiscard]] int layers() const noexcept { return layers_; }
 
     /// The layer holding height y (clamped into [0, layers); in floating point first, so a
@@ -6176,18 +6345,23 @@ namespace prism {
 
 /// Uniform air of index 1: rays are straight.
 struct StraightAir {
+    /// Rays through it are straight.
     static constexpr bool curved = false;
+    /// Nothing to check.
     constexpr void validate() const {}
 };
 
 /// Air whose index is `field` inside `region` (uniform outside it); rays through it curve.
 template <IndexField F>
 struct GradedAir {
+    /// The field's precision.
     using scalar_type = typename F::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
+    /// Rays through it curve.
     static constexpr bool curved = true;
 
-    F field{};
+    F field{}; ///< the refractive index inside the region
     Aabb<T> region{};                                   ///< where the index varies
     typename AdaptiveStepper<F>::Config stepping{};     ///< the stepper's tolerance and step lengths
     /// A chord that meets a surface is halved (Sharma steps of half the dt) until it is
@@ -6196,6 +6370,7 @@ struct GradedAir {
     T landing_chord = T(1e-3);
     int max_steps = 1000000;                            ///< a ray still in the air after this many steps is lost (background)
 
+    /// Throws std::invalid_argument, naming the parameter, for a bad field, an unbounded or empty region, max_steps < 1, landing_chord <= 0 or bad stepping.
     void validate() const
     {
         field.validate();
@@ -6214,15 +6389,19 @@ struct GradedAir {
 /// order in the layer height (bench/graded_index.cpp).
 template <IndexField F>
 struct LayeredAir {
+    /// The field's precision.
     using scalar_type = typename F::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
+    /// Rays through it bend at the layers' boundaries.
     static constexpr bool curved = true;
 
-    F field{};
-    T bottom = T(0);
-    T top = T(1);
-    int layers = 100;
+    F field{}; ///< the index field the layers sample at their middle heights
+    T bottom = T(0); ///< height of the lowest layer's bottom
+    T top = T(1); ///< height of the highest layer's top
+    int layers = 100; ///< the number of layers
 
+    /// Throws std::invalid_argument, naming the parameter, for a bad field, top <= bottom or layers < 1.
     void validate() const { (void)LayeredMedium<F>(field, bottom, top, layers); }
 };
 
@@ -6478,10 +6657,11 @@ template <class M>
 
 /// An object a ray is inside of: where it is in the scene, and its priority.
 struct Inside {
-    std::uint32_t slot = 0;
-    std::uint32_t index = 0;
-    int priority = 0;
+    std::uint32_t slot = 0; ///< the object's scene slot
+    std::uint32_t index = 0; ///< the object within its slot
+    int priority = 0; ///< its material's priority
 
+    /// Whether both name the same object.
     [[nodiscard]] constexpr bool same_object(const Inside& other) const noexcept { return slot == other.slot && index == other.index; }
 };
 
@@ -6489,9 +6669,12 @@ struct Inside {
 /// more than that many at once forgets the oldest, and is then outside it).
 class MediumStack {
 public:
+    /// The deepest nesting kept.
     static constexpr std::size_t capacity = 8;
 
+    /// Whether the ray is inside no transmissive object (in the air).
     [[nodiscard]] constexpr bool empty() const noexcept { return count_ == 0; }
+    /// How many objects the ray is inside of.
     [[nodiscard]] constexpr std::size_t size() const noexcept { return count_; }
 
     /// The medium the ray travels in: the highest priority, the latest entered among equals.
@@ -6503,6 +6686,7 @@ public:
         return best;
     }
 
+    /// Whether the ray is inside `object`.
     [[nodiscard]] constexpr bool contains(const Inside& object) const noexcept
     {
         for (std::size_t i = 0; i < count_; ++i)
@@ -6548,8 +6732,8 @@ private:
 /// reflected ray stays in the current ones. The medium on the object's other side is
 /// the current one when entering and the one beyond when leaving (`outside_of`).
 struct Interface {
-    bool real = true;
-    MediumStack beyond{};
+    bool real = true; ///< false: the interface is not real, and the ray passes it unchanged
+    MediumStack beyond{}; ///< the media beyond the interface, for a ray that crosses it
 };
 
 /// The interface a ray in `media` meets at a surface of `object` (entering or leaving).
@@ -6602,7 +6786,7 @@ enum class Filter : std::uint8_t {
 struct Estimator {
     std::size_t k = 0;   ///< 0: every photon within `radius`; else the k nearest, searched no further than `radius`
     float radius = 0.1f; ///< the fixed radius, or the k-nearest search's maximum distance
-    Filter filter = Filter::box;
+    Filter filter = Filter::box; ///< the kernel photons are weighed by
     float max_height_ratio = 1.0f; ///< keep photons within this times r of the tangent plane; < 1 flattens the sphere to a disk against light leaks
     /// Count a photon only where its surface's normal is within acos(surface_cos) of the
     /// query's (60 degrees): not the far side of a thin wall (whose normals are opposite,
@@ -6690,13 +6874,14 @@ namespace prism {
 /// octahedral coordinates (Meyer et al. 2010), and its flags.
 class Photon {
 public:
+    /// What a stored photon is.
     enum Flags : std::uint8_t {
         direct = 1,  ///< first hit after leaving the light
         caustic = 2, ///< reached this diffuse surface only by specular bounces (L S+ D)
         shadow = 4,  ///< a shadow photon: where the straight continuation of a direct photon's path met a further surface
     };
 
-    Vec3<float> position{};
+    Vec3<float> position{}; ///< where the photon landed
 
     Photon() = default;
 
@@ -6708,6 +6893,7 @@ public:
         encode_power(power);
     }
 
+    /// The photon's power, decoded.
     [[nodiscard]] Rgb<float> power() const noexcept
     {
         if (exponent_ == 0) return Rgb<float>(0.0f);
@@ -6732,6 +6918,7 @@ public:
         return d > 0.0f && d * d > min_cos * min_cos * length_squared(m) * length_squared(n);
     }
 
+    /// Photons are equal when every stored bit is.
     friend bool operator==(const Photon&, const Photon&) = default;
 
 private:
@@ -6780,7 +6967,7 @@ private:
     std::uint8_t exponent_ = 0; ///< 0: no power; else the shared exponent + 128
 
 public:
-    std::uint8_t flags = 0;
+    std::uint8_t flags = 0; ///< Flags
 };
 
 static_assert(sizeof(Photon) == 28);
@@ -6803,24 +6990,29 @@ namespace prism {
 
 /// The photons' positions, as a PointSet for the KdTree.
 struct PhotonPositions {
+    /// Photon positions are float.
     using scalar_type = float;
+    /// Positions in 3-D.
     static constexpr std::size_t dimension = 3;
 
-    std::span<const Photon> photons;
+    std::span<const Photon> photons; ///< the photons, in the map's order
 
+    /// The number of photons.
     [[nodiscard]] std::size_t size() const noexcept { return photons.size(); }
+    /// Coordinate `axis` of photon i's position.
     [[nodiscard]] float coordinate(std::size_t i, std::size_t axis) const noexcept { return photons[i].position[static_cast<int>(axis)]; }
 };
 
 /// A density estimate and the squared radius of the disk it was gathered over.
 struct PrecomputedIrradiance {
-    Rgb<float> irradiance{0.0f};
-    float radius2 = 0;
+    Rgb<float> irradiance{0.0f}; ///< the estimate of the irradiance
+    float radius2 = 0; ///< the squared radius it was gathered over
 };
 
 /// Photons in KD-tree order, with radius and k-nearest radiance estimates (Jensen 2001).
 class PhotonMap {
 public:
+    /// The KD-tree over the photons' positions (8 a leaf).
     using Tree = KdTree<PhotonPositions, 8>;
     static constexpr std::size_t max_k = 512; ///< the most photons a k-nearest estimate gathers
 
@@ -6838,7 +7030,9 @@ public:
         tree_->index_in_tree_order();
     }
 
+    /// The number of photons.
     [[nodiscard]] std::size_t size() const noexcept { return photons_.size(); }
+    /// The photons, in tree order.
     [[nodiscard]] const std::vector<Photon>& photons() const noexcept { return photons_; }
 
     /// Irradiance at p on a surface with unit normal n (Jensen 1996, eq. 6 with a diffuse
@@ -6949,6 +7143,7 @@ public:
         sample_tree_.emplace(PhotonPositions{samples_}, threads);
     }
 
+    /// Whether precompute_irradiance() has been run (the final gather needs it).
     [[nodiscard]] bool has_precomputed_irradiance() const noexcept { return sample_tree_.has_value(); }
 
     /// The precomputed irradiance nearest p among samples on surfaces facing n's way
@@ -7057,7 +7252,7 @@ namespace prism {
 /// A walk at a diffuse surface, before it scatters there.
 template <Scalar T>
 struct WalkVertex {
-    const Hit<T>& hit;
+    const Hit<T>& hit; ///< the surface the walk met
     const Vec3<T>& direction; ///< unit, arriving
     const Rgb<T>& power;      ///< what the path carries here, after the medium it crossed
     bool direct;              ///< nothing scattered it yet (a photon's first hit)
@@ -7067,7 +7262,9 @@ struct WalkVertex {
     T wavelength;             ///< 0 while white
     const MediumStack& media; ///< the transmissive objects the path is inside of
 
+    /// Where the walk met the surface, with its normal and side.
     [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
+    /// Whether every scattering so far was specular.
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
 };
 
@@ -7190,8 +7387,8 @@ struct PhotonTracerConfig {
     std::size_t global_photons = 200000;  ///< emitted for the global map
     std::size_t caustic_photons = 200000; ///< emitted toward specular objects for the caustic map
     int max_bounces = 16;                 ///< bounces followed at most
-    bool shadow_photons = true;
-    std::uint64_t seed = 0;
+    bool shadow_photons = true; ///< store shadow photons in the global map
+    std::uint64_t seed = 0; ///< with the light, fixes every photon
     unsigned threads = 0; ///< 0 = all hardware threads
     /// A white photon meeting a dispersive interface takes one of this many wavelength
     /// bands at random (1 to 81), its power scaled by the band's photon_weight times
@@ -7220,10 +7417,11 @@ inline void validate(const PhotonTracerConfig& config)
 
 } // namespace detail
 
-/// The maps one photon tracing gives: global, caustic and shadow photons.
+/// The maps one photon tracing gives: the global map (shadow photons in it, flagged) and
+/// the caustic map.
 struct PhotonMaps {
-    PhotonMap global;
-    PhotonMap caustic;
+    PhotonMap global; ///< every photon's diffuse landings (flagged direct, caustic or shadow)
+    PhotonMap caustic; ///< landings after specular bounces only (L S+ D)
 };
 
 namespace detail {
@@ -7486,7 +7684,8 @@ namespace detail {
 /// stream come from its index, so the shares of parts 0 to parts - 1, put end to end,
 /// are the photons trace_photons finds, bit for bit.
 struct PhotonShare {
-    std::vector<Photon> global, caustic;
+    std::vector<Photon> global;  ///< this share of the global map's photons
+    std::vector<Photon> caustic; ///< this share of the caustic map's photons
 };
 
 template <class SceneT, class Air = StraightAir>
@@ -7700,6 +7899,7 @@ namespace prism {
 /// A linear HDR RGB image. Any number of threads may set distinct pixels at once.
 class Film {
 public:
+    /// A black film of width x height pixels; throws std::invalid_argument for a size <= 0 and a clear error when the memory cannot be had.
     Film(int width, int height) : width_(width), height_(height)
     {
         if (width <= 0 || height <= 0) detail::throw_invalid("Film size must be positive, got ", width, " x ", height);
@@ -7714,11 +7914,14 @@ public:
         }
     }
 
+    /// A copy of the pixels.
     Film(const Film& other) : width_(other.width_), height_(other.height_), pixels_(other.pixels_), rejected_(other.rejected()) {}
+    /// Takes the pixels over.
     Film(Film&& other) noexcept
         : width_(other.width_), height_(other.height_), pixels_(std::move(other.pixels_)), rejected_(other.rejected())
     {
     }
+    /// Copy or move assignment.
     Film& operator=(Film other) noexcept
     {
         width_ = other.width_;
@@ -7728,10 +7931,14 @@ public:
         return *this;
     }
 
+    /// The width in pixels.
     [[nodiscard]] int width() const noexcept { return width_; }
+    /// The height in pixels.
     [[nodiscard]] int height() const noexcept { return height_; }
+    /// The pixels, row by row from the top.
     [[nodiscard]] const std::vector<Rgb<float>>& pixels() const noexcept { return pixels_; }
 
+    /// Pixel (x, y), from the top left.
     [[nodiscard]] const Rgb<float>& at(int x, int y) const noexcept
     {
         return pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)];
@@ -7793,33 +8000,49 @@ namespace prism {
 
 /// A rectangle of an image's pixels, [x0, x1) x [y0, y1); pbrt's pixel bounds.
 struct PixelWindow {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int x0 = 0; ///< the first column
+    int y0 = 0; ///< the first row (rows count from the top)
+    int x1 = 0; ///< one past the last column
+    int y1 = 0; ///< one past the last row
 
+    /// The window's width in pixels.
     [[nodiscard]] constexpr int width() const noexcept { return x1 - x0; }
+    /// The window's height in pixels.
     [[nodiscard]] constexpr int height() const noexcept { return y1 - y0; }
+    /// Whether the window holds no pixel.
     [[nodiscard]] constexpr bool empty() const noexcept { return x1 <= x0 || y1 <= y0; }
+    /// The number of pixels in the window.
     [[nodiscard]] constexpr std::size_t area() const noexcept { return empty() ? 0 : std::size_t(width()) * std::size_t(height()); }
+    /// Whether pixel (x, y) is in the window.
     [[nodiscard]] constexpr bool contains(int x, int y) const noexcept { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+    /// Whether all of `w` is in the window.
     [[nodiscard]] constexpr bool contains(const PixelWindow& w) const noexcept
     {
         return w.x0 >= x0 && w.x1 <= x1 && w.y0 >= y0 && w.y1 <= y1;
     }
+    /// Whether the windows share a pixel.
     [[nodiscard]] constexpr bool overlaps(const PixelWindow& w) const noexcept
     {
         return w.x0 < x1 && x0 < w.x1 && w.y0 < y1 && y0 < w.y1;
     }
     /// The whole of a width x height image.
     [[nodiscard]] static constexpr PixelWindow whole(int width, int height) noexcept { return {0, 0, width, height}; }
+    /// Windows are equal when their bounds are.
     friend constexpr bool operator==(const PixelWindow&, const PixelWindow&) = default;
 };
 
 /// A range of passes [first, last): camera samples of each pixel, or photon passes.
 struct PassRange {
-    std::uint64_t first = 0, last = 0;
+    std::uint64_t first = 0; ///< the first pass
+    std::uint64_t last = 0;  ///< one past the last pass
 
+    /// The number of passes in the range.
     [[nodiscard]] constexpr std::uint64_t count() const noexcept { return last > first ? last - first : 0; }
+    /// Whether the range holds no pass.
     [[nodiscard]] constexpr bool empty() const noexcept { return last <= first; }
+    /// Whether the ranges share a pass.
     [[nodiscard]] constexpr bool overlaps(const PassRange& r) const noexcept { return r.first < last && first < r.last; }
+    /// Ranges are equal when their bounds are.
     friend constexpr bool operator==(const PassRange&, const PassRange&) = default;
 };
 
@@ -7873,6 +8096,7 @@ public:
         s.bits_ = bits;
         return s;
     }
+    /// The sum in units of 2^-64.
     [[nodiscard]] constexpr Integer bits() const noexcept { return bits_; }
 
     /// Add `other`; false (and this unchanged) when the sum would pass 2^63 in magnitude.
@@ -7881,6 +8105,7 @@ public:
     /// The sum, rounded once to double.
     [[nodiscard]] double value() const noexcept { return bits_.to_double() * 0x1p-64; } // exact scaling: the double is 0 or at least 1
 
+    /// Sums are equal when their bits are.
     friend constexpr bool operator==(const BasicExactSum&, const BasicExactSum&) = default;
 
 private:
@@ -7907,6 +8132,7 @@ namespace detail {
 /// may add to distinct pixels at once.
 class Accumulation {
 public:
+    /// Zeroed sums over `window` of a width x height image, for `channels` (R, G, B first); throws std::invalid_argument, naming the value, for a bad size, window or channel list, and a clear error when the memory cannot be had.
     Accumulation(int width, int height, PixelWindow window, std::vector<std::string> channels = {"R", "G", "B"})
         : width_(width), height_(height), window_(window), channels_(std::move(channels))
     {
@@ -7928,16 +8154,19 @@ public:
         }
     }
 
+    /// A copy of the sums and the flags.
     Accumulation(const Accumulation& other)
         : width_(other.width_), height_(other.height_), window_(other.window_), channels_(other.channels_), sums_(other.sums_),
           weights_(other.weights_), rejected_(other.rejected()), overflowed_(other.overflowed())
     {
     }
+    /// Takes the sums over.
     Accumulation(Accumulation&& other) noexcept
         : width_(other.width_), height_(other.height_), window_(other.window_), channels_(std::move(other.channels_)),
           sums_(std::move(other.sums_)), weights_(std::move(other.weights_)), rejected_(other.rejected()), overflowed_(other.overflowed())
     {
     }
+    /// Copy or move assignment.
     Accumulation& operator=(Accumulation other) noexcept
     {
         width_ = other.width_;
@@ -7951,9 +8180,13 @@ public:
         return *this;
     }
 
+    /// The image's width (the whole image, not the window).
     [[nodiscard]] int width() const noexcept { return width_; }
+    /// The image's height (the whole image, not the window).
     [[nodiscard]] int height() const noexcept { return height_; }
+    /// The pixels summed here.
     [[nodiscard]] const PixelWindow& window() const noexcept { return window_; }
+    /// The channels' names, R, G, B first.
     [[nodiscard]] const std::vector<std::string>& channels() const noexcept { return channels_; }
 
     /// Pixel (x, y)'s sums, one per channel; (x, y) in image coordinates, inside the window.
@@ -7961,6 +8194,7 @@ public:
     {
         return {sums_.data() + index(x, y) * channels_.size(), channels_.size()};
     }
+    /// Pixel (x, y)'s weight: the samples or passes its sums hold.
     [[nodiscard]] std::uint64_t weight(int x, int y) const noexcept { return weights_[index(x, y)]; }
 
     /// Add sums (one per channel) and a weight to pixel (x, y). A sum that would
@@ -7980,6 +8214,7 @@ public:
     /// Count sample values left out for not being finite (or negative, or past
     /// ExactSum::limit) where the channel allows no such value.
     void reject(std::size_t count) noexcept { rejected_.fetch_add(count, std::memory_order_relaxed); }
+    /// How many sample values were left out (reject()).
     [[nodiscard]] std::size_t rejected() const noexcept { return rejected_.load(std::memory_order_relaxed); }
     /// Whether some sum or weight would have overflowed (and was left out): the sums
     /// are then wrong, and image() refuses them.
@@ -8097,11 +8332,13 @@ namespace prism {
 /// from a light (caustics), or off other diffuse surfaces (indirect).
 template <Scalar T>
 struct LightParts {
-    Rgb<T> direct{T(0)};
-    Rgb<T> caustic{T(0)};
-    Rgb<T> indirect{T(0)};
+    Rgb<T> direct{T(0)}; ///< from the lights by shadow rays, and the background
+    Rgb<T> caustic{T(0)}; ///< from the caustic map
+    Rgb<T> indirect{T(0)}; ///< off other diffuse surfaces
 
+    /// The radiance: the three parts summed.
     [[nodiscard]] constexpr Rgb<T> sum() const noexcept { return direct + caustic + indirect; }
+    /// Adds another split's parts.
     constexpr LightParts& operator+=(const LightParts& o) noexcept
     {
         direct += o.direct;
@@ -8109,6 +8346,7 @@ struct LightParts {
         indirect += o.indirect;
         return *this;
     }
+    /// Scales every part by k.
     constexpr LightParts& operator*=(const Rgb<T>& k) noexcept
     {
         direct *= k;
@@ -8116,6 +8354,7 @@ struct LightParts {
         indirect *= k;
         return *this;
     }
+    /// Every part scaled by k.
     [[nodiscard]] friend constexpr LightParts operator*(const Rgb<T>& k, LightParts p) noexcept { return p *= k; }
 };
 
@@ -8161,7 +8400,7 @@ namespace prism {
 /// Where the camera shoots rays through a width x height image.
 template <Scalar T>
 struct CameraRays {
-    Vec3<T> origin{};
+    Vec3<T> origin{}; ///< the pinhole
     Vec3<T> top_left{};    ///< direction through the top-left image corner
     Vec3<T> pixel_right{}; ///< step of one pixel to the right
     Vec3<T> pixel_down{};  ///< step of one pixel down
@@ -8176,7 +8415,10 @@ struct CameraRays {
     /// (inside the image when 0 <= x < width, 0 <= y < height), its distance from the
     /// pinhole and the cosine between the view direction and the ray to it.
     struct Projection {
-        T x, y, distance, cos;
+        T x;        ///< column, in pixels from the left
+        T y;        ///< row, in pixels from the top
+        T distance; ///< from the pinhole
+        T cos;      ///< between the view direction and the ray to the point
     };
 
     /// The point's projection, or nothing when it is not in front of the camera.
@@ -8200,10 +8442,10 @@ struct CameraRays {
 /// A pinhole camera. `fov` is the horizontal field of view in degrees, as POV-Ray's `angle`.
 template <Scalar T = float>
 struct Camera {
-    Vec3<T> position{T(0), T(0), T(0)};
-    Vec3<T> look_at{T(0), T(0), T(-1)};
-    Vec3<T> up{T(0), T(1), T(0)};
-    T fov = T(40);
+    Vec3<T> position{T(0), T(0), T(0)}; ///< the pinhole
+    Vec3<T> look_at{T(0), T(0), T(-1)}; ///< the point seen at the image's centre
+    Vec3<T> up{T(0), T(1), T(0)}; ///< the direction that is up in the image
+    T fov = T(40); ///< horizontal field of view in degrees
 
     /// Throws std::invalid_argument for non-finite fields, position == look_at, an up
     /// vector parallel to the view direction, or a field of view outside (0, 180).
@@ -8273,8 +8515,8 @@ namespace prism {
 
 /// What render() renders: size, samples, threads, seed, and the part of the image (crop, passes).
 struct RenderConfig {
-    int width = 512;
-    int height = 512;
+    int width = 512; ///< image width in pixels
+    int height = 512; ///< image height in pixels
     int spp = 1;             ///< samples per pixel; 1 samples the pixel centre
     unsigned threads = 0;    ///< worker threads; 0 = all hardware threads
     std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image
@@ -8697,8 +8939,10 @@ constexpr bool any_of(std::initializer_list<bool> values) noexcept
 /// A fixed list of values of the types Ts, item I read by get<I>(pack).
 template <class... Ts>
 struct Pack : detail::PackItems<std::index_sequence_for<Ts...>, Ts...> {
+    /// The number of items.
     static constexpr std::size_t size = sizeof...(Ts);
 
+    /// A pack of `values`, each moved into its item.
     constexpr explicit Pack(Ts... values) : detail::PackItems<std::index_sequence_for<Ts...>, Ts...>(std::move(values)...) {}
 
     /// f(item 0, item 1, ...), as std::apply.
@@ -8748,8 +8992,9 @@ template <Light... Ls>
 struct Lights {
     static_assert(sizeof...(Ls) > 0, "Lights{} holds no light: a scene needs at least one (a PointLight, a DirectionalLight, ...)");
 
-    std::tuple<Ls...> items;
+    std::tuple<Ls...> items; ///< the lights
 
+    /// The list of `lights`; checks each.
     constexpr explicit Lights(Ls... lights) : items(std::move(lights)...)
     {
         std::apply([](const auto&... light) { (light.validate(), ...); }, items);
@@ -8793,14 +9038,18 @@ namespace prism {
 template <Shape S, Material M>
     requires std::same_as<typename S::scalar_type, typename M::scalar_type>
 struct Object {
+    /// The shape's precision.
     using scalar_type = typename S::scalar_type;
+    /// The shape's type.
     using shape_type = S;
+    /// The material's type.
     using material_type = M;
 
-    S shape;
-    M material;
+    S shape; ///< where the object is
+    M material; ///< what its surface does to light
     bool bounded = false; ///< the shape has finite bounds (set at construction, for culling)
 
+    /// The object of shape `s` and material `m`; throws std::invalid_argument, naming the parameter, for a bad material.
     constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m))
     {
         material.validate();
@@ -8812,11 +9061,14 @@ struct Object {
 template <Shape S, Material M>
     requires std::same_as<typename S::scalar_type, typename M::scalar_type>
 struct ObjectArray {
+    /// The shapes' precision.
     using scalar_type = typename S::scalar_type;
+    /// The shapes' type.
     using shape_type = S;
+    /// The materials' type.
     using material_type = M;
 
-    std::vector<Object<S, M>> items;
+    std::vector<Object<S, M>> items; ///< the objects, filled at run time
 };
 
 namespace detail {
@@ -9055,7 +9307,9 @@ class Scene {
     using SlotAt = pack_element_t<I, Pack<Slots...>>;
 
 public:
+    /// The objects' precision.
     using scalar_type = typename SlotAt<0>::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
     static_assert(detail::all_of({std::same_as<typename Slots::scalar_type, T>...}), "all objects must share one scalar type");
     static_assert(detail::lights_of_scalar<LightsOfScene, T>, "every light must have the objects' scalar type (a PointLight<float> in a scene of double objects?)");
@@ -9064,6 +9318,7 @@ public:
     static constexpr bool has_transmissive = detail::any_of({transmits<typename Slots::material_type>...});
     /// Some material has a mirror lobe.
     static constexpr bool has_specular = detail::any_of({reflects<typename Slots::material_type>...}) || has_transmissive;
+    /// The number of slots (Object or ObjectArray).
     static constexpr std::size_t slot_count = sizeof...(Slots);
     /// The fewest bounded objects the scene builds its tree over.
     static constexpr std::size_t tree_from = 8;
@@ -9074,11 +9329,12 @@ public:
 
     // Scene Public Members
 
-    LightsOfScene lights;
+    LightsOfScene lights; ///< the lights
     Pack<Slots...> slots; ///< get<I>(slots) is slot I
     Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
     Rgb<T> ambient{T(0)};    ///< the ambient term of Whitted (1980), added where every light is occluded
 
+    /// The scene of `light_list` and the slots `objects`; builds the tree over the bounded objects where there are enough.
     constexpr Scene(LightsOfScene light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
     {
         // Every object's key, bounded or not, in key order; the transmissive ones again,
@@ -9108,6 +9364,7 @@ public:
     /// cull for whole scenes, and the photon tracer's extent.
     [[nodiscard]] constexpr const Aabb<T>& bounds() const noexcept { return cluster_; }
 
+    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite background or ambient; every integrator calls it.
     constexpr void validate() const
     {
         detail::require_non_negative("Scene background", background);
@@ -9201,6 +9458,7 @@ public:
         std::apply([&](const auto&... light) { (f(light), ...); }, lights.items);
     }
 
+    /// The number of lights.
     static constexpr std::size_t light_count = std::tuple_size_v<decltype(LightsOfScene::items)>;
 
     /// Call f(light) with light number i (in the order of Lights{...}), with its static type.
@@ -9453,9 +9711,12 @@ struct LightTracerConfig {
 template <class SceneT, class Air = StraightAir>
 class LightTracer {
 public:
+    /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
 
+    /// A light tracer of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
     explicit LightTracer(const SceneT& scene, LightTracerConfig config = {}, Air air = {}) : scene_(&scene), config_(config), air_(std::move(air))
     {
         scene.validate();
@@ -9467,6 +9728,7 @@ public:
     }
     LightTracer(const SceneT&& scene, LightTracerConfig config = {}, Air air = {}) = delete;
 
+    /// The settings.
     [[nodiscard]] const LightTracerConfig& config() const noexcept { return config_; }
 
     /// Passes config.passes of config.spp (render/render.hpp's PassEstimator).
@@ -9626,7 +9888,9 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class PathTracer {
 public:
+    /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
 
     /// A PathTracer's settings.
@@ -9641,6 +9905,7 @@ public:
         int dispersion_bands = SpectralBands<float>::max_count;
     };
 
+    /// A path tracer of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
     explicit PathTracer(const SceneT& scene, Config config = {}, Air air = {})
         : scene_(&scene), config_(config), bands_(checked_bands(config.dispersion_bands)), air_(std::move(air))
     {
@@ -9674,6 +9939,7 @@ public:
 
     /// The scene and the air its camera rays start in (render_layers' surface layers).
     [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
+    /// The air camera rays start in.
     [[nodiscard]] const Air& air() const noexcept { return air_; }
 
 private:
@@ -9727,7 +9993,9 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class PhotonMapper {
 public:
+    /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
 
     /// A PhotonMapper's settings: photon tracing, the two maps' estimates, the final gather,
@@ -9749,14 +10017,14 @@ public:
             float accuracy = 1.0f;    ///< kappa: a record reaches R / kappa (and 10 degrees / kappa of normal)
             float min_pixels = 3.0f;  ///< R at least this many pixel footprints
             float max_pixels = 40.0f; ///< and at most this many
-            bool gradients = true;
-        } irradiance_cache{};
+            bool gradients = true; ///< interpolate with the records' rotational and translational gradients
+        } irradiance_cache{}; ///< see IrradianceCaching
         /// > 0: look at this many nearest global photons (within global.radius) before a
         /// shadow ray, and skip it when they agree. Scenes with one light only: shadow
         /// photons do not say which light they block.
         std::size_t visibility_k = 0;
-        int max_depth = 10;
-        T min_weight = T(1e-3);
+        int max_depth = 10; ///< surfaces a camera path may meet
+        T min_weight = T(1e-3); ///< a branch whose weight on the pixel falls below this ends (Hall and Greenberg 1983)
         /// Wavelength bands white camera rays split into at a dispersive interface (as
         /// Whitted's); photons take their own wavelengths (PhotonTracerConfig).
         int dispersion_bands = 8;
@@ -9806,9 +10074,12 @@ public:
     /// The final gather reads irradiance precomputed at every precomputed_stride-th global
     /// photon from its precomputed_k nearest (PhotonMap::precompute_irradiance), which the
     /// constructor works out unless the maps it is given have it already.
-    static constexpr std::size_t precomputed_k = 64, precomputed_stride = 4;
+    static constexpr std::size_t precomputed_k = 64;     ///< photons per precomputed estimate
+    static constexpr std::size_t precomputed_stride = 4; ///< every this many global photons gets one
 
+    /// The photon maps.
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
+    /// The irradiance cache (empty until cache_irradiance()).
     [[nodiscard]] const IrradianceCache<T>& irradiance_cache() const noexcept { return cache_; }
 
     /// Build the irradiance cache for what `camera` sees at `render`'s size, before
@@ -9868,6 +10139,7 @@ public:
         }
     }
 
+    /// The radiance along a camera ray: direct, caustic and indirect light summed.
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return radiance_parts(ray, rng).sum(); }
 
     /// The radiance along a camera ray by where its light came from last: the lights by
@@ -9876,6 +10148,7 @@ public:
 
     /// The scene and the air its camera rays start in (render_layers' surface layers).
     [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
+    /// The air camera rays start in.
     [[nodiscard]] const Air& air() const noexcept { return air_; }
 
     /// What the nearest global photons say about the light's visibility at p (normal n
@@ -10128,10 +10401,14 @@ struct ProgressiveConfig {
 template <class SceneT, class Air = StraightAir>
 class ProgressivePhotonMapper {
 public:
+    /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
+    /// The settings' type.
     using Config = ProgressiveConfig<SceneT, Air>;
 
+    /// Progressive photon mapping of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
     explicit ProgressivePhotonMapper(const SceneT& scene, Config config = {}, Air air = {}) : scene_(&scene), config_(config), air_(std::move(air))
     {
         scene.validate();
@@ -10147,6 +10424,7 @@ public:
     }
     ProgressivePhotonMapper(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
 
+    /// The settings.
     [[nodiscard]] const Config& config() const noexcept { return config_; }
 
     /// Passes config.passes of config.spp, each of `samples` samples per pixel, in order;
@@ -10204,7 +10482,9 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class Reference {
 public:
+    /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
 
     /// A Reference's settings, shared by its two halves.
@@ -10215,6 +10495,7 @@ public:
         int max_diffuse_bounces = 256;
     };
 
+    /// The reference for `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
     explicit Reference(const SceneT& scene, Config config = {}, Air air = {})
         : scene_(&scene), config_(config), air_(std::move(air)), paths_(scene, {.max_diffuse_bounces = config.max_diffuse_bounces}, air_)
     {
@@ -10263,7 +10544,9 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class Whitted {
 public:
+    /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
 
     /// A Whitted integrator's settings.
@@ -10275,6 +10558,7 @@ public:
         int dispersion_bands = 8;
     };
 
+    /// A Whitted integrator of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
     explicit Whitted(const SceneT& scene, Config config = {}, Air air = {})
         : scene_(&scene), config_(config), bands_(config.dispersion_bands), air_(std::move(air))
     {
@@ -10289,12 +10573,15 @@ public:
 
     /// Radiance arriving along the ray (its direction must be unit length).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
+    /// Radiance arriving along the ray; Whitted draws no random numbers.
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
 
     /// The scene and the air its camera rays start in (render_layers' surface layers).
     [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
+    /// The air camera rays start in.
     [[nodiscard]] const Air& air() const noexcept { return air_; }
 
+    /// The settings.
     [[nodiscard]] const Config& config() const noexcept { return config_; }
 
 private:
@@ -10397,11 +10684,13 @@ namespace prism {
 /// Parallel light travelling along `direction`, with irradiance E on a surface facing it.
 template <Scalar T = float>
 struct DirectionalLight {
+    /// The precision of the light.
     using scalar_type = T;
 
-    Vec3<T> direction{T(0), T(-1), T(0)};
-    Rgb<T> irradiance{T(1)};
+    Vec3<T> direction{T(0), T(-1), T(0)}; ///< the direction the light travels
+    Rgb<T> irradiance{T(1)}; ///< the irradiance on a surface facing it (W/m^2)
 
+    /// The light arriving at any point: from -direction, from infinitely far, with the irradiance.
     [[nodiscard]] LightSample<T> sample(const Vec3<T>&) const noexcept
     {
         return {-normalize(direction), infinity<T>, irradiance};
@@ -10427,6 +10716,7 @@ struct DirectionalLight {
         return {{uniform_disk(sphere.center - upstream * axis, axis, sphere.radius, u, v), axis}};
     }
 
+    /// Throws std::invalid_argument, naming the parameter, for a zero or non-finite direction or a negative irradiance.
     constexpr void validate() const
     {
         detail::require_nonzero("DirectionalLight direction", direction);
@@ -10452,15 +10742,17 @@ enum class Falloff {
 /// A point light of radiant intensity I (W/sr, per channel); its power is 4 pi I.
 template <Scalar T = float>
 struct PointLight {
+    /// The precision of the light.
     using scalar_type = T;
 
-    Vec3<T> position{};
-    Rgb<T> intensity{T(1)};
-    Falloff falloff = Falloff::inverse_square;
+    Vec3<T> position{}; ///< where the light is
+    Rgb<T> intensity{T(1)}; ///< radiant intensity per channel (W/sr)
+    Falloff falloff = Falloff::inverse_square; ///< inverse-square (physical) or none (POV-Ray's `fade_power 0`)
 
     /// Radiant power Phi = 4 pi I.
     [[nodiscard]] constexpr Rgb<T> power() const noexcept { return T(4) * pi<T> * intensity; }
 
+    /// The light arriving at p: its direction, distance and irradiance I / r^2 (I without falloff).
     [[nodiscard]] LightSample<T> sample(const Vec3<T>& p) const noexcept
     {
         const Vec3<T> to_light = position - p;
@@ -10490,6 +10782,7 @@ struct PointLight {
         return {{position, direction}, Rgb<T>(T(1)), without_falloff};
     }
 
+    /// Throws std::invalid_argument, naming the parameter, for a non-finite position or a negative intensity.
     constexpr void validate() const
     {
         detail::require_finite("PointLight position", position);
@@ -10536,8 +10829,8 @@ namespace prism {
 /// Reflectance for s- (perpendicular) and p- (parallel) polarised light.
 template <Scalar T>
 struct PolarisedReflectance {
-    T s;
-    T p;
+    T s; ///< reflectance of s-polarised light
+    T p; ///< reflectance of p-polarised light
 };
 
 /// Exact dielectric reflectance by polarisation, given the refracted cosine cos_t (as
@@ -10627,11 +10920,13 @@ template <Scalar T>
 
 /// The exact dielectric Fresnel equations.
 struct ExactFresnel {
+    /// The exact reflectance at incidence cosine cos_i and eta = n_t / n_i (1 under total internal reflection).
     template <Scalar T>
     [[nodiscard]] static constexpr T reflectance(T cos_i, T eta) noexcept
     {
         return fresnel_dielectric(cos_i, eta);
     }
+    /// The exact reflectance given cos_t as well (from Snell, computed once for direction and Fresnel).
     template <Scalar T>
     [[nodiscard]] static constexpr T reflectance(T cos_i, T cos_t, T eta) noexcept
     {
@@ -10641,11 +10936,13 @@ struct ExactFresnel {
 
 /// Schlick's approximation, evaluated on the less dense side.
 struct SchlickFresnel {
+    /// Schlick's reflectance at incidence cosine cos_i and eta = n_t / n_i, on the less dense side.
     template <Scalar T>
     [[nodiscard]] static constexpr T reflectance(T cos_i, T eta) noexcept
     {
         return fresnel_schlick(cos_i, eta);
     }
+    /// Schlick's reflectance given cos_t as well.
     template <Scalar T>
     [[nodiscard]] static constexpr T reflectance(T cos_i, T cos_t, T eta) noexcept
     {
@@ -10689,6 +10986,7 @@ inline constexpr double hc_ev_nm = 1239.84193;
 /// A metal's index n + i k at photon energies 1.40 + 0.05 i eV, i = 0 .. 55 (so in
 /// order of increasing energy, decreasing wavelength).
 struct MeasuredIndex {
+    /// The number of entries.
     static constexpr int count = 56;
     static constexpr double lowest_ev = 1.40; ///< entry 0: 885.6 nm
     static constexpr double step_ev = 0.05;   ///< entry count - 1: 4.15 eV, 298.8 nm
@@ -10794,9 +11092,11 @@ namespace prism {
 /// Reflectance independent of angle (the common approximation for metals, as in Whitted 1980).
 template <Scalar T = float>
 struct ConstantKr {
-    Rgb<T> kr{T(1)};
+    Rgb<T> kr{T(1)}; ///< the reflectance at every angle
 
+    /// The reflectance: kr at any angle.
     [[nodiscard]] constexpr Rgb<T> reflectance(T) const noexcept { return kr; }
+    /// Throws std::invalid_argument for a negative or non-finite kr.
     constexpr void validate() const { detail::require_non_negative("ConstantKr kr", kr); }
 };
 
@@ -10806,6 +11106,7 @@ struct ComplexIor {
     Rgb<T> eta{T(1)}; ///< real part n
     Rgb<T> k{T(0)};   ///< extinction coefficient
 
+    /// The unpolarised Fresnel reflectance per channel at incidence cosine cos_i.
     [[nodiscard]] Rgb<T> reflectance(T cos_i) const noexcept
     {
         return {fresnel_conductor(cos_i, std::complex<T>(eta.x, k.x)),
@@ -10813,6 +11114,7 @@ struct ComplexIor {
                 fresnel_conductor(cos_i, std::complex<T>(eta.z, k.z))};
     }
 
+    /// Throws std::invalid_argument, naming the parameter, for eta <= 0 or non-finite in a channel, or a negative k.
     constexpr void validate() const
     {
         detail::require_finite("ComplexIor eta", eta);
@@ -10831,8 +11133,10 @@ struct ComplexIor {
 template <Scalar T = float>
 class MeasuredConductor {
 public:
+    /// The incident cosines at which the reflectance is tabulated.
     static constexpr int table_size = 129;
 
+    /// The reflectance of `index` (kept by reference: static data such as metals::gold, or the caller's, which must outlive it) integrated over the spectrum.
     explicit MeasuredConductor(const metals::MeasuredIndex& index) : index_(&index)
     {
         for (int i = 0; i < metals::MeasuredIndex::count; ++i) {
@@ -10872,7 +11176,9 @@ public:
     /// The exact reflectance at the query's cosine and one wavelength.
     [[nodiscard]] T reflectance_at(const SpecularQuery<T>& q, T wavelength_nm) const noexcept { return spectral_reflectance(q.cos_i, wavelength_nm); }
 
+    /// The measured index.
     [[nodiscard]] constexpr const metals::MeasuredIndex& index() const noexcept { return *index_; }
+    /// Nothing to check: the constructor reads the measured data.
     constexpr void validate() const {}
 
 private:
@@ -10885,18 +11191,24 @@ private:
 /// makes the conductor's reflectance vary over the surface.
 template <Scalar T = float, class Fresnel = ConstantKr<T>>
 struct Conductor {
+    /// The precision of the material.
     using scalar_type = T;
+    /// No diffuse lobe.
     static constexpr bool has_diffuse = false;
+    /// Reflects, by the Fresnel policy.
     static constexpr bool reflects = true;
+    /// Transmits nothing.
     static constexpr bool transmits = false;
 
-    Fresnel fresnel{};
+    Fresnel fresnel{}; ///< the reflectance policy: ConstantKr, ComplexIor, MeasuredConductor, ThinFilmConductor or the user's
 
+    /// The reflectance at incidence cosine cos_i, where the policy depends on the angle alone.
     [[nodiscard]] Rgb<T> reflectance(T cos_i) const noexcept
         requires requires(const Fresnel& f, T c) { f.reflectance(c); }
     {
         return fresnel.reflectance(cos_i);
     }
+    /// The reflectance for a query (point, side, cosines), where the policy varies over the surface.
     [[nodiscard]] Rgb<T> reflectance(const SpecularQuery<T>& query) const noexcept
         requires requires(const Fresnel& f, const SpecularQuery<T>& q) { f.reflectance(q); }
     {
@@ -10909,6 +11221,7 @@ struct Conductor {
     {
         return fresnel.reflectance_at(query, wavelength_nm);
     }
+    /// Checks the Fresnel policy's parameters.
     constexpr void validate() const { fresnel.validate(); }
 };
 
@@ -10961,13 +11274,15 @@ namespace prism {
 /// length, per channel (0: clear).
 template <Scalar T = float>
 struct Homogeneous {
+    /// The precision of the coefficients.
     using scalar_type = T;
 
-    Rgb<T> absorption{T(0)};
+    Rgb<T> absorption{T(0)}; ///< absorption coefficient per channel, per unit length
 
     /// exp(-absorption distance), per channel.
     [[nodiscard]] Rgb<T> transmittance(T distance) const noexcept { return beer_lambert(absorption, distance); }
 
+    /// Throws std::invalid_argument for a negative or non-finite absorption.
     constexpr void validate() const { detail::require_non_negative("Homogeneous absorption", absorption); }
 };
 
@@ -10989,28 +11304,37 @@ namespace prism {
 template <Scalar T = float, class Fresnel = ExactFresnel, Medium Interior = Homogeneous<T>>
     requires FresnelPolicy<Fresnel, T> && std::same_as<typename Interior::scalar_type, T>
 struct Dielectric {
+    /// The precision of the material.
     using scalar_type = T;
+    /// The Fresnel policy (ExactFresnel or SchlickFresnel).
     using fresnel_policy = Fresnel;
+    /// No diffuse lobe.
     static constexpr bool has_diffuse = false;
+    /// Reflects at the interface, by Fresnel.
     static constexpr bool reflects = true;
+    /// Transmits at the interface, by Fresnel.
     static constexpr bool transmits = true;
 
     T ior = T(1.5);      ///< the index of refraction inside
     Interior interior{}; ///< the medium that fills it
-    T kr = T(1);
-    T kt = T(1);
+    T kr = T(1); ///< Whitted's scale on the reflected ray
+    T kt = T(1); ///< Whitted's scale on the refracted ray
     int priority = 0; ///< where it overlaps another transmissive object, the higher priority's medium wins (medium/nesting.hpp)
 
     // Dielectric capabilities (DeltaTransmission, InteriorMedium)
 
+    /// The index of refraction inside.
     [[nodiscard]] constexpr T refractive_index() const noexcept { return ior; }
     /// Fresnel reflectance for the incident and refracted cosines and eta = n_t / n_i.
     [[nodiscard]] constexpr T fresnel(T cos_i, T cos_t, T eta) const noexcept { return Fresnel::reflectance(cos_i, cos_t, eta); }
     /// Whitted's kr on the reflected ray and kt on the refracted one, grey.
     [[nodiscard]] constexpr Rgb<T> reflection_tint() const noexcept { return Rgb<T>(kr); }
+    /// Grey: kt.
     [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(kt); }
+    /// The medium inside.
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior; }
 
+    /// Throws std::invalid_argument, naming the parameter, for ior <= 0, a bad interior, or a negative kr or kt.
     constexpr void validate() const
     {
         detail::require_positive("Dielectric ior", ior);
@@ -11057,10 +11381,13 @@ template <Texture X>
 /// One colour everywhere.
 template <Scalar T = float>
 struct Solid {
+    /// The precision of the colour.
     using scalar_type = T;
-    Rgb<T> color{T(0.75)};
+    Rgb<T> color{T(0.75)}; ///< the albedo everywhere
 
+    /// The albedo at any point: color.
     [[nodiscard]] constexpr Rgb<T> albedo(const Vec3<T>&) const noexcept { return color; }
+    /// Throws std::invalid_argument for a negative or non-finite colour.
     constexpr void validate() const { detail::require_non_negative("Solid color", color); }
 };
 
@@ -11068,11 +11395,13 @@ struct Solid {
 /// floor(x/size) + floor(y/size) + floor(z/size) is even.
 template <Scalar T = float>
 struct Checker {
+    /// The precision of the colours.
     using scalar_type = T;
-    Rgb<T> even{T(0.8)};
-    Rgb<T> odd{T(0.35)};
-    T size = T(1);
+    Rgb<T> even{T(0.8)}; ///< albedo of the even cells
+    Rgb<T> odd{T(0.35)}; ///< albedo of the odd cells
+    T size = T(1); ///< side of a cell
 
+    /// The albedo at p: even or odd by the parity of p's cell.
     [[nodiscard]] Rgb<T> albedo(const Vec3<T>& p) const noexcept
     {
         // Cells are half-open, so a point on a cell face belongs to exactly one cell. A
@@ -11084,6 +11413,7 @@ struct Checker {
         return std::floor(sum * T(0.5)) * T(2) == sum ? even : odd;
     }
 
+    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite colour or a size <= 0.
     constexpr void validate() const
     {
         detail::require_non_negative("Checker even", even);
@@ -11096,14 +11426,16 @@ struct Checker {
 /// where floor(u/size) + floor(v/size) is even (the square [0, size)^2 is even).
 template <Scalar T = float>
 struct UvChecker {
+    /// The precision of the colours.
     using scalar_type = T;
-    Rgb<T> even{T(0.8)};
-    Rgb<T> odd{T(0.35)};
-    T size = T(0.125);
+    Rgb<T> even{T(0.8)}; ///< albedo of the even squares
+    Rgb<T> odd{T(0.35)}; ///< albedo of the odd squares
+    T size = T(0.125); ///< side of a square in (u, v)
 
     /// Checker's cells in the plane (u, v, 0).
     [[nodiscard]] Rgb<T> albedo(const Vec3<T>&, const Vec2<T>& uv) const noexcept { return Checker<T>{even, odd, size}.albedo({uv.x, uv.y, T(0)}); }
 
+    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite colour or a size <= 0.
     constexpr void validate() const
     {
         detail::require_non_negative("UvChecker even", even);
@@ -11149,17 +11481,22 @@ template <Scalar T>
 /// non-physical highlight and off by default.
 template <Scalar T = float, Texture Albedo = Solid<T>>
 struct Diffuse {
+    /// The precision of the material.
     using scalar_type = T;
+    /// A diffuse lobe: albedo / pi.
     static constexpr bool has_diffuse = true;
+    /// No mirror reflection.
     static constexpr bool reflects = false;
+    /// No transmission.
     static constexpr bool transmits = false;
 
-    Albedo albedo{};
-    T kd = T(1);
-    T ka = T(1);
-    T phong = T(0);
-    T phong_size = T(40);
+    Albedo albedo{}; ///< the albedo texture (Solid, Checker, UvChecker or the user's)
+    T kd = T(1); ///< scale on light from the lights
+    T ka = T(1); ///< scale on the scene's ambient light
+    T phong = T(0); ///< POV-Ray's phong: the highlight's strength, 0 for none
+    T phong_size = T(40); ///< POV-Ray's phong_size: the highlight's exponent
 
+    /// The albedo at p (and uv, for textures in surface coordinates), with kd and ka.
     [[nodiscard]] constexpr DiffuseResponse<T> diffuse(const Vec3<T>& p, const Vec2<T>& uv) const noexcept { return {albedo_at(albedo, p, uv), kd, ka}; }
 
     /// The Phong highlight's weight for cos_alpha = R . L (0 when phong is 0 or the light
@@ -11170,6 +11507,7 @@ struct Diffuse {
         return phong * detail::power(cos_alpha, phong_size) / pi<T>;
     }
 
+    /// Throws std::invalid_argument, naming the parameter, for a bad albedo, a negative kd, ka or phong, or a phong_size <= 0.
     constexpr void validate() const
     {
         albedo.validate();
@@ -11208,10 +11546,12 @@ concept Dispersion = requires(const D& dispersion, typename D::scalar_type wavel
 ///   n^2 = 1 + sum_i B_i lambda^2 / (lambda^2 - C_i),  lambda in micrometres, C_i in um^2.
 template <Scalar T = double, std::size_t Terms = 3>
 struct Sellmeier {
+    /// The precision of the coefficients and the index.
     using scalar_type = T;
-    std::array<T, Terms> b{};
-    std::array<T, Terms> c{};
+    std::array<T, Terms> b{}; ///< B_i, dimensionless
+    std::array<T, Terms> c{}; ///< C_i, in square micrometres
 
+    /// The index at a vacuum wavelength in nanometres.
     [[nodiscard]] T index(T wavelength_nm) const noexcept
     {
         const T l2 = (wavelength_nm * T(1e-3)) * (wavelength_nm * T(1e-3));
@@ -11220,6 +11560,7 @@ struct Sellmeier {
         return std::sqrt(n2);
     }
 
+    /// Throws std::invalid_argument for a non-finite B or a C that is negative or NaN.
     constexpr void validate() const
     {
         for (std::size_t i = 0; i < Terms; ++i) {
@@ -11232,17 +11573,20 @@ struct Sellmeier {
 /// Cauchy's formula n = A + B / lambda^2 + C / lambda^4, lambda in micrometres.
 template <Scalar T = double>
 struct Cauchy {
+    /// The precision of the coefficients and the index.
     using scalar_type = T;
-    T a = T(1.5);
-    T b = T(0);
-    T c = T(0);
+    T a = T(1.5); ///< A, the index at infinite wavelength
+    T b = T(0); ///< B, in square micrometres
+    T c = T(0); ///< C, in micrometres to the fourth
 
+    /// The index at a vacuum wavelength in nanometres.
     [[nodiscard]] T index(T wavelength_nm) const noexcept
     {
         const T l2 = (wavelength_nm * T(1e-3)) * (wavelength_nm * T(1e-3));
         return a + b / l2 + c / (l2 * l2);
     }
 
+    /// Throws std::invalid_argument, naming the parameter, for A <= 0 or a non-finite B or C.
     constexpr void validate() const
     {
         detail::require_positive("Cauchy A", a);
@@ -11302,17 +11646,23 @@ namespace prism {
 template <Scalar T = float, Dispersion Glass = Sellmeier<double>, class Fresnel = ExactFresnel, Medium Interior = Homogeneous<T>>
     requires FresnelPolicy<Fresnel, T> && std::same_as<typename Interior::scalar_type, T>
 struct DispersiveDielectric {
+    /// The precision of the material.
     using scalar_type = T;
+    /// The Fresnel policy (ExactFresnel or SchlickFresnel).
     using fresnel_policy = Fresnel;
+    /// No diffuse lobe.
     static constexpr bool has_diffuse = false;
+    /// Reflects at the interface, by Fresnel.
     static constexpr bool reflects = true;
+    /// Transmits at the interface, by Fresnel.
     static constexpr bool transmits = true;
+    /// Splits white light into wavelength bands where it refracts.
     static constexpr bool disperses = true;
 
-    Glass glass = glass::bk7<typename Glass::scalar_type>;
-    Interior interior{};
-    T kr = T(1);
-    T kt = T(1);
+    Glass glass = glass::bk7<typename Glass::scalar_type>; ///< the glass's index against wavelength (Sellmeier or Cauchy)
+    Interior interior{}; ///< the medium inside (Beer-Lambert absorption)
+    T kr = T(1); ///< Whitted's scale on the reflected ray
+    T kt = T(1); ///< Whitted's scale on the refracted ray
     int priority = 0; ///< where it overlaps another transmissive object, the higher priority's medium wins (medium/nesting.hpp)
 
     /// The index at a vacuum wavelength in nanometres.
@@ -11322,11 +11672,16 @@ struct DispersiveDielectric {
     }
     /// The index for white light that is not split: n_d.
     [[nodiscard]] T refractive_index() const noexcept { return refractive_index(T(fraunhofer::d)); }
+    /// The Fresnel reflectance at the interface (eta = n_t / n_i).
     [[nodiscard]] constexpr T fresnel(T cos_i, T cos_t, T eta) const noexcept { return Fresnel::reflectance(cos_i, cos_t, eta); }
+    /// Grey: kr.
     [[nodiscard]] constexpr Rgb<T> reflection_tint() const noexcept { return Rgb<T>(kr); }
+    /// Grey: kt.
     [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(kt); }
+    /// The medium inside.
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior; }
 
+    /// Throws std::invalid_argument, naming the parameter, for a bad glass, an index <= 0 anywhere from 380 to 780 nm, a bad interior or a negative kr or kt.
     constexpr void validate() const
     {
         glass.validate();
@@ -11379,10 +11734,12 @@ struct FilmStack {
 /// Reflectance and transmittance by polarisation; the unpolarised values are their means.
 template <Scalar T>
 struct FilmResponse {
-    PolarisedReflectance<T> reflectance;
-    PolarisedReflectance<T> transmittance;
+    PolarisedReflectance<T> reflectance; ///< reflectance of s- and p-polarised light
+    PolarisedReflectance<T> transmittance; ///< transmittance of s- and p-polarised light
 
+    /// The unpolarised reflectance.
     [[nodiscard]] constexpr T reflected() const noexcept { return T(0.5) * (reflectance.s + reflectance.p); }
+    /// The unpolarised transmittance.
     [[nodiscard]] constexpr T transmitted() const noexcept { return T(0.5) * (transmittance.s + transmittance.p); }
 };
 
@@ -11465,12 +11822,17 @@ namespace prism {
 /// A film thickness that is the same everywhere, in nanometres.
 template <Scalar T = float>
 struct UniformThickness {
+    /// The precision of the thickness.
     using scalar_type = T;
-    T nm = T(300);
+    T nm = T(300); ///< the film's thickness in nanometres, everywhere
 
+    /// The thickness at any point: nm.
     [[nodiscard]] constexpr T at(const Vec3<T>&) const noexcept { return nm; }
+    /// The thinnest the film gets (nm), for the tables.
     [[nodiscard]] constexpr T lowest_nm() const noexcept { return nm; }
+    /// The thickest the film gets (nm), for the tables.
     [[nodiscard]] constexpr T highest_nm() const noexcept { return nm; }
+    /// Throws std::invalid_argument for a negative or non-finite thickness.
     constexpr void validate() const { detail::require_non_negative("UniformThickness nm", nm); }
 };
 
@@ -11480,19 +11842,24 @@ struct UniformThickness {
 template <Scalar T, class F>
     requires std::is_invocable_r_v<T, const F&, const Vec3<T>&>
 struct ThicknessTexture {
+    /// The precision of the thickness.
     using scalar_type = T;
-    F thickness;
-    T lowest = T(0);
-    T highest = T(1000);
+    F thickness; ///< thickness(p) in nanometres
+    T lowest = T(0); ///< the least thickness(p) can return (nm)
+    T highest = T(1000); ///< the most thickness(p) can return (nm)
 
+    /// The thickness at p: thickness(p), asserted within [lowest, highest].
     [[nodiscard]] T at(const Vec3<T>& p) const noexcept
     {
         const T d = thickness(p);
         PRISM_ASSERT(d >= lowest && d <= highest);
         return d;
     }
+    /// The thinnest the film gets (nm), for the tables.
     [[nodiscard]] constexpr T lowest_nm() const noexcept { return lowest; }
+    /// The thickest the film gets (nm), for the tables.
     [[nodiscard]] constexpr T highest_nm() const noexcept { return highest; }
+    /// Throws std::invalid_argument, naming the parameter, for a negative lowest, a non-finite highest or highest < lowest.
     constexpr void validate() const
     {
         detail::require_non_negative("ThicknessTexture lowest", lowest);
@@ -11565,6 +11932,7 @@ public:
         return a + (b - a) * fv;
     }
 
+    /// The number of tabulated reflectances (cosines x thicknesses).
     [[nodiscard]] std::size_t entries() const noexcept { return table_.size(); }
 
 private:
@@ -11583,6 +11951,7 @@ private:
 template <Scalar T = float, FilmThickness Thickness = UniformThickness<T>>
 class ThinFilmConductor {
 public:
+    /// A film over a measured metal (kept by reference: static data such as metals::gold, or the caller's, which must outlive it).
     ThinFilmConductor(T film_index, Thickness thickness, const metals::MeasuredIndex& substrate,
                       typename FilmTable<T>::Config config = {})
         : ThinFilmConductor(film_index, thickness, &substrate, {}, config)
@@ -11592,6 +11961,7 @@ public:
     /// It keeps a reference to a measured substrate (static data, or the user's): not a temporary.
     ThinFilmConductor(T, Thickness, const metals::MeasuredIndex&&, typename FilmTable<T>::Config = {}) = delete;
 
+    /// A film over a metal of one complex index n + ik at every wavelength.
     ThinFilmConductor(T film_index, Thickness thickness, std::complex<double> substrate, typename FilmTable<T>::Config config = {})
         : ThinFilmConductor(film_index, thickness, nullptr, substrate, config)
     {
@@ -11600,7 +11970,9 @@ public:
     /// The tabulated reflectance where the query's point is.
     [[nodiscard]] Rgb<T> reflectance(const SpecularQuery<T>& q) const noexcept { return table_(q.cos_i, thickness_.at(q.point)); }
 
+    /// The tabulated reflectance.
     [[nodiscard]] const FilmTable<T>& table() const noexcept { return table_; }
+    /// Nothing to check: the constructors refuse bad parameters.
     constexpr void validate() const {} // checked at construction
 
     /// The exact reflectance at one wavelength, for rays that carry one.
@@ -11608,6 +11980,7 @@ public:
     {
         return thin_film(FilmStack<double>{1.0, film_index_, d, substrate(lambda_nm)}, cos_i, lambda_nm).reflected();
     }
+    /// The reflectance at one wavelength, for a ray that carries one (dispersion).
     [[nodiscard]] T reflectance_at(const SpecularQuery<T>& q, T wavelength_nm) const noexcept
     {
         return T(spectral_reflectance(double(q.cos_i), double(wavelength_nm), double(thickness_.at(q.point))));
@@ -11646,11 +12019,16 @@ template <Scalar T = float, FilmThickness Thickness = UniformThickness<T>, Mediu
     requires std::same_as<typename Thickness::scalar_type, T> && std::same_as<typename Interior::scalar_type, T>
 class CoatedDielectric {
 public:
+    /// The precision of the material.
     using scalar_type = T;
+    /// No diffuse lobe.
     static constexpr bool has_diffuse = false;
+    /// Reflects (per channel, from the film).
     static constexpr bool reflects = true;
+    /// Transmits (1 - R per channel).
     static constexpr bool transmits = true;
 
+    /// The interface with index `ior` inside, coated outside with a film of index `film_index`; throws std::invalid_argument, naming the parameter, for an index <= 0 or a bad thickness.
     CoatedDielectric(T ior, T film_index, Thickness thickness, Interior interior = {}, typename FilmTable<T>::Config config = {})
         : ior_((detail::require_positive("CoatedDielectric ior", ior), ior)),
           film_index_((detail::require_positive("CoatedDielectric film_index", film_index), film_index)),
@@ -11662,6 +12040,7 @@ public:
 
     // Dielectric capabilities (DeltaTransmission, InteriorMedium)
 
+    /// The index inside.
     [[nodiscard]] constexpr T refractive_index() const noexcept { return ior_; }
     /// The film's reflectance per channel. Light arriving from inside reflects as much
     /// as light arriving from outside along its refracted path would: the stack absorbs
@@ -11672,10 +12051,15 @@ public:
     {
         return from_outside_(q.entering ? q.cos_i : q.cos_t, thickness_.at(q.point));
     }
+    /// White: the film's colour is in fresnel().
     [[nodiscard]] constexpr Rgb<T> reflection_tint() const noexcept { return Rgb<T>(T(1)); }
+    /// White: the film's colour is in fresnel().
     [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(T(1)); }
+    /// The medium inside.
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior_; }
+    /// Nothing to check: the constructor refuses bad parameters.
     constexpr void validate() const {} // checked at construction
+    /// The number of tabulated reflectances.
     [[nodiscard]] std::size_t table_entries() const noexcept { return from_outside_.entries(); }
 
     /// The film's exact reflectance at one wavelength, for light that carries one.

@@ -57,10 +57,13 @@ namespace prism {
 template <Scalar T, int Width = detail::default_bvh_width<T>>
 class Bvh {
 public:
+    /// The precision of the boxes.
     using scalar_type = T;
+    /// The tree's node type.
     using Node = BvhNode<T, Width>;
     /// The binary tree's depth bound; the wide tree is no deeper.
     static constexpr int max_depth = 48 + 32;
+    /// Children per node: 4, or 8 for float where the compiler targets AVX.
     static constexpr int width = Width;
 
     constexpr Bvh() = default;

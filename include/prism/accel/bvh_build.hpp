@@ -35,7 +35,7 @@ struct BvhConfig {
     int bins = 16;                       ///< SAH bins per axis (2 to 256), for BvhSplit::binned
     float traversal_cost = 1;            ///< C_trav, relative to one leaf test of leaf_block primitives
     int leaf_block = 1;                  ///< primitives a leaf tests at once (TriangleMesh: 4): n cost ceil(n / leaf_block) tests, and each leaf starts a block in leaf order
-    BvhSplit split = BvhSplit::binned;
+    BvhSplit split = BvhSplit::binned; ///< how splits are searched: binned SAH, or every split between neighbours (sweep)
     unsigned threads = 0;                ///< build threads (0: every hardware thread); the tree is the same for any number
 };
 

@@ -41,11 +41,13 @@ inline constexpr int default_bvh_width =
 template <Scalar T, int Width = detail::default_bvh_width<T>>
 struct alignas(64) BvhNode {
     static_assert(Width == 4 || Width == 8, "a BvhNode has 4 or 8 children");
+    /// Children per node.
     static constexpr int width = Width;
     std::array<std::array<T, width>, 6> bounds = empty_bounds(); ///< every lane unused until set
     std::array<std::uint32_t, width> first{}; ///< child node, or a leaf's first primitive
     std::array<std::uint32_t, width> count{}; ///< a leaf's primitives; 0 for a node (or unused)
 
+    /// Every lane's box empty (lo +inf, hi -inf): the bounds of a fresh node.
     [[nodiscard]] static constexpr std::array<std::array<T, width>, 6> empty_bounds() noexcept
     {
         std::array<std::array<T, width>, 6> b{};
@@ -53,13 +55,17 @@ struct alignas(64) BvhNode {
         return b;
     }
 
+    /// Whether child `lane` is a leaf.
     [[nodiscard]] constexpr bool leaf(int lane) const noexcept { return count[std::size_t(lane)] != 0; }
+    /// Whether child `lane` is in use (its box is not empty).
     [[nodiscard]] constexpr bool used(int lane) const noexcept { return bounds[0][std::size_t(lane)] <= bounds[3][std::size_t(lane)]; }
+    /// Child `lane`'s box.
     [[nodiscard]] constexpr Aabb<T> box(int lane) const noexcept
     {
         const auto c = std::size_t(lane);
         return {{bounds[0][c], bounds[1][c], bounds[2][c]}, {bounds[3][c], bounds[4][c], bounds[5][c]}};
     }
+    /// Make child `lane` the box `box` over a node (count_ 0, first_ its index) or a leaf (count_ primitives from first_).
     constexpr void set(int lane, const Aabb<T>& box, std::uint32_t first_, std::uint32_t count_) noexcept
     {
         const auto c = std::size_t(lane);

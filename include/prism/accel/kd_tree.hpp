@@ -43,12 +43,16 @@ concept PointSet = requires(const P& points, std::size_t i, std::size_t axis) {
 /// Points kept by the caller in a contiguous array of std::array<T, Dim>.
 template <Scalar T, std::size_t Dim>
 struct ArrayPoints {
+    /// The coordinates' type.
     using scalar_type = T;
+    /// The number of coordinates a point has.
     static constexpr std::size_t dimension = Dim;
 
-    std::span<const std::array<T, Dim>> points;
+    std::span<const std::array<T, Dim>> points; ///< the points, which the caller keeps alive
 
+    /// The number of points.
     [[nodiscard]] constexpr std::size_t size() const noexcept { return points.size(); }
+    /// Coordinate `axis` of point i.
     [[nodiscard]] constexpr T coordinate(std::size_t i, std::size_t axis) const noexcept { return points[i][axis]; }
 };
 
@@ -56,14 +60,15 @@ struct ArrayPoints {
 /// Trivially default-constructible, so a search's buffer costs nothing to set up.
 template <Scalar T>
 struct Neighbour {
-    T distance2;
-    std::uint32_t index;
+    T distance2; ///< the squared distance from the query
+    std::uint32_t index; ///< the point's index in the point set
 
     /// Nearer first; at equal distance, the lower index first.
     friend constexpr bool operator<(const Neighbour& a, const Neighbour& b) noexcept
     {
         return a.distance2 < b.distance2 || (a.distance2 == b.distance2 && a.index < b.index);
     }
+    /// Neighbours are equal when distance and index are.
     friend constexpr bool operator==(const Neighbour&, const Neighbour&) = default;
 };
 
@@ -109,7 +114,9 @@ public:
     [[nodiscard]] constexpr std::size_t size() const noexcept { return count_; }
     /// Whether k are kept: then the k-th nearest is farthest().
     [[nodiscard]] constexpr bool full() const noexcept { return count_ == k_; }
+    /// The first neighbour kept (in heap order, not sorted).
     [[nodiscard]] constexpr const Neighbour<T>* begin() const noexcept { return heap_; }
+    /// One past the last neighbour kept.
     [[nodiscard]] constexpr const Neighbour<T>* end() const noexcept { return heap_ + count_; }
     /// The farthest found (the heap's top); only when size() > 0.
     [[nodiscard]] constexpr const Neighbour<T>& farthest() const noexcept { return heap_[0]; }
@@ -145,6 +152,7 @@ private:
 template <Scalar T, class Visitor>
 class WithinRadius {
 public:
+    /// A search for every point within sqrt(radius2), each handed to `visit`, which must outlive the search.
     constexpr WithinRadius(T radius2, Visitor& visit) noexcept : radius2_(radius2), visit_(&visit) {}
 
     /// The radius squared, fixed.
@@ -160,12 +168,16 @@ private:
 /// The k nearest neighbours found, nearest first (fewer when the set is smaller).
 template <Scalar T, std::size_t K>
 struct NearestNeighbours {
-    std::array<Neighbour<T>, K> items;
-    std::size_t count = 0;
+    std::array<Neighbour<T>, K> items; ///< the neighbours, nearest first; the first `count` are valid
+    std::size_t count = 0; ///< how many were found
 
+    /// How many were found.
     [[nodiscard]] constexpr std::size_t size() const noexcept { return count; }
+    /// The i-th nearest.
     [[nodiscard]] constexpr const Neighbour<T>& operator[](std::size_t i) const noexcept { return items[i]; }
+    /// The nearest.
     [[nodiscard]] constexpr const Neighbour<T>* begin() const noexcept { return items.data(); }
+    /// One past the farthest found.
     [[nodiscard]] constexpr const Neighbour<T>* end() const noexcept { return items.data() + count; }
 };
 
@@ -176,10 +188,15 @@ class KdTree {
     static_assert(LeafSize >= 1, "a leaf holds at least one point");
 
 public:
+    /// The coordinates' type.
     using scalar_type = typename Points::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
+    /// The number of coordinates a point has.
     static constexpr std::size_t dimension = Points::dimension;
+    /// The most points a leaf holds.
     static constexpr std::size_t leaf_size = LeafSize;
+    /// A point, copied into tree order.
     using Point = std::array<T, dimension>;
 
     // KdTree Public Methods
@@ -222,6 +239,7 @@ public:
         points_ = std::move(ordered);
     }
 
+    /// The number of points.
     [[nodiscard]] constexpr std::size_t size() const noexcept { return points_.size(); }
 
     /// The point set's index of each point in tree order: a leaf's points are

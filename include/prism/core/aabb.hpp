@@ -14,16 +14,17 @@ namespace prism {
 /// where parallel light's photons start from.
 template <Scalar T>
 struct BoundingSphere {
-    Vec3<T> center{};
-    T radius = T(0);
+    Vec3<T> center{}; ///< the sphere's centre
+    T radius = T(0); ///< its radius
 };
 
 /// Axis-aligned box [lo, hi]; empty when lo > hi on any axis (the default).
 template <Scalar T>
 struct Aabb {
-    Vec3<T> lo{infinity<T>};
-    Vec3<T> hi{-infinity<T>};
+    Vec3<T> lo{infinity<T>}; ///< the least corner
+    Vec3<T> hi{-infinity<T>}; ///< the greatest corner
 
+    /// Whether the box holds no point (lo > hi on some axis, or NaN).
     [[nodiscard]] constexpr bool empty() const noexcept { return !(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z); }
 
     /// Every point: the bounds of an unbounded shape such as a half-space.
@@ -35,6 +36,7 @@ struct Aabb {
         return {component_min(lo, other.lo), component_max(hi, other.hi)};
     }
 
+    /// Whether p is in the box, faces included.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
     {
         return lo.x <= p.x && p.x <= hi.x && lo.y <= p.y && p.y <= hi.y && lo.z <= p.z && p.z <= hi.z;

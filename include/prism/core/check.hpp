@@ -27,7 +27,9 @@ namespace prism {
 /// that says what was asked for and how much memory it needs.
 class allocation_error : public std::bad_alloc {
 public:
+    /// An error that says what was asked for and how much memory it needed.
     explicit allocation_error(std::string message) : message_(std::move(message)) {}
+    /// The message given at construction.
     [[nodiscard]] const char* what() const noexcept override { return message_.c_str(); }
 
 private:

@@ -64,8 +64,10 @@ constexpr bool any_of(std::initializer_list<bool> values) noexcept
 /// A fixed list of values of the types Ts, item I read by get<I>(pack).
 template <class... Ts>
 struct Pack : detail::PackItems<std::index_sequence_for<Ts...>, Ts...> {
+    /// The number of items.
     static constexpr std::size_t size = sizeof...(Ts);
 
+    /// A pack of `values`, each moved into its item.
     constexpr explicit Pack(Ts... values) : detail::PackItems<std::index_sequence_for<Ts...>, Ts...>(std::move(values)...) {}
 
     /// f(item 0, item 1, ...), as std::apply.

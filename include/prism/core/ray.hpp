@@ -9,8 +9,8 @@ namespace prism {
 /// A ray. The direction need not be unit length: t is measured in multiples of it.
 template <Scalar T>
 struct Ray {
-    Vec3<T> origin{};
-    Vec3<T> direction{T(0), T(0), T(-1)};
+    Vec3<T> origin{}; ///< where the ray starts
+    Vec3<T> direction{T(0), T(0), T(-1)}; ///< where it goes, of any non-zero length: t counts multiples of it
 
     /// The point origin + t * direction.
     [[nodiscard]] constexpr Vec3<T> at(T t) const noexcept { return origin + t * direction; }

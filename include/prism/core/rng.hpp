@@ -19,6 +19,7 @@ class Pcg32 {
 public:
     constexpr Pcg32() noexcept : Pcg32(0x853c49e6748fea9bULL, 0xda3e39cb94b95bdbULL) {}
 
+    /// A generator at `seed` on stream `stream`: each pair gives its own sequence.
     constexpr Pcg32(std::uint64_t seed, std::uint64_t stream) noexcept : inc_((stream << 1u) | 1u)
     {
         next_u32();

@@ -49,6 +49,7 @@ public:
         abs_inverse_ = absolute(inverse_);
     }
 
+    /// Translation by `offset`.
     [[nodiscard]] static Transform translate(const Vec3<T>& offset)
     {
         detail::require_finite("Transform translate", offset);
@@ -70,8 +71,11 @@ public:
         detail::require_nonzero("Transform rotate axis", axis);
         return Transform(glm::rotate(Mat4<T>(T(1)), degrees * pi<T> / T(180), normalize(axis)));
     }
+    /// Rotation by `degrees` about x.
     [[nodiscard]] static Transform rotate_x(T degrees) { return rotate(degrees, {T(1), T(0), T(0)}); }
+    /// Rotation by `degrees` about y.
     [[nodiscard]] static Transform rotate_y(T degrees) { return rotate(degrees, {T(0), T(1), T(0)}); }
+    /// Rotation by `degrees` about z.
     [[nodiscard]] static Transform rotate_z(T degrees) { return rotate(degrees, {T(0), T(0), T(1)}); }
 
     /// This transform followed by `next`. Throws std::invalid_argument when the product
@@ -86,14 +90,21 @@ public:
         return Transform(product);
     }
 
+    /// The inverse transform.
     [[nodiscard]] Transform inverse() const { return Transform(inverse_, m_); }
 
+    /// The 4x4 matrix, acting on column vectors.
     [[nodiscard]] const Mat4<T>& matrix() const noexcept { return m_; }
+    /// The inverse's matrix.
     [[nodiscard]] const Mat4<T>& inverse_matrix() const noexcept { return inverse_; }
 
+    /// p transformed as a point.
     [[nodiscard]] Vec3<T> point(const Vec3<T>& p) const noexcept { return affine_point(m_, p); }
+    /// v transformed as a direction (no translation).
     [[nodiscard]] Vec3<T> vector(const Vec3<T>& v) const noexcept { return affine_vector(m_, v); }
+    /// p carried back by the inverse.
     [[nodiscard]] Vec3<T> inverse_point(const Vec3<T>& p) const noexcept { return affine_point(inverse_, p); }
+    /// v carried back by the inverse (no translation).
     [[nodiscard]] Vec3<T> inverse_vector(const Vec3<T>& v) const noexcept { return affine_vector(inverse_, v); }
     /// A surface normal maps by the inverse transpose (unnormalised).
     [[nodiscard]] Vec3<T> normal(const Vec3<T>& n) const noexcept

@@ -36,13 +36,18 @@ template <CsgOperation Op, Shape A, Shape B>
     requires std::same_as<typename A::scalar_type, typename B::scalar_type>
 class CsgNode {
 public:
+    /// The children's precision.
     using scalar_type = typename A::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
+    /// The CSG operation (UnionOp, IntersectionOp, DifferenceOp).
     using operation = Op;
+    /// The most crossings: the children's together.
     static constexpr std::size_t max_crossings = A::max_crossings + B::max_crossings;
 
     // CsgNode Public Methods
 
+    /// The node Op(a, b); its box is Op's of the children's boxes.
     constexpr CsgNode(A a, B b) : a_(std::move(a)), b_(std::move(b)), bounds_(Op::bounds(a_.bounds(), b_.bounds()))
     {
         bounded_ = bounds_.bounded();
@@ -55,12 +60,17 @@ public:
     {
     }
 
+    /// The first child.
     [[nodiscard]] constexpr const A& first() const noexcept { return a_; }
+    /// The second child.
     [[nodiscard]] constexpr const B& second() const noexcept { return b_; }
+    /// The box around the result (conservative: Op of the children's boxes).
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
 
+    /// Whether p is inside: Op of whether it is inside each child.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return Op::combine(a_.contains(p), b_.contains(p)); }
 
+    /// Every crossing of `ray` within `range`, sorted: the children's crossings merged, each kept where it changes whether the ray is inside the result (Roth 1982).
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {

@@ -10,7 +10,9 @@ namespace prism {
 struct DifferenceOp {
     /// The subtracted solid's surface bounds the result from the other side.
     static constexpr bool flips_second = true;
+    /// Inside the difference: inside a and not inside b.
     [[nodiscard]] static constexpr bool combine(bool a, bool b) noexcept { return a && !b; }
+    /// The difference lies within a's box.
     template <Scalar T>
     [[nodiscard]] static constexpr Aabb<T> bounds(const Aabb<T>& a, const Aabb<T>&) noexcept { return a; }
 };

@@ -8,8 +8,11 @@ namespace prism {
 
 /// The CSG operation A ∩ B: inside both.
 struct IntersectionOp {
+    /// The second solid's surface bounds the result from the same side as the first's.
     static constexpr bool flips_second = false;
+    /// Inside the intersection: inside both.
     [[nodiscard]] static constexpr bool combine(bool a, bool b) noexcept { return a && b; }
+    /// The intersection lies within both boxes' overlap.
     template <Scalar T>
     [[nodiscard]] static constexpr Aabb<T> bounds(const Aabb<T>& a, const Aabb<T>& b) noexcept { return detail::aabb_intersection(a, b); }
 };

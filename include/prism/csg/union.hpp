@@ -8,8 +8,11 @@ namespace prism {
 
 /// The CSG operation A ∪ B: inside either.
 struct UnionOp {
+    /// The second solid's surface bounds the result from the same side as the first's.
     static constexpr bool flips_second = false;
+    /// Inside the union: inside either.
     [[nodiscard]] static constexpr bool combine(bool a, bool b) noexcept { return a || b; }
+    /// The union lies within the box around both boxes.
     template <Scalar T>
     [[nodiscard]] static constexpr Aabb<T> bounds(const Aabb<T>& a, const Aabb<T>& b) noexcept { return detail::aabb_union(a, b); }
 };

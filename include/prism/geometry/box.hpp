@@ -12,7 +12,9 @@ namespace prism {
 template <Scalar T = float>
 class Box {
 public:
+    /// The precision of the corners and the crossings.
     using scalar_type = T;
+    /// At most two crossings: in and out.
     static constexpr std::size_t max_crossings = 2;
 
     // Box Public Methods
@@ -32,15 +34,20 @@ public:
         }
     }
 
+    /// The least corner.
     [[nodiscard]] constexpr const Vec3<T>& lo() const noexcept { return lo_; }
+    /// The greatest corner.
     [[nodiscard]] constexpr const Vec3<T>& hi() const noexcept { return hi_; }
+    /// The box itself, as an Aabb.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return {lo_, hi_}; }
 
+    /// Whether p is strictly inside (the faces are the surface).
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
     {
         return lo_.x < p.x && p.x < hi_.x && lo_.y < p.y && p.y < hi_.y && lo_.z < p.z && p.z < hi_.z;
     }
 
+    /// Every crossing of `ray` within `range` (at most two), sorted, by the slab test, with each hit point snapped onto its face.
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {

@@ -62,10 +62,11 @@ struct Crossing {
 /// The sorted boundary crossings of a ray within a range, at most N of them.
 template <Scalar T, std::size_t N>
 struct Crossings {
+    /// The most crossings the list can hold.
     static constexpr std::size_t capacity = N;
 
     std::array<Crossing<T>, N> items; ///< the first `count` are set; the rest are unwritten (zeros in a constant expression)
-    std::size_t count = 0;
+    std::size_t count = 0; ///< how many crossings are set
     bool inside_at_start = false; ///< the ray is inside the solid at the start of the range
 
     constexpr Crossings() noexcept
@@ -75,11 +76,17 @@ struct Crossings {
         if (std::is_constant_evaluated()) items = {};
     }
 
+    /// The number of crossings.
     [[nodiscard]] constexpr std::size_t size() const noexcept { return count; }
+    /// Whether the ray crosses no boundary in the range.
     [[nodiscard]] constexpr bool empty() const noexcept { return count == 0; }
+    /// The i-th crossing, nearest first.
     [[nodiscard]] constexpr const Crossing<T>& operator[](std::size_t i) const noexcept { return items[i]; }
+    /// The nearest crossing; only when not empty().
     [[nodiscard]] constexpr const Crossing<T>& front() const noexcept { return items[0]; }
+    /// The nearest crossing.
     [[nodiscard]] constexpr const Crossing<T>* begin() const noexcept { return items.data(); }
+    /// One past the farthest crossing.
     [[nodiscard]] constexpr const Crossing<T>* end() const noexcept { return items.data() + count; }
 
     /// Append a crossing at or after the last one.

@@ -13,7 +13,9 @@ namespace prism {
 template <Scalar T = float>
 class Plane {
 public:
+    /// The precision of the plane and the crossings.
     using scalar_type = T;
+    /// At most one crossing.
     static constexpr std::size_t max_crossings = 1;
 
     // Plane Public Methods
@@ -44,12 +46,17 @@ public:
         return Plane(n, dot(n, point));
     }
 
+    /// The outward unit normal.
     [[nodiscard]] constexpr const Vec3<T>& normal() const noexcept { return normal_; }
+    /// The solid is dot(normal(), p) < offset().
     [[nodiscard]] constexpr T offset() const noexcept { return offset_; }
+    /// Unbounded: every point.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return Aabb<T>::universe(); }
 
+    /// Whether p is inside: dot(normal, p) < offset.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return dot(normal_, p) < offset_; }
 
+    /// The crossing of `ray` within `range`, if it meets the plane there, with its point refined onto the plane.
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 1> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {

@@ -32,12 +32,23 @@ namespace prism {
 template <Scalar T = float>
 class Quadric {
 public:
+    /// The precision of the coefficients and the crossings.
     using scalar_type = T;
+    /// At most two crossings: the equation along a ray is of degree 2.
     static constexpr std::size_t max_crossings = 2;
 
     /// The ten coefficients of the form above (note the factors of 2 on mixed and linear terms).
     struct Coefficients {
-        T a = 0, b = 0, c = 0, d = 0, e = 0, f = 0, g = 0, h = 0, i = 0, j = 0;
+        T a = 0; ///< the a of a x^2
+        T b = 0; ///< the b of 2b xy
+        T c = 0; ///< the c of 2c xz
+        T d = 0; ///< the d of 2d x
+        T e = 0; ///< the e of e y^2
+        T f = 0; ///< the f of 2f yz
+        T g = 0; ///< the g of 2g y
+        T h = 0; ///< the h of h z^2
+        T i = 0; ///< the i of 2i z
+        T j = 0; ///< the constant term
     };
 
     // Quadric Public Methods
@@ -175,6 +186,7 @@ public:
     /// The coefficients as given, relative to origin(). (Crossings are computed from a
     /// copy scaled by a power of two so that the largest is in [1, 2): the same surface.)
     [[nodiscard]] constexpr const Coefficients& coefficients() const noexcept { return given_; }
+    /// The point the coefficients are relative to (their own origin, for precision far from the world's).
     [[nodiscard]] constexpr const Vec3<T>& origin() const noexcept { return origin_; }
 
     /// Q in world coordinates (computed in T, so rounded for a far-away origin).
@@ -197,11 +209,13 @@ public:
         return T(2) * (times_q3(given_, p - origin_) + Vec3<T>(given_.d, given_.g, given_.i));
     }
 
+    /// Whether p is inside: F(p) < 0.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return evaluate_local(p - origin_) < T(0); }
 
     /// An ellipsoid's box; Aabb::universe() for unbounded quadrics.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
 
+    /// Every crossing of `ray` within `range`, sorted, each entering or leaving by the sign of the gradient along the ray.
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {

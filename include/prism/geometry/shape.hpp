@@ -83,10 +83,10 @@ template <Shape S>
 /// and barycentric weights at which its ray met it (in the shape's own frame).
 template <Scalar T>
 struct SurfaceHint {
-    std::uint32_t index = 0;
-    T t = 0;
+    std::uint32_t index = 0; ///< the triangle found (a mesh's leaf-order index)
+    T t = 0; ///< where along the ray
     std::array<T, 3> b{}; ///< all zero: nothing found, search again
-    bool entering = false;
+    bool entering = false; ///< whether the ray enters the solid there
 };
 
 /// A shape whose lean query names what it found (a mesh: the triangle, where it was

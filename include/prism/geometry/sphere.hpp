@@ -14,7 +14,9 @@ namespace prism {
 template <Scalar T = float>
 class Sphere {
 public:
+    /// The precision of the sphere and the crossings.
     using scalar_type = T;
+    /// At most two crossings: in and out.
     static constexpr std::size_t max_crossings = 2;
 
     // Sphere Public Methods
@@ -28,7 +30,9 @@ public:
         detail::require_length("Sphere radius", radius);
     }
 
+    /// The centre.
     [[nodiscard]] constexpr const Vec3<T>& center() const noexcept { return center_; }
+    /// The radius.
     [[nodiscard]] constexpr T radius() const noexcept { return radius_; }
 
     /// Its own sphere, the radius grown by 16 epsilon for rounding: tighter than the
@@ -38,16 +42,19 @@ public:
         return {center_, radius_ * (T(1) + T(16) * std::numeric_limits<T>::epsilon())};
     }
 
+    /// The box around the sphere, rounded outward.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept
     {
         return Aabb<T>{center_ - Vec3<T>(radius_), center_ + Vec3<T>(radius_)}.rounded_out();
     }
 
+    /// Whether p is strictly inside.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
     {
         return length_squared(p - center_) < radius_ * radius_;
     }
 
+    /// Every crossing of `ray` within `range` (at most two), sorted, the roots taken from the ray's closest approach to the centre (Haines et al. 2019, "Precision improvements for ray/sphere intersection").
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, 2> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
@@ -73,6 +80,7 @@ public:
         return range.surrounds(r.t0) ? r.t0 : (range.surrounds(r.t1) ? r.t1 : infinity<T>);
     }
 
+    /// Whether the ray crosses the sphere within `range` (a shadow ray's query).
     [[nodiscard]] constexpr bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         return first_crossing(ray, range) < infinity<T>;

@@ -18,26 +18,35 @@ namespace prism {
 template <Shape S>
 class Transformed {
 public:
+    /// The shape's precision.
     using scalar_type = typename S::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
+    /// As many crossings as the shape has.
     static constexpr std::size_t max_crossings = S::max_crossings;
 
     // Transformed Public Methods
 
+    /// `shape` moved into the world by `to_world`.
     Transformed(S shape, const Transform<T>& to_world) : shape_(std::move(shape)), to_world_(to_world), bounds_(world_bounds())
     {
         bounded_ = bounds_.bounded();
     }
 
+    /// The shape, in its own frame.
     [[nodiscard]] const S& shape() const noexcept { return shape_; }
+    /// The transform from the shape's frame to the world.
     [[nodiscard]] const Transform<T>& transform() const noexcept { return to_world_; }
+    /// The world box around the shape's transformed box, rounded outward.
     [[nodiscard]] Aabb<T> bounds() const noexcept { return bounds_; }
 
+    /// Whether world point p is inside the shape.
     [[nodiscard]] bool contains(const Vec3<T>& p) const noexcept
     {
         return shape_.contains(to_world_.inverse_point(p));
     }
 
+    /// Every crossing of the world `ray` within `range`: the shape's, in the shape's frame, carried back with normals by the inverse transpose and error bounds through the matrix.
     template <bool Surface = true>
     [[nodiscard]] Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
@@ -67,6 +76,7 @@ public:
         return first_crossing_with(ray, range, unused);
     }
 
+    /// Whether the ray crosses the shape within `range` (a shadow ray's query).
     [[nodiscard]] bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
     {
         return first_crossing(ray, range) < infinity<T>;

@@ -58,8 +58,8 @@ using TriangleIndices = std::array<std::uint32_t, 3>;
 /// normal and surface coordinates per position: what a TriangleMesh is built from.
 template <Scalar T>
 struct MeshBuffers {
-    std::vector<Vec3<T>> positions;
-    std::vector<TriangleIndices> triangles;
+    std::vector<Vec3<T>> positions; ///< the vertices
+    std::vector<TriangleIndices> triangles; ///< three indices into positions per triangle
     std::vector<Vec3<T>> normals; ///< per position, pointing out, or empty (shade flat)
     std::vector<Vec2<T>> uvs;     ///< per position, or empty (uv (0, 0))
 };
@@ -78,14 +78,16 @@ struct MeshData {
 
 } // namespace detail
 
-/// A mesh of triangles with its own Bvh (N triangles a leaf at most): a closed solid or an open
+/// A mesh of triangles with its own Bvh, reporting the nearest N crossings: a closed solid or an open
 /// surface. Copies share the mesh, so Transformed copies are instances.
 template <Scalar T = float, std::size_t N = 8>
 class TriangleMesh {
     static_assert(N >= 2 && N <= 64, "a TriangleMesh reports 2 to 64 crossings");
 
 public:
+    /// The precision of the vertices and the crossings.
     using scalar_type = T;
+    /// The most crossings a query reports: the nearest N (a CSG node or a shadow ray through glass sees only those).
     static constexpr std::size_t max_crossings = N;
 
     /// The Bvh settings a mesh is built with unless given others: its leaves are tested
@@ -157,6 +159,7 @@ public:
         data_ = std::move(data);
     }
 
+    /// The mesh of `positions` and `triangles`, without normals or uvs; throws as the span constructor does.
     TriangleMesh(const std::vector<Vec3<T>>& positions, const std::vector<TriangleIndices>& triangles, BvhConfig config = bvh_config())
         : TriangleMesh(std::span<const Vec3<T>>(positions), std::span<const TriangleIndices>(triangles), config)
     {
@@ -169,11 +172,17 @@ public:
     {
     }
 
+    /// Whether every directed edge is matched by its reverse once (a closed solid with an inside), found at construction.
     [[nodiscard]] bool closed() const noexcept { return data_->closed; }
+    /// Whether the mesh has vertex normals (smooth shading).
     [[nodiscard]] bool has_normals() const noexcept { return !data_->normals.empty(); }
+    /// Whether the mesh has surface coordinates.
     [[nodiscard]] bool has_uvs() const noexcept { return !data_->uvs.empty(); }
+    /// The number of triangles.
     [[nodiscard]] std::size_t triangle_count() const noexcept { return data_->bvh.size(); }
+    /// The mesh's own Bvh over its triangles.
     [[nodiscard]] const Bvh<T>& bvh() const noexcept { return data_->bvh; }
+    /// The box around every vertex.
     [[nodiscard]] Aabb<T> bounds() const noexcept { return data_->bounds; }
     /// Bytes held by the shared data (corner blocks, normals, uvs, Bvh), for every
     /// copy together.
@@ -244,6 +253,7 @@ public:
         });
     }
 
+    /// Every crossing of `ray` within `range` (at most N), sorted, by the watertight ray-triangle test.
     template <bool Surface = true>
     [[nodiscard]] Crossings<T, N> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {

@@ -42,7 +42,7 @@ namespace prism {
 /// What a gather over the hemisphere found.
 template <Scalar T>
 struct HemisphereGather {
-    Rgb<T> irradiance{T(0)};
+    Rgb<T> irradiance{T(0)}; ///< the irradiance E, per channel
     std::array<Rgb<T>, 3> rotational{};    ///< d E / d (rotation about axis a): per axis a, per channel
     std::array<Rgb<T>, 3> translational{}; ///< d E / d x_a: per axis a, per channel
     T nearest = infinity<T>;               ///< the nearest hit of rays at least 10 degrees above the tangent plane
@@ -122,18 +122,23 @@ template <bool Gradients, Scalar T, class Sample>
 /// One cached gather.
 template <Scalar T>
 struct IrradianceRecord {
-    Vec3<T> p{}, n{};
-    HemisphereGather<T> gather{};
+    Vec3<T> p{}; ///< where the gather was taken
+    Vec3<T> n{}; ///< the surface's normal there
+    HemisphereGather<T> gather{}; ///< the gather: E and its gradients
     T radius = T(0); ///< R: how far E may be carried
 };
 
 /// The positions of a cache's records, as a PointSet for the KdTree.
 template <Scalar T>
 struct RecordPositions {
+    /// The coordinates' type.
     using scalar_type = T;
+    /// Positions in 3-D.
     static constexpr std::size_t dimension = 3;
-    std::span<const IrradianceRecord<T>> records;
+    std::span<const IrradianceRecord<T>> records; ///< the cache's records
+    /// The number of records.
     [[nodiscard]] std::size_t size() const noexcept { return records.size(); }
+    /// Coordinate `axis` of record i's position.
     [[nodiscard]] T coordinate(std::size_t i, std::size_t axis) const noexcept { return records[i].p[int(axis)]; }
 };
 
@@ -146,9 +151,12 @@ public:
     static constexpr T normal_scale = T(0.1321); // sqrt(1 - 0.98481)
 
     IrradianceCache() = default;
+    /// An empty cache whose records reach R / accuracy (kappa), with or without gradients.
     explicit IrradianceCache(T accuracy, bool gradients = true) : accuracy_(accuracy), gradients_(gradients) {}
 
+    /// The number of records.
     [[nodiscard]] std::size_t size() const noexcept { return records_.size(); }
+    /// The records, in the order they were added.
     [[nodiscard]] const std::vector<IrradianceRecord<T>>& records() const noexcept { return records_; }
 
     /// Add records (in the order given: the cache is then the same for any thread count

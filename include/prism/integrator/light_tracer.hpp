@@ -56,9 +56,12 @@ struct LightTracerConfig {
 template <class SceneT, class Air = StraightAir>
 class LightTracer {
 public:
+    /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
 
+    /// A light tracer of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
     explicit LightTracer(const SceneT& scene, LightTracerConfig config = {}, Air air = {}) : scene_(&scene), config_(config), air_(std::move(air))
     {
         scene.validate();
@@ -70,6 +73,7 @@ public:
     }
     LightTracer(const SceneT&& scene, LightTracerConfig config = {}, Air air = {}) = delete;
 
+    /// The settings.
     [[nodiscard]] const LightTracerConfig& config() const noexcept { return config_; }
 
     /// Passes config.passes of config.spp (render/render.hpp's PassEstimator).

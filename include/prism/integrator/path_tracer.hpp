@@ -34,7 +34,9 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class PathTracer {
 public:
+    /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
 
     /// A PathTracer's settings.
@@ -49,6 +51,7 @@ public:
         int dispersion_bands = SpectralBands<float>::max_count;
     };
 
+    /// A path tracer of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
     explicit PathTracer(const SceneT& scene, Config config = {}, Air air = {})
         : scene_(&scene), config_(config), bands_(checked_bands(config.dispersion_bands)), air_(std::move(air))
     {
@@ -82,6 +85,7 @@ public:
 
     /// The scene and the air its camera rays start in (render_layers' surface layers).
     [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
+    /// The air camera rays start in.
     [[nodiscard]] const Air& air() const noexcept { return air_; }
 
 private:

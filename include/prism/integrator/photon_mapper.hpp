@@ -53,7 +53,9 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class PhotonMapper {
 public:
+    /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
 
     /// A PhotonMapper's settings: photon tracing, the two maps' estimates, the final gather,
@@ -75,14 +77,14 @@ public:
             float accuracy = 1.0f;    ///< kappa: a record reaches R / kappa (and 10 degrees / kappa of normal)
             float min_pixels = 3.0f;  ///< R at least this many pixel footprints
             float max_pixels = 40.0f; ///< and at most this many
-            bool gradients = true;
-        } irradiance_cache{};
+            bool gradients = true; ///< interpolate with the records' rotational and translational gradients
+        } irradiance_cache{}; ///< see IrradianceCaching
         /// > 0: look at this many nearest global photons (within global.radius) before a
         /// shadow ray, and skip it when they agree. Scenes with one light only: shadow
         /// photons do not say which light they block.
         std::size_t visibility_k = 0;
-        int max_depth = 10;
-        T min_weight = T(1e-3);
+        int max_depth = 10; ///< surfaces a camera path may meet
+        T min_weight = T(1e-3); ///< a branch whose weight on the pixel falls below this ends (Hall and Greenberg 1983)
         /// Wavelength bands white camera rays split into at a dispersive interface (as
         /// Whitted's); photons take their own wavelengths (PhotonTracerConfig).
         int dispersion_bands = 8;
@@ -132,9 +134,12 @@ public:
     /// The final gather reads irradiance precomputed at every precomputed_stride-th global
     /// photon from its precomputed_k nearest (PhotonMap::precompute_irradiance), which the
     /// constructor works out unless the maps it is given have it already.
-    static constexpr std::size_t precomputed_k = 64, precomputed_stride = 4;
+    static constexpr std::size_t precomputed_k = 64;     ///< photons per precomputed estimate
+    static constexpr std::size_t precomputed_stride = 4; ///< every this many global photons gets one
 
+    /// The photon maps.
     [[nodiscard]] const PhotonMaps& maps() const noexcept { return maps_; }
+    /// The irradiance cache (empty until cache_irradiance()).
     [[nodiscard]] const IrradianceCache<T>& irradiance_cache() const noexcept { return cache_; }
 
     /// Build the irradiance cache for what `camera` sees at `render`'s size, before
@@ -194,6 +199,7 @@ public:
         }
     }
 
+    /// The radiance along a camera ray: direct, caustic and indirect light summed.
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return radiance_parts(ray, rng).sum(); }
 
     /// The radiance along a camera ray by where its light came from last: the lights by
@@ -202,6 +208,7 @@ public:
 
     /// The scene and the air its camera rays start in (render_layers' surface layers).
     [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
+    /// The air camera rays start in.
     [[nodiscard]] const Air& air() const noexcept { return air_; }
 
     /// What the nearest global photons say about the light's visibility at p (normal n

@@ -68,10 +68,14 @@ struct ProgressiveConfig {
 template <class SceneT, class Air = StraightAir>
 class ProgressivePhotonMapper {
 public:
+    /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
+    /// The settings' type.
     using Config = ProgressiveConfig<SceneT, Air>;
 
+    /// Progressive photon mapping of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
     explicit ProgressivePhotonMapper(const SceneT& scene, Config config = {}, Air air = {}) : scene_(&scene), config_(config), air_(std::move(air))
     {
         scene.validate();
@@ -87,6 +91,7 @@ public:
     }
     ProgressivePhotonMapper(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
 
+    /// The settings.
     [[nodiscard]] const Config& config() const noexcept { return config_; }
 
     /// Passes config.passes of config.spp, each of `samples` samples per pixel, in order;

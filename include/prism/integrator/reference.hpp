@@ -23,7 +23,9 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class Reference {
 public:
+    /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
 
     /// A Reference's settings, shared by its two halves.
@@ -34,6 +36,7 @@ public:
         int max_diffuse_bounces = 256;
     };
 
+    /// The reference for `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
     explicit Reference(const SceneT& scene, Config config = {}, Air air = {})
         : scene_(&scene), config_(config), air_(std::move(air)), paths_(scene, {.max_diffuse_bounces = config.max_diffuse_bounces}, air_)
     {

@@ -35,7 +35,9 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class Whitted {
 public:
+    /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
 
     /// A Whitted integrator's settings.
@@ -47,6 +49,7 @@ public:
         int dispersion_bands = 8;
     };
 
+    /// A Whitted integrator of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
     explicit Whitted(const SceneT& scene, Config config = {}, Air air = {})
         : scene_(&scene), config_(config), bands_(config.dispersion_bands), air_(std::move(air))
     {
@@ -61,12 +64,15 @@ public:
 
     /// Radiance arriving along the ray (its direction must be unit length).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
+    /// Radiance arriving along the ray; Whitted draws no random numbers.
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
 
     /// The scene and the air its camera rays start in (render_layers' surface layers).
     [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
+    /// The air camera rays start in.
     [[nodiscard]] const Air& air() const noexcept { return air_; }
 
+    /// The settings.
     [[nodiscard]] const Config& config() const noexcept { return config_; }
 
 private:

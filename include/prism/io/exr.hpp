@@ -41,17 +41,18 @@ namespace prism {
 
 /// One channel of an ExrImage: its values over the data window, row by row from the top.
 struct ExrChannel {
-    std::string name;
-    std::variant<std::vector<float>, std::vector<std::uint32_t>> values;
+    std::string name; ///< the channel's name: R, G, B, A, albedo.R, ...
+    std::variant<std::vector<float>, std::vector<std::uint32_t>> values; ///< its values: FLOAT or UINT
 };
 
 /// An EXR file as prism writes and reads it: FLOAT and UINT channels over `window` (the
 /// data window) of a width x height image (the display window), and string attributes.
 struct ExrImage {
-    int width = 0, height = 0;
-    PixelWindow window{};
-    std::vector<ExrChannel> channels;
-    std::map<std::string, std::string> attributes;
+    int width = 0;  ///< the display window's width
+    int height = 0; ///< the display window's height
+    PixelWindow window{}; ///< the data window, inside the display window
+    std::vector<ExrChannel> channels; ///< the channels, in the file's order
+    std::map<std::string, std::string> attributes; ///< string attributes (prism.settings and the rest)
 
     /// The channel named `name`, or nullptr.
     [[nodiscard]] const ExrChannel* find(const std::string& name) const noexcept

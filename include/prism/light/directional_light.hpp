@@ -11,11 +11,13 @@ namespace prism {
 /// Parallel light travelling along `direction`, with irradiance E on a surface facing it.
 template <Scalar T = float>
 struct DirectionalLight {
+    /// The precision of the light.
     using scalar_type = T;
 
-    Vec3<T> direction{T(0), T(-1), T(0)};
-    Rgb<T> irradiance{T(1)};
+    Vec3<T> direction{T(0), T(-1), T(0)}; ///< the direction the light travels
+    Rgb<T> irradiance{T(1)}; ///< the irradiance on a surface facing it (W/m^2)
 
+    /// The light arriving at any point: from -direction, from infinitely far, with the irradiance.
     [[nodiscard]] LightSample<T> sample(const Vec3<T>&) const noexcept
     {
         return {-normalize(direction), infinity<T>, irradiance};
@@ -41,6 +43,7 @@ struct DirectionalLight {
         return {{uniform_disk(sphere.center - upstream * axis, axis, sphere.radius, u, v), axis}};
     }
 
+    /// Throws std::invalid_argument, naming the parameter, for a zero or non-finite direction or a negative irradiance.
     constexpr void validate() const
     {
         detail::require_nonzero("DirectionalLight direction", direction);

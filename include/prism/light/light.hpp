@@ -24,8 +24,8 @@ struct LightSample {
 /// none): a light from infinitely far away starts its photons just outside it.
 template <Scalar T>
 struct PhotonAim {
-    const BoundingSphere<T>* target = nullptr;
-    const BoundingSphere<T>* scene = nullptr;
+    const BoundingSphere<T>* target = nullptr; ///< a specular object's bounding sphere to aim at, or null: everywhere
+    const BoundingSphere<T>* scene = nullptr; ///< the sphere around every bounded object, or null
 };
 
 /// One photon leaving a light: its ray, a weight on the power the tracer gives it (1
@@ -34,9 +34,9 @@ struct PhotonAim {
 /// the path it travelled when it is stored, as POV-Ray does for `fade_power 0`).
 template <Scalar T>
 struct EmittedPhoton {
-    Ray<T> ray;
-    Rgb<T> weight{T(1)};
-    bool without_falloff = false;
+    Ray<T> ray; ///< where the photon starts and where it goes
+    Rgb<T> weight{T(1)}; ///< the weight on the power the tracer gives it
+    bool without_falloff = false; ///< whether the light does not fall off with distance
 };
 
 /// A light: `sample(p)`, what arrives at a shading point; `photon_power(aim)`, the power

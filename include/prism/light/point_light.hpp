@@ -16,15 +16,17 @@ enum class Falloff {
 /// A point light of radiant intensity I (W/sr, per channel); its power is 4 pi I.
 template <Scalar T = float>
 struct PointLight {
+    /// The precision of the light.
     using scalar_type = T;
 
-    Vec3<T> position{};
-    Rgb<T> intensity{T(1)};
-    Falloff falloff = Falloff::inverse_square;
+    Vec3<T> position{}; ///< where the light is
+    Rgb<T> intensity{T(1)}; ///< radiant intensity per channel (W/sr)
+    Falloff falloff = Falloff::inverse_square; ///< inverse-square (physical) or none (POV-Ray's `fade_power 0`)
 
     /// Radiant power Phi = 4 pi I.
     [[nodiscard]] constexpr Rgb<T> power() const noexcept { return T(4) * pi<T> * intensity; }
 
+    /// The light arriving at p: its direction, distance and irradiance I / r^2 (I without falloff).
     [[nodiscard]] LightSample<T> sample(const Vec3<T>& p) const noexcept
     {
         const Vec3<T> to_light = position - p;
@@ -54,6 +56,7 @@ struct PointLight {
         return {{position, direction}, Rgb<T>(T(1)), without_falloff};
     }
 
+    /// Throws std::invalid_argument, naming the parameter, for a non-finite position or a negative intensity.
     constexpr void validate() const
     {
         detail::require_finite("PointLight position", position);

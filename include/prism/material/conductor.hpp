@@ -16,9 +16,11 @@ namespace prism {
 /// Reflectance independent of angle (the common approximation for metals, as in Whitted 1980).
 template <Scalar T = float>
 struct ConstantKr {
-    Rgb<T> kr{T(1)};
+    Rgb<T> kr{T(1)}; ///< the reflectance at every angle
 
+    /// The reflectance: kr at any angle.
     [[nodiscard]] constexpr Rgb<T> reflectance(T) const noexcept { return kr; }
+    /// Throws std::invalid_argument for a negative or non-finite kr.
     constexpr void validate() const { detail::require_non_negative("ConstantKr kr", kr); }
 };
 
@@ -28,6 +30,7 @@ struct ComplexIor {
     Rgb<T> eta{T(1)}; ///< real part n
     Rgb<T> k{T(0)};   ///< extinction coefficient
 
+    /// The unpolarised Fresnel reflectance per channel at incidence cosine cos_i.
     [[nodiscard]] Rgb<T> reflectance(T cos_i) const noexcept
     {
         return {fresnel_conductor(cos_i, std::complex<T>(eta.x, k.x)),
@@ -35,6 +38,7 @@ struct ComplexIor {
                 fresnel_conductor(cos_i, std::complex<T>(eta.z, k.z))};
     }
 
+    /// Throws std::invalid_argument, naming the parameter, for eta <= 0 or non-finite in a channel, or a negative k.
     constexpr void validate() const
     {
         detail::require_finite("ComplexIor eta", eta);
@@ -53,8 +57,10 @@ struct ComplexIor {
 template <Scalar T = float>
 class MeasuredConductor {
 public:
+    /// The incident cosines at which the reflectance is tabulated.
     static constexpr int table_size = 129;
 
+    /// The reflectance of `index` (kept by reference: static data such as metals::gold, or the caller's, which must outlive it) integrated over the spectrum.
     explicit MeasuredConductor(const metals::MeasuredIndex& index) : index_(&index)
     {
         for (int i = 0; i < metals::MeasuredIndex::count; ++i) {
@@ -94,7 +100,9 @@ public:
     /// The exact reflectance at the query's cosine and one wavelength.
     [[nodiscard]] T reflectance_at(const SpecularQuery<T>& q, T wavelength_nm) const noexcept { return spectral_reflectance(q.cos_i, wavelength_nm); }
 
+    /// The measured index.
     [[nodiscard]] constexpr const metals::MeasuredIndex& index() const noexcept { return *index_; }
+    /// Nothing to check: the constructor reads the measured data.
     constexpr void validate() const {}
 
 private:
@@ -107,18 +115,24 @@ private:
 /// makes the conductor's reflectance vary over the surface.
 template <Scalar T = float, class Fresnel = ConstantKr<T>>
 struct Conductor {
+    /// The precision of the material.
     using scalar_type = T;
+    /// No diffuse lobe.
     static constexpr bool has_diffuse = false;
+    /// Reflects, by the Fresnel policy.
     static constexpr bool reflects = true;
+    /// Transmits nothing.
     static constexpr bool transmits = false;
 
-    Fresnel fresnel{};
+    Fresnel fresnel{}; ///< the reflectance policy: ConstantKr, ComplexIor, MeasuredConductor, ThinFilmConductor or the user's
 
+    /// The reflectance at incidence cosine cos_i, where the policy depends on the angle alone.
     [[nodiscard]] Rgb<T> reflectance(T cos_i) const noexcept
         requires requires(const Fresnel& f, T c) { f.reflectance(c); }
     {
         return fresnel.reflectance(cos_i);
     }
+    /// The reflectance for a query (point, side, cosines), where the policy varies over the surface.
     [[nodiscard]] Rgb<T> reflectance(const SpecularQuery<T>& query) const noexcept
         requires requires(const Fresnel& f, const SpecularQuery<T>& q) { f.reflectance(q); }
     {
@@ -131,6 +145,7 @@ struct Conductor {
     {
         return fresnel.reflectance_at(query, wavelength_nm);
     }
+    /// Checks the Fresnel policy's parameters.
     constexpr void validate() const { fresnel.validate(); }
 };
 

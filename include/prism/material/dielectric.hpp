@@ -17,28 +17,37 @@ namespace prism {
 template <Scalar T = float, class Fresnel = ExactFresnel, Medium Interior = Homogeneous<T>>
     requires FresnelPolicy<Fresnel, T> && std::same_as<typename Interior::scalar_type, T>
 struct Dielectric {
+    /// The precision of the material.
     using scalar_type = T;
+    /// The Fresnel policy (ExactFresnel or SchlickFresnel).
     using fresnel_policy = Fresnel;
+    /// No diffuse lobe.
     static constexpr bool has_diffuse = false;
+    /// Reflects at the interface, by Fresnel.
     static constexpr bool reflects = true;
+    /// Transmits at the interface, by Fresnel.
     static constexpr bool transmits = true;
 
     T ior = T(1.5);      ///< the index of refraction inside
     Interior interior{}; ///< the medium that fills it
-    T kr = T(1);
-    T kt = T(1);
+    T kr = T(1); ///< Whitted's scale on the reflected ray
+    T kt = T(1); ///< Whitted's scale on the refracted ray
     int priority = 0; ///< where it overlaps another transmissive object, the higher priority's medium wins (medium/nesting.hpp)
 
     // Dielectric capabilities (DeltaTransmission, InteriorMedium)
 
+    /// The index of refraction inside.
     [[nodiscard]] constexpr T refractive_index() const noexcept { return ior; }
     /// Fresnel reflectance for the incident and refracted cosines and eta = n_t / n_i.
     [[nodiscard]] constexpr T fresnel(T cos_i, T cos_t, T eta) const noexcept { return Fresnel::reflectance(cos_i, cos_t, eta); }
     /// Whitted's kr on the reflected ray and kt on the refracted one, grey.
     [[nodiscard]] constexpr Rgb<T> reflection_tint() const noexcept { return Rgb<T>(kr); }
+    /// Grey: kt.
     [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(kt); }
+    /// The medium inside.
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior; }
 
+    /// Throws std::invalid_argument, naming the parameter, for ior <= 0, a bad interior, or a negative kr or kt.
     constexpr void validate() const
     {
         detail::require_positive("Dielectric ior", ior);

@@ -35,17 +35,22 @@ template <Scalar T>
 /// non-physical highlight and off by default.
 template <Scalar T = float, Texture Albedo = Solid<T>>
 struct Diffuse {
+    /// The precision of the material.
     using scalar_type = T;
+    /// A diffuse lobe: albedo / pi.
     static constexpr bool has_diffuse = true;
+    /// No mirror reflection.
     static constexpr bool reflects = false;
+    /// No transmission.
     static constexpr bool transmits = false;
 
-    Albedo albedo{};
-    T kd = T(1);
-    T ka = T(1);
-    T phong = T(0);
-    T phong_size = T(40);
+    Albedo albedo{}; ///< the albedo texture (Solid, Checker, UvChecker or the user's)
+    T kd = T(1); ///< scale on light from the lights
+    T ka = T(1); ///< scale on the scene's ambient light
+    T phong = T(0); ///< POV-Ray's phong: the highlight's strength, 0 for none
+    T phong_size = T(40); ///< POV-Ray's phong_size: the highlight's exponent
 
+    /// The albedo at p (and uv, for textures in surface coordinates), with kd and ka.
     [[nodiscard]] constexpr DiffuseResponse<T> diffuse(const Vec3<T>& p, const Vec2<T>& uv) const noexcept { return {albedo_at(albedo, p, uv), kd, ka}; }
 
     /// The Phong highlight's weight for cos_alpha = R . L (0 when phong is 0 or the light
@@ -56,6 +61,7 @@ struct Diffuse {
         return phong * detail::power(cos_alpha, phong_size) / pi<T>;
     }
 
+    /// Throws std::invalid_argument, naming the parameter, for a bad albedo, a negative kd, ka or phong, or a phong_size <= 0.
     constexpr void validate() const
     {
         albedo.validate();

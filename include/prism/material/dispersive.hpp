@@ -20,17 +20,23 @@ namespace prism {
 template <Scalar T = float, Dispersion Glass = Sellmeier<double>, class Fresnel = ExactFresnel, Medium Interior = Homogeneous<T>>
     requires FresnelPolicy<Fresnel, T> && std::same_as<typename Interior::scalar_type, T>
 struct DispersiveDielectric {
+    /// The precision of the material.
     using scalar_type = T;
+    /// The Fresnel policy (ExactFresnel or SchlickFresnel).
     using fresnel_policy = Fresnel;
+    /// No diffuse lobe.
     static constexpr bool has_diffuse = false;
+    /// Reflects at the interface, by Fresnel.
     static constexpr bool reflects = true;
+    /// Transmits at the interface, by Fresnel.
     static constexpr bool transmits = true;
+    /// Splits white light into wavelength bands where it refracts.
     static constexpr bool disperses = true;
 
-    Glass glass = glass::bk7<typename Glass::scalar_type>;
-    Interior interior{};
-    T kr = T(1);
-    T kt = T(1);
+    Glass glass = glass::bk7<typename Glass::scalar_type>; ///< the glass's index against wavelength (Sellmeier or Cauchy)
+    Interior interior{}; ///< the medium inside (Beer-Lambert absorption)
+    T kr = T(1); ///< Whitted's scale on the reflected ray
+    T kt = T(1); ///< Whitted's scale on the refracted ray
     int priority = 0; ///< where it overlaps another transmissive object, the higher priority's medium wins (medium/nesting.hpp)
 
     /// The index at a vacuum wavelength in nanometres.
@@ -40,11 +46,16 @@ struct DispersiveDielectric {
     }
     /// The index for white light that is not split: n_d.
     [[nodiscard]] T refractive_index() const noexcept { return refractive_index(T(fraunhofer::d)); }
+    /// The Fresnel reflectance at the interface (eta = n_t / n_i).
     [[nodiscard]] constexpr T fresnel(T cos_i, T cos_t, T eta) const noexcept { return Fresnel::reflectance(cos_i, cos_t, eta); }
+    /// Grey: kr.
     [[nodiscard]] constexpr Rgb<T> reflection_tint() const noexcept { return Rgb<T>(kr); }
+    /// Grey: kt.
     [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(kt); }
+    /// The medium inside.
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior; }
 
+    /// Throws std::invalid_argument, naming the parameter, for a bad glass, an index <= 0 anywhere from 380 to 780 nm, a bad interior or a negative kr or kt.
     constexpr void validate() const
     {
         glass.validate();

@@ -99,11 +99,11 @@ template <Material M>
 /// film): a photon reflects with the probability `reflected_share`, its mean.
 template <Scalar T>
 struct SpecularSplit {
-    Rgb<T> kr{T(0)};
-    Rgb<T> kt{T(0)};
-    std::optional<Vec3<T>> refracted;
-    Rgb<T> fresnel{T(1)};
-    T reflected_share = T(1);
+    Rgb<T> kr{T(0)}; ///< the reflected ray's weight per channel
+    Rgb<T> kt{T(0)}; ///< the transmitted ray's weight per channel
+    std::optional<Vec3<T>> refracted; ///< the transmitted direction, if any
+    Rgb<T> fresnel{T(1)}; ///< the Fresnel reflectance before the tints
+    T reflected_share = T(1); ///< the probability a photon reflects
 
     /// Whether Fresnel's share is the same in every channel (then a photon's choice
     /// between reflection and refraction needs no reweighting).
@@ -322,8 +322,8 @@ enum class Transport { importance, radiance };
 /// A photon's next direction after scattering, and whether the bounce was diffuse.
 template <Scalar T>
 struct PhotonBounce {
-    Vec3<T> direction;
-    bool diffuse;
+    Vec3<T> direction; ///< the new direction
+    bool diffuse; ///< whether the bounce was off the diffuse lobe
 };
 
 /// The lobes a scattering may take: none (the path ends), the delta ones only (a caustic

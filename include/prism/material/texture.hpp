@@ -34,10 +34,13 @@ template <Texture X>
 /// One colour everywhere.
 template <Scalar T = float>
 struct Solid {
+    /// The precision of the colour.
     using scalar_type = T;
-    Rgb<T> color{T(0.75)};
+    Rgb<T> color{T(0.75)}; ///< the albedo everywhere
 
+    /// The albedo at any point: color.
     [[nodiscard]] constexpr Rgb<T> albedo(const Vec3<T>&) const noexcept { return color; }
+    /// Throws std::invalid_argument for a negative or non-finite colour.
     constexpr void validate() const { detail::require_non_negative("Solid color", color); }
 };
 
@@ -45,11 +48,13 @@ struct Solid {
 /// floor(x/size) + floor(y/size) + floor(z/size) is even.
 template <Scalar T = float>
 struct Checker {
+    /// The precision of the colours.
     using scalar_type = T;
-    Rgb<T> even{T(0.8)};
-    Rgb<T> odd{T(0.35)};
-    T size = T(1);
+    Rgb<T> even{T(0.8)}; ///< albedo of the even cells
+    Rgb<T> odd{T(0.35)}; ///< albedo of the odd cells
+    T size = T(1); ///< side of a cell
 
+    /// The albedo at p: even or odd by the parity of p's cell.
     [[nodiscard]] Rgb<T> albedo(const Vec3<T>& p) const noexcept
     {
         // Cells are half-open, so a point on a cell face belongs to exactly one cell. A
@@ -61,6 +66,7 @@ struct Checker {
         return std::floor(sum * T(0.5)) * T(2) == sum ? even : odd;
     }
 
+    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite colour or a size <= 0.
     constexpr void validate() const
     {
         detail::require_non_negative("Checker even", even);
@@ -73,14 +79,16 @@ struct Checker {
 /// where floor(u/size) + floor(v/size) is even (the square [0, size)^2 is even).
 template <Scalar T = float>
 struct UvChecker {
+    /// The precision of the colours.
     using scalar_type = T;
-    Rgb<T> even{T(0.8)};
-    Rgb<T> odd{T(0.35)};
-    T size = T(0.125);
+    Rgb<T> even{T(0.8)}; ///< albedo of the even squares
+    Rgb<T> odd{T(0.35)}; ///< albedo of the odd squares
+    T size = T(0.125); ///< side of a square in (u, v)
 
     /// Checker's cells in the plane (u, v, 0).
     [[nodiscard]] Rgb<T> albedo(const Vec3<T>&, const Vec2<T>& uv) const noexcept { return Checker<T>{even, odd, size}.albedo({uv.x, uv.y, T(0)}); }
 
+    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite colour or a size <= 0.
     constexpr void validate() const
     {
         detail::require_non_negative("UvChecker even", even);

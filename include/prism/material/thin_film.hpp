@@ -32,12 +32,17 @@ namespace prism {
 /// A film thickness that is the same everywhere, in nanometres.
 template <Scalar T = float>
 struct UniformThickness {
+    /// The precision of the thickness.
     using scalar_type = T;
-    T nm = T(300);
+    T nm = T(300); ///< the film's thickness in nanometres, everywhere
 
+    /// The thickness at any point: nm.
     [[nodiscard]] constexpr T at(const Vec3<T>&) const noexcept { return nm; }
+    /// The thinnest the film gets (nm), for the tables.
     [[nodiscard]] constexpr T lowest_nm() const noexcept { return nm; }
+    /// The thickest the film gets (nm), for the tables.
     [[nodiscard]] constexpr T highest_nm() const noexcept { return nm; }
+    /// Throws std::invalid_argument for a negative or non-finite thickness.
     constexpr void validate() const { detail::require_non_negative("UniformThickness nm", nm); }
 };
 
@@ -47,19 +52,24 @@ struct UniformThickness {
 template <Scalar T, class F>
     requires std::is_invocable_r_v<T, const F&, const Vec3<T>&>
 struct ThicknessTexture {
+    /// The precision of the thickness.
     using scalar_type = T;
-    F thickness;
-    T lowest = T(0);
-    T highest = T(1000);
+    F thickness; ///< thickness(p) in nanometres
+    T lowest = T(0); ///< the least thickness(p) can return (nm)
+    T highest = T(1000); ///< the most thickness(p) can return (nm)
 
+    /// The thickness at p: thickness(p), asserted within [lowest, highest].
     [[nodiscard]] T at(const Vec3<T>& p) const noexcept
     {
         const T d = thickness(p);
         PRISM_ASSERT(d >= lowest && d <= highest);
         return d;
     }
+    /// The thinnest the film gets (nm), for the tables.
     [[nodiscard]] constexpr T lowest_nm() const noexcept { return lowest; }
+    /// The thickest the film gets (nm), for the tables.
     [[nodiscard]] constexpr T highest_nm() const noexcept { return highest; }
+    /// Throws std::invalid_argument, naming the parameter, for a negative lowest, a non-finite highest or highest < lowest.
     constexpr void validate() const
     {
         detail::require_non_negative("ThicknessTexture lowest", lowest);
@@ -132,6 +142,7 @@ public:
         return a + (b - a) * fv;
     }
 
+    /// The number of tabulated reflectances (cosines x thicknesses).
     [[nodiscard]] std::size_t entries() const noexcept { return table_.size(); }
 
 private:
@@ -150,6 +161,7 @@ private:
 template <Scalar T = float, FilmThickness Thickness = UniformThickness<T>>
 class ThinFilmConductor {
 public:
+    /// A film over a measured metal (kept by reference: static data such as metals::gold, or the caller's, which must outlive it).
     ThinFilmConductor(T film_index, Thickness thickness, const metals::MeasuredIndex& substrate,
                       typename FilmTable<T>::Config config = {})
         : ThinFilmConductor(film_index, thickness, &substrate, {}, config)
@@ -159,6 +171,7 @@ public:
     /// It keeps a reference to a measured substrate (static data, or the user's): not a temporary.
     ThinFilmConductor(T, Thickness, const metals::MeasuredIndex&&, typename FilmTable<T>::Config = {}) = delete;
 
+    /// A film over a metal of one complex index n + ik at every wavelength.
     ThinFilmConductor(T film_index, Thickness thickness, std::complex<double> substrate, typename FilmTable<T>::Config config = {})
         : ThinFilmConductor(film_index, thickness, nullptr, substrate, config)
     {
@@ -167,7 +180,9 @@ public:
     /// The tabulated reflectance where the query's point is.
     [[nodiscard]] Rgb<T> reflectance(const SpecularQuery<T>& q) const noexcept { return table_(q.cos_i, thickness_.at(q.point)); }
 
+    /// The tabulated reflectance.
     [[nodiscard]] const FilmTable<T>& table() const noexcept { return table_; }
+    /// Nothing to check: the constructors refuse bad parameters.
     constexpr void validate() const {} // checked at construction
 
     /// The exact reflectance at one wavelength, for rays that carry one.
@@ -175,6 +190,7 @@ public:
     {
         return thin_film(FilmStack<double>{1.0, film_index_, d, substrate(lambda_nm)}, cos_i, lambda_nm).reflected();
     }
+    /// The reflectance at one wavelength, for a ray that carries one (dispersion).
     [[nodiscard]] T reflectance_at(const SpecularQuery<T>& q, T wavelength_nm) const noexcept
     {
         return T(spectral_reflectance(double(q.cos_i), double(wavelength_nm), double(thickness_.at(q.point))));
@@ -213,11 +229,16 @@ template <Scalar T = float, FilmThickness Thickness = UniformThickness<T>, Mediu
     requires std::same_as<typename Thickness::scalar_type, T> && std::same_as<typename Interior::scalar_type, T>
 class CoatedDielectric {
 public:
+    /// The precision of the material.
     using scalar_type = T;
+    /// No diffuse lobe.
     static constexpr bool has_diffuse = false;
+    /// Reflects (per channel, from the film).
     static constexpr bool reflects = true;
+    /// Transmits (1 - R per channel).
     static constexpr bool transmits = true;
 
+    /// The interface with index `ior` inside, coated outside with a film of index `film_index`; throws std::invalid_argument, naming the parameter, for an index <= 0 or a bad thickness.
     CoatedDielectric(T ior, T film_index, Thickness thickness, Interior interior = {}, typename FilmTable<T>::Config config = {})
         : ior_((detail::require_positive("CoatedDielectric ior", ior), ior)),
           film_index_((detail::require_positive("CoatedDielectric film_index", film_index), film_index)),
@@ -229,6 +250,7 @@ public:
 
     // Dielectric capabilities (DeltaTransmission, InteriorMedium)
 
+    /// The index inside.
     [[nodiscard]] constexpr T refractive_index() const noexcept { return ior_; }
     /// The film's reflectance per channel. Light arriving from inside reflects as much
     /// as light arriving from outside along its refracted path would: the stack absorbs
@@ -239,10 +261,15 @@ public:
     {
         return from_outside_(q.entering ? q.cos_i : q.cos_t, thickness_.at(q.point));
     }
+    /// White: the film's colour is in fresnel().
     [[nodiscard]] constexpr Rgb<T> reflection_tint() const noexcept { return Rgb<T>(T(1)); }
+    /// White: the film's colour is in fresnel().
     [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(T(1)); }
+    /// The medium inside.
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior_; }
+    /// Nothing to check: the constructor refuses bad parameters.
     constexpr void validate() const {} // checked at construction
+    /// The number of tabulated reflectances.
     [[nodiscard]] std::size_t table_entries() const noexcept { return from_outside_.entries(); }
 
     /// The film's exact reflectance at one wavelength, for light that carries one.

@@ -62,11 +62,11 @@ concept DiffuseLobe = requires(const M& material, const Vec3<typename M::scalar_
 /// textured thickness) or with the side (a coating on the outside) take this whole.
 template <Scalar T>
 struct SpecularQuery {
-    T cos_i;
-    T cos_t;
-    T eta;
-    bool entering;
-    Vec3<T> point;
+    T cos_i; ///< cosine of the incident angle, >= 0
+    T cos_t; ///< cosine of the refracted angle (0 where nothing refracts)
+    T eta; ///< n_t / n_i
+    bool entering; ///< the light arrives from outside
+    Vec3<T> point; ///< where on the surface
 };
 
 /// A mirror that is not an interface (a conductor): its reflectance per channel for

@@ -16,18 +16,23 @@ namespace prism {
 
 /// Uniform air of index 1: rays are straight.
 struct StraightAir {
+    /// Rays through it are straight.
     static constexpr bool curved = false;
+    /// Nothing to check.
     constexpr void validate() const {}
 };
 
 /// Air whose index is `field` inside `region` (uniform outside it); rays through it curve.
 template <IndexField F>
 struct GradedAir {
+    /// The field's precision.
     using scalar_type = typename F::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
+    /// Rays through it curve.
     static constexpr bool curved = true;
 
-    F field{};
+    F field{}; ///< the refractive index inside the region
     Aabb<T> region{};                                   ///< where the index varies
     typename AdaptiveStepper<F>::Config stepping{};     ///< the stepper's tolerance and step lengths
     /// A chord that meets a surface is halved (Sharma steps of half the dt) until it is
@@ -36,6 +41,7 @@ struct GradedAir {
     T landing_chord = T(1e-3);
     int max_steps = 1000000;                            ///< a ray still in the air after this many steps is lost (background)
 
+    /// Throws std::invalid_argument, naming the parameter, for a bad field, an unbounded or empty region, max_steps < 1, landing_chord <= 0 or bad stepping.
     void validate() const
     {
         field.validate();
@@ -54,15 +60,19 @@ struct GradedAir {
 /// order in the layer height (bench/graded_index.cpp).
 template <IndexField F>
 struct LayeredAir {
+    /// The field's precision.
     using scalar_type = typename F::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
+    /// Rays through it bend at the layers' boundaries.
     static constexpr bool curved = true;
 
-    F field{};
-    T bottom = T(0);
-    T top = T(1);
-    int layers = 100;
+    F field{}; ///< the index field the layers sample at their middle heights
+    T bottom = T(0); ///< height of the lowest layer's bottom
+    T top = T(1); ///< height of the highest layer's top
+    int layers = 100; ///< the number of layers
 
+    /// Throws std::invalid_argument, naming the parameter, for a bad field, top <= bottom or layers < 1.
     void validate() const { (void)LayeredMedium<F>(field, bottom, top, layers); }
 };
 

@@ -43,12 +43,16 @@ concept IndexField = requires(const F& field, const Vec3<typename F::scalar_type
 /// n(y) = n0 + slope y.
 template <Scalar T = double>
 struct LinearIndex {
+    /// The precision of the field's values.
     using scalar_type = T;
-    T n0 = T(1);
+    T n0 = T(1); ///< index at y = 0
     T slope = T(0); ///< dn/dy
 
+    /// The index at p: n0 + slope y.
     [[nodiscard]] constexpr T index(const Vec3<T>& p) const noexcept { return n0 + slope * p.y; }
+    /// The index's gradient, (0, slope, 0) everywhere.
     [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>&) const noexcept { return {T(0), slope, T(0)}; }
+    /// Throws std::invalid_argument, naming the parameter, for n0 <= 0 or a slope that is not finite.
     constexpr void validate() const
     {
         detail::require_positive("LinearIndex n0", n0);
@@ -60,12 +64,16 @@ struct LinearIndex {
 /// y(x) = y0 + tan(theta0) x + b x^2 / (4 K^2) with K = n(y0) cos(theta0).
 template <Scalar T = double>
 struct LinearSquareIndex {
+    /// The precision of the field's values.
     using scalar_type = T;
-    T a = T(1);
-    T b = T(0);
+    T a = T(1); ///< n^2 at y = 0
+    T b = T(0); ///< d(n^2)/dy
 
+    /// The index at p: sqrt(a + b y).
     [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return std::sqrt(a + b * p.y); }
+    /// The index's gradient: (0, b / 2n, 0).
     [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept { return {T(0), b / (T(2) * index(p)), T(0)}; }
+    /// Throws std::invalid_argument, naming the parameter, for a <= 0 or a b that is not finite.
     constexpr void validate() const
     {
         detail::require_positive("LinearSquareIndex a", a);
@@ -78,16 +86,20 @@ struct LinearSquareIndex {
 /// metres.
 template <Scalar T = double>
 struct ExponentialAtmosphere {
+    /// The precision of the field's values.
     using scalar_type = T;
-    T n0 = T(1.000293);
-    T scale_height = T(8500);
-    T ground = T(0);
+    T n0 = T(1.000293); ///< index at the ground
+    T scale_height = T(8500); ///< height over which n - 1 falls by e (metres)
+    T ground = T(0); ///< height of the ground
 
+    /// The index at p: 1 + (n0 - 1) exp(-(y - ground) / scale_height).
     [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return T(1) + (n0 - T(1)) * std::exp(-(p.y - ground) / scale_height); }
+    /// The index's gradient, along y.
     [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
     {
         return {T(0), -(n0 - T(1)) / scale_height * std::exp(-(p.y - ground) / scale_height), T(0)};
     }
+    /// Throws std::invalid_argument, naming the parameter, for n0 or scale_height <= 0 or a ground that is not finite.
     constexpr void validate() const
     {
         detail::require_positive("ExponentialAtmosphere n0", n0);
@@ -101,17 +113,21 @@ struct ExponentialAtmosphere {
 /// road 30 K above the air), and rays grazing it bend back up (an inferior mirage).
 template <Scalar T = double>
 struct HeatedLayer {
+    /// The precision of the field's values.
     using scalar_type = T;
-    T n_air = T(1.000293);
-    T drop = T(3e-5);
+    T n_air = T(1.000293); ///< index of the air far above the ground
+    T drop = T(3e-5); ///< how much lower the index is at the ground
     T thickness = T(0.3); ///< metres over which the excess heat falls by e
-    T ground = T(0);
+    T ground = T(0); ///< height of the ground
 
+    /// The index at p: n_air - drop exp(-(y - ground) / thickness).
     [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return n_air - drop * std::exp(-(p.y - ground) / thickness); }
+    /// The index's gradient, along y.
     [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
     {
         return {T(0), drop / thickness * std::exp(-(p.y - ground) / thickness), T(0)};
     }
+    /// Throws std::invalid_argument, naming the parameter, for n_air or thickness <= 0, or a drop that is not finite or not below n_air.
     constexpr void validate() const
     {
         detail::require_positive("HeatedLayer n_air", n_air);
@@ -126,11 +142,14 @@ struct HeatedLayer {
 template <Scalar T, class F>
     requires std::regular_invocable<const F&, const Vec3<T>&>
 struct IndexFunction {
+    /// The precision of the field's values.
     using scalar_type = T;
-    F function;
-    T h = T(1e-4);
+    F function; ///< n(p), any callable
+    T h = T(1e-4); ///< step of the central differences that give the gradient
 
+    /// The index at p: function(p).
     [[nodiscard]] T index(const Vec3<T>& p) const { return function(p); }
+    /// The index's gradient by central differences of step h.
     [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const
     {
         const T inv = T(1) / (T(2) * h);
@@ -138,6 +157,7 @@ struct IndexFunction {
                 (function(p + Vec3<T>(0, h, 0)) - function(p - Vec3<T>(0, h, 0))) * inv,
                 (function(p + Vec3<T>(0, 0, h)) - function(p - Vec3<T>(0, 0, h))) * inv};
     }
+    /// Throws std::invalid_argument for h <= 0.
     constexpr void validate() const { detail::require_positive("IndexFunction h", h); }
 };
 
@@ -150,9 +170,10 @@ static_assert(IndexField<LinearIndex<double>> && IndexField<LinearSquareIndex<fl
 /// vector of length n(position): the unit direction times the local index).
 template <Scalar T>
 struct CurvedRay {
-    Vec3<T> position;
-    Vec3<T> optical;
+    Vec3<T> position; ///< where the ray is
+    Vec3<T> optical; ///< the optical direction, n times the unit tangent
 
+    /// The unit tangent of the ray.
     [[nodiscard]] Vec3<T> direction() const noexcept { return normalize(optical); }
 };
 
@@ -194,6 +215,7 @@ template <IndexField F>
 template <IndexField F>
 class AdaptiveStepper {
 public:
+    /// The field's precision.
     using T = typename F::scalar_type;
 
     /// How the stepper controls its error: the tolerance per step and the step sizes it may take.
@@ -203,6 +225,7 @@ public:
         T max_step = T(10);     ///< no step longer than this arc length
     };
 
+    /// A stepper through `field` (which must outlive it).
     explicit AdaptiveStepper(const F& field, Config config = {}) : field_(&field), config_(config)
     {
         field.validate();
@@ -248,8 +271,10 @@ private:
 template <IndexField F>
 class LayeredMedium {
 public:
+    /// The field's precision.
     using T = typename F::scalar_type;
 
+    /// `layers` flat layers of `field` between heights `bottom` and `top` (which must outlive it); throws for bottom >= top or layers < 1.
     LayeredMedium(const F& field, T bottom, T top, int layers) : field_(&field), bottom_(bottom), top_(top), layers_(layers)
     {
         field.validate();
@@ -260,6 +285,7 @@ public:
         height_ = (top - bottom) / T(layers);
     }
 
+    /// The number of layers.
     [[nodiscard]] int layers() const noexcept { return layers_; }
 
     /// The layer holding height y (clamped into [0, layers); in floating point first, so a

@@ -12,13 +12,15 @@ namespace prism {
 /// length, per channel (0: clear).
 template <Scalar T = float>
 struct Homogeneous {
+    /// The precision of the coefficients.
     using scalar_type = T;
 
-    Rgb<T> absorption{T(0)};
+    Rgb<T> absorption{T(0)}; ///< absorption coefficient per channel, per unit length
 
     /// exp(-absorption distance), per channel.
     [[nodiscard]] Rgb<T> transmittance(T distance) const noexcept { return beer_lambert(absorption, distance); }
 
+    /// Throws std::invalid_argument for a negative or non-finite absorption.
     constexpr void validate() const { detail::require_non_negative("Homogeneous absorption", absorption); }
 };
 

@@ -35,10 +35,11 @@ template <class M>
 
 /// An object a ray is inside of: where it is in the scene, and its priority.
 struct Inside {
-    std::uint32_t slot = 0;
-    std::uint32_t index = 0;
-    int priority = 0;
+    std::uint32_t slot = 0; ///< the object's scene slot
+    std::uint32_t index = 0; ///< the object within its slot
+    int priority = 0; ///< its material's priority
 
+    /// Whether both name the same object.
     [[nodiscard]] constexpr bool same_object(const Inside& other) const noexcept { return slot == other.slot && index == other.index; }
 };
 
@@ -46,9 +47,12 @@ struct Inside {
 /// more than that many at once forgets the oldest, and is then outside it).
 class MediumStack {
 public:
+    /// The deepest nesting kept.
     static constexpr std::size_t capacity = 8;
 
+    /// Whether the ray is inside no transmissive object (in the air).
     [[nodiscard]] constexpr bool empty() const noexcept { return count_ == 0; }
+    /// How many objects the ray is inside of.
     [[nodiscard]] constexpr std::size_t size() const noexcept { return count_; }
 
     /// The medium the ray travels in: the highest priority, the latest entered among equals.
@@ -60,6 +64,7 @@ public:
         return best;
     }
 
+    /// Whether the ray is inside `object`.
     [[nodiscard]] constexpr bool contains(const Inside& object) const noexcept
     {
         for (std::size_t i = 0; i < count_; ++i)
@@ -105,8 +110,8 @@ private:
 /// reflected ray stays in the current ones. The medium on the object's other side is
 /// the current one when entering and the one beyond when leaving (`outside_of`).
 struct Interface {
-    bool real = true;
-    MediumStack beyond{};
+    bool real = true; ///< false: the interface is not real, and the ray passes it unchanged
+    MediumStack beyond{}; ///< the media beyond the interface, for a ray that crosses it
 };
 
 /// The interface a ray in `media` meets at a surface of `object` (entering or leaving).

@@ -25,10 +25,12 @@ concept Dispersion = requires(const D& dispersion, typename D::scalar_type wavel
 ///   n^2 = 1 + sum_i B_i lambda^2 / (lambda^2 - C_i),  lambda in micrometres, C_i in um^2.
 template <Scalar T = double, std::size_t Terms = 3>
 struct Sellmeier {
+    /// The precision of the coefficients and the index.
     using scalar_type = T;
-    std::array<T, Terms> b{};
-    std::array<T, Terms> c{};
+    std::array<T, Terms> b{}; ///< B_i, dimensionless
+    std::array<T, Terms> c{}; ///< C_i, in square micrometres
 
+    /// The index at a vacuum wavelength in nanometres.
     [[nodiscard]] T index(T wavelength_nm) const noexcept
     {
         const T l2 = (wavelength_nm * T(1e-3)) * (wavelength_nm * T(1e-3));
@@ -37,6 +39,7 @@ struct Sellmeier {
         return std::sqrt(n2);
     }
 
+    /// Throws std::invalid_argument for a non-finite B or a C that is negative or NaN.
     constexpr void validate() const
     {
         for (std::size_t i = 0; i < Terms; ++i) {
@@ -49,17 +52,20 @@ struct Sellmeier {
 /// Cauchy's formula n = A + B / lambda^2 + C / lambda^4, lambda in micrometres.
 template <Scalar T = double>
 struct Cauchy {
+    /// The precision of the coefficients and the index.
     using scalar_type = T;
-    T a = T(1.5);
-    T b = T(0);
-    T c = T(0);
+    T a = T(1.5); ///< A, the index at infinite wavelength
+    T b = T(0); ///< B, in square micrometres
+    T c = T(0); ///< C, in micrometres to the fourth
 
+    /// The index at a vacuum wavelength in nanometres.
     [[nodiscard]] T index(T wavelength_nm) const noexcept
     {
         const T l2 = (wavelength_nm * T(1e-3)) * (wavelength_nm * T(1e-3));
         return a + b / l2 + c / (l2 * l2);
     }
 
+    /// Throws std::invalid_argument, naming the parameter, for A <= 0 or a non-finite B or C.
     constexpr void validate() const
     {
         detail::require_positive("Cauchy A", a);

@@ -17,8 +17,8 @@ namespace prism {
 /// Reflectance for s- (perpendicular) and p- (parallel) polarised light.
 template <Scalar T>
 struct PolarisedReflectance {
-    T s;
-    T p;
+    T s; ///< reflectance of s-polarised light
+    T p; ///< reflectance of p-polarised light
 };
 
 /// Exact dielectric reflectance by polarisation, given the refracted cosine cos_t (as
@@ -108,11 +108,13 @@ template <Scalar T>
 
 /// The exact dielectric Fresnel equations.
 struct ExactFresnel {
+    /// The exact reflectance at incidence cosine cos_i and eta = n_t / n_i (1 under total internal reflection).
     template <Scalar T>
     [[nodiscard]] static constexpr T reflectance(T cos_i, T eta) noexcept
     {
         return fresnel_dielectric(cos_i, eta);
     }
+    /// The exact reflectance given cos_t as well (from Snell, computed once for direction and Fresnel).
     template <Scalar T>
     [[nodiscard]] static constexpr T reflectance(T cos_i, T cos_t, T eta) noexcept
     {
@@ -122,11 +124,13 @@ struct ExactFresnel {
 
 /// Schlick's approximation, evaluated on the less dense side.
 struct SchlickFresnel {
+    /// Schlick's reflectance at incidence cosine cos_i and eta = n_t / n_i, on the less dense side.
     template <Scalar T>
     [[nodiscard]] static constexpr T reflectance(T cos_i, T eta) noexcept
     {
         return fresnel_schlick(cos_i, eta);
     }
+    /// Schlick's reflectance given cos_t as well.
     template <Scalar T>
     [[nodiscard]] static constexpr T reflectance(T cos_i, T cos_t, T eta) noexcept
     {

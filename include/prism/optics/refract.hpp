@@ -23,8 +23,8 @@ template <Scalar T>
 /// A refracted direction and the cosine of its angle with the normal (on the far side).
 template <Scalar T>
 struct Refraction {
-    Vec3<T> direction;
-    T cos_t;
+    Vec3<T> direction; ///< unit refracted direction
+    T cos_t; ///< cosine between it and the normal, on the far side
 };
 
 /// Snell refraction of the unit direction d through a surface with unit normal n

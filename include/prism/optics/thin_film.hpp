@@ -36,10 +36,12 @@ struct FilmStack {
 /// Reflectance and transmittance by polarisation; the unpolarised values are their means.
 template <Scalar T>
 struct FilmResponse {
-    PolarisedReflectance<T> reflectance;
-    PolarisedReflectance<T> transmittance;
+    PolarisedReflectance<T> reflectance; ///< reflectance of s- and p-polarised light
+    PolarisedReflectance<T> transmittance; ///< transmittance of s- and p-polarised light
 
+    /// The unpolarised reflectance.
     [[nodiscard]] constexpr T reflected() const noexcept { return T(0.5) * (reflectance.s + reflectance.p); }
+    /// The unpolarised transmittance.
     [[nodiscard]] constexpr T transmitted() const noexcept { return T(0.5) * (transmittance.s + transmittance.p); }
 };
 

@@ -20,7 +20,7 @@ enum class Filter : std::uint8_t {
 struct Estimator {
     std::size_t k = 0;   ///< 0: every photon within `radius`; else the k nearest, searched no further than `radius`
     float radius = 0.1f; ///< the fixed radius, or the k-nearest search's maximum distance
-    Filter filter = Filter::box;
+    Filter filter = Filter::box; ///< the kernel photons are weighed by
     float max_height_ratio = 1.0f; ///< keep photons within this times r of the tangent plane; < 1 flattens the sphere to a disk against light leaks
     /// Count a photon only where its surface's normal is within acos(surface_cos) of the
     /// query's (60 degrees): not the far side of a thin wall (whose normals are opposite,

@@ -27,13 +27,14 @@ namespace prism {
 /// octahedral coordinates (Meyer et al. 2010), and its flags.
 class Photon {
 public:
+    /// What a stored photon is.
     enum Flags : std::uint8_t {
         direct = 1,  ///< first hit after leaving the light
         caustic = 2, ///< reached this diffuse surface only by specular bounces (L S+ D)
         shadow = 4,  ///< a shadow photon: where the straight continuation of a direct photon's path met a further surface
     };
 
-    Vec3<float> position{};
+    Vec3<float> position{}; ///< where the photon landed
 
     Photon() = default;
 
@@ -45,6 +46,7 @@ public:
         encode_power(power);
     }
 
+    /// The photon's power, decoded.
     [[nodiscard]] Rgb<float> power() const noexcept
     {
         if (exponent_ == 0) return Rgb<float>(0.0f);
@@ -69,6 +71,7 @@ public:
         return d > 0.0f && d * d > min_cos * min_cos * length_squared(m) * length_squared(n);
     }
 
+    /// Photons are equal when every stored bit is.
     friend bool operator==(const Photon&, const Photon&) = default;
 
 private:
@@ -117,7 +120,7 @@ private:
     std::uint8_t exponent_ = 0; ///< 0: no power; else the shared exponent + 128
 
 public:
-    std::uint8_t flags = 0;
+    std::uint8_t flags = 0; ///< Flags
 };
 
 static_assert(sizeof(Photon) == 28);

@@ -19,24 +19,29 @@ namespace prism {
 
 /// The photons' positions, as a PointSet for the KdTree.
 struct PhotonPositions {
+    /// Photon positions are float.
     using scalar_type = float;
+    /// Positions in 3-D.
     static constexpr std::size_t dimension = 3;
 
-    std::span<const Photon> photons;
+    std::span<const Photon> photons; ///< the photons, in the map's order
 
+    /// The number of photons.
     [[nodiscard]] std::size_t size() const noexcept { return photons.size(); }
+    /// Coordinate `axis` of photon i's position.
     [[nodiscard]] float coordinate(std::size_t i, std::size_t axis) const noexcept { return photons[i].position[static_cast<int>(axis)]; }
 };
 
 /// A density estimate and the squared radius of the disk it was gathered over.
 struct PrecomputedIrradiance {
-    Rgb<float> irradiance{0.0f};
-    float radius2 = 0;
+    Rgb<float> irradiance{0.0f}; ///< the estimate of the irradiance
+    float radius2 = 0; ///< the squared radius it was gathered over
 };
 
 /// Photons in KD-tree order, with radius and k-nearest radiance estimates (Jensen 2001).
 class PhotonMap {
 public:
+    /// The KD-tree over the photons' positions (8 a leaf).
     using Tree = KdTree<PhotonPositions, 8>;
     static constexpr std::size_t max_k = 512; ///< the most photons a k-nearest estimate gathers
 
@@ -54,7 +59,9 @@ public:
         tree_->index_in_tree_order();
     }
 
+    /// The number of photons.
     [[nodiscard]] std::size_t size() const noexcept { return photons_.size(); }
+    /// The photons, in tree order.
     [[nodiscard]] const std::vector<Photon>& photons() const noexcept { return photons_; }
 
     /// Irradiance at p on a surface with unit normal n (Jensen 1996, eq. 6 with a diffuse
@@ -165,6 +172,7 @@ public:
         sample_tree_.emplace(PhotonPositions{samples_}, threads);
     }
 
+    /// Whether precompute_irradiance() has been run (the final gather needs it).
     [[nodiscard]] bool has_precomputed_irradiance() const noexcept { return sample_tree_.has_value(); }
 
     /// The precomputed irradiance nearest p among samples on surfaces facing n's way

@@ -52,8 +52,8 @@ struct PhotonTracerConfig {
     std::size_t global_photons = 200000;  ///< emitted for the global map
     std::size_t caustic_photons = 200000; ///< emitted toward specular objects for the caustic map
     int max_bounces = 16;                 ///< bounces followed at most
-    bool shadow_photons = true;
-    std::uint64_t seed = 0;
+    bool shadow_photons = true; ///< store shadow photons in the global map
+    std::uint64_t seed = 0; ///< with the light, fixes every photon
     unsigned threads = 0; ///< 0 = all hardware threads
     /// A white photon meeting a dispersive interface takes one of this many wavelength
     /// bands at random (1 to 81), its power scaled by the band's photon_weight times
@@ -82,10 +82,11 @@ inline void validate(const PhotonTracerConfig& config)
 
 } // namespace detail
 
-/// The maps one photon tracing gives: global, caustic and shadow photons.
+/// The maps one photon tracing gives: the global map (shadow photons in it, flagged) and
+/// the caustic map.
 struct PhotonMaps {
-    PhotonMap global;
-    PhotonMap caustic;
+    PhotonMap global; ///< every photon's diffuse landings (flagged direct, caustic or shadow)
+    PhotonMap caustic; ///< landings after specular bounces only (L S+ D)
 };
 
 namespace detail {
@@ -348,7 +349,8 @@ namespace detail {
 /// stream come from its index, so the shares of parts 0 to parts - 1, put end to end,
 /// are the photons trace_photons finds, bit for bit.
 struct PhotonShare {
-    std::vector<Photon> global, caustic;
+    std::vector<Photon> global;  ///< this share of the global map's photons
+    std::vector<Photon> caustic; ///< this share of the caustic map's photons
 };
 
 template <class SceneT, class Air = StraightAir>

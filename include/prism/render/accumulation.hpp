@@ -30,33 +30,49 @@ namespace prism {
 
 /// A rectangle of an image's pixels, [x0, x1) x [y0, y1); pbrt's pixel bounds.
 struct PixelWindow {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int x0 = 0; ///< the first column
+    int y0 = 0; ///< the first row (rows count from the top)
+    int x1 = 0; ///< one past the last column
+    int y1 = 0; ///< one past the last row
 
+    /// The window's width in pixels.
     [[nodiscard]] constexpr int width() const noexcept { return x1 - x0; }
+    /// The window's height in pixels.
     [[nodiscard]] constexpr int height() const noexcept { return y1 - y0; }
+    /// Whether the window holds no pixel.
     [[nodiscard]] constexpr bool empty() const noexcept { return x1 <= x0 || y1 <= y0; }
+    /// The number of pixels in the window.
     [[nodiscard]] constexpr std::size_t area() const noexcept { return empty() ? 0 : std::size_t(width()) * std::size_t(height()); }
+    /// Whether pixel (x, y) is in the window.
     [[nodiscard]] constexpr bool contains(int x, int y) const noexcept { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+    /// Whether all of `w` is in the window.
     [[nodiscard]] constexpr bool contains(const PixelWindow& w) const noexcept
     {
         return w.x0 >= x0 && w.x1 <= x1 && w.y0 >= y0 && w.y1 <= y1;
     }
+    /// Whether the windows share a pixel.
     [[nodiscard]] constexpr bool overlaps(const PixelWindow& w) const noexcept
     {
         return w.x0 < x1 && x0 < w.x1 && w.y0 < y1 && y0 < w.y1;
     }
     /// The whole of a width x height image.
     [[nodiscard]] static constexpr PixelWindow whole(int width, int height) noexcept { return {0, 0, width, height}; }
+    /// Windows are equal when their bounds are.
     friend constexpr bool operator==(const PixelWindow&, const PixelWindow&) = default;
 };
 
 /// A range of passes [first, last): camera samples of each pixel, or photon passes.
 struct PassRange {
-    std::uint64_t first = 0, last = 0;
+    std::uint64_t first = 0; ///< the first pass
+    std::uint64_t last = 0;  ///< one past the last pass
 
+    /// The number of passes in the range.
     [[nodiscard]] constexpr std::uint64_t count() const noexcept { return last > first ? last - first : 0; }
+    /// Whether the range holds no pass.
     [[nodiscard]] constexpr bool empty() const noexcept { return last <= first; }
+    /// Whether the ranges share a pass.
     [[nodiscard]] constexpr bool overlaps(const PassRange& r) const noexcept { return r.first < last && first < r.last; }
+    /// Ranges are equal when their bounds are.
     friend constexpr bool operator==(const PassRange&, const PassRange&) = default;
 };
 
@@ -110,6 +126,7 @@ public:
         s.bits_ = bits;
         return s;
     }
+    /// The sum in units of 2^-64.
     [[nodiscard]] constexpr Integer bits() const noexcept { return bits_; }
 
     /// Add `other`; false (and this unchanged) when the sum would pass 2^63 in magnitude.
@@ -118,6 +135,7 @@ public:
     /// The sum, rounded once to double.
     [[nodiscard]] double value() const noexcept { return bits_.to_double() * 0x1p-64; } // exact scaling: the double is 0 or at least 1
 
+    /// Sums are equal when their bits are.
     friend constexpr bool operator==(const BasicExactSum&, const BasicExactSum&) = default;
 
 private:
@@ -144,6 +162,7 @@ namespace detail {
 /// may add to distinct pixels at once.
 class Accumulation {
 public:
+    /// Zeroed sums over `window` of a width x height image, for `channels` (R, G, B first); throws std::invalid_argument, naming the value, for a bad size, window or channel list, and a clear error when the memory cannot be had.
     Accumulation(int width, int height, PixelWindow window, std::vector<std::string> channels = {"R", "G", "B"})
         : width_(width), height_(height), window_(window), channels_(std::move(channels))
     {
@@ -165,16 +184,19 @@ public:
         }
     }
 
+    /// A copy of the sums and the flags.
     Accumulation(const Accumulation& other)
         : width_(other.width_), height_(other.height_), window_(other.window_), channels_(other.channels_), sums_(other.sums_),
           weights_(other.weights_), rejected_(other.rejected()), overflowed_(other.overflowed())
     {
     }
+    /// Takes the sums over.
     Accumulation(Accumulation&& other) noexcept
         : width_(other.width_), height_(other.height_), window_(other.window_), channels_(std::move(other.channels_)),
           sums_(std::move(other.sums_)), weights_(std::move(other.weights_)), rejected_(other.rejected()), overflowed_(other.overflowed())
     {
     }
+    /// Copy or move assignment.
     Accumulation& operator=(Accumulation other) noexcept
     {
         width_ = other.width_;
@@ -188,9 +210,13 @@ public:
         return *this;
     }
 
+    /// The image's width (the whole image, not the window).
     [[nodiscard]] int width() const noexcept { return width_; }
+    /// The image's height (the whole image, not the window).
     [[nodiscard]] int height() const noexcept { return height_; }
+    /// The pixels summed here.
     [[nodiscard]] const PixelWindow& window() const noexcept { return window_; }
+    /// The channels' names, R, G, B first.
     [[nodiscard]] const std::vector<std::string>& channels() const noexcept { return channels_; }
 
     /// Pixel (x, y)'s sums, one per channel; (x, y) in image coordinates, inside the window.
@@ -198,6 +224,7 @@ public:
     {
         return {sums_.data() + index(x, y) * channels_.size(), channels_.size()};
     }
+    /// Pixel (x, y)'s weight: the samples or passes its sums hold.
     [[nodiscard]] std::uint64_t weight(int x, int y) const noexcept { return weights_[index(x, y)]; }
 
     /// Add sums (one per channel) and a weight to pixel (x, y). A sum that would
@@ -217,6 +244,7 @@ public:
     /// Count sample values left out for not being finite (or negative, or past
     /// ExactSum::limit) where the channel allows no such value.
     void reject(std::size_t count) noexcept { rejected_.fetch_add(count, std::memory_order_relaxed); }
+    /// How many sample values were left out (reject()).
     [[nodiscard]] std::size_t rejected() const noexcept { return rejected_.load(std::memory_order_relaxed); }
     /// Whether some sum or weight would have overflowed (and was left out): the sums
     /// are then wrong, and image() refuses them.

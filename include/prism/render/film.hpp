@@ -17,6 +17,7 @@ namespace prism {
 /// A linear HDR RGB image. Any number of threads may set distinct pixels at once.
 class Film {
 public:
+    /// A black film of width x height pixels; throws std::invalid_argument for a size <= 0 and a clear error when the memory cannot be had.
     Film(int width, int height) : width_(width), height_(height)
     {
         if (width <= 0 || height <= 0) detail::throw_invalid("Film size must be positive, got ", width, " x ", height);
@@ -31,11 +32,14 @@ public:
         }
     }
 
+    /// A copy of the pixels.
     Film(const Film& other) : width_(other.width_), height_(other.height_), pixels_(other.pixels_), rejected_(other.rejected()) {}
+    /// Takes the pixels over.
     Film(Film&& other) noexcept
         : width_(other.width_), height_(other.height_), pixels_(std::move(other.pixels_)), rejected_(other.rejected())
     {
     }
+    /// Copy or move assignment.
     Film& operator=(Film other) noexcept
     {
         width_ = other.width_;
@@ -45,10 +49,14 @@ public:
         return *this;
     }
 
+    /// The width in pixels.
     [[nodiscard]] int width() const noexcept { return width_; }
+    /// The height in pixels.
     [[nodiscard]] int height() const noexcept { return height_; }
+    /// The pixels, row by row from the top.
     [[nodiscard]] const std::vector<Rgb<float>>& pixels() const noexcept { return pixels_; }
 
+    /// Pixel (x, y), from the top left.
     [[nodiscard]] const Rgb<float>& at(int x, int y) const noexcept
     {
         return pixels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)];

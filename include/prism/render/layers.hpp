@@ -24,11 +24,13 @@ namespace prism {
 /// from a light (caustics), or off other diffuse surfaces (indirect).
 template <Scalar T>
 struct LightParts {
-    Rgb<T> direct{T(0)};
-    Rgb<T> caustic{T(0)};
-    Rgb<T> indirect{T(0)};
+    Rgb<T> direct{T(0)}; ///< from the lights by shadow rays, and the background
+    Rgb<T> caustic{T(0)}; ///< from the caustic map
+    Rgb<T> indirect{T(0)}; ///< off other diffuse surfaces
 
+    /// The radiance: the three parts summed.
     [[nodiscard]] constexpr Rgb<T> sum() const noexcept { return direct + caustic + indirect; }
+    /// Adds another split's parts.
     constexpr LightParts& operator+=(const LightParts& o) noexcept
     {
         direct += o.direct;
@@ -36,6 +38,7 @@ struct LightParts {
         indirect += o.indirect;
         return *this;
     }
+    /// Scales every part by k.
     constexpr LightParts& operator*=(const Rgb<T>& k) noexcept
     {
         direct *= k;
@@ -43,6 +46,7 @@ struct LightParts {
         indirect *= k;
         return *this;
     }
+    /// Every part scaled by k.
     [[nodiscard]] friend constexpr LightParts operator*(const Rgb<T>& k, LightParts p) noexcept { return p *= k; }
 };
 

@@ -27,8 +27,8 @@ namespace prism {
 
 /// What render() renders: size, samples, threads, seed, and the part of the image (crop, passes).
 struct RenderConfig {
-    int width = 512;
-    int height = 512;
+    int width = 512; ///< image width in pixels
+    int height = 512; ///< image height in pixels
     int spp = 1;             ///< samples per pixel; 1 samples the pixel centre
     unsigned threads = 0;    ///< worker threads; 0 = all hardware threads
     std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image

@@ -13,7 +13,7 @@ namespace prism {
 /// Where the camera shoots rays through a width x height image.
 template <Scalar T>
 struct CameraRays {
-    Vec3<T> origin{};
+    Vec3<T> origin{}; ///< the pinhole
     Vec3<T> top_left{};    ///< direction through the top-left image corner
     Vec3<T> pixel_right{}; ///< step of one pixel to the right
     Vec3<T> pixel_down{};  ///< step of one pixel down
@@ -28,7 +28,10 @@ struct CameraRays {
     /// (inside the image when 0 <= x < width, 0 <= y < height), its distance from the
     /// pinhole and the cosine between the view direction and the ray to it.
     struct Projection {
-        T x, y, distance, cos;
+        T x;        ///< column, in pixels from the left
+        T y;        ///< row, in pixels from the top
+        T distance; ///< from the pinhole
+        T cos;      ///< between the view direction and the ray to the point
     };
 
     /// The point's projection, or nothing when it is not in front of the camera.
@@ -52,10 +55,10 @@ struct CameraRays {
 /// A pinhole camera. `fov` is the horizontal field of view in degrees, as POV-Ray's `angle`.
 template <Scalar T = float>
 struct Camera {
-    Vec3<T> position{T(0), T(0), T(0)};
-    Vec3<T> look_at{T(0), T(0), T(-1)};
-    Vec3<T> up{T(0), T(1), T(0)};
-    T fov = T(40);
+    Vec3<T> position{T(0), T(0), T(0)}; ///< the pinhole
+    Vec3<T> look_at{T(0), T(0), T(-1)}; ///< the point seen at the image's centre
+    Vec3<T> up{T(0), T(1), T(0)}; ///< the direction that is up in the image
+    T fov = T(40); ///< horizontal field of view in degrees
 
     /// Throws std::invalid_argument for non-finite fields, position == look_at, an up
     /// vector parallel to the view direction, or a field of view outside (0, 180).

@@ -16,8 +16,9 @@ template <Light... Ls>
 struct Lights {
     static_assert(sizeof...(Ls) > 0, "Lights{} holds no light: a scene needs at least one (a PointLight, a DirectionalLight, ...)");
 
-    std::tuple<Ls...> items;
+    std::tuple<Ls...> items; ///< the lights
 
+    /// The list of `lights`; checks each.
     constexpr explicit Lights(Ls... lights) : items(std::move(lights)...)
     {
         std::apply([](const auto&... light) { (light.validate(), ...); }, items);

@@ -16,14 +16,18 @@ namespace prism {
 template <Shape S, Material M>
     requires std::same_as<typename S::scalar_type, typename M::scalar_type>
 struct Object {
+    /// The shape's precision.
     using scalar_type = typename S::scalar_type;
+    /// The shape's type.
     using shape_type = S;
+    /// The material's type.
     using material_type = M;
 
-    S shape;
-    M material;
+    S shape; ///< where the object is
+    M material; ///< what its surface does to light
     bool bounded = false; ///< the shape has finite bounds (set at construction, for culling)
 
+    /// The object of shape `s` and material `m`; throws std::invalid_argument, naming the parameter, for a bad material.
     constexpr Object(S s, M m) : shape(std::move(s)), material(std::move(m))
     {
         material.validate();
@@ -35,11 +39,14 @@ struct Object {
 template <Shape S, Material M>
     requires std::same_as<typename S::scalar_type, typename M::scalar_type>
 struct ObjectArray {
+    /// The shapes' precision.
     using scalar_type = typename S::scalar_type;
+    /// The shapes' type.
     using shape_type = S;
+    /// The materials' type.
     using material_type = M;
 
-    std::vector<Object<S, M>> items;
+    std::vector<Object<S, M>> items; ///< the objects, filled at run time
 };
 
 namespace detail {

@@ -68,7 +68,9 @@ class Scene {
     using SlotAt = pack_element_t<I, Pack<Slots...>>;
 
 public:
+    /// The objects' precision.
     using scalar_type = typename SlotAt<0>::scalar_type;
+    /// Shorthand for scalar_type.
     using T = scalar_type;
     static_assert(detail::all_of({std::same_as<typename Slots::scalar_type, T>...}), "all objects must share one scalar type");
     static_assert(detail::lights_of_scalar<LightsOfScene, T>, "every light must have the objects' scalar type (a PointLight<float> in a scene of double objects?)");
@@ -77,6 +79,7 @@ public:
     static constexpr bool has_transmissive = detail::any_of({transmits<typename Slots::material_type>...});
     /// Some material has a mirror lobe.
     static constexpr bool has_specular = detail::any_of({reflects<typename Slots::material_type>...}) || has_transmissive;
+    /// The number of slots (Object or ObjectArray).
     static constexpr std::size_t slot_count = sizeof...(Slots);
     /// The fewest bounded objects the scene builds its tree over.
     static constexpr std::size_t tree_from = 8;
@@ -87,11 +90,12 @@ public:
 
     // Scene Public Members
 
-    LightsOfScene lights;
+    LightsOfScene lights; ///< the lights
     Pack<Slots...> slots; ///< get<I>(slots) is slot I
     Rgb<T> background{T(0)}; ///< radiance of rays that hit nothing
     Rgb<T> ambient{T(0)};    ///< the ambient term of Whitted (1980), added where every light is occluded
 
+    /// The scene of `light_list` and the slots `objects`; builds the tree over the bounded objects where there are enough.
     constexpr Scene(LightsOfScene light_list, Slots... objects) : lights(std::move(light_list)), slots(std::move(objects)...)
     {
         // Every object's key, bounded or not, in key order; the transmissive ones again,
@@ -121,6 +125,7 @@ public:
     /// cull for whole scenes, and the photon tracer's extent.
     [[nodiscard]] constexpr const Aabb<T>& bounds() const noexcept { return cluster_; }
 
+    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite background or ambient; every integrator calls it.
     constexpr void validate() const
     {
         detail::require_non_negative("Scene background", background);
@@ -214,6 +219,7 @@ public:
         std::apply([&](const auto&... light) { (f(light), ...); }, lights.items);
     }
 
+    /// The number of lights.
     static constexpr std::size_t light_count = std::tuple_size_v<decltype(LightsOfScene::items)>;
 
     /// Call f(light) with light number i (in the order of Lights{...}), with its static type.

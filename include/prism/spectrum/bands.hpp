@@ -30,18 +30,20 @@ namespace prism {
 /// white, signed (for camera rays) and clipped to be non-negative (for photons).
 template <Scalar T>
 struct WavelengthBand {
-    T wavelength_nm;
-    Rgb<T> weight;
-    Rgb<T> photon_weight;
+    T wavelength_nm; ///< the band's wavelength in nanometres
+    Rgb<T> weight; ///< its share of white for camera rays (signed)
+    Rgb<T> photon_weight; ///< its share of white for photons (non-negative)
 };
 
 /// White light cut into `count` bands (1 to max_count).
 template <Scalar T>
 class SpectralBands {
 public:
+    /// The CIE table's entry at 380 nm.
     static constexpr int first_sample = (380 - cie::tables::first_nm) / cie::tables::step_nm;
     static constexpr int max_count = 81; ///< one band per 5 nm sample, 380-780 nm
 
+    /// White cut into `count` bands; throws std::invalid_argument for count outside [1, max_count].
     constexpr explicit SpectralBands(int count) : count_(count)
     {
         if (count < 1 || count > max_count) detail::throw_invalid("dispersion_bands must be in [1, ", max_count, "], got ", count);
@@ -75,9 +77,13 @@ public:
         }
     }
 
+    /// The number of bands.
     [[nodiscard]] constexpr int size() const noexcept { return count_; }
+    /// Band i.
     [[nodiscard]] constexpr const WavelengthBand<T>& operator[](int i) const noexcept { return bands_[std::size_t(i)]; }
+    /// The first band.
     [[nodiscard]] constexpr const WavelengthBand<T>* begin() const noexcept { return bands_.data(); }
+    /// One past the last band.
     [[nodiscard]] constexpr const WavelengthBand<T>* end() const noexcept { return bands_.data() + count_; }
 
 private:

@@ -24,6 +24,7 @@ inline constexpr double hc_ev_nm = 1239.84193;
 /// A metal's index n + i k at photon energies 1.40 + 0.05 i eV, i = 0 .. 55 (so in
 /// order of increasing energy, decreasing wavelength).
 struct MeasuredIndex {
+    /// The number of entries.
     static constexpr int count = 56;
     static constexpr double lowest_ev = 1.40; ///< entry 0: 885.6 nm
     static constexpr double step_ev = 0.05;   ///< entry count - 1: 4.15 eV, 298.8 nm

@@ -31,7 +31,7 @@ namespace prism {
 /// A walk at a diffuse surface, before it scatters there.
 template <Scalar T>
 struct WalkVertex {
-    const Hit<T>& hit;
+    const Hit<T>& hit; ///< the surface the walk met
     const Vec3<T>& direction; ///< unit, arriving
     const Rgb<T>& power;      ///< what the path carries here, after the medium it crossed
     bool direct;              ///< nothing scattered it yet (a photon's first hit)
@@ -41,7 +41,9 @@ struct WalkVertex {
     T wavelength;             ///< 0 while white
     const MediumStack& media; ///< the transmissive objects the path is inside of
 
+    /// Where the walk met the surface, with its normal and side.
     [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
+    /// Whether every scattering so far was specular.
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
 };
 
