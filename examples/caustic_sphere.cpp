@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // caustic_sphere: a glass ball on a checkered floor under a point light, photon-mapped:
-// the ball focuses the light into a bright caustic inside its own shadow (the seed's
-// figure 16). With --whitted it is rendered instead as the lecture notes' shadow rays see
+// the ball focuses the light into a bright caustic inside its own shadow (the classic test of
+// photon mapping, Jensen 2001). With --whitted it is rendered instead as Whitted's shadow rays see
 // it: light passing straight through the glass, no focus.
 #include "cli.hpp"
 #include "methods.hpp"

@@ -2,7 +2,7 @@
 // cornell_caustics: the Cornell box of shared/scenes/cornell_caustics.pov, photon-mapped:
 // the glass sphere's caustic and the walls' colour bleeding (by default a final gather
 // behind an irradiance cache; --method chooses another estimator), and pictures of where
-// the global and the caustic photons landed (the seed's figures 13 and 15).
+// the global and the caustic photons landed.
 //
 // With --light povray it renders what POV-Ray does: its no-falloff light, direct light
 // and caustics only (POV-Ray's scene has no radiosity, so no global map, and the

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// csg_figures: the seed report's figures (shared/seeds/000_81f2033c38ead54b.txt sections
-// 2-3): an ellipsoid from a general quadric; two spheres in union, intersection and
-// difference; a CSG of a CSG; and a glass lens made by intersection, refracting through
-// both of its faces. One image each, figure_*.png.
+// csg_figures: the classic quadric and CSG figures: an ellipsoid from a general quadric;
+// two spheres in union, intersection and difference; a CSG of a CSG; and a glass lens
+// made by intersection, refracting through both of its faces. One image each,
+// figure_*.png.
 #include "cli.hpp"
 
 #include <prism/prism.hpp>
@@ -15,7 +15,7 @@ using namespace prism;
 using T = float;
 
 /// One figure: the shape on a checkered floor in sunlight from the upper left. No
-/// ambient: the notes' rule (ambient only where every light is occluded) would draw a
+/// ambient: Whitted's rule (ambient only where every light is occluded) would draw a
 /// dark line along each terminator, where a surface turning away from the light is
 /// still lit, faintly, and so gets no ambient.
 template <Shape S, Material M>
@@ -39,7 +39,7 @@ int main(int argc, char** argv)
         options.render.width = 480;
         options.render.height = 360;
         options.render.spp = 4;
-        if (!examples::parse(argc, argv, options, "the seed report's quadric and CSG figures")) return 0;
+        if (!examples::parse(argc, argv, options, "quadric and CSG figures: an ellipsoid, union, intersection, difference, a CSG of a CSG, a lens")) return 0;
 
         const auto red = Diffuse<T>{.albedo = {.color = {0.8f, 0.2f, 0.15f}}, .ka = 0, .phong = 0.4f};
         const auto gold = Diffuse<T>{.albedo = {.color = {0.85f, 0.6f, 0.15f}}, .ka = 0, .phong = 0.4f};

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // metals: gold, silver, copper and aluminium spheres from measured spectral indices
 // (Johnson & Christy; Palik), reduced to RGB by integration against the CIE observer,
-// beside the lecture notes' constant kr of the same normal-incidence colour.
+// beside a constant kr of the same normal-incidence colour (Whitted's model).
 #include "cli.hpp"
 #include "scenes/sphere_row.hpp"
 
@@ -43,7 +43,7 @@ int main(int argc, char** argv)
         using Measured = prism::Conductor<T, prism::MeasuredConductor<T>>;
         const Measured measured[4] = {prism::measured_metal<T>(metals::gold), prism::measured_metal<T>(metals::silver),
                                       prism::measured_metal<T>(metals::copper), prism::measured_metal<T>(metals::aluminium)};
-        // The notes' conductor: a constant kr, here each metal's own normal-incidence RGB.
+        // Whitted's conductor: a constant kr, here each metal's own normal-incidence RGB.
         prism::Mirror<T> plain[4];
         for (int i = 0; i < 4; ++i) plain[i].fresnel.kr = measured[i].fresnel.reflectance(1);
 
