@@ -3,9 +3,13 @@
 
 #include <doctest/doctest.h>
 
+#include <bit>
+#include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <sys/stat.h>
 #include <thread>
@@ -41,7 +45,7 @@ TEST_CASE("PFM round-trips every float exactly")
     const fs::path dir = scratch_folder("pfm");
     const prism::Film film = gradient();
     prism::write_image(film, dir / "g.pfm");
-    const prism::Film back = prism::read_pfm(dir / "g.pfm");
+    const prism::Film back = prism::read_pfm(dir / "g.pfm").film();
     REQUIRE(back.width() == 7);
     REQUIRE(back.height() == 5);
     for (int y = 0; y < 5; ++y)
@@ -122,7 +126,7 @@ TEST_CASE("a write goes through to what is not a regular file and never replaces
     fs::create_symlink(real, link);
     prism::write_pfm(film, link);
     CHECK(fs::is_symlink(fs::symlink_status(link)));
-    CHECK(prism::read_pfm(real).pixels() == film.pixels());
+    CHECK(prism::read_pfm(real).film().pixels() == film.pixels());
     int leftovers = 0;
     for (const auto& entry : fs::directory_iterator(dir)) leftovers += entry.path().string().find("prism-partial") != std::string::npos;
     CHECK(leftovers == 0);
@@ -138,5 +142,131 @@ TEST_CASE("read_pfm checks its header against the file's size before allocating"
     CHECK_THROWS_WITH_AS((void)prism::read_pfm(dir / "big.pfm"), doctest::Contains("20000 x 20000"), std::runtime_error);
     std::ofstream(dir / "nan.pfm", std::ios::binary) << "PF\n1 1\nnan\n";
     CHECK_THROWS_AS((void)prism::read_pfm(dir / "nan.pfm"), std::runtime_error);
+    fs::remove_all(dir);
+}
+
+namespace {
+
+/// A PFM file's bytes: `header`, then `values` as little-endian floats.
+std::string pfm_bytes(const std::string& header, const std::vector<float>& values)
+{
+    std::string bytes = header;
+    for (const float v : values) {
+        char raw[4];
+        std::memcpy(raw, &v, 4);
+        if constexpr (std::endian::native == std::endian::big) std::swap(raw[0], raw[3]), std::swap(raw[1], raw[2]);
+        bytes.append(raw, 4);
+    }
+    return bytes;
+}
+
+void write_bytes(const fs::path& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
+
+std::string message_of(const fs::path& path)
+{
+    try {
+        (void)prism::read_pfm(path);
+    } catch (const std::runtime_error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST_CASE("read_pfm keeps negative, NaN and infinite values as data, and a Film refuses them by pixel")
+{
+    // Issue 33: they were set to 0 without a word (negative values are legal PFM).
+    const fs::path dir = scratch_folder("pfm-data");
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    write_bytes(dir / "odd.pfm", pfm_bytes("PF\n2 1\n-1.0\n", {-1.5f, 0.25f, inf, nan, -inf, 3.0f}));
+    const prism::PfmImage image = prism::read_pfm(dir / "odd.pfm");
+    REQUIRE(image.width == 2);
+    REQUIRE(image.channels == 3);
+    CHECK(image.at(0, 0, 0) == -1.5f);
+    CHECK(image.at(0, 0, 2) == inf);
+    CHECK(std::isnan(image.at(1, 0, 0)));
+    CHECK(image.at(1, 0, 1) == -inf);
+    CHECK_THROWS_WITH_AS((void)image.film(), doctest::Contains("pixel (0, 0) holds -1.5"), std::runtime_error);
+    // Grey (Pf): one float a pixel, bottom row first.
+    write_bytes(dir / "grey.pfm", pfm_bytes("Pf\n1 2\n-1\n", {0.5f, 2.0f}));
+    const prism::PfmImage grey = prism::read_pfm(dir / "grey.pfm");
+    CHECK(grey.channels == 1);
+    CHECK(grey.at(0, 0, 0) == 2.0f);
+    CHECK(grey.film().at(0, 1) == prism::Rgb<float>(0.5f));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("read_pfm reads a header whose lines end in CRLF, and refuses one that shifts the data")
+{
+    // Issue 33: "\r\n" after the scale was read as one byte of white space and one of data.
+    const fs::path dir = scratch_folder("pfm-crlf");
+    write_bytes(dir / "crlf.pfm", pfm_bytes("PF\r\n1 1\r\n-1.0\r\n", {0.25f, 0.5f, 0.75f}));
+    const prism::PfmImage image = prism::read_pfm(dir / "crlf.pfm");
+    CHECK(image.at(0, 0, 0) == 0.25f);
+    CHECK(image.at(0, 0, 2) == 0.75f);
+    write_bytes(dir / "cr.pfm", pfm_bytes("PF\n1 1\n-1.0\r", {0.25f, 0.5f, 0.75f}));
+    CHECK(message_of(dir / "cr.pfm").find("ends in") != std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("read_pfm sizes its claims in 64 bits and says how many bytes are missing")
+{
+    // Issue 33: a width past 178 956 970 overflowed `x * 12` in int; 2147483647 squared made
+    // a message of -9223372036854775808 bytes.
+    const fs::path dir = scratch_folder("pfm-size");
+    write_bytes(dir / "wide.pfm", pfm_bytes("PF\n200000000 1\n-1.0\n", {1, 2, 3}));
+    const std::string wide = message_of(dir / "wide.pfm");
+    CHECK(wide.find("2400000000 bytes, but 12 follow") != std::string::npos);
+    write_bytes(dir / "huge.pfm", "PF\n2147483647 2147483647\n-1.0\n");
+    const std::string huge = message_of(dir / "huge.pfm");
+    CHECK(huge.find("more bytes than a file can hold") != std::string::npos);
+    CHECK(huge.find("-9223372036854775808") == std::string::npos);
+    for (const char* header : {"PF\n-3 1\n-1\n", "PF\n0 1\n-1\n", "PF\n2147483648 1\n-1\n", "PF\n1.5 1\n-1\n", "PF\n1 1\nnan\n", "PF\n1 1\n0\n"}) {
+        write_bytes(dir / "bad.pfm", pfm_bytes(header, {1, 2, 3}));
+        CHECK_THROWS_AS((void)prism::read_pfm(dir / "bad.pfm"), std::runtime_error);
+    }
+    // Bytes past the pixels are refused, not ignored.
+    write_bytes(dir / "long.pfm", pfm_bytes("PF\n1 1\n-1\n", {1, 2, 3, 4}));
+    CHECK(message_of(dir / "long.pfm").find("bytes follow") != std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("read_pfm reads a valid PFM through a FIFO, and refuses an endless stream at once")
+{
+    // Issue 33: a FIFO's size is unknown ("file is truncated ... 0 follow it"); /dev/zero
+    // made the reader's memory grow without bound.
+    const fs::path dir = scratch_folder("pfm-fifo");
+    const fs::path fifo = dir / "pipe.pfm";
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    std::thread writer([&] { write_bytes(fifo, pfm_bytes("PF\n1 1\n-1\n", {0.5f, 1.5f, 2.5f})); });
+    const prism::PfmImage image = prism::read_pfm(fifo);
+    writer.join();
+    CHECK(image.at(0, 0, 1) == 1.5f);
+    CHECK_THROWS_WITH_AS((void)prism::read_pfm("/dev/zero"), doctest::Contains("not a PFM file"), std::runtime_error);
+    // A stream is read no further than the limit.
+    std::thread endless([&] { write_bytes(fifo, pfm_bytes("PF\n1000 1000\n-1\n", std::vector<float>(3000, 1.0f))); });
+    CHECK_THROWS_WITH_AS((void)prism::read_pfm(fifo, {.max_bytes = 4096}), doctest::Contains("limit"), std::runtime_error);
+    endless.join();
+    fs::remove_all(dir);
+}
+
+TEST_CASE("read_png refuses a truncated file and a header its bytes cannot hold, with a reason")
+{
+    // Issue 33: a truncated PNG gave a message with an empty reason.
+    const fs::path dir = scratch_folder("png-strict");
+    prism::write_png(gradient(), dir / "g.png");
+    std::ifstream in(dir / "g.png", std::ios::binary);
+    const std::string whole((std::istreambuf_iterator<char>(in)), {});
+    write_bytes(dir / "cut.png", whole.substr(0, whole.size() / 2));
+    CHECK_THROWS_WITH_AS((void)prism::read_png(dir / "cut.png"), doctest::Contains("truncated or corrupt (stb_image: "), std::runtime_error);
+    // The same header claiming 60000 x 60000 pixels: refused before stb_image allocates.
+    std::string big = whole;
+    for (const int at : {16, 20}) big[std::size_t(at)] = 0, big[std::size_t(at + 1)] = 0, big[std::size_t(at + 2)] = char(0xea), big[std::size_t(at + 3)] = 0x60;
+    write_bytes(dir / "big.png", big);
+    CHECK_THROWS_WITH_AS((void)prism::read_png(dir / "big.png"), doctest::Contains("60000 x 60000 pixels, more than its"), std::runtime_error);
+    CHECK_THROWS_WITH_AS((void)prism::read_png("/dev/zero"), doctest::Contains("not a PNG file"), std::runtime_error);
+    write_bytes(dir / "short.png", "\x89PNG");
+    CHECK_THROWS_WITH_AS((void)prism::read_png(dir / "short.png"), doctest::Contains("too short"), std::runtime_error);
     fs::remove_all(dir);
 }

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <prism/core/math.hpp>
+#include <prism/io/input.hpp>
 #include <prism/render/film.hpp>
 
 #if !defined(INCLUDE_STB_IMAGE_WRITE_H)
@@ -52,12 +53,14 @@
 #undef PRISM_DEFINED_STBI_IMPLEMENTATION
 #endif
 
+#include <algorithm>
 #include <atomic>
 #include <bit>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -194,66 +197,150 @@ inline void write_image(const Film& film, const std::filesystem::path& path)
     detail::throw_io(path, "unknown image extension '" + extension + "' (use .png or .pfm)");
 }
 
-/// Read an 8-bit PNG (grey, RGB or with alpha) into linear radiance, undoing sRGB.
-[[nodiscard]] inline Film read_png(const std::filesystem::path& path)
+/// Read an 8-bit PNG (grey, RGB or with alpha) into linear radiance, undoing sRGB. The file
+/// is read no further than `limits`, and its header's size is checked against its bytes
+/// before stb_image allocates the picture: deflate expands at most 1032 times, so a header
+/// that claims more pixels than its compressed bytes can hold is refused.
+[[nodiscard]] inline Film read_png(const std::filesystem::path& path, ReadLimits limits = {})
 {
-    int width = 0, height = 0, channels = 0;
-    unsigned char* data = stbi_load(path.c_str(), &width, &height, &channels, 3);
-    if (data == nullptr) throw std::runtime_error("prism: cannot read '" + path.string() + "': " + stbi_failure_reason());
-    Film film(width, height);
+    detail::InputFile file(path, "image", limits);
+    // The signature and the header first, so that what is no PNG (/dev/zero) is refused
+    // before the rest is read.
+    std::vector<unsigned char> bytes;
+    if (file.size() && *file.size() < 33) file.fail("it is too short to be a PNG file (" + std::to_string(*file.size()) + " bytes)");
+    file.read(bytes, 33, "a PNG signature and header");
+    static constexpr unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (std::memcmp(bytes.data(), signature, 8) != 0 || std::memcmp(bytes.data() + 12, "IHDR", 4) != 0)
+        file.fail("it is not a PNG file (no PNG signature and IHDR chunk)");
+    const std::vector<unsigned char> rest = file.rest();
+    bytes.insert(bytes.end(), rest.begin(), rest.end());
+    const auto be32 = [&](std::size_t at) { return std::uint32_t(bytes[at]) << 24 | std::uint32_t(bytes[at + 1]) << 16 | std::uint32_t(bytes[at + 2]) << 8 | bytes[at + 3]; };
+    const std::uint32_t width = be32(16), height = be32(20), depth = bytes[24];
+    if (width == 0 || height == 0 || width > (1u << 24) || height > (1u << 24))
+        file.fail("its header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels (each side must be 1 to 16777216)");
+    // Raw scanlines: a filter byte and up to 4 channels of `depth` bits a pixel.
+    const double raw = double(height) * (1.0 + std::ceil(double(width) * 4.0 * double(depth) / 8.0));
+    if (raw > 1032.0 * double(bytes.size()) + 1024.0)
+        file.fail("its header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than its " + std::to_string(bytes.size()) +
+                  " bytes can hold compressed");
+    int w = 0, h = 0, channels = 0;
+    unsigned char* data = stbi_load_from_memory(bytes.data(), int(std::min<std::size_t>(bytes.size(), INT32_MAX)), &w, &h, &channels, 3);
+    if (data == nullptr) {
+        const char* reason = stbi_failure_reason();
+        file.fail(std::string("it is truncated or corrupt (stb_image: ") + (reason != nullptr && *reason != 0 ? reason : "no reason given") + ")");
+    }
+    struct Free {
+        unsigned char* data;
+        ~Free() { stbi_image_free(data); }
+    } owner{data};
+    Film film(w, h);
     const auto linear = [](unsigned char byte) {
         const float x = float(byte) / 255.0f;
         return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
     };
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const unsigned char* p = data + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const unsigned char* p = data + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
             film.set(x, y, Rgb<float>{linear(p[0]), linear(p[1]), linear(p[2])});
         }
-    stbi_image_free(data);
     return film;
 }
 
-/// Read a PFM written by write_pfm (3 channels, either byte order).
-[[nodiscard]] inline Film read_pfm(const std::filesystem::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("prism: cannot read '" + path.string() + "': " + std::strerror(errno));
-    std::string magic;
-    int width = 0, height = 0;
-    double scale = 0;
-    in >> magic >> width >> height >> scale;
-    in.get();
-    if (!in || magic != "PF" || width <= 0 || height <= 0 || scale == 0 || !std::isfinite(scale))
-        throw std::runtime_error("prism: cannot read '" + path.string() + "': not an RGB PFM file");
-    // The header is checked against the file's size before anything is allocated: 20
-    // bytes must not make a reader ask for gigabytes.
-    const std::streamoff header_end = in.tellg();
-    in.seekg(0, std::ios::end);
-    const std::streamoff file_size = in.tellg();
-    in.seekg(header_end);
-    const double needed = 12.0 * double(width) * double(height);
-    if (header_end < 0 || file_size < 0 || double(file_size - header_end) < needed)
-        throw std::runtime_error("prism: cannot read '" + path.string() + "': file is truncated (the header says " + std::to_string(width) +
-                                 " x " + std::to_string(height) + " pixels, " + std::to_string(static_cast<long long>(needed)) +
-                                 " bytes, but " + std::to_string(static_cast<long long>(file_size - header_end)) + " follow it)");
-    Film film(width, height);
-    const bool little = scale < 0;
-    std::vector<unsigned char> raw(static_cast<std::size_t>(width) * 12);
-    for (int y = height - 1; y >= 0; --y) {
-        if (!in.read(reinterpret_cast<char*>(raw.data()), static_cast<std::streamsize>(raw.size())))
-            throw std::runtime_error("prism: cannot read '" + path.string() + "': file is truncated");
-        for (int x = 0; x < width; ++x) {
-            Rgb<float> p;
-            for (int c = 0; c < 3; ++c) {
-                unsigned char* b = raw.data() + x * 12 + c * 4;
-                if (little != (std::endian::native == std::endian::little)) std::swap(b[0], b[3]), std::swap(b[1], b[2]);
-                std::memcpy(&p[c], b, 4);
-            }
-            film.set(x, y, p);
-        }
+/// A PFM file's pixels as they are stored: any float, negative, NaN and infinite included
+/// (PFM is a data format), row by row from the top, `channels` floats a pixel.
+struct PfmImage {
+    int width = 0;             ///< pixels a row
+    int height = 0;            ///< rows
+    int channels = 0;          ///< 3 (PF) or 1 (Pf, grey)
+    double scale = -1;         ///< the header's scale: its sign is the byte order (negative: little endian), its size is kept, not applied
+    std::vector<float> values; ///< width x height x channels, row by row from the top
+
+    /// Channel c of pixel (x, y), from the top left.
+    [[nodiscard]] float at(int x, int y, int c) const noexcept
+    {
+        return values[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(channels) + std::size_t(c)];
     }
-    return film;
+
+    /// The pixels as radiance (a grey image's value in every channel). Throws
+    /// std::runtime_error naming the first pixel that is negative, NaN or infinite, which a
+    /// Film cannot hold.
+    [[nodiscard]] Film film() const
+    {
+        Film out(width, height);
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                Rgb<float> p;
+                for (int c = 0; c < 3; ++c) {
+                    p[c] = at(x, y, channels == 3 ? c : 0);
+                    if (!(std::isfinite(p[c]) && p[c] >= 0))
+                        throw std::runtime_error("prism: PFM pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") holds " + std::to_string(p[c]) +
+                                                 ", which radiance cannot be (a Film holds finite values >= 0)");
+                }
+                out.set(x, y, p);
+            }
+        return out;
+    }
+};
+
+/// Read a PFM file (PF: RGB, Pf: grey; either byte order; lines ending in "\n" or "\r\n"),
+/// keeping every value as it is stored. The header is read a byte at a time and no longer
+/// than 64 bytes a field; the pixels it claims are checked against a regular file's size
+/// before anything is allocated, and a stream's (a FIFO's) are taken as they arrive; a file
+/// with bytes past its pixels is refused.
+[[nodiscard]] inline PfmImage read_pfm(const std::filesystem::path& path, ReadLimits limits = {})
+{
+    detail::InputFile file(path, "image", limits);
+    PfmImage image;
+    const int p = file.get(), f = file.get();
+    if (p != 'P' || (f != 'F' && f != 'f')) file.fail("it is not a PFM file (it does not start with PF or Pf)");
+    image.channels = f == 'F' ? 3 : 1;
+    // Fields separated by white space; the scale ends with one line end ("\n" or "\r\n").
+    const auto space = [](int c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+    int last = file.get();
+    if (!space(last)) file.fail("its magic PF or Pf is not followed by white space");
+    const auto field = [&](const char* name) {
+        int c = file.get();
+        while (space(c)) c = file.get();
+        std::string text;
+        for (; c >= 0 && !space(c); c = file.get()) {
+            if (text.size() == 64) file.fail(std::string("its header's ") + name + " is longer than 64 bytes");
+            text.push_back(char(c));
+        }
+        if (text.empty()) file.fail(std::string("its header ends before its ") + name);
+        last = c;
+        return text;
+    };
+    const auto dimension = [&](const char* name) {
+        const std::string text = field(name);
+        if (text.find_first_not_of("0123456789") != std::string::npos || text.size() > 10 || std::stoll(text) < 1 || std::stoll(text) > INT32_MAX)
+            file.fail(std::string("its ") + name + " '" + text + "' is not a whole number from 1 to 2147483647");
+        return int(std::stoll(text));
+    };
+    image.width = dimension("width");
+    image.height = dimension("height");
+    const std::string scale = field("scale");
+    char* end = nullptr;
+    image.scale = std::strtod(scale.c_str(), &end);
+    if (end != scale.c_str() + scale.size() || !std::isfinite(image.scale) || image.scale == 0)
+        file.fail("its scale '" + scale + "' is not a finite, non-zero number");
+    if (last == '\r' && file.get() != '\n') file.fail("its scale's line ends in \\r without \\n");
+    const auto floats = detail::checked_product(std::uint64_t(image.width) * std::uint64_t(image.height), std::uint64_t(image.channels));
+    const auto bytes = floats ? detail::checked_product(*floats, 4) : std::nullopt;
+    if (!bytes) file.fail("its header says " + std::to_string(image.width) + " x " + std::to_string(image.height) + " pixels, more bytes than a file can hold");
+    std::vector<unsigned char> raw;
+    file.read(raw, *bytes, "the header's " + std::to_string(image.width) + " x " + std::to_string(image.height) + " pixels");
+    if (!file.at_end()) file.fail("bytes follow its " + std::to_string(image.width) + " x " + std::to_string(image.height) + " pixels");
+    // Stored bottom row first.
+    image.values.resize(std::size_t(*floats));
+    const bool swap = (image.scale < 0) != (std::endian::native == std::endian::little);
+    const std::size_t row = std::size_t(image.width) * std::size_t(image.channels);
+    for (std::size_t y = 0; y < std::size_t(image.height); ++y)
+        for (std::size_t i = 0; i < row; ++i) {
+            unsigned char* b = raw.data() + 4 * ((std::size_t(image.height) - 1 - y) * row + i);
+            if (swap) std::swap(b[0], b[3]), std::swap(b[1], b[2]);
+            std::memcpy(&image.values[y * row + i], b, 4);
+        }
+    return image;
 }
 
 } // namespace prism
