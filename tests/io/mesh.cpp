@@ -7,7 +7,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
+#include <sys/stat.h>
+#include <thread>
 
 #include <unistd.h>
 
@@ -135,7 +138,7 @@ TEST_CASE("a broken PLY file is refused with its path and the reason")
     refused("unended.ply", "ply\nformat ascii 1.0\nelement vertex 3\n", "no end_header");
     refused("type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\nend_header\n", "a type PLY does not define");
     refused("noz.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n", "lacks an x, y or z");
-    refused("short.ply", head + std::string(20, '\0'), "ends early");
+    refused("short.ply", head + std::string(20, '\0'), "truncated");
     refused("past.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
                         "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n", "refers to vertex 5");
     refused("word.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 zero 0\n", "not a number");
@@ -191,4 +194,77 @@ TEST_CASE("vertex normals and texture coordinates are read where every face has 
                                                      "0 0 0 0 0 1\n1 0 0 0 0 0\n0 1 0 0 0 1\n3 0 1 2\n");
     CHECK_THROWS_WITH_AS((void)prism::load_ply<float>(ply_zero), doctest::Contains("the normal of vertex 1 is (0, 0, 0)"), std::runtime_error);
     for (const auto& p : {path, partial, zero, ply, ply_zero}) fs::remove(p);
+}
+
+namespace {
+
+std::string ply_refusal(const std::string& name, const std::string& text)
+{
+    const fs::path path = write_file(name, text);
+    std::string message;
+    try {
+        (void)prism::load_ply<float>(path);
+    } catch (const std::runtime_error& e) {
+        message = e.what();
+    }
+    fs::remove(path);
+    return message;
+}
+
+const std::string triangle_head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                                  "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+
+} // namespace
+
+TEST_CASE("PLY counts are whole numbers the file can hold: no endless element, no claim past the file's bytes")
+{
+    // Issue 33: an element with no properties and count -1 (read as 2^64 - 1) or 2^63, in
+    // a 196-byte file, never returned.
+    const std::string head = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+    CHECK(ply_refusal("minus.ply", head + "element junk -1\nend_header\n").find("not a whole number from 0 to 4294967295") != std::string::npos);
+    CHECK(ply_refusal("huge.ply", head + "element junk 9223372036854775808\nend_header\n").find("not a whole number") != std::string::npos);
+    CHECK(ply_refusal("empty.ply", head + "element junk 5\nend_header\n" + std::string(36, '\0')).find("no properties") != std::string::npos);
+    CHECK(ply_refusal("claim.ply", head + "element face 4000000000\nproperty list uchar int vertex_indices\nend_header\n" + std::string(36, '\0'))
+              .find("truncated") != std::string::npos);
+}
+
+TEST_CASE("PLY values are numbers of their type: no fractional index or count, no bad magic, no NaN position")
+{
+    // Issue 33: indices 0.9 1.5 2.7 and a count 2.5 were truncated or misread, a header
+    // 'plyfoo' was accepted, and binary NaN or infinite positions reached TriangleMesh.
+    CHECK(ply_refusal("fraction.ply", triangle_head + "3 0.9 1.5 2.7\n").find("'0.9', not a whole number") != std::string::npos);
+    CHECK(ply_refusal("count.ply", triangle_head + "2.5 0 1 2\n").find("'2.5', not a whole number") != std::string::npos);
+    CHECK(ply_refusal("range.ply", triangle_head + "300 0 1 2\n").find("'300', not a whole number that a PLY uchar holds") != std::string::npos);
+    CHECK(ply_refusal("magic.ply", "plyfoo\nformat ascii 1.0\nend_header\n").find("'ply' alone") != std::string::npos);
+    CHECK(ply_refusal("two.ply", triangle_head + "2 0 1\n").find("face 0 has 2 vertices") != std::string::npos);
+    CHECK(ply_refusal("tail.ply", triangle_head + "3 0 1 2\n7\n").find("bytes follow") != std::string::npos);
+    CHECK(ply_refusal("nan.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 nan 0\n")
+              .find("vertex 0's y is nan") != std::string::npos);
+    for (const float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+        std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                             "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+        const float corners[9] = {0, 0, 0, 1, 0, bad, 0, 1, 0};
+        for (float c : corners) {
+            char raw[4];
+            std::memcpy(raw, &c, 4);
+            if constexpr (std::endian::native == std::endian::big) std::swap(raw[0], raw[3]), std::swap(raw[1], raw[2]);
+            binary.append(raw, 4);
+        }
+        binary += std::string("\x03\0\0\0\0\x01\0\0\0\x02\0\0\0", 13);
+        CHECK(ply_refusal("binary-nan.ply", binary).find("vertex 1's z is") != std::string::npos);
+    }
+}
+
+TEST_CASE("a PLY file is read through a FIFO, and an endless stream is refused at once")
+{
+    // Issue 33: /dev/zero as PLY made memory grow without bound.
+    CHECK_THROWS_WITH_AS((void)prism::load_ply<float>("/dev/zero"), doctest::Contains("does not start with 'ply'"), std::runtime_error);
+    const fs::path fifo = fs::temp_directory_path() / ("prism-mesh-test-" + std::to_string(::getpid()) + "-pipe.ply");
+    fs::remove(fifo);
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    std::thread writer([&] { std::ofstream(fifo) << triangle_head << "3 0 1 2\n"; });
+    const auto mesh = prism::load_ply<float>(fifo);
+    writer.join();
+    CHECK(mesh.triangles.size() == 1);
+    fs::remove(fifo);
 }

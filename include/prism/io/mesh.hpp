@@ -16,6 +16,7 @@
 #pragma once
 
 #include <prism/geometry/mesh_builders.hpp>
+#include <prism/io/input.hpp>
 
 #include <tiny_obj_loader.h>
 
@@ -24,7 +25,9 @@
 #include <bit>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -104,12 +107,14 @@ struct PlyProperty {
     std::string count_type; ///< empty for a scalar
 };
 
+/// One element of a PLY header: its name, how many items it has, and their properties.
 struct PlyElement {
     std::string name;
     std::uint64_t count = 0;
     std::vector<PlyProperty> properties;
 };
 
+/// A PLY type's size in bytes, or 0 for a name PLY does not define.
 inline std::size_t ply_type_size(const std::string& type)
 {
     if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
@@ -119,21 +124,38 @@ inline std::size_t ply_type_size(const std::string& type)
     return 0;
 }
 
-/// Reads PLY values one at a time, as text or as binary of either byte order.
+/// Whether a PLY type holds whole numbers.
+inline bool ply_integer(const std::string& type) { return type != "float" && type != "float32" && type != "double" && type != "float64"; }
+
+/// The range of a PLY integer type.
+inline std::pair<double, double> ply_range(const std::string& type)
+{
+    if (type == "char" || type == "int8") return {-128, 127};
+    if (type == "uchar" || type == "uint8") return {0, 255};
+    if (type == "short" || type == "int16") return {-32768, 32767};
+    if (type == "ushort" || type == "uint16") return {0, 65535};
+    if (type == "int" || type == "int32") return {-2147483648.0, 2147483647.0};
+    return {0, 4294967295.0};
+}
+
+/// Reads PLY values one at a time, as text or as binary of either byte order, refusing a
+/// word that is not a number of its type (a fraction where a whole number belongs, a
+/// number out of its type's range) by the element and item it belongs to.
 class PlyReader {
 public:
-    PlyReader(std::istream& in, int format, std::string path) : in_(in), format_(format), path_(std::move(path)) {}
+    PlyReader(InputFile& file, int format) : file_(file), format_(format) {}
 
-    double value(const std::string& type)
+    /// The next value, of PLY type `type`; `where` names it in a message.
+    double value(const std::string& type, const std::string& where)
     {
-        if (format_ == 0) {
-            double v = 0;
-            if (!(in_ >> v)) fail("the data ends early or holds a word that is not a number");
-            return v;
-        }
+        if (format_ == 0) return text_value(type, where);
         const std::size_t size = ply_type_size(type);
         unsigned char bytes[8] = {};
-        if (!in_.read(reinterpret_cast<char*>(bytes), std::streamsize(size))) fail("the data ends early");
+        for (std::size_t i = 0; i < size; ++i) {
+            const int c = file_.get();
+            if (c < 0) file_.fail("the data ends early, in " + where);
+            bytes[i] = static_cast<unsigned char>(c);
+        }
         const bool swap = (format_ == 1) != (std::endian::native == std::endian::little);
         if (swap) std::reverse(bytes, bytes + size);
         const auto as = [&]<class V>(V) {
@@ -151,44 +173,90 @@ public:
         return as(double{});
     }
 
-    [[noreturn]] void fail(const std::string& reason) const { throw std::runtime_error("cannot read mesh '" + path_ + "': " + reason); }
+    /// Whether only white space is left (ASCII), or nothing (binary).
+    [[nodiscard]] bool at_end()
+    {
+        for (int c = file_.get(); c >= 0; c = file_.get())
+            if (format_ != 0 || !(c == ' ' || c == '\t' || c == '\r' || c == '\n')) return false;
+        return true;
+    }
 
 private:
-    std::istream& in_;
+    double text_value(const std::string& type, const std::string& where)
+    {
+        int c = file_.get();
+        while (c == ' ' || c == '\t' || c == '\r' || c == '\n') c = file_.get();
+        std::string word;
+        for (; c >= 0 && !(c == ' ' || c == '\t' || c == '\r' || c == '\n'); c = file_.get()) {
+            if (c == 0) file_.fail("a NUL byte in its text data, in " + where);
+            if (word.size() == 64) file_.fail(where + " is a word longer than 64 bytes");
+            word.push_back(char(c));
+        }
+        if (word.empty()) file_.fail("the data ends early, in " + where);
+        char* end = nullptr;
+        const double v = std::strtod(word.c_str(), &end);
+        if (end != word.c_str() + word.size()) file_.fail(where + " is '" + word + "', not a number");
+        if (ply_integer(type)) {
+            const auto [low, high] = ply_range(type);
+            if (word.find_first_not_of("+-0123456789") != std::string::npos || !(v >= low && v <= high))
+                file_.fail(where + " is '" + word + "', not a whole number that a PLY " + type + " holds");
+        }
+        return v;
+    }
+
+    InputFile& file_;
     int format_; ///< 0 ascii, 1 little endian, 2 big endian
-    std::string path_;
 };
+
+/// A header line's next word as a count: a whole number from 0 to 2^32 - 1.
+inline std::uint64_t ply_count(InputFile& file, std::istringstream& words, const std::string& line)
+{
+    std::string word;
+    words >> word;
+    if (word.empty() || word.size() > 10 || word.find_first_not_of("0123456789") != std::string::npos || std::stoull(word) > 4294967295ull)
+        file.fail("the header line '" + line + "' has a count that is not a whole number from 0 to 4294967295");
+    return std::stoull(word);
+}
 
 } // namespace detail
 
 /// The triangles of a PLY file (its vertex element's x, y, z and its face element's
-/// vertex_indices or vertex_index list), in ASCII or binary of either byte order.
+/// vertex_indices or vertex_index list), in ASCII or binary of either byte order. Bounded
+/// and strict: a header's counts are checked against the bytes the file holds before any
+/// item is read, every value must be a number of its type (a whole number in range where
+/// the type is an integer), positions, normals and coordinates must be finite, a face must
+/// have 3 vertices or more, and nothing may follow the last element.
 template <Scalar T = float>
-[[nodiscard]] MeshBuffers<T> load_ply(const std::filesystem::path& path)
+[[nodiscard]] MeshBuffers<T> load_ply(const std::filesystem::path& path, ReadLimits limits = {})
 {
-    std::ifstream in(path, std::ios::binary);
-    const std::string name = path.string();
-    const auto fail = [&](const std::string& reason) -> void { throw std::runtime_error("cannot read mesh '" + name + "': " + reason); };
-    if (!in) fail(std::strerror(errno));
-    std::string line;
-    if (!std::getline(in, line) || line.substr(0, 3) != "ply") fail("it does not start with 'ply'");
+    detail::InputFile file(path, "mesh", limits);
+    const auto fail = [&](const std::string& reason) { file.fail(reason); };
+    const auto header_line = [&]() {
+        const std::optional<std::string> line = file.line(4096, "a header line");
+        if (!line) fail("its header has no end_header");
+        return *line;
+    };
+    if (file.get() != 'p' || file.get() != 'l' || file.get() != 'y') fail("it does not start with 'ply'");
+    if (const std::string rest = header_line(); !rest.empty()) fail("it does not start with 'ply' alone on its line (it starts 'ply" + rest.substr(0, 32) + "')");
     int format = -1;
     std::vector<detail::PlyElement> elements;
-    for (;;) {
-        if (!std::getline(in, line)) fail("its header has no end_header");
-        if (!line.empty() && line.back() == '\r') line.pop_back();
+    for (int lines = 0;; ++lines) {
+        if (lines == 100000) fail("its header is longer than 100000 lines");
+        const std::string line = header_line();
         std::istringstream words(line);
         std::string word;
         words >> word;
         if (word == "end_header") break;
         if (word == "format") {
-            std::string kind;
-            words >> kind;
+            std::string kind, version;
+            words >> kind >> version;
             format = kind == "ascii" ? 0 : kind == "binary_little_endian" ? 1 : kind == "binary_big_endian" ? 2 : -1;
             if (format < 0) fail("its format '" + kind + "' is not ascii, binary_little_endian or binary_big_endian");
+            if (version != "1.0") fail("its format version '" + version + "' is not 1.0");
         } else if (word == "element") {
             detail::PlyElement element;
-            if (!(words >> element.name >> element.count)) fail("a header line '" + line + "' has no element name and count");
+            if (!(words >> element.name)) fail("a header line '" + line + "' has no element name and count");
+            element.count = detail::ply_count(file, words, line);
             elements.push_back(element);
         } else if (word == "property") {
             if (elements.empty()) fail("a property comes before any element");
@@ -197,16 +265,38 @@ template <Scalar T = float>
             words >> type;
             if (type == "list") words >> property.count_type >> property.type >> property.name;
             else property.type = type, words >> property.name;
-            if (detail::ply_type_size(property.type) == 0 || (!property.count_type.empty() && detail::ply_type_size(property.count_type) == 0))
-                fail("the property line '" + line + "' has a type PLY does not define");
+            if (property.name.empty() || detail::ply_type_size(property.type) == 0 || (!property.count_type.empty() && detail::ply_type_size(property.count_type) == 0))
+                fail("the property line '" + line + "' has a type PLY does not define, or no name");
+            if (!property.count_type.empty() && !detail::ply_integer(property.count_type)) fail("the list '" + property.name + "' has a count of type " + property.count_type + ", not a whole-number type");
+            if ((property.name == "vertex_indices" || property.name == "vertex_index") && !detail::ply_integer(property.type))
+                fail("the list '" + property.name + "' holds indices of type " + property.type + ", not a whole-number type");
             elements.back().properties.push_back(property);
+        } else if (word != "comment" && word != "obj_info" && !word.empty()) {
+            fail("its header has a line '" + line.substr(0, 64) + "' PLY does not define");
         }
-        // comment, obj_info and anything else: skipped.
     }
     if (format < 0) fail("its header has no format line");
-    detail::PlyReader reader(in, format, name);
+    // What the counts claim, against what the file holds: each item takes at least its
+    // scalars' and list counts' bytes in binary, and two bytes a value in ASCII.
+    if (file.size()) {
+        double least = 0;
+        for (const detail::PlyElement& element : elements) {
+            if (element.properties.empty() && element.count > 0) fail("its element '" + element.name + "' has " + std::to_string(element.count) + " items but no properties");
+            double item = 0;
+            for (const detail::PlyProperty& property : element.properties)
+                item += format == 0 ? 2.0 : double(detail::ply_type_size(property.count_type.empty() ? property.type : property.count_type));
+            least += item * double(element.count);
+        }
+        const double left = double(*file.size() - file.position());
+        if (least > left + 1)
+            fail("its header's counts need at least " + std::to_string(static_cast<unsigned long long>(least)) + " bytes, but " + std::to_string(static_cast<unsigned long long>(left)) +
+                 " follow: the file is truncated");
+    }
+    detail::PlyReader reader(file, format);
     MeshBuffers<T> out;
+    const char* axes[8] = {"x", "y", "z", "nx", "ny", "nz", "u", "v"};
     for (const detail::PlyElement& element : elements) {
+        if (element.properties.empty() && element.count > 0) fail("its element '" + element.name + "' has " + std::to_string(element.count) + " items but no properties");
         const bool vertices = element.name == "vertex", faces = element.name == "face";
         // Which scalar property holds x, y, z, nx, ny, nz, u, v.
         std::array<int, 8> slot_of;
@@ -224,30 +314,36 @@ template <Scalar T = float>
             with_uvs = slot_of[6] >= 0 && slot_of[7] >= 0;
         }
         for (std::uint64_t item = 0; item < element.count; ++item) {
+            const std::string where = element.name + " " + std::to_string(item);
             std::array<double, 8> at{};
             for (std::size_t k = 0; k < element.properties.size(); ++k) {
                 const detail::PlyProperty& property = element.properties[k];
                 if (property.count_type.empty()) {
-                    const double v = reader.value(property.type);
+                    const double v = reader.value(property.type, where + "'s " + property.name);
                     for (std::size_t a = 0; a < at.size(); ++a)
-                        if (vertices && slot_of[a] == int(k)) at[a] = v;
+                        if (vertices && slot_of[a] == int(k)) {
+                            if (!std::isfinite(v)) fail(where + "'s " + axes[a] + " is " + std::to_string(v));
+                            at[a] = v;
+                        }
                     continue;
                 }
-                const double count = reader.value(property.count_type);
-                if (!(count >= 0 && count <= 1e6)) fail("a list of " + std::to_string(count) + " items");
+                const double count = reader.value(property.count_type, where + "'s " + property.name + " count");
+                if (!(count >= 0 && count <= 1e6)) fail(where + "'s " + property.name + " has " + std::to_string(count) + " items (0 to 10^6)");
                 const bool indices = faces && (property.name == "vertex_indices" || property.name == "vertex_index");
+                if (indices && count < 3) fail(where + " has " + std::to_string(int(count)) + " vertices: a face needs 3 or more");
                 std::vector<std::uint32_t> polygon;
                 for (std::size_t i = 0; i < std::size_t(count); ++i) {
-                    const double v = reader.value(property.type);
+                    const double v = reader.value(property.type, where + "'s " + property.name);
                     if (!indices) continue;
                     if (!(v >= 0 && v < double(out.positions.size())))
-                        fail("face " + std::to_string(item) + " refers to vertex " + std::to_string(v) + " of " + std::to_string(out.positions.size()));
+                        fail(where + " refers to vertex " + std::to_string(static_cast<long long>(v)) + " of " + std::to_string(out.positions.size()));
                     polygon.push_back(std::uint32_t(v));
                 }
                 for (std::size_t i = 1; i + 1 < polygon.size(); ++i) out.triangles.push_back({polygon[0], polygon[i], polygon[i + 1]});
             }
             if (vertices) {
                 out.positions.push_back({T(at[0]), T(at[1]), T(at[2])});
+                if (!is_finite(out.positions.back())) fail(where + " is " + detail::describe(out.positions.back()) + " in this precision");
                 if (with_normals) {
                     const Vec3<T> normal{T(at[3]), T(at[4]), T(at[5])};
                     if (!is_finite(normal) || !(length(Vec3<double>(normal)) > 0)) fail("the normal of vertex " + std::to_string(item) + " is " + detail::describe(normal));
@@ -257,6 +353,7 @@ template <Scalar T = float>
             }
         }
     }
+    if (!reader.at_end()) fail("bytes follow its last element");
     if (out.triangles.empty()) fail("it has no faces");
     return out;
 }
