@@ -5,7 +5,8 @@
 # PRISM_ASSERT active:
 #   tools/fuzz.sh [SECONDS]     each target for SECONDS (default 30)
 # Targets (tests/fuzz/): quadric (crossings of any ten coefficients), csg (trees of
-# every operator), photon_map (the KD-tree against brute force, the estimates). Each
+# every operator), photon_map (the KD-tree against brute force, the estimates), and the
+# file readers pfm, png and ply (any bytes as a file). Each
 # starts from its committed corpus, tests/fuzz/corpus/<target>/, and writes what it
 # finds into build/fuzz/<target>/ (copy inputs worth keeping into the corpus); a crash
 # leaves its input as build/fuzz/crash-<target>-*, and the script fails.
@@ -36,7 +37,7 @@ fuzz_one() {
 }
 
 # One target per core at a time, each for SECONDS of its own.
-targets=(quadric csg photon_map)
+targets=(quadric csg photon_map pfm png ply)
 cores=$(nproc)
 rm -f "$out"/*.report
 for target in "${targets[@]}"; do

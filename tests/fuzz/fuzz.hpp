@@ -17,6 +17,8 @@
 #include <prism/geometry/transformed.hpp>
 #include <prism/photon/photon_map.hpp>
 
+#include "check.hpp"
+
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -76,15 +78,6 @@ private:
     std::size_t size_;
     std::size_t at_ = 0;
 };
-
-/// Abort with a message (libFuzzer keeps the input as a crash).
-#define FUZZ_CHECK(condition)                                                                                 \
-    do {                                                                                                      \
-        if (!(condition)) {                                                                                   \
-            std::fprintf(stderr, "fuzz check failed at %s:%d: %s\n", __FILE__, __LINE__, #condition);         \
-            std::abort();                                                                                     \
-        }                                                                                                     \
-    } while (false)
 
 template <class V>
 bool finite(const V& v)

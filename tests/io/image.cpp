@@ -251,7 +251,7 @@ TEST_CASE("read_pfm reads a valid PFM through a FIFO, and refuses an endless str
     fs::remove_all(dir);
 }
 
-TEST_CASE("read_png refuses a truncated file and a header its bytes cannot hold, with a reason")
+TEST_CASE("read_png refuses a truncated or corrupt file and a header its bytes cannot hold, with a reason")
 {
     // Issue 33: a truncated PNG gave a message with an empty reason.
     const fs::path dir = scratch_folder("png-strict");
@@ -259,7 +259,14 @@ TEST_CASE("read_png refuses a truncated file and a header its bytes cannot hold,
     std::ifstream in(dir / "g.png", std::ios::binary);
     const std::string whole((std::istreambuf_iterator<char>(in)), {});
     write_bytes(dir / "cut.png", whole.substr(0, whole.size() / 2));
-    CHECK_THROWS_WITH_AS((void)prism::read_png(dir / "cut.png"), doctest::Contains("truncated or corrupt (stb_image: "), std::runtime_error);
+    CHECK_THROWS_WITH_AS((void)prism::read_png(dir / "cut.png"), doctest::Contains("it is truncated (the chunk at byte 33 claims"), std::runtime_error);
+    // A flipped bit in the pixels' chunk fails its CRC, which stb_image does not check.
+    std::string flipped = whole;
+    flipped[45] = char(flipped[45] ^ 1);
+    write_bytes(dir / "flipped.png", flipped);
+    CHECK_THROWS_WITH_AS((void)prism::read_png(dir / "flipped.png"), doctest::Contains("fails its CRC"), std::runtime_error);
+    write_bytes(dir / "tail.png", whole + "x");
+    CHECK_THROWS_WITH_AS((void)prism::read_png(dir / "tail.png"), doctest::Contains("1 bytes follow its IEND"), std::runtime_error);
     // The same header claiming 60000 x 60000 pixels: refused before stb_image allocates.
     std::string big = whole;
     for (const int at : {16, 20}) big[std::size_t(at)] = 0, big[std::size_t(at + 1)] = 0, big[std::size_t(at + 2)] = char(0xea), big[std::size_t(at + 3)] = 0x60;

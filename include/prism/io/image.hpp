@@ -135,6 +135,42 @@ inline void write_file_atomically(const std::filesystem::path& path, std::span<c
     }
 }
 
+/// CRC-32 as PNG computes it (ISO 3309, polynomial 0xedb88320).
+[[nodiscard]] inline std::uint32_t png_crc(const unsigned char* data, std::size_t size) noexcept
+{
+    std::uint32_t crc = 0xffffffffu;
+    for (std::size_t i = 0; i < size; ++i) {
+        crc ^= data[i];
+        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    return crc ^ 0xffffffffu;
+}
+
+/// A PNG's bytes with every chunk checked (it fits in the file, its CRC is right, IEND
+/// ends the file), and empty IDAT chunks left out (stb_image would copy from a null
+/// pointer for them).
+template <class File>
+[[nodiscard]] std::vector<unsigned char> checked_png_chunks(const std::vector<unsigned char>& bytes, File& file)
+{
+    std::vector<unsigned char> out(bytes.begin(), bytes.begin() + 8);
+    std::size_t at = 8;
+    for (;;) {
+        if (bytes.size() - at < 12) file.fail("it is truncated (a chunk's header or CRC is cut at byte " + std::to_string(at) + ")");
+        const std::uint32_t length = std::uint32_t(bytes[at]) << 24 | std::uint32_t(bytes[at + 1]) << 16 | std::uint32_t(bytes[at + 2]) << 8 | bytes[at + 3];
+        if (length > bytes.size() - at - 12) file.fail("it is truncated (the chunk at byte " + std::to_string(at) + " claims " + std::to_string(length) + " bytes)");
+        const unsigned char* chunk = bytes.data() + at;
+        const std::uint32_t stored = std::uint32_t(chunk[8 + length]) << 24 | std::uint32_t(chunk[9 + length]) << 16 | std::uint32_t(chunk[10 + length]) << 8 | chunk[11 + length];
+        if (png_crc(chunk + 4, 4 + std::size_t(length)) != stored)
+            file.fail("the chunk '" + std::string(reinterpret_cast<const char*>(chunk + 4), 4) + "' at byte " + std::to_string(at) + " fails its CRC: the file is corrupt");
+        const bool end = std::memcmp(chunk + 4, "IEND", 4) == 0;
+        if (!(length == 0 && std::memcmp(chunk + 4, "IDAT", 4) == 0)) out.insert(out.end(), chunk, chunk + 12 + length);
+        at += 12 + std::size_t(length);
+        if (end) break;
+    }
+    if (at != bytes.size()) file.fail(std::to_string(bytes.size() - at) + " bytes follow its IEND chunk");
+    return out;
+}
+
 /// sRGB transfer function (IEC 61966-2-1) of a linear value clamped to [0, 1].
 [[nodiscard]] inline float srgb_encode(float linear) noexcept
 {
@@ -200,7 +236,8 @@ inline void write_image(const Film& film, const std::filesystem::path& path)
 /// Read an 8-bit PNG (grey, RGB or with alpha) into linear radiance, undoing sRGB. The file
 /// is read no further than `limits`, and its header's size is checked against its bytes
 /// before stb_image allocates the picture: deflate expands at most 1032 times, so a header
-/// that claims more pixels than its compressed bytes can hold is refused.
+/// that claims more pixels than its compressed bytes can hold is refused. Every chunk must
+/// fit in the file and pass its CRC, and nothing may follow IEND.
 [[nodiscard]] inline Film read_png(const std::filesystem::path& path, ReadLimits limits = {})
 {
     detail::InputFile file(path, "image", limits);
@@ -218,11 +255,13 @@ inline void write_image(const Film& film, const std::filesystem::path& path)
     const std::uint32_t width = be32(16), height = be32(20), depth = bytes[24];
     if (width == 0 || height == 0 || width > (1u << 24) || height > (1u << 24))
         file.fail("its header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels (each side must be 1 to 16777216)");
-    // Raw scanlines: a filter byte and up to 4 channels of `depth` bits a pixel.
-    const double raw = double(height) * (1.0 + std::ceil(double(width) * 4.0 * double(depth) / 8.0));
+    if (depth != 1 && depth != 2 && depth != 4 && depth != 8 && depth != 16) file.fail("its bit depth " + std::to_string(depth) + " is not 1, 2, 4, 8 or 16");
+    // Raw scanlines: a filter byte and at least one channel of `depth` bits a pixel.
+    const double raw = double(height) * (1.0 + std::ceil(double(width) * double(depth) / 8.0));
     if (raw > 1032.0 * double(bytes.size()) + 1024.0)
         file.fail("its header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than its " + std::to_string(bytes.size()) +
                   " bytes can hold compressed");
+    bytes = detail::checked_png_chunks(bytes, file);
     int w = 0, h = 0, channels = 0;
     unsigned char* data = stbi_load_from_memory(bytes.data(), int(std::min<std::size_t>(bytes.size(), INT32_MAX)), &w, &h, &channels, 3);
     if (data == nullptr) {
