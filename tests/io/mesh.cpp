@@ -268,3 +268,59 @@ TEST_CASE("a PLY file is read through a FIFO, and an endless stream is refused a
     CHECK(mesh.triangles.size() == 1);
     fs::remove(fifo);
 }
+
+namespace {
+
+std::string obj_refusal(const std::string& name, const std::string& text)
+{
+    const fs::path path = write_file(name, text);
+    std::string message;
+    try {
+        (void)prism::load_obj<float>(path);
+    } catch (const std::runtime_error& e) {
+        message = e.what();
+    }
+    fs::remove(path);
+    return message;
+}
+
+const std::string obj_triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+
+} // namespace
+
+TEST_CASE("OBJ numbers are finite numbers and its indices whole numbers naming what is defined, by line")
+{
+    // Issue 33: 'v nan 0 0', 'v hello 0 0' and 'v 0' were read as 0 without a word;
+    // indices 4294967297.. wrapped to 1 2 3, 99999999999999999999 to the last vertex.
+    CHECK(obj_refusal("nan.obj", "v nan 0 0\n" + obj_triangle + "f 2 3 4\n").find("line 1: 'v' has 'nan', not a finite number") != std::string::npos);
+    CHECK(obj_refusal("word.obj", "v hello 0 0\n").find("line 1: 'v' has 'hello'") != std::string::npos);
+    CHECK(obj_refusal("short.obj", obj_triangle + "v 0\n").find("line 4: 'v' has 1 numbers") != std::string::npos);
+    CHECK(obj_refusal("wrap.obj", obj_triangle + "f 4294967297 4294967298 4294967299\n").find("line 4: the corner '4294967297'") != std::string::npos);
+    CHECK(obj_refusal("long.obj", obj_triangle + "f 1 2 99999999999999999999\n").find("not a whole number of at most 2147483647") != std::string::npos);
+    CHECK(obj_refusal("ahead.obj", "f 1 2 3\n" + obj_triangle).find("line 1: the corner '1' names vertex 1, but 0 are defined") != std::string::npos);
+    CHECK(obj_refusal("zero.obj", obj_triangle + "f 0 1 2\n").find("names vertex 0") != std::string::npos);
+    CHECK(obj_refusal("fraction.obj", obj_triangle + "f 1 2.5 3\n").find("'2.5', not a whole number") != std::string::npos);
+    CHECK(obj_refusal("normal.obj", obj_triangle + "f 1//1 2//1 3//1\n").find("names normal 1, but 0 are defined") != std::string::npos);
+    CHECK(obj_refusal("verb.obj", obj_triangle + "cstype bspline\nf 1 2 3\n").find("line 4: 'cstype' is not an OBJ statement") != std::string::npos);
+    // Counting back from the last defined vertex.
+    const fs::path relative = write_file("relative.obj", obj_triangle + "f -3 -2 -1\n");
+    CHECK(prism::load_obj<float>(relative).triangles == std::vector<prism::TriangleIndices>{{0, 1, 2}});
+    fs::remove(relative);
+}
+
+TEST_CASE("an OBJ polygon that names a vertex twice is refused, not dropped")
+{
+    // Issue 33: 'f 1 2 3 1 2 3' beside a good triangle was dropped without a word.
+    CHECK(obj_refusal("twice.obj", obj_triangle + "f 1 2 3\nf 1 2 3 1 2 3\n").find("line 5: a face names vertex 1 twice") != std::string::npos);
+    CHECK(obj_refusal("two.obj", obj_triangle + "f 1 2\n").find("a face has 2 corners") != std::string::npos);
+}
+
+TEST_CASE("an OBJ file is read no further than its limit, an endless stream is refused at once, and mtllib opens nothing")
+{
+    // Issue 33: /dev/zero as an OBJ, or named by its mtllib, never returned.
+    CHECK_THROWS_WITH_AS((void)prism::load_obj<float>("/dev/zero"), doctest::Contains("NUL byte"), std::runtime_error);
+    const fs::path with_mtl = write_file("mtl.obj", "mtllib /dev/zero\nusemtl red\n" + obj_triangle + "f 1 2 3\n");
+    CHECK(prism::load_obj<float>(with_mtl).triangles.size() == 1);
+    CHECK_THROWS_WITH_AS((void)prism::load_obj<float>(with_mtl, {.max_bytes = 16}), doctest::Contains("limit of 16 bytes"), std::runtime_error);
+    fs::remove(with_mtl);
+}

@@ -39,22 +39,137 @@
 
 namespace prism {
 
-/// The triangles of an OBJ file, as counter-clockwise as the file winds them.
+namespace detail {
+
+/// What prism checks of an OBJ file before tinyobjloader parses it, line by line: every
+/// number a number, every index a whole number naming an element defined before it, every
+/// face 3 corners or more with no vertex twice. Returns the triangles the faces make.
+class ObjChecker {
+public:
+    explicit ObjChecker(InputFile& file) : file_(file) {}
+
+    /// Check line `number`, its text `line`.
+    void check(std::size_t number, const std::string& line)
+    {
+        std::istringstream words(line);
+        std::string keyword;
+        words >> keyword;
+        if (keyword.empty() || keyword[0] == '#') return;
+        where_ = "line " + std::to_string(number);
+        std::vector<std::string> rest;
+        for (std::string w; words >> w;) {
+            if (w[0] == '#') break;
+            rest.push_back(w);
+        }
+        if (keyword == "v") {
+            if (rest.size() != 3 && rest.size() != 4 && rest.size() != 6 && rest.size() != 7)
+                fail("'v' has " + std::to_string(rest.size()) + " numbers (x y z, with w or r g b)");
+            numbers(rest, "v");
+            ++positions_;
+        } else if (keyword == "vn") {
+            if (rest.size() != 3) fail("'vn' has " + std::to_string(rest.size()) + " numbers, not 3");
+            numbers(rest, "vn");
+            ++normals_;
+        } else if (keyword == "vt") {
+            if (rest.empty() || rest.size() > 3) fail("'vt' has " + std::to_string(rest.size()) + " numbers, not 1 to 3");
+            numbers(rest, "vt");
+            ++uvs_;
+        } else if (keyword == "f") {
+            if (rest.size() < 3) fail("a face has " + std::to_string(rest.size()) + " corners: it needs 3 or more");
+            std::vector<long long> corners;
+            for (const std::string& corner : rest) {
+                const std::size_t a = corner.find('/'), b = a == std::string::npos ? a : corner.find('/', a + 1);
+                const long long v = index(corner.substr(0, a), positions_, "vertex", corner);
+                if (a != std::string::npos) {
+                    const std::string t = corner.substr(a + 1, b == std::string::npos ? std::string::npos : b - a - 1);
+                    if (!t.empty()) (void)index(t, uvs_, "texture coordinate", corner);
+                    if (b != std::string::npos) (void)index(corner.substr(b + 1), normals_, "normal", corner);
+                    else if (t.empty()) fail("the corner '" + corner + "' is not v, v/t, v//n or v/t/n");
+                }
+                for (const long long seen : corners)
+                    if (seen == v) fail("a face names vertex " + std::to_string(v) + " twice: it is no polygon");
+                corners.push_back(v);
+            }
+            triangles_ += rest.size() - 2;
+        } else if (keyword != "o" && keyword != "g" && keyword != "s" && keyword != "usemtl" && keyword != "mtllib" && keyword != "l" && keyword != "p") {
+            fail("'" + keyword.substr(0, 32) + "' is not an OBJ statement prism reads (v, vn, vt, f, o, g, s, usemtl, mtllib, l, p)");
+        }
+    }
+
+    /// The triangles the faces make, fans of (corners - 2).
+    [[nodiscard]] std::size_t triangles() const noexcept { return triangles_; }
+    /// The v, vn and vt lines.
+    [[nodiscard]] std::array<std::size_t, 3> counts() const noexcept { return {positions_, normals_, uvs_}; }
+
+private:
+    [[noreturn]] void fail(const std::string& reason) const { file_.fail(where_ + ": " + reason); }
+
+    void numbers(const std::vector<std::string>& words, const char* keyword) const
+    {
+        for (const std::string& w : words) {
+            char* end = nullptr;
+            const double v = std::strtod(w.c_str(), &end);
+            if (end != w.c_str() + w.size() || !std::isfinite(v) || !std::isfinite(float(v)))
+                fail("'" + std::string(keyword) + "' has '" + w.substr(0, 32) + "', not a finite number");
+        }
+    }
+
+    /// An index (1-based, or negative counting back from the last defined), resolved.
+    long long index(const std::string& word, std::size_t defined, const char* what, const std::string& corner) const
+    {
+        const bool negative = !word.empty() && word[0] == '-';
+        const std::string digits = negative ? word.substr(1) : word;
+        if (digits.empty() || digits.size() > 10 || digits.find_first_not_of("0123456789") != std::string::npos || std::stoll(digits) > 2147483647)
+            fail("the corner '" + corner.substr(0, 32) + "' has the " + what + " index '" + word.substr(0, 32) + "', not a whole number of at most 2147483647");
+        const long long i = negative ? (long long)(defined) + 1 - std::stoll(digits) : std::stoll(digits);
+        if (std::stoll(digits) == 0 || i < 1 || i > (long long)(defined))
+            fail("the corner '" + corner.substr(0, 32) + "' names " + what + " " + word + ", but " + std::to_string(defined) + " are defined before it");
+        return i;
+    }
+
+    InputFile& file_;
+    std::string where_;
+    std::size_t positions_ = 0, normals_ = 0, uvs_ = 0, triangles_ = 0;
+};
+
+} // namespace detail
+
+/// The triangles of an OBJ file, as counter-clockwise as the file winds them. Bounded and
+/// strict: the file is read no further than `limits`, a line no longer than 1 MiB; prism
+/// checks every line (ObjChecker: numbers finite, indices whole and defined before their
+/// face, faces of 3 corners or more with no vertex twice, no statement it does not read)
+/// before tinyobjloader parses the same text, and then that tinyobjloader returned every
+/// vertex and triangle. Materials are not read, so `mtllib` names no file that is opened.
 template <Scalar T = float>
-[[nodiscard]] MeshBuffers<T> load_obj(const std::filesystem::path& path)
+[[nodiscard]] MeshBuffers<T> load_obj(const std::filesystem::path& path, ReadLimits limits = {})
 {
+    detail::InputFile file(path, "mesh", limits);
+    detail::ObjChecker checker(file);
+    std::string text;
+    std::size_t number = 0;
+    while (const std::optional<std::string> line = file.line(std::size_t(1) << 20, "line " + std::to_string(number + 1))) {
+        checker.check(++number, *line);
+        text += *line;
+        text += '\n';
+    }
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
     tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(path.string(), config)) {
+    if (!reader.ParseFromString(text, "", config)) {
         std::string reason = reader.Error();
         while (!reason.empty() && (reason.back() == '\n' || reason.back() == '\r')) reason.pop_back();
-        throw std::runtime_error("cannot read mesh '" + path.string() + "': " + (reason.empty() ? "unknown error" : reason));
+        file.fail("tinyobjloader: " + (reason.empty() ? std::string("unknown error") : reason));
     }
     const auto& attrib = reader.GetAttrib();
-    const auto fail = [&](const std::string& reason) { throw std::runtime_error("cannot read mesh '" + path.string() + "': " + reason); };
+    const auto fail = [&](const std::string& reason) { file.fail(reason); };
     const std::size_t positions = attrib.vertices.size() / 3, normals = attrib.normals.size() / 3, uvs = attrib.texcoords.size() / 2;
+    // What tinyobjloader returned, against what the file holds.
+    std::size_t triangles = 0;
+    for (const auto& shape : reader.GetShapes()) triangles += shape.mesh.indices.size() / 3;
+    if (std::array<std::size_t, 3>{positions, normals, uvs} != checker.counts() || triangles != checker.triangles())
+        fail("tinyobjloader returned " + std::to_string(positions) + " vertices and " + std::to_string(triangles) + " triangles, but the file has " +
+             std::to_string(checker.counts()[0]) + " and its faces make " + std::to_string(checker.triangles()));
     // Normals and coordinates only where every face corner names one (in range).
     bool with_normals = normals > 0, with_uvs = uvs > 0;
     for (const auto& shape : reader.GetShapes())
