@@ -6,7 +6,7 @@
 #   tools/fuzz.sh [SECONDS]     each target for SECONDS (default 30)
 # Targets (tests/fuzz/): quadric (crossings of any ten coefficients), csg (trees of
 # every operator), photon_map (the KD-tree against brute force, the estimates), and the
-# file readers pfm, png and ply (any bytes as a file). Each
+# file readers pfm, png, ply and obj (any bytes as a file). Each
 # starts from its committed corpus, tests/fuzz/corpus/<target>/, and writes what it
 # finds into build/fuzz/<target>/ (copy inputs worth keeping into the corpus); a crash
 # leaves its input as build/fuzz/crash-<target>-*, and the script fails.
@@ -22,7 +22,9 @@ flags=(-std=c++20 -O1 -g1 -fsanitize=fuzzer,address,undefined -fno-sanitize-reco
 fuzz_one() {
   local target=$1 report="$out/$1.report"
   mkdir -p "$out/$target" "$root/tests/fuzz/corpus/$target"
-  if ! clang++-19 "${flags[@]}" "$root/tests/fuzz/$target.cpp" -o "$out/fuzz_$target" >"$out/$target.log" 2>&1; then
+  local libraries=()
+  [[ $target == obj ]] && libraries=(-ltinyobjloader)
+  if ! clang++-19 "${flags[@]}" "$root/tests/fuzz/$target.cpp" -o "$out/fuzz_$target" "${libraries[@]}" >"$out/$target.log" 2>&1; then
     { echo "fuzz: $target FAILED to build:"; tail -n 40 "$out/$target.log"; } >"$report"
     return 0
   fi
@@ -37,7 +39,7 @@ fuzz_one() {
 }
 
 # One target per core at a time, each for SECONDS of its own.
-targets=(quadric csg photon_map pfm png ply)
+targets=(quadric csg photon_map pfm png ply obj)
 cores=$(nproc)
 rm -f "$out"/*.report
 for target in "${targets[@]}"; do

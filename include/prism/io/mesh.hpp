@@ -109,8 +109,12 @@ private:
         for (const std::string& w : words) {
             char* end = nullptr;
             const double v = std::strtod(w.c_str(), &end);
-            if (end != w.c_str() + w.size() || !std::isfinite(v) || !std::isfinite(float(v)))
-                fail("'" + std::string(keyword) + "' has '" + w.substr(0, 32) + "', not a finite number");
+            if (end != w.c_str() + w.size() || !std::isfinite(v) || !std::isfinite(float(v))) {
+                // Appended, not `"'" + ...`: g++ 12 warns (-Wrestrict) about that form here.
+                std::string reason = "'";
+                reason.append(keyword).append("' has '").append(w, 0, 32).append("', not a finite number");
+                fail(reason);
+            }
         }
     }
 
