@@ -4,9 +4,12 @@
 #include <doctest/doctest.h>
 
 #include <array>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 
@@ -134,4 +137,25 @@ TEST_CASE("EXR errors name the file and the reason, and a failed write leaves no
     CHECK_THROWS_WITH_AS(write_exr(bad, target), doctest::Contains("data window"), std::runtime_error);
     CHECK(!std::filesystem::exists(target));
     CHECK_THROWS_WITH_AS(write_exr(to_exr(Film(2, 2)), std::filesystem::temp_directory_path()), doctest::Contains("is a directory"), std::runtime_error);
+}
+
+TEST_CASE("an EXR whose data window claims more pixels than its bytes can hold is refused before allocating")
+{
+    // Issue 33: 262 KB declaring a 65536 x 32768 data window and no pixel data allocated
+    // 8.4 GB before "Scan line 0 is missing".
+    const auto small = scratch("claim.exr");
+    write_exr(to_exr(Film(1, 1)), small);
+    std::ifstream in(small, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    in.close();
+    for (const std::string name : {"dataWindow", "displayWindow"}) {
+        const std::size_t at = bytes.find(name + std::string(1, '\0') + "box2i");
+        REQUIRE(at != std::string::npos);
+        const std::size_t value = at + name.size() + 1 + 6 + 4; // name, NUL, "box2i", NUL, size
+        const std::int32_t box[4] = {0, 0, 65535, 32767};
+        std::memcpy(bytes.data() + value, box, sizeof box); // EXR is little-endian, as is this test's host
+    }
+    bytes += std::string(262144, '\0');
+    std::ofstream(small, std::ios::binary | std::ios::trunc) << bytes;
+    CHECK_THROWS_WITH_AS((void)read_exr(small), doctest::Contains("65536 x 32768 pixels of 3 channels need"), std::runtime_error);
 }

@@ -34,6 +34,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <variant>
 #include <vector>
 
@@ -136,7 +137,8 @@ inline void write_exr(const ExrImage& image, const std::filesystem::path& path)
 }
 
 /// Read an EXR file: its FLOAT and HALF channels as float, its UINT channels as they
-/// are, and its string attributes.
+/// are, and its string attributes. The data window's size is checked against the file's
+/// before anything is allocated (no EXR compression expands more than 1032 times).
 [[nodiscard]] inline ExrImage read_exr(const std::filesystem::path& path)
 {
     try {
@@ -154,6 +156,17 @@ inline void write_exr(const ExrImage& image, const std::filesystem::path& path)
             throw std::runtime_error("the data window is not inside the display window");
         for (auto a = header.begin(); a != header.end(); ++a)
             if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&a.attribute())) image.attributes[a.name()] = text->value();
+        // What the data window claims, against what the file holds, before anything is
+        // allocated: no compression EXR offers expands more than deflate's 1032 times.
+        std::size_t channel_count = 0;
+        for (auto c = header.channels().begin(); c != header.channels().end(); ++c) ++channel_count;
+        std::error_code error;
+        const std::uintmax_t file_size = std::filesystem::file_size(path, error);
+        const double claimed = 4.0 * double(image.window.area()) * double(channel_count);
+        if (error || claimed > 1032.0 * double(file_size) + double(1 << 20))
+            throw std::runtime_error("the data window's " + std::to_string(image.window.width()) + " x " + std::to_string(image.window.height()) + " pixels of " +
+                                     std::to_string(channel_count) + " channels need " + detail::describe_bytes(claimed) + ", more than its " +
+                                     std::to_string(error ? 0 : file_size) + " bytes can hold compressed");
         Imf::FrameBuffer frame;
         for (auto c = header.channels().begin(); c != header.channels().end(); ++c) {
             if (c.channel().xSampling != 1 || c.channel().ySampling != 1)
