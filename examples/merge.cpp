@@ -19,6 +19,8 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <system_error>
+#include <variant>
 #include <vector>
 
 namespace {
@@ -27,6 +29,7 @@ struct Part {
     std::filesystem::path path;
     prism::ExrImage image;
     prism::PassRange passes;
+    std::uint64_t samples_per_pass = 0; ///< each pixel's weight over its pass count, from its sums
 };
 
 std::string describe(const prism::PixelWindow& w)
@@ -98,12 +101,42 @@ int merge(int argc, char** argv)
     if (!png.empty() && png.extension() != ".png") throw std::invalid_argument("--png " + png.string() + " must end in .png");
     if (!pfm.empty() && pfm.extension() != ".pfm") throw std::invalid_argument("--pfm " + pfm.string() + " must end in .pfm");
     if (inputs.empty()) throw std::invalid_argument("no parts to merge (see --help)");
+    // An output that names an input would overwrite a part (read first, written last).
+    for (const std::filesystem::path& output : {out, png, pfm}) {
+        if (output.empty()) continue;
+        for (const std::filesystem::path& input : inputs) {
+            std::error_code error;
+            if (std::filesystem::weakly_canonical(output, error) == std::filesystem::weakly_canonical(input, error) ||
+                std::filesystem::equivalent(output, input, error))
+                throw std::invalid_argument("the output " + output.string() + " is the part " + input.string() + ": it would be overwritten");
+        }
+    }
 
     std::vector<Part> parts;
     for (const auto& path : inputs) {
-        Part part{path, prism::read_exr(path), {}};
+        Part part{path, prism::read_exr(path), {}, 0};
         part.passes = parse_passes(part);
         (void)attribute(part, "prism.settings");
+        // What the part says it holds, against its sums: every pixel took the same number
+        // of samples in each of its passes (1, or a progressive pass's camera samples), so
+        // its weight is a whole multiple of its pass count, the same for every pixel and
+        // (below) every part. A part whose passes were edited, or that claims passes it did
+        // not render, is refused.
+        if (const prism::ExrChannel* low = part.image.find("weight.0"), *high = part.image.find("weight.1");
+            low != nullptr && high != nullptr && std::holds_alternative<std::vector<std::uint32_t>>(low->values) &&
+            std::holds_alternative<std::vector<std::uint32_t>>(high->values)) {
+            const auto& lo = std::get<std::vector<std::uint32_t>>(low->values);
+            const auto& hi = std::get<std::vector<std::uint32_t>>(high->values);
+            const std::uint64_t count = part.passes.count();
+            for (std::size_t i = 0; i < lo.size() && i < hi.size(); ++i) {
+                const std::uint64_t weight = std::uint64_t(hi[i]) << 32 | lo[i];
+                if (weight == 0 || weight % count != 0 || (i > 0 && weight / count != part.samples_per_pass))
+                    throw std::invalid_argument(path.string() + " says it holds passes " + describe(part.passes) + ", but a pixel's sums hold " + std::to_string(weight) +
+                                                " samples, not a whole number of its pixels' samples for each of " + std::to_string(count) +
+                                                " passes: its prism.part.passes is not what it rendered");
+                part.samples_per_pass = weight / count;
+            }
+        }
         parts.push_back(std::move(part));
     }
 
@@ -133,6 +166,9 @@ int merge(int argc, char** argv)
             if (!expected.contains(name)) throw std::invalid_argument(p.path.string() + " has '" + name + "', " + first.path.string() + " has not");
         if (mean_channels(p.image) != channels)
             throw std::invalid_argument(p.path.string() + " has other channels than " + first.path.string());
+        if (p.samples_per_pass != first.samples_per_pass)
+            throw std::invalid_argument(p.path.string() + "'s sums hold " + std::to_string(p.samples_per_pass) + " samples a pass, " + first.path.string() + "'s " +
+                                        std::to_string(first.samples_per_pass) + ": one of their prism.part.passes is not what it rendered");
     }
 
     // No pass of a pixel twice; the result's window is the parts' windows' hull.
@@ -152,7 +188,14 @@ int merge(int argc, char** argv)
         }
     }
     // Every pixel of the hull must have every pass of [all.first, all.last): the passes
-    // of each are disjoint, so their count says whether they are all there.
+    // of each are disjoint, so their count says whether they are all there. First, without
+    // allocating the hull: the parts' crops must hold as many pixels as it does (two
+    // one-pixel parts at opposite corners of a 65536 x 32768 image cover 2 of its pixels).
+    std::uint64_t covered = 0;
+    for (const Part& p : parts) covered += p.image.window.area();
+    if (covered < hull.area())
+        throw std::invalid_argument("the parts' crops hold " + std::to_string(covered) + " pixels, but they span " + describe(hull) + ", " +
+                                    std::to_string(hull.area()) + " pixels: a crop is missing");
     std::vector<std::uint64_t> count(hull.area(), 0);
     for (const Part& p : parts)
         for (int y = p.image.window.y0; y < p.image.window.y1; ++y)

@@ -42,3 +42,36 @@ refuses "has 1 of the passes 0:2 the parts hold: a crop or a range of passes is 
 refuses "has no UINT channel|has no 'prism.part.passes'" "${out[@]}" "$work/whole/$image"
 refuses "unknown option '--bogus'" "${out[@]}" --bogus "$work/top/$image"
 refuses "--out FILE.exr is required" "$work/top/$image"
+
+# Issue 33: an output that names a part would overwrite it; the part stays as it was.
+cp "$work/top/$image" "$work/top-before.exr"
+refuses "is the part .*: it would be overwritten" --out "$work/top/$image" "$work/top/$image" "$work/top2/$image" "$work/bottom/$image"
+ln -s "$work/top/$image" "$work/alias.exr"
+refuses "is the part .*: it would be overwritten" --out "$work/alias.exr" "$work/top/$image" "$work/top2/$image" "$work/bottom/$image"
+cmp "$work/top/$image" "$work/top-before.exr"
+# A part whose prism.part.passes was edited, or that claims passes it did not render: its
+# sums' weights say otherwise.
+edit_passes() { # edit_passes IN OUT NEW (NEW as long as the old value)
+  python3 - "$1" "$2" "$3" <<'PY'
+import sys
+data = open(sys.argv[1], 'rb').read()
+key = b'prism.part.passes\0string\0'
+at = data.index(key) + len(key)
+size = int.from_bytes(data[at:at + 4], 'little')
+new = sys.argv[3].encode()
+assert len(new) == size, (new, size)
+open(sys.argv[2], 'wb').write(data[:at + 4] + new + data[at + 4 + size:])
+PY
+}
+edit_passes "$work/top/$image" "$work/lying.exr" "0:2"
+refuses "says it holds passes 0:2, but a pixel's sums hold|is not what it rendered" "${out[@]}" "$work/lying.exr" "$work/bottom/$image"
+edit_passes "$work/top2/$image" "$work/lying2.exr" "0:2"
+refuses "is not what it rendered" "${out[@]}" "$work/top/$image" "$work/lying2.exr" "$work/bottom/$image"
+# Two one-pixel parts at opposite corners of a 65536 x 32768 image: refused before the
+# hull (2^31 pixels) is allocated.
+if [[ $(basename "$example") == cornell ]]; then
+  run corner_a "$@" --width 65536 --height 32768 --crop 0,1,0,1
+  run corner_b "$@" --width 65536 --height 32768 --crop 65535,65536,32767,32768
+  refuses "the parts' crops hold 2 pixels, but they span .*: a crop is missing" "${out[@]}" "$work/corner_a/$image" "$work/corner_b/$image"
+fi
+echo "merge: refusals of issue 33 hold"
