@@ -162,6 +162,14 @@ TEST_CASE("progressive photon mapping refuses settings that cannot converge or c
     late.passes = {4096, 4097};
     CHECK_THROWS_WITH_AS((void)render(camera, ProgressivePhotonMapper<S>(scene, far), late), doctest::Contains("reaches past photon index 2^32"),
                          std::invalid_argument);
+    // Issue 33: passes 4094 to 4096, of which the last reaches past the limit, are refused
+    // before the first is traced (they were rendered, and then the run failed).
+    late.spp = 4097;
+    late.passes = {4094, 4097};
+    const ProgressivePhotonMapper<S> mapper(scene, far);
+    Accumulation sums(late.width, late.height, PixelWindow::whole(late.width, late.height));
+    CHECK_THROWS_WITH_AS(mapper.add_passes(sums, camera, late), doctest::Contains("at most 4096 passes of this many photons, asked for 4097"), std::invalid_argument);
+    CHECK(sums.weight(0, 0) == 0);
 }
 
 TEST_CASE("progressive photon mapping in the two-lobe furnace: every path, within 1 %")

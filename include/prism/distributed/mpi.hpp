@@ -418,6 +418,7 @@ template <Integrator I>
         }
         const PassRange passes = prism::detail::render_passes(config);
         (void)camera.rays(config.width, config.height); // every rank refuses alike, before any pass
+        if constexpr (requires { integrator.check_passes(config); }) integrator.check_passes(config);
         detail::Stopwatch clock;
         Accumulation mine(config.width, config.height, prism::detail::render_window(config));
         {

@@ -94,12 +94,18 @@ public:
     /// The settings.
     [[nodiscard]] const Config& config() const noexcept { return config_; }
 
+    /// Throws std::invalid_argument when the passes `config` asks for would reach past
+    /// photon index 2^32, before any is traced (mpi::render_sums asks for the whole range
+    /// before it deals passes to the ranks).
+    void check_passes(const RenderConfig& config) const { check_photon_passes(config_.pass.tracing, detail::render_passes(config).last); }
+
     /// Passes config.passes of config.spp, each of `samples` samples per pixel, in order;
     /// with a time budget, up to the pass that ends past it (the samples of the passes
     /// rendered are the pixels' weight).
     void add_passes(Accumulation& sums, const Camera<T>& camera, const RenderConfig& config) const
     {
         const PassRange passes = detail::render_passes(config);
+        check_passes(config);
         const auto start = std::chrono::steady_clock::now();
         const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
         for (std::uint64_t pass = passes.first; pass < passes.last; ++pass) {

@@ -353,6 +353,18 @@ struct PhotonShare {
     std::vector<Photon> caustic; ///< this share of the caustic map's photons
 };
 
+/// Throws std::invalid_argument when passes 0 to `passes` - 1 of `config`'s photons would
+/// reach past photon index 2^32 (photon indices are Sobol indices, 32 bits), naming the
+/// first pass that does: a render of many passes checks its last before it traces its first.
+inline void check_photon_passes(const PhotonTracerConfig& config, std::uint64_t passes)
+{
+    for (const std::size_t count : {config.global_photons, config.caustic_photons})
+        if (count > 0 && passes > 0 && passes - 1 >= (std::uint64_t(1) << 32) / count)
+            detail::throw_invalid("trace_photons pass ", (std::uint64_t(1) << 32) / count, " of ", count,
+                                  " photons reaches past photon index 2^32 (the Sobol sequence's length): at most ", (std::uint64_t(1) << 32) / count,
+                                  " passes of this many photons, asked for ", passes);
+}
+
 template <class SceneT, class Air = StraightAir>
 [[nodiscard]] PhotonShare trace_photon_share(const SceneT& scene, const PhotonTracerConfig& config, const Air& air, std::size_t pass, std::size_t part,
                                              std::size_t parts)
@@ -360,10 +372,7 @@ template <class SceneT, class Air = StraightAir>
     if (parts < 1 || parts >= (std::size_t(1) << 31) || part >= parts)
         detail::throw_invalid("trace_photon_share part ", part, " of ", parts, ": expected 0 <= part < parts < 2^31");
     const detail::PhotonTracer<SceneT, Air> tracer(scene, config, air);
-    // Photon indices are Sobol indices: 32 bits.
-    for (const std::size_t count : {config.global_photons, config.caustic_photons})
-        if (count > 0 && pass >= (std::size_t(1) << 32) / count)
-            detail::throw_invalid("trace_photons pass ", pass, " of ", count, " photons reaches past photon index 2^32 (the Sobol sequence's length)");
+    check_photon_passes(config, pass + 1);
     // floor(count k / parts) without overflow (parts < 2^31): with count = q parts + r,
     // it is q k + floor(r k / parts).
     const auto share_first = [&](std::size_t count, std::size_t k) { return count / parts * k + count % parts * k / parts; };
