@@ -159,6 +159,36 @@ void check_writable(const std::string& folder_name)
     std::filesystem::remove(probe);
 }
 
+/// Refuse, before anything is rendered, an output file the example could not write: one
+/// of its images' names (PNG, and EXR where it writes one) taken by a directory, or a
+/// file that is there and not writable.
+void check_outputs(const Options& options)
+{
+    std::vector<std::string> extensions{".png"};
+    if (options.exr || options.part) extensions.push_back(".exr");
+    for (const std::string& image : options.images)
+        for (const std::string& extension : extensions) {
+            const std::filesystem::path path = output_file(options, image + extension);
+            std::error_code error;
+            const auto status = std::filesystem::status(path, error);
+            if (status.type() == std::filesystem::file_type::directory)
+                throw std::invalid_argument("--out: " + path.string() + " is a directory, where the example writes its image");
+            if (status.type() == std::filesystem::file_type::regular && ::access(path.c_str(), W_OK) != 0)
+                throw std::invalid_argument("--out: " + path.string() + " is not writable: " + std::strerror(errno));
+        }
+}
+
+prism::OutputSet& outputs()
+{
+    static prism::OutputSet set;
+    return set;
+}
+
+void save_png(const prism::Film& film, const Options& options, const std::string& name)
+{
+    outputs().add(output_file(options, name + ".png"), prism::encode_png(film));
+}
+
 /// Refuse a --povray picture that cannot be read or has another size, before rendering.
 void check_povray_picture(const std::string& png, int width, int height)
 {
@@ -269,6 +299,7 @@ bool parse(int argc, char** argv, Options& options, const char* description, Acc
                                     " EXR, and this build has no OpenEXR (Debian: libopenexr-dev)");
 #endif
     check_writable(options.out);
+    check_outputs(options);
     if (!options.povray.empty()) check_povray_picture(options.povray, options.render.width, options.render.height);
     return true;
 }
@@ -297,14 +328,15 @@ std::string settings(const Options& options)
     return text;
 }
 
-/// Write an image as name.png (and name.pfm, exact floats, with `pfm`); as name.exr too
+/// Queue an image as name.png (and name.pfm, exact floats, with `pfm`); as name.exr too
 /// with --exr, and always for a part of a render (--crop, --passes A:B), with the exact
-/// sums and the metadata prism_merge needs to add it to the other parts.
+/// sums and the metadata prism_merge needs to add it to the other parts. run() writes
+/// them, with every other output, once the example has finished.
 void save(const Rendered& rendered, const Options& options, bool pfm)
 {
     const prism::Film film = rendered.image();
-    prism::write_png(film, output_file(options, rendered.name + ".png"));
-    if (pfm) prism::write_pfm(film, output_file(options, rendered.name + ".pfm"));
+    save_png(film, options, rendered.name);
+    if (pfm) outputs().add(output_file(options, rendered.name + ".pfm"), prism::encode_pfm(film));
 #ifdef PRISM_EXAMPLES_EXR
     if (options.exr || options.part) {
         const prism::PixelWindow& w = rendered.sums.window();
@@ -327,7 +359,7 @@ void save(const Rendered& rendered, const Options& options, bool pfm)
             attributes["prism.photons"] = std::to_string(options.photons) + " global, " + std::to_string(options.caustic_photons) + " caustic" +
                                           (progressive ? " per pass" : "");
         }
-        prism::write_exr(prism::to_exr(rendered.sums, options.part, attributes), output_file(options, rendered.name + ".exr"));
+        outputs().add(output_file(options, rendered.name + ".exr"), prism::encode_exr(prism::to_exr(rendered.sums, options.part, attributes)));
     }
 #endif
 }

@@ -6,6 +6,7 @@
 // in every example.
 #pragma once
 
+#include <prism/io/output.hpp>
 #include <prism/photon/estimator.hpp>
 #include <prism/render/accumulation.hpp>
 #include <prism/render/render.hpp>
@@ -26,6 +27,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace examples {
 
@@ -56,6 +58,9 @@ struct Options {
     bool exr = false;          ///< --exr: also write EXR (with the means only, unless a part)
     std::string program;       ///< the example's name
     bool photon_example = false; ///< the example takes the photon mapping flags
+    /// The images the example writes (names without extension): parse() checks that each
+    /// can be written before anything is rendered.
+    std::vector<std::string> images;
 };
 
 /// Which families of flags an example takes beyond the shared ones: the others are refused,
@@ -111,13 +116,22 @@ inline prism::Estimator caustic_estimator(const Options& options)
 /// The path of `file` in the output folder (--out).
 inline std::string output_file(const Options& options, const std::string& file) { return options.out + "/" + file; }
 
+/// The files the example writes, written together (all or none) when its body has
+/// finished: a run that fails leaves no partial set of outputs.
+prism::OutputSet& outputs();
+
+/// Queue `film` as OUT/name.png.
+void save_png(const prism::Film& film, const Options& options, const std::string& name);
+
 /// Run an example's body, turning exceptions into a message on `errors` (none if null)
-/// and exit code 1.
+/// and exit code 1; its outputs are written when it returns 0.
 template <class Body>
 int run(std::FILE* errors, Body&& body) noexcept
 {
     try {
-        return body();
+        const int status = body();
+        if (status == 0) outputs().commit();
+        return status;
     } catch (const std::exception& e) {
         if (errors != nullptr) std::fprintf(errors, "error: %s\n", e.what());
         return 1;

@@ -2,6 +2,8 @@
 // Side by side with POV-Ray, compiled once for the examples that compare.
 #include "compare.hpp"
 
+#include "cli.hpp"
+
 #include <prism/io/image.hpp>
 
 #include <algorithm>
@@ -43,7 +45,7 @@ void write_comparison(const prism::Film& film, const std::string& povray_png, co
             side.set(w + x, y, pov.at(x, y));
             side.set(2 * w + x, y, diff);
         }
-    prism::write_png(side, out);
+    examples::outputs().add(out, prism::encode_png(side)); // written with the render's own images
     std::printf("compared with %s: mean |prism - POV-Ray| = %.2f of 255, %.2f%% of pixels differ by more than 16; wrote %s\n",
                 povray_png.c_str(), total / (3.0 * w * h), 100.0 * double(far) / double(w * h), out.c_str());
 }

@@ -11,6 +11,7 @@ int main(int argc, char** argv)
 {
     return examples::run([&] {
         examples::Options options;
+        options.images = {"cornell"}; // checked before rendering, written together after
         if (!examples::parse(argc, argv, options, "Cornell box with glass and mirror spheres, Whitted ray tracing", {.povray = true}))
             return 0;
         const auto scene = scenes::cornell_scene<float>();

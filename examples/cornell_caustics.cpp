@@ -52,6 +52,7 @@ int main(int argc, char** argv)
 {
     return examples::run([&] {
         examples::Options options;
+        options.images = {"cornell_caustics", "cornell_global_photons", "cornell_caustic_photons"}; // checked before rendering, written together after
         options.render.spp = 4;
         if (!examples::parse(argc, argv, options, "the Cornell box with photon-mapped caustics and colour bleeding", {.povray = true, .photons = true})) return 0;
         if (!options.povray.empty()) {
@@ -76,8 +77,8 @@ int main(int argc, char** argv)
         // pixel of the global map reads as mid-grey).
         const prism::PhotonMaps maps = prism::trace_photons(scene, examples::photon_tracer_config(options));
         const float gain = float(options.photons) / 200000.0f * 40.0f;
-        prism::write_png(photon_picture(maps.global, camera, options.render.width, options.render.height, gain), examples::output_file(options, "cornell_global_photons.png"));
-        prism::write_png(photon_picture(maps.caustic, camera, options.render.width, options.render.height, gain), examples::output_file(options, "cornell_caustic_photons.png"));
+        examples::save_png(photon_picture(maps.global, camera, options.render.width, options.render.height, gain), options, "cornell_global_photons");
+        examples::save_png(photon_picture(maps.caustic, camera, options.render.width, options.render.height, gain), options, "cornell_caustic_photons");
         return 0;
     });
 }

@@ -13,6 +13,7 @@ int main(int argc, char** argv)
 {
     return examples::run([&] {
         examples::Options options;
+        options.images = {"cornell_diffuse"}; // checked before rendering, written together after
         options.render.spp = 4;
         options.caustic_photons = 0; // nothing specular
         if (!examples::parse(argc, argv, options, "the diffuse Cornell box shared with Blender's Cycles (colour bleeding)", {.photons = true})) return 0;

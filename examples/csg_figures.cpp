@@ -36,6 +36,7 @@ int main(int argc, char** argv)
 {
     return examples::run([&] {
         examples::Options options;
+        options.images = {"figure_ellipsoid", "figure_union", "figure_intersection", "figure_difference", "figure_csg_of_csg", "figure_glass_lens"}; // checked before rendering, written together after
         options.render.width = 480;
         options.render.height = 360;
         options.render.spp = 4;

@@ -12,6 +12,7 @@ int main(int argc, char** argv)
 {
     return examples::run([&] {
         examples::Options options;
+        options.images = {"csg_quadrics"}; // checked before rendering, written together after
         if (!examples::parse(argc, argv, options, "CSG and general quadrics, as in shared/scenes/csg_quadrics.pov", {.povray = true})) return 0;
         const auto scene = scenes::csg_quadrics_scene<float>();
         const prism::Whitted integrator(scene, {.max_depth = 5});

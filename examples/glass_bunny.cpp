@@ -19,6 +19,7 @@ int main(int argc, char** argv)
     return examples::run([&] {
         using namespace prism;
         examples::Options options;
+        options.images = {"glass_bunny"}; // checked before rendering, written together after
         options.render.width = 640;
         options.render.height = 400;
         options.render.spp = 4;

@@ -56,6 +56,7 @@ int main(int argc, char** argv)
     return examples::run([&] {
         using namespace prism;
         examples::Options options;
+        options.images = {"glass_of_water", "glass_of_water_air_gap"}; // checked before rendering, written together after
         options.render.width = 480;
         options.render.height = 480;
         options.render.spp = 4;

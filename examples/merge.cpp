@@ -221,12 +221,15 @@ int merge(int argc, char** argv)
     char text[32];
     std::snprintf(text, sizeof text, "%.3f", seconds);
     attributes["prism.part.seconds"] = text;
-    prism::write_exr(prism::to_exr(sums, true, attributes), out);
+    // The merged EXR, PNG and PFM are written together, all or none.
+    prism::OutputSet outputs;
+    outputs.add(out, prism::encode_exr(prism::to_exr(sums, true, attributes)));
     if (!png.empty() || !pfm.empty()) {
         const prism::Film image = sums.image();
-        if (!png.empty()) prism::write_png(image, png);
-        if (!pfm.empty()) prism::write_pfm(image, pfm);
+        if (!png.empty()) outputs.add(png, prism::encode_png(image));
+        if (!pfm.empty()) outputs.add(pfm, prism::encode_pfm(image));
     }
+    outputs.commit();
     std::printf("prism_merge: %zu parts, pixels %s, passes %s, into %s\n", parts.size(), describe(hull).c_str(), describe(all).c_str(), out.c_str());
     return 0;
 }

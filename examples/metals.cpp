@@ -32,6 +32,7 @@ int main(int argc, char** argv)
 {
     return examples::run([&] {
         examples::Options options;
+        options.images = {"metals", "metals_plain"}; // checked before rendering, written together after
         options.render.width = 720;
         options.render.height = 300;
         options.render.spp = 4;

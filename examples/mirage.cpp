@@ -58,6 +58,7 @@ int main(int argc, char** argv)
     return examples::run([&] {
         using namespace prism;
         examples::Options options;
+        options.images = {"mirage", "mirage_plain", "superior_mirage", "superior_mirage_plain"}; // checked before rendering, written together after
         options.render.width = 640;
         options.render.height = 240;
         options.render.spp = 4;

@@ -45,6 +45,7 @@ int main(int argc, char** argv)
             if (std::string_view(arg) == "--help" || std::string_view(arg) == "-h")
                 std::printf("mpi_render: cornell_caustics' flags, and\n  --tile N      side of the square of pixels dealt to a rank at a time (default 64)\n\n");
         examples::Options options;
+        options.images = {"cornell_caustics"}; // checked before rendering, written together after
         options.render.spp = 4;
         if (!examples::parse(int(args.size()), args.data(), options, "the Cornell box with photon-mapped caustics, on MPI ranks",
                              {.photons = true}))

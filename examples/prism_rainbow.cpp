@@ -78,6 +78,7 @@ int main(int argc, char** argv)
     return examples::run([&] {
         using namespace prism;
         examples::Options options;
+        options.images = {"prism_rainbow", "prism_rainbow_plain"}; // checked before rendering, written together after
         options.render.width = 640;
         options.render.height = 400;
         options.render.spp = 4;

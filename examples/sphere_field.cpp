@@ -12,6 +12,7 @@ int main(int argc, char** argv)
         using namespace prism;
         using T = float;
         examples::Options options;
+        options.images = {"sphere_field"}; // checked before rendering, written together after
         options.render.width = 720;
         options.render.height = 360;
         options.render.spp = 4;

@@ -76,6 +76,7 @@ int main(int argc, char** argv)
 {
     return examples::run([&] {
         examples::Options options;
+        options.images = {"soap_bubble", "soap_bubble_plain", "anodised"}; // checked before rendering, written together after
         options.render.width = 640;
         options.render.height = 480;
         options.render.spp = 4;

@@ -9,6 +9,7 @@ int main(int argc, char** argv)
 {
     return examples::run([&] {
         examples::Options options;
+        options.images = {"whitted"}; // checked before rendering, written together after
         options.render.width = 640;
         options.render.height = 480;
         options.render.spp = 16;

@@ -7688,6 +7688,18 @@ struct PhotonShare {
     std::vector<Photon> caustic; ///< this share of the caustic map's photons
 };
 
+/// Throws std::invalid_argument when passes 0 to `passes` - 1 of `config`'s photons would
+/// reach past photon index 2^32 (photon indices are Sobol indices, 32 bits), naming the
+/// first pass that does: a render of many passes checks its last before it traces its first.
+inline void check_photon_passes(const PhotonTracerConfig& config, std::uint64_t passes)
+{
+    for (const std::size_t count : {config.global_photons, config.caustic_photons})
+        if (count > 0 && passes > 0 && passes - 1 >= (std::uint64_t(1) << 32) / count)
+            detail::throw_invalid("trace_photons pass ", (std::uint64_t(1) << 32) / count, " of ", count,
+                                  " photons reaches past photon index 2^32 (the Sobol sequence's length): at most ", (std::uint64_t(1) << 32) / count,
+                                  " passes of this many photons, asked for ", passes);
+}
+
 template <class SceneT, class Air = StraightAir>
 [[nodiscard]] PhotonShare trace_photon_share(const SceneT& scene, const PhotonTracerConfig& config, const Air& air, std::size_t pass, std::size_t part,
                                              std::size_t parts)
@@ -7695,10 +7707,7 @@ template <class SceneT, class Air = StraightAir>
     if (parts < 1 || parts >= (std::size_t(1) << 31) || part >= parts)
         detail::throw_invalid("trace_photon_share part ", part, " of ", parts, ": expected 0 <= part < parts < 2^31");
     const detail::PhotonTracer<SceneT, Air> tracer(scene, config, air);
-    // Photon indices are Sobol indices: 32 bits.
-    for (const std::size_t count : {config.global_photons, config.caustic_photons})
-        if (count > 0 && pass >= (std::size_t(1) << 32) / count)
-            detail::throw_invalid("trace_photons pass ", pass, " of ", count, " photons reaches past photon index 2^32 (the Sobol sequence's length)");
+    check_photon_passes(config, pass + 1);
     // floor(count k / parts) without overflow (parts < 2^31): with count = q parts + r,
     // it is q k + floor(r k / parts).
     const auto share_first = [&](std::size_t count, std::size_t k) { return count / parts * k + count % parts * k / parts; };
@@ -10427,12 +10436,18 @@ public:
     /// The settings.
     [[nodiscard]] const Config& config() const noexcept { return config_; }
 
+    /// Throws std::invalid_argument when the passes `config` asks for would reach past
+    /// photon index 2^32, before any is traced (mpi::render_sums asks for the whole range
+    /// before it deals passes to the ranks).
+    void check_passes(const RenderConfig& config) const { check_photon_passes(config_.pass.tracing, detail::render_passes(config).last); }
+
     /// Passes config.passes of config.spp, each of `samples` samples per pixel, in order;
     /// with a time budget, up to the pass that ends past it (the samples of the passes
     /// rendered are the pixels' weight).
     void add_passes(Accumulation& sums, const Camera<T>& camera, const RenderConfig& config) const
     {
         const PassRange passes = detail::render_passes(config);
+        check_passes(config);
         const auto start = std::chrono::steady_clock::now();
         const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
         for (std::uint64_t pass = passes.first; pass < passes.last; ++pass) {
@@ -12093,6 +12108,331 @@ static_assert(Material<CoatedDielectric<float>>);
 // Includes everything except io/ (image files need stb_image_write; include
 // <prism/io/image.hpp> for them).
 
+// ---- prism/io/input.hpp ----
+// Reading files nobody here wrote: a file opened for a reader that trusts none of its bytes.
+// It knows a regular file's size (so a header's claims can be checked against it before
+// anything is allocated), reads a stream whose size it cannot know (a FIFO, a device) no
+// further than a limit, grows what it reads into only as bytes arrive, and reads a line no
+// longer than its caller allows, so that an endless stream such as /dev/zero is refused
+// after a bounded amount of work and memory. Every failure names the file and the reason.
+
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace prism {
+
+/// What a reader accepts at most from one file: a guard against endless streams, checked
+/// before reading when the file's size is known and as bytes arrive otherwise.
+struct ReadLimits {
+    std::uint64_t max_bytes = std::uint64_t(1) << 32; ///< 4 GiB
+};
+
+namespace detail {
+
+/// a * b, or nothing when it does not fit in 64 bits.
+[[nodiscard]] constexpr std::optional<std::uint64_t> checked_product(std::uint64_t a, std::uint64_t b) noexcept
+{
+    if (a != 0 && b > UINT64_MAX / a) return std::nullopt;
+    return a * b;
+}
+
+/// A file opened for reading by a reader that checks every claim its bytes make.
+class InputFile {
+public:
+    /// Opens `path`; `what` names the kind of file in messages ("image", "mesh").
+    InputFile(const std::filesystem::path& path, std::string what, ReadLimits limits = {})
+        : path_(path), what_(std::move(what)), limits_(limits)
+    {
+        std::error_code error;
+        const auto status = std::filesystem::status(path, error);
+        if (error) fail(error.message());
+        if (status.type() == std::filesystem::file_type::directory) fail("it is a directory");
+        if (status.type() == std::filesystem::file_type::regular) {
+            size_ = std::filesystem::file_size(path, error);
+            if (error) fail(error.message());
+        }
+        in_.open(path, std::ios::binary);
+        if (!in_) fail(std::strerror(errno));
+    }
+
+    /// The file's size in bytes, when it is a regular file.
+    [[nodiscard]] const std::optional<std::uint64_t>& size() const noexcept { return size_; }
+    /// The bytes read so far.
+    [[nodiscard]] std::uint64_t position() const noexcept { return position_; }
+    /// The path, as given.
+    [[nodiscard]] const std::filesystem::path& path() const noexcept { return path_; }
+
+    /// The next byte, or -1 at the end of the file.
+    [[nodiscard]] int get()
+    {
+        const int c = in_.get();
+        if (c == std::char_traits<char>::eof()) return -1;
+        if (++position_ > limits_.max_bytes) fail("it is longer than the limit of " + std::to_string(limits_.max_bytes) + " bytes");
+        return c;
+    }
+
+    /// Whether the file has no more bytes.
+    [[nodiscard]] bool at_end() { return in_.peek() == std::char_traits<char>::eof(); }
+
+    /// The next line without its end ("\n" or "\r\n"); nothing at the end of the file. A
+    /// line longer than `max` bytes, or holding a NUL byte, is refused: `what` names it.
+    [[nodiscard]] std::optional<std::string> line(std::size_t max, const std::string& what)
+    {
+        std::string text;
+        int c = get();
+        if (c < 0) return std::nullopt;
+        for (; c >= 0 && c != '\n'; c = get()) {
+            if (c == 0) fail(what + " holds a NUL byte: it is not text");
+            if (text.size() == max) fail(what + " is longer than " + std::to_string(max) + " bytes");
+            text.push_back(char(c));
+        }
+        if (!text.empty() && text.back() == '\r') text.pop_back();
+        return text;
+    }
+
+    /// Append the next `count` bytes to `out`. The claim is checked against what a regular
+    /// file still holds before anything is allocated; a stream's bytes are taken as they
+    /// arrive, a MiB at a time. `what` names the bytes in the message when they are not there.
+    void read(std::vector<unsigned char>& out, std::uint64_t count, const std::string& what)
+    {
+        if (size_ && count > (*size_ > position_ ? *size_ - position_ : 0))
+            fail(what + " needs " + std::to_string(count) + " bytes, but " + std::to_string(*size_ - position_) + " follow: the file is truncated");
+        if (count > limits_.max_bytes - position_) fail(what + " needs " + std::to_string(count) + " bytes, more than the limit of " + std::to_string(limits_.max_bytes));
+        const std::uint64_t chunk = std::uint64_t(1) << 20;
+        for (std::uint64_t done = 0; done < count;) {
+            const std::uint64_t n = count - done < chunk ? count - done : chunk;
+            const std::size_t at = out.size();
+            out.resize(at + std::size_t(n));
+            in_.read(reinterpret_cast<char*>(out.data() + at), std::streamsize(n));
+            const auto got = std::uint64_t(in_.gcount());
+            position_ += got;
+            done += got;
+            if (got < n)
+                fail(what + " needs " + std::to_string(count) + " bytes, but the file ends after " + std::to_string(done) + ": it is truncated");
+        }
+    }
+
+    /// Every byte left, for a format whose header says nothing of its length: a regular
+    /// file's size is checked against the limit first, a stream is read until it ends or
+    /// passes the limit.
+    [[nodiscard]] std::vector<unsigned char> rest()
+    {
+        std::vector<unsigned char> out;
+        if (size_) {
+            read(out, *size_ - position_, "the file");
+            return out;
+        }
+        const std::uint64_t chunk = std::uint64_t(1) << 20;
+        for (;;) {
+            const std::size_t at = out.size();
+            if (position_ + chunk > limits_.max_bytes + 1)
+                fail("it is longer than the limit of " + std::to_string(limits_.max_bytes) + " bytes");
+            out.resize(at + std::size_t(chunk));
+            in_.read(reinterpret_cast<char*>(out.data() + at), std::streamsize(chunk));
+            const auto got = std::uint64_t(in_.gcount());
+            position_ += got;
+            out.resize(at + std::size_t(got));
+            if (position_ > limits_.max_bytes) fail("it is longer than the limit of " + std::to_string(limits_.max_bytes) + " bytes");
+            if (got < chunk) return out;
+        }
+    }
+
+    /// Throws std::runtime_error: "cannot read <what> '<path>': <reason>".
+    [[noreturn]] void fail(const std::string& reason) const
+    {
+        throw std::runtime_error("prism: cannot read " + what_ + " '" + path_.string() + "': " + reason);
+    }
+
+private:
+    std::filesystem::path path_;
+    std::string what_;
+    ReadLimits limits_;
+    std::ifstream in_;
+    std::optional<std::uint64_t> size_;
+    std::uint64_t position_ = 0;
+};
+
+} // namespace detail
+
+} // namespace prism
+
+// ---- prism/io/output.hpp ----
+// Writing files: whole or not at all. A regular file's bytes go to a temporary file beside
+// it, renamed over it only once complete; a device or FIFO is written through, never
+// replaced. An OutputSet writes several files together, so that a run that fails leaves
+// none of them half done: every target is checked, every regular one staged, every device
+// written, and only then is every staged file renamed into place. Any failure throws
+// std::runtime_error naming the path and the reason.
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace prism {
+
+namespace detail {
+
+[[noreturn]] inline void throw_io(const std::filesystem::path& path, const std::string& reason)
+{
+    throw std::runtime_error("prism: cannot write '" + path.string() + "': " + reason);
+}
+
+/// Write every byte and close the file: 0, or the errno of what failed first.
+[[nodiscard]] inline int write_and_close(std::FILE* file, std::span<const unsigned char> bytes) noexcept
+{
+    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+    const int write_errno = errno;
+    const bool closed = std::fclose(file) == 0;
+    if (!written) return write_errno != 0 ? write_errno : EIO;
+    return closed ? 0 : (errno != 0 ? errno : EIO);
+}
+
+/// Where `path` leads: the file a symbolic link names (the link stays), and whether it is
+/// a regular file or nothing yet (else a device or FIFO, written through). A directory is
+/// refused.
+inline std::pair<std::filesystem::path, bool> output_target(const std::filesystem::path& path)
+{
+    namespace fs = std::filesystem;
+    std::error_code error;
+    fs::path target = path;
+    if (fs::is_symlink(fs::symlink_status(path, error))) {
+        target = fs::weakly_canonical(path, error);
+        if (error) throw_io(path, "cannot follow the symbolic link: " + error.message());
+    }
+    const fs::file_status status = fs::status(target, error);
+    if (status.type() == fs::file_type::directory) throw_io(path, "it is a directory");
+    return {target, status.type() == fs::file_type::regular || status.type() == fs::file_type::not_found};
+}
+
+/// Bytes written to a new temporary file beside `target` (created exclusively, never
+/// through an existing name); its path. `path` names the target in messages.
+inline std::filesystem::path stage_file(const std::filesystem::path& path, const std::filesystem::path& target, std::span<const unsigned char> bytes)
+{
+    static std::atomic<unsigned> serial{0};
+    std::filesystem::path temporary;
+    std::FILE* file = nullptr;
+    for (int attempt = 0; attempt < 100 && file == nullptr; ++attempt) {
+        temporary = target;
+        temporary += ".prism-partial-" + std::to_string(serial++) + "-" + std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()) % 100000);
+        file = std::fopen(temporary.c_str(), "wbx"); // "x": only a file that did not exist
+        if (file == nullptr && errno != EEXIST) throw_io(path, std::strerror(errno));
+    }
+    if (file == nullptr) throw_io(path, "no free temporary name beside it");
+    if (const int failure = write_and_close(file, bytes)) {
+        std::remove(temporary.c_str());
+        throw_io(path, std::strerror(failure));
+    }
+    return temporary;
+}
+
+/// Write bytes through to a device or FIFO.
+inline void write_through(const std::filesystem::path& path, const std::filesystem::path& target, std::span<const unsigned char> bytes)
+{
+    std::FILE* file = std::fopen(target.c_str(), "wb");
+    if (file == nullptr) throw_io(path, std::strerror(errno));
+    if (const int failure = write_and_close(file, bytes)) throw_io(path, std::strerror(failure));
+}
+
+/// Write bytes to path: whole or not at all where the path is a regular file (or
+/// nothing yet). Bytes go to a new temporary file beside it (created exclusively, never
+/// through an existing name), which is renamed over the target only once complete. A
+/// symbolic link is followed to what it names, so the link stays. Anything that is not
+/// a regular file (a device such as /dev/null, a FIFO) is written through, never
+/// replaced: renaming over it would turn it into a plain file.
+inline void write_file_atomically(const std::filesystem::path& path, std::span<const unsigned char> bytes)
+{
+    const auto [target, regular] = output_target(path);
+    if (!regular) return write_through(path, target, bytes);
+    const std::filesystem::path temporary = stage_file(path, target, bytes);
+    std::error_code error;
+    std::filesystem::rename(temporary, target, error);
+    if (error) {
+        std::remove(temporary.c_str());
+        throw_io(path, error.message());
+    }
+}
+
+} // namespace detail
+
+/// Files written together, all or none: add() collects each file's bytes; commit() checks
+/// every target (a directory is refused), writes every regular one to a temporary file
+/// beside it and writes through every device or FIFO, and only when all of that succeeded
+/// renames the temporaries into place. A failure before the renames leaves no file
+/// changed but the devices already written (written last, after the staging), and throws.
+class OutputSet {
+public:
+    /// Add a file to write: `bytes` to `path` (a later add of the same path replaces it).
+    void add(std::filesystem::path path, std::vector<unsigned char> bytes)
+    {
+        for (auto& [p, b] : files_)
+            if (p == path) {
+                b = std::move(bytes);
+                return;
+            }
+        files_.emplace_back(std::move(path), std::move(bytes));
+    }
+
+    /// The files added and not yet written.
+    [[nodiscard]] std::size_t size() const noexcept { return files_.size(); }
+
+    /// Write every file added, all or none (see the class); then forget them.
+    void commit()
+    {
+        struct Staged {
+            std::filesystem::path path, target, temporary;
+        };
+        std::vector<std::pair<std::size_t, std::filesystem::path>> devices;
+        std::vector<Staged> staged;
+        const auto discard = [&] {
+            for (const Staged& s : staged) std::remove(s.temporary.c_str());
+        };
+        try {
+            std::vector<std::pair<std::filesystem::path, bool>> targets;
+            for (const auto& [path, bytes] : files_) targets.push_back(detail::output_target(path));
+            for (std::size_t i = 0; i < files_.size(); ++i)
+                if (targets[i].second) staged.push_back({files_[i].first, targets[i].first, detail::stage_file(files_[i].first, targets[i].first, files_[i].second)});
+                else devices.emplace_back(i, targets[i].first);
+            for (const auto& [i, target] : devices) detail::write_through(files_[i].first, target, files_[i].second);
+        } catch (...) {
+            discard();
+            throw;
+        }
+        for (std::size_t k = 0; k < staged.size(); ++k) {
+            std::error_code error;
+            std::filesystem::rename(staged[k].temporary, staged[k].target, error);
+            if (error) {
+                for (std::size_t j = k; j < staged.size(); ++j) std::remove(staged[j].temporary.c_str());
+                detail::throw_io(staged[k].path, error.message());
+            }
+        }
+        files_.clear();
+    }
+
+private:
+    std::vector<std::pair<std::filesystem::path, std::vector<unsigned char>>> files_;
+};
+
+} // namespace prism
+
 // ---- prism/io/image.hpp ----
 // Image files: PNG (sRGB, 8 bit, through stb_image_write and stb_image) and PFM (exact
 // linear floats).
@@ -12144,12 +12484,14 @@ static_assert(Material<CoatedDielectric<float>>);
 #undef PRISM_DEFINED_STBI_IMPLEMENTATION
 #endif
 
+#include <algorithm>
 #include <atomic>
 #include <bit>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -12163,65 +12505,40 @@ namespace prism {
 
 namespace detail {
 
-[[noreturn]] inline void throw_io(const std::filesystem::path& path, const std::string& reason)
+/// CRC-32 as PNG computes it (ISO 3309, polynomial 0xedb88320).
+[[nodiscard]] inline std::uint32_t png_crc(const unsigned char* data, std::size_t size) noexcept
 {
-    throw std::runtime_error("prism: cannot write '" + path.string() + "': " + reason);
+    std::uint32_t crc = 0xffffffffu;
+    for (std::size_t i = 0; i < size; ++i) {
+        crc ^= data[i];
+        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    return crc ^ 0xffffffffu;
 }
 
-/// Write every byte and close the file: 0, or the errno of what failed first.
-[[nodiscard]] inline int write_and_close(std::FILE* file, std::span<const unsigned char> bytes) noexcept
+/// A PNG's bytes with every chunk checked (it fits in the file, its CRC is right, IEND
+/// ends the file), and empty IDAT chunks left out (stb_image would copy from a null
+/// pointer for them).
+template <class File>
+[[nodiscard]] std::vector<unsigned char> checked_png_chunks(const std::vector<unsigned char>& bytes, File& file)
 {
-    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-    const int write_errno = errno;
-    const bool closed = std::fclose(file) == 0;
-    if (!written) return write_errno != 0 ? write_errno : EIO;
-    return closed ? 0 : (errno != 0 ? errno : EIO);
-}
-
-/// Write bytes to path: whole or not at all where the path is a regular file (or
-/// nothing yet). Bytes go to a new temporary file beside it (created exclusively, never
-/// through an existing name), which is renamed over the target only once complete. A
-/// symbolic link is followed to what it names, so the link stays. Anything that is not
-/// a regular file (a device such as /dev/null, a FIFO) is written through, never
-/// replaced: renaming over it would turn it into a plain file.
-inline void write_file_atomically(const std::filesystem::path& path, std::span<const unsigned char> bytes)
-{
-    namespace fs = std::filesystem;
-    std::error_code error;
-    fs::path target = path;
-    if (fs::is_symlink(fs::symlink_status(path, error))) {
-        target = fs::weakly_canonical(path, error);
-        if (error) throw_io(path, "cannot follow the symbolic link: " + error.message());
+    std::vector<unsigned char> out(bytes.begin(), bytes.begin() + 8);
+    std::size_t at = 8;
+    for (;;) {
+        if (bytes.size() - at < 12) file.fail("it is truncated (a chunk's header or CRC is cut at byte " + std::to_string(at) + ")");
+        const std::uint32_t length = std::uint32_t(bytes[at]) << 24 | std::uint32_t(bytes[at + 1]) << 16 | std::uint32_t(bytes[at + 2]) << 8 | bytes[at + 3];
+        if (length > bytes.size() - at - 12) file.fail("it is truncated (the chunk at byte " + std::to_string(at) + " claims " + std::to_string(length) + " bytes)");
+        const unsigned char* chunk = bytes.data() + at;
+        const std::uint32_t stored = std::uint32_t(chunk[8 + length]) << 24 | std::uint32_t(chunk[9 + length]) << 16 | std::uint32_t(chunk[10 + length]) << 8 | chunk[11 + length];
+        if (png_crc(chunk + 4, 4 + std::size_t(length)) != stored)
+            file.fail("the chunk '" + std::string(reinterpret_cast<const char*>(chunk + 4), 4) + "' at byte " + std::to_string(at) + " fails its CRC: the file is corrupt");
+        const bool end = std::memcmp(chunk + 4, "IEND", 4) == 0;
+        if (!(length == 0 && std::memcmp(chunk + 4, "IDAT", 4) == 0)) out.insert(out.end(), chunk, chunk + 12 + length);
+        at += 12 + std::size_t(length);
+        if (end) break;
     }
-    const fs::file_status status = fs::status(target, error);
-    if (status.type() == fs::file_type::directory) throw_io(path, "it is a directory");
-    const bool regular_or_new = status.type() == fs::file_type::regular || status.type() == fs::file_type::not_found;
-    if (!regular_or_new) {
-        std::FILE* file = std::fopen(target.c_str(), "wb");
-        if (file == nullptr) throw_io(path, std::strerror(errno));
-        if (const int failure = write_and_close(file, bytes)) throw_io(path, std::strerror(failure));
-        return;
-    }
-    // A temporary name of our own: "x" opens only a file that did not exist.
-    static std::atomic<unsigned> serial{0};
-    fs::path temporary;
-    std::FILE* file = nullptr;
-    for (int attempt = 0; attempt < 100 && file == nullptr; ++attempt) {
-        temporary = target;
-        temporary += ".prism-partial-" + std::to_string(serial++) + "-" + std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()) % 100000);
-        file = std::fopen(temporary.c_str(), "wbx");
-        if (file == nullptr && errno != EEXIST) throw_io(path, std::strerror(errno));
-    }
-    if (file == nullptr) throw_io(path, "no free temporary name beside it");
-    if (const int failure = write_and_close(file, bytes)) {
-        std::remove(temporary.c_str());
-        throw_io(path, std::strerror(failure));
-    }
-    fs::rename(temporary, target, error);
-    if (error) {
-        std::remove(temporary.c_str());
-        throw_io(path, error.message());
-    }
+    if (at != bytes.size()) file.fail(std::to_string(bytes.size() - at) + " bytes follow its IEND chunk");
+    return out;
 }
 
 /// sRGB transfer function (IEC 61966-2-1) of a linear value clamped to [0, 1].
@@ -12244,8 +12561,8 @@ inline void write_file_atomically(const std::filesystem::path& path, std::span<c
     return bytes;
 }
 
-/// Write the film as an 8-bit sRGB PNG (values clamped to [0, 1]).
-inline void write_png(const Film& film, const std::filesystem::path& path)
+/// The film as the bytes of an 8-bit sRGB PNG (values clamped to [0, 1]).
+[[nodiscard]] inline std::vector<unsigned char> encode_png(const Film& film)
 {
     const std::vector<unsigned char> rgb = to_srgb8(film);
     std::vector<unsigned char> encoded;
@@ -12255,12 +12572,15 @@ inline void write_png(const Film& film, const std::filesystem::path& path)
         out->insert(out->end(), bytes, bytes + size);
     };
     if (stbi_write_png_to_func(append, &encoded, film.width(), film.height(), 3, rgb.data(), film.width() * 3) == 0)
-        detail::throw_io(path, "PNG encoding failed");
-    detail::write_file_atomically(path, encoded);
+        throw std::runtime_error("prism: PNG encoding failed");
+    return encoded;
 }
 
-/// Write the film as a little-endian PFM: exact linear floats, bottom row first.
-inline void write_pfm(const Film& film, const std::filesystem::path& path)
+/// Write the film as an 8-bit sRGB PNG (values clamped to [0, 1]).
+inline void write_png(const Film& film, const std::filesystem::path& path) { detail::write_file_atomically(path, encode_png(film)); }
+
+/// The film as the bytes of a little-endian PFM: exact linear floats, bottom row first.
+[[nodiscard]] inline std::vector<unsigned char> encode_pfm(const Film& film)
 {
     const std::string header = "PF\n" + std::to_string(film.width()) + " " + std::to_string(film.height()) + "\n-1.0\n";
     std::vector<unsigned char> bytes(header.begin(), header.end());
@@ -12274,8 +12594,11 @@ inline void write_pfm(const Film& film, const std::filesystem::path& path)
                 if constexpr (std::endian::native == std::endian::big) std::swap(raw[0], raw[3]), std::swap(raw[1], raw[2]);
                 bytes.insert(bytes.end(), raw, raw + 4);
             }
-    detail::write_file_atomically(path, bytes);
+    return bytes;
 }
+
+/// Write the film as a little-endian PFM: exact linear floats, bottom row first.
+inline void write_pfm(const Film& film, const std::filesystem::path& path) { detail::write_file_atomically(path, encode_pfm(film)); }
 
 /// Write the film in the format named by the path's extension: .png or .pfm.
 inline void write_image(const Film& film, const std::filesystem::path& path)
@@ -12286,66 +12609,153 @@ inline void write_image(const Film& film, const std::filesystem::path& path)
     detail::throw_io(path, "unknown image extension '" + extension + "' (use .png or .pfm)");
 }
 
-/// Read an 8-bit PNG (grey, RGB or with alpha) into linear radiance, undoing sRGB.
-[[nodiscard]] inline Film read_png(const std::filesystem::path& path)
+/// Read an 8-bit PNG (grey, RGB or with alpha) into linear radiance, undoing sRGB. The file
+/// is read no further than `limits`, and its header's size is checked against its bytes
+/// before stb_image allocates the picture: deflate expands at most 1032 times, so a header
+/// that claims more pixels than its compressed bytes can hold is refused. Every chunk must
+/// fit in the file and pass its CRC, and nothing may follow IEND.
+[[nodiscard]] inline Film read_png(const std::filesystem::path& path, ReadLimits limits = {})
 {
-    int width = 0, height = 0, channels = 0;
-    unsigned char* data = stbi_load(path.c_str(), &width, &height, &channels, 3);
-    if (data == nullptr) throw std::runtime_error("prism: cannot read '" + path.string() + "': " + stbi_failure_reason());
-    Film film(width, height);
+    detail::InputFile file(path, "image", limits);
+    // The signature and the header first, so that what is no PNG (/dev/zero) is refused
+    // before the rest is read.
+    std::vector<unsigned char> bytes;
+    if (file.size() && *file.size() < 33) file.fail("it is too short to be a PNG file (" + std::to_string(*file.size()) + " bytes)");
+    file.read(bytes, 33, "a PNG signature and header");
+    static constexpr unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (std::memcmp(bytes.data(), signature, 8) != 0 || std::memcmp(bytes.data() + 12, "IHDR", 4) != 0)
+        file.fail("it is not a PNG file (no PNG signature and IHDR chunk)");
+    const std::vector<unsigned char> rest = file.rest();
+    bytes.insert(bytes.end(), rest.begin(), rest.end());
+    const auto be32 = [&](std::size_t at) { return std::uint32_t(bytes[at]) << 24 | std::uint32_t(bytes[at + 1]) << 16 | std::uint32_t(bytes[at + 2]) << 8 | bytes[at + 3]; };
+    const std::uint32_t width = be32(16), height = be32(20), depth = bytes[24];
+    if (width == 0 || height == 0 || width > (1u << 24) || height > (1u << 24))
+        file.fail("its header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels (each side must be 1 to 16777216)");
+    if (depth != 1 && depth != 2 && depth != 4 && depth != 8 && depth != 16) file.fail("its bit depth " + std::to_string(depth) + " is not 1, 2, 4, 8 or 16");
+    // Raw scanlines: a filter byte and at least one channel of `depth` bits a pixel.
+    const double raw = double(height) * (1.0 + std::ceil(double(width) * double(depth) / 8.0));
+    if (raw > 1032.0 * double(bytes.size()) + 1024.0)
+        file.fail("its header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than its " + std::to_string(bytes.size()) +
+                  " bytes can hold compressed");
+    bytes = detail::checked_png_chunks(bytes, file);
+    int w = 0, h = 0, channels = 0;
+    unsigned char* data = stbi_load_from_memory(bytes.data(), int(std::min<std::size_t>(bytes.size(), INT32_MAX)), &w, &h, &channels, 3);
+    if (data == nullptr) {
+        const char* reason = stbi_failure_reason();
+        file.fail(std::string("it is truncated or corrupt (stb_image: ") + (reason != nullptr && *reason != 0 ? reason : "no reason given") + ")");
+    }
+    struct Free {
+        unsigned char* data;
+        ~Free() { stbi_image_free(data); }
+    } owner{data};
+    Film film(w, h);
     const auto linear = [](unsigned char byte) {
         const float x = float(byte) / 255.0f;
         return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
     };
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const unsigned char* p = data + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const unsigned char* p = data + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
             film.set(x, y, Rgb<float>{linear(p[0]), linear(p[1]), linear(p[2])});
         }
-    stbi_image_free(data);
     return film;
 }
 
-/// Read a PFM written by write_pfm (3 channels, either byte order).
-[[nodiscard]] inline Film read_pfm(const std::filesystem::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("prism: cannot read '" + path.string() + "': " + std::strerror(errno));
-    std::string magic;
-    int width = 0, height = 0;
-    double scale = 0;
-    in >> magic >> width >> height >> scale;
-    in.get();
-    if (!in || magic != "PF" || width <= 0 || height <= 0 || scale == 0 || !std::isfinite(scale))
-        throw std::runtime_error("prism: cannot read '" + path.string() + "': not an RGB PFM file");
-    // The header is checked against the file's size before anything is allocated: 20
-    // bytes must not make a reader ask for gigabytes.
-    const std::streamoff header_end = in.tellg();
-    in.seekg(0, std::ios::end);
-    const std::streamoff file_size = in.tellg();
-    in.seekg(header_end);
-    const double needed = 12.0 * double(width) * double(height);
-    if (header_end < 0 || file_size < 0 || double(file_size - header_end) < needed)
-        throw std::runtime_error("prism: cannot read '" + path.string() + "': file is truncated (the header says " + std::to_string(width) +
-                                 " x " + std::to_string(height) + " pixels, " + std::to_string(static_cast<long long>(needed)) +
-                                 " bytes, but " + std::to_string(static_cast<long long>(file_size - header_end)) + " follow it)");
-    Film film(width, height);
-    const bool little = scale < 0;
-    std::vector<unsigned char> raw(static_cast<std::size_t>(width) * 12);
-    for (int y = height - 1; y >= 0; --y) {
-        if (!in.read(reinterpret_cast<char*>(raw.data()), static_cast<std::streamsize>(raw.size())))
-            throw std::runtime_error("prism: cannot read '" + path.string() + "': file is truncated");
-        for (int x = 0; x < width; ++x) {
-            Rgb<float> p;
-            for (int c = 0; c < 3; ++c) {
-                unsigned char* b = raw.data() + x * 12 + c * 4;
-                if (little != (std::endian::native == std::endian::little)) std::swap(b[0], b[3]), std::swap(b[1], b[2]);
-                std::memcpy(&p[c], b, 4);
-            }
-            film.set(x, y, p);
-        }
+/// A PFM file's pixels as they are stored: any float, negative, NaN and infinite included
+/// (PFM is a data format), row by row from the top, `channels` floats a pixel.
+struct PfmImage {
+    int width = 0;             ///< pixels a row
+    int height = 0;            ///< rows
+    int channels = 0;          ///< 3 (PF) or 1 (Pf, grey)
+    double scale = -1;         ///< the header's scale: its sign is the byte order (negative: little endian), its size is kept, not applied
+    std::vector<float> values; ///< width x height x channels, row by row from the top
+
+    /// Channel c of pixel (x, y), from the top left.
+    [[nodiscard]] float at(int x, int y, int c) const noexcept
+    {
+        return values[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(channels) + std::size_t(c)];
     }
-    return film;
+
+    /// The pixels as radiance (a grey image's value in every channel). Throws
+    /// std::runtime_error naming the first pixel that is negative, NaN or infinite, which a
+    /// Film cannot hold.
+    [[nodiscard]] Film film() const
+    {
+        Film out(width, height);
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                Rgb<float> p;
+                for (int c = 0; c < 3; ++c) {
+                    p[c] = at(x, y, channels == 3 ? c : 0);
+                    if (!(std::isfinite(p[c]) && p[c] >= 0))
+                        throw std::runtime_error("prism: PFM pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") holds " + std::to_string(p[c]) +
+                                                 ", which radiance cannot be (a Film holds finite values >= 0)");
+                }
+                out.set(x, y, p);
+            }
+        return out;
+    }
+};
+
+/// Read a PFM file (PF: RGB, Pf: grey; either byte order; lines ending in "\n" or "\r\n"),
+/// keeping every value as it is stored. The header is read a byte at a time and no longer
+/// than 64 bytes a field; the pixels it claims are checked against a regular file's size
+/// before anything is allocated, and a stream's (a FIFO's) are taken as they arrive; a file
+/// with bytes past its pixels is refused.
+[[nodiscard]] inline PfmImage read_pfm(const std::filesystem::path& path, ReadLimits limits = {})
+{
+    detail::InputFile file(path, "image", limits);
+    PfmImage image;
+    const int p = file.get(), f = file.get();
+    if (p != 'P' || (f != 'F' && f != 'f')) file.fail("it is not a PFM file (it does not start with PF or Pf)");
+    image.channels = f == 'F' ? 3 : 1;
+    // Fields separated by white space; the scale ends with one line end ("\n" or "\r\n").
+    const auto space = [](int c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+    int last = file.get();
+    if (!space(last)) file.fail("its magic PF or Pf is not followed by white space");
+    const auto field = [&](const char* name) {
+        int c = file.get();
+        while (space(c)) c = file.get();
+        std::string text;
+        for (; c >= 0 && !space(c); c = file.get()) {
+            if (text.size() == 64) file.fail(std::string("its header's ") + name + " is longer than 64 bytes");
+            text.push_back(char(c));
+        }
+        if (text.empty()) file.fail(std::string("its header ends before its ") + name);
+        last = c;
+        return text;
+    };
+    const auto dimension = [&](const char* name) {
+        const std::string text = field(name);
+        if (text.find_first_not_of("0123456789") != std::string::npos || text.size() > 10 || std::stoll(text) < 1 || std::stoll(text) > INT32_MAX)
+            file.fail(std::string("its ") + name + " '" + text + "' is not a whole number from 1 to 2147483647");
+        return int(std::stoll(text));
+    };
+    image.width = dimension("width");
+    image.height = dimension("height");
+    const std::string scale = field("scale");
+    char* end = nullptr;
+    image.scale = std::strtod(scale.c_str(), &end);
+    if (end != scale.c_str() + scale.size() || !std::isfinite(image.scale) || image.scale == 0)
+        file.fail("its scale '" + scale + "' is not a finite, non-zero number");
+    if (last == '\r' && file.get() != '\n') file.fail("its scale's line ends in \\r without \\n");
+    const auto floats = detail::checked_product(std::uint64_t(image.width) * std::uint64_t(image.height), std::uint64_t(image.channels));
+    const auto bytes = floats ? detail::checked_product(*floats, 4) : std::nullopt;
+    if (!bytes) file.fail("its header says " + std::to_string(image.width) + " x " + std::to_string(image.height) + " pixels, more bytes than a file can hold");
+    std::vector<unsigned char> raw;
+    file.read(raw, *bytes, "the header's " + std::to_string(image.width) + " x " + std::to_string(image.height) + " pixels");
+    if (!file.at_end()) file.fail("bytes follow its " + std::to_string(image.width) + " x " + std::to_string(image.height) + " pixels");
+    // Stored bottom row first.
+    image.values.resize(std::size_t(*floats));
+    const bool swap = (image.scale < 0) != (std::endian::native == std::endian::little);
+    const std::size_t row = std::size_t(image.width) * std::size_t(image.channels);
+    for (std::size_t y = 0; y < std::size_t(image.height); ++y)
+        for (std::size_t i = 0; i < row; ++i) {
+            unsigned char* b = raw.data() + 4 * ((std::size_t(image.height) - 1 - y) * row + i);
+            if (swap) std::swap(b[0], b[3]), std::swap(b[1], b[2]);
+            std::memcpy(&image.values[y * row + i], b, 4);
+        }
+    return image;
 }
 
 } // namespace prism

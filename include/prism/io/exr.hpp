@@ -97,8 +97,10 @@ template <class Value>
 
 } // namespace detail
 
-/// Write `image` as an EXR file (ZIP-compressed scan lines).
-inline void write_exr(const ExrImage& image, const std::filesystem::path& path)
+namespace detail {
+
+/// `image` as the bytes of an EXR file (ZIP-compressed scan lines); `path` names it in messages.
+[[nodiscard]] inline std::vector<unsigned char> exr_bytes(const ExrImage& image, const std::filesystem::path& path)
 {
     if (image.width <= 0 || image.height <= 0)
         detail::throw_io(path, "the image size must be positive, got " + std::to_string(image.width) + " x " + std::to_string(image.height));
@@ -133,8 +135,16 @@ inline void write_exr(const ExrImage& image, const std::filesystem::path& path)
     } catch (const std::exception& e) {
         detail::throw_io(path, std::string("OpenEXR: ") + e.what());
     }
-    detail::write_file_atomically(path, bytes);
+    return bytes;
 }
+
+} // namespace detail
+
+/// `image` as the bytes of an EXR file (ZIP-compressed scan lines), for an OutputSet.
+[[nodiscard]] inline std::vector<unsigned char> encode_exr(const ExrImage& image) { return detail::exr_bytes(image, "an EXR image"); }
+
+/// Write `image` as an EXR file (ZIP-compressed scan lines).
+inline void write_exr(const ExrImage& image, const std::filesystem::path& path) { detail::write_file_atomically(path, detail::exr_bytes(image, path)); }
 
 /// Read an EXR file: its FLOAT and HALF channels as float, its UINT channels as they
 /// are, and its string attributes. The data window's size is checked against the file's

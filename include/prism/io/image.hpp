@@ -11,6 +11,7 @@
 
 #include <prism/core/math.hpp>
 #include <prism/io/input.hpp>
+#include <prism/io/output.hpp>
 #include <prism/render/film.hpp>
 
 #if !defined(INCLUDE_STB_IMAGE_WRITE_H)
@@ -74,67 +75,6 @@ namespace prism {
 
 namespace detail {
 
-[[noreturn]] inline void throw_io(const std::filesystem::path& path, const std::string& reason)
-{
-    throw std::runtime_error("prism: cannot write '" + path.string() + "': " + reason);
-}
-
-/// Write every byte and close the file: 0, or the errno of what failed first.
-[[nodiscard]] inline int write_and_close(std::FILE* file, std::span<const unsigned char> bytes) noexcept
-{
-    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-    const int write_errno = errno;
-    const bool closed = std::fclose(file) == 0;
-    if (!written) return write_errno != 0 ? write_errno : EIO;
-    return closed ? 0 : (errno != 0 ? errno : EIO);
-}
-
-/// Write bytes to path: whole or not at all where the path is a regular file (or
-/// nothing yet). Bytes go to a new temporary file beside it (created exclusively, never
-/// through an existing name), which is renamed over the target only once complete. A
-/// symbolic link is followed to what it names, so the link stays. Anything that is not
-/// a regular file (a device such as /dev/null, a FIFO) is written through, never
-/// replaced: renaming over it would turn it into a plain file.
-inline void write_file_atomically(const std::filesystem::path& path, std::span<const unsigned char> bytes)
-{
-    namespace fs = std::filesystem;
-    std::error_code error;
-    fs::path target = path;
-    if (fs::is_symlink(fs::symlink_status(path, error))) {
-        target = fs::weakly_canonical(path, error);
-        if (error) throw_io(path, "cannot follow the symbolic link: " + error.message());
-    }
-    const fs::file_status status = fs::status(target, error);
-    if (status.type() == fs::file_type::directory) throw_io(path, "it is a directory");
-    const bool regular_or_new = status.type() == fs::file_type::regular || status.type() == fs::file_type::not_found;
-    if (!regular_or_new) {
-        std::FILE* file = std::fopen(target.c_str(), "wb");
-        if (file == nullptr) throw_io(path, std::strerror(errno));
-        if (const int failure = write_and_close(file, bytes)) throw_io(path, std::strerror(failure));
-        return;
-    }
-    // A temporary name of our own: "x" opens only a file that did not exist.
-    static std::atomic<unsigned> serial{0};
-    fs::path temporary;
-    std::FILE* file = nullptr;
-    for (int attempt = 0; attempt < 100 && file == nullptr; ++attempt) {
-        temporary = target;
-        temporary += ".prism-partial-" + std::to_string(serial++) + "-" + std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()) % 100000);
-        file = std::fopen(temporary.c_str(), "wbx");
-        if (file == nullptr && errno != EEXIST) throw_io(path, std::strerror(errno));
-    }
-    if (file == nullptr) throw_io(path, "no free temporary name beside it");
-    if (const int failure = write_and_close(file, bytes)) {
-        std::remove(temporary.c_str());
-        throw_io(path, std::strerror(failure));
-    }
-    fs::rename(temporary, target, error);
-    if (error) {
-        std::remove(temporary.c_str());
-        throw_io(path, error.message());
-    }
-}
-
 /// CRC-32 as PNG computes it (ISO 3309, polynomial 0xedb88320).
 [[nodiscard]] inline std::uint32_t png_crc(const unsigned char* data, std::size_t size) noexcept
 {
@@ -191,8 +131,8 @@ template <class File>
     return bytes;
 }
 
-/// Write the film as an 8-bit sRGB PNG (values clamped to [0, 1]).
-inline void write_png(const Film& film, const std::filesystem::path& path)
+/// The film as the bytes of an 8-bit sRGB PNG (values clamped to [0, 1]).
+[[nodiscard]] inline std::vector<unsigned char> encode_png(const Film& film)
 {
     const std::vector<unsigned char> rgb = to_srgb8(film);
     std::vector<unsigned char> encoded;
@@ -202,12 +142,15 @@ inline void write_png(const Film& film, const std::filesystem::path& path)
         out->insert(out->end(), bytes, bytes + size);
     };
     if (stbi_write_png_to_func(append, &encoded, film.width(), film.height(), 3, rgb.data(), film.width() * 3) == 0)
-        detail::throw_io(path, "PNG encoding failed");
-    detail::write_file_atomically(path, encoded);
+        throw std::runtime_error("prism: PNG encoding failed");
+    return encoded;
 }
 
-/// Write the film as a little-endian PFM: exact linear floats, bottom row first.
-inline void write_pfm(const Film& film, const std::filesystem::path& path)
+/// Write the film as an 8-bit sRGB PNG (values clamped to [0, 1]).
+inline void write_png(const Film& film, const std::filesystem::path& path) { detail::write_file_atomically(path, encode_png(film)); }
+
+/// The film as the bytes of a little-endian PFM: exact linear floats, bottom row first.
+[[nodiscard]] inline std::vector<unsigned char> encode_pfm(const Film& film)
 {
     const std::string header = "PF\n" + std::to_string(film.width()) + " " + std::to_string(film.height()) + "\n-1.0\n";
     std::vector<unsigned char> bytes(header.begin(), header.end());
@@ -221,8 +164,11 @@ inline void write_pfm(const Film& film, const std::filesystem::path& path)
                 if constexpr (std::endian::native == std::endian::big) std::swap(raw[0], raw[3]), std::swap(raw[1], raw[2]);
                 bytes.insert(bytes.end(), raw, raw + 4);
             }
-    detail::write_file_atomically(path, bytes);
+    return bytes;
 }
+
+/// Write the film as a little-endian PFM: exact linear floats, bottom row first.
+inline void write_pfm(const Film& film, const std::filesystem::path& path) { detail::write_file_atomically(path, encode_pfm(film)); }
 
 /// Write the film in the format named by the path's extension: .png or .pfm.
 inline void write_image(const Film& film, const std::filesystem::path& path)
