@@ -115,6 +115,8 @@ int merge(int argc, char** argv)
     std::vector<Part> parts;
     for (const auto& path : inputs) {
         Part part{path, prism::read_exr(path), {}, 0};
+        if (part.image.find("weight.0") == nullptr)
+            throw std::invalid_argument(path.string() + " holds no exact sums (no 'weight.0' channel): it is not a part of a render (--crop or --passes A:B write one)");
         part.passes = parse_passes(part);
         (void)attribute(part, "prism.settings");
         // What the part says it holds, against its sums: every pixel took the same number

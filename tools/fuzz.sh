@@ -6,7 +6,8 @@
 #   tools/fuzz.sh [SECONDS]     each target for SECONDS (default 30)
 # Targets (tests/fuzz/): quadric (crossings of any ten coefficients), csg (trees of
 # every operator), photon_map (the KD-tree against brute force, the estimates), and the
-# file readers pfm, png, ply and obj (any bytes as a file). Each
+# file readers pfm, png, ply, obj and exr (any bytes as a file; exr as prism_merge reads a
+# part). Each
 # starts from its committed corpus, tests/fuzz/corpus/<target>/, and writes what it
 # finds into build/fuzz/<target>/ (copy inputs worth keeping into the corpus); a crash
 # leaves its input as build/fuzz/crash-<target>-*, and the script fails.
@@ -22,13 +23,15 @@ flags=(-std=c++20 -O1 -g1 -fsanitize=fuzzer,address,undefined -fno-sanitize-reco
 fuzz_one() {
   local target=$1 report="$out/$1.report"
   mkdir -p "$out/$target" "$root/tests/fuzz/corpus/$target"
-  local libraries=()
+  local libraries=() max_len=512
   [[ $target == obj ]] && libraries=(-ltinyobjloader)
+  # An EXR part is a few KB; OpenEXR's library, and each run's malloc at most 512 MB.
+  [[ $target == exr ]] && libraries=($(pkg-config --cflags --libs OpenEXR)) max_len=8192
   if ! clang++-19 "${flags[@]}" "$root/tests/fuzz/$target.cpp" -o "$out/fuzz_$target" "${libraries[@]}" >"$out/$target.log" 2>&1; then
     { echo "fuzz: $target FAILED to build:"; tail -n 40 "$out/$target.log"; } >"$report"
     return 0
   fi
-  if ! "$out/fuzz_$target" "$out/$target" "$root/tests/fuzz/corpus/$target" -max_total_time="$seconds" -max_len=512 \
+  if ! "$out/fuzz_$target" "$out/$target" "$root/tests/fuzz/corpus/$target" -max_total_time="$seconds" -max_len="$max_len" -malloc_limit_mb=512 \
        -artifact_prefix="$out/crash-$target-" -print_final_stats=1 >"$out/$target.log" 2>&1; then
     { echo "fuzz: $target FAILED; its log ends:"; tail -n 40 "$out/$target.log"; } >"$report"
     return 0
@@ -39,7 +42,7 @@ fuzz_one() {
 }
 
 # One target per core at a time, each for SECONDS of its own.
-targets=(quadric csg photon_map pfm png ply obj)
+targets=(quadric csg photon_map pfm png ply obj exr)
 cores=$(nproc)
 rm -f "$out"/*.report
 for target in "${targets[@]}"; do

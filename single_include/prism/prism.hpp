@@ -12122,6 +12122,7 @@ static_assert(Material<CoatedDielectric<float>>);
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -12211,7 +12212,7 @@ public:
         for (std::uint64_t done = 0; done < count;) {
             const std::uint64_t n = count - done < chunk ? count - done : chunk;
             const std::size_t at = out.size();
-            out.resize(at + std::size_t(n));
+            grow(out, at + std::size_t(n), what);
             in_.read(reinterpret_cast<char*>(out.data() + at), std::streamsize(n));
             const auto got = std::uint64_t(in_.gcount());
             position_ += got;
@@ -12236,7 +12237,7 @@ public:
             const std::size_t at = out.size();
             if (position_ + chunk > limits_.max_bytes + 1)
                 fail("it is longer than the limit of " + std::to_string(limits_.max_bytes) + " bytes");
-            out.resize(at + std::size_t(chunk));
+            grow(out, at + std::size_t(chunk), "the file");
             in_.read(reinterpret_cast<char*>(out.data() + at), std::streamsize(chunk));
             const auto got = std::uint64_t(in_.gcount());
             position_ += got;
@@ -12253,6 +12254,18 @@ public:
     }
 
 private:
+    /// out.resize(size), or a message naming the file and what was being read when the
+    /// memory cannot be had (not a bare std::bad_alloc).
+    void grow(std::vector<unsigned char>& out, std::size_t size, const std::string& what) const
+    {
+        try {
+            out.resize(size);
+        } catch (const std::bad_alloc&) {
+            throw allocation_error("prism: cannot read " + what_ + " '" + path_.string() + "': " + what + " needs " + describe_bytes(double(size)) +
+                                   ", which could not be allocated");
+        }
+    }
+
     std::filesystem::path path_;
     std::string what_;
     ReadLimits limits_;

@@ -39,7 +39,7 @@ out=(--out "$work/refused.exr")
 refuses "has prism.seed '77'.*has '0': not parts of one render" "${out[@]}" "$work/top/$image" "$work/top2/$image" "$work/seeded/$image"
 refuses "hold the same passes of some pixels" "${out[@]}" "$work/top/$image" "$work/top/$image"
 refuses "has 1 of the passes 0:2 the parts hold: a crop or a range of passes is missing" "${out[@]}" "$work/top/$image" "$work/bottom/$image"
-refuses "has no UINT channel|has no 'prism.part.passes'" "${out[@]}" "$work/whole/$image"
+refuses "whole/$image holds no exact sums \(no 'weight.0' channel\): it is not a part of a render" "${out[@]}" "$work/whole/$image"
 refuses "unknown option '--bogus'" "${out[@]}" --bogus "$work/top/$image"
 refuses "--out FILE.exr is required" "$work/top/$image"
 

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <prism/io/image.hpp>
+#include <prism/io/input.hpp>
 #include <prism/render/accumulation.hpp>
 #include <prism/render/film.hpp>
 
@@ -27,11 +28,13 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <exception>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -146,11 +149,108 @@ namespace detail {
 /// Write `image` as an EXR file (ZIP-compressed scan lines).
 inline void write_exr(const ExrImage& image, const std::filesystem::path& path) { detail::write_file_atomically(path, detail::exr_bytes(image, path)); }
 
+namespace detail {
+
+/// The bytes OpenEXR 3 reads for an attribute of a fixed-size type, whatever the size the
+/// file declares; 0 for a type it reads by the declared size or by its own structure.
+inline std::uint64_t exr_fixed_size(const std::string& type)
+{
+    static const std::map<std::string, std::uint64_t> sizes{
+        {"box2i", 16}, {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"double", 8}, {"envmap", 1}, {"float", 4}, {"int", 4},
+        {"keycode", 28}, {"lineOrder", 1}, {"m33f", 36}, {"m33d", 72}, {"m44f", 64}, {"m44d", 128}, {"rational", 8}, {"tiledesc", 9},
+        {"timecode", 8}, {"v2i", 8}, {"v2f", 8}, {"v2d", 16}, {"v3i", 12}, {"v3f", 12}, {"v3d", 24}, {"deepImageState", 1}};
+    const auto found = sizes.find(type);
+    return found == sizes.end() ? 0 : found->second;
+}
+
+/// Walk an EXR file's header(s) as OpenEXR 3 will read them, before it does: names and
+/// types at most 255 bytes, fixed-size attributes their type's size, a channel list by its
+/// structure, a preview's pixels and every other attribute's declared size no more than
+/// the bytes left in the file. OpenEXR allocates an attribute's declared size before it
+/// reads it, so without this a few bytes could make it allocate 2 GB. Throws
+/// std::runtime_error naming the attribute.
+inline void check_exr_headers(const std::filesystem::path& path)
+{
+    InputFile file(path, "image");
+    std::vector<unsigned char> scratch;
+    const auto bytes = [&](std::uint64_t n, const std::string& what) {
+        scratch.clear();
+        file.read(scratch, n, what);
+        return scratch;
+    };
+    const auto le32 = [](const std::vector<unsigned char>& b, std::size_t at) {
+        return std::uint32_t(b[at]) | std::uint32_t(b[at + 1]) << 8 | std::uint32_t(b[at + 2]) << 16 | std::uint32_t(b[at + 3]) << 24;
+    };
+    const std::vector<unsigned char> start = bytes(8, "an EXR magic number and version");
+    if (!(start[0] == 0x76 && start[1] == 0x2f && start[2] == 0x31 && start[3] == 0x01)) file.fail("it is not an OpenEXR file (no magic number)");
+    const bool multipart = (start[5] & 0x10) != 0;
+    const auto text = [&](const std::string& what) {
+        std::string word;
+        for (int c = file.get(); c != 0; c = file.get()) {
+            if (c < 0) file.fail("its header ends inside " + what);
+            if (word.size() == 255) file.fail(what + " is longer than 255 bytes");
+            word.push_back(char(c));
+        }
+        return word;
+    };
+    // What OpenEXR allocates in proportion to the header (its line or tile buffers), against
+    // what the file can hold: no EXR compression expands more than deflate's 1032 times.
+    const double most = 1032.0 * double(file.size().value_or(0)) + double(1 << 20);
+    const auto check_claim = [&](double values, const std::string& what) {
+        if (4.0 * values > most)
+            file.fail(what + " needs " + describe_bytes(4.0 * values) + ", more than its " + std::to_string(file.size().value_or(0)) + " bytes can hold compressed");
+    };
+    for (int headers = 0;; ++headers) {
+        bool empty = true;
+        double channels = 0;
+        std::optional<std::array<std::int32_t, 4>> window;
+        std::optional<std::array<std::uint32_t, 2>> tile;
+        for (;;) {
+            const std::string name = text("an attribute's name");
+            if (name.empty()) break;
+            empty = false;
+            const std::string type = text("attribute '" + name + "''s type");
+            const std::int32_t size = std::int32_t(le32(bytes(4, "the size of attribute '" + name + "'"), 0));
+            if (size < 0) file.fail("its attribute '" + name + "' has a size of " + std::to_string(size) + " bytes");
+            const std::string what = "its attribute '" + name + "' (" + type + ")";
+            if (const std::uint64_t fixed = exr_fixed_size(type)) {
+                const std::vector<unsigned char> value = bytes(fixed, what);
+                if (name == "dataWindow" && type == "box2i")
+                    window = {std::int32_t(le32(value, 0)), std::int32_t(le32(value, 4)), std::int32_t(le32(value, 8)), std::int32_t(le32(value, 12))};
+                if (type == "tiledesc") tile = {le32(value, 0), le32(value, 4)};
+            } else if (type == "chlist") {
+                for (int count = 0; !text("a channel's name in '" + name + "'").empty(); ++count) {
+                    if (count == 1 << 16) file.fail(what + " lists more than 65536 channels");
+                    (void)bytes(16, what);
+                    if (name == "channels") ++channels;
+                }
+            } else if (type == "preview") {
+                const std::vector<unsigned char> extent = bytes(8, what);
+                const std::uint64_t pixels = std::uint64_t(le32(extent, 0)) * std::uint64_t(le32(extent, 4));
+                (void)bytes(4 * pixels, what + "'s preview pixels");
+            } else {
+                (void)bytes(std::uint64_t(size), what);
+            }
+        }
+        if (window)
+            check_claim((double((*window)[2]) - double((*window)[0]) + 1) * (double((*window)[3]) - double((*window)[1]) + 1) * channels,
+                        "its data window [" + std::to_string((*window)[0]) + ", " + std::to_string((*window)[2]) + "] x [" + std::to_string((*window)[1]) + ", " +
+                            std::to_string((*window)[3]) + "] of " + std::to_string(int(channels)) + " channels");
+        if (tile) check_claim(double((*tile)[0]) * double((*tile)[1]) * channels, "its tiles of " + std::to_string((*tile)[0]) + " x " + std::to_string((*tile)[1]) + " pixels");
+        if (!multipart || empty) return;
+        if (headers == 1 << 16) file.fail("it has more than 65536 parts");
+    }
+}
+
+} // namespace detail
+
 /// Read an EXR file: its FLOAT and HALF channels as float, its UINT channels as they
-/// are, and its string attributes. The data window's size is checked against the file's
+/// are, and its string attributes. Its headers are walked first (no attribute larger than
+/// the bytes left in the file), and the data window's size is checked against the file's
 /// before anything is allocated (no EXR compression expands more than 1032 times).
 [[nodiscard]] inline ExrImage read_exr(const std::filesystem::path& path)
 {
+    detail::check_exr_headers(path);
     try {
         Imf::InputFile file(path.c_str());
         const Imf::Header& header = file.header();
@@ -166,17 +266,6 @@ inline void write_exr(const ExrImage& image, const std::filesystem::path& path) 
             throw std::runtime_error("the data window is not inside the display window");
         for (auto a = header.begin(); a != header.end(); ++a)
             if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&a.attribute())) image.attributes[a.name()] = text->value();
-        // What the data window claims, against what the file holds, before anything is
-        // allocated: no compression EXR offers expands more than deflate's 1032 times.
-        std::size_t channel_count = 0;
-        for (auto c = header.channels().begin(); c != header.channels().end(); ++c) ++channel_count;
-        std::error_code error;
-        const std::uintmax_t file_size = std::filesystem::file_size(path, error);
-        const double claimed = 4.0 * double(image.window.area()) * double(channel_count);
-        if (error || claimed > 1032.0 * double(file_size) + double(1 << 20))
-            throw std::runtime_error("the data window's " + std::to_string(image.window.width()) + " x " + std::to_string(image.window.height()) + " pixels of " +
-                                     std::to_string(channel_count) + " channels need " + detail::describe_bytes(claimed) + ", more than its " +
-                                     std::to_string(error ? 0 : file_size) + " bytes can hold compressed");
         Imf::FrameBuffer frame;
         for (auto c = header.channels().begin(); c != header.channels().end(); ++c) {
             if (c.channel().xSampling != 1 || c.channel().ySampling != 1)
@@ -192,7 +281,7 @@ inline void write_exr(const ExrImage& image, const std::filesystem::path& path) 
         file.readPixels(data.min.y, data.max.y);
         return image;
     } catch (const std::exception& e) {
-        throw std::runtime_error("prism: cannot read '" + path.string() + "': " + e.what());
+        throw std::runtime_error("prism: cannot read image '" + path.string() + "': " + e.what());
     }
 }
 
