@@ -14,7 +14,7 @@
 
 namespace fs = std::filesystem;
 
-namespace {
+namespace output_test {
 
 fs::path scratch_folder(const std::string& name)
 {
@@ -40,21 +40,21 @@ int files_in(const fs::path& dir)
     return n;
 }
 
-} // namespace
+} // namespace output_test
 
 TEST_CASE("an OutputSet writes every file it holds, and a later add of a path replaces the earlier")
 {
-    const fs::path dir = scratch_folder("all");
+    const fs::path dir = output_test::scratch_folder("all");
     prism::OutputSet set;
-    set.add(dir / "a.txt", bytes_of("first"));
-    set.add(dir / "b.txt", bytes_of("bee"));
-    set.add(dir / "a.txt", bytes_of("alpha"));
+    set.add(dir / "a.txt", output_test::bytes_of("first"));
+    set.add(dir / "b.txt", output_test::bytes_of("bee"));
+    set.add(dir / "a.txt", output_test::bytes_of("alpha"));
     CHECK(set.size() == 2);
     set.commit();
     CHECK(set.size() == 0);
-    CHECK(read_text(dir / "a.txt") == "alpha");
-    CHECK(read_text(dir / "b.txt") == "bee");
-    CHECK(files_in(dir) == 2);
+    CHECK(output_test::read_text(dir / "a.txt") == "alpha");
+    CHECK(output_test::read_text(dir / "b.txt") == "bee");
+    CHECK(output_test::files_in(dir) == 2);
     fs::remove_all(dir);
 }
 
@@ -62,27 +62,27 @@ TEST_CASE("an OutputSet that cannot write one file writes none, and leaves no te
 {
     // Issue 33: an output that could not be written (a directory, a link to /dev/full) was
     // found after the outputs before it had been written, and they stayed.
-    const fs::path dir = scratch_folder("none");
+    const fs::path dir = output_test::scratch_folder("none");
     std::ofstream(dir / "kept.txt") << "old";
     fs::create_directories(dir / "taken.txt");
     prism::OutputSet set;
-    set.add(dir / "kept.txt", bytes_of("new"));
-    set.add(dir / "fresh.txt", bytes_of("fresh"));
-    set.add(dir / "taken.txt", bytes_of("x"));
+    set.add(dir / "kept.txt", output_test::bytes_of("new"));
+    set.add(dir / "fresh.txt", output_test::bytes_of("fresh"));
+    set.add(dir / "taken.txt", output_test::bytes_of("x"));
     CHECK_THROWS_WITH_AS(set.commit(), doctest::Contains("taken.txt': it is a directory"), std::runtime_error);
-    CHECK(read_text(dir / "kept.txt") == "old");
+    CHECK(output_test::read_text(dir / "kept.txt") == "old");
     CHECK_FALSE(fs::exists(dir / "fresh.txt"));
-    CHECK(files_in(dir) == 2); // kept.txt and the directory: no temporary
+    CHECK(output_test::files_in(dir) == 2); // kept.txt and the directory: no temporary
     if (::access("/dev/full", W_OK) == 0) {
         fs::create_symlink("/dev/full", dir / "full.txt");
         prism::OutputSet full;
-        full.add(dir / "kept.txt", bytes_of("new"));
-        full.add(dir / "full.txt", bytes_of("bytes"));
-        full.add(dir / "fresh.txt", bytes_of("fresh"));
+        full.add(dir / "kept.txt", output_test::bytes_of("new"));
+        full.add(dir / "full.txt", output_test::bytes_of("bytes"));
+        full.add(dir / "fresh.txt", output_test::bytes_of("fresh"));
         CHECK_THROWS_WITH_AS(full.commit(), doctest::Contains("No space left on device"), std::runtime_error);
-        CHECK(read_text(dir / "kept.txt") == "old");
+        CHECK(output_test::read_text(dir / "kept.txt") == "old");
         CHECK_FALSE(fs::exists(dir / "fresh.txt"));
-        CHECK(files_in(dir) == 3);
+        CHECK(output_test::files_in(dir) == 3);
     }
     fs::remove_all(dir);
 }
