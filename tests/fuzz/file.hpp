@@ -7,6 +7,7 @@
 
 #include <prism/io/input.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -26,6 +27,23 @@ inline std::filesystem::path as_file(const std::uint8_t* data, std::size_t size,
     static const std::filesystem::path path = std::filesystem::temp_directory_path() / ("prism-fuzz-" + std::to_string(::getpid()) + extension);
     std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data), std::streamsize(size));
     return path;
+}
+
+/// What a mesh reader returns, checked: at least one triangle, never more vertices and
+/// triangles than `size` bytes could hold, normals and coordinates one per vertex or none,
+/// every value finite, every index naming a vertex.
+template <class Mesh>
+void check_mesh(const Mesh& mesh, std::size_t size)
+{
+    FUZZ_CHECK(!mesh.triangles.empty());
+    FUZZ_CHECK(mesh.positions.size() + mesh.triangles.size() <= size);
+    FUZZ_CHECK(mesh.normals.empty() || mesh.normals.size() == mesh.positions.size());
+    FUZZ_CHECK(mesh.uvs.empty() || mesh.uvs.size() == mesh.positions.size());
+    for (const auto& p : mesh.positions) FUZZ_CHECK(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+    for (const auto& n : mesh.normals) FUZZ_CHECK(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
+    for (const auto& t : mesh.uvs) FUZZ_CHECK(std::isfinite(t.x) && std::isfinite(t.y));
+    for (const auto& f : mesh.triangles)
+        for (const auto v : f) FUZZ_CHECK(v < mesh.positions.size());
 }
 
 } // namespace fuzz
