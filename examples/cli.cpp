@@ -3,6 +3,7 @@
 #include "cli.hpp"
 
 #include <prism/io/image.hpp>
+#include <prism/io/output.hpp>
 #include <prism/photon/photon_map.hpp>
 #ifdef PRISM_EXAMPLES_EXR
 #include <prism/io/exr.hpp>
@@ -183,6 +184,8 @@ prism::OutputSet& outputs()
     static prism::OutputSet set;
     return set;
 }
+
+void commit_outputs() { outputs().commit(); }
 
 void save_png(const prism::Film& film, const Options& options, const std::string& name)
 {

@@ -6,7 +6,6 @@
 // in every example.
 #pragma once
 
-#include <prism/io/output.hpp>
 #include <prism/photon/estimator.hpp>
 #include <prism/render/accumulation.hpp>
 #include <prism/render/render.hpp>
@@ -116,9 +115,20 @@ inline prism::Estimator caustic_estimator(const Options& options)
 /// The path of `file` in the output folder (--out).
 inline std::string output_file(const Options& options, const std::string& file) { return options.out + "/" + file; }
 
+} // namespace examples
+
+namespace prism {
+class OutputSet; // io/output.hpp: only cli.cpp and compare.cpp need it whole
+}
+
+namespace examples {
+
 /// The files the example writes, written together (all or none) when its body has
 /// finished: a run that fails leaves no partial set of outputs.
 prism::OutputSet& outputs();
+
+/// Write every file outputs() holds (run() calls it when the body returns 0).
+void commit_outputs();
 
 /// Queue `film` as OUT/name.png.
 void save_png(const prism::Film& film, const Options& options, const std::string& name);
@@ -130,7 +140,7 @@ int run(std::FILE* errors, Body&& body) noexcept
 {
     try {
         const int status = body();
-        if (status == 0) outputs().commit();
+        if (status == 0) commit_outputs();
         return status;
     } catch (const std::exception& e) {
         if (errors != nullptr) std::fprintf(errors, "error: %s\n", e.what());

@@ -5,6 +5,7 @@
 #include "cli.hpp"
 
 #include <prism/io/image.hpp>
+#include <prism/io/output.hpp>
 
 #include <algorithm>
 #include <cmath>

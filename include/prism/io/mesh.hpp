@@ -395,12 +395,13 @@ template <Scalar T = float>
         }
     }
     if (format < 0) fail("its header has no format line");
+    for (const detail::PlyElement& element : elements)
+        if (element.properties.empty() && element.count > 0) fail("its element '" + element.name + "' has " + std::to_string(element.count) + " items but no properties");
     // What the counts claim, against what the file holds: each item takes at least its
     // scalars' and list counts' bytes in binary, and two bytes a value in ASCII.
     if (file.size()) {
         double least = 0;
         for (const detail::PlyElement& element : elements) {
-            if (element.properties.empty() && element.count > 0) fail("its element '" + element.name + "' has " + std::to_string(element.count) + " items but no properties");
             double item = 0;
             for (const detail::PlyProperty& property : element.properties)
                 item += format == 0 ? 2.0 : double(detail::ply_type_size(property.count_type.empty() ? property.type : property.count_type));
@@ -415,7 +416,6 @@ template <Scalar T = float>
     MeshBuffers<T> out;
     const char* axes[8] = {"x", "y", "z", "nx", "ny", "nz", "u", "v"};
     for (const detail::PlyElement& element : elements) {
-        if (element.properties.empty() && element.count > 0) fail("its element '" + element.name + "' has " + std::to_string(element.count) + " items but no properties");
         const bool vertices = element.name == "vertex", faces = element.name == "face";
         // Which scalar property holds x, y, z, nx, ny, nz, u, v.
         std::array<int, 8> slot_of;
