@@ -238,6 +238,10 @@ TEST_CASE("PLY values are numbers of their type: no fractional index or count, n
     CHECK(ply_refusal("magic.ply", "plyfoo\nformat ascii 1.0\nend_header\n").find("'ply' alone") != std::string::npos);
     CHECK(ply_refusal("two.ply", triangle_head + "2 0 1\n").find("face 0 has 2 vertices") != std::string::npos);
     CHECK(ply_refusal("tail.ply", triangle_head + "3 0 1 2\n7\n").find("bytes follow") != std::string::npos);
+    // Found by the ply fuzz target: a coordinate finite as a double but not as a float.
+    CHECK(ply_refusal("uv.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nproperty double u\n"
+                                "property double v\nend_header\n0 0 0 1e300 0\n")
+              .find("vertex 0's texture coordinates") != std::string::npos);
     CHECK(ply_refusal("nan.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 nan 0\n")
               .find("vertex 0's y is nan") != std::string::npos);
     for (const float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {

@@ -468,7 +468,11 @@ template <Scalar T = float>
                     if (!is_finite(normal) || !(length(Vec3<double>(normal)) > 0)) fail("the normal of vertex " + std::to_string(item) + " is " + detail::describe(normal));
                     out.normals.push_back(normal);
                 }
-                if (with_uvs) out.uvs.push_back({T(at[6]), T(at[7])});
+                if (with_uvs) {
+                    out.uvs.push_back({T(at[6]), T(at[7])});
+                    if (!std::isfinite(out.uvs.back().x) || !std::isfinite(out.uvs.back().y))
+                        fail(where + "'s texture coordinates (" + std::to_string(at[6]) + ", " + std::to_string(at[7]) + ") are not finite in this precision");
+                }
             }
         }
     }
