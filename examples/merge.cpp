@@ -5,7 +5,8 @@
 // The parts must be of the same image rendered with the same settings (every "prism."
 // attribute but the part's own "prism.part." ones); where two parts' windows overlap
 // their passes must not; and every pixel of the result must have all of the parts'
-// passes, once. The result is EXR again, with its exact sums, so results can be merged
+// passes, once. Each part must hold what it was written with (its prism.part.digest),
+// and its sums the passes it says. The result is EXR again, with its exact sums, so results can be merged
 // further; --png also writes its picture.
 #include <prism/io/exr.hpp>
 #include <prism/io/image.hpp>
@@ -117,6 +118,12 @@ int merge(int argc, char** argv)
         Part part{path, prism::read_exr(path), {}, 0};
         if (part.image.find("weight.0") == nullptr)
             throw std::invalid_argument(path.string() + " holds no exact sums (no 'weight.0' channel): it is not a part of a render (--crop or --passes A:B write one)");
+        // The part as it was written: its metadata and sums still have the digest it was
+        // written with (a part whose passes, seed or settings were edited, or whose bytes
+        // were damaged on the way, has not).
+        if (const std::string& digest = attribute(part, "prism.part.digest"), actual = prism::exr_digest(part.image); digest != actual)
+            throw std::invalid_argument(path.string() + " has prism.part.digest '" + digest + "', but what it holds has " + actual +
+                                        ": it was changed after it was written");
         part.passes = parse_passes(part);
         (void)attribute(part, "prism.settings");
         // What the part says it holds, against its sums: every pixel took the same number

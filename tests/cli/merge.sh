@@ -49,24 +49,36 @@ refuses "is the part .*: it would be overwritten" --out "$work/top/$image" "$wor
 ln -s "$work/top/$image" "$work/alias.exr"
 refuses "is the part .*: it would be overwritten" --out "$work/alias.exr" "$work/top/$image" "$work/top2/$image" "$work/bottom/$image"
 cmp "$work/top/$image" "$work/top-before.exr"
-# A part whose prism.part.passes was edited, or that claims passes it did not render: its
-# sums' weights say otherwise.
-edit_passes() { # edit_passes IN OUT NEW (NEW as long as the old value)
-  python3 - "$1" "$2" "$3" <<'PY'
+# A part changed after it was written: its prism.part.digest (over its metadata and sums)
+# no longer matches what it holds. A part whose passes were edited (to claim passes it
+# did not render, or another part's), whose seed was, or whose bytes were damaged.
+edit_attribute() { # edit_attribute IN OUT NAME NEW (NEW as long as the old value)
+  python3 - "$@" <<'PY'
 import sys
 data = open(sys.argv[1], 'rb').read()
-key = b'prism.part.passes\0string\0'
+key = sys.argv[3].encode() + b'\0string\0'
 at = data.index(key) + len(key)
 size = int.from_bytes(data[at:at + 4], 'little')
-new = sys.argv[3].encode()
+new = sys.argv[4].encode()
 assert len(new) == size, (new, size)
 open(sys.argv[2], 'wb').write(data[:at + 4] + new + data[at + 4 + size:])
 PY
 }
-edit_passes "$work/top/$image" "$work/lying.exr" "0:2"
-refuses "says it holds passes 0:2, but a pixel's sums hold|is not what it rendered" "${out[@]}" "$work/lying.exr" "$work/bottom/$image"
-edit_passes "$work/top2/$image" "$work/lying2.exr" "0:2"
-refuses "is not what it rendered" "${out[@]}" "$work/top/$image" "$work/lying2.exr" "$work/bottom/$image"
+edit_attribute "$work/top/$image" "$work/lying.exr" prism.part.passes "0:2"
+refuses "lying.exr has prism.part.digest '[0-9a-f]{16}', but what it holds has [0-9a-f]{16}: it was changed after it was written" \
+  "${out[@]}" "$work/lying.exr" "$work/bottom/$image"
+# Passes 0:1 sent again as 1:2: the weights alone cannot tell (one pass each), the digest can.
+edit_attribute "$work/top/$image" "$work/again.exr" prism.part.passes "1:2"
+refuses "again.exr has prism.part.digest .*: it was changed after it was written" "${out[@]}" "$work/top/$image" "$work/again.exr" "$work/bottom/$image"
+edit_attribute "$work/top/$image" "$work/reseeded.exr" prism.seed "7"
+refuses "reseeded.exr has prism.part.digest .*: it was changed after it was written" "${out[@]}" "$work/reseeded.exr" "$work/top2/$image" "$work/bottom/$image"
+python3 - "$work/top/$image" "$work/damaged.exr" <<'PY'
+import sys
+data = bytearray(open(sys.argv[1], 'rb').read())
+data[-40] ^= 0x10  # a bit of the last scan lines' compressed pixels
+open(sys.argv[2], 'wb').write(bytes(data))
+PY
+refuses "damaged.exr" "${out[@]}" "$work/damaged.exr" "$work/top2/$image" "$work/bottom/$image"
 # Two one-pixel parts at opposite corners of a 65536 x 32768 image: refused before the
 # hull (2^31 pixels) is allocated.
 if [[ $(basename "$example") == cornell ]]; then

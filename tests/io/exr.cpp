@@ -12,6 +12,7 @@
 #include <iterator>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include <sys/stat.h>
 
@@ -106,6 +107,54 @@ TEST_CASE("an Accumulation's exact sums go through an EXR file unchanged")
     // Without the sums, there is nothing to add up, and the error says so.
     write_exr(to_exr(sums, false), path);
     CHECK_THROWS_WITH_AS((void)to_accumulation(read_exr(path)), doctest::Contains("has no UINT channel 'weight.0'"), std::invalid_argument);
+}
+
+TEST_CASE("64-bit FNV-1a matches the published test vectors")
+{
+    // draft-eastlake-fnv's test vectors (and Noll's own table) for FNV-1a 64.
+    const std::pair<std::string, std::uint64_t> vectors[] = {{"", 0xcbf29ce484222325u}, {"a", 0xaf63dc4c8601ec8cu}, {"foobar", 0x85944171f73967e8u}};
+    for (const auto& [text, expected] : vectors) {
+        detail::Fnv1a hash;
+        hash.add(text.data(), text.size());
+        CHECK(hash.value == expected);
+    }
+}
+
+TEST_CASE("a part's digest is written with its sums, read back alike, and changed by any change of what it holds")
+{
+    Accumulation sums(6, 4, {1, 1, 5, 3}, {"R", "G", "B"});
+    for (int y = 1; y < 3; ++y)
+        for (int x = 1; x < 5; ++x) {
+            const ExactSum s[3] = {ExactSum::of(0.25 * x), ExactSum::of(0.5 * y), ExactSum::of(x - y)};
+            sums.add(x, y, s, 2);
+        }
+    const ExrImage written = to_exr(sums, true, {{"prism.seed", "0"}, {"prism.part.passes", "0:2"}});
+    const std::string digest = written.attributes.at("prism.part.digest");
+    CHECK(digest.size() == 16);
+    CHECK(digest == exr_digest(written));
+    const auto path = scratch("digest.exr");
+    write_exr(written, path);
+    const ExrImage read = read_exr(path);
+    CHECK(read.attributes.at("prism.part.digest") == digest);
+    CHECK(exr_digest(read) == digest); // the file's channel order is not the writer's
+    // Each thing a part holds changes it: an attribute, a new prism. attribute, a bit of a
+    // sum or a weight, a mean, the window.
+    const auto changed = [&](auto edit) {
+        ExrImage copy = written;
+        edit(copy);
+        return exr_digest(copy) != digest;
+    };
+    CHECK(changed([](ExrImage& i) { i.attributes["prism.part.passes"] = "1:3"; }));
+    CHECK(changed([](ExrImage& i) { i.attributes["prism.seed"] = "1"; }));
+    CHECK(changed([](ExrImage& i) { i.attributes["prism.spp"] = "2"; }));
+    CHECK(changed([](ExrImage& i) { std::get<1>(const_cast<ExrChannel*>(i.find("weight.0"))->values)[3] ^= 1; }));
+    CHECK(changed([](ExrImage& i) { std::get<1>(const_cast<ExrChannel*>(i.find("sum.G.2"))->values)[0] ^= 0x80000000u; }));
+    CHECK(changed([](ExrImage& i) { std::get<0>(const_cast<ExrChannel*>(i.find("B"))->values)[7] = -0.0f; }));
+    CHECK(changed([](ExrImage& i) { i.window.x0 = 0; }));
+    CHECK(changed([](ExrImage& i) { i.find("R") == nullptr ? void() : (void)(i.channels[0].name = "Q"); }));
+    // What is not the part's: another program's attribute, the digest itself.
+    CHECK_FALSE(changed([](ExrImage& i) { i.attributes["comments"] = "looked at in a viewer"; }));
+    CHECK_FALSE(changed([](ExrImage& i) { i.attributes["prism.part.digest"] = "0"; }));
 }
 
 TEST_CASE("EXR errors name the file and the reason, and a failed write leaves no file")

@@ -28,8 +28,11 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
+#include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -297,9 +300,71 @@ inline void check_exr_headers(const std::filesystem::path& path)
     return image;
 }
 
+namespace detail {
+
+/// 64-bit FNV-1a (Fowler, Noll and Vo; the IETF draft draft-eastlake-fnv): each byte
+/// XORed into the hash, then the hash multiplied by the FNV prime.
+struct Fnv1a {
+    std::uint64_t value = 0xcbf29ce484222325u; ///< the hash of what was added so far
+
+    /// Add `size` bytes at `data`.
+    void add(const void* data, std::size_t size) noexcept
+    {
+        for (const unsigned char* b = static_cast<const unsigned char*>(data); size-- > 0; ++b) value = (value ^ *b) * 0x100000001b3u;
+    }
+};
+
+} // namespace detail
+
+/// A digest of what an image holds: its size and data window, its "prism." string
+/// attributes but "prism.part.digest" itself, and each channel's name, type and values,
+/// in name order, hashed by 64-bit FNV-1a, as 16 hexadecimal digits. to_exr stores it with a part's exact
+/// sums, and prism_merge refuses a part whose contents no longer have it: a part whose
+/// metadata (its passes, seed or settings) or sums were changed after it was written, or
+/// that was damaged on its way. It is a checksum, not a signature: whoever edits a part
+/// on purpose can compute it again.
+[[nodiscard]] inline std::string exr_digest(const ExrImage& image)
+{
+    detail::Fnv1a hash;
+    const auto bytes = [&](const void* data, std::size_t size) { hash.add(data, size); };
+    const auto number = [&](std::uint64_t n) {
+        for (int i = 0; i < 8; ++i) { // little-endian, whatever the machine
+            const unsigned char b = static_cast<unsigned char>(n >> (8 * i));
+            bytes(&b, 1);
+        }
+    };
+    const auto text = [&](const std::string& s) {
+        number(s.size());
+        bytes(s.data(), s.size());
+    };
+    for (const int n : {image.width, image.height, image.window.x0, image.window.x1, image.window.y0, image.window.y1}) number(std::uint64_t(std::int64_t(n)));
+    for (const auto& [name, value] : image.attributes) // a std::map: in name order
+        if (name.starts_with("prism.") && name != "prism.part.digest") {
+            text(name);
+            text(value);
+        }
+    std::vector<const ExrChannel*> channels;
+    for (const ExrChannel& c : image.channels) channels.push_back(&c);
+    std::sort(channels.begin(), channels.end(), [](const ExrChannel* a, const ExrChannel* b) { return a->name < b->name; });
+    for (const ExrChannel* c : channels) {
+        text(c->name);
+        std::visit(
+            [&](const auto& values) {
+                number(std::is_same_v<typename std::decay_t<decltype(values)>::value_type, float> ? 2 : 0); // EXR's FLOAT and UINT
+                number(values.size());
+                for (const auto v : values) number(std::bit_cast<std::uint32_t>(v));
+            },
+            c->values);
+    }
+    char digits[17];
+    std::snprintf(digits, sizeof digits, "%016llx", static_cast<unsigned long long>(hash.value));
+    return digits;
+}
+
 /// An Accumulation as an EXR image over its window: each channel's mean (sum / weight,
 /// 0 where the weight is 0), and with `exact` the sums and weights themselves, bit for
-/// bit, for to_accumulation to add to other parts.
+/// bit, for to_accumulation to add to other parts, and their exr_digest as the attribute
+/// "prism.part.digest".
 [[nodiscard]] inline ExrImage to_exr(const Accumulation& sums, bool exact, std::map<std::string, std::string> attributes = {})
 {
     if (sums.overflowed()) detail::throw_invalid("to_exr: the Accumulation overflowed (a sum passed 2^63)");
@@ -332,6 +397,7 @@ inline void check_exr_headers(const std::filesystem::path& path)
             for (int x = w.x0; x < w.x1; ++x) bits.push_back(std::uint32_t(sums.weight(x, y) >> (32 * word)));
         image.channels.push_back({"weight." + std::to_string(word), std::move(bits)});
     }
+    image.attributes["prism.part.digest"] = exr_digest(image);
     return image;
 }
 
