@@ -6,8 +6,8 @@
 // attribute but the part's own "prism.part." ones); where two parts' windows overlap
 // their passes must not; and every pixel of the result must have all of the parts'
 // passes, once. Each part must hold what it was written with (its prism.part.digest),
-// and its sums the passes it says. The result is EXR again, with its exact sums, so results can be merged
-// further; --png also writes its picture.
+// and its sums the passes it says. The result is EXR again, with its exact sums and
+// digest, so results can be merged further; --png also writes its picture.
 #include <prism/io/exr.hpp>
 #include <prism/io/image.hpp>
 
