@@ -69,3 +69,37 @@ int reintersections(prism::Pcg32& rng, int count, Make&& make, int rays_per_shap
 }
 
 } // namespace test
+
+namespace test {
+
+/// Where a float shape and the same shape evaluated in double disagree on whether a ray
+/// crosses it at all: a hit the float shape loses, or one it reports where there is none.
+struct Disagreements {
+    int lost = 0;    ///< the double evaluation crosses, the float shape does not
+    int phantom = 0; ///< the float shape crosses, the double evaluation does not
+    int hits = 0;    ///< rays the double evaluation says cross
+};
+
+/// `rays` float rays from `distance` away, aimed at points within 1.2 `size` of `centre`,
+/// at `shape` (float) and its exact `twin` (double, built from the float shape's own
+/// numbers, so the same surface), each given the float ray's exact values.
+template <class F, class D>
+Disagreements far_disagreements(const F& shape, const D& twin, prism::Vec3<double> centre, double size, double distance, int rays, prism::Pcg32& rng)
+{
+    Disagreements out;
+    for (int i = 0; i < rays; ++i) {
+        const prism::Vec3<double> dir = random_direction<double>(rng);
+        const prism::Vec3<double> target = centre + 1.2 * size * random_direction<double>(rng) * std::cbrt(rng.uniform<double>());
+        const prism::Vec3<double> from = target - distance * dir;
+        prism::Ray<float> ray{{float(from.x), float(from.y), float(from.z)}, {float(dir.x), float(dir.y), float(dir.z)}};
+        asm volatile("" : : "r"(&ray) : "memory"); // see tests/ray_property.hpp's through_memory
+        const bool f = !shape.crossings(ray, {0.0f, prism::infinity<float>}).empty();
+        const bool d = !twin.crossings(prism::Ray<double>{prism::Vec3<double>(ray.origin), prism::Vec3<double>(ray.direction)}, {0.0, prism::infinity<double>}).empty();
+        out.hits += d;
+        out.lost += d && !f;
+        out.phantom += f && !d;
+    }
+    return out;
+}
+
+} // namespace test

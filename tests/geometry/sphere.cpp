@@ -152,3 +152,26 @@ TEST_CASE("a sphere's bounding sphere is its own (a hair larger); other shapes g
     CHECK(around.radius >= std::sqrt(3.0f));
     CHECK(prism::length(around.center - prism::Vec3<float>{1, 1, 1}) < 1e-5f);
 }
+
+// Issue 33: the float sphere took its closest approach at t = h / a in float, an ulp of
+// the distance off the true one, which |l|^2 counts squared: rays within 10^-6 of its
+// rim (in r^2 - |l|^2) were lost from 10^4.
+TEST_CASE("a float sphere seen from 10^4 loses no hit and gains none against its double evaluation")
+{
+    prism::Pcg32 rng(33u, 11u);
+    test::Disagreements total;
+    for (const double where : {0.0, 1e3, 1e4})
+        for (int shape = 0; shape < 100; ++shape) {
+            const Vec3<double> c = where * test::random_direction<double>(rng);
+            const Vec3<float> centre(c);
+            const auto radius = float(0.4 + 0.6 * rng.uniform<double>());
+            const Sphere<float> sphere(centre, radius);
+            const Sphere<double> twin{Vec3<double>(centre), double(radius)};
+            const test::Disagreements d = test::far_disagreements(sphere, twin, Vec3<double>(centre), 1.0, 1e4, 1000, rng);
+            total.lost += d.lost, total.phantom += d.phantom, total.hits += d.hits;
+        }
+    MESSAGE(total.hits, " hits of 300000 rays: lost ", total.lost, ", phantom ", total.phantom);
+    CHECK(total.hits > 100000);
+    CHECK(total.lost == 0);
+    CHECK(total.phantom == 0);
+}

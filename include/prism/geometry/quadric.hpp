@@ -237,25 +237,34 @@ public:
         // to the quadric's origin, m = o + t_m d, where the coefficients are of the
         // quadric's own size, and the surface points are found from there too.
         // (An origin within 8 of the quadric's own sizes of its origin stays: nothing to gain.)
-        T t_m = T(0), B_m = B, C_m = C;
-        Vec3<T> m = o;
+        // A float quadric finds m and decides the discriminant's sign in double, where a
+        // float's differences and products are exact: in float, m alone is off the line
+        // by an ulp of the distance, and F(m) by float's rounding of the quadric's own
+        // scale, so rays within 10^-3 (then 10^-7) of the rim were lost or gained.
+        using W = std::conditional_t<(sizeof(T) < sizeof(double)), double, T>;
+        T t_m = T(0);
         if (dot(o, o) > near2_) {
             t_m = -dot(o, d) / dot(d, d);
-            if (is_finite(t_m)) {
-                m = o + t_m * d;
-                const Vec3<T> g_m = half_gradient(m);
-                B_m = dot(d, g_m);
-                C_m = dot(m, g_m + linear()) + k_.j;
-            } else {
-                t_m = T(0);
-            }
+            if (!is_finite(t_m)) t_m = T(0);
         }
-        const T disc = difference_of_products(B_m, B_m, A, C_m);
+        const Vec3<W> d_w(d);
+        const Vec3<W> m_w = Vec3<W>(ray.origin) - Vec3<W>(origin_) + W(t_m) * d_w;
+        const Coefficients& k = k_;
+        const auto q3 = [&k](const Vec3<W>& v) {
+            return Vec3<W>(W(k.a) * v.x + W(k.b) * v.y + W(k.c) * v.z, W(k.b) * v.x + W(k.e) * v.y + W(k.f) * v.z,
+                           W(k.c) * v.x + W(k.f) * v.y + W(k.h) * v.z);
+        };
+        const Vec3<W> linear_w(W(k.d), W(k.g), W(k.i));
+        const Vec3<W> g_m = q3(m_w) + linear_w;
+        const W A_w = dot(d_w, q3(d_w)), B_w = dot(d_w, g_m), C_w = dot(m_w, g_m + linear_w) + W(k.j);
+        const W disc_w = difference_of_products(B_w, B_w, A_w, C_w);
+        const Vec3<T> m(m_w);
+        const T B_m = T(B_w), C_m = T(C_w), disc = T(disc_w);
 
         Crossings<T, 2> out;
         // No real crossing (disc < 0) or a tangent (disc = 0, a double root): F keeps one
         // sign along the line, that of A (of C when F is constant along it).
-        if (!(disc > T(0))) {
+        if (!(disc_w > W(0))) {
             out.inside_at_start = A != T(0) ? A < T(0) : C < T(0);
             return out;
         }

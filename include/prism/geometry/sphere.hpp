@@ -111,17 +111,18 @@ private:
         // Compute the discriminant without cancellation (Haines et al., "Precision
         // Improvements for Ray/Sphere Intersection", Ray Tracing Gems, 2019, ch. 7):
         // h^2 - a c = a (r^2 - |f - (h/a) d|^2), where the vector is the ray's closest
-        // approach to the center.
-        const Vec3<T> l = f - (h / a) * d;
-        const T ll2 = length_squared(l);
-        // A clear miss, decided before any square root: |l|^2 is computed to within a few
-        // ulps, so beyond r^2 (1 + 8 eps) the ray passes outside the sphere.
-        if (ll2 > radius_ * radius_ * (T(1) + T(8) * std::numeric_limits<T>::epsilon())) return {};
-        const T ll = prism::sqrt(ll2);
-        const T disc = a * (radius_ - ll) * (radius_ + ll);
-
+        // approach to the center. A float sphere finds it and decides the sign in double,
+        // where a float's differences and products are exact: in float, the product
+        // (h/a) d alone is off the line by an ulp of the distance (10^-3 at 10^4), and
+        // h/a off the closest approach by as much, which |l|^2 counts squared (10^-6);
+        // rays that near the rim were lost or gained.
+        using W = std::conditional_t<(sizeof(T) < sizeof(double)), double, T>;
+        const Vec3<W> f_w = Vec3<W>(ray.origin) - Vec3<W>(center_), d_w(d);
+        const Vec3<W> l = f_w - (dot(f_w, d_w) / dot(d_w, d_w)) * d_w;
+        const W r2 = W(radius_) * W(radius_), ll2 = length_squared(l);
         // A miss, or a tangent (a double root: the ray touches but does not cross).
-        if (!(disc > T(0))) return {};
+        if (!(ll2 < r2)) return {};
+        const T disc = T(W(a) * (r2 - ll2));
 
         // Stable roots: q = -(h + sign(h) sqrt(disc)), t = q / a and c / q.
         const T root = prism::sqrt(disc);
@@ -129,7 +130,7 @@ private:
         T t0 = q / a;
         T t1 = q != T(0) ? c / q : -t0;
         if (t0 > t1) std::swap(t0, t1);
-        return {true, t0, t1, l, root / a};
+        return {true, t0, t1, Vec3<T>(l), root / a};
     }
 
     [[nodiscard]] constexpr Crossing<T> crossing_at(const Vec3<T>& radial, T t, bool entering) const noexcept
