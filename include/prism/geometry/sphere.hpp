@@ -111,21 +111,55 @@ private:
         // Compute the discriminant without cancellation (Haines et al., "Precision
         // Improvements for Ray/Sphere Intersection", Ray Tracing Gems, 2019, ch. 7):
         // h^2 - a c = a (r^2 - |f - (h/a) d|^2), where the vector is the ray's closest
-        // approach to the center. A float sphere finds it and decides the sign in double,
-        // where a float's differences and products are exact: in float, the product
-        // (h/a) d alone is off the line by an ulp of the distance (10^-3 at 10^4), and
-        // h/a off the closest approach by as much, which |l|^2 counts squared (10^-6);
-        // rays that near the rim were lost or gained.
-        using W = std::conditional_t<(sizeof(T) < sizeof(double)), double, T>;
-        const Vec3<W> f_w = Vec3<W>(ray.origin) - Vec3<W>(center_), d_w(d);
-        const Vec3<W> l = f_w - (dot(f_w, d_w) / dot(d_w, d_w)) * d_w;
-        const W r2 = W(radius_) * W(radius_), ll2 = length_squared(l);
+        // approach to the center.
+        const Vec3<T> l = f - (h / a) * d;
+        const T ll2 = length_squared(l);
+        if constexpr (sizeof(T) < sizeof(double)) {
+            // In float, l is off the line by the rounding of f and of the product (h/a) d,
+            // and off the closest approach along it by the rounding of h/a, which |l|^2
+            // counts squared: each of order eps |f|, 10^-3 when the ray starts 10^4 away.
+            // With e bounding a component's error (16 eps |f|), |l|^2 is off by at most
+            // 2 |l| e + e^2 and its own rounding, 4 eps (|l|^2 + r^2): within
+            // 4 r e + e^2 + 20 eps r^2 where |l| <= 2r, and never enough to cross r^2
+            // beyond that while e <= r / 4. Where |l|^2 is that near r^2 (or the sphere
+            // that small for its distance), the side is decided in double.
+            constexpr T eps = std::numeric_limits<T>::epsilon();
+            // (|x| as max(x, -x), which compiles to maxss: x < 0 ? -x : x became a branch
+            // on the sign, mispredicted half the time, which cost a third of the test.)
+            const auto magnitude = [](T x) { return x > -x ? x : -x; };
+            const T e = T(16) * eps * max_component(Vec3<T>(magnitude(f.x), magnitude(f.y), magnitude(f.z)));
+            const T gap = ll2 - radius_ * radius_;
+            if ((e > T(0.25) * radius_) | !(magnitude(gap) > (T(4) * radius_ + e) * e + T(20) * eps * radius_ * radius_))
+                return roots_in_double(ray, a, h, c);
+        }
+        // A clear miss, decided before any square root: |l|^2 is computed to within a few
+        // ulps, so beyond r^2 (1 + 8 eps) the ray passes outside the sphere.
+        if (ll2 > radius_ * radius_ * (T(1) + T(8) * std::numeric_limits<T>::epsilon())) return {};
+        const T ll = prism::sqrt(ll2);
+        const T disc = a * (radius_ - ll) * (radius_ + ll);
+
         // A miss, or a tangent (a double root: the ray touches but does not cross).
-        if (!(ll2 < r2)) return {};
-        const T disc = T(W(a) * (r2 - ll2));
+        if (!(disc > T(0))) return {};
 
         // Stable roots: q = -(h + sign(h) sqrt(disc)), t = q / a and c / q.
         const T root = prism::sqrt(disc);
+        const T q = -(h >= T(0) ? h + root : h - root);
+        T t0 = q / a;
+        T t1 = q != T(0) ? c / q : -t0;
+        if (t0 > t1) std::swap(t0, t1);
+        return {true, t0, t1, l, root / a};
+    }
+
+    /// roots() for a float sphere whose rim the ray passes within float's rounding of:
+    /// the closest approach and the discriminant's sign in double, where a float's
+    /// differences and products are exact; the roots as roots() takes them.
+    [[gnu::noinline]] Roots roots_in_double(const Ray<T>& ray, T a, T h, T c) const noexcept
+    {
+        const Vec3<double> f = Vec3<double>(ray.origin) - Vec3<double>(center_), d(ray.direction);
+        const Vec3<double> l = f - (dot(f, d) / dot(d, d)) * d;
+        const double ll2 = length_squared(l), r2 = double(radius_) * double(radius_);
+        if (!(ll2 < r2)) return {};
+        const T root = prism::sqrt(T(double(a) * (r2 - ll2)));
         const T q = -(h >= T(0) ? h + root : h - root);
         T t0 = q / a;
         T t1 = q != T(0) ? c / q : -t0;
