@@ -18,6 +18,8 @@
 #include <prism/core/aabb.hpp>
 #include <prism/geometry/shape.hpp>
 
+#include <limits>
+#include <type_traits>
 #include <utility>
 
 namespace prism {
@@ -74,10 +76,31 @@ public:
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        Crossings<T, max_crossings> out;
         // A ray that cannot come near the bounds cannot cross the result.
-        if (bounded_ && !bounds_.reached_after(ray, range.min)) return out;
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return {};
+        // A ray from far away meets the children at large t, where float's spacing may
+        // exceed the gaps between their crossings (a shape of 10^-3 seen from 10^3 is 16
+        // steps of t deep), so their order, and the result, would be lost: a sliver where
+        // a ball's exit and a hole's fall within a step. So the children are asked along
+        // the same line from a point near the node, t0 along it, and the crossings moved
+        // back by t0; the range is applied to them afterwards, in the ray's own t.
+        if (bounded_) {
+            const Vec3<T> centre = T(0.5) * (bounds_.lo + bounds_.hi), extent = bounds_.hi - bounds_.lo;
+            const Vec3<T> to_centre = centre - ray.origin;
+            if (length_squared(to_centre) > T(64) * length_squared(extent)) {
+                const T t0 = dot(to_centre, ray.direction) / dot(ray.direction, ray.direction);
+                if (is_finite(t0)) return moved_back<Surface>(ray, range, t0);
+            }
+        }
+        return merged<Surface>(ray, range);
+    }
 
+private:
+    /// The children's crossings merged (Roth 1982), along `ray` within `range`.
+    template <bool Surface>
+    [[nodiscard]] constexpr Crossings<T, max_crossings> merged(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        Crossings<T, max_crossings> out;
         const auto ca = a_.template crossings<Surface>(ray, range);
         const auto cb = b_.template crossings<Surface>(ray, range);
         bool in_a = ca.inside_at_start, in_b = cb.inside_at_start;
@@ -104,7 +127,31 @@ public:
         return out;
     }
 
-private:
+    /// merged() along the same line from o + t0 d (each coordinate rounded once), its
+    /// crossings' t moved back by t0 and only those inside `range` kept.
+    template <bool Surface>
+    [[nodiscard]] constexpr Crossings<T, max_crossings> moved_back(const Ray<T>& ray, Interval<T> range, T t0) const noexcept
+    {
+        using W = std::conditional_t<(sizeof(T) < sizeof(double)), double, T>;
+        Ray<T> near = ray;
+        for (int i = 0; i < 3; ++i) near.origin[i] = T(W(ray.origin[i]) + W(t0) * W(ray.direction[i]));
+        // Every crossing whose t, moved back and rounded, can lie in `range`: t - t0
+        // rounds by half a step of the larger of the two, so a margin of two.
+        const auto widened = [t0](T end, T sign) {
+            const T margin = T(2) * std::numeric_limits<T>::epsilon() * ((end < T(0) ? -end : end) + (t0 < T(0) ? -t0 : t0));
+            return (end - t0) + sign * margin;
+        };
+        const auto inner = merged<Surface>(near, {widened(range.min, T(-1)), widened(range.max, T(1))});
+        Crossings<T, max_crossings> out;
+        out.inside_at_start = inner.inside_at_start;
+        for (Crossing<T> c : inner) {
+            c.t = c.t + t0;
+            if (c.t <= range.min) out.inside_at_start = c.entering;
+            else if (c.t < range.max) out.push_back(c);
+        }
+        return out;
+    }
+
     A a_;
     B b_;
     Aabb<T> bounds_;
