@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <prism/io/exr.hpp>
 
+#include "../support.hpp"
+
 #include <doctest/doctest.h>
 
 #include <array>
@@ -13,6 +15,7 @@
 #include <limits>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <sys/stat.h>
 
@@ -207,4 +210,28 @@ TEST_CASE("an EXR whose data window claims more pixels than its bytes can hold i
     bytes += std::string(262144, '\0');
     std::ofstream(small, std::ios::binary | std::ios::trunc) << bytes;
     CHECK_THROWS_WITH_AS((void)read_exr(small), doctest::Contains("its data window [0, 65535] x [0, 32767] of 3 channels needs 24.0 GiB"), std::runtime_error);
+}
+
+// Issue 33: OpenEXR out of memory came out as "cannot read image '...': std::bad_alloc",
+// a std::runtime_error. It is an allocation_error that says so.
+TEST_CASE("read_exr out of memory names its file")
+{
+    if (test::sanitized) return; // a sanitizer's shadow memory needs the address space
+    // 8192 x 4096 zeros (128 MiB as floats), written from one row (a y stride of 0).
+    const auto path = scratch("zeros.exr");
+    {
+        Imf::Header header(8192, 4096);
+        header.compression() = Imf::ZIP_COMPRESSION;
+        header.channels().insert("R", Imf::Channel(Imf::FLOAT));
+        Imf::OutputFile file(path.c_str(), header);
+        std::vector<float> row(8192, 0.0f);
+        Imf::FrameBuffer frame;
+        frame.insert("R", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(row.data()), sizeof(float), 0));
+        file.setFrameBuffer(frame);
+        file.writePixels(4096);
+    }
+    const std::string thrown = test::thrown_with_memory_short(std::size_t(16) << 20, [&] { (void)read_exr(path); });
+    MESSAGE(thrown);
+    CHECK(thrown.starts_with("allocation_error: prism: cannot read image '" + path.string() + "': out of memory while reading it (a file of"));
+    std::filesystem::remove(path);
 }

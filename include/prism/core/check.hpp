@@ -122,11 +122,14 @@ constexpr void require_nonzero(std::string_view name, const Vec3<T>& value)
     return 0;
 }
 
-/// "12.0 GiB": a byte count for messages.
+/// "12.0 GiB", "40.5 MiB", "812 bytes": a byte count for messages.
 [[nodiscard]] inline std::string describe_bytes(double bytes)
 {
     char text[64];
-    std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+    if (bytes >= 1024.0 * 1024.0 * 1024.0) std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+    else if (bytes >= 1024.0 * 1024.0) std::snprintf(text, sizeof text, "%.1f MiB", bytes / (1024.0 * 1024.0));
+    else if (bytes >= 1024.0) std::snprintf(text, sizeof text, "%.1f KiB", bytes / 1024.0);
+    else std::snprintf(text, sizeof text, "%.0f bytes", bytes);
     return text;
 }
 

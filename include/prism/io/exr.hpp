@@ -37,6 +37,7 @@
 #include <exception>
 #include <filesystem>
 #include <map>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -283,6 +284,8 @@ inline void check_exr_headers(const std::filesystem::path& path)
         file.setFrameBuffer(frame);
         file.readPixels(data.min.y, data.max.y);
         return image;
+    } catch (const std::bad_alloc&) {
+        throw detail::out_of_memory(path, "image");
     } catch (const std::exception& e) {
         throw std::runtime_error("prism: cannot read image '" + path.string() + "': " + e.what());
     }

@@ -65,6 +65,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -185,7 +186,7 @@ inline void write_image(const Film& film, const std::filesystem::path& path)
 /// that claims more pixels than its compressed bytes can hold is refused. Every chunk must
 /// fit in the file and pass its CRC, and nothing may follow IEND.
 [[nodiscard]] inline Film read_png(const std::filesystem::path& path, ReadLimits limits = {})
-{
+try {
     detail::InputFile file(path, "image", limits);
     // The signature and the header first, so that what is no PNG (/dev/zero) is refused
     // before the rest is read.
@@ -229,6 +230,10 @@ inline void write_image(const Film& film, const std::filesystem::path& path)
             film.set(x, y, Rgb<float>{linear(p[0]), linear(p[1]), linear(p[2])});
         }
     return film;
+} catch (const allocation_error&) {
+    throw;
+} catch (const std::bad_alloc&) {
+    throw detail::out_of_memory(path, "image");
 }
 
 /// A PFM file's pixels as they are stored: any float, negative, NaN and infinite included
@@ -273,7 +278,7 @@ struct PfmImage {
 /// before anything is allocated, and a stream's (a FIFO's) are taken as they arrive; a file
 /// with bytes past its pixels is refused.
 [[nodiscard]] inline PfmImage read_pfm(const std::filesystem::path& path, ReadLimits limits = {})
-{
+try {
     detail::InputFile file(path, "image", limits);
     PfmImage image;
     const int p = file.get(), f = file.get();
@@ -326,6 +331,10 @@ struct PfmImage {
             std::memcpy(&image.values[y * row + i], b, 4);
         }
     return image;
+} catch (const allocation_error&) {
+    throw;
+} catch (const std::bad_alloc&) {
+    throw detail::out_of_memory(path, "image");
 }
 
 } // namespace prism

@@ -166,6 +166,16 @@ private:
     std::uint64_t position_ = 0;
 };
 
+/// The error for a reader that ran out of memory: its file and what it is, instead of a
+/// bare std::bad_alloc (an allocation_error thrown with its own numbers passes as it is).
+[[nodiscard]] inline allocation_error out_of_memory(const std::filesystem::path& path, const std::string& what)
+{
+    std::error_code error;
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    return allocation_error("prism: cannot read " + what + " '" + path.string() + "': out of memory while reading it" +
+                            (error ? std::string() : " (a file of " + describe_bytes(double(size)) + ")"));
+}
+
 } // namespace detail
 
 } // namespace prism

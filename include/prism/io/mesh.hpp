@@ -32,6 +32,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <new>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -146,7 +147,7 @@ private:
 /// vertex and triangle. Materials are not read, so `mtllib` names no file that is opened.
 template <Scalar T = float>
 [[nodiscard]] MeshBuffers<T> load_obj(const std::filesystem::path& path, ReadLimits limits = {})
-{
+try {
     detail::InputFile file(path, "mesh", limits);
     detail::ObjChecker checker(file);
     std::string text;
@@ -215,6 +216,10 @@ template <Scalar T = float>
     }
     if (out.triangles.empty()) fail("it has no faces");
     return out;
+} catch (const allocation_error&) {
+    throw;
+} catch (const std::bad_alloc&) {
+    throw detail::out_of_memory(path, "mesh");
 }
 
 namespace detail {
@@ -347,7 +352,7 @@ inline std::uint64_t ply_count(InputFile& file, std::istringstream& words, const
 /// have 3 vertices or more, and nothing may follow the last element.
 template <Scalar T = float>
 [[nodiscard]] MeshBuffers<T> load_ply(const std::filesystem::path& path, ReadLimits limits = {})
-{
+try {
     detail::InputFile file(path, "mesh", limits);
     const auto fail = [&](const std::string& reason) { file.fail(reason); };
     const auto header_line = [&]() {
@@ -479,6 +484,10 @@ template <Scalar T = float>
     if (!reader.at_end()) fail("bytes follow its last element");
     if (out.triangles.empty()) fail("it has no faces");
     return out;
+} catch (const allocation_error&) {
+    throw;
+} catch (const std::bad_alloc&) {
+    throw detail::out_of_memory(path, "mesh");
 }
 
 /// load_obj or load_ply, by the file's extension (.obj, .ply, in any case).
@@ -489,7 +498,7 @@ template <Scalar T = float>
     for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
     if (extension == ".obj") return load_obj<T>(path);
     if (extension == ".ply") return load_ply<T>(path);
-    throw std::runtime_error("cannot read mesh '" + path.string() + "': its extension '" + path.extension().string() + "' is neither .obj nor .ply");
+    throw std::runtime_error("prism: cannot read mesh '" + path.string() + "': its extension '" + path.extension().string() + "' is neither .obj nor .ply");
 }
 
 } // namespace prism
