@@ -104,70 +104,56 @@ Disagreements far_disagreements(const F& shape, const D& twin, prism::Vec3<doubl
 
 } // namespace test
 
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdio>
-#include <fstream>
+#include <exception>
+#include <new>
 #include <string>
 
 namespace test {
 
-/// Whether this build runs under a sanitizer, whose shadow memory a limit on the address
-/// space would break.
-constexpr bool sanitized =
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-    true;
+#define PRISM_TEST_SANITIZED 1
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
-    true;
-#else
-    false;
+#define PRISM_TEST_SANITIZED 1
 #endif
-#else
-    false;
+#endif
+#ifndef PRISM_TEST_SANITIZED
+#define PRISM_TEST_SANITIZED 0
 #endif
 
-/// Run `reader` in a child process whose address space may grow by only `headroom` bytes,
-/// and return what it threw: "bad_alloc: <what>" for a std::bad_alloc of any kind,
-/// "allocation_error: <what>" for prism's, "other: <what>" for anything else, and
-/// "returned" if it returned.
+/// Whether this build runs under a sanitizer, which keeps its own operator new (so
+/// tests/main.cpp does not replace it, and allocation_budget has no effect).
+constexpr bool sanitized = PRISM_TEST_SANITIZED;
+
+/// Bytes that operator new may still hand out on this thread before it throws
+/// std::bad_alloc, or -1 for no limit (tests/main.cpp replaces operator new to count; a
+/// refusal leaves 1 MiB for what follows, as a machine out of memory has for a message).
+inline thread_local long long allocation_budget = -1;
+
+/// Run `reader` with only `budget` bytes to allocate, and say what it threw:
+/// "allocation_error: <what>" for prism's, "bad_alloc: <what>" for a bare one, "other:
+/// <what>" for anything else, "returned" if it returned.
 template <class F>
-std::string thrown_with_memory_short(std::size_t headroom, F&& reader)
+std::string thrown_with_memory_short(std::size_t budget, F&& reader)
 {
-    int channel[2];
-    if (::pipe(channel) != 0) return "pipe failed";
-    std::fflush(nullptr);
-    const pid_t child = fork();
-    if (child == 0) {
-        close(channel[0]);
-        std::size_t pages = 0;
-        std::ifstream("/proc/self/statm") >> pages;
-        const rlimit limit{pages * std::size_t(sysconf(_SC_PAGESIZE)) + headroom, RLIM_INFINITY};
-        std::string message = "returned";
-        if (setrlimit(RLIMIT_AS, &limit) != 0) message = "setrlimit failed";
-        else
-            try {
-                reader();
-            } catch (const prism::allocation_error& e) {
-                message = std::string("allocation_error: ") + e.what();
-            } catch (const std::bad_alloc& e) {
-                message = std::string("bad_alloc: ") + e.what();
-            } catch (const std::exception& e) {
-                message = std::string("other: ") + e.what();
-            }
-        [[maybe_unused]] const auto written = ::write(channel[1], message.data(), message.size());
-        _exit(0);
+    std::exception_ptr thrown;
+    allocation_budget = static_cast<long long>(budget);
+    try {
+        reader();
+    } catch (...) {
+        thrown = std::current_exception();
     }
-    close(channel[1]);
-    std::string message;
-    char buffer[512];
-    for (ssize_t n; (n = ::read(channel[0], buffer, sizeof buffer)) > 0;) message.append(buffer, std::size_t(n));
-    close(channel[0]);
-    int status = 0;
-    waitpid(child, &status, 0);
-    return message;
+    allocation_budget = -1; // before anything here allocates
+    if (!thrown) return "returned";
+    try {
+        std::rethrow_exception(thrown);
+    } catch (const prism::allocation_error& e) {
+        return std::string("allocation_error: ") + e.what();
+    } catch (const std::bad_alloc& e) {
+        return std::string("bad_alloc: ") + e.what();
+    } catch (const std::exception& e) {
+        return std::string("other: ") + e.what();
+    }
 }
 
 } // namespace test

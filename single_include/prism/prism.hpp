@@ -864,11 +864,14 @@ constexpr void require_nonzero(std::string_view name, const Vec3<T>& value)
     return 0;
 }
 
-/// "12.0 GiB": a byte count for messages.
+/// "12.0 GiB", "40.5 MiB", "812 bytes": a byte count for messages.
 [[nodiscard]] inline std::string describe_bytes(double bytes)
 {
     char text[64];
-    std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+    if (bytes >= 1024.0 * 1024.0 * 1024.0) std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+    else if (bytes >= 1024.0 * 1024.0) std::snprintf(text, sizeof text, "%.1f MiB", bytes / (1024.0 * 1024.0));
+    else if (bytes >= 1024.0) std::snprintf(text, sizeof text, "%.1f KiB", bytes / 1024.0);
+    else std::snprintf(text, sizeof text, "%.0f bytes", bytes);
     return text;
 }
 
@@ -2705,6 +2708,8 @@ template <Shape S>
 // sliver no thicker than their error bounds.
 
 
+#include <limits>
+#include <type_traits>
 #include <utility>
 
 namespace prism {
@@ -2761,10 +2766,31 @@ public:
     template <bool Surface = true>
     [[nodiscard]] constexpr Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
     {
-        Crossings<T, max_crossings> out;
         // A ray that cannot come near the bounds cannot cross the result.
-        if (bounded_ && !bounds_.reached_after(ray, range.min)) return out;
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return {};
+        // A ray from far away meets the children at large t, where float's spacing may
+        // exceed the gaps between their crossings (a shape of 10^-3 seen from 10^3 is 16
+        // steps of t deep), so their order, and the result, would be lost: a sliver where
+        // a ball's exit and a hole's fall within a step. So the children are asked along
+        // the same line from a point near the node, t0 along it, and the crossings moved
+        // back by t0; the range is applied to them afterwards, in the ray's own t.
+        if (bounded_) {
+            const Vec3<T> centre = T(0.5) * (bounds_.lo + bounds_.hi), extent = bounds_.hi - bounds_.lo;
+            const Vec3<T> to_centre = centre - ray.origin;
+            if (length_squared(to_centre) > T(64) * length_squared(extent)) {
+                const T t0 = dot(to_centre, ray.direction) / dot(ray.direction, ray.direction);
+                if (is_finite(t0)) return moved_back<Surface>(ray, range, t0);
+            }
+        }
+        return merged<Surface>(ray, range);
+    }
 
+private:
+    /// The children's crossings merged (Roth 1982), along `ray` within `range`.
+    template <bool Surface>
+    [[nodiscard]] constexpr Crossings<T, max_crossings> merged(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        Crossings<T, max_crossings> out;
         const auto ca = a_.template crossings<Surface>(ray, range);
         const auto cb = b_.template crossings<Surface>(ray, range);
         bool in_a = ca.inside_at_start, in_b = cb.inside_at_start;
@@ -2791,7 +2817,31 @@ public:
         return out;
     }
 
-private:
+    /// merged() along the same line from o + t0 d (each coordinate rounded once), its
+    /// crossings' t moved back by t0 and only those inside `range` kept.
+    template <bool Surface>
+    [[nodiscard]] constexpr Crossings<T, max_crossings> moved_back(const Ray<T>& ray, Interval<T> range, T t0) const noexcept
+    {
+        using W = std::conditional_t<(sizeof(T) < sizeof(double)), double, T>;
+        Ray<T> near = ray;
+        for (int i = 0; i < 3; ++i) near.origin[i] = T(W(ray.origin[i]) + W(t0) * W(ray.direction[i]));
+        // Every crossing whose t, moved back and rounded, can lie in `range`: t - t0
+        // rounds by half a step of the larger of the two, so a margin of two.
+        const auto widened = [t0](T end, T sign) {
+            const T margin = T(2) * std::numeric_limits<T>::epsilon() * ((end < T(0) ? -end : end) + (t0 < T(0) ? -t0 : t0));
+            return (end - t0) + sign * margin;
+        };
+        const auto inner = merged<Surface>(near, {widened(range.min, T(-1)), widened(range.max, T(1))});
+        Crossings<T, max_crossings> out;
+        out.inside_at_start = inner.inside_at_start;
+        for (Crossing<T> c : inner) {
+            c.t = c.t + t0;
+            if (c.t <= range.min) out.inside_at_start = c.entering;
+            else if (c.t < range.max) out.push_back(c);
+        }
+        return out;
+    }
+
     A a_;
     B b_;
     Aabb<T> bounds_;
@@ -4205,25 +4255,34 @@ public:
         // to the quadric's origin, m = o + t_m d, where the coefficients are of the
         // quadric's own size, and the surface points are found from there too.
         // (An origin within 8 of the quadric's own sizes of its origin stays: nothing to gain.)
-        T t_m = T(0), B_m = B, C_m = C;
-        Vec3<T> m = o;
+        // A float quadric finds m and decides the discriminant's sign in double, where a
+        // float's differences and products are exact: in float, m alone is off the line
+        // by an ulp of the distance, and F(m) by float's rounding of the quadric's own
+        // scale, so rays within 10^-3 (then 10^-7) of the rim were lost or gained.
+        using W = std::conditional_t<(sizeof(T) < sizeof(double)), double, T>;
+        T t_m = T(0);
         if (dot(o, o) > near2_) {
             t_m = -dot(o, d) / dot(d, d);
-            if (is_finite(t_m)) {
-                m = o + t_m * d;
-                const Vec3<T> g_m = half_gradient(m);
-                B_m = dot(d, g_m);
-                C_m = dot(m, g_m + linear()) + k_.j;
-            } else {
-                t_m = T(0);
-            }
+            if (!is_finite(t_m)) t_m = T(0);
         }
-        const T disc = difference_of_products(B_m, B_m, A, C_m);
+        const Vec3<W> d_w(d);
+        const Vec3<W> m_w = Vec3<W>(ray.origin) - Vec3<W>(origin_) + W(t_m) * d_w;
+        const Coefficients& k = k_;
+        const auto q3 = [&k](const Vec3<W>& v) {
+            return Vec3<W>(W(k.a) * v.x + W(k.b) * v.y + W(k.c) * v.z, W(k.b) * v.x + W(k.e) * v.y + W(k.f) * v.z,
+                           W(k.c) * v.x + W(k.f) * v.y + W(k.h) * v.z);
+        };
+        const Vec3<W> linear_w(W(k.d), W(k.g), W(k.i));
+        const Vec3<W> g_m = q3(m_w) + linear_w;
+        const W A_w = dot(d_w, q3(d_w)), B_w = dot(d_w, g_m), C_w = dot(m_w, g_m + linear_w) + W(k.j);
+        const W disc_w = difference_of_products(B_w, B_w, A_w, C_w);
+        const Vec3<T> m(m_w);
+        const T B_m = T(B_w), C_m = T(C_w), disc = T(disc_w);
 
         Crossings<T, 2> out;
         // No real crossing (disc < 0) or a tangent (disc = 0, a double root): F keeps one
         // sign along the line, that of A (of C when F is constant along it).
-        if (!(disc > T(0))) {
+        if (!(disc_w > W(0))) {
             out.inside_at_start = A != T(0) ? A < T(0) : C < T(0);
             return out;
         }
@@ -4527,6 +4586,24 @@ private:
         // approach to the center.
         const Vec3<T> l = f - (h / a) * d;
         const T ll2 = length_squared(l);
+        if constexpr (sizeof(T) < sizeof(double)) {
+            // In float, l is off the line by the rounding of f and of the product (h/a) d,
+            // and off the closest approach along it by the rounding of h/a, which |l|^2
+            // counts squared: each of order eps |f|, 10^-3 when the ray starts 10^4 away.
+            // With e bounding a component's error (16 eps |f|), |l|^2 is off by at most
+            // 2 |l| e + e^2 and its own rounding, 4 eps (|l|^2 + r^2): within
+            // 4 r e + e^2 + 20 eps r^2 where |l| <= 2r, and never enough to cross r^2
+            // beyond that while e <= r / 4. Where |l|^2 is that near r^2 (or the sphere
+            // that small for its distance), the side is decided in double.
+            constexpr T eps = std::numeric_limits<T>::epsilon();
+            // (|x| as max(x, -x), which compiles to maxss: x < 0 ? -x : x became a branch
+            // on the sign, mispredicted half the time, which cost a third of the test.)
+            const auto magnitude = [](T x) { return x > -x ? x : -x; };
+            const T e = T(16) * eps * max_component(Vec3<T>(magnitude(f.x), magnitude(f.y), magnitude(f.z)));
+            const T gap = ll2 - radius_ * radius_;
+            if ((e > T(0.25) * radius_) | !(magnitude(gap) > (T(4) * radius_ + e) * e + T(20) * eps * radius_ * radius_))
+                return roots_in_double(ray, a, h, c);
+        }
         // A clear miss, decided before any square root: |l|^2 is computed to within a few
         // ulps, so beyond r^2 (1 + 8 eps) the ray passes outside the sphere.
         if (ll2 > radius_ * radius_ * (T(1) + T(8) * std::numeric_limits<T>::epsilon())) return {};
@@ -4543,6 +4620,23 @@ private:
         T t1 = q != T(0) ? c / q : -t0;
         if (t0 > t1) std::swap(t0, t1);
         return {true, t0, t1, l, root / a};
+    }
+
+    /// roots() for a float sphere whose rim the ray passes within float's rounding of:
+    /// the closest approach and the discriminant's sign in double, where a float's
+    /// differences and products are exact; the roots as roots() takes them.
+    [[gnu::noinline]] Roots roots_in_double(const Ray<T>& ray, T a, T h, T c) const noexcept
+    {
+        const Vec3<double> f = Vec3<double>(ray.origin) - Vec3<double>(center_), d(ray.direction);
+        const Vec3<double> l = f - (dot(f, d) / dot(d, d)) * d;
+        const double ll2 = length_squared(l), r2 = double(radius_) * double(radius_);
+        if (!(ll2 < r2)) return {};
+        const T root = prism::sqrt(T(double(a) * (r2 - ll2)));
+        const T q = -(h >= T(0) ? h + root : h - root);
+        T t0 = q / a;
+        T t1 = q != T(0) ? c / q : -t0;
+        if (t0 > t1) std::swap(t0, t1);
+        return {true, t0, t1, Vec3<T>(l), root / a};
     }
 
     [[nodiscard]] constexpr Crossing<T> crossing_at(const Vec3<T>& radial, T t, bool entering) const noexcept
@@ -12274,6 +12368,16 @@ private:
     std::uint64_t position_ = 0;
 };
 
+/// The error for a reader that ran out of memory: its file and what it is, instead of a
+/// bare std::bad_alloc (an allocation_error thrown with its own numbers passes as it is).
+[[nodiscard]] inline allocation_error out_of_memory(const std::filesystem::path& path, const std::string& what)
+{
+    std::error_code error;
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    return allocation_error("prism: cannot read " + what + " '" + path.string() + "': out of memory while reading it" +
+                            (error ? std::string() : " (a file of " + describe_bytes(double(size)) + ")"));
+}
+
 } // namespace detail
 
 } // namespace prism
@@ -12508,6 +12612,7 @@ private:
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -12628,7 +12733,7 @@ inline void write_image(const Film& film, const std::filesystem::path& path)
 /// that claims more pixels than its compressed bytes can hold is refused. Every chunk must
 /// fit in the file and pass its CRC, and nothing may follow IEND.
 [[nodiscard]] inline Film read_png(const std::filesystem::path& path, ReadLimits limits = {})
-{
+try {
     detail::InputFile file(path, "image", limits);
     // The signature and the header first, so that what is no PNG (/dev/zero) is refused
     // before the rest is read.
@@ -12672,6 +12777,10 @@ inline void write_image(const Film& film, const std::filesystem::path& path)
             film.set(x, y, Rgb<float>{linear(p[0]), linear(p[1]), linear(p[2])});
         }
     return film;
+} catch (const allocation_error&) {
+    throw;
+} catch (const std::bad_alloc&) {
+    throw detail::out_of_memory(path, "image");
 }
 
 /// A PFM file's pixels as they are stored: any float, negative, NaN and infinite included
@@ -12716,7 +12825,7 @@ struct PfmImage {
 /// before anything is allocated, and a stream's (a FIFO's) are taken as they arrive; a file
 /// with bytes past its pixels is refused.
 [[nodiscard]] inline PfmImage read_pfm(const std::filesystem::path& path, ReadLimits limits = {})
-{
+try {
     detail::InputFile file(path, "image", limits);
     PfmImage image;
     const int p = file.get(), f = file.get();
@@ -12769,6 +12878,10 @@ struct PfmImage {
             std::memcpy(&image.values[y * row + i], b, 4);
         }
     return image;
+} catch (const allocation_error&) {
+    throw;
+} catch (const std::bad_alloc&) {
+    throw detail::out_of_memory(path, "image");
 }
 
 } // namespace prism
