@@ -9,6 +9,11 @@
 #include <new>
 
 #if !PRISM_TEST_SANITIZED
+#if defined(__GNUC__) && !defined(__clang__)
+// GCC inlines these into code whose memory it saw come from operator new, and calls free
+// on it a mismatch: it is this operator new's own memory.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
 // operator new, counting against test::allocation_budget where a test sets one (a reader
 // out of memory, without running out of it). Sanitizers keep their own.
 void* operator new(std::size_t size)
