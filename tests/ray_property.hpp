@@ -9,6 +9,8 @@
 
 #include <prism/prism.hpp>
 
+#include "through_memory.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -223,13 +225,6 @@ inline const char* kind_name(RayKind kind)
     return names[static_cast<int>(kind)];
 }
 
-/// Make the compiler read `value` back from memory (a value it cannot see through).
-template <class V>
-void through_memory(V& value)
-{
-    asm volatile("" : : "r"(&value) : "memory");
-}
-
 /// Fire `rays` rays of every kind at the shape of Case placed by `placement`, from
 /// origins `distance` away from it. Float shapes are also compared with their double twin.
 template <class Case, prism::Scalar T>
@@ -279,11 +274,8 @@ Counts fire(const Placement& placement, double distance, std::uint64_t seed, std
             ray.origin = cast<T>(target) - T(distance) * ray.direction / length(ray.direction);
         }
         if (kind == RayKind::long_or_short) ray.direction *= std::ldexp(T(1), static_cast<int>(rng.uniform<double>() * 61) - 30);
-        // GCC 12.2's SLP vectorizer (-O2) was seen to hand a double copy of this ray the
-        // unrounded doubles it was cast from (the float ray's bits differed from its
-        // double twin's ray in 12 of 12 disagreements studied); through memory the twin
-        // sees the float ray's own bits.
-        through_memory(ray);
+        test::through_memory(ray); // the twin sees the float ray's own bits
+
         if (length_squared(Vec3<double>(ray.direction)) == 0) continue;
         ++counts.rays;
 

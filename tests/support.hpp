@@ -6,6 +6,8 @@
 
 #include <doctest/doctest.h>
 
+#include "through_memory.hpp"
+
 namespace test {
 
 /// Uniform direction on the unit sphere (z = 1 - 2u, phi = 2 pi v).
@@ -92,7 +94,7 @@ Disagreements far_disagreements(const F& shape, const D& twin, prism::Vec3<doubl
         const prism::Vec3<double> target = centre + 1.2 * size * random_direction<double>(rng) * std::cbrt(rng.uniform<double>());
         const prism::Vec3<double> from = target - distance * dir;
         prism::Ray<float> ray{{float(from.x), float(from.y), float(from.z)}, {float(dir.x), float(dir.y), float(dir.z)}};
-        asm volatile("" : : "r"(&ray) : "memory"); // see tests/ray_property.hpp's through_memory
+        through_memory(ray);
         const bool f = !shape.crossings(ray, {0.0f, prism::infinity<float>}).empty();
         const bool d = !twin.crossings(prism::Ray<double>{prism::Vec3<double>(ray.origin), prism::Vec3<double>(ray.direction)}, {0.0, prism::infinity<double>}).empty();
         out.hits += d;
