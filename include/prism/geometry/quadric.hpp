@@ -408,8 +408,10 @@ private:
             singular = !is_finite(normal) || !is_finite(error);
         }
         if (singular) {
-            // A singular point (a cone's apex): no normal; face the ray.
-            const Vec3<T> facing = normalize(d);
+            // A singular point (a cone's apex): no normal; face the ray. (Over its largest
+            // component first: a direction of 1e-22 has a denormal length squared, and
+            // normalised as it is came out 1 % short.)
+            const Vec3<T> facing = normalize(d / max_component(abs(d)));
             normal = entering ? -facing : facing;
             error = gamma<T>(4) * abs(point);
         }
