@@ -4327,7 +4327,11 @@ public:
                 // With one root (A = 0) only C_m / q_m is finite.
                 T s_r = n == 1 ? C_m / q_m : s[r];
                 if (!is_finite(s_r)) s_r = roots[r].t - t_m;
-                out.push_back(surface_at(m + s_r * d, d, roots[r].t, roots[r].entering));
+                // (From m, unless that overflows: s of a near-asymptotic direction can be
+                // far larger than t, whose point float holds.)
+                Vec3<T> local = m + s_r * d;
+                if (!is_finite(local)) local = o + roots[r].t * d;
+                out.push_back(surface_at(local, d, roots[r].t, roots[r].entering));
             }
         }
         return out;
