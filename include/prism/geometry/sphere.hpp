@@ -149,7 +149,13 @@ private:
         // A miss, or a tangent (a double root: the ray touches but does not cross).
         if (!(disc > T(0))) return {};
 
-        // Stable roots: q = -(h + sign(h) sqrt(disc)), t = q / a and c / q.
+        return solved(disc, a, h, c, l);
+    }
+
+    /// The roots where the ray crosses (disc > 0, or a float's double decision), stable:
+    /// q = -(h + sign(h) sqrt(disc)), t = q / a and c / q.
+    [[nodiscard]] static constexpr Roots solved(T disc, T a, T h, T c, const Vec3<T>& l) noexcept
+    {
         const T root = prism::sqrt(disc);
         const T q = -(h >= T(0) ? h + root : h - root);
         T t0 = q / a;
@@ -167,12 +173,7 @@ private:
         const Vec3<double> l = f - (dot(f, d) / dot(d, d)) * d;
         const double ll2 = length_squared(l), r2 = double(radius_) * double(radius_);
         if (!(ll2 < r2)) return {};
-        const T root = prism::sqrt(T(double(a) * (r2 - ll2)));
-        const T q = -(h >= T(0) ? h + root : h - root);
-        T t0 = q / a;
-        T t1 = q != T(0) ? c / q : -t0;
-        if (t0 > t1) std::swap(t0, t1);
-        return {true, t0, t1, Vec3<T>(l), root / a};
+        return solved(T(double(a) * (r2 - ll2)), a, h, c, Vec3<T>(l));
     }
 
     [[nodiscard]] constexpr Crossing<T> crossing_at(const Vec3<T>& radial, T t, bool entering) const noexcept
