@@ -287,3 +287,60 @@ TEST_CASE("a float CSG node seen from 10^3 keeps its children's crossings in ord
     CHECK(wrong_side == 0);
     CHECK(short_chords < 1600);
 }
+
+namespace {
+
+/// Of the rays spawned (straight on and mirrored) from the first crossing of rays from 1000
+/// sizes away at the bead of `size` placed 10^3 from the origin, how many start on the
+/// wrong side of it, and how many were spawned.
+template <Scalar T>
+std::pair<long, long> bead_wrong_side_spawns(double size)
+{
+    Pcg32 rng(33u, 14u);
+    long spawned = 0, wrong_side = 0;
+    for (int shape = 0; shape < 8; ++shape) {
+        const Vec3<T> centre(Vec3<double>(1e3, 0, 0) + test::random_point<double>(rng, 1.0));
+        const T radius = T(size), hole = T(size * (0.2 + 0.5 * rng.uniform<double>()));
+        const auto bead = difference_of(Sphere<T>(centre, radius), Quadric<T>::cylinder(centre, Vec3<T>(test::random_direction<double>(rng)), hole));
+        for (int i = 0; i < 2000; ++i) {
+            const Vec3<double> dir = test::random_direction<double>(rng);
+            const Vec3<double> from = Vec3<double>(centre) + 1.2 * size * std::cbrt(rng.uniform<double>()) * test::random_direction<double>(rng) - 1e3 * size * dir;
+            const Ray<T> ray{Vec3<T>(from), Vec3<T>(dir)};
+            const auto c = bead.crossings(ray, {T(0), infinity<T>});
+            if (c.empty()) continue;
+            const Vec3<T> d = normalize(ray.direction);
+            for (const Vec3<T>& w : {d, reflect(d, c[0].facing_normal())}) {
+                const T cos = dot(w, c[0].normal);
+                if (!(std::abs(cos) > T(1e-3))) continue;
+                ++spawned;
+                wrong_side += bead.template crossings<false>(spawn_ray(c[0].point, c[0].error, c[0].normal, w), {T(0), infinity<T>}).inside_at_start != (cos < 0);
+            }
+        }
+    }
+    return {wrong_side, spawned};
+}
+
+} // namespace
+
+// Issue 33, what is left: near a rim, where the ball's surface and its hole's meet, a
+// spawned ray leaves the surface it hit by that point's error bound along its normal, and
+// may land past the other surface. In float the error is a coordinate step, so the share
+// of spawns that do falls as the bead's size in steps grows; in double it is nil. (Stepping
+// a wrong origin ahead along the new direction, checked against the node, was tried: it
+// mends 58 % of them at the size of 10^-3, for a second node query on every CSG spawn.)
+TEST_CASE("a bead placed 10^3 from the origin: spawned rays start on their side in double, and in float the more often the larger it is")
+{
+    const auto [wrong_double, spawned_double] = bead_wrong_side_spawns<double>(1e-3);
+    MESSAGE("double, size 1e-3: ", wrong_double, " of ", spawned_double, " spawned rays on the wrong side");
+    CHECK(spawned_double > 20000);
+    CHECK(wrong_double == 0);
+    long previous = 0;
+    for (const double size : {1e-3, 1e-2, 1e-1}) {
+        const auto [wrong, spawned] = bead_wrong_side_spawns<float>(size);
+        MESSAGE("float, size ", size, ": ", wrong, " of ", spawned, " spawned rays on the wrong side");
+        CHECK(spawned > 20000);
+        CHECK(double(wrong) < 0.05 * double(spawned));
+        if (size > 1e-3) CHECK(wrong * 5 < previous);
+        previous = wrong;
+    }
+}
