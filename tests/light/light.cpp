@@ -17,6 +17,7 @@ using prism::Vec3;
 /// nothing outside (a hard edge).
 struct SpotLight {
     using scalar_type = double;
+    static constexpr bool delta = true; // from one point
 
     Vec3<double> position{};
     Vec3<double> axis{0, -1, 0};
@@ -31,6 +32,7 @@ struct SpotLight {
         const double r2 = prism::length_squared(to_light), r = std::sqrt(r2);
         return {to_light / r, r, shines(-to_light / r) ? intensity / r2 : Rgb<double>(0)};
     }
+    [[nodiscard]] prism::LightSample<double> sample(const Vec3<double>& p, const prism::Vec2<double>&) const noexcept { return sample(p); }
 
     /// Everywhere: I times the cone's solid angle 2 pi (1 - cos_cutoff). Toward a target,
     /// the same: photons outside the target's cone are not asked for.

@@ -4,7 +4,9 @@
 
 #include <prism/core/check.hpp>
 #include <prism/core/offset.hpp>
+#include <prism/core/sampling.hpp>
 #include <prism/geometry/shape.hpp>
+#include <prism/geometry/surface_point.hpp>
 
 #include <limits>
 
@@ -86,6 +88,51 @@ public:
         return first_crossing(ray, range) < infinity<T>;
     }
 
+    /// The area 4 pi r^2.
+    [[nodiscard]] constexpr T area() const noexcept { return T(4) * pi<T> * radius_ * radius_; }
+
+    /// A point uniform over the sphere for u in the unit square, with density 1 / area.
+    [[nodiscard]] SurfacePoint<T> sample_area(const Vec2<T>& u) const noexcept
+    {
+        const Vec3<T> n = uniform_sphere(u.x, u.y);
+        return {center_ + radius_ * n, n, T(1) / area()};
+    }
+
+    /// A point of the sphere seen from p: from outside, uniform over the cone of directions
+    /// that meet it (density 1 / (2 pi (1 - cos theta_max)) per steradian), the point
+    /// where the direction first meets it; from inside (or on it), by area.
+    [[nodiscard]] SurfacePoint<T> sample_from(const Vec3<T>& p, const Vec2<T>& u) const noexcept
+    {
+        const Cone cone = cone_from(p);
+        if (!cone.outside) {
+            SurfacePoint<T> s = sample_area(u);
+            s.pdf = area_to_solid_angle(s.pdf, p, s.point, s.normal);
+            return s;
+        }
+        // cos theta uniform in [cos theta_max, 1]; 1 - cos theta and sin^2 theta kept
+        // without cancellation for the small cones of far lights.
+        const T one_minus_cos = u.x * cone.one_minus_cos;
+        const T cos_theta = T(1) - one_minus_cos;
+        const T sin2_theta = one_minus_cos * (T(2) - one_minus_cos);
+        const T phi = T(2) * pi<T> * u.y;
+        const auto [s, t] = orthonormal_frame(cone.axis);
+        const T sin_theta = prism::sqrt(sin2_theta);
+        const Vec3<T> w = sin_theta * std::cos(phi) * s + sin_theta * std::sin(phi) * t + cos_theta * cone.axis;
+        // The nearer crossing of the line p + d w with the sphere: d = dc cos - sqrt(r^2 - dc^2 sin^2).
+        const T dc = cone.distance;
+        const T d = dc * cos_theta - prism::sqrt(std::max(T(0), radius_ * radius_ - dc * dc * sin2_theta));
+        const Vec3<T> n = normalize(p + d * w - center_);
+        return {center_ + radius_ * n, n, T(1) / (T(2) * pi<T> * cone.one_minus_cos)};
+    }
+
+    /// The solid-angle density sample_from(p, .) gives the point x of the sphere.
+    [[nodiscard]] T pdf_from(const Vec3<T>& p, const Vec3<T>& x) const noexcept
+    {
+        const Cone cone = cone_from(p);
+        if (!cone.outside) return area_to_solid_angle(T(1) / area(), p, x, normalize(x - center_));
+        return T(1) / (T(2) * pi<T> * cone.one_minus_cos);
+    }
+
 private:
     // Sphere Private Methods
 
@@ -98,6 +145,27 @@ private:
         Vec3<T> closest{};
         T half_chord = 0;
     };
+
+    /// The cone of directions from p that meet the sphere: its axis, 1 - cos of its
+    /// half-angle (r^2 / dc^2 = sin^2, over 1 + cos), and whether p is outside at all.
+    struct Cone {
+        bool outside = false;
+        Vec3<T> axis{};
+        T distance = T(0), one_minus_cos = T(0);
+    };
+
+    [[nodiscard]] Cone cone_from(const Vec3<T>& p) const noexcept
+    {
+        const Vec3<T> to = center_ - p;
+        const T dc2 = length_squared(to);
+        const T r2 = radius_ * radius_;
+        // Just outside, the cone is nearly a hemisphere and a point by area is as good.
+        if (!(dc2 > r2 * T(1.0001))) return {};
+        const T dc = prism::sqrt(dc2);
+        const T sin2_max = r2 / dc2;
+        const T cos_max = prism::sqrt(std::max(T(0), T(1) - sin2_max));
+        return {true, to / dc, dc, sin2_max / (T(1) + cos_max)};
+    }
 
     [[nodiscard]] constexpr Roots roots(const Ray<T>& ray) const noexcept
     {

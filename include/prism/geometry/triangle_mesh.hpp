@@ -36,6 +36,8 @@
 #include <prism/core/check.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/geometry/shape.hpp>
+#include <prism/core/distribution.hpp>
+#include <prism/geometry/surface_point.hpp>
 #include <prism/geometry/triangle.hpp>
 
 #include <algorithm>
@@ -180,6 +182,12 @@ public:
     [[nodiscard]] bool has_uvs() const noexcept { return !data_->uvs.empty(); }
     /// The number of triangles.
     [[nodiscard]] std::size_t triangle_count() const noexcept { return data_->bvh.size(); }
+    /// The corners of triangle k, counted in the mesh's own (leaf) order, k < triangle_count().
+    [[nodiscard]] std::array<Vec3<T>, 3> corners(std::size_t k) const noexcept
+    {
+        PRISM_ASSERT(k < triangle_count());
+        return data_->blocks[k / detail::TriangleBlock<T>::width].triangle(std::uint32_t(k % detail::TriangleBlock<T>::width));
+    }
     /// The mesh's own Bvh over its triangles.
     [[nodiscard]] const Bvh<T>& bvh() const noexcept { return data_->bvh; }
     /// The box around every vertex.
@@ -476,5 +484,57 @@ private:
 
 static_assert(Shape<TriangleMesh<float>>);
 static_assert(Shape<TriangleMesh<double>>);
+
+/// A mesh's surface, to draw points on (an emitting mesh's): a triangle chosen by its
+/// area, in O(1) (an alias table), and a point uniform in it, so every point of the mesh
+/// has density 1 / area.
+template <Scalar T, std::size_t N>
+class MeshSurface {
+public:
+    /// The precision.
+    using scalar_type = T;
+
+    /// The surface of `mesh`; throws std::invalid_argument for a mesh of no area.
+    explicit MeshSurface(TriangleMesh<T, N> mesh) : mesh_(std::move(mesh))
+    {
+        std::vector<double> areas(mesh_.triangle_count());
+        double total = 0;
+        for (std::size_t k = 0; k < areas.size(); ++k) {
+            const auto [a, b, c] = mesh_.corners(k);
+            const Vec3<double> e1 = Vec3<double>(b) - Vec3<double>(a), e2 = Vec3<double>(c) - Vec3<double>(a);
+            areas[k] = 0.5 * length(cross(e1, e2));
+            total += areas[k];
+        }
+        if (!(total > 0) || !is_finite(total)) detail::throw_invalid("an emitting TriangleMesh must have a finite, positive area, got ", total);
+        triangles_ = AliasTable<T>(areas, "TriangleMesh triangle area");
+        area_ = T(total);
+    }
+
+    /// The mesh's area.
+    [[nodiscard]] T area() const noexcept { return area_; }
+
+    /// A point uniform over the mesh for u in the unit square, its triangle's unit normal
+    /// (by its winding: outward on a closed mesh), density 1 / area.
+    [[nodiscard]] SurfacePoint<T> sample_area(const Vec2<T>& u) const noexcept
+    {
+        const AliasPick<T> pick = triangles_.pick(u.x);
+        const auto [a, b, c] = mesh_.corners(pick.index);
+        // Uniform in the triangle: (1 - sqrt(u)) a + sqrt(u) (1 - v) b + sqrt(u) v c.
+        const T su = prism::sqrt(pick.rest);
+        return {a + (su * (T(1) - u.y)) * (b - a) + (su * u.y) * (c - a), normalize(cross(b - a, c - a)), T(1) / area_};
+    }
+
+private:
+    TriangleMesh<T, N> mesh_;
+    AliasTable<T> triangles_;
+    T area_ = T(0);
+};
+
+/// What points are drawn on when a mesh emits: its MeshSurface.
+template <Scalar T, std::size_t N>
+[[nodiscard]] MeshSurface<T, N> surface_of(const TriangleMesh<T, N>& mesh)
+{
+    return MeshSurface<T, N>(mesh);
+}
 
 } // namespace prism

@@ -49,6 +49,13 @@ public:
         /// A white path meeting a dispersive interface takes one of this many wavelength
         /// bands at random (1 to 81), as a photon does.
         int dispersion_bands = SpectralBands<float>::max_count;
+        /// Area lights sampled per diffuse vertex, on a jittered grid of this many points
+        /// per side (each combined with the diffuse bounce by the power heuristic).
+        int area_light_grid = 1;
+        /// Whether a path that meets an area light through mirrors and glass after a
+        /// diffuse bounce (... D S+ L: a caustic of the area light) counts it. The path
+        /// tracer alone does; Reference leaves those paths to its light tracer.
+        bool caustics_of_area_lights = true;
     };
 
     /// A path tracer of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
@@ -59,6 +66,8 @@ public:
         air_.validate();
         if (config.max_depth < 0) detail::throw_invalid("PathTracer max_depth must be >= 0, got ", config.max_depth);
         if (config.max_diffuse_bounces < 0) detail::throw_invalid("PathTracer max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
+        if (config.area_light_grid < 1 || config.area_light_grid > 64)
+            detail::throw_invalid("PathTracer area_light_grid must be in [1, 64], got ", config.area_light_grid);
     }
     PathTracer(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
 
@@ -68,17 +77,26 @@ public:
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept
     {
         Rgb<T> sum{T(0)};
+        const LightSampling sampling{&rng, config_.area_light_grid};
         random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth,
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         const Crossing<T>& c = at.crossing();
+                        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
                         Rgb<T> irradiance{T(0)};
-                        for_each_light_arriving<ShadowsThroughGlass::blocked>(
-                            *scene_, c, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
+                        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                            // An area light's sample shares its path with the diffuse bounce
+                            // (cos / pi) that finds it where the walk goes on.
+                            const T w = s.delta() || !go_on ? T(1) : power_heuristic(light_samples() * s.pdf, cos / pi<T>);
+                            irradiance += w * v * s.irradiance * cos;
+                        });
                         sum += at.power * diffuse_response(material, c).brdf() * irradiance;
-                        return at.diffuse_bounces < config_.max_diffuse_bounces;
+                        return go_on;
                     },
                     [&](const Ray<T>&, const Rgb<T>& weight, bool specular_only) {
                         if (specular_only) sum += weight * scene_->background;
+                    },
+                    [&]<class M>(const M& material, const WalkVertex<T>& at) {
+                        if constexpr (SceneT::has_emitters) sum += at.power * emitted(material, at.crossing()) * emitter_weight(at);
                     });
         return sum;
     }
@@ -89,6 +107,30 @@ public:
     [[nodiscard]] const Air& air() const noexcept { return air_; }
 
 private:
+    /// The weight of an area light met by the walk: 1 seen from the camera through
+    /// mirrors and glass only; after a diffuse bounce, the power heuristic against
+    /// sampling the light from there (its n samples: n times its density); through mirrors and glass after a diffuse bounce,
+    /// 1 where the path tracer counts such paths (no light sample can find them), else 0.
+    [[nodiscard]] T emitter_weight(const WalkVertex<T>& at) const noexcept
+    {
+        if (at.specular_only()) return T(1);
+        if (at.last_pdf > T(0)) {
+            if constexpr (SceneT::has_emitters) return power_heuristic(at.last_pdf, light_samples() * scene_->area_lights().pdf(at.hit, at.last_point));
+        }
+        return config_.caustics_of_area_lights ? T(1) : T(0);
+    }
+
+    /// The samples each area light takes at a diffuse vertex (the heuristic counts them all).
+    [[nodiscard]] T light_samples() const noexcept { return T(config_.area_light_grid * config_.area_light_grid); }
+
+    /// Veach's power heuristic (beta = 2) for a sample drawn with density `mine` where the
+    /// other strategy has density `other`: mine^2 / (mine^2 + other^2).
+    [[nodiscard]] static T power_heuristic(T mine, T other) noexcept
+    {
+        const T a = mine * mine, b = other * other;
+        return a + b > T(0) ? a / (a + b) : T(0);
+    }
+
     static SpectralBands<T> checked_bands(int count)
     {
         if (count < 1 || count > SpectralBands<float>::max_count)

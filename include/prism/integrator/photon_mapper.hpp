@@ -88,6 +88,9 @@ public:
         /// Wavelength bands white camera rays split into at a dispersive interface (as
         /// Whitted's); photons take their own wavelengths (PhotonTracerConfig).
         int dispersion_bands = 8;
+        /// Area lights are sampled for direct light on a jittered grid of this many points
+        /// per side at each shaded point.
+        int area_light_grid = 4;
     };
 
     /// Traces the photon maps (the expensive part), then renders with them.
@@ -117,6 +120,8 @@ private:
         if (!(cache.min_pixels > 0.0f && cache.min_pixels <= cache.max_pixels && is_finite(cache.max_pixels)))
             detail::throw_invalid("PhotonMapper irradiance_cache needs 0 < min_pixels <= max_pixels, finite, got ", cache.min_pixels, " and ", cache.max_pixels);
         if (config.max_depth < 0) detail::throw_invalid("PhotonMapper max_depth must be >= 0, got ", config.max_depth);
+        if (config.area_light_grid < 1 || config.area_light_grid > 64)
+            detail::throw_invalid("PhotonMapper area_light_grid must be in [1, 64], got ", config.area_light_grid);
         detail::require_non_negative("PhotonMapper min_weight", config.min_weight);
         if (config.visibility_k > PhotonMap::max_k)
             detail::throw_invalid("PhotonMapper visibility_k must be at most ", PhotonMap::max_k, ", got ", config.visibility_k);
@@ -258,10 +263,11 @@ private:
         const Vec3<T>& d = ray.direction;
         const Vec3<T> n = hit.facing_normal();
         LightParts<T> radiance;
+        radiance.direct = emitted(material, hit);
         if constexpr (has_diffuse<M>) {
             const Vec3<float> p(hit.point), nf(n);
             const Rgb<T> brdf = diffuse_response(material, hit).brdf();
-            radiance.direct = brdf * direct(hit);
+            radiance.direct += brdf * direct(hit, rng);
             radiance.caustic = brdf * Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
             if (config_.gather_rays > 0) {
                 // The final gather (and the cache of its results) is over the shading normal's hemisphere.
@@ -300,19 +306,23 @@ private:
 
     /// Irradiance from the lights by shadow rays (glass opaque), or by what the photons
     /// say about visibility where they agree.
-    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit) const noexcept
+    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, Pcg32& rng) const noexcept
     {
         Rgb<T> irradiance{T(0)};
+        const LightSampling sampling{&rng, config_.area_light_grid};
         if (const std::optional<bool> visible = visibility_from_photons(hit.point, hit.facing_normal())) {
             if (!*visible) return irradiance;
             const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
             scene_->for_each_light([&](const auto& light) {
-                const LightSample<T> s = light.sample(hit.point);
-                irradiance += s.irradiance * shading_cosine(n_shading, n, s.wi);
+                for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
+                    const T cos = shading_cosine(n_shading, n, s.wi);
+                    if (cos > T(0)) irradiance += s.irradiance * cos;
+                });
             });
             return irradiance;
         }
-        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
+        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, sampling,
+                                                              [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
         return irradiance;
     }
 

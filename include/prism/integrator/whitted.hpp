@@ -3,10 +3,11 @@
 // shaded display", Communications of the ACM 23(6)).
 //
 // At each hit:
-//   L = albedo (kd L_diffuse + ka L_ambient prod_lights (1 - V_light)) + kr L_reflect + kt L_transmit
+//   L = L_emitted + albedo (kd L_diffuse + ka L_ambient prod_lights (1 - V_light)) + kr L_reflect + kt L_transmit
 // with L_diffuse = sum_lights V E cos / pi (a Lambertian BRDF albedo / pi lit by shadow
 // rays; V is the shadow ray's transmittance, so a light seen through glass counts
-// partly), kr and kt weighted by Fresnel on dielectrics, Beer-Lambert absorption along
+// partly; an area light is the mean over a jittered grid of its points, its V the mean
+// of theirs: soft shadows), kr and kt weighted by Fresnel on dielectrics, Beer-Lambert absorption along
 // every segment travelled inside a dielectric, a depth limit and an adaptive cut-off
 // when a path's weight becomes negligible (Hall and Greenberg 1983). Every branch is
 // chosen by the material's compile-time traits, so a scene without dielectrics
@@ -47,6 +48,9 @@ public:
         /// Wavelength bands white light splits into where it refracts through a dispersive
         /// interface (1 to 81; POV-Ray's dispersion_samples, 7 by default there).
         int dispersion_bands = 8;
+        /// An area light is sampled on a grid of this many points per side, each jittered
+        /// in its cell (POV-Ray's area_light with jitter): soft shadows.
+        int area_light_grid = 4;
     };
 
     /// A Whitted integrator of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
@@ -56,16 +60,23 @@ public:
         scene.validate();
         air_.validate();
         if (config.max_depth < 0) detail::throw_invalid("Whitted max_depth must be >= 0, got ", config.max_depth);
+        if (config.area_light_grid < 1 || config.area_light_grid > 64)
+            detail::throw_invalid("Whitted area_light_grid must be in [1, 64], got ", config.area_light_grid);
         detail::require_non_negative("Whitted min_weight", config.min_weight);
     }
 
     /// The integrator keeps a reference to its scene: a temporary scene would dangle.
     Whitted(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
 
-    /// Radiance arriving along the ray (its direction must be unit length).
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32&) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
-    /// Radiance arriving along the ray; Whitted draws no random numbers.
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}); }
+    /// Radiance arriving along the ray (its direction must be unit length); `rng` jitters
+    /// the samples of area lights (nothing else is random).
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), T(0), {}, rng); }
+    /// Radiance arriving along the ray, with area lights sampled from a fixed stream.
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept
+    {
+        Pcg32 rng(0, 0);
+        return trace(ray, 0, Rgb<T>(T(1)), T(0), {}, rng);
+    }
 
     /// The scene and the air its camera rays start in (render_layers' surface layers).
     [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
@@ -81,7 +92,7 @@ private:
     /// Radiance along the ray for light of one wavelength (nanometres), or of all (0):
     /// a ray carries one once it has refracted through a dispersive interface. `media`:
     /// the transmissive objects the ray is inside of (medium/nesting.hpp).
-    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength, const MediumStack& media) const noexcept
+    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength, const MediumStack& media, Pcg32& rng) const noexcept
     {
         if constexpr (Air::curved) {
             // In the air (inside no object) the ray curves; it lands on a chord.
@@ -90,26 +101,26 @@ private:
                 const auto hit = first_hit_in_air(*scene_, air_, ray, segment);
                 if (!hit) return scene_->background;
                 return scene_->visit_material(*hit, [&](const auto& material) {
-                    return shade(material, segment, *hit, depth, weight, wavelength, media);
+                    return shade(material, segment, *hit, depth, weight, wavelength, media, rng);
                 });
             }
         }
         const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
         if (!hit) return scene_->background;
         return scene_->visit_material(*hit, [&](const auto& material) {
-            return shade(material, ray, *hit, depth, weight, wavelength, media);
+            return shade(material, ray, *hit, depth, weight, wavelength, media, rng);
         });
     }
 
     template <class M>
     [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight,
-                               T wavelength, const MediumStack& media) const noexcept
+                               T wavelength, const MediumStack& media, Pcg32& rng) const noexcept
     {
         const Crossing<T>& hit = h.crossing;
         const Vec3<T>& d = ray.direction;
-        Rgb<T> radiance{T(0)};
+        Rgb<T> radiance = emitted(material, hit);
 
-        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, d);
+        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, d, rng);
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
@@ -122,7 +133,7 @@ private:
                                            const Rgb<T> next_weight = weight * k;
                                            if (max_component(next_weight) > config_.min_weight)
                                                radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1,
-                                                                     next_weight, lambda, transmitted ? beyond : media);
+                                                                     next_weight, lambda, transmitted ? beyond : media, rng);
                                        });
                 };
                 if constexpr (transmits<M>) {
@@ -130,7 +141,7 @@ private:
                     if (face.real)
                         follow(face.beyond, outside_of(media, face, hit.entering));
                     else // a surface inside a medium of higher priority: the ray passes on
-                        radiance = trace(spawn_ray(hit.point, hit.error, hit.normal, d), depth + 1, weight, wavelength, face.beyond);
+                        radiance = trace(spawn_ray(hit.point, hit.error, hit.normal, d), depth + 1, weight, wavelength, face.beyond, rng);
                 } else {
                     follow(media, nullptr);
                 }
@@ -143,17 +154,23 @@ private:
     }
 
     template <class M>
-    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& d) const noexcept
+    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& d, Pcg32& rng) const noexcept
     {
-        Rgb<T> irradiance{T(0)}; // sum of V E cos over the lights
-        Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights
+        Rgb<T> irradiance{T(0)}; // sum of V E cos over the lights' samples
+        Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights, V a light's mean over its samples
         Rgb<T> highlights{T(0)}; // POV-Ray's Phong term, for materials that have one
         const Vec3<T> mirror = reflect(d, hit.facing_shading());
-        for_each_light_arriving(*scene_, hit, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
-            irradiance += v * s.irradiance * cos;
-            unlit *= Rgb<T>(T(1)) - v;
-            const T h = highlight(material, mirror, s.wi);
-            if (h > T(0)) highlights += h * v * s.irradiance;
+        const LightSampling sampling{&rng, config_.area_light_grid};
+        scene_->for_each_light([&]<class L>(const L& light) {
+            const T share = T(1) / T(samples_of<L>(sampling));
+            Rgb<T> seen{T(0)};
+            for_each_sample_arriving(*scene_, light, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                irradiance += v * s.irradiance * cos;
+                seen += share * v;
+                const T h = highlight(material, mirror, s.wi);
+                if (h > T(0)) highlights += h * v * s.irradiance;
+            });
+            unlit *= Rgb<T>(T(1)) - seen;
         });
         return diffuse_response(material, hit).reflected(irradiance, scene_->ambient, unlit) + highlights;
     }

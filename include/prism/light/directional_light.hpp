@@ -13,6 +13,8 @@ template <Scalar T = float>
 struct DirectionalLight {
     /// The precision of the light.
     using scalar_type = T;
+    /// A delta light: from one point (one direction), seen by shadow rays only.
+    static constexpr bool delta = true;
 
     Vec3<T> direction{T(0), T(-1), T(0)}; ///< the direction the light travels
     Rgb<T> irradiance{T(1)}; ///< the irradiance on a surface facing it (W/m^2)
@@ -22,6 +24,8 @@ struct DirectionalLight {
     {
         return {-normalize(direction), infinity<T>, irradiance};
     }
+    /// The same: a delta light needs no random numbers.
+    [[nodiscard]] LightSample<T> sample(const Vec3<T>& p, const Vec2<T>&) const noexcept { return sample(p); }
 
     /// E pi r^2 onto the target sphere, or onto the sphere around the whole scene when
     /// aimed everywhere (nothing when the scene has nothing bounded to light).

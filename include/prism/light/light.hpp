@@ -5,17 +5,29 @@
 #include <prism/core/aabb.hpp>
 #include <prism/core/math.hpp>
 #include <prism/core/ray.hpp>
+#include <prism/core/rng.hpp>
 
 #include <concepts>
 
 namespace prism {
 
-/// Light arriving at a point from one light.
+/// Light arriving at a point from one light, or from one point of it.
+///
+/// For a light at a single point or from a single direction (a delta light: point,
+/// spot, directional) `irradiance` is what arrives. For a light with extent (an emitting
+/// surface, the environment) the sample is one direction drawn with solid-angle density
+/// `pdf`, and `irradiance` is the radiance from there over that density: an estimate
+/// whose mean, over the light's samples, is the irradiance the light gives. Either way a
+/// surface's reflected radiance is BRDF * irradiance * cos, unoccluded.
 template <Scalar T>
 struct LightSample {
     Vec3<T> wi{};        ///< unit direction from the point toward the light
-    T distance = T(0);   ///< distance to the light (infinity for a directional light)
-    Rgb<T> irradiance{}; ///< irradiance on a surface facing the light (W/m^2)
+    T distance = T(0);   ///< distance to the light (infinity for a directional or environment light)
+    Rgb<T> irradiance{}; ///< irradiance on a surface facing the light (W/m^2), or its one-sample estimate
+    T pdf = T(0);        ///< the solid-angle density wi was drawn with; 0 for a delta light
+
+    /// Whether the light is a delta light (nothing else can find it: no MIS).
+    [[nodiscard]] constexpr bool delta() const noexcept { return pdf == T(0); }
 };
 
 /// Where the photon tracer asks a light to send photons: toward `target` (a specular
@@ -26,6 +38,7 @@ template <Scalar T>
 struct PhotonAim {
     const BoundingSphere<T>* target = nullptr; ///< a specular object's bounding sphere to aim at, or null: everywhere
     const BoundingSphere<T>* scene = nullptr; ///< the sphere around every bounded object, or null
+    Rgb<T> power{T(0)}; ///< what photon_power(aim) said, once the tracer asked (0 while it asks)
 };
 
 /// One photon leaving a light: its ray, a weight on the power the tracer gives it (1
@@ -39,18 +52,39 @@ struct EmittedPhoton {
     bool without_falloff = false; ///< whether the light does not fall off with distance
 };
 
-/// A light: `sample(p)`, what arrives at a shading point; `photon_power(aim)`, the power
-/// it sends where it is aimed (0: it sends no photons there); `emit_photon(aim, u, v)`,
-/// the photon for the point (u, v) of the unit square, so that uniform (u, v) give its
-/// emission's distribution over the aim (the photons share photon_power(aim)).
+/// A light: `sample(p, u)`, what arrives at a shading point (for a light with extent,
+/// from the point of it that u in the unit square picks); `photon_power(aim)`, the power it
+/// sends where it is aimed (0: it sends no photons there); `emit_photon(aim, u, v)`, the
+/// photon for the point (u, v) of the unit square, so that uniform (u, v) give its
+/// emission's distribution over the aim (the photons share photon_power(aim)). `L::delta`
+/// says at compile time whether it is a delta light (one sample tells all about it).
 template <class L>
 concept Light = requires(const L& light, const Vec3<typename L::scalar_type>& p, const PhotonAim<typename L::scalar_type>& aim,
-                         typename L::scalar_type u) {
+                         typename L::scalar_type u, const Vec2<typename L::scalar_type>& uv) {
     requires Scalar<typename L::scalar_type>;
-    { light.sample(p) } -> std::same_as<LightSample<typename L::scalar_type>>;
+    { L::delta } -> std::convertible_to<bool>;
+    { light.sample(p, uv) } -> std::same_as<LightSample<typename L::scalar_type>>;
     { light.photon_power(aim) } -> std::same_as<Rgb<typename L::scalar_type>>;
-    { light.emit_photon(aim, u, u) } -> std::same_as<EmittedPhoton<typename L::scalar_type>>;
     light.validate();
-};
+} && (requires(const L& light, const PhotonAim<typename L::scalar_type>& aim, typename L::scalar_type u) {
+    { light.emit_photon(aim, u, u) } -> std::same_as<EmittedPhoton<typename L::scalar_type>>;
+} || requires(const L& light, const PhotonAim<typename L::scalar_type>& aim, typename L::scalar_type u, Pcg32& rng) {
+    { light.emit_photon(aim, u, u, rng) } -> std::same_as<EmittedPhoton<typename L::scalar_type>>;
+});
+
+/// The photon `light` emits for (u, v) of the unit square aimed by `aim`; a light that
+/// needs more random numbers than two (a point on an area and a direction) draws them
+/// from `rng`.
+template <Light L>
+[[nodiscard]] EmittedPhoton<typename L::scalar_type> emit_photon(const L& light, const PhotonAim<typename L::scalar_type>& aim,
+                                                                 typename L::scalar_type u, typename L::scalar_type v, Pcg32& rng) noexcept
+{
+    if constexpr (requires { light.emit_photon(aim, u, v, rng); }) return light.emit_photon(aim, u, v, rng);
+    else return light.emit_photon(aim, u, v);
+}
+
+/// Whether L is a delta light.
+template <Light L>
+inline constexpr bool is_delta_light = bool(L::delta);
 
 } // namespace prism

@@ -18,6 +18,8 @@ template <Scalar T = float>
 struct PointLight {
     /// The precision of the light.
     using scalar_type = T;
+    /// A delta light: from one point (one direction), seen by shadow rays only.
+    static constexpr bool delta = true;
 
     Vec3<T> position{}; ///< where the light is
     Rgb<T> intensity{T(1)}; ///< radiant intensity per channel (W/sr)
@@ -35,6 +37,8 @@ struct PointLight {
         const Rgb<T> e = falloff == Falloff::inverse_square ? intensity / r2 : intensity;
         return {to_light / r, r, e};
     }
+    /// The same: a delta light needs no random numbers.
+    [[nodiscard]] LightSample<T> sample(const Vec3<T>& p, const Vec2<T>&) const noexcept { return sample(p); }
 
     /// Everywhere: the whole power. Toward a target sphere: the power into the cone that
     /// holds it (Phi times the cone's solid angle / 4 pi), or the whole power when the

@@ -53,6 +53,22 @@ template <Scalar T>
 
 } // namespace detail
 
+// Emission
+
+/// The radiance a surface sends back along a ray that met it at `hit`: an emitting
+/// material's radiance where the ray arrives at its front (where it enters), and at its
+/// back only when it is two-sided; nothing from any other material.
+template <Material M>
+[[nodiscard]] constexpr Rgb<typename M::scalar_type> emitted(const M& material, const Crossing<typename M::scalar_type>& hit) noexcept
+{
+    using T = typename M::scalar_type;
+    if constexpr (emits<M>) {
+        if (hit.entering || material.two_sided) return material.emitted_radiance();
+    }
+    (void)material, (void)hit;
+    return Rgb<T>(T(0));
+}
+
 // Diffuse lobe
 
 /// The diffuse response at a crossing's point (and surface coordinates, for a lobe that

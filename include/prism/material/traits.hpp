@@ -9,6 +9,8 @@
 //   reflects     a mirror (delta) reflection that is not a dielectric's DeltaReflection
 //   transmits    a dielectric interface: Fresnel-split delta reflection  DeltaTransmission
 //                and refraction into the medium() that fills it          InteriorMedium
+// and a fourth that only materials of area lights declare (the others emit nothing):
+//   emits        radiance leaving its surface: an area light             Emission
 // A scene whose materials never transmit compiles no refraction code at all. The
 // light transport over these capabilities (what a diffuse point reflects, how an
 // interface splits a ray, how a photon scatters, what a shadow ray lets through) is
@@ -108,6 +110,27 @@ concept InteriorMedium = requires(const M& material) {
     requires std::same_as<typename std::remove_cvref_t<decltype(material.medium())>::scalar_type, typename M::scalar_type>;
 };
 
+namespace detail {
+
+template <class M>
+constexpr bool declares_emission() noexcept
+{
+    if constexpr (requires { M::emits; }) return bool(M::emits);
+    else return false;
+}
+
+} // namespace detail
+
+/// A surface that emits light (an area light): `emitted_radiance()`, its radiance per
+/// channel, the same everywhere on it and in every direction of its front, and
+/// `two_sided`, whether its back emits too. A material declares it with `emits = true`;
+/// one that does not declare it emits nothing.
+template <class M>
+concept Emission = requires(const M& material) {
+    { material.emitted_radiance() } -> std::same_as<Rgb<typename M::scalar_type>>;
+    { material.two_sided } -> std::convertible_to<bool>;
+};
+
 /// A material: its scalar type, the three capability flags and validate() (throws
 /// std::invalid_argument for a bad parameter, naming it), and for each flag it sets,
 /// that capability's functions. A compiler reports an unkept promise on its own line.
@@ -118,7 +141,8 @@ concept Material = requires(const M& material) {
     { M::reflects } -> std::convertible_to<bool>;
     { M::transmits } -> std::convertible_to<bool>;
     material.validate();
-} && (M::has_diffuse || M::reflects || M::transmits) // a material does at least one thing
+} && (M::has_diffuse || M::reflects || M::transmits || detail::declares_emission<M>()) // a material does at least one thing
+  && (!detail::declares_emission<M>() || Emission<M>) // emits promises emitted_radiance() -> Rgb<T> and two_sided
   && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) or diffuse(p, uv) -> DiffuseResponse<T>
   && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i or query) -> Rgb<T>
   && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta or query), reflection_tint(), transmission_tint()
@@ -145,6 +169,10 @@ inline constexpr bool reflects = M::reflects;
 
 template <Material M>
 inline constexpr bool transmits = M::transmits;
+
+/// The material emits light: its surfaces are area lights.
+template <Material M>
+inline constexpr bool emits = detail::declares_emission<M>();
 
 template <Material M>
 inline constexpr bool disperses = M::transmits && Dispersive<M>;

@@ -183,7 +183,7 @@ private:
         }
         u = std::clamp((u - start) / p, 0.0, std::nextafter(1.0, 0.0));
         const EmittedPhoton<T> photon =
-            scene_.visit_light(e->light, [&](const auto& light) { return light.emit_photon(aim(*e), T(u), T(v)); });
+            scene_.visit_light(e->light, [&](const auto& light) { return prism::emit_photon(light, aim(*e), T(u), T(v), rng); });
         // Where two targets' cones overlap, a direction is the first target's to carry:
         // counted by both, the light sent that way would be counted twice.
         if (e->aimed && aimed_at_earlier_target(emitters, *e, photon.ray)) return;
@@ -237,7 +237,7 @@ private:
 
     [[nodiscard]] PhotonAim<T> aim(const Emitter<T>& e) const noexcept
     {
-        return {e.aimed ? &e.target : nullptr, scene_.bounds().empty() ? nullptr : &scene_sphere_};
+        return {e.aimed ? &e.target : nullptr, scene_.bounds().empty() ? nullptr : &scene_sphere_, e.power};
     }
 
     /// Every light aimed at `target` (or everywhere when not `aimed`), where it sends any power.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Lights{...}: a scene's lights, each of its own type, at least one, all of one scalar type.
+// Lights{...}: a scene's lights, each of its own type, all of one scalar type.
 #pragma once
 
 #include <prism/light/light.hpp>
@@ -11,10 +11,10 @@
 
 namespace prism {
 
-/// The lights of a scene, each of its own type, at least one.
+/// The lights of a scene, each of its own type; none (Lights{}) where the scene's only
+/// lights are its emitting objects.
 template <Light... Ls>
 struct Lights {
-    static_assert(sizeof...(Ls) > 0, "Lights{} holds no light: a scene needs at least one (a PointLight, a DirectionalLight, ...)");
 
     std::tuple<Ls...> items; ///< the lights
 
@@ -31,6 +31,12 @@ template <class X>
 struct is_light_list : std::false_type {};
 template <class... Ls>
 struct is_light_list<Lights<Ls...>> : std::true_type {};
+
+/// The number of lights in a Lights{...}.
+template <class List>
+inline constexpr std::size_t light_count_of = 0;
+template <class... Ls>
+inline constexpr std::size_t light_count_of<Lights<Ls...>> = sizeof...(Ls);
 
 /// Whether every light of the list has scalar type T (true for what is no list: that
 /// has its own error).

@@ -12,6 +12,7 @@
 #include <prism/core/offset.hpp>
 #include <prism/light/light.hpp>
 #include <prism/material/scattering.hpp>
+#include <prism/scene/area_lights.hpp>
 #include <prism/scene/hit.hpp>
 #include <prism/scene/lights.hpp>
 #include <prism/scene/object.hpp>
@@ -75,6 +76,14 @@ public:
     static_assert(detail::all_of({std::same_as<typename Slots::scalar_type, T>...}), "all objects must share one scalar type");
     static_assert(detail::lights_of_scalar<LightsOfScene, T>, "every light must have the objects' scalar type (a PointLight<float> in a scene of double objects?)");
 
+    /// Whether slot I's objects emit light (area lights).
+    template <std::size_t I>
+    static constexpr bool slot_emits = detail::slot_emits<SlotAt<I>>;
+    /// Some material emits: the scene has area lights (AreaLights, one more light).
+    static constexpr bool has_emitters = detail::any_of({detail::slot_emits<Slots>...});
+    static_assert(detail::light_count_of<LightsOfScene> > 0 || has_emitters,
+                  "a scene needs a light: Lights{...} with at least one (a PointLight, a DirectionalLight, ...), or an object whose material emits (Emissive)");
+
     /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
     static constexpr bool has_transmissive = detail::any_of({transmits<typename Slots::material_type>...});
     /// Some material has a mirror lobe.
@@ -116,6 +125,7 @@ public:
             }
         });
         bounded_objects_ = !cluster_.empty();
+        if constexpr (has_emitters) build_emitters();
         if constexpr (may_have_tree) {
             if (keys_.size() >= tree_from) build_tree(boxes);
         }
@@ -212,25 +222,42 @@ public:
         });
     }
 
-    /// Call f(light) for every light.
+    /// The scene's emitting objects as one light (when it has any).
+    [[nodiscard]] AreaLights<Scene> area_lights() const noexcept
+        requires has_emitters
+    {
+        return AreaLights<Scene>(*this);
+    }
+
+    /// Call f(light) for every light: those of Lights{...}, then the area lights.
     template <class F>
     void for_each_light(F&& f) const
     {
         std::apply([&](const auto&... light) { (f(light), ...); }, lights.items);
+        if constexpr (has_emitters) f(area_lights());
     }
 
-    /// The number of lights.
-    static constexpr std::size_t light_count = std::tuple_size_v<decltype(LightsOfScene::items)>;
+    /// The number of lights: those of Lights{...}, and one more for the area lights.
+    static constexpr std::size_t light_count = detail::light_count_of<LightsOfScene> + (has_emitters ? 1 : 0);
 
-    /// Call f(light) with light number i (in the order of Lights{...}), with its static type.
+    /// Call f(light) with light number i (in the order of Lights{...}, the area lights
+    /// last), with its static type.
     template <class F>
     decltype(auto) visit_light(std::size_t i, F&& f) const
     {
-        return dispatch<light_count>(i, [&]<std::size_t I>(Index<I>) -> decltype(auto) { return f(std::get<I>(lights.items)); });
+        return dispatch<light_count>(i, [&]<std::size_t I>(Index<I>) -> decltype(auto) {
+            if constexpr (I < detail::light_count_of<LightsOfScene>) return f(std::get<I>(lights.items));
+            else return f(area_lights());
+        });
     }
 
 private:
+    template <class>
+    friend class AreaLights;
+
     Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
+    detail::EmitterTable<T> emitter_table_;                     ///< the emitting objects by power
+    std::tuple<detail::SlotEmitters<Slots>...> slot_emitters_; ///< per slot, its emitters' surfaces and chances
     bool bounded_objects_ = false;
     bool has_tree_ = false;
     Bvh<T> tree_; ///< over the bounded objects (when there are at least tree_from)
@@ -244,6 +271,47 @@ private:
     [[no_unique_address]] std::conditional_t<slot_count == 1, std::vector<typename SlotAt<0>::shape_type>, detail::NoShapes> shapes_;
 
     // Scene Private Methods
+
+    /// The table of emitting objects by power, and each emitting slot's surfaces.
+    void build_emitters()
+    {
+        std::vector<double> weights;
+        for_each_slot([&]<std::size_t I>(Index<I>) {
+            if constexpr (slot_emits<I>) {
+                auto& mine = std::get<I>(slot_emitters_);
+                const auto list = objects_of(get<I>(slots));
+                for (std::uint32_t k = 0; k < list.size(); ++k) {
+                    if (!list[k].bounded)
+                        detail::throw_invalid("an emitting object must be bounded: object ", k, " of slot ", I, " has no finite bounds");
+                    mine.surfaces.push_back(surface_of(list[k].shape));
+                    const T sides = list[k].material.two_sided ? T(2) : T(1);
+                    const Rgb<T> power = list[k].material.emitted_radiance() * (pi<T> * mine.surfaces.back().area() * sides);
+                    if (!is_finite(power))
+                        detail::throw_invalid("the power pi L A of emitting object ", k, " of slot ", I, " overflows: radiance ",
+                                              detail::describe(list[k].material.emitted_radiance()), ", area ", mine.surfaces.back().area());
+                    emitter_table_.keys.push_back({std::uint32_t(I), k});
+                    emitter_table_.powers.push_back(power);
+                    emitter_table_.power += power;
+                    weights.push_back((double(power.x) + double(power.y) + double(power.z)) / 3);
+                }
+                mine.probability.assign(list.size(), T(0));
+            }
+        });
+        double sum = 0;
+        for (const double w : weights) sum += w;
+        // Emitters that are all black light nothing: an empty table.
+        if (!(sum > 0)) {
+            emitter_table_.keys.clear();
+            return;
+        }
+        emitter_table_.pick = AliasTable<T>(weights, "emitter power");
+        for (std::size_t e = 0; e < emitter_table_.keys.size(); ++e) {
+            const detail::ObjectKey key = emitter_table_.keys[e];
+            dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) {
+                if constexpr (slot_emits<I>) std::get<I>(slot_emitters_).probability[key.index] = emitter_table_.pick.probability(e);
+            });
+        }
+    }
 
     /// The tree over the bounded objects' boxes (in key order), and the keys in its leaf order.
     void build_tree(const std::vector<Aabb<T>>& boxes)

@@ -3,10 +3,13 @@
 #pragma once
 
 #include <prism/core/offset.hpp>
+#include <prism/core/rng.hpp>
 #include <prism/geometry/crossings.hpp>
 #include <prism/light/light.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/scene/scene.hpp>
+
+#include <utility>
 
 namespace prism {
 
@@ -15,22 +18,72 @@ namespace prism {
 template <Scalar T>
 inline constexpr T shadow_epsilon = T(1e-4);
 
-/// For each light in front of the surface on the side the ray arrived from, call
-/// f(sample, v, cos): the light's sample at the point, the shadow ray's transmittance v
-/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface (the
-/// shading normal's: shading_cosine). Lights behind the surface are not visited: they
-/// count as occluded. How dielectrics shadow: see Scene::transmittance.
-template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
-void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, F&& f)
+/// How a shading point samples a light with extent (a delta light is asked once):
+/// `grid` x `grid` stratified samples, each jittered within its stratum by `rng` (at the
+/// strata's centres without one), each carrying 1 / grid^2 of the estimate.
+struct LightSampling {
+    Pcg32* rng = nullptr; ///< jitters each sample in its stratum; null: stratum centres
+    int grid = 1;         ///< samples per side of the unit square
+};
+
+/// The samples one light is asked for: 1 for a delta light, grid^2 for the others.
+template <Light L>
+[[nodiscard]] constexpr int samples_of(const LightSampling& sampling) noexcept
+{
+    return is_delta_light<L> ? 1 : sampling.grid * sampling.grid;
+}
+
+/// g(sample) for each sample `sampling` asks of `light` at p: its one sample for a delta
+/// light; else one per stratum of the grid, its irradiance that stratum's share.
+template <Light L, Scalar T, class G>
+void for_each_light_sample(const L& light, const Vec3<T>& p, const LightSampling& sampling, G&& g)
+{
+    if constexpr (is_delta_light<L>) {
+        g(light.sample(p, Vec2<T>(T(0.5))));
+    } else {
+        const int n_side = sampling.grid;
+        const T side = T(1) / T(n_side), share = side * side;
+        for (int i = 0; i < n_side; ++i)
+            for (int j = 0; j < n_side; ++j) {
+                const T ju = sampling.rng ? sampling.rng->template uniform<T>() : T(0.5);
+                const T jv = sampling.rng ? sampling.rng->template uniform<T>() : T(0.5);
+                LightSample<T> s = light.sample(p, Vec2<T>((T(i) + ju) * side, (T(j) + jv) * side));
+                s.irradiance *= share;
+                g(s);
+            }
+    }
+}
+
+/// For each sample of `light` arriving at the surface on the side the ray arrived from,
+/// call f(sample, v, cos): the sample (its irradiance already the sample's share of the
+/// light's), the shadow ray's transmittance v (0 when occluded, Beer-Lambert through
+/// glass) and the cosine at the surface (the shading normal's: shading_cosine). Samples
+/// behind the surface, or carrying nothing, are not visited: they count as occluded. How
+/// dielectrics shadow: see Scene::transmittance.
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Light L, Scalar T, class F>
+void for_each_sample_arriving(const SceneT& scene, const L& light, const Crossing<T>& hit, const LightSampling& sampling, F&& f)
 {
     const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
-    scene.for_each_light([&](const auto& light) {
-        const LightSample<T> s = light.sample(hit.point);
+    for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
         const T cos = shading_cosine(n_shading, n, s.wi);
-        if (!(cos > T(0))) return;
+        if (!(cos > T(0)) || !(max_component(s.irradiance) > T(0))) return;
         const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
         f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
     });
+}
+
+/// for_each_sample_arriving over every light of the scene, its area lights last.
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
+void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const LightSampling& sampling, F&& f)
+{
+    scene.for_each_light([&](const auto& light) { for_each_sample_arriving<Glass>(scene, light, hit, sampling, f); });
+}
+
+/// The same, one sample per light at its strata's centre (delta lights only are exact).
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
+void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, F&& f)
+{
+    for_each_light_arriving<Glass>(scene, hit, LightSampling{}, std::forward<F>(f));
 }
 
 } // namespace prism

@@ -40,6 +40,9 @@ struct WalkVertex {
     T travelled;              ///< the path's length so far
     T wavelength;             ///< 0 while white
     const MediumStack& media; ///< the transmissive objects the path is inside of
+    const Vec3<T>& last_point; ///< where the path last scattered (or started)
+    T last_pdf;               ///< the solid-angle density of a diffuse lobe's last scattering, cos / pi; 0 after a delta one or at the start
+    bool last;                ///< the walk ends after this surface (its depth limit): nothing it scatters is followed
 
     /// Where the walk met the surface, with its normal and side.
     [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
@@ -47,14 +50,25 @@ struct WalkVertex {
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
 };
 
+/// What a walk does where it meets an emitting surface when its caller says nothing: nothing.
+struct IgnoreEmitters {
+    template <class M, class V>
+    constexpr void operator()(const M&, const V&) const noexcept
+    {
+    }
+};
+
 /// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
 /// on_diffuse(material, WalkVertex) is called at every diffuse surface and returns the
 /// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
 /// there); on_escape(ray, power, specular_only) when the path leaves the
-/// scene. `Mode`: whether the path is a photon's or a camera's (scatter_photon).
-template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape>
+/// scene; on_emitter(material, WalkVertex) where it meets a surface that emits (an area
+/// light; the walk scatters there only by the lobes the material also has). `Mode`:
+/// whether the path is a photon's or a camera's (scatter_photon).
+template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape, class OnEmitter = IgnoreEmitters>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
-                 Rgb<typename SceneT::scalar_type> power, Pcg32& rng, int max_bounces, OnDiffuse&& on_diffuse, OnEscape&& on_escape)
+                 Rgb<typename SceneT::scalar_type> power, Pcg32& rng, int max_bounces, OnDiffuse&& on_diffuse, OnEscape&& on_escape,
+                 OnEmitter&& on_emitter = {})
 {
     using T = typename SceneT::scalar_type;
     bool direct = true, first_specular = false;
@@ -62,6 +76,8 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
     T travelled = T(0);
     T wavelength = T(0); // white until a dispersive interface splits it
     MediumStack media;   // the transmissive objects the path is inside of
+    Vec3<T> last_point = ray.origin;
+    T last_pdf = T(0);
     for (int bounce = 0; bounce <= max_bounces; ++bounce) {
         // In the air a path follows the air's curve; inside objects, straight lines.
         Ray<T> segment = ray;
@@ -79,9 +95,16 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         const Next next_step = scene.visit_material(*hit, [&]<class M>(const M& material) -> Next {
             // What the medium it travelled in let through, before anything else.
             attenuate_segment(scene, media, material, c, segment, power);
+            const bool last = bounce == max_bounces;
+            if constexpr (emits<M>)
+                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last});
+            if constexpr (!has_diffuse<M> && !reflects<M> && !transmits<M>) {
+                return Next::absorbed; // a lamp that only emits
+            } else {
             Lobes lobes = Lobes::all;
             if constexpr (has_diffuse<M>) {
-                const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media});
+                const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
+                                                                      last_point, last_pdf, last});
                 if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
                 else lobes = go_on;
                 if (lobes == Lobes::none) return Next::absorbed;
@@ -114,12 +137,15 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, index_of(scene, outside, wavelength), lobes);
             if (!next) return Next::absorbed;
             ray = spawn_ray(c.point, c.error, c.normal, next->direction);
+            last_point = c.point;
+            last_pdf = next->diffuse ? std::max(dot(next->direction, c.facing_shading()), T(0)) / pi<T> : T(0);
             if (next->diffuse) ++diffuse_bounces;
             if (direct) first_specular = !next->diffuse;
             if constexpr (transmits<M>) {
                 if (dot(next->direction, n) < T(0)) media = face.beyond; // refracted
             }
             return Next::scattered;
+            }
         });
         if (next_step == Next::absorbed) return;
         if (next_step == Next::scattered) direct = false;

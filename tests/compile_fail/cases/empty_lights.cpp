@@ -1,4 +1,4 @@
-// A scene without any light: one error, at this line.
+// A scene without any light (no Lights and no emitting object): one error, at this line.
 #include <prism/prism.hpp>
 
 int main()
