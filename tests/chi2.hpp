@@ -54,6 +54,7 @@ struct Chi2 {
     int degrees = 0;       ///< pooled bins - 1
     double p_value = 0;    ///< the probability of a statistic at least this large if the sampler is right
     double missing = 0;    ///< expected count of samples the bins do not hold (the density's mass outside them, or where it is 0)
+    double stray = 0;      ///< samples in bins where the finest integration found no density (a sliver of support it missed, or a wrong sample)
 };
 
 /// Pearson's test of `observed` counts against `expected` ones (the same bins, the same
@@ -88,19 +89,24 @@ inline Chi2 chi2_test(const std::vector<double>& observed, const std::vector<dou
 }
 
 /// A sampler of directions against its solid-angle density: `sample(u, v)` returns a unit
-/// direction (or the zero vector for no sample), `pdf(w)` the density it claims. The sphere
-/// is cut into theta_bins x phi_bins bins of equal area about `axis`; the density is
-/// integrated over each on a grid of sub x sub points.
+/// direction (or the zero vector for no sample), `pdf(w)` the density it claims. The cone
+/// of directions within acos(cos_max) of `axis` (the whole sphere for -1), which must hold
+/// every sample, is cut into theta_bins x phi_bins bins of equal solid angle; the density
+/// is integrated over each on a grid of sub x sub points (finer where it has an edge, or
+/// where a bin holds samples and the coarse grid found no density). A sample outside the
+/// cone fails the test.
 inline Chi2 chi2_directions(const std::function<prism::Vec3<double>(double, double)>& sample, const std::function<double(const prism::Vec3<double>&)>& pdf,
                             const prism::Vec3<double>& axis, long samples, int theta_bins = 20, int phi_bins = 40, int sub = 12,
-                            std::uint64_t seed = 7)
+                            double cos_max = -1, std::uint64_t seed = 7)
 {
+    const double z_span = 1 - cos_max;
     const auto [s, t] = prism::orthonormal_frame(axis);
     const auto bin_of = [&](const prism::Vec3<double>& w) {
         const double z = std::clamp(prism::dot(w, axis), -1.0, 1.0);
         double phi = std::atan2(prism::dot(w, t), prism::dot(w, s));
         if (phi < 0) phi += 2 * prism::pi<double>;
-        const int i = std::min(theta_bins - 1, int((1 - z) / 2 * theta_bins));
+        if (z < cos_max) return -1;
+        const int i = std::min(theta_bins - 1, int((1 - z) / z_span * theta_bins));
         const int j = std::min(phi_bins - 1, int(phi / (2 * prism::pi<double>) * phi_bins));
         return i * phi_bins + j;
     };
@@ -112,28 +118,96 @@ inline Chi2 chi2_directions(const std::function<prism::Vec3<double>(double, doub
         const prism::Vec3<double> w = sample(u, v);
         if (w == prism::Vec3<double>(0)) continue;
         ++taken;
-        observed[std::size_t(bin_of(w))] += 1;
+        const int bin = bin_of(w);
+        if (bin < 0) {
+            Chi2 outside;
+            outside.statistic = INFINITY;
+            return outside;
+        }
+        observed[std::size_t(bin)] += 1;
     }
-    // Each bin is a z range times a phi range: dA = dz dphi; the midpoint rule on sub x sub.
-    double total = 0;
+    // Each bin is a z range times a phi range: dA = dz dphi; the midpoint rule on sub x sub
+    // points, and on 16 sub x 16 sub where the density's support ends inside the bin (a
+    // light's edge), where the coarse rule's error would dominate the statistic.
+    const auto mass_of = [&](int i, int j, int n, bool& edge) {
+        double mass = 0;
+        bool zero = false, positive = false;
+        const double dz = z_span / theta_bins / n, dphi = 2 * prism::pi<double> / phi_bins / n;
+        for (int a = 0; a < n; ++a)
+            for (int b = 0; b < n; ++b) {
+                const double z = 1 - z_span * i / theta_bins - (a + 0.5) * dz;
+                const double phi = 2 * prism::pi<double> * j / phi_bins + (b + 0.5) * dphi;
+                const double r = std::sqrt(std::max(0.0, 1 - z * z));
+                const prism::Vec3<double> w = r * std::cos(phi) * s + r * std::sin(phi) * t + z * axis;
+                const double f = pdf(w);
+                (f > 0 ? positive : zero) = true;
+                mass += f * dz * dphi;
+            }
+        edge = zero && positive;
+        return mass;
+    };
+    double total = 0, stray = 0;
     for (int i = 0; i < theta_bins; ++i)
         for (int j = 0; j < phi_bins; ++j) {
-            double mass = 0;
-            const double dz = 2.0 / theta_bins / sub, dphi = 2 * prism::pi<double> / phi_bins / sub;
-            for (int a = 0; a < sub; ++a)
-                for (int b = 0; b < sub; ++b) {
-                    const double z = 1 - 2.0 * i / theta_bins - (a + 0.5) * dz;
-                    const double phi = 2 * prism::pi<double> * j / phi_bins + (b + 0.5) * dphi;
-                    const double r = std::sqrt(std::max(0.0, 1 - z * z));
-                    const prism::Vec3<double> w = r * std::cos(phi) * s + r * std::sin(phi) * t + z * axis;
-                    mass += pdf(w) * dz * dphi;
-                }
-            expected[std::size_t(i * phi_bins + j)] = mass * double(samples);
+            bool edge = false;
+            const std::size_t k = std::size_t(i * phi_bins + j);
+            double mass = mass_of(i, j, sub, edge);
+            if (edge || (mass == 0 && observed[k] > 0)) mass = mass_of(i, j, 16 * sub, edge);
+            expected[k] = mass * double(samples);
             total += mass;
+            // Samples where even the fine grid saw no density: counted apart (the caller
+            // bounds them), and pooled with their neighbours as a bin expecting almost none.
+            if (mass == 0 && observed[k] > 0) stray += observed[k], expected[k] = 1e-9;
         }
     Chi2 out = chi2_test(observed, expected);
     out.missing = double(samples) * (1 - total) - double(samples - taken);
+    out.stray = stray;
     return out;
+}
+
+/// A sampler of points on a surface parametrised over the unit square, against the density
+/// it claims there: `sample(u, v)` returns the point's parameters (s, t), `density(s, t)`
+/// the density per unit of (s, t). The square is cut into bins x bins; the density is
+/// integrated over each on sub x sub points. For a light seen from a point, binning on
+/// the light itself has no edges inside the bins, which thin or grazing views give a
+/// binning by direction.
+inline Chi2 chi2_surface(const std::function<prism::Vec2<double>(double, double)>& sample, const std::function<double(double, double)>& density,
+                         long samples, int bins = 40, int sub = 8, std::uint64_t seed = 11)
+{
+    std::vector<double> observed(std::size_t(bins * bins), 0.0), expected(observed.size(), 0.0);
+    prism::Pcg32 rng(seed, 5);
+    for (long k = 0; k < samples; ++k) {
+        const prism::Vec2<double> st = sample(rng.uniform<double>(), rng.uniform<double>());
+        if (!(st.x >= -1e-9 && st.x <= 1 + 1e-9 && st.y >= -1e-9 && st.y <= 1 + 1e-9)) {
+            Chi2 outside;
+            outside.statistic = INFINITY;
+            return outside;
+        }
+        const int i = std::clamp(int(st.x * bins), 0, bins - 1), j = std::clamp(int(st.y * bins), 0, bins - 1);
+        observed[std::size_t(i * bins + j)] += 1;
+    }
+    double total = 0;
+    const double cell = 1.0 / (double(bins) * sub);
+    for (int i = 0; i < bins; ++i)
+        for (int j = 0; j < bins; ++j) {
+            double mass = 0;
+            for (int a = 0; a < sub; ++a)
+                for (int b = 0; b < sub; ++b) mass += density((i * sub + a + 0.5) * cell, (j * sub + b + 0.5) * cell) * cell * cell;
+            expected[std::size_t(i * bins + j)] = mass * double(samples);
+            total += mass;
+        }
+    Chi2 out = chi2_test(observed, expected);
+    out.missing = double(samples) * (1 - total);
+    return out;
+}
+
+/// cos_max for chi2_directions: the cone from p holding a sphere (centre, radius), a
+/// little wider; the whole sphere of directions from inside it.
+inline double cone_around(const prism::Vec3<double>& p, const prism::Vec3<double>& centre, double radius)
+{
+    const double d = prism::length(centre - p);
+    if (d <= radius * 1.01) return -1;
+    return std::cos(std::min(prism::pi<double>, 1.05 * std::asin(radius / d)));
 }
 
 } // namespace test

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <prism/geometry/sphere.hpp>
 
+#include "../chi2.hpp"
 #include "../support.hpp"
 
 #include <cmath>
@@ -175,4 +176,31 @@ TEST_CASE("a float sphere seen from 10^4 loses no hit and gains none against its
     CHECK(total.hits > 100000);
     CHECK(total.lost == 0);
     CHECK(total.phantom == 0);
+}
+
+TEST_CASE("a sphere's points seen from a point follow the density they report (chi-square): its cone from outside, its area from inside")
+{
+    const prism::Sphere<double> s({0.2, 0.1, -0.3}, 0.5);
+    for (const prism::Vec3<double>& p : {prism::Vec3<double>(0, 0, 3), prism::Vec3<double>(0.2, 0.1, 0.21), prism::Vec3<double>(0, 0, 0),
+                                         prism::Vec3<double>(40, 0, 0)}) {
+        const test::Chi2 c = test::chi2_directions(
+            [&](double u, double v) { return prism::normalize(s.sample_from(p, {u, v}).point - p); },
+            [&](const prism::Vec3<double>& w) {
+                const auto x = s.crossings({p, w}, {0.0, prism::infinity<double>});
+                return x.empty() ? 0.0 : s.pdf_from(p, x[0].point);
+            },
+            prism::normalize(s.center() - p), 400000, 40, 40, 8, test::cone_around(p, s.center(), s.radius()));
+        MESSAGE("from (", p.x, ", ", p.y, ", ", p.z, "): chi2 ", c.statistic, " with ", c.degrees, " degrees, p = ", c.p_value, ", missing ",
+                c.missing / 400000);
+        CHECK(c.p_value > 1e-3);
+        CHECK(std::abs(c.missing) < 4e-3 * 400000);
+    }
+    // Each point drawn is on the sphere and faces the point it was drawn for.
+    prism::Pcg32 rng(3, 4);
+    for (int i = 0; i < 100000; ++i) {
+        const prism::Vec3<double> p = prism::Vec3<double>(0.2, 0.1, -0.3) + (0.6 + 100 * rng.uniform<double>()) * test::random_direction<double>(rng);
+        const auto x = s.sample_from(p, {rng.uniform<double>(), rng.uniform<double>()});
+        CHECK(std::abs(prism::length(x.point - s.center()) - 0.5) < 1e-12);
+        CHECK(prism::dot(x.normal, p - x.point) >= -1e-9);
+    }
 }
