@@ -13,6 +13,7 @@
 #include <prism/core/aabb.hpp>
 #include <prism/core/check.hpp>
 #include <prism/core/config.hpp>
+#include <prism/core/distribution.hpp>
 #include <prism/core/interval.hpp>
 #include <prism/core/math.hpp>
 #include <prism/core/offset.hpp>
@@ -27,11 +28,14 @@
 #include <prism/csg/union.hpp>
 #include <prism/geometry/box.hpp>
 #include <prism/geometry/crossings.hpp>
+#include <prism/geometry/disk.hpp>
 #include <prism/geometry/mesh_builders.hpp>
 #include <prism/geometry/plane.hpp>
+#include <prism/geometry/quad.hpp>
 #include <prism/geometry/quadric.hpp>
 #include <prism/geometry/shape.hpp>
 #include <prism/geometry/sphere.hpp>
+#include <prism/geometry/surface_point.hpp>
 #include <prism/geometry/transformed.hpp>
 #include <prism/geometry/triangle.hpp>
 #include <prism/geometry/triangle_mesh.hpp>
@@ -45,10 +49,12 @@
 #include <prism/light/directional_light.hpp>
 #include <prism/light/light.hpp>
 #include <prism/light/point_light.hpp>
+#include <prism/light/spot_light.hpp>
 #include <prism/material/conductor.hpp>
 #include <prism/material/dielectric.hpp>
 #include <prism/material/diffuse.hpp>
 #include <prism/material/dispersive.hpp>
+#include <prism/material/emissive.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/texture.hpp>
 #include <prism/material/thin_film.hpp>
@@ -70,6 +76,7 @@
 #include <prism/render/film.hpp>
 #include <prism/render/layers.hpp>
 #include <prism/render/render.hpp>
+#include <prism/scene/area_lights.hpp>
 #include <prism/scene/camera.hpp>
 #include <prism/scene/hit.hpp>
 #include <prism/scene/lights.hpp>

@@ -183,10 +183,11 @@ public:
     /// The number of triangles.
     [[nodiscard]] std::size_t triangle_count() const noexcept { return data_->bvh.size(); }
     /// The corners of triangle k, counted in the mesh's own (leaf) order, k < triangle_count().
-    [[nodiscard]] std::array<Vec3<T>, 3> corners(std::size_t k) const noexcept
+    [[nodiscard]] std::array<Vec3<T>, 3> corners(std::uint32_t k) const noexcept
     {
         PRISM_ASSERT(k < triangle_count());
-        return data_->blocks[k / detail::TriangleBlock<T>::width].triangle(std::uint32_t(k % detail::TriangleBlock<T>::width));
+        constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
+        return data_->blocks[k / width].triangle(k % width);
     }
     /// The mesh's own Bvh over its triangles.
     [[nodiscard]] const Bvh<T>& bvh() const noexcept { return data_->bvh; }
@@ -314,12 +315,6 @@ private:
         return false;
     }
 
-    /// The corners of the triangle at leaf-order position k.
-    [[nodiscard]] std::array<Vec3<T>, 3> corners(std::uint32_t k) const noexcept
-    {
-        constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
-        return data_->blocks[k / width].triangle(k % width);
-    }
 
     /// The corners in blocks of four in the Bvh's leaf order, where each leaf starts a
     /// block and its last triangle fills its last block (Bvh::primitives()).
@@ -500,7 +495,7 @@ public:
         std::vector<double> areas(mesh_.triangle_count());
         double total = 0;
         for (std::size_t k = 0; k < areas.size(); ++k) {
-            const auto [a, b, c] = mesh_.corners(k);
+            const auto [a, b, c] = mesh_.corners(std::uint32_t(k));
             const Vec3<double> e1 = Vec3<double>(b) - Vec3<double>(a), e2 = Vec3<double>(c) - Vec3<double>(a);
             areas[k] = 0.5 * length(cross(e1, e2));
             total += areas[k];

@@ -30,6 +30,13 @@
 
 namespace prism {
 
+/// How a path tracer finds the light of area lights at a diffuse vertex.
+enum class AreaLightStrategy {
+    mis,          ///< light samples and the diffuse bounce, combined by the power heuristic (Veach 1995)
+    light_samples, ///< light samples only (a bounce that meets the light counts nothing)
+    bounces,      ///< the diffuse bounce only (no shadow ray toward an area light)
+};
+
 /// Unbiased path tracing with next-event estimation, in the scene's air.
 template <class SceneT, class Air = StraightAir>
 class PathTracer {
@@ -52,6 +59,8 @@ public:
         /// Area lights sampled per diffuse vertex, on a jittered grid of this many points
         /// per side (each combined with the diffuse bounce by the power heuristic).
         int area_light_grid = 1;
+        /// How light samples and diffuse bounces share the area lights' light.
+        AreaLightStrategy area_lights = AreaLightStrategy::mis;
         /// Whether a path that meets an area light through mirrors and glass after a
         /// diffuse bounce (... D S+ L: a caustic of the area light) counts it. The path
         /// tracer alone does; Reference leaves those paths to its light tracer.
@@ -83,11 +92,17 @@ public:
                         const Crossing<T>& c = at.crossing();
                         const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
                         Rgb<T> irradiance{T(0)};
-                        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
-                            // An area light's sample shares its path with the diffuse bounce
-                            // (cos / pi) that finds it where the walk goes on.
-                            const T w = s.delta() || !go_on ? T(1) : power_heuristic(light_samples() * s.pdf, cos / pi<T>);
-                            irradiance += w * v * s.irradiance * cos;
+                        scene_->for_each_light([&]<class L>(const L& light) {
+                            if constexpr (!is_delta_light<L>) {
+                                if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
+                            }
+                            for_each_sample_arriving<ShadowsThroughGlass::blocked>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                                // An area light's sample shares its path with the diffuse
+                                // bounce (cos / pi) that finds it where the walk goes on.
+                                const bool shared = !s.delta() && go_on && config_.area_lights == AreaLightStrategy::mis;
+                                const T w = shared ? power_heuristic(light_samples() * s.pdf, cos / pi<T>) : T(1);
+                                irradiance += w * v * s.irradiance * cos;
+                            });
                         });
                         sum += at.power * diffuse_response(material, c).brdf() * irradiance;
                         return go_on;
@@ -115,6 +130,7 @@ private:
     {
         if (at.specular_only()) return T(1);
         if (at.last_pdf > T(0)) {
+            if (config_.area_lights != AreaLightStrategy::mis) return config_.area_lights == AreaLightStrategy::bounces ? T(1) : T(0);
             if constexpr (SceneT::has_emitters) return power_heuristic(at.last_pdf, light_samples() * scene_->area_lights().pdf(at.hit, at.last_point));
         }
         return config_.caustics_of_area_lights ? T(1) : T(0);

@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: MIT
+// Area lights against closed forms: the irradiance under a disk, a rectangle and a sphere
+// that emit, by every integrator that sees direct light, and the sampling of the scene's
+// emitters against the density multiple importance sampling is told.
+#include <prism/scene/area_lights.hpp>
+#include <prism/prism.hpp>
+
+#include "../chi2.hpp"
+#include "../support.hpp"
+
+#include <cmath>
+#include <string>
+
+using namespace prism;
+
+namespace {
+
+constexpr double albedo = 0.5;
+
+/// A floor of albedo 0.5 at y = 0 under the emitter `light`: the only other object.
+template <class Shape>
+auto lit_floor(Shape light, double radiance, bool two_sided = false)
+{
+    return Scene{Lights{}, Object{std::move(light), Emissive<double>{.radiance = Rgb<double>(radiance), .two_sided = two_sided}},
+                 Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(albedo)}}}};
+}
+
+/// The radiance every integrator that sees direct light gives the floor at (x, 0, z), seen
+/// from straight above: the mean of n estimates each (Whitted and the photon mapper on
+/// their jittered grids, the path tracer by each of its three strategies).
+template <class SceneT>
+void check_every_integrator(const SceneT& scene, double x, double z, double expected, const std::string& what)
+{
+    const Ray<double> down{{x, 1e-3, z}, {0, -1, 0}};
+    const auto mean_of = [&](const auto& integrator, int n) {
+        Pcg32 rng(17, 3);
+        double sum = 0;
+        for (int i = 0; i < n; ++i) sum += integrator.radiance(down, rng).x;
+        return sum / n;
+    };
+    const double whitted = mean_of(Whitted(scene), 20000);
+    CHECK_MESSAGE(whitted == doctest::Approx(expected).epsilon(0.005), what, ": Whitted");
+    for (const AreaLightStrategy strategy : {AreaLightStrategy::mis, AreaLightStrategy::light_samples, AreaLightStrategy::bounces}) {
+        const double path = mean_of(PathTracer(scene, {.area_lights = strategy}), 400000);
+        CHECK_MESSAGE(path == doctest::Approx(expected).epsilon(0.005), what, ": path tracer, strategy ", int(strategy));
+    }
+    const PhotonMapper mapper(scene, {.tracing = {.global_photons = 20000, .caustic_photons = 0}});
+    const double mapped = mean_of(mapper, 20000);
+    CHECK_MESSAGE(mapped == doctest::Approx(expected).epsilon(0.005), what, ": photon mapper");
+    MESSAGE(what, ": expected ", expected, ", Whitted ", whitted, ", photon mapper ", mapped);
+}
+
+/// The irradiance at the origin from a rectangle of radiance L parallel to the floor at
+/// height h, with a corner above the origin and sides a, b (the differential form factor
+/// to a parallel rectangle, times pi L).
+double corner_irradiance(double radiance, double a, double b, double h)
+{
+    const double x = a / h, y = b / h;
+    return radiance / 2 *
+           (x / std::sqrt(1 + x * x) * std::atan(y / std::sqrt(1 + x * x)) + y / std::sqrt(1 + y * y) * std::atan(x / std::sqrt(1 + y * y)));
+}
+
+} // namespace
+
+TEST_CASE("a disk light: E = pi L r^2 / (r^2 + h^2) on its axis, in every integrator")
+{
+    const double L = 3, r = 0.4, h = 1.2;
+    const auto scene = lit_floor(Disk<double>({0, h, 0}, {0, -1, 0}, r), L);
+    check_every_integrator(scene, 0, 0, albedo / pi<double> * (pi<double> * L * r * r / (r * r + h * h)), "disk");
+}
+
+TEST_CASE("a rectangle light: the parallel form factor's closed form, on and off its axis, in every integrator")
+{
+    const double L = 2, h = 0.8;
+    // The rectangle [-0.5, 0.7] x [-0.3, 0.4] at height h, facing down (x cross z = -y).
+    const auto scene = lit_floor(Quad<double>({-0.5, h, -0.3}, {1.2, 0, 0}, {0, 0, 0.7}), L);
+    // Below an inside point, four corner rectangles; beside it, differences of them.
+    const double under = corner_irradiance(L, 0.5, 0.3, h) + corner_irradiance(L, 0.7, 0.3, h) + corner_irradiance(L, 0.5, 0.4, h) +
+                         corner_irradiance(L, 0.7, 0.4, h);
+    check_every_integrator(scene, 0, 0, albedo / pi<double> * under, "rectangle, under it");
+    // At x = 1.2: the rectangle spans [-1.7, -0.5] in x from there.
+    const double beside = corner_irradiance(L, 1.7, 0.3, h) - corner_irradiance(L, 0.5, 0.3, h) + corner_irradiance(L, 1.7, 0.4, h) -
+                          corner_irradiance(L, 0.5, 0.4, h);
+    check_every_integrator(scene, 1.2, 0, albedo / pi<double> * beside, "rectangle, beside it");
+}
+
+TEST_CASE("a sphere light: E = pi L sin^2 theta for a surface facing it, near and far, in every integrator")
+{
+    const double L = 1.5, R = 0.3;
+    for (const double D : {0.45, 2.0}) {
+        const auto scene = lit_floor(Sphere<double>({0, D, 0}, R), L);
+        const double sin2 = R * R / (D * D);
+        check_every_integrator(scene, 0, 0, albedo / pi<double> * pi<double> * L * sin2, "sphere at " + std::to_string(D));
+    }
+}
+
+TEST_CASE("a mesh light: two triangles light the floor as the quad they make, and its photons carry pi L A")
+{
+    const double L = 2, h = 0.8;
+    MeshBuffers<double> square;
+    square.positions = {{-0.5, h, -0.3}, {0.7, h, -0.3}, {0.7, h, 0.4}, {-0.5, h, 0.4}};
+    square.triangles = {{0, 1, 2}, {0, 2, 3}}; // wound to face down: (x) cross (x + z) = -y
+    const auto scene = lit_floor(TriangleMesh<double>(square), L);
+    const double under = corner_irradiance(L, 0.5, 0.3, h) + corner_irradiance(L, 0.7, 0.3, h) + corner_irradiance(L, 0.5, 0.4, h) +
+                         corner_irradiance(L, 0.7, 0.4, h);
+    check_every_integrator(scene, 0, 0, albedo / pi<double> * under, "two triangles");
+    // Every photon leaves the light and lands on the floor: their power is the light's.
+    const PhotonMaps maps = trace_photons(scene, {.global_photons = 100000, .caustic_photons = 0, .shadow_photons = false, .seed = 4});
+    double total = 0;
+    for (const Photon& p : maps.global.photons()) total += p.power().x;
+    CHECK(total == doctest::Approx(pi<double> * L * 1.2 * 0.7).epsilon(1.0 / 128));
+}
+
+TEST_CASE("an area light shines from its front, and from its back only when two-sided")
+{
+    const double L = 3, r = 0.4, h = 1.2;
+    const double expected = albedo * L * r * r / (r * r + h * h);
+    const Ray<double> down{{0, 1e-3, 0}, {0, -1, 0}};
+    Pcg32 rng(1, 1);
+    // Facing up, away from the floor: one-sided it lights nothing below it.
+    const auto away = lit_floor(Disk<double>({0, h, 0}, {0, 1, 0}, r), L);
+    CHECK(Whitted(away).radiance(down, rng).x == 0);
+    CHECK(PathTracer(away).radiance(down, rng).x == 0);
+    const auto both = lit_floor(Disk<double>({0, h, 0}, {0, 1, 0}, r), L, true);
+    double sum = 0;
+    const PathTracer path(both);
+    for (int i = 0; i < 200000; ++i) sum += path.radiance(down, rng).x;
+    CHECK(sum / 200000 == doctest::Approx(expected).epsilon(0.005));
+    // Seen by the camera: its radiance from the front, nothing from behind.
+    CHECK(Whitted(away).radiance({{0, 2, 0}, {0, -1, 0}}, rng).x == L);
+    CHECK(Whitted(away).radiance({{0, 0.5, 0}, {0, 1, 0}}, rng).x == 0);
+    CHECK(Whitted(both).radiance({{0, 0.5, 0}, {0, 1, 0}}, rng).x == L);
+}
+
+TEST_CASE("the scene's emitters are sampled as densely as AreaLights::pdf says: by power, then each by its own rule (chi-square)")
+{
+    // A sphere, a disk and a rectangle around the point, of different powers.
+    const Scene scene{Lights{}, Object{Sphere<double>({1.5, 0.5, 0}, 0.5), Emissive<double>{.radiance = Rgb<double>(1)}},
+                      Object{Disk<double>({0, 2, 0.5}, {0, -1, 0}, 0.6), Emissive<double>{.radiance = Rgb<double>(2, 3, 4)}},
+                      Object{Quad<double>({-2, -0.5, -1}, {0, 1.5, 0}, {0, 0, 2}), Emissive<double>{.radiance = Rgb<double>(0.5)}}};
+    const Vec3<double> p(0.1, 0.2, 0.05);
+    const auto lights = scene.area_lights();
+    const test::Chi2 c = test::chi2_directions(
+        [&](double u, double v) { return lights.sample(p, {u, v}).wi; },
+        [&](const Vec3<double>& w) {
+            const auto hit = scene.closest_hit({p, w}, {0.0, infinity<double>});
+            return hit ? lights.pdf(*hit, p) : 0.0;
+        },
+        {0, 1, 0}, 1000000, 60, 80, 10);
+    MESSAGE("chi2 ", c.statistic, " with ", c.degrees, " degrees, p = ", c.p_value, "; missing mass ", c.missing / 1e6, ", stray ", c.stray);
+    CHECK(c.p_value > 1e-3);
+    CHECK(std::abs(c.missing) < 2e-3 * 1e6);
+    CHECK(c.stray < 100);
+    // Each sample's density is what pdf() gives the point a ray toward it meets, to rounding.
+    Pcg32 rng(9, 9);
+    for (int i = 0; i < 20000; ++i) {
+        const LightSample<double> s = lights.sample(p, {rng.uniform<double>(), rng.uniform<double>()});
+        const auto hit = scene.closest_hit({p, s.wi}, {0.0, infinity<double>});
+        REQUIRE(hit);
+        CHECK(hit->crossing.t == doctest::Approx(s.distance).epsilon(1e-9));
+        CHECK(lights.pdf(*hit, p) == doctest::Approx(s.pdf).epsilon(1e-9));
+    }
+}
+
+TEST_CASE("an emitter that cannot be sampled is refused: unbounded, or of infinite power")
+{
+    const auto build = [](auto shape, double radiance) {
+        return Scene{Lights{}, Object{shape, Emissive<double>{.radiance = Rgb<double>(radiance)}}};
+    };
+    CHECK_THROWS_WITH_AS(build(Quad<double>({0, 0, 0}, {1e70, 0, 0}, {0, 0, 1e70}), 1e300), doctest::Contains("overflows"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((Object{Sphere<double>({0, 0, 0}, 1), Emissive<double>{.radiance = Rgb<double>(-1)}}), doctest::Contains("Emissive radiance"),
+                         std::invalid_argument);
+}
