@@ -20,7 +20,6 @@
 #include <prism/core/rng.hpp>
 #include <prism/core/sampling.hpp>
 #include <prism/geometry/surface_point.hpp>
-#include <prism/geometry/triangle_mesh.hpp>
 #include <prism/light/light.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/scene/hit.hpp>

@@ -256,8 +256,10 @@ private:
     friend class AreaLights;
 
     Aabb<T> cluster_{}; ///< around every bounded object (empty when there are none)
-    detail::EmitterTable<T> emitter_table_;                     ///< the emitting objects by power
-    std::tuple<detail::SlotEmitters<Slots>...> slot_emitters_; ///< per slot, its emitters' surfaces and chances
+    /// The emitting objects by power, and per slot its emitters' surfaces and chances
+    /// (nothing in a scene without area lights, which compiles none of their code).
+    [[no_unique_address]] std::conditional_t<has_emitters, detail::EmitterTable<T>, detail::NoShapes> emitter_table_;
+    [[no_unique_address]] std::conditional_t<has_emitters, std::tuple<detail::SlotEmitters<Slots>...>, detail::NoShapes> slot_emitters_;
     bool bounded_objects_ = false;
     bool has_tree_ = false;
     Bvh<T> tree_; ///< over the bounded objects (when there are at least tree_from)
