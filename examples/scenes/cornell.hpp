@@ -67,4 +67,22 @@ auto cornell_scene(bool physical_light = false)
     return scene;
 }
 
+/// The Cornell box lit as the original is, by its ceiling light: a rectangle of 1.30 x
+/// 1.05 just below the ceiling's centre (the Cornell data's light, in metres), facing
+/// down, of radiance 37 W/(m^2 sr): L A = 50 W/sr straight down, as the point light's
+/// 16 pi sends every way (its power, pi L A = 159 W, is a quarter of the point light's,
+/// which sends three quarters of its power at the walls and ceiling).
+template <prism::Scalar T, class Fresnel = prism::ExactFresnel>
+auto cornell_area_scene()
+{
+    using namespace prism;
+    return Scene{
+        Lights{},
+        cornell_walls<T>(),
+        Object{Quad<T>({T(2.13), T(5.549), T(-3.32)}, {T(1.30), T(0), T(0)}, {T(0), T(0), T(1.05)}), Emissive<T>{.radiance = Rgb<T>(T(37))}},
+        Object{Sphere<T>({T(3.85), T(1.0), T(-2.0)}, T(1)), Dielectric<T, Fresnel>{.ior = T(1.5)}},
+        Object{Sphere<T>({T(1.60), T(1.0), T(-3.6)}, T(1)), Mirror<T>{{.kr = Rgb<T>(T(0.95))}}},
+    };
+}
+
 } // namespace scenes

@@ -345,6 +345,8 @@ private:
             const bool diffuse = scene_->visit_material(*hit, [&]<class M>(const M& material) {
                 if constexpr (has_diffuse<M>) {
                     return true;
+                } else if constexpr (!reflects<M> && !transmits<M>) {
+                    return false; // a lamp: nothing goes on from it
                 } else {
                     const Vec3<T> n = delta_normal(material, d, c);
                     const SpecularSplit<T> split = delta_split(material, d, n, c.entering, c.point);

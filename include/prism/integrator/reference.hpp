@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Reference: prism's unbiased estimator, a path tracer's camera samples plus a light
 // tracer's splats (integrator/path_tracer.hpp, integrator/light_tracer.hpp). The two count
-// disjoint sets of paths, so their sum is every path either can sample. An integrator of
+// disjoint sets of paths, so their sum is every path either can sample: the path tracer
+// leaves an area light met through mirrors and glass after a diffuse bounce (D S+ L) to
+// the light tracer, which finds it as L S+ D (PathTracer's caustics_of_area_lights). An integrator of
 // passes: pass s is the path tracer's sample s of every pixel and the light tracer's pass
 // s, of as many light paths as the image has pixels (LightTracerConfig::paths = width x
 // height), so each pass costs about as many paths from either end.
@@ -38,7 +40,7 @@ public:
 
     /// The reference for `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
     explicit Reference(const SceneT& scene, Config config = {}, Air air = {})
-        : scene_(&scene), config_(config), air_(std::move(air)), paths_(scene, {.max_diffuse_bounces = config.max_diffuse_bounces}, air_)
+        : scene_(&scene), config_(config), air_(std::move(air)), paths_(scene, {.max_diffuse_bounces = config.max_diffuse_bounces, .caustics_of_area_lights = false}, air_)
     {
     }
     Reference(const SceneT&& scene, Config config = {}, Air air = {}) = delete;

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+#include <prism/integrator/reference.hpp>
+#include <prism/prism.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+using namespace prism;
+
+namespace {
+
+/// The irradiance at p (on the floor y = 0, facing up) from the rectangle [x0, x1] x [z0, z1]
+/// at height h of radiance L, facing down: the corner form factor of a parallel rectangle,
+/// odd in both sides, summed with signs over the four corners.
+double rectangle_irradiance(const Vec3<double>& p, double x0, double x1, double z0, double z1, double h, double radiance)
+{
+    const auto corner = [&](double a, double b) {
+        const double x = a / h, y = b / h;
+        return radiance / 2 *
+               (x / std::sqrt(1 + x * x) * std::atan(y / std::sqrt(1 + x * x)) + y / std::sqrt(1 + y * y) * std::atan(x / std::sqrt(1 + y * y)));
+    };
+    const double a0 = x0 - p.x, a1 = x1 - p.x, b0 = z0 - p.z, b1 = z1 - p.z;
+    return corner(a1, b1) - corner(a0, b1) - corner(a1, b0) + corner(a0, b0);
+}
+
+} // namespace
+
+// The path tracer alone finds a mirror's image of an area light on a floor (E D S L: its
+// diffuse bounce meets the light through the mirror); the reference's light tracer finds
+// it too (L S D E), so the reference's path tracer must leave it out. It did not at
+// first: the reference read the image twice (0.5 / pi (E + 2 R E') on this floor).
+TEST_CASE("an area light's image in a mirror on a floor: the path tracer alone and the reference each count it once, against the closed form")
+{
+    constexpr double radiance = 4, reflectance = 0.8, h = 4; // above the camera, which must not see its back
+    // The light [0.5, 1.5] x [-0.5, 0.5] at height 4, facing down; a vertical mirror x in [-0.1, 0].
+    const Scene scene{Lights{}, Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(0.5)}, .kd = 1, .ka = 0}},
+                      Object{Box<double>({-0.1, 0, -5}, {0, 6, 5}), Mirror<double>{{.kr = Rgb<double>(reflectance)}}},
+                      Object{Quad<double>({0.5, h, -0.5}, {1, 0, 0}, {0, 0, 1}), Emissive<double>{.radiance = Rgb<double>(radiance)}}};
+    const Camera<double> camera{.position = {1.5, 3, 0}, .look_at = {1.5, 0, 0}, .up = {0, 0, -1}, .fov = 40};
+    constexpr int size = 8;
+    const RenderConfig config{.width = size, .height = size, .spp = 16384, .threads = 2, .seed = 5, .progress = false};
+    const Film alone = render(camera, PathTracer(scene), config);
+    const Film both = render(camera, Reference(scene), config);
+    const CameraRays<double> rays = camera.rays(size, size);
+    double expected = 0, mean_alone = 0, mean_both = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            // The closed form over the pixel (8 x 8 points): the light, and its image at x in [-1.5, -0.5].
+            for (int j = 0; j < 64; ++j) {
+                const Ray<double> ray = rays.ray(x + (j % 8 + 0.5) / 8, y + (j / 8 + 0.5) / 8);
+                const Vec3<double> p = ray.origin + ray.direction * (-ray.origin.y / ray.direction.y);
+                const double e = rectangle_irradiance(p, 0.5, 1.5, -0.5, 0.5, h, radiance) + reflectance * rectangle_irradiance(p, -1.5, -0.5, -0.5, 0.5, h, radiance);
+                expected += 0.5 / pi<double> * e / 64;
+            }
+            mean_alone += alone.at(x, y).x;
+            mean_both += both.at(x, y).x;
+        }
+    MESSAGE("floor: closed form ", expected / 64, ", path tracer ", mean_alone / 64, ", reference ", mean_both / 64);
+    CHECK(mean_alone == doctest::Approx(expected).epsilon(0.01));
+    CHECK(mean_both == doctest::Approx(expected).epsilon(0.01));
+}
