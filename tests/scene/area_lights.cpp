@@ -171,3 +171,45 @@ TEST_CASE("an emitter that cannot be sampled is refused: unbounded, or of infini
     CHECK_THROWS_WITH_AS((Object{Sphere<double>({0, 0, 0}, 1), Emissive<double>{.radiance = Rgb<double>(-1)}}), doctest::Contains("Emissive radiance"),
                          std::invalid_argument);
 }
+
+TEST_CASE("photons aimed from an area light at a sphere carry the power the light sends into it (brute-force integral)")
+{
+    // A disk light facing down-right, and a target sphere below it.
+    const Disk<double> disk({0, 2, 0}, {0.3, -1, 0}, 0.5);
+    const double L = 3;
+    const Scene scene{Lights{}, Object{disk, Emissive<double>{.radiance = Rgb<double>(L)}}};
+    const auto lights = scene.area_lights();
+    const BoundingSphere<double> target{{0.8, 0, 0.2}, 0.4};
+    PhotonAim<double> aim{&target, nullptr};
+    aim.power = lights.photon_power(aim);
+    Pcg32 rng(8, 8);
+    double carried = 0;
+    const int n = 400000;
+    for (int i = 0; i < n; ++i) carried += lights.emit_photon(aim, rng.uniform<double>(), rng.uniform<double>(), rng).weight.x;
+    carried *= aim.power.x / n;
+    // L cos over the disk's area and the directions into the sphere, by the midpoint rule
+    // (polar points over the disk, a grid over the directions toward the sphere).
+    double exact = 0;
+    const int radial = 60, around = 60, dirs = 120;
+    const auto [s, t] = orthonormal_frame(disk.normal());
+    for (int a = 0; a < radial; ++a)
+        for (int b = 0; b < around; ++b) {
+            const double rho = 0.5 * (a + 0.5) / radial, phi = 2 * pi<double> * (b + 0.5) / around;
+            const Vec3<double> x = disk.center() + rho * std::cos(phi) * s + rho * std::sin(phi) * t;
+            const double dA = 0.5 / radial * rho * 2 * pi<double> / around;
+            const Vec3<double> to = target.center - x;
+            const double cos_max = std::sqrt(1 - target.radius * target.radius / length_squared(to));
+            const Vec3<double> axis = normalize(to);
+            const auto [u, v] = orthonormal_frame(axis);
+            double into = 0;
+            for (int i = 0; i < dirs; ++i)
+                for (int j = 0; j < dirs; ++j) {
+                    const double z = 1 - (i + 0.5) / dirs * (1 - cos_max), psi = 2 * pi<double> * (j + 0.5) / dirs, r = std::sqrt(1 - z * z);
+                    const Vec3<double> w = r * std::cos(psi) * u + r * std::sin(psi) * v + z * axis;
+                    into += std::max(0.0, dot(w, disk.normal())) * (1 - cos_max) / dirs * 2 * pi<double> / dirs;
+                }
+            exact += L * into * dA;
+        }
+    MESSAGE("power into the sphere: photons ", carried, ", integral ", exact);
+    CHECK(carried == doctest::Approx(exact).epsilon(0.01));
+}
