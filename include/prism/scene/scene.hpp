@@ -222,10 +222,10 @@ public:
         });
     }
 
-    /// The scene's emitting objects as one light (when it has any).
+    /// The scene's emitting objects as one light (a scene without any has none to give).
     [[nodiscard]] AreaLights<Scene> area_lights() const noexcept
-        requires has_emitters
     {
+        static_assert(has_emitters, "this scene has no emitting object (an Emissive material), so no area lights");
         return AreaLights<Scene>(*this);
     }
 
@@ -245,10 +245,7 @@ public:
     template <class F>
     decltype(auto) visit_light(std::size_t i, F&& f) const
     {
-        return dispatch<light_count>(i, [&]<std::size_t I>(Index<I>) -> decltype(auto) {
-            if constexpr (I < detail::light_count_of<LightsOfScene>) return f(std::get<I>(lights.items));
-            else return f(area_lights());
-        });
+        return dispatch<light_count>(i, [&]<std::size_t I>(Index<I>) -> decltype(auto) { return f(light_at<I>()); });
     }
 
 private:
@@ -273,6 +270,16 @@ private:
     [[no_unique_address]] std::conditional_t<slot_count == 1, std::vector<typename SlotAt<0>::shape_type>, detail::NoShapes> shapes_;
 
     // Scene Private Methods
+
+    /// Light I: of Lights{...}, or past them the area lights (a template of I, so that a
+    /// scene without area lights never names them: clang checks what an index does not
+    /// depend on when the lambda that asks is instantiated).
+    template <std::size_t I>
+    [[nodiscard]] decltype(auto) light_at() const noexcept
+    {
+        if constexpr (I < detail::light_count_of<LightsOfScene>) return (std::get<I>(lights.items));
+        else return area_lights();
+    }
 
     /// The table of emitting objects by power, and each emitting slot's surfaces.
     void build_emitters()

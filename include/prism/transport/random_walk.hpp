@@ -52,6 +52,7 @@ struct WalkVertex {
 
 /// What a walk does where it meets an emitting surface when its caller says nothing: nothing.
 struct IgnoreEmitters {
+    /// Does nothing.
     template <class M, class V>
     constexpr void operator()(const M&, const V&) const noexcept
     {
