@@ -3209,6 +3209,121 @@ static_assert(HasFirstCrossing<Box<float>>);
 
 } // namespace prism
 
+// ---- prism/geometry/plane.hpp ----
+// Plane: the half-space dot(normal, p) <= offset, a solid bounded by one plane.
+
+
+namespace prism {
+
+namespace detail {
+
+/// p moved along the unit normal n onto the plane dot(n, x) = offset (a crossing point
+/// computed as o + t d, refined).
+template <Scalar T>
+[[nodiscard]] constexpr Vec3<T> onto_plane(const Vec3<T>& n, T offset, Vec3<T> p) noexcept
+{
+    p -= (dot(n, p) - offset) * n;
+    return p;
+}
+
+/// The error bound of a point onto_plane gave: the residual is evaluated with error
+/// gamma(3)(|n|.|p| + |offset|), and that is what is left along the normal; along the
+/// plane the point carries its own rounding.
+template <Scalar T>
+[[nodiscard]] constexpr Vec3<T> plane_point_error(const Vec3<T>& n, T offset, const Vec3<T>& p) noexcept
+{
+    const Vec3<T> n_abs = abs(n);
+    const T along = gamma<T>(4) * (dot(n_abs, abs(p)) + (offset < T(0) ? -offset : offset));
+    return along * n_abs + gamma<T>(1) * abs(p);
+}
+
+} // namespace detail
+
+/// The half-space below a plane: inside where dot(normal, p) < offset, so the normal
+/// points out of the solid. A floor at y = 0 is Plane{{0, 1, 0}, 0}.
+template <Scalar T = float>
+class Plane {
+public:
+    /// The precision of the plane and the crossings.
+    using scalar_type = T;
+    /// At most one crossing.
+    static constexpr std::size_t max_crossings = 1;
+
+    // Plane Public Methods
+
+    /// The half-space dot(normal, p) <= offset; normal need not be unit length.
+    /// Throws std::invalid_argument for a zero or non-finite normal or offset.
+    constexpr Plane(const Vec3<T>& normal, T offset)
+    {
+        detail::require_nonzero("Plane normal", normal);
+        detail::require_finite("Plane offset", offset);
+        // Scaled by its largest component before normalising: |normal|^2 of (1e-45, 0, 0)
+        // underflows and of (3e38, 3e38, 0) overflows.
+        const T largest = max_component(abs(normal));
+        const Vec3<T> scaled = normal / largest;
+        const T len = length(scaled);
+        normal_ = scaled * (T(1) / len);
+        offset_ = offset / largest / len;
+        if (!is_finite(offset_))
+            detail::throw_invalid("Plane offset / |normal| must be finite, got ", offset, " / |", detail::describe(normal), "|");
+    }
+
+    /// The half-space bounded by the plane through `point` with outward `normal`.
+    [[nodiscard]] static constexpr Plane through(const Vec3<T>& point, const Vec3<T>& normal)
+    {
+        detail::require_finite("Plane point", point);
+        detail::require_nonzero("Plane normal", normal);
+        const Vec3<T> n = normal / max_component(abs(normal)); // as in the constructor: no overflow in the dot product
+        return Plane(n, dot(n, point));
+    }
+
+    /// The outward unit normal.
+    [[nodiscard]] constexpr const Vec3<T>& normal() const noexcept { return normal_; }
+    /// The solid is dot(normal(), p) < offset().
+    [[nodiscard]] constexpr T offset() const noexcept { return offset_; }
+    /// Unbounded: every point.
+    [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return Aabb<T>::universe(); }
+
+    /// Whether p is inside: dot(normal, p) < offset.
+    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return dot(normal_, p) < offset_; }
+
+    /// The crossing of `ray` within `range`, if it meets the plane there, with its point refined onto the plane.
+    template <bool Surface = true>
+    [[nodiscard]] constexpr Crossings<T, 1> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        Crossings<T, 1> out;
+        const T denom = dot(normal_, ray.direction);
+        const T height = dot(normal_, ray.origin) - offset_;
+        if (denom == T(0)) { // parallel: inside or outside all along
+            out.inside_at_start = height < T(0);
+            return out;
+        }
+        const T t = -height / denom;
+        const bool entering = denom < T(0);
+        out.inside_at_start = entering ? t < range.min : range.min < t;
+        if (range.surrounds(t)) out.push_back(Surface ? crossing_at(ray, t, entering) : Crossing<T>::without_surface(t, entering));
+        return out;
+    }
+
+private:
+    // Plane Private Methods
+
+    [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, bool entering) const noexcept
+    {
+        // The hit point projected onto the plane, with its error bound.
+        const Vec3<T> point = detail::onto_plane(normal_, offset_, ray.at(t));
+        return Crossing<T>::flat(t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering);
+    }
+
+    Vec3<T> normal_{T(0), T(1), T(0)};
+    T offset_ = T(0);
+};
+
+static_assert(Shape<Plane<float>>);
+static_assert(Shape<Plane<double>>);
+
+} // namespace prism
+
 // ---- prism/geometry/surface_point.hpp ----
 // Points drawn on a surface, for lights with extent: by area, or by solid angle from a point.
 //
@@ -3370,8 +3485,7 @@ public:
         if (denom == T(0)) return out;
         const T t = (offset_ - dot(normal_, ray.origin)) / denom;
         if (!range.surrounds(t)) return out;
-        Vec3<T> point = ray.at(t);
-        point -= (dot(normal_, point) - offset_) * normal_;
+        const Vec3<T> point = detail::onto_plane(normal_, offset_, ray.at(t));
         const Vec3<T> local = point - center_;
         const T r2 = length_squared(local);
         if (!(r2 <= radius_ * radius_)) return out;
@@ -3379,9 +3493,7 @@ public:
         if constexpr (!Surface) {
             out.push_back(Crossing<T>::without_surface(t, entering));
         } else {
-            const Vec3<T> n_abs = abs(normal_);
-            const T along = gamma<T>(4) * (dot(n_abs, abs(point)) + std::abs(offset_));
-            const Vec3<T> error = along * n_abs + gamma<T>(1) * abs(point);
+            const Vec3<T> error = detail::plane_point_error(normal_, offset_, point);
             T angle = std::atan2(dot(local, t_), dot(local, s_));
             if (angle < T(0)) angle += T(2) * pi<T>;
             out.push_back({t, point, error, normal_, entering, normal_, Vec2<T>(prism::sqrt(r2) / radius_, angle / (T(2) * pi<T>))});
@@ -4280,103 +4392,6 @@ template <Scalar T = float, class Height>
 
 } // namespace prism
 
-// ---- prism/geometry/plane.hpp ----
-// Plane: the half-space dot(normal, p) <= offset, a solid bounded by one plane.
-
-
-namespace prism {
-
-/// The half-space below a plane: inside where dot(normal, p) < offset, so the normal
-/// points out of the solid. A floor at y = 0 is Plane{{0, 1, 0}, 0}.
-template <Scalar T = float>
-class Plane {
-public:
-    /// The precision of the plane and the crossings.
-    using scalar_type = T;
-    /// At most one crossing.
-    static constexpr std::size_t max_crossings = 1;
-
-    // Plane Public Methods
-
-    /// The half-space dot(normal, p) <= offset; normal need not be unit length.
-    /// Throws std::invalid_argument for a zero or non-finite normal or offset.
-    constexpr Plane(const Vec3<T>& normal, T offset)
-    {
-        detail::require_nonzero("Plane normal", normal);
-        detail::require_finite("Plane offset", offset);
-        // Scaled by its largest component before normalising: |normal|^2 of (1e-45, 0, 0)
-        // underflows and of (3e38, 3e38, 0) overflows.
-        const T largest = max_component(abs(normal));
-        const Vec3<T> scaled = normal / largest;
-        const T len = length(scaled);
-        normal_ = scaled * (T(1) / len);
-        offset_ = offset / largest / len;
-        if (!is_finite(offset_))
-            detail::throw_invalid("Plane offset / |normal| must be finite, got ", offset, " / |", detail::describe(normal), "|");
-    }
-
-    /// The half-space bounded by the plane through `point` with outward `normal`.
-    [[nodiscard]] static constexpr Plane through(const Vec3<T>& point, const Vec3<T>& normal)
-    {
-        detail::require_finite("Plane point", point);
-        detail::require_nonzero("Plane normal", normal);
-        const Vec3<T> n = normal / max_component(abs(normal)); // as in the constructor: no overflow in the dot product
-        return Plane(n, dot(n, point));
-    }
-
-    /// The outward unit normal.
-    [[nodiscard]] constexpr const Vec3<T>& normal() const noexcept { return normal_; }
-    /// The solid is dot(normal(), p) < offset().
-    [[nodiscard]] constexpr T offset() const noexcept { return offset_; }
-    /// Unbounded: every point.
-    [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return Aabb<T>::universe(); }
-
-    /// Whether p is inside: dot(normal, p) < offset.
-    [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return dot(normal_, p) < offset_; }
-
-    /// The crossing of `ray` within `range`, if it meets the plane there, with its point refined onto the plane.
-    template <bool Surface = true>
-    [[nodiscard]] constexpr Crossings<T, 1> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
-    {
-        Crossings<T, 1> out;
-        const T denom = dot(normal_, ray.direction);
-        const T height = dot(normal_, ray.origin) - offset_;
-        if (denom == T(0)) { // parallel: inside or outside all along
-            out.inside_at_start = height < T(0);
-            return out;
-        }
-        const T t = -height / denom;
-        const bool entering = denom < T(0);
-        out.inside_at_start = entering ? t < range.min : range.min < t;
-        if (range.surrounds(t)) out.push_back(Surface ? crossing_at(ray, t, entering) : Crossing<T>::without_surface(t, entering));
-        return out;
-    }
-
-private:
-    // Plane Private Methods
-
-    [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, bool entering) const noexcept
-    {
-        // Refine the hit point by projecting it onto the plane. The residual is
-        // evaluated with error gamma(3)(|n|.|p| + |offset|), and that is what is left
-        // along the normal; along the plane the point carries its own rounding.
-        Vec3<T> point = ray.at(t);
-        point -= (dot(normal_, point) - offset_) * normal_;
-        const Vec3<T> n_abs = abs(normal_);
-        const T along = gamma<T>(4) * (dot(n_abs, abs(point)) + (offset_ < T(0) ? -offset_ : offset_));
-        const Vec3<T> error = along * n_abs + gamma<T>(1) * abs(point);
-        return Crossing<T>::flat(t, point, error, normal_, entering);
-    }
-
-    Vec3<T> normal_{T(0), T(1), T(0)};
-    T offset_ = T(0);
-};
-
-static_assert(Shape<Plane<float>>);
-static_assert(Shape<Plane<double>>);
-
-} // namespace prism
-
 // ---- prism/geometry/quad.hpp ----
 // Quad: a flat parallelogram, an open surface (an area light's usual shape).
 
@@ -4453,8 +4468,7 @@ public:
         if (denom == T(0)) return out;
         const T t = (offset_ - dot(normal_, ray.origin)) / denom;
         if (!range.surrounds(t)) return out;
-        Vec3<T> point = ray.at(t);
-        point -= (dot(normal_, point) - offset_) * normal_;
+        const Vec3<T> point = detail::onto_plane(normal_, offset_, ray.at(t));
         const Vec3<T> local = point - corner_;
         const T s = dot(local, dual_u_), r = dot(local, dual_v_);
         if (!(s >= T(0) && s <= T(1) && r >= T(0) && r <= T(1))) return out;
@@ -4462,11 +4476,7 @@ public:
         if constexpr (!Surface) {
             out.push_back(Crossing<T>::without_surface(t, entering));
         } else {
-            // As Plane's: the residual along the normal, the point's own rounding along the quad.
-            const Vec3<T> n_abs = abs(normal_);
-            const T along = gamma<T>(4) * (dot(n_abs, abs(point)) + std::abs(offset_));
-            const Vec3<T> error = along * n_abs + gamma<T>(1) * abs(point);
-            out.push_back({t, point, error, normal_, entering, normal_, Vec2<T>(s, r)});
+            out.push_back({t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering, normal_, Vec2<T>(s, r)});
         }
         return out;
     }
@@ -5775,6 +5785,27 @@ struct EmittedPhoton {
     Ray<T> ray; ///< where the photon starts and where it goes
     Rgb<T> weight{T(1)}; ///< the weight on the power the tracer gives it
     bool without_falloff = false; ///< whether the light does not fall off with distance
+};
+
+/// The cone of directions from a point that holds a sphere: its unit axis and the cosine
+/// of its half-angle, -1 from inside the sphere (every direction).
+template <Scalar T>
+struct ConeToward {
+    Vec3<T> axis;     ///< from the point toward the sphere's centre
+    T cos_half_angle; ///< -1: every direction (the point is inside the sphere)
+
+    /// The cone from `from` holding `sphere`.
+    [[nodiscard]] static ConeToward of(const Vec3<T>& from, const BoundingSphere<T>& sphere) noexcept
+    {
+        const Vec3<T> to = sphere.center - from;
+        const T distance = length(to);
+        if (!(distance > sphere.radius)) return {to / distance, T(-1)};
+        const T sin_half = sphere.radius / distance;
+        return {to / distance, prism::sqrt(T(1) - sin_half * sin_half)};
+    }
+
+    /// Its solid angle, 2 pi (1 - cos), 4 pi for every direction.
+    [[nodiscard]] T solid_angle() const noexcept { return T(2) * pi<T> * (T(1) - cos_half_angle); }
 };
 
 /// A light: `sample(p, u)`, what arrives at a shading point (for a light with extent,
@@ -10081,7 +10112,7 @@ public:
                 if constexpr (SceneT::template slot_emits<I>) {
                     const auto& object = scene_->template object_at<I>(key.index);
                     const T sides = object.material.two_sided ? T(2) : T(1);
-                    const T omega = std::min(cone_solid_angle(bounding_sphere(object.shape).center, *aim.target), T(2) * pi<T> * sides);
+                    const T omega = std::min(ConeToward<T>::of(bounding_sphere(object.shape).center, *aim.target).solid_angle(), T(2) * pi<T> * sides);
                     sum += table.powers[e] / (pi<T> * sides) * omega; // L A omega
                 }
             });
@@ -10118,18 +10149,10 @@ public:
                 }
                 // Uniform over the cone toward the target from this point (every direction
                 // from inside it), weighted by the radiance the emitter sends along it.
-                const Vec3<T> to = aim.target->center - s.point;
-                const T d2 = length_squared(to), r2 = aim.target->radius * aim.target->radius;
-                Vec3<T> w;
-                T omega;
-                if (d2 <= r2) {
-                    w = uniform_sphere<T>(rng);
-                    omega = T(4) * pi<T>;
-                } else {
-                    const T cos_max = prism::sqrt(T(1) - r2 / d2);
-                    w = uniform_cone(to / prism::sqrt(d2), cos_max, rng.uniform<T>(), rng.uniform<T>());
-                    omega = T(2) * pi<T> * (T(1) - cos_max);
-                }
+                const ConeToward<T> cone = ConeToward<T>::of(s.point, *aim.target);
+                const T omega = cone.solid_angle();
+                const T u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
+                const Vec3<T> w = cone.cos_half_angle <= T(-1) ? uniform_sphere(u1, u2) : uniform_cone(cone.axis, cone.cos_half_angle, u1, u2);
                 const T cos = dot(w, s.normal);
                 const T emitting = two_sided ? std::abs(cos) : std::max(cos, T(0));
                 const Rgb<T> weight = object.material.emitted_radiance() * (emitting * omega / (s.pdf * pick.probability)) / aim.power;
@@ -10144,14 +10167,6 @@ public:
     constexpr void validate() const noexcept {}
 
 private:
-    /// The solid angle of the cone from p that holds the sphere (4 pi from inside it).
-    [[nodiscard]] static T cone_solid_angle(const Vec3<T>& p, const BoundingSphere<T>& sphere) noexcept
-    {
-        const T d2 = length_squared(sphere.center - p), r2 = sphere.radius * sphere.radius;
-        if (d2 <= r2) return T(4) * pi<T>;
-        return T(2) * pi<T> * (T(1) - prism::sqrt(T(1) - r2 / d2));
-    }
-
     /// 0 where a channel's ratio is not finite (a channel with no power at all).
     [[nodiscard]] static Rgb<T> safe(Rgb<T> w) noexcept
     {
@@ -12076,7 +12091,7 @@ struct PointLight {
     [[nodiscard]] Rgb<T> photon_power(const PhotonAim<T>& aim) const noexcept
     {
         if (!aim.target) return power();
-        const Cone cone = cone_toward(*aim.target);
+        const ConeToward<T> cone = ConeToward<T>::of(position, *aim.target);
         return cone.cos_half_angle <= T(-1) ? power() : power() * (T(0.5) * (T(1) - cone.cos_half_angle));
     }
 
@@ -12085,7 +12100,7 @@ struct PointLight {
     {
         const bool without_falloff = falloff == Falloff::none;
         if (!aim.target) return {{position, uniform_sphere(u, v)}, Rgb<T>(T(1)), without_falloff};
-        const Cone cone = cone_toward(*aim.target);
+        const ConeToward<T> cone = ConeToward<T>::of(position, *aim.target);
         const Vec3<T> direction = cone.cos_half_angle <= T(-1) ? uniform_sphere(u, v) : uniform_cone(cone.axis, cone.cos_half_angle, u, v);
         return {{position, direction}, Rgb<T>(T(1)), without_falloff};
     }
@@ -12100,20 +12115,6 @@ struct PointLight {
             detail::throw_invalid("PointLight intensity ", detail::describe(intensity), " is too large: its power 4 pi I overflows");
     }
 
-private:
-    struct Cone {
-        Vec3<T> axis;
-        T cos_half_angle; ///< -1: every direction (the light is inside the sphere)
-    };
-
-    [[nodiscard]] Cone cone_toward(const BoundingSphere<T>& sphere) const noexcept
-    {
-        const Vec3<T> to = sphere.center - position;
-        const T distance = length(to);
-        if (!(distance > sphere.radius)) return {to / distance, T(-1)};
-        const T sin_half = sphere.radius / distance;
-        return {to / distance, prism::sqrt(T(1) - sin_half * sin_half)};
-    }
 };
 
 static_assert(Light<PointLight<float>>);
@@ -12182,12 +12183,12 @@ struct SpotLight {
     [[nodiscard]] Rgb<T> photon_power(const PhotonAim<T>& aim) const noexcept
     {
         if (!aim.target) return power();
-        const Cone c = cone_toward(*aim.target);
+        const ConeToward<T> c = ConeToward<T>::of(position, *aim.target);
         if (c.cos_half_angle <= T(-1)) return power();
         // The cones miss each other when their axes are further apart than their half-angles together.
         const T apart = std::acos(clamp(dot(c.axis, axis()), T(-1), T(1)));
         if (apart > std::acos(c.cos_half_angle) + radians(outer_angle)) return Rgb<T>(T(0));
-        return intensity * (T(2) * pi<T> * (T(1) - c.cos_half_angle));
+        return intensity * c.solid_angle();
     }
 
     /// Everywhere: uniform over the outer cone, weighted by the falloff over its mean
@@ -12196,7 +12197,7 @@ struct SpotLight {
     {
         const Vec3<T> a = axis();
         if (aim.target) {
-            const Cone c = cone_toward(*aim.target);
+            const ConeToward<T> c = ConeToward<T>::of(position, *aim.target);
             if (c.cos_half_angle > T(-1)) {
                 const Vec3<T> w = uniform_cone(c.axis, c.cos_half_angle, u, v);
                 return {{position, w}, Rgb<T>(falloff(dot(w, a)))};
@@ -12222,11 +12223,6 @@ struct SpotLight {
     }
 
 private:
-    struct Cone {
-        Vec3<T> axis;
-        T cos_half_angle; ///< -1: every direction (the light is inside the sphere)
-    };
-
     [[nodiscard]] static T radians(T degrees) noexcept { return degrees * (pi<T> / T(180)); }
     [[nodiscard]] static T cosine(T degrees) noexcept { return std::cos(radians(degrees)); }
     [[nodiscard]] Vec3<T> axis() const noexcept { return normalize(direction); }
@@ -12238,15 +12234,6 @@ private:
         const T cos_outer = cosine(outer_angle), cos_inner = cosine(inner_angle);
         const T integral = (T(1) - cos_inner) + T(0.5) * (cos_inner - cos_outer);
         return (T(1) - cos_outer) / integral;
-    }
-
-    [[nodiscard]] Cone cone_toward(const BoundingSphere<T>& sphere) const noexcept
-    {
-        const Vec3<T> to = sphere.center - position;
-        const T distance = length(to);
-        if (!(distance > sphere.radius)) return {to / distance, T(-1)};
-        const T sin_half = sphere.radius / distance;
-        return {to / distance, prism::sqrt(T(1) - sin_half * sin_half)};
     }
 };
 

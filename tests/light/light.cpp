@@ -13,9 +13,9 @@ namespace {
 using prism::Rgb;
 using prism::Vec3;
 
-/// A spot light: intensity I inside a cone of half-angle acos(cos_cutoff) about `axis`,
+/// A spot light with a hard edge: intensity I inside a cone of half-angle acos(cos_cutoff) about `axis`,
 /// nothing outside (a hard edge).
-struct SpotLight {
+struct HardSpot {
     using scalar_type = double;
     static constexpr bool delta = true; // from one point
 
@@ -49,7 +49,7 @@ struct SpotLight {
     void validate() const {}
 };
 
-static_assert(prism::Light<SpotLight>);
+static_assert(prism::Light<HardSpot>);
 
 } // namespace
 
@@ -57,7 +57,7 @@ TEST_CASE("a spot light defined in a test lights a disk, by shadow rays and by i
 {
     // 2 above a floor, cos_cutoff 0.8: the lit disk has radius 2 tan(acos 0.8) = 1.5.
     const double intensity = 10;
-    const prism::Scene scene{prism::Lights{SpotLight{.position = {0, 2, 0}, .cos_cutoff = 0.8, .intensity = Rgb<double>(intensity)}},
+    const prism::Scene scene{prism::Lights{HardSpot{.position = {0, 2, 0}, .cos_cutoff = 0.8, .intensity = Rgb<double>(intensity)}},
                              prism::Object{prism::Plane<double>({0, 1, 0}, 0), prism::Diffuse<double>{.albedo = {.color = Rgb<double>(0)}}}};
     const prism::PhotonMaps maps = prism::trace_photons(scene, {.global_photons = 200000, .caustic_photons = 0, .shadow_photons = false, .seed = 9});
     double total = 0, outside = 0;
@@ -74,7 +74,7 @@ TEST_CASE("a spot light defined in a test lights a disk, by shadow rays and by i
         CHECK(maps.global.irradiance_within({float(x), 0, 0}, {0, 1, 0}, 0.15f).x == doctest::Approx(expected).epsilon(0.05));
     }
     // Whitted's shadow rays: L = albedo / pi E inside the disk, nothing outside it.
-    const prism::Scene grey{prism::Lights{SpotLight{.position = {0, 2, 0}, .cos_cutoff = 0.8, .intensity = Rgb<double>(intensity)}},
+    const prism::Scene grey{prism::Lights{HardSpot{.position = {0, 2, 0}, .cos_cutoff = 0.8, .intensity = Rgb<double>(intensity)}},
                             prism::Object{prism::Plane<double>({0, 1, 0}, 0), prism::Diffuse<double>{.albedo = {.color = Rgb<double>(0.5)}}}};
     const prism::Whitted whitted(grey);
     const double r2 = 1 + 4;

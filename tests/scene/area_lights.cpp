@@ -15,21 +15,21 @@ using namespace prism;
 
 namespace {
 
-constexpr double albedo = 0.5;
+constexpr double floor_albedo = 0.5;
 
 /// A floor of albedo 0.5 at y = 0 under the emitter `light`: the only other object.
 template <class Shape>
 auto lit_floor(Shape light, double radiance, bool two_sided = false)
 {
     return Scene{Lights{}, Object{std::move(light), Emissive<double>{.radiance = Rgb<double>(radiance), .two_sided = two_sided}},
-                 Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(albedo)}}}};
+                 Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(floor_albedo)}}}};
 }
 
 /// The radiance every integrator that sees direct light gives the floor at (x, 0, z), seen
 /// from straight above: the mean of n estimates each (Whitted and the photon mapper on
 /// their jittered grids, the path tracer by each of its three strategies).
 template <class SceneT>
-void check_every_integrator(const SceneT& scene, double x, double z, double expected, const std::string& what)
+void check_area_light_everywhere(const SceneT& scene, double x, double z, double expected, const std::string& what)
 {
     const Ray<double> down{{x, 1e-3, z}, {0, -1, 0}};
     const auto mean_of = [&](const auto& integrator, int n) {
@@ -53,7 +53,7 @@ void check_every_integrator(const SceneT& scene, double x, double z, double expe
 /// The irradiance at the origin from a rectangle of radiance L parallel to the floor at
 /// height h, with a corner above the origin and sides a, b (the differential form factor
 /// to a parallel rectangle, times pi L).
-double corner_irradiance(double radiance, double a, double b, double h)
+double parallel_corner_irradiance(double radiance, double a, double b, double h)
 {
     const double x = a / h, y = b / h;
     return radiance / 2 *
@@ -66,7 +66,7 @@ TEST_CASE("a disk light: E = pi L r^2 / (r^2 + h^2) on its axis, in every integr
 {
     const double L = 3, r = 0.4, h = 1.2;
     const auto scene = lit_floor(Disk<double>({0, h, 0}, {0, -1, 0}, r), L);
-    check_every_integrator(scene, 0, 0, albedo / pi<double> * (pi<double> * L * r * r / (r * r + h * h)), "disk");
+    check_area_light_everywhere(scene, 0, 0, floor_albedo / pi<double> * (pi<double> * L * r * r / (r * r + h * h)), "disk");
 }
 
 TEST_CASE("a rectangle light: the parallel form factor's closed form, on and off its axis, in every integrator")
@@ -75,13 +75,13 @@ TEST_CASE("a rectangle light: the parallel form factor's closed form, on and off
     // The rectangle [-0.5, 0.7] x [-0.3, 0.4] at height h, facing down (x cross z = -y).
     const auto scene = lit_floor(Quad<double>({-0.5, h, -0.3}, {1.2, 0, 0}, {0, 0, 0.7}), L);
     // Below an inside point, four corner rectangles; beside it, differences of them.
-    const double under = corner_irradiance(L, 0.5, 0.3, h) + corner_irradiance(L, 0.7, 0.3, h) + corner_irradiance(L, 0.5, 0.4, h) +
-                         corner_irradiance(L, 0.7, 0.4, h);
-    check_every_integrator(scene, 0, 0, albedo / pi<double> * under, "rectangle, under it");
+    const double under = parallel_corner_irradiance(L, 0.5, 0.3, h) + parallel_corner_irradiance(L, 0.7, 0.3, h) + parallel_corner_irradiance(L, 0.5, 0.4, h) +
+                         parallel_corner_irradiance(L, 0.7, 0.4, h);
+    check_area_light_everywhere(scene, 0, 0, floor_albedo / pi<double> * under, "rectangle, under it");
     // At x = 1.2: the rectangle spans [-1.7, -0.5] in x from there.
-    const double beside = corner_irradiance(L, 1.7, 0.3, h) - corner_irradiance(L, 0.5, 0.3, h) + corner_irradiance(L, 1.7, 0.4, h) -
-                          corner_irradiance(L, 0.5, 0.4, h);
-    check_every_integrator(scene, 1.2, 0, albedo / pi<double> * beside, "rectangle, beside it");
+    const double beside = parallel_corner_irradiance(L, 1.7, 0.3, h) - parallel_corner_irradiance(L, 0.5, 0.3, h) + parallel_corner_irradiance(L, 1.7, 0.4, h) -
+                          parallel_corner_irradiance(L, 0.5, 0.4, h);
+    check_area_light_everywhere(scene, 1.2, 0, floor_albedo / pi<double> * beside, "rectangle, beside it");
 }
 
 TEST_CASE("a sphere light: E = pi L sin^2 theta for a surface facing it, near and far, in every integrator")
@@ -90,7 +90,7 @@ TEST_CASE("a sphere light: E = pi L sin^2 theta for a surface facing it, near an
     for (const double D : {0.45, 2.0}) {
         const auto scene = lit_floor(Sphere<double>({0, D, 0}, R), L);
         const double sin2 = R * R / (D * D);
-        check_every_integrator(scene, 0, 0, albedo / pi<double> * pi<double> * L * sin2, "sphere at " + std::to_string(D));
+        check_area_light_everywhere(scene, 0, 0, floor_albedo / pi<double> * pi<double> * L * sin2, "sphere at " + std::to_string(D));
     }
 }
 
@@ -101,9 +101,9 @@ TEST_CASE("a mesh light: two triangles light the floor as the quad they make, an
     square.positions = {{-0.5, h, -0.3}, {0.7, h, -0.3}, {0.7, h, 0.4}, {-0.5, h, 0.4}};
     square.triangles = {{0, 1, 2}, {0, 2, 3}}; // wound to face down: (x) cross (x + z) = -y
     const auto scene = lit_floor(TriangleMesh<double>(square), L);
-    const double under = corner_irradiance(L, 0.5, 0.3, h) + corner_irradiance(L, 0.7, 0.3, h) + corner_irradiance(L, 0.5, 0.4, h) +
-                         corner_irradiance(L, 0.7, 0.4, h);
-    check_every_integrator(scene, 0, 0, albedo / pi<double> * under, "two triangles");
+    const double under = parallel_corner_irradiance(L, 0.5, 0.3, h) + parallel_corner_irradiance(L, 0.7, 0.3, h) + parallel_corner_irradiance(L, 0.5, 0.4, h) +
+                         parallel_corner_irradiance(L, 0.7, 0.4, h);
+    check_area_light_everywhere(scene, 0, 0, floor_albedo / pi<double> * under, "two triangles");
     // Every photon leaves the light and lands on the floor: their power is the light's.
     const PhotonMaps maps = trace_photons(scene, {.global_photons = 100000, .caustic_photons = 0, .shadow_photons = false, .seed = 4});
     double total = 0;
@@ -114,7 +114,7 @@ TEST_CASE("a mesh light: two triangles light the floor as the quad they make, an
 TEST_CASE("an area light shines from its front, and from its back only when two-sided")
 {
     const double L = 3, r = 0.4, h = 1.2;
-    const double expected = albedo * L * r * r / (r * r + h * h);
+    const double expected = floor_albedo * L * r * r / (r * r + h * h);
     const Ray<double> down{{0, 1e-3, 0}, {0, -1, 0}};
     Pcg32 rng(1, 1);
     // Facing up, away from the floor: one-sided it lights nothing below it.

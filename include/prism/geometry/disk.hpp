@@ -5,6 +5,7 @@
 #include <prism/core/check.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/core/sampling.hpp>
+#include <prism/geometry/plane.hpp>
 #include <prism/geometry/shape.hpp>
 #include <prism/geometry/surface_point.hpp>
 
@@ -68,8 +69,7 @@ public:
         if (denom == T(0)) return out;
         const T t = (offset_ - dot(normal_, ray.origin)) / denom;
         if (!range.surrounds(t)) return out;
-        Vec3<T> point = ray.at(t);
-        point -= (dot(normal_, point) - offset_) * normal_;
+        const Vec3<T> point = detail::onto_plane(normal_, offset_, ray.at(t));
         const Vec3<T> local = point - center_;
         const T r2 = length_squared(local);
         if (!(r2 <= radius_ * radius_)) return out;
@@ -77,9 +77,7 @@ public:
         if constexpr (!Surface) {
             out.push_back(Crossing<T>::without_surface(t, entering));
         } else {
-            const Vec3<T> n_abs = abs(normal_);
-            const T along = gamma<T>(4) * (dot(n_abs, abs(point)) + std::abs(offset_));
-            const Vec3<T> error = along * n_abs + gamma<T>(1) * abs(point);
+            const Vec3<T> error = detail::plane_point_error(normal_, offset_, point);
             T angle = std::atan2(dot(local, t_), dot(local, s_));
             if (angle < T(0)) angle += T(2) * pi<T>;
             out.push_back({t, point, error, normal_, entering, normal_, Vec2<T>(prism::sqrt(r2) / radius_, angle / (T(2) * pi<T>))});

@@ -8,6 +8,30 @@
 
 namespace prism {
 
+namespace detail {
+
+/// p moved along the unit normal n onto the plane dot(n, x) = offset (a crossing point
+/// computed as o + t d, refined).
+template <Scalar T>
+[[nodiscard]] constexpr Vec3<T> onto_plane(const Vec3<T>& n, T offset, Vec3<T> p) noexcept
+{
+    p -= (dot(n, p) - offset) * n;
+    return p;
+}
+
+/// The error bound of a point onto_plane gave: the residual is evaluated with error
+/// gamma(3)(|n|.|p| + |offset|), and that is what is left along the normal; along the
+/// plane the point carries its own rounding.
+template <Scalar T>
+[[nodiscard]] constexpr Vec3<T> plane_point_error(const Vec3<T>& n, T offset, const Vec3<T>& p) noexcept
+{
+    const Vec3<T> n_abs = abs(n);
+    const T along = gamma<T>(4) * (dot(n_abs, abs(p)) + (offset < T(0) ? -offset : offset));
+    return along * n_abs + gamma<T>(1) * abs(p);
+}
+
+} // namespace detail
+
 /// The half-space below a plane: inside where dot(normal, p) < offset, so the normal
 /// points out of the solid. A floor at y = 0 is Plane{{0, 1, 0}, 0}.
 template <Scalar T = float>
@@ -79,15 +103,9 @@ private:
 
     [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, bool entering) const noexcept
     {
-        // Refine the hit point by projecting it onto the plane. The residual is
-        // evaluated with error gamma(3)(|n|.|p| + |offset|), and that is what is left
-        // along the normal; along the plane the point carries its own rounding.
-        Vec3<T> point = ray.at(t);
-        point -= (dot(normal_, point) - offset_) * normal_;
-        const Vec3<T> n_abs = abs(normal_);
-        const T along = gamma<T>(4) * (dot(n_abs, abs(point)) + (offset_ < T(0) ? -offset_ : offset_));
-        const Vec3<T> error = along * n_abs + gamma<T>(1) * abs(point);
-        return Crossing<T>::flat(t, point, error, normal_, entering);
+        // The hit point projected onto the plane, with its error bound.
+        const Vec3<T> point = detail::onto_plane(normal_, offset_, ray.at(t));
+        return Crossing<T>::flat(t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering);
     }
 
     Vec3<T> normal_{T(0), T(1), T(0)};

@@ -5,6 +5,7 @@
 #include <prism/core/check.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/core/sampling.hpp>
+#include <prism/geometry/plane.hpp>
 #include <prism/geometry/shape.hpp>
 #include <prism/geometry/surface_point.hpp>
 
@@ -80,8 +81,7 @@ public:
         if (denom == T(0)) return out;
         const T t = (offset_ - dot(normal_, ray.origin)) / denom;
         if (!range.surrounds(t)) return out;
-        Vec3<T> point = ray.at(t);
-        point -= (dot(normal_, point) - offset_) * normal_;
+        const Vec3<T> point = detail::onto_plane(normal_, offset_, ray.at(t));
         const Vec3<T> local = point - corner_;
         const T s = dot(local, dual_u_), r = dot(local, dual_v_);
         if (!(s >= T(0) && s <= T(1) && r >= T(0) && r <= T(1))) return out;
@@ -89,11 +89,7 @@ public:
         if constexpr (!Surface) {
             out.push_back(Crossing<T>::without_surface(t, entering));
         } else {
-            // As Plane's: the residual along the normal, the point's own rounding along the quad.
-            const Vec3<T> n_abs = abs(normal_);
-            const T along = gamma<T>(4) * (dot(n_abs, abs(point)) + std::abs(offset_));
-            const Vec3<T> error = along * n_abs + gamma<T>(1) * abs(point);
-            out.push_back({t, point, error, normal_, entering, normal_, Vec2<T>(s, r)});
+            out.push_back({t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering, normal_, Vec2<T>(s, r)});
         }
         return out;
     }

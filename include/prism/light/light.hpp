@@ -52,6 +52,27 @@ struct EmittedPhoton {
     bool without_falloff = false; ///< whether the light does not fall off with distance
 };
 
+/// The cone of directions from a point that holds a sphere: its unit axis and the cosine
+/// of its half-angle, -1 from inside the sphere (every direction).
+template <Scalar T>
+struct ConeToward {
+    Vec3<T> axis;     ///< from the point toward the sphere's centre
+    T cos_half_angle; ///< -1: every direction (the point is inside the sphere)
+
+    /// The cone from `from` holding `sphere`.
+    [[nodiscard]] static ConeToward of(const Vec3<T>& from, const BoundingSphere<T>& sphere) noexcept
+    {
+        const Vec3<T> to = sphere.center - from;
+        const T distance = length(to);
+        if (!(distance > sphere.radius)) return {to / distance, T(-1)};
+        const T sin_half = sphere.radius / distance;
+        return {to / distance, prism::sqrt(T(1) - sin_half * sin_half)};
+    }
+
+    /// Its solid angle, 2 pi (1 - cos), 4 pi for every direction.
+    [[nodiscard]] T solid_angle() const noexcept { return T(2) * pi<T> * (T(1) - cos_half_angle); }
+};
+
 /// A light: `sample(p, u)`, what arrives at a shading point (for a light with extent,
 /// from the point of it that u in the unit square picks); `photon_power(aim)`, the power it
 /// sends where it is aimed (0: it sends no photons there); `emit_photon(aim, u, v)`, the

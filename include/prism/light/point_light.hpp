@@ -46,7 +46,7 @@ struct PointLight {
     [[nodiscard]] Rgb<T> photon_power(const PhotonAim<T>& aim) const noexcept
     {
         if (!aim.target) return power();
-        const Cone cone = cone_toward(*aim.target);
+        const ConeToward<T> cone = ConeToward<T>::of(position, *aim.target);
         return cone.cos_half_angle <= T(-1) ? power() : power() * (T(0.5) * (T(1) - cone.cos_half_angle));
     }
 
@@ -55,7 +55,7 @@ struct PointLight {
     {
         const bool without_falloff = falloff == Falloff::none;
         if (!aim.target) return {{position, uniform_sphere(u, v)}, Rgb<T>(T(1)), without_falloff};
-        const Cone cone = cone_toward(*aim.target);
+        const ConeToward<T> cone = ConeToward<T>::of(position, *aim.target);
         const Vec3<T> direction = cone.cos_half_angle <= T(-1) ? uniform_sphere(u, v) : uniform_cone(cone.axis, cone.cos_half_angle, u, v);
         return {{position, direction}, Rgb<T>(T(1)), without_falloff};
     }
@@ -70,20 +70,6 @@ struct PointLight {
             detail::throw_invalid("PointLight intensity ", detail::describe(intensity), " is too large: its power 4 pi I overflows");
     }
 
-private:
-    struct Cone {
-        Vec3<T> axis;
-        T cos_half_angle; ///< -1: every direction (the light is inside the sphere)
-    };
-
-    [[nodiscard]] Cone cone_toward(const BoundingSphere<T>& sphere) const noexcept
-    {
-        const Vec3<T> to = sphere.center - position;
-        const T distance = length(to);
-        if (!(distance > sphere.radius)) return {to / distance, T(-1)};
-        const T sin_half = sphere.radius / distance;
-        return {to / distance, prism::sqrt(T(1) - sin_half * sin_half)};
-    }
 };
 
 static_assert(Light<PointLight<float>>);

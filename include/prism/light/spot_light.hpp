@@ -64,12 +64,12 @@ struct SpotLight {
     [[nodiscard]] Rgb<T> photon_power(const PhotonAim<T>& aim) const noexcept
     {
         if (!aim.target) return power();
-        const Cone c = cone_toward(*aim.target);
+        const ConeToward<T> c = ConeToward<T>::of(position, *aim.target);
         if (c.cos_half_angle <= T(-1)) return power();
         // The cones miss each other when their axes are further apart than their half-angles together.
         const T apart = std::acos(clamp(dot(c.axis, axis()), T(-1), T(1)));
         if (apart > std::acos(c.cos_half_angle) + radians(outer_angle)) return Rgb<T>(T(0));
-        return intensity * (T(2) * pi<T> * (T(1) - c.cos_half_angle));
+        return intensity * c.solid_angle();
     }
 
     /// Everywhere: uniform over the outer cone, weighted by the falloff over its mean
@@ -78,7 +78,7 @@ struct SpotLight {
     {
         const Vec3<T> a = axis();
         if (aim.target) {
-            const Cone c = cone_toward(*aim.target);
+            const ConeToward<T> c = ConeToward<T>::of(position, *aim.target);
             if (c.cos_half_angle > T(-1)) {
                 const Vec3<T> w = uniform_cone(c.axis, c.cos_half_angle, u, v);
                 return {{position, w}, Rgb<T>(falloff(dot(w, a)))};
@@ -104,11 +104,6 @@ struct SpotLight {
     }
 
 private:
-    struct Cone {
-        Vec3<T> axis;
-        T cos_half_angle; ///< -1: every direction (the light is inside the sphere)
-    };
-
     [[nodiscard]] static T radians(T degrees) noexcept { return degrees * (pi<T> / T(180)); }
     [[nodiscard]] static T cosine(T degrees) noexcept { return std::cos(radians(degrees)); }
     [[nodiscard]] Vec3<T> axis() const noexcept { return normalize(direction); }
@@ -120,15 +115,6 @@ private:
         const T cos_outer = cosine(outer_angle), cos_inner = cosine(inner_angle);
         const T integral = (T(1) - cos_inner) + T(0.5) * (cos_inner - cos_outer);
         return (T(1) - cos_outer) / integral;
-    }
-
-    [[nodiscard]] Cone cone_toward(const BoundingSphere<T>& sphere) const noexcept
-    {
-        const Vec3<T> to = sphere.center - position;
-        const T distance = length(to);
-        if (!(distance > sphere.radius)) return {to / distance, T(-1)};
-        const T sin_half = sphere.radius / distance;
-        return {to / distance, prism::sqrt(T(1) - sin_half * sin_half)};
     }
 };
 

@@ -139,7 +139,7 @@ public:
                 if constexpr (SceneT::template slot_emits<I>) {
                     const auto& object = scene_->template object_at<I>(key.index);
                     const T sides = object.material.two_sided ? T(2) : T(1);
-                    const T omega = std::min(cone_solid_angle(bounding_sphere(object.shape).center, *aim.target), T(2) * pi<T> * sides);
+                    const T omega = std::min(ConeToward<T>::of(bounding_sphere(object.shape).center, *aim.target).solid_angle(), T(2) * pi<T> * sides);
                     sum += table.powers[e] / (pi<T> * sides) * omega; // L A omega
                 }
             });
@@ -176,18 +176,10 @@ public:
                 }
                 // Uniform over the cone toward the target from this point (every direction
                 // from inside it), weighted by the radiance the emitter sends along it.
-                const Vec3<T> to = aim.target->center - s.point;
-                const T d2 = length_squared(to), r2 = aim.target->radius * aim.target->radius;
-                Vec3<T> w;
-                T omega;
-                if (d2 <= r2) {
-                    w = uniform_sphere<T>(rng);
-                    omega = T(4) * pi<T>;
-                } else {
-                    const T cos_max = prism::sqrt(T(1) - r2 / d2);
-                    w = uniform_cone(to / prism::sqrt(d2), cos_max, rng.uniform<T>(), rng.uniform<T>());
-                    omega = T(2) * pi<T> * (T(1) - cos_max);
-                }
+                const ConeToward<T> cone = ConeToward<T>::of(s.point, *aim.target);
+                const T omega = cone.solid_angle();
+                const T u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
+                const Vec3<T> w = cone.cos_half_angle <= T(-1) ? uniform_sphere(u1, u2) : uniform_cone(cone.axis, cone.cos_half_angle, u1, u2);
                 const T cos = dot(w, s.normal);
                 const T emitting = two_sided ? std::abs(cos) : std::max(cos, T(0));
                 const Rgb<T> weight = object.material.emitted_radiance() * (emitting * omega / (s.pdf * pick.probability)) / aim.power;
@@ -202,14 +194,6 @@ public:
     constexpr void validate() const noexcept {}
 
 private:
-    /// The solid angle of the cone from p that holds the sphere (4 pi from inside it).
-    [[nodiscard]] static T cone_solid_angle(const Vec3<T>& p, const BoundingSphere<T>& sphere) noexcept
-    {
-        const T d2 = length_squared(sphere.center - p), r2 = sphere.radius * sphere.radius;
-        if (d2 <= r2) return T(4) * pi<T>;
-        return T(2) * pi<T> * (T(1) - prism::sqrt(T(1) - r2 / d2));
-    }
-
     /// 0 where a channel's ratio is not finite (a channel with no power at all).
     [[nodiscard]] static Rgb<T> safe(Rgb<T> w) noexcept
     {
