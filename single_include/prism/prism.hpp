@@ -5843,6 +5843,11 @@ template <Light L>
 template <Light L>
 inline constexpr bool is_delta_light = bool(L::delta);
 
+/// Whether L is seen by the rays that leave the scene (an environment light, which says
+/// so with `at_infinity = true` and gives `arriving_from(direction)` and `pdf(direction)`).
+template <class L>
+inline constexpr bool is_at_infinity = requires { requires bool(L::at_infinity); };
+
 } // namespace prism
 
 // ---- prism/medium/medium.hpp ----
@@ -8127,8 +8132,8 @@ struct IgnoreEmitters {
 /// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
 /// on_diffuse(material, WalkVertex) is called at every diffuse surface and returns the
 /// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
-/// there); on_escape(ray, power, specular_only) when the path leaves the
-/// scene; on_emitter(material, WalkVertex) where it meets a surface that emits (an area
+/// there); on_escape(ray, power, specular_only, last_pdf) when the path leaves the
+/// scene (last_pdf: as WalkVertex's); on_emitter(material, WalkVertex) where it meets a surface that emits (an area
 /// light; the walk scatters there only by the lobes the material also has). `Mode`:
 /// whether the path is a photon's or a camera's (scatter_photon).
 template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape, class OnEmitter = IgnoreEmitters>
@@ -8151,7 +8156,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         const auto hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, &path)
                                        : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
         if (!hit) {
-            on_escape(segment, power, diffuse_bounces == 0);
+            on_escape(segment, power, diffuse_bounces == 0, last_pdf);
             return;
         }
         const Crossing<T>& c = hit->crossing;
@@ -8399,7 +8404,7 @@ private:
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         return visit(material, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
                     },
-                    [](const Ray<T>&, const Rgb<T>&, bool) {});
+                    [](const Ray<T>&, const Rgb<T>&, bool, T) {});
     }
 
     /// Store photon i: in the caustic pass only L S+ D, going on past it only by delta lobes.
@@ -10218,6 +10223,12 @@ inline constexpr std::size_t light_count_of = 0;
 template <class... Ls>
 inline constexpr std::size_t light_count_of<Lights<Ls...>> = sizeof...(Ls);
 
+/// Whether every light of a Lights{...} is a delta light.
+template <class List>
+inline constexpr bool all_delta = true;
+template <class... Ls>
+inline constexpr bool all_delta<Lights<Ls...>> = (is_delta_light<Ls> && ...);
+
 /// Whether every light of the list has scalar type T (true for what is no list: that
 /// has its own error).
 template <class List, class T>
@@ -10402,6 +10413,9 @@ public:
     static constexpr bool slot_emits = detail::slot_emits<SlotAt<I>>;
     /// Some material emits: the scene has area lights (AreaLights, one more light).
     static constexpr bool has_emitters = detail::any_of({detail::slot_emits<Slots>...});
+    /// Some light is not a delta light (an area or environment light): it is sampled
+    /// point by point, with random numbers.
+    static constexpr bool has_lights_with_extent = has_emitters || !detail::all_delta<LightsOfScene>;
     static_assert(detail::light_count_of<LightsOfScene> > 0 || has_emitters,
                   "a scene needs a light: Lights{...} with at least one (a PointLight, a DirectionalLight, ...), or an object whose material emits (Emissive)");
 
@@ -10558,6 +10572,15 @@ public:
         if constexpr (has_emitters) f(area_lights());
     }
 
+    /// The radiance a ray that leaves the scene along `direction` sees: the background,
+    /// and every environment light's.
+    [[nodiscard]] Rgb<T> escaped(const Vec3<T>& direction) const noexcept
+    {
+        Rgb<T> seen = background;
+        std::apply([&](const auto&... light) { ((seen += arriving(light, direction)), ...); }, lights.items);
+        return seen;
+    }
+
     /// The number of lights: those of Lights{...}, and one more for the area lights.
     static constexpr std::size_t light_count = detail::light_count_of<LightsOfScene> + (has_emitters ? 1 : 0);
 
@@ -10591,6 +10614,14 @@ private:
     [[no_unique_address]] std::conditional_t<slot_count == 1, std::vector<typename SlotAt<0>::shape_type>, detail::NoShapes> shapes_;
 
     // Scene Private Methods
+
+    /// What `light` sends along -direction if it is at infinity, else nothing.
+    template <class L>
+    [[nodiscard]] static Rgb<T> arriving(const L& light, const Vec3<T>& direction) noexcept
+    {
+        if constexpr (is_at_infinity<L>) return light.arriving_from(direction);
+        else return (void)light, (void)direction, Rgb<T>(T(0));
+    }
 
     /// Light I: of Lights{...}, or past them the area lights (a template of I, so that a
     /// scene without area lights never names them: clang checks what an index does not
@@ -11172,11 +11203,26 @@ public:
                         sum += at.power * diffuse_response(material, c).brdf() * irradiance;
                         return go_on;
                     },
-                    [&](const Ray<T>&, const Rgb<T>& weight, bool specular_only) {
-                        if (specular_only) sum += weight * scene_->background;
+                    [&](const Ray<T>& leaving, const Rgb<T>& weight, bool specular_only, T last_pdf) {
+                        if (specular_only) {
+                            sum += weight * scene_->escaped(leaving.direction);
+                            return;
+                        }
+                        // After a diffuse bounce the background lights nothing; an
+                        // environment light does, shared with its samples as an area light's.
+                        scene_->for_each_light([&]<class L>(const L& light) {
+                            if constexpr (is_at_infinity<L>) {
+                                const Vec3<T> d = normalize(leaving.direction);
+                                sum += weight * light.arriving_from(d) * met_light_weight(last_pdf, [&] { return light.pdf(d); });
+                            }
+                        });
                     },
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
-                        if constexpr (SceneT::has_emitters) sum += at.power * emitted(material, at.crossing()) * emitter_weight(at);
+                        if constexpr (SceneT::has_emitters) {
+                            if (at.specular_only()) sum += at.power * emitted(material, at.crossing());
+                            else sum += at.power * emitted(material, at.crossing()) *
+                                        met_light_weight(at.last_pdf, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
+                        }
                     });
         return sum;
     }
@@ -11187,16 +11233,19 @@ public:
     [[nodiscard]] const Air& air() const noexcept { return air_; }
 
 private:
-    /// The weight of an area light met by the walk: 1 seen from the camera through
-    /// mirrors and glass only; after a diffuse bounce, the power heuristic against
-    /// sampling the light from there (its n samples: n times its density); through mirrors and glass after a diffuse bounce,
-    /// 1 where the path tracer counts such paths (no light sample can find them), else 0.
-    [[nodiscard]] T emitter_weight(const WalkVertex<T>& at) const noexcept
+    /// The weight of a light with extent (an area or environment light) that a path meets
+    /// after a diffuse bounce: with a diffuse bounce just before it (its density last_pdf,
+    /// cos / pi), the power heuristic against sampling the light from there (n samples of
+    /// density light_pdf(): n times it), or 1 or 0 for the strategies alone; through mirrors
+    /// and glass after a diffuse bounce, 1 where the path tracer counts such paths (no light
+    /// sample can find them), else 0. (Seen from the camera through mirrors and glass only,
+    /// a light counts whole: the caller's.)
+    template <class LightPdf>
+    [[nodiscard]] T met_light_weight(T last_pdf, LightPdf&& light_pdf) const noexcept
     {
-        if (at.specular_only()) return T(1);
-        if (at.last_pdf > T(0)) {
+        if (last_pdf > T(0)) {
             if (config_.area_lights != AreaLightStrategy::mis) return config_.area_lights == AreaLightStrategy::bounces ? T(1) : T(0);
-            if constexpr (SceneT::has_emitters) return power_heuristic(at.last_pdf, light_samples() * scene_->area_lights().pdf(at.hit, at.last_point));
+            return power_heuristic(last_pdf, light_samples() * light_pdf());
         }
         return config_.caustics_of_area_lights ? T(1) : T(0);
     }
@@ -11460,7 +11509,7 @@ private:
     {
         Ray<T> segment = ray;
         const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
-        if (!hit) return {.direct = scene_->background};
+        if (!hit) return {.direct = scene_->escaped(segment.direction)};
         return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
     }
 
@@ -11598,7 +11647,7 @@ private:
                 // mirrors what lies beyond.
                 return reflects<M> || transmits<M> ? Lobes::delta : Lobes::none;
             };
-            const auto escaped = [](const Ray<T>&, const Rgb<T>&, bool) {};
+            const auto escaped = [](const Ray<T>&, const Rgb<T>&, bool, T) {};
             // (About a shading normal, a direction may lead into the solid: no light.)
             if (!hit.shades_flat() && !(dot(direction, hit.facing_normal()) > T(0))) return found;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, direction);
@@ -11870,7 +11919,7 @@ public:
     /// the samples of area lights (nothing else is random).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept
     {
-        if constexpr (SceneT::has_emitters) return trace(ray, 0, Rgb<T>(T(1)), T(0), {}, &rng);
+        if constexpr (SceneT::has_lights_with_extent) return trace(ray, 0, Rgb<T>(T(1)), T(0), {}, &rng);
         else return (void)rng, trace(ray, 0, Rgb<T>(T(1)), T(0), {});
     }
     /// Radiance arriving along the ray, with area lights sampled from a fixed stream.
@@ -11892,7 +11941,7 @@ private:
     // Whitted Private Methods
 
     // The recursion carries the stream that jitters area lights' samples (`jitter`: a
-    // Pcg32*) only where the scene has area lights: GCC optimises a recursion that
+    // Pcg32*) only where the scene has lights with extent (area, environment): GCC optimises a recursion that
     // carries none to less code, 7 % faster to compile.
 
     /// Radiance along the ray for light of one wavelength (nanometres), or of all (0):
@@ -11906,14 +11955,14 @@ private:
             if (media.empty()) {
                 Ray<T> segment = ray;
                 const auto hit = first_hit_in_air(*scene_, air_, ray, segment);
-                if (!hit) return scene_->background;
+                if (!hit) return scene_->escaped(segment.direction);
                 return scene_->visit_material(*hit, [&](const auto& material) {
                     return shade(material, segment, *hit, depth, weight, wavelength, media, jitter...);
                 });
             }
         }
         const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
-        if (!hit) return scene_->background;
+        if (!hit) return scene_->escaped(ray.direction);
         return scene_->visit_material(*hit, [&](const auto& material) {
             return shade(material, ray, *hit, depth, weight, wavelength, media, jitter...);
         });
@@ -12044,6 +12093,70 @@ struct DirectionalLight {
 };
 
 static_assert(Light<DirectionalLight<float>>);
+
+} // namespace prism
+
+// ---- prism/light/environment_light.hpp ----
+// EnvironmentLight: light arriving from infinitely far away in every direction (a sky).
+
+
+namespace prism {
+
+/// Radiance L arriving from every direction, from infinitely far away: a uniform sky, or
+/// the white furnace's enclosure. Rays that leave the scene see it (as well as the scene's
+/// background); shading points sample it over the sphere of directions, and its photons
+/// enter through the disk that covers the scene, from directions uniform over the sphere
+/// (as pbrt-v4's UniformInfiniteLight).
+template <Scalar T = float>
+struct EnvironmentLight {
+    /// The precision of the light.
+    using scalar_type = T;
+    /// Not a delta light: drawn direction by direction.
+    static constexpr bool delta = false;
+    /// Seen by the rays that leave the scene.
+    static constexpr bool at_infinity = true;
+
+    Rgb<T> radiance{T(1)}; ///< the radiance arriving from every direction (W/(m^2 sr))
+
+    /// The radiance arriving along -direction (from `direction`'s side of the sky).
+    [[nodiscard]] constexpr Rgb<T> arriving_from(const Vec3<T>&) const noexcept { return radiance; }
+
+    /// A direction uniform over the sphere, density 1 / (4 pi); its estimate L 4 pi.
+    [[nodiscard]] LightSample<T> sample(const Vec3<T>&, const Vec2<T>& u) const noexcept
+    {
+        return {uniform_sphere(u.x, u.y), infinity<T>, radiance * (T(4) * pi<T>), T(1) / (T(4) * pi<T>)};
+    }
+
+    /// The density sample() draws `direction` with: 1 / (4 pi).
+    [[nodiscard]] constexpr T pdf(const Vec3<T>&) const noexcept { return T(1) / (T(4) * pi<T>); }
+
+    /// The power entering the disk of radius R that faces each direction and covers the
+    /// scene (or the target): L 4 pi pi R^2, from directions uniform over the sphere and
+    /// points uniform over the disk (nothing when nothing bounded is there to light).
+    [[nodiscard]] Rgb<T> photon_power(const PhotonAim<T>& aim) const noexcept
+    {
+        if (!aim.scene) return Rgb<T>(T(0));
+        const T r = aim.target ? aim.target->radius : aim.scene->radius;
+        return radiance * (T(4) * pi<T> * pi<T> * r * r);
+    }
+
+    /// A photon from a direction uniform over the sphere (from `rng`), through the point
+    /// (u, v) of the disk facing it, upstream of everything bounded.
+    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v, Pcg32& rng) const noexcept
+    {
+        const BoundingSphere<T>& scene = *aim.scene;
+        const BoundingSphere<T>& sphere = aim.target ? *aim.target : scene;
+        const T a = rng.uniform<T>(), b = rng.uniform<T>();
+        const Vec3<T> travel = -uniform_sphere(a, b);
+        const T upstream = length(sphere.center - scene.center) + scene.radius + sphere.radius;
+        return {{uniform_disk(sphere.center - upstream * travel, travel, sphere.radius, u, v), travel}};
+    }
+
+    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite radiance.
+    constexpr void validate() const { detail::require_non_negative("EnvironmentLight radiance", radiance); }
+};
+
+static_assert(Light<EnvironmentLight<float>>);
 
 } // namespace prism
 

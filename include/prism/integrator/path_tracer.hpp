@@ -107,11 +107,26 @@ public:
                         sum += at.power * diffuse_response(material, c).brdf() * irradiance;
                         return go_on;
                     },
-                    [&](const Ray<T>&, const Rgb<T>& weight, bool specular_only) {
-                        if (specular_only) sum += weight * scene_->background;
+                    [&](const Ray<T>& leaving, const Rgb<T>& weight, bool specular_only, T last_pdf) {
+                        if (specular_only) {
+                            sum += weight * scene_->escaped(leaving.direction);
+                            return;
+                        }
+                        // After a diffuse bounce the background lights nothing; an
+                        // environment light does, shared with its samples as an area light's.
+                        scene_->for_each_light([&]<class L>(const L& light) {
+                            if constexpr (is_at_infinity<L>) {
+                                const Vec3<T> d = normalize(leaving.direction);
+                                sum += weight * light.arriving_from(d) * met_light_weight(last_pdf, [&] { return light.pdf(d); });
+                            }
+                        });
                     },
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
-                        if constexpr (SceneT::has_emitters) sum += at.power * emitted(material, at.crossing()) * emitter_weight(at);
+                        if constexpr (SceneT::has_emitters) {
+                            if (at.specular_only()) sum += at.power * emitted(material, at.crossing());
+                            else sum += at.power * emitted(material, at.crossing()) *
+                                        met_light_weight(at.last_pdf, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
+                        }
                     });
         return sum;
     }
@@ -122,16 +137,19 @@ public:
     [[nodiscard]] const Air& air() const noexcept { return air_; }
 
 private:
-    /// The weight of an area light met by the walk: 1 seen from the camera through
-    /// mirrors and glass only; after a diffuse bounce, the power heuristic against
-    /// sampling the light from there (its n samples: n times its density); through mirrors and glass after a diffuse bounce,
-    /// 1 where the path tracer counts such paths (no light sample can find them), else 0.
-    [[nodiscard]] T emitter_weight(const WalkVertex<T>& at) const noexcept
+    /// The weight of a light with extent (an area or environment light) that a path meets
+    /// after a diffuse bounce: with a diffuse bounce just before it (its density last_pdf,
+    /// cos / pi), the power heuristic against sampling the light from there (n samples of
+    /// density light_pdf(): n times it), or 1 or 0 for the strategies alone; through mirrors
+    /// and glass after a diffuse bounce, 1 where the path tracer counts such paths (no light
+    /// sample can find them), else 0. (Seen from the camera through mirrors and glass only,
+    /// a light counts whole: the caller's.)
+    template <class LightPdf>
+    [[nodiscard]] T met_light_weight(T last_pdf, LightPdf&& light_pdf) const noexcept
     {
-        if (at.specular_only()) return T(1);
-        if (at.last_pdf > T(0)) {
+        if (last_pdf > T(0)) {
             if (config_.area_lights != AreaLightStrategy::mis) return config_.area_lights == AreaLightStrategy::bounces ? T(1) : T(0);
-            if constexpr (SceneT::has_emitters) return power_heuristic(at.last_pdf, light_samples() * scene_->area_lights().pdf(at.hit, at.last_point));
+            return power_heuristic(last_pdf, light_samples() * light_pdf());
         }
         return config_.caustics_of_area_lights ? T(1) : T(0);
     }

@@ -251,7 +251,7 @@ private:
     {
         Ray<T> segment = ray;
         const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
-        if (!hit) return {.direct = scene_->background};
+        if (!hit) return {.direct = scene_->escaped(segment.direction)};
         return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
     }
 
@@ -389,7 +389,7 @@ private:
                 // mirrors what lies beyond.
                 return reflects<M> || transmits<M> ? Lobes::delta : Lobes::none;
             };
-            const auto escaped = [](const Ray<T>&, const Rgb<T>&, bool) {};
+            const auto escaped = [](const Ray<T>&, const Rgb<T>&, bool, T) {};
             // (About a shading normal, a direction may lead into the solid: no light.)
             if (!hit.shades_flat() && !(dot(direction, hit.facing_normal()) > T(0))) return found;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, direction);

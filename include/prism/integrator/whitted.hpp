@@ -72,7 +72,7 @@ public:
     /// the samples of area lights (nothing else is random).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept
     {
-        if constexpr (SceneT::has_emitters) return trace(ray, 0, Rgb<T>(T(1)), T(0), {}, &rng);
+        if constexpr (SceneT::has_lights_with_extent) return trace(ray, 0, Rgb<T>(T(1)), T(0), {}, &rng);
         else return (void)rng, trace(ray, 0, Rgb<T>(T(1)), T(0), {});
     }
     /// Radiance arriving along the ray, with area lights sampled from a fixed stream.
@@ -94,7 +94,7 @@ private:
     // Whitted Private Methods
 
     // The recursion carries the stream that jitters area lights' samples (`jitter`: a
-    // Pcg32*) only where the scene has area lights: GCC optimises a recursion that
+    // Pcg32*) only where the scene has lights with extent (area, environment): GCC optimises a recursion that
     // carries none to less code, 7 % faster to compile.
 
     /// Radiance along the ray for light of one wavelength (nanometres), or of all (0):
@@ -108,14 +108,14 @@ private:
             if (media.empty()) {
                 Ray<T> segment = ray;
                 const auto hit = first_hit_in_air(*scene_, air_, ray, segment);
-                if (!hit) return scene_->background;
+                if (!hit) return scene_->escaped(segment.direction);
                 return scene_->visit_material(*hit, [&](const auto& material) {
                     return shade(material, segment, *hit, depth, weight, wavelength, media, jitter...);
                 });
             }
         }
         const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
-        if (!hit) return scene_->background;
+        if (!hit) return scene_->escaped(ray.direction);
         return scene_->visit_material(*hit, [&](const auto& material) {
             return shade(material, ray, *hit, depth, weight, wavelength, media, jitter...);
         });

@@ -108,4 +108,9 @@ template <Light L>
 template <Light L>
 inline constexpr bool is_delta_light = bool(L::delta);
 
+/// Whether L is seen by the rays that leave the scene (an environment light, which says
+/// so with `at_infinity = true` and gives `arriving_from(direction)` and `pdf(direction)`).
+template <class L>
+inline constexpr bool is_at_infinity = requires { requires bool(L::at_infinity); };
+
 } // namespace prism

@@ -193,7 +193,7 @@ private:
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         return visit(material, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
                     },
-                    [](const Ray<T>&, const Rgb<T>&, bool) {});
+                    [](const Ray<T>&, const Rgb<T>&, bool, T) {});
     }
 
     /// Store photon i: in the caustic pass only L S+ D, going on past it only by delta lobes.

@@ -38,6 +38,12 @@ inline constexpr std::size_t light_count_of = 0;
 template <class... Ls>
 inline constexpr std::size_t light_count_of<Lights<Ls...>> = sizeof...(Ls);
 
+/// Whether every light of a Lights{...} is a delta light.
+template <class List>
+inline constexpr bool all_delta = true;
+template <class... Ls>
+inline constexpr bool all_delta<Lights<Ls...>> = (is_delta_light<Ls> && ...);
+
 /// Whether every light of the list has scalar type T (true for what is no list: that
 /// has its own error).
 template <class List, class T>

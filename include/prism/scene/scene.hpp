@@ -81,6 +81,9 @@ public:
     static constexpr bool slot_emits = detail::slot_emits<SlotAt<I>>;
     /// Some material emits: the scene has area lights (AreaLights, one more light).
     static constexpr bool has_emitters = detail::any_of({detail::slot_emits<Slots>...});
+    /// Some light is not a delta light (an area or environment light): it is sampled
+    /// point by point, with random numbers.
+    static constexpr bool has_lights_with_extent = has_emitters || !detail::all_delta<LightsOfScene>;
     static_assert(detail::light_count_of<LightsOfScene> > 0 || has_emitters,
                   "a scene needs a light: Lights{...} with at least one (a PointLight, a DirectionalLight, ...), or an object whose material emits (Emissive)");
 
@@ -237,6 +240,15 @@ public:
         if constexpr (has_emitters) f(area_lights());
     }
 
+    /// The radiance a ray that leaves the scene along `direction` sees: the background,
+    /// and every environment light's.
+    [[nodiscard]] Rgb<T> escaped(const Vec3<T>& direction) const noexcept
+    {
+        Rgb<T> seen = background;
+        std::apply([&](const auto&... light) { ((seen += arriving(light, direction)), ...); }, lights.items);
+        return seen;
+    }
+
     /// The number of lights: those of Lights{...}, and one more for the area lights.
     static constexpr std::size_t light_count = detail::light_count_of<LightsOfScene> + (has_emitters ? 1 : 0);
 
@@ -270,6 +282,14 @@ private:
     [[no_unique_address]] std::conditional_t<slot_count == 1, std::vector<typename SlotAt<0>::shape_type>, detail::NoShapes> shapes_;
 
     // Scene Private Methods
+
+    /// What `light` sends along -direction if it is at infinity, else nothing.
+    template <class L>
+    [[nodiscard]] static Rgb<T> arriving(const L& light, const Vec3<T>& direction) noexcept
+    {
+        if constexpr (is_at_infinity<L>) return light.arriving_from(direction);
+        else return (void)light, (void)direction, Rgb<T>(T(0));
+    }
 
     /// Light I: of Lights{...}, or past them the area lights (a template of I, so that a
     /// scene without area lights never names them: clang checks what an index does not

@@ -62,8 +62,8 @@ struct IgnoreEmitters {
 /// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
 /// on_diffuse(material, WalkVertex) is called at every diffuse surface and returns the
 /// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
-/// there); on_escape(ray, power, specular_only) when the path leaves the
-/// scene; on_emitter(material, WalkVertex) where it meets a surface that emits (an area
+/// there); on_escape(ray, power, specular_only, last_pdf) when the path leaves the
+/// scene (last_pdf: as WalkVertex's); on_emitter(material, WalkVertex) where it meets a surface that emits (an area
 /// light; the walk scatters there only by the lobes the material also has). `Mode`:
 /// whether the path is a photon's or a camera's (scatter_photon).
 template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape, class OnEmitter = IgnoreEmitters>
@@ -86,7 +86,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         const auto hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, &path)
                                        : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
         if (!hit) {
-            on_escape(segment, power, diffuse_bounces == 0);
+            on_escape(segment, power, diffuse_bounces == 0, last_pdf);
             return;
         }
         const Crossing<T>& c = hit->crossing;
