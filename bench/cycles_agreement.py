@@ -6,7 +6,9 @@
 # between the two means is compared with what that noise alone explains. Writes
 # bench/results/cycles_agreement.csv and cycles_vs_prism.png (prism | Cycles | 8x difference).
 #
-# usage: bench/cycles_agreement.py BUILD_DIR [--spp-prism 4096] [--spp-cycles 1024] [--size 256]
+# usage: bench/cycles_agreement.py BUILD_DIR [--spp-prism 4096] [--spp-cycles 1024] [--size 256] [--area]
+# --area: the box under its ceiling light (an area light) instead of the point light;
+# writes cycles_agreement_area.csv and cycles_vs_prism_area.png.
 import argparse
 import csv
 import math
@@ -24,16 +26,18 @@ def main():
     ap.add_argument("--spp-prism", type=int, default=4096)
     ap.add_argument("--spp-cycles", type=int, default=1024)
     ap.add_argument("--size", type=int, default=256)
+    ap.add_argument("--area", action="store_true", help="the box under its ceiling light (an area light)")
     args = ap.parse_args()
-    work = os.path.join(args.build, "cycles_agreement")
+    suffix = "_area" if args.area else ""
+    work = os.path.join(args.build, "cycles_agreement" + suffix)
     os.makedirs(work, exist_ok=True)
     prism, blender, seconds = [], [], {}
     for seed in (1, 2):
         out = os.path.join(work, "prism_%d.pfm" % seed)
-        seconds["prism"] = run(args.build, "diffuse", "reference", args.spp_prism, out, args.size, seed)
+        seconds["prism"] = run(args.build, "area" if args.area else "diffuse", "reference", args.spp_prism, out, args.size, seed)
         prism.append(read_pfm(out)[2])
         out = os.path.join(work, "cycles_%d.pfm" % seed)
-        seconds["cycles"] = cycles(args.spp_cycles, out, seed, args.size)
+        seconds["cycles"] = cycles(args.spp_cycles, out, seed, args.size, args.area)
         blender.append(read_pfm(out)[2])
     n = len(prism[0])
     mean = lambda a, b: [(x + y) / 2 for x, y in zip(a, b)]
@@ -46,7 +50,7 @@ def main():
     print("noise of the means: prism %.5f, Cycles %.5f; RMSE prism vs Cycles %.5f, noise alone explains %.5f (ratio %.3f)" %
           (noise_prism, noise_cycles, measured, expected, measured / expected))
     print("mean radiance prism / Cycles: %.5f" % ratio)
-    with open(os.path.join(here, "results", "cycles_agreement.csv"), "w", newline="") as f:
+    with open(os.path.join(here, "results", "cycles_agreement" + suffix + ".csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["prism_spp", "cycles_spp", "prism_seconds", "cycles_seconds", "noise_prism", "noise_cycles", "rmse_between", "rmse_from_noise", "mean_ratio"])
         w.writerow([args.spp_prism, args.spp_cycles, "%.2f" % seconds["prism"], "%.2f" % seconds["cycles"], "%.6f" % noise_prism,
@@ -66,7 +70,7 @@ def main():
             img.putpixel((x, y), tuple(srgb(p[i + k]) for k in range(3)))
             img.putpixel((size + x, y), tuple(srgb(c[i + k]) for k in range(3)))
             img.putpixel((2 * size + x, y), tuple(srgb(0.5 + 8 * (p[i + k] - c[i + k])) for k in range(3)))
-    img.save(os.path.join(here, "results", "cycles_vs_prism.png"))
+    img.save(os.path.join(here, "results", "cycles_vs_prism" + suffix + ".png"))
 
 
 if __name__ == "__main__":

@@ -2,7 +2,13 @@
 # Blender's Cycles renders shared/scenes/cornell_diffuse.md, the outside reference for
 # prism's diffuse Cornell box. Run headless:
 #
-#   blender -b --factory-startup --python bench/cycles_cornell.py -- OUT.pfm SAMPLES [SEED] [SIZE]
+#   blender -b --factory-startup --python bench/cycles_cornell.py -- OUT.pfm SAMPLES [SEED] [SIZE] [--area]
+#
+# --area lights the box by its ceiling light instead of the point light: a rectangle of
+# 1.30 x 1.05 at y = 5.549 facing down, an Emission shader of strength 37 on its front and
+# none on its back (Cycles' mesh emission is two-sided), which is radiance 37 W/(m^2 sr):
+# Blender's manual, "a strength of 1.0 ... the object will have exactly the color in the
+# image" (examples/scenes/cornell.hpp's cornell_ceiling_light).
 #   blender -b --factory-startup --python bench/cycles_cornell.py -- --calibrate OUT.txt
 #
 # The scene's coordinates are the .pov files' (y up, camera along +z); Blender is z up
@@ -31,6 +37,8 @@ import time
 import bpy
 
 argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+area = "--area" in argv
+argv = [a for a in argv if a != "--area"]
 calibrate = bool(argv) and argv[0] == "--calibrate"
 if calibrate:
     argv = argv[1:]
@@ -182,7 +190,28 @@ quad("ceiling", [(0, W, 0), (0, W, W), (W, W, W), (W, W, 0)], white)
 quad("back", [(0, 0, W), (W, 0, W), (W, W, W), (0, W, W)], white)
 quad("left", [(0, 0, 0), (0, 0, W), (0, W, W), (0, W, 0)], red)
 quad("right", [(W, 0, 0), (W, W, 0), (W, W, W), (W, 0, W)], green)
-point_light((2.78, 5.35, 2.60), 4 * math.pi * INTENSITY)
+if area:
+    lamp = bpy.data.materials.new("lamp")
+    lamp.use_nodes = True
+    nodes = lamp.node_tree.nodes
+    nodes.clear()
+    front = nodes.new("ShaderNodeEmission")
+    front.inputs["Color"].default_value = (1, 1, 1, 1)
+    front.inputs["Strength"].default_value = 37.0
+    back = nodes.new("ShaderNodeEmission")
+    back.inputs["Strength"].default_value = 0.0
+    geometry = nodes.new("ShaderNodeNewGeometry")
+    mix = nodes.new("ShaderNodeMixShader")
+    out = nodes.new("ShaderNodeOutputMaterial")
+    links = lamp.node_tree.links
+    links.new(geometry.outputs["Backfacing"], mix.inputs["Fac"])
+    links.new(front.outputs["Emission"], mix.inputs[1])
+    links.new(back.outputs["Emission"], mix.inputs[2])
+    links.new(mix.outputs["Shader"], out.inputs["Surface"])
+    # Wound so that its normal points down (-y, Blender's -z).
+    quad("lamp", [(2.13, 5.549, 2.27), (2.13, 5.549, 3.32), (3.43, 5.549, 3.32), (3.43, 5.549, 2.27)], lamp)
+else:
+    point_light((2.78, 5.35, 2.60), 4 * math.pi * INTENSITY)
 camera((2.78, 2.73, -8.0), (2.78, 2.73, 0.0), 40.0)
 
 w, h, px, seconds = render_to_pixels()

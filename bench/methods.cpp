@@ -3,7 +3,8 @@
 // bench/methods_vs_time.py: writes the image as PFM and prints "seconds S" (the whole
 // render: photons, cache, passes or paths, and camera rays), 2 threads.
 //
-// usage: bench_methods diffuse|glass|povray METHOD EFFORT OUT.pfm [SIZE] [SEED] [SPP]
+// usage: bench_methods diffuse|area|glass|povray METHOD EFFORT OUT.pfm [SIZE] [SEED] [SPP]
+//   area is the diffuse box under its ceiling light (an area light) instead of the point light.
 //   povray is the glass box in POV-Ray's model (shared/scenes/cornell_caustics.pov: its
 //   no-falloff light, direct light and caustics only; no global photons, and the
 //   reference takes no diffuse bounce).
@@ -53,7 +54,7 @@ struct SeesDiffuseFirst {
 int main(int argc, char** argv)
 {
     if (argc < 5) {
-        std::fprintf(stderr, "usage: bench_methods diffuse|glass|povray METHOD EFFORT OUT.pfm [SIZE] [SEED] [SPP]\n");
+        std::fprintf(stderr, "usage: bench_methods diffuse|area|glass|povray METHOD EFFORT OUT.pfm [SIZE] [SEED] [SPP]\n");
         return 1;
     }
     const std::string which = argv[1], method = argv[2], out = argv[4];
@@ -106,7 +107,9 @@ int main(int argc, char** argv)
         }
         return render_one(scene, options, out);
     };
-    const double seconds = glass ? run(scenes::cornell_scene<float>(!povray)) : run(scenes::cornell_diffuse_scene<float>());
+    const double seconds = glass               ? run(scenes::cornell_scene<float>(!povray))
+                           : which == "area" ? run(scenes::cornell_diffuse_area_scene<float>())
+                                             : run(scenes::cornell_diffuse_scene<float>());
     std::printf("seconds %.4f\n", seconds);
     return 0;
 }

@@ -151,9 +151,9 @@ def povray(count, out, size, antialias):
     return seconds("Photon") + seconds("Trace")
 
 
-def cycles(spp, out, seed, size):
-    subprocess.run(["blender", "-b", "--factory-startup", "--python", os.path.join(here, "cycles_cornell.py"), "--", out, str(spp), str(seed), str(size)],
-                   capture_output=True, text=True, check=True)
+def cycles(spp, out, seed, size, area=False):
+    subprocess.run(["blender", "-b", "--factory-startup", "--python", os.path.join(here, "cycles_cornell.py"), "--", out, str(spp), str(seed), str(size)] +
+                   (["--area"] if area else []), capture_output=True, text=True, check=True)
     with open(out + ".txt") as f:
         return float(f.read().splitlines()[1].split(",")[1])
 

@@ -53,6 +53,27 @@ auto cornell_diffuse_scene()
     return Scene{Lights{PointLight<T>{.position = {T(2.78), T(5.35), T(-2.60)}, .intensity = Rgb<T>(T(20))}}, cornell_walls<T>()};
 }
 
+/// The ceiling light of the Cornell box: a rectangle of 1.30 x 1.05 just below the
+/// ceiling's centre (the Cornell data's light, in metres), facing down, of radiance 37
+/// W/(m^2 sr): L A = 50 W/sr straight down, as the point light's 16 pi sends every way
+/// (its power, pi L A = 159 W, is a quarter of the point light's, which sends three
+/// quarters of its power at the walls and ceiling).
+template <prism::Scalar T>
+auto cornell_ceiling_light()
+{
+    using namespace prism;
+    return Object{Quad<T>({T(2.13), T(5.549), T(-3.32)}, {T(1.30), T(0), T(0)}, {T(0), T(0), T(1.05)}), Emissive<T>{.radiance = Rgb<T>(T(37))}};
+}
+
+/// The diffuse box lit by its ceiling light instead of the point light (the scene
+/// bench/cycles_cornell.py --area renders in Cycles).
+template <prism::Scalar T>
+auto cornell_diffuse_area_scene()
+{
+    using namespace prism;
+    return Scene{Lights{}, cornell_walls<T>(), cornell_ceiling_light<T>()};
+}
+
 template <prism::Scalar T, class Fresnel = prism::ExactFresnel>
 auto cornell_scene(bool physical_light = false)
 {
@@ -67,11 +88,8 @@ auto cornell_scene(bool physical_light = false)
     return scene;
 }
 
-/// The Cornell box lit as the original is, by its ceiling light: a rectangle of 1.30 x
-/// 1.05 just below the ceiling's centre (the Cornell data's light, in metres), facing
-/// down, of radiance 37 W/(m^2 sr): L A = 50 W/sr straight down, as the point light's
-/// 16 pi sends every way (its power, pi L A = 159 W, is a quarter of the point light's,
-/// which sends three quarters of its power at the walls and ceiling).
+/// The Cornell box lit as the original is, by its ceiling light, with the glass and the
+/// mirror spheres.
 template <prism::Scalar T, class Fresnel = prism::ExactFresnel>
 auto cornell_area_scene()
 {
@@ -79,7 +97,7 @@ auto cornell_area_scene()
     return Scene{
         Lights{},
         cornell_walls<T>(),
-        Object{Quad<T>({T(2.13), T(5.549), T(-3.32)}, {T(1.30), T(0), T(0)}, {T(0), T(0), T(1.05)}), Emissive<T>{.radiance = Rgb<T>(T(37))}},
+        cornell_ceiling_light<T>(),
         Object{Sphere<T>({T(3.85), T(1.0), T(-2.0)}, T(1)), Dielectric<T, Fresnel>{.ior = T(1.5)}},
         Object{Sphere<T>({T(1.60), T(1.0), T(-3.6)}, T(1)), Mirror<T>{{.kr = Rgb<T>(T(0.95))}}},
     };

@@ -23,13 +23,13 @@ namespace {
 /// the light's term from the path tracer (E D L) and the mirror image's, from (-1, 2, 0),
 /// from the light tracer (L S D E). The camera looks straight down at the floor and
 /// does not see the mirror.
-constexpr float intensity = 10, reflectance = 0.8f;
+constexpr float mirror_light_intensity = 10, mirror_reflectance = 0.8f; // unique names: tests share unity files
 
 auto mirror_scene()
 {
-    return Scene{Lights{PointLight<float>{.position = {1, 2, 0}, .intensity = Rgb<float>(intensity)}},
+    return Scene{Lights{PointLight<float>{.position = {1, 2, 0}, .intensity = Rgb<float>(mirror_light_intensity)}},
                  Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
-                 Object{Box<float>({-0.1f, 0, -3}, {0, 4, 3}), Mirror<float>{{.kr = Rgb<float>(reflectance)}}}};
+                 Object{Box<float>({-0.1f, 0, -3}, {0, 4, 3}), Mirror<float>{{.kr = Rgb<float>(mirror_reflectance)}}}};
 }
 
 double floor_radiance(const Vec3<double>& p, const Vec3<double>& light, double i)
@@ -56,8 +56,8 @@ TEST_CASE("light tracing: a mirror's image of a point light on a floor, L S D E,
             for (int j = 0; j < 64; ++j) {
                 const Ray<float> ray = rays.ray(float(x) + (float(j % 8) + 0.5f) / 8, float(y) + (float(j / 8) + 0.5f) / 8);
                 const Vec3<double> p = Vec3<double>(ray.origin) + Vec3<double>(ray.direction) * (-double(ray.origin.y) / double(ray.direction.y));
-                direct += floor_radiance(p, {1, 2, 0}, intensity) / 64;
-                image += floor_radiance(p, {-1, 2, 0}, reflectance * intensity) / 64;
+                direct += floor_radiance(p, {1, 2, 0}, mirror_light_intensity) / 64;
+                image += floor_radiance(p, {-1, 2, 0}, mirror_reflectance * mirror_light_intensity) / 64;
             }
             mirror_sum += traced.at(x, y).x;
             mirror_expected += image;
@@ -75,10 +75,10 @@ TEST_CASE("light tracing with no diffuse bounce keeps L S D E alone: a ceiling a
 {
     // A diffuse ceiling at y = 4 the camera cannot see: it adds L S D(ceiling) D(floor) E
     // paths, which a limit of 0 diffuse bounces leaves out (as POV-Ray's caustic photons).
-    const auto scene = Scene{Lights{PointLight<float>{.position = {1, 2, 0}, .intensity = Rgb<float>(intensity)}},
+    const auto scene = Scene{Lights{PointLight<float>{.position = {1, 2, 0}, .intensity = Rgb<float>(mirror_light_intensity)}},
                              Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
                              Object{Plane<float>({0, 1, 0}, 4), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
-                             Object{Box<float>({-0.1f, 0, -3}, {0, 4, 3}), Mirror<float>{{.kr = Rgb<float>(reflectance)}}}};
+                             Object{Box<float>({-0.1f, 0, -3}, {0, 4, 3}), Mirror<float>{{.kr = Rgb<float>(mirror_reflectance)}}}};
     const Camera<float> camera{.position = {1.5f, 3, 0}, .look_at = {1.5f, 0, 0}, .up = {0, 0, -1}, .fov = 40};
     constexpr int size = 8;
     const RenderConfig render_config{.width = size, .height = size, .threads = 2, .seed = 3, .progress = false};
@@ -91,7 +91,7 @@ TEST_CASE("light tracing with no diffuse bounce keeps L S D E alone: a ceiling a
             for (int j = 0; j < 64; ++j) {
                 const Ray<float> ray = rays.ray(float(x) + (float(j % 8) + 0.5f) / 8, float(y) + (float(j / 8) + 0.5f) / 8);
                 const Vec3<double> p = Vec3<double>(ray.origin) + Vec3<double>(ray.direction) * (-double(ray.origin.y) / double(ray.direction.y));
-                expected += floor_radiance(p, {-1, 2, 0}, reflectance * intensity) / 64;
+                expected += floor_radiance(p, {-1, 2, 0}, mirror_reflectance * mirror_light_intensity) / 64;
             }
             first_sum += first.at(x, y).x;
             all_sum += all.at(x, y).x;
