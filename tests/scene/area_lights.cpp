@@ -213,3 +213,32 @@ TEST_CASE("photons aimed from an area light at a sphere carry the power the ligh
     MESSAGE("power into the sphere: photons ", carried, ", integral ", exact);
     CHECK(carried == doctest::Approx(exact).epsilon(0.01));
 }
+
+// The mesh's leaf order repeats a leaf's last triangle to fill its block of four: the
+// emitting surface first counted those repeats as triangles and left as many out.
+TEST_CASE("an emitting mesh of 1280 triangles is drawn on by each triangle's area, once: its photons carry pi L A of its true area")
+{
+    const MeshBuffers<double> ball = icosphere<double>({0, 2, 0}, 0.5, 3);
+    double area = 0;
+    for (const TriangleIndices& f : ball.triangles)
+        area += 0.5 * length(cross(ball.positions[f[1]] - ball.positions[f[0]], ball.positions[f[2]] - ball.positions[f[0]]));
+    const TriangleMesh<double> mesh(ball);
+    REQUIRE(mesh.triangle_count() == 1280);
+    REQUIRE(mesh.bvh().primitives().size() > 1280); // padded
+    const MeshSurface<double, 8> surface(mesh);
+    CHECK(surface.area() == doctest::Approx(area).epsilon(1e-12));
+    const double L = 2;
+    const Scene scene{Lights{}, Object{mesh, Emissive<double>{.radiance = Rgb<double>(L)}},
+                      Object{Sphere<double>({0, 0, 0}, 30), Diffuse<double>{.albedo = {.color = Rgb<double>(0)}}}};
+    const PhotonMaps maps = trace_photons(scene, {.global_photons = 100000, .caustic_photons = 0, .shadow_photons = false, .seed = 5});
+    double total = 0;
+    for (const Photon& p : maps.global.photons()) total += p.power().x;
+    CHECK(total == doctest::Approx(pi<double> * L * area).epsilon(1.0 / 128));
+    // Points drawn on it lie on its triangles: as far from the centre as its vertices, or nearer (flat faces).
+    Pcg32 rng(2, 2);
+    for (int i = 0; i < 20000; ++i) {
+        const SurfacePoint<double> p = surface.sample_area({rng.uniform<double>(), rng.uniform<double>()});
+        CHECK(length(p.point - Vec3<double>(0, 2, 0)) <= 0.5 + 1e-12);
+        CHECK(length(p.point - Vec3<double>(0, 2, 0)) >= 0.49);
+    }
+}

@@ -182,10 +182,12 @@ public:
     [[nodiscard]] bool has_uvs() const noexcept { return !data_->uvs.empty(); }
     /// The number of triangles.
     [[nodiscard]] std::size_t triangle_count() const noexcept { return data_->bvh.size(); }
-    /// The corners of triangle k, counted in the mesh's own (leaf) order, k < triangle_count().
+    /// The corners of the triangle at position k of the mesh's own (leaf) order, which
+    /// repeats a leaf's last triangle to fill its last block of four (Bvh::primitives()):
+    /// k < bvh().primitives().size().
     [[nodiscard]] std::array<Vec3<T>, 3> corners(std::uint32_t k) const noexcept
     {
-        PRISM_ASSERT(k < triangle_count());
+        PRISM_ASSERT(k < data_->bvh.primitives().size());
         constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
         return data_->blocks[k / width].triangle(k % width);
     }
@@ -492,14 +494,19 @@ public:
     /// The surface of `mesh`; throws std::invalid_argument for a mesh of no area.
     explicit MeshSurface(TriangleMesh<T, N> mesh) : mesh_(std::move(mesh))
     {
-        std::vector<double> areas(mesh_.triangle_count());
+        // Each triangle once: the leaf order repeats a leaf's last triangle as padding.
+        const auto order = mesh_.bvh().primitives();
+        std::vector<double> areas;
         double total = 0;
-        for (std::size_t k = 0; k < areas.size(); ++k) {
+        for (std::size_t k = 0; k < order.size(); ++k) {
+            if (k > 0 && order[k] == order[k - 1]) continue;
             const auto [a, b, c] = mesh_.corners(std::uint32_t(k));
             const Vec3<double> e1 = Vec3<double>(b) - Vec3<double>(a), e2 = Vec3<double>(c) - Vec3<double>(a);
-            areas[k] = 0.5 * length(cross(e1, e2));
-            total += areas[k];
+            positions_.push_back(std::uint32_t(k));
+            areas.push_back(0.5 * length(cross(e1, e2)));
+            total += areas.back();
         }
+        PRISM_ASSERT(positions_.size() == mesh_.triangle_count());
         if (!(total > 0) || !is_finite(total)) detail::throw_invalid("an emitting TriangleMesh must have a finite, positive area, got ", total);
         triangles_ = AliasTable<T>(areas, "TriangleMesh triangle area");
         area_ = T(total);
@@ -513,7 +520,7 @@ public:
     [[nodiscard]] SurfacePoint<T> sample_area(const Vec2<T>& u) const noexcept
     {
         const AliasPick<T> pick = triangles_.pick(u.x);
-        const auto [a, b, c] = mesh_.corners(pick.index);
+        const auto [a, b, c] = mesh_.corners(positions_[pick.index]);
         // Uniform in the triangle: (1 - sqrt(u)) a + sqrt(u) (1 - v) b + sqrt(u) v c.
         const T su = prism::sqrt(pick.rest);
         return {a + (su * (T(1) - u.y)) * (b - a) + (su * u.y) * (c - a), normalize(cross(b - a, c - a)), T(1) / area_};
@@ -521,7 +528,8 @@ public:
 
 private:
     TriangleMesh<T, N> mesh_;
-    AliasTable<T> triangles_;
+    std::vector<std::uint32_t> positions_; ///< each triangle's leaf-order position, once
+    AliasTable<T> triangles_;              ///< over positions_, by area
     T area_ = T(0);
 };
 
