@@ -11948,6 +11948,10 @@ public:
 private:
     // Whitted Private Methods
 
+    /// The stream a recursion carries (none: no light with extent to jitter).
+    [[nodiscard]] static Pcg32* stream_of() noexcept { return nullptr; }
+    [[nodiscard]] static Pcg32* stream_of(Pcg32* rng) noexcept { return rng; }
+
     // The recursion carries the stream that jitters area lights' samples (`jitter`: a
     // Pcg32*) only where the scene has lights with extent (area, environment): GCC optimises a recursion that
     // carries none to less code, 7 % faster to compile.
@@ -12024,7 +12028,7 @@ private:
         Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights, V a light's mean over its samples
         Rgb<T> highlights{T(0)}; // POV-Ray's Phong term, for materials that have one
         const Vec3<T> mirror = reflect(d, hit.facing_shading());
-        const LightSampling sampling{[](auto... rng) -> Pcg32* { if constexpr (sizeof...(rng) > 0) return (rng, ...); else return nullptr; }(jitter...), config_.area_light_grid};
+        const LightSampling sampling{stream_of(jitter...), config_.area_light_grid};
         scene_->for_each_light([&]<class L>(const L& light) {
             const T share = T(1) / T(samples_of<L>(sampling));
             Rgb<T> seen{T(0)};
