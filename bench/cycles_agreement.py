@@ -6,9 +6,11 @@
 # between the two means is compared with what that noise alone explains. Writes
 # bench/results/cycles_agreement.csv and cycles_vs_prism.png (prism | Cycles | 8x difference).
 #
-# usage: bench/cycles_agreement.py BUILD_DIR [--spp-prism 4096] [--spp-cycles 1024] [--size 256] [--area]
+# usage: bench/cycles_agreement.py BUILD_DIR [--spp-prism 4096] [--spp-cycles 1024] [--size 256] [--area | --sky]
 # --area: the box under its ceiling light (an area light) instead of the point light;
 # writes cycles_agreement_area.csv and cycles_vs_prism_area.png.
+# --sky: bench/sky.cpp's spheres under the photographed sky (an EnvironmentMap), Cycles'
+# copy built by bench/cycles_sky.py; writes cycles_agreement_sky.csv and cycles_vs_prism_sky.png.
 import argparse
 import csv
 import math
@@ -20,6 +22,20 @@ from methods_vs_time import cycles, read_pfm, run
 here = os.path.dirname(os.path.abspath(__file__))
 
 
+def run_sky(build, spp, out, size, seed):
+    """bench_sky's path-traced picture; its seconds."""
+    result = subprocess.run([os.path.join(build, "bench", "bench_sky"), out, str(spp), str(size), str(seed)], capture_output=True, text=True, check=True)
+    return float(result.stdout.split()[1])
+
+
+def cycles_sky(spp, out, seed, size):
+    """Cycles' picture of the same scene (bench/cycles_sky.py); its render seconds."""
+    subprocess.run(["blender", "-b", "--factory-startup", "--python", os.path.join(here, "cycles_sky.py"), "--", out, str(spp), str(seed), str(size)],
+                   capture_output=True, text=True, check=True)
+    with open(out + ".txt") as f:
+        return float(f.read().splitlines()[1].split(",")[1])
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("build")
@@ -27,34 +43,45 @@ def main():
     ap.add_argument("--spp-cycles", type=int, default=1024)
     ap.add_argument("--size", type=int, default=256)
     ap.add_argument("--area", action="store_true", help="the box under its ceiling light (an area light)")
+    ap.add_argument("--sky", action="store_true", help="spheres under a photographed sky (an environment map)")
     args = ap.parse_args()
-    suffix = "_area" if args.area else ""
+    suffix = "_area" if args.area else "_sky" if args.sky else ""
     work = os.path.join(args.build, "cycles_agreement" + suffix)
     os.makedirs(work, exist_ok=True)
     prism, blender, seconds = [], [], {}
     for seed in (1, 2):
         out = os.path.join(work, "prism_%d.pfm" % seed)
-        seconds["prism"] = run(args.build, "area" if args.area else "diffuse", "reference", args.spp_prism, out, args.size, seed)
+        if args.sky:
+            seconds["prism"] = run_sky(args.build, args.spp_prism, out, args.size, seed)
+        else:
+            seconds["prism"] = run(args.build, "area" if args.area else "diffuse", "reference", args.spp_prism, out, args.size, seed)
         prism.append(read_pfm(out)[2])
         out = os.path.join(work, "cycles_%d.pfm" % seed)
-        seconds["cycles"] = cycles(args.spp_cycles, out, seed, args.size, args.area)
+        seconds["cycles"] = cycles_sky(args.spp_cycles, out, seed, args.size) if args.sky else cycles(args.spp_cycles, out, seed, args.size, args.area)
         blender.append(read_pfm(out)[2])
     n = len(prism[0])
     mean = lambda a, b: [(x + y) / 2 for x, y in zip(a, b)]
     rmse = lambda a, b: math.sqrt(sum((x - y) ** 2 for x, y in zip(a, b)) / n)
-    noise_prism, noise_cycles = rmse(*prism) / 2, rmse(*blender) / 2  # of each pair's mean
-    p, c = mean(*prism), mean(*blender)
-    measured, expected = rmse(p, c), math.hypot(noise_prism, noise_cycles)
-    ratio = sum(p) / sum(c)
     print("prism %d spp x2 (%.1f s each), Cycles %d spp x2 (%.1f s each)" % (args.spp_prism, seconds["prism"], args.spp_cycles, seconds["cycles"]))
-    print("noise of the means: prism %.5f, Cycles %.5f; RMSE prism vs Cycles %.5f, noise alone explains %.5f (ratio %.3f)" %
-          (noise_prism, noise_cycles, measured, expected, measured / expected))
-    print("mean radiance prism / Cycles: %.5f" % ratio)
+    # In linear radiance, and in the display range (clamped to 1, where the picture
+    # saturates): there a sun's image and its caustics' fireflies, a few values that hold
+    # most of the linear noise, count as what a viewer sees.
+    stats = []
+    for name, view in (("linear", lambda a: a), ("display range", lambda a: [min(v, 1.0) for v in a])):
+        pv, cv = [view(x) for x in prism], [view(x) for x in blender]
+        noise_prism, noise_cycles = rmse(*pv) / 2, rmse(*cv) / 2  # of each pair's mean
+        p, c = mean(*pv), mean(*cv)
+        measured, expected = rmse(p, c), math.hypot(noise_prism, noise_cycles)
+        ratio = sum(p) / sum(c)
+        print("%s: noise of the means: prism %.5f, Cycles %.5f; RMSE prism vs Cycles %.5f, noise alone explains %.5f (ratio %.3f); "
+              "mean radiance prism / Cycles: %.5f" % (name, noise_prism, noise_cycles, measured, expected, measured / expected, ratio))
+        stats += ["%.6f" % noise_prism, "%.6f" % noise_cycles, "%.6f" % measured, "%.6f" % expected, "%.6f" % ratio]
+    p, c = mean(*prism), mean(*blender)
     with open(os.path.join(here, "results", "cycles_agreement" + suffix + ".csv"), "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["prism_spp", "cycles_spp", "prism_seconds", "cycles_seconds", "noise_prism", "noise_cycles", "rmse_between", "rmse_from_noise", "mean_ratio"])
-        w.writerow([args.spp_prism, args.spp_cycles, "%.2f" % seconds["prism"], "%.2f" % seconds["cycles"], "%.6f" % noise_prism,
-                    "%.6f" % noise_cycles, "%.6f" % measured, "%.6f" % expected, "%.6f" % ratio])
+        columns = ["noise_prism", "noise_cycles", "rmse_between", "rmse_from_noise", "mean_ratio"]
+        w.writerow(["prism_spp", "cycles_spp", "prism_seconds", "cycles_seconds"] + columns + [k + "_display" for k in columns])
+        w.writerow([args.spp_prism, args.spp_cycles, "%.2f" % seconds["prism"], "%.2f" % seconds["cycles"]] + stats)
     # prism | Cycles | 8x difference, sRGB-encoded, for the README.
     try:
         from PIL import Image

@@ -8,12 +8,15 @@
 //   povray is the glass box in POV-Ray's model (shared/scenes/cornell_caustics.pov: its
 //   no-falloff light, direct light and caustics only; no global photons, and the
 //   reference takes no diffuse bounce).
-//   METHOD direct | gather | cache | progressive | reference | mask; EFFORT is, per method:
+//   METHOD direct | gather | cache | progressive | reference | path | path_bounces | mask; EFFORT is, per method:
 //   direct: photons (global and caustic); gather: final-gather rays (2e5 photons);
 //   cache: rays per record (2e5 photons); progressive: passes (5e4 + 5e4 photons each);
-//   reference: samples per pixel (and as many light paths); mask: samples per pixel,
-//   and the image is the share of each pixel whose camera ray meets a diffuse surface
-//   first (1 where the pixel sees only walls).
+//   reference: samples per pixel (and as many light paths); path: the path tracer alone,
+//   light samples and bounces combined by multiple importance sampling, samples per
+//   pixel; path_bounces: the same without light samples for area lights (their light
+//   found only by the bounces that meet them); mask: samples per pixel, and the image is
+//   the share of each pixel whose camera ray meets a diffuse surface first (1 where the
+//   pixel sees only walls).
 #include "common.hpp"
 #include "methods.hpp"
 #include "scenes/cornell.hpp"
@@ -80,7 +83,7 @@ int main(int argc, char** argv)
         options.photons = 50000;
         if (glass) options.caustic_photons = 50000;
         options.render.spp = 1;
-    } else if (method == "reference" || method == "mask") {
+    } else if (method == "reference" || method == "mask" || method == "path" || method == "path_bounces") {
         options.render.spp = int(effort);
     }
     if (povray) options.photons = 0; // POV-Ray's model: no global light
@@ -92,6 +95,14 @@ int main(int argc, char** argv)
             const prism::Film film = prism::render(scenes::cornell_camera<float>(), SeesDiffuseFirst<std::remove_cvref_t<decltype(scene)>>{&scene}, options.render);
             prism::write_pfm(film, out);
             return 0.0;
+        }
+        if (method == "path" || method == "path_bounces") {
+            const auto start = std::chrono::steady_clock::now();
+            const prism::PathTracer tracer(scene, {.area_lights = method == "path" ? prism::AreaLightStrategy::mis : prism::AreaLightStrategy::bounces});
+            const prism::Film film = prism::render(scenes::cornell_camera<float>(), tracer, options.render);
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            prism::write_pfm(film, out);
+            return seconds;
         }
         if (method == "cache") {
             using Mapper = prism::PhotonMapper<std::remove_cvref_t<decltype(scene)>>;

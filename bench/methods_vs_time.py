@@ -4,6 +4,9 @@
 # unbiased reference (path tracing + light tracing at high effort), Blender's Cycles on
 # the diffuse box and POV-Ray 3.7 on its own caustics scene, all in one run on 2 threads:
 #   diffuse  shared/scenes/cornell_diffuse.md (Cycles renders it too)
+#   area     the same box under its ceiling light, an area light (Cycles renders it too);
+#            also the path tracer alone, with multiple importance sampling and without
+#            light samples (path, path_bounces)
 #   glass    the Cornell box with the glass and mirror balls, physical light
 #   povray   shared/scenes/cornell_caustics.pov in POV-Ray's model: its no-falloff light,
 #            direct light and caustics only (no radiosity); prism's reference takes no
@@ -169,7 +172,7 @@ def main():
                     "keeping the CSV's other rows and the references already rendered")
     ap.add_argument("--repeats", type=int, default=3, help="interleaved rounds of every timed render (min and median kept)")
     ap.add_argument("--summary", action="store_true", help="only print the time-to-error ratios of the CSV")
-    ap.add_argument("--scenes", default="diffuse,glass,povray", help="comma-separated: run only these scenes, keeping the CSV's other rows")
+    ap.add_argument("--scenes", default="diffuse,area,glass,povray", help="comma-separated: run only these scenes, keeping the CSV's other rows")
     args = ap.parse_args()
     only = set(args.methods.split(",")) if args.methods else None
     scenes = args.scenes.split(",")
@@ -193,7 +196,8 @@ def main():
         efforts = {m: e[:2] for m, e in efforts.items()}
         cycles_spp = cycles_spp[:2]
     povray_counts = [10000, 30000, 100000, 300000, 1000000, 3000000]
-    per_scene = {"diffuse": efforts, "glass": efforts,
+    paths = {"path": efforts["reference"], "path_bounces": efforts["reference"]}
+    per_scene = {"diffuse": efforts, "glass": efforts, "area": {**efforts, **paths},
                  "povray": {"direct": [10000, 30000, 100000, 300000, 1000000, 3000000],
                             "direct, 1 spp": [10000, 30000, 100000, 300000, 1000000, 3000000], "progressive": efforts["progressive"],
                             "reference": [1, 2] + efforts["reference"]}}
@@ -227,11 +231,11 @@ def main():
                 for effort in levels:
                     out = os.path.join(work, prism_render_name(scene, method, effort))
                     jobs.append(("prism " + method, effort, out, functools.partial(run, args.build, scene, method, effort, out, args.size), read_pfm))
-        if scene == "diffuse" and (not only or "cycles" in only):
+        if scene in ("diffuse", "area") and (not only or "cycles" in only):
             if shutil.which("blender"):
                 for spp in cycles_spp:
-                    out = os.path.join(work, "cycles_%d.pfm" % spp)
-                    jobs.append(("Cycles", spp, out, functools.partial(cycles, spp, out, 1, args.size), read_pfm))
+                    out = os.path.join(work, "cycles_%s%d.pfm" % ("area_" if scene == "area" else "", spp))
+                    jobs.append(("Cycles", spp, out, functools.partial(cycles, spp, out, 1, args.size, scene == "area"), read_pfm))
             else:
                 print("Cycles not run: install blender (tools/setup.sh --bench)", file=sys.stderr)
         if scene == "povray" and (not only or "povray" in only):
@@ -252,7 +256,7 @@ def main():
             print("%s: %s %s: %.3f s (median %.3f), RMSE %.5f, in the display range %.5f" % (scene, method, effort, rows[-1][3], rows[-1][4], rows[-1][5],
                                                                                              rows[-1][8]), flush=True)
     path = os.path.join(here, "results", "methods_vs_time.csv")
-    if (only or len(scenes) < 3) and os.path.exists(path):  # keep the rows not re-run
+    if (only or len(scenes) < 4) and os.path.exists(path):  # keep the rows not re-run
         with open(path) as f:
             kept = [r for r in csv.DictReader(f) if r["scene"] not in scenes or (only and method_key(r["method"]) not in only)]
         rows = [(r["scene"], r["method"], r["effort"], float(r["seconds"]), float(r.get("seconds_median") or r["seconds"])) +
@@ -326,14 +330,14 @@ def rescore(work):
     with open(path) as f:
         old = list(csv.DictReader(f))
     masks = {scene: [v == 1.0 for v in read_pfm(os.path.join(work, "povray_mask.pfm"))[2]] if scene == "povray" else None
-             for scene in ("diffuse", "glass", "povray")}
+             for scene in ("diffuse", "area", "glass", "povray")}
     scorers = {scene: Scorer([read_pfm(os.path.join(work, "%s_reference_%d.pfm" % (scene, seed))) for seed in (101, 102)], masks[scene])
                for scene in {r["scene"] for r in old}}
     rows = []
     for r in old:
         method = method_key(r["method"])
         if method == "cycles":
-            image = read_pfm(os.path.join(work, "cycles_%s.pfm" % r["effort"]))
+            image = read_pfm(os.path.join(work, "cycles_%s%s.pfm" % ("area_" if r["scene"] == "area" else "", r["effort"])))
         elif method == "povray":
             image = read_hdr(os.path.join(work, "povray_%s%s.hdr" % (r["effort"], "_aa" if "anti" in r["method"] else "")))
         else:
@@ -360,12 +364,15 @@ def strip(work, efforts, cycles_spp):
         return img
 
     rows = []
-    for scene in ["glass", "diffuse", "povray"]:
+    for scene in ["glass", "diffuse", "area", "povray"]:
         cells = [("direct map, 1e6", "%s_direct_1000000.pfm" % scene), ("final gather, 64", "%s_gather_64.pfm" % scene),
                  ("cached gather", "%s_cache_4096.pfm" % scene), ("progressive, 64", "%s_progressive_64.pfm" % scene),
                  ("reference", "%s_reference.pfm" % scene)]
         if scene == "diffuse":
             cells.append(("Cycles %d spp" % cycles_spp[-1], "cycles_%d.pfm" % cycles_spp[-1]))
+        if scene == "area":
+            cells[4:4] = [("path tracer, MIS, 64", "area_path_64.pfm")]
+            cells.append(("Cycles %d spp" % cycles_spp[-1], "cycles_area_%d.pfm" % cycles_spp[-1]))
         if scene == "povray":
             cells = [("POV-Ray's model: direct map, 1e6", cells[0][1]), cells[3], cells[4], ("POV-Ray, 1e6, anti-aliased", "povray_1000000_aa.hdr")]
         rows.append([(label, os.path.join(work, name)) for label, name in cells if os.path.exists(os.path.join(work, name))])

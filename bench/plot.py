@@ -394,7 +394,8 @@ def thin_film_chart(rows):
 def methods_vs_time_chart(rows):
     """Error against prism's reference vs time: a column per scene, linear radiance above,
     the display range (clamped to 1) below; a curve per method."""
-    scenes = [("diffuse", "diffuse Cornell box (Cycles renders it too)"), ("glass", "Cornell box, glass and mirror balls"),
+    scenes = [("diffuse", "diffuse Cornell box (Cycles renders it too)"), ("area", "the diffuse box under its ceiling light\n(an area light; Cycles renders it too)"),
+              ("glass", "Cornell box, glass and mirror balls"),
               ("povray", "glass box in POV-Ray's model (direct + caustics),\nover the pixels that see walls")]
     scenes = [(scene, title) for scene, title in scenes if any(r["scene"] == scene for r in rows)]
     metrics = [("rmse", "RMSE, linear radiance"), ("rmse_display", "RMSE, display range (radiance clamped to 1)")]

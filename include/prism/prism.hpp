@@ -48,6 +48,7 @@
 #include <prism/integrator/whitted.hpp>
 #include <prism/light/directional_light.hpp>
 #include <prism/light/environment_light.hpp>
+#include <prism/light/environment_map.hpp>
 #include <prism/light/light.hpp>
 #include <prism/light/point_light.hpp>
 #include <prism/light/spot_light.hpp>

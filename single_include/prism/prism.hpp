@@ -2090,6 +2090,10 @@ private:
 // caller can place the sample within the item (a point on the emitter picked) with the
 // same number, stratified as the number was. The table is built in double, so items whose
 // weights differ by many orders of magnitude keep their probabilities.
+//
+// AliasTable2D: a cell of a grid (an image's pixel) by weight, as a row by the rows' sums
+// and then a column by that row's weights, in constant time; each number's rest places the
+// sample within the cell.
 
 
 #include <algorithm>
@@ -2182,6 +2186,75 @@ private:
     static constexpr T one_below = T(1) - std::numeric_limits<T>::epsilon() / T(2);
 
     std::vector<Bin> bins_;
+};
+
+/// A cell drawn from an AliasTable2D: its column and row, its probability, and what is left
+/// of the two uniform numbers (the row's and the column's), each uniform in [0, 1) again.
+template <Scalar T>
+struct AliasPick2D {
+    std::uint32_t x = 0;   ///< the column drawn
+    std::uint32_t y = 0;   ///< the row drawn
+    T probability = T(0);  ///< the cell's weight over the sum of all weights
+    Vec2<T> rest{};        ///< what is left of u.x (by the row) and of u.y (by the column)
+};
+
+/// Picks cell (x, y) of a width x height grid with probability weight(x, y) / sum of the
+/// weights, in O(1): the row by u.x among the rows' sums, then the column by u.y among the
+/// row's own weights.
+template <Scalar T>
+class AliasTable2D {
+public:
+    /// An empty table (it picks nothing).
+    AliasTable2D() = default;
+
+    /// The table for `weights`, row by row (width x height of them); throws
+    /// std::invalid_argument, naming `what` and the cell, for a negative or non-finite
+    /// weight, no positive weight, a size that is not width x height, or a side of 2^32 or more.
+    AliasTable2D(std::size_t width, std::size_t height, std::span<const double> weights, std::string_view what = "AliasTable2D weight")
+    {
+        if (width == 0 || height == 0 || width >= 0xffffffffu || height >= 0xffffffffu || weights.size() / width != height ||
+            weights.size() % width != 0)
+            detail::throw_invalid(what, ": ", weights.size(), " weights for a grid of ", width, " x ", height);
+        std::vector<double> sums(height, 0.0);
+        width_ = width;
+        columns_.resize(height);
+        for (std::size_t y = 0; y < height; ++y) {
+            const std::span<const double> row = weights.subspan(y * width, width);
+            for (std::size_t x = 0; x < width; ++x) {
+                if (!(row[x] >= 0) || !is_finite(row[x])) detail::throw_invalid(what, " (", x, ", ", y, ") must be finite and >= 0, got ", row[x]);
+                sums[y] += row[x];
+            }
+            // A row that weighs nothing is never picked, and needs no table.
+            if (sums[y] > 0) columns_[y] = AliasTable<T>(row, what);
+        }
+        rows_ = AliasTable<T>(sums, what);
+    }
+
+    /// The grid's width.
+    [[nodiscard]] std::size_t width() const noexcept { return width_; }
+    /// The grid's height.
+    [[nodiscard]] std::size_t height() const noexcept { return columns_.size(); }
+    /// Whether the table has no cell.
+    [[nodiscard]] bool empty() const noexcept { return columns_.empty(); }
+
+    /// The probability of cell (x, y).
+    [[nodiscard]] T probability(std::size_t x, std::size_t y) const noexcept
+    {
+        return columns_[y].empty() ? T(0) : rows_.probability(y) * columns_[y].probability(x);
+    }
+
+    /// The cell for the uniform numbers u in [0, 1)^2; not on an empty table.
+    [[nodiscard]] AliasPick2D<T> pick(const Vec2<T>& u) const noexcept
+    {
+        const AliasPick<T> row = rows_.pick(u.x);
+        const AliasPick<T> column = columns_[row.index].pick(u.y);
+        return {column.index, row.index, row.probability * column.probability, {row.rest, column.rest}};
+    }
+
+private:
+    std::size_t width_ = 0;              ///< cells a row
+    AliasTable<T> rows_;                 ///< by the rows' sums
+    std::vector<AliasTable<T>> columns_; ///< each row by its own weights (empty for a row that weighs nothing)
 };
 
 } // namespace prism
@@ -8128,6 +8201,28 @@ struct WalkVertex {
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
 };
 
+/// A walk leaving the scene: the segment it left along, and what it carries.
+template <Scalar T>
+struct WalkEscape {
+    const Ray<T>& ray;        ///< the segment that left the scene, its direction the way it went
+    const Rgb<T>& power;      ///< what the path carries
+    int diffuse_bounces;      ///< diffuse scatterings on the way (0: every scattering was specular)
+    bool first_specular;      ///< the first scattering was specular (the vertex next to the path's start)
+    T last_pdf;               ///< as WalkVertex's: the last scattering's diffuse density, 0 after a delta one
+
+    /// Whether every scattering on the way was specular.
+    [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
+};
+
+/// What a walk does where it leaves the scene when its caller says nothing: nothing.
+struct IgnoreEscape {
+    /// Does nothing.
+    template <class E>
+    constexpr void operator()(const E&) const noexcept
+    {
+    }
+};
+
 /// What a walk does where it meets an emitting surface when its caller says nothing: nothing.
 struct IgnoreEmitters {
     /// Does nothing.
@@ -8140,13 +8235,13 @@ struct IgnoreEmitters {
 /// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
 /// on_diffuse(material, WalkVertex) is called at every diffuse surface and returns the
 /// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
-/// there); on_escape(ray, power, specular_only, last_pdf) when the path leaves the
-/// scene (last_pdf: as WalkVertex's); on_emitter(material, WalkVertex) where it meets a surface that emits (an area
-/// light; the walk scatters there only by the lobes the material also has). `Mode`:
-/// whether the path is a photon's or a camera's (scatter_photon).
-template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape, class OnEmitter = IgnoreEmitters>
+/// there); on_escape(WalkEscape) when the path leaves the scene; on_emitter(material,
+/// WalkVertex) where it meets a surface that emits (an area light; the walk scatters there
+/// only by the lobes the material also has). `Mode`: whether the path is a photon's or a
+/// camera's (scatter_photon).
+template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
-                 Rgb<typename SceneT::scalar_type> power, Pcg32& rng, int max_bounces, OnDiffuse&& on_diffuse, OnEscape&& on_escape,
+                 Rgb<typename SceneT::scalar_type> power, Pcg32& rng, int max_bounces, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
                  OnEmitter&& on_emitter = {})
 {
     using T = typename SceneT::scalar_type;
@@ -8164,7 +8259,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         const auto hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, &path)
                                        : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
         if (!hit) {
-            on_escape(segment, power, diffuse_bounces == 0, last_pdf);
+            on_escape(WalkEscape<T>{segment, power, diffuse_bounces, first_specular, last_pdf});
             return;
         }
         const Crossing<T>& c = hit->crossing;
@@ -8411,8 +8506,7 @@ private:
         random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, config_.max_bounces,
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         return visit(material, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
-                    },
-                    [](const Ray<T>&, const Rgb<T>&, bool, T) {});
+                    });
     }
 
     /// Store photon i: in the caustic pass only L S+ D, going on past it only by delta lobes.
@@ -11165,9 +11259,11 @@ public:
         int area_light_grid = 1;
         /// How light samples and diffuse bounces share the area lights' light.
         AreaLightStrategy area_lights = AreaLightStrategy::mis;
-        /// Whether a path that meets an area light through mirrors and glass after a
-        /// diffuse bounce (... D S+ L: a caustic of the area light) counts it. The path
-        /// tracer alone does; Reference leaves those paths to its light tracer.
+        /// Whether a path that meets an area or environment light through mirrors and glass
+        /// after a diffuse bounce (... D S+ L: a caustic of the light) counts it. The path
+        /// tracer alone does; Reference leaves those paths to its light tracer, but for
+        /// the ones the camera sees through mirrors and glass first (E S+ D ... S+ L), which
+        /// a light tracer cannot join to the camera: those the path tracer always counts.
         bool caustics_of_area_lights = true;
     };
 
@@ -11211,17 +11307,17 @@ public:
                         sum += at.power * diffuse_response(material, c).brdf() * irradiance;
                         return go_on;
                     },
-                    [&](const Ray<T>& leaving, const Rgb<T>& weight, bool specular_only, T last_pdf) {
-                        if (specular_only) {
-                            sum += weight * scene_->escaped(leaving.direction);
+                    [&](const WalkEscape<T>& out) {
+                        if (out.specular_only()) {
+                            sum += out.power * scene_->escaped(out.ray.direction);
                             return;
                         }
                         // After a diffuse bounce the background lights nothing; an
                         // environment light does, shared with its samples as an area light's.
                         scene_->for_each_light([&]<class L>(const L& light) {
                             if constexpr (is_at_infinity<L>) {
-                                const Vec3<T> d = normalize(leaving.direction);
-                                sum += weight * light.arriving_from(d) * met_light_weight(last_pdf, [&] { return light.pdf(d); });
+                                const Vec3<T> d = normalize(out.ray.direction);
+                                sum += out.power * light.arriving_from(d) * met_light_weight(out.last_pdf, out.first_specular, [&] { return light.pdf(d); });
                             }
                         });
                     },
@@ -11229,7 +11325,7 @@ public:
                         if constexpr (SceneT::has_emitters) {
                             if (at.specular_only()) sum += at.power * emitted(material, at.crossing());
                             else sum += at.power * emitted(material, at.crossing()) *
-                                        met_light_weight(at.last_pdf, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
+                                        met_light_weight(at.last_pdf, at.first_specular, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
                         }
                     });
         return sum;
@@ -11245,17 +11341,19 @@ private:
     /// after a diffuse bounce: with a diffuse bounce just before it (its density last_pdf,
     /// cos / pi), the power heuristic against sampling the light from there (n samples of
     /// density light_pdf(): n times it), or 1 or 0 for the strategies alone; through mirrors
-    /// and glass after a diffuse bounce, 1 where the path tracer counts such paths (no light
-    /// sample can find them), else 0. (Seen from the camera through mirrors and glass only,
-    /// a light counts whole: the caller's.)
+    /// and glass after a diffuse bounce (no light sample can find it there), 1 where the path
+    /// tracer counts such paths, else 0, but 1 always when the camera's own first scattering
+    /// was specular (`first_specular`): a light tracer joins its paths to the camera from a
+    /// diffuse surface the camera sees directly, so it cannot have them. (Seen from the
+    /// camera through mirrors and glass only, a light counts whole: the caller's.)
     template <class LightPdf>
-    [[nodiscard]] T met_light_weight(T last_pdf, LightPdf&& light_pdf) const noexcept
+    [[nodiscard]] T met_light_weight(T last_pdf, bool first_specular, LightPdf&& light_pdf) const noexcept
     {
         if (last_pdf > T(0)) {
             if (config_.area_lights != AreaLightStrategy::mis) return config_.area_lights == AreaLightStrategy::bounces ? T(1) : T(0);
             return power_heuristic(last_pdf, light_samples() * light_pdf());
         }
-        return config_.caustics_of_area_lights ? T(1) : T(0);
+        return config_.caustics_of_area_lights || first_specular ? T(1) : T(0);
     }
 
     /// The samples each area light takes at a diffuse vertex (the heuristic counts them all).
@@ -11655,12 +11753,11 @@ private:
                 // mirrors what lies beyond.
                 return reflects<M> || transmits<M> ? Lobes::delta : Lobes::none;
             };
-            const auto escaped = [](const Ray<T>&, const Rgb<T>&, bool, T) {};
             // (About a shading normal, a direction may lead into the solid: no light.)
             if (!hit.shades_flat() && !(dot(direction, hit.facing_normal()) > T(0))) return found;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, direction);
-            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
+            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse);
             return found;
         });
     }
@@ -11811,8 +11908,11 @@ private:
 // Reference: prism's unbiased estimator, a path tracer's camera samples plus a light
 // tracer's splats (integrator/path_tracer.hpp, integrator/light_tracer.hpp). The two count
 // disjoint sets of paths, so their sum is every path either can sample: the path tracer
-// leaves an area light met through mirrors and glass after a diffuse bounce (D S+ L) to
-// the light tracer, which finds it as L S+ D (PathTracer's caustics_of_area_lights). An integrator of
+// leaves an area or environment light met through mirrors and glass after a diffuse bounce
+// (E D ... S+ L) to the light tracer, which finds it as L S+ ... D E (PathTracer's
+// caustics_of_area_lights), but keeps the paths the camera sees through a mirror or glass
+// first (E S+ D ... S+ L), which the light tracer cannot join to the camera. (Those of a
+// point light neither half finds: no estimator here does.) An integrator of
 // passes: pass s is the path tracer's sample s of every pixel and the light tracer's pass
 // s, of as many light paths as the image has pixels (LightTracerConfig::paths = width x
 // height), so each pass costs about as many paths from either end.
@@ -12169,6 +12269,234 @@ struct EnvironmentLight {
 };
 
 static_assert(Light<EnvironmentLight<float>>);
+
+} // namespace prism
+
+// ---- prism/light/environment_map.hpp ----
+// EnvironmentMap: the light of a latitude-longitude image (an HDR photograph of the world
+// around), seen where rays leave the scene and drawn pixel by pixel by what each sends.
+//
+// The image wraps the sphere of directions with +y up: row 0 is the zenith, the last row
+// the nadir, every row the same span of polar angle; the middle column looks toward -z and
+// the image's right toward +x, so that a camera looking down -z sees the image's centre the
+// right way round (as a viewer standing inside the panorama; Mitsuba 3's envmap has the
+// same layout). Radiance between pixel centres is bilinear, wrapping around the horizon.
+//
+// A direction is drawn by picking a pixel with probability proportional to the radiance
+// it sends (the mean of its channels, integrated over the pixel's solid angle), then a
+// point of that pixel's patch of sphere uniform in solid angle. Its density is therefore
+// constant over each pixel, and positive wherever the bilinear radiance is: a pixel's
+// weight is its bilinear radiance integrated over it, which takes in its eight neighbours.
+
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace prism {
+
+/// How an EnvironmentMap's image is placed and scaled.
+template <Scalar T>
+struct EnvironmentMapSettings {
+    T strength = T(1);          ///< radiance per pixel value (W/(m^2 sr) per unit)
+    T rotation_degrees = T(0);  ///< the image turned about +y, counterclockwise seen from above
+};
+
+/// A sky from a latitude-longitude image of linear radiance (an HDR or EXR file read by io/).
+/// Copies share the image and its distribution.
+template <Scalar T = float>
+class EnvironmentMap {
+public:
+    /// The precision of the light.
+    using scalar_type = T;
+    /// Not a delta light: drawn direction by direction.
+    static constexpr bool delta = false;
+    /// Seen by the rays that leave the scene.
+    static constexpr bool at_infinity = true;
+
+    /// The light of a width x height image, `pixels` row by row from the top. Throws
+    /// std::invalid_argument, naming the parameter or the pixel, for an empty image, a
+    /// pixel count that is not width x height, a negative or non-finite pixel, or a
+    /// strength or rotation that is not finite (strength > 0).
+    EnvironmentMap(int width, int height, std::span<const Rgb<float>> pixels, EnvironmentMapSettings<T> settings = {})
+    {
+        if (width < 1 || height < 1) detail::throw_invalid("EnvironmentMap size must be at least 1 x 1, got ", width, " x ", height);
+        if (pixels.size() != std::size_t(width) * std::size_t(height))
+            detail::throw_invalid("EnvironmentMap pixels: ", pixels.size(), " for an image of ", width, " x ", height);
+        detail::require_positive("EnvironmentMap strength", settings.strength);
+        detail::require_finite("EnvironmentMap rotation_degrees", settings.rotation_degrees);
+        auto image = std::make_shared<Image>();
+        image->width = width;
+        image->height = height;
+        image->strength = settings.strength;
+        const T turn = settings.rotation_degrees * pi<T> / T(180);
+        image->cos_turn = std::cos(turn);
+        image->sin_turn = std::sin(turn);
+        image->pixels.assign(pixels.begin(), pixels.end());
+        for (std::size_t i = 0; i < pixels.size(); ++i)
+            if (!(is_finite(pixels[i]) && pixels[i].x >= 0 && pixels[i].y >= 0 && pixels[i].z >= 0))
+                detail::throw_invalid("EnvironmentMap pixel (", i % std::size_t(width), ", ", i / std::size_t(width),
+                                      ") must be finite and >= 0 in every channel, got ", detail::describe(pixels[i]));
+        // Each row's edges, as cosines of the polar angle.
+        image->cos_edge.resize(std::size_t(height) + 1);
+        for (int y = 0; y <= height; ++y) image->cos_edge[std::size_t(y)] = std::cos(pi<double> * double(y) / double(height));
+        image->cos_edge.front() = 1;
+        image->cos_edge.back() = -1;
+        // A pixel's weight: its bilinear radiance integrated over it ((1 6 1) / 8 across
+        // each axis of the 3 x 3 around it), times its solid angle.
+        std::vector<double> weights(pixels.size());
+        Vec3<double> integral{0.0};
+        constexpr double k[3] = {1.0 / 8, 6.0 / 8, 1.0 / 8};
+        for (int y = 0; y < height; ++y) {
+            const double solid_angle = image->solid_angle(y);
+            for (int x = 0; x < width; ++x) {
+                Vec3<double> mean{0.0};
+                for (int j = -1; j <= 1; ++j)
+                    for (int i = -1; i <= 1; ++i) mean += k[i + 1] * k[j + 1] * Vec3<double>(image->texel(x + i, y + j));
+                weights[std::size_t(y) * std::size_t(width) + std::size_t(x)] = (mean.x + mean.y + mean.z) / 3 * solid_angle;
+                integral += mean * solid_angle;
+            }
+        }
+        // An image black everywhere sends nothing: drawn uniformly, so the density stays
+        // positive and the estimates zero.
+        if (!(integral.x + integral.y + integral.z > 0))
+            for (int y = 0; y < height; ++y)
+                std::fill_n(weights.begin() + std::ptrdiff_t(y) * width, width, image->solid_angle(y));
+        // An estimate L / pdf is at most 3 x 64 times the integral of the channels' mean (a
+        // channel is at most 3 times the mean, and a pixel's weight takes at least 1/64 of
+        // each of its neighbours): that must be finite in T.
+        const Vec3<double> scaled = integral * double(settings.strength);
+        if (!is_finite(Rgb<T>(scaled * 192.0)))
+            detail::throw_invalid("EnvironmentMap: the radiance integrated over the sphere, ", detail::describe(scaled),
+                                  ", is too large for this precision (192 times it must be finite)");
+        image->integral = Rgb<T>(scaled);
+        image->pick = AliasTable2D<T>(std::size_t(width), std::size_t(height), weights, "EnvironmentMap pixel weight");
+        image_ = std::move(image);
+    }
+
+    /// The image's width in pixels.
+    [[nodiscard]] int width() const noexcept { return image_->width; }
+    /// The image's height in pixels.
+    [[nodiscard]] int height() const noexcept { return image_->height; }
+
+    /// The radiance arriving along -direction (from `direction`'s side of the sky), bilinear
+    /// between pixel centres; `direction` of unit length.
+    [[nodiscard]] Rgb<T> arriving_from(const Vec3<T>& direction) const noexcept
+    {
+        const Image& image = *image_;
+        const Vec2<T> uv = image.to_uv(direction);
+        const T fx = uv.x * T(image.width) - T(0.5), fy = uv.y * T(image.height) - T(0.5);
+        const T x0 = std::floor(fx), y0 = std::floor(fy);
+        const T tx = fx - x0, ty = fy - y0;
+        const int x = int(x0), y = int(y0);
+        const Rgb<T> top = (T(1) - tx) * Rgb<T>(image.texel(x, y)) + tx * Rgb<T>(image.texel(x + 1, y));
+        const Rgb<T> bottom = (T(1) - tx) * Rgb<T>(image.texel(x, y + 1)) + tx * Rgb<T>(image.texel(x + 1, y + 1));
+        return image.strength * ((T(1) - ty) * top + ty * bottom);
+    }
+
+    /// A direction drawn pixel by pixel by what each sends, then uniform in solid angle
+    /// over the pixel; its estimate L / pdf.
+    [[nodiscard]] LightSample<T> sample(const Vec3<T>&, const Vec2<T>& u) const noexcept
+    {
+        const Image& image = *image_;
+        const AliasPick2D<T> pick = image.pick.pick(u);
+        const T c0 = T(image.cos_edge[pick.y]), c1 = T(image.cos_edge[pick.y + 1]);
+        const T cos_theta = clamp(c0 + pick.rest.x * (c1 - c0), T(-1), T(1));
+        const T sin_theta = prism::sqrt(std::max(T(0), T(1) - cos_theta * cos_theta));
+        const T phi = T(2) * pi<T> * ((T(pick.x) + pick.rest.y) / T(image.width) - T(0.5));
+        const Vec3<T> wi = image.to_world({sin_theta * std::sin(phi), cos_theta, -sin_theta * std::cos(phi)});
+        const T pdf = pick.probability / T(image.solid_angle(int(pick.y)));
+        return {wi, infinity<T>, arriving_from(wi) / pdf, pdf};
+    }
+
+    /// The density sample() draws `direction` with (unit length): its pixel's probability
+    /// over the pixel's solid angle.
+    [[nodiscard]] T pdf(const Vec3<T>& direction) const noexcept
+    {
+        const Image& image = *image_;
+        const Vec2<T> uv = image.to_uv(direction);
+        const int x = std::min(int(uv.x * T(image.width)), image.width - 1);
+        const int y = std::min(int(uv.y * T(image.height)), image.height - 1);
+        return image.pick.probability(std::size_t(x), std::size_t(y)) / T(image.solid_angle(y));
+    }
+
+    /// The power entering the disk of radius R that faces each direction and covers the
+    /// scene (or the target): pi R^2 times the radiance integrated over the sphere.
+    [[nodiscard]] Rgb<T> photon_power(const PhotonAim<T>& aim) const noexcept
+    {
+        if (!aim.scene) return Rgb<T>(T(0));
+        const T r = aim.target ? aim.target->radius : aim.scene->radius;
+        return image_->integral * (pi<T> * r * r);
+    }
+
+    /// A photon from a direction drawn as sample() draws it (from `rng`), through the point
+    /// (u, v) of the disk facing it, upstream of everything bounded; weighted by L / pdf
+    /// over its mean, the radiance integrated over the sphere.
+    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v, Pcg32& rng) const noexcept
+    {
+        const BoundingSphere<T>& scene = *aim.scene;
+        const BoundingSphere<T>& sphere = aim.target ? *aim.target : scene;
+        const T a = rng.uniform<T>(), b = rng.uniform<T>();
+        const LightSample<T> from = sample(sphere.center, {a, b});
+        const Vec3<T> travel = -from.wi;
+        const T upstream = length(sphere.center - scene.center) + scene.radius + sphere.radius;
+        const Rgb<T>& mean = image_->integral;
+        const Rgb<T> weight{mean.x > T(0) ? from.irradiance.x / mean.x : T(0), mean.y > T(0) ? from.irradiance.y / mean.y : T(0),
+                            mean.z > T(0) ? from.irradiance.z / mean.z : T(0)};
+        return {{uniform_disk(sphere.center - upstream * travel, travel, sphere.radius, u, v), travel}, weight};
+    }
+
+    /// The image and its settings were checked when the light was made: nothing is left to check.
+    constexpr void validate() const noexcept {}
+
+private:
+    struct Image {
+        int width = 0, height = 0;
+        std::vector<Rgb<float>> pixels;  ///< row by row from the top
+        std::vector<double> cos_edge;    ///< cos of each row's upper and lower polar angle (height + 1)
+        AliasTable2D<T> pick;            ///< the pixels by radiance times solid angle
+        Rgb<T> integral{T(0)};           ///< the radiance integrated over the sphere (W/m^2)
+        T strength = T(1);
+        T cos_turn = T(1), sin_turn = T(0);
+
+        /// Pixel (x, y), x wrapping around the horizon and y held at the poles.
+        [[nodiscard]] const Rgb<float>& texel(int x, int y) const noexcept
+        {
+            x %= width;
+            if (x < 0) x += width;
+            y = std::clamp(y, 0, height - 1);
+            return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+        }
+
+        /// The solid angle of a pixel of row y.
+        [[nodiscard]] double solid_angle(int y) const noexcept
+        {
+            return 2 * pi<double> / double(width) * (cos_edge[std::size_t(y)] - cos_edge[std::size_t(y) + 1]);
+        }
+
+        /// The image's (u, v) in [0, 1]^2 of a unit direction in the world.
+        [[nodiscard]] Vec2<T> to_uv(const Vec3<T>& d) const noexcept
+        {
+            const Vec3<T> l{cos_turn * d.x - sin_turn * d.z, d.y, sin_turn * d.x + cos_turn * d.z};
+            const T u = std::atan2(l.x, -l.z) / (T(2) * pi<T>) + T(0.5);
+            const T v = std::acos(clamp(l.y, T(-1), T(1))) / pi<T>;
+            return {clamp(u, T(0), T(1)), clamp(v, T(0), T(1))};
+        }
+
+        /// A direction in the image's own frame turned into the world.
+        [[nodiscard]] Vec3<T> to_world(const Vec3<T>& l) const noexcept
+        {
+            return {cos_turn * l.x + sin_turn * l.z, l.y, -sin_turn * l.x + cos_turn * l.z};
+        }
+    };
+
+    std::shared_ptr<const Image> image_;
+};
+
+static_assert(Light<EnvironmentMap<float>>);
 
 } // namespace prism
 
@@ -14033,8 +14361,8 @@ private:
 } // namespace prism
 
 // ---- prism/io/image.hpp ----
-// Image files: PNG (sRGB, 8 bit, through stb_image_write and stb_image) and PFM (exact
-// linear floats).
+// Image files: PNG (sRGB, 8 bit, through stb_image_write and stb_image), PFM (exact
+// linear floats), and Radiance HDR (RGBE, read through stb_image).
 //
 // Opt-in: prism/prism.hpp does not include this header, since it needs stb_image_write
 // and stb_image (Debian: libstb-dev). A regular file is written whole or not at all:
@@ -14061,10 +14389,11 @@ private:
 #endif
 
 #if !defined(STBI_INCLUDE_STB_IMAGE_H)
-// The same for stb_image, reading PNG only.
+// The same for stb_image, reading PNG and Radiance HDR only.
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
+#define STBI_ONLY_HDR
 #define PRISM_DEFINED_STBI_IMPLEMENTATION
 #endif
 #pragma GCC diagnostic push
@@ -14257,6 +14586,126 @@ try {
         for (int x = 0; x < w; ++x) {
             const unsigned char* p = data + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
             film.set(x, y, Rgb<float>{linear(p[0]), linear(p[1]), linear(p[2])});
+        }
+    return film;
+} catch (const allocation_error&) {
+    throw;
+} catch (const std::bad_alloc&) {
+    throw detail::out_of_memory(path, "image");
+}
+
+/// Read a Radiance HDR file (RGBE, "#?RADIANCE" or "#?RGBE", FORMAT=32-bit_rle_rgbe, rows
+/// from the top: "-Y height +X width") into linear radiance, through stb_image. The file is
+/// read no further than `limits`; its header must be text of at most 1024 lines of at most
+/// 1023 bytes, and its rows are walked before stb_image allocates the picture: each must be
+/// there whole, every run and dump inside its row, and nothing may follow the last.
+[[nodiscard]] inline Film read_hdr(const std::filesystem::path& path, ReadLimits limits = {})
+try {
+    detail::InputFile file(path, "image", limits);
+    // The first line alone, so that what is no HDR (/dev/zero) is refused before the rest is read.
+    std::string magic;
+    for (int c = file.get(); c != '\n'; c = file.get()) {
+        if (c < 0 || magic.size() == 11) file.fail("it is not a Radiance HDR file (its first line is not #?RADIANCE or #?RGBE)");
+        magic.push_back(char(c));
+    }
+    if (!magic.empty() && magic.back() == '\r') magic.pop_back();
+    if (magic != "#?RADIANCE" && magic != "#?RGBE") file.fail("it is not a Radiance HDR file (its first line is not #?RADIANCE or #?RGBE)");
+    std::vector<unsigned char> bytes(magic.begin(), magic.end());
+    bytes.push_back('\n');
+    const std::vector<unsigned char> rest = file.rest();
+    bytes.insert(bytes.end(), rest.begin(), rest.end());
+    std::size_t at = magic.size() + 1;
+    std::size_t number = 1;
+    const auto next_line = [&](const std::string& what) {
+        ++number;
+        const std::string name = what + " (line " + std::to_string(number) + ")";
+        std::string text;
+        for (;; ++at) {
+            if (at == bytes.size()) file.fail("it ends inside " + name);
+            const unsigned char c = bytes[at];
+            if (c == '\n') break;
+            if (c == 0) file.fail(name + " holds a NUL byte: it is not text");
+            if (text.size() == 1023) file.fail(name + " is longer than 1023 bytes");
+            text.push_back(char(c));
+        }
+        ++at;
+        return text;
+    };
+    bool format = false;
+    for (;;) {
+        if (number == 1024) file.fail("its header has more than 1024 lines");
+        const std::string line = next_line("its header");
+        if (line.empty()) break;
+        if (line.rfind("FORMAT=", 0) == 0) {
+            if (line != "FORMAT=32-bit_rle_rgbe") file.fail("its " + line + " (line " + std::to_string(number) + ") is not FORMAT=32-bit_rle_rgbe, the only format read");
+            format = true;
+        }
+    }
+    if (!format) file.fail("its header has no FORMAT=32-bit_rle_rgbe line");
+    const std::string size = next_line("its size line");
+    const auto number_at = [&](std::size_t from, std::size_t to) {
+        const std::string text = size.substr(from, to - from);
+        if (text.empty() || text.size() > 8 || text.find_first_not_of("0123456789") != std::string::npos || std::stol(text) < 1 ||
+            std::stol(text) > (1l << 24))
+            file.fail("its size line '" + size + "' is not \"-Y height +X width\" with each side from 1 to 16777216");
+        return std::uint64_t(std::stol(text));
+    };
+    const std::size_t plus = size.find(" +X ");
+    if (size.rfind("-Y ", 0) != 0 || plus == std::string::npos)
+        file.fail("its size line '" + size + "' is not \"-Y height +X width\" (rows from the top, the only order read)");
+    const std::uint64_t height = number_at(3, plus), width = number_at(plus + 4, size.size());
+    // Walk the rows as stb_image will read them, so that the pixels it allocates are
+    // paid for in bytes and nothing follows the last row: run-length encoded rows (8 to
+    // 32767 pixels wide, each starting 2 2 and its width) hold each channel as runs (a
+    // count above 128 and one value) and dumps (a count and that many values); any other
+    // file is flat, 4 bytes a pixel.
+    const auto byte = [&](std::uint64_t row) {
+        if (at == bytes.size()) file.fail("it is truncated in row " + std::to_string(row) + " of " + std::to_string(height));
+        return bytes[at++];
+    };
+    const bool encoded = width >= 8 && width < 32768 && bytes.size() - at >= 4 && bytes[at] == 2 && bytes[at + 1] == 2 && (bytes[at + 2] & 0x80) == 0;
+    if (!encoded) {
+        const auto flat = detail::checked_product(width * height, 4);
+        if (!flat || *flat > bytes.size() - at)
+            file.fail("its size line says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than the " +
+                      std::to_string(bytes.size() - at) + " bytes after it hold (4 a pixel)");
+        at += std::size_t(*flat);
+    }
+    for (std::uint64_t row = 0; encoded && row < height; ++row) {
+        const unsigned char a = byte(row), b = byte(row), c = byte(row), d = byte(row);
+        if (a != 2 || b != 2 || (std::uint64_t(c) << 8 | d) != width)
+            file.fail("row " + std::to_string(row) + " does not start as a run-length encoded row of " + std::to_string(width) + " pixels");
+        for (int channel = 0; channel < 4; ++channel)
+            for (std::uint64_t done = 0; done < width;) {
+                std::uint64_t count = byte(row);
+                const bool run = count > 128;
+                if (run) count -= 128;
+                if (count == 0 || count > width - done)
+                    file.fail("row " + std::to_string(row) + " has a " + (run ? "run" : "dump") + " of " + std::to_string(count) + " values where " +
+                              std::to_string(width - done) + " are left");
+                for (std::uint64_t i = 0; i < (run ? 1 : count); ++i) (void)byte(row);
+                done += count;
+            }
+    }
+    if (at != bytes.size()) file.fail(std::to_string(bytes.size() - at) + " bytes follow its last row");
+    int w = 0, h = 0, channels = 0;
+    float* data = stbi_loadf_from_memory(bytes.data(), int(std::min<std::size_t>(bytes.size(), INT32_MAX)), &w, &h, &channels, 3);
+    if (data == nullptr) {
+        const char* reason = stbi_failure_reason();
+        file.fail(std::string("it is truncated or corrupt (stb_image: ") + (reason != nullptr && *reason != 0 ? reason : "no reason given") + ")");
+    }
+    struct Free {
+        float* data;
+        ~Free() { stbi_image_free(data); }
+    } owner{data};
+    if (std::uint64_t(w) != width || std::uint64_t(h) != height)
+        file.fail("stb_image read " + std::to_string(w) + " x " + std::to_string(h) + " pixels where its size line says " + std::to_string(width) + " x " +
+                  std::to_string(height));
+    Film film(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float* p = data + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
+            film.set(x, y, Rgb<float>{p[0], p[1], p[2]});
         }
     return film;
 } catch (const allocation_error&) {

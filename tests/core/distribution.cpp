@@ -6,6 +6,7 @@
 
 #include "../chi2.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -93,4 +94,52 @@ TEST_CASE("chi-square check of the test's own p-values: a fair die passes, a loa
     const std::vector<double> expected(6, 10000);
     CHECK(test::chi2_test(fair, expected).p_value > 1e-3);
     CHECK(test::chi2_test(loaded, expected).p_value < 1e-10);
+}
+
+TEST_CASE("a two-dimensional alias table picks each cell with its weight's share (chi-square): by row, then by column")
+{
+    // A 7 x 5 grid with an empty row, zeros and weights over four orders of magnitude.
+    const std::size_t w = 7, h = 5;
+    std::vector<double> weights(w * h);
+    prism::Pcg32 rng(8, 8);
+    for (std::size_t i = 0; i < weights.size(); ++i) weights[i] = i / w == 2 || i % 5 == 1 ? 0 : std::pow(10.0, 4 * rng.uniform<double>());
+    double sum = 0;
+    for (const double x : weights) sum += x;
+    const prism::AliasTable2D<double> table(w, h, weights);
+    CHECK(table.width() == w);
+    CHECK(table.height() == h);
+    std::vector<double> observed(w * h, 0.0), expected(w * h, 0.0), rest_x(10, 0.0), rest_y(10, 0.0);
+    constexpr long n = 2000000;
+    for (long k = 0; k < n; ++k) {
+        const auto pick = table.pick({rng.uniform<double>(), rng.uniform<double>()});
+        REQUIRE((pick.x < w && pick.y < h));
+        observed[pick.y * w + pick.x] += 1;
+        CHECK(pick.probability == doctest::Approx(weights[pick.y * w + pick.x] / sum).epsilon(1e-12));
+        if (pick.x == 0 && pick.y == 0) rest_x[std::size_t(pick.rest.x * 10)] += 1, rest_y[std::size_t(pick.rest.y * 10)] += 1;
+    }
+    for (std::size_t i = 0; i < weights.size(); ++i) {
+        expected[i] = weights[i] / sum * n;
+        CHECK(table.probability(i % w, i / w) == doctest::Approx(weights[i] / sum).epsilon(1e-12));
+        if (weights[i] == 0) CHECK(observed[i] == 0);
+    }
+    const test::Chi2 cells = test::chi2_test(observed, expected);
+    MESSAGE("cells: chi2 ", cells.statistic, " with ", cells.degrees, " degrees, p = ", cells.p_value);
+    CHECK(cells.p_value > 1e-3);
+    // The rests of the picks of one cell: each uniform again.
+    for (const auto* rest : {&rest_x, &rest_y}) {
+        const test::Chi2 c = test::chi2_test(*rest, std::vector<double>(10, observed[0] / 10));
+        CHECK(c.p_value > 1e-3);
+    }
+    const auto message = [](std::size_t width, std::size_t height, const std::vector<double>& ws) {
+        try {
+            (void)prism::AliasTable2D<float>(width, height, ws, "pixel weight");
+        } catch (const std::invalid_argument& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    CHECK(message(2, 2, {1, 2, 3}) == "prism: pixel weight: 3 weights for a grid of 2 x 2");
+    CHECK(message(2, 2, {1, 2, 3, -4}) == "prism: pixel weight (1, 1) must be finite and >= 0, got -4");
+    CHECK(message(2, 2, {0, 0, 0, 0}).find("positive, finite sum") != std::string::npos);
+    CHECK(message(0, 0, {}) == "prism: pixel weight: 0 weights for a grid of 0 x 0");
 }

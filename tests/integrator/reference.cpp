@@ -60,3 +60,31 @@ TEST_CASE("an area light's image in a mirror on a floor: the path tracer alone a
     CHECK(mean_alone == doctest::Approx(expected).epsilon(0.01));
     CHECK(mean_both == doctest::Approx(expected).epsilon(0.01));
 }
+
+// The same for a sky: a floor's diffuse bounce meets the environment through the mirror
+// (E D S Env), which the reference leaves to its light tracer (Env S D E), its photons
+// entering through the disk over the scene. Counted twice, the floor by the mirror would
+// read its mirrored sky twice.
+TEST_CASE("a sky's image in a mirror on a floor: the reference counts it once, as the path tracer alone does")
+{
+    // A sky brighter toward -x, so that the mirror facing -x sends the floor more of it.
+    std::vector<Rgb<float>> pixels;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 16; ++x) pixels.push_back(Rgb<float>(y < 4 ? 1.0f + 3.0f * float(std::abs(x - 4) < 3) : 0.0f));
+    const Scene scene{Lights{EnvironmentMap<double>(16, 8, pixels)},
+                      Object{Quad<double>({-5, 0, 5}, {10, 0, 0}, {0, 0, -10}), Diffuse<double>{.albedo = {.color = Rgb<double>(0.5)}, .kd = 1, .ka = 0}},
+                      Object{Box<double>({-0.1, 0, -2}, {0, 3, 2}), Mirror<double>{{.kr = Rgb<double>(0.9)}}}};
+    const Camera<double> camera{.position = {-1, 3, 0}, .look_at = {-1, 0, 0}, .up = {0, 0, -1}, .fov = 40};
+    constexpr int size = 8;
+    const RenderConfig config{.width = size, .height = size, .spp = 4096, .threads = 2, .seed = 3, .progress = false};
+    const Film alone = render(camera, PathTracer(scene), config);
+    const Film both = render(camera, Reference(scene), config);
+    const Film direct = render(camera, PathTracer(scene, {.max_diffuse_bounces = 1, .caustics_of_area_lights = false}), config);
+    double mean_alone = 0, mean_both = 0, mean_direct = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) mean_alone += alone.at(x, y).x / 64, mean_both += both.at(x, y).x / 64, mean_direct += direct.at(x, y).x / 64;
+    MESSAGE("floor by the mirror: path tracer ", mean_alone, ", reference ", mean_both, ", without the mirrored sky ", mean_direct);
+    CHECK(mean_both == doctest::Approx(mean_alone).epsilon(0.015));
+    // The mirrored sky is a share of the floor's light the test can see.
+    CHECK(mean_alone > 1.2 * mean_direct);
+}

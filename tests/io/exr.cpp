@@ -235,3 +235,44 @@ TEST_CASE("read_exr out of memory names its file")
     CHECK(thrown.starts_with("allocation_error: prism: cannot read image '" + path.string() + "': out of memory while reading it (a file of"));
     std::filesystem::remove(path);
 }
+
+TEST_CASE("an EXR image is radiance from its R, G, B or grey Y channels, over the whole picture, and nothing else")
+{
+    ExrImage rgb{3, 2, {0, 0, 3, 2}, {}, {}};
+    rgb.channels = {{"B", std::vector<float>{6, 5, 4, 3, 2, 1}}, {"G", std::vector<float>(6, 0.5f)}, {"R", std::vector<float>{0, 1, 2, 3, 4, 1e30f}}};
+    const auto path = scratch("radiance.exr");
+    write_exr(rgb, path);
+    const Film film = read_exr(path).film();
+    REQUIRE(film.width() == 3);
+    CHECK(film.at(2, 1) == Rgb<float>(1e30f, 0.5f, 1));
+    CHECK(film.at(1, 0) == Rgb<float>(1, 0.5f, 5));
+    ExrImage grey{2, 1, {0, 0, 2, 1}, {{"Y", std::vector<float>{0.25f, 8}}}, {}};
+    CHECK(grey.film().at(1, 0) == Rgb<float>(8));
+    const auto refused = [](const ExrImage& image) {
+        try {
+            (void)image.film();
+        } catch (const std::runtime_error& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    ExrImage negative = rgb;
+    std::get<0>(negative.channels[0].values)[4] = -2;
+    CHECK(refused(negative) == "prism: EXR pixel (1, 1) holds -2.000000 in B, which radiance cannot be (a Film holds finite values >= 0; "
+                               "film(NegativeValues::to_zero) stores negatives as 0 and counts them)");
+    // Asked to, negatives become 0 and are counted; NaN is refused all the same.
+    const Film zeroed = negative.film(NegativeValues::to_zero);
+    CHECK(zeroed.at(1, 1) == Rgb<float>(4, 0.5f, 0));
+    CHECK(zeroed.rejected() == 1);
+    std::get<0>(negative.channels[1].values)[0] = NAN;
+    CHECK_THROWS_WITH_AS((void)negative.film(NegativeValues::to_zero), "prism: EXR pixel (0, 0) holds nan in G, which radiance cannot be (a Film holds finite values >= 0)",
+                         std::runtime_error);
+    ExrImage counts = grey;
+    counts.channels[0].values = std::vector<std::uint32_t>{1, 2};
+    CHECK(refused(counts) == "prism: the EXR image's channel 'Y' holds whole numbers (UINT), not radiance");
+    ExrImage partial = rgb;
+    partial.window = {0, 0, 3, 1};
+    CHECK(refused(partial).find("data window does not cover its 3 x 2 pixels") != std::string::npos);
+    ExrImage alpha{1, 1, {0, 0, 1, 1}, {{"R", std::vector<float>{1}}, {"A", std::vector<float>{1}}}, {}};
+    CHECK(refused(alpha) == "prism: the EXR image has neither R, G and B channels nor a grey Y channel");
+}

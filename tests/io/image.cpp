@@ -282,3 +282,128 @@ TEST_CASE("read_png refuses a truncated or corrupt file and a header its bytes c
     CHECK_THROWS_WITH_AS((void)prism::read_png(dir / "short.png"), doctest::Contains("too short"), std::runtime_error);
     fs::remove_all(dir);
 }
+
+namespace {
+
+/// Greg Ward's RGBE encoding of one pixel (Radiance's float2rgbe): a shared exponent from
+/// the largest channel, each channel's mantissa in a byte.
+std::string rgbe(const prism::Rgb<float>& p)
+{
+    const float largest = std::max({p.x, p.y, p.z});
+    if (largest < 1e-32f) return std::string(4, '\0');
+    int e = 0;
+    const float scale = std::frexp(largest, &e) * 256.0f / largest;
+    return {char(static_cast<unsigned char>(p.x * scale)), char(static_cast<unsigned char>(p.y * scale)), char(static_cast<unsigned char>(p.z * scale)),
+            char(static_cast<unsigned char>(e + 128))};
+}
+
+/// A Radiance HDR file of `pixels` (row by row from the top): flat, or each row run-length
+/// encoded, a channel in runs where it repeats (at least 3 alike) and dumps elsewhere.
+std::string hdr_bytes(int width, int height, const std::vector<prism::Rgb<float>>& pixels, bool encoded, const std::string& header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n")
+{
+    std::string out = header + "-Y " + std::to_string(height) + " +X " + std::to_string(width) + "\n";
+    for (int y = 0; y < height; ++y) {
+        std::vector<std::string> row;
+        for (int x = 0; x < width; ++x) row.push_back(rgbe(pixels[std::size_t(y * width + x)]));
+        if (!encoded) {
+            for (const std::string& p : row) out += p;
+            continue;
+        }
+        out += {char(2), char(2), char(width >> 8), char(width & 255)};
+        for (std::size_t c = 0; c < 4; ++c)
+            for (std::size_t x = 0; x < row.size();) {
+                std::size_t same = 1;
+                while (x + same < row.size() && same < 127 && row[x + same][c] == row[x][c]) ++same;
+                if (same >= 3) {
+                    out += char(128 + same);
+                    out += row[x][c];
+                    x += same;
+                    continue;
+                }
+                const std::size_t count = std::min<std::size_t>(row.size() - x, 128);
+                out += char(count);
+                for (std::size_t i = 0; i < count; ++i) out += row[x + i][c];
+                x += count;
+            }
+    }
+    return out;
+}
+
+std::string hdr_message(const fs::path& path)
+{
+    try {
+        (void)prism::read_hdr(path);
+    } catch (const std::runtime_error& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+} // namespace
+
+TEST_CASE("read_hdr reads Radiance RGBE pixels exactly, flat and run-length encoded, rows from the top")
+{
+    const fs::path dir = scratch_folder("hdr-read");
+    // Values whose mantissas fit a byte decode exactly (stb_image: byte * 2^(e - 136)).
+    const auto value = [](int x, int y) { return prism::Rgb<float>{std::ldexp(float(x % 8 + 1), y - 3), 0.5f, x == 3 ? 40.0f : 0.25f}; };
+    for (const int width : {5, 40}) // below 8 pixels a row is always flat
+        for (const bool encoded : {false, true}) {
+            const int height = 3;
+            std::vector<prism::Rgb<float>> pixels;
+            for (int y = 0; y < height; ++y)
+                for (int x = 0; x < width; ++x) pixels.push_back(value(x, y));
+            const fs::path path = dir / ("sky" + std::to_string(width) + (encoded ? "rle" : "flat") + ".hdr");
+            write_bytes(path, hdr_bytes(width, height, pixels, encoded && width >= 8));
+            const prism::Film film = prism::read_hdr(path);
+            REQUIRE(film.width() == width);
+            REQUIRE(film.height() == height);
+            for (int y = 0; y < height; ++y)
+                for (int x = 0; x < width; ++x) {
+                    // Every channel here is a multiple of 2^-3 below 2^6: the shared
+                    // exponent leaves its byte exact.
+                    for (int c = 0; c < 3; ++c) CHECK_MESSAGE(film.at(x, y)[c] == value(x, y)[c], path, " (", x, ", ", y, ") channel ", c);
+                }
+        }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("read_hdr refuses what stb_image would misread or allocate for unpaid, naming the reason")
+{
+    const fs::path dir = scratch_folder("hdr-strict");
+    const std::vector<prism::Rgb<float>> pixels(40 * 2, prism::Rgb<float>{1.0f, 0.5f, 0.25f});
+    const std::string good = hdr_bytes(40, 2, pixels, true);
+    const auto refused = [&](const std::string& name, const std::string& bytes) {
+        write_bytes(dir / name, bytes);
+        return hdr_message(dir / name);
+    };
+    CHECK(refused("good.hdr", good) == "accepted");
+    CHECK(refused("crlf.hdr", "#?RGBE\r\n" + good.substr(11)) == "accepted");
+    CHECK(refused("cut.hdr", good.substr(0, good.size() - 3)).find("it is truncated in row 1 of 2") != std::string::npos);
+    CHECK(refused("tail.hdr", good + "x").find("1 bytes follow its last row") != std::string::npos);
+    CHECK(refused("magic.hdr", "#?RADIANCX\n" + good.substr(11)).find("not a Radiance HDR file") != std::string::npos);
+    CHECK(hdr_message("/dev/zero").find("not a Radiance HDR file") != std::string::npos);
+    CHECK(refused("format.hdr", hdr_bytes(40, 2, pixels, true, "#?RADIANCE\nFORMAT=32-bit_rle_xyze\n\n")).find("FORMAT=32-bit_rle_xyze (line 2) is not") != std::string::npos);
+    CHECK(refused("noformat.hdr", hdr_bytes(40, 2, pixels, true, "#?RADIANCE\nEXPOSURE=1\n\n")).find("no FORMAT=32-bit_rle_rgbe line") != std::string::npos);
+    std::string flipped = good;
+    flipped.replace(flipped.find("-Y 2 +X 40"), 10, "+Y 2 +X 40");
+    CHECK(refused("flipped.hdr", flipped).find("rows from the top, the only order read") != std::string::npos);
+    // 2^24 x 2^24 pixels claimed by a few bytes (rows that wide are flat): refused before
+    // stb_image allocates; and 40 x 2^24 run-length encoded ones, by the walk.
+    std::string huge = good;
+    huge.replace(huge.find("-Y 2 +X 40"), 10, "-Y 16777216 +X 16777216");
+    CHECK(refused("huge.hdr", huge).find("16777216 x 16777216 pixels, more than the") != std::string::npos);
+    std::string tall = good;
+    tall.replace(tall.find("-Y 2 +X 40"), 10, "-Y 16777216 +X 40");
+    CHECK(refused("tall.hdr", tall).find("it is truncated in row 2 of 16777216") != std::string::npos);
+    std::string flat = hdr_bytes(5, 2, std::vector<prism::Rgb<float>>(10, prism::Rgb<float>(1.0f)), false);
+    flat.replace(flat.find("-Y 2 +X 5"), 9, "-Y 9000000 +X 5");
+    CHECK(refused("flat.hdr", flat).find("9000000 pixels, more than the 40 bytes after it hold") != std::string::npos);
+    CHECK(refused("side.hdr", flat.replace(flat.find("-Y 9000000"), 10, "-Y 0")).find("each side from 1 to 16777216") != std::string::npos);
+    // A dump longer than what is left of its row (stb_image: "bad RLE data").
+    std::string overrun = good;
+    const std::size_t first_row = overrun.find("+X 40\n") + 6;
+    overrun[first_row + 4] = char(41);
+    CHECK(refused("overrun.hdr", overrun).find("row 0 has a dump of 41 values where 40 are left") != std::string::npos);
+    CHECK(refused("long.hdr", "#?RADIANCE\n" + std::string(2000, 'x') + "\n").find("its header (line 2) is longer than 1023 bytes") != std::string::npos);
+    fs::remove_all(dir);
+}

@@ -61,9 +61,11 @@ public:
         int area_light_grid = 1;
         /// How light samples and diffuse bounces share the area lights' light.
         AreaLightStrategy area_lights = AreaLightStrategy::mis;
-        /// Whether a path that meets an area light through mirrors and glass after a
-        /// diffuse bounce (... D S+ L: a caustic of the area light) counts it. The path
-        /// tracer alone does; Reference leaves those paths to its light tracer.
+        /// Whether a path that meets an area or environment light through mirrors and glass
+        /// after a diffuse bounce (... D S+ L: a caustic of the light) counts it. The path
+        /// tracer alone does; Reference leaves those paths to its light tracer, but for
+        /// the ones the camera sees through mirrors and glass first (E S+ D ... S+ L), which
+        /// a light tracer cannot join to the camera: those the path tracer always counts.
         bool caustics_of_area_lights = true;
     };
 
@@ -107,17 +109,17 @@ public:
                         sum += at.power * diffuse_response(material, c).brdf() * irradiance;
                         return go_on;
                     },
-                    [&](const Ray<T>& leaving, const Rgb<T>& weight, bool specular_only, T last_pdf) {
-                        if (specular_only) {
-                            sum += weight * scene_->escaped(leaving.direction);
+                    [&](const WalkEscape<T>& out) {
+                        if (out.specular_only()) {
+                            sum += out.power * scene_->escaped(out.ray.direction);
                             return;
                         }
                         // After a diffuse bounce the background lights nothing; an
                         // environment light does, shared with its samples as an area light's.
                         scene_->for_each_light([&]<class L>(const L& light) {
                             if constexpr (is_at_infinity<L>) {
-                                const Vec3<T> d = normalize(leaving.direction);
-                                sum += weight * light.arriving_from(d) * met_light_weight(last_pdf, [&] { return light.pdf(d); });
+                                const Vec3<T> d = normalize(out.ray.direction);
+                                sum += out.power * light.arriving_from(d) * met_light_weight(out.last_pdf, out.first_specular, [&] { return light.pdf(d); });
                             }
                         });
                     },
@@ -125,7 +127,7 @@ public:
                         if constexpr (SceneT::has_emitters) {
                             if (at.specular_only()) sum += at.power * emitted(material, at.crossing());
                             else sum += at.power * emitted(material, at.crossing()) *
-                                        met_light_weight(at.last_pdf, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
+                                        met_light_weight(at.last_pdf, at.first_specular, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
                         }
                     });
         return sum;
@@ -141,17 +143,19 @@ private:
     /// after a diffuse bounce: with a diffuse bounce just before it (its density last_pdf,
     /// cos / pi), the power heuristic against sampling the light from there (n samples of
     /// density light_pdf(): n times it), or 1 or 0 for the strategies alone; through mirrors
-    /// and glass after a diffuse bounce, 1 where the path tracer counts such paths (no light
-    /// sample can find them), else 0. (Seen from the camera through mirrors and glass only,
-    /// a light counts whole: the caller's.)
+    /// and glass after a diffuse bounce (no light sample can find it there), 1 where the path
+    /// tracer counts such paths, else 0, but 1 always when the camera's own first scattering
+    /// was specular (`first_specular`): a light tracer joins its paths to the camera from a
+    /// diffuse surface the camera sees directly, so it cannot have them. (Seen from the
+    /// camera through mirrors and glass only, a light counts whole: the caller's.)
     template <class LightPdf>
-    [[nodiscard]] T met_light_weight(T last_pdf, LightPdf&& light_pdf) const noexcept
+    [[nodiscard]] T met_light_weight(T last_pdf, bool first_specular, LightPdf&& light_pdf) const noexcept
     {
         if (last_pdf > T(0)) {
             if (config_.area_lights != AreaLightStrategy::mis) return config_.area_lights == AreaLightStrategy::bounces ? T(1) : T(0);
             return power_heuristic(last_pdf, light_samples() * light_pdf());
         }
-        return config_.caustics_of_area_lights ? T(1) : T(0);
+        return config_.caustics_of_area_lights || first_specular ? T(1) : T(0);
     }
 
     /// The samples each area light takes at a diffuse vertex (the heuristic counts them all).

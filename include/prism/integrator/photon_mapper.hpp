@@ -389,12 +389,11 @@ private:
                 // mirrors what lies beyond.
                 return reflects<M> || transmits<M> ? Lobes::delta : Lobes::none;
             };
-            const auto escaped = [](const Ray<T>&, const Rgb<T>&, bool, T) {};
             // (About a shading normal, a direction may lead into the solid: no light.)
             if (!hit.shades_flat() && !(dot(direction, hit.facing_normal()) > T(0))) return found;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, direction);
-            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse, escaped);
+            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse);
             return found;
         });
     }

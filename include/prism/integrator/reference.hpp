@@ -2,8 +2,11 @@
 // Reference: prism's unbiased estimator, a path tracer's camera samples plus a light
 // tracer's splats (integrator/path_tracer.hpp, integrator/light_tracer.hpp). The two count
 // disjoint sets of paths, so their sum is every path either can sample: the path tracer
-// leaves an area light met through mirrors and glass after a diffuse bounce (D S+ L) to
-// the light tracer, which finds it as L S+ D (PathTracer's caustics_of_area_lights). An integrator of
+// leaves an area or environment light met through mirrors and glass after a diffuse bounce
+// (E D ... S+ L) to the light tracer, which finds it as L S+ ... D E (PathTracer's
+// caustics_of_area_lights), but keeps the paths the camera sees through a mirror or glass
+// first (E S+ D ... S+ L), which the light tracer cannot join to the camera. (Those of a
+// point light neither half finds: no estimator here does.) An integrator of
 // passes: pass s is the path tracer's sample s of every pixel and the light tracer's pass
 // s, of as many light paths as the image has pixels (LightTracerConfig::paths = width x
 // height), so each pass costs about as many paths from either end.

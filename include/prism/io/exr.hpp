@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -46,6 +47,9 @@
 #include <vector>
 
 namespace prism {
+
+/// What ExrImage::film does with a negative value: refuse the image, or store 0 and count it.
+enum class NegativeValues { refuse, to_zero };
 
 /// One channel of an ExrImage: its values over the data window, row by row from the top.
 struct ExrChannel {
@@ -68,6 +72,47 @@ struct ExrImage {
         for (const ExrChannel& c : channels)
             if (c.name == name) return &c;
         return nullptr;
+    }
+
+    /// The image as radiance: its R, G and B channels, or a grey Y in all three, over a
+    /// data window that covers the whole image. Throws std::runtime_error naming what is
+    /// missing, or the first pixel and channel that is NaN or infinite, or negative unless
+    /// `negatives` is NegativeValues::to_zero: then each negative value is stored as 0 and
+    /// counted in the film's rejected() (lossy EXR compression, DWA, leaves values a little
+    /// below 0 in images that had none).
+    [[nodiscard]] Film film(NegativeValues negatives = NegativeValues::refuse) const
+    {
+        if (window != PixelWindow::whole(width, height))
+            throw std::runtime_error("prism: the EXR image's data window does not cover its " + std::to_string(width) + " x " + std::to_string(height) +
+                                     " pixels, so it is no whole picture");
+        const auto floats = [&](const std::string& name) -> const std::vector<float>* {
+            const ExrChannel* c = find(name);
+            if (c == nullptr) return nullptr;
+            if (!std::holds_alternative<std::vector<float>>(c->values))
+                throw std::runtime_error("prism: the EXR image's channel '" + name + "' holds whole numbers (UINT), not radiance");
+            return &std::get<0>(c->values);
+        };
+        const std::vector<float>* rgb[3] = {floats("R"), floats("G"), floats("B")};
+        if (rgb[0] == nullptr || rgb[1] == nullptr || rgb[2] == nullptr) {
+            const std::vector<float>* grey = floats("Y");
+            if (grey == nullptr) throw std::runtime_error("prism: the EXR image has neither R, G and B channels nor a grey Y channel");
+            rgb[0] = rgb[1] = rgb[2] = grey;
+        }
+        Film out(width, height);
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(x);
+                Rgb<float> p;
+                for (int c = 0; c < 3; ++c) {
+                    p[c] = (*rgb[c])[i];
+                    if (!std::isfinite(p[c]) || (p[c] < 0 && negatives == NegativeValues::refuse))
+                        throw std::runtime_error("prism: EXR pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") holds " + std::to_string(p[c]) + " in " +
+                                                 "RGB"[c] + ", which radiance cannot be (a Film holds finite values >= 0" +
+                                                 (p[c] < 0 ? "; film(NegativeValues::to_zero) stores negatives as 0 and counts them)" : ")"));
+                }
+                out.set(x, y, p);
+            }
+        return out;
     }
 };
 

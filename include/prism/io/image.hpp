@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Image files: PNG (sRGB, 8 bit, through stb_image_write and stb_image) and PFM (exact
-// linear floats).
+// Image files: PNG (sRGB, 8 bit, through stb_image_write and stb_image), PFM (exact
+// linear floats), and Radiance HDR (RGBE, read through stb_image).
 //
 // Opt-in: prism/prism.hpp does not include this header, since it needs stb_image_write
 // and stb_image (Debian: libstb-dev). A regular file is written whole or not at all:
@@ -32,10 +32,11 @@
 #endif
 
 #if !defined(STBI_INCLUDE_STB_IMAGE_H)
-// The same for stb_image, reading PNG only.
+// The same for stb_image, reading PNG and Radiance HDR only.
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
+#define STBI_ONLY_HDR
 #define PRISM_DEFINED_STBI_IMPLEMENTATION
 #endif
 #pragma GCC diagnostic push
@@ -228,6 +229,126 @@ try {
         for (int x = 0; x < w; ++x) {
             const unsigned char* p = data + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
             film.set(x, y, Rgb<float>{linear(p[0]), linear(p[1]), linear(p[2])});
+        }
+    return film;
+} catch (const allocation_error&) {
+    throw;
+} catch (const std::bad_alloc&) {
+    throw detail::out_of_memory(path, "image");
+}
+
+/// Read a Radiance HDR file (RGBE, "#?RADIANCE" or "#?RGBE", FORMAT=32-bit_rle_rgbe, rows
+/// from the top: "-Y height +X width") into linear radiance, through stb_image. The file is
+/// read no further than `limits`; its header must be text of at most 1024 lines of at most
+/// 1023 bytes, and its rows are walked before stb_image allocates the picture: each must be
+/// there whole, every run and dump inside its row, and nothing may follow the last.
+[[nodiscard]] inline Film read_hdr(const std::filesystem::path& path, ReadLimits limits = {})
+try {
+    detail::InputFile file(path, "image", limits);
+    // The first line alone, so that what is no HDR (/dev/zero) is refused before the rest is read.
+    std::string magic;
+    for (int c = file.get(); c != '\n'; c = file.get()) {
+        if (c < 0 || magic.size() == 11) file.fail("it is not a Radiance HDR file (its first line is not #?RADIANCE or #?RGBE)");
+        magic.push_back(char(c));
+    }
+    if (!magic.empty() && magic.back() == '\r') magic.pop_back();
+    if (magic != "#?RADIANCE" && magic != "#?RGBE") file.fail("it is not a Radiance HDR file (its first line is not #?RADIANCE or #?RGBE)");
+    std::vector<unsigned char> bytes(magic.begin(), magic.end());
+    bytes.push_back('\n');
+    const std::vector<unsigned char> rest = file.rest();
+    bytes.insert(bytes.end(), rest.begin(), rest.end());
+    std::size_t at = magic.size() + 1;
+    std::size_t number = 1;
+    const auto next_line = [&](const std::string& what) {
+        ++number;
+        const std::string name = what + " (line " + std::to_string(number) + ")";
+        std::string text;
+        for (;; ++at) {
+            if (at == bytes.size()) file.fail("it ends inside " + name);
+            const unsigned char c = bytes[at];
+            if (c == '\n') break;
+            if (c == 0) file.fail(name + " holds a NUL byte: it is not text");
+            if (text.size() == 1023) file.fail(name + " is longer than 1023 bytes");
+            text.push_back(char(c));
+        }
+        ++at;
+        return text;
+    };
+    bool format = false;
+    for (;;) {
+        if (number == 1024) file.fail("its header has more than 1024 lines");
+        const std::string line = next_line("its header");
+        if (line.empty()) break;
+        if (line.rfind("FORMAT=", 0) == 0) {
+            if (line != "FORMAT=32-bit_rle_rgbe") file.fail("its " + line + " (line " + std::to_string(number) + ") is not FORMAT=32-bit_rle_rgbe, the only format read");
+            format = true;
+        }
+    }
+    if (!format) file.fail("its header has no FORMAT=32-bit_rle_rgbe line");
+    const std::string size = next_line("its size line");
+    const auto number_at = [&](std::size_t from, std::size_t to) {
+        const std::string text = size.substr(from, to - from);
+        if (text.empty() || text.size() > 8 || text.find_first_not_of("0123456789") != std::string::npos || std::stol(text) < 1 ||
+            std::stol(text) > (1l << 24))
+            file.fail("its size line '" + size + "' is not \"-Y height +X width\" with each side from 1 to 16777216");
+        return std::uint64_t(std::stol(text));
+    };
+    const std::size_t plus = size.find(" +X ");
+    if (size.rfind("-Y ", 0) != 0 || plus == std::string::npos)
+        file.fail("its size line '" + size + "' is not \"-Y height +X width\" (rows from the top, the only order read)");
+    const std::uint64_t height = number_at(3, plus), width = number_at(plus + 4, size.size());
+    // Walk the rows as stb_image will read them, so that the pixels it allocates are
+    // paid for in bytes and nothing follows the last row: run-length encoded rows (8 to
+    // 32767 pixels wide, each starting 2 2 and its width) hold each channel as runs (a
+    // count above 128 and one value) and dumps (a count and that many values); any other
+    // file is flat, 4 bytes a pixel.
+    const auto byte = [&](std::uint64_t row) {
+        if (at == bytes.size()) file.fail("it is truncated in row " + std::to_string(row) + " of " + std::to_string(height));
+        return bytes[at++];
+    };
+    const bool encoded = width >= 8 && width < 32768 && bytes.size() - at >= 4 && bytes[at] == 2 && bytes[at + 1] == 2 && (bytes[at + 2] & 0x80) == 0;
+    if (!encoded) {
+        const auto flat = detail::checked_product(width * height, 4);
+        if (!flat || *flat > bytes.size() - at)
+            file.fail("its size line says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than the " +
+                      std::to_string(bytes.size() - at) + " bytes after it hold (4 a pixel)");
+        at += std::size_t(*flat);
+    }
+    for (std::uint64_t row = 0; encoded && row < height; ++row) {
+        const unsigned char a = byte(row), b = byte(row), c = byte(row), d = byte(row);
+        if (a != 2 || b != 2 || (std::uint64_t(c) << 8 | d) != width)
+            file.fail("row " + std::to_string(row) + " does not start as a run-length encoded row of " + std::to_string(width) + " pixels");
+        for (int channel = 0; channel < 4; ++channel)
+            for (std::uint64_t done = 0; done < width;) {
+                std::uint64_t count = byte(row);
+                const bool run = count > 128;
+                if (run) count -= 128;
+                if (count == 0 || count > width - done)
+                    file.fail("row " + std::to_string(row) + " has a " + (run ? "run" : "dump") + " of " + std::to_string(count) + " values where " +
+                              std::to_string(width - done) + " are left");
+                for (std::uint64_t i = 0; i < (run ? 1 : count); ++i) (void)byte(row);
+                done += count;
+            }
+    }
+    if (at != bytes.size()) file.fail(std::to_string(bytes.size() - at) + " bytes follow its last row");
+    int w = 0, h = 0, channels = 0;
+    float* data = stbi_loadf_from_memory(bytes.data(), int(std::min<std::size_t>(bytes.size(), INT32_MAX)), &w, &h, &channels, 3);
+    if (data == nullptr) {
+        const char* reason = stbi_failure_reason();
+        file.fail(std::string("it is truncated or corrupt (stb_image: ") + (reason != nullptr && *reason != 0 ? reason : "no reason given") + ")");
+    }
+    struct Free {
+        float* data;
+        ~Free() { stbi_image_free(data); }
+    } owner{data};
+    if (std::uint64_t(w) != width || std::uint64_t(h) != height)
+        file.fail("stb_image read " + std::to_string(w) + " x " + std::to_string(h) + " pixels where its size line says " + std::to_string(width) + " x " +
+                  std::to_string(height));
+    Film film(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float* p = data + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
+            film.set(x, y, Rgb<float>{p[0], p[1], p[2]});
         }
     return film;
 } catch (const allocation_error&) {

@@ -192,8 +192,7 @@ private:
         random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, config_.max_bounces,
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         return visit(material, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
-                    },
-                    [](const Ray<T>&, const Rgb<T>&, bool, T) {});
+                    });
     }
 
     /// Store photon i: in the caustic pass only L S+ D, going on past it only by delta lobes.

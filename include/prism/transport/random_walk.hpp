@@ -50,6 +50,28 @@ struct WalkVertex {
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
 };
 
+/// A walk leaving the scene: the segment it left along, and what it carries.
+template <Scalar T>
+struct WalkEscape {
+    const Ray<T>& ray;        ///< the segment that left the scene, its direction the way it went
+    const Rgb<T>& power;      ///< what the path carries
+    int diffuse_bounces;      ///< diffuse scatterings on the way (0: every scattering was specular)
+    bool first_specular;      ///< the first scattering was specular (the vertex next to the path's start)
+    T last_pdf;               ///< as WalkVertex's: the last scattering's diffuse density, 0 after a delta one
+
+    /// Whether every scattering on the way was specular.
+    [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
+};
+
+/// What a walk does where it leaves the scene when its caller says nothing: nothing.
+struct IgnoreEscape {
+    /// Does nothing.
+    template <class E>
+    constexpr void operator()(const E&) const noexcept
+    {
+    }
+};
+
 /// What a walk does where it meets an emitting surface when its caller says nothing: nothing.
 struct IgnoreEmitters {
     /// Does nothing.
@@ -62,13 +84,13 @@ struct IgnoreEmitters {
 /// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
 /// on_diffuse(material, WalkVertex) is called at every diffuse surface and returns the
 /// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
-/// there); on_escape(ray, power, specular_only, last_pdf) when the path leaves the
-/// scene (last_pdf: as WalkVertex's); on_emitter(material, WalkVertex) where it meets a surface that emits (an area
-/// light; the walk scatters there only by the lobes the material also has). `Mode`:
-/// whether the path is a photon's or a camera's (scatter_photon).
-template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape, class OnEmitter = IgnoreEmitters>
+/// there); on_escape(WalkEscape) when the path leaves the scene; on_emitter(material,
+/// WalkVertex) where it meets a surface that emits (an area light; the walk scatters there
+/// only by the lobes the material also has). `Mode`: whether the path is a photon's or a
+/// camera's (scatter_photon).
+template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
-                 Rgb<typename SceneT::scalar_type> power, Pcg32& rng, int max_bounces, OnDiffuse&& on_diffuse, OnEscape&& on_escape,
+                 Rgb<typename SceneT::scalar_type> power, Pcg32& rng, int max_bounces, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
                  OnEmitter&& on_emitter = {})
 {
     using T = typename SceneT::scalar_type;
@@ -86,7 +108,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         const auto hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, &path)
                                        : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
         if (!hit) {
-            on_escape(segment, power, diffuse_bounces == 0, last_pdf);
+            on_escape(WalkEscape<T>{segment, power, diffuse_bounces, first_specular, last_pdf});
             return;
         }
         const Crossing<T>& c = hit->crossing;

@@ -1,0 +1,153 @@
+# SPDX-License-Identifier: MIT
+# Blender's Cycles renders bench/sky.cpp's scene: a white and a mirror sphere on a grey
+# floor under the photographed sky assets/sky/sunrise.exr, the outside reference for
+# prism's EnvironmentMap (its layout on the sphere, its radiance, its sampling). Headless:
+#
+#   blender -b --factory-startup --python bench/cycles_sky.py -- OUT.pfm SAMPLES [SEED] [SIZE]
+#
+# prism is right-handed with y up, Blender right-handed with z up: (x, y, z) -> (x, -z, y),
+# a rotation. prism's image looks toward -z at its middle column (u = 1/2) and turns
+# counterclockwise from above by its rotation; Cycles' equirectangular lookup looks toward
+# +x there (u = 1/2 - atan2(y, x) / 2 pi). So the world's direction is turned about
+# Blender's z by -(90 + rotation) degrees before the lookup (a Mapping node of type Vector).
+# The settings that keep Cycles radiometric and unbiased are bench/cycles_cornell.py's, and
+# Filter Glossy off; the image is read as linear ("Linear" colour space, what the EXR
+# holds), strength 1.
+import math
+import os
+import struct
+import sys
+import tempfile
+import time
+
+import bpy
+from mathutils import Vector
+
+argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+out_path = argv[0]
+samples = int(argv[1]) if len(argv) > 1 else 64
+seed = int(argv[2]) if len(argv) > 2 else 0
+size = int(argv[3]) if len(argv) > 3 else 256
+here = os.path.dirname(os.path.abspath(__file__))
+SKY = os.path.join(here, "..", "assets", "sky", "sunrise.exr")
+ROTATION = 150.0  # bench/sky.cpp's, degrees about prism's +y
+
+
+def blender(p):
+    """prism (x, y, z) -> Blender (x, -z, y)."""
+    return (p[0], -p[2], p[1])
+
+
+scene = bpy.context.scene
+for obj in list(bpy.data.objects):
+    bpy.data.objects.remove(obj, do_unlink=True)
+scene.render.engine = "CYCLES"
+cycles = scene.cycles
+cycles.device = "CPU"
+cycles.samples = samples
+cycles.seed = seed
+cycles.use_adaptive_sampling = False
+cycles.use_denoising = False
+cycles.sample_clamp_direct = 0.0
+cycles.sample_clamp_indirect = 0.0
+cycles.light_sampling_threshold = 0.0
+for bounces in ("max_bounces", "diffuse_bounces", "glossy_bounces", "transmission_bounces", "transparent_max_bounces"):
+    setattr(cycles, bounces, 64)
+cycles.caustics_reflective = True
+cycles.caustics_refractive = True
+cycles.blur_glossy = 0.0  # Filter Glossy (1 by default) blurs the mirror after a diffuse bounce: biased
+cycles.pixel_filter_type = "BOX"
+cycles.filter_width = 1.0
+scene.render.threads_mode = "FIXED"
+scene.render.threads = 2
+scene.render.resolution_x = scene.render.resolution_y = size
+scene.render.resolution_percentage = 100
+scene.render.film_transparent = False
+scene.view_settings.view_transform = "Standard"
+scene.view_settings.look = "None"
+scene.view_settings.exposure = 0.0
+scene.view_settings.gamma = 1.0
+scene.render.image_settings.file_format = "OPEN_EXR"
+scene.render.image_settings.color_depth = "32"
+scene.render.image_settings.exr_codec = "NONE"
+
+world = bpy.data.worlds.new("sky")
+world.use_nodes = True
+nodes, links = world.node_tree.nodes, world.node_tree.links
+background = nodes["Background"]
+background.inputs["Strength"].default_value = 1.0
+texture = nodes.new("ShaderNodeTexEnvironment")
+texture.image = bpy.data.images.load(SKY)
+texture.image.colorspace_settings.name = "Linear"
+texture.interpolation = "Linear"
+texture.projection = "EQUIRECTANGULAR"
+coordinates = nodes.new("ShaderNodeTexCoord")
+mapping = nodes.new("ShaderNodeMapping")
+mapping.vector_type = "VECTOR"
+mapping.inputs["Rotation"].default_value = (0.0, 0.0, math.radians(-(90.0 + ROTATION)))
+links.new(coordinates.outputs["Generated"], mapping.inputs["Vector"])
+links.new(mapping.outputs["Vector"], texture.inputs["Vector"])
+links.new(texture.outputs["Color"], background.inputs["Color"])
+scene.world = world
+
+
+def material(name, kind, rgb):
+    m = bpy.data.materials.new(name)
+    m.use_nodes = True
+    nodes = m.node_tree.nodes
+    nodes.clear()
+    bsdf = nodes.new("ShaderNodeBsdfDiffuse" if kind == "diffuse" else "ShaderNodeBsdfGlossy")
+    bsdf.inputs["Color"].default_value = (rgb[0], rgb[1], rgb[2], 1)
+    bsdf.inputs["Roughness"].default_value = 0.0
+    out = nodes.new("ShaderNodeOutputMaterial")
+    m.node_tree.links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
+    return m
+
+
+def quad(name, corners, m):
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata([blender(c) for c in corners], [], [(0, 1, 2, 3)])
+    obj = bpy.data.objects.new(name, mesh)
+    obj.data.materials.append(m)
+    scene.collection.objects.link(obj)
+
+
+def sphere(name, centre, radius, m):
+    bpy.ops.mesh.primitive_uv_sphere_add(segments=256, ring_count=128, radius=radius, location=blender(centre))
+    obj = bpy.context.active_object
+    bpy.ops.object.shade_smooth()
+    obj.data.materials.append(m)
+
+
+quad("floor", [(-5, 0, 5), (5, 0, 5), (5, 0, -5), (-5, 0, -5)], material("grey", "diffuse", (0.5, 0.5, 0.5)))
+sphere("white", (-0.8, 0.6, 0), 0.6, material("white", "diffuse", (0.8, 0.8, 0.8)))
+sphere("mirror", (0.8, 0.6, 0), 0.6, material("mirror", "glossy", (0.9, 0.9, 0.9)))
+
+cam = bpy.data.cameras.new("camera")
+cam.sensor_fit = "HORIZONTAL"
+cam.angle = math.radians(50.0)
+camera = bpy.data.objects.new("camera", cam)
+position, look_at = (0, 1.5, 5), (0, 0.5, 0)
+camera.location = blender(position)
+camera.rotation_euler = Vector(blender([look_at[i] - position[i] for i in range(3)])).to_track_quat("-Z", "Y").to_euler()
+scene.collection.objects.link(camera)
+scene.camera = camera
+
+folder = tempfile.mkdtemp()
+exr = os.path.join(folder, "render.exr")
+scene.render.filepath = exr
+start = time.time()
+bpy.ops.render.render(write_still=True)
+seconds = time.time() - start
+image = bpy.data.images.load(exr)
+w, h = image.size
+px = list(image.pixels)  # RGBA, bottom row first
+with open(out_path, "wb") as f:
+    f.write(b"PF\n%d %d\n-1.0\n" % (w, h))
+    data = []
+    for i in range(0, len(px), 4):
+        data.extend(px[i:i + 3])
+    f.write(struct.pack("<%df" % len(data), *data))
+with open(out_path + ".txt", "w") as f:
+    f.write("samples,seconds\n%d,%.3f\n" % (samples, seconds))
+print("cycles: %d spp at %dx%d in %.2f s -> %s" % (samples, w, h, seconds, out_path))

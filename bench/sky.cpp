@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// The scene prism and Blender's Cycles both render under the photographed sky of
+// assets/sky/sunrise.exr (bench/cycles_sky.py builds Cycles' copy): a white and a mirror
+// sphere on a grey floor, lit by the environment map alone. Writes the path tracer's
+// picture as PFM and prints "seconds S", 2 threads.
+//
+// usage: bench_sky OUT.pfm SPP [SIZE] [SEED]
+#include <prism/io/exr.hpp>
+#include <prism/io/image.hpp>
+#include <prism/prism.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+
+int main(int argc, char** argv)
+{
+    if (argc < 3) {
+        std::fprintf(stderr, "usage: bench_sky OUT.pfm SPP [SIZE] [SEED]\n");
+        return 2;
+    }
+    using namespace prism;
+    using T = float;
+    const int size = argc > 3 ? std::atoi(argv[3]) : 256;
+    const Film image = read_exr(PRISM_ASSET_DIR "/sky/sunrise.exr").film(NegativeValues::to_zero);
+    // Turned 150 degrees about +y: the sun low at the left, behind the camera.
+    const EnvironmentMap<T> sky(image.width(), image.height(), image.pixels(), {.rotation_degrees = 150});
+    const Scene scene{Lights{sky}, Object{Quad<T>({-5, 0, 5}, {10, 0, 0}, {0, 0, -10}), Diffuse<T>{.albedo = {.color = Rgb<T>(0.5f)}, .kd = 1, .ka = 0}},
+                      Object{Sphere<T>({-0.8f, 0.6f, 0}, 0.6f), Diffuse<T>{.albedo = {.color = Rgb<T>(0.8f)}, .kd = 1, .ka = 0}},
+                      Object{Sphere<T>({0.8f, 0.6f, 0}, 0.6f), Mirror<T>{{.kr = Rgb<T>(0.9f)}}}};
+    const Camera<T> camera{.position = {0, 1.5f, 5}, .look_at = {0, 0.5f, 0}, .up = {0, 1, 0}, .fov = 50};
+    const RenderConfig config{.width = size, .height = size, .spp = std::atoi(argv[2]), .threads = 2,
+                              .seed = argc > 4 ? std::strtoull(argv[4], nullptr, 10) : 0, .progress = false};
+    const auto start = std::chrono::steady_clock::now();
+    const Film film = render(camera, PathTracer(scene), config);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    write_pfm(film, argv[1]);
+    std::printf("seconds %.3f\n", seconds);
+    return 0;
+}
