@@ -2,8 +2,10 @@
 # SPDX-License-Identifier: MIT
 """prism's examples against POV-Ray 3.7 on the scenes in shared/scenes they mirror.
 
-  cornell       shared/scenes/cornell_caustics.pov with Declare=PHOTONS=0
-  csg_quadrics  shared/scenes/csg_quadrics.pov
+  cornell            shared/scenes/cornell_caustics.pov with Declare=PHOTONS=0
+  csg_quadrics       shared/scenes/csg_quadrics.pov
+  csg_quadrics_area  the same with `area_light <1.5, 0, 0>, <0, 0, 1.5>, 5, 5 adaptive 1` on
+                     both lights (written here into a copy of the file): prism's PointGridLight
 
 512 x 512, one sample per pixel (POV-Ray -A), 1 and 2 threads. The two are run
 alternately, `--repeats` times each, and compared by render time without process
@@ -16,7 +18,7 @@ With --baseline BUILD, an earlier build of prism (e.g. a worktree of the commit 
 change) runs in the same loop, and its time and ratio are reported beside the current
 one's: a before/after comparison under the same load.
 
-    bench/vs_povray.py [--build build/release] [--baseline BUILD] [--out bench/results] [--repeats 7]
+    bench/vs_povray.py [--build build/release] [--baseline BUILD] [--out bench/results] [--repeats 7] [--scenes A,B]
 """
 import argparse
 import csv
@@ -29,9 +31,20 @@ import tempfile
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
 
-SCENES = {  # example -> (POV-Ray scene file, extra POV-Ray arguments)
-    "cornell": ("cornell_caustics.pov", ["Declare=PHOTONS=0"]),
-    "csg_quadrics": ("csg_quadrics.pov", []),
+AREA_LIGHT = "area_light <1.5, 0, 0>, <0, 0, 1.5>, 5, 5 adaptive 1"
+
+
+def with_area_lights(text):
+    """The .pov text with AREA_LIGHT added to every one-line light_source { <p> color rgb c }."""
+    out, count = re.subn(r"(light_source \{ *<[^>]*> *color rgb [0-9.]+) *\}", r"\1 " + AREA_LIGHT + " }", text)
+    assert count == 2, "expected the two lights of csg_quadrics.pov"
+    return out
+
+
+SCENES = {  # example -> (POV-Ray scene file, extra POV-Ray arguments, rewrite of its text or None)
+    "cornell": ("cornell_caustics.pov", ["Declare=PHOTONS=0"], None),
+    "csg_quadrics": ("csg_quadrics.pov", [], None),
+    "csg_quadrics_area": ("csg_quadrics.pov", [], with_area_lights),
 }
 
 
@@ -62,15 +75,22 @@ def main():
     parser.add_argument("--out", default=str(ROOT / "bench" / "results"))
     parser.add_argument("--repeats", type=int, default=7)
     parser.add_argument("--baseline", help="another prism build to time in the same runs (before/after a change)")
+    parser.add_argument("--scenes", help="comma-separated: only these of " + ", ".join(SCENES))
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
 
     rows = []
-    for example, (pov_file, extra) in SCENES.items():
+    for example, (pov_file, extra, rewrite) in SCENES.items():
+        if args.scenes and example not in args.scenes.split(","):
+            continue
         binary = pathlib.Path(args.build) / "examples" / example
         scene = find_scene(pov_file)
         with tempfile.TemporaryDirectory() as folder:
+            if rewrite:
+                rewritten = pathlib.Path(folder) / ("rewritten_" + pov_file)
+                rewritten.write_text(rewrite(scene.read_text()))
+                scene = rewritten
             for threads in (1, 2):
                 prism_runs, pov_runs, base_runs = [], [], []
                 for _ in range(args.repeats):
@@ -94,8 +114,12 @@ def main():
                                  out / f"{example}_vs_povray_images.png")
             print(f"{example}: {difference}")
 
+    if args.scenes and (out / "vs_povray.csv").exists():  # keep the scenes not run
+        with open(out / "vs_povray.csv") as f:
+            kept = [r for r in csv.DictReader(f) if r["scene"] not in args.scenes.split(",")]
+        rows = kept + rows
     with open(out / "vs_povray.csv", "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer = csv.DictWriter(f, fieldnames=list(dict.fromkeys(k for r in rows for k in r)), restval="")
         writer.writeheader()
         writer.writerows(rows)
     print(f"wrote {out / 'vs_povray.csv'}")

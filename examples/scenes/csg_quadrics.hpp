@@ -17,8 +17,29 @@ prism::Camera<T> csg_quadrics_camera()
     return {.position = pov::point<T>(0, 3.2, -7.5), .look_at = pov::point<T>(0, 0.9, 0.5), .up = {T(0), T(1), T(0)}, .fov = T(50)};
 }
 
+/// The .pov file's two lights: point lights of colour 0.9 and 0.4.
 template <prism::Scalar T>
-auto csg_quadrics_scene()
+auto csg_quadrics_lights()
+{
+    return prism::Lights{pov::light<T>(pov::point<T>(-4, 8, -6), prism::Rgb<T>(T(0.9))), pov::light<T>(pov::point<T>(5, 6, -3), prism::Rgb<T>(T(0.4)))};
+}
+
+/// The same lights as POV-Ray's area lights (bench/vs_povray.py writes the .pov file's
+/// copy): `area_light <1.5, 0, 0>, <0, 0, 1.5>, 5, 5 adaptive 1` on each, no jitter.
+template <prism::Scalar T>
+auto csg_quadrics_area_lights()
+{
+    const auto grid = [](const prism::PointLight<T>& light) {
+        return prism::PointGridLight<T>{.light = light, .axis1 = pov::point<T>(1.5, 0, 0), .axis2 = pov::point<T>(0, 0, 1.5), .size1 = 5, .size2 = 5,
+                                        .adaptive = 1};
+    };
+    return prism::Lights{grid(pov::light<T>(pov::point<T>(-4, 8, -6), prism::Rgb<T>(T(0.9)))),
+                         grid(pov::light<T>(pov::point<T>(5, 6, -3), prism::Rgb<T>(T(0.4))))};
+}
+
+/// The scene under `lights` (by default the .pov file's own).
+template <prism::Scalar T, class LightList = decltype(csg_quadrics_lights<T>())>
+auto csg_quadrics_scene(LightList lights = csg_quadrics_lights<T>())
 {
     using namespace prism;
     // finish { ambient 0 diffuse 0.7 phong 0.5 phong_size 40 }
@@ -46,7 +67,7 @@ auto csg_quadrics_scene()
     // The floor's checker: negating z moves every cell across an odd number of cell
     // faces, so POV-Ray's first colour is prism's odd one.
     Scene scene{
-        Lights{pov::light<T>(pov::point<T>(-4, 8, -6), Rgb<T>(T(0.9))), pov::light<T>(pov::point<T>(5, 6, -3), Rgb<T>(T(0.4)))},
+        std::move(lights),
         Object{Plane<T>({T(0), T(1), T(0)}, T(0)),
                Diffuse<T, Checker<T>>{.albedo = {.even = Rgb<T>(T(0.35)), .odd = Rgb<T>(T(0.8)), .size = T(1)}, .kd = T(0.8), .ka = T(0)}},
         Object{bead, plastic(T(0.85), T(0.35), T(0.15))},

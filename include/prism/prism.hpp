@@ -50,6 +50,7 @@
 #include <prism/light/environment_light.hpp>
 #include <prism/light/environment_map.hpp>
 #include <prism/light/light.hpp>
+#include <prism/light/point_grid_light.hpp>
 #include <prism/light/point_light.hpp>
 #include <prism/light/spot_light.hpp>
 #include <prism/material/conductor.hpp>

@@ -113,4 +113,14 @@ inline constexpr bool is_delta_light = bool(L::delta);
 template <class L>
 inline constexpr bool is_at_infinity = requires { requires bool(L::at_infinity); };
 
+/// Whether L casts its own shadow: a delta light whose shading comes from one point but whose
+/// shadow is the share of a shape it sees (POV-Ray's area_light, PointGridLight), given as
+/// `shadow(through, colour, rng)`, where through(point) is what a shadow ray to a point of
+/// the light lets through and colour the light's colour at the shading point.
+template <class L>
+inline constexpr bool has_own_shadow = requires(const L& light, const Rgb<typename L::scalar_type>& colour, Pcg32* rng) {
+    { light.shadow([](const Vec3<typename L::scalar_type>&) { return Rgb<typename L::scalar_type>(); }, colour, rng) }
+        -> std::same_as<Rgb<typename L::scalar_type>>;
+};
+
 } // namespace prism

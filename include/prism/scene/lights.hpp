@@ -44,6 +44,12 @@ inline constexpr bool all_delta = true;
 template <class... Ls>
 inline constexpr bool all_delta<Lights<Ls...>> = (is_delta_light<Ls> && ...);
 
+/// Whether some light of a Lights{...} casts its own shadow (has_own_shadow: it may jitter).
+template <class List>
+inline constexpr bool any_own_shadow = false;
+template <class... Ls>
+inline constexpr bool any_own_shadow<Lights<Ls...>> = (has_own_shadow<Ls> || ...);
+
 /// Whether every light of the list has scalar type T (true for what is no list: that
 /// has its own error).
 template <class List, class T>

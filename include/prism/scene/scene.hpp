@@ -81,9 +81,10 @@ public:
     static constexpr bool slot_emits = detail::slot_emits<SlotAt<I>>;
     /// Some material emits: the scene has area lights (AreaLights, one more light).
     static constexpr bool has_emitters = detail::any_of({detail::slot_emits<Slots>...});
-    /// Some light is not a delta light (an area or environment light): it is sampled
-    /// point by point, with random numbers.
-    static constexpr bool has_lights_with_extent = has_emitters || !detail::all_delta<LightsOfScene>;
+    /// Some light is not a delta light (an area or environment light), or casts a shadow of
+    /// its own (POV-Ray's area_light, which may jitter): it is sampled point by point, with
+    /// random numbers.
+    static constexpr bool has_lights_with_extent = has_emitters || !detail::all_delta<LightsOfScene> || detail::any_own_shadow<LightsOfScene>;
     static_assert(detail::light_count_of<LightsOfScene> > 0 || has_emitters,
                   "a scene needs a light: Lights{...} with at least one (a PointLight, a DirectionalLight, ...), or an object whose material emits (Emissive)");
 

@@ -59,7 +59,8 @@ void for_each_light_sample(const L& light, const Vec3<T>& p, const LightSampling
 /// light's), the shadow ray's transmittance v (0 when occluded, Beer-Lambert through
 /// glass) and the cosine at the surface (the shading normal's: shading_cosine). Samples
 /// behind the surface, or carrying nothing, are not visited: they count as occluded. How
-/// dielectrics shadow: see Scene::transmittance.
+/// dielectrics shadow: see Scene::transmittance. A light that casts its own shadow
+/// (has_own_shadow: POV-Ray's area_light) gives v itself, from shadow rays to its points.
 template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Light L, Scalar T, class F>
 void for_each_sample_arriving(const SceneT& scene, const L& light, const Crossing<T>& hit, const LightSampling& sampling, F&& f)
 {
@@ -67,8 +68,18 @@ void for_each_sample_arriving(const SceneT& scene, const L& light, const Crossin
     for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
         const T cos = shading_cosine(n_shading, n, s.wi);
         if (!(cos > T(0)) || !(max_component(s.irradiance) > T(0))) return;
-        const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
-        f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
+        if constexpr (has_own_shadow<L>) {
+            const auto through = [&](const Vec3<T>& point) {
+                const Vec3<T> to = point - hit.point;
+                const T distance = length(to);
+                if (!(distance > T(0))) return Rgb<T>(T(1));
+                return scene.template transmittance<Glass>(spawn_ray(hit.point, hit.error, hit.normal, to / distance), distance * (T(1) - shadow_epsilon<T>));
+            };
+            f(s, light.shadow(through, s.irradiance / pi<T>, sampling.rng), cos);
+        } else {
+            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
+            f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
+        }
     });
 }
 
