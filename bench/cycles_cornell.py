@@ -15,12 +15,8 @@
 # and right-handed, so (x, y, z) -> (x, z, y): a reflection, which turns the left-handed
 # POV frame into Blender's right-handed one and keeps the picture.
 #
-# Settings that keep Cycles radiometric and comparable: CPU, 2 threads, view transform
-# Standard with no look, exposure 0, gamma 1 (the EXR holds scene-linear radiance
-# anyway), a black world (the factory world emits grey), point light radius 0, no
-# clamping, light threshold 0, adaptive sampling and denoising off, 64 bounces of
-# everything, a 1-pixel box filter. The render is saved as float EXR, read back inside
-# Blender (Debian has no python3-openexr) and written as PFM.
+# The settings that keep Cycles radiometric and unbiased are bench/cycles_common.py's; the
+# world is black (the factory world emits grey).
 #
 # --calibrate measures Blender's point-light power per unit of radiant intensity: a
 # diffuse plane of albedo 0.5 two metres below a light of 100 W, seen by a small
@@ -29,12 +25,12 @@
 # P / (4 pi)).
 import math
 import os
-import struct
 import sys
-import tempfile
-import time
 
 import bpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cycles_common import empty_scene, render_to_pfm, render_to_pixels  # noqa: E402
 
 argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 area = "--area" in argv
@@ -56,43 +52,8 @@ def blender(p):
     return (p[0], p[2], p[1])
 
 
-scene = bpy.context.scene
-for obj in list(bpy.data.objects):
-    bpy.data.objects.remove(obj, do_unlink=True)
-
-scene.render.engine = "CYCLES"
+scene = empty_scene(samples, seed, size)
 cycles = scene.cycles
-cycles.device = "CPU"
-cycles.samples = samples
-cycles.seed = seed
-cycles.use_adaptive_sampling = False
-cycles.use_denoising = False
-cycles.sample_clamp_direct = 0.0
-cycles.sample_clamp_indirect = 0.0
-cycles.light_sampling_threshold = 0.0
-cycles.max_bounces = 64
-cycles.diffuse_bounces = 64
-cycles.glossy_bounces = 64
-cycles.transmission_bounces = 64
-cycles.transparent_max_bounces = 64
-cycles.caustics_reflective = True
-cycles.caustics_refractive = True
-cycles.pixel_filter_type = "BOX"
-cycles.filter_width = 1.0
-scene.render.threads_mode = "FIXED"
-scene.render.threads = 2
-scene.render.resolution_x = size
-scene.render.resolution_y = size
-scene.render.resolution_percentage = 100
-scene.render.film_transparent = False
-scene.view_settings.view_transform = "Standard"
-scene.view_settings.look = "None"
-scene.view_settings.exposure = 0.0
-scene.view_settings.gamma = 1.0
-scene.display_settings.display_device = "sRGB"
-scene.render.image_settings.file_format = "OPEN_EXR"
-scene.render.image_settings.color_depth = "32"
-scene.render.image_settings.exr_codec = "NONE"
 
 world = bpy.data.worlds.new("black")
 world.use_nodes = True
@@ -151,20 +112,6 @@ def camera(position, look_at, fov_deg, ortho_scale=None):
     scene.camera = obj
 
 
-def render_to_pixels():
-    """Render, save float EXR, read it back: (width, height, rows of RGB floats, bottom row first)."""
-    folder = tempfile.mkdtemp()
-    exr = os.path.join(folder, "render.exr")
-    scene.render.filepath = exr
-    start = time.time()
-    bpy.ops.render.render(write_still=True)
-    seconds = time.time() - start
-    image = bpy.data.images.load(exr)
-    w, h = image.size
-    px = list(image.pixels)  # RGBA, bottom row first
-    return w, h, px, seconds
-
-
 if calibrate:
     h = 2.0
     power = 100.0
@@ -173,7 +120,7 @@ if calibrate:
     camera((0, 1.0, 0), (0, 0, 0.0001), 0, ortho_scale=0.02)
     scene.render.resolution_x = scene.render.resolution_y = 16
     cycles.samples = 256
-    w, hgt, px, seconds = render_to_pixels()
+    w, hgt, px, seconds = render_to_pixels(scene)
     radiance = sum(px[i] for i in range(0, len(px), 4)) / (w * hgt)
     intensity = radiance * math.pi / 0.5 * h * h
     with open(out_path, "w") as f:
@@ -214,13 +161,4 @@ else:
     point_light((2.78, 5.35, 2.60), 4 * math.pi * INTENSITY)
 camera((2.78, 2.73, -8.0), (2.78, 2.73, 0.0), 40.0)
 
-w, h, px, seconds = render_to_pixels()
-with open(out_path, "wb") as f:
-    f.write(b"PF\n%d %d\n-1.0\n" % (w, h))  # PFM rows run bottom to top, as Blender's
-    data = []
-    for i in range(0, len(px), 4):
-        data.extend(px[i:i + 3])
-    f.write(struct.pack("<%df" % len(data), *data))
-with open(out_path + ".txt", "w") as f:
-    f.write("samples,seconds\n%d,%.3f\n" % (samples, seconds))
-print("cycles: %d spp at %dx%d in %.2f s -> %s" % (samples, w, h, seconds, out_path))
+render_to_pfm(scene, out_path, samples)

@@ -10,18 +10,17 @@
 # counterclockwise from above by its rotation; Cycles' equirectangular lookup looks toward
 # +x there (u = 1/2 - atan2(y, x) / 2 pi). So the world's direction is turned about
 # Blender's z by -(90 + rotation) degrees before the lookup (a Mapping node of type Vector).
-# The settings that keep Cycles radiometric and unbiased are bench/cycles_cornell.py's, and
-# Filter Glossy off; the image is read as linear ("Linear" colour space, what the EXR
-# holds), strength 1.
+# The settings that keep Cycles radiometric and unbiased are bench/cycles_common.py's; the
+# image is read as linear ("Linear" colour space, what the EXR holds), strength 1.
 import math
 import os
-import struct
 import sys
-import tempfile
-import time
 
 import bpy
 from mathutils import Vector
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cycles_common import empty_scene, render_to_pfm  # noqa: E402
 
 argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 out_path = argv[0]
@@ -38,38 +37,7 @@ def blender(p):
     return (p[0], -p[2], p[1])
 
 
-scene = bpy.context.scene
-for obj in list(bpy.data.objects):
-    bpy.data.objects.remove(obj, do_unlink=True)
-scene.render.engine = "CYCLES"
-cycles = scene.cycles
-cycles.device = "CPU"
-cycles.samples = samples
-cycles.seed = seed
-cycles.use_adaptive_sampling = False
-cycles.use_denoising = False
-cycles.sample_clamp_direct = 0.0
-cycles.sample_clamp_indirect = 0.0
-cycles.light_sampling_threshold = 0.0
-for bounces in ("max_bounces", "diffuse_bounces", "glossy_bounces", "transmission_bounces", "transparent_max_bounces"):
-    setattr(cycles, bounces, 64)
-cycles.caustics_reflective = True
-cycles.caustics_refractive = True
-cycles.blur_glossy = 0.0  # Filter Glossy (1 by default) blurs the mirror after a diffuse bounce: biased
-cycles.pixel_filter_type = "BOX"
-cycles.filter_width = 1.0
-scene.render.threads_mode = "FIXED"
-scene.render.threads = 2
-scene.render.resolution_x = scene.render.resolution_y = size
-scene.render.resolution_percentage = 100
-scene.render.film_transparent = False
-scene.view_settings.view_transform = "Standard"
-scene.view_settings.look = "None"
-scene.view_settings.exposure = 0.0
-scene.view_settings.gamma = 1.0
-scene.render.image_settings.file_format = "OPEN_EXR"
-scene.render.image_settings.color_depth = "32"
-scene.render.image_settings.exr_codec = "NONE"
+scene = empty_scene(samples, seed, size)
 
 world = bpy.data.worlds.new("sky")
 world.use_nodes = True
@@ -133,21 +101,4 @@ camera.rotation_euler = Vector(blender([look_at[i] - position[i] for i in range(
 scene.collection.objects.link(camera)
 scene.camera = camera
 
-folder = tempfile.mkdtemp()
-exr = os.path.join(folder, "render.exr")
-scene.render.filepath = exr
-start = time.time()
-bpy.ops.render.render(write_still=True)
-seconds = time.time() - start
-image = bpy.data.images.load(exr)
-w, h = image.size
-px = list(image.pixels)  # RGBA, bottom row first
-with open(out_path, "wb") as f:
-    f.write(b"PF\n%d %d\n-1.0\n" % (w, h))
-    data = []
-    for i in range(0, len(px), 4):
-        data.extend(px[i:i + 3])
-    f.write(struct.pack("<%df" % len(data), *data))
-with open(out_path + ".txt", "w") as f:
-    f.write("samples,seconds\n%d,%.3f\n" % (samples, seconds))
-print("cycles: %d spp at %dx%d in %.2f s -> %s" % (samples, w, h, seconds, out_path))
+render_to_pfm(scene, out_path, samples)

@@ -1,0 +1,79 @@
+# SPDX-License-Identifier: MIT
+# What bench/cycles_cornell.py and bench/cycles_sky.py share inside Blender: the settings
+# that keep Cycles radiometric and unbiased, and a render written as PFM.
+#
+# CPU, 2 threads, view transform Standard with no look, exposure 0, gamma 1 (the EXR holds
+# scene-linear radiance anyway), point lights of radius 0, no clamping, light threshold 0,
+# adaptive sampling and denoising off, Filter Glossy off (it blurs a mirror after a diffuse
+# bounce), 64 bounces of everything, a 1-pixel box filter. The render is saved as float EXR,
+# read back inside Blender (Debian has no python3-openexr) and written as PFM.
+import os
+import struct
+import tempfile
+import time
+
+import bpy
+
+
+def empty_scene(samples, seed, size):
+    """The factory scene emptied of objects, set up as above; returns it."""
+    scene = bpy.context.scene
+    for obj in list(bpy.data.objects):
+        bpy.data.objects.remove(obj, do_unlink=True)
+    scene.render.engine = "CYCLES"
+    cycles = scene.cycles
+    cycles.device = "CPU"
+    cycles.samples = samples
+    cycles.seed = seed
+    cycles.use_adaptive_sampling = False
+    cycles.use_denoising = False
+    cycles.sample_clamp_direct = 0.0
+    cycles.sample_clamp_indirect = 0.0
+    cycles.light_sampling_threshold = 0.0
+    for bounces in ("max_bounces", "diffuse_bounces", "glossy_bounces", "transmission_bounces", "transparent_max_bounces"):
+        setattr(cycles, bounces, 64)
+    cycles.caustics_reflective = True
+    cycles.caustics_refractive = True
+    cycles.blur_glossy = 0.0
+    cycles.pixel_filter_type = "BOX"
+    cycles.filter_width = 1.0
+    scene.render.threads_mode = "FIXED"
+    scene.render.threads = 2
+    scene.render.resolution_x = scene.render.resolution_y = size
+    scene.render.resolution_percentage = 100
+    scene.render.film_transparent = False
+    scene.view_settings.view_transform = "Standard"
+    scene.view_settings.look = "None"
+    scene.view_settings.exposure = 0.0
+    scene.view_settings.gamma = 1.0
+    scene.display_settings.display_device = "sRGB"
+    scene.render.image_settings.file_format = "OPEN_EXR"
+    scene.render.image_settings.color_depth = "32"
+    scene.render.image_settings.exr_codec = "NONE"
+    return scene
+
+
+def render_to_pixels(scene):
+    """Render, save float EXR, read it back: (width, height, RGBA floats bottom row first, seconds)."""
+    exr = os.path.join(tempfile.mkdtemp(), "render.exr")
+    scene.render.filepath = exr
+    start = time.time()
+    bpy.ops.render.render(write_still=True)
+    seconds = time.time() - start
+    image = bpy.data.images.load(exr)
+    w, h = image.size
+    return w, h, list(image.pixels), seconds
+
+
+def render_to_pfm(scene, out_path, samples):
+    """Render and write OUT.pfm (rows bottom to top, as Blender's) and OUT.pfm.txt (samples, seconds)."""
+    w, h, px, seconds = render_to_pixels(scene)
+    with open(out_path, "wb") as f:
+        f.write(b"PF\n%d %d\n-1.0\n" % (w, h))
+        data = []
+        for i in range(0, len(px), 4):
+            data.extend(px[i:i + 3])
+        f.write(struct.pack("<%df" % len(data), *data))
+    with open(out_path + ".txt", "w") as f:
+        f.write("samples,seconds\n%d,%.3f\n" % (samples, seconds))
+    print("cycles: %d spp at %dx%d in %.2f s -> %s" % (samples, w, h, seconds, out_path))
