@@ -8,13 +8,17 @@
 //   povray is the glass box in POV-Ray's model (shared/scenes/cornell_caustics.pov: its
 //   no-falloff light, direct light and caustics only; no global photons, and the
 //   reference takes no diffuse bounce).
-//   METHOD direct | gather | cache | progressive | reference | path | path_bounces | mask; EFFORT is, per method:
+//   METHOD direct | gather | cache | progressive | reference | path | path_bounces | path_grid2 | path_strata | mask; EFFORT is, per method:
 //   direct: photons (global and caustic); gather: final-gather rays (2e5 photons);
 //   cache: rays per record (2e5 photons); progressive: passes (5e4 + 5e4 photons each);
 //   reference: samples per pixel (and as many light paths); path: the path tracer alone,
 //   light samples and bounces combined by multiple importance sampling, samples per
 //   pixel; path_bounces: the same without light samples for area lights (their light
-//   found only by the bounces that meet them); mask: samples per pixel, and the image is
+//   found only by the bounces that meet them); path_grid2: the path tracer with 2 x 2
+//   stratified light samples at each vertex instead of one; path_strata: the path tracer
+//   with each pixel's camera rays on a jittered sqrt(spp) x sqrt(spp) grid instead of
+//   independent positions (an experiment outside render(): is the gap to Cycles where the
+//   pixel's samples fall?); mask: samples per pixel, and the image is
 //   the share of each pixel whose camera ray meets a diffuse surface first (1 where the
 //   pixel sees only walls).
 #include "common.hpp"
@@ -23,6 +27,7 @@
 
 #include <prism/io/image.hpp>
 
+#include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <string>
@@ -83,7 +88,7 @@ int main(int argc, char** argv)
         options.photons = 50000;
         if (glass) options.caustic_photons = 50000;
         options.render.spp = 1;
-    } else if (method == "reference" || method == "mask" || method == "path" || method == "path_bounces") {
+    } else if (method == "reference" || method == "mask" || method.starts_with("path")) {
         options.render.spp = int(effort);
     }
     if (povray) options.photons = 0; // POV-Ray's model: no global light
@@ -96,9 +101,32 @@ int main(int argc, char** argv)
             prism::write_pfm(film, out);
             return 0.0;
         }
-        if (method == "path" || method == "path_bounces") {
+        if (method == "path_strata") {
+            // Each pixel's samples on a jittered n x n grid (n^2 = spp), one stream a pixel.
             const auto start = std::chrono::steady_clock::now();
-            const prism::PathTracer tracer(scene, {.area_lights = method == "path" ? prism::AreaLightStrategy::mis : prism::AreaLightStrategy::bounces});
+            const prism::PathTracer tracer(scene);
+            const int size = options.render.width, n = int(std::lround(std::sqrt(double(options.render.spp))));
+            const prism::CameraRays<float> rays = scenes::cornell_camera<float>().rays(size, size);
+            prism::Film film(size, size);
+            prism::detail::parallel_for(std::size_t(size) * std::size_t(size), 2, [&](std::size_t i) {
+                const int x = int(i % std::size_t(size)), y = int(i / std::size_t(size));
+                prism::Pcg32 rng(options.render.seed, i);
+                prism::Rgb<float> sum(0.0f);
+                for (int a = 0; a < n; ++a)
+                    for (int b = 0; b < n; ++b) {
+                        const float u = (float(a) + rng.uniform<float>()) / float(n), v = (float(b) + rng.uniform<float>()) / float(n);
+                        sum += tracer.radiance(rays.ray(float(x) + u, float(y) + v), rng);
+                    }
+                film.set(x, y, sum / float(n * n));
+            });
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            prism::write_pfm(film, out);
+            return seconds;
+        }
+        if (method == "path" || method == "path_bounces" || method == "path_grid2") {
+            const auto start = std::chrono::steady_clock::now();
+            const prism::PathTracer tracer(scene, {.area_light_grid = method == "path_grid2" ? 2 : 1,
+                                                   .area_lights = method == "path_bounces" ? prism::AreaLightStrategy::bounces : prism::AreaLightStrategy::mis});
             const prism::Film film = prism::render(scenes::cornell_camera<float>(), tracer, options.render);
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             prism::write_pfm(film, out);

@@ -6,7 +6,8 @@
 #   diffuse  shared/scenes/cornell_diffuse.md (Cycles renders it too)
 #   area     the same box under its ceiling light, an area light (Cycles renders it too);
 #            also the path tracer alone, with multiple importance sampling and without
-#            light samples (path, path_bounces)
+#            light samples (path, path_bounces), with 2 x 2 light samples a vertex (path_grid2),
+#            and with each pixel's camera rays stratified (path_strata, outside render())
 #   glass    the Cornell box with the glass and mirror balls, physical light
 #   povray   shared/scenes/cornell_caustics.pov in POV-Ray's model: its no-falloff light,
 #            direct light and caustics only (no radiosity); prism's reference takes no
@@ -196,7 +197,8 @@ def main():
         efforts = {m: e[:2] for m, e in efforts.items()}
         cycles_spp = cycles_spp[:2]
     povray_counts = [10000, 30000, 100000, 300000, 1000000, 3000000]
-    paths = {"path": efforts["reference"], "path_bounces": efforts["reference"]}
+    paths = {"path": efforts["reference"], "path_bounces": efforts["reference"], "path_grid2": efforts["reference"],
+             "path_strata": efforts["reference"]}
     per_scene = {"diffuse": efforts, "glass": efforts, "area": {**efforts, **paths},
                  "povray": {"direct": [10000, 30000, 100000, 300000, 1000000, 3000000],
                             "direct, 1 spp": [10000, 30000, 100000, 300000, 1000000, 3000000], "progressive": efforts["progressive"],
