@@ -11327,8 +11327,8 @@ public:
                             for_each_sample_arriving<ShadowsThroughGlass::blocked>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
                                 // An area light's sample shares its path with the diffuse
                                 // bounce (cos / pi) that finds it where the walk goes on.
-                                const bool shared = !s.delta() && go_on && config_.area_lights == AreaLightStrategy::mis;
-                                const T w = shared ? power_heuristic(light_samples() * s.pdf, cos / pi<T>) : T(1);
+                                const bool shared = !s.delta() && go_on;
+                                const T w = shared ? light_sample_weight(s.pdf, cos / pi<T>) : T(1);
                                 irradiance += w * v * s.irradiance * cos;
                             });
                         });
@@ -11364,7 +11364,17 @@ public:
     /// The air camera rays start in.
     [[nodiscard]] const Air& air() const noexcept { return air_; }
 
-private:
+    /// The weight of one of a vertex's samples of a light with extent, drawn with solid-angle
+    /// density `light_pdf`, where the diffuse bounce from there would draw its direction with
+    /// `bounce_pdf` (cos / pi): the power heuristic, counting every sample the vertex takes of
+    /// the light (area_light_grid^2), with AreaLightStrategy::mis; 1 or 0 for the strategies
+    /// alone (the caller skips light samples for `bounces`). With met_light_weight of the same
+    /// path it sums to 1 (tests/integrator/path_tracer.cpp).
+    [[nodiscard]] T light_sample_weight(T light_pdf, T bounce_pdf) const noexcept
+    {
+        return config_.area_lights == AreaLightStrategy::mis ? power_heuristic(light_samples() * light_pdf, bounce_pdf) : T(1);
+    }
+
     /// The weight of a light with extent (an area or environment light) that a path meets
     /// after a diffuse bounce: with a diffuse bounce just before it (its density last_pdf,
     /// cos / pi), the power heuristic against sampling the light from there (n samples of
@@ -11384,6 +11394,7 @@ private:
         return config_.caustics_of_area_lights || first_specular ? T(1) : T(0);
     }
 
+private:
     /// The samples each area light takes at a diffuse vertex (the heuristic counts them all).
     [[nodiscard]] T light_samples() const noexcept { return T(config_.area_light_grid * config_.area_light_grid); }
 

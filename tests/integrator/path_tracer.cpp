@@ -74,3 +74,51 @@ TEST_CASE("the path tracer in the two-lobe furnace: rho_d / (1 - rho_s - rho_d) 
     // survives with probability 0.7^100 = 3e-16.
     CHECK(stats.largest < 50);
 }
+
+TEST_CASE("the path tracer's MIS weights of a light sample and of the bounce that meets the same light sum to 1 on every path")
+{
+    // Emitters of three kinds (a sphere by its cone, a disk by area, a rectangle by its
+    // spherical rectangle) over a floor, and a sky with a sun; the weights are the ones the
+    // integrator applies: the light sample's with the density it was drawn with, the
+    // bounce's with the density pdf() gives the point (or direction) the bounce meets.
+    std::vector<Rgb<float>> sky;
+    for (int i = 0; i < 16 * 8; ++i) sky.push_back(Rgb<float>(i == 21 ? 500.0f : 1.0f + float(i % 5)));
+    const Scene scene{Lights{EnvironmentMap<double>(16, 8, sky)}, Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{}},
+                      Object{Sphere<double>({1.5, 1.5, 0}, 0.5), Emissive<double>{.radiance = Rgb<double>(1)}},
+                      Object{Disk<double>({0, 2.5, 0.5}, {0, -1, 0}, 0.6), Emissive<double>{.radiance = Rgb<double>(2, 3, 4)}},
+                      Object{Quad<double>({-2, 1, -1}, {0, 1.5, 0}, {0, 0, 2}), Emissive<double>{.radiance = Rgb<double>(0.5)}}};
+    const auto lights = scene.area_lights();
+    const auto& map = std::get<0>(scene.lights.items);
+    for (const int grid : {1, 3}) {
+        const PathTracer tracer(scene, {.area_light_grid = grid});
+        Pcg32 rng(12, unsigned(grid));
+        int paths = 0;
+        double worst = 0;
+        for (int i = 0; i < 20000; ++i) {
+            const Vec3<double> p{4 * rng.uniform<double>() - 2, 0, 4 * rng.uniform<double>() - 2};
+            const Vec2<double> u{rng.uniform<double>(), rng.uniform<double>()};
+            // An area light's sample, unoccluded, and the bounce that meets the same point.
+            const LightSample<double> s = lights.sample(p, u);
+            if (s.wi.y > 0) {
+                const auto hit = scene.closest_hit({p, s.wi}, {1e-9, infinity<double>});
+                if (hit && std::abs(hit->crossing.t - s.distance) < 1e-6 * s.distance) {
+                    const double bounce = s.wi.y / pi<double>;
+                    const double sum = tracer.light_sample_weight(s.pdf, bounce) + tracer.met_light_weight(bounce, false, [&] { return lights.pdf(*hit, p); });
+                    worst = std::max(worst, std::abs(sum - 1));
+                    ++paths;
+                }
+            }
+            // The sky's sample, and the bounce that leaves along it.
+            const LightSample<double> e = map.sample(p, u);
+            if (e.wi.y > 0 && !scene.closest_hit({p, e.wi}, {1e-9, infinity<double>})) {
+                const double bounce = e.wi.y / pi<double>;
+                const double sum = tracer.light_sample_weight(e.pdf, bounce) + tracer.met_light_weight(bounce, false, [&] { return map.pdf(e.wi); });
+                worst = std::max(worst, std::abs(sum - 1));
+                ++paths;
+            }
+        }
+        MESSAGE("grid ", grid, ": ", paths, " paths, largest |w_light + w_bounce - 1| = ", worst);
+        CHECK(paths > 10000);
+        CHECK(worst < 1e-6);
+    }
+}
