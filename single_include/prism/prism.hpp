@@ -5136,6 +5136,7 @@ static_assert(Shape<Quadric<double>>);
 // Sphere: the solid ball |p - center| <= radius.
 
 
+#include <algorithm>
 #include <limits>
 
 namespace prism {
@@ -5376,8 +5377,19 @@ private:
     {
         // Refine the hit point by reprojecting it onto the surface; the remaining error
         // is that of the reprojection (pbrt-v4, Sphere::InteractionFromIntersection).
-        const T radial_length = length(radial);
-        const Vec3<T> normal = radial_length > T(0) ? radial * (T(1) / radial_length) : Vec3<T>(T(0), T(0), T(1));
+        T radial_length = length(radial);
+        Vec3<T> unit_radial = radial;
+        // A radial so short that its square lost bits (below 2^24 of the smallest normal:
+        // a sphere far smaller than its distance to the ray, as the fuzzer builds) is scaled
+        // up first, or its normal would not be of unit length; others keep their bits.
+        if (!(length_squared(radial) >= std::numeric_limits<T>::min() * T(16777216))) {
+            const T largest = std::max({std::abs(radial.x), std::abs(radial.y), std::abs(radial.z)});
+            if (largest > T(0)) {
+                unit_radial = radial / largest;
+                radial_length = length(unit_radial);
+            }
+        }
+        const Vec3<T> normal = radial_length > T(0) ? unit_radial * (T(1) / radial_length) : Vec3<T>(T(0), T(0), T(1));
         const Vec3<T> offset = normal * radius_;
         const Vec3<T> point = center_ + offset;
         const Vec3<T> error = gamma<T>(5) * abs(offset) + gamma<T>(1) * abs(point);
