@@ -53,6 +53,20 @@ def empty_scene(samples, seed, size):
     return scene
 
 
+def material(name, kind, rgb):
+    """A material of one BSDF, roughness 0: "diffuse" (Lambertian) or "glossy" (a mirror of colour rgb)."""
+    m = bpy.data.materials.new(name)
+    m.use_nodes = True
+    nodes = m.node_tree.nodes
+    nodes.clear()
+    bsdf = nodes.new("ShaderNodeBsdfDiffuse" if kind == "diffuse" else "ShaderNodeBsdfGlossy")
+    bsdf.inputs["Color"].default_value = (rgb[0], rgb[1], rgb[2], 1)
+    bsdf.inputs["Roughness"].default_value = 0.0
+    out = nodes.new("ShaderNodeOutputMaterial")
+    m.node_tree.links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
+    return m
+
+
 def render_to_pixels(scene):
     """Render, save float EXR, read it back: (width, height, RGBA floats bottom row first, seconds)."""
     exr = os.path.join(tempfile.mkdtemp(), "render.exr")

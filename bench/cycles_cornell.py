@@ -30,7 +30,7 @@ import sys
 import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cycles_common import empty_scene, render_to_pfm, render_to_pixels  # noqa: E402
+from cycles_common import empty_scene, material, render_to_pfm, render_to_pixels  # noqa: E402
 
 argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 area = "--area" in argv
@@ -63,24 +63,15 @@ scene.world = world
 
 
 def diffuse(name, rgb):
-    m = bpy.data.materials.new(name)
-    m.use_nodes = True
-    nodes = m.node_tree.nodes
-    nodes.clear()
-    bsdf = nodes.new("ShaderNodeBsdfDiffuse")
-    bsdf.inputs["Color"].default_value = (rgb[0], rgb[1], rgb[2], 1)
-    bsdf.inputs["Roughness"].default_value = 0.0
-    out = nodes.new("ShaderNodeOutputMaterial")
-    m.node_tree.links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
-    return m
+    return material(name, "diffuse", rgb)
 
 
-def quad(name, corners, material):
+def quad(name, corners, surface):
     """A one-sided-looking (Cycles shades both sides) quad from four POV-style corners."""
     mesh = bpy.data.meshes.new(name)
     mesh.from_pydata([blender(c) for c in corners], [], [(0, 1, 2, 3)])
     obj = bpy.data.objects.new(name, mesh)
-    obj.data.materials.append(material)
+    obj.data.materials.append(surface)
     scene.collection.objects.link(obj)
 
 

@@ -20,7 +20,7 @@ import bpy
 from mathutils import Vector
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cycles_common import empty_scene, render_to_pfm  # noqa: E402
+from cycles_common import empty_scene, material, render_to_pfm  # noqa: E402
 
 argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 out_path = argv[0]
@@ -57,19 +57,6 @@ links.new(coordinates.outputs["Generated"], mapping.inputs["Vector"])
 links.new(mapping.outputs["Vector"], texture.inputs["Vector"])
 links.new(texture.outputs["Color"], background.inputs["Color"])
 scene.world = world
-
-
-def material(name, kind, rgb):
-    m = bpy.data.materials.new(name)
-    m.use_nodes = True
-    nodes = m.node_tree.nodes
-    nodes.clear()
-    bsdf = nodes.new("ShaderNodeBsdfDiffuse" if kind == "diffuse" else "ShaderNodeBsdfGlossy")
-    bsdf.inputs["Color"].default_value = (rgb[0], rgb[1], rgb[2], 1)
-    bsdf.inputs["Roughness"].default_value = 0.0
-    out = nodes.new("ShaderNodeOutputMaterial")
-    m.node_tree.links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
-    return m
 
 
 def quad(name, corners, m):
