@@ -11,6 +11,7 @@
 #include <prism/core/rng.hpp>
 #include <prism/core/sampling.hpp>
 #include <prism/geometry/crossings.hpp>
+#include <prism/material/bsdf.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/optics/refract.hpp>
 #include <prism/spectrum/bands.hpp>
@@ -329,11 +330,6 @@ constexpr void attenuate_shadow_ray(const M& material, const Crossings<typename 
 }
 
 // Photons
-
-/// What a path carries: light from the lights (a photon: importance transport, whose
-/// scattering at a shading normal takes Veach's adjoint correction), or importance from
-/// the camera (a camera path: radiance transport).
-enum class Transport { importance, radiance };
 
 /// A photon's next direction after scattering, and whether the bounce was diffuse.
 template <Scalar T>

@@ -9,7 +9,9 @@
 //   reflects     a mirror (delta) reflection that is not a dielectric's DeltaReflection
 //   transmits    a dielectric interface: Fresnel-split delta reflection  DeltaTransmission
 //                and refraction into the medium() that fills it          InteriorMedium
-// and a fourth that only materials of area lights declare (the others emit nothing):
+// and two that a material declares only where it has them (the others have neither):
+//   has_glossy   a lobe with evaluation, sampling and density: rough     GlossyLobe
+//                metal, Phong, a coated surface (material/bsdf.hpp)
 //   emits        radiance leaving its surface: an area light             Emission
 // A scene whose materials never transmit compiles no refraction code at all. The
 // light transport over these capabilities (what a diffuse point reflects, how an
@@ -19,6 +21,7 @@
 #pragma once
 
 #include <prism/core/math.hpp>
+#include <prism/material/bsdf.hpp>
 #include <prism/medium/medium.hpp>
 
 #include <concepts>
@@ -119,7 +122,23 @@ constexpr bool declares_emission() noexcept
     else return false;
 }
 
+template <class M>
+constexpr bool declares_glossy() noexcept
+{
+    if constexpr (requires { M::has_glossy; }) return bool(M::has_glossy);
+    else return false;
+}
+
 } // namespace detail
+
+/// A glossy lobe: `glossy(GlossyQuery)` gives the material's Bsdf at a surface point, in
+/// the point's local frame (material/bsdf.hpp). A material declares it with
+/// `has_glossy = true`; one that does not declare it has none.
+template <class M>
+concept GlossyLobe = requires(const M& material, const GlossyQuery<typename M::scalar_type>& query) {
+    requires Bsdf<std::remove_cvref_t<decltype(material.glossy(query))>>;
+    requires std::same_as<typename std::remove_cvref_t<decltype(material.glossy(query))>::scalar_type, typename M::scalar_type>;
+};
 
 /// A surface that emits light (an area light): `emitted_radiance()`, its radiance per
 /// channel, the same everywhere on it and in every direction of its front, and
@@ -141,8 +160,9 @@ concept Material = requires(const M& material) {
     { M::reflects } -> std::convertible_to<bool>;
     { M::transmits } -> std::convertible_to<bool>;
     material.validate();
-} && (M::has_diffuse || M::reflects || M::transmits || detail::declares_emission<M>()) // a material does at least one thing
+} && (M::has_diffuse || M::reflects || M::transmits || detail::declares_glossy<M>() || detail::declares_emission<M>()) // a material does at least one thing
   && (!detail::declares_emission<M>() || Emission<M>) // emits promises emitted_radiance() -> Rgb<T> and two_sided
+  && (!detail::declares_glossy<M>() || GlossyLobe<M>) // has_glossy promises glossy(GlossyQuery) -> a Bsdf of the same scalar type
   && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) or diffuse(p, uv) -> DiffuseResponse<T>
   && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i or query) -> Rgb<T>
   && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta or query), reflection_tint(), transmission_tint()
@@ -157,9 +177,13 @@ concept Dispersive = requires(const M& material, typename M::scalar_type wavelen
     { material.refractive_index(wavelength_nm) } -> std::same_as<typename M::scalar_type>;
 };
 
-/// Purely specular: every scattered direction is a delta (no diffuse lobe).
+/// The material has a glossy lobe (GlossyLobe).
 template <Material M>
-inline constexpr bool is_delta = !M::has_diffuse && (M::reflects || M::transmits);
+inline constexpr bool has_glossy = detail::declares_glossy<M>();
+
+/// Purely specular: every scattered direction is a delta (no diffuse or glossy lobe).
+template <Material M>
+inline constexpr bool is_delta = !M::has_diffuse && !has_glossy<M> && (M::reflects || M::transmits);
 
 template <Material M>
 inline constexpr bool has_diffuse = M::has_diffuse;

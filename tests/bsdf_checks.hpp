@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: MIT
+// What every BSDF lobe is held to, each against something outside the lobe's own
+// sampling code: its albedo and its density's mass by quadrature over the sphere (on a
+// grid that crowds toward the mirror direction, where glossy lobes peak), sampling by a
+// chi-square test against the density it claims (Mitsuba 3's method), each sample's
+// weight against f cos / pdf, and reciprocity.
+#pragma once
+
+#include "chi2.hpp"
+
+#include <prism/material/bsdf.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace test {
+
+/// The integral of g(w) over the unit sphere, in polar coordinates about `axis` with
+/// the polar angle's steps crowding toward the axis (theta = pi t^3), on rings x sectors points.
+inline double sphere_integral(const std::function<double(const prism::Vec3<double>&)>& g, const prism::Vec3<double>& axis, int rings = 1500,
+                              int sectors = 360)
+{
+    const auto [s, t] = prism::orthonormal_frame(prism::normalize(axis));
+    double sum = 0;
+    for (int i = 0; i < rings; ++i) {
+        const double u = (i + 0.5) / rings;
+        const double theta = prism::pi<double> * u * u * u, dtheta = 3 * prism::pi<double> * u * u / rings;
+        const double st = std::sin(theta), ct = std::cos(theta);
+        for (int j = 0; j < sectors; ++j) {
+            const double phi = 2 * prism::pi<double> * (j + 0.5) / sectors;
+            const prism::Vec3<double> w = st * std::cos(phi) * s + st * std::sin(phi) * t + ct * prism::normalize(axis);
+            sum += g(w) * st * dtheta * (2 * prism::pi<double> / sectors);
+        }
+    }
+    return sum;
+}
+
+/// The mirror direction of wo about the local z axis, where glossy reflection peaks.
+inline prism::Vec3<double> local_mirror(const prism::Vec3<double>& wo) { return {-wo.x, -wo.y, wo.z}; }
+
+/// A lobe's directional albedo for wo, the integral of f(wo, wi) |wi.z| by quadrature.
+template <class B>
+double albedo_by_quadrature(const B& lobe, const prism::Vec3<double>& wo, int channel = 0,
+                            prism::Transport mode = prism::Transport::radiance)
+{
+    return sphere_integral([&](const prism::Vec3<double>& wi) { return lobe.f(wo, wi, mode)[channel] * std::abs(wi.z); }, local_mirror(wo));
+}
+
+/// The mass of a lobe's density for wo over the sphere, by quadrature.
+template <class B>
+double pdf_mass(const B& lobe, const prism::Vec3<double>& wo)
+{
+    return sphere_integral([&](const prism::Vec3<double>& wi) { return lobe.pdf(wo, wi); }, local_mirror(wo));
+}
+
+/// What sampling a lobe for wo finds, over n samples: the mean weight (the albedo, by
+/// Monte Carlo), the share of draws that gave a direction, and the worst relative gap
+/// between a sample's weight and f cos / pdf evaluated at its direction.
+struct LobeSampling {
+    double albedo = 0;   ///< mean of the weights (channel 0), a failed draw counting 0
+    double taken = 0;    ///< share of draws that gave a direction
+    double worst_weight = 0; ///< largest |weight - f cos / pdf| / weight over non-delta samples
+    double worst_pdf = 0;    ///< largest |pdf - pdf(wo, wi)| / pdf over non-delta samples
+};
+
+template <class B>
+LobeSampling sample_lobe(const B& lobe, const prism::Vec3<double>& wo, long n, prism::Transport mode = prism::Transport::radiance,
+                         std::uint64_t seed = 3)
+{
+    prism::Pcg32 rng(seed, 9);
+    LobeSampling out;
+    double sum = 0;
+    long taken = 0;
+    for (long k = 0; k < n; ++k) {
+        const double u0 = rng.uniform<double>(), u1 = rng.uniform<double>(), u2 = rng.uniform<double>();
+        const auto s = lobe.sample(wo, u0, u1, u2, mode);
+        if (!s) continue;
+        ++taken;
+        sum += s->weight.x;
+        if (s->delta) continue;
+        const double expected = lobe.f(wo, s->wi, mode).x * std::abs(s->wi.z) / lobe.pdf(wo, s->wi);
+        if (s->weight.x > 0) out.worst_weight = std::max(out.worst_weight, std::abs(s->weight.x - expected) / s->weight.x);
+        out.worst_pdf = std::max(out.worst_pdf, std::abs(s->pdf - lobe.pdf(wo, s->wi)) / s->pdf);
+    }
+    out.albedo = sum / double(n);
+    out.taken = double(taken) / double(n);
+    return out;
+}
+
+/// Pearson's test of a sampler of directions against its density, as chi2_directions but
+/// with bins of equal polar angle about `axis` (Mitsuba 3's binning), which resolve a
+/// narrow lobe about the axis where bins of equal solid angle put it all in one ring.
+/// Each bin's mass is the midpoint rule on sub x sub points in (theta, phi), on 8 sub x 8
+/// sub where the density's support ends inside the bin.
+inline Chi2 chi2_polar(const std::function<prism::Vec3<double>()>& sample, const std::function<double(const prism::Vec3<double>&)>& pdf,
+                       const prism::Vec3<double>& axis, long samples, int theta_bins = 40, int phi_bins = 40, int sub = 8)
+{
+    const auto [s, t] = prism::orthonormal_frame(axis);
+    std::vector<double> observed(std::size_t(theta_bins * phi_bins), 0.0), expected(observed.size(), 0.0);
+    long taken = 0;
+    for (long k = 0; k < samples; ++k) {
+        const prism::Vec3<double> w = sample();
+        if (w == prism::Vec3<double>(0)) continue;
+        ++taken;
+        const double theta = std::acos(std::clamp(prism::dot(w, axis), -1.0, 1.0));
+        double phi = std::atan2(prism::dot(w, t), prism::dot(w, s));
+        if (phi < 0) phi += 2 * prism::pi<double>;
+        const int i = std::min(theta_bins - 1, int(theta / prism::pi<double> * theta_bins));
+        const int j = std::min(phi_bins - 1, int(phi / (2 * prism::pi<double>) * phi_bins));
+        observed[std::size_t(i * phi_bins + j)] += 1;
+    }
+    const auto mass_of = [&](int i, int j, int n, bool& edge) {
+        double mass = 0;
+        bool zero = false, positive = false;
+        const double dtheta = prism::pi<double> / theta_bins / n, dphi = 2 * prism::pi<double> / phi_bins / n;
+        for (int a = 0; a < n; ++a)
+            for (int b = 0; b < n; ++b) {
+                const double theta = prism::pi<double> * i / theta_bins + (a + 0.5) * dtheta;
+                const double phi = 2 * prism::pi<double> * j / phi_bins + (b + 0.5) * dphi;
+                const prism::Vec3<double> w = std::sin(theta) * (std::cos(phi) * s + std::sin(phi) * t) + std::cos(theta) * axis;
+                const double f = pdf(w);
+                (f > 0 ? positive : zero) = true;
+                mass += f * std::sin(theta) * dtheta * dphi;
+            }
+        edge = zero && positive;
+        return mass;
+    };
+    double total = 0, stray = 0;
+    for (int i = 0; i < theta_bins; ++i)
+        for (int j = 0; j < phi_bins; ++j) {
+            bool edge = false;
+            const std::size_t k = std::size_t(i * phi_bins + j);
+            double mass = mass_of(i, j, sub, edge);
+            if (edge || (mass == 0 && observed[k] > 0)) mass = mass_of(i, j, 8 * sub, edge);
+            expected[k] = mass * double(samples);
+            total += mass;
+            // Samples where even the fine grid saw no density (a sliver at the horizon):
+            // counted apart, for the caller to bound.
+            if (mass == 0 && observed[k] > 0) stray += observed[k], expected[k] = 1e-9;
+        }
+    Chi2 out = chi2_test(observed, expected);
+    out.missing = double(samples) * (1 - total) - double(samples - taken);
+    out.stray = stray;
+    return out;
+}
+
+/// Pearson's test of a lobe's sampling for wo against its pdf (chi2_polar about the
+/// mirror direction), its three numbers drawn from one stream.
+template <class B>
+Chi2 chi2_lobe(const B& lobe, const prism::Vec3<double>& wo, long samples = 1000000, prism::Transport mode = prism::Transport::radiance)
+{
+    prism::Pcg32 rng(17, 5);
+    return chi2_polar(
+        [&] {
+            const double u0 = rng.uniform<double>(), u1 = rng.uniform<double>(), u2 = rng.uniform<double>();
+            const auto s = lobe.sample(wo, u0, u1, u2, mode);
+            return s && !s->delta ? s->wi : prism::Vec3<double>(0);
+        },
+        [&](const prism::Vec3<double>& wi) { return lobe.pdf(wo, wi); }, local_mirror(wo), samples);
+}
+
+/// A unit direction at polar angle theta (degrees) and azimuth phi (degrees) about local z.
+inline prism::Vec3<double> polar(double theta_deg, double phi_deg)
+{
+    const double t = theta_deg * prism::pi<double> / 180, p = phi_deg * prism::pi<double> / 180;
+    return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
+}
+
+} // namespace test
