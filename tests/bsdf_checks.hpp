@@ -150,7 +150,7 @@ inline Chi2 chi2_polar(const std::function<prism::Vec3<double>()>& sample, const
 /// Pearson's test of a lobe's sampling for wo against its pdf (chi2_polar about the
 /// mirror direction), its three numbers drawn from one stream.
 template <class B>
-Chi2 chi2_lobe(const B& lobe, const prism::Vec3<double>& wo, long samples = 1000000, prism::Transport mode = prism::Transport::radiance)
+Chi2 chi2_lobe(const B& lobe, const prism::Vec3<double>& wo, long samples = 1000000, prism::Transport mode = prism::Transport::radiance, int sub = 32)
 {
     prism::Pcg32 rng(17, 5);
     return chi2_polar(
@@ -159,7 +159,7 @@ Chi2 chi2_lobe(const B& lobe, const prism::Vec3<double>& wo, long samples = 1000
             const auto s = lobe.sample(wo, u0, u1, u2, mode);
             return s && !s->delta ? s->wi : prism::Vec3<double>(0);
         },
-        [&](const prism::Vec3<double>& wi) { return lobe.pdf(wo, wi); }, local_mirror(wo), samples);
+        [&](const prism::Vec3<double>& wi) { return lobe.pdf(wo, wi); }, local_mirror(wo), samples, 40, 40, sub);
 }
 
 /// A unit direction at polar angle theta (degrees) and azimuth phi (degrees) about local z.

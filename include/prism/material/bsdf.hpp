@@ -8,6 +8,8 @@
 #include <prism/core/math.hpp>
 #include <prism/core/sampling.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <concepts>
 #include <optional>
 
@@ -45,13 +47,22 @@ struct LocalFrame {
 template <Scalar T>
 struct LobeSample {
     Vec3<T> wi;    ///< the unit direction drawn (wi.z < 0: through the surface)
-    Rgb<T> weight; ///< f(wo, wi) |wi.z| / pdf; for a delta (a smooth surface's mirror or refraction), what it lets through
+    Rgb<T> weight; ///< f(wo, wi) |wi.z| / pdf; for a delta (a smooth surface's mirror or refraction), what it lets through over the probability of drawing it
     T pdf;         ///< the solid-angle density it was drawn with (over every part of the lobe); 0 for a delta
     bool delta;    ///< drawn from a delta part: no density, never found by a light sample
 
     /// Whether the direction goes through the surface.
     [[nodiscard]] constexpr bool transmitted() const noexcept { return wi.z < T(0); }
 };
+
+/// The cosine-distributed direction about local z for the uniform numbers u1, u2
+/// (Malley's method), of density z / pi.
+template <Scalar T>
+[[nodiscard]] inline Vec3<T> cosine_direction(T u1, T u2) noexcept
+{
+    const T r = std::sqrt(u1), phi = T(2) * pi<T> * u2;
+    return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(T(0), T(1) - u1))};
+}
 
 /// What a glossy material is asked at a surface point: where (point and surface
 /// coordinates), and for an interface, the side light arrives from and the ratio of
