@@ -46,7 +46,9 @@ template <class B>
 double albedo_by_quadrature(const B& lobe, const prism::Vec3<double>& wo, int channel = 0,
                             prism::Transport mode = prism::Transport::radiance)
 {
-    return sphere_integral([&](const prism::Vec3<double>& wi) { return lobe.f(wo, wi, mode)[channel] * std::abs(wi.z); }, local_mirror(wo));
+    using T = typename B::scalar_type;
+    return sphere_integral([&](const prism::Vec3<double>& wi) { return double(lobe.f(prism::Vec3<T>(wo), prism::Vec3<T>(wi), mode)[channel]) * std::abs(wi.z); },
+                           local_mirror(wo));
 }
 
 /// The mass of a lobe's density for wo over the sphere, by quadrature.
@@ -67,23 +69,25 @@ struct LobeSampling {
 };
 
 template <class B>
-LobeSampling sample_lobe(const B& lobe, const prism::Vec3<double>& wo, long n, prism::Transport mode = prism::Transport::radiance,
+LobeSampling sample_lobe(const B& lobe, const prism::Vec3<double>& wo_d, long n, prism::Transport mode = prism::Transport::radiance,
                          std::uint64_t seed = 3)
 {
+    using T = typename B::scalar_type;
+    const prism::Vec3<T> wo(wo_d);
     prism::Pcg32 rng(seed, 9);
     LobeSampling out;
     double sum = 0;
     long taken = 0;
     for (long k = 0; k < n; ++k) {
-        const double u0 = rng.uniform<double>(), u1 = rng.uniform<double>(), u2 = rng.uniform<double>();
+        const T u0 = rng.uniform<T>(), u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
         const auto s = lobe.sample(wo, u0, u1, u2, mode);
         if (!s) continue;
         ++taken;
-        sum += s->weight.x;
+        sum += double(s->weight.x);
         if (s->delta) continue;
-        const double expected = lobe.f(wo, s->wi, mode).x * std::abs(s->wi.z) / lobe.pdf(wo, s->wi);
-        if (s->weight.x > 0) out.worst_weight = std::max(out.worst_weight, std::abs(s->weight.x - expected) / s->weight.x);
-        out.worst_pdf = std::max(out.worst_pdf, std::abs(s->pdf - lobe.pdf(wo, s->wi)) / s->pdf);
+        const double expected = double(lobe.f(wo, s->wi, mode).x) * std::abs(double(s->wi.z)) / double(lobe.pdf(wo, s->wi));
+        if (s->weight.x > 0) out.worst_weight = std::max(out.worst_weight, std::abs(double(s->weight.x) - expected) / double(s->weight.x));
+        out.worst_pdf = std::max(out.worst_pdf, std::abs(double(s->pdf) - double(lobe.pdf(wo, s->wi))) / double(s->pdf));
     }
     out.albedo = sum / double(n);
     out.taken = double(taken) / double(n);

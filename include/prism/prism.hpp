@@ -53,11 +53,15 @@
 #include <prism/light/point_grid_light.hpp>
 #include <prism/light/point_light.hpp>
 #include <prism/light/spot_light.hpp>
+#include <prism/material/bsdf.hpp>
+#include <prism/material/coated_diffuse.hpp>
 #include <prism/material/conductor.hpp>
 #include <prism/material/dielectric.hpp>
 #include <prism/material/diffuse.hpp>
 #include <prism/material/dispersive.hpp>
 #include <prism/material/emissive.hpp>
+#include <prism/material/phong.hpp>
+#include <prism/material/rough_conductor.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/texture.hpp>
 #include <prism/material/thin_film.hpp>
@@ -70,6 +74,7 @@
 #include <prism/optics/beer.hpp>
 #include <prism/optics/dispersion.hpp>
 #include <prism/optics/fresnel.hpp>
+#include <prism/optics/microfacet.hpp>
 #include <prism/optics/refract.hpp>
 #include <prism/optics/thin_film.hpp>
 #include <prism/photon/estimator.hpp>

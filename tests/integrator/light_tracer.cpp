@@ -5,6 +5,7 @@
 #include <prism/render/render.hpp>
 
 #include "../furnace.hpp"
+#include "../glossy_scenes.hpp"
 
 #include <doctest/doctest.h>
 
@@ -176,4 +177,32 @@ TEST_CASE("the light tracer in the two-lobe furnace: the paths that leave the li
     const double mean = test::image_mean(traced);
     MESSAGE("light tracer ", mean, " (closed form ", test::CoatedFurnace::light_tracer, ")");
     CHECK(mean == doctest::Approx(test::CoatedFurnace::light_tracer).epsilon(0.01));
+}
+
+TEST_CASE("light tracing onto a glossy floor through a mirror (L S G E) reads the mirror image's light, weighed by the floor's BSDF")
+{
+    // Joined to the camera at its first glossy surface only, the light tracer's image of
+    // the floor is the light of the light's mirror image, which Whitted finds exactly.
+    const auto check = [](const auto& floor) {
+        const Camera<float> camera = test::floor_camera();
+        constexpr int size = 8;
+        const RenderConfig config{.width = size, .height = size, .spp = 1, .threads = 2, .seed = 3, .progress = false};
+        const auto with_mirror = test::floor_by_mirror(floor);
+        const auto with_image = test::floor_by_image(floor);
+        const Film traced = render(camera, LightTracer(with_mirror, {.paths = 4000000, .max_diffuse_bounces = 0}), config);
+        const RenderConfig exact_config{.width = size, .height = size, .spp = 64, .threads = 2, .seed = 3, .progress = false};
+        const Film exact = render(camera, Whitted(with_image), exact_config);
+        double traced_sum = 0, exact_sum = 0, squares = 0;
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                traced_sum += traced.at(x, y).x + traced.at(x, y).y;
+                exact_sum += exact.at(x, y).x + exact.at(x, y).y;
+                squares += std::pow((traced.at(x, y).x + traced.at(x, y).y) / (exact.at(x, y).x + exact.at(x, y).y) - 1, 2);
+            }
+        MESSAGE("relative RMS per pixel ", std::sqrt(squares / (size * size)));
+        CHECK(traced_sum / exact_sum == doctest::Approx(1.0).epsilon(0.01));
+    };
+    check(RoughConductor<float, ComplexIor<float>>{.fresnel = {.eta = {0.2f, 0.9f, 1.1f}, .k = {3.9f, 2.4f, 2.2f}}, .roughness = 0.5f});
+    check(Phong<float>{.diffuse = {.color = {0.3f, 0.2f, 0.1f}}, .specular = Rgb<float>(0.5f), .exponent = 10});
+    check(CoatedDiffuse<float>({.color = {0.6f, 0.3f, 0.2f}}, {.ior = 1.5f, .roughness = 0.4f}));
 }

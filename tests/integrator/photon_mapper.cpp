@@ -3,6 +3,7 @@
 #include <prism/prism.hpp>
 
 #include "../furnace.hpp"
+#include "../glossy_scenes.hpp"
 
 #include <doctest/doctest.h>
 
@@ -208,4 +209,38 @@ TEST_CASE("the photon mapper in the two-lobe furnace: every path, read directly 
         MESSAGE("mean ", stats.mean, " (closed form ", test::CoatedFurnace::all, ")");
         CHECK(stats.mean == doctest::Approx(test::CoatedFurnace::all).epsilon(0.01));
     }
+}
+
+TEST_CASE("the photon mapper on glossy surfaces: the sky furnace by shadow rays, and a caustic through a mirror weighed by the floor's BSDF")
+{
+    // Under a uniform sky a convex glossy sphere reads its lobe's albedo, all of it direct
+    // light (the final gather's rays escape to a sky that lights nothing after a bounce).
+    const RoughConductor<float> metal{.fresnel = {.kr = Rgb<float>(0.9f)}, .roughness = 0.5f};
+    const auto sky = test::glossy_furnace(metal);
+    const PhotonMapper sky_mapper(sky, {.tracing = {.global_photons = 20000, .caustic_photons = 0}, .gather_rays = 8, .area_light_grid = 8});
+    for (const double theta : {0.0, 60.0}) {
+        Pcg32 rng(3, 3);
+        double sum = 0;
+        for (int i = 0; i < 4000; ++i) sum += sky_mapper.radiance(test::furnace_ray<float>(theta), rng).x;
+        CAPTURE(theta);
+        CHECK(sum / 4000 == doctest::Approx(test::furnace_albedo(metal, theta)).epsilon(0.01));
+    }
+    // The caustic map's estimate on a glossy floor weighs each photon by the BSDF
+    // between its arrival and the camera: the mirror image's light, as Whitted finds it.
+    const Phong<float> floor{.diffuse = {.color = {0.3f, 0.2f, 0.1f}}, .specular = Rgb<float>(0.5f), .exponent = 6};
+    const auto with_mirror = test::floor_by_mirror(floor);
+    const auto with_image = test::floor_by_image(floor);
+    const PhotonMapper mapper(with_mirror,
+                              {.tracing = {.global_photons = 0, .caustic_photons = 2000000}, .caustic = {.radius = 0.03f}, .gather_rays = 0});
+    const Whitted exact(with_image);
+    double caustic = 0, expected = 0;
+    for (const float x : {-0.8f, -0.4f, 0.0f, 0.4f})
+        for (const float z : {-0.3f, 0.3f}) {
+            const Vec3<float> eye{-0.2f, 2.5f, 0.2f};
+            const Ray<float> ray{eye, normalize(Vec3<float>{x, 0, z} - eye)};
+            Pcg32 rng(1, 1);
+            caustic += mapper.radiance_parts(ray, rng).caustic.x;
+            expected += exact.radiance(ray).x;
+        }
+    CHECK(caustic / expected == doctest::Approx(1).epsilon(0.03));
 }

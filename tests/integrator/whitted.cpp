@@ -3,6 +3,7 @@
 #include <prism/prism.hpp>
 
 #include "../furnace.hpp"
+#include "../glossy_scenes.hpp"
 
 #include <doctest/doctest.h>
 
@@ -229,4 +230,45 @@ TEST_CASE("Whitted in the two-lobe furnace: direct light on the base and the coa
     const test::SampleStats stats = test::coated_furnace_samples([&](const Ray<float>& ray, Pcg32&) { return whitted.radiance(ray); }, 2000);
     CHECK(stats.mean == doctest::Approx(test::CoatedFurnace::whitted).epsilon(0.01));
     CHECK(stats.largest <= 1.001 * test::CoatedFurnace::whitted); // no sample is random: every one reads the same
+}
+
+TEST_CASE("Whitted lights a glossy floor by its BSDF toward the light: L = f(wo, wi) I cos / r^2, for each glossy material")
+{
+    const auto check = [](const auto& floor) {
+        const auto scene = test::floor_by_image(floor);
+        const Whitted whitted(scene);
+        const auto lobe = floor.glossy({});
+        const LocalFrame<float> frame = LocalFrame<float>::about({0, 1, 0});
+        for (const float x : {-0.9f, -0.3f, 0.2f, 0.5f}) {
+            const Vec3<float> eye{-0.2f, 2.5f, 0.3f}, p{x, 0, 0.1f};
+            const Ray<float> ray{eye, normalize(p - eye)};
+            const Vec3<float> to_light = test::mirror_image - p;
+            const float r2 = dot(to_light, to_light), cos = to_light.y / std::sqrt(r2);
+            const Rgb<float> expected =
+                lobe.f(frame.to_local(-ray.direction), frame.to_local(to_light / std::sqrt(r2)), Transport::radiance) * (4.0f * cos / r2);
+            const Rgb<float> got = whitted.radiance(ray);
+            CAPTURE(x);
+            for (int c = 0; c < 3; ++c) CHECK(got[c] == doctest::Approx(expected[c]).epsilon(1e-4));
+        }
+    };
+    check(RoughConductor<float, ComplexIor<float>>{.fresnel = {.eta = {0.2f, 0.9f, 1.1f}, .k = {3.9f, 2.4f, 2.2f}}, .roughness = {0.3f, 0.6f}});
+    check(Phong<float>{.diffuse = {.color = {0.3f, 0.2f, 0.1f}}, .specular = Rgb<float>(0.5f), .exponent = 20});
+    check(CoatedDiffuse<float>({.color = {0.6f, 0.3f, 0.2f}}, {.ior = 1.5f, .roughness = 0.3f}));
+}
+
+TEST_CASE("Whitted follows a glossy lobe's mirror direction with the lobe's albedo there")
+{
+    // A rough metal floor under a uniform white background of 1, its light dark: what the
+    // floor reflects is its mirror ray's background times the lobe's albedo toward the
+    // viewer (the same albedo the path tracer's glossy furnace reads).
+    const RoughConductor<double> metal{.fresnel = {.kr = Rgb<double>(0.9)}, .roughness = 0.3};
+    Scene scene{Lights{PointLight<double>{.position = {0, 1, 0}, .intensity = Rgb<double>(0)}}, Object{Plane<double>({0, 1, 0}, 0), metal}};
+    scene.background = Rgb<double>(1);
+    const Whitted whitted(scene);
+    for (const double theta : {10.0, 50.0, 80.0}) {
+        const Vec3<double> w = test::polar(theta, 0);
+        const Ray<double> ray{{w.x, w.z, w.y}, {-w.x, -w.z, -w.y}};
+        CAPTURE(theta);
+        CHECK(whitted.radiance(ray).x == doctest::Approx(test::albedo_by_quadrature(metal.glossy({}), w)).epsilon(0.01));
+    }
 }

@@ -130,7 +130,10 @@ public:
                     importance *= shading_cosine(c.facing_shading(), c.facing_normal(), -at.direction) / -dot(at.direction, c.facing_normal());
                     if (!(importance < infinity<T>)) return go_on;
                 }
-                const Rgb<float> splat(power * diffuse_response(material, c).brdf() * v * importance);
+                Rgb<T> f;
+                if constexpr (has_glossy<M>) f = glossy_at(material, c, at.direction).f(to_camera, Transport::importance);
+                else f = diffuse_response(material, c).brdf();
+                const Rgb<float> splat(power * f * v * importance);
                 std::array<ExactSum, 3> add{};
                 for (int k = 0; k < 3; ++k) {
                     const double value = double(splat[k]) * scale;

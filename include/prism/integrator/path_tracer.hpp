@@ -93,20 +93,40 @@ public:
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         const Crossing<T>& c = at.crossing();
                         const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
-                        Rgb<T> irradiance{T(0)};
-                        scene_->for_each_light([&]<class L>(const L& light) {
-                            if constexpr (!is_delta_light<L>) {
-                                if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
-                            }
-                            for_each_sample_arriving<ShadowsThroughGlass::blocked>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
-                                // An area light's sample shares its path with the diffuse
-                                // bounce (cos / pi) that finds it where the walk goes on.
-                                const bool shared = !s.delta() && go_on;
-                                const T w = shared ? light_sample_weight(s.pdf, cos / pi<T>) : T(1);
-                                irradiance += w * v * s.irradiance * cos;
+                        if constexpr (has_glossy<M>) {
+                            // Each light sample weighed by the lobe toward it; an area light's shares
+                            // its path with the lobe's own draw (its density there) as a diffuse one's.
+                            const auto lobe = glossy_at(material, c, at.direction);
+                            Rgb<T> reflected{T(0)};
+                            scene_->for_each_light([&]<class L>(const L& light) {
+                                if constexpr (!is_delta_light<L>) {
+                                    if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
+                                }
+                                for_each_sample_arriving<ShadowsThroughGlass::blocked>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                                    const Rgb<T> f = lobe.f(s.wi, Transport::radiance);
+                                    if (!(max_component(f) > T(0))) return;
+                                    const bool shared = !s.delta() && go_on;
+                                    const T w = shared ? light_sample_weight(s.pdf, lobe.pdf(s.wi)) : T(1);
+                                    reflected += (w * cos) * f * v * s.irradiance;
+                                });
                             });
-                        });
-                        sum += at.power * diffuse_response(material, c).brdf() * irradiance;
+                            sum += at.power * reflected;
+                        } else {
+                            Rgb<T> irradiance{T(0)};
+                            scene_->for_each_light([&]<class L>(const L& light) {
+                                if constexpr (!is_delta_light<L>) {
+                                    if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
+                                }
+                                for_each_sample_arriving<ShadowsThroughGlass::blocked>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                                    // An area light's sample shares its path with the diffuse
+                                    // bounce (cos / pi) that finds it where the walk goes on.
+                                    const bool shared = !s.delta() && go_on;
+                                    const T w = shared ? light_sample_weight(s.pdf, cos / pi<T>) : T(1);
+                                    irradiance += w * v * s.irradiance * cos;
+                                });
+                            });
+                            sum += at.power * diffuse_response(material, c).brdf() * irradiance;
+                        }
                         return go_on;
                     },
                     [&](const WalkEscape<T>& out) {

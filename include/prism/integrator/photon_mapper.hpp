@@ -277,6 +277,23 @@ private:
             }
             else radiance.indirect = brdf * Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
         }
+        if constexpr (has_glossy<M>) {
+            const auto lobe = glossy_at(material, hit, normalize(d));
+            if (!lobe.smooth()) {
+                // As for a diffuse lobe, each part weighed by the lobe toward where its light arrives from.
+                const Vec3<float> p(hit.point), nf(n);
+                radiance.direct += direct(hit, rng, [&](const Vec3<T>& wi) { return lobe.f(wi, Transport::radiance); });
+                radiance.caustic = Rgb<T>(maps_.caustic.radiance(p, nf, config_.caustic, reflected_by(lobe)));
+                radiance.indirect = config_.gather_rays > 0 ? gather_glossy(lobe, hit, rng, media.empty())
+                                                            : Rgb<T>(maps_.global.radiance(p, nf, config_.global, reflected_by(lobe)));
+            }
+            // The lobe's delta part (a mirror, a smooth coat's reflection): one draw, followed where it is a delta.
+            if (depth < config_.max_depth) {
+                const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
+                if (s && s->delta && max_component(weight * s->weight) > config_.min_weight)
+                    radiance += s->weight * trace(spawn_ray(hit.point, hit.error, hit.normal, s->wi), depth + 1, weight * s->weight, rng, wavelength, media);
+            }
+        }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
                 const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
@@ -308,6 +325,14 @@ private:
     /// say about visibility where they agree.
     [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, Pcg32& rng) const noexcept
     {
+        return direct(hit, rng, [](const Vec3<T>&) { return Rgb<T>(T(1)); });
+    }
+
+    /// The same, each light sample arriving from wi weighed by `weigh(wi)` (a glossy
+    /// lobe's BSDF: then the radiance it reflects).
+    template <class Weigh>
+    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, Pcg32& rng, Weigh&& weigh) const noexcept
+    {
         Rgb<T> irradiance{T(0)};
         const LightSampling sampling{&rng, config_.area_light_grid};
         if (const std::optional<bool> visible = visibility_from_photons(hit.point, hit.facing_normal())) {
@@ -316,13 +341,13 @@ private:
             scene_->for_each_light([&](const auto& light) {
                 for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
                     const T cos = shading_cosine(n_shading, n, s.wi);
-                    if (cos > T(0)) irradiance += s.irradiance * cos;
+                    if (cos > T(0)) irradiance += weigh(s.wi) * s.irradiance * cos;
                 });
             });
             return irradiance;
         }
         for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, sampling,
-                                                              [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
+                                                              [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += weigh(s.wi) * v * s.irradiance * cos; });
         return irradiance;
     }
 
@@ -381,9 +406,7 @@ private:
         return gather_hemisphere<Gradients, T>(n, m, cells_n, rng, [&](const Vec3<T>& direction) {
             std::pair<Rgb<T>, T> found{Rgb<T>(T(0)), infinity<T>};
             const auto at_diffuse = [&]<class M>(const M& material, const WalkVertex<T>& at) {
-                const Crossing<T>& c = at.crossing();
-                const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
-                found.first += at.power * diffuse_response(material, c).brdf() * e;
+                found.first += global_radiance(material, at);
                 found.second = std::min(found.second, at.travelled);
                 // The diffuse lobe's light is counted; a delta lobe beside it (a coat) still
                 // mirrors what lies beyond.
@@ -396,6 +419,51 @@ private:
             else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse);
             return found;
         });
+    }
+
+    /// What a walk carries back from the global map at a vertex where it ends: its
+    /// power times a diffuse lobe's BRDF times the precomputed irradiance, or a glossy
+    /// lobe's radiance estimate toward where the walk came from.
+    template <class M>
+    [[nodiscard]] Rgb<T> global_radiance(const M& material, const WalkVertex<T>& at) const noexcept
+    {
+        const Crossing<T>& c = at.crossing();
+        if constexpr (has_glossy<M>) {
+            const auto lobe = glossy_at(material, c, at.direction);
+            return at.power * Rgb<T>(maps_.global.radiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal()), config_.global, reflected_by(lobe)));
+        } else {
+            const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
+            return at.power * diffuse_response(material, c).brdf() * e;
+        }
+    }
+
+    /// A photon's power weighed by a glossy lobe between its arrival and the viewer.
+    template <class Lobe>
+    [[nodiscard]] static auto reflected_by(const GlossyAt<Lobe>& lobe) noexcept
+    {
+        return [&lobe](const Photon& photon) { return Rgb<float>(lobe.f(Vec3<T>(photon.toward_source()), Transport::radiance)) * photon.power(); };
+    }
+
+    /// A glossy lobe's final gather: gather_rays draws from the lobe, each walked on
+    /// through mirrors and glass to the first surface with a non-delta lobe, where the
+    /// global map gives its radiance (global_radiance). Draws of the lobe's delta part
+    /// count nothing here: the caller follows that part.
+    template <class Lobe>
+    [[nodiscard]] Rgb<T> gather_glossy(const GlossyAt<Lobe>& lobe, const Crossing<T>& hit, Pcg32& rng, bool in_air) const
+    {
+        Rgb<T> sum{T(0)};
+        const auto at_vertex = [&]<class M>(const M& material, const WalkVertex<T>& at) {
+            sum += global_radiance(material, at);
+            return reflects<M> || transmits<M> ? Lobes::delta : Lobes::none;
+        };
+        for (int i = 0; i < config_.gather_rays; ++i) {
+            const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
+            if (!s || s->delta) continue;
+            const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, s->wi);
+            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, config_.max_depth, at_vertex);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, config_.max_depth, at_vertex);
+        }
+        return sum / T(config_.gather_rays);
     }
 
     const SceneT* scene_;

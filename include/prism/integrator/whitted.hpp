@@ -135,6 +135,20 @@ private:
 
         if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, d, jitter...);
 
+        if constexpr (has_glossy<M>) {
+            // A glossy lobe: the lights by its BSDF toward each, and what lies about the
+            // mirror direction by one mirror ray carrying the albedo of the lobe's part there
+            // (the lobe's spread and its light from everything but the lights are left out).
+            const auto lobe = glossy_at(material, hit, normalize(d));
+            const LightSampling sampling{stream_of(jitter...), config_.area_light_grid};
+            for_each_light_arriving(*scene_, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                radiance += lobe.f(s.wi, Transport::radiance) * v * s.irradiance * cos;
+            });
+            const Rgb<T> k = lobe.mirror_albedo();
+            if (depth < config_.max_depth && max_component(weight * k) > config_.min_weight)
+                radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, lobe.mirror()), depth + 1, weight * k, wavelength, media, jitter...);
+        }
+
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
                 // Reflected rays stay in the ray's media; refracted ones go on in `beyond`,

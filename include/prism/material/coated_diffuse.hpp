@@ -158,6 +158,9 @@ public:
         return LobeSample<T>{wi, f(wo, wi, mode) * (wi.z / density), density, false};
     }
 
+    /// The coat's albedo for wo, 1 - T(wo.z): what a Whitted mirror ray carries for it.
+    [[nodiscard]] Rgb<T> mirror_albedo(const Vec3<T>& wo) const noexcept { return Rgb<T>(T(1) - transmission_->at(wo.z)); }
+
 private:
     /// The coat's microfacet reflection (0 for a smooth coat: its mirror is a delta).
     [[nodiscard]] T coat_f(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept

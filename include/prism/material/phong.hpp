@@ -69,6 +69,24 @@ struct PhongLobe {
         return LobeSample<T>{wi, f(wo, wi, mode) * (wi.z / density), density, false};
     }
 
+    /// The glossy part's albedo for wo, ks (n + 2) / (n + 1) times the mean cosine of
+    /// its directions above the surface over 4 x 4 of them at the centres of a grid:
+    /// what a Whitted mirror ray carries for it.
+    [[nodiscard]] Rgb<T> mirror_albedo(const Vec3<T>& wo) const noexcept
+    {
+        const Vec3<T> mirror{-wo.x, -wo.y, wo.z};
+        const auto [s, t] = orthonormal_frame(mirror);
+        T sum = T(0);
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) {
+                const T cos_a = std::pow((T(i) + T(0.5)) / T(4), T(1) / (exponent + T(1)));
+                const T sin_a = std::sqrt(std::max(T(0), T(1) - cos_a * cos_a)), phi = T(2) * pi<T> * (T(j) + T(0.5)) / T(4);
+                const T z = dot(sin_a * std::cos(phi) * s + sin_a * std::sin(phi) * t + cos_a * mirror, Vec3<T>(T(0), T(0), T(1)));
+                sum += std::max(z, T(0));
+            }
+        return ks * ((exponent + T(2)) / (exponent + T(1)) * sum / T(16));
+    }
+
 private:
     /// cos^n of the angle between wi and wo's mirror, 0 beyond 90 degrees.
     [[nodiscard]] T lobe(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept

@@ -74,6 +74,18 @@ public:
         return LobeSample<T>{wi, fresnel_->reflectance(cos_om) * weight, pdf, false};
     }
 
+    /// The lobe's albedo for wo, F G(wo, wi) / G1(wo) averaged over 4 x 4 visible
+    /// normals at the centres of a grid: what a Whitted mirror ray carries for it.
+    [[nodiscard]] Rgb<T> mirror_albedo(const Vec3<T>& wo) const noexcept
+    {
+        if (smooth()) return fresnel_->reflectance(wo.z);
+        Rgb<T> sum{T(0)};
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+                if (const auto s = sample(wo, T(0), (T(i) + T(0.5)) / T(4), (T(j) + T(0.5)) / T(4))) sum += s->weight;
+        return sum / T(16);
+    }
+
 private:
     TrowbridgeReitz<T> distribution_;
     const Fresnel* fresnel_;

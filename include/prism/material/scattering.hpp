@@ -17,8 +17,10 @@
 #include <prism/spectrum/bands.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <optional>
+#include <type_traits>
 
 namespace prism {
 
@@ -329,13 +331,131 @@ constexpr void attenuate_shadow_ray(const M& material, const Crossings<typename 
     for (std::size_t k = 0; k < crossings.size(); ++k) light *= material.transmission_tint();
 }
 
+// Glossy lobes
+
+/// A glossy material's lobe at a surface point, for a path that arrived along a unit
+/// direction d: the lobe in the local frame about the shading normal facing d, and the
+/// true normal facing d. Directions are the world's; `wo` (toward the path's start, -d)
+/// is kept. A direction counts only where the shading and the true surface agree on
+/// which side of the surface it lies (so a shading normal never lets light through or
+/// around the surface: the usual side test).
+template <Bsdf Lobe>
+class GlossyAt {
+public:
+    /// The precision of the lobe.
+    using T = typename Lobe::scalar_type;
+
+    /// The lobe `lobe` at a point whose frame is `frame` (z: the shading normal facing
+    /// the arriving path), true normal `n_true` facing it, for a path arriving along d.
+    GlossyAt(const Lobe& lobe, const LocalFrame<T>& frame, const Vec3<T>& n_true, const Vec3<T>& d) noexcept
+        : lobe_(lobe), frame_(frame), n_true_(n_true), wo_(frame.to_local(-d))
+    {
+    }
+
+    /// Whether the lobe is a mirror or a clean interface (every sample a delta).
+    [[nodiscard]] bool smooth() const noexcept { return lobe_.smooth(); }
+
+    /// The BSDF for the path going on along the unit direction wi (world), by `mode`.
+    [[nodiscard]] Rgb<T> f(const Vec3<T>& wi, Transport mode) const noexcept
+    {
+        const Vec3<T> local = frame_.to_local(wi);
+        if (!agree(wi, local)) return Rgb<T>(T(0));
+        return lobe_.f(wo_, local, mode);
+    }
+
+    /// The density with which sample() draws the unit direction wi (world).
+    [[nodiscard]] T pdf(const Vec3<T>& wi) const noexcept
+    {
+        const Vec3<T> local = frame_.to_local(wi);
+        return agree(wi, local) ? lobe_.pdf(wo_, local) : T(0);
+    }
+
+    /// The albedo of the lobe's part about the mirror direction of the arriving path,
+    /// which Whitted follows as one mirror ray (a lobe's `mirror_albedo(wo)`; none for a
+    /// lobe without one).
+    [[nodiscard]] Rgb<T> mirror_albedo() const noexcept
+    {
+        if constexpr (requires { { lobe_.mirror_albedo(wo_) } -> std::same_as<Rgb<T>>; }) return wo_.z > T(0) ? lobe_.mirror_albedo(wo_) : Rgb<T>(T(0));
+        else return Rgb<T>(T(0));
+    }
+
+    /// The lobe's albedo toward the arriving path, the mean weight of 4 x 4 draws at the
+    /// centres of a grid (each its own choice among the lobe's parts): a surface layer's
+    /// albedo, not an estimator's.
+    [[nodiscard]] Rgb<T> albedo() const noexcept
+    {
+        Rgb<T> sum{T(0)};
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+                if (const auto s = lobe_.sample(wo_, (T(4 * i + j) + T(0.5)) / T(16), (T(i) + T(0.5)) / T(4), (T(j) + T(0.5)) / T(4), Transport::radiance))
+                    sum += s->weight;
+        return sum / T(16);
+    }
+
+    /// The unit mirror direction of the arriving path about the shading normal (world).
+    [[nodiscard]] Vec3<T> mirror() const noexcept { return frame_.to_world({-wo_.x, -wo_.y, wo_.z}); }
+
+    /// The absolute cosine of wi (world) with the shading normal.
+    [[nodiscard]] T cosine(const Vec3<T>& wi) const noexcept { return std::abs(dot(wi, frame_.n)); }
+
+    /// A next direction drawn from the lobe (world), with the lobe's weight and density;
+    /// nothing where the lobe draws none or the draw fails the side test.
+    [[nodiscard]] std::optional<LobeSample<T>> sample(Pcg32& rng, Transport mode) const noexcept
+    {
+        const T u0 = rng.uniform<T>(), u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
+        std::optional<LobeSample<T>> s = lobe_.sample(wo_, u0, u1, u2, mode);
+        if (!s) return std::nullopt;
+        const Vec3<T> wi = frame_.to_world(s->wi);
+        if (!agree(wi, s->wi)) return std::nullopt;
+        s->wi = wi;
+        return s;
+    }
+
+private:
+    /// Whether the true surface puts world wi on the side the shading frame puts it (local).
+    [[nodiscard]] bool agree(const Vec3<T>& wi, const Vec3<T>& local) const noexcept
+    {
+        const T g = dot(wi, n_true_);
+        return local.z > T(0) ? g > T(0) : local.z < T(0) && g < T(0);
+    }
+
+    Lobe lobe_;
+    LocalFrame<T> frame_;
+    Vec3<T> n_true_;
+    Vec3<T> wo_;
+};
+
+/// A glossy material's lobe at `hit` for a path arriving along the unit direction d
+/// (eta: n beyond / n on the arriving side, for an interface).
+template <Material M>
+    requires(has_glossy<M>)
+[[nodiscard]] auto glossy_at(const M& material, const Crossing<typename M::scalar_type>& hit, const Vec3<typename M::scalar_type>& d,
+                             typename M::scalar_type eta = 1) noexcept
+{
+    using T = typename M::scalar_type;
+    const auto lobe = material.glossy(GlossyQuery<T>{hit.point, hit.uv, hit.entering, eta});
+    return GlossyAt<std::remove_cvref_t<decltype(lobe)>>(lobe, LocalFrame<T>::about(hit.facing_shading()), hit.facing_normal(), d);
+}
+
+/// Whether a path meeting `material` at `hit` along d sees a non-delta lobe there (a
+/// diffuse one, or a glossy one that is not a mirror): where lights are sampled and
+/// photons stored.
+template <Material M>
+[[nodiscard]] bool scatters_smoothly(const M& material, const Crossing<typename M::scalar_type>& hit, const Vec3<typename M::scalar_type>& d) noexcept
+{
+    if constexpr (has_diffuse<M>) return true;
+    else if constexpr (has_glossy<M>) return !glossy_at(material, hit, d).smooth();
+    else return (void)material, (void)hit, (void)d, false;
+}
+
 // Photons
 
 /// A photon's next direction after scattering, and whether the bounce was diffuse.
 template <Scalar T>
 struct PhotonBounce {
     Vec3<T> direction; ///< the new direction
-    bool diffuse; ///< whether the bounce was off the diffuse lobe
+    bool diffuse; ///< whether the bounce was off a non-delta lobe (diffuse or glossy)
+    T pdf = T(0); ///< a glossy lobe's density for the direction (0 for the others: a diffuse one's is cos / pi)
 };
 
 /// The lobes a scattering may take: none (the path ends), the delta ones only (a caustic
@@ -360,7 +480,9 @@ enum class Lobes { none, delta, all };
 /// sent into the solid is absorbed; a photon (Transport::importance) also takes Veach's
 /// correction |d.ns| |w.ng| / (|d.ng| |w.ns|) and is absorbed where it arrives behind
 /// the shading normal. A camera path (Transport::radiance) scatters by the same rules
-/// without them.
+/// without them. A glossy lobe draws one direction (its parts chosen inside it) and the
+/// photon survives with the probability of the draw's largest channel (at most 1),
+/// carrying the draw's weight over it; its density is the bounce's `pdf`.
 template <Transport Mode = Transport::importance, Material M>
 [[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
                                                                                    const Crossing<typename M::scalar_type>& hit,
@@ -416,6 +538,28 @@ template <Transport Mode = Transport::importance, Material M>
     } else if constexpr (M::has_diffuse) {
         if (lobes != Lobes::all || !russian_roulette(power, diffuse_response(material, hit).photon_reflectance(), rng)) return std::nullopt;
         return diffuse_direction();
+    } else if constexpr (has_glossy<M>) {
+        // One draw from the lobe (its parts chosen inside it), then Russian roulette by
+        // the draw's weight: a survivor carries weight / p, at most 1 per channel where
+        // the weight is below 1.
+        const auto at = glossy_at(material, hit, d);
+        if (lobes != Lobes::all && !at.smooth()) return std::nullopt;
+        const std::optional<LobeSample<T>> s = at.sample(rng, Mode);
+        if (!s) return std::nullopt;
+        Rgb<T> weight = s->weight;
+        if constexpr (Mode == Transport::importance) {
+            if (!s->delta && !hit.shades_flat()) {
+                // Veach's correction for the shading normal, as for a diffuse bounce.
+                const T correction = (std::abs(dot(d, hit.shading)) * std::abs(dot(s->wi, hit.normal))) /
+                                     (std::abs(dot(d, hit.normal)) * std::abs(dot(s->wi, hit.shading)));
+                if (!(correction < infinity<T>)) return std::nullopt;
+                weight *= correction;
+            }
+        }
+        const T p = std::min(T(1), max_component(weight));
+        if (!(p > T(0)) || !(rng.uniform<T>() < p)) return std::nullopt;
+        power *= weight / p;
+        return PhotonBounce<T>{s->wi, !s->delta, s->pdf};
     } else {
         const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
         const SpecularSplit<T> split = delta_split(material, d, n_delta, hit.entering, hit.point, wavelength_nm, outside_index);

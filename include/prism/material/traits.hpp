@@ -163,6 +163,7 @@ concept Material = requires(const M& material) {
 } && (M::has_diffuse || M::reflects || M::transmits || detail::declares_glossy<M>() || detail::declares_emission<M>()) // a material does at least one thing
   && (!detail::declares_emission<M>() || Emission<M>) // emits promises emitted_radiance() -> Rgb<T> and two_sided
   && (!detail::declares_glossy<M>() || GlossyLobe<M>) // has_glossy promises glossy(GlossyQuery) -> a Bsdf of the same scalar type
+  && (!detail::declares_glossy<M>() || (!M::has_diffuse && !M::reflects && !M::transmits)) // a glossy lobe holds all of its material's scattering
   && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) or diffuse(p, uv) -> DiffuseResponse<T>
   && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i or query) -> Rgb<T>
   && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta or query), reflection_tint(), transmission_tint()

@@ -81,6 +81,22 @@ public:
     /// no photon was found).
     [[nodiscard]] PrecomputedIrradiance estimate(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator) const noexcept
     {
+        return estimate(p, n, estimator, [](const Photon& photon) { return photon.power(); });
+    }
+
+    /// Reflected radiance at p on a surface with unit normal n (Jensen 1996, eq. 6): as
+    /// irradiance(), each photon's power weighed by the BSDF between its direction and
+    /// the viewer's, `reflected(photon)` (its power times f): a glossy surface's estimate.
+    template <class Reflected>
+    [[nodiscard]] Rgb<float> radiance(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator, Reflected&& reflected) const noexcept
+    {
+        return estimate(p, n, estimator, reflected).irradiance;
+    }
+
+    /// The density estimate of `value(photon)` over the disk (estimate() with the photons' powers).
+    template <class Value>
+    [[nodiscard]] PrecomputedIrradiance estimate(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator, Value&& value) const noexcept
+    {
         Rgb<float> sum(0.0f);
         if (!tree_ || photons_.empty() || !(estimator.radius > 0.0f)) return {sum, 0.0f};
         const detail::FilterWeight weight(estimator.filter);
@@ -89,7 +105,7 @@ public:
             if ((photon.flags & estimator.excluded) != 0 || !photon.faces(n, estimator.surface_cos)) return;
             const float height = dot(photon.position - p, n);
             if (height * height > estimator.max_height_ratio * estimator.max_height_ratio * r2) return;
-            sum += photon.power() * weight(d2, r2);
+            sum += value(photon) * weight(d2, r2);
         };
         float r2 = estimator.radius * estimator.radius;
         if (estimator.k == 0) {

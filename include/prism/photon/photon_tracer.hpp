@@ -228,7 +228,7 @@ private:
             const auto hit = scene_.closest_hit(through, {T(0), infinity<T>});
             if (!hit) return;
             const Crossing<T>& c = hit->crossing;
-            const bool diffuse = scene_.visit_material(*hit, []<class M>(const M&) { return has_diffuse<M>; });
+            const bool diffuse = scene_.visit_material(*hit, [&]<class M>(const M& material) { return scatters_smoothly(material, c, d); });
             if (diffuse) out.push_back(photon(c, Rgb<T>(T(0)), d, Photon::shadow));
             through = spawn_ray(c.point, c.error, c.normal, d);
         }

@@ -17,7 +17,7 @@ namespace prism {
 /// The first surface a camera ray meets.
 template <Scalar T>
 struct SurfaceSample {
-    Rgb<T> albedo;  ///< a diffuse lobe's reflectance there; 1 for a surface with delta lobes only (glass, mirrors)
+    Rgb<T> albedo;  ///< a diffuse lobe's reflectance there, a glossy one's albedo toward the camera (GlossyAt::albedo); 1 for a surface with delta lobes only (glass, mirrors)
     Vec3<T> normal; ///< the shading normal, facing the ray
     T distance;     ///< the path's length from the camera's pinhole (along a curved ray in graded air)
 };
@@ -35,6 +35,7 @@ template <class SceneT, class Air>
     if (!hit) return std::nullopt;
     const Rgb<T> albedo = scene.visit_material(*hit, [&]<class M>(const M& material) {
         if constexpr (has_diffuse<M>) return diffuse_response(material, hit->crossing).albedo;
+        else if constexpr (has_glossy<M>) return glossy_at(material, hit->crossing, normalize(segment.direction)).albedo();
         else return Rgb<T>(T(1));
     });
     return SurfaceSample<T>{albedo, hit->crossing.facing_shading(), path};

@@ -3,7 +3,7 @@
 // light tracer and the path tracer (a camera path carries importance by the same rules).
 //
 // From a ray carrying `power`, hit by hit: the medium the path crossed attenuates it;
-// at a diffuse surface the caller's `on_diffuse` sees the vertex (and may stop the walk);
+// at a diffuse or glossy surface the caller's `on_diffuse` sees the vertex (and may stop the walk);
 // false interfaces (inside a medium of higher priority) are passed; a white path meeting
 // a dispersive interface takes one wavelength band at random; then scatter_photon picks
 // the next direction by Russian roulette (material/scattering.hpp). In the air the path
@@ -28,20 +28,21 @@
 
 namespace prism {
 
-/// A walk at a diffuse surface, before it scatters there.
+/// A walk at a surface with a non-delta lobe (diffuse, or glossy and not a mirror),
+/// before it scatters there.
 template <Scalar T>
 struct WalkVertex {
     const Hit<T>& hit; ///< the surface the walk met
     const Vec3<T>& direction; ///< unit, arriving
     const Rgb<T>& power;      ///< what the path carries here, after the medium it crossed
     bool direct;              ///< nothing scattered it yet (a photon's first hit)
-    int diffuse_bounces;      ///< diffuse scatterings so far (0: every scattering so far was specular)
+    int diffuse_bounces;      ///< non-delta (diffuse or glossy) scatterings so far (0: every scattering so far was specular)
     bool first_specular;      ///< the first scattering was specular (the vertex next to the path's start: L S ...)
     T travelled;              ///< the path's length so far
     T wavelength;             ///< 0 while white
     const MediumStack& media; ///< the transmissive objects the path is inside of
     const Vec3<T>& last_point; ///< where the path last scattered (or started)
-    T last_pdf;               ///< the solid-angle density of a diffuse lobe's last scattering, cos / pi; 0 after a delta one or at the start
+    T last_pdf;               ///< the solid-angle density of the last scattering's non-delta lobe (a diffuse one's cos / pi); 0 after a delta one or at the start
     bool last;                ///< the walk ends after this surface (its depth limit): nothing it scatters is followed
 
     /// Where the walk met the surface, with its normal and side.
@@ -55,7 +56,7 @@ template <Scalar T>
 struct WalkEscape {
     const Ray<T>& ray;        ///< the segment that left the scene, its direction the way it went
     const Rgb<T>& power;      ///< what the path carries
-    int diffuse_bounces;      ///< diffuse scatterings on the way (0: every scattering was specular)
+    int diffuse_bounces;      ///< non-delta (diffuse or glossy) scatterings on the way (0: every scattering was specular)
     bool first_specular;      ///< the first scattering was specular (the vertex next to the path's start)
     T last_pdf;               ///< as WalkVertex's: the last scattering's diffuse density, 0 after a delta one
 
@@ -82,7 +83,8 @@ struct IgnoreEmitters {
 };
 
 /// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
-/// on_diffuse(material, WalkVertex) is called at every diffuse surface and returns the
+/// on_diffuse(material, WalkVertex) is called at every surface with a non-delta lobe
+/// (diffuse, or glossy and not a mirror: scatters_smoothly) and returns the
 /// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
 /// there); on_escape(WalkEscape) when the path leaves the scene; on_emitter(material,
 /// WalkVertex) where it meets a surface that emits (an area light; the walk scatters there
@@ -121,11 +123,12 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             const bool last = bounce == max_bounces;
             if constexpr (emits<M>)
                 on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last});
-            if constexpr (!has_diffuse<M> && !reflects<M> && !transmits<M>) {
+            if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
                 return Next::absorbed; // a lamp that only emits
             } else {
             Lobes lobes = Lobes::all;
-            if constexpr (has_diffuse<M>) {
+            // (A glossy lobe that is a mirror has no vertex of its own.)
+            if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
                 const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
                                                                       last_point, last_pdf, last});
                 if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
@@ -161,7 +164,8 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             if (!next) return Next::absorbed;
             ray = spawn_ray(c.point, c.error, c.normal, next->direction);
             last_point = c.point;
-            last_pdf = next->diffuse ? std::max(dot(next->direction, c.facing_shading()), T(0)) / pi<T> : T(0);
+            if constexpr (has_glossy<M>) last_pdf = next->pdf;
+            else last_pdf = next->diffuse ? std::max(dot(next->direction, c.facing_shading()), T(0)) / pi<T> : T(0);
             if (next->diffuse) ++diffuse_bounces;
             if (direct) first_specular = !next->diffuse;
             if constexpr (transmits<M>) {
