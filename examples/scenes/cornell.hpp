@@ -103,4 +103,22 @@ auto cornell_area_scene()
     };
 }
 
+/// The Cornell box under its ceiling light with glossy spheres: rough gold (measured
+/// index, roughness 0.3), red plastic under a smooth clear coat, and a blue glossy
+/// sphere by the modified Phong model (the classic photon-mapping test surface).
+template <prism::Scalar T>
+auto cornell_glossy_scene()
+{
+    using namespace prism;
+    return Scene{
+        Lights{},
+        cornell_walls<T>(),
+        cornell_ceiling_light<T>(),
+        Object{Sphere<T>({T(1.55), T(1.0), T(-3.5)}, T(1)), rough_metal<T>(metals::gold, Roughness<T>(T(0.3)))},
+        Object{Sphere<T>({T(3.95), T(0.85), T(-2.2)}, T(0.85)), CoatedDiffuse<T>({.color = {T(0.7), T(0.08), T(0.06)}}, {.ior = T(1.5), .roughness = T(0)})},
+        Object{Sphere<T>({T(2.9), T(0.6), T(-4.6)}, T(0.6)),
+               Phong<T>{.diffuse = {.color = {T(0.05), T(0.12), T(0.45)}}, .specular = Rgb<T>(T(0.45)), .exponent = T(60)}},
+    };
+}
+
 } // namespace scenes

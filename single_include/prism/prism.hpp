@@ -5953,6 +5953,96 @@ inline constexpr bool has_own_shadow = requires(const L& light, const Rgb<typena
 
 } // namespace prism
 
+// ---- prism/material/bsdf.hpp ----
+// The vocabulary of a glossy lobe: a BSDF with evaluation, sampling and density, in the
+// local frame of a surface point (z along the shading normal, on the side light
+// arrives from). A material with `has_glossy` hands one out per point (GlossyLobe in
+// material/traits.hpp); the integrators reach it only through material/scattering.hpp.
+
+
+#include <algorithm>
+#include <cmath>
+#include <concepts>
+#include <optional>
+
+namespace prism {
+
+/// What a path carries: light from the lights (a photon: importance transport, whose
+/// scattering at a shading normal takes Veach's adjoint correction, and whose
+/// refraction does not scale by 1 / eta^2), or importance from the camera (a camera
+/// path: radiance transport).
+enum class Transport { importance, radiance };
+
+/// A surface point's orthonormal frame: `n` the normal, `s` and `t` the tangents
+/// (the directions of a lobe's two roughnesses).
+template <Scalar T>
+struct LocalFrame {
+    Vec3<T> s; ///< first tangent
+    Vec3<T> t; ///< second tangent
+    Vec3<T> n; ///< normal (local z)
+
+    /// The frame about unit n with tangents from orthonormal_frame (any shape without
+    /// its own tangents: an anisotropic lobe's direction is then arbitrary but fixed).
+    [[nodiscard]] static LocalFrame about(const Vec3<T>& n) noexcept
+    {
+        const auto [s, t] = orthonormal_frame(n);
+        return {s, t, n};
+    }
+
+    /// A world vector in the frame's coordinates.
+    [[nodiscard]] constexpr Vec3<T> to_local(const Vec3<T>& v) const noexcept { return {dot(v, s), dot(v, t), dot(v, n)}; }
+    /// A vector in the frame's coordinates, back in the world's.
+    [[nodiscard]] constexpr Vec3<T> to_world(const Vec3<T>& v) const noexcept { return v.x * s + v.y * t + v.z * n; }
+};
+
+/// A direction a lobe drew for the outgoing direction wo, in the local frame.
+template <Scalar T>
+struct LobeSample {
+    Vec3<T> wi;    ///< the unit direction drawn (wi.z < 0: through the surface)
+    Rgb<T> weight; ///< f(wo, wi) |wi.z| / pdf; for a delta (a smooth surface's mirror or refraction), what it lets through over the probability of drawing it
+    T pdf;         ///< the solid-angle density it was drawn with (over every part of the lobe); 0 for a delta
+    bool delta;    ///< drawn from a delta part: no density, never found by a light sample
+
+    /// Whether the direction goes through the surface.
+    [[nodiscard]] constexpr bool transmitted() const noexcept { return wi.z < T(0); }
+};
+
+/// The cosine-distributed direction about local z for the uniform numbers u1, u2
+/// (Malley's method), of density z / pi.
+template <Scalar T>
+[[nodiscard]] inline Vec3<T> cosine_direction(T u1, T u2) noexcept
+{
+    const T r = std::sqrt(u1), phi = T(2) * pi<T> * u2;
+    return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(T(0), T(1) - u1))};
+}
+
+/// What a glossy material is asked at a surface point: where (point and surface
+/// coordinates), and for an interface, the side light arrives from and the ratio of
+/// indices eta = n beyond / n on the arriving side.
+template <Scalar T>
+struct GlossyQuery {
+    Vec3<T> point; ///< the surface point
+    Vec2<T> uv;    ///< its surface coordinates (Crossing::uv)
+    bool entering = true; ///< the light (or the camera path) arrives from outside
+    T eta = T(1);  ///< n beyond / n arriving, for an interface (1 where nothing refracts)
+};
+
+/// A BSDF lobe in its local frame (directions unit, pointing away from the surface;
+/// wo the direction a path leaves toward, wi the one light arrives from):
+/// `f(wo, wi, mode)` its value (without the cosine), `pdf(wo, wi)` the density that
+/// `sample(wo, u_lobe, u1, u2, mode)` draws wi with (nothing where it draws none), and
+/// `smooth()`, whether it is a mirror or a clean interface (every sample a delta).
+/// For the transport modes, see Transport.
+template <class B>
+concept Bsdf = requires(const B& bsdf, const Vec3<typename B::scalar_type>& w, typename B::scalar_type u, Transport mode) {
+    { bsdf.f(w, w, mode) } -> std::same_as<Rgb<typename B::scalar_type>>;
+    { bsdf.pdf(w, w) } -> std::same_as<typename B::scalar_type>;
+    { bsdf.sample(w, u, u, u, mode) } -> std::same_as<std::optional<LobeSample<typename B::scalar_type>>>;
+    { bsdf.smooth() } -> std::convertible_to<bool>;
+};
+
+} // namespace prism
+
 // ---- prism/medium/medium.hpp ----
 // The Medium concept: how light fares while it travels through the inside of an object.
 //
@@ -5991,7 +6081,9 @@ concept Medium = requires(const X& medium, typename X::scalar_type distance) {
 //   reflects     a mirror (delta) reflection that is not a dielectric's DeltaReflection
 //   transmits    a dielectric interface: Fresnel-split delta reflection  DeltaTransmission
 //                and refraction into the medium() that fills it          InteriorMedium
-// and a fourth that only materials of area lights declare (the others emit nothing):
+// and two that a material declares only where it has them (the others have neither):
+//   has_glossy   a lobe with evaluation, sampling and density: rough     GlossyLobe
+//                metal, Phong, a coated surface (material/bsdf.hpp)
 //   emits        radiance leaving its surface: an area light             Emission
 // A scene whose materials never transmit compiles no refraction code at all. The
 // light transport over these capabilities (what a diffuse point reflects, how an
@@ -6098,7 +6190,23 @@ constexpr bool declares_emission() noexcept
     else return false;
 }
 
+template <class M>
+constexpr bool declares_glossy() noexcept
+{
+    if constexpr (requires { M::has_glossy; }) return bool(M::has_glossy);
+    else return false;
+}
+
 } // namespace detail
+
+/// A glossy lobe: `glossy(GlossyQuery)` gives the material's Bsdf at a surface point, in
+/// the point's local frame (material/bsdf.hpp). A material declares it with
+/// `has_glossy = true`; one that does not declare it has none.
+template <class M>
+concept GlossyLobe = requires(const M& material, const GlossyQuery<typename M::scalar_type>& query) {
+    requires Bsdf<std::remove_cvref_t<decltype(material.glossy(query))>>;
+    requires std::same_as<typename std::remove_cvref_t<decltype(material.glossy(query))>::scalar_type, typename M::scalar_type>;
+};
 
 /// A surface that emits light (an area light): `emitted_radiance()`, its radiance per
 /// channel, the same everywhere on it and in every direction of its front, and
@@ -6120,8 +6228,10 @@ concept Material = requires(const M& material) {
     { M::reflects } -> std::convertible_to<bool>;
     { M::transmits } -> std::convertible_to<bool>;
     material.validate();
-} && (M::has_diffuse || M::reflects || M::transmits || detail::declares_emission<M>()) // a material does at least one thing
+} && (M::has_diffuse || M::reflects || M::transmits || detail::declares_glossy<M>() || detail::declares_emission<M>()) // a material does at least one thing
   && (!detail::declares_emission<M>() || Emission<M>) // emits promises emitted_radiance() -> Rgb<T> and two_sided
+  && (!detail::declares_glossy<M>() || GlossyLobe<M>) // has_glossy promises glossy(GlossyQuery) -> a Bsdf of the same scalar type
+  && (!detail::declares_glossy<M>() || (!M::has_diffuse && !M::reflects && !M::transmits)) // a glossy lobe holds all of its material's scattering
   && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) or diffuse(p, uv) -> DiffuseResponse<T>
   && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i or query) -> Rgb<T>
   && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta or query), reflection_tint(), transmission_tint()
@@ -6136,9 +6246,13 @@ concept Dispersive = requires(const M& material, typename M::scalar_type wavelen
     { material.refractive_index(wavelength_nm) } -> std::same_as<typename M::scalar_type>;
 };
 
-/// Purely specular: every scattered direction is a delta (no diffuse lobe).
+/// The material has a glossy lobe (GlossyLobe).
 template <Material M>
-inline constexpr bool is_delta = !M::has_diffuse && (M::reflects || M::transmits);
+inline constexpr bool has_glossy = detail::declares_glossy<M>();
+
+/// Purely specular: every scattered direction is a delta (no diffuse or glossy lobe).
+template <Material M>
+inline constexpr bool is_delta = !M::has_diffuse && !has_glossy<M> && (M::reflects || M::transmits);
 
 template <Material M>
 inline constexpr bool has_diffuse = M::has_diffuse;
@@ -6529,8 +6643,10 @@ private:
 
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <optional>
+#include <type_traits>
 
 namespace prism {
 
@@ -6841,18 +6957,149 @@ constexpr void attenuate_shadow_ray(const M& material, const Crossings<typename 
     for (std::size_t k = 0; k < crossings.size(); ++k) light *= material.transmission_tint();
 }
 
-// Photons
+// Glossy lobes
 
-/// What a path carries: light from the lights (a photon: importance transport, whose
-/// scattering at a shading normal takes Veach's adjoint correction), or importance from
-/// the camera (a camera path: radiance transport).
-enum class Transport { importance, radiance };
+/// A glossy material's lobe at a surface point, for a path that arrived along a unit
+/// direction d: the lobe in the local frame about the shading normal facing d, and the
+/// true normal facing d. Directions are the world's; `wo` (toward the path's start, -d)
+/// is kept. A direction counts only where the shading and the true surface agree on
+/// which side of the surface it lies (so a shading normal never lets light through or
+/// around the surface: the usual side test).
+template <Bsdf Lobe>
+class GlossyAt {
+public:
+    /// The precision of the lobe.
+    using T = typename Lobe::scalar_type;
+
+    /// The lobe `lobe` at a point whose frame is `frame` (z: the shading normal facing
+    /// the arriving path), true normal `n_true` facing it, for a path arriving along d.
+    GlossyAt(const Lobe& lobe, const LocalFrame<T>& frame, const Vec3<T>& n_true, const Vec3<T>& d) noexcept
+        : lobe_(lobe), frame_(frame), n_true_(n_true), wo_(frame.to_local(-d))
+    {
+    }
+
+    /// Whether the lobe is a mirror or a clean interface (every sample a delta).
+    [[nodiscard]] bool smooth() const noexcept { return lobe_.smooth(); }
+
+    /// The BSDF for the path going on along the unit direction wi (world), by `mode`.
+    [[nodiscard]] Rgb<T> f(const Vec3<T>& wi, Transport mode) const noexcept
+    {
+        const Vec3<T> local = frame_.to_local(wi);
+        if (!agree(wi, local)) return Rgb<T>(T(0));
+        return lobe_.f(wo_, local, mode);
+    }
+
+    /// The density with which sample() draws the unit direction wi (world).
+    [[nodiscard]] T pdf(const Vec3<T>& wi) const noexcept
+    {
+        const Vec3<T> local = frame_.to_local(wi);
+        return agree(wi, local) ? lobe_.pdf(wo_, local) : T(0);
+    }
+
+    /// The lobe's delta part, where it has one (a smooth surface's mirror, a smooth
+    /// coat's reflection: a lobe's `delta_part(wo)`): its direction (world) and its whole
+    /// weight, not divided by any probability of drawing it, for the estimators that
+    /// follow it every time (Whitted, the photon mapper's camera rays).
+    [[nodiscard]] std::optional<LobeSample<T>> delta_part() const noexcept
+    {
+        if constexpr (requires { { lobe_.delta_part(wo_) } -> std::same_as<std::optional<LobeSample<T>>>; }) {
+            std::optional<LobeSample<T>> s = wo_.z > T(0) ? lobe_.delta_part(wo_) : std::nullopt;
+            if (!s) return std::nullopt;
+            const Vec3<T> wi = frame_.to_world(s->wi);
+            if (!agree(wi, s->wi)) return std::nullopt;
+            s->wi = wi;
+            return s;
+        } else {
+            return std::nullopt;
+        }
+    }
+
+    /// The albedo of the lobe's part about the mirror direction of the arriving path,
+    /// which Whitted follows as one mirror ray (a lobe's `mirror_albedo(wo)`; none for a
+    /// lobe without one).
+    [[nodiscard]] Rgb<T> mirror_albedo() const noexcept
+    {
+        if constexpr (requires { { lobe_.mirror_albedo(wo_) } -> std::same_as<Rgb<T>>; }) return wo_.z > T(0) ? lobe_.mirror_albedo(wo_) : Rgb<T>(T(0));
+        else return Rgb<T>(T(0));
+    }
+
+    /// The lobe's albedo toward the arriving path, the mean weight of 4 x 4 draws at the
+    /// centres of a grid (each its own choice among the lobe's parts): a surface layer's
+    /// albedo, not an estimator's.
+    [[nodiscard]] Rgb<T> albedo() const noexcept
+    {
+        Rgb<T> sum{T(0)};
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+                if (const auto s = lobe_.sample(wo_, (T(4 * i + j) + T(0.5)) / T(16), (T(i) + T(0.5)) / T(4), (T(j) + T(0.5)) / T(4), Transport::radiance))
+                    sum += s->weight;
+        return sum / T(16);
+    }
+
+    /// The unit mirror direction of the arriving path about the shading normal (world).
+    [[nodiscard]] Vec3<T> mirror() const noexcept { return frame_.to_world({-wo_.x, -wo_.y, wo_.z}); }
+
+    /// The absolute cosine of wi (world) with the shading normal.
+    [[nodiscard]] T cosine(const Vec3<T>& wi) const noexcept { return std::abs(dot(wi, frame_.n)); }
+
+    /// A next direction drawn from the lobe (world), with the lobe's weight and density;
+    /// nothing where the lobe draws none or the draw fails the side test.
+    [[nodiscard]] std::optional<LobeSample<T>> sample(Pcg32& rng, Transport mode) const noexcept
+    {
+        const T u0 = rng.uniform<T>(), u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
+        std::optional<LobeSample<T>> s = lobe_.sample(wo_, u0, u1, u2, mode);
+        if (!s) return std::nullopt;
+        const Vec3<T> wi = frame_.to_world(s->wi);
+        if (!agree(wi, s->wi)) return std::nullopt;
+        s->wi = wi;
+        return s;
+    }
+
+private:
+    /// Whether the true surface puts world wi on the side the shading frame puts it (local).
+    [[nodiscard]] bool agree(const Vec3<T>& wi, const Vec3<T>& local) const noexcept
+    {
+        const T g = dot(wi, n_true_);
+        return local.z > T(0) ? g > T(0) : local.z < T(0) && g < T(0);
+    }
+
+    Lobe lobe_;
+    LocalFrame<T> frame_;
+    Vec3<T> n_true_;
+    Vec3<T> wo_;
+};
+
+/// A glossy material's lobe at `hit` for a path arriving along the unit direction d
+/// (eta: n beyond / n on the arriving side, for an interface).
+template <Material M>
+    requires(has_glossy<M>)
+[[nodiscard]] auto glossy_at(const M& material, const Crossing<typename M::scalar_type>& hit, const Vec3<typename M::scalar_type>& d,
+                             typename M::scalar_type eta = 1) noexcept
+{
+    using T = typename M::scalar_type;
+    const auto lobe = material.glossy(GlossyQuery<T>{hit.point, hit.uv, hit.entering, eta});
+    return GlossyAt<std::remove_cvref_t<decltype(lobe)>>(lobe, LocalFrame<T>::about(hit.facing_shading()), hit.facing_normal(), d);
+}
+
+/// Whether a path meeting `material` at `hit` along d sees a non-delta lobe there (a
+/// diffuse one, or a glossy one that is not a mirror): where lights are sampled and
+/// photons stored.
+template <Material M>
+[[nodiscard]] bool scatters_smoothly(const M& material, const Crossing<typename M::scalar_type>& hit, const Vec3<typename M::scalar_type>& d) noexcept
+{
+    if constexpr (has_diffuse<M>) return true;
+    else if constexpr (has_glossy<M>) return !glossy_at(material, hit, d).smooth();
+    else return (void)material, (void)hit, (void)d, false;
+}
+
+// Photons
 
 /// A photon's next direction after scattering, and whether the bounce was diffuse.
 template <Scalar T>
 struct PhotonBounce {
     Vec3<T> direction; ///< the new direction
-    bool diffuse; ///< whether the bounce was off the diffuse lobe
+    bool diffuse; ///< whether the bounce was off a non-delta lobe (diffuse or glossy)
+    T pdf = T(0); ///< a glossy lobe's density for the direction (0 for the others: a diffuse one's is cos / pi)
 };
 
 /// The lobes a scattering may take: none (the path ends), the delta ones only (a caustic
@@ -6877,7 +7124,9 @@ enum class Lobes { none, delta, all };
 /// sent into the solid is absorbed; a photon (Transport::importance) also takes Veach's
 /// correction |d.ns| |w.ng| / (|d.ng| |w.ns|) and is absorbed where it arrives behind
 /// the shading normal. A camera path (Transport::radiance) scatters by the same rules
-/// without them.
+/// without them. A glossy lobe draws one direction (its parts chosen inside it) and the
+/// photon survives with the probability of the draw's largest channel (at most 1),
+/// carrying the draw's weight over it; its density is the bounce's `pdf`.
 template <Transport Mode = Transport::importance, Material M>
 [[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
                                                                                    const Crossing<typename M::scalar_type>& hit,
@@ -6933,6 +7182,28 @@ template <Transport Mode = Transport::importance, Material M>
     } else if constexpr (M::has_diffuse) {
         if (lobes != Lobes::all || !russian_roulette(power, diffuse_response(material, hit).photon_reflectance(), rng)) return std::nullopt;
         return diffuse_direction();
+    } else if constexpr (has_glossy<M>) {
+        // One draw from the lobe (its parts chosen inside it), then Russian roulette by
+        // the draw's weight: a survivor carries weight / p, at most 1 per channel where
+        // the weight is below 1.
+        const auto at = glossy_at(material, hit, d);
+        if (lobes != Lobes::all && !at.smooth()) return std::nullopt;
+        const std::optional<LobeSample<T>> s = at.sample(rng, Mode);
+        if (!s) return std::nullopt;
+        Rgb<T> weight = s->weight;
+        if constexpr (Mode == Transport::importance) {
+            if (!s->delta && !hit.shades_flat()) {
+                // Veach's correction for the shading normal, as for a diffuse bounce.
+                const T correction = (std::abs(dot(d, hit.shading)) * std::abs(dot(s->wi, hit.normal))) /
+                                     (std::abs(dot(d, hit.normal)) * std::abs(dot(s->wi, hit.shading)));
+                if (!(correction < infinity<T>)) return std::nullopt;
+                weight *= correction;
+            }
+        }
+        const T p = std::min(T(1), max_component(weight));
+        if (!(p > T(0)) || !(rng.uniform<T>() < p)) return std::nullopt;
+        power *= weight / p;
+        return PhotonBounce<T>{s->wi, !s->delta, s->pdf};
     } else {
         const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
         const SpecularSplit<T> split = delta_split(material, d, n_delta, hit.entering, hit.point, wavelength_nm, outside_index);
@@ -8004,6 +8275,22 @@ public:
     /// no photon was found).
     [[nodiscard]] PrecomputedIrradiance estimate(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator) const noexcept
     {
+        return estimate(p, n, estimator, [](const Photon& photon) { return photon.power(); });
+    }
+
+    /// Reflected radiance at p on a surface with unit normal n (Jensen 1996, eq. 6): as
+    /// irradiance(), each photon's power weighed by the BSDF between its direction and
+    /// the viewer's, `reflected(photon)` (its power times f): a glossy surface's estimate.
+    template <class Reflected>
+    [[nodiscard]] Rgb<float> radiance(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator, Reflected&& reflected) const noexcept
+    {
+        return estimate(p, n, estimator, reflected).irradiance;
+    }
+
+    /// The density estimate of `value(photon)` over the disk (estimate() with the photons' powers).
+    template <class Value>
+    [[nodiscard]] PrecomputedIrradiance estimate(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator, Value&& value) const noexcept
+    {
         Rgb<float> sum(0.0f);
         if (!tree_ || photons_.empty() || !(estimator.radius > 0.0f)) return {sum, 0.0f};
         const detail::FilterWeight weight(estimator.filter);
@@ -8012,7 +8299,7 @@ public:
             if ((photon.flags & estimator.excluded) != 0 || !photon.faces(n, estimator.surface_cos)) return;
             const float height = dot(photon.position - p, n);
             if (height * height > estimator.max_height_ratio * estimator.max_height_ratio * r2) return;
-            sum += photon.power() * weight(d2, r2);
+            sum += value(photon) * weight(d2, r2);
         };
         float r2 = estimator.radius * estimator.radius;
         if (estimator.k == 0) {
@@ -8187,7 +8474,7 @@ void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& m
 // light tracer and the path tracer (a camera path carries importance by the same rules).
 //
 // From a ray carrying `power`, hit by hit: the medium the path crossed attenuates it;
-// at a diffuse surface the caller's `on_diffuse` sees the vertex (and may stop the walk);
+// at a diffuse or glossy surface the caller's `on_diffuse` sees the vertex (and may stop the walk);
 // false interfaces (inside a medium of higher priority) are passed; a white path meeting
 // a dispersive interface takes one wavelength band at random; then scatter_photon picks
 // the next direction by Russian roulette (material/scattering.hpp). In the air the path
@@ -8201,20 +8488,21 @@ void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& m
 
 namespace prism {
 
-/// A walk at a diffuse surface, before it scatters there.
+/// A walk at a surface with a non-delta lobe (diffuse, or glossy and not a mirror),
+/// before it scatters there.
 template <Scalar T>
 struct WalkVertex {
     const Hit<T>& hit; ///< the surface the walk met
     const Vec3<T>& direction; ///< unit, arriving
     const Rgb<T>& power;      ///< what the path carries here, after the medium it crossed
     bool direct;              ///< nothing scattered it yet (a photon's first hit)
-    int diffuse_bounces;      ///< diffuse scatterings so far (0: every scattering so far was specular)
+    int diffuse_bounces;      ///< non-delta (diffuse or glossy) scatterings so far (0: every scattering so far was specular)
     bool first_specular;      ///< the first scattering was specular (the vertex next to the path's start: L S ...)
     T travelled;              ///< the path's length so far
     T wavelength;             ///< 0 while white
     const MediumStack& media; ///< the transmissive objects the path is inside of
     const Vec3<T>& last_point; ///< where the path last scattered (or started)
-    T last_pdf;               ///< the solid-angle density of a diffuse lobe's last scattering, cos / pi; 0 after a delta one or at the start
+    T last_pdf;               ///< the solid-angle density of the last scattering's non-delta lobe (a diffuse one's cos / pi); 0 after a delta one or at the start
     bool last;                ///< the walk ends after this surface (its depth limit): nothing it scatters is followed
 
     /// Where the walk met the surface, with its normal and side.
@@ -8228,7 +8516,7 @@ template <Scalar T>
 struct WalkEscape {
     const Ray<T>& ray;        ///< the segment that left the scene, its direction the way it went
     const Rgb<T>& power;      ///< what the path carries
-    int diffuse_bounces;      ///< diffuse scatterings on the way (0: every scattering was specular)
+    int diffuse_bounces;      ///< non-delta (diffuse or glossy) scatterings on the way (0: every scattering was specular)
     bool first_specular;      ///< the first scattering was specular (the vertex next to the path's start)
     T last_pdf;               ///< as WalkVertex's: the last scattering's diffuse density, 0 after a delta one
 
@@ -8255,7 +8543,8 @@ struct IgnoreEmitters {
 };
 
 /// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
-/// on_diffuse(material, WalkVertex) is called at every diffuse surface and returns the
+/// on_diffuse(material, WalkVertex) is called at every surface with a non-delta lobe
+/// (diffuse, or glossy and not a mirror: scatters_smoothly) and returns the
 /// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
 /// there); on_escape(WalkEscape) when the path leaves the scene; on_emitter(material,
 /// WalkVertex) where it meets a surface that emits (an area light; the walk scatters there
@@ -8294,11 +8583,12 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             const bool last = bounce == max_bounces;
             if constexpr (emits<M>)
                 on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last});
-            if constexpr (!has_diffuse<M> && !reflects<M> && !transmits<M>) {
+            if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
                 return Next::absorbed; // a lamp that only emits
             } else {
             Lobes lobes = Lobes::all;
-            if constexpr (has_diffuse<M>) {
+            // (A glossy lobe that is a mirror has no vertex of its own.)
+            if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
                 const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
                                                                       last_point, last_pdf, last});
                 if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
@@ -8334,7 +8624,8 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             if (!next) return Next::absorbed;
             ray = spawn_ray(c.point, c.error, c.normal, next->direction);
             last_point = c.point;
-            last_pdf = next->diffuse ? std::max(dot(next->direction, c.facing_shading()), T(0)) / pi<T> : T(0);
+            if constexpr (has_glossy<M>) last_pdf = next->pdf;
+            else last_pdf = next->diffuse ? std::max(dot(next->direction, c.facing_shading()), T(0)) / pi<T> : T(0);
             if (next->diffuse) ++diffuse_bounces;
             if (direct) first_specular = !next->diffuse;
             if constexpr (transmits<M>) {
@@ -8564,7 +8855,7 @@ private:
             const auto hit = scene_.closest_hit(through, {T(0), infinity<T>});
             if (!hit) return;
             const Crossing<T>& c = hit->crossing;
-            const bool diffuse = scene_.visit_material(*hit, []<class M>(const M&) { return has_diffuse<M>; });
+            const bool diffuse = scene_.visit_material(*hit, [&]<class M>(const M& material) { return scatters_smoothly(material, c, d); });
             if (diffuse) out.push_back(photon(c, Rgb<T>(T(0)), d, Photon::shadow));
             through = spawn_ray(c.point, c.error, c.normal, d);
         }
@@ -9295,7 +9586,7 @@ namespace prism {
 /// The first surface a camera ray meets.
 template <Scalar T>
 struct SurfaceSample {
-    Rgb<T> albedo;  ///< a diffuse lobe's reflectance there; 1 for a surface with delta lobes only (glass, mirrors)
+    Rgb<T> albedo;  ///< a diffuse lobe's reflectance there, a glossy one's albedo toward the camera (GlossyAt::albedo); 1 for a surface with delta lobes only (glass, mirrors)
     Vec3<T> normal; ///< the shading normal, facing the ray
     T distance;     ///< the path's length from the camera's pinhole (along a curved ray in graded air)
 };
@@ -9313,6 +9604,7 @@ template <class SceneT, class Air>
     if (!hit) return std::nullopt;
     const Rgb<T> albedo = scene.visit_material(*hit, [&]<class M>(const M& material) {
         if constexpr (has_diffuse<M>) return diffuse_response(material, hit->crossing).albedo;
+        else if constexpr (has_glossy<M>) return glossy_at(material, hit->crossing, normalize(segment.direction)).albedo();
         else return Rgb<T>(T(1));
     });
     return SurfaceSample<T>{albedo, hit->crossing.facing_shading(), path};
@@ -11106,7 +11398,10 @@ public:
                     importance *= shading_cosine(c.facing_shading(), c.facing_normal(), -at.direction) / -dot(at.direction, c.facing_normal());
                     if (!(importance < infinity<T>)) return go_on;
                 }
-                const Rgb<float> splat(power * diffuse_response(material, c).brdf() * v * importance);
+                Rgb<T> f;
+                if constexpr (has_glossy<M>) f = glossy_at(material, c, at.direction).f(to_camera, Transport::importance);
+                else f = diffuse_response(material, c).brdf();
+                const Rgb<float> splat(power * f * v * importance);
                 std::array<ExactSum, 3> add{};
                 for (int k = 0; k < 3; ++k) {
                     const double value = double(splat[k]) * scale;
@@ -11331,20 +11626,40 @@ public:
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         const Crossing<T>& c = at.crossing();
                         const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
-                        Rgb<T> irradiance{T(0)};
-                        scene_->for_each_light([&]<class L>(const L& light) {
-                            if constexpr (!is_delta_light<L>) {
-                                if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
-                            }
-                            for_each_sample_arriving<ShadowsThroughGlass::blocked>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
-                                // An area light's sample shares its path with the diffuse
-                                // bounce (cos / pi) that finds it where the walk goes on.
-                                const bool shared = !s.delta() && go_on;
-                                const T w = shared ? light_sample_weight(s.pdf, cos / pi<T>) : T(1);
-                                irradiance += w * v * s.irradiance * cos;
+                        if constexpr (has_glossy<M>) {
+                            // Each light sample weighed by the lobe toward it; an area light's shares
+                            // its path with the lobe's own draw (its density there) as a diffuse one's.
+                            const auto lobe = glossy_at(material, c, at.direction);
+                            Rgb<T> reflected{T(0)};
+                            scene_->for_each_light([&]<class L>(const L& light) {
+                                if constexpr (!is_delta_light<L>) {
+                                    if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
+                                }
+                                for_each_sample_arriving<ShadowsThroughGlass::blocked>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                                    const Rgb<T> f = lobe.f(s.wi, Transport::radiance);
+                                    if (!(max_component(f) > T(0))) return;
+                                    const bool shared = !s.delta() && go_on;
+                                    const T w = shared ? light_sample_weight(s.pdf, lobe.pdf(s.wi)) : T(1);
+                                    reflected += (w * cos) * f * v * s.irradiance;
+                                });
                             });
-                        });
-                        sum += at.power * diffuse_response(material, c).brdf() * irradiance;
+                            sum += at.power * reflected;
+                        } else {
+                            Rgb<T> irradiance{T(0)};
+                            scene_->for_each_light([&]<class L>(const L& light) {
+                                if constexpr (!is_delta_light<L>) {
+                                    if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
+                                }
+                                for_each_sample_arriving<ShadowsThroughGlass::blocked>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                                    // An area light's sample shares its path with the diffuse
+                                    // bounce (cos / pi) that finds it where the walk goes on.
+                                    const bool shared = !s.delta() && go_on;
+                                    const T w = shared ? light_sample_weight(s.pdf, cos / pi<T>) : T(1);
+                                    irradiance += w * v * s.irradiance * cos;
+                                });
+                            });
+                            sum += at.power * diffuse_response(material, c).brdf() * irradiance;
+                        }
                         return go_on;
                     },
                     [&](const WalkEscape<T>& out) {
@@ -11692,6 +12007,23 @@ private:
             }
             else radiance.indirect = brdf * Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
         }
+        if constexpr (has_glossy<M>) {
+            const auto lobe = glossy_at(material, hit, normalize(d));
+            if (!lobe.smooth()) {
+                // As for a diffuse lobe, each part weighed by the lobe toward where its light arrives from.
+                const Vec3<float> p(hit.point), nf(n);
+                radiance.direct += direct(hit, rng, [&](const Vec3<T>& wi) { return lobe.f(wi, Transport::radiance); });
+                radiance.caustic = Rgb<T>(maps_.caustic.radiance(p, nf, config_.caustic, reflected_by(lobe)));
+                radiance.indirect = config_.gather_rays > 0 ? gather_glossy(lobe, hit, rng, media.empty())
+                                                            : Rgb<T>(maps_.global.radiance(p, nf, config_.global, reflected_by(lobe)));
+            }
+            // The lobe's delta part (a mirror, a smooth coat's reflection), followed as a mirror is.
+            if (depth < config_.max_depth) {
+                const std::optional<LobeSample<T>> s = lobe.delta_part();
+                if (s && max_component(weight * s->weight) > config_.min_weight)
+                    radiance += s->weight * trace(spawn_ray(hit.point, hit.error, hit.normal, s->wi), depth + 1, weight * s->weight, rng, wavelength, media);
+            }
+        }
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
                 const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
@@ -11723,6 +12055,14 @@ private:
     /// say about visibility where they agree.
     [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, Pcg32& rng) const noexcept
     {
+        return direct(hit, rng, [](const Vec3<T>&) { return Rgb<T>(T(1)); });
+    }
+
+    /// The same, each light sample arriving from wi weighed by `weigh(wi)` (a glossy
+    /// lobe's BSDF: then the radiance it reflects).
+    template <class Weigh>
+    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, Pcg32& rng, Weigh&& weigh) const noexcept
+    {
         Rgb<T> irradiance{T(0)};
         const LightSampling sampling{&rng, config_.area_light_grid};
         if (const std::optional<bool> visible = visibility_from_photons(hit.point, hit.facing_normal())) {
@@ -11731,13 +12071,13 @@ private:
             scene_->for_each_light([&](const auto& light) {
                 for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
                     const T cos = shading_cosine(n_shading, n, s.wi);
-                    if (cos > T(0)) irradiance += s.irradiance * cos;
+                    if (cos > T(0)) irradiance += weigh(s.wi) * s.irradiance * cos;
                 });
             });
             return irradiance;
         }
         for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, sampling,
-                                                              [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += v * s.irradiance * cos; });
+                                                              [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += weigh(s.wi) * v * s.irradiance * cos; });
         return irradiance;
     }
 
@@ -11796,9 +12136,7 @@ private:
         return gather_hemisphere<Gradients, T>(n, m, cells_n, rng, [&](const Vec3<T>& direction) {
             std::pair<Rgb<T>, T> found{Rgb<T>(T(0)), infinity<T>};
             const auto at_diffuse = [&]<class M>(const M& material, const WalkVertex<T>& at) {
-                const Crossing<T>& c = at.crossing();
-                const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
-                found.first += at.power * diffuse_response(material, c).brdf() * e;
+                found.first += global_radiance(material, at);
                 found.second = std::min(found.second, at.travelled);
                 // The diffuse lobe's light is counted; a delta lobe beside it (a coat) still
                 // mirrors what lies beyond.
@@ -11811,6 +12149,51 @@ private:
             else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse);
             return found;
         });
+    }
+
+    /// What a walk carries back from the global map at a vertex where it ends: its
+    /// power times a diffuse lobe's BRDF times the precomputed irradiance, or a glossy
+    /// lobe's radiance estimate toward where the walk came from.
+    template <class M>
+    [[nodiscard]] Rgb<T> global_radiance(const M& material, const WalkVertex<T>& at) const noexcept
+    {
+        const Crossing<T>& c = at.crossing();
+        if constexpr (has_glossy<M>) {
+            const auto lobe = glossy_at(material, c, at.direction);
+            return at.power * Rgb<T>(maps_.global.radiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal()), config_.global, reflected_by(lobe)));
+        } else {
+            const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
+            return at.power * diffuse_response(material, c).brdf() * e;
+        }
+    }
+
+    /// A photon's power weighed by a glossy lobe between its arrival and the viewer.
+    template <class Lobe>
+    [[nodiscard]] static auto reflected_by(const GlossyAt<Lobe>& lobe) noexcept
+    {
+        return [&lobe](const Photon& photon) { return Rgb<float>(lobe.f(Vec3<T>(photon.toward_source()), Transport::radiance)) * photon.power(); };
+    }
+
+    /// A glossy lobe's final gather: gather_rays draws from the lobe, each walked on
+    /// through mirrors and glass to the first surface with a non-delta lobe, where the
+    /// global map gives its radiance (global_radiance). Draws of the lobe's delta part
+    /// count nothing here: the caller follows that part.
+    template <class Lobe>
+    [[nodiscard]] Rgb<T> gather_glossy(const GlossyAt<Lobe>& lobe, const Crossing<T>& hit, Pcg32& rng, bool in_air) const
+    {
+        Rgb<T> sum{T(0)};
+        const auto at_vertex = [&]<class M>(const M& material, const WalkVertex<T>& at) {
+            sum += global_radiance(material, at);
+            return reflects<M> || transmits<M> ? Lobes::delta : Lobes::none;
+        };
+        for (int i = 0; i < config_.gather_rays; ++i) {
+            const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
+            if (!s || s->delta) continue;
+            const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, s->wi);
+            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, config_.max_depth, at_vertex);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, config_.max_depth, at_vertex);
+        }
+        return sum / T(config_.gather_rays);
     }
 
     const SceneT* scene_;
@@ -12140,6 +12523,23 @@ private:
         Rgb<T> radiance = emitted(material, hit);
 
         if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, d, jitter...);
+
+        if constexpr (has_glossy<M>) {
+            // A glossy lobe: the lights by its BSDF toward each, and what lies about the
+            // mirror direction by one mirror ray carrying the albedo of the lobe's part there
+            // (the lobe's spread and its light from everything but the lights are left out).
+            const auto lobe = glossy_at(material, hit, normalize(d));
+            const LightSampling sampling{stream_of(jitter...), config_.area_light_grid};
+            for_each_light_arriving(*scene_, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                radiance += lobe.f(s.wi, Transport::radiance) * v * s.irradiance * cos;
+            });
+            // (A delta part, a mirror's or a smooth coat's, is that mirror ray exactly.)
+            const std::optional<LobeSample<T>> delta = lobe.delta_part();
+            const Rgb<T> k = delta ? delta->weight : lobe.mirror_albedo();
+            if (depth < config_.max_depth && max_component(weight * k) > config_.min_weight)
+                radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, delta ? delta->wi : lobe.mirror()), depth + 1, weight * k, wavelength, media,
+                                      jitter...);
+        }
 
         if constexpr (reflects<M> || transmits<M>) {
             if (depth < config_.max_depth) {
@@ -12881,6 +13281,106 @@ static_assert(Light<SpotLight<float>>);
 
 } // namespace prism
 
+// ---- prism/material/texture.hpp ----
+// Textures: an albedo that may vary with the surface point.
+
+
+#include <cmath>
+
+namespace prism {
+
+/// A texture maps a surface point, `albedo(p)`, or a point and its surface coordinates,
+/// `albedo(p, uv)` (a mesh's interpolated uv; (0, 0) elsewhere: Crossing::uv), to an
+/// albedo in [0, 1] per channel.
+template <class X>
+concept Texture = requires(const X& texture) { texture.validate(); } &&
+                  (requires(const X& texture, const Vec3<typename X::scalar_type>& p) {
+                      { texture.albedo(p) } -> std::same_as<Rgb<typename X::scalar_type>>;
+                  } || requires(const X& texture, const Vec3<typename X::scalar_type>& p, const Vec2<typename X::scalar_type>& uv) {
+                      { texture.albedo(p, uv) } -> std::same_as<Rgb<typename X::scalar_type>>;
+                  });
+
+/// A texture's albedo at point p with surface coordinates uv, whichever it reads.
+template <Texture X>
+[[nodiscard]] constexpr Rgb<typename X::scalar_type> albedo_at(const X& texture, const Vec3<typename X::scalar_type>& p,
+                                                               const Vec2<typename X::scalar_type>& uv) noexcept
+{
+    if constexpr (requires { texture.albedo(p, uv); })
+        return texture.albedo(p, uv);
+    else
+        return texture.albedo(p);
+}
+
+/// One colour everywhere.
+template <Scalar T = float>
+struct Solid {
+    /// The precision of the colour.
+    using scalar_type = T;
+    Rgb<T> color{T(0.75)}; ///< the albedo everywhere
+
+    /// The albedo at any point: color.
+    [[nodiscard]] constexpr Rgb<T> albedo(const Vec3<T>&) const noexcept { return color; }
+    /// Throws std::invalid_argument for a negative or non-finite colour.
+    constexpr void validate() const { detail::require_non_negative("Solid color", color); }
+};
+
+/// A 3D checkerboard of cubes of side `size` (POV-Ray's `checker`): `even` where
+/// floor(x/size) + floor(y/size) + floor(z/size) is even.
+template <Scalar T = float>
+struct Checker {
+    /// The precision of the colours.
+    using scalar_type = T;
+    Rgb<T> even{T(0.8)}; ///< albedo of the even cells
+    Rgb<T> odd{T(0.35)}; ///< albedo of the odd cells
+    T size = T(1); ///< side of a cell
+
+    /// The albedo at p: even or odd by the parity of p's cell.
+    [[nodiscard]] Rgb<T> albedo(const Vec3<T>& p) const noexcept
+    {
+        // Cells are half-open, so a point on a cell face belongs to exactly one cell. A
+        // floor at y = 0 stays in one layer because Plane refines its hit points onto
+        // the plane exactly when the plane is axis-aligned. Parity is taken in floating
+        // point, so far-away points cannot overflow an integer conversion.
+        const T inv = T(1) / size;
+        const T sum = std::floor(p.x * inv) + std::floor(p.y * inv) + std::floor(p.z * inv);
+        return std::floor(sum * T(0.5)) * T(2) == sum ? even : odd;
+    }
+
+    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite colour or a size <= 0.
+    constexpr void validate() const
+    {
+        detail::require_non_negative("Checker even", even);
+        detail::require_non_negative("Checker odd", odd);
+        detail::require_positive("Checker size", size);
+    }
+};
+
+/// A checkerboard in surface coordinates: squares of side `size` in (u, v), `even`
+/// where floor(u/size) + floor(v/size) is even (the square [0, size)^2 is even).
+template <Scalar T = float>
+struct UvChecker {
+    /// The precision of the colours.
+    using scalar_type = T;
+    Rgb<T> even{T(0.8)}; ///< albedo of the even squares
+    Rgb<T> odd{T(0.35)}; ///< albedo of the odd squares
+    T size = T(0.125); ///< side of a square in (u, v)
+
+    /// Checker's cells in the plane (u, v, 0).
+    [[nodiscard]] Rgb<T> albedo(const Vec3<T>&, const Vec2<T>& uv) const noexcept { return Checker<T>{even, odd, size}.albedo({uv.x, uv.y, T(0)}); }
+
+    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite colour or a size <= 0.
+    constexpr void validate() const
+    {
+        detail::require_non_negative("UvChecker even", even);
+        detail::require_non_negative("UvChecker odd", odd);
+        detail::require_positive("UvChecker size", size);
+    }
+};
+
+static_assert(Texture<Solid<float>> && Texture<Checker<double>> && Texture<UvChecker<float>>);
+
+} // namespace prism
+
 // ---- prism/optics/fresnel.hpp ----
 // Fresnel reflectance: exact dielectric, Schlick's approximation, complex conductor.
 //
@@ -13028,6 +13528,383 @@ concept FresnelPolicy = Scalar<T> && requires(T cos_i, T eta) {
 };
 
 static_assert(FresnelPolicy<ExactFresnel, float> && FresnelPolicy<SchlickFresnel, double>);
+
+} // namespace prism
+
+// ---- prism/optics/microfacet.hpp ----
+// The Trowbridge-Reitz (GGX) distribution of microfacet normals (Trowbridge and Reitz
+// 1975; Walter et al. 2007), with Smith's height-correlated masking-shadowing and
+// sampling of the normals a direction sees (Heitz 2018, "Sampling the GGX Distribution
+// of Visible Normals"). Every vector is in the surface's local frame: z along the
+// macro-normal, x and y along the directions of roughness alpha_x and alpha_y.
+
+
+#include <algorithm>
+#include <cmath>
+
+namespace prism {
+
+/// The roughness of a microfacet surface along its two tangent directions, as
+/// Blender's Cycles and Disney's principled model take it: alpha = roughness^2, so a
+/// roughness the eye reads as halfway rough (0.5) gives alpha 0.25.
+template <Scalar T>
+struct Roughness {
+    T u = T(0.3); ///< roughness along the first tangent, in [0, 1]
+    T v = T(0.3); ///< roughness along the second tangent, in [0, 1]
+
+    constexpr Roughness() noexcept = default;
+    /// An isotropic roughness (implicit, so a material reads `.roughness = 0.2`).
+    constexpr Roughness(T r) noexcept : u(r), v(r) {} // NOLINT(google-explicit-constructor)
+    /// An anisotropic roughness: r_u along the first tangent, r_v along the second.
+    constexpr Roughness(T r_u, T r_v) noexcept : u(r_u), v(r_v) {}
+
+    /// Throws std::invalid_argument, naming the parameter (`name` u or v), for a roughness outside [0, 1].
+    constexpr void validate(const char* name) const
+    {
+        if (!(u >= T(0) && u <= T(1))) detail::throw_invalid(name, " roughness must be in [0, 1], got ", u);
+        if (!(v >= T(0) && v <= T(1))) detail::throw_invalid(name, " roughness along v must be in [0, 1], got ", v);
+    }
+};
+
+/// The Trowbridge-Reitz (GGX) normal distribution with widths alpha_x, alpha_y.
+template <Scalar T>
+class TrowbridgeReitz {
+public:
+    /// Below this alpha a surface is a mirror: its lobe is narrower than float's
+    /// directions resolve, and it is rendered as the delta material (pbrt-v4's limit).
+    static constexpr T smooth_alpha = T(1e-3);
+
+    /// The distribution of a roughness: alpha = roughness^2 on each axis.
+    [[nodiscard]] static constexpr TrowbridgeReitz from(const Roughness<T>& r) noexcept { return TrowbridgeReitz(r.u * r.u, r.v * r.v); }
+
+    /// The distribution with widths alpha_x, alpha_y (each >= 0).
+    constexpr TrowbridgeReitz(T alpha_x, T alpha_y) noexcept : alpha_x_(alpha_x), alpha_y_(alpha_y) {}
+
+    /// The width along x.
+    [[nodiscard]] constexpr T alpha_x() const noexcept { return alpha_x_; }
+    /// The width along y.
+    [[nodiscard]] constexpr T alpha_y() const noexcept { return alpha_y_; }
+
+    /// Whether the surface is effectively a mirror (both widths below smooth_alpha).
+    [[nodiscard]] constexpr bool smooth() const noexcept { return std::max(alpha_x_, alpha_y_) < smooth_alpha; }
+
+    /// The density of microfacet normals m per unit projected area, D(m): its integral
+    /// of D(m) m.z over the hemisphere is 1 (and no facet faces down: 0 for m.z <= 0).
+    [[nodiscard]] T d(const Vec3<T>& m) const noexcept
+    {
+        if (!(m.z > T(0))) return T(0);
+        const T cos2 = m.z * m.z;
+        const T e = (m.x * m.x / (alpha_x_ * alpha_x_) + m.y * m.y / (alpha_y_ * alpha_y_)) / cos2;
+        const T denom = pi<T> * alpha_x_ * alpha_y_ * cos2 * cos2 * (T(1) + e) * (T(1) + e);
+        return denom > T(0) && denom < infinity<T> ? T(1) / denom : T(0);
+    }
+
+    /// Smith's Lambda(w): the shadowed microfacet area seen from w over its projected area.
+    [[nodiscard]] T lambda(const Vec3<T>& w) const noexcept
+    {
+        const T cos2 = w.z * w.z;
+        const T a2_tan2 = (alpha_x_ * alpha_x_ * w.x * w.x + alpha_y_ * alpha_y_ * w.y * w.y) / cos2;
+        if (!(a2_tan2 < infinity<T>)) return infinity<T>;
+        return (std::sqrt(T(1) + a2_tan2) - T(1)) / T(2);
+    }
+
+    /// Smith's masking: the fraction of microfacets facing w that w sees, 1 / (1 + Lambda(w)).
+    [[nodiscard]] T g1(const Vec3<T>& w) const noexcept { return T(1) / (T(1) + lambda(w)); }
+
+    /// Smith's height-correlated masking-shadowing of wo and wi (Heitz 2014), 1 / (1 + Lambda(wo) + Lambda(wi)).
+    [[nodiscard]] T g(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept { return T(1) / (T(1) + lambda(wo) + lambda(wi)); }
+
+    /// The density of the normals a direction w sees (Heitz 2018, eq. 3):
+    /// G1(w) max(0, w.m) D(m) / |w.z|, per unit solid angle of m.
+    [[nodiscard]] T visible_d(const Vec3<T>& w, const Vec3<T>& m) const noexcept
+    {
+        const T cos_o = std::abs(w.z);
+        if (!(cos_o > T(0))) return T(0);
+        return g1(w) * std::max(T(0), dot(w, m)) * d(m) / cos_o;
+    }
+
+    /// A normal drawn from visible_d(w, .) for w above the surface (w.z > 0), from two
+    /// uniform numbers (Heitz 2018): w stretched to the unit-roughness configuration, a
+    /// point on the half disk it sees, lifted onto the hemisphere and unstretched.
+    [[nodiscard]] Vec3<T> sample_visible(const Vec3<T>& w, T u1, T u2) const noexcept
+    {
+        const Vec3<T> wh = normalize(Vec3<T>(alpha_x_ * w.x, alpha_y_ * w.y, w.z));
+        const T lensq = wh.x * wh.x + wh.y * wh.y;
+        const Vec3<T> t1 = lensq > T(0) ? Vec3<T>(-wh.y, wh.x, T(0)) / std::sqrt(lensq) : Vec3<T>(T(1), T(0), T(0));
+        const Vec3<T> t2 = cross(wh, t1);
+        const T r = std::sqrt(u1), phi = T(2) * pi<T> * u2;
+        const T p1 = r * std::cos(phi);
+        const T s = T(0.5) * (T(1) + wh.z);
+        const T p2 = (T(1) - s) * std::sqrt(std::max(T(0), T(1) - p1 * p1)) + s * r * std::sin(phi);
+        const T p3 = std::sqrt(std::max(T(0), T(1) - p1 * p1 - p2 * p2));
+        const Vec3<T> nh = p1 * t1 + p2 * t2 + p3 * wh;
+        return normalize(Vec3<T>(alpha_x_ * nh.x, alpha_y_ * nh.y, std::max(T(1e-6), nh.z)));
+    }
+
+private:
+    T alpha_x_, alpha_y_;
+};
+
+} // namespace prism
+
+// ---- prism/material/coated_diffuse.hpp ----
+// CoatedDiffuse: a Lambertian base under a clear dielectric coat, smooth or rough
+// (plastic, varnished wood, a glazed tile), with its energy accounted for.
+//
+// The coat reflects by microfacet reflection with the dielectric's exact Fresnel
+// equations; what it does not reflect enters, with T(cos) = 1 - E(cos), E the coat's
+// directional albedo (so light the single-scattering lobe loses among its facets is
+// counted as entering, not lost). Inside, the base of albedo rho and the coat's
+// underside exchange light: the coat sends back the share F_in of diffuse light,
+// 1 - F_in = T_avg / eta^2 with T_avg the cosine-weighted mean of T (the coat is
+// reciprocal), so the geometric series of internal bounces sums to
+// rho / (1 - rho F_in). Light leaves through the coat by T again, spread by the
+// radiance's eta^2 compression (the smooth and rough plastic of Mitsuba 0.6, with
+// its internal scattering kept: `nonlinear`). So
+//   f = f_coat + T(cos_i) T(cos_o) rho / (pi eta^2 (1 - rho F_in)),
+// which is reciprocal, and whose albedo E(cos_o) + T(cos_o) rho (1 - F_in) / (1 - rho F_in)
+// is 1 exactly for rho = 1 (to the precision of the table of E, 1e-3).
+
+
+#include <array>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+namespace prism {
+
+/// A clear coat: its index of refraction and its roughness (isotropic; alpha = roughness^2).
+template <Scalar T>
+struct Coat {
+    T ior = T(1.5); ///< the coat's index of refraction, > 1
+    T roughness = T(0.1); ///< its roughness, in [0, 1]; below about 0.03, smooth
+
+    /// Throws std::invalid_argument, naming the parameter, for an index <= 1 or a roughness outside [0, 1].
+    constexpr void validate() const
+    {
+        if (!(ior > T(1) && ior < infinity<T>)) detail::throw_invalid("Coat ior must be finite and > 1, got ", ior);
+        if (!(roughness >= T(0) && roughness <= T(1))) detail::throw_invalid("Coat roughness must be in [0, 1], got ", roughness);
+    }
+};
+
+/// What a coat lets in at each incident cosine, tabulated: T(cos) = 1 - E(cos), and
+/// the share F_in of diffuse light inside that it sends back.
+template <Scalar T>
+class CoatTransmission {
+public:
+    /// Cosines at which T is tabulated, evenly over [0, 1].
+    static constexpr int size = 64;
+
+    /// The table of `coat` (which must be valid): E(cos) integrated over the visible
+    /// normals on a 32 x 32 grid of midpoints in double.
+    explicit CoatTransmission(const Coat<T>& coat) noexcept
+    {
+        const double alpha = double(coat.roughness) * double(coat.roughness), eta = double(coat.ior);
+        const TrowbridgeReitz<double> ggx(alpha, alpha);
+        double mean = 0;
+        for (int k = 0; k < size; ++k) {
+            const double mu = std::max(double(k) / (size - 1), 1e-3);
+            const Vec3<double> wo{std::sqrt(1 - mu * mu), 0, mu};
+            double albedo = 0;
+            if (ggx.smooth()) {
+                albedo = fresnel_dielectric(mu, eta);
+            } else {
+                constexpr int n = 32;
+                for (int i = 0; i < n; ++i)
+                    for (int j = 0; j < n; ++j) {
+                        const Vec3<double> m = ggx.sample_visible(wo, (i + 0.5) / n, (j + 0.5) / n);
+                        const double c = dot(wo, m);
+                        const Vec3<double> wi = 2 * c * m - wo;
+                        if (c > 0 && wi.z > 0) albedo += fresnel_dielectric(c, eta) * ggx.g(wo, wi) / ggx.g1(wo);
+                    }
+                albedo /= n * n;
+            }
+            table_[std::size_t(k)] = T(1 - albedo);
+        }
+        // T_avg = 2 int_0^1 T(mu) mu dmu, by the trapezoid rule on the table.
+        for (int k = 0; k + 1 < size; ++k) {
+            const double a = double(k) / (size - 1), b = double(k + 1) / (size - 1);
+            mean += (double(table_[std::size_t(k)]) * a + double(table_[std::size_t(k + 1)]) * b) * (b - a);
+        }
+        inside_reflectance_ = T(1 - mean / (eta * eta));
+    }
+
+    /// The share of light arriving at cosine mu that enters, T(mu) (linear in the table).
+    [[nodiscard]] T at(T mu) const noexcept
+    {
+        const T u = clamp(mu, T(0), T(1)) * T(size - 1);
+        const int i = std::min(int(u), size - 2);
+        const T f = u - T(i);
+        return table_[std::size_t(i)] + (table_[std::size_t(i + 1)] - table_[std::size_t(i)]) * f;
+    }
+
+    /// F_in: the share of diffuse light under the coat that it reflects back down.
+    [[nodiscard]] T inside_reflectance() const noexcept { return inside_reflectance_; }
+
+private:
+    std::array<T, size> table_{};
+    T inside_reflectance_ = T(0);
+};
+
+/// The lobe of a coated diffuse surface at one point (see the file's comment). Sampled
+/// by its two parts, the coat with the probability of its share of the albedo at wo.
+template <Scalar T>
+class CoatedLobe {
+public:
+    /// The precision of the lobe.
+    using scalar_type = T;
+
+    /// The lobe of a base of albedo rho under `coat`, whose `transmission` table it keeps by reference.
+    CoatedLobe(const Rgb<T>& rho, const Coat<T>& coat, const CoatTransmission<T>& transmission) noexcept
+        : ggx_(TrowbridgeReitz<T>::from(Roughness<T>(coat.roughness))), eta_(coat.ior), transmission_(&transmission)
+    {
+        const T f_in = transmission.inside_reflectance();
+        base_ = rho / ((Rgb<T>(T(1)) - rho * f_in) * (pi<T> * eta_ * eta_));
+        escape_ = rho * (T(1) - f_in) / (Rgb<T>(T(1)) - rho * f_in);
+    }
+
+    /// Never a mirror as a whole (a smooth coat's reflection is a delta part of it).
+    [[nodiscard]] static constexpr bool smooth() noexcept { return false; }
+
+    /// The BRDF for wo and wi above the surface (0 otherwise); a smooth coat's mirror has none.
+    [[nodiscard]] Rgb<T> f(const Vec3<T>& wo, const Vec3<T>& wi, Transport = Transport::radiance) const noexcept
+    {
+        if (!(wo.z > T(0)) || !(wi.z > T(0))) return Rgb<T>(T(0));
+        return base_ * (transmission_->at(wo.z) * transmission_->at(wi.z)) + Rgb<T>(coat_f(wo, wi));
+    }
+
+    /// The density of sample's non-delta directions.
+    [[nodiscard]] T pdf(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept
+    {
+        if (!(wo.z > T(0)) || !(wi.z > T(0))) return T(0);
+        const T p = coat_share(wo.z);
+        return (T(1) - p) * wi.z / pi<T> + (ggx_.smooth() ? T(0) : p * coat_pdf(wo, wi));
+    }
+
+    /// A direction: the coat's reflection (a visible normal's mirror; a smooth coat's
+    /// mirror as a delta) with the coat's share of the albedo, else a cosine-distributed one.
+    [[nodiscard]] std::optional<LobeSample<T>> sample(const Vec3<T>& wo, T u_lobe, T u1, T u2, Transport mode = Transport::radiance) const noexcept
+    {
+        if (!(wo.z > T(0))) return std::nullopt;
+        const T p = coat_share(wo.z);
+        Vec3<T> wi;
+        if (u_lobe < p) {
+            if (ggx_.smooth()) return LobeSample<T>{{-wo.x, -wo.y, wo.z}, Rgb<T>(fresnel_dielectric(wo.z, eta_) / p), T(0), true};
+            const Vec3<T> m = ggx_.sample_visible(wo, u1, u2);
+            wi = T(2) * dot(wo, m) * m - wo;
+        } else {
+            wi = cosine_direction(u1, u2);
+        }
+        const T density = pdf(wo, wi);
+        if (!(density > T(0))) return std::nullopt;
+        return LobeSample<T>{wi, f(wo, wi, mode) * (wi.z / density), density, false};
+    }
+
+    /// A smooth coat's reflection (its whole weight F); nothing for a rough coat.
+    [[nodiscard]] std::optional<LobeSample<T>> delta_part(const Vec3<T>& wo) const noexcept
+    {
+        if (!ggx_.smooth()) return std::nullopt;
+        return LobeSample<T>{{-wo.x, -wo.y, wo.z}, Rgb<T>(fresnel_dielectric(wo.z, eta_)), T(0), true};
+    }
+
+    /// The coat's albedo for wo, 1 - T(wo.z): what a Whitted mirror ray carries for it.
+    [[nodiscard]] Rgb<T> mirror_albedo(const Vec3<T>& wo) const noexcept { return Rgb<T>(T(1) - transmission_->at(wo.z)); }
+
+private:
+    /// The coat's microfacet reflection (0 for a smooth coat: its mirror is a delta).
+    [[nodiscard]] T coat_f(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept
+    {
+        if (ggx_.smooth()) return T(0);
+        const Vec3<T> m = normalize(wo + wi);
+        const T value = ggx_.d(m) * ggx_.g(wo, wi) * fresnel_dielectric(dot(wo, m), eta_) / (T(4) * wo.z * wi.z);
+        return value < infinity<T> ? value : T(0);
+    }
+
+    /// The density of the coat's visible-normal sampling.
+    [[nodiscard]] T coat_pdf(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept
+    {
+        const Vec3<T> m = normalize(wo + wi);
+        const T c = dot(wo, m);
+        const T value = c > T(0) ? ggx_.visible_d(wo, m) / (T(4) * c) : T(0);
+        return value < infinity<T> ? value : T(0);
+    }
+
+    /// The probability of drawing from the coat at cosine mu: its share of the albedo
+    /// (E against the base's T(mu) times the mean of its escaping albedo).
+    [[nodiscard]] T coat_share(T mu) const noexcept
+    {
+        const T t = transmission_->at(mu), e = T(1) - t;
+        const T base = t * (escape_.x + escape_.y + escape_.z) / T(3);
+        return e + base > T(0) ? e / (e + base) : T(1);
+    }
+
+    TrowbridgeReitz<T> ggx_;
+    T eta_;
+    const CoatTransmission<T>* transmission_;
+    Rgb<T> base_{T(0)};   // rho / (pi eta^2 (1 - rho F_in))
+    Rgb<T> escape_{T(0)}; // rho (1 - F_in) / (1 - rho F_in): the base's albedo through the coat, per unit entering
+};
+
+/// A Lambertian base of albedo `albedo` (a texture) under a clear coat (see the file's
+/// comment): plastic, varnish, glaze.
+template <Scalar T = float, Texture Albedo = Solid<T>>
+class CoatedDiffuse {
+public:
+    /// The precision of the material.
+    using scalar_type = T;
+    /// Its Lambertian base lives in the glossy lobe, which is sampled as one.
+    static constexpr bool has_diffuse = false;
+    /// No delta mirror of its own (a smooth coat's is the lobe's delta part).
+    static constexpr bool reflects = false;
+    /// Transmits nothing.
+    static constexpr bool transmits = false;
+    /// A glossy lobe: coat and base.
+    static constexpr bool has_glossy = true;
+
+    /// A base of `albedo` under `coat`; throws std::invalid_argument, naming the parameter, for a bad albedo or coat.
+    explicit CoatedDiffuse(Albedo albedo = {}, Coat<T> coat = {}) : albedo_(std::move(albedo)), coat_(checked(coat)), transmission_(coat_)
+    {
+        validate();
+    }
+
+    /// The lobe at a point.
+    [[nodiscard]] CoatedLobe<T> glossy(const GlossyQuery<T>& q) const noexcept
+    {
+        return {albedo_at(albedo_, q.point, q.uv), coat_, transmission_};
+    }
+
+    /// The base's albedo texture.
+    [[nodiscard]] const Albedo& albedo() const noexcept { return albedo_; }
+    /// The coat.
+    [[nodiscard]] const Coat<T>& coat() const noexcept { return coat_; }
+    /// What the coat lets in.
+    [[nodiscard]] const CoatTransmission<T>& transmission() const noexcept { return transmission_; }
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad albedo (above 1 in
+    /// a channel, where it is Solid) or coat.
+    constexpr void validate() const
+    {
+        albedo_.validate();
+        if constexpr (std::same_as<Albedo, Solid<T>>) {
+            if (!(max_component(albedo_.color) <= T(1)))
+                detail::throw_invalid("CoatedDiffuse albedo must be <= 1 in every channel, got ", detail::describe(albedo_.color));
+        }
+        coat_.validate();
+    }
+
+private:
+    static Coat<T> checked(const Coat<T>& coat)
+    {
+        coat.validate();
+        return coat;
+    }
+
+    Albedo albedo_;
+    Coat<T> coat_;
+    CoatTransmission<T> transmission_;
+};
+
+static_assert(Material<CoatedDiffuse<float>>);
 
 } // namespace prism
 
@@ -13417,106 +14294,6 @@ static_assert(Material<Dielectric<float>> && Material<Dielectric<double, Schlick
 
 } // namespace prism
 
-// ---- prism/material/texture.hpp ----
-// Textures: an albedo that may vary with the surface point.
-
-
-#include <cmath>
-
-namespace prism {
-
-/// A texture maps a surface point, `albedo(p)`, or a point and its surface coordinates,
-/// `albedo(p, uv)` (a mesh's interpolated uv; (0, 0) elsewhere: Crossing::uv), to an
-/// albedo in [0, 1] per channel.
-template <class X>
-concept Texture = requires(const X& texture) { texture.validate(); } &&
-                  (requires(const X& texture, const Vec3<typename X::scalar_type>& p) {
-                      { texture.albedo(p) } -> std::same_as<Rgb<typename X::scalar_type>>;
-                  } || requires(const X& texture, const Vec3<typename X::scalar_type>& p, const Vec2<typename X::scalar_type>& uv) {
-                      { texture.albedo(p, uv) } -> std::same_as<Rgb<typename X::scalar_type>>;
-                  });
-
-/// A texture's albedo at point p with surface coordinates uv, whichever it reads.
-template <Texture X>
-[[nodiscard]] constexpr Rgb<typename X::scalar_type> albedo_at(const X& texture, const Vec3<typename X::scalar_type>& p,
-                                                               const Vec2<typename X::scalar_type>& uv) noexcept
-{
-    if constexpr (requires { texture.albedo(p, uv); })
-        return texture.albedo(p, uv);
-    else
-        return texture.albedo(p);
-}
-
-/// One colour everywhere.
-template <Scalar T = float>
-struct Solid {
-    /// The precision of the colour.
-    using scalar_type = T;
-    Rgb<T> color{T(0.75)}; ///< the albedo everywhere
-
-    /// The albedo at any point: color.
-    [[nodiscard]] constexpr Rgb<T> albedo(const Vec3<T>&) const noexcept { return color; }
-    /// Throws std::invalid_argument for a negative or non-finite colour.
-    constexpr void validate() const { detail::require_non_negative("Solid color", color); }
-};
-
-/// A 3D checkerboard of cubes of side `size` (POV-Ray's `checker`): `even` where
-/// floor(x/size) + floor(y/size) + floor(z/size) is even.
-template <Scalar T = float>
-struct Checker {
-    /// The precision of the colours.
-    using scalar_type = T;
-    Rgb<T> even{T(0.8)}; ///< albedo of the even cells
-    Rgb<T> odd{T(0.35)}; ///< albedo of the odd cells
-    T size = T(1); ///< side of a cell
-
-    /// The albedo at p: even or odd by the parity of p's cell.
-    [[nodiscard]] Rgb<T> albedo(const Vec3<T>& p) const noexcept
-    {
-        // Cells are half-open, so a point on a cell face belongs to exactly one cell. A
-        // floor at y = 0 stays in one layer because Plane refines its hit points onto
-        // the plane exactly when the plane is axis-aligned. Parity is taken in floating
-        // point, so far-away points cannot overflow an integer conversion.
-        const T inv = T(1) / size;
-        const T sum = std::floor(p.x * inv) + std::floor(p.y * inv) + std::floor(p.z * inv);
-        return std::floor(sum * T(0.5)) * T(2) == sum ? even : odd;
-    }
-
-    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite colour or a size <= 0.
-    constexpr void validate() const
-    {
-        detail::require_non_negative("Checker even", even);
-        detail::require_non_negative("Checker odd", odd);
-        detail::require_positive("Checker size", size);
-    }
-};
-
-/// A checkerboard in surface coordinates: squares of side `size` in (u, v), `even`
-/// where floor(u/size) + floor(v/size) is even (the square [0, size)^2 is even).
-template <Scalar T = float>
-struct UvChecker {
-    /// The precision of the colours.
-    using scalar_type = T;
-    Rgb<T> even{T(0.8)}; ///< albedo of the even squares
-    Rgb<T> odd{T(0.35)}; ///< albedo of the odd squares
-    T size = T(0.125); ///< side of a square in (u, v)
-
-    /// Checker's cells in the plane (u, v, 0).
-    [[nodiscard]] Rgb<T> albedo(const Vec3<T>&, const Vec2<T>& uv) const noexcept { return Checker<T>{even, odd, size}.albedo({uv.x, uv.y, T(0)}); }
-
-    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite colour or a size <= 0.
-    constexpr void validate() const
-    {
-        detail::require_non_negative("UvChecker even", even);
-        detail::require_non_negative("UvChecker odd", odd);
-        detail::require_positive("UvChecker size", size);
-    }
-};
-
-static_assert(Texture<Solid<float>> && Texture<Checker<double>> && Texture<UvChecker<float>>);
-
-} // namespace prism
-
 // ---- prism/material/diffuse.hpp ----
 // Diffuse: a Lambertian surface with Whitted's (1980) kd (diffuse) and ka (ambient) factors.
 
@@ -13802,6 +14579,294 @@ struct Emissive {
 };
 
 static_assert(Material<Emissive<float>>);
+
+} // namespace prism
+
+// ---- prism/material/phong.hpp ----
+// Phong: the normalised modified Phong model (Lafortune and Willems 1994), the glossy
+// surface of the classic photon-mapping and bidirectional test scenes. A Lambertian
+// part kd / pi and a lobe about the mirror direction, ks (n + 2) / 2 pi cos^n alpha,
+// whose albedo at normal incidence is ks and less elsewhere: with kd + ks <= 1 it never
+// reflects more than arrives. Unlike Diffuse's `phong` (POV-Ray's highlight, seen only
+// from the lights), its lobe reflects every light, the lights' and the scene's.
+
+
+#include <cmath>
+#include <optional>
+
+namespace prism {
+
+/// The modified Phong lobe at one point: f = kd / pi + ks (n + 2) / 2 pi cos^n alpha
+/// for wo and wi above the surface, alpha the angle between wi and wo's mirror.
+/// Sampled by its two parts, each with the probability of its largest channel's share.
+template <Scalar T>
+struct PhongLobe {
+    /// The precision of the lobe.
+    using scalar_type = T;
+
+    Rgb<T> kd; ///< the Lambertian part's albedo
+    Rgb<T> ks; ///< the glossy part's albedo at normal incidence
+    T exponent; ///< n: the lobe's sharpness
+
+    /// Never a mirror.
+    [[nodiscard]] static constexpr bool smooth() noexcept { return false; }
+
+    /// The BRDF for wo and wi above the surface (0 otherwise).
+    [[nodiscard]] Rgb<T> f(const Vec3<T>& wo, const Vec3<T>& wi, Transport = Transport::radiance) const noexcept
+    {
+        if (!(wo.z > T(0)) || !(wi.z > T(0))) return Rgb<T>(T(0));
+        return kd / pi<T> + ks * ((exponent + T(2)) / (T(2) * pi<T>) * lobe(wo, wi));
+    }
+
+    /// The density of sample over the directions above the surface.
+    [[nodiscard]] T pdf(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept
+    {
+        if (!(wo.z > T(0)) || !(wi.z > T(0))) return T(0);
+        const T p = glossy_share();
+        return (T(1) - p) * wi.z / pi<T> + p * (exponent + T(1)) / (T(2) * pi<T>) * lobe(wo, wi);
+    }
+
+    /// A direction: with the glossy share's probability one of density
+    /// (n + 1) / 2 pi cos^n alpha about the mirror direction (none where it falls below
+    /// the surface), else a cosine-distributed one.
+    [[nodiscard]] std::optional<LobeSample<T>> sample(const Vec3<T>& wo, T u_lobe, T u1, T u2, Transport mode = Transport::radiance) const noexcept
+    {
+        if (!(wo.z > T(0))) return std::nullopt;
+        const T p = glossy_share();
+        Vec3<T> wi;
+        if (u_lobe < p) {
+            const T cos_a = std::pow(u1, T(1) / (exponent + T(1)));
+            const T sin_a = std::sqrt(std::max(T(0), T(1) - cos_a * cos_a)), phi = T(2) * pi<T> * u2;
+            const Vec3<T> mirror{-wo.x, -wo.y, wo.z};
+            const auto [s, t] = orthonormal_frame(mirror);
+            wi = sin_a * std::cos(phi) * s + sin_a * std::sin(phi) * t + cos_a * mirror;
+        } else {
+            wi = cosine_direction(u1, u2);
+        }
+        const T density = pdf(wo, wi);
+        if (!(density > T(0))) return std::nullopt;
+        return LobeSample<T>{wi, f(wo, wi, mode) * (wi.z / density), density, false};
+    }
+
+    /// The glossy part's albedo for wo, ks (n + 2) / (n + 1) times the mean cosine of
+    /// its directions above the surface over 4 x 4 of them at the centres of a grid:
+    /// what a Whitted mirror ray carries for it.
+    [[nodiscard]] Rgb<T> mirror_albedo(const Vec3<T>& wo) const noexcept
+    {
+        const Vec3<T> mirror{-wo.x, -wo.y, wo.z};
+        const auto [s, t] = orthonormal_frame(mirror);
+        T sum = T(0);
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) {
+                const T cos_a = std::pow((T(i) + T(0.5)) / T(4), T(1) / (exponent + T(1)));
+                const T sin_a = std::sqrt(std::max(T(0), T(1) - cos_a * cos_a)), phi = T(2) * pi<T> * (T(j) + T(0.5)) / T(4);
+                const T z = dot(sin_a * std::cos(phi) * s + sin_a * std::sin(phi) * t + cos_a * mirror, Vec3<T>(T(0), T(0), T(1)));
+                sum += std::max(z, T(0));
+            }
+        return ks * ((exponent + T(2)) / (exponent + T(1)) * sum / T(16));
+    }
+
+private:
+    /// cos^n of the angle between wi and wo's mirror, 0 beyond 90 degrees.
+    [[nodiscard]] T lobe(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept
+    {
+        const T cos_a = -wo.x * wi.x - wo.y * wi.y + wo.z * wi.z;
+        return cos_a > T(0) ? std::pow(cos_a, exponent) : T(0);
+    }
+
+    /// The probability of drawing from the glossy part: its largest channel's share.
+    [[nodiscard]] T glossy_share() const noexcept
+    {
+        const T d = max_component(kd), s = max_component(ks);
+        return d + s > T(0) ? s / (d + s) : T(0);
+    }
+};
+
+/// A glossy surface by the normalised modified Phong model: a Lambertian part of
+/// albedo `diffuse` (a texture) and a lobe of albedo `specular` and exponent `exponent`
+/// about the mirror direction. Keep diffuse + specular <= 1 in every channel for a
+/// surface that reflects no more than arrives (checked where the albedo is Solid).
+template <Scalar T = float, Texture Albedo = Solid<T>>
+struct Phong {
+    /// The precision of the material.
+    using scalar_type = T;
+    /// Its Lambertian part lives in the glossy lobe, which is sampled as one.
+    static constexpr bool has_diffuse = false;
+    /// No delta mirror.
+    static constexpr bool reflects = false;
+    /// Transmits nothing.
+    static constexpr bool transmits = false;
+    /// A glossy lobe: modified Phong.
+    static constexpr bool has_glossy = true;
+
+    Albedo diffuse{}; ///< the Lambertian part's albedo (Solid, Checker, UvChecker or the user's)
+    Rgb<T> specular{T(0.2)}; ///< the glossy part's albedo at normal incidence
+    T exponent = T(40); ///< the lobe's exponent n (0: a second Lambertian part)
+
+    /// The lobe at a point.
+    [[nodiscard]] constexpr PhongLobe<T> glossy(const GlossyQuery<T>& q) const noexcept
+    {
+        return {albedo_at(diffuse, q.point, q.uv), specular, exponent};
+    }
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad albedo, a specular
+    /// albedo outside [0, 1], a negative or non-finite exponent, or (with a Solid albedo)
+    /// diffuse + specular above 1 in a channel.
+    constexpr void validate() const
+    {
+        diffuse.validate();
+        detail::require_non_negative("Phong specular", specular);
+        if (!(max_component(specular) <= T(1))) detail::throw_invalid("Phong specular must be <= 1 in every channel, got ", detail::describe(specular));
+        detail::require_non_negative("Phong exponent", exponent);
+        if constexpr (std::same_as<Albedo, Solid<T>>) {
+            if (!(max_component(diffuse.color + specular) <= T(1)))
+                detail::throw_invalid("Phong diffuse + specular must be <= 1 in every channel (energy), got ", detail::describe(diffuse.color + specular));
+        }
+    }
+};
+
+static_assert(Material<Phong<float>>);
+
+} // namespace prism
+
+// ---- prism/material/rough_conductor.hpp ----
+// RoughConductor: a metal whose surface is a field of tiny mirrors, Trowbridge-Reitz
+// (GGX) distributed, each reflecting by the Fresnel policy of a Conductor (Cook and
+// Torrance 1982; Walter et al. 2007), sampled by the normals the viewer sees (Heitz 2018).
+
+
+#include <cmath>
+#include <optional>
+
+namespace prism {
+
+/// The microfacet reflection lobe f = D(m) F(wo.m) G(wo, wi) / (4 cos_o cos_i), m the
+/// half vector, with F a conductor's Fresnel policy (ConstantKr, ComplexIor,
+/// MeasuredConductor): it keeps F's per-channel reflectance where each facet mirrors.
+/// Single scattering: light that would reflect twice among the facets is lost, which
+/// at roughness 1 is about a third of it at grazing angles (tests/material/rough_conductor.cpp).
+/// A smooth distribution (TrowbridgeReitz::smooth) is the mirror of Conductor.
+template <Scalar T, class Fresnel>
+class MicrofacetReflection {
+public:
+    /// The precision of the lobe.
+    using scalar_type = T;
+
+    /// The lobe of `distribution` with the facets' Fresnel policy (kept by reference: the material's).
+    constexpr MicrofacetReflection(TrowbridgeReitz<T> distribution, const Fresnel& fresnel) noexcept
+        : distribution_(distribution), fresnel_(&fresnel)
+    {
+    }
+
+    /// Whether the surface is a mirror.
+    [[nodiscard]] constexpr bool smooth() const noexcept { return distribution_.smooth(); }
+
+    /// The BRDF for wo and wi both above the surface (0 otherwise, and for a mirror).
+    [[nodiscard]] Rgb<T> f(const Vec3<T>& wo, const Vec3<T>& wi, Transport = Transport::radiance) const noexcept
+    {
+        if (smooth() || !(wo.z > T(0)) || !(wi.z > T(0))) return Rgb<T>(T(0));
+        const Vec3<T> h = wo + wi;
+        if (!(length_squared(h) > T(0))) return Rgb<T>(T(0));
+        const Vec3<T> m = normalize(h);
+        const T scale = distribution_.d(m) * distribution_.g(wo, wi) / (T(4) * wo.z * wi.z);
+        return scale < infinity<T> ? fresnel_->reflectance(std::abs(dot(wo, m))) * scale : Rgb<T>(T(0));
+    }
+
+    /// The density of sample: the visible normals' density D_wo(m) / (4 wo.m).
+    [[nodiscard]] T pdf(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept
+    {
+        if (smooth() || !(wo.z > T(0)) || !(wi.z > T(0))) return T(0);
+        const Vec3<T> h = wo + wi;
+        if (!(length_squared(h) > T(0))) return T(0);
+        const Vec3<T> m = normalize(h);
+        const T pdf = distribution_.visible_d(wo, m) / (T(4) * dot(wo, m));
+        return pdf < infinity<T> ? pdf : T(0);
+    }
+
+    /// A direction for wo: a visible normal m, wi wo's mirror about it; its weight is
+    /// F G(wo, wi) / G1(wo). Nothing where wi falls below the surface. A mirror reflects
+    /// about z as a delta.
+    [[nodiscard]] std::optional<LobeSample<T>> sample(const Vec3<T>& wo, T, T u1, T u2, Transport = Transport::radiance) const noexcept
+    {
+        if (!(wo.z > T(0))) return std::nullopt;
+        if (smooth()) return LobeSample<T>{{-wo.x, -wo.y, wo.z}, fresnel_->reflectance(wo.z), T(0), true};
+        const Vec3<T> m = distribution_.sample_visible(wo, u1, u2);
+        const T cos_om = dot(wo, m);
+        if (!(cos_om > T(0))) return std::nullopt;
+        const Vec3<T> wi = T(2) * cos_om * m - wo;
+        if (!(wi.z > T(0))) return std::nullopt;
+        const T pdf = distribution_.visible_d(wo, m) / (T(4) * cos_om);
+        if (!(pdf > T(0) && pdf < infinity<T>)) return std::nullopt;
+        const T weight = distribution_.g(wo, wi) / distribution_.g1(wo);
+        return LobeSample<T>{wi, fresnel_->reflectance(cos_om) * weight, pdf, false};
+    }
+
+    /// A mirror's reflection (its whole weight F); nothing for a rough surface.
+    [[nodiscard]] std::optional<LobeSample<T>> delta_part(const Vec3<T>& wo) const noexcept
+    {
+        if (!smooth()) return std::nullopt;
+        return LobeSample<T>{{-wo.x, -wo.y, wo.z}, fresnel_->reflectance(wo.z), T(0), true};
+    }
+
+    /// The lobe's albedo for wo, F G(wo, wi) / G1(wo) averaged over 4 x 4 visible
+    /// normals at the centres of a grid: what a Whitted mirror ray carries for it.
+    [[nodiscard]] Rgb<T> mirror_albedo(const Vec3<T>& wo) const noexcept
+    {
+        if (smooth()) return fresnel_->reflectance(wo.z);
+        Rgb<T> sum{T(0)};
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+                if (const auto s = sample(wo, T(0), (T(i) + T(0.5)) / T(4), (T(j) + T(0.5)) / T(4))) sum += s->weight;
+        return sum / T(16);
+    }
+
+private:
+    TrowbridgeReitz<T> distribution_;
+    const Fresnel* fresnel_;
+};
+
+/// A rough metal: microfacets of Trowbridge-Reitz roughness (alpha = roughness^2,
+/// isotropic or along the frame's two tangents) reflecting by the Fresnel policy of a
+/// Conductor (ConstantKr, ComplexIor, MeasuredConductor). At roughness below about
+/// 0.03 (alpha below TrowbridgeReitz::smooth_alpha) it is the mirror Conductor.
+template <Scalar T = float, class Fresnel = ConstantKr<T>>
+struct RoughConductor {
+    /// The precision of the material.
+    using scalar_type = T;
+    /// No Lambertian lobe.
+    static constexpr bool has_diffuse = false;
+    /// No delta mirror (its mirror, when smooth, is the glossy lobe's delta sample).
+    static constexpr bool reflects = false;
+    /// Transmits nothing.
+    static constexpr bool transmits = false;
+    /// A glossy lobe: microfacet reflection.
+    static constexpr bool has_glossy = true;
+
+    Fresnel fresnel{}; ///< each facet's reflectance: ConstantKr, ComplexIor, MeasuredConductor or the user's
+    Roughness<T> roughness{}; ///< roughness, alpha = roughness^2
+
+    /// The lobe at a point.
+    [[nodiscard]] constexpr MicrofacetReflection<T, Fresnel> glossy(const GlossyQuery<T>&) const noexcept
+    {
+        return {TrowbridgeReitz<T>::from(roughness), fresnel};
+    }
+
+    /// Throws std::invalid_argument, naming the parameter, for a roughness outside [0, 1] or a bad Fresnel policy.
+    constexpr void validate() const
+    {
+        roughness.validate("RoughConductor");
+        fresnel.validate();
+    }
+};
+
+/// A rough metal with a measured spectral index, e.g. rough_metal<float>(metals::gold, 0.3).
+template <Scalar T = float>
+[[nodiscard]] RoughConductor<T, MeasuredConductor<T>> rough_metal(const metals::MeasuredIndex& index, Roughness<T> roughness)
+{
+    return {MeasuredConductor<T>(index), roughness};
+}
+template <Scalar T = float>
+RoughConductor<T, MeasuredConductor<T>> rough_metal(const metals::MeasuredIndex&&, Roughness<T>) = delete; // it would dangle
 
 } // namespace prism
 

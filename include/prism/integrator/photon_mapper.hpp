@@ -287,10 +287,10 @@ private:
                 radiance.indirect = config_.gather_rays > 0 ? gather_glossy(lobe, hit, rng, media.empty())
                                                             : Rgb<T>(maps_.global.radiance(p, nf, config_.global, reflected_by(lobe)));
             }
-            // The lobe's delta part (a mirror, a smooth coat's reflection): one draw, followed where it is a delta.
+            // The lobe's delta part (a mirror, a smooth coat's reflection), followed as a mirror is.
             if (depth < config_.max_depth) {
-                const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
-                if (s && s->delta && max_component(weight * s->weight) > config_.min_weight)
+                const std::optional<LobeSample<T>> s = lobe.delta_part();
+                if (s && max_component(weight * s->weight) > config_.min_weight)
                     radiance += s->weight * trace(spawn_ray(hit.point, hit.error, hit.normal, s->wi), depth + 1, weight * s->weight, rng, wavelength, media);
             }
         }

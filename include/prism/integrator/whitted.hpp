@@ -144,9 +144,12 @@ private:
             for_each_light_arriving(*scene_, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
                 radiance += lobe.f(s.wi, Transport::radiance) * v * s.irradiance * cos;
             });
-            const Rgb<T> k = lobe.mirror_albedo();
+            // (A delta part, a mirror's or a smooth coat's, is that mirror ray exactly.)
+            const std::optional<LobeSample<T>> delta = lobe.delta_part();
+            const Rgb<T> k = delta ? delta->weight : lobe.mirror_albedo();
             if (depth < config_.max_depth && max_component(weight * k) > config_.min_weight)
-                radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, lobe.mirror()), depth + 1, weight * k, wavelength, media, jitter...);
+                radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, delta ? delta->wi : lobe.mirror()), depth + 1, weight * k, wavelength, media,
+                                      jitter...);
         }
 
         if constexpr (reflects<M> || transmits<M>) {

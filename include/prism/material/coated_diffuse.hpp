@@ -158,6 +158,13 @@ public:
         return LobeSample<T>{wi, f(wo, wi, mode) * (wi.z / density), density, false};
     }
 
+    /// A smooth coat's reflection (its whole weight F); nothing for a rough coat.
+    [[nodiscard]] std::optional<LobeSample<T>> delta_part(const Vec3<T>& wo) const noexcept
+    {
+        if (!ggx_.smooth()) return std::nullopt;
+        return LobeSample<T>{{-wo.x, -wo.y, wo.z}, Rgb<T>(fresnel_dielectric(wo.z, eta_)), T(0), true};
+    }
+
     /// The coat's albedo for wo, 1 - T(wo.z): what a Whitted mirror ray carries for it.
     [[nodiscard]] Rgb<T> mirror_albedo(const Vec3<T>& wo) const noexcept { return Rgb<T>(T(1) - transmission_->at(wo.z)); }
 

@@ -74,6 +74,13 @@ public:
         return LobeSample<T>{wi, fresnel_->reflectance(cos_om) * weight, pdf, false};
     }
 
+    /// A mirror's reflection (its whole weight F); nothing for a rough surface.
+    [[nodiscard]] std::optional<LobeSample<T>> delta_part(const Vec3<T>& wo) const noexcept
+    {
+        if (!smooth()) return std::nullopt;
+        return LobeSample<T>{{-wo.x, -wo.y, wo.z}, fresnel_->reflectance(wo.z), T(0), true};
+    }
+
     /// The lobe's albedo for wo, F G(wo, wi) / G1(wo) averaged over 4 x 4 visible
     /// normals at the centres of a grid: what a Whitted mirror ray carries for it.
     [[nodiscard]] Rgb<T> mirror_albedo(const Vec3<T>& wo) const noexcept

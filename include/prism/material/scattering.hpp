@@ -370,6 +370,24 @@ public:
         return agree(wi, local) ? lobe_.pdf(wo_, local) : T(0);
     }
 
+    /// The lobe's delta part, where it has one (a smooth surface's mirror, a smooth
+    /// coat's reflection: a lobe's `delta_part(wo)`): its direction (world) and its whole
+    /// weight, not divided by any probability of drawing it, for the estimators that
+    /// follow it every time (Whitted, the photon mapper's camera rays).
+    [[nodiscard]] std::optional<LobeSample<T>> delta_part() const noexcept
+    {
+        if constexpr (requires { { lobe_.delta_part(wo_) } -> std::same_as<std::optional<LobeSample<T>>>; }) {
+            std::optional<LobeSample<T>> s = wo_.z > T(0) ? lobe_.delta_part(wo_) : std::nullopt;
+            if (!s) return std::nullopt;
+            const Vec3<T> wi = frame_.to_world(s->wi);
+            if (!agree(wi, s->wi)) return std::nullopt;
+            s->wi = wi;
+            return s;
+        } else {
+            return std::nullopt;
+        }
+    }
+
     /// The albedo of the lobe's part about the mirror direction of the arriving path,
     /// which Whitted follows as one mirror ray (a lobe's `mirror_albedo(wo)`; none for a
     /// lobe without one).
