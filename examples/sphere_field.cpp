@@ -3,6 +3,7 @@
 // with a few large mirror balls among them: two ObjectArray slots, each found through its
 // own Bvh, so a ray costs about log N tests, not N (Whitted: sun, sky, mirrors).
 #include "cli.hpp"
+#include "scenes/sphere_field.hpp"
 
 #include <prism/prism.hpp>
 
@@ -17,30 +18,7 @@ int main(int argc, char** argv)
         options.render.height = 360;
         options.render.spp = 4;
         if (!examples::parse(argc, argv, options, "a field of 10^5 balls and some mirror balls, each array found through its own Bvh (Whitted)")) return 0;
-        // Balls on a jittered 316 x 316 grid, 0.25 apart, resting on the plain.
-        Pcg32 rng(2026u, 14u);
-        ObjectArray<Sphere<T>, Diffuse<T>> balls;
-        constexpr int side = 316;
-        balls.items.reserve(std::size_t(side) * side);
-        for (int j = 0; j < side; ++j)
-            for (int i = 0; i < side; ++i) {
-                const T r = T(0.04) + T(0.06) * rng.uniform<T>();
-                const T x = T(0.25) * (T(i) - T(side) / 2 + T(0.6) * rng.uniform<T>() - T(0.3));
-                const T z = T(0.25) * (T(j) + T(0.6) * rng.uniform<T>() - T(0.3)) - T(4);
-                const T hue = rng.uniform<T>();
-                const Rgb<T> albedo{T(0.5) + T(0.35) * std::cos(T(6.283) * hue), T(0.5) + T(0.35) * std::cos(T(6.283) * (hue - T(0.33))),
-                                    T(0.5) + T(0.35) * std::cos(T(6.283) * (hue - T(0.67)))};
-                balls.items.emplace_back(Sphere<T>({x, r, z}, r), Diffuse<T>{.albedo = {.color = albedo}});
-            }
-        ObjectArray<Sphere<T>, Mirror<T>> mirrors;
-        for (int k = 0; k < 12; ++k) {
-            const T r = T(0.5) + T(0.5) * rng.uniform<T>();
-            mirrors.items.emplace_back(Sphere<T>({T(14) * rng.uniform<T>() - T(7), r, T(3) + T(30) * rng.uniform<T>()}, r), Mirror<T>{.fresnel = {.kr = Rgb<T>(T(0.85))}});
-        }
-        Scene scene{Lights{DirectionalLight<T>{.direction = {T(-0.4), T(-0.7), T(0.5)}, .irradiance = Rgb<T>(T(2.6))}},
-                    Object{Plane<T>({0, 1, 0}, 0), Diffuse<T>{.albedo = {.color = Rgb<T>(T(0.35), T(0.33), T(0.3))}}}, std::move(balls), std::move(mirrors)};
-        scene.background = Rgb<T>(T(0.55), T(0.7), T(0.95));
-        scene.ambient = Rgb<T>(T(0.08));
+        const auto scene = scenes::sphere_field_scene();
         const Camera<T> camera{.position = {0, T(1.6), T(-6)}, .look_at = {0, T(0.2), T(6)}, .up = {0, 1, 0}, .fov = 50};
         const Whitted integrator(scene, {.max_depth = 6});
         examples::save(examples::timed_render("sphere_field", camera, integrator, options), options);

@@ -110,67 +110,75 @@ Film cut(const Film& film, PixelWindow w)
 
 } // namespace
 
-TEST_CASE("a crop window is the same bits as those pixels of the whole render")
+TEST_CASE("a crop window is the same bits as those pixels of the whole render, through a pinhole or a thin lens")
 {
     const auto scene = busy_scene();
     const Whitted integrator(scene);
-    const Camera<float> camera{.position = {0, 2, 6}, .look_at = {0, 1, 0}, .fov = 50};
-    RenderConfig config{.width = 61, .height = 43, .spp = 3, .threads = 2, .seed = 9, .progress = false, .tile_size = 8};
-    const Film whole = render(camera, integrator, config);
-    for (const PixelWindow w : {PixelWindow{0, 0, 61, 43}, PixelWindow{0, 0, 1, 1}, PixelWindow{60, 42, 61, 43}, PixelWindow{13, 7, 50, 31},
-                                PixelWindow{5, 0, 6, 43}, PixelWindow{0, 20, 61, 21}}) {
-        config.crop = w;
-        for (unsigned threads : {1u, 3u}) {
-            config.threads = threads;
-            const Film crop = render(camera, integrator, config);
-            CHECK(crop.width() == w.width());
-            CHECK(crop.height() == w.height());
-            CHECK(same_bits(crop, cut(whole, w)));
+    // A pinhole camera, and a thin lens whose rays draw their lens points from the sample's stream.
+    for (const float aperture : {0.0f, 0.15f}) {
+        CAPTURE(aperture);
+        const Camera<float> camera{.position = {0, 2, 6}, .look_at = {0, 1, 0}, .fov = 50, .aperture_radius = aperture};
+        RenderConfig config{.width = 61, .height = 43, .spp = 3, .threads = 2, .seed = 9, .progress = false, .tile_size = 8};
+        const Film whole = render(camera, integrator, config);
+        for (const PixelWindow w : {PixelWindow{0, 0, 61, 43}, PixelWindow{0, 0, 1, 1}, PixelWindow{60, 42, 61, 43}, PixelWindow{13, 7, 50, 31},
+                                    PixelWindow{5, 0, 6, 43}, PixelWindow{0, 20, 61, 21}}) {
+            config.crop = w;
+            for (unsigned threads : {1u, 3u}) {
+                config.threads = threads;
+                const Film crop = render(camera, integrator, config);
+                CHECK(crop.width() == w.width());
+                CHECK(crop.height() == w.height());
+                CHECK(same_bits(crop, cut(whole, w)));
+            }
         }
     }
 }
 
-TEST_CASE("renders of disjoint sample ranges and crops add up to the whole render, bit for bit")
+TEST_CASE("renders of disjoint sample ranges and crops add up to the whole render, bit for bit, through a pinhole or a thin lens")
 {
     const auto scene = busy_scene();
     const Whitted integrator(scene);
-    const Camera<float> camera{.position = {0, 2, 6}, .look_at = {0, 1, 0}, .fov = 50};
-    const RenderConfig config{.width = 40, .height = 30, .spp = 7, .threads = 2, .seed = 5, .progress = false};
-    const Film whole = render(camera, integrator, config);
-    // Samples [0, 2), [2, 3) and [3, 7), on other thread counts, the last in two crops,
-    // added in an order of their own.
-    Accumulation sums(40, 30, PixelWindow::whole(40, 30));
-    RenderConfig part = config;
-    part.passes = {3, 7};
-    part.threads = 1;
-    part.crop = {0, 0, 40, 11};
-    sums += render_sums(camera, integrator, part);
-    part.crop = {0, 11, 40, 30};
-    sums += render_sums(camera, integrator, part);
-    part.crop = {};
-    part.passes = {0, 2};
-    part.threads = 3;
-    render_into(sums, camera, integrator, part);
-    part.passes = {2, 3};
-    sums += render_sums(camera, integrator, part);
-    CHECK(sums.weight(0, 0) == 7);
-    CHECK(sums.weight(39, 29) == 7);
-    CHECK(same_bits(sums.image(), whole));
-    CHECK(same_bits(render_sums(camera, integrator, config).image(), whole));
+    // A pinhole camera, and a thin lens whose rays draw their lens points from the sample's stream.
+    for (const float aperture : {0.0f, 0.15f}) {
+        CAPTURE(aperture);
+        const Camera<float> camera{.position = {0, 2, 6}, .look_at = {0, 1, 0}, .fov = 50, .aperture_radius = aperture};
+        const RenderConfig config{.width = 40, .height = 30, .spp = 7, .threads = 2, .seed = 5, .progress = false};
+        const Film whole = render(camera, integrator, config);
+        // Samples [0, 2), [2, 3) and [3, 7), on other thread counts, the last in two crops,
+        // added in an order of their own.
+        Accumulation sums(40, 30, PixelWindow::whole(40, 30));
+        RenderConfig part = config;
+        part.passes = {3, 7};
+        part.threads = 1;
+        part.crop = {0, 0, 40, 11};
+        sums += render_sums(camera, integrator, part);
+        part.crop = {0, 11, 40, 30};
+        sums += render_sums(camera, integrator, part);
+        part.crop = {};
+        part.passes = {0, 2};
+        part.threads = 3;
+        render_into(sums, camera, integrator, part);
+        part.passes = {2, 3};
+        sums += render_sums(camera, integrator, part);
+        CHECK(sums.weight(0, 0) == 7);
+        CHECK(sums.weight(39, 29) == 7);
+        CHECK(same_bits(sums.image(), whole));
+        CHECK(same_bits(render_sums(camera, integrator, config).image(), whole));
 
-    // Sample s is the same whichever samples go with it: one sample alone is the whole
-    // render at spp = 1 only where the render's samples are the same, so compare the
-    // sums of [0, 1) with [0, 1) taken in a render of [0, 4).
-    part = config;
-    part.passes = {1, 2};
-    const Accumulation second = render_sums(camera, integrator, part);
-    part.passes = {0, 2};
-    Accumulation both = render_sums(camera, integrator, part);
-    part.passes = {0, 1};
-    Accumulation first = render_sums(camera, integrator, part);
-    first += second;
-    for (int y = 0; y < 30; ++y)
-        for (int x = 0; x < 40; ++x) REQUIRE(std::equal(first.sums(x, y).begin(), first.sums(x, y).end(), both.sums(x, y).begin()));
+        // Sample s is the same whichever samples go with it: one sample alone is the whole
+        // render at spp = 1 only where the render's samples are the same, so compare the
+        // sums of [0, 1) with [0, 1) taken in a render of [0, 4).
+        part = config;
+        part.passes = {1, 2};
+        const Accumulation second = render_sums(camera, integrator, part);
+        part.passes = {0, 2};
+        Accumulation both = render_sums(camera, integrator, part);
+        part.passes = {0, 1};
+        Accumulation first = render_sums(camera, integrator, part);
+        first += second;
+        for (int y = 0; y < 30; ++y)
+            for (int x = 0; x < 40; ++x) REQUIRE(std::equal(first.sums(x, y).begin(), first.sums(x, y).end(), both.sums(x, y).begin()));
+    }
 }
 
 TEST_CASE("a crop or a sample range outside the image is refused with its values")

@@ -3,7 +3,9 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 using prism::Camera;
 using prism::Vec3;
@@ -47,4 +49,49 @@ TEST_CASE("a camera whose look_at is 3e38 or 1e-44 away still looks there")
     // The reason given for a truly parallel up is still that one.
     const prism::Camera<float> parallel{.position = {0, 0, 0}, .look_at = {0, 5, 0}};
     CHECK_THROWS_WITH_AS(parallel.validate(), doctest::Contains("parallel"), std::invalid_argument);
+}
+
+TEST_CASE("a thin lens: a point on the plane in focus images to a point, and elsewhere to the thin-lens formula's circle of confusion")
+{
+    // Lens radius 0.1, focused at 5 along the view direction (-z). A point P in focus: every
+    // ray through P's image position, from any lens point, passes through P.
+    const Camera<double> camera{.position = {0, 0, 0}, .look_at = {0, 0, -3}, .fov = 50, .aperture_radius = 0.1, .focus_distance = 5.0};
+    const auto rays = camera.rays(400, 300);
+    const Vec3<double> p{0.7, -0.4, -5};
+    const auto centre = rays.project(p);
+    REQUIRE(centre);
+    for (const auto [u, v] : {std::pair{0.1, 0.2}, std::pair{0.9, 0.5}, std::pair{0.5, 0.95}, std::pair{1.0, 0.0}}) {
+        const prism::Ray<double> ray = rays.ray(centre->x, centre->y, u, v);
+        CHECK(prism::length(ray.origin - rays.origin) == doctest::Approx(0.1 * std::sqrt(u)));
+        const Vec3<double> to_p = p - ray.origin;
+        CHECK(prism::length(prism::cross(to_p, ray.direction)) == doctest::Approx(0).epsilon(1e-12)); // on the ray
+        // And a light path joined at that lens point finds the same image position.
+        const auto seen = rays.project(p, ray.origin);
+        REQUIRE(seen);
+        CHECK(seen->x == doctest::Approx(centre->x));
+        CHECK(seen->y == doctest::Approx(centre->y));
+    }
+    // At depth z the images from the lens's rim spread over a circle of diameter
+    // 2 r |1 / f - 1 / z| on the image plane one unit ahead (the thin-lens formula,
+    // A |z - f| / z scaled by the image distance over f), in pixels over |pixel_right|.
+    for (const double z : {2.0, 3.5, 9.0, 40.0}) {
+        const Vec3<double> q{0.2 * z / 5, 0.1 * z / 5, -z};
+        const double expected = 2 * 0.1 * std::abs(1 / 5.0 - 1 / z) / prism::length(rays.pixel_right);
+        double widest = 0;
+        for (int k = 0; k < 360; ++k) {
+            const auto a = rays.project(q, rays.lens_point(1.0, k / 360.0)), b = rays.project(q, rays.lens_point(1.0, k / 360.0 + 0.5));
+            REQUIRE(a);
+            REQUIRE(b);
+            widest = std::max(widest, std::hypot(a->x - b->x, a->y - b->y));
+        }
+        CAPTURE(z);
+        CHECK(widest == doctest::Approx(expected).epsilon(1e-6));
+    }
+    // Focused at look_at without a distance; a pinhole has no lens and draws none.
+    const Camera<double> at_look{.position = {0, 0, 0}, .look_at = {0, 0, -3}, .aperture_radius = 0.1};
+    CHECK(at_look.rays(8, 8).focus == doctest::Approx(3));
+    CHECK_FALSE(Camera<double>{}.rays(8, 8).thin_lens());
+    CHECK_THROWS_WITH_AS((Camera<float>{.aperture_radius = -1}.validate()), doctest::Contains("Camera aperture_radius"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((Camera<float>{.aperture_radius = 0.1f, .focus_distance = 0.0f}.validate()), doctest::Contains("Camera focus_distance"),
+                         std::invalid_argument);
 }

@@ -115,9 +115,15 @@ public:
                 if (!at.first_specular) return false;
                 const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
                 const Crossing<T>& c = at.crossing();
-                const auto seen = rays.project(c.point);
+                // A thin lens: a point of it drawn uniformly, seen as a pinhole there sees.
+                Vec3<T> eye = rays.origin;
+                if (rays.thin_lens()) {
+                    const T u = at.rng.template uniform<T>(), v = at.rng.template uniform<T>();
+                    eye = rays.lens_point(u, v);
+                }
+                const auto seen = rays.thin_lens() ? rays.project(c.point, eye) : rays.project(c.point);
                 if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return go_on;
-                const Vec3<T> to_camera = (rays.origin - c.point) / seen->distance;
+                const Vec3<T> to_camera = (eye - c.point) / seen->distance;
                 const T cos_x = dot(c.facing_normal(), to_camera);
                 if (!(cos_x > T(0))) return go_on; // the camera sees the other side
                 const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),

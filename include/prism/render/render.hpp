@@ -190,7 +190,13 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
                 for (std::uint64_t s = samples.first; s < samples.last; ++s) {
                     Pcg32 rng(sample_seed(config.seed, s), pixel);
                     const auto [dx, dy] = pixel_sample<T>(int(s), config.spp, rng, config.single_sample_at_centre);
-                    rejected += sample(rays.ray(T(x) + dx, T(y) + dy), rng, sum);
+                    if (rays.thin_lens()) {
+                        // The lens point from the sample's own stream, after the pixel's (a pinhole draws none).
+                        const T u = rng.uniform<T>(), v = rng.uniform<T>();
+                        rejected += sample(rays.ray(T(x) + dx, T(y) + dy, u, v), rng, sum);
+                    } else {
+                        rejected += sample(rays.ray(T(x) + dx, T(y) + dy), rng, sum);
+                    }
                 }
                 store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
             }

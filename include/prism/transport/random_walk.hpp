@@ -44,6 +44,7 @@ struct WalkVertex {
     const Vec3<T>& last_point; ///< where the path last scattered (or started)
     T last_pdf;               ///< the solid-angle density of the last scattering's non-delta lobe (a diffuse one's cos / pi); 0 after a delta one or at the start
     bool last;                ///< the walk ends after this surface (its depth limit): nothing it scatters is followed
+    Pcg32& rng;               ///< the walk's stream, for a caller that draws at the vertex (a thin lens's point)
 
     /// Where the walk met the surface, with its normal and side.
     [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
@@ -122,7 +123,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             attenuate_segment(scene, media, material, c, segment, power);
             const bool last = bounce == max_bounces;
             if constexpr (emits<M>)
-                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last});
+                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng});
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
                 return Next::absorbed; // a lamp that only emits
             } else {
@@ -130,7 +131,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             // (A glossy lobe that is a mirror has no vertex of its own.)
             if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
                 const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
-                                                                      last_point, last_pdf, last});
+                                                                      last_point, last_pdf, last, rng});
                 if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
                 else lobes = go_on;
                 if (lobes == Lobes::none) return Next::absorbed;
