@@ -6,11 +6,13 @@
 # between the two means is compared with what that noise alone explains. Writes
 # bench/results/cycles_agreement.csv and cycles_vs_prism.png (prism | Cycles | 8x difference).
 #
-# usage: bench/cycles_agreement.py BUILD_DIR [--spp-prism 4096] [--spp-cycles 1024] [--size 256] [--area | --sky]
+# usage: bench/cycles_agreement.py BUILD_DIR [--spp-prism 4096] [--spp-cycles 1024] [--size 256] [--area | --sky | --sky-glossy]
 # --area: the box under its ceiling light (an area light) instead of the point light;
 # writes cycles_agreement_area.csv and cycles_vs_prism_area.png.
 # --sky: bench/sky.cpp's spheres under the photographed sky (an EnvironmentMap), Cycles'
 # copy built by bench/cycles_sky.py; writes cycles_agreement_sky.csv and cycles_vs_prism_sky.png.
+# --sky-glossy: the same with rough metal spheres (GGX, roughness 0.4 and 0.15: RoughConductor
+# against Cycles' Glossy BSDF); writes cycles_agreement_sky_glossy.csv and cycles_vs_prism_sky_glossy.png.
 import argparse
 import csv
 import math
@@ -22,16 +24,17 @@ from methods_vs_time import cycles, read_pfm, run
 here = os.path.dirname(os.path.abspath(__file__))
 
 
-def run_sky(build, spp, out, size, seed):
+def run_sky(build, spp, out, size, seed, variant=""):
     """bench_sky's path-traced picture; its seconds."""
-    result = subprocess.run([os.path.join(build, "bench", "bench_sky"), out, str(spp), str(size), str(seed)], capture_output=True, text=True, check=True)
+    result = subprocess.run([os.path.join(build, "bench", "bench_sky"), out, str(spp), str(size), str(seed)] + ([variant] if variant else []),
+                            capture_output=True, text=True, check=True)
     return float(result.stdout.split()[1])
 
 
-def cycles_sky(spp, out, seed, size):
+def cycles_sky(spp, out, seed, size, variant=""):
     """Cycles' picture of the same scene (bench/cycles_sky.py); its render seconds."""
-    subprocess.run(["blender", "-b", "--factory-startup", "--python", os.path.join(here, "cycles_sky.py"), "--", out, str(spp), str(seed), str(size)],
-                   capture_output=True, text=True, check=True)
+    subprocess.run(["blender", "-b", "--factory-startup", "--python", os.path.join(here, "cycles_sky.py"), "--", out, str(spp), str(seed), str(size)] +
+                   ([variant] if variant else []), capture_output=True, text=True, check=True)
     with open(out + ".txt") as f:
         return float(f.read().splitlines()[1].split(",")[1])
 
@@ -44,20 +47,23 @@ def main():
     ap.add_argument("--size", type=int, default=256)
     ap.add_argument("--area", action="store_true", help="the box under its ceiling light (an area light)")
     ap.add_argument("--sky", action="store_true", help="spheres under a photographed sky (an environment map)")
+    ap.add_argument("--sky-glossy", action="store_true", help="rough metal spheres under the photographed sky (GGX)")
     args = ap.parse_args()
-    suffix = "_area" if args.area else "_sky" if args.sky else ""
+    variant = "glossy" if args.sky_glossy else ""
+    args.sky = args.sky or args.sky_glossy
+    suffix = "_area" if args.area else "_sky_glossy" if args.sky_glossy else "_sky" if args.sky else ""
     work = os.path.join(args.build, "cycles_agreement" + suffix)
     os.makedirs(work, exist_ok=True)
     prism, blender, seconds = [], [], {}
     for seed in (1, 2):
         out = os.path.join(work, "prism_%d.pfm" % seed)
         if args.sky:
-            seconds["prism"] = run_sky(args.build, args.spp_prism, out, args.size, seed)
+            seconds["prism"] = run_sky(args.build, args.spp_prism, out, args.size, seed, variant)
         else:
             seconds["prism"] = run(args.build, "area" if args.area else "diffuse", "reference", args.spp_prism, out, args.size, seed)
         prism.append(read_pfm(out)[2])
         out = os.path.join(work, "cycles_%d.pfm" % seed)
-        seconds["cycles"] = cycles_sky(args.spp_cycles, out, seed, args.size) if args.sky else cycles(args.spp_cycles, out, seed, args.size, args.area)
+        seconds["cycles"] = cycles_sky(args.spp_cycles, out, seed, args.size, variant) if args.sky else cycles(args.spp_cycles, out, seed, args.size, args.area)
         blender.append(read_pfm(out)[2])
     n = len(prism[0])
     mean = lambda a, b: [(x + y) / 2 for x, y in zip(a, b)]

@@ -53,15 +53,19 @@ def empty_scene(samples, seed, size):
     return scene
 
 
-def material(name, kind, rgb):
-    """A material of one BSDF, roughness 0: "diffuse" (Lambertian) or "glossy" (a mirror of colour rgb)."""
+def material(name, kind, rgb, roughness=0.0):
+    """A material of one BSDF: "diffuse" (Lambertian) or "glossy" (a mirror of colour rgb,
+    or at a roughness above 0 single-scattering GGX with alpha = roughness^2 and no Fresnel:
+    prism's RoughConductor with ConstantKr)."""
     m = bpy.data.materials.new(name)
     m.use_nodes = True
     nodes = m.node_tree.nodes
     nodes.clear()
     bsdf = nodes.new("ShaderNodeBsdfDiffuse" if kind == "diffuse" else "ShaderNodeBsdfGlossy")
     bsdf.inputs["Color"].default_value = (rgb[0], rgb[1], rgb[2], 1)
-    bsdf.inputs["Roughness"].default_value = 0.0
+    bsdf.inputs["Roughness"].default_value = roughness
+    if kind != "diffuse":
+        bsdf.distribution = "GGX"
     out = nodes.new("ShaderNodeOutputMaterial")
     m.node_tree.links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
     return m

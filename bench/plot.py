@@ -420,6 +420,20 @@ def methods_vs_time_chart(rows):
     save(fig, "methods_vs_time.png")
 
 
+def whitted_glossy_chart(rows):
+    """Whitted's error on a rough metal ball against the roughness (bench/whitted_glossy.cpp)."""
+    r = [float(x["roughness"]) for x in rows]
+    fig, ax = plt.subplots(figsize=(5.6, 4.0))
+    ax.plot(r, [100 * float(x["whitted_error"]) for x in rows], "o-", label="Whitted: one mirror ray with the lobe's albedo")
+    ax.plot(r, [100 * float(x["reference_noise"]) for x in rows], "s--", label="the reference's own noise")
+    ax.set_xlabel("roughness (alpha = roughness²)")
+    ax.set_ylabel("RMS error over the ball, % of its mean")
+    ax.set_title("What Whitted's mirror ray cuts from a glossy lobe")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, "whitted_glossy.png")
+
+
 def main():
     if (rows := read("methods_vs_time.csv")):
         methods_vs_time_chart(rows)
@@ -459,6 +473,8 @@ def main():
         thin_film_chart(rows)
     if (rows := read("ray_property.csv")):
         ray_property_chart(rows, read("ray_property_before.csv"))
+    if (rows := read("whitted_glossy.csv")):
+        whitted_glossy_chart(rows)
 
 
 if __name__ == "__main__":

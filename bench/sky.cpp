@@ -4,7 +4,11 @@
 // sphere on a grey floor, lit by the environment map alone. Writes the path tracer's
 // picture as PFM and prints "seconds S", 2 threads.
 //
-// usage: bench_sky OUT.pfm SPP [SIZE] [SEED]
+// usage: bench_sky OUT.pfm SPP [SIZE] [SEED] [glossy]
+//
+// `glossy`: the spheres rough metals of constant reflectance 0.9 (RoughConductor with
+// ConstantKr, as Cycles' Glossy BSDF: GGX without Fresnel), roughness 0.4 (left) and 0.15
+// (right).
 #include <prism/io/exr.hpp>
 #include <prism/io/image.hpp>
 #include <prism/prism.hpp>
@@ -12,6 +16,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 int main(int argc, char** argv)
 {
@@ -25,14 +30,23 @@ int main(int argc, char** argv)
     const Film image = read_exr(PRISM_ASSET_DIR "/sky/sunrise.exr").film(NegativeValues::to_zero);
     // Turned 150 degrees about +y: the sun low at the left, behind the camera.
     const EnvironmentMap<T> sky(image.width(), image.height(), image.pixels(), {.rotation_degrees = 150});
-    const Scene scene{Lights{sky}, Object{Quad<T>({-5, 0, 5}, {10, 0, 0}, {0, 0, -10}), Diffuse<T>{.albedo = {.color = Rgb<T>(0.5f)}, .kd = 1, .ka = 0}},
-                      Object{Sphere<T>({-0.8f, 0.6f, 0}, 0.6f), Diffuse<T>{.albedo = {.color = Rgb<T>(0.8f)}, .kd = 1, .ka = 0}},
-                      Object{Sphere<T>({0.8f, 0.6f, 0}, 0.6f), Mirror<T>{{.kr = Rgb<T>(0.9f)}}}};
+    const Object floor{Quad<T>({-5, 0, 5}, {10, 0, 0}, {0, 0, -10}), Diffuse<T>{.albedo = {.color = Rgb<T>(0.5f)}, .kd = 1, .ka = 0}};
     const Camera<T> camera{.position = {0, 1.5f, 5}, .look_at = {0, 0.5f, 0}, .up = {0, 1, 0}, .fov = 50};
     const RenderConfig config{.width = size, .height = size, .spp = std::atoi(argv[2]), .threads = 2,
                               .seed = argc > 4 ? std::strtoull(argv[4], nullptr, 10) : 0, .progress = false};
+    const bool glossy = argc > 5 && std::string(argv[5]) == "glossy";
     const auto start = std::chrono::steady_clock::now();
-    const Film film = render(camera, PathTracer(scene), config);
+    Film film(1, 1);
+    if (glossy) {
+        const Scene scene{Lights{sky}, floor,
+                          Object{Sphere<T>({-0.8f, 0.6f, 0}, 0.6f), RoughConductor<T>{.fresnel = {.kr = Rgb<T>(0.9f)}, .roughness = 0.4f}},
+                          Object{Sphere<T>({0.8f, 0.6f, 0}, 0.6f), RoughConductor<T>{.fresnel = {.kr = Rgb<T>(0.9f)}, .roughness = 0.15f}}};
+        film = render(camera, PathTracer(scene), config);
+    } else {
+        const Scene scene{Lights{sky}, floor, Object{Sphere<T>({-0.8f, 0.6f, 0}, 0.6f), Diffuse<T>{.albedo = {.color = Rgb<T>(0.8f)}, .kd = 1, .ka = 0}},
+                          Object{Sphere<T>({0.8f, 0.6f, 0}, 0.6f), Mirror<T>{{.kr = Rgb<T>(0.9f)}}}};
+        film = render(camera, PathTracer(scene), config);
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_pfm(film, argv[1]);
     std::printf("seconds %.3f\n", seconds);
