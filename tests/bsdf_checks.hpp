@@ -10,6 +10,8 @@
 
 #include <prism/material/bsdf.hpp>
 
+#include <doctest/doctest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -171,6 +173,24 @@ inline prism::Vec3<double> polar(double theta_deg, double phi_deg)
 {
     const double t = theta_deg * prism::pi<double> / 180, p = phi_deg * prism::pi<double> / 180;
     return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
+}
+
+/// What every lobe's sampling is held to for wo: the chi-square test (500 000 draws), each
+/// draw's weight and density against f cos / pdf and pdf at its direction (200 000 draws),
+/// and the pdf's mass against the share of draws that land (to `mass_epsilon`). Returns
+/// what the draws found, for the caller's own checks.
+template <class B>
+LobeSampling check_lobe_sampling(const B& lobe, const prism::Vec3<double>& wo, double mass_epsilon = 5e-3)
+{
+    const Chi2 chi2 = chi2_lobe(lobe, wo, 500000);
+    CAPTURE(chi2.statistic);
+    CHECK(chi2.p_value > 1e-3);
+    CHECK(chi2.stray < 10);
+    const LobeSampling s = sample_lobe(lobe, wo, 200000);
+    CHECK(s.worst_weight < 1e-9);
+    CHECK(s.worst_pdf < 1e-9);
+    CHECK(pdf_mass(lobe, wo) == doctest::Approx(s.taken).epsilon(mass_epsilon));
+    return s;
 }
 
 } // namespace test

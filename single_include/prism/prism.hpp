@@ -8504,6 +8504,7 @@ struct WalkVertex {
     const Vec3<T>& last_point; ///< where the path last scattered (or started)
     T last_pdf;               ///< the solid-angle density of the last scattering's non-delta lobe (a diffuse one's cos / pi); 0 after a delta one or at the start
     bool last;                ///< the walk ends after this surface (its depth limit): nothing it scatters is followed
+    Pcg32& rng;               ///< the walk's stream, for a caller that draws at the vertex (a thin lens's point)
 
     /// Where the walk met the surface, with its normal and side.
     [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
@@ -8582,7 +8583,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             attenuate_segment(scene, media, material, c, segment, power);
             const bool last = bounce == max_bounces;
             if constexpr (emits<M>)
-                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last});
+                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng});
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
                 return Next::absorbed; // a lamp that only emits
             } else {
@@ -8590,7 +8591,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             // (A glossy lobe that is a mirror has no vertex of its own.)
             if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
                 const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
-                                                                      last_point, last_pdf, last});
+                                                                      last_point, last_pdf, last, rng});
                 if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
                 else lobes = go_on;
                 if (lobes == Lobes::none) return Next::absorbed;
@@ -9701,15 +9702,43 @@ namespace prism {
 /// Where the camera shoots rays through a width x height image.
 template <Scalar T>
 struct CameraRays {
-    Vec3<T> origin{}; ///< the pinhole
+    Vec3<T> origin{}; ///< the pinhole (a thin lens's centre)
     Vec3<T> top_left{};    ///< direction through the top-left image corner
     Vec3<T> pixel_right{}; ///< step of one pixel to the right
     Vec3<T> pixel_down{};  ///< step of one pixel down
+    T lens_radius = T(0);  ///< a thin lens's radius (0: a pinhole)
+    T focus = T(1);        ///< the distance along the view direction of the plane in focus
+    Vec3<T> lens_right{};  ///< unit, along the lens's first axis (the image's right)
+    Vec3<T> lens_up{};     ///< unit, along its second (the image's up)
 
-    /// The ray through image position (x, y), in pixels from the top-left corner.
+    /// The ray through image position (x, y), in pixels from the top-left corner, from the
+    /// pinhole (a thin lens's centre).
     [[nodiscard]] constexpr Ray<T> ray(T x, T y) const noexcept
     {
         return {origin, normalize(top_left + x * pixel_right + y * pixel_down)};
+    }
+
+    /// Whether the camera has a lens of some size (then rays start across it).
+    [[nodiscard]] constexpr bool thin_lens() const noexcept { return lens_radius > T(0); }
+
+    /// The point of the lens that the unit square's (u, v) maps onto, uniformly by area
+    /// (the pinhole for a pinhole camera).
+    [[nodiscard]] Vec3<T> lens_point(T u, T v) const noexcept
+    {
+        if (!thin_lens()) return origin;
+        const T r = lens_radius * std::sqrt(u), phi = T(2) * pi<T> * v;
+        return origin + (r * std::cos(phi)) * lens_right + (r * std::sin(phi)) * lens_up;
+    }
+
+    /// The ray through image position (x, y) from the lens point of (u, v): aimed at
+    /// where the pinhole ray through (x, y) meets the plane in focus, so every ray
+    /// through one image position meets there (a point in focus images to a point).
+    [[nodiscard]] Ray<T> ray(T x, T y, T u, T v) const noexcept
+    {
+        if (!thin_lens()) return ray(x, y);
+        const Vec3<T> through = top_left + x * pixel_right + y * pixel_down; // one unit along the view direction
+        const Vec3<T> from = lens_point(u, v);
+        return {from, normalize(origin + focus * through - from)};
     }
 
     /// Where a point is seen: image position (x, y) in pixels from the top-left corner
@@ -9734,19 +9763,44 @@ struct CameraRays {
                           distance, depth / distance};
     }
 
+    /// Where a point is seen through the lens point `from`: the image position of the
+    /// point where the ray from `from` through p meets the plane in focus, its distance
+    /// from `from` and the cosine between the view direction and that ray. (A light
+    /// path joined to a thin lens's point drawn uniformly weighs what it brings as it
+    /// would at a pinhole there.)
+    [[nodiscard]] std::optional<Projection> project(const Vec3<T>& p, const Vec3<T>& from) const noexcept
+    {
+        const Vec3<T> forward = normalize(cross(pixel_right, pixel_down));
+        const Vec3<T> v = p - from;
+        const T depth = dot(v, forward), distance = length(v);
+        if (!(depth > T(0)) || !(distance > T(0))) return std::nullopt;
+        const Vec3<T> on_plane = (from - origin + v * (focus / depth)) / focus - top_left;
+        return Projection{dot(on_plane, pixel_right) / length_squared(pixel_right), dot(on_plane, pixel_down) / length_squared(pixel_down),
+                          distance, depth / distance};
+    }
+
     /// One pixel's area on the image plane at distance 1: a pixel's value is the mean
     /// radiance over it, so light arriving at the pinhole from a point seen at cosine
     /// cos adds E / (pixel_area cos^3) (pixel area to solid angle: cos^3 / distance^2).
     [[nodiscard]] T pixel_area() const noexcept { return length(pixel_right) * length(pixel_down); }
 };
 
-/// A pinhole camera. `fov` is the horizontal field of view in degrees, as POV-Ray's `angle`.
+/// A pinhole camera, or a thin lens (depth of field). `fov` is the horizontal field of
+/// view in degrees, as POV-Ray's `angle`. With an `aperture_radius` above 0, rays start
+/// across a lens of that radius about `position`, perpendicular to the view direction,
+/// and meet again on the plane `focus_distance` ahead (pbrt's thin lens; POV-Ray's
+/// `aperture` is its diameter and `focal_point` a point on that plane): points on the
+/// plane are sharp, and a point at distance z blurs over a circle of diameter
+/// 2 aperture_radius |1 / focus_distance - 1 / z| on the image plane one unit ahead.
 template <Scalar T = float>
 struct Camera {
-    Vec3<T> position{T(0), T(0), T(0)}; ///< the pinhole
+    Vec3<T> position{T(0), T(0), T(0)}; ///< the pinhole, or the lens's centre
     Vec3<T> look_at{T(0), T(0), T(-1)}; ///< the point seen at the image's centre
     Vec3<T> up{T(0), T(1), T(0)}; ///< the direction that is up in the image
     T fov = T(40); ///< horizontal field of view in degrees
+    T aperture_radius = T(0); ///< the lens's radius (0: a pinhole, everything sharp)
+    /// The distance along the view direction of the plane in focus; none: look_at's.
+    std::optional<T> focus_distance{};
 
     /// Throws std::invalid_argument for non-finite fields, position == look_at, an up
     /// vector parallel to the view direction, or a field of view outside (0, 180).
@@ -9760,6 +9814,11 @@ struct Camera {
         if (!(fov > T(0) && fov < T(180))) detail::throw_invalid("Camera fov must be in (0, 180) degrees, got ", fov);
         const Vec3<T> side = cross(forward(), unit(up));
         if (!(length(side) > T(1e-6))) detail::throw_invalid("Camera up ", detail::describe(up), " is parallel to the view direction");
+        if (!(aperture_radius >= T(0) && aperture_radius < infinity<T>)) detail::throw_invalid("Camera aperture_radius must be finite and >= 0, got ", aperture_radius);
+        if (focus_distance && !(*focus_distance > T(0) && *focus_distance < infinity<T>))
+            detail::throw_invalid("Camera focus_distance must be finite and > 0, got ", *focus_distance);
+        if (aperture_radius > T(0) && !focus_distance && !(dot(look_at - position, forward()) < infinity<T>))
+            detail::throw_invalid("Camera focus_distance: look_at's distance ", detail::describe(look_at - position), " is not finite");
     }
 
     /// The unit view direction, from position to look_at. Found without overflow or
@@ -9790,6 +9849,12 @@ struct Camera {
         out.top_left = forward - half_width * right + half_height * true_up;
         out.pixel_right = (T(2) * half_width / T(width)) * right;
         out.pixel_down = (-T(2) * half_height / T(height)) * true_up;
+        if (aperture_radius > T(0)) {
+            out.lens_radius = aperture_radius;
+            out.focus = focus_distance ? *focus_distance : dot(look_at - position, forward);
+            out.lens_right = right;
+            out.lens_up = true_up;
+        }
         return out;
     }
 };
@@ -9979,7 +10044,13 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
                 for (std::uint64_t s = samples.first; s < samples.last; ++s) {
                     Pcg32 rng(sample_seed(config.seed, s), pixel);
                     const auto [dx, dy] = pixel_sample<T>(int(s), config.spp, rng, config.single_sample_at_centre);
-                    rejected += sample(rays.ray(T(x) + dx, T(y) + dy), rng, sum);
+                    if (rays.thin_lens()) {
+                        // The lens point from the sample's own stream, after the pixel's (a pinhole draws none).
+                        const T u = rng.uniform<T>(), v = rng.uniform<T>();
+                        rejected += sample(rays.ray(T(x) + dx, T(y) + dy, u, v), rng, sum);
+                    } else {
+                        rejected += sample(rays.ray(T(x) + dx, T(y) + dy), rng, sum);
+                    }
                 }
                 store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
             }
@@ -11383,9 +11454,15 @@ public:
                 if (!at.first_specular) return false;
                 const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
                 const Crossing<T>& c = at.crossing();
-                const auto seen = rays.project(c.point);
+                // A thin lens: a point of it drawn uniformly, seen as a pinhole there sees.
+                Vec3<T> eye = rays.origin;
+                if (rays.thin_lens()) {
+                    const T u = at.rng.template uniform<T>(), v = at.rng.template uniform<T>();
+                    eye = rays.lens_point(u, v);
+                }
+                const auto seen = rays.thin_lens() ? rays.project(c.point, eye) : rays.project(c.point);
                 if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return go_on;
-                const Vec3<T> to_camera = (rays.origin - c.point) / seen->distance;
+                const Vec3<T> to_camera = (eye - c.point) / seen->distance;
                 const T cos_x = dot(c.facing_normal(), to_camera);
                 if (!(cos_x > T(0))) return go_on; // the camera sees the other side
                 const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
@@ -12152,19 +12229,18 @@ private:
     }
 
     /// What a walk carries back from the global map at a vertex where it ends: its
-    /// power times a diffuse lobe's BRDF times the precomputed irradiance, or a glossy
-    /// lobe's radiance estimate toward where the walk came from.
+    /// power times a diffuse lobe's BRDF times the precomputed irradiance. A glossy lobe
+    /// there, a bounce away from the camera, is read as a diffuse one of its albedo
+    /// toward the walk (GlossyAt::albedo): a glossy lobe's own estimate weighs every
+    /// photon within the radius by the BSDF, which made a Cornell box's final gather 5
+    /// times slower, for a surface the gather blurs anyway.
     template <class M>
     [[nodiscard]] Rgb<T> global_radiance(const M& material, const WalkVertex<T>& at) const noexcept
     {
         const Crossing<T>& c = at.crossing();
-        if constexpr (has_glossy<M>) {
-            const auto lobe = glossy_at(material, c, at.direction);
-            return at.power * Rgb<T>(maps_.global.radiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal()), config_.global, reflected_by(lobe)));
-        } else {
-            const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
-            return at.power * diffuse_response(material, c).brdf() * e;
-        }
+        const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
+        if constexpr (has_glossy<M>) return at.power * (glossy_at(material, c, at.direction).albedo() / pi<T>) * e;
+        else return at.power * diffuse_response(material, c).brdf() * e;
     }
 
     /// A photon's power weighed by a glossy lobe between its arrival and the viewer.

@@ -59,14 +59,7 @@ TEST_CASE("coated diffuse: sampling follows the pdf, weights are f cos / pdf, re
             CAPTURE(theta);
             const auto material = coated(0.6, roughness);
             const auto lobe = material.glossy({});
-            const Vec3<double> wo = test::polar(theta, 60);
-            const test::Chi2 chi2 = test::chi2_lobe(lobe, wo, 500000);
-            CAPTURE(chi2.statistic);
-            CHECK(chi2.p_value > 1e-3);
-            CHECK(chi2.stray < 10);
-            const test::LobeSampling s = test::sample_lobe(lobe, wo, 100000);
-            CHECK(s.worst_weight < 1e-9);
-            CHECK(test::pdf_mass(lobe, wo) == doctest::Approx(s.taken).epsilon(3e-3));
+            test::check_lobe_sampling(lobe, test::polar(theta, 60), 3e-3);
             const auto a = test::polar(30, 10), b = test::polar(65, 170);
             CHECK(lobe.f(a, b).x == doctest::Approx(lobe.f(b, a).x).epsilon(1e-12));
         }

@@ -30,15 +30,7 @@ TEST_CASE("rough conductor: sampling follows the pdf it claims, weights are f co
             CAPTURE(ru);
             CAPTURE(rv);
             CAPTURE(theta);
-            const Vec3<double> wo = test::polar(theta, 35);
-            const test::Chi2 chi2 = test::chi2_lobe(lobe, wo, 500000);
-            CAPTURE(chi2.statistic);
-            CHECK(chi2.p_value > 1e-3);
-            CHECK(chi2.stray < 10);
-            const test::LobeSampling s = test::sample_lobe(lobe, wo, 200000);
-            CHECK(s.worst_weight < 1e-9);
-            CHECK(s.worst_pdf < 1e-9);
-            CHECK(test::pdf_mass(lobe, wo) == doctest::Approx(s.taken).epsilon(5e-3));
+            test::check_lobe_sampling(lobe, test::polar(theta, 35));
         }
     }
 }
