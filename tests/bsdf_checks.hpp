@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace test {
@@ -53,11 +54,28 @@ double albedo_by_quadrature(const B& lobe, const prism::Vec3<double>& wo, int ch
                            local_mirror(wo));
 }
 
-/// The mass of a lobe's density for wo over the sphere, by quadrature.
+/// The mass of a lobe's density for wo over the sphere, by quadrature: about the mirror
+/// direction on wo's side, and for a lobe that refracts (`through`: a unit direction on
+/// the other side where it peaks) about that direction on the other side.
 template <class B>
-double pdf_mass(const B& lobe, const prism::Vec3<double>& wo)
+double pdf_mass(const B& lobe, const prism::Vec3<double>& wo, const std::optional<prism::Vec3<double>>& through = std::nullopt)
 {
-    return sphere_integral([&](const prism::Vec3<double>& wi) { return lobe.pdf(wo, wi); }, local_mirror(wo));
+    using T = typename B::scalar_type;
+    const auto pdf = [&](const prism::Vec3<double>& wi) { return double(lobe.pdf(prism::Vec3<T>(wo), prism::Vec3<T>(wi))); };
+    if (!through) return sphere_integral(pdf, local_mirror(wo));
+    return sphere_integral([&](const prism::Vec3<double>& wi) { return wi.z * wo.z > 0 ? pdf(wi) : 0.0; }, local_mirror(wo)) +
+           sphere_integral([&](const prism::Vec3<double>& wi) { return wi.z * wo.z < 0 ? pdf(wi) : 0.0; }, *through);
+}
+
+/// Where light from wo refracts through a smooth interface with eta = n(-z) / n(+z): the
+/// direction on the other side that a rough one's refraction crowds about.
+inline prism::Vec3<double> snell_direction(const prism::Vec3<double>& wo, double eta)
+{
+    const double e = wo.z > 0 ? eta : 1 / eta; // n beyond / n on wo's side
+    const double sin2 = (1 - wo.z * wo.z) / (e * e);
+    if (sin2 >= 1) return {0, 0, wo.z > 0 ? -1.0 : 1.0}; // (total internal reflection: any axis on the other side)
+    const double cos_t = std::sqrt(1 - sin2);
+    return prism::normalize(prism::Vec3<double>{-wo.x / e, -wo.y / e, wo.z > 0 ? -cos_t : cos_t});
 }
 
 /// What sampling a lobe for wo finds, over n samples: the mean weight (the albedo, by
@@ -177,10 +195,12 @@ inline prism::Vec3<double> polar(double theta_deg, double phi_deg)
 
 /// What every lobe's sampling is held to for wo: the chi-square test (500 000 draws), each
 /// draw's weight and density against f cos / pdf and pdf at its direction (200 000 draws),
-/// and the pdf's mass against the share of draws that land (to `mass_epsilon`). Returns
+/// and the pdf's mass against the share of draws that land (to `mass_epsilon`; `through`
+/// as pdf_mass's). Returns
 /// what the draws found, for the caller's own checks.
 template <class B>
-LobeSampling check_lobe_sampling(const B& lobe, const prism::Vec3<double>& wo, double mass_epsilon = 5e-3)
+LobeSampling check_lobe_sampling(const B& lobe, const prism::Vec3<double>& wo, double mass_epsilon = 5e-3,
+                                 const std::optional<prism::Vec3<double>>& through = std::nullopt)
 {
     const Chi2 chi2 = chi2_lobe(lobe, wo, 500000);
     CAPTURE(chi2.statistic);
@@ -189,7 +209,7 @@ LobeSampling check_lobe_sampling(const B& lobe, const prism::Vec3<double>& wo, d
     const LobeSampling s = sample_lobe(lobe, wo, 200000);
     CHECK(s.worst_weight < 1e-9);
     CHECK(s.worst_pdf < 1e-9);
-    CHECK(pdf_mass(lobe, wo) == doctest::Approx(s.taken).epsilon(mass_epsilon));
+    CHECK(pdf_mass(lobe, wo, through) == doctest::Approx(s.taken).epsilon(mass_epsilon));
     return s;
 }
 

@@ -62,6 +62,7 @@
 #include <prism/material/emissive.hpp>
 #include <prism/material/phong.hpp>
 #include <prism/material/rough_conductor.hpp>
+#include <prism/material/rough_dielectric.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/texture.hpp>
 #include <prism/material/thin_film.hpp>

@@ -6083,7 +6083,8 @@ concept Medium = requires(const X& medium, typename X::scalar_type distance) {
 //                and refraction into the medium() that fills it          InteriorMedium
 // and two that a material declares only where it has them (the others have neither):
 //   has_glossy   a lobe with evaluation, sampling and density: rough     GlossyLobe
-//                metal, Phong, a coated surface (material/bsdf.hpp)
+//                metal, Phong, a coated surface, frosted glass (with       (GlossyInterface)
+//                transmits; material/bsdf.hpp)
 //   emits        radiance leaving its surface: an area light             Emission
 // A scene whose materials never transmit compiles no refraction code at all. The
 // light transport over these capabilities (what a diffuse point reflects, how an
@@ -6208,6 +6209,15 @@ concept GlossyLobe = requires(const M& material, const GlossyQuery<typename M::s
     requires std::same_as<typename std::remove_cvref_t<decltype(material.glossy(query))>::scalar_type, typename M::scalar_type>;
 };
 
+/// A glossy interface (has_glossy and transmits: frosted glass), whose lobe reflects and
+/// refracts: `refractive_index()`, the index inside, and `transmission_tint()`, what a
+/// Whitted shadow ray keeps crossing it.
+template <class M>
+concept GlossyInterface = requires(const M& material) {
+    { material.refractive_index() } -> std::same_as<typename M::scalar_type>;
+    { material.transmission_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
+};
+
 /// A surface that emits light (an area light): `emitted_radiance()`, its radiance per
 /// channel, the same everywhere on it and in every direction of its front, and
 /// `two_sided`, whether its back emits too. A material declares it with `emits = true`;
@@ -6231,10 +6241,11 @@ concept Material = requires(const M& material) {
 } && (M::has_diffuse || M::reflects || M::transmits || detail::declares_glossy<M>() || detail::declares_emission<M>()) // a material does at least one thing
   && (!detail::declares_emission<M>() || Emission<M>) // emits promises emitted_radiance() -> Rgb<T> and two_sided
   && (!detail::declares_glossy<M>() || GlossyLobe<M>) // has_glossy promises glossy(GlossyQuery) -> a Bsdf of the same scalar type
-  && (!detail::declares_glossy<M>() || (!M::has_diffuse && !M::reflects && !M::transmits)) // a glossy lobe holds all of its material's scattering
+  && (!detail::declares_glossy<M>() || (!M::has_diffuse && !M::reflects)) // a glossy lobe holds all of its material's scattering
+  && (!detail::declares_glossy<M>() || !M::transmits || GlossyInterface<M>) // a glossy interface promises refractive_index() and transmission_tint()
   && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) or diffuse(p, uv) -> DiffuseResponse<T>
   && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i or query) -> Rgb<T>
-  && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta or query), reflection_tint(), transmission_tint()
+  && (!M::transmits || detail::declares_glossy<M>() || DeltaTransmission<M>) // transmits (without has_glossy) promises refractive_index(), fresnel(cos_i, cos_t, eta or query), reflection_tint(), transmission_tint()
   && (!M::transmits || InteriorMedium<M>);          // transmits promises medium(), a Medium of the same scalar type
 
 /// A dispersive interface: besides the DeltaTransmission functions, `disperses = true`
@@ -7081,6 +7092,17 @@ template <Material M>
     return GlossyAt<std::remove_cvref_t<decltype(lobe)>>(lobe, LocalFrame<T>::about(hit.facing_shading()), hit.facing_normal(), d);
 }
 
+/// The ratio of indices a glossy interface's lobe takes at `hit`, n beyond / n on the
+/// arriving side, with `outside_index` the index on its outer side; 1 for a material that
+/// is not an interface.
+template <Material M>
+[[nodiscard]] constexpr typename M::scalar_type glossy_eta(const M& material, const Crossing<typename M::scalar_type>& hit,
+                                                          typename M::scalar_type outside_index = 1) noexcept
+{
+    if constexpr (M::transmits) return hit.entering ? material.refractive_index() / outside_index : outside_index / material.refractive_index();
+    else return (void)material, (void)hit, (void)outside_index, typename M::scalar_type(1);
+}
+
 /// Whether a path meeting `material` at `hit` along d sees a non-delta lobe there (a
 /// diffuse one, or a glossy one that is not a mirror): where lights are sampled and
 /// photons stored.
@@ -7088,7 +7110,7 @@ template <Material M>
 [[nodiscard]] bool scatters_smoothly(const M& material, const Crossing<typename M::scalar_type>& hit, const Vec3<typename M::scalar_type>& d) noexcept
 {
     if constexpr (has_diffuse<M>) return true;
-    else if constexpr (has_glossy<M>) return !glossy_at(material, hit, d).smooth();
+    else if constexpr (has_glossy<M>) return !glossy_at(material, hit, d, glossy_eta(material, hit)).smooth(); // (an interface's lobe is smooth where its eta is 1)
     else return (void)material, (void)hit, (void)d, false;
 }
 
@@ -7186,7 +7208,7 @@ template <Transport Mode = Transport::importance, Material M>
         // One draw from the lobe (its parts chosen inside it), then Russian roulette by
         // the draw's weight: a survivor carries weight / p, at most 1 per channel where
         // the weight is below 1.
-        const auto at = glossy_at(material, hit, d);
+        const auto at = glossy_at(material, hit, d, glossy_eta(material, hit, outside_index));
         if (lobes != Lobes::all && !at.smooth()) return std::nullopt;
         const std::optional<LobeSample<T>> s = at.sample(rng, Mode);
         if (!s) return std::nullopt;
@@ -8505,6 +8527,7 @@ struct WalkVertex {
     T last_pdf;               ///< the solid-angle density of the last scattering's non-delta lobe (a diffuse one's cos / pi); 0 after a delta one or at the start
     bool last;                ///< the walk ends after this surface (its depth limit): nothing it scatters is followed
     Pcg32& rng;               ///< the walk's stream, for a caller that draws at the vertex (a thin lens's point)
+    T outside_index;          ///< the index of refraction on a transmissive material's outer side (1 for others; glossy_eta)
 
     /// Where the walk met the surface, with its normal and side.
     [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
@@ -8583,19 +8606,10 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             attenuate_segment(scene, media, material, c, segment, power);
             const bool last = bounce == max_bounces;
             if constexpr (emits<M>)
-                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng});
+                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, T(1)});
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
                 return Next::absorbed; // a lamp that only emits
             } else {
-            Lobes lobes = Lobes::all;
-            // (A glossy lobe that is a mirror has no vertex of its own.)
-            if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
-                const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
-                                                                      last_point, last_pdf, last, rng});
-                if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
-                else lobes = go_on;
-                if (lobes == Lobes::none) return Next::absorbed;
-            }
             // The media beyond the surface, the object whose medium lies on its far
             // side, and false interfaces (inside a medium of higher priority) passed.
             // (Only transmissive materials keep an interface: no copy of the media for
@@ -8611,6 +8625,16 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 }
                 outside = outside_of(media, face, c.entering);
             }
+            const T outside_index = transmits<M> ? T(index_of(scene, outside, wavelength)) : T(1);
+            Lobes lobes = Lobes::all;
+            // (A glossy lobe that is a mirror has no vertex of its own.)
+            if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
+                const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
+                                                                      last_point, last_pdf, last, rng, outside_index});
+                if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
+                else lobes = go_on;
+                if (lobes == Lobes::none) return Next::absorbed;
+            }
             if constexpr (disperses<M>) {
                 if (wavelength == T(0)) {
                     // One band at random: its (non-negative) share of white, over its probability 1 / count.
@@ -8621,7 +8645,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 }
             }
             const Vec3<T> n = c.facing_normal();
-            const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, index_of(scene, outside, wavelength), lobes);
+            const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, outside_index, lobes);
             if (!next) return Next::absorbed;
             ray = spawn_ray(c.point, c.error, c.normal, next->direction);
             last_point = c.point;
@@ -11450,7 +11474,7 @@ public:
             tracer.walk_aimed(first, last, count, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
                 // A first hit on a diffuse lobe is the path tracer's; where the material also
                 // has a delta lobe, the scattering here decides whose the path is.
-                if (at.direct) return reflects<M> || transmits<M>;
+                if (at.direct) return reflects<M> || (transmits<M> && !has_glossy<M>);
                 if (!at.first_specular) return false;
                 const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
                 const Crossing<T>& c = at.crossing();
@@ -11463,8 +11487,9 @@ public:
                 const auto seen = rays.thin_lens() ? rays.project(c.point, eye) : rays.project(c.point);
                 if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return go_on;
                 const Vec3<T> to_camera = (eye - c.point) / seen->distance;
-                const T cos_x = dot(c.facing_normal(), to_camera);
-                if (!(cos_x > T(0))) return go_on; // the camera sees the other side
+                // The camera sees the other side: only through a glossy interface (frosted glass).
+                const T cos_x = transmits<M> && has_glossy<M> ? std::abs(dot(c.facing_normal(), to_camera)) : dot(c.facing_normal(), to_camera);
+                if (!(cos_x > T(0))) return go_on;
                 const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
                                                                                                seen->distance);
                 if (!(max_component(v) > T(0))) return go_on;
@@ -11476,7 +11501,7 @@ public:
                     if (!(importance < infinity<T>)) return go_on;
                 }
                 Rgb<T> f;
-                if constexpr (has_glossy<M>) f = glossy_at(material, c, at.direction).f(to_camera, Transport::importance);
+                if constexpr (has_glossy<M>) f = glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index)).f(to_camera, Transport::importance);
                 else f = diffuse_response(material, c).brdf();
                 const Rgb<float> splat(power * f * v * importance);
                 std::array<ExactSum, 3> add{};
@@ -11572,19 +11597,28 @@ void for_each_light_sample(const L& light, const Vec3<T>& p, const LightSampling
     }
 }
 
-/// For each sample of `light` arriving at the surface on the side the ray arrived from,
-/// call f(sample, v, cos): the sample (its irradiance already the sample's share of the
-/// light's), the shadow ray's transmittance v (0 when occluded, Beer-Lambert through
-/// glass) and the cosine at the surface (the shading normal's: shading_cosine). Samples
-/// behind the surface, or carrying nothing, are not visited: they count as occluded. How
-/// dielectrics shadow: see Scene::transmittance. A light that casts its own shadow
-/// (has_own_shadow: POV-Ray's area_light) gives v itself, from shadow rays to its points.
-template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Light L, Scalar T, class F>
+/// The sides of a surface light is gathered from: the one a ray arrived from (a surface
+/// that reflects), or both (an interface whose lobe also refracts: frosted glass).
+enum class Sides { near, both };
+
+/// For each sample of `light` arriving at the surface on the side the ray arrived from
+/// (or on either side, with Sides::both), call f(sample, v, cos): the sample (its
+/// irradiance already the sample's share of the light's), the shadow ray's transmittance v
+/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface (the
+/// shading normal's: shading_cosine; its absolute value from the far side, where the
+/// shading and the true normal agree on the side). Samples behind the surface, or carrying
+/// nothing, are not visited: they count as occluded. How dielectrics shadow: see
+/// Scene::transmittance. A light that casts its own shadow (has_own_shadow: POV-Ray's
+/// area_light) gives v itself, from shadow rays to its points.
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, Sides Gathered = Sides::near, class SceneT, Light L, Scalar T, class F>
 void for_each_sample_arriving(const SceneT& scene, const L& light, const Crossing<T>& hit, const LightSampling& sampling, F&& f)
 {
     const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
     for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
-        const T cos = shading_cosine(n_shading, n, s.wi);
+        T cos = shading_cosine(n_shading, n, s.wi);
+        if constexpr (Gathered == Sides::both) {
+            if (!(cos > T(0))) cos = shading_cosine(-n_shading, -n, s.wi);
+        }
         if (!(cos > T(0)) || !(max_component(s.irradiance) > T(0))) return;
         if constexpr (has_own_shadow<L>) {
             const auto through = [&](const Vec3<T>& point) {
@@ -11706,13 +11740,15 @@ public:
                         if constexpr (has_glossy<M>) {
                             // Each light sample weighed by the lobe toward it; an area light's shares
                             // its path with the lobe's own draw (its density there) as a diffuse one's.
-                            const auto lobe = glossy_at(material, c, at.direction);
+                            // (A glossy interface gathers from both sides: its lobe refracts.)
+                            constexpr Sides sides = transmits<M> ? Sides::both : Sides::near;
+                            const auto lobe = glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index));
                             Rgb<T> reflected{T(0)};
                             scene_->for_each_light([&]<class L>(const L& light) {
                                 if constexpr (!is_delta_light<L>) {
                                     if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
                                 }
-                                for_each_sample_arriving<ShadowsThroughGlass::blocked>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                                for_each_sample_arriving<ShadowsThroughGlass::blocked, sides>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
                                     const Rgb<T> f = lobe.f(s.wi, Transport::radiance);
                                     if (!(max_component(f) > T(0))) return;
                                     const bool shared = !s.delta() && go_on;
@@ -12084,7 +12120,32 @@ private:
             }
             else radiance.indirect = brdf * Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
         }
-        if constexpr (has_glossy<M>) {
+        if constexpr (has_glossy<M> && transmits<M>) {
+            // Frosted glass: one draw from its lobe per camera sample, followed with its
+            // media as glass is (what it finds, lights with extent included, is counted
+            // there), and the delta lights, which no draw finds, by shadow rays from both sides.
+            const Interface face = nested_interface(media, {h.slot, h.index, nesting_priority(material)}, hit.entering);
+            if (!face.real) {
+                radiance = trace(spawn_ray(hit.point, hit.error, hit.normal, d), depth + 1, weight, rng, wavelength, face.beyond);
+            } else {
+                const auto lobe = glossy_at(material, hit, normalize(d), glossy_eta(material, hit, index_of(*scene_, outside_of(media, face, hit.entering), wavelength)));
+                scene_->for_each_light([&]<class L>(const L& light) {
+                    if constexpr (is_delta_light<L>) {
+                        for_each_sample_arriving<ShadowsThroughGlass::blocked, Sides::both>(*scene_, light, hit, LightSampling{}, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                            radiance.direct += lobe.f(s.wi, Transport::radiance) * v * s.irradiance * cos;
+                        });
+                    }
+                });
+                if (depth < config_.max_depth) {
+                    const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
+                    if (s && max_component(weight * s->weight) > config_.min_weight) {
+                        const bool refracted = dot(s->wi, hit.facing_normal()) < T(0);
+                        radiance += s->weight * trace(spawn_ray(hit.point, hit.error, hit.normal, s->wi), depth + 1, weight * s->weight, rng, wavelength,
+                                                      refracted ? face.beyond : media);
+                    }
+                }
+            }
+        } else if constexpr (has_glossy<M>) {
             const auto lobe = glossy_at(material, hit, normalize(d));
             if (!lobe.smooth()) {
                 // As for a diffuse lobe, each part weighed by the lobe toward where its light arrives from.
@@ -12101,7 +12162,7 @@ private:
                     radiance += s->weight * trace(spawn_ray(hit.point, hit.error, hit.normal, s->wi), depth + 1, weight * s->weight, rng, wavelength, media);
             }
         }
-        if constexpr (reflects<M> || transmits<M>) {
+        if constexpr ((reflects<M> || transmits<M>) && !has_glossy<M>) {
             if (depth < config_.max_depth) {
                 const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
                     const auto outside_index = [&](T lambda) { return index_of(*scene_, outside, lambda); };
@@ -12177,8 +12238,8 @@ private:
             const bool diffuse = scene_->visit_material(*hit, [&]<class M>(const M& material) {
                 if constexpr (has_diffuse<M>) {
                     return true;
-                } else if constexpr (!reflects<M> && !transmits<M>) {
-                    return false; // a lamp: nothing goes on from it
+                } else if constexpr ((!reflects<M> && !transmits<M>) || has_glossy<M>) {
+                    return false; // a lamp, or a glossy surface (which the cache does not hold): nothing goes on from it
                 } else {
                     const Vec3<T> n = delta_normal(material, d, c);
                     const SpecularSplit<T> split = delta_split(material, d, n, c.entering, c.point);
@@ -12603,27 +12664,33 @@ private:
         if constexpr (has_glossy<M>) {
             // A glossy lobe: the lights by its BSDF toward each, and what lies about the
             // mirror direction by one mirror ray carrying the albedo of the lobe's part there
-            // (the lobe's spread and its light from everything but the lights are left out).
-            const auto lobe = glossy_at(material, hit, normalize(d));
+            // (the lobe's spread and its light from everything but the lights are left out);
+            // for frosted glass that ray is the clean glass's split, below.
+            const auto lobe = glossy_at(material, hit, normalize(d), glossy_eta(material, hit));
             const LightSampling sampling{stream_of(jitter...), config_.area_light_grid};
             for_each_light_arriving(*scene_, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
                 radiance += lobe.f(s.wi, Transport::radiance) * v * s.irradiance * cos;
             });
             // (A delta part, a mirror's or a smooth coat's, is that mirror ray exactly.)
+            if constexpr (!transmits<M>) {
             const std::optional<LobeSample<T>> delta = lobe.delta_part();
             const Rgb<T> k = delta ? delta->weight : lobe.mirror_albedo();
             if (depth < config_.max_depth && max_component(weight * k) > config_.min_weight)
                 radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, delta ? delta->wi : lobe.mirror()), depth + 1, weight * k, wavelength, media,
                                       jitter...);
+            }
         }
 
         if constexpr (reflects<M> || transmits<M>) {
-            if (depth < config_.max_depth) {
+            // Frosted glass refracts and reflects here as the clean glass of its index (its
+            // lights' highlights are counted above; the blur of its roughness is left out).
+            const auto split_with = [&](const auto& delta_material) {
+                if (depth >= config_.max_depth) return;
                 // Reflected rays stay in the ray's media; refracted ones go on in `beyond`,
                 // and the medium of `outside` lies on the surface's far side.
                 const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
                     const auto outside_index = [&](T lambda) { return index_of(*scene_, outside, lambda); };
-                    for_each_delta_ray(material, d, hit, wavelength, bands_, outside_index,
+                    for_each_delta_ray(delta_material, d, hit, wavelength, bands_, outside_index,
                                        [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
                                            const Rgb<T> next_weight = weight * k;
                                            if (max_component(next_weight) > config_.min_weight)
@@ -12640,7 +12707,9 @@ private:
                 } else {
                     follow(media, nullptr);
                 }
-            }
+            };
+            if constexpr (has_glossy<M>) split_with(material.clean());
+            else split_with(material);
         }
 
         // The light arriving here travelled in the ray's medium from its origin.
@@ -14943,6 +15012,211 @@ template <Scalar T = float>
 }
 template <Scalar T = float>
 RoughConductor<T, MeasuredConductor<T>> rough_metal(const metals::MeasuredIndex&&, Roughness<T>) = delete; // it would dangle
+
+} // namespace prism
+
+// ---- prism/material/rough_dielectric.hpp ----
+// RoughDielectric: frosted glass, a dielectric interface whose surface is a field of tiny
+// facets, Trowbridge-Reitz (GGX) distributed, each reflecting and refracting by the exact
+// Fresnel equations (Walter et al. 2007, "Microfacet Models for Refraction through Rough
+// Surfaces"), sampled by the normals the path sees (Heitz 2018), written after pbrt-v4's
+// DielectricBxDF.
+
+
+#include <cmath>
+#include <optional>
+
+namespace prism {
+
+/// Microfacet reflection and refraction at an interface, in the local frame with +z on
+/// one side and -z on the other, eta = n(-z side) / n(+z side). For light arriving from
+/// wo (either side), a facet m reflects F(wo.m) and refracts the rest:
+///   reflection   D(m) G F / |4 cos_o cos_i|, m the half vector wo + wi;
+///   refraction   D(m) G (1 - F) |wi.m wo.m| / |cos_o cos_i (wi.m + wo.m / eta')^2|,
+///                m along -(eta' wi + wo), eta' the ratio toward wi's side,
+/// for either transport: prism's camera paths carry radiance across an interface as its
+/// photons carry power, without the 1 / eta'^2 of radiance compressed into a denser
+/// medium (pbrt's radiance mode), as Dielectric does: on every path from air to air the
+/// factors cancel, and a camera path that entered glass by a Dielectric may leave it by
+/// frosted glass. So f(wo, wi) / n(wi's side)^2 = f(wi, wo) / n(wo's side)^2. Single
+/// scattering: light that would meet a second facet is lost. A smooth distribution is the
+/// clean interface of Dielectric: a Fresnel-weighted delta reflection or refraction.
+template <Scalar T>
+class MicrofacetDielectric {
+public:
+    /// The precision of the lobe.
+    using scalar_type = T;
+
+    /// The lobe of `distribution` between a +z side and a -z side of n(-z) / n(+z) = eta.
+    constexpr MicrofacetDielectric(TrowbridgeReitz<T> distribution, T eta) noexcept : distribution_(distribution), eta_(eta) {}
+
+    /// Whether the interface is clean (every sample a delta).
+    [[nodiscard]] constexpr bool smooth() const noexcept { return distribution_.smooth() || eta_ == T(1); }
+
+    /// The BSDF for a path from wo going on along wi (0 for a clean interface).
+    [[nodiscard]] Rgb<T> f(const Vec3<T>& wo, const Vec3<T>& wi, Transport mode = Transport::radiance) const noexcept
+    {
+        // From -z the interface is the same one mirrored, its indices swapped.
+        if (wo.z < T(0)) return flipped().f(mirror(wo), mirror(wi), mode);
+        const auto h = half_vector(wo, wi);
+        if (smooth() || !h) return Rgb<T>(T(0));
+        const T cos_o = wo.z, cos_i = wi.z;
+        const T fresnel = fresnel_dielectric(dot(wo, h->m), eta_);
+        const T dg = distribution_.d(h->m) * distribution_.g(wo, wi);
+        if (h->reflect) {
+            const T value = dg * fresnel / std::abs(T(4) * cos_i * cos_o);
+            return Rgb<T>(value < infinity<T> ? value : T(0));
+        }
+        const T denom = sqr(dot(wi, h->m) + dot(wo, h->m) / eta_) * cos_i * cos_o;
+        const T value = dg * (T(1) - fresnel) * std::abs(dot(wi, h->m) * dot(wo, h->m) / denom);
+        return Rgb<T>(value < infinity<T> ? value : T(0));
+    }
+
+    /// The density of sample (0 for a clean interface).
+    [[nodiscard]] T pdf(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept
+    {
+        if (wo.z < T(0)) return flipped().pdf(mirror(wo), mirror(wi));
+        const auto h = half_vector(wo, wi);
+        if (smooth() || !h) return T(0);
+        const T fresnel = fresnel_dielectric(dot(wo, h->m), eta_);
+        const T visible = distribution_.visible_d(wo, h->m);
+        const T value = h->reflect ? visible / (T(4) * dot(wo, h->m)) * fresnel
+                                   : visible * std::abs(dot(wi, h->m)) / sqr(dot(wi, h->m) + dot(wo, h->m) / eta_) * (T(1) - fresnel);
+        return value < infinity<T> ? value : T(0);
+    }
+
+    /// A direction for wo: a visible normal m, then reflection about it with probability
+    /// F(wo.m), refraction through it otherwise; nothing where the result falls on the
+    /// wrong side. A clean interface reflects or refracts about z as a delta, by Fresnel's
+    /// share (u_lobe chooses).
+    [[nodiscard]] std::optional<LobeSample<T>> sample(const Vec3<T>& wo, T u_lobe, T u1, T u2, Transport mode = Transport::radiance) const noexcept
+    {
+        if (wo.z == T(0)) return std::nullopt;
+        const T side = wo.z > T(0) ? T(1) : T(-1); // work with wo above (mirrored), turn the answer back
+        const Vec3<T> w{wo.x, wo.y, wo.z * side};
+        const T eta = side > T(0) ? eta_ : T(1) / eta_; // n beyond / n on wo's side
+        if (smooth()) {
+            const T fresnel = fresnel_dielectric(w.z, eta);
+            if (u_lobe < fresnel) return LobeSample<T>{{-wo.x, -wo.y, wo.z}, Rgb<T>(T(1)), T(0), true};
+            const auto t = refract(w, Vec3<T>(T(0), T(0), T(1)), eta);
+            if (!t) return std::nullopt; // (total internal reflection has F = 1)
+            return LobeSample<T>{{t->x, t->y, t->z * side}, Rgb<T>(T(1)), T(0), true};
+        }
+        Vec3<T> m = distribution_.sample_visible(w, u1, u2);
+        const T cos_om = dot(w, m);
+        if (!(cos_om > T(0))) return std::nullopt;
+        const T fresnel = fresnel_dielectric(cos_om, eta);
+        Vec3<T> wi;
+        if (u_lobe < fresnel) {
+            wi = T(2) * cos_om * m - w;
+            if (!(wi.z > T(0))) return std::nullopt;
+        } else {
+            const auto t = refract(w, m, eta);
+            if (!t || !(t->z < T(0))) return std::nullopt;
+            wi = *t;
+        }
+        wi.z *= side;
+        const T density = pdf(wo, wi);
+        if (!(density > T(0))) return std::nullopt;
+        const Rgb<T> value = f(wo, wi, mode);
+        return LobeSample<T>{wi, value * (std::abs(wi.z) / density), density, false};
+    }
+
+    /// A clean interface's reflection (its whole weight F); nothing for a rough one.
+    [[nodiscard]] std::optional<LobeSample<T>> delta_part(const Vec3<T>& wo) const noexcept
+    {
+        if (!smooth() || !(wo.z > T(0))) return std::nullopt;
+        return LobeSample<T>{{-wo.x, -wo.y, wo.z}, Rgb<T>(fresnel_dielectric(wo.z, eta_)), T(0), true};
+    }
+
+private:
+    struct Half {
+        Vec3<T> m; ///< the facet normal, on +z's side
+        bool reflect;
+    };
+
+    [[nodiscard]] static constexpr T sqr(T x) noexcept { return x * x; }
+    [[nodiscard]] static constexpr Vec3<T> mirror(const Vec3<T>& v) noexcept { return {v.x, v.y, -v.z}; }
+    /// The same interface seen from -z.
+    [[nodiscard]] constexpr MicrofacetDielectric flipped() const noexcept { return {distribution_, T(1) / eta_}; }
+
+    /// The refraction of w (above the facet m, unit) through it into eta = n beyond / n on
+    /// w's side: nothing under total internal reflection.
+    [[nodiscard]] static std::optional<Vec3<T>> refract(const Vec3<T>& w, const Vec3<T>& m, T eta) noexcept
+    {
+        const T cos_i = dot(w, m);
+        const T sin2_t = std::max(T(0), T(1) - cos_i * cos_i) / (eta * eta);
+        if (sin2_t >= T(1)) return std::nullopt;
+        const T cos_t = std::sqrt(T(1) - sin2_t);
+        return -w / eta + (cos_i / eta - cos_t) * m;
+    }
+
+    /// For wo above: the facet normal that turns wo into wi, and whether by reflection;
+    /// nothing for grazing directions or a facet that one of them sees from behind.
+    [[nodiscard]] std::optional<Half> half_vector(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept
+    {
+        const T cos_o = wo.z, cos_i = wi.z;
+        if (!(cos_o > T(0)) || cos_i == T(0)) return std::nullopt;
+        const bool reflect = cos_i > T(0);
+        Vec3<T> m = wi * (reflect ? T(1) : eta_) + wo;
+        if (!(length_squared(m) > T(0))) return std::nullopt;
+        m = normalize(m);
+        if (m.z < T(0)) m = -m;
+        if (dot(m, wi) * cos_i < T(0) || dot(m, wo) < T(0)) return std::nullopt;
+        return Half{m, reflect};
+    }
+
+    TrowbridgeReitz<T> distribution_;
+    T eta_;
+};
+
+/// Frosted glass: a dielectric of index `ior` whose surface has Trowbridge-Reitz roughness
+/// (alpha = roughness^2), filled with `interior` (Beer-Lambert by default), nested with
+/// other transmissive objects by `priority` as Dielectric is. Below roughness 0.03 it is
+/// Dielectric's clean interface. Whitted's shadow rays pass it as they pass clear glass.
+template <Scalar T = float, Medium Interior = Homogeneous<T>>
+    requires std::same_as<typename Interior::scalar_type, T>
+struct RoughDielectric {
+    /// The precision of the material.
+    using scalar_type = T;
+    /// No Lambertian lobe.
+    static constexpr bool has_diffuse = false;
+    /// No delta mirror of its own.
+    static constexpr bool reflects = false;
+    /// An interface with an interior (its refraction is the glossy lobe's).
+    static constexpr bool transmits = true;
+    /// A glossy lobe: microfacet reflection and refraction.
+    static constexpr bool has_glossy = true;
+
+    T ior = T(1.5); ///< the index of refraction inside
+    Roughness<T> roughness{}; ///< roughness, alpha = roughness^2
+    Interior interior{}; ///< the medium that fills it
+    int priority = 0; ///< where it overlaps another transmissive object, the higher priority's medium wins (medium/nesting.hpp)
+
+    /// The lobe at a point, for light arriving where the index beyond over the index on its side is q.eta.
+    [[nodiscard]] constexpr MicrofacetDielectric<T> glossy(const GlossyQuery<T>& q) const noexcept
+    {
+        return {TrowbridgeReitz<T>::from(roughness), q.eta};
+    }
+
+    /// The clean glass of the same index, interior and priority (what Whitted refracts by).
+    [[nodiscard]] constexpr Dielectric<T, ExactFresnel, Interior> clean() const noexcept { return {.ior = ior, .interior = interior, .priority = priority}; }
+
+    /// The index of refraction inside.
+    [[nodiscard]] constexpr T refractive_index() const noexcept { return ior; }
+    /// What a Whitted shadow ray keeps crossing the surface: all (the medium inside attenuates).
+    [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(T(1)); }
+    /// The medium inside.
+    [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior; }
+
+    /// Throws std::invalid_argument, naming the parameter, for ior <= 0, a roughness outside [0, 1] or a bad interior.
+    constexpr void validate() const
+    {
+        detail::require_positive("RoughDielectric ior", ior);
+        roughness.validate("RoughDielectric");
+        interior.validate();
+    }
+};
 
 } // namespace prism
 

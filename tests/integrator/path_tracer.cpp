@@ -184,3 +184,24 @@ TEST_CASE("a rough conductor of roughness 0 renders as the mirror it meets, by t
         for (int x = 0; x < 12; ++x) sum_a += a.at(x, y).x + a.at(x, y).z, sum_b += b.at(x, y).x + b.at(x, y).z;
     CHECK(sum_b / sum_a == doctest::Approx(1).epsilon(0.01));
 }
+
+TEST_CASE("frosted glass in the furnace: a clear rough glass ball under a uniform sky loses only what single scattering loses")
+{
+    // A smooth glass ball in a furnace is invisible (reads 1: every path escapes, every
+    // split's shares sum to 1); a rough one loses what its facets' second bounces would
+    // carry: little when nearly smooth, more when rough, never more than arrives.
+    for (const float roughness : {0.0f, 0.1f, 0.5f}) {
+        const auto scene = test::glossy_furnace(RoughDielectric<float>{.ior = 1.5f, .roughness = roughness});
+        const PathTracer tracer(scene);
+        for (const double theta : {0.0, 60.0}) {
+            const double mean = path_mean(tracer, test::furnace_ray<float>(theta), 40000);
+            CAPTURE(roughness);
+            CAPTURE(theta);
+            MESSAGE("frosted ball, roughness ", roughness, ", ", theta, " degrees: ", mean);
+            CHECK(mean <= 1.005);
+            if (roughness == 0.0f) CHECK(mean == doctest::Approx(1).epsilon(1e-4));
+            if (roughness == 0.1f) CHECK(mean == doctest::Approx(1).epsilon(0.01));
+            if (roughness == 0.5f) CHECK(mean > 0.55); // (0.84 at normal incidence, 0.62 at 60 degrees: many bounces inside)
+        }
+    }
+}

@@ -244,3 +244,23 @@ TEST_CASE("the photon mapper on glossy surfaces: the sky furnace by shadow rays,
         }
     CHECK(caustic / expected == doctest::Approx(1).epsilon(0.03));
 }
+
+TEST_CASE("light through a frosted slab: the photon mapper's one draw per sample agrees with the path tracer's two-sided light samples")
+{
+    // A point light behind a frosted glass slab, the camera in front: every bit of its light
+    // is transmitted through both rough faces. The path tracer finds it by light samples
+    // from inside the slab toward the far side, the photon mapper by drawing from the lobe
+    // at the near face and light samples at the far one.
+    const Scene scene{Lights{PointLight<float>{.position = {0.3f, 0.2f, -2}, .intensity = Rgb<float>(5)}},
+                      Object{Box<float>({-1, -1, -0.1f}, {1, 1, 0.1f}), RoughDielectric<float>{.ior = 1.5f, .roughness = 0.4f}}};
+    const Camera<float> camera{.position = {0, 0, 3}, .look_at = {0, 0, 0}, .fov = 30};
+    const RenderConfig config{.width = 8, .height = 8, .spp = 1024, .threads = 2, .seed = 2, .progress = false};
+    const Film traced = render(camera, PathTracer(scene), config);
+    const Film mapped = render(camera, PhotonMapper(scene, {.tracing = {.global_photons = 1000, .caustic_photons = 1000}, .gather_rays = 0}), config);
+    double a = 0, b = 0;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) a += traced.at(x, y).x, b += mapped.at(x, y).x;
+    MESSAGE("through the slab: path tracer ", a / 64, ", photon mapper ", b / 64);
+    CHECK(a > 0.01);
+    CHECK(b / a == doctest::Approx(1).epsilon(0.03));
+}

@@ -272,3 +272,19 @@ TEST_CASE("Whitted follows a glossy lobe's mirror direction with the lobe's albe
         CHECK(whitted.radiance(ray).x == doctest::Approx(test::albedo_by_quadrature(metal.glossy({}), w)).epsilon(0.01));
     }
 }
+
+TEST_CASE("Whitted renders frosted glass at roughness 0 as the clean glass it is, bit for bit")
+{
+    const auto scene_of = [](const auto& glass) {
+        return Scene{Lights{PointLight<float>{.position = {1, 4, 3}, .intensity = Rgb<float>(20)}},
+                     Object{Plane<float>({0, 1, 0}, 0), Diffuse<float, Checker<float>>{.albedo = {.even = Rgb<float>(0.8f), .odd = Rgb<float>(0.2f), .size = 0.5f}}},
+                     Object{Sphere<float>({0, 1, 0}, 1), glass}};
+    };
+    const auto clean = scene_of(Dielectric<float>{.ior = 1.5f, .interior = {.absorption = {0.1f, 0.2f, 0.3f}}});
+    const auto frosted = scene_of(RoughDielectric<float>{.ior = 1.5f, .roughness = 0.0f, .interior = {.absorption = {0.1f, 0.2f, 0.3f}}});
+    const Camera<float> camera{.position = {0, 1.5f, 4}, .look_at = {0, 0.8f, 0}, .fov = 40};
+    const RenderConfig config{.width = 24, .height = 24, .spp = 1, .threads = 2, .progress = false};
+    const Film a = render(camera, Whitted(clean), config), b = render(camera, Whitted(frosted), config);
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 24; ++x) REQUIRE(a.at(x, y) == b.at(x, y));
+}

@@ -23,7 +23,7 @@ prism::RoughConductor<double> white_metal(double roughness_u, double roughness_v
 
 TEST_CASE("rough conductor: sampling follows the pdf it claims, weights are f cos / pdf, the pdf's mass is the share of draws that land")
 {
-    for (const auto [ru, rv] : {std::pair{0.3, 0.3}, std::pair{0.6, 0.6}, std::pair{1.0, 1.0}, std::pair{0.3, 0.8}}) {
+    for (const auto& [ru, rv] : {std::pair{0.3, 0.3}, std::pair{0.6, 0.6}, std::pair{1.0, 1.0}, std::pair{0.3, 0.8}}) {
         const auto metal = white_metal(ru, rv);
         const auto lobe = metal.glossy({});
         for (const double theta : {10.0, 45.0, 80.0}) {
@@ -73,7 +73,7 @@ TEST_CASE("rough conductor: reciprocal, and at roughness 0 the mirror of Conduct
     const prism::RoughConductor<double, prism::ComplexIor<double>> gold{.fresnel = {.eta = {0.18, 0.42, 1.37}, .k = {3.42, 2.35, 1.77}},
                                                                        .roughness = {0.4, 0.2}};
     const auto lobe = gold.glossy({});
-    for (const auto [a, b] : {std::pair{test::polar(20, 10), test::polar(50, 200)}, std::pair{test::polar(70, 0), test::polar(5, 90)}}) {
+    for (const auto& [a, b] : {std::pair{test::polar(20, 10), test::polar(50, 200)}, std::pair{test::polar(70, 0), test::polar(5, 90)}}) {
         const auto fab = lobe.f(a, b, prism::Transport::radiance), fba = lobe.f(b, a, prism::Transport::radiance);
         CHECK(fab.x == doctest::Approx(fba.x).epsilon(1e-12));
         CHECK(fab.z == doctest::Approx(fba.z).epsilon(1e-12));

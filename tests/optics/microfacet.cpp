@@ -27,7 +27,7 @@ TEST_CASE("Trowbridge-Reitz: D at the pole and Smith's Lambda against their clos
 
 TEST_CASE("Trowbridge-Reitz: the projected normals cover the surface once, and each direction sees one unit of visible normals")
 {
-    for (const auto [ax, ay] : {std::pair{0.05, 0.05}, std::pair{0.3, 0.3}, std::pair{1.0, 1.0}, std::pair{0.1, 0.6}}) {
+    for (const auto& [ax, ay] : {std::pair{0.05, 0.05}, std::pair{0.3, 0.3}, std::pair{1.0, 1.0}, std::pair{0.1, 0.6}}) {
         CAPTURE(ax);
         CAPTURE(ay);
         const TrowbridgeReitz<double> ggx(ax, ay);
@@ -44,7 +44,7 @@ TEST_CASE("Trowbridge-Reitz: the projected normals cover the surface once, and e
 
 TEST_CASE("Trowbridge-Reitz: visible normals are drawn by their density (chi-square)")
 {
-    for (const auto [ax, ay] : {std::pair{0.2, 0.2}, std::pair{0.7, 0.7}, std::pair{0.15, 0.5}}) {
+    for (const auto& [ax, ay] : {std::pair{0.2, 0.2}, std::pair{0.7, 0.7}, std::pair{0.15, 0.5}}) {
         for (const double theta : {0.0, 50.0, 85.0}) {
             CAPTURE(ax);
             CAPTURE(ay);

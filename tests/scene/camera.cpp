@@ -60,7 +60,7 @@ TEST_CASE("a thin lens: a point on the plane in focus images to a point, and els
     const Vec3<double> p{0.7, -0.4, -5};
     const auto centre = rays.project(p);
     REQUIRE(centre);
-    for (const auto [u, v] : {std::pair{0.1, 0.2}, std::pair{0.9, 0.5}, std::pair{0.5, 0.95}, std::pair{1.0, 0.0}}) {
+    for (const auto& [u, v] : {std::pair{0.1, 0.2}, std::pair{0.9, 0.5}, std::pair{0.5, 0.95}, std::pair{1.0, 0.0}}) {
         const prism::Ray<double> ray = rays.ray(centre->x, centre->y, u, v);
         CHECK(prism::length(ray.origin - rays.origin) == doctest::Approx(0.1 * std::sqrt(u)));
         const Vec3<double> to_p = p - ray.origin;

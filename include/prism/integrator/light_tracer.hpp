@@ -111,7 +111,7 @@ public:
             tracer.walk_aimed(first, last, count, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
                 // A first hit on a diffuse lobe is the path tracer's; where the material also
                 // has a delta lobe, the scattering here decides whose the path is.
-                if (at.direct) return reflects<M> || transmits<M>;
+                if (at.direct) return reflects<M> || (transmits<M> && !has_glossy<M>);
                 if (!at.first_specular) return false;
                 const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
                 const Crossing<T>& c = at.crossing();
@@ -124,8 +124,9 @@ public:
                 const auto seen = rays.thin_lens() ? rays.project(c.point, eye) : rays.project(c.point);
                 if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return go_on;
                 const Vec3<T> to_camera = (eye - c.point) / seen->distance;
-                const T cos_x = dot(c.facing_normal(), to_camera);
-                if (!(cos_x > T(0))) return go_on; // the camera sees the other side
+                // The camera sees the other side: only through a glossy interface (frosted glass).
+                const T cos_x = transmits<M> && has_glossy<M> ? std::abs(dot(c.facing_normal(), to_camera)) : dot(c.facing_normal(), to_camera);
+                if (!(cos_x > T(0))) return go_on;
                 const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
                                                                                                seen->distance);
                 if (!(max_component(v) > T(0))) return go_on;
@@ -137,7 +138,7 @@ public:
                     if (!(importance < infinity<T>)) return go_on;
                 }
                 Rgb<T> f;
-                if constexpr (has_glossy<M>) f = glossy_at(material, c, at.direction).f(to_camera, Transport::importance);
+                if constexpr (has_glossy<M>) f = glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index)).f(to_camera, Transport::importance);
                 else f = diffuse_response(material, c).brdf();
                 const Rgb<float> splat(power * f * v * importance);
                 std::array<ExactSum, 3> add{};

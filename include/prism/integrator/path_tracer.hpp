@@ -96,13 +96,15 @@ public:
                         if constexpr (has_glossy<M>) {
                             // Each light sample weighed by the lobe toward it; an area light's shares
                             // its path with the lobe's own draw (its density there) as a diffuse one's.
-                            const auto lobe = glossy_at(material, c, at.direction);
+                            // (A glossy interface gathers from both sides: its lobe refracts.)
+                            constexpr Sides sides = transmits<M> ? Sides::both : Sides::near;
+                            const auto lobe = glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index));
                             Rgb<T> reflected{T(0)};
                             scene_->for_each_light([&]<class L>(const L& light) {
                                 if constexpr (!is_delta_light<L>) {
                                     if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
                                 }
-                                for_each_sample_arriving<ShadowsThroughGlass::blocked>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                                for_each_sample_arriving<ShadowsThroughGlass::blocked, sides>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
                                     const Rgb<T> f = lobe.f(s.wi, Transport::radiance);
                                     if (!(max_component(f) > T(0))) return;
                                     const bool shared = !s.delta() && go_on;

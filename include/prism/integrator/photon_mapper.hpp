@@ -277,7 +277,32 @@ private:
             }
             else radiance.indirect = brdf * Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
         }
-        if constexpr (has_glossy<M>) {
+        if constexpr (has_glossy<M> && transmits<M>) {
+            // Frosted glass: one draw from its lobe per camera sample, followed with its
+            // media as glass is (what it finds, lights with extent included, is counted
+            // there), and the delta lights, which no draw finds, by shadow rays from both sides.
+            const Interface face = nested_interface(media, {h.slot, h.index, nesting_priority(material)}, hit.entering);
+            if (!face.real) {
+                radiance = trace(spawn_ray(hit.point, hit.error, hit.normal, d), depth + 1, weight, rng, wavelength, face.beyond);
+            } else {
+                const auto lobe = glossy_at(material, hit, normalize(d), glossy_eta(material, hit, index_of(*scene_, outside_of(media, face, hit.entering), wavelength)));
+                scene_->for_each_light([&]<class L>(const L& light) {
+                    if constexpr (is_delta_light<L>) {
+                        for_each_sample_arriving<ShadowsThroughGlass::blocked, Sides::both>(*scene_, light, hit, LightSampling{}, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                            radiance.direct += lobe.f(s.wi, Transport::radiance) * v * s.irradiance * cos;
+                        });
+                    }
+                });
+                if (depth < config_.max_depth) {
+                    const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
+                    if (s && max_component(weight * s->weight) > config_.min_weight) {
+                        const bool refracted = dot(s->wi, hit.facing_normal()) < T(0);
+                        radiance += s->weight * trace(spawn_ray(hit.point, hit.error, hit.normal, s->wi), depth + 1, weight * s->weight, rng, wavelength,
+                                                      refracted ? face.beyond : media);
+                    }
+                }
+            }
+        } else if constexpr (has_glossy<M>) {
             const auto lobe = glossy_at(material, hit, normalize(d));
             if (!lobe.smooth()) {
                 // As for a diffuse lobe, each part weighed by the lobe toward where its light arrives from.
@@ -294,7 +319,7 @@ private:
                     radiance += s->weight * trace(spawn_ray(hit.point, hit.error, hit.normal, s->wi), depth + 1, weight * s->weight, rng, wavelength, media);
             }
         }
-        if constexpr (reflects<M> || transmits<M>) {
+        if constexpr ((reflects<M> || transmits<M>) && !has_glossy<M>) {
             if (depth < config_.max_depth) {
                 const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
                     const auto outside_index = [&](T lambda) { return index_of(*scene_, outside, lambda); };
@@ -370,8 +395,8 @@ private:
             const bool diffuse = scene_->visit_material(*hit, [&]<class M>(const M& material) {
                 if constexpr (has_diffuse<M>) {
                     return true;
-                } else if constexpr (!reflects<M> && !transmits<M>) {
-                    return false; // a lamp: nothing goes on from it
+                } else if constexpr ((!reflects<M> && !transmits<M>) || has_glossy<M>) {
+                    return false; // a lamp, or a glossy surface (which the cache does not hold): nothing goes on from it
                 } else {
                     const Vec3<T> n = delta_normal(material, d, c);
                     const SpecularSplit<T> split = delta_split(material, d, n, c.entering, c.point);

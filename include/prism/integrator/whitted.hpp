@@ -138,27 +138,33 @@ private:
         if constexpr (has_glossy<M>) {
             // A glossy lobe: the lights by its BSDF toward each, and what lies about the
             // mirror direction by one mirror ray carrying the albedo of the lobe's part there
-            // (the lobe's spread and its light from everything but the lights are left out).
-            const auto lobe = glossy_at(material, hit, normalize(d));
+            // (the lobe's spread and its light from everything but the lights are left out);
+            // for frosted glass that ray is the clean glass's split, below.
+            const auto lobe = glossy_at(material, hit, normalize(d), glossy_eta(material, hit));
             const LightSampling sampling{stream_of(jitter...), config_.area_light_grid};
             for_each_light_arriving(*scene_, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
                 radiance += lobe.f(s.wi, Transport::radiance) * v * s.irradiance * cos;
             });
             // (A delta part, a mirror's or a smooth coat's, is that mirror ray exactly.)
+            if constexpr (!transmits<M>) {
             const std::optional<LobeSample<T>> delta = lobe.delta_part();
             const Rgb<T> k = delta ? delta->weight : lobe.mirror_albedo();
             if (depth < config_.max_depth && max_component(weight * k) > config_.min_weight)
                 radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, delta ? delta->wi : lobe.mirror()), depth + 1, weight * k, wavelength, media,
                                       jitter...);
+            }
         }
 
         if constexpr (reflects<M> || transmits<M>) {
-            if (depth < config_.max_depth) {
+            // Frosted glass refracts and reflects here as the clean glass of its index (its
+            // lights' highlights are counted above; the blur of its roughness is left out).
+            const auto split_with = [&](const auto& delta_material) {
+                if (depth >= config_.max_depth) return;
                 // Reflected rays stay in the ray's media; refracted ones go on in `beyond`,
                 // and the medium of `outside` lies on the surface's far side.
                 const auto follow = [&](const MediumStack& beyond, const Inside* outside) {
                     const auto outside_index = [&](T lambda) { return index_of(*scene_, outside, lambda); };
-                    for_each_delta_ray(material, d, hit, wavelength, bands_, outside_index,
+                    for_each_delta_ray(delta_material, d, hit, wavelength, bands_, outside_index,
                                        [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
                                            const Rgb<T> next_weight = weight * k;
                                            if (max_component(next_weight) > config_.min_weight)
@@ -175,7 +181,9 @@ private:
                 } else {
                     follow(media, nullptr);
                 }
-            }
+            };
+            if constexpr (has_glossy<M>) split_with(material.clean());
+            else split_with(material);
         }
 
         // The light arriving here travelled in the ray's medium from its origin.

@@ -455,6 +455,17 @@ template <Material M>
     return GlossyAt<std::remove_cvref_t<decltype(lobe)>>(lobe, LocalFrame<T>::about(hit.facing_shading()), hit.facing_normal(), d);
 }
 
+/// The ratio of indices a glossy interface's lobe takes at `hit`, n beyond / n on the
+/// arriving side, with `outside_index` the index on its outer side; 1 for a material that
+/// is not an interface.
+template <Material M>
+[[nodiscard]] constexpr typename M::scalar_type glossy_eta(const M& material, const Crossing<typename M::scalar_type>& hit,
+                                                          typename M::scalar_type outside_index = 1) noexcept
+{
+    if constexpr (M::transmits) return hit.entering ? material.refractive_index() / outside_index : outside_index / material.refractive_index();
+    else return (void)material, (void)hit, (void)outside_index, typename M::scalar_type(1);
+}
+
 /// Whether a path meeting `material` at `hit` along d sees a non-delta lobe there (a
 /// diffuse one, or a glossy one that is not a mirror): where lights are sampled and
 /// photons stored.
@@ -462,7 +473,7 @@ template <Material M>
 [[nodiscard]] bool scatters_smoothly(const M& material, const Crossing<typename M::scalar_type>& hit, const Vec3<typename M::scalar_type>& d) noexcept
 {
     if constexpr (has_diffuse<M>) return true;
-    else if constexpr (has_glossy<M>) return !glossy_at(material, hit, d).smooth();
+    else if constexpr (has_glossy<M>) return !glossy_at(material, hit, d, glossy_eta(material, hit)).smooth(); // (an interface's lobe is smooth where its eta is 1)
     else return (void)material, (void)hit, (void)d, false;
 }
 
@@ -560,7 +571,7 @@ template <Transport Mode = Transport::importance, Material M>
         // One draw from the lobe (its parts chosen inside it), then Russian roulette by
         // the draw's weight: a survivor carries weight / p, at most 1 per channel where
         // the weight is below 1.
-        const auto at = glossy_at(material, hit, d);
+        const auto at = glossy_at(material, hit, d, glossy_eta(material, hit, outside_index));
         if (lobes != Lobes::all && !at.smooth()) return std::nullopt;
         const std::optional<LobeSample<T>> s = at.sample(rng, Mode);
         if (!s) return std::nullopt;

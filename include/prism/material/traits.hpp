@@ -11,7 +11,8 @@
 //                and refraction into the medium() that fills it          InteriorMedium
 // and two that a material declares only where it has them (the others have neither):
 //   has_glossy   a lobe with evaluation, sampling and density: rough     GlossyLobe
-//                metal, Phong, a coated surface (material/bsdf.hpp)
+//                metal, Phong, a coated surface, frosted glass (with       (GlossyInterface)
+//                transmits; material/bsdf.hpp)
 //   emits        radiance leaving its surface: an area light             Emission
 // A scene whose materials never transmit compiles no refraction code at all. The
 // light transport over these capabilities (what a diffuse point reflects, how an
@@ -140,6 +141,15 @@ concept GlossyLobe = requires(const M& material, const GlossyQuery<typename M::s
     requires std::same_as<typename std::remove_cvref_t<decltype(material.glossy(query))>::scalar_type, typename M::scalar_type>;
 };
 
+/// A glossy interface (has_glossy and transmits: frosted glass), whose lobe reflects and
+/// refracts: `refractive_index()`, the index inside, and `transmission_tint()`, what a
+/// Whitted shadow ray keeps crossing it.
+template <class M>
+concept GlossyInterface = requires(const M& material) {
+    { material.refractive_index() } -> std::same_as<typename M::scalar_type>;
+    { material.transmission_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
+};
+
 /// A surface that emits light (an area light): `emitted_radiance()`, its radiance per
 /// channel, the same everywhere on it and in every direction of its front, and
 /// `two_sided`, whether its back emits too. A material declares it with `emits = true`;
@@ -163,10 +173,11 @@ concept Material = requires(const M& material) {
 } && (M::has_diffuse || M::reflects || M::transmits || detail::declares_glossy<M>() || detail::declares_emission<M>()) // a material does at least one thing
   && (!detail::declares_emission<M>() || Emission<M>) // emits promises emitted_radiance() -> Rgb<T> and two_sided
   && (!detail::declares_glossy<M>() || GlossyLobe<M>) // has_glossy promises glossy(GlossyQuery) -> a Bsdf of the same scalar type
-  && (!detail::declares_glossy<M>() || (!M::has_diffuse && !M::reflects && !M::transmits)) // a glossy lobe holds all of its material's scattering
+  && (!detail::declares_glossy<M>() || (!M::has_diffuse && !M::reflects)) // a glossy lobe holds all of its material's scattering
+  && (!detail::declares_glossy<M>() || !M::transmits || GlossyInterface<M>) // a glossy interface promises refractive_index() and transmission_tint()
   && (!M::has_diffuse || DiffuseLobe<M>)             // has_diffuse promises diffuse(p) or diffuse(p, uv) -> DiffuseResponse<T>
   && (!M::reflects || M::transmits || DeltaReflection<M>) // reflects (without transmits) promises reflectance(cos_i or query) -> Rgb<T>
-  && (!M::transmits || DeltaTransmission<M>)        // transmits promises refractive_index(), fresnel(cos_i, cos_t, eta or query), reflection_tint(), transmission_tint()
+  && (!M::transmits || detail::declares_glossy<M>() || DeltaTransmission<M>) // transmits (without has_glossy) promises refractive_index(), fresnel(cos_i, cos_t, eta or query), reflection_tint(), transmission_tint()
   && (!M::transmits || InteriorMedium<M>);          // transmits promises medium(), a Medium of the same scalar type
 
 /// A dispersive interface: besides the DeltaTransmission functions, `disperses = true`

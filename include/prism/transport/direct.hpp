@@ -54,19 +54,28 @@ void for_each_light_sample(const L& light, const Vec3<T>& p, const LightSampling
     }
 }
 
-/// For each sample of `light` arriving at the surface on the side the ray arrived from,
-/// call f(sample, v, cos): the sample (its irradiance already the sample's share of the
-/// light's), the shadow ray's transmittance v (0 when occluded, Beer-Lambert through
-/// glass) and the cosine at the surface (the shading normal's: shading_cosine). Samples
-/// behind the surface, or carrying nothing, are not visited: they count as occluded. How
-/// dielectrics shadow: see Scene::transmittance. A light that casts its own shadow
-/// (has_own_shadow: POV-Ray's area_light) gives v itself, from shadow rays to its points.
-template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Light L, Scalar T, class F>
+/// The sides of a surface light is gathered from: the one a ray arrived from (a surface
+/// that reflects), or both (an interface whose lobe also refracts: frosted glass).
+enum class Sides { near, both };
+
+/// For each sample of `light` arriving at the surface on the side the ray arrived from
+/// (or on either side, with Sides::both), call f(sample, v, cos): the sample (its
+/// irradiance already the sample's share of the light's), the shadow ray's transmittance v
+/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface (the
+/// shading normal's: shading_cosine; its absolute value from the far side, where the
+/// shading and the true normal agree on the side). Samples behind the surface, or carrying
+/// nothing, are not visited: they count as occluded. How dielectrics shadow: see
+/// Scene::transmittance. A light that casts its own shadow (has_own_shadow: POV-Ray's
+/// area_light) gives v itself, from shadow rays to its points.
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, Sides Gathered = Sides::near, class SceneT, Light L, Scalar T, class F>
 void for_each_sample_arriving(const SceneT& scene, const L& light, const Crossing<T>& hit, const LightSampling& sampling, F&& f)
 {
     const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
     for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
-        const T cos = shading_cosine(n_shading, n, s.wi);
+        T cos = shading_cosine(n_shading, n, s.wi);
+        if constexpr (Gathered == Sides::both) {
+            if (!(cos > T(0))) cos = shading_cosine(-n_shading, -n, s.wi);
+        }
         if (!(cos > T(0)) || !(max_component(s.irradiance) > T(0))) return;
         if constexpr (has_own_shadow<L>) {
             const auto through = [&](const Vec3<T>& point) {

@@ -45,6 +45,7 @@ struct WalkVertex {
     T last_pdf;               ///< the solid-angle density of the last scattering's non-delta lobe (a diffuse one's cos / pi); 0 after a delta one or at the start
     bool last;                ///< the walk ends after this surface (its depth limit): nothing it scatters is followed
     Pcg32& rng;               ///< the walk's stream, for a caller that draws at the vertex (a thin lens's point)
+    T outside_index;          ///< the index of refraction on a transmissive material's outer side (1 for others; glossy_eta)
 
     /// Where the walk met the surface, with its normal and side.
     [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
@@ -123,19 +124,10 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             attenuate_segment(scene, media, material, c, segment, power);
             const bool last = bounce == max_bounces;
             if constexpr (emits<M>)
-                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng});
+                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, T(1)});
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
                 return Next::absorbed; // a lamp that only emits
             } else {
-            Lobes lobes = Lobes::all;
-            // (A glossy lobe that is a mirror has no vertex of its own.)
-            if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
-                const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
-                                                                      last_point, last_pdf, last, rng});
-                if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
-                else lobes = go_on;
-                if (lobes == Lobes::none) return Next::absorbed;
-            }
             // The media beyond the surface, the object whose medium lies on its far
             // side, and false interfaces (inside a medium of higher priority) passed.
             // (Only transmissive materials keep an interface: no copy of the media for
@@ -151,6 +143,16 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 }
                 outside = outside_of(media, face, c.entering);
             }
+            const T outside_index = transmits<M> ? T(index_of(scene, outside, wavelength)) : T(1);
+            Lobes lobes = Lobes::all;
+            // (A glossy lobe that is a mirror has no vertex of its own.)
+            if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
+                const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
+                                                                      last_point, last_pdf, last, rng, outside_index});
+                if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
+                else lobes = go_on;
+                if (lobes == Lobes::none) return Next::absorbed;
+            }
             if constexpr (disperses<M>) {
                 if (wavelength == T(0)) {
                     // One band at random: its (non-negative) share of white, over its probability 1 / count.
@@ -161,7 +163,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 }
             }
             const Vec3<T> n = c.facing_normal();
-            const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, index_of(scene, outside, wavelength), lobes);
+            const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, outside_index, lobes);
             if (!next) return Next::absorbed;
             ray = spawn_ray(c.point, c.error, c.normal, next->direction);
             last_point = c.point;
