@@ -6,13 +6,15 @@
 # between the two means is compared with what that noise alone explains. Writes
 # bench/results/cycles_agreement.csv and cycles_vs_prism.png (prism | Cycles | 8x difference).
 #
-# usage: bench/cycles_agreement.py BUILD_DIR [--spp-prism 4096] [--spp-cycles 1024] [--size 256] [--area | --sky | --sky-glossy]
+# usage: bench/cycles_agreement.py BUILD_DIR [--spp-prism 4096] [--spp-cycles 1024] [--size 256] [--area | --sky | --sky-glossy | --sky-frosted]
 # --area: the box under its ceiling light (an area light) instead of the point light;
 # writes cycles_agreement_area.csv and cycles_vs_prism_area.png.
 # --sky: bench/sky.cpp's spheres under the photographed sky (an EnvironmentMap), Cycles'
 # copy built by bench/cycles_sky.py; writes cycles_agreement_sky.csv and cycles_vs_prism_sky.png.
 # --sky-glossy: the same with rough metal spheres (GGX, roughness 0.4 and 0.15: RoughConductor
 # against Cycles' Glossy BSDF); writes cycles_agreement_sky_glossy.csv and cycles_vs_prism_sky_glossy.png.
+# --sky-frosted: the left sphere frosted glass (RoughDielectric against Cycles' Glass BSDF, GGX);
+# writes cycles_agreement_sky_frosted.csv and cycles_vs_prism_sky_frosted.png.
 import argparse
 import csv
 import math
@@ -48,10 +50,11 @@ def main():
     ap.add_argument("--area", action="store_true", help="the box under its ceiling light (an area light)")
     ap.add_argument("--sky", action="store_true", help="spheres under a photographed sky (an environment map)")
     ap.add_argument("--sky-glossy", action="store_true", help="rough metal spheres under the photographed sky (GGX)")
+    ap.add_argument("--sky-frosted", action="store_true", help="a frosted glass and a rough metal sphere under the photographed sky (GGX)")
     args = ap.parse_args()
-    variant = "glossy" if args.sky_glossy else ""
-    args.sky = args.sky or args.sky_glossy
-    suffix = "_area" if args.area else "_sky_glossy" if args.sky_glossy else "_sky" if args.sky else ""
+    variant = "glossy" if args.sky_glossy else "frosted" if args.sky_frosted else ""
+    args.sky = args.sky or bool(variant)
+    suffix = "_area" if args.area else "_sky_" + variant if variant else "_sky" if args.sky else ""
     work = os.path.join(args.build, "cycles_agreement" + suffix)
     os.makedirs(work, exist_ok=True)
     prism, blender, seconds = [], [], {}

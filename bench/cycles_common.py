@@ -53,19 +53,23 @@ def empty_scene(samples, seed, size):
     return scene
 
 
-def material(name, kind, rgb, roughness=0.0):
-    """A material of one BSDF: "diffuse" (Lambertian) or "glossy" (a mirror of colour rgb,
+def material(name, kind, rgb, roughness=0.0, ior=1.5):
+    """A material of one BSDF: "diffuse" (Lambertian), "glossy" (a mirror of colour rgb,
     or at a roughness above 0 single-scattering GGX with alpha = roughness^2 and no Fresnel:
-    prism's RoughConductor with ConstantKr)."""
+    prism's RoughConductor with ConstantKr) or "glass" (Cycles' Glass BSDF, GGX, of index
+    ior: prism's RoughDielectric)."""
     m = bpy.data.materials.new(name)
     m.use_nodes = True
     nodes = m.node_tree.nodes
     nodes.clear()
-    bsdf = nodes.new("ShaderNodeBsdfDiffuse" if kind == "diffuse" else "ShaderNodeBsdfGlossy")
+    kinds = {"diffuse": "ShaderNodeBsdfDiffuse", "glossy": "ShaderNodeBsdfGlossy", "glass": "ShaderNodeBsdfGlass"}
+    bsdf = nodes.new(kinds[kind])
     bsdf.inputs["Color"].default_value = (rgb[0], rgb[1], rgb[2], 1)
     bsdf.inputs["Roughness"].default_value = roughness
     if kind != "diffuse":
         bsdf.distribution = "GGX"
+    if kind == "glass":
+        bsdf.inputs["IOR"].default_value = ior
     out = nodes.new("ShaderNodeOutputMaterial")
     m.node_tree.links.new(bsdf.outputs["BSDF"], out.inputs["Surface"])
     return m

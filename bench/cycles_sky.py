@@ -6,7 +6,8 @@
 #   blender -b --factory-startup --python bench/cycles_sky.py -- OUT.pfm SAMPLES [SEED] [SIZE] [glossy]
 #
 # `glossy`: the spheres rough instead (bench_sky's glossy scene): Glossy BSDFs, GGX, of colour
-# 0.9 and roughness 0.4 (left) and 0.15 (right).
+# 0.9 and roughness 0.4 (left) and 0.15 (right). `frosted`: the left one frosted glass
+# instead (a Glass BSDF, GGX, index 1.5, roughness 0.3).
 #
 # prism is right-handed with y up, Blender right-handed with z up: (x, y, z) -> (x, -z, y),
 # a rotation. prism's image looks toward -z at its middle column (u = 1/2) and turns
@@ -30,7 +31,7 @@ out_path = argv[0]
 samples = int(argv[1]) if len(argv) > 1 else 64
 seed = int(argv[2]) if len(argv) > 2 else 0
 size = int(argv[3]) if len(argv) > 3 else 256
-glossy = len(argv) > 4 and argv[4] == "glossy"
+variant = argv[4] if len(argv) > 4 else ""
 here = os.path.dirname(os.path.abspath(__file__))
 SKY = os.path.join(here, "..", "assets", "sky", "sunrise.exr")
 ROTATION = 150.0  # bench/sky.cpp's, degrees about prism's +y
@@ -79,7 +80,10 @@ def sphere(name, centre, radius, m):
 
 
 quad("floor", [(-5, 0, 5), (5, 0, 5), (5, 0, -5), (-5, 0, -5)], material("grey", "diffuse", (0.5, 0.5, 0.5)))
-if glossy:
+if variant == "frosted":
+    sphere("frosted", (-0.8, 0.6, 0), 0.6, material("frosted", "glass", (1.0, 1.0, 1.0), 0.3, 1.5))
+    sphere("satin", (0.8, 0.6, 0), 0.6, material("satin", "glossy", (0.9, 0.9, 0.9), 0.15))
+elif variant == "glossy":
     sphere("rough", (-0.8, 0.6, 0), 0.6, material("rough", "glossy", (0.9, 0.9, 0.9), 0.4))
     sphere("satin", (0.8, 0.6, 0), 0.6, material("satin", "glossy", (0.9, 0.9, 0.9), 0.15))
 else:

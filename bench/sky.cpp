@@ -4,11 +4,12 @@
 // sphere on a grey floor, lit by the environment map alone. Writes the path tracer's
 // picture as PFM and prints "seconds S", 2 threads.
 //
-// usage: bench_sky OUT.pfm SPP [SIZE] [SEED] [glossy]
+// usage: bench_sky OUT.pfm SPP [SIZE] [SEED] [glossy | frosted]
 //
 // `glossy`: the spheres rough metals of constant reflectance 0.9 (RoughConductor with
 // ConstantKr, as Cycles' Glossy BSDF: GGX without Fresnel), roughness 0.4 (left) and 0.15
-// (right).
+// (right). `frosted`: the left one frosted glass instead (RoughDielectric, index 1.5,
+// roughness 0.3, against Cycles' Glass BSDF).
 #include <prism/io/exr.hpp>
 #include <prism/io/image.hpp>
 #include <prism/prism.hpp>
@@ -34,10 +35,14 @@ int main(int argc, char** argv)
     const Camera<T> camera{.position = {0, 1.5f, 5}, .look_at = {0, 0.5f, 0}, .up = {0, 1, 0}, .fov = 50};
     const RenderConfig config{.width = size, .height = size, .spp = std::atoi(argv[2]), .threads = 2,
                               .seed = argc > 4 ? std::strtoull(argv[4], nullptr, 10) : 0, .progress = false};
-    const bool glossy = argc > 5 && std::string(argv[5]) == "glossy";
+    const std::string variant = argc > 5 ? argv[5] : "";
     const auto start = std::chrono::steady_clock::now();
     Film film(1, 1);
-    if (glossy) {
+    if (variant == "frosted") {
+        const Scene scene{Lights{sky}, floor, Object{Sphere<T>({-0.8f, 0.6f, 0}, 0.6f), RoughDielectric<T>{.ior = 1.5f, .roughness = 0.3f}},
+                          Object{Sphere<T>({0.8f, 0.6f, 0}, 0.6f), RoughConductor<T>{.fresnel = {.kr = Rgb<T>(0.9f)}, .roughness = 0.15f}}};
+        film = render(camera, PathTracer(scene), config);
+    } else if (variant == "glossy") {
         const Scene scene{Lights{sky}, floor,
                           Object{Sphere<T>({-0.8f, 0.6f, 0}, 0.6f), RoughConductor<T>{.fresnel = {.kr = Rgb<T>(0.9f)}, .roughness = 0.4f}},
                           Object{Sphere<T>({0.8f, 0.6f, 0}, 0.6f), RoughConductor<T>{.fresnel = {.kr = Rgb<T>(0.9f)}, .roughness = 0.15f}}};
