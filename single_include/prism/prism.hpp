@@ -6002,9 +6002,6 @@ struct LobeSample {
     Rgb<T> weight; ///< f(wo, wi) |wi.z| / pdf; for a delta (a smooth surface's mirror or refraction), what it lets through over the probability of drawing it
     T pdf;         ///< the solid-angle density it was drawn with (over every part of the lobe); 0 for a delta
     bool delta;    ///< drawn from a delta part: no density, never found by a light sample
-
-    /// Whether the direction goes through the surface.
-    [[nodiscard]] constexpr bool transmitted() const noexcept { return wi.z < T(0); }
 };
 
 /// The cosine-distributed direction about local z for the uniform numbers u1, u2
@@ -7049,9 +7046,6 @@ public:
 
     /// The unit mirror direction of the arriving path about the shading normal (world).
     [[nodiscard]] Vec3<T> mirror() const noexcept { return frame_.to_world({-wo_.x, -wo_.y, wo_.z}); }
-
-    /// The absolute cosine of wi (world) with the shading normal.
-    [[nodiscard]] T cosine(const Vec3<T>& wi) const noexcept { return std::abs(dot(wi, frame_.n)); }
 
     /// A next direction drawn from the lobe (world), with the lobe's weight and density;
     /// nothing where the lobe draws none or the draw fails the side test.
@@ -11737,42 +11731,36 @@ public:
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         const Crossing<T>& c = at.crossing();
                         const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
-                        if constexpr (has_glossy<M>) {
-                            // Each light sample weighed by the lobe toward it; an area light's shares
-                            // its path with the lobe's own draw (its density there) as a diffuse one's.
-                            // (A glossy interface gathers from both sides: its lobe refracts.)
-                            constexpr Sides sides = transmits<M> ? Sides::both : Sides::near;
-                            const auto lobe = glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index));
-                            Rgb<T> reflected{T(0)};
-                            scene_->for_each_light([&]<class L>(const L& light) {
-                                if constexpr (!is_delta_light<L>) {
-                                    if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
-                                }
-                                for_each_sample_arriving<ShadowsThroughGlass::blocked, sides>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                        // Each light sample: an area light's shares its path with the bounce
+                        // that finds it where the walk goes on (the diffuse lobe's cos / pi, a
+                        // glossy lobe's own density there). A diffuse lobe sums irradiance and
+                        // takes its BRDF once; a glossy one weighs each sample by f toward it,
+                        // from both sides for a glossy interface (its lobe refracts).
+                        constexpr Sides sides = has_glossy<M> && transmits<M> ? Sides::both : Sides::near;
+                        const auto lobe = [&] {
+                            if constexpr (has_glossy<M>) return glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index));
+                            else return diffuse_response(material, c);
+                        }();
+                        Rgb<T> gathered{T(0)};
+                        scene_->for_each_light([&]<class L>(const L& light) {
+                            if constexpr (!is_delta_light<L>) {
+                                if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
+                            }
+                            for_each_sample_arriving<ShadowsThroughGlass::blocked, sides>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                                const bool shared = !s.delta() && go_on;
+                                if constexpr (has_glossy<M>) {
                                     const Rgb<T> f = lobe.f(s.wi, Transport::radiance);
                                     if (!(max_component(f) > T(0))) return;
-                                    const bool shared = !s.delta() && go_on;
                                     const T w = shared ? light_sample_weight(s.pdf, lobe.pdf(s.wi)) : T(1);
-                                    reflected += (w * cos) * f * v * s.irradiance;
-                                });
-                            });
-                            sum += at.power * reflected;
-                        } else {
-                            Rgb<T> irradiance{T(0)};
-                            scene_->for_each_light([&]<class L>(const L& light) {
-                                if constexpr (!is_delta_light<L>) {
-                                    if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
-                                }
-                                for_each_sample_arriving<ShadowsThroughGlass::blocked>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
-                                    // An area light's sample shares its path with the diffuse
-                                    // bounce (cos / pi) that finds it where the walk goes on.
-                                    const bool shared = !s.delta() && go_on;
+                                    gathered += (w * cos) * f * v * s.irradiance;
+                                } else {
                                     const T w = shared ? light_sample_weight(s.pdf, cos / pi<T>) : T(1);
-                                    irradiance += w * v * s.irradiance * cos;
-                                });
+                                    gathered += w * v * s.irradiance * cos;
+                                }
                             });
-                            sum += at.power * diffuse_response(material, c).brdf() * irradiance;
-                        }
+                        });
+                        if constexpr (has_glossy<M>) sum += at.power * gathered;
+                        else sum += at.power * lobe.brdf() * gathered;
                         return go_on;
                     },
                     [&](const WalkEscape<T>& out) {
@@ -14805,8 +14793,7 @@ struct PhongLobe {
             for (int j = 0; j < 4; ++j) {
                 const T cos_a = std::pow((T(i) + T(0.5)) / T(4), T(1) / (exponent + T(1)));
                 const T sin_a = std::sqrt(std::max(T(0), T(1) - cos_a * cos_a)), phi = T(2) * pi<T> * (T(j) + T(0.5)) / T(4);
-                const T z = dot(sin_a * std::cos(phi) * s + sin_a * std::sin(phi) * t + cos_a * mirror, Vec3<T>(T(0), T(0), T(1)));
-                sum += std::max(z, T(0));
+                sum += std::max((sin_a * std::cos(phi) * s + sin_a * std::sin(phi) * t + cos_a * mirror).z, T(0));
             }
         return ks * ((exponent + T(2)) / (exponent + T(1)) * sum / T(16));
     }
@@ -15120,13 +15107,6 @@ public:
         if (!(density > T(0))) return std::nullopt;
         const Rgb<T> value = f(wo, wi, mode);
         return LobeSample<T>{wi, value * (std::abs(wi.z) / density), density, false};
-    }
-
-    /// A clean interface's reflection (its whole weight F); nothing for a rough one.
-    [[nodiscard]] std::optional<LobeSample<T>> delta_part(const Vec3<T>& wo) const noexcept
-    {
-        if (!smooth() || !(wo.z > T(0))) return std::nullopt;
-        return LobeSample<T>{{-wo.x, -wo.y, wo.z}, Rgb<T>(fresnel_dielectric(wo.z, eta_)), T(0), true};
     }
 
 private:

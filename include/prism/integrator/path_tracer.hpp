@@ -93,42 +93,36 @@ public:
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         const Crossing<T>& c = at.crossing();
                         const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
-                        if constexpr (has_glossy<M>) {
-                            // Each light sample weighed by the lobe toward it; an area light's shares
-                            // its path with the lobe's own draw (its density there) as a diffuse one's.
-                            // (A glossy interface gathers from both sides: its lobe refracts.)
-                            constexpr Sides sides = transmits<M> ? Sides::both : Sides::near;
-                            const auto lobe = glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index));
-                            Rgb<T> reflected{T(0)};
-                            scene_->for_each_light([&]<class L>(const L& light) {
-                                if constexpr (!is_delta_light<L>) {
-                                    if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
-                                }
-                                for_each_sample_arriving<ShadowsThroughGlass::blocked, sides>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                        // Each light sample: an area light's shares its path with the bounce
+                        // that finds it where the walk goes on (the diffuse lobe's cos / pi, a
+                        // glossy lobe's own density there). A diffuse lobe sums irradiance and
+                        // takes its BRDF once; a glossy one weighs each sample by f toward it,
+                        // from both sides for a glossy interface (its lobe refracts).
+                        constexpr Sides sides = has_glossy<M> && transmits<M> ? Sides::both : Sides::near;
+                        const auto lobe = [&] {
+                            if constexpr (has_glossy<M>) return glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index));
+                            else return diffuse_response(material, c);
+                        }();
+                        Rgb<T> gathered{T(0)};
+                        scene_->for_each_light([&]<class L>(const L& light) {
+                            if constexpr (!is_delta_light<L>) {
+                                if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
+                            }
+                            for_each_sample_arriving<ShadowsThroughGlass::blocked, sides>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                                const bool shared = !s.delta() && go_on;
+                                if constexpr (has_glossy<M>) {
                                     const Rgb<T> f = lobe.f(s.wi, Transport::radiance);
                                     if (!(max_component(f) > T(0))) return;
-                                    const bool shared = !s.delta() && go_on;
                                     const T w = shared ? light_sample_weight(s.pdf, lobe.pdf(s.wi)) : T(1);
-                                    reflected += (w * cos) * f * v * s.irradiance;
-                                });
-                            });
-                            sum += at.power * reflected;
-                        } else {
-                            Rgb<T> irradiance{T(0)};
-                            scene_->for_each_light([&]<class L>(const L& light) {
-                                if constexpr (!is_delta_light<L>) {
-                                    if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
-                                }
-                                for_each_sample_arriving<ShadowsThroughGlass::blocked>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
-                                    // An area light's sample shares its path with the diffuse
-                                    // bounce (cos / pi) that finds it where the walk goes on.
-                                    const bool shared = !s.delta() && go_on;
+                                    gathered += (w * cos) * f * v * s.irradiance;
+                                } else {
                                     const T w = shared ? light_sample_weight(s.pdf, cos / pi<T>) : T(1);
-                                    irradiance += w * v * s.irradiance * cos;
-                                });
+                                    gathered += w * v * s.irradiance * cos;
+                                }
                             });
-                            sum += at.power * diffuse_response(material, c).brdf() * irradiance;
-                        }
+                        });
+                        if constexpr (has_glossy<M>) sum += at.power * gathered;
+                        else sum += at.power * lobe.brdf() * gathered;
                         return go_on;
                     },
                     [&](const WalkEscape<T>& out) {

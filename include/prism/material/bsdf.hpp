@@ -50,9 +50,6 @@ struct LobeSample {
     Rgb<T> weight; ///< f(wo, wi) |wi.z| / pdf; for a delta (a smooth surface's mirror or refraction), what it lets through over the probability of drawing it
     T pdf;         ///< the solid-angle density it was drawn with (over every part of the lobe); 0 for a delta
     bool delta;    ///< drawn from a delta part: no density, never found by a light sample
-
-    /// Whether the direction goes through the surface.
-    [[nodiscard]] constexpr bool transmitted() const noexcept { return wi.z < T(0); }
 };
 
 /// The cosine-distributed direction about local z for the uniform numbers u1, u2

@@ -81,8 +81,7 @@ struct PhongLobe {
             for (int j = 0; j < 4; ++j) {
                 const T cos_a = std::pow((T(i) + T(0.5)) / T(4), T(1) / (exponent + T(1)));
                 const T sin_a = std::sqrt(std::max(T(0), T(1) - cos_a * cos_a)), phi = T(2) * pi<T> * (T(j) + T(0.5)) / T(4);
-                const T z = dot(sin_a * std::cos(phi) * s + sin_a * std::sin(phi) * t + cos_a * mirror, Vec3<T>(T(0), T(0), T(1)));
-                sum += std::max(z, T(0));
+                sum += std::max((sin_a * std::cos(phi) * s + sin_a * std::sin(phi) * t + cos_a * mirror).z, T(0));
             }
         return ks * ((exponent + T(2)) / (exponent + T(1)) * sum / T(16));
     }

@@ -113,13 +113,6 @@ public:
         return LobeSample<T>{wi, value * (std::abs(wi.z) / density), density, false};
     }
 
-    /// A clean interface's reflection (its whole weight F); nothing for a rough one.
-    [[nodiscard]] std::optional<LobeSample<T>> delta_part(const Vec3<T>& wo) const noexcept
-    {
-        if (!smooth() || !(wo.z > T(0))) return std::nullopt;
-        return LobeSample<T>{{-wo.x, -wo.y, wo.z}, Rgb<T>(fresnel_dielectric(wo.z, eta_)), T(0), true};
-    }
-
 private:
     struct Half {
         Vec3<T> m; ///< the facet normal, on +z's side

@@ -413,9 +413,6 @@ public:
     /// The unit mirror direction of the arriving path about the shading normal (world).
     [[nodiscard]] Vec3<T> mirror() const noexcept { return frame_.to_world({-wo_.x, -wo_.y, wo_.z}); }
 
-    /// The absolute cosine of wi (world) with the shading normal.
-    [[nodiscard]] T cosine(const Vec3<T>& wi) const noexcept { return std::abs(dot(wi, frame_.n)); }
-
     /// A next direction drawn from the lobe (world), with the lobe's weight and density;
     /// nothing where the lobe draws none or the draw fails the side test.
     [[nodiscard]] std::optional<LobeSample<T>> sample(Pcg32& rng, Transport mode) const noexcept
