@@ -3,6 +3,7 @@
 
 #include "../chi2.hpp"
 #include "../support.hpp"
+#include "../uv_checks.hpp"
 
 using prism::Disk;
 using prism::Vec3;
@@ -47,4 +48,13 @@ TEST_CASE("a disk's points by area, seen from a point, follow the density they r
         CHECK(c.p_value > 1e-3);
         CHECK(std::abs(c.missing) < 4e-3 * 400000);
     }
+}
+
+TEST_CASE("a disk's surface coordinates are polar (distance over radius, angle over 2 pi): dp/du and dp/dv by finite differences")
+{
+    const Disk<double> disk({1, 0, 2}, normalize(Vec3<double>{0.2, 1, -0.3}), 1.5);
+    const auto found = uv_checks::check_derivatives(disk, {1, 0, 2}, 1.5, 3000, [](const auto& c) { return c.uv.x < 0.05 || c.uv.y < 0.01 || c.uv.y > 0.99; });
+    CHECK(found.checked > 500);
+    CHECK(found.worst < 1e-3);
+    CHECK(found.left_handed == 0);
 }

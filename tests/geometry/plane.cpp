@@ -2,6 +2,7 @@
 #include <prism/geometry/plane.hpp>
 
 #include "../support.hpp"
+#include "../uv_checks.hpp"
 
 using prism::Interval;
 using prism::Plane;
@@ -70,4 +71,25 @@ TEST_CASE("normals as small as a denormal or as large as 3e38 give the same plan
     }
     // x = 1 / 1e-45 is beyond float: said, not wrapped.
     CHECK_THROWS_WITH_AS(prism::Plane<float>({1e-45f, 0, 0}, 1.0f), doctest::Contains("Plane offset"), std::invalid_argument);
+}
+
+TEST_CASE("a plane's surface coordinates run in the scene's units: u along +x and v along -z on a floor, u right and v up on a wall")
+{
+    const Plane<double> floor({0, 1, 0}, 0.5);
+    const auto c = floor.crossings({{3, 4, -2}, {0, -1, 0}}, Interval<double>::universe());
+    REQUIRE(c.size() == 1);
+    CHECK(c.front().uv.x == doctest::Approx(3));
+    CHECK(c.front().uv.y == doctest::Approx(2));
+    // A wall facing a camera at -z looking +z: its right is -x.
+    const Plane<double> wall({0, 0, -1}, -4);
+    const auto w = wall.crossings({{1, 2, 0}, {0, 0, 1}}, Interval<double>::universe());
+    REQUIRE(w.size() == 1);
+    CHECK(w.front().dpdu.x == doctest::Approx(-1));
+    CHECK(w.front().dpdv.y == doctest::Approx(1));
+    for (const Vec3<double>& n : {Vec3<double>{0, 1, 0}, Vec3<double>{0, -1, 0}, normalize(Vec3<double>{1, 2, 3}), normalize(Vec3<double>{-3, 0.1, 1})}) {
+        const auto found = uv_checks::check_derivatives(Plane<double>(n, 0.3), {0, 0, 0}, 2.0, 500, [](const auto&) { return false; });
+        CHECK(found.checked > 100);
+        CHECK(found.worst < 1e-6);
+        CHECK(found.left_handed == 0);
+    }
 }

@@ -3,6 +3,7 @@
 
 #include "../chi2.hpp"
 #include "../support.hpp"
+#include "../uv_checks.hpp"
 
 #include <string>
 
@@ -177,4 +178,12 @@ TEST_CASE("a rectangle's points by solid angle stay on it, with its normal")
         CHECK((s.point.x >= -0.5f - 1e-5f && s.point.x <= 0.5f + 1e-5f && s.point.z >= -0.25f - 1e-5f && s.point.z <= 0.25f + 1e-5f));
         CHECK(s.pdf > 0);
     }
+}
+
+TEST_CASE("a quad's surface coordinates (s, t) move with its edges: dp/du = edge u, dp/dv = edge v")
+{
+    const Quad<double> quad({0, 1, 0}, {2, 0, 0.5}, {0.3, 0, -1});
+    const auto found = uv_checks::check_derivatives(quad, {1, 1, 0}, 1.0, 3000, [](const auto&) { return false; });
+    CHECK(found.checked > 500);
+    CHECK(found.worst < 1e-6);
 }

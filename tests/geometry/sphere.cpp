@@ -3,6 +3,7 @@
 
 #include "../chi2.hpp"
 #include "../support.hpp"
+#include "../uv_checks.hpp"
 
 #include <cmath>
 
@@ -203,4 +204,29 @@ TEST_CASE("a sphere's points seen from a point follow the density they report (c
         CHECK(std::abs(prism::length(x.point - s.center()) - 0.5) < 1e-12);
         CHECK(prism::dot(x.normal, p - x.point) >= -1e-9);
     }
+}
+
+TEST_CASE("a sphere's surface coordinates: u round the vertical from +z, v from the bottom; dp/du and dp/dv by finite differences")
+{
+    const Sphere<double> sphere({1, 2, 3}, 2);
+    const auto uv_seen = [&](Vec3<double> toward) {
+        const auto c = sphere.crossings({Vec3<double>{1, 2, 3} + 10.0 * toward, -toward}, {0, prism::infinity<double>});
+        REQUIRE(c.size() == 2);
+        return c.front().uv;
+    };
+    // The definitions (docs/guide.md): u = 1/4 at +x, 1/2 at -z, 3/4 at -x; v = 1/2 on the equator.
+    CHECK(uv_seen({1, 0, 0}).x == doctest::Approx(0.25));
+    CHECK(uv_seen({0, 0, -1}).x == doctest::Approx(0.5));
+    CHECK(uv_seen({-1, 0, 0}).x == doctest::Approx(0.75));
+    CHECK(uv_seen({1, 0, 0}).y == doctest::Approx(0.5));
+    CHECK(uv_seen(normalize(Vec3<double>{0, 1, -1})).y == doctest::Approx(0.75)); // 45 degrees above the equator
+    CHECK(uv_seen({0, -1, 0}).y == doctest::Approx(0).epsilon(1e-12));
+    CHECK(uv_seen({0, 1, 0}).y == doctest::Approx(1));
+    // Away from the seam (+z, u = 0 | 1) and the poles.
+    const auto found = uv_checks::check_derivatives(sphere, {1, 2, 3}, 2.0, 4000, [](const prism::Crossing<double>& c) {
+        return c.uv.x < 0.01 || c.uv.x > 0.99 || c.uv.y < 0.02 || c.uv.y > 0.98;
+    });
+    CHECK(found.checked > 2000);
+    CHECK(found.worst < 1e-3);
+    CHECK(found.left_handed == 0);
 }

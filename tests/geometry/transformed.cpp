@@ -3,6 +3,7 @@
 #include <prism/prism.hpp>
 
 #include "../support.hpp"
+#include "../uv_checks.hpp"
 
 using doctest::Approx;
 using namespace prism;
@@ -52,4 +53,16 @@ TEST_CASE_TEMPLATE("a ray leaving a transformed box or sphere never hits it agai
                   return std::pair{Transformed(Sphere<T>({T(0), T(0), T(0)}, T(1)), place), centre};
               }) == 0);
     }
+}
+
+TEST_CASE("a transformed sphere keeps its surface coordinates, and carries dp/du and dp/dv into the world")
+{
+    const auto place = Transform<double>::scale({2, 1, 0.5}).then(Transform<double>::rotate_y(30)).then(Transform<double>::translate({1, 2, 3}));
+    const Transformed<Sphere<double>> ellipsoid(Sphere<double>({0, 0, 0}, 1), place);
+    const auto found = uv_checks::check_derivatives(ellipsoid, {1, 2, 3}, 1.5, 3000, [](const auto& c) {
+        return c.uv.x < 0.02 || c.uv.x > 0.98 || c.uv.y < 0.05 || c.uv.y > 0.95;
+    });
+    CHECK(found.checked > 1000);
+    CHECK(found.worst < 2e-3);
+    CHECK(found.left_handed == 0);
 }

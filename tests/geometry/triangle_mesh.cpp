@@ -2,6 +2,7 @@
 #include <prism/geometry/triangle_mesh.hpp>
 
 #include "../support.hpp"
+#include "../uv_checks.hpp"
 
 #include <cmath>
 #include <vector>
@@ -359,4 +360,23 @@ TEST_CASE("vertex normals and uvs are checked: one per position, finite, non-zer
     CHECK_THROWS_WITH_AS(TriangleMesh<float>(b.positions, b.triangles, {.leaf_block = 2}),
                          "prism: TriangleMesh BvhConfig leaf_block must be a multiple of 4 (its triangles are tested in blocks), got 2", std::invalid_argument);
     CHECK(mesh.memory_bytes() == TriangleMesh<float>(b.positions, b.triangles).memory_bytes() + 4 * (3 * sizeof(Vec3<float>) + 3 * sizeof(prism::Vec2<float>)));
+}
+
+TEST_CASE("a mesh's dp/du and dp/dv come from its triangles' uvs: finite differences on a skewed, sheared map")
+{
+    // A folded strip with uv an affine map of position that is neither orthogonal nor
+    // unit: each triangle's derivatives are that map's inverse.
+    prism::MeshBuffers<double> strip;
+    strip.positions = {{0, 0, 0}, {2, 0, 0}, {2, 0.5, 2}, {0, 0.5, 2}, {2, 1.5, 3}, {0, 1.5, 3}};
+    strip.triangles = {{0, 2, 1}, {0, 3, 2}, {3, 4, 2}, {3, 5, 4}};
+    for (const Vec3<double>& p : strip.positions) strip.uvs.push_back({0.3 * p.x + 0.1 * p.z, -0.2 * p.x + 0.4 * (p.z + p.y)});
+    const TriangleMesh<double> mesh(strip);
+    const auto found = uv_checks::check_derivatives(mesh, {1, 0.7, 1.5}, 1.5, 3000, [](const auto&) { return false; });
+    CHECK(found.checked > 500);
+    CHECK(found.worst < 1e-6);
+    // Collinear uvs: none.
+    strip.uvs.assign(strip.positions.size(), prism::Vec2<double>{0.5, 0.5});
+    const auto flat = TriangleMesh<double>(strip).crossings({{1, 5, 0.5}, {0, -1, 0}}, {0, prism::infinity<double>});
+    REQUIRE(!flat.empty());
+    CHECK_FALSE(flat.front().has_uv());
 }

@@ -121,7 +121,27 @@ private:
         point[axis] = high_face ? hi_[axis] : lo_[axis];
         error[axis] = T(0);
         normal[axis] = high_face ? T(1) : T(-1);
-        return Crossing<T>::flat(t, point, error, normal, entering);
+        return Crossing<T>::flat(t, point, error, normal, entering).with_uv(face_uv(point, normal), face_extent(normal, 0), face_extent(normal, 1));
+    }
+
+    // Surface coordinates: each face spans [0, 1]^2 along its axes (face_axes, as a
+    // Plane's), or runs in the scene's units along an infinite side.
+    [[nodiscard]] constexpr Vec3<T> face_extent(const Vec3<T>& normal, int which) const noexcept
+    {
+        const auto axes = detail::face_axes(normal);
+        const Vec3<T> axis = which == 0 ? axes.first : axes.second;
+        const T side = std::abs(dot(hi_ - lo_, axis));
+        return is_finite(side) ? side * axis : axis;
+    }
+    [[nodiscard]] constexpr Vec2<T> face_uv(const Vec3<T>& point, const Vec3<T>& normal) const noexcept
+    {
+        const auto [u, v] = detail::face_axes(normal);
+        const auto coordinate = [&](const Vec3<T>& axis) {
+            // From the face's corner where the coordinate is least.
+            const T start = std::min(dot(lo_, axis), dot(hi_, axis)), side = std::abs(dot(hi_ - lo_, axis));
+            return is_finite(side) ? (dot(point, axis) - start) / side : dot(point, axis);
+        };
+        return {coordinate(u), coordinate(v)};
     }
 
     Vec3<T> lo_{};

@@ -13,6 +13,7 @@
 #include <array>
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 
 namespace prism {
 
@@ -28,14 +29,30 @@ struct Crossing {
     Vec3<T> normal; ///< unit outward normal (the gradient of the inside function)
     bool entering; ///< the ray goes from outside to inside here (gradient . direction < 0)
     Vec3<T> shading; ///< unit outward shading normal: a mesh's interpolated vertex normal, else `normal`
-    Vec2<T> uv;      ///< surface coordinates: a mesh's interpolated ones, else (0, 0)
+    Vec2<T> uv;      ///< surface coordinates (docs/guide.md, "Surface coordinates"); (0, 0) on a shape without them
+    Vec3<T> dpdu;    ///< how the point moves with u, dp/du (zero on a shape without surface coordinates)
+    Vec3<T> dpdv;    ///< how the point moves with v, dp/dv (zero likewise)
+    T footprint;     ///< the width of the ray's footprint here, across the surface (scene queries set it: Ray::width); 0 for a point
 
     /// A crossing of a surface without vertex normals or coordinates: it shades with
     /// its true normal.
     [[nodiscard]] static constexpr Crossing flat(T t, const Vec3<T>& point, const Vec3<T>& error, const Vec3<T>& normal, bool entering) noexcept
     {
-        return {t, point, error, normal, entering, normal, Vec2<T>(T(0))};
+        return {t, point, error, normal, entering, normal, Vec2<T>(T(0)), Vec3<T>(T(0)), Vec3<T>(T(0)), T(0)};
     }
+
+    /// This crossing with surface coordinates uv and their derivatives.
+    [[nodiscard]] constexpr Crossing with_uv(const Vec2<T>& coordinates, const Vec3<T>& dp_du, const Vec3<T>& dp_dv) const noexcept
+    {
+        Crossing c = *this;
+        c.uv = coordinates;
+        c.dpdu = dp_du;
+        c.dpdv = dp_dv;
+        return c;
+    }
+
+    /// Whether the shape gave surface coordinates here (dp/du and dp/dv not both zero).
+    [[nodiscard]] constexpr bool has_uv() const noexcept { return dpdu != Vec3<T>(T(0)) || dpdv != Vec3<T>(T(0)); }
 
     /// The unit normal on the side the ray arrives from (outward when it enters).
     [[nodiscard]] constexpr Vec3<T> facing_normal() const noexcept { return entering ? normal : -normal; }
@@ -58,6 +75,23 @@ struct Crossing {
         return c;
     }
 };
+
+namespace detail {
+
+/// The directions of u and v on a flat face with unit normal n (planes, a box's faces):
+/// u runs along cross(up, n) and v along cross(n, u), with up +y, or -z for a face that
+/// looks up or down. So (u, v, n) is right-handed: a picture reads the right way round
+/// seen from the side n points to; on a wall u runs to the viewer's right and v up, and
+/// on a floor (n = +y) u runs along +x and v along -z.
+template <Scalar T>
+[[nodiscard]] constexpr std::pair<Vec3<T>, Vec3<T>> face_axes(const Vec3<T>& n) noexcept
+{
+    const Vec3<T> up = std::abs(n.y) > T(0.999) ? Vec3<T>(T(0), T(0), T(-1)) : Vec3<T>(T(0), T(1), T(0));
+    const Vec3<T> u = normalize(cross(up, n));
+    return {u, cross(n, u)};
+}
+
+} // namespace detail
 
 /// The sorted boundary crossings of a ray within a range, at most N of them.
 template <Scalar T, std::size_t N>

@@ -80,7 +80,10 @@ public:
             const Vec3<T> error = detail::plane_point_error(normal_, offset_, point);
             T angle = std::atan2(dot(local, t_), dot(local, s_));
             if (angle < T(0)) angle += T(2) * pi<T>;
-            out.push_back({t, point, error, normal_, entering, normal_, Vec2<T>(prism::sqrt(r2) / radius_, angle / (T(2) * pi<T>))});
+            const T rho = prism::sqrt(r2);
+            const Vec3<T> radial = rho > T(0) ? local * (radius_ / rho) : s_ * radius_;
+            out.push_back(Crossing<T>::flat(t, point, error, normal_, entering)
+                              .with_uv({rho / radius_, angle / (T(2) * pi<T>)}, radial, (T(2) * pi<T>) * cross(normal_, local)));
         }
         return out;
     }

@@ -105,7 +105,10 @@ private:
     {
         // The hit point projected onto the plane, with its error bound.
         const Vec3<T> point = detail::onto_plane(normal_, offset_, ray.at(t));
-        return Crossing<T>::flat(t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering);
+        // Surface coordinates in the scene's units along the face's axes (face_axes).
+        const auto [u, v] = detail::face_axes(normal_);
+        return Crossing<T>::flat(t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering)
+            .with_uv({dot(point, u), dot(point, v)}, u, v);
     }
 
     Vec3<T> normal_{T(0), T(1), T(0)};

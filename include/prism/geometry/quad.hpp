@@ -89,7 +89,7 @@ public:
         if constexpr (!Surface) {
             out.push_back(Crossing<T>::without_surface(t, entering));
         } else {
-            out.push_back({t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering, normal_, Vec2<T>(s, r)});
+            out.push_back(Crossing<T>::flat(t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering).with_uv({s, r}, u_, v_));
         }
         return out;
     }

@@ -145,6 +145,8 @@ private:
         const bool flat = c.shades_flat();
         c.normal = normalize(to_world_.normal(c.normal));
         c.shading = flat ? c.normal : normalize(to_world_.normal(c.shading));
+        c.dpdu = to_world_.vector(c.dpdu);
+        c.dpdv = to_world_.vector(c.dpdv);
     }
 
     /// The box around the eight transformed corners of the shape's box.

@@ -427,6 +427,16 @@ private:
         if (!data_->uvs.empty()) {
             const auto& uv = data_->uvs[h.triangle];
             out.uv = h.b[0] * uv[0] + h.b[1] * uv[1] + h.b[2] * uv[2];
+            // dp/du and dp/dv of the triangle's linear map from uv to space (pbrt-v4,
+            // Triangle::InteractionFromIntersection); none where its uvs are collinear.
+            const Vec2<T> d02 = uv[0] - uv[2], d12 = uv[1] - uv[2];
+            const Vec3<T> p02 = c[0] - c[2], p12 = c[1] - c[2];
+            const T det = d02.x * d12.y - d02.y * d12.x;
+            if (std::abs(det) > T(1e-9) * std::max(d02.x * d02.x + d02.y * d02.y, d12.x * d12.x + d12.y * d12.y)) {
+                const T inv = T(1) / det;
+                out.dpdu = (d12.y * p02 - d02.y * p12) * inv;
+                out.dpdv = (d02.x * p12 - d12.x * p02) * inv;
+            }
         }
         return out;
     }

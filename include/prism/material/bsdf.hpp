@@ -7,6 +7,8 @@
 
 #include <prism/core/math.hpp>
 #include <prism/core/sampling.hpp>
+#include <prism/material/texture.hpp>
+#include <prism/optics/microfacet.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -70,7 +72,34 @@ struct GlossyQuery {
     Vec2<T> uv;    ///< its surface coordinates (Crossing::uv)
     bool entering = true; ///< the light (or the camera path) arrives from outside
     T eta = T(1);  ///< n beyond / n arriving, for an interface (1 where nothing refracts)
+    T width = T(0); ///< the ray's footprint there, in uv units (TexturePoint::width)
+
+    /// Where its textures are read.
+    [[nodiscard]] constexpr TexturePoint<T> texture_point() const noexcept { return {point, uv, width}; }
 };
+
+/// A material's roughness where its texture is read: a Roughness as given, or a
+/// one-number texture's value on both axes (isotropic).
+template <Scalar T, class R>
+[[nodiscard]] constexpr Roughness<T> roughness_at(const R& roughness, const TexturePoint<T>& at) noexcept
+{
+    if constexpr (ScalarTexture<R>) return Roughness<T>(roughness.value(at));
+    else return roughness;
+}
+
+/// Throws std::invalid_argument, naming the material, for a roughness outside [0, 1]: a
+/// Roughness's, or a texture's largest value (where it knows it: max_value()).
+template <class R>
+constexpr void validate_roughness(const R& roughness, const char* name)
+{
+    if constexpr (ScalarTexture<R>) {
+        roughness.validate();
+        if constexpr (requires { roughness.max_value(); })
+            if (!(roughness.max_value() <= 1)) detail::throw_invalid(name, " roughness texture's values must be in [0, 1], got up to ", roughness.max_value());
+    } else {
+        roughness.validate(name);
+    }
+}
 
 /// A BSDF lobe in its local frame (directions unit, pointing away from the surface;
 /// wo the direction a path leaves toward, wi the one light arrives from):

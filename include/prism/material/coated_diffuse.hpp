@@ -228,7 +228,7 @@ public:
     /// The lobe at a point.
     [[nodiscard]] CoatedLobe<T> glossy(const GlossyQuery<T>& q) const noexcept
     {
-        return {albedo_at(albedo_, q.point, q.uv), coat_, transmission_};
+        return {albedo_at(albedo_, q.texture_point()), coat_, transmission_};
     }
 
     /// The base's albedo texture.

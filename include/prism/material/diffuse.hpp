@@ -50,8 +50,8 @@ struct Diffuse {
     T phong = T(0); ///< POV-Ray's phong: the highlight's strength, 0 for none
     T phong_size = T(40); ///< POV-Ray's phong_size: the highlight's exponent
 
-    /// The albedo at p (and uv, for textures in surface coordinates), with kd and ka.
-    [[nodiscard]] constexpr DiffuseResponse<T> diffuse(const Vec3<T>& p, const Vec2<T>& uv) const noexcept { return {albedo_at(albedo, p, uv), kd, ka}; }
+    /// The albedo where the texture is read (point, uv and footprint), with kd and ka.
+    [[nodiscard]] constexpr DiffuseResponse<T> diffuse(const TexturePoint<T>& at) const noexcept { return {albedo_at(albedo, at), kd, ka}; }
 
     /// The Phong highlight's weight for cos_alpha = R . L (0 when phong is 0 or the light
     /// is behind the mirror direction): radiance phong cos_alpha^phong_size E / pi.

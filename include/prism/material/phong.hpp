@@ -126,7 +126,7 @@ struct Phong {
     /// The lobe at a point.
     [[nodiscard]] constexpr PhongLobe<T> glossy(const GlossyQuery<T>& q) const noexcept
     {
-        return {albedo_at(diffuse, q.point, q.uv), specular, exponent};
+        return {albedo_at(diffuse, q.texture_point()), specular, exponent};
     }
 
     /// Throws std::invalid_argument, naming the parameter, for a bad albedo, a specular

@@ -102,7 +102,7 @@ private:
 /// isotropic or along the frame's two tangents) reflecting by the Fresnel policy of a
 /// Conductor (ConstantKr, ComplexIor, MeasuredConductor). At roughness below about
 /// 0.03 (alpha below TrowbridgeReitz::smooth_alpha) it is the mirror Conductor.
-template <Scalar T = float, class Fresnel = ConstantKr<T>>
+template <Scalar T = float, class Fresnel = ConstantKr<T>, class RoughnessMap = Roughness<T>>
 struct RoughConductor {
     /// The precision of the material.
     using scalar_type = T;
@@ -116,18 +116,18 @@ struct RoughConductor {
     static constexpr bool has_glossy = true;
 
     Fresnel fresnel{}; ///< each facet's reflectance: ConstantKr, ComplexIor, MeasuredConductor or the user's
-    Roughness<T> roughness{}; ///< roughness, alpha = roughness^2
+    RoughnessMap roughness{}; ///< roughness, alpha = roughness^2: a Roughness, or a one-number texture (ImageTexture) of it
 
     /// The lobe at a point.
-    [[nodiscard]] constexpr MicrofacetReflection<T, Fresnel> glossy(const GlossyQuery<T>&) const noexcept
+    [[nodiscard]] constexpr MicrofacetReflection<T, Fresnel> glossy(const GlossyQuery<T>& q) const noexcept
     {
-        return {TrowbridgeReitz<T>::from(roughness), fresnel};
+        return {TrowbridgeReitz<T>::from(roughness_at(roughness, q.texture_point())), fresnel};
     }
 
     /// Throws std::invalid_argument, naming the parameter, for a roughness outside [0, 1] or a bad Fresnel policy.
     constexpr void validate() const
     {
-        roughness.validate("RoughConductor");
+        validate_roughness(roughness, "RoughConductor");
         fresnel.validate();
     }
 };

@@ -158,7 +158,7 @@ private:
 /// (alpha = roughness^2), filled with `interior` (Beer-Lambert by default), nested with
 /// other transmissive objects by `priority` as Dielectric is. Below roughness 0.03 it is
 /// Dielectric's clean interface. Whitted's shadow rays pass it as they pass clear glass.
-template <Scalar T = float, Medium Interior = Homogeneous<T>>
+template <Scalar T = float, Medium Interior = Homogeneous<T>, class RoughnessMap = Roughness<T>>
     requires std::same_as<typename Interior::scalar_type, T>
 struct RoughDielectric {
     /// The precision of the material.
@@ -173,14 +173,14 @@ struct RoughDielectric {
     static constexpr bool has_glossy = true;
 
     T ior = T(1.5); ///< the index of refraction inside
-    Roughness<T> roughness{}; ///< roughness, alpha = roughness^2
+    RoughnessMap roughness{}; ///< roughness, alpha = roughness^2: a Roughness, or a one-number texture (ImageTexture) of it
     Interior interior{}; ///< the medium that fills it
     int priority = 0; ///< where it overlaps another transmissive object, the higher priority's medium wins (medium/nesting.hpp)
 
     /// The lobe at a point, for light arriving where the index beyond over the index on its side is q.eta.
     [[nodiscard]] constexpr MicrofacetDielectric<T> glossy(const GlossyQuery<T>& q) const noexcept
     {
-        return {TrowbridgeReitz<T>::from(roughness), q.eta};
+        return {TrowbridgeReitz<T>::from(roughness_at(roughness, q.texture_point())), q.eta};
     }
 
     /// The clean glass of the same index, interior and priority (what Whitted refracts by).
@@ -197,7 +197,7 @@ struct RoughDielectric {
     constexpr void validate() const
     {
         detail::require_positive("RoughDielectric ior", ior);
-        roughness.validate("RoughDielectric");
+        validate_roughness(roughness, "RoughDielectric");
         interior.validate();
     }
 };

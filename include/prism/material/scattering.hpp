@@ -81,7 +81,9 @@ template <Material M>
 [[nodiscard]] constexpr DiffuseResponse<typename M::scalar_type> diffuse_response(const M& material,
                                                                                  const Crossing<typename M::scalar_type>& at) noexcept
 {
-    if constexpr (requires { material.diffuse(at.point, at.uv); })
+    if constexpr (requires { material.diffuse(texture_point(at)); })
+        return material.diffuse(texture_point(at));
+    else if constexpr (requires { material.diffuse(at.point, at.uv); })
         return material.diffuse(at.point, at.uv);
     else
         return material.diffuse(at.point);
@@ -448,7 +450,7 @@ template <Material M>
                              typename M::scalar_type eta = 1) noexcept
 {
     using T = typename M::scalar_type;
-    const auto lobe = material.glossy(GlossyQuery<T>{hit.point, hit.uv, hit.entering, eta});
+    const auto lobe = material.glossy(GlossyQuery<T>{hit.point, hit.uv, hit.entering, eta, texture_point(hit).width});
     return GlossyAt<std::remove_cvref_t<decltype(lobe)>>(lobe, LocalFrame<T>::about(hit.facing_shading()), hit.facing_normal(), d);
 }
 

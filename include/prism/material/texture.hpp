@@ -4,31 +4,75 @@
 
 #include <prism/core/check.hpp>
 #include <prism/core/math.hpp>
+#include <prism/geometry/crossings.hpp>
 
 #include <cmath>
 
 namespace prism {
 
+/// Where a texture is read: the surface point, its surface coordinates (Crossing::uv),
+/// and the width in uv units of the footprint the ray sees there (0: a point; an image
+/// texture then reads its full picture).
+template <Scalar T>
+struct TexturePoint {
+    Vec3<T> point{}; ///< the surface point
+    Vec2<T> uv{};    ///< its surface coordinates
+    T width = T(0);  ///< the footprint's width in uv units
+};
+
 /// A texture maps a surface point, `albedo(p)`, or a point and its surface coordinates,
-/// `albedo(p, uv)` (a mesh's interpolated uv; (0, 0) elsewhere: Crossing::uv), to an
-/// albedo in [0, 1] per channel.
+/// `albedo(p, uv)` (Crossing::uv: (0, 0) on a shape without them), or a TexturePoint
+/// with the footprint, `albedo(at)`, to an albedo (in [0, 1] per channel for a surface
+/// that keeps energy).
 template <class X>
 concept Texture = requires(const X& texture) { texture.validate(); } &&
                   (requires(const X& texture, const Vec3<typename X::scalar_type>& p) {
                       { texture.albedo(p) } -> std::same_as<Rgb<typename X::scalar_type>>;
                   } || requires(const X& texture, const Vec3<typename X::scalar_type>& p, const Vec2<typename X::scalar_type>& uv) {
                       { texture.albedo(p, uv) } -> std::same_as<Rgb<typename X::scalar_type>>;
+                  } || requires(const X& texture, const TexturePoint<typename X::scalar_type>& at) {
+                      { texture.albedo(at) } -> std::same_as<Rgb<typename X::scalar_type>>;
                   });
 
-/// A texture's albedo at point p with surface coordinates uv, whichever it reads.
+/// A texture of one number (a roughness, a height): `value(at)`.
+template <class X>
+concept ScalarTexture = requires(const X& texture, const TexturePoint<typename X::scalar_type>& at) {
+    { texture.value(at) } -> std::same_as<typename X::scalar_type>;
+    texture.validate();
+};
+
+/// A texture's albedo at `at`, whichever form it reads.
+template <Texture X>
+[[nodiscard]] constexpr Rgb<typename X::scalar_type> albedo_at(const X& texture, const TexturePoint<typename X::scalar_type>& at) noexcept
+{
+    if constexpr (requires { texture.albedo(at); })
+        return texture.albedo(at);
+    else if constexpr (requires { texture.albedo(at.point, at.uv); })
+        return texture.albedo(at.point, at.uv);
+    else
+        return texture.albedo(at.point);
+}
+
+/// A texture's albedo at point p with surface coordinates uv and no footprint.
 template <Texture X>
 [[nodiscard]] constexpr Rgb<typename X::scalar_type> albedo_at(const X& texture, const Vec3<typename X::scalar_type>& p,
                                                                const Vec2<typename X::scalar_type>& uv) noexcept
 {
-    if constexpr (requires { texture.albedo(p, uv); })
-        return texture.albedo(p, uv);
-    else
-        return texture.albedo(p);
+    return albedo_at(texture, TexturePoint<typename X::scalar_type>{p, uv, typename X::scalar_type(0)});
+}
+
+/// Where a crossing's textures are read: its point and uv, and the ray's footprint
+/// there (Crossing::footprint) in uv units: its width over the square root of the area
+/// a unit square of uv covers, |dp/du x dp/dv| (0 on a shape without coordinates).
+template <Scalar T>
+[[nodiscard]] inline TexturePoint<T> texture_point(const Crossing<T>& at) noexcept
+{
+    TexturePoint<T> out{at.point, at.uv, T(0)};
+    if (at.footprint > T(0)) {
+        const T area = length(cross(at.dpdu, at.dpdv));
+        if (area > T(0)) out.width = at.footprint / prism::sqrt(area);
+    }
+    return out;
 }
 
 /// One colour everywhere.

@@ -54,12 +54,15 @@ struct DiffuseResponse {
 };
 
 /// A Lambertian lobe: `diffuse(p)`, or `diffuse(p, uv)` for one that reads surface
-/// coordinates, gives its response at the surface point p.
+/// coordinates, or `diffuse(at)` for one that also reads the footprint (TexturePoint),
+/// gives its response at the surface point.
 template <class M>
 concept DiffuseLobe = requires(const M& material, const Vec3<typename M::scalar_type>& p) {
     { material.diffuse(p) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
 } || requires(const M& material, const Vec3<typename M::scalar_type>& p, const Vec2<typename M::scalar_type>& uv) {
     { material.diffuse(p, uv) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
+} || requires(const M& material, const TexturePoint<typename M::scalar_type>& at) {
+    { material.diffuse(at) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
 };
 
 /// What a delta interaction sees at a surface point: the incident cosine, the refracted

@@ -23,10 +23,12 @@ struct CameraRays {
     Vec3<T> lens_up{};     ///< unit, along its second (the image's up)
 
     /// The ray through image position (x, y), in pixels from the top-left corner, from the
-    /// pinhole (a thin lens's centre).
+    /// pinhole (a thin lens's centre), with the spread of a pixel's footprint (Ray::spread).
     [[nodiscard]] constexpr Ray<T> ray(T x, T y) const noexcept
     {
-        return {origin, normalize(top_left + x * pixel_right + y * pixel_down)};
+        const Vec3<T> through = top_left + x * pixel_right + y * pixel_down; // one unit along the view direction
+        const T distance = length(through);
+        return {origin, through / distance, T(0), length(pixel_right) / distance};
     }
 
     /// Whether the camera has a lens of some size (then rays start across it).
@@ -49,7 +51,7 @@ struct CameraRays {
         if (!thin_lens()) return ray(x, y);
         const Vec3<T> through = top_left + x * pixel_right + y * pixel_down; // one unit along the view direction
         const Vec3<T> from = lens_point(u, v);
-        return {from, normalize(origin + focus * through - from)};
+        return {from, normalize(origin + focus * through - from), T(0), length(pixel_right) / length(through)};
     }
 
     /// Where a point is seen: image position (x, y) in pixels from the top-left corner

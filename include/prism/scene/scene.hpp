@@ -454,7 +454,14 @@ private:
         const auto crossing = surface_crossing(shape, ray, nearest.range, nearest.hint);
         PRISM_ASSERT(crossing.has_value());
         if (!crossing) return std::nullopt;
-        return Hit<T>{*crossing, nearest.slot, nearest.index};
+        Hit<T> hit{*crossing, nearest.slot, nearest.index};
+        if (ray.width > T(0) || ray.spread > T(0)) {
+            // The cone's width across the surface: stretched by 1 / cos along the ray's
+            // slant, taken as the square root's isotropic width (the same area).
+            const T cos = std::abs(dot(hit.crossing.normal, ray.direction)) / length(ray.direction);
+            hit.crossing.footprint = ray.footprint_at(hit.crossing.t) / prism::sqrt(std::max(cos, T(1e-3)));
+        }
+        return hit;
     }
 
     /// Whether the slot's material lets a shadow ray through (attenuated) rather than
