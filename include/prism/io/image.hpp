@@ -32,10 +32,11 @@
 #endif
 
 #if !defined(STBI_INCLUDE_STB_IMAGE_H)
-// The same for stb_image, reading PNG and Radiance HDR only.
+// The same for stb_image, reading PNG, baseline JPEG and Radiance HDR only.
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
 #define STBI_ONLY_HDR
 #define PRISM_DEFINED_STBI_IMPLEMENTATION
 #endif
@@ -120,6 +121,50 @@ template <class File>
     return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
 }
 
+/// The linear value of an sRGB-encoded one in [0, 1] (IEC 61966-2-1).
+[[nodiscard]] inline float srgb_decode(float encoded) noexcept
+{
+    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
+/// An 8-bit picture as a file holds it: width x height x 3 bytes, row by row from the top.
+struct Bytes8 {
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgb;
+};
+
+/// stb_image's 8-bit RGB decoding of `bytes`, which the caller has checked; a failure
+/// throws through `file`, with stb_image's reason.
+template <class File>
+[[nodiscard]] Bytes8 stb_decode8(const std::vector<unsigned char>& bytes, File& file)
+{
+    int w = 0, h = 0, channels = 0;
+    unsigned char* data = stbi_load_from_memory(bytes.data(), int(std::min<std::size_t>(bytes.size(), INT32_MAX)), &w, &h, &channels, 3);
+    if (data == nullptr) {
+        const char* reason = stbi_failure_reason();
+        file.fail(std::string("it is truncated or corrupt (stb_image: ") + (reason != nullptr && *reason != 0 ? reason : "no reason given") + ")");
+    }
+    struct Free {
+        unsigned char* data;
+        ~Free() { stbi_image_free(data); }
+    } owner{data};
+    return {w, h, std::vector<unsigned char>(data, data + std::size_t(w) * std::size_t(h) * 3)};
+}
+
+/// An 8-bit picture as a Film of linear values: sRGB decoded, or each byte / 255.
+[[nodiscard]] inline Film to_film(const Bytes8& picture, bool srgb)
+{
+    float table[256];
+    for (int i = 0; i < 256; ++i) table[i] = srgb ? srgb_decode(float(i) / 255.0f) : float(i) / 255.0f;
+    Film film(picture.width, picture.height);
+    for (int y = 0; y < picture.height; ++y)
+        for (int x = 0; x < picture.width; ++x) {
+            const unsigned char* p = picture.rgb.data() + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(picture.width) + static_cast<std::size_t>(x));
+            film.set(x, y, Rgb<float>{table[p[0]], table[p[1]], table[p[2]]});
+        }
+    return film;
+}
+
 } // namespace detail
 
 /// 8-bit sRGB bytes, row by row from the top, 3 per pixel.
@@ -181,12 +226,12 @@ inline void write_image(const Film& film, const std::filesystem::path& path)
     detail::throw_io(path, "unknown image extension '" + extension + "' (use .png or .pfm)");
 }
 
-/// Read an 8-bit PNG (grey, RGB or with alpha) into linear radiance, undoing sRGB. The file
-/// is read no further than `limits`, and its header's size is checked against its bytes
-/// before stb_image allocates the picture: deflate expands at most 1032 times, so a header
-/// that claims more pixels than its compressed bytes can hold is refused. Every chunk must
-/// fit in the file and pass its CRC, and nothing may follow IEND.
-[[nodiscard]] inline Film read_png(const std::filesystem::path& path, ReadLimits limits = {})
+/// Read a PNG (grey, RGB or with alpha; 16-bit channels are cut to 8) as its 8-bit RGB
+/// bytes. The file is read no further than `limits`, and its header's size is checked
+/// against its bytes before stb_image allocates the picture: deflate expands at most 1032
+/// times, so a header that claims more pixels than its compressed bytes can hold is
+/// refused. Every chunk must fit in the file and pass its CRC, and nothing may follow IEND.
+[[nodiscard]] inline detail::Bytes8 read_png_bytes(const std::filesystem::path& path, ReadLimits limits = {})
 try {
     detail::InputFile file(path, "image", limits);
     // The signature and the header first, so that what is no PNG (/dev/zero) is refused
@@ -210,32 +255,72 @@ try {
         file.fail("its header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than its " + std::to_string(bytes.size()) +
                   " bytes can hold compressed");
     bytes = detail::checked_png_chunks(bytes, file);
-    int w = 0, h = 0, channels = 0;
-    unsigned char* data = stbi_load_from_memory(bytes.data(), int(std::min<std::size_t>(bytes.size(), INT32_MAX)), &w, &h, &channels, 3);
-    if (data == nullptr) {
-        const char* reason = stbi_failure_reason();
-        file.fail(std::string("it is truncated or corrupt (stb_image: ") + (reason != nullptr && *reason != 0 ? reason : "no reason given") + ")");
-    }
-    struct Free {
-        unsigned char* data;
-        ~Free() { stbi_image_free(data); }
-    } owner{data};
-    Film film(w, h);
-    const auto linear = [](unsigned char byte) {
-        const float x = float(byte) / 255.0f;
-        return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
-    };
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const unsigned char* p = data + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
-            film.set(x, y, Rgb<float>{linear(p[0]), linear(p[1]), linear(p[2])});
-        }
-    return film;
+    return detail::stb_decode8(bytes, file);
 } catch (const allocation_error&) {
     throw;
 } catch (const std::bad_alloc&) {
     throw detail::out_of_memory(path, "image");
 }
+
+/// Read a PNG (read_png_bytes) into linear radiance, undoing sRGB.
+[[nodiscard]] inline Film read_png(const std::filesystem::path& path, ReadLimits limits = {}) { return detail::to_film(read_png_bytes(path, limits), true); }
+
+/// Read a baseline JPEG (JFIF or Exif; grey or YCbCr) as its 8-bit RGB bytes. The file is
+/// read no further than `limits`, and its markers are walked before stb_image allocates
+/// the picture: the frame header must come before the scan, its size be 1 to 65535 on
+/// each side, and its pixels no more than its bytes can hold (a baseline scan spends at
+/// least two bits on each 8 x 8 block: 256 pixels a byte). Progressive and arithmetic-coded
+/// JPEGs are refused (a progressive scan can cover thousands of blocks with one code).
+[[nodiscard]] inline detail::Bytes8 read_jpeg_bytes(const std::filesystem::path& path, ReadLimits limits = {})
+try {
+    detail::InputFile file(path, "image", limits);
+    std::vector<unsigned char> bytes;
+    if (file.size() && *file.size() < 4) file.fail("it is too short to be a JPEG file (" + std::to_string(*file.size()) + " bytes)");
+    file.read(bytes, 2, "a JPEG start-of-image marker");
+    if (bytes[0] != 0xff || bytes[1] != 0xd8) file.fail("it is not a JPEG file (no start-of-image marker FF D8)");
+    const std::vector<unsigned char> rest = file.rest();
+    bytes.insert(bytes.end(), rest.begin(), rest.end());
+    // The markers up to the first scan: each segment's length must fit in the file.
+    std::size_t at = 2;
+    bool frame = false;
+    while (true) {
+        if (at + 4 > bytes.size()) file.fail("it is truncated (no scan before byte " + std::to_string(bytes.size()) + ")");
+        if (bytes[at] != 0xff) file.fail("it is corrupt (byte " + std::to_string(at) + " is not a marker)");
+        const unsigned marker = bytes[at + 1];
+        if (marker == 0xff) { // fill byte
+            ++at;
+            continue;
+        }
+        const std::size_t length = std::size_t(bytes[at + 2]) << 8 | bytes[at + 3];
+        if (length < 2 || at + 2 + length > bytes.size())
+            file.fail("it is truncated (the segment at byte " + std::to_string(at) + " claims " + std::to_string(length) + " bytes)");
+        if (marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 && marker != 0xcc) {
+            if (marker != 0xc0 && marker != 0xc1)
+                file.fail(marker == 0xc2 ? std::string("it is a progressive JPEG (save it as baseline, or as PNG)")
+                                         : "its frame type (marker FF " + std::to_string(marker) + ") is not baseline");
+            if (length < 8) file.fail("its frame header is " + std::to_string(length) + " bytes long (at least 8)");
+            const std::uint32_t height = std::uint32_t(bytes[at + 5]) << 8 | bytes[at + 6], width = std::uint32_t(bytes[at + 7]) << 8 | bytes[at + 8];
+            if (width == 0 || height == 0) file.fail("its frame header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels");
+            if (double(width) * double(height) > 256.0 * double(bytes.size()) + 65536.0)
+                file.fail("its frame header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than its " +
+                          std::to_string(bytes.size()) + " bytes can hold");
+            frame = true;
+        }
+        if (marker == 0xda) {
+            if (!frame) file.fail("its scan comes before a frame header");
+            break;
+        }
+        at += 2 + length;
+    }
+    return detail::stb_decode8(bytes, file);
+} catch (const allocation_error&) {
+    throw;
+} catch (const std::bad_alloc&) {
+    throw detail::out_of_memory(path, "image");
+}
+
+/// Read a baseline JPEG (read_jpeg_bytes) into linear radiance, undoing sRGB.
+[[nodiscard]] inline Film read_jpeg(const std::filesystem::path& path, ReadLimits limits = {}) { return detail::to_film(read_jpeg_bytes(path, limits), true); }
 
 /// Read a Radiance HDR file (RGBE, "#?RADIANCE" or "#?RGBE", FORMAT=32-bit_rle_rgbe, rows
 /// from the top: "-Y height +X width") into linear radiance, through stb_image. The file is

@@ -455,6 +455,9 @@ private:
         PRISM_ASSERT(crossing.has_value());
         if (!crossing) return std::nullopt;
         Hit<T> hit{*crossing, nearest.slot, nearest.index};
+        // A material that sets its own shading normal (a normal or bump map) sets it here.
+        if constexpr (requires { object_at<I>(nearest.index).material.shade(hit.crossing); })
+            object_at<I>(nearest.index).material.shade(hit.crossing);
         if (ray.width > T(0) || ray.spread > T(0)) {
             // The cone's width across the surface: stretched by 1 / cos along the ray's
             // slant, taken as the square root's isotropic width (the same area).
