@@ -34,9 +34,10 @@ Found check_derivatives(const S& shape, prism::Vec3<double> centre, double radiu
     for (int i = 0; i < rays; ++i) {
         const prism::Vec3<double> target = centre + radius * std::cbrt(rng.uniform<double>()) * test::random_direction<double>(rng);
         const prism::Vec3<double> origin = target + 4 * radius * test::random_direction<double>(rng);
-        const auto crossings = shape.crossings(prism::Ray<double>{origin, target - origin}, {1e-9, prism::infinity<double>});
+        auto crossings = shape.crossings(prism::Ray<double>{origin, target - origin}, {1e-9, prism::infinity<double>});
         if (crossings.empty()) continue;
-        const auto& c = crossings.front();
+        prism::Crossing<double> c = crossings.front();
+        prism::add_coordinates(shape, c);
         if (skip(c)) continue;
         if (!c.has_uv()) {
             found.worst = 1e9;
@@ -48,9 +49,12 @@ Found check_derivatives(const S& shape, prism::Vec3<double> centre, double radiu
             const double step = h * radius / length(d); // a step of h * radius in space
             const prism::Vec3<double> moved = c.point + step * d;
             const double lift = 1e-3 * radius;
-            const auto again = shape.crossings(prism::Ray<double>{moved + lift * c.normal, -c.normal}, {0, 2 * lift});
-            if (again.empty() || dot(again.front().normal, c.normal) < 0.99) continue; // off the face
-            const prism::Vec2<double> change = (again.front().uv - c.uv) / step;
+            const auto again_list = shape.crossings(prism::Ray<double>{moved + lift * c.normal, -c.normal}, {0, 2 * lift});
+            if (again_list.empty()) continue;
+            prism::Crossing<double> again_c = again_list.front();
+            prism::add_coordinates(shape, again_c);
+            if (dot(again_c.normal, c.normal) < 0.99) continue; // off the face
+            const prism::Vec2<double> change = (again_c.uv - c.uv) / step;
             const double error = std::max(std::abs(change.x - (axis == 0 ? 1 : 0)), std::abs(change.y - (axis == 0 ? 0 : 1)));
             found.worst = std::max(found.worst, error);
         }

@@ -344,3 +344,47 @@ TEST_CASE("a bead placed 10^3 from the origin: spawned rays start on their side 
         previous = wrong;
     }
 }
+
+TEST_CASE("a CSG crossing's surface coordinates are those of the child it came from, through nesting and a transform")
+{
+    // A ball with a box bitten out of it, inside a union with a plane, moved: each
+    // crossing's uv must be what its own primitive gives at that point.
+    const Sphere<double> ball({0, 0, 0}, 1);
+    const Box<double> bite({0.2, -2, -2}, {2, 2, 2});
+    const Plane<double> floor({0, 1, 0}, -3);
+    const auto place = Transform<double>::rotate_y(20).then(Transform<double>::translate({0.5, 0, 0}));
+    using Bitten = Difference<Sphere<double>, Box<double>>;
+    const Union<Transformed<Bitten>, Plane<double>> shape(Transformed<Bitten>(Bitten(ball, bite), place), floor);
+    Pcg32 rng(8, 1);
+    int from_ball = 0, from_bite = 0, from_floor = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const Vec3<double> target = Vec3<double>{0.5, -1, 0} + 2.0 * test::random_direction<double>(rng) * rng.uniform<double>();
+        const Vec3<double> origin = target + 8.0 * test::random_direction<double>(rng);
+        const auto all = shape.crossings({origin, target - origin}, {0, infinity<double>});
+        if (all.empty()) continue;
+        Crossing<double> c = all.front();
+        add_coordinates(shape, c);
+        REQUIRE(c.has_uv());
+        // Which primitive's surface is it on? Ask each, in its own frame.
+        const Vec3<double> local = place.inverse_point(c.point);
+        Crossing<double> own = c;
+        if (std::abs(c.point.y + 3) < 1e-9) {
+            floor.coordinates(own);
+            ++from_floor;
+        } else if (std::abs(length(local) - 1) < 1e-9) {
+            own.point = local;
+            own.normal = normalize(local);
+            ball.coordinates(own);
+            ++from_ball;
+        } else {
+            own.point = local;
+            own.normal = {-1, 0, 0}; // the bite's face x = 0.2, its own normal outward of the box
+            bite.coordinates(own);
+            ++from_bite;
+        }
+        CHECK(length(c.uv - own.uv) < 1e-9);
+    }
+    CHECK(from_ball > 100);
+    CHECK(from_bite > 30);
+    CHECK(from_floor > 100);
+}

@@ -96,8 +96,10 @@ TEST_CASE("a box's faces each span [0, 1]^2 of surface coordinates, right-handed
     // The front face (-z, toward a camera at -z): u from the right edge seen from there (x = 3) to x = -1.
     const auto c = box.crossings({{2, 0.25, -10}, {0, 0, 1}}, Interval<double>::universe());
     REQUIRE(c.size() == 2);
-    CHECK(c.front().uv.x == doctest::Approx(0.25));
-    CHECK(c.front().uv.y == doctest::Approx(0.25));
+    prism::Crossing<double> front = c.front();
+    box.coordinates(front);
+    CHECK(front.uv.x == doctest::Approx(0.25));
+    CHECK(front.uv.y == doctest::Approx(0.25));
     const auto found = uv_checks::check_derivatives(box, {1, 0.5, 3}, 2.0, 3000, [](const auto& x) {
         return std::min({x.uv.x, x.uv.y, 1 - x.uv.x, 1 - x.uv.y}) < 0.01; // near an edge
     });

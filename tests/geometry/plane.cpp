@@ -78,14 +78,19 @@ TEST_CASE("a plane's surface coordinates run in the scene's units: u along +x an
     const Plane<double> floor({0, 1, 0}, 0.5);
     const auto c = floor.crossings({{3, 4, -2}, {0, -1, 0}}, Interval<double>::universe());
     REQUIRE(c.size() == 1);
-    CHECK(c.front().uv.x == doctest::Approx(3));
-    CHECK(c.front().uv.y == doctest::Approx(2));
+    prism::Crossing<double> at = c.front();
+    CHECK_FALSE(at.has_uv()); // added only where a material reads them
+    floor.coordinates(at);
+    CHECK(at.uv.x == doctest::Approx(3));
+    CHECK(at.uv.y == doctest::Approx(2));
     // A wall facing a camera at -z looking +z: its right is -x.
     const Plane<double> wall({0, 0, -1}, -4);
     const auto w = wall.crossings({{1, 2, 0}, {0, 0, 1}}, Interval<double>::universe());
     REQUIRE(w.size() == 1);
-    CHECK(w.front().dpdu.x == doctest::Approx(-1));
-    CHECK(w.front().dpdv.y == doctest::Approx(1));
+    prism::Crossing<double> on_wall = w.front();
+    wall.coordinates(on_wall);
+    CHECK(on_wall.dpdu.x == doctest::Approx(-1));
+    CHECK(on_wall.dpdv.y == doctest::Approx(1));
     for (const Vec3<double>& n : {Vec3<double>{0, 1, 0}, Vec3<double>{0, -1, 0}, normalize(Vec3<double>{1, 2, 3}), normalize(Vec3<double>{-3, 0.1, 1})}) {
         const auto found = uv_checks::check_derivatives(Plane<double>(n, 0.3), {0, 0, 0}, 2.0, 500, [](const auto&) { return false; });
         CHECK(found.checked > 100);

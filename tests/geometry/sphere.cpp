@@ -212,7 +212,9 @@ TEST_CASE("a sphere's surface coordinates: u round the vertical from +z, v from 
     const auto uv_seen = [&](Vec3<double> toward) {
         const auto c = sphere.crossings({Vec3<double>{1, 2, 3} + 10.0 * toward, -toward}, {0, prism::infinity<double>});
         REQUIRE(c.size() == 2);
-        return c.front().uv;
+        prism::Crossing<double> first = c.front();
+        sphere.coordinates(first);
+        return first.uv;
     };
     // The definitions (docs/guide.md): u = 1/4 at +x, 1/2 at -z, 3/4 at -x; v = 1/2 on the equator.
     CHECK(uv_seen({1, 0, 0}).x == doctest::Approx(0.25));

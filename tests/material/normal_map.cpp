@@ -37,7 +37,10 @@ struct ConstantNormal {
 /// The floor y = 0 (u = x, v = -z: Plane's face axes) seen straight down at (x, z).
 Crossing<double> floor_at(double x, double z)
 {
-    return Plane<double>({0, 1, 0}, 0).crossings({{x, 1, z}, {0, -1, 0}}, {0, infinity<double>}).front();
+    const Plane<double> floor({0, 1, 0}, 0);
+    Crossing<double> c = floor.crossings({{x, 1, z}, {0, -1, 0}}, {0, infinity<double>}).front();
+    floor.coordinates(c);
+    return c;
 }
 
 using Matte = Diffuse<double>;
@@ -105,7 +108,8 @@ TEST_CASE("a bump map shades as the moved surface: a ramp's normal, and a sine's
 TEST_CASE("a bump map on a sphere: heights that grow with the radius tilt nothing; a mirrored frame keeps the tilt outward")
 {
     const Sphere<double> ball({0, 0, 0}, 2);
-    const auto c0 = ball.crossings({{0.3, 0.4, -5}, {0, 0, 1}}, {0, infinity<double>}).front();
+    Crossing<double> c0 = ball.crossings({{0.3, 0.4, -5}, {0, 0, 1}}, {0, infinity<double>}).front();
+    ball.coordinates(c0);
     Crossing<double> c = c0;
     BumpMapped<Matte, Field<double (*)(double, double)>>(Matte{}, {[](double, double) { return 0.3; }}, 1.0).shade(c);
     CHECK(length(c.shading - c0.normal) < 1e-12);

@@ -111,6 +111,8 @@ public:
     {
         return {dot(Vec3<T>(inverse_[0]), n), dot(Vec3<T>(inverse_[1]), n), dot(Vec3<T>(inverse_[2]), n)};
     }
+    /// A transformed normal carried back: by the transpose (unnormalised).
+    [[nodiscard]] Vec3<T> inverse_normal(const Vec3<T>& n) const noexcept { return {dot(Vec3<T>(m_[0]), n), dot(Vec3<T>(m_[1]), n), dot(Vec3<T>(m_[2]), n)}; }
 
     /// The absolute error bound of point(p) for a point p known to within `error` per
     /// axis (pbrt-v4, Transform::operator()(Point3fi)): the incoming error grows by the

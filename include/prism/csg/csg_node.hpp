@@ -18,6 +18,7 @@
 #include <prism/core/aabb.hpp>
 #include <prism/geometry/shape.hpp>
 
+#include <algorithm>
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -46,6 +47,9 @@ public:
     using operation = Op;
     /// The most crossings: the children's together.
     static constexpr std::size_t max_crossings = A::max_crossings + B::max_crossings;
+    /// CSG nodes on the longest way down to a primitive (Crossing::path holds one bit each).
+    static constexpr std::size_t csg_depth = 1 + std::max(detail::csg_depth<A>(), detail::csg_depth<B>());
+    static_assert(csg_depth <= 32, "a CSG tree may be at most 32 nodes deep (Crossing::path)");
 
     // CsgNode Public Methods
 
@@ -95,6 +99,21 @@ public:
         return merged<Surface>(ray, range);
     }
 
+    /// Surface coordinates: the child's the crossing came from (its path's lowest bit).
+    void coordinates(Crossing<T>& c) const noexcept
+    {
+        const bool second = (c.path & 1u) != 0;
+        c.path >>= 1;
+        if (!second) {
+            add_coordinates(a_, c);
+        } else {
+            // The second child's own normal, where the result turned it round.
+            if constexpr (Op::flips_second) c.normal = -c.normal;
+            add_coordinates(b_, c);
+            if constexpr (Op::flips_second) c.normal = -c.normal;
+        }
+    }
+
 private:
     /// The children's crossings merged (Roth 1982), along `ray` within `range`.
     template <bool Surface>
@@ -121,6 +140,7 @@ private:
             // The result's surface here is the first child's where it has one.
             Crossing<T> c = from_a != nullptr ? *from_a : *from_b;
             if (from_a == nullptr && Op::flips_second) c.normal = -c.normal, c.shading = -c.shading;
+            if constexpr (Surface) c.path = c.path << 1 | (from_a == nullptr ? 1u : 0u);
             c.entering = now;
             out.push_back(c);
         }

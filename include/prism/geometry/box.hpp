@@ -77,6 +77,10 @@ public:
         return first_crossing(ray, range) < infinity<T>;
     }
 
+    /// Surface coordinates of a crossing of this box: each face spans [0, 1]^2 along its
+    /// axes (as a Plane's), or runs in the scene's units along an infinite side.
+    void coordinates(Crossing<T>& c) const noexcept { c = c.with_uv(face_uv(c.point, c.normal), face_extent(c.normal, 0), face_extent(c.normal, 1)); }
+
 private:
     // Box Private Methods
 
@@ -121,11 +125,9 @@ private:
         point[axis] = high_face ? hi_[axis] : lo_[axis];
         error[axis] = T(0);
         normal[axis] = high_face ? T(1) : T(-1);
-        return Crossing<T>::flat(t, point, error, normal, entering).with_uv(face_uv(point, normal), face_extent(normal, 0), face_extent(normal, 1));
+        return Crossing<T>::flat(t, point, error, normal, entering);
     }
 
-    // Surface coordinates: each face spans [0, 1]^2 along its axes (face_axes, as a
-    // Plane's), or runs in the scene's units along an infinite side.
     [[nodiscard]] constexpr Vec3<T> face_extent(const Vec3<T>& normal, int which) const noexcept
     {
         const auto axes = detail::face_axes(normal);

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <type_traits>
 #include <utility>
 
@@ -28,17 +29,22 @@ struct Crossing {
     Vec3<T> error; ///< absolute error bound of `point`, per axis
     Vec3<T> normal; ///< unit outward normal (the gradient of the inside function)
     bool entering; ///< the ray goes from outside to inside here (gradient . direction < 0)
+    std::uint32_t path; ///< in a CSG tree, which child it came from at each node, innermost highest (CsgNode::coordinates reads it)
     Vec3<T> shading; ///< unit outward shading normal: a mesh's interpolated vertex normal, else `normal`
-    Vec2<T> uv;      ///< surface coordinates (docs/guide.md, "Surface coordinates"); (0, 0) on a shape without them
-    Vec3<T> dpdu;    ///< how the point moves with u, dp/du (zero on a shape without surface coordinates)
-    Vec3<T> dpdv;    ///< how the point moves with v, dp/dv (zero likewise)
+    // Surface coordinates (docs/guide.md, "Surface coordinates"): a mesh's come with its
+    // crossings; every other shape's are added by add_coordinates (geometry/shape.hpp),
+    // which the scene calls only for a material that reads them. Zero until then, and on a
+    // shape without them.
+    Vec2<T> uv;      ///< surface coordinates (u, v)
+    Vec3<T> dpdu;    ///< how the point moves with u, dp/du
+    Vec3<T> dpdv;    ///< how the point moves with v, dp/dv
     T footprint;     ///< the width of the ray's footprint here, across the surface (scene queries set it: Ray::width); 0 for a point
 
     /// A crossing of a surface without vertex normals or coordinates: it shades with
     /// its true normal.
     [[nodiscard]] static constexpr Crossing flat(T t, const Vec3<T>& point, const Vec3<T>& error, const Vec3<T>& normal, bool entering) noexcept
     {
-        return {t, point, error, normal, entering, normal, Vec2<T>(T(0)), Vec3<T>(T(0)), Vec3<T>(T(0)), T(0)};
+        return {t, point, error, normal, entering, 0, normal, Vec2<T>(T(0)), Vec3<T>(T(0)), Vec3<T>(T(0)), T(0)};
     }
 
     /// This crossing with surface coordinates uv and their derivatives.

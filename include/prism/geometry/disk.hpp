@@ -77,15 +77,21 @@ public:
         if constexpr (!Surface) {
             out.push_back(Crossing<T>::without_surface(t, entering));
         } else {
-            const Vec3<T> error = detail::plane_point_error(normal_, offset_, point);
-            T angle = std::atan2(dot(local, t_), dot(local, s_));
-            if (angle < T(0)) angle += T(2) * pi<T>;
-            const T rho = prism::sqrt(r2);
-            const Vec3<T> radial = rho > T(0) ? local * (radius_ / rho) : s_ * radius_;
-            out.push_back(Crossing<T>::flat(t, point, error, normal_, entering)
-                              .with_uv({rho / radius_, angle / (T(2) * pi<T>)}, radial, (T(2) * pi<T>) * cross(normal_, local)));
+            out.push_back(Crossing<T>::flat(t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering));
         }
         return out;
+    }
+
+    /// Surface coordinates of a crossing of this disk: polar, u the distance from the
+    /// centre over the radius, v the angle over 2 pi.
+    void coordinates(Crossing<T>& c) const noexcept
+    {
+        const Vec3<T> local = c.point - center_;
+        T angle = std::atan2(dot(local, t_), dot(local, s_));
+        if (angle < T(0)) angle += T(2) * pi<T>;
+        const T rho = length(local);
+        const Vec3<T> radial = rho > T(0) ? local * (radius_ / rho) : s_ * radius_;
+        c = c.with_uv({rho / radius_, angle / (T(2) * pi<T>)}, radial, (T(2) * pi<T>) * cross(normal_, local));
     }
 
     /// A point uniform over the disk for u in the unit square, with density 1 / area.

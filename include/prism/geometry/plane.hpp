@@ -98,6 +98,15 @@ public:
         return out;
     }
 
+    /// Surface coordinates of a crossing of this plane: in the scene's units along the
+    /// face's axes (u along +x and v along -z on a floor; u to the right and v up on a wall
+    /// seen from the side the normal points to).
+    void coordinates(Crossing<T>& c) const noexcept
+    {
+        const auto [u, v] = detail::face_axes(normal_);
+        c = c.with_uv({dot(c.point, u), dot(c.point, v)}, u, v);
+    }
+
 private:
     // Plane Private Methods
 
@@ -105,10 +114,7 @@ private:
     {
         // The hit point projected onto the plane, with its error bound.
         const Vec3<T> point = detail::onto_plane(normal_, offset_, ray.at(t));
-        // Surface coordinates in the scene's units along the face's axes (face_axes).
-        const auto [u, v] = detail::face_axes(normal_);
-        return Crossing<T>::flat(t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering)
-            .with_uv({dot(point, u), dot(point, v)}, u, v);
+        return Crossing<T>::flat(t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering);
     }
 
     Vec3<T> normal_{T(0), T(1), T(0)};

@@ -50,6 +50,34 @@ template <Shape S>
     else return shape.bounds().bounding_sphere();
 }
 
+namespace detail {
+
+/// How many CSG nodes deep a shape is (0 for a primitive).
+template <class S>
+[[nodiscard]] constexpr std::size_t csg_depth() noexcept
+{
+    if constexpr (requires { S::csg_depth; }) return S::csg_depth;
+    else return 0;
+}
+
+} // namespace detail
+
+/// A shape with surface coordinates: coordinates(c) sets c.uv, c.dpdu and c.dpdv of a
+/// crossing of its own (found with its surface) from c.point and c.normal (and, in a CSG
+/// node, c.path). Kept out of crossings() so that a scene computes them only for the
+/// materials that read them (Scene::closest_hit, reads_coordinates).
+template <class S>
+concept HasCoordinates = Shape<S> && requires(const S& shape, Crossing<typename S::scalar_type>& c) { shape.coordinates(c); };
+
+/// Sets the surface coordinates of a crossing of `shape` (found with its surface), where
+/// the shape has them (a mesh's came with the crossing; other shapes leave them zero).
+template <Shape S>
+constexpr void add_coordinates(const S& shape, Crossing<typename S::scalar_type>& c) noexcept
+{
+    if constexpr (HasCoordinates<S>) shape.coordinates(c);
+    (void)shape, (void)c;
+}
+
 /// A shape with a lean closest-hit query: first_crossing(ray, range) gives the t of
 /// crossings<false>(ray, range).front() (infinity when there is none) without building
 /// the list, and any_crossing whether that list is non-empty.

@@ -136,6 +136,22 @@ public:
         return T(1) / (T(2) * pi<T> * cone.one_minus_cos);
     }
 
+    /// Surface coordinates (docs/guide.md) of a crossing of this sphere, from its normal:
+    /// u = 1/2 + atan2(-n.x, -n.z) / 2 pi round the vertical axis (0 at +z, 1/4 at +x, 1/2
+    /// at -z, 3/4 at -x), v = 1 - theta / pi from the bottom (-y) to the top (+y), theta
+    /// the angle from +y. Seen from outside (dp/du, dp/dv, n) is right-handed, so a picture
+    /// reads the right way round.
+    void coordinates(Crossing<T>& c) const noexcept
+    {
+        const Vec3<T>& n = c.normal;
+        const T rho = prism::sqrt(n.x * n.x + n.z * n.z);
+        c.uv = {T(0.5) + std::atan2(-n.x, -n.z) / (T(2) * pi<T>), T(1) - std::atan2(rho, n.y) / pi<T>};
+        c.dpdu = (T(2) * pi<T> * radius_) * Vec3<T>(n.z, T(0), -n.x);
+        // At a pole u's direction is undefined; there atan2(-0, -0) = 0 picks the meridian through -z.
+        const T sx = rho > T(0) ? n.x / rho : T(0), sz = rho > T(0) ? n.z / rho : T(-1);
+        c.dpdv = (pi<T> * radius_) * Vec3<T>(-n.y * sx, rho, -n.y * sz);
+    }
+
 private:
     // Sphere Private Methods
 
@@ -267,29 +283,7 @@ private:
         const Vec3<T> offset = normal * radius_;
         const Vec3<T> point = center_ + offset;
         const Vec3<T> error = gamma<T>(5) * abs(offset) + gamma<T>(1) * abs(point);
-        const Crossing<T> c = Crossing<T>::flat(t, point, error, normal, entering);
-        // (atan2 is not constexpr: a crossing found at compile time has no coordinates.)
-        if (std::is_constant_evaluated()) return c;
-        return c.with_uv(uv_at(normal), dpdu_at(normal), dpdv_at(normal));
-    }
-
-    // Surface coordinates (docs/guide.md): u = 1/2 + atan2(-n.x, -n.z) / 2 pi runs
-    // round the vertical axis (0 at +z, 1/4 at +x, 1/2 at -z, 3/4 at -x), v = 1 - theta / pi
-    // from the bottom (-y) to the top (+y), theta the angle from +y. Seen from outside
-    // (dp/du, dp/dv, n) is right-handed, so a picture reads the right way round.
-    [[nodiscard]] static Vec2<T> uv_at(const Vec3<T>& n) noexcept
-    {
-        const T rho = prism::sqrt(n.x * n.x + n.z * n.z);
-        return {T(0.5) + std::atan2(-n.x, -n.z) / (T(2) * pi<T>), T(1) - std::atan2(rho, n.y) / pi<T>};
-    }
-    [[nodiscard]] Vec3<T> dpdu_at(const Vec3<T>& n) const noexcept { return (T(2) * pi<T> * radius_) * Vec3<T>(n.z, T(0), -n.x); }
-    [[nodiscard]] Vec3<T> dpdv_at(const Vec3<T>& n) const noexcept
-    {
-        // At a pole u's direction is undefined; there atan2(-0, -0) = 0 picks the meridian
-        // through -z.
-        const T rho = prism::sqrt(n.x * n.x + n.z * n.z);
-        const T sx = rho > T(0) ? n.x / rho : T(0), sz = rho > T(0) ? n.z / rho : T(-1);
-        return (pi<T> * radius_) * Vec3<T>(-n.y * sx, rho, -n.y * sz);
+        return Crossing<T>::flat(t, point, error, normal, entering);
     }
 
     Vec3<T> center_;

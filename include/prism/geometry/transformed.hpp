@@ -24,6 +24,8 @@ public:
     using T = scalar_type;
     /// As many crossings as the shape has.
     static constexpr std::size_t max_crossings = S::max_crossings;
+    /// The shape's CSG depth (Crossing::path passes through).
+    static constexpr std::size_t csg_depth = detail::csg_depth<S>();
 
     // Transformed Public Methods
 
@@ -103,6 +105,20 @@ public:
         return c;
     }
 
+    /// Surface coordinates: the shape's own at the crossing carried back into its frame,
+    /// their derivatives carried out to the world's.
+    void coordinates(Crossing<T>& c) const noexcept
+        requires HasCoordinates<S>
+    {
+        Crossing<T> local = c;
+        local.point = to_world_.inverse_point(c.point);
+        local.normal = normalize(to_world_.inverse_normal(c.normal));
+        shape_.coordinates(local);
+        c.uv = local.uv;
+        c.dpdu = to_world_.vector(local.dpdu);
+        c.dpdv = to_world_.vector(local.dpdv);
+    }
+
 private:
     /// The shape's first crossing (and its hint, where it gives one), in world t.
     [[nodiscard]] T first_crossing_with(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
@@ -145,6 +161,7 @@ private:
         const bool flat = c.shades_flat();
         c.normal = normalize(to_world_.normal(c.normal));
         c.shading = flat ? c.normal : normalize(to_world_.normal(c.shading));
+        // A mesh's coordinates come with its crossing.
         c.dpdu = to_world_.vector(c.dpdu);
         c.dpdv = to_world_.vector(c.dpdv);
     }

@@ -218,6 +218,8 @@ public:
     static constexpr bool transmits = false;
     /// A glossy lobe: coat and base.
     static constexpr bool has_glossy = true;
+    /// Whether a texture of it reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = texture_reads_coordinates<Albedo>;
 
     /// A base of `albedo` under `coat`; throws std::invalid_argument, naming the parameter, for a bad albedo or coat.
     explicit CoatedDiffuse(Albedo albedo = {}, Coat<T> coat = {}) : albedo_(std::move(albedo)), coat_(checked(coat)), transmission_(coat_)

@@ -50,6 +50,9 @@ struct Diffuse {
     T phong = T(0); ///< POV-Ray's phong: the highlight's strength, 0 for none
     T phong_size = T(40); ///< POV-Ray's phong_size: the highlight's exponent
 
+    /// Whether its texture reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = texture_reads_coordinates<Albedo>;
+
     /// The albedo where the texture is read (point, uv and footprint), with kd and ka.
     [[nodiscard]] constexpr DiffuseResponse<T> diffuse(const TexturePoint<T>& at) const noexcept { return {albedo_at(albedo, at), kd, ka}; }
 

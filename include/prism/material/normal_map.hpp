@@ -56,6 +56,9 @@ struct NormalMapped : Base {
     using typename Base::scalar_type;
     using T = typename Base::scalar_type;
 
+    /// It reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = true;
+
     Map normal_map{};   ///< the normals, as RGB
     T strength = T(1);  ///< how much of the tilt to apply
 
@@ -95,6 +98,9 @@ template <class Base, class Height>
 struct BumpMapped : Base {
     using typename Base::scalar_type;
     using T = typename Base::scalar_type;
+
+    /// It reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = true;
 
     Height height{};  ///< the height over the surface, in units of `scale`
     T scale = T(1);   ///< scene units per unit of height

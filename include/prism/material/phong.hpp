@@ -118,6 +118,8 @@ struct Phong {
     static constexpr bool transmits = false;
     /// A glossy lobe: modified Phong.
     static constexpr bool has_glossy = true;
+    /// Whether a texture of it reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = texture_reads_coordinates<Albedo>;
 
     Albedo diffuse{}; ///< the Lambertian part's albedo (Solid, Checker, UvChecker or the user's)
     Rgb<T> specular{T(0.2)}; ///< the glossy part's albedo at normal incidence

@@ -114,6 +114,8 @@ struct RoughConductor {
     static constexpr bool transmits = false;
     /// A glossy lobe: microfacet reflection.
     static constexpr bool has_glossy = true;
+    /// Whether a texture of it reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = texture_reads_coordinates<RoughnessMap>;
 
     Fresnel fresnel{}; ///< each facet's reflectance: ConstantKr, ComplexIor, MeasuredConductor or the user's
     RoughnessMap roughness{}; ///< roughness, alpha = roughness^2: a Roughness, or a one-number texture (ImageTexture) of it

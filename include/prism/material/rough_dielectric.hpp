@@ -171,6 +171,8 @@ struct RoughDielectric {
     static constexpr bool transmits = true;
     /// A glossy lobe: microfacet reflection and refraction.
     static constexpr bool has_glossy = true;
+    /// Whether a texture of it reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = texture_reads_coordinates<RoughnessMap>;
 
     T ior = T(1.5); ///< the index of refraction inside
     RoughnessMap roughness{}; ///< roughness, alpha = roughness^2: a Roughness, or a one-number texture (ImageTexture) of it

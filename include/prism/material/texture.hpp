@@ -41,6 +41,13 @@ concept ScalarTexture = requires(const X& texture, const TexturePoint<typename X
     texture.validate();
 };
 
+/// Whether a texture (or a one-number parameter: a plain number reads nothing) reads
+/// surface coordinates: albedo(p, uv), albedo(at) or value(at).
+template <class X>
+inline constexpr bool texture_reads_coordinates = requires(const X& texture, const Vec3<typename X::scalar_type>& p, const Vec2<typename X::scalar_type>& uv) {
+    texture.albedo(p, uv);
+} || requires(const X& texture, const TexturePoint<typename X::scalar_type>& at) { texture.albedo(at); } || ScalarTexture<X>;
+
 /// A texture's albedo at `at`, whichever form it reads.
 template <Texture X>
 [[nodiscard]] constexpr Rgb<typename X::scalar_type> albedo_at(const X& texture, const TexturePoint<typename X::scalar_type>& at) noexcept

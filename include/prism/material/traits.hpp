@@ -192,6 +192,19 @@ concept Dispersive = requires(const M& material, typename M::scalar_type wavelen
     { material.refractive_index(wavelength_nm) } -> std::same_as<typename M::scalar_type>;
 };
 
+/// Whether a material reads surface coordinates, so that the scene adds them to its
+/// crossings (Scene::closest_hit, add_coordinates): as it says (`reads_coordinates`), or
+/// else whenever its diffuse lobe takes uv or a TexturePoint, and for every glossy lobe.
+/// A scene whose materials read none never computes them.
+template <Material M>
+[[nodiscard]] consteval bool reads_coordinates() noexcept
+{
+    if constexpr (requires { M::reads_coordinates; }) return bool(M::reads_coordinates);
+    else if constexpr (detail::declares_glossy<M>()) return true;
+    else if constexpr (M::has_diffuse) return !requires(const M& m, const Vec3<typename M::scalar_type>& p) { m.diffuse(p); };
+    else return false;
+}
+
 /// The material has a glossy lobe (GlossyLobe).
 template <Material M>
 inline constexpr bool has_glossy = detail::declares_glossy<M>();

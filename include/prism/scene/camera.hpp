@@ -27,8 +27,7 @@ struct CameraRays {
     [[nodiscard]] constexpr Ray<T> ray(T x, T y) const noexcept
     {
         const Vec3<T> through = top_left + x * pixel_right + y * pixel_down; // one unit along the view direction
-        const T distance = length(through);
-        return {origin, through / distance, T(0), length(pixel_right) / distance};
+        return {origin, normalize(through), T(0), length(pixel_right) / length(through)};
     }
 
     /// Whether the camera has a lens of some size (then rays start across it).

@@ -455,14 +455,19 @@ private:
         PRISM_ASSERT(crossing.has_value());
         if (!crossing) return std::nullopt;
         Hit<T> hit{*crossing, nearest.slot, nearest.index};
-        // A material that sets its own shading normal (a normal or bump map) sets it here.
-        if constexpr (requires { object_at<I>(nearest.index).material.shade(hit.crossing); })
-            object_at<I>(nearest.index).material.shade(hit.crossing);
-        if (ray.width > T(0) || ray.spread > T(0)) {
-            // The cone's width across the surface: stretched by 1 / cos along the ray's
-            // slant, taken as the square root's isotropic width (the same area).
-            const T cos = std::abs(dot(hit.crossing.normal, ray.direction)) / length(ray.direction);
-            hit.crossing.footprint = ray.footprint_at(hit.crossing.t) / prism::sqrt(std::max(cos, T(1e-3)));
+        using M = typename std::remove_cvref_t<decltype(object_at<I>(nearest.index))>::material_type;
+        if constexpr (reads_coordinates<M>()) {
+            // Surface coordinates, and the footprint of the ray's cone across the surface:
+            // stretched by 1 / cos along its slant, taken as the isotropic width of the same
+            // area. Only for materials that read them: other scenes never compute them.
+            add_coordinates(shape, hit.crossing);
+            if (ray.width > T(0) || ray.spread > T(0)) {
+                const T cos = std::abs(dot(hit.crossing.normal, ray.direction)) / length(ray.direction);
+                hit.crossing.footprint = ray.footprint_at(hit.crossing.t) / prism::sqrt(std::max(cos, T(1e-3)));
+            }
+            // A material that sets its own shading normal (a normal or bump map) sets it here.
+            if constexpr (requires { object_at<I>(nearest.index).material.shade(hit.crossing); })
+                object_at<I>(nearest.index).material.shade(hit.crossing);
         }
         return hit;
     }
