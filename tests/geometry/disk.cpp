@@ -17,7 +17,10 @@ TEST_CASE_TEMPLATE("a disk is crossed inside its radius, entering on its normal'
     REQUIRE(front.size() == 1);
     CHECK(front[0].t == doctest::Approx(3));
     CHECK(front[0].entering);
-    CHECK(front[0].uv.x == doctest::Approx(0.6));
+    prism::Crossing<T> at = front[0];
+    CHECK_FALSE(at.has_uv()); // added where a material reads them
+    d.coordinates(at);
+    CHECK(at.uv.x == doctest::Approx(0.6));
     CHECK(d.crossings({{T(1.6), T(2), T(0)}, {T(0), T(0), T(1)}}, {T(0), prism::infinity<T>}).empty());
     const auto back = d.crossings({{T(1), T(2.4), T(5)}, {T(0), T(0), T(-1)}}, {T(0), prism::infinity<T>});
     REQUIRE(back.size() == 1);

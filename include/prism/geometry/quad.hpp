@@ -89,17 +89,10 @@ public:
         if constexpr (!Surface) {
             out.push_back(Crossing<T>::without_surface(t, entering));
         } else {
-            out.push_back(Crossing<T>::flat(t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering));
+            // Its coordinates come with it: (s, r) are at hand, and dp/du, dp/dv are its edges.
+            out.push_back(Crossing<T>::flat(t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering).with_uv({s, r}, u_, v_));
         }
         return out;
-    }
-
-    /// Surface coordinates of a crossing of this quad: (s, t) with point = corner + s
-    /// edge_u + t edge_v, so dp/du = edge_u and dp/dv = edge_v.
-    void coordinates(Crossing<T>& c) const noexcept
-    {
-        const Vec3<T> local = c.point - corner_;
-        c = c.with_uv({dot(local, dual_u_), dot(local, dual_v_)}, u_, v_);
     }
 
     /// A point uniform over the quad for u in the unit square, with density 1 / area.

@@ -145,11 +145,14 @@ private:
 /// face, faces of 3 corners or more with no vertex twice, no statement it does not read)
 /// before tinyobjloader parses the same text, and then that tinyobjloader returned every
 /// vertex and triangle. Materials are not read, so `mtllib` names no file that is opened.
-template <Scalar T = float>
-[[nodiscard]] MeshBuffers<T> load_obj(const std::filesystem::path& path, ReadLimits limits = {})
-try {
-    detail::InputFile file(path, "mesh", limits);
-    detail::ObjChecker checker(file);
+namespace detail {
+
+/// The OBJ file read through `file`, checked (ObjChecker) and parsed by tinyobjloader with
+/// the material library `mtl_text` (empty: none; faces then have material -1), and what
+/// tinyobjloader returned checked against what the file holds.
+[[nodiscard]] inline tinyobj::ObjReader parse_obj(InputFile& file, const std::string& mtl_text = {})
+{
+    ObjChecker checker(file);
     std::string text;
     std::size_t number = 0;
     while (const std::optional<std::string> line = file.line(std::size_t(1) << 20, "line " + std::to_string(number + 1))) {
@@ -161,20 +164,31 @@ try {
     config.triangulate = true;
     config.vertex_color = false;
     tinyobj::ObjReader reader;
-    if (!reader.ParseFromString(text, "", config)) {
+    if (!reader.ParseFromString(text, mtl_text, config)) {
         std::string reason = reader.Error();
         while (!reason.empty() && (reason.back() == '\n' || reason.back() == '\r')) reason.pop_back();
         file.fail("tinyobjloader: " + (reason.empty() ? std::string("unknown error") : reason));
     }
     const auto& attrib = reader.GetAttrib();
-    const auto fail = [&](const std::string& reason) { file.fail(reason); };
     const std::size_t positions = attrib.vertices.size() / 3, normals = attrib.normals.size() / 3, uvs = attrib.texcoords.size() / 2;
-    // What tinyobjloader returned, against what the file holds.
     std::size_t triangles = 0;
     for (const auto& shape : reader.GetShapes()) triangles += shape.mesh.indices.size() / 3;
     if (std::array<std::size_t, 3>{positions, normals, uvs} != checker.counts() || triangles != checker.triangles())
-        fail("tinyobjloader returned " + std::to_string(positions) + " vertices and " + std::to_string(triangles) + " triangles, but the file has " +
-             std::to_string(checker.counts()[0]) + " and its faces make " + std::to_string(checker.triangles()));
+        file.fail("tinyobjloader returned " + std::to_string(positions) + " vertices and " + std::to_string(triangles) + " triangles, but the file has " +
+                  std::to_string(checker.counts()[0]) + " and its faces make " + std::to_string(checker.triangles()));
+    return reader;
+}
+
+} // namespace detail
+
+template <Scalar T = float>
+[[nodiscard]] MeshBuffers<T> load_obj(const std::filesystem::path& path, ReadLimits limits = {})
+try {
+    detail::InputFile file(path, "mesh", limits);
+    const tinyobj::ObjReader reader = detail::parse_obj(file);
+    const auto& attrib = reader.GetAttrib();
+    const auto fail = [&](const std::string& reason) { file.fail(reason); };
+    const std::size_t positions = attrib.vertices.size() / 3, normals = attrib.normals.size() / 3, uvs = attrib.texcoords.size() / 2;
     // Normals and coordinates only where every face corner names one (in range).
     bool with_normals = normals > 0, with_uvs = uvs > 0;
     for (const auto& shape : reader.GetShapes())

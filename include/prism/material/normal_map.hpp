@@ -45,6 +45,57 @@ template <Scalar T>
     return dot(cross(c.dpdu, c.dpdv), c.normal) < T(0) ? T(-1) : T(1);
 }
 
+/// Tilts c's shading normal to the tangent-space normal 2 rgb - 1 (its tangent part
+/// times `strength`), in the frame of t along dp/du and b = cross(n, t) turned as (dp/du,
+/// dp/dv) turn.
+template <Scalar T>
+void apply_normal_map(Crossing<T>& c, const Rgb<T>& rgb, T strength) noexcept
+{
+    const Vec3<T> n = c.shading;
+    const Vec3<T> along_u = c.dpdu - dot(c.dpdu, n) * n;
+    if (!(length_squared(along_u) > T(0))) return;
+    const Vec3<T> t = normalize(along_u);
+    const Vec3<T> b = handedness(c) * cross(n, t);
+    const Vec3<T> local{strength * (T(2) * rgb.x - T(1)), strength * (T(2) * rgb.y - T(1)), T(2) * rgb.z - T(1)};
+    const Vec3<T> tilted = local.x * t + local.y * b + std::max(local.z, T(0)) * n;
+    if (!(length_squared(tilted) > T(0))) return;
+    c.shading = kept_above(normalize(tilted), c.normal);
+}
+
+/// Sets c's shading normal to that of the surface moved along it by scale x height(u, v),
+/// the height's slope by central differences `du` apart.
+template <Scalar T, class Height>
+void apply_bump_map(Crossing<T>& c, const Height& height, T scale, T du) noexcept
+{
+    TexturePoint<T> at = texture_point(c);
+    const Vec2<T> uv = at.uv;
+    const auto h = [&](T u, T v) {
+        at.uv = {u, v};
+        return height.value(at);
+    };
+    const T h_u = scale * (h(uv.x + du, uv.y) - h(uv.x - du, uv.y)) / (T(2) * du);
+    const T h_v = scale * (h(uv.x, uv.y + du) - h(uv.x, uv.y - du)) / (T(2) * du);
+    // The moved surface p + h n has dp/du + h_u n and dp/dv + h_v n: their cross product,
+    // with the shading normal for the unmoved surface's.
+    const Vec3<T> n = c.shading;
+    const Vec3<T> tilted = length(cross(c.dpdu, c.dpdv)) * n + handedness(c) * (h_v * cross(c.dpdu, n) + h_u * cross(n, c.dpdv));
+    if (!(length_squared(tilted) > T(0)) || !is_finite(tilted)) return;
+    c.shading = kept_above(normalize(tilted), c.normal);
+}
+
+/// The uv step of a bump map's differences: `delta` where given, else half a texel of a
+/// texture that has texels, else 1/1000.
+template <Scalar T, class Height>
+[[nodiscard]] T bump_step(const Height& height, T delta) noexcept
+{
+    if (delta > T(0)) return delta;
+    if constexpr (requires { height.width(); height.height(); }) {
+        const int side = std::max(height.width(), height.height());
+        if (side > 0) return T(0.5) / T(side);
+    }
+    return T(1e-3);
+}
+
 } // namespace detail
 
 /// A tangent-space normal map over the material Base: the map's RGB in [0, 1] is the
@@ -69,17 +120,7 @@ struct NormalMapped : Base {
     /// The crossing with its shading normal tilted by the map.
     void shade(Crossing<T>& c) const noexcept
     {
-        if (!c.has_uv()) return;
-        const Vec3<T> n = c.shading;
-        const Vec3<T> along_u = c.dpdu - dot(c.dpdu, n) * n;
-        if (!(length_squared(along_u) > T(0))) return;
-        const Vec3<T> t = normalize(along_u);
-        const Vec3<T> b = detail::handedness(c) * cross(n, t);
-        const Rgb<T> rgb = albedo_at(normal_map, texture_point(c));
-        const Vec3<T> local{strength * (T(2) * rgb.x - T(1)), strength * (T(2) * rgb.y - T(1)), T(2) * rgb.z - T(1)};
-        const Vec3<T> tilted = local.x * t + local.y * b + std::max(local.z, T(0)) * n;
-        if (!(length_squared(tilted) > T(0))) return;
-        c.shading = detail::kept_above(normalize(tilted), c.normal);
+        if (c.has_uv()) detail::apply_normal_map(c, albedo_at(normal_map, texture_point(c)), strength);
     }
 
     /// Throws std::invalid_argument, naming the parameter, for a bad base, map or strength.
@@ -113,23 +154,7 @@ struct BumpMapped : Base {
     /// The crossing with its shading normal that of the moved surface.
     void shade(Crossing<T>& c) const noexcept
     {
-        if (!c.has_uv()) return;
-        const T du = step(c), dv = du;
-        TexturePoint<T> at = texture_point(c);
-        const Vec2<T> uv = at.uv;
-        const auto h = [&](T u, T v) {
-            at.uv = {u, v};
-            return height.value(at);
-        };
-        const T h_u = scale * (h(uv.x + du, uv.y) - h(uv.x - du, uv.y)) / (T(2) * du);
-        const T h_v = scale * (h(uv.x, uv.y + dv) - h(uv.x, uv.y - dv)) / (T(2) * dv);
-        // The moved surface p + h n has dp/du + h_u n and dp/dv + h_v n: their cross
-        // product, with the shading normal for the unmoved surface's.
-        const Vec3<T> n = c.shading;
-        const T s = detail::handedness(c);
-        const Vec3<T> tilted = length(cross(c.dpdu, c.dpdv)) * n + s * (h_v * cross(c.dpdu, n) + h_u * cross(n, c.dpdv));
-        if (!(length_squared(tilted) > T(0)) || !is_finite(tilted)) return;
-        c.shading = detail::kept_above(normalize(tilted), c.normal);
+        if (c.has_uv()) detail::apply_bump_map(c, height, scale, detail::bump_step(height, delta));
     }
 
     /// Throws std::invalid_argument, naming the parameter, for a bad base or height, or a
@@ -142,16 +167,6 @@ struct BumpMapped : Base {
         detail::require_non_negative("BumpMapped delta", delta);
     }
 
-private:
-    [[nodiscard]] T step(const Crossing<T>&) const noexcept
-    {
-        if (delta > T(0)) return delta;
-        if constexpr (requires { height.width(); height.height(); }) {
-            const int side = std::max(height.width(), height.height());
-            if (side > 0) return T(0.5) / T(side);
-        }
-        return T(1e-3);
-    }
 };
 
 } // namespace prism
