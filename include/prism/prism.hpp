@@ -60,6 +60,8 @@
 #include <prism/material/diffuse.hpp>
 #include <prism/material/dispersive.hpp>
 #include <prism/material/emissive.hpp>
+#include <prism/material/image_texture.hpp>
+#include <prism/material/normal_map.hpp>
 #include <prism/material/phong.hpp>
 #include <prism/material/rough_conductor.hpp>
 #include <prism/material/rough_dielectric.hpp>

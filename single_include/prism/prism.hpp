@@ -313,6 +313,14 @@ template <Scalar T>
 struct Ray {
     Vec3<T> origin{}; ///< where the ray starts
     Vec3<T> direction{T(0), T(0), T(-1)}; ///< where it goes, of any non-zero length: t counts multiples of it
+    /// The width of the footprint it stands for at its origin (a ray cone, Amanatides 1984):
+    /// a camera ray covers a pixel, whose footprint grows as width + spread t; every other
+    /// ray samples a point (0, 0). Textures filter over it.
+    T width = T(0);
+    T spread = T(0); ///< how fast the footprint widens per unit of t
+
+    /// The footprint's width at t (0 for a ray that samples a point).
+    [[nodiscard]] constexpr T footprint_at(T t) const noexcept { return width + spread * t; }
 
     /// The point origin + t * direction.
     [[nodiscard]] constexpr Vec3<T> at(T t) const noexcept { return origin + t * direction; }
@@ -2538,6 +2546,8 @@ public:
     {
         return {dot(Vec3<T>(inverse_[0]), n), dot(Vec3<T>(inverse_[1]), n), dot(Vec3<T>(inverse_[2]), n)};
     }
+    /// A transformed normal carried back: by the transpose (unnormalised).
+    [[nodiscard]] Vec3<T> inverse_normal(const Vec3<T>& n) const noexcept { return {dot(Vec3<T>(m_[0]), n), dot(Vec3<T>(m_[1]), n), dot(Vec3<T>(m_[2]), n)}; }
 
     /// The absolute error bound of point(p) for a point p known to within `error` per
     /// axis (pbrt-v4, Transform::operator()(Point3fi)): the incoming error grows by the
@@ -2657,7 +2667,9 @@ private:
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <type_traits>
+#include <utility>
 
 namespace prism {
 
@@ -2672,15 +2684,36 @@ struct Crossing {
     Vec3<T> error; ///< absolute error bound of `point`, per axis
     Vec3<T> normal; ///< unit outward normal (the gradient of the inside function)
     bool entering; ///< the ray goes from outside to inside here (gradient . direction < 0)
+    std::uint32_t path; ///< in a CSG tree, which child it came from at each node, innermost highest (CsgNode::coordinates reads it)
     Vec3<T> shading; ///< unit outward shading normal: a mesh's interpolated vertex normal, else `normal`
-    Vec2<T> uv;      ///< surface coordinates: a mesh's interpolated ones, else (0, 0)
+    // Surface coordinates (docs/guide.md, "Surface coordinates"): a mesh's come with its
+    // crossings; every other shape's are added by add_coordinates (geometry/shape.hpp),
+    // which the scene calls only for a material that reads them. Zero until then, and on a
+    // shape without them.
+    Vec2<T> uv;      ///< surface coordinates (u, v)
+    Vec3<T> dpdu;    ///< how the point moves with u, dp/du
+    Vec3<T> dpdv;    ///< how the point moves with v, dp/dv
+    T footprint;     ///< the width of the ray's footprint here, across the surface (scene queries set it: Ray::width); 0 for a point
 
     /// A crossing of a surface without vertex normals or coordinates: it shades with
     /// its true normal.
     [[nodiscard]] static constexpr Crossing flat(T t, const Vec3<T>& point, const Vec3<T>& error, const Vec3<T>& normal, bool entering) noexcept
     {
-        return {t, point, error, normal, entering, normal, Vec2<T>(T(0))};
+        return {t, point, error, normal, entering, 0, normal, Vec2<T>(T(0)), Vec3<T>(T(0)), Vec3<T>(T(0)), T(0)};
     }
+
+    /// This crossing with surface coordinates uv and their derivatives.
+    [[nodiscard]] constexpr Crossing with_uv(const Vec2<T>& coordinates, const Vec3<T>& dp_du, const Vec3<T>& dp_dv) const noexcept
+    {
+        Crossing c = *this;
+        c.uv = coordinates;
+        c.dpdu = dp_du;
+        c.dpdv = dp_dv;
+        return c;
+    }
+
+    /// Whether the shape gave surface coordinates here (dp/du and dp/dv not both zero).
+    [[nodiscard]] constexpr bool has_uv() const noexcept { return dpdu != Vec3<T>(T(0)) || dpdv != Vec3<T>(T(0)); }
 
     /// The unit normal on the side the ray arrives from (outward when it enters).
     [[nodiscard]] constexpr Vec3<T> facing_normal() const noexcept { return entering ? normal : -normal; }
@@ -2703,6 +2736,23 @@ struct Crossing {
         return c;
     }
 };
+
+namespace detail {
+
+/// The directions of u and v on a flat face with unit normal n (planes, a box's faces):
+/// u runs along cross(up, n) and v along cross(n, u), with up +y, or -z for a face that
+/// looks up or down. So (u, v, n) is right-handed: a picture reads the right way round
+/// seen from the side n points to; on a wall u runs to the viewer's right and v up, and
+/// on a floor (n = +y) u runs along +x and v along -z.
+template <Scalar T>
+[[nodiscard]] constexpr std::pair<Vec3<T>, Vec3<T>> face_axes(const Vec3<T>& n) noexcept
+{
+    const Vec3<T> up = std::abs(n.y) > T(0.999) ? Vec3<T>(T(0), T(0), T(-1)) : Vec3<T>(T(0), T(1), T(0));
+    const Vec3<T> u = normalize(cross(up, n));
+    return {u, cross(n, u)};
+}
+
+} // namespace detail
 
 /// The sorted boundary crossings of a ray within a range, at most N of them.
 template <Scalar T, std::size_t N>
@@ -2790,6 +2840,34 @@ template <Shape S>
 {
     if constexpr (HasBoundingSphere<S>) return shape.bounding_sphere();
     else return shape.bounds().bounding_sphere();
+}
+
+namespace detail {
+
+/// How many CSG nodes deep a shape is (0 for a primitive).
+template <class S>
+[[nodiscard]] constexpr std::size_t csg_depth() noexcept
+{
+    if constexpr (requires { S::csg_depth; }) return S::csg_depth;
+    else return 0;
+}
+
+} // namespace detail
+
+/// A shape with surface coordinates: coordinates(c) sets c.uv, c.dpdu and c.dpdv of a
+/// crossing of its own (found with its surface) from c.point and c.normal (and, in a CSG
+/// node, c.path). Kept out of crossings() so that a scene computes them only for the
+/// materials that read them (Scene::closest_hit, reads_coordinates).
+template <class S>
+concept HasCoordinates = Shape<S> && requires(const S& shape, Crossing<typename S::scalar_type>& c) { shape.coordinates(c); };
+
+/// Sets the surface coordinates of a crossing of `shape` (found with its surface), where
+/// the shape has them (a mesh's came with the crossing; other shapes leave them zero).
+template <Shape S>
+constexpr void add_coordinates(const S& shape, Crossing<typename S::scalar_type>& c) noexcept
+{
+    if constexpr (HasCoordinates<S>) shape.coordinates(c);
+    (void)shape, (void)c;
 }
 
 /// A shape with a lean closest-hit query: first_crossing(ray, range) gives the t of
@@ -2886,6 +2964,7 @@ template <Shape S>
 // sliver no thicker than their error bounds.
 
 
+#include <algorithm>
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -2914,6 +2993,9 @@ public:
     using operation = Op;
     /// The most crossings: the children's together.
     static constexpr std::size_t max_crossings = A::max_crossings + B::max_crossings;
+    /// CSG nodes on the longest way down to a primitive (Crossing::path holds one bit each).
+    static constexpr std::size_t csg_depth = 1 + std::max(detail::csg_depth<A>(), detail::csg_depth<B>());
+    static_assert(csg_depth <= 32, "a CSG tree may be at most 32 nodes deep (Crossing::path)");
 
     // CsgNode Public Methods
 
@@ -2963,6 +3045,21 @@ public:
         return merged<Surface>(ray, range);
     }
 
+    /// Surface coordinates: the child's the crossing came from (its path's lowest bit).
+    void coordinates(Crossing<T>& c) const noexcept
+    {
+        const bool second = (c.path & 1u) != 0;
+        c.path >>= 1;
+        if (!second) {
+            add_coordinates(a_, c);
+        } else {
+            // The second child's own normal, where the result turned it round.
+            if constexpr (Op::flips_second) c.normal = -c.normal;
+            add_coordinates(b_, c);
+            if constexpr (Op::flips_second) c.normal = -c.normal;
+        }
+    }
+
 private:
     /// The children's crossings merged (Roth 1982), along `ray` within `range`.
     template <bool Surface>
@@ -2989,6 +3086,7 @@ private:
             // The result's surface here is the first child's where it has one.
             Crossing<T> c = from_a != nullptr ? *from_a : *from_b;
             if (from_a == nullptr && Op::flips_second) c.normal = -c.normal, c.shading = -c.shading;
+            if constexpr (Surface) c.path = c.path << 1 | (from_a == nullptr ? 1u : 0u);
             c.entering = now;
             out.push_back(c);
         }
@@ -3225,6 +3323,10 @@ public:
         return first_crossing(ray, range) < infinity<T>;
     }
 
+    /// Surface coordinates of a crossing of this box: each face spans [0, 1]^2 along its
+    /// axes (as a Plane's), or runs in the scene's units along an infinite side.
+    void coordinates(Crossing<T>& c) const noexcept { c = c.with_uv(face_uv(c.point, c.normal), face_extent(c.normal, 0), face_extent(c.normal, 1)); }
+
 private:
     // Box Private Methods
 
@@ -3270,6 +3372,24 @@ private:
         error[axis] = T(0);
         normal[axis] = high_face ? T(1) : T(-1);
         return Crossing<T>::flat(t, point, error, normal, entering);
+    }
+
+    [[nodiscard]] constexpr Vec3<T> face_extent(const Vec3<T>& normal, int which) const noexcept
+    {
+        const auto axes = detail::face_axes(normal);
+        const Vec3<T> axis = which == 0 ? axes.first : axes.second;
+        const T side = std::abs(dot(hi_ - lo_, axis));
+        return is_finite(side) ? side * axis : axis;
+    }
+    [[nodiscard]] constexpr Vec2<T> face_uv(const Vec3<T>& point, const Vec3<T>& normal) const noexcept
+    {
+        const auto [u, v] = detail::face_axes(normal);
+        const auto coordinate = [&](const Vec3<T>& axis) {
+            // From the face's corner where the coordinate is least.
+            const T start = std::min(dot(lo_, axis), dot(hi_, axis)), side = std::abs(dot(hi_ - lo_, axis));
+            return is_finite(side) ? (dot(point, axis) - start) / side : dot(point, axis);
+        };
+        return {coordinate(u), coordinate(v)};
     }
 
     Vec3<T> lo_{};
@@ -3376,6 +3496,15 @@ public:
         out.inside_at_start = entering ? t < range.min : range.min < t;
         if (range.surrounds(t)) out.push_back(Surface ? crossing_at(ray, t, entering) : Crossing<T>::without_surface(t, entering));
         return out;
+    }
+
+    /// Surface coordinates of a crossing of this plane: in the scene's units along the
+    /// face's axes (u along +x and v along -z on a floor; u to the right and v up on a wall
+    /// seen from the side the normal points to).
+    void coordinates(Crossing<T>& c) const noexcept
+    {
+        const auto [u, v] = detail::face_axes(normal_);
+        c = c.with_uv({dot(c.point, u), dot(c.point, v)}, u, v);
     }
 
 private:
@@ -3566,12 +3695,21 @@ public:
         if constexpr (!Surface) {
             out.push_back(Crossing<T>::without_surface(t, entering));
         } else {
-            const Vec3<T> error = detail::plane_point_error(normal_, offset_, point);
-            T angle = std::atan2(dot(local, t_), dot(local, s_));
-            if (angle < T(0)) angle += T(2) * pi<T>;
-            out.push_back({t, point, error, normal_, entering, normal_, Vec2<T>(prism::sqrt(r2) / radius_, angle / (T(2) * pi<T>))});
+            out.push_back(Crossing<T>::flat(t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering));
         }
         return out;
+    }
+
+    /// Surface coordinates of a crossing of this disk: polar, u the distance from the
+    /// centre over the radius, v the angle over 2 pi.
+    void coordinates(Crossing<T>& c) const noexcept
+    {
+        const Vec3<T> local = c.point - center_;
+        T angle = std::atan2(dot(local, t_), dot(local, s_));
+        if (angle < T(0)) angle += T(2) * pi<T>;
+        const T rho = length(local);
+        const Vec3<T> radial = rho > T(0) ? local * (radius_ / rho) : s_ * radius_;
+        c = c.with_uv({rho / radius_, angle / (T(2) * pi<T>)}, radial, (T(2) * pi<T>) * cross(normal_, local));
     }
 
     /// A point uniform over the disk for u in the unit square, with density 1 / area.
@@ -4230,6 +4368,16 @@ private:
         if (!data_->uvs.empty()) {
             const auto& uv = data_->uvs[h.triangle];
             out.uv = h.b[0] * uv[0] + h.b[1] * uv[1] + h.b[2] * uv[2];
+            // dp/du and dp/dv of the triangle's linear map from uv to space (pbrt-v4,
+            // Triangle::InteractionFromIntersection); none where its uvs are collinear.
+            const Vec2<T> d02 = uv[0] - uv[2], d12 = uv[1] - uv[2];
+            const Vec3<T> p02 = c[0] - c[2], p12 = c[1] - c[2];
+            const T det = d02.x * d12.y - d02.y * d12.x;
+            if (std::abs(det) > T(1e-9) * std::max(d02.x * d02.x + d02.y * d02.y, d12.x * d12.x + d12.y * d12.y)) {
+                const T inv = T(1) / det;
+                out.dpdu = (d12.y * p02 - d02.y * p12) * inv;
+                out.dpdv = (d02.x * p12 - d12.x * p02) * inv;
+            }
         }
         return out;
     }
@@ -4557,7 +4705,8 @@ public:
         if constexpr (!Surface) {
             out.push_back(Crossing<T>::without_surface(t, entering));
         } else {
-            out.push_back({t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering, normal_, Vec2<T>(s, r)});
+            // Its coordinates come with it: (s, r) are at hand, and dp/du, dp/dv are its edges.
+            out.push_back(Crossing<T>::flat(t, point, detail::plane_point_error(normal_, offset_, point), normal_, entering).with_uv({s, r}, u_, v_));
         }
         return out;
     }
@@ -5137,7 +5286,9 @@ static_assert(Shape<Quadric<double>>);
 
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace prism {
 
@@ -5260,6 +5411,22 @@ public:
         const Cone cone = cone_from(p);
         if (!cone.outside) return area_to_solid_angle(T(1) / area(), p, x, normalize(x - center_));
         return T(1) / (T(2) * pi<T> * cone.one_minus_cos);
+    }
+
+    /// Surface coordinates (docs/guide.md) of a crossing of this sphere, from its normal:
+    /// u = 1/2 + atan2(-n.x, -n.z) / 2 pi round the vertical axis (0 at +z, 1/4 at +x, 1/2
+    /// at -z, 3/4 at -x), v = 1 - theta / pi from the bottom (-y) to the top (+y), theta
+    /// the angle from +y. Seen from outside (dp/du, dp/dv, n) is right-handed, so a picture
+    /// reads the right way round.
+    void coordinates(Crossing<T>& c) const noexcept
+    {
+        const Vec3<T>& n = c.normal;
+        const T rho = prism::sqrt(n.x * n.x + n.z * n.z);
+        c.uv = {T(0.5) + std::atan2(-n.x, -n.z) / (T(2) * pi<T>), T(1) - std::atan2(rho, n.y) / pi<T>};
+        c.dpdu = (T(2) * pi<T> * radius_) * Vec3<T>(n.z, T(0), -n.x);
+        // At a pole u's direction is undefined; there atan2(-0, -0) = 0 picks the meridian through -z.
+        const T sx = rho > T(0) ? n.x / rho : T(0), sz = rho > T(0) ? n.z / rho : T(-1);
+        c.dpdv = (pi<T> * radius_) * Vec3<T>(-n.y * sx, rho, -n.y * sz);
     }
 
 private:
@@ -5428,6 +5595,8 @@ public:
     using T = scalar_type;
     /// As many crossings as the shape has.
     static constexpr std::size_t max_crossings = S::max_crossings;
+    /// The shape's CSG depth (Crossing::path passes through).
+    static constexpr std::size_t csg_depth = detail::csg_depth<S>();
 
     // Transformed Public Methods
 
@@ -5507,6 +5676,20 @@ public:
         return c;
     }
 
+    /// Surface coordinates: the shape's own at the crossing carried back into its frame,
+    /// their derivatives carried out to the world's.
+    void coordinates(Crossing<T>& c) const noexcept
+        requires HasCoordinates<S>
+    {
+        Crossing<T> local = c;
+        local.point = to_world_.inverse_point(c.point);
+        local.normal = normalize(to_world_.inverse_normal(c.normal));
+        shape_.coordinates(local);
+        c.uv = local.uv;
+        c.dpdu = to_world_.vector(local.dpdu);
+        c.dpdv = to_world_.vector(local.dpdv);
+    }
+
 private:
     /// The shape's first crossing (and its hint, where it gives one), in world t.
     [[nodiscard]] T first_crossing_with(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
@@ -5549,6 +5732,9 @@ private:
         const bool flat = c.shades_flat();
         c.normal = normalize(to_world_.normal(c.normal));
         c.shading = flat ? c.normal : normalize(to_world_.normal(c.shading));
+        // A mesh's coordinates come with its crossing.
+        c.dpdu = to_world_.vector(c.dpdu);
+        c.dpdv = to_world_.vector(c.dpdv);
     }
 
     /// The box around the eight transformed corners of the shape's box.
@@ -5953,6 +6139,272 @@ inline constexpr bool has_own_shadow = requires(const L& light, const Rgb<typena
 
 } // namespace prism
 
+// ---- prism/material/texture.hpp ----
+// Textures: an albedo that may vary with the surface point.
+
+
+#include <cmath>
+
+namespace prism {
+
+/// Where a texture is read: the surface point, its surface coordinates (Crossing::uv),
+/// and the width in uv units of the footprint the ray sees there (0: a point; an image
+/// texture then reads its full picture).
+template <Scalar T>
+struct TexturePoint {
+    Vec3<T> point{}; ///< the surface point
+    Vec2<T> uv{};    ///< its surface coordinates
+    T width = T(0);  ///< the footprint's width in uv units
+};
+
+/// A texture maps a surface point, `albedo(p)`, or a point and its surface coordinates,
+/// `albedo(p, uv)` (Crossing::uv: (0, 0) on a shape without them), or a TexturePoint
+/// with the footprint, `albedo(at)`, to an albedo (in [0, 1] per channel for a surface
+/// that keeps energy).
+template <class X>
+concept Texture = requires(const X& texture) { texture.validate(); } &&
+                  (requires(const X& texture, const Vec3<typename X::scalar_type>& p) {
+                      { texture.albedo(p) } -> std::same_as<Rgb<typename X::scalar_type>>;
+                  } || requires(const X& texture, const Vec3<typename X::scalar_type>& p, const Vec2<typename X::scalar_type>& uv) {
+                      { texture.albedo(p, uv) } -> std::same_as<Rgb<typename X::scalar_type>>;
+                  } || requires(const X& texture, const TexturePoint<typename X::scalar_type>& at) {
+                      { texture.albedo(at) } -> std::same_as<Rgb<typename X::scalar_type>>;
+                  });
+
+/// A texture of one number (a roughness, a height): `value(at)`.
+template <class X>
+concept ScalarTexture = requires(const X& texture, const TexturePoint<typename X::scalar_type>& at) {
+    { texture.value(at) } -> std::same_as<typename X::scalar_type>;
+    texture.validate();
+};
+
+/// Whether a texture (or a one-number parameter: a plain number reads nothing) reads
+/// surface coordinates: albedo(p, uv), albedo(at) or value(at).
+template <class X>
+inline constexpr bool texture_reads_coordinates = requires(const X& texture, const Vec3<typename X::scalar_type>& p, const Vec2<typename X::scalar_type>& uv) {
+    texture.albedo(p, uv);
+} || requires(const X& texture, const TexturePoint<typename X::scalar_type>& at) { texture.albedo(at); } || ScalarTexture<X>;
+
+/// A texture's albedo at `at`, whichever form it reads.
+template <Texture X>
+[[nodiscard]] constexpr Rgb<typename X::scalar_type> albedo_at(const X& texture, const TexturePoint<typename X::scalar_type>& at) noexcept
+{
+    if constexpr (requires { texture.albedo(at); })
+        return texture.albedo(at);
+    else if constexpr (requires { texture.albedo(at.point, at.uv); })
+        return texture.albedo(at.point, at.uv);
+    else
+        return texture.albedo(at.point);
+}
+
+/// A texture's albedo at point p with surface coordinates uv and no footprint.
+template <Texture X>
+[[nodiscard]] constexpr Rgb<typename X::scalar_type> albedo_at(const X& texture, const Vec3<typename X::scalar_type>& p,
+                                                               const Vec2<typename X::scalar_type>& uv) noexcept
+{
+    return albedo_at(texture, TexturePoint<typename X::scalar_type>{p, uv, typename X::scalar_type(0)});
+}
+
+/// Where a crossing's textures are read: its point and uv, and the ray's footprint
+/// there (Crossing::footprint) in uv units: its width over the square root of the area
+/// a unit square of uv covers, |dp/du x dp/dv| (0 on a shape without coordinates).
+template <Scalar T>
+[[nodiscard]] inline TexturePoint<T> texture_point(const Crossing<T>& at) noexcept
+{
+    TexturePoint<T> out{at.point, at.uv, T(0)};
+    if (at.footprint > T(0)) {
+        const T area = length(cross(at.dpdu, at.dpdv));
+        if (area > T(0)) out.width = at.footprint / prism::sqrt(area);
+    }
+    return out;
+}
+
+/// One colour everywhere.
+template <Scalar T = float>
+struct Solid {
+    /// The precision of the colour.
+    using scalar_type = T;
+    Rgb<T> color{T(0.75)}; ///< the albedo everywhere
+
+    /// The albedo at any point: color.
+    [[nodiscard]] constexpr Rgb<T> albedo(const Vec3<T>&) const noexcept { return color; }
+    /// Throws std::invalid_argument for a negative or non-finite colour.
+    constexpr void validate() const { detail::require_non_negative("Solid color", color); }
+};
+
+/// A 3D checkerboard of cubes of side `size` (POV-Ray's `checker`): `even` where
+/// floor(x/size) + floor(y/size) + floor(z/size) is even.
+template <Scalar T = float>
+struct Checker {
+    /// The precision of the colours.
+    using scalar_type = T;
+    Rgb<T> even{T(0.8)}; ///< albedo of the even cells
+    Rgb<T> odd{T(0.35)}; ///< albedo of the odd cells
+    T size = T(1); ///< side of a cell
+
+    /// The albedo at p: even or odd by the parity of p's cell.
+    [[nodiscard]] Rgb<T> albedo(const Vec3<T>& p) const noexcept
+    {
+        // Cells are half-open, so a point on a cell face belongs to exactly one cell. A
+        // floor at y = 0 stays in one layer because Plane refines its hit points onto
+        // the plane exactly when the plane is axis-aligned. Parity is taken in floating
+        // point, so far-away points cannot overflow an integer conversion.
+        const T inv = T(1) / size;
+        const T sum = std::floor(p.x * inv) + std::floor(p.y * inv) + std::floor(p.z * inv);
+        return std::floor(sum * T(0.5)) * T(2) == sum ? even : odd;
+    }
+
+    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite colour or a size <= 0.
+    constexpr void validate() const
+    {
+        detail::require_non_negative("Checker even", even);
+        detail::require_non_negative("Checker odd", odd);
+        detail::require_positive("Checker size", size);
+    }
+};
+
+/// A checkerboard in surface coordinates: squares of side `size` in (u, v), `even`
+/// where floor(u/size) + floor(v/size) is even (the square [0, size)^2 is even).
+template <Scalar T = float>
+struct UvChecker {
+    /// The precision of the colours.
+    using scalar_type = T;
+    Rgb<T> even{T(0.8)}; ///< albedo of the even squares
+    Rgb<T> odd{T(0.35)}; ///< albedo of the odd squares
+    T size = T(0.125); ///< side of a square in (u, v)
+
+    /// Checker's cells in the plane (u, v, 0).
+    [[nodiscard]] Rgb<T> albedo(const Vec3<T>&, const Vec2<T>& uv) const noexcept { return Checker<T>{even, odd, size}.albedo({uv.x, uv.y, T(0)}); }
+
+    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite colour or a size <= 0.
+    constexpr void validate() const
+    {
+        detail::require_non_negative("UvChecker even", even);
+        detail::require_non_negative("UvChecker odd", odd);
+        detail::require_positive("UvChecker size", size);
+    }
+};
+
+static_assert(Texture<Solid<float>> && Texture<Checker<double>> && Texture<UvChecker<float>>);
+
+} // namespace prism
+
+// ---- prism/optics/microfacet.hpp ----
+// The Trowbridge-Reitz (GGX) distribution of microfacet normals (Trowbridge and Reitz
+// 1975; Walter et al. 2007), with Smith's height-correlated masking-shadowing and
+// sampling of the normals a direction sees (Heitz 2018, "Sampling the GGX Distribution
+// of Visible Normals"). Every vector is in the surface's local frame: z along the
+// macro-normal, x and y along the directions of roughness alpha_x and alpha_y.
+
+
+#include <algorithm>
+#include <cmath>
+
+namespace prism {
+
+/// The roughness of a microfacet surface along its two tangent directions, as
+/// Blender's Cycles and Disney's principled model take it: alpha = roughness^2, so a
+/// roughness the eye reads as halfway rough (0.5) gives alpha 0.25.
+template <Scalar T>
+struct Roughness {
+    T u = T(0.3); ///< roughness along the first tangent, in [0, 1]
+    T v = T(0.3); ///< roughness along the second tangent, in [0, 1]
+
+    constexpr Roughness() noexcept = default;
+    /// An isotropic roughness (implicit, so a material reads `.roughness = 0.2`).
+    constexpr Roughness(T r) noexcept : u(r), v(r) {} // NOLINT(google-explicit-constructor)
+    /// An anisotropic roughness: r_u along the first tangent, r_v along the second.
+    constexpr Roughness(T r_u, T r_v) noexcept : u(r_u), v(r_v) {}
+
+    /// Throws std::invalid_argument, naming the parameter (`name` u or v), for a roughness outside [0, 1].
+    constexpr void validate(const char* name) const
+    {
+        if (!(u >= T(0) && u <= T(1))) detail::throw_invalid(name, " roughness must be in [0, 1], got ", u);
+        if (!(v >= T(0) && v <= T(1))) detail::throw_invalid(name, " roughness along v must be in [0, 1], got ", v);
+    }
+};
+
+/// The Trowbridge-Reitz (GGX) normal distribution with widths alpha_x, alpha_y.
+template <Scalar T>
+class TrowbridgeReitz {
+public:
+    /// Below this alpha a surface is a mirror: its lobe is narrower than float's
+    /// directions resolve, and it is rendered as the delta material (pbrt-v4's limit).
+    static constexpr T smooth_alpha = T(1e-3);
+
+    /// The distribution of a roughness: alpha = roughness^2 on each axis.
+    [[nodiscard]] static constexpr TrowbridgeReitz from(const Roughness<T>& r) noexcept { return TrowbridgeReitz(r.u * r.u, r.v * r.v); }
+
+    /// The distribution with widths alpha_x, alpha_y (each >= 0).
+    constexpr TrowbridgeReitz(T alpha_x, T alpha_y) noexcept : alpha_x_(alpha_x), alpha_y_(alpha_y) {}
+
+    /// The width along x.
+    [[nodiscard]] constexpr T alpha_x() const noexcept { return alpha_x_; }
+    /// The width along y.
+    [[nodiscard]] constexpr T alpha_y() const noexcept { return alpha_y_; }
+
+    /// Whether the surface is effectively a mirror (both widths below smooth_alpha).
+    [[nodiscard]] constexpr bool smooth() const noexcept { return std::max(alpha_x_, alpha_y_) < smooth_alpha; }
+
+    /// The density of microfacet normals m per unit projected area, D(m): its integral
+    /// of D(m) m.z over the hemisphere is 1 (and no facet faces down: 0 for m.z <= 0).
+    [[nodiscard]] T d(const Vec3<T>& m) const noexcept
+    {
+        if (!(m.z > T(0))) return T(0);
+        const T cos2 = m.z * m.z;
+        const T e = (m.x * m.x / (alpha_x_ * alpha_x_) + m.y * m.y / (alpha_y_ * alpha_y_)) / cos2;
+        const T denom = pi<T> * alpha_x_ * alpha_y_ * cos2 * cos2 * (T(1) + e) * (T(1) + e);
+        return denom > T(0) && denom < infinity<T> ? T(1) / denom : T(0);
+    }
+
+    /// Smith's Lambda(w): the shadowed microfacet area seen from w over its projected area.
+    [[nodiscard]] T lambda(const Vec3<T>& w) const noexcept
+    {
+        const T cos2 = w.z * w.z;
+        const T a2_tan2 = (alpha_x_ * alpha_x_ * w.x * w.x + alpha_y_ * alpha_y_ * w.y * w.y) / cos2;
+        if (!(a2_tan2 < infinity<T>)) return infinity<T>;
+        return (std::sqrt(T(1) + a2_tan2) - T(1)) / T(2);
+    }
+
+    /// Smith's masking: the fraction of microfacets facing w that w sees, 1 / (1 + Lambda(w)).
+    [[nodiscard]] T g1(const Vec3<T>& w) const noexcept { return T(1) / (T(1) + lambda(w)); }
+
+    /// Smith's height-correlated masking-shadowing of wo and wi (Heitz 2014), 1 / (1 + Lambda(wo) + Lambda(wi)).
+    [[nodiscard]] T g(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept { return T(1) / (T(1) + lambda(wo) + lambda(wi)); }
+
+    /// The density of the normals a direction w sees (Heitz 2018, eq. 3):
+    /// G1(w) max(0, w.m) D(m) / |w.z|, per unit solid angle of m.
+    [[nodiscard]] T visible_d(const Vec3<T>& w, const Vec3<T>& m) const noexcept
+    {
+        const T cos_o = std::abs(w.z);
+        if (!(cos_o > T(0))) return T(0);
+        return g1(w) * std::max(T(0), dot(w, m)) * d(m) / cos_o;
+    }
+
+    /// A normal drawn from visible_d(w, .) for w above the surface (w.z > 0), from two
+    /// uniform numbers (Heitz 2018): w stretched to the unit-roughness configuration, a
+    /// point on the half disk it sees, lifted onto the hemisphere and unstretched.
+    [[nodiscard]] Vec3<T> sample_visible(const Vec3<T>& w, T u1, T u2) const noexcept
+    {
+        const Vec3<T> wh = normalize(Vec3<T>(alpha_x_ * w.x, alpha_y_ * w.y, w.z));
+        const T lensq = wh.x * wh.x + wh.y * wh.y;
+        const Vec3<T> t1 = lensq > T(0) ? Vec3<T>(-wh.y, wh.x, T(0)) / std::sqrt(lensq) : Vec3<T>(T(1), T(0), T(0));
+        const Vec3<T> t2 = cross(wh, t1);
+        const T r = std::sqrt(u1), phi = T(2) * pi<T> * u2;
+        const T p1 = r * std::cos(phi);
+        const T s = T(0.5) * (T(1) + wh.z);
+        const T p2 = (T(1) - s) * std::sqrt(std::max(T(0), T(1) - p1 * p1)) + s * r * std::sin(phi);
+        const T p3 = std::sqrt(std::max(T(0), T(1) - p1 * p1 - p2 * p2));
+        const Vec3<T> nh = p1 * t1 + p2 * t2 + p3 * wh;
+        return normalize(Vec3<T>(alpha_x_ * nh.x, alpha_y_ * nh.y, std::max(T(1e-6), nh.z)));
+    }
+
+private:
+    T alpha_x_, alpha_y_;
+};
+
+} // namespace prism
+
 // ---- prism/material/bsdf.hpp ----
 // The vocabulary of a glossy lobe: a BSDF with evaluation, sampling and density, in the
 // local frame of a surface point (z along the shading normal, on the side light
@@ -6022,7 +6474,34 @@ struct GlossyQuery {
     Vec2<T> uv;    ///< its surface coordinates (Crossing::uv)
     bool entering = true; ///< the light (or the camera path) arrives from outside
     T eta = T(1);  ///< n beyond / n arriving, for an interface (1 where nothing refracts)
+    T width = T(0); ///< the ray's footprint there, in uv units (TexturePoint::width)
+
+    /// Where its textures are read.
+    [[nodiscard]] constexpr TexturePoint<T> texture_point() const noexcept { return {point, uv, width}; }
 };
+
+/// A material's roughness where its texture is read: a Roughness as given, or a
+/// one-number texture's value on both axes (isotropic).
+template <Scalar T, class R>
+[[nodiscard]] constexpr Roughness<T> roughness_at(const R& roughness, const TexturePoint<T>& at) noexcept
+{
+    if constexpr (ScalarTexture<R>) return Roughness<T>(roughness.value(at));
+    else return roughness;
+}
+
+/// Throws std::invalid_argument, naming the material, for a roughness outside [0, 1]: a
+/// Roughness's, or a texture's largest value (where it knows it: max_value()).
+template <class R>
+constexpr void validate_roughness(const R& roughness, const char* name)
+{
+    if constexpr (ScalarTexture<R>) {
+        roughness.validate();
+        if constexpr (requires { roughness.max_value(); })
+            if (!(roughness.max_value() <= 1)) detail::throw_invalid(name, " roughness texture's values must be in [0, 1], got up to ", roughness.max_value());
+    } else {
+        roughness.validate(name);
+    }
+}
 
 /// A BSDF lobe in its local frame (directions unit, pointing away from the surface;
 /// wo the direction a path leaves toward, wi the one light arrives from):
@@ -6119,12 +6598,15 @@ struct DiffuseResponse {
 };
 
 /// A Lambertian lobe: `diffuse(p)`, or `diffuse(p, uv)` for one that reads surface
-/// coordinates, gives its response at the surface point p.
+/// coordinates, or `diffuse(at)` for one that also reads the footprint (TexturePoint),
+/// gives its response at the surface point.
 template <class M>
 concept DiffuseLobe = requires(const M& material, const Vec3<typename M::scalar_type>& p) {
     { material.diffuse(p) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
 } || requires(const M& material, const Vec3<typename M::scalar_type>& p, const Vec2<typename M::scalar_type>& uv) {
     { material.diffuse(p, uv) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
+} || requires(const M& material, const TexturePoint<typename M::scalar_type>& at) {
+    { material.diffuse(at) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
 };
 
 /// What a delta interaction sees at a surface point: the incident cosine, the refracted
@@ -6253,6 +6735,19 @@ concept Dispersive = requires(const M& material, typename M::scalar_type wavelen
     requires bool(M::disperses);
     { material.refractive_index(wavelength_nm) } -> std::same_as<typename M::scalar_type>;
 };
+
+/// Whether a material reads surface coordinates, so that the scene adds them to its
+/// crossings (Scene::closest_hit, add_coordinates): as it says (`reads_coordinates`), or
+/// else whenever its diffuse lobe takes uv or a TexturePoint, and for every glossy lobe.
+/// A scene whose materials read none never computes them.
+template <Material M>
+[[nodiscard]] consteval bool reads_coordinates() noexcept
+{
+    if constexpr (requires { M::reads_coordinates; }) return bool(M::reads_coordinates);
+    else if constexpr (detail::declares_glossy<M>()) return true;
+    else if constexpr (M::has_diffuse) return !requires(const M& m, const Vec3<typename M::scalar_type>& p) { m.diffuse(p); };
+    else return false;
+}
 
 /// The material has a glossy lobe (GlossyLobe).
 template <Material M>
@@ -6715,7 +7210,9 @@ template <Material M>
 [[nodiscard]] constexpr DiffuseResponse<typename M::scalar_type> diffuse_response(const M& material,
                                                                                  const Crossing<typename M::scalar_type>& at) noexcept
 {
-    if constexpr (requires { material.diffuse(at.point, at.uv); })
+    if constexpr (requires { material.diffuse(texture_point(at)); })
+        return material.diffuse(texture_point(at));
+    else if constexpr (requires { material.diffuse(at.point, at.uv); })
         return material.diffuse(at.point, at.uv);
     else
         return material.diffuse(at.point);
@@ -7082,7 +7579,7 @@ template <Material M>
                              typename M::scalar_type eta = 1) noexcept
 {
     using T = typename M::scalar_type;
-    const auto lobe = material.glossy(GlossyQuery<T>{hit.point, hit.uv, hit.entering, eta});
+    const auto lobe = material.glossy(GlossyQuery<T>{hit.point, hit.uv, hit.entering, eta, texture_point(hit).width});
     return GlossyAt<std::remove_cvref_t<decltype(lobe)>>(lobe, LocalFrame<T>::about(hit.facing_shading()), hit.facing_normal(), d);
 }
 
@@ -9730,10 +10227,11 @@ struct CameraRays {
     Vec3<T> lens_up{};     ///< unit, along its second (the image's up)
 
     /// The ray through image position (x, y), in pixels from the top-left corner, from the
-    /// pinhole (a thin lens's centre).
+    /// pinhole (a thin lens's centre), with the spread of a pixel's footprint (Ray::spread).
     [[nodiscard]] constexpr Ray<T> ray(T x, T y) const noexcept
     {
-        return {origin, normalize(top_left + x * pixel_right + y * pixel_down)};
+        const Vec3<T> through = top_left + x * pixel_right + y * pixel_down; // one unit along the view direction
+        return {origin, normalize(through), T(0), length(pixel_right) / length(through)};
     }
 
     /// Whether the camera has a lens of some size (then rays start across it).
@@ -9756,7 +10254,7 @@ struct CameraRays {
         if (!thin_lens()) return ray(x, y);
         const Vec3<T> through = top_left + x * pixel_right + y * pixel_down; // one unit along the view direction
         const Vec3<T> from = lens_point(u, v);
-        return {from, normalize(origin + focus * through - from)};
+        return {from, normalize(origin + focus * through - from), T(0), length(pixel_right) / length(through)};
     }
 
     /// Where a point is seen: image position (x, y) in pixels from the top-left corner
@@ -11297,7 +11795,22 @@ private:
         const auto crossing = surface_crossing(shape, ray, nearest.range, nearest.hint);
         PRISM_ASSERT(crossing.has_value());
         if (!crossing) return std::nullopt;
-        return Hit<T>{*crossing, nearest.slot, nearest.index};
+        Hit<T> hit{*crossing, nearest.slot, nearest.index};
+        using M = typename std::remove_cvref_t<decltype(object_at<I>(nearest.index))>::material_type;
+        if constexpr (reads_coordinates<M>()) {
+            // Surface coordinates, and the footprint of the ray's cone across the surface:
+            // stretched by 1 / cos along its slant, taken as the isotropic width of the same
+            // area. Only for materials that read them: other scenes never compute them.
+            add_coordinates(shape, hit.crossing);
+            if (ray.width > T(0) || ray.spread > T(0)) {
+                const T cos = std::abs(dot(hit.crossing.normal, ray.direction)) / length(ray.direction);
+                hit.crossing.footprint = ray.footprint_at(hit.crossing.t) / prism::sqrt(std::max(cos, T(1e-3)));
+            }
+            // A material that sets its own shading normal (a normal or bump map) sets it here.
+            if constexpr (requires { object_at<I>(nearest.index).material.shade(hit.crossing); })
+                object_at<I>(nearest.index).material.shade(hit.crossing);
+        }
+        return hit;
     }
 
     /// Whether the slot's material lets a shadow ray through (attenuated) rather than
@@ -13414,106 +13927,6 @@ static_assert(Light<SpotLight<float>>);
 
 } // namespace prism
 
-// ---- prism/material/texture.hpp ----
-// Textures: an albedo that may vary with the surface point.
-
-
-#include <cmath>
-
-namespace prism {
-
-/// A texture maps a surface point, `albedo(p)`, or a point and its surface coordinates,
-/// `albedo(p, uv)` (a mesh's interpolated uv; (0, 0) elsewhere: Crossing::uv), to an
-/// albedo in [0, 1] per channel.
-template <class X>
-concept Texture = requires(const X& texture) { texture.validate(); } &&
-                  (requires(const X& texture, const Vec3<typename X::scalar_type>& p) {
-                      { texture.albedo(p) } -> std::same_as<Rgb<typename X::scalar_type>>;
-                  } || requires(const X& texture, const Vec3<typename X::scalar_type>& p, const Vec2<typename X::scalar_type>& uv) {
-                      { texture.albedo(p, uv) } -> std::same_as<Rgb<typename X::scalar_type>>;
-                  });
-
-/// A texture's albedo at point p with surface coordinates uv, whichever it reads.
-template <Texture X>
-[[nodiscard]] constexpr Rgb<typename X::scalar_type> albedo_at(const X& texture, const Vec3<typename X::scalar_type>& p,
-                                                               const Vec2<typename X::scalar_type>& uv) noexcept
-{
-    if constexpr (requires { texture.albedo(p, uv); })
-        return texture.albedo(p, uv);
-    else
-        return texture.albedo(p);
-}
-
-/// One colour everywhere.
-template <Scalar T = float>
-struct Solid {
-    /// The precision of the colour.
-    using scalar_type = T;
-    Rgb<T> color{T(0.75)}; ///< the albedo everywhere
-
-    /// The albedo at any point: color.
-    [[nodiscard]] constexpr Rgb<T> albedo(const Vec3<T>&) const noexcept { return color; }
-    /// Throws std::invalid_argument for a negative or non-finite colour.
-    constexpr void validate() const { detail::require_non_negative("Solid color", color); }
-};
-
-/// A 3D checkerboard of cubes of side `size` (POV-Ray's `checker`): `even` where
-/// floor(x/size) + floor(y/size) + floor(z/size) is even.
-template <Scalar T = float>
-struct Checker {
-    /// The precision of the colours.
-    using scalar_type = T;
-    Rgb<T> even{T(0.8)}; ///< albedo of the even cells
-    Rgb<T> odd{T(0.35)}; ///< albedo of the odd cells
-    T size = T(1); ///< side of a cell
-
-    /// The albedo at p: even or odd by the parity of p's cell.
-    [[nodiscard]] Rgb<T> albedo(const Vec3<T>& p) const noexcept
-    {
-        // Cells are half-open, so a point on a cell face belongs to exactly one cell. A
-        // floor at y = 0 stays in one layer because Plane refines its hit points onto
-        // the plane exactly when the plane is axis-aligned. Parity is taken in floating
-        // point, so far-away points cannot overflow an integer conversion.
-        const T inv = T(1) / size;
-        const T sum = std::floor(p.x * inv) + std::floor(p.y * inv) + std::floor(p.z * inv);
-        return std::floor(sum * T(0.5)) * T(2) == sum ? even : odd;
-    }
-
-    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite colour or a size <= 0.
-    constexpr void validate() const
-    {
-        detail::require_non_negative("Checker even", even);
-        detail::require_non_negative("Checker odd", odd);
-        detail::require_positive("Checker size", size);
-    }
-};
-
-/// A checkerboard in surface coordinates: squares of side `size` in (u, v), `even`
-/// where floor(u/size) + floor(v/size) is even (the square [0, size)^2 is even).
-template <Scalar T = float>
-struct UvChecker {
-    /// The precision of the colours.
-    using scalar_type = T;
-    Rgb<T> even{T(0.8)}; ///< albedo of the even squares
-    Rgb<T> odd{T(0.35)}; ///< albedo of the odd squares
-    T size = T(0.125); ///< side of a square in (u, v)
-
-    /// Checker's cells in the plane (u, v, 0).
-    [[nodiscard]] Rgb<T> albedo(const Vec3<T>&, const Vec2<T>& uv) const noexcept { return Checker<T>{even, odd, size}.albedo({uv.x, uv.y, T(0)}); }
-
-    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite colour or a size <= 0.
-    constexpr void validate() const
-    {
-        detail::require_non_negative("UvChecker even", even);
-        detail::require_non_negative("UvChecker odd", odd);
-        detail::require_positive("UvChecker size", size);
-    }
-};
-
-static_assert(Texture<Solid<float>> && Texture<Checker<double>> && Texture<UvChecker<float>>);
-
-} // namespace prism
-
 // ---- prism/optics/fresnel.hpp ----
 // Fresnel reflectance: exact dielectric, Schlick's approximation, complex conductor.
 //
@@ -13661,122 +14074,6 @@ concept FresnelPolicy = Scalar<T> && requires(T cos_i, T eta) {
 };
 
 static_assert(FresnelPolicy<ExactFresnel, float> && FresnelPolicy<SchlickFresnel, double>);
-
-} // namespace prism
-
-// ---- prism/optics/microfacet.hpp ----
-// The Trowbridge-Reitz (GGX) distribution of microfacet normals (Trowbridge and Reitz
-// 1975; Walter et al. 2007), with Smith's height-correlated masking-shadowing and
-// sampling of the normals a direction sees (Heitz 2018, "Sampling the GGX Distribution
-// of Visible Normals"). Every vector is in the surface's local frame: z along the
-// macro-normal, x and y along the directions of roughness alpha_x and alpha_y.
-
-
-#include <algorithm>
-#include <cmath>
-
-namespace prism {
-
-/// The roughness of a microfacet surface along its two tangent directions, as
-/// Blender's Cycles and Disney's principled model take it: alpha = roughness^2, so a
-/// roughness the eye reads as halfway rough (0.5) gives alpha 0.25.
-template <Scalar T>
-struct Roughness {
-    T u = T(0.3); ///< roughness along the first tangent, in [0, 1]
-    T v = T(0.3); ///< roughness along the second tangent, in [0, 1]
-
-    constexpr Roughness() noexcept = default;
-    /// An isotropic roughness (implicit, so a material reads `.roughness = 0.2`).
-    constexpr Roughness(T r) noexcept : u(r), v(r) {} // NOLINT(google-explicit-constructor)
-    /// An anisotropic roughness: r_u along the first tangent, r_v along the second.
-    constexpr Roughness(T r_u, T r_v) noexcept : u(r_u), v(r_v) {}
-
-    /// Throws std::invalid_argument, naming the parameter (`name` u or v), for a roughness outside [0, 1].
-    constexpr void validate(const char* name) const
-    {
-        if (!(u >= T(0) && u <= T(1))) detail::throw_invalid(name, " roughness must be in [0, 1], got ", u);
-        if (!(v >= T(0) && v <= T(1))) detail::throw_invalid(name, " roughness along v must be in [0, 1], got ", v);
-    }
-};
-
-/// The Trowbridge-Reitz (GGX) normal distribution with widths alpha_x, alpha_y.
-template <Scalar T>
-class TrowbridgeReitz {
-public:
-    /// Below this alpha a surface is a mirror: its lobe is narrower than float's
-    /// directions resolve, and it is rendered as the delta material (pbrt-v4's limit).
-    static constexpr T smooth_alpha = T(1e-3);
-
-    /// The distribution of a roughness: alpha = roughness^2 on each axis.
-    [[nodiscard]] static constexpr TrowbridgeReitz from(const Roughness<T>& r) noexcept { return TrowbridgeReitz(r.u * r.u, r.v * r.v); }
-
-    /// The distribution with widths alpha_x, alpha_y (each >= 0).
-    constexpr TrowbridgeReitz(T alpha_x, T alpha_y) noexcept : alpha_x_(alpha_x), alpha_y_(alpha_y) {}
-
-    /// The width along x.
-    [[nodiscard]] constexpr T alpha_x() const noexcept { return alpha_x_; }
-    /// The width along y.
-    [[nodiscard]] constexpr T alpha_y() const noexcept { return alpha_y_; }
-
-    /// Whether the surface is effectively a mirror (both widths below smooth_alpha).
-    [[nodiscard]] constexpr bool smooth() const noexcept { return std::max(alpha_x_, alpha_y_) < smooth_alpha; }
-
-    /// The density of microfacet normals m per unit projected area, D(m): its integral
-    /// of D(m) m.z over the hemisphere is 1 (and no facet faces down: 0 for m.z <= 0).
-    [[nodiscard]] T d(const Vec3<T>& m) const noexcept
-    {
-        if (!(m.z > T(0))) return T(0);
-        const T cos2 = m.z * m.z;
-        const T e = (m.x * m.x / (alpha_x_ * alpha_x_) + m.y * m.y / (alpha_y_ * alpha_y_)) / cos2;
-        const T denom = pi<T> * alpha_x_ * alpha_y_ * cos2 * cos2 * (T(1) + e) * (T(1) + e);
-        return denom > T(0) && denom < infinity<T> ? T(1) / denom : T(0);
-    }
-
-    /// Smith's Lambda(w): the shadowed microfacet area seen from w over its projected area.
-    [[nodiscard]] T lambda(const Vec3<T>& w) const noexcept
-    {
-        const T cos2 = w.z * w.z;
-        const T a2_tan2 = (alpha_x_ * alpha_x_ * w.x * w.x + alpha_y_ * alpha_y_ * w.y * w.y) / cos2;
-        if (!(a2_tan2 < infinity<T>)) return infinity<T>;
-        return (std::sqrt(T(1) + a2_tan2) - T(1)) / T(2);
-    }
-
-    /// Smith's masking: the fraction of microfacets facing w that w sees, 1 / (1 + Lambda(w)).
-    [[nodiscard]] T g1(const Vec3<T>& w) const noexcept { return T(1) / (T(1) + lambda(w)); }
-
-    /// Smith's height-correlated masking-shadowing of wo and wi (Heitz 2014), 1 / (1 + Lambda(wo) + Lambda(wi)).
-    [[nodiscard]] T g(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept { return T(1) / (T(1) + lambda(wo) + lambda(wi)); }
-
-    /// The density of the normals a direction w sees (Heitz 2018, eq. 3):
-    /// G1(w) max(0, w.m) D(m) / |w.z|, per unit solid angle of m.
-    [[nodiscard]] T visible_d(const Vec3<T>& w, const Vec3<T>& m) const noexcept
-    {
-        const T cos_o = std::abs(w.z);
-        if (!(cos_o > T(0))) return T(0);
-        return g1(w) * std::max(T(0), dot(w, m)) * d(m) / cos_o;
-    }
-
-    /// A normal drawn from visible_d(w, .) for w above the surface (w.z > 0), from two
-    /// uniform numbers (Heitz 2018): w stretched to the unit-roughness configuration, a
-    /// point on the half disk it sees, lifted onto the hemisphere and unstretched.
-    [[nodiscard]] Vec3<T> sample_visible(const Vec3<T>& w, T u1, T u2) const noexcept
-    {
-        const Vec3<T> wh = normalize(Vec3<T>(alpha_x_ * w.x, alpha_y_ * w.y, w.z));
-        const T lensq = wh.x * wh.x + wh.y * wh.y;
-        const Vec3<T> t1 = lensq > T(0) ? Vec3<T>(-wh.y, wh.x, T(0)) / std::sqrt(lensq) : Vec3<T>(T(1), T(0), T(0));
-        const Vec3<T> t2 = cross(wh, t1);
-        const T r = std::sqrt(u1), phi = T(2) * pi<T> * u2;
-        const T p1 = r * std::cos(phi);
-        const T s = T(0.5) * (T(1) + wh.z);
-        const T p2 = (T(1) - s) * std::sqrt(std::max(T(0), T(1) - p1 * p1)) + s * r * std::sin(phi);
-        const T p3 = std::sqrt(std::max(T(0), T(1) - p1 * p1 - p2 * p2));
-        const Vec3<T> nh = p1 * t1 + p2 * t2 + p3 * wh;
-        return normalize(Vec3<T>(alpha_x_ * nh.x, alpha_y_ * nh.y, std::max(T(1e-6), nh.z)));
-    }
-
-private:
-    T alpha_x_, alpha_y_;
-};
 
 } // namespace prism
 
@@ -13993,6 +14290,8 @@ public:
     static constexpr bool transmits = false;
     /// A glossy lobe: coat and base.
     static constexpr bool has_glossy = true;
+    /// Whether a texture of it reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = texture_reads_coordinates<Albedo>;
 
     /// A base of `albedo` under `coat`; throws std::invalid_argument, naming the parameter, for a bad albedo or coat.
     explicit CoatedDiffuse(Albedo albedo = {}, Coat<T> coat = {}) : albedo_(std::move(albedo)), coat_(checked(coat)), transmission_(coat_)
@@ -14003,7 +14302,7 @@ public:
     /// The lobe at a point.
     [[nodiscard]] CoatedLobe<T> glossy(const GlossyQuery<T>& q) const noexcept
     {
-        return {albedo_at(albedo_, q.point, q.uv), coat_, transmission_};
+        return {albedo_at(albedo_, q.texture_point()), coat_, transmission_};
     }
 
     /// The base's albedo texture.
@@ -14475,8 +14774,11 @@ struct Diffuse {
     T phong = T(0); ///< POV-Ray's phong: the highlight's strength, 0 for none
     T phong_size = T(40); ///< POV-Ray's phong_size: the highlight's exponent
 
-    /// The albedo at p (and uv, for textures in surface coordinates), with kd and ka.
-    [[nodiscard]] constexpr DiffuseResponse<T> diffuse(const Vec3<T>& p, const Vec2<T>& uv) const noexcept { return {albedo_at(albedo, p, uv), kd, ka}; }
+    /// Whether its texture reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = texture_reads_coordinates<Albedo>;
+
+    /// The albedo where the texture is read (point, uv and footprint), with kd and ka.
+    [[nodiscard]] constexpr DiffuseResponse<T> diffuse(const TexturePoint<T>& at) const noexcept { return {albedo_at(albedo, at), kd, ka}; }
 
     /// The Phong highlight's weight for cos_alpha = R . L (0 when phong is 0 or the light
     /// is behind the mirror direction): radiance phong cos_alpha^phong_size E / pi.
@@ -14715,6 +15017,403 @@ static_assert(Material<Emissive<float>>);
 
 } // namespace prism
 
+// ---- prism/material/image_texture.hpp ----
+// Image textures: a picture over a surface's (u, v), filtered to the footprint a ray sees.
+//
+// An ImageTexture holds linear texels (io/texture.hpp reads them from PNG, JPEG, HDR, PFM
+// or EXR, undoing sRGB where the file holds colour) and a pyramid of ever smaller copies,
+// each the area average of the one above (mipmaps, Williams 1983). A lookup at (u, v)
+// with a footprint of width w in uv units reads the level whose texels are w wide,
+// bilinearly, and blends the two levels around it (trilinear filtering); with w = 0 it
+// reads the full picture bilinearly. (u, v) = (0, 0) is the picture's bottom-left corner
+// and (1, 1) its top-right one (OBJ's and OpenGL's convention: v runs up the picture).
+// Outside [0, 1] the picture repeats or its edge texels stretch (Wrap).
+
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace prism {
+
+/// What a lookup outside [0, 1] reads: the picture again (repeat), or its nearest edge (clamp).
+enum class Wrap { repeat, clamp };
+
+/// How texels are blended: the nearest one; bilinearly in the full picture; or
+/// trilinearly, between the two pyramid levels the footprint falls between.
+enum class TextureFilter { nearest, bilinear, trilinear };
+
+/// How a texture reads its texels.
+struct TextureSampling {
+    Wrap wrap = Wrap::repeat;           ///< outside [0, 1]
+    TextureFilter filter = TextureFilter::trilinear;  ///< between texels and levels
+};
+
+/// A picture of linear values (1 or 3 channels) with its mipmap pyramid. Copies share the
+/// texels. As a Texture it gives an albedo (a grey picture gives grey); `value` gives the
+/// first channel, for a parameter that is one number (roughness, a height).
+template <Scalar T = float>
+class ImageTexture {
+public:
+    /// The precision of the values it returns.
+    using scalar_type = T;
+
+    /// One level of the pyramid: width x height texels of `channels` floats, row 0 at the
+    /// top of the picture.
+    struct Level {
+        int width = 0;  ///< texels a row
+        int height = 0; ///< rows
+        std::vector<float> texels; ///< width x height x channels values, row 0 at the top
+    };
+
+    /// An empty texture; reads as black. (Only for default construction: validate() refuses it.)
+    ImageTexture() = default;
+
+    /// The texture of `texels` (width x height x channels floats, row by row from the top,
+    /// linear values), read by `sampling`. Throws std::invalid_argument naming the value for
+    /// a size below 1, channels other than 1 or 3, a texel count that does not match, or a
+    /// texel that is negative or not finite.
+    ImageTexture(int width, int height, int channels, std::span<const float> texels, TextureSampling sampling = {})
+        : sampling_(sampling)
+    {
+        if (width < 1 || height < 1) detail::throw_invalid("ImageTexture size must be at least 1 x 1, got ", width, " x ", height);
+        if (channels != 1 && channels != 3) detail::throw_invalid("ImageTexture channels must be 1 or 3, got ", channels);
+        const std::size_t count = std::size_t(width) * std::size_t(height) * std::size_t(channels);
+        if (texels.size() != count)
+            detail::throw_invalid("ImageTexture texels must be width x height x channels = ", count, ", got ", texels.size());
+        for (std::size_t i = 0; i < count; ++i)
+            if (!(texels[i] >= 0.0f) || !std::isfinite(texels[i]))
+                detail::throw_invalid("ImageTexture texel ", i / std::size_t(channels), " (x ", (i / std::size_t(channels)) % std::size_t(width), ", y ",
+                                      i / std::size_t(channels) / std::size_t(width), ") must be finite and non-negative, got ", texels[i]);
+        auto data = std::make_shared<Data>();
+        data->channels = channels;
+        for (std::size_t i = 0; i < count; ++i) data->max_value = std::max(data->max_value, texels[i]);
+        data->levels.push_back({width, height, std::vector<float>(texels.begin(), texels.end())});
+        while (data->levels.back().width > 1 || data->levels.back().height > 1) data->levels.push_back(halved(data->levels.back(), channels));
+        data_ = std::move(data);
+    }
+
+    /// Width of the full picture, in texels.
+    [[nodiscard]] int width() const noexcept { return data_ ? data_->levels[0].width : 0; }
+    /// Height of the full picture, in texels.
+    [[nodiscard]] int height() const noexcept { return data_ ? data_->levels[0].height : 0; }
+    /// 1 (grey) or 3 (RGB); 0 when empty.
+    [[nodiscard]] int channels() const noexcept { return data_ ? data_->channels : 0; }
+    /// The number of pyramid levels (1 + floor(log2(max(width, height)))).
+    [[nodiscard]] std::size_t levels() const noexcept { return data_ ? data_->levels.size() : 0; }
+    /// Level k of the pyramid (0: the full picture).
+    [[nodiscard]] const Level& level(std::size_t k) const noexcept { return data_->levels[k]; }
+    /// How it reads its texels.
+    [[nodiscard]] TextureSampling sampling() const noexcept { return sampling_; }
+    /// The largest texel value of any channel (0 when empty).
+    [[nodiscard]] float max_value() const noexcept { return data_ ? data_->max_value : 0.0f; }
+    /// Bytes held by the texels of every level.
+    [[nodiscard]] std::size_t memory_bytes() const noexcept
+    {
+        std::size_t bytes = 0;
+        if (data_)
+            for (const Level& l : data_->levels) bytes += l.texels.size() * sizeof(float);
+        return bytes;
+    }
+
+    /// The pyramid level (fractional) a footprint `width` wide in uv units reads:
+    /// log2(width x the picture's larger side), 0 at most a texel wide, and at most the
+    /// last level.
+    [[nodiscard]] T level_for(T footprint) const noexcept
+    {
+        if (!data_ || !(footprint > T(0))) return T(0);
+        const T texels = footprint * T(std::max(width(), height()));
+        if (!(texels > T(1))) return T(0);
+        return std::min(T(std::log2(texels)), T(levels() - 1));
+    }
+
+    /// The filtered RGB at `at` (its footprint in at.width).
+    [[nodiscard]] Rgb<T> rgb(const TexturePoint<T>& at) const noexcept
+    {
+        if (!data_) return Rgb<T>(T(0));
+        switch (sampling_.filter) {
+        case TextureFilter::nearest: return nearest(0, at.uv);
+        case TextureFilter::bilinear: return bilinear(0, at.uv);
+        case TextureFilter::trilinear: break;
+        }
+        const T l = level_for(at.width);
+        const std::size_t k = std::size_t(l);
+        const T f = l - T(k);
+        const Rgb<T> fine = bilinear(k, at.uv);
+        if (f == T(0) || k + 1 >= levels()) return fine;
+        return fine + f * (bilinear(k + 1, at.uv) - fine);
+    }
+
+    /// The albedo at `at`: its RGB (Texture).
+    [[nodiscard]] Rgb<T> albedo(const TexturePoint<T>& at) const noexcept { return rgb(at); }
+    /// The first channel at `at`, for one-number parameters.
+    [[nodiscard]] T value(const TexturePoint<T>& at) const noexcept { return rgb(at).x; }
+
+    /// Throws std::invalid_argument for an empty texture.
+    void validate() const
+    {
+        if (!data_) detail::throw_invalid("ImageTexture is empty (construct it from texels, or read it with load_texture)");
+    }
+
+private:
+    struct Data {
+        int channels = 3;
+        float max_value = 0.0f;
+        std::vector<Level> levels;
+    };
+
+    /// Half the size on each side (at least 1), each texel the area average of what it
+    /// covers above: exact for odd sizes too, where a texel covers 1.5 texels of a side.
+    [[nodiscard]] static Level halved(const Level& from, int channels)
+    {
+        // f(j, weight) for each texel j of n_in that texel i of n_out covers, weights summing to 1.
+        const auto covered = [](int n_in, int n_out, int i, auto&& f) {
+            const double scale = double(n_in) / double(n_out), lo = i * scale, hi = (i + 1) * scale;
+            for (int j = int(lo); j < n_in && double(j) < hi; ++j) f(std::size_t(j), (std::min(hi, double(j + 1)) - std::max(lo, double(j))) / scale);
+        };
+        const int w = std::max(1, from.width / 2), h = std::max(1, from.height / 2);
+        const std::size_t c = std::size_t(channels), in_w = std::size_t(from.width);
+        // Across, then down.
+        std::vector<double> across(std::size_t(w) * std::size_t(from.height) * c, 0.0);
+        for (std::size_t y = 0; y < std::size_t(from.height); ++y)
+            for (int i = 0; i < w; ++i)
+                covered(from.width, w, i, [&](std::size_t j, double weight) {
+                    for (std::size_t ch = 0; ch < c; ++ch) across[(y * std::size_t(w) + std::size_t(i)) * c + ch] += weight * from.texels[(y * in_w + j) * c + ch];
+                });
+        Level out{w, h, std::vector<float>(std::size_t(w) * std::size_t(h) * c)};
+        for (int y = 0; y < h; ++y)
+            for (std::size_t i = 0; i < std::size_t(w); ++i)
+                for (std::size_t ch = 0; ch < c; ++ch) {
+                    double sum = 0;
+                    covered(from.height, h, y, [&](std::size_t j, double weight) { sum += weight * across[(j * std::size_t(w) + i) * c + ch]; });
+                    out.texels[(std::size_t(y) * std::size_t(w) + i) * c + ch] = float(sum);
+                }
+        return out;
+    }
+
+    [[nodiscard]] static float wrapped(float x, Wrap wrap) noexcept
+    {
+        if (!std::isfinite(x)) return 0.0f;
+        return wrap == Wrap::repeat ? x - std::floor(x) : std::clamp(x, 0.0f, 1.0f);
+    }
+
+    /// Texel (i, j) of level k as RGB, with i and j brought inside by the wrap mode.
+    [[nodiscard]] Rgb<T> texel(const Level& l, int i, int j) const noexcept
+    {
+        if (sampling_.wrap == Wrap::repeat) {
+            i = i < 0 ? i + l.width : (i >= l.width ? i - l.width : i);
+            j = j < 0 ? j + l.height : (j >= l.height ? j - l.height : j);
+        } else {
+            i = std::clamp(i, 0, l.width - 1);
+            j = std::clamp(j, 0, l.height - 1);
+        }
+        const std::size_t c = std::size_t(data_->channels);
+        const float* p = l.texels.data() + (std::size_t(j) * std::size_t(l.width) + std::size_t(i)) * c;
+        return c == 3 ? Rgb<T>(T(p[0]), T(p[1]), T(p[2])) : Rgb<T>(T(p[0]));
+    }
+
+    [[nodiscard]] Rgb<T> nearest(std::size_t k, const Vec2<T>& uv) const noexcept
+    {
+        const Level& l = data_->levels[k];
+        const float u = wrapped(float(uv.x), sampling_.wrap), v = wrapped(float(uv.y), sampling_.wrap);
+        const int i = std::min(int(u * float(l.width)), l.width - 1), j = std::min(int((1.0f - v) * float(l.height)), l.height - 1);
+        return texel(l, i, j);
+    }
+
+    [[nodiscard]] Rgb<T> bilinear(std::size_t k, const Vec2<T>& uv) const noexcept
+    {
+        const Level& l = data_->levels[k];
+        // Texel centres sit at (i + 1/2) / width; row 0 at the top (v = 1).
+        const T x = T(wrapped(float(uv.x), sampling_.wrap)) * T(l.width) - T(0.5);
+        const T y = (T(1) - T(wrapped(float(uv.y), sampling_.wrap))) * T(l.height) - T(0.5);
+        const T fx = std::floor(x), fy = std::floor(y);
+        const int i = int(fx), j = int(fy);
+        const T ax = x - fx, ay = y - fy;
+        const Rgb<T> top = (T(1) - ax) * texel(l, i, j) + ax * texel(l, i + 1, j);
+        const Rgb<T> bottom = (T(1) - ax) * texel(l, i, j + 1) + ax * texel(l, i + 1, j + 1);
+        return (T(1) - ay) * top + ay * bottom;
+    }
+
+    std::shared_ptr<const Data> data_;
+    TextureSampling sampling_{};
+};
+
+} // namespace prism
+
+// ---- prism/material/normal_map.hpp ----
+// Normal maps and bump maps: a material whose shading normal a texture tilts.
+//
+// NormalMapped<Base, Map> and BumpMapped<Base, Height> are the material Base (every
+// capability, inherited) with a texture that sets the shading normal where a ray meets
+// it. The scene applies it once, when it hands the crossing out (Scene::closest_hit: the
+// material's shade(crossing)), so every integrator sees the tilted normal as it sees a
+// mesh's interpolated one, with the same side test: light counts only from directions
+// on the same side of the shading and the true normal (material/scattering.hpp). A tilt
+// that would turn the normal past the surface is bent back to just above it, so no light
+// leaks through.
+//
+// The tangent frame is the surface's: t along dp/du made perpendicular to the shading
+// normal n, b = cross(n, t) turned as (dp/du, dp/dv) turn about the outward normal. A
+// shape without surface coordinates (Crossing::has_uv false) keeps its normal.
+
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace prism {
+
+namespace detail {
+
+/// The shading normal n' kept at least a little above the true surface (normal n, both
+/// outward): a component along n below 0.01 is raised to it.
+template <Scalar T>
+[[nodiscard]] Vec3<T> kept_above(const Vec3<T>& tilted, const Vec3<T>& n) noexcept
+{
+    const T along = dot(tilted, n);
+    return along >= T(0.01) ? tilted : normalize(tilted + (T(0.01) - along) * n);
+}
+
+/// +1 where (dp/du, dp/dv, outward normal) is right-handed, -1 where it is mirrored (the
+/// second solid of a Difference, a mirroring transform).
+template <Scalar T>
+[[nodiscard]] T handedness(const Crossing<T>& c) noexcept
+{
+    return dot(cross(c.dpdu, c.dpdv), c.normal) < T(0) ? T(-1) : T(1);
+}
+
+/// Tilts c's shading normal to the tangent-space normal 2 rgb - 1 (its tangent part
+/// times `strength`), in the frame of t along dp/du and b = cross(n, t) turned as (dp/du,
+/// dp/dv) turn.
+template <Scalar T>
+void apply_normal_map(Crossing<T>& c, const Rgb<T>& rgb, T strength) noexcept
+{
+    const Vec3<T> n = c.shading;
+    const Vec3<T> along_u = c.dpdu - dot(c.dpdu, n) * n;
+    if (!(length_squared(along_u) > T(0))) return;
+    const Vec3<T> t = normalize(along_u);
+    const Vec3<T> b = handedness(c) * cross(n, t);
+    const Vec3<T> local{strength * (T(2) * rgb.x - T(1)), strength * (T(2) * rgb.y - T(1)), T(2) * rgb.z - T(1)};
+    const Vec3<T> tilted = local.x * t + local.y * b + std::max(local.z, T(0)) * n;
+    if (!(length_squared(tilted) > T(0))) return;
+    c.shading = kept_above(normalize(tilted), c.normal);
+}
+
+/// Sets c's shading normal to that of the surface moved along it by scale x height(u, v),
+/// the height's slope by central differences `du` apart.
+template <Scalar T, class Height>
+void apply_bump_map(Crossing<T>& c, const Height& height, T scale, T du) noexcept
+{
+    TexturePoint<T> at = texture_point(c);
+    const Vec2<T> uv = at.uv;
+    const auto h = [&](T u, T v) {
+        at.uv = {u, v};
+        return height.value(at);
+    };
+    const T h_u = scale * (h(uv.x + du, uv.y) - h(uv.x - du, uv.y)) / (T(2) * du);
+    const T h_v = scale * (h(uv.x, uv.y + du) - h(uv.x, uv.y - du)) / (T(2) * du);
+    // The moved surface p + h n has dp/du + h_u n and dp/dv + h_v n: their cross product,
+    // with the shading normal for the unmoved surface's.
+    const Vec3<T> n = c.shading;
+    const Vec3<T> tilted = length(cross(c.dpdu, c.dpdv)) * n + handedness(c) * (h_v * cross(c.dpdu, n) + h_u * cross(n, c.dpdv));
+    if (!(length_squared(tilted) > T(0)) || !is_finite(tilted)) return;
+    c.shading = kept_above(normalize(tilted), c.normal);
+}
+
+/// The uv step of a bump map's differences: `delta` where given, else half a texel of a
+/// texture that has texels, else 1/1000.
+template <Scalar T, class Height>
+[[nodiscard]] T bump_step(const Height& height, T delta) noexcept
+{
+    if (delta > T(0)) return delta;
+    if constexpr (requires { height.width(); height.height(); }) {
+        const int side = std::max(height.width(), height.height());
+        if (side > 0) return T(0.5) / T(side);
+    }
+    return T(1e-3);
+}
+
+} // namespace detail
+
+/// A tangent-space normal map over the material Base: the map's RGB in [0, 1] is the
+/// normal (2 RGB - 1) in the frame (t, b, n) (OpenGL's and Blender's convention: green
+/// along +v). Read it with TextureEncoding::linear and, for an image, Filter::bilinear or
+/// trilinear. `strength` scales the tilt (0: none, 1: as the map says).
+template <class Base, class Map>
+struct NormalMapped : Base {
+    using typename Base::scalar_type;
+    /// Shorthand for scalar_type.
+    using T = typename Base::scalar_type;
+
+    /// It reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = true;
+
+    Map normal_map{};   ///< the normals, as RGB
+    T strength = T(1);  ///< how much of the tilt to apply
+
+    NormalMapped() = default;
+    /// Base with the normal map `map`, applied with `strength`.
+    NormalMapped(Base base, Map map, T tilt = T(1)) : Base(std::move(base)), normal_map(std::move(map)), strength(tilt) {}
+
+    /// The crossing with its shading normal tilted by the map.
+    void shade(Crossing<T>& c) const noexcept
+    {
+        if (c.has_uv()) detail::apply_normal_map(c, albedo_at(normal_map, texture_point(c)), strength);
+    }
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad base, map or strength.
+    void validate() const
+    {
+        Base::validate();
+        normal_map.validate();
+        detail::require_non_negative("NormalMapped strength", strength);
+    }
+};
+
+/// A bump map over the material Base: the surface shades as if moved along its normal by
+/// `scale` x height(u, v), the height a one-number texture (its slope taken by central
+/// differences `delta` apart in uv: half a texel of an ImageTexture by default).
+template <class Base, class Height>
+struct BumpMapped : Base {
+    using typename Base::scalar_type;
+    /// Shorthand for scalar_type.
+    using T = typename Base::scalar_type;
+
+    /// It reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = true;
+
+    Height height{};  ///< the height over the surface, in units of `scale`
+    T scale = T(1);   ///< scene units per unit of height
+    T delta = T(0);   ///< the uv step of the slope's differences (0: half a texel, or 1/1000 for a texture without texels)
+
+    BumpMapped() = default;
+    /// Base with the bump map `bumps` at `height_scale` scene units per unit.
+    BumpMapped(Base base, Height bumps, T height_scale) : Base(std::move(base)), height(std::move(bumps)), scale(height_scale) {}
+
+    /// The crossing with its shading normal that of the moved surface.
+    void shade(Crossing<T>& c) const noexcept
+    {
+        if (c.has_uv()) detail::apply_bump_map(c, height, scale, detail::bump_step(height, delta));
+    }
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad base or height, or a
+    /// scale or delta that is negative or not finite.
+    void validate() const
+    {
+        Base::validate();
+        height.validate();
+        detail::require_non_negative("BumpMapped scale", scale);
+        detail::require_non_negative("BumpMapped delta", delta);
+    }
+
+};
+
+} // namespace prism
+
 // ---- prism/material/phong.hpp ----
 // Phong: the normalised modified Phong model (Lafortune and Willems 1994), the glossy
 // surface of the classic photon-mapping and bidirectional test scenes. A Lambertian
@@ -14830,6 +15529,8 @@ struct Phong {
     static constexpr bool transmits = false;
     /// A glossy lobe: modified Phong.
     static constexpr bool has_glossy = true;
+    /// Whether a texture of it reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = texture_reads_coordinates<Albedo>;
 
     Albedo diffuse{}; ///< the Lambertian part's albedo (Solid, Checker, UvChecker or the user's)
     Rgb<T> specular{T(0.2)}; ///< the glossy part's albedo at normal incidence
@@ -14838,7 +15539,7 @@ struct Phong {
     /// The lobe at a point.
     [[nodiscard]] constexpr PhongLobe<T> glossy(const GlossyQuery<T>& q) const noexcept
     {
-        return {albedo_at(diffuse, q.point, q.uv), specular, exponent};
+        return {albedo_at(diffuse, q.texture_point()), specular, exponent};
     }
 
     /// Throws std::invalid_argument, naming the parameter, for a bad albedo, a specular
@@ -14961,7 +15662,7 @@ private:
 /// isotropic or along the frame's two tangents) reflecting by the Fresnel policy of a
 /// Conductor (ConstantKr, ComplexIor, MeasuredConductor). At roughness below about
 /// 0.03 (alpha below TrowbridgeReitz::smooth_alpha) it is the mirror Conductor.
-template <Scalar T = float, class Fresnel = ConstantKr<T>>
+template <Scalar T = float, class Fresnel = ConstantKr<T>, class RoughnessMap = Roughness<T>>
 struct RoughConductor {
     /// The precision of the material.
     using scalar_type = T;
@@ -14973,20 +15674,22 @@ struct RoughConductor {
     static constexpr bool transmits = false;
     /// A glossy lobe: microfacet reflection.
     static constexpr bool has_glossy = true;
+    /// Whether a texture of it reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = texture_reads_coordinates<RoughnessMap>;
 
     Fresnel fresnel{}; ///< each facet's reflectance: ConstantKr, ComplexIor, MeasuredConductor or the user's
-    Roughness<T> roughness{}; ///< roughness, alpha = roughness^2
+    RoughnessMap roughness{}; ///< roughness, alpha = roughness^2: a Roughness, or a one-number texture (ImageTexture) of it
 
     /// The lobe at a point.
-    [[nodiscard]] constexpr MicrofacetReflection<T, Fresnel> glossy(const GlossyQuery<T>&) const noexcept
+    [[nodiscard]] constexpr MicrofacetReflection<T, Fresnel> glossy(const GlossyQuery<T>& q) const noexcept
     {
-        return {TrowbridgeReitz<T>::from(roughness), fresnel};
+        return {TrowbridgeReitz<T>::from(roughness_at(roughness, q.texture_point())), fresnel};
     }
 
     /// Throws std::invalid_argument, naming the parameter, for a roughness outside [0, 1] or a bad Fresnel policy.
     constexpr void validate() const
     {
-        roughness.validate("RoughConductor");
+        validate_roughness(roughness, "RoughConductor");
         fresnel.validate();
     }
 };
@@ -15154,7 +15857,7 @@ private:
 /// (alpha = roughness^2), filled with `interior` (Beer-Lambert by default), nested with
 /// other transmissive objects by `priority` as Dielectric is. Below roughness 0.03 it is
 /// Dielectric's clean interface. Whitted's shadow rays pass it as they pass clear glass.
-template <Scalar T = float, Medium Interior = Homogeneous<T>>
+template <Scalar T = float, Medium Interior = Homogeneous<T>, class RoughnessMap = Roughness<T>>
     requires std::same_as<typename Interior::scalar_type, T>
 struct RoughDielectric {
     /// The precision of the material.
@@ -15167,16 +15870,18 @@ struct RoughDielectric {
     static constexpr bool transmits = true;
     /// A glossy lobe: microfacet reflection and refraction.
     static constexpr bool has_glossy = true;
+    /// Whether a texture of it reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = texture_reads_coordinates<RoughnessMap>;
 
     T ior = T(1.5); ///< the index of refraction inside
-    Roughness<T> roughness{}; ///< roughness, alpha = roughness^2
+    RoughnessMap roughness{}; ///< roughness, alpha = roughness^2: a Roughness, or a one-number texture (ImageTexture) of it
     Interior interior{}; ///< the medium that fills it
     int priority = 0; ///< where it overlaps another transmissive object, the higher priority's medium wins (medium/nesting.hpp)
 
     /// The lobe at a point, for light arriving where the index beyond over the index on its side is q.eta.
     [[nodiscard]] constexpr MicrofacetDielectric<T> glossy(const GlossyQuery<T>& q) const noexcept
     {
-        return {TrowbridgeReitz<T>::from(roughness), q.eta};
+        return {TrowbridgeReitz<T>::from(roughness_at(roughness, q.texture_point())), q.eta};
     }
 
     /// The clean glass of the same index, interior and priority (what Whitted refracts by).
@@ -15193,7 +15898,7 @@ struct RoughDielectric {
     constexpr void validate() const
     {
         detail::require_positive("RoughDielectric ior", ior);
-        roughness.validate("RoughDielectric");
+        validate_roughness(roughness, "RoughDielectric");
         interior.validate();
     }
 };
@@ -15971,10 +16676,11 @@ private:
 #endif
 
 #if !defined(STBI_INCLUDE_STB_IMAGE_H)
-// The same for stb_image, reading PNG and Radiance HDR only.
+// The same for stb_image, reading PNG, baseline JPEG and Radiance HDR only.
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
 #define STBI_ONLY_HDR
 #define PRISM_DEFINED_STBI_IMPLEMENTATION
 #endif
@@ -16059,6 +16765,50 @@ template <class File>
     return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
 }
 
+/// The linear value of an sRGB-encoded one in [0, 1] (IEC 61966-2-1).
+[[nodiscard]] inline float srgb_decode(float encoded) noexcept
+{
+    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
+/// An 8-bit picture as a file holds it: width x height x 3 bytes, row by row from the top.
+struct Bytes8 {
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgb;
+};
+
+/// stb_image's 8-bit RGB decoding of `bytes`, which the caller has checked; a failure
+/// throws through `file`, with stb_image's reason.
+template <class File>
+[[nodiscard]] Bytes8 stb_decode8(const std::vector<unsigned char>& bytes, File& file)
+{
+    int w = 0, h = 0, channels = 0;
+    unsigned char* data = stbi_load_from_memory(bytes.data(), int(std::min<std::size_t>(bytes.size(), INT32_MAX)), &w, &h, &channels, 3);
+    if (data == nullptr) {
+        const char* reason = stbi_failure_reason();
+        file.fail(std::string("it is truncated or corrupt (stb_image: ") + (reason != nullptr && *reason != 0 ? reason : "no reason given") + ")");
+    }
+    struct Free {
+        unsigned char* data;
+        ~Free() { stbi_image_free(data); }
+    } owner{data};
+    return {w, h, std::vector<unsigned char>(data, data + std::size_t(w) * std::size_t(h) * 3)};
+}
+
+/// An 8-bit picture as a Film of linear values: sRGB decoded, or each byte / 255.
+[[nodiscard]] inline Film to_film(const Bytes8& picture, bool srgb)
+{
+    float table[256];
+    for (int i = 0; i < 256; ++i) table[i] = srgb ? srgb_decode(float(i) / 255.0f) : float(i) / 255.0f;
+    Film film(picture.width, picture.height);
+    for (int y = 0; y < picture.height; ++y)
+        for (int x = 0; x < picture.width; ++x) {
+            const unsigned char* p = picture.rgb.data() + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(picture.width) + static_cast<std::size_t>(x));
+            film.set(x, y, Rgb<float>{table[p[0]], table[p[1]], table[p[2]]});
+        }
+    return film;
+}
+
 } // namespace detail
 
 /// 8-bit sRGB bytes, row by row from the top, 3 per pixel.
@@ -16120,12 +16870,12 @@ inline void write_image(const Film& film, const std::filesystem::path& path)
     detail::throw_io(path, "unknown image extension '" + extension + "' (use .png or .pfm)");
 }
 
-/// Read an 8-bit PNG (grey, RGB or with alpha) into linear radiance, undoing sRGB. The file
-/// is read no further than `limits`, and its header's size is checked against its bytes
-/// before stb_image allocates the picture: deflate expands at most 1032 times, so a header
-/// that claims more pixels than its compressed bytes can hold is refused. Every chunk must
-/// fit in the file and pass its CRC, and nothing may follow IEND.
-[[nodiscard]] inline Film read_png(const std::filesystem::path& path, ReadLimits limits = {})
+/// Read a PNG (grey, RGB or with alpha; 16-bit channels are cut to 8) as its 8-bit RGB
+/// bytes. The file is read no further than `limits`, and its header's size is checked
+/// against its bytes before stb_image allocates the picture: deflate expands at most 1032
+/// times, so a header that claims more pixels than its compressed bytes can hold is
+/// refused. Every chunk must fit in the file and pass its CRC, and nothing may follow IEND.
+[[nodiscard]] inline detail::Bytes8 read_png_bytes(const std::filesystem::path& path, ReadLimits limits = {})
 try {
     detail::InputFile file(path, "image", limits);
     // The signature and the header first, so that what is no PNG (/dev/zero) is refused
@@ -16149,32 +16899,72 @@ try {
         file.fail("its header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than its " + std::to_string(bytes.size()) +
                   " bytes can hold compressed");
     bytes = detail::checked_png_chunks(bytes, file);
-    int w = 0, h = 0, channels = 0;
-    unsigned char* data = stbi_load_from_memory(bytes.data(), int(std::min<std::size_t>(bytes.size(), INT32_MAX)), &w, &h, &channels, 3);
-    if (data == nullptr) {
-        const char* reason = stbi_failure_reason();
-        file.fail(std::string("it is truncated or corrupt (stb_image: ") + (reason != nullptr && *reason != 0 ? reason : "no reason given") + ")");
-    }
-    struct Free {
-        unsigned char* data;
-        ~Free() { stbi_image_free(data); }
-    } owner{data};
-    Film film(w, h);
-    const auto linear = [](unsigned char byte) {
-        const float x = float(byte) / 255.0f;
-        return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
-    };
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const unsigned char* p = data + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x));
-            film.set(x, y, Rgb<float>{linear(p[0]), linear(p[1]), linear(p[2])});
-        }
-    return film;
+    return detail::stb_decode8(bytes, file);
 } catch (const allocation_error&) {
     throw;
 } catch (const std::bad_alloc&) {
     throw detail::out_of_memory(path, "image");
 }
+
+/// Read a PNG (read_png_bytes) into linear radiance, undoing sRGB.
+[[nodiscard]] inline Film read_png(const std::filesystem::path& path, ReadLimits limits = {}) { return detail::to_film(read_png_bytes(path, limits), true); }
+
+/// Read a baseline JPEG (JFIF or Exif; grey or YCbCr) as its 8-bit RGB bytes. The file is
+/// read no further than `limits`, and its markers are walked before stb_image allocates
+/// the picture: the frame header must come before the scan, its size be 1 to 65535 on
+/// each side, and its pixels no more than its bytes can hold (a baseline scan spends at
+/// least two bits on each 8 x 8 block: 256 pixels a byte). Progressive and arithmetic-coded
+/// JPEGs are refused (a progressive scan can cover thousands of blocks with one code).
+[[nodiscard]] inline detail::Bytes8 read_jpeg_bytes(const std::filesystem::path& path, ReadLimits limits = {})
+try {
+    detail::InputFile file(path, "image", limits);
+    std::vector<unsigned char> bytes;
+    if (file.size() && *file.size() < 4) file.fail("it is too short to be a JPEG file (" + std::to_string(*file.size()) + " bytes)");
+    file.read(bytes, 2, "a JPEG start-of-image marker");
+    if (bytes[0] != 0xff || bytes[1] != 0xd8) file.fail("it is not a JPEG file (no start-of-image marker FF D8)");
+    const std::vector<unsigned char> rest = file.rest();
+    bytes.insert(bytes.end(), rest.begin(), rest.end());
+    // The markers up to the first scan: each segment's length must fit in the file.
+    std::size_t at = 2;
+    bool frame = false;
+    while (true) {
+        if (at + 4 > bytes.size()) file.fail("it is truncated (no scan before byte " + std::to_string(bytes.size()) + ")");
+        if (bytes[at] != 0xff) file.fail("it is corrupt (byte " + std::to_string(at) + " is not a marker)");
+        const unsigned marker = bytes[at + 1];
+        if (marker == 0xff) { // fill byte
+            ++at;
+            continue;
+        }
+        const std::size_t length = std::size_t(bytes[at + 2]) << 8 | bytes[at + 3];
+        if (length < 2 || at + 2 + length > bytes.size())
+            file.fail("it is truncated (the segment at byte " + std::to_string(at) + " claims " + std::to_string(length) + " bytes)");
+        if (marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 && marker != 0xcc) {
+            if (marker != 0xc0 && marker != 0xc1)
+                file.fail(marker == 0xc2 ? std::string("it is a progressive JPEG (save it as baseline, or as PNG)")
+                                         : "its frame type (marker FF " + std::to_string(marker) + ") is not baseline");
+            if (length < 8) file.fail("its frame header is " + std::to_string(length) + " bytes long (at least 8)");
+            const std::uint32_t height = std::uint32_t(bytes[at + 5]) << 8 | bytes[at + 6], width = std::uint32_t(bytes[at + 7]) << 8 | bytes[at + 8];
+            if (width == 0 || height == 0) file.fail("its frame header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels");
+            if (double(width) * double(height) > 256.0 * double(bytes.size()) + 65536.0)
+                file.fail("its frame header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than its " +
+                          std::to_string(bytes.size()) + " bytes can hold");
+            frame = true;
+        }
+        if (marker == 0xda) {
+            if (!frame) file.fail("its scan comes before a frame header");
+            break;
+        }
+        at += 2 + length;
+    }
+    return detail::stb_decode8(bytes, file);
+} catch (const allocation_error&) {
+    throw;
+} catch (const std::bad_alloc&) {
+    throw detail::out_of_memory(path, "image");
+}
+
+/// Read a baseline JPEG (read_jpeg_bytes) into linear radiance, undoing sRGB.
+[[nodiscard]] inline Film read_jpeg(const std::filesystem::path& path, ReadLimits limits = {}) { return detail::to_film(read_jpeg_bytes(path, limits), true); }
 
 /// Read a Radiance HDR file (RGBE, "#?RADIANCE" or "#?RGBE", FORMAT=32-bit_rle_rgbe, rows
 /// from the top: "-Y height +X width") into linear radiance, through stb_image. The file is

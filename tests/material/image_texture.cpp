@@ -58,7 +58,7 @@ TEST_CASE("bilinear lookups: a texel at its centre, the mean between four, v up 
 TEST_CASE("the pyramid: every level the area average of the picture, for odd sizes too (against brute-force supersampling)")
 {
     prism::Pcg32 rng(4, 2);
-    for (const auto [w, h] : {std::pair{8, 8}, std::pair{5, 3}, std::pair{7, 1}, std::pair{1, 6}}) {
+    for (const auto& [w, h] : {std::pair{8, 8}, std::pair{5, 3}, std::pair{7, 1}, std::pair{1, 6}}) {
         std::vector<float> texels(std::size_t(w * h * 3));
         for (float& x : texels) x = rng.uniform<float>();
         const ImageTexture<double> t(w, h, 3, texels);

@@ -29,6 +29,7 @@
 #include <prism/material/dielectric.hpp>
 #include <prism/material/normal_map.hpp>
 #include <prism/material/phong.hpp>
+#include <prism/scene/object.hpp>
 
 #include <algorithm>
 #include <cstdlib>
@@ -270,7 +271,7 @@ try {
     TextureFile colour{.encoding = TextureEncoding::srgb, .channels = 3, .sampling = options.sampling, .limits = options.limits};
     TextureFile data{.encoding = TextureEncoding::linear, .channels = 3, .sampling = options.sampling, .limits = options.limits};
     for (auto& [id, part] : parts) {
-        const detail::MtlMaterial m = id >= 0 && std::size_t(id) < materials.size() ? materials[std::size_t(id)] : detail::MtlMaterial{.name = "(none)"};
+        const detail::MtlMaterial m = id >= 0 && std::size_t(id) < materials.size() ? materials[std::size_t(id)] : detail::MtlMaterial{.name = "(none)", .line = 0, .kd = Rgb<double>(0.8), .ks = Rgb<double>(0.0), .ns = 0, .ni = 1.5, .d = 1, .illum = 2, .map_kd = {}, .map_ks = {}, .bump = {}, .norm = {}, .bump_multiplier = 1};
         TriangleMesh<T> mesh(part.mesh);
         if (m.glass()) {
             model.glass.items.emplace_back(std::move(mesh), Dielectric<T>{.ior = T(m.ni)});

@@ -50,8 +50,9 @@ public:
     /// One level of the pyramid: width x height texels of `channels` floats, row 0 at the
     /// top of the picture.
     struct Level {
-        int width = 0, height = 0;
-        std::vector<float> texels;
+        int width = 0;  ///< texels a row
+        int height = 0; ///< rows
+        std::vector<float> texels; ///< width x height x channels values, row 0 at the top
     };
 
     /// An empty texture; reads as black. (Only for default construction: validate() refuses it.)
@@ -81,8 +82,9 @@ public:
         data_ = std::move(data);
     }
 
-    /// Width and height of the full picture, in texels.
+    /// Width of the full picture, in texels.
     [[nodiscard]] int width() const noexcept { return data_ ? data_->levels[0].width : 0; }
+    /// Height of the full picture, in texels.
     [[nodiscard]] int height() const noexcept { return data_ ? data_->levels[0].height : 0; }
     /// 1 (grey) or 3 (RGB); 0 when empty.
     [[nodiscard]] int channels() const noexcept { return data_ ? data_->channels : 0; }

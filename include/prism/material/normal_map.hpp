@@ -105,6 +105,7 @@ template <Scalar T, class Height>
 template <class Base, class Map>
 struct NormalMapped : Base {
     using typename Base::scalar_type;
+    /// Shorthand for scalar_type.
     using T = typename Base::scalar_type;
 
     /// It reads surface coordinates (reads_coordinates).
@@ -138,6 +139,7 @@ struct NormalMapped : Base {
 template <class Base, class Height>
 struct BumpMapped : Base {
     using typename Base::scalar_type;
+    /// Shorthand for scalar_type.
     using T = typename Base::scalar_type;
 
     /// It reads surface coordinates (reads_coordinates).
