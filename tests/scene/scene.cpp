@@ -459,3 +459,28 @@ TEST_CASE("overlapping glass: the scene's tree gives a shadow ray the bits the g
     CHECK(blocked > 500);
     CHECK(nested > 500);
 }
+
+TEST_CASE("a camera ray's footprint picks the mip level a pixel covers, and only textured slots get coordinates")
+{
+    // A 512-texel picture over a floor where a unit of uv spans 1 (Plane: scene units), seen
+    // straight down from height h through a camera of horizontal field of view 40 degrees
+    // and 200 pixels: a pixel covers 2 h tan(20 degrees) / 200 of the floor, so
+    // 512 x that texels, and the level is log2 of it.
+    std::vector<float> texels(512 * 512, 0.5f);
+    const ImageTexture<double> picture(512, 512, 1, texels);
+    const Scene scene{Lights{PointLight<double>{}}, Object{Plane<double>({0, 1, 0}, 0), Diffuse<double, ImageTexture<double>>{.albedo = picture}},
+                      Object{Sphere<double>({5, 0, 0}, 1), Diffuse<double>{}}};
+    for (const double h : {2.0, 8.0, 30.0}) {
+        const Camera<double> camera{.position = {0, h, 0}, .look_at = {0, 0, 0}, .up = {0, 0, -1}, .fov = 40};
+        const auto hit = scene.closest_hit(camera.rays(200, 200).ray(100, 100), {0, infinity<double>});
+        REQUIRE(hit);
+        const double pixel = 2 * h * std::tan(20 * pi<double> / 180) / 200;
+        CHECK(hit->crossing.footprint == doctest::Approx(pixel).epsilon(1e-3));
+        CHECK(picture.level_for(texture_point(hit->crossing).width) == doctest::Approx(std::log2(512 * pixel)).epsilon(1e-3));
+    }
+    // The sphere's material reads no coordinates: its crossings come without them.
+    const auto plain = scene.closest_hit({{5, 5, 0}, {0, -1, 0}}, {0, infinity<double>});
+    REQUIRE(plain);
+    CHECK_FALSE(plain->crossing.has_uv());
+    CHECK(plain->crossing.footprint == 0);
+}
