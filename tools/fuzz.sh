@@ -6,7 +6,7 @@
 #   tools/fuzz.sh [SECONDS]     each target for SECONDS (default 30)
 # Targets (tests/fuzz/): quadric (crossings of any ten coefficients), csg (trees of
 # every operator), photon_map (the KD-tree against brute force, the estimates), and the
-# file readers pfm, png, jpeg, hdr, ply, obj and exr (any bytes as a file; exr as prism_merge reads a
+# file readers pfm, png, jpeg, hdr, ply, obj, mtl (an OBJ's material library) and exr (any bytes as a file; exr as prism_merge reads a
 # part). Each
 # starts from its committed corpus, tests/fuzz/corpus/<target>/, and writes what it
 # finds into build/fuzz/<target>/ (copy inputs worth keeping into the corpus); a crash
@@ -24,7 +24,7 @@ fuzz_one() {
   local target=$1 report="$out/$1.report"
   mkdir -p "$out/$target" "$root/tests/fuzz/corpus/$target"
   local libraries=() max_len=512
-  [[ $target == obj ]] && libraries=(-ltinyobjloader)
+  [[ $target == obj || $target == mtl ]] && libraries=(-ltinyobjloader)
   # An EXR part is a few KB; OpenEXR's library, and each run's malloc at most 512 MB.
   [[ $target == exr ]] && libraries=($(pkg-config --cflags --libs OpenEXR)) max_len=8192
   if ! clang++-19 "${flags[@]}" "$root/tests/fuzz/$target.cpp" -o "$out/fuzz_$target" "${libraries[@]}" >"$out/$target.log" 2>&1; then
@@ -42,7 +42,7 @@ fuzz_one() {
 }
 
 # One target per core at a time, each for SECONDS of its own.
-targets=(quadric csg photon_map pfm png jpeg hdr ply obj exr)
+targets=(quadric csg photon_map pfm png jpeg hdr ply obj mtl exr)
 cores=$(nproc)
 rm -f "$out"/*.report
 for target in "${targets[@]}"; do

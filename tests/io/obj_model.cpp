@@ -122,6 +122,13 @@ TEST_CASE("a .mtl whose Kd + Ks exceed 1 is scaled down with a note; a bad state
     refused("newmtl painted\nd 1.5\n", "line 2: 'd' (or 1 - Tr) must be in [0, 1]");
     refused("newmtl painted\nKd -1 0 0\n", "line 2: 'Kd' must not be negative");
     refused("newmtl painted\nKd 1 0\n", "line 2: 'Kd' has 2 numbers");
+    // Found by the mtl fuzz target: a Kd beyond float made a texel of infinity, refused as
+    // std::invalid_argument instead of naming the file.
+    refused("newmtl painted\nKd 1e39\n", "line 2: 'Kd' has '1e39', not a finite number");
+    // Found by it too: an illum beyond int was converted regardless, and words after a
+    // number were dropped.
+    refused("newmtl painted\nillum 111111111117\n", "line 2: 'illum' must be a whole number from 0 to 10");
+    refused("newmtl painted\nNi 1.3 m\n", "line 2: 'Ni' has 'm' after its number");
     refused("newmtl painted now\n", "line 1: the material name 'painted now...' has a space");
     refused("newmtl painted\n", "window_glass"); // a usemtl naming no material
     fs::remove(dir / "parts.mtl");

@@ -32,6 +32,7 @@
 #include <prism/scene/object.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -122,7 +123,8 @@ inline std::vector<MtlMaterial> read_mtl(const std::filesystem::path& path, Read
             if (!(words >> w)) fail(std::string("'") + what + "' needs a number");
             char* end = nullptr;
             const double v = std::strtod(w.c_str(), &end);
-            if (end != w.c_str() + w.size() || !std::isfinite(v)) fail(std::string("'") + what + "' has '" + w.substr(0, 32) + "', not a finite number");
+            if (end != w.c_str() + w.size() || !std::isfinite(v) || !std::isfinite(float(v)))
+                fail(std::string("'") + what + "' has '" + w.substr(0, 32) + "', not a finite number");
             return v;
         };
         const auto colour = [&](const char* what) {
@@ -159,13 +161,23 @@ inline std::vector<MtlMaterial> read_mtl(const std::filesystem::path& path, Read
         }
         if (out.empty()) fail("'" + keyword.substr(0, 32) + "' comes before any 'newmtl'");
         MtlMaterial& m = out.back();
+        // A statement of one number: that number and nothing after it.
+        const auto only_number = [&](const char* what) {
+            const double v = number_of(what);
+            if (std::string more; words >> more) fail(std::string("'") + what + "' has '" + more.substr(0, 32) + "' after its number");
+            return v;
+        };
         if (keyword == "Kd") m.kd = colour("Kd");
         else if (keyword == "Ks") m.ks = colour("Ks");
-        else if (keyword == "Ns") m.ns = number_of("Ns");
-        else if (keyword == "Ni") m.ni = number_of("Ni");
-        else if (keyword == "d") m.d = number_of("d");
-        else if (keyword == "Tr") m.d = 1 - number_of("Tr");
-        else if (keyword == "illum") m.illum = int(number_of("illum"));
+        else if (keyword == "Ns") m.ns = only_number("Ns");
+        else if (keyword == "Ni") m.ni = only_number("Ni");
+        else if (keyword == "d") m.d = only_number("d");
+        else if (keyword == "Tr") m.d = 1 - only_number("Tr");
+        else if (keyword == "illum") {
+            const double illum = only_number("illum");
+            if (!(illum >= 0 && illum <= 10 && illum == std::floor(illum))) fail("'illum' must be a whole number from 0 to 10, got " + std::to_string(illum));
+            m.illum = int(illum);
+        }
         else if (keyword == "map_Kd") m.map_kd = texture("map_Kd", nullptr);
         else if (keyword == "map_Ks") m.map_ks = texture("map_Ks", nullptr);
         else if (keyword == "map_Bump" || keyword == "map_bump" || keyword == "bump") m.bump = texture("bump", &m.bump_multiplier);
@@ -272,54 +284,56 @@ try {
     TextureFile data{.encoding = TextureEncoding::linear, .channels = 3, .sampling = options.sampling, .limits = options.limits};
     for (auto& [id, part] : parts) {
         const detail::MtlMaterial m = id >= 0 && std::size_t(id) < materials.size() ? materials[std::size_t(id)] : detail::MtlMaterial{.name = "(none)", .line = 0, .kd = Rgb<double>(0.8), .ks = Rgb<double>(0.0), .ns = 0, .ni = 1.5, .d = 1, .illum = 2, .map_kd = {}, .map_ks = {}, .bump = {}, .norm = {}, .bump_multiplier = 1};
-        TriangleMesh<T> mesh(part.mesh);
-        if (m.glass()) {
-            model.glass.items.emplace_back(std::move(mesh), Dielectric<T>{.ior = T(m.ni)});
-            continue;
-        }
-        // Kd times its map, baked into the texels.
-        ImageTexture<T> albedo;
-        if (m.map_kd.empty()) {
-            const std::vector<float> one{float(m.kd.x), float(m.kd.y), float(m.kd.z)};
-            albedo = ImageTexture<T>(1, 1, 3, one, options.sampling);
-        } else {
-            const ImageTexture<float> map = load_texture<float>(m.map_kd, colour);
-            const auto& full = map.level(0);
-            std::vector<float> texels(full.texels);
-            for (std::size_t i = 0; i < texels.size(); ++i) texels[i] *= float(m.kd[int(i % 3)]);
-            albedo = ImageTexture<T>(full.width, full.height, 3, texels, options.sampling);
-        }
-        Rgb<T> specular(m.ks);
-        if (!m.map_ks.empty()) {
-            specular = specular * detail::texture_mean(load_texture<T>(m.map_ks, colour));
-            model.notes.push_back("material '" + m.name + "': map_Ks is read as its mean colour (Phong's specular albedo is one colour)");
-        }
-        // Energy: Kd + Ks at most 1 in every channel.
-        const T most = albedo.max_value() + max_component(specular);
-        T scale_down = T(1);
-        if (most > T(1)) {
-            scale_down = T(1) / most;
-            model.notes.push_back("material '" + m.name + "': Kd + Ks reach " + std::to_string(double(most)) + ", scaled down together by " + std::to_string(double(scale_down)) +
-                                  " so that it reflects no more than arrives");
-            const auto& full = albedo.level(0);
-            std::vector<float> texels(full.texels);
-            for (float& x : texels) x *= float(scale_down);
-            albedo = ImageTexture<T>(full.width, full.height, 3, texels, options.sampling);
-            specular = specular * scale_down;
-        }
-        ObjSurface<T> surface;
-        surface.diffuse = std::move(albedo);
-        surface.specular = specular;
-        surface.exponent = T(m.ns);
-        if (!m.norm.empty()) surface.normal_map = load_texture<T>(m.norm, data);
-        if (!m.bump.empty()) {
-            TextureFile heights = data;
-            heights.channels = 1;
-            surface.bump = load_texture<T>(m.bump, heights);
-            surface.bump_scale = T(m.bump_multiplier * options.bump_scale);
-            if (!m.norm.empty()) model.notes.push_back("material '" + m.name + "': both a normal map and a bump map: the normal map is used");
-        }
+        // A material the rule cannot make (a value float cannot hold, a product that
+        // overflows) is refused by name.
         try {
+            TriangleMesh<T> mesh(part.mesh);
+            if (m.glass()) {
+                model.glass.items.emplace_back(std::move(mesh), Dielectric<T>{.ior = T(m.ni)});
+                continue;
+            }
+            // Kd times its map, baked into the texels.
+            ImageTexture<T> albedo;
+            if (m.map_kd.empty()) {
+                const std::vector<float> one{float(m.kd.x), float(m.kd.y), float(m.kd.z)};
+                albedo = ImageTexture<T>(1, 1, 3, one, options.sampling);
+            } else {
+                const ImageTexture<float> map = load_texture<float>(m.map_kd, colour);
+                const auto& full = map.level(0);
+                std::vector<float> texels(full.texels);
+                for (std::size_t i = 0; i < texels.size(); ++i) texels[i] *= float(m.kd[int(i % 3)]);
+                albedo = ImageTexture<T>(full.width, full.height, 3, texels, options.sampling);
+            }
+            Rgb<T> specular(m.ks);
+            if (!m.map_ks.empty()) {
+                specular = specular * detail::texture_mean(load_texture<T>(m.map_ks, colour));
+                model.notes.push_back("material '" + m.name + "': map_Ks is read as its mean colour (Phong's specular albedo is one colour)");
+            }
+            // Energy: Kd + Ks at most 1 in every channel.
+            const T most = albedo.max_value() + max_component(specular);
+            T scale_down = T(1);
+            if (most > T(1)) {
+                scale_down = T(1) / most;
+                model.notes.push_back("material '" + m.name + "': Kd + Ks reach " + std::to_string(double(most)) + ", scaled down together by " + std::to_string(double(scale_down)) +
+                                      " so that it reflects no more than arrives");
+                const auto& full = albedo.level(0);
+                std::vector<float> texels(full.texels);
+                for (float& x : texels) x *= float(scale_down);
+                albedo = ImageTexture<T>(full.width, full.height, 3, texels, options.sampling);
+                specular = specular * scale_down;
+            }
+            ObjSurface<T> surface;
+            surface.diffuse = std::move(albedo);
+            surface.specular = specular;
+            surface.exponent = T(m.ns);
+            if (!m.norm.empty()) surface.normal_map = load_texture<T>(m.norm, data);
+            if (!m.bump.empty()) {
+                TextureFile heights = data;
+                heights.channels = 1;
+                surface.bump = load_texture<T>(m.bump, heights);
+                surface.bump_scale = T(m.bump_multiplier * options.bump_scale);
+                if (!m.norm.empty()) model.notes.push_back("material '" + m.name + "': both a normal map and a bump map: the normal map is used");
+            }
             model.opaque.items.emplace_back(std::move(mesh), std::move(surface));
         } catch (const std::invalid_argument& e) {
             file.fail("material '" + m.name + "' (line " + std::to_string(m.line) + " of its library): " + e.what());
