@@ -5288,7 +5288,6 @@ static_assert(Shape<Quadric<double>>);
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <type_traits>
 
 namespace prism {
 
