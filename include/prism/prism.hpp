@@ -61,6 +61,7 @@
 #include <prism/material/dispersive.hpp>
 #include <prism/material/emissive.hpp>
 #include <prism/material/image_texture.hpp>
+#include <prism/material/mix.hpp>
 #include <prism/material/normal_map.hpp>
 #include <prism/material/phong.hpp>
 #include <prism/material/rough_conductor.hpp>

@@ -81,12 +81,7 @@ template <Material M>
 [[nodiscard]] constexpr DiffuseResponse<typename M::scalar_type> diffuse_response(const M& material,
                                                                                  const Crossing<typename M::scalar_type>& at) noexcept
 {
-    if constexpr (requires { material.diffuse(texture_point(at)); })
-        return material.diffuse(texture_point(at));
-    else if constexpr (requires { material.diffuse(at.point, at.uv); })
-        return material.diffuse(at.point, at.uv);
-    else
-        return material.diffuse(at.point);
+    return diffuse_response(material, texture_point(at));
 }
 
 /// The cosine weighting light from the unit direction wi at `hit` for a diffuse lobe:

@@ -65,6 +65,21 @@ concept DiffuseLobe = requires(const M& material, const Vec3<typename M::scalar_
     { material.diffuse(at) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
 };
 
+/// The diffuse response of a material's Lambertian lobe where a texture is read, whichever
+/// form its diffuse() takes.
+template <class M>
+    requires DiffuseLobe<M>
+[[nodiscard]] constexpr DiffuseResponse<typename M::scalar_type> diffuse_response(const M& material,
+                                                                                 const TexturePoint<typename M::scalar_type>& at) noexcept
+{
+    if constexpr (requires { material.diffuse(at); })
+        return material.diffuse(at);
+    else if constexpr (requires { material.diffuse(at.point, at.uv); })
+        return material.diffuse(at.point, at.uv);
+    else
+        return material.diffuse(at.point);
+}
+
 /// What a delta interaction sees at a surface point: the incident cosine, the refracted
 /// one and eta = n_t / n_i (where light refracts), the side (`entering`: arriving from
 /// outside) and the point. Materials whose response varies over the surface (a film of
