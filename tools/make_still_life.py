@@ -6,34 +6,21 @@
 #   a painted ball (map_Kd and a tangent-space normal map of dimples, glossy Ks),
 #   and a glass cube (d 0.1, Ni 1.5).
 #   tools/make_still_life.py [OUT_DIR]
-# Only the Python standard library: PNGs written with zlib.
+# Only the Python standard library: PNGs written with zlib (tools/png_writer.py).
 import math
 import os
-import struct
 import sys
-import zlib
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import png_writer  # noqa: E402
 
 out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "assets", "still_life")
 os.makedirs(out, exist_ok=True)
 
 
 def png(name, width, height, channels, pixel):
-    """Writes an 8-bit PNG whose pixel (x, y) from the top left is pixel(x, y): a tuple of channels in [0, 1]."""
-    rows = bytearray()
-    for y in range(height):
-        rows.append(0)
-        for x in range(width):
-            for c in pixel(x, y)[:channels]:
-                rows.append(max(0, min(255, round(255 * c))))
-    colour = {1: 0, 3: 2}[channels]
-
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
-
-    data = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, colour, 0, 0, 0))
-    data += chunk(b"IDAT", zlib.compress(bytes(rows), 9)) + chunk(b"IEND", b"")
-    with open(os.path.join(out, name), "wb") as f:
-        f.write(data)
+    """Writes out/name (tools/png_writer.py)."""
+    png_writer.png(os.path.join(out, name), width, height, channels, pixel)
 
 
 def hash01(i, j, k=0):

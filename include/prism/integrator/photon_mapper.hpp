@@ -418,7 +418,8 @@ private:
 
     /// Final gathering over m x cells_n stratified cells (gather_hemisphere). Each ray
     /// walks on through mirrors and glass as a photon would (random_walk: Russian
-    /// roulette by reflectance, Fresnel's choice at glass) to the first diffuse surface
+    /// roulette by reflectance, Fresnel's choice at glass, a draw from frosted glass's
+    /// lobe) to the first diffuse surface
     /// (and on through the delta lobes of a surface that also has one),
     /// where L = albedo / pi * E_global (the global map's precomputed irradiance, which
     /// holds every photon there): paths D S+ D carry colour bleeding seen in a mirror or
@@ -431,6 +432,7 @@ private:
         return gather_hemisphere<Gradients, T>(n, m, cells_n, rng, [&](const Vec3<T>& direction) {
             std::pair<Rgb<T>, T> found{Rgb<T>(T(0)), infinity<T>};
             const auto at_diffuse = [&]<class M>(const M& material, const WalkVertex<T>& at) {
+                if constexpr (has_glossy<M> && transmits<M>) return Lobes::all; // frosted glass: through it by its lobe
                 found.first += global_radiance(material, at);
                 found.second = std::min(found.second, at.travelled);
                 // The diffuse lobe's light is counted; a delta lobe beside it (a coat) still
@@ -477,6 +479,7 @@ private:
     {
         Rgb<T> sum{T(0)};
         const auto at_vertex = [&]<class M>(const M& material, const WalkVertex<T>& at) {
+            if constexpr (has_glossy<M> && transmits<M>) return Lobes::all; // frosted glass: through it by its lobe
             sum += global_radiance(material, at);
             return reflects<M> || transmits<M> ? Lobes::delta : Lobes::none;
         };

@@ -5,10 +5,11 @@
 // Global map: each light emits everywhere it shines (Light::emit_photon with no target:
 // a point light over its whole sphere, a parallel light through a disk facing it that
 // covers every bounded object), and photons are stored at every diffuse hit (flagged
-// direct on the first, caustic when only specular bounces came before). Caustic map:
+// direct on the first, caustic when only specular bounces came before, or bounces through
+// frosted glass, which holds no photons itself). Caustic map:
 // each light aims at the bounding sphere of every specular object (POV-Ray's `target`;
 // bounding_sphere(shape)), and photons are stored only at the first diffuse hit after
-// one or more specular bounces (L S+ D). Every bounce is scatter_photon's (Russian
+// one or more specular bounces or bounces through frosted glass (L {S | frosted}+ D). Every bounce is scatter_photon's (Russian
 // roulette per channel, material/scattering.hpp), and light travelling inside an object
 // is attenuated by its medium. Shadow photons mark where the straight continuation of a
 // direct photon's path meets further diffuse surfaces (Jensen and Christensen 1995,
@@ -200,14 +201,18 @@ private:
     {
         emit(emitters, total_power, count, i, caustic_pass, [&]<class M>(const M&, const WalkVertex<T>& at, const Rgb<T>& power) {
             const Crossing<T>& c = at.crossing();
+            // Frosted glass holds no photons (no estimate reads them there: a camera or
+            // gather ray goes through it by its lobe), and light through it on to a surface
+            // is a caustic, as through clear glass.
+            if constexpr (has_glossy<M> && transmits<M>) return caustic_pass && !at.caustic_path() ? Lobes::none : Lobes::all;
             if (caustic_pass) {
-                if (!at.direct && at.specular_only()) out.push_back(photon(c, power, at.direction, Photon::caustic));
+                if (!at.direct && at.caustic_path()) out.push_back(photon(c, power, at.direction, Photon::caustic));
                 // What a diffuse lobe sends on is the global map's; a delta lobe (a coat
                 // over the diffuse one) may still send a caustic on.
-                return (reflects<M> || transmits<M>) && at.specular_only() ? Lobes::delta : Lobes::none;
+                return (reflects<M> || transmits<M>) && at.caustic_path() ? Lobes::delta : Lobes::none;
             }
             std::uint8_t flags = at.direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
-            if (!at.direct && at.specular_only()) flags |= Photon::caustic;
+            if (!at.direct && at.caustic_path()) flags |= Photon::caustic;
             out.push_back(photon(c, power, at.direction, flags));
             if (at.direct && config_.shadow_photons) store_shadow_photons(c, at.direction, out);
             return Lobes::all;

@@ -46,11 +46,15 @@ struct WalkVertex {
     bool last;                ///< the walk ends after this surface (its depth limit): nothing it scatters is followed
     Pcg32& rng;               ///< the walk's stream, for a caller that draws at the vertex (a thin lens's point)
     T outside_index;          ///< the index of refraction on a transmissive material's outer side (1 for others; glossy_eta)
+    int surface_bounces;      ///< the non-delta scatterings other than through frosted glass (a glossy interface)
 
     /// Where the walk met the surface, with its normal and side.
     [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
     /// Whether every scattering so far was specular.
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
+    /// Whether every scattering so far was specular or through frosted glass: the path
+    /// of a caustic, L {S | frosted}+ (the photon maps' classification).
+    [[nodiscard]] bool caustic_path() const noexcept { return surface_bounces == 0; }
 };
 
 /// A walk leaving the scene: the segment it left along, and what it carries.
@@ -99,7 +103,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
 {
     using T = typename SceneT::scalar_type;
     bool direct = true, first_specular = false;
-    int diffuse_bounces = 0;
+    int diffuse_bounces = 0, surface_bounces = 0;
     T travelled = T(0);
     T wavelength = T(0); // white until a dispersive interface splits it
     MediumStack media;   // the transmissive objects the path is inside of
@@ -124,7 +128,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             attenuate_segment(scene, media, material, c, segment, power);
             const bool last = bounce == max_bounces;
             if constexpr (emits<M>)
-                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, T(1)});
+                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, T(1), surface_bounces});
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
                 return Next::absorbed; // a lamp that only emits
             } else {
@@ -148,7 +152,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             // (A glossy lobe that is a mirror has no vertex of its own.)
             if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
                 const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
-                                                                      last_point, last_pdf, last, rng, outside_index});
+                                                                      last_point, last_pdf, last, rng, outside_index, surface_bounces});
                 if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
                 else lobes = go_on;
                 if (lobes == Lobes::none) return Next::absorbed;
@@ -170,6 +174,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             if constexpr (has_glossy<M>) last_pdf = next->pdf;
             else last_pdf = next->diffuse ? std::max(dot(next->direction, c.facing_shading()), T(0)) / pi<T> : T(0);
             if (next->diffuse) ++diffuse_bounces;
+            if (next->diffuse && !(has_glossy<M> && transmits<M>)) ++surface_bounces;
             if (direct) first_specular = !next->diffuse;
             if constexpr (transmits<M>) {
                 if (dot(next->direction, n) < T(0)) media = face.beyond; // refracted
