@@ -420,6 +420,30 @@ def methods_vs_time_chart(rows):
     save(fig, "methods_vs_time.png")
 
 
+def surfaces_vs_time_chart(rows):
+    """Issue 35's surfaces scene (bench/surfaces_vs_time.py): error against the path
+    tracer's reference vs time, over the whole picture and over the frosted ball's caustic;
+    linear radiance above, the display range below; a curve per method, Cycles dashed."""
+    regions = [("all", "rough gold, frosted glass, textured and normal-mapped\nvarnished tiles, thin lens (Cycles renders it too)"),
+               ("caustic", "the frosted ball's caustic on the tiles")]
+    metrics = [("rmse", "RMSE, linear radiance"), ("rmse_display", "RMSE, display range (radiance clamped to 1)")]
+    fig, axes = plt.subplots(2, 2, figsize=(12, 9), squeeze=False)
+    for column, (region, title) in enumerate(regions):
+        methods = list(dict.fromkeys(r["method"] for r in rows if r["region"] == region))
+        for row, (key, ylabel) in enumerate(metrics):
+            ax = axes[row][column]
+            for method in methods:
+                points = sorted((float(r["seconds"]), float(r[key])) for r in rows if r["region"] == region and r["method"] == method)
+                points = [p for p in points if p[1] > 0]
+                ax.loglog([p[0] for p in points], [p[1] for p in points], "k--" if method == "Cycles" else "-", marker="o", label=method)
+            ax.set_xlabel("render time (s, 2 threads)")
+            ax.set_ylabel(ylabel + "\nagainst prism's path-traced reference, its noise removed")
+            ax.set_title(title)
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize=8)
+    save(fig, "surfaces_vs_time.png")
+
+
 def whitted_glossy_chart(rows):
     """Whitted's error on a rough metal ball against the roughness (bench/whitted_glossy.cpp)."""
     r = [float(x["roughness"]) for x in rows]
@@ -437,6 +461,8 @@ def whitted_glossy_chart(rows):
 def main():
     if (rows := read("methods_vs_time.csv")):
         methods_vs_time_chart(rows)
+    if (rows := read("surfaces_vs_time.csv")):
+        surfaces_vs_time_chart(rows)
     if (rows := read("accuracy.csv")):
         accuracy_charts(rows)
     if (rows := read("acne.csv")):

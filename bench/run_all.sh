@@ -35,6 +35,7 @@ fi
 "$root/build/release/bench/bench_whitted_glossy" "$results" | tee "$results/whitted_glossy.txt"
 "$python" "$root/bench/methods_vs_time.py" "$root/build/release" | tee "$results/methods_vs_time.txt"
 "$python" "$root/bench/cycles_agreement.py" "$root/build/release" | tee "$results/cycles_agreement.txt"
+"$python" "$root/bench/surfaces_vs_time.py" "$root/build/release" | tee "$results/surfaces_vs_time.txt"
 "$python" "$root/bench/photon_accuracy.py" --build "$root/build/release" --out "$results" | tee "$results/photon_accuracy.txt"
 "$python" "$root/bench/mpi_scaling.py" --build "$root/build/release" --out "$results" | tee "$results/mpi_scaling.txt"
 "$python" "$root/bench/plot.py" "$results"

@@ -55,6 +55,16 @@ TEST_CASE("bilinear lookups: a texel at its centre, the mean between four, v up 
     CHECK(std::isfinite(grey(t, -prism::infinity<double>, 1e-300)));
 }
 
+TEST_CASE("regression: a double texture finds its texel in double: uv a hair short of a texel's edge stays in that texel")
+{
+    // uv was wrapped in float: 0.5 - 1e-10 rounded to 0.5, the next texel (and 1 - 1e-10 to 1, wrapping to 0).
+    const auto n = two_by_two({Wrap::repeat, TextureFilter::nearest});
+    CHECK(grey(n, 0.5 - 1e-10, 0.75) == 1);
+    CHECK(grey(n, 0.5 + 1e-10, 0.75) == 2);
+    CHECK(grey(n, 0.25, 0.5 + 1e-10) == 1);
+    CHECK(grey(n, 0.25, 0.5 - 1e-10) == 3);
+}
+
 TEST_CASE("the pyramid: every level the area average of the picture, for odd sizes too (against brute-force supersampling)")
 {
     prism::Pcg32 rng(4, 2);

@@ -180,10 +180,10 @@ private:
         return out;
     }
 
-    [[nodiscard]] static float wrapped(float x, Wrap wrap) noexcept
+    [[nodiscard]] static T wrapped(T x, Wrap wrap) noexcept
     {
-        if (!std::isfinite(x)) return 0.0f;
-        return wrap == Wrap::repeat ? x - std::floor(x) : std::clamp(x, 0.0f, 1.0f);
+        if (!std::isfinite(x)) return T(0);
+        return wrap == Wrap::repeat ? x - std::floor(x) : std::clamp(x, T(0), T(1));
     }
 
     /// Texel (i, j) of level k as RGB, with i and j brought inside by the wrap mode.
@@ -204,8 +204,8 @@ private:
     [[nodiscard]] Rgb<T> nearest(std::size_t k, const Vec2<T>& uv) const noexcept
     {
         const Level& l = data_->levels[k];
-        const float u = wrapped(float(uv.x), sampling_.wrap), v = wrapped(float(uv.y), sampling_.wrap);
-        const int i = std::min(int(u * float(l.width)), l.width - 1), j = std::min(int((1.0f - v) * float(l.height)), l.height - 1);
+        const T u = wrapped(uv.x, sampling_.wrap), v = wrapped(uv.y, sampling_.wrap);
+        const int i = std::min(int(u * T(l.width)), l.width - 1), j = std::min(int((T(1) - v) * T(l.height)), l.height - 1);
         return texel(l, i, j);
     }
 
@@ -213,8 +213,8 @@ private:
     {
         const Level& l = data_->levels[k];
         // Texel centres sit at (i + 1/2) / width; row 0 at the top (v = 1).
-        const T x = T(wrapped(float(uv.x), sampling_.wrap)) * T(l.width) - T(0.5);
-        const T y = (T(1) - T(wrapped(float(uv.y), sampling_.wrap))) * T(l.height) - T(0.5);
+        const T x = wrapped(uv.x, sampling_.wrap) * T(l.width) - T(0.5);
+        const T y = (T(1) - wrapped(uv.y, sampling_.wrap)) * T(l.height) - T(0.5);
         const T fx = std::floor(x), fy = std::floor(y);
         const int i = int(fx), j = int(fy);
         const T ax = x - fx, ay = y - fy;
