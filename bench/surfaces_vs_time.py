@@ -19,6 +19,7 @@
 # draws surfaces_vs_time.png.
 #
 # usage: bench/surfaces_vs_time.py BUILD_DIR [--size 256] [--reference-spp 4096] [--cycles-spp 1024] [--repeats 2] [--quick]
+#                                  [--agreement-only]
 import argparse
 import csv
 import functools
@@ -61,9 +62,13 @@ def cycles_render(spp, out, size, seed=1):
         return float(f.read().splitlines()[1].split(",")[1])
 
 
-def agreement(prism_halves, cycles_pair, mask=None):
+def agreement(prism_halves, cycles_pair, mask=None, display=False):
     """(noise of prism's mean, noise of Cycles' mean, RMSE between the means, what the noise
-    explains, ratio of the mean radiances), over the values where mask is True (all: None)."""
+    explains, ratio of the mean radiances), over the values where mask is True (all: None);
+    with `display`, of the radiances clamped to 1 (the display range)."""
+    if display:
+        clamp = lambda img: (img[0], img[1], [min(v, 1.0) for v in img[2]])
+        prism_halves, cycles_pair = [clamp(x) for x in prism_halves], [clamp(x) for x in cycles_pair]
     mean = lambda a, b: [(x + y) / 2 for x, y in zip(a[2], b[2])]
     w, h = prism_halves[0][0], prism_halves[0][1]
     p, c = (w, h, mean(*prism_halves)), (w, h, mean(*cycles_pair))
@@ -80,6 +85,8 @@ def main():
     ap.add_argument("--cycles-spp", type=int, default=1024, help="of each of Cycles' two renders for the agreement")
     ap.add_argument("--repeats", type=int, default=2)
     ap.add_argument("--quick", action="store_true", help="small efforts (a smoke test of this script)")
+    ap.add_argument("--agreement-only", action="store_true",
+                    help="only score the reference and Cycles' pair already rendered in BUILD_DIR/surfaces_vs_time against each other")
     args = ap.parse_args()
     work = os.path.join(args.build, "surfaces_vs_time")
     os.makedirs(work, exist_ok=True)
@@ -90,9 +97,14 @@ def main():
         cycles_spp = cycles_spp[:2]
     # The reference: the path tracer in two halves; their difference measures its noise.
     halves, reference_seconds = [], 0.0
+    if args.agreement_only:  # the times of the run that rendered them
+        with open(os.path.join(here, "results", "surfaces_agreement.csv")) as f:
+            first = next(csv.DictReader(f))
+        reference_seconds, cycles_seconds = float(first["prism_seconds"]), float(first["cycles_seconds"]) / 2
     for seed in (101, 102):
         out = os.path.join(work, "reference_%d.pfm" % seed)
-        reference_seconds += prism_render(args.build, "path", args.reference_spp, out, args.size, seed)
+        if not args.agreement_only:
+            reference_seconds += prism_render(args.build, "path", args.reference_spp, out, args.size, seed)
         halves.append(read_pfm(out))
     w, h = halves[0][0], halves[0][1]
     write_pfm(os.path.join(work, "reference.pfm"), (w, h, [(a + b) / 2 for a, b in zip(halves[0][2], halves[1][2])]))
@@ -103,21 +115,26 @@ def main():
     pair = []
     for seed in (1, 2):
         out = os.path.join(work, "cycles_agreement_%d.pfm" % seed)
-        cycles_seconds = cycles_render(args.cycles_spp, out, args.size, seed)
+        if not args.agreement_only:
+            cycles_seconds = cycles_render(args.cycles_spp, out, args.size, seed)
         pair.append(read_pfm(out))
-    stats = agreement(halves, pair)
-    print("agreement: noise of the means prism %.5f, Cycles %.5f; RMSE between %.5f, noise explains %.5f (ratio %.3f); mean prism / Cycles %.5f" %
-          (stats[0], stats[1], stats[2], stats[3], stats[2] / stats[3], stats[4]), flush=True)
-    caustic_stats = agreement(halves, pair, caustic_mask(w, h))
-    print("agreement in the caustic: RMSE between %.5f, noise explains %.5f (ratio %.3f); mean prism / Cycles %.5f" %
-          (caustic_stats[2], caustic_stats[3], caustic_stats[2] / caustic_stats[3], caustic_stats[4]), flush=True)
+    found = {}
+    for region, mask in (("all", None), ("caustic", caustic_mask(w, h))):
+        for display in (False, True):
+            stats = agreement(halves, pair, mask, display)
+            found[(region, display)] = stats
+            print("agreement, %s, %s: noise of the means prism %.5f, Cycles %.5f; RMSE between %.5f, noise explains %.5f (ratio %.3f); "
+                  "mean prism / Cycles %.5f" % (region, "display range" if display else "linear", stats[0], stats[1], stats[2], stats[3], stats[2] / stats[3],
+                                                stats[4]), flush=True)
     with open(os.path.join(here, "results", "surfaces_agreement.csv"), "w", newline="") as f:
         out = csv.writer(f)
-        out.writerow(["region", "prism_spp", "cycles_spp", "prism_seconds", "cycles_seconds", "noise_prism", "noise_cycles", "rmse_between", "rmse_from_noise",
-                      "mean_ratio"])
-        for name, s in (("all", stats), ("caustic", caustic_stats)):
-            out.writerow([name, 2 * args.reference_spp, 2 * args.cycles_spp, "%.2f" % reference_seconds, "%.2f" % (2 * cycles_seconds)] +
-                         ["%.6f" % v for v in s])
+        out.writerow(["region", "range", "prism_spp", "cycles_spp", "prism_seconds", "cycles_seconds", "noise_prism", "noise_cycles", "rmse_between",
+                      "rmse_from_noise", "mean_ratio"])
+        for (region, display), s in found.items():
+            out.writerow([region, "display" if display else "linear", 2 * args.reference_spp, 2 * args.cycles_spp, "%.2f" % reference_seconds,
+                          "%.2f" % (2 * cycles_seconds)] + ["%.6f" % v for v in s])
+    if args.agreement_only:
+        return 0
     # Every method's renders, timed in interleaved rounds.
     jobs = []
     for method, levels in efforts.items():

@@ -288,3 +288,30 @@ TEST_CASE("Whitted renders frosted glass at roughness 0 as the clean glass it is
     for (int y = 0; y < 24; ++y)
         for (int x = 0; x < 24; ++x) REQUIRE(a.at(x, y) == b.at(x, y));
 }
+
+TEST_CASE("regression: a texture seen in a mirror is filtered over the camera's cone carried through the mirror")
+{
+    // A wall 60 m away holds a checker of single texels (0 and 1), seen in a mirror floor:
+    // a pixel covers about 3 texels there, where the pyramid's levels above the first are all
+    // 0.5. The mirror's ray used to start as a point sample and read the picture's texels
+    // one by one: 0 or 1 (or between) from pixel to pixel.
+    std::vector<float> texels(256 * 256);
+    for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = float((i % 256 + i / 256) % 2);
+    const ImageTexture<float> checker(256, 256, 1, texels, {.wrap = Wrap::repeat, .filter = TextureFilter::trilinear});
+    // A light along -z lights the wall face-on with irradiance pi: its radiance is its albedo.
+    const Scene scene{Lights{DirectionalLight<float>{.direction = {0, 0, -1}, .irradiance = Rgb<float>(pi<float>)}},
+                      Object{Plane<float>({0, 1, 0}, 0), Mirror<float>{{.kr = Rgb<float>(1)}}},
+                      Object{Quad<float>({-30, 0, -60}, {60, 0, 0}, {0, 60, 0}), Diffuse<float, ImageTexture<float>>{.albedo = checker, .kd = 1, .ka = 0}}};
+    const Camera<float> camera{.position = {0, 1, 0}, .look_at = {0, 0, -5}, .fov = 10};
+    const Film film = render(camera, Whitted(scene), {.width = 16, .height = 16, .spp = 1, .threads = 1, .progress = false});
+    int seen = 0;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            CAPTURE(x);
+            CAPTURE(y);
+            if (film.at(x, y).x == 0) continue; // above the wall
+            ++seen;
+            CHECK(film.at(x, y).x == Approx(0.5).epsilon(1e-3));
+        }
+    CHECK(seen > 128);
+}

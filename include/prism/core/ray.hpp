@@ -24,4 +24,17 @@ struct Ray {
     [[nodiscard]] constexpr Vec3<T> at(T t) const noexcept { return origin + t * direction; }
 };
 
+/// `next`, the ray a mirror or an interface sends on where `ray` met it at t, carrying on
+/// `ray`'s cone: its width there, widening at the same angle (a flat surface keeps it; the
+/// change a curved mirror or a refraction makes to the angle is left out). A ray that
+/// samples a point stays one.
+template <Scalar T>
+[[nodiscard]] inline Ray<T> carrying_cone(Ray<T> next, const Ray<T>& ray, T t) noexcept
+{
+    if (!(ray.width > T(0) || ray.spread > T(0))) return next;
+    next.width = ray.footprint_at(t);
+    next.spread = ray.spread * length(next.direction) / length(ray.direction); // per unit of t along next
+    return next;
+}
+
 } // namespace prism

@@ -150,8 +150,8 @@ private:
             const std::optional<LobeSample<T>> delta = lobe.delta_part();
             const Rgb<T> k = delta ? delta->weight : lobe.mirror_albedo();
             if (depth < config_.max_depth && max_component(weight * k) > config_.min_weight)
-                radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, delta ? delta->wi : lobe.mirror()), depth + 1, weight * k, wavelength, media,
-                                      jitter...);
+                radiance += k * trace(carrying_cone(spawn_ray(hit.point, hit.error, hit.normal, delta ? delta->wi : lobe.mirror()), ray, hit.t), depth + 1,
+                                      weight * k, wavelength, media, jitter...);
             }
         }
 
@@ -168,8 +168,8 @@ private:
                                        [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
                                            const Rgb<T> next_weight = weight * k;
                                            if (max_component(next_weight) > config_.min_weight)
-                                               radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1,
-                                                                     next_weight, lambda, transmitted ? beyond : media, jitter...);
+                                               radiance += k * trace(carrying_cone(spawn_ray(hit.point, hit.error, hit.normal, direction), ray, hit.t),
+                                                                     depth + 1, next_weight, lambda, transmitted ? beyond : media, jitter...);
                                        });
                 };
                 if constexpr (transmits<M>) {
@@ -177,7 +177,8 @@ private:
                     if (face.real)
                         follow(face.beyond, outside_of(media, face, hit.entering));
                     else // a surface inside a medium of higher priority: the ray passes on
-                        radiance = trace(spawn_ray(hit.point, hit.error, hit.normal, d), depth + 1, weight, wavelength, face.beyond, jitter...);
+                        radiance = trace(carrying_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, weight, wavelength,
+                                         face.beyond, jitter...);
                 } else {
                     follow(media, nullptr);
                 }
