@@ -283,7 +283,7 @@ private:
             // there), and the delta lights, which no draw finds, by shadow rays from both sides.
             const Interface face = nested_interface(media, {h.slot, h.index, nesting_priority(material)}, hit.entering);
             if (!face.real) {
-                radiance = trace(carrying_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, weight, rng, wavelength, face.beyond);
+                radiance = trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, weight, rng, wavelength, face.beyond);
             } else {
                 const auto lobe = glossy_at(material, hit, normalize(d), glossy_eta(material, hit, index_of(*scene_, outside_of(media, face, hit.entering), wavelength)));
                 scene_->for_each_light([&]<class L>(const L& light) {
@@ -316,7 +316,7 @@ private:
             if (depth < config_.max_depth) {
                 const std::optional<LobeSample<T>> s = lobe.delta_part();
                 if (s && max_component(weight * s->weight) > config_.min_weight)
-                    radiance += s->weight * trace(carrying_cone(spawn_ray(hit.point, hit.error, hit.normal, s->wi), ray, hit.t), depth + 1, weight * s->weight, rng,
+                    radiance += s->weight * trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, s->wi), ray, hit.t), depth + 1, weight * s->weight, rng,
                                                   wavelength, media);
             }
         }
@@ -327,7 +327,7 @@ private:
                     for_each_delta_ray(material, d, hit, wavelength, bands_, outside_index,
                                        [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
                                            if (max_component(weight * k) > config_.min_weight)
-                                               radiance += k * trace(carrying_cone(spawn_ray(hit.point, hit.error, hit.normal, direction), ray, hit.t), depth + 1, weight * k,
+                                               radiance += k * trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, direction), ray, hit.t), depth + 1, weight * k,
                                                                      rng, lambda, transmitted ? beyond : media);
                                        });
                 };
@@ -336,7 +336,7 @@ private:
                     if (face.real)
                         follow(face.beyond, outside_of(media, face, hit.entering));
                     else
-                        radiance = trace(carrying_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, weight, rng, wavelength, face.beyond);
+                        radiance = trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, weight, rng, wavelength, face.beyond);
                 } else {
                     follow(media, nullptr);
                 }

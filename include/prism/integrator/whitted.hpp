@@ -150,7 +150,7 @@ private:
             const std::optional<LobeSample<T>> delta = lobe.delta_part();
             const Rgb<T> k = delta ? delta->weight : lobe.mirror_albedo();
             if (depth < config_.max_depth && max_component(weight * k) > config_.min_weight)
-                radiance += k * trace(carrying_cone(spawn_ray(hit.point, hit.error, hit.normal, delta ? delta->wi : lobe.mirror()), ray, hit.t), depth + 1,
+                radiance += k * trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, delta ? delta->wi : lobe.mirror()), ray, hit.t), depth + 1,
                                       weight * k, wavelength, media, jitter...);
             }
         }
@@ -168,7 +168,7 @@ private:
                                        [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
                                            const Rgb<T> next_weight = weight * k;
                                            if (max_component(next_weight) > config_.min_weight)
-                                               radiance += k * trace(carrying_cone(spawn_ray(hit.point, hit.error, hit.normal, direction), ray, hit.t),
+                                               radiance += k * trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, direction), ray, hit.t),
                                                                      depth + 1, next_weight, lambda, transmitted ? beyond : media, jitter...);
                                        });
                 };
@@ -177,7 +177,7 @@ private:
                     if (face.real)
                         follow(face.beyond, outside_of(media, face, hit.entering));
                     else // a surface inside a medium of higher priority: the ray passes on
-                        radiance = trace(carrying_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, weight, wavelength,
+                        radiance = trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, weight, wavelength,
                                          face.beyond, jitter...);
                 } else {
                     follow(media, nullptr);

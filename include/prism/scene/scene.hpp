@@ -90,6 +90,9 @@ public:
 
     /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
     static constexpr bool has_transmissive = detail::any_of({transmits<typename Slots::material_type>...});
+    /// Some material reads surface coordinates (a texture, a normal map): its crossings take
+    /// them, and rays carry their cones on through mirrors and glass (carry_cone).
+    static constexpr bool reads_surface_coordinates = detail::any_of({reads_coordinates<typename Slots::material_type>()...});
     /// Some material has a mirror lobe.
     static constexpr bool has_specular = detail::any_of({reflects<typename Slots::material_type>...}) || has_transmissive;
     /// The number of slots (Object or ObjectArray).
@@ -150,6 +153,15 @@ public:
     [[nodiscard]] constexpr bool has_tree() const noexcept { return has_tree_; }
 
     // Scene Queries
+
+    /// `next`, the ray a mirror or an interface sends on where `ray` met it at t, carrying
+    /// `ray`'s cone on (carrying_cone) where some material reads surface coordinates; as it
+    /// is in a scene without textures, which pays nothing for them.
+    [[nodiscard]] static Ray<T> carry_cone(const Ray<T>& next, const Ray<T>& ray, T t) noexcept
+    {
+        if constexpr (reads_surface_coordinates) return carrying_cone(next, ray, t);
+        else return next;
+    }
 
     /// The closest crossing with t inside `range`. Every object is asked for its
     /// crossings without their surfaces; only the nearest one is then asked again, over
