@@ -326,6 +326,19 @@ struct Ray {
     [[nodiscard]] constexpr Vec3<T> at(T t) const noexcept { return origin + t * direction; }
 };
 
+/// `next`, the ray a mirror or an interface sends on where `ray` met it at t, carrying on
+/// `ray`'s cone: its width there, widening at the same angle (a flat surface keeps it; the
+/// change a curved mirror or a refraction makes to the angle is left out). A ray that
+/// samples a point stays one.
+template <Scalar T>
+[[nodiscard]] inline Ray<T> carrying_cone(Ray<T> next, const Ray<T>& ray, T t) noexcept
+{
+    if (!(ray.width > T(0) || ray.spread > T(0))) return next;
+    next.width = ray.footprint_at(t);
+    next.spread = ray.spread * length(next.direction) / length(ray.direction); // per unit of t along next
+    return next;
+}
+
 } // namespace prism
 
 // ---- prism/core/offset.hpp ----
@@ -6608,6 +6621,21 @@ concept DiffuseLobe = requires(const M& material, const Vec3<typename M::scalar_
     { material.diffuse(at) } -> std::same_as<DiffuseResponse<typename M::scalar_type>>;
 };
 
+/// The diffuse response of a material's Lambertian lobe where a texture is read, whichever
+/// form its diffuse() takes.
+template <class M>
+    requires DiffuseLobe<M>
+[[nodiscard]] constexpr DiffuseResponse<typename M::scalar_type> diffuse_response(const M& material,
+                                                                                 const TexturePoint<typename M::scalar_type>& at) noexcept
+{
+    if constexpr (requires { material.diffuse(at); })
+        return material.diffuse(at);
+    else if constexpr (requires { material.diffuse(at.point, at.uv); })
+        return material.diffuse(at.point, at.uv);
+    else
+        return material.diffuse(at.point);
+}
+
 /// What a delta interaction sees at a surface point: the incident cosine, the refracted
 /// one and eta = n_t / n_i (where light refracts), the side (`entering`: arriving from
 /// outside) and the point. Materials whose response varies over the surface (a film of
@@ -7209,12 +7237,7 @@ template <Material M>
 [[nodiscard]] constexpr DiffuseResponse<typename M::scalar_type> diffuse_response(const M& material,
                                                                                  const Crossing<typename M::scalar_type>& at) noexcept
 {
-    if constexpr (requires { material.diffuse(texture_point(at)); })
-        return material.diffuse(texture_point(at));
-    else if constexpr (requires { material.diffuse(at.point, at.uv); })
-        return material.diffuse(at.point, at.uv);
-    else
-        return material.diffuse(at.point);
+    return diffuse_response(material, texture_point(at));
 }
 
 /// The cosine weighting light from the unit direction wi at `hit` for a diffuse lobe:
@@ -9018,11 +9041,15 @@ struct WalkVertex {
     bool last;                ///< the walk ends after this surface (its depth limit): nothing it scatters is followed
     Pcg32& rng;               ///< the walk's stream, for a caller that draws at the vertex (a thin lens's point)
     T outside_index;          ///< the index of refraction on a transmissive material's outer side (1 for others; glossy_eta)
+    int surface_bounces;      ///< the non-delta scatterings other than through frosted glass (a glossy interface)
 
     /// Where the walk met the surface, with its normal and side.
     [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
     /// Whether every scattering so far was specular.
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
+    /// Whether every scattering so far was specular or through frosted glass: the path
+    /// of a caustic, L {S | frosted}+ (the photon maps' classification).
+    [[nodiscard]] bool caustic_path() const noexcept { return surface_bounces == 0; }
 };
 
 /// A walk leaving the scene: the segment it left along, and what it carries.
@@ -9071,7 +9098,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
 {
     using T = typename SceneT::scalar_type;
     bool direct = true, first_specular = false;
-    int diffuse_bounces = 0;
+    int diffuse_bounces = 0, surface_bounces = 0;
     T travelled = T(0);
     T wavelength = T(0); // white until a dispersive interface splits it
     MediumStack media;   // the transmissive objects the path is inside of
@@ -9096,7 +9123,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             attenuate_segment(scene, media, material, c, segment, power);
             const bool last = bounce == max_bounces;
             if constexpr (emits<M>)
-                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, T(1)});
+                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, T(1), surface_bounces});
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
                 return Next::absorbed; // a lamp that only emits
             } else {
@@ -9120,7 +9147,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             // (A glossy lobe that is a mirror has no vertex of its own.)
             if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
                 const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
-                                                                      last_point, last_pdf, last, rng, outside_index});
+                                                                      last_point, last_pdf, last, rng, outside_index, surface_bounces});
                 if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
                 else lobes = go_on;
                 if (lobes == Lobes::none) return Next::absorbed;
@@ -9142,6 +9169,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             if constexpr (has_glossy<M>) last_pdf = next->pdf;
             else last_pdf = next->diffuse ? std::max(dot(next->direction, c.facing_shading()), T(0)) / pi<T> : T(0);
             if (next->diffuse) ++diffuse_bounces;
+            if (next->diffuse && !(has_glossy<M> && transmits<M>)) ++surface_bounces;
             if (direct) first_specular = !next->diffuse;
             if constexpr (transmits<M>) {
                 if (dot(next->direction, n) < T(0)) media = face.beyond; // refracted
@@ -9163,10 +9191,11 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
 // Global map: each light emits everywhere it shines (Light::emit_photon with no target:
 // a point light over its whole sphere, a parallel light through a disk facing it that
 // covers every bounded object), and photons are stored at every diffuse hit (flagged
-// direct on the first, caustic when only specular bounces came before). Caustic map:
+// direct on the first, caustic when only specular bounces came before, or bounces through
+// frosted glass, which holds no photons itself). Caustic map:
 // each light aims at the bounding sphere of every specular object (POV-Ray's `target`;
 // bounding_sphere(shape)), and photons are stored only at the first diffuse hit after
-// one or more specular bounces (L S+ D). Every bounce is scatter_photon's (Russian
+// one or more specular bounces or bounces through frosted glass (L {S | frosted}+ D). Every bounce is scatter_photon's (Russian
 // roulette per channel, material/scattering.hpp), and light travelling inside an object
 // is attenuated by its medium. Shadow photons mark where the straight continuation of a
 // direct photon's path meets further diffuse surfaces (Jensen and Christensen 1995,
@@ -9342,14 +9371,18 @@ private:
     {
         emit(emitters, total_power, count, i, caustic_pass, [&]<class M>(const M&, const WalkVertex<T>& at, const Rgb<T>& power) {
             const Crossing<T>& c = at.crossing();
+            // Frosted glass holds no photons (no estimate reads them there: a camera or
+            // gather ray goes through it by its lobe), and light through it on to a surface
+            // is a caustic, as through clear glass.
+            if constexpr (has_glossy<M> && transmits<M>) return caustic_pass && !at.caustic_path() ? Lobes::none : Lobes::all;
             if (caustic_pass) {
-                if (!at.direct && at.specular_only()) out.push_back(photon(c, power, at.direction, Photon::caustic));
+                if (!at.direct && at.caustic_path()) out.push_back(photon(c, power, at.direction, Photon::caustic));
                 // What a diffuse lobe sends on is the global map's; a delta lobe (a coat
                 // over the diffuse one) may still send a caustic on.
-                return (reflects<M> || transmits<M>) && at.specular_only() ? Lobes::delta : Lobes::none;
+                return (reflects<M> || transmits<M>) && at.caustic_path() ? Lobes::delta : Lobes::none;
             }
             std::uint8_t flags = at.direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
-            if (!at.direct && at.specular_only()) flags |= Photon::caustic;
+            if (!at.direct && at.caustic_path()) flags |= Photon::caustic;
             out.push_back(photon(c, power, at.direction, flags));
             if (at.direct && config_.shadow_photons) store_shadow_photons(c, at.direction, out);
             return Lobes::all;
@@ -11430,6 +11463,9 @@ public:
 
     /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
     static constexpr bool has_transmissive = detail::any_of({transmits<typename Slots::material_type>...});
+    /// Some material reads surface coordinates (a texture, a normal map): its crossings take
+    /// them, and rays carry their cones on through mirrors and glass (carry_cone).
+    static constexpr bool reads_surface_coordinates = detail::any_of({reads_coordinates<typename Slots::material_type>()...});
     /// Some material has a mirror lobe.
     static constexpr bool has_specular = detail::any_of({reflects<typename Slots::material_type>...}) || has_transmissive;
     /// The number of slots (Object or ObjectArray).
@@ -11490,6 +11526,15 @@ public:
     [[nodiscard]] constexpr bool has_tree() const noexcept { return has_tree_; }
 
     // Scene Queries
+
+    /// `next`, the ray a mirror or an interface sends on where `ray` met it at t, carrying
+    /// `ray`'s cone on (carrying_cone) where some material reads surface coordinates; as it
+    /// is in a scene without textures, which pays nothing for them.
+    [[nodiscard]] static Ray<T> carry_cone(const Ray<T>& next, const Ray<T>& ray, T t) noexcept
+    {
+        if constexpr (reads_surface_coordinates) return carrying_cone(next, ray, t);
+        else return next;
+    }
 
     /// The closest crossing with t inside `range`. Every object is asked for its
     /// crossings without their surfaces; only the nearest one is then asked again, over
@@ -12626,7 +12671,7 @@ private:
             // there), and the delta lights, which no draw finds, by shadow rays from both sides.
             const Interface face = nested_interface(media, {h.slot, h.index, nesting_priority(material)}, hit.entering);
             if (!face.real) {
-                radiance = trace(spawn_ray(hit.point, hit.error, hit.normal, d), depth + 1, weight, rng, wavelength, face.beyond);
+                radiance = trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, weight, rng, wavelength, face.beyond);
             } else {
                 const auto lobe = glossy_at(material, hit, normalize(d), glossy_eta(material, hit, index_of(*scene_, outside_of(media, face, hit.entering), wavelength)));
                 scene_->for_each_light([&]<class L>(const L& light) {
@@ -12659,7 +12704,8 @@ private:
             if (depth < config_.max_depth) {
                 const std::optional<LobeSample<T>> s = lobe.delta_part();
                 if (s && max_component(weight * s->weight) > config_.min_weight)
-                    radiance += s->weight * trace(spawn_ray(hit.point, hit.error, hit.normal, s->wi), depth + 1, weight * s->weight, rng, wavelength, media);
+                    radiance += s->weight * trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, s->wi), ray, hit.t), depth + 1, weight * s->weight, rng,
+                                                  wavelength, media);
             }
         }
         if constexpr ((reflects<M> || transmits<M>) && !has_glossy<M>) {
@@ -12669,7 +12715,7 @@ private:
                     for_each_delta_ray(material, d, hit, wavelength, bands_, outside_index,
                                        [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
                                            if (max_component(weight * k) > config_.min_weight)
-                                               radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1, weight * k,
+                                               radiance += k * trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, direction), ray, hit.t), depth + 1, weight * k,
                                                                      rng, lambda, transmitted ? beyond : media);
                                        });
                 };
@@ -12678,7 +12724,7 @@ private:
                     if (face.real)
                         follow(face.beyond, outside_of(media, face, hit.entering));
                     else
-                        radiance = trace(spawn_ray(hit.point, hit.error, hit.normal, d), depth + 1, weight, rng, wavelength, face.beyond);
+                        radiance = trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, weight, rng, wavelength, face.beyond);
                 } else {
                     follow(media, nullptr);
                 }
@@ -12761,7 +12807,8 @@ private:
 
     /// Final gathering over m x cells_n stratified cells (gather_hemisphere). Each ray
     /// walks on through mirrors and glass as a photon would (random_walk: Russian
-    /// roulette by reflectance, Fresnel's choice at glass) to the first diffuse surface
+    /// roulette by reflectance, Fresnel's choice at glass, a draw from frosted glass's
+    /// lobe) to the first diffuse surface
     /// (and on through the delta lobes of a surface that also has one),
     /// where L = albedo / pi * E_global (the global map's precomputed irradiance, which
     /// holds every photon there): paths D S+ D carry colour bleeding seen in a mirror or
@@ -12774,6 +12821,7 @@ private:
         return gather_hemisphere<Gradients, T>(n, m, cells_n, rng, [&](const Vec3<T>& direction) {
             std::pair<Rgb<T>, T> found{Rgb<T>(T(0)), infinity<T>};
             const auto at_diffuse = [&]<class M>(const M& material, const WalkVertex<T>& at) {
+                if constexpr (has_glossy<M> && transmits<M>) return Lobes::all; // frosted glass: through it by its lobe
                 found.first += global_radiance(material, at);
                 found.second = std::min(found.second, at.travelled);
                 // The diffuse lobe's light is counted; a delta lobe beside it (a coat) still
@@ -12820,6 +12868,7 @@ private:
     {
         Rgb<T> sum{T(0)};
         const auto at_vertex = [&]<class M>(const M& material, const WalkVertex<T>& at) {
+            if constexpr (has_glossy<M> && transmits<M>) return Lobes::all; // frosted glass: through it by its lobe
             sum += global_radiance(material, at);
             return reflects<M> || transmits<M> ? Lobes::delta : Lobes::none;
         };
@@ -13176,8 +13225,8 @@ private:
             const std::optional<LobeSample<T>> delta = lobe.delta_part();
             const Rgb<T> k = delta ? delta->weight : lobe.mirror_albedo();
             if (depth < config_.max_depth && max_component(weight * k) > config_.min_weight)
-                radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, delta ? delta->wi : lobe.mirror()), depth + 1, weight * k, wavelength, media,
-                                      jitter...);
+                radiance += k * trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, delta ? delta->wi : lobe.mirror()), ray, hit.t), depth + 1,
+                                      weight * k, wavelength, media, jitter...);
             }
         }
 
@@ -13194,8 +13243,8 @@ private:
                                        [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
                                            const Rgb<T> next_weight = weight * k;
                                            if (max_component(next_weight) > config_.min_weight)
-                                               radiance += k * trace(spawn_ray(hit.point, hit.error, hit.normal, direction), depth + 1,
-                                                                     next_weight, lambda, transmitted ? beyond : media, jitter...);
+                                               radiance += k * trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, direction), ray, hit.t),
+                                                                     depth + 1, next_weight, lambda, transmitted ? beyond : media, jitter...);
                                        });
                 };
                 if constexpr (transmits<M>) {
@@ -13203,7 +13252,8 @@ private:
                     if (face.real)
                         follow(face.beyond, outside_of(media, face, hit.entering));
                     else // a surface inside a medium of higher priority: the ray passes on
-                        radiance = trace(spawn_ray(hit.point, hit.error, hit.normal, d), depth + 1, weight, wavelength, face.beyond, jitter...);
+                        radiance = trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, weight, wavelength,
+                                         face.beyond, jitter...);
                 } else {
                     follow(media, nullptr);
                 }
@@ -15194,10 +15244,10 @@ private:
         return out;
     }
 
-    [[nodiscard]] static float wrapped(float x, Wrap wrap) noexcept
+    [[nodiscard]] static T wrapped(T x, Wrap wrap) noexcept
     {
-        if (!std::isfinite(x)) return 0.0f;
-        return wrap == Wrap::repeat ? x - std::floor(x) : std::clamp(x, 0.0f, 1.0f);
+        if (!std::isfinite(x)) return T(0);
+        return wrap == Wrap::repeat ? x - std::floor(x) : std::clamp(x, T(0), T(1));
     }
 
     /// Texel (i, j) of level k as RGB, with i and j brought inside by the wrap mode.
@@ -15218,8 +15268,8 @@ private:
     [[nodiscard]] Rgb<T> nearest(std::size_t k, const Vec2<T>& uv) const noexcept
     {
         const Level& l = data_->levels[k];
-        const float u = wrapped(float(uv.x), sampling_.wrap), v = wrapped(float(uv.y), sampling_.wrap);
-        const int i = std::min(int(u * float(l.width)), l.width - 1), j = std::min(int((1.0f - v) * float(l.height)), l.height - 1);
+        const T u = wrapped(uv.x, sampling_.wrap), v = wrapped(uv.y, sampling_.wrap);
+        const int i = std::min(int(u * T(l.width)), l.width - 1), j = std::min(int((T(1) - v) * T(l.height)), l.height - 1);
         return texel(l, i, j);
     }
 
@@ -15227,8 +15277,8 @@ private:
     {
         const Level& l = data_->levels[k];
         // Texel centres sit at (i + 1/2) / width; row 0 at the top (v = 1).
-        const T x = T(wrapped(float(uv.x), sampling_.wrap)) * T(l.width) - T(0.5);
-        const T y = (T(1) - T(wrapped(float(uv.y), sampling_.wrap))) * T(l.height) - T(0.5);
+        const T x = wrapped(uv.x, sampling_.wrap) * T(l.width) - T(0.5);
+        const T y = (T(1) - wrapped(uv.y, sampling_.wrap)) * T(l.height) - T(0.5);
         const T fx = std::floor(x), fy = std::floor(y);
         const int i = int(fx), j = int(fy);
         const T ax = x - fx, ay = y - fy;
@@ -15240,6 +15290,214 @@ private:
     std::shared_ptr<const Data> data_;
     TextureSampling sampling_{};
 };
+
+} // namespace prism
+
+// ---- prism/material/mix.hpp ----
+// Mix: two reflecting materials blended by a weight, constant or a texture,
+// f = (1 - w) f_first + w f_second (Cycles' Mix Shader, Mitsuba's blendbsdf): a metal
+// with diffuse dirt in a mask, a varnished floor as Cycles 3.4 builds one (a Lambertian
+// under a dielectric's microfacet reflection), a Phong surface worn by a texture.
+//
+// Each part is a glossy material or a Lambertian one (a Diffuse: its kd counts, its
+// Whitted-only ka and POV-Ray highlight have no place in a lobe). The blend is one lobe:
+// a sample draws its part with the probability of that part's weight and is then
+// weighted by the whole blend's f and density, so multiple importance sampling sees one
+// lobe; a smooth part's mirror stays a delta, weighted by its share. Parts that transmit
+// are not taken: a blend of two interfaces would need the two media they bound.
+
+
+#include <optional>
+#include <utility>
+
+namespace prism {
+
+/// A Lambertian lobe, f = albedo / pi, sampled by the cosine.
+template <Scalar T>
+struct LambertLobe {
+    /// The precision of the lobe.
+    using scalar_type = T;
+
+    Rgb<T> albedo; ///< its albedo, in [0, 1] per channel
+
+    /// Never a mirror.
+    [[nodiscard]] static constexpr bool smooth() noexcept { return false; }
+
+    /// albedo / pi for wo and wi above the surface (0 otherwise).
+    [[nodiscard]] Rgb<T> f(const Vec3<T>& wo, const Vec3<T>& wi, Transport = Transport::radiance) const noexcept
+    {
+        return wo.z > T(0) && wi.z > T(0) ? albedo / pi<T> : Rgb<T>(T(0));
+    }
+
+    /// wi.z / pi above the surface.
+    [[nodiscard]] T pdf(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept { return wo.z > T(0) && wi.z > T(0) ? wi.z / pi<T> : T(0); }
+
+    /// A cosine-distributed direction; its weight is the albedo.
+    [[nodiscard]] std::optional<LobeSample<T>> sample(const Vec3<T>& wo, T, T u1, T u2, Transport = Transport::radiance) const noexcept
+    {
+        if (!(wo.z > T(0))) return std::nullopt;
+        const Vec3<T> wi = cosine_direction(u1, u2);
+        if (!(wi.z > T(0))) return std::nullopt;
+        return LobeSample<T>{wi, albedo, wi.z / pi<T>, false};
+    }
+};
+
+/// A material Mix can take as a part: it reflects by a glossy lobe, or by a Lambertian
+/// one alone, and transmits nothing.
+template <class M>
+concept MixPart = Material<M> && !M::transmits && !M::reflects && !emits<M> && (has_glossy<M> || M::has_diffuse);
+
+/// The lobe of a Mix's part at a point: its glossy lobe, or a LambertLobe of its albedo times kd.
+template <MixPart M>
+[[nodiscard]] constexpr auto part_lobe(const M& material, const GlossyQuery<typename M::scalar_type>& q) noexcept
+{
+    using T = typename M::scalar_type;
+    if constexpr (has_glossy<M>) {
+        return material.glossy(q);
+    } else {
+        const DiffuseResponse<T> r = diffuse_response(material, q.texture_point());
+        return LambertLobe<T>{r.albedo * r.kd};
+    }
+}
+
+/// The blend of two lobes at a point: (1 - w) first + w second, each drawn with the
+/// probability of its weight.
+template <Bsdf A, Bsdf B>
+class MixLobe {
+public:
+    /// The precision of the lobe.
+    using scalar_type = typename A::scalar_type;
+    using T = scalar_type; ///< shorthand
+
+    /// The blend of `first` and `second` with weight w (second's share, in [0, 1]).
+    constexpr MixLobe(A first, B second, T w) noexcept : first_(std::move(first)), second_(std::move(second)), w_(w) {}
+
+    /// A mirror where both parts are.
+    [[nodiscard]] bool smooth() const noexcept { return first_.smooth() && second_.smooth(); }
+
+    /// (1 - w) f_first + w f_second.
+    [[nodiscard]] Rgb<T> f(const Vec3<T>& wo, const Vec3<T>& wi, Transport mode = Transport::radiance) const noexcept
+    {
+        return first_.f(wo, wi, mode) * (T(1) - w_) + second_.f(wo, wi, mode) * w_;
+    }
+
+    /// The density of sample's non-delta directions: (1 - w) pdf_first + w pdf_second.
+    [[nodiscard]] T pdf(const Vec3<T>& wo, const Vec3<T>& wi) const noexcept { return first_.pdf(wo, wi) * (T(1) - w_) + second_.pdf(wo, wi) * w_; }
+
+    /// A direction from the second part with probability w, else from the first, weighted
+    /// by the blend's f and density (a delta keeps its part's weight: its share w of the
+    /// blend is drawn with probability w).
+    [[nodiscard]] std::optional<LobeSample<T>> sample(const Vec3<T>& wo, T u_lobe, T u1, T u2, Transport mode = Transport::radiance) const noexcept
+    {
+        const bool second = u_lobe < w_;
+        const T u = second ? u_lobe / w_ : (u_lobe - w_) / (T(1) - w_); // uniform in [0, 1) again
+        const std::optional<LobeSample<T>> s = second ? second_.sample(wo, u, u1, u2, mode) : first_.sample(wo, u, u1, u2, mode);
+        if (!s || s->delta) return s;
+        const T density = pdf(wo, s->wi);
+        if (!(density > T(0))) return std::nullopt;
+        return LobeSample<T>{s->wi, f(wo, s->wi, mode) * (std::abs(s->wi.z) / density), density, false};
+    }
+
+    /// The smooth parts' mirror, weighted by their shares (nothing where neither is smooth).
+    [[nodiscard]] std::optional<LobeSample<T>> delta_part(const Vec3<T>& wo) const noexcept
+    {
+        const std::optional<LobeSample<T>> a = delta_of(first_, wo), b = delta_of(second_, wo);
+        if (!a && !b) return std::nullopt;
+        const Rgb<T> weight = (a ? a->weight * (T(1) - w_) : Rgb<T>(T(0))) + (b ? b->weight * w_ : Rgb<T>(T(0)));
+        return LobeSample<T>{a ? a->wi : b->wi, weight, T(0), true}; // both mirror wo about z
+    }
+
+    /// What a Whitted mirror ray carries: the parts' mirror albedos by their shares (a
+    /// part without one, such as a Lambertian, carries none).
+    [[nodiscard]] Rgb<T> mirror_albedo(const Vec3<T>& wo) const noexcept
+    {
+        return mirror_of(first_, wo) * (T(1) - w_) + mirror_of(second_, wo) * w_;
+    }
+
+private:
+    template <class L>
+    [[nodiscard]] static std::optional<LobeSample<T>> delta_of(const L& lobe, const Vec3<T>& wo) noexcept
+    {
+        if constexpr (requires { lobe.delta_part(wo); }) return lobe.delta_part(wo);
+        else return std::nullopt;
+    }
+
+    template <class L>
+    [[nodiscard]] static Rgb<T> mirror_of(const L& lobe, const Vec3<T>& wo) noexcept
+    {
+        if constexpr (requires { lobe.mirror_albedo(wo); }) return lobe.mirror_albedo(wo);
+        else return Rgb<T>(T(0));
+    }
+
+    A first_;
+    B second_;
+    T w_;
+};
+
+/// Two reflecting materials (MixPart) blended by `weight`, second's share: a number in
+/// [0, 1] or a one-number texture (ScalarTexture, such as ImageTexture) of it.
+template <Scalar T, MixPart First, MixPart Second, class Weight = T>
+struct Mix {
+    /// The precision of the material.
+    using scalar_type = T;
+    /// Its parts' Lambertian lobes live in the blend's glossy lobe.
+    static constexpr bool has_diffuse = false;
+    /// No delta mirror of its own (a smooth part's is the lobe's delta part).
+    static constexpr bool reflects = false;
+    /// Transmits nothing.
+    static constexpr bool transmits = false;
+    /// A glossy lobe: the blend.
+    static constexpr bool has_glossy = true;
+    /// Whether a part or the weight reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates =
+        prism::reads_coordinates<First>() || prism::reads_coordinates<Second>() || texture_reads_coordinates<Weight>;
+
+    First first{};   ///< the part weighted 1 - w
+    Second second{}; ///< the part weighted w
+    Weight weight{}; ///< w: second's share, in [0, 1], a number or a ScalarTexture
+
+    /// The blended lobe at a point.
+    [[nodiscard]] constexpr auto glossy(const GlossyQuery<T>& q) const noexcept
+    {
+        return MixLobe(part_lobe(first, q), part_lobe(second, q), weight_at(q.texture_point()));
+    }
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad part, a weight
+    /// outside [0, 1] (a texture's largest value, where it knows it), or a Diffuse part
+    /// with a POV-Ray highlight (which a lobe cannot hold).
+    constexpr void validate() const
+    {
+        first.validate();
+        second.validate();
+        if constexpr (ScalarTexture<Weight>) {
+            weight.validate();
+            if constexpr (requires { weight.max_value(); })
+                if (!(weight.max_value() <= 1)) detail::throw_invalid("Mix weight texture's values must be in [0, 1], got up to ", weight.max_value());
+        } else {
+            if (!(weight >= T(0) && weight <= T(1))) detail::throw_invalid("Mix weight must be in [0, 1], got ", weight);
+        }
+        no_highlight(first, "Mix first");
+        no_highlight(second, "Mix second");
+    }
+
+private:
+    [[nodiscard]] constexpr T weight_at(const TexturePoint<T>& at) const noexcept
+    {
+        if constexpr (ScalarTexture<Weight>) return weight.value(at);
+        else return weight;
+    }
+
+    template <class M>
+    static constexpr void no_highlight(const M& part, const char* name)
+    {
+        if constexpr (requires { part.phong; })
+            if (part.phong != 0) detail::throw_invalid(name, " is a Diffuse with a POV-Ray phong highlight, which a blended lobe cannot hold: got phong ", part.phong);
+    }
+};
+
+/// Deduces Mix's scalar type from its first part.
+template <MixPart First, MixPart Second, class Weight>
+Mix(First, Second, Weight) -> Mix<typename First::scalar_type, First, Second, Weight>;
 
 } // namespace prism
 
