@@ -6,13 +6,56 @@
 # scene-linear radiance anyway), point lights of radius 0, no clamping, light threshold 0,
 # adaptive sampling and denoising off, Filter Glossy off (it blurs a mirror after a diffuse
 # bounce), 64 bounces of everything, a 1-pixel box filter. The render is saved as float EXR,
-# read back inside Blender (Debian has no python3-openexr) and written as PFM.
+# read back inside Blender (Debian has no python3-openexr) and written as PFM. And the
+# pieces of a prism scene in Blender's terms: prism is right-handed with y up, Blender
+# right-handed with z up, so a point (x, y, z) is (x, -z, y), a rotation.
+import math
 import os
 import struct
 import tempfile
 import time
 
 import bpy
+from mathutils import Vector
+
+
+def blender(p):
+    """prism (x, y, z) -> Blender (x, -z, y)."""
+    return (p[0], -p[2], p[1])
+
+
+def quad(name, corners, m, uvs=None):
+    """A quad of four prism corners with material m, and a UV map "UVMap" of `uvs` (one per corner) if given."""
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata([blender(c) for c in corners], [], [(0, 1, 2, 3)])
+    if uvs:
+        layer = mesh.uv_layers.new(name="UVMap")
+        for loop in mesh.loops:
+            layer.data[loop.index].uv = uvs[loop.vertex_index]
+    obj = bpy.data.objects.new(name, mesh)
+    obj.data.materials.append(m)
+    bpy.context.scene.collection.objects.link(obj)
+
+
+def sphere(name, centre, radius, m):
+    """A smooth-shaded UV sphere of 256 x 128 segments: Cycles' stand-in for prism's true sphere."""
+    bpy.ops.mesh.primitive_uv_sphere_add(segments=256, ring_count=128, radius=radius, location=blender(centre))
+    obj = bpy.context.active_object
+    bpy.ops.object.shade_smooth()
+    obj.data.materials.append(m)
+
+
+def camera(position, look_at, fov_deg):
+    """A camera at prism's `position` looking at `look_at`, fov_deg across (prism's Camera::fov), made the scene's; returns its data."""
+    cam = bpy.data.cameras.new("camera")
+    cam.sensor_fit = "HORIZONTAL"
+    cam.angle = math.radians(fov_deg)
+    obj = bpy.data.objects.new("camera", cam)
+    obj.location = blender(position)
+    obj.rotation_euler = Vector(blender([look_at[i] - position[i] for i in range(3)])).to_track_quat("-Z", "Y").to_euler()
+    bpy.context.scene.collection.objects.link(obj)
+    bpy.context.scene.camera = obj
+    return cam
 
 
 def empty_scene(samples, seed, size):

@@ -21,10 +21,9 @@ import os
 import sys
 
 import bpy
-from mathutils import Vector
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cycles_common import empty_scene, material, render_to_pfm  # noqa: E402
+from cycles_common import camera, empty_scene, material, quad, render_to_pfm, sphere  # noqa: E402
 
 argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 out_path = argv[0]
@@ -35,11 +34,6 @@ variant = argv[4] if len(argv) > 4 else ""
 here = os.path.dirname(os.path.abspath(__file__))
 SKY = os.path.join(here, "..", "assets", "sky", "sunrise.exr")
 ROTATION = 150.0  # bench/sky.cpp's, degrees about prism's +y
-
-
-def blender(p):
-    """prism (x, y, z) -> Blender (x, -z, y)."""
-    return (p[0], -p[2], p[1])
 
 
 scene = empty_scene(samples, seed, size)
@@ -64,21 +58,6 @@ links.new(texture.outputs["Color"], background.inputs["Color"])
 scene.world = world
 
 
-def quad(name, corners, m):
-    mesh = bpy.data.meshes.new(name)
-    mesh.from_pydata([blender(c) for c in corners], [], [(0, 1, 2, 3)])
-    obj = bpy.data.objects.new(name, mesh)
-    obj.data.materials.append(m)
-    scene.collection.objects.link(obj)
-
-
-def sphere(name, centre, radius, m):
-    bpy.ops.mesh.primitive_uv_sphere_add(segments=256, ring_count=128, radius=radius, location=blender(centre))
-    obj = bpy.context.active_object
-    bpy.ops.object.shade_smooth()
-    obj.data.materials.append(m)
-
-
 quad("floor", [(-5, 0, 5), (5, 0, 5), (5, 0, -5), (-5, 0, -5)], material("grey", "diffuse", (0.5, 0.5, 0.5)))
 if variant == "frosted":
     sphere("frosted", (-0.8, 0.6, 0), 0.6, material("frosted", "glass", (1.0, 1.0, 1.0), 0.3, 1.5))
@@ -90,14 +69,6 @@ else:
     sphere("white", (-0.8, 0.6, 0), 0.6, material("white", "diffuse", (0.8, 0.8, 0.8)))
     sphere("mirror", (0.8, 0.6, 0), 0.6, material("mirror", "glossy", (0.9, 0.9, 0.9)))
 
-cam = bpy.data.cameras.new("camera")
-cam.sensor_fit = "HORIZONTAL"
-cam.angle = math.radians(50.0)
-camera = bpy.data.objects.new("camera", cam)
-position, look_at = (0, 1.5, 5), (0, 0.5, 0)
-camera.location = blender(position)
-camera.rotation_euler = Vector(blender([look_at[i] - position[i] for i in range(3)])).to_track_quat("-Z", "Y").to_euler()
-scene.collection.objects.link(camera)
-scene.camera = camera
+camera((0, 1.5, 5), (0, 0.5, 0), 50.0)
 
 render_to_pfm(scene, out_path, samples)

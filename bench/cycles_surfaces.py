@@ -26,10 +26,9 @@ import os
 import sys
 
 import bpy
-from mathutils import Vector
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cycles_common import empty_scene, material, render_to_pfm  # noqa: E402
+from cycles_common import blender, camera, empty_scene, material, quad, render_to_pfm, sphere  # noqa: E402
 
 argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 out_path = argv[0]
@@ -38,11 +37,6 @@ seed = int(argv[2]) if len(argv) > 2 else 0
 size = int(argv[3]) if len(argv) > 3 else 256
 here = os.path.dirname(os.path.abspath(__file__))
 ASSETS = os.path.join(here, "..", "assets", "surfaces")
-
-
-def blender(p):
-    """prism (x, y, z) -> Blender (x, -z, y)."""
-    return (p[0], -p[2], p[1])
 
 
 scene = empty_scene(samples, seed, size)
@@ -105,26 +99,8 @@ def glazed_tiles():
     return m
 
 
-def floor(corners, uvs, m):
-    mesh = bpy.data.meshes.new("floor")
-    mesh.from_pydata([blender(c) for c in corners], [], [(0, 1, 2, 3)])
-    layer = mesh.uv_layers.new(name="UVMap")
-    for loop in mesh.loops:
-        layer.data[loop.index].uv = uvs[loop.vertex_index]
-    obj = bpy.data.objects.new("floor", mesh)
-    obj.data.materials.append(m)
-    scene.collection.objects.link(obj)
-
-
-def sphere(name, centre, radius, m):
-    bpy.ops.mesh.primitive_uv_sphere_add(segments=256, ring_count=128, radius=radius, location=blender(centre))
-    obj = bpy.context.active_object
-    bpy.ops.object.shade_smooth()
-    obj.data.materials.append(m)
-
-
 # prism's Quad({-2, 0, 2}, {4, 0, 0}, {0, 0, -4}): uv (s, t) along its two edges.
-floor([(-2, 0, 2), (2, 0, 2), (2, 0, -2), (-2, 0, -2)], [(0, 0), (1, 0), (1, 1), (0, 1)], glazed_tiles())
+quad("floor", [(-2, 0, 2), (2, 0, 2), (2, 0, -2), (-2, 0, -2)], glazed_tiles(), [(0, 0), (1, 0), (1, 1), (0, 1)])
 sphere("gold", (0.7, 0.45, 0.2), 0.45, material("gold", "glossy", (0.95, 0.75, 0.33), 0.3))
 sphere("glass", (-0.6, 0.5, 0.0), 0.5, material("glass", "glass", (1.0, 1.0, 1.0), 0.15, 1.5))
 
@@ -136,19 +112,11 @@ lamp = bpy.data.objects.new("light", light)
 lamp.location = blender((-1.3, 2.8, -1.4))
 scene.collection.objects.link(lamp)
 
-cam = bpy.data.cameras.new("camera")
-cam.sensor_fit = "HORIZONTAL"
-cam.angle = math.radians(40.0)
+cam = camera((0, 2.0, 3.6), (0, 0.35, 0), 40.0)
 cam.dof.use_dof = True
 cam.dof.focus_distance = 3.74
 cam.dof.aperture_blades = 0
 cam.dof.aperture_ratio = 1.0
 cam.dof.aperture_fstop = cam.lens * 1e-3 / (2 * 0.04)  # Cycles' lens radius: focal length / (2 f-stop)
-camera = bpy.data.objects.new("camera", cam)
-position, look_at = (0, 2.0, 3.6), (0, 0.35, 0)
-camera.location = blender(position)
-camera.rotation_euler = Vector(blender([look_at[i] - position[i] for i in range(3)])).to_track_quat("-Z", "Y").to_euler()
-scene.collection.objects.link(camera)
-scene.camera = camera
 
 render_to_pfm(scene, out_path, samples)
