@@ -12,11 +12,20 @@
 import math
 import os
 import struct
+import sys
 import tempfile
 import time
 
 import bpy
 from mathutils import Vector
+
+
+def arguments():
+    """The script's arguments after Blender's `--`: OUT.pfm [SAMPLES] [SEED] [SIZE] [more...],
+    as (out_path, samples (64), seed (0), size (256), the rest)."""
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    return (argv[0], int(argv[1]) if len(argv) > 1 else 64, int(argv[2]) if len(argv) > 2 else 0, int(argv[3]) if len(argv) > 3 else 256,
+            argv[4:])
 
 
 def blender(p):

@@ -23,14 +23,10 @@ import sys
 import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cycles_common import camera, empty_scene, material, quad, render_to_pfm, sphere  # noqa: E402
+from cycles_common import arguments, camera, empty_scene, material, quad, render_to_pfm, sphere  # noqa: E402
 
-argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-out_path = argv[0]
-samples = int(argv[1]) if len(argv) > 1 else 64
-seed = int(argv[2]) if len(argv) > 2 else 0
-size = int(argv[3]) if len(argv) > 3 else 256
-variant = argv[4] if len(argv) > 4 else ""
+out_path, samples, seed, size, rest = arguments()
+variant = rest[0] if rest else ""
 here = os.path.dirname(os.path.abspath(__file__))
 SKY = os.path.join(here, "..", "assets", "sky", "sunrise.exr")
 ROTATION = 150.0  # bench/sky.cpp's, degrees about prism's +y

@@ -28,13 +28,9 @@ import sys
 import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from cycles_common import blender, camera, empty_scene, material, quad, render_to_pfm, sphere  # noqa: E402
+from cycles_common import arguments, blender, camera, empty_scene, material, quad, render_to_pfm, sphere  # noqa: E402
 
-argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-out_path = argv[0]
-samples = int(argv[1]) if len(argv) > 1 else 64
-seed = int(argv[2]) if len(argv) > 2 else 0
-size = int(argv[3]) if len(argv) > 3 else 256
+out_path, samples, seed, size, rest = arguments()
 here = os.path.dirname(os.path.abspath(__file__))
 ASSETS = os.path.join(here, "..", "assets", "surfaces")
 
