@@ -2365,6 +2365,7 @@ template <Scalar T = double>
 // diffuse bounces; Russian roulette.
 
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -2422,6 +2423,20 @@ template <Scalar T>
     const T p = clamp(max_component(reflectance), T(0), T(1));
     if (!(p > T(0)) || rng.uniform<T>() >= p) return false;
     power *= reflectance / p;
+    return true;
+}
+
+/// Russian roulette by a camera path's throughput (Arvo and Kirk 1990; pbrt's and Mitsuba's
+/// rule): the path goes on with probability p = the largest channel of `throughput` (at most
+/// 1) and a survivor's throughput is divided by p, so its expectation is unchanged. A path
+/// whose throughput has fallen is likely ended; one still carrying much is not, however many
+/// lobes it was drawn through. Returns false when the path ends.
+template <Scalar T>
+[[nodiscard]] inline bool path_roulette(Rgb<T>& throughput, Pcg32& rng) noexcept
+{
+    const T p = std::min(T(1), max_component(throughput));
+    if (!(p > T(0)) || !(rng.uniform<T>() < p)) return false;
+    throughput /= p;
     return true;
 }
 
@@ -7659,9 +7674,13 @@ enum class Lobes { none, delta, all };
 /// sent into the solid is absorbed; a photon (Transport::importance) also takes Veach's
 /// correction |d.ns| |w.ng| / (|d.ng| |w.ns|) and is absorbed where it arrives behind
 /// the shading normal. A camera path (Transport::radiance) scatters by the same rules
-/// without them. A glossy lobe draws one direction (its parts chosen inside it) and the
-/// photon survives with the probability of the draw's largest channel (at most 1),
-/// carrying the draw's weight over it; its density is the bounce's `pdf`.
+/// without them, and without Russian roulette: it always takes a lobe (the lobes of a
+/// material with a diffuse and a delta one each with the probability of its share of
+/// their reflectances), its power multiplied by what the lobe carries, and its walk ends
+/// it by its throughput instead (path_roulette, random_walk). A glossy lobe draws one
+/// direction (its parts chosen inside it) and a photon survives with the probability of
+/// the draw's largest channel (at most 1), carrying the draw's weight over it; its
+/// density is the bounce's `pdf`.
 template <Transport Mode = Transport::importance, Material M>
 [[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
                                                                                    const Crossing<typename M::scalar_type>& hit,
@@ -7698,8 +7717,10 @@ template <Transport Mode = Transport::importance, Material M>
         const Rgb<T> diffuse = lobes == Lobes::all ? diffuse_response(material, hit).photon_reflectance() : Rgb<T>(T(0));
         const Rgb<T> transmitted = split.refracted ? split.kt : Rgb<T>(T(0));
         const T w_diffuse = max_component(diffuse), w_reflected = max_component(split.kr), w_transmitted = max_component(transmitted);
-        const T scale = std::max(T(1), w_diffuse + w_reflected + w_transmitted);
-        if (!(scale < infinity<T>)) return std::nullopt;
+        // A photon may also be absorbed (what the lobes leave of 1); a camera path is not.
+        const T sum = w_diffuse + w_reflected + w_transmitted;
+        const T scale = Mode == Transport::radiance ? sum : std::max(T(1), sum);
+        if (!(scale > T(0)) || !(scale < infinity<T>)) return std::nullopt;
         const T u = rng.uniform<T>() * scale;
         if (u < w_diffuse) {
             power *= diffuse * (scale / w_diffuse);
@@ -7715,12 +7736,19 @@ template <Transport Mode = Transport::importance, Material M>
         }
         return std::nullopt;
     } else if constexpr (M::has_diffuse) {
-        if (lobes != Lobes::all || !russian_roulette(power, diffuse_response(material, hit).photon_reflectance(), rng)) return std::nullopt;
+        if (lobes != Lobes::all) return std::nullopt;
+        const Rgb<T> reflectance = diffuse_response(material, hit).photon_reflectance();
+        if constexpr (Mode == Transport::radiance) {
+            if (!(max_component(reflectance) > T(0))) return std::nullopt;
+            power *= reflectance;
+        } else if (!russian_roulette(power, reflectance, rng)) {
+            return std::nullopt;
+        }
         return diffuse_direction();
     } else if constexpr (has_glossy<M>) {
-        // One draw from the lobe (its parts chosen inside it), then Russian roulette by
-        // the draw's weight: a survivor carries weight / p, at most 1 per channel where
-        // the weight is below 1.
+        // One draw from the lobe (its parts chosen inside it), then for a photon Russian
+        // roulette by the draw's weight: a survivor carries weight / p, at most 1 per
+        // channel where the weight is below 1. A camera path carries the weight.
         const auto at = glossy_at(material, hit, d, glossy_eta(material, hit, outside_index));
         if (lobes != Lobes::all && !at.smooth()) return std::nullopt;
         const std::optional<LobeSample<T>> s = at.sample(rng, Mode);
@@ -7735,9 +7763,14 @@ template <Transport Mode = Transport::importance, Material M>
                 weight *= correction;
             }
         }
-        const T p = std::min(T(1), max_component(weight));
-        if (!(p > T(0)) || !(rng.uniform<T>() < p)) return std::nullopt;
-        power *= weight / p;
+        if constexpr (Mode == Transport::radiance) {
+            if (!(max_component(weight) > T(0))) return std::nullopt;
+            power *= weight;
+        } else {
+            const T p = std::min(T(1), max_component(weight));
+            if (!(p > T(0)) || !(rng.uniform<T>() < p)) return std::nullopt;
+            power *= weight / p;
+        }
         return PhotonBounce<T>{s->wi, !s->delta, s->pdf};
     } else {
         const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
@@ -7746,14 +7779,17 @@ template <Transport Mode = Transport::importance, Material M>
             // Reflect with probability F (the mean of F per channel), refract otherwise;
             // each then by its tint. Per-channel F weighs the survivor by F / mean.
             const bool reflect_it = rng.uniform<T>() < split.reflected_share;
-            if (!russian_roulette(power, reflect_it ? material.reflection_tint() : material.transmission_tint(), rng)) return std::nullopt;
+            const Rgb<T> tint = reflect_it ? material.reflection_tint() : material.transmission_tint();
+            if constexpr (Mode == Transport::radiance) power *= tint;
+            else if (!russian_roulette(power, tint, rng)) return std::nullopt;
             if (!split.fresnel_is_grey()) {
                 power *= reflect_it ? split.fresnel / split.reflected_share
                                     : (Rgb<T>(T(1)) - split.fresnel) / (T(1) - split.reflected_share);
             }
             return PhotonBounce<T>{reflect_it ? reflect(d, n_delta) : *split.refracted, false};
         } else {
-            if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
+            if constexpr (Mode == Transport::radiance) power *= split.kr;
+            else if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
             return PhotonBounce<T>{reflect(d, n_delta), false};
         }
     }
@@ -9012,8 +9048,12 @@ void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& m
 // at a diffuse or glossy surface the caller's `on_diffuse` sees the vertex (and may stop the walk);
 // false interfaces (inside a medium of higher priority) are passed; a white path meeting
 // a dispersive interface takes one wavelength band at random; then scatter_photon picks
-// the next direction by Russian roulette (material/scattering.hpp). In the air the path
-// follows the air's curve (GradedAir), inside objects straight lines.
+// the next direction (material/scattering.hpp): a photon by Russian roulette at every
+// bounce, which keeps its power bounded; a camera path by its lobes alone, ended by
+// roulette on its throughput once it has met WalkLimits::roulette_depth surfaces, so a
+// path on its way to a bright, hard-to-find light (a caustic) is not cut short by the dim
+// surfaces it left. In the air the path follows the air's curve (GradedAir), inside
+// objects straight lines.
 
 
 #include <algorithm>
@@ -9083,17 +9123,26 @@ struct IgnoreEmitters {
     }
 };
 
-/// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
+/// How far a walk may go.
+struct WalkLimits {
+    int max_bounces = 256; ///< surfaces past the first the walk may scatter at (it meets at most max_bounces + 1)
+    /// Surfaces a camera path (Transport::radiance) scatters at before Russian roulette on
+    /// its throughput may end it (path_roulette); a photon's roulette is per bounce.
+    int roulette_depth = 2;
+};
+
+/// Walk from `ray` carrying `power` through at most limits.max_bounces + 1 surfaces.
 /// on_diffuse(material, WalkVertex) is called at every surface with a non-delta lobe
 /// (diffuse, or glossy and not a mirror: scatters_smoothly) and returns the
 /// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
 /// there); on_escape(WalkEscape) when the path leaves the scene; on_emitter(material,
 /// WalkVertex) where it meets a surface that emits (an area light; the walk scatters there
 /// only by the lobes the material also has). `Mode`: whether the path is a photon's or a
-/// camera's (scatter_photon).
+/// camera's (scatter_photon); a camera path is ended by path_roulette after
+/// limits.roulette_depth surfaces.
 template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
-                 Rgb<typename SceneT::scalar_type> power, Pcg32& rng, int max_bounces, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
+                 Rgb<typename SceneT::scalar_type> power, Pcg32& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
                  OnEmitter&& on_emitter = {})
 {
     using T = typename SceneT::scalar_type;
@@ -9104,7 +9153,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
     MediumStack media;   // the transmissive objects the path is inside of
     Vec3<T> last_point = ray.origin;
     T last_pdf = T(0);
-    for (int bounce = 0; bounce <= max_bounces; ++bounce) {
+    for (int bounce = 0; bounce <= limits.max_bounces; ++bounce) {
         // In the air a path follows the air's curve; inside objects, straight lines.
         Ray<T> segment = ray;
         T path = T(0);
@@ -9121,7 +9170,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         const Next next_step = scene.visit_material(*hit, [&]<class M>(const M& material) -> Next {
             // What the medium it travelled in let through, before anything else.
             attenuate_segment(scene, media, material, c, segment, power);
-            const bool last = bounce == max_bounces;
+            const bool last = bounce == limits.max_bounces;
             if constexpr (emits<M>)
                 on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, T(1), surface_bounces});
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
@@ -9164,6 +9213,9 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             const Vec3<T> n = c.facing_normal();
             const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, outside_index, lobes);
             if (!next) return Next::absorbed;
+            if constexpr (Mode == Transport::radiance) {
+                if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return Next::absorbed;
+            }
             ray = spawn_ray(c.point, c.error, c.normal, next->direction);
             last_point = c.point;
             if constexpr (has_glossy<M>) last_pdf = next->pdf;
@@ -9360,7 +9412,7 @@ private:
         if (e->aimed && aimed_at_earlier_target(emitters, *e, photon.ray)) return;
         // A light without falloff: the power a photon stores grows with its path squared.
         const bool without_falloff = photon.without_falloff;
-        random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, config_.max_bounces,
+        random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, WalkLimits{.max_bounces = config_.max_bounces},
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         return visit(material, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
                     });
@@ -12206,9 +12258,9 @@ void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, F&& f)
 // PathTracer: the unbiased half of prism's reference estimator (the light tracer is the
 // other half, integrator/light_tracer.hpp).
 //
-// A camera path walks the scene as a photon does (transport/random_walk.hpp: Russian
-// roulette by reflectance, Fresnel-weighted choice at glass, one wavelength band at a
-// dispersive interface) and, at every diffuse vertex, adds the light arriving from each
+// A camera path walks the scene as a photon does (transport/random_walk.hpp: Fresnel-
+// weighted choice at glass, one wavelength band at a dispersive interface), but ended by
+// Russian roulette on its throughput after its first few surfaces, not at each bounce, and, at every diffuse vertex, adds the light arriving from each
 // light by a shadow ray: next-event estimation, the only way a path can meet a point or
 // parallel light. Glass is opaque to shadow rays, as in the photon mapper: a path whose
 // vertex next to the light is specular (L S ...) cannot be found from the camera, and
@@ -12244,6 +12296,11 @@ public:
     /// A PathTracer's settings.
     struct Config {
         int max_depth = 256; ///< surfaces a path may meet; Russian roulette ends it long before
+        /// Surfaces a path scatters at before Russian roulette on its throughput may end it
+        /// (path_roulette; pbrt's depth 1, Mitsuba's rr_depth 5). Roulette at the first
+        /// bounces cuts short the paths a caustic is found by, on their way to the light;
+        /// later it saves the long tails of dim paths.
+        int roulette_depth = 2;
         /// Diffuse bounces a path may take: 0 lights each pixel's first diffuse surface by
         /// shadow rays and goes no further (direct light, seen directly or through
         /// mirrors and glass), as POV-Ray without radiosity; 1 adds one bounce, and so on.
@@ -12271,6 +12328,7 @@ public:
         scene.validate();
         air_.validate();
         if (config.max_depth < 0) detail::throw_invalid("PathTracer max_depth must be >= 0, got ", config.max_depth);
+        if (config.roulette_depth < 0) detail::throw_invalid("PathTracer roulette_depth must be >= 0, got ", config.roulette_depth);
         if (config.max_diffuse_bounces < 0) detail::throw_invalid("PathTracer max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
         if (config.area_light_grid < 1 || config.area_light_grid > 64)
             detail::throw_invalid("PathTracer area_light_grid must be in [1, 64], got ", config.area_light_grid);
@@ -12284,7 +12342,7 @@ public:
     {
         Rgb<T> sum{T(0)};
         const LightSampling sampling{&rng, config_.area_light_grid};
-        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth,
+        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{config_.max_depth, config_.roulette_depth},
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         const Crossing<T>& c = at.crossing();
                         const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
@@ -12806,9 +12864,9 @@ private:
     }
 
     /// Final gathering over m x cells_n stratified cells (gather_hemisphere). Each ray
-    /// walks on through mirrors and glass as a photon would (random_walk: Russian
-    /// roulette by reflectance, Fresnel's choice at glass, a draw from frosted glass's
-    /// lobe) to the first diffuse surface
+    /// walks on through mirrors and glass as a camera path does (random_walk: Fresnel's
+    /// choice at glass, a draw from frosted glass's lobe, Russian roulette on its
+    /// throughput past WalkLimits' default depth) to the first diffuse surface
     /// (and on through the delta lobes of a surface that also has one),
     /// where L = albedo / pi * E_global (the global map's precomputed irradiance, which
     /// holds every photon there): paths D S+ D carry colour bleeding seen in a mirror or
@@ -12831,8 +12889,8 @@ private:
             // (About a shading normal, a direction may lead into the solid: no light.)
             if (!hit.shades_flat() && !(dot(direction, hit.facing_normal()) > T(0))) return found;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, direction);
-            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse);
+            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse);
             return found;
         });
     }
@@ -12876,8 +12934,8 @@ private:
             const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
             if (!s || s->delta) continue;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, s->wi);
-            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, config_.max_depth, at_vertex);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, config_.max_depth, at_vertex);
+            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex);
         }
         return sum / T(config_.gather_rays);
     }

@@ -81,6 +81,34 @@ TEST_CASE("Russian roulette keeps the expected power, channel by channel (errata
     CHECK_FALSE(prism::russian_roulette(dark, Rgb<double>(0.0), rng));
 }
 
+TEST_CASE("Russian roulette on a path's throughput keeps its expectation, and leaves a bright path alone")
+{
+    prism::Pcg32 rng(6u, 6u);
+    const Rgb<double> start{0.3, 0.12, 0.05}; // survives with p = 0.3, then carries start / 0.3
+    constexpr int n = 400000;
+    Rgb<double> total(0.0);
+    int survived = 0;
+    for (int i = 0; i < n; ++i) {
+        Rgb<double> throughput = start;
+        if (prism::path_roulette(throughput, rng)) {
+            CHECK(prism::max_component(throughput) == doctest::Approx(1.0).epsilon(1e-12));
+            total += throughput;
+            ++survived;
+        }
+    }
+    CHECK(std::abs(double(survived) / n - 0.3) < 4 * std::sqrt(0.3 * 0.7 / n));
+    const Rgb<double> mean = total / double(n);
+    for (int c = 0; c < 3; ++c) CHECK(std::abs(mean[c] - start[c]) < 4 * start[c] / 0.3 * std::sqrt(0.3 * 0.7 / n));
+    // At or above 1 in some channel: always kept, unchanged.
+    for (int i = 0; i < 1000; ++i) {
+        Rgb<double> bright{1.0, 0.2, 0.0};
+        CHECK(prism::path_roulette(bright, rng));
+        CHECK(bright == Rgb<double>{1.0, 0.2, 0.0});
+    }
+    Rgb<double> dark(0.0);
+    CHECK_FALSE(prism::path_roulette(dark, rng));
+}
+
 TEST_CASE("orthonormal frames, including at the poles")
 {
     prism::Pcg32 rng(4u, 4u);

@@ -6,6 +6,7 @@
 #include <prism/core/math.hpp>
 #include <prism/core/rng.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -63,6 +64,20 @@ template <Scalar T>
     const T p = clamp(max_component(reflectance), T(0), T(1));
     if (!(p > T(0)) || rng.uniform<T>() >= p) return false;
     power *= reflectance / p;
+    return true;
+}
+
+/// Russian roulette by a camera path's throughput (Arvo and Kirk 1990; pbrt's and Mitsuba's
+/// rule): the path goes on with probability p = the largest channel of `throughput` (at most
+/// 1) and a survivor's throughput is divided by p, so its expectation is unchanged. A path
+/// whose throughput has fallen is likely ended; one still carrying much is not, however many
+/// lobes it was drawn through. Returns false when the path ends.
+template <Scalar T>
+[[nodiscard]] inline bool path_roulette(Rgb<T>& throughput, Pcg32& rng) noexcept
+{
+    const T p = std::min(T(1), max_component(throughput));
+    if (!(p > T(0)) || !(rng.uniform<T>() < p)) return false;
+    throughput /= p;
     return true;
 }
 

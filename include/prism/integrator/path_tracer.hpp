@@ -2,9 +2,9 @@
 // PathTracer: the unbiased half of prism's reference estimator (the light tracer is the
 // other half, integrator/light_tracer.hpp).
 //
-// A camera path walks the scene as a photon does (transport/random_walk.hpp: Russian
-// roulette by reflectance, Fresnel-weighted choice at glass, one wavelength band at a
-// dispersive interface) and, at every diffuse vertex, adds the light arriving from each
+// A camera path walks the scene as a photon does (transport/random_walk.hpp: Fresnel-
+// weighted choice at glass, one wavelength band at a dispersive interface), but ended by
+// Russian roulette on its throughput after its first few surfaces, not at each bounce, and, at every diffuse vertex, adds the light arriving from each
 // light by a shadow ray: next-event estimation, the only way a path can meet a point or
 // parallel light. Glass is opaque to shadow rays, as in the photon mapper: a path whose
 // vertex next to the light is specular (L S ...) cannot be found from the camera, and
@@ -49,6 +49,11 @@ public:
     /// A PathTracer's settings.
     struct Config {
         int max_depth = 256; ///< surfaces a path may meet; Russian roulette ends it long before
+        /// Surfaces a path scatters at before Russian roulette on its throughput may end it
+        /// (path_roulette; pbrt's depth 1, Mitsuba's rr_depth 5). Roulette at the first
+        /// bounces cuts short the paths a caustic is found by, on their way to the light;
+        /// later it saves the long tails of dim paths.
+        int roulette_depth = 2;
         /// Diffuse bounces a path may take: 0 lights each pixel's first diffuse surface by
         /// shadow rays and goes no further (direct light, seen directly or through
         /// mirrors and glass), as POV-Ray without radiosity; 1 adds one bounce, and so on.
@@ -76,6 +81,7 @@ public:
         scene.validate();
         air_.validate();
         if (config.max_depth < 0) detail::throw_invalid("PathTracer max_depth must be >= 0, got ", config.max_depth);
+        if (config.roulette_depth < 0) detail::throw_invalid("PathTracer roulette_depth must be >= 0, got ", config.roulette_depth);
         if (config.max_diffuse_bounces < 0) detail::throw_invalid("PathTracer max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
         if (config.area_light_grid < 1 || config.area_light_grid > 64)
             detail::throw_invalid("PathTracer area_light_grid must be in [1, 64], got ", config.area_light_grid);
@@ -89,7 +95,7 @@ public:
     {
         Rgb<T> sum{T(0)};
         const LightSampling sampling{&rng, config_.area_light_grid};
-        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth,
+        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{config_.max_depth, config_.roulette_depth},
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         const Crossing<T>& c = at.crossing();
                         const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;

@@ -418,9 +418,9 @@ private:
     }
 
     /// Final gathering over m x cells_n stratified cells (gather_hemisphere). Each ray
-    /// walks on through mirrors and glass as a photon would (random_walk: Russian
-    /// roulette by reflectance, Fresnel's choice at glass, a draw from frosted glass's
-    /// lobe) to the first diffuse surface
+    /// walks on through mirrors and glass as a camera path does (random_walk: Fresnel's
+    /// choice at glass, a draw from frosted glass's lobe, Russian roulette on its
+    /// throughput past WalkLimits' default depth) to the first diffuse surface
     /// (and on through the delta lobes of a surface that also has one),
     /// where L = albedo / pi * E_global (the global map's precomputed irradiance, which
     /// holds every photon there): paths D S+ D carry colour bleeding seen in a mirror or
@@ -443,8 +443,8 @@ private:
             // (About a shading normal, a direction may lead into the solid: no light.)
             if (!hit.shades_flat() && !(dot(direction, hit.facing_normal()) > T(0))) return found;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, direction);
-            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, config_.max_depth, at_diffuse);
+            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse);
             return found;
         });
     }
@@ -488,8 +488,8 @@ private:
             const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
             if (!s || s->delta) continue;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, s->wi);
-            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, config_.max_depth, at_vertex);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, config_.max_depth, at_vertex);
+            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex);
         }
         return sum / T(config_.gather_rays);
     }

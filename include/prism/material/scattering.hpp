@@ -503,9 +503,13 @@ enum class Lobes { none, delta, all };
 /// sent into the solid is absorbed; a photon (Transport::importance) also takes Veach's
 /// correction |d.ns| |w.ng| / (|d.ng| |w.ns|) and is absorbed where it arrives behind
 /// the shading normal. A camera path (Transport::radiance) scatters by the same rules
-/// without them. A glossy lobe draws one direction (its parts chosen inside it) and the
-/// photon survives with the probability of the draw's largest channel (at most 1),
-/// carrying the draw's weight over it; its density is the bounce's `pdf`.
+/// without them, and without Russian roulette: it always takes a lobe (the lobes of a
+/// material with a diffuse and a delta one each with the probability of its share of
+/// their reflectances), its power multiplied by what the lobe carries, and its walk ends
+/// it by its throughput instead (path_roulette, random_walk). A glossy lobe draws one
+/// direction (its parts chosen inside it) and a photon survives with the probability of
+/// the draw's largest channel (at most 1), carrying the draw's weight over it; its
+/// density is the bounce's `pdf`.
 template <Transport Mode = Transport::importance, Material M>
 [[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
                                                                                    const Crossing<typename M::scalar_type>& hit,
@@ -542,8 +546,10 @@ template <Transport Mode = Transport::importance, Material M>
         const Rgb<T> diffuse = lobes == Lobes::all ? diffuse_response(material, hit).photon_reflectance() : Rgb<T>(T(0));
         const Rgb<T> transmitted = split.refracted ? split.kt : Rgb<T>(T(0));
         const T w_diffuse = max_component(diffuse), w_reflected = max_component(split.kr), w_transmitted = max_component(transmitted);
-        const T scale = std::max(T(1), w_diffuse + w_reflected + w_transmitted);
-        if (!(scale < infinity<T>)) return std::nullopt;
+        // A photon may also be absorbed (what the lobes leave of 1); a camera path is not.
+        const T sum = w_diffuse + w_reflected + w_transmitted;
+        const T scale = Mode == Transport::radiance ? sum : std::max(T(1), sum);
+        if (!(scale > T(0)) || !(scale < infinity<T>)) return std::nullopt;
         const T u = rng.uniform<T>() * scale;
         if (u < w_diffuse) {
             power *= diffuse * (scale / w_diffuse);
@@ -559,12 +565,19 @@ template <Transport Mode = Transport::importance, Material M>
         }
         return std::nullopt;
     } else if constexpr (M::has_diffuse) {
-        if (lobes != Lobes::all || !russian_roulette(power, diffuse_response(material, hit).photon_reflectance(), rng)) return std::nullopt;
+        if (lobes != Lobes::all) return std::nullopt;
+        const Rgb<T> reflectance = diffuse_response(material, hit).photon_reflectance();
+        if constexpr (Mode == Transport::radiance) {
+            if (!(max_component(reflectance) > T(0))) return std::nullopt;
+            power *= reflectance;
+        } else if (!russian_roulette(power, reflectance, rng)) {
+            return std::nullopt;
+        }
         return diffuse_direction();
     } else if constexpr (has_glossy<M>) {
-        // One draw from the lobe (its parts chosen inside it), then Russian roulette by
-        // the draw's weight: a survivor carries weight / p, at most 1 per channel where
-        // the weight is below 1.
+        // One draw from the lobe (its parts chosen inside it), then for a photon Russian
+        // roulette by the draw's weight: a survivor carries weight / p, at most 1 per
+        // channel where the weight is below 1. A camera path carries the weight.
         const auto at = glossy_at(material, hit, d, glossy_eta(material, hit, outside_index));
         if (lobes != Lobes::all && !at.smooth()) return std::nullopt;
         const std::optional<LobeSample<T>> s = at.sample(rng, Mode);
@@ -579,9 +592,14 @@ template <Transport Mode = Transport::importance, Material M>
                 weight *= correction;
             }
         }
-        const T p = std::min(T(1), max_component(weight));
-        if (!(p > T(0)) || !(rng.uniform<T>() < p)) return std::nullopt;
-        power *= weight / p;
+        if constexpr (Mode == Transport::radiance) {
+            if (!(max_component(weight) > T(0))) return std::nullopt;
+            power *= weight;
+        } else {
+            const T p = std::min(T(1), max_component(weight));
+            if (!(p > T(0)) || !(rng.uniform<T>() < p)) return std::nullopt;
+            power *= weight / p;
+        }
         return PhotonBounce<T>{s->wi, !s->delta, s->pdf};
     } else {
         const Vec3<T> n_delta = delta_normal(material, d, hit, wavelength_nm, outside_index);
@@ -590,14 +608,17 @@ template <Transport Mode = Transport::importance, Material M>
             // Reflect with probability F (the mean of F per channel), refract otherwise;
             // each then by its tint. Per-channel F weighs the survivor by F / mean.
             const bool reflect_it = rng.uniform<T>() < split.reflected_share;
-            if (!russian_roulette(power, reflect_it ? material.reflection_tint() : material.transmission_tint(), rng)) return std::nullopt;
+            const Rgb<T> tint = reflect_it ? material.reflection_tint() : material.transmission_tint();
+            if constexpr (Mode == Transport::radiance) power *= tint;
+            else if (!russian_roulette(power, tint, rng)) return std::nullopt;
             if (!split.fresnel_is_grey()) {
                 power *= reflect_it ? split.fresnel / split.reflected_share
                                     : (Rgb<T>(T(1)) - split.fresnel) / (T(1) - split.reflected_share);
             }
             return PhotonBounce<T>{reflect_it ? reflect(d, n_delta) : *split.refracted, false};
         } else {
-            if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
+            if constexpr (Mode == Transport::radiance) power *= split.kr;
+            else if (!russian_roulette(power, split.kr, rng)) return std::nullopt;
             return PhotonBounce<T>{reflect(d, n_delta), false};
         }
     }

@@ -190,7 +190,7 @@ private:
         if (e->aimed && aimed_at_earlier_target(emitters, *e, photon.ray)) return;
         // A light without falloff: the power a photon stores grows with its path squared.
         const bool without_falloff = photon.without_falloff;
-        random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, config_.max_bounces,
+        random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, WalkLimits{.max_bounces = config_.max_bounces},
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         return visit(material, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
                     });

@@ -6,12 +6,17 @@
 // at a diffuse or glossy surface the caller's `on_diffuse` sees the vertex (and may stop the walk);
 // false interfaces (inside a medium of higher priority) are passed; a white path meeting
 // a dispersive interface takes one wavelength band at random; then scatter_photon picks
-// the next direction by Russian roulette (material/scattering.hpp). In the air the path
-// follows the air's curve (GradedAir), inside objects straight lines.
+// the next direction (material/scattering.hpp): a photon by Russian roulette at every
+// bounce, which keeps its power bounded; a camera path by its lobes alone, ended by
+// roulette on its throughput once it has met WalkLimits::roulette_depth surfaces, so a
+// path on its way to a bright, hard-to-find light (a caustic) is not cut short by the dim
+// surfaces it left. In the air the path follows the air's curve (GradedAir), inside
+// objects straight lines.
 #pragma once
 
 #include <prism/core/offset.hpp>
 #include <prism/core/rng.hpp>
+#include <prism/core/sampling.hpp>
 #include <prism/geometry/crossings.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
@@ -88,17 +93,26 @@ struct IgnoreEmitters {
     }
 };
 
-/// Walk from `ray` carrying `power` through at most max_bounces + 1 surfaces.
+/// How far a walk may go.
+struct WalkLimits {
+    int max_bounces = 256; ///< surfaces past the first the walk may scatter at (it meets at most max_bounces + 1)
+    /// Surfaces a camera path (Transport::radiance) scatters at before Russian roulette on
+    /// its throughput may end it (path_roulette); a photon's roulette is per bounce.
+    int roulette_depth = 2;
+};
+
+/// Walk from `ray` carrying `power` through at most limits.max_bounces + 1 surfaces.
 /// on_diffuse(material, WalkVertex) is called at every surface with a non-delta lobe
 /// (diffuse, or glossy and not a mirror: scatters_smoothly) and returns the
 /// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
 /// there); on_escape(WalkEscape) when the path leaves the scene; on_emitter(material,
 /// WalkVertex) where it meets a surface that emits (an area light; the walk scatters there
 /// only by the lobes the material also has). `Mode`: whether the path is a photon's or a
-/// camera's (scatter_photon).
+/// camera's (scatter_photon); a camera path is ended by path_roulette after
+/// limits.roulette_depth surfaces.
 template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
-                 Rgb<typename SceneT::scalar_type> power, Pcg32& rng, int max_bounces, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
+                 Rgb<typename SceneT::scalar_type> power, Pcg32& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
                  OnEmitter&& on_emitter = {})
 {
     using T = typename SceneT::scalar_type;
@@ -109,7 +123,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
     MediumStack media;   // the transmissive objects the path is inside of
     Vec3<T> last_point = ray.origin;
     T last_pdf = T(0);
-    for (int bounce = 0; bounce <= max_bounces; ++bounce) {
+    for (int bounce = 0; bounce <= limits.max_bounces; ++bounce) {
         // In the air a path follows the air's curve; inside objects, straight lines.
         Ray<T> segment = ray;
         T path = T(0);
@@ -126,7 +140,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         const Next next_step = scene.visit_material(*hit, [&]<class M>(const M& material) -> Next {
             // What the medium it travelled in let through, before anything else.
             attenuate_segment(scene, media, material, c, segment, power);
-            const bool last = bounce == max_bounces;
+            const bool last = bounce == limits.max_bounces;
             if constexpr (emits<M>)
                 on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, T(1), surface_bounces});
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
@@ -169,6 +183,9 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             const Vec3<T> n = c.facing_normal();
             const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, outside_index, lobes);
             if (!next) return Next::absorbed;
+            if constexpr (Mode == Transport::radiance) {
+                if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return Next::absorbed;
+            }
             ray = spawn_ray(c.point, c.error, c.normal, next->direction);
             last_point = c.point;
             if constexpr (has_glossy<M>) last_pdf = next->pdf;

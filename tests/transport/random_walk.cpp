@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+#include <prism/prism.hpp>
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace prism;
+
+namespace {
+
+/// The inside of a unit sphere of diffuse albedo rho: a walk from its centre never leaves.
+auto closed_room(double rho)
+{
+    return Scene{Lights{PointLight<double>{.position = {0, 0, 0}, .intensity = Rgb<double>(1)}},
+                 Object{Sphere<double>({0, 0, 0}, 1), Diffuse<double>{.albedo = {.color = Rgb<double>(rho)}, .kd = 1, .ka = 0}}};
+}
+
+struct WalkCounts {
+    double mean_vertices = 0;
+    int fewest = std::numeric_limits<int>::max();
+    double largest_power = 0;
+};
+
+/// `count` walks from the room's centre: the surfaces each meets, and the largest power
+/// any carries at a surface.
+template <Transport Mode, class SceneT>
+WalkCounts walk_counts(const SceneT& scene, WalkLimits limits, int count)
+{
+    Pcg32 rng(3, 5);
+    const SpectralBands<double> bands(1);
+    WalkCounts out;
+    for (int i = 0; i < count; ++i) {
+        int vertices = 0;
+        const Ray<double> ray{{0, 0, 0}, uniform_sphere<double>(rng)};
+        random_walk<Mode>(scene, StraightAir{}, bands, ray, Rgb<double>(1), rng, limits, [&]<class M>(const M&, const WalkVertex<double>& at) {
+            ++vertices;
+            out.largest_power = std::max(out.largest_power, max_component(at.power));
+            return true;
+        });
+        out.mean_vertices += vertices;
+        out.fewest = std::min(out.fewest, vertices);
+    }
+    out.mean_vertices /= count;
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("a photon plays Russian roulette at every bounce, a camera path only after WalkLimits::roulette_depth surfaces")
+{
+    // In a closed room of albedo rho a photon survives each bounce with probability rho:
+    // it meets 1 / (1 - rho) surfaces on average. A camera path scatters at its first k
+    // surfaces unharmed, carrying rho^(k+1) after the k-th scattering (index k); roulette
+    // then keeps it with that probability, its throughput back to 1, and rho at every
+    // surface after: k + 1 + rho^(k+1) / (1 - rho) surfaces on average. (Before, a camera
+    // path played the photon's roulette: 1 / (1 - rho) whatever its depth.)
+    const double rho = 0.5;
+    const auto scene = closed_room(rho);
+    const int n = 200000;
+    const double sd_geometric = std::sqrt(rho) / (1 - rho); // of a count of 1 + Geometric(1 - rho)
+    const WalkCounts photon = walk_counts<Transport::importance>(scene, {.max_bounces = 1000, .roulette_depth = 3}, n);
+    CHECK(std::abs(photon.mean_vertices - 1 / (1 - rho)) < 5 * sd_geometric / std::sqrt(n));
+    CHECK(photon.fewest == 1);
+    for (int k : {0, 1, 2, 5}) {
+        CAPTURE(k);
+        const WalkCounts camera = walk_counts<Transport::radiance>(scene, {.max_bounces = 1000, .roulette_depth = k}, n);
+        const double expected = k + 1 + std::pow(rho, k + 1) / (1 - rho);
+        CHECK(std::abs(camera.mean_vertices - expected) < 5 * (sd_geometric + 1) / std::sqrt(n));
+        CHECK(camera.fewest == k + 1);
+        CHECK(camera.largest_power <= 1 + 1e-12); // throughput over its survival probability, never more than 1
+    }
+    // The depth limit still ends every walk: max_bounces + 1 surfaces at most.
+    const WalkCounts capped = walk_counts<Transport::radiance>(scene, {.max_bounces = 3, .roulette_depth = 10}, 1000);
+    CHECK(capped.mean_vertices == 4);
+}
