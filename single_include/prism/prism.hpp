@@ -4739,6 +4739,15 @@ public:
         return out;
     }
 
+    /// Surface coordinates of a point of the quad (its crossings come with them already;
+    /// an area light's sampled point asks here): (s, r) along its edges, in [0, 1]^2, its
+    /// edges dp/du and dp/dv.
+    void coordinates(Crossing<T>& c) const noexcept
+    {
+        const Vec3<T> local = c.point - corner_;
+        c = c.with_uv({dot(local, dual_u_), dot(local, dual_v_)}, u_, v_);
+    }
+
     /// A point uniform over the quad for u in the unit square, with density 1 / area.
     [[nodiscard]] SurfacePoint<T> sample_area(const Vec2<T>& u) const noexcept
     {
@@ -6739,15 +6748,26 @@ concept GlossyInterface = requires(const M& material) {
     { material.transmission_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
 };
 
-/// A surface that emits light (an area light): `emitted_radiance()`, its radiance per
-/// channel, the same everywhere on it and in every direction of its front, and
-/// `two_sided`, whether its back emits too. A material declares it with `emits = true`;
-/// one that does not declare it emits nothing.
+/// A surface that emits light (an area light): `emitted_radiance(at)`, its radiance per
+/// channel at a TexturePoint, the same in every direction of its front, and `two_sided`,
+/// whether its back emits too. A material declares it with `emits = true`; one that does
+/// not declare it emits nothing. One whose radiance changes over the surface says so
+/// with `emission_varies = true` (emission_varies()).
 template <class M>
-concept Emission = requires(const M& material) {
-    { material.emitted_radiance() } -> std::same_as<Rgb<typename M::scalar_type>>;
+concept Emission = requires(const M& material, const TexturePoint<typename M::scalar_type>& at) {
+    { material.emitted_radiance(at) } -> std::same_as<Rgb<typename M::scalar_type>>;
     { material.two_sided } -> std::convertible_to<bool>;
 };
+
+/// Whether an emitting material's radiance changes over its surface (`emission_varies`;
+/// false when it does not say): the scene then works out an emitter's power from points
+/// spread over it, and reads the radiance at each point a light sample or photon leaves.
+template <class M>
+[[nodiscard]] consteval bool emission_varies() noexcept
+{
+    if constexpr (requires { M::emission_varies; }) return bool(M::emission_varies);
+    else return false;
+}
 
 /// A material: its scalar type, the three capability flags and validate() (throws
 /// std::invalid_argument for a bad parameter, naming it), and for each flag it sets,
@@ -6760,7 +6780,7 @@ concept Material = requires(const M& material) {
     { M::transmits } -> std::convertible_to<bool>;
     material.validate();
 } && (M::has_diffuse || M::reflects || M::transmits || detail::declares_glossy<M>() || detail::declares_emission<M>()) // a material does at least one thing
-  && (!detail::declares_emission<M>() || Emission<M>) // emits promises emitted_radiance() -> Rgb<T> and two_sided
+  && (!detail::declares_emission<M>() || Emission<M>) // emits promises emitted_radiance(TexturePoint) -> Rgb<T> and two_sided
   && (!detail::declares_glossy<M>() || GlossyLobe<M>) // has_glossy promises glossy(GlossyQuery) -> a Bsdf of the same scalar type
   && (!detail::declares_glossy<M>() || (!M::has_diffuse && !M::reflects)) // a glossy lobe holds all of its material's scattering
   && (!detail::declares_glossy<M>() || !M::transmits || GlossyInterface<M>) // a glossy interface promises refractive_index() and transmission_tint()
@@ -7237,7 +7257,10 @@ template <Material M>
 {
     using T = typename M::scalar_type;
     if constexpr (emits<M>) {
-        if (hit.entering || material.two_sided) return material.emitted_radiance();
+        if (hit.entering || material.two_sided) {
+            if constexpr (emission_varies<M>()) return material.emitted_radiance(texture_point(hit));
+            else return material.emitted_radiance(TexturePoint<T>{hit.point});
+        }
     }
     (void)material, (void)hit;
     return Rgb<T>(T(0));
@@ -11116,6 +11139,8 @@ template <class SlotT>
 struct SlotEmitters<SlotT, true> {
     static_assert(AreaSampled<surface_t<typename SlotT::shape_type>>,
                   "an emitting material needs a shape with an area to draw light from: a Sphere, Quad, Disk or TriangleMesh");
+    static_assert(!reads_coordinates<typename SlotT::material_type>() || HasCoordinates<typename SlotT::shape_type>,
+                  "an emitting pattern read by surface coordinates needs a Sphere, Quad or Disk: a mesh's coordinates come only with a ray's crossing");
     std::vector<surface_t<typename SlotT::shape_type>> surfaces; ///< per object of the slot
     std::vector<typename SlotT::scalar_type> probability;       ///< per object: its chance of being picked
 };
@@ -11128,6 +11153,21 @@ struct EmitterTable {
     AliasTable<T> pick;           ///< by the mean of each power's channels
     Rgb<T> power{T(0)};           ///< all of it
 };
+
+/// Where an emitting material is read at a point drawn on its shape: the point, and its
+/// surface coordinates where the material reads them.
+template <class M, class S, Scalar T>
+[[nodiscard]] TexturePoint<T> emission_point(const S& shape, const SurfacePoint<T>& s) noexcept
+{
+    if constexpr (reads_coordinates<M>()) {
+        Crossing<T> c = Crossing<T>::flat(T(0), s.point, Vec3<T>(T(0)), s.normal, true);
+        add_coordinates(shape, c);
+        return {s.point, c.uv, T(0)};
+    } else {
+        (void)shape;
+        return {s.point, Vec2<T>(T(0)), T(0)};
+    }
+}
 
 } // namespace detail
 
@@ -11157,7 +11197,8 @@ public:
         const detail::ObjectKey key = table.keys[pick.index];
         return dispatch<SceneT::slot_count>(key.slot, [&]<std::size_t I>(Index<I>) -> LightSample<T> {
             if constexpr (SceneT::template slot_emits<I>) {
-                const auto& material = scene_->template object_at<I>(key.index).material;
+                const auto& object = scene_->template object_at<I>(key.index);
+                const auto& material = object.material;
                 const auto& surface = std::get<I>(scene_->slot_emitters_).surfaces[key.index];
                 const SurfacePoint<T> s = sample_toward(surface, p, Vec2<T>(pick.rest, u.y));
                 Vec3<T> wi = s.point - p;
@@ -11166,7 +11207,9 @@ public:
                 const T pdf = s.pdf * pick.probability;
                 const bool front = material.two_sided || dot(s.normal, wi) < T(0);
                 if (!(pdf > T(0)) || !is_finite(pdf) || !(distance > T(0))) return {wi, distance, Rgb<T>(T(0)), T(1)};
-                return {wi, distance, front ? material.emitted_radiance() / pdf : Rgb<T>(T(0)), pdf};
+                if (!front) return {wi, distance, Rgb<T>(T(0)), pdf};
+                using M = std::remove_cvref_t<decltype(material)>;
+                return {wi, distance, material.emitted_radiance(detail::emission_point<M>(object.shape, s)) / pdf, pdf};
             } else {
                 return {};
             }
@@ -11236,6 +11279,15 @@ public:
                     if (two_sided && rng.uniform<T>() < T(0.5)) n = -n;
                     const Vec3<T> w = cosine_hemisphere(n, rng);
                     // power_e / (q_e power): 1 where the table's weights are the powers' own.
+                    // Where the radiance varies, the point's own: pi L(x) A / (q_e power),
+                    // whose mean over the area is the emitter's power however its mean
+                    // radiance was estimated.
+                    using M = std::remove_cvref_t<decltype(object.material)>;
+                    if constexpr (emission_varies<M>()) {
+                        const T sides = two_sided ? T(2) : T(1);
+                        const Rgb<T> radiance = object.material.emitted_radiance(detail::emission_point<M>(object.shape, s));
+                        return {spawn_ray(s.point, error, s.normal, w), safe(radiance * (pi<T> * surface.area() * sides / pick.probability) / table.power)};
+                    }
                     const Rgb<T> weight = table.powers[pick.index] / (pick.probability * table.power);
                     return {spawn_ray(s.point, error, s.normal, w), safe(weight)};
                 }
@@ -11247,7 +11299,8 @@ public:
                 const Vec3<T> w = cone.cos_half_angle <= T(-1) ? uniform_sphere(u1, u2) : uniform_cone(cone.axis, cone.cos_half_angle, u1, u2);
                 const T cos = dot(w, s.normal);
                 const T emitting = two_sided ? std::abs(cos) : std::max(cos, T(0));
-                const Rgb<T> weight = object.material.emitted_radiance() * (emitting * omega / (s.pdf * pick.probability)) / aim.power;
+                using M = std::remove_cvref_t<decltype(object.material)>;
+                const Rgb<T> weight = object.material.emitted_radiance(detail::emission_point<M>(object.shape, s)) * (emitting * omega / (s.pdf * pick.probability)) / aim.power;
                 return {spawn_ray(s.point, error, s.normal, w), safe(weight)};
             } else {
                 return {};
@@ -11739,6 +11792,27 @@ private:
         else return area_lights();
     }
 
+    /// An emitter's radiance over its surface: its own where it is the same everywhere,
+    /// else the mean of 64 x 64 points, one in each cell of a grid over the unit square
+    /// its surface maps uniformly onto its area (a point's radiance costs a texture read:
+    /// 4096 of them once, when the scene is built).
+    template <class M, class S, class Surface>
+    [[nodiscard]] static Rgb<T> mean_emitted_radiance(const M& material, const S& shape, const Surface& surface) noexcept
+    {
+        if constexpr (!emission_varies<M>()) {
+            return (void)shape, (void)surface, material.emitted_radiance(TexturePoint<T>{});
+        } else {
+            constexpr int n = 64;
+            Rgb<double> sum(0.0);
+            for (int i = 0; i < n; ++i)
+                for (int j = 0; j < n; ++j) {
+                    const SurfacePoint<T> s = surface.sample_area(Vec2<T>((T(i) + T(0.5)) / T(n), (T(j) + T(0.5)) / T(n)));
+                    sum += Rgb<double>(material.emitted_radiance(detail::emission_point<M>(shape, s)));
+                }
+            return Rgb<T>(sum / double(n * n));
+        }
+    }
+
     /// The table of emitting objects by power, and each emitting slot's surfaces.
     void build_emitters()
     {
@@ -11752,10 +11826,11 @@ private:
                         detail::throw_invalid("an emitting object must be bounded: object ", k, " of slot ", I, " has no finite bounds");
                     mine.surfaces.push_back(surface_of(list[k].shape));
                     const T sides = list[k].material.two_sided ? T(2) : T(1);
-                    const Rgb<T> power = list[k].material.emitted_radiance() * (pi<T> * mine.surfaces.back().area() * sides);
+                    const Rgb<T> radiance = mean_emitted_radiance(list[k].material, list[k].shape, mine.surfaces.back());
+                    const Rgb<T> power = radiance * (pi<T> * mine.surfaces.back().area() * sides);
                     if (!is_finite(power))
                         detail::throw_invalid("the power pi L A of emitting object ", k, " of slot ", I, " overflows: radiance ",
-                                              detail::describe(list[k].material.emitted_radiance()), ", area ", mine.surfaces.back().area());
+                                              detail::describe(radiance), ", area ", mine.surfaces.back().area());
                     emitter_table_.keys.push_back({std::uint32_t(I), k});
                     emitter_table_.powers.push_back(power);
                     emitter_table_.power += power;
@@ -14203,10 +14278,15 @@ static_assert(FresnelPolicy<ExactFresnel, float> && FresnelPolicy<SchlickFresnel
 // is 1 exactly for rho = 1 (to the precision of the table of E, 1e-3).
 
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <concepts>
 #include <optional>
+#include <type_traits>
 #include <utility>
+#include <variant>
+#include <vector>
 
 namespace prism {
 
@@ -14283,6 +14363,30 @@ private:
     T inside_reflectance_ = T(0);
 };
 
+/// What a coat lets in at one roughness: a table's, or a blend of the two tables around
+/// it (a coat whose roughness is a texture). Both of what it gives are linear in the
+/// tables, so E = 1 - T still holds and a white base under it keeps all the light.
+template <Scalar T>
+struct CoatTransmissionAt {
+    const CoatTransmission<T>* low;  ///< the table at or below the roughness
+    const CoatTransmission<T>* high; ///< the table above it (low itself where there is one table)
+    T weight = T(0);                 ///< how far toward `high`, in [0, 1]
+
+    /// T(mu), blended.
+    [[nodiscard]] T at(T mu) const noexcept
+    {
+        const T a = low->at(mu);
+        return weight == T(0) ? a : a + (high->at(mu) - a) * weight;
+    }
+
+    /// F_in, blended.
+    [[nodiscard]] T inside_reflectance() const noexcept
+    {
+        const T a = low->inside_reflectance();
+        return weight == T(0) ? a : a + (high->inside_reflectance() - a) * weight;
+    }
+};
+
 /// The lobe of a coated diffuse surface at one point (see the file's comment). Sampled
 /// by its two parts, the coat with the probability of its share of the albedo at wo.
 template <Scalar T>
@@ -14291,9 +14395,10 @@ public:
     /// The precision of the lobe.
     using scalar_type = T;
 
-    /// The lobe of a base of albedo rho under `coat`, whose `transmission` table it keeps by reference.
-    CoatedLobe(const Rgb<T>& rho, const Coat<T>& coat, const CoatTransmission<T>& transmission) noexcept
-        : ggx_(TrowbridgeReitz<T>::from(Roughness<T>(coat.roughness))), eta_(coat.ior), transmission_(&transmission)
+    /// The lobe of a base of albedo rho under `coat`, whose `transmission` (tables it
+    /// refers to) is the coat's at its roughness.
+    CoatedLobe(const Rgb<T>& rho, const Coat<T>& coat, CoatTransmissionAt<T> transmission) noexcept
+        : ggx_(TrowbridgeReitz<T>::from(Roughness<T>(coat.roughness))), eta_(coat.ior), transmission_(transmission)
     {
         const T f_in = transmission.inside_reflectance();
         base_ = rho / ((Rgb<T>(T(1)) - rho * f_in) * (pi<T> * eta_ * eta_));
@@ -14307,7 +14412,7 @@ public:
     [[nodiscard]] Rgb<T> f(const Vec3<T>& wo, const Vec3<T>& wi, Transport = Transport::radiance) const noexcept
     {
         if (!(wo.z > T(0)) || !(wi.z > T(0))) return Rgb<T>(T(0));
-        return base_ * (transmission_->at(wo.z) * transmission_->at(wi.z)) + Rgb<T>(coat_f(wo, wi));
+        return base_ * (transmission_.at(wo.z) * transmission_.at(wi.z)) + Rgb<T>(coat_f(wo, wi));
     }
 
     /// The density of sample's non-delta directions.
@@ -14345,7 +14450,7 @@ public:
     }
 
     /// The coat's albedo for wo, 1 - T(wo.z): what a Whitted mirror ray carries for it.
-    [[nodiscard]] Rgb<T> mirror_albedo(const Vec3<T>& wo) const noexcept { return Rgb<T>(T(1) - transmission_->at(wo.z)); }
+    [[nodiscard]] Rgb<T> mirror_albedo(const Vec3<T>& wo) const noexcept { return Rgb<T>(T(1) - transmission_.at(wo.z)); }
 
 private:
     /// The coat's microfacet reflection (0 for a smooth coat: its mirror is a delta).
@@ -14370,21 +14475,25 @@ private:
     /// (E against the base's T(mu) times the mean of its escaping albedo).
     [[nodiscard]] T coat_share(T mu) const noexcept
     {
-        const T t = transmission_->at(mu), e = T(1) - t;
+        const T t = transmission_.at(mu), e = T(1) - t;
         const T base = t * (escape_.x + escape_.y + escape_.z) / T(3);
         return e + base > T(0) ? e / (e + base) : T(1);
     }
 
     TrowbridgeReitz<T> ggx_;
     T eta_;
-    const CoatTransmission<T>* transmission_;
+    CoatTransmissionAt<T> transmission_;
     Rgb<T> base_{T(0)};   // rho / (pi eta^2 (1 - rho F_in))
     Rgb<T> escape_{T(0)}; // rho (1 - F_in) / (1 - rho F_in): the base's albedo through the coat, per unit entering
 };
 
 /// A Lambertian base of albedo `albedo` (a texture) under a clear coat (see the file's
-/// comment): plastic, varnish, glaze.
-template <Scalar T = float, Texture Albedo = Solid<T>>
+/// comment): plastic, varnish, glaze. The coat's roughness is its Coat's, or a one-number
+/// texture (`CoatRoughness`, an ImageTexture read by value()) that varies over the
+/// surface: worn varnish, a glaze rubbed matte in places. What such a coat lets in is
+/// tabulated at roughness 0, 1/16, ..., 1 and blended between the two tables around the
+/// point's (17 tables of 64 cosines, built once, about 30 ms).
+template <Scalar T = float, Texture Albedo = Solid<T>, class CoatRoughness = T>
 class CoatedDiffuse {
 public:
     /// The precision of the material.
@@ -14397,30 +14506,62 @@ public:
     static constexpr bool transmits = false;
     /// A glossy lobe: coat and base.
     static constexpr bool has_glossy = true;
+    /// Whether the coat's roughness is a texture.
+    static constexpr bool textured_coat = ScalarTexture<CoatRoughness>;
+    static_assert(textured_coat || std::same_as<CoatRoughness, T>, "a CoatedDiffuse's coat roughness is its Coat's (T) or a one-number texture");
     /// Whether a texture of it reads surface coordinates (reads_coordinates).
-    static constexpr bool reads_coordinates = texture_reads_coordinates<Albedo>;
+    static constexpr bool reads_coordinates = texture_reads_coordinates<Albedo> || textured_coat;
+    /// Roughness steps between a textured coat's tables.
+    static constexpr int coat_levels = 16;
 
     /// A base of `albedo` under `coat`; throws std::invalid_argument, naming the parameter, for a bad albedo or coat.
-    explicit CoatedDiffuse(Albedo albedo = {}, Coat<T> coat = {}) : albedo_(std::move(albedo)), coat_(checked(coat)), transmission_(coat_)
+    explicit CoatedDiffuse(Albedo albedo = {}, Coat<T> coat = {})
+        requires(!textured_coat)
+        : albedo_(std::move(albedo)), coat_(checked(coat)), transmission_(coat_)
     {
         validate();
+    }
+
+    /// A base of `albedo` under a coat of index coat.ior whose roughness is the texture
+    /// `roughness` (values in [0, 1]; coat.roughness is not read); throws
+    /// std::invalid_argument, naming the parameter, for a bad albedo, index or texture.
+    CoatedDiffuse(Albedo albedo, Coat<T> coat, CoatRoughness roughness)
+        requires textured_coat
+        : albedo_(std::move(albedo)), coat_(checked(coat)), roughness_(std::move(roughness))
+    {
+        validate();
+        transmission_.reserve(coat_levels + 1);
+        for (int k = 0; k <= coat_levels; ++k) transmission_.emplace_back(Coat<T>{coat_.ior, T(k) / T(coat_levels)});
     }
 
     /// The lobe at a point.
     [[nodiscard]] CoatedLobe<T> glossy(const GlossyQuery<T>& q) const noexcept
     {
-        return {albedo_at(albedo_, q.texture_point()), coat_, transmission_};
+        const Rgb<T> rho = albedo_at(albedo_, q.texture_point());
+        if constexpr (textured_coat) {
+            const T r = clamp(roughness_.value(q.texture_point()), T(0), T(1));
+            const T x = r * T(coat_levels);
+            const int k = std::min(int(x), coat_levels - 1);
+            const auto i = std::size_t(k);
+            return {rho, Coat<T>{coat_.ior, r}, CoatTransmissionAt<T>{&transmission_[i], &transmission_[i + 1], x - T(k)}};
+        } else {
+            return {rho, coat_, CoatTransmissionAt<T>{&transmission_, &transmission_, T(0)}};
+        }
     }
 
     /// The base's albedo texture.
     [[nodiscard]] const Albedo& albedo() const noexcept { return albedo_; }
-    /// The coat.
+    /// The coat (its roughness unread where the coat's roughness is a texture).
     [[nodiscard]] const Coat<T>& coat() const noexcept { return coat_; }
     /// What the coat lets in.
-    [[nodiscard]] const CoatTransmission<T>& transmission() const noexcept { return transmission_; }
+    [[nodiscard]] const CoatTransmission<T>& transmission() const noexcept
+        requires(!textured_coat)
+    {
+        return transmission_;
+    }
 
     /// Throws std::invalid_argument, naming the parameter, for a bad albedo (above 1 in
-    /// a channel, where it is Solid) or coat.
+    /// a channel, where it is Solid), coat or coat roughness texture.
     constexpr void validate() const
     {
         albedo_.validate();
@@ -14429,6 +14570,7 @@ public:
                 detail::throw_invalid("CoatedDiffuse albedo must be <= 1 in every channel, got ", detail::describe(albedo_.color));
         }
         coat_.validate();
+        if constexpr (textured_coat) validate_roughness(roughness_, "CoatedDiffuse coat");
     }
 
 private:
@@ -14440,7 +14582,8 @@ private:
 
     Albedo albedo_;
     Coat<T> coat_;
-    CoatTransmission<T> transmission_;
+    [[no_unique_address]] std::conditional_t<textured_coat, CoatRoughness, std::monostate> roughness_{};
+    std::conditional_t<textured_coat, std::vector<CoatTransmission<T>>, CoatTransmission<T>> transmission_;
 };
 
 static_assert(Material<CoatedDiffuse<float>>);
@@ -15091,14 +15234,28 @@ static_assert(Material<DispersiveDielectric<double, Cauchy<double>>>);
 // Emissive: a surface that gives off light (an area light), and reflects none.
 
 
+#include <concepts>
+
 namespace prism {
+
+/// An Emissive's pattern when it has none: the same radiance everywhere.
+struct Unpatterned {};
 
 /// A surface emitting `radiance` (W/(m^2 sr), per channel) from its front (the side its
 /// outward normal points to; a Quad's or Disk's normal side), and from its back too when
 /// `two_sided`: any bounded Sphere, Quad, Disk or TriangleMesh with this material is an
 /// area light. It reflects nothing: a lamp's black body, seen where it is not lit.
-template <Scalar T = float>
+///
+/// With a `pattern` (a Texture: an image, read by the surface's coordinates, or a solid
+/// pattern of the point), the radiance at a point is `radiance` times the pattern's
+/// colour there: a lit sign, a window seen from inside. A pattern read by surface
+/// coordinates needs a Sphere, Quad or Disk (a mesh's coordinates come only with a ray's
+/// crossing). The scene finds such a light's power from the mean of 64 x 64 points
+/// stratified over its area; light samples and photons read the pattern where they leave.
+template <Scalar T = float, class Pattern = Unpatterned>
 struct Emissive {
+    static_assert(std::same_as<Pattern, Unpatterned> || Texture<Pattern>, "an Emissive's pattern is a Texture (an ImageTexture, Checker, ...)");
+
     /// The precision of the material.
     using scalar_type = T;
     /// No diffuse lobe.
@@ -15109,15 +15266,29 @@ struct Emissive {
     static constexpr bool transmits = false;
     /// An area light.
     static constexpr bool emits = true;
+    /// Whether its radiance changes over the surface (it has a pattern).
+    static constexpr bool emission_varies = !std::same_as<Pattern, Unpatterned>;
+    /// Whether its pattern reads surface coordinates (reads_coordinates).
+    static constexpr bool reads_coordinates = emission_varies && texture_reads_coordinates<Pattern>;
 
-    Rgb<T> radiance{T(1)}; ///< the radiance leaving every point in every direction of the front (W/(m^2 sr))
+    Rgb<T> radiance{T(1)}; ///< the radiance leaving every point in every direction of the front (W/(m^2 sr)), times the pattern
     bool two_sided = false; ///< whether the back emits as well
+    [[no_unique_address]] Pattern pattern{}; ///< the colour the radiance is multiplied by over the surface (Unpatterned: 1)
 
-    /// The emitted radiance.
-    [[nodiscard]] constexpr Rgb<T> emitted_radiance() const noexcept { return radiance; }
+    /// The emitted radiance at `at`: radiance, times the pattern there.
+    [[nodiscard]] constexpr Rgb<T> emitted_radiance(const TexturePoint<T>& at) const noexcept
+    {
+        if constexpr (emission_varies) return radiance * albedo_at(pattern, at);
+        else return (void)at, radiance;
+    }
 
-    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite radiance.
-    constexpr void validate() const { detail::require_non_negative("Emissive radiance", radiance); }
+    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite
+    /// radiance, or a bad pattern.
+    constexpr void validate() const
+    {
+        detail::require_non_negative("Emissive radiance", radiance);
+        if constexpr (emission_varies) pattern.validate();
+    }
 };
 
 static_assert(Material<Emissive<float>>);

@@ -1,9 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include <prism/material/coated_diffuse.hpp>
+#include <prism/material/image_texture.hpp>
 
 #include "../bsdf_checks.hpp"
 
 #include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
 
 using prism::Vec3;
 
@@ -79,4 +84,46 @@ TEST_CASE("coated diffuse: sampling follows the pdf, weights are f cos / pdf, re
     CHECK(deltas < 100);
     CHECK_THROWS_WITH_AS(coated(1.2, 0.1), doctest::Contains("CoatedDiffuse albedo"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(coated(0.5, 0.1, 0.9), doctest::Contains("Coat ior"), std::invalid_argument);
+}
+
+TEST_CASE("coated diffuse under a coat of textured roughness: the tables' coat at their levels, close between them, white still keeps all")
+{
+    using prism::ImageTexture;
+    using Textured = prism::CoatedDiffuse<double, prism::Solid<double>, ImageTexture<double>>;
+    static_assert(prism::Material<Textured> && prism::reads_coordinates<Textured>());
+    // A 2 x 1 roughness picture, read by nearest texel: r0 on the left (u < 1/2), r1 on the right.
+    const auto coat_of = [](double rho, double r0, double r1) {
+        const std::vector<float> texels{float(r0), float(r1)};
+        return Textured({.color = prism::Rgb<double>(rho)}, {.ior = 1.5, .roughness = 0.9},
+                        ImageTexture<double>(2, 1, 1, texels, {prism::Wrap::clamp, prism::TextureFilter::nearest}));
+    };
+    const auto at = [](double u) { return prism::GlossyQuery<double>{.point = {}, .uv = {u, 0.5}}; };
+    const auto textured = coat_of(0.6, 0.25, 0.37); // 0.25 is a table's level (4 / 16); 0.37 lies between two
+    double worst_level = 0, worst_between = 0;
+    for (const double theta_o : {0.0, 40.0, 75.0})
+        for (const double theta_i : {10.0, 45.0, 80.0})
+            for (const double phi : {0.0, 120.0, 180.0}) {
+                const Vec3<double> wo = test::polar(theta_o, 0), wi = test::polar(theta_i, phi);
+                const auto rel = [&](double r, double u) {
+                    const double a = textured.glossy(at(u)).f(wo, wi).x, b = coated(0.6, double(float(r))).glossy({}).f(wo, wi).x;
+                    return std::abs(a - b) / b;
+                };
+                worst_level = std::max(worst_level, rel(0.25, 0.25));
+                worst_between = std::max(worst_between, rel(0.37, 0.75));
+            }
+    MESSAGE("largest relative difference of f from the untextured coat: ", worst_level, " at a level, ", worst_between, " between levels");
+    CHECK(worst_level < 1e-6);
+    CHECK(worst_between < 0.01);
+    // A white base under it reflects all the light wherever it is read, a grey one as the blended tables say.
+    for (const double u : {0.25, 0.75})
+        for (const double theta : {0.0, 60.0}) {
+            CAPTURE(u);
+            CAPTURE(theta);
+            const test::LobeSampling s = test::sample_lobe(coat_of(1, 0.25, 0.37).glossy(at(u)), test::polar(theta, 20), 400000);
+            CHECK(s.albedo == doctest::Approx(1).epsilon(4e-3));
+        }
+    // Sampling still follows the pdf between levels.
+    test::check_lobe_sampling(textured.glossy(at(0.75)), test::polar(45, 0), 3e-3);
+    CHECK_THROWS_WITH_AS(coat_of(0.5, 0.2, 1.5), doctest::Contains("CoatedDiffuse coat roughness texture's values must be in [0, 1], got up to 1.5"),
+                         std::invalid_argument);
 }

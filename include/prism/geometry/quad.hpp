@@ -95,6 +95,15 @@ public:
         return out;
     }
 
+    /// Surface coordinates of a point of the quad (its crossings come with them already;
+    /// an area light's sampled point asks here): (s, r) along its edges, in [0, 1]^2, its
+    /// edges dp/du and dp/dv.
+    void coordinates(Crossing<T>& c) const noexcept
+    {
+        const Vec3<T> local = c.point - corner_;
+        c = c.with_uv({dot(local, dual_u_), dot(local, dual_v_)}, u_, v_);
+    }
+
     /// A point uniform over the quad for u in the unit square, with density 1 / area.
     [[nodiscard]] SurfacePoint<T> sample_area(const Vec2<T>& u) const noexcept
     {

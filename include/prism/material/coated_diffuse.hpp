@@ -24,10 +24,15 @@
 #include <prism/optics/fresnel.hpp>
 #include <prism/optics/microfacet.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <concepts>
 #include <optional>
+#include <type_traits>
 #include <utility>
+#include <variant>
+#include <vector>
 
 namespace prism {
 
@@ -104,6 +109,30 @@ private:
     T inside_reflectance_ = T(0);
 };
 
+/// What a coat lets in at one roughness: a table's, or a blend of the two tables around
+/// it (a coat whose roughness is a texture). Both of what it gives are linear in the
+/// tables, so E = 1 - T still holds and a white base under it keeps all the light.
+template <Scalar T>
+struct CoatTransmissionAt {
+    const CoatTransmission<T>* low;  ///< the table at or below the roughness
+    const CoatTransmission<T>* high; ///< the table above it (low itself where there is one table)
+    T weight = T(0);                 ///< how far toward `high`, in [0, 1]
+
+    /// T(mu), blended.
+    [[nodiscard]] T at(T mu) const noexcept
+    {
+        const T a = low->at(mu);
+        return weight == T(0) ? a : a + (high->at(mu) - a) * weight;
+    }
+
+    /// F_in, blended.
+    [[nodiscard]] T inside_reflectance() const noexcept
+    {
+        const T a = low->inside_reflectance();
+        return weight == T(0) ? a : a + (high->inside_reflectance() - a) * weight;
+    }
+};
+
 /// The lobe of a coated diffuse surface at one point (see the file's comment). Sampled
 /// by its two parts, the coat with the probability of its share of the albedo at wo.
 template <Scalar T>
@@ -112,9 +141,10 @@ public:
     /// The precision of the lobe.
     using scalar_type = T;
 
-    /// The lobe of a base of albedo rho under `coat`, whose `transmission` table it keeps by reference.
-    CoatedLobe(const Rgb<T>& rho, const Coat<T>& coat, const CoatTransmission<T>& transmission) noexcept
-        : ggx_(TrowbridgeReitz<T>::from(Roughness<T>(coat.roughness))), eta_(coat.ior), transmission_(&transmission)
+    /// The lobe of a base of albedo rho under `coat`, whose `transmission` (tables it
+    /// refers to) is the coat's at its roughness.
+    CoatedLobe(const Rgb<T>& rho, const Coat<T>& coat, CoatTransmissionAt<T> transmission) noexcept
+        : ggx_(TrowbridgeReitz<T>::from(Roughness<T>(coat.roughness))), eta_(coat.ior), transmission_(transmission)
     {
         const T f_in = transmission.inside_reflectance();
         base_ = rho / ((Rgb<T>(T(1)) - rho * f_in) * (pi<T> * eta_ * eta_));
@@ -128,7 +158,7 @@ public:
     [[nodiscard]] Rgb<T> f(const Vec3<T>& wo, const Vec3<T>& wi, Transport = Transport::radiance) const noexcept
     {
         if (!(wo.z > T(0)) || !(wi.z > T(0))) return Rgb<T>(T(0));
-        return base_ * (transmission_->at(wo.z) * transmission_->at(wi.z)) + Rgb<T>(coat_f(wo, wi));
+        return base_ * (transmission_.at(wo.z) * transmission_.at(wi.z)) + Rgb<T>(coat_f(wo, wi));
     }
 
     /// The density of sample's non-delta directions.
@@ -166,7 +196,7 @@ public:
     }
 
     /// The coat's albedo for wo, 1 - T(wo.z): what a Whitted mirror ray carries for it.
-    [[nodiscard]] Rgb<T> mirror_albedo(const Vec3<T>& wo) const noexcept { return Rgb<T>(T(1) - transmission_->at(wo.z)); }
+    [[nodiscard]] Rgb<T> mirror_albedo(const Vec3<T>& wo) const noexcept { return Rgb<T>(T(1) - transmission_.at(wo.z)); }
 
 private:
     /// The coat's microfacet reflection (0 for a smooth coat: its mirror is a delta).
@@ -191,21 +221,25 @@ private:
     /// (E against the base's T(mu) times the mean of its escaping albedo).
     [[nodiscard]] T coat_share(T mu) const noexcept
     {
-        const T t = transmission_->at(mu), e = T(1) - t;
+        const T t = transmission_.at(mu), e = T(1) - t;
         const T base = t * (escape_.x + escape_.y + escape_.z) / T(3);
         return e + base > T(0) ? e / (e + base) : T(1);
     }
 
     TrowbridgeReitz<T> ggx_;
     T eta_;
-    const CoatTransmission<T>* transmission_;
+    CoatTransmissionAt<T> transmission_;
     Rgb<T> base_{T(0)};   // rho / (pi eta^2 (1 - rho F_in))
     Rgb<T> escape_{T(0)}; // rho (1 - F_in) / (1 - rho F_in): the base's albedo through the coat, per unit entering
 };
 
 /// A Lambertian base of albedo `albedo` (a texture) under a clear coat (see the file's
-/// comment): plastic, varnish, glaze.
-template <Scalar T = float, Texture Albedo = Solid<T>>
+/// comment): plastic, varnish, glaze. The coat's roughness is its Coat's, or a one-number
+/// texture (`CoatRoughness`, an ImageTexture read by value()) that varies over the
+/// surface: worn varnish, a glaze rubbed matte in places. What such a coat lets in is
+/// tabulated at roughness 0, 1/16, ..., 1 and blended between the two tables around the
+/// point's (17 tables of 64 cosines, built once, about 30 ms).
+template <Scalar T = float, Texture Albedo = Solid<T>, class CoatRoughness = T>
 class CoatedDiffuse {
 public:
     /// The precision of the material.
@@ -218,30 +252,62 @@ public:
     static constexpr bool transmits = false;
     /// A glossy lobe: coat and base.
     static constexpr bool has_glossy = true;
+    /// Whether the coat's roughness is a texture.
+    static constexpr bool textured_coat = ScalarTexture<CoatRoughness>;
+    static_assert(textured_coat || std::same_as<CoatRoughness, T>, "a CoatedDiffuse's coat roughness is its Coat's (T) or a one-number texture");
     /// Whether a texture of it reads surface coordinates (reads_coordinates).
-    static constexpr bool reads_coordinates = texture_reads_coordinates<Albedo>;
+    static constexpr bool reads_coordinates = texture_reads_coordinates<Albedo> || textured_coat;
+    /// Roughness steps between a textured coat's tables.
+    static constexpr int coat_levels = 16;
 
     /// A base of `albedo` under `coat`; throws std::invalid_argument, naming the parameter, for a bad albedo or coat.
-    explicit CoatedDiffuse(Albedo albedo = {}, Coat<T> coat = {}) : albedo_(std::move(albedo)), coat_(checked(coat)), transmission_(coat_)
+    explicit CoatedDiffuse(Albedo albedo = {}, Coat<T> coat = {})
+        requires(!textured_coat)
+        : albedo_(std::move(albedo)), coat_(checked(coat)), transmission_(coat_)
     {
         validate();
+    }
+
+    /// A base of `albedo` under a coat of index coat.ior whose roughness is the texture
+    /// `roughness` (values in [0, 1]; coat.roughness is not read); throws
+    /// std::invalid_argument, naming the parameter, for a bad albedo, index or texture.
+    CoatedDiffuse(Albedo albedo, Coat<T> coat, CoatRoughness roughness)
+        requires textured_coat
+        : albedo_(std::move(albedo)), coat_(checked(coat)), roughness_(std::move(roughness))
+    {
+        validate();
+        transmission_.reserve(coat_levels + 1);
+        for (int k = 0; k <= coat_levels; ++k) transmission_.emplace_back(Coat<T>{coat_.ior, T(k) / T(coat_levels)});
     }
 
     /// The lobe at a point.
     [[nodiscard]] CoatedLobe<T> glossy(const GlossyQuery<T>& q) const noexcept
     {
-        return {albedo_at(albedo_, q.texture_point()), coat_, transmission_};
+        const Rgb<T> rho = albedo_at(albedo_, q.texture_point());
+        if constexpr (textured_coat) {
+            const T r = clamp(roughness_.value(q.texture_point()), T(0), T(1));
+            const T x = r * T(coat_levels);
+            const int k = std::min(int(x), coat_levels - 1);
+            const auto i = std::size_t(k);
+            return {rho, Coat<T>{coat_.ior, r}, CoatTransmissionAt<T>{&transmission_[i], &transmission_[i + 1], x - T(k)}};
+        } else {
+            return {rho, coat_, CoatTransmissionAt<T>{&transmission_, &transmission_, T(0)}};
+        }
     }
 
     /// The base's albedo texture.
     [[nodiscard]] const Albedo& albedo() const noexcept { return albedo_; }
-    /// The coat.
+    /// The coat (its roughness unread where the coat's roughness is a texture).
     [[nodiscard]] const Coat<T>& coat() const noexcept { return coat_; }
     /// What the coat lets in.
-    [[nodiscard]] const CoatTransmission<T>& transmission() const noexcept { return transmission_; }
+    [[nodiscard]] const CoatTransmission<T>& transmission() const noexcept
+        requires(!textured_coat)
+    {
+        return transmission_;
+    }
 
     /// Throws std::invalid_argument, naming the parameter, for a bad albedo (above 1 in
-    /// a channel, where it is Solid) or coat.
+    /// a channel, where it is Solid), coat or coat roughness texture.
     constexpr void validate() const
     {
         albedo_.validate();
@@ -250,6 +316,7 @@ public:
                 detail::throw_invalid("CoatedDiffuse albedo must be <= 1 in every channel, got ", detail::describe(albedo_.color));
         }
         coat_.validate();
+        if constexpr (textured_coat) validate_roughness(roughness_, "CoatedDiffuse coat");
     }
 
 private:
@@ -261,7 +328,8 @@ private:
 
     Albedo albedo_;
     Coat<T> coat_;
-    CoatTransmission<T> transmission_;
+    [[no_unique_address]] std::conditional_t<textured_coat, CoatRoughness, std::monostate> roughness_{};
+    std::conditional_t<textured_coat, std::vector<CoatTransmission<T>>, CoatTransmission<T>> transmission_;
 };
 
 static_assert(Material<CoatedDiffuse<float>>);

@@ -66,7 +66,10 @@ template <Material M>
 {
     using T = typename M::scalar_type;
     if constexpr (emits<M>) {
-        if (hit.entering || material.two_sided) return material.emitted_radiance();
+        if (hit.entering || material.two_sided) {
+            if constexpr (emission_varies<M>()) return material.emitted_radiance(texture_point(hit));
+            else return material.emitted_radiance(TexturePoint<T>{hit.point});
+        }
     }
     (void)material, (void)hit;
     return Rgb<T>(T(0));

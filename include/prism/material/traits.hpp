@@ -168,15 +168,26 @@ concept GlossyInterface = requires(const M& material) {
     { material.transmission_tint() } -> std::same_as<Rgb<typename M::scalar_type>>;
 };
 
-/// A surface that emits light (an area light): `emitted_radiance()`, its radiance per
-/// channel, the same everywhere on it and in every direction of its front, and
-/// `two_sided`, whether its back emits too. A material declares it with `emits = true`;
-/// one that does not declare it emits nothing.
+/// A surface that emits light (an area light): `emitted_radiance(at)`, its radiance per
+/// channel at a TexturePoint, the same in every direction of its front, and `two_sided`,
+/// whether its back emits too. A material declares it with `emits = true`; one that does
+/// not declare it emits nothing. One whose radiance changes over the surface says so
+/// with `emission_varies = true` (emission_varies()).
 template <class M>
-concept Emission = requires(const M& material) {
-    { material.emitted_radiance() } -> std::same_as<Rgb<typename M::scalar_type>>;
+concept Emission = requires(const M& material, const TexturePoint<typename M::scalar_type>& at) {
+    { material.emitted_radiance(at) } -> std::same_as<Rgb<typename M::scalar_type>>;
     { material.two_sided } -> std::convertible_to<bool>;
 };
+
+/// Whether an emitting material's radiance changes over its surface (`emission_varies`;
+/// false when it does not say): the scene then works out an emitter's power from points
+/// spread over it, and reads the radiance at each point a light sample or photon leaves.
+template <class M>
+[[nodiscard]] consteval bool emission_varies() noexcept
+{
+    if constexpr (requires { M::emission_varies; }) return bool(M::emission_varies);
+    else return false;
+}
 
 /// A material: its scalar type, the three capability flags and validate() (throws
 /// std::invalid_argument for a bad parameter, naming it), and for each flag it sets,
@@ -189,7 +200,7 @@ concept Material = requires(const M& material) {
     { M::transmits } -> std::convertible_to<bool>;
     material.validate();
 } && (M::has_diffuse || M::reflects || M::transmits || detail::declares_glossy<M>() || detail::declares_emission<M>()) // a material does at least one thing
-  && (!detail::declares_emission<M>() || Emission<M>) // emits promises emitted_radiance() -> Rgb<T> and two_sided
+  && (!detail::declares_emission<M>() || Emission<M>) // emits promises emitted_radiance(TexturePoint) -> Rgb<T> and two_sided
   && (!detail::declares_glossy<M>() || GlossyLobe<M>) // has_glossy promises glossy(GlossyQuery) -> a Bsdf of the same scalar type
   && (!detail::declares_glossy<M>() || (!M::has_diffuse && !M::reflects)) // a glossy lobe holds all of its material's scattering
   && (!detail::declares_glossy<M>() || !M::transmits || GlossyInterface<M>) // a glossy interface promises refractive_index() and transmission_tint()

@@ -19,8 +19,10 @@
 #include <prism/core/offset.hpp>
 #include <prism/core/rng.hpp>
 #include <prism/core/sampling.hpp>
+#include <prism/geometry/shape.hpp>
 #include <prism/geometry/surface_point.hpp>
 #include <prism/light/light.hpp>
+#include <prism/material/texture.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/scene/hit.hpp>
 #include <prism/scene/object.hpp>
@@ -51,6 +53,8 @@ template <class SlotT>
 struct SlotEmitters<SlotT, true> {
     static_assert(AreaSampled<surface_t<typename SlotT::shape_type>>,
                   "an emitting material needs a shape with an area to draw light from: a Sphere, Quad, Disk or TriangleMesh");
+    static_assert(!reads_coordinates<typename SlotT::material_type>() || HasCoordinates<typename SlotT::shape_type>,
+                  "an emitting pattern read by surface coordinates needs a Sphere, Quad or Disk: a mesh's coordinates come only with a ray's crossing");
     std::vector<surface_t<typename SlotT::shape_type>> surfaces; ///< per object of the slot
     std::vector<typename SlotT::scalar_type> probability;       ///< per object: its chance of being picked
 };
@@ -63,6 +67,21 @@ struct EmitterTable {
     AliasTable<T> pick;           ///< by the mean of each power's channels
     Rgb<T> power{T(0)};           ///< all of it
 };
+
+/// Where an emitting material is read at a point drawn on its shape: the point, and its
+/// surface coordinates where the material reads them.
+template <class M, class S, Scalar T>
+[[nodiscard]] TexturePoint<T> emission_point(const S& shape, const SurfacePoint<T>& s) noexcept
+{
+    if constexpr (reads_coordinates<M>()) {
+        Crossing<T> c = Crossing<T>::flat(T(0), s.point, Vec3<T>(T(0)), s.normal, true);
+        add_coordinates(shape, c);
+        return {s.point, c.uv, T(0)};
+    } else {
+        (void)shape;
+        return {s.point, Vec2<T>(T(0)), T(0)};
+    }
+}
 
 } // namespace detail
 
@@ -92,7 +111,8 @@ public:
         const detail::ObjectKey key = table.keys[pick.index];
         return dispatch<SceneT::slot_count>(key.slot, [&]<std::size_t I>(Index<I>) -> LightSample<T> {
             if constexpr (SceneT::template slot_emits<I>) {
-                const auto& material = scene_->template object_at<I>(key.index).material;
+                const auto& object = scene_->template object_at<I>(key.index);
+                const auto& material = object.material;
                 const auto& surface = std::get<I>(scene_->slot_emitters_).surfaces[key.index];
                 const SurfacePoint<T> s = sample_toward(surface, p, Vec2<T>(pick.rest, u.y));
                 Vec3<T> wi = s.point - p;
@@ -101,7 +121,9 @@ public:
                 const T pdf = s.pdf * pick.probability;
                 const bool front = material.two_sided || dot(s.normal, wi) < T(0);
                 if (!(pdf > T(0)) || !is_finite(pdf) || !(distance > T(0))) return {wi, distance, Rgb<T>(T(0)), T(1)};
-                return {wi, distance, front ? material.emitted_radiance() / pdf : Rgb<T>(T(0)), pdf};
+                if (!front) return {wi, distance, Rgb<T>(T(0)), pdf};
+                using M = std::remove_cvref_t<decltype(material)>;
+                return {wi, distance, material.emitted_radiance(detail::emission_point<M>(object.shape, s)) / pdf, pdf};
             } else {
                 return {};
             }
@@ -171,6 +193,15 @@ public:
                     if (two_sided && rng.uniform<T>() < T(0.5)) n = -n;
                     const Vec3<T> w = cosine_hemisphere(n, rng);
                     // power_e / (q_e power): 1 where the table's weights are the powers' own.
+                    // Where the radiance varies, the point's own: pi L(x) A / (q_e power),
+                    // whose mean over the area is the emitter's power however its mean
+                    // radiance was estimated.
+                    using M = std::remove_cvref_t<decltype(object.material)>;
+                    if constexpr (emission_varies<M>()) {
+                        const T sides = two_sided ? T(2) : T(1);
+                        const Rgb<T> radiance = object.material.emitted_radiance(detail::emission_point<M>(object.shape, s));
+                        return {spawn_ray(s.point, error, s.normal, w), safe(radiance * (pi<T> * surface.area() * sides / pick.probability) / table.power)};
+                    }
                     const Rgb<T> weight = table.powers[pick.index] / (pick.probability * table.power);
                     return {spawn_ray(s.point, error, s.normal, w), safe(weight)};
                 }
@@ -182,7 +213,8 @@ public:
                 const Vec3<T> w = cone.cos_half_angle <= T(-1) ? uniform_sphere(u1, u2) : uniform_cone(cone.axis, cone.cos_half_angle, u1, u2);
                 const T cos = dot(w, s.normal);
                 const T emitting = two_sided ? std::abs(cos) : std::max(cos, T(0));
-                const Rgb<T> weight = object.material.emitted_radiance() * (emitting * omega / (s.pdf * pick.probability)) / aim.power;
+                using M = std::remove_cvref_t<decltype(object.material)>;
+                const Rgb<T> weight = object.material.emitted_radiance(detail::emission_point<M>(object.shape, s)) * (emitting * omega / (s.pdf * pick.probability)) / aim.power;
                 return {spawn_ray(s.point, error, s.normal, w), safe(weight)};
             } else {
                 return {};

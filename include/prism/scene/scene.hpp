@@ -314,6 +314,27 @@ private:
         else return area_lights();
     }
 
+    /// An emitter's radiance over its surface: its own where it is the same everywhere,
+    /// else the mean of 64 x 64 points, one in each cell of a grid over the unit square
+    /// its surface maps uniformly onto its area (a point's radiance costs a texture read:
+    /// 4096 of them once, when the scene is built).
+    template <class M, class S, class Surface>
+    [[nodiscard]] static Rgb<T> mean_emitted_radiance(const M& material, const S& shape, const Surface& surface) noexcept
+    {
+        if constexpr (!emission_varies<M>()) {
+            return (void)shape, (void)surface, material.emitted_radiance(TexturePoint<T>{});
+        } else {
+            constexpr int n = 64;
+            Rgb<double> sum(0.0);
+            for (int i = 0; i < n; ++i)
+                for (int j = 0; j < n; ++j) {
+                    const SurfacePoint<T> s = surface.sample_area(Vec2<T>((T(i) + T(0.5)) / T(n), (T(j) + T(0.5)) / T(n)));
+                    sum += Rgb<double>(material.emitted_radiance(detail::emission_point<M>(shape, s)));
+                }
+            return Rgb<T>(sum / double(n * n));
+        }
+    }
+
     /// The table of emitting objects by power, and each emitting slot's surfaces.
     void build_emitters()
     {
@@ -327,10 +348,11 @@ private:
                         detail::throw_invalid("an emitting object must be bounded: object ", k, " of slot ", I, " has no finite bounds");
                     mine.surfaces.push_back(surface_of(list[k].shape));
                     const T sides = list[k].material.two_sided ? T(2) : T(1);
-                    const Rgb<T> power = list[k].material.emitted_radiance() * (pi<T> * mine.surfaces.back().area() * sides);
+                    const Rgb<T> radiance = mean_emitted_radiance(list[k].material, list[k].shape, mine.surfaces.back());
+                    const Rgb<T> power = radiance * (pi<T> * mine.surfaces.back().area() * sides);
                     if (!is_finite(power))
                         detail::throw_invalid("the power pi L A of emitting object ", k, " of slot ", I, " overflows: radiance ",
-                                              detail::describe(list[k].material.emitted_radiance()), ", area ", mine.surfaces.back().area());
+                                              detail::describe(radiance), ", area ", mine.surfaces.back().area());
                     emitter_table_.keys.push_back({std::uint32_t(I), k});
                     emitter_table_.powers.push_back(power);
                     emitter_table_.power += power;
