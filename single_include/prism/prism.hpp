@@ -6053,6 +6053,545 @@ private:
 
 } // namespace prism
 
+// ---- prism/optics/refract.hpp ----
+// Mirror reflection and Snell refraction of directions.
+//
+// Conventions: d is the incident direction (travelling toward the surface), n is the
+// unit normal on the side d comes from (dot(d, n) < 0), so cos(theta_i) = -dot(d, n)
+// (as in Pharr, Jakob and Humphreys 2023, "Physically Based Rendering", 4th edition,
+// section 4.5), and eta = n_t / n_i, the index of the far side over the near side.
+
+
+#include <optional>
+
+namespace prism {
+
+/// Mirror reflection of d about n: d - 2 (d . n) n.
+template <Scalar T>
+[[nodiscard]] constexpr Vec3<T> reflect(const Vec3<T>& d, const Vec3<T>& n) noexcept
+{
+    return d - (T(2) * dot(d, n)) * n;
+}
+
+/// A refracted direction and the cosine of its angle with the normal (on the far side).
+template <Scalar T>
+struct Refraction {
+    Vec3<T> direction; ///< unit refracted direction
+    T cos_t; ///< cosine between it and the normal, on the far side
+};
+
+/// Snell refraction of the unit direction d through a surface with unit normal n
+/// facing d, into a medium of relative index eta = n_t / n_i, with cos_t for the Fresnel
+/// equations (computed once, here). Returns nothing under total internal reflection.
+/// The direction is unit length:
+///   t = d / eta + (cos_i / eta - cos_t) n,  cos_t = sqrt(1 - (1 - cos_i^2) / eta^2).
+template <Scalar T>
+[[nodiscard]] constexpr std::optional<Refraction<T>> refraction(const Vec3<T>& d, const Vec3<T>& n, T eta) noexcept
+{
+    const T cos_i = -dot(d, n);
+    const T sin2_i = T(1) - cos_i * cos_i > T(0) ? T(1) - cos_i * cos_i : T(0);
+    const T sin2_t = sin2_i / (eta * eta);
+    // Handle total internal reflection
+    if (sin2_t >= T(1)) return std::nullopt;
+    const T cos_t = prism::sqrt(T(1) - sin2_t);
+    return Refraction<T>{d / eta + (cos_i / eta - cos_t) * n, cos_t};
+}
+
+/// The refracted direction alone (see refraction).
+template <Scalar T>
+[[nodiscard]] constexpr std::optional<Vec3<T>> refract(const Vec3<T>& d, const Vec3<T>& n, T eta) noexcept
+{
+    if (const auto r = refraction(d, n, eta)) return r->direction;
+    return std::nullopt;
+}
+
+} // namespace prism
+
+// ---- prism/medium/graded_index.hpp ----
+// Graded-index media: air whose index of refraction varies in space (mirages, a setting
+// sun flattened by the atmosphere), and the two ways of tracing a ray through it.
+//
+// A ray in a medium of index n(x) follows the ray equation d/ds (n dx/ds) = grad n.
+// With the optical direction T = n dx/ds (a vector of length n) and the parameter t,
+// dt = ds / n, it becomes d^2 x / dt^2 = n grad n = grad(n^2) / 2, which Sharma, Kumar
+// and Ghatak (1982, "Tracing rays through graded-index media: a new method", Applied
+// Optics 21(6)) integrate with a Runge-Kutta-Nystrom step: `sharma_step`. Its error is
+// controlled by step doubling in `AdaptiveStepper`. The classic textbook method,
+// "divide the air into layers and keep bending the light", is `LayeredMedium`: straight
+// segments through flat layers of constant index, refracted by Snell at each boundary.
+//
+// Index fields are policies (IndexField): a stratified linear n(y), n^2 linear in y
+// (whose rays are exact parabolas), an exponential atmosphere, a heated layer over a
+// road, and any callable. Stratified fields vary along y (up).
+
+
+#include <algorithm>
+#include <cmath>
+#include <concepts>
+#include <limits>
+
+namespace prism {
+
+/// An index of refraction that varies in space: `index(p)` and its gradient
+/// `gradient(p)`, both finite and the index > 0 wherever a ray goes.
+template <class F>
+concept IndexField = requires(const F& field, const Vec3<typename F::scalar_type>& p) {
+    requires Scalar<typename F::scalar_type>;
+    { field.index(p) } -> std::same_as<typename F::scalar_type>;
+    { field.gradient(p) } -> std::same_as<Vec3<typename F::scalar_type>>;
+    field.validate();
+};
+
+// Index Field Policies
+
+/// n(y) = n0 + slope y.
+template <Scalar T = double>
+struct LinearIndex {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    T n0 = T(1); ///< index at y = 0
+    T slope = T(0); ///< dn/dy
+
+    /// The index at p: n0 + slope y.
+    [[nodiscard]] constexpr T index(const Vec3<T>& p) const noexcept { return n0 + slope * p.y; }
+    /// The index's gradient, (0, slope, 0) everywhere.
+    [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>&) const noexcept { return {T(0), slope, T(0)}; }
+    /// Throws std::invalid_argument, naming the parameter, for n0 <= 0 or a slope that is not finite.
+    constexpr void validate() const
+    {
+        detail::require_positive("LinearIndex n0", n0);
+        detail::require_finite("LinearIndex slope", slope);
+    }
+};
+
+/// n(y)^2 = a + b y (where a + b y > 0): the field whose rays are exact parabolas,
+/// y(x) = y0 + tan(theta0) x + b x^2 / (4 K^2) with K = n(y0) cos(theta0).
+template <Scalar T = double>
+struct LinearSquareIndex {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    T a = T(1); ///< n^2 at y = 0
+    T b = T(0); ///< d(n^2)/dy
+
+    /// The index at p: sqrt(a + b y).
+    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return std::sqrt(a + b * p.y); }
+    /// The index's gradient: (0, b / 2n, 0).
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept { return {T(0), b / (T(2) * index(p)), T(0)}; }
+    /// Throws std::invalid_argument, naming the parameter, for a <= 0 or a b that is not finite.
+    constexpr void validate() const
+    {
+        detail::require_positive("LinearSquareIndex a", a);
+        detail::require_finite("LinearSquareIndex b", b);
+    }
+};
+
+/// The standard exponential atmosphere: n(h) = 1 + (n0 - 1) e^(-h / H), h = y - ground.
+/// Defaults: sea-level air at 15 C (n0 - 1 = 2.93e-4, visible light) and H = 8.5 km, in
+/// metres.
+template <Scalar T = double>
+struct ExponentialAtmosphere {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    T n0 = T(1.000293); ///< index at the ground
+    T scale_height = T(8500); ///< height over which n - 1 falls by e (metres)
+    T ground = T(0); ///< height of the ground
+
+    /// The index at p: 1 + (n0 - 1) exp(-(y - ground) / scale_height).
+    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return T(1) + (n0 - T(1)) * std::exp(-(p.y - ground) / scale_height); }
+    /// The index's gradient, along y.
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
+    {
+        return {T(0), -(n0 - T(1)) / scale_height * std::exp(-(p.y - ground) / scale_height), T(0)};
+    }
+    /// Throws std::invalid_argument, naming the parameter, for n0 or scale_height <= 0 or a ground that is not finite.
+    constexpr void validate() const
+    {
+        detail::require_positive("ExponentialAtmosphere n0", n0);
+        detail::require_positive("ExponentialAtmosphere scale_height", scale_height);
+        detail::require_finite("ExponentialAtmosphere ground", ground);
+    }
+};
+
+/// Hot air over a road: n(y) = n_air - drop e^(-(y - ground) / thickness). The air at the
+/// road is hotter, so its index is lower by `drop` (about 1e-6 per kelvin: 3e-5 for a
+/// road 30 K above the air), and rays grazing it bend back up (an inferior mirage).
+template <Scalar T = double>
+struct HeatedLayer {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    T n_air = T(1.000293); ///< index of the air far above the ground
+    T drop = T(3e-5); ///< how much lower the index is at the ground
+    T thickness = T(0.3); ///< metres over which the excess heat falls by e
+    T ground = T(0); ///< height of the ground
+
+    /// The index at p: n_air - drop exp(-(y - ground) / thickness).
+    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return n_air - drop * std::exp(-(p.y - ground) / thickness); }
+    /// The index's gradient, along y.
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
+    {
+        return {T(0), drop / thickness * std::exp(-(p.y - ground) / thickness), T(0)};
+    }
+    /// Throws std::invalid_argument, naming the parameter, for n_air or thickness <= 0, or a drop that is not finite or not below n_air.
+    constexpr void validate() const
+    {
+        detail::require_positive("HeatedLayer n_air", n_air);
+        detail::require_finite("HeatedLayer drop", drop);
+        if (!(drop < n_air)) detail::throw_invalid("HeatedLayer drop must be below n_air (", n_air, "), got ", drop);
+        detail::require_positive("HeatedLayer thickness", thickness);
+        detail::require_finite("HeatedLayer ground", ground);
+    }
+};
+
+/// Any index n(p) given as a callable; its gradient by central differences of step h.
+template <Scalar T, class F>
+    requires std::regular_invocable<const F&, const Vec3<T>&>
+struct IndexFunction {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    F function; ///< n(p), any callable
+    T h = T(1e-4); ///< step of the central differences that give the gradient
+
+    /// The index at p: function(p).
+    [[nodiscard]] T index(const Vec3<T>& p) const { return function(p); }
+    /// The index's gradient by central differences of step h.
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const
+    {
+        const T inv = T(1) / (T(2) * h);
+        return {(function(p + Vec3<T>(h, 0, 0)) - function(p - Vec3<T>(h, 0, 0))) * inv,
+                (function(p + Vec3<T>(0, h, 0)) - function(p - Vec3<T>(0, h, 0))) * inv,
+                (function(p + Vec3<T>(0, 0, h)) - function(p - Vec3<T>(0, 0, h))) * inv};
+    }
+    /// Throws std::invalid_argument for h <= 0.
+    constexpr void validate() const { detail::require_positive("IndexFunction h", h); }
+};
+
+static_assert(IndexField<LinearIndex<double>> && IndexField<LinearSquareIndex<float>> && IndexField<ExponentialAtmosphere<double>> &&
+              IndexField<HeatedLayer<double>>);
+
+// Curved Rays
+
+/// A ray inside a graded medium: where it is, and its optical direction n dx/ds (a
+/// vector of length n(position): the unit direction times the local index).
+template <Scalar T>
+struct CurvedRay {
+    Vec3<T> position; ///< where the ray is
+    Vec3<T> optical; ///< the optical direction, n times the unit tangent
+
+    /// The unit tangent of the ray.
+    [[nodiscard]] Vec3<T> direction() const noexcept { return normalize(optical); }
+};
+
+/// The curved ray leaving `ray.origin` along `ray.direction` (any length) in the field.
+template <IndexField F>
+[[nodiscard]] CurvedRay<typename F::scalar_type> curved_ray(const F& field, const Ray<typename F::scalar_type>& ray) noexcept
+{
+    return {ray.origin, field.index(ray.origin) * normalize(ray.direction)};
+}
+
+/// grad(n^2) / 2 = n grad n: the ray's acceleration in the parameter t (dt = ds / n).
+template <IndexField F>
+[[nodiscard]] Vec3<typename F::scalar_type> bending(const F& field, const Vec3<typename F::scalar_type>& p) noexcept
+{
+    return field.index(p) * field.gradient(p);
+}
+
+/// One Runge-Kutta-Nystrom step of dt in t (Sharma et al. 1982, eq. 12), fourth order:
+///   A = dt D(x), B = dt D(x + dt/2 T + dt/8 A), C = dt D(x + dt T + dt/2 B),
+///   x' = x + dt (T + (A + 2B) / 6),  T' = T + (A + 4B + C) / 6,
+/// exact when D is constant (n^2 linear in space). The arc length covered is about n dt.
+template <IndexField F>
+[[nodiscard]] CurvedRay<typename F::scalar_type> sharma_step(const F& field, const CurvedRay<typename F::scalar_type>& ray,
+                                                             typename F::scalar_type dt) noexcept
+{
+    using T = typename F::scalar_type;
+    const Vec3<T>& x = ray.position;
+    const Vec3<T>& t = ray.optical;
+    const Vec3<T> a = dt * bending(field, x);
+    const Vec3<T> b = dt * bending(field, x + (dt / T(2)) * t + (dt / T(8)) * a);
+    const Vec3<T> c = dt * bending(field, x + dt * t + (dt / T(2)) * b);
+    return {x + dt * (t + (a + T(2) * b) / T(6)), t + (a + T(4) * b + c) / T(6)};
+}
+
+/// Sharma steps whose length adapts to keep each step's position error under
+/// `tolerance` (absolute, in scene units), estimated by step doubling: a step of dt
+/// against two of dt / 2, whose difference is 15/16 of the larger one's error for a
+/// fourth-order method; the two half steps are kept (Richardson-extrapolated).
+template <IndexField F>
+class AdaptiveStepper {
+public:
+    /// The field's precision.
+    using T = typename F::scalar_type;
+
+    /// How the stepper controls its error: the tolerance per step and the step sizes it may take.
+    struct Config {
+        T tolerance = T(1e-6);  ///< position error allowed per step
+        T first_step = T(0.1);  ///< the first step's arc length
+        T max_step = T(10);     ///< no step longer than this arc length
+    };
+
+    /// A stepper through `field` (which must outlive it).
+    explicit AdaptiveStepper(const F& field, Config config = {}) : field_(&field), config_(config)
+    {
+        field.validate();
+        detail::require_positive("AdaptiveStepper tolerance", config.tolerance);
+        detail::require_positive("AdaptiveStepper first_step", config.first_step);
+        detail::require_positive("AdaptiveStepper max_step", config.max_step);
+    }
+
+    /// Advance `ray` by one accepted step; `dt` carries the step size from one call to
+    /// the next (start with 0: the first step is then config.first_step long). Returns
+    /// the arc length covered (about n dt); `accepted`, if given, receives the step's dt.
+    T step(CurvedRay<T>& ray, T& dt, T* accepted = nullptr) const noexcept
+    {
+        const T n = length(ray.optical);
+        if (!(dt > T(0))) dt = config_.first_step / n;
+        dt = std::min(dt, config_.max_step / n);
+        for (;;) {
+            const CurvedRay<T> whole = sharma_step(*field_, ray, dt);
+            const CurvedRay<T> half = sharma_step(*field_, sharma_step(*field_, ray, dt / T(2)), dt / T(2));
+            const T error = length(half.position - whole.position) * (T(16) / T(15));
+            const T scale = error > T(0) ? T(0.9) * std::pow(config_.tolerance / error, T(0.2)) : T(4);
+            if (error <= config_.tolerance || dt * n <= std::numeric_limits<T>::epsilon() * (T(1) + max_component(abs(ray.position)))) {
+                const T covered = length(half.position - ray.position);
+                if (accepted != nullptr) *accepted = dt;
+                ray = {half.position + (half.position - whole.position) / T(15), half.optical + (half.optical - whole.optical) / T(15)};
+                dt *= std::clamp(scale, T(0.2), T(4));
+                return covered;
+            }
+            dt *= std::clamp(scale, T(0.1), T(0.9));
+        }
+    }
+
+private:
+    const F* field_;
+    Config config_;
+};
+
+// Flat Layers of Constant Index
+
+/// The air between y = bottom and y = top cut into `layers` flat layers, each of the
+/// field's index at its middle height; a ray goes straight within a layer and refracts
+/// by Snell's law (or reflects totally) at each boundary.
+template <IndexField F>
+class LayeredMedium {
+public:
+    /// The field's precision.
+    using T = typename F::scalar_type;
+
+    /// `layers` flat layers of `field` between heights `bottom` and `top` (which must outlive it); throws for bottom >= top or layers < 1.
+    LayeredMedium(const F& field, T bottom, T top, int layers) : field_(&field), bottom_(bottom), top_(top), layers_(layers)
+    {
+        field.validate();
+        detail::require_finite("LayeredMedium bottom", bottom);
+        detail::require_finite("LayeredMedium top", top);
+        if (!(top > bottom)) detail::throw_invalid("LayeredMedium top must be above bottom (", bottom, "), got ", top);
+        if (layers < 1) detail::throw_invalid("LayeredMedium layers must be >= 1, got ", layers);
+        height_ = (top - bottom) / T(layers);
+    }
+
+    /// The number of layers.
+    [[nodiscard]] int layers() const noexcept { return layers_; }
+
+    /// The layer holding height y (clamped into [0, layers); in floating point first, so a
+    /// far-off or NaN height never overflows the conversion to int).
+    [[nodiscard]] int layer_of(T y) const noexcept
+    {
+        const T layer = std::floor((y - bottom_) / height_);
+        if (!(layer > T(0))) return 0;
+        return layer < T(layers_ - 1) ? static_cast<int>(layer) : layers_ - 1;
+    }
+
+    /// The index of layer i: the field at its middle height (x = z = 0: stratified fields).
+    [[nodiscard]] T index_of(int layer) const noexcept { return field_->index({T(0), bottom_ + (T(layer) + T(0.5)) * height_, T(0)}); }
+
+    /// From `origin` in layer `layer` along the unit `direction`, straight to the layer's
+    /// next boundary and across it (or back, under total internal reflection). Returns
+    /// false when the ray leaves the layers (through the top or the bottom) or runs
+    /// horizontally; then `origin` is where it left.
+    bool step(Vec3<T>& origin, Vec3<T>& direction, int& layer) const noexcept
+    {
+        if (direction.y == T(0)) return false;
+        const bool up = direction.y > T(0);
+        const T boundary = bottom_ + T(layer + (up ? 1 : 0)) * height_;
+        origin = origin + ((boundary - origin.y) / direction.y) * direction;
+        origin.y = boundary;
+        const int next = layer + (up ? 1 : -1);
+        if (next < 0 || next >= layers_) return false;
+        const Vec3<T> facing{T(0), up ? T(-1) : T(1), T(0)};
+        if (const auto r = refraction(direction, facing, index_of(next) / index_of(layer))) {
+            direction = normalize(r->direction);
+            layer = next;
+        } else {
+            direction = reflect(direction, facing);
+        }
+        return true;
+    }
+
+private:
+    const F* field_;
+    T bottom_, top_, height_ = T(1);
+    int layers_;
+};
+
+} // namespace prism
+
+// ---- prism/medium/medium.hpp ----
+// The Medium concept: how light fares while it travels through the inside of an object
+// or through the scene's air.
+//
+// A transmissive material names the medium that fills it (Dielectric's `interior`), and
+// the integrators ask that medium, through `attenuate_inside` (material/scattering.hpp)
+// and transport/media.hpp, what a path of a given length inside it lets through. A medium
+// that also scatters (ScatteringMedium: Fog) tells a walker where it next scatters and by
+// which phase function; the walk (transport/random_walk.hpp) asks it.
+
+
+#include <concepts>
+
+namespace prism {
+
+/// A medium in which light travels in straight lines and is attenuated along the way:
+/// `transmittance(distance)` is the fraction of light, per channel, left after that
+/// distance.
+template <class X>
+concept Medium = requires(const X& medium, typename X::scalar_type distance) {
+    requires Scalar<typename X::scalar_type>;
+    { medium.transmittance(distance) } -> std::same_as<Rgb<typename X::scalar_type>>;
+    medium.validate();
+};
+
+/// Where a walker crossing a scattering medium next scatters, or that it reached the end
+/// of its segment, and the weight its power takes (the medium's transmittance to there,
+/// times its scattering coefficient where it scatters, over the density of the draw).
+template <Scalar T>
+struct FreeFlight {
+    T distance;     ///< along the segment: where it scatters, or the segment's end
+    Rgb<T> weight;  ///< multiplies the walker's power
+    bool scattered; ///< whether it scattered before the segment's end
+};
+
+/// A medium that also scatters light: `sample_flight(ray, t_max, power, rng)`, where a
+/// walker along ray (unit direction) carrying power next scatters before t_max, and
+/// `phase`, the phase function it scatters by there.
+template <class X>
+concept ScatteringMedium = Medium<X> && requires(const X& medium, const Ray<typename X::scalar_type>& ray, typename X::scalar_type t,
+                                                 const Rgb<typename X::scalar_type>& power, Pcg32& rng) {
+    requires X::scatters;
+    { medium.sample_flight(ray, t, power, rng) } -> std::same_as<FreeFlight<typename X::scalar_type>>;
+    medium.phase;
+};
+
+/// Whether medium type X scatters light (a ScatteringMedium) rather than only absorbing it.
+template <class X>
+inline constexpr bool scatters_light = ScatteringMedium<X>;
+
+} // namespace prism
+
+// ---- prism/medium/air.hpp ----
+// The scene's air: uniform (rays go straight, the default), of a varying index
+// (graded-index air: mirages, a flattened setting sun), through which rays curve, or
+// filled with a medium that scatters (FilledAir: fog, haze, murky water around everything).
+//
+// GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
+// field must be uniform, and rays go straight there. LayeredAir is flat layers of
+// constant index, refracting at each boundary. How a ray travels through either to the first surface it meets is
+// transport/travel.hpp's.
+
+
+namespace prism {
+
+/// Uniform air of index 1: rays are straight.
+struct StraightAir {
+    /// Rays through it are straight.
+    static constexpr bool curved = false;
+    /// Nothing to check.
+    constexpr void validate() const {}
+};
+
+/// Straight air filled, within `region` (everywhere by default), with a medium that
+/// absorbs and scatters: the fog a scene stands in, the water around an underwater scene.
+/// Outside the region the air is clear. (An object's inside takes its own medium, its
+/// material's interior.)
+template <ScatteringMedium M>
+struct FilledAir {
+    /// The medium's precision.
+    using scalar_type = typename M::scalar_type;
+    /// Rays through it are straight.
+    static constexpr bool curved = false;
+    /// Light scatters in it.
+    static constexpr bool scatters = true;
+
+    M medium{}; ///< what fills the region
+    Aabb<scalar_type> region = Aabb<scalar_type>::universe(); ///< where the medium is (a box; everywhere by default)
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad medium or an empty region.
+    void validate() const
+    {
+        medium.validate();
+        if (region.empty()) detail::throw_invalid("FilledAir region must not be empty");
+    }
+};
+
+/// Whether the scene's air `Air` scatters light (FilledAir).
+template <class Air>
+inline constexpr bool air_scatters = requires { requires Air::scatters; };
+
+/// Air whose index is `field` inside `region` (uniform outside it); rays through it curve.
+template <IndexField F>
+struct GradedAir {
+    /// The field's precision.
+    using scalar_type = typename F::scalar_type;
+    /// Shorthand for scalar_type.
+    using T = scalar_type;
+    /// Rays through it curve.
+    static constexpr bool curved = true;
+
+    F field{}; ///< the refractive index inside the region
+    Aabb<T> region{};                                   ///< where the index varies
+    typename AdaptiveStepper<F>::Config stepping{};     ///< the stepper's tolerance and step lengths
+    /// A chord that meets a surface is halved (Sharma steps of half the dt) until it is
+    /// at most this long, so the landing point lies on the curve, not on a chord that
+    /// cuts under it (a chord of length L sags by about L^2 / (8 R) from a path of radius R).
+    T landing_chord = T(1e-3);
+    int max_steps = 1000000;                            ///< a ray still in the air after this many steps is lost (background)
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad field, an unbounded or empty region, max_steps < 1, landing_chord <= 0 or bad stepping.
+    void validate() const
+    {
+        field.validate();
+        if (!region.bounded()) detail::throw_invalid("GradedAir region must be a bounded, non-empty box");
+        if (max_steps < 1) detail::throw_invalid("GradedAir max_steps must be >= 1, got ", max_steps);
+        detail::require_positive("GradedAir landing_chord", landing_chord);
+        (void)AdaptiveStepper<F>(field, stepping); // checks the stepping
+    }
+};
+
+/// Layered air: `layers` flat layers between heights `bottom` and `top`, each
+/// of the field's index at its middle height (stratified fields only); a ray goes
+/// straight within a layer and refracts by Snell's law (or reflects totally) at each
+/// boundary; above and below the layers it goes straight. The second policy beside
+/// GradedAir, for comparison: it keeps n cos(theta) exactly but converges only at first
+/// order in the layer height (bench/graded_index.cpp).
+template <IndexField F>
+struct LayeredAir {
+    /// The field's precision.
+    using scalar_type = typename F::scalar_type;
+    /// Shorthand for scalar_type.
+    using T = scalar_type;
+    /// Rays through it bend at the layers' boundaries.
+    static constexpr bool curved = true;
+
+    F field{}; ///< the index field the layers sample at their middle heights
+    T bottom = T(0); ///< height of the lowest layer's bottom
+    T top = T(1); ///< height of the highest layer's top
+    int layers = 100; ///< the number of layers
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad field, top <= bottom or layers < 1.
+    void validate() const { (void)LayeredMedium<F>(field, bottom, top, layers); }
+};
+
+} // namespace prism
+
 // ---- prism/light/light.hpp ----
 // What a light tells a shading point and the photon tracer, and the Light concept.
 
@@ -6555,33 +7094,6 @@ concept Bsdf = requires(const B& bsdf, const Vec3<typename B::scalar_type>& w, t
 
 } // namespace prism
 
-// ---- prism/medium/medium.hpp ----
-// The Medium concept: how light fares while it travels through the inside of an object.
-//
-// A transmissive material names the medium that fills it (Dielectric's `interior`), and
-// the integrators ask that medium, through `attenuate_inside` (material/scattering.hpp),
-// what a path of a given length inside it lets through. Today's media keep rays
-// straight; a medium that bends them (a graded index) or that nests inside another
-// (priorities) is one more header here, and extends this interface rather than the
-// integrators.
-
-
-#include <concepts>
-
-namespace prism {
-
-/// A medium in which light travels in straight lines and is attenuated along the way:
-/// `transmittance(distance)` is the fraction of light, per channel, left after that
-/// distance.
-template <class X>
-concept Medium = requires(const X& medium, typename X::scalar_type distance) {
-    requires Scalar<typename X::scalar_type>;
-    { medium.transmittance(distance) } -> std::same_as<Rgb<typename X::scalar_type>>;
-    medium.validate();
-};
-
-} // namespace prism
-
 // ---- prism/material/traits.hpp ----
 // What a material can do, as capabilities the integrators branch on with if constexpr.
 //
@@ -6607,6 +7119,7 @@ concept Medium = requires(const X& medium, typename X::scalar_type distance) {
 
 #include <concepts>
 #include <type_traits>
+#include <utility>
 
 namespace prism {
 
@@ -6835,59 +7348,19 @@ inline constexpr bool emits = detail::declares_emission<M>();
 template <Material M>
 inline constexpr bool disperses = M::transmits && Dispersive<M>;
 
-} // namespace prism
-
-// ---- prism/optics/refract.hpp ----
-// Mirror reflection and Snell refraction of directions.
-//
-// Conventions: d is the incident direction (travelling toward the surface), n is the
-// unit normal on the side d comes from (dot(d, n) < 0), so cos(theta_i) = -dot(d, n)
-// (as in Pharr, Jakob and Humphreys 2023, "Physically Based Rendering", 4th edition,
-// section 4.5), and eta = n_t / n_i, the index of the far side over the near side.
-
-
-#include <optional>
-
-namespace prism {
-
-/// Mirror reflection of d about n: d - 2 (d . n) n.
-template <Scalar T>
-[[nodiscard]] constexpr Vec3<T> reflect(const Vec3<T>& d, const Vec3<T>& n) noexcept
+namespace detail {
+template <Material M>
+[[nodiscard]] consteval bool interior_scatters() noexcept
 {
-    return d - (T(2) * dot(d, n)) * n;
+    if constexpr (M::transmits) return scatters_light<std::remove_cvref_t<decltype(std::declval<const M&>().medium())>>;
+    else return false;
 }
+} // namespace detail
 
-/// A refracted direction and the cosine of its angle with the normal (on the far side).
-template <Scalar T>
-struct Refraction {
-    Vec3<T> direction; ///< unit refracted direction
-    T cos_t; ///< cosine between it and the normal, on the far side
-};
-
-/// Snell refraction of the unit direction d through a surface with unit normal n
-/// facing d, into a medium of relative index eta = n_t / n_i, with cos_t for the Fresnel
-/// equations (computed once, here). Returns nothing under total internal reflection.
-/// The direction is unit length:
-///   t = d / eta + (cos_i / eta - cos_t) n,  cos_t = sqrt(1 - (1 - cos_i^2) / eta^2).
-template <Scalar T>
-[[nodiscard]] constexpr std::optional<Refraction<T>> refraction(const Vec3<T>& d, const Vec3<T>& n, T eta) noexcept
-{
-    const T cos_i = -dot(d, n);
-    const T sin2_i = T(1) - cos_i * cos_i > T(0) ? T(1) - cos_i * cos_i : T(0);
-    const T sin2_t = sin2_i / (eta * eta);
-    // Handle total internal reflection
-    if (sin2_t >= T(1)) return std::nullopt;
-    const T cos_t = prism::sqrt(T(1) - sin2_t);
-    return Refraction<T>{d / eta + (cos_i / eta - cos_t) * n, cos_t};
-}
-
-/// The refracted direction alone (see refraction).
-template <Scalar T>
-[[nodiscard]] constexpr std::optional<Vec3<T>> refract(const Vec3<T>& d, const Vec3<T>& n, T eta) noexcept
-{
-    if (const auto r = refraction(d, n, eta)) return r->direction;
-    return std::nullopt;
-}
+/// The material is an interface whose medium() scatters light (a Fog): a walker inside it
+/// may scatter anywhere along its way, not only at surfaces.
+template <Material M>
+inline constexpr bool has_scattering_interior = detail::interior_scatters<M>();
 
 } // namespace prism
 
@@ -7820,624 +8293,6 @@ template <Transport Mode = Transport::importance, Material M>
 
 } // namespace prism
 
-// ---- prism/medium/graded_index.hpp ----
-// Graded-index media: air whose index of refraction varies in space (mirages, a setting
-// sun flattened by the atmosphere), and the two ways of tracing a ray through it.
-//
-// A ray in a medium of index n(x) follows the ray equation d/ds (n dx/ds) = grad n.
-// With the optical direction T = n dx/ds (a vector of length n) and the parameter t,
-// dt = ds / n, it becomes d^2 x / dt^2 = n grad n = grad(n^2) / 2, which Sharma, Kumar
-// and Ghatak (1982, "Tracing rays through graded-index media: a new method", Applied
-// Optics 21(6)) integrate with a Runge-Kutta-Nystrom step: `sharma_step`. Its error is
-// controlled by step doubling in `AdaptiveStepper`. The classic textbook method,
-// "divide the air into layers and keep bending the light", is `LayeredMedium`: straight
-// segments through flat layers of constant index, refracted by Snell at each boundary.
-//
-// Index fields are policies (IndexField): a stratified linear n(y), n^2 linear in y
-// (whose rays are exact parabolas), an exponential atmosphere, a heated layer over a
-// road, and any callable. Stratified fields vary along y (up).
-
-
-#include <algorithm>
-#include <cmath>
-#include <concepts>
-#include <limits>
-
-namespace prism {
-
-/// An index of refraction that varies in space: `index(p)` and its gradient
-/// `gradient(p)`, both finite and the index > 0 wherever a ray goes.
-template <class F>
-concept IndexField = requires(const F& field, const Vec3<typename F::scalar_type>& p) {
-    requires Scalar<typename F::scalar_type>;
-    { field.index(p) } -> std::same_as<typename F::scalar_type>;
-    { field.gradient(p) } -> std::same_as<Vec3<typename F::scalar_type>>;
-    field.validate();
-};
-
-// Index Field Policies
-
-/// n(y) = n0 + slope y.
-template <Scalar T = double>
-struct LinearIndex {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    T n0 = T(1); ///< index at y = 0
-    T slope = T(0); ///< dn/dy
-
-    /// The index at p: n0 + slope y.
-    [[nodiscard]] constexpr T index(const Vec3<T>& p) const noexcept { return n0 + slope * p.y; }
-    /// The index's gradient, (0, slope, 0) everywhere.
-    [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>&) const noexcept { return {T(0), slope, T(0)}; }
-    /// Throws std::invalid_argument, naming the parameter, for n0 <= 0 or a slope that is not finite.
-    constexpr void validate() const
-    {
-        detail::require_positive("LinearIndex n0", n0);
-        detail::require_finite("LinearIndex slope", slope);
-    }
-};
-
-/// n(y)^2 = a + b y (where a + b y > 0): the field whose rays are exact parabolas,
-/// y(x) = y0 + tan(theta0) x + b x^2 / (4 K^2) with K = n(y0) cos(theta0).
-template <Scalar T = double>
-struct LinearSquareIndex {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    T a = T(1); ///< n^2 at y = 0
-    T b = T(0); ///< d(n^2)/dy
-
-    /// The index at p: sqrt(a + b y).
-    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return std::sqrt(a + b * p.y); }
-    /// The index's gradient: (0, b / 2n, 0).
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept { return {T(0), b / (T(2) * index(p)), T(0)}; }
-    /// Throws std::invalid_argument, naming the parameter, for a <= 0 or a b that is not finite.
-    constexpr void validate() const
-    {
-        detail::require_positive("LinearSquareIndex a", a);
-        detail::require_finite("LinearSquareIndex b", b);
-    }
-};
-
-/// The standard exponential atmosphere: n(h) = 1 + (n0 - 1) e^(-h / H), h = y - ground.
-/// Defaults: sea-level air at 15 C (n0 - 1 = 2.93e-4, visible light) and H = 8.5 km, in
-/// metres.
-template <Scalar T = double>
-struct ExponentialAtmosphere {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    T n0 = T(1.000293); ///< index at the ground
-    T scale_height = T(8500); ///< height over which n - 1 falls by e (metres)
-    T ground = T(0); ///< height of the ground
-
-    /// The index at p: 1 + (n0 - 1) exp(-(y - ground) / scale_height).
-    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return T(1) + (n0 - T(1)) * std::exp(-(p.y - ground) / scale_height); }
-    /// The index's gradient, along y.
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
-    {
-        return {T(0), -(n0 - T(1)) / scale_height * std::exp(-(p.y - ground) / scale_height), T(0)};
-    }
-    /// Throws std::invalid_argument, naming the parameter, for n0 or scale_height <= 0 or a ground that is not finite.
-    constexpr void validate() const
-    {
-        detail::require_positive("ExponentialAtmosphere n0", n0);
-        detail::require_positive("ExponentialAtmosphere scale_height", scale_height);
-        detail::require_finite("ExponentialAtmosphere ground", ground);
-    }
-};
-
-/// Hot air over a road: n(y) = n_air - drop e^(-(y - ground) / thickness). The air at the
-/// road is hotter, so its index is lower by `drop` (about 1e-6 per kelvin: 3e-5 for a
-/// road 30 K above the air), and rays grazing it bend back up (an inferior mirage).
-template <Scalar T = double>
-struct HeatedLayer {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    T n_air = T(1.000293); ///< index of the air far above the ground
-    T drop = T(3e-5); ///< how much lower the index is at the ground
-    T thickness = T(0.3); ///< metres over which the excess heat falls by e
-    T ground = T(0); ///< height of the ground
-
-    /// The index at p: n_air - drop exp(-(y - ground) / thickness).
-    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return n_air - drop * std::exp(-(p.y - ground) / thickness); }
-    /// The index's gradient, along y.
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
-    {
-        return {T(0), drop / thickness * std::exp(-(p.y - ground) / thickness), T(0)};
-    }
-    /// Throws std::invalid_argument, naming the parameter, for n_air or thickness <= 0, or a drop that is not finite or not below n_air.
-    constexpr void validate() const
-    {
-        detail::require_positive("HeatedLayer n_air", n_air);
-        detail::require_finite("HeatedLayer drop", drop);
-        if (!(drop < n_air)) detail::throw_invalid("HeatedLayer drop must be below n_air (", n_air, "), got ", drop);
-        detail::require_positive("HeatedLayer thickness", thickness);
-        detail::require_finite("HeatedLayer ground", ground);
-    }
-};
-
-/// Any index n(p) given as a callable; its gradient by central differences of step h.
-template <Scalar T, class F>
-    requires std::regular_invocable<const F&, const Vec3<T>&>
-struct IndexFunction {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    F function; ///< n(p), any callable
-    T h = T(1e-4); ///< step of the central differences that give the gradient
-
-    /// The index at p: function(p).
-    [[nodiscard]] T index(const Vec3<T>& p) const { return function(p); }
-    /// The index's gradient by central differences of step h.
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const
-    {
-        const T inv = T(1) / (T(2) * h);
-        return {(function(p + Vec3<T>(h, 0, 0)) - function(p - Vec3<T>(h, 0, 0))) * inv,
-                (function(p + Vec3<T>(0, h, 0)) - function(p - Vec3<T>(0, h, 0))) * inv,
-                (function(p + Vec3<T>(0, 0, h)) - function(p - Vec3<T>(0, 0, h))) * inv};
-    }
-    /// Throws std::invalid_argument for h <= 0.
-    constexpr void validate() const { detail::require_positive("IndexFunction h", h); }
-};
-
-static_assert(IndexField<LinearIndex<double>> && IndexField<LinearSquareIndex<float>> && IndexField<ExponentialAtmosphere<double>> &&
-              IndexField<HeatedLayer<double>>);
-
-// Curved Rays
-
-/// A ray inside a graded medium: where it is, and its optical direction n dx/ds (a
-/// vector of length n(position): the unit direction times the local index).
-template <Scalar T>
-struct CurvedRay {
-    Vec3<T> position; ///< where the ray is
-    Vec3<T> optical; ///< the optical direction, n times the unit tangent
-
-    /// The unit tangent of the ray.
-    [[nodiscard]] Vec3<T> direction() const noexcept { return normalize(optical); }
-};
-
-/// The curved ray leaving `ray.origin` along `ray.direction` (any length) in the field.
-template <IndexField F>
-[[nodiscard]] CurvedRay<typename F::scalar_type> curved_ray(const F& field, const Ray<typename F::scalar_type>& ray) noexcept
-{
-    return {ray.origin, field.index(ray.origin) * normalize(ray.direction)};
-}
-
-/// grad(n^2) / 2 = n grad n: the ray's acceleration in the parameter t (dt = ds / n).
-template <IndexField F>
-[[nodiscard]] Vec3<typename F::scalar_type> bending(const F& field, const Vec3<typename F::scalar_type>& p) noexcept
-{
-    return field.index(p) * field.gradient(p);
-}
-
-/// One Runge-Kutta-Nystrom step of dt in t (Sharma et al. 1982, eq. 12), fourth order:
-///   A = dt D(x), B = dt D(x + dt/2 T + dt/8 A), C = dt D(x + dt T + dt/2 B),
-///   x' = x + dt (T + (A + 2B) / 6),  T' = T + (A + 4B + C) / 6,
-/// exact when D is constant (n^2 linear in space). The arc length covered is about n dt.
-template <IndexField F>
-[[nodiscard]] CurvedRay<typename F::scalar_type> sharma_step(const F& field, const CurvedRay<typename F::scalar_type>& ray,
-                                                             typename F::scalar_type dt) noexcept
-{
-    using T = typename F::scalar_type;
-    const Vec3<T>& x = ray.position;
-    const Vec3<T>& t = ray.optical;
-    const Vec3<T> a = dt * bending(field, x);
-    const Vec3<T> b = dt * bending(field, x + (dt / T(2)) * t + (dt / T(8)) * a);
-    const Vec3<T> c = dt * bending(field, x + dt * t + (dt / T(2)) * b);
-    return {x + dt * (t + (a + T(2) * b) / T(6)), t + (a + T(4) * b + c) / T(6)};
-}
-
-/// Sharma steps whose length adapts to keep each step's position error under
-/// `tolerance` (absolute, in scene units), estimated by step doubling: a step of dt
-/// against two of dt / 2, whose difference is 15/16 of the larger one's error for a
-/// fourth-order method; the two half steps are kept (Richardson-extrapolated).
-template <IndexField F>
-class AdaptiveStepper {
-public:
-    /// The field's precision.
-    using T = typename F::scalar_type;
-
-    /// How the stepper controls its error: the tolerance per step and the step sizes it may take.
-    struct Config {
-        T tolerance = T(1e-6);  ///< position error allowed per step
-        T first_step = T(0.1);  ///< the first step's arc length
-        T max_step = T(10);     ///< no step longer than this arc length
-    };
-
-    /// A stepper through `field` (which must outlive it).
-    explicit AdaptiveStepper(const F& field, Config config = {}) : field_(&field), config_(config)
-    {
-        field.validate();
-        detail::require_positive("AdaptiveStepper tolerance", config.tolerance);
-        detail::require_positive("AdaptiveStepper first_step", config.first_step);
-        detail::require_positive("AdaptiveStepper max_step", config.max_step);
-    }
-
-    /// Advance `ray` by one accepted step; `dt` carries the step size from one call to
-    /// the next (start with 0: the first step is then config.first_step long). Returns
-    /// the arc length covered (about n dt); `accepted`, if given, receives the step's dt.
-    T step(CurvedRay<T>& ray, T& dt, T* accepted = nullptr) const noexcept
-    {
-        const T n = length(ray.optical);
-        if (!(dt > T(0))) dt = config_.first_step / n;
-        dt = std::min(dt, config_.max_step / n);
-        for (;;) {
-            const CurvedRay<T> whole = sharma_step(*field_, ray, dt);
-            const CurvedRay<T> half = sharma_step(*field_, sharma_step(*field_, ray, dt / T(2)), dt / T(2));
-            const T error = length(half.position - whole.position) * (T(16) / T(15));
-            const T scale = error > T(0) ? T(0.9) * std::pow(config_.tolerance / error, T(0.2)) : T(4);
-            if (error <= config_.tolerance || dt * n <= std::numeric_limits<T>::epsilon() * (T(1) + max_component(abs(ray.position)))) {
-                const T covered = length(half.position - ray.position);
-                if (accepted != nullptr) *accepted = dt;
-                ray = {half.position + (half.position - whole.position) / T(15), half.optical + (half.optical - whole.optical) / T(15)};
-                dt *= std::clamp(scale, T(0.2), T(4));
-                return covered;
-            }
-            dt *= std::clamp(scale, T(0.1), T(0.9));
-        }
-    }
-
-private:
-    const F* field_;
-    Config config_;
-};
-
-// Flat Layers of Constant Index
-
-/// The air between y = bottom and y = top cut into `layers` flat layers, each of the
-/// field's index at its middle height; a ray goes straight within a layer and refracts
-/// by Snell's law (or reflects totally) at each boundary.
-template <IndexField F>
-class LayeredMedium {
-public:
-    /// The field's precision.
-    using T = typename F::scalar_type;
-
-    /// `layers` flat layers of `field` between heights `bottom` and `top` (which must outlive it); throws for bottom >= top or layers < 1.
-    LayeredMedium(const F& field, T bottom, T top, int layers) : field_(&field), bottom_(bottom), top_(top), layers_(layers)
-    {
-        field.validate();
-        detail::require_finite("LayeredMedium bottom", bottom);
-        detail::require_finite("LayeredMedium top", top);
-        if (!(top > bottom)) detail::throw_invalid("LayeredMedium top must be above bottom (", bottom, "), got ", top);
-        if (layers < 1) detail::throw_invalid("LayeredMedium layers must be >= 1, got ", layers);
-        height_ = (top - bottom) / T(layers);
-    }
-
-    /// The number of layers.
-    [[nodiscard]] int layers() const noexcept { return layers_; }
-
-    /// The layer holding height y (clamped into [0, layers); in floating point first, so a
-    /// far-off or NaN height never overflows the conversion to int).
-    [[nodiscard]] int layer_of(T y) const noexcept
-    {
-        const T layer = std::floor((y - bottom_) / height_);
-        if (!(layer > T(0))) return 0;
-        return layer < T(layers_ - 1) ? static_cast<int>(layer) : layers_ - 1;
-    }
-
-    /// The index of layer i: the field at its middle height (x = z = 0: stratified fields).
-    [[nodiscard]] T index_of(int layer) const noexcept { return field_->index({T(0), bottom_ + (T(layer) + T(0.5)) * height_, T(0)}); }
-
-    /// From `origin` in layer `layer` along the unit `direction`, straight to the layer's
-    /// next boundary and across it (or back, under total internal reflection). Returns
-    /// false when the ray leaves the layers (through the top or the bottom) or runs
-    /// horizontally; then `origin` is where it left.
-    bool step(Vec3<T>& origin, Vec3<T>& direction, int& layer) const noexcept
-    {
-        if (direction.y == T(0)) return false;
-        const bool up = direction.y > T(0);
-        const T boundary = bottom_ + T(layer + (up ? 1 : 0)) * height_;
-        origin = origin + ((boundary - origin.y) / direction.y) * direction;
-        origin.y = boundary;
-        const int next = layer + (up ? 1 : -1);
-        if (next < 0 || next >= layers_) return false;
-        const Vec3<T> facing{T(0), up ? T(-1) : T(1), T(0)};
-        if (const auto r = refraction(direction, facing, index_of(next) / index_of(layer))) {
-            direction = normalize(r->direction);
-            layer = next;
-        } else {
-            direction = reflect(direction, facing);
-        }
-        return true;
-    }
-
-private:
-    const F* field_;
-    T bottom_, top_, height_ = T(1);
-    int layers_;
-};
-
-} // namespace prism
-
-// ---- prism/medium/air.hpp ----
-// The scene's air: uniform (rays go straight, the default) or of a varying index
-// (graded-index air: mirages, a flattened setting sun), through which rays curve.
-//
-// GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
-// field must be uniform, and rays go straight there. LayeredAir is flat layers of
-// constant index, refracting at each boundary. How a ray travels through either to the first surface it meets is
-// transport/travel.hpp's.
-
-
-namespace prism {
-
-/// Uniform air of index 1: rays are straight.
-struct StraightAir {
-    /// Rays through it are straight.
-    static constexpr bool curved = false;
-    /// Nothing to check.
-    constexpr void validate() const {}
-};
-
-/// Air whose index is `field` inside `region` (uniform outside it); rays through it curve.
-template <IndexField F>
-struct GradedAir {
-    /// The field's precision.
-    using scalar_type = typename F::scalar_type;
-    /// Shorthand for scalar_type.
-    using T = scalar_type;
-    /// Rays through it curve.
-    static constexpr bool curved = true;
-
-    F field{}; ///< the refractive index inside the region
-    Aabb<T> region{};                                   ///< where the index varies
-    typename AdaptiveStepper<F>::Config stepping{};     ///< the stepper's tolerance and step lengths
-    /// A chord that meets a surface is halved (Sharma steps of half the dt) until it is
-    /// at most this long, so the landing point lies on the curve, not on a chord that
-    /// cuts under it (a chord of length L sags by about L^2 / (8 R) from a path of radius R).
-    T landing_chord = T(1e-3);
-    int max_steps = 1000000;                            ///< a ray still in the air after this many steps is lost (background)
-
-    /// Throws std::invalid_argument, naming the parameter, for a bad field, an unbounded or empty region, max_steps < 1, landing_chord <= 0 or bad stepping.
-    void validate() const
-    {
-        field.validate();
-        if (!region.bounded()) detail::throw_invalid("GradedAir region must be a bounded, non-empty box");
-        if (max_steps < 1) detail::throw_invalid("GradedAir max_steps must be >= 1, got ", max_steps);
-        detail::require_positive("GradedAir landing_chord", landing_chord);
-        (void)AdaptiveStepper<F>(field, stepping); // checks the stepping
-    }
-};
-
-/// Layered air: `layers` flat layers between heights `bottom` and `top`, each
-/// of the field's index at its middle height (stratified fields only); a ray goes
-/// straight within a layer and refracts by Snell's law (or reflects totally) at each
-/// boundary; above and below the layers it goes straight. The second policy beside
-/// GradedAir, for comparison: it keeps n cos(theta) exactly but converges only at first
-/// order in the layer height (bench/graded_index.cpp).
-template <IndexField F>
-struct LayeredAir {
-    /// The field's precision.
-    using scalar_type = typename F::scalar_type;
-    /// Shorthand for scalar_type.
-    using T = scalar_type;
-    /// Rays through it bend at the layers' boundaries.
-    static constexpr bool curved = true;
-
-    F field{}; ///< the index field the layers sample at their middle heights
-    T bottom = T(0); ///< height of the lowest layer's bottom
-    T top = T(1); ///< height of the highest layer's top
-    int layers = 100; ///< the number of layers
-
-    /// Throws std::invalid_argument, naming the parameter, for a bad field, top <= bottom or layers < 1.
-    void validate() const { (void)LayeredMedium<F>(field, bottom, top, layers); }
-};
-
-} // namespace prism
-
-// ---- prism/scene/hit.hpp ----
-// Hit: the closest crossing of a ray with a scene, and which object it belongs to.
-
-
-#include <cstdint>
-
-namespace prism {
-
-/// The surface a ray meets first: the crossing (point, normal, side) and which object it is.
-template <Scalar T>
-struct Hit {
-    Crossing<T> crossing{};  ///< where, with the outward normal and whether the ray enters
-    std::uint32_t slot = 0;  ///< the scene slot (compile-time position) of the object
-    std::uint32_t index = 0; ///< the object within its slot
-};
-
-} // namespace prism
-
-// ---- prism/transport/travel.hpp ----
-// How a ray travels through the scene's air to the first surface it meets
-// (first_hit_in_air): straight in StraightAir; in GradedAir it follows the ray equation
-// by AdaptiveStepper's steps, and each step's chord is tested against the scene: the
-// first surface a chord meets is where the ray lands (a chord is within the stepper's
-// tolerance of the true path). Surfaces shade as usual; the rays they send on (any ray
-// back in the air) curve again. Shadow rays stay straight: over the few metres to
-// kilometres a scene spans, air bends light by well under a degree, enough to move an
-// image (the mirage) and too little to move a shadow's edge visibly; tracing the curved
-// path that reaches a light is a boundary-value problem left for later.
-
-
-#include <limits>
-#include <optional>
-
-namespace prism {
-
-namespace detail {
-
-/// A straight piece of a path, tested against the scene a hair past its end: a surface
-/// exactly where one piece ends and the next begins (a floor on a layer boundary) is
-/// otherwise missed by both, the first ending just short of it by rounding, the second
-/// starting on it.
-template <class SceneT>
-[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> hit_on_piece(const SceneT& scene, const Ray<typename SceneT::scalar_type>& piece,
-                                                                           typename SceneT::scalar_type piece_length) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    const T slack = T(64) * std::numeric_limits<T>::epsilon() * (piece_length + max_component(abs(piece.origin)));
-    return scene.closest_hit(piece, {T(0), piece_length + slack});
-}
-
-/// The length of a path up to its current piece, told where the path lands.
-template <Scalar T>
-struct PathLength {
-    T travelled = T(0);
-    T* out = nullptr;
-
-    [[nodiscard]] std::optional<Hit<T>> landed(std::optional<Hit<T>> hit) const noexcept
-    {
-        if (hit && out != nullptr) *out = travelled + hit->crossing.t;
-        return hit;
-    }
-};
-
-/// The straight start of a path toward a slab or box of air: the surface it meets before
-/// reaching the box (`hit`), or whether it reaches the box at all and how far away.
-template <Scalar T>
-struct Approach {
-    std::optional<Hit<T>> hit;
-    bool reaches = false;
-    T distance = T(0);
-};
-
-template <class SceneT>
-[[nodiscard]] Approach<typename SceneT::scalar_type> approach(const SceneT& scene, const Aabb<typename SceneT::scalar_type>& box,
-                                                            const Ray<typename SceneT::scalar_type>& segment) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    const Interval<T> inside = box.clip(segment, {T(0), infinity<T>});
-    if (inside.empty()) return {scene.closest_hit(segment, {T(0), infinity<T>}), false, T(0)};
-    if (inside.min > T(0)) return {scene.closest_hit(segment, {T(0), inside.min}), true, inside.min};
-    return {std::nullopt, true, T(0)};
-}
-
-} // namespace detail
-
-/// Where a ray through layered air first meets a surface (see first_hit_through below).
-template <class SceneT, IndexField F>
-[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const LayeredAir<F>& air,
-                                                                                const Ray<typename SceneT::scalar_type>& ray,
-                                                                                Ray<typename SceneT::scalar_type>& segment,
-                                                                                typename SceneT::scalar_type* path = nullptr) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    static_assert(std::same_as<T, typename F::scalar_type>, "LayeredAir's field must have the scene's scalar type");
-    const LayeredMedium<F> medium(air.field, air.bottom, air.top, air.layers);
-    segment = {ray.origin, normalize(ray.direction)};
-    detail::PathLength<T> length_so_far{T(0), path};
-    const auto to_box = detail::approach(scene, Aabb<T>{{-infinity<T>, air.bottom, -infinity<T>}, {infinity<T>, air.top, infinity<T>}}, segment);
-    if (to_box.hit || !to_box.reaches) return length_so_far.landed(to_box.hit);
-    length_so_far.travelled = to_box.distance;
-    Vec3<T> origin = segment.at(to_box.distance), direction = segment.direction;
-    // Entering through the top or bottom face, the ray starts in the layer it enters.
-    int layer = medium.layer_of(origin.y + (direction.y > T(0) ? T(0.5) : T(-0.5)) * (air.top - air.bottom) / T(air.layers));
-    for (int i = 0; i < 4 * air.layers + 4; ++i) {
-        const Vec3<T> start = origin, heading = direction;
-        const bool inside_layers = medium.step(origin, direction, layer);
-        const T length_now = length(origin - start);
-        segment = {start, heading};
-        if (length_now > T(0)) {
-            if (auto hit = detail::hit_on_piece(scene, segment, length_now)) return length_so_far.landed(hit);
-        }
-        length_so_far.travelled += length_now;
-        if (!inside_layers) {
-            if (heading.y == T(0)) return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>})); // level: straight on
-            segment = {origin, direction};
-            return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>}));
-        }
-    }
-    return std::nullopt;
-}
-
-/// Where a ray through curved air first meets a surface of the scene, or nothing; on a
-/// hit, `segment` is the straight piece (unit direction) on which it lies, the ray to
-/// shade with, and `path` (if given) receives the length of the whole curved path.
-template <class SceneT, IndexField F>
-[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const GradedAir<F>& air,
-                                                                                const Ray<typename SceneT::scalar_type>& ray,
-                                                                                Ray<typename SceneT::scalar_type>& segment,
-                                                                                typename SceneT::scalar_type* path = nullptr) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    static_assert(std::same_as<T, typename F::scalar_type>, "GradedAir's field must have the scene's scalar type");
-    segment = {ray.origin, normalize(ray.direction)};
-    detail::PathLength<T> length_so_far{T(0), path}; // along the path, up to `segment`'s origin
-    const auto to_box = detail::approach(scene, air.region, segment);
-    if (to_box.hit || !to_box.reaches) return length_so_far.landed(to_box.hit);
-    length_so_far.travelled = to_box.distance;
-    CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(to_box.distance), segment.direction});
-    const AdaptiveStepper<F> stepper(air.field, air.stepping);
-    T dt = T(0);
-    for (int i = 0; i < air.max_steps; ++i) {
-        const CurvedRay<T> start = curved;
-        T taken = T(0);
-        stepper.step(curved, dt, &taken);
-        const Vec3<T> chord = curved.position - start.position;
-        const T chord_length = length(chord);
-        if (!(chord_length > T(0))) continue;
-        segment = {start.position, chord / chord_length};
-        if (auto hit = detail::hit_on_piece(scene, segment, chord_length)) {
-            // Home in on the landing point along the curve: halve the step while its
-            // chord is long, keeping the half whose chord meets the surface.
-            CurvedRay<T> from = start;
-            T h = taken;
-            T length_now = chord_length;
-            while (length_now > air.landing_chord && h > T(0)) {
-                h /= T(2);
-                const CurvedRay<T> middle = sharma_step(air.field, from, h);
-                const Vec3<T> first = middle.position - from.position;
-                const T first_length = length(first);
-                if (!(first_length > T(0))) break;
-                const Ray<T> first_segment{from.position, first / first_length};
-                if (auto near = detail::hit_on_piece(scene, first_segment, first_length)) {
-                    segment = first_segment;
-                    hit = near;
-                    length_now = first_length;
-                    continue;
-                }
-                const CurvedRay<T> end = sharma_step(air.field, middle, h);
-                const Vec3<T> second = end.position - middle.position;
-                const T second_length = length(second);
-                if (!(second_length > T(0))) break;
-                const Ray<T> second_segment{middle.position, second / second_length};
-                auto far = detail::hit_on_piece(scene, second_segment, second_length);
-                if (!far) break; // the curve grazes past where the chord met it: keep the chord's hit
-                segment = second_segment;
-                hit = far;
-                from = middle;
-                length_so_far.travelled += first_length;
-                length_now = second_length;
-            }
-            return length_so_far.landed(hit);
-        }
-        length_so_far.travelled += chord_length;
-        if (!air.region.contains(curved.position)) {
-            // Out of the box: straight from here on.
-            segment = {curved.position, curved.direction()};
-            return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>}));
-        }
-    }
-    return std::nullopt;
-}
-
-/// The first surface a ray in the air meets: along the curve in GradedAir, straight in
-/// StraightAir (where `segment` is the ray itself). `path`, if given, receives the
-/// length travelled to it.
-template <class SceneT, class Air>
-[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_in_air(const SceneT& scene, const Air& air,
-                                                                               const Ray<typename SceneT::scalar_type>& ray,
-                                                                               Ray<typename SceneT::scalar_type>& segment,
-                                                                               typename SceneT::scalar_type* path = nullptr) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    if constexpr (Air::curved) {
-        return first_hit_through(scene, air, ray, segment, path);
-    } else {
-        segment = ray;
-        auto hit = scene.closest_hit(ray, {T(0), infinity<T>});
-        if (hit && path != nullptr) *path = hit->crossing.t * length(ray.direction);
-        return hit;
-    }
-}
-
-} // namespace prism
-
 // ---- prism/medium/nesting.hpp ----
 // Nested dielectrics: the media a ray is inside of, so that water in a glass, an air
 // bubble in glass or a glass in water refract with the right n1 / n2 at every interface.
@@ -9023,9 +8878,105 @@ private:
 
 } // namespace prism
 
+// ---- prism/medium/phase.hpp ----
+// Phase functions: where light scattered in a medium goes, a density over the sphere of
+// directions. Written, as every walker uses them, for the directions of travel before
+// and after the scattering (a camera path's as well as a photon's: the function depends
+// on their angle only, so it reads the same both ways).
+
+
+#include <cmath>
+#include <concepts>
+
+namespace prism {
+
+/// A direction of travel drawn from a phase function, with its density (solid angle).
+template <Scalar T>
+struct PhaseSample {
+    Vec3<T> direction; ///< unit, the direction of travel after scattering
+    T pdf;             ///< its density, the phase function's value there
+};
+
+/// A phase function: `value(cos)` for the cosine between the directions of travel before
+/// and after scattering (a density over the sphere, integrating to 1), and
+/// `sample(direction, u1, u2)` drawing the direction after from exactly that density.
+template <class P>
+concept PhaseFunction = requires(const P& phase, typename P::scalar_type x, const Vec3<typename P::scalar_type>& d) {
+    { phase.value(x) } -> std::same_as<typename P::scalar_type>;
+    { phase.sample(d, x, x) } -> std::same_as<PhaseSample<typename P::scalar_type>>;
+    phase.validate();
+};
+
+/// Henyey and Greenstein's (1941) phase function of mean cosine `g`: 0 scatters evenly
+/// (isotropic), toward 1 forward (haze, cloud droplets: 0.7 to 0.9), toward -1 back.
+/// p(cos) = (1 - g^2) / (4 pi (1 + g^2 - 2 g cos)^(3/2)), drawn by inverting its
+/// distribution in cos.
+template <Scalar T = float>
+struct HenyeyGreenstein {
+    /// The precision of the parameter.
+    using scalar_type = T;
+
+    T g = T(0); ///< the mean cosine of the scattering angle, in (-1, 1)
+
+    /// The density for the cosine between the directions of travel before and after.
+    [[nodiscard]] T value(T cos_theta) const noexcept
+    {
+        const T denominator = T(1) + g * g - T(2) * g * cos_theta;
+        return (T(1) - g * g) / (T(4) * pi<T> * denominator * prism::sqrt(denominator));
+    }
+
+    /// A direction of travel after scattering, for `direction` (unit) before, from two
+    /// uniform numbers.
+    [[nodiscard]] PhaseSample<T> sample(const Vec3<T>& direction, T u1, T u2) const noexcept
+    {
+        T cos_theta;
+        if (std::abs(g) < T(1e-3)) {
+            cos_theta = T(1) - T(2) * u1;
+        } else {
+            const T s = (T(1) - g * g) / (T(1) + g - T(2) * g * u1);
+            cos_theta = std::clamp((T(1) + g * g - s * s) / (T(2) * g), T(-1), T(1));
+        }
+        const T sin_theta = prism::sqrt(std::max(T(0), T(1) - cos_theta * cos_theta));
+        const T phi = T(2) * pi<T> * u2;
+        const auto [a, b] = orthonormal_frame(direction);
+        const Vec3<T> out = sin_theta * (std::cos(phi) * a + std::sin(phi) * b) + cos_theta * direction;
+        return {normalize(out), value(cos_theta)};
+    }
+
+    /// Throws std::invalid_argument for g outside (-1, 1) or not finite.
+    void validate() const
+    {
+        if (!(g > T(-1) && g < T(1))) detail::throw_invalid("HenyeyGreenstein g must be in (-1, 1), got ", g);
+    }
+};
+
+static_assert(PhaseFunction<HenyeyGreenstein<float>> && PhaseFunction<HenyeyGreenstein<double>>);
+
+} // namespace prism
+
+// ---- prism/scene/hit.hpp ----
+// Hit: the closest crossing of a ray with a scene, and which object it belongs to.
+
+
+#include <cstdint>
+
+namespace prism {
+
+/// The surface a ray meets first: the crossing (point, normal, side) and which object it is.
+template <Scalar T>
+struct Hit {
+    Crossing<T> crossing{};  ///< where, with the outward normal and whether the ray enters
+    std::uint32_t slot = 0;  ///< the scene slot (compile-time position) of the object
+    std::uint32_t index = 0; ///< the object within its slot
+};
+
+} // namespace prism
+
 // ---- prism/transport/media.hpp ----
 // What the media a path is in (medium/nesting.hpp's MediumStack) do to light on its way:
-// the index on an interface's far side, and the attenuation along a segment.
+// the index on an interface's far side, the attenuation along a segment, where a walker
+// scatters in a medium that scatters (an object's interior, or the scene's air when it is
+// FilledAir), and what such air lets through along a shadow ray.
 
 
 namespace prism {
@@ -9054,10 +9005,254 @@ void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& m
 {
     if (const Inside* in = media.top()) {
         scene.visit_material(in->slot, in->index, [&]<class N>(const N& medium_material) {
-            if constexpr (N::transmits) light *= medium_material.medium().transmittance(hit.t * length(ray.direction));
+            // (A medium that scatters was crossed by fly_through_medium, its weight taken.)
+            if constexpr (N::transmits && !has_scattering_interior<N>) light *= medium_material.medium().transmittance(hit.t * length(ray.direction));
         });
     } else {
         attenuate_inside(material, hit, ray, light);
+    }
+}
+
+/// A walker's flight along `segment` (unit direction) through the medium it is in, up to
+/// t_max (the surface it meets there, or infinity): in an object whose interior scatters,
+/// or in the scene's air where FilledAir fills it, the medium draws where the walker
+/// scatters (its sample_flight) and `power` takes the draw's weight; where it scatters
+/// before t_max, on_scatter(medium, distance, weight) is called (the weight already taken). In a medium that only absorbs,
+/// or in clear air, nothing happens here (attenuate_segment takes the absorption).
+template <class SceneT, class Air, Scalar T, class OnScatter>
+void fly_through_medium(const SceneT& scene, const Air& air, const MediumStack& media, const Ray<T>& segment, T t_max, Rgb<T>& power,
+                        Pcg32& rng, OnScatter&& on_scatter)
+{
+    if (const Inside* in = media.top()) {
+        if constexpr (SceneT::has_scattering_media) {
+            scene.visit_material(in->slot, in->index, [&]<class N>(const N& material) {
+                if constexpr (has_scattering_interior<N>) {
+                    const auto& medium = material.medium();
+                    const FreeFlight<T> flight = medium.sample_flight(segment, t_max, power, rng);
+                    power *= flight.weight;
+                    if (flight.scattered) on_scatter(medium, flight.distance, flight.weight);
+                }
+            });
+        }
+    } else if constexpr (air_scatters<Air>) {
+        const Interval<T> inside = air.region.clip(segment, {T(0), t_max});
+        if (inside.empty()) return;
+        const FreeFlight<T> flight = air.medium.sample_flight({segment.at(inside.min), segment.direction}, inside.max - inside.min, power, rng);
+        power *= flight.weight;
+        if (flight.scattered) on_scatter(air.medium, inside.min + flight.distance, flight.weight);
+    }
+}
+
+/// What the scene's air lets through along `ray` (unit direction) over `distance` (may be
+/// infinite): its medium's transmittance over the part inside its region where it is
+/// FilledAir, 1 in clear air. (Glass and the media inside objects are the scene's
+/// transmittance.)
+template <class Air, Scalar T>
+[[nodiscard]] Rgb<T> air_transmittance(const Air& air, const Ray<T>& ray, T distance) noexcept
+{
+    if constexpr (air_scatters<Air>) {
+        const Interval<T> inside = air.region.clip(ray, {T(0), distance});
+        if (inside.empty()) return Rgb<T>(T(1));
+        return air.medium.transmittance(inside.max - inside.min);
+    } else {
+        (void)air, (void)ray, (void)distance;
+        return Rgb<T>(T(1));
+    }
+}
+
+} // namespace prism
+
+// ---- prism/transport/travel.hpp ----
+// How a ray travels through the scene's air to the first surface it meets
+// (first_hit_in_air): straight in StraightAir; in GradedAir it follows the ray equation
+// by AdaptiveStepper's steps, and each step's chord is tested against the scene: the
+// first surface a chord meets is where the ray lands (a chord is within the stepper's
+// tolerance of the true path). Surfaces shade as usual; the rays they send on (any ray
+// back in the air) curve again. Shadow rays stay straight: over the few metres to
+// kilometres a scene spans, air bends light by well under a degree, enough to move an
+// image (the mirage) and too little to move a shadow's edge visibly; tracing the curved
+// path that reaches a light is a boundary-value problem left for later.
+
+
+#include <limits>
+#include <optional>
+
+namespace prism {
+
+namespace detail {
+
+/// A straight piece of a path, tested against the scene a hair past its end: a surface
+/// exactly where one piece ends and the next begins (a floor on a layer boundary) is
+/// otherwise missed by both, the first ending just short of it by rounding, the second
+/// starting on it.
+template <class SceneT>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> hit_on_piece(const SceneT& scene, const Ray<typename SceneT::scalar_type>& piece,
+                                                                           typename SceneT::scalar_type piece_length) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    const T slack = T(64) * std::numeric_limits<T>::epsilon() * (piece_length + max_component(abs(piece.origin)));
+    return scene.closest_hit(piece, {T(0), piece_length + slack});
+}
+
+/// The length of a path up to its current piece, told where the path lands.
+template <Scalar T>
+struct PathLength {
+    T travelled = T(0);
+    T* out = nullptr;
+
+    [[nodiscard]] std::optional<Hit<T>> landed(std::optional<Hit<T>> hit) const noexcept
+    {
+        if (hit && out != nullptr) *out = travelled + hit->crossing.t;
+        return hit;
+    }
+};
+
+/// The straight start of a path toward a slab or box of air: the surface it meets before
+/// reaching the box (`hit`), or whether it reaches the box at all and how far away.
+template <Scalar T>
+struct Approach {
+    std::optional<Hit<T>> hit;
+    bool reaches = false;
+    T distance = T(0);
+};
+
+template <class SceneT>
+[[nodiscard]] Approach<typename SceneT::scalar_type> approach(const SceneT& scene, const Aabb<typename SceneT::scalar_type>& box,
+                                                            const Ray<typename SceneT::scalar_type>& segment) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    const Interval<T> inside = box.clip(segment, {T(0), infinity<T>});
+    if (inside.empty()) return {scene.closest_hit(segment, {T(0), infinity<T>}), false, T(0)};
+    if (inside.min > T(0)) return {scene.closest_hit(segment, {T(0), inside.min}), true, inside.min};
+    return {std::nullopt, true, T(0)};
+}
+
+} // namespace detail
+
+/// Where a ray through layered air first meets a surface (see first_hit_through below).
+template <class SceneT, IndexField F>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const LayeredAir<F>& air,
+                                                                                const Ray<typename SceneT::scalar_type>& ray,
+                                                                                Ray<typename SceneT::scalar_type>& segment,
+                                                                                typename SceneT::scalar_type* path = nullptr) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    static_assert(std::same_as<T, typename F::scalar_type>, "LayeredAir's field must have the scene's scalar type");
+    const LayeredMedium<F> medium(air.field, air.bottom, air.top, air.layers);
+    segment = {ray.origin, normalize(ray.direction)};
+    detail::PathLength<T> length_so_far{T(0), path};
+    const auto to_box = detail::approach(scene, Aabb<T>{{-infinity<T>, air.bottom, -infinity<T>}, {infinity<T>, air.top, infinity<T>}}, segment);
+    if (to_box.hit || !to_box.reaches) return length_so_far.landed(to_box.hit);
+    length_so_far.travelled = to_box.distance;
+    Vec3<T> origin = segment.at(to_box.distance), direction = segment.direction;
+    // Entering through the top or bottom face, the ray starts in the layer it enters.
+    int layer = medium.layer_of(origin.y + (direction.y > T(0) ? T(0.5) : T(-0.5)) * (air.top - air.bottom) / T(air.layers));
+    for (int i = 0; i < 4 * air.layers + 4; ++i) {
+        const Vec3<T> start = origin, heading = direction;
+        const bool inside_layers = medium.step(origin, direction, layer);
+        const T length_now = length(origin - start);
+        segment = {start, heading};
+        if (length_now > T(0)) {
+            if (auto hit = detail::hit_on_piece(scene, segment, length_now)) return length_so_far.landed(hit);
+        }
+        length_so_far.travelled += length_now;
+        if (!inside_layers) {
+            if (heading.y == T(0)) return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>})); // level: straight on
+            segment = {origin, direction};
+            return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>}));
+        }
+    }
+    return std::nullopt;
+}
+
+/// Where a ray through curved air first meets a surface of the scene, or nothing; on a
+/// hit, `segment` is the straight piece (unit direction) on which it lies, the ray to
+/// shade with, and `path` (if given) receives the length of the whole curved path.
+template <class SceneT, IndexField F>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const GradedAir<F>& air,
+                                                                                const Ray<typename SceneT::scalar_type>& ray,
+                                                                                Ray<typename SceneT::scalar_type>& segment,
+                                                                                typename SceneT::scalar_type* path = nullptr) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    static_assert(std::same_as<T, typename F::scalar_type>, "GradedAir's field must have the scene's scalar type");
+    segment = {ray.origin, normalize(ray.direction)};
+    detail::PathLength<T> length_so_far{T(0), path}; // along the path, up to `segment`'s origin
+    const auto to_box = detail::approach(scene, air.region, segment);
+    if (to_box.hit || !to_box.reaches) return length_so_far.landed(to_box.hit);
+    length_so_far.travelled = to_box.distance;
+    CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(to_box.distance), segment.direction});
+    const AdaptiveStepper<F> stepper(air.field, air.stepping);
+    T dt = T(0);
+    for (int i = 0; i < air.max_steps; ++i) {
+        const CurvedRay<T> start = curved;
+        T taken = T(0);
+        stepper.step(curved, dt, &taken);
+        const Vec3<T> chord = curved.position - start.position;
+        const T chord_length = length(chord);
+        if (!(chord_length > T(0))) continue;
+        segment = {start.position, chord / chord_length};
+        if (auto hit = detail::hit_on_piece(scene, segment, chord_length)) {
+            // Home in on the landing point along the curve: halve the step while its
+            // chord is long, keeping the half whose chord meets the surface.
+            CurvedRay<T> from = start;
+            T h = taken;
+            T length_now = chord_length;
+            while (length_now > air.landing_chord && h > T(0)) {
+                h /= T(2);
+                const CurvedRay<T> middle = sharma_step(air.field, from, h);
+                const Vec3<T> first = middle.position - from.position;
+                const T first_length = length(first);
+                if (!(first_length > T(0))) break;
+                const Ray<T> first_segment{from.position, first / first_length};
+                if (auto near = detail::hit_on_piece(scene, first_segment, first_length)) {
+                    segment = first_segment;
+                    hit = near;
+                    length_now = first_length;
+                    continue;
+                }
+                const CurvedRay<T> end = sharma_step(air.field, middle, h);
+                const Vec3<T> second = end.position - middle.position;
+                const T second_length = length(second);
+                if (!(second_length > T(0))) break;
+                const Ray<T> second_segment{middle.position, second / second_length};
+                auto far = detail::hit_on_piece(scene, second_segment, second_length);
+                if (!far) break; // the curve grazes past where the chord met it: keep the chord's hit
+                segment = second_segment;
+                hit = far;
+                from = middle;
+                length_so_far.travelled += first_length;
+                length_now = second_length;
+            }
+            return length_so_far.landed(hit);
+        }
+        length_so_far.travelled += chord_length;
+        if (!air.region.contains(curved.position)) {
+            // Out of the box: straight from here on.
+            segment = {curved.position, curved.direction()};
+            return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>}));
+        }
+    }
+    return std::nullopt;
+}
+
+/// The first surface a ray in the air meets: along the curve in GradedAir, straight in
+/// StraightAir (where `segment` is the ray itself). `path`, if given, receives the
+/// length travelled to it.
+template <class SceneT, class Air>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_in_air(const SceneT& scene, const Air& air,
+                                                                               const Ray<typename SceneT::scalar_type>& ray,
+                                                                               Ray<typename SceneT::scalar_type>& segment,
+                                                                               typename SceneT::scalar_type* path = nullptr) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    if constexpr (Air::curved) {
+        return first_hit_through(scene, air, ray, segment, path);
+    } else {
+        segment = ray;
+        auto hit = scene.closest_hit(ray, {T(0), infinity<T>});
+        if (hit && path != nullptr) *path = hit->crossing.t * length(ray.direction);
+        return hit;
     }
 }
 
@@ -9076,7 +9271,10 @@ void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& m
 // roulette on its throughput once it has met WalkLimits::roulette_depth surfaces, so a
 // path on its way to a bright, hard-to-find light (a caustic) is not cut short by the dim
 // surfaces it left. In the air the path follows the air's curve (GradedAir), inside
-// objects straight lines.
+// objects straight lines. In a medium that scatters (an object's Fog, or FilledAir) the
+// walk draws where it scatters along each segment (fly_through_medium); there the caller's
+// `on_medium` sees the vertex, and the walk goes on in a direction drawn from the
+// medium's phase function.
 
 
 #include <algorithm>
@@ -9128,6 +9326,37 @@ struct WalkEscape {
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
 };
 
+/// A walk where it scatters in a medium, before it scatters there.
+template <Scalar T>
+struct WalkMediumVertex {
+    const Vec3<T>& point;     ///< where it scatters
+    const Vec3<T>& direction; ///< unit, arriving
+    const Rgb<T>& power;      ///< what the path carries here, the medium's scattering coefficient and the draw's weight taken
+    bool direct;              ///< nothing scattered it yet
+    int diffuse_bounces;      ///< non-delta scatterings so far, at surfaces or in media
+    bool first_specular;      ///< the first scattering was specular
+    T travelled;              ///< the path's length so far
+    T wavelength;             ///< 0 while white
+    const MediumStack& media; ///< the transmissive objects the path is inside of
+    const Vec3<T>& last_point; ///< where the path last scattered (or started)
+    T last_pdf;               ///< as WalkVertex's
+    bool last;                ///< the walk ends after this vertex (its depth limit)
+    Pcg32& rng;               ///< the walk's stream
+
+    /// Whether every scattering so far was specular.
+    [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
+};
+
+/// What a walk does where it scatters in a medium when its caller says nothing: it goes on.
+struct IgnoreMedia {
+    /// Goes on.
+    template <class M, class V>
+    constexpr bool operator()(const M&, const V&) const noexcept
+    {
+        return true;
+    }
+};
+
 /// What a walk does where it leaves the scene when its caller says nothing: nothing.
 struct IgnoreEscape {
     /// Does nothing.
@@ -9162,12 +9391,16 @@ struct WalkLimits {
 /// WalkVertex) where it meets a surface that emits (an area light; the walk scatters there
 /// only by the lobes the material also has). `Mode`: whether the path is a photon's or a
 /// camera's (scatter_photon); a camera path is ended by path_roulette after
-/// limits.roulette_depth surfaces.
-template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters>
+/// limits.roulette_depth surfaces. on_medium(medium, WalkMediumVertex) is called where the
+/// path scatters in a medium (a scene or air with none never compiles it) and returns
+/// whether the walk goes on; such a vertex counts as a surface toward the limits.
+template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters,
+          class OnMedium = IgnoreMedia>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
                  Rgb<typename SceneT::scalar_type> power, Pcg32& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
-                 OnEmitter&& on_emitter = {})
+                 OnEmitter&& on_emitter = {}, OnMedium&& on_medium = {})
 {
+    static_assert(!(Air::curved && air_scatters<Air>), "air that both curves rays and scatters light is not supported yet");
     using T = typename SceneT::scalar_type;
     bool direct = true, first_specular = false;
     int diffuse_bounces = 0, surface_bounces = 0;
@@ -9182,6 +9415,44 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         T path = T(0);
         const auto hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, &path)
                                        : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
+        if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
+            // Where the path scatters in the medium it crosses before the surface.
+            enum class InMedium { passed, scattered, absorbed } in_medium = InMedium::passed;
+            const Vec3<T> d = normalize(segment.direction);
+            const T scale = length(segment.direction);
+            const T t_max = hit ? hit->crossing.t * scale : infinity<T>;
+            fly_through_medium(scene, air, media, Ray<T>{segment.origin, d}, t_max, power, rng, [&]<class Md>(const Md& medium, T s, const Rgb<T>& weight) {
+                const Vec3<T> p = segment.origin + s * d;
+                travelled += s; // (a straight segment: inside objects, or in straight air)
+                const bool last = bounce == limits.max_bounces;
+                in_medium = InMedium::absorbed;
+                if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng}))
+                    return;
+                if constexpr (Mode == Transport::importance) {
+                    // A photon keeps its power: it goes on with the chance of the draw's
+                    // largest weight (the albedo in a grey medium), divided out.
+                    const T keep = std::min(T(1), max_component(weight));
+                    if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return;
+                    power /= keep;
+                } else {
+                    if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return;
+                }
+                const T u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
+                const PhaseSample<T> next = medium.phase.sample(d, u1, u2);
+                ray = {p, next.direction};
+                last_point = p;
+                last_pdf = next.pdf;
+                ++diffuse_bounces;
+                ++surface_bounces;
+                if (direct) first_specular = false;
+                in_medium = InMedium::scattered;
+            });
+            if (in_medium == InMedium::absorbed) return;
+            if (in_medium == InMedium::scattered) {
+                direct = false;
+                continue;
+            }
+        }
         if (!hit) {
             on_escape(WalkEscape<T>{segment, power, diffuse_bounces, first_specular, last_pdf});
             return;
@@ -9350,6 +9621,8 @@ struct Emitter {
 template <class SceneT, class Air = StraightAir>
 class PhotonTracer {
 public:
+    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
+                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     using T = typename SceneT::scalar_type;
 
     PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config, const Air& air = {})
@@ -11568,6 +11841,8 @@ public:
 
     /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
     static constexpr bool has_transmissive = detail::any_of({transmits<typename Slots::material_type>...});
+    /// Some material's interior scatters light (a Fog): walks sample where they scatter in it.
+    static constexpr bool has_scattering_media = detail::any_of({has_scattering_interior<typename Slots::material_type>...});
     /// Some material reads surface coordinates (a texture, a normal map): its crossings take
     /// them, and rays carry their cones on through mirrors and glass (carry_cone).
     static constexpr bool reads_surface_coordinates = detail::any_of({reads_coordinates<typename Slots::material_type>()...});
@@ -12097,6 +12372,8 @@ struct LightTracerConfig {
 template <class SceneT, class Air = StraightAir>
 class LightTracer {
 public:
+    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
+                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
     /// Shorthand for scalar_type.
@@ -12313,6 +12590,29 @@ void for_each_sample_arriving(const SceneT& scene, const L& light, const Crossin
     });
 }
 
+/// For each sample of `light` at a point `p` in a medium (no surface: every direction
+/// counts), call f(sample, v): the sample, its irradiance already its share of the
+/// light's, and v the scene's transmittance along the shadow ray (0 when occluded; the
+/// air's own medium is the caller's, transport/media.hpp's air_transmittance).
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Light L, Scalar T, class F>
+void for_each_sample_in_medium(const SceneT& scene, const L& light, const Vec3<T>& p, const LightSampling& sampling, F&& f)
+{
+    for_each_light_sample(light, p, sampling, [&](const LightSample<T>& s) {
+        if (!(max_component(s.irradiance) > T(0))) return;
+        if constexpr (has_own_shadow<L>) {
+            const auto through = [&](const Vec3<T>& point) {
+                const Vec3<T> to = point - p;
+                const T distance = length(to);
+                if (!(distance > T(0))) return Rgb<T>(T(1));
+                return scene.template transmittance<Glass>(Ray<T>{p, to / distance}, distance * (T(1) - shadow_epsilon<T>));
+            };
+            f(s, light.shadow(through, s.irradiance / pi<T>, sampling.rng));
+        } else {
+            f(s, scene.template transmittance<Glass>(Ray<T>{p, s.wi}, s.distance * (T(1) - shadow_epsilon<T>)));
+        }
+    });
+}
+
 /// for_each_sample_arriving over every light of the scene, its area lights last.
 template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
 void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const LightSampling& sampling, F&& f)
@@ -12348,6 +12648,11 @@ void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, F&& f)
 // With the scene's BRDF albedo / pi and one radiometric convention, a closed diffuse
 // room of albedo rho under a light at its centre gives rho / (1 - rho) times E / pi:
 // the furnace reads 1.0 where Whitted reads 0.5.
+// In a medium that scatters (an object's Fog, or FilledAir around everything) a path
+// scatters in the air as at a surface: light samples there are weighed by the phase
+// function and the medium's transmittance to the light, shared with the phase
+// function's own draw by MIS, and every shadow ray in the air takes the air's
+// transmittance.
 
 
 namespace prism {
@@ -12442,10 +12747,10 @@ public:
                                     const Rgb<T> f = lobe.f(s.wi, Transport::radiance);
                                     if (!(max_component(f) > T(0))) return;
                                     const T w = shared ? light_sample_weight(s.pdf, lobe.pdf(s.wi)) : T(1);
-                                    gathered += (w * cos) * f * v * s.irradiance;
+                                    gathered += (w * cos) * f * v * through_air(at.media, c.point, s) * s.irradiance;
                                 } else {
                                     const T w = shared ? light_sample_weight(s.pdf, cos / pi<T>) : T(1);
-                                    gathered += w * v * s.irradiance * cos;
+                                    gathered += w * v * through_air(at.media, c.point, s) * s.irradiance * cos;
                                 }
                             });
                         });
@@ -12473,6 +12778,24 @@ public:
                             else sum += at.power * emitted(material, at.crossing()) *
                                         met_light_weight(at.last_pdf, at.first_specular, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
                         }
+                    },
+                    [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
+                        // In a medium: each light's samples weighed by the phase function
+                        // toward them (the bounce's density there, for MIS), no cosine.
+                        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
+                        Rgb<T> gathered{T(0)};
+                        scene_->for_each_light([&]<class L>(const L& light) {
+                            if constexpr (!is_delta_light<L>) {
+                                if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
+                            }
+                            for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, at.point, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
+                                const T phase = medium.phase.value(dot(at.direction, s.wi));
+                                const T w = !s.delta() && go_on ? light_sample_weight(s.pdf, phase) : T(1);
+                                gathered += (w * phase) * v * through_air(at.media, at.point, s) * s.irradiance;
+                            });
+                        });
+                        sum += at.power * gathered;
+                        return go_on;
                     });
         return sum;
     }
@@ -12513,6 +12836,18 @@ public:
     }
 
 private:
+    /// What the scene's air lets through along a light sample's shadow ray from `p`: its
+    /// medium's transmittance for a path in the air (FilledAir), 1 inside an object (its
+    /// shadow ray is the scene's to stop at the object's glass) or in clear air.
+    [[nodiscard]] Rgb<T> through_air(const MediumStack& media, const Vec3<T>& p, const LightSample<T>& s) const noexcept
+    {
+        if constexpr (air_scatters<Air>) {
+            if (media.empty()) return air_transmittance(air_, Ray<T>{p, s.wi}, s.distance);
+        }
+        (void)media, (void)p, (void)s;
+        return Rgb<T>(T(1));
+    }
+
     /// The samples each area light takes at a diffuse vertex (the heuristic counts them all).
     [[nodiscard]] T light_samples() const noexcept { return T(config_.area_light_grid * config_.area_light_grid); }
 
@@ -12574,6 +12909,8 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class PhotonMapper {
 public:
+    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
+                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
     /// Shorthand for scalar_type.
@@ -13089,6 +13426,8 @@ struct ProgressiveConfig {
 template <class SceneT, class Air = StraightAir>
 class ProgressivePhotonMapper {
 public:
+    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
+                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
     /// Shorthand for scalar_type.
@@ -13244,6 +13583,8 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class Whitted {
 public:
+    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
+                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
     /// Shorthand for scalar_type.
@@ -16777,6 +17118,91 @@ private:
 };
 
 static_assert(Material<CoatedDielectric<float>>);
+
+} // namespace prism
+
+// ---- prism/medium/fog.hpp ----
+// Fog: a homogeneous medium that absorbs and scatters (haze, smoke of even density, murky
+// water), its coefficients per channel, its phase function Henyey-Greenstein's by default.
+//
+// A walker crossing it draws where it next scatters (free-flight sampling): a channel
+// with the chance of its share of what the walker carries, a distance with that
+// channel's density sigma_t exp(-sigma_t s), and the weight that makes the draw unbiased
+// in every channel, the density being the channels' mixture (the balance heuristic over
+// channels, as Cycles does; pbrt-v4 the same over its wavelengths). In a grey fog the
+// weights are exact: the albedo sigma_s / sigma_t where it scatters, 1 where it passes.
+
+
+#include <algorithm>
+#include <cmath>
+
+namespace prism {
+
+/// A homogeneous scattering medium: `absorption` and `scattering` coefficients per unit
+/// length and per channel (sigma_a, sigma_s; their sum the extinction sigma_t), and the
+/// `phase` function by which it scatters.
+template <Scalar T = float, PhaseFunction Phase = HenyeyGreenstein<T>>
+struct Fog {
+    /// The precision of the coefficients.
+    using scalar_type = T;
+    /// Its phase function's type.
+    using phase_type = Phase;
+    /// Light scatters in it.
+    static constexpr bool scatters = true;
+
+    Rgb<T> absorption{T(0)}; ///< sigma_a per channel, per unit length
+    Rgb<T> scattering{T(0)}; ///< sigma_s per channel, per unit length
+    Phase phase{};           ///< where scattered light goes
+
+    /// sigma_t = sigma_a + sigma_s.
+    [[nodiscard]] constexpr Rgb<T> extinction() const noexcept { return absorption + scattering; }
+
+    /// exp(-sigma_t distance) per channel (1 in a clear channel, even at infinity).
+    [[nodiscard]] Rgb<T> transmittance(T distance) const noexcept
+    {
+        const Rgb<T> sigma = extinction();
+        return {channel_transmittance(sigma.x, distance), channel_transmittance(sigma.y, distance), channel_transmittance(sigma.z, distance)};
+    }
+
+    /// Where a walker along `ray` (unit direction, in the fog from its origin) carrying
+    /// `power` next scatters before `t_max` (which may be infinite), or that it reaches
+    /// t_max, and the weight its power takes either way.
+    [[nodiscard]] FreeFlight<T> sample_flight(const Ray<T>& ray, T t_max, const Rgb<T>& power, Pcg32& rng) const noexcept
+    {
+        (void)ray;
+        const Rgb<T> sigma = extinction();
+        const T total = power.x + power.y + power.z;
+        const Rgb<T> chance = total > T(0) ? power / total : Rgb<T>(T(1) / T(3));
+        const T pick = rng.uniform<T>();
+        int channel = pick < chance.x ? 0 : pick < chance.x + chance.y ? 1 : 2;
+        if (!(chance[channel] > T(0))) channel = chance.z > T(0) ? 2 : chance.y > T(0) ? 1 : 0; // past the sum by rounding
+        const T u = rng.uniform<T>();
+        const T s = sigma[channel] > T(0) ? -std::log1p(-u) / sigma[channel] : infinity<T>;
+        if (s < t_max) {
+            const Rgb<T> tr = transmittance(s);
+            const T pdf = dot(chance, sigma * tr);
+            if (!(pdf > T(0))) return {t_max, Rgb<T>(T(0)), false};
+            return {s, scattering * tr / pdf, true};
+        }
+        const Rgb<T> tr = transmittance(t_max);
+        const T passing = dot(chance, tr);
+        return {t_max, passing > T(0) ? tr / passing : Rgb<T>(T(0)), false};
+    }
+
+    /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite
+    /// coefficient or a bad phase function.
+    void validate() const
+    {
+        detail::require_non_negative("Fog absorption", absorption);
+        detail::require_non_negative("Fog scattering", scattering);
+        phase.validate();
+    }
+
+private:
+    [[nodiscard]] static T channel_transmittance(T sigma, T distance) noexcept { return sigma > T(0) ? std::exp(-sigma * distance) : T(1); }
+};
+
+static_assert(ScatteringMedium<Fog<float>> && ScatteringMedium<Fog<double>>);
 
 } // namespace prism
 

@@ -53,3 +53,18 @@ TEST_CASE("attenuate_segment: Beer-Lambert over the segment in the medium the pa
     attenuate_segment(scene, MediumStack{}, floor_material, at, ray, light);
     CHECK(light == Rgb<double>(1));
 }
+
+TEST_CASE("air_transmittance: exp(-sigma_t d) over the part of a shadow ray inside FilledAir's region, 1 in clear air")
+{
+    const FilledAir<Fog<double>> air{.medium = {.absorption = {0.1, 0.2, 0.3}, .scattering = {0.3, 0.2, 0.1}}, .region = {{-1, -1, -1}, {1, 1, 1}}};
+    const Ray<double> ray{{-3, 0.5, 0}, {1, 0, 0}}; // crosses the box from x = -1 to 1
+    CHECK(air_transmittance(air, ray, 10.0).x == doctest::Approx(std::exp(-0.4 * 2)));
+    CHECK(air_transmittance(air, ray, 2.5).y == doctest::Approx(std::exp(-0.4 * 0.5))); // stops half a unit into the box
+    CHECK(air_transmittance(air, ray, infinity<double>).z == doctest::Approx(std::exp(-0.4 * 2)));
+    CHECK(air_transmittance(air, Ray<double>{{-3, 2, 0}, {1, 0, 0}}, 10.0) == Rgb<double>(1)); // passes above the box
+    CHECK(air_transmittance(StraightAir{}, ray, 10.0) == Rgb<double>(1));
+    const FilledAir<Fog<double>> everywhere{.medium = {.scattering = Rgb<double>(0.5)}};
+    CHECK(air_transmittance(everywhere, ray, 3.0).x == doctest::Approx(std::exp(-1.5)));
+    CHECK(air_transmittance(everywhere, ray, infinity<double>).x == 0);
+    CHECK_THROWS_WITH_AS((FilledAir<Fog<double>>{.region = {}}.validate()), doctest::Contains("FilledAir region"), std::invalid_argument);
+}

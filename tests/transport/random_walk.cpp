@@ -76,3 +76,42 @@ TEST_CASE("a photon plays Russian roulette at every bounce, a camera path only a
     const WalkCounts capped = walk_counts<Transport::radiance>(scene, {.max_bounces = 3, .roulette_depth = 10}, 1000);
     CHECK(capped.mean_vertices == 4);
 }
+
+TEST_CASE("in a fog a walk scatters as in a closed room: a photon 1 / (1 - albedo) times with its power kept, a camera path k + 1 + a^(k+1) / (1 - a)")
+{
+    // Unbounded grey fog of albedo a around the walk's start: every flight ends in the
+    // fog (no surface is ever reached), so the medium's scatterings play the room's walls.
+    // The scene's one object is far off and tiny, to give the scene an object.
+    const double albedo = 0.6;
+    const auto scene = Scene{Lights{PointLight<double>{.position = {0, 0, 0}, .intensity = Rgb<double>(1)}},
+                             Object{Sphere<double>({0, 1e6, 0}, 1e-6), Diffuse<double>{}}};
+    const FilledAir<Fog<double>> air{.medium = {.absorption = Rgb<double>(1 - albedo), .scattering = Rgb<double>(albedo), .phase = {.g = 0.7}}};
+    const SpectralBands<double> bands(1);
+    const auto count = [&]<Transport Mode>(WalkLimits limits, int n, double& largest) {
+        Pcg32 rng(5, 9);
+        double vertices = 0;
+        for (int i = 0; i < n; ++i) {
+            random_walk<Mode>(scene, air, bands, Ray<double>{{0, 0, 0}, uniform_sphere<double>(rng)}, Rgb<double>(1), rng, limits,
+                              [](const auto&, const auto&) { return true; }, IgnoreEscape{}, IgnoreEmitters{},
+                              [&](const auto&, const WalkMediumVertex<double>& at) {
+                                  ++vertices;
+                                  largest = std::max(largest, max_component(at.power));
+                                  return true;
+                              });
+        }
+        return vertices / n;
+    };
+    const int n = 200000;
+    const double sd = std::sqrt(albedo) / (1 - albedo);
+    double photon_power = 0;
+    // A photon's vertex power is what it carries times the albedo (the draw's weight).
+    CHECK(std::abs(count.template operator()<Transport::importance>({.max_bounces = 1000}, n, photon_power) - 1 / (1 - albedo)) < 5 * sd / std::sqrt(n));
+    CHECK(photon_power == doctest::Approx(albedo));
+    for (const int k : {0, 2}) {
+        CAPTURE(k);
+        double largest = 0;
+        const double expected = k + 1 + std::pow(albedo, k + 1) / (1 - albedo);
+        CHECK(std::abs(count.template operator()<Transport::radiance>({.max_bounces = 1000, .roulette_depth = k}, n, largest) - expected) < 5 * (sd + 1) / std::sqrt(n));
+        CHECK(largest <= 1 + 1e-12);
+    }
+}

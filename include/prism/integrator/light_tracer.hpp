@@ -26,13 +26,14 @@
 #include <prism/core/check.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/core/parallel.hpp>
+#include <prism/medium/air.hpp>
 #include <prism/photon/photon_tracer.hpp>
-#include <prism/transport/random_walk.hpp>
 #include <prism/render/accumulation.hpp>
 #include <prism/render/film.hpp>
 #include <prism/render/render.hpp>
 #include <prism/scene/camera.hpp>
 #include <prism/scene/scene.hpp>
+#include <prism/transport/random_walk.hpp>
 
 #include <algorithm>
 #include <array>
@@ -56,6 +57,8 @@ struct LightTracerConfig {
 template <class SceneT, class Air = StraightAir>
 class LightTracer {
 public:
+    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
+                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
     /// Shorthand for scalar_type.

@@ -17,6 +17,11 @@
 // With the scene's BRDF albedo / pi and one radiometric convention, a closed diffuse
 // room of albedo rho under a light at its centre gives rho / (1 - rho) times E / pi:
 // the furnace reads 1.0 where Whitted reads 0.5.
+// In a medium that scatters (an object's Fog, or FilledAir around everything) a path
+// scatters in the air as at a surface: light samples there are weighed by the phase
+// function and the medium's transmittance to the light, shared with the phase
+// function's own draw by MIS, and every shadow ray in the air takes the air's
+// transmittance.
 #pragma once
 
 #include <prism/core/check.hpp>
@@ -24,6 +29,7 @@
 #include <prism/transport/direct.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/medium/air.hpp>
+#include <prism/transport/media.hpp>
 #include <prism/transport/travel.hpp>
 #include <prism/transport/random_walk.hpp>
 #include <prism/spectrum/bands.hpp>
@@ -120,10 +126,10 @@ public:
                                     const Rgb<T> f = lobe.f(s.wi, Transport::radiance);
                                     if (!(max_component(f) > T(0))) return;
                                     const T w = shared ? light_sample_weight(s.pdf, lobe.pdf(s.wi)) : T(1);
-                                    gathered += (w * cos) * f * v * s.irradiance;
+                                    gathered += (w * cos) * f * v * through_air(at.media, c.point, s) * s.irradiance;
                                 } else {
                                     const T w = shared ? light_sample_weight(s.pdf, cos / pi<T>) : T(1);
-                                    gathered += w * v * s.irradiance * cos;
+                                    gathered += w * v * through_air(at.media, c.point, s) * s.irradiance * cos;
                                 }
                             });
                         });
@@ -151,6 +157,24 @@ public:
                             else sum += at.power * emitted(material, at.crossing()) *
                                         met_light_weight(at.last_pdf, at.first_specular, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
                         }
+                    },
+                    [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
+                        // In a medium: each light's samples weighed by the phase function
+                        // toward them (the bounce's density there, for MIS), no cosine.
+                        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
+                        Rgb<T> gathered{T(0)};
+                        scene_->for_each_light([&]<class L>(const L& light) {
+                            if constexpr (!is_delta_light<L>) {
+                                if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
+                            }
+                            for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, at.point, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
+                                const T phase = medium.phase.value(dot(at.direction, s.wi));
+                                const T w = !s.delta() && go_on ? light_sample_weight(s.pdf, phase) : T(1);
+                                gathered += (w * phase) * v * through_air(at.media, at.point, s) * s.irradiance;
+                            });
+                        });
+                        sum += at.power * gathered;
+                        return go_on;
                     });
         return sum;
     }
@@ -191,6 +215,18 @@ public:
     }
 
 private:
+    /// What the scene's air lets through along a light sample's shadow ray from `p`: its
+    /// medium's transmittance for a path in the air (FilledAir), 1 inside an object (its
+    /// shadow ray is the scene's to stop at the object's glass) or in clear air.
+    [[nodiscard]] Rgb<T> through_air(const MediumStack& media, const Vec3<T>& p, const LightSample<T>& s) const noexcept
+    {
+        if constexpr (air_scatters<Air>) {
+            if (media.empty()) return air_transmittance(air_, Ray<T>{p, s.wi}, s.distance);
+        }
+        (void)media, (void)p, (void)s;
+        return Rgb<T>(T(1));
+    }
+
     /// The samples each area light takes at a diffuse vertex (the heuristic counts them all).
     [[nodiscard]] T light_samples() const noexcept { return T(config_.area_light_grid * config_.area_light_grid); }
 

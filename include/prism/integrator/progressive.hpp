@@ -24,6 +24,7 @@
 
 #include <prism/core/check.hpp>
 #include <prism/integrator/photon_mapper.hpp>
+#include <prism/medium/air.hpp>
 #include <prism/render/accumulation.hpp>
 #include <prism/render/film.hpp>
 #include <prism/render/render.hpp>
@@ -68,6 +69,8 @@ struct ProgressiveConfig {
 template <class SceneT, class Air = StraightAir>
 class ProgressivePhotonMapper {
 public:
+    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
+                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
     /// Shorthand for scalar_type.

@@ -21,6 +21,7 @@
 #include <prism/light/light.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
+#include <prism/medium/air.hpp>
 #include <prism/medium/nesting.hpp>
 #include <prism/optics/refract.hpp>
 #include <prism/scene/hit.hpp>
@@ -36,6 +37,8 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class Whitted {
 public:
+    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
+                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
     /// Shorthand for scalar_type.

@@ -27,6 +27,7 @@
 
 #include <concepts>
 #include <type_traits>
+#include <utility>
 
 namespace prism {
 
@@ -254,5 +255,19 @@ inline constexpr bool emits = detail::declares_emission<M>();
 
 template <Material M>
 inline constexpr bool disperses = M::transmits && Dispersive<M>;
+
+namespace detail {
+template <Material M>
+[[nodiscard]] consteval bool interior_scatters() noexcept
+{
+    if constexpr (M::transmits) return scatters_light<std::remove_cvref_t<decltype(std::declval<const M&>().medium())>>;
+    else return false;
+}
+} // namespace detail
+
+/// The material is an interface whose medium() scatters light (a Fog): a walker inside it
+/// may scatter anywhere along its way, not only at surfaces.
+template <Material M>
+inline constexpr bool has_scattering_interior = detail::interior_scatters<M>();
 
 } // namespace prism

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The scene's air: uniform (rays go straight, the default) or of a varying index
-// (graded-index air: mirages, a flattened setting sun), through which rays curve.
+// The scene's air: uniform (rays go straight, the default), of a varying index
+// (graded-index air: mirages, a flattened setting sun), through which rays curve, or
+// filled with a medium that scatters (FilledAir: fog, haze, murky water around everything).
 //
 // GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
 // field must be uniform, and rays go straight there. LayeredAir is flat layers of
@@ -11,6 +12,7 @@
 #include <prism/core/aabb.hpp>
 #include <prism/core/check.hpp>
 #include <prism/medium/graded_index.hpp>
+#include <prism/medium/medium.hpp>
 
 namespace prism {
 
@@ -21,6 +23,34 @@ struct StraightAir {
     /// Nothing to check.
     constexpr void validate() const {}
 };
+
+/// Straight air filled, within `region` (everywhere by default), with a medium that
+/// absorbs and scatters: the fog a scene stands in, the water around an underwater scene.
+/// Outside the region the air is clear. (An object's inside takes its own medium, its
+/// material's interior.)
+template <ScatteringMedium M>
+struct FilledAir {
+    /// The medium's precision.
+    using scalar_type = typename M::scalar_type;
+    /// Rays through it are straight.
+    static constexpr bool curved = false;
+    /// Light scatters in it.
+    static constexpr bool scatters = true;
+
+    M medium{}; ///< what fills the region
+    Aabb<scalar_type> region = Aabb<scalar_type>::universe(); ///< where the medium is (a box; everywhere by default)
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad medium or an empty region.
+    void validate() const
+    {
+        medium.validate();
+        if (region.empty()) detail::throw_invalid("FilledAir region must not be empty");
+    }
+};
+
+/// Whether the scene's air `Air` scatters light (FilledAir).
+template <class Air>
+inline constexpr bool air_scatters = requires { requires Air::scatters; };
 
 /// Air whose index is `field` inside `region` (uniform outside it); rays through it curve.
 template <IndexField F>

@@ -31,11 +31,11 @@
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/medium/air.hpp>
-#include <prism/transport/travel.hpp>
 #include <prism/medium/nesting.hpp>
 #include <prism/photon/photon_map.hpp>
-#include <prism/transport/random_walk.hpp>
 #include <prism/spectrum/bands.hpp>
+#include <prism/transport/random_walk.hpp>
+#include <prism/transport/travel.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -105,6 +105,8 @@ struct Emitter {
 template <class SceneT, class Air = StraightAir>
 class PhotonTracer {
 public:
+    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
+                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     using T = typename SceneT::scalar_type;
 
     PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config, const Air& air = {})

@@ -90,6 +90,8 @@ public:
 
     /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
     static constexpr bool has_transmissive = detail::any_of({transmits<typename Slots::material_type>...});
+    /// Some material's interior scatters light (a Fog): walks sample where they scatter in it.
+    static constexpr bool has_scattering_media = detail::any_of({has_scattering_interior<typename Slots::material_type>...});
     /// Some material reads surface coordinates (a texture, a normal map): its crossings take
     /// them, and rays carry their cones on through mirrors and glass (carry_cone).
     static constexpr bool reads_surface_coordinates = detail::any_of({reads_coordinates<typename Slots::material_type>()...});

@@ -92,6 +92,29 @@ void for_each_sample_arriving(const SceneT& scene, const L& light, const Crossin
     });
 }
 
+/// For each sample of `light` at a point `p` in a medium (no surface: every direction
+/// counts), call f(sample, v): the sample, its irradiance already its share of the
+/// light's, and v the scene's transmittance along the shadow ray (0 when occluded; the
+/// air's own medium is the caller's, transport/media.hpp's air_transmittance).
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Light L, Scalar T, class F>
+void for_each_sample_in_medium(const SceneT& scene, const L& light, const Vec3<T>& p, const LightSampling& sampling, F&& f)
+{
+    for_each_light_sample(light, p, sampling, [&](const LightSample<T>& s) {
+        if (!(max_component(s.irradiance) > T(0))) return;
+        if constexpr (has_own_shadow<L>) {
+            const auto through = [&](const Vec3<T>& point) {
+                const Vec3<T> to = point - p;
+                const T distance = length(to);
+                if (!(distance > T(0))) return Rgb<T>(T(1));
+                return scene.template transmittance<Glass>(Ray<T>{p, to / distance}, distance * (T(1) - shadow_epsilon<T>));
+            };
+            f(s, light.shadow(through, s.irradiance / pi<T>, sampling.rng));
+        } else {
+            f(s, scene.template transmittance<Glass>(Ray<T>{p, s.wi}, s.distance * (T(1) - shadow_epsilon<T>)));
+        }
+    });
+}
+
 /// for_each_sample_arriving over every light of the scene, its area lights last.
 template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
 void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const LightSampling& sampling, F&& f)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // What the media a path is in (medium/nesting.hpp's MediumStack) do to light on its way:
-// the index on an interface's far side, and the attenuation along a segment.
+// the index on an interface's far side, the attenuation along a segment, where a walker
+// scatters in a medium that scatters (an object's interior, or the scene's air when it is
+// FilledAir), and what such air lets through along a shadow ray.
 #pragma once
 
 #include <prism/core/math.hpp>
@@ -8,6 +10,8 @@
 #include <prism/geometry/crossings.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
+#include <prism/medium/air.hpp>
+#include <prism/medium/medium.hpp>
 #include <prism/medium/nesting.hpp>
 
 namespace prism {
@@ -36,10 +40,58 @@ void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& m
 {
     if (const Inside* in = media.top()) {
         scene.visit_material(in->slot, in->index, [&]<class N>(const N& medium_material) {
-            if constexpr (N::transmits) light *= medium_material.medium().transmittance(hit.t * length(ray.direction));
+            // (A medium that scatters was crossed by fly_through_medium, its weight taken.)
+            if constexpr (N::transmits && !has_scattering_interior<N>) light *= medium_material.medium().transmittance(hit.t * length(ray.direction));
         });
     } else {
         attenuate_inside(material, hit, ray, light);
+    }
+}
+
+/// A walker's flight along `segment` (unit direction) through the medium it is in, up to
+/// t_max (the surface it meets there, or infinity): in an object whose interior scatters,
+/// or in the scene's air where FilledAir fills it, the medium draws where the walker
+/// scatters (its sample_flight) and `power` takes the draw's weight; where it scatters
+/// before t_max, on_scatter(medium, distance, weight) is called (the weight already taken). In a medium that only absorbs,
+/// or in clear air, nothing happens here (attenuate_segment takes the absorption).
+template <class SceneT, class Air, Scalar T, class OnScatter>
+void fly_through_medium(const SceneT& scene, const Air& air, const MediumStack& media, const Ray<T>& segment, T t_max, Rgb<T>& power,
+                        Pcg32& rng, OnScatter&& on_scatter)
+{
+    if (const Inside* in = media.top()) {
+        if constexpr (SceneT::has_scattering_media) {
+            scene.visit_material(in->slot, in->index, [&]<class N>(const N& material) {
+                if constexpr (has_scattering_interior<N>) {
+                    const auto& medium = material.medium();
+                    const FreeFlight<T> flight = medium.sample_flight(segment, t_max, power, rng);
+                    power *= flight.weight;
+                    if (flight.scattered) on_scatter(medium, flight.distance, flight.weight);
+                }
+            });
+        }
+    } else if constexpr (air_scatters<Air>) {
+        const Interval<T> inside = air.region.clip(segment, {T(0), t_max});
+        if (inside.empty()) return;
+        const FreeFlight<T> flight = air.medium.sample_flight({segment.at(inside.min), segment.direction}, inside.max - inside.min, power, rng);
+        power *= flight.weight;
+        if (flight.scattered) on_scatter(air.medium, inside.min + flight.distance, flight.weight);
+    }
+}
+
+/// What the scene's air lets through along `ray` (unit direction) over `distance` (may be
+/// infinite): its medium's transmittance over the part inside its region where it is
+/// FilledAir, 1 in clear air. (Glass and the media inside objects are the scene's
+/// transmittance.)
+template <class Air, Scalar T>
+[[nodiscard]] Rgb<T> air_transmittance(const Air& air, const Ray<T>& ray, T distance) noexcept
+{
+    if constexpr (air_scatters<Air>) {
+        const Interval<T> inside = air.region.clip(ray, {T(0), distance});
+        if (inside.empty()) return Rgb<T>(T(1));
+        return air.medium.transmittance(inside.max - inside.min);
+    } else {
+        (void)air, (void)ray, (void)distance;
+        return Rgb<T>(T(1));
     }
 }
 

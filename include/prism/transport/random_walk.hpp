@@ -11,7 +11,10 @@
 // roulette on its throughput once it has met WalkLimits::roulette_depth surfaces, so a
 // path on its way to a bright, hard-to-find light (a caustic) is not cut short by the dim
 // surfaces it left. In the air the path follows the air's curve (GradedAir), inside
-// objects straight lines.
+// objects straight lines. In a medium that scatters (an object's Fog, or FilledAir) the
+// walk draws where it scatters along each segment (fly_through_medium); there the caller's
+// `on_medium` sees the vertex, and the walk goes on in a direction drawn from the
+// medium's phase function.
 #pragma once
 
 #include <prism/core/offset.hpp>
@@ -20,7 +23,9 @@
 #include <prism/geometry/crossings.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
+#include <prism/medium/air.hpp>
 #include <prism/medium/nesting.hpp>
+#include <prism/medium/phase.hpp>
 #include <prism/scene/hit.hpp>
 #include <prism/spectrum/bands.hpp>
 #include <prism/transport/media.hpp>
@@ -75,6 +80,37 @@ struct WalkEscape {
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
 };
 
+/// A walk where it scatters in a medium, before it scatters there.
+template <Scalar T>
+struct WalkMediumVertex {
+    const Vec3<T>& point;     ///< where it scatters
+    const Vec3<T>& direction; ///< unit, arriving
+    const Rgb<T>& power;      ///< what the path carries here, the medium's scattering coefficient and the draw's weight taken
+    bool direct;              ///< nothing scattered it yet
+    int diffuse_bounces;      ///< non-delta scatterings so far, at surfaces or in media
+    bool first_specular;      ///< the first scattering was specular
+    T travelled;              ///< the path's length so far
+    T wavelength;             ///< 0 while white
+    const MediumStack& media; ///< the transmissive objects the path is inside of
+    const Vec3<T>& last_point; ///< where the path last scattered (or started)
+    T last_pdf;               ///< as WalkVertex's
+    bool last;                ///< the walk ends after this vertex (its depth limit)
+    Pcg32& rng;               ///< the walk's stream
+
+    /// Whether every scattering so far was specular.
+    [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
+};
+
+/// What a walk does where it scatters in a medium when its caller says nothing: it goes on.
+struct IgnoreMedia {
+    /// Goes on.
+    template <class M, class V>
+    constexpr bool operator()(const M&, const V&) const noexcept
+    {
+        return true;
+    }
+};
+
 /// What a walk does where it leaves the scene when its caller says nothing: nothing.
 struct IgnoreEscape {
     /// Does nothing.
@@ -109,12 +145,16 @@ struct WalkLimits {
 /// WalkVertex) where it meets a surface that emits (an area light; the walk scatters there
 /// only by the lobes the material also has). `Mode`: whether the path is a photon's or a
 /// camera's (scatter_photon); a camera path is ended by path_roulette after
-/// limits.roulette_depth surfaces.
-template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters>
+/// limits.roulette_depth surfaces. on_medium(medium, WalkMediumVertex) is called where the
+/// path scatters in a medium (a scene or air with none never compiles it) and returns
+/// whether the walk goes on; such a vertex counts as a surface toward the limits.
+template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters,
+          class OnMedium = IgnoreMedia>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
                  Rgb<typename SceneT::scalar_type> power, Pcg32& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
-                 OnEmitter&& on_emitter = {})
+                 OnEmitter&& on_emitter = {}, OnMedium&& on_medium = {})
 {
+    static_assert(!(Air::curved && air_scatters<Air>), "air that both curves rays and scatters light is not supported yet");
     using T = typename SceneT::scalar_type;
     bool direct = true, first_specular = false;
     int diffuse_bounces = 0, surface_bounces = 0;
@@ -129,6 +169,44 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         T path = T(0);
         const auto hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, &path)
                                        : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
+        if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
+            // Where the path scatters in the medium it crosses before the surface.
+            enum class InMedium { passed, scattered, absorbed } in_medium = InMedium::passed;
+            const Vec3<T> d = normalize(segment.direction);
+            const T scale = length(segment.direction);
+            const T t_max = hit ? hit->crossing.t * scale : infinity<T>;
+            fly_through_medium(scene, air, media, Ray<T>{segment.origin, d}, t_max, power, rng, [&]<class Md>(const Md& medium, T s, const Rgb<T>& weight) {
+                const Vec3<T> p = segment.origin + s * d;
+                travelled += s; // (a straight segment: inside objects, or in straight air)
+                const bool last = bounce == limits.max_bounces;
+                in_medium = InMedium::absorbed;
+                if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng}))
+                    return;
+                if constexpr (Mode == Transport::importance) {
+                    // A photon keeps its power: it goes on with the chance of the draw's
+                    // largest weight (the albedo in a grey medium), divided out.
+                    const T keep = std::min(T(1), max_component(weight));
+                    if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return;
+                    power /= keep;
+                } else {
+                    if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return;
+                }
+                const T u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
+                const PhaseSample<T> next = medium.phase.sample(d, u1, u2);
+                ray = {p, next.direction};
+                last_point = p;
+                last_pdf = next.pdf;
+                ++diffuse_bounces;
+                ++surface_bounces;
+                if (direct) first_specular = false;
+                in_medium = InMedium::scattered;
+            });
+            if (in_medium == InMedium::absorbed) return;
+            if (in_medium == InMedium::scattered) {
+                direct = false;
+                continue;
+            }
+        }
         if (!hit) {
             on_escape(WalkEscape<T>{segment, power, diffuse_bounces, first_specular, last_pdf});
             return;

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+#include <prism/medium/fog.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <utility>
+#include <stdexcept>
+
+using namespace prism;
+
+TEST_CASE("Fog's free flights are unbiased in every channel: what passes is exp(-sigma_t d), what scatters sigma_s / sigma_t (1 - exp(-sigma_t d)), to 0.1 %")
+{
+    // A coloured fog, so that the channel drawn and the weight differ (the balance
+    // heuristic over channels), and one channel nearly clear; walkers carrying white, or
+    // mostly red (the channel drawn by its share), or nothing yet known (all zero).
+    const Fog<double> fog{.absorption = {0.2, 0.05, 0.0}, .scattering = {0.6, 0.3, 0.02}};
+    const Rgb<double> sigma_t = fog.extinction(), sigma_s = fog.scattering;
+    for (const auto& [d, power] : {std::pair{0.5, Rgb<double>(1)}, std::pair{2.0, Rgb<double>(1)}, std::pair{2.0, Rgb<double>(1, 0.2, 0.05)},
+                                   std::pair{0.5, Rgb<double>(0)}}) {
+        CAPTURE(d);
+        CAPTURE(power.y);
+        Pcg32 rng(7, 2);
+        Rgb<double> passed{0}, scattered{0};
+        const long n = 8000000;
+        const Ray<double> ray{{0, 0, 0}, {1, 0, 0}};
+        long outside = 0;
+        for (long i = 0; i < n; ++i) {
+            const FreeFlight<double> f = fog.sample_flight(ray, d, power, rng);
+            if (f.scattered) {
+                if (!(f.distance >= 0 && f.distance < d)) ++outside;
+                scattered += f.weight;
+            } else {
+                passed += f.weight;
+            }
+        }
+        CHECK(outside == 0);
+        for (int c = 0; c < 3; ++c) {
+            CAPTURE(c);
+            CHECK(passed[c] / n == doctest::Approx(std::exp(-sigma_t[c] * d)).epsilon(1e-3));
+            CHECK(scattered[c] / n == doctest::Approx(sigma_s[c] / sigma_t[c] * (1 - std::exp(-sigma_t[c] * d))).epsilon(1e-3));
+        }
+    }
+}
+
+TEST_CASE("a grey fog's flights weigh exactly (to rounding): its albedo where they scatter, 1 where they pass; a clear channel never turns NaN")
+{
+    const Fog<float> grey{.absorption = Rgb<float>(0.25f), .scattering = Rgb<float>(0.75f)};
+    Pcg32 rng(1, 1);
+    int wrong = 0, scattered = 0;
+    for (int i = 0; i < 10000; ++i) {
+        const FreeFlight<float> f = grey.sample_flight({{0, 0, 0}, {0, 1, 0}}, 1.5f, Rgb<float>(0.3f, 1, 0.1f), rng);
+        if (max_component(abs(f.weight - (f.scattered ? Rgb<float>(0.75f) : Rgb<float>(1)))) > 1e-6f) ++wrong;
+        scattered += f.scattered;
+    }
+    CHECK(wrong == 0);
+    CHECK(scattered > 7500); // 1 - exp(-1.5) = 78 % of them
+    // One clear channel, an unbounded segment: the clear channel passes every time it is drawn.
+    const Fog<float> half{.scattering = {0.5f, 0.0f, 0.5f}};
+    int bad = 0, passed = 0;
+    for (int i = 0; i < 10000; ++i) {
+        const FreeFlight<float> f = half.sample_flight({{0, 0, 0}, {0, 1, 0}}, infinity<float>, Rgb<float>(1), rng);
+        if (!std::isfinite(f.weight.x + f.weight.y + f.weight.z)) ++bad;
+        // Only the clear channel reaches infinity, drawn 1 time in 3.
+        if (!f.scattered && f.weight != Rgb<float>(0, 3, 0)) ++bad;
+        passed += !f.scattered;
+    }
+    CHECK(bad == 0);
+    CHECK(passed > 3000);
+    CHECK(passed < 3700);
+    CHECK(half.transmittance(infinity<float>) == Rgb<float>(0, 1, 0));
+}
+
+TEST_CASE("Fog refuses a negative coefficient or a bad phase function, by name")
+{
+    CHECK_THROWS_WITH_AS((Fog<float>{.absorption = {0, -0.1f, 0}}.validate()), doctest::Contains("Fog absorption"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((Fog<float>{.scattering = {0, 0, std::nanf("")}}.validate()), doctest::Contains("Fog scattering"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS((Fog<float>{.phase = {.g = 1}}.validate()), doctest::Contains("HenyeyGreenstein g"), std::invalid_argument);
+}
