@@ -1989,6 +1989,23 @@ public:
         search(q, results);
     }
 
+    /// Call visit(index, t, distance2) for every point within `radius` of the segment
+    /// {origin + t direction : t_min <= t <= t_max} (direction a unit vector; three
+    /// dimensions) whose projection t onto the line lies in [t_min, t_max], distance2 its
+    /// squared distance from the line: the photons a beam radiance estimate gathers
+    /// (Jarosz et al. 2008). The line is clipped, cell by cell, to the part within
+    /// `radius` of each side of a split, so only cells the cylinder reaches are visited.
+    template <class Visitor>
+    constexpr void along(const Point& origin, const Point& direction, T t_min, T t_max, T radius, Visitor&& visit) const
+    {
+        static_assert(dimension == 3, "a segment query is in three dimensions");
+        if (points_.empty() || !(radius >= T(0)) || !(t_min <= t_max)) return;
+        // The cells are clipped with a radius padded by rounding; each point is then
+        // tested exactly against the radius asked for.
+        const T pad = radius * (T(1) + T(64) * std::numeric_limits<T>::epsilon()) + T(64) * std::numeric_limits<T>::min();
+        along_cells(origin, direction, t_min, t_max, pad, 1, 0, points_.size(), t_min, t_max, radius * radius, visit);
+    }
+
     /// Squared Euclidean distance, as every query computes it.
     [[nodiscard]] static constexpr T distance2(const Point& a, const Point& b) noexcept
     {
@@ -2092,6 +2109,46 @@ private:
             else descend(q, 2 * node, begin, mid, offsets, results);
         }
         offsets[axis] = saved;
+    }
+
+    /// along()'s descent: [t0, t1] is the part of the line that may come within the
+    /// padded radius of the node's cell.
+    template <class Visitor>
+    constexpr void along_cells(const Point& o, const Point& d, T t_min, T t_max, T pad, std::size_t node, std::size_t begin, std::size_t end, T t0, T t1,
+                               T radius2, Visitor& visit) const
+    {
+        if (end - begin <= LeafSize) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const Point& p = points_[i];
+                const T t = (p[0] - o[0]) * d[0] + (p[1] - o[1]) * d[1] + (p[2] - o[2]) * d[2];
+                if (!(t >= t_min && t <= t_max)) continue;
+                const T x = p[0] - o[0] - t * d[0], y = p[1] - o[1] - t * d[1], z = p[2] - o[2] - t * d[2];
+                const T d2 = x * x + y * y + z * z;
+                if (d2 <= radius2) visit(index_[i], t, d2);
+            }
+            return;
+        }
+        const std::size_t axis = axis_[node];
+        const std::size_t mid = middle(begin, end);
+        const T split = split_[node], oa = o[axis], da = d[axis];
+        // Left points have coordinate <= split: the line may come near them where its own
+        // coordinate is <= split + pad; right points where it is >= split - pad.
+        T left0 = t0, left1 = t1, right0 = t0, right1 = t1;
+        if (da == T(0)) {
+            if (oa > split + pad) left1 = left0 - T(1);
+            if (oa < split - pad) right1 = right0 - T(1);
+        } else {
+            const T to_left = (split + pad - oa) / da, to_right = (split - pad - oa) / da;
+            if (da > T(0)) {
+                left1 = std::min(left1, to_left);
+                right0 = std::max(right0, to_right);
+            } else {
+                left0 = std::max(left0, to_left);
+                right1 = std::min(right1, to_right);
+            }
+        }
+        if (left0 <= left1) along_cells(o, d, t_min, t_max, pad, 2 * node, begin, mid, left0, left1, radius2, visit);
+        if (right0 <= right1) along_cells(o, d, t_min, t_max, pad, 2 * node + 1, mid, end, right0, right1, radius2, visit);
     }
 
     std::vector<Point> points_;        ///< in tree order (the input order while building)
@@ -6471,13 +6528,15 @@ struct FreeFlight {
 };
 
 /// A medium that also scatters light: `sample_flight(ray, t_max, power, rng)`, where a
-/// walker along ray (unit direction) carrying power next scatters before t_max, and
-/// `phase`, the phase function it scatters by there.
+/// walker along ray (unit direction) carrying power next scatters before t_max;
+/// `scattering_at(point)`, its scattering coefficient sigma_s there; and `phase`, the
+/// phase function it scatters by.
 template <class X>
 concept ScatteringMedium = Medium<X> && requires(const X& medium, const Ray<typename X::scalar_type>& ray, typename X::scalar_type t,
                                                  const Rgb<typename X::scalar_type>& power, Pcg32& rng) {
     requires X::scatters;
     { medium.sample_flight(ray, t, power, rng) } -> std::same_as<FreeFlight<typename X::scalar_type>>;
+    { medium.scattering_at(ray.origin) } -> std::same_as<Rgb<typename X::scalar_type>>;
     medium.phase;
 };
 
@@ -8551,6 +8610,7 @@ public:
         direct = 1,  ///< first hit after leaving the light
         caustic = 2, ///< reached this diffuse surface only by specular bounces (L S+ D)
         shadow = 4,  ///< a shadow photon: where the straight continuation of a direct photon's path met a further surface
+        volume = 8,  ///< scattered in a medium, not on a surface (its normal is its direction)
     };
 
     Vec3<float> position{}; ///< where the photon landed
@@ -8769,6 +8829,30 @@ public:
                 if (neighbour.index != on_rim) add(neighbour.index, neighbour.distance2, r2);
         }
         return {sum / (weight.mean() * pi<float> * r2), r2};
+    }
+
+    /// visit(photon, t) for every photon within `radius` of the segment from `origin`
+    /// along unit `direction` whose projection t lies in [t_min, t_max]: the photons a beam
+    /// radiance estimate of that radius gathers (Jarosz et al. 2008, "The Beam Radiance
+    /// Estimate for Volumetric Photon Mapping"; with a box kernel the estimate is their
+    /// weighted sum over pi r^2).
+    template <class Visit>
+    void near_beam(const Vec3<float>& origin, const Vec3<float>& direction, float t_min, float t_max, float radius, Visit&& visit) const
+    {
+        if (!tree_ || photons_.empty() || !(radius > 0.0f)) return;
+        tree_->along({origin.x, origin.y, origin.z}, {direction.x, direction.y, direction.z}, t_min, t_max, radius,
+                     [&](std::uint32_t index, float t, float) { visit(photons_[index], t); });
+    }
+
+    /// The volume radiance estimate's sum (Jensen and Christensen 1998): the sum of
+    /// value(photon) over the photons within `radius` of p, over the sphere's volume.
+    template <class Value>
+    [[nodiscard]] Rgb<float> in_sphere(const Vec3<float>& p, float radius, Value&& value) const noexcept
+    {
+        Rgb<float> sum(0.0f);
+        if (!tree_ || photons_.empty() || !(radius > 0.0f)) return sum;
+        tree_->within({p.x, p.y, p.z}, radius, [&](std::uint32_t index, float) { sum += value(photons_[index]); });
+        return sum / (4.0f / 3.0f * pi<float> * radius * radius * radius);
     }
 
     /// The box-filtered estimate from the K nearest, searched without limit.
@@ -9013,34 +9097,39 @@ void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& m
     }
 }
 
-/// A walker's flight along `segment` (unit direction) through the medium it is in, up to
-/// t_max (the surface it meets there, or infinity): in an object whose interior scatters,
-/// or in the scene's air where FilledAir fills it, the medium draws where the walker
-/// scatters (its sample_flight) and `power` takes the draw's weight; where it scatters
-/// before t_max, on_scatter(medium, distance, weight) is called (the weight already taken). In a medium that only absorbs,
-/// or in clear air, nothing happens here (attenuate_segment takes the absorption).
-template <class SceneT, class Air, Scalar T, class OnScatter>
-void fly_through_medium(const SceneT& scene, const Air& air, const MediumStack& media, const Ray<T>& segment, T t_max, Rgb<T>& power,
-                        Pcg32& rng, OnScatter&& on_scatter)
+/// f(medium, t0, t1) for the part [t0, t1] of `segment` (unit direction, up to t_max: the
+/// surface it meets there, or infinity) that lies in a medium that scatters: all of it in
+/// an object whose interior scatters, the part inside its region in FilledAir; nothing in
+/// a medium that only absorbs (attenuate_segment's) or in clear air.
+template <class SceneT, class Air, Scalar T, class F>
+void for_scattering_medium_along(const SceneT& scene, const Air& air, const MediumStack& media, const Ray<T>& segment, T t_max, F&& f)
 {
     if (const Inside* in = media.top()) {
         if constexpr (SceneT::has_scattering_media) {
             scene.visit_material(in->slot, in->index, [&]<class N>(const N& material) {
-                if constexpr (has_scattering_interior<N>) {
-                    const auto& medium = material.medium();
-                    const FreeFlight<T> flight = medium.sample_flight(segment, t_max, power, rng);
-                    power *= flight.weight;
-                    if (flight.scattered) on_scatter(medium, flight.distance, flight.weight);
-                }
+                if constexpr (has_scattering_interior<N>) f(material.medium(), T(0), t_max);
             });
         }
     } else if constexpr (air_scatters<Air>) {
         const Interval<T> inside = air.region.clip(segment, {T(0), t_max});
-        if (inside.empty()) return;
-        const FreeFlight<T> flight = air.medium.sample_flight({segment.at(inside.min), segment.direction}, inside.max - inside.min, power, rng);
-        power *= flight.weight;
-        if (flight.scattered) on_scatter(air.medium, inside.min + flight.distance, flight.weight);
+        if (!inside.empty()) f(air.medium, inside.min, inside.max);
     }
+}
+
+/// A walker's flight along `segment` (unit direction) through the medium it is in, up to
+/// t_max: where that medium scatters (for_scattering_medium_along), it draws where the
+/// walker scatters (its sample_flight) and `power` takes the draw's weight; where it
+/// scatters before t_max, on_scatter(medium, distance, weight) is called (the weight
+/// already taken).
+template <class SceneT, class Air, Scalar T, class OnScatter>
+void fly_through_medium(const SceneT& scene, const Air& air, const MediumStack& media, const Ray<T>& segment, T t_max, Rgb<T>& power,
+                        Pcg32& rng, OnScatter&& on_scatter)
+{
+    for_scattering_medium_along(scene, air, media, segment, t_max, [&](const auto& medium, T t0, T t1) {
+        const FreeFlight<T> flight = medium.sample_flight({segment.at(t0), segment.direction}, t1 - t0, power, rng);
+        power *= flight.weight;
+        if (flight.scattered) on_scatter(medium, t0 + flight.distance, flight.weight);
+    });
 }
 
 /// What the scene's air lets through along `ray` (unit direction) over `distance` (may be
@@ -9342,9 +9431,13 @@ struct WalkMediumVertex {
     T last_pdf;               ///< as WalkVertex's
     bool last;                ///< the walk ends after this vertex (its depth limit)
     Pcg32& rng;               ///< the walk's stream
+    int surface_bounces;      ///< as WalkVertex's: non-delta scatterings but through frosted glass
 
     /// Whether every scattering so far was specular.
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
+    /// Whether every scattering so far was specular or through frosted glass (a
+    /// volumetric caustic's path when one came before: L {S | frosted}+ M).
+    [[nodiscard]] bool caustic_path() const noexcept { return surface_bounces == 0; }
 };
 
 /// What a walk does where it scatters in a medium when its caller says nothing: it goes on.
@@ -9426,7 +9519,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 travelled += s; // (a straight segment: inside objects, or in straight air)
                 const bool last = bounce == limits.max_bounces;
                 in_medium = InMedium::absorbed;
-                if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng}))
+                if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, surface_bounces}))
                     return;
                 if constexpr (Mode == Transport::importance) {
                     // A photon keeps its power: it goes on with the chance of the draw's
@@ -9545,7 +9638,10 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
 // roulette per channel, material/scattering.hpp), and light travelling inside an object
 // is attenuated by its medium. Shadow photons mark where the straight continuation of a
 // direct photon's path meets further diffuse surfaces (Jensen and Christensen 1995,
-// "Efficiently rendering shadows using the photon map"). Photon i starts from point i of a scrambled Sobol sequence and draws the
+// "Efficiently rendering shadows using the photon map"). Where a photon scatters in a
+// medium (a Fog) it is stored as a volume photon (Jensen and Christensen 1998): the global
+// pass's on every path but a volumetric caustic's, L {S | frosted}+ M, which is the
+// caustic pass's. Photon i starts from point i of a scrambled Sobol sequence and draws the
 // rest of its path from its own random stream, so the maps are the same bits for any
 // thread count. A light without falloff (POV-Ray's `fade_power 0`) has no physical
 // power; its photons are scaled by the squared length of the path they travelled, as
@@ -9604,6 +9700,7 @@ inline void validate(const PhotonTracerConfig& config)
 struct PhotonMaps {
     PhotonMap global; ///< every photon's diffuse landings (flagged direct, caustic or shadow)
     PhotonMap caustic; ///< landings after specular bounces only (L S+ D)
+    PhotonMap volume; ///< where photons scattered in a medium (L ... M; empty in a scene without one), volumetric caustics flagged
 };
 
 namespace detail {
@@ -9621,8 +9718,6 @@ struct Emitter {
 template <class SceneT, class Air = StraightAir>
 class PhotonTracer {
 public:
-    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
-                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     using T = typename SceneT::scalar_type;
 
     PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config, const Air& air = {})
@@ -9632,8 +9727,16 @@ public:
         Pcg32 scrambles(config.seed, 0xfeed5eedULL);
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
-        // A sphere around everything bounded: parallel photons start outside it.
-        if (!scene.bounds().empty()) scene_sphere_ = scene.bounds().bounding_sphere();
+        // A sphere around everything bounded, the air's medium included where its region
+        // is bounded: parallel photons start outside it.
+        Aabb<T> lit = scene.bounds();
+        if constexpr (air_scatters<Air>) {
+            if (air.region.bounded()) lit = lit.merged(air.region);
+        }
+        if (!lit.empty()) {
+            scene_sphere_ = lit.bounding_sphere();
+            has_sphere_ = true;
+        }
         add_emitters(global_, false, {});
         // Every light aimed at each bounded specular object.
         scene.for_each_object([&]<class Object>(const Object& object) {
@@ -9681,8 +9784,9 @@ private:
     /// a scrambled Sobol (0,2)-sequence, so the photons of each emitter are stratified
     /// over its directions (or its disk) as on a jittered grid, but for any count;
     /// everything after the first hit is random.
-    template <class Visit>
-    void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, Visit&& visit) const
+    template <class Visit, class VisitMedium = IgnoreMedia>
+    void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, Visit&& visit,
+              VisitMedium&& visit_medium = {}) const
     {
         if (emitters.empty() || !(total_power > T(0))) return;
         Pcg32 rng(config_.seed, 2 * i + (caustic_pass ? 1 : 0));
@@ -9711,6 +9815,10 @@ private:
         random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, WalkLimits{.max_bounces = config_.max_bounces},
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         return visit(material, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
+                    },
+                    IgnoreEscape{}, IgnoreEmitters{},
+                    [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
+                        return visit_medium(medium, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
                     });
     }
 
@@ -9734,6 +9842,16 @@ private:
             out.push_back(photon(c, power, at.direction, flags));
             if (at.direct && config_.shadow_photons) store_shadow_photons(c, at.direction, out);
             return Lobes::all;
+        }, [&](const auto&, const WalkMediumVertex<T>& at, const Rgb<T>& power) {
+            // Where a photon scatters in a medium: a volume photon (split from the surface
+            // ones afterwards). A volumetric caustic (L {S | frosted}+ M) is the caustic
+            // pass's, and its walk ends there; every other path's the global pass's.
+            const bool caustic = !at.direct && at.caustic_path();
+            if (caustic != caustic_pass) return !caustic_pass;
+            const Vec3<float> travelling(at.direction);
+            out.push_back({Vec3<float>(at.point), Rgb<float>(power), -travelling, -travelling,
+                           std::uint8_t(Photon::volume | (caustic ? Photon::caustic : 0))});
+            return !caustic_pass;
         });
     }
 
@@ -9759,7 +9877,7 @@ private:
 
     [[nodiscard]] PhotonAim<T> aim(const Emitter<T>& e) const noexcept
     {
-        return {e.aimed ? &e.target : nullptr, scene_.bounds().empty() ? nullptr : &scene_sphere_, e.power};
+        return {e.aimed ? &e.target : nullptr, has_sphere_ ? &scene_sphere_ : nullptr, e.power};
     }
 
     /// Every light aimed at `target` (or everywhere when not `aimed`), where it sends any power.
@@ -9812,6 +9930,7 @@ private:
     SpectralBands<T> bands_; ///< for photons meeting a dispersive interface
     Air air_;                ///< the scene's air: photons in it curve in GradedAir
     BoundingSphere<T> scene_sphere_{}; ///< around everything bounded (when anything is)
+    bool has_sphere_ = false;           ///< whether anything is
     std::vector<Emitter<T>> global_;  ///< every light aimed everywhere, for the global map
     T global_power_ = T(0);
     std::vector<Emitter<T>> targets_; ///< every light aimed at each specular object, for the caustic map
@@ -9873,7 +9992,23 @@ namespace detail {
 struct PhotonShare {
     std::vector<Photon> global;  ///< this share of the global map's photons
     std::vector<Photon> caustic; ///< this share of the caustic map's photons
+    std::vector<Photon> volume;  ///< this share of the volume map's photons (the global pass's, then the caustic pass's)
 };
+
+namespace detail {
+
+/// Move the volume photons of `surface` (in order) to the end of `volume`.
+inline void split_volume_photons(std::vector<Photon>& surface, std::vector<Photon>& volume)
+{
+    std::size_t kept = 0;
+    for (const Photon& photon : surface) {
+        if ((photon.flags & Photon::volume) != 0) volume.push_back(photon);
+        else surface[kept++] = photon;
+    }
+    surface.resize(kept);
+}
+
+} // namespace detail
 
 /// Throws std::invalid_argument when passes 0 to `passes` - 1 of `config`'s photons would
 /// reach past photon index 2^32 (photon indices are Sobol indices, 32 bits), naming the
@@ -9909,6 +10044,10 @@ template <class SceneT, class Air = StraightAir>
                     else tracer.trace_global(first + a, first + b, out);
                 });
         }
+        if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
+            detail::split_volume_photons(share.global, share.volume);
+            detail::split_volume_photons(share.caustic, share.volume);
+        }
     } catch (const std::bad_alloc&) {
         throw detail::photons_out_of_memory(config);
     }
@@ -9928,6 +10067,7 @@ template <class SceneT, class Air = StraightAir>
     try {
         maps.global = PhotonMap(std::move(all.global), config.threads);
         maps.caustic = PhotonMap(std::move(all.caustic), config.threads);
+        if (!all.volume.empty()) maps.volume = PhotonMap(std::move(all.volume), config.threads);
     } catch (const std::bad_alloc&) {
         throw detail::photons_out_of_memory(config);
     }
@@ -12909,8 +13049,6 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class PhotonMapper {
 public:
-    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
-                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
     /// Shorthand for scalar_type.
@@ -12949,6 +13087,10 @@ public:
         /// Area lights are sampled for direct light on a jittered grid of this many points
         /// per side at each shaded point.
         int area_light_grid = 4;
+        /// In a medium that scatters: the radius (in the scene's units) of the beam
+        /// radiance estimate along camera rays and of the volume estimate where a gather
+        /// ray scatters.
+        float volume_radius = 0.05f;
     };
 
     /// Traces the photon maps (the expensive part), then renders with them.
@@ -12978,6 +13120,8 @@ private:
         if (!(cache.min_pixels > 0.0f && cache.min_pixels <= cache.max_pixels && is_finite(cache.max_pixels)))
             detail::throw_invalid("PhotonMapper irradiance_cache needs 0 < min_pixels <= max_pixels, finite, got ", cache.min_pixels, " and ", cache.max_pixels);
         if (config.max_depth < 0) detail::throw_invalid("PhotonMapper max_depth must be >= 0, got ", config.max_depth);
+        if (!(config.volume_radius * config.volume_radius >= std::numeric_limits<float>::min() && is_finite(config.volume_radius * config.volume_radius)))
+            detail::throw_invalid("PhotonMapper volume_radius must be in [1.1e-19, 1.8e19] (its square a finite, normal float), got ", config.volume_radius);
         if (config.area_light_grid < 1 || config.area_light_grid > 64)
             detail::throw_invalid("PhotonMapper area_light_grid must be in [1, 64], got ", config.area_light_grid);
         detail::require_non_negative("PhotonMapper min_weight", config.min_weight);
@@ -13109,8 +13253,53 @@ private:
     {
         Ray<T> segment = ray;
         const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
-        if (!hit) return {.direct = scene_->escaped(segment.direction)};
-        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
+        LightParts<T> parts = !hit ? LightParts<T>{.direct = scene_->escaped(segment.direction)}
+                                   : scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
+        if constexpr (has_media) {
+            // Through a medium that scatters: what lies beyond is seen through its
+            // transmittance, and the light it scatters toward the camera along the way is
+            // the beam radiance estimate of the volume photons (Jarosz et al. 2008): each
+            // within volume_radius of the segment counts its power times the phase
+            // function toward the camera and the transmittance to it, over pi r^2.
+            const Vec3<T> d = normalize(segment.direction);
+            const T t_max = hit ? hit->crossing.t * length(segment.direction) : infinity<T>;
+            for_scattering_medium_along(*scene_, air_, media, Ray<T>{segment.origin, d}, t_max, [&](const auto& medium, T t0, T t1) {
+                parts *= medium.transmittance(t1 - t0);
+                const Vec3<float> df(d);
+                Rgb<float> caustic(0.0f), other(0.0f);
+                maps_.volume.near_beam(Vec3<float>(segment.origin), df, float(t0), float(t1), config_.volume_radius, [&](const Photon& photon, float t) {
+                    const Rgb<float> light = Rgb<float>(medium.transmittance(T(t) - t0)) * float(medium.phase.value(T(dot(photon.toward_source(), df)))) * photon.power();
+                    ((photon.flags & Photon::caustic) != 0 ? caustic : other) += light;
+                });
+                const float disk = pi<float> * config_.volume_radius * config_.volume_radius;
+                parts.caustic += Rgb<T>(caustic / disk);
+                parts.indirect += Rgb<T>(other / disk);
+            });
+        }
+        return parts;
+    }
+
+    /// Whether the scene or its air holds a medium that scatters: then volume photons, the
+    /// beam estimate along camera rays, and the air's transmittance on shadow rays.
+    static constexpr bool has_media = SceneT::has_scattering_media || air_scatters<Air>;
+
+    /// What a gather or camera walk finds where it scatters in a medium: its weight (the
+    /// medium's sigma_s over the draw's density taken) times the in-scattered radiance the
+    /// volume photons within volume_radius give (Jensen and Christensen 1998), their power
+    /// weighed by the phase function toward the walk, over the sphere's volume and the
+    /// scattering coefficient their stored power carries.
+    template <class Md>
+    [[nodiscard]] Rgb<T> volume_radiance(const Md& medium, const WalkMediumVertex<T>& at) const noexcept
+    {
+        const Vec3<float> toward_viewer(-at.direction);
+        const Rgb<float> in = maps_.volume.in_sphere(Vec3<float>(at.point), config_.volume_radius, [&](const Photon& photon) {
+            return float(medium.phase.value(T(dot(-photon.toward_source(), toward_viewer)))) * photon.power();
+        });
+        const Rgb<T> sigma_s = medium.scattering_at(at.point);
+        Rgb<T> out{T(0)};
+        for (int c = 0; c < 3; ++c)
+            if (sigma_s[c] > T(0)) out[c] = at.power[c] * T(in[c]) / sigma_s[c];
+        return out;
     }
 
     template <class M>
@@ -13225,13 +13414,14 @@ private:
             scene_->for_each_light([&](const auto& light) {
                 for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
                     const T cos = shading_cosine(n_shading, n, s.wi);
-                    if (cos > T(0)) irradiance += weigh(s.wi) * s.irradiance * cos;
+                    if (cos > T(0)) irradiance += weigh(s.wi) * air_transmittance(air_, Ray<T>{hit.point, s.wi}, s.distance) * s.irradiance * cos;
                 });
             });
             return irradiance;
         }
-        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, sampling,
-                                                              [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += weigh(s.wi) * v * s.irradiance * cos; });
+        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+            irradiance += weigh(s.wi) * v * air_transmittance(air_, Ray<T>{hit.point, s.wi}, s.distance) * s.irradiance * cos;
+        });
         return irradiance;
     }
 
@@ -13301,8 +13491,13 @@ private:
             // (About a shading normal, a direction may lead into the solid: no light.)
             if (!hit.shades_flat() && !(dot(direction, hit.facing_normal()) > T(0))) return found;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, direction);
-            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse);
+            const auto at_medium = [&](const auto& medium, const WalkMediumVertex<T>& at) {
+                found.first += volume_radiance(medium, at);
+                found.second = std::min(found.second, at.travelled);
+                return false;
+            };
+            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
             return found;
         });
     }
@@ -13342,12 +13537,16 @@ private:
             sum += global_radiance(material, at);
             return reflects<M> || transmits<M> ? Lobes::delta : Lobes::none;
         };
+        const auto at_medium = [&](const auto& medium, const WalkMediumVertex<T>& at) {
+            sum += volume_radiance(medium, at);
+            return false;
+        };
         for (int i = 0; i < config_.gather_rays; ++i) {
             const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
             if (!s || s->delta) continue;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, s->wi);
-            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex);
+            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
         }
         return sum / T(config_.gather_rays);
     }
@@ -13571,10 +13770,16 @@ private:
 // partly; an area light is the mean over a jittered grid of its points, its V the mean
 // of theirs: soft shadows), kr and kt weighted by Fresnel on dielectrics, Beer-Lambert absorption along
 // every segment travelled inside a dielectric, a depth limit and an adaptive cut-off
-// when a path's weight becomes negligible (Hall and Greenberg 1983). Every branch is
+// when a path's weight becomes negligible (Hall and Greenberg 1983). Through a medium
+// that scatters, a ray sees what lies beyond through the medium's transmittance, plus the
+// light of every light scattered once toward it, by marching along the ray with a shadow
+// ray to each light at every step (no multiple scattering: the photon mapper and the
+// path tracer have it). Every branch is
 // chosen by the material's compile-time traits, so a scene without dielectrics
 // contains no refraction code; the physics of each branch is material/scattering.hpp's.
 
+
+#include <algorithm>
 
 namespace prism {
 
@@ -13583,8 +13788,6 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class Whitted {
 public:
-    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
-                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
     /// Shorthand for scalar_type.
@@ -13600,6 +13803,10 @@ public:
         /// An area light is sampled on a grid of this many points per side, each jittered
         /// in its cell (POV-Ray's area_light with jitter): soft shadows.
         int area_light_grid = 4;
+        /// In a medium that scatters (FilledAir, a Fog interior): the points each ray
+        /// segment through it is sampled at for single scattering (stratified, each
+        /// jittered in its stratum), each lit by a shadow ray to every light.
+        int march_steps = 32;
     };
 
     /// A Whitted integrator of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
@@ -13611,6 +13818,7 @@ public:
         if (config.max_depth < 0) detail::throw_invalid("Whitted max_depth must be >= 0, got ", config.max_depth);
         if (config.area_light_grid < 1 || config.area_light_grid > 64)
             detail::throw_invalid("Whitted area_light_grid must be in [1, 64], got ", config.area_light_grid);
+        if (config.march_steps < 1 || config.march_steps > 65536) detail::throw_invalid("Whitted march_steps must be in [1, 65536], got ", config.march_steps);
         detail::require_non_negative("Whitted min_weight", config.min_weight);
     }
 
@@ -13618,10 +13826,11 @@ public:
     Whitted(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
 
     /// Radiance arriving along the ray (its direction must be unit length); `rng` jitters
-    /// the samples of area lights (nothing else is random).
+    /// the samples of area lights and the points single scattering is marched at
+    /// (nothing else is random).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept
     {
-        if constexpr (SceneT::has_lights_with_extent) return trace(ray, 0, Rgb<T>(T(1)), T(0), {}, &rng);
+        if constexpr (SceneT::has_lights_with_extent || has_media) return trace(ray, 0, Rgb<T>(T(1)), T(0), {}, &rng);
         else return (void)rng, trace(ray, 0, Rgb<T>(T(1)), T(0), {});
     }
     /// Radiance arriving along the ray, with area lights sampled from a fixed stream.
@@ -13653,9 +13862,26 @@ private:
     /// Radiance along the ray for light of one wavelength (nanometres), or of all (0):
     /// a ray carries one once it has refracted through a dispersive interface. `media`:
     /// the transmissive objects the ray is inside of (medium/nesting.hpp).
+    /// Whether the scene or its air holds a medium that scatters.
+    static constexpr bool has_media = SceneT::has_scattering_media || air_scatters<Air>;
+
     template <class... Jitter>
     [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength, const MediumStack& media, Jitter... jitter) const noexcept
     {
+        if constexpr (has_media) {
+            // Through a medium that scatters (straight rays): what lies beyond through its
+            // transmittance, plus single scattering of every light along the way.
+            const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
+            Rgb<T> radiance = !hit ? scene_->escaped(ray.direction) : scene_->visit_material(*hit, [&](const auto& material) {
+                return shade(material, ray, *hit, depth, weight, wavelength, media, jitter...);
+            });
+            const T scale = length(ray.direction);
+            const Ray<T> unit{ray.origin, ray.direction / scale};
+            for_scattering_medium_along(*scene_, air_, media, unit, hit ? hit->crossing.t * scale : infinity<T>, [&](const auto& medium, T t0, T t1) {
+                radiance = radiance * medium.transmittance(t1 - t0) + single_scattering(medium, unit, t0, t1, media, jitter...);
+            });
+            return radiance;
+        }
         if constexpr (Air::curved) {
             // In the air (inside no object) the ray curves; it lands on a chord.
             if (media.empty()) {
@@ -13741,6 +13967,43 @@ private:
         return radiance;
     }
 
+    /// The light of every light scattered once toward the ray's origin along [t0, t1] of
+    /// `ray` (unit direction) in `medium`: march_steps stratified points, each jittered in
+    /// its stratum (at its middle without a stream), each lit by shadow rays through the
+    /// scene (glass attenuating) and the air, weighed by sigma_s, the phase function and
+    /// the transmittance back to t0. An unbounded segment is marched to where the medium
+    /// lets through less than e^-10 in every channel.
+    template <class Md, class... Jitter>
+    [[nodiscard]] Rgb<T> single_scattering(const Md& medium, const Ray<T>& ray, T t0, T t1, const MediumStack& media, Jitter... jitter) const noexcept
+    {
+        if (!(t1 < infinity<T>)) {
+            // (A clear channel scatters nothing: only the channels that scatter count.)
+            const Rgb<T> sigma_t = medium.extinction();
+            T thinnest = infinity<T>;
+            for (int c = 0; c < 3; ++c)
+                if (sigma_t[c] > T(0)) thinnest = std::min(thinnest, sigma_t[c]);
+            if (!(thinnest < infinity<T>)) return Rgb<T>(T(0));
+            t1 = t0 + T(10) / thinnest;
+        }
+        Pcg32* rng = stream_of(jitter...);
+        const LightSampling sampling{rng, config_.area_light_grid};
+        const T step = (t1 - t0) / T(config_.march_steps);
+        Rgb<T> sum{T(0)};
+        for (int i = 0; i < config_.march_steps; ++i) {
+            const T s = t0 + (T(i) + (rng ? rng->template uniform<T>() : T(0.5))) * step;
+            const Vec3<T> p = ray.at(s);
+            Rgb<T> arriving{T(0)};
+            scene_->for_each_light([&](const auto& light) {
+                for_each_sample_in_medium(*scene_, light, p, sampling, [&](const LightSample<T>& sample, const Rgb<T>& v) {
+                    const Rgb<T> air = media.empty() ? air_transmittance(air_, Ray<T>{p, sample.wi}, sample.distance) : Rgb<T>(T(1));
+                    arriving += T(medium.phase.value(dot(ray.direction, sample.wi))) * v * air * sample.irradiance;
+                });
+            });
+            sum += medium.transmittance(s - t0) * medium.scattering_at(p) * arriving;
+        }
+        return sum * step;
+    }
+
     template <class M, class... Jitter>
     [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& d, Jitter... jitter) const noexcept
     {
@@ -13752,7 +14015,8 @@ private:
         scene_->for_each_light([&]<class L>(const L& light) {
             const T share = T(1) / T(samples_of<L>(sampling));
             Rgb<T> seen{T(0)};
-            for_each_sample_arriving(*scene_, light, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+            for_each_sample_arriving(*scene_, light, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v_scene, T cos) {
+                const Rgb<T> v = v_scene * air_transmittance(air_, Ray<T>{hit.point, s.wi}, s.distance);
                 irradiance += v * s.irradiance * cos;
                 seen += share * v;
                 const T h = highlight(material, mirror, s.wi);
@@ -17153,6 +17417,9 @@ struct Fog {
     Rgb<T> absorption{T(0)}; ///< sigma_a per channel, per unit length
     Rgb<T> scattering{T(0)}; ///< sigma_s per channel, per unit length
     Phase phase{};           ///< where scattered light goes
+
+    /// sigma_s at a point (the same everywhere).
+    [[nodiscard]] constexpr Rgb<T> scattering_at(const Vec3<T>&) const noexcept { return scattering; }
 
     /// sigma_t = sigma_a + sigma_s.
     [[nodiscard]] constexpr Rgb<T> extinction() const noexcept { return absorption + scattering; }

@@ -2,6 +2,7 @@
 // KdTree against brute force: the same neighbours, in the same order, ties included.
 #include <prism/accel/kd_tree.hpp>
 #include <prism/core/rng.hpp>
+#include <prism/core/sampling.hpp>
 
 #include <doctest/doctest.h>
 
@@ -300,4 +301,35 @@ TEST_CASE("a tree built on several threads is the tree built on one, and answers
         const auto all = brute_force(points, q);
         for (std::size_t i = 0; i < got.size(); ++i) CHECK(got[i] == all[i]);
     }
+}
+
+TEST_CASE_TEMPLATE("segment queries (the beam estimate's) equal brute force: the points within r of the line whose projections lie on the segment", T, float, double)
+{
+    prism::Pcg32 rng(5u, 8u);
+    const auto points = clustered<T>(rng, 20000);
+    const KdTree<ArrayPoints<T, 3>> tree(ArrayPoints<T, 3>{points});
+    int mismatches = 0, found = 0;
+    for (int q = 0; q < 300; ++q) {
+        const auto start = uniform<T>(rng, 1)[0];
+        // Random directions, some along an axis (a zero component), lengths and radii.
+        prism::Vec3<T> d = prism::uniform_sphere<T>(rng);
+        if (q % 5 == 0) d = {T(0), q % 2 ? T(1) : T(-1), T(0)};
+        const P3<T> direction{d.x, d.y, d.z};
+        const T t_min = q % 3 == 0 ? T(0) : rng.uniform<T>() * T(0.2), t_max = q % 7 == 0 ? prism::infinity<T> : t_min + rng.uniform<T>() * T(1.5);
+        const T radius = T(0.002) + rng.uniform<T>() * T(0.05);
+        std::vector<std::uint32_t> got, expected;
+        tree.along(start, direction, t_min, t_max, radius, [&](std::uint32_t index, T, T) { got.push_back(index); });
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const P3<T>& p = points[i];
+            const T t = (p[0] - start[0]) * direction[0] + (p[1] - start[1]) * direction[1] + (p[2] - start[2]) * direction[2];
+            if (!(t >= t_min && t <= t_max)) continue;
+            const T x = p[0] - start[0] - t * direction[0], y = p[1] - start[1] - t * direction[1], z = p[2] - start[2] - t * direction[2];
+            if (x * x + y * y + z * z <= radius * radius) expected.push_back(static_cast<std::uint32_t>(i));
+        }
+        std::sort(got.begin(), got.end());
+        if (got != expected) ++mismatches;
+        found += int(expected.size());
+    }
+    CHECK(mismatches == 0);
+    CHECK(found > 1000); // the segments pass through the points, not beside them
 }

@@ -317,3 +317,30 @@ TEST_CASE("photons off a two-lobe surface keep their power: a lobe is picked wit
         if (map == &maps.caustic) CHECK(total == doctest::Approx(4 * pi<double> * pi<double> * test::coat_mirror / (1 - test::coat_mirror)).epsilon(0.02));
     }
 }
+
+TEST_CASE("volume photons: a parallel light's photons cover a box of fog, and what the fog first scatters is E A (1 - exp(-sigma_t h)) sigma_s / sigma_t")
+{
+    // Light falling straight down (irradiance 1) on a 2 x 2 x 2 box of fog in the scene's
+    // air, the scene's one object tiny and beside the box: the parallel photons must start over
+    // the fog's region, not only around the objects (before, they covered the tiny ball
+    // and missed the fog). First scatterings only (max_bounces 0): every photon entering
+    // the top face scatters inside with probability 1 - exp(-sigma_t 2), storing its power
+    // times sigma_s / sigma_t.
+    const auto scene = Scene{Lights{DirectionalLight<double>{.direction = {0, -1, 0}, .irradiance = Rgb<double>(1)}},
+                             Object{Sphere<double>({1.5, 0, 0}, 1e-3), Diffuse<double>{}}};
+    const FilledAir<Fog<double>> fog{.medium = {.absorption = Rgb<double>(0.25), .scattering = {0.25, 0.5, 0.75}}, .region = {{-1, -1, -1}, {1, 1, 1}}};
+    const PhotonMaps maps = trace_photons(scene, {.global_photons = 400000, .caustic_photons = 0, .max_bounces = 0}, fog);
+    Rgb<double> total(0);
+    std::size_t flagged = 0;
+    for (const Photon& photon : maps.volume.photons()) {
+        total += Rgb<double>(photon.power());
+        flagged += (photon.flags & Photon::volume) != 0;
+    }
+    CHECK(flagged == maps.volume.size());
+    const Rgb<double> sigma_t = fog.medium.extinction(), expected = 4.0 * (Rgb<double>(1) - exp(-2.0 * sigma_t)) * fog.medium.scattering / sigma_t;
+    for (int c = 0; c < 3; ++c) {
+        CAPTURE(c);
+        CHECK(total[c] == doctest::Approx(expected[c]).epsilon(0.01).scale(0));
+    }
+    CHECK(maps.global.size() == 0); // the photons that pass the box leave the scene
+}

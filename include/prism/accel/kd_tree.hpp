@@ -306,6 +306,23 @@ public:
         search(q, results);
     }
 
+    /// Call visit(index, t, distance2) for every point within `radius` of the segment
+    /// {origin + t direction : t_min <= t <= t_max} (direction a unit vector; three
+    /// dimensions) whose projection t onto the line lies in [t_min, t_max], distance2 its
+    /// squared distance from the line: the photons a beam radiance estimate gathers
+    /// (Jarosz et al. 2008). The line is clipped, cell by cell, to the part within
+    /// `radius` of each side of a split, so only cells the cylinder reaches are visited.
+    template <class Visitor>
+    constexpr void along(const Point& origin, const Point& direction, T t_min, T t_max, T radius, Visitor&& visit) const
+    {
+        static_assert(dimension == 3, "a segment query is in three dimensions");
+        if (points_.empty() || !(radius >= T(0)) || !(t_min <= t_max)) return;
+        // The cells are clipped with a radius padded by rounding; each point is then
+        // tested exactly against the radius asked for.
+        const T pad = radius * (T(1) + T(64) * std::numeric_limits<T>::epsilon()) + T(64) * std::numeric_limits<T>::min();
+        along_cells(origin, direction, t_min, t_max, pad, 1, 0, points_.size(), t_min, t_max, radius * radius, visit);
+    }
+
     /// Squared Euclidean distance, as every query computes it.
     [[nodiscard]] static constexpr T distance2(const Point& a, const Point& b) noexcept
     {
@@ -409,6 +426,46 @@ private:
             else descend(q, 2 * node, begin, mid, offsets, results);
         }
         offsets[axis] = saved;
+    }
+
+    /// along()'s descent: [t0, t1] is the part of the line that may come within the
+    /// padded radius of the node's cell.
+    template <class Visitor>
+    constexpr void along_cells(const Point& o, const Point& d, T t_min, T t_max, T pad, std::size_t node, std::size_t begin, std::size_t end, T t0, T t1,
+                               T radius2, Visitor& visit) const
+    {
+        if (end - begin <= LeafSize) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const Point& p = points_[i];
+                const T t = (p[0] - o[0]) * d[0] + (p[1] - o[1]) * d[1] + (p[2] - o[2]) * d[2];
+                if (!(t >= t_min && t <= t_max)) continue;
+                const T x = p[0] - o[0] - t * d[0], y = p[1] - o[1] - t * d[1], z = p[2] - o[2] - t * d[2];
+                const T d2 = x * x + y * y + z * z;
+                if (d2 <= radius2) visit(index_[i], t, d2);
+            }
+            return;
+        }
+        const std::size_t axis = axis_[node];
+        const std::size_t mid = middle(begin, end);
+        const T split = split_[node], oa = o[axis], da = d[axis];
+        // Left points have coordinate <= split: the line may come near them where its own
+        // coordinate is <= split + pad; right points where it is >= split - pad.
+        T left0 = t0, left1 = t1, right0 = t0, right1 = t1;
+        if (da == T(0)) {
+            if (oa > split + pad) left1 = left0 - T(1);
+            if (oa < split - pad) right1 = right0 - T(1);
+        } else {
+            const T to_left = (split + pad - oa) / da, to_right = (split - pad - oa) / da;
+            if (da > T(0)) {
+                left1 = std::min(left1, to_left);
+                right0 = std::max(right0, to_right);
+            } else {
+                left0 = std::max(left0, to_left);
+                right1 = std::min(right1, to_right);
+            }
+        }
+        if (left0 <= left1) along_cells(o, d, t_min, t_max, pad, 2 * node, begin, mid, left0, left1, radius2, visit);
+        if (right0 <= right1) along_cells(o, d, t_min, t_max, pad, 2 * node + 1, mid, end, right0, right1, radius2, visit);
     }
 
     std::vector<Point> points_;        ///< in tree order (the input order while building)

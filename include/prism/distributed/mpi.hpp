@@ -371,6 +371,10 @@ template <class SceneT, class Air = StraightAir>
     PhotonMaps maps;
     maps.global = PhotonMap(std::move(global), config.threads);
     maps.caustic = PhotonMap(std::move(caustic), config.threads);
+    if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
+        std::vector<Photon> volume = detail::all_gather(comm, mine.volume, traffic);
+        if (!volume.empty()) maps.volume = PhotonMap(std::move(volume), config.threads);
+    }
     if (traffic != nullptr) {
         traffic->trace_seconds += traced;
         traffic->photon_gather_seconds += gathered;

@@ -54,8 +54,6 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class PhotonMapper {
 public:
-    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
-                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
     /// Shorthand for scalar_type.
@@ -94,6 +92,10 @@ public:
         /// Area lights are sampled for direct light on a jittered grid of this many points
         /// per side at each shaded point.
         int area_light_grid = 4;
+        /// In a medium that scatters: the radius (in the scene's units) of the beam
+        /// radiance estimate along camera rays and of the volume estimate where a gather
+        /// ray scatters.
+        float volume_radius = 0.05f;
     };
 
     /// Traces the photon maps (the expensive part), then renders with them.
@@ -123,6 +125,8 @@ private:
         if (!(cache.min_pixels > 0.0f && cache.min_pixels <= cache.max_pixels && is_finite(cache.max_pixels)))
             detail::throw_invalid("PhotonMapper irradiance_cache needs 0 < min_pixels <= max_pixels, finite, got ", cache.min_pixels, " and ", cache.max_pixels);
         if (config.max_depth < 0) detail::throw_invalid("PhotonMapper max_depth must be >= 0, got ", config.max_depth);
+        if (!(config.volume_radius * config.volume_radius >= std::numeric_limits<float>::min() && is_finite(config.volume_radius * config.volume_radius)))
+            detail::throw_invalid("PhotonMapper volume_radius must be in [1.1e-19, 1.8e19] (its square a finite, normal float), got ", config.volume_radius);
         if (config.area_light_grid < 1 || config.area_light_grid > 64)
             detail::throw_invalid("PhotonMapper area_light_grid must be in [1, 64], got ", config.area_light_grid);
         detail::require_non_negative("PhotonMapper min_weight", config.min_weight);
@@ -254,8 +258,53 @@ private:
     {
         Ray<T> segment = ray;
         const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
-        if (!hit) return {.direct = scene_->escaped(segment.direction)};
-        return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
+        LightParts<T> parts = !hit ? LightParts<T>{.direct = scene_->escaped(segment.direction)}
+                                   : scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
+        if constexpr (has_media) {
+            // Through a medium that scatters: what lies beyond is seen through its
+            // transmittance, and the light it scatters toward the camera along the way is
+            // the beam radiance estimate of the volume photons (Jarosz et al. 2008): each
+            // within volume_radius of the segment counts its power times the phase
+            // function toward the camera and the transmittance to it, over pi r^2.
+            const Vec3<T> d = normalize(segment.direction);
+            const T t_max = hit ? hit->crossing.t * length(segment.direction) : infinity<T>;
+            for_scattering_medium_along(*scene_, air_, media, Ray<T>{segment.origin, d}, t_max, [&](const auto& medium, T t0, T t1) {
+                parts *= medium.transmittance(t1 - t0);
+                const Vec3<float> df(d);
+                Rgb<float> caustic(0.0f), other(0.0f);
+                maps_.volume.near_beam(Vec3<float>(segment.origin), df, float(t0), float(t1), config_.volume_radius, [&](const Photon& photon, float t) {
+                    const Rgb<float> light = Rgb<float>(medium.transmittance(T(t) - t0)) * float(medium.phase.value(T(dot(photon.toward_source(), df)))) * photon.power();
+                    ((photon.flags & Photon::caustic) != 0 ? caustic : other) += light;
+                });
+                const float disk = pi<float> * config_.volume_radius * config_.volume_radius;
+                parts.caustic += Rgb<T>(caustic / disk);
+                parts.indirect += Rgb<T>(other / disk);
+            });
+        }
+        return parts;
+    }
+
+    /// Whether the scene or its air holds a medium that scatters: then volume photons, the
+    /// beam estimate along camera rays, and the air's transmittance on shadow rays.
+    static constexpr bool has_media = SceneT::has_scattering_media || air_scatters<Air>;
+
+    /// What a gather or camera walk finds where it scatters in a medium: its weight (the
+    /// medium's sigma_s over the draw's density taken) times the in-scattered radiance the
+    /// volume photons within volume_radius give (Jensen and Christensen 1998), their power
+    /// weighed by the phase function toward the walk, over the sphere's volume and the
+    /// scattering coefficient their stored power carries.
+    template <class Md>
+    [[nodiscard]] Rgb<T> volume_radiance(const Md& medium, const WalkMediumVertex<T>& at) const noexcept
+    {
+        const Vec3<float> toward_viewer(-at.direction);
+        const Rgb<float> in = maps_.volume.in_sphere(Vec3<float>(at.point), config_.volume_radius, [&](const Photon& photon) {
+            return float(medium.phase.value(T(dot(-photon.toward_source(), toward_viewer)))) * photon.power();
+        });
+        const Rgb<T> sigma_s = medium.scattering_at(at.point);
+        Rgb<T> out{T(0)};
+        for (int c = 0; c < 3; ++c)
+            if (sigma_s[c] > T(0)) out[c] = at.power[c] * T(in[c]) / sigma_s[c];
+        return out;
     }
 
     template <class M>
@@ -370,13 +419,14 @@ private:
             scene_->for_each_light([&](const auto& light) {
                 for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
                     const T cos = shading_cosine(n_shading, n, s.wi);
-                    if (cos > T(0)) irradiance += weigh(s.wi) * s.irradiance * cos;
+                    if (cos > T(0)) irradiance += weigh(s.wi) * air_transmittance(air_, Ray<T>{hit.point, s.wi}, s.distance) * s.irradiance * cos;
                 });
             });
             return irradiance;
         }
-        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, sampling,
-                                                              [&](const LightSample<T>& s, const Rgb<T>& v, T cos) { irradiance += weigh(s.wi) * v * s.irradiance * cos; });
+        for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+            irradiance += weigh(s.wi) * v * air_transmittance(air_, Ray<T>{hit.point, s.wi}, s.distance) * s.irradiance * cos;
+        });
         return irradiance;
     }
 
@@ -446,8 +496,13 @@ private:
             // (About a shading normal, a direction may lead into the solid: no light.)
             if (!hit.shades_flat() && !(dot(direction, hit.facing_normal()) > T(0))) return found;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, direction);
-            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse);
+            const auto at_medium = [&](const auto& medium, const WalkMediumVertex<T>& at) {
+                found.first += volume_radiance(medium, at);
+                found.second = std::min(found.second, at.travelled);
+                return false;
+            };
+            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
             return found;
         });
     }
@@ -487,12 +542,16 @@ private:
             sum += global_radiance(material, at);
             return reflects<M> || transmits<M> ? Lobes::delta : Lobes::none;
         };
+        const auto at_medium = [&](const auto& medium, const WalkMediumVertex<T>& at) {
+            sum += volume_radiance(medium, at);
+            return false;
+        };
         for (int i = 0; i < config_.gather_rays; ++i) {
             const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
             if (!s || s->delta) continue;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, s->wi);
-            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex);
+            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
         }
         return sum / T(config_.gather_rays);
     }

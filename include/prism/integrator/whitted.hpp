@@ -9,7 +9,11 @@
 // partly; an area light is the mean over a jittered grid of its points, its V the mean
 // of theirs: soft shadows), kr and kt weighted by Fresnel on dielectrics, Beer-Lambert absorption along
 // every segment travelled inside a dielectric, a depth limit and an adaptive cut-off
-// when a path's weight becomes negligible (Hall and Greenberg 1983). Every branch is
+// when a path's weight becomes negligible (Hall and Greenberg 1983). Through a medium
+// that scatters, a ray sees what lies beyond through the medium's transmittance, plus the
+// light of every light scattered once toward it, by marching along the ray with a shadow
+// ray to each light at every step (no multiple scattering: the photon mapper and the
+// path tracer have it). Every branch is
 // chosen by the material's compile-time traits, so a scene without dielectrics
 // contains no refraction code; the physics of each branch is material/scattering.hpp's.
 #pragma once
@@ -30,6 +34,8 @@
 #include <prism/transport/media.hpp>
 #include <prism/transport/travel.hpp>
 
+#include <algorithm>
+
 namespace prism {
 
 /// Whitted over `scene` with its air: StraightAir (the default), or GradedAir, through
@@ -37,8 +43,6 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 class Whitted {
 public:
-    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
-                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
     /// Shorthand for scalar_type.
@@ -54,6 +58,10 @@ public:
         /// An area light is sampled on a grid of this many points per side, each jittered
         /// in its cell (POV-Ray's area_light with jitter): soft shadows.
         int area_light_grid = 4;
+        /// In a medium that scatters (FilledAir, a Fog interior): the points each ray
+        /// segment through it is sampled at for single scattering (stratified, each
+        /// jittered in its stratum), each lit by a shadow ray to every light.
+        int march_steps = 32;
     };
 
     /// A Whitted integrator of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
@@ -65,6 +73,7 @@ public:
         if (config.max_depth < 0) detail::throw_invalid("Whitted max_depth must be >= 0, got ", config.max_depth);
         if (config.area_light_grid < 1 || config.area_light_grid > 64)
             detail::throw_invalid("Whitted area_light_grid must be in [1, 64], got ", config.area_light_grid);
+        if (config.march_steps < 1 || config.march_steps > 65536) detail::throw_invalid("Whitted march_steps must be in [1, 65536], got ", config.march_steps);
         detail::require_non_negative("Whitted min_weight", config.min_weight);
     }
 
@@ -72,10 +81,11 @@ public:
     Whitted(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
 
     /// Radiance arriving along the ray (its direction must be unit length); `rng` jitters
-    /// the samples of area lights (nothing else is random).
+    /// the samples of area lights and the points single scattering is marched at
+    /// (nothing else is random).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept
     {
-        if constexpr (SceneT::has_lights_with_extent) return trace(ray, 0, Rgb<T>(T(1)), T(0), {}, &rng);
+        if constexpr (SceneT::has_lights_with_extent || has_media) return trace(ray, 0, Rgb<T>(T(1)), T(0), {}, &rng);
         else return (void)rng, trace(ray, 0, Rgb<T>(T(1)), T(0), {});
     }
     /// Radiance arriving along the ray, with area lights sampled from a fixed stream.
@@ -107,9 +117,26 @@ private:
     /// Radiance along the ray for light of one wavelength (nanometres), or of all (0):
     /// a ray carries one once it has refracted through a dispersive interface. `media`:
     /// the transmissive objects the ray is inside of (medium/nesting.hpp).
+    /// Whether the scene or its air holds a medium that scatters.
+    static constexpr bool has_media = SceneT::has_scattering_media || air_scatters<Air>;
+
     template <class... Jitter>
     [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength, const MediumStack& media, Jitter... jitter) const noexcept
     {
+        if constexpr (has_media) {
+            // Through a medium that scatters (straight rays): what lies beyond through its
+            // transmittance, plus single scattering of every light along the way.
+            const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
+            Rgb<T> radiance = !hit ? scene_->escaped(ray.direction) : scene_->visit_material(*hit, [&](const auto& material) {
+                return shade(material, ray, *hit, depth, weight, wavelength, media, jitter...);
+            });
+            const T scale = length(ray.direction);
+            const Ray<T> unit{ray.origin, ray.direction / scale};
+            for_scattering_medium_along(*scene_, air_, media, unit, hit ? hit->crossing.t * scale : infinity<T>, [&](const auto& medium, T t0, T t1) {
+                radiance = radiance * medium.transmittance(t1 - t0) + single_scattering(medium, unit, t0, t1, media, jitter...);
+            });
+            return radiance;
+        }
         if constexpr (Air::curved) {
             // In the air (inside no object) the ray curves; it lands on a chord.
             if (media.empty()) {
@@ -195,6 +222,43 @@ private:
         return radiance;
     }
 
+    /// The light of every light scattered once toward the ray's origin along [t0, t1] of
+    /// `ray` (unit direction) in `medium`: march_steps stratified points, each jittered in
+    /// its stratum (at its middle without a stream), each lit by shadow rays through the
+    /// scene (glass attenuating) and the air, weighed by sigma_s, the phase function and
+    /// the transmittance back to t0. An unbounded segment is marched to where the medium
+    /// lets through less than e^-10 in every channel.
+    template <class Md, class... Jitter>
+    [[nodiscard]] Rgb<T> single_scattering(const Md& medium, const Ray<T>& ray, T t0, T t1, const MediumStack& media, Jitter... jitter) const noexcept
+    {
+        if (!(t1 < infinity<T>)) {
+            // (A clear channel scatters nothing: only the channels that scatter count.)
+            const Rgb<T> sigma_t = medium.extinction();
+            T thinnest = infinity<T>;
+            for (int c = 0; c < 3; ++c)
+                if (sigma_t[c] > T(0)) thinnest = std::min(thinnest, sigma_t[c]);
+            if (!(thinnest < infinity<T>)) return Rgb<T>(T(0));
+            t1 = t0 + T(10) / thinnest;
+        }
+        Pcg32* rng = stream_of(jitter...);
+        const LightSampling sampling{rng, config_.area_light_grid};
+        const T step = (t1 - t0) / T(config_.march_steps);
+        Rgb<T> sum{T(0)};
+        for (int i = 0; i < config_.march_steps; ++i) {
+            const T s = t0 + (T(i) + (rng ? rng->template uniform<T>() : T(0.5))) * step;
+            const Vec3<T> p = ray.at(s);
+            Rgb<T> arriving{T(0)};
+            scene_->for_each_light([&](const auto& light) {
+                for_each_sample_in_medium(*scene_, light, p, sampling, [&](const LightSample<T>& sample, const Rgb<T>& v) {
+                    const Rgb<T> air = media.empty() ? air_transmittance(air_, Ray<T>{p, sample.wi}, sample.distance) : Rgb<T>(T(1));
+                    arriving += T(medium.phase.value(dot(ray.direction, sample.wi))) * v * air * sample.irradiance;
+                });
+            });
+            sum += medium.transmittance(s - t0) * medium.scattering_at(p) * arriving;
+        }
+        return sum * step;
+    }
+
     template <class M, class... Jitter>
     [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& d, Jitter... jitter) const noexcept
     {
@@ -206,7 +270,8 @@ private:
         scene_->for_each_light([&]<class L>(const L& light) {
             const T share = T(1) / T(samples_of<L>(sampling));
             Rgb<T> seen{T(0)};
-            for_each_sample_arriving(*scene_, light, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+            for_each_sample_arriving(*scene_, light, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v_scene, T cos) {
+                const Rgb<T> v = v_scene * air_transmittance(air_, Ray<T>{hit.point, s.wi}, s.distance);
                 irradiance += v * s.irradiance * cos;
                 seen += share * v;
                 const T h = highlight(material, mirror, s.wi);

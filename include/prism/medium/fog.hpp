@@ -38,6 +38,9 @@ struct Fog {
     Rgb<T> scattering{T(0)}; ///< sigma_s per channel, per unit length
     Phase phase{};           ///< where scattered light goes
 
+    /// sigma_s at a point (the same everywhere).
+    [[nodiscard]] constexpr Rgb<T> scattering_at(const Vec3<T>&) const noexcept { return scattering; }
+
     /// sigma_t = sigma_a + sigma_s.
     [[nodiscard]] constexpr Rgb<T> extinction() const noexcept { return absorption + scattering; }
 

@@ -38,13 +38,15 @@ struct FreeFlight {
 };
 
 /// A medium that also scatters light: `sample_flight(ray, t_max, power, rng)`, where a
-/// walker along ray (unit direction) carrying power next scatters before t_max, and
-/// `phase`, the phase function it scatters by there.
+/// walker along ray (unit direction) carrying power next scatters before t_max;
+/// `scattering_at(point)`, its scattering coefficient sigma_s there; and `phase`, the
+/// phase function it scatters by.
 template <class X>
 concept ScatteringMedium = Medium<X> && requires(const X& medium, const Ray<typename X::scalar_type>& ray, typename X::scalar_type t,
                                                  const Rgb<typename X::scalar_type>& power, Pcg32& rng) {
     requires X::scatters;
     { medium.sample_flight(ray, t, power, rng) } -> std::same_as<FreeFlight<typename X::scalar_type>>;
+    { medium.scattering_at(ray.origin) } -> std::same_as<Rgb<typename X::scalar_type>>;
     medium.phase;
 };
 

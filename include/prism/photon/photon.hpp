@@ -32,6 +32,7 @@ public:
         direct = 1,  ///< first hit after leaving the light
         caustic = 2, ///< reached this diffuse surface only by specular bounces (L S+ D)
         shadow = 4,  ///< a shadow photon: where the straight continuation of a direct photon's path met a further surface
+        volume = 8,  ///< scattered in a medium, not on a surface (its normal is its direction)
     };
 
     Vec3<float> position{}; ///< where the photon landed

@@ -128,6 +128,30 @@ public:
         return {sum / (weight.mean() * pi<float> * r2), r2};
     }
 
+    /// visit(photon, t) for every photon within `radius` of the segment from `origin`
+    /// along unit `direction` whose projection t lies in [t_min, t_max]: the photons a beam
+    /// radiance estimate of that radius gathers (Jarosz et al. 2008, "The Beam Radiance
+    /// Estimate for Volumetric Photon Mapping"; with a box kernel the estimate is their
+    /// weighted sum over pi r^2).
+    template <class Visit>
+    void near_beam(const Vec3<float>& origin, const Vec3<float>& direction, float t_min, float t_max, float radius, Visit&& visit) const
+    {
+        if (!tree_ || photons_.empty() || !(radius > 0.0f)) return;
+        tree_->along({origin.x, origin.y, origin.z}, {direction.x, direction.y, direction.z}, t_min, t_max, radius,
+                     [&](std::uint32_t index, float t, float) { visit(photons_[index], t); });
+    }
+
+    /// The volume radiance estimate's sum (Jensen and Christensen 1998): the sum of
+    /// value(photon) over the photons within `radius` of p, over the sphere's volume.
+    template <class Value>
+    [[nodiscard]] Rgb<float> in_sphere(const Vec3<float>& p, float radius, Value&& value) const noexcept
+    {
+        Rgb<float> sum(0.0f);
+        if (!tree_ || photons_.empty() || !(radius > 0.0f)) return sum;
+        tree_->within({p.x, p.y, p.z}, radius, [&](std::uint32_t index, float) { sum += value(photons_[index]); });
+        return sum / (4.0f / 3.0f * pi<float> * radius * radius * radius);
+    }
+
     /// The box-filtered estimate from the K nearest, searched without limit.
     template <std::size_t K>
     [[nodiscard]] Rgb<float> irradiance(const Vec3<float>& p, const Vec3<float>& n) const noexcept

@@ -13,7 +13,10 @@
 // roulette per channel, material/scattering.hpp), and light travelling inside an object
 // is attenuated by its medium. Shadow photons mark where the straight continuation of a
 // direct photon's path meets further diffuse surfaces (Jensen and Christensen 1995,
-// "Efficiently rendering shadows using the photon map"). Photon i starts from point i of a scrambled Sobol sequence and draws the
+// "Efficiently rendering shadows using the photon map"). Where a photon scatters in a
+// medium (a Fog) it is stored as a volume photon (Jensen and Christensen 1998): the global
+// pass's on every path but a volumetric caustic's, L {S | frosted}+ M, which is the
+// caustic pass's. Photon i starts from point i of a scrambled Sobol sequence and draws the
 // rest of its path from its own random stream, so the maps are the same bits for any
 // thread count. A light without falloff (POV-Ray's `fade_power 0`) has no physical
 // power; its photons are scaled by the squared length of the path they travelled, as
@@ -88,6 +91,7 @@ inline void validate(const PhotonTracerConfig& config)
 struct PhotonMaps {
     PhotonMap global; ///< every photon's diffuse landings (flagged direct, caustic or shadow)
     PhotonMap caustic; ///< landings after specular bounces only (L S+ D)
+    PhotonMap volume; ///< where photons scattered in a medium (L ... M; empty in a scene without one), volumetric caustics flagged
 };
 
 namespace detail {
@@ -105,8 +109,6 @@ struct Emitter {
 template <class SceneT, class Air = StraightAir>
 class PhotonTracer {
 public:
-    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
-                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     using T = typename SceneT::scalar_type;
 
     PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config, const Air& air = {})
@@ -116,8 +118,16 @@ public:
         Pcg32 scrambles(config.seed, 0xfeed5eedULL);
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
-        // A sphere around everything bounded: parallel photons start outside it.
-        if (!scene.bounds().empty()) scene_sphere_ = scene.bounds().bounding_sphere();
+        // A sphere around everything bounded, the air's medium included where its region
+        // is bounded: parallel photons start outside it.
+        Aabb<T> lit = scene.bounds();
+        if constexpr (air_scatters<Air>) {
+            if (air.region.bounded()) lit = lit.merged(air.region);
+        }
+        if (!lit.empty()) {
+            scene_sphere_ = lit.bounding_sphere();
+            has_sphere_ = true;
+        }
         add_emitters(global_, false, {});
         // Every light aimed at each bounded specular object.
         scene.for_each_object([&]<class Object>(const Object& object) {
@@ -165,8 +175,9 @@ private:
     /// a scrambled Sobol (0,2)-sequence, so the photons of each emitter are stratified
     /// over its directions (or its disk) as on a jittered grid, but for any count;
     /// everything after the first hit is random.
-    template <class Visit>
-    void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, Visit&& visit) const
+    template <class Visit, class VisitMedium = IgnoreMedia>
+    void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, Visit&& visit,
+              VisitMedium&& visit_medium = {}) const
     {
         if (emitters.empty() || !(total_power > T(0))) return;
         Pcg32 rng(config_.seed, 2 * i + (caustic_pass ? 1 : 0));
@@ -195,6 +206,10 @@ private:
         random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, WalkLimits{.max_bounces = config_.max_bounces},
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         return visit(material, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
+                    },
+                    IgnoreEscape{}, IgnoreEmitters{},
+                    [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
+                        return visit_medium(medium, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
                     });
     }
 
@@ -218,6 +233,16 @@ private:
             out.push_back(photon(c, power, at.direction, flags));
             if (at.direct && config_.shadow_photons) store_shadow_photons(c, at.direction, out);
             return Lobes::all;
+        }, [&](const auto&, const WalkMediumVertex<T>& at, const Rgb<T>& power) {
+            // Where a photon scatters in a medium: a volume photon (split from the surface
+            // ones afterwards). A volumetric caustic (L {S | frosted}+ M) is the caustic
+            // pass's, and its walk ends there; every other path's the global pass's.
+            const bool caustic = !at.direct && at.caustic_path();
+            if (caustic != caustic_pass) return !caustic_pass;
+            const Vec3<float> travelling(at.direction);
+            out.push_back({Vec3<float>(at.point), Rgb<float>(power), -travelling, -travelling,
+                           std::uint8_t(Photon::volume | (caustic ? Photon::caustic : 0))});
+            return !caustic_pass;
         });
     }
 
@@ -243,7 +268,7 @@ private:
 
     [[nodiscard]] PhotonAim<T> aim(const Emitter<T>& e) const noexcept
     {
-        return {e.aimed ? &e.target : nullptr, scene_.bounds().empty() ? nullptr : &scene_sphere_, e.power};
+        return {e.aimed ? &e.target : nullptr, has_sphere_ ? &scene_sphere_ : nullptr, e.power};
     }
 
     /// Every light aimed at `target` (or everywhere when not `aimed`), where it sends any power.
@@ -296,6 +321,7 @@ private:
     SpectralBands<T> bands_; ///< for photons meeting a dispersive interface
     Air air_;                ///< the scene's air: photons in it curve in GradedAir
     BoundingSphere<T> scene_sphere_{}; ///< around everything bounded (when anything is)
+    bool has_sphere_ = false;           ///< whether anything is
     std::vector<Emitter<T>> global_;  ///< every light aimed everywhere, for the global map
     T global_power_ = T(0);
     std::vector<Emitter<T>> targets_; ///< every light aimed at each specular object, for the caustic map
@@ -357,7 +383,23 @@ namespace detail {
 struct PhotonShare {
     std::vector<Photon> global;  ///< this share of the global map's photons
     std::vector<Photon> caustic; ///< this share of the caustic map's photons
+    std::vector<Photon> volume;  ///< this share of the volume map's photons (the global pass's, then the caustic pass's)
 };
+
+namespace detail {
+
+/// Move the volume photons of `surface` (in order) to the end of `volume`.
+inline void split_volume_photons(std::vector<Photon>& surface, std::vector<Photon>& volume)
+{
+    std::size_t kept = 0;
+    for (const Photon& photon : surface) {
+        if ((photon.flags & Photon::volume) != 0) volume.push_back(photon);
+        else surface[kept++] = photon;
+    }
+    surface.resize(kept);
+}
+
+} // namespace detail
 
 /// Throws std::invalid_argument when passes 0 to `passes` - 1 of `config`'s photons would
 /// reach past photon index 2^32 (photon indices are Sobol indices, 32 bits), naming the
@@ -393,6 +435,10 @@ template <class SceneT, class Air = StraightAir>
                     else tracer.trace_global(first + a, first + b, out);
                 });
         }
+        if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
+            detail::split_volume_photons(share.global, share.volume);
+            detail::split_volume_photons(share.caustic, share.volume);
+        }
     } catch (const std::bad_alloc&) {
         throw detail::photons_out_of_memory(config);
     }
@@ -412,6 +458,7 @@ template <class SceneT, class Air = StraightAir>
     try {
         maps.global = PhotonMap(std::move(all.global), config.threads);
         maps.caustic = PhotonMap(std::move(all.caustic), config.threads);
+        if (!all.volume.empty()) maps.volume = PhotonMap(std::move(all.volume), config.threads);
     } catch (const std::bad_alloc&) {
         throw detail::photons_out_of_memory(config);
     }

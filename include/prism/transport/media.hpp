@@ -48,34 +48,39 @@ void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& m
     }
 }
 
-/// A walker's flight along `segment` (unit direction) through the medium it is in, up to
-/// t_max (the surface it meets there, or infinity): in an object whose interior scatters,
-/// or in the scene's air where FilledAir fills it, the medium draws where the walker
-/// scatters (its sample_flight) and `power` takes the draw's weight; where it scatters
-/// before t_max, on_scatter(medium, distance, weight) is called (the weight already taken). In a medium that only absorbs,
-/// or in clear air, nothing happens here (attenuate_segment takes the absorption).
-template <class SceneT, class Air, Scalar T, class OnScatter>
-void fly_through_medium(const SceneT& scene, const Air& air, const MediumStack& media, const Ray<T>& segment, T t_max, Rgb<T>& power,
-                        Pcg32& rng, OnScatter&& on_scatter)
+/// f(medium, t0, t1) for the part [t0, t1] of `segment` (unit direction, up to t_max: the
+/// surface it meets there, or infinity) that lies in a medium that scatters: all of it in
+/// an object whose interior scatters, the part inside its region in FilledAir; nothing in
+/// a medium that only absorbs (attenuate_segment's) or in clear air.
+template <class SceneT, class Air, Scalar T, class F>
+void for_scattering_medium_along(const SceneT& scene, const Air& air, const MediumStack& media, const Ray<T>& segment, T t_max, F&& f)
 {
     if (const Inside* in = media.top()) {
         if constexpr (SceneT::has_scattering_media) {
             scene.visit_material(in->slot, in->index, [&]<class N>(const N& material) {
-                if constexpr (has_scattering_interior<N>) {
-                    const auto& medium = material.medium();
-                    const FreeFlight<T> flight = medium.sample_flight(segment, t_max, power, rng);
-                    power *= flight.weight;
-                    if (flight.scattered) on_scatter(medium, flight.distance, flight.weight);
-                }
+                if constexpr (has_scattering_interior<N>) f(material.medium(), T(0), t_max);
             });
         }
     } else if constexpr (air_scatters<Air>) {
         const Interval<T> inside = air.region.clip(segment, {T(0), t_max});
-        if (inside.empty()) return;
-        const FreeFlight<T> flight = air.medium.sample_flight({segment.at(inside.min), segment.direction}, inside.max - inside.min, power, rng);
-        power *= flight.weight;
-        if (flight.scattered) on_scatter(air.medium, inside.min + flight.distance, flight.weight);
+        if (!inside.empty()) f(air.medium, inside.min, inside.max);
     }
+}
+
+/// A walker's flight along `segment` (unit direction) through the medium it is in, up to
+/// t_max: where that medium scatters (for_scattering_medium_along), it draws where the
+/// walker scatters (its sample_flight) and `power` takes the draw's weight; where it
+/// scatters before t_max, on_scatter(medium, distance, weight) is called (the weight
+/// already taken).
+template <class SceneT, class Air, Scalar T, class OnScatter>
+void fly_through_medium(const SceneT& scene, const Air& air, const MediumStack& media, const Ray<T>& segment, T t_max, Rgb<T>& power,
+                        Pcg32& rng, OnScatter&& on_scatter)
+{
+    for_scattering_medium_along(scene, air, media, segment, t_max, [&](const auto& medium, T t0, T t1) {
+        const FreeFlight<T> flight = medium.sample_flight({segment.at(t0), segment.direction}, t1 - t0, power, rng);
+        power *= flight.weight;
+        if (flight.scattered) on_scatter(medium, t0 + flight.distance, flight.weight);
+    });
 }
 
 /// What the scene's air lets through along `ray` (unit direction) over `distance` (may be

@@ -96,9 +96,13 @@ struct WalkMediumVertex {
     T last_pdf;               ///< as WalkVertex's
     bool last;                ///< the walk ends after this vertex (its depth limit)
     Pcg32& rng;               ///< the walk's stream
+    int surface_bounces;      ///< as WalkVertex's: non-delta scatterings but through frosted glass
 
     /// Whether every scattering so far was specular.
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
+    /// Whether every scattering so far was specular or through frosted glass (a
+    /// volumetric caustic's path when one came before: L {S | frosted}+ M).
+    [[nodiscard]] bool caustic_path() const noexcept { return surface_bounces == 0; }
 };
 
 /// What a walk does where it scatters in a medium when its caller says nothing: it goes on.
@@ -180,7 +184,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 travelled += s; // (a straight segment: inside objects, or in straight air)
                 const bool last = bounce == limits.max_bounces;
                 in_medium = InMedium::absorbed;
-                if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng}))
+                if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, surface_bounces}))
                     return;
                 if constexpr (Mode == Transport::importance) {
                     // A photon keeps its power: it goes on with the chance of the draw's
