@@ -2,6 +2,7 @@
 #include <prism/integrator/path_tracer.hpp>
 #include <prism/prism.hpp>
 
+#include "../airlight.hpp"
 #include "../furnace.hpp"
 #include "../glossy_scenes.hpp"
 
@@ -268,34 +269,15 @@ TEST_CASE("the path tracer's volume furnace: a fog that does not absorb, under a
 
 TEST_CASE("the path tracer's single scattering of a point light in fog is the airlight integral, to 0.5 %")
 {
-    // A point light of intensity 1 at (0, 1, 0); a camera ray from (-2, 0, 0) along +x
-    // through an unbounded coloured fog; max_diffuse_bounces = 0 keeps single scattering:
-    // L = int_0^inf sigma_s e^(-sigma_t s) p(cos) I / d^2 e^(-sigma_t d) ds, d the distance
-    // from the ray's point at s to the light, here by Simpson's rule on [0, 120] in double.
-    const Rgb<double> sigma_a{0.1, 0.05, 0.2}, sigma_s{0.3, 0.5, 0.1};
-    const double g = 0.5;
-    const auto airlight = [&](int c) {
-        const double st = sigma_a[c] + sigma_s[c];
-        const HenyeyGreenstein<double> hg{g};
-        const auto f = [&](double s) {
-            const double x = -2 + s, d = std::sqrt(x * x + 1);
-            return sigma_s[c] * std::exp(-st * s) * hg.value(-x / d) / (d * d) * std::exp(-st * d);
-        };
-        const int n = 400000;
-        const double h = 120.0 / n;
-        double sum = f(0) + f(120);
-        for (int i = 1; i < n; ++i) sum += f(i * h) * (i % 2 ? 4 : 2);
-        return sum * h / 3;
-    };
-    const auto scene = Scene{Lights{PointLight<float>{.position = {0, 1, 0}, .intensity = Rgb<float>(1)}}, Object{Sphere<float>({0, -1000, 0}, 1e-3f), Diffuse<float>{}}};
-    const FilledAir<Fog<float>> air{.medium = {.absorption = Rgb<float>(sigma_a), .scattering = Rgb<float>(sigma_s), .phase = {.g = float(g)}}};
-    const PathTracer tracer(scene, {.max_diffuse_bounces = 0}, air);
+    // tests/airlight.hpp's scene; max_diffuse_bounces = 0 keeps single scattering.
+    const auto scene = test::airlight_scene();
+    const PathTracer tracer(scene, {.max_diffuse_bounces = 0}, test::airlight_fog());
     Pcg32 rng(1, 2);
     Rgb<double> sum{0};
     const int n = 1600000;
-    for (int i = 0; i < n; ++i) sum += Rgb<double>(tracer.radiance(Ray<float>{{-2, 0, 0}, {1, 0, 0}}, rng));
+    for (int i = 0; i < n; ++i) sum += Rgb<double>(tracer.radiance(test::airlight_ray(), rng));
     for (int c = 0; c < 3; ++c) {
         CAPTURE(c);
-        CHECK(sum[c] / n == doctest::Approx(airlight(c)).epsilon(0.005).scale(0)); // relative (doctest's scale 1 would make it absolute here)
+        CHECK(sum[c] / n == doctest::Approx(test::airlight(c)).epsilon(0.005).scale(0)); // relative (doctest's scale 1 would make it absolute here)
     }
 }

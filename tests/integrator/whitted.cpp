@@ -2,6 +2,7 @@
 #include <prism/integrator/whitted.hpp>
 #include <prism/prism.hpp>
 
+#include "../airlight.hpp"
 #include "../furnace.hpp"
 #include "../glossy_scenes.hpp"
 
@@ -318,34 +319,16 @@ TEST_CASE("regression: a texture seen in a mirror is filtered over the camera's 
 
 TEST_CASE("Whitted's single scattering in fog, marched with jittered steps, is the airlight integral to 0.5 %; what lies beyond is seen through the fog")
 {
-    // As the path tracer's test: a point light of intensity 1 at (0, 1, 0), a ray from
-    // (-2, 0, 0) along +x through unbounded coloured fog, against Simpson's rule on the
-    // integral of sigma_s e^(-sigma_t s) p(cos) I / d^2 e^(-sigma_t d) over [0, 120].
-    const Rgb<double> sigma_a{0.1, 0.05, 0.2}, sigma_s{0.3, 0.5, 0.1};
-    const double g = 0.5;
-    const auto airlight = [&](int c) {
-        const double st = sigma_a[c] + sigma_s[c];
-        const HenyeyGreenstein<double> hg{g};
-        const auto f = [&](double s) {
-            const double x = -2 + s, d = std::sqrt(x * x + 1);
-            return sigma_s[c] * std::exp(-st * s) * hg.value(-x / d) / (d * d) * std::exp(-st * d);
-        };
-        const int n = 400000;
-        const double h = 120.0 / n;
-        double sum = f(0) + f(120);
-        for (int i = 1; i < n; ++i) sum += f(i * h) * (i % 2 ? 4 : 2);
-        return sum * h / 3;
-    };
-    const auto scene = Scene{Lights{PointLight<float>{.position = {0, 1, 0}, .intensity = Rgb<float>(1)}}, Object{Sphere<float>({0, -1000, 0}, 1e-3f), Diffuse<float>{}}};
-    const FilledAir<Fog<float>> air{.medium = {.absorption = Rgb<float>(sigma_a), .scattering = Rgb<float>(sigma_s), .phase = {.g = float(g)}}};
-    const Whitted whitted(scene, {.march_steps = 64}, air);
+    // tests/airlight.hpp's scene, as the path tracer's test.
+    const auto scene = test::airlight_scene();
+    const Whitted whitted(scene, {.march_steps = 64}, test::airlight_fog());
     Pcg32 rng(4, 2);
     Rgb<double> sum{0};
     const int n = 20000;
-    for (int i = 0; i < n; ++i) sum += Rgb<double>(whitted.radiance(Ray<float>{{-2, 0, 0}, {1, 0, 0}}, rng));
+    for (int i = 0; i < n; ++i) sum += Rgb<double>(whitted.radiance(test::airlight_ray(), rng));
     for (int c = 0; c < 3; ++c) {
         CAPTURE(c);
-        CHECK(sum[c] / n == doctest::Approx(airlight(c)).epsilon(0.005).scale(0));
+        CHECK(sum[c] / n == doctest::Approx(test::airlight(c)).epsilon(0.005).scale(0));
     }
     // A lit white wall 3 away, seen through a box of grey fog 2 thick that absorbs only:
     // exp(-0.5 x 2) of it, and nothing scattered.
