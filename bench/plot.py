@@ -420,14 +420,12 @@ def methods_vs_time_chart(rows):
     save(fig, "methods_vs_time.png")
 
 
-def surfaces_vs_time_chart(rows):
-    """Issue 35's surfaces scene (bench/surfaces_vs_time.py): error against the path
-    tracer's reference vs time, over the whole picture and over the frosted ball's caustic;
-    linear radiance above, the display range below; a curve per method, Cycles dashed."""
-    regions = [("all", "rough gold, frosted glass, textured and normal-mapped\nvarnished tiles, thin lens (Cycles renders it too)"),
-               ("caustic", "the frosted ball's caustic on the tiles")]
+def error_vs_time_chart(rows, regions, reference, name):
+    """Error against a reference vs time (bench/surfaces_vs_time.py, bench/fog_vs_time.py),
+    over the regions (csv name, title) side by side; linear radiance above, the display
+    range below; a curve per method, Cycles dashed."""
     metrics = [("rmse", "RMSE, linear radiance"), ("rmse_display", "RMSE, display range (radiance clamped to 1)")]
-    fig, axes = plt.subplots(2, 2, figsize=(12, 9), squeeze=False)
+    fig, axes = plt.subplots(2, len(regions), figsize=(6 * len(regions), 9), squeeze=False)
     for column, (region, title) in enumerate(regions):
         methods = list(dict.fromkeys(r["method"] for r in rows if r["region"] == region))
         for row, (key, ylabel) in enumerate(metrics):
@@ -437,11 +435,29 @@ def surfaces_vs_time_chart(rows):
                 points = [p for p in points if p[1] > 0]
                 ax.loglog([p[0] for p in points], [p[1] for p in points], "k--" if method == "Cycles" else "-", marker="o", label=method)
             ax.set_xlabel("render time (s, 2 threads)")
-            ax.set_ylabel(ylabel + "\nagainst prism's path-traced reference, its noise removed")
+            ax.set_ylabel(ylabel + "\nagainst " + reference + ", its noise removed")
             ax.set_title(title)
             ax.grid(True, which="both", alpha=0.3)
             ax.legend(fontsize=8)
-    save(fig, "surfaces_vs_time.png")
+    save(fig, name)
+
+
+def airlight_chart(rows):
+    """Whitted's single scattering of a point light in fog: marching against the airlight,
+    RMS relative error against time per ray (bench/airlight.cpp)."""
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    for method, style, label in (("march", "o-", "marching: steps, a shadow ray at each"), ("airlight", "s-", "airlight: Gauss-Legendre nodes in the angle")):
+        points = [(float(r["nanoseconds_per_ray"]), float(r["rms_relative_error"]), r["setting"]) for r in rows if r["method"] == method]
+        ax.loglog([p[0] for p in points], [max(p[1], 1e-8) for p in points], style, label=label)
+        for x, y, setting in points:
+            ax.annotate(setting, (x, max(y, 1e-8)), textcoords="offset points", xytext=(4, 4), fontsize=7)
+    ax.axhline(6e-8, color="grey", lw=0.8, ls=":")
+    ax.set_xlabel("time per camera ray (ns, one thread)")
+    ax.set_ylabel("RMS relative error against Simpson in double")
+    ax.set_title("Whitted: a point light's single scattering in fog")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, "airlight.png")
 
 
 def whitted_glossy_chart(rows):
@@ -462,7 +478,16 @@ def main():
     if (rows := read("methods_vs_time.csv")):
         methods_vs_time_chart(rows)
     if (rows := read("surfaces_vs_time.csv")):
-        surfaces_vs_time_chart(rows)
+        error_vs_time_chart(rows, [("all", "rough gold, frosted glass, textured and normal-mapped\nvarnished tiles, thin lens (Cycles renders it too)"),
+                                   ("caustic", "the frosted ball's caustic on the tiles")], "prism's path-traced reference", "surfaces_vs_time.png")
+    if (rows := read("airlight.csv")):
+        airlight_chart(rows)
+    if (rows := read("fog_vs_time.csv")):
+        error_vs_time_chart(rows, [("all", "a spot light through haze onto a rough glass ball\n(Cycles renders it too)"),
+                                   ("caustic", "the volumetric caustic below the ball")], "prism's progressive reference", "fog_vs_time.png")
+    if (rows := read("fog_vs_time_cycles.csv")):
+        error_vs_time_chart(rows, [("all", "a spot light through haze onto a rough glass ball"), ("caustic", "the volumetric caustic below the ball")],
+                            "Cycles' reference", "fog_vs_time_cycles.png")
     if (rows := read("accuracy.csv")):
         accuracy_charts(rows)
     if (rows := read("acne.csv")):

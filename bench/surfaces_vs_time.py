@@ -184,9 +184,9 @@ def summary(rows):
                 print("  Cycles %5s spp: %.5f in %.2f s; %s" % (r[2], r[column], r[3], ", ".join(parts)))
 
 
-def strip(work, halves, pair, efforts, cycles_spp):
-    """bench/results/surfaces_strip.png: prism's reference | Cycles | 8x difference, then each
-    method's picture at its second effort, with the caustic's rectangle outlined."""
+def strip(work, halves, pair, efforts, cycles_spp, rect=CAUSTIC, name="surfaces_strip.png", labels=("prism path tracer, reference", "Cycles")):
+    """bench/results/NAME: prism's reference | Cycles | 8x difference, then each method's
+    picture at its second effort, with the rectangle `rect` (the caustic's) outlined."""
     try:
         from PIL import Image, ImageDraw
     except ImportError:
@@ -201,7 +201,7 @@ def strip(work, halves, pair, efforts, cycles_spp):
         img.putdata([tuple(srgb(values[3 * ((h - 1 - i // w) * w + i % w) + k]) for k in range(3)) for i in range(w * h)])
         return img
 
-    cells = [("prism path tracer, reference", picture(p)), ("Cycles", picture(c)),
+    cells = [(labels[0], picture(p)), (labels[1], picture(c)),
              ("8 x (prism - Cycles) + 0.5", picture([0.5 + 8 * (a - b) for a, b in zip(p, c)]))]
     for method, levels in efforts.items():
         effort = levels[min(1, len(levels) - 1)]
@@ -211,13 +211,13 @@ def strip(work, halves, pair, efforts, cycles_spp):
     rows = (len(cells) + columns - 1) // columns
     out = Image.new("RGB", (columns * w, rows * (h + 18)), (255, 255, 255))
     draw = ImageDraw.Draw(out)
-    x0, x1, y0, y1 = CAUSTIC
+    x0, x1, y0, y1 = rect
     for i, (label, img) in enumerate(cells):
         left, top = (i % columns) * w, (i // columns) * (h + 18)
         out.paste(img, (left, top + 18))
         draw.text((left + 4, top + 3), label, fill=(0, 0, 0))
         draw.rectangle([left + x0 * w, top + 18 + y0 * h, left + x1 * w, top + 18 + y1 * h], outline=(255, 255, 0))
-    out.save(os.path.join(here, "results", "surfaces_strip.png"))
+    out.save(os.path.join(here, "results", name))
 
 
 if __name__ == "__main__":

@@ -4,6 +4,11 @@
 // and fans out into a spectrum on the floor, by photon mapping: each photon takes one
 // wavelength where it first refracts and follows F2's Sellmeier index from then on.
 // Beside it, the same prism of a glass that does not disperse (n = n_d): one white beam.
+// And the prism in haze (prism_haze): a narrow white beam from a projector (a spot light)
+// crosses the hazy room, visible by the light the haze scatters, enters the prism and
+// leaves it as a fan of colours in the air down to the floor. Photons keep their
+// wavelength where they scatter in the haze, and the volume photons the fan leaves are
+// read along each camera ray by the beam radiance estimate.
 #include "cli.hpp"
 #include "methods.hpp"
 
@@ -71,6 +76,19 @@ auto rainbow_scene(const Glass& glass)
     return scene;
 }
 
+/// The prism alone in a dark hazy room, lit by a narrow white beam aimed at its left face at
+/// F2's minimum deviation, from a projector 6 away.
+auto hazy_scene()
+{
+    using namespace prism;
+    const Vec3<T> beam = sunbeam();
+    const Vec3<T> face_middle = centre + rotated({T(-0.5), std::sqrt(T(3)) / 2 * T(0.5), 0}, tilt);
+    return Scene{Lights{SpotLight<T>{.position = face_middle - T(6) * beam, .direction = beam, .intensity = Rgb<T>(T(20000)), .inner_angle = T(0.6),
+                                     .outer_angle = T(0.8)}},
+                 Object{Plane<T>({0, 1, 0}, 0), Diffuse<T>{.albedo = {.color = Rgb<T>(T(0.85))}, .kd = 1, .ka = 0}},
+                 Object{prism_solid(), DispersiveDielectric<T>{.glass = glass::f2<double>}}};
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -78,7 +96,7 @@ int main(int argc, char** argv)
     return examples::run([&] {
         using namespace prism;
         examples::Options options;
-        options.images = {"prism_rainbow", "prism_rainbow_plain"}; // checked before rendering, written together after
+        options.images = {"prism_rainbow", "prism_rainbow_plain", "prism_haze"}; // checked before rendering, written together after
         options.render.width = 640;
         options.render.height = 400;
         options.render.spp = 4;
@@ -94,6 +112,22 @@ int main(int argc, char** argv)
         examples::save(examples::render_by_method("prism_rainbow", scene, camera, options), options);
         const auto plain = rainbow_scene(Dielectric<T>{.ior = T(glass::f2<double>.index(fraunhofer::d))});
         examples::save(examples::render_by_method("prism_rainbow_plain", plain, camera, options), options);
+        // In haze: 8 % of the light scattered per unit length, mostly forward, none absorbed;
+        // the camera stands outside it.
+        const auto hazy = hazy_scene();
+        using Air = FilledAir<Fog<T>>;
+        const Air haze{.medium = {.scattering = Rgb<T>(T(0.08)), .phase = {.g = T(0.5)}}, .region = {{-12, 0, -10}, {14, 7, 6}}};
+        PhotonMapper<std::remove_cvref_t<decltype(hazy)>, Air>::Config config;
+        config.tracing = examples::photon_tracer_config(options);
+        config.tracing.global_photons = 50 * options.photons;       // the white beam's haze is global photons' (L M)
+        config.tracing.caustic_photons = 4 * options.caustic_photons; // the fan's, caustic photons' (L S S M)
+        config.caustic.radius = float(options.radius);
+        config.gather_rays = 0;
+        config.volume_radius = 0.05f;
+        const PhotonMapper mapper(hazy, config, haze);
+        std::printf("prism_haze: %zu volume, %zu global and %zu caustic photons\n", mapper.maps().volume.size(), mapper.maps().global.size(),
+                    mapper.maps().caustic.size());
+        examples::save(examples::timed_render("prism_haze", camera, mapper, options), options);
         return 0;
     });
 }

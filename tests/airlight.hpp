@@ -4,7 +4,8 @@
 // fog, and what it sees by single scattering,
 //   L = int_0^inf sigma_s e^(-sigma_t s) p(cos) I / d^2 e^(-sigma_t d) ds
 // (d the distance from the ray's point at s to the light), by Simpson's rule on [0, 120]
-// in double: an outside number, computed without prism's integrators.
+// in double: an outside number, computed without prism's integrators. airlight_along
+// gives the same for any ray and light position.
 #pragma once
 
 #include <prism/prism.hpp>
@@ -34,20 +35,28 @@ inline prism::FilledAir<prism::Fog<float>> airlight_fog()
 /// The ray the test looks along.
 inline prism::Ray<float> airlight_ray() { return {{-2, 0, 0}, {1, 0, 0}}; }
 
-/// The single-scattered radiance along airlight_ray() in channel c, by quadrature.
-inline double airlight(int c)
+/// The single-scattered radiance of a point light of intensity 1 at `light` in the
+/// airlight fog, in channel c, along the ray from `origin` in unit direction `w`, by
+/// Simpson's rule over [from, length] with n (even) intervals: the fog lies on the ray
+/// from `from` on (clear air before it), and all about the light.
+inline double airlight_along(int c, const prism::Vec3<double>& origin, const prism::Vec3<double>& w, const prism::Vec3<double>& light,
+                             double length = 120.0, int n = 400000, double from = 0.0)
 {
     const double st = airlight_absorption[c] + airlight_scattering[c];
     const prism::HenyeyGreenstein<double> hg{airlight_g};
     const auto f = [&](double s) {
-        const double x = -2 + s, d = std::sqrt(x * x + 1);
-        return airlight_scattering[c] * std::exp(-st * s) * hg.value(-x / d) / (d * d) * std::exp(-st * d);
+        const prism::Vec3<double> to_point = origin + s * w - light;
+        const double d = prism::length(to_point);
+        // The light travels from the light to the point, then back along the ray (-w).
+        return airlight_scattering[c] * std::exp(-st * (s - from)) * hg.value(-prism::dot(to_point, w) / d) / (d * d) * std::exp(-st * d);
     };
-    const int n = 400000;
-    const double h = 120.0 / n;
-    double sum = f(0) + f(120);
-    for (int i = 1; i < n; ++i) sum += f(i * h) * (i % 2 ? 4 : 2);
+    const double h = (length - from) / n;
+    double sum = f(from) + f(length);
+    for (int i = 1; i < n; ++i) sum += f(from + i * h) * (i % 2 ? 4 : 2);
     return sum * h / 3;
 }
+
+/// The single-scattered radiance along airlight_ray() in channel c, by quadrature.
+inline double airlight(int c) { return airlight_along(c, {-2, 0, 0}, {1, 0, 0}, {0, 1, 0}); }
 
 } // namespace test

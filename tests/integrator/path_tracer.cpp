@@ -281,3 +281,30 @@ TEST_CASE("the path tracer's single scattering of a point light in fog is the ai
         CHECK(sum[c] / n == doctest::Approx(test::airlight(c)).epsilon(0.005).scale(0)); // relative (doctest's scale 1 would make it absolute here)
     }
 }
+
+TEST_CASE("regression: a light sample through frosted glass from inside it takes the air's transmittance on its way out")
+{
+    // A frosted slab over a floor, a point light 2 above it, and a layer of absorbing air
+    // (sigma_a = 1, 0.5 thick) about the light. The floor under the slab is lit through the
+    // slab, by light samples taken where a path meets the slab's top face from inside: they
+    // leave the glass into the air and cross the layer, nearly straight up (within 12
+    // degrees: exp(-0.5 / cos) is exp(-0.5) to 1 %), so the floor reads exp(-0.5) of what
+    // it reads in clear air (measured 1.013 times it, within the noise; 3 % held). Before,
+    // a sample taken inside an object skipped the air's transmittance: the ratio was 1.01.
+    using T = float;
+    const Scene scene{Lights{PointLight<T>{.position = {0, 3, 0}, .intensity = Rgb<T>(10)}},
+                      Object{Plane<T>({0, 1, 0}, 0), Diffuse<T>{.albedo = {.color = Rgb<T>(0.5f)}, .kd = 1, .ka = 0}},
+                      Object{Box<T>({-0.3f, 0.95f, -0.3f}, {0.3f, 1, 0.3f}), RoughDielectric<T>{.ior = 1.5f, .roughness = 0.3f}}};
+    const FilledAir<Fog<T>> layer{.medium = {.absorption = Rgb<T>(1)}, .region = {{-50, 2.5f, -50}, {50, 3.5f, 50}}};
+    const PathTracer clear(scene);
+    const PathTracer absorbed(scene, {}, layer);
+    const Ray<T> down{{0.05f, 0.5f, 0.02f}, normalize(Vec3<T>(0.01f, -1, 0.02f))};
+    double in_clear = 0, in_layer = 0;
+    Pcg32 rng(3, 4);
+    for (int i = 0; i < 200000; ++i) {
+        in_clear += clear.radiance(down, rng).x;
+        in_layer += absorbed.radiance(down, rng).x;
+    }
+    MESSAGE("under the slab: clear ", in_clear / 200000, ", with the layer ", in_layer / 200000, ", ratio ", in_layer / in_clear, " (exp(-0.5) = ", std::exp(-0.5), ")");
+    CHECK(in_layer / in_clear == doctest::Approx(std::exp(-0.5)).epsilon(0.03).scale(0));
+}

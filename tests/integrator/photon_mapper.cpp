@@ -344,3 +344,45 @@ TEST_CASE("in fog the photon mapper agrees with the path tracer: the beam estima
     // At the floor, 1 to 2 from below the light, through the fog: direct, gathered and beam.
     compare([](int k) { return Ray<T>{{-2.5f, 1.0f, -0.5f + 0.1f * T(k)}, normalize(Vec3<T>(1, -0.8f, 0))}; }, 11, 8);
 }
+
+TEST_CASE("a volumetric caustic through a frosted ball in haze: the beam estimate of the caustic pass's volume photons agrees with the path tracer")
+{
+    // A point light over a frosted glass ball (roughness 0.3, so that a path tracer finds
+    // the caustic: from the haze a path meets the ball, and from the ball's far face a
+    // light sample refracts out to the light), in haze over a black floor. 30 rays cross
+    // the focused light below the ball; the mean of their radiance by the photon mapper
+    // (volume photons L {S | frosted}+ M by the beam estimate) against the path tracer's.
+    // Measured: 2.4 % above it (the path tracer's standard error 0.7 %; the beam
+    // estimate's blur over the narrow neck); 7 % held. Before the path tracer took the
+    // air's transmittance on light samples leaving the glass, it read about 40 % more.
+    using T = float;
+    const Scene scene{Lights{PointLight<T>{.position = {0, 4.5f, 0}, .intensity = Rgb<T>(20)}},
+                      Object{Plane<T>({0, 1, 0}, 0), Diffuse<T>{.albedo = {.color = Rgb<T>(0)}, .kd = 1, .ka = 0}},
+                      Object{Sphere<T>({0, 1.6f, 0}, 0.6f), RoughDielectric<T>{.ior = 1.5f, .roughness = 0.3f}}};
+    using Air = FilledAir<Fog<T>>;
+    const Air haze{.medium = {.absorption = Rgb<T>(0.01f), .scattering = Rgb<T>(0.12f), .phase = {.g = 0.3f}}, .region = {{-5, 0, -3}, {5, 6, 6}}};
+    const PathTracer tracer(scene, {}, haze);
+    PhotonMapper<std::remove_cvref_t<decltype(scene)>, Air>::Config config;
+    config.tracing.global_photons = 500000;
+    config.tracing.caustic_photons = 2000000;
+    config.gather_rays = 0;
+    config.volume_radius = 0.05f;
+    const PhotonMapper mapper(scene, config, haze);
+    double traced = 0, squares = 0, mapped = 0;
+    const int rays = 30, paths = 500000;
+    Pcg32 rng(3, 4);
+    for (int k = 0; k < rays; ++k) {
+        const Ray<T> ray{{-3, 0.1f + 0.03f * T(k), 1.7f + 0.02f * T(k)}, normalize(Vec3<T>(3, 0, -2))};
+        for (int i = 0; i < paths; ++i) {
+            const double v = tracer.radiance(ray, rng).x;
+            traced += v;
+            squares += v * v;
+        }
+        for (int i = 0; i < 16; ++i) mapped += mapper.radiance(ray, rng).x / 16;
+    }
+    const double n = double(rays) * paths;
+    traced /= n;
+    mapped /= rays;
+    MESSAGE("across the neck: path tracer ", traced, " +- ", std::sqrt((squares / n - traced * traced) / n), ", beam estimate ", mapped);
+    CHECK(mapped / traced == doctest::Approx(1).epsilon(0.07).scale(0));
+}

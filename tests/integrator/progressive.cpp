@@ -185,3 +185,36 @@ TEST_CASE("progressive photon mapping in the two-lobe furnace: every path, withi
     MESSAGE("mean ", mean, " (closed form ", test::CoatedFurnace::all, ")");
     CHECK(mean == doctest::Approx(test::CoatedFurnace::all).epsilon(0.01));
 }
+
+TEST_CASE("progressive photon mapping in fog: the beam estimate's radius shrinks too, and its blur of a light shaft fades")
+{
+    // A narrow spot light (a hard cone of 4 degrees) shines down through fog; a bundle of
+    // camera rays runs level beside the shaft, 0.16 from its edge. Only light scattered
+    // twice or more reaches them, which the path tracer finds (the reference). The photon
+    // mapper's beam estimate at a fixed radius of 0.3 reaches into the shaft and reads far
+    // too much; progressive passes starting at that radius shrink it (to 0.3 p^(-0.45) at
+    // alpha = 0.1), so only the first few passes blur the shaft into the rays, and their
+    // share of the mean falls as the passes go on.
+    using T = float;
+    const Scene scene{Lights{SpotLight<T>{.position = {0, 4, 0}, .direction = {0, -1, 0}, .intensity = Rgb<T>(100), .inner_angle = 4, .outer_angle = 4}},
+                      Object{Plane<T>({0, 1, 0}, 0), Diffuse<T>{.albedo = {.color = Rgb<T>(0.05f)}, .kd = 1, .ka = 0}}};
+    using S = std::remove_cvref_t<decltype(scene)>;
+    using Air = FilledAir<Fog<T>>;
+    const Air fog{.medium = {.absorption = Rgb<T>(0.05f), .scattering = Rgb<T>(0.15f), .phase = {.g = 0.2f}}, .region = {{-2, 0, -2}, {2, 4.5f, 2}}};
+    const Camera<T> camera{.position = {0.3f, 2, -3}, .look_at = {0.3f, 2, 0}, .up = {0, 1, 0}, .fov = 2};
+    const RenderConfig few{.width = 4, .height = 4, .spp = 64, .threads = 2, .progress = false};
+    RenderConfig many = few;
+    many.spp = 16384;
+    const double traced = test::image_mean(render(camera, PathTracer(scene, {}, fog), many));
+    ProgressiveConfig<S, Air> config;
+    config.pass.tracing = {.global_photons = 20000, .caustic_photons = 0, .seed = 3};
+    config.pass.volume_radius = 0.3f;
+    config.alpha = 0.1;
+    const double progressive = test::image_mean(render(camera, ProgressivePhotonMapper<S, Air>(scene, config, fog), few));
+    PhotonMapper<S, Air>::Config fixed = config.pass;
+    fixed.tracing.global_photons = 64 * 20000;
+    const double blurred = test::image_mean(render(camera, PhotonMapper<S, Air>(scene, fixed, fog), {.width = 4, .height = 4, .spp = 1, .threads = 2, .progress = false}));
+    MESSAGE("beside the shaft: path tracer ", traced, ", progressive ", progressive, ", fixed radius ", blurred);
+    CHECK(blurred > 3 * traced);
+    CHECK(std::abs(progressive - traced) < 0.2 * (blurred - traced));
+}

@@ -344,3 +344,54 @@ TEST_CASE("volume photons: a parallel light's photons cover a box of fog, and wh
     }
     CHECK(maps.global.size() == 0); // the photons that pass the box leave the scene
 }
+
+TEST_CASE("dispersion in fog: photons fanned out by a flint wedge keep their wavelength where they scatter, blue bent further than red by Snell's law")
+{
+    // Parallel white light along +x enters a wedge of Schott F2 square on (no refraction)
+    // and leaves by a face tilted 30 degrees, bending down by about 24 degrees; beyond the
+    // wedge, fog. Each photon took one wavelength band at the first face, and the caustic
+    // pass stores it where it first scatters in the fog (L S S M), its direction the one
+    // it left the wedge by. Snell's law at the tilted face gives that direction's y for
+    // each index: the photons' colours must sort their directions as F2's indices do,
+    // blue below red, by about the spread Snell gives between 450 and 650 nm.
+    using T = double;
+    const Vec3<T> exit_normal{std::cos(pi<T> / 6), std::sin(pi<T> / 6), 0};
+    const Scene scene{Lights{DirectionalLight<T>{.direction = {1, 0, 0}, .irradiance = Rgb<T>(1)}},
+                      Object{intersection_of(Plane<T>::through({0, 0, 0}, {-1, 0, 0}), Plane<T>::through({1, 0, 0}, exit_normal),
+                                             Box<T>({-0.01, -1, -1}, {2, 1, 1})),
+                             DispersiveDielectric<T>{.glass = glass::f2<double>}}};
+    const FilledAir<Fog<T>> fog{.medium = {.scattering = Rgb<T>(0.3)}, .region = {{2, -3, -1}, {5, 1.5, 1}}};
+    const PhotonMaps maps = trace_photons(scene, {.global_photons = 0, .caustic_photons = 400000, .max_bounces = 8, .seed = 2}, fog);
+    // The direction's y after the tilted face for index n: incidence 30 degrees from its normal.
+    const auto leaving_y = [&](double n) {
+        const double sin_t = n * 0.5, cos_t = std::sqrt(1 - sin_t * sin_t);
+        const Vec3<double> tangent = normalize(Vec3<double>(1, 0, 0) - 0.5 * std::sqrt(3.0) * Vec3<double>(exit_normal));
+        return cos_t * exit_normal.y + sin_t * tangent.y;
+    };
+    const double red_y = leaving_y(glass::f2<double>.index(650)), blue_y = leaving_y(glass::f2<double>.index(450));
+    double sum_red = 0, sum_blue = 0;
+    std::size_t red = 0, blue = 0, white = 0, caustic = 0;
+    for (const Photon& photon : maps.volume.photons()) {
+        if ((photon.flags & Photon::caustic) == 0) continue;
+        ++caustic;
+        const Rgb<float> p = photon.power();
+        const double y = -double(photon.toward_source().y);
+        if (p.x == p.y && p.y == p.z) ++white;
+        else if (p.x > 2 * p.z) sum_red += y, ++red;
+        else if (p.z > 2 * p.x) sum_blue += y, ++blue;
+    }
+    MESSAGE(caustic, " caustic volume photons, ", red, " red, ", blue, " blue; mean y red ", sum_red / double(red), ", blue ", sum_blue / double(blue),
+            "; Snell at 650 nm ", red_y, ", at 450 nm ", blue_y);
+    CHECK(caustic > 50000);
+    CHECK(white == 0);
+    REQUIRE(red > 5000);
+    REQUIRE(blue > 5000);
+    // The classes' means lie between Snell's directions for the spectrum's ends, blue the lower.
+    const double mean_red = sum_red / double(red), mean_blue = sum_blue / double(blue);
+    CHECK(mean_blue < mean_red);
+    CHECK(mean_red - mean_blue > 0.3 * (red_y - blue_y));
+    for (const double mean : {mean_red, mean_blue}) {
+        CHECK(mean < leaving_y(glass::f2<double>.index(720)) + 1e-3);
+        CHECK(mean > leaving_y(glass::f2<double>.index(390)) - 1e-3);
+    }
+}

@@ -14,6 +14,12 @@
 // the mean radiance over it (Veach 1997, section 10.2; the importance of a pinhole).
 // Paths whose first vertex is diffuse are the path tracer's (integrator/path_tracer.hpp),
 // so the two add up without counting any path twice.
+// In a medium that scatters, a path is joined to the camera where it scatters as at a
+// diffuse surface, the phase function toward the camera in place of the BRDF and no
+// cosine there: power * p(cos) * T / (d^2 * A * cos_c^3), T what the air lets through on
+// the way (the shadow ray's own stop at glass as ever). A path that scatters in the air
+// before any specular bounce (L M ...) is the path tracer's, which samples the light from
+// there.
 //
 // An integrator of passes (render/render.hpp's PassEstimator): pass s traces paths
 // [s P, (s + 1) P) of one sequence, P = LightTracerConfig::paths, and the image is the mean
@@ -33,6 +39,7 @@
 #include <prism/render/render.hpp>
 #include <prism/scene/camera.hpp>
 #include <prism/scene/scene.hpp>
+#include <prism/transport/media.hpp>
 #include <prism/transport/random_walk.hpp>
 
 #include <algorithm>
@@ -57,8 +64,6 @@ struct LightTracerConfig {
 template <class SceneT, class Air = StraightAir>
 class LightTracer {
 public:
-    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
-                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
     /// Shorthand for scalar_type.
@@ -131,7 +136,8 @@ public:
                 const T cos_x = transmits<M> && has_glossy<M> ? std::abs(dot(c.facing_normal(), to_camera)) : dot(c.facing_normal(), to_camera);
                 if (!(cos_x > T(0))) return go_on;
                 const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
-                                                                                               seen->distance);
+                                                                                               seen->distance) *
+                                 air_transmittance(air_, Ray<T>{c.point, to_camera}, seen->distance);
                 if (!(max_component(v) > T(0))) return go_on;
                 T importance = cos_x / (seen->distance * seen->distance * area * seen->cos * seen->cos * seen->cos);
                 // A shading normal weighs the light arriving here by its own cosine over the
@@ -143,14 +149,25 @@ public:
                 Rgb<T> f;
                 if constexpr (has_glossy<M>) f = glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index)).f(to_camera, Transport::importance);
                 else f = diffuse_response(material, c).brdf();
-                const Rgb<float> splat(power * f * v * importance);
-                std::array<ExactSum, 3> add{};
-                for (int k = 0; k < 3; ++k) {
-                    const double value = double(splat[k]) * scale;
-                    if (value >= 0.0 && ExactSum::takes(value)) add[std::size_t(k)] = ExactSum::of(value);
-                    else out.reject(1);
+                splat(out, *seen, power * f * v * importance, scale);
+                return go_on;
+            }, [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at, const Rgb<T>& power) {
+                // Scattered in the air before any specular bounce: the path tracer's.
+                if (at.direct || !at.first_specular) return false;
+                const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
+                Vec3<T> eye = rays.origin;
+                if (rays.thin_lens()) {
+                    const T u = at.rng.template uniform<T>(), v = at.rng.template uniform<T>();
+                    eye = rays.lens_point(u, v);
                 }
-                out.add(int(seen->x), int(seen->y), add, 0);
+                const auto seen = rays.thin_lens() ? rays.project(at.point, eye) : rays.project(at.point);
+                if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return go_on;
+                const Vec3<T> to_camera = (eye - at.point) / seen->distance;
+                const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(Ray<T>{at.point, to_camera}, seen->distance) *
+                                 through_air(at.media, at.point, to_camera, seen->distance);
+                if (!(max_component(v) > T(0))) return go_on;
+                const T importance = T(medium.phase.value(dot(at.direction, to_camera))) / (seen->distance * seen->distance * area * seen->cos * seen->cos * seen->cos);
+                splat(out, *seen, power * v * importance, scale);
                 return go_on;
             });
         };
@@ -169,6 +186,31 @@ public:
     }
 
 private:
+    /// What the scene's air lets through from `p` in a medium to the camera, `distance`
+    /// along `to_camera`: its medium's transmittance for a point in the air (FilledAir),
+    /// else 1 (a shadow ray from inside an object stops at its glass). (From a surface, the
+    /// ray that reaches the camera goes through the air all the way, frosted glass's far
+    /// side included: air_transmittance.)
+    [[nodiscard]] Rgb<T> through_air(const MediumStack& media, const Vec3<T>& p, const Vec3<T>& to_camera, T distance) const noexcept
+    {
+        return media.empty() ? air_transmittance(air_, Ray<T>{p, to_camera}, distance) : Rgb<T>(T(1));
+    }
+
+    /// Adds `value` (one path's radiance on the pixel, times `scale`) to the pixel `seen`
+    /// lands in; a part that is negative, not finite or too large for exact sums is rejected.
+    template <class Seen>
+    static void splat(Accumulation& out, const Seen& seen, const Rgb<T>& value, double scale) noexcept
+    {
+        const Rgb<float> radiance(value);
+        std::array<ExactSum, 3> add{};
+        for (int k = 0; k < 3; ++k) {
+            const double v = double(radiance[k]) * scale;
+            if (v >= 0.0 && ExactSum::takes(v)) add[std::size_t(k)] = ExactSum::of(v);
+            else out.reject(1);
+        }
+        out.add(int(seen.x), int(seen.y), add, 0);
+    }
+
     /// The photon tracer's settings for `count` paths in all.
     [[nodiscard]] PhotonTracerConfig tracer_config(std::uint64_t count, std::uint64_t seed, unsigned threads) const noexcept
     {

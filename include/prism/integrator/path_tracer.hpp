@@ -126,10 +126,10 @@ public:
                                     const Rgb<T> f = lobe.f(s.wi, Transport::radiance);
                                     if (!(max_component(f) > T(0))) return;
                                     const T w = shared ? light_sample_weight(s.pdf, lobe.pdf(s.wi)) : T(1);
-                                    gathered += (w * cos) * f * v * through_air(at.media, c.point, s) * s.irradiance;
+                                    gathered += (w * cos) * f * v * air_transmittance(air_, Ray<T>{c.point, s.wi}, s.distance) * s.irradiance;
                                 } else {
                                     const T w = shared ? light_sample_weight(s.pdf, cos / pi<T>) : T(1);
-                                    gathered += w * v * through_air(at.media, c.point, s) * s.irradiance * cos;
+                                    gathered += w * v * air_transmittance(air_, Ray<T>{c.point, s.wi}, s.distance) * s.irradiance * cos;
                                 }
                             });
                         });
@@ -215,9 +215,11 @@ public:
     }
 
 private:
-    /// What the scene's air lets through along a light sample's shadow ray from `p`: its
-    /// medium's transmittance for a path in the air (FilledAir), 1 inside an object (its
-    /// shadow ray is the scene's to stop at the object's glass) or in clear air.
+    /// What the scene's air lets through along a light sample's shadow ray from `p` in a
+    /// medium: its medium's transmittance for a point in the air (FilledAir), 1 inside an
+    /// object (its shadow ray is the scene's to stop at the object's glass) or in clear air.
+    /// (From a surface a shadow ray that reaches the light goes through the air all the way,
+    /// frosted glass's far side included: air_transmittance.)
     [[nodiscard]] Rgb<T> through_air(const MediumStack& media, const Vec3<T>& p, const LightSample<T>& s) const noexcept
     {
         if constexpr (air_scatters<Air>) {

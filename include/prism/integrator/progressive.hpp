@@ -20,6 +20,11 @@
 // pass, a light's hot spot kept an error of 0.11 in the Cornell box), caustics from the caustic map, the rest from the global
 // map. Photons on the far side of a thin surface never count (their surface faces the
 // other way: PhotonMap::irradiance).
+// In a medium that scatters, camera rays read the volume photons by the beam radiance
+// estimate, whose kernel is a disk across the ray: its radius (volume_radius) shrinks by
+// the same schedule, r^2 by (p + alpha) / (p + 1) as the disks on surfaces (the
+// two-dimensional kernel of Knaus and Zwicker's analysis; Jarosz et al. 2011 shrink a
+// beam's one-dimensional blur by the ratio itself).
 #pragma once
 
 #include <prism/core/check.hpp>
@@ -51,7 +56,7 @@ namespace prism {
 template <class SceneT, class Air = StraightAir>
 struct ProgressiveConfig {
     /// Each pass's photon mapper: photons per pass (tracing), the first pass's radii
-    /// (caustic and global, radius estimates: k = 0) and the camera paths' settings.
+    /// (caustic, global and volume; the surfaces' by radius: k = 0) and the camera paths' settings.
     /// gather_rays and visibility_k must be 0.
     typename PhotonMapper<SceneT, Air>::Config pass{.caustic = {.radius = 0.1f},
                                                     .global = {.radius = 0.25f, .excluded = Photon::direct | Photon::caustic},
@@ -69,8 +74,6 @@ struct ProgressiveConfig {
 template <class SceneT, class Air = StraightAir>
 class ProgressivePhotonMapper {
 public:
-    static_assert(!SceneT::has_scattering_media && !air_scatters<Air>,
-                  "media that scatter light (a Fog interior, FilledAir) are rendered by PathTracer only so far");
     /// The scene's precision.
     using scalar_type = typename SceneT::scalar_type;
     /// Shorthand for scalar_type.
@@ -115,6 +118,7 @@ public:
             typename PhotonMapper<SceneT, Air>::Config mapper_config = config_.pass;
             mapper_config.caustic.radius = float(progressive_radius(config_.pass.caustic.radius, config_.alpha, pass));
             mapper_config.global.radius = float(progressive_radius(config_.pass.global.radius, config_.alpha, pass));
+            mapper_config.volume_radius = float(progressive_radius(config_.pass.volume_radius, config_.alpha, pass));
             const PhotonMapper<SceneT, Air> mapper(*scene_, mapper_config, trace_photons(*scene_, config_.pass.tracing, air_, pass), air_);
             RenderConfig pass_render = config;
             pass_render.spp = config_.samples;

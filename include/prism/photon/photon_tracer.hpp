@@ -160,11 +160,12 @@ public:
 
     /// Light paths [first, last) of `count` aimed at the specular objects as the caustic
     /// map's photons are, each walked to its end: visit(material, vertex, power) at every
-    /// diffuse surface returns whether the walk goes on (the light tracer's paths).
-    template <class Visit>
-    void walk_aimed(std::size_t first, std::size_t last, std::size_t count, Visit&& visit) const
+    /// diffuse surface and visit_medium(medium, vertex, power) where it scatters in a
+    /// medium return whether the walk goes on (the light tracer's paths).
+    template <class Visit, class VisitMedium = IgnoreMedia>
+    void walk_aimed(std::size_t first, std::size_t last, std::size_t count, Visit&& visit, VisitMedium&& visit_medium = {}) const
     {
-        for (std::size_t i = first; i < last; ++i) emit(targets_, target_power_, count, i, true, visit);
+        for (std::size_t i = first; i < last; ++i) emit(targets_, target_power_, count, i, true, visit, visit_medium);
     }
 
 private:

@@ -107,9 +107,9 @@ struct WalkMediumVertex {
 
 /// What a walk does where it scatters in a medium when its caller says nothing: it goes on.
 struct IgnoreMedia {
-    /// Goes on.
-    template <class M, class V>
-    constexpr bool operator()(const M&, const V&) const noexcept
+    /// Goes on (whatever it is shown: the medium, the vertex, a photon's power).
+    template <class... Seen>
+    constexpr bool operator()(const Seen&...) const noexcept
     {
         return true;
     }

@@ -1,0 +1,161 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+# Issue 36's foggy scene (bench/fog.cpp: a spot light through haze onto a rough glass
+# ball, which focuses it into a volumetric caustic; Cycles' copy is bench/cycles_fog.py),
+# in one run on 2 threads:
+#
+# 1. Two references, each of two renders with different seeds (the RMSE between them
+#    measures its own noise, which is taken out of every error in quadrature): Cycles at
+#    --reference-spp, and prism's progressive photon mapping at --reference-passes. Cycles
+#    cannot converge the volumetric caustic (its paths through the glass find the spot
+#    light only by light samples refracted out of a rough ball; at 4096 samples a pixel
+#    the caustic's noise is ten times its radiance), so the errors below the reference's
+#    noise are measured against prism's; both are written.
+# 2. Agreement, of each pair of means (prism's path tracer, prism's progressive photon
+#    mapping, Cycles): the RMSE between them against what their noise explains (a ratio
+#    near 1 is agreement within the noise), and the ratio of their mean radiances, over
+#    the picture and over the volumetric caustic.
+# 3. Error against time: prism's path tracer, its photon mapper read directly (photons),
+#    progressive photon mapping (passes), and Cycles (samples per pixel), over the whole
+#    picture and over the volumetric caustic (a rectangle of the air below the ball). Each
+#    timed render is run --repeats times, interleaved (min and median kept).
+#
+# Writes bench/results/fog_vs_time.csv, fog_agreement.csv and fog_strip.png; bench/plot.py
+# draws fog_vs_time.png.
+#
+# usage: bench/fog_vs_time.py BUILD_DIR [--width 160] [--reference-spp 4096] [--reference-passes 1024] [--agreement-spp 4096]
+#                             [--repeats 2] [--quick] [--reuse-cycles-reference]
+import argparse
+import csv
+import functools
+import os
+import statistics
+import subprocess
+import sys
+
+from methods_vs_time import COLUMNS, Scorer, read_pfm, write_pfm
+from surfaces_vs_time import agreement, strip, summary
+
+here = os.path.dirname(os.path.abspath(__file__))
+
+# The volumetric caustic's rectangle, as fractions of the picture (x from the left, y from the top).
+CAUSTIC = (0.44, 0.56, 0.58, 0.76)
+
+
+def caustic_mask(w, h):
+    """Per value (3 a pixel, PFM rows bottom first): True inside the caustic's rectangle."""
+    x0, x1, y0, y1 = CAUSTIC
+    return [x0 <= (col + 0.5) / w < x1 and y0 <= (h - 1 - row + 0.5) / h < y1 for row in range(h) for col in range(w) for _ in range(3)]
+
+
+def prism_render(build, method, effort, out, width, seed=0):
+    result = subprocess.run([os.path.join(build, "bench", "bench_fog"), method, str(effort), out, str(width), str(seed)],
+                            capture_output=True, text=True, check=True)
+    return float([line for line in result.stdout.splitlines() if line.startswith("seconds ")][0].split()[1])
+
+
+def cycles_render(spp, out, width, seed=1):
+    subprocess.run(["blender", "-b", "--factory-startup", "--python", os.path.join(here, "cycles_fog.py"), "--", out, str(spp), str(seed), str(width)],
+                   capture_output=True, text=True, check=True)
+    with open(out + ".txt") as f:
+        return float(f.read().splitlines()[1].split(",")[1])
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("build")
+    ap.add_argument("--width", type=int, default=160)
+    ap.add_argument("--reference-spp", type=int, default=4096, help="samples per pixel of each of Cycles' two reference renders")
+    ap.add_argument("--reference-passes", type=int, default=1024, help="passes of each of prism's two progressive reference renders")
+    ap.add_argument("--agreement-spp", type=int, default=4096, help="of each of prism's two path-traced renders for the agreement")
+    ap.add_argument("--repeats", type=int, default=2)
+    ap.add_argument("--quick", action="store_true", help="small efforts (a smoke test of this script)")
+    ap.add_argument("--reuse-cycles-reference", action="store_true", help="keep Cycles' reference renders already in BUILD_DIR/fog_vs_time")
+    args = ap.parse_args()
+    work = os.path.join(args.build, "fog_vs_time")
+    os.makedirs(work, exist_ok=True)
+    efforts = {"path": [64, 256, 1024, 4096], "direct": [100000, 300000, 1000000, 3000000], "progressive": [16, 64, 256]}
+    cycles_spp = [16, 64, 256, 1024]
+    if args.quick:
+        efforts = {m: e[:2] for m, e in efforts.items()}
+        cycles_spp = cycles_spp[:2]
+        args.reference_spp, args.agreement_spp, args.reference_passes = 64, 64, 8
+    pairs, seconds = {}, {}
+    # Cycles' reference.
+    pair, seconds["Cycles"] = [], 0.0
+    for seed in (101, 102):
+        out = os.path.join(work, "reference_%d.pfm" % seed)
+        if args.reuse_cycles_reference and os.path.exists(out):
+            with open(out + ".txt") as f:
+                seconds["Cycles"] += float(f.read().splitlines()[1].split(",")[1])
+        else:
+            seconds["Cycles"] += cycles_render(args.reference_spp, out, args.width, seed)
+        pair.append(read_pfm(out))
+    pairs["Cycles"] = pair
+    # prism's: the path tracer and progressive photon mapping, two seeds each.
+    for method, effort in (("path", args.agreement_spp), ("progressive", args.reference_passes)):
+        pair, seconds[method] = [], 0.0
+        for seed in (1, 2):
+            out = os.path.join(work, "agreement_%s_%d.pfm" % (method, seed))
+            seconds[method] += prism_render(args.build, method, effort, out, args.width, seed)
+            pair.append(read_pfm(out))
+        pairs[method] = pair
+    labels = {"Cycles": "Cycles %d spp x 2" % args.reference_spp, "path": "prism path %d spp x 2" % args.agreement_spp,
+              "progressive": "prism progressive %d passes x 2" % args.reference_passes}
+    w, h = pairs["Cycles"][0][0], pairs["Cycles"][0][1]
+    masks = {"all": None, "caustic": caustic_mask(w, h)}
+    with open(os.path.join(here, "results", "fog_agreement.csv"), "w", newline="") as f:
+        table = csv.writer(f)
+        table.writerow(["first", "second", "region", "range", "first_seconds", "second_seconds", "noise_first", "noise_second", "rmse_between",
+                        "rmse_from_noise", "mean_ratio"])
+        for a, b in (("path", "Cycles"), ("progressive", "Cycles"), ("progressive", "path")):
+            for region, mask in masks.items():
+                for display in (False, True):
+                    st = agreement(pairs[a], pairs[b], mask, display)
+                    print("agreement, %s (%.1f s) against %s (%.1f s), %s, %s: noise of the means %.5f and %.5f; RMSE between %.5f, noise explains %.5f "
+                          "(ratio %.3f); mean ratio %.5f" % (labels[a], seconds[a], labels[b], seconds[b], region, "display range" if display else "linear",
+                                                             st[0], st[1], st[2], st[3], st[2] / st[3], st[4]), flush=True)
+                    table.writerow([labels[a], labels[b], region, "display" if display else "linear", "%.2f" % seconds[a], "%.2f" % seconds[b]] +
+                                   ["%.6f" % v for v in st])
+    for name in ("Cycles", "progressive"):
+        write_pfm(os.path.join(work, "reference_%s.pfm" % name), (w, h, [(a + b) / 2 for a, b in zip(pairs[name][0][2], pairs[name][1][2])]))
+    scorers = {(reference, region): Scorer(pairs[reference], mask) for reference in ("progressive", "Cycles") for region, mask in masks.items()}
+    for (reference, region), scorer in scorers.items():
+        print("reference %s, %s: its own noise %.5f (display range %.5f)" % (labels[reference], region, scorer.noise, scorer.display_noise), flush=True)
+    # Every method's renders, timed in interleaved rounds.
+    jobs = []
+    for method, levels in efforts.items():
+        for effort in levels:
+            out = os.path.join(work, "%s_%d.pfm" % (method, effort))
+            jobs.append(("prism " + method, effort, out, functools.partial(prism_render, args.build, method, effort, out, args.width)))
+    for spp in cycles_spp:
+        out = os.path.join(work, "cycles_%d.pfm" % spp)
+        jobs.append(("Cycles", spp, out, functools.partial(cycles_render, spp, out, args.width)))
+    times = [[] for _ in jobs]
+    for _ in range(args.repeats):
+        for job, took in zip(jobs, times):
+            took.append(job[3]())
+    rows = {"progressive": [], "Cycles": []}
+    for (method, effort, out, _), took in zip(jobs, times):
+        image = read_pfm(out)
+        for (reference, region), scorer in scorers.items():
+            rows[reference].append((region, method, effort, min(took), statistics.median(took)) + scorer(image))
+            r = rows[reference][-1]
+            print("against %-11s %-8s %-18s %8s: %.3f s (median %.3f), RMSE %.5f, display range %.5f" % (reference, region, method, effort, r[3], r[4], r[5], r[8]),
+                  flush=True)
+    for reference, name in (("progressive", "fog_vs_time.csv"), ("Cycles", "fog_vs_time_cycles.csv")):
+        path = os.path.join(here, "results", name)
+        with open(path, "w", newline="") as f:
+            out = csv.writer(f)
+            out.writerow(["region", "method", "effort", "seconds", "seconds_median"] + COLUMNS)
+            for r in rows[reference]:
+                out.writerow([r[0], r[1], r[2], "%.4f" % r[3], "%.4f" % r[4]] + ["%.6f" % x for x in r[5:]])
+        print("wrote", path)
+        print("against %s:" % labels[reference])
+        summary(rows[reference])
+    strip(work, pairs["progressive"], pairs["Cycles"], efforts, cycles_spp, rect=CAUSTIC, name="fog_strip.png",
+          labels=(labels["progressive"], labels["Cycles"]))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
