@@ -12502,6 +12502,7 @@ Scene(L, Slots...) -> Scene<L, Slots...>;
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace prism {
@@ -12569,6 +12570,23 @@ public:
         const detail::PhotonTracer<SceneT, Air> tracer(*scene_, tracer_config(count, config.seed, config.threads), air_);
         const T area = rays.pixel_area();
         const double scale = double(config.spp);
+        // Where the camera sees point p, in the window (or nothing), and the unit direction
+        // from p to the eye: for a thin lens, a point of the lens drawn uniformly, seen as a
+        // pinhole there sees.
+        struct Seen {
+            typename CameraRays<T>::Projection at;
+            Vec3<T> to_camera;
+        };
+        const auto look_from = [&](const Vec3<T>& p, Pcg32& rng) -> std::optional<Seen> {
+            Vec3<T> eye = rays.origin;
+            if (rays.thin_lens()) {
+                const T u = rng.template uniform<T>(), v = rng.template uniform<T>();
+                eye = rays.lens_point(u, v);
+            }
+            const auto seen = rays.thin_lens() ? rays.project(p, eye) : rays.project(p);
+            if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return std::nullopt;
+            return Seen{*seen, (eye - p) / seen->distance};
+        };
         // A block of paths splatted into `out`.
         const auto trace_block = [&](std::uint64_t first, std::uint64_t last, Accumulation& out) {
             tracer.walk_aimed(first, last, count, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
@@ -12578,23 +12596,18 @@ public:
                 if (!at.first_specular) return false;
                 const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
                 const Crossing<T>& c = at.crossing();
-                // A thin lens: a point of it drawn uniformly, seen as a pinhole there sees.
-                Vec3<T> eye = rays.origin;
-                if (rays.thin_lens()) {
-                    const T u = at.rng.template uniform<T>(), v = at.rng.template uniform<T>();
-                    eye = rays.lens_point(u, v);
-                }
-                const auto seen = rays.thin_lens() ? rays.project(c.point, eye) : rays.project(c.point);
-                if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return go_on;
-                const Vec3<T> to_camera = (eye - c.point) / seen->distance;
+                const std::optional<Seen> look = look_from(c.point, at.rng);
+                if (!look) return go_on;
+                const auto& seen = look->at;
+                const Vec3<T>& to_camera = look->to_camera;
                 // The camera sees the other side: only through a glossy interface (frosted glass).
                 const T cos_x = transmits<M> && has_glossy<M> ? std::abs(dot(c.facing_normal(), to_camera)) : dot(c.facing_normal(), to_camera);
                 if (!(cos_x > T(0))) return go_on;
                 const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
-                                                                                               seen->distance) *
-                                 air_transmittance(air_, Ray<T>{c.point, to_camera}, seen->distance);
+                                                                                               seen.distance) *
+                                 air_transmittance(air_, Ray<T>{c.point, to_camera}, seen.distance);
                 if (!(max_component(v) > T(0))) return go_on;
-                T importance = cos_x / (seen->distance * seen->distance * area * seen->cos * seen->cos * seen->cos);
+                T importance = cos_x / (seen.distance * seen.distance * area * seen.cos * seen.cos * seen.cos);
                 // A shading normal weighs the light arriving here by its own cosine over the
                 // true one (scattering.hpp).
                 if (!c.shades_flat()) {
@@ -12604,25 +12617,21 @@ public:
                 Rgb<T> f;
                 if constexpr (has_glossy<M>) f = glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index)).f(to_camera, Transport::importance);
                 else f = diffuse_response(material, c).brdf();
-                splat(out, *seen, power * f * v * importance, scale);
+                splat(out, seen, power * f * v * importance, scale);
                 return go_on;
             }, [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at, const Rgb<T>& power) {
                 // Scattered in the air before any specular bounce: the path tracer's.
                 if (at.direct || !at.first_specular) return false;
                 const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
-                Vec3<T> eye = rays.origin;
-                if (rays.thin_lens()) {
-                    const T u = at.rng.template uniform<T>(), v = at.rng.template uniform<T>();
-                    eye = rays.lens_point(u, v);
-                }
-                const auto seen = rays.thin_lens() ? rays.project(at.point, eye) : rays.project(at.point);
-                if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return go_on;
-                const Vec3<T> to_camera = (eye - at.point) / seen->distance;
-                const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(Ray<T>{at.point, to_camera}, seen->distance) *
-                                 through_air(at.media, at.point, to_camera, seen->distance);
+                const std::optional<Seen> look = look_from(at.point, at.rng);
+                if (!look) return go_on;
+                const auto& seen = look->at;
+                const Vec3<T>& to_camera = look->to_camera;
+                const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(Ray<T>{at.point, to_camera}, seen.distance) *
+                                 through_air(at.media, at.point, to_camera, seen.distance);
                 if (!(max_component(v) > T(0))) return go_on;
-                const T importance = T(medium.phase.value(dot(at.direction, to_camera))) / (seen->distance * seen->distance * area * seen->cos * seen->cos * seen->cos);
-                splat(out, *seen, power * v * importance, scale);
+                const T importance = T(medium.phase.value(dot(at.direction, to_camera))) / (seen.distance * seen.distance * area * seen.cos * seen.cos * seen.cos);
+                splat(out, seen, power * v * importance, scale);
                 return go_on;
             });
         };
