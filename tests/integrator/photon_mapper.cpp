@@ -386,3 +386,34 @@ TEST_CASE("a volumetric caustic through a frosted ball in haze: the beam estimat
     MESSAGE("across the neck: path tracer ", traced, " +- ", std::sqrt((squares / n - traced * traced) / n), ", beam estimate ", mapped);
     CHECK(mapped / traced == doctest::Approx(1).epsilon(0.07).scale(0));
 }
+
+TEST_CASE("the photon mapper's volume furnace: a box of fog that does not absorb, under a uniform sky, reads the sky's radiance")
+{
+    // Radiance 1 from every direction around a box of coloured fog that scatters but
+    // absorbs nothing: a camera ray through it reads the sky through the fog's
+    // transmittance plus the beam estimate of the light the fog scatters toward it, 1 in
+    // all. 81 rays cross the box parallel, 0.15 apart. Photons must be followed through
+    // hundreds of scatterings in the densest channel (optical depth 8 across): at the
+    // default 16 bounces it read 7 % low there. Measured: 0.998, 0.993, 1.002 (2 million
+    // photons; the beam estimates' noise about 0.5 %); 1 % held.
+    using T = float;
+    // (The scene's one object is tiny and just above the box: photons are aimed at the scene and the fog together.)
+    const auto sky = Scene{Lights{EnvironmentLight<T>{}}, Object{Sphere<T>({0, 1.2f, 0}, 1e-3f), Diffuse<T>{}}};
+    using Air = FilledAir<Fog<T>>;
+    const Air air{.medium = {.scattering = {1.0f, 2.0f, 4.0f}, .phase = {.g = 0.6f}}, .region = {Vec3<T>(-1), Vec3<T>(1)}};
+    PhotonMapper<std::remove_cvref_t<decltype(sky)>, Air>::Config config;
+    config.tracing.global_photons = 2000000;
+    config.tracing.caustic_photons = 0;
+    config.tracing.max_bounces = 1000;
+    config.gather_rays = 0;
+    config.volume_radius = 0.1f;
+    const PhotonMapper mapper(sky, config, air);
+    Rgb<double> sum(0);
+    Pcg32 rng(5, 6);
+    for (int k = 0; k < 81; ++k) sum += Rgb<double>(mapper.radiance(Ray<T>{{-3, -0.6f + 0.15f * T(k % 9), -0.6f + 0.15f * T(k / 9)}, {1, 0, 0}}, rng));
+    for (int c = 0; c < 3; ++c) {
+        CAPTURE(c);
+        MESSAGE("channel ", c, ": ", sum[c] / 81);
+        CHECK(sum[c] / 81 == doctest::Approx(1).epsilon(0.01).scale(0));
+    }
+}
