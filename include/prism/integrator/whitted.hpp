@@ -38,6 +38,7 @@
 #include <prism/transport/travel.hpp>
 
 #include <algorithm>
+#include <type_traits>
 
 namespace prism {
 
@@ -81,7 +82,7 @@ public:
 
     /// A Whitted integrator of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
     explicit Whitted(const SceneT& scene, Config config = {}, Air air = {})
-        : scene_(&scene), config_(config), bands_(config.dispersion_bands), air_(std::move(air)), airlight_rule_(checked_rule(config.airlight_nodes))
+        : scene_(&scene), config_(config), bands_(config.dispersion_bands), air_(std::move(air)), airlight_rule_(checked_nodes(config.airlight_nodes))
     {
         scene.validate();
         air_.validate();
@@ -288,12 +289,17 @@ private:
         return sum + marched * step;
     }
 
-    /// The airlight's rule of n nodes; throws std::invalid_argument, naming the setting, for n outside [1, 64].
-    static GaussLegendre checked_rule(int n)
+    /// n, the airlight's node count; throws std::invalid_argument, naming the setting, for n outside [1, 64].
+    static int checked_nodes(int n)
     {
         if (n < 1 || n > GaussLegendre::max_count) detail::throw_invalid("Whitted airlight_nodes must be in [1, ", GaussLegendre::max_count, "], got ", n);
-        return GaussLegendre(n);
+        return n;
     }
+
+    /// A scene and air without a scattering medium hold no airlight rule (nor compile its construction).
+    struct NoRule {
+        explicit constexpr NoRule(int) noexcept {}
+    };
 
     /// Whether a light is summed by the airlight: a delta light at a point.
     template <class L>
@@ -352,7 +358,7 @@ private:
     Config config_;
     SpectralBands<T> bands_;
     Air air_;
-    GaussLegendre airlight_rule_;
+    [[no_unique_address]] std::conditional_t<has_media, GaussLegendre, NoRule> airlight_rule_;
 };
 
 } // namespace prism
