@@ -460,6 +460,27 @@ def airlight_chart(rows):
     save(fig, "airlight.png")
 
 
+def transmittance_chart(rows):
+    """Transmittance through media of varying density: residual ratio tracking, ratio
+    tracking, the track-length estimator and marching, RMS error against time per ray
+    (bench/transmittance.cpp)."""
+    media = [("smoke", "smoke: value noise on a 32³ grid"), ("ground", "ground fog (exponential)")]
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.4))
+    for ax, (medium, title) in zip(axes, media):
+        for method, style, label in (("residual", "o-", "residual ratio tracking (prism's)"), ("ratio", "s-", "ratio tracking"),
+                                     ("track-length", "^-", "track-length (delta tracking)"), ("march", "d--", "marching (biased)")):
+            points = [(float(r["nanoseconds_per_ray"]), float(r["rms_error"]), r["setting"]) for r in rows if r["medium"] == medium and r["method"] == method]
+            ax.loglog([p[0] for p in points], [max(p[1], 1e-8) for p in points], style, label=label)
+            for x, y, setting in points:
+                ax.annotate(setting, (x, max(y, 1e-8)), textcoords="offset points", xytext=(4, 4), fontsize=7)
+        ax.set_xlabel("time per ray (ns, one thread)")
+        ax.set_ylabel("RMS error of the transmittance")
+        ax.set_title(title)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+    save(fig, "transmittance.png")
+
+
 def whitted_glossy_chart(rows):
     """Whitted's error on a rough metal ball against the roughness (bench/whitted_glossy.cpp)."""
     r = [float(x["roughness"]) for x in rows]
@@ -482,6 +503,8 @@ def main():
                                    ("caustic", "the frosted ball's caustic on the tiles")], "prism's path-traced reference", "surfaces_vs_time.png")
     if (rows := read("airlight.csv")):
         airlight_chart(rows)
+    if (rows := read("transmittance.csv")):
+        transmittance_chart(rows)
     if (rows := read("fog_vs_time.csv")):
         error_vs_time_chart(rows, [("all", "a spot light through haze onto a rough glass ball\n(Cycles renders it too)"),
                                    ("caustic", "the volumetric caustic below the ball")], "prism's progressive reference", "fog_vs_time.png")

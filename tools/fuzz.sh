@@ -6,7 +6,7 @@
 #   tools/fuzz.sh [SECONDS]     each target for SECONDS (default 30)
 # Targets (tests/fuzz/): quadric (crossings of any ten coefficients), csg (trees of
 # every operator), photon_map (the KD-tree against brute force, the estimates), and the
-# file readers pfm, png, jpeg, hdr, ply, obj, mtl (an OBJ's material library) and exr (any bytes as a file; exr as prism_merge reads a
+# file readers pfm, png, jpeg, hdr, density (a density grid), ply, obj, mtl (an OBJ's material library) and exr (any bytes as a file; exr as prism_merge reads a
 # part). Each
 # starts from its committed corpus, tests/fuzz/corpus/<target>/, and writes what it
 # finds into build/fuzz/<target>/ (copy inputs worth keeping into the corpus); a crash
@@ -42,7 +42,7 @@ fuzz_one() {
 }
 
 # One target per core at a time, each for SECONDS of its own.
-targets=(quadric csg photon_map pfm png jpeg hdr ply obj mtl exr)
+targets=(quadric csg photon_map pfm png jpeg hdr density ply obj mtl exr)
 cores=$(nproc)
 rm -f "$out"/*.report
 for target in "${targets[@]}"; do

@@ -71,12 +71,15 @@
 #include <prism/material/thin_film.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/medium/air.hpp>
+#include <prism/medium/density.hpp>
 #include <prism/medium/graded_index.hpp>
 #include <prism/medium/fog.hpp>
 #include <prism/medium/homogeneous.hpp>
+#include <prism/medium/majorant.hpp>
 #include <prism/medium/medium.hpp>
 #include <prism/medium/nesting.hpp>
 #include <prism/medium/phase.hpp>
+#include <prism/medium/varying_fog.hpp>
 #include <prism/optics/beer.hpp>
 #include <prism/optics/dispersion.hpp>
 #include <prism/optics/fresnel.hpp>

@@ -6508,14 +6508,34 @@ private:
 namespace prism {
 
 /// A medium in which light travels in straight lines and is attenuated along the way:
-/// `transmittance(distance)` is the fraction of light, per channel, left after that
-/// distance.
+/// either the same everywhere, `transmittance(distance)` the fraction of light per
+/// channel left after that distance, or varying from point to point,
+/// `transmittance(ray, t_max)` an unbiased estimate of it along ray (unit direction) from
+/// its origin to t_max. transmittance_along asks either.
 template <class X>
-concept Medium = requires(const X& medium, typename X::scalar_type distance) {
+concept Medium = requires(const X& medium, const Ray<typename X::scalar_type>& ray, typename X::scalar_type distance) {
     requires Scalar<typename X::scalar_type>;
-    { medium.transmittance(distance) } -> std::same_as<Rgb<typename X::scalar_type>>;
+    requires requires { { medium.transmittance(distance) } -> std::same_as<Rgb<typename X::scalar_type>>; } ||
+                 requires { { medium.transmittance(ray, distance) } -> std::same_as<Rgb<typename X::scalar_type>>; };
     medium.validate();
 };
+
+/// Whether medium type X is the same everywhere (its transmittance a function of distance alone).
+template <class X>
+inline constexpr bool uniform_medium = requires(const X& medium, typename X::scalar_type distance) { medium.transmittance(distance); };
+
+/// What `medium` lets through along [t0, t1] of `ray` (any direction length; t1 may be
+/// infinite, t0 not): exp(-sigma_t length) in a uniform medium, the medium's own estimate
+/// along the stretch in one that varies.
+template <Medium M, Scalar T>
+[[nodiscard]] Rgb<T> transmittance_along(const M& medium, const Ray<T>& ray, T t0, T t1) noexcept
+{
+    const T speed = length(ray.direction);
+    if constexpr (uniform_medium<M>)
+        return medium.transmittance((t1 - t0) * speed);
+    else
+        return medium.transmittance(Ray<T>{ray.at(t0), ray.direction / speed}, (t1 - t0) * speed);
+}
 
 /// Where a walker crossing a scattering medium next scatters, or that it reached the end
 /// of its segment, and the weight its power takes (the medium's transmittance to there,
@@ -6582,6 +6602,18 @@ struct FilledAir {
 
     M medium{}; ///< what fills the region
     Aabb<scalar_type> region = Aabb<scalar_type>::universe(); ///< where the medium is (a box; everywhere by default)
+
+    /// Where the air is not clear: the region, within the medium's own box where it has
+    /// one (a medium of varying density).
+    [[nodiscard]] Aabb<scalar_type> bounds() const noexcept
+    {
+        if constexpr (requires { medium.bounds(); }) {
+            const Aabb<scalar_type> box = medium.bounds();
+            return {component_max(region.lo, box.lo), component_min(region.hi, box.hi)};
+        } else {
+            return region;
+        }
+    }
 
     /// Throws std::invalid_argument, naming the parameter, for a bad medium or an empty region.
     void validate() const
@@ -8026,7 +8058,7 @@ constexpr void attenuate_inside(const M& material, const Crossing<typename M::sc
                                 const Ray<typename M::scalar_type>& ray, Rgb<typename M::scalar_type>& light) noexcept
 {
     if constexpr (M::transmits) {
-        if (!hit.entering) light *= material.medium().transmittance(hit.t * length(ray.direction));
+        if (!hit.entering) light *= transmittance_along(material.medium(), ray, typename M::scalar_type(0), hit.t);
     }
 }
 
@@ -8042,15 +8074,23 @@ constexpr void attenuate_shadow_ray(const M& material, const Crossings<typename 
                                     Rgb<typename M::scalar_type>& light) noexcept
 {
     using T = typename M::scalar_type;
+    using Interior = std::remove_cvref_t<decltype(material.medium())>;
     bool inside = crossings.inside_at_start;
     T previous = T(0), inside_length = T(0);
+    const auto stretch = [&](T t) {
+        if constexpr (uniform_medium<Interior>)
+            inside_length += t - previous;
+        else
+            light *= transmittance_along(material.medium(), ray, previous, t);
+    };
     for (const Crossing<T>& c : crossings) {
-        if (inside) inside_length += c.t - previous;
+        if (inside) stretch(c.t);
         inside = c.entering;
         previous = c.t;
     }
-    if (inside) inside_length += t_max - previous;
-    if (inside_length > T(0)) light *= material.medium().transmittance(inside_length * length(ray.direction));
+    if (inside) stretch(t_max);
+    if constexpr (uniform_medium<Interior>)
+        if (inside_length > T(0)) light *= material.medium().transmittance(inside_length * length(ray.direction));
     for (std::size_t k = 0; k < crossings.size(); ++k) light *= material.transmission_tint();
 }
 
@@ -9090,7 +9130,7 @@ void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& m
     if (const Inside* in = media.top()) {
         scene.visit_material(in->slot, in->index, [&]<class N>(const N& medium_material) {
             // (A medium that scatters was crossed by fly_through_medium, its weight taken.)
-            if constexpr (N::transmits && !has_scattering_interior<N>) light *= medium_material.medium().transmittance(hit.t * length(ray.direction));
+            if constexpr (N::transmits && !has_scattering_interior<N>) light *= transmittance_along(medium_material.medium(), ray, typename M::scalar_type(0), hit.t);
         });
     } else {
         attenuate_inside(material, hit, ray, light);
@@ -9111,7 +9151,7 @@ void for_scattering_medium_along(const SceneT& scene, const Air& air, const Medi
             });
         }
     } else if constexpr (air_scatters<Air>) {
-        const Interval<T> inside = air.region.clip(segment, {T(0), t_max});
+        const Interval<T> inside = air.bounds().clip(segment, {T(0), t_max});
         if (!inside.empty()) f(air.medium, inside.min, inside.max);
     }
 }
@@ -9140,9 +9180,9 @@ template <class Air, Scalar T>
 [[nodiscard]] Rgb<T> air_transmittance(const Air& air, const Ray<T>& ray, T distance) noexcept
 {
     if constexpr (air_scatters<Air>) {
-        const Interval<T> inside = air.region.clip(ray, {T(0), distance});
+        const Interval<T> inside = air.bounds().clip(ray, {T(0), distance});
         if (inside.empty()) return Rgb<T>(T(1));
-        return air.medium.transmittance(inside.max - inside.min);
+        return transmittance_along(air.medium, ray, inside.min, inside.max);
     } else {
         (void)air, (void)ray, (void)distance;
         return Rgb<T>(T(1));
@@ -9727,11 +9767,11 @@ public:
         Pcg32 scrambles(config.seed, 0xfeed5eedULL);
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
-        // A sphere around everything bounded, the air's medium included where its region
-        // is bounded: parallel photons start outside it.
+        // A sphere around everything bounded, the air's medium included where it is
+        // bounded: parallel photons start outside it.
         Aabb<T> lit = scene.bounds();
         if constexpr (air_scatters<Air>) {
-            if (air.region.bounded()) lit = lit.merged(air.region);
+            if (air.bounds().bounded()) lit = lit.merged(air.bounds());
         }
         if (!lit.empty()) {
             scene_sphere_ = lit.bounding_sphere();
@@ -11870,13 +11910,12 @@ template <class SceneT, Scalar T>
 [[nodiscard]] Rgb<T> transmittance_by_priority(const SceneT& scene, const Ray<T>& ray, T t_max, const ShadowBoundaries<T>& boundaries) noexcept
 {
     Rgb<T> tr{T(1)};
-    const T speed = length(ray.direction);
     MediumStack media;
     T previous = T(0);
     const auto attenuate_to = [&](T t) {
         if (const Inside* in = media.top()) {
             scene.visit_material(in->slot, in->index, [&]<class N>(const N& material) {
-                if constexpr (transmits<N>) tr *= material.medium().transmittance((t - previous) * speed);
+                if constexpr (transmits<N>) tr *= transmittance_along(material.medium(), ray, previous, t);
             });
         }
         previous = t;
@@ -13316,12 +13355,13 @@ private:
             // function toward the camera and the transmittance to it, over pi r^2.
             const Vec3<T> d = normalize(segment.direction);
             const T t_max = hit ? hit->crossing.t * length(segment.direction) : infinity<T>;
-            for_scattering_medium_along(*scene_, air_, media, Ray<T>{segment.origin, d}, t_max, [&](const auto& medium, T t0, T t1) {
-                parts *= medium.transmittance(t1 - t0);
+            const Ray<T> unit{segment.origin, d};
+            for_scattering_medium_along(*scene_, air_, media, unit, t_max, [&](const auto& medium, T t0, T t1) {
+                parts *= transmittance_along(medium, unit, t0, t1);
                 const Vec3<float> df(d);
                 Rgb<float> caustic(0.0f), other(0.0f);
                 maps_.volume.near_beam(Vec3<float>(segment.origin), df, float(t0), float(t1), config_.volume_radius, [&](const Photon& photon, float t) {
-                    const Rgb<float> light = Rgb<float>(medium.transmittance(T(t) - t0)) * float(medium.phase.value(T(dot(photon.toward_source(), df)))) * photon.power();
+                    const Rgb<float> light = Rgb<float>(transmittance_along(medium, unit, t0, T(t))) * float(medium.phase.value(T(dot(photon.toward_source(), df)))) * photon.power();
                     ((photon.flags & Photon::caustic) != 0 ? caustic : other) += light;
                 });
                 const float disk = pi<float> * config_.volume_radius * config_.volume_radius;
@@ -14023,7 +14063,7 @@ private:
             const T scale = length(ray.direction);
             const Ray<T> unit{ray.origin, ray.direction / scale};
             for_scattering_medium_along(*scene_, air_, media, unit, hit ? hit->crossing.t * scale : infinity<T>, [&](const auto& medium, T t0, T t1) {
-                radiance = radiance * medium.transmittance(t1 - t0) + single_scattering(medium, unit, t0, t1, media, jitter...);
+                radiance = radiance * transmittance_along(medium, unit, t0, t1) + single_scattering(medium, unit, t0, t1, media, jitter...);
             });
             return radiance;
         }
@@ -14122,24 +14162,32 @@ private:
     [[nodiscard]] Rgb<T> single_scattering(const Md& medium, const Ray<T>& ray, T t0, T t1, const MediumStack& media, Jitter... jitter) const noexcept
     {
         // The airlight of the lights at a point, in the air; the rest marched.
-        const bool airlight = config_.in_scattering == InScattering::airlight && media.empty();
+        // (A medium that varies is marched.)
+        const bool airlight = uniform_medium<Md> && config_.in_scattering == InScattering::airlight && media.empty();
         Rgb<T> sum{T(0)};
-        if (airlight) {
-            bool all = true;
-            scene_->for_each_light([&]<class L>(const L& light) {
-                if constexpr (has_airlight<L>) sum += airlight_of(light, medium, ray, t0, t1);
-                else all = false;
-            });
-            if (all) return sum;
-        }
-        if (!(t1 < infinity<T>)) {
-            // (A clear channel scatters nothing: only the channels that scatter count.)
-            const Rgb<T> sigma_t = medium.extinction();
-            T thinnest = infinity<T>;
-            for (int c = 0; c < 3; ++c)
-                if (sigma_t[c] > T(0)) thinnest = std::min(thinnest, sigma_t[c]);
-            if (!(thinnest < infinity<T>)) return Rgb<T>(T(0));
-            t1 = t0 + T(10) / thinnest;
+        if constexpr (uniform_medium<Md>) {
+            if (airlight) {
+                bool all = true;
+                scene_->for_each_light([&]<class L>(const L& light) {
+                    if constexpr (has_airlight<L>) sum += airlight_of(light, medium, ray, t0, t1);
+                    else all = false;
+                });
+                if (all) return sum;
+            }
+            if (!(t1 < infinity<T>)) {
+                // (A clear channel scatters nothing: only the channels that scatter count.)
+                const Rgb<T> sigma_t = medium.extinction();
+                T thinnest = infinity<T>;
+                for (int c = 0; c < 3; ++c)
+                    if (sigma_t[c] > T(0)) thinnest = std::min(thinnest, sigma_t[c]);
+                if (!(thinnest < infinity<T>)) return Rgb<T>(T(0));
+                t1 = t0 + T(10) / thinnest;
+            }
+        } else {
+            // Only where the medium is.
+            const Interval<T> inside = medium.bounds().clip(ray, {t0, t1});
+            if (inside.empty()) return Rgb<T>(T(0));
+            t0 = inside.min, t1 = inside.max;
         }
         Pcg32* rng = stream_of(jitter...);
         const LightSampling sampling{rng, config_.area_light_grid};
@@ -14158,7 +14206,7 @@ private:
                     arriving += T(medium.phase.value(dot(ray.direction, sample.wi))) * v * air * sample.irradiance;
                 });
             });
-            marched += medium.transmittance(s - t0) * medium.scattering_at(p) * arriving;
+            marched += transmittance_along(medium, ray, t0, s) * medium.scattering_at(p) * arriving;
         }
         return sum + marched * step;
     }
@@ -17587,6 +17635,206 @@ static_assert(Material<CoatedDielectric<float>>);
 
 } // namespace prism
 
+// ---- prism/medium/density.hpp ----
+// Density fields: how thick a medium of varying density (VaryingFog) is at each point,
+// zero outside a bounded box, with a conservative bound of the density over any box
+// (what the majorant grid, medium/majorant.hpp, is built from).
+//
+// DensityGrid holds values at the points of a regular lattice spanning its box and
+// interpolates them trilinearly (a voxel grid from a simulation or a file:
+// io/density.hpp reads and writes its raw format); HeightFog is a procedural field,
+// density falling exponentially with height, whose optical depth along any ray has a
+// closed form. A field of one's own is any type with density(p), bounds() and
+// max_over(box).
+
+
+#include <algorithm>
+#include <cmath>
+#include <concepts>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace prism {
+
+/// A field of density: `density(p)` >= 0 at a point (0 outside `bounds()`, a bounded
+/// box), and `max_over(box)`, at least the density at every point of the box (a bound a
+/// majorant may trust: too low a bound would bias every estimator). A field may also
+/// give `min_over(box)`, at most the density at every point of the box inside the
+/// field's: the control of residual ratio tracking (medium/varying_fog.hpp), which then
+/// is exact where the field is constant.
+template <class X>
+concept DensityField = requires(const X& field, const Vec3<typename X::scalar_type>& p, const Aabb<typename X::scalar_type>& box) {
+    requires Scalar<typename X::scalar_type>;
+    { field.density(p) } -> std::same_as<typename X::scalar_type>;
+    { field.bounds() } -> std::same_as<Aabb<typename X::scalar_type>>;
+    { field.max_over(box) } -> std::same_as<typename X::scalar_type>;
+    field.validate();
+};
+
+/// Densities at the nx x ny x nz points of a lattice spanning `box` (its corners lattice
+/// points; x varying fastest in `values`), trilinear between them, 0 outside the box.
+/// Copies share the values.
+template <Scalar T = float>
+class DensityGrid {
+public:
+    /// The precision of positions and densities.
+    using scalar_type = T;
+
+    /// The grid of `values` (nx ny nz of them, x fastest) over `box`. Throws
+    /// std::invalid_argument, naming what is wrong, for fewer than 2 points on an axis, a
+    /// count of values that is not nx ny nz, a value that is negative or not finite, or a
+    /// box that is not bounded with lo < hi on every axis.
+    DensityGrid(int nx, int ny, int nz, const Aabb<T>& box, std::vector<float> values)
+        : n_{nx, ny, nz}, box_(box)
+    {
+        if (nx < 2 || ny < 2 || nz < 2) detail::throw_invalid("DensityGrid needs at least 2 points on every axis, got ", nx, " x ", ny, " x ", nz);
+        if (!box.bounded() || !(box.lo.x < box.hi.x && box.lo.y < box.hi.y && box.lo.z < box.hi.z))
+            detail::throw_invalid("DensityGrid box must be bounded with lo < hi on every axis, got ", detail::describe(box.lo), " to ", detail::describe(box.hi));
+        const std::size_t count = std::size_t(nx) * std::size_t(ny) * std::size_t(nz);
+        if (values.size() != count) detail::throw_invalid("DensityGrid of ", nx, " x ", ny, " x ", nz, " points needs ", count, " values, got ", values.size());
+        for (std::size_t i = 0; i < count; ++i)
+            if (!(std::isfinite(values[i]) && values[i] >= 0.0f))
+                detail::throw_invalid("DensityGrid value ", i, " (x ", i % std::size_t(nx), ", y ", i / std::size_t(nx) % std::size_t(ny), ", z ",
+                                      i / (std::size_t(nx) * std::size_t(ny)), ") must be finite and >= 0, got ", values[i]);
+        values_ = std::make_shared<const std::vector<float>>(std::move(values));
+        for (int a = 0; a < 3; ++a) scale_[a] = T(n_[a] - 1) / (box_.hi[a] - box_.lo[a]);
+    }
+
+    /// The density at p: trilinear between the lattice's points, 0 outside the box.
+    [[nodiscard]] T density(const Vec3<T>& p) const noexcept
+    {
+        if (!box_.contains(p)) return T(0);
+        int i[3];
+        T f[3];
+        for (int a = 0; a < 3; ++a) {
+            const T u = (p[a] - box_.lo[a]) * scale_[a];
+            i[a] = std::clamp(int(u), 0, n_[a] - 2);
+            f[a] = std::clamp(u - T(i[a]), T(0), T(1));
+        }
+        const auto at = [&](int x, int y, int z) { return T((*values_)[index(x, y, z)]); };
+        const auto line = [&](int y, int z) { return at(i[0], y, z) + f[0] * (at(i[0] + 1, y, z) - at(i[0], y, z)); };
+        const auto plane = [&](int z) { return line(i[1], z) + f[1] * (line(i[1] + 1, z) - line(i[1], z)); };
+        return std::max(T(0), plane(i[2]) + f[2] * (plane(i[2] + 1) - plane(i[2])));
+    }
+
+    /// The box the lattice spans.
+    [[nodiscard]] Aabb<T> bounds() const noexcept { return box_; }
+
+    /// The greatest value at the lattice points of every lattice cell `region` touches:
+    /// trilinear interpolation never exceeds its corners, so no point of the region is
+    /// denser.
+    [[nodiscard]] T max_over(const Aabb<T>& region) const noexcept
+    {
+        int from[3], to[3];
+        if (!points_about(region, from, to)) return T(0);
+        float most = 0.0f;
+        for (int z = from[2]; z <= to[2]; ++z)
+            for (int y = from[1]; y <= to[1]; ++y)
+                for (int x = from[0]; x <= to[0]; ++x) most = std::max(most, (*values_)[index(x, y, z)]);
+        return T(most);
+    }
+
+    /// The least value at the lattice points of every lattice cell the part of `region`
+    /// inside the box touches (0 if none): no point of the region inside the box is thinner.
+    [[nodiscard]] T min_over(const Aabb<T>& region) const noexcept
+    {
+        int from[3], to[3];
+        if (!points_about(region, from, to)) return T(0);
+        float least = (*values_)[index(from[0], from[1], from[2])];
+        for (int z = from[2]; z <= to[2]; ++z)
+            for (int y = from[1]; y <= to[1]; ++y)
+                for (int x = from[0]; x <= to[0]; ++x) least = std::min(least, (*values_)[index(x, y, z)]);
+        return T(least);
+    }
+
+    /// The number of lattice points along axis a (0, 1, 2).
+    [[nodiscard]] int points(int axis) const noexcept { return n_[axis]; }
+    /// The values, x fastest.
+    [[nodiscard]] const std::vector<float>& values() const noexcept { return *values_; }
+
+    /// Nothing to check: the constructor did.
+    constexpr void validate() const noexcept {}
+
+private:
+    [[nodiscard]] std::size_t index(int x, int y, int z) const noexcept
+    {
+        return (std::size_t(z) * std::size_t(n_[1]) + std::size_t(y)) * std::size_t(n_[0]) + std::size_t(x);
+    }
+
+    /// The lattice points [from, to] on each axis of every lattice cell the part of
+    /// `region` inside the box touches; false if it lies outside the box.
+    bool points_about(const Aabb<T>& region, int (&from)[3], int (&to)[3]) const noexcept
+    {
+        for (int a = 0; a < 3; ++a) {
+            const T lo = std::max(region.lo[a], box_.lo[a]), hi = std::min(region.hi[a], box_.hi[a]);
+            if (!(lo <= hi)) return false;
+            from[a] = std::clamp(int(std::floor((lo - box_.lo[a]) * scale_[a])), 0, n_[a] - 1);
+            to[a] = std::clamp(int(std::ceil((hi - box_.lo[a]) * scale_[a])), 0, n_[a] - 1);
+        }
+        return true;
+    }
+
+    int n_[3];
+    Aabb<T> box_;
+    Vec3<T> scale_{};
+    std::shared_ptr<const std::vector<float>> values_;
+};
+
+/// Ground fog: density base exp(-(y - floor) / scale_height) within `box` (0 outside):
+/// `base` at height `floor`, thinning by e every scale_height above it.
+/// Along a ray of unit direction its optical depth per unit density is
+/// scale_height (e^{-h0} - e^{-h1}) / |d_y| in closed form (the tests' reference).
+template <Scalar T = float>
+struct HeightFog {
+    /// The precision of positions and densities.
+    using scalar_type = T;
+
+    Aabb<T> box{};          ///< where the fog is
+    T floor = T(0);         ///< the height of density `base`
+    T base = T(1);          ///< the density at `floor`
+    T scale_height = T(1);  ///< the height over which the density falls by e
+
+    /// base exp(-(p.y - floor) / scale_height) in the box, 0 outside.
+    [[nodiscard]] T density(const Vec3<T>& p) const noexcept { return box.contains(p) ? at_height(p.y) : T(0); }
+
+    /// The box.
+    [[nodiscard]] Aabb<T> bounds() const noexcept { return box; }
+
+    /// The density at the region's lowest height inside the box (the field falls with height).
+    [[nodiscard]] T max_over(const Aabb<T>& region) const noexcept
+    {
+        const T lo = std::max(region.lo.y, box.lo.y), hi = std::min(region.hi.y, box.hi.y);
+        if (!(lo <= hi)) return T(0);
+        return at_height(lo) * (T(1) + T(8) * std::numeric_limits<T>::epsilon()); // exp's rounding
+    }
+
+    /// The density at the greatest height of the region's part inside the box (0 if none).
+    [[nodiscard]] T min_over(const Aabb<T>& region) const noexcept
+    {
+        const Aabb<T> inside{component_max(region.lo, box.lo), component_min(region.hi, box.hi)};
+        if (inside.empty()) return T(0);
+        return at_height(inside.hi.y) * (T(1) - T(8) * std::numeric_limits<T>::epsilon());
+    }
+
+    /// Throws std::invalid_argument, naming the parameter, for a box that is not bounded, a
+    /// negative or non-finite base, or a scale height that is not positive.
+    void validate() const
+    {
+        if (!box.bounded()) detail::throw_invalid("HeightFog box must be bounded and non-empty, got ", detail::describe(box.lo), " to ", detail::describe(box.hi));
+        detail::require_finite("HeightFog floor", floor);
+        detail::require_non_negative("HeightFog base", base);
+        detail::require_positive("HeightFog scale_height", scale_height);
+    }
+
+private:
+    [[nodiscard]] T at_height(T y) const noexcept { return base * std::exp(-(y - floor) / scale_height); }
+};
+
+static_assert(DensityField<DensityGrid<float>> && DensityField<HeightFog<float>> && DensityField<HeightFog<double>>);
+
+} // namespace prism
+
 // ---- prism/medium/fog.hpp ----
 // Fog: a homogeneous medium that absorbs and scatters (haze, smoke of even density, murky
 // water), its coefficients per channel, its phase function Henyey-Greenstein's by default.
@@ -17672,6 +17920,338 @@ private:
 };
 
 static_assert(ScatteringMedium<Fog<float>> && ScatteringMedium<Fog<double>>);
+
+} // namespace prism
+
+// ---- prism/medium/majorant.hpp ----
+// The majorant grid: a coarse grid over a density field's box, each cell holding a bound
+// of the density anywhere in it (slightly more than the cell: a point the traversal's
+// rounding puts in the wrong cell is still bounded), and, where the field gives one, a
+// floor of the density in the cell (residual ratio tracking's control). Delta and ratio tracking
+// (medium/varying_fog.hpp) draw their tentative collisions cell by cell with each cell's
+// own majorant, so a thin region costs few draws and a dense corner does not make the
+// whole box expensive (the same scheme as pbrt-v4's majorant grid and Mitsuba's).
+
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace prism {
+
+/// Bounds of a density field over the cells of a grid on its box.
+template <Scalar T>
+class MajorantGrid {
+public:
+    /// The most cells along an axis.
+    static constexpr int max_cells = 256;
+
+    /// An empty grid (no box: every segment is clear).
+    MajorantGrid() = default;
+
+    /// `cells` cells along each axis over `field`'s box, each bounded by field.max_over
+    /// of the cell grown by a thousandth of a cell on every side (and floored by its
+    /// min_over, where the field has one; 0 otherwise). Throws
+    /// std::invalid_argument for cells outside [1, max_cells].
+    template <DensityField F>
+    MajorantGrid(const F& field, int cells) : box_(field.bounds()), n_(cells)
+    {
+        if (cells < 1 || cells > max_cells) detail::throw_invalid("majorant grid cells must be in [1, ", max_cells, "], got ", cells);
+        const Vec3<T> size = (box_.hi - box_.lo) / T(cells);
+        std::vector<Range> bounds(std::size_t(cells) * std::size_t(cells) * std::size_t(cells));
+        for (int z = 0; z < cells; ++z)
+            for (int y = 0; y < cells; ++y)
+                for (int x = 0; x < cells; ++x) {
+                    const Vec3<T> lo = box_.lo + Vec3<T>(T(x), T(y), T(z)) * size;
+                    const Aabb<T> cell{lo - T(1e-3) * size, lo + size + T(1e-3) * size};
+                    T floor = T(0);
+                    if constexpr (requires { field.min_over(cell); }) floor = std::min(field.min_over(cell), field.max_over(cell));
+                    bounds[index(x, y, z)] = {floor, field.max_over(cell)};
+                }
+        bounds_ = std::make_shared<const std::vector<Range>>(std::move(bounds));
+        for (int a = 0; a < 3; ++a) inverse_cell_[a] = T(cells) / (box_.hi[a] - box_.lo[a]);
+    }
+
+    /// The box the cells cover.
+    [[nodiscard]] const Aabb<T>& box() const noexcept { return box_; }
+    /// A cell's floor and bound of the density.
+    struct Range {
+        T floor; ///< at most the density anywhere in the cell
+        T bound; ///< at least the density anywhere in the cell
+    };
+
+    /// The floor and bound of cell (x, y, z).
+    [[nodiscard]] const Range& range(int x, int y, int z) const noexcept { return (*bounds_)[index(x, y, z)]; }
+    /// The bound of cell (x, y, z).
+    [[nodiscard]] T bound(int x, int y, int z) const noexcept { return range(x, y, z).bound; }
+    /// The cells along each axis.
+    [[nodiscard]] int cells() const noexcept { return n_; }
+
+    /// f(a, b, range) for each stretch [a, b] of `ray` within [t0, t1] (t1 may be infinite)
+    /// that crosses one cell, in order along the ray, with that cell's Range, until f
+    /// returns false. A ray that misses the box calls nothing: the density is 0 there.
+    template <class F>
+    void traverse(const Ray<T>& ray, T t0, T t1, F&& f) const
+    {
+        if (!bounds_) return;
+        const Interval<T> span = box_.clip(ray, {t0, t1});
+        if (span.empty()) return;
+        int cell[3], step[3];
+        T next[3], delta[3];
+        const Vec3<T> p = ray.at(span.min);
+        for (int a = 0; a < 3; ++a) {
+            const T u = (p[a] - box_.lo[a]) * inverse_cell_[a];
+            cell[a] = std::clamp(int(std::floor(u)), 0, n_ - 1);
+            const T d = ray.direction[a];
+            if (d > T(0)) {
+                step[a] = 1;
+                next[a] = (box_.lo[a] + T(cell[a] + 1) / inverse_cell_[a] - ray.origin[a]) / d;
+                delta[a] = T(1) / (inverse_cell_[a] * d);
+            } else if (d < T(0)) {
+                step[a] = -1;
+                next[a] = (box_.lo[a] + T(cell[a]) / inverse_cell_[a] - ray.origin[a]) / d;
+                delta[a] = T(-1) / (inverse_cell_[a] * d);
+            } else {
+                step[a] = 0;
+                next[a] = infinity<T>;
+                delta[a] = infinity<T>;
+            }
+        }
+        for (T a = span.min;;) {
+            const int axis = next[0] < next[1] ? (next[0] < next[2] ? 0 : 2) : (next[1] < next[2] ? 1 : 2);
+            const T b = std::min(std::max(next[axis], a), span.max);
+            if (!f(a, b, range(cell[0], cell[1], cell[2])) || b >= span.max) return;
+            cell[axis] += step[axis];
+            if (cell[axis] < 0 || cell[axis] >= n_) return;
+            next[axis] += delta[axis];
+            a = b;
+        }
+    }
+
+private:
+    [[nodiscard]] std::size_t index(int x, int y, int z) const noexcept
+    {
+        return (std::size_t(z) * std::size_t(n_) + std::size_t(y)) * std::size_t(n_) + std::size_t(x);
+    }
+
+    Aabb<T> box_{};
+    int n_ = 0;
+    Vec3<T> inverse_cell_{};
+    std::shared_ptr<const std::vector<Range>> bounds_;
+};
+
+} // namespace prism
+
+// ---- prism/medium/varying_fog.hpp ----
+// VaryingFog: a medium that absorbs and scatters with a density that varies from point
+// to point (smoke, clouds, ground fog, a simulation's grid): its coefficients per channel
+// at density 1, times a density field's value (medium/density.hpp).
+//
+// Nothing about it has a closed form, so it is sampled against a majorant (Woodcock,
+// Novak et al. 2014): tentative collisions at the rate of a bound mu of the extinction
+// (one per cell of its majorant grid), each one real with the chance of the extinction
+// there over mu and null otherwise.
+//  - A walker's flight (sample_flight) is spectral tracking (Kutz et al. 2017): at each
+//    tentative collision it scatters with a chance P_s, the mean over the channels of
+//    sigma_s against sigma_s + sigma_n (sigma_n = mu - sigma_t, the null part), weighed
+//    by what the walker carries in each; its weight takes sigma_s / (mu P_s) if it
+//    scatters and sigma_n / (mu (1 - P_s)) if not, so every channel's expectation is the
+//    collision integral's, absorption carried in the weight. In a grey fog that does not
+//    absorb the weights stay 1 (delta tracking).
+//  - Transmittance is residual ratio tracking (Novak et al. 2014): in each cell, the
+//    exact transmittance of the cell's floor of the density (the control), times the
+//    product of 1 - (sigma_t - control) / mu' over tentative collisions at the rate mu'
+//    of the residual's bound, with Russian roulette once it falls below 0.1 in every
+//    channel. Each estimate is unbiased, not exact; where the density is constant over a
+//    cell it is exact (plain ratio tracking there is the indicator of no collision, as
+//    noisy as a coin). Where no stream is given (shadow rays, the beam
+//    estimate, Whitted's marching), the stream is seeded by a hash of the segment, so a
+//    render stays the same bits for any thread count, crop or split.
+
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+namespace prism {
+
+/// A scattering medium whose coefficients are `absorption` and `scattering` (sigma_a,
+/// sigma_s per unit length at density 1, per channel) times the density of `field` at
+/// each point; `phase` the phase function; tracked against a majorant grid of `cells`
+/// cells along each axis over the field's box (more cells: tighter bounds, more steps).
+template <DensityField Field, PhaseFunction Phase = HenyeyGreenstein<typename Field::scalar_type>>
+class VaryingFog {
+public:
+    /// The precision of positions and coefficients.
+    using scalar_type = typename Field::scalar_type;
+    /// Shorthand for scalar_type.
+    using T = scalar_type;
+    /// Its phase function's type.
+    using phase_type = Phase;
+    /// Light scatters in it.
+    static constexpr bool scatters = true;
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad field, a negative or
+    /// non-finite coefficient, a bad phase function, or cells outside [1, 256].
+    VaryingFog(Field field, const Rgb<T>& sigma_a, const Rgb<T>& sigma_s, Phase scatters_by = {}, int cells = 16)
+        : phase(scatters_by), field_(std::move(field)), absorption_(sigma_a), scattering_(sigma_s)
+    {
+        validate();
+        majorants_ = MajorantGrid<T>(field_, cells);
+        most_ = max_component(absorption_ + scattering_);
+        // The trackers step from each cell's entry by draws of mean 1 / mu: that must
+        // stay well above the precision of a distance across the box, or they would stall.
+        T densest = T(0);
+        for (int z = 0; z < cells; ++z)
+            for (int y = 0; y < cells; ++y)
+                for (int x = 0; x < cells; ++x) densest = std::max(densest, majorants_.bound(x, y, z));
+        const Aabb<T> box = field_.bounds();
+        const T across = max_component(box.hi - box.lo), mu = densest * most_;
+        if (!(mu * across * std::numeric_limits<T>::epsilon() <= T(1) / T(16)))
+            detail::throw_invalid("VaryingFog is too dense for its precision: its greatest extinction ", mu, " per unit length over a box ", across,
+                                  " across leaves a mean free path below 16 steps of its precision there");
+    }
+
+    Phase phase; ///< where scattered light goes
+
+    /// The density field.
+    [[nodiscard]] const Field& field() const noexcept { return field_; }
+    /// sigma_a at density 1.
+    [[nodiscard]] const Rgb<T>& absorption() const noexcept { return absorption_; }
+    /// sigma_s at density 1.
+    [[nodiscard]] const Rgb<T>& scattering() const noexcept { return scattering_; }
+    /// The majorant grid the trackers step through.
+    [[nodiscard]] const MajorantGrid<T>& majorants() const noexcept { return majorants_; }
+    /// Where the medium is: outside this box it is clear.
+    [[nodiscard]] Aabb<T> bounds() const noexcept { return field_.bounds(); }
+
+    /// sigma_s at a point.
+    [[nodiscard]] Rgb<T> scattering_at(const Vec3<T>& p) const noexcept { return scattering_ * field_.density(p); }
+
+    /// An unbiased estimate of the transmittance along `ray` (unit direction) from its
+    /// origin to t_max (may be infinite), by residual ratio tracking with `rng`.
+    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max, Pcg32& rng) const noexcept
+    {
+        Rgb<T> tr{T(1)};
+        const Rgb<T> sigma_t = absorption_ + scattering_;
+        majorants_.traverse(ray, T(0), t_max, [&](T a, T b, const typename MajorantGrid<T>::Range& range) {
+            if (range.floor > T(0)) {
+                const Rgb<T> depth = sigma_t * (range.floor * (b - a));
+                tr *= Rgb<T>(std::exp(-depth.x), std::exp(-depth.y), std::exp(-depth.z));
+                if (!(max_component(tr) > T(0))) return false;
+            }
+            const T mu = (range.bound - range.floor) * most_;
+            if (!(mu > T(0))) return true;
+            for (T s = T(0);;) { // (from the cell's entry: s advances while t = a + s may not, far from the origin)
+                s += -std::log1p(-rng.uniform<T>()) / mu;
+                if (!(s < b - a)) return true;
+                const T residual = checked_density(ray.at(a + s), range.bound) - range.floor;
+                tr *= component_max(Rgb<T>(T(1)) - sigma_t * (residual / mu), Rgb<T>(T(0)));
+                if (max_component(tr) < T(0.1)) {
+                    if (rng.uniform<T>() < T(0.5)) {
+                        tr = Rgb<T>(T(0));
+                        return false;
+                    }
+                    tr *= T(2);
+                }
+            }
+        });
+        return tr;
+    }
+
+    /// The same estimate with a stream seeded by the segment itself (its origin,
+    /// direction and t_max): the same segment always gives the same estimate.
+    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
+    {
+        Pcg32 rng = stream_of(ray, t_max);
+        return transmittance(ray, t_max, rng);
+    }
+
+    /// Where a walker along `ray` (unit direction, from its origin) carrying `power` next
+    /// scatters before t_max (may be infinite), or that it reaches t_max, and the weight
+    /// its power takes either way: spectral tracking (see the file's comment).
+    [[nodiscard]] FreeFlight<T> sample_flight(const Ray<T>& ray, T t_max, const Rgb<T>& power, Pcg32& rng) const noexcept
+    {
+        const Rgb<T> sigma_t = absorption_ + scattering_;
+        const T carried = power.x + power.y + power.z;
+        const Rgb<T> share = carried > T(0) ? power / carried : Rgb<T>(T(1) / T(3));
+        Rgb<T> weight{T(1)};
+        FreeFlight<T> out{t_max, weight, false};
+        bool ended = false;
+        majorants_.traverse(ray, T(0), t_max, [&](T a, T b, const typename MajorantGrid<T>::Range& range) {
+            const T mu = range.bound * most_;
+            if (!(mu > T(0))) return true;
+            for (T s = T(0);;) { // (as in transmittance)
+                s += -std::log1p(-rng.uniform<T>()) / mu;
+                if (!(s < b - a)) return true;
+                const T t = a + s;
+                const T density = checked_density(ray.at(t), range.bound);
+                const Rgb<T> scatter = scattering_ * density;
+                const Rgb<T> null = component_max(Rgb<T>(mu) - sigma_t * density, Rgb<T>(T(0)));
+                const Rgb<T> history = share * weight;
+                const T toward_scatter = dot(history, scatter), toward_null = dot(history, null);
+                if (!(toward_scatter + toward_null > T(0))) { // absorbed in every channel it carries
+                    out = {t_max, Rgb<T>(T(0)), false};
+                    ended = true;
+                    return false;
+                }
+                const T p_scatter = toward_scatter / (toward_scatter + toward_null);
+                if (rng.uniform<T>() < p_scatter) {
+                    out = {t, weight * scatter / (mu * p_scatter), true};
+                    ended = true;
+                    return false;
+                }
+                weight *= null / (mu * (T(1) - p_scatter));
+            }
+        });
+        if (!ended) out.weight = weight;
+        return out;
+    }
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad field, a negative or
+    /// non-finite coefficient or a bad phase function.
+    void validate() const
+    {
+        field_.validate();
+        detail::require_non_negative("VaryingFog absorption", absorption_);
+        detail::require_non_negative("VaryingFog scattering", scattering_);
+        phase.validate();
+    }
+
+private:
+    /// The density at p, which the cell's bound must not be below (a field whose
+    /// max_over lies would bias every estimate: caught where assertions are on).
+    [[nodiscard]] T checked_density(const Vec3<T>& p, T bound) const noexcept
+    {
+        const T density = field_.density(p);
+        PRISM_ASSERT(density <= bound * (T(1) + T(1e-4)) + std::numeric_limits<T>::min());
+        return density;
+    }
+
+    /// A stream from the bits of a segment (splitmix64 over them).
+    [[nodiscard]] static Pcg32 stream_of(const Ray<T>& ray, T t_max) noexcept
+    {
+        std::uint64_t h = 0x9e3779b97f4a7c15ULL;
+        const auto mix = [&](T value) {
+            std::uint64_t z = h + std::uint64_t(std::bit_cast<std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>(value)) + 0x9e3779b97f4a7c15ULL;
+            z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+            z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+            h = z ^ (z >> 31);
+        };
+        for (int a = 0; a < 3; ++a) mix(ray.origin[a]), mix(ray.direction[a]);
+        mix(t_max);
+        return Pcg32(h, h >> 1);
+    }
+
+    Field field_;
+    Rgb<T> absorption_;
+    Rgb<T> scattering_;
+    MajorantGrid<T> majorants_{};
+    T most_ = T(0);
+};
 
 } // namespace prism
 

@@ -387,6 +387,29 @@ TEST_CASE("a volumetric caustic through a frosted ball in haze: the beam estimat
     CHECK(mapped / traced == doctest::Approx(1).epsilon(0.07).scale(0));
 }
 
+/// The photon mapper's volume furnace: a box of fog from -1 to 1 under a uniform sky,
+/// 2 million global photons followed up to 1000 bounces, a volume radius of 0.1; the mean
+/// of 81 parallel camera rays along +x starting at x = -3, on a grid of 9 x 9 from
+/// (y0, z0) with steps dy and dz.
+template <class Air>
+Rgb<double> photon_mapper_volume_furnace(const Air& air, float y0, float dy, float z0, float dz, std::uint64_t seed)
+{
+    using T = float;
+    // (The scene's one object is tiny and just above the box: photons are aimed at the scene and the fog together.)
+    const auto sky = Scene{Lights{EnvironmentLight<T>{}}, Object{Sphere<T>({0, 1.2f, 0}, 1e-3f), Diffuse<T>{}}};
+    typename PhotonMapper<std::remove_cvref_t<decltype(sky)>, Air>::Config config;
+    config.tracing.global_photons = 2000000;
+    config.tracing.caustic_photons = 0;
+    config.tracing.max_bounces = 1000;
+    config.gather_rays = 0;
+    config.volume_radius = 0.1f;
+    const PhotonMapper mapper(sky, config, air);
+    Rgb<double> sum(0);
+    Pcg32 rng(5, seed);
+    for (int k = 0; k < 81; ++k) sum += Rgb<double>(mapper.radiance(Ray<T>{{-3, y0 + dy * T(k % 9), z0 + dz * T(k / 9)}, {1, 0, 0}}, rng));
+    return sum / 81.0;
+}
+
 TEST_CASE("the photon mapper's volume furnace: a box of fog that does not absorb, under a uniform sky, reads the sky's radiance")
 {
     // Radiance 1 from every direction around a box of coloured fog that scatters but
@@ -396,24 +419,32 @@ TEST_CASE("the photon mapper's volume furnace: a box of fog that does not absorb
     // hundreds of scatterings in the densest channel (optical depth 8 across): at the
     // default 16 bounces it read 7 % low there. Measured: 0.998, 0.993, 1.002 (2 million
     // photons; the beam estimates' noise about 0.5 %); 1 % held.
-    using T = float;
-    // (The scene's one object is tiny and just above the box: photons are aimed at the scene and the fog together.)
-    const auto sky = Scene{Lights{EnvironmentLight<T>{}}, Object{Sphere<T>({0, 1.2f, 0}, 1e-3f), Diffuse<T>{}}};
-    using Air = FilledAir<Fog<T>>;
-    const Air air{.medium = {.scattering = {1.0f, 2.0f, 4.0f}, .phase = {.g = 0.6f}}, .region = {Vec3<T>(-1), Vec3<T>(1)}};
-    PhotonMapper<std::remove_cvref_t<decltype(sky)>, Air>::Config config;
-    config.tracing.global_photons = 2000000;
-    config.tracing.caustic_photons = 0;
-    config.tracing.max_bounces = 1000;
-    config.gather_rays = 0;
-    config.volume_radius = 0.1f;
-    const PhotonMapper mapper(sky, config, air);
-    Rgb<double> sum(0);
-    Pcg32 rng(5, 6);
-    for (int k = 0; k < 81; ++k) sum += Rgb<double>(mapper.radiance(Ray<T>{{-3, -0.6f + 0.15f * T(k % 9), -0.6f + 0.15f * T(k / 9)}, {1, 0, 0}}, rng));
+    using Air = FilledAir<Fog<float>>;
+    const Air air{.medium = {.scattering = {1.0f, 2.0f, 4.0f}, .phase = {.g = 0.6f}}, .region = {Vec3<float>(-1), Vec3<float>(1)}};
+    const Rgb<double> mean = photon_mapper_volume_furnace(air, -0.6f, 0.15f, -0.6f, 0.15f, 6);
     for (int c = 0; c < 3; ++c) {
         CAPTURE(c);
-        MESSAGE("channel ", c, ": ", sum[c] / 81);
-        CHECK(sum[c] / 81 == doctest::Approx(1).epsilon(0.01).scale(0));
+        MESSAGE("channel ", c, ": ", mean[c]);
+        CHECK(mean[c] == doctest::Approx(1).epsilon(0.01).scale(0));
+    }
+}
+
+TEST_CASE("the photon mapper's volume furnace in ground fog of varying density reads the sky's radiance, to 2 %")
+{
+    // As above, the box filled with ground fog (density 2.5 at the bottom, thinning by e
+    // every 0.5 up): photons fly by spectral tracking, camera rays see through residual
+    // ratio tracking. (Plain ratio tracking read 0.93 here in a grey fog of constant
+    // density: right on average, but each camera ray's transmittance a coin toss.)
+    // Measured 1.011, 1.014, 1.018 (with a radius of 0.05: 1.008, 1.011, 1.014; of 0.2:
+    // 0.993, 0.996, 1.001): the beam estimate blurs the density's gradient over its
+    // radius, and its noise is about 0.5 %. The same fog of constant density reads
+    // 1.002, 1.002, 1.000. 2 % is held.
+    const HeightFog<float> ground{.box = {Vec3<float>(-1), Vec3<float>(1)}, .floor = -1, .base = 2.5f, .scale_height = 0.5f};
+    const FilledAir<VaryingFog<HeightFog<float>>> air{.medium = VaryingFog(ground, Rgb<float>(0), Rgb<float>(0.5f, 1.0f, 2.0f), {.g = 0.6f})};
+    const Rgb<double> mean = photon_mapper_volume_furnace(air, -0.9f, 0.2f, -0.6f, 0.15f, 7);
+    for (int c = 0; c < 3; ++c) {
+        CAPTURE(c);
+        MESSAGE("channel ", c, ": ", mean[c]);
+        CHECK(mean[c] == doctest::Approx(1).epsilon(0.02).scale(0));
     }
 }

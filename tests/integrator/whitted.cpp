@@ -342,6 +342,25 @@ TEST_CASE("Whitted's single scattering in fog, marched with jittered steps, is t
     CHECK(in_fog.radiance(look).x == doctest::Approx(clear_air.radiance(look).x * std::exp(-2.0)).epsilon(1e-5).scale(0));
 }
 
+TEST_CASE("Whitted's single scattering in fog of varying density (constant in a box, tracked as varying) is the airlight integral over the box, to 0.5 %")
+{
+    // tests/airlight.hpp's fog as a VaryingFog of density 1 in a box 120 wide: its
+    // transmittance by ratio tracking, both along the ray and toward the light. The ray
+    // leaves the box at x = 60, 62 from its origin; the light lies inside.
+    const auto scene = test::airlight_scene();
+    const VaryingFog fog(DensityGrid<float>(2, 2, 2, {Vec3<float>(-60), Vec3<float>(60)}, std::vector<float>(8, 1.0f)),
+                         Rgb<float>(test::airlight_absorption), Rgb<float>(test::airlight_scattering), {.g = float(test::airlight_g)});
+    const Whitted whitted(scene, {.march_steps = 64}, FilledAir<decltype(fog)>{.medium = fog});
+    Pcg32 rng(4, 3);
+    Rgb<double> sum{0};
+    const int n = 20000;
+    for (int i = 0; i < n; ++i) sum += Rgb<double>(whitted.radiance(test::airlight_ray(), rng));
+    for (int c = 0; c < 3; ++c) {
+        CAPTURE(c);
+        CHECK(sum[c] / n == doctest::Approx(test::airlight_along(c, {-2, 0, 0}, {1, 0, 0}, {0, 1, 0}, 62.0)).epsilon(0.005).scale(0));
+    }
+}
+
 TEST_CASE("Whitted's airlight: the airlight integral to 0.01 % with 16 nodes and no random numbers, a spot light's falloff within it; no shadows")
 {
     // tests/airlight.hpp's scene and its quadrature, summed by Gauss-Legendre in the angle

@@ -268,12 +268,13 @@ private:
             // function toward the camera and the transmittance to it, over pi r^2.
             const Vec3<T> d = normalize(segment.direction);
             const T t_max = hit ? hit->crossing.t * length(segment.direction) : infinity<T>;
-            for_scattering_medium_along(*scene_, air_, media, Ray<T>{segment.origin, d}, t_max, [&](const auto& medium, T t0, T t1) {
-                parts *= medium.transmittance(t1 - t0);
+            const Ray<T> unit{segment.origin, d};
+            for_scattering_medium_along(*scene_, air_, media, unit, t_max, [&](const auto& medium, T t0, T t1) {
+                parts *= transmittance_along(medium, unit, t0, t1);
                 const Vec3<float> df(d);
                 Rgb<float> caustic(0.0f), other(0.0f);
                 maps_.volume.near_beam(Vec3<float>(segment.origin), df, float(t0), float(t1), config_.volume_radius, [&](const Photon& photon, float t) {
-                    const Rgb<float> light = Rgb<float>(medium.transmittance(T(t) - t0)) * float(medium.phase.value(T(dot(photon.toward_source(), df)))) * photon.power();
+                    const Rgb<float> light = Rgb<float>(transmittance_along(medium, unit, t0, T(t))) * float(medium.phase.value(T(dot(photon.toward_source(), df)))) * photon.power();
                     ((photon.flags & Photon::caustic) != 0 ? caustic : other) += light;
                 });
                 const float disk = pi<float> * config_.volume_radius * config_.volume_radius;

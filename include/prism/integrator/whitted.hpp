@@ -149,7 +149,7 @@ private:
             const T scale = length(ray.direction);
             const Ray<T> unit{ray.origin, ray.direction / scale};
             for_scattering_medium_along(*scene_, air_, media, unit, hit ? hit->crossing.t * scale : infinity<T>, [&](const auto& medium, T t0, T t1) {
-                radiance = radiance * medium.transmittance(t1 - t0) + single_scattering(medium, unit, t0, t1, media, jitter...);
+                radiance = radiance * transmittance_along(medium, unit, t0, t1) + single_scattering(medium, unit, t0, t1, media, jitter...);
             });
             return radiance;
         }
@@ -248,24 +248,32 @@ private:
     [[nodiscard]] Rgb<T> single_scattering(const Md& medium, const Ray<T>& ray, T t0, T t1, const MediumStack& media, Jitter... jitter) const noexcept
     {
         // The airlight of the lights at a point, in the air; the rest marched.
-        const bool airlight = config_.in_scattering == InScattering::airlight && media.empty();
+        // (A medium that varies is marched.)
+        const bool airlight = uniform_medium<Md> && config_.in_scattering == InScattering::airlight && media.empty();
         Rgb<T> sum{T(0)};
-        if (airlight) {
-            bool all = true;
-            scene_->for_each_light([&]<class L>(const L& light) {
-                if constexpr (has_airlight<L>) sum += airlight_of(light, medium, ray, t0, t1);
-                else all = false;
-            });
-            if (all) return sum;
-        }
-        if (!(t1 < infinity<T>)) {
-            // (A clear channel scatters nothing: only the channels that scatter count.)
-            const Rgb<T> sigma_t = medium.extinction();
-            T thinnest = infinity<T>;
-            for (int c = 0; c < 3; ++c)
-                if (sigma_t[c] > T(0)) thinnest = std::min(thinnest, sigma_t[c]);
-            if (!(thinnest < infinity<T>)) return Rgb<T>(T(0));
-            t1 = t0 + T(10) / thinnest;
+        if constexpr (uniform_medium<Md>) {
+            if (airlight) {
+                bool all = true;
+                scene_->for_each_light([&]<class L>(const L& light) {
+                    if constexpr (has_airlight<L>) sum += airlight_of(light, medium, ray, t0, t1);
+                    else all = false;
+                });
+                if (all) return sum;
+            }
+            if (!(t1 < infinity<T>)) {
+                // (A clear channel scatters nothing: only the channels that scatter count.)
+                const Rgb<T> sigma_t = medium.extinction();
+                T thinnest = infinity<T>;
+                for (int c = 0; c < 3; ++c)
+                    if (sigma_t[c] > T(0)) thinnest = std::min(thinnest, sigma_t[c]);
+                if (!(thinnest < infinity<T>)) return Rgb<T>(T(0));
+                t1 = t0 + T(10) / thinnest;
+            }
+        } else {
+            // Only where the medium is.
+            const Interval<T> inside = medium.bounds().clip(ray, {t0, t1});
+            if (inside.empty()) return Rgb<T>(T(0));
+            t0 = inside.min, t1 = inside.max;
         }
         Pcg32* rng = stream_of(jitter...);
         const LightSampling sampling{rng, config_.area_light_grid};
@@ -284,7 +292,7 @@ private:
                     arriving += T(medium.phase.value(dot(ray.direction, sample.wi))) * v * air * sample.irradiance;
                 });
             });
-            marched += medium.transmittance(s - t0) * medium.scattering_at(p) * arriving;
+            marched += transmittance_along(medium, ray, t0, s) * medium.scattering_at(p) * arriving;
         }
         return sum + marched * step;
     }

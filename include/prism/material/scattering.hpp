@@ -303,7 +303,7 @@ constexpr void attenuate_inside(const M& material, const Crossing<typename M::sc
                                 const Ray<typename M::scalar_type>& ray, Rgb<typename M::scalar_type>& light) noexcept
 {
     if constexpr (M::transmits) {
-        if (!hit.entering) light *= material.medium().transmittance(hit.t * length(ray.direction));
+        if (!hit.entering) light *= transmittance_along(material.medium(), ray, typename M::scalar_type(0), hit.t);
     }
 }
 
@@ -319,15 +319,23 @@ constexpr void attenuate_shadow_ray(const M& material, const Crossings<typename 
                                     Rgb<typename M::scalar_type>& light) noexcept
 {
     using T = typename M::scalar_type;
+    using Interior = std::remove_cvref_t<decltype(material.medium())>;
     bool inside = crossings.inside_at_start;
     T previous = T(0), inside_length = T(0);
+    const auto stretch = [&](T t) {
+        if constexpr (uniform_medium<Interior>)
+            inside_length += t - previous;
+        else
+            light *= transmittance_along(material.medium(), ray, previous, t);
+    };
     for (const Crossing<T>& c : crossings) {
-        if (inside) inside_length += c.t - previous;
+        if (inside) stretch(c.t);
         inside = c.entering;
         previous = c.t;
     }
-    if (inside) inside_length += t_max - previous;
-    if (inside_length > T(0)) light *= material.medium().transmittance(inside_length * length(ray.direction));
+    if (inside) stretch(t_max);
+    if constexpr (uniform_medium<Interior>)
+        if (inside_length > T(0)) light *= material.medium().transmittance(inside_length * length(ray.direction));
     for (std::size_t k = 0; k < crossings.size(); ++k) light *= material.transmission_tint();
 }
 

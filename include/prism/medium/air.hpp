@@ -40,6 +40,18 @@ struct FilledAir {
     M medium{}; ///< what fills the region
     Aabb<scalar_type> region = Aabb<scalar_type>::universe(); ///< where the medium is (a box; everywhere by default)
 
+    /// Where the air is not clear: the region, within the medium's own box where it has
+    /// one (a medium of varying density).
+    [[nodiscard]] Aabb<scalar_type> bounds() const noexcept
+    {
+        if constexpr (requires { medium.bounds(); }) {
+            const Aabb<scalar_type> box = medium.bounds();
+            return {component_max(region.lo, box.lo), component_min(region.hi, box.hi)};
+        } else {
+            return region;
+        }
+    }
+
     /// Throws std::invalid_argument, naming the parameter, for a bad medium or an empty region.
     void validate() const
     {

@@ -18,14 +18,34 @@
 namespace prism {
 
 /// A medium in which light travels in straight lines and is attenuated along the way:
-/// `transmittance(distance)` is the fraction of light, per channel, left after that
-/// distance.
+/// either the same everywhere, `transmittance(distance)` the fraction of light per
+/// channel left after that distance, or varying from point to point,
+/// `transmittance(ray, t_max)` an unbiased estimate of it along ray (unit direction) from
+/// its origin to t_max. transmittance_along asks either.
 template <class X>
-concept Medium = requires(const X& medium, typename X::scalar_type distance) {
+concept Medium = requires(const X& medium, const Ray<typename X::scalar_type>& ray, typename X::scalar_type distance) {
     requires Scalar<typename X::scalar_type>;
-    { medium.transmittance(distance) } -> std::same_as<Rgb<typename X::scalar_type>>;
+    requires requires { { medium.transmittance(distance) } -> std::same_as<Rgb<typename X::scalar_type>>; } ||
+                 requires { { medium.transmittance(ray, distance) } -> std::same_as<Rgb<typename X::scalar_type>>; };
     medium.validate();
 };
+
+/// Whether medium type X is the same everywhere (its transmittance a function of distance alone).
+template <class X>
+inline constexpr bool uniform_medium = requires(const X& medium, typename X::scalar_type distance) { medium.transmittance(distance); };
+
+/// What `medium` lets through along [t0, t1] of `ray` (any direction length; t1 may be
+/// infinite, t0 not): exp(-sigma_t length) in a uniform medium, the medium's own estimate
+/// along the stretch in one that varies.
+template <Medium M, Scalar T>
+[[nodiscard]] Rgb<T> transmittance_along(const M& medium, const Ray<T>& ray, T t0, T t1) noexcept
+{
+    const T speed = length(ray.direction);
+    if constexpr (uniform_medium<M>)
+        return medium.transmittance((t1 - t0) * speed);
+    else
+        return medium.transmittance(Ray<T>{ray.at(t0), ray.direction / speed}, (t1 - t0) * speed);
+}
 
 /// Where a walker crossing a scattering medium next scatters, or that it reached the end
 /// of its segment, and the weight its power takes (the medium's transmittance to there,

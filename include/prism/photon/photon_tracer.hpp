@@ -118,11 +118,11 @@ public:
         Pcg32 scrambles(config.seed, 0xfeed5eedULL);
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
-        // A sphere around everything bounded, the air's medium included where its region
-        // is bounded: parallel photons start outside it.
+        // A sphere around everything bounded, the air's medium included where it is
+        // bounded: parallel photons start outside it.
         Aabb<T> lit = scene.bounds();
         if constexpr (air_scatters<Air>) {
-            if (air.region.bounded()) lit = lit.merged(air.region);
+            if (air.bounds().bounded()) lit = lit.merged(air.bounds());
         }
         if (!lit.empty()) {
             scene_sphere_ = lit.bounding_sphere();

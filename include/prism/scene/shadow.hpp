@@ -69,13 +69,12 @@ template <class SceneT, Scalar T>
 [[nodiscard]] Rgb<T> transmittance_by_priority(const SceneT& scene, const Ray<T>& ray, T t_max, const ShadowBoundaries<T>& boundaries) noexcept
 {
     Rgb<T> tr{T(1)};
-    const T speed = length(ray.direction);
     MediumStack media;
     T previous = T(0);
     const auto attenuate_to = [&](T t) {
         if (const Inside* in = media.top()) {
             scene.visit_material(in->slot, in->index, [&]<class N>(const N& material) {
-                if constexpr (transmits<N>) tr *= material.medium().transmittance((t - previous) * speed);
+                if constexpr (transmits<N>) tr *= transmittance_along(material.medium(), ray, previous, t);
             });
         }
         previous = t;

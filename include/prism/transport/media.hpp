@@ -41,7 +41,7 @@ void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& m
     if (const Inside* in = media.top()) {
         scene.visit_material(in->slot, in->index, [&]<class N>(const N& medium_material) {
             // (A medium that scatters was crossed by fly_through_medium, its weight taken.)
-            if constexpr (N::transmits && !has_scattering_interior<N>) light *= medium_material.medium().transmittance(hit.t * length(ray.direction));
+            if constexpr (N::transmits && !has_scattering_interior<N>) light *= transmittance_along(medium_material.medium(), ray, typename M::scalar_type(0), hit.t);
         });
     } else {
         attenuate_inside(material, hit, ray, light);
@@ -62,7 +62,7 @@ void for_scattering_medium_along(const SceneT& scene, const Air& air, const Medi
             });
         }
     } else if constexpr (air_scatters<Air>) {
-        const Interval<T> inside = air.region.clip(segment, {T(0), t_max});
+        const Interval<T> inside = air.bounds().clip(segment, {T(0), t_max});
         if (!inside.empty()) f(air.medium, inside.min, inside.max);
     }
 }
@@ -91,9 +91,9 @@ template <class Air, Scalar T>
 [[nodiscard]] Rgb<T> air_transmittance(const Air& air, const Ray<T>& ray, T distance) noexcept
 {
     if constexpr (air_scatters<Air>) {
-        const Interval<T> inside = air.region.clip(ray, {T(0), distance});
+        const Interval<T> inside = air.bounds().clip(ray, {T(0), distance});
         if (inside.empty()) return Rgb<T>(T(1));
-        return air.medium.transmittance(inside.max - inside.min);
+        return transmittance_along(air.medium, ray, inside.min, inside.max);
     } else {
         (void)air, (void)ray, (void)distance;
         return Rgb<T>(T(1));
