@@ -9527,11 +9527,12 @@ struct WalkLimits {
 /// limits.roulette_depth surfaces. on_medium(medium, WalkMediumVertex) is called where the
 /// path scatters in a medium (a scene or air with none never compiles it) and returns
 /// whether the walk goes on; such a vertex counts as a surface toward the limits.
+/// `start`: the transmissive objects the ray starts inside (a camera's: Scene::media_at).
 template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters,
           class OnMedium = IgnoreMedia>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
                  Rgb<typename SceneT::scalar_type> power, Pcg32& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
-                 OnEmitter&& on_emitter = {}, OnMedium&& on_medium = {})
+                 OnEmitter&& on_emitter = {}, OnMedium&& on_medium = {}, MediumStack start = {})
 {
     static_assert(!(Air::curved && air_scatters<Air>), "air that both curves rays and scatters light is not supported yet");
     using T = typename SceneT::scalar_type;
@@ -9539,7 +9540,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
     int diffuse_bounces = 0, surface_bounces = 0;
     T travelled = T(0);
     T wavelength = T(0); // white until a dispersive interface splits it
-    MediumStack media;   // the transmissive objects the path is inside of
+    MediumStack media = start; // the transmissive objects the path is inside of
     Vec3<T> last_point = ray.origin;
     T last_pdf = T(0);
     for (int bounce = 0; bounce <= limits.max_bounces; ++bounce) {
@@ -12143,6 +12144,29 @@ public:
         return tr;
     }
 
+    /// The objects whose interior scatters light (a Fog's, a VaryingFog's) that hold `p`,
+    /// entered in key order by their priorities: the media a camera at p starts in. Empty
+    /// in a scene without such objects, at no cost. (A camera inside glass that only
+    /// absorbs needs none: its ray's first crossing leaves the glass, and is attenuated so.)
+    [[nodiscard]] MediumStack media_at(const Vec3<T>& p) const noexcept
+    {
+        MediumStack media;
+        if constexpr (has_scattering_media) {
+            const Ray<T> probe{p, normalize(Vec3<T>(T(0.5377), T(0.7631), T(-0.3584)))}; // any direction
+            for (const detail::ObjectKey& key : glass_)
+                dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) {
+                    if constexpr (has_scattering_interior<typename SlotAt<I>::material_type>) {
+                        const auto& object = object_at<I>(key.index);
+                        if (object.shape.template crossings<false>(probe, {T(0), infinity<T>}).inside_at_start)
+                            media = media.entered({key.slot, key.index, nesting_priority(object.material)});
+                    }
+                });
+        } else {
+            (void)p;
+        }
+        return media;
+    }
+
     /// Call f(material) with the material of object `index` of slot `slot`, with its
     /// static type.
     template <class F>
@@ -13026,7 +13050,8 @@ public:
                         });
                         sum += at.power * gathered;
                         return go_on;
-                    });
+                    },
+                    scene_->media_at(ray.origin));
         return sum;
     }
 
@@ -13303,7 +13328,7 @@ public:
 
     /// The radiance along a camera ray by where its light came from last: the lights by
     /// shadow rays (and the background), the caustic map, the indirect estimate.
-    [[nodiscard]] LightParts<T> radiance_parts(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), {}); }
+    [[nodiscard]] LightParts<T> radiance_parts(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), scene_->media_at(ray.origin)); }
 
     /// The scene and the air its camera rays start in (render_layers' surface layers).
     [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
@@ -14015,7 +14040,7 @@ public:
     /// (nothing else is random).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept
     {
-        if constexpr (SceneT::has_lights_with_extent || has_media) return trace(ray, 0, Rgb<T>(T(1)), T(0), {}, &rng);
+        if constexpr (SceneT::has_lights_with_extent || has_media) return trace(ray, 0, Rgb<T>(T(1)), T(0), scene_->media_at(ray.origin), &rng);
         else return (void)rng, trace(ray, 0, Rgb<T>(T(1)), T(0), {});
     }
     /// Radiance arriving along the ray, with area lights sampled from a fixed stream.

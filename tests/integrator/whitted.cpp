@@ -361,6 +361,27 @@ TEST_CASE("Whitted's single scattering in fog of varying density (constant in a 
     }
 }
 
+TEST_CASE("regression: Whitted's camera inside a ball of fog sees the light the fog scatters: the airlight integral to the ball's surface, to 0.5 %")
+{
+    // tests/airlight.hpp's fog inside a ball of radius 50 (a surface that does not
+    // refract) about the light and the camera; the ray leaves it 50 + 2 = 52 from its
+    // origin (the light's path from every point of the ray stays inside). Before
+    // Scene::media_at the camera started in no object and saw only the sphere's far side
+    // through the fog's transmittance: 0.
+    using Foggy = Dielectric<float, ExactFresnel, Fog<float>>;
+    const auto scene = Scene{Lights{PointLight<float>{.position = {0, 1, 0}, .intensity = Rgb<float>(1)}},
+                             Object{Sphere<float>({0, 0, 0}, 50), Foggy{.ior = 1, .interior = test::airlight_fog().medium}}};
+    const Whitted whitted(scene, {.march_steps = 64});
+    Pcg32 rng(4, 4);
+    Rgb<double> sum{0};
+    const int n = 20000;
+    for (int i = 0; i < n; ++i) sum += Rgb<double>(whitted.radiance(test::airlight_ray(), rng));
+    for (int c = 0; c < 3; ++c) {
+        CAPTURE(c);
+        CHECK(sum[c] / n == doctest::Approx(test::airlight_along(c, {-2, 0, 0}, {1, 0, 0}, {0, 1, 0}, 52.0)).epsilon(0.005).scale(0));
+    }
+}
+
 TEST_CASE("Whitted's airlight: the airlight integral to 0.01 % with 16 nodes and no random numbers, a spot light's falloff within it; no shadows")
 {
     // tests/airlight.hpp's scene and its quadrature, summed by Gauss-Legendre in the angle

@@ -175,7 +175,8 @@ public:
                         });
                         sum += at.power * gathered;
                         return go_on;
-                    });
+                    },
+                    scene_->media_at(ray.origin));
         return sum;
     }
 

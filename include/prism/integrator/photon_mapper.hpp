@@ -216,7 +216,7 @@ public:
 
     /// The radiance along a camera ray by where its light came from last: the lights by
     /// shadow rays (and the background), the caustic map, the indirect estimate.
-    [[nodiscard]] LightParts<T> radiance_parts(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), {}); }
+    [[nodiscard]] LightParts<T> radiance_parts(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), scene_->media_at(ray.origin)); }
 
     /// The scene and the air its camera rays start in (render_layers' surface layers).
     [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }

@@ -101,7 +101,7 @@ public:
     /// (nothing else is random).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept
     {
-        if constexpr (SceneT::has_lights_with_extent || has_media) return trace(ray, 0, Rgb<T>(T(1)), T(0), {}, &rng);
+        if constexpr (SceneT::has_lights_with_extent || has_media) return trace(ray, 0, Rgb<T>(T(1)), T(0), scene_->media_at(ray.origin), &rng);
         else return (void)rng, trace(ray, 0, Rgb<T>(T(1)), T(0), {});
     }
     /// Radiance arriving along the ray, with area lights sampled from a fixed stream.

@@ -212,6 +212,29 @@ public:
         return tr;
     }
 
+    /// The objects whose interior scatters light (a Fog's, a VaryingFog's) that hold `p`,
+    /// entered in key order by their priorities: the media a camera at p starts in. Empty
+    /// in a scene without such objects, at no cost. (A camera inside glass that only
+    /// absorbs needs none: its ray's first crossing leaves the glass, and is attenuated so.)
+    [[nodiscard]] MediumStack media_at(const Vec3<T>& p) const noexcept
+    {
+        MediumStack media;
+        if constexpr (has_scattering_media) {
+            const Ray<T> probe{p, normalize(Vec3<T>(T(0.5377), T(0.7631), T(-0.3584)))}; // any direction
+            for (const detail::ObjectKey& key : glass_)
+                dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) {
+                    if constexpr (has_scattering_interior<typename SlotAt<I>::material_type>) {
+                        const auto& object = object_at<I>(key.index);
+                        if (object.shape.template crossings<false>(probe, {T(0), infinity<T>}).inside_at_start)
+                            media = media.entered({key.slot, key.index, nesting_priority(object.material)});
+                    }
+                });
+        } else {
+            (void)p;
+        }
+        return media;
+    }
+
     /// Call f(material) with the material of object `index` of slot `slot`, with its
     /// static type.
     template <class F>

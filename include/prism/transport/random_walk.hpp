@@ -152,11 +152,12 @@ struct WalkLimits {
 /// limits.roulette_depth surfaces. on_medium(medium, WalkMediumVertex) is called where the
 /// path scatters in a medium (a scene or air with none never compiles it) and returns
 /// whether the walk goes on; such a vertex counts as a surface toward the limits.
+/// `start`: the transmissive objects the ray starts inside (a camera's: Scene::media_at).
 template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters,
           class OnMedium = IgnoreMedia>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
                  Rgb<typename SceneT::scalar_type> power, Pcg32& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
-                 OnEmitter&& on_emitter = {}, OnMedium&& on_medium = {})
+                 OnEmitter&& on_emitter = {}, OnMedium&& on_medium = {}, MediumStack start = {})
 {
     static_assert(!(Air::curved && air_scatters<Air>), "air that both curves rays and scatters light is not supported yet");
     using T = typename SceneT::scalar_type;
@@ -164,7 +165,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
     int diffuse_bounces = 0, surface_bounces = 0;
     T travelled = T(0);
     T wavelength = T(0); // white until a dispersive interface splits it
-    MediumStack media;   // the transmissive objects the path is inside of
+    MediumStack media = start; // the transmissive objects the path is inside of
     Vec3<T> last_point = ray.origin;
     T last_pdf = T(0);
     for (int bounce = 0; bounce <= limits.max_bounces; ++bounce) {
