@@ -3,6 +3,7 @@
 
 #include "../support.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 using prism::Vec3;
@@ -67,4 +68,25 @@ TEST_CASE("a height field samples its function, faces up, and is open")
     CHECK_THROWS_WITH_AS((void)prism::height_field<float>(0, 1, 0, 1, 0, [](float, float) { return 0.f; }), doctest::Contains("height_field cells"), std::invalid_argument);
     CHECK_THROWS_WITH_AS((void)prism::height_field<float>(0, 1, 0, 1, 2, [](float x, float) { return x > 0.5f ? std::nanf("") : 0.f; }), doctest::Contains("must be finite"),
                          std::invalid_argument);
+}
+
+TEST_CASE("height_field_solid is a closed solid: a vertical ray through a lattice point enters at the floor and leaves at the height there; a point between is inside")
+{
+    const auto height = [](double x, double z) { return 0.2 * std::sin(3 * x) * std::cos(2 * z) + 0.05 * x; };
+    const auto m = prism::height_field_solid<double>(-1, 2, 0, 1, 6, -0.5, height);
+    CHECK(m.triangles.size() == 4 * 6 * 6 + 8 * 6);
+    const prism::TriangleMesh<double> solid(m.positions, m.triangles); // refuses a mesh that is not closed or winds inward
+    for (int i = 0; i <= 6; ++i) {
+        const double x = -1 + 3.0 * i / 6, z = 0.5;
+        CAPTURE(x);
+        const auto c = solid.crossings<false>(prism::Ray<double>{{x, -2, z}, {0, 1, 0}}, {0.0, prism::infinity<double>});
+        REQUIRE(c.size() == 2);
+        CHECK(c[0].entering);
+        CHECK(c[0].t == doctest::Approx(1.5));
+        CHECK(!c[1].entering);
+        CHECK(c[1].t == doctest::Approx(2 + height(x, z)));
+        CHECK(solid.crossings<false>(prism::Ray<double>{{std::clamp(x, -0.9, 1.9), -0.3, z}, {0, 0, 1}}, {0.0, prism::infinity<double>}).inside_at_start); // (off the walls)
+    }
+    CHECK_THROWS_WITH_AS((void)prism::height_field_solid<float>(0, 1, 0, 1, 2, 0.5f, [](float x, float) { return x; }),
+                         doctest::Contains("must be above the bottom 0.5"), std::invalid_argument);
 }

@@ -128,4 +128,45 @@ template <Scalar T = float, class Height>
     return out;
 }
 
+/// The solid between the surface y = height(x, z) over [x0, x1] x [z0, z1] (sampled at
+/// (cells + 1)^2 points, as height_field) and the floor y = bottom: the height field on
+/// top, the floor as a grid of the same cells facing -y, and four walls, each triangle
+/// facing out. Closed: a body of water under waves, a block of terrain. Throws
+/// std::invalid_argument, naming the point, where the surface is not above the floor.
+template <Scalar T = float, class Height>
+[[nodiscard]] MeshBuffers<T> height_field_solid(T x0, T x1, T z0, T z1, int cells, T bottom, Height&& height)
+{
+    MeshBuffers<T> out = height_field<T>(x0, x1, z0, z1, cells, height);
+    const auto n = std::uint32_t(cells), row = n + 1, floor = row * row;
+    for (std::uint32_t k = 0; k < floor; ++k) {
+        const Vec3<T> top = out.positions[k];
+        if (!(top.y > bottom)) detail::throw_invalid("height_field_solid height(", top.x, ", ", top.z, ") = ", top.y, " must be above the bottom ", bottom);
+        out.positions.push_back({top.x, bottom, top.z});
+    }
+    for (std::uint32_t j = 0; j < n; ++j)
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const std::uint32_t a = floor + j * row + i, b = a + 1, c = a + row, d = c + 1;
+            out.triangles.push_back({a, b, c});
+            out.triangles.push_back({b, d, c});
+        }
+    // The walls: t the top's vertices along each edge, f the floor's below them.
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const auto wall = [&](std::uint32_t t0, std::uint32_t t1, bool flip) {
+            const std::uint32_t f0 = t0 + floor, f1 = t1 + floor;
+            if (!flip) {
+                out.triangles.push_back({t0, t1, f0});
+                out.triangles.push_back({t1, f1, f0});
+            } else {
+                out.triangles.push_back({t1, t0, f0});
+                out.triangles.push_back({t1, f0, f1});
+            }
+        };
+        wall(k, k + 1, false);                       // z = z0, facing -z
+        wall(n * row + k, n * row + k + 1, true);    // z = z1, facing +z
+        wall((k + 1) * row, k * row, false);         // x = x0, facing -x
+        wall((k + 1) * row + n, k * row + n, true);  // x = x1, facing +x
+    }
+    return out;
+}
+
 } // namespace prism
