@@ -18290,7 +18290,7 @@ public:
 private:
     /// The density at p, which the cell's bound must not be below (a field whose
     /// max_over lies would bias every estimate: caught where assertions are on).
-    [[nodiscard]] T checked_density(const Vec3<T>& p, T bound) const noexcept
+    [[nodiscard]] T checked_density(const Vec3<T>& p, [[maybe_unused]] T bound) const noexcept
     {
         const T density = field_.density(p);
         PRISM_ASSERT(density <= bound * (T(1) + T(1e-4)) + std::numeric_limits<T>::min());
