@@ -33,7 +33,7 @@ import statistics
 import subprocess
 import sys
 
-from methods_vs_time import COLUMNS, Scorer, read_pfm, write_pfm
+from methods_vs_time import COLUMNS, Scorer, bench_render, cycles_script_render, read_pfm, rectangle_mask, write_pfm
 from surfaces_vs_time import agreement, strip, summary
 
 here = os.path.dirname(os.path.abspath(__file__))
@@ -43,22 +43,12 @@ CAUSTIC = (0.44, 0.56, 0.58, 0.76)
 
 
 def caustic_mask(w, h):
-    """Per value (3 a pixel, PFM rows bottom first): True inside the caustic's rectangle."""
-    x0, x1, y0, y1 = CAUSTIC
-    return [x0 <= (col + 0.5) / w < x1 and y0 <= (h - 1 - row + 0.5) / h < y1 for row in range(h) for col in range(w) for _ in range(3)]
+    """Per value: True inside the caustic's rectangle."""
+    return rectangle_mask(w, h, CAUSTIC)
 
 
-def prism_render(build, method, effort, out, width, seed=0):
-    result = subprocess.run([os.path.join(build, "bench", "bench_fog"), method, str(effort), out, str(width), str(seed)],
-                            capture_output=True, text=True, check=True)
-    return float([line for line in result.stdout.splitlines() if line.startswith("seconds ")][0].split()[1])
-
-
-def cycles_render(spp, out, width, seed=1):
-    subprocess.run(["blender", "-b", "--factory-startup", "--python", os.path.join(here, "cycles_fog.py"), "--", out, str(spp), str(seed), str(width)],
-                   capture_output=True, text=True, check=True)
-    with open(out + ".txt") as f:
-        return float(f.read().splitlines()[1].split(",")[1])
+prism_render = functools.partial(bench_render, "bench_fog")
+cycles_render = functools.partial(cycles_script_render, "cycles_fog.py")
 
 
 def main():

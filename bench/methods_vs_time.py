@@ -122,6 +122,30 @@ class Scorer:
         return (fix(raw, self.noise), raw, self.noise, fix(display, self.display_noise), display, self.display_noise)
 
 
+def rectangle_mask(w, h, rectangle):
+    """Per value (3 a pixel, PFM rows bottom first): True inside `rectangle`, (x0, x1, y0, y1)
+    as fractions of the picture, x from the left and y from the top."""
+    x0, x1, y0, y1 = rectangle
+    return [x0 <= (col + 0.5) / w < x1 and y0 <= (h - 1 - row + 0.5) / h < y1 for row in range(h) for col in range(w) for _ in range(3)]
+
+
+def bench_render(program, build, method, effort, out, size, seed=0):
+    """One render by the bench program `program` (bench_surfaces, bench_fog: method, effort,
+    output, size, seed); returns the seconds it printed."""
+    result = subprocess.run([os.path.join(build, "bench", program), method, str(effort), out, str(size), str(seed)],
+                            capture_output=True, text=True, check=True)
+    return float([line for line in result.stdout.splitlines() if line.startswith("seconds ")][0].split()[1])
+
+
+def cycles_script_render(script, spp, out, size, seed=1):
+    """One Cycles render by the Blender script `script` (in bench/: output, spp, seed, size);
+    returns the render time it wrote beside the picture."""
+    subprocess.run(["blender", "-b", "--factory-startup", "--python", os.path.join(here, script), "--", out, str(spp), str(seed), str(size)],
+                   capture_output=True, text=True, check=True)
+    with open(out + ".txt") as f:
+        return float(f.read().splitlines()[1].split(",")[1])
+
+
 def run(build, scene, method, effort, out, size, seed=0):
     """One bench_methods render; a method "direct, 1 spp" samples each pixel's centre once."""
     spp = [str(seed), "1"] if method.endswith("1 spp") else [str(seed)]

@@ -29,7 +29,7 @@ import statistics
 import subprocess
 import sys
 
-from methods_vs_time import COLUMNS, Scorer, read_pfm, rmse, time_to_reach, write_pfm
+from methods_vs_time import COLUMNS, Scorer, bench_render, cycles_script_render, read_pfm, rectangle_mask, rmse, time_to_reach, write_pfm
 
 here = os.path.dirname(os.path.abspath(__file__))
 
@@ -38,28 +38,12 @@ CAUSTIC = (0.23, 0.47, 0.58, 0.78)
 
 
 def caustic_mask(w, h):
-    """Per value (3 a pixel, PFM rows bottom first): True inside the caustic's rectangle."""
-    x0, x1, y0, y1 = CAUSTIC
-    mask = []
-    for row in range(h):
-        y = (h - 1 - row + 0.5) / h
-        for col in range(w):
-            x = (col + 0.5) / w
-            mask += [x0 <= x < x1 and y0 <= y < y1] * 3
-    return mask
+    """Per value: True inside the caustic's rectangle."""
+    return rectangle_mask(w, h, CAUSTIC)
 
 
-def prism_render(build, method, effort, out, size, seed=0):
-    result = subprocess.run([os.path.join(build, "bench", "bench_surfaces"), method, str(effort), out, str(size), str(seed)],
-                            capture_output=True, text=True, check=True)
-    return float([line for line in result.stdout.splitlines() if line.startswith("seconds ")][0].split()[1])
-
-
-def cycles_render(spp, out, size, seed=1):
-    subprocess.run(["blender", "-b", "--factory-startup", "--python", os.path.join(here, "cycles_surfaces.py"), "--", out, str(spp), str(seed), str(size)],
-                   capture_output=True, text=True, check=True)
-    with open(out + ".txt") as f:
-        return float(f.read().splitlines()[1].split(",")[1])
+prism_render = functools.partial(bench_render, "bench_surfaces")
+cycles_render = functools.partial(cycles_script_render, "cycles_surfaces.py")
 
 
 def agreement(prism_halves, cycles_pair, mask=None, display=False):
