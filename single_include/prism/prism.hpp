@@ -9198,16 +9198,19 @@ void for_scattering_medium_along(const SceneT& scene, const Air& air, const Medi
 }
 
 /// A walker's flight along `segment` (unit direction) through the medium it is in, up to
-/// t_max: where that medium scatters (for_scattering_medium_along), it draws where the
-/// walker scatters (its sample_flight) and `power` takes the draw's weight; where it
-/// scatters before t_max, on_scatter(medium, distance, weight) is called (the weight
-/// already taken).
-template <class SceneT, class Air, Scalar T, class OnScatter>
+/// t_max: where that medium scatters (for_scattering_medium_along), on_stretch(medium,
+/// stretch, length) is shown the stretch first (its ray from where it starts, `power` as
+/// the walker enters it), then the walker's flight is drawn (the medium's sample_flight)
+/// and `power` takes the draw's weight; where it scatters before t_max,
+/// on_scatter(medium, distance, weight) is called (the weight already taken).
+template <class SceneT, class Air, Scalar T, class OnScatter, class OnStretch>
 void fly_through_medium(const SceneT& scene, const Air& air, const MediumStack& media, const Ray<T>& segment, T t_max, Rgb<T>& power,
-                        Pcg32& rng, OnScatter&& on_scatter)
+                        Pcg32& rng, OnScatter&& on_scatter, OnStretch&& on_stretch)
 {
     for_scattering_medium_along(scene, air, media, segment, t_max, [&](const auto& medium, T t0, T t1) {
-        const FreeFlight<T> flight = medium.sample_flight({segment.at(t0), segment.direction}, t1 - t0, power, rng);
+        const Ray<T> stretch{segment.at(t0), segment.direction};
+        on_stretch(medium, stretch, t1 - t0);
+        const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
         power *= flight.weight;
         if (flight.scattered) on_scatter(medium, t0 + flight.distance, flight.weight);
     });
@@ -9513,6 +9516,9 @@ struct WalkMediumVertex {
     bool last;                ///< the walk ends after this vertex (its depth limit)
     Pcg32& rng;               ///< the walk's stream
     int surface_bounces;      ///< as WalkVertex's: non-delta scatterings but through frosted glass
+    const Ray<T>& stretch;    ///< the stretch of medium the flight was drawn over: from where it starts, unit direction
+    T stretch_length;         ///< its length (may be infinite)
+    const Rgb<T>& entering;   ///< what the path carried as it entered the stretch (the flight's draw was weighed by it)
 
     /// Whether every scattering so far was specular.
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
@@ -9520,6 +9526,31 @@ struct WalkMediumVertex {
     /// volumetric caustic's path when one came before: L {S | frosted}+ M).
     [[nodiscard]] bool caustic_path() const noexcept { return surface_bounces == 0; }
 };
+
+/// A walk entering a stretch of a medium that scatters, before its flight there is drawn:
+/// shown to a caller's on_medium that takes it (the path tracer's equiangular samples).
+template <Scalar T>
+struct WalkMediumStretch {
+    const Ray<T>& ray;        ///< from where the stretch starts, unit direction
+    T length;                 ///< its length (may be infinite)
+    const Rgb<T>& power;      ///< what the path carries entering it
+    int diffuse_bounces;      ///< non-delta scatterings so far
+    const MediumStack& media; ///< the transmissive objects the path is inside of
+    Pcg32& rng;               ///< the walk's stream
+};
+
+namespace detail {
+
+/// Several callables' call operators as one: an on_medium that takes both a walk's medium
+/// vertices and its stretches.
+template <class... F>
+struct Overload : F... {
+    using F::operator()...;
+};
+template <class... F>
+Overload(F...) -> Overload<F...>;
+
+} // namespace detail
 
 /// What a walk does where it scatters in a medium when its caller says nothing: it goes on.
 struct IgnoreMedia {
@@ -9596,12 +9627,21 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             const Vec3<T> d = normalize(segment.direction);
             const T scale = length(segment.direction);
             const T t_max = hit ? hit->crossing.t * scale : infinity<T>;
+            Ray<T> stretch{};
+            T stretch_length = T(0);
+            Rgb<T> entering{};
+            const auto on_stretch = [&]<class Md>(const Md& medium, const Ray<T>& r, T length) {
+                stretch = r, stretch_length = length, entering = power;
+                if constexpr (std::is_invocable_v<OnMedium&, const Md&, const WalkMediumStretch<T>&>)
+                    on_medium(medium, WalkMediumStretch<T>{stretch, length, power, diffuse_bounces, media, rng});
+            };
             fly_through_medium(scene, air, media, Ray<T>{segment.origin, d}, t_max, power, rng, [&]<class Md>(const Md& medium, T s, const Rgb<T>& weight) {
                 const Vec3<T> p = segment.origin + s * d;
                 travelled += s; // (a straight segment: inside objects, or in straight air)
                 const bool last = bounce == limits.max_bounces;
                 in_medium = InMedium::absorbed;
-                if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, surface_bounces}))
+                if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last,
+                                                          rng, surface_bounces, stretch, stretch_length, entering}))
                     return;
                 if constexpr (Mode == Transport::importance) {
                     // A photon keeps its power: it goes on with the chance of the draw's
@@ -9621,7 +9661,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 ++surface_bounces;
                 if (direct) first_specular = false;
                 in_medium = InMedium::scattered;
-            });
+            }, on_stretch);
             if (in_medium == InMedium::absorbed) return;
             if (in_medium == InMedium::scattered) {
                 direct = false;
@@ -12947,7 +12987,11 @@ void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, F&& f)
 // scatters in the air as at a surface: light samples there are weighed by the phase
 // function and the medium's transmittance to the light, shared with the phase
 // function's own draw by MIS, and every shadow ray in the air takes the air's
-// transmittance.
+// transmittance. A point or spot light in a uniform medium is also sampled along each
+// stretch of medium a path crosses, by equiangular sampling (Kulla and Fajardo 2012:
+// density proportional to 1 / d^2 from the light), combined with the light samples taken
+// where free flights end by the balance heuristic: thin haze in a narrow beam is found
+// by the first, dense fog by the second.
 
 
 namespace prism {
@@ -12994,6 +13038,10 @@ public:
         /// the ones the camera sees through mirrors and glass first (E S+ D ... S+ L), which
         /// a light tracer cannot join to the camera: those the path tracer always counts.
         bool caustics_of_area_lights = true;
+        /// Whether point and spot lights in a uniform medium are also sampled along each
+        /// stretch of medium by equiangular sampling, MIS'd with the light samples where
+        /// free flights end (false: those alone).
+        bool equiangular = true;
     };
 
     /// A path tracer of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
@@ -13074,24 +13122,44 @@ public:
                                         met_light_weight(at.last_pdf, at.first_specular, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
                         }
                     },
-                    [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
-                        // In a medium: each light's samples weighed by the phase function
-                        // toward them (the bounce's density there, for MIS), no cosine.
-                        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
-                        Rgb<T> gathered{T(0)};
-                        scene_->for_each_light([&]<class L>(const L& light) {
-                            if constexpr (!is_delta_light<L>) {
-                                if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
-                            }
-                            for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, at.point, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
-                                const T phase = medium.phase.value(dot(at.direction, s.wi));
-                                const T w = !s.delta() && go_on ? light_sample_weight(s.pdf, phase) : T(1);
-                                gathered += (w * phase) * v * through_air(at.media, at.point, s) * s.irradiance;
+                    detail::Overload{
+                        [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
+                            // In a medium: each light's samples weighed by the phase function
+                            // toward them (the bounce's density there, for MIS), no cosine;
+                            // a point or spot light's shared with its equiangular samples.
+                            const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
+                            Rgb<T> gathered{T(0)};
+                            scene_->for_each_light([&]<class L>(const L& light) {
+                                if constexpr (!is_delta_light<L>) {
+                                    if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
+                                }
+                                T shared = T(1);
+                                if constexpr (has_equiangular<L, Md>) {
+                                    if (config_.equiangular) {
+                                        const T t = dot(at.point - at.stretch.origin, at.stretch.direction);
+                                        const T flight = flight_pdf(medium, at.entering, t);
+                                        shared = flight / (flight + Equiangular(at.stretch, at.stretch_length, light.position).pdf(t));
+                                    }
+                                }
+                                for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, at.point, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
+                                    const T phase = medium.phase.value(dot(at.direction, s.wi));
+                                    const T w = !s.delta() && go_on ? light_sample_weight(s.pdf, phase) : shared;
+                                    gathered += (w * phase) * v * through_air(at.media, at.point, s) * s.irradiance;
+                                });
                             });
-                        });
-                        sum += at.power * gathered;
-                        return go_on;
-                    },
+                            sum += at.power * gathered;
+                            return go_on;
+                        },
+                        [&]<class Md>(const Md& medium, const WalkMediumStretch<T>& stretch) {
+                            // Each point or spot light's equiangular sample on the stretch.
+                            if constexpr (uniform_medium<Md>) {
+                                if (!config_.equiangular) return true;
+                                scene_->for_each_light([&]<class L>(const L& light) {
+                                    if constexpr (has_equiangular<L, Md>) sum += equiangular_sample(medium, light, stretch, sampling);
+                                });
+                            }
+                            return true;
+                        }},
                     scene_->media_at(ray.origin));
         return sum;
     }
@@ -13132,6 +13200,65 @@ public:
     }
 
 private:
+    /// Whether a light is sampled along stretches of medium Md: a delta light at a point,
+    /// in a uniform medium.
+    template <class L, class Md>
+    static constexpr bool has_equiangular = uniform_medium<Md> && is_delta_light<L> && requires(const L& light) { light.position; };
+
+    /// Equiangular sampling of a stretch (ray from its start, unit direction, length may
+    /// be infinite) toward a point c: in the angle theta seen from c, uniform, so that
+    /// the density in t is h / ((theta1 - theta0) (h^2 + (t - along)^2)), h the point's
+    /// distance from the ray's line.
+    struct Equiangular {
+        T along, h, theta0, theta1;
+        Equiangular(const Ray<T>& stretch, T length, const Vec3<T>& c) noexcept
+        {
+            const Vec3<T> to = c - stretch.origin;
+            along = dot(to, stretch.direction);
+            h = std::max(length_of(to - along * stretch.direction), T(1e-6) * (T(1) + std::abs(along)));
+            theta0 = std::atan(-along / h);
+            theta1 = length < infinity<T> ? std::atan((length - along) / h) : pi<T> / T(2);
+        }
+        [[nodiscard]] T sample(T u) const noexcept { return along + h * std::tan(theta0 + u * (theta1 - theta0)); }
+        [[nodiscard]] T pdf(T t) const noexcept { return theta1 > theta0 ? h / ((theta1 - theta0) * (h * h + (t - along) * (t - along))) : T(0); }
+        static T length_of(const Vec3<T>& v) noexcept { return length(v); }
+    };
+
+    /// The density with which a uniform medium's free flight, drawn for a path carrying
+    /// `entering` (Fog::sample_flight's mixture over channels), ends at t along its stretch.
+    template <class Md>
+    [[nodiscard]] static T flight_pdf(const Md& medium, const Rgb<T>& entering, T t) noexcept
+    {
+        const Rgb<T> sigma = medium.extinction();
+        const T total = entering.x + entering.y + entering.z;
+        const Rgb<T> chance = total > T(0) ? entering / total : Rgb<T>(T(1) / T(3));
+        T pdf = T(0);
+        for (int c = 0; c < 3; ++c)
+            if (sigma[c] > T(0)) pdf += chance[c] * sigma[c] * std::exp(-sigma[c] * t);
+        return pdf;
+    }
+
+    /// One equiangular sample of `light` along a stretch of uniform `medium`: its light
+    /// scattered once toward the path there, through the medium's transmittance back to
+    /// the stretch's start, over the sample's density, weighed against the free flight's
+    /// light sample by the balance heuristic.
+    template <class Md, class L>
+    [[nodiscard]] Rgb<T> equiangular_sample(const Md& medium, const L& light, const WalkMediumStretch<T>& stretch, const LightSampling& sampling) const noexcept
+    {
+        const Equiangular rule(stretch.ray, stretch.length, light.position);
+        const T t = rule.sample(stretch.rng.template uniform<T>());
+        const T density = rule.pdf(t);
+        if (!(t >= T(0) && t < stretch.length && density > T(0) && density < infinity<T>)) return Rgb<T>(T(0));
+        const Vec3<T> p = stretch.ray.at(t);
+        const T w = density / (density + flight_pdf(medium, stretch.power, t));
+        Rgb<T> out{T(0)};
+        for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, p, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
+            const T phase = medium.phase.value(dot(stretch.ray.direction, s.wi));
+            out += (w * phase / density) * v * through_air(stretch.media, p, s) * s.irradiance;
+        });
+        return stretch.power * medium.transmittance(t) * medium.scattering_at(p) * out;
+    }
+
     /// What the scene's air lets through along a light sample's shadow ray from `p` in a
     /// medium: its medium's transmittance for a point in the air (FilledAir), 1 inside an
     /// object (its shadow ray is the scene's to stop at the object's glass) or in clear air.

@@ -21,7 +21,11 @@
 // scatters in the air as at a surface: light samples there are weighed by the phase
 // function and the medium's transmittance to the light, shared with the phase
 // function's own draw by MIS, and every shadow ray in the air takes the air's
-// transmittance.
+// transmittance. A point or spot light in a uniform medium is also sampled along each
+// stretch of medium a path crosses, by equiangular sampling (Kulla and Fajardo 2012:
+// density proportional to 1 / d^2 from the light), combined with the light samples taken
+// where free flights end by the balance heuristic: thin haze in a narrow beam is found
+// by the first, dense fog by the second.
 #pragma once
 
 #include <prism/core/check.hpp>
@@ -78,6 +82,10 @@ public:
         /// the ones the camera sees through mirrors and glass first (E S+ D ... S+ L), which
         /// a light tracer cannot join to the camera: those the path tracer always counts.
         bool caustics_of_area_lights = true;
+        /// Whether point and spot lights in a uniform medium are also sampled along each
+        /// stretch of medium by equiangular sampling, MIS'd with the light samples where
+        /// free flights end (false: those alone).
+        bool equiangular = true;
     };
 
     /// A path tracer of `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
@@ -158,24 +166,44 @@ public:
                                         met_light_weight(at.last_pdf, at.first_specular, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
                         }
                     },
-                    [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
-                        // In a medium: each light's samples weighed by the phase function
-                        // toward them (the bounce's density there, for MIS), no cosine.
-                        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
-                        Rgb<T> gathered{T(0)};
-                        scene_->for_each_light([&]<class L>(const L& light) {
-                            if constexpr (!is_delta_light<L>) {
-                                if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
-                            }
-                            for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, at.point, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
-                                const T phase = medium.phase.value(dot(at.direction, s.wi));
-                                const T w = !s.delta() && go_on ? light_sample_weight(s.pdf, phase) : T(1);
-                                gathered += (w * phase) * v * through_air(at.media, at.point, s) * s.irradiance;
+                    detail::Overload{
+                        [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
+                            // In a medium: each light's samples weighed by the phase function
+                            // toward them (the bounce's density there, for MIS), no cosine;
+                            // a point or spot light's shared with its equiangular samples.
+                            const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
+                            Rgb<T> gathered{T(0)};
+                            scene_->for_each_light([&]<class L>(const L& light) {
+                                if constexpr (!is_delta_light<L>) {
+                                    if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
+                                }
+                                T shared = T(1);
+                                if constexpr (has_equiangular<L, Md>) {
+                                    if (config_.equiangular) {
+                                        const T t = dot(at.point - at.stretch.origin, at.stretch.direction);
+                                        const T flight = flight_pdf(medium, at.entering, t);
+                                        shared = flight / (flight + Equiangular(at.stretch, at.stretch_length, light.position).pdf(t));
+                                    }
+                                }
+                                for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, at.point, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
+                                    const T phase = medium.phase.value(dot(at.direction, s.wi));
+                                    const T w = !s.delta() && go_on ? light_sample_weight(s.pdf, phase) : shared;
+                                    gathered += (w * phase) * v * through_air(at.media, at.point, s) * s.irradiance;
+                                });
                             });
-                        });
-                        sum += at.power * gathered;
-                        return go_on;
-                    },
+                            sum += at.power * gathered;
+                            return go_on;
+                        },
+                        [&]<class Md>(const Md& medium, const WalkMediumStretch<T>& stretch) {
+                            // Each point or spot light's equiangular sample on the stretch.
+                            if constexpr (uniform_medium<Md>) {
+                                if (!config_.equiangular) return true;
+                                scene_->for_each_light([&]<class L>(const L& light) {
+                                    if constexpr (has_equiangular<L, Md>) sum += equiangular_sample(medium, light, stretch, sampling);
+                                });
+                            }
+                            return true;
+                        }},
                     scene_->media_at(ray.origin));
         return sum;
     }
@@ -216,6 +244,65 @@ public:
     }
 
 private:
+    /// Whether a light is sampled along stretches of medium Md: a delta light at a point,
+    /// in a uniform medium.
+    template <class L, class Md>
+    static constexpr bool has_equiangular = uniform_medium<Md> && is_delta_light<L> && requires(const L& light) { light.position; };
+
+    /// Equiangular sampling of a stretch (ray from its start, unit direction, length may
+    /// be infinite) toward a point c: in the angle theta seen from c, uniform, so that
+    /// the density in t is h / ((theta1 - theta0) (h^2 + (t - along)^2)), h the point's
+    /// distance from the ray's line.
+    struct Equiangular {
+        T along, h, theta0, theta1;
+        Equiangular(const Ray<T>& stretch, T length, const Vec3<T>& c) noexcept
+        {
+            const Vec3<T> to = c - stretch.origin;
+            along = dot(to, stretch.direction);
+            h = std::max(length_of(to - along * stretch.direction), T(1e-6) * (T(1) + std::abs(along)));
+            theta0 = std::atan(-along / h);
+            theta1 = length < infinity<T> ? std::atan((length - along) / h) : pi<T> / T(2);
+        }
+        [[nodiscard]] T sample(T u) const noexcept { return along + h * std::tan(theta0 + u * (theta1 - theta0)); }
+        [[nodiscard]] T pdf(T t) const noexcept { return theta1 > theta0 ? h / ((theta1 - theta0) * (h * h + (t - along) * (t - along))) : T(0); }
+        static T length_of(const Vec3<T>& v) noexcept { return length(v); }
+    };
+
+    /// The density with which a uniform medium's free flight, drawn for a path carrying
+    /// `entering` (Fog::sample_flight's mixture over channels), ends at t along its stretch.
+    template <class Md>
+    [[nodiscard]] static T flight_pdf(const Md& medium, const Rgb<T>& entering, T t) noexcept
+    {
+        const Rgb<T> sigma = medium.extinction();
+        const T total = entering.x + entering.y + entering.z;
+        const Rgb<T> chance = total > T(0) ? entering / total : Rgb<T>(T(1) / T(3));
+        T pdf = T(0);
+        for (int c = 0; c < 3; ++c)
+            if (sigma[c] > T(0)) pdf += chance[c] * sigma[c] * std::exp(-sigma[c] * t);
+        return pdf;
+    }
+
+    /// One equiangular sample of `light` along a stretch of uniform `medium`: its light
+    /// scattered once toward the path there, through the medium's transmittance back to
+    /// the stretch's start, over the sample's density, weighed against the free flight's
+    /// light sample by the balance heuristic.
+    template <class Md, class L>
+    [[nodiscard]] Rgb<T> equiangular_sample(const Md& medium, const L& light, const WalkMediumStretch<T>& stretch, const LightSampling& sampling) const noexcept
+    {
+        const Equiangular rule(stretch.ray, stretch.length, light.position);
+        const T t = rule.sample(stretch.rng.template uniform<T>());
+        const T density = rule.pdf(t);
+        if (!(t >= T(0) && t < stretch.length && density > T(0) && density < infinity<T>)) return Rgb<T>(T(0));
+        const Vec3<T> p = stretch.ray.at(t);
+        const T w = density / (density + flight_pdf(medium, stretch.power, t));
+        Rgb<T> out{T(0)};
+        for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, p, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
+            const T phase = medium.phase.value(dot(stretch.ray.direction, s.wi));
+            out += (w * phase / density) * v * through_air(stretch.media, p, s) * s.irradiance;
+        });
+        return stretch.power * medium.transmittance(t) * medium.scattering_at(p) * out;
+    }
+
     /// What the scene's air lets through along a light sample's shadow ray from `p` in a
     /// medium: its medium's transmittance for a point in the air (FilledAir), 1 inside an
     /// object (its shadow ray is the scene's to stop at the object's glass) or in clear air.

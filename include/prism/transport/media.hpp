@@ -68,16 +68,19 @@ void for_scattering_medium_along(const SceneT& scene, const Air& air, const Medi
 }
 
 /// A walker's flight along `segment` (unit direction) through the medium it is in, up to
-/// t_max: where that medium scatters (for_scattering_medium_along), it draws where the
-/// walker scatters (its sample_flight) and `power` takes the draw's weight; where it
-/// scatters before t_max, on_scatter(medium, distance, weight) is called (the weight
-/// already taken).
-template <class SceneT, class Air, Scalar T, class OnScatter>
+/// t_max: where that medium scatters (for_scattering_medium_along), on_stretch(medium,
+/// stretch, length) is shown the stretch first (its ray from where it starts, `power` as
+/// the walker enters it), then the walker's flight is drawn (the medium's sample_flight)
+/// and `power` takes the draw's weight; where it scatters before t_max,
+/// on_scatter(medium, distance, weight) is called (the weight already taken).
+template <class SceneT, class Air, Scalar T, class OnScatter, class OnStretch>
 void fly_through_medium(const SceneT& scene, const Air& air, const MediumStack& media, const Ray<T>& segment, T t_max, Rgb<T>& power,
-                        Pcg32& rng, OnScatter&& on_scatter)
+                        Pcg32& rng, OnScatter&& on_scatter, OnStretch&& on_stretch)
 {
     for_scattering_medium_along(scene, air, media, segment, t_max, [&](const auto& medium, T t0, T t1) {
-        const FreeFlight<T> flight = medium.sample_flight({segment.at(t0), segment.direction}, t1 - t0, power, rng);
+        const Ray<T> stretch{segment.at(t0), segment.direction};
+        on_stretch(medium, stretch, t1 - t0);
+        const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
         power *= flight.weight;
         if (flight.scattered) on_scatter(medium, t0 + flight.distance, flight.weight);
     });

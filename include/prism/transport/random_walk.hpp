@@ -97,6 +97,9 @@ struct WalkMediumVertex {
     bool last;                ///< the walk ends after this vertex (its depth limit)
     Pcg32& rng;               ///< the walk's stream
     int surface_bounces;      ///< as WalkVertex's: non-delta scatterings but through frosted glass
+    const Ray<T>& stretch;    ///< the stretch of medium the flight was drawn over: from where it starts, unit direction
+    T stretch_length;         ///< its length (may be infinite)
+    const Rgb<T>& entering;   ///< what the path carried as it entered the stretch (the flight's draw was weighed by it)
 
     /// Whether every scattering so far was specular.
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
@@ -104,6 +107,31 @@ struct WalkMediumVertex {
     /// volumetric caustic's path when one came before: L {S | frosted}+ M).
     [[nodiscard]] bool caustic_path() const noexcept { return surface_bounces == 0; }
 };
+
+/// A walk entering a stretch of a medium that scatters, before its flight there is drawn:
+/// shown to a caller's on_medium that takes it (the path tracer's equiangular samples).
+template <Scalar T>
+struct WalkMediumStretch {
+    const Ray<T>& ray;        ///< from where the stretch starts, unit direction
+    T length;                 ///< its length (may be infinite)
+    const Rgb<T>& power;      ///< what the path carries entering it
+    int diffuse_bounces;      ///< non-delta scatterings so far
+    const MediumStack& media; ///< the transmissive objects the path is inside of
+    Pcg32& rng;               ///< the walk's stream
+};
+
+namespace detail {
+
+/// Several callables' call operators as one: an on_medium that takes both a walk's medium
+/// vertices and its stretches.
+template <class... F>
+struct Overload : F... {
+    using F::operator()...;
+};
+template <class... F>
+Overload(F...) -> Overload<F...>;
+
+} // namespace detail
 
 /// What a walk does where it scatters in a medium when its caller says nothing: it goes on.
 struct IgnoreMedia {
@@ -180,12 +208,21 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             const Vec3<T> d = normalize(segment.direction);
             const T scale = length(segment.direction);
             const T t_max = hit ? hit->crossing.t * scale : infinity<T>;
+            Ray<T> stretch{};
+            T stretch_length = T(0);
+            Rgb<T> entering{};
+            const auto on_stretch = [&]<class Md>(const Md& medium, const Ray<T>& r, T length) {
+                stretch = r, stretch_length = length, entering = power;
+                if constexpr (std::is_invocable_v<OnMedium&, const Md&, const WalkMediumStretch<T>&>)
+                    on_medium(medium, WalkMediumStretch<T>{stretch, length, power, diffuse_bounces, media, rng});
+            };
             fly_through_medium(scene, air, media, Ray<T>{segment.origin, d}, t_max, power, rng, [&]<class Md>(const Md& medium, T s, const Rgb<T>& weight) {
                 const Vec3<T> p = segment.origin + s * d;
                 travelled += s; // (a straight segment: inside objects, or in straight air)
                 const bool last = bounce == limits.max_bounces;
                 in_medium = InMedium::absorbed;
-                if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, surface_bounces}))
+                if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last,
+                                                          rng, surface_bounces, stretch, stretch_length, entering}))
                     return;
                 if constexpr (Mode == Transport::importance) {
                     // A photon keeps its power: it goes on with the chance of the draw's
@@ -205,7 +242,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 ++surface_bounces;
                 if (direct) first_specular = false;
                 in_medium = InMedium::scattered;
-            });
+            }, on_stretch);
             if (in_medium == InMedium::absorbed) return;
             if (in_medium == InMedium::scattered) {
                 direct = false;
