@@ -255,17 +255,19 @@ private:
     /// distance from the ray's line.
     struct Equiangular {
         T along, h, theta0, theta1;
-        Equiangular(const Ray<T>& stretch, T length, const Vec3<T>& c) noexcept
+        Equiangular(const Ray<T>& stretch, T extent, const Vec3<T>& c) noexcept
         {
             const Vec3<T> to = c - stretch.origin;
             along = dot(to, stretch.direction);
-            h = std::max(length_of(to - along * stretch.direction), T(1e-6) * (T(1) + std::abs(along)));
+            // (A light on the stretch's line: kept off it, as the airlight does.)
+            h = std::max(length(to - along * stretch.direction), T(1e-6) * (T(1) + std::abs(along)));
             theta0 = std::atan(-along / h);
-            theta1 = length < infinity<T> ? std::atan((length - along) / h) : pi<T> / T(2);
+            theta1 = extent < infinity<T> ? std::atan((extent - along) / h) : pi<T> / T(2);
         }
+        /// The point at u in [0, 1).
         [[nodiscard]] T sample(T u) const noexcept { return along + h * std::tan(theta0 + u * (theta1 - theta0)); }
+        /// The density of t.
         [[nodiscard]] T pdf(T t) const noexcept { return theta1 > theta0 ? h / ((theta1 - theta0) * (h * h + (t - along) * (t - along))) : T(0); }
-        static T length_of(const Vec3<T>& v) noexcept { return length(v); }
     };
 
     /// The density with which a uniform medium's free flight, drawn for a path carrying
