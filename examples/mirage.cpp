@@ -7,7 +7,9 @@
 // inferior mirage). Then a superior mirage over a cold sea: warm air above 25 m (an
 // index 1.2e-5 lower, over about 3 m) bends rising rays back down, so a ship 8 km away
 // looms higher and taller, and a band of distant sea shows in the sky. Each beside the
-// same scene in uniform air.
+// same scene in uniform air. Last, the hot road in haze: fog filling the graded air, the
+// sun's light scattered once along every curved ray, so the haze itself is mirrored in the
+// road with the sky.
 #include "cli.hpp"
 
 #include <prism/prism.hpp>
@@ -58,11 +60,11 @@ int main(int argc, char** argv)
     return examples::run([&] {
         using namespace prism;
         examples::Options options;
-        options.images = {"mirage", "mirage_plain", "superior_mirage", "superior_mirage_plain"}; // checked before rendering, written together after
+        options.images = {"mirage", "mirage_plain", "superior_mirage", "superior_mirage_plain", "mirage_haze"}; // checked before rendering, written together after
         options.render.width = 640;
         options.render.height = 240;
         options.render.spp = 4;
-        if (!examples::parse(argc, argv, options, "an inferior mirage over a hot road and a superior mirage over a cold sea (graded-index air), beside uniform air"))
+        if (!examples::parse(argc, argv, options, "an inferior mirage over a hot road and a superior mirage over a cold sea (graded-index air), beside uniform air; the road in haze"))
             return 0;
         const Camera<T> camera{.position = {0, T(1.5), 0}, .look_at = {T(500), T(1.0), T(2)}, .up = {0, 1, 0}, .fov = T(5)};
         const auto scene = road_scene();
@@ -83,6 +85,15 @@ int main(int argc, char** argv)
         examples::save(examples::timed_render("superior_mirage", sea_camera, looming, options), options);
         const Whitted sea_straight(sea);
         examples::save(examples::timed_render("superior_mirage_plain", sea_camera, sea_straight, options), options);
+
+        // Haze over the road, bluish and scattering forward, to 1.2 km: the air it fills is
+        // the hot air above, so it scatters along the same curved rays.
+        const FilledAir<Fog<T>, GradedAir<HeatedLayer<T>>> haze{
+            .medium = {.scattering = {T(0.45e-3), T(0.6e-3), T(0.85e-3)}, .phase = {.g = T(0.6)}},
+            .region = {{T(-10), T(-1), T(-600)}, {T(1200), T(120), T(600)}},
+            .base = hot_air};
+        const Whitted hazy(scene, {.march_steps = 4}, haze);
+        examples::save(examples::timed_render("mirage_haze", camera, hazy, options), options);
         return 0;
     });
 }

@@ -32,6 +32,17 @@ inline prism::FilledAir<prism::Fog<float>> airlight_fog()
                        .phase = {.g = float(airlight_g)}}};
 }
 
+/// The fog filling GradedAir of a uniform index, which cuts every path into straight
+/// pieces of at most 0.5 inside a box 50 about the light (straight beyond it): the same
+/// fog, the same integral, summed piece by piece.
+inline auto airlight_fog_in_pieces()
+{
+    using Graded = prism::GradedAir<prism::LinearSquareIndex<float>>;
+    const Graded graded{.field = {.a = 1, .b = 0}, .region = {prism::Vec3<float>(-50), prism::Vec3<float>(50)},
+                        .stepping = {.tolerance = 1e-5f, .first_step = 0.5f, .max_step = 0.5f}};
+    return prism::FilledAir<prism::Fog<float>, Graded>{.medium = airlight_fog().medium, .base = graded};
+}
+
 /// The ray the test looks along.
 inline prism::Ray<float> airlight_ray() { return {{-2, 0, 0}, {1, 0, 0}}; }
 

@@ -6610,7 +6610,8 @@ inline constexpr bool scatters_light = ScatteringMedium<X>;
 // ---- prism/medium/air.hpp ----
 // The scene's air: uniform (rays go straight, the default), of a varying index
 // (graded-index air: mirages, a flattened setting sun), through which rays curve, or
-// filled with a medium that scatters (FilledAir: fog, haze, murky water around everything).
+// filled with a medium that scatters (FilledAir: fog, haze, murky water around everything,
+// in straight or graded air).
 //
 // GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
 // field must be uniform, and rays go straight there. LayeredAir is flat layers of
@@ -6628,21 +6629,26 @@ struct StraightAir {
     constexpr void validate() const {}
 };
 
-/// Straight air filled, within `region` (everywhere by default), with a medium that
-/// absorbs and scatters: the fog a scene stands in, the water around an underwater scene.
-/// Outside the region the air is clear. (An object's inside takes its own medium, its
-/// material's interior.)
-template <ScatteringMedium M>
+/// Air filled, within `region` (everywhere by default), with a medium that absorbs and
+/// scatters: the fog a scene stands in, the water around an underwater scene. Outside the
+/// region the air is clear. (An object's inside takes its own medium, its material's
+/// interior.) `Base` is the air the medium fills: straight (the default), or GradedAir or
+/// LayeredAir, through which rays curve (a mirage seen through haze): a walker in it
+/// scatters along the curved path, by the medium's coefficients per unit of the path's
+/// length.
+template <ScatteringMedium M, class Base = StraightAir>
 struct FilledAir {
     /// The medium's precision.
     using scalar_type = typename M::scalar_type;
-    /// Rays through it are straight.
-    static constexpr bool curved = false;
+    /// Rays through it curve where they curve through its base.
+    static constexpr bool curved = Base::curved;
     /// Light scatters in it.
     static constexpr bool scatters = true;
+    static_assert(!requires { requires Base::scatters; }, "FilledAir's base is the air it fills: StraightAir, GradedAir or LayeredAir");
 
     M medium{}; ///< what fills the region
     Aabb<scalar_type> region = Aabb<scalar_type>::universe(); ///< where the medium is (a box; everywhere by default)
+    Base base{}; ///< the air it fills: straight, or of a varying index
 
     /// Where the air is not clear: the region, within the medium's own box where it has
     /// one (a medium of varying density).
@@ -6656,11 +6662,12 @@ struct FilledAir {
         }
     }
 
-    /// Throws std::invalid_argument, naming the parameter, for a bad medium or an empty region.
+    /// Throws std::invalid_argument, naming the parameter, for a bad medium or base, or an empty region.
     void validate() const
     {
         medium.validate();
         if (region.empty()) detail::throw_invalid("FilledAir region must not be empty");
+        base.validate();
     }
 };
 
@@ -8912,8 +8919,9 @@ public:
         return {sum / (weight.mean() * pi<float> * r2), r2};
     }
 
-    /// visit(photon, t) for every photon within `radius` of the segment from `origin`
-    /// along unit `direction` whose projection t lies in [t_min, t_max]: the photons a beam
+    /// visit(photon, t, distance2) for every photon within `radius` of the segment from
+    /// `origin` along unit `direction` whose projection t lies in [t_min, t_max],
+    /// distance2 its squared distance from the line: the photons a beam
     /// radiance estimate of that radius gathers (Jarosz et al. 2008, "The Beam Radiance
     /// Estimate for Volumetric Photon Mapping"; with a box kernel the estimate is their
     /// weighted sum over pi r^2).
@@ -8922,7 +8930,7 @@ public:
     {
         if (!tree_ || photons_.empty() || !(radius > 0.0f)) return;
         tree_->along({origin.x, origin.y, origin.z}, {direction.x, direction.y, direction.z}, t_min, t_max, radius,
-                     [&](std::uint32_t index, float t, float) { visit(photons_[index], t); });
+                     [&](std::uint32_t index, float t, float distance2) { visit(photons_[index], t, distance2); });
     }
 
     /// The volume radiance estimate's sum (Jensen and Christensen 1998): the sum of
@@ -9137,12 +9145,258 @@ struct Hit {
 
 } // namespace prism
 
+// ---- prism/transport/travel.hpp ----
+// How a ray travels through the scene's air to the first surface it meets
+// (first_hit_in_air): straight in StraightAir; in GradedAir it follows the ray equation
+// by AdaptiveStepper's steps, and each step's chord is tested against the scene: the
+// first surface a chord meets is where the ray lands (a chord is within the stepper's
+// tolerance of the true path). Surfaces shade as usual; the rays they send on (any ray
+// back in the air) curve again. Shadow rays stay straight: over the few metres to
+// kilometres a scene spans, air bends light by well under a degree, enough to move an
+// image (the mirage) and too little to move a shadow's edge visibly; tracing the curved
+// path that reaches a light is a boundary-value problem left for later.
+//
+// A caller may watch the path piece by piece (on_piece): every straight piece it takes
+// through the air, in order, up to the surface it lands on; a caller that returns false
+// stops the path there (a walker that scatters in fog filling the air).
+
+
+#include <limits>
+#include <optional>
+#include <type_traits>
+#include <utility>
+
+namespace prism {
+
+namespace detail {
+
+/// A straight piece of a path, tested against the scene a hair past its end: a surface
+/// exactly where one piece ends and the next begins (a floor on a layer boundary) is
+/// otherwise missed by both, the first ending just short of it by rounding, the second
+/// starting on it.
+template <class SceneT>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> hit_on_piece(const SceneT& scene, const Ray<typename SceneT::scalar_type>& piece,
+                                                                           typename SceneT::scalar_type piece_length) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    const T slack = T(64) * std::numeric_limits<T>::epsilon() * (piece_length + max_component(abs(piece.origin)));
+    return scene.closest_hit(piece, {T(0), piece_length + slack});
+}
+
+/// What a path shows a caller that does not watch its pieces: nothing, and it goes on.
+struct AnyPiece {
+    template <Scalar T>
+    constexpr bool operator()(const Ray<T>&, T, T) const noexcept
+    {
+        return true;
+    }
+};
+
+/// The length of a path up to its current piece, told where the path lands.
+template <Scalar T>
+struct PathLength {
+    T travelled = T(0);
+    T* out = nullptr;
+
+    [[nodiscard]] std::optional<Hit<T>> landed(std::optional<Hit<T>> hit) const noexcept
+    {
+        if (hit && out != nullptr) *out = travelled + hit->crossing.t;
+        return hit;
+    }
+};
+
+/// The straight start of a path toward a slab or box of air: the surface it meets before
+/// reaching the box (`hit`), or whether it reaches the box at all and how far away.
+template <Scalar T>
+struct Approach {
+    std::optional<Hit<T>> hit;
+    bool reaches = false;
+    T distance = T(0);
+};
+
+template <class SceneT>
+[[nodiscard]] Approach<typename SceneT::scalar_type> approach(const SceneT& scene, const Aabb<typename SceneT::scalar_type>& box,
+                                                            const Ray<typename SceneT::scalar_type>& segment) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    const Interval<T> inside = box.clip(segment, {T(0), infinity<T>});
+    if (inside.empty()) return {scene.closest_hit(segment, {T(0), infinity<T>}), false, T(0)};
+    if (inside.min > T(0)) return {scene.closest_hit(segment, {T(0), inside.min}), true, inside.min};
+    return {std::nullopt, true, T(0)};
+}
+
+} // namespace detail
+
+/// Where a ray through layered air first meets a surface (see first_hit_through below).
+template <class SceneT, IndexField F, class OnPiece = detail::AnyPiece>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const LayeredAir<F>& air,
+                                                                                const Ray<typename SceneT::scalar_type>& ray,
+                                                                                Ray<typename SceneT::scalar_type>& segment,
+                                                                                typename SceneT::scalar_type* path = nullptr, OnPiece&& on_piece = {}) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    static_assert(std::same_as<T, typename F::scalar_type>, "LayeredAir's field must have the scene's scalar type");
+    const LayeredMedium<F> medium(air.field, air.bottom, air.top, air.layers);
+    segment = {ray.origin, normalize(ray.direction)};
+    detail::PathLength<T> length_so_far{T(0), path};
+    // The last straight piece, to the surface it meets or on forever.
+    const auto last_piece = [&](std::optional<Hit<T>> hit) -> std::optional<Hit<T>> {
+        if (!on_piece(std::as_const(segment), hit ? hit->crossing.t : infinity<T>, length_so_far.travelled)) return std::nullopt;
+        return length_so_far.landed(hit);
+    };
+    const auto to_box = detail::approach(scene, Aabb<T>{{-infinity<T>, air.bottom, -infinity<T>}, {infinity<T>, air.top, infinity<T>}}, segment);
+    if (to_box.hit || !to_box.reaches) return last_piece(to_box.hit);
+    if (to_box.distance > T(0) && !on_piece(std::as_const(segment), to_box.distance, T(0))) return std::nullopt;
+    length_so_far.travelled = to_box.distance;
+    Vec3<T> origin = segment.at(to_box.distance), direction = segment.direction;
+    // Entering through the top or bottom face, the ray starts in the layer it enters.
+    int layer = medium.layer_of(origin.y + (direction.y > T(0) ? T(0.5) : T(-0.5)) * (air.top - air.bottom) / T(air.layers));
+    for (int i = 0; i < 4 * air.layers + 4; ++i) {
+        const Vec3<T> start = origin, heading = direction;
+        const bool inside_layers = medium.step(origin, direction, layer);
+        const T length_now = length(origin - start);
+        segment = {start, heading};
+        if (length_now > T(0)) {
+            if (auto hit = detail::hit_on_piece(scene, segment, length_now)) return last_piece(hit);
+            if (!on_piece(std::as_const(segment), length_now, length_so_far.travelled)) return std::nullopt;
+        }
+        length_so_far.travelled += length_now;
+        if (!inside_layers) {
+            if (heading.y == T(0)) return last_piece(scene.closest_hit(segment, {T(0), infinity<T>})); // level: straight on
+            segment = {origin, direction};
+            return last_piece(scene.closest_hit(segment, {T(0), infinity<T>}));
+        }
+    }
+    return std::nullopt;
+}
+
+/// Where a ray through curved air first meets a surface of the scene, or nothing; on a
+/// hit, `segment` is the straight piece (unit direction) on which it lies, the ray to
+/// shade with, and `path` (if given) receives the length of the whole curved path.
+/// on_piece(piece, length, before) is shown each straight piece of the path in order
+/// (unit direction; its length, infinite for the last if it meets nothing; the path's
+/// length before it), and returns false to stop the path there (then nothing is met).
+template <class SceneT, IndexField F, class OnPiece = detail::AnyPiece>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const GradedAir<F>& air,
+                                                                                const Ray<typename SceneT::scalar_type>& ray,
+                                                                                Ray<typename SceneT::scalar_type>& segment,
+                                                                                typename SceneT::scalar_type* path = nullptr, OnPiece&& on_piece = {}) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    static_assert(std::same_as<T, typename F::scalar_type>, "GradedAir's field must have the scene's scalar type");
+    segment = {ray.origin, normalize(ray.direction)};
+    detail::PathLength<T> length_so_far{T(0), path}; // along the path, up to `segment`'s origin
+    // The last straight piece, to the surface it meets or on forever.
+    const auto last_piece = [&](std::optional<Hit<T>> hit) -> std::optional<Hit<T>> {
+        if (!on_piece(std::as_const(segment), hit ? hit->crossing.t : infinity<T>, length_so_far.travelled)) return std::nullopt;
+        return length_so_far.landed(hit);
+    };
+    const auto to_box = detail::approach(scene, air.region, segment);
+    if (to_box.hit || !to_box.reaches) return last_piece(to_box.hit);
+    if (to_box.distance > T(0) && !on_piece(std::as_const(segment), to_box.distance, T(0))) return std::nullopt;
+    length_so_far.travelled = to_box.distance;
+    CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(to_box.distance), segment.direction});
+    const AdaptiveStepper<F> stepper(air.field, air.stepping);
+    T dt = T(0);
+    for (int i = 0; i < air.max_steps; ++i) {
+        const CurvedRay<T> start = curved;
+        T taken = T(0);
+        stepper.step(curved, dt, &taken);
+        const Vec3<T> chord = curved.position - start.position;
+        const T chord_length = length(chord);
+        if (!(chord_length > T(0))) continue;
+        segment = {start.position, chord / chord_length};
+        if (auto hit = detail::hit_on_piece(scene, segment, chord_length)) {
+            // Home in on the landing point along the curve: halve the step while its
+            // chord is long, keeping the half whose chord meets the surface.
+            CurvedRay<T> from = start;
+            T h = taken;
+            T length_now = chord_length;
+            while (length_now > air.landing_chord && h > T(0)) {
+                h /= T(2);
+                const CurvedRay<T> middle = sharma_step(air.field, from, h);
+                const Vec3<T> first = middle.position - from.position;
+                const T first_length = length(first);
+                if (!(first_length > T(0))) break;
+                const Ray<T> first_segment{from.position, first / first_length};
+                if (auto near = detail::hit_on_piece(scene, first_segment, first_length)) {
+                    segment = first_segment;
+                    hit = near;
+                    length_now = first_length;
+                    continue;
+                }
+                const CurvedRay<T> end = sharma_step(air.field, middle, h);
+                const Vec3<T> second = end.position - middle.position;
+                const T second_length = length(second);
+                if (!(second_length > T(0))) break;
+                const Ray<T> second_segment{middle.position, second / second_length};
+                auto far = detail::hit_on_piece(scene, second_segment, second_length);
+                if (!far) break; // the curve grazes past where the chord met it: keep the chord's hit
+                if (!on_piece(first_segment, first_length, length_so_far.travelled)) return std::nullopt; // passed
+                segment = second_segment;
+                hit = far;
+                from = middle;
+                length_so_far.travelled += first_length;
+                length_now = second_length;
+            }
+            return last_piece(hit);
+        }
+        if (!on_piece(std::as_const(segment), chord_length, length_so_far.travelled)) return std::nullopt;
+        length_so_far.travelled += chord_length;
+        if (!air.region.contains(curved.position)) {
+            // Out of the box: straight from here on.
+            segment = {curved.position, curved.direction()};
+            return last_piece(scene.closest_hit(segment, {T(0), infinity<T>}));
+        }
+    }
+    return std::nullopt;
+}
+
+/// The air through which rays curve: the air itself (GradedAir, LayeredAir), or the air a
+/// medium fills (FilledAir's base).
+template <class Air>
+[[nodiscard]] constexpr const auto& bending_air(const Air& air) noexcept
+{
+    if constexpr (requires { air.base; }) return air.base;
+    else return air;
+}
+
+/// The first surface a ray in the air meets: along the curve in GradedAir or LayeredAir
+/// (or fog filling them), straight in StraightAir (where `segment` is the ray itself).
+/// `path`, if given, receives the length travelled to it. on_piece, if given, is shown
+/// each straight piece of the path (first_hit_through's; in straight air the one piece,
+/// the ray with its direction made unit) and may stop the path (then nothing is met).
+template <class SceneT, class Air, class OnPiece = detail::AnyPiece>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_in_air(const SceneT& scene, const Air& air,
+                                                                               const Ray<typename SceneT::scalar_type>& ray,
+                                                                               Ray<typename SceneT::scalar_type>& segment,
+                                                                               typename SceneT::scalar_type* path = nullptr, OnPiece&& on_piece = {}) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    if constexpr (Air::curved) {
+        return first_hit_through(scene, bending_air(air), ray, segment, path, on_piece);
+    } else {
+        segment = ray;
+        auto hit = scene.closest_hit(ray, {T(0), infinity<T>});
+        if constexpr (!std::is_same_v<std::remove_cvref_t<OnPiece>, detail::AnyPiece>) {
+            const T scale = length(ray.direction);
+            if (!on_piece(Ray<T>{ray.origin, normalize(ray.direction)}, hit ? hit->crossing.t * scale : infinity<T>, T(0))) return std::nullopt;
+        }
+        if (hit && path != nullptr) *path = hit->crossing.t * length(ray.direction);
+        return hit;
+    }
+}
+
+} // namespace prism
+
 // ---- prism/transport/media.hpp ----
 // What the media a path is in (medium/nesting.hpp's MediumStack) do to light on its way:
-// the index on an interface's far side, the attenuation along a segment, where a walker
-// scatters in a medium that scatters (an object's interior, or the scene's air when it is
-// FilledAir), and what such air lets through along a shadow ray.
+// the index on an interface's far side, the attenuation along a segment, the parts of a
+// path that lie in a medium that scatters (an object's interior, or the scene's air when it
+// is FilledAir, straight or curved), and what such air lets through along a shadow ray.
 
+
+#include <optional>
 
 namespace prism {
 
@@ -9197,23 +9451,28 @@ void for_scattering_medium_along(const SceneT& scene, const Air& air, const Medi
     }
 }
 
-/// A walker's flight along `segment` (unit direction) through the medium it is in, up to
-/// t_max: where that medium scatters (for_scattering_medium_along), on_stretch(medium,
-/// stretch, length) is shown the stretch first (its ray from where it starts, `power` as
-/// the walker enters it), then the walker's flight is drawn (the medium's sample_flight)
-/// and `power` takes the draw's weight; where it scatters before t_max,
-/// on_scatter(medium, distance, weight) is called (the weight already taken).
-template <class SceneT, class Air, Scalar T, class OnScatter, class OnStretch>
-void fly_through_medium(const SceneT& scene, const Air& air, const MediumStack& media, const Ray<T>& segment, T t_max, Rgb<T>& power,
-                        Pcg32& rng, OnScatter&& on_scatter, OnStretch&& on_stretch)
+/// The first surface a path from `ray` meets in the media it is in (`media`: inside an
+/// object straight, in the air along the air's curve), with `segment` and `path` as
+/// first_hit_in_air's, and f(medium, piece, t0, t1, before) shown, in order along the
+/// way, each part [t0, t1] of a straight piece (unit direction) that lies in a medium
+/// that scatters (for_scattering_medium_along), `before` the path's length up to the
+/// piece's origin. f returns false to stop the path there (a walker that scattered or was
+/// absorbed; then nothing is met); true to go on.
+template <class SceneT, class Air, class F>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through_media(const SceneT& scene, const Air& air, const MediumStack& media,
+                                                                                      const Ray<typename SceneT::scalar_type>& ray,
+                                                                                      Ray<typename SceneT::scalar_type>& segment,
+                                                                                      typename SceneT::scalar_type* path, F&& f)
 {
-    for_scattering_medium_along(scene, air, media, segment, t_max, [&](const auto& medium, T t0, T t1) {
-        const Ray<T> stretch{segment.at(t0), segment.direction};
-        on_stretch(medium, stretch, t1 - t0);
-        const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
-        power *= flight.weight;
-        if (flight.scattered) on_scatter(medium, t0 + flight.distance, flight.weight);
-    });
+    using T = typename SceneT::scalar_type;
+    bool stopped = false;
+    const auto on_piece = [&](const Ray<T>& piece, T length, T before) {
+        for_scattering_medium_along(scene, air, media, piece, length, [&](const auto& medium, T t0, T t1) { stopped = !f(medium, piece, t0, t1, before); });
+        return !stopped;
+    };
+    auto hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, path, on_piece) : first_hit_in_air(scene, StraightAir{}, ray, segment, path, on_piece);
+    if (stopped) return std::nullopt;
+    return hit;
 }
 
 /// What the scene's air lets through along `ray` (unit direction) over `distance` (may be
@@ -9235,202 +9494,6 @@ template <class Air, Scalar T>
 
 } // namespace prism
 
-// ---- prism/transport/travel.hpp ----
-// How a ray travels through the scene's air to the first surface it meets
-// (first_hit_in_air): straight in StraightAir; in GradedAir it follows the ray equation
-// by AdaptiveStepper's steps, and each step's chord is tested against the scene: the
-// first surface a chord meets is where the ray lands (a chord is within the stepper's
-// tolerance of the true path). Surfaces shade as usual; the rays they send on (any ray
-// back in the air) curve again. Shadow rays stay straight: over the few metres to
-// kilometres a scene spans, air bends light by well under a degree, enough to move an
-// image (the mirage) and too little to move a shadow's edge visibly; tracing the curved
-// path that reaches a light is a boundary-value problem left for later.
-
-
-#include <limits>
-#include <optional>
-
-namespace prism {
-
-namespace detail {
-
-/// A straight piece of a path, tested against the scene a hair past its end: a surface
-/// exactly where one piece ends and the next begins (a floor on a layer boundary) is
-/// otherwise missed by both, the first ending just short of it by rounding, the second
-/// starting on it.
-template <class SceneT>
-[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> hit_on_piece(const SceneT& scene, const Ray<typename SceneT::scalar_type>& piece,
-                                                                           typename SceneT::scalar_type piece_length) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    const T slack = T(64) * std::numeric_limits<T>::epsilon() * (piece_length + max_component(abs(piece.origin)));
-    return scene.closest_hit(piece, {T(0), piece_length + slack});
-}
-
-/// The length of a path up to its current piece, told where the path lands.
-template <Scalar T>
-struct PathLength {
-    T travelled = T(0);
-    T* out = nullptr;
-
-    [[nodiscard]] std::optional<Hit<T>> landed(std::optional<Hit<T>> hit) const noexcept
-    {
-        if (hit && out != nullptr) *out = travelled + hit->crossing.t;
-        return hit;
-    }
-};
-
-/// The straight start of a path toward a slab or box of air: the surface it meets before
-/// reaching the box (`hit`), or whether it reaches the box at all and how far away.
-template <Scalar T>
-struct Approach {
-    std::optional<Hit<T>> hit;
-    bool reaches = false;
-    T distance = T(0);
-};
-
-template <class SceneT>
-[[nodiscard]] Approach<typename SceneT::scalar_type> approach(const SceneT& scene, const Aabb<typename SceneT::scalar_type>& box,
-                                                            const Ray<typename SceneT::scalar_type>& segment) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    const Interval<T> inside = box.clip(segment, {T(0), infinity<T>});
-    if (inside.empty()) return {scene.closest_hit(segment, {T(0), infinity<T>}), false, T(0)};
-    if (inside.min > T(0)) return {scene.closest_hit(segment, {T(0), inside.min}), true, inside.min};
-    return {std::nullopt, true, T(0)};
-}
-
-} // namespace detail
-
-/// Where a ray through layered air first meets a surface (see first_hit_through below).
-template <class SceneT, IndexField F>
-[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const LayeredAir<F>& air,
-                                                                                const Ray<typename SceneT::scalar_type>& ray,
-                                                                                Ray<typename SceneT::scalar_type>& segment,
-                                                                                typename SceneT::scalar_type* path = nullptr) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    static_assert(std::same_as<T, typename F::scalar_type>, "LayeredAir's field must have the scene's scalar type");
-    const LayeredMedium<F> medium(air.field, air.bottom, air.top, air.layers);
-    segment = {ray.origin, normalize(ray.direction)};
-    detail::PathLength<T> length_so_far{T(0), path};
-    const auto to_box = detail::approach(scene, Aabb<T>{{-infinity<T>, air.bottom, -infinity<T>}, {infinity<T>, air.top, infinity<T>}}, segment);
-    if (to_box.hit || !to_box.reaches) return length_so_far.landed(to_box.hit);
-    length_so_far.travelled = to_box.distance;
-    Vec3<T> origin = segment.at(to_box.distance), direction = segment.direction;
-    // Entering through the top or bottom face, the ray starts in the layer it enters.
-    int layer = medium.layer_of(origin.y + (direction.y > T(0) ? T(0.5) : T(-0.5)) * (air.top - air.bottom) / T(air.layers));
-    for (int i = 0; i < 4 * air.layers + 4; ++i) {
-        const Vec3<T> start = origin, heading = direction;
-        const bool inside_layers = medium.step(origin, direction, layer);
-        const T length_now = length(origin - start);
-        segment = {start, heading};
-        if (length_now > T(0)) {
-            if (auto hit = detail::hit_on_piece(scene, segment, length_now)) return length_so_far.landed(hit);
-        }
-        length_so_far.travelled += length_now;
-        if (!inside_layers) {
-            if (heading.y == T(0)) return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>})); // level: straight on
-            segment = {origin, direction};
-            return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>}));
-        }
-    }
-    return std::nullopt;
-}
-
-/// Where a ray through curved air first meets a surface of the scene, or nothing; on a
-/// hit, `segment` is the straight piece (unit direction) on which it lies, the ray to
-/// shade with, and `path` (if given) receives the length of the whole curved path.
-template <class SceneT, IndexField F>
-[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const GradedAir<F>& air,
-                                                                                const Ray<typename SceneT::scalar_type>& ray,
-                                                                                Ray<typename SceneT::scalar_type>& segment,
-                                                                                typename SceneT::scalar_type* path = nullptr) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    static_assert(std::same_as<T, typename F::scalar_type>, "GradedAir's field must have the scene's scalar type");
-    segment = {ray.origin, normalize(ray.direction)};
-    detail::PathLength<T> length_so_far{T(0), path}; // along the path, up to `segment`'s origin
-    const auto to_box = detail::approach(scene, air.region, segment);
-    if (to_box.hit || !to_box.reaches) return length_so_far.landed(to_box.hit);
-    length_so_far.travelled = to_box.distance;
-    CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(to_box.distance), segment.direction});
-    const AdaptiveStepper<F> stepper(air.field, air.stepping);
-    T dt = T(0);
-    for (int i = 0; i < air.max_steps; ++i) {
-        const CurvedRay<T> start = curved;
-        T taken = T(0);
-        stepper.step(curved, dt, &taken);
-        const Vec3<T> chord = curved.position - start.position;
-        const T chord_length = length(chord);
-        if (!(chord_length > T(0))) continue;
-        segment = {start.position, chord / chord_length};
-        if (auto hit = detail::hit_on_piece(scene, segment, chord_length)) {
-            // Home in on the landing point along the curve: halve the step while its
-            // chord is long, keeping the half whose chord meets the surface.
-            CurvedRay<T> from = start;
-            T h = taken;
-            T length_now = chord_length;
-            while (length_now > air.landing_chord && h > T(0)) {
-                h /= T(2);
-                const CurvedRay<T> middle = sharma_step(air.field, from, h);
-                const Vec3<T> first = middle.position - from.position;
-                const T first_length = length(first);
-                if (!(first_length > T(0))) break;
-                const Ray<T> first_segment{from.position, first / first_length};
-                if (auto near = detail::hit_on_piece(scene, first_segment, first_length)) {
-                    segment = first_segment;
-                    hit = near;
-                    length_now = first_length;
-                    continue;
-                }
-                const CurvedRay<T> end = sharma_step(air.field, middle, h);
-                const Vec3<T> second = end.position - middle.position;
-                const T second_length = length(second);
-                if (!(second_length > T(0))) break;
-                const Ray<T> second_segment{middle.position, second / second_length};
-                auto far = detail::hit_on_piece(scene, second_segment, second_length);
-                if (!far) break; // the curve grazes past where the chord met it: keep the chord's hit
-                segment = second_segment;
-                hit = far;
-                from = middle;
-                length_so_far.travelled += first_length;
-                length_now = second_length;
-            }
-            return length_so_far.landed(hit);
-        }
-        length_so_far.travelled += chord_length;
-        if (!air.region.contains(curved.position)) {
-            // Out of the box: straight from here on.
-            segment = {curved.position, curved.direction()};
-            return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>}));
-        }
-    }
-    return std::nullopt;
-}
-
-/// The first surface a ray in the air meets: along the curve in GradedAir, straight in
-/// StraightAir (where `segment` is the ray itself). `path`, if given, receives the
-/// length travelled to it.
-template <class SceneT, class Air>
-[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_in_air(const SceneT& scene, const Air& air,
-                                                                               const Ray<typename SceneT::scalar_type>& ray,
-                                                                               Ray<typename SceneT::scalar_type>& segment,
-                                                                               typename SceneT::scalar_type* path = nullptr) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    if constexpr (Air::curved) {
-        return first_hit_through(scene, air, ray, segment, path);
-    } else {
-        segment = ray;
-        auto hit = scene.closest_hit(ray, {T(0), infinity<T>});
-        if (hit && path != nullptr) *path = hit->crossing.t * length(ray.direction);
-        return hit;
-    }
-}
-
-} // namespace prism
-
 // ---- prism/transport/random_walk.hpp ----
 // random_walk: the path a photon takes through a scene, shared by the photon tracer, the
 // light tracer and the path tracer (a camera path carries importance by the same rules).
@@ -9445,13 +9508,15 @@ template <class SceneT, class Air>
 // path on its way to a bright, hard-to-find light (a caustic) is not cut short by the dim
 // surfaces it left. In the air the path follows the air's curve (GradedAir), inside
 // objects straight lines. In a medium that scatters (an object's Fog, or FilledAir) the
-// walk draws where it scatters along each segment (fly_through_medium); there the caller's
+// walk draws where it scatters along each piece of its way (first_hit_through_media, the
+// curved pieces in fog filling graded air included); there the caller's
 // `on_medium` sees the vertex, and the walk goes on in a direction drawn from the
 // medium's phase function.
 
 
 #include <algorithm>
 #include <concepts>
+#include <optional>
 #include <type_traits>
 #include <variant>
 
@@ -9539,19 +9604,6 @@ struct WalkMediumStretch {
     Pcg32& rng;               ///< the walk's stream
 };
 
-namespace detail {
-
-/// Several callables' call operators as one: an on_medium that takes both a walk's medium
-/// vertices and its stretches.
-template <class... F>
-struct Overload : F... {
-    using F::operator()...;
-};
-template <class... F>
-Overload(F...) -> Overload<F...>;
-
-} // namespace detail
-
 /// What a walk does where it scatters in a medium when its caller says nothing: it goes on.
 struct IgnoreMedia {
     /// Goes on (whatever it is shown: the medium, the vertex, a photon's power).
@@ -9583,12 +9635,17 @@ struct IgnoreEmitters {
 /// How far a walk may go.
 struct WalkLimits {
     int max_bounces = 256; ///< surfaces past the first the walk may scatter at (it meets at most max_bounces + 1)
+    /// Scatterings in media past the first the walk may follow, counted apart from the
+    /// surfaces: in dense fog that does not absorb a path scatters hundreds of times
+    /// between two surfaces (16 in all lost 7 % of the light of a fog of optical depth 8).
+    int max_medium_bounces = 1000;
     /// Surfaces a camera path (Transport::radiance) scatters at before Russian roulette on
     /// its throughput may end it (path_roulette); a photon's roulette is per bounce.
     int roulette_depth = 2;
 };
 
-/// Walk from `ray` carrying `power` through at most limits.max_bounces + 1 surfaces.
+/// Walk from `ray` carrying `power` through at most limits.max_bounces + 1 surfaces and
+/// limits.max_medium_bounces + 1 scatterings in media.
 /// on_diffuse(material, WalkVertex) is called at every surface with a non-delta lobe
 /// (diffuse, or glossy and not a mirror: scatters_smoothly) and returns the
 /// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
@@ -9598,7 +9655,8 @@ struct WalkLimits {
 /// camera's (scatter_photon); a camera path is ended by path_roulette after
 /// limits.roulette_depth surfaces. on_medium(medium, WalkMediumVertex) is called where the
 /// path scatters in a medium (a scene or air with none never compiles it) and returns
-/// whether the walk goes on; such a vertex counts as a surface toward the limits.
+/// whether the walk goes on; such vertices count toward their own limit, and toward
+/// roulette_depth with the surfaces.
 /// `start`: the transmissive objects the ray starts inside (a camera's: Scene::media_at).
 template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters,
           class OnMedium = IgnoreMedia>
@@ -9606,7 +9664,6 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                  Rgb<typename SceneT::scalar_type> power, Pcg32& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
                  OnEmitter&& on_emitter = {}, OnMedium&& on_medium = {}, MediumStack start = {})
 {
-    static_assert(!(Air::curved && air_scatters<Air>), "air that both curves rays and scatters light is not supported yet");
     using T = typename SceneT::scalar_type;
     bool direct = true, first_specular = false;
     int diffuse_bounces = 0, surface_bounces = 0;
@@ -9615,42 +9672,43 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
     MediumStack media = start; // the transmissive objects the path is inside of
     Vec3<T> last_point = ray.origin;
     T last_pdf = T(0);
-    for (int bounce = 0; bounce <= limits.max_bounces; ++bounce) {
+    int medium_bounces = 0; // of the bounces, those in media
+    for (int bounce = 0; bounce - medium_bounces <= limits.max_bounces; ++bounce) {
         // In the air a path follows the air's curve; inside objects, straight lines.
         Ray<T> segment = ray;
         T path = T(0);
-        const auto hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, &path)
-                                       : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
+        std::optional<Hit<T>> hit;
         if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
-            // Where the path scatters in the medium it crosses before the surface.
+            // Where the path scatters in the media it crosses before the surface, piece by
+            // piece of its way: on each stretch of a medium that scatters, the caller's
+            // on_medium sees the stretch, then the walker's flight is drawn (the medium's
+            // sample_flight) and its power takes the draw's weight.
             enum class InMedium { passed, scattered, absorbed } in_medium = InMedium::passed;
-            const Vec3<T> d = normalize(segment.direction);
-            const T scale = length(segment.direction);
-            const T t_max = hit ? hit->crossing.t * scale : infinity<T>;
-            Ray<T> stretch{};
-            T stretch_length = T(0);
-            Rgb<T> entering{};
-            const auto on_stretch = [&]<class Md>(const Md& medium, const Ray<T>& r, T length) {
-                stretch = r, stretch_length = length, entering = power;
+            hit = first_hit_through_media(scene, air, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
+                const Ray<T> stretch{piece.at(t0), piece.direction};
+                const Rgb<T> entering = power;
                 if constexpr (std::is_invocable_v<OnMedium&, const Md&, const WalkMediumStretch<T>&>)
-                    on_medium(medium, WalkMediumStretch<T>{stretch, length, power, diffuse_bounces, media, rng});
-            };
-            fly_through_medium(scene, air, media, Ray<T>{segment.origin, d}, t_max, power, rng, [&]<class Md>(const Md& medium, T s, const Rgb<T>& weight) {
-                const Vec3<T> p = segment.origin + s * d;
-                travelled += s; // (a straight segment: inside objects, or in straight air)
-                const bool last = bounce == limits.max_bounces;
+                    on_medium(medium, WalkMediumStretch<T>{stretch, t1 - t0, power, diffuse_bounces, media, rng});
+                const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
+                power *= flight.weight;
+                if (!flight.scattered) return true;
+                const T s = t0 + flight.distance;
+                const Vec3<T>& d = piece.direction;
+                const Vec3<T> p = piece.origin + s * d;
+                travelled += before + s;
+                const bool last = medium_bounces == limits.max_medium_bounces;
                 in_medium = InMedium::absorbed;
                 if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last,
-                                                          rng, surface_bounces, stretch, stretch_length, entering}))
-                    return;
+                                                          rng, surface_bounces, stretch, t1 - t0, entering}))
+                    return false;
                 if constexpr (Mode == Transport::importance) {
                     // A photon keeps its power: it goes on with the chance of the draw's
                     // largest weight (the albedo in a grey medium), divided out.
-                    const T keep = std::min(T(1), max_component(weight));
-                    if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return;
+                    const T keep = std::min(T(1), max_component(flight.weight));
+                    if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return false;
                     power /= keep;
                 } else {
-                    if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return;
+                    if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return false;
                 }
                 const T u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
                 const PhaseSample<T> next = medium.phase.sample(d, u1, u2);
@@ -9661,12 +9719,16 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 ++surface_bounces;
                 if (direct) first_specular = false;
                 in_medium = InMedium::scattered;
-            }, on_stretch);
+                return false;
+            });
             if (in_medium == InMedium::absorbed) return;
             if (in_medium == InMedium::scattered) {
+                if (++medium_bounces > limits.max_medium_bounces) return;
                 direct = false;
                 continue;
             }
+        } else {
+            hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, &path) : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
         }
         if (!hit) {
             on_escape(WalkEscape<T>{segment, power, diffuse_bounces, first_specular, last_pdf});
@@ -9679,7 +9741,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         const Next next_step = scene.visit_material(*hit, [&]<class M>(const M& material) -> Next {
             // What the medium it travelled in let through, before anything else.
             attenuate_segment(scene, media, material, c, segment, power);
-            const bool last = bounce == limits.max_bounces;
+            const bool last = bounce - medium_bounces == limits.max_bounces;
             if constexpr (emits<M>)
                 on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, T(1), surface_bounces});
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
@@ -9786,7 +9848,8 @@ namespace prism {
 struct PhotonTracerConfig {
     std::size_t global_photons = 200000;  ///< emitted for the global map
     std::size_t caustic_photons = 200000; ///< emitted toward specular objects for the caustic map
-    int max_bounces = 16;                 ///< bounces followed at most
+    int max_bounces = 16;                 ///< bounces at surfaces followed at most
+    int max_medium_bounces = 1000;        ///< scatterings in media followed at most (WalkLimits'; in fog that absorbs, roulette ends a photon long before)
     bool shadow_photons = true; ///< store shadow photons in the global map
     std::uint64_t seed = 0; ///< with the light, fixes every photon
     unsigned threads = 0; ///< 0 = all hardware threads
@@ -9811,6 +9874,7 @@ inline void validate(const PhotonTracerConfig& config)
         require_memory("PhotonTracerConfig " + std::string(name) + " = " + std::to_string(count) + " (its photon records alone)", bytes);
     }
     if (config.max_bounces < 0) throw_invalid("PhotonTracerConfig max_bounces must be >= 0, got ", config.max_bounces);
+    if (config.max_medium_bounces < 0) throw_invalid("PhotonTracerConfig max_medium_bounces must be >= 0, got ", config.max_medium_bounces);
     if (config.dispersion_bands < 1 || config.dispersion_bands > SpectralBands<float>::max_count)
         throw_invalid("PhotonTracerConfig dispersion_bands must be in [1, ", SpectralBands<float>::max_count, "], got ", config.dispersion_bands);
 }
@@ -9935,7 +9999,7 @@ private:
         if (e->aimed && aimed_at_earlier_target(emitters, *e, photon.ray)) return;
         // A light without falloff: the power a photon stores grows with its path squared.
         const bool without_falloff = photon.without_falloff;
-        random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, WalkLimits{.max_bounces = config_.max_bounces},
+        random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, WalkLimits{.max_bounces = config_.max_bounces, .max_medium_bounces = config_.max_medium_bounces},
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         return visit(material, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
                     },
@@ -12838,6 +12902,23 @@ private:
 
 } // namespace prism
 
+// ---- prism/core/overload.hpp ----
+// Overload{f, g, ...}: several callables' call operators as one callable, so one argument
+// can take what a caller is shown in several shapes (a walk's on_medium, shown both the
+// walk's medium vertices and the stretches it crosses).
+
+namespace prism {
+
+/// The call operators of every F, as one object's overloads.
+template <class... F>
+struct Overload : F... {
+    using F::operator()...;
+};
+template <class... F>
+Overload(F...) -> Overload<F...>;
+
+} // namespace prism
+
 // ---- prism/transport/direct.hpp ----
 // Light arriving from each light at a surface point, by shadow rays: shared by the integrators.
 
@@ -13065,7 +13146,7 @@ public:
     {
         Rgb<T> sum{T(0)};
         const LightSampling sampling{&rng, config_.area_light_grid};
-        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{config_.max_depth, config_.roulette_depth},
+        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth, .roulette_depth = config_.roulette_depth},
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         const Crossing<T>& c = at.crossing();
                         const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
@@ -13122,7 +13203,7 @@ public:
                                         met_light_weight(at.last_pdf, at.first_specular, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
                         }
                     },
-                    detail::Overload{
+                    Overload{
                         [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
                             // In a medium: each light's samples weighed by the phase function
                             // toward them (the bounce's density there, for MIS), no cosine;
@@ -13137,7 +13218,7 @@ public:
                                 if constexpr (has_equiangular<L, Md>) {
                                     if (config_.equiangular) {
                                         const T t = dot(at.point - at.stretch.origin, at.stretch.direction);
-                                        const T flight = flight_pdf(medium, at.entering, t);
+                                        const T flight = medium.flight_pdf(at.entering, t);
                                         shared = flight / (flight + Equiangular(at.stretch, at.stretch_length, light.position).pdf(t));
                                     }
                                 }
@@ -13203,7 +13284,10 @@ private:
     /// Whether a light is sampled along stretches of medium Md: a delta light at a point,
     /// in a uniform medium.
     template <class L, class Md>
-    static constexpr bool has_equiangular = uniform_medium<Md> && is_delta_light<L> && requires(const L& light) { light.position; };
+    static constexpr bool has_equiangular = uniform_medium<Md> && is_delta_light<L> && requires(const L& light, const Md& medium, const Rgb<T>& power) {
+        light.position;
+        medium.flight_pdf(power, T(0));
+    };
 
     /// Equiangular sampling of a stretch (ray from its start, unit direction, length may
     /// be infinite) toward a point c: in the angle theta seen from c, uniform, so that
@@ -13226,20 +13310,6 @@ private:
         [[nodiscard]] T pdf(T t) const noexcept { return theta1 > theta0 ? h / ((theta1 - theta0) * (h * h + (t - along) * (t - along))) : T(0); }
     };
 
-    /// The density with which a uniform medium's free flight, drawn for a path carrying
-    /// `entering` (Fog::sample_flight's mixture over channels), ends at t along its stretch.
-    template <class Md>
-    [[nodiscard]] static T flight_pdf(const Md& medium, const Rgb<T>& entering, T t) noexcept
-    {
-        const Rgb<T> sigma = medium.extinction();
-        const T total = entering.x + entering.y + entering.z;
-        const Rgb<T> chance = total > T(0) ? entering / total : Rgb<T>(T(1) / T(3));
-        T pdf = T(0);
-        for (int c = 0; c < 3; ++c)
-            if (sigma[c] > T(0)) pdf += chance[c] * sigma[c] * std::exp(-sigma[c] * t);
-        return pdf;
-    }
-
     /// One equiangular sample of `light` along a stretch of uniform `medium`: its light
     /// scattered once toward the path there, through the medium's transmittance back to
     /// the stretch's start, over the sample's density, weighed against the free flight's
@@ -13252,7 +13322,7 @@ private:
         const T density = rule.pdf(t);
         if (!(t >= T(0) && t < stretch.length && density > T(0) && density < infinity<T>)) return Rgb<T>(T(0));
         const Vec3<T> p = stretch.ray.at(t);
-        const T w = density / (density + flight_pdf(medium, stretch.power, t));
+        const T w = density / (density + medium.flight_pdf(stretch.power, t));
         Rgb<T> out{T(0)};
         for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, p, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
             const T phase = medium.phase.value(dot(stretch.ray.direction, s.wi));
@@ -13378,6 +13448,12 @@ public:
         /// radiance estimate along camera rays and of the volume estimate where a gather
         /// ray scatters.
         float volume_radius = 0.05f;
+        /// > 0: the beam estimate's radius for the global pass's volume photons (light
+        /// scattered more than once, or after a diffuse surface), which is smooth and
+        /// sparse: read with a wider kernel, as the global map is on surfaces, it shows no
+        /// blotches where a few photons near the camera would each fill a disk of the
+        /// image. 0: volume_radius. (Volumetric caustics keep volume_radius.)
+        float indirect_volume_radius = 0.0f;
     };
 
     /// Traces the photon maps (the expensive part), then renders with them.
@@ -13407,8 +13483,14 @@ private:
         if (!(cache.min_pixels > 0.0f && cache.min_pixels <= cache.max_pixels && is_finite(cache.max_pixels)))
             detail::throw_invalid("PhotonMapper irradiance_cache needs 0 < min_pixels <= max_pixels, finite, got ", cache.min_pixels, " and ", cache.max_pixels);
         if (config.max_depth < 0) detail::throw_invalid("PhotonMapper max_depth must be >= 0, got ", config.max_depth);
-        if (!(config.volume_radius * config.volume_radius >= std::numeric_limits<float>::min() && is_finite(config.volume_radius * config.volume_radius)))
+        if (!(config.volume_radius > 0.0f && config.volume_radius * config.volume_radius >= std::numeric_limits<float>::min() &&
+              is_finite(config.volume_radius * config.volume_radius)))
             detail::throw_invalid("PhotonMapper volume_radius must be in [1.1e-19, 1.8e19] (its square a finite, normal float), got ", config.volume_radius);
+        if (config.indirect_volume_radius != 0.0f &&
+            !(config.indirect_volume_radius > 0.0f && config.indirect_volume_radius * config.indirect_volume_radius >= std::numeric_limits<float>::min() &&
+              is_finite(config.indirect_volume_radius * config.indirect_volume_radius)))
+            detail::throw_invalid("PhotonMapper indirect_volume_radius must be 0 or in [1.1e-19, 1.8e19] (its square a finite, normal float), got ",
+                                  config.indirect_volume_radius);
         if (config.area_light_grid < 1 || config.area_light_grid > 64)
             detail::throw_invalid("PhotonMapper area_light_grid must be in [1, 64], got ", config.area_light_grid);
         detail::require_non_negative("PhotonMapper min_weight", config.min_weight);
@@ -13525,7 +13607,7 @@ private:
     static void validate(const Estimator& e, const char* name)
     {
         // The estimates divide by pi r^2: its square must be a finite, normal float.
-        if (!(e.radius * e.radius >= std::numeric_limits<float>::min() && is_finite(e.radius * e.radius)))
+        if (!(e.radius > 0.0f && e.radius * e.radius >= std::numeric_limits<float>::min() && is_finite(e.radius * e.radius)))
             detail::throw_invalid(name, " radius must be in [1.1e-19, 1.8e19] (its square a finite, normal float), got ", e.radius);
         if (e.k > PhotonMap::max_k) detail::throw_invalid(name, " k must be at most ", PhotonMap::max_k, ", got ", e.k);
         if (!(e.max_height_ratio > 0.0f && e.max_height_ratio <= 1.0f)) detail::throw_invalid(name, " max_height_ratio must be in (0, 1], got ", e.max_height_ratio);
@@ -13539,33 +13621,48 @@ private:
     [[nodiscard]] LightParts<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength, const MediumStack& media) const noexcept
     {
         Ray<T> segment = ray;
-        const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
-        LightParts<T> parts = !hit ? LightParts<T>{.direct = scene_->escaped(segment.direction)}
-                                   : scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
         if constexpr (has_media) {
             // Through a medium that scatters: what lies beyond is seen through its
             // transmittance, and the light it scatters toward the camera along the way is
             // the beam radiance estimate of the volume photons (Jarosz et al. 2008): each
-            // within volume_radius of the segment counts its power times the phase
-            // function toward the camera and the transmittance to it, over pi r^2.
-            const Vec3<T> d = normalize(segment.direction);
-            const T t_max = hit ? hit->crossing.t * length(segment.direction) : infinity<T>;
-            const Ray<T> unit{segment.origin, d};
-            for_scattering_medium_along(*scene_, air_, media, unit, t_max, [&](const auto& medium, T t0, T t1) {
-                parts *= transmittance_along(medium, unit, t0, t1);
-                const Vec3<float> df(d);
+            // within volume_radius of a piece of the way (indirect_volume_radius for the
+            // global pass's) counts its power times the phase function toward the camera
+            // and the transmittance to it, over pi r^2.
+            Rgb<T> seen(T(1)); // what the media let through from the camera to the piece
+            LightParts<T> scattered{};
+            const auto hit = first_hit_through_media(*scene_, air_, media, ray, segment, nullptr, [&](const auto& medium, const Ray<T>& piece, T t0, T t1, T) {
+                const Vec3<float> df(piece.direction);
                 Rgb<float> caustic(0.0f), other(0.0f);
-                maps_.volume.near_beam(Vec3<float>(segment.origin), df, float(t0), float(t1), config_.volume_radius, [&](const Photon& photon, float t) {
-                    const Rgb<float> light = Rgb<float>(transmittance_along(medium, unit, t0, T(t))) * float(medium.phase.value(T(dot(photon.toward_source(), df)))) * photon.power();
-                    ((photon.flags & Photon::caustic) != 0 ? caustic : other) += light;
+                const float r_caustic = config_.volume_radius, r_other = indirect_volume_radius();
+                const float r2_caustic = r_caustic * r_caustic, r2_other = r_other * r_other;
+                maps_.volume.near_beam(Vec3<float>(piece.origin), df, float(t0), float(t1), std::max(r_caustic, r_other), [&](const Photon& photon, float t, float d2) {
+                    const bool is_caustic = (photon.flags & Photon::caustic) != 0;
+                    if (d2 > (is_caustic ? r2_caustic : r2_other)) return;
+                    const Rgb<float> light = Rgb<float>(transmittance_along(medium, piece, t0, T(t))) * float(medium.phase.value(T(dot(photon.toward_source(), df)))) * photon.power();
+                    (is_caustic ? caustic : other) += light;
                 });
-                const float disk = pi<float> * config_.volume_radius * config_.volume_radius;
-                parts.caustic += Rgb<T>(caustic / disk);
-                parts.indirect += Rgb<T>(other / disk);
+                caustic /= pi<float> * r_caustic * r_caustic;
+                other /= pi<float> * r_other * r_other;
+                scattered.caustic += seen * Rgb<T>(caustic);
+                scattered.indirect += seen * Rgb<T>(other);
+                seen *= transmittance_along(medium, piece, t0, t1);
+                return true;
             });
+            LightParts<T> parts = !hit ? LightParts<T>{.direct = scene_->escaped(segment.direction)}
+                                       : scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
+            parts *= seen;
+            parts.caustic += scattered.caustic;
+            parts.indirect += scattered.indirect;
+            return parts;
+        } else {
+            const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
+            if (!hit) return LightParts<T>{.direct = scene_->escaped(segment.direction)};
+            return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
         }
-        return parts;
     }
+
+    /// The beam estimate's radius for the global pass's volume photons.
+    [[nodiscard]] float indirect_volume_radius() const noexcept { return config_.indirect_volume_radius > 0.0f ? config_.indirect_volume_radius : config_.volume_radius; }
 
     /// Whether the scene or its air holds a medium that scatters: then volume photons, the
     /// beam estimate along camera rays, and the air's transmittance on shadow rays.
@@ -13963,6 +14060,8 @@ public:
             mapper_config.caustic.radius = float(progressive_radius(config_.pass.caustic.radius, config_.alpha, pass));
             mapper_config.global.radius = float(progressive_radius(config_.pass.global.radius, config_.alpha, pass));
             mapper_config.volume_radius = float(progressive_radius(config_.pass.volume_radius, config_.alpha, pass));
+            if (config_.pass.indirect_volume_radius > 0.0f)
+                mapper_config.indirect_volume_radius = float(progressive_radius(config_.pass.indirect_volume_radius, config_.alpha, pass));
             const PhotonMapper<SceneT, Air> mapper(*scene_, mapper_config, trace_photons(*scene_, config_.pass.tracing, air_, pass), air_);
             RenderConfig pass_render = config;
             pass_render.spp = config_.samples;
@@ -14147,6 +14246,8 @@ private:
 
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <type_traits>
 
 namespace prism {
@@ -14248,36 +14349,27 @@ private:
     template <class... Jitter>
     [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength, const MediumStack& media, Jitter... jitter) const noexcept
     {
+        // In the air (inside no object) the ray follows the air's curve, landing on a
+        // chord; inside objects it is straight. Through a medium that scatters, what lies
+        // beyond is seen through its transmittance, plus single scattering of every light
+        // along each piece of the way.
+        Ray<T> segment = ray;
+        [[maybe_unused]] Rgb<T> seen(T(1)), scattered(T(0)); // what the media let through from the ray's origin to the piece; what they scatter toward it
+        std::optional<Hit<T>> hit;
         if constexpr (has_media) {
-            // Through a medium that scatters (straight rays): what lies beyond through its
-            // transmittance, plus single scattering of every light along the way.
-            const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
-            Rgb<T> radiance = !hit ? scene_->escaped(ray.direction) : scene_->visit_material(*hit, [&](const auto& material) {
-                return shade(material, ray, *hit, depth, weight, wavelength, media, jitter...);
+            hit = first_hit_through_media(*scene_, air_, media, ray, segment, nullptr, [&](const auto& medium, const Ray<T>& piece, T t0, T t1, T) {
+                scattered += seen * single_scattering(medium, piece, t0, t1, media, jitter...);
+                seen *= transmittance_along(medium, piece, t0, t1);
+                return true;
             });
-            const T scale = length(ray.direction);
-            const Ray<T> unit{ray.origin, ray.direction / scale};
-            for_scattering_medium_along(*scene_, air_, media, unit, hit ? hit->crossing.t * scale : infinity<T>, [&](const auto& medium, T t0, T t1) {
-                radiance = radiance * transmittance_along(medium, unit, t0, t1) + single_scattering(medium, unit, t0, t1, media, jitter...);
-            });
-            return radiance;
+        } else {
+            hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
         }
-        if constexpr (Air::curved) {
-            // In the air (inside no object) the ray curves; it lands on a chord.
-            if (media.empty()) {
-                Ray<T> segment = ray;
-                const auto hit = first_hit_in_air(*scene_, air_, ray, segment);
-                if (!hit) return scene_->escaped(segment.direction);
-                return scene_->visit_material(*hit, [&](const auto& material) {
-                    return shade(material, segment, *hit, depth, weight, wavelength, media, jitter...);
-                });
-            }
-        }
-        const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
-        if (!hit) return scene_->escaped(ray.direction);
-        return scene_->visit_material(*hit, [&](const auto& material) {
-            return shade(material, ray, *hit, depth, weight, wavelength, media, jitter...);
+        const Rgb<T> beyond = !hit ? scene_->escaped(segment.direction) : scene_->visit_material(*hit, [&](const auto& material) {
+            return shade(material, segment, *hit, depth, weight, wavelength, media, jitter...);
         });
+        if constexpr (has_media) return beyond * seen + scattered;
+        else return beyond;
     }
 
     template <class M, class... Jitter>
@@ -14388,6 +14480,10 @@ private:
         const LightSampling sampling{rng, config_.area_light_grid};
         const T step = (t1 - t0) / T(config_.march_steps);
         Rgb<T> marched{T(0)};
+        // In a medium that varies, the transmittance to each point is marched too, by the
+        // midpoint rule from the point before: one density lookup a step, no tracking.
+        [[maybe_unused]] Rgb<T> depth{T(0)}; // the optical depth from t0 to `last`
+        [[maybe_unused]] T last = t0;
         for (int i = 0; i < config_.march_steps; ++i) {
             const T s = t0 + (T(i) + (rng ? rng->template uniform<T>() : T(0.5))) * step;
             const Vec3<T> p = ray.at(s);
@@ -14401,7 +14497,14 @@ private:
                     arriving += T(medium.phase.value(dot(ray.direction, sample.wi))) * v * air * sample.irradiance;
                 });
             });
-            marched += transmittance_along(medium, ray, t0, s) * medium.scattering_at(p) * arriving;
+            if constexpr (uniform_medium<Md>) {
+                marched += transmittance_along(medium, ray, t0, s) * medium.scattering_at(p) * arriving;
+            } else {
+                depth += medium.extinction_at(ray.at(T(0.5) * (last + s))) * (s - last);
+                last = s;
+                const Rgb<T> seen{std::exp(-depth.x), std::exp(-depth.y), std::exp(-depth.z)};
+                marched += seen * medium.scattering_at(p) * arriving;
+            }
         }
         return sum + marched * step;
     }
@@ -18083,23 +18186,26 @@ struct Fog {
     {
         (void)ray;
         const Rgb<T> sigma = extinction();
-        const T total = power.x + power.y + power.z;
-        const Rgb<T> chance = total > T(0) ? power / total : Rgb<T>(T(1) / T(3));
+        const Rgb<T> chance = channel_chances(power);
         const T pick = rng.uniform<T>();
         int channel = pick < chance.x ? 0 : pick < chance.x + chance.y ? 1 : 2;
         if (!(chance[channel] > T(0))) channel = chance.z > T(0) ? 2 : chance.y > T(0) ? 1 : 0; // past the sum by rounding
         const T u = rng.uniform<T>();
         const T s = sigma[channel] > T(0) ? -std::log1p(-u) / sigma[channel] : infinity<T>;
         if (s < t_max) {
-            const Rgb<T> tr = transmittance(s);
-            const T pdf = dot(chance, sigma * tr);
+            const T pdf = flight_pdf(power, s);
             if (!(pdf > T(0))) return {t_max, Rgb<T>(T(0)), false};
-            return {s, scattering * tr / pdf, true};
+            return {s, scattering * transmittance(s) / pdf, true};
         }
         const Rgb<T> tr = transmittance(t_max);
         const T passing = dot(chance, tr);
         return {t_max, passing > T(0) ? tr / passing : Rgb<T>(T(0)), false};
     }
+
+    /// The density with which sample_flight, for a walker carrying `power`, scatters at
+    /// distance t: the channels' mixture, sum over c of P(c) sigma_t,c exp(-sigma_t,c t).
+    /// (The path tracer weighs its equiangular samples against it.)
+    [[nodiscard]] T flight_pdf(const Rgb<T>& power, T t) const noexcept { return dot(channel_chances(power), extinction() * transmittance(t)); }
 
     /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite
     /// coefficient or a bad phase function.
@@ -18111,6 +18217,13 @@ struct Fog {
     }
 
 private:
+    /// The chance of drawing each channel's distance: its share of what the walker carries.
+    [[nodiscard]] static Rgb<T> channel_chances(const Rgb<T>& power) noexcept
+    {
+        const T total = power.x + power.y + power.z;
+        return total > T(0) ? power / total : Rgb<T>(T(1) / T(3));
+    }
+
     [[nodiscard]] static T channel_transmittance(T sigma, T distance) noexcept { return sigma > T(0) ? std::exp(-sigma * distance) : T(1); }
 };
 
@@ -18325,6 +18438,9 @@ public:
 
     /// sigma_s at a point.
     [[nodiscard]] Rgb<T> scattering_at(const Vec3<T>& p) const noexcept { return scattering_ * field_.density(p); }
+
+    /// sigma_t at a point: (sigma_a + sigma_s) times the density there.
+    [[nodiscard]] Rgb<T> extinction_at(const Vec3<T>& p) const noexcept { return (absorption_ + scattering_) * field_.density(p); }
 
     /// An unbiased estimate of the transmittance along `ray` (unit direction) from its
     /// origin to t_max (may be infinite), by residual ratio tracking with `rng`.

@@ -225,14 +225,14 @@ TEST_CASE("progressive photon mapping's volume furnace: a box of fog that does n
     // coloured fog that only scatters, under radiance 1 from every direction; 16 passes of
     // 250000 photons, the beam's radius shrinking from 0.15, over a 9 x 9 film of parallel
     // rays across the box (an orthographic look: a narrow field of view from far off).
-    // Measured: 1.0015, 1.0000, 1.0028; 1 % held.
+    // Measured: 1.0015, 1.0000, 1.0028; 0.5 % held.
     using T = float;
     const auto sky = Scene{Lights{EnvironmentLight<T>{}}, Object{Sphere<T>({0, 1.2f, 0}, 1e-3f), Diffuse<T>{}}};
     using S = std::remove_cvref_t<decltype(sky)>;
     using Air = FilledAir<Fog<T>>;
     const Air air{.medium = {.scattering = {1.0f, 2.0f, 4.0f}, .phase = {.g = 0.6f}}, .region = {Vec3<T>(-1), Vec3<T>(1)}};
     ProgressiveConfig<S, Air> config;
-    config.pass.tracing = {.global_photons = 250000, .caustic_photons = 0, .max_bounces = 1000, .seed = 2};
+    config.pass.tracing = {.global_photons = 250000, .caustic_photons = 0, .seed = 2};
     config.pass.volume_radius = 0.15f;
     const Camera<T> camera{.position = {-200, 0, 0}, .look_at = {0, 0, 0}, .up = {0, 1, 0}, .fov = 0.35f};
     const Film image = render(camera, ProgressivePhotonMapper<S, Air>(sky, config, air), {.width = 9, .height = 9, .spp = 16, .threads = 2, .progress = false});
@@ -242,6 +242,6 @@ TEST_CASE("progressive photon mapping's volume furnace: a box of fog that does n
     for (int c = 0; c < 3; ++c) {
         CAPTURE(c);
         MESSAGE("channel ", c, ": ", sum[c] / 81);
-        CHECK(sum[c] / 81 == doctest::Approx(1).epsilon(0.01).scale(0));
+        CHECK(sum[c] / 81 == doctest::Approx(1).epsilon(0.005).scale(0));
     }
 }

@@ -361,6 +361,55 @@ TEST_CASE("Whitted's single scattering in fog of varying density (constant in a 
     }
 }
 
+TEST_CASE("Whitted marches ground fog along a rising ray: single scattering against a quadrature of the exponential density, to 0.2 %")
+{
+    // The airlight fog's coefficients times HeightFog's density 2 exp(-(y + 1) / 0.8), a ray
+    // rising at 0.1 from (-2, 0, 0) under the airlight's point light: the density varies
+    // along the ray and along every shadow ray. The optical depth of a straight segment in
+    // it is closed-form (the density is exponential in the height, which is linear along
+    // the segment), and the single-scattering integral is Simpson's in double: numbers
+    // outside the code under test. Whitted marches the camera side (the midpoint rule, a
+    // step of 0.25) and tracks the shadow rays. Measured within 0.02 % in each channel.
+    const double base = 2, floor_y = -1, height = 0.8;
+    const HeightFog<float> ground{.box = {{-40, -1, -40}, {40, 40, 40}}, .floor = float(floor_y), .base = float(base), .scale_height = float(height)};
+    const VaryingFog fog(ground, Rgb<float>(test::airlight_absorption), Rgb<float>(test::airlight_scattering), {.g = float(test::airlight_g)});
+    const auto scene = test::airlight_scene();
+    const Vec3<double> origin{-2, 0, 0}, w = normalize(Vec3<double>(1, 0.1, 0)), light{0, 1, 0};
+    const double reach = (40 - origin.x) / w.x; // the box's far side
+    // The integral of the density along a -> b.
+    const auto column = [&](const Vec3<double>& a, const Vec3<double>& b) {
+        const double l = length(b - a), dy = b.y - a.y;
+        const double ea = std::exp(-(a.y - floor_y) / height), eb = std::exp(-(b.y - floor_y) / height);
+        return std::abs(dy) < 1e-12 ? base * l * ea : base * l * height / dy * (ea - eb);
+    };
+    const Whitted whitted(scene, {.march_steps = 256}, FilledAir<decltype(fog)>{.medium = fog});
+    Pcg32 rng(4, 5);
+    Rgb<double> sum{0};
+    const int n = 4000;
+    const Ray<float> ray{Vec3<float>(origin), Vec3<float>(w)};
+    for (int i = 0; i < n; ++i) sum += Rgb<double>(whitted.radiance(ray, rng));
+    const HenyeyGreenstein<double> hg{test::airlight_g};
+    for (int c = 0; c < 3; ++c) {
+        const double st = test::airlight_absorption[c] + test::airlight_scattering[c];
+        const auto f = [&](double s) {
+            const Vec3<double> p = origin + s * w;
+            const Vec3<double> to_point = p - light;
+            const double d = length(to_point);
+            const double density = base * std::exp(-(p.y - floor_y) / height);
+            return test::airlight_scattering[c] * density * std::exp(-st * column(origin, p)) * hg.value(-dot(to_point, w) / d) / (d * d) *
+                   std::exp(-st * column(p, light));
+        };
+        const int m = 200000;
+        const double h = reach / m;
+        double integral = f(0) + f(reach);
+        for (int k = 1; k < m; ++k) integral += f(k * h) * (k % 2 ? 4 : 2);
+        integral *= h / 3;
+        CAPTURE(c);
+        MESSAGE("channel ", c, ": Whitted ", sum[c] / n, ", quadrature ", integral);
+        CHECK(sum[c] / n == doctest::Approx(integral).epsilon(0.002).scale(0));
+    }
+}
+
 TEST_CASE("regression: Whitted's camera inside a ball of fog sees the light the fog scatters: the airlight integral to the ball's surface, to 0.5 %")
 {
     // tests/airlight.hpp's fog inside a ball of radius 50 (a surface that does not
@@ -434,4 +483,22 @@ TEST_CASE("Whitted's airlight: the airlight integral to 0.01 % with 16 nodes and
     CHECK(marched.radiance(test::airlight_ray()).x == 0.0f);
     CHECK_THROWS_WITH_AS(Whitted(scene, {.airlight_nodes = 0}, test::airlight_fog()), doctest::Contains("Whitted airlight_nodes must be in [1, 64], got 0"),
                          std::invalid_argument);
+}
+
+TEST_CASE("fog filling graded air: Whitted sums the airlight over each straight piece of the path, the integral to 0.01 % over a hundred pieces")
+{
+    // The airlight scene in GradedAir of a uniform index, cut into pieces of at most 0.5 by
+    // the stepper inside a box 50 about the light (straight beyond it): the pieces, each
+    // seen through the fog before it, must add up to the one integral.
+    const auto air = test::airlight_fog_in_pieces();
+    const auto scene = test::airlight_scene();
+    int pieces = 0;
+    Ray<float> segment{};
+    (void)first_hit_in_air(scene, air, test::airlight_ray(), segment, nullptr, [&](const Ray<float>&, float, float) { return ++pieces > 0; });
+    CHECK(pieces > 100);
+    const Rgb<float> found = Whitted(scene, {.in_scattering = InScattering::airlight, .airlight_nodes = 16}, air).radiance(test::airlight_ray());
+    for (int c = 0; c < 3; ++c) {
+        CAPTURE(c);
+        CHECK(found[c] == doctest::Approx(test::airlight(c)).epsilon(1e-4).scale(0));
+    }
 }

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include <prism/medium/fog.hpp>
 
+#include "../chi2.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <utility>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 using namespace prism;
 
@@ -41,6 +44,42 @@ TEST_CASE("Fog's free flights are unbiased in every channel: what passes is exp(
             CHECK(scattered[c] / n == doctest::Approx(sigma_s[c] / sigma_t[c] * (1 - std::exp(-sigma_t[c] * d))).epsilon(1e-3).scale(0));
         }
     }
+}
+
+TEST_CASE("Fog's flight_pdf is the density its flights are drawn with (chi-square over where they scatter, and the mass that passes)")
+{
+    // A coloured fog and a walker carrying mostly red: the draw is a mixture over
+    // channels, and flight_pdf must be that mixture (the path tracer weighs equiangular
+    // samples against it). 60 bins over [0, 3) and one for the flights that pass.
+    const Fog<double> fog{.absorption = {0.2, 0.05, 0.0}, .scattering = {0.6, 0.3, 0.02}};
+    const Rgb<double> power{1, 0.2, 0.05};
+    const double t_max = 3;
+    const int bins = 60;
+    const long n = 400000;
+    std::vector<double> observed(bins + 1, 0.0), expected(bins + 1, 0.0);
+    Pcg32 rng(11, 5);
+    for (long i = 0; i < n; ++i) {
+        const FreeFlight<double> f = fog.sample_flight({{0, 0, 0}, {1, 0, 0}}, t_max, power, rng);
+        observed[f.scattered ? std::size_t(std::min(bins - 1, int(f.distance / t_max * bins))) : std::size_t(bins)] += 1;
+    }
+    double inside = 0;
+    for (int b = 0; b < bins; ++b) {
+        // Simpson's rule over the bin, 32 panels (the density is smooth).
+        const double a = t_max * b / bins, h = t_max / bins / 32;
+        double sum = fog.flight_pdf(power, a) + fog.flight_pdf(power, a + 32 * h);
+        for (int k = 1; k < 32; ++k) sum += (k % 2 ? 4 : 2) * fog.flight_pdf(power, a + k * h);
+        expected[std::size_t(b)] = n * sum * h / 3;
+        inside += sum * h / 3;
+    }
+    // What passes: each channel's share of the draws times its transmittance over t_max.
+    const Rgb<double> chance = power / (power.x + power.y + power.z);
+    const double passing = dot(chance, fog.transmittance(t_max));
+    CHECK(inside + passing == doctest::Approx(1).epsilon(1e-9));
+    expected[std::size_t(bins)] = n * passing;
+    const test::Chi2 chi = test::chi2_test(observed, expected);
+    CAPTURE(chi.statistic);
+    CAPTURE(chi.degrees);
+    CHECK(chi.p_value > 1e-3);
 }
 
 TEST_CASE("a grey fog's flights weigh exactly (to rounding): its albedo where they scatter, 1 where they pass; a clear channel never turns NaN")

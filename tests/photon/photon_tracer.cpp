@@ -323,13 +323,13 @@ TEST_CASE("volume photons: a parallel light's photons cover a box of fog, and wh
     // Light falling straight down (irradiance 1) on a 2 x 2 x 2 box of fog in the scene's
     // air, the scene's one object tiny and beside the box: the parallel photons must start over
     // the fog's region, not only around the objects (before, they covered the tiny ball
-    // and missed the fog). First scatterings only (max_bounces 0): every photon entering
+    // and missed the fog). First scatterings only (max_medium_bounces 0): every photon entering
     // the top face scatters inside with probability 1 - exp(-sigma_t 2), storing its power
     // times sigma_s / sigma_t.
     const auto scene = Scene{Lights{DirectionalLight<double>{.direction = {0, -1, 0}, .irradiance = Rgb<double>(1)}},
                              Object{Sphere<double>({1.5, 0, 0}, 1e-3), Diffuse<double>{}}};
     const FilledAir<Fog<double>> fog{.medium = {.absorption = Rgb<double>(0.25), .scattering = {0.25, 0.5, 0.75}}, .region = {{-1, -1, -1}, {1, 1, 1}}};
-    const PhotonMaps maps = trace_photons(scene, {.global_photons = 400000, .caustic_photons = 0, .max_bounces = 0}, fog);
+    const PhotonMaps maps = trace_photons(scene, {.global_photons = 400000, .caustic_photons = 0, .max_bounces = 0, .max_medium_bounces = 0}, fog);
     Rgb<double> total(0);
     std::size_t flagged = 0;
     for (const Photon& photon : maps.volume.photons()) {

@@ -29,6 +29,7 @@
 #pragma once
 
 #include <prism/core/check.hpp>
+#include <prism/core/overload.hpp>
 #include <prism/core/rng.hpp>
 #include <prism/transport/direct.hpp>
 #include <prism/material/scattering.hpp>
@@ -109,7 +110,7 @@ public:
     {
         Rgb<T> sum{T(0)};
         const LightSampling sampling{&rng, config_.area_light_grid};
-        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{config_.max_depth, config_.roulette_depth},
+        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth, .roulette_depth = config_.roulette_depth},
                     [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         const Crossing<T>& c = at.crossing();
                         const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
@@ -166,7 +167,7 @@ public:
                                         met_light_weight(at.last_pdf, at.first_specular, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
                         }
                     },
-                    detail::Overload{
+                    Overload{
                         [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
                             // In a medium: each light's samples weighed by the phase function
                             // toward them (the bounce's density there, for MIS), no cosine;
@@ -181,7 +182,7 @@ public:
                                 if constexpr (has_equiangular<L, Md>) {
                                     if (config_.equiangular) {
                                         const T t = dot(at.point - at.stretch.origin, at.stretch.direction);
-                                        const T flight = flight_pdf(medium, at.entering, t);
+                                        const T flight = medium.flight_pdf(at.entering, t);
                                         shared = flight / (flight + Equiangular(at.stretch, at.stretch_length, light.position).pdf(t));
                                     }
                                 }
@@ -247,7 +248,10 @@ private:
     /// Whether a light is sampled along stretches of medium Md: a delta light at a point,
     /// in a uniform medium.
     template <class L, class Md>
-    static constexpr bool has_equiangular = uniform_medium<Md> && is_delta_light<L> && requires(const L& light) { light.position; };
+    static constexpr bool has_equiangular = uniform_medium<Md> && is_delta_light<L> && requires(const L& light, const Md& medium, const Rgb<T>& power) {
+        light.position;
+        medium.flight_pdf(power, T(0));
+    };
 
     /// Equiangular sampling of a stretch (ray from its start, unit direction, length may
     /// be infinite) toward a point c: in the angle theta seen from c, uniform, so that
@@ -270,20 +274,6 @@ private:
         [[nodiscard]] T pdf(T t) const noexcept { return theta1 > theta0 ? h / ((theta1 - theta0) * (h * h + (t - along) * (t - along))) : T(0); }
     };
 
-    /// The density with which a uniform medium's free flight, drawn for a path carrying
-    /// `entering` (Fog::sample_flight's mixture over channels), ends at t along its stretch.
-    template <class Md>
-    [[nodiscard]] static T flight_pdf(const Md& medium, const Rgb<T>& entering, T t) noexcept
-    {
-        const Rgb<T> sigma = medium.extinction();
-        const T total = entering.x + entering.y + entering.z;
-        const Rgb<T> chance = total > T(0) ? entering / total : Rgb<T>(T(1) / T(3));
-        T pdf = T(0);
-        for (int c = 0; c < 3; ++c)
-            if (sigma[c] > T(0)) pdf += chance[c] * sigma[c] * std::exp(-sigma[c] * t);
-        return pdf;
-    }
-
     /// One equiangular sample of `light` along a stretch of uniform `medium`: its light
     /// scattered once toward the path there, through the medium's transmittance back to
     /// the stretch's start, over the sample's density, weighed against the free flight's
@@ -296,7 +286,7 @@ private:
         const T density = rule.pdf(t);
         if (!(t >= T(0) && t < stretch.length && density > T(0) && density < infinity<T>)) return Rgb<T>(T(0));
         const Vec3<T> p = stretch.ray.at(t);
-        const T w = density / (density + flight_pdf(medium, stretch.power, t));
+        const T w = density / (density + medium.flight_pdf(stretch.power, t));
         Rgb<T> out{T(0)};
         for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, p, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
             const T phase = medium.phase.value(dot(stretch.ray.direction, s.wi));

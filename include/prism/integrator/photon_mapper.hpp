@@ -96,6 +96,12 @@ public:
         /// radiance estimate along camera rays and of the volume estimate where a gather
         /// ray scatters.
         float volume_radius = 0.05f;
+        /// > 0: the beam estimate's radius for the global pass's volume photons (light
+        /// scattered more than once, or after a diffuse surface), which is smooth and
+        /// sparse: read with a wider kernel, as the global map is on surfaces, it shows no
+        /// blotches where a few photons near the camera would each fill a disk of the
+        /// image. 0: volume_radius. (Volumetric caustics keep volume_radius.)
+        float indirect_volume_radius = 0.0f;
     };
 
     /// Traces the photon maps (the expensive part), then renders with them.
@@ -125,8 +131,14 @@ private:
         if (!(cache.min_pixels > 0.0f && cache.min_pixels <= cache.max_pixels && is_finite(cache.max_pixels)))
             detail::throw_invalid("PhotonMapper irradiance_cache needs 0 < min_pixels <= max_pixels, finite, got ", cache.min_pixels, " and ", cache.max_pixels);
         if (config.max_depth < 0) detail::throw_invalid("PhotonMapper max_depth must be >= 0, got ", config.max_depth);
-        if (!(config.volume_radius * config.volume_radius >= std::numeric_limits<float>::min() && is_finite(config.volume_radius * config.volume_radius)))
+        if (!(config.volume_radius > 0.0f && config.volume_radius * config.volume_radius >= std::numeric_limits<float>::min() &&
+              is_finite(config.volume_radius * config.volume_radius)))
             detail::throw_invalid("PhotonMapper volume_radius must be in [1.1e-19, 1.8e19] (its square a finite, normal float), got ", config.volume_radius);
+        if (config.indirect_volume_radius != 0.0f &&
+            !(config.indirect_volume_radius > 0.0f && config.indirect_volume_radius * config.indirect_volume_radius >= std::numeric_limits<float>::min() &&
+              is_finite(config.indirect_volume_radius * config.indirect_volume_radius)))
+            detail::throw_invalid("PhotonMapper indirect_volume_radius must be 0 or in [1.1e-19, 1.8e19] (its square a finite, normal float), got ",
+                                  config.indirect_volume_radius);
         if (config.area_light_grid < 1 || config.area_light_grid > 64)
             detail::throw_invalid("PhotonMapper area_light_grid must be in [1, 64], got ", config.area_light_grid);
         detail::require_non_negative("PhotonMapper min_weight", config.min_weight);
@@ -243,7 +255,7 @@ private:
     static void validate(const Estimator& e, const char* name)
     {
         // The estimates divide by pi r^2: its square must be a finite, normal float.
-        if (!(e.radius * e.radius >= std::numeric_limits<float>::min() && is_finite(e.radius * e.radius)))
+        if (!(e.radius > 0.0f && e.radius * e.radius >= std::numeric_limits<float>::min() && is_finite(e.radius * e.radius)))
             detail::throw_invalid(name, " radius must be in [1.1e-19, 1.8e19] (its square a finite, normal float), got ", e.radius);
         if (e.k > PhotonMap::max_k) detail::throw_invalid(name, " k must be at most ", PhotonMap::max_k, ", got ", e.k);
         if (!(e.max_height_ratio > 0.0f && e.max_height_ratio <= 1.0f)) detail::throw_invalid(name, " max_height_ratio must be in (0, 1], got ", e.max_height_ratio);
@@ -257,33 +269,48 @@ private:
     [[nodiscard]] LightParts<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength, const MediumStack& media) const noexcept
     {
         Ray<T> segment = ray;
-        const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
-        LightParts<T> parts = !hit ? LightParts<T>{.direct = scene_->escaped(segment.direction)}
-                                   : scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
         if constexpr (has_media) {
             // Through a medium that scatters: what lies beyond is seen through its
             // transmittance, and the light it scatters toward the camera along the way is
             // the beam radiance estimate of the volume photons (Jarosz et al. 2008): each
-            // within volume_radius of the segment counts its power times the phase
-            // function toward the camera and the transmittance to it, over pi r^2.
-            const Vec3<T> d = normalize(segment.direction);
-            const T t_max = hit ? hit->crossing.t * length(segment.direction) : infinity<T>;
-            const Ray<T> unit{segment.origin, d};
-            for_scattering_medium_along(*scene_, air_, media, unit, t_max, [&](const auto& medium, T t0, T t1) {
-                parts *= transmittance_along(medium, unit, t0, t1);
-                const Vec3<float> df(d);
+            // within volume_radius of a piece of the way (indirect_volume_radius for the
+            // global pass's) counts its power times the phase function toward the camera
+            // and the transmittance to it, over pi r^2.
+            Rgb<T> seen(T(1)); // what the media let through from the camera to the piece
+            LightParts<T> scattered{};
+            const auto hit = first_hit_through_media(*scene_, air_, media, ray, segment, nullptr, [&](const auto& medium, const Ray<T>& piece, T t0, T t1, T) {
+                const Vec3<float> df(piece.direction);
                 Rgb<float> caustic(0.0f), other(0.0f);
-                maps_.volume.near_beam(Vec3<float>(segment.origin), df, float(t0), float(t1), config_.volume_radius, [&](const Photon& photon, float t) {
-                    const Rgb<float> light = Rgb<float>(transmittance_along(medium, unit, t0, T(t))) * float(medium.phase.value(T(dot(photon.toward_source(), df)))) * photon.power();
-                    ((photon.flags & Photon::caustic) != 0 ? caustic : other) += light;
+                const float r_caustic = config_.volume_radius, r_other = indirect_volume_radius();
+                const float r2_caustic = r_caustic * r_caustic, r2_other = r_other * r_other;
+                maps_.volume.near_beam(Vec3<float>(piece.origin), df, float(t0), float(t1), std::max(r_caustic, r_other), [&](const Photon& photon, float t, float d2) {
+                    const bool is_caustic = (photon.flags & Photon::caustic) != 0;
+                    if (d2 > (is_caustic ? r2_caustic : r2_other)) return;
+                    const Rgb<float> light = Rgb<float>(transmittance_along(medium, piece, t0, T(t))) * float(medium.phase.value(T(dot(photon.toward_source(), df)))) * photon.power();
+                    (is_caustic ? caustic : other) += light;
                 });
-                const float disk = pi<float> * config_.volume_radius * config_.volume_radius;
-                parts.caustic += Rgb<T>(caustic / disk);
-                parts.indirect += Rgb<T>(other / disk);
+                caustic /= pi<float> * r_caustic * r_caustic;
+                other /= pi<float> * r_other * r_other;
+                scattered.caustic += seen * Rgb<T>(caustic);
+                scattered.indirect += seen * Rgb<T>(other);
+                seen *= transmittance_along(medium, piece, t0, t1);
+                return true;
             });
+            LightParts<T> parts = !hit ? LightParts<T>{.direct = scene_->escaped(segment.direction)}
+                                       : scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
+            parts *= seen;
+            parts.caustic += scattered.caustic;
+            parts.indirect += scattered.indirect;
+            return parts;
+        } else {
+            const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
+            if (!hit) return LightParts<T>{.direct = scene_->escaped(segment.direction)};
+            return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
         }
-        return parts;
     }
+
+    /// The beam estimate's radius for the global pass's volume photons.
+    [[nodiscard]] float indirect_volume_radius() const noexcept { return config_.indirect_volume_radius > 0.0f ? config_.indirect_volume_radius : config_.volume_radius; }
 
     /// Whether the scene or its air holds a medium that scatters: then volume photons, the
     /// beam estimate along camera rays, and the air's transmittance on shadow rays.

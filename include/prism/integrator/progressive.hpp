@@ -119,6 +119,8 @@ public:
             mapper_config.caustic.radius = float(progressive_radius(config_.pass.caustic.radius, config_.alpha, pass));
             mapper_config.global.radius = float(progressive_radius(config_.pass.global.radius, config_.alpha, pass));
             mapper_config.volume_radius = float(progressive_radius(config_.pass.volume_radius, config_.alpha, pass));
+            if (config_.pass.indirect_volume_radius > 0.0f)
+                mapper_config.indirect_volume_radius = float(progressive_radius(config_.pass.indirect_volume_radius, config_.alpha, pass));
             const PhotonMapper<SceneT, Air> mapper(*scene_, mapper_config, trace_photons(*scene_, config_.pass.tracing, air_, pass), air_);
             RenderConfig pass_render = config;
             pass_render.spp = config_.samples;

@@ -38,6 +38,8 @@
 #include <prism/transport/travel.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <type_traits>
 
 namespace prism {
@@ -139,36 +141,27 @@ private:
     template <class... Jitter>
     [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength, const MediumStack& media, Jitter... jitter) const noexcept
     {
+        // In the air (inside no object) the ray follows the air's curve, landing on a
+        // chord; inside objects it is straight. Through a medium that scatters, what lies
+        // beyond is seen through its transmittance, plus single scattering of every light
+        // along each piece of the way.
+        Ray<T> segment = ray;
+        [[maybe_unused]] Rgb<T> seen(T(1)), scattered(T(0)); // what the media let through from the ray's origin to the piece; what they scatter toward it
+        std::optional<Hit<T>> hit;
         if constexpr (has_media) {
-            // Through a medium that scatters (straight rays): what lies beyond through its
-            // transmittance, plus single scattering of every light along the way.
-            const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
-            Rgb<T> radiance = !hit ? scene_->escaped(ray.direction) : scene_->visit_material(*hit, [&](const auto& material) {
-                return shade(material, ray, *hit, depth, weight, wavelength, media, jitter...);
+            hit = first_hit_through_media(*scene_, air_, media, ray, segment, nullptr, [&](const auto& medium, const Ray<T>& piece, T t0, T t1, T) {
+                scattered += seen * single_scattering(medium, piece, t0, t1, media, jitter...);
+                seen *= transmittance_along(medium, piece, t0, t1);
+                return true;
             });
-            const T scale = length(ray.direction);
-            const Ray<T> unit{ray.origin, ray.direction / scale};
-            for_scattering_medium_along(*scene_, air_, media, unit, hit ? hit->crossing.t * scale : infinity<T>, [&](const auto& medium, T t0, T t1) {
-                radiance = radiance * transmittance_along(medium, unit, t0, t1) + single_scattering(medium, unit, t0, t1, media, jitter...);
-            });
-            return radiance;
+        } else {
+            hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
         }
-        if constexpr (Air::curved) {
-            // In the air (inside no object) the ray curves; it lands on a chord.
-            if (media.empty()) {
-                Ray<T> segment = ray;
-                const auto hit = first_hit_in_air(*scene_, air_, ray, segment);
-                if (!hit) return scene_->escaped(segment.direction);
-                return scene_->visit_material(*hit, [&](const auto& material) {
-                    return shade(material, segment, *hit, depth, weight, wavelength, media, jitter...);
-                });
-            }
-        }
-        const auto hit = scene_->closest_hit(ray, {T(0), infinity<T>});
-        if (!hit) return scene_->escaped(ray.direction);
-        return scene_->visit_material(*hit, [&](const auto& material) {
-            return shade(material, ray, *hit, depth, weight, wavelength, media, jitter...);
+        const Rgb<T> beyond = !hit ? scene_->escaped(segment.direction) : scene_->visit_material(*hit, [&](const auto& material) {
+            return shade(material, segment, *hit, depth, weight, wavelength, media, jitter...);
         });
+        if constexpr (has_media) return beyond * seen + scattered;
+        else return beyond;
     }
 
     template <class M, class... Jitter>
@@ -279,6 +272,10 @@ private:
         const LightSampling sampling{rng, config_.area_light_grid};
         const T step = (t1 - t0) / T(config_.march_steps);
         Rgb<T> marched{T(0)};
+        // In a medium that varies, the transmittance to each point is marched too, by the
+        // midpoint rule from the point before: one density lookup a step, no tracking.
+        [[maybe_unused]] Rgb<T> depth{T(0)}; // the optical depth from t0 to `last`
+        [[maybe_unused]] T last = t0;
         for (int i = 0; i < config_.march_steps; ++i) {
             const T s = t0 + (T(i) + (rng ? rng->template uniform<T>() : T(0.5))) * step;
             const Vec3<T> p = ray.at(s);
@@ -292,7 +289,14 @@ private:
                     arriving += T(medium.phase.value(dot(ray.direction, sample.wi))) * v * air * sample.irradiance;
                 });
             });
-            marched += transmittance_along(medium, ray, t0, s) * medium.scattering_at(p) * arriving;
+            if constexpr (uniform_medium<Md>) {
+                marched += transmittance_along(medium, ray, t0, s) * medium.scattering_at(p) * arriving;
+            } else {
+                depth += medium.extinction_at(ray.at(T(0.5) * (last + s))) * (s - last);
+                last = s;
+                const Rgb<T> seen{std::exp(-depth.x), std::exp(-depth.y), std::exp(-depth.z)};
+                marched += seen * medium.scattering_at(p) * arriving;
+            }
         }
         return sum + marched * step;
     }

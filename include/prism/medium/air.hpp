@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The scene's air: uniform (rays go straight, the default), of a varying index
 // (graded-index air: mirages, a flattened setting sun), through which rays curve, or
-// filled with a medium that scatters (FilledAir: fog, haze, murky water around everything).
+// filled with a medium that scatters (FilledAir: fog, haze, murky water around everything,
+// in straight or graded air).
 //
 // GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
 // field must be uniform, and rays go straight there. LayeredAir is flat layers of
@@ -24,21 +25,26 @@ struct StraightAir {
     constexpr void validate() const {}
 };
 
-/// Straight air filled, within `region` (everywhere by default), with a medium that
-/// absorbs and scatters: the fog a scene stands in, the water around an underwater scene.
-/// Outside the region the air is clear. (An object's inside takes its own medium, its
-/// material's interior.)
-template <ScatteringMedium M>
+/// Air filled, within `region` (everywhere by default), with a medium that absorbs and
+/// scatters: the fog a scene stands in, the water around an underwater scene. Outside the
+/// region the air is clear. (An object's inside takes its own medium, its material's
+/// interior.) `Base` is the air the medium fills: straight (the default), or GradedAir or
+/// LayeredAir, through which rays curve (a mirage seen through haze): a walker in it
+/// scatters along the curved path, by the medium's coefficients per unit of the path's
+/// length.
+template <ScatteringMedium M, class Base = StraightAir>
 struct FilledAir {
     /// The medium's precision.
     using scalar_type = typename M::scalar_type;
-    /// Rays through it are straight.
-    static constexpr bool curved = false;
+    /// Rays through it curve where they curve through its base.
+    static constexpr bool curved = Base::curved;
     /// Light scatters in it.
     static constexpr bool scatters = true;
+    static_assert(!requires { requires Base::scatters; }, "FilledAir's base is the air it fills: StraightAir, GradedAir or LayeredAir");
 
     M medium{}; ///< what fills the region
     Aabb<scalar_type> region = Aabb<scalar_type>::universe(); ///< where the medium is (a box; everywhere by default)
+    Base base{}; ///< the air it fills: straight, or of a varying index
 
     /// Where the air is not clear: the region, within the medium's own box where it has
     /// one (a medium of varying density).
@@ -52,11 +58,12 @@ struct FilledAir {
         }
     }
 
-    /// Throws std::invalid_argument, naming the parameter, for a bad medium or an empty region.
+    /// Throws std::invalid_argument, naming the parameter, for a bad medium or base, or an empty region.
     void validate() const
     {
         medium.validate();
         if (region.empty()) detail::throw_invalid("FilledAir region must not be empty");
+        base.validate();
     }
 };
 

@@ -58,23 +58,26 @@ struct Fog {
     {
         (void)ray;
         const Rgb<T> sigma = extinction();
-        const T total = power.x + power.y + power.z;
-        const Rgb<T> chance = total > T(0) ? power / total : Rgb<T>(T(1) / T(3));
+        const Rgb<T> chance = channel_chances(power);
         const T pick = rng.uniform<T>();
         int channel = pick < chance.x ? 0 : pick < chance.x + chance.y ? 1 : 2;
         if (!(chance[channel] > T(0))) channel = chance.z > T(0) ? 2 : chance.y > T(0) ? 1 : 0; // past the sum by rounding
         const T u = rng.uniform<T>();
         const T s = sigma[channel] > T(0) ? -std::log1p(-u) / sigma[channel] : infinity<T>;
         if (s < t_max) {
-            const Rgb<T> tr = transmittance(s);
-            const T pdf = dot(chance, sigma * tr);
+            const T pdf = flight_pdf(power, s);
             if (!(pdf > T(0))) return {t_max, Rgb<T>(T(0)), false};
-            return {s, scattering * tr / pdf, true};
+            return {s, scattering * transmittance(s) / pdf, true};
         }
         const Rgb<T> tr = transmittance(t_max);
         const T passing = dot(chance, tr);
         return {t_max, passing > T(0) ? tr / passing : Rgb<T>(T(0)), false};
     }
+
+    /// The density with which sample_flight, for a walker carrying `power`, scatters at
+    /// distance t: the channels' mixture, sum over c of P(c) sigma_t,c exp(-sigma_t,c t).
+    /// (The path tracer weighs its equiangular samples against it.)
+    [[nodiscard]] T flight_pdf(const Rgb<T>& power, T t) const noexcept { return dot(channel_chances(power), extinction() * transmittance(t)); }
 
     /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite
     /// coefficient or a bad phase function.
@@ -86,6 +89,13 @@ struct Fog {
     }
 
 private:
+    /// The chance of drawing each channel's distance: its share of what the walker carries.
+    [[nodiscard]] static Rgb<T> channel_chances(const Rgb<T>& power) noexcept
+    {
+        const T total = power.x + power.y + power.z;
+        return total > T(0) ? power / total : Rgb<T>(T(1) / T(3));
+    }
+
     [[nodiscard]] static T channel_transmittance(T sigma, T distance) noexcept { return sigma > T(0) ? std::exp(-sigma * distance) : T(1); }
 };
 

@@ -94,6 +94,9 @@ public:
     /// sigma_s at a point.
     [[nodiscard]] Rgb<T> scattering_at(const Vec3<T>& p) const noexcept { return scattering_ * field_.density(p); }
 
+    /// sigma_t at a point: (sigma_a + sigma_s) times the density there.
+    [[nodiscard]] Rgb<T> extinction_at(const Vec3<T>& p) const noexcept { return (absorption_ + scattering_) * field_.density(p); }
+
     /// An unbiased estimate of the transmittance along `ray` (unit direction) from its
     /// origin to t_max (may be infinite), by residual ratio tracking with `rng`.
     [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max, Pcg32& rng) const noexcept

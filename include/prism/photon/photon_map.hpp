@@ -128,8 +128,9 @@ public:
         return {sum / (weight.mean() * pi<float> * r2), r2};
     }
 
-    /// visit(photon, t) for every photon within `radius` of the segment from `origin`
-    /// along unit `direction` whose projection t lies in [t_min, t_max]: the photons a beam
+    /// visit(photon, t, distance2) for every photon within `radius` of the segment from
+    /// `origin` along unit `direction` whose projection t lies in [t_min, t_max],
+    /// distance2 its squared distance from the line: the photons a beam
     /// radiance estimate of that radius gathers (Jarosz et al. 2008, "The Beam Radiance
     /// Estimate for Volumetric Photon Mapping"; with a box kernel the estimate is their
     /// weighted sum over pi r^2).
@@ -138,7 +139,7 @@ public:
     {
         if (!tree_ || photons_.empty() || !(radius > 0.0f)) return;
         tree_->along({origin.x, origin.y, origin.z}, {direction.x, direction.y, direction.z}, t_min, t_max, radius,
-                     [&](std::uint32_t index, float t, float) { visit(photons_[index], t); });
+                     [&](std::uint32_t index, float t, float distance2) { visit(photons_[index], t, distance2); });
     }
 
     /// The volume radiance estimate's sum (Jensen and Christensen 1998): the sum of

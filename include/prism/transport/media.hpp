@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // What the media a path is in (medium/nesting.hpp's MediumStack) do to light on its way:
-// the index on an interface's far side, the attenuation along a segment, where a walker
-// scatters in a medium that scatters (an object's interior, or the scene's air when it is
-// FilledAir), and what such air lets through along a shadow ray.
+// the index on an interface's far side, the attenuation along a segment, the parts of a
+// path that lie in a medium that scatters (an object's interior, or the scene's air when it
+// is FilledAir, straight or curved), and what such air lets through along a shadow ray.
 #pragma once
 
 #include <prism/core/math.hpp>
@@ -13,6 +13,10 @@
 #include <prism/medium/air.hpp>
 #include <prism/medium/medium.hpp>
 #include <prism/medium/nesting.hpp>
+#include <prism/scene/hit.hpp>
+#include <prism/transport/travel.hpp>
+
+#include <optional>
 
 namespace prism {
 
@@ -67,23 +71,28 @@ void for_scattering_medium_along(const SceneT& scene, const Air& air, const Medi
     }
 }
 
-/// A walker's flight along `segment` (unit direction) through the medium it is in, up to
-/// t_max: where that medium scatters (for_scattering_medium_along), on_stretch(medium,
-/// stretch, length) is shown the stretch first (its ray from where it starts, `power` as
-/// the walker enters it), then the walker's flight is drawn (the medium's sample_flight)
-/// and `power` takes the draw's weight; where it scatters before t_max,
-/// on_scatter(medium, distance, weight) is called (the weight already taken).
-template <class SceneT, class Air, Scalar T, class OnScatter, class OnStretch>
-void fly_through_medium(const SceneT& scene, const Air& air, const MediumStack& media, const Ray<T>& segment, T t_max, Rgb<T>& power,
-                        Pcg32& rng, OnScatter&& on_scatter, OnStretch&& on_stretch)
+/// The first surface a path from `ray` meets in the media it is in (`media`: inside an
+/// object straight, in the air along the air's curve), with `segment` and `path` as
+/// first_hit_in_air's, and f(medium, piece, t0, t1, before) shown, in order along the
+/// way, each part [t0, t1] of a straight piece (unit direction) that lies in a medium
+/// that scatters (for_scattering_medium_along), `before` the path's length up to the
+/// piece's origin. f returns false to stop the path there (a walker that scattered or was
+/// absorbed; then nothing is met); true to go on.
+template <class SceneT, class Air, class F>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through_media(const SceneT& scene, const Air& air, const MediumStack& media,
+                                                                                      const Ray<typename SceneT::scalar_type>& ray,
+                                                                                      Ray<typename SceneT::scalar_type>& segment,
+                                                                                      typename SceneT::scalar_type* path, F&& f)
 {
-    for_scattering_medium_along(scene, air, media, segment, t_max, [&](const auto& medium, T t0, T t1) {
-        const Ray<T> stretch{segment.at(t0), segment.direction};
-        on_stretch(medium, stretch, t1 - t0);
-        const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
-        power *= flight.weight;
-        if (flight.scattered) on_scatter(medium, t0 + flight.distance, flight.weight);
-    });
+    using T = typename SceneT::scalar_type;
+    bool stopped = false;
+    const auto on_piece = [&](const Ray<T>& piece, T length, T before) {
+        for_scattering_medium_along(scene, air, media, piece, length, [&](const auto& medium, T t0, T t1) { stopped = !f(medium, piece, t0, t1, before); });
+        return !stopped;
+    };
+    auto hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, path, on_piece) : first_hit_in_air(scene, StraightAir{}, ray, segment, path, on_piece);
+    if (stopped) return std::nullopt;
+    return hit;
 }
 
 /// What the scene's air lets through along `ray` (unit direction) over `distance` (may be

@@ -8,6 +8,10 @@
 // kilometres a scene spans, air bends light by well under a degree, enough to move an
 // image (the mirage) and too little to move a shadow's edge visibly; tracing the curved
 // path that reaches a light is a boundary-value problem left for later.
+//
+// A caller may watch the path piece by piece (on_piece): every straight piece it takes
+// through the air, in order, up to the surface it lands on; a caller that returns false
+// stops the path there (a walker that scatters in fog filling the air).
 #pragma once
 
 #include <prism/core/aabb.hpp>
@@ -18,6 +22,8 @@
 
 #include <limits>
 #include <optional>
+#include <type_traits>
+#include <utility>
 
 namespace prism {
 
@@ -35,6 +41,15 @@ template <class SceneT>
     const T slack = T(64) * std::numeric_limits<T>::epsilon() * (piece_length + max_component(abs(piece.origin)));
     return scene.closest_hit(piece, {T(0), piece_length + slack});
 }
+
+/// What a path shows a caller that does not watch its pieces: nothing, and it goes on.
+struct AnyPiece {
+    template <Scalar T>
+    constexpr bool operator()(const Ray<T>&, T, T) const noexcept
+    {
+        return true;
+    }
+};
 
 /// The length of a path up to its current piece, told where the path lands.
 template <Scalar T>
@@ -72,19 +87,25 @@ template <class SceneT>
 } // namespace detail
 
 /// Where a ray through layered air first meets a surface (see first_hit_through below).
-template <class SceneT, IndexField F>
+template <class SceneT, IndexField F, class OnPiece = detail::AnyPiece>
 [[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const LayeredAir<F>& air,
                                                                                 const Ray<typename SceneT::scalar_type>& ray,
                                                                                 Ray<typename SceneT::scalar_type>& segment,
-                                                                                typename SceneT::scalar_type* path = nullptr) noexcept
+                                                                                typename SceneT::scalar_type* path = nullptr, OnPiece&& on_piece = {}) noexcept
 {
     using T = typename SceneT::scalar_type;
     static_assert(std::same_as<T, typename F::scalar_type>, "LayeredAir's field must have the scene's scalar type");
     const LayeredMedium<F> medium(air.field, air.bottom, air.top, air.layers);
     segment = {ray.origin, normalize(ray.direction)};
     detail::PathLength<T> length_so_far{T(0), path};
+    // The last straight piece, to the surface it meets or on forever.
+    const auto last_piece = [&](std::optional<Hit<T>> hit) -> std::optional<Hit<T>> {
+        if (!on_piece(std::as_const(segment), hit ? hit->crossing.t : infinity<T>, length_so_far.travelled)) return std::nullopt;
+        return length_so_far.landed(hit);
+    };
     const auto to_box = detail::approach(scene, Aabb<T>{{-infinity<T>, air.bottom, -infinity<T>}, {infinity<T>, air.top, infinity<T>}}, segment);
-    if (to_box.hit || !to_box.reaches) return length_so_far.landed(to_box.hit);
+    if (to_box.hit || !to_box.reaches) return last_piece(to_box.hit);
+    if (to_box.distance > T(0) && !on_piece(std::as_const(segment), to_box.distance, T(0))) return std::nullopt;
     length_so_far.travelled = to_box.distance;
     Vec3<T> origin = segment.at(to_box.distance), direction = segment.direction;
     // Entering through the top or bottom face, the ray starts in the layer it enters.
@@ -95,13 +116,14 @@ template <class SceneT, IndexField F>
         const T length_now = length(origin - start);
         segment = {start, heading};
         if (length_now > T(0)) {
-            if (auto hit = detail::hit_on_piece(scene, segment, length_now)) return length_so_far.landed(hit);
+            if (auto hit = detail::hit_on_piece(scene, segment, length_now)) return last_piece(hit);
+            if (!on_piece(std::as_const(segment), length_now, length_so_far.travelled)) return std::nullopt;
         }
         length_so_far.travelled += length_now;
         if (!inside_layers) {
-            if (heading.y == T(0)) return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>})); // level: straight on
+            if (heading.y == T(0)) return last_piece(scene.closest_hit(segment, {T(0), infinity<T>})); // level: straight on
             segment = {origin, direction};
-            return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>}));
+            return last_piece(scene.closest_hit(segment, {T(0), infinity<T>}));
         }
     }
     return std::nullopt;
@@ -110,18 +132,27 @@ template <class SceneT, IndexField F>
 /// Where a ray through curved air first meets a surface of the scene, or nothing; on a
 /// hit, `segment` is the straight piece (unit direction) on which it lies, the ray to
 /// shade with, and `path` (if given) receives the length of the whole curved path.
-template <class SceneT, IndexField F>
+/// on_piece(piece, length, before) is shown each straight piece of the path in order
+/// (unit direction; its length, infinite for the last if it meets nothing; the path's
+/// length before it), and returns false to stop the path there (then nothing is met).
+template <class SceneT, IndexField F, class OnPiece = detail::AnyPiece>
 [[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const GradedAir<F>& air,
                                                                                 const Ray<typename SceneT::scalar_type>& ray,
                                                                                 Ray<typename SceneT::scalar_type>& segment,
-                                                                                typename SceneT::scalar_type* path = nullptr) noexcept
+                                                                                typename SceneT::scalar_type* path = nullptr, OnPiece&& on_piece = {}) noexcept
 {
     using T = typename SceneT::scalar_type;
     static_assert(std::same_as<T, typename F::scalar_type>, "GradedAir's field must have the scene's scalar type");
     segment = {ray.origin, normalize(ray.direction)};
     detail::PathLength<T> length_so_far{T(0), path}; // along the path, up to `segment`'s origin
+    // The last straight piece, to the surface it meets or on forever.
+    const auto last_piece = [&](std::optional<Hit<T>> hit) -> std::optional<Hit<T>> {
+        if (!on_piece(std::as_const(segment), hit ? hit->crossing.t : infinity<T>, length_so_far.travelled)) return std::nullopt;
+        return length_so_far.landed(hit);
+    };
     const auto to_box = detail::approach(scene, air.region, segment);
-    if (to_box.hit || !to_box.reaches) return length_so_far.landed(to_box.hit);
+    if (to_box.hit || !to_box.reaches) return last_piece(to_box.hit);
+    if (to_box.distance > T(0) && !on_piece(std::as_const(segment), to_box.distance, T(0))) return std::nullopt;
     length_so_far.travelled = to_box.distance;
     CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(to_box.distance), segment.direction});
     const AdaptiveStepper<F> stepper(air.field, air.stepping);
@@ -160,39 +191,56 @@ template <class SceneT, IndexField F>
                 const Ray<T> second_segment{middle.position, second / second_length};
                 auto far = detail::hit_on_piece(scene, second_segment, second_length);
                 if (!far) break; // the curve grazes past where the chord met it: keep the chord's hit
+                if (!on_piece(first_segment, first_length, length_so_far.travelled)) return std::nullopt; // passed
                 segment = second_segment;
                 hit = far;
                 from = middle;
                 length_so_far.travelled += first_length;
                 length_now = second_length;
             }
-            return length_so_far.landed(hit);
+            return last_piece(hit);
         }
+        if (!on_piece(std::as_const(segment), chord_length, length_so_far.travelled)) return std::nullopt;
         length_so_far.travelled += chord_length;
         if (!air.region.contains(curved.position)) {
             // Out of the box: straight from here on.
             segment = {curved.position, curved.direction()};
-            return length_so_far.landed(scene.closest_hit(segment, {T(0), infinity<T>}));
+            return last_piece(scene.closest_hit(segment, {T(0), infinity<T>}));
         }
     }
     return std::nullopt;
 }
 
-/// The first surface a ray in the air meets: along the curve in GradedAir, straight in
-/// StraightAir (where `segment` is the ray itself). `path`, if given, receives the
-/// length travelled to it.
-template <class SceneT, class Air>
+/// The air through which rays curve: the air itself (GradedAir, LayeredAir), or the air a
+/// medium fills (FilledAir's base).
+template <class Air>
+[[nodiscard]] constexpr const auto& bending_air(const Air& air) noexcept
+{
+    if constexpr (requires { air.base; }) return air.base;
+    else return air;
+}
+
+/// The first surface a ray in the air meets: along the curve in GradedAir or LayeredAir
+/// (or fog filling them), straight in StraightAir (where `segment` is the ray itself).
+/// `path`, if given, receives the length travelled to it. on_piece, if given, is shown
+/// each straight piece of the path (first_hit_through's; in straight air the one piece,
+/// the ray with its direction made unit) and may stop the path (then nothing is met).
+template <class SceneT, class Air, class OnPiece = detail::AnyPiece>
 [[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_in_air(const SceneT& scene, const Air& air,
                                                                                const Ray<typename SceneT::scalar_type>& ray,
                                                                                Ray<typename SceneT::scalar_type>& segment,
-                                                                               typename SceneT::scalar_type* path = nullptr) noexcept
+                                                                               typename SceneT::scalar_type* path = nullptr, OnPiece&& on_piece = {}) noexcept
 {
     using T = typename SceneT::scalar_type;
     if constexpr (Air::curved) {
-        return first_hit_through(scene, air, ray, segment, path);
+        return first_hit_through(scene, bending_air(air), ray, segment, path, on_piece);
     } else {
         segment = ray;
         auto hit = scene.closest_hit(ray, {T(0), infinity<T>});
+        if constexpr (!std::is_same_v<std::remove_cvref_t<OnPiece>, detail::AnyPiece>) {
+            const T scale = length(ray.direction);
+            if (!on_piece(Ray<T>{ray.origin, normalize(ray.direction)}, hit ? hit->crossing.t * scale : infinity<T>, T(0))) return std::nullopt;
+        }
         if (hit && path != nullptr) *path = hit->crossing.t * length(ray.direction);
         return hit;
     }
