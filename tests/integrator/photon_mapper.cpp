@@ -395,10 +395,11 @@ TEST_CASE("a volumetric caustic through a frosted ball in haze: the beam estimat
 /// The photon mapper's volume furnace: a box of fog from -1 to 1 under a uniform sky,
 /// 2 million global photons (the tracer's default limits), a volume radius of 0.1; the mean
 /// of 81 parallel camera rays along +x starting at x = -3, on a grid of 9 x 9 from
-/// (y0, z0) with steps dy and dz.
+/// (y0, z0) with steps dy and dz, or of `jittered` rays about each point of the grid
+/// (uniform within 0.05 of it in y and z).
 template <class Air>
 Rgb<double> photon_mapper_volume_furnace(const Air& air, float y0, float dy, float z0, float dz, std::uint64_t seed, float volume_radius = 0.1f,
-                                         float indirect_volume_radius = 0.0f)
+                                         float indirect_volume_radius = 0.0f, int jittered = 0)
 {
     using T = float;
     // (The scene's one object is tiny and just above the box: photons are aimed at the scene and the fog together.)
@@ -412,8 +413,17 @@ Rgb<double> photon_mapper_volume_furnace(const Air& air, float y0, float dy, flo
     const PhotonMapper mapper(sky, config, air);
     Rgb<double> sum(0);
     Pcg32 rng(5, seed);
-    for (int k = 0; k < 81; ++k) sum += Rgb<double>(mapper.radiance(Ray<T>{{-3, y0 + dy * T(k % 9), z0 + dz * T(k / 9)}, {1, 0, 0}}, rng));
-    return sum / 81.0;
+    if (jittered == 0) {
+        for (int k = 0; k < 81; ++k) sum += Rgb<double>(mapper.radiance(Ray<T>{{-3, y0 + dy * T(k % 9), z0 + dz * T(k / 9)}, {1, 0, 0}}, rng));
+        return sum / 81.0;
+    }
+    Pcg32 jitter(9, seed);
+    for (int k = 0; k < 81; ++k)
+        for (int j = 0; j < jittered; ++j) {
+            const T oy = T(0.1) * (jitter.uniform<T>() - T(0.5)), oz = T(0.1) * (jitter.uniform<T>() - T(0.5));
+            sum += Rgb<double>(mapper.radiance(Ray<T>{{-3, y0 + oy + dy * T(k % 9), z0 + oz + dz * T(k / 9)}, {1, 0, 0}}, rng));
+        }
+    return sum / (81.0 * jittered);
 }
 
 TEST_CASE("the photon mapper's volume furnace: a box of fog that does not absorb, under a uniform sky, reads the sky's radiance")
@@ -473,22 +483,23 @@ TEST_CASE("the photon mapper's volume furnace in fog filling graded air: curved 
     }
 }
 
-TEST_CASE("the photon mapper's volume furnace in ground fog of varying density reads the sky's radiance, to 2 %")
+TEST_CASE("the photon mapper's volume furnace in ground fog of varying density reads the sky's radiance, to 1 %")
 {
     // As above, the box filled with ground fog (density 2.5 at the bottom, thinning by e
     // every 0.5 up): photons fly by spectral tracking, camera rays see through residual
     // ratio tracking. (Plain ratio tracking read 0.93 here in a grey fog of constant
-    // density: right on average, but each camera ray's transmittance a coin toss.)
-    // Measured 1.011, 1.014, 1.018 (with a radius of 0.05: 1.008, 1.011, 1.014; of 0.2:
-    // 0.993, 0.996, 1.001): the beam estimate blurs the density's gradient over its
-    // radius, and its noise is about 0.5 %. The same fog of constant density reads
-    // 1.002, 1.002, 1.000. 2 % is held.
+    // density: right on average, but each camera ray's transmittance a coin toss.) Each
+    // ray's transmittance is one estimate, so rays are many: 16 jittered about each of the
+    // 81 points, whose disks stay inside the box. Measured 1.0027, 1.0047, 1.0036 (other
+    // jitters: up to 1.0065). On the 81 fixed rays alone it read 1.011, 1.015, 1.018, the
+    // rows' means scattering from 0.988 to 1.050; with rays whose disks crossed the box's
+    // floor, where no photons are, 0.989 to 0.995. 1 % is held.
     const HeightFog<float> ground{.box = {Vec3<float>(-1), Vec3<float>(1)}, .floor = -1, .base = 2.5f, .scale_height = 0.5f};
     const FilledAir<VaryingFog<HeightFog<float>>> air{.medium = VaryingFog(ground, Rgb<float>(0), Rgb<float>(0.5f, 1.0f, 2.0f), {.g = 0.6f})};
-    const Rgb<double> mean = photon_mapper_volume_furnace(air, -0.9f, 0.2f, -0.6f, 0.15f, 7);
+    const Rgb<double> mean = photon_mapper_volume_furnace(air, -0.8f, 0.2f, -0.6f, 0.15f, 1, 0.1f, 0.0f, 16);
     for (int c = 0; c < 3; ++c) {
         CAPTURE(c);
         MESSAGE("channel ", c, ": ", mean[c]);
-        CHECK(mean[c] == doctest::Approx(1).epsilon(0.02).scale(0));
+        CHECK(mean[c] == doctest::Approx(1).epsilon(0.01).scale(0));
     }
 }
