@@ -9677,58 +9677,62 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         // In the air a path follows the air's curve; inside objects, straight lines.
         Ray<T> segment = ray;
         T path = T(0);
-        std::optional<Hit<T>> hit;
-        if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
-            // Where the path scatters in the media it crosses before the surface, piece by
-            // piece of its way: on each stretch of a medium that scatters, the caller's
-            // on_medium sees the stretch, then the walker's flight is drawn (the medium's
-            // sample_flight) and its power takes the draw's weight.
-            enum class InMedium { passed, scattered, absorbed } in_medium = InMedium::passed;
-            hit = first_hit_through_media(scene, air, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
-                const Ray<T> stretch{piece.at(t0), piece.direction};
-                const Rgb<T> entering = power;
-                if constexpr (std::is_invocable_v<OnMedium&, const Md&, const WalkMediumStretch<T>&>)
-                    on_medium(medium, WalkMediumStretch<T>{stretch, t1 - t0, power, diffuse_bounces, media, rng});
-                const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
-                power *= flight.weight;
-                if (!flight.scattered) return true;
-                const T s = t0 + flight.distance;
-                const Vec3<T>& d = piece.direction;
-                const Vec3<T> p = piece.origin + s * d;
-                travelled += before + s;
-                const bool last = medium_bounces == limits.max_medium_bounces;
-                in_medium = InMedium::absorbed;
-                if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last,
-                                                          rng, surface_bounces, stretch, t1 - t0, entering}))
+        // Where the path scatters in the media it crosses before the surface, piece by piece
+        // of its way: on each stretch of a medium that scatters, the caller's on_medium sees
+        // the stretch, then the walker's flight is drawn (the medium's sample_flight) and its
+        // power takes the draw's weight.
+        enum class InMedium { passed, scattered, absorbed };
+        [[maybe_unused]] InMedium in_medium = InMedium::passed;
+        const std::optional<Hit<T>> hit = [&] {
+            if constexpr (!SceneT::has_scattering_media && !air_scatters<Air>) {
+                return media.empty() ? first_hit_in_air(scene, air, ray, segment, &path) : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
+            } else {
+                return first_hit_through_media(scene, air, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
+                    const Ray<T> stretch{piece.at(t0), piece.direction};
+                    const Rgb<T> entering = power;
+                    if constexpr (std::is_invocable_v<OnMedium&, const Md&, const WalkMediumStretch<T>&>)
+                        on_medium(medium, WalkMediumStretch<T>{stretch, t1 - t0, power, diffuse_bounces, media, rng});
+                    const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
+                    power *= flight.weight;
+                    if (!flight.scattered) return true;
+                    const T s = t0 + flight.distance;
+                    const Vec3<T>& d = piece.direction;
+                    const Vec3<T> p = piece.origin + s * d;
+                    travelled += before + s;
+                    const bool last = medium_bounces == limits.max_medium_bounces;
+                    in_medium = InMedium::absorbed;
+                    if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last,
+                                                              rng, surface_bounces, stretch, t1 - t0, entering}))
+                        return false;
+                    if constexpr (Mode == Transport::importance) {
+                        // A photon keeps its power: it goes on with the chance of the draw's
+                        // largest weight (the albedo in a grey medium), divided out.
+                        const T keep = std::min(T(1), max_component(flight.weight));
+                        if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return false;
+                        power /= keep;
+                    } else {
+                        if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return false;
+                    }
+                    const T u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
+                    const PhaseSample<T> next = medium.phase.sample(d, u1, u2);
+                    ray = {p, next.direction};
+                    last_point = p;
+                    last_pdf = next.pdf;
+                    ++diffuse_bounces;
+                    ++surface_bounces;
+                    if (direct) first_specular = false;
+                    in_medium = InMedium::scattered;
                     return false;
-                if constexpr (Mode == Transport::importance) {
-                    // A photon keeps its power: it goes on with the chance of the draw's
-                    // largest weight (the albedo in a grey medium), divided out.
-                    const T keep = std::min(T(1), max_component(flight.weight));
-                    if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return false;
-                    power /= keep;
-                } else {
-                    if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return false;
-                }
-                const T u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
-                const PhaseSample<T> next = medium.phase.sample(d, u1, u2);
-                ray = {p, next.direction};
-                last_point = p;
-                last_pdf = next.pdf;
-                ++diffuse_bounces;
-                ++surface_bounces;
-                if (direct) first_specular = false;
-                in_medium = InMedium::scattered;
-                return false;
-            });
+                });
+            }
+        }();
+        if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
             if (in_medium == InMedium::absorbed) return;
             if (in_medium == InMedium::scattered) {
                 if (++medium_bounces > limits.max_medium_bounces) return;
                 direct = false;
                 continue;
             }
-        } else {
-            hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, &path) : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
         }
         if (!hit) {
             on_escape(WalkEscape<T>{segment, power, diffuse_bounces, first_specular, last_pdf});
@@ -13215,11 +13219,16 @@ public:
                                     if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
                                 }
                                 T shared = T(1);
-                                if constexpr (has_equiangular<L, Md>) {
-                                    if (config_.equiangular) {
-                                        const T t = dot(at.point - at.stretch.origin, at.stretch.direction);
-                                        const T flight = medium.flight_pdf(at.entering, t);
-                                        shared = flight / (flight + Equiangular(at.stretch, at.stretch_length, light.position).pdf(t));
+                                // (Tested on the medium first, outside the light's condition:
+                                // clang checks a branch that depends on the light alone
+                                // against the medium at hand.)
+                                if constexpr (uniform_medium<Md>) {
+                                    if constexpr (has_equiangular<L, Md>) {
+                                        if (config_.equiangular) {
+                                            const T t = dot(at.point - at.stretch.origin, at.stretch.direction);
+                                            const T flight = medium.flight_pdf(at.entering, t);
+                                            shared = flight / (flight + Equiangular(at.stretch, at.stretch_length, light.position).pdf(t));
+                                        }
                                     }
                                 }
                                 for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, at.point, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
@@ -14355,16 +14364,17 @@ private:
         // along each piece of the way.
         Ray<T> segment = ray;
         [[maybe_unused]] Rgb<T> seen(T(1)), scattered(T(0)); // what the media let through from the ray's origin to the piece; what they scatter toward it
-        std::optional<Hit<T>> hit;
-        if constexpr (has_media) {
-            hit = first_hit_through_media(*scene_, air_, media, ray, segment, nullptr, [&](const auto& medium, const Ray<T>& piece, T t0, T t1, T) {
-                scattered += seen * single_scattering(medium, piece, t0, t1, media, jitter...);
-                seen *= transmittance_along(medium, piece, t0, t1);
-                return true;
-            });
-        } else {
-            hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
-        }
+        const std::optional<Hit<T>> hit = [&] {
+            if constexpr (has_media) {
+                return first_hit_through_media(*scene_, air_, media, ray, segment, nullptr, [&](const auto& medium, const Ray<T>& piece, T t0, T t1, T) {
+                    scattered += seen * single_scattering(medium, piece, t0, t1, media, jitter...);
+                    seen *= transmittance_along(medium, piece, t0, t1);
+                    return true;
+                });
+            } else {
+                return media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
+            }
+        }();
         const Rgb<T> beyond = !hit ? scene_->escaped(segment.direction) : scene_->visit_material(*hit, [&](const auto& material) {
             return shade(material, segment, *hit, depth, weight, wavelength, media, jitter...);
         });

@@ -179,11 +179,16 @@ public:
                                     if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
                                 }
                                 T shared = T(1);
-                                if constexpr (has_equiangular<L, Md>) {
-                                    if (config_.equiangular) {
-                                        const T t = dot(at.point - at.stretch.origin, at.stretch.direction);
-                                        const T flight = medium.flight_pdf(at.entering, t);
-                                        shared = flight / (flight + Equiangular(at.stretch, at.stretch_length, light.position).pdf(t));
+                                // (Tested on the medium first, outside the light's condition:
+                                // clang checks a branch that depends on the light alone
+                                // against the medium at hand.)
+                                if constexpr (uniform_medium<Md>) {
+                                    if constexpr (has_equiangular<L, Md>) {
+                                        if (config_.equiangular) {
+                                            const T t = dot(at.point - at.stretch.origin, at.stretch.direction);
+                                            const T flight = medium.flight_pdf(at.entering, t);
+                                            shared = flight / (flight + Equiangular(at.stretch, at.stretch_length, light.position).pdf(t));
+                                        }
                                     }
                                 }
                                 for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, at.point, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {

@@ -147,16 +147,17 @@ private:
         // along each piece of the way.
         Ray<T> segment = ray;
         [[maybe_unused]] Rgb<T> seen(T(1)), scattered(T(0)); // what the media let through from the ray's origin to the piece; what they scatter toward it
-        std::optional<Hit<T>> hit;
-        if constexpr (has_media) {
-            hit = first_hit_through_media(*scene_, air_, media, ray, segment, nullptr, [&](const auto& medium, const Ray<T>& piece, T t0, T t1, T) {
-                scattered += seen * single_scattering(medium, piece, t0, t1, media, jitter...);
-                seen *= transmittance_along(medium, piece, t0, t1);
-                return true;
-            });
-        } else {
-            hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
-        }
+        const std::optional<Hit<T>> hit = [&] {
+            if constexpr (has_media) {
+                return first_hit_through_media(*scene_, air_, media, ray, segment, nullptr, [&](const auto& medium, const Ray<T>& piece, T t0, T t1, T) {
+                    scattered += seen * single_scattering(medium, piece, t0, t1, media, jitter...);
+                    seen *= transmittance_along(medium, piece, t0, t1);
+                    return true;
+                });
+            } else {
+                return media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
+            }
+        }();
         const Rgb<T> beyond = !hit ? scene_->escaped(segment.direction) : scene_->visit_material(*hit, [&](const auto& material) {
             return shade(material, segment, *hit, depth, weight, wavelength, media, jitter...);
         });

@@ -195,58 +195,62 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         // In the air a path follows the air's curve; inside objects, straight lines.
         Ray<T> segment = ray;
         T path = T(0);
-        std::optional<Hit<T>> hit;
-        if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
-            // Where the path scatters in the media it crosses before the surface, piece by
-            // piece of its way: on each stretch of a medium that scatters, the caller's
-            // on_medium sees the stretch, then the walker's flight is drawn (the medium's
-            // sample_flight) and its power takes the draw's weight.
-            enum class InMedium { passed, scattered, absorbed } in_medium = InMedium::passed;
-            hit = first_hit_through_media(scene, air, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
-                const Ray<T> stretch{piece.at(t0), piece.direction};
-                const Rgb<T> entering = power;
-                if constexpr (std::is_invocable_v<OnMedium&, const Md&, const WalkMediumStretch<T>&>)
-                    on_medium(medium, WalkMediumStretch<T>{stretch, t1 - t0, power, diffuse_bounces, media, rng});
-                const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
-                power *= flight.weight;
-                if (!flight.scattered) return true;
-                const T s = t0 + flight.distance;
-                const Vec3<T>& d = piece.direction;
-                const Vec3<T> p = piece.origin + s * d;
-                travelled += before + s;
-                const bool last = medium_bounces == limits.max_medium_bounces;
-                in_medium = InMedium::absorbed;
-                if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last,
-                                                          rng, surface_bounces, stretch, t1 - t0, entering}))
+        // Where the path scatters in the media it crosses before the surface, piece by piece
+        // of its way: on each stretch of a medium that scatters, the caller's on_medium sees
+        // the stretch, then the walker's flight is drawn (the medium's sample_flight) and its
+        // power takes the draw's weight.
+        enum class InMedium { passed, scattered, absorbed };
+        [[maybe_unused]] InMedium in_medium = InMedium::passed;
+        const std::optional<Hit<T>> hit = [&] {
+            if constexpr (!SceneT::has_scattering_media && !air_scatters<Air>) {
+                return media.empty() ? first_hit_in_air(scene, air, ray, segment, &path) : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
+            } else {
+                return first_hit_through_media(scene, air, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
+                    const Ray<T> stretch{piece.at(t0), piece.direction};
+                    const Rgb<T> entering = power;
+                    if constexpr (std::is_invocable_v<OnMedium&, const Md&, const WalkMediumStretch<T>&>)
+                        on_medium(medium, WalkMediumStretch<T>{stretch, t1 - t0, power, diffuse_bounces, media, rng});
+                    const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
+                    power *= flight.weight;
+                    if (!flight.scattered) return true;
+                    const T s = t0 + flight.distance;
+                    const Vec3<T>& d = piece.direction;
+                    const Vec3<T> p = piece.origin + s * d;
+                    travelled += before + s;
+                    const bool last = medium_bounces == limits.max_medium_bounces;
+                    in_medium = InMedium::absorbed;
+                    if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last,
+                                                              rng, surface_bounces, stretch, t1 - t0, entering}))
+                        return false;
+                    if constexpr (Mode == Transport::importance) {
+                        // A photon keeps its power: it goes on with the chance of the draw's
+                        // largest weight (the albedo in a grey medium), divided out.
+                        const T keep = std::min(T(1), max_component(flight.weight));
+                        if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return false;
+                        power /= keep;
+                    } else {
+                        if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return false;
+                    }
+                    const T u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
+                    const PhaseSample<T> next = medium.phase.sample(d, u1, u2);
+                    ray = {p, next.direction};
+                    last_point = p;
+                    last_pdf = next.pdf;
+                    ++diffuse_bounces;
+                    ++surface_bounces;
+                    if (direct) first_specular = false;
+                    in_medium = InMedium::scattered;
                     return false;
-                if constexpr (Mode == Transport::importance) {
-                    // A photon keeps its power: it goes on with the chance of the draw's
-                    // largest weight (the albedo in a grey medium), divided out.
-                    const T keep = std::min(T(1), max_component(flight.weight));
-                    if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return false;
-                    power /= keep;
-                } else {
-                    if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return false;
-                }
-                const T u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
-                const PhaseSample<T> next = medium.phase.sample(d, u1, u2);
-                ray = {p, next.direction};
-                last_point = p;
-                last_pdf = next.pdf;
-                ++diffuse_bounces;
-                ++surface_bounces;
-                if (direct) first_specular = false;
-                in_medium = InMedium::scattered;
-                return false;
-            });
+                });
+            }
+        }();
+        if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
             if (in_medium == InMedium::absorbed) return;
             if (in_medium == InMedium::scattered) {
                 if (++medium_bounces > limits.max_medium_bounces) return;
                 direct = false;
                 continue;
             }
-        } else {
-            hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, &path) : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
         }
         if (!hit) {
             on_escape(WalkEscape<T>{segment, power, diffuse_bounces, first_specular, last_pdf});
