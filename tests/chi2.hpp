@@ -55,6 +55,8 @@ struct Chi2 {
     double p_value = 0;    ///< the probability of a statistic at least this large if the sampler is right
     double missing = 0;    ///< expected count of samples the bins do not hold (the density's mass outside them, or where it is 0)
     double stray = 0;      ///< samples in bins where the finest integration found no density (a sliver of support it missed, or a wrong sample)
+    double mass = 0;       ///< the density's integral over the bins, by the quadrature that gave the expected counts (where a test sets it)
+    double share = 0;      ///< the share of draws that gave a sample (where a test sets it)
 };
 
 /// Pearson's test of `observed` counts against `expected` ones (the same bins, the same

@@ -6,6 +6,7 @@
 
 #include <doctest/doctest.h>
 
+#include "effort.hpp"
 #include "through_memory.hpp"
 
 namespace test {
@@ -111,17 +112,6 @@ Disagreements far_disagreements(const F& shape, const D& twin, prism::Vec3<doubl
 #include <string>
 
 namespace test {
-
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define PRISM_TEST_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
-#define PRISM_TEST_SANITIZED 1
-#endif
-#endif
-#ifndef PRISM_TEST_SANITIZED
-#define PRISM_TEST_SANITIZED 0
-#endif
 
 /// Whether this build runs under a sanitizer, which keeps its own operator new (so
 /// tests/main.cpp does not replace it, and allocation_budget has no effect).

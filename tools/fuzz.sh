@@ -3,7 +3,12 @@
 # Fuzz prism with libFuzzer (clang 19, Debian: clang-19 libclang-rt-19-dev), one target
 # per core at a time, under AddressSanitizer and UndefinedBehaviorSanitizer with
 # PRISM_ASSERT active:
-#   tools/fuzz.sh [SECONDS]     each target for SECONDS (default 30)
+#   tools/fuzz.sh [SECONDS]          each target for SECONDS (default 30)
+#   tools/fuzz.sh --budget SECONDS   all targets fuzzed within about SECONDS of wall time (their
+#                                    builds aside), one per core at a time, each an equal share
+#                                    (the full tier: 240)
+#   tools/fuzz.sh --runs N           each target for N inputs, however long it takes (the long
+#                                    campaigns: 1000000; docs/contributing.md has the last)
 # Targets (tests/fuzz/): quadric (crossings of any ten coefficients), csg (trees of
 # every operator), photon_map (the KD-tree against brute force, the estimates), and the
 # file readers pfm, png, jpeg, hdr, density (a density grid), ply, obj, mtl (an OBJ's material library) and exr (any bytes as a file; exr as prism_merge reads a
@@ -13,7 +18,15 @@
 # leaves its input as build/fuzz/crash-<target>-*, and the script fails.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-seconds=${1:-30}
+targets=(quadric csg photon_map pfm png jpeg hdr density ply obj mtl exr)
+cores=$(nproc)
+seconds=30 runs=-1
+case "${1:-}" in
+  --budget) seconds=$(( ${2:?--budget takes seconds} * cores / ${#targets[@]} )); (( seconds < 5 )) && seconds=5 ;;
+  --runs) runs=${2:?--runs takes a count} seconds=0 ;;
+  "") ;;
+  *) seconds=$1 ;;
+esac
 out="$root/build/fuzz"
 mkdir -p "$out"
 flags=(-std=c++20 -O1 -g1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -DPRISM_ENABLE_ASSERTIONS
@@ -31,19 +44,18 @@ fuzz_one() {
     { echo "fuzz: $target FAILED to build:"; tail -n 40 "$out/$target.log"; } >"$report"
     return 0
   fi
-  if ! "$out/fuzz_$target" "$out/$target" "$root/tests/fuzz/corpus/$target" -max_total_time="$seconds" -max_len="$max_len" -malloc_limit_mb=512 \
+  local begin=$(date +%s)
+  if ! "$out/fuzz_$target" "$out/$target" "$root/tests/fuzz/corpus/$target" -max_total_time="$seconds" -runs="$runs" -max_len="$max_len" -malloc_limit_mb=512 \
        -artifact_prefix="$out/crash-$target-" -print_final_stats=1 >"$out/$target.log" 2>&1; then
     { echo "fuzz: $target FAILED; its log ends:"; tail -n 40 "$out/$target.log"; } >"$report"
     return 0
   fi
-  local runs
-  runs=$(grep -E "stat::number_of_executed_units" "$out/$target.log" | awk '{print $2}')
-  echo "fuzz: $target: ${runs:-?} inputs in ${seconds} s, corpus $(ls "$out/$target" "$root/tests/fuzz/corpus/$target" | grep -vc ':$\|^$')" >"$report"
+  local executed
+  executed=$(grep -E "stat::number_of_executed_units" "$out/$target.log" | awk '{print $2}')
+  echo "fuzz: $target: ${executed:-?} inputs in $(( $(date +%s) - begin )) s, corpus $(ls "$out/$target" "$root/tests/fuzz/corpus/$target" | grep -vc ':$\|^$')" >"$report"
 }
 
-# One target per core at a time, each for SECONDS of its own.
-targets=(quadric csg photon_map pfm png jpeg hdr density ply obj mtl exr)
-cores=$(nproc)
+# One target per core at a time.
 rm -f "$out"/*.report
 for target in "${targets[@]}"; do
   while (( $(jobs -rp | wc -l) >= cores )); do wait -n || true; done

@@ -4,7 +4,7 @@
 #   tools/setup.sh          build, test and example needs
 #   tools/setup.sh --bench  also POV-Ray, Blender (Cycles, about 700 MB), nanoflann, matplotlib and PIL, for bench/
 set -euo pipefail
-packages=(g++ cmake ninja-build meson pkgconf python3 doxygen libglm-dev doctest-dev libstb-dev colord-data libtinyobjloader-dev libopenexr-dev openexr libopenmpi-dev openmpi-bin clang-19 libclang-rt-19-dev libc++-19-dev libc++abi-19-dev)
+packages=(g++ cmake ninja-build meson pkgconf python3 doxygen libglm-dev doctest-dev libstb-dev colord-data libtinyobjloader-dev libopenexr-dev openexr libopenmpi-dev openmpi-bin clang-19 libclang-rt-19-dev ccache libc++-19-dev libc++abi-19-dev)
 if [[ "${1:-}" == "--bench" ]]; then packages+=(povray blender python3-matplotlib python3-pil libnanoflann-dev libembree-dev); fi
 
 missing=()

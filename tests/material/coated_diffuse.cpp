@@ -64,7 +64,7 @@ TEST_CASE("coated diffuse: sampling follows the pdf, weights are f cos / pdf, re
             CAPTURE(theta);
             const auto material = coated(0.6, roughness);
             const auto lobe = material.glossy({});
-            test::check_lobe_sampling(lobe, test::polar(theta, 60), 3e-3);
+            test::check_lobe_sampling(lobe, test::polar(theta, 60), 3e-3, 20000);
             const auto a = test::polar(30, 10), b = test::polar(65, 170);
             CHECK(lobe.f(a, b).x == doctest::Approx(lobe.f(b, a).x).epsilon(1e-12));
         }
@@ -123,7 +123,7 @@ TEST_CASE("coated diffuse under a coat of textured roughness: the tables' coat a
             CHECK(s.albedo == doctest::Approx(1).epsilon(4e-3));
         }
     // Sampling still follows the pdf between levels.
-    test::check_lobe_sampling(textured.glossy(at(0.75)), test::polar(45, 0), 3e-3);
+    test::check_lobe_sampling(textured.glossy(at(0.75)), test::polar(45, 0), 3e-3, 20000);
     CHECK_THROWS_WITH_AS(coat_of(0.5, 0.2, 1.5), doctest::Contains("CoatedDiffuse coat roughness texture's values must be in [0, 1], got up to 1.5"),
                          std::invalid_argument);
 }

@@ -30,7 +30,7 @@ TEST_CASE("rough conductor: sampling follows the pdf it claims, weights are f co
             CAPTURE(ru);
             CAPTURE(rv);
             CAPTURE(theta);
-            test::check_lobe_sampling(lobe, test::polar(theta, 35));
+            test::check_lobe_sampling(lobe, test::polar(theta, 35), 5e-3, 20000);
         }
     }
 }

@@ -3,6 +3,8 @@
 
 #include <doctest/doctest.h>
 
+#include <initializer_list>
+
 using namespace prism;
 
 TEST_CASE("each filter's mean is its weight averaged over the disk, by quadrature")

@@ -14,6 +14,7 @@
 #include <prism/core/config.hpp>
 #include <prism/core/interval.hpp>
 #include <prism/core/math.hpp>
+#include <prism/core/offset.hpp>
 #include <prism/core/ray.hpp>
 
 #include <array>
