@@ -4,8 +4,11 @@
 
     bench/compile_cost.py --translation-units [--units A,B] [--include DIR] [--label NAME]
         CPU seconds and peak memory of the compiler (g++ and clang++-19, -O2) for each
-        example and each test file: results/compile_cost_units.csv (rows appended,
-        labelled, so that a run on another checkout's include/ sits beside this one).
+        example, the newcomer's two scenes (bench/newcomer_box.cpp: an area-lit Cornell box
+        with a GGX and a glass sphere, path-traced; bench/newcomer_fog.cpp: the same in fog
+        by progressive photon mapping) and each test file: results/compile_cost_units.csv
+        (rows appended, labelled, so that a run on another checkout's include/ sits beside
+        this one).
 
 What a scene pays for its materials: the Cornell box with glass and mirror spheres
 (bench/scene_full.cpp) against the same box with diffuse spheres
@@ -29,7 +32,8 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 def compile_units(args):
     """Each example and test file compiled alone (no precompiled header), g++ and clang."""
     include = pathlib.Path(args.include or ROOT / "include")
-    units = sorted((ROOT / "examples").glob("*.cpp")) + sorted(p for p in (ROOT / "tests").glob("*/*.cpp") if p.parent.name not in ("fuzz",))
+    units = (sorted((ROOT / "examples").glob("*.cpp")) + sorted((ROOT / "bench").glob("newcomer_*.cpp")) +
+             sorted(p for p in (ROOT / "tests").glob("*/*.cpp") if p.parent.name not in ("fuzz",)))
     units = [u for u in units if u.name not in ("mpi_render.cpp",) and u.relative_to(ROOT).as_posix() not in ("tests/io/exr.cpp", "tests/io/mesh.cpp")]
     if args.units:
         units = [u for u in units if u.relative_to(ROOT).as_posix() in args.units.split(",")]

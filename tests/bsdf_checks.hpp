@@ -7,6 +7,7 @@
 #pragma once
 
 #include "chi2.hpp"
+#include "effort.hpp"
 
 #include <prism/material/bsdf.hpp>
 
@@ -205,16 +206,16 @@ inline prism::Vec3<double> polar(double theta_deg, double phi_deg)
 /// = 7e-4, and 2e-4 where nine draws in ten land); and each of `draws` more draws' weight
 /// and density against f cos / pdf and the pdf at its direction. Returns what those draws
 /// found, for the caller's own checks (their mean weight's standard error is the caller's
-/// to size by `draws`).
+/// to size by `draws`). Under a sanitizer, an eighth of the draws (tests/effort.hpp).
 template <class B>
 LobeSampling check_lobe_sampling(const B& lobe, const prism::Vec3<double>& wo, double mass_epsilon = 5e-3, long draws = 200000)
 {
-    const Chi2 chi2 = chi2_lobe(lobe, wo, 500000);
+    const Chi2 chi2 = chi2_lobe(lobe, wo, samples(500000));
     CAPTURE(chi2.statistic);
     CHECK(chi2.p_value > 1e-3);
     CHECK(chi2.stray < 10);
-    CHECK(chi2.mass == doctest::Approx(chi2.share).epsilon(mass_epsilon));
-    const LobeSampling s = sample_lobe(lobe, wo, draws);
+    CHECK(chi2.mass == doctest::Approx(chi2.share).epsilon(resolved(mass_epsilon)));
+    const LobeSampling s = sample_lobe(lobe, wo, samples(draws));
     CHECK(s.worst_weight < 1e-9);
     CHECK(s.worst_pdf < 1e-9);
     return s;

@@ -97,17 +97,17 @@ std::vector<P3<T>> clustered(prism::Pcg32& rng, std::size_t n)
 #else
 #define PRISM_KD_CONSTEXPR constexpr
 #endif
-constexpr std::array<std::array<double, 2>, 20> grid = [] {
+constexpr std::array<std::array<double, 2>, 20> plane_grid = [] {
     std::array<std::array<double, 2>, 20> p{};
     for (int i = 0; i < 20; ++i) p[static_cast<std::size_t>(i)] = {double(i % 5), double(i / 5)};
     return p;
 }();
 PRISM_KD_CONSTEXPR auto grid_nearest = [] {
-    const KdTree<ArrayPoints<double, 2>, 2> tree(ArrayPoints<double, 2>{grid});
+    const KdTree<ArrayPoints<double, 2>, 2> tree(ArrayPoints<double, 2>{plane_grid});
     return tree.nearest<3>({2.1, 1.9});
 }();
 PRISM_KD_CONSTEXPR int grid_within = [] {
-    const KdTree<ArrayPoints<double, 2>, 2> tree(ArrayPoints<double, 2>{grid});
+    const KdTree<ArrayPoints<double, 2>, 2> tree(ArrayPoints<double, 2>{plane_grid});
     int count = 0;
     tree.within({2.0, 2.0}, 1.0, [&](std::uint32_t, double) { ++count; });
     return count;
@@ -239,7 +239,7 @@ TEST_CASE("memory and size")
 
 TEST_CASE("points with a NaN coordinate are refused, naming the point")
 {
-    // Issue 10: a tree over points with NaN coordinates answered 273 of 500 ordinary
+    // Regression: a tree over points with NaN coordinates answered 273 of 500 ordinary
     // k-nearest queries wrongly.
     std::vector<std::array<float, 3>> points(100, {0.5f, 0.5f, 0.5f});
     for (std::size_t i = 0; i < points.size(); ++i) points[i][0] = float(i);

@@ -43,7 +43,7 @@ refuses "whole/$image holds no exact sums \(no 'weight.0' channel\): it is not a
 refuses "unknown option '--bogus'" "${out[@]}" --bogus "$work/top/$image"
 refuses "--out FILE.exr is required" "$work/top/$image"
 
-# Issue 33: an output that names a part would overwrite it; the part stays as it was.
+# Regression: an output that names a part would overwrite it; the part stays as it was.
 cp "$work/top/$image" "$work/top-before.exr"
 refuses "is the part .*: it would be overwritten" --out "$work/top/$image" "$work/top/$image" "$work/top2/$image" "$work/bottom/$image"
 ln -s "$work/top/$image" "$work/alias.exr"
@@ -86,4 +86,4 @@ if [[ $(basename "$example") == cornell ]]; then
   run corner_b "$@" --width 65536 --height 32768 --crop 65535,65536,32767,32768
   refuses "the parts' crops hold 2 pixels, but they span .*: a crop is missing" "${out[@]}" "$work/corner_a/$image" "$work/corner_b/$image"
 fi
-echo "merge: refusals of issue 33 hold"
+echo "merge: refusals hold"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# An example's outputs are checked before it renders and written all or none
-# (issue 33): `outputs.sh CORNELL` runs the cornell example (it writes cornell.png and
+# An example's outputs are checked before it renders and written all or none:
+# `outputs.sh CORNELL` runs the cornell example (it writes cornell.png and
 # cornell.pfm) into folders where one of its outputs cannot be written.
 set -euo pipefail
 example=$1

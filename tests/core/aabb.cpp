@@ -21,7 +21,7 @@ TEST_CASE_TEMPLATE("Aabb clips a ray to the span inside it", T, float, double)
 
 TEST_CASE("a denormal direction from a face is not a miss (0 * inf was NaN)")
 {
-    // Issue 10: a ray starting on a box's top face and going down at 7e-45 per unit came
+    // Regression: a ray starting on a box's top face and going down at 7e-45 per unit came
     // out NaN on that axis and was culled; the box itself says it crosses.
     const prism::Aabb<float> box{Vec3<float>{8711.77051f, -46.0414314f, 4909.47168f}, Vec3<float>{8711.77246f, -46.0396309f, 4909.47314f}};
     const prism::Ray<float> ray{{8711.77148f, 9953.95996f, 4909.47314f}, {7.00649232e-45f, -0.770615876f, -7.00649232e-45f}};

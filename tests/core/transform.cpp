@@ -61,7 +61,7 @@ TEST_CASE("singular and malformed transforms are rejected")
 
 TEST_CASE("then() checks its product, and singular means ill-conditioned, not a small determinant")
 {
-    // Issue 10: then() re-checked nothing, so four scale(1e12) gave an infinite matrix
+    // Regression: then() re-checked nothing, so four scale(1e12) gave an infinite matrix
     // and translate(3e38) twice gave inf; and scale({1e-6, 1, 1}) was called singular.
     const auto big = Transform<float>::scale(Vec3<float>(1e12f));
     CHECK_THROWS_WITH_AS((void)big.then(big).then(big).then(big), doctest::Contains("Transform::then"), std::invalid_argument);

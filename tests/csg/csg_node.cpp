@@ -226,7 +226,7 @@ TEST_CASE("a ray leaving a CSG surface starts on the side it leaves by")
     CHECK(wrong == 0);
 }
 
-// Issue 33: seen from 10^3, a CSG node of size 10^-3 is 16 steps of float t deep, and
+// Regression: seen from 10^3, a CSG node of size 10^-3 is 16 steps of float t deep, and
 // its children's crossings fell within a step of each other: a ball's exit and its
 // hole's merged in the wrong order left slivers where there is nothing (122 hits lost
 // and 72 gained of 32 000 rays, 261 of 49 796 spawned rays on the wrong side). The node
@@ -322,7 +322,7 @@ std::pair<long, long> bead_wrong_side_spawns(double size)
 
 } // namespace
 
-// Issue 33, what is left: near a rim, where the ball's surface and its hole's meet, a
+// What is left of a loss near a rim: near a rim, where the ball's surface and its hole's meet, a
 // spawned ray leaves the surface it hit by that point's error bound along its normal, and
 // may land past the other surface. In float the error is a coordinate step, so the share
 // of spawns that do falls as the bead's size in steps grows; in double it is nil. (Stepping

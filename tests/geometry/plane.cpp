@@ -58,7 +58,7 @@ TEST_CASE("bad input names the parameter")
 
 TEST_CASE("normals as small as a denormal or as large as 3e38 give the same plane")
 {
-    // Issue 10: (1e-45, 0, 0) and (3e38, 3e38, 0) made |normal| underflow or overflow and
+    // Regression: (1e-45, 0, 0) and (3e38, 3e38, 0) made |normal| underflow or overflow and
     // the plane vanished.
     for (const prism::Vec3<float> n : {prism::Vec3<float>{1e-45f, 0, 0}, prism::Vec3<float>{3e38f, 3e38f, 0}, prism::Vec3<float>{1, 1, 0}}) {
         const auto plane = prism::Plane<float>::through({1, 0, 0}, n);

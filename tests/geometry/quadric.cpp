@@ -237,7 +237,7 @@ TEST_CASE_TEMPLATE("a ray leaving an ellipsoid quadric never hits it again", T, 
     }
 }
 
-// Issue 33: a float unit ellipsoid seen from 10^4 lost about 50 hits in 10^6 rays and
+// Regression: a float unit ellipsoid seen from 10^4 lost about 50 hits in 10^6 rays and
 // reported as many where there are none, all within 10^-3 of its rim: its closest
 // approach m = o + t d was found in float, off the line by an ulp of the distance.
 TEST_CASE("a float ellipsoid seen from 10^4 loses no hit and gains none against its double evaluation")
@@ -274,7 +274,7 @@ TEST_CASE("bad input names the coefficient or parameter")
     CHECK_THROWS_WITH_AS((void)Quadric<float>::ellipsoid({0, 0, 0}, {1, 0, 1}), doctest::Contains("semi_axes.y"), std::invalid_argument);
 }
 
-// Issue 10: a quadric seen from afar lost its hits (C = F(o) ~ |o|^2 swamped the
+// Regression: a quadric seen from afar lost its hits (C = F(o) ~ |o|^2 swamped the
 // discriminant). A unit ball written as a quadric, 3000 units from a float camera, must
 // cover the same pixels as a Sphere; before the fix 36 % of them were missing.
 TEST_CASE("a quadric ball 3000 units away covers the pixels a Sphere does")
@@ -322,7 +322,7 @@ TEST_CASE("coefficients are normalised by a power of two: tiny or huge quadrics 
 TEST_CASE("an ellipsoid's semi-axes are checked by name, not through a coefficient")
 {
     using namespace prism;
-    // Issue 10: semi-axes 1e20 or 1e-20 reported a coefficient.
+    // Regression: semi-axes 1e20 or 1e-20 reported a coefficient.
     CHECK_THROWS_WITH_AS((void)Quadric<float>::ellipsoid({0, 0, 0}, {1e20f, 1, 1}), doctest::Contains("semi_axes.x"), std::invalid_argument);
     CHECK_THROWS_WITH_AS((void)Quadric<float>::ellipsoid({0, 0, 0}, {1, 1e-20f, 1}), doctest::Contains("semi_axes.y"), std::invalid_argument);
     CHECK_THROWS_WITH_AS((void)Quadric<float>::cylinder({0, 0, 0}, {0, 0, 1}, 1e-30f), doctest::Contains("cylinder radius"), std::invalid_argument);

@@ -126,7 +126,7 @@ TEST_CASE("bad input names the parameter")
 TEST_CASE("radii whose square would underflow or overflow are refused by name")
 {
     using prism::infinity;
-    // Issue 10: radius 1e20 was not hit from inside (r^2 overflows float), 1e-30 not at all.
+    // Regression: radius 1e20 was not hit from inside (r^2 overflows float), 1e-30 not at all.
     CHECK_THROWS_WITH_AS(Sphere<float>({0, 0, 0}, 1e20f), doctest::Contains("Sphere radius"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(Sphere<float>({0, 0, 0}, 1e-30f), doctest::Contains("Sphere radius"), std::invalid_argument);
     // The limits themselves work, from inside and from outside.
@@ -155,7 +155,7 @@ TEST_CASE("a sphere's bounding sphere is its own (a hair larger); other shapes g
     CHECK(prism::length(around.center - prism::Vec3<float>{1, 1, 1}) < 1e-5f);
 }
 
-// Issue 33: the float sphere took its closest approach at t = h / a in float, an ulp of
+// Regression: the float sphere took its closest approach at t = h / a in float, an ulp of
 // the distance off the true one, which |l|^2 counts squared: rays within 10^-6 of its
 // rim (in r^2 - |l|^2) were lost from 10^4.
 TEST_CASE("a float sphere seen from 10^4 loses no hit and gains none against its double evaluation")

@@ -193,7 +193,7 @@ TEST_CASE("EXR errors name the file and the reason, and a failed write leaves no
 
 TEST_CASE("an EXR whose data window claims more pixels than its bytes can hold is refused before allocating")
 {
-    // Issue 33: 262 KB declaring a 65536 x 32768 data window and no pixel data allocated
+    // Regression: 262 KB declaring a 65536 x 32768 data window and no pixel data allocated
     // 8.4 GB before "Scan line 0 is missing".
     const auto small = scratch("claim.exr");
     write_exr(to_exr(Film(1, 1)), small);
@@ -212,7 +212,7 @@ TEST_CASE("an EXR whose data window claims more pixels than its bytes can hold i
     CHECK_THROWS_WITH_AS((void)read_exr(small), doctest::Contains("its data window [0, 65535] x [0, 32767] of 3 channels needs 24.0 GiB"), std::runtime_error);
 }
 
-// Issue 33: OpenEXR out of memory came out as "cannot read image '...': std::bad_alloc",
+// Regression: OpenEXR out of memory came out as "cannot read image '...': std::bad_alloc",
 // a std::runtime_error. It is an allocation_error that says so.
 TEST_CASE("read_exr out of memory names its file")
 {

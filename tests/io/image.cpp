@@ -99,7 +99,7 @@ TEST_CASE("a failed write throws with the path and the reason and leaves no file
 
 TEST_CASE("a write goes through to what is not a regular file and never replaces it")
 {
-    // Issue 10: the temporary file was renamed over any target, so a FIFO, a device node
+    // Regression: the temporary file was renamed over any target, so a FIFO, a device node
     // or a symbolic link became a plain file (write_png(film, "/dev/null") as root would
     // have replaced /dev/null).
     const fs::path dir = scratch_folder("special");
@@ -136,7 +136,7 @@ TEST_CASE("a write goes through to what is not a regular file and never replaces
 
 TEST_CASE("read_pfm checks its header against the file's size before allocating")
 {
-    // Issue 10: 20 bytes made read_pfm allocate 4.8 GB before it reported truncation.
+    // Regression: 20 bytes made read_pfm allocate 4.8 GB before it reported truncation.
     const fs::path dir = scratch_folder("pfm-header");
     std::ofstream(dir / "big.pfm", std::ios::binary) << "PF\n20000 20000\n-1.0\n";
     CHECK_THROWS_WITH_AS((void)prism::read_pfm(dir / "big.pfm"), doctest::Contains("truncated"), std::runtime_error);
@@ -177,7 +177,7 @@ std::string message_of(const fs::path& path)
 
 TEST_CASE("read_pfm keeps negative, NaN and infinite values as data, and a Film refuses them by pixel")
 {
-    // Issue 33: they were set to 0 without a word (negative values are legal PFM).
+    // Regression: they were set to 0 without a word (negative values are legal PFM).
     const fs::path dir = scratch_folder("pfm-data");
     const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
     write_bytes(dir / "odd.pfm", pfm_bytes("PF\n2 1\n-1.0\n", {-1.5f, 0.25f, inf, nan, -inf, 3.0f}));
@@ -200,7 +200,7 @@ TEST_CASE("read_pfm keeps negative, NaN and infinite values as data, and a Film 
 
 TEST_CASE("read_pfm reads a header whose lines end in CRLF, and refuses one that shifts the data")
 {
-    // Issue 33: "\r\n" after the scale was read as one byte of white space and one of data.
+    // Regression: "\r\n" after the scale was read as one byte of white space and one of data.
     const fs::path dir = scratch_folder("pfm-crlf");
     write_bytes(dir / "crlf.pfm", pfm_bytes("PF\r\n1 1\r\n-1.0\r\n", {0.25f, 0.5f, 0.75f}));
     const prism::PfmImage image = prism::read_pfm(dir / "crlf.pfm");
@@ -213,7 +213,7 @@ TEST_CASE("read_pfm reads a header whose lines end in CRLF, and refuses one that
 
 TEST_CASE("read_pfm sizes its claims in 64 bits and says how many bytes are missing")
 {
-    // Issue 33: a width past 178 956 970 overflowed `x * 12` in int; 2147483647 squared made
+    // Regression: a width past 178 956 970 overflowed `x * 12` in int; 2147483647 squared made
     // a message of -9223372036854775808 bytes.
     const fs::path dir = scratch_folder("pfm-size");
     write_bytes(dir / "wide.pfm", pfm_bytes("PF\n200000000 1\n-1.0\n", {1, 2, 3}));
@@ -235,7 +235,7 @@ TEST_CASE("read_pfm sizes its claims in 64 bits and says how many bytes are miss
 
 TEST_CASE("read_pfm reads a valid PFM through a FIFO, and refuses an endless stream at once")
 {
-    // Issue 33: a FIFO's size is unknown ("file is truncated ... 0 follow it"); /dev/zero
+    // Regression: a FIFO's size is unknown ("file is truncated ... 0 follow it"); /dev/zero
     // made the reader's memory grow without bound.
     const fs::path dir = scratch_folder("pfm-fifo");
     const fs::path fifo = dir / "pipe.pfm";
@@ -258,7 +258,7 @@ TEST_CASE("read_pfm reads a valid PFM through a FIFO, and refuses an endless str
 
 TEST_CASE("read_png refuses a truncated or corrupt file and a header its bytes cannot hold, with a reason")
 {
-    // Issue 33: a truncated PNG gave a message with an empty reason.
+    // Regression: a truncated PNG gave a message with an empty reason.
     const fs::path dir = scratch_folder("png-strict");
     prism::write_png(gradient(), dir / "g.png");
     std::ifstream in(dir / "g.png", std::ios::binary);

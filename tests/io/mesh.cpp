@@ -218,7 +218,7 @@ const std::string triangle_head = "ply\nformat ascii 1.0\nelement vertex 3\nprop
 
 TEST_CASE("PLY counts are whole numbers the file can hold: no endless element, no claim past the file's bytes")
 {
-    // Issue 33: an element with no properties and count -1 (read as 2^64 - 1) or 2^63, in
+    // Regression: an element with no properties and count -1 (read as 2^64 - 1) or 2^63, in
     // a 196-byte file, never returned.
     const std::string head = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
     CHECK(ply_refusal("minus.ply", head + "element junk -1\nend_header\n").find("not a whole number from 0 to 4294967295") != std::string::npos);
@@ -230,7 +230,7 @@ TEST_CASE("PLY counts are whole numbers the file can hold: no endless element, n
 
 TEST_CASE("PLY values are numbers of their type: no fractional index or count, no bad magic, no NaN position")
 {
-    // Issue 33: indices 0.9 1.5 2.7 and a count 2.5 were truncated or misread, a header
+    // Regression: indices 0.9 1.5 2.7 and a count 2.5 were truncated or misread, a header
     // 'plyfoo' was accepted, and binary NaN or infinite positions reached TriangleMesh.
     CHECK(ply_refusal("fraction.ply", triangle_head + "3 0.9 1.5 2.7\n").find("'0.9', not a whole number") != std::string::npos);
     CHECK(ply_refusal("count.ply", triangle_head + "2.5 0 1 2\n").find("'2.5', not a whole number") != std::string::npos);
@@ -261,7 +261,7 @@ TEST_CASE("PLY values are numbers of their type: no fractional index or count, n
 
 TEST_CASE("a PLY file is read through a FIFO, and an endless stream is refused at once")
 {
-    // Issue 33: /dev/zero as PLY made memory grow without bound.
+    // Regression: /dev/zero as PLY made memory grow without bound.
     CHECK_THROWS_WITH_AS((void)prism::load_ply<float>("/dev/zero"), doctest::Contains("does not start with 'ply'"), std::runtime_error);
     const fs::path fifo = fs::temp_directory_path() / ("prism-mesh-test-" + std::to_string(::getpid()) + "-pipe.ply");
     fs::remove(fifo);
@@ -294,7 +294,7 @@ const std::string obj_triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
 
 TEST_CASE("OBJ numbers are finite numbers and its indices whole numbers naming what is defined, by line")
 {
-    // Issue 33: 'v nan 0 0', 'v hello 0 0' and 'v 0' were read as 0 without a word;
+    // Regression: 'v nan 0 0', 'v hello 0 0' and 'v 0' were read as 0 without a word;
     // indices 4294967297.. wrapped to 1 2 3, 99999999999999999999 to the last vertex.
     CHECK(obj_refusal("nan.obj", "v nan 0 0\n" + obj_triangle + "f 2 3 4\n").find("line 1: 'v' has 'nan', not a finite number") != std::string::npos);
     CHECK(obj_refusal("word.obj", "v hello 0 0\n").find("line 1: 'v' has 'hello'") != std::string::npos);
@@ -314,14 +314,14 @@ TEST_CASE("OBJ numbers are finite numbers and its indices whole numbers naming w
 
 TEST_CASE("an OBJ polygon that names a vertex twice is refused, not dropped")
 {
-    // Issue 33: 'f 1 2 3 1 2 3' beside a good triangle was dropped without a word.
+    // Regression: 'f 1 2 3 1 2 3' beside a good triangle was dropped without a word.
     CHECK(obj_refusal("twice.obj", obj_triangle + "f 1 2 3\nf 1 2 3 1 2 3\n").find("line 5: a face names vertex 1 twice") != std::string::npos);
     CHECK(obj_refusal("two.obj", obj_triangle + "f 1 2\n").find("a face has 2 corners") != std::string::npos);
 }
 
 TEST_CASE("an OBJ file is read no further than its limit, an endless stream is refused at once, and mtllib opens nothing")
 {
-    // Issue 33: /dev/zero as an OBJ, or named by its mtllib, never returned.
+    // Regression: /dev/zero as an OBJ, or named by its mtllib, never returned.
     CHECK_THROWS_WITH_AS((void)prism::load_obj<float>("/dev/zero"), doctest::Contains("NUL byte"), std::runtime_error);
     const fs::path with_mtl = write_file("mtl.obj", "mtllib /dev/zero\nusemtl red\n" + obj_triangle + "f 1 2 3\n");
     CHECK(prism::load_obj<float>(with_mtl).triangles.size() == 1);
@@ -329,7 +329,7 @@ TEST_CASE("an OBJ file is read no further than its limit, an endless stream is r
     fs::remove(with_mtl);
 }
 
-// Issue 33: a reader out of memory threw a bare std::bad_alloc, which names neither the
+// Regression: a reader out of memory threw a bare std::bad_alloc, which names neither the
 // file nor what was being done. With only 2 MiB to allocate, reading a 6.5 MiB OBJ
 // (and a 5.7 MiB PLY) fails with the file's name.
 TEST_CASE("a mesh reader out of memory names its file")

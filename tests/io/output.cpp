@@ -60,7 +60,7 @@ TEST_CASE("an OutputSet writes every file it holds, and a later add of a path re
 
 TEST_CASE("an OutputSet that cannot write one file writes none, and leaves no temporary")
 {
-    // Issue 33: an output that could not be written (a directory, a link to /dev/full) was
+    // Regression: an output that could not be written (a directory, a link to /dev/full) was
     // found after the outputs before it had been written, and they stayed.
     const fs::path dir = output_test::scratch_folder("none");
     std::ofstream(dir / "kept.txt") << "old";

@@ -213,7 +213,7 @@ TEST_CASE("a glass ball focuses a parallel beam R (2 - n) / (2 (n - 1)) behind i
 
 TEST_CASE("bad photon counts and bounces are refused by name, not wrapped or clamped")
 {
-    // Issue 10: max_bounces -1 gave 0 photons, a count of size_t(-5) wrapped to 0, and 2^41
+    // Regression: max_bounces -1 gave 0 photons, a count of size_t(-5) wrapped to 0, and 2^41
     // photons ended in a bare std::bad_alloc.
     const auto scene = light_over_floor(1, 1);
     CHECK_THROWS_WITH_AS((void)trace_photons(scene, {.max_bounces = -1}), doctest::Contains("max_bounces"), std::invalid_argument);
@@ -235,7 +235,7 @@ TEST_CASE("bad photon counts and bounces are refused by name, not wrapped or cla
 
 TEST_CASE("a light whose power overflows float is refused, not traced into empty maps")
 {
-    // Issue 10: intensity 3e38 is finite, but 4 pi I is not: the maps came out empty.
+    // Regression: intensity 3e38 is finite, but 4 pi I is not: the maps came out empty.
     CHECK_THROWS_WITH_AS(PointLight<float>{.intensity = Rgb<float>(3e38f)}.validate(), doctest::Contains("power"), std::invalid_argument);
     const Scene sun{Lights{DirectionalLight<float>{.irradiance = Rgb<float>(3e37f)}},
                     Object{Sphere<float>({0, 0, 0}, 1e9f), Diffuse<float>{}}};

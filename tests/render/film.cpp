@@ -37,7 +37,7 @@ TEST_CASE("a film too large for memory says what it needs")
 
 TEST_CASE("threads setting pixels count the rejected values exactly")
 {
-    // Issue 10: every render thread updated a plain counter (a data race; ThreadSanitizer
+    // Regression: every render thread updated a plain counter (a data race; ThreadSanitizer
     // runs this test too).
     prism::Film film(64, 64);
     std::vector<std::thread> threads;

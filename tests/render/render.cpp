@@ -79,7 +79,7 @@ TEST_CASE("bad render settings are rejected")
 
 TEST_CASE("a tile as large as int renders the same image")
 {
-    // Issue 10: tile_size = INT_MAX overflowed the tile arithmetic (UBSan) and rendered black.
+    // Regression: tile_size = INT_MAX overflowed the tile arithmetic (UBSan) and rendered black.
     const auto scene = busy_scene();
     const Whitted integrator(scene);
     const Camera<float> camera{.position = {0, 1, 6}, .look_at = {0, 0.5f, 0}};
@@ -207,7 +207,7 @@ TEST_CASE("a crop or a sample range outside the image is refused with its values
 
 TEST_CASE("random scenes, hostile cameras: no sample of any integrator is NaN, infinite or negative")
 {
-    // Issue 15's property test over whole renders: scenes of random spheres (tiny to
+    // A property test over whole renders: scenes of random spheres (tiny to
     // huge, some coincident), boxes of glass (some a sheet), mirror quadrics (open ones cut
     // to a box) and a CSG lens, at 1 to 10^4 from the origin, lit by a point light and a
     // directional light, seen from cameras far away, inside objects or grazing the

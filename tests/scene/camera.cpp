@@ -37,7 +37,7 @@ TEST_CASE("degenerate cameras are rejected with the parameter named")
 
 TEST_CASE("a camera whose look_at is 3e38 or 1e-44 away still looks there")
 {
-    // Issue 10: both said "up is parallel to the view direction".
+    // Regression: both said "up is parallel to the view direction".
     const prism::Camera<float> far{.position = {-1.5e38f, 0, 0}, .look_at = {1.5e38f, 0, 0}};
     CHECK_NOTHROW(far.validate());
     CHECK(far.forward().x == doctest::Approx(1));

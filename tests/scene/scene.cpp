@@ -92,7 +92,7 @@ TEST_CASE("background and ambient are validated")
 
 // The ray property test (tests/ray_property.hpp), a slice of bench/ray_property: every
 // shape, Transformed shapes and CSG trees, 1 to 10^4 from the world origin and from their
-// rays, sizes 1 and 10^-3, float and double, 16k rays each. Before the fixes of issue 10 a
+// rays, sizes 1 and 10^-3, float and double, 16k rays each. Before a fix a
 // float unit ellipsoid lost 0.1 % of its hits from 100 units and most from 10^4.
 TEST_CASE_TEMPLATE("closest_hit loses no hit and spawns on the right side, near and far", T, float, double)
 {
