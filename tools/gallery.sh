@@ -7,7 +7,10 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 out=$(realpath -m "${1:-gallery}")
 "$root/tools/setup.sh"
 # A build tree of its own: sharing the test command's would switch its tests off.
-cmake -S "$root" -B "$root/build/gallery" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_TESTS=OFF -DPRISM_BUILD_BENCH=OFF >/dev/null
+# Through ccache where it is installed: a second run rebuilds only what changed.
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake -S "$root" -B "$root/build/gallery" -G Ninja "${launcher[@]}" -DCMAKE_BUILD_TYPE=Release -DPRISM_BUILD_TESTS=OFF -DPRISM_BUILD_BENCH=OFF >/dev/null
 cmake --build "$root/build/gallery" --target examples
 mkdir -p "$out"
 for example in $(cat "$root/build/gallery/examples/list.txt"); do

@@ -5,14 +5,16 @@
 #   tools/test.sh          the quick tier, minutes on 2 cores:
 #     release   g++ 12 and libstdc++, Release (-O2) with PRISM_ASSERT active: every doctest
 #               case once (a ctest test each), the documentation's snippets, the fuzz
-#               targets' corpora, the single-header check, the consumer projects, the
-#               command-line tests and the render-farm merges
+#               targets' corpora, the single-header, version, dependency and link checks,
+#               the consumer projects, the compile-error checks
 #     headers   each public header compiled alone (tools/check_headers.sh)
 #     docs      the API reference (Doxygen, tools/docs.sh), failing on any warning
 #     meson     a project taking prism as a meson subproject, and the single-header check
 #
 #   tools/test.sh --full   the quick tier, then:
-#     long      the cases too long for the quick tier (ctest label `full`: 10^7 hostile rays)
+#     long      in the release tree, the cases too long for the quick tier (ctest label
+#               `full`: 10^7 hostile rays) and the examples' command line, render-farm
+#               merges and MPI ranks (label `cli`)
 #     alone     each test file compiled on its own includes (clang 19, -fsyntax-only, which
 #               instantiates what the file uses): the builds precompile prism.hpp and
 #               compile eight files to a translation unit, which would hide a missing one
@@ -21,7 +23,7 @@
 #               statistical ones on fewer samples (tests/effort.hpp), and a small render
 #     thread    clang 19, ThreadSanitizer, assertions on: every case, and renders on 2 threads
 #     libc++    clang 19 and libc++, Release, AVX2 where the CPU has it (Bvh<float>'s 8-wide
-#               nodes): every case and every example
+#               nodes): every case, and the command-line tests with their examples
 #     meson     also builds the examples with meson
 #     fuzz      each libFuzzer target (tests/fuzz/) for its share of a fixed budget
 #               (tools/fuzz.sh --budget), under ASan + UBSan
@@ -49,6 +51,8 @@ launcher=()
 if command -v ccache >/dev/null; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   export CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime
+  # Paths inside the checkout hashed as relative ones: another clone shares the cache.
+  export CCACHE_BASEDIR="$root"
   ccache --zero-stats >/dev/null 2>&1 || true
 fi
 
@@ -96,12 +100,13 @@ ctest_step() {
 start=$(date +%s)
 
 # Release with assertions: the tests with prism.hpp precompiled and eight files to a
-# translation unit, and only the examples the tests run (tools/gallery.sh builds them all).
+# translation unit; no examples (tools/gallery.sh builds them, the full tier tests their
+# command line).
 release="$root/build/release"
 if step release-build bash -c "cmake -S '$root' -B '$release' -G Ninja ${launcher[*]} -DCMAKE_BUILD_TYPE=Release '-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG' \
       -DPRISM_BUILD_TESTS=ON -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON -DPRISM_WERROR=ON -DPRISM_TESTS_PCH=ON -DPRISM_TESTS_UNITY=ON &&
-      cmake --build '$release' -j $jobs --target prism_tests test_programs cli_examples"; then
-  ctest_step release "$release" -LE full
+      cmake --build '$release' -j $jobs --target prism_tests test_programs"; then
+  ctest_step release "$release" -LE 'full|cli'
 else
   fail release
 fi
@@ -139,9 +144,10 @@ else
 fi
 
 if [[ $full -eq 1 ]]; then
-  # The long cases, in the release tree above.
-  if step long-build cmake --build "$release" -j "$jobs" --target full_test_programs; then
-    ctest_step long "$release" -L full
+  # The long cases and the examples' command line, merges and MPI ranks, in the release
+  # tree above.
+  if step long-build cmake --build "$release" -j "$jobs" --target full_test_programs cli_examples; then
+    ctest_step long "$release" -L 'full|cli'
   else
     fail long
   fi
@@ -194,13 +200,13 @@ if [[ $full -eq 1 ]]; then
   fi
 
   # clang 19 with libc++, Release, for AVX2 where the CPU has it: the other runs take the
-  # baseline's 4-wide Bvh nodes, this one the 8-wide ones. Every example too.
+  # baseline's 4-wide Bvh nodes, this one the 8-wide ones.
   libcxx="$root/build/libcxx"
   avx2=""
   grep -qw avx2 /proc/cpuinfo && avx2=-mavx2
   if step libcxx-build bash -c "cmake -S '$root' -B '$libcxx' -G Ninja ${launcher[*]} -DCMAKE_CXX_COMPILER=clang++-19 -DCMAKE_BUILD_TYPE=Release \
         '-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG' -DPRISM_BUILD_BENCH=OFF -DPRISM_WERROR=ON -DPRISM_TESTS_PCH=ON -DPRISM_TESTS_UNITY=ON \
-        -DCMAKE_CXX_FLAGS='-stdlib=libc++ $avx2' && cmake --build '$libcxx' -j $jobs --target prism_tests test_programs examples"; then
+        -DCMAKE_CXX_FLAGS='-stdlib=libc++ $avx2' && cmake --build '$libcxx' -j $jobs --target prism_tests test_programs cli_examples"; then
     ctest_step libc++ "$libcxx" -LE full
   else
     fail libc++
