@@ -214,7 +214,7 @@ if [[ $full -eq 1 ]]; then
 
   # libFuzzer (clang) under ASan + UBSan: the targets (tests/fuzz/) share a fixed budget,
   # each from its committed corpus; a crash fails the run and leaves its input in build/fuzz/.
-  if step fuzz "$root/tools/fuzz.sh" --budget 240; then
+  if step fuzz "$root/tools/fuzz.sh" --budget 120; then
     grep "^fuzz:" "$logs/fuzz.log"
     passed=$((passed + 1)) summary+=("fuzz ok")
   else

@@ -774,10 +774,10 @@ struct SlabLanes {
 #include <cstdio>
 #include <limits>
 #include <new>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 
 #if __has_include(<unistd.h>)
@@ -803,23 +803,54 @@ private:
 
 namespace prism::detail {
 
+// A message is built by appending its parts as a stream with precision 9 would print them
+// (numbers as printf's %.9g, integers in decimal, a bool as 1 or 0), without <sstream>:
+// parsing the iostreams cost every scene a third of a second to compile, and every set of
+// part types an instantiation of them.
+inline void append_part(std::string& out, std::string_view part) { out += part; }
+inline void append_part(std::string& out, char part) { out += part; }
+inline void append_part(std::string& out, bool part) { out += part ? '1' : '0'; }
+inline void append_part(std::string& out, double part)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", part);
+    out += text;
+}
+inline void append_part(std::string& out, long long part) { out += std::to_string(part); }
+inline void append_part(std::string& out, unsigned long long part) { out += std::to_string(part); }
+
+template <class Part>
+void append_any(std::string& out, const Part& part)
+{
+    if constexpr (std::is_same_v<Part, bool> || std::is_same_v<Part, char>) append_part(out, part);
+    else if constexpr (std::is_enum_v<Part>) append_any(out, std::underlying_type_t<Part>(part));
+    else if constexpr (std::is_floating_point_v<Part>) append_part(out, double(part));
+    else if constexpr (std::is_integral_v<Part> && std::is_signed_v<Part>) append_part(out, static_cast<long long>(part));
+    else if constexpr (std::is_integral_v<Part>) append_part(out, static_cast<unsigned long long>(part));
+    else append_part(out, std::string_view(part));
+}
+
+[[noreturn]] inline void throw_invalid_message(const std::string& message) { throw std::invalid_argument(message); }
+
 template <class... Parts>
 [[noreturn]] inline void throw_invalid(const Parts&... parts)
 {
-    std::ostringstream message;
-    message.precision(9);
-    message << "prism: ";
-    (message << ... << parts);
-    throw std::invalid_argument(message.str());
+    std::string message = "prism: ";
+    (append_any(message, parts), ...);
+    throw_invalid_message(message);
 }
 
 template <Scalar T>
 inline std::string describe(const Vec3<T>& v)
 {
-    std::ostringstream out;
-    out.precision(9);
-    out << '(' << v.x << ", " << v.y << ", " << v.z << ')';
-    return out.str();
+    std::string out = "(";
+    append_part(out, double(v.x));
+    out += ", ";
+    append_part(out, double(v.y));
+    out += ", ";
+    append_part(out, double(v.z));
+    out += ')';
+    return out;
 }
 
 template <Scalar T>
