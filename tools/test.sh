@@ -21,9 +21,9 @@
 #     sanitize  clang 19, AddressSanitizer + UndefinedBehaviorSanitizer, assertions on, the
 #               portable paths (no __int128, no vector extensions): every case, with the
 #               statistical ones on fewer samples (tests/effort.hpp), and a small render
-#     thread    clang 19, ThreadSanitizer, assertions on: every case, and renders on 2 threads
-#     libc++    clang 19 and libc++, Release, AVX2 where the CPU has it (Bvh<float>'s 8-wide
-#               nodes): every case, and the command-line tests with their examples
+#     thread    clang 19 and libc++, ThreadSanitizer, -O2, AVX2 where the CPU has it
+#               (Bvh<float>'s 8-wide nodes), assertions off as in a user's release build:
+#               every case and the command-line tests, then renders on 2 threads
 #     meson     also builds the examples with meson
 #     fuzz      each libFuzzer target (tests/fuzz/) for its share of a fixed budget
 #               (tools/fuzz.sh --budget), under ASan + UBSan
@@ -174,42 +174,25 @@ if [[ $full -eq 1 ]]; then
     fail sanitize
   fi
 
-  # ThreadSanitizer (clang 19, libstdc++), assertions on, -O2 with line tables: the test
-  # cases in two processes at once (the photon and integrator files, about half the time,
-  # and the rest), then renders on 2 threads.
+  # ThreadSanitizer with clang 19 and libc++, -O2 with line tables, AVX2 where the CPU has
+  # it: the other runs take libstdc++ and the baseline's 4-wide Bvh nodes, this one libc++
+  # and Bvh<float>'s 8-wide nodes. Assertions off, NDEBUG, as a user's release build: the
+  # other runs keep them on. Every case and the command-line tests, then renders on 2
+  # threads.
   thread="$root/build/thread"
   export TSAN_OPTIONS="halt_on_error=1 exitcode=66 second_deadlock_stack=1"
+  avx2=""
+  grep -qw avx2 /proc/cpuinfo && avx2=-mavx2
   if step thread-build bash -c "cmake -S '$root' -B '$thread' -G Ninja ${launcher[*]} -DCMAKE_CXX_COMPILER=clang++-19 -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPRISM_BUILD_BENCH=OFF \
-        -DPRISM_ASSERTIONS=ON -DPRISM_WERROR=ON -DPRISM_TESTS_PCH=ON -DPRISM_TESTS_UNITY=ON \
-        -DCMAKE_CXX_FLAGS_RELWITHDEBINFO='-O2 -g1 -DNDEBUG' -DCMAKE_CXX_FLAGS=-fsanitize=thread &&
-        cmake --build '$thread' -j $jobs --target prism_tests cornell cornell_caustics"; then
-    half='*/photon/*,*/integrator/*'
-    "$thread/tests/prism_tests" --source-file="$half" >"$logs/thread-tests-1.log" 2>&1 &
-    "$thread/tests/prism_tests" --source-file-exclude="$half" >"$logs/thread-tests-2.log" 2>&1 &
-    wait
-    for part in 1 2; do
-      grep -q "Status: SUCCESS" "$logs/thread-tests-$part.log" ||
-        grep -B 5 -A 40 -E "ThreadSanitizer|ERROR|FAILED" "$logs/thread-tests-$part.log" | head -n 80
-      count "thread ($part/2)" "$logs/thread-tests-$part.log"
-    done
+        -DPRISM_WERROR=ON -DPRISM_TESTS_PCH=ON -DPRISM_TESTS_UNITY=ON \
+        '-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG' '-DCMAKE_CXX_FLAGS=-fsanitize=thread -stdlib=libc++ $avx2' &&
+        cmake --build '$thread' -j $jobs --target prism_tests test_programs cli_examples"; then
+    ctest_step thread "$thread" -LE full
     step thread-render-whitted "$thread/examples/cornell" --width 96 --height 96 --spp 2 --threads 2 --out "$thread/gallery" || fail thread-render-whitted
     step thread-render-photons "$thread/examples/cornell_caustics" --width 64 --height 64 --spp 1 --threads 2 --photons 20000 \
       --caustic-photons 20000 --gather 4 --out "$thread/gallery" || fail thread-render-photons
   else
     fail thread
-  fi
-
-  # clang 19 with libc++, Release, for AVX2 where the CPU has it: the other runs take the
-  # baseline's 4-wide Bvh nodes, this one the 8-wide ones.
-  libcxx="$root/build/libcxx"
-  avx2=""
-  grep -qw avx2 /proc/cpuinfo && avx2=-mavx2
-  if step libcxx-build bash -c "cmake -S '$root' -B '$libcxx' -G Ninja ${launcher[*]} -DCMAKE_CXX_COMPILER=clang++-19 -DCMAKE_BUILD_TYPE=Release \
-        '-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG' -DPRISM_BUILD_BENCH=OFF -DPRISM_WERROR=ON -DPRISM_TESTS_PCH=ON -DPRISM_TESTS_UNITY=ON \
-        -DCMAKE_CXX_FLAGS='-stdlib=libc++ $avx2' && cmake --build '$libcxx' -j $jobs --target prism_tests test_programs cli_examples"; then
-    ctest_step libc++ "$libcxx" -LE full
-  else
-    fail libc++
   fi
 
   # libFuzzer (clang) under ASan + UBSan: the targets (tests/fuzz/) share a fixed budget,

@@ -150,14 +150,14 @@ TEST_CASE("the path tracer's glossy furnace: a glossy sphere under a uniform sky
     // draws to 1 % everywhere.
     const auto check = [](const auto& material, const std::string& name, bool narrow = false) {
         const auto scene = test::glossy_furnace(material);
-        for (const AreaLightStrategy strategy : {AreaLightStrategy::mis, AreaLightStrategy::light_samples, AreaLightStrategy::bounces})
-            for (const double theta : {0.0, 45.0, 75.0}) {
+        for (const double theta : {0.0, 45.0, 75.0}) {
+            const double expected = test::furnace_albedo(material, theta); // once an angle: 4 million draws for a coat's mirror
+            for (const AreaLightStrategy strategy : {AreaLightStrategy::mis, AreaLightStrategy::light_samples, AreaLightStrategy::bounces}) {
                 if (narrow && strategy == AreaLightStrategy::light_samples) continue;
                 CAPTURE(name);
                 CAPTURE(int(strategy));
                 CAPTURE(theta);
                 const PathTracer tracer(scene, {.area_lights = strategy});
-                const double expected = test::furnace_albedo(material, theta);
                 if (strategy != AreaLightStrategy::light_samples) {
                     CHECK(path_mean(tracer, test::furnace_ray<float>(theta), 40000) == doctest::Approx(expected).epsilon(0.01));
                     continue;
@@ -174,6 +174,7 @@ TEST_CASE("the path tracer's glossy furnace: a glossy sphere under a uniform sky
                 CAPTURE(standard_error);
                 CHECK(std::abs(mean - expected) < std::max(4 * standard_error, 0.01 * expected));
             }
+        }
     };
     check(RoughConductor<float, ComplexIor<float>>{.fresnel = {.eta = {0.2f, 0.9f, 1.1f}, .k = {3.9f, 2.4f, 2.2f}}, .roughness = 0.35f}, "rough copper", true);
     check(RoughConductor<float>{.fresnel = {.kr = Rgb<float>(1)}, .roughness = {0.9f, 0.9f}}, "white metal at roughness 0.9");
