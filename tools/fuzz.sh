@@ -45,9 +45,17 @@ fuzz_one() {
     return 0
   fi
   local begin=$(date +%s)
-  if ! "$out/fuzz_$target" "$out/$target" "$root/tests/fuzz/corpus/$target" -max_total_time="$seconds" -runs="$runs" -max_len="$max_len" -malloc_limit_mb=512 \
+  # The file readers' targets write each input to a file of their own: in the build tree,
+  # removed when the run ends.
+  local tmp="$out/tmp/$target"
+  rm -rf "$tmp" && mkdir -p "$tmp"
+  if ! TMPDIR="$tmp" "$out/fuzz_$target" "$out/$target" "$root/tests/fuzz/corpus/$target" -max_total_time="$seconds" -runs="$runs" -max_len="$max_len" -malloc_limit_mb=512 \
        -artifact_prefix="$out/crash-$target-" -print_final_stats=1 >"$out/$target.log" 2>&1; then
     { echo "fuzz: $target FAILED; its log ends:"; tail -n 40 "$out/$target.log"; } >"$report"
+    return 0
+  fi
+  if [[ -n $(ls -A "$tmp") ]]; then
+    echo "fuzz: $target FAILED: it left $(ls -A "$tmp") behind in $tmp" >"$report"
     return 0
   fi
   local executed

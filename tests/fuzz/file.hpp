@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
+#include <vector>
 
 #include <unistd.h>
 
@@ -20,11 +22,29 @@ namespace fuzz {
 /// The limit every reader is given: a fuzz input is never longer.
 inline constexpr prism::ReadLimits limits{.max_bytes = 1 << 20};
 
+/// A file of this process's own in the temporary folder ($TMPDIR), named with `extension`,
+/// removed when the process exits (libFuzzer's end of a run included; a crash leaves it, and
+/// its input is kept apart anyway). Call it once for each file, from a static's initializer.
+inline std::filesystem::path process_file(const char* extension)
+{
+    struct Removed {
+        std::vector<std::filesystem::path> paths;
+        ~Removed()
+        {
+            std::error_code ignored;
+            for (const auto& path : paths) std::filesystem::remove(path, ignored);
+        }
+    };
+    static Removed removed;
+    removed.paths.push_back(std::filesystem::temp_directory_path() / ("prism-fuzz-" + std::to_string(::getpid()) + extension));
+    return removed.paths.back();
+}
+
 /// The bytes as the whole of a file named with `extension`, the same file for every input
 /// of this process.
 inline std::filesystem::path as_file(const std::uint8_t* data, std::size_t size, const char* extension)
 {
-    static const std::filesystem::path path = std::filesystem::temp_directory_path() / ("prism-fuzz-" + std::to_string(::getpid()) + extension);
+    static const std::filesystem::path path = process_file(extension);
     std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data), std::streamsize(size));
     return path;
 }

@@ -15,7 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 {
     const std::filesystem::path mtl = fuzz::as_file(data, size, ".mtl");
     static const std::filesystem::path obj = [&] {
-        const std::filesystem::path path = std::filesystem::path(mtl).replace_extension(".obj");
+        const std::filesystem::path path = fuzz::process_file(".obj");
         std::ofstream(path) << "mtllib " << mtl.filename().string() << "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl m\nf 1/1 2/2 3/3\n";
         return path;
     }();
