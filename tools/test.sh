@@ -72,15 +72,12 @@ step() {
   fi
   echo "test: $name took $(( $(date +%s) - begin )) s"
 }
-# count RUN LOG: add the cases passed and failed that LOG reports (ctest or doctest).
+# count RUN LOG: add the cases passed and failed that LOG, a ctest log, reports.
 count() {
   local run=$1 log=$2 p f
   if line=$(grep -E "tests passed, [0-9]+ tests? failed out of [0-9]+" "$log" | tail -n 1); then
     f=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<<"$line")
     p=$(( $(sed -E 's/.*out of ([0-9]+).*/\1/' <<<"$line") - f ))
-  elif line=$(grep -E "\[doctest\] test cases:" "$log" | tail -n 1); then
-    p=$(sed -E 's/.*\| *([0-9]+) passed.*/\1/' <<<"$line")
-    f=$(sed -E 's/.*\| *([0-9]+) failed.*/\1/' <<<"$line")
   else
     p=0 f=1
   fi
@@ -102,8 +99,8 @@ ctest_step() {
 
 start=$(date +%s)
 
-# Release with assertions: the tests eight files to a translation unit; no examples (tools/gallery.sh builds them, the full tier tests their
-# command line).
+# Release with assertions: the tests eight files to a translation unit; no examples
+# (tools/gallery.sh builds them, the full tier tests their command line).
 release="$root/build/release"
 if step release-build bash -c "cmake -S '$root' -B '$release' -G Ninja ${launcher[*]} -DCMAKE_BUILD_TYPE=Release '-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG' \
       -DPRISM_BUILD_TESTS=ON -DPRISM_BUILD_BENCH=OFF -DPRISM_ASSERTIONS=ON -DPRISM_WERROR=ON -DPRISM_TESTS_PCH=OFF -DPRISM_TESTS_UNITY=ON &&
