@@ -48,7 +48,9 @@ TEST_CASE("light tracing: a mirror's image of a point light on a floor, L S D E,
     const auto scene = mirror_scene();
     const Camera<float> camera{.position = {1.5f, 3, 0}, .look_at = {1.5f, 0, 0}, .up = {0, 0, -1}, .fov = 40};
     constexpr int size = 16;
-    const Film traced = render(camera, LightTracer(scene, {.paths = 8000000}), {.width = size, .height = size, .threads = 2, .seed = 3, .progress = false});
+    // (Under a sanitizer, here and below, an eighth of the paths, and what they resolve
+    // widened by sqrt(8): tests/effort.hpp.)
+    const Film traced = render(camera, LightTracer(scene, {.paths = std::size_t(test::samples(8000000))}), {.width = size, .height = size, .threads = 2, .seed = 3, .progress = false});
     const Film pathed = render(camera, PathTracer(scene), {.width = size, .height = size, .spp = 16, .threads = 2, .progress = false});
     const CameraRays<float> rays = camera.rays(size, size);
     double mirror_sum = 0, mirror_expected = 0, worst_direct = 0, squares = 0;
@@ -67,10 +69,10 @@ TEST_CASE("light tracing: a mirror's image of a point light on a floor, L S D E,
             squares += std::pow(traced.at(x, y).x / image - 1, 2);
             worst_direct = std::max(worst_direct, std::abs(pathed.at(x, y).x / direct - 1));
         }
-    CHECK(mirror_sum / mirror_expected == doctest::Approx(1.0).epsilon(0.005));
+    CHECK(mirror_sum / mirror_expected == doctest::Approx(1.0).epsilon(test::resolved(0.005)));
     // Noise alone: 4.0 % per pixel at 2 million paths, 1.9 % at 8 million.
     MESSAGE("relative RMS per pixel ", std::sqrt(squares / (size * size)));
-    CHECK(std::sqrt(squares / (size * size)) < 0.025);
+    CHECK(std::sqrt(squares / (size * size)) < test::resolved(0.025));
     CHECK(worst_direct < 0.02); // the light's own term, by shadow rays (16 samples over the pixel)
 }
 
@@ -85,8 +87,8 @@ TEST_CASE("light tracing with no diffuse bounce keeps L S D E alone: a ceiling a
     const Camera<float> camera{.position = {1.5f, 3, 0}, .look_at = {1.5f, 0, 0}, .up = {0, 0, -1}, .fov = 40};
     constexpr int size = 8;
     const RenderConfig render_config{.width = size, .height = size, .threads = 2, .seed = 3, .progress = false};
-    const Film first = render(camera, LightTracer(scene, {.paths = 2000000, .max_diffuse_bounces = 0}), render_config);
-    const Film all = render(camera, LightTracer(scene, {.paths = 2000000}), render_config);
+    const Film first = render(camera, LightTracer(scene, {.paths = std::size_t(test::samples(2000000)), .max_diffuse_bounces = 0}), render_config);
+    const Film all = render(camera, LightTracer(scene, {.paths = std::size_t(test::samples(2000000))}), render_config);
     const CameraRays<float> rays = camera.rays(size, size);
     double first_sum = 0, all_sum = 0, expected = 0;
     for (int y = 0; y < size; ++y)
@@ -99,7 +101,7 @@ TEST_CASE("light tracing with no diffuse bounce keeps L S D E alone: a ceiling a
             first_sum += first.at(x, y).x;
             all_sum += all.at(x, y).x;
         }
-    CHECK(first_sum / expected == doctest::Approx(1.0).epsilon(0.01));
+    CHECK(first_sum / expected == doctest::Approx(1.0).epsilon(test::resolved(0.01)));
     MESSAGE("with the ceiling's bounce: ", all_sum / expected);
     CHECK(all_sum / expected > 1.05);
     CHECK_THROWS_WITH_AS(LightTracer(scene, {.max_diffuse_bounces = -1}), doctest::Contains("LightTracerConfig max_diffuse_bounces must be >= 0, got -1"),
@@ -235,7 +237,7 @@ TEST_CASE("light tracing through a thin lens, out of focus, reads the closed for
     const Camera<float> camera{.position = {1.5f, 3, 0}, .look_at = {1.5f, 0, 0}, .up = {0, 0, -1}, .fov = 40, .aperture_radius = 0.3f,
                                .focus_distance = 1.5f};
     constexpr int size = 8;
-    const Film traced = render(camera, LightTracer(scene, {.paths = 8000000, .max_diffuse_bounces = 0}),
+    const Film traced = render(camera, LightTracer(scene, {.paths = std::size_t(test::samples(8000000)), .max_diffuse_bounces = 0}),
                                {.width = size, .height = size, .threads = 2, .seed = 3, .progress = false});
     const CameraRays<float> rays = camera.rays(size, size);
     double sum = 0, expected = 0, squares = 0, sharp_squares = 0;
@@ -258,11 +260,11 @@ TEST_CASE("light tracing through a thin lens, out of focus, reads the closed for
             sharp_squares += std::pow(sharp - blurred, 2);
         }
     const double mean = expected / (size * size);
-    CHECK(sum / expected == doctest::Approx(1.0).epsilon(0.01));
+    CHECK(sum / expected == doctest::Approx(1.0).epsilon(test::resolved(0.01)));
     MESSAGE("RMS per pixel over the mean ", std::sqrt(squares / (size * size)) / mean, "; the pinhole's picture differs by ",
             std::sqrt(sharp_squares / (size * size)) / mean);
     // Noise alone: 2.2 % at 8 million paths; a pinhole's picture would be 17.7 % away.
-    CHECK(std::sqrt(squares / (size * size)) < 0.05 * mean);
+    CHECK(std::sqrt(squares / (size * size)) < test::resolved(0.05) * mean);
     CHECK(std::sqrt(sharp_squares / (size * size)) > 0.15 * mean); // the blur is there to be found
 }
 
@@ -285,7 +287,7 @@ TEST_CASE("light tracing in fog: a mirror's image of a point light, scattered on
     // grows as 1 / d^2, and its noise with it.
     FilledAir<Fog<float>> fog = test::airlight_fog();
     fog.region = {{-1, -60, -60}, {60, 60, 60}};
-    const Film traced = render(camera, LightTracer(scene, {.paths = 8000000, .max_diffuse_bounces = 0}, fog), config);
+    const Film traced = render(camera, LightTracer(scene, {.paths = std::size_t(test::samples(8000000)), .max_diffuse_bounces = 0}, fog), config);
     const CameraRays<float> rays = camera.rays(size, size);
     for (int c = 0; c < 3; ++c) {
         double sum = 0, expected = 0;
@@ -302,6 +304,6 @@ TEST_CASE("light tracing in fog: a mirror's image of a point light, scattered on
             }
         CAPTURE(c);
         MESSAGE("channel ", c, ": light tracer ", sum / (size * size), ", airlight of the mirror image ", expected / (size * size));
-        CHECK(sum / expected == doctest::Approx(1.0).epsilon(0.01));
+        CHECK(sum / expected == doctest::Approx(1.0).epsilon(test::resolved(0.01)));
     }
 }

@@ -3,6 +3,7 @@
 #include <prism/prism.hpp>
 
 #include "../airlight.hpp"
+#include "../effort.hpp"
 #include "../furnace.hpp"
 #include "../glossy_scenes.hpp"
 
@@ -15,12 +16,14 @@ using namespace prism;
 
 TEST_CASE("the path tracer's furnace: inside a diffuse sphere of albedo 0.5 the walls read 1.0, with one light or four")
 {
+    // (In this file, under a sanitizer, every statistical case takes an eighth of its
+    // samples and widens what they resolve by sqrt(8): tests/effort.hpp.)
     for (const bool four : {false, true}) {
         CAPTURE(four);
         const auto scene = test::furnace_scene(four);
         const PathTracer tracer(scene);
-        const double mean = test::furnace_mean(four, [&](const Ray<float>& ray, Pcg32& rng) { return tracer.radiance(ray, rng); }, 400000);
-        CHECK(mean == doctest::Approx(1.0).epsilon(0.005));
+        const double mean = test::furnace_mean(four, [&](const Ray<float>& ray, Pcg32& rng) { return tracer.radiance(ray, rng); }, int(test::samples(400000)));
+        CHECK(mean == doctest::Approx(1.0).epsilon(test::resolved(0.005)));
     }
 }
 
@@ -33,8 +36,8 @@ TEST_CASE("the path tracer's diffuse bounce limit: the furnace's partial sums 0.
     for (const int bounces : {0, 1, 2}) {
         CAPTURE(bounces);
         const PathTracer tracer(scene, {.max_diffuse_bounces = bounces});
-        const double mean = test::furnace_mean(false, [&](const Ray<float>& ray, Pcg32& rng) { return tracer.radiance(ray, rng); }, 200000, false);
-        CHECK(mean == doctest::Approx(2 - std::pow(0.5, bounces)).epsilon(0.005));
+        const double mean = test::furnace_mean(false, [&](const Ray<float>& ray, Pcg32& rng) { return tracer.radiance(ray, rng); }, int(test::samples(200000)), false);
+        CHECK(mean == doctest::Approx(2 - std::pow(0.5, bounces)).epsilon(test::resolved(0.005)));
     }
     CHECK_THROWS_WITH_AS(PathTracer(scene, {.max_diffuse_bounces = -1}), doctest::Contains("PathTracer max_diffuse_bounces must be >= 0, got -1"),
                          std::invalid_argument);
@@ -71,9 +74,9 @@ TEST_CASE("the path tracer in the two-lobe furnace: rho_d / (1 - rho_s - rho_d) 
     const auto scene = test::coated_furnace_scene();
     const PathTracer tracer(scene);
     const test::SampleStats stats =
-        test::coated_furnace_samples([&](const Ray<float>& ray, Pcg32& rng) { return tracer.radiance(ray, rng); }, 400000);
+        test::coated_furnace_samples([&](const Ray<float>& ray, Pcg32& rng) { return tracer.radiance(ray, rng); }, int(test::samples(400000)));
     MESSAGE("mean ", stats.mean, " (closed form ", test::CoatedFurnace::path_tracer, "), largest sample ", stats.largest);
-    CHECK(stats.mean == doctest::Approx(test::CoatedFurnace::path_tracer).epsilon(0.01));
+    CHECK(stats.mean == doctest::Approx(test::CoatedFurnace::path_tracer).epsilon(test::resolved(0.01)));
     // A vertex adds 0.5 at most (its direct light): 50 is a path of 100 vertices, which
     // survives with probability 0.7^100 = 3e-16.
     CHECK(stats.largest < 50);
@@ -159,11 +162,11 @@ TEST_CASE("the path tracer's glossy furnace: a glossy sphere under a uniform sky
                 CAPTURE(theta);
                 const PathTracer tracer(scene, {.area_lights = strategy});
                 if (strategy != AreaLightStrategy::light_samples) {
-                    CHECK(path_mean(tracer, test::furnace_ray<float>(theta), 40000) == doctest::Approx(expected).epsilon(0.01));
+                    CHECK(path_mean(tracer, test::furnace_ray<float>(theta), int(test::samples(40000))) == doctest::Approx(expected).epsilon(test::resolved(0.01)));
                     continue;
                 }
                 Pcg32 rng(9, 1);
-                const int n = 40000;
+                const int n = int(test::samples(40000));
                 double sum = 0, squares = 0;
                 for (int i = 0; i < n; ++i) {
                     const double x = tracer.radiance(test::furnace_ray<float>(theta), rng).x;
@@ -172,7 +175,7 @@ TEST_CASE("the path tracer's glossy furnace: a glossy sphere under a uniform sky
                 }
                 const double mean = sum / n, standard_error = std::sqrt((squares / n - mean * mean) / n);
                 CAPTURE(standard_error);
-                CHECK(std::abs(mean - expected) < std::max(4 * standard_error, 0.01 * expected));
+                CHECK(std::abs(mean - expected) < std::max(4 * standard_error, test::resolved(0.01) * expected));
             }
         }
     };
@@ -213,26 +216,28 @@ TEST_CASE("frosted glass in the furnace: a clear rough glass ball under a unifor
         const auto scene = test::glossy_furnace(RoughDielectric<float>{.ior = 1.5f, .roughness = roughness});
         const PathTracer tracer(scene);
         for (const double theta : {0.0, 60.0}) {
-            const double mean = path_mean(tracer, test::furnace_ray<float>(theta), 40000);
+            const double mean = path_mean(tracer, test::furnace_ray<float>(theta), int(test::samples(40000)));
             CAPTURE(roughness);
             CAPTURE(theta);
             MESSAGE("frosted ball, roughness ", roughness, ", ", theta, " degrees: ", mean);
-            CHECK(mean <= 1.005);
+            CHECK(mean <= 1 + test::resolved(0.005));
             if (roughness == 0.0f) CHECK(mean == doctest::Approx(1).epsilon(1e-4));
-            if (roughness == 0.1f) CHECK(mean == doctest::Approx(1).epsilon(0.01));
+            if (roughness == 0.1f) CHECK(mean == doctest::Approx(1).epsilon(test::resolved(0.01)));
             if (roughness == 0.5f) CHECK(mean > 0.55); // (0.84 at normal incidence, 0.62 at 60 degrees: many bounces inside)
         }
     }
 }
 
 /// A path tracer's volume furnace at one ray (or from its origin in random directions):
-/// 100000 samples read 1 in every channel, within 4 standard errors, and within 0.5 %
-/// unless `noisy`.
+/// 100000 samples read 1 in every channel within 4 standard errors, and unless `noisy`
+/// those are under 0.6 % (measured up to 0.46 %, in the densest channel: 4 of them are
+/// 1.8 %). (A bound of 0.5 % on the mean itself, as before, was 1.1 standard errors
+/// there: it held by the seed.)
 template <class Tracer>
 void check_volume_furnace(const Tracer& tracer, const Ray<float>& ray, bool random_direction, bool noisy = false)
 {
     Pcg32 rng(21, 3);
-    const int n = 100000;
+    const int n = int(test::samples(100000));
     Rgb<double> sum{0}, squares{0};
     for (int i = 0; i < n; ++i) {
         const Ray<float> r = random_direction ? Ray<float>{ray.origin, uniform_sphere<float>(rng)} : ray;
@@ -246,7 +251,7 @@ void check_volume_furnace(const Tracer& tracer, const Ray<float>& ray, bool rand
         CAPTURE(mean);
         CAPTURE(standard_error);
         CHECK(std::abs(mean - 1) < std::max(4 * standard_error, 1e-6));
-        if (!noisy) CHECK(std::abs(mean - 1) < 0.005);
+        if (!noisy) CHECK(standard_error < test::resolved(0.006));
     }
 }
 
@@ -255,7 +260,7 @@ TEST_CASE("the path tracer's volume furnace: a fog that does not absorb, under a
     // Radiance 1 from every direction around a box (or ball) of fog that scatters but
     // absorbs nothing: every path leaves with what it brought, so every point in every
     // direction reads 1, in each channel (the fog coloured, so that the channels' flights
-    // weigh differently), within 0.5 % and 4 standard errors. Light samples alone (uniform
+    // weigh differently), within 4 standard errors, each under 0.6 %. Light samples alone (uniform
     // over the sky, most of them lost in the fog) are held to their 4 standard errors only
     // (1 to 3 %).
     const Fog<float> fog{.scattering = {1.0f, 2.0f, 4.0f}, .phase = {.g = 0.6f}};
@@ -277,7 +282,7 @@ TEST_CASE("the path tracer's volume furnace: a fog that does not absorb, under a
 TEST_CASE("the path tracer's volume furnace in fog of varying density: ground fog and a random grid, in the air and inside a ball, read the sky's radiance")
 {
     // As above, with delta (spectral) tracking for the flights and ratio tracking for the
-    // light samples' transmittance: radiance 1 from every direction, 0.5 % and 4 standard errors.
+    // light samples' transmittance: radiance 1 from every direction, within 4 standard errors under 0.6 %.
     const auto sky = Scene{Lights{EnvironmentLight<float>{}}, Object{Sphere<float>({0, 1000, 0}, 1e-3f), Diffuse<float>{}}};
     const HeightFog<float> ground{.box = {Vec3<float>(-1), Vec3<float>(1)}, .floor = -1, .base = 3, .scale_height = 0.6f};
     const FilledAir<VaryingFog<HeightFog<float>>> air{.medium = VaryingFog(ground, Rgb<float>(0), Rgb<float>(1.0f, 2.0f, 4.0f), {.g = 0.6f})};
@@ -314,11 +319,11 @@ TEST_CASE("the path tracer's single scattering of a point light in fog is the ai
     const PathTracer tracer(scene, {.max_diffuse_bounces = 0}, test::airlight_fog());
     Pcg32 rng(1, 2);
     Rgb<double> sum{0};
-    const int n = 1600000;
+    const int n = int(test::samples(1600000));
     for (int i = 0; i < n; ++i) sum += Rgb<double>(tracer.radiance(test::airlight_ray(), rng));
     for (int c = 0; c < 3; ++c) {
         CAPTURE(c);
-        CHECK(sum[c] / n == doctest::Approx(test::airlight(c)).epsilon(0.005).scale(0)); // relative (doctest's scale 1 would make it absolute here)
+        CHECK(sum[c] / n == doctest::Approx(test::airlight(c)).epsilon(test::resolved(0.005)).scale(0)); // relative (doctest's scale 1 would make it absolute here)
     }
 }
 
@@ -332,11 +337,11 @@ TEST_CASE("fog filling graded air: the path tracer's single scattering along a p
     const PathTracer tracer(scene, {.max_diffuse_bounces = 0}, air);
     Pcg32 rng(1, 2);
     Rgb<double> sum{0};
-    const int n = 200000;
+    const int n = int(test::samples(200000));
     for (int i = 0; i < n; ++i) sum += Rgb<double>(tracer.radiance(test::airlight_ray(), rng));
     for (int c = 0; c < 3; ++c) {
         CAPTURE(c);
-        CHECK(sum[c] / n == doctest::Approx(test::airlight(c)).epsilon(0.005).scale(0));
+        CHECK(sum[c] / n == doctest::Approx(test::airlight(c)).epsilon(test::resolved(0.005)).scale(0));
     }
 }
 
@@ -346,7 +351,7 @@ TEST_CASE("the path tracer's volume furnace in fog filling strongly graded air: 
     // box turns by tens of degrees), the sky found by bounces alone: a light sample's
     // shadow ray is straight (documented) while a bounce's path curves, so only bounces
     // are consistent with the curved paths here. Every path leaves with what it brought:
-    // 1 within 0.5 % and 4 standard errors.
+    // 1 within 4 standard errors, each under 0.6 %.
     using Graded = GradedAir<LinearSquareIndex<float>>;
     const Graded graded{.field = {.a = 1, .b = -0.3f}, .region = {Vec3<float>(-1.5f), Vec3<float>(1.5f)}, .stepping = {.tolerance = 1e-5f, .first_step = 0.05f, .max_step = 0.25f}};
     const FilledAir<Fog<float>, Graded> air{.medium = {.scattering = {1.0f, 2.0f, 4.0f}, .phase = {.g = 0.6f}}, .region = {Vec3<float>(-1), Vec3<float>(1)}, .base = graded};
@@ -370,7 +375,7 @@ TEST_CASE("equiangular samples of a spot light in thin haze: the same mean as th
     for (const bool equiangular : {false, true}) {
         const PathTracer tracer(spot, {.max_diffuse_bounces = 1, .equiangular = equiangular}, haze); // (single scattering and the floor's light: fast)
         Pcg32 rng(1, 2);
-        const int n = 100000;
+        const int n = int(test::samples(100000));
         double sum = 0, squares = 0;
         for (int i = 0; i < n; ++i) {
             const double x = tracer.radiance(ray, rng).x;
@@ -406,10 +411,11 @@ TEST_CASE("regression: a light sample through frosted glass from inside it takes
     const Ray<T> down{{0.05f, 0.5f, 0.02f}, normalize(Vec3<T>(0.01f, -1, 0.02f))};
     double in_clear = 0, in_layer = 0;
     Pcg32 rng(3, 4);
-    for (int i = 0; i < 400000; ++i) {
+    const long n = test::samples(400000);
+    for (long i = 0; i < n; ++i) {
         in_clear += clear.radiance(down, rng).x;
         in_layer += absorbed.radiance(down, rng).x;
     }
-    MESSAGE("under the slab: clear ", in_clear / 400000, ", with the layer ", in_layer / 400000, ", ratio ", in_layer / in_clear, " (exp(-0.5) = ", std::exp(-0.5), ")");
-    CHECK(in_layer / in_clear == doctest::Approx(std::exp(-0.5)).epsilon(0.12).scale(0));
+    MESSAGE("under the slab: clear ", in_clear / double(n), ", with the layer ", in_layer / double(n), ", ratio ", in_layer / in_clear, " (exp(-0.5) = ", std::exp(-0.5), ")");
+    CHECK(in_layer / in_clear == doctest::Approx(std::exp(-0.5)).epsilon(test::resolved(0.12)).scale(0));
 }

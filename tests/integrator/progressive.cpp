@@ -2,6 +2,7 @@
 #include <prism/integrator/progressive.hpp>
 #include <prism/prism.hpp>
 
+#include "../effort.hpp"
 #include "../furnace.hpp"
 
 #include <doctest/doctest.h>
@@ -95,7 +96,8 @@ TEST_CASE("progressive photon mapping's furnace reads 1.0, and passes split over
         const auto scene = test::furnace_scene(four);
         using S = std::remove_cvref_t<decltype(scene)>;
         ProgressiveConfig<S> config;
-        config.pass.tracing = {.global_photons = 50000, .caustic_photons = 0, .max_bounces = 64, .shadow_photons = false, .seed = 4};
+        // (Under a sanitizer an eighth of the photons, and 1.4 %: tests/effort.hpp.)
+        config.pass.tracing = {.global_photons = test::samples(50000), .caustic_photons = 0, .max_bounces = 64, .shadow_photons = false, .seed = 4};
         const ProgressivePhotonMapper<S> progressive(scene, config);
         const Camera<float> camera{.position = {0, 0, 0}, .look_at = {0, 0, 1}, .fov = 90};
         constexpr int size = 24;
@@ -111,7 +113,7 @@ TEST_CASE("progressive photon mapping's furnace reads 1.0, and passes split over
                 const Vec3<double> wall(rays.ray(float(x) + 0.5f, float(y) + 0.5f).direction);
                 ratio += image.at(x, y).x / test::furnace_radiance(wall, four, true);
             }
-        CHECK(ratio / (size * size) == doctest::Approx(1.0).epsilon(0.005));
+        CHECK(ratio / (size * size) == doctest::Approx(1.0).epsilon(test::resolved(0.005)));
         if (four) continue;
         // Passes [0, 3) and [3, 8) in two runs, on other thread counts: the same sum.
         RenderConfig first = eight, second = eight;
@@ -177,13 +179,14 @@ TEST_CASE("progressive photon mapping in the two-lobe furnace: every path, withi
     const auto scene = test::coated_furnace_scene();
     using S = std::remove_cvref_t<decltype(scene)>;
     ProgressiveConfig<S> config;
-    config.pass.tracing = {.global_photons = 50000, .caustic_photons = 50000, .max_bounces = 64, .shadow_photons = false, .seed = 4};
+    // (Under a sanitizer an eighth of the photons, and 2.8 %: tests/effort.hpp.)
+    config.pass.tracing = {.global_photons = test::samples(50000), .caustic_photons = test::samples(50000), .max_bounces = 64, .shadow_photons = false, .seed = 4};
     config.pass.max_depth = 16;
     const Camera<float> camera{.position = {0.01f, 0.02f, 0.03f}, .look_at = {0.3f, 0.2f, 1}, .fov = 90};
     const Film image = render(camera, ProgressivePhotonMapper<S>(scene, config), {.width = 24, .height = 24, .spp = 8, .threads = 2, .progress = false});
     const double mean = test::image_mean(image);
     MESSAGE("mean ", mean, " (closed form ", test::CoatedFurnace::all, ")");
-    CHECK(mean == doctest::Approx(test::CoatedFurnace::all).epsilon(0.01));
+    CHECK(mean == doctest::Approx(test::CoatedFurnace::all).epsilon(test::resolved(0.01)));
 }
 
 TEST_CASE("progressive photon mapping in fog: the beam estimate's radius shrinks too, and its blur of a light shaft fades")
@@ -223,7 +226,11 @@ TEST_CASE("progressive photon mapping in fog: the beam estimate's radius shrinks
 /// radiance 1 from every direction; 16 passes of 250000 photons, the beam's radius
 /// shrinking from 0.15, over a 9 x 9 film of parallel rays across the box (an orthographic
 /// look: a narrow field of view from far off, toward (0, look_y, 0), `fov` degrees);
-/// every channel's mean within 0.5 % of 1.
+/// every channel's mean within 1.5 % of 1. Over six photon seeds the densest channel's
+/// mean spread 0.40 % (a box of constant fog) and 0.25 % about a bias of +0.26 % (ground
+/// fog), the others' less: 1.5 % is 3.7 spreads or more. (It held 0.5 %, 1.2 spreads,
+/// by the seed; under a sanitizer an eighth of the photons, and 4.2 %: the spreads measured
+/// 1.07 % and 0.4 % there.)
 template <class Air>
 void check_progressive_volume_furnace(const Air& air, float look_y, float fov)
 {
@@ -231,7 +238,7 @@ void check_progressive_volume_furnace(const Air& air, float look_y, float fov)
     const auto sky = Scene{Lights{EnvironmentLight<T>{}}, Object{Sphere<T>({0, 1.2f, 0}, 1e-3f), Diffuse<T>{}}};
     using S = std::remove_cvref_t<decltype(sky)>;
     ProgressiveConfig<S, Air> config;
-    config.pass.tracing = {.global_photons = 250000, .caustic_photons = 0, .seed = 2};
+    config.pass.tracing = {.global_photons = test::samples(250000), .caustic_photons = 0, .seed = 2};
     config.pass.volume_radius = 0.15f;
     const Camera<T> camera{.position = {-200, 0, 0}, .look_at = {0, look_y, 0}, .up = {0, 1, 0}, .fov = fov};
     const Film image = render(camera, ProgressivePhotonMapper<S, Air>(sky, config, air), {.width = 9, .height = 9, .spp = 16, .threads = 2, .progress = false});
@@ -241,19 +248,19 @@ void check_progressive_volume_furnace(const Air& air, float look_y, float fov)
     for (int c = 0; c < 3; ++c) {
         CAPTURE(c);
         MESSAGE("channel ", c, ": ", sum[c] / 81);
-        CHECK(sum[c] / 81 == doctest::Approx(1).epsilon(0.005).scale(0));
+        CHECK(sum[c] / 81 == doctest::Approx(1).epsilon(test::resolved(0.015)).scale(0));
     }
 }
 
 TEST_CASE("progressive photon mapping's volume furnace: a box of fog that does not absorb, under a uniform sky, reads the sky's radiance")
 {
     // As the photon mapper's volume furnace (tests/integrator/photon_mapper.cpp): a box of
-    // coloured fog that only scatters. Measured: 1.0015, 1.0000, 1.0028; 0.5 % held.
+    // coloured fog that only scatters. Measured: 1.0015, 1.0000, 1.0028.
     using Air = FilledAir<Fog<float>>;
     check_progressive_volume_furnace(Air{.medium = {.scattering = {1.0f, 2.0f, 4.0f}, .phase = {.g = 0.6f}}, .region = {Vec3<float>(-1), Vec3<float>(1)}}, 0.0f, 0.35f);
 }
 
-TEST_CASE("progressive photon mapping's volume furnace in ground fog of varying density reads the sky's radiance, to 0.5 %")
+TEST_CASE("progressive photon mapping's volume furnace in ground fog of varying density reads the sky's radiance, to 1.5 %")
 {
     // The furnace above filled with the photon mapper's ground fog (density 2.5 at the
     // bottom, thinning by e every 0.5 up; tests/integrator/photon_mapper.cpp): photons fly by

@@ -2,6 +2,8 @@
 #include <prism/integrator/reference.hpp>
 #include <prism/prism.hpp>
 
+#include "../effort.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -39,7 +41,8 @@ TEST_CASE("an area light's image in a mirror on a floor: the path tracer alone a
                       Object{Quad<double>({0.5, h, -0.5}, {1, 0, 0}, {0, 0, 1}), Emissive<double>{.radiance = Rgb<double>(radiance)}}};
     const Camera<double> camera{.position = {1.5, 3, 0}, .look_at = {1.5, 0, 0}, .up = {0, 0, -1}, .fov = 40};
     constexpr int size = 8;
-    const RenderConfig config{.width = size, .height = size, .spp = 16384, .threads = 2, .seed = 5, .progress = false};
+    // (Under a sanitizer an eighth of the samples, and 2.8 %: tests/effort.hpp.)
+    const RenderConfig config{.width = size, .height = size, .spp = int(test::samples(16384)), .threads = 2, .seed = 5, .progress = false};
     const Film alone = render(camera, PathTracer(scene), config);
     const Film both = render(camera, Reference(scene), config);
     const CameraRays<double> rays = camera.rays(size, size);
@@ -57,8 +60,8 @@ TEST_CASE("an area light's image in a mirror on a floor: the path tracer alone a
             mean_both += both.at(x, y).x;
         }
     MESSAGE("floor: closed form ", expected / 64, ", path tracer ", mean_alone / 64, ", reference ", mean_both / 64);
-    CHECK(mean_alone == doctest::Approx(expected).epsilon(0.01));
-    CHECK(mean_both == doctest::Approx(expected).epsilon(0.01));
+    CHECK(mean_alone == doctest::Approx(expected).epsilon(test::resolved(0.01)));
+    CHECK(mean_both == doctest::Approx(expected).epsilon(test::resolved(0.01)));
 }
 
 // The same for a sky: a floor's diffuse bounce meets the environment through the mirror
@@ -76,7 +79,8 @@ TEST_CASE("a sky's image in a mirror on a floor: the reference counts it once, a
                       Object{Box<double>({-0.1, 0, -2}, {0, 3, 2}), Mirror<double>{{.kr = Rgb<double>(0.9)}}}};
     const Camera<double> camera{.position = {-1, 3, 0}, .look_at = {-1, 0, 0}, .up = {0, 0, -1}, .fov = 40};
     constexpr int size = 8;
-    const RenderConfig config{.width = size, .height = size, .spp = 4096, .threads = 2, .seed = 3, .progress = false};
+    // (Under a sanitizer an eighth of the samples, and 4.2 %: tests/effort.hpp.)
+    const RenderConfig config{.width = size, .height = size, .spp = int(test::samples(4096)), .threads = 2, .seed = 3, .progress = false};
     const Film alone = render(camera, PathTracer(scene), config);
     const Film both = render(camera, Reference(scene), config);
     const Film direct = render(camera, PathTracer(scene, {.max_diffuse_bounces = 1, .caustics_of_area_lights = false}), config);
@@ -84,7 +88,7 @@ TEST_CASE("a sky's image in a mirror on a floor: the reference counts it once, a
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) mean_alone += alone.at(x, y).x / 64, mean_both += both.at(x, y).x / 64, mean_direct += direct.at(x, y).x / 64;
     MESSAGE("floor by the mirror: path tracer ", mean_alone, ", reference ", mean_both, ", without the mirrored sky ", mean_direct);
-    CHECK(mean_both == doctest::Approx(mean_alone).epsilon(0.015));
+    CHECK(mean_both == doctest::Approx(mean_alone).epsilon(test::resolved(0.015)));
     // The mirrored sky is a share of the floor's light the test can see.
     CHECK(mean_alone > 1.2 * mean_direct);
 }

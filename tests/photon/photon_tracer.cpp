@@ -2,6 +2,7 @@
 #include <prism/photon/photon_tracer.hpp>
 #include <prism/prism.hpp>
 
+#include "../effort.hpp"
 #include "../furnace.hpp"
 
 #include <doctest/doctest.h>
@@ -250,7 +251,8 @@ TEST_CASE("Caustic photons aimed at targets whose cones overlap carry what unaim
                       Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(0)}}},
                       Object{Sphere<double>({0, 1, 0}, 1), Dielectric<double>{.ior = 1.5}},
                       Object{Sphere<double>({0.8, 3.2, 0.3}, 0.7), Dielectric<double>{.ior = 1.5}}};
-    const PhotonMaps maps = trace_photons(scene, {.global_photons = 2000000, .caustic_photons = 200000, .shadow_photons = false});
+    // (Under a sanitizer an eighth of the photons: the bound below is in standard errors.)
+    const PhotonMaps maps = trace_photons(scene, {.global_photons = test::samples(2000000), .caustic_photons = test::samples(200000), .shadow_photons = false});
     double aimed = 0, unaimed = 0;
     for (const Photon& p : maps.caustic.photons()) aimed += p.power().x;
     std::size_t count = 0;
@@ -262,7 +264,7 @@ TEST_CASE("Caustic photons aimed at targets whose cones overlap carry what unaim
     // The unaimed sum has a relative standard error of about 1 / sqrt(count) (each such
     // photon carries the same power): 4 sigma.
     INFO("aimed ", aimed, ", unaimed ", unaimed, " from ", count, " photons");
-    CHECK(count > 10000);
+    CHECK(count > std::size_t(test::samples(10000)));
     CHECK(std::abs(aimed - unaimed) < 4 * unaimed / std::sqrt(double(count)));
 }
 
