@@ -21,6 +21,8 @@
 #     sanitize  clang 19, AddressSanitizer + UndefinedBehaviorSanitizer, assertions on, the
 #               portable paths (no __int128, no vector extensions): every case, with the
 #               statistical ones on fewer samples (tests/effort.hpp), and a small render
+#               (the consumer projects that build with the default g++, label `consumer`,
+#               run in the release tree only, here and in the thread tree)
 #     thread    clang 19 and libc++, ThreadSanitizer, -O2, AVX2 where the CPU has it
 #               (Bvh<float>'s 8-wide nodes), assertions off as in a user's release build:
 #               every case and the command-line tests, then renders on 2 threads
@@ -167,7 +169,7 @@ if [[ $full -eq 1 ]]; then
         -DPRISM_ASSERTIONS=ON -DPRISM_WERROR=ON -DPRISM_TESTS_PCH=ON -DPRISM_TESTS_UNITY=ON -DCMAKE_CXX_FLAGS_DEBUG=-g1 \
         -DCMAKE_CXX_FLAGS='-O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -DPRISM_PORTABLE_INT128 -DPRISM_NO_VECTOR_EXTENSIONS' &&
         cmake --build '$sanitize' -j $jobs --target prism_tests cli_examples test_programs"; then
-    ctest_step sanitize "$sanitize" -LE full
+    ctest_step sanitize "$sanitize" -LE 'full|consumer'
     step sanitize-render "$sanitize/examples/cornell" --width 64 --height 64 --spp 2 --out "$sanitize/gallery" || fail sanitize-render
   else
     fail sanitize
@@ -186,7 +188,7 @@ if [[ $full -eq 1 ]]; then
         -DPRISM_WERROR=ON -DPRISM_TESTS_PCH=ON -DPRISM_TESTS_UNITY=ON \
         '-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG' '-DCMAKE_CXX_FLAGS=-fsanitize=thread -stdlib=libc++ $avx2' &&
         cmake --build '$thread' -j $jobs --target prism_tests test_programs cli_examples"; then
-    ctest_step thread "$thread" -LE full
+    ctest_step thread "$thread" -LE 'full|consumer'
     step thread-render-whitted "$thread/examples/cornell" --width 96 --height 96 --spp 2 --threads 2 --out "$thread/gallery" || fail thread-render-whitted
     step thread-render-photons "$thread/examples/cornell_caustics" --width 64 --height 64 --spp 1 --threads 2 --photons 20000 \
       --caustic-photons 20000 --gather 4 --out "$thread/gallery" || fail thread-render-photons

@@ -207,15 +207,15 @@ TEST_CASE("progressive photon mapping in fog: the beam estimate's radius shrinks
     const Camera<T> camera{.position = {0.3f, 2, -3}, .look_at = {0.3f, 2, 0}, .up = {0, 1, 0}, .fov = 2};
     const RenderConfig few{.width = 4, .height = 4, .spp = 64, .threads = 2, .progress = false};
     RenderConfig many = few;
-    many.spp = 16384;
+    many.spp = int(test::samples(16384)); // (under a sanitizer an eighth of the paths and photons: tests/effort.hpp)
     const double traced = test::image_mean(render(camera, PathTracer(scene, {}, fog), many));
     ProgressiveConfig<S, Air> config;
-    config.pass.tracing = {.global_photons = 20000, .caustic_photons = 0, .seed = 3};
+    config.pass.tracing = {.global_photons = test::samples(20000), .caustic_photons = 0, .seed = 3};
     config.pass.volume_radius = 0.3f;
     config.alpha = 0.1;
     const double progressive = test::image_mean(render(camera, ProgressivePhotonMapper<S, Air>(scene, config, fog), few));
     PhotonMapper<S, Air>::Config fixed = config.pass;
-    fixed.tracing.global_photons = 64 * 20000;
+    fixed.tracing.global_photons = 64 * test::samples(20000);
     const double blurred = test::image_mean(render(camera, PhotonMapper<S, Air>(scene, fixed, fog), {.width = 4, .height = 4, .spp = 1, .threads = 2, .progress = false}));
     MESSAGE("beside the shaft: path tracer ", traced, ", progressive ", progressive, ", fixed radius ", blurred);
     CHECK(blurred > 3 * traced);
