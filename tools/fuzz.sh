@@ -6,9 +6,10 @@
 #   tools/fuzz.sh [SECONDS]          each target for SECONDS (default 30)
 #   tools/fuzz.sh --budget SECONDS   all targets fuzzed within about SECONDS of wall time (their
 #                                    builds aside), one per core at a time, each an equal share
-#                                    (the full tier: 240)
+#                                    (the full tier: 120)
 #   tools/fuzz.sh --runs N           each target for N inputs, however long it takes (the long
 #                                    campaigns: 1000000; docs/contributing.md has the last)
+#   tools/fuzz.sh ... TARGET...      only the targets named (e.g. --runs 1000000 obj mtl)
 # Targets (tests/fuzz/): quadric (crossings of any ten coefficients), csg (trees of
 # every operator), photon_map (the KD-tree against brute force, the estimates), and the
 # file readers pfm, png, jpeg, hdr, density (a density grid), ply, obj, mtl (an OBJ's material library) and exr (any bytes as a file; exr as prism_merge reads a
@@ -21,12 +22,23 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 targets=(quadric csg photon_map pfm png jpeg hdr density ply obj mtl exr)
 cores=$(nproc)
 seconds=30 runs=-1
+budget=-1
 case "${1:-}" in
-  --budget) seconds=$(( ${2:?--budget takes seconds} * cores / ${#targets[@]} )); (( seconds < 5 )) && seconds=5 ;;
-  --runs) runs=${2:?--runs takes a count} seconds=0 ;;
+  --budget) budget=${2:?--budget takes seconds}; shift 2 ;;
+  --runs) runs=${2:?--runs takes a count} seconds=0; shift 2 ;;
   "") ;;
-  *) seconds=$1 ;;
+  *) if [[ $1 =~ ^[0-9]+$ ]]; then seconds=$1; shift; fi ;;
 esac
+if (( $# > 0 )); then
+  for target in "$@"; do
+    [[ " ${targets[*]} " == *" $target "* ]] || { echo "fuzz: no target '$target' (the targets: ${targets[*]})" >&2; exit 2; }
+  done
+  targets=("$@")
+fi
+if (( budget >= 0 )); then
+  seconds=$(( budget * cores / ${#targets[@]} ))
+  (( seconds < 5 )) && seconds=5
+fi
 out="$root/build/fuzz"
 mkdir -p "$out"
 flags=(-std=c++20 -O1 -g1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -DPRISM_ENABLE_ASSERTIONS
