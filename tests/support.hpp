@@ -113,6 +113,17 @@ Disagreements far_disagreements(const F& shape, const D& twin, prism::Vec3<doubl
 
 namespace test {
 
+/// The mean of test::samples(n) estimates integrator.radiance(ray, rng).x from one stream
+/// (an eighth of n under a sanitizer: tests/effort.hpp).
+template <class Integrator, class Ray>
+double mean_radiance(const Integrator& integrator, const Ray& ray, long n, prism::Pcg32 rng)
+{
+    n = samples(n);
+    double sum = 0;
+    for (long i = 0; i < n; ++i) sum += integrator.radiance(ray, rng).x;
+    return sum / double(n);
+}
+
 /// Whether this build runs under a sanitizer, which keeps its own operator new (so
 /// tests/main.cpp does not replace it, and allocation_budget has no effect).
 constexpr bool sanitized = PRISM_TEST_SANITIZED;

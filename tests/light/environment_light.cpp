@@ -2,7 +2,7 @@
 #include <prism/light/environment_light.hpp>
 #include <prism/prism.hpp>
 
-#include "../effort.hpp"
+#include "../support.hpp"
 
 #include <doctest/doctest.h>
 
@@ -19,13 +19,7 @@ void check_sky_everywhere(const SceneT& scene, double expected, const std::strin
 {
     const Ray<double> down{{0.1, 1, 0.2}, {0, -1, 0}};
     // (Under a sanitizer an eighth of the estimates, and 1.4 %: tests/effort.hpp.)
-    const auto mean_of = [&](const auto& integrator, long n) {
-        Pcg32 rng(23, 1);
-        double sum = 0;
-        n = test::samples(n);
-        for (long i = 0; i < n; ++i) sum += integrator.radiance(down, rng).x;
-        return sum / double(n);
-    };
+    const auto mean_of = [&](const auto& integrator, long n) { return test::mean_radiance(integrator, down, n, Pcg32(23, 1)); };
     CHECK_MESSAGE(mean_of(Whitted(scene, {.area_light_grid = 8}), 20000) == doctest::Approx(expected).epsilon(test::resolved(0.005)), what, ": Whitted");
     for (const AreaLightStrategy strategy : {AreaLightStrategy::mis, AreaLightStrategy::light_samples, AreaLightStrategy::bounces})
         CHECK_MESSAGE(mean_of(PathTracer(scene, {.area_lights = strategy}), 400000) == doctest::Approx(expected).epsilon(test::resolved(0.005)), what,

@@ -33,13 +33,7 @@ void check_area_light_everywhere(const SceneT& scene, double x, double z, double
 {
     const Ray<double> down{{x, 1e-3, z}, {0, -1, 0}};
     // (Under a sanitizer an eighth of the estimates, and 1.4 %: tests/effort.hpp.)
-    const auto mean_of = [&](const auto& integrator, long n) {
-        Pcg32 rng(17, 3);
-        double sum = 0;
-        n = test::samples(n);
-        for (long i = 0; i < n; ++i) sum += integrator.radiance(down, rng).x;
-        return sum / double(n);
-    };
+    const auto mean_of = [&](const auto& integrator, long n) { return test::mean_radiance(integrator, down, n, Pcg32(17, 3)); };
     const double whitted = mean_of(Whitted(scene), 20000);
     CHECK_MESSAGE(whitted == doctest::Approx(expected).epsilon(test::resolved(0.005)), what, ": Whitted");
     for (const AreaLightStrategy strategy : {AreaLightStrategy::mis, AreaLightStrategy::light_samples, AreaLightStrategy::bounces}) {
