@@ -50,8 +50,8 @@ mkdir -p "$logs"
 # ccache. The release tree precompiles no header: with eight test files to a translation
 # unit, prism.hpp precompiled saved nothing (352 s without, 381 s with), and a header
 # precompiled anew is never the same bytes twice, so ccache missed every test batch after
-# build/ was removed; without it a warm build takes seconds. (The full tier's clang trees
-# keep it, as measured: not yet timed without.)
+# build/ was removed; without it a warm build takes seconds. (The thread tree keeps it: not
+# yet timed without. The sanitizers' tree is the plain build, which precompiles nothing.)
 launcher=()
 if command -v ccache >/dev/null; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
