@@ -12,9 +12,11 @@
 #   tools/fuzz.sh ... TARGET...      only the targets named (e.g. --runs 1000000 obj mtl)
 # Targets (tests/fuzz/): quadric (crossings of any ten coefficients), csg (trees of
 # every operator), photon_map (the KD-tree against brute force, the estimates), and the
-# file readers pfm, png, jpeg, hdr, density (a density grid), ply, obj, mtl (an OBJ's material library) and exr (any bytes as a file; exr as prism_merge reads a
-# part). Each
-# starts from its committed corpus, tests/fuzz/corpus/<target>/, and writes what it
+# file readers pfm, png, jpeg, hdr, density (a density grid), ply, obj, mtl (an OBJ's
+# material library) and exr (any bytes as a file; exr as prism_merge reads a part). Each
+# starts from its committed corpus, tests/fuzz/corpus/<target>/, and the inputs that broke
+# it before a fix, tests/fuzz/regressions/<target>/ (everything the builds' corpus replays
+# run, under the same sanitizers), and writes what it
 # finds into build/fuzz/<target>/ (copy inputs worth keeping into the corpus); a crash
 # leaves its input as build/fuzz/crash-<target>-*, and the script fails.
 set -euo pipefail
@@ -61,7 +63,9 @@ fuzz_one() {
   # removed when the run ends.
   local tmp="$out/tmp/$target"
   rm -rf "$tmp" && mkdir -p "$tmp"
-  if ! TMPDIR="$tmp" "$out/fuzz_$target" "$out/$target" "$root/tests/fuzz/corpus/$target" -max_total_time="$seconds" -runs="$runs" -max_len="$max_len" -malloc_limit_mb=512 \
+  local seeds=("$root/tests/fuzz/corpus/$target")
+  [[ -d $root/tests/fuzz/regressions/$target ]] && seeds+=("$root/tests/fuzz/regressions/$target")
+  if ! TMPDIR="$tmp" "$out/fuzz_$target" "$out/$target" "${seeds[@]}" -max_total_time="$seconds" -runs="$runs" -max_len="$max_len" -malloc_limit_mb=512 \
        -artifact_prefix="$out/crash-$target-" -print_final_stats=1 >"$out/$target.log" 2>&1; then
     { echo "fuzz: $target FAILED; its log ends:"; tail -n 40 "$out/$target.log"; } >"$report"
     return 0
