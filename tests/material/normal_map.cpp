@@ -65,8 +65,8 @@ TEST_CASE("a normal map tilts the shading normal in the tangent frame (t along d
     // Half strength: half the tangent part.
     c = floor_at(0.3, -0.2);
     NormalMapped<Matte, ConstantNormal>(Matte{}, {m}, 0.5).shade(c);
-    const Vec3<double> half = normalize(Vec3<double>{0.5 * m.x, m.z, -0.5 * m.y});
-    CHECK(length(c.shading - half) < 1e-12);
+    const Vec3<double> halved = normalize(Vec3<double>{0.5 * m.x, m.z, -0.5 * m.y});
+    CHECK(length(c.shading - halved) < 1e-12);
 }
 
 TEST_CASE("a map that would turn the normal past the surface is bent back above it: no light leaks through")

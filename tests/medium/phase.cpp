@@ -53,19 +53,19 @@ TEST_CASE("Henyey-Greenstein's sampling follows its density (chi-square), and ea
         const HenyeyGreenstein<double> hg{g};
         const Vec3<double> d = normalize(Vec3<double>(0.3, -0.4, 0.8));
         Pcg32 rng(11, 4);
-        double worst = 0, unit = 0;
+        double worst = 0, off_unit = 0;
         const test::Chi2 chi2 = test::chi2_polar(
             [&] {
                 const auto s = hg.sample(d, rng.uniform<double>(), rng.uniform<double>());
                 worst = std::max(worst, std::abs(s.pdf - hg.value(dot(s.direction, d))) / s.pdf);
-                unit = std::max(unit, std::abs(length(s.direction) - 1));
+                off_unit = std::max(off_unit, std::abs(length(s.direction) - 1));
                 return s.direction;
             },
             [&](const Vec3<double>& w) { return hg.value(dot(w, d)); }, d, 500000);
         CAPTURE(chi2.statistic);
         CHECK(chi2.p_value > 0.01);
         CHECK(worst < 1e-9);
-        CHECK(unit < 1e-12);
+        CHECK(off_unit < 1e-12);
     }
 }
 
