@@ -12,27 +12,27 @@ using detail::WordsInt128;
 
 namespace {
 
-constexpr std::uint64_t ones = ~std::uint64_t(0);
-constexpr std::uint64_t top = std::uint64_t(1) << 63;
+constexpr std::uint64_t all_ones = ~std::uint64_t(0);
+constexpr std::uint64_t top_bit = std::uint64_t(1) << 63;
 
 } // namespace
 
 TEST_CASE("WordsInt128 negates, adds and refuses to overflow as two's-complement arithmetic does")
 {
-    static_assert(WordsInt128::from_int64(-1) == WordsInt128::from_words(ones, ones));
+    static_assert(WordsInt128::from_int64(-1) == WordsInt128::from_words(all_ones, all_ones));
     static_assert(-WordsInt128::from_int64(5) == WordsInt128::from_int64(-5));
-    static_assert(-WordsInt128::from_words(0, 1) == WordsInt128::from_words(0, ones)); // -2^64
+    static_assert(-WordsInt128::from_words(0, 1) == WordsInt128::from_words(0, all_ones)); // -2^64
     static_assert(-WordsInt128{} == WordsInt128{});
-    const auto lowest = WordsInt128::from_words(0, top), highest = WordsInt128::from_words(ones, ones >> 1);
+    const auto lowest = WordsInt128::from_words(0, top_bit), highest = WordsInt128::from_words(all_ones, all_ones >> 1);
     CHECK(-lowest == lowest); // wraps, as the lowest two's-complement value does
     CHECK(lowest.negative());
     CHECK(!highest.negative());
 
-    auto x = WordsInt128::from_words(ones, 0); // 2^64 - 1, then a carry into the high word
+    auto x = WordsInt128::from_words(all_ones, 0); // 2^64 - 1, then a carry into the high word
     REQUIRE(x.add(WordsInt128::from_int64(1)));
     CHECK(x == WordsInt128::from_words(0, 1));
     REQUIRE(x.add(WordsInt128::from_int64(-1))); // and a borrow back
-    CHECK(x == WordsInt128::from_words(ones, 0));
+    CHECK(x == WordsInt128::from_words(all_ones, 0));
 
     auto h = highest;
     CHECK(!h.add(WordsInt128::from_int64(1)));
@@ -52,14 +52,14 @@ TEST_CASE("WordsInt128 rounds to the nearest double, ties to even, with the bits
     CHECK(value(0, 0) == 0.0);
     CHECK(value(p53 + 1, 0) == 0x1p53);          // a tie: to the even 2^53
     CHECK(value(p53 + 3, 0) == 0x1p53 + 4);      // a tie: to the even 2^53 + 4
-    CHECK(value(ones, 0) == 0x1p64);             // rounds up into the next power
+    CHECK(value(all_ones, 0) == 0x1p64);             // rounds up into the next power
     CHECK(value(1, 1) == 0x1p64);                // 2^64 + 1
     // 2^117 + 2^64 is a tie between 2^117 and 2^117 + 2^65 (both have 53 bits): to even.
     CHECK(value(0, (std::uint64_t(1) << 53) + 1) == 0x1p117);
     // One more in the low word breaks the tie upward.
     CHECK(value(1, (std::uint64_t(1) << 53) + 1) == 0x1p117 + 0x1p65);
-    CHECK(value(0, top) == -0x1p127);            // the lowest value
-    CHECK(value(ones, ones >> 1) == 0x1p127);    // the highest rounds up to 2^127
+    CHECK(value(0, top_bit) == -0x1p127);            // the lowest value
+    CHECK(value(all_ones, all_ones >> 1) == 0x1p127);    // the highest rounds up to 2^127
     CHECK(WordsInt128::from_int64(-3).to_double() == -3.0);
     CHECK(WordsInt128::from_int64(std::int64_t(-(p53 + 1))).to_double() == -0x1p53);
 }

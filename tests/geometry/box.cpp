@@ -47,8 +47,8 @@ TEST_CASE_TEMPLATE("a ray leaving a box never hits it again", T, float, double)
         INFO("distance from origin " << distance);
         CHECK(test::reintersections(rng, 4000, [&](prism::Pcg32& r) {
                   const Vec3<T> centre = test::random_point<T>(r, T(distance));
-                  const Vec3<T> half{T(0.2) + r.uniform<T>(), T(0.2) + r.uniform<T>(), T(0.2) + r.uniform<T>()};
-                  return std::pair{Box<T>(centre - half, centre + half), centre};
+                  const Vec3<T> half_size{T(0.2) + r.uniform<T>(), T(0.2) + r.uniform<T>(), T(0.2) + r.uniform<T>()};
+                  return std::pair{Box<T>(centre - half_size, centre + half_size), centre};
               }) == 0);
     }
 }

@@ -69,11 +69,11 @@ TEST_CASE_TEMPLATE("grazing rays: both crossings found, in order, close to the e
         // A ray at distance 1 - miss from the centre: roots at -+ sqrt(1 - (1 - miss)^2) about z = 0.
         const T y = T(1 - miss);
         const auto c = sphere.crossings({{T(0), y, T(-10)}, {T(0), T(0), T(1)}}, Interval<T>::universe());
-        const double half = std::sqrt(1 - double(y) * double(y));
-        if (half < 1e-6) continue; // the chord is below float resolution at this y
+        const double half_chord = std::sqrt(1 - double(y) * double(y));
+        if (half_chord < 1e-6) continue; // the chord is below float resolution at this y
         REQUIRE(c.size() == 2);
         CHECK(c[0].t < c[1].t);
-        CHECK(std::abs(c[0].t - (10 - half)) < 1e-5 * 10 + 1e-3 * half);
+        CHECK(std::abs(c[0].t - (10 - half_chord)) < 1e-5 * 10 + 1e-3 * half_chord);
     }
 }
 

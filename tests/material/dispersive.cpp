@@ -11,7 +11,7 @@ using namespace prism;
 
 namespace {
 
-constexpr double degrees = 180.0 / std::numbers::pi;
+constexpr double degrees_per_radian = 180.0 / std::numbers::pi;
 
 /// A 60-degree prism of N-BK7 along z: apex up, base on y = 0, side 2, 4 deep.
 auto bk7_prism()
@@ -52,8 +52,8 @@ TEST_CASE("A dispersive interface refracts each wavelength at its own index: a 6
         REQUIRE(in.refracted);
         const auto out = delta_split(glass, *in.refracted, -right, false, {}, lambda);
         REQUIRE(out.refracted);
-        const double delta = std::acos(prism::dot(d0, *out.refracted)) * degrees;
-        CHECK(delta == Approx((2 * std::asin(n * 0.5) - std::numbers::pi / 3) * degrees).epsilon(0).scale(1).epsilon(1e-4));
+        const double delta = std::acos(prism::dot(d0, *out.refracted)) * degrees_per_radian;
+        CHECK(delta == Approx((2 * std::asin(n * 0.5) - std::numbers::pi / 3) * degrees_per_radian).epsilon(0).scale(1).epsilon(1e-4));
         CHECK(delta > previous); // blue bends more
         previous = delta;
     }
@@ -178,14 +178,14 @@ TEST_CASE("Photons through a glass prism: every wavelength leaves at 2 asin... i
                       Object{Plane<double>({-1, 0, 0}, -8), Diffuse<double>{.albedo = {.color = Rgb<double>(1)}}}};
     const SpectralBands<double> bands(3);
     const PhotonMaps maps = trace_photons(scene, {.global_photons = 0, .caustic_photons = 200000, .shadow_photons = false, .dispersion_bands = 3});
-    const auto predicted = [&](int band) { return deviation(glass::bk7<double>.index(bands[band].wavelength_nm), theta1) * degrees; };
+    const auto predicted = [&](int band) { return deviation(glass::bk7<double>.index(bands[band].wavelength_nm), theta1) * degrees_per_radian; };
     int matched[3] = {0, 0, 0}, wrong = 0, others = 0;
     for (const Photon& photon : maps.caustic.photons()) {
         const Rgb<float> p = photon.power();
         // Band 0 (blue) has no red, band 2 (red) no green or blue, band 1 (yellow) no blue.
         const int band = p.z > 0.2f * p.x ? 0 : (p.y > 0.1f * p.x ? 1 : 2);
         const Vec3<double> arrived = -Vec3<double>(photon.toward_source());
-        const double delta = std::acos(std::min(1.0, prism::dot(normalize(arrived), beam))) * degrees;
+        const double delta = std::acos(std::min(1.0, prism::dot(normalize(arrived), beam))) * degrees_per_radian;
         if (std::abs(delta - predicted(band)) < 0.01)
             ++matched[band];
         else if (std::abs(delta - predicted(0)) < 0.01 || std::abs(delta - predicted(1)) < 0.01 || std::abs(delta - predicted(2)) < 0.01)

@@ -122,11 +122,11 @@ TEST_CASE("photons leave a patterned area light with the power each part of it s
         const EmittedPhoton<double> photon = lights.emit_photon({}, rng.uniform<double>(), rng.uniform<double>(), rng);
         (photon.ray.origin.x < 0 ? left : right) += photon.weight * total / double(n);
     }
-    const double half = pi<double> * 1.0 * 5.0;
-    CHECK(left.x == doctest::Approx(half).epsilon(0.01));
-    CHECK(left.y == doctest::Approx(0.2 * half).epsilon(0.01));
+    const double each_half = pi<double> * 1.0 * 5.0;
+    CHECK(left.x == doctest::Approx(each_half).epsilon(0.01));
+    CHECK(left.y == doctest::Approx(0.2 * each_half).epsilon(0.01));
     CHECK(left.z == doctest::Approx(0.0));
     CHECK(right.x == doctest::Approx(0.0));
-    CHECK(right.y == doctest::Approx(0.2 * half).epsilon(0.01));
-    CHECK(right.z == doctest::Approx(half).epsilon(0.01));
+    CHECK(right.y == doctest::Approx(0.2 * each_half).epsilon(0.01));
+    CHECK(right.z == doctest::Approx(each_half).epsilon(0.01));
 }

@@ -96,10 +96,10 @@ TEST_CASE("a grey fog's flights weigh exactly (to rounding): its albedo where th
     CHECK(wrong == 0);
     CHECK(scattered > 7500); // 1 - exp(-1.5) = 78 % of them
     // One clear channel, an unbounded segment: the clear channel passes every time it is drawn.
-    const Fog<float> half{.scattering = {0.5f, 0.0f, 0.5f}};
+    const Fog<float> half_fog{.scattering = {0.5f, 0.0f, 0.5f}};
     int bad = 0, passed = 0;
     for (int i = 0; i < 10000; ++i) {
-        const FreeFlight<float> f = half.sample_flight({{0, 0, 0}, {0, 1, 0}}, infinity<float>, Rgb<float>(1), rng);
+        const FreeFlight<float> f = half_fog.sample_flight({{0, 0, 0}, {0, 1, 0}}, infinity<float>, Rgb<float>(1), rng);
         if (!std::isfinite(f.weight.x + f.weight.y + f.weight.z)) ++bad;
         // Only the clear channel reaches infinity, drawn 1 time in 3.
         if (!f.scattered && f.weight != Rgb<float>(0, 3, 0)) ++bad;
@@ -108,7 +108,7 @@ TEST_CASE("a grey fog's flights weigh exactly (to rounding): its albedo where th
     CHECK(bad == 0);
     CHECK(passed > 3000);
     CHECK(passed < 3700);
-    CHECK(half.transmittance(infinity<float>) == Rgb<float>(0, 1, 0));
+    CHECK(half_fog.transmittance(infinity<float>) == Rgb<float>(0, 1, 0));
 }
 
 TEST_CASE("Fog refuses a negative coefficient or a bad phase function, by name")

@@ -10,6 +10,6 @@ TEST_CASE("Beer-Lambert: I(x) = I0 exp(-c x) per channel, and composes over dist
     CHECK(t.x == doctest::Approx(0.36787944117)); // e^-1
     CHECK(t.y == doctest::Approx(0.13533528324)); // e^-2
     CHECK(t.z == 1.0);
-    const auto half = prism::beer_lambert(sigma, 1.0);
-    CHECK(half.y * half.y == doctest::Approx(t.y));
+    const auto at_half = prism::beer_lambert(sigma, 1.0);
+    CHECK(at_half.y * at_half.y == doctest::Approx(t.y));
 }

@@ -11,7 +11,7 @@ using namespace prism;
 
 namespace {
 
-constexpr int width = 40, height = 30;
+constexpr int film_width = 40, film_height = 30;
 
 /// A floor of albedo (0.6, 0.5, 0.4) under a point light, a glass ball on it, seen from
 /// 2 above looking down and ahead, so the top rows see the sky.
@@ -40,14 +40,14 @@ TEST_CASE("the surface layers: coverage, albedo, normal and distance of the firs
 {
     const auto scene = floor_scene();
     const Whitted integrator(scene);
-    const RenderConfig config{.width = width, .height = height, .spp = 1, .threads = 2, .progress = false};
+    const RenderConfig config{.width = film_width, .height = film_height, .spp = 1, .threads = 2, .progress = false};
     const Accumulation layers = render_layers(layers_camera, integrator, config);
     CHECK(layers.channels() == layer_channels<Whitted<std::remove_cvref_t<decltype(scene)>>>());
     REQUIRE(layers.channels().size() == 11);
-    const CameraRays<float> rays = layers_camera.rays(width, height);
+    const CameraRays<float> rays = layers_camera.rays(film_width, film_height);
     int floor = 0, sky = 0;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
+    for (int y = 0; y < film_height; ++y)
+        for (int x = 0; x < film_width; ++x) {
             const Ray<float> ray = rays.ray(float(x) + 0.5f, float(y) + 0.5f);
             const double a = channel(layers, x, y, index_of(layers, "A"));
             if (!(ray.direction.y < 0)) { // the sky: no surface
@@ -85,31 +85,31 @@ TEST_CASE("render_layers' image is render_sums' bits, and its crops and sample r
 {
     const auto scene = floor_scene();
     const Whitted integrator(scene);
-    RenderConfig config{.width = width, .height = height, .spp = 4, .threads = 2, .seed = 3, .progress = false};
+    RenderConfig config{.width = film_width, .height = film_height, .spp = 4, .threads = 2, .seed = 3, .progress = false};
     const Accumulation layers = render_layers(layers_camera, integrator, config);
     const Accumulation image = render_sums(layers_camera, integrator, config);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) REQUIRE(std::equal(image.sums(x, y).begin(), image.sums(x, y).end(), layers.sums(x, y).begin()));
+    for (int y = 0; y < film_height; ++y)
+        for (int x = 0; x < film_width; ++x) REQUIRE(std::equal(image.sums(x, y).begin(), image.sums(x, y).end(), layers.sums(x, y).begin()));
     // Anti-aliased edges: coverage between 0 and 1 on the horizon.
     int partial = 0;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
+    for (int y = 0; y < film_height; ++y)
+        for (int x = 0; x < film_width; ++x) {
             const double a = channel(layers, x, y, 3);
             partial += a > 0 && a < 1;
         }
     CHECK(partial > 0);
-    Accumulation parts(width, height, PixelWindow::whole(width, height), layers.channels());
+    Accumulation parts(film_width, film_height, PixelWindow::whole(film_width, film_height), layers.channels());
     config.passes = {0, 1};
-    config.crop = {0, 0, width, 13};
+    config.crop = {0, 0, film_width, 13};
     parts += render_layers(layers_camera, integrator, config);
-    config.crop = {0, 13, width, height};
+    config.crop = {0, 13, film_width, film_height};
     parts += render_layers(layers_camera, integrator, config);
     config.crop = {};
     config.passes = {1, 4};
     config.threads = 1;
     parts += render_layers(layers_camera, integrator, config);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) REQUIRE(std::equal(parts.sums(x, y).begin(), parts.sums(x, y).end(), layers.sums(x, y).begin()));
+    for (int y = 0; y < film_height; ++y)
+        for (int x = 0; x < film_width; ++x) REQUIRE(std::equal(parts.sums(x, y).begin(), parts.sums(x, y).end(), layers.sums(x, y).begin()));
 }
 
 TEST_CASE("the photon mapper's light parts add up to its image: direct, caustic (the glass ball's) and indirect")
@@ -117,13 +117,13 @@ TEST_CASE("the photon mapper's light parts add up to its image: direct, caustic 
     const auto scene = floor_scene();
     using S = std::remove_cvref_t<decltype(scene)>;
     const PhotonMapper<S> mapper(scene, {.tracing = {.global_photons = 20000, .caustic_photons = 20000, .seed = 2}, .gather_rays = 0});
-    const RenderConfig config{.width = width, .height = height, .spp = 2, .threads = 2, .progress = false};
+    const RenderConfig config{.width = film_width, .height = film_height, .spp = 2, .threads = 2, .progress = false};
     const Accumulation layers = render_layers(layers_camera, mapper, config);
     REQUIRE(layers.channels().size() == 20);
     const Accumulation image = render_sums(layers_camera, mapper, config);
     double direct = 0, caustic = 0, indirect = 0;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
+    for (int y = 0; y < film_height; ++y)
+        for (int x = 0; x < film_width; ++x) {
             REQUIRE(std::equal(image.sums(x, y).begin(), image.sums(x, y).end(), layers.sums(x, y).begin()));
             for (std::size_t c = 0; c < 3; ++c) {
                 const double d = channel(layers, x, y, 11 + c), k = channel(layers, x, y, 14 + c), i = channel(layers, x, y, 17 + c);

@@ -230,8 +230,8 @@ TEST_CASE("random scenes, hostile cameras: no sample of any integrator is NaN, i
             const Vec3<float> at = centre + point(4.0f);
             balls.items.emplace_back(S(at, size), Diffuse<float>{.albedo = {.color = Rgb<float>(uniform(0, 1), uniform(0, 1), uniform(0, 1))}});
             if (i % 4 == 0) balls.items.emplace_back(S(at, size), Diffuse<float>{}); // a coincident twin
-            const Vec3<float> half(size, i % 3 == 0 ? std::max(size * 1e-4f, far * 1e-5f) : size * uniform(0.01f, 1), size); // some a sheet
-            glass.items.emplace_back(Box<float>(at - half + Vec3<float>(1, 0, 0), at + half + Vec3<float>(1, 0, 0)),
+            const Vec3<float> half_size(size, i % 3 == 0 ? std::max(size * 1e-4f, far * 1e-5f) : size * uniform(0.01f, 1), size); // some a sheet
+            glass.items.emplace_back(Box<float>(at - half_size + Vec3<float>(1, 0, 0), at + half_size + Vec3<float>(1, 0, 0)),
                                      Dielectric<float>{.ior = uniform(1.0f, 2.5f)});
         }
         const auto cut = [&](const Quadric<float>& q, const Transform<float>& to_world) {
