@@ -43,7 +43,7 @@ if (( budget >= 0 )); then
 fi
 out="$root/build/fuzz"
 mkdir -p "$out"
-flags=(-std=c++20 -O1 -g1 -fsanitize=fuzzer,address,undefined -fno-sanitize=object-size -fno-sanitize-recover=all -DPRISM_ENABLE_ASSERTIONS
+flags=(-std=c++20 -O1 -g1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -DPRISM_ENABLE_ASSERTIONS
        -DGLM_FORCE_PURE -I"$root/include")
 # fuzz_one TARGET: build it, fuzz it, and leave a line (or a failure and its log) in
 # build/fuzz/TARGET.report.

@@ -156,10 +156,7 @@ if [[ $full -eq 1 ]]; then
 
   # Address + undefined-behaviour sanitizers (clang 19, libstdc++), assertions on, and the
   # portable paths: the exact sums in two 64-bit words instead of __int128, and the BVH's
-  # and triangle blocks' scalar twins instead of vector extensions. UBSan without
-  # object-size, whose estimate from __builtin_object_size of what an access may reach ASan
-  # checks exactly, byte by byte: it cost a quarter of the compile (photon_tracer.cpp 53 s
-  # with it, 40 s without, 35 s without pointer-overflow too, which stays). Line tables only (-g1:
+  # and triangle blocks' scalar twins instead of vector extensions. Line tables only (-g1:
   # a third less compile time than -g), and only the examples the tests run. The plain
   # build, as a user configures it: each test file alone, so a missing include fails here
   # (its test files cost 1350 s of compiler against 1020 s in batches of eight with
@@ -167,7 +164,7 @@ if [[ $full -eq 1 ]]; then
   sanitize="$root/build/sanitize"
   if step sanitize-build bash -c "cmake -S '$root' -B '$sanitize' -G Ninja ${launcher[*]} -DCMAKE_CXX_COMPILER=clang++-19 -DCMAKE_BUILD_TYPE=Debug -DPRISM_BUILD_BENCH=OFF \
         -DPRISM_ASSERTIONS=ON -DPRISM_WERROR=ON -DPRISM_TESTS_PCH=OFF -DPRISM_TESTS_UNITY=OFF -DPRISM_TESTS_FUZZ_CORPORA=OFF -DCMAKE_CXX_FLAGS_DEBUG=-g1 \
-        -DCMAKE_CXX_FLAGS='-O1 -fsanitize=address,undefined -fno-sanitize=object-size -fno-sanitize-recover=all -fno-omit-frame-pointer -DPRISM_PORTABLE_INT128 -DPRISM_NO_VECTOR_EXTENSIONS' &&
+        -DCMAKE_CXX_FLAGS='-O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -DPRISM_PORTABLE_INT128 -DPRISM_NO_VECTOR_EXTENSIONS' &&
         cmake --build '$sanitize' -j $jobs --target prism_tests cli_examples test_programs"; then
     ctest_step sanitize "$sanitize" -LE 'full|consumer'
     step sanitize-render "$sanitize/examples/cornell" --width 64 --height 64 --spp 2 --out "$sanitize/gallery" || fail sanitize-render
