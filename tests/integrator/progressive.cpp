@@ -223,22 +223,19 @@ TEST_CASE("progressive photon mapping in fog: the beam estimate's radius shrinks
 }
 
 /// Progressive photon mapping's volume furnace: the fog `air` in a box from -1 to 1 under
-/// radiance 1 from every direction; 16 passes of 250000 photons, the beam's radius
+/// radiance 1 from every direction; 16 passes of 125000 photons, the beam's radius
 /// shrinking from 0.15, over a 9 x 9 film of parallel rays across the box (an orthographic
 /// look: a narrow field of view from far off, toward (0, look_y, 0), `fov` degrees);
-/// every channel's mean within 1.5 % of 1. Over six photon seeds the densest channel's
-/// mean spread 0.40 % (a box of constant fog) and 0.25 % about a bias of +0.26 % (ground
-/// fog), the others' less: 1.5 % is 3.7 spreads or more. (It held 0.5 %, 1.2 spreads,
-/// by the seed; under a sanitizer an eighth of the photons, and 4.2 %: the spreads measured
-/// 1.07 % and 0.4 % there.)
+/// every channel's mean within `tolerance` of 1 (under a sanitizer an eighth of the
+/// photons, and the tolerance widened by sqrt(8): tests/effort.hpp).
 template <class Air>
-void check_progressive_volume_furnace(const Air& air, float look_y, float fov)
+void check_progressive_volume_furnace(const Air& air, float look_y, float fov, double tolerance)
 {
     using T = float;
     const auto sky = Scene{Lights{EnvironmentLight<T>{}}, Object{Sphere<T>({0, 1.2f, 0}, 1e-3f), Diffuse<T>{}}};
     using S = std::remove_cvref_t<decltype(sky)>;
     ProgressiveConfig<S, Air> config;
-    config.pass.tracing = {.global_photons = test::samples(250000), .caustic_photons = 0, .seed = 2};
+    config.pass.tracing = {.global_photons = test::samples(125000), .caustic_photons = 0, .seed = 2};
     config.pass.volume_radius = 0.15f;
     const Camera<T> camera{.position = {-200, 0, 0}, .look_at = {0, look_y, 0}, .up = {0, 1, 0}, .fov = fov};
     const Film image = render(camera, ProgressivePhotonMapper<S, Air>(sky, config, air), {.width = 9, .height = 9, .spp = 16, .threads = 2, .progress = false});
@@ -248,25 +245,28 @@ void check_progressive_volume_furnace(const Air& air, float look_y, float fov)
     for (int c = 0; c < 3; ++c) {
         CAPTURE(c);
         MESSAGE("channel ", c, ": ", sum[c] / 81);
-        CHECK(sum[c] / 81 == doctest::Approx(1).epsilon(test::resolved(0.015)).scale(0));
+        CHECK(sum[c] / 81 == doctest::Approx(1).epsilon(test::resolved(tolerance)).scale(0));
     }
 }
 
 TEST_CASE("progressive photon mapping's volume furnace: a box of fog that does not absorb, under a uniform sky, reads the sky's radiance")
 {
     // As the photon mapper's volume furnace (tests/integrator/photon_mapper.cpp): a box of
-    // coloured fog that only scatters. Measured: 1.0015, 1.0000, 1.0028.
+    // coloured fog that only scatters. Over photon seeds 2 to 5 the densest channel read
+    // 1.0113, 0.9931, 0.9995 and 0.9997, the others within 0.6 % of 1 (with twice the
+    // photons, twice the time, within 0.55 %): 2 % is held, about four times the spread.
     using Air = FilledAir<Fog<float>>;
-    check_progressive_volume_furnace(Air{.medium = {.scattering = {1.0f, 2.0f, 4.0f}, .phase = {.g = 0.6f}}, .region = {Vec3<float>(-1), Vec3<float>(1)}}, 0.0f, 0.35f);
+    check_progressive_volume_furnace(Air{.medium = {.scattering = {1.0f, 2.0f, 4.0f}, .phase = {.g = 0.6f}}, .region = {Vec3<float>(-1), Vec3<float>(1)}}, 0.0f, 0.35f, 0.02);
 }
 
 TEST_CASE("progressive photon mapping's volume furnace in ground fog of varying density reads the sky's radiance, to 1.5 %")
 {
     // The furnace above filled with the photon mapper's ground fog (density 2.5 at the
     // bottom, thinning by e every 0.5 up; tests/integrator/photon_mapper.cpp): photons fly by
-    // spectral tracking, camera rays see through residual ratio tracking. Measured over 16
-    // passes: 1.0003, 0.9997, 1.0014 (64 passes: 1.0015, 1.0007, 1.0014).
+    // spectral tracking, camera rays see through residual ratio tracking. Over photon seeds
+    // 2 to 5 every channel read within 0.55 % of 1 (with twice the photons, within 0.6 %):
+    // 1.5 % is held.
     const HeightFog<float> ground{.box = {Vec3<float>(-1), Vec3<float>(1)}, .floor = -1, .base = 2.5f, .scale_height = 0.5f};
     using Air = FilledAir<VaryingFog<HeightFog<float>>>;
-    check_progressive_volume_furnace(Air{.medium = VaryingFog(ground, Rgb<float>(0), Rgb<float>(0.5f, 1.0f, 2.0f), {.g = 0.6f})}, -0.1f, 0.45f);
+    check_progressive_volume_furnace(Air{.medium = VaryingFog(ground, Rgb<float>(0), Rgb<float>(0.5f, 1.0f, 2.0f), {.g = 0.6f})}, -0.1f, 0.45f, 0.015);
 }

@@ -23,18 +23,21 @@ prism::MicrofacetDielectric<double> frosted(double roughness, double eta)
 
 TEST_CASE("rough dielectric: sampling follows the pdf from either side, into denser and into thinner glass, weights are f cos / pdf")
 {
-    for (const double roughness : {0.2, 0.5, 0.9})
-        for (const double eta : {1.5, 1 / 1.5})
-            for (const double theta : {10.0, 50.0, 80.0})
-                for (const double side : {1.0, -1.0}) {
-                    CAPTURE(roughness);
-                    CAPTURE(eta);
-                    CAPTURE(theta);
-                    CAPTURE(side);
-                    Vec3<double> wo = test::polar(theta, 25);
-                    wo.z *= side;
-                    test::check_lobe_sampling(frosted(roughness, eta), wo, 5e-3, 20000);
-                }
+    // Every pair of the four factors' values meets in one of the 12 cases (three
+    // roughnesses, each with both glasses from both sides, the angle turning through
+    // three values), as in all 36 combinations, at a third of the time.
+    const double roughnesses[] = {0.2, 0.5, 0.9}, thetas[] = {10.0, 50.0, 80.0};
+    for (int r = 0; r < 3; ++r)
+        for (int e = 0; e < 4; ++e) {
+            const double roughness = roughnesses[r], eta = e < 2 ? 1.5 : 1 / 1.5, side = e % 2 == 0 ? 1.0 : -1.0, theta = thetas[(r + e) % 3];
+            CAPTURE(roughness);
+            CAPTURE(eta);
+            CAPTURE(theta);
+            CAPTURE(side);
+            Vec3<double> wo = test::polar(theta, 25);
+            wo.z *= side;
+            test::check_lobe_sampling(frosted(roughness, eta), wo, 5e-3, 20000);
+        }
 }
 
 TEST_CASE("rough dielectric: what the facets reflect and refract is at most what arrives, nearly all of it when smooth, and F of it reflected")
