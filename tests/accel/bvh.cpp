@@ -264,6 +264,45 @@ TEST_CASE_TEMPLATE("an any-hit query stops at its first hit and agrees with brut
     CHECK(blocked > 500);
 }
 
+TEST_CASE_TEMPLATE("a ray with a NaN or an infinity in its origin or direction visits nothing, by every query", Tree, Bvh<float, 4>, Bvh<float, 8>,
+                   Bvh<double, 4>)
+{
+    // Regression: an all-NaN ray passed every node's test, padding lanes (empty boxes,
+    // count 0) included, which the walk then took for the root: it pushed without end and
+    // wrote past its stack.
+    using T = typename Tree::scalar_type;
+    Pcg32 rng(3u, 3u);
+    const auto balls = random_balls<T>(300, rng, T(10), T(0.5));
+    const Tree bvh(boxes_of(balls));
+    const T nan = std::numeric_limits<T>::quiet_NaN(), inf = infinity<T>;
+    const Vec3<T> o{T(-20), T(0.1), T(0.2)}, d = normalize(Vec3<T>(1, T(0.01), T(0.02)));
+    int visits = 0;
+    const auto count = [&](auto&&...) {
+        ++visits;
+        return false;
+    };
+    const Ray<T> bad[] = {{Vec3<T>(nan), Vec3<T>(nan)}, {{nan, o.y, o.z}, d}, {o, {d.x, nan, d.z}}, {{-inf, o.y, o.z}, d}, {o, {inf, d.y, d.z}},
+                          {{o.x, inf, o.z}, d},           {o, {d.x, d.y, -inf}}};
+    for (const Ray<T>& ray : bad) {
+        CAPTURE(ray.origin.x);
+        CAPTURE(ray.direction.x);
+        for (const Interval<T> range : {Interval<T>{T(0), inf}, Interval<T>{T(0), T(100)}}) {
+            visits = 0;
+            Interval<T> r = range;
+            CHECK_FALSE(bvh.traverse(ray, r, count));
+            r = range;
+            CHECK_FALSE(bvh.any_in_leaf_order(ray, r, count));
+            r = range;
+            CHECK_FALSE(bvh.traverse_leaves(ray, r, count));
+            r = range;
+            CHECK_FALSE(bvh.any_leaf(ray, r, count));
+            CHECK(visits == 0);
+        }
+    }
+    // The same tree still answers a finite ray.
+    CHECK(by_bvh(bvh, balls, Ray<T>{o, d}, Interval<T>{T(0), inf}) == brute_force(balls, Ray<T>{o, d}, Interval<T>{T(0), inf}));
+}
+
 TEST_CASE_TEMPLATE("the tree's shape: every primitive once, children inside their parent, leaves within max_leaf_size and starting a block", Tree, Bvh<float, 4>,
                    Bvh<float, 8>)
 {

@@ -202,7 +202,10 @@ private:
     template <bool Nearest, class Visit>
     constexpr bool walk(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
     {
-        if (nodes_.empty()) return false;
+        // A ray with a NaN or an infinity in it meets nothing. (A NaN would pass every
+        // box test, the padding lanes' empty boxes too, and those lanes' zeros would be
+        // taken for the root: a walk without end.)
+        if (nodes_.empty() || !is_finite(ray.origin) || !is_finite(ray.direction)) return false;
         const detail::SlabRay<T> slab(ray, magnitude_);
         if (std::is_constant_evaluated()) return walk_with<Nearest>(slab, range, visit);
 #if PRISM_VECTOR_EXTENSIONS

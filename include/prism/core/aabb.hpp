@@ -7,6 +7,7 @@
 #include <prism/core/ray.hpp>
 
 #include <limits>
+#include <type_traits>
 
 namespace prism {
 
@@ -111,5 +112,47 @@ struct Aabb {
         return range;
     }
 };
+
+/// A ray to test a far shape with: the caller's ray with its origin moved along it toward
+/// the shape, and the caller's t where the moved ray starts (see brought_near).
+template <Scalar T>
+struct NearRay {
+    Ray<T> ray;        ///< the same direction; the origin the caller's ray at `shift`
+    double shift = 0;  ///< 0: the caller's ray as it is
+
+    /// The caller's range on the moved ray.
+    [[nodiscard]] Interval<T> range(const Interval<T>& r) const noexcept
+    {
+        if (shift == 0) return r;
+        return {T(double(r.min) - shift), T(double(r.max) - shift)};
+    }
+    /// A t on the moved ray as a t on the caller's.
+    [[nodiscard]] T back(T t) const noexcept { return shift == 0 ? t : T(shift + double(t)); }
+};
+
+/// A float ray from more than 64 times `box`'s diagonal away (and the box ahead), its
+/// origin moved along it, in double, to twice the diagonal before the box's centre: the same line, rounded once
+/// near the box. A shape's test subtracts the origin from its points, and from 10^6
+/// times a float shape's size the far origin's rounding alone is as large as the shape:
+/// a ray aimed across it could be found to cross it where the ray does not, or miss it.
+/// A ray near already, one the box lies behind or beside, a ray that is not finite, and a
+/// double ray are kept as they are (shift 0).
+template <Scalar T>
+[[nodiscard]] NearRay<T> brought_near(const Ray<T>& ray, const Aabb<T>& box) noexcept
+{
+    if constexpr (!std::is_same_v<T, float>) {
+        return {ray};
+    } else {
+        // Most rays start near what they test: a test in float first (the origin within 64
+        // diagonals of the centre, or a NaN anywhere, keeps the ray).
+        const Vec3<T> half = (box.hi - box.lo) * T(0.5), away = ray.origin - (box.lo + box.hi) * T(0.5);
+        if (!(dot(away, away) > T(16384) * dot(half, half))) return {ray};
+        const Vec3<double> o(ray.origin), d(ray.direction), lo(box.lo), hi(box.hi);
+        const double speed = length(d), size = length(hi - lo);
+        const double shift = (dot((lo + hi) * 0.5 - o, d) / speed - 2 * size) / speed;
+        if (!(shift * speed > 32 * size) || !(shift < double(std::numeric_limits<T>::max()))) return {ray};
+        return {Ray<T>{Vec3<T>(o + shift * d), ray.direction}, shift};
+    }
+}
 
 } // namespace prism

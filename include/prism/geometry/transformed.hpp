@@ -54,11 +54,12 @@ public:
     {
         // A ray that cannot come near the bounds cannot cross the shape.
         if (bounded_ && !bounds_.reached_after(ray, range.min)) return {};
-        const auto [local, dt] = to_local(ray);
+        const LocalRay local = to_local(ray);
+        const T dt = local.dt;
         // The end of the range is carried over two float steps wide and applied again to
         // the world t: the result keeps every crossing before range.max however the
         // subtraction rounds, so a query over a shorter range finds the same first one.
-        Crossings<T, max_crossings> out = shape_.template crossings<Surface>(local, {range.min, next_float_up(next_float_up(range.max - dt))});
+        Crossings<T, max_crossings> out = shape_.template crossings<Surface>(local.ray, local.range(range));
         std::size_t kept = 0;
         for (std::size_t k = 0; k < out.count; ++k) {
             out.items[k].t += dt;
@@ -96,10 +97,10 @@ public:
         requires HasHintedSurface<S>
     {
         if (bounded_ && !bounds_.reached_after(ray, range.min)) return std::nullopt;
-        const auto [local, dt] = to_local(ray);
-        std::optional<Crossing<T>> c = shape_.surface_crossing(local, {range.min, next_float_up(next_float_up(range.max - dt))}, hint);
+        const LocalRay local = to_local(ray);
+        std::optional<Crossing<T>> c = shape_.surface_crossing(local.ray, local.range(range), hint);
         if (!c) return c;
-        c->t += dt;
+        c->t += local.dt;
         if (!(c->t < range.max)) return std::nullopt;
         to_world(*c);
         return c;
@@ -124,28 +125,40 @@ private:
     [[nodiscard]] T first_crossing_with(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
     {
         if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
-        const auto [local, dt] = to_local(ray);
-        const T t = prism::first_crossing(shape_, local, {range.min, next_float_up(next_float_up(range.max - dt))}, hint) + dt;
+        const LocalRay local = to_local(ray);
+        const T t = prism::first_crossing(shape_, local.ray, local.range(range), hint) + local.dt;
         return t < range.max ? t : infinity<T>;
     }
 
     struct LocalRay {
         Ray<T> ray;
-        T dt; ///< local t + dt = world t
+        T dt;       ///< local t + dt = world t
+        T moved{0}; ///< how far along the world ray its origin was brought before the transform
+
+        /// The world range in the shape's coordinates. (Its start not moved by the
+        /// transform's own step past its rounding: no crossing of the shape lies there.)
+        [[nodiscard]] Interval<T> range(const Interval<T>& world) const noexcept
+        {
+            return {world.min - moved, next_float_up(next_float_up(world.max - dt))};
+        }
     };
 
     /// The ray in the shape's coordinates. The new origin is off by the rounding of that
     /// transform, which can be more than a spawned ray's offset from the surface it
     /// leaves: it is moved forward along the ray past that error, and t measured from
     /// there (pbrt-v4, Transform::ApplyInverse(Ray)).
-    [[nodiscard]] LocalRay to_local(const Ray<T>& ray) const noexcept
+    [[nodiscard]] LocalRay to_local(const Ray<T>& world) const noexcept
     {
+        // A float ray from far off is first brought near the shape's box (core/aabb.hpp):
+        // the transform's rounding of a far origin is as large as the shape.
+        const NearRay<T> near = bounded_ ? brought_near(world, bounds_) : NearRay<T>{world};
+        const Ray<T>& ray = near.ray;
         Ray<T> local{to_world_.inverse_point(ray.origin), to_world_.inverse_vector(ray.direction)};
         const T length2 = length_squared(local.direction);
         T dt = length2 > T(0) ? dot(abs(local.direction), to_world_.inverse_point_error(ray.origin)) / length2 : T(0);
         if (!is_finite(dt)) dt = T(0);
         local.origin += dt * local.direction;
-        return {local, dt};
+        return {local, T(near.shift + double(dt)), T(near.shift)};
     }
 
     /// A crossing found in the shape's coordinates, carried to the world's.

@@ -97,7 +97,11 @@ template <int Kz, Scalar T>
     const T delta_e = T(2) * (gamma<T>(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
     const T max_e = max_component(Vec3<T>(std::abs(e0), std::abs(e1), std::abs(e2)));
     const T delta_t = T(3) * (gamma<T>(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * std::abs(inv_det);
-    if (!(t > delta_t)) return false;
+    // That bound grows as the square of the distance (delta_e as max_z), and from 5 10^4
+    // times a triangle's size it refuses hits far in front. A triangle whose every corner
+    // is in front by more than z's rounding is hit at t > 0 whatever t's own rounding: a
+    // hit inside it lies between its corners' z, which are the ray's t there.
+    if (!(t > delta_t) && !(std::min(std::min(z0, z1), z2) > delta_z)) return false;
     // det is the sheared normal's z, dot(direction, normal) / direction[kz] (the
     // permutation is cyclic, the shear of determinant 1): it enters where that is < 0.
     out = {t, {e0 * inv_det, e1 * inv_det, e2 * inv_det}, (det < T(0)) != (ray.sz < T(0))};

@@ -221,8 +221,11 @@ public:
     }
 
     /// first_crossing, keeping the triangle hit and where (for surface_crossing).
-    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
+    [[nodiscard]] T first_crossing(const Ray<T>& far_ray, Interval<T> far_range, SurfaceHint<T>& hint) const noexcept
     {
+        const NearRay<T> near = brought_near(far_ray, data_->bounds);
+        const Ray<T>& ray = near.ray;
+        Interval<T> range = near.range(far_range);
         const detail::ShearedRay<T> sheared(ray);
         detail::TriangleHit<T> nearest{infinity<T>, {}, false};
         std::uint32_t triangle = 0;
@@ -234,8 +237,10 @@ public:
             });
             return false;
         });
-        if (nearest.t < infinity<T>) hint = {triangle, nearest.t, nearest.b, nearest.entering};
-        return nearest.t;
+        if (!(nearest.t < infinity<T>)) return infinity<T>;
+        const T t = near.back(nearest.t);
+        hint = {triangle, t, nearest.b, nearest.entering};
+        return t;
     }
 
     /// crossings(ray, range).front(), from the hit first_crossing kept (the same ray
@@ -253,8 +258,11 @@ public:
     }
 
     /// Whether any crossing lies strictly inside `range` (a shadow ray's query).
-    [[nodiscard]] bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    [[nodiscard]] bool any_crossing(const Ray<T>& far_ray, Interval<T> far_range) const noexcept
     {
+        const NearRay<T> near = brought_near(far_ray, data_->bounds);
+        const Ray<T>& ray = near.ray;
+        Interval<T> range = near.range(far_range);
         const detail::ShearedRay<T> sheared(ray);
         return data_->bvh.any_leaf(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) {
             return for_each_maybe_hit(sheared, first, count, [&](std::uint32_t, const std::array<Vec3<T>, 3>& tri) {
@@ -266,8 +274,11 @@ public:
 
     /// Every crossing of `ray` within `range` (at most N), sorted, by the watertight ray-triangle test.
     template <bool Surface = true>
-    [[nodiscard]] Crossings<T, N> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
+    [[nodiscard]] Crossings<T, N> crossings(const Ray<T>& far_ray, Interval<T> far_range) const noexcept
     {
+        const NearRay<T> near = brought_near(far_ray, data_->bounds);
+        const Ray<T>& ray = near.ray;
+        Interval<T> range = near.range(far_range);
         Crossings<T, N> out;
         const Hits hits = gather(ray, range);
         const bool closed = data_->closed;
@@ -296,6 +307,8 @@ public:
             }
             i = end;
         }
+        if (near.shift != 0)
+            for (std::size_t k = 0; k < out.count; ++k) out.items[k].t = near.back(out.items[k].t);
         return out;
     }
 
