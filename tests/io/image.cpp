@@ -341,6 +341,32 @@ std::string hdr_message(const fs::path& path)
 
 } // namespace
 
+TEST_CASE("the readers of compressed images refuse more pixels than ReadLimits::max_pixels before decoding, naming the limit")
+{
+    // Regression: a 1-bit PNG of 2 KB claiming 16 million pixels (paid for by deflate's
+    // 1032 to 1 and eight pixels a byte) cost 841 MB as a texture; one of 32 KB ran past
+    // 4 GB. The limit is checked against the header, before anything is allocated.
+    const fs::path dir = scratch_folder("max-pixels");
+    prism::Film film(64, 32);
+    prism::write_png(film, dir / "p.png");
+    std::vector<prism::Rgb<float>> pixels(64 * 32, prism::Rgb<float>(0.5f));
+    write_bytes(dir / "p.hdr", hdr_bytes(64, 32, pixels, true));
+    for (const char* name : {"p.png", "p.hdr"}) {
+        CAPTURE(name);
+        const fs::path path = dir / name;
+        const auto read = [&](std::uint64_t max_pixels) {
+            const prism::ReadLimits limits{.max_pixels = max_pixels};
+            const std::string extension = path.extension().string();
+            if (extension == ".png") return prism::read_png(path, limits).width();
+            return prism::read_hdr(path, limits).width();
+        };
+        CHECK(read(2048) == 64);
+        CHECK_THROWS_WITH_AS((void)read(2047), doctest::Contains("64 x 32 pixels, more than the limit of 2047 (ReadLimits::max_pixels)"), std::runtime_error);
+    }
+    CHECK(prism::ReadLimits{}.max_pixels == std::uint64_t(1) << 26);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("read_hdr reads Radiance RGBE pixels exactly, flat and run-length encoded, rows from the top")
 {
     const fs::path dir = scratch_folder("hdr-read");

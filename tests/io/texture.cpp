@@ -87,6 +87,11 @@ TEST_CASE("a baseline JPEG as a texture, within JPEG's own loss; progressive and
     progressive[sof + 1] = char(0xc2);
     texture_bytes_to(dir / "progressive.jpg", progressive);
     CHECK_THROWS_WITH_AS((void)prism::read_jpeg(dir / "progressive.jpg"), doctest::Contains("progressive JPEG"), std::runtime_error);
+    // The limit on pixels (ReadLimits::max_pixels), through load_texture as a .mtl's
+    // map_Kd reaches it: the ramp's 256 x 1, and one fewer allowed.
+    CHECK_THROWS_WITH_AS((void)prism::load_texture(dir / "ramp.jpg", {.limits = {.max_pixels = 255}}),
+                         doctest::Contains("256 x 1 pixels, more than the limit of 255 (ReadLimits::max_pixels)"), std::runtime_error);
+    CHECK(prism::load_texture(dir / "ramp.jpg", {.limits = {.max_pixels = 256}}).width() == 256);
     texture_bytes_to(dir / "cut.jpg", whole.substr(0, sof + 4));
     CHECK_THROWS_WITH_AS((void)prism::read_jpeg(dir / "cut.jpg"), doctest::Contains("it is truncated"), std::runtime_error);
     texture_bytes_to(dir / "torn.jpg", whole.substr(0, whole.size() - 200));

@@ -254,6 +254,7 @@ try {
     if (raw > 1032.0 * double(bytes.size()) + 1024.0)
         file.fail("its header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than its " + std::to_string(bytes.size()) +
                   " bytes can hold compressed");
+    file.check_pixels(width, height, "its header");
     bytes = detail::checked_png_chunks(bytes, file);
     return detail::stb_decode8(bytes, file);
 } catch (const allocation_error&) {
@@ -304,6 +305,7 @@ try {
             if (double(width) * double(height) > 256.0 * double(bytes.size()) + 65536.0)
                 file.fail("its frame header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than its " +
                           std::to_string(bytes.size()) + " bytes can hold");
+            file.check_pixels(width, height, "its frame header");
             frame = true;
         }
         if (marker == 0xda) {
@@ -417,6 +419,7 @@ try {
     }
     if (at != bytes.size()) file.fail(std::to_string(bytes.size() - at) + " bytes follow its last row");
     int w = 0, h = 0, channels = 0;
+    file.check_pixels(width, height, "its size line");
     float* data = stbi_loadf_from_memory(bytes.data(), int(std::min<std::size_t>(bytes.size(), INT32_MAX)), &w, &h, &channels, 3);
     if (data == nullptr) {
         const char* reason = stbi_failure_reason();

@@ -23,10 +23,14 @@
 
 namespace prism {
 
-/// What a reader accepts at most from one file: a guard against endless streams, checked
-/// before reading when the file's size is known and as bytes arrive otherwise.
+/// What a reader accepts at most from one file: its bytes, a guard against endless streams
+/// checked before reading when the file's size is known and as bytes arrive otherwise; and
+/// a compressed image's pixels (PNG, JPEG, HDR), checked against its header before
+/// anything is decoded: deflate expands up to 1032 times, and a 1-bit PNG of 2 KB decodes
+/// to 16 million pixels, 800 MB as a float texture. (A PFM's pixels are its bytes.)
 struct ReadLimits {
-    std::uint64_t max_bytes = std::uint64_t(1) << 32; ///< 4 GiB
+    std::uint64_t max_bytes = std::uint64_t(1) << 32;  ///< 4 GiB
+    std::uint64_t max_pixels = std::uint64_t(1) << 26; ///< 67 million (8192 x 8192): 800 MB as floats, 3.2 GB through a texture
 };
 
 namespace detail {
@@ -137,6 +141,16 @@ public:
             if (position_ > limits_.max_bytes) fail("it is longer than the limit of " + std::to_string(limits_.max_bytes) + " bytes");
             if (got < chunk) return out;
         }
+    }
+
+    /// Fails unless `width` x `height` pixels, as `source` gives them, are within the
+    /// limit on pixels (ReadLimits::max_pixels).
+    void check_pixels(std::uint64_t width, std::uint64_t height, const std::string& source) const
+    {
+        const auto pixels = checked_product(width, height);
+        if (!pixels || *pixels > limits_.max_pixels)
+            fail(source + " says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than the limit of " +
+                 std::to_string(limits_.max_pixels) + " (ReadLimits::max_pixels)");
     }
 
     /// Throws std::runtime_error: "cannot read <what> '<path>': <reason>".
