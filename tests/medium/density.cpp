@@ -98,6 +98,13 @@ TEST_CASE("a DensityGrid refuses, naming it, too few points, the wrong number of
     CHECK(message(2, 2, 2, {{0, 0, 0}, {1, 0, 1}}, std::vector<float>(8, 1.0f)).find("box") != std::string::npos);
     CHECK(message(2, 2, 2, Aabb<float>::universe(), std::vector<float>(8, 1.0f)).find("box") != std::string::npos);
     CHECK(message(2, 2, 2, box, std::vector<float>(8, 1.0f)) == "accepted");
+    // Regression: a box so thin that its lattice's spacing is not a float (points per
+    // unit length infinite) turned a NaN into an int at every lookup; one so wide that
+    // hi - lo overflows put every point in the first cell.
+    const std::string thin = message(3, 2, 2, {{0, 0, 0}, {1e-44f, 1, 1}}, std::vector<float>(12, 1.0f));
+    CHECK(thin.find("DensityGrid box is too small or too large for its 3 x 2 x 2 points on axis 0") != std::string::npos);
+    CHECK(message(2, 2, 2, {{0, -3e38f, 0}, {1, 3e38f, 1}}, std::vector<float>(8, 1.0f)).find("on axis 1") != std::string::npos);
+    CHECK(message(2, 2, 2, {{0, 0, 0}, {1e-30f, 1e-30f, 1e-30f}}, std::vector<float>(8, 1.0f)) == "accepted");
 }
 
 TEST_CASE("HeightFog: base e^{-(y - floor) / H} in its box, 0 outside; max_over bounds it on any box; bad parameters refused")

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <concepts>
+#include <limits>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -64,8 +65,16 @@ public:
             if (!(std::isfinite(values[i]) && values[i] >= 0.0f))
                 detail::throw_invalid("DensityGrid value ", i, " (x ", i % std::size_t(nx), ", y ", i / std::size_t(nx) % std::size_t(ny), ", z ",
                                       i / (std::size_t(nx) * std::size_t(ny)), ") must be finite and >= 0, got ", values[i]);
+        for (int a = 0; a < 3; ++a) {
+            // Lattice cells per unit length, finite and normal, and the box's width a finite
+            // number: a lookup turns (p - lo) times it into a cell index.
+            const T width = box_.hi[a] - box_.lo[a];
+            scale_[a] = T(n_[a] - 1) / width;
+            if (!(is_finite(width) && is_finite(scale_[a]) && scale_[a] >= std::numeric_limits<T>::min()))
+                detail::throw_invalid("DensityGrid box is too small or too large for its ", nx, " x ", ny, " x ", nz, " points on axis ", a, ": ",
+                                      box_.lo[a], " to ", box_.hi[a]);
+        }
         values_ = std::make_shared<const std::vector<float>>(std::move(values));
-        for (int a = 0; a < 3; ++a) scale_[a] = T(n_[a] - 1) / (box_.hi[a] - box_.lo[a]);
     }
 
     /// The density at p: trilinear between the lattice's points, 0 outside the box.
