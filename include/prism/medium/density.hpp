@@ -18,8 +18,8 @@
 #include <algorithm>
 #include <cmath>
 #include <concepts>
-#include <limits>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <vector>
 
