@@ -6,8 +6,12 @@
 
 #include <cmath>
 
+#include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <limits>
+#include <string>
+#include <unistd.h>
 
 using namespace prism;
 
@@ -43,6 +47,50 @@ TEST_CASE("the same bits for 1, 2 and 8 threads")
     const Film other = render(camera, integrator, config);
     CHECK(std::memcmp(one.pixels().data(), other.pixels().data(), one.pixels().size() * sizeof(one.pixels()[0])) != 0);
     CHECK(one.rejected() == 0);
+}
+
+namespace {
+
+/// What `run` writes to stderr (file descriptor 2, as fprintf(stderr) reaches it).
+template <class Run>
+std::string stderr_of(Run&& run)
+{
+    char name[] = "/tmp/prism-stderr-XXXXXX";
+    const int file = mkstemp(name);
+    REQUIRE(file >= 0);
+    std::fflush(stderr);
+    const int saved = dup(2);
+    dup2(file, 2);
+    run();
+    std::fflush(stderr);
+    dup2(saved, 2);
+    close(saved);
+    std::string text;
+    char buffer[4096];
+    lseek(file, 0, SEEK_SET);
+    for (ssize_t n; (n = read(file, buffer, sizeof buffer)) > 0;) text.append(buffer, std::size_t(n));
+    close(file);
+    std::remove(name);
+    return text;
+}
+
+} // namespace
+
+TEST_CASE("a render that rejects sample values counts them in the film and, reporting progress, says so on stderr")
+{
+    // Regression: a light bright enough that its samples pass 2^40 rendered dark, each
+    // sample only counted in Film::rejected(). A point light of 10^15 over a floor.
+    const Scene scene{Lights{PointLight<float>{.position = {0, 1, 0}, .intensity = Rgb<float>(1e15f)}}, Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{}}};
+    const Whitted integrator(scene);
+    const Camera<float> camera{.position = {0, 2, 3}, .look_at = {0, 0, 0}, .fov = 30};
+    Film film(1, 1);
+    const std::string said = stderr_of([&] { film = render(camera, integrator, {.width = 8, .height = 8, .spp = 1, .threads = 2}); });
+    CHECK(film.rejected() > 0);
+    CHECK(said.find("prism: " + std::to_string(film.rejected()) + " sample values were rejected") != std::string::npos);
+    // Without progress reports, the count alone.
+    const std::string quiet = stderr_of([&] { film = render(camera, integrator, {.width = 8, .height = 8, .spp = 1, .threads = 2, .progress = false}); });
+    CHECK(film.rejected() > 0);
+    CHECK(quiet.empty());
 }
 
 TEST_CASE("stratified sub-pixel samples cover the pixel once per stratum")

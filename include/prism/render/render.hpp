@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <concepts>
@@ -170,6 +171,7 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
     // Report progress while waiting, once the render has taken more than a second.
     const auto start = std::chrono::steady_clock::now();
     bool reported = false;
+    std::atomic<std::size_t> rejected_values{0};
     const auto progress = [&](std::size_t tiles_done) {
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (config.progress && seconds > 1.0) {
@@ -199,9 +201,14 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
                     }
                 }
                 store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
+                if (rejected != 0) rejected_values.fetch_add(rejected, std::memory_order_relaxed);
             }
     }, progress);
     if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
+    // Light the film could not hold is said, not only counted (Film::rejected()).
+    if (config.progress && rejected_values.load() != 0)
+        std::fprintf(stderr, "prism: %zu sample values were rejected (negative, NaN, infinite, or 2^40 = 1.1e12 or more): their light is missing from the image\n",
+                     rejected_values.load());
 }
 
 } // namespace detail
@@ -229,7 +236,11 @@ void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& came
     } else {
         (void)detail::render_passes(config);
         (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
+        const std::size_t before = sums.rejected();
         integrator.add_passes(sums, camera, config);
+        if (config.progress && sums.rejected() != before)
+            std::fprintf(stderr, "prism: %zu sample values were rejected (negative, NaN, infinite, or 2^40 = 1.1e12 or more): their light is missing from the image\n",
+                         sums.rejected() - before);
     }
 }
 
