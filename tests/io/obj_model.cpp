@@ -129,6 +129,9 @@ TEST_CASE("a .mtl whose Kd + Ks exceed 1 is scaled down with a note; a bad state
     // number were dropped.
     refused("newmtl painted\nillum 111111111117\n", "line 2: 'illum' must be a whole number from 0 to 10");
     refused("newmtl painted\nNi 1.3 m\n", "line 2: 'Ni' has 'm' after its number");
+    // Regression: Ns 3e38 and Ni 1e-45 passed, and their samples were NaN.
+    refused("newmtl painted\nNs 3e38\n", "line 2: 'Ns' must be from 0 to 1e6 (a sharper highlight is a mirror), got 3e+38");
+    refused("newmtl painted\nNi 1e-45\n", "line 2: 'Ni' must be an index of refraction from 0.01 to 100, got 1e-45");
     refused("newmtl painted now\n", "line 1: the material name 'painted now...' has a space");
     refused("newmtl painted\n", "window_glass"); // a usemtl naming no material
     fs::remove(dir / "parts.mtl");

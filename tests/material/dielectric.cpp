@@ -28,6 +28,12 @@ TEST_CASE("bad input names the parameter")
     CHECK_THROWS_WITH_AS(prism::Object(s, Dielectric<float>{.ior = 0}), doctest::Contains("Dielectric ior"), std::invalid_argument);
     CHECK_THROWS_AS(prism::Object(s, Dielectric<float>{.ior = -1.5f}), std::invalid_argument);
     CHECK_THROWS_AS(prism::Object(s, Dielectric<float>{.ior = std::nanf("")}), std::invalid_argument);
+    // Regression: an index of 1e-45 (a .mtl's Ni) passed, and refraction gave NaN.
+    CHECK_THROWS_WITH_AS(prism::Object(s, Dielectric<float>{.ior = 1e-45f}), doctest::Contains("Dielectric ior must be an index of refraction from 0.01 to 100"),
+                         std::invalid_argument);
+    CHECK_THROWS_AS(prism::Object(s, Dielectric<float>{.ior = 101}), std::invalid_argument);
+    CHECK_NOTHROW(prism::Object(s, Dielectric<float>{.ior = 100}));
+    CHECK_NOTHROW(prism::Object(s, Dielectric<float>{.ior = 0.01f}));
     CHECK_THROWS_WITH_AS(prism::Object(s, Dielectric<float>{.interior = {.absorption = {0, -1, 0}}}), doctest::Contains("absorption"),
                          std::invalid_argument);
 }

@@ -39,6 +39,12 @@ TEST_CASE("modified Phong: parameters that would create energy are refused, nami
     CHECK_THROWS_WITH_AS(bright.validate(), doctest::Contains("Phong diffuse + specular"), std::invalid_argument);
     const prism::Phong<float> negative{.exponent = -1};
     CHECK_THROWS_WITH_AS(negative.validate(), doctest::Contains("Phong exponent"), std::invalid_argument);
+    // Regression: an exponent of 10^9 (or a .mtl's Ns 3e38) passed, and its highlight,
+    // narrower than float directions resolve, vanished (or its samples were NaN).
+    const prism::Phong<float> needle{.exponent = 1e9f};
+    CHECK_THROWS_WITH_AS(needle.validate(), doctest::Contains("Phong exponent must be from 0 to 1e6 (a sharper lobe is a mirror: use Mirror), got 1e+09"),
+                         std::invalid_argument);
+    CHECK_NOTHROW(prism::Phong<float>{.exponent = 1e6f}.validate());
     const prism::Phong<float> fine{.diffuse = {.color = prism::Rgb<float>(0.5f)}, .specular = prism::Rgb<float>(0.5f)};
     CHECK_NOTHROW(fine.validate());
 }

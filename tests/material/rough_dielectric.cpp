@@ -130,4 +130,6 @@ TEST_CASE("rough dielectric at roughness 0: Dielectric's interface, reflecting b
     CHECK(tir->wi.z < 0);
     const prism::RoughDielectric<float> bad{.roughness = 2.0f};
     CHECK_THROWS_WITH_AS(bad.validate(), doctest::Contains("RoughDielectric roughness"), std::invalid_argument);
+    const prism::RoughDielectric<float> tiny{.ior = 1e-45f};
+    CHECK_THROWS_WITH_AS(tiny.validate(), doctest::Contains("RoughDielectric ior must be an index of refraction from 0.01 to 100"), std::invalid_argument);
 }

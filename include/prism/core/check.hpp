@@ -108,6 +108,29 @@ constexpr void require_positive(std::string_view name, T value)
     if (!(is_finite(value) && value > T(0))) throw_invalid(name, " must be finite and > 0, got ", value);
 }
 
+/// The indices of refraction prism refracts by: 0.01 to 100. (Glass, water, diamond and
+/// germanium lie between 1 and 4; at 10^-45 the relative index 1 / n is not a float and
+/// refraction gives NaN.)
+inline constexpr double least_index = 0.01, greatest_index = 100.0;
+
+template <Scalar T>
+constexpr void require_index(std::string_view name, T value)
+{
+    if (!(value >= T(least_index) && value <= T(greatest_index))) throw_invalid(name, " must be an index of refraction from 0.01 to 100, got ", value);
+}
+
+/// The sharpest cosine-power lobe prism draws: cos^n with n up to 10^6 (a lobe about 0.1
+/// degrees wide). A sharper one is narrower than a float's steps of the cosine near 1
+/// (6e-8) resolve, and its highlight would vanish: that is a mirror.
+inline constexpr double greatest_lobe_exponent = 1e6;
+
+template <Scalar T>
+constexpr void require_lobe_exponent(std::string_view name, T value)
+{
+    if (!(value >= T(0) && value <= T(greatest_lobe_exponent)))
+        throw_invalid(name, " must be from 0 to 1e6 (a sharper lobe is a mirror: use Mirror), got ", value);
+}
+
 template <Scalar T>
 constexpr void require_non_negative(std::string_view name, T value)
 {

@@ -23,6 +23,7 @@
 // Opt-in, as io/mesh.hpp is (tinyobjloader) and io/texture.hpp (stb_image).
 #pragma once
 
+#include <prism/core/check.hpp>
 #include <prism/geometry/triangle_mesh.hpp>
 #include <prism/io/mesh.hpp>
 #include <prism/io/texture.hpp>
@@ -33,6 +34,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -187,8 +189,15 @@ inline std::vector<MtlMaterial> read_mtl(const std::filesystem::path& path, Read
                  keyword == "Pc" || keyword == "Pcr" || keyword == "aniso" || keyword == "anisor")
             notes.push_back(path.filename().string() + " " + where + "'" + keyword + "' of material '" + m.name + "' is not read");
         else fail("'" + keyword.substr(0, 32) + "' is not a .mtl statement prism knows");
-        if (m.ns < 0) fail("'Ns' must not be negative, got " + std::to_string(m.ns));
-        if (!(m.ni > 0)) fail("'Ni' must be positive, got " + std::to_string(m.ni));
+        // (std::to_string's six decimals would show 1e-45 as 0.)
+        const auto shown = [](double v) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%g", v);
+            return std::string(text);
+        };
+        if (!(m.ns >= 0 && m.ns <= detail::greatest_lobe_exponent))
+            fail("'Ns' must be from 0 to 1e6 (a sharper highlight is a mirror), got " + shown(m.ns));
+        if (!(m.ni >= detail::least_index && m.ni <= detail::greatest_index)) fail("'Ni' must be an index of refraction from 0.01 to 100, got " + shown(m.ni));
         if (m.d < 0 || m.d > 1) fail("'d' (or 1 - Tr) must be in [0, 1], got " + std::to_string(m.d));
     }
     return out;

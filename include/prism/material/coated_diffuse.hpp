@@ -45,7 +45,8 @@ struct Coat {
     /// Throws std::invalid_argument, naming the parameter, for an index <= 1 or a roughness outside [0, 1].
     constexpr void validate() const
     {
-        if (!(ior > T(1) && ior < infinity<T>)) detail::throw_invalid("Coat ior must be finite and > 1, got ", ior);
+        if (!(ior > T(1))) detail::throw_invalid("Coat ior must be finite and > 1, got ", ior);
+        detail::require_index("Coat ior", ior);
         if (!(roughness >= T(0) && roughness <= T(1))) detail::throw_invalid("Coat roughness must be in [0, 1], got ", roughness);
     }
 };

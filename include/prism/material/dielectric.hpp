@@ -50,7 +50,7 @@ struct Dielectric {
     /// Throws std::invalid_argument, naming the parameter, for ior <= 0, a bad interior, or a negative kr or kt.
     constexpr void validate() const
     {
-        detail::require_positive("Dielectric ior", ior);
+        detail::require_index("Dielectric ior", ior);
         interior.validate();
         detail::require_non_negative("Dielectric kr", kr);
         detail::require_non_negative("Dielectric kt", kt);

@@ -72,6 +72,7 @@ struct Diffuse {
         detail::require_non_negative("Diffuse ka", ka);
         detail::require_non_negative("Diffuse phong", phong);
         detail::require_positive("Diffuse phong_size", phong_size);
+        detail::require_lobe_exponent("Diffuse phong_size", phong_size);
     }
 };
 

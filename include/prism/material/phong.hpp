@@ -139,7 +139,7 @@ struct Phong {
         diffuse.validate();
         detail::require_non_negative("Phong specular", specular);
         if (!(max_component(specular) <= T(1))) detail::throw_invalid("Phong specular must be <= 1 in every channel, got ", detail::describe(specular));
-        detail::require_non_negative("Phong exponent", exponent);
+        detail::require_lobe_exponent("Phong exponent", exponent);
         if constexpr (std::same_as<Albedo, Solid<T>>) {
             if (!(max_component(diffuse.color + specular) <= T(1)))
                 detail::throw_invalid("Phong diffuse + specular must be <= 1 in every channel (energy), got ", detail::describe(diffuse.color + specular));

@@ -198,7 +198,7 @@ struct RoughDielectric {
     /// Throws std::invalid_argument, naming the parameter, for ior <= 0, a roughness outside [0, 1] or a bad interior.
     constexpr void validate() const
     {
-        detail::require_positive("RoughDielectric ior", ior);
+        detail::require_index("RoughDielectric ior", ior);
         validate_roughness(roughness, "RoughDielectric");
         interior.validate();
     }
