@@ -409,6 +409,11 @@ TEST_CASE("read_hdr refuses what stb_image would misread or allocate for unpaid,
     CHECK(refused("magic.hdr", "#?RADIANCX\n" + good.substr(11)).find("not a Radiance HDR file") != std::string::npos);
     CHECK(hdr_message("/dev/zero").find("not a Radiance HDR file") != std::string::npos);
     CHECK(refused("format.hdr", hdr_bytes(40, 2, pixels, true, "#?RADIANCE\nFORMAT=32-bit_rle_xyze\n\n")).find("FORMAT=32-bit_rle_xyze (line 2) is not") != std::string::npos);
+    // Regression: a header line ending in "\r\n" was quoted with its carriage return,
+    // which hid the start of the message on a terminal.
+    const std::string crlf_format = refused("crlf-format.hdr", hdr_bytes(40, 2, pixels, true, "#?RADIANCE\r\nFORMAT=32-bit_rle_rgbe\r\n\r\n"));
+    CHECK(crlf_format.find("its FORMAT=32-bit_rle_rgbe\\r (line 2) is not FORMAT=32-bit_rle_rgbe") != std::string::npos);
+    CHECK(crlf_format.find('\r') == std::string::npos);
     CHECK(refused("noformat.hdr", hdr_bytes(40, 2, pixels, true, "#?RADIANCE\nEXPOSURE=1\n\n")).find("no FORMAT=32-bit_rle_rgbe line") != std::string::npos);
     std::string flipped = good;
     flipped.replace(flipped.find("-Y 2 +X 40"), 10, "+Y 2 +X 40");

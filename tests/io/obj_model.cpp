@@ -99,6 +99,29 @@ Ni 1.33
     fs::remove_all(dir);
 }
 
+TEST_CASE("an OBJ's mtllib names a file in its folder or below, not an absolute path or one climbing out, unless ObjOptions::any_path")
+{
+    const fs::path dir = obj_scratch("paths");
+    fs::create_directories(dir / "model" / "materials");
+    obj_write_text(dir / "outside.mtl", "newmtl painted\nKd 0.5 0.5 0.5\nnewmtl window_glass\nd 0.5\n");
+    obj_write_text(dir / "model" / "materials" / "parts.mtl", "newmtl painted\nKd 0.5 0.5 0.5\nnewmtl window_glass\nd 0.5\n");
+    const std::string body = std::string(obj_two_squares).substr(std::string(obj_two_squares).find('\n') + 1);
+    const auto model_with = [&](const std::string& mtllib) {
+        obj_write_text(dir / "model" / "model.obj", "mtllib " + mtllib + "\n" + body);
+        return dir / "model" / "model.obj";
+    };
+    CHECK(prism::load_obj_model<float>(model_with("materials/parts.mtl")).opaque.items.size() == 2);
+    CHECK_THROWS_WITH_AS((void)prism::load_obj_model<float>(model_with("../outside.mtl")),
+                         doctest::Contains("'mtllib' names '../outside.mtl': a file must be in the model's folder or below it"), std::runtime_error);
+    const std::string absolute = (dir / "outside.mtl").string();
+    const std::string names_absolute = "'mtllib' names '" + absolute + "'";
+    CHECK_THROWS_WITH_AS((void)prism::load_obj_model<float>(model_with(absolute)), doctest::Contains(names_absolute.c_str()), std::runtime_error);
+    // Trusted: both read.
+    CHECK(prism::load_obj_model<float>(model_with("../outside.mtl"), {.any_path = true}).opaque.items.size() == 2);
+    CHECK(prism::load_obj_model<float>(model_with(absolute), {.any_path = true}).opaque.items.size() == 2);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("a .mtl whose Kd + Ks exceed 1 is scaled down with a note; a bad statement, option or number is refused naming its line")
 {
     const fs::path dir = obj_scratch("strict");
@@ -134,6 +157,11 @@ TEST_CASE("a .mtl whose Kd + Ks exceed 1 is scaled down with a note; a bad state
     refused("newmtl painted\nNi 1e-45\n", "line 2: 'Ni' must be an index of refraction from 0.01 to 100, got 1e-45");
     refused("newmtl painted now\n", "line 1: the material name 'painted now...' has a space");
     refused("newmtl painted\n", "window_glass"); // a usemtl naming no material
+    // Regression: a texture's name could be absolute or climb out of the model's folder,
+    // reaching any file (and a .mtl's error quoted its first line).
+    refused("newmtl painted\nmap_Kd ../../etc/paint.png\n",
+            "line 2: 'map_Kd' names '../../etc/paint.png': a file must be in the model's folder or below it, not an absolute path or one climbing out with ..");
+    refused("newmtl painted\nmap_Kd /etc/paint.png\n", "line 2: 'map_Kd' names '/etc/paint.png'");
     fs::remove(dir / "parts.mtl");
     CHECK_THROWS_WITH_AS((void)prism::load_obj_model<float>(dir / "model.obj"), doctest::Contains("parts.mtl"), std::runtime_error);
     fs::remove_all(dir);

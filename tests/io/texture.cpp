@@ -117,6 +117,8 @@ TEST_CASE("HDR and PFM textures are linear as stored; a negative texel and an un
     texture_bytes_to(dir / "negative.pfm", negative);
     CHECK_THROWS_WITH_AS((void)prism::load_texture(dir / "negative.pfm"), doctest::Contains("negative.pfm"), std::runtime_error);
     CHECK_THROWS_WITH_AS((void)prism::load_texture(dir / "negative.pfm"), doctest::Contains("texel 4 (x 1, y 1)"), std::runtime_error);
+    // Regression: a texture that could not be read said "cannot write".
+    CHECK_THROWS_WITH_AS((void)prism::load_texture(dir / "f.tga"), doctest::Contains("prism: cannot read texture '"), std::runtime_error);
     CHECK_THROWS_WITH_AS((void)prism::load_texture(dir / "f.tga"), doctest::Contains("unknown texture extension '.tga'"), std::runtime_error);
     CHECK_THROWS_WITH_AS((void)prism::load_texture(dir / "f.pfm", {.channels = 2}), doctest::Contains("channels must be 1 or 3, got 2"), std::runtime_error);
     fs::remove_all(dir);

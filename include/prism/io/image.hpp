@@ -367,7 +367,7 @@ try {
         const std::string line = next_line("its header");
         if (line.empty()) break;
         if (line.rfind("FORMAT=", 0) == 0) {
-            if (line != "FORMAT=32-bit_rle_rgbe") file.fail("its " + line + " (line " + std::to_string(number) + ") is not FORMAT=32-bit_rle_rgbe, the only format read");
+            if (line != "FORMAT=32-bit_rle_rgbe") file.fail("its " + detail::printable(line) + " (line " + std::to_string(number) + ") is not FORMAT=32-bit_rle_rgbe, the only format read");
             format = true;
         }
     }
@@ -377,12 +377,12 @@ try {
         const std::string text = size.substr(from, to - from);
         if (text.empty() || text.size() > 8 || text.find_first_not_of("0123456789") != std::string::npos || std::stol(text) < 1 ||
             std::stol(text) > (1l << 24))
-            file.fail("its size line '" + size + "' is not \"-Y height +X width\" with each side from 1 to 16777216");
+            file.fail("its size line '" + detail::printable(size) + "' is not \"-Y height +X width\" with each side from 1 to 16777216");
         return std::uint64_t(std::stol(text));
     };
     const std::size_t plus = size.find(" +X ");
     if (size.rfind("-Y ", 0) != 0 || plus == std::string::npos)
-        file.fail("its size line '" + size + "' is not \"-Y height +X width\" (rows from the top, the only order read)");
+        file.fail("its size line '" + detail::printable(size) + "' is not \"-Y height +X width\" (rows from the top, the only order read)");
     const std::uint64_t height = number_at(3, plus), width = number_at(plus + 4, size.size());
     // Walk the rows as stb_image will read them, so that the pixels it allocates are
     // paid for in bytes and nothing follows the last row: run-length encoded rows (8 to

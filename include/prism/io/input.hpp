@@ -35,6 +35,32 @@ struct ReadLimits {
 
 namespace detail {
 
+/// Throws std::runtime_error: "prism: cannot read <what> '<path>': <reason>" (a reader's
+/// refusal; io/output.hpp's throw_io is a writer's).
+[[noreturn]] inline void throw_read(const std::filesystem::path& path, const std::string& what, const std::string& reason)
+{
+    throw std::runtime_error("prism: cannot read " + what + " '" + path.string() + "': " + reason);
+}
+
+/// Text from a file as a message quotes it: a control character written out (\r, \t,
+/// \xNN), so that a carriage return cannot hide the message's start on a terminal.
+[[nodiscard]] inline std::string printable(const std::string& text)
+{
+    std::string out;
+    for (const char c : text) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (c == '\r') out += "\\r";
+        else if (c == '\t') out += "\\t";
+        else if (byte < 0x20 || byte == 0x7f) {
+            static constexpr char digits[] = "0123456789abcdef";
+            out += "\\x";
+            out += digits[byte >> 4];
+            out += digits[byte & 15];
+        } else out += c;
+    }
+    return out;
+}
+
 /// a * b, or nothing when it does not fit in 64 bits.
 [[nodiscard]] constexpr std::optional<std::uint64_t> checked_product(std::uint64_t a, std::uint64_t b) noexcept
 {
@@ -154,10 +180,7 @@ public:
     }
 
     /// Throws std::runtime_error: "cannot read <what> '<path>': <reason>".
-    [[noreturn]] void fail(const std::string& reason) const
-    {
-        throw std::runtime_error("prism: cannot read " + what_ + " '" + path_.string() + "': " + reason);
-    }
+    [[noreturn]] void fail(const std::string& reason) const { throw_read(path_, what_, reason); }
 
 private:
     /// out.resize(size), or a message naming the file and what was being read when the

@@ -78,6 +78,10 @@ struct ObjOptions {
     double bump_scale = 0.01;  ///< scene units of height per unit of a bump map's value (times its -bm)
     TextureSampling sampling{}; ///< how every texture is read
     ReadLimits limits{};        ///< for the OBJ, the .mtl and each texture
+    /// Let `mtllib` and texture names be absolute paths or climb out of the model's folder
+    /// with `..` (a model from a source trusted with the whole file system). Off, each
+    /// names a file in the folder of the file naming it, or below.
+    bool any_path = false;
 };
 
 /// An OBJ model: its opaque and its glass parts, a mesh each with its material, and what
@@ -90,6 +94,20 @@ struct ObjModel {
 };
 
 namespace detail {
+
+/// The file `name` (a .mtl's or an OBJ's statement `what`) beside `from`: refused through
+/// `fail` when absolute or climbing out with `..`, unless `any_path`.
+template <class Fail>
+[[nodiscard]] std::filesystem::path beside(const std::filesystem::path& from, const std::string& name, const char* what, bool any_path, Fail&& fail)
+{
+    const std::filesystem::path relative(name);
+    bool climbs = false;
+    for (const auto& part : relative) climbs = climbs || part == "..";
+    if (!any_path && (relative.is_absolute() || relative.has_root_name() || relative.has_root_directory() || climbs))
+        fail(std::string("'") + what + "' names '" + printable(name.substr(0, 256)) +
+             "': a file must be in the model's folder or below it, not an absolute path or one climbing out with .. (ObjOptions::any_path allows it)");
+    return from.parent_path() / relative;
+}
 
 /// One material of a .mtl file, as written.
 struct MtlMaterial {
@@ -105,7 +123,7 @@ struct MtlMaterial {
 
 /// Reads a .mtl file: strict (each number finite, each statement one it knows), its
 /// texture names resolved beside it; what it knows but does not read goes to `notes`.
-inline std::vector<MtlMaterial> read_mtl(const std::filesystem::path& path, ReadLimits limits, std::vector<std::string>& notes, std::string& text)
+inline std::vector<MtlMaterial> read_mtl(const std::filesystem::path& path, ReadLimits limits, bool any_path, std::vector<std::string>& notes, std::string& text)
 {
     InputFile file(path, "material library", limits);
     std::vector<MtlMaterial> out;
@@ -150,7 +168,7 @@ inline std::vector<MtlMaterial> read_mtl(const std::filesystem::path& path, Read
                 }
             }
             if (name.empty()) fail(std::string("'") + what + "' names no file");
-            return (path.parent_path() / name).string();
+            return beside(path, name, what, any_path, fail).string();
         };
         if (keyword == "newmtl") {
             MtlMaterial m;
@@ -161,7 +179,7 @@ inline std::vector<MtlMaterial> read_mtl(const std::filesystem::path& path, Read
             out.push_back(m);
             continue;
         }
-        if (out.empty()) fail("'" + keyword.substr(0, 32) + "' comes before any 'newmtl'");
+        if (out.empty()) fail("'" + printable(keyword.substr(0, 32)) + "' comes before any 'newmtl'");
         MtlMaterial& m = out.back();
         // A statement of one number: that number and nothing after it.
         const auto only_number = [&](const char* what) {
@@ -188,7 +206,7 @@ inline std::vector<MtlMaterial> read_mtl(const std::filesystem::path& path, Read
                  keyword == "sharpness" || keyword == "disp" || keyword == "decal" || keyword == "refl" || keyword == "Pr" || keyword == "Pm" || keyword == "Ps" ||
                  keyword == "Pc" || keyword == "Pcr" || keyword == "aniso" || keyword == "anisor")
             notes.push_back(path.filename().string() + " " + where + "'" + keyword + "' of material '" + m.name + "' is not read");
-        else fail("'" + keyword.substr(0, 32) + "' is not a .mtl statement prism knows");
+        else fail("'" + printable(keyword.substr(0, 32)) + "' is not a .mtl statement prism knows");
         // (std::to_string's six decimals would show 1e-45 as 0.)
         const auto shown = [](double v) {
             char text[32];
@@ -231,7 +249,8 @@ try {
             words >> keyword;
             if (keyword != "mtllib") continue;
             std::getline(words >> std::ws, name);
-            materials = detail::read_mtl(path.parent_path() / name, options.limits, model.notes, mtl_text);
+            const auto refuse = [&](const std::string& reason) { scan.fail(reason); };
+            materials = detail::read_mtl(detail::beside(path, name, "mtllib", options.any_path, refuse), options.limits, options.any_path, model.notes, mtl_text);
             break;
         }
     }

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <prism/io/image.hpp>
+#include <prism/io/input.hpp>
 #include <prism/material/image_texture.hpp>
 
 #include <algorithm>
@@ -57,7 +58,7 @@ template <Scalar T = float>
 {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (file.channels != 1 && file.channels != 3) detail::throw_io(path, "texture channels must be 1 or 3, got " + std::to_string(file.channels));
+    if (file.channels != 1 && file.channels != 3) detail::throw_read(path, "texture", "texture channels must be 1 or 3, got " + std::to_string(file.channels));
     const bool srgb = file.encoding == TextureEncoding::srgb;
     // A PFM is data: its values as stored (a Film would zero what is negative or not
     // finite, which the texture refuses instead).
@@ -71,14 +72,14 @@ template <Scalar T = float>
         try {
             return ImageTexture<T>(pfm.width, pfm.height, file.channels, texels, file.sampling);
         } catch (const std::invalid_argument& e) {
-            detail::throw_io(path, std::string("it cannot be a texture: ") + e.what());
+            detail::throw_read(path, "texture", std::string("it cannot be a texture: ") + e.what());
         }
     }
     const Film film = [&] {
         if (extension == ".png") return detail::to_film(read_png_bytes(path, file.limits), srgb);
         if (extension == ".jpg" || extension == ".jpeg") return detail::to_film(read_jpeg_bytes(path, file.limits), srgb);
         if (extension == ".hdr") return read_hdr(path, file.limits);
-        detail::throw_io(path, "unknown texture extension '" + extension + "' (use .png, .jpg, .jpeg, .hdr or .pfm; an EXR through texture_from(read_exr(path).film()))");
+        detail::throw_read(path, "texture", "unknown texture extension '" + extension + "' (use .png, .jpg, .jpeg, .hdr or .pfm; an EXR through texture_from(read_exr(path).film()))");
     }();
     return texture_from<T>(film, file.channels, file.sampling);
 }
