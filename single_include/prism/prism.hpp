@@ -431,6 +431,7 @@ template <Scalar T>
 
 
 #include <limits>
+#include <type_traits>
 
 namespace prism {
 
@@ -535,6 +536,48 @@ struct Aabb {
         return range;
     }
 };
+
+/// A ray to test a far shape with: the caller's ray with its origin moved along it toward
+/// the shape, and the caller's t where the moved ray starts (see brought_near).
+template <Scalar T>
+struct NearRay {
+    Ray<T> ray;        ///< the same direction; the origin the caller's ray at `shift`
+    double shift = 0;  ///< 0: the caller's ray as it is
+
+    /// The caller's range on the moved ray.
+    [[nodiscard]] Interval<T> range(const Interval<T>& r) const noexcept
+    {
+        if (shift == 0) return r;
+        return {T(double(r.min) - shift), T(double(r.max) - shift)};
+    }
+    /// A t on the moved ray as a t on the caller's.
+    [[nodiscard]] T back(T t) const noexcept { return shift == 0 ? t : T(shift + double(t)); }
+};
+
+/// A float ray from more than 64 times `box`'s diagonal away (and the box ahead), its
+/// origin moved along it, in double, to twice the diagonal before the box's centre: the same line, rounded once
+/// near the box. A shape's test subtracts the origin from its points, and from 10^6
+/// times a float shape's size the far origin's rounding alone is as large as the shape:
+/// a ray aimed across it could be found to cross it where the ray does not, or miss it.
+/// A ray near already, one the box lies behind or beside, a ray that is not finite, and a
+/// double ray are kept as they are (shift 0).
+template <Scalar T>
+[[nodiscard]] NearRay<T> brought_near(const Ray<T>& ray, const Aabb<T>& box) noexcept
+{
+    if constexpr (!std::is_same_v<T, float>) {
+        return {ray};
+    } else {
+        // Most rays start near what they test: a test in float first (the origin within 64
+        // diagonals of the centre, or a NaN anywhere, keeps the ray).
+        const Vec3<T> half = (box.hi - box.lo) * T(0.5), away = ray.origin - (box.lo + box.hi) * T(0.5);
+        if (!(dot(away, away) > T(16384) * dot(half, half))) return {ray};
+        const Vec3<double> o(ray.origin), d(ray.direction), lo(box.lo), hi(box.hi);
+        const double speed = length(d), size = length(hi - lo);
+        const double shift = (dot((lo + hi) * 0.5 - o, d) / speed - 2 * size) / speed;
+        if (!(shift * speed > 32 * size) || !(shift < double(std::numeric_limits<T>::max()))) return {ray};
+        return {Ray<T>{Vec3<T>(o + shift * d), ray.direction}, shift};
+    }
+}
 
 } // namespace prism
 
@@ -869,6 +912,29 @@ template <Scalar T>
 constexpr void require_positive(std::string_view name, T value)
 {
     if (!(is_finite(value) && value > T(0))) throw_invalid(name, " must be finite and > 0, got ", value);
+}
+
+/// The indices of refraction prism refracts by: 0.01 to 100. (Glass, water, diamond and
+/// germanium lie between 1 and 4; at 10^-45 the relative index 1 / n is not a float and
+/// refraction gives NaN.)
+inline constexpr double least_index = 0.01, greatest_index = 100.0;
+
+template <Scalar T>
+constexpr void require_index(std::string_view name, T value)
+{
+    if (!(value >= T(least_index) && value <= T(greatest_index))) throw_invalid(name, " must be an index of refraction from 0.01 to 100, got ", value);
+}
+
+/// The sharpest cosine-power lobe prism draws: cos^n with n up to 10^6 (a lobe about 0.1
+/// degrees wide). A sharper one is narrower than a float's steps of the cosine near 1
+/// (6e-8) resolve, and its highlight would vanish: that is a mirror.
+inline constexpr double greatest_lobe_exponent = 1e6;
+
+template <Scalar T>
+constexpr void require_lobe_exponent(std::string_view name, T value)
+{
+    if (!(value >= T(0) && value <= T(greatest_lobe_exponent)))
+        throw_invalid(name, " must be from 0 to 1e6 (a sharper lobe is a mirror: use Mirror), got ", value);
 }
 
 template <Scalar T>
@@ -1634,7 +1700,10 @@ private:
     template <bool Nearest, class Visit>
     constexpr bool walk(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
     {
-        if (nodes_.empty()) return false;
+        // A ray with a NaN or an infinity in it meets nothing. (A NaN would pass every
+        // box test, the padding lanes' empty boxes too, and those lanes' zeros would be
+        // taken for the root: a walk without end.)
+        if (nodes_.empty() || !is_finite(ray.origin) || !is_finite(ray.direction)) return false;
         const detail::SlabRay<T> slab(ray, magnitude_);
         if (std::is_constant_evaluated()) return walk_with<Nearest>(slab, range, visit);
 #if PRISM_VECTOR_EXTENSIONS
@@ -3939,7 +4008,11 @@ template <int Kz, Scalar T>
     const T delta_e = T(2) * (gamma<T>(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
     const T max_e = max_component(Vec3<T>(std::abs(e0), std::abs(e1), std::abs(e2)));
     const T delta_t = T(3) * (gamma<T>(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * std::abs(inv_det);
-    if (!(t > delta_t)) return false;
+    // That bound grows as the square of the distance (delta_e as max_z), and from 5 10^4
+    // times a triangle's size it refuses hits far in front. A triangle whose every corner
+    // is in front by more than z's rounding is hit at t > 0 whatever t's own rounding: a
+    // hit inside it lies between its corners' z, which are the ray's t there.
+    if (!(t > delta_t) && !(std::min(std::min(z0, z1), z2) > delta_z)) return false;
     // det is the sheared normal's z, dot(direction, normal) / direction[kz] (the
     // permutation is cyclic, the shear of determinant 1): it enters where that is < 0.
     out = {t, {e0 * inv_det, e1 * inv_det, e2 * inv_det}, (det < T(0)) != (ray.sz < T(0))};
@@ -4278,8 +4351,11 @@ public:
     }
 
     /// first_crossing, keeping the triangle hit and where (for surface_crossing).
-    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
+    [[nodiscard]] T first_crossing(const Ray<T>& far_ray, Interval<T> far_range, SurfaceHint<T>& hint) const noexcept
     {
+        const NearRay<T> near = brought_near(far_ray, data_->bounds);
+        const Ray<T>& ray = near.ray;
+        Interval<T> range = near.range(far_range);
         const detail::ShearedRay<T> sheared(ray);
         detail::TriangleHit<T> nearest{infinity<T>, {}, false};
         std::uint32_t triangle = 0;
@@ -4291,8 +4367,10 @@ public:
             });
             return false;
         });
-        if (nearest.t < infinity<T>) hint = {triangle, nearest.t, nearest.b, nearest.entering};
-        return nearest.t;
+        if (!(nearest.t < infinity<T>)) return infinity<T>;
+        const T t = near.back(nearest.t);
+        hint = {triangle, t, nearest.b, nearest.entering};
+        return t;
     }
 
     /// crossings(ray, range).front(), from the hit first_crossing kept (the same ray
@@ -4310,8 +4388,11 @@ public:
     }
 
     /// Whether any crossing lies strictly inside `range` (a shadow ray's query).
-    [[nodiscard]] bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    [[nodiscard]] bool any_crossing(const Ray<T>& far_ray, Interval<T> far_range) const noexcept
     {
+        const NearRay<T> near = brought_near(far_ray, data_->bounds);
+        const Ray<T>& ray = near.ray;
+        Interval<T> range = near.range(far_range);
         const detail::ShearedRay<T> sheared(ray);
         return data_->bvh.any_leaf(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) {
             return for_each_maybe_hit(sheared, first, count, [&](std::uint32_t, const std::array<Vec3<T>, 3>& tri) {
@@ -4323,8 +4404,11 @@ public:
 
     /// Every crossing of `ray` within `range` (at most N), sorted, by the watertight ray-triangle test.
     template <bool Surface = true>
-    [[nodiscard]] Crossings<T, N> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
+    [[nodiscard]] Crossings<T, N> crossings(const Ray<T>& far_ray, Interval<T> far_range) const noexcept
     {
+        const NearRay<T> near = brought_near(far_ray, data_->bounds);
+        const Ray<T>& ray = near.ray;
+        Interval<T> range = near.range(far_range);
         Crossings<T, N> out;
         const Hits hits = gather(ray, range);
         const bool closed = data_->closed;
@@ -4353,6 +4437,8 @@ public:
             }
             i = end;
         }
+        if (near.shift != 0)
+            for (std::size_t k = 0; k < out.count; ++k) out.items[k].t = near.back(out.items[k].t);
         return out;
     }
 
@@ -5790,11 +5876,12 @@ public:
     {
         // A ray that cannot come near the bounds cannot cross the shape.
         if (bounded_ && !bounds_.reached_after(ray, range.min)) return {};
-        const auto [local, dt] = to_local(ray);
+        const LocalRay local = to_local(ray);
+        const T dt = local.dt;
         // The end of the range is carried over two float steps wide and applied again to
         // the world t: the result keeps every crossing before range.max however the
         // subtraction rounds, so a query over a shorter range finds the same first one.
-        Crossings<T, max_crossings> out = shape_.template crossings<Surface>(local, {range.min, next_float_up(next_float_up(range.max - dt))});
+        Crossings<T, max_crossings> out = shape_.template crossings<Surface>(local.ray, local.range(range));
         std::size_t kept = 0;
         for (std::size_t k = 0; k < out.count; ++k) {
             out.items[k].t += dt;
@@ -5832,10 +5919,10 @@ public:
         requires HasHintedSurface<S>
     {
         if (bounded_ && !bounds_.reached_after(ray, range.min)) return std::nullopt;
-        const auto [local, dt] = to_local(ray);
-        std::optional<Crossing<T>> c = shape_.surface_crossing(local, {range.min, next_float_up(next_float_up(range.max - dt))}, hint);
+        const LocalRay local = to_local(ray);
+        std::optional<Crossing<T>> c = shape_.surface_crossing(local.ray, local.range(range), hint);
         if (!c) return c;
-        c->t += dt;
+        c->t += local.dt;
         if (!(c->t < range.max)) return std::nullopt;
         to_world(*c);
         return c;
@@ -5860,28 +5947,40 @@ private:
     [[nodiscard]] T first_crossing_with(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
     {
         if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
-        const auto [local, dt] = to_local(ray);
-        const T t = prism::first_crossing(shape_, local, {range.min, next_float_up(next_float_up(range.max - dt))}, hint) + dt;
+        const LocalRay local = to_local(ray);
+        const T t = prism::first_crossing(shape_, local.ray, local.range(range), hint) + local.dt;
         return t < range.max ? t : infinity<T>;
     }
 
     struct LocalRay {
         Ray<T> ray;
-        T dt; ///< local t + dt = world t
+        T dt;       ///< local t + dt = world t
+        T moved{0}; ///< how far along the world ray its origin was brought before the transform
+
+        /// The world range in the shape's coordinates. (Its start not moved by the
+        /// transform's own step past its rounding: no crossing of the shape lies there.)
+        [[nodiscard]] Interval<T> range(const Interval<T>& world) const noexcept
+        {
+            return {world.min - moved, next_float_up(next_float_up(world.max - dt))};
+        }
     };
 
     /// The ray in the shape's coordinates. The new origin is off by the rounding of that
     /// transform, which can be more than a spawned ray's offset from the surface it
     /// leaves: it is moved forward along the ray past that error, and t measured from
     /// there (pbrt-v4, Transform::ApplyInverse(Ray)).
-    [[nodiscard]] LocalRay to_local(const Ray<T>& ray) const noexcept
+    [[nodiscard]] LocalRay to_local(const Ray<T>& world) const noexcept
     {
+        // A float ray from far off is first brought near the shape's box (core/aabb.hpp):
+        // the transform's rounding of a far origin is as large as the shape.
+        const NearRay<T> near = bounded_ ? brought_near(world, bounds_) : NearRay<T>{world};
+        const Ray<T>& ray = near.ray;
         Ray<T> local{to_world_.inverse_point(ray.origin), to_world_.inverse_vector(ray.direction)};
         const T length2 = length_squared(local.direction);
         T dt = length2 > T(0) ? dot(abs(local.direction), to_world_.inverse_point_error(ray.origin)) / length2 : T(0);
         if (!is_finite(dt)) dt = T(0);
         local.origin += dt * local.direction;
-        return {local, dt};
+        return {local, T(near.shift + double(dt)), T(near.shift)};
     }
 
     /// A crossing found in the shape's coordinates, carried to the world's.
@@ -11127,6 +11226,7 @@ struct Camera {
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <concepts>
@@ -11282,6 +11382,7 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
     // Report progress while waiting, once the render has taken more than a second.
     const auto start = std::chrono::steady_clock::now();
     bool reported = false;
+    std::atomic<std::size_t> rejected_values{0};
     const auto progress = [&](std::size_t tiles_done) {
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (config.progress && seconds > 1.0) {
@@ -11311,9 +11412,14 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
                     }
                 }
                 store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
+                if (rejected != 0) rejected_values.fetch_add(rejected, std::memory_order_relaxed);
             }
     }, progress);
     if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
+    // Light the film could not hold is said, not only counted (Film::rejected()).
+    if (config.progress && rejected_values.load() != 0)
+        std::fprintf(stderr, "prism: %zu sample values were rejected (negative, NaN, infinite, or 2^40 = 1.1e12 or more): their light is missing from the image\n",
+                     rejected_values.load());
 }
 
 } // namespace detail
@@ -11341,7 +11447,11 @@ void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& came
     } else {
         (void)detail::render_passes(config);
         (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
+        const std::size_t before = sums.rejected();
         integrator.add_passes(sums, camera, config);
+        if (config.progress && sums.rejected() != before)
+            std::fprintf(stderr, "prism: %zu sample values were rejected (negative, NaN, infinite, or 2^40 = 1.1e12 or more): their light is missing from the image\n",
+                         sums.rejected() - before);
     }
 }
 
@@ -15493,7 +15603,8 @@ struct Coat {
     /// Throws std::invalid_argument, naming the parameter, for an index <= 1 or a roughness outside [0, 1].
     constexpr void validate() const
     {
-        if (!(ior > T(1) && ior < infinity<T>)) detail::throw_invalid("Coat ior must be finite and > 1, got ", ior);
+        if (!(ior > T(1))) detail::throw_invalid("Coat ior must be finite and > 1, got ", ior);
+        detail::require_index("Coat ior", ior);
         if (!(roughness >= T(0) && roughness <= T(1))) detail::throw_invalid("Coat roughness must be in [0, 1], got ", roughness);
     }
 };
@@ -16159,7 +16270,7 @@ struct Dielectric {
     /// Throws std::invalid_argument, naming the parameter, for ior <= 0, a bad interior, or a negative kr or kt.
     constexpr void validate() const
     {
-        detail::require_positive("Dielectric ior", ior);
+        detail::require_index("Dielectric ior", ior);
         interior.validate();
         detail::require_non_negative("Dielectric kr", kr);
         detail::require_non_negative("Dielectric kt", kt);
@@ -16240,6 +16351,7 @@ struct Diffuse {
         detail::require_non_negative("Diffuse ka", ka);
         detail::require_non_negative("Diffuse phong", phong);
         detail::require_positive("Diffuse phong_size", phong_size);
+        detail::require_lobe_exponent("Diffuse phong_size", phong_size);
     }
 };
 
@@ -17230,7 +17342,7 @@ struct Phong {
         diffuse.validate();
         detail::require_non_negative("Phong specular", specular);
         if (!(max_component(specular) <= T(1))) detail::throw_invalid("Phong specular must be <= 1 in every channel, got ", detail::describe(specular));
-        detail::require_non_negative("Phong exponent", exponent);
+        detail::require_lobe_exponent("Phong exponent", exponent);
         if constexpr (std::same_as<Albedo, Solid<T>>) {
             if (!(max_component(diffuse.color + specular) <= T(1)))
                 detail::throw_invalid("Phong diffuse + specular must be <= 1 in every channel (energy), got ", detail::describe(diffuse.color + specular));
@@ -17577,7 +17689,7 @@ struct RoughDielectric {
     /// Throws std::invalid_argument, naming the parameter, for ior <= 0, a roughness outside [0, 1] or a bad interior.
     constexpr void validate() const
     {
-        detail::require_positive("RoughDielectric ior", ior);
+        detail::require_index("RoughDielectric ior", ior);
         validate_roughness(roughness, "RoughDielectric");
         interior.validate();
     }
@@ -17991,6 +18103,7 @@ static_assert(Material<CoatedDielectric<float>>);
 #include <cmath>
 #include <concepts>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -18036,8 +18149,16 @@ public:
             if (!(std::isfinite(values[i]) && values[i] >= 0.0f))
                 detail::throw_invalid("DensityGrid value ", i, " (x ", i % std::size_t(nx), ", y ", i / std::size_t(nx) % std::size_t(ny), ", z ",
                                       i / (std::size_t(nx) * std::size_t(ny)), ") must be finite and >= 0, got ", values[i]);
+        for (int a = 0; a < 3; ++a) {
+            // Lattice cells per unit length, finite and normal, and the box's width a finite
+            // number: a lookup turns (p - lo) times it into a cell index.
+            const T width = box_.hi[a] - box_.lo[a];
+            scale_[a] = T(n_[a] - 1) / width;
+            if (!(is_finite(width) && is_finite(scale_[a]) && scale_[a] >= std::numeric_limits<T>::min()))
+                detail::throw_invalid("DensityGrid box is too small or too large for its ", nx, " x ", ny, " x ", nz, " points on axis ", a, ": ",
+                                      box_.lo[a], " to ", box_.hi[a]);
+        }
         values_ = std::make_shared<const std::vector<float>>(std::move(values));
-        for (int a = 0; a < 3; ++a) scale_[a] = T(n_[a] - 1) / (box_.hi[a] - box_.lo[a]);
     }
 
     /// The density at p: trilinear between the lattice's points, 0 outside the box.
@@ -18635,13 +18756,43 @@ private:
 
 namespace prism {
 
-/// What a reader accepts at most from one file: a guard against endless streams, checked
-/// before reading when the file's size is known and as bytes arrive otherwise.
+/// What a reader accepts at most from one file: its bytes, a guard against endless streams
+/// checked before reading when the file's size is known and as bytes arrive otherwise; and
+/// a compressed image's pixels (PNG, JPEG, HDR), checked against its header before
+/// anything is decoded: deflate expands up to 1032 times, and a 1-bit PNG of 2 KB decodes
+/// to 16 million pixels, 800 MB as a float texture. (A PFM's pixels are its bytes.)
 struct ReadLimits {
-    std::uint64_t max_bytes = std::uint64_t(1) << 32; ///< 4 GiB
+    std::uint64_t max_bytes = std::uint64_t(1) << 32;  ///< 4 GiB
+    std::uint64_t max_pixels = std::uint64_t(1) << 26; ///< 67 million (8192 x 8192): 800 MB as floats, 3.2 GB through a texture
 };
 
 namespace detail {
+
+/// Throws std::runtime_error: "prism: cannot read <what> '<path>': <reason>" (a reader's
+/// refusal; io/output.hpp's throw_io is a writer's).
+[[noreturn]] inline void throw_read(const std::filesystem::path& path, const std::string& what, const std::string& reason)
+{
+    throw std::runtime_error("prism: cannot read " + what + " '" + path.string() + "': " + reason);
+}
+
+/// Text from a file as a message quotes it: a control character written out (\r, \t,
+/// \xNN), so that a carriage return cannot hide the message's start on a terminal.
+[[nodiscard]] inline std::string printable(const std::string& text)
+{
+    std::string out;
+    for (const char c : text) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (c == '\r') out += "\\r";
+        else if (c == '\t') out += "\\t";
+        else if (byte < 0x20 || byte == 0x7f) {
+            static constexpr char digits[] = "0123456789abcdef";
+            out += "\\x";
+            out += digits[byte >> 4];
+            out += digits[byte & 15];
+        } else out += c;
+    }
+    return out;
+}
 
 /// a * b, or nothing when it does not fit in 64 bits.
 [[nodiscard]] constexpr std::optional<std::uint64_t> checked_product(std::uint64_t a, std::uint64_t b) noexcept
@@ -18751,11 +18902,18 @@ public:
         }
     }
 
-    /// Throws std::runtime_error: "cannot read <what> '<path>': <reason>".
-    [[noreturn]] void fail(const std::string& reason) const
+    /// Fails unless `width` x `height` pixels, as `source` gives them, are within the
+    /// limit on pixels (ReadLimits::max_pixels).
+    void check_pixels(std::uint64_t width, std::uint64_t height, const std::string& source) const
     {
-        throw std::runtime_error("prism: cannot read " + what_ + " '" + path_.string() + "': " + reason);
+        const auto pixels = checked_product(width, height);
+        if (!pixels || *pixels > limits_.max_pixels)
+            fail(source + " says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than the limit of " +
+                 std::to_string(limits_.max_pixels) + " (ReadLimits::max_pixels)");
     }
+
+    /// Throws std::runtime_error: "cannot read <what> '<path>': <reason>".
+    [[noreturn]] void fail(const std::string& reason) const { throw_read(path_, what_, reason); }
 
 private:
     /// out.resize(size), or a message naming the file and what was being read when the
@@ -19211,6 +19369,7 @@ try {
     if (raw > 1032.0 * double(bytes.size()) + 1024.0)
         file.fail("its header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than its " + std::to_string(bytes.size()) +
                   " bytes can hold compressed");
+    file.check_pixels(width, height, "its header");
     bytes = detail::checked_png_chunks(bytes, file);
     return detail::stb_decode8(bytes, file);
 } catch (const allocation_error&) {
@@ -19261,6 +19420,7 @@ try {
             if (double(width) * double(height) > 256.0 * double(bytes.size()) + 65536.0)
                 file.fail("its frame header says " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than its " +
                           std::to_string(bytes.size()) + " bytes can hold");
+            file.check_pixels(width, height, "its frame header");
             frame = true;
         }
         if (marker == 0xda) {
@@ -19322,7 +19482,7 @@ try {
         const std::string line = next_line("its header");
         if (line.empty()) break;
         if (line.rfind("FORMAT=", 0) == 0) {
-            if (line != "FORMAT=32-bit_rle_rgbe") file.fail("its " + line + " (line " + std::to_string(number) + ") is not FORMAT=32-bit_rle_rgbe, the only format read");
+            if (line != "FORMAT=32-bit_rle_rgbe") file.fail("its " + detail::printable(line) + " (line " + std::to_string(number) + ") is not FORMAT=32-bit_rle_rgbe, the only format read");
             format = true;
         }
     }
@@ -19332,12 +19492,12 @@ try {
         const std::string text = size.substr(from, to - from);
         if (text.empty() || text.size() > 8 || text.find_first_not_of("0123456789") != std::string::npos || std::stol(text) < 1 ||
             std::stol(text) > (1l << 24))
-            file.fail("its size line '" + size + "' is not \"-Y height +X width\" with each side from 1 to 16777216");
+            file.fail("its size line '" + detail::printable(size) + "' is not \"-Y height +X width\" with each side from 1 to 16777216");
         return std::uint64_t(std::stol(text));
     };
     const std::size_t plus = size.find(" +X ");
     if (size.rfind("-Y ", 0) != 0 || plus == std::string::npos)
-        file.fail("its size line '" + size + "' is not \"-Y height +X width\" (rows from the top, the only order read)");
+        file.fail("its size line '" + detail::printable(size) + "' is not \"-Y height +X width\" (rows from the top, the only order read)");
     const std::uint64_t height = number_at(3, plus), width = number_at(plus + 4, size.size());
     // Walk the rows as stb_image will read them, so that the pixels it allocates are
     // paid for in bytes and nothing follows the last row: run-length encoded rows (8 to
@@ -19374,6 +19534,7 @@ try {
     }
     if (at != bytes.size()) file.fail(std::to_string(bytes.size() - at) + " bytes follow its last row");
     int w = 0, h = 0, channels = 0;
+    file.check_pixels(width, height, "its size line");
     float* data = stbi_loadf_from_memory(bytes.data(), int(std::min<std::size_t>(bytes.size(), INT32_MAX)), &w, &h, &channels, 3);
     if (data == nullptr) {
         const char* reason = stbi_failure_reason();

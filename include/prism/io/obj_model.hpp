@@ -209,9 +209,9 @@ inline std::vector<MtlMaterial> read_mtl(const std::filesystem::path& path, Read
         else fail("'" + printable(keyword.substr(0, 32)) + "' is not a .mtl statement prism knows");
         // (std::to_string's six decimals would show 1e-45 as 0.)
         const auto shown = [](double v) {
-            char text[32];
-            std::snprintf(text, sizeof text, "%g", v);
-            return std::string(text);
+            char digits[32];
+            std::snprintf(digits, sizeof digits, "%g", v);
+            return std::string(digits);
         };
         if (!(m.ns >= 0 && m.ns <= detail::greatest_lobe_exponent))
             fail("'Ns' must be from 0 to 1e6 (a sharper highlight is a mirror), got " + shown(m.ns));
