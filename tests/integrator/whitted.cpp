@@ -274,6 +274,31 @@ TEST_CASE("Whitted follows a glossy lobe's mirror direction with the lobe's albe
     }
 }
 
+TEST_CASE("Whitted's glossy furnace: a rough metal of reflectance 1 under a uniform sky reads its lobe's albedo, the sky counted once")
+{
+    // The sky is counted once, by the lobe's mirror ray (which meets it everywhere) with
+    // the lobe's albedo, not by light samples as well. Regression: light samples counted it
+    // too, and the floor read 1.8 to 4.5 (56 where a sample met the narrow lobe at
+    // roughness 0.1), far above the furnace's 1.
+    for (const double roughness : {0.1, 0.3, 0.6}) {
+        const RoughConductor<double> metal{.fresnel = {.kr = Rgb<double>(1)}, .roughness = roughness};
+        const Scene scene{Lights{EnvironmentLight<double>{}}, Object{Plane<double>({0, 1, 0}, 0), metal}};
+        const Whitted whitted(scene);
+        for (const double theta : {10.0, 50.0, 80.0}) {
+            const Vec3<double> w = test::polar(theta, 0);
+            const Ray<double> ray{{w.x, w.z, w.y}, {-w.x, -w.z, -w.y}};
+            const double albedo = test::albedo_by_quadrature(metal.glossy({}), w);
+            Pcg32 rng(3, 1);
+            double mean = 0;
+            for (int i = 0; i < 4; ++i) mean += whitted.radiance(ray, rng).x / 4;
+            CAPTURE(roughness);
+            CAPTURE(theta);
+            CHECK(mean == doctest::Approx(albedo).epsilon(0.03));
+            CHECK(mean <= 1.0);
+        }
+    }
+}
+
 TEST_CASE("Whitted renders frosted glass at roughness 0 as the clean glass it is, bit for bit")
 {
     const auto scene_of = [](const auto& glass) {
