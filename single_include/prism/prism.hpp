@@ -14461,8 +14461,8 @@ public:
     /// (nothing else is random).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept
     {
-        if constexpr (SceneT::has_lights_with_extent || has_media) return trace(ray, 0, Rgb<T>(T(1)), T(0), scene_->media_at(ray.origin), &rng);
-        else return (void)rng, trace(ray, 0, Rgb<T>(T(1)), T(0), {});
+        if constexpr (SceneT::has_lights_with_extent || has_media) return trace(ray, 0, Rgb<T>(T(1)), T(0), scene_->media_at(ray.origin), false, &rng);
+        else return (void)rng, trace(ray, 0, Rgb<T>(T(1)), T(0), {}, false);
     }
     /// Radiance arriving along the ray, with area lights sampled from a fixed stream.
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept
@@ -14492,12 +14492,15 @@ private:
 
     /// Radiance along the ray for light of one wavelength (nanometres), or of all (0):
     /// a ray carries one once it has refracted through a dispersive interface. `media`:
-    /// the transmissive objects the ray is inside of (medium/nesting.hpp).
+    /// the transmissive objects the ray is inside of (medium/nesting.hpp). `lights_counted`:
+    /// the ray stands in for a glossy lobe whose light samples counted the lights with a
+    /// surface, so an emitting surface it meets is not counted again.
     /// Whether the scene or its air holds a medium that scatters.
     static constexpr bool has_media = SceneT::has_scattering_media || air_scatters<Air>;
 
     template <class... Jitter>
-    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength, const MediumStack& media, Jitter... jitter) const noexcept
+    [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength, const MediumStack& media, bool lights_counted,
+                               Jitter... jitter) const noexcept
     {
         // In the air (inside no object) the ray follows the air's curve, landing on a
         // chord; inside objects it is straight. Through a medium that scatters, what lies
@@ -14517,7 +14520,7 @@ private:
             }
         }();
         const Rgb<T> beyond = !hit ? scene_->escaped(segment.direction) : scene_->visit_material(*hit, [&](const auto& material) {
-            return shade(material, segment, *hit, depth, weight, wavelength, media, jitter...);
+            return shade(material, segment, *hit, depth, weight, wavelength, media, lights_counted, jitter...);
         });
         if constexpr (has_media) return beyond * seen + scattered;
         else return beyond;
@@ -14525,31 +14528,42 @@ private:
 
     template <class M, class... Jitter>
     [[nodiscard]] Rgb<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight,
-                               T wavelength, const MediumStack& media, Jitter... jitter) const noexcept
+                               T wavelength, const MediumStack& media, bool lights_counted, Jitter... jitter) const noexcept
     {
         const Crossing<T>& hit = h.crossing;
         const Vec3<T>& d = ray.direction;
-        Rgb<T> radiance = emitted(material, hit);
+        // (An emitting surface is an area light: a glossy lobe's light samples counted it.)
+        Rgb<T> radiance = lights_counted ? Rgb<T>(T(0)) : emitted(material, hit);
 
         if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, d, jitter...);
 
+        // Whether a glossy lobe's light samples counted the lights with a surface (it is not
+        // smooth): the rays that stand in for it then count no emitting surface they meet.
+        [[maybe_unused]] bool lobe_counted_lights = false;
         if constexpr (has_glossy<M>) {
-            // A glossy lobe: the lights by its BSDF toward each, and what lies about the
-            // mirror direction by one mirror ray carrying the albedo of the lobe's part there
-            // (the lobe's spread and its light from everything but the lights are left out);
-            // for frosted glass that ray is the clean glass's split, below.
+            // A glossy lobe: each light with a surface or none (point, spot, area) by its BSDF
+            // toward the light, and what lies about the mirror direction by one mirror ray
+            // carrying the albedo of the lobe's part there (the lobe's spread is left out;
+            // for frosted glass that ray is the clean glass's split, below). Each light is
+            // counted once: a sky or an environment map by the mirror ray, which meets it
+            // everywhere (by light samples it would be noise about a narrow lobe), and an
+            // emitting surface the mirror ray meets not again.
             const auto lobe = glossy_at(material, hit, normalize(d), glossy_eta(material, hit));
             const LightSampling sampling{stream_of(jitter...), config_.area_light_grid};
-            for_each_light_arriving(*scene_, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
-                radiance += lobe.f(s.wi, Transport::radiance) * v * s.irradiance * cos;
+            scene_->for_each_light([&]<class L>(const L& light) {
+                if constexpr (!is_at_infinity<L>)
+                    for_each_sample_arriving(*scene_, light, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                        radiance += lobe.f(s.wi, Transport::radiance) * v * s.irradiance * cos;
+                    });
             });
+            lobe_counted_lights = !lobe.smooth();
             // (A delta part, a mirror's or a smooth coat's, is that mirror ray exactly.)
             if constexpr (!transmits<M>) {
             const std::optional<LobeSample<T>> delta = lobe.delta_part();
             const Rgb<T> k = delta ? delta->weight : lobe.mirror_albedo();
             if (depth < config_.max_depth && max_component(weight * k) > config_.min_weight)
                 radiance += k * trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, delta ? delta->wi : lobe.mirror()), ray, hit.t), depth + 1,
-                                      weight * k, wavelength, media, jitter...);
+                                      weight * k, wavelength, media, !delta.has_value(), jitter...);
             }
         }
 
@@ -14567,7 +14581,7 @@ private:
                                            const Rgb<T> next_weight = weight * k;
                                            if (max_component(next_weight) > config_.min_weight)
                                                radiance += k * trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, direction), ray, hit.t),
-                                                                     depth + 1, next_weight, lambda, transmitted ? beyond : media, jitter...);
+                                                                     depth + 1, next_weight, lambda, transmitted ? beyond : media, lobe_counted_lights, jitter...);
                                        });
                 };
                 if constexpr (transmits<M>) {
@@ -14576,7 +14590,7 @@ private:
                         follow(face.beyond, outside_of(media, face, hit.entering));
                     else // a surface inside a medium of higher priority: the ray passes on
                         radiance = trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, weight, wavelength,
-                                         face.beyond, jitter...);
+                                         face.beyond, lights_counted, jitter...);
                 } else {
                     follow(media, nullptr);
                 }
