@@ -11361,6 +11361,15 @@ template <std::size_t N>
     return 0;
 }
 
+/// Says on stderr how many sample values a render rejected, if any: light the film could
+/// not hold is said, not only counted (Film::rejected()).
+inline void say_rejected(std::size_t values)
+{
+    if (values != 0)
+        std::fprintf(stderr, "prism: %zu sample values were rejected (negative, NaN, infinite, or 2^40 = 1.1e12 or more): their light is missing from the image\n",
+                     values);
+}
+
 /// Render the config's window and samples: `sample(ray, rng, sums)` adds one sample to
 /// a pixel's N sums and returns how many values it rejected; `store(x, y, sums,
 /// samples, rejected)` then takes the pixel (one thread per pixel; any pixel on any
@@ -11416,10 +11425,7 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
             }
     }, progress);
     if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
-    // Light the film could not hold is said, not only counted (Film::rejected()).
-    if (config.progress && rejected_values.load() != 0)
-        std::fprintf(stderr, "prism: %zu sample values were rejected (negative, NaN, infinite, or 2^40 = 1.1e12 or more): their light is missing from the image\n",
-                     rejected_values.load());
+    if (config.progress) say_rejected(rejected_values.load());
 }
 
 } // namespace detail
@@ -11449,9 +11455,7 @@ void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& came
         (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
         const std::size_t before = sums.rejected();
         integrator.add_passes(sums, camera, config);
-        if (config.progress && sums.rejected() != before)
-            std::fprintf(stderr, "prism: %zu sample values were rejected (negative, NaN, infinite, or 2^40 = 1.1e12 or more): their light is missing from the image\n",
-                         sums.rejected() - before);
+        if (config.progress) detail::say_rejected(sums.rejected() - before);
     }
 }
 
