@@ -187,6 +187,8 @@ prism::OutputSet& outputs()
 
 void commit_outputs() { outputs().commit(); }
 
+void remove_partial_files_on_signal() { prism::remove_partial_files_on_signal(); }
+
 void save_png(const prism::Film& film, const Options& options, const std::string& name)
 {
     outputs().add(output_file(options, name + ".png"), prism::encode_png(film));

@@ -129,6 +129,9 @@ prism::OutputSet& outputs();
 
 /// Write every file outputs() holds (run() calls it when the body returns 0).
 void commit_outputs();
+/// Have SIGINT, SIGTERM and SIGHUP remove the temporary files of a write under way
+/// (prism::remove_partial_files_on_signal).
+void remove_partial_files_on_signal();
 
 /// Queue `film` as OUT/name.png.
 void save_png(const prism::Film& film, const Options& options, const std::string& name);
@@ -138,6 +141,7 @@ void save_png(const prism::Film& film, const Options& options, const std::string
 template <class Body>
 int run(std::FILE* errors, Body&& body) noexcept
 {
+    remove_partial_files_on_signal();
     try {
         const int status = body();
         if (status == 0) commit_outputs();

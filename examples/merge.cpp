@@ -10,6 +10,7 @@
 // digest, so results can be merged further; --png also writes its picture.
 #include <prism/io/exr.hpp>
 #include <prism/io/image.hpp>
+#include <prism/io/output.hpp>
 
 #include <algorithm>
 #include <cerrno>
@@ -247,6 +248,7 @@ int merge(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
+    prism::remove_partial_files_on_signal(); // a merge stopped while it writes leaves no temporary file
     try {
         return merge(argc, argv);
     } catch (const std::exception& e) {

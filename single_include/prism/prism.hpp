@@ -18974,10 +18974,14 @@ private:
 // replaced. An OutputSet writes several files together, so that a run that fails leaves
 // none of them half done: every target is checked, every regular one staged, every device
 // written, and only then is every staged file renamed into place. Any failure throws
-// std::runtime_error naming the path and the reason.
+// std::runtime_error naming the path and the reason. A program stopped by a signal while
+// it writes leaves its temporary files behind unless it asked remove_partial_files_on_signal()
+// to remove them.
 
+#include <array>
 #include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -18989,6 +18993,10 @@ private:
 #include <thread>
 #include <utility>
 #include <vector>
+
+#if __has_include(<unistd.h>)
+#include <unistd.h>
+#endif
 
 namespace prism {
 
@@ -19026,8 +19034,76 @@ inline std::pair<std::filesystem::path, bool> output_target(const std::filesyste
     return {target, status.type() == fs::file_type::regular || status.type() == fs::file_type::not_found};
 }
 
+/// The temporary files being written now, for a signal handler to remove: fixed slots of
+/// fixed size, claimed and freed through atomics, so that the handler reads no memory
+/// being changed and calls nothing but unlink (async-signal-safe). A path that does not
+/// fit, or finds no free slot, goes unlisted.
+class PartialFiles {
+public:
+    static constexpr std::size_t slots = 64, longest = 4095;
+
+    /// List `path` (a temporary file just created).
+    void add(const std::filesystem::path& path) noexcept
+    {
+        const std::string& text = path.native();
+        if (text.size() > longest) return;
+        for (std::size_t i = 0; i < slots; ++i) {
+            bool unclaimed = false;
+            if (!claimed_[i].compare_exchange_strong(unclaimed, true)) continue;
+            text.copy(paths_[i].data(), text.size());
+            paths_[i][text.size()] = '\0';
+            listed_[i].store(true); // (after the path: the handler reads only listed slots)
+            return;
+        }
+    }
+
+    /// Unlist `path` (renamed into place, or removed).
+    void drop(const std::filesystem::path& path) noexcept
+    {
+        for (std::size_t i = 0; i < slots; ++i)
+            if (listed_[i].load() && path.native() == paths_[i].data()) {
+                listed_[i].store(false);
+                claimed_[i].store(false);
+                return;
+            }
+    }
+
+    /// Remove every listed file (from a signal handler).
+    void remove_all() noexcept
+    {
+        for (std::size_t i = 0; i < slots; ++i)
+            if (listed_[i].load()) {
+#if __has_include(<unistd.h>)
+                ::unlink(paths_[i].data());
+#else
+                std::remove(paths_[i].data());
+#endif
+            }
+    }
+
+private:
+    std::array<std::atomic<bool>, slots> claimed_{}, listed_{};
+    std::array<std::array<char, longest + 1>, slots> paths_{};
+};
+
+/// The process's list of temporary files (built before any signal handler can read it:
+/// remove_partial_files_on_signal() builds it).
+inline PartialFiles& partial_files() noexcept
+{
+    static PartialFiles files;
+    return files;
+}
+
+/// Remove a staged temporary file, and unlist it.
+inline void discard_staged(const std::filesystem::path& temporary) noexcept
+{
+    std::remove(temporary.c_str());
+    partial_files().drop(temporary);
+}
+
 /// Bytes written to a new temporary file beside `target` (created exclusively, never
-/// through an existing name); its path. `path` names the target in messages.
+/// through an existing name); its path, listed in partial_files() until the caller drops
+/// it. `path` names the target in messages.
 inline std::filesystem::path stage_file(const std::filesystem::path& path, const std::filesystem::path& target, std::span<const unsigned char> bytes)
 {
     static std::atomic<unsigned> serial{0};
@@ -19040,8 +19116,9 @@ inline std::filesystem::path stage_file(const std::filesystem::path& path, const
         if (file == nullptr && errno != EEXIST) throw_io(path, std::strerror(errno));
     }
     if (file == nullptr) throw_io(path, "no free temporary name beside it");
+    partial_files().add(temporary);
     if (const int failure = write_and_close(file, bytes)) {
-        std::remove(temporary.c_str());
+        discard_staged(temporary);
         throw_io(path, std::strerror(failure));
     }
     return temporary;
@@ -19068,6 +19145,7 @@ inline void write_file_atomically(const std::filesystem::path& path, std::span<c
     const std::filesystem::path temporary = stage_file(path, target, bytes);
     std::error_code error;
     std::filesystem::rename(temporary, target, error);
+    partial_files().drop(temporary);
     if (error) {
         std::remove(temporary.c_str());
         throw_io(path, error.message());
@@ -19075,6 +19153,20 @@ inline void write_file_atomically(const std::filesystem::path& path, std::span<c
 }
 
 } // namespace detail
+
+/// Remove the temporary files being written when SIGINT, SIGTERM or SIGHUP stops the
+/// program, then stop it as the signal would have (its default action, raised again).
+/// For a program (the examples call it first); a library does not take signals on its own.
+inline void remove_partial_files_on_signal()
+{
+    (void)detail::partial_files(); // built now, not first inside a handler
+    for (const int number : {SIGINT, SIGTERM, SIGHUP})
+        std::signal(number, [](int caught) {
+            detail::partial_files().remove_all();
+            std::signal(caught, SIG_DFL);
+            std::raise(caught);
+        });
+}
 
 /// Files written together, all or none: add() collects each file's bytes; commit() checks
 /// every target (a directory is refused), writes every regular one to a temporary file
@@ -19106,7 +19198,7 @@ public:
         std::vector<std::pair<std::size_t, std::filesystem::path>> devices;
         std::vector<Staged> staged;
         const auto discard = [&] {
-            for (const Staged& s : staged) std::remove(s.temporary.c_str());
+            for (const Staged& s : staged) detail::discard_staged(s.temporary);
         };
         try {
             std::vector<std::pair<std::filesystem::path, bool>> targets;
@@ -19122,8 +19214,9 @@ public:
         for (std::size_t k = 0; k < staged.size(); ++k) {
             std::error_code error;
             std::filesystem::rename(staged[k].temporary, staged[k].target, error);
+            detail::partial_files().drop(staged[k].temporary);
             if (error) {
-                for (std::size_t j = k; j < staged.size(); ++j) std::remove(staged[j].temporary.c_str());
+                for (std::size_t j = k; j < staged.size(); ++j) detail::discard_staged(staged[j].temporary);
                 detail::throw_io(staged[k].path, error.message());
             }
         }

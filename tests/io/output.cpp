@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <csignal>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -85,4 +87,30 @@ TEST_CASE("an OutputSet that cannot write one file writes none, and leaves no te
         CHECK(output_test::files_in(dir) == 3);
     }
     fs::remove_all(dir);
+}
+
+TEST_CASE("a program stopped by SIGTERM while it writes leaves no temporary file, once it asked remove_partial_files_on_signal()")
+{
+    // Regression: SIGTERM during the final write left *.prism-partial-* files (90 MB).
+    // A child stages a file (as OutputSet::commit does before its renames) and is
+    // stopped; with the handler the temporary is gone, without it it stays.
+    for (const bool handled : {true, false}) {
+        CAPTURE(handled);
+        const fs::path dir = output_test::scratch_folder(handled ? "signal" : "signal-unhandled");
+        const pid_t child = fork();
+        REQUIRE(child >= 0);
+        if (child == 0) {
+            std::signal(SIGTERM, SIG_DFL); // (not the test runner's crash report)
+            if (handled) prism::remove_partial_files_on_signal();
+            (void)prism::detail::stage_file(dir / "image.png", dir / "image.png", output_test::bytes_of(std::string(1 << 20, 'x')));
+            std::raise(SIGTERM);
+            _exit(0); // (not reached)
+        }
+        int status = 0;
+        REQUIRE(waitpid(child, &status, 0) == child);
+        CHECK(WIFSIGNALED(status));
+        CHECK(WTERMSIG(status) == SIGTERM);
+        CHECK(output_test::files_in(dir) == (handled ? 0 : 1));
+        fs::remove_all(dir);
+    }
 }
