@@ -92,6 +92,24 @@ TEST_CASE("a baseline JPEG as a texture, within JPEG's own loss; progressive and
     CHECK_THROWS_WITH_AS((void)prism::load_texture(dir / "ramp.jpg", {.limits = {.max_pixels = 255}}),
                          doctest::Contains("256 x 1 pixels, more than the limit of 255 (ReadLimits::max_pixels)"), std::runtime_error);
     CHECK(prism::load_texture(dir / "ramp.jpg", {.limits = {.max_pixels = 256}}).width() == 256);
+    // Regression: without Huffman tables stb_image decoded from memory it never wrote
+    // (valgrind). Each table's segments cut out, up to the scan.
+    const auto without = [&](unsigned char marker) {
+        std::string out = whole.substr(0, 2);
+        for (std::size_t at = 2; at + 4 <= whole.size();) {
+            const auto length = std::size_t(static_cast<unsigned char>(whole[at + 2])) << 8 | static_cast<unsigned char>(whole[at + 3]);
+            if (static_cast<unsigned char>(whole[at + 1]) == 0xda) return out + whole.substr(at);
+            if (static_cast<unsigned char>(whole[at + 1]) != marker) out += whole.substr(at, 2 + length);
+            at += 2 + length;
+        }
+        return out;
+    };
+    texture_bytes_to(dir / "no-huffman.jpg", without(0xc4));
+    CHECK_THROWS_WITH_AS((void)prism::read_jpeg(dir / "no-huffman.jpg"), doctest::Contains("it has no Huffman table (a DHT segment) before its scan"),
+                         std::runtime_error);
+    texture_bytes_to(dir / "no-quantization.jpg", without(0xdb));
+    CHECK_THROWS_WITH_AS((void)prism::read_jpeg(dir / "no-quantization.jpg"), doctest::Contains("it has no quantization table (a DQT segment) before its scan"),
+                         std::runtime_error);
     texture_bytes_to(dir / "cut.jpg", whole.substr(0, sof + 4));
     CHECK_THROWS_WITH_AS((void)prism::read_jpeg(dir / "cut.jpg"), doctest::Contains("it is truncated"), std::runtime_error);
     texture_bytes_to(dir / "torn.jpg", whole.substr(0, whole.size() - 200));
