@@ -19494,9 +19494,10 @@ try {
 
 /// Read a baseline JPEG (JFIF or Exif; grey or YCbCr) as its 8-bit RGB bytes. The file is
 /// read no further than `limits`, and its markers are walked before stb_image allocates
-/// the picture: the frame header must come before the scan, its size be 1 to 65535 on
-/// each side, and its pixels no more than its bytes can hold (a baseline scan spends at
-/// least two bits on each 8 x 8 block: 256 pixels a byte). Progressive and arithmetic-coded
+/// the picture: the frame header and the Huffman and quantization tables must come
+/// before the scan, its size be 1 to 65535 on each side, and its pixels no more than its
+/// bytes can hold (a baseline scan spends at least two bits on each 8 x 8 block: 256
+/// pixels a byte). Progressive and arithmetic-coded
 /// JPEGs are refused (a progressive scan can cover thousands of blocks with one code).
 [[nodiscard]] inline detail::Bytes8 read_jpeg_bytes(const std::filesystem::path& path, ReadLimits limits = {})
 try {
@@ -19509,7 +19510,7 @@ try {
     bytes.insert(bytes.end(), rest.begin(), rest.end());
     // The markers up to the first scan: each segment's length must fit in the file.
     std::size_t at = 2;
-    bool frame = false;
+    bool frame = false, huffman = false, quantization = false;
     while (true) {
         if (at + 4 > bytes.size()) file.fail("it is truncated (no scan before byte " + std::to_string(bytes.size()) + ")");
         if (bytes[at] != 0xff) file.fail("it is corrupt (byte " + std::to_string(at) + " is not a marker)");
@@ -19534,8 +19535,14 @@ try {
             file.check_pixels(width, height, "its frame header");
             frame = true;
         }
+        huffman = huffman || marker == 0xc4;
+        quantization = quantization || marker == 0xdb;
         if (marker == 0xda) {
             if (!frame) file.fail("its scan comes before a frame header");
+            // stb_image would decode with tables it never filled (a motion-JPEG frame
+            // that relies on the standard's tables has none).
+            if (!huffman) file.fail("it has no Huffman table (a DHT segment) before its scan");
+            if (!quantization) file.fail("it has no quantization table (a DQT segment) before its scan");
             break;
         }
         at += 2 + length;
