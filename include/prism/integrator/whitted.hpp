@@ -132,14 +132,14 @@ private:
     // Pcg32*) only where the scene has lights with extent (area, environment): GCC optimises a recursion that
     // carries none to less code, 7 % faster to compile.
 
+    /// Whether the scene or its air holds a medium that scatters.
+    static constexpr bool has_media = SceneT::has_scattering_media || air_scatters<Air>;
+
     /// Radiance along the ray for light of one wavelength (nanometres), or of all (0):
     /// a ray carries one once it has refracted through a dispersive interface. `media`:
     /// the transmissive objects the ray is inside of (medium/nesting.hpp). `lights_counted`:
     /// the ray stands in for a glossy lobe whose light samples counted the lights with a
     /// surface, so an emitting surface it meets is not counted again.
-    /// Whether the scene or its air holds a medium that scatters.
-    static constexpr bool has_media = SceneT::has_scattering_media || air_scatters<Air>;
-
     template <class... Jitter>
     [[nodiscard]] Rgb<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, T wavelength, const MediumStack& media, bool lights_counted,
                                Jitter... jitter) const noexcept

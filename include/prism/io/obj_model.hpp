@@ -34,7 +34,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -209,9 +208,9 @@ inline std::vector<MtlMaterial> read_mtl(const std::filesystem::path& path, Read
         else fail("'" + printable(keyword.substr(0, 32)) + "' is not a .mtl statement prism knows");
         // (std::to_string's six decimals would show 1e-45 as 0.)
         const auto shown = [](double v) {
-            char digits[32];
-            std::snprintf(digits, sizeof digits, "%g", v);
-            return std::string(digits);
+            std::string digits;
+            append_part(digits, v);
+            return digits;
         };
         if (!(m.ns >= 0 && m.ns <= detail::greatest_lobe_exponent))
             fail("'Ns' must be from 0 to 1e6 (a sharper highlight is a mirror), got " + shown(m.ns));
