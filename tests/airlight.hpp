@@ -10,6 +10,7 @@
 
 #include <prism/prism.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace test {
@@ -69,5 +70,38 @@ inline double airlight_along(int c, const prism::Vec3<double>& origin, const pri
 
 /// The single-scattered radiance along airlight_ray() in channel c, by quadrature.
 inline double airlight(int c) { return airlight_along(c, {-2, 0, 0}, {1, 0, 0}, {0, 1, 0}); }
+
+/// The same fog filling only a ball of `radius` about the origin, clear air outside (a
+/// ball of smoke: the fog inside an index-1 object): the single-scattered radiance of a
+/// point light of intensity 1 at `light` (inside or outside the ball) along the ray from
+/// `origin` in unit direction `w`, in channel c, by Simpson's rule over the ray's chord of
+/// the ball with n (even) intervals; the light's way to each point is attenuated over
+/// the part of it inside the ball only.
+inline double smoke_ball_airlight(int c, const prism::Vec3<double>& origin, const prism::Vec3<double>& w, const prism::Vec3<double>& light, double radius,
+                                  int n = 20000)
+{
+    using prism::dot;
+    // Where a line from p along unit u leaves the ball (p inside it).
+    const auto exit_along = [&](const prism::Vec3<double>& p, const prism::Vec3<double>& u) {
+        const double b = dot(p, u);
+        return -b + std::sqrt(std::max(b * b - (dot(p, p) - radius * radius), 0.0));
+    };
+    const double b = dot(origin, w), disc = b * b - (dot(origin, origin) - radius * radius);
+    if (disc <= 0) return 0.0;
+    const double s0 = std::max(0.0, -b - std::sqrt(disc)), s1 = -b + std::sqrt(disc);
+    if (s1 <= s0) return 0.0;
+    const double st = airlight_absorption[c] + airlight_scattering[c];
+    const prism::HenyeyGreenstein<double> hg{airlight_g};
+    const auto f = [&](double s) {
+        const prism::Vec3<double> p = origin + s * w, to_point = p - light;
+        const double d = prism::length(to_point);
+        const double inside = std::min(d, exit_along(p, -to_point / d));
+        return airlight_scattering[c] * std::exp(-st * (s - s0)) * hg.value(-dot(to_point, w) / d) / (d * d) * std::exp(-st * inside);
+    };
+    const double h = (s1 - s0) / n;
+    double sum = f(s0) + f(s1);
+    for (int i = 1; i < n; ++i) sum += f(s0 + i * h) * (i % 2 ? 4 : 2);
+    return sum * h / 3;
+}
 
 } // namespace test

@@ -7631,6 +7631,28 @@ template <Material M>
 template <Material M>
 inline constexpr bool has_scattering_interior = detail::interior_scatters<M>();
 
+/// The material is an interface that may vanish: a smooth dielectric whose reflectance is
+/// 0 where the indices on its two sides are equal (`index_matched(outside_index)`), so
+/// that light crosses it unbent and unreflected, only tinted (an index-1 Dielectric
+/// around a fog in the air: a ball of smoke). Paths and shadow rays alike pass such a
+/// boundary as if it were not there, taking its tint and what its medium lets through,
+/// so that every estimator finds the light behind it the same way (a point light's
+/// included: it could never be found through a real interface). A dispersive or glossy
+/// interface, or a thin film, never vanishes.
+template <Material M>
+inline constexpr bool may_match_index = M::transmits && !has_glossy<M> && !disperses<M> && requires(const M& m, typename M::scalar_type outside) {
+    { m.index_matched(outside) } -> std::same_as<bool>;
+};
+
+/// Whether a light path crossing `material` from a medium of index `outside_index` meets
+/// no interface at all (may_match_index).
+template <Material M>
+[[nodiscard]] constexpr bool index_matched(const M& material, typename M::scalar_type outside_index) noexcept
+{
+    if constexpr (may_match_index<M>) return material.index_matched(outside_index);
+    else return (void)material, (void)outside_index, false;
+}
+
 } // namespace prism
 
 // ---- prism/spectrum/cie_tables.hpp ----
@@ -9630,7 +9652,8 @@ template <class Air, Scalar T>
 //
 // From a ray carrying `power`, hit by hit: the medium the path crossed attenuates it;
 // at a diffuse or glossy surface the caller's `on_diffuse` sees the vertex (and may stop the walk);
-// false interfaces (inside a medium of higher priority) are passed; a white path meeting
+// false interfaces (inside a medium of higher priority) and index-matched ones
+// (may_match_index) are passed; a white path meeting
 // a dispersive interface takes one wavelength band at random; then scatter_photon picks
 // the next direction (material/scattering.hpp): a photon by Russian roulette at every
 // bounce, which keeps its power bounded; a camera path by its lobes alone, ended by
@@ -9897,6 +9920,17 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 outside = outside_of(media, face, c.entering);
             }
             const T outside_index = transmits<M> ? T(index_of(scene, outside, wavelength)) : T(1);
+            if constexpr (may_match_index<M>) {
+                // An index-matched boundary is no vertex: the path goes on straight, its
+                // tint taken, as a shadow ray passes it (Scene::transmittance).
+                if (material.index_matched(outside_index)) {
+                    if constexpr (Mode == Transport::radiance) power *= material.transmission_tint();
+                    else if (!russian_roulette(power, material.transmission_tint(), rng)) return Next::absorbed;
+                    ray = spawn_ray(c.point, c.error, c.normal, d);
+                    media = face.beyond;
+                    return Next::passed;
+                }
+            }
             Lobes lobes = Lobes::all;
             // (A glossy lobe that is a mirror has no vertex of its own.)
             if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
@@ -10058,11 +10092,12 @@ public:
             has_sphere_ = true;
         }
         add_emitters(global_, false, {});
-        // Every light aimed at each bounded specular object.
+        // Every light aimed at each bounded specular object (not at an index-matched
+        // boundary, which makes no caustic: may_match_index).
         scene.for_each_object([&]<class Object>(const Object& object) {
             using M = typename Object::material_type;
             if constexpr (reflects<M> || transmits<M>) {
-                if (object.bounded) add_emitters(targets_, true, bounding_sphere(object.shape));
+                if (object.bounded && !index_matched(object.material, T(1))) add_emitters(targets_, true, bounding_sphere(object.shape));
             }
         });
         drop_nested_targets();
@@ -12316,6 +12351,9 @@ public:
 
     /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
     static constexpr bool has_transmissive = detail::any_of({transmits<typename Slots::material_type>...});
+    /// Some material may be an index-matched boundary (may_match_index): shadow rays that
+    /// glass blocks still pass it.
+    static constexpr bool has_index_matching = detail::any_of({may_match_index<typename Slots::material_type>...});
     /// Some material's interior scatters light (a Fog): walks sample where they scatter in it.
     static constexpr bool has_scattering_media = detail::any_of({has_scattering_interior<typename Slots::material_type>...});
     /// Some material reads surface coordinates (a texture, a normal map): its crossings take
@@ -12423,7 +12461,9 @@ public:
     /// refraction ignored, the classic Whitted shadow rays through transparent objects).
     /// With ShadowsThroughGlass::blocked dielectrics block the ray like any other
     /// object: a photon mapper brings the light through them by its caustic map instead
-    /// (as POV-Ray does for photon targets).
+    /// (as POV-Ray does for photon targets). All but an index-matched boundary in the air
+    /// (may_match_index: a ball of smoke), which bends nothing, so that nothing else could
+    /// bring its light: it attenuates the ray either way.
     template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated>
     [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
     {
@@ -12432,7 +12472,7 @@ public:
         if (!open_along<Glass>(ray, t_max, tr, boundaries)) return Rgb<T>{T(0)};
         // Where transmissive objects overlap, the higher priority's medium fills the
         // overlap (medium/nesting.hpp): walk the boundaries in order instead.
-        if constexpr (has_transmissive && Glass == ShadowsThroughGlass::attenuated) {
+        if constexpr (any_pass<Glass>) {
             if (boundaries.sort_and_find_overlap()) return detail::transmittance_by_priority(*this, ray, t_max, boundaries);
         }
         return tr;
@@ -12757,10 +12797,21 @@ private:
         return hit;
     }
 
-    /// Whether the slot's material lets a shadow ray through (attenuated) rather than
-    /// blocking it.
+    /// Whether the slot's material may let a shadow ray through (attenuated) rather than
+    /// block it: glass, where shadows pass it; else an index-matched boundary (passes).
     template <std::size_t I, ShadowsThroughGlass Glass>
-    static constexpr bool attenuates = transmits<typename SlotAt<I>::material_type> && Glass == ShadowsThroughGlass::attenuated;
+    static constexpr bool may_pass =
+        transmits<typename SlotAt<I>::material_type> && (Glass == ShadowsThroughGlass::attenuated || may_match_index<typename SlotAt<I>::material_type>);
+    /// Whether some slot's material may.
+    template <ShadowsThroughGlass Glass>
+    static constexpr bool any_pass = has_transmissive && (Glass == ShadowsThroughGlass::attenuated || has_index_matching);
+
+    /// Whether a shadow ray passes `material` (may_pass), in the air (index 1).
+    template <ShadowsThroughGlass Glass, class M>
+    [[nodiscard]] static constexpr bool passes(const M& material) noexcept
+    {
+        return Glass == ShadowsThroughGlass::attenuated || index_matched(material, T(1));
+    }
 
     /// transmittance's first pass: whether the ray is open. Opaque objects end it at their
     /// first crossing, in whatever order they are met; the transmissive ones met are
@@ -12772,14 +12823,15 @@ private:
         const Interval<T> range{T(0), t_max};
         detail::ShadowKeys met;
         const auto blocks_in = [&]<std::size_t I>(Index<I>, std::uint32_t k, std::uint32_t copy) {
-            if constexpr (attenuates<I, Glass>) {
-                met.add({std::uint32_t(I), k});
-                return false;
-            } else {
-                if constexpr (slot_count == 1)
-                    if (copy != no_copy) return any_crossing(shapes_[copy], ray, range);
-                return any_crossing(object_at<I>(k).shape, ray, range);
+            if constexpr (may_pass<I, Glass>) {
+                if (passes<Glass>(object_at<I>(k).material)) {
+                    met.add({std::uint32_t(I), k});
+                    return false;
+                }
             }
+            if constexpr (slot_count == 1)
+                if (copy != no_copy) return any_crossing(shapes_[copy], ray, range);
+            return any_crossing(object_at<I>(k).shape, ray, range);
         };
         const auto blocks = [&](const detail::ObjectKey& key, std::uint32_t copy) {
             return dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) { return blocks_in(Index<I>{}, key.index, copy); });
@@ -12797,14 +12849,15 @@ private:
             // block it.)
             if (scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) { return blocks_in(Index<I>{}, k, no_copy); })) return false;
         }
-        if constexpr (has_transmissive && Glass == ShadowsThroughGlass::attenuated) {
+        if constexpr (any_pass<Glass>) {
             // More met than the list holds: every transmissive object, in key order (one
             // the ray misses changes nothing).
             const std::span<const detail::ObjectKey> in_order = met.overflow ? std::span<const detail::ObjectKey>(glass_) : met.sorted();
             for (const detail::ObjectKey& key : in_order) {
                 dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) {
-                    if constexpr (attenuates<I, Glass>) {
+                    if constexpr (may_pass<I, Glass>) {
                         const auto& object = object_at<I>(key.index);
+                        if (!passes<Glass>(object.material)) return;
                         const auto crossings = object.shape.template crossings<false>(ray, range);
                         attenuate_shadow_ray(object.material, crossings, ray, t_max, tr);
                         if (crossings.inside_at_start) boundaries.add({T(0), key.slot, key.index, true, true});
@@ -13202,7 +13255,9 @@ void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, F&& f)
 // weighted choice at glass, one wavelength band at a dispersive interface), but ended by
 // Russian roulette on its throughput after its first few surfaces, not at each bounce, and, at every diffuse vertex, adds the light arriving from each
 // light by a shadow ray: next-event estimation, the only way a path can meet a point or
-// parallel light. Glass is opaque to shadow rays, as in the photon mapper: a path whose
+// parallel light. Glass is opaque to shadow rays, as in the photon mapper (but for an
+// index-matched boundary, which bends nothing and is no vertex of a path either: a ball of
+// smoke, may_match_index; shadow rays pass it, through its medium): a path whose
 // vertex next to the light is specular (L S ...) cannot be found from the camera, and
 // is the light tracer's. The two estimators count disjoint sets of paths, so their sum
 // is every path either can sample:
@@ -13487,7 +13542,9 @@ private:
 
     /// What the scene's air lets through along a light sample's shadow ray from `p` in a
     /// medium: its medium's transmittance for a point in the air (FilledAir), 1 inside an
-    /// object (its shadow ray is the scene's to stop at the object's glass) or in clear air.
+    /// object (its shadow ray is the scene's, to stop at the object's glass or to pass an
+    /// index-matched boundary through the object's medium) or in clear air. (From inside a
+    /// ball of smoke in FilledAir, the air beyond the ball is not counted.)
     /// (From a surface a shadow ray that reaches the light goes through the air all the way,
     /// frosted glass's far side included: air_transmittance.)
     [[nodiscard]] Rgb<T> through_air(const MediumStack& media, const Vec3<T>& p, const LightSample<T>& s) const noexcept
@@ -16284,6 +16341,10 @@ struct Dielectric {
     [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(kt); }
     /// The medium inside.
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior; }
+    /// Whether the index outside equals the index inside, with exact Fresnel: the
+    /// reflectance is then 0 at every angle and the boundary vanishes but for kt
+    /// (may_match_index). Schlick's approximation still reflects (1 - cos)^5 there.
+    [[nodiscard]] constexpr bool index_matched(T outside_index) const noexcept { return std::same_as<Fresnel, ExactFresnel> && ior == outside_index; }
 
     /// Throws std::invalid_argument, naming the parameter, for ior <= 0, a bad interior, or a negative kr or kt.
     constexpr void validate() const

@@ -63,6 +63,36 @@ TEST_CASE("transmittance: opaque blocks, a dielectric absorbs by Beer-Lambert al
     CHECK(scene.transmittance<prism::ShadowsThroughGlass::blocked>({{0, 0, 0}, {1, 0, 0}}, 3.9) == Rgb<double>(1));
 }
 
+TEST_CASE("an index-matched boundary (an index-1 ball in the air, exact Fresnel) lets a shadow ray through even where glass blocks it, through its medium")
+{
+    // Three balls along x, each of radius 1 and absorption 0.5: index 1 with exact
+    // Fresnel (vanishes: may_match_index), index 1 with Schlick's Fresnel (which still
+    // reflects at grazing angles: not matched) and index 1.5.
+    using prism::ShadowsThroughGlass;
+    using Matched = Dielectric<double>;
+    using Schlick = Dielectric<double, SchlickFresnel>;
+    static_assert(may_match_index<Matched> && may_match_index<Schlick> && !may_match_index<Diffuse<double>>);
+    const Homogeneous<double> absorbing{.absorption = Rgb<double>(0.5)};
+    const auto scene = Scene{Lights{PointLight<double>{}}, Object{Sphere<double>({3, 0, 0}, 1), Matched{.ior = 1, .interior = absorbing, .kt = 0.8}},
+                             Object{Sphere<double>({6, 0, 0}, 1), Schlick{.ior = 1, .interior = absorbing}},
+                             Object{Sphere<double>({9, 0, 0}, 1), Matched{.ior = 1.5, .interior = absorbing}}};
+    static_assert(decltype(scene)::has_index_matching);
+    CHECK(index_matched(Matched{.ior = 1}, 1.0));
+    CHECK(!index_matched(Matched{.ior = 1}, 1.5)); // nested in glass, it refracts
+    CHECK(!index_matched(Schlick{.ior = 1}, 1.0));
+    // Through the first ball's diameter: e^-1 and its tint at both crossings.
+    const Rgb<double> through = scene.transmittance<ShadowsThroughGlass::blocked>({{0, 0, 0}, {1, 0, 0}}, 4.5);
+    CHECK(through.x == doctest::Approx(std::exp(-1.0) * 0.64));
+    CHECK(through == scene.transmittance({{0, 0, 0}, {1, 0, 0}}, 4.5));
+    // From its centre: half the chord, one crossing.
+    CHECK(scene.transmittance<ShadowsThroughGlass::blocked>({{3, 0, 0}, {0, 1, 0}}, 10).x == doctest::Approx(std::exp(-0.5) * 0.8));
+    // The others block it; Whitted's shadows pass every one.
+    CHECK(scene.transmittance<ShadowsThroughGlass::blocked>({{0, 0, 0}, {1, 0, 0}}, 7.5) == Rgb<double>(0));
+    CHECK(scene.transmittance<ShadowsThroughGlass::blocked>({{4.5, 0, 0}, {1, 0, 0}}, 7.5) == Rgb<double>(0));
+    CHECK(scene.transmittance({{7.5, 0, 0}, {1, 0, 0}}, 10).x == doctest::Approx(std::exp(-1.0)));
+    CHECK(scene.transmittance<ShadowsThroughGlass::blocked>({{7.5, 0, 0}, {1, 0, 0}}, 10) == Rgb<double>(0));
+}
+
 TEST_CASE("bounds() holds every bounded object; lights are visited by number with their own types")
 {
     const auto scene = test_scene();

@@ -6,7 +6,9 @@
 // weighted choice at glass, one wavelength band at a dispersive interface), but ended by
 // Russian roulette on its throughput after its first few surfaces, not at each bounce, and, at every diffuse vertex, adds the light arriving from each
 // light by a shadow ray: next-event estimation, the only way a path can meet a point or
-// parallel light. Glass is opaque to shadow rays, as in the photon mapper: a path whose
+// parallel light. Glass is opaque to shadow rays, as in the photon mapper (but for an
+// index-matched boundary, which bends nothing and is no vertex of a path either: a ball of
+// smoke, may_match_index; shadow rays pass it, through its medium): a path whose
 // vertex next to the light is specular (L S ...) cannot be found from the camera, and
 // is the light tracer's. The two estimators count disjoint sets of paths, so their sum
 // is every path either can sample:
@@ -302,7 +304,9 @@ private:
 
     /// What the scene's air lets through along a light sample's shadow ray from `p` in a
     /// medium: its medium's transmittance for a point in the air (FilledAir), 1 inside an
-    /// object (its shadow ray is the scene's to stop at the object's glass) or in clear air.
+    /// object (its shadow ray is the scene's, to stop at the object's glass or to pass an
+    /// index-matched boundary through the object's medium) or in clear air. (From inside a
+    /// ball of smoke in FilledAir, the air beyond the ball is not counted.)
     /// (From a surface a shadow ray that reaches the light goes through the air all the way,
     /// frosted glass's far side included: air_transmittance.)
     [[nodiscard]] Rgb<T> through_air(const MediumStack& media, const Vec3<T>& p, const LightSample<T>& s) const noexcept

@@ -46,6 +46,10 @@ struct Dielectric {
     [[nodiscard]] constexpr Rgb<T> transmission_tint() const noexcept { return Rgb<T>(kt); }
     /// The medium inside.
     [[nodiscard]] constexpr const Interior& medium() const noexcept { return interior; }
+    /// Whether the index outside equals the index inside, with exact Fresnel: the
+    /// reflectance is then 0 at every angle and the boundary vanishes but for kt
+    /// (may_match_index). Schlick's approximation still reflects (1 - cos)^5 there.
+    [[nodiscard]] constexpr bool index_matched(T outside_index) const noexcept { return std::same_as<Fresnel, ExactFresnel> && ior == outside_index; }
 
     /// Throws std::invalid_argument, naming the parameter, for ior <= 0, a bad interior, or a negative kr or kt.
     constexpr void validate() const

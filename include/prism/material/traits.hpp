@@ -270,4 +270,26 @@ template <Material M>
 template <Material M>
 inline constexpr bool has_scattering_interior = detail::interior_scatters<M>();
 
+/// The material is an interface that may vanish: a smooth dielectric whose reflectance is
+/// 0 where the indices on its two sides are equal (`index_matched(outside_index)`), so
+/// that light crosses it unbent and unreflected, only tinted (an index-1 Dielectric
+/// around a fog in the air: a ball of smoke). Paths and shadow rays alike pass such a
+/// boundary as if it were not there, taking its tint and what its medium lets through,
+/// so that every estimator finds the light behind it the same way (a point light's
+/// included: it could never be found through a real interface). A dispersive or glossy
+/// interface, or a thin film, never vanishes.
+template <Material M>
+inline constexpr bool may_match_index = M::transmits && !has_glossy<M> && !disperses<M> && requires(const M& m, typename M::scalar_type outside) {
+    { m.index_matched(outside) } -> std::same_as<bool>;
+};
+
+/// Whether a light path crossing `material` from a medium of index `outside_index` meets
+/// no interface at all (may_match_index).
+template <Material M>
+[[nodiscard]] constexpr bool index_matched(const M& material, typename M::scalar_type outside_index) noexcept
+{
+    if constexpr (may_match_index<M>) return material.index_matched(outside_index);
+    else return (void)material, (void)outside_index, false;
+}
+
 } // namespace prism

@@ -131,11 +131,12 @@ public:
             has_sphere_ = true;
         }
         add_emitters(global_, false, {});
-        // Every light aimed at each bounded specular object.
+        // Every light aimed at each bounded specular object (not at an index-matched
+        // boundary, which makes no caustic: may_match_index).
         scene.for_each_object([&]<class Object>(const Object& object) {
             using M = typename Object::material_type;
             if constexpr (reflects<M> || transmits<M>) {
-                if (object.bounded) add_emitters(targets_, true, bounding_sphere(object.shape));
+                if (object.bounded && !index_matched(object.material, T(1))) add_emitters(targets_, true, bounding_sphere(object.shape));
             }
         });
         drop_nested_targets();

@@ -90,6 +90,9 @@ public:
 
     /// Some material refracts: the integrator needs refraction and Beer-Lambert code.
     static constexpr bool has_transmissive = detail::any_of({transmits<typename Slots::material_type>...});
+    /// Some material may be an index-matched boundary (may_match_index): shadow rays that
+    /// glass blocks still pass it.
+    static constexpr bool has_index_matching = detail::any_of({may_match_index<typename Slots::material_type>...});
     /// Some material's interior scatters light (a Fog): walks sample where they scatter in it.
     static constexpr bool has_scattering_media = detail::any_of({has_scattering_interior<typename Slots::material_type>...});
     /// Some material reads surface coordinates (a texture, a normal map): its crossings take
@@ -197,7 +200,9 @@ public:
     /// refraction ignored, the classic Whitted shadow rays through transparent objects).
     /// With ShadowsThroughGlass::blocked dielectrics block the ray like any other
     /// object: a photon mapper brings the light through them by its caustic map instead
-    /// (as POV-Ray does for photon targets).
+    /// (as POV-Ray does for photon targets). All but an index-matched boundary in the air
+    /// (may_match_index: a ball of smoke), which bends nothing, so that nothing else could
+    /// bring its light: it attenuates the ray either way.
     template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated>
     [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
     {
@@ -206,7 +211,7 @@ public:
         if (!open_along<Glass>(ray, t_max, tr, boundaries)) return Rgb<T>{T(0)};
         // Where transmissive objects overlap, the higher priority's medium fills the
         // overlap (medium/nesting.hpp): walk the boundaries in order instead.
-        if constexpr (has_transmissive && Glass == ShadowsThroughGlass::attenuated) {
+        if constexpr (any_pass<Glass>) {
             if (boundaries.sort_and_find_overlap()) return detail::transmittance_by_priority(*this, ray, t_max, boundaries);
         }
         return tr;
@@ -531,10 +536,21 @@ private:
         return hit;
     }
 
-    /// Whether the slot's material lets a shadow ray through (attenuated) rather than
-    /// blocking it.
+    /// Whether the slot's material may let a shadow ray through (attenuated) rather than
+    /// block it: glass, where shadows pass it; else an index-matched boundary (passes).
     template <std::size_t I, ShadowsThroughGlass Glass>
-    static constexpr bool attenuates = transmits<typename SlotAt<I>::material_type> && Glass == ShadowsThroughGlass::attenuated;
+    static constexpr bool may_pass =
+        transmits<typename SlotAt<I>::material_type> && (Glass == ShadowsThroughGlass::attenuated || may_match_index<typename SlotAt<I>::material_type>);
+    /// Whether some slot's material may.
+    template <ShadowsThroughGlass Glass>
+    static constexpr bool any_pass = has_transmissive && (Glass == ShadowsThroughGlass::attenuated || has_index_matching);
+
+    /// Whether a shadow ray passes `material` (may_pass), in the air (index 1).
+    template <ShadowsThroughGlass Glass, class M>
+    [[nodiscard]] static constexpr bool passes(const M& material) noexcept
+    {
+        return Glass == ShadowsThroughGlass::attenuated || index_matched(material, T(1));
+    }
 
     /// transmittance's first pass: whether the ray is open. Opaque objects end it at their
     /// first crossing, in whatever order they are met; the transmissive ones met are
@@ -546,14 +562,15 @@ private:
         const Interval<T> range{T(0), t_max};
         detail::ShadowKeys met;
         const auto blocks_in = [&]<std::size_t I>(Index<I>, std::uint32_t k, std::uint32_t copy) {
-            if constexpr (attenuates<I, Glass>) {
-                met.add({std::uint32_t(I), k});
-                return false;
-            } else {
-                if constexpr (slot_count == 1)
-                    if (copy != no_copy) return any_crossing(shapes_[copy], ray, range);
-                return any_crossing(object_at<I>(k).shape, ray, range);
+            if constexpr (may_pass<I, Glass>) {
+                if (passes<Glass>(object_at<I>(k).material)) {
+                    met.add({std::uint32_t(I), k});
+                    return false;
+                }
             }
+            if constexpr (slot_count == 1)
+                if (copy != no_copy) return any_crossing(shapes_[copy], ray, range);
+            return any_crossing(object_at<I>(k).shape, ray, range);
         };
         const auto blocks = [&](const detail::ObjectKey& key, std::uint32_t copy) {
             return dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) { return blocks_in(Index<I>{}, key.index, copy); });
@@ -571,14 +588,15 @@ private:
             // block it.)
             if (scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) { return blocks_in(Index<I>{}, k, no_copy); })) return false;
         }
-        if constexpr (has_transmissive && Glass == ShadowsThroughGlass::attenuated) {
+        if constexpr (any_pass<Glass>) {
             // More met than the list holds: every transmissive object, in key order (one
             // the ray misses changes nothing).
             const std::span<const detail::ObjectKey> in_order = met.overflow ? std::span<const detail::ObjectKey>(glass_) : met.sorted();
             for (const detail::ObjectKey& key : in_order) {
                 dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) {
-                    if constexpr (attenuates<I, Glass>) {
+                    if constexpr (may_pass<I, Glass>) {
                         const auto& object = object_at<I>(key.index);
+                        if (!passes<Glass>(object.material)) return;
                         const auto crossings = object.shape.template crossings<false>(ray, range);
                         attenuate_shadow_ray(object.material, crossings, ray, t_max, tr);
                         if (crossings.inside_at_start) boundaries.add({T(0), key.slot, key.index, true, true});

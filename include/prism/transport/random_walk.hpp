@@ -4,7 +4,8 @@
 //
 // From a ray carrying `power`, hit by hit: the medium the path crossed attenuates it;
 // at a diffuse or glossy surface the caller's `on_diffuse` sees the vertex (and may stop the walk);
-// false interfaces (inside a medium of higher priority) are passed; a white path meeting
+// false interfaces (inside a medium of higher priority) and index-matched ones
+// (may_match_index) are passed; a white path meeting
 // a dispersive interface takes one wavelength band at random; then scatter_photon picks
 // the next direction (material/scattering.hpp): a photon by Russian roulette at every
 // bounce, which keeps its power bounded; a camera path by its lobes alone, ended by
@@ -285,6 +286,17 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 outside = outside_of(media, face, c.entering);
             }
             const T outside_index = transmits<M> ? T(index_of(scene, outside, wavelength)) : T(1);
+            if constexpr (may_match_index<M>) {
+                // An index-matched boundary is no vertex: the path goes on straight, its
+                // tint taken, as a shadow ray passes it (Scene::transmittance).
+                if (material.index_matched(outside_index)) {
+                    if constexpr (Mode == Transport::radiance) power *= material.transmission_tint();
+                    else if (!russian_roulette(power, material.transmission_tint(), rng)) return Next::absorbed;
+                    ray = spawn_ray(c.point, c.error, c.normal, d);
+                    media = face.beyond;
+                    return Next::passed;
+                }
+            }
             Lobes lobes = Lobes::all;
             // (A glossy lobe that is a mirror has no vertex of its own.)
             if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
