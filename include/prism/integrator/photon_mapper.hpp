@@ -209,7 +209,7 @@ public:
                 Pcg32 rng(render.seed ^ 0x1cac4eULL, c.stream);
                 const int m = std::max(1, int(std::lround(std::sqrt(T(settings.rays) / pi<T>))));
                 const int cells_n = std::max(1, settings.rays / m);
-                IrradianceRecord<T> r{c.hit.point, c.n, gather<true>(c.hit, c.n, rng, true, m, cells_n), T(0)};
+                IrradianceRecord<T> r{c.hit.point, c.n, gather<true>(c.hit, c.n, rng, scene_->media_at(c.hit.point), m, cells_n), T(0)};
                 T radius = r.gather.nearest;
                 if (settings.gradients)
                     for (int ch = 0; ch < 3; ++ch) {
@@ -353,7 +353,7 @@ private:
                 // The final gather (and the cache of its results) is over the shading normal's hemisphere.
                 const Vec3<T> n_shading = hit.facing_shading();
                 const std::optional<Rgb<T>> cached = media.empty() ? cache_.irradiance(hit.point, n_shading) : std::nullopt;
-                radiance.indirect = brdf * (cached ? *cached : gather(hit, n_shading, rng, media.empty(), gather_cells_m_, gather_cells_n_).irradiance);
+                radiance.indirect = brdf * (cached ? *cached : gather(hit, n_shading, rng, media, gather_cells_m_, gather_cells_n_).irradiance);
             }
             else radiance.indirect = brdf * Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
         }
@@ -389,7 +389,7 @@ private:
                 const Vec3<float> p(hit.point), nf(n);
                 radiance.direct += direct(hit, rng, [&](const Vec3<T>& wi) { return lobe.f(wi, Transport::radiance); });
                 radiance.caustic = Rgb<T>(maps_.caustic.radiance(p, nf, config_.caustic, reflected_by(lobe)));
-                radiance.indirect = config_.gather_rays > 0 ? gather_glossy(lobe, hit, rng, media.empty())
+                radiance.indirect = config_.gather_rays > 0 ? gather_glossy(lobe, hit, rng, media)
                                                             : Rgb<T>(maps_.global.radiance(p, nf, config_.global, reflected_by(lobe)));
             }
             // The lobe's delta part (a mirror, a smooth coat's reflection), followed as a mirror is.
@@ -507,9 +507,11 @@ private:
     /// holds every photon there): paths D S+ D carry colour bleeding seen in a mirror or
     /// through glass, and no light is counted twice, since light from a light through
     /// mirrors and glass only (L S+) is the caustic map's and a point light is never hit.
-    /// From a surface in the air (`in_air`), the rays follow the air's curve.
+    /// The rays start in the transmissive objects `media` the surface is inside of (so that
+    /// they scatter in the fog about it); from a surface in the air, they follow the air's
+    /// curve.
     template <bool Gradients = false>
-    [[nodiscard]] HemisphereGather<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Pcg32& rng, bool in_air, int m, int cells_n) const
+    [[nodiscard]] HemisphereGather<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Pcg32& rng, const MediumStack& media, int m, int cells_n) const
     {
         return gather_hemisphere<Gradients, T>(n, m, cells_n, rng, [&](const Vec3<T>& direction) {
             std::pair<Rgb<T>, T> found{Rgb<T>(T(0)), infinity<T>};
@@ -529,8 +531,8 @@ private:
                 found.second = std::min(found.second, at.travelled);
                 return false;
             };
-            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
+            if (media.empty()) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse, IgnoreEscape{}, IgnoreEmitters{}, at_medium, media);
             return found;
         });
     }
@@ -562,7 +564,7 @@ private:
     /// global map gives its radiance (global_radiance). Draws of the lobe's delta part
     /// count nothing here: the caller follows that part.
     template <class Lobe>
-    [[nodiscard]] Rgb<T> gather_glossy(const GlossyAt<Lobe>& lobe, const Crossing<T>& hit, Pcg32& rng, bool in_air) const
+    [[nodiscard]] Rgb<T> gather_glossy(const GlossyAt<Lobe>& lobe, const Crossing<T>& hit, Pcg32& rng, const MediumStack& media) const
     {
         Rgb<T> sum{T(0)};
         const auto at_vertex = [&]<class M>(const M& material, const WalkVertex<T>& at) {
@@ -578,8 +580,8 @@ private:
             const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
             if (!s || s->delta) continue;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, s->wi);
-            if (in_air) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
+            if (media.empty()) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex, IgnoreEscape{}, IgnoreEmitters{}, at_medium, media);
         }
         return sum / T(config_.gather_rays);
     }
