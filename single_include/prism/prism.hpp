@@ -10093,19 +10093,25 @@ public:
         }
         add_emitters(global_, false, {});
         // Every light aimed at each bounded specular object (not at an index-matched
-        // boundary, which makes no caustic: may_match_index).
+        // boundary, which makes no caustic: may_match_index); a light path's also at each
+        // glossy one, whose lobe may have a delta part (a mix's mirror, a smooth coat).
         scene.for_each_object([&]<class Object>(const Object& object) {
             using M = typename Object::material_type;
-            if constexpr (reflects<M> || transmits<M>) {
-                if (object.bounded && !index_matched(object.material, T(1))) add_emitters(targets_, true, bounding_sphere(object.shape));
+            if constexpr (reflects<M> || transmits<M> || has_glossy<M>) {
+                if (object.bounded && !index_matched(object.material, T(1))) {
+                    if constexpr (reflects<M> || transmits<M>) add_emitters(targets_, true, bounding_sphere(object.shape));
+                    add_emitters(path_targets_, true, bounding_sphere(object.shape));
+                }
             }
         });
-        drop_nested_targets();
+        drop_nested_targets(targets_);
+        drop_nested_targets(path_targets_);
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);
+        for (const auto& e : path_targets_) path_target_power_ += max_component(e.power);
         // A light whose power is finite can still overflow here: a parallel light's
         // irradiance times the scene's cross-section, or the sum over many lights.
-        if (!is_finite(global_power_) || !is_finite(target_power_))
+        if (!is_finite(global_power_) || !is_finite(target_power_) || !is_finite(path_target_power_))
             throw_invalid("photon emission: the lights' total power overflows (", global_power_, ", ", target_power_,
                           "); a DirectionalLight's irradiance times the scene's cross-section pi r^2 must be finite");
     }
@@ -10122,14 +10128,14 @@ public:
         for (std::size_t i = first; i < last; ++i) store(targets_, target_power_, config_.caustic_photons, i, true, out);
     }
 
-    /// Light paths [first, last) of `count` aimed at the specular objects as the caustic
-    /// map's photons are, each walked to its end: visit(material, vertex, power) at every
+    /// Light paths [first, last) of `count` aimed at the specular and glossy objects (whose
+    /// lobes may have a delta part), each walked to its end: visit(material, vertex, power) at every
     /// diffuse surface and visit_medium(medium, vertex, power) where it scatters in a
     /// medium return whether the walk goes on (the light tracer's paths).
     template <class Visit, class VisitMedium = IgnoreMedia>
     void walk_aimed(std::size_t first, std::size_t last, std::size_t count, Visit&& visit, VisitMedium&& visit_medium = {}) const
     {
-        for (std::size_t i = first; i < last; ++i) emit(targets_, target_power_, count, i, true, visit, visit_medium);
+        for (std::size_t i = first; i < last; ++i) emit(path_targets_, path_target_power_, count, i, true, visit, visit_medium);
     }
 
 private:
@@ -10263,22 +10269,22 @@ private:
 
     /// Drop the targets whose sphere lies inside another target's (an object nested in a
     /// glass): every photon aimed at them would be the outer target's to carry.
-    void drop_nested_targets()
+    static void drop_nested_targets(std::vector<Emitter<T>>& targets)
     {
         std::vector<Emitter<T>> kept;
-        for (std::size_t i = 0; i < targets_.size(); ++i) {
-            const BoundingSphere<T>& a = targets_[i].target;
+        for (std::size_t i = 0; i < targets.size(); ++i) {
+            const BoundingSphere<T>& a = targets[i].target;
             bool nested = false;
-            for (std::size_t j = 0; j < targets_.size() && !nested; ++j) {
-                if (j == i || targets_[j].light != targets_[i].light) continue;
-                const BoundingSphere<T>& b = targets_[j].target;
+            for (std::size_t j = 0; j < targets.size() && !nested; ++j) {
+                if (j == i || targets[j].light != targets[i].light) continue;
+                const BoundingSphere<T>& b = targets[j].target;
                 const bool inside = length(a.center - b.center) + a.radius <= b.radius;
                 const bool same = a.center == b.center && a.radius == b.radius;
                 nested = inside && (!same || j < i); // of two equal spheres, keep the first
             }
-            if (!nested) kept.push_back(targets_[i]);
+            if (!nested) kept.push_back(targets[i]);
         }
-        targets_ = std::move(kept);
+        targets = std::move(kept);
     }
 
     const SceneT& scene_;
@@ -10291,6 +10297,8 @@ private:
     T global_power_ = T(0);
     std::vector<Emitter<T>> targets_; ///< every light aimed at each specular object, for the caustic map
     T target_power_ = T(0);
+    std::vector<Emitter<T>> path_targets_; ///< those, and every light aimed at each glossy object: a light tracer's paths
+    T path_target_power_ = T(0);
     std::uint32_t global_scramble_[2]{}, caustic_scramble_[2]{}; ///< the Sobol points' scrambling, per map
 };
 
@@ -13001,8 +13009,14 @@ public:
         const auto trace_block = [&](std::uint64_t first, std::uint64_t last, Accumulation& out) {
             tracer.walk_aimed(first, last, count, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
                 // A first hit on a diffuse lobe is the path tracer's; where the material also
-                // has a delta lobe, the scattering here decides whose the path is.
-                if (at.direct) return reflects<M> || (transmits<M> && !has_glossy<M>);
+                // has a delta lobe (a mirror beside it, or a glossy lobe's delta part: a
+                // mix's mirror, a smooth coat), the scattering here decides whose the path is.
+                if (at.direct) {
+                    if constexpr (has_glossy<M>) {
+                        if (glossy_at(material, at.crossing(), at.direction, glossy_eta(material, at.crossing(), at.outside_index)).delta_part()) return true;
+                    }
+                    return reflects<M> || (transmits<M> && !has_glossy<M>);
+                }
                 if (!at.first_specular) return false;
                 const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
                 const Crossing<T>& c = at.crossing();

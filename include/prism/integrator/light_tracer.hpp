@@ -136,8 +136,14 @@ public:
         const auto trace_block = [&](std::uint64_t first, std::uint64_t last, Accumulation& out) {
             tracer.walk_aimed(first, last, count, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
                 // A first hit on a diffuse lobe is the path tracer's; where the material also
-                // has a delta lobe, the scattering here decides whose the path is.
-                if (at.direct) return reflects<M> || (transmits<M> && !has_glossy<M>);
+                // has a delta lobe (a mirror beside it, or a glossy lobe's delta part: a
+                // mix's mirror, a smooth coat), the scattering here decides whose the path is.
+                if (at.direct) {
+                    if constexpr (has_glossy<M>) {
+                        if (glossy_at(material, at.crossing(), at.direction, glossy_eta(material, at.crossing(), at.outside_index)).delta_part()) return true;
+                    }
+                    return reflects<M> || (transmits<M> && !has_glossy<M>);
+                }
                 if (!at.first_specular) return false;
                 const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
                 const Crossing<T>& c = at.crossing();
