@@ -1,0 +1,11 @@
+// SPDX-License-Identifier: MIT
+// The consistency matrix in the full tier (tests/matrix.hpp): the covering cells whose
+// scene is of one type, its own translation unit so that the types compile in parallel.
+#include "../matrix.hpp"
+
+using namespace test::matrix; // (a program of its own, never a unity batch)
+
+TEST_CASE("the consistency matrix, none:true:lights not at infinity, in fog filling the air")
+{
+    check_rows(run_agreement<Sky::none, true>(covering_cells(), Effort{}));
+}
