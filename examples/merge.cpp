@@ -147,6 +147,20 @@ int merge(int argc, char** argv)
                 part.samples_per_pass = weight / count;
             }
         }
+        // A part of samples (not progressive passes) holds samples A to B of its prism.spp,
+        // one a pass: what the example's --passes A:B allows, and what its sums must show.
+        if (const auto method = part.image.attributes.find("prism.method"); method == part.image.attributes.end() || method->second != "progressive") {
+            const std::string& spp_text = attribute(part, "prism.spp");
+            unsigned long long spp = 0;
+            char end = 0;
+            if (std::sscanf(spp_text.c_str(), "%llu%c", &spp, &end) != 1 || spp == 0)
+                throw std::invalid_argument(path.string() + " has prism.spp '" + spp_text + "', not a whole number of samples");
+            if (part.passes.last > spp)
+                throw std::invalid_argument(path.string() + " says it holds passes " + describe(part.passes) + " of prism.spp " + spp_text +
+                                            ": passes past its samples per pixel");
+            if (part.samples_per_pass != 1)
+                throw std::invalid_argument(path.string() + "'s sums hold " + std::to_string(part.samples_per_pass) + " samples a pass where a pass is one sample: its prism.part.passes is not what it rendered");
+        }
         parts.push_back(std::move(part));
     }
 

@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Parts of a render add up to the whole, bit for bit: `merge.sh MERGE EXAMPLE ARGS...`
+# Parts of a render add up to the whole, bit for bit: `merge.sh MERGE FORGE EXAMPLE ARGS...`
 # renders EXAMPLE ARGS (which must take 2 samples or passes) whole, then as parts (crops,
 # ranges of passes, on other thread counts), merges them with MERGE and compares the
 # PNG bytes (and the PFM's floats, where the example writes PFM); then checks that MERGE refuses parts of different renders, parts that hold
 # the same passes twice, and parts that leave a pixel short.
 set -euo pipefail
-merge=$1 example=$2
-shift 2
+merge=$1 forge=$2 example=$3
+shift 3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 name() { basename "$(ls "$1"/*.exr | head -n 1)"; }
@@ -79,6 +79,18 @@ data[-40] ^= 0x10  # a bit of the last scan lines' compressed pixels
 open(sys.argv[2], 'wb').write(bytes(data))
 PY
 refuses "damaged.exr" "${out[@]}" "$work/damaged.exr" "$work/top2/$image" "$work/bottom/$image"
+# A part forged with its digest computed anew (tests/cli/forge_part.cpp): passes a part of
+# samples cannot hold, its weights made to agree. The top part's passes 0:1 and 1:2 claimed
+# as 0:4, the bottom's 0:2 as 0:4, of --spp 2: every pixel had the four passes the parts
+# claimed, and they merged.
+if [[ " $* " != *" progressive "* ]]; then
+  "$forge" "$work/top/$image" "$work/forged_top.exr" prism.part.passes 0:4 4
+  "$forge" "$work/bottom/$image" "$work/forged_bottom.exr" prism.part.passes 0:4 2
+  refuses "forged_top.exr says it holds passes 0:4 of prism.spp 2: passes past its samples per pixel" "${out[@]}" "$work/forged_top.exr" "$work/forged_bottom.exr"
+  # Its one pass made three samples a pass.
+  "$forge" "$work/top/$image" "$work/thrice.exr" prism.part.passes 0:1 3
+  refuses "thrice.exr's sums hold 3 samples a pass where a pass is one sample" "${out[@]}" "$work/thrice.exr" "$work/top2/$image" "$work/bottom/$image"
+fi
 # Two one-pixel parts at opposite corners of a 65536 x 32768 image: refused before the
 # hull (2^31 pixels) is allocated.
 if [[ $(basename "$example") == cornell ]]; then
