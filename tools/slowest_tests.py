@@ -32,6 +32,7 @@ VALIDATION = (
     "progressive photon mapping in fog: the beam estimate's radius shrinks too",
     "the photon mapper's furnace: 1.0 within 0.5 %",
     "rough dielectric: sampling follows the pdf from either side",
+    "the consistency matrix's quick slice",
 )
 BUILDS = ("consumer_", "compile_error_", "documentation_snippets")
 CASE_BUDGET, VALIDATION_BUDGET = 2.0, 10.0

@@ -8437,6 +8437,34 @@ template <Material M>
     else return (void)material, (void)hit, (void)d, false;
 }
 
+/// Whether `material` may scatter light by a delta lobe somewhere: a mirror or a
+/// dielectric's interface, or a glossy lobe with a delta part (a mix's mirror, a smooth
+/// coat, a rough metal of roughness 0), probed at a few angles where it reads no texture
+/// and taken to have one where it does. Caustics and a light tracer's paths begin there:
+/// what light paths are aimed at.
+template <Material M>
+[[nodiscard]] bool may_scatter_by_delta(const M& material) noexcept
+{
+    using T = typename M::scalar_type;
+    if constexpr (reflects<M> || transmits<M>) {
+        return (void)material, true;
+    } else if constexpr (has_glossy<M>) {
+        if constexpr (reads_coordinates<M>()) {
+            return (void)material, true;
+        } else {
+            const auto lobe = material.glossy(GlossyQuery<T>{});
+            if (lobe.smooth()) return true;
+            if constexpr (requires(const Vec3<T>& wo) { { lobe.delta_part(wo) } -> std::same_as<std::optional<LobeSample<T>>>; }) {
+                for (const T z : {T(1), T(0.7), T(0.3), T(0.05)})
+                    if (lobe.delta_part(Vec3<T>(std::sqrt(T(1) - z * z), T(0), z))) return true;
+            }
+            return false;
+        }
+    } else {
+        return (void)material, false;
+    }
+}
+
 // Photons
 
 /// A photon's next direction after scattering, and whether the bounce was diffuse.
@@ -10092,26 +10120,23 @@ public:
             has_sphere_ = true;
         }
         add_emitters(global_, false, {});
-        // Every light aimed at each bounded specular object (not at an index-matched
-        // boundary, which makes no caustic: may_match_index); a light path's also at each
-        // glossy one, whose lobe may have a delta part (a mix's mirror, a smooth coat).
+        // Every light aimed at each bounded object that may scatter by a delta lobe (a
+        // mirror, glass, a glossy lobe's delta part: may_scatter_by_delta), where caustics
+        // and a light tracer's paths begin; not at an index-matched boundary, which makes
+        // no caustic (may_match_index).
         scene.for_each_object([&]<class Object>(const Object& object) {
             using M = typename Object::material_type;
             if constexpr (reflects<M> || transmits<M> || has_glossy<M>) {
-                if (object.bounded && !index_matched(object.material, T(1))) {
-                    if constexpr (reflects<M> || transmits<M>) add_emitters(targets_, true, bounding_sphere(object.shape));
-                    add_emitters(path_targets_, true, bounding_sphere(object.shape));
-                }
+                if (object.bounded && !index_matched(object.material, T(1)) && may_scatter_by_delta(object.material))
+                    add_emitters(targets_, true, bounding_sphere(object.shape));
             }
         });
         drop_nested_targets(targets_);
-        drop_nested_targets(path_targets_);
         for (const auto& e : global_) global_power_ += max_component(e.power);
         for (const auto& e : targets_) target_power_ += max_component(e.power);
-        for (const auto& e : path_targets_) path_target_power_ += max_component(e.power);
         // A light whose power is finite can still overflow here: a parallel light's
         // irradiance times the scene's cross-section, or the sum over many lights.
-        if (!is_finite(global_power_) || !is_finite(target_power_) || !is_finite(path_target_power_))
+        if (!is_finite(global_power_) || !is_finite(target_power_))
             throw_invalid("photon emission: the lights' total power overflows (", global_power_, ", ", target_power_,
                           "); a DirectionalLight's irradiance times the scene's cross-section pi r^2 must be finite");
     }
@@ -10128,14 +10153,14 @@ public:
         for (std::size_t i = first; i < last; ++i) store(targets_, target_power_, config_.caustic_photons, i, true, out);
     }
 
-    /// Light paths [first, last) of `count` aimed at the specular and glossy objects (whose
-    /// lobes may have a delta part), each walked to its end: visit(material, vertex, power) at every
+    /// Light paths [first, last) of `count` aimed where the caustic map's photons are,
+    /// each walked to its end: visit(material, vertex, power) at every
     /// diffuse surface and visit_medium(medium, vertex, power) where it scatters in a
     /// medium return whether the walk goes on (the light tracer's paths).
     template <class Visit, class VisitMedium = IgnoreMedia>
     void walk_aimed(std::size_t first, std::size_t last, std::size_t count, Visit&& visit, VisitMedium&& visit_medium = {}) const
     {
-        for (std::size_t i = first; i < last; ++i) emit(path_targets_, path_target_power_, count, i, true, visit, visit_medium);
+        for (std::size_t i = first; i < last; ++i) emit(targets_, target_power_, count, i, true, visit, visit_medium);
     }
 
 private:
@@ -10187,7 +10212,8 @@ private:
     /// Store photon i: in the caustic pass only L S+ D, going on past it only by delta lobes.
     void store(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, std::vector<Photon>& out) const
     {
-        emit(emitters, total_power, count, i, caustic_pass, [&]<class M>(const M&, const WalkVertex<T>& at, const Rgb<T>& power) {
+        emit(emitters, total_power, count, i, caustic_pass, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
+            (void)material;
             const Crossing<T>& c = at.crossing();
             // Frosted glass holds no photons (no estimate reads them there: a camera or
             // gather ray goes through it by its lobe), and light through it on to a surface
@@ -10196,7 +10222,11 @@ private:
             if (caustic_pass) {
                 if (!at.direct && at.caustic_path()) out.push_back(photon(c, power, at.direction, Photon::caustic));
                 // What a diffuse lobe sends on is the global map's; a delta lobe (a coat
-                // over the diffuse one) may still send a caustic on.
+                // over the diffuse one) may still send a caustic on, and so may a glossy
+                // lobe's delta part (a mix's mirror, a smooth coat), by the lobe's own draw.
+                if constexpr (has_glossy<M>) {
+                    if (at.caustic_path() && glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index)).delta_part()) return Lobes::all;
+                }
                 return (reflects<M> || transmits<M>) && at.caustic_path() ? Lobes::delta : Lobes::none;
             }
             std::uint8_t flags = at.direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
@@ -10295,10 +10325,8 @@ private:
     bool has_sphere_ = false;           ///< whether anything is
     std::vector<Emitter<T>> global_;  ///< every light aimed everywhere, for the global map
     T global_power_ = T(0);
-    std::vector<Emitter<T>> targets_; ///< every light aimed at each specular object, for the caustic map
+    std::vector<Emitter<T>> targets_; ///< every light aimed at each object that may scatter by a delta lobe: the caustic map's and a light tracer's
     T target_power_ = T(0);
-    std::vector<Emitter<T>> path_targets_; ///< those, and every light aimed at each glossy object: a light tracer's paths
-    T path_target_power_ = T(0);
     std::uint32_t global_scramble_[2]{}, caustic_scramble_[2]{}; ///< the Sobol points' scrambling, per map
 };
 

@@ -482,6 +482,34 @@ template <Material M>
     else return (void)material, (void)hit, (void)d, false;
 }
 
+/// Whether `material` may scatter light by a delta lobe somewhere: a mirror or a
+/// dielectric's interface, or a glossy lobe with a delta part (a mix's mirror, a smooth
+/// coat, a rough metal of roughness 0), probed at a few angles where it reads no texture
+/// and taken to have one where it does. Caustics and a light tracer's paths begin there:
+/// what light paths are aimed at.
+template <Material M>
+[[nodiscard]] bool may_scatter_by_delta(const M& material) noexcept
+{
+    using T = typename M::scalar_type;
+    if constexpr (reflects<M> || transmits<M>) {
+        return (void)material, true;
+    } else if constexpr (has_glossy<M>) {
+        if constexpr (reads_coordinates<M>()) {
+            return (void)material, true;
+        } else {
+            const auto lobe = material.glossy(GlossyQuery<T>{});
+            if (lobe.smooth()) return true;
+            if constexpr (requires(const Vec3<T>& wo) { { lobe.delta_part(wo) } -> std::same_as<std::optional<LobeSample<T>>>; }) {
+                for (const T z : {T(1), T(0.7), T(0.3), T(0.05)})
+                    if (lobe.delta_part(Vec3<T>(std::sqrt(T(1) - z * z), T(0), z))) return true;
+            }
+            return false;
+        }
+    } else {
+        return (void)material, false;
+    }
+}
+
 // Photons
 
 /// A photon's next direction after scattering, and whether the bounce was diffuse.
