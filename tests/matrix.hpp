@@ -4,8 +4,9 @@
 // estimator rendering it, held to what must be true there:
 //   furnace      under a uniform sky of radiance 1, with materials and fog that lose no
 //                light and no floor, every pixel reads 1: the path tracer, the reference,
-//                the photon mapper read directly and by final gathering, progressive photon
-//                mapping, and Whitted where only mirrors and glass are seen;
+//                the photon mapper read directly, by final gathering and behind an
+//                irradiance cache, progressive photon mapping, and Whitted where only
+//                mirrors and glass are seen;
 //   agreement    elsewhere (a grey floor, a fog that absorbs), wherever the path tracer
 //                has every path (no delta light meets a mirror or glass), the reference
 //                (the path tracer and the light tracer, splitting the paths between them)
@@ -364,7 +365,8 @@ typename PhotonMapper<SceneT, Air>::Config photon_config(const Effort& effort, i
     return config;
 }
 
-/// The photon mappers on `scene`: read directly, by final gathering, and progressively.
+/// The photon mappers on `scene`: read directly, by final gathering, by the gather behind an
+/// irradiance cache, and progressively.
 template <class SceneT, class Air>
 void photon_rows(std::vector<Row>& rows, const std::string& cell, const SceneT& scene, const Air& air, const Camera<T>& cam, const Effort& effort,
                  const Estimate& want, const char* against, double bias)
@@ -374,6 +376,14 @@ void photon_rows(std::vector<Row>& rows, const std::string& cell, const SceneT& 
                            }), want, bias));
     rows.push_back(compare(cell, "photon map, gather", against, estimate(effort.photon_batches, [&](int b) {
                                return render(cam, PhotonMapper(scene, photon_config<SceneT, Air>(effort, b, 16), air), batch_config(16, b));
+                           }), want, bias));
+    rows.push_back(compare(cell, "photon map, cache", against, estimate(effort.photon_batches, [&](int b) {
+                               // The irradiance cache in front of the gather: records where the camera needs them.
+                               auto config = photon_config<SceneT, Air>(effort, b, 16);
+                               config.irradiance_cache.rays = 512;
+                               PhotonMapper mapper(scene, config, air);
+                               mapper.cache_irradiance(cam, batch_config(16, b));
+                               return render(cam, mapper, batch_config(16, b));
                            }), want, bias));
     rows.push_back(compare(cell, "progressive", against, estimate(effort.photon_batches, [&](int b) {
                                typename ProgressivePhotonMapper<SceneT, Air>::Config config;

@@ -210,6 +210,7 @@ public:
                 const int m = std::max(1, int(std::lround(std::sqrt(T(settings.rays) / pi<T>))));
                 const int cells_n = std::max(1, settings.rays / m);
                 IrradianceRecord<T> r{c.hit.point, c.n, gather<true>(c.hit, c.n, rng, scene_->media_at(c.hit.point), m, cells_n), T(0)};
+                if (!translation_holds(c.hit.point)) r.gather.translational = {};
                 T radius = r.gather.nearest;
                 if (settings.gradients)
                     for (int ch = 0; ch < 3; ++ch) {
@@ -307,6 +308,18 @@ private:
             if (!hit) return LightParts<T>{.direct = scene_->escaped(segment.direction)};
             return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
         }
+    }
+
+    /// Whether a record at p may carry its gather's translational gradient: not in the
+    /// air's own fog (FilledAir), where gather rays scatter a short way off and the
+    /// gradient, which takes the distances to what the rays met for distances to
+    /// surfaces, swings far past the light (there the cache read 1.8 to 5 times the
+    /// gather's light: the consistency matrix, tests/matrix.hpp). Its rotational gradient
+    /// and its radius from the nearest distance still hold.
+    [[nodiscard]] bool translation_holds(const Vec3<T>& p) const noexcept
+    {
+        if constexpr (air_scatters<Air>) return !air_.bounds().contains(p);
+        else return (void)p, true;
     }
 
     /// The beam estimate's radius for the global pass's volume photons.
