@@ -13,7 +13,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:?usage: tools/check_unity.sh BUILD_DIR (a configured tree)}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-(cd "$root/tests" && ls */*.cpp | grep -vE "^(consumers|compile_fail|fuzz|snippets)/|^core/config.cpp$" |
+(cd "$root/tests" && ls */*.cpp | grep -vE "^(consumers|compile_fail|fuzz|snippets|matrix|cli)/|^core/config.cpp$" |
   sed "s|.*|#include \"$root/tests/&\"|") >"$work/forward.cpp"
 tac "$work/forward.cpp" >"$work/reverse.cpp"
 flags=(-std=c++20 -fsyntax-only -DGLM_FORCE_PURE "-DPRISM_TEST_ASSETS=\"$root/assets\"" -I"$root/include" -I"$root/tests"

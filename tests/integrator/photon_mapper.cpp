@@ -553,9 +553,9 @@ TEST_CASE("regression: a glossy lobe's mirror part makes caustics: a floor lit b
     // directly left that light out: 0.395 where the reference reads 0.439 (10 % low).
     using T = float;
     using Shiny = RoughConductor<T>; // at roughness 0, a mirror: the mix's delta part
-    const Mix<T, Diffuse<T>, Shiny> half{.first = {.albedo = {.color = Rgb<T>(0.2f)}}, .second = {.fresnel = {.kr = Rgb<T>(1)}, .roughness = Roughness<T>(0)}, .weight = 0.9f};
+    const Mix<T, Diffuse<T>, Shiny> mostly_mirror{.first = {.albedo = {.color = Rgb<T>(0.2f)}}, .second = {.fresnel = {.kr = Rgb<T>(1)}, .roughness = Roughness<T>(0)}, .weight = 0.9f};
     const Scene scene{Lights{PointLight<T>{.position = test::mirror_light, .intensity = Rgb<T>(4)}},
-                      Object{Plane<T>({0, 1, 0}, 0), Diffuse<T>{.albedo = {.color = Rgb<T>(0.5f)}}}, Object{Quad<T>({1, 0, -3}, {0, 3, 0}, {0, 0, 6}), half}};
+                      Object{Plane<T>({0, 1, 0}, 0), Diffuse<T>{.albedo = {.color = Rgb<T>(0.5f)}}}, Object{Quad<T>({1, 0, -3}, {0, 3, 0}, {0, 0, 6}), mostly_mirror}};
     typename PhotonMapper<std::remove_cvref_t<decltype(scene)>>::Config config;
     config.tracing.global_photons = test::samples(200000);
     config.tracing.caustic_photons = test::samples(200000);
