@@ -134,7 +134,7 @@ TEST_CASE("progressive photon mapping's furnace reads 1.0, and passes split over
         for (int y = 9; y < 12; ++y)
             for (int x = 5; x < 17; ++x) {
                 CHECK(part.weight(x, y) == 5);
-                REQUIRE(std::equal(part.sums(x, y).begin(), part.sums(x, y).end(), share.sums(x, y).begin()));
+                REQUIRE(part.sums(x, y) == share.sums(x, y));
             }
     }
 }

@@ -101,12 +101,28 @@ TEST_CASE("an Accumulation's exact sums go through an EXR file unchanged")
     CHECK(back.window() == sums.window());
     for (int y = 2; y < 6; ++y)
         for (int x = 3; x < 8; ++x) {
-            REQUIRE(std::equal(back.sums(x, y).begin(), back.sums(x, y).end(), sums.sums(x, y).begin()));
+            REQUIRE(back.sums(x, y) == sums.sums(x, y));
             REQUIRE(back.weight(x, y) == sums.weight(x, y));
         }
     // The means are there for any viewer: depth -2.5 y over 2^40 + x samples.
     const auto& depth = std::get<std::vector<float>>(image.find("depth")->values);
     CHECK(depth[0] == float(-2.5 * 2 / double((std::uint64_t(1) << 40) + 3)));
+    CHECK(image.find("sum.R.4") == nullptr); // no sum passed 2^63: four words each
+    // Sums past 2^63 (samples up to the largest float) take eight words each, and come
+    // back the same.
+    Accumulation wide = sums;
+    const ExactSum big[4] = {ExactSum::of(3e38), ExactSum::of(-1e30), ExactSum::of(0x1p70), {}};
+    wide.add(4, 3, big, 1);
+    wide.add(7, 5, big, 1);
+    REQUIRE(wide.wide());
+    write_exr(to_exr(wide, true), path);
+    const ExrImage wide_image = read_exr(path);
+    CHECK(wide_image.find("sum.depth.7") != nullptr);
+    const Accumulation wide_back = to_accumulation(wide_image, {"R", "G", "B", "depth"});
+    for (int y = 2; y < 6; ++y)
+        for (int x = 3; x < 8; ++x) REQUIRE(wide_back.sums(x, y) == wide.sums(x, y));
+    CHECK(wide_back.sum(4, 3, 0).value() == wide.sum(4, 3, 0).value());
+    CHECK(wide_back.sum(4, 3, 1).value() < -1e29);
     // Without the sums, there is nothing to add up, and the error says so.
     write_exr(to_exr(sums, false), path);
     CHECK_THROWS_WITH_AS((void)to_accumulation(read_exr(path)), doctest::Contains("has no UINT channel 'weight.0'"), std::invalid_argument);

@@ -203,6 +203,29 @@ TEST_CASE("an environment map's photons light a floor with the irradiance its im
     CHECK(photons.x == doctest::Approx(e).epsilon(test::resolved(0.02)));
 }
 
+TEST_CASE("a sky whose one lit pixel is 10^30 renders 10^27 times the image of one whose pixel is 1000")
+{
+    // Regression: samples of 2^40 (1.1e12) or more were left out of the film, and a sky
+    // of one very bright pixel (an 8 KB .hdr can hold 10^38) rendered black.
+    const auto image = [](float sun) {
+        std::vector<Rgb<float>> pixels(16 * 8, Rgb<float>(0.0f));
+        pixels[3 * 16 + 5] = Rgb<float>(sun);
+        const Scene scene{Lights{EnvironmentMap<double>(16, 8, pixels)}, Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{}}};
+        const Camera<double> camera{.position = {0, 2, 3}, .look_at = {0, 0, 0}, .fov = 40};
+        return render(camera, PathTracer(scene), {.width = 8, .height = 8, .spp = 4, .threads = 2, .progress = false});
+    };
+    const Film one = image(1000.0f), bright = image(1e30f);
+    CHECK(bright.rejected() == 0);
+    int lit = 0;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            const double expected = 1e27 * double(one.at(x, y).r);
+            REQUIRE(std::abs(double(bright.at(x, y).r) - expected) <= 1e-6 * expected);
+            lit += one.at(x, y).r > 0;
+        }
+    CHECK(lit > 32);
+}
+
 TEST_CASE("an environment map refuses an image it cannot light by, naming the pixel or the parameter")
 {
     const auto message = [](int w, int h, const std::vector<Rgb<float>>& pixels, EnvironmentMapSettings<float> settings = {}) {

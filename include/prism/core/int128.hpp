@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // A 128-bit signed integer, two's complement, with only what exact sums need: made from
-// and read as two 64-bit words, negated, added with overflow detected, and rounded once
-// to double. Two implementations with the same bits: the compiler's __int128 where it
+// and read as two 64-bit words, negated, added with overflow detected (or as the lower
+// half of a wider sum, with its carry), and rounded once to double. Two implementations with the same bits: the compiler's __int128 where it
 // has one (GCC and Clang on 64-bit targets), and two 64-bit words anywhere (MSVC has no
 // 128-bit integer). Int128 is the first, or the second where there is no __int128 or
 // PRISM_PORTABLE_INT128 is defined; both are compiled and compared in every test build.
@@ -51,6 +51,19 @@ public:
         low_ = low;
         high_ = high;
         return true;
+    }
+
+    /// Add `other`'s bits as unsigned 128-bit numbers, modulo 2^128; true when the sum
+    /// carried out of bit 127 (the lower half of a wider sum).
+    [[nodiscard]] constexpr bool add_with_carry(const WordsInt128& other) noexcept
+    {
+        const std::uint64_t low = low_ + other.low_;
+        const std::uint64_t partial = high_ + other.high_;
+        const std::uint64_t high = partial + std::uint64_t(low < low_);
+        const bool carry = partial < high_ || high < partial;
+        low_ = low;
+        high_ = high;
+        return carry;
     }
 
     /// The nearest double (ties to even), as a conversion of __int128 gives it.
@@ -121,6 +134,13 @@ public:
         if (__builtin_add_overflow(bits_, other.bits_, &sum)) return false;
         bits_ = sum;
         return true;
+    }
+
+    [[nodiscard]] constexpr bool add_with_carry(const NativeInt128& other) noexcept
+    {
+        const auto a = UnsignedBits(bits_), sum = a + UnsignedBits(other.bits_);
+        bits_ = Bits(sum); // modulo 2^128 (C++20)
+        return sum < a;
     }
 
     [[nodiscard]] double to_double() const noexcept { return double(bits_); }

@@ -106,15 +106,22 @@ inline Displacements displacements(const std::vector<unsigned long long>& counts
     return d;
 }
 
-/// A pixel's weight and exact sums as the messages carry them: each a 128-bit integer,
-/// two 64-bit words, low first.
+/// A pixel's weight and exact sums as the messages carry them: each a 256-bit integer,
+/// four 64-bit words, low first (a sum's two halves; the weight, then three zeros).
 inline void append_pixel(std::vector<std::uint64_t>& words, const Accumulation& sums, int x, int y)
 {
-    words.insert(words.end(), {sums.weight(x, y), 0});
-    for (const ExactSum& s : sums.sums(x, y)) words.insert(words.end(), {s.bits().low(), s.bits().high()});
+    words.insert(words.end(), {sums.weight(x, y), 0, 0, 0});
+    for (std::size_t c = 0; c < sums.channels().size(); ++c) {
+        const ExactSum s = sums.sum(x, y, c);
+        words.insert(words.end(), {s.low().low(), s.low().high(), s.high().low(), s.high().high()});
+    }
 }
 
-[[nodiscard]] inline Int128 int128_at(const std::uint64_t* words) noexcept { return Int128::from_words(words[0], words[1]); }
+/// The exact sum in four words at `words` (append_pixel).
+[[nodiscard]] inline ExactSum sum_at(const std::uint64_t* words) noexcept
+{
+    return ExactSum::from_bits(Int128::from_words(words[0], words[1]), Int128::from_words(words[2], words[3]));
+}
 
 /// Every rank's items, end to end in rank order, on every rank (the bytes each rank
 /// sent and received added to traffic's photon counts).
@@ -215,7 +222,7 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
     // then its pixels in rows (append_pixel).
     Stopwatch clock;
     std::vector<std::uint64_t> mine;
-    const std::size_t words_per_pixel = 2 * (1 + channels.size());
+    const std::size_t words_per_pixel = 4 * (1 + channels.size());
     {
         WorkCounter counter(comm);
         for (std::int64_t t = counter.next(); t < tiles.count(); t = counter.next()) {
@@ -262,7 +269,7 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
         at += 3;
         for (int y = w.y0; y < w.y1; ++y)
             for (int x = w.x0; x < w.x1; ++x) {
-                for (std::size_t c = 0; c < channels.size(); ++c) pixel[c] = ExactSum::from_bits(int128_at(&all[at + 2 + 2 * c]));
+                for (std::size_t c = 0; c < channels.size(); ++c) pixel[c] = sum_at(&all[at + 4 + 4 * c]);
                 image.add(x, y, pixel, all[at]);
                 at += words_per_pixel;
             }
@@ -271,32 +278,35 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
     PRISM_ASSERT(at == all.size());
     if (received != tiles.count())
         throw std::runtime_error("prism::mpi: rank 0 received " + std::to_string(received) + " of " + std::to_string(tiles.count()) + " tiles");
-    if (overflowed) prism::detail::throw_invalid("prism::mpi: a tile's sums overflowed (a sum passed 2^63): the image would be wrong");
+    if (overflowed) prism::detail::throw_invalid("prism::mpi: a tile's sums overflowed: the image would be wrong");
     image.reject(std::size_t(rejected));
     if (traffic != nullptr) traffic->film_gather_seconds += clock.lap();
     return image;
 }
 
-/// 128-bit integers (two 64-bit words, low first) summed by MPI_Reduce. An overflow, or
-/// an operand that overflowed before, gives the lowest value, which no exact sum or
-/// weight can be (their magnitudes stay below 2^127): rank 0 then refuses the result.
-inline constexpr Int128 overflowed_sum = Int128::from_words(0, std::uint64_t(1) << 63);
+/// 256-bit integers (four 64-bit words, low first: append_pixel) summed by MPI_Reduce.
+/// An overflow, or an operand that overflowed before, gives the lowest value, which no
+/// exact sum or weight can be (their magnitudes stay far below 2^255): rank 0 then
+/// refuses the result.
+inline constexpr ExactSum overflowed_sum = ExactSum::from_bits(Int128{}, Int128::from_words(0, std::uint64_t(1) << 63));
 
-inline void add_int128(void* in, void* inout, int* count, MPI_Datatype*)
+inline void add_sums(void* in, void* inout, int* count, MPI_Datatype*)
 {
     auto* a = static_cast<std::uint64_t*>(in);
     auto* b = static_cast<std::uint64_t*>(inout);
-    for (int i = 0; i < *count; ++i, a += 2, b += 2) {
-        const Int128 x = int128_at(a), y = int128_at(b);
-        Int128 sum = x;
+    for (int i = 0; i < *count; ++i, a += 4, b += 4) {
+        const ExactSum x = sum_at(a), y = sum_at(b);
+        ExactSum sum = x;
         if (x == overflowed_sum || y == overflowed_sum || !sum.add(y)) sum = overflowed_sum;
-        b[0] = sum.low();
-        b[1] = sum.high();
+        b[0] = sum.low().low();
+        b[1] = sum.low().high();
+        b[2] = sum.high().low();
+        b[3] = sum.high().high();
     }
 }
 
 /// Every rank's `sums` (the same window and channels on each) added up on rank 0, by a
-/// reduction of 128-bit integers: the exact sums of every share.
+/// reduction of 256-bit integers: the exact sums of every share.
 inline std::optional<Accumulation> reduce_sums(MPI_Comm comm, const Accumulation& sums, Traffic* traffic)
 {
     int rank = 0;
@@ -304,18 +314,18 @@ inline std::optional<Accumulation> reduce_sums(MPI_Comm comm, const Accumulation
     const PixelWindow& w = sums.window();
     const std::size_t channels = sums.channels().size(), per_pixel = 1 + channels;
     std::vector<std::uint64_t> mine, all;
-    mine.reserve(2 * per_pixel * w.area());
+    mine.reserve(4 * per_pixel * w.area());
     for (int y = w.y0; y < w.y1; ++y)
         for (int x = w.x0; x < w.x1; ++x) append_pixel(mine, sums, x, y);
     if (rank == 0) all.resize(mine.size());
-    MPI_Datatype int128{};
+    MPI_Datatype int256{};
     MPI_Op sum{};
-    check(MPI_Type_contiguous(2, MPI_UINT64_T, &int128), "MPI_Type_contiguous");
-    check(MPI_Type_commit(&int128), "MPI_Type_commit");
-    check(MPI_Op_create(&add_int128, 1, &sum), "MPI_Op_create");
-    const int code = MPI_Reduce(mine.data(), all.data(), count_of(mine.size() / 2, "128-bit sums"), int128, sum, 0, comm);
+    check(MPI_Type_contiguous(4, MPI_UINT64_T, &int256), "MPI_Type_contiguous");
+    check(MPI_Type_commit(&int256), "MPI_Type_commit");
+    check(MPI_Op_create(&add_sums, 1, &sum), "MPI_Op_create");
+    const int code = MPI_Reduce(mine.data(), all.data(), count_of(mine.size() / 4, "256-bit sums"), int256, sum, 0, comm);
     MPI_Op_free(&sum);
-    MPI_Type_free(&int128);
+    MPI_Type_free(&int256);
     check(code, "MPI_Reduce");
     unsigned long long rejected = sums.rejected(), total_rejected = 0;
     int overflowed = sums.overflowed() ? 1 : 0, any_overflowed = 0;
@@ -326,16 +336,17 @@ inline std::optional<Accumulation> reduce_sums(MPI_Comm comm, const Accumulation
 
     Accumulation image(sums.width(), sums.height(), w, sums.channels());
     std::vector<ExactSum> pixel(channels);
-    const auto word = [&](std::size_t i) { return int128_at(&all[2 * i]); };
+    const auto item = [&](std::size_t i) { return sum_at(&all[4 * i]); };
     std::size_t at = 0;
     for (int y = w.y0; y < w.y1; ++y)
         for (int x = w.x0; x < w.x1; ++x, at += per_pixel) {
             bool bad = any_overflowed != 0;
-            for (std::size_t i = at; i < at + per_pixel; ++i) bad |= word(i) == overflowed_sum;
-            if (bad || word(at).high() != 0) // a weight is an unsigned 64-bit integer
-                prism::detail::throw_invalid("prism::mpi: the ranks' sums overflowed (a sum passed 2^63): the image would be wrong");
-            for (std::size_t c = 0; c < channels; ++c) pixel[c] = ExactSum::from_bits(word(at + 1 + c));
-            image.add(x, y, pixel, word(at).low());
+            for (std::size_t i = at; i < at + per_pixel; ++i) bad |= item(i) == overflowed_sum;
+            const ExactSum weight = item(at);
+            if (bad || !(weight.high() == Int128{}) || weight.low().high() != 0) // a weight is an unsigned 64-bit integer
+                prism::detail::throw_invalid("prism::mpi: the ranks' sums overflowed: the image would be wrong");
+            for (std::size_t c = 0; c < channels; ++c) pixel[c] = item(at + 1 + c);
+            image.add(x, y, pixel, weight.low().low());
         }
     image.reject(std::size_t(total_rejected));
     return image;

@@ -415,7 +415,7 @@ struct Fnv1a {
 /// "prism.part.digest".
 [[nodiscard]] inline ExrImage to_exr(const Accumulation& sums, bool exact, std::map<std::string, std::string> attributes = {})
 {
-    if (sums.overflowed()) detail::throw_invalid("to_exr: the Accumulation overflowed (a sum passed 2^63)");
+    if (sums.overflowed()) detail::throw_invalid("to_exr: the Accumulation overflowed (its sums are wrong)");
     const PixelWindow& w = sums.window();
     ExrImage image{sums.width(), sums.height(), w, {}, std::move(attributes)};
     const std::size_t n = sums.channels().size();
@@ -423,18 +423,21 @@ struct Fnv1a {
         std::vector<float> mean;
         mean.reserve(w.area());
         for (int y = w.y0; y < w.y1; ++y)
-            for (int x = w.x0; x < w.x1; ++x) mean.push_back(detail::mean(sums.sums(x, y)[c], sums.weight(x, y)));
+            for (int x = w.x0; x < w.x1; ++x) mean.push_back(detail::mean(sums.sum(x, y, c), sums.weight(x, y)));
         image.channels.push_back({sums.channels()[c], std::move(mean)});
     }
     if (!exact) return image;
+    // Each sum's 32-bit words, low first: four, or eight once some sum passed 2^63.
+    const int words = sums.wide() ? 8 : 4;
     for (std::size_t c = 0; c < n; ++c)
-        for (int word = 0; word < 4; ++word) {
+        for (int word = 0; word < words; ++word) {
             std::vector<std::uint32_t> bits;
             bits.reserve(w.area());
             for (int y = w.y0; y < w.y1; ++y)
                 for (int x = w.x0; x < w.x1; ++x) {
-                    const Int128 sum = sums.sums(x, y)[c].bits();
-                    bits.push_back(std::uint32_t((word < 2 ? sum.low() : sum.high()) >> (32 * (word % 2))));
+                    const ExactSum sum = sums.sum(x, y, c);
+                    const Int128 half = word < 4 ? sum.low() : sum.high();
+                    bits.push_back(std::uint32_t((word % 4 < 2 ? half.low() : half.high()) >> (32 * (word % 2))));
                 }
             image.channels.push_back({"sum." + sums.channels()[c] + "." + std::to_string(word), std::move(bits)});
         }
@@ -463,16 +466,19 @@ struct Fnv1a {
     const PixelWindow& w = image.window;
     const auto& weight_lo = words("weight.0");
     const auto& weight_hi = words("weight.1");
+    // Four words a sum, or eight (the upper half's) when the first channel has them.
+    const std::size_t per_sum = channels.empty() || image.find("sum." + channels[0] + ".4") == nullptr ? 4 : 8;
     std::vector<const std::vector<std::uint32_t>*> parts;
     for (const std::string& channel : channels)
-        for (int word = 0; word < 4; ++word) parts.push_back(&words("sum." + channel + "." + std::to_string(word)));
+        for (std::size_t word = 0; word < per_sum; ++word) parts.push_back(&words("sum." + channel + "." + std::to_string(word)));
     std::vector<ExactSum> pixel(channels.size());
     std::size_t i = 0;
     for (int y = w.y0; y < w.y1; ++y)
         for (int x = w.x0; x < w.x1; ++x, ++i) {
             for (std::size_t c = 0; c < channels.size(); ++c) {
-                const auto word = [&](std::size_t k) { return std::uint64_t((*parts[c * 4 + k])[i]); };
-                pixel[c] = ExactSum::from_bits(Int128::from_words(word(1) << 32 | word(0), word(3) << 32 | word(2)));
+                const auto word = [&](std::size_t k) { return std::uint64_t((*parts[c * per_sum + k])[i]); };
+                const Int128 low = Int128::from_words(word(1) << 32 | word(0), word(3) << 32 | word(2));
+                pixel[c] = per_sum == 4 ? ExactSum::from_bits(low) : ExactSum::from_bits(low, Int128::from_words(word(5) << 32 | word(4), word(7) << 32 | word(6)));
             }
             sums.add(x, y, pixel, (std::uint64_t(weight_hi[i]) << 32) | weight_lo[i]);
         }

@@ -128,8 +128,8 @@ template <Scalar T>
 
 /// Add a radiance sample to sums [first, first + 3): radiance is never negative, so a
 /// channel that is NaN, infinite, < 0 or past ExactSum::limit adds 0 and is counted.
-template <std::size_t N, Scalar T>
-[[nodiscard]] std::size_t add_radiance(std::array<ExactSum, N>& sums, std::size_t first, const Rgb<T>& radiance) noexcept
+template <Scalar T>
+[[nodiscard]] std::size_t add_radiance(std::span<ExactSum> sums, std::size_t first, const Rgb<T>& radiance) noexcept
 {
     std::size_t rejected = 0;
     for (int c = 0; c < 3; ++c) {
@@ -142,8 +142,7 @@ template <std::size_t N, Scalar T>
 
 /// Add a signed sample (a normal's component) to sums[i]: one not finite, or past
 /// ExactSum::limit, adds 0 and is counted.
-template <std::size_t N>
-[[nodiscard]] std::size_t add_value(std::array<ExactSum, N>& sums, std::size_t i, double value) noexcept
+[[nodiscard]] inline std::size_t add_value(std::span<ExactSum> sums, std::size_t i, double value) noexcept
 {
     if (!ExactSum::takes(value)) return 1;
     (void)sums[i].add(ExactSum::of(value));
@@ -155,7 +154,7 @@ template <std::size_t N>
 inline void say_rejected(std::size_t values)
 {
     if (values != 0)
-        std::fprintf(stderr, "prism: %zu sample values were rejected (negative, NaN, infinite, or 2^40 = 1.1e12 or more): their light is missing from the image\n",
+        std::fprintf(stderr, "prism: %zu sample values were rejected (negative, NaN, infinite, or past the largest float, 3.4e38): their light is missing from the image\n",
                      values);
 }
 
