@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace test {
 
@@ -102,6 +103,55 @@ inline double smoke_ball_airlight(int c, const prism::Vec3<double>& origin, cons
     double sum = f(s0) + f(s1);
     for (int i = 1; i < n; ++i) sum += f(s0 + i * h) * (i % 2 ? 4 : 2);
     return sum * h / 3;
+}
+
+/// A ball of smoke in foggy air: the airlight fog times `ball_scale` inside a ball of
+/// `radius` about the origin, the airlight fog itself filling the air everywhere else.
+/// The single-scattered radiance of a point light of intensity 1 at `light` along the
+/// ray from `origin` in unit direction `w` over [0, length], in channel c, by Simpson's
+/// rule on each stretch of the ray in one fog (n intervals in all); the light's way to
+/// each point, and the ray's, attenuated by each fog over the part of it inside that fog.
+inline double smoke_ball_in_fog_airlight(int c, const prism::Vec3<double>& origin, const prism::Vec3<double>& w, const prism::Vec3<double>& light,
+                                         double radius, double ball_scale, double length = 120.0, int n = 400000)
+{
+    using prism::dot;
+    const double st_air = airlight_absorption[c] + airlight_scattering[c], st_ball = ball_scale * st_air;
+    // The part of the segment from a, `d` long along unit u, inside the ball.
+    const auto chord = [&](const prism::Vec3<double>& a, const prism::Vec3<double>& u, double d) {
+        const double b = dot(a, u), disc = b * b - (dot(a, a) - radius * radius);
+        if (disc <= 0) return 0.0;
+        const double t0 = -b - std::sqrt(disc), t1 = -b + std::sqrt(disc);
+        return std::max(0.0, std::min(d, t1) - std::max(0.0, t0));
+    };
+    const auto optical = [&](const prism::Vec3<double>& a, const prism::Vec3<double>& u, double d) {
+        const double inside = chord(a, u, d);
+        return st_ball * inside + st_air * (d - inside);
+    };
+    const prism::HenyeyGreenstein<double> hg{airlight_g};
+    const auto f = [&](double s) {
+        const prism::Vec3<double> p = origin + s * w, to_point = p - light;
+        const double d = prism::length(to_point);
+        const bool in_ball = dot(p, p) < radius * radius;
+        const double sigma_s = (in_ball ? ball_scale : 1.0) * airlight_scattering[c];
+        return sigma_s * std::exp(-optical(origin, w, s)) * hg.value(-dot(to_point, w) / d) / (d * d) * std::exp(-optical(light, to_point / d, d));
+    };
+    // The stretches: split where the ray enters and leaves the ball.
+    std::vector<double> cuts{0.0};
+    const double b = dot(origin, w), disc = b * b - (dot(origin, origin) - radius * radius);
+    if (disc > 0)
+        for (const double t : {-b - std::sqrt(disc), -b + std::sqrt(disc)})
+            if (t > 0 && t < length) cuts.push_back(t);
+    cuts.push_back(length);
+    double total = 0;
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+        const double from = cuts[k], to = cuts[k + 1];
+        const int m = std::max(2, 2 * int(double(n) * (to - from) / length / 2));
+        const double h = (to - from) / m;
+        double sum = f(from) + f(to);
+        for (int i = 1; i < m; ++i) sum += f(from + i * h) * (i % 2 ? 4 : 2);
+        total += sum * h / 3;
+    }
+    return total;
 }
 
 } // namespace test

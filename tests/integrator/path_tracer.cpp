@@ -372,6 +372,45 @@ TEST_CASE("regression: in a ball of smoke (fog inside an index-1 ball) the path 
     check({0, 3, 0.5f}, 1.5f, Ray<float>{{-4, 0.3f, 0.2f}, {1, 0, 0}}, 3);
 }
 
+TEST_CASE("regression: a ball of smoke in foggy air: the path tracer's and Whitted's single scattering count the air's fog outside the ball only")
+{
+    // The airlight fog fills the air; a ball of denser smoke (the same fog, three times
+    // as dense) sits in it, a point light beyond the ball, the camera ray through it.
+    // Before Scene::for_each_stretch_outside, a light sample from a point in the ball took
+    // no air fog beyond the ball (too bright), and one from a point in the air through the
+    // ball took the air's fog inside the ball too (too dark). Against the integral in
+    // double (smoke_ball_in_fog_airlight); 50 000 paths resolve each channel to 0.5 %.
+    using Smoke = Dielectric<float, ExactFresnel, Fog<float>>;
+    const float radius = 1.5f, scale = 3.0f;
+    const Vec3<float> light{0, 2.2f, 0.5f};
+    const Ray<float> ray{{-4, 0.3f, 0.2f}, {1, 0, 0}};
+    Fog<float> smoke = test::airlight_fog().medium;
+    smoke.absorption *= scale;
+    smoke.scattering *= scale;
+    const auto scene = Scene{Lights{PointLight<float>{.position = light, .intensity = Rgb<float>(1)}},
+                             Object{Sphere<float>({0, 0, 0}, radius), Smoke{.ior = 1, .interior = smoke}}};
+    const PathTracer tracer(scene, {.max_diffuse_bounces = 0}, test::airlight_fog());
+    const Whitted whitted(scene, {.march_steps = 256}, test::airlight_fog());
+    Pcg32 rng(3, 4), jitter(5, 6);
+    Rgb<double> sum{0}, squares{0}, marched{0};
+    const int n = int(test::samples(50000));
+    for (int i = 0; i < n; ++i) {
+        const Rgb<double> v(tracer.radiance(ray, rng));
+        sum += v;
+        squares += v * v;
+    }
+    for (int i = 0; i < 64; ++i) marched += Rgb<double>(whitted.radiance(ray, jitter)) / 64.0;
+    for (int c = 0; c < 3; ++c) {
+        CAPTURE(c);
+        const double expected = test::smoke_ball_in_fog_airlight(c, Vec3<double>(ray.origin), Vec3<double>(ray.direction), Vec3<double>(light), radius, scale);
+        const double mean = sum[c] / n, error = std::sqrt((squares[c] / n - mean * mean) / n);
+        MESSAGE("channel ", c, ": path tracer ", mean, " +- ", error, ", Whitted ", marched[c], ", integral ", expected);
+        CHECK(std::abs(mean - expected) < 4 * error + 1e-3 * expected);
+        CHECK(error < 0.01 * expected);
+        CHECK(marched[c] == doctest::Approx(expected).epsilon(0.01).scale(0));
+    }
+}
+
 TEST_CASE("fog filling graded air: the path tracer's single scattering along a path of a hundred straight pieces is the airlight integral, to 0.5 %")
 {
     // As above, the fog filling GradedAir of a uniform index, which cuts each path into

@@ -156,7 +156,7 @@ public:
                 if (!(cos_x > T(0))) return go_on;
                 const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
                                                                                                seen.distance) *
-                                 air_transmittance(air_, Ray<T>{c.point, to_camera}, seen.distance);
+                                 air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{c.point, to_camera}, seen.distance);
                 if (!(max_component(v) > T(0))) return go_on;
                 T importance = cos_x / (seen.distance * seen.distance * area * seen.cos * seen.cos * seen.cos);
                 // A shading normal weighs the light arriving here by its own cosine over the
@@ -202,13 +202,13 @@ public:
 
 private:
     /// What the scene's air lets through from `p` in a medium to the camera, `distance`
-    /// along `to_camera`: its medium's transmittance for a point in the air (FilledAir),
-    /// else 1 (a shadow ray from inside an object stops at its glass). (From a surface, the
-    /// ray that reaches the camera goes through the air all the way, frosted glass's far
-    /// side included: air_transmittance.)
+    /// along `to_camera`: its medium's transmittance over the stretches outside the
+    /// objects the ray passes (FilledAir; from inside a ball of smoke, the air beyond it),
+    /// 1 in clear air. (From inside glass the scene's transmittance is 0.)
     [[nodiscard]] Rgb<T> through_air(const MediumStack& media, const Vec3<T>& p, const Vec3<T>& to_camera, T distance) const noexcept
     {
-        return media.empty() ? air_transmittance(air_, Ray<T>{p, to_camera}, distance) : Rgb<T>(T(1));
+        (void)media;
+        return air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{p, to_camera}, distance);
     }
 
     /// Adds `value` (one path's radiance on the pixel, times `scale`) to the pixel `seen`

@@ -137,10 +137,10 @@ public:
                                     const Rgb<T> f = lobe.f(s.wi, Transport::radiance);
                                     if (!(max_component(f) > T(0))) return;
                                     const T w = shared ? light_sample_weight(s.pdf, lobe.pdf(s.wi)) : T(1);
-                                    gathered += (w * cos) * f * v * air_transmittance(air_, Ray<T>{c.point, s.wi}, s.distance) * s.irradiance;
+                                    gathered += (w * cos) * f * v * air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{c.point, s.wi}, s.distance) * s.irradiance;
                                 } else {
                                     const T w = shared ? light_sample_weight(s.pdf, cos / pi<T>) : T(1);
-                                    gathered += w * v * air_transmittance(air_, Ray<T>{c.point, s.wi}, s.distance) * s.irradiance * cos;
+                                    gathered += w * v * air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{c.point, s.wi}, s.distance) * s.irradiance * cos;
                                 }
                             });
                         });
@@ -303,19 +303,13 @@ private:
     }
 
     /// What the scene's air lets through along a light sample's shadow ray from `p` in a
-    /// medium: its medium's transmittance for a point in the air (FilledAir), 1 inside an
-    /// object (its shadow ray is the scene's, to stop at the object's glass or to pass an
-    /// index-matched boundary through the object's medium) or in clear air. (From inside a
-    /// ball of smoke in FilledAir, the air beyond the ball is not counted.)
-    /// (From a surface a shadow ray that reaches the light goes through the air all the way,
-    /// frosted glass's far side included: air_transmittance.)
+    /// medium: its medium's transmittance over the stretches outside the objects the shadow
+    /// ray passes (FilledAir; from inside a ball of smoke, the air beyond it), 1 in clear
+    /// air. (From inside glass the scene's transmittance is 0: the ray stops at the glass.)
     [[nodiscard]] Rgb<T> through_air(const MediumStack& media, const Vec3<T>& p, const LightSample<T>& s) const noexcept
     {
-        if constexpr (air_scatters<Air>) {
-            if (media.empty()) return air_transmittance(air_, Ray<T>{p, s.wi}, s.distance);
-        }
-        (void)media, (void)p, (void)s;
-        return Rgb<T>(T(1));
+        (void)media;
+        return air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{p, s.wi}, s.distance);
     }
 
     /// The samples each area light takes at a diffuse vertex (the heuristic counts them all).

@@ -466,7 +466,7 @@ private:
             return irradiance;
         }
         for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
-            irradiance += weigh(s.wi) * v * air_transmittance(air_, Ray<T>{hit.point, s.wi}, s.distance) * s.irradiance * cos;
+            irradiance += weigh(s.wi) * v * air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{hit.point, s.wi}, s.distance) * s.irradiance * cos;
         });
         return irradiance;
     }

@@ -300,7 +300,7 @@ private:
                     if (airlight) return;
                 }
                 for_each_sample_in_medium(*scene_, light, p, sampling, [&](const LightSample<T>& sample, const Rgb<T>& v) {
-                    const Rgb<T> air = media.empty() ? air_transmittance(air_, Ray<T>{p, sample.wi}, sample.distance) : Rgb<T>(T(1));
+                    const Rgb<T> air = air_transmittance<ShadowsThroughGlass::attenuated>(*scene_, air_, Ray<T>{p, sample.wi}, sample.distance);
                     arriving += T(medium.phase.value(dot(ray.direction, sample.wi))) * v * air * sample.irradiance;
                 });
             });
@@ -370,7 +370,7 @@ private:
             const T share = T(1) / T(samples_of<L>(sampling));
             Rgb<T> seen{T(0)};
             for_each_sample_arriving(*scene_, light, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v_scene, T cos) {
-                const Rgb<T> v = v_scene * air_transmittance(air_, Ray<T>{hit.point, s.wi}, s.distance);
+                const Rgb<T> v = v_scene * air_transmittance<ShadowsThroughGlass::attenuated>(*scene_, air_, Ray<T>{hit.point, s.wi}, s.distance);
                 irradiance += v * s.irradiance * cos;
                 seen += share * v;
                 const T h = highlight(material, mirror, s.wi);

@@ -217,6 +217,51 @@ public:
         return tr;
     }
 
+    /// Call f(t0, t1) for each stretch of the ray's [0, t_max] outside every object a
+    /// shadow ray passes through (transmittance's: with ShadowsThroughGlass::blocked an
+    /// index-matched boundary, a ball of smoke; with attenuated, any dielectric): where the
+    /// scene's air is, whose own medium (FilledAir) is the caller's. Inside such an object
+    /// its interior takes the air's place, and transmittance attenuates by it. One call
+    /// f(0, t_max) in a scene with no such object; the same when the ray crosses more
+    /// boundaries than ShadowBoundaries holds.
+    template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class F>
+    void for_each_stretch_outside(const Ray<T>& ray, T t_max, F&& f) const noexcept
+    {
+        if constexpr (any_pass<Glass>) {
+            detail::ShadowBoundaries<T> boundaries;
+            const Interval<T> range{T(0), t_max};
+            for (const detail::ObjectKey& key : glass_)
+                dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) {
+                    if constexpr (may_pass<I, Glass>) {
+                        const auto& object = object_at<I>(key.index);
+                        if (!passes<Glass>(object.material)) return;
+                        const auto crossings = object.shape.template crossings<false>(ray, range);
+                        if (crossings.inside_at_start) boundaries.add({T(0), key.slot, key.index, true, true});
+                        for (const Crossing<T>& c : crossings) boundaries.add({c.t, key.slot, key.index, c.entering, false});
+                    }
+                });
+            if (boundaries.overflow) {
+                f(T(0), t_max);
+                return;
+            }
+            (void)boundaries.sort_and_find_overlap(); // sorts by t
+            int depth = 0;
+            T from = T(0);
+            for (std::size_t i = 0; i < boundaries.count; ++i) {
+                const auto& b = boundaries.items[i];
+                if (b.entering || b.at_start) {
+                    if (depth == 0 && b.t > from) f(from, b.t);
+                    ++depth;
+                } else if (depth > 0 && --depth == 0) {
+                    from = b.t;
+                }
+            }
+            if (depth == 0 && t_max > from) f(from, t_max);
+        } else {
+            f(T(0), t_max);
+        }
+    }
+
     /// The objects whose interior scatters light (a Fog's, a VaryingFog's) that hold `p`,
     /// entered in key order by their priorities: the media a camera at p starts in. Empty
     /// in a scene without such objects, at no cost. (A camera inside glass that only

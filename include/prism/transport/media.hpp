@@ -14,6 +14,7 @@
 #include <prism/medium/medium.hpp>
 #include <prism/medium/nesting.hpp>
 #include <prism/scene/hit.hpp>
+#include <prism/scene/shadow.hpp>
 #include <prism/transport/travel.hpp>
 
 #include <optional>
@@ -108,6 +109,27 @@ template <class Air, Scalar T>
         return transmittance_along(air.medium, ray, inside.min, inside.max);
     } else {
         (void)air, (void)ray, (void)distance;
+        return Rgb<T>(T(1));
+    }
+}
+
+/// What the scene's air lets through along a shadow ray from `ray.origin` over `distance`,
+/// which the scene's transmittance<Glass> passes: air_transmittance over the stretches
+/// outside the objects it passes through (Scene::for_each_stretch_outside), whose insides
+/// hold their own media and no air. From inside a ball of smoke, the air beyond it counts;
+/// through one, the air inside it does not.
+template <ShadowsThroughGlass Glass, class SceneT, class Air, Scalar T>
+[[nodiscard]] Rgb<T> air_transmittance(const SceneT& scene, const Air& air, const Ray<T>& ray, T distance) noexcept
+{
+    if constexpr (air_scatters<Air>) {
+        Rgb<T> tr{T(1)};
+        scene.template for_each_stretch_outside<Glass>(ray, distance, [&](T t0, T t1) {
+            const Interval<T> inside = air.bounds().clip(ray, {t0, t1});
+            if (!inside.empty()) tr *= transmittance_along(air.medium, ray, inside.min, inside.max);
+        });
+        return tr;
+    } else {
+        (void)scene, (void)air, (void)ray, (void)distance;
         return Rgb<T>(T(1));
     }
 }
