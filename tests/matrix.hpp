@@ -31,6 +31,7 @@
 #include <array>
 #include <optional>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <string>
 #include <tuple>
@@ -498,6 +499,27 @@ inline std::vector<CellSpec> covering_cells()
         for (std::size_t p = 0; p < n_p; ++p)
             for (const bool inside : cameras(placements[p])) add({m, light_kinds[(m + 3 * p + (inside ? 5 : 0)) % n_l], placements[p], inside});
     return cells;
+}
+
+/// The whole product: every material kind under every light in every placement, the
+/// camera outside and (where it can be) inside.
+inline std::vector<CellSpec> all_cells()
+{
+    std::vector<CellSpec> cells;
+    for (std::size_t m = 0; m < material_count; ++m)
+        for (const LightKind l : light_kinds)
+            for (const Placement p : placements)
+                for (const bool inside : cameras(p)) cells.push_back({m, l, p, inside});
+    return cells;
+}
+
+/// The cells the full tier's matrix runs: covering_cells(), or with the environment's
+/// PRISM_MATRIX=all the whole product (all_cells(), about three times as long: run by
+/// hand, not in CI).
+inline std::vector<CellSpec> matrix_cells()
+{
+    const char* which = std::getenv("PRISM_MATRIX");
+    return which != nullptr && std::string(which) == "all" ? all_cells() : covering_cells();
 }
 
 /// The furnace cells: every lossless material kind in every placement, the camera

@@ -7,5 +7,5 @@ using namespace test::matrix; // (a program of its own, never a unity batch)
 
 TEST_CASE("the consistency matrix, none:false:lights not at infinity, in clear air and with fog in objects")
 {
-    check_rows(run_agreement<Sky::none, false>(covering_cells(), Effort{}));
+    check_rows(run_agreement<Sky::none, false>(matrix_cells(), Effort{}));
 }

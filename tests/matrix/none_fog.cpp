@@ -7,5 +7,5 @@ using namespace test::matrix; // (a program of its own, never a unity batch)
 
 TEST_CASE("the consistency matrix, none:true:lights not at infinity, in fog filling the air")
 {
-    check_rows(run_agreement<Sky::none, true>(covering_cells(), Effort{}));
+    check_rows(run_agreement<Sky::none, true>(matrix_cells(), Effort{}));
 }

@@ -7,6 +7,6 @@ using namespace test::matrix; // (a program of its own, never a unity batch)
 
 TEST_CASE("the consistency matrix, a uniform sky and an environment map, in fog filling the air")
 {
-    check_rows(run_agreement<Sky::uniform, true>(covering_cells(), Effort{}));
-    check_rows(run_agreement<Sky::map, true>(covering_cells(), Effort{}));
+    check_rows(run_agreement<Sky::uniform, true>(matrix_cells(), Effort{}));
+    check_rows(run_agreement<Sky::map, true>(matrix_cells(), Effort{}));
 }
