@@ -9325,6 +9325,106 @@ struct Hit {
 
 } // namespace prism
 
+// ---- prism/scene/shadow.hpp ----
+// How a shadow ray crosses glass: blocked (its light arrives by a caustic map instead), or
+// attenuated by what each dielectric it crosses lets through, and where transmissive
+// objects overlap, walked boundary by boundary in the order of their priorities
+// (medium/nesting.hpp).
+
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+
+namespace prism {
+
+/// How shadow rays treat dielectrics.
+enum class ShadowsThroughGlass : bool {
+    attenuated, ///< light passes, attenuated by the medium and the transmission tint (Whitted)
+    blocked,    ///< glass casts a full shadow: its light arrives by a caustic map instead
+};
+
+namespace detail {
+
+/// Where a shadow ray meets a transmissive object's boundary (or starts inside it), kept
+/// to resolve overlapping objects by priority; a fixed number, no allocation.
+template <Scalar T>
+struct ShadowBoundaries {
+    struct Boundary {
+        T t;
+        std::uint32_t slot;
+        std::uint32_t index;
+        bool entering;
+        bool at_start; ///< the ray starts inside the object (no boundary crossed)
+    };
+    static constexpr std::size_t capacity = 32;
+    std::array<Boundary, capacity> items;
+    std::size_t count = 0;
+    bool overflow = false;
+
+    constexpr void add(const Boundary& b) noexcept
+    {
+        if (count == capacity) overflow = true;
+        else items[count++] = b;
+    }
+
+    /// Sort by t; whether two objects' insides overlap anywhere along the ray.
+    constexpr bool sort_and_find_overlap() noexcept
+    {
+        if (overflow) return false;
+        for (std::size_t i = 1; i < count; ++i)
+            for (std::size_t j = i; j > 0 && items[j].t < items[j - 1].t; --j) std::swap(items[j], items[j - 1]);
+        int depth = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            depth += items[i].entering || items[i].at_start ? 1 : -1;
+            if (depth >= 2) return true;
+        }
+        return false;
+    }
+};
+
+/// A shadow ray through overlapping transmissive objects of `scene`: each stretch
+/// attenuated by the medium of the object it is in (the highest priority), a
+/// transmission tint at each real interface, none at a false one.
+template <class SceneT, Scalar T>
+[[nodiscard]] Rgb<T> transmittance_by_priority(const SceneT& scene, const Ray<T>& ray, T t_max, const ShadowBoundaries<T>& boundaries) noexcept
+{
+    Rgb<T> tr{T(1)};
+    MediumStack media;
+    T previous = T(0);
+    const auto attenuate_to = [&](T t) {
+        if (const Inside* in = media.top()) {
+            scene.visit_material(in->slot, in->index, [&]<class N>(const N& material) {
+                if constexpr (transmits<N>) tr *= transmittance_along(material.medium(), ray, previous, t);
+            });
+        }
+        previous = t;
+    };
+    for (std::size_t i = 0; i < boundaries.count; ++i) {
+        const auto& b = boundaries.items[i];
+        attenuate_to(b.t);
+        scene.visit_material(b.slot, b.index, [&]<class N>(const N& material) {
+            if constexpr (transmits<N>) {
+                const Inside object{b.slot, b.index, nesting_priority(material)};
+                if (b.at_start) {
+                    media = media.entered(object);
+                    return;
+                }
+                const Interface face = nested_interface(media, object, b.entering);
+                if (face.real) tr *= material.transmission_tint();
+                media = face.beyond;
+            }
+        });
+    }
+    attenuate_to(t_max);
+    return tr;
+}
+
+} // namespace detail
+
+} // namespace prism
+
 // ---- prism/transport/travel.hpp ----
 // How a ray travels through the scene's air to the first surface it meets
 // (first_hit_in_air): straight in StraightAir; in GradedAir it follows the ray equation
@@ -9668,6 +9768,27 @@ template <class Air, Scalar T>
         return transmittance_along(air.medium, ray, inside.min, inside.max);
     } else {
         (void)air, (void)ray, (void)distance;
+        return Rgb<T>(T(1));
+    }
+}
+
+/// What the scene's air lets through along a shadow ray from `ray.origin` over `distance`,
+/// which the scene's transmittance<Glass> passes: air_transmittance over the stretches
+/// outside the objects it passes through (Scene::for_each_stretch_outside), whose insides
+/// hold their own media and no air. From inside a ball of smoke, the air beyond it counts;
+/// through one, the air inside it does not.
+template <ShadowsThroughGlass Glass, class SceneT, class Air, Scalar T>
+[[nodiscard]] Rgb<T> air_transmittance(const SceneT& scene, const Air& air, const Ray<T>& ray, T distance) noexcept
+{
+    if constexpr (air_scatters<Air>) {
+        Rgb<T> tr{T(1)};
+        scene.template for_each_stretch_outside<Glass>(ray, distance, [&](T t0, T t1) {
+            const Interval<T> inside = air.bounds().clip(ray, {t0, t1});
+            if (!inside.empty()) tr *= transmittance_along(air.medium, ray, inside.min, inside.max);
+        });
+        return tr;
+    } else {
+        (void)scene, (void)air, (void)ray, (void)distance;
         return Rgb<T>(T(1));
     }
 }
@@ -10470,8 +10591,8 @@ template <class SceneT, class Air = StraightAir>
 
 // ---- prism/core/int128.hpp ----
 // A 128-bit signed integer, two's complement, with only what exact sums need: made from
-// and read as two 64-bit words, negated, added with overflow detected, and rounded once
-// to double. Two implementations with the same bits: the compiler's __int128 where it
+// and read as two 64-bit words, negated, added with overflow detected (or as the lower
+// half of a wider sum, with its carry), and rounded once to double. Two implementations with the same bits: the compiler's __int128 where it
 // has one (GCC and Clang on 64-bit targets), and two 64-bit words anywhere (MSVC has no
 // 128-bit integer). Int128 is the first, or the second where there is no __int128 or
 // PRISM_PORTABLE_INT128 is defined; both are compiled and compared in every test build.
@@ -10520,6 +10641,19 @@ public:
         low_ = low;
         high_ = high;
         return true;
+    }
+
+    /// Add `other`'s bits as unsigned 128-bit numbers, modulo 2^128; true when the sum
+    /// carried out of bit 127 (the lower half of a wider sum).
+    [[nodiscard]] constexpr bool add_with_carry(const WordsInt128& other) noexcept
+    {
+        const std::uint64_t low = low_ + other.low_;
+        const std::uint64_t partial = high_ + other.high_;
+        const std::uint64_t high = partial + std::uint64_t(low < low_);
+        const bool carry = partial < high_ || high < partial;
+        low_ = low;
+        high_ = high;
+        return carry;
     }
 
     /// The nearest double (ties to even), as a conversion of __int128 gives it.
@@ -10590,6 +10724,13 @@ public:
         if (__builtin_add_overflow(bits_, other.bits_, &sum)) return false;
         bits_ = sum;
         return true;
+    }
+
+    [[nodiscard]] constexpr bool add_with_carry(const NativeInt128& other) noexcept
+    {
+        const auto a = UnsignedBits(bits_), sum = a + UnsignedBits(other.bits_);
+        bits_ = Bits(sum); // modulo 2^128 (C++20)
+        return sum < a;
     }
 
     [[nodiscard]] double to_double() const noexcept { return double(bits_); }
@@ -10709,10 +10850,12 @@ private:
 // Floating-point addition is not associative: (a + b) + c and a + (b + c) can differ in
 // the last bit, and far more when a and c differ by many orders of magnitude, so sums
 // made in parts and added in another order would not reproduce the whole. Here each
-// sample is rounded once, to the nearest multiple of 2^-64, and summed as a 128-bit
-// integer (ExactSum, core/int128.hpp), whose addition is exact, associative and commutative. That one
-// rounding depends on the sample alone; it keeps every float sample in [2^-41, 2^40)
-// (4.5e-13 to 1.1e12) exactly and moves any other by at most 2^-65 (2.7e-20).
+// sample is rounded once, to the nearest multiple of 2^-64, and summed as a 256-bit
+// integer (ExactSum, of two core/int128.hpp halves), whose addition is exact, associative
+// and commutative. That one rounding depends on the sample alone; it keeps every float
+// sample from 2^-41 (4.5e-13) up exactly and moves a smaller one by at most 2^-65
+// (2.7e-20). Every finite float sample is taken, up to 3.4e38. An Accumulation stores
+// each sum's lower 128 bits, and its upper bits only once some sum passes 2^63.
 
 
 #include <atomic>
@@ -10720,6 +10863,7 @@ private:
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <mutex>
 #include <span>
 #include <string>
 #include <vector>
@@ -10774,23 +10918,27 @@ struct PassRange {
     friend constexpr bool operator==(const PassRange&, const PassRange&) = default;
 };
 
-/// A signed fixed-point number with 64 integer and 64 fraction bits: samples rounded
-/// once to a multiple of 2^-64 and summed with no further rounding. `Integer` is one of
-/// core/int128.hpp's 128-bit integers (their bits are the same); ExactSum takes Int128.
+/// A signed fixed-point number with 192 integer and 64 fraction bits: samples rounded
+/// once to a multiple of 2^-64 and summed with no further rounding. It is a 256-bit
+/// two's-complement integer of 2^-64 steps, held as two of core/int128.hpp's 128-bit
+/// integers (`Integer`; their bits are the same): the lower half's bits, and the upper
+/// half, signed. A sample takes only the lower half unless it is 2^52 or more; a sum
+/// needs the upper half only past 2^63 (Accumulation then keeps it, and not before).
 template <class Integer>
 class BasicExactSum {
 public:
-    /// Samples are refused from this magnitude on (the render counts them as rejected,
-    /// as it does NaN): 2^23 such samples could not overflow the 64 integer bits.
-    static constexpr double limit = 0x1p40;
+    /// The largest magnitude a sample may have: the largest finite float. Every sample
+    /// a float scene makes is taken, and a mean of such samples is a finite float. (2^63
+    /// such samples could not overflow the 192 integer bits.)
+    static constexpr double limit = double(std::numeric_limits<float>::max());
 
     constexpr BasicExactSum() noexcept = default;
 
     /// x rounded to the nearest multiple of 2^-64 (halves away from zero), which is
-    /// round(ldexp(x, 64)) as an integer. |x| < limit.
+    /// round(ldexp(x, 64)) as an integer. |x| <= limit.
     [[nodiscard]] static constexpr BasicExactSum of(double x) noexcept
     {
-        PRISM_ASSERT(x > -limit && x < limit);
+        PRISM_ASSERT(x >= -limit && x <= limit);
         // From x's bits, in integers: |x| = m 2^(e - 1075) (e the biased exponent, m
         // with its leading one, or a denormal's m at e = 1), so |x| 2^64 = m 2^s. (The
         // library's ldexp, round and double-to-integer conversion are calls, one a
@@ -10799,45 +10947,114 @@ public:
         const auto biased = int((bits >> 52) & 0x7ff);
         const std::uint64_t fraction = bits & ((std::uint64_t(1) << 52) - 1);
         const std::uint64_t m = biased == 0 ? fraction : fraction | (std::uint64_t(1) << 52);
-        const int s = (biased == 0 ? 1 : biased) - 1075 + 64; // below 40 + 12 (|x| < 2^40)
-        // The two 64-bit halves, each by one shift (a shift of the whole 128 bits by a
-        // variable count is a branch or a select more, and this is done for every
-        // sample and channel).
-        std::uint64_t high = 0, low = 0;
-        if (s >= 0) {
-            low = m << s;
-            high = (m >> 1) >> (63 - s); // m >> (64 - s), and 0 for s = 0
+        const int s = (biased == 0 ? 1 : biased) - 1075 + 64; // below 128 + 12 (|x| < 2^128)
+        // The words of m 2^s, each by one shift (a shift of the whole by a variable
+        // count is a branch or a select more, and this is done for every sample and
+        // channel). Below 2^52 (s < 64) the upper half is 0.
+        Integer low{}, high{};
+        if (s >= 128) { // to 139: m 2^(s - 128) < 2^64
+            high = Integer::from_words(m << (s - 128), 0);
+        } else if (s >= 64) {
+            low = Integer::from_words(0, m << (s - 64));
+            high = Integer::from_words((m >> 1) >> (127 - s), 0); // m >> (128 - s)
+        } else if (s >= 0) {
+            low = Integer::from_words(m << s, (m >> 1) >> (63 - s)); // m >> (64 - s), and 0 for s = 0
         } else if (s > -54) {
-            low = (m + (std::uint64_t(1) << (-s - 1))) >> -s; // half up: away from zero
+            low = Integer::from_words((m + (std::uint64_t(1) << (-s - 1))) >> -s, 0); // half up: away from zero
         } // (s <= -54: m 2^s < 2^53 2^-54, nearer 0.)
-        const Integer value = Integer::from_words(low, high);
-        return from_bits((bits >> 63) != 0 ? -value : value);
+        if ((bits >> 63) == 0) return from_bits(low, high);
+        // -(high 2^128 + low) = (2^128 - low) + (-high - 1) 2^128, or -high 2^128 when low is 0.
+        Integer negated_high = -high;
+        if (!(low == Integer{})) (void)negated_high.add(Integer::from_int64(-1)); // |high| < 2^12: no overflow
+        return from_bits(-low, negated_high);
     }
 
-    /// Whether x is a sample this type takes: finite and |x| < limit.
-    [[nodiscard]] static constexpr bool takes(double x) noexcept { return x > -limit && x < limit; }
+    /// Whether x is a sample this type takes: finite and |x| <= limit.
+    [[nodiscard]] static constexpr bool takes(double x) noexcept { return x >= -limit && x <= limit; }
 
-    /// The sum whose value is bits 2^-64.
+    /// The sum whose value is bits 2^-64, for a 128-bit signed `bits`.
     [[nodiscard]] static constexpr BasicExactSum from_bits(Integer bits) noexcept
     {
+        return from_bits(bits, bits.negative() ? Integer::from_int64(-1) : Integer{});
+    }
+    /// The sum whose value is (high 2^128 + low) 2^-64, `low` read as unsigned.
+    [[nodiscard]] static constexpr BasicExactSum from_bits(Integer low, Integer high) noexcept
+    {
         BasicExactSum s;
-        s.bits_ = bits;
+        s.low_ = low;
+        s.high_ = high;
         return s;
     }
-    /// The sum in units of 2^-64.
-    [[nodiscard]] constexpr Integer bits() const noexcept { return bits_; }
+    /// The lower 128 bits of the sum in units of 2^-64 (as a signed 128-bit integer,
+    /// the sum itself when narrow()).
+    [[nodiscard]] constexpr Integer low() const noexcept { return low_; }
+    /// The upper 128 bits, signed.
+    [[nodiscard]] constexpr Integer high() const noexcept { return high_; }
+    /// Whether the sum is low() alone: its magnitude is below 2^63 (high() only extends
+    /// low()'s sign).
+    [[nodiscard]] constexpr bool narrow() const noexcept
+    {
+        return high_ == (low_.negative() ? Integer::from_int64(-1) : Integer{});
+    }
 
-    /// Add `other`; false (and this unchanged) when the sum would pass 2^63 in magnitude.
-    [[nodiscard]] constexpr bool add(const BasicExactSum& other) noexcept { return bits_.add(other.bits_); }
+    /// Add `other`; false (and this unchanged) when the sum would pass 2^191 in magnitude.
+    [[nodiscard]] constexpr bool add(const BasicExactSum& other) noexcept
+    {
+        Integer low = low_, high = high_;
+        const bool carry = low.add_with_carry(other.low_);
+        if (!high.add(other.high_) || (carry && !high.add(Integer::from_int64(1)))) return false;
+        low_ = low;
+        high_ = high;
+        return true;
+    }
 
-    /// The sum, rounded once to double.
-    [[nodiscard]] double value() const noexcept { return bits_.to_double() * 0x1p-64; } // exact scaling: the double is 0 or at least 1
+    /// The sum, rounded once to double (ties to even).
+    [[nodiscard]] double value() const noexcept
+    {
+        if (narrow()) return low_.to_double() * 0x1p-64; // exact scaling: the double is 0 or at least 1
+        // The magnitude's four words, low first.
+        const bool negative = high_.negative();
+        Integer low = low_, high = high_;
+        if (negative) {
+            high = -high;
+            if (!(low == Integer{})) (void)high.add(Integer::from_int64(-1));
+            low = -low;
+        }
+        const std::uint64_t words[4] = {low.low(), low.high(), high.low(), high.high()};
+        int top = 3;
+        while (words[top] == 0) --top; // not narrow: some upper word is not 0
+        // The leading one is bit `length - 1`; the 64 bits below it and it, and whether
+        // any bit further down is set, decide the double.
+        const int length = 64 * top + 64 - std::countl_zero(words[top]);
+        const auto bits_at = [&](int at) { // the 64 bits from bit `at` up (at > -64)
+            std::uint64_t r = 0;
+            for (int k = 0; k < 4; ++k) {
+                const int shift = 64 * k - at;
+                if (shift > -64 && shift < 64) r |= shift >= 0 ? words[k] << shift : words[k] >> -shift;
+            }
+            return r;
+        };
+        const int first = length - 64;
+        const std::uint64_t leading = bits_at(first);
+        bool below = false;
+        for (int k = 0; k < 4; ++k) {
+            const int from = 64 * k; // the word's bits under `first`
+            if (from >= first) break;
+            below |= (first - from >= 64 ? words[k] : words[k] & ((std::uint64_t(1) << (first - from)) - 1)) != 0;
+        }
+        std::uint64_t mantissa = leading >> 11;
+        const std::uint64_t rest = leading & 0x7ff, half = 0x400;
+        if (rest > half || (rest == half && (below || (mantissa & 1) != 0))) ++mantissa; // 2^53 at most: exact
+        const double magnitude = std::ldexp(double(mantissa), first + 11 - 64);
+        return negative ? -magnitude : magnitude;
+    }
 
     /// Sums are equal when their bits are.
     friend constexpr bool operator==(const BasicExactSum&, const BasicExactSum&) = default;
 
 private:
-    Integer bits_{};
+    Integer low_{};
+    Integer high_{};
 };
 
 /// The exact sum every film, render and file of prism uses.
@@ -10857,7 +11074,9 @@ namespace detail {
 
 /// Exact per-pixel sums of named channels ("R", "G", "B" first) and the per-pixel
 /// weight (samples or passes summed) over a window of a width x height image. Threads
-/// may add to distinct pixels at once.
+/// may add to distinct pixels at once. Each sum's lower 128 bits are stored; its upper
+/// bits are stored from the first sum past 2^63 on (a plane as large again, which a
+/// render whose pixel sums stay below 2^63 = 9.2e18 never makes).
 class Accumulation {
 public:
     /// Zeroed sums over `window` of a width x height image, for `channels` (R, G, B first); throws std::invalid_argument, naming the value, for a bad size, window or channel list, and a clear error when the memory cannot be had.
@@ -10871,11 +11090,11 @@ public:
         if (channels_.size() < 3 || channels_[0] != "R" || channels_[1] != "G" || channels_[2] != "B")
             detail::throw_invalid("Accumulation channels must begin with R, G, B");
         const std::size_t pixels = window.area();
-        const double bytes = double(pixels) * double(channels_.size() * sizeof(ExactSum) + sizeof(std::uint64_t));
+        const double bytes = double(pixels) * double(channels_.size() * sizeof(Int128) + sizeof(std::uint64_t));
         const std::string what = "an Accumulation of " + std::to_string(window.width()) + " x " + std::to_string(window.height()) + " pixels";
         detail::require_memory(what, bytes);
         try {
-            sums_.assign(pixels * channels_.size(), ExactSum{});
+            low_.assign(pixels * channels_.size(), Int128{});
             weights_.assign(pixels, 0);
         } catch (const std::bad_alloc&) {
             throw allocation_error("prism: " + what + " needs " + detail::describe_bytes(bytes) + ", which could not be allocated");
@@ -10884,15 +11103,17 @@ public:
 
     /// A copy of the sums and the flags.
     Accumulation(const Accumulation& other)
-        : width_(other.width_), height_(other.height_), window_(other.window_), channels_(other.channels_), sums_(other.sums_),
-          weights_(other.weights_), rejected_(other.rejected()), overflowed_(other.overflowed())
+        : width_(other.width_), height_(other.height_), window_(other.window_), channels_(other.channels_), low_(other.low_),
+          high_(other.high_), weights_(other.weights_), rejected_(other.rejected()), overflowed_(other.overflowed())
     {
+        wide_.store(!high_.empty(), std::memory_order_relaxed);
     }
     /// Takes the sums over.
     Accumulation(Accumulation&& other) noexcept
-        : width_(other.width_), height_(other.height_), window_(other.window_), channels_(std::move(other.channels_)),
-          sums_(std::move(other.sums_)), weights_(std::move(other.weights_)), rejected_(other.rejected()), overflowed_(other.overflowed())
+        : width_(other.width_), height_(other.height_), window_(other.window_), channels_(std::move(other.channels_)), low_(std::move(other.low_)),
+          high_(std::move(other.high_)), weights_(std::move(other.weights_)), rejected_(other.rejected()), overflowed_(other.overflowed())
     {
+        wide_.store(!high_.empty(), std::memory_order_relaxed);
     }
     /// Copy or move assignment.
     Accumulation& operator=(Accumulation other) noexcept
@@ -10901,8 +11122,10 @@ public:
         height_ = other.height_;
         window_ = other.window_;
         channels_ = std::move(other.channels_);
-        sums_ = std::move(other.sums_);
+        low_ = std::move(other.low_);
+        high_ = std::move(other.high_);
         weights_ = std::move(other.weights_);
+        wide_.store(!high_.empty(), std::memory_order_relaxed);
         rejected_.store(other.rejected(), std::memory_order_relaxed);
         overflowed_.store(other.overflowed(), std::memory_order_relaxed);
         return *this;
@@ -10917,22 +11140,54 @@ public:
     /// The channels' names, R, G, B first.
     [[nodiscard]] const std::vector<std::string>& channels() const noexcept { return channels_; }
 
-    /// Pixel (x, y)'s sums, one per channel; (x, y) in image coordinates, inside the window.
-    [[nodiscard]] std::span<const ExactSum> sums(int x, int y) const noexcept
+    /// Pixel (x, y)'s sum of channel c; (x, y) in image coordinates, inside the window.
+    [[nodiscard]] ExactSum sum(int x, int y, std::size_t c) const noexcept
     {
-        return {sums_.data() + index(x, y) * channels_.size(), channels_.size()};
+        PRISM_ASSERT(c < channels_.size());
+        const std::size_t i = index(x, y) * channels_.size() + c;
+        const ExactSum narrow = ExactSum::from_bits(low_[i]);
+        if (!wide_.load(std::memory_order_acquire)) return narrow;
+        Int128 high = narrow.high();
+        (void)high.add(high_[i]); // the stored correction was made from this sum: no overflow
+        return ExactSum::from_bits(low_[i], high);
+    }
+    /// Pixel (x, y)'s sums, one per channel.
+    [[nodiscard]] std::vector<ExactSum> sums(int x, int y) const
+    {
+        std::vector<ExactSum> out(channels_.size());
+        for (std::size_t c = 0; c < out.size(); ++c) out[c] = sum(x, y, c);
+        return out;
     }
     /// Pixel (x, y)'s weight: the samples or passes its sums hold.
     [[nodiscard]] std::uint64_t weight(int x, int y) const noexcept { return weights_[index(x, y)]; }
+    /// Whether some sum has passed 2^63 (its upper bits are stored).
+    [[nodiscard]] bool wide() const noexcept { return wide_.load(std::memory_order_acquire); }
 
     /// Add sums (one per channel) and a weight to pixel (x, y). A sum that would
-    /// overflow is left out and flagged (overflowed()).
+    /// overflow is left out and flagged (overflowed()), as is one past 2^63 when the
+    /// memory for the upper bits cannot be had.
     void add(int x, int y, std::span<const ExactSum> sums, std::uint64_t weight) noexcept
     {
         PRISM_ASSERT(sums.size() == channels_.size());
         const std::size_t i = index(x, y);
-        for (std::size_t c = 0; c < sums.size(); ++c)
-            if (!sums_[i * channels_.size() + c].add(sums[c])) overflowed_.store(true, std::memory_order_relaxed);
+        for (std::size_t c = 0; c < sums.size(); ++c) {
+            ExactSum total = sum(x, y, c);
+            if (!total.add(sums[c])) {
+                overflowed_.store(true, std::memory_order_relaxed);
+                continue;
+            }
+            // The upper half less the lower half's sign: 0 for a narrow sum (and for the
+            // few sums within 2^128 of 2^255, one that does not fit: an overflow).
+            Int128 correction = total.high();
+            const bool fits = !total.low().negative() || correction.add(Int128::from_int64(1));
+            if (!fits || (!(correction == Int128{}) && !make_wide())) {
+                overflowed_.store(true, std::memory_order_relaxed);
+                continue;
+            }
+            const std::size_t k = i * channels_.size() + c;
+            low_[k] = total.low();
+            if (wide_.load(std::memory_order_acquire)) high_[k] = correction;
+        }
         if (weight > std::numeric_limits<std::uint64_t>::max() - weights_[i])
             overflowed_.store(true, std::memory_order_relaxed);
         else
@@ -10944,8 +11199,9 @@ public:
     void reject(std::size_t count) noexcept { rejected_.fetch_add(count, std::memory_order_relaxed); }
     /// How many sample values were left out (reject()).
     [[nodiscard]] std::size_t rejected() const noexcept { return rejected_.load(std::memory_order_relaxed); }
-    /// Whether some sum or weight would have overflowed (and was left out): the sums
-    /// are then wrong, and image() refuses them.
+    /// Whether some sum or weight would have overflowed, or a sum past 2^63 found no
+    /// memory for its upper bits (and was left out): the sums are then wrong, and image()
+    /// refuses them.
     [[nodiscard]] bool overflowed() const noexcept { return overflowed_.load(std::memory_order_relaxed); }
 
     /// Add a part of the same image: its window inside this one, the same channels.
@@ -10968,15 +11224,15 @@ public:
     /// sum / weight, 0 where the weight is 0.
     [[nodiscard]] Film image(std::size_t first = 0) const
     {
-        if (overflowed()) detail::throw_invalid("Accumulation overflowed (a sum passed 2^63): its image would be wrong");
+        if (overflowed())
+            detail::throw_invalid("Accumulation overflowed (a sum passed 2^191, a weight 2^64, or a sum past 2^63 found no memory): its image would be wrong");
         if (first + 3 > channels_.size()) detail::throw_invalid("Accumulation image from channel ", first, " of ", channels_.size());
         Film film(window_.width(), window_.height());
         for (int y = window_.y0; y < window_.y1; ++y)
             for (int x = window_.x0; x < window_.x1; ++x) {
-                const auto s = sums(x, y);
                 const std::uint64_t w = weight(x, y);
                 film.set(x - window_.x0, y - window_.y0,
-                         Rgb<float>(detail::mean(s[first], w), detail::mean(s[first + 1], w), detail::mean(s[first + 2], w)));
+                         Rgb<float>(detail::mean(sum(x, y, first), w), detail::mean(sum(x, y, first + 1), w), detail::mean(sum(x, y, first + 2), w)));
             }
         film.count_rejected(rejected());
         return film;
@@ -10989,12 +11245,30 @@ private:
         return std::size_t(y - window_.y0) * std::size_t(window_.width()) + std::size_t(x - window_.x0);
     }
 
+    /// Make the plane of upper bits, once; false when its memory cannot be had.
+    [[nodiscard]] bool make_wide() noexcept
+    {
+        if (wide_.load(std::memory_order_acquire)) return true;
+        const std::lock_guard lock(widening_);
+        if (wide_.load(std::memory_order_relaxed)) return true;
+        try {
+            high_.assign(low_.size(), Int128{}); // zeros: every sum so far is narrow
+        } catch (const std::bad_alloc&) {
+            return false;
+        }
+        wide_.store(true, std::memory_order_release);
+        return true;
+    }
+
     int width_;
     int height_;
     PixelWindow window_;
     std::vector<std::string> channels_;
-    std::vector<ExactSum> sums_;
+    std::vector<Int128> low_;  // each sum's lower 128 bits
+    std::vector<Int128> high_; // empty, or each sum's upper 128 bits less its lower half's sign
     std::vector<std::uint64_t> weights_;
+    std::atomic<bool> wide_{false};
+    std::mutex widening_;
     std::atomic<std::size_t> rejected_{0};
     std::atomic<bool> overflowed_{false};
 };
@@ -11410,8 +11684,8 @@ template <Scalar T>
 
 /// Add a radiance sample to sums [first, first + 3): radiance is never negative, so a
 /// channel that is NaN, infinite, < 0 or past ExactSum::limit adds 0 and is counted.
-template <std::size_t N, Scalar T>
-[[nodiscard]] std::size_t add_radiance(std::array<ExactSum, N>& sums, std::size_t first, const Rgb<T>& radiance) noexcept
+template <Scalar T>
+[[nodiscard]] std::size_t add_radiance(std::span<ExactSum> sums, std::size_t first, const Rgb<T>& radiance) noexcept
 {
     std::size_t rejected = 0;
     for (int c = 0; c < 3; ++c) {
@@ -11424,8 +11698,7 @@ template <std::size_t N, Scalar T>
 
 /// Add a signed sample (a normal's component) to sums[i]: one not finite, or past
 /// ExactSum::limit, adds 0 and is counted.
-template <std::size_t N>
-[[nodiscard]] std::size_t add_value(std::array<ExactSum, N>& sums, std::size_t i, double value) noexcept
+[[nodiscard]] inline std::size_t add_value(std::span<ExactSum> sums, std::size_t i, double value) noexcept
 {
     if (!ExactSum::takes(value)) return 1;
     (void)sums[i].add(ExactSum::of(value));
@@ -11437,7 +11710,7 @@ template <std::size_t N>
 inline void say_rejected(std::size_t values)
 {
     if (values != 0)
-        std::fprintf(stderr, "prism: %zu sample values were rejected (negative, NaN, infinite, or 2^40 = 1.1e12 or more): their light is missing from the image\n",
+        std::fprintf(stderr, "prism: %zu sample values were rejected (negative, NaN, infinite, or past the largest float, 3.4e38): their light is missing from the image\n",
                      values);
 }
 
@@ -12210,106 +12483,6 @@ concept LightList = detail::is_light_list<X>::value;
 
 } // namespace prism
 
-// ---- prism/scene/shadow.hpp ----
-// How a shadow ray crosses glass: blocked (its light arrives by a caustic map instead), or
-// attenuated by what each dielectric it crosses lets through, and where transmissive
-// objects overlap, walked boundary by boundary in the order of their priorities
-// (medium/nesting.hpp).
-
-
-#include <array>
-#include <cstddef>
-#include <cstdint>
-#include <utility>
-
-namespace prism {
-
-/// How shadow rays treat dielectrics.
-enum class ShadowsThroughGlass : bool {
-    attenuated, ///< light passes, attenuated by the medium and the transmission tint (Whitted)
-    blocked,    ///< glass casts a full shadow: its light arrives by a caustic map instead
-};
-
-namespace detail {
-
-/// Where a shadow ray meets a transmissive object's boundary (or starts inside it), kept
-/// to resolve overlapping objects by priority; a fixed number, no allocation.
-template <Scalar T>
-struct ShadowBoundaries {
-    struct Boundary {
-        T t;
-        std::uint32_t slot;
-        std::uint32_t index;
-        bool entering;
-        bool at_start; ///< the ray starts inside the object (no boundary crossed)
-    };
-    static constexpr std::size_t capacity = 32;
-    std::array<Boundary, capacity> items;
-    std::size_t count = 0;
-    bool overflow = false;
-
-    constexpr void add(const Boundary& b) noexcept
-    {
-        if (count == capacity) overflow = true;
-        else items[count++] = b;
-    }
-
-    /// Sort by t; whether two objects' insides overlap anywhere along the ray.
-    constexpr bool sort_and_find_overlap() noexcept
-    {
-        if (overflow) return false;
-        for (std::size_t i = 1; i < count; ++i)
-            for (std::size_t j = i; j > 0 && items[j].t < items[j - 1].t; --j) std::swap(items[j], items[j - 1]);
-        int depth = 0;
-        for (std::size_t i = 0; i < count; ++i) {
-            depth += items[i].entering || items[i].at_start ? 1 : -1;
-            if (depth >= 2) return true;
-        }
-        return false;
-    }
-};
-
-/// A shadow ray through overlapping transmissive objects of `scene`: each stretch
-/// attenuated by the medium of the object it is in (the highest priority), a
-/// transmission tint at each real interface, none at a false one.
-template <class SceneT, Scalar T>
-[[nodiscard]] Rgb<T> transmittance_by_priority(const SceneT& scene, const Ray<T>& ray, T t_max, const ShadowBoundaries<T>& boundaries) noexcept
-{
-    Rgb<T> tr{T(1)};
-    MediumStack media;
-    T previous = T(0);
-    const auto attenuate_to = [&](T t) {
-        if (const Inside* in = media.top()) {
-            scene.visit_material(in->slot, in->index, [&]<class N>(const N& material) {
-                if constexpr (transmits<N>) tr *= transmittance_along(material.medium(), ray, previous, t);
-            });
-        }
-        previous = t;
-    };
-    for (std::size_t i = 0; i < boundaries.count; ++i) {
-        const auto& b = boundaries.items[i];
-        attenuate_to(b.t);
-        scene.visit_material(b.slot, b.index, [&]<class N>(const N& material) {
-            if constexpr (transmits<N>) {
-                const Inside object{b.slot, b.index, nesting_priority(material)};
-                if (b.at_start) {
-                    media = media.entered(object);
-                    return;
-                }
-                const Interface face = nested_interface(media, object, b.entering);
-                if (face.real) tr *= material.transmission_tint();
-                media = face.beyond;
-            }
-        });
-    }
-    attenuate_to(t_max);
-    return tr;
-}
-
-} // namespace detail
-
-} // namespace prism
-
 // ---- prism/scene/scene.hpp ----
 // Scene: lights and object slots fixed at compile time; closest-hit and shadow queries.
 // Its lights are scene/lights.hpp's, the order that settles ties scene/object_key.hpp's,
@@ -12512,6 +12685,51 @@ public:
             if (boundaries.sort_and_find_overlap()) return detail::transmittance_by_priority(*this, ray, t_max, boundaries);
         }
         return tr;
+    }
+
+    /// Call f(t0, t1) for each stretch of the ray's [0, t_max] outside every object a
+    /// shadow ray passes through (transmittance's: with ShadowsThroughGlass::blocked an
+    /// index-matched boundary, a ball of smoke; with attenuated, any dielectric): where the
+    /// scene's air is, whose own medium (FilledAir) is the caller's. Inside such an object
+    /// its interior takes the air's place, and transmittance attenuates by it. One call
+    /// f(0, t_max) in a scene with no such object; the same when the ray crosses more
+    /// boundaries than ShadowBoundaries holds.
+    template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class F>
+    void for_each_stretch_outside(const Ray<T>& ray, T t_max, F&& f) const noexcept
+    {
+        if constexpr (any_pass<Glass>) {
+            detail::ShadowBoundaries<T> boundaries;
+            const Interval<T> range{T(0), t_max};
+            for (const detail::ObjectKey& key : glass_)
+                dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) {
+                    if constexpr (may_pass<I, Glass>) {
+                        const auto& object = object_at<I>(key.index);
+                        if (!passes<Glass>(object.material)) return;
+                        const auto crossings = object.shape.template crossings<false>(ray, range);
+                        if (crossings.inside_at_start) boundaries.add({T(0), key.slot, key.index, true, true});
+                        for (const Crossing<T>& c : crossings) boundaries.add({c.t, key.slot, key.index, c.entering, false});
+                    }
+                });
+            if (boundaries.overflow) {
+                f(T(0), t_max);
+                return;
+            }
+            (void)boundaries.sort_and_find_overlap(); // sorts by t
+            int depth = 0;
+            T from = T(0);
+            for (std::size_t i = 0; i < boundaries.count; ++i) {
+                const auto& b = boundaries.items[i];
+                if (b.entering || b.at_start) {
+                    if (depth == 0 && b.t > from) f(from, b.t);
+                    ++depth;
+                } else if (depth > 0 && --depth == 0) {
+                    from = b.t;
+                }
+            }
+            if (depth == 0 && t_max > from) f(from, t_max);
+        } else {
+            f(T(0), t_max);
+        }
     }
 
     /// The objects whose interior scatters light (a Fog's, a VaryingFog's) that hold `p`,
@@ -13057,7 +13275,7 @@ public:
                 if (!(cos_x > T(0))) return go_on;
                 const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
                                                                                                seen.distance) *
-                                 air_transmittance(air_, Ray<T>{c.point, to_camera}, seen.distance);
+                                 air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{c.point, to_camera}, seen.distance);
                 if (!(max_component(v) > T(0))) return go_on;
                 T importance = cos_x / (seen.distance * seen.distance * area * seen.cos * seen.cos * seen.cos);
                 // A shading normal weighs the light arriving here by its own cosine over the
@@ -13103,13 +13321,13 @@ public:
 
 private:
     /// What the scene's air lets through from `p` in a medium to the camera, `distance`
-    /// along `to_camera`: its medium's transmittance for a point in the air (FilledAir),
-    /// else 1 (a shadow ray from inside an object stops at its glass). (From a surface, the
-    /// ray that reaches the camera goes through the air all the way, frosted glass's far
-    /// side included: air_transmittance.)
+    /// along `to_camera`: its medium's transmittance over the stretches outside the
+    /// objects the ray passes (FilledAir; from inside a ball of smoke, the air beyond it),
+    /// 1 in clear air. (From inside glass the scene's transmittance is 0.)
     [[nodiscard]] Rgb<T> through_air(const MediumStack& media, const Vec3<T>& p, const Vec3<T>& to_camera, T distance) const noexcept
     {
-        return media.empty() ? air_transmittance(air_, Ray<T>{p, to_camera}, distance) : Rgb<T>(T(1));
+        (void)media;
+        return air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{p, to_camera}, distance);
     }
 
     /// Adds `value` (one path's radiance on the pixel, times `scale`) to the pixel `seen`
@@ -13417,10 +13635,10 @@ public:
                                     const Rgb<T> f = lobe.f(s.wi, Transport::radiance);
                                     if (!(max_component(f) > T(0))) return;
                                     const T w = shared ? light_sample_weight(s.pdf, lobe.pdf(s.wi)) : T(1);
-                                    gathered += (w * cos) * f * v * air_transmittance(air_, Ray<T>{c.point, s.wi}, s.distance) * s.irradiance;
+                                    gathered += (w * cos) * f * v * air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{c.point, s.wi}, s.distance) * s.irradiance;
                                 } else {
                                     const T w = shared ? light_sample_weight(s.pdf, cos / pi<T>) : T(1);
-                                    gathered += w * v * air_transmittance(air_, Ray<T>{c.point, s.wi}, s.distance) * s.irradiance * cos;
+                                    gathered += w * v * air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{c.point, s.wi}, s.distance) * s.irradiance * cos;
                                 }
                             });
                         });
@@ -13583,19 +13801,13 @@ private:
     }
 
     /// What the scene's air lets through along a light sample's shadow ray from `p` in a
-    /// medium: its medium's transmittance for a point in the air (FilledAir), 1 inside an
-    /// object (its shadow ray is the scene's, to stop at the object's glass or to pass an
-    /// index-matched boundary through the object's medium) or in clear air. (From inside a
-    /// ball of smoke in FilledAir, the air beyond the ball is not counted.)
-    /// (From a surface a shadow ray that reaches the light goes through the air all the way,
-    /// frosted glass's far side included: air_transmittance.)
+    /// medium: its medium's transmittance over the stretches outside the objects the shadow
+    /// ray passes (FilledAir; from inside a ball of smoke, the air beyond it), 1 in clear
+    /// air. (From inside glass the scene's transmittance is 0: the ray stops at the glass.)
     [[nodiscard]] Rgb<T> through_air(const MediumStack& media, const Vec3<T>& p, const LightSample<T>& s) const noexcept
     {
-        if constexpr (air_scatters<Air>) {
-            if (media.empty()) return air_transmittance(air_, Ray<T>{p, s.wi}, s.distance);
-        }
-        (void)media, (void)p, (void)s;
-        return Rgb<T>(T(1));
+        (void)media;
+        return air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{p, s.wi}, s.distance);
     }
 
     /// The samples each area light takes at a diffuse vertex (the heuristic counts them all).
@@ -14071,7 +14283,7 @@ private:
             return irradiance;
         }
         for_each_light_arriving<ShadowsThroughGlass::blocked>(*scene_, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
-            irradiance += weigh(s.wi) * v * air_transmittance(air_, Ray<T>{hit.point, s.wi}, s.distance) * s.irradiance * cos;
+            irradiance += weigh(s.wi) * v * air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{hit.point, s.wi}, s.distance) * s.irradiance * cos;
         });
         return irradiance;
     }
@@ -14776,7 +14988,7 @@ private:
                     if (airlight) return;
                 }
                 for_each_sample_in_medium(*scene_, light, p, sampling, [&](const LightSample<T>& sample, const Rgb<T>& v) {
-                    const Rgb<T> air = media.empty() ? air_transmittance(air_, Ray<T>{p, sample.wi}, sample.distance) : Rgb<T>(T(1));
+                    const Rgb<T> air = air_transmittance<ShadowsThroughGlass::attenuated>(*scene_, air_, Ray<T>{p, sample.wi}, sample.distance);
                     arriving += T(medium.phase.value(dot(ray.direction, sample.wi))) * v * air * sample.irradiance;
                 });
             });
@@ -14846,7 +15058,7 @@ private:
             const T share = T(1) / T(samples_of<L>(sampling));
             Rgb<T> seen{T(0)};
             for_each_sample_arriving(*scene_, light, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v_scene, T cos) {
-                const Rgb<T> v = v_scene * air_transmittance(air_, Ray<T>{hit.point, s.wi}, s.distance);
+                const Rgb<T> v = v_scene * air_transmittance<ShadowsThroughGlass::attenuated>(*scene_, air_, Ray<T>{hit.point, s.wi}, s.distance);
                 irradiance += v * s.irradiance * cos;
                 seen += share * v;
                 const T h = highlight(material, mirror, s.wi);

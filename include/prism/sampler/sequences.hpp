@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+// Low-discrepancy sequences, as 32-bit fractions: Sobol's first four dimensions, Owen's
+// scrambling of them by hashing (Burley 2020, "Practical Hash-based Owen Scrambling",
+// JCGT 9(4)), and Halton's radical inverses with the same scrambling digit by digit.
+//
+// A point depends only on its index, its dimension and a seed: threads, crops and
+// machines may take any share of a sequence and get the same bits.
+//
+// Sobol's points come from generator matrices over GF(2): point i of dimension d is the
+// XOR of the columns C_d[k] for the set bits k of i. Dimension 0 is van der Corput's
+// (i's bits reversed); 1 to 3 come from the primitive polynomials x + 1, x^2 + x + 1 and
+// x^3 + x + 1 with the initial direction numbers (1), (1, 3) and (1, 3, 1) (Joe and Kuo
+// 2008). Dimensions 0 and 1 are a (0, 2)-sequence: any 2^m points from a multiple of
+// 2^m put one point in each elementary box of area 2^-m.
+//
+// Owen's scrambling permutes the digits of a coordinate, each by a permutation that
+// depends on the digits above it; the points stay a net of the same quality and become
+// random, the error of a smooth integrand falling as N^-3/2. Burley's hash does it in a
+// few multiplications: reverse the bits, apply Laine and Karras's hash (whose output bit
+// k depends only on input bits 0 to k), reverse back.
+#pragma once
+
+#include <prism/core/math.hpp>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+
+namespace prism::sequences {
+
+/// The dimensions of Sobol's sequence given here.
+inline constexpr int sobol_dimensions = 4;
+
+/// Generator matrix columns of Sobol's first four dimensions: column k of dimension d
+/// is the 32-bit fraction bit k of the index adds.
+inline constexpr std::array<std::array<std::uint32_t, 32>, sobol_dimensions> sobol_matrices = [] {
+    std::array<std::array<std::uint32_t, 32>, sobol_dimensions> c{};
+    for (int k = 0; k < 32; ++k) c[0][std::size_t(k)] = std::uint32_t(1) << (31 - k);
+    // Dimensions 1 to 3: degree s, the polynomial's inner coefficients a_1 .. a_(s-1)
+    // (x^s + a_1 x^(s-1) + ... + a_(s-1) x + 1), the first s direction numbers m_k
+    // (odd, below 2^k), and Bratley and Fox's recurrence for the rest:
+    // v_k = a_1 v_(k-1) ^ ... ^ a_(s-1) v_(k-s+1) ^ v_(k-s) ^ (v_(k-s) >> s).
+    struct Polynomial {
+        int s;
+        std::array<int, 2> a;
+        std::array<std::uint32_t, 3> m;
+    };
+    constexpr Polynomial polynomials[3] = {{1, {0, 0}, {1, 0, 0}}, {2, {1, 0}, {1, 3, 0}}, {3, {0, 1}, {1, 3, 1}}};
+    for (int d = 1; d < sobol_dimensions; ++d) {
+        const Polynomial& p = polynomials[d - 1];
+        auto& v = c[std::size_t(d)];
+        for (int k = 0; k < p.s; ++k) v[std::size_t(k)] = p.m[std::size_t(k)] << (31 - k);
+        for (int k = p.s; k < 32; ++k) {
+            std::uint32_t x = v[std::size_t(k - p.s)] ^ (v[std::size_t(k - p.s)] >> p.s);
+            for (int j = 1; j < p.s; ++j)
+                if (p.a[std::size_t(j - 1)] != 0) x ^= v[std::size_t(k - j)];
+            v[std::size_t(k)] = x;
+        }
+    }
+    return c;
+}();
+
+/// Point `index` of Sobol's sequence in dimension d (below sobol_dimensions), as a
+/// 32-bit fraction.
+[[nodiscard]] constexpr std::uint32_t sobol(std::uint32_t index, int d) noexcept
+{
+    std::uint32_t x = 0;
+    for (int k = 0; index != 0; ++k, index >>= 1)
+        if ((index & 1u) != 0) x ^= sobol_matrices[std::size_t(d)][std::size_t(k)];
+    return x;
+}
+
+/// The bits of x in reverse order.
+[[nodiscard]] constexpr std::uint32_t reverse_bits(std::uint32_t x) noexcept
+{
+    x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+    x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+    x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
+    return (x >> 16) | (x << 16);
+}
+
+/// Laine and Karras's hash with Burley's constants: a bijection of 32-bit words whose
+/// output bit k depends only on input bits 0 to k and the seed.
+[[nodiscard]] constexpr std::uint32_t laine_karras(std::uint32_t x, std::uint32_t seed) noexcept
+{
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return x;
+}
+
+/// Owen's nested uniform scrambling of a 32-bit fraction, the permutations drawn from
+/// `seed`: each bit flipped or not by a hash of the bits above it. Scrambling the index
+/// of a sequence the same way shuffles it so that every aligned block of 2^m indices is
+/// mapped onto an aligned block of 2^m (Burley's padding, which keeps each prefix's
+/// stratification).
+[[nodiscard]] constexpr std::uint32_t owen_scramble(std::uint32_t x, std::uint32_t seed) noexcept
+{
+    return reverse_bits(laine_karras(reverse_bits(x), seed));
+}
+
+/// A 32-bit seed from a 64-bit key and a salt (a strong 64-bit mixer, so that nearby
+/// keys give unrelated seeds).
+[[nodiscard]] constexpr std::uint32_t seed_of(std::uint64_t key, std::uint64_t salt) noexcept
+{
+    std::uint64_t z = key + 0x9e3779b97f4a7c15ULL * (salt + 1);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return std::uint32_t((z ^ (z >> 31)) >> 32);
+}
+
+/// A 32-bit fraction as a T in [0, 1): its top bits that T holds exactly, so that it is
+/// never rounded up to 1.
+template <Scalar T>
+[[nodiscard]] constexpr T to_unit(std::uint32_t x) noexcept
+{
+    constexpr int bits = std::numeric_limits<T>::digits < 32 ? std::numeric_limits<T>::digits : 32;
+    return T(x >> (32 - bits)) * (T(1) / T(std::uint64_t(1) << bits));
+}
+
+/// The first primes, Halton's bases.
+inline constexpr std::array<std::uint32_t, 16> primes = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53};
+
+/// The radical inverse of `index` in base `primes[d]`: its base-b digits mirrored about
+/// the point. With `scrambled`, Owen's scrambling: each digit permuted by a hash of the
+/// digits above it and the seed (pbrt-v4's OwenScrambledRadicalInverse does the same).
+/// In double: the digits of a 64-bit index fill its 53 bits.
+[[nodiscard]] constexpr double radical_inverse(std::uint64_t index, int d, bool scrambled = false, std::uint32_t seed = 0) noexcept
+{
+    const std::uint64_t b = primes[std::size_t(d)];
+    const double inverse_base = 1.0 / double(b);
+    double scale = inverse_base, value = 0;
+    std::uint64_t above = 0; // the index's digits so far, as a number in base b: what the next one's permutation depends on
+    // Enough digits that the rest cannot move the double (b^-digits below 2^-54), even
+    // when the index has run out (a scrambled point's zero digits are permuted too).
+    int digits = 0;
+    for (double s = 1; s > 0x1p-54; s *= inverse_base) ++digits;
+    for (int k = 0; k < digits && (scrambled || index != 0); ++k) {
+        std::uint64_t digit = index % b;
+        index /= b;
+        if (scrambled) {
+            const std::uint64_t original = digit;
+            const std::uint32_t h = laine_karras(std::uint32_t(above * 0x9e3779b97f4a7c15ULL >> 32) ^ std::uint32_t(above), seed ^ std::uint32_t(k * 0x68bc21ebu));
+            digit = (digit + h % b) % b; // a shift of the digit: one of b permutations, drawn for each prefix
+            above = above * b + original;
+        }
+        value += double(digit) * scale;
+        scale *= inverse_base;
+    }
+    return value < 1.0 ? value : 0x1.fffffffffffffp-1;
+}
+
+} // namespace prism::sequences
