@@ -11391,6 +11391,97 @@ template <class I>
 
 } // namespace prism
 
+// ---- prism/render/progress.hpp ----
+// Progress of a long piece of work on stderr, shaped for where stderr goes: on a terminal
+// one line rewritten in place (a carriage return before each state), in a log or a pipe a
+// line when the work has begun to take time and one when it ends, so a log holds no
+// carriage returns and no hundred states.
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#if defined(_WIN32)
+#include <io.h>
+#else
+#include <unistd.h>
+#endif
+
+namespace prism::detail {
+
+/// Whether stderr is a terminal.
+[[nodiscard]] inline bool stderr_is_terminal() noexcept
+{
+#if defined(_WIN32)
+    return _isatty(_fileno(stderr)) != 0;
+#else
+    return isatty(fileno(stderr)) != 0;
+#endif
+}
+
+/// printf's formatting into a string (a line of progress: short).
+template <class... Args>
+[[nodiscard]] std::string formatted(const char* format, Args... args)
+{
+    char buffer[256];
+    std::snprintf(buffer, sizeof buffer, format, args...);
+    return buffer;
+}
+
+/// One piece of work's progress ("prism: <what> <state>"), said once the work has taken
+/// more than a second. Not for threads: the caller reports from one.
+class ProgressLine {
+public:
+    /// Progress of `what` to `out`: rewritten in place when `terminal`, else a start and
+    /// an end line.
+    ProgressLine(std::FILE* out, bool terminal, std::string what) : out_(out), terminal_(terminal), what_(std::move(what)) {}
+    /// Progress to stderr, shaped for what stderr is.
+    explicit ProgressLine(std::string what) : ProgressLine(stderr, stderr_is_terminal(), std::move(what)) {}
+
+    /// The work's state `seconds` after its start: shown on a terminal; in a log, the
+    /// first state past a second begins the report.
+    void update(double seconds, const std::string& state)
+    {
+        if (!(seconds > 1.0)) return;
+        if (terminal_) {
+            std::fprintf(out_, "\rprism: %s %s", what_.c_str(), state.c_str());
+            width_ = std::max(width_, state.size());
+        } else if (!started_) {
+            std::fprintf(out_, "prism: %s: %s, going on\n", what_.c_str(), state.c_str());
+        }
+        started_ = true;
+        std::fflush(out_);
+    }
+
+    /// The work ended in `state` after `seconds`: its last line, if it was reported at all
+    /// (a second or more); with `always`, also when it was quick.
+    void finish(double seconds, const std::string& state, bool always = false)
+    {
+        if (!started_ && !(always || seconds > 1.0)) return;
+        if (terminal_) {
+            const std::string pad(width_ > state.size() ? width_ - state.size() : 0, ' ');
+            std::fprintf(out_, "%sprism: %s %s%s\n", started_ ? "\r" : "", what_.c_str(), state.c_str(), pad.c_str());
+        } else {
+            std::fprintf(out_, "prism: %s: %s\n", what_.c_str(), state.c_str());
+        }
+        std::fflush(out_);
+        started_ = false;
+        width_ = 0;
+    }
+
+    /// Whether a state has been shown since the start or the last finish.
+    [[nodiscard]] bool started() const noexcept { return started_; }
+
+private:
+    std::FILE* out_;
+    bool terminal_;
+    std::string what_;
+    bool started_ = false;
+    std::size_t width_ = 0; // the longest state shown on the terminal's line
+};
+
+} // namespace prism::detail
+
 // ---- prism/scene/camera.hpp ----
 // Camera: a pinhole camera as a plain struct, and the rays it shoots.
 
@@ -11734,14 +11825,13 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
     const std::int64_t tile_count = tiles_x * tiles_y;
     // Report progress while waiting, once the render has taken more than a second.
     const auto start = std::chrono::steady_clock::now();
-    bool reported = false;
+    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    ProgressLine line("rendering");
     std::atomic<std::size_t> rejected_values{0};
     const auto progress = [&](std::size_t tiles_done) {
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (config.progress && seconds > 1.0) {
-            std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", static_cast<int>(100 * std::int64_t(tiles_done) / tile_count), seconds);
-            reported = true;
-        }
+        if (!config.progress) return;
+        const double seconds = elapsed();
+        line.update(seconds, formatted("%3d%% (%.1f s)", static_cast<int>(100 * std::int64_t(tiles_done) / tile_count), seconds));
     };
     parallel_blocks(std::size_t(tile_count), config.threads, [&](std::size_t block, unsigned) {
         const auto t = std::int64_t(block);
@@ -11768,7 +11858,7 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
                 if (rejected != 0) rejected_values.fetch_add(rejected, std::memory_order_relaxed);
             }
     }, progress);
-    if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
+    if (config.progress) line.finish(elapsed(), formatted("100%% (%.1f s)", elapsed()));
     if (config.progress) say_rejected(rejected_values.load());
 }
 
@@ -14535,6 +14625,8 @@ public:
         check_passes(config);
         const auto start = std::chrono::steady_clock::now();
         const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+        detail::ProgressLine line("progressive photon mapping");
+        std::uint64_t done = passes.first;
         for (std::uint64_t pass = passes.first; pass < passes.last; ++pass) {
             typename PhotonMapper<SceneT, Air>::Config mapper_config = config_.pass;
             mapper_config.caustic.radius = float(progressive_radius(config_.pass.caustic.radius, config_.alpha, pass));
@@ -14551,11 +14643,13 @@ public:
             pass_render.single_sample_at_centre = false; // anti-aliased over the passes
             render_into(sums, camera, mapper, pass_render);
             if (config.progress)
-                std::fprintf(stderr, "\rprism: progressive pass %llu, r = %.4g / %.4g (%.1f s)", static_cast<unsigned long long>(pass + 1),
-                             double(mapper_config.caustic.radius), double(mapper_config.global.radius), elapsed());
+                line.update(elapsed(), detail::formatted("pass %llu, r = %.4g / %.4g (%.1f s)", static_cast<unsigned long long>(pass + 1),
+                                                         double(mapper_config.caustic.radius), double(mapper_config.global.radius), elapsed()));
+            done = pass + 1;
             if (config_.seconds > 0.0 && elapsed() >= config_.seconds) break;
         }
-        if (config.progress) std::fprintf(stderr, "\n");
+        if (config.progress)
+            line.finish(elapsed(), detail::formatted("%llu passes (%.1f s)", static_cast<unsigned long long>(done - passes.first), elapsed()));
     }
 
 private:

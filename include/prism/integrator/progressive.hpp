@@ -32,6 +32,7 @@
 #include <prism/medium/air.hpp>
 #include <prism/render/accumulation.hpp>
 #include <prism/render/film.hpp>
+#include <prism/render/progress.hpp>
 #include <prism/render/render.hpp>
 #include <prism/scene/camera.hpp>
 
@@ -114,6 +115,8 @@ public:
         check_passes(config);
         const auto start = std::chrono::steady_clock::now();
         const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+        detail::ProgressLine line("progressive photon mapping");
+        std::uint64_t done = passes.first;
         for (std::uint64_t pass = passes.first; pass < passes.last; ++pass) {
             typename PhotonMapper<SceneT, Air>::Config mapper_config = config_.pass;
             mapper_config.caustic.radius = float(progressive_radius(config_.pass.caustic.radius, config_.alpha, pass));
@@ -130,11 +133,13 @@ public:
             pass_render.single_sample_at_centre = false; // anti-aliased over the passes
             render_into(sums, camera, mapper, pass_render);
             if (config.progress)
-                std::fprintf(stderr, "\rprism: progressive pass %llu, r = %.4g / %.4g (%.1f s)", static_cast<unsigned long long>(pass + 1),
-                             double(mapper_config.caustic.radius), double(mapper_config.global.radius), elapsed());
+                line.update(elapsed(), detail::formatted("pass %llu, r = %.4g / %.4g (%.1f s)", static_cast<unsigned long long>(pass + 1),
+                                                         double(mapper_config.caustic.radius), double(mapper_config.global.radius), elapsed()));
+            done = pass + 1;
             if (config_.seconds > 0.0 && elapsed() >= config_.seconds) break;
         }
-        if (config.progress) std::fprintf(stderr, "\n");
+        if (config.progress)
+            line.finish(elapsed(), detail::formatted("%llu passes (%.1f s)", static_cast<unsigned long long>(done - passes.first), elapsed()));
     }
 
 private:

@@ -11,6 +11,7 @@
 #include <prism/render/accumulation.hpp>
 #include <prism/render/film.hpp>
 #include <prism/render/layers.hpp>
+#include <prism/render/progress.hpp>
 #include <prism/scene/camera.hpp>
 
 #include <algorithm>
@@ -178,14 +179,13 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
     const std::int64_t tile_count = tiles_x * tiles_y;
     // Report progress while waiting, once the render has taken more than a second.
     const auto start = std::chrono::steady_clock::now();
-    bool reported = false;
+    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    ProgressLine line("rendering");
     std::atomic<std::size_t> rejected_values{0};
     const auto progress = [&](std::size_t tiles_done) {
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (config.progress && seconds > 1.0) {
-            std::fprintf(stderr, "\rprism: rendering %3d%% (%.1f s)", static_cast<int>(100 * std::int64_t(tiles_done) / tile_count), seconds);
-            reported = true;
-        }
+        if (!config.progress) return;
+        const double seconds = elapsed();
+        line.update(seconds, formatted("%3d%% (%.1f s)", static_cast<int>(100 * std::int64_t(tiles_done) / tile_count), seconds));
     };
     parallel_blocks(std::size_t(tile_count), config.threads, [&](std::size_t block, unsigned) {
         const auto t = std::int64_t(block);
@@ -212,7 +212,7 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
                 if (rejected != 0) rejected_values.fetch_add(rejected, std::memory_order_relaxed);
             }
     }, progress);
-    if (reported) std::fprintf(stderr, "\rprism: rendering 100%%          \n");
+    if (config.progress) line.finish(elapsed(), formatted("100%% (%.1f s)", elapsed()));
     if (config.progress) say_rejected(rejected_values.load());
 }
 
