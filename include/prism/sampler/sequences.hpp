@@ -143,7 +143,7 @@ inline constexpr std::array<std::uint32_t, 16> primes = {2, 3, 5, 7, 11, 13, 17,
         index /= b;
         if (scrambled) {
             const std::uint64_t original = digit;
-            const std::uint32_t h = laine_karras(std::uint32_t(above * 0x9e3779b97f4a7c15ULL >> 32) ^ std::uint32_t(above), seed ^ std::uint32_t(k * 0x68bc21ebu));
+            const std::uint32_t h = laine_karras(std::uint32_t(above * 0x9e3779b97f4a7c15ULL >> 32) ^ std::uint32_t(above), seed ^ (std::uint32_t(k) * 0x68bc21ebu));
             digit = (digit + h % b) % b; // a shift of the digit: one of b permutations, drawn for each prefix
             above = above * b + original;
         }

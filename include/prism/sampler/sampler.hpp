@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+// The numbers one camera sample draws, by dimension: a point of [0, 1)^n whose coordinates
+// are named by their index, so that every sample of a pixel reads the same dimension for
+// the same decision (the pixel's footprint, the lens, then each bounce's light and lobe).
+//
+// A number depends only on (kind, seed, pixel, sample index, dimension): any thread, crop,
+// range of samples or machine gets the same bits, and any prefix of a pixel's samples is
+// an unbiased estimate (each sample's point is uniform on its own).
+//
+// SamplerKind::sobol is Burley's padded Owen-scrambled Sobol sequence (2020): dimensions
+// are taken in pairs, pair k reads Sobol's dimensions 0 and 1, a (0, 2)-sequence, at the
+// sample index shuffled by a nested uniform scramble of its own (so the pairs are
+// independent of each other), each coordinate Owen-scrambled with a seed of its own. Every
+// prefix of 2^m samples of a pixel is then stratified in every pair: one point in each
+// elementary box of area 2^-m. SamplerKind::independent is a uniform number per
+// (pixel, sample, dimension) from a hash: what every estimator drew before, in spirit.
+#pragma once
+
+#include <prism/core/math.hpp>
+#include <prism/sampler/sequences.hpp>
+
+#include <array>
+#include <cstdint>
+
+namespace prism {
+
+/// Which points the samples draw.
+enum class SamplerKind : std::uint8_t {
+    independent, ///< a uniform number for each (pixel, sample, dimension), unrelated to the others
+    sobol,       ///< Owen-scrambled Sobol points, padded by pairs of dimensions (Burley 2020)
+};
+
+/// The numbers of one sample of one pixel.
+class Sampler {
+public:
+    /// Sample `sample` of pixel `pixel` in the render of `seed`.
+    constexpr Sampler(SamplerKind kind, std::uint64_t seed, std::uint64_t pixel, std::uint32_t sample) noexcept
+        : kind_(kind), key_(mix(seed, pixel)), sample_(sample)
+    {
+    }
+
+    /// The point of dimensions 2k and 2k + 1, in [0, 1)^2.
+    template <Scalar T = double>
+    [[nodiscard]] constexpr std::array<T, 2> pair(std::uint32_t k) const noexcept
+    {
+        if (kind_ == SamplerKind::sobol) {
+            const std::uint32_t index = sequences::owen_scramble(sample_, sequences::seed_of(key_, 3 * std::uint64_t(k)));
+            return {sequences::to_unit<T>(sequences::owen_scramble(sequences::sobol(index, 0), sequences::seed_of(key_, 3 * std::uint64_t(k) + 1))),
+                    sequences::to_unit<T>(sequences::owen_scramble(sequences::sobol(index, 1), sequences::seed_of(key_, 3 * std::uint64_t(k) + 2)))};
+        }
+        const std::uint64_t bits = hash(key_ ^ (std::uint64_t(sample_) << 32 | k));
+        return {sequences::to_unit<T>(std::uint32_t(bits)), sequences::to_unit<T>(std::uint32_t(bits >> 32))};
+    }
+
+    /// The number of dimension 2k: pair k's first coordinate.
+    template <Scalar T = double>
+    [[nodiscard]] constexpr T single(std::uint32_t k) const noexcept
+    {
+        return pair<T>(k)[0];
+    }
+
+    /// Which points these are.
+    [[nodiscard]] constexpr SamplerKind kind() const noexcept { return kind_; }
+
+private:
+    /// SplitMix64's finaliser: a bijection of 64-bit words that scatters every input bit.
+    [[nodiscard]] static constexpr std::uint64_t hash(std::uint64_t z) noexcept
+    {
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        return z ^ (z >> 31);
+    }
+    /// A key for the pixel of a render: unrelated for neighbouring pixels and seeds.
+    [[nodiscard]] static constexpr std::uint64_t mix(std::uint64_t seed, std::uint64_t pixel) noexcept
+    {
+        return hash(hash(seed + 0x9e3779b97f4a7c15ULL) ^ (pixel * 0xd1b54a32d192ed03ULL));
+    }
+
+    SamplerKind kind_;
+    std::uint64_t key_;
+    std::uint32_t sample_;
+};
+
+} // namespace prism
