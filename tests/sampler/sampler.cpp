@@ -3,6 +3,8 @@
 
 #include <doctest/doctest.h>
 
+#include "../slope.hpp"
+
 #include "../chi2.hpp"
 
 #include <algorithm>
@@ -12,18 +14,6 @@
 using namespace prism;
 
 namespace {
-
-/// The least-squares slope of log y against log x.
-double log_log_slope(const std::vector<double>& x, const std::vector<double>& y)
-{
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    const double n = double(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        const double lx = std::log(x[i]), ly = std::log(y[i]);
-        sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly;
-    }
-    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 
 /// The root mean square error, over `pixels` pixels, of the mean of f over each pixel's
 /// first n samples of pair k, against f's integral.
@@ -112,7 +102,7 @@ TEST_CASE("the Sobol sampler's error on a smooth integrand falls as N^-3/2, the 
         sobol_error.push_back(rms_error(SamplerKind::sobol, n, 2, 200, f, integral));
         random_error.push_back(rms_error(SamplerKind::independent, n, 2, 200, f, integral));
     }
-    const double sobol_slope = log_log_slope(ns, sobol_error), random_slope = log_log_slope(ns, random_error);
+    const double sobol_slope = test::log_log_slope(ns, sobol_error), random_slope = test::log_log_slope(ns, random_error);
     MESSAGE("RMS error slopes: Sobol ", sobol_slope, " (", sobol_error.back(), " at 1024), independent ", random_slope, " (", random_error.back(), ")");
     CHECK(sobol_slope < -1.25); // -1.39 here: -3/2 less its logarithmic factors
     CHECK(random_slope > -0.65);

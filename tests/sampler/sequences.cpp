@@ -3,6 +3,8 @@
 
 #include <doctest/doctest.h>
 
+#include "../slope.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -41,18 +43,6 @@ double l2_star_discrepancy(const std::vector<std::array<double, 2>>& p)
     for (const auto& a : p)
         for (const auto& b : p) pairs += (1 - std::max(a[0], b[0])) * (1 - std::max(a[1], b[1]));
     return std::sqrt(1.0 / 9.0 - single / (2 * n) + pairs / (n * n));
-}
-
-/// The least-squares slope of log y against log x.
-double log_log_slope(const std::vector<double>& x, const std::vector<double>& y)
-{
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    const double n = double(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        const double lx = std::log(x[i]), ly = std::log(y[i]);
-        sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly;
-    }
-    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
 } // namespace
@@ -202,7 +192,7 @@ TEST_CASE("the star discrepancy of scrambled Sobol points falls about as 1 / N, 
         sobol_d.push_back(sd);
         random_d.push_back(rd);
     }
-    const double sobol_slope = log_log_slope(ns, sobol_d), random_slope = log_log_slope(ns, random_d);
+    const double sobol_slope = test::log_log_slope(ns, sobol_d), random_slope = test::log_log_slope(ns, random_d);
     MESSAGE("L2 star discrepancy slopes: scrambled Sobol ", sobol_slope, ", random ", random_slope);
     CHECK(sobol_slope < -0.85);
     CHECK(random_slope > -0.65);
