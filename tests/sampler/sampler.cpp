@@ -34,7 +34,7 @@ double rms_error(SamplerKind kind, std::uint32_t n, std::uint32_t k, int pixels,
 
 } // namespace
 
-TEST_CASE("a sampler's numbers depend only on (kind, seed, pixel, sample, dimension), and lie in [0, 1)")
+TEST_CASE("a sampler's numbers depend only on (kind, seed, pixel, sample, dimension), and lie from 0 up to but not at 1")
 {
     for (const SamplerKind kind : {SamplerKind::independent, SamplerKind::sobol}) {
         const Sampler a(kind, 3, 1000, 17), b(kind, 3, 1000, 17), other_pixel(kind, 3, 1001, 17), other_seed(kind, 4, 1000, 17);
