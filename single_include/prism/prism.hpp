@@ -13388,7 +13388,7 @@ public:
                 const auto& seen = look->at;
                 const Vec3<T>& to_camera = look->to_camera;
                 const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(Ray<T>{at.point, to_camera}, seen.distance) *
-                                 through_air(at.media, at.point, to_camera, seen.distance);
+                                 through_air(at.point, to_camera, seen.distance);
                 if (!(max_component(v) > T(0))) return go_on;
                 const T importance = T(medium.phase.value(dot(at.direction, to_camera))) / (seen.distance * seen.distance * area * seen.cos * seen.cos * seen.cos);
                 splat(out, seen, power * v * importance, scale);
@@ -13414,9 +13414,8 @@ private:
     /// along `to_camera`: its medium's transmittance over the stretches outside the
     /// objects the ray passes (FilledAir; from inside a ball of smoke, the air beyond it),
     /// 1 in clear air. (From inside glass the scene's transmittance is 0.)
-    [[nodiscard]] Rgb<T> through_air(const MediumStack& media, const Vec3<T>& p, const Vec3<T>& to_camera, T distance) const noexcept
+    [[nodiscard]] Rgb<T> through_air(const Vec3<T>& p, const Vec3<T>& to_camera, T distance) const noexcept
     {
-        (void)media;
         return air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{p, to_camera}, distance);
     }
 
@@ -13784,7 +13783,7 @@ public:
                                 for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, at.point, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
                                     const T phase = medium.phase.value(dot(at.direction, s.wi));
                                     const T w = !s.delta() && go_on ? light_sample_weight(s.pdf, phase) : shared;
-                                    gathered += (w * phase) * v * through_air(at.media, at.point, s) * s.irradiance;
+                                    gathered += (w * phase) * v * through_air(at.point, s) * s.irradiance;
                                 });
                             });
                             sum += at.power * gathered;
@@ -13885,7 +13884,7 @@ private:
         Rgb<T> out{T(0)};
         for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, p, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
             const T phase = medium.phase.value(dot(stretch.ray.direction, s.wi));
-            out += (w * phase / density) * v * through_air(stretch.media, p, s) * s.irradiance;
+            out += (w * phase / density) * v * through_air(p, s) * s.irradiance;
         });
         return stretch.power * medium.transmittance(t) * medium.scattering_at(p) * out;
     }
@@ -13894,9 +13893,8 @@ private:
     /// medium: its medium's transmittance over the stretches outside the objects the shadow
     /// ray passes (FilledAir; from inside a ball of smoke, the air beyond it), 1 in clear
     /// air. (From inside glass the scene's transmittance is 0: the ray stops at the glass.)
-    [[nodiscard]] Rgb<T> through_air(const MediumStack& media, const Vec3<T>& p, const LightSample<T>& s) const noexcept
+    [[nodiscard]] Rgb<T> through_air(const Vec3<T>& p, const LightSample<T>& s) const noexcept
     {
-        (void)media;
         return air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{p, s.wi}, s.distance);
     }
 

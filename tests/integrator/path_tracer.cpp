@@ -142,6 +142,38 @@ double path_mean(const Tracer& tracer, const Ray<float>& ray, int n, std::uint64
     return sum / n;
 }
 
+/// The path tracer's mean single scattering along `ray` over n paths, with its standard
+/// error, and Whitted's mean over `marches` jittered marches, per channel.
+struct SmokeEstimates {
+    Rgb<double> mean, error, marched;
+};
+template <class Tracer, class March>
+SmokeEstimates smoke_estimates(const Tracer& tracer, const March& whitted, const Ray<float>& ray, int n, int marches)
+{
+    Pcg32 rng(3, 4), jitter(5, 6);
+    Rgb<double> sum{0}, squares{0}, marched{0};
+    for (int i = 0; i < n; ++i) {
+        const Rgb<double> v(tracer.radiance(ray, rng));
+        sum += v;
+        squares += v * v;
+    }
+    for (int i = 0; i < marches; ++i) marched += Rgb<double>(whitted.radiance(ray, jitter)) / double(marches);
+    SmokeEstimates out{sum / double(n), Rgb<double>(0), marched};
+    for (int c = 0; c < 3; ++c) out.error[c] = std::sqrt((squares[c] / n - out.mean[c] * out.mean[c]) / n);
+    return out;
+}
+
+/// Channel c of `e` against the integral: the path tracer within 4 standard errors (and
+/// resolved to 1 %), Whitted within `whitted_epsilon`.
+void check_smoke(const SmokeEstimates& e, int c, double expected, double whitted_epsilon)
+{
+    CAPTURE(c);
+    MESSAGE("channel ", c, ": path tracer ", e.mean[c], " +- ", e.error[c], ", Whitted ", e.marched[c], ", integral ", expected);
+    CHECK(std::abs(e.mean[c] - expected) < 4 * e.error[c] + 1e-3 * expected);
+    CHECK(e.error[c] < 0.01 * expected);
+    CHECK(e.marched[c] == doctest::Approx(expected).epsilon(whitted_epsilon).scale(0));
+}
+
 } // namespace
 
 TEST_CASE("the path tracer's glossy furnace: a glossy sphere under a uniform sky reads its lobe's albedo, by every strategy")
@@ -345,25 +377,12 @@ TEST_CASE("regression: in a ball of smoke (fog inside an index-1 ball) the path 
                                  Object{Sphere<float>({0, 0, 0}, radius), Smoke{.ior = 1, .interior = fog}}};
         const PathTracer tracer(scene, {.max_diffuse_bounces = 0});
         const Whitted whitted(scene, {.march_steps = 64});
-        Pcg32 rng(3, 4), jitter(5, 6);
-        Rgb<double> sum{0}, squares{0}, marched{0};
-        const int n = int(test::samples(50000));
-        for (int i = 0; i < n; ++i) {
-            const Rgb<double> v(tracer.radiance(ray, rng));
-            sum += v;
-            squares += v * v;
-        }
-        for (int i = 0; i < 256; ++i) marched += Rgb<double>(whitted.radiance(ray, jitter)) / 256.0;
+        const SmokeEstimates e = smoke_estimates(tracer, whitted, ray, int(test::samples(50000)), 256);
         for (int c = 0; c < 3; ++c) {
-            CAPTURE(c);
             // (The quadrature's fog is scaled as the scene's: sigma scale, distances 1 / scale.)
             const double expected = scale * test::smoke_ball_airlight(c, Vec3<double>(ray.origin) * double(scale), Vec3<double>(ray.direction),
                                                                         Vec3<double>(light) * double(scale), double(radius) * scale) * double(scale);
-            const double mean = sum[c] / n, error = std::sqrt((squares[c] / n - mean * mean) / n);
-            MESSAGE("channel ", c, ": path tracer ", mean, " +- ", error, ", Whitted ", marched[c], ", integral ", expected);
-            CHECK(std::abs(mean - expected) < 4 * error + 1e-3 * expected);
-            CHECK(error < 0.01 * expected);
-            CHECK(marched[c] == doctest::Approx(expected).epsilon(0.005).scale(0));
+            check_smoke(e, c, expected, 0.005);
         }
     };
     // The light and the camera inside a large ball (the camera's walk starts in its fog).
@@ -391,24 +410,10 @@ TEST_CASE("regression: a ball of smoke in foggy air: the path tracer's and Whitt
                              Object{Sphere<float>({0, 0, 0}, radius), Smoke{.ior = 1, .interior = smoke}}};
     const PathTracer tracer(scene, {.max_diffuse_bounces = 0}, test::airlight_fog());
     const Whitted whitted(scene, {.march_steps = 256}, test::airlight_fog());
-    Pcg32 rng(3, 4), jitter(5, 6);
-    Rgb<double> sum{0}, squares{0}, marched{0};
-    const int n = int(test::samples(50000));
-    for (int i = 0; i < n; ++i) {
-        const Rgb<double> v(tracer.radiance(ray, rng));
-        sum += v;
-        squares += v * v;
-    }
-    for (int i = 0; i < 64; ++i) marched += Rgb<double>(whitted.radiance(ray, jitter)) / 64.0;
-    for (int c = 0; c < 3; ++c) {
-        CAPTURE(c);
-        const double expected = test::smoke_ball_in_fog_airlight(c, Vec3<double>(ray.origin), Vec3<double>(ray.direction), Vec3<double>(light), radius, scale);
-        const double mean = sum[c] / n, error = std::sqrt((squares[c] / n - mean * mean) / n);
-        MESSAGE("channel ", c, ": path tracer ", mean, " +- ", error, ", Whitted ", marched[c], ", integral ", expected);
-        CHECK(std::abs(mean - expected) < 4 * error + 1e-3 * expected);
-        CHECK(error < 0.01 * expected);
-        CHECK(marched[c] == doctest::Approx(expected).epsilon(0.01).scale(0));
-    }
+    const SmokeEstimates e = smoke_estimates(tracer, whitted, ray, int(test::samples(50000)), 64);
+    for (int c = 0; c < 3; ++c)
+        check_smoke(e, c, test::smoke_ball_in_fog_airlight(c, Vec3<double>(ray.origin), Vec3<double>(ray.direction), Vec3<double>(light), radius, scale),
+                    0.01);
 }
 
 TEST_CASE("fog filling graded air: the path tracer's single scattering along a path of a hundred straight pieces is the airlight integral, to 0.5 %")

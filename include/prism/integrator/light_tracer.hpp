@@ -179,7 +179,7 @@ public:
                 const auto& seen = look->at;
                 const Vec3<T>& to_camera = look->to_camera;
                 const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(Ray<T>{at.point, to_camera}, seen.distance) *
-                                 through_air(at.media, at.point, to_camera, seen.distance);
+                                 through_air(at.point, to_camera, seen.distance);
                 if (!(max_component(v) > T(0))) return go_on;
                 const T importance = T(medium.phase.value(dot(at.direction, to_camera))) / (seen.distance * seen.distance * area * seen.cos * seen.cos * seen.cos);
                 splat(out, seen, power * v * importance, scale);
@@ -205,9 +205,8 @@ private:
     /// along `to_camera`: its medium's transmittance over the stretches outside the
     /// objects the ray passes (FilledAir; from inside a ball of smoke, the air beyond it),
     /// 1 in clear air. (From inside glass the scene's transmittance is 0.)
-    [[nodiscard]] Rgb<T> through_air(const MediumStack& media, const Vec3<T>& p, const Vec3<T>& to_camera, T distance) const noexcept
+    [[nodiscard]] Rgb<T> through_air(const Vec3<T>& p, const Vec3<T>& to_camera, T distance) const noexcept
     {
-        (void)media;
         return air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{p, to_camera}, distance);
     }
 

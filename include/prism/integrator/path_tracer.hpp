@@ -196,7 +196,7 @@ public:
                                 for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, at.point, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
                                     const T phase = medium.phase.value(dot(at.direction, s.wi));
                                     const T w = !s.delta() && go_on ? light_sample_weight(s.pdf, phase) : shared;
-                                    gathered += (w * phase) * v * through_air(at.media, at.point, s) * s.irradiance;
+                                    gathered += (w * phase) * v * through_air(at.point, s) * s.irradiance;
                                 });
                             });
                             sum += at.power * gathered;
@@ -297,7 +297,7 @@ private:
         Rgb<T> out{T(0)};
         for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, p, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
             const T phase = medium.phase.value(dot(stretch.ray.direction, s.wi));
-            out += (w * phase / density) * v * through_air(stretch.media, p, s) * s.irradiance;
+            out += (w * phase / density) * v * through_air(p, s) * s.irradiance;
         });
         return stretch.power * medium.transmittance(t) * medium.scattering_at(p) * out;
     }
@@ -306,9 +306,8 @@ private:
     /// medium: its medium's transmittance over the stretches outside the objects the shadow
     /// ray passes (FilledAir; from inside a ball of smoke, the air beyond it), 1 in clear
     /// air. (From inside glass the scene's transmittance is 0: the ray stops at the glass.)
-    [[nodiscard]] Rgb<T> through_air(const MediumStack& media, const Vec3<T>& p, const LightSample<T>& s) const noexcept
+    [[nodiscard]] Rgb<T> through_air(const Vec3<T>& p, const LightSample<T>& s) const noexcept
     {
-        (void)media;
         return air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{p, s.wi}, s.distance);
     }
 
