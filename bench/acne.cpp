@@ -25,7 +25,7 @@ constexpr const char* method_name(Method m) { return m == Method::robust ? "robu
 constexpr std::array kinds{"reflect", "shadow", "grazing"};
 
 template <prism::Scalar T>
-Vec3<T> random_direction(prism::Pcg32& rng)
+Vec3<T> random_direction(prism::Random& rng)
 {
     const T z = T(1) - T(2) * rng.uniform<T>();
     const T r = std::sqrt(std::max(T(0), T(1) - z * z));
@@ -50,7 +50,7 @@ void sweep(bench::Csv& csv, const char* shape_name, const char* scalar, auto&& m
     for (double distance : {1.0, 1e3, 1e4, 1e5}) {
         std::array<std::array<long, 3>, 3> self_hits{}; // [kind][method]
         std::array<long, 3> rays{};
-        prism::Pcg32 rng(17u, static_cast<std::uint64_t>(distance));
+        prism::Random rng(17u, static_cast<std::uint64_t>(distance));
         for (int i = 0; i < 100000; ++i) {
             const Vec3<T> centre = random_direction<T>(rng) * T(distance);
             const Shape shape = make_shape(centre, rng);
@@ -91,14 +91,14 @@ void sweep(bench::Csv& csv, const char* shape_name, const char* scalar, auto&& m
 template <prism::Scalar T>
 void all_shapes(bench::Csv& csv, const char* scalar)
 {
-    sweep<T, prism::Sphere<T>>(csv, "sphere", scalar, [](const Vec3<T>& c, prism::Pcg32& rng) {
+    sweep<T, prism::Sphere<T>>(csv, "sphere", scalar, [](const Vec3<T>& c, prism::Random& rng) {
         return prism::Sphere<T>(c, T(0.5) + rng.uniform<T>());
     });
-    sweep<T, prism::Box<T>>(csv, "box", scalar, [](const Vec3<T>& c, prism::Pcg32& rng) {
+    sweep<T, prism::Box<T>>(csv, "box", scalar, [](const Vec3<T>& c, prism::Random& rng) {
         const Vec3<T> half{T(0.5) + rng.uniform<T>(), T(0.5) + rng.uniform<T>(), T(0.5) + rng.uniform<T>()};
         return prism::Box<T>(c - half, c + half);
     });
-    sweep<T, prism::Plane<T>>(csv, "plane", scalar, [](const Vec3<T>& c, prism::Pcg32& rng) {
+    sweep<T, prism::Plane<T>>(csv, "plane", scalar, [](const Vec3<T>& c, prism::Random& rng) {
         return prism::Plane<T>::through(c, random_direction<T>(rng));
     });
 }

@@ -46,7 +46,7 @@ int main(int argc, char** argv)
         const int rounds = 20;
         const double seconds = bench::min_seconds(3, [&] {
             for (int round = 0; round < rounds; ++round) {
-                Pcg32 rng(7, std::uint64_t(round));
+                Random rng(7, std::uint64_t(round));
                 for (std::size_t i = 0; i < rays.size(); ++i) found[i] = whitted.radiance(rays[i], rng);
             }
         });

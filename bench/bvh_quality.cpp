@@ -51,7 +51,7 @@ std::vector<Ray<T>> camera_rays(int size)
 template <class Hit>
 std::vector<Ray<T>> with_bounces(std::vector<Ray<T>> rays, Hit&& hit)
 {
-    Pcg32 rng(7u, 7u);
+    Random rng(7u, 7u);
     const std::size_t primary = rays.size();
     for (std::size_t i = 0; i < primary; ++i)
         if (const auto c = hit(rays[i])) rays.push_back(spawn_ray(c->point, c->error, c->normal, cosine_hemisphere(c->facing_normal(), rng)));
@@ -163,7 +163,7 @@ int main(int argc, char** argv)
     }
     bench::Csv csv(out / "bvh_quality.csv", "geometry,count,setting,build_s,mrays,sah_cost,nodes,same_hits");
     for (const std::size_t n : {std::size_t(10000), std::size_t(100000), std::size_t(1000000)}) {
-        Pcg32 rng(1u, 1u);
+        Random rng(1u, 1u);
         const T radius = T(std::cbrt(0.05 * 8 / (4.0 / 3 * pi<double> * double(n))));
         std::vector<Sphere<T>> balls;
         for (std::size_t i = 0; i < n; ++i)

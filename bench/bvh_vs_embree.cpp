@@ -37,7 +37,7 @@ using namespace prism;
 using T = float;
 
 /// A point uniform in [-1, 1]^3.
-Vec3<T> test_point(Pcg32& rng)
+Vec3<T> test_point(Random& rng)
 {
     return {T(2) * rng.uniform<T>() - T(1), T(2) * rng.uniform<T>() - T(1), T(2) * rng.uniform<T>() - T(1)};
 }
@@ -178,7 +178,7 @@ template <class SceneT>
 Rays make_rays(const SceneT& scene, std::vector<Ray<T>> primary)
 {
     Rays rays{std::move(primary), {}, {}, {}};
-    Pcg32 rng(7u, 7u);
+    Random rng(7u, 7u);
     for (const Ray<T>& r : rays.primary)
         if (const auto hit = scene.closest_hit(r, {T(0), infinity<T>})) {
             const Crossing<T>& c = hit->crossing;
@@ -301,7 +301,7 @@ int main(int argc, char** argv)
     const auto primary = camera_rays(1000, {T(0.3), T(0.4), T(-4)}, {T(0), T(0), T(0)}, T(1.3));
 
     for (const std::size_t n : {std::size_t(100), std::size_t(1000), std::size_t(10000), std::size_t(100000), std::size_t(1000000)}) {
-        Pcg32 rng(1u, 1u);
+        Random rng(1u, 1u);
         const T radius = T(std::cbrt(0.05 * 8 / (4.0 / 3 * pi<double> * double(n))));
         std::vector<Sphere<T>> balls;
         ObjectArray<Sphere<T>, Diffuse<T>> array;

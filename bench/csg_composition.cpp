@@ -63,7 +63,7 @@ int main(int argc, char** argv)
 {
     const std::filesystem::path out = argc > 1 ? argv[1] : "bench/results";
     // Rays from a circle around the row, aimed at random points near it.
-    Pcg32 rng(3u, 3u);
+    Random rng(3u, 3u);
     std::vector<Ray<T>> batch;
     for (int i = 0; i < rays; ++i) {
         const T angle = T(2) * pi<T> * rng.uniform<T>();

@@ -49,7 +49,7 @@ struct CountingResult {
 };
 
 /// A point where photons land: on a wall of the unit box, or in the caustic blob.
-Point photon_position(prism::Pcg32& rng)
+Point photon_position(prism::Random& rng)
 {
     const float u = rng.uniform<float>(), v = rng.uniform<float>();
     if (rng.uniform<float>() < 0.1f) { // the caustic: a dense disk of radius 0.15 on the floor
@@ -68,7 +68,7 @@ Point photon_position(prism::Pcg32& rng)
 void run(bench::Csv& csv, std::size_t n, std::size_t query_count)
 {
     const int repeats = n >= 4000000 ? 1 : 3;
-    prism::Pcg32 rng(7u, n);
+    prism::Random rng(7u, n);
     std::vector<Point> photons(n);
     for (auto& p : photons) p = photon_position(rng);
     std::vector<Point> queries(query_count);

@@ -11,7 +11,7 @@
 // measure of a scene's cost, and prints a second line per N:
 //   render,types,objects,ms_types,ms_one,same_bits
 // bench/compile_cost.py compiles it for S = 1 to 1024 and draws the chart.
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/geometry/sphere.hpp>
 #include <prism/light/point_light.hpp>
 #include <prism/material/diffuse.hpp>
@@ -50,7 +50,7 @@ struct Kind : Sphere<T> {
 /// N spheres at random in the cube [-1, 1]^3, sized so that they fill about a tenth of it.
 std::vector<Sphere<T>> spheres(std::size_t n)
 {
-    Pcg32 rng(7, 1);
+    Random rng(7, 1);
     const T radius = T(0.58) * std::cbrt(T(0.1) / T(n));
     std::vector<Sphere<T>> out;
     for (std::size_t k = 0; k < n; ++k) {
@@ -64,7 +64,7 @@ std::vector<Sphere<T>> spheres(std::size_t n)
 /// it towards a light at (3, 5, 3).
 std::pair<std::vector<Ray<T>>, std::vector<Ray<T>>> rays(std::size_t n)
 {
-    Pcg32 rng(11, 2);
+    Random rng(11, 2);
     std::vector<Ray<T>> primary, shadow;
     for (std::size_t k = 0; k < n; ++k) {
         const Vec3<T> target{T(2.4) * rng.uniform<T>() - T(1.2), T(2.4) * rng.uniform<T>() - T(1.2), T(0)};

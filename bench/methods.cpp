@@ -8,17 +8,16 @@
 //   povray is the glass box in POV-Ray's model (shared/scenes/cornell_caustics.pov: its
 //   no-falloff light, direct light and caustics only; no global photons, and the
 //   reference takes no diffuse bounce).
-//   METHOD direct | gather | cache | progressive | reference | path | path_bounces | path_grid2 | path_strata | mask; EFFORT is, per method:
+//   METHOD direct | gather | cache | progressive | reference | path | path_bounces | path_grid2 | mask,
+//   with ":independent" after it for independent samples instead of Owen-scrambled Sobol
+//   points (RenderConfig::sampler); EFFORT is, per method:
 //   direct: photons (global and caustic); gather: final-gather rays (2e5 photons);
 //   cache: rays per record (2e5 photons); progressive: passes (5e4 + 5e4 photons each);
 //   reference: samples per pixel (and as many light paths); path: the path tracer alone,
 //   light samples and bounces combined by multiple importance sampling, samples per
 //   pixel; path_bounces: the same without light samples for area lights (their light
 //   found only by the bounces that meet them); path_grid2: the path tracer with 2 x 2
-//   stratified light samples at each vertex instead of one; path_strata: the path tracer
-//   with each pixel's camera rays on a jittered sqrt(spp) x sqrt(spp) grid instead of
-//   independent positions (an experiment outside render(): is the gap to Cycles where the
-//   pixel's samples fall?); mask: samples per pixel, and the image is
+//   stratified light samples at each vertex instead of one; mask: samples per pixel, and the image is
 //   the share of each pixel whose camera ray meets a diffuse surface first (1 where the
 //   pixel sees only walls).
 #include "common.hpp"
@@ -49,7 +48,7 @@ template <class SceneT>
 struct SeesDiffuseFirst {
     using scalar_type = float;
     const SceneT* scene;
-    [[nodiscard]] prism::Rgb<float> radiance(const prism::Ray<float>& ray, prism::Pcg32&) const noexcept
+    [[nodiscard]] prism::Rgb<float> radiance(const prism::Ray<float>& ray, prism::Random&) const noexcept
     {
         const auto hit = scene->closest_hit(ray, {0.0f, std::numeric_limits<float>::infinity()});
         const bool diffuse = hit && scene->visit_material(*hit, []<class M>(const M&) { return prism::has_diffuse<M> && !prism::reflects<M> && !prism::transmits<M>; });
@@ -65,9 +64,14 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "usage: bench_methods diffuse|area|glass|povray METHOD EFFORT OUT.pfm [SIZE] [SEED] [SPP]\n");
         return 1;
     }
-    const std::string which = argv[1], method = argv[2], out = argv[4];
-    const double effort = std::atof(argv[3]);
+    const std::string which = argv[1], out = argv[4];
+    std::string method = argv[2];
     examples::Options options;
+    if (method.ends_with(":independent")) {
+        options.render.sampler = prism::SamplerKind::independent;
+        method.resize(method.size() - std::string(":independent").size());
+    }
+    const double effort = std::atof(argv[3]);
     options.render.width = options.render.height = argc > 5 ? std::atoi(argv[5]) : 256;
     options.render.threads = 2;
     options.render.seed = argc > 6 ? std::strtoull(argv[6], nullptr, 10) : 0;
@@ -100,28 +104,6 @@ int main(int argc, char** argv)
             const prism::Film film = prism::render(scenes::cornell_camera<float>(), SeesDiffuseFirst<std::remove_cvref_t<decltype(scene)>>{&scene}, options.render);
             prism::write_pfm(film, out);
             return 0.0;
-        }
-        if (method == "path_strata") {
-            // Each pixel's samples on a jittered n x n grid (n^2 = spp), one stream a pixel.
-            const auto start = std::chrono::steady_clock::now();
-            const prism::PathTracer tracer(scene);
-            const int size = options.render.width, n = int(std::lround(std::sqrt(double(options.render.spp))));
-            const prism::CameraRays<float> rays = scenes::cornell_camera<float>().rays(size, size);
-            prism::Film film(size, size);
-            prism::detail::parallel_for(std::size_t(size) * std::size_t(size), 2, [&](std::size_t i) {
-                const int x = int(i % std::size_t(size)), y = int(i / std::size_t(size));
-                prism::Pcg32 rng(options.render.seed, i);
-                prism::Rgb<float> sum(0.0f);
-                for (int a = 0; a < n; ++a)
-                    for (int b = 0; b < n; ++b) {
-                        const float u = (float(a) + rng.uniform<float>()) / float(n), v = (float(b) + rng.uniform<float>()) / float(n);
-                        sum += tracer.radiance(rays.ray(float(x) + u, float(y) + v), rng);
-                    }
-                film.set(x, y, sum / float(n * n));
-            });
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            prism::write_pfm(film, out);
-            return seconds;
         }
         if (method == "path" || method == "path_bounces" || method == "path_grid2") {
             const auto start = std::chrono::steady_clock::now();

@@ -110,7 +110,7 @@ void run(bench::Csv& csv, const char* scalar)
             return double(std::abs(f) / std::sqrt(gx * gx + gy * gy + gz * gz));
         };
         double worst[3] = {0, 0, 0};
-        prism::Pcg32 rng(5u, 5u);
+        prism::Random rng(5u, 5u);
         for (int n = 0; n < 200; ++n) {
             const Vec3<T> o = c + Vec3<T>{T(-4), T(0.6) * rng.uniform<T>() - T(0.3), T(0.4) * rng.uniform<T>() - T(0.2)};
             const Vec3<T> d = prism::normalize(c + Vec3<T>{T(0), T(0.2) * rng.uniform<T>() - T(0.1), T(0)} - o);

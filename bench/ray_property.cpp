@@ -41,7 +41,7 @@ int main(int argc, char** argv)
                 for (const double size : sizes) {
                     Counts cell;
                     int skipped = 0;
-                    prism::Pcg32 rng(seed++, 77u);
+                    prism::Random rng(seed++, 77u);
                     for (int k = 0; k < placements; ++k) {
                         // Shapes up to 10^4 from the world origin; the 10^6 rays come from
                         // that far to a shape near it.

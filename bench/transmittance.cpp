@@ -44,7 +44,7 @@ float noise(float x, float y, float z)
 
 /// Plain ratio tracking against the medium's majorant grid (no control).
 template <class M>
-Rgb<T> ratio_tracking(const M& medium, const Ray<T>& ray, T t_max, Pcg32& rng)
+Rgb<T> ratio_tracking(const M& medium, const Ray<T>& ray, T t_max, Random& rng)
 {
     const Rgb<T> sigma_t = medium.absorption() + medium.scattering();
     const T most = max_component(sigma_t);
@@ -67,7 +67,7 @@ Rgb<T> ratio_tracking(const M& medium, const Ray<T>& ray, T t_max, Pcg32& rng)
 
 /// The track-length estimator: 1 if delta tracking finds no real collision, else 0 (grey: channel 0's extinction).
 template <class M>
-T track_length(const M& medium, const Ray<T>& ray, T t_max, Pcg32& rng)
+T track_length(const M& medium, const Ray<T>& ray, T t_max, Random& rng)
 {
     const T sigma = medium.absorption().x + medium.scattering().x;
     bool hit = false;
@@ -102,7 +102,7 @@ void measure(bench::Csv& csv, const char* medium_name, const M& medium, Referenc
     const Aabb<T> box = medium.bounds();
     const Vec3<T> centre = T(0.5) * (box.lo + box.hi);
     const T radius = T(0.75) * length(box.hi - box.lo);
-    Pcg32 place(3, 9);
+    Random place(3, 9);
     std::vector<Ray<T>> rays;
     std::vector<double> expected;
     while (rays.size() < 1024) {
@@ -117,7 +117,7 @@ void measure(bench::Csv& csv, const char* medium_name, const M& medium, Referenc
         const int rounds = 4;
         const double seconds = bench::min_seconds(3, [&] {
             for (int round = 0; round < rounds; ++round) {
-                Pcg32 rng(11, std::uint64_t(round));
+                Random rng(11, std::uint64_t(round));
                 for (std::size_t i = 0; i < rays.size(); ++i) found[i] = estimate(rays[i], rng);
             }
         });
@@ -129,24 +129,24 @@ void measure(bench::Csv& csv, const char* medium_name, const M& medium, Referenc
         csv.row("%s,%s,%d,%.1f,%.6g", medium_name, method, setting, ns, error);
     };
     for (const int n : {1, 4, 16, 64, 256}) {
-        run("residual", n, [&](const Ray<T>& ray, Pcg32& rng) {
+        run("residual", n, [&](const Ray<T>& ray, Random& rng) {
             double sum = 0;
             for (int k = 0; k < n; ++k) sum += medium.transmittance(ray, infinity<T>, rng).x;
             return sum / n;
         });
-        run("ratio", n, [&](const Ray<T>& ray, Pcg32& rng) {
+        run("ratio", n, [&](const Ray<T>& ray, Random& rng) {
             double sum = 0;
             for (int k = 0; k < n; ++k) sum += ratio_tracking(medium, ray, infinity<T>, rng).x;
             return sum / n;
         });
-        run("track-length", n, [&](const Ray<T>& ray, Pcg32& rng) {
+        run("track-length", n, [&](const Ray<T>& ray, Random& rng) {
             double sum = 0;
             for (int k = 0; k < n; ++k) sum += track_length(medium, ray, infinity<T>, rng);
             return sum / n;
         });
     }
     for (const int steps : {4, 16, 64, 256, 1024})
-        run("march", steps, [&](const Ray<T>& ray, Pcg32&) { return double(march(medium, ray, infinity<T>, steps)); });
+        run("march", steps, [&](const Ray<T>& ray, Random&) { return double(march(medium, ray, infinity<T>, steps)); });
 }
 
 } // namespace

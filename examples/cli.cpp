@@ -63,6 +63,8 @@ void print_help(const char* program, const char* description, const Options& def
                 "  --spp N       samples per pixel; 1 samples pixel centres (default %d)\n"
                 "  --threads N   worker threads, 0 = all cores (default 0)\n"
                 "  --seed N      random seed (default 0)\n"
+                "  --sampler S   the samples' points: sobol (Owen-scrambled Sobol, every 2^m samples of a pixel\n"
+                "                stratified) or independent (default sobol)\n"
                 "  --out DIR     folder for the images, created if missing (default .)\n"
                 "  --crop X0,X1,Y0,Y1\n"
                 "                render only pixels [X0, X1) x [Y0, Y1), from the top left; with a decimal point, as\n"
@@ -236,6 +238,11 @@ bool parse(int argc, char** argv, Options& options, const char* description, Acc
         else if (flag == "--spp") options.render.spp = parse_integer<int>(flag, value, 1, 1 << 20);
         else if (flag == "--threads") options.render.threads = parse_integer<unsigned>(flag, value, 0, 1024);
         else if (flag == "--seed") options.render.seed = parse_integer<std::uint64_t>(flag, value, 0, (1LL << 62));
+        else if (flag == "--sampler") {
+            if (std::string_view(value) == "sobol") options.render.sampler = prism::SamplerKind::sobol;
+            else if (std::string_view(value) == "independent") options.render.sampler = prism::SamplerKind::independent;
+            else throw std::invalid_argument("--sampler must be sobol or independent, got '" + std::string(value) + "'");
+        }
         else if (flag == "--out") options.out = value;
         else if (flag == "--povray") options.povray = value;
         else if (flag == "--photons") options.photons = parse_integer<std::size_t>(flag, value, 0, 100000000);
@@ -321,7 +328,8 @@ std::string settings(const Options& options)
     };
     const prism::RenderConfig& r = options.render;
     std::string text = "program=" + options.program + " width=" + std::to_string(r.width) + " height=" + std::to_string(r.height) +
-                       " spp=" + std::to_string(r.spp) + " seed=" + std::to_string(r.seed);
+                       " spp=" + std::to_string(r.spp) + " seed=" + std::to_string(r.seed) +
+                       " sampler=" + (r.sampler == prism::SamplerKind::sobol ? "sobol" : "independent");
     if (options.photon_example) {
         const char* filters[] = {"box", "cone", "gaussian"};
         text += " method=" + options.method + " photons=" + std::to_string(options.photons) + " caustic-photons=" +

@@ -83,7 +83,7 @@ LobeSampling sample_lobe(const B& lobe, const prism::Vec3<double>& wo_d, long n,
 {
     using T = typename B::scalar_type;
     const prism::Vec3<T> wo(wo_d);
-    prism::Pcg32 rng(seed, 9);
+    prism::Random rng(seed, 9);
     LobeSampling out;
     double sum = 0;
     long taken = 0;
@@ -183,7 +183,7 @@ inline Chi2 chi2_polar(const std::function<prism::Vec3<double>()>& sample, const
 template <class B>
 Chi2 chi2_lobe(const B& lobe, const prism::Vec3<double>& wo, long samples = 1000000, prism::Transport mode = prism::Transport::radiance, int sub = 8)
 {
-    prism::Pcg32 rng(17, 5);
+    prism::Random rng(17, 5);
     return chi2_polar(
         [&] {
             const double u0 = rng.uniform<double>(), u1 = rng.uniform<double>(), u2 = rng.uniform<double>();

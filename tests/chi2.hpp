@@ -113,7 +113,7 @@ inline Chi2 chi2_directions(const std::function<prism::Vec3<double>(double, doub
         return i * phi_bins + j;
     };
     std::vector<double> observed(std::size_t(theta_bins * phi_bins), 0.0), expected(observed.size(), 0.0);
-    prism::Pcg32 rng(seed, 3);
+    prism::Random rng(seed, 3);
     long taken = 0;
     for (long k = 0; k < samples; ++k) {
         const double u = rng.uniform<double>(), v = rng.uniform<double>();
@@ -177,7 +177,7 @@ inline Chi2 chi2_surface(const std::function<prism::Vec2<double>(double, double)
                          long samples, int bins = 40, int sub = 8, std::uint64_t seed = 11)
 {
     std::vector<double> observed(std::size_t(bins * bins), 0.0), expected(observed.size(), 0.0);
-    prism::Pcg32 rng(seed, 5);
+    prism::Random rng(seed, 5);
     for (long k = 0; k < samples; ++k) {
         const prism::Vec2<double> st = sample(rng.uniform<double>(), rng.uniform<double>());
         if (!(st.x >= -1e-9 && st.x <= 1 + 1e-9 && st.y >= -1e-9 && st.y <= 1 + 1e-9)) {

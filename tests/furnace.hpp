@@ -54,7 +54,7 @@ inline double furnace_radiance(const prism::Vec3<double>& p, bool four, bool gi)
 template <class Radiance>
 double furnace_mean(bool four, Radiance&& radiance, int count, bool gi = true, std::uint64_t seed = 1)
 {
-    prism::Pcg32 rng(seed, 7u);
+    prism::Random rng(seed, 7u);
     double sum = 0;
     const prism::Vec3<float> eye{0.01f, 0.02f, 0.03f};
     for (int i = 0; i < count; ++i) {
@@ -116,7 +116,7 @@ struct SampleStats {
 template <class Radiance>
 SampleStats coated_furnace_samples(Radiance&& radiance, int count, std::uint64_t seed = 1)
 {
-    prism::Pcg32 rng(seed, 7u);
+    prism::Random rng(seed, 7u);
     const prism::Vec3<float> eye{0.01f, 0.02f, 0.03f};
     SampleStats stats;
     for (int i = 0; i < count; ++i) {

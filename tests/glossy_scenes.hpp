@@ -43,7 +43,7 @@ template <class M>
 double furnace_albedo(const M& material, double theta_deg)
 {
     const auto lobe = material.glossy({});
-    prism::Pcg32 rng(5, 5);
+    prism::Random rng(5, 5);
     bool delta = false;
     for (int i = 0; i < 64 && !delta; ++i) {
         using T = typename M::scalar_type;

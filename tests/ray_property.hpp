@@ -20,7 +20,7 @@
 
 namespace test::property {
 
-using prism::Pcg32;
+using prism::Random;
 using prism::Vec3;
 
 /// What went wrong, counted over a batch of rays.
@@ -63,7 +63,7 @@ Vec3<T> cast(const Vec3<double>& v)
     return Vec3<T>(T(v.x), T(v.y), T(v.z));
 }
 
-inline Vec3<double> unit_direction(Pcg32& rng)
+inline Vec3<double> unit_direction(Random& rng)
 {
     const double z = 1 - 2 * rng.uniform<double>();
     const double r = std::sqrt(std::max(0.0, 1 - z * z));
@@ -235,7 +235,7 @@ Counts fire(const Placement& placement, double distance, std::uint64_t seed, std
     const auto twin = Case::template make<double>(placement);
     const Scene scene{Lights{PointLight<T>{.position = cast<T>(placement.centre + Vec3<double>(0, 3 * placement.size + distance, 0))}},
                       Object{shape, Diffuse<T>{}}};
-    Pcg32 rng(seed, 0x9e3779b97f4a7c15ULL);
+    Random rng(seed, 0x9e3779b97f4a7c15ULL);
     Counts counts;
     const auto finite = [](const Crossing<T>& c) {
         return is_finite(c.t) && is_finite(c.point) && is_finite(c.error) && is_finite(c.normal);
@@ -358,7 +358,7 @@ Counts fire(const Placement& placement, double distance, std::uint64_t seed, std
 }
 
 /// A placement `distance` from the world origin (0: at it), of the given size.
-inline Placement place(Pcg32& rng, double distance, double size)
+inline Placement place(Random& rng, double distance, double size)
 {
     Placement p;
     p.centre = distance * unit_direction(rng);

@@ -13,7 +13,7 @@ namespace test {
 
 /// Uniform direction on the unit sphere (z = 1 - 2u, phi = 2 pi v).
 template <prism::Scalar T>
-prism::Vec3<T> random_direction(prism::Pcg32& rng)
+prism::Vec3<T> random_direction(prism::Random& rng)
 {
     const T z = T(1) - T(2) * rng.uniform<T>();
     const T r = std::sqrt(std::max(T(0), T(1) - z * z));
@@ -23,7 +23,7 @@ prism::Vec3<T> random_direction(prism::Pcg32& rng)
 
 /// Uniform point in the cube [-extent, extent]^3.
 template <prism::Scalar T>
-prism::Vec3<T> random_point(prism::Pcg32& rng, T extent)
+prism::Vec3<T> random_point(prism::Random& rng, T extent)
 {
     return {extent * (T(2) * rng.uniform<T>() - T(1)), extent * (T(2) * rng.uniform<T>() - T(1)),
             extent * (T(2) * rng.uniform<T>() - T(1))};
@@ -31,7 +31,7 @@ prism::Vec3<T> random_point(prism::Pcg32& rng, T extent)
 
 /// A direction on the hemisphere around n.
 template <prism::Scalar T>
-prism::Vec3<T> random_hemisphere(prism::Pcg32& rng, const prism::Vec3<T>& n)
+prism::Vec3<T> random_hemisphere(prism::Random& rng, const prism::Vec3<T>& n)
 {
     const prism::Vec3<T> d = random_direction<T>(rng);
     return prism::dot(d, n) < T(0) ? -d : d;
@@ -46,7 +46,7 @@ namespace test {
 /// point to the side it came from (the outside of a convex solid) must never cross the
 /// shape again. Whether it does.
 template <class S, prism::Scalar T>
-bool reintersects(prism::Pcg32& rng, const S& shape, const prism::Vec3<T>& inside)
+bool reintersects(prism::Random& rng, const S& shape, const prism::Vec3<T>& inside)
 {
     const prism::Vec3<T> eye = inside + random_direction<T>(rng) * T(5);
     const auto crossings = shape.crossings({eye, prism::normalize(inside - eye)}, {T(0), prism::infinity<T>});
@@ -61,7 +61,7 @@ bool reintersects(prism::Pcg32& rng, const S& shape, const prism::Vec3<T>& insid
 /// `rays_per_shape` tries go to each (more for shapes slow to build, as meshes).
 /// Returns the number of self-hits.
 template <class Make>
-int reintersections(prism::Pcg32& rng, int count, Make&& make, int rays_per_shape = 1)
+int reintersections(prism::Random& rng, int count, Make&& make, int rays_per_shape = 1)
 {
     int self_hits = 0;
     for (int i = 0; i < count; ++i) {
@@ -87,7 +87,7 @@ struct Disagreements {
 /// at `shape` (float) and its exact `twin` (double, built from the float shape's own
 /// numbers, so the same surface), each given the float ray's exact values.
 template <class F, class D>
-Disagreements far_disagreements(const F& shape, const D& twin, prism::Vec3<double> centre, double size, double distance, int rays, prism::Pcg32& rng)
+Disagreements far_disagreements(const F& shape, const D& twin, prism::Vec3<double> centre, double size, double distance, int rays, prism::Random& rng)
 {
     Disagreements out;
     for (int i = 0; i < rays; ++i) {
@@ -116,7 +116,7 @@ namespace test {
 /// The mean of test::samples(n) estimates integrator.radiance(ray, rng).x from one stream
 /// (an eighth of n under a sanitizer: tests/effort.hpp).
 template <class Integrator, class Ray>
-double mean_radiance(const Integrator& integrator, const Ray& ray, long n, prism::Pcg32 rng)
+double mean_radiance(const Integrator& integrator, const Ray& ray, long n, prism::Random rng)
 {
     n = samples(n);
     double sum = 0;

@@ -29,7 +29,7 @@ struct Found {
 template <class S, class Skip>
 Found check_derivatives(const S& shape, prism::Vec3<double> centre, double radius, int rays, Skip&& skip, double h = 1e-5)
 {
-    prism::Pcg32 rng(17, 5);
+    prism::Random rng(17, 5);
     Found found;
     for (int i = 0; i < rays; ++i) {
         const prism::Vec3<double> target = centre + radius * std::cbrt(rng.uniform<double>()) * test::random_direction<double>(rng);

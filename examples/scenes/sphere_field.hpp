@@ -17,7 +17,7 @@ inline auto sphere_field_scene()
     using namespace prism;
     using T = float;
     // Balls on a jittered 316 x 316 grid, 0.25 apart, resting on the plain.
-    Pcg32 rng(2026u, 14u);
+    Random rng(2026u, 14u);
     ObjectArray<Sphere<T>, Diffuse<T>> balls;
     constexpr int side = 316;
     balls.items.reserve(std::size_t(side) * side);

@@ -19,8 +19,11 @@
 #include <prism/core/offset.hpp>
 #include <prism/core/parallel.hpp>
 #include <prism/core/ray.hpp>
+#include <prism/core/random.hpp>
 #include <prism/core/rng.hpp>
+#include <prism/core/sampler.hpp>
 #include <prism/core/sampling.hpp>
+#include <prism/core/sequences.hpp>
 #include <prism/core/transform.hpp>
 #include <prism/csg/csg_node.hpp>
 #include <prism/csg/difference.hpp>

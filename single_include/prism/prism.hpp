@@ -2517,6 +2517,353 @@ template <Scalar T = double>
 
 } // namespace prism
 
+// ---- prism/core/sequences.hpp ----
+// Low-discrepancy sequences, as 32-bit fractions: Sobol's first four dimensions, Owen's
+// scrambling of them by hashing (Burley 2020, "Practical Hash-based Owen Scrambling",
+// JCGT 9(4)), and Halton's radical inverses with the same scrambling digit by digit.
+//
+// A point depends only on its index, its dimension and a seed: threads, crops and
+// machines may take any share of a sequence and get the same bits.
+//
+// Sobol's points come from generator matrices over GF(2): point i of dimension d is the
+// XOR of the columns C_d[k] for the set bits k of i. Dimension 0 is van der Corput's
+// (i's bits reversed); 1 to 3 come from the primitive polynomials x + 1, x^2 + x + 1 and
+// x^3 + x + 1 with the initial direction numbers (1), (1, 3) and (1, 3, 1) (Joe and Kuo
+// 2008). Dimensions 0 and 1 are a (0, 2)-sequence: any 2^m points from a multiple of
+// 2^m put one point in each elementary box of area 2^-m.
+//
+// Owen's scrambling permutes the digits of a coordinate, each by a permutation that
+// depends on the digits above it; the points stay a net of the same quality and become
+// random, the error of a smooth integrand falling as N^-3/2. Burley's hash does it in a
+// few multiplications: reverse the bits, apply Laine and Karras's hash (whose output bit
+// k depends only on input bits 0 to k), reverse back.
+
+
+#include <array>
+#include <cstdint>
+#include <limits>
+
+namespace prism::sequences {
+
+/// The dimensions of Sobol's sequence given here.
+inline constexpr int sobol_dimensions = 4;
+
+/// Generator matrix columns of Sobol's first four dimensions: column k of dimension d
+/// is the 32-bit fraction bit k of the index adds.
+inline constexpr std::array<std::array<std::uint32_t, 32>, sobol_dimensions> sobol_matrices = [] {
+    std::array<std::array<std::uint32_t, 32>, sobol_dimensions> c{};
+    for (int k = 0; k < 32; ++k) c[0][std::size_t(k)] = std::uint32_t(1) << (31 - k);
+    // Dimensions 1 to 3: degree s, the polynomial's inner coefficients a_1 .. a_(s-1)
+    // (x^s + a_1 x^(s-1) + ... + a_(s-1) x + 1), the first s direction numbers m_k
+    // (odd, below 2^k), and Bratley and Fox's recurrence for the rest:
+    // v_k = a_1 v_(k-1) ^ ... ^ a_(s-1) v_(k-s+1) ^ v_(k-s) ^ (v_(k-s) >> s).
+    struct Polynomial {
+        int s;
+        std::array<int, 2> a;
+        std::array<std::uint32_t, 3> m;
+    };
+    constexpr Polynomial polynomials[3] = {{1, {0, 0}, {1, 0, 0}}, {2, {1, 0}, {1, 3, 0}}, {3, {0, 1}, {1, 3, 1}}};
+    for (int d = 1; d < sobol_dimensions; ++d) {
+        const Polynomial& p = polynomials[d - 1];
+        auto& v = c[std::size_t(d)];
+        for (int k = 0; k < p.s; ++k) v[std::size_t(k)] = p.m[std::size_t(k)] << (31 - k);
+        for (int k = p.s; k < 32; ++k) {
+            std::uint32_t x = v[std::size_t(k - p.s)] ^ (v[std::size_t(k - p.s)] >> p.s);
+            for (int j = 1; j < p.s; ++j)
+                if (p.a[std::size_t(j - 1)] != 0) x ^= v[std::size_t(k - j)];
+            v[std::size_t(k)] = x;
+        }
+    }
+    return c;
+}();
+
+/// Point `index` of Sobol's sequence in dimension d (below sobol_dimensions), as a
+/// 32-bit fraction.
+[[nodiscard]] constexpr std::uint32_t sobol(std::uint32_t index, int d) noexcept
+{
+    std::uint32_t x = 0;
+    for (int k = 0; index != 0; ++k, index >>= 1)
+        if ((index & 1u) != 0) x ^= sobol_matrices[std::size_t(d)][std::size_t(k)];
+    return x;
+}
+
+/// The bits of x in reverse order.
+[[nodiscard]] constexpr std::uint32_t reverse_bits(std::uint32_t x) noexcept
+{
+    x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+    x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+    x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
+    return (x >> 16) | (x << 16);
+}
+
+/// Laine and Karras's hash with Burley's constants: a bijection of 32-bit words whose
+/// output bit k depends only on input bits 0 to k and the seed.
+[[nodiscard]] constexpr std::uint32_t laine_karras(std::uint32_t x, std::uint32_t seed) noexcept
+{
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return x;
+}
+
+/// Owen's nested uniform scrambling of a 32-bit fraction, the permutations drawn from
+/// `seed`: each bit flipped or not by a hash of the bits above it. Scrambling the index
+/// of a sequence the same way shuffles it so that every aligned block of 2^m indices is
+/// mapped onto an aligned block of 2^m (Burley's padding, which keeps each prefix's
+/// stratification).
+[[nodiscard]] constexpr std::uint32_t owen_scramble(std::uint32_t x, std::uint32_t seed) noexcept
+{
+    return reverse_bits(laine_karras(reverse_bits(x), seed));
+}
+
+/// A 32-bit seed from a 64-bit key and a salt (a strong 64-bit mixer, so that nearby
+/// keys give unrelated seeds).
+[[nodiscard]] constexpr std::uint32_t seed_of(std::uint64_t key, std::uint64_t salt) noexcept
+{
+    std::uint64_t z = key + 0x9e3779b97f4a7c15ULL * (salt + 1);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return std::uint32_t((z ^ (z >> 31)) >> 32);
+}
+
+/// A 32-bit fraction as a T in [0, 1): its top bits that T holds exactly, so that it is
+/// never rounded up to 1.
+template <Scalar T>
+[[nodiscard]] constexpr T to_unit(std::uint32_t x) noexcept
+{
+    constexpr int bits = std::numeric_limits<T>::digits < 32 ? std::numeric_limits<T>::digits : 32;
+    return T(x >> (32 - bits)) * (T(1) / T(std::uint64_t(1) << bits));
+}
+
+/// The first primes, Halton's bases.
+inline constexpr std::array<std::uint32_t, 16> primes = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53};
+
+/// The radical inverse of `index` in base `primes[d]`: its base-b digits mirrored about
+/// the point. With `scrambled`, Owen's scrambling: each digit permuted by a hash of the
+/// digits above it and the seed (pbrt-v4's OwenScrambledRadicalInverse does the same).
+/// In double: the digits of a 64-bit index fill its 53 bits.
+[[nodiscard]] constexpr double radical_inverse(std::uint64_t index, int d, bool scrambled = false, std::uint32_t seed = 0) noexcept
+{
+    const std::uint64_t b = primes[std::size_t(d)];
+    const double inverse_base = 1.0 / double(b);
+    double scale = inverse_base, value = 0;
+    std::uint64_t above = 0; // the index's digits so far, as a number in base b: what the next one's permutation depends on
+    // Enough digits that the rest cannot move the double (b^-digits below 2^-54), even
+    // when the index has run out (a scrambled point's zero digits are permuted too).
+    int digits = 0;
+    for (double s = 1; s > 0x1p-54; s *= inverse_base) ++digits;
+    for (int k = 0; k < digits && (scrambled || index != 0); ++k) {
+        std::uint64_t digit = index % b;
+        index /= b;
+        if (scrambled) {
+            const std::uint64_t original = digit;
+            const std::uint32_t h = laine_karras(std::uint32_t(above * 0x9e3779b97f4a7c15ULL >> 32) ^ std::uint32_t(above), seed ^ (std::uint32_t(k) * 0x68bc21ebu));
+            digit = (digit + h % b) % b; // a shift of the digit: one of b permutations, drawn for each prefix
+            above = above * b + original;
+        }
+        value += double(digit) * scale;
+        scale *= inverse_base;
+    }
+    return value < 1.0 ? value : 0x1.fffffffffffffp-1;
+}
+
+} // namespace prism::sequences
+
+// ---- prism/core/sampler.hpp ----
+// The numbers one camera sample draws, by dimension: a point of [0, 1)^n whose coordinates
+// are named by their index, so that every sample of a pixel reads the same dimension for
+// the same decision (the pixel's footprint, the lens, then each bounce's light and lobe).
+//
+// A number depends only on (kind, seed, pixel, sample index, dimension): any thread, crop,
+// range of samples or machine gets the same bits, and any prefix of a pixel's samples is
+// an unbiased estimate (each sample's point is uniform on its own).
+//
+// SamplerKind::sobol is Burley's padded Owen-scrambled Sobol sequence (2020): dimensions
+// are taken in pairs, pair k reads Sobol's dimensions 0 and 1, a (0, 2)-sequence, at the
+// sample index shuffled by a nested uniform scramble of its own (so the pairs are
+// independent of each other), each coordinate Owen-scrambled with a seed of its own. Every
+// prefix of 2^m samples of a pixel is then stratified in every pair: one point in each
+// elementary box of area 2^-m. SamplerKind::independent is a uniform number per
+// (pixel, sample, dimension) from a hash: what every estimator drew before, in spirit.
+
+
+#include <array>
+#include <cstdint>
+
+namespace prism {
+
+/// Which points the samples draw.
+enum class SamplerKind : std::uint8_t {
+    independent, ///< a uniform number for each (pixel, sample, dimension), unrelated to the others
+    sobol,       ///< Owen-scrambled Sobol points, padded by pairs of dimensions (Burley 2020)
+};
+
+/// The numbers of one sample of one pixel.
+class Sampler {
+public:
+    /// Independent numbers of pixel 0, sample 0, seed 0.
+    constexpr Sampler() noexcept = default;
+
+    /// Sample `sample` of pixel `pixel` in the render of `seed`.
+    constexpr Sampler(SamplerKind kind, std::uint64_t seed, std::uint64_t pixel, std::uint32_t sample) noexcept
+        : kind_(kind), key_(mix(seed, pixel)), sample_(sample)
+    {
+    }
+
+    /// The point of dimensions 2k and 2k + 1, as 32-bit fractions.
+    [[nodiscard]] constexpr std::array<std::uint32_t, 2> bits(std::uint32_t k) const noexcept
+    {
+        if (kind_ == SamplerKind::sobol) {
+            const std::uint32_t index = sequences::owen_scramble(sample_, sequences::seed_of(key_, 3 * std::uint64_t(k)));
+            return {sequences::owen_scramble(sequences::sobol(index, 0), sequences::seed_of(key_, 3 * std::uint64_t(k) + 1)),
+                    sequences::owen_scramble(sequences::sobol(index, 1), sequences::seed_of(key_, 3 * std::uint64_t(k) + 2))};
+        }
+        const std::uint64_t bits = hash(key_ ^ (std::uint64_t(sample_) << 32 | k));
+        return {std::uint32_t(bits), std::uint32_t(bits >> 32)};
+    }
+
+    /// The point of dimensions 2k and 2k + 1, in [0, 1)^2.
+    template <Scalar T = double>
+    [[nodiscard]] constexpr std::array<T, 2> pair(std::uint32_t k) const noexcept
+    {
+        const std::array<std::uint32_t, 2> b = bits(k);
+        return {sequences::to_unit<T>(b[0]), sequences::to_unit<T>(b[1])};
+    }
+
+    /// The number of dimension 2k: pair k's first coordinate.
+    template <Scalar T = double>
+    [[nodiscard]] constexpr T single(std::uint32_t k) const noexcept
+    {
+        return pair<T>(k)[0];
+    }
+
+    /// Which points these are.
+    [[nodiscard]] constexpr SamplerKind kind() const noexcept { return kind_; }
+
+private:
+    /// SplitMix64's finaliser: a bijection of 64-bit words that scatters every input bit.
+    [[nodiscard]] static constexpr std::uint64_t hash(std::uint64_t z) noexcept
+    {
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        return z ^ (z >> 31);
+    }
+    /// A key for the pixel of a render: unrelated for neighbouring pixels and seeds.
+    [[nodiscard]] static constexpr std::uint64_t mix(std::uint64_t seed, std::uint64_t pixel) noexcept
+    {
+        return hash(hash(seed + 0x9e3779b97f4a7c15ULL) ^ (pixel * 0xd1b54a32d192ed03ULL));
+    }
+
+    SamplerKind kind_ = SamplerKind::independent;
+    std::uint64_t key_ = 0;
+    std::uint32_t sample_ = 0;
+};
+
+} // namespace prism
+
+// ---- prism/core/random.hpp ----
+// Random: the numbers one sample's estimate draws, in the order it draws them. A camera
+// sample's come from its pixel's Sampler (core/sampler.hpp) by named dimension: the pixel's
+// footprint (pair 0), the lens (pair 1), then each bounce of the path its own block of
+// pairs_per_bounce pairs, so that the same decision of every sample of a pixel (the light
+// point at the first surface, the lobe's direction at the second) reads the same
+// dimensions and the samples' points are spread over them. Draws past a bounce's block,
+// and every draw of an independent Random (a photon's, a test's), come from a PCG stream.
+//
+// uniform() takes one number (the two coordinates of a pair in turn); uniform2() a whole
+// pair, so that a 2-D decision (a point on a light, a lobe's direction) gets a point of
+// the sampler's 2-D stratification.
+//
+// Every number is a function of (sampler kind, seed, pixel, sample index, the draws
+// before it): any thread, crop, pass range or MPI rank draws the same bits, and each
+// sample's numbers are uniform and independent on their own, so any prefix of a pixel's
+// samples is an unbiased estimate.
+
+
+#include <array>
+#include <cstdint>
+
+namespace prism {
+
+/// The numbers one sample draws: its Sampler's dimensions, bounce by bounce, then a PCG stream.
+class Random {
+public:
+    /// Pairs a camera sample takes before its path's first bounce: the pixel's footprint, the lens.
+    static constexpr std::uint32_t camera_pairs = 2;
+    /// Pairs of the sampler each bounce of a path may draw (light choice and point, lobe and
+    /// direction, roulette, the medium's flight and phase); its further draws are PCG's.
+    static constexpr std::uint32_t pairs_per_bounce = 6;
+
+    /// An independent stream (PCG's default seed).
+    constexpr Random() noexcept = default;
+
+    /// An independent stream: PCG's at `seed` on `stream`.
+    constexpr Random(std::uint64_t seed, std::uint64_t stream) noexcept : pcg_(seed, stream) {}
+
+    /// A camera sample's numbers: `sampler`'s (from its pixel's footprint on), then `pcg`'s.
+    /// An independent sampler draws everything from `pcg`.
+    constexpr Random(const Sampler& sampler, const Pcg32& pcg) noexcept
+        : sampler_(sampler), pcg_(pcg), end_(sampler.kind() == SamplerKind::independent ? 0 : camera_pairs)
+    {
+    }
+
+    /// The next number, uniform in [0, 1), never 1.
+    template <Scalar T = float>
+    constexpr T uniform() noexcept
+    {
+        if (has_second_) {
+            has_second_ = false;
+            return sequences::to_unit<T>(second_);
+        }
+        if (pair_ < end_) {
+            const std::array<std::uint32_t, 2> b = sampler_.bits(pair_++);
+            second_ = b[1];
+            has_second_ = true;
+            return sequences::to_unit<T>(b[0]);
+        }
+        return pcg_.uniform<T>();
+    }
+
+    /// The next point, uniform in [0, 1)^2: a whole pair of the sampler's.
+    template <Scalar T = float>
+    constexpr std::array<T, 2> uniform2() noexcept
+    {
+        has_second_ = false;
+        if (pair_ < end_) {
+            const std::array<std::uint32_t, 2> b = sampler_.bits(pair_++);
+            return {sequences::to_unit<T>(b[0]), sequences::to_unit<T>(b[1])};
+        }
+        const T u = pcg_.uniform<T>();
+        return {u, pcg_.uniform<T>()};
+    }
+
+    /// A uniform 32-bit word, from the PCG stream.
+    constexpr std::uint32_t next_u32() noexcept { return pcg_.next_u32(); }
+
+    /// From here on, bounce `b`'s block of the sampler's dimensions (b counts from 0, the
+    /// camera ray's first surface). Nothing for an independent stream.
+    constexpr void bounce(int b) noexcept
+    {
+        if (sampler_.kind() == SamplerKind::independent || b < 0) return;
+        pair_ = camera_pairs + std::uint32_t(b) * pairs_per_bounce;
+        end_ = pair_ + pairs_per_bounce;
+        has_second_ = false;
+    }
+
+private:
+    Sampler sampler_{};
+    Pcg32 pcg_{};
+    std::uint32_t pair_ = 0;  ///< the sampler's next pair
+    std::uint32_t end_ = 0;   ///< the pair the current block ends before (0: none of the sampler's)
+    std::uint32_t second_ = 0; ///< the drawn pair's second coordinate, while has_second_
+    bool has_second_ = false;
+};
+
+} // namespace prism
+
 // ---- prism/core/sampling.hpp ----
 // Sampling: directions and points drawn from the unit square, for lights, photons and
 // diffuse bounces; Russian roulette.
@@ -2540,10 +2887,10 @@ template <Scalar T>
 }
 
 template <Scalar T>
-[[nodiscard]] inline Vec3<T> uniform_sphere(Pcg32& rng) noexcept
+[[nodiscard]] inline Vec3<T> uniform_sphere(Random& rng) noexcept
 {
-    const T u = rng.uniform<T>();
-    return uniform_sphere(u, rng.uniform<T>());
+    const auto [u, v] = rng.uniform2<T>();
+    return uniform_sphere(u, v);
 }
 
 /// Two unit vectors that make an orthonormal frame with the unit vector n (Duff et al.
@@ -2560,10 +2907,11 @@ template <Scalar T>
 /// A cosine-distributed direction about the unit normal n (Malley's method: a uniform
 /// point on the disk, lifted onto the hemisphere): the diffuse bounce of a photon.
 template <Scalar T>
-[[nodiscard]] inline Vec3<T> cosine_hemisphere(const Vec3<T>& n, Pcg32& rng) noexcept
+[[nodiscard]] inline Vec3<T> cosine_hemisphere(const Vec3<T>& n, Random& rng) noexcept
 {
-    const T r = prism::sqrt(rng.uniform<T>());
-    const T phi = T(2) * pi<T> * rng.uniform<T>();
+    const auto [u, v] = rng.uniform2<T>();
+    const T r = prism::sqrt(u);
+    const T phi = T(2) * pi<T> * v;
     const T x = r * std::cos(phi), y = r * std::sin(phi);
     const T z = prism::sqrt(clamp(T(1) - x * x - y * y, T(0), T(1)));
     const auto [s, t] = orthonormal_frame(n);
@@ -2575,7 +2923,7 @@ template <Scalar T>
 /// by reflectance / p, so the expected power leaving is reflectance times the power
 /// arriving, in every channel. Returns false when the photon is absorbed.
 template <Scalar T>
-[[nodiscard]] inline bool russian_roulette(Rgb<T>& power, const Rgb<T>& reflectance, Pcg32& rng) noexcept
+[[nodiscard]] inline bool russian_roulette(Rgb<T>& power, const Rgb<T>& reflectance, Random& rng) noexcept
 {
     const T p = clamp(max_component(reflectance), T(0), T(1));
     if (!(p > T(0)) || rng.uniform<T>() >= p) return false;
@@ -2589,7 +2937,7 @@ template <Scalar T>
 /// whose throughput has fallen is likely ended; one still carrying much is not, however many
 /// lobes it was drawn through. Returns false when the path ends.
 template <Scalar T>
-[[nodiscard]] inline bool path_roulette(Rgb<T>& throughput, Pcg32& rng) noexcept
+[[nodiscard]] inline bool path_roulette(Rgb<T>& throughput, Random& rng) noexcept
 {
     const T p = std::min(T(1), max_component(throughput));
     if (!(p > T(0)) || !(rng.uniform<T>() < p)) return false;
@@ -6078,7 +6426,7 @@ struct HemisphereGather {
 /// kept for them (the one allocation, per gather: a cache record's); without, nothing
 /// is allocated.
 template <bool Gradients, Scalar T, class Sample>
-[[nodiscard]] HemisphereGather<T> gather_hemisphere(const Vec3<T>& n, int m, int cells_n, Pcg32& rng, Sample&& sample)
+[[nodiscard]] HemisphereGather<T> gather_hemisphere(const Vec3<T>& n, int m, int cells_n, Random& rng, Sample&& sample)
 {
     const auto [t, b] = orthonormal_frame(n);
     const std::size_t count = std::size_t(m) * std::size_t(cells_n);
@@ -6724,7 +7072,7 @@ struct FreeFlight {
 /// phase function it scatters by.
 template <class X>
 concept ScatteringMedium = Medium<X> && requires(const X& medium, const Ray<typename X::scalar_type>& ray, typename X::scalar_type t,
-                                                 const Rgb<typename X::scalar_type>& power, Pcg32& rng) {
+                                                 const Rgb<typename X::scalar_type>& power, Random& rng) {
     requires X::scatters;
     { medium.sample_flight(ray, t, power, rng) } -> std::same_as<FreeFlight<typename X::scalar_type>>;
     { medium.scattering_at(ray.origin) } -> std::same_as<Rgb<typename X::scalar_type>>;
@@ -6947,7 +7295,7 @@ concept Light = requires(const L& light, const Vec3<typename L::scalar_type>& p,
     light.validate();
 } && (requires(const L& light, const PhotonAim<typename L::scalar_type>& aim, typename L::scalar_type u) {
     { light.emit_photon(aim, u, u) } -> std::same_as<EmittedPhoton<typename L::scalar_type>>;
-} || requires(const L& light, const PhotonAim<typename L::scalar_type>& aim, typename L::scalar_type u, Pcg32& rng) {
+} || requires(const L& light, const PhotonAim<typename L::scalar_type>& aim, typename L::scalar_type u, Random& rng) {
     { light.emit_photon(aim, u, u, rng) } -> std::same_as<EmittedPhoton<typename L::scalar_type>>;
 });
 
@@ -6956,7 +7304,7 @@ concept Light = requires(const L& light, const Vec3<typename L::scalar_type>& p,
 /// from `rng`.
 template <Light L>
 [[nodiscard]] EmittedPhoton<typename L::scalar_type> emit_photon(const L& light, const PhotonAim<typename L::scalar_type>& aim,
-                                                                 typename L::scalar_type u, typename L::scalar_type v, Pcg32& rng) noexcept
+                                                                 typename L::scalar_type u, typename L::scalar_type v, Random& rng) noexcept
 {
     if constexpr (requires { light.emit_photon(aim, u, v, rng); }) return light.emit_photon(aim, u, v, rng);
     else return light.emit_photon(aim, u, v);
@@ -6976,7 +7324,7 @@ inline constexpr bool is_at_infinity = requires { requires bool(L::at_infinity);
 /// `shadow(through, colour, rng)`, where through(point) is what a shadow ray to a point of
 /// the light lets through and colour the light's colour at the shading point.
 template <class L>
-inline constexpr bool has_own_shadow = requires(const L& light, const Rgb<typename L::scalar_type>& colour, Pcg32* rng) {
+inline constexpr bool has_own_shadow = requires(const L& light, const Rgb<typename L::scalar_type>& colour, Random* rng) {
     { light.shadow([](const Vec3<typename L::scalar_type>&) { return Rgb<typename L::scalar_type>(); }, colour, rng) }
         -> std::same_as<Rgb<typename L::scalar_type>>;
 };
@@ -8378,9 +8726,10 @@ public:
 
     /// A next direction drawn from the lobe (world), with the lobe's weight and density;
     /// nothing where the lobe draws none or the draw fails the side test.
-    [[nodiscard]] std::optional<LobeSample<T>> sample(Pcg32& rng, Transport mode) const noexcept
+    [[nodiscard]] std::optional<LobeSample<T>> sample(Random& rng, Transport mode) const noexcept
     {
-        const T u0 = rng.uniform<T>(), u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
+        const T u0 = rng.uniform<T>();
+        const auto [u1, u2] = rng.uniform2<T>();
         std::optional<LobeSample<T>> s = lobe_.sample(wo_, u0, u1, u2, mode);
         if (!s) return std::nullopt;
         const Vec3<T> wi = frame_.to_world(s->wi);
@@ -8508,7 +8857,7 @@ template <Transport Mode = Transport::importance, Material M>
 [[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
                                                                                    const Crossing<typename M::scalar_type>& hit,
                                                                                    const Vec3<typename M::scalar_type>& d,
-                                                                                   Rgb<typename M::scalar_type>& power, Pcg32& rng,
+                                                                                   Rgb<typename M::scalar_type>& power, Random& rng,
                                                                                    typename M::scalar_type wavelength_nm = 0,
                                                                                    typename M::scalar_type outside_index = 1,
                                                                                    Lobes lobes = Lobes::all) noexcept
@@ -9840,7 +10189,7 @@ struct WalkVertex {
     const Vec3<T>& last_point; ///< where the path last scattered (or started)
     T last_pdf;               ///< the solid-angle density of the last scattering's non-delta lobe (a diffuse one's cos / pi); 0 after a delta one or at the start
     bool last;                ///< the walk ends after this surface (its depth limit): nothing it scatters is followed
-    Pcg32& rng;               ///< the walk's stream, for a caller that draws at the vertex (a thin lens's point)
+    Random& rng;               ///< the walk's stream, for a caller that draws at the vertex (a thin lens's point)
     T outside_index;          ///< the index of refraction on a transmissive material's outer side (1 for others; glossy_eta)
     int surface_bounces;      ///< the non-delta scatterings other than through frosted glass (a glossy interface)
 
@@ -9881,7 +10230,7 @@ struct WalkMediumVertex {
     const Vec3<T>& last_point; ///< where the path last scattered (or started)
     T last_pdf;               ///< as WalkVertex's
     bool last;                ///< the walk ends after this vertex (its depth limit)
-    Pcg32& rng;               ///< the walk's stream
+    Random& rng;               ///< the walk's stream
     int surface_bounces;      ///< as WalkVertex's: non-delta scatterings but through frosted glass
     const Ray<T>& stretch;    ///< the stretch of medium the flight was drawn over: from where it starts, unit direction
     T stretch_length;         ///< its length (may be infinite)
@@ -9903,7 +10252,7 @@ struct WalkMediumStretch {
     const Rgb<T>& power;      ///< what the path carries entering it
     int diffuse_bounces;      ///< non-delta scatterings so far
     const MediumStack& media; ///< the transmissive objects the path is inside of
-    Pcg32& rng;               ///< the walk's stream
+    Random& rng;               ///< the walk's stream
 };
 
 /// What a walk does where it scatters in a medium when its caller says nothing: it goes on.
@@ -9963,7 +10312,7 @@ struct WalkLimits {
 template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters,
           class OnMedium = IgnoreMedia>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
-                 Rgb<typename SceneT::scalar_type> power, Pcg32& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
+                 Rgb<typename SceneT::scalar_type> power, Random& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
                  OnEmitter&& on_emitter = {}, OnMedium&& on_medium = {}, MediumStack start = {})
 {
     using T = typename SceneT::scalar_type;
@@ -9976,6 +10325,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
     T last_pdf = T(0);
     int medium_bounces = 0; // of the bounces, those in media
     for (int bounce = 0; bounce - medium_bounces <= limits.max_bounces; ++bounce) {
+        rng.bounce(bounce); // each bounce its own block of the sampler's dimensions
         // In the air a path follows the air's curve; inside objects, straight lines.
         Ray<T> segment = ray;
         T path = T(0);
@@ -10015,7 +10365,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                     } else {
                         if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return false;
                     }
-                    const T u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
+                    const auto [u1, u2] = rng.uniform2<T>();
                     const PhaseSample<T> next = medium.phase.sample(d, u1, u2);
                     ray = {p, next.direction};
                     last_point = p;
@@ -10227,7 +10577,7 @@ public:
         : scene_(scene), config_((detail::validate(config), config)), bands_(config.dispersion_bands), air_(air)
     {
         air_.validate();
-        Pcg32 scrambles(config.seed, 0xfeed5eedULL);
+        Random scrambles(config.seed, 0xfeed5eedULL);
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
         // A sphere around everything bounded, the air's medium included where it is
@@ -10297,7 +10647,7 @@ private:
               VisitMedium&& visit_medium = {}) const
     {
         if (emitters.empty() || !(total_power > T(0))) return;
-        Pcg32 rng(config_.seed, 2 * i + (caustic_pass ? 1 : 0));
+        Random rng(config_.seed, 2 * i + (caustic_pass ? 1 : 0));
         const std::uint32_t* scramble = caustic_pass ? caustic_scramble_ : global_scramble_;
         auto [u, v] = sobol02<double>(static_cast<std::uint32_t>(i), scramble[0], scramble[1]);
         // The emitter whose share of [0, 1) holds u; u rescaled within that share.
@@ -11371,7 +11721,7 @@ concept SeesSurfaces = requires(const I& integrator, const Ray<typename I::scala
 
 /// An integrator that splits its radiance into LightParts (whose sum is its radiance).
 template <class I>
-concept SplitsLight = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
+concept SplitsLight = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Random& rng) {
     { integrator.radiance_parts(ray, rng) } -> std::same_as<LightParts<typename I::scalar_type>>;
 };
 
@@ -11655,9 +12005,11 @@ struct Camera {
 } // namespace prism
 
 // ---- prism/render/render.hpp ----
-// render(): camera rays per pixel, tiles dealt to worker threads (core/parallel.hpp), one RNG stream per
-// sample of each pixel; a crop window or a range of the samples renders a part of the
-// image that adds up with the other parts to the whole, bit for bit.
+// render(): camera rays per pixel, tiles dealt to worker threads (core/parallel.hpp), each
+// sample of each pixel drawing its own numbers (core/random.hpp: the sampler's by dimension,
+// then a PCG stream of its own); a crop window or a range of the samples renders a part of
+// the image that adds up with the other parts to the whole, bit for bit, and any prefix of
+// the samples is an unbiased image.
 
 
 #include <algorithm>
@@ -11678,6 +12030,9 @@ struct RenderConfig {
     int width = 512; ///< image width in pixels
     int height = 512; ///< image height in pixels
     int spp = 1;             ///< samples per pixel; 1 samples the pixel centre
+    /// The points the samples draw (core/sampler.hpp): Owen-scrambled Sobol, whose every
+    /// prefix of 2^m samples is stratified, or independent numbers.
+    SamplerKind sampler = SamplerKind::sobol;
     unsigned threads = 0;    ///< worker threads; 0 = all hardware threads
     std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image
     bool progress = true;    ///< report progress on stderr once a render passes one second
@@ -11694,13 +12049,18 @@ struct RenderConfig {
     /// all. Renders of disjoint ranges add up (render_sums, Accumulation) to the render
     /// of their union, bit for bit.
     PassRange passes{};
+    /// > 0: a time budget. The samples (or passes) are taken in rounds, each pixel's
+    /// count doubling, and the render stops at the round that the time per sample so far
+    /// says the budget ends in, having taken [first, first + n) of the range for some n:
+    /// the same bits as a render of that range. 0 (the default): all of them.
+    double seconds = 0;
 };
 
 /// An integrator of the first kind: the radiance along a camera ray, drawing random
 /// numbers from rng (Whitted, PhotonMapper, PathTracer). render() takes config.spp
 /// samples in every pixel of the crop window.
 template <class I>
-concept RayEstimator = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
+concept RayEstimator = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Random& rng) {
     { integrator.radiance(ray, rng) } -> std::same_as<Rgb<typename I::scalar_type>>;
 };
 
@@ -11723,20 +12083,6 @@ concept Integrator = RayEstimator<I> || PassEstimator<I>;
 
 namespace detail {
 
-/// Sub-pixel position of sample s of n: the centre when n = 1 and `centre`; otherwise
-/// jittered in an m x m grid of strata (m = floor(sqrt(n))), any further samples
-/// uniform. The jitter is drawn as float in every precision, so float and double renders
-/// of one seed sample the same positions and differ only by their arithmetic.
-template <Scalar T>
-[[nodiscard]] inline std::pair<T, T> pixel_sample(int s, int n, Pcg32& rng, bool centre = true) noexcept
-{
-    if (n == 1 && centre) return {T(0.5), T(0.5)};
-    const int m = static_cast<int>(std::sqrt(static_cast<double>(n)));
-    const T u = T(rng.uniform<float>()), v = T(rng.uniform<float>());
-    if (s < m * m) return {(T(s % m) + u) / T(m), (T(s / m) + v) / T(m)};
-    return {u, v};
-}
-
 /// The seed of a pixel's sample s: the render's seed moved by a bijective 64-bit hash of
 /// s (MurmurHash3's finaliser, which maps 0 to 0), so each sample starts its pixel's
 /// stream at its own far-apart place and sample s is the same whichever samples are
@@ -11749,6 +12095,30 @@ template <Scalar T>
     s *= 0xc4ceb9fe1a85ec53ULL;
     s ^= s >> 33;
     return seed + s;
+}
+
+/// Sample s of a pixel: where in the pixel its ray starts, its point on the lens, and the
+/// numbers its estimate goes on to draw (from its path's first bounce on).
+template <Scalar T>
+struct CameraSample {
+    std::array<T, 2> footprint; ///< in the pixel, [0, 1)^2
+    std::array<T, 2> lens;      ///< on the lens, [0, 1)^2 (a pinhole reads none)
+    Random rng;                 ///< the rest of the sample's numbers
+};
+
+/// Sample s of pixel `pixel` (y * width + x) of a render: the footprint and the lens from
+/// the sampler's pairs 0 and 1, whatever the camera (the footprint the pixel's centre when
+/// spp = 1 and config.single_sample_at_centre). The footprint is drawn in float in every
+/// precision, so float and double renders of one seed sample the same positions.
+template <Scalar T>
+[[nodiscard]] constexpr CameraSample<T> camera_sample(const RenderConfig& config, std::uint64_t pixel, std::uint64_t s) noexcept
+{
+    Random rng(Sampler(config.sampler, config.seed, pixel, std::uint32_t(s)), Pcg32(sample_seed(config.seed, s), pixel));
+    const std::array<float, 2> footprint = rng.uniform2<float>();
+    const std::array<T, 2> lens = rng.uniform2<T>();
+    rng.bounce(0);
+    if (config.spp == 1 && config.single_sample_at_centre) return {{T(0.5), T(0.5)}, lens, rng};
+    return {{T(footprint[0]), T(footprint[1])}, lens, rng};
 }
 
 /// The window a config renders, checked against its image.
@@ -11771,6 +12141,51 @@ template <Scalar T>
         throw_invalid("RenderConfig passes [", config.passes.first, ", ", config.passes.last, ") must be a non-empty range of the spp = ", config.spp,
                       " samples");
     return config.passes;
+}
+
+/// The config's time budget, checked.
+[[nodiscard]] inline double render_seconds(const RenderConfig& config)
+{
+    if (!(config.seconds >= 0.0 && std::isfinite(config.seconds))) throw_invalid("RenderConfig seconds must be finite and >= 0, got ", config.seconds);
+    return config.seconds;
+}
+
+/// Take the config's samples in rounds: add_round(part) adds the samples part.passes
+/// to the sums, then on_round() is told how many of the range have been taken. The first
+/// round takes one sample, each next as many as were taken before it (so a stop falls on
+/// a power of two, where a Sobol sampler's samples are stratified), and with a budget
+/// (config.seconds) none that the time per sample so far says would end past it (the
+/// last round may be cut short to fit). Returns the samples taken.
+template <class AddRound, class OnRound>
+std::uint64_t render_in_rounds(const RenderConfig& config, AddRound&& add_round, OnRound&& on_round)
+{
+    const PassRange range = render_passes(config);
+    const double budget = render_seconds(config);
+    const auto start = std::chrono::steady_clock::now();
+    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    ProgressLine line("rendering");
+    RenderConfig part = config;
+    part.progress = false;
+    std::uint64_t taken = 0;
+    while (taken < range.count()) {
+        std::uint64_t n = std::min(std::max<std::uint64_t>(taken, 1), range.count() - taken);
+        if (budget > 0.0 && taken > 0) {
+            const double spent = elapsed(), per_sample = spent / double(taken);
+            if (spent >= budget) break;
+            const double fits = std::floor((budget - spent) / per_sample);
+            if (fits < 1.0) break;
+            if (fits < double(n)) n = std::uint64_t(fits);
+        }
+        part.passes = {range.first + taken, range.first + taken + n};
+        add_round(part);
+        taken += n;
+        on_round(taken);
+        if (config.progress)
+            line.update(elapsed(), formatted("%llu of %llu samples (%.1f s)", static_cast<unsigned long long>(taken),
+                                             static_cast<unsigned long long>(range.count()), elapsed()));
+    }
+    if (config.progress) line.finish(elapsed(), formatted("%llu samples (%.1f s)", static_cast<unsigned long long>(taken), elapsed()));
+    return taken;
 }
 
 /// Add a radiance sample to sums [first, first + 3): radiance is never negative, so a
@@ -11844,15 +12259,10 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
                 std::array<ExactSum, N> sum{};
                 std::size_t rejected = 0;
                 for (std::uint64_t s = samples.first; s < samples.last; ++s) {
-                    Pcg32 rng(sample_seed(config.seed, s), pixel);
-                    const auto [dx, dy] = pixel_sample<T>(int(s), config.spp, rng, config.single_sample_at_centre);
-                    if (rays.thin_lens()) {
-                        // The lens point from the sample's own stream, after the pixel's (a pinhole draws none).
-                        const T u = rng.uniform<T>(), v = rng.uniform<T>();
-                        rejected += sample(rays.ray(T(x) + dx, T(y) + dy, u, v), rng, sum);
-                    } else {
-                        rejected += sample(rays.ray(T(x) + dx, T(y) + dy), rng, sum);
-                    }
+                    CameraSample<T> c = camera_sample<T>(config, pixel, s);
+                    const Ray<T> ray = rays.thin_lens() ? rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1], c.lens[0], c.lens[1])
+                                                        : rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1]);
+                    rejected += sample(ray, c.rng, sum);
                 }
                 store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
                 if (rejected != 0) rejected_values.fetch_add(rejected, std::memory_order_relaxed);
@@ -11862,6 +12272,93 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
     if (config.progress) say_rejected(rejected_values.load());
 }
 
+/// Check that `sums` holds the config's window of its image, with `channels` channels.
+inline void check_sums(const Accumulation& sums, const RenderConfig& config, std::size_t channels, const char* who)
+{
+    const PixelWindow window = render_window(config);
+    if (sums.width() != config.width || sums.height() != config.height || !sums.window().contains(window))
+        throw_invalid(who, ": the Accumulation (", sums.width(), " x ", sums.height(), ", window [", sums.window().x0, ", ", sums.window().x1, ") x [",
+                      sums.window().y0, ", ", sums.window().y1, ")) does not hold the render's window");
+    if (sums.channels().size() != channels) throw_invalid(who, " renders ", channels, " channels, the Accumulation has ", sums.channels().size());
+}
+
+/// Add the config's samples (or passes) of R, G, B to `sums`, all in one go.
+template <Integrator I>
+void add_samples(Accumulation& sums, const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
+{
+    using T = typename I::scalar_type;
+    if constexpr (RayEstimator<I>) {
+        render_pixels<3>(
+            camera, config,
+            [&](const Ray<T>& ray, Random& rng, std::array<ExactSum, 3>& sum) { return add_radiance(sum, 0, integrator.radiance(ray, rng)); },
+            [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+                sums.add(x, y, sum, weight);
+                if (rejected != 0) sums.reject(rejected);
+            });
+    } else {
+        (void)render_passes(config);
+        const std::size_t before = sums.rejected();
+        integrator.add_passes(sums, camera, config);
+        if (config.progress) say_rejected(sums.rejected() - before);
+    }
+}
+
+/// Add the config's samples with the integrator's layers (render_layers) to `sums`, all in one go.
+template <RayEstimator I>
+void add_layers(Accumulation& sums, const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
+{
+    using T = typename I::scalar_type;
+    constexpr std::size_t surface = SeesSurfaces<I> ? 8 : 0, parts = SplitsLight<I> ? 9 : 0, n = 3 + surface + parts;
+    render_pixels<n>(
+        camera, config,
+        [&](const Ray<T>& ray, Random& rng, std::array<ExactSum, n>& sum) {
+            std::size_t rejected = 0;
+            if constexpr (SplitsLight<I>) {
+                const LightParts<T> light = integrator.radiance_parts(ray, rng);
+                rejected += add_radiance(sum, 0, light.sum());
+                rejected += add_radiance(sum, 3 + surface, light.direct);
+                rejected += add_radiance(sum, 6 + surface, light.caustic);
+                rejected += add_radiance(sum, 9 + surface, light.indirect);
+            } else {
+                rejected += add_radiance(sum, 0, integrator.radiance(ray, rng));
+            }
+            if constexpr (SeesSurfaces<I>) {
+                if (const auto seen = first_surface(integrator.scene(), integrator.air(), ray)) {
+                    rejected += add_value(sum, 3, 1.0);
+                    rejected += add_radiance(sum, 4, seen->albedo);
+                    for (int c = 0; c < 3; ++c) rejected += add_value(sum, 7 + std::size_t(c), double(seen->normal[c]));
+                    rejected += add_value(sum, 10, double(seen->distance));
+                }
+            }
+            return rejected;
+        },
+        [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+            sums.add(x, y, sum, weight);
+            if (rejected != 0) sums.reject(rejected);
+        });
+}
+
+/// Add the config's samples to `sums` by add(part): in one go, or with a time budget in
+/// rounds (render_in_rounds), on_round(sums) told of each.
+template <class Add, class OnRound>
+void add_in_rounds(Accumulation& sums, const RenderConfig& config, bool rounds, Add&& add, OnRound&& on_round)
+{
+    if (!rounds && render_seconds(config) == 0.0) {
+        add(config);
+        on_round(static_cast<const Accumulation&>(sums));
+        return;
+    }
+    const std::size_t before = sums.rejected();
+    (void)render_in_rounds(config, add, [&](std::uint64_t) { on_round(static_cast<const Accumulation&>(sums)); });
+    if (config.progress) say_rejected(sums.rejected() - before);
+}
+
+/// What a render without a preview does after each round: nothing.
+struct NoPreview {
+    /// Does nothing.
+    constexpr void operator()(const Accumulation&) const noexcept {}
+};
+
 } // namespace detail
 
 /// Render a part of an image into `sums`: the config's crop window (which `sums`'
@@ -11870,27 +12367,9 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
 template <Integrator I>
 void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
 {
-    const PixelWindow window = detail::render_window(config);
-    if (sums.width() != config.width || sums.height() != config.height || !sums.window().contains(window))
-        detail::throw_invalid("render_into: the Accumulation (", sums.width(), " x ", sums.height(), ", window [", sums.window().x0, ", ",
-                              sums.window().x1, ") x [", sums.window().y0, ", ", sums.window().y1, ")) does not hold the render's window");
-    if (sums.channels().size() != 3) detail::throw_invalid("render_into renders R, G, B only, the Accumulation has ", sums.channels().size(), " channels");
-    using T = typename I::scalar_type;
-    if constexpr (RayEstimator<I>) {
-        detail::render_pixels<3>(
-            camera, config,
-            [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
-            [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
-                sums.add(x, y, sum, weight);
-                if (rejected != 0) sums.reject(rejected);
-            });
-    } else {
-        (void)detail::render_passes(config);
-        (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
-        const std::size_t before = sums.rejected();
-        integrator.add_passes(sums, camera, config);
-        if (config.progress) detail::say_rejected(sums.rejected() - before);
-    }
+    detail::check_sums(sums, config, 3, "render_into");
+    (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
+    detail::add_in_rounds(sums, config, false, [&](const RenderConfig& part) { detail::add_samples(sums, camera, integrator, part); }, detail::NoPreview{});
 }
 
 /// A part of an image as exact sums (its crop window, its samples): add the parts of a
@@ -11912,66 +12391,64 @@ template <Integrator I>
 template <RayEstimator I>
 [[nodiscard]] Accumulation render_layers(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
-    using T = typename I::scalar_type;
-    constexpr std::size_t surface = SeesSurfaces<I> ? 8 : 0, parts = SplitsLight<I> ? 9 : 0, n = 3 + surface + parts;
+    (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
     Accumulation sums(config.width, config.height, detail::render_window(config), layer_channels<I>());
-    detail::render_pixels<n>(
-        camera, config,
-        [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, n>& sum) {
-            std::size_t rejected = 0;
-            if constexpr (SplitsLight<I>) {
-                const LightParts<T> light = integrator.radiance_parts(ray, rng);
-                rejected += detail::add_radiance(sum, 0, light.sum());
-                rejected += detail::add_radiance(sum, 3 + surface, light.direct);
-                rejected += detail::add_radiance(sum, 6 + surface, light.caustic);
-                rejected += detail::add_radiance(sum, 9 + surface, light.indirect);
-            } else {
-                rejected += detail::add_radiance(sum, 0, integrator.radiance(ray, rng));
-            }
-            if constexpr (SeesSurfaces<I>) {
-                if (const auto seen = first_surface(integrator.scene(), integrator.air(), ray)) {
-                    rejected += detail::add_value(sum, 3, 1.0);
-                    rejected += detail::add_radiance(sum, 4, seen->albedo);
-                    for (int c = 0; c < 3; ++c) rejected += detail::add_value(sum, 7 + std::size_t(c), double(seen->normal[c]));
-                    rejected += detail::add_value(sum, 10, double(seen->distance));
-                }
-            }
-            return rejected;
-        },
-        [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
-            sums.add(x, y, sum, weight);
-            if (rejected != 0) sums.reject(rejected);
-        });
+    detail::add_in_rounds(sums, config, false, [&](const RenderConfig& part) { detail::add_layers(sums, camera, integrator, part); }, detail::NoPreview{});
     return sums;
 }
 
-/// Render an image: the config's crop window (the whole image by default), each pixel
-/// the mean of its samples. The same scene, seed and spp give the same bits for any
-/// thread count, crop or split of the samples: every sample draws from its own random
-/// stream, and a pixel's samples are summed exactly (Accumulation).
+/// A part of an image from an integrator of passes, with its layers: R, G, B only
+/// (render_sums).
 template <PassEstimator I>
 [[nodiscard]] Accumulation render_layers(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
     return render_sums(camera, integrator, config);
 }
 
+/// Render a part of an image progressively: its samples (or passes) in rounds, each
+/// pixel's count doubling (and with config.seconds, within the budget), calling
+/// preview(sums) after each round with the sums so far, whose image() is the mean of the
+/// samples taken: with a Sobol sampler a converging picture, unbiased at every round.
+/// Returns the sums, with layers as render_layers'. The bits of a render of the samples
+/// it took.
+template <Integrator I, class Preview>
+    requires std::invocable<Preview&, const Accumulation&>
+[[nodiscard]] Accumulation render_progressive(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config, Preview&& preview)
+{
+    (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
+    if constexpr (RayEstimator<I>) {
+        Accumulation sums(config.width, config.height, detail::render_window(config), layer_channels<I>());
+        detail::add_in_rounds(sums, config, true, [&](const RenderConfig& part) { detail::add_layers(sums, camera, integrator, part); }, preview);
+        return sums;
+    } else {
+        Accumulation sums(config.width, config.height, detail::render_window(config));
+        detail::add_in_rounds(sums, config, true, [&](const RenderConfig& part) { detail::add_samples(sums, camera, integrator, part); }, preview);
+        return sums;
+    }
+}
+
 /// Render an image: the config's crop window (the whole image by default), each pixel
-/// the mean of its samples (or passes).
+/// the mean of its passes.
 template <PassEstimator I>
 [[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
     return render_sums(camera, integrator, config).image();
 }
 
+/// Render an image: the config's crop window (the whole image by default), each pixel
+/// the mean of its samples. The same scene, seed and spp give the same bits for any
+/// thread count, crop or split of the samples: every sample draws its own numbers, and a
+/// pixel's samples are summed exactly (Accumulation).
 template <RayEstimator I>
 [[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
+    if (detail::render_seconds(config) > 0.0) return render_sums(camera, integrator, config).image();
     const PixelWindow window = detail::render_window(config);
     Film film(window.width(), window.height());
     using T = typename I::scalar_type;
     detail::render_pixels<3>(
         camera, config,
-        [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
+        [&](const Ray<T>& ray, Random& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
         [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
             film.set(x - window.x0, y - window.y0, Rgb<float>(detail::mean(sum[0], weight), detail::mean(sum[1], weight), detail::mean(sum[2], weight)));
             if (rejected != 0) film.count_rejected(rejected);
@@ -12442,7 +12919,7 @@ public:
     /// over its area), leaving cosine-distributed about its normal (either side of a
     /// two-sided one), or, aimed at a target, uniform over the cone toward it, weighted by
     /// L cos A solid angle / (chance of the emitter * aim.power). `rng` gives the direction.
-    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v, Pcg32& rng) const noexcept
+    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v, Random& rng) const noexcept
     {
         const auto& table = scene_->emitter_table_;
         if (table.keys.empty()) return {{Vec3<T>(T(0)), Vec3<T>(T(0), T(0), T(1))}, Rgb<T>(T(0))};
@@ -12478,7 +12955,7 @@ public:
                 // from inside it), weighted by the radiance the emitter sends along it.
                 const ConeToward<T> cone = ConeToward<T>::of(s.point, *aim.target);
                 const T omega = cone.solid_angle();
-                const T u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
+                const auto [u1, u2] = rng.uniform2<T>();
                 const Vec3<T> w = cone.cos_half_angle <= T(-1) ? uniform_sphere(u1, u2) : uniform_cone(cone.axis, cone.cos_half_angle, u1, u2);
                 const T cos = dot(w, s.normal);
                 const T emitting = two_sided ? std::abs(cos) : std::max(cos, T(0));
@@ -13331,10 +13808,10 @@ public:
             typename CameraRays<T>::Projection at;
             Vec3<T> to_camera;
         };
-        const auto look_from = [&](const Vec3<T>& p, Pcg32& rng) -> std::optional<Seen> {
+        const auto look_from = [&](const Vec3<T>& p, Random& rng) -> std::optional<Seen> {
             Vec3<T> eye = rays.origin;
             if (rays.thin_lens()) {
-                const T u = rng.template uniform<T>(), v = rng.template uniform<T>();
+                const auto [u, v] = rng.template uniform2<T>();
                 eye = rays.lens_point(u, v);
             }
             const auto seen = rays.thin_lens() ? rays.project(p, eye) : rays.project(p);
@@ -13474,6 +13951,7 @@ Overload(F...) -> Overload<F...>;
 // Light arriving from each light at a surface point, by shadow rays: shared by the integrators.
 
 
+#include <array>
 #include <utility>
 
 namespace prism {
@@ -13487,7 +13965,7 @@ inline constexpr T shadow_epsilon = T(1e-4);
 /// `grid` x `grid` stratified samples, each jittered within its stratum by `rng` (at the
 /// strata's centres without one), each carrying 1 / grid^2 of the estimate.
 struct LightSampling {
-    Pcg32* rng = nullptr; ///< jitters each sample in its stratum; null: stratum centres
+    Random* rng = nullptr; ///< jitters each sample in its stratum; null: stratum centres
     int grid = 1;         ///< samples per side of the unit square
 };
 
@@ -13510,8 +13988,7 @@ void for_each_light_sample(const L& light, const Vec3<T>& p, const LightSampling
         const T side = T(1) / T(n_side), share = side * side;
         for (int i = 0; i < n_side; ++i)
             for (int j = 0; j < n_side; ++j) {
-                const T ju = sampling.rng ? sampling.rng->template uniform<T>() : T(0.5);
-                const T jv = sampling.rng ? sampling.rng->template uniform<T>() : T(0.5);
+                const auto [ju, jv] = sampling.rng ? sampling.rng->template uniform2<T>() : std::array<T, 2>{T(0.5), T(0.5)};
                 LightSample<T> s = light.sample(p, Vec2<T>((T(i) + ju) * side, (T(j) + jv) * side));
                 s.irradiance *= share;
                 g(s);
@@ -13695,7 +14172,7 @@ public:
     /// The radiance along a camera ray: light at every diffuse vertex by shadow rays, and
     /// the background where a path of specular bounces only leaves the scene (the
     /// background is seen, as in Whitted, but lights nothing).
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Random& rng) const noexcept
     {
         Rgb<T> sum{T(0)};
         const LightSampling sampling{&rng, config_.area_light_grid};
@@ -14111,7 +14588,7 @@ public:
             std::vector<IrradianceRecord<T>> records(candidates.size());
             detail::parallel_for(candidates.size(), render.threads, [&](std::size_t i) {
                 const Candidate& c = candidates[i];
-                Pcg32 rng(render.seed ^ 0x1cac4eULL, c.stream);
+                Random rng(render.seed ^ 0x1cac4eULL, c.stream);
                 const int m = std::max(1, int(std::lround(std::sqrt(T(settings.rays) / pi<T>))));
                 const int cells_n = std::max(1, settings.rays / m);
                 IrradianceRecord<T> r{c.hit.point, c.n, gather<true>(c.hit, c.n, rng, scene_->media_at(c.hit.point), m, cells_n), T(0)};
@@ -14130,11 +14607,11 @@ public:
     }
 
     /// The radiance along a camera ray: direct, caustic and indirect light summed.
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return radiance_parts(ray, rng).sum(); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Random& rng) const noexcept { return radiance_parts(ray, rng).sum(); }
 
     /// The radiance along a camera ray by where its light came from last: the lights by
     /// shadow rays (and the background), the caustic map, the indirect estimate.
-    [[nodiscard]] LightParts<T> radiance_parts(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), scene_->media_at(ray.origin)); }
+    [[nodiscard]] LightParts<T> radiance_parts(const Ray<T>& ray, Random& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), scene_->media_at(ray.origin)); }
 
     /// The scene and the air its camera rays start in (render_layers' surface layers).
     [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
@@ -14172,7 +14649,7 @@ private:
 
     /// Radiance along the ray for light of one wavelength (nanometres), or of all (0), in
     /// the transmissive objects `media` (medium/nesting.hpp).
-    [[nodiscard]] LightParts<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength, const MediumStack& media) const noexcept
+    [[nodiscard]] LightParts<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Random& rng, T wavelength, const MediumStack& media) const noexcept
     {
         Ray<T> segment = ray;
         if constexpr (has_media) {
@@ -14254,7 +14731,7 @@ private:
     }
 
     template <class M>
-    [[nodiscard]] LightParts<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight, Pcg32& rng,
+    [[nodiscard]] LightParts<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight, Random& rng,
                                       T wavelength, const MediumStack& media) const noexcept
     {
         const Crossing<T>& hit = h.crossing;
@@ -14347,7 +14824,7 @@ private:
 
     /// Irradiance from the lights by shadow rays (glass opaque), or by what the photons
     /// say about visibility where they agree.
-    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, Pcg32& rng) const noexcept
+    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, Random& rng) const noexcept
     {
         return direct(hit, rng, [](const Vec3<T>&) { return Rgb<T>(T(1)); });
     }
@@ -14355,7 +14832,7 @@ private:
     /// The same, each light sample arriving from wi weighed by `weigh(wi)` (a glossy
     /// lobe's BSDF: then the radiance it reflects).
     template <class Weigh>
-    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, Pcg32& rng, Weigh&& weigh) const noexcept
+    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, Random& rng, Weigh&& weigh) const noexcept
     {
         Rgb<T> irradiance{T(0)};
         const LightSampling sampling{&rng, config_.area_light_grid};
@@ -14429,7 +14906,7 @@ private:
     /// they scatter in the fog about it); from a surface in the air, they follow the air's
     /// curve.
     template <bool Gradients = false>
-    [[nodiscard]] HemisphereGather<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Pcg32& rng, const MediumStack& media, int m, int cells_n) const
+    [[nodiscard]] HemisphereGather<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Random& rng, const MediumStack& media, int m, int cells_n) const
     {
         return gather_hemisphere<Gradients, T>(n, m, cells_n, rng, [&](const Vec3<T>& direction) {
             std::pair<Rgb<T>, T> found{Rgb<T>(T(0)), infinity<T>};
@@ -14482,7 +14959,7 @@ private:
     /// global map gives its radiance (global_radiance). Draws of the lobe's delta part
     /// count nothing here: the caller follows that part.
     template <class Lobe>
-    [[nodiscard]] Rgb<T> gather_glossy(const GlossyAt<Lobe>& lobe, const Crossing<T>& hit, Pcg32& rng, const MediumStack& media) const
+    [[nodiscard]] Rgb<T> gather_glossy(const GlossyAt<Lobe>& lobe, const Crossing<T>& hit, Random& rng, const MediumStack& media) const
     {
         Rgb<T> sum{T(0)};
         const auto at_vertex = [&]<class M>(const M& material, const WalkVertex<T>& at) {
@@ -14881,7 +15358,7 @@ public:
     /// Radiance arriving along the ray (its direction must be unit length); `rng` jitters
     /// the samples of area lights and the points single scattering is marched at
     /// (nothing else is random).
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Random& rng) const noexcept
     {
         if constexpr (SceneT::has_lights_with_extent || has_media) return trace(ray, 0, Rgb<T>(T(1)), T(0), scene_->media_at(ray.origin), false, &rng);
         else return (void)rng, trace(ray, 0, Rgb<T>(T(1)), T(0), {}, false);
@@ -14889,7 +15366,7 @@ public:
     /// Radiance arriving along the ray, with area lights sampled from a fixed stream.
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray) const noexcept
     {
-        Pcg32 rng(0, 0);
+        Random rng(0, 0);
         return radiance(ray, rng);
     }
 
@@ -14905,11 +15382,11 @@ private:
     // Whitted Private Methods
 
     /// The stream a recursion carries (none: no light with extent to jitter).
-    [[nodiscard]] static Pcg32* stream_of() noexcept { return nullptr; }
-    [[nodiscard]] static Pcg32* stream_of(Pcg32* rng) noexcept { return rng; }
+    [[nodiscard]] static Random* stream_of() noexcept { return nullptr; }
+    [[nodiscard]] static Random* stream_of(Random* rng) noexcept { return rng; }
 
     // The recursion carries the stream that jitters area lights' samples (`jitter`: a
-    // Pcg32*) only where the scene has lights with extent (area, environment): GCC optimises a recursion that
+    // Random*) only where the scene has lights with extent (area, environment): GCC optimises a recursion that
     // carries none to less code, 7 % faster to compile.
 
     /// Whether the scene or its air holds a medium that scatters.
@@ -15063,7 +15540,7 @@ private:
             if (inside.empty()) return Rgb<T>(T(0));
             t0 = inside.min, t1 = inside.max;
         }
-        Pcg32* rng = stream_of(jitter...);
+        Random* rng = stream_of(jitter...);
         const LightSampling sampling{rng, config_.area_light_grid};
         const T step = (t1 - t0) / T(config_.march_steps);
         Rgb<T> marched{T(0)};
@@ -15273,11 +15750,11 @@ struct EnvironmentLight {
 
     /// A photon from a direction uniform over the sphere (from `rng`), through the point
     /// (u, v) of the disk facing it, upstream of everything bounded.
-    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v, Pcg32& rng) const noexcept
+    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v, Random& rng) const noexcept
     {
         const BoundingSphere<T>& scene = *aim.scene;
         const BoundingSphere<T>& sphere = aim.target ? *aim.target : scene;
-        const T a = rng.uniform<T>(), b = rng.uniform<T>();
+        const auto [a, b] = rng.uniform2<T>();
         const Vec3<T> travel = -uniform_sphere(a, b);
         const T upstream = length(sphere.center - scene.center) + scene.radius + sphere.radius;
         return {{uniform_disk(sphere.center - upstream * travel, travel, sphere.radius, u, v), travel}};
@@ -15454,11 +15931,11 @@ public:
     /// A photon from a direction drawn as sample() draws it (from `rng`), through the point
     /// (u, v) of the disk facing it, upstream of everything bounded; weighted by L / pdf
     /// over its mean, the radiance integrated over the sphere.
-    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v, Pcg32& rng) const noexcept
+    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v, Random& rng) const noexcept
     {
         const BoundingSphere<T>& scene = *aim.scene;
         const BoundingSphere<T>& sphere = aim.target ? *aim.target : scene;
-        const T a = rng.uniform<T>(), b = rng.uniform<T>();
+        const auto [a, b] = rng.uniform2<T>();
         const LightSample<T> from = sample(sphere.center, {a, b});
         const Vec3<T> travel = -from.wi;
         const T upstream = length(sphere.center - scene.center) + scene.radius + sphere.radius;
@@ -15655,7 +16132,7 @@ struct PointGridLight {
     /// `colour` is the light's colour at p (the irradiance over pi), against which POV-Ray's
     /// 0.1 is measured; `rng` jitters the points (jitter only; may be null otherwise).
     template <class Through>
-    [[nodiscard]] Rgb<T> shadow(Through&& through, const Rgb<T>& colour, Pcg32* rng) const noexcept
+    [[nodiscard]] Rgb<T> shadow(Through&& through, const Rgb<T>& colour, Random* rng) const noexcept
     {
         Grid grid; // each value is written before it is read (traced says which)
         return region(grid, std::forward<Through>(through), colour, rng, 0, 0, size1 - 1, size2 - 1, 0);
@@ -15688,14 +16165,15 @@ private:
 
     /// What grid point (u, v) lets through, traced once.
     template <class Through>
-    [[nodiscard]] const Rgb<T>& point(Grid& grid, Through& through, Pcg32* rng, int u, int v) const noexcept
+    [[nodiscard]] const Rgb<T>& point(Grid& grid, Through& through, Random* rng, int u, int v) const noexcept
     {
         const std::size_t k = std::size_t(u) * std::size_t(size2) + std::size_t(v);
         if (!grid.traced[k]) {
             T ju = T(u), jv = T(v);
             if (jitter && rng) {
-                ju += rng->uniform<T>() - T(0.5);
-                jv += rng->uniform<T>() - T(0.5);
+                const auto [du, dv] = rng->template uniform2<T>();
+                ju += du - T(0.5);
+                jv += dv - T(0.5);
             }
             Vec3<T> at = light.position;
             if (size1 > 1) at += axis1 * (ju / T(size1 - 1) - T(0.5));
@@ -15708,7 +16186,7 @@ private:
 
     /// The mean over the region [u1, u2] x [v1, v2], as POV-Ray takes it.
     template <class Through>
-    [[nodiscard]] Rgb<T> region(Grid& grid, Through&& through, const Rgb<T>& colour, Pcg32* rng, int u1, int v1, int u2, int v2, int level) const noexcept
+    [[nodiscard]] Rgb<T> region(Grid& grid, Through&& through, const Rgb<T>& colour, Random* rng, int u1, int v1, int u2, int v2, int level) const noexcept
     {
         const Rgb<T> corner[4] = {point(grid, through, rng, u1, v1), point(grid, through, rng, u2, v1), point(grid, through, rng, u1, v2),
                                   point(grid, through, rng, u2, v2)};
@@ -18784,7 +19262,7 @@ struct Fog {
     /// Where a walker along `ray` (unit direction, in the fog from its origin) carrying
     /// `power` next scatters before `t_max` (which may be infinite), or that it reaches
     /// t_max, and the weight its power takes either way.
-    [[nodiscard]] FreeFlight<T> sample_flight(const Ray<T>& ray, T t_max, const Rgb<T>& power, Pcg32& rng) const noexcept
+    [[nodiscard]] FreeFlight<T> sample_flight(const Ray<T>& ray, T t_max, const Rgb<T>& power, Random& rng) const noexcept
     {
         (void)ray;
         const Rgb<T> sigma = extinction();
@@ -19046,7 +19524,7 @@ public:
 
     /// An unbiased estimate of the transmittance along `ray` (unit direction) from its
     /// origin to t_max (may be infinite), by residual ratio tracking with `rng`.
-    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max, Pcg32& rng) const noexcept
+    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max, Random& rng) const noexcept
     {
         Rgb<T> tr{T(1)};
         const Rgb<T> sigma_t = absorption_ + scattering_;
@@ -19079,14 +19557,14 @@ public:
     /// direction and t_max): the same segment always gives the same estimate.
     [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
     {
-        Pcg32 rng = stream_of(ray, t_max);
+        Random rng = stream_of(ray, t_max);
         return transmittance(ray, t_max, rng);
     }
 
     /// Where a walker along `ray` (unit direction, from its origin) carrying `power` next
     /// scatters before t_max (may be infinite), or that it reaches t_max, and the weight
     /// its power takes either way: spectral tracking (see the file's comment).
-    [[nodiscard]] FreeFlight<T> sample_flight(const Ray<T>& ray, T t_max, const Rgb<T>& power, Pcg32& rng) const noexcept
+    [[nodiscard]] FreeFlight<T> sample_flight(const Ray<T>& ray, T t_max, const Rgb<T>& power, Random& rng) const noexcept
     {
         const Rgb<T> sigma_t = absorption_ + scattering_;
         const T carried = power.x + power.y + power.z;
@@ -19145,7 +19623,7 @@ private:
     }
 
     /// A stream from the bits of a segment (splitmix64 over them).
-    [[nodiscard]] static Pcg32 stream_of(const Ray<T>& ray, T t_max) noexcept
+    [[nodiscard]] static Random stream_of(const Ray<T>& ray, T t_max) noexcept
     {
         std::uint64_t h = 0x9e3779b97f4a7c15ULL;
         const auto mix = [&](T value) {
@@ -19156,7 +19634,7 @@ private:
         };
         for (int a = 0; a < 3; ++a) mix(ray.origin[a]), mix(ray.direction[a]);
         mix(t_max);
-        return Pcg32(h, h >> 1);
+        return Random(h, h >> 1);
     }
 
     Field field_;

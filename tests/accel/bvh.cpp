@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Bvh against brute force: the same nearest hit, at the same t, for every ray.
 #include <prism/accel/bvh.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/core/sampling.hpp>
 
 #include <doctest/doctest.h>
@@ -90,7 +90,7 @@ std::vector<Aabb<T>> boxes_of(const std::vector<Ball<T>>& balls)
 }
 
 template <class T>
-std::vector<Ball<T>> random_balls(int n, Pcg32& rng, T spread, T size)
+std::vector<Ball<T>> random_balls(int n, Random& rng, T spread, T size)
 {
     std::vector<Ball<T>> balls;
     for (int i = 0; i < n; ++i) {
@@ -103,13 +103,13 @@ std::vector<Ball<T>> random_balls(int n, Pcg32& rng, T spread, T size)
 /// Rays of every kind: from inside the cloud, from far away (1e4 times its size),
 /// axis-aligned, and with a denormal component.
 template <class T>
-Vec3<T> random_point_in(Pcg32& rng, T half_size)
+Vec3<T> random_point_in(Random& rng, T half_size)
 {
     return (Vec3<T>{rng.uniform<T>(), rng.uniform<T>(), rng.uniform<T>()} * T(2) - Vec3<T>(T(1))) * half_size;
 }
 
 template <class T>
-Ray<T> random_ray(Pcg32& rng, T spread, int kind)
+Ray<T> random_ray(Random& rng, T spread, int kind)
 {
     const Vec3<T> target = (Vec3<T>{rng.uniform<T>(), rng.uniform<T>(), rng.uniform<T>()} - Vec3<T>(T(0.5))) * spread;
     switch (kind % 4) {
@@ -135,7 +135,7 @@ Ray<T> random_ray(Pcg32& rng, T spread, int kind)
 
 TEST_CASE_TEMPLATE("the node test keeps every box Aabb::may_cross keeps, and little more", T, float, double)
 {
-    Pcg32 rng(11u, 3u);
+    Random rng(11u, 3u);
     int culled = 0, crossed = 0, extra = 0;
     for (int i = 0; i < 200000; ++i) {
         const T scale = (i / 4) % 4 == 3 ? T(1e5) : T(10); // and far from the origin
@@ -166,7 +166,7 @@ template <class T, int W>
 void check_node_test()
 {
     CAPTURE(W);
-    Pcg32 rng(2u, 8u);
+    Random rng(2u, 8u);
     int mismatches = 0, crossed = 0;
     for (int i = 0; i < 50000; ++i) {
         const T scale = i % 4 == 3 ? T(1e5) : T(10);
@@ -212,7 +212,7 @@ TEST_CASE_TEMPLATE("the node test in SIMD is the one-box test in every lane, bit
 
 TEST_CASE_TEMPLATE("the nearest hit through the Bvh is brute force's, same ball and same t, for every ray (4 and 8 wide)", T, float, double)
 {
-    Pcg32 rng(5u, 9u);
+    Random rng(5u, 9u);
     for (const int n : {1, 2, 7, 100, 3000}) {
         const auto balls = random_balls<T>(n, rng, T(10), T(3) / std::cbrt(T(n)));
         for (const BvhSplit split : {BvhSplit::binned, BvhSplit::sweep}) {
@@ -238,7 +238,7 @@ TEST_CASE_TEMPLATE("the nearest hit through the Bvh is brute force's, same ball 
 TEST_CASE_TEMPLATE("an any-hit query stops at its first hit and agrees with brute force on whether there is one", Tree, Bvh<float, 4>, Bvh<float, 8>)
 {
     // Nearest first (traverse) and in no order (any_in_leaf_order, a shadow ray's).
-    Pcg32 rng(7u, 1u);
+    Random rng(7u, 1u);
     const auto balls = random_balls<float>(500, rng, 10.0f, 0.3f);
     const Tree bvh(boxes_of(balls));
     int mismatches = 0, blocked = 0, tests_after_hit = 0;
@@ -271,7 +271,7 @@ TEST_CASE_TEMPLATE("a ray with a NaN or an infinity in its origin or direction v
     // count 0) included, which the walk then took for the root: it pushed without end and
     // wrote past its stack.
     using T = typename Tree::scalar_type;
-    Pcg32 rng(3u, 3u);
+    Random rng(3u, 3u);
     const auto balls = random_balls<T>(300, rng, T(10), T(0.5));
     const Tree bvh(boxes_of(balls));
     const T nan = std::numeric_limits<T>::quiet_NaN(), inf = infinity<T>;
@@ -306,7 +306,7 @@ TEST_CASE_TEMPLATE("a ray with a NaN or an infinity in its origin or direction v
 TEST_CASE_TEMPLATE("the tree's shape: every primitive once, children inside their parent, leaves within max_leaf_size and starting a block", Tree, Bvh<float, 4>,
                    Bvh<float, 8>)
 {
-    Pcg32 rng(3u, 3u);
+    Random rng(3u, 3u);
     for (const auto& [leaf, block] : {std::pair{1, 1}, {4, 1}, {8, 1}, {8, 3}, {16, 4}}) {
         for (const BvhSplit split : {BvhSplit::binned, BvhSplit::sweep}) {
             const auto balls = random_balls<float>(5000, rng, 10.0f, 0.1f);
@@ -373,7 +373,7 @@ namespace {
 /// A random binary tree of `leaves` leaves laid out as the build lays one out (children
 /// side by side, after their parent), with random boxes, and leaves of 1 to 4 primitives.
 template <int W>
-std::vector<typename Bvh<double, W>::BinaryNode> random_binary_tree(Pcg32& rng, int leaves)
+std::vector<typename Bvh<double, W>::BinaryNode> random_binary_tree(Random& rng, int leaves)
 {
     using Node = typename Bvh<double, W>::BinaryNode;
     std::vector<Node> tree(1);
@@ -430,7 +430,7 @@ template <int W>
 void check_collapse_is_least()
 {
     CAPTURE(W);
-    Pcg32 rng(6u, 6u);
+    Random rng(6u, 6u);
     int mismatches = 0, lost = 0;
     for (int trial = 0; trial < 300; ++trial) {
         const int leaves = 2 + trial % 13;
@@ -470,7 +470,7 @@ TEST_CASE("the collapse to wide nodes has the least node area of every collapse 
 TEST_CASE("the sweep's tree costs less than the binned one by the surface area heuristic, and both far less than one leaf")
 {
     // Clustered balls of very different sizes, where 16 bins place planes coarsely.
-    Pcg32 rng(4u, 4u);
+    Random rng(4u, 4u);
     std::vector<Ball<float>> balls;
     for (int cluster = 0; cluster < 20; ++cluster) {
         const Vec3<float> c = random_point_in<float>(rng, 100.0f);
@@ -489,7 +489,7 @@ TEST_CASE_TEMPLATE("a build on several threads makes one thread's tree, node for
     // Clusters and a uniform spread, 17 000 boxes (a threaded build needs 2^14): the build
     // leaves a dozen subtrees to its threads. Compared with the one-thread build (the
     // serial twin), bit for bit.
-    Pcg32 rng(8u, 3u);
+    Random rng(8u, 3u);
     std::vector<Ball<T>> balls = random_balls<T>(12000, rng, T(50), T(0.3));
     for (int cluster = 0; cluster < 20; ++cluster) {
         const Vec3<T> c = random_point_in<T>(rng, T(50));
@@ -531,7 +531,7 @@ TEST_CASE("degenerate sets: identical boxes, one box, exponentially spaced boxes
     for (int k = 0; k < 200; ++k) spaced.push_back({{std::ldexp(1.0, k), 0, 0}, std::ldexp(0.25, k)});
     const Bvh<double> deep(boxes_of(spaced));
     CHECK(deep.depth() <= Bvh<double>::max_depth);
-    Pcg32 rng(1u, 1u);
+    Random rng(1u, 1u);
     int mismatches = 0;
     for (int i = 0; i < 2000; ++i) {
         const Ray<double> r{{std::ldexp(1.0, int(rng.uniform<double>() * 190)), 0, -1}, normalize(uniform_sphere<double>(rng) + Vec3<double>(0, 0, 1))};
@@ -544,7 +544,7 @@ TEST_CASE("degenerate sets: identical boxes, one box, exponentially spaced boxes
 
 TEST_CASE("work per ray grows as log N: nodes visited from 10^2 to 10^4 balls")
 {
-    Pcg32 rng(9u, 2u);
+    Random rng(9u, 2u);
     double visits_per_ray[2] = {0, 0};
     for (int j = 0; j < 2; ++j) {
         const int n = j == 0 ? 100 : 10000;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // KdTree against brute force: the same neighbours, in the same order, ties included.
 #include <prism/accel/kd_tree.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/core/sampling.hpp>
 
 #include <doctest/doctest.h>
@@ -66,7 +66,7 @@ int radius_mismatches(const std::vector<P3<T>>& points, const std::vector<P3<T>>
 }
 
 template <class T>
-std::vector<P3<T>> uniform(prism::Pcg32& rng, std::size_t n, T extent = T(1))
+std::vector<P3<T>> uniform(prism::Random& rng, std::size_t n, T extent = T(1))
 {
     std::vector<P3<T>> out(n);
     for (auto& p : out) p = {extent * rng.uniform<T>(), extent * rng.uniform<T>(), extent * rng.uniform<T>()};
@@ -75,7 +75,7 @@ std::vector<P3<T>> uniform(prism::Pcg32& rng, std::size_t n, T extent = T(1))
 
 /// A dense blob (a caustic) in a sparse uniform background.
 template <class T>
-std::vector<P3<T>> clustered(prism::Pcg32& rng, std::size_t n)
+std::vector<P3<T>> clustered(prism::Random& rng, std::size_t n)
 {
     std::vector<P3<T>> out = uniform<T>(rng, n / 4);
     while (out.size() < n) {
@@ -127,7 +127,7 @@ TEST_CASE("the compile-time grid queries' answers, at run time")
 
 TEST_CASE_TEMPLATE("k nearest neighbours equal brute force on random and clustered sets", T, float, double)
 {
-    prism::Pcg32 rng(1u, 1u);
+    prism::Random rng(1u, 1u);
     const auto random_points = uniform<T>(rng, 5000);
     const auto queries = uniform<T>(rng, 300);
     CHECK(knn_mismatches<T, 1>(random_points, queries) == 0);
@@ -144,7 +144,7 @@ TEST_CASE_TEMPLATE("k nearest neighbours equal brute force on random and cluster
 
 TEST_CASE_TEMPLATE("ties, duplicates, flat sets, one point, none", T, float, double)
 {
-    prism::Pcg32 rng(2u, 2u);
+    prism::Random rng(2u, 2u);
     // 300 copies of one point among others: equal distances resolve by index.
     auto dupes = uniform<T>(rng, 200);
     for (int i = 0; i < 300; ++i) dupes.push_back({T(0.25), T(0.25), T(0.25)});
@@ -179,7 +179,7 @@ TEST_CASE_TEMPLATE("ties, duplicates, flat sets, one point, none", T, float, dou
 
 TEST_CASE_TEMPLATE("radius queries equal brute force", T, float, double)
 {
-    prism::Pcg32 rng(3u, 3u);
+    prism::Random rng(3u, 3u);
     const auto points = clustered<T>(rng, 20000);
     const auto queries = uniform<T>(rng, 200);
     CHECK(radius_mismatches<T>(points, queries, T(0.05)) == 0);
@@ -189,7 +189,7 @@ TEST_CASE_TEMPLATE("radius queries equal brute force", T, float, double)
 
 TEST_CASE_TEMPLATE("k chosen at run time, with a maximum distance, equals brute force", T, float, double)
 {
-    prism::Pcg32 rng(5u, 5u);
+    prism::Random rng(5u, 5u);
     const auto points = clustered<T>(rng, 8000);
     auto queries = uniform<T>(rng, 150);
     queries.push_back({T(0.5), T(0.3), T(0.7)});
@@ -230,7 +230,7 @@ TEST_CASE_TEMPLATE("k chosen at run time, with a maximum distance, equals brute 
 
 TEST_CASE("memory and size")
 {
-    prism::Pcg32 rng(4u, 4u);
+    prism::Random rng(4u, 4u);
     const auto points = uniform<float>(rng, 1000);
     const KdTree<ArrayPoints<float, 3>> tree(ArrayPoints<float, 3>{points});
     CHECK(tree.size() == 1000);
@@ -267,7 +267,7 @@ struct ConeSum {
 TEST_CASE_TEMPLATE("the one search takes a result set of the caller's own; KNearest fills the caller's buffer", T, float, double)
 {
     static_assert(prism::ResultSet<ConeSum<T>, T> && prism::ResultSet<prism::KNearest<T>, T>);
-    prism::Pcg32 rng(9u, 9u);
+    prism::Random rng(9u, 9u);
     const auto points = clustered<T>(rng, 5000);
     const KdTree<ArrayPoints<T, 3>> tree(ArrayPoints<T, 3>{points});
     for (const auto& q : uniform<T>(rng, 50)) {
@@ -291,7 +291,7 @@ TEST_CASE_TEMPLATE("the one search takes a result set of the caller's own; KNear
 TEST_CASE("a tree built on several threads is the tree built on one, and answers as brute force")
 {
     // 300 000 points: ranges above 2^15 are split on threads of their own.
-    prism::Pcg32 rng(21u, 21u);
+    prism::Random rng(21u, 21u);
     const auto points = clustered<float>(rng, 300000);
     const KdTree<ArrayPoints<float, 3>> one(ArrayPoints<float, 3>{points}, 1), three(ArrayPoints<float, 3>{points}, 3);
     CHECK(std::ranges::equal(one.order(), three.order()));
@@ -305,7 +305,7 @@ TEST_CASE("a tree built on several threads is the tree built on one, and answers
 
 TEST_CASE_TEMPLATE("segment queries (the beam estimate's) equal brute force: the points within r of the line whose projections lie on the segment", T, float, double)
 {
-    prism::Pcg32 rng(5u, 8u);
+    prism::Random rng(5u, 8u);
     const auto points = clustered<T>(rng, 20000);
     const KdTree<ArrayPoints<T, 3>> tree(ArrayPoints<T, 3>{points});
     int mismatches = 0, found = 0;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <prism/core/distribution.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 
 #include <doctest/doctest.h>
 
@@ -21,7 +21,7 @@ TEST_CASE("an alias table picks each item with its weight's share (chi-square), 
     const AliasTable<double> table(weights);
     REQUIRE(table.size() == weights.size());
     for (std::size_t i = 0; i < weights.size(); ++i) CHECK(table.probability(i) == doctest::Approx(weights[i] / sum).epsilon(1e-12));
-    prism::Pcg32 rng(5, 5);
+    prism::Random rng(5, 5);
     constexpr long n = 2000000;
     std::vector<double> observed(weights.size(), 0.0), expected(weights.size(), 0.0);
     // The rest of each pick, binned per item: uniform in [0, 1) again.
@@ -48,7 +48,7 @@ TEST_CASE("an alias table picks each item with its weight's share (chi-square), 
 TEST_CASE("an alias table picks in float as in double, over 10^4 items (an emitting mesh's triangles)")
 {
     std::vector<double> weights(10000);
-    prism::Pcg32 rng(6, 6);
+    prism::Random rng(6, 6);
     for (double& w : weights) w = rng.uniform<double>() * rng.uniform<double>();
     const AliasTable<float> table(weights);
     std::vector<double> observed(weights.size(), 0.0), expected(weights.size(), 0.0);
@@ -84,7 +84,7 @@ TEST_CASE("chi-square check of the test's own p-values: a fair die passes, a loa
     // The test statistic's tail against a known case: chi2 = 11.07 at 5 degrees is p = 0.05.
     CHECK(test::gamma_q(2.5, 11.07 / 2) == doctest::Approx(0.05).epsilon(1e-3));
     CHECK(test::gamma_q(10, 5) == doctest::Approx(0.968171).epsilon(1e-5)); // chi2 = 10 at 20 degrees
-    prism::Pcg32 rng(1, 2);
+    prism::Random rng(1, 2);
     std::vector<double> fair(6, 0.0), loaded(6, 0.0);
     for (int k = 0; k < 60000; ++k) {
         fair[std::size_t(rng.uniform<double>() * 6)] += 1;
@@ -101,7 +101,7 @@ TEST_CASE("a two-dimensional alias table picks each cell with its weight's share
     // A 7 x 5 grid with an empty row, zeros and weights over four orders of magnitude.
     const std::size_t w = 7, h = 5;
     std::vector<double> weights(w * h);
-    prism::Pcg32 rng(8, 8);
+    prism::Random rng(8, 8);
     for (std::size_t i = 0; i < weights.size(); ++i) weights[i] = i / w == 2 || i % 5 == 1 ? 0 : std::pow(10.0, 4 * rng.uniform<double>());
     double sum = 0;
     for (const double x : weights) sum += x;

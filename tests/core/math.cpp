@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <prism/core/math.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 
 #include <doctest/doctest.h>
 
@@ -65,7 +65,7 @@ TEST_CASE_TEMPLATE("difference_of_products keeps the digits that a*b - c*d cance
     const T fast = prism::difference_of_products(b, b, a, c);
     CHECK(std::abs(fast - exact) <= std::abs(exact) * 1e-5L);
     // Random values: within a couple of roundings of the exact result.
-    prism::Pcg32 rng(3u, 3u);
+    prism::Random rng(3u, 3u);
     for (int i = 0; i < 10000; ++i) {
         const T x = rng.uniform<T>(), y = rng.uniform<T>(), z = rng.uniform<T>(), w = rng.uniform<T>();
         const long double e = (long double)x * y - (long double)z * w;

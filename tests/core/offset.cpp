@@ -15,7 +15,7 @@ TEST_CASE_TEMPLATE("gamma(n) bounds n roundings (Higham)", T, float, double)
 
 TEST_CASE_TEMPLATE("the offset origin lies beyond the error box, on the side of the new direction", T, float, double)
 {
-    prism::Pcg32 rng(3u, 1u);
+    prism::Random rng(3u, 1u);
     for (int i = 0; i < 10000; ++i) {
         const prism::Vec3<T> p = test::random_point<T>(rng, T(1000));
         const prism::Vec3<T> n = test::random_direction<T>(rng);

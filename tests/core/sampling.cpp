@@ -8,12 +8,12 @@
 
 using prism::Rgb;
 using prism::Vec3;
-using prism::Pcg32;
+using prism::Random;
 using prism::uniform_sphere;
 
 TEST_CASE("emission directions are uniform on the sphere (errata 4)")
 {
-    prism::Pcg32 rng(1u, 1u);
+    prism::Random rng(1u, 1u);
     constexpr int n = 400000;
     Vec3<double> mean(0.0);
     std::array<int, 8> octants{};
@@ -36,7 +36,7 @@ TEST_CASE("emission directions are uniform on the sphere (errata 4)")
 
 TEST_CASE("diffuse bounces are cosine-distributed: E[cos] = 2/3, never below the surface")
 {
-    prism::Pcg32 rng(2u, 2u);
+    prism::Random rng(2u, 2u);
     const Vec3<double> n = prism::normalize(Vec3<double>{0.3, -0.5, 0.8});
     constexpr int count = 200000;
     double sum = 0, sum2 = 0;
@@ -55,7 +55,7 @@ TEST_CASE("diffuse bounces are cosine-distributed: E[cos] = 2/3, never below the
 
 TEST_CASE("Russian roulette keeps the expected power, channel by channel (errata 7)")
 {
-    prism::Pcg32 rng(3u, 3u);
+    prism::Random rng(3u, 3u);
     const Rgb<double> reflectance{0.8, 0.4, 0.1};
     const Rgb<double> start{1.0, 2.0, 3.0};
     constexpr int n = 400000;
@@ -83,7 +83,7 @@ TEST_CASE("Russian roulette keeps the expected power, channel by channel (errata
 
 TEST_CASE("Russian roulette on a path's throughput keeps its expectation, and leaves a bright path alone")
 {
-    prism::Pcg32 rng(6u, 6u);
+    prism::Random rng(6u, 6u);
     const Rgb<double> start{0.3, 0.12, 0.05}; // survives with p = 0.3, then carries start / 0.3
     constexpr int n = 400000;
     Rgb<double> total(0.0);
@@ -111,7 +111,7 @@ TEST_CASE("Russian roulette on a path's throughput keeps its expectation, and le
 
 TEST_CASE("orthonormal frames, including at the poles")
 {
-    prism::Pcg32 rng(4u, 4u);
+    prism::Random rng(4u, 4u);
     for (int i = 0; i < 1000; ++i) {
         const Vec3<double> n = i == 0 ? Vec3<double>{0, 0, -1} : i == 1 ? Vec3<double>{0, 0, 1} : prism::uniform_sphere<double>(rng);
         const auto [s, t] = prism::orthonormal_frame(n);
@@ -124,7 +124,7 @@ TEST_CASE("orthonormal frames, including at the poles")
 
 TEST_CASE("cones and disks: directions within the cone, uniform in cos; points within the disk, uniform in area")
 {
-    Pcg32 rng(8u, 8u);
+    Random rng(8u, 8u);
     const Vec3<double> axis = prism::normalize(Vec3<double>{1, 2, -2});
     const double cos_half = 0.6;
     const int n = 200000;

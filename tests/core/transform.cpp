@@ -23,7 +23,7 @@ TEST_CASE_TEMPLATE("transforms compose in the order written and invert", T, floa
 TEST_CASE_TEMPLATE("normals stay perpendicular under non-uniform scale", T, float, double)
 {
     const auto squash = Transform<T>::scale({T(4), T(1), T(0.5)}).then(Transform<T>::rotate(T(33), {T(1), T(2), T(3)}));
-    prism::Pcg32 rng(2u, 2u);
+    prism::Random rng(2u, 2u);
     for (int i = 0; i < 1000; ++i) {
         const Vec3<T> n = test::random_direction<T>(rng);
         // A tangent vector of the plane with normal n, mapped as a direction.
@@ -35,7 +35,7 @@ TEST_CASE_TEMPLATE("normals stay perpendicular under non-uniform scale", T, floa
 TEST_CASE_TEMPLATE("the error bound of a transformed point covers the true value", T, float, double)
 {
     const auto t = Transform<T>::rotate(T(17), {T(1), T(1), T(0)}).then(Transform<T>::translate({T(1000), T(-3), T(7)}));
-    prism::Pcg32 rng(9u, 1u);
+    prism::Random rng(9u, 1u);
     for (int i = 0; i < 1000; ++i) {
         const Vec3<T> p = test::random_point<T>(rng, T(100));
         const Vec3<T> w = t.point(p);

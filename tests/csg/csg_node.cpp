@@ -15,19 +15,19 @@ using namespace prism;
 namespace {
 
 template <Scalar T>
-Vec3<T> random_in(Pcg32& rng, T extent)
+Vec3<T> random_in(Random& rng, T extent)
 {
     return test::random_point<T>(rng, extent);
 }
 
 template <Scalar T>
-Sphere<T> random_sphere(Pcg32& rng)
+Sphere<T> random_sphere(Random& rng)
 {
     return Sphere<T>(random_in<T>(rng, T(0.5)), T(0.8) + T(0.8) * rng.uniform<T>());
 }
 
 template <Scalar T>
-Box<T> random_box(Pcg32& rng)
+Box<T> random_box(Random& rng)
 {
     const Vec3<T> centre = random_in<T>(rng, T(0.5));
     const Vec3<T> half = Vec3<T>{T(0.4) + rng.uniform<T>(), T(0.4) + rng.uniform<T>(), T(0.4) + rng.uniform<T>()};
@@ -36,7 +36,7 @@ Box<T> random_box(Pcg32& rng)
 
 /// A smaller box, for the part a difference takes away.
 template <Scalar T>
-Box<T> random_bite(Pcg32& rng)
+Box<T> random_bite(Random& rng)
 {
     const Vec3<T> centre = random_in<T>(rng, T(0.8));
     const Vec3<T> half = Vec3<T>{T(0.2) + rng.uniform<T>(), T(0.2) + rng.uniform<T>(), T(0.2) + rng.uniform<T>()} * T(0.6);
@@ -44,20 +44,20 @@ Box<T> random_bite(Pcg32& rng)
 }
 
 template <Scalar T>
-Plane<T> random_plane(Pcg32& rng)
+Plane<T> random_plane(Random& rng)
 {
     return Plane<T>::through(random_in<T>(rng, T(0.5)), test::random_direction<T>(rng));
 }
 
 template <Scalar T>
-Transform<T> random_placement(Pcg32& rng)
+Transform<T> random_placement(Random& rng)
 {
     return Transform<T>::rotate(T(360) * rng.uniform<T>(), test::random_direction<T>(rng)).then(Transform<T>::translate(random_in<T>(rng, T(0.4))));
 }
 
 /// Every kind of quadric, bounded and not, convex and not, randomly placed.
 template <Scalar T>
-Quadric<T> random_quadric(Pcg32& rng)
+Quadric<T> random_quadric(Random& rng)
 {
     const auto u = [&rng] { return T(0.6) + rng.uniform<T>(); };
     const Vec3<T> o(T(0));
@@ -74,21 +74,21 @@ Quadric<T> random_quadric(Pcg32& rng)
 
 // Three tree shapes, depth 3 and 4, using every operation at every level.
 template <Scalar T>
-auto tree_one(Pcg32& rng) // (S | Q) - (B & Transformed<Q>)
+auto tree_one(Random& rng) // (S | Q) - (B & Transformed<Q>)
 {
     return difference_of(union_of(random_sphere<T>(rng), random_quadric<T>(rng)),
                          intersection_of(random_bite<T>(rng), Transformed(random_quadric<T>(rng), random_placement<T>(rng))));
 }
 
 template <Scalar T>
-auto tree_two(Pcg32& rng) // (B - (S & Transformed<B>)) | (Q & (S - P))
+auto tree_two(Random& rng) // (B - (S & Transformed<B>)) | (Q & (S - P))
 {
     return union_of(difference_of(random_box<T>(rng), intersection_of(random_sphere<T>(rng), Transformed(random_bite<T>(rng), random_placement<T>(rng)))),
                     intersection_of(random_quadric<T>(rng), difference_of(random_sphere<T>(rng), random_plane<T>(rng))));
 }
 
 template <Scalar T>
-auto tree_three(Pcg32& rng) // Transformed<S | (B - Q)> & ((S | S) - B)
+auto tree_three(Random& rng) // Transformed<S | (B - Q)> & ((S | S) - B)
 {
     return intersection_of(Transformed(union_of(random_sphere<T>(rng), difference_of(random_box<T>(rng), random_quadric<T>(rng))),
                                        Transform<T>::scale({T(1.2), T(0.8), T(1)}).then(random_placement<T>(rng))),
@@ -136,7 +136,7 @@ void check_ray(const Tree& tree, const Ray<T>& ray, T length, T margin, Tally& t
 template <Scalar T, class Make>
 Tally brute_force(std::uint64_t seed, int trees, int rays_per_tree, T margin, Make&& make)
 {
-    Pcg32 rng(seed, 77u);
+    Random rng(seed, 77u);
     Tally tally;
     for (int i = 0; i < trees; ++i) {
         const auto tree = make(rng);
@@ -167,16 +167,16 @@ void report(const std::string& name, const Tally& t)
 TEST_CASE("CSG trees of depth 3 and 4 against brute-force inside tests: 0 mismatches over 1.5e5 rays (double)")
 {
     // 3 tree shapes x 1000 trees x 50 rays = 150 000 rays.
-    report("(S | Q) - (B & xQ)", brute_force<double>(1, 1000, 50, 1e-7, [](Pcg32& r) { return tree_one<double>(r); }));
-    report("(B - (S & xB)) | (Q & (S - P))", brute_force<double>(2, 1000, 50, 1e-7, [](Pcg32& r) { return tree_two<double>(r); }));
-    report("x(S | (B - Q)) & ((S | S) - B)", brute_force<double>(3, 1000, 50, 1e-7, [](Pcg32& r) { return tree_three<double>(r); }));
+    report("(S | Q) - (B & xQ)", brute_force<double>(1, 1000, 50, 1e-7, [](Random& r) { return tree_one<double>(r); }));
+    report("(B - (S & xB)) | (Q & (S - P))", brute_force<double>(2, 1000, 50, 1e-7, [](Random& r) { return tree_two<double>(r); }));
+    report("x(S | (B - Q)) & ((S | S) - B)", brute_force<double>(3, 1000, 50, 1e-7, [](Random& r) { return tree_three<double>(r); }));
 }
 
 TEST_CASE("the same in float, with a margin for float's rounding")
 {
-    report("(S | Q) - (B & xQ)", brute_force<float>(4, 200, 50, 2e-3f, [](Pcg32& r) { return tree_one<float>(r); }));
-    report("(B - (S & xB)) | (Q & (S - P))", brute_force<float>(5, 200, 50, 2e-3f, [](Pcg32& r) { return tree_two<float>(r); }));
-    report("x(S | (B - Q)) & ((S | S) - B)", brute_force<float>(6, 200, 50, 2e-3f, [](Pcg32& r) { return tree_three<float>(r); }));
+    report("(S | Q) - (B & xQ)", brute_force<float>(4, 200, 50, 2e-3f, [](Random& r) { return tree_one<float>(r); }));
+    report("(B - (S & xB)) | (Q & (S - P))", brute_force<float>(5, 200, 50, 2e-3f, [](Random& r) { return tree_two<float>(r); }));
+    report("x(S | (B - Q)) & ((S | S) - B)", brute_force<float>(6, 200, 50, 2e-3f, [](Random& r) { return tree_three<float>(r); }));
 }
 
 TEST_CASE("a CSG tree is a Shape of the summed capacity, nested to any depth")
@@ -194,7 +194,7 @@ TEST_CASE("a ray leaving a CSG surface starts on the side it leaves by")
     // For every crossing of random rays through random trees, a ray spawned from it
     // into the solid must start inside, and one spawned out of it must start outside;
     // directions within 0.2 of the tangent plane, where an edge may be in the way, are left out.
-    Pcg32 rng(8u, 8u);
+    Random rng(8u, 8u);
     long checked = 0, wrong = 0;
     const auto probe = [&](const auto& tree) {
         for (int r = 0; r < 40; ++r) {
@@ -236,7 +236,7 @@ TEST_CASE("a ray leaving a CSG surface starts on the side it leaves by")
 // a step of the coordinates near the node.
 TEST_CASE("a float CSG node seen from 10^3 keeps its children's crossings in order")
 {
-    Pcg32 rng(33u, 12u);
+    Random rng(33u, 12u);
     long spawned = 0, wrong_side = 0, lost = 0, phantom = 0, hits = 0, short_chords = 0;
     for (int shape = 0; shape < 16; ++shape) {
         // The bead of csg_quadrics at 10^-3: a ball bored by a quadric cylinder, and its
@@ -296,7 +296,7 @@ namespace {
 template <Scalar T>
 std::pair<long, long> bead_wrong_side_spawns(double size)
 {
-    Pcg32 rng(33u, 14u);
+    Random rng(33u, 14u);
     long spawned = 0, wrong_side = 0;
     for (int shape = 0; shape < 8; ++shape) {
         const Vec3<T> centre(Vec3<double>(1e3, 0, 0) + test::random_point<double>(rng, 1.0));
@@ -355,7 +355,7 @@ TEST_CASE("a CSG crossing's surface coordinates are those of the child it came f
     const auto place = Transform<double>::rotate_y(20).then(Transform<double>::translate({0.5, 0, 0}));
     using Bitten = Difference<Sphere<double>, Box<double>>;
     const Union<Transformed<Bitten>, Plane<double>> shape(Transformed<Bitten>(Bitten(ball, bite), place), floor);
-    Pcg32 rng(8, 1);
+    Random rng(8, 1);
     int from_ball = 0, from_bite = 0, from_floor = 0;
     for (int i = 0; i < 4000; ++i) {
         const Vec3<double> target = Vec3<double>{0.5, -1, 0} + 2.0 * test::random_direction<double>(rng) * rng.uniform<double>();

@@ -42,10 +42,10 @@ TEST_CASE_TEMPLATE("ray-box crossings and face normals", T, float, double)
 
 TEST_CASE_TEMPLATE("a ray leaving a box never hits it again", T, float, double)
 {
-    prism::Pcg32 rng(4u, 4u);
+    prism::Random rng(4u, 4u);
     for (double distance : {1.0, 1e3, 1e4, 1e5}) {
         INFO("distance from origin " << distance);
-        CHECK(test::reintersections(rng, 4000, [&](prism::Pcg32& r) {
+        CHECK(test::reintersections(rng, 4000, [&](prism::Random& r) {
                   const Vec3<T> centre = test::random_point<T>(r, T(distance));
                   const Vec3<T> half_size{T(0.2) + r.uniform<T>(), T(0.2) + r.uniform<T>(), T(0.2) + r.uniform<T>()};
                   return std::pair{Box<T>(centre - half_size, centre + half_size), centre};
@@ -64,7 +64,7 @@ TEST_CASE_TEMPLATE("a box's lean first_crossing and any_crossing give what its c
     // The slow, obvious twin: crossings<false>(ray, range).front(). Rays from anywhere,
     // many along an axis or in a face's plane, over ranges starting before, inside and
     // past the box.
-    prism::Pcg32 rng(51u, 3u);
+    prism::Random rng(51u, 3u);
     const auto coordinate = [&](T scale) {
         const std::uint32_t pick = rng.next_u32() % 8;
         if (pick == 0) return T(-1);

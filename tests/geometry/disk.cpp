@@ -27,7 +27,7 @@ TEST_CASE_TEMPLATE("a disk is crossed inside its radius, entering on its normal'
     CHECK_FALSE(back[0].entering);
     // Its box holds its rim, tilted or not.
     const Disk<T> tilted({T(0), T(0), T(0)}, {T(1), T(1), T(0)}, T(2));
-    prism::Pcg32 rng(1, 1);
+    prism::Random rng(1, 1);
     for (int i = 0; i < 1000; ++i) {
         const auto p = tilted.sample_area({T(1), rng.uniform<T>()}).point; // on the rim
         CHECK(tilted.bounds().contains(p));

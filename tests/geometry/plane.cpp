@@ -38,11 +38,11 @@ TEST_CASE_TEMPLATE("half-space crossings", T, float, double)
 
 TEST_CASE_TEMPLATE("a ray leaving a plane never hits it again, near and far from the origin", T, float, double)
 {
-    prism::Pcg32 rng(8u, 1u);
+    prism::Random rng(8u, 1u);
     for (double distance : {1.0, 1e3, 1e4, 1e5}) {
         INFO("distance from origin " << distance);
         int i = 0;
-        CHECK(test::reintersections(rng, 4000, [&](prism::Pcg32& r) {
+        CHECK(test::reintersections(rng, 4000, [&](prism::Random& r) {
                   const Vec3<T> point = test::random_point<T>(r, T(distance));
                   const Vec3<T> normal = ++i % 2 ? Vec3<T>{T(0), T(1), T(0)} : test::random_direction<T>(r);
                   return std::pair{Plane<T>::through(point, normal), point};

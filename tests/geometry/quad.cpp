@@ -40,7 +40,7 @@ TEST_CASE_TEMPLATE("a quad is crossed where its plane is, inside its edges, ente
 
 TEST_CASE("a quad's crossings against solving the plane and the edges in long double, over random parallelograms")
 {
-    prism::Pcg32 rng(34u, 1u);
+    prism::Random rng(34u, 1u);
     long hits = 0, disagreements = 0;
     for (int shape = 0; shape < 1000; ++shape) {
         const Vec3<double> corner = test::random_point<double>(rng, 2.0);
@@ -169,7 +169,7 @@ TEST_CASE("sampling a quad from a point follows the density it reports (chi-squa
 TEST_CASE("a rectangle's points by solid angle stay on it, with its normal")
 {
     const Quad<float> r({-0.5f, 1, -0.25f}, {1, 0, 0}, {0, 0, 0.5f});
-    prism::Pcg32 rng(2, 3);
+    prism::Random rng(2, 3);
     for (int i = 0; i < 100000; ++i) {
         const Vec3<float> p = test::random_point<float>(rng, 3.0f);
         const auto s = r.sample_from(p, {rng.uniform<float>(), rng.uniform<float>()});

@@ -200,7 +200,7 @@ TEST_CASE_TEMPLATE("a quadric moved by a transform is the same surface moved", T
 
 TEST_CASE_TEMPLATE("refined points lie within their error bound of the surface", T, float, double)
 {
-    prism::Pcg32 rng(21u, 3u);
+    prism::Random rng(21u, 3u);
     for (double distance : {1.0, 1e3, 1e5}) {
         for (int i = 0; i < 2000; ++i) {
             const Vec3<T> centre = test::random_point<T>(rng, T(distance));
@@ -225,10 +225,10 @@ TEST_CASE_TEMPLATE("refined points lie within their error bound of the surface",
 
 TEST_CASE_TEMPLATE("a ray leaving an ellipsoid quadric never hits it again", T, float, double)
 {
-    prism::Pcg32 rng(6u, 6u);
+    prism::Random rng(6u, 6u);
     for (double distance : {1.0, 1e3, 1e4, 1e5}) {
         INFO("distance " << distance);
-        CHECK(test::reintersections(rng, 4000, [&](prism::Pcg32& r) {
+        CHECK(test::reintersections(rng, 4000, [&](prism::Random& r) {
                   const Vec3<T> centre = test::random_point<T>(r, T(distance));
                   const Vec3<T> axes{T(0.3) + r.uniform<T>(), T(0.3) + r.uniform<T>(), T(0.3) + r.uniform<T>()};
                   const auto rotation = prism::Mat3<T>(prism::Transform<T>::rotate(T(360) * r.uniform<T>(), test::random_direction<T>(r)).matrix());
@@ -242,7 +242,7 @@ TEST_CASE_TEMPLATE("a ray leaving an ellipsoid quadric never hits it again", T, 
 // approach m = o + t d was found in float, off the line by an ulp of the distance.
 TEST_CASE("a float ellipsoid seen from 10^4 loses no hit and gains none against its double evaluation")
 {
-    prism::Pcg32 rng(33u, 10u);
+    prism::Random rng(33u, 10u);
     test::Disagreements total;
     for (const double where : {0.0, 1e3, 1e4})
         for (int shape = 0; shape < 100; ++shape) {

@@ -4,7 +4,7 @@
 #include "../support.hpp"
 
 using prism::Interval;
-using prism::Pcg32;
+using prism::Random;
 using prism::Ray;
 using prism::Vec3;
 
@@ -13,7 +13,7 @@ namespace {
 /// first_crossing and any_crossing (a shape's lean query or the fallback) against the
 /// full list's first crossing, on random rays and ranges.
 template <class S>
-int disagreements(const S& shape, Pcg32& rng, int rays)
+int disagreements(const S& shape, Random& rng, int rays)
 {
     using T = typename S::scalar_type;
     int wrong = 0;
@@ -48,7 +48,7 @@ int disagreements(const S& shape, Pcg32& rng, int rays)
 
 TEST_CASE_TEMPLATE("the lean first-crossing query gives the full list's first t, and its hinted surface the full list's, for every kind of shape", T, float, double)
 {
-    Pcg32 rng(8u, 1u);
+    Random rng(8u, 1u);
     const prism::Sphere<T> ball({T(0.3), T(-0.2), T(0.1)}, T(1.2));
     static_assert(prism::HasFirstCrossing<prism::Sphere<T>>);
     CHECK(disagreements(ball, rng, 200000) == 0);

@@ -79,7 +79,7 @@ TEST_CASE_TEMPLATE("grazing rays: both crossings found, in order, close to the e
 
 TEST_CASE_TEMPLATE("the refined point lies within its error bound of the true surface", T, float, double)
 {
-    prism::Pcg32 rng(11u, 2u);
+    prism::Random rng(11u, 2u);
     for (double distance : {1.0, 1e3, 1e5}) {
         const Sphere<T> sphere({T(distance), T(-distance / 2), T(distance / 3)}, T(1.5));
         for (int i = 0; i < 2000; ++i) {
@@ -103,10 +103,10 @@ TEST_CASE_TEMPLATE("the refined point lies within its error bound of the true su
 
 TEST_CASE_TEMPLATE("a ray leaving a sphere never hits it again (TestReintersectConvex)", T, float, double)
 {
-    prism::Pcg32 rng(5u, 9u);
+    prism::Random rng(5u, 9u);
     for (double distance : {1.0, 1e3, 1e4, 1e5}) {
         INFO("distance from origin " << distance);
-        CHECK(test::reintersections(rng, 4000, [&](prism::Pcg32& r) {
+        CHECK(test::reintersections(rng, 4000, [&](prism::Random& r) {
                   const Vec3<T> centre = test::random_point<T>(r, T(distance));
                   const T radius = T(0.1) + T(2) * r.uniform<T>();
                   return std::pair{Sphere<T>(centre, radius), centre + test::random_point<T>(r, radius * T(0.5))};
@@ -160,7 +160,7 @@ TEST_CASE("a sphere's bounding sphere is its own (a hair larger); other shapes g
 // rim (in r^2 - |l|^2) were lost from 10^4.
 TEST_CASE("a float sphere seen from 10^4 loses no hit and gains none against its double evaluation")
 {
-    prism::Pcg32 rng(33u, 11u);
+    prism::Random rng(33u, 11u);
     test::Disagreements total;
     for (const double where : {0.0, 1e3, 1e4})
         for (int shape = 0; shape < 100; ++shape) {
@@ -197,7 +197,7 @@ TEST_CASE("a sphere's points seen from a point follow the density they report (c
         CHECK(std::abs(c.missing) < 4e-3 * 400000);
     }
     // Each point drawn is on the sphere and faces the point it was drawn for.
-    prism::Pcg32 rng(3, 4);
+    prism::Random rng(3, 4);
     for (int i = 0; i < 100000; ++i) {
         const prism::Vec3<double> p = prism::Vec3<double>(0.2, 0.1, -0.3) + (0.6 + 100 * rng.uniform<double>()) * test::random_direction<double>(rng);
         const auto x = s.sample_from(p, {rng.uniform<double>(), rng.uniform<double>()});

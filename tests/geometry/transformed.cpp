@@ -14,7 +14,7 @@ TEST_CASE_TEMPLATE("a sphere under non-uniform scale is the ellipsoid quadric", 
     const Transformed squashed(Sphere<T>({T(0), T(0), T(0)}, T(1)), to_world);
     // The unit sphere as a quadric, moved by the same transform.
     const auto ellipsoid = Quadric<T>({.a = 1, .e = 1, .h = 1, .j = -1}).transformed(to_world);
-    Pcg32 rng(7u, 7u);
+    Random rng(7u, 7u);
     int compared = 0;
     for (int i = 0; i < 2000; ++i) {
         const Vec3<T> eye = Vec3<T>{T(1), T(2), T(3)} + test::random_direction<T>(rng) * T(6);
@@ -37,17 +37,17 @@ TEST_CASE_TEMPLATE("a sphere under non-uniform scale is the ellipsoid quadric", 
 
 TEST_CASE_TEMPLATE("a ray leaving a transformed box or sphere never hits it again", T, float, double)
 {
-    Pcg32 rng(3u, 8u);
+    Random rng(3u, 8u);
     for (double distance : {1.0, 1e3, 1e5}) {
         INFO("distance " << distance);
-        CHECK(test::reintersections(rng, 3000, [&](Pcg32& r) {
+        CHECK(test::reintersections(rng, 3000, [&](Random& r) {
                   const Vec3<T> centre = test::random_point<T>(r, T(distance));
                   const auto place = Transform<T>::scale({T(0.5) + r.uniform<T>(), T(0.5) + r.uniform<T>(), T(0.5) + r.uniform<T>()})
                                          .then(Transform<T>::rotate(T(360) * r.uniform<T>(), test::random_direction<T>(r)))
                                          .then(Transform<T>::translate(centre));
                   return std::pair{Transformed(Box<T>({T(-1), T(-1), T(-1)}, {T(1), T(1), T(1)}), place), centre};
               }) == 0);
-        CHECK(test::reintersections(rng, 3000, [&](Pcg32& r) {
+        CHECK(test::reintersections(rng, 3000, [&](Random& r) {
                   const Vec3<T> centre = test::random_point<T>(r, T(distance));
                   const auto place = Transform<T>::scale({T(0.5) + r.uniform<T>(), T(0.5) + r.uniform<T>(), T(2)}).then(Transform<T>::translate(centre));
                   return std::pair{Transformed(Sphere<T>({T(0), T(0), T(0)}, T(1)), place), centre};

@@ -7,7 +7,7 @@
 #include <array>
 #include <cmath>
 
-using prism::Pcg32;
+using prism::Random;
 using prism::Ray;
 using prism::Vec3;
 
@@ -41,7 +41,7 @@ long double moller_trumbore(const Ray<T>& ray, const std::array<Vec3<T>, 3>& c, 
 
 TEST_CASE_TEMPLATE("a triangle's hit against Moller-Trumbore in long double, away from its edges", T, float, double)
 {
-    Pcg32 rng(11u, 14u);
+    Random rng(11u, 14u);
     int hits = 0, compared = 0;
     for (int i = 0; i < 200000; ++i) {
         const std::array<Vec3<T>, 3> c{test::random_point<T>(rng, T(1)), test::random_point<T>(rng, T(1)), test::random_point<T>(rng, T(1))};
@@ -73,7 +73,7 @@ TEST_CASE_TEMPLATE("the four-lane edge test keeps every triangle hit_triangle hi
 {
     // Fans of triangles around shared vertices and edges (a ray through one is on the
     // edge of its neighbours), rays aimed at corners, edge points and random points.
-    Pcg32 rng(17u, 2u);
+    Random rng(17u, 2u);
     int lost = 0, hits = 0, misses = 0, rejected = 0, lanewise_differs = 0;
     for (int i = 0; i < 20000; ++i) {
         const T scale = i % 4 == 3 ? T(1e4) : T(1);

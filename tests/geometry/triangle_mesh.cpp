@@ -8,7 +8,7 @@
 #include <vector>
 
 using prism::Interval;
-using prism::Pcg32;
+using prism::Random;
 using prism::Ray;
 using prism::TriangleIndices;
 using prism::TriangleMesh;
@@ -17,7 +17,7 @@ using prism::Vec3;
 namespace {
 
 template <class T>
-std::vector<Vec3<T>> soup_positions(Pcg32& rng, int triangles, T extent, T size)
+std::vector<Vec3<T>> soup_positions(Random& rng, int triangles, T extent, T size)
 {
     std::vector<Vec3<T>> p;
     for (int i = 0; i < triangles; ++i) {
@@ -38,7 +38,7 @@ std::vector<TriangleIndices> soup_triangles(int triangles)
 
 TEST_CASE_TEMPLATE("a mesh's Bvh finds what testing every triangle finds (leaves of blocks of 4 or 8)", T, float, double)
 {
-    Pcg32 rng(5u, 14u);
+    Random rng(5u, 14u);
     for (const auto& [n, block] : {std::pair{1, 4}, {7, 4}, {100, 4}, {3000, 4}, {7, 8}, {3000, 8}}) {
         const auto positions = soup_positions<T>(rng, n, T(10), T(1));
         const auto triangles = soup_triangles(n);
@@ -73,7 +73,7 @@ TEST_CASE_TEMPLATE("a mesh's Bvh finds what testing every triangle finds (leaves
 TEST_CASE_TEMPLATE("no ray slips through a closed mesh: aimed at its vertices, edges and faces", T, float, double)
 {
     // A geodesic sphere (5120 triangles), and the same far from the origin.
-    Pcg32 rng(3u, 14u);
+    Random rng(3u, 14u);
     for (const T offset : {T(0), T(1e4)}) {
         const Vec3<T> center(offset, T(-0.5) * offset, T(0.25) * offset);
         const auto buffers = prism::icosphere<T>(center, T(1), 4);
@@ -146,7 +146,7 @@ TEST_CASE("a closed mesh's inside agrees with the box it tessellates")
     const auto cube = prism::box_mesh<double>({-1, -2, -3}, {3, 2, 1});
     const TriangleMesh<double> mesh(cube.positions, cube.triangles);
     const prism::Box<double> box({-1, -2, -3}, {3, 2, 1});
-    Pcg32 rng(9u, 14u);
+    Random rng(9u, 14u);
     int disagree = 0;
     for (int i = 0; i < 100000; ++i) {
         const Vec3<double> p = test::random_point<double>(rng, 4.0);
@@ -172,7 +172,7 @@ TEST_CASE("a closed mesh works as a CSG child: a sphere minus a tessellated box 
     using Exact = prism::Difference<prism::Sphere<double>, prism::Box<double>>;
     const Cut cut(prism::Sphere<double>({0, 0, 0}, 1), TriangleMesh<double>(cube.positions, cube.triangles));
     const Exact exact(prism::Sphere<double>({0, 0, 0}, 1), prism::Box<double>({-0.5, -0.5, -2}, {0.5, 0.5, 2}));
-    Pcg32 rng(4u, 14u);
+    Random rng(4u, 14u);
     for (int i = 0; i < 20000; ++i) {
         const Ray<double> ray{test::random_point<double>(rng, 2.0), test::random_direction<double>(rng)};
         const auto a = cut.crossings(ray, {0, prism::infinity<double>});
@@ -187,8 +187,8 @@ TEST_CASE_TEMPLATE("a ray leaving a mesh's surface never hits the triangle it le
 {
     // Convex meshes (pbrt-v4's reintersection test), small and far from the origin: 2000
     // meshes, 10 pairs of rays each (a mesh takes longer to build than to trace).
-    Pcg32 rng(2u, 14u);
-    const int self_hits = test::reintersections(rng, 2000, [](Pcg32& r) {
+    Random rng(2u, 14u);
+    const int self_hits = test::reintersections(rng, 2000, [](Random& r) {
         const T scale = T(std::pow(10.0, 2 * r.uniform<double>() - 2)); // 0.01 to 1: the eye 5 away is outside
         const Vec3<T> center = test::random_point<T>(r, T(1e4) * r.uniform<T>());
         const auto b = prism::icosphere<T>(center, scale, 2);
@@ -215,7 +215,7 @@ TEST_CASE("a mesh is hit wherever its analytic twin is, from 10 to 10^7 times it
         const Vec3<double> p0(b.positions[i]), p1(b.positions[j]), p2(b.positions[k]);
         inscribed = std::min(inscribed, std::abs(prism::dot(prism::normalize(prism::cross(p1 - p0, p2 - p0)), p0)));
     }
-    Pcg32 rng(9u, 2u);
+    Random rng(9u, 2u);
     for (const double distance : {1e1, 1e3, 1e4, 5e4, 1e5, 1e6, 1e7})
         for (const double size : {1.0, 1e-3}) {
             CAPTURE(distance);
@@ -321,7 +321,7 @@ TEST_CASE_TEMPLATE("vertex normals shade a tessellated sphere as the sphere: the
     for (std::size_t i = 0; i < estimated.size(); ++i)
         worst_vertex = std::max(worst_vertex, std::acos(std::min(1.0, double(prism::dot(estimated[i], buffers.positions[i])))));
     CHECK(worst_vertex < 5e-3);
-    Pcg32 rng(41, 2);
+    Random rng(41, 2);
     double worst_shading = 0, worst_facet = 0;
     for (int i = 0; i < 20000; ++i) {
         const Vec3<T> from = test::random_direction<T>(rng) * T(3);
@@ -348,7 +348,7 @@ TEST_CASE_TEMPLATE("uvs interpolate: an affine map of the positions comes back e
     for (const Vec3<T>& p : square.positions) square.uvs.push_back({p.x / 2, 1 - p.z / 2});
     const TriangleMesh<T> mesh(square);
     CHECK(mesh.has_uvs());
-    Pcg32 rng(3, 8);
+    Random rng(3, 8);
     for (int i = 0; i < 10000; ++i) {
         const T x = T(2) * rng.uniform<T>(), z = T(2) * rng.uniform<T>();
         const auto all = mesh.crossings({{x, 1, z}, {0, -1, 0}}, {T(0), prism::infinity<T>});
@@ -386,7 +386,7 @@ TEST_CASE("a transformed mesh carries its shading normal as a normal, and a CSG 
     const TriangleMesh<double> mesh(smooth);
     // Squashed to an ellipsoid x^2/4 + y^2 + z^2 = 1: normals go by the inverse transpose.
     const prism::Transformed<TriangleMesh<double>> squashed(mesh, prism::Transform<double>::scale({2, 1, 1}));
-    Pcg32 rng(9, 4);
+    Random rng(9, 4);
     for (int i = 0; i < 2000; ++i) {
         const Vec3<double> from = test::random_direction<double>(rng) * 5.0;
         const Vec3<double> at = test::random_direction<double>(rng) * 0.5;

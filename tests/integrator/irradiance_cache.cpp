@@ -13,7 +13,7 @@ using namespace prism;
 
 TEST_CASE("the stratified gather: E = pi L under a uniform sky, and the gradients of fields known in closed form")
 {
-    Pcg32 rng(1u, 1u);
+    Random rng(1u, 1u);
     const Vec3<double> up{0, 0, 1};
     // A uniform sky of radiance 2: E = 2 pi, exactly (every cell carries its share),
     // and no gradient.

@@ -22,7 +22,7 @@ TEST_CASE("the path tracer's furnace: inside a diffuse sphere of albedo 0.5 the 
         CAPTURE(four);
         const auto scene = test::furnace_scene(four);
         const PathTracer tracer(scene);
-        const double mean = test::furnace_mean(four, [&](const Ray<float>& ray, Pcg32& rng) { return tracer.radiance(ray, rng); }, int(test::samples(400000)));
+        const double mean = test::furnace_mean(four, [&](const Ray<float>& ray, Random& rng) { return tracer.radiance(ray, rng); }, int(test::samples(400000)));
         CHECK(mean == doctest::Approx(1.0).epsilon(test::resolved(0.005)));
     }
 }
@@ -36,7 +36,7 @@ TEST_CASE("the path tracer's diffuse bounce limit: the furnace's partial sums 0.
     for (const int bounces : {0, 1, 2}) {
         CAPTURE(bounces);
         const PathTracer tracer(scene, {.max_diffuse_bounces = bounces});
-        const double mean = test::furnace_mean(false, [&](const Ray<float>& ray, Pcg32& rng) { return tracer.radiance(ray, rng); }, int(test::samples(200000)), false);
+        const double mean = test::furnace_mean(false, [&](const Ray<float>& ray, Random& rng) { return tracer.radiance(ray, rng); }, int(test::samples(200000)), false);
         CHECK(mean == doctest::Approx(2 - std::pow(0.5, bounces)).epsilon(test::resolved(0.005)));
     }
     CHECK_THROWS_WITH_AS(PathTracer(scene, {.max_diffuse_bounces = -1}), doctest::Contains("PathTracer max_diffuse_bounces must be >= 0, got -1"),
@@ -51,7 +51,7 @@ TEST_CASE("a path tracer's first bounce is Whitted's direct light, and the walls
                       Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = {0.7f, 0.5f, 0.3f}}, .kd = 0.9f, .ka = 0}}};
     const Whitted whitted(floor);
     const PathTracer tracer(floor);
-    Pcg32 rng(4u, 4u);
+    Random rng(4u, 4u);
     for (float x : {-1.0f, 0.0f, 0.7f, 2.0f}) {
         const Ray<float> ray{{x, 1, 2}, normalize(Vec3<float>{0, -1, -1})};
         const Rgb<float> a = whitted.radiance(ray), b = tracer.radiance(ray, rng);
@@ -74,7 +74,7 @@ TEST_CASE("the path tracer in the two-lobe furnace: rho_d / (1 - rho_s - rho_d) 
     const auto scene = test::coated_furnace_scene();
     const PathTracer tracer(scene);
     const test::SampleStats stats =
-        test::coated_furnace_samples([&](const Ray<float>& ray, Pcg32& rng) { return tracer.radiance(ray, rng); }, int(test::samples(400000)));
+        test::coated_furnace_samples([&](const Ray<float>& ray, Random& rng) { return tracer.radiance(ray, rng); }, int(test::samples(400000)));
     MESSAGE("mean ", stats.mean, " (closed form ", test::CoatedFurnace::path_tracer, "), largest sample ", stats.largest);
     CHECK(stats.mean == doctest::Approx(test::CoatedFurnace::path_tracer).epsilon(test::resolved(0.01)));
     // A vertex adds 0.5 at most (its direct light): 50 is a path of 100 vertices, which
@@ -98,7 +98,7 @@ TEST_CASE("the path tracer's MIS weights of a light sample and of the bounce tha
     const auto& map = std::get<0>(scene.lights.items);
     for (const int grid : {1, 3}) {
         const PathTracer tracer(scene, {.area_light_grid = grid});
-        Pcg32 rng(12, unsigned(grid));
+        Random rng(12, unsigned(grid));
         int paths = 0;
         double worst = 0;
         for (int i = 0; i < 20000; ++i) {
@@ -136,7 +136,7 @@ namespace {
 template <class Tracer>
 double path_mean(const Tracer& tracer, const Ray<float>& ray, int n, std::uint64_t seed = 9)
 {
-    Pcg32 rng(seed, 1);
+    Random rng(seed, 1);
     double sum = 0;
     for (int i = 0; i < n; ++i) sum += tracer.radiance(ray, rng).x;
     return sum / n;
@@ -150,7 +150,7 @@ struct SmokeEstimates {
 template <class Tracer, class March>
 SmokeEstimates smoke_estimates(const Tracer& tracer, const March& whitted, const Ray<float>& ray, int n, int marches)
 {
-    Pcg32 rng(3, 4), jitter(5, 6);
+    Random rng(3, 4), jitter(5, 6);
     Rgb<double> sum{0}, squares{0}, marched{0};
     for (int i = 0; i < n; ++i) {
         const Rgb<double> v(tracer.radiance(ray, rng));
@@ -197,7 +197,7 @@ TEST_CASE("the path tracer's glossy furnace: a glossy sphere under a uniform sky
                     CHECK(path_mean(tracer, test::furnace_ray<float>(theta), int(test::samples(40000))) == doctest::Approx(expected).epsilon(test::resolved(0.01)));
                     continue;
                 }
-                Pcg32 rng(9, 1);
+                Random rng(9, 1);
                 const int n = int(test::samples(40000));
                 double sum = 0, squares = 0;
                 for (int i = 0; i < n; ++i) {
@@ -268,7 +268,7 @@ TEST_CASE("frosted glass in the furnace: a clear rough glass ball under a unifor
 template <class Tracer>
 void check_volume_furnace(const Tracer& tracer, const Ray<float>& ray, bool random_direction, bool noisy = false)
 {
-    Pcg32 rng(21, 3);
+    Random rng(21, 3);
     const int n = int(test::samples(100000));
     Rgb<double> sum{0}, squares{0};
     for (int i = 0; i < n; ++i) {
@@ -321,7 +321,7 @@ TEST_CASE("the path tracer's volume furnace in fog of varying density: ground fo
     check_volume_furnace(PathTracer(sky, {}, air), Ray<float>{{-4, -0.5f, 0.2f}, normalize(Vec3<float>(1, 0.1f, 0))}, false);
     check_volume_furnace(PathTracer(sky, {}, air), Ray<float>{{0.1f, -0.8f, 0.3f}, normalize(Vec3<float>(0.2f, 1, -0.3f))}, false);
     std::vector<float> values(6 * 6 * 6);
-    Pcg32 values_rng(6, 6);
+    Random values_rng(6, 6);
     for (float& v : values) v = 3 * values_rng.uniform<float>();
     using Smoke = VaryingFog<DensityGrid<float>>;
     const Smoke smoke(DensityGrid<float>(6, 6, 6, {Vec3<float>(-1), Vec3<float>(1)}, values), Rgb<float>(0), Rgb<float>(0.5f, 1.0f, 2.0f), {.g = -0.3f}, 4);
@@ -349,7 +349,7 @@ TEST_CASE("the path tracer's single scattering of a point light in fog is the ai
     // tests/airlight.hpp's scene; max_diffuse_bounces = 0 keeps single scattering.
     const auto scene = test::airlight_scene();
     const PathTracer tracer(scene, {.max_diffuse_bounces = 0}, test::airlight_fog());
-    Pcg32 rng(1, 2);
+    Random rng(1, 2);
     Rgb<double> sum{0};
     const int n = int(test::samples(1600000));
     for (int i = 0; i < n; ++i) sum += Rgb<double>(tracer.radiance(test::airlight_ray(), rng));
@@ -424,7 +424,7 @@ TEST_CASE("fog filling graded air: the path tracer's single scattering along a p
     const auto air = test::airlight_fog_in_pieces();
     const auto scene = test::airlight_scene();
     const PathTracer tracer(scene, {.max_diffuse_bounces = 0}, air);
-    Pcg32 rng(1, 2);
+    Random rng(1, 2);
     Rgb<double> sum{0};
     const int n = int(test::samples(200000));
     for (int i = 0; i < n; ++i) sum += Rgb<double>(tracer.radiance(test::airlight_ray(), rng));
@@ -463,7 +463,7 @@ TEST_CASE("equiangular samples of a spot light in thin haze: the same mean as th
     double mean[2], error[2];
     for (const bool equiangular : {false, true}) {
         const PathTracer tracer(spot, {.max_diffuse_bounces = 1, .equiangular = equiangular}, haze); // (single scattering and the floor's light: fast)
-        Pcg32 rng(1, 2);
+        Random rng(1, 2);
         const int n = int(test::samples(100000));
         double sum = 0, squares = 0;
         for (int i = 0; i < n; ++i) {
@@ -499,7 +499,7 @@ TEST_CASE("regression: a light sample through frosted glass from inside it takes
     const PathTracer absorbed(scene, {}, layer);
     const Ray<T> down{{0.05f, 0.5f, 0.02f}, normalize(Vec3<T>(0.01f, -1, 0.02f))};
     double in_clear = 0, in_layer = 0;
-    Pcg32 rng(3, 4);
+    Random rng(3, 4);
     const long n = test::samples(400000);
     for (long i = 0; i < n; ++i) {
         in_clear += clear.radiance(down, rng).x;

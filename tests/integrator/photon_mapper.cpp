@@ -20,7 +20,7 @@ TEST_CASE("the photon mapper's direct light is Whitted's: one radiometric conven
                       Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = {0.7f, 0.5f, 0.3f}}, .kd = 0.9f, .ka = 0}}};
     const Whitted whitted(scene);
     const PhotonMapper mapper(scene, {.tracing = {.global_photons = 20000, .caustic_photons = 0}, .gather_rays = 0});
-    Pcg32 rng(1u, 1u);
+    Random rng(1u, 1u);
     for (float x : {-1.0f, 0.0f, 0.7f, 2.0f}) {
         const Ray<float> ray{{x, 1, 2}, normalize(Vec3<float>{0, -1, -1})};
         const Rgb<float> a = whitted.radiance(ray), b = mapper.radiance(ray, rng);
@@ -41,7 +41,7 @@ TEST_CASE("indirect light: a white wall facing a lit red floor turns red")
     // Whitted, with direct light only, sees the face black.
     CHECK(Whitted(scene).radiance(at_face) == Rgb<float>(0.0f));
     const PhotonMapper mapper(scene, {.tracing = {.global_photons = 200000, .caustic_photons = 0}, .global = {.radius = 0.3f, .excluded = Photon::direct | Photon::caustic}, .gather_rays = 0});
-    Pcg32 rng(2u, 2u);
+    Random rng(2u, 2u);
     const Rgb<float> wall = mapper.radiance(at_face, rng);
     CHECK(wall.x > 0.005f);
     CHECK(wall.x > 5 * wall.y); // colour bleeding: the wall takes the floor's red
@@ -66,7 +66,7 @@ TEST_CASE("glass casts a full shadow for shadow rays: the light through it comes
     // Whitted lets the shadow ray through the glass (kt, refraction ignored).
     CHECK(Whitted(scene).radiance(down).x > 0.1f);
     // The photon mapper without caustic photons sees a full shadow.
-    Pcg32 rng(3u, 3u);
+    Random rng(3u, 3u);
     const PhotonMapper dark(scene, {.tracing = {.global_photons = 0, .caustic_photons = 0}, .gather_rays = 0});
     CHECK(dark.radiance(down, rng) == Rgb<float>(0.0f));
     // With them, the focused light: brighter than the unshadowed floor (E = I / h^2 = 30 / 36).
@@ -101,7 +101,7 @@ TEST_CASE("shadow rays saved where photons agree (Jensen and Christensen 1995): 
     CHECK(decided > points * 8 / 10);
     CHECK(wrong <= points / 200);
     // A point well inside the shadow and one well outside render the same either way.
-    Pcg32 rng(4u, 4u);
+    Random rng(4u, 4u);
     for (const Vec3<float> at : {Vec3<float>{0.3f, 0, 0.2f}, Vec3<float>{3, 0, -2}}) {
         const Ray<float> ray{at + Vec3<float>{0, 1, 1}, Vec3<float>{0, -1, -1}};
         CHECK(fast.radiance(ray, rng).x == doctest::Approx(plain.radiance(ray, rng).x).epsilon(1e-5));
@@ -161,7 +161,7 @@ TEST_CASE("the photon mapper's furnace: 1.0 within 0.5 %, read directly and by f
             const Mapper mapper(scene, {.tracing = {.global_photons = std::size_t(test::samples(200000)), .caustic_photons = 0, .max_bounces = 64, .seed = 2},
                                         .global = {.radius = 0.1f, .excluded = Photon::direct | Photon::caustic},
                                         .gather_rays = gather});
-            const double mean = test::furnace_mean(four, [&](const Ray<float>& ray, Pcg32& rng) { return mapper.radiance(ray, rng); },
+            const double mean = test::furnace_mean(four, [&](const Ray<float>& ray, Random& rng) { return mapper.radiance(ray, rng); },
                                                    int(test::samples(gather > 0 ? 2000 : 10000)), true, 3);
             MESSAGE("mean ", mean);
             CHECK(mean == doctest::Approx(1.0).epsilon(test::resolved(0.005)));
@@ -216,7 +216,7 @@ TEST_CASE("the photon mapper in the two-lobe furnace: every path, read directly 
                                     .global = {.radius = 0.1f, .excluded = Photon::direct | Photon::caustic},
                                     .gather_rays = gather,
                                     .max_depth = 16});
-        const test::SampleStats stats = test::coated_furnace_samples([&](const Ray<float>& ray, Pcg32& rng) { return mapper.radiance(ray, rng); },
+        const test::SampleStats stats = test::coated_furnace_samples([&](const Ray<float>& ray, Random& rng) { return mapper.radiance(ray, rng); },
                                                                      int(test::samples(gather > 0 ? 500 : 2500)), 3);
         MESSAGE("mean ", stats.mean, " (closed form ", test::CoatedFurnace::all, ")");
         CHECK(stats.mean == doctest::Approx(test::CoatedFurnace::all).epsilon(test::resolved(0.01)));
@@ -233,7 +233,7 @@ TEST_CASE("the photon mapper on glossy surfaces: the sky furnace by shadow rays,
     // by sqrt(8): tests/effort.hpp.)
     const PhotonMapper sky_mapper(sky, {.tracing = {.global_photons = 20000, .caustic_photons = 0}, .gather_rays = 8, .area_light_grid = 8});
     for (const double theta : {0.0, 60.0}) {
-        Pcg32 rng(3, 3);
+        Random rng(3, 3);
         double sum = 0;
         const long samples = test::samples(4000);
         for (long i = 0; i < samples; ++i) sum += sky_mapper.radiance(test::furnace_ray<float>(theta), rng).x;
@@ -253,7 +253,7 @@ TEST_CASE("the photon mapper on glossy surfaces: the sky furnace by shadow rays,
         for (const float z : {-0.3f, 0.3f}) {
             const Vec3<float> eye{-0.2f, 2.5f, 0.2f};
             const Ray<float> ray{eye, normalize(Vec3<float>{x, 0, z} - eye)};
-            Pcg32 rng(1, 1);
+            Random rng(1, 1);
             caustic += mapper.radiance_parts(ray, rng).caustic.x;
             expected += exact.radiance(ray).x;
         }
@@ -346,7 +346,7 @@ TEST_CASE("in fog the photon mapper agrees with the path tracer: the beam estima
     CHECK(mapper.maps().volume.size() > 500000);
     const auto compare = [&](auto&& ray, int rays, int camera_samples) {
         Rgb<double> pt(0), pm(0);
-        Pcg32 rng(1, 2);
+        Random rng(1, 2);
         const int paths = int(test::samples(20000));
         for (int k = 0; k < rays; ++k) {
             for (int i = 0; i < paths; ++i) pt += Rgb<double>(tracer.radiance(ray(k), rng));
@@ -396,7 +396,7 @@ TEST_CASE("a volumetric caustic through a frosted ball in haze: the beam estimat
     const PhotonMapper mapper(scene, config, haze);
     double traced = 0, squares = 0, mapped = 0;
     const int rays = 30, paths = int(test::samples(75000));
-    Pcg32 rng(3, 4);
+    Random rng(3, 4);
     for (int k = 0; k < rays; ++k) {
         const Ray<T> ray{{-3, 0.1f + 0.03f * T(k), 1.7f + 0.02f * T(k)}, normalize(Vec3<T>(3, 0, -2))};
         for (int i = 0; i < paths; ++i) {
@@ -434,12 +434,12 @@ Rgb<double> photon_mapper_volume_furnace(const Air& air, float y0, float dy, flo
     config.indirect_volume_radius = indirect_volume_radius;
     const PhotonMapper mapper(sky, config, air);
     Rgb<double> sum(0);
-    Pcg32 rng(5, seed);
+    Random rng(5, seed);
     if (jittered == 0) {
         for (int k = 0; k < 81; ++k) sum += Rgb<double>(mapper.radiance(Ray<T>{{-3, y0 + dy * T(k % 9), z0 + dz * T(k / 9)}, {1, 0, 0}}, rng));
         return sum / 81.0;
     }
-    Pcg32 jitter(9, seed);
+    Random jitter(9, seed);
     for (int k = 0; k < 81; ++k)
         for (int j = 0; j < jittered; ++j) {
             const T oy = T(0.1) * (jitter.uniform<T>() - T(0.5)), oz = T(0.1) * (jitter.uniform<T>() - T(0.5));
@@ -495,7 +495,7 @@ TEST_CASE("regression: the photon mapper's volume furnace in a ball of smoke (th
         config.volume_radius = 0.05f;
         const PhotonMapper mapper(ball, config);
         Rgb<double> mean(0);
-        Pcg32 rng(5, 7);
+        Random rng(5, 7);
         for (int k = 0; k < 81; ++k) mean += Rgb<double>(mapper.radiance(Ray<T>{{-3, -0.6f + 0.15f * T(k % 9), -0.6f + 0.15f * T(k / 9)}, {1, 0, 0}}, rng)) / 81.0;
         return mean;
     };
@@ -530,7 +530,7 @@ TEST_CASE("regression: a final gather from a surface inside a ball of smoke scat
         config.volume_radius = 0.1f;
         config.gather_rays = gather_rays;
         const PhotonMapper mapper(scene, config);
-        Pcg32 rng(3, 9);
+        Random rng(3, 9);
         double sum = 0;
         for (int k = 0; k < 400; ++k) {
             const T y = -0.3f + 0.6f * T(k % 20) / 19, x = -0.3f + 0.6f * T(k / 20) / 19; // rays that meet the white ball

@@ -184,7 +184,7 @@ TEST_CASE("Whitted's furnace: inside a diffuse sphere of albedo 0.5 the walls re
         CAPTURE(four);
         const auto scene = test::furnace_scene(four);
         const Whitted whitted(scene);
-        CHECK(test::furnace_mean(four, [&](const Ray<float>& ray, Pcg32&) { return whitted.radiance(ray); }, 20000, false) ==
+        CHECK(test::furnace_mean(four, [&](const Ray<float>& ray, Random&) { return whitted.radiance(ray); }, 20000, false) ==
               doctest::Approx(1.0).epsilon(1e-4));
     }
     // One light at the centre: 0.5 everywhere, exactly.
@@ -228,7 +228,7 @@ TEST_CASE("Whitted in the two-lobe furnace: direct light on the base and the coa
     // base reads its direct light: 0.5 / 0.8 = 0.625.
     const auto scene = test::coated_furnace_scene();
     const Whitted whitted(scene, {.max_depth = 16, .min_weight = 1e-6f});
-    const test::SampleStats stats = test::coated_furnace_samples([&](const Ray<float>& ray, Pcg32&) { return whitted.radiance(ray); }, 2000);
+    const test::SampleStats stats = test::coated_furnace_samples([&](const Ray<float>& ray, Random&) { return whitted.radiance(ray); }, 2000);
     CHECK(stats.mean == doctest::Approx(test::CoatedFurnace::whitted).epsilon(0.01));
     CHECK(stats.largest <= 1.001 * test::CoatedFurnace::whitted); // no sample is random: every one reads the same
 }
@@ -288,7 +288,7 @@ TEST_CASE("Whitted's glossy furnace: a rough metal of reflectance 1 under a unif
             const Vec3<double> w = test::polar(theta, 0);
             const Ray<double> ray{{w.x, w.z, w.y}, {-w.x, -w.z, -w.y}};
             const double albedo = test::albedo_by_quadrature(metal.glossy({}), w);
-            Pcg32 rng(3, 1);
+            Random rng(3, 1);
             double mean = 0;
             for (int i = 0; i < 4; ++i) mean += whitted.radiance(ray, rng).x / 4;
             CAPTURE(roughness);
@@ -347,7 +347,7 @@ TEST_CASE("Whitted's single scattering in fog, marched with jittered steps, is t
     // tests/airlight.hpp's scene, as the path tracer's test.
     const auto scene = test::airlight_scene();
     const Whitted whitted(scene, {.march_steps = 64}, test::airlight_fog());
-    Pcg32 rng(4, 2);
+    Random rng(4, 2);
     Rgb<double> sum{0};
     const int n = 20000;
     for (int i = 0; i < n; ++i) sum += Rgb<double>(whitted.radiance(test::airlight_ray(), rng));
@@ -376,7 +376,7 @@ TEST_CASE("Whitted's single scattering in fog of varying density (constant in a 
     const VaryingFog fog(DensityGrid<float>(2, 2, 2, {Vec3<float>(-60), Vec3<float>(60)}, std::vector<float>(8, 1.0f)),
                          Rgb<float>(test::airlight_absorption), Rgb<float>(test::airlight_scattering), {.g = float(test::airlight_g)});
     const Whitted whitted(scene, {.march_steps = 64}, FilledAir<decltype(fog)>{.medium = fog});
-    Pcg32 rng(4, 3);
+    Random rng(4, 3);
     Rgb<double> sum{0};
     const int n = 20000;
     for (int i = 0; i < n; ++i) sum += Rgb<double>(whitted.radiance(test::airlight_ray(), rng));
@@ -408,7 +408,7 @@ TEST_CASE("Whitted marches ground fog along a rising ray: single scattering agai
         return std::abs(dy) < 1e-12 ? base * l * ea : base * l * height / dy * (ea - eb);
     };
     const Whitted whitted(scene, {.march_steps = 256}, FilledAir<decltype(fog)>{.medium = fog});
-    Pcg32 rng(4, 5);
+    Random rng(4, 5);
     Rgb<double> sum{0};
     const int n = 4000;
     const Ray<float> ray{Vec3<float>(origin), Vec3<float>(w)};
@@ -446,7 +446,7 @@ TEST_CASE("regression: Whitted's camera inside a ball of fog sees the light the 
     const auto scene = Scene{Lights{PointLight<float>{.position = {0, 1, 0}, .intensity = Rgb<float>(1)}},
                              Object{Sphere<float>({0, 0, 0}, 50), Foggy{.ior = 1, .interior = test::airlight_fog().medium}}};
     const Whitted whitted(scene, {.march_steps = 64});
-    Pcg32 rng(4, 4);
+    Random rng(4, 4);
     Rgb<double> sum{0};
     const int n = 20000;
     for (int i = 0; i < n; ++i) sum += Rgb<double>(whitted.radiance(test::airlight_ray(), rng));

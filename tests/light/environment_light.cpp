@@ -19,7 +19,7 @@ void check_sky_everywhere(const SceneT& scene, double expected, const std::strin
 {
     const Ray<double> down{{0.1, 1, 0.2}, {0, -1, 0}};
     // (Under a sanitizer an eighth of the estimates, and 1.4 %: tests/effort.hpp.)
-    const auto mean_of = [&](const auto& integrator, long n) { return test::mean_radiance(integrator, down, n, Pcg32(23, 1)); };
+    const auto mean_of = [&](const auto& integrator, long n) { return test::mean_radiance(integrator, down, n, Random(23, 1)); };
     CHECK_MESSAGE(mean_of(Whitted(scene, {.area_light_grid = 8}), 20000) == doctest::Approx(expected).epsilon(test::resolved(0.005)), what, ": Whitted");
     for (const AreaLightStrategy strategy : {AreaLightStrategy::mis, AreaLightStrategy::light_samples, AreaLightStrategy::bounces})
         CHECK_MESSAGE(mean_of(PathTracer(scene, {.area_lights = strategy}), 400000) == doctest::Approx(expected).epsilon(test::resolved(0.005)), what,
@@ -43,7 +43,7 @@ TEST_CASE("the sky is seen where rays leave the scene, beside the background, an
 {
     const Scene scene{Lights{EnvironmentLight<double>{.radiance = Rgb<double>(0.5, 1, 2)}},
                       Object{Sphere<double>({0, 0, 0}, 1), Diffuse<double>{}}};
-    Pcg32 rng(1, 1);
+    Random rng(1, 1);
     const Ray<double> up{{0, 2, 0}, {0, 1, 0}};
     CHECK(Whitted(scene).radiance(up, rng) == Rgb<double>(0.5, 1, 2));
     CHECK(PathTracer(scene).radiance(up, rng) == Rgb<double>(0.5, 1, 2));

@@ -64,7 +64,7 @@ void check_floor_under_map(const SceneT& scene, double expected, const std::stri
 {
     const Ray<double> down{{0.1, 1, 0.2}, {0, -1, 0}};
     // (Under a sanitizer an eighth of the estimates, and 1.4 %: tests/effort.hpp.)
-    const auto mean_of = [&](const auto& integrator, long n) { return test::mean_radiance(integrator, down, n, Pcg32(29, 3)); };
+    const auto mean_of = [&](const auto& integrator, long n) { return test::mean_radiance(integrator, down, n, Random(29, 3)); };
     CHECK_MESSAGE(mean_of(Whitted(scene, {.area_light_grid = 8}), 20000) == doctest::Approx(expected).epsilon(test::resolved(0.005)), what, ": Whitted");
     for (const AreaLightStrategy strategy : {AreaLightStrategy::mis, AreaLightStrategy::light_samples, AreaLightStrategy::bounces}) {
         // Sampling the hemisphere alone meets a small sun by chance: more paths for it.
@@ -102,7 +102,7 @@ TEST_CASE("an environment map lays its image on the sphere as documented: the ze
     CHECK(map.arriving_from({1, 0, 0}).x == doctest::Approx((16 + 17 + 26 + 27) / 4.0).epsilon(1e-9));
     // Turned by 90 degrees about +y (counterclockwise from above): what was at -z is at -x.
     const EnvironmentMap<double> turned(w, h, pixels, {.rotation_degrees = 90});
-    Pcg32 rng(3, 3);
+    Random rng(3, 3);
     for (int i = 0; i < 1000; ++i) {
         const Vec3<double> d = uniform_sphere<double>(rng);
         const Vec3<double> d_turned{d.z, d.y, -d.x}; // +90 degrees about y: -z goes to -x
@@ -123,7 +123,7 @@ TEST_CASE("an environment map is sampled as densely as its pdf says (chi-square)
         CHECK(c.stray == 0);
         // Each sample's density is pdf() of its direction, but where rounding moves a sample
         // across a pixel's edge.
-        Pcg32 rng(4, 4);
+        Random rng(4, 4);
         int off = 0;
         for (int i = 0; i < 100000; ++i) {
             const LightSample<double> s = map.sample({}, {rng.uniform<double>(), rng.uniform<double>()});
@@ -152,7 +152,7 @@ TEST_CASE("drawn by the image, a sky with a sun is estimated with the same mean 
     const Rgb<double> exact = irradiance_facing_up(map, 1500);
     // One-sample estimates of the irradiance on a surface facing up: L cos / pdf.
     const auto estimate = [&](bool by_image, long n) {
-        Pcg32 rng(11, by_image ? 1 : 2);
+        Random rng(11, by_image ? 1 : 2);
         double sum = 0, squares = 0;
         for (long i = 0; i < n; ++i) {
             const Vec2<double> u{rng.uniform<double>(), rng.uniform<double>()};

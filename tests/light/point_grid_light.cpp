@@ -71,7 +71,7 @@ TEST_CASE("POV-Ray's area_light with jitter moves each point by at most half a c
 {
     PointGridLight<double> light = grid_light(100);
     light.jitter = true;
-    Pcg32 rng(3, 4);
+    Random rng(3, 4);
     double largest = 0, sum = 0;
     int count = 0;
     for (int k = 0; k < 2000; ++k)
@@ -99,7 +99,7 @@ TEST_CASE("a floor under POV-Ray's area_light is shaded from its centre and shad
                                       .axis1 = {2, 0, 0}, .axis2 = {0, 0, 2}, .size1 = 3, .size2 = 3};
     const Scene scene{Lights{light}, Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
                       Object{Box<float>({-1, 1.95f, -3}, {-0.25f, 2.05f, 3}), Diffuse<float>{}}};
-    Pcg32 rng(1, 1);
+    Random rng(1, 1);
     const Ray<float> down{{0, 1, 0}, {0, -1, 0}};
     CHECK(Whitted(scene).radiance(down, rng).x == doctest::Approx(0.5 * 0.75).epsilon(1e-5));
     // Moved right, the floor sees every point: 1/2.

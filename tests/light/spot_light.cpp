@@ -42,7 +42,7 @@ TEST_CASE("a spot light's power is its falloff integrated over the sphere, and i
     }
     CHECK(spot_20_35.power().x == doctest::Approx(integral).epsilon(1e-6));
     // Photons everywhere: their weights average 1 (the power is shared), none outside the outer cone.
-    prism::Pcg32 rng(3, 1);
+    prism::Random rng(3, 1);
     double weight = 0;
     const int photons = 400000;
     for (int i = 0; i < photons; ++i) {

@@ -72,7 +72,7 @@ TEST_CASE("a patterned Emissive: its radiance times the pattern, read by surface
     // A ray that meets the sign sees the texel there (the quad's coordinates: u along its first edge).
     const auto scene = sign_scene();
     const PathTracer tracer(scene);
-    Pcg32 rng(1, 1);
+    Random rng(1, 1);
     CHECK(near(tracer.radiance(Ray<double>{{-0.7, 0.5, 0.3}, {0, 1, 0}}, rng), {5, 1, 0}));
     CHECK(near(tracer.radiance(Ray<double>{{0.3, 0.5, -0.3}, {0, 1, 0}}, rng), {0, 1, 5}));
 }
@@ -89,7 +89,7 @@ TEST_CASE("a patterned area light's power is pi A times its mean radiance, and i
     const Scene globe{Lights{}, Object{Sphere<double>({0, 3, 0}, 0.5), Emissive<double, ImageTexture<double>>{.radiance = Rgb<double>(2), .pattern = top_half()}}};
     CHECK(globe.area_lights().photon_power({}).x == doctest::Approx(pi<double> * (pi<double>) * 2.0 * 0.5).epsilon(0.01)); // pi (4 pi r^2) L / 2
     // Light samples at floor points, against the midpoint rule over the sign.
-    Pcg32 rng(5, 5);
+    Random rng(5, 5);
     for (const Vec3<double> p : {Vec3<double>{0, 0, 0}, Vec3<double>{-0.6, 0, 0.3}, Vec3<double>{0.8, 0, -0.4}}) {
         CAPTURE(p);
         const Rgb<double> exact = sign_irradiance_by_quadrature(p, 1000);
@@ -115,7 +115,7 @@ TEST_CASE("photons leave a patterned area light with the power each part of it s
     const auto scene = sign_scene();
     const auto lights = scene.area_lights();
     const Rgb<double> total = lights.photon_power({});
-    Pcg32 rng(9, 9);
+    Random rng(9, 9);
     const int n = 400000;
     Rgb<double> left(0.0), right(0.0);
     for (int i = 0; i < n; ++i) {

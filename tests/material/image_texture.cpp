@@ -67,7 +67,7 @@ TEST_CASE("regression: a double texture finds its texel in double: uv a hair sho
 
 TEST_CASE("the pyramid: every level the area average of the picture, for odd sizes too (against brute-force supersampling)")
 {
-    prism::Pcg32 rng(4, 2);
+    prism::Random rng(4, 2);
     for (const auto& [w, h] : {std::pair{8, 8}, std::pair{5, 3}, std::pair{7, 1}, std::pair{1, 6}}) {
         std::vector<float> texels(std::size_t(w * h * 3));
         for (float& x : texels) x = rng.uniform<float>();

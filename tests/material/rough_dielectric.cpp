@@ -56,7 +56,7 @@ TEST_CASE("rough dielectric: what the facets reflect and refract is at most what
         CAPTURE(c.theta);
         const auto lobe = frosted(c.roughness, c.eta);
         const Vec3<double> wo = test::polar(c.theta, 0);
-        prism::Pcg32 rng(8, 8);
+        prism::Random rng(8, 8);
         double all = 0, reflected = 0;
         constexpr int n = 400000;
         for (int i = 0; i < n; ++i) {
@@ -82,7 +82,7 @@ TEST_CASE("rough dielectric: what the facets reflect and refract is at most what
 TEST_CASE("rough dielectric: f(wo, wi) / n(wi)^2 = f(wi, wo) / n(wo)^2 across, and reflection reciprocal")
 {
     const auto lobe = frosted(0.4, 1.5); // n = 1 above, 1.5 below
-    prism::Pcg32 rng(4, 4);
+    prism::Random rng(4, 4);
     int pairs = 0;
     for (const double theta : {20.0, 45.0, 60.0, 75.0}) {
         const Vec3<double> a = test::polar(theta, 10 * theta);

@@ -93,7 +93,7 @@ namespace {
 template <class M>
 std::pair<Rgb<double>, Rgb<double>> mean_scattered(const M& material, const Vec3<double>& d, int n)
 {
-    prism::Pcg32 rng(7, 3);
+    prism::Random rng(7, 3);
     const Vec3<double> up{0, 1, 0};
     const auto hit = prism::Crossing<double>::flat(1, {0, 0, 0}, {0, 0, 0}, up, true);
     Rgb<double> diffuse(0), specular(0);
@@ -171,7 +171,7 @@ TEST_CASE("two lobes: one decision picks each with its reflectance, so the mean 
         CAPTURE(material.base.x);
         for (const prism::Lobes lobes : {prism::Lobes::all, prism::Lobes::delta}) {
             CAPTURE(int(lobes));
-            prism::Pcg32 rng(7, 3);
+            prism::Random rng(7, 3);
             Rgb<double> diffuse(0), specular(0);
             double largest = 0;
             for (int i = 0; i < n; ++i) {
@@ -189,7 +189,7 @@ TEST_CASE("two lobes: one decision picks each with its reflectance, so the mean 
             }
         }
         // No lobe at all: the path ends.
-        prism::Pcg32 rng(1, 1);
+        prism::Random rng(1, 1);
         Rgb<double> power(1);
         CHECK(!prism::scatter_photon(material, hit, d, power, rng, 0.0, 1.0, prism::Lobes::none));
     }
@@ -221,7 +221,7 @@ TEST_CASE("a diffuse photon at a shading normal: Veach's adjoint correction, aga
     for (const double alpha : {0.2, 0.6}) {
         const auto hit = leaning_hit(alpha);
         for (const Vec3<double> d : {prism::normalize(Vec3<double>{1, -1, 0}), prism::normalize(Vec3<double>{-0.3, -1, 0.2})}) {
-            prism::Pcg32 rng(11, 5);
+            prism::Random rng(11, 5);
             double importance = 0, radiance = 0;
             for (int i = 0; i < n; ++i) {
                 Rgb<double> power(1);

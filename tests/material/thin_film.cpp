@@ -118,7 +118,7 @@ TEST_CASE("A thin film over gold: thickness 0 is bare gold; photons through a co
     const double cos_i = -prism::dot(d, up);
     CHECK(band.kr.x == Approx(oil.spectral_reflectance(cos_i, 550.0, 300.0, true)).epsilon(1e-6));
     CHECK(band.fresnel_is_grey());
-    prism::Pcg32 rng(5, 9);
+    prism::Random rng(5, 9);
     const auto hit = prism::Crossing<double>::flat(1, {0, 0, 0}, {0, 0, 0}, up, true);
     Rgb<double> reflected(0), refracted(0);
     const int n = 400000;

@@ -100,7 +100,7 @@ TEST_CASE("a varnished floor defined in a test renders the same in Whitted and t
     const double r = prism::fresnel_schlick(std::sqrt(0.5), 1.5);
     const Rgb<double> expected = Rgb<double>(0.5 / prism::pi<double> * intensity / 16) + r * scene.background;
     const Rgb<double> whitted = prism::Whitted(scene).radiance(ray);
-    prism::Pcg32 rng(1, 1);
+    prism::Random rng(1, 1);
     const Rgb<double> mapped = prism::PhotonMapper(scene, {.tracing = {.global_photons = 1000, .caustic_photons = 0}, .gather_rays = 0}).radiance(ray, rng);
     for (int c = 0; c < 3; ++c) {
         CHECK(whitted[c] == doctest::Approx(expected[c]).epsilon(1e-12));

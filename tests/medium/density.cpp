@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/medium/density.hpp>
 
 #include <doctest/doctest.h>
@@ -27,7 +27,7 @@ std::vector<float> lattice_of(int nx, int ny, int nz, const Aabb<float>& box, F 
     return values;
 }
 
-Vec3<float> uniform_in_box(const Aabb<float>& box, Pcg32& rng)
+Vec3<float> uniform_in_box(const Aabb<float>& box, Random& rng)
 {
     return box.lo + Vec3<float>(rng.uniform<float>(), rng.uniform<float>(), rng.uniform<float>()) * (box.hi - box.lo);
 }
@@ -39,7 +39,7 @@ TEST_CASE("a DensityGrid reproduces a linear field exactly (trilinear interpolat
     const Aabb<float> box{{-1, 0, 2}, {3, 1, 4}};
     const auto linear = [](const Vec3<float>& p) { return 2.0f + 0.5f * p.x - 0.7f * p.y + 0.25f * p.z; };
     const DensityGrid<float> grid(5, 3, 7, box, lattice_of(5, 3, 7, box, linear));
-    Pcg32 rng(3, 4);
+    Random rng(3, 4);
     double worst = 0;
     for (int i = 0; i < 100000; ++i) {
         const Vec3<float> p = uniform_in_box(box, rng);
@@ -57,14 +57,14 @@ TEST_CASE("a DensityGrid reproduces a linear field exactly (trilinear interpolat
 TEST_CASE("a DensityGrid's max_over bounds the density at every point of any box, and is its greatest lattice_of value over the whole box")
 {
     const Aabb<float> box{{0, 0, 0}, {1, 2, 1}};
-    Pcg32 values_rng(8, 1);
+    Random values_rng(8, 1);
     const DensityGrid<float> grid(6, 9, 4, box, lattice_of(6, 9, 4, box, [&](const Vec3<float>&) { return 3 * values_rng.uniform<float>(); }));
     float most = 0;
     for (float v : grid.values()) most = std::max(most, v);
     CHECK(grid.max_over(box) == most);
     CHECK(grid.max_over(Aabb<float>::universe()) == most);
     CHECK(grid.max_over({{2, 2, 2}, {3, 3, 3}}) == 0.0f); // outside
-    Pcg32 rng(9, 9);
+    Random rng(9, 9);
     int broken = 0;
     for (int b = 0; b < 2000; ++b) {
         const Vec3<float> a = uniform_in_box({{-0.2f, -0.2f, -0.2f}, {1.2f, 2.2f, 1.2f}}, rng), c = uniform_in_box({{-0.2f, -0.2f, -0.2f}, {1.2f, 2.2f, 1.2f}}, rng);

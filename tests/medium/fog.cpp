@@ -26,7 +26,7 @@ TEST_CASE("Fog's free flights are unbiased in every channel: what passes is exp(
                                    std::pair{0.5, Rgb<double>(0)}}) {
         CAPTURE(d);
         CAPTURE(power.y);
-        Pcg32 rng(7, 2);
+        Random rng(7, 2);
         Rgb<double> passed{0}, scattered{0}, passed_squares{0}, scattered_squares{0};
         const long n = test::samples(2000000); // (under a sanitizer an eighth, and the bound 0.57 %: tests/effort.hpp)
         const Ray<double> ray{{0, 0, 0}, {1, 0, 0}};
@@ -69,7 +69,7 @@ TEST_CASE("Fog's flight_pdf is the density its flights are drawn with (chi-squar
     const int bins = 60;
     const long n = 400000;
     std::vector<double> observed(bins + 1, 0.0), expected(bins + 1, 0.0);
-    Pcg32 rng(11, 5);
+    Random rng(11, 5);
     for (long i = 0; i < n; ++i) {
         const FreeFlight<double> f = fog.sample_flight({{0, 0, 0}, {1, 0, 0}}, t_max, power, rng);
         observed[f.scattered ? std::size_t(std::min(bins - 1, int(f.distance / t_max * bins))) : std::size_t(bins)] += 1;
@@ -97,7 +97,7 @@ TEST_CASE("Fog's flight_pdf is the density its flights are drawn with (chi-squar
 TEST_CASE("a grey fog's flights weigh exactly (to rounding): its albedo where they scatter, 1 where they pass; a clear channel never turns NaN")
 {
     const Fog<float> grey{.absorption = Rgb<float>(0.25f), .scattering = Rgb<float>(0.75f)};
-    Pcg32 rng(1, 1);
+    Random rng(1, 1);
     int wrong = 0, scattered = 0;
     for (int i = 0; i < 10000; ++i) {
         const FreeFlight<float> f = grey.sample_flight({{0, 0, 0}, {0, 1, 0}}, 1.5f, Rgb<float>(0.3f, 1, 0.1f), rng);

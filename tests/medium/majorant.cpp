@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/core/sampling.hpp>
 #include <prism/medium/majorant.hpp>
 
@@ -17,13 +17,13 @@ TEST_CASE("the majorant grid's traversal covers a ray's part in the box once, in
     // side so that cells and lattice do not line up; rays from inside and outside, some
     // along the axes and on the box's faces; 1000 points checked on each stretch.
     const Aabb<float> box{{-1, -2, 0}, {2, 1, 1}};
-    Pcg32 values_rng(4, 4);
+    Random values_rng(4, 4);
     std::vector<float> values(11 * 11 * 11);
     for (float& v : values) v = values_rng.uniform<float>() < 0.3f ? 0.0f : 5 * values_rng.uniform<float>();
     const DensityGrid<float> field(11, 11, 11, box, values);
     const MajorantGrid<float> grid(field, 7);
     CHECK(grid.cells() == 7);
-    Pcg32 rng(1, 2);
+    Random rng(1, 2);
     int gaps = 0, backwards = 0, broken = 0, rays_inside = 0;
     for (int r = 0; r < 3000; ++r) {
         Ray<float> ray{Vec3<float>(-3 + 7 * rng.uniform<float>(), -4 + 7 * rng.uniform<float>(), -1 + 3 * rng.uniform<float>()), uniform_sphere<float>(rng)};

@@ -35,7 +35,7 @@ TEST_CASE("Henyey-Greenstein integrates to 1 over the sphere, its mean cosine is
     const HenyeyGreenstein<double> isotropic{0};
     for (const double c : {-1.0, -0.3, 0.0, 0.8, 1.0}) CHECK(isotropic.value(c) == doctest::Approx(1 / (4 * pi<double>)));
     // Sampling's isotropic branch (|g| < 1e-3) meets the general one continuously.
-    Pcg32 rng(3, 1);
+    Random rng(3, 1);
     const Vec3<double> d{0, 0, 1};
     double gap = 0;
     for (int i = 0; i < 1000; ++i) {
@@ -52,7 +52,7 @@ TEST_CASE("Henyey-Greenstein's sampling follows its density (chi-square), and ea
         CAPTURE(g);
         const HenyeyGreenstein<double> hg{g};
         const Vec3<double> d = normalize(Vec3<double>(0.3, -0.4, 0.8));
-        Pcg32 rng(11, 4);
+        Random rng(11, 4);
         double worst = 0, off_unit = 0;
         const test::Chi2 chi2 = test::chi2_polar(
             [&] {

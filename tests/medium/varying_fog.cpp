@@ -84,7 +84,7 @@ TEST_CASE("residual ratio tracking's transmittance is exp(-int sigma_t) on grade
         const Vec3<double> from{0.1, 0.3, 1.8}, to{1.2, 1.3, 0.6};
         const double length = prism::length(to - from);
         const double depth = length * (linear(from) + linear(to)) / 2;
-        Pcg32 rng(1, 1);
+        Random rng(1, 1);
         const Ray<double> ray{from, (to - from) / length};
         check_against(mean_of(n, [&](long) { return fog.transmittance(ray, length, rng); }),
                       {std::exp(-sigma_t.x * depth), std::exp(-sigma_t.y * depth), std::exp(-sigma_t.z * depth)}, test::resolved(1e-3));
@@ -103,7 +103,7 @@ TEST_CASE("residual ratio tracking's transmittance is exp(-int sigma_t) on grade
     {
         std::vector<float> ones(8, 0.7f);
         const VaryingFog fog(DensityGrid<double>(2, 2, 2, {{0, 0, 0}, {1.5, 1, 1}}, ones), absorption, scattering, {}, 3);
-        Pcg32 rng(2, 1);
+        Random rng(2, 1);
         const Ray<double> ray{{-4, 0.5, 0.5}, {1, 0, 0}};
         const double depth = 0.7 * 1.5;
         check_against(mean_of(n, [&](long) { return fog.transmittance(ray, infinity<double>, rng); }),
@@ -125,7 +125,7 @@ TEST_CASE("spectral tracking's flights are unbiased in every channel on a linear
     const auto tau = [&](double s) { return s * (linear(from) + linear(ray.at(s))) / 2; };
     for (const Rgb<double> power : {Rgb<double>(1), Rgb<double>(1, 0.2, 0.05)}) {
         CAPTURE(power.y);
-        Pcg32 rng(7, 3);
+        Random rng(7, 3);
         const long n = test::samples(1000000); // (under a sanitizer an eighth: the bound on the error widened by sqrt(8))
         long outside = 0;
         // Per channel: what passed, what scattered, and the distance where, each a mean with its standard error.
@@ -164,10 +164,10 @@ TEST_CASE("spectral tracking's flights are unbiased in every channel on a linear
 TEST_CASE("a grey VaryingFog that does not absorb weighs every flight 1 (delta tracking); one of constant density scatters as Fog does")
 {
     std::vector<float> values(27);
-    Pcg32 values_rng(3, 3);
+    Random values_rng(3, 3);
     for (float& v : values) v = 2 * values_rng.uniform<float>();
     const VaryingFog<DensityGrid<float>> grey(DensityGrid<float>(3, 3, 3, {Vec3<float>(-1), Vec3<float>(1)}, values), Rgb<float>(0), Rgb<float>(1.5f));
-    Pcg32 rng(5, 5);
+    Random rng(5, 5);
     int wrong = 0;
     for (int i = 0; i < 100000; ++i) {
         const FreeFlight<float> f = grey.sample_flight({{-2, 0.1f, 0.3f}, normalize(Vec3<float>(1, 0.2f, -0.1f))}, infinity<float>, Rgb<float>(0.2f, 1, 0.4f), rng);
@@ -179,7 +179,7 @@ TEST_CASE("a grey VaryingFog that does not absorb weighs every flight 1 (delta t
                                                   Rgb<float>(0.1f), Rgb<float>(0.4f));
     const Fog<float> fog{.absorption = Rgb<float>(0.1f), .scattering = Rgb<float>(0.4f)};
     double a = 0, b = 0;
-    Pcg32 r1(9, 1), r2(9, 2);
+    Random r1(9, 1), r2(9, 2);
     const int n = 400000;
     for (int i = 0; i < n; ++i) {
         a += double(!constant.sample_flight({{-1, 0, 0}, {1, 0, 0}}, 2.0f, Rgb<float>(1), r1).scattered);
@@ -220,7 +220,7 @@ TEST_CASE("regression: a VaryingFog too dense for its precision is refused by na
     // steps from each cell's entry, and end.
     values[5] = 1e4f;
     const VaryingFog fog(DensityGrid<float>(2, 2, 2, {Vec3<float>(0), Vec3<float>(1)}, values), Rgb<float>(0.1f), Rgb<float>(0.5f));
-    Pcg32 rng(1, 1);
+    Random rng(1, 1);
     const Ray<float> far{{-1e5f, 0.5f, 0.5f}, {1, 0, 0}};
     int outside = 0;
     double passed = 0;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/optics/fresnel.hpp>
 #include <prism/optics/refract.hpp>
 
@@ -92,7 +92,7 @@ TEST_CASE("conductor Fresnel with a complex index")
 TEST_CASE_TEMPLATE("with cos_t from refraction(), both policies give the very bits of their cos_i-only forms", T, float, double)
 {
     // The fast path (Snell's cos_t found once, by refraction) against its slow twin.
-    prism::Pcg32 rng(12u, 12u);
+    prism::Random rng(12u, 12u);
     int differ = 0, refracted = 0;
     for (int i = 0; i < 200000; ++i) {
         const T u = rng.uniform<T>();

@@ -51,7 +51,7 @@ TEST_CASE("Trowbridge-Reitz: visible normals are drawn by their density (chi-squ
             CAPTURE(theta);
             const TrowbridgeReitz<double> ggx(ax, ay);
             const Vec3<double> w = test::polar(theta, 110);
-            prism::Pcg32 rng(5, 1);
+            prism::Random rng(5, 1);
             const test::Chi2 chi2 = test::chi2_polar(
                 [&] {
                     const double u = rng.uniform<double>();

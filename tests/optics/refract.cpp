@@ -22,7 +22,7 @@ TEST_CASE_TEMPLATE("Snell's law n1 sin1 = n2 sin2 to 1e-6 over random directions
         const Vec3<double> c = prism::cross(Vec3<double>(a), Vec3<double>(b));
         return prism::length(c) / (prism::length(Vec3<double>(a)) * prism::length(Vec3<double>(b)));
     };
-    prism::Pcg32 rng(12u, 0u);
+    prism::Random rng(12u, 0u);
     int refracted = 0;
     for (int i = 0; i < 20000; ++i) {
         const Vec3<T> n = test::random_direction<T>(rng);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/optics/fresnel.hpp>
 #include <prism/optics/thin_film.hpp>
 
@@ -42,7 +42,7 @@ TEST_CASE("A film of zero thickness leaves the bare substrate's Fresnel reflecta
 
 TEST_CASE("A non-absorbing film over a non-absorbing substrate has R + T = 1, per polarisation")
 {
-    prism::Pcg32 rng(12, 1);
+    prism::Random rng(12, 1);
     for (int i = 0; i < 20000; ++i) {
         const double n0 = 1 + 0.6 * rng.uniform<double>(), n1 = 1 + 1.5 * rng.uniform<double>(), n2 = 1 + rng.uniform<double>();
         const double d = 2000 * rng.uniform<double>(), lambda = 380 + 400 * rng.uniform<double>();

@@ -8,13 +8,13 @@
 
 using prism::Rgb;
 using prism::Vec3;
-using prism::Pcg32;
+using prism::Random;
 using prism::Photon;
 using prism::uniform_sphere;
 
 TEST_CASE("the compact photon record: 28 bytes, power to 2^-16 relative, direction and normal to 1e-4 rad")
 {
-    Pcg32 rng(9u, 9u);
+    Random rng(9u, 9u);
     double worst_power = 0, worst_angle = 0, sum_in = 0, sum_out = 0;
     for (int i = 0; i < 20000; ++i) {
         const float scale = std::ldexp(1.0f, int(rng.next_u32() % 60) - 40); // 2^-40 ... 2^19

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // PhotonMap's density estimates against photon sets whose irradiance is known exactly.
 #include <prism/photon/photon_map.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/core/sampling.hpp>
 
 #include <doctest/doctest.h>
@@ -17,7 +17,7 @@ namespace {
 /// carrying E * area / N each: their irradiance is E everywhere inside.
 PhotonMap uniform_floor(std::size_t n, float e, std::uint64_t seed)
 {
-    Pcg32 rng(seed, 1u);
+    Random rng(seed, 1u);
     std::vector<Photon> photons(n);
     for (Photon& p : photons)
         p = {{2 * rng.uniform<float>() - 1, 0, 2 * rng.uniform<float>() - 1}, Rgb<float>(e * 4.0f / float(n)), {0, 1, 0}, {0, 1, 0}, Photon::direct};
@@ -138,7 +138,7 @@ TEST_CASE("the far side of a thin wall is not this side, and a curved surface ke
     // Inside a unit sphere, photons on its wall arriving at 85 degrees from their own
     // normal, in every azimuth, uniform over the sphere: against a query normal up to
     // 0.2 rad away, about 1 in 10 would arrive from "behind". All count.
-    Pcg32 rng(11u, 11u);
+    Random rng(11u, 11u);
     std::vector<Photon> wall(200000);
     for (Photon& p : wall) {
         const Vec3<float> at = uniform_sphere<float>(rng), n = -at;

@@ -4,6 +4,8 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <cstdio>
@@ -12,6 +14,7 @@
 #include <limits>
 #include <string>
 #include <unistd.h>
+#include <vector>
 
 using namespace prism;
 
@@ -114,28 +117,145 @@ TEST_CASE("a render that rejects sample values counts them in the film and, repo
     CHECK(quiet.empty());
 }
 
-TEST_CASE("stratified sub-pixel samples cover the pixel once per stratum")
+TEST_CASE("a pixel's footprints: every prefix of 2^m samples one in each elementary box, and each sample uniform")
 {
-    Pcg32 rng(1u, 1u);
-    CHECK(detail::pixel_sample<float>(0, 1, rng) == std::pair{0.5f, 0.5f});
-    int hits[3][3] = {};
-    for (int s = 0; s < 9; ++s) {
-        const auto [u, v] = detail::pixel_sample<float>(s, 9, rng);
-        ++hits[int(u * 3)][int(v * 3)];
-    }
-    for (auto& row : hits)
-        for (int h : row) CHECK(h == 1);
+    // Sobol's first two dimensions are a (0, 2)-sequence and Owen's scrambling keeps it
+    // one: samples [0, 2^m) put one footprint in each box of area 2^-m, of every shape
+    // (2^a x 2^(m-a)), whichever pixel and seed.
+    for (const std::uint64_t pixel : {0ULL, 7ULL, 123456ULL})
+        for (int m = 0; m <= 6; ++m) {
+            const int n = 1 << m;
+            const RenderConfig config{.spp = 64, .seed = pixel * 3 + 1};
+            for (int a = 0; a <= m; ++a) {
+                std::vector<int> boxes(std::size_t(n), 0);
+                for (int s = 0; s < n; ++s) {
+                    const auto c = detail::camera_sample<float>(config, pixel, std::uint64_t(s));
+                    REQUIRE(c.footprint[0] >= 0.0f);
+                    REQUIRE(c.footprint[0] < 1.0f);
+                    ++boxes[std::size_t(int(c.footprint[0] * float(1 << a)) * (n >> a) + int(c.footprint[1] * float(n >> a)))];
+                }
+                CHECK(std::ranges::count(boxes, 1) == n);
+            }
+        }
+    // With one sample (and single_sample_at_centre), the pixel's centre.
+    const auto centre = detail::camera_sample<double>(RenderConfig{.spp = 1}, 5, 0);
+    CHECK(centre.footprint == std::array{0.5, 0.5});
     // One sample not at the centre (a pass of progressive photon mapping, whose passes
-    // average over the pixel): uniform over it, so 10 000 of them fill every ninth.
-    int ninths[3][3] = {};
-    for (int i = 0; i < 10000; ++i) {
-        const auto [u, v] = detail::pixel_sample<float>(0, 1, rng, false);
-        REQUIRE(u >= 0.0f);
-        REQUIRE(u < 1.0f);
-        ++ninths[int(u * 3)][int(v * 3)];
+    // average over the pixel), from either sampler: uniform over the pixel, so 9000
+    // pixels' footprints fill every ninth of it alike (a chi-square test of 8 degrees of
+    // freedom: 26.1 is its 0.001 quantile from the top).
+    for (const SamplerKind kind : {SamplerKind::sobol, SamplerKind::independent}) {
+        std::array<int, 9> ninths{};
+        for (std::uint64_t pixel = 0; pixel < 9000; ++pixel) {
+            const auto c = detail::camera_sample<float>(RenderConfig{.spp = 1, .sampler = kind, .single_sample_at_centre = false}, pixel, 0);
+            ++ninths[std::size_t(int(c.footprint[0] * 3) * 3 + int(c.footprint[1] * 3))];
+        }
+        double chi2 = 0;
+        for (int h : ninths) chi2 += (h - 1000.0) * (h - 1000.0) / 1000.0;
+        CHECK(chi2 < 26.1);
     }
-    for (auto& row : ninths)
-        for (int h : row) CHECK(std::abs(h - 1111) < 120); // 3.5 standard deviations
+}
+
+namespace {
+
+/// An integrator whose radiance is a function of the camera ray's direction alone: a
+/// step (an edge across the pixel) plus a smooth part, so a pixel's value is the mean of
+/// the function over the pixel's footprints.
+struct Edge {
+    using scalar_type = double;
+    [[nodiscard]] static double f(const Vec3<double>& d) noexcept { return (d.x > 0.02 * d.z ? 1.0 : 0.0) + 4.0 * d.y * d.y; }
+    [[nodiscard]] Rgb<double> radiance(const Ray<double>& ray, Random&) const noexcept { return Rgb<double>(f(normalize(ray.direction))); }
+};
+
+} // namespace
+
+TEST_CASE("any prefix of a pixel's samples is unbiased, for either sampler: the mean over seeds of the first 3 of 64 samples is the pixel's integral")
+{
+    // Regression: sample s of n fell in row s div m of an m x m grid (m = floor(sqrt(n))),
+    // so the first samples of a large spp covered only the top of each pixel and a partial
+    // render was biased. The integral: a 2048 x 2048 midpoint rule over the pixel, by the
+    // camera's own rays.
+    const Camera<double> camera{.position = {0, 0, 0}, .look_at = {0.05, 0.1, -1}, .fov = 20};
+    const CameraRays<double> rays = camera.rays(1, 1);
+    double integral = 0;
+    for (int i = 0; i < 2048; ++i)
+        for (int j = 0; j < 2048; ++j) integral += Edge::f(normalize(rays.ray((i + 0.5) / 2048, (j + 0.5) / 2048).direction));
+    integral /= 2048.0 * 2048.0;
+    for (const SamplerKind kind : {SamplerKind::sobol, SamplerKind::independent}) {
+        const int seeds = 3000;
+        double sum = 0, squares = 0;
+        for (int seed = 0; seed < seeds; ++seed) {
+            const Accumulation sums = render_sums(camera, Edge{}, {.width = 1, .height = 1, .spp = 64, .sampler = kind, .threads = 1, .seed = std::uint64_t(seed),
+                                                                   .progress = false, .passes = {0, 3}});
+            const double mean = sums.sum(0, 0, 0).value() / 3.0;
+            sum += mean;
+            squares += mean * mean;
+        }
+        const double mean = sum / seeds, error = std::sqrt((squares / seeds - mean * mean) / (seeds - 1));
+        MESSAGE(std::string(kind == SamplerKind::sobol ? "sobol" : "independent"), ": ", mean, " against ", integral, ", standard error ", error);
+        CHECK(std::abs(mean - integral) < 4 * error);
+        CHECK(error > 0.001); // the edge crosses the pixel: the samples differ
+    }
+}
+
+TEST_CASE("a progressive render shows rounds of doubling samples, and ends on the bits of the plain render")
+{
+    const auto scene = busy_scene();
+    const Whitted integrator(scene);
+    const Camera<float> camera{.position = {0, 2, 6}, .look_at = {0, 1, 0}, .fov = 50};
+    const RenderConfig config{.width = 24, .height = 16, .spp = 11, .threads = 2, .seed = 5, .progress = false};
+    std::vector<std::uint64_t> rounds;
+    std::vector<Film> previews;
+    const Accumulation sums = render_progressive(camera, integrator, config, [&](const Accumulation& so_far) {
+        rounds.push_back(so_far.weight(3, 4));
+        previews.push_back(so_far.image());
+    });
+    CHECK(rounds == std::vector<std::uint64_t>{1, 2, 4, 8, 11});
+    // Each preview is the render of its first samples; the last is the whole render.
+    for (std::size_t k = 0; k < rounds.size(); ++k) {
+        RenderConfig prefix = config;
+        prefix.passes = {0, rounds[k]};
+        const Film film = render_sums(camera, integrator, prefix).image();
+        REQUIRE(std::memcmp(film.pixels().data(), previews[k].pixels().data(), film.pixels().size() * sizeof(film.pixels()[0])) == 0);
+    }
+    const Film whole = render(camera, integrator, config), last = sums.image();
+    CHECK(std::memcmp(whole.pixels().data(), last.pixels().data(), whole.pixels().size() * sizeof(whole.pixels()[0])) == 0);
+    // The layers ride along: render_layers' channels.
+    CHECK(sums.channels() == layer_channels<Whitted<std::remove_cvref_t<decltype(scene)>>>());
+}
+
+TEST_CASE("a render to a time budget takes a prefix of its samples: the bits of the render of that prefix")
+{
+    const auto scene = busy_scene();
+    const PathTracer integrator(scene);
+    const Camera<float> camera{.position = {0, 2, 6}, .look_at = {0, 1, 0}, .fov = 50};
+    RenderConfig config{.width = 32, .height = 24, .spp = 1 << 16, .threads = 2, .seed = 9, .progress = false};
+    // A budget spent at once: the first round, one sample, and no more.
+    config.seconds = 1e-9;
+    const Accumulation one = render_sums(camera, integrator, config);
+    CHECK(one.weight(0, 0) == 1);
+    CHECK(one.weight(31, 23) == 1);
+    // A budget of a fifth of a second: some prefix of the 65536 samples, the same in
+    // every pixel, whose bits are those of the render of that prefix.
+    config.seconds = 0.2;
+    const Accumulation some = render_sums(camera, integrator, config);
+    const std::uint64_t taken = some.weight(0, 0);
+    CHECK(taken >= 1);
+    CHECK(taken < (1u << 16));
+    CHECK(some.weight(17, 9) == taken);
+    RenderConfig prefix = config;
+    prefix.seconds = 0;
+    prefix.passes = {0, taken};
+    const Film expected = render_sums(camera, integrator, prefix).image(), got = some.image();
+    CHECK(std::memcmp(expected.pixels().data(), got.pixels().data(), got.pixels().size() * sizeof(got.pixels()[0])) == 0);
+    // A budget larger than the render needs: every sample, the plain render's bits.
+    RenderConfig small = config;
+    small.spp = 3;
+    small.seconds = 1e6;
+    const Film budgeted = render(camera, integrator, small);
+    small.seconds = 0;
+    const Film plain = render(camera, integrator, small);
+    CHECK(std::memcmp(plain.pixels().data(), budgeted.pixels().data(), plain.pixels().size() * sizeof(plain.pixels()[0])) == 0);
 }
 
 TEST_CASE("bad render settings are rejected")
@@ -143,6 +263,9 @@ TEST_CASE("bad render settings are rejected")
     const auto scene = busy_scene();
     const Whitted integrator(scene);
     CHECK_THROWS_WITH_AS((void)render(Camera<float>{}, integrator, {.spp = 0}), doctest::Contains("spp"), std::invalid_argument);
+    for (const double seconds : {-1.0, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()})
+        CHECK_THROWS_WITH_AS((void)render(Camera<float>{}, integrator, {.seconds = seconds}), doctest::Contains("RenderConfig seconds must be finite and >= 0"),
+                             std::invalid_argument);
     CHECK_THROWS_AS((void)render(Camera<float>{}, integrator, {.width = -4}), std::invalid_argument);
 }
 
@@ -283,7 +406,7 @@ TEST_CASE("random scenes, hostile cameras: no sample of any integrator is NaN, i
     // floor, rendered by Whitted, the path tracer and the photon mapper. Every sample
     // the render rejects (not finite, or negative) is counted by the film: none may be.
     using S = Sphere<float>;
-    Pcg32 rng(2026u, 15u);
+    Random rng(2026u, 15u);
     const auto uniform = [&](float lo, float hi) { return lo + (hi - lo) * rng.uniform<float>(); };
     const auto point = [&](float r) { return Vec3<float>(uniform(-r, r), uniform(-r, r), uniform(-r, r)); };
     std::size_t renders = 0, samples = 0, lit = 0;

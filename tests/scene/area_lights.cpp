@@ -33,7 +33,7 @@ void check_area_light_everywhere(const SceneT& scene, double x, double z, double
 {
     const Ray<double> down{{x, 1e-3, z}, {0, -1, 0}};
     // (Under a sanitizer an eighth of the estimates, and 1.4 %: tests/effort.hpp.)
-    const auto mean_of = [&](const auto& integrator, long n) { return test::mean_radiance(integrator, down, n, Pcg32(17, 3)); };
+    const auto mean_of = [&](const auto& integrator, long n) { return test::mean_radiance(integrator, down, n, Random(17, 3)); };
     const double whitted = mean_of(Whitted(scene), 20000);
     CHECK_MESSAGE(whitted == doctest::Approx(expected).epsilon(test::resolved(0.005)), what, ": Whitted");
     for (const AreaLightStrategy strategy : {AreaLightStrategy::mis, AreaLightStrategy::light_samples, AreaLightStrategy::bounces}) {
@@ -112,7 +112,7 @@ TEST_CASE("an area light shines from its front, and from its back only when two-
     const double L = 3, r = 0.4, h = 1.2;
     const double expected = floor_albedo * L * r * r / (r * r + h * h);
     const Ray<double> down{{0, 1e-3, 0}, {0, -1, 0}};
-    Pcg32 rng(1, 1);
+    Random rng(1, 1);
     // Facing up, away from the floor: one-sided it lights nothing below it.
     const auto away = lit_floor(Disk<double>({0, h, 0}, {0, 1, 0}, r), L);
     CHECK(Whitted(away).radiance(down, rng).x == 0);
@@ -149,7 +149,7 @@ TEST_CASE("the scene's emitters are sampled as densely as AreaLights::pdf says: 
     CHECK(std::abs(c.missing) < 2e-3 * 1e6);
     CHECK(c.stray < 100);
     // Each sample's density is what pdf() gives the point a ray toward it meets, to rounding.
-    Pcg32 rng(9, 9);
+    Random rng(9, 9);
     for (int i = 0; i < 20000; ++i) {
         const LightSample<double> s = lights.sample(p, {rng.uniform<double>(), rng.uniform<double>()});
         const auto hit = scene.closest_hit({p, s.wi}, {0.0, infinity<double>});
@@ -179,7 +179,7 @@ TEST_CASE("photons aimed from an area light at a sphere carry the power the ligh
     const BoundingSphere<double> target{{0.8, 0, 0.2}, 0.4};
     PhotonAim<double> aim{&target, nullptr};
     aim.power = lights.photon_power(aim);
-    Pcg32 rng(8, 8);
+    Random rng(8, 8);
     double carried = 0;
     const int n = 400000;
     for (int i = 0; i < n; ++i) carried += lights.emit_photon(aim, rng.uniform<double>(), rng.uniform<double>(), rng).weight.x;
@@ -232,7 +232,7 @@ TEST_CASE("an emitting mesh of 1280 triangles is drawn on by each triangle's are
     for (const Photon& p : maps.global.photons()) total += p.power().x;
     CHECK(total == doctest::Approx(pi<double> * L * area).epsilon(1.0 / 128));
     // Points drawn on it lie on its triangles: as far from the centre as its vertices, or nearer (flat faces).
-    Pcg32 rng(2, 2);
+    Random rng(2, 2);
     for (int i = 0; i < 20000; ++i) {
         const SurfacePoint<double> p = surface.sample_area({rng.uniform<double>(), rng.uniform<double>()});
         CHECK(length(p.point - Vec3<double>(0, 2, 0)) <= 0.5 + 1e-12);

@@ -132,7 +132,7 @@ TEST_CASE_TEMPLATE("closest_hit loses no hit and spawns on the right side, near 
     for_each_case([&]<class Case>() {
         for (const double distance : {1.0, 1e2, 1e3, 1e4})
             for (const double size : {1.0, 1e-3}) {
-                Pcg32 rng(seed++, 3u);
+                Random rng(seed++, 3u);
                 Counts cell;
                 for (int k = 0; k < 4; ++k) {
                     try {
@@ -185,7 +185,7 @@ auto scanned_hit(const SceneT& scene, const R& ray, Interval<float> range)
 
 TEST_CASE("an array's Bvh finds what a scan of every object finds: the same object at the same t, and the same shadows")
 {
-    Pcg32 rng(21u, 4u);
+    Random rng(21u, 4u);
     ObjectArray<Sphere<float>, Diffuse<float>> balls;
     for (int i = 0; i < 1000; ++i) {
         const Vec3<float> c = (Vec3<float>{rng.uniform<float>(), rng.uniform<float>(), rng.uniform<float>()} - Vec3<float>(0.5f)) * 20.0f;
@@ -232,7 +232,7 @@ TEST_CASE("slots are visited nearest first, and find what a scan of the slots in
     // twin there, and must still report the far slot's copy, at the same t (the scan
     // asks the far slot first). Before them a scanned slot of three balls (too few for a
     // tree), also twinned in the near slot; after them a scanned slot of planes.
-    Pcg32 rng(33u, 5u);
+    Random rng(33u, 5u);
     const auto random_point = [&] { return (Vec3<float>{rng.uniform<float>(), rng.uniform<float>(), rng.uniform<float>()} - Vec3<float>(0.5f)) * 20.0f; };
     ObjectArray<Sphere<float>, Diffuse<float>> few, far, near;
     for (int i = 0; i < 600; ++i) {
@@ -341,7 +341,7 @@ Rgb<float> scanned_transmittance(const SceneT& scene, const Ray<float>& ray, flo
 /// 16 slots of 16 distinct types, more than a chain of comparisons dispatches (a table of
 /// functions does): Kind<0..11> balls (one object each, or arrays of a few, or a large
 /// array), two of glass, twins across slots and within one, and two planes.
-auto many_types_scene(Pcg32& rng)
+auto many_types_scene(Random& rng)
 {
     const auto random_point = [&] { return (Vec3<float>{rng.uniform<float>(), rng.uniform<float>(), rng.uniform<float>()} - Vec3<float>(0.5f)) * 20.0f; };
     const auto ball = [&]<std::size_t I>(Index<I>) {
@@ -377,7 +377,7 @@ auto many_types_scene(Pcg32& rng)
 
 TEST_CASE("a scene of many different types keeps one tree over them all, and finds what a scan of the slots finds: the same object at the same t, and the same shadows")
 {
-    Pcg32 rng(41u, 6u);
+    Random rng(41u, 6u);
     const auto scene = many_types_scene(rng);
     static_assert(decltype(scene)::slot_count == 16);
     REQUIRE(scene.has_tree());
@@ -463,7 +463,7 @@ TEST_CASE("overlapping glass: the scene's tree gives a shadow ray the bits the g
     // Nested glass (priority walk) among opaque objects of eight types: where no opaque
     // object is in the way, the light passing is what a scene of the glass alone (no tree
     // of its own: one slot) lets through.
-    Pcg32 rng(43u, 7u);
+    Random rng(43u, 7u);
     ObjectArray<Sphere<float>, Dielectric<float>> glass;
     for (int k = 0; k < 7; ++k) // too few for a tree of their own
         glass.items.push_back({Sphere<float>({float(k % 4) - 1.5f, float(k / 4) - 1.0f, 0}, 0.9f),

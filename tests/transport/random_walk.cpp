@@ -29,7 +29,7 @@ struct WalkCounts {
 template <Transport Mode, class SceneT>
 WalkCounts walk_counts(const SceneT& scene, WalkLimits limits, int count)
 {
-    Pcg32 rng(3, 5);
+    Random rng(3, 5);
     const SpectralBands<double> bands(1);
     WalkCounts out;
     for (int i = 0; i < count; ++i) {
@@ -88,7 +88,7 @@ TEST_CASE("in a fog a walk scatters as in a closed room: a photon 1 / (1 - albed
     const FilledAir<Fog<double>> air{.medium = {.absorption = Rgb<double>(1 - albedo), .scattering = Rgb<double>(albedo), .phase = {.g = 0.7}}};
     const SpectralBands<double> bands(1);
     const auto count = [&]<Transport Mode>(WalkLimits limits, int n, double& largest) {
-        Pcg32 rng(5, 9);
+        Random rng(5, 9);
         double vertices = 0;
         for (int i = 0; i < n; ++i) {
             random_walk<Mode>(scene, air, bands, Ray<double>{{0, 0, 0}, uniform_sphere<double>(rng)}, Rgb<double>(1), rng, limits,
@@ -136,7 +136,7 @@ TEST_CASE("in fog filling graded air a walk scatters along its curved path: it r
     const double arc = arc_to(x_exact) - arc_to(0);
     CHECK(arc == doctest::Approx(42.956).epsilon(1e-4));
     const SpectralBands<double> bands(1);
-    Pcg32 rng(8, 1);
+    Random rng(8, 1);
     const int n = 100000;
     int reached = 0, scattered = 0, far = 0;
     double path = 0;

@@ -4,7 +4,7 @@
 #pragma once
 
 #include <prism/core/math.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -24,10 +24,10 @@ template <Scalar T>
 }
 
 template <Scalar T>
-[[nodiscard]] inline Vec3<T> uniform_sphere(Pcg32& rng) noexcept
+[[nodiscard]] inline Vec3<T> uniform_sphere(Random& rng) noexcept
 {
-    const T u = rng.uniform<T>();
-    return uniform_sphere(u, rng.uniform<T>());
+    const auto [u, v] = rng.uniform2<T>();
+    return uniform_sphere(u, v);
 }
 
 /// Two unit vectors that make an orthonormal frame with the unit vector n (Duff et al.
@@ -44,10 +44,11 @@ template <Scalar T>
 /// A cosine-distributed direction about the unit normal n (Malley's method: a uniform
 /// point on the disk, lifted onto the hemisphere): the diffuse bounce of a photon.
 template <Scalar T>
-[[nodiscard]] inline Vec3<T> cosine_hemisphere(const Vec3<T>& n, Pcg32& rng) noexcept
+[[nodiscard]] inline Vec3<T> cosine_hemisphere(const Vec3<T>& n, Random& rng) noexcept
 {
-    const T r = prism::sqrt(rng.uniform<T>());
-    const T phi = T(2) * pi<T> * rng.uniform<T>();
+    const auto [u, v] = rng.uniform2<T>();
+    const T r = prism::sqrt(u);
+    const T phi = T(2) * pi<T> * v;
     const T x = r * std::cos(phi), y = r * std::sin(phi);
     const T z = prism::sqrt(clamp(T(1) - x * x - y * y, T(0), T(1)));
     const auto [s, t] = orthonormal_frame(n);
@@ -59,7 +60,7 @@ template <Scalar T>
 /// by reflectance / p, so the expected power leaving is reflectance times the power
 /// arriving, in every channel. Returns false when the photon is absorbed.
 template <Scalar T>
-[[nodiscard]] inline bool russian_roulette(Rgb<T>& power, const Rgb<T>& reflectance, Pcg32& rng) noexcept
+[[nodiscard]] inline bool russian_roulette(Rgb<T>& power, const Rgb<T>& reflectance, Random& rng) noexcept
 {
     const T p = clamp(max_component(reflectance), T(0), T(1));
     if (!(p > T(0)) || rng.uniform<T>() >= p) return false;
@@ -73,7 +74,7 @@ template <Scalar T>
 /// whose throughput has fallen is likely ended; one still carrying much is not, however many
 /// lobes it was drawn through. Returns false when the path ends.
 template <Scalar T>
-[[nodiscard]] inline bool path_roulette(Rgb<T>& throughput, Pcg32& rng) noexcept
+[[nodiscard]] inline bool path_roulette(Rgb<T>& throughput, Random& rng) noexcept
 {
     const T p = std::min(T(1), max_component(throughput));
     if (!(p > T(0)) || !(rng.uniform<T>() < p)) return false;

@@ -216,6 +216,9 @@ std::optional<Accumulation> render_dealt(MPI_Comm comm, const RenderConfig& conf
     if (tile < 1) prism::detail::throw_invalid("prism::mpi tile must be >= 1, got ", tile);
     const PixelWindow window = prism::detail::render_window(config);
     (void)prism::detail::render_passes(config);
+    // A budget per tile would give the tiles different samples.
+    if (prism::detail::render_seconds(config) != 0.0)
+        prism::detail::throw_invalid("prism::mpi renders every sample of the range: RenderConfig seconds must be 0, got ", config.seconds);
     const Tiles tiles(window, tile);
 
     // Each tile's record: its number, the values it rejected, whether a sum overflowed,
@@ -431,6 +434,8 @@ template <Integrator I>
                 prism::detail::throw_invalid("prism::mpi::render_sums takes a pass count, not a time budget: seconds must be 0, got ",
                                              integrator.config().seconds);
         }
+        if (prism::detail::render_seconds(config) != 0.0)
+            prism::detail::throw_invalid("prism::mpi::render_sums takes a pass count, not a time budget: RenderConfig seconds must be 0, got ", config.seconds);
         const PassRange passes = prism::detail::render_passes(config);
         (void)camera.rays(config.width, config.height); // every rank refuses alike, before any pass
         if constexpr (requires { integrator.check_passes(config); }) integrator.check_passes(config);

@@ -26,7 +26,7 @@
 
 #include <prism/accel/kd_tree.hpp>
 #include <prism/core/math.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/core/sampling.hpp>
 
 #include <algorithm>
@@ -54,7 +54,7 @@ struct HemisphereGather {
 /// kept for them (the one allocation, per gather: a cache record's); without, nothing
 /// is allocated.
 template <bool Gradients, Scalar T, class Sample>
-[[nodiscard]] HemisphereGather<T> gather_hemisphere(const Vec3<T>& n, int m, int cells_n, Pcg32& rng, Sample&& sample)
+[[nodiscard]] HemisphereGather<T> gather_hemisphere(const Vec3<T>& n, int m, int cells_n, Random& rng, Sample&& sample)
 {
     const auto [t, b] = orthonormal_frame(n);
     const std::size_t count = std::size_t(m) * std::size_t(cells_n);

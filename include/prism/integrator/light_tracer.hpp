@@ -122,10 +122,10 @@ public:
             typename CameraRays<T>::Projection at;
             Vec3<T> to_camera;
         };
-        const auto look_from = [&](const Vec3<T>& p, Pcg32& rng) -> std::optional<Seen> {
+        const auto look_from = [&](const Vec3<T>& p, Random& rng) -> std::optional<Seen> {
             Vec3<T> eye = rays.origin;
             if (rays.thin_lens()) {
-                const T u = rng.template uniform<T>(), v = rng.template uniform<T>();
+                const auto [u, v] = rng.template uniform2<T>();
                 eye = rays.lens_point(u, v);
             }
             const auto seen = rays.thin_lens() ? rays.project(p, eye) : rays.project(p);

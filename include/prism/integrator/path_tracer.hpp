@@ -32,7 +32,7 @@
 
 #include <prism/core/check.hpp>
 #include <prism/core/overload.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/transport/direct.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/medium/air.hpp>
@@ -108,7 +108,7 @@ public:
     /// The radiance along a camera ray: light at every diffuse vertex by shadow rays, and
     /// the background where a path of specular bounces only leaves the scene (the
     /// background is seen, as in Whitted, but lights nothing).
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Random& rng) const noexcept
     {
         Rgb<T> sum{T(0)};
         const LightSampling sampling{&rng, config_.area_light_grid};

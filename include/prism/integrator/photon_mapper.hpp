@@ -24,7 +24,7 @@
 #include <prism/core/check.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/core/parallel.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/geometry/crossings.hpp>
 #include <prism/integrator/irradiance_cache.hpp>
 #include <prism/light/light.hpp>
@@ -206,7 +206,7 @@ public:
             std::vector<IrradianceRecord<T>> records(candidates.size());
             detail::parallel_for(candidates.size(), render.threads, [&](std::size_t i) {
                 const Candidate& c = candidates[i];
-                Pcg32 rng(render.seed ^ 0x1cac4eULL, c.stream);
+                Random rng(render.seed ^ 0x1cac4eULL, c.stream);
                 const int m = std::max(1, int(std::lround(std::sqrt(T(settings.rays) / pi<T>))));
                 const int cells_n = std::max(1, settings.rays / m);
                 IrradianceRecord<T> r{c.hit.point, c.n, gather<true>(c.hit, c.n, rng, scene_->media_at(c.hit.point), m, cells_n), T(0)};
@@ -225,11 +225,11 @@ public:
     }
 
     /// The radiance along a camera ray: direct, caustic and indirect light summed.
-    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Pcg32& rng) const noexcept { return radiance_parts(ray, rng).sum(); }
+    [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Random& rng) const noexcept { return radiance_parts(ray, rng).sum(); }
 
     /// The radiance along a camera ray by where its light came from last: the lights by
     /// shadow rays (and the background), the caustic map, the indirect estimate.
-    [[nodiscard]] LightParts<T> radiance_parts(const Ray<T>& ray, Pcg32& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), scene_->media_at(ray.origin)); }
+    [[nodiscard]] LightParts<T> radiance_parts(const Ray<T>& ray, Random& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), scene_->media_at(ray.origin)); }
 
     /// The scene and the air its camera rays start in (render_layers' surface layers).
     [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
@@ -267,7 +267,7 @@ private:
 
     /// Radiance along the ray for light of one wavelength (nanometres), or of all (0), in
     /// the transmissive objects `media` (medium/nesting.hpp).
-    [[nodiscard]] LightParts<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Pcg32& rng, T wavelength, const MediumStack& media) const noexcept
+    [[nodiscard]] LightParts<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Random& rng, T wavelength, const MediumStack& media) const noexcept
     {
         Ray<T> segment = ray;
         if constexpr (has_media) {
@@ -349,7 +349,7 @@ private:
     }
 
     template <class M>
-    [[nodiscard]] LightParts<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight, Pcg32& rng,
+    [[nodiscard]] LightParts<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight, Random& rng,
                                       T wavelength, const MediumStack& media) const noexcept
     {
         const Crossing<T>& hit = h.crossing;
@@ -442,7 +442,7 @@ private:
 
     /// Irradiance from the lights by shadow rays (glass opaque), or by what the photons
     /// say about visibility where they agree.
-    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, Pcg32& rng) const noexcept
+    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, Random& rng) const noexcept
     {
         return direct(hit, rng, [](const Vec3<T>&) { return Rgb<T>(T(1)); });
     }
@@ -450,7 +450,7 @@ private:
     /// The same, each light sample arriving from wi weighed by `weigh(wi)` (a glossy
     /// lobe's BSDF: then the radiance it reflects).
     template <class Weigh>
-    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, Pcg32& rng, Weigh&& weigh) const noexcept
+    [[nodiscard]] Rgb<T> direct(const Crossing<T>& hit, Random& rng, Weigh&& weigh) const noexcept
     {
         Rgb<T> irradiance{T(0)};
         const LightSampling sampling{&rng, config_.area_light_grid};
@@ -524,7 +524,7 @@ private:
     /// they scatter in the fog about it); from a surface in the air, they follow the air's
     /// curve.
     template <bool Gradients = false>
-    [[nodiscard]] HemisphereGather<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Pcg32& rng, const MediumStack& media, int m, int cells_n) const
+    [[nodiscard]] HemisphereGather<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Random& rng, const MediumStack& media, int m, int cells_n) const
     {
         return gather_hemisphere<Gradients, T>(n, m, cells_n, rng, [&](const Vec3<T>& direction) {
             std::pair<Rgb<T>, T> found{Rgb<T>(T(0)), infinity<T>};
@@ -577,7 +577,7 @@ private:
     /// global map gives its radiance (global_radiance). Draws of the lobe's delta part
     /// count nothing here: the caller follows that part.
     template <class Lobe>
-    [[nodiscard]] Rgb<T> gather_glossy(const GlossyAt<Lobe>& lobe, const Crossing<T>& hit, Pcg32& rng, const MediumStack& media) const
+    [[nodiscard]] Rgb<T> gather_glossy(const GlossyAt<Lobe>& lobe, const Crossing<T>& hit, Random& rng, const MediumStack& media) const
     {
         Rgb<T> sum{T(0)};
         const auto at_vertex = [&]<class M>(const M& material, const WalkVertex<T>& at) {

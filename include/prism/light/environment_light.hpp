@@ -48,11 +48,11 @@ struct EnvironmentLight {
 
     /// A photon from a direction uniform over the sphere (from `rng`), through the point
     /// (u, v) of the disk facing it, upstream of everything bounded.
-    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v, Pcg32& rng) const noexcept
+    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v, Random& rng) const noexcept
     {
         const BoundingSphere<T>& scene = *aim.scene;
         const BoundingSphere<T>& sphere = aim.target ? *aim.target : scene;
-        const T a = rng.uniform<T>(), b = rng.uniform<T>();
+        const auto [a, b] = rng.uniform2<T>();
         const Vec3<T> travel = -uniform_sphere(a, b);
         const T upstream = length(sphere.center - scene.center) + scene.radius + sphere.radius;
         return {{uniform_disk(sphere.center - upstream * travel, travel, sphere.radius, u, v), travel}};

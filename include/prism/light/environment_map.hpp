@@ -166,11 +166,11 @@ public:
     /// A photon from a direction drawn as sample() draws it (from `rng`), through the point
     /// (u, v) of the disk facing it, upstream of everything bounded; weighted by L / pdf
     /// over its mean, the radiance integrated over the sphere.
-    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v, Pcg32& rng) const noexcept
+    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v, Random& rng) const noexcept
     {
         const BoundingSphere<T>& scene = *aim.scene;
         const BoundingSphere<T>& sphere = aim.target ? *aim.target : scene;
-        const T a = rng.uniform<T>(), b = rng.uniform<T>();
+        const auto [a, b] = rng.uniform2<T>();
         const LightSample<T> from = sample(sphere.center, {a, b});
         const Vec3<T> travel = -from.wi;
         const T upstream = length(sphere.center - scene.center) + scene.radius + sphere.radius;

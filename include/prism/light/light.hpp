@@ -5,7 +5,7 @@
 #include <prism/core/aabb.hpp>
 #include <prism/core/math.hpp>
 #include <prism/core/ray.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 
 #include <concepts>
 
@@ -89,7 +89,7 @@ concept Light = requires(const L& light, const Vec3<typename L::scalar_type>& p,
     light.validate();
 } && (requires(const L& light, const PhotonAim<typename L::scalar_type>& aim, typename L::scalar_type u) {
     { light.emit_photon(aim, u, u) } -> std::same_as<EmittedPhoton<typename L::scalar_type>>;
-} || requires(const L& light, const PhotonAim<typename L::scalar_type>& aim, typename L::scalar_type u, Pcg32& rng) {
+} || requires(const L& light, const PhotonAim<typename L::scalar_type>& aim, typename L::scalar_type u, Random& rng) {
     { light.emit_photon(aim, u, u, rng) } -> std::same_as<EmittedPhoton<typename L::scalar_type>>;
 });
 
@@ -98,7 +98,7 @@ concept Light = requires(const L& light, const Vec3<typename L::scalar_type>& p,
 /// from `rng`.
 template <Light L>
 [[nodiscard]] EmittedPhoton<typename L::scalar_type> emit_photon(const L& light, const PhotonAim<typename L::scalar_type>& aim,
-                                                                 typename L::scalar_type u, typename L::scalar_type v, Pcg32& rng) noexcept
+                                                                 typename L::scalar_type u, typename L::scalar_type v, Random& rng) noexcept
 {
     if constexpr (requires { light.emit_photon(aim, u, v, rng); }) return light.emit_photon(aim, u, v, rng);
     else return light.emit_photon(aim, u, v);
@@ -118,7 +118,7 @@ inline constexpr bool is_at_infinity = requires { requires bool(L::at_infinity);
 /// `shadow(through, colour, rng)`, where through(point) is what a shadow ray to a point of
 /// the light lets through and colour the light's colour at the shading point.
 template <class L>
-inline constexpr bool has_own_shadow = requires(const L& light, const Rgb<typename L::scalar_type>& colour, Pcg32* rng) {
+inline constexpr bool has_own_shadow = requires(const L& light, const Rgb<typename L::scalar_type>& colour, Random* rng) {
     { light.shadow([](const Vec3<typename L::scalar_type>&) { return Rgb<typename L::scalar_type>(); }, colour, rng) }
         -> std::same_as<Rgb<typename L::scalar_type>>;
 };

@@ -19,7 +19,7 @@
 #pragma once
 
 #include <prism/core/check.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/light/light.hpp>
 #include <prism/light/point_light.hpp>
 
@@ -65,7 +65,7 @@ struct PointGridLight {
     /// `colour` is the light's colour at p (the irradiance over pi), against which POV-Ray's
     /// 0.1 is measured; `rng` jitters the points (jitter only; may be null otherwise).
     template <class Through>
-    [[nodiscard]] Rgb<T> shadow(Through&& through, const Rgb<T>& colour, Pcg32* rng) const noexcept
+    [[nodiscard]] Rgb<T> shadow(Through&& through, const Rgb<T>& colour, Random* rng) const noexcept
     {
         Grid grid; // each value is written before it is read (traced says which)
         return region(grid, std::forward<Through>(through), colour, rng, 0, 0, size1 - 1, size2 - 1, 0);
@@ -98,14 +98,15 @@ private:
 
     /// What grid point (u, v) lets through, traced once.
     template <class Through>
-    [[nodiscard]] const Rgb<T>& point(Grid& grid, Through& through, Pcg32* rng, int u, int v) const noexcept
+    [[nodiscard]] const Rgb<T>& point(Grid& grid, Through& through, Random* rng, int u, int v) const noexcept
     {
         const std::size_t k = std::size_t(u) * std::size_t(size2) + std::size_t(v);
         if (!grid.traced[k]) {
             T ju = T(u), jv = T(v);
             if (jitter && rng) {
-                ju += rng->uniform<T>() - T(0.5);
-                jv += rng->uniform<T>() - T(0.5);
+                const auto [du, dv] = rng->template uniform2<T>();
+                ju += du - T(0.5);
+                jv += dv - T(0.5);
             }
             Vec3<T> at = light.position;
             if (size1 > 1) at += axis1 * (ju / T(size1 - 1) - T(0.5));
@@ -118,7 +119,7 @@ private:
 
     /// The mean over the region [u1, u2] x [v1, v2], as POV-Ray takes it.
     template <class Through>
-    [[nodiscard]] Rgb<T> region(Grid& grid, Through&& through, const Rgb<T>& colour, Pcg32* rng, int u1, int v1, int u2, int v2, int level) const noexcept
+    [[nodiscard]] Rgb<T> region(Grid& grid, Through&& through, const Rgb<T>& colour, Random* rng, int u1, int v1, int u2, int v2, int level) const noexcept
     {
         const Rgb<T> corner[4] = {point(grid, through, rng, u1, v1), point(grid, through, rng, u2, v1), point(grid, through, rng, u1, v2),
                                   point(grid, through, rng, u2, v2)};

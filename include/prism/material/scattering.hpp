@@ -8,7 +8,7 @@
 #pragma once
 
 #include <prism/core/ray.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/core/sampling.hpp>
 #include <prism/geometry/crossings.hpp>
 #include <prism/material/bsdf.hpp>
@@ -423,9 +423,10 @@ public:
 
     /// A next direction drawn from the lobe (world), with the lobe's weight and density;
     /// nothing where the lobe draws none or the draw fails the side test.
-    [[nodiscard]] std::optional<LobeSample<T>> sample(Pcg32& rng, Transport mode) const noexcept
+    [[nodiscard]] std::optional<LobeSample<T>> sample(Random& rng, Transport mode) const noexcept
     {
-        const T u0 = rng.uniform<T>(), u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
+        const T u0 = rng.uniform<T>();
+        const auto [u1, u2] = rng.uniform2<T>();
         std::optional<LobeSample<T>> s = lobe_.sample(wo_, u0, u1, u2, mode);
         if (!s) return std::nullopt;
         const Vec3<T> wi = frame_.to_world(s->wi);
@@ -553,7 +554,7 @@ template <Transport Mode = Transport::importance, Material M>
 [[nodiscard]] std::optional<PhotonBounce<typename M::scalar_type>> scatter_photon(const M& material,
                                                                                    const Crossing<typename M::scalar_type>& hit,
                                                                                    const Vec3<typename M::scalar_type>& d,
-                                                                                   Rgb<typename M::scalar_type>& power, Pcg32& rng,
+                                                                                   Rgb<typename M::scalar_type>& power, Random& rng,
                                                                                    typename M::scalar_type wavelength_nm = 0,
                                                                                    typename M::scalar_type outside_index = 1,
                                                                                    Lobes lobes = Lobes::all) noexcept

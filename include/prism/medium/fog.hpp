@@ -13,7 +13,7 @@
 #include <prism/core/check.hpp>
 #include <prism/core/math.hpp>
 #include <prism/core/ray.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/medium/medium.hpp>
 #include <prism/medium/phase.hpp>
 
@@ -54,7 +54,7 @@ struct Fog {
     /// Where a walker along `ray` (unit direction, in the fog from its origin) carrying
     /// `power` next scatters before `t_max` (which may be infinite), or that it reaches
     /// t_max, and the weight its power takes either way.
-    [[nodiscard]] FreeFlight<T> sample_flight(const Ray<T>& ray, T t_max, const Rgb<T>& power, Pcg32& rng) const noexcept
+    [[nodiscard]] FreeFlight<T> sample_flight(const Ray<T>& ray, T t_max, const Rgb<T>& power, Random& rng) const noexcept
     {
         (void)ray;
         const Rgb<T> sigma = extinction();

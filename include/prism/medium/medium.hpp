@@ -11,7 +11,7 @@
 
 #include <prism/core/math.hpp>
 #include <prism/core/ray.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 
 #include <concepts>
 
@@ -63,7 +63,7 @@ struct FreeFlight {
 /// phase function it scatters by.
 template <class X>
 concept ScatteringMedium = Medium<X> && requires(const X& medium, const Ray<typename X::scalar_type>& ray, typename X::scalar_type t,
-                                                 const Rgb<typename X::scalar_type>& power, Pcg32& rng) {
+                                                 const Rgb<typename X::scalar_type>& power, Random& rng) {
     requires X::scatters;
     { medium.sample_flight(ray, t, power, rng) } -> std::same_as<FreeFlight<typename X::scalar_type>>;
     { medium.scattering_at(ray.origin) } -> std::same_as<Rgb<typename X::scalar_type>>;

@@ -28,7 +28,7 @@
 #include <prism/core/check.hpp>
 #include <prism/core/math.hpp>
 #include <prism/core/ray.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/medium/density.hpp>
 #include <prism/medium/majorant.hpp>
 #include <prism/medium/medium.hpp>
@@ -99,7 +99,7 @@ public:
 
     /// An unbiased estimate of the transmittance along `ray` (unit direction) from its
     /// origin to t_max (may be infinite), by residual ratio tracking with `rng`.
-    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max, Pcg32& rng) const noexcept
+    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max, Random& rng) const noexcept
     {
         Rgb<T> tr{T(1)};
         const Rgb<T> sigma_t = absorption_ + scattering_;
@@ -132,14 +132,14 @@ public:
     /// direction and t_max): the same segment always gives the same estimate.
     [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
     {
-        Pcg32 rng = stream_of(ray, t_max);
+        Random rng = stream_of(ray, t_max);
         return transmittance(ray, t_max, rng);
     }
 
     /// Where a walker along `ray` (unit direction, from its origin) carrying `power` next
     /// scatters before t_max (may be infinite), or that it reaches t_max, and the weight
     /// its power takes either way: spectral tracking (see the file's comment).
-    [[nodiscard]] FreeFlight<T> sample_flight(const Ray<T>& ray, T t_max, const Rgb<T>& power, Pcg32& rng) const noexcept
+    [[nodiscard]] FreeFlight<T> sample_flight(const Ray<T>& ray, T t_max, const Rgb<T>& power, Random& rng) const noexcept
     {
         const Rgb<T> sigma_t = absorption_ + scattering_;
         const T carried = power.x + power.y + power.z;
@@ -198,7 +198,7 @@ private:
     }
 
     /// A stream from the bits of a segment (splitmix64 over them).
-    [[nodiscard]] static Pcg32 stream_of(const Ray<T>& ray, T t_max) noexcept
+    [[nodiscard]] static Random stream_of(const Ray<T>& ray, T t_max) noexcept
     {
         std::uint64_t h = 0x9e3779b97f4a7c15ULL;
         const auto mix = [&](T value) {
@@ -209,7 +209,7 @@ private:
         };
         for (int a = 0; a < 3; ++a) mix(ray.origin[a]), mix(ray.direction[a]);
         mix(t_max);
-        return Pcg32(h, h >> 1);
+        return Random(h, h >> 1);
     }
 
     Field field_;

@@ -27,7 +27,7 @@
 #include <prism/core/check.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/core/parallel.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/geometry/crossings.hpp>
 #include <prism/geometry/shape.hpp>
 #include <prism/light/light.hpp>
@@ -117,7 +117,7 @@ public:
         : scene_(scene), config_((detail::validate(config), config)), bands_(config.dispersion_bands), air_(air)
     {
         air_.validate();
-        Pcg32 scrambles(config.seed, 0xfeed5eedULL);
+        Random scrambles(config.seed, 0xfeed5eedULL);
         for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
         for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
         // A sphere around everything bounded, the air's medium included where it is
@@ -187,7 +187,7 @@ private:
               VisitMedium&& visit_medium = {}) const
     {
         if (emitters.empty() || !(total_power > T(0))) return;
-        Pcg32 rng(config_.seed, 2 * i + (caustic_pass ? 1 : 0));
+        Random rng(config_.seed, 2 * i + (caustic_pass ? 1 : 0));
         const std::uint32_t* scramble = caustic_pass ? caustic_scramble_ : global_scramble_;
         auto [u, v] = sobol02<double>(static_cast<std::uint32_t>(i), scramble[0], scramble[1]);
         // The emitter whose share of [0, 1) holds u; u rescaled within that share.

@@ -9,7 +9,7 @@
 
 #include <prism/core/math.hpp>
 #include <prism/core/ray.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/transport/first_surface.hpp>
 
 #include <concepts>
@@ -60,7 +60,7 @@ concept SeesSurfaces = requires(const I& integrator, const Ray<typename I::scala
 
 /// An integrator that splits its radiance into LightParts (whose sum is its radiance).
 template <class I>
-concept SplitsLight = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
+concept SplitsLight = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Random& rng) {
     { integrator.radiance_parts(ray, rng) } -> std::same_as<LightParts<typename I::scalar_type>>;
 };
 

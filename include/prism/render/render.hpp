@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: MIT
-// render(): camera rays per pixel, tiles dealt to worker threads (core/parallel.hpp), one RNG stream per
-// sample of each pixel; a crop window or a range of the samples renders a part of the
-// image that adds up with the other parts to the whole, bit for bit.
+// render(): camera rays per pixel, tiles dealt to worker threads (core/parallel.hpp), each
+// sample of each pixel drawing its own numbers (core/random.hpp: the sampler's by dimension,
+// then a PCG stream of its own); a crop window or a range of the samples renders a part of
+// the image that adds up with the other parts to the whole, bit for bit, and any prefix of
+// the samples is an unbiased image.
 #pragma once
 
 #include <prism/core/check.hpp>
 #include <prism/core/config.hpp>
 #include <prism/core/parallel.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/render/accumulation.hpp>
 #include <prism/render/film.hpp>
 #include <prism/render/layers.hpp>
@@ -32,6 +34,9 @@ struct RenderConfig {
     int width = 512; ///< image width in pixels
     int height = 512; ///< image height in pixels
     int spp = 1;             ///< samples per pixel; 1 samples the pixel centre
+    /// The points the samples draw (core/sampler.hpp): Owen-scrambled Sobol, whose every
+    /// prefix of 2^m samples is stratified, or independent numbers.
+    SamplerKind sampler = SamplerKind::sobol;
     unsigned threads = 0;    ///< worker threads; 0 = all hardware threads
     std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image
     bool progress = true;    ///< report progress on stderr once a render passes one second
@@ -48,13 +53,18 @@ struct RenderConfig {
     /// all. Renders of disjoint ranges add up (render_sums, Accumulation) to the render
     /// of their union, bit for bit.
     PassRange passes{};
+    /// > 0: a time budget. The samples (or passes) are taken in rounds, each pixel's
+    /// count doubling, and the render stops at the round that the time per sample so far
+    /// says the budget ends in, having taken [first, first + n) of the range for some n:
+    /// the same bits as a render of that range. 0 (the default): all of them.
+    double seconds = 0;
 };
 
 /// An integrator of the first kind: the radiance along a camera ray, drawing random
 /// numbers from rng (Whitted, PhotonMapper, PathTracer). render() takes config.spp
 /// samples in every pixel of the crop window.
 template <class I>
-concept RayEstimator = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Pcg32& rng) {
+concept RayEstimator = requires(const I& integrator, const Ray<typename I::scalar_type>& ray, Random& rng) {
     { integrator.radiance(ray, rng) } -> std::same_as<Rgb<typename I::scalar_type>>;
 };
 
@@ -77,20 +87,6 @@ concept Integrator = RayEstimator<I> || PassEstimator<I>;
 
 namespace detail {
 
-/// Sub-pixel position of sample s of n: the centre when n = 1 and `centre`; otherwise
-/// jittered in an m x m grid of strata (m = floor(sqrt(n))), any further samples
-/// uniform. The jitter is drawn as float in every precision, so float and double renders
-/// of one seed sample the same positions and differ only by their arithmetic.
-template <Scalar T>
-[[nodiscard]] inline std::pair<T, T> pixel_sample(int s, int n, Pcg32& rng, bool centre = true) noexcept
-{
-    if (n == 1 && centre) return {T(0.5), T(0.5)};
-    const int m = static_cast<int>(std::sqrt(static_cast<double>(n)));
-    const T u = T(rng.uniform<float>()), v = T(rng.uniform<float>());
-    if (s < m * m) return {(T(s % m) + u) / T(m), (T(s / m) + v) / T(m)};
-    return {u, v};
-}
-
 /// The seed of a pixel's sample s: the render's seed moved by a bijective 64-bit hash of
 /// s (MurmurHash3's finaliser, which maps 0 to 0), so each sample starts its pixel's
 /// stream at its own far-apart place and sample s is the same whichever samples are
@@ -103,6 +99,30 @@ template <Scalar T>
     s *= 0xc4ceb9fe1a85ec53ULL;
     s ^= s >> 33;
     return seed + s;
+}
+
+/// Sample s of a pixel: where in the pixel its ray starts, its point on the lens, and the
+/// numbers its estimate goes on to draw (from its path's first bounce on).
+template <Scalar T>
+struct CameraSample {
+    std::array<T, 2> footprint; ///< in the pixel, [0, 1)^2
+    std::array<T, 2> lens;      ///< on the lens, [0, 1)^2 (a pinhole reads none)
+    Random rng;                 ///< the rest of the sample's numbers
+};
+
+/// Sample s of pixel `pixel` (y * width + x) of a render: the footprint and the lens from
+/// the sampler's pairs 0 and 1, whatever the camera (the footprint the pixel's centre when
+/// spp = 1 and config.single_sample_at_centre). The footprint is drawn in float in every
+/// precision, so float and double renders of one seed sample the same positions.
+template <Scalar T>
+[[nodiscard]] constexpr CameraSample<T> camera_sample(const RenderConfig& config, std::uint64_t pixel, std::uint64_t s) noexcept
+{
+    Random rng(Sampler(config.sampler, config.seed, pixel, std::uint32_t(s)), Pcg32(sample_seed(config.seed, s), pixel));
+    const std::array<float, 2> footprint = rng.uniform2<float>();
+    const std::array<T, 2> lens = rng.uniform2<T>();
+    rng.bounce(0);
+    if (config.spp == 1 && config.single_sample_at_centre) return {{T(0.5), T(0.5)}, lens, rng};
+    return {{T(footprint[0]), T(footprint[1])}, lens, rng};
 }
 
 /// The window a config renders, checked against its image.
@@ -125,6 +145,51 @@ template <Scalar T>
         throw_invalid("RenderConfig passes [", config.passes.first, ", ", config.passes.last, ") must be a non-empty range of the spp = ", config.spp,
                       " samples");
     return config.passes;
+}
+
+/// The config's time budget, checked.
+[[nodiscard]] inline double render_seconds(const RenderConfig& config)
+{
+    if (!(config.seconds >= 0.0 && std::isfinite(config.seconds))) throw_invalid("RenderConfig seconds must be finite and >= 0, got ", config.seconds);
+    return config.seconds;
+}
+
+/// Take the config's samples in rounds: add_round(part) adds the samples part.passes
+/// to the sums, then on_round() is told how many of the range have been taken. The first
+/// round takes one sample, each next as many as were taken before it (so a stop falls on
+/// a power of two, where a Sobol sampler's samples are stratified), and with a budget
+/// (config.seconds) none that the time per sample so far says would end past it (the
+/// last round may be cut short to fit). Returns the samples taken.
+template <class AddRound, class OnRound>
+std::uint64_t render_in_rounds(const RenderConfig& config, AddRound&& add_round, OnRound&& on_round)
+{
+    const PassRange range = render_passes(config);
+    const double budget = render_seconds(config);
+    const auto start = std::chrono::steady_clock::now();
+    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    ProgressLine line("rendering");
+    RenderConfig part = config;
+    part.progress = false;
+    std::uint64_t taken = 0;
+    while (taken < range.count()) {
+        std::uint64_t n = std::min(std::max<std::uint64_t>(taken, 1), range.count() - taken);
+        if (budget > 0.0 && taken > 0) {
+            const double spent = elapsed(), per_sample = spent / double(taken);
+            if (spent >= budget) break;
+            const double fits = std::floor((budget - spent) / per_sample);
+            if (fits < 1.0) break;
+            if (fits < double(n)) n = std::uint64_t(fits);
+        }
+        part.passes = {range.first + taken, range.first + taken + n};
+        add_round(part);
+        taken += n;
+        on_round(taken);
+        if (config.progress)
+            line.update(elapsed(), formatted("%llu of %llu samples (%.1f s)", static_cast<unsigned long long>(taken),
+                                             static_cast<unsigned long long>(range.count()), elapsed()));
+    }
+    if (config.progress) line.finish(elapsed(), formatted("%llu samples (%.1f s)", static_cast<unsigned long long>(taken), elapsed()));
+    return taken;
 }
 
 /// Add a radiance sample to sums [first, first + 3): radiance is never negative, so a
@@ -198,15 +263,10 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
                 std::array<ExactSum, N> sum{};
                 std::size_t rejected = 0;
                 for (std::uint64_t s = samples.first; s < samples.last; ++s) {
-                    Pcg32 rng(sample_seed(config.seed, s), pixel);
-                    const auto [dx, dy] = pixel_sample<T>(int(s), config.spp, rng, config.single_sample_at_centre);
-                    if (rays.thin_lens()) {
-                        // The lens point from the sample's own stream, after the pixel's (a pinhole draws none).
-                        const T u = rng.uniform<T>(), v = rng.uniform<T>();
-                        rejected += sample(rays.ray(T(x) + dx, T(y) + dy, u, v), rng, sum);
-                    } else {
-                        rejected += sample(rays.ray(T(x) + dx, T(y) + dy), rng, sum);
-                    }
+                    CameraSample<T> c = camera_sample<T>(config, pixel, s);
+                    const Ray<T> ray = rays.thin_lens() ? rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1], c.lens[0], c.lens[1])
+                                                        : rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1]);
+                    rejected += sample(ray, c.rng, sum);
                 }
                 store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
                 if (rejected != 0) rejected_values.fetch_add(rejected, std::memory_order_relaxed);
@@ -216,6 +276,93 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
     if (config.progress) say_rejected(rejected_values.load());
 }
 
+/// Check that `sums` holds the config's window of its image, with `channels` channels.
+inline void check_sums(const Accumulation& sums, const RenderConfig& config, std::size_t channels, const char* who)
+{
+    const PixelWindow window = render_window(config);
+    if (sums.width() != config.width || sums.height() != config.height || !sums.window().contains(window))
+        throw_invalid(who, ": the Accumulation (", sums.width(), " x ", sums.height(), ", window [", sums.window().x0, ", ", sums.window().x1, ") x [",
+                      sums.window().y0, ", ", sums.window().y1, ")) does not hold the render's window");
+    if (sums.channels().size() != channels) throw_invalid(who, " renders ", channels, " channels, the Accumulation has ", sums.channels().size());
+}
+
+/// Add the config's samples (or passes) of R, G, B to `sums`, all in one go.
+template <Integrator I>
+void add_samples(Accumulation& sums, const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
+{
+    using T = typename I::scalar_type;
+    if constexpr (RayEstimator<I>) {
+        render_pixels<3>(
+            camera, config,
+            [&](const Ray<T>& ray, Random& rng, std::array<ExactSum, 3>& sum) { return add_radiance(sum, 0, integrator.radiance(ray, rng)); },
+            [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+                sums.add(x, y, sum, weight);
+                if (rejected != 0) sums.reject(rejected);
+            });
+    } else {
+        (void)render_passes(config);
+        const std::size_t before = sums.rejected();
+        integrator.add_passes(sums, camera, config);
+        if (config.progress) say_rejected(sums.rejected() - before);
+    }
+}
+
+/// Add the config's samples with the integrator's layers (render_layers) to `sums`, all in one go.
+template <RayEstimator I>
+void add_layers(Accumulation& sums, const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
+{
+    using T = typename I::scalar_type;
+    constexpr std::size_t surface = SeesSurfaces<I> ? 8 : 0, parts = SplitsLight<I> ? 9 : 0, n = 3 + surface + parts;
+    render_pixels<n>(
+        camera, config,
+        [&](const Ray<T>& ray, Random& rng, std::array<ExactSum, n>& sum) {
+            std::size_t rejected = 0;
+            if constexpr (SplitsLight<I>) {
+                const LightParts<T> light = integrator.radiance_parts(ray, rng);
+                rejected += add_radiance(sum, 0, light.sum());
+                rejected += add_radiance(sum, 3 + surface, light.direct);
+                rejected += add_radiance(sum, 6 + surface, light.caustic);
+                rejected += add_radiance(sum, 9 + surface, light.indirect);
+            } else {
+                rejected += add_radiance(sum, 0, integrator.radiance(ray, rng));
+            }
+            if constexpr (SeesSurfaces<I>) {
+                if (const auto seen = first_surface(integrator.scene(), integrator.air(), ray)) {
+                    rejected += add_value(sum, 3, 1.0);
+                    rejected += add_radiance(sum, 4, seen->albedo);
+                    for (int c = 0; c < 3; ++c) rejected += add_value(sum, 7 + std::size_t(c), double(seen->normal[c]));
+                    rejected += add_value(sum, 10, double(seen->distance));
+                }
+            }
+            return rejected;
+        },
+        [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+            sums.add(x, y, sum, weight);
+            if (rejected != 0) sums.reject(rejected);
+        });
+}
+
+/// Add the config's samples to `sums` by add(part): in one go, or with a time budget in
+/// rounds (render_in_rounds), on_round(sums) told of each.
+template <class Add, class OnRound>
+void add_in_rounds(Accumulation& sums, const RenderConfig& config, bool rounds, Add&& add, OnRound&& on_round)
+{
+    if (!rounds && render_seconds(config) == 0.0) {
+        add(config);
+        on_round(static_cast<const Accumulation&>(sums));
+        return;
+    }
+    const std::size_t before = sums.rejected();
+    (void)render_in_rounds(config, add, [&](std::uint64_t) { on_round(static_cast<const Accumulation&>(sums)); });
+    if (config.progress) say_rejected(sums.rejected() - before);
+}
+
+/// What a render without a preview does after each round: nothing.
+struct NoPreview {
+    /// Does nothing.
+    constexpr void operator()(const Accumulation&) const noexcept {}
+};
+
 } // namespace detail
 
 /// Render a part of an image into `sums`: the config's crop window (which `sums`'
@@ -224,27 +371,9 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
 template <Integrator I>
 void render_into(Accumulation& sums, const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
 {
-    const PixelWindow window = detail::render_window(config);
-    if (sums.width() != config.width || sums.height() != config.height || !sums.window().contains(window))
-        detail::throw_invalid("render_into: the Accumulation (", sums.width(), " x ", sums.height(), ", window [", sums.window().x0, ", ",
-                              sums.window().x1, ") x [", sums.window().y0, ", ", sums.window().y1, ")) does not hold the render's window");
-    if (sums.channels().size() != 3) detail::throw_invalid("render_into renders R, G, B only, the Accumulation has ", sums.channels().size(), " channels");
-    using T = typename I::scalar_type;
-    if constexpr (RayEstimator<I>) {
-        detail::render_pixels<3>(
-            camera, config,
-            [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
-            [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
-                sums.add(x, y, sum, weight);
-                if (rejected != 0) sums.reject(rejected);
-            });
-    } else {
-        (void)detail::render_passes(config);
-        (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
-        const std::size_t before = sums.rejected();
-        integrator.add_passes(sums, camera, config);
-        if (config.progress) detail::say_rejected(sums.rejected() - before);
-    }
+    detail::check_sums(sums, config, 3, "render_into");
+    (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
+    detail::add_in_rounds(sums, config, false, [&](const RenderConfig& part) { detail::add_samples(sums, camera, integrator, part); }, detail::NoPreview{});
 }
 
 /// A part of an image as exact sums (its crop window, its samples): add the parts of a
@@ -266,66 +395,64 @@ template <Integrator I>
 template <RayEstimator I>
 [[nodiscard]] Accumulation render_layers(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
-    using T = typename I::scalar_type;
-    constexpr std::size_t surface = SeesSurfaces<I> ? 8 : 0, parts = SplitsLight<I> ? 9 : 0, n = 3 + surface + parts;
+    (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
     Accumulation sums(config.width, config.height, detail::render_window(config), layer_channels<I>());
-    detail::render_pixels<n>(
-        camera, config,
-        [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, n>& sum) {
-            std::size_t rejected = 0;
-            if constexpr (SplitsLight<I>) {
-                const LightParts<T> light = integrator.radiance_parts(ray, rng);
-                rejected += detail::add_radiance(sum, 0, light.sum());
-                rejected += detail::add_radiance(sum, 3 + surface, light.direct);
-                rejected += detail::add_radiance(sum, 6 + surface, light.caustic);
-                rejected += detail::add_radiance(sum, 9 + surface, light.indirect);
-            } else {
-                rejected += detail::add_radiance(sum, 0, integrator.radiance(ray, rng));
-            }
-            if constexpr (SeesSurfaces<I>) {
-                if (const auto seen = first_surface(integrator.scene(), integrator.air(), ray)) {
-                    rejected += detail::add_value(sum, 3, 1.0);
-                    rejected += detail::add_radiance(sum, 4, seen->albedo);
-                    for (int c = 0; c < 3; ++c) rejected += detail::add_value(sum, 7 + std::size_t(c), double(seen->normal[c]));
-                    rejected += detail::add_value(sum, 10, double(seen->distance));
-                }
-            }
-            return rejected;
-        },
-        [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
-            sums.add(x, y, sum, weight);
-            if (rejected != 0) sums.reject(rejected);
-        });
+    detail::add_in_rounds(sums, config, false, [&](const RenderConfig& part) { detail::add_layers(sums, camera, integrator, part); }, detail::NoPreview{});
     return sums;
 }
 
-/// Render an image: the config's crop window (the whole image by default), each pixel
-/// the mean of its samples. The same scene, seed and spp give the same bits for any
-/// thread count, crop or split of the samples: every sample draws from its own random
-/// stream, and a pixel's samples are summed exactly (Accumulation).
+/// A part of an image from an integrator of passes, with its layers: R, G, B only
+/// (render_sums).
 template <PassEstimator I>
 [[nodiscard]] Accumulation render_layers(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
     return render_sums(camera, integrator, config);
 }
 
+/// Render a part of an image progressively: its samples (or passes) in rounds, each
+/// pixel's count doubling (and with config.seconds, within the budget), calling
+/// preview(sums) after each round with the sums so far, whose image() is the mean of the
+/// samples taken: with a Sobol sampler a converging picture, unbiased at every round.
+/// Returns the sums, with layers as render_layers'. The bits of a render of the samples
+/// it took.
+template <Integrator I, class Preview>
+    requires std::invocable<Preview&, const Accumulation&>
+[[nodiscard]] Accumulation render_progressive(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config, Preview&& preview)
+{
+    (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
+    if constexpr (RayEstimator<I>) {
+        Accumulation sums(config.width, config.height, detail::render_window(config), layer_channels<I>());
+        detail::add_in_rounds(sums, config, true, [&](const RenderConfig& part) { detail::add_layers(sums, camera, integrator, part); }, preview);
+        return sums;
+    } else {
+        Accumulation sums(config.width, config.height, detail::render_window(config));
+        detail::add_in_rounds(sums, config, true, [&](const RenderConfig& part) { detail::add_samples(sums, camera, integrator, part); }, preview);
+        return sums;
+    }
+}
+
 /// Render an image: the config's crop window (the whole image by default), each pixel
-/// the mean of its samples (or passes).
+/// the mean of its passes.
 template <PassEstimator I>
 [[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
     return render_sums(camera, integrator, config).image();
 }
 
+/// Render an image: the config's crop window (the whole image by default), each pixel
+/// the mean of its samples. The same scene, seed and spp give the same bits for any
+/// thread count, crop or split of the samples: every sample draws its own numbers, and a
+/// pixel's samples are summed exactly (Accumulation).
 template <RayEstimator I>
 [[nodiscard]] Film render(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config = {})
 {
+    if (detail::render_seconds(config) > 0.0) return render_sums(camera, integrator, config).image();
     const PixelWindow window = detail::render_window(config);
     Film film(window.width(), window.height());
     using T = typename I::scalar_type;
     detail::render_pixels<3>(
         camera, config,
-        [&](const Ray<T>& ray, Pcg32& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
+        [&](const Ray<T>& ray, Random& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
         [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
             film.set(x - window.x0, y - window.y0, Rgb<float>(detail::mean(sum[0], weight), detail::mean(sum[1], weight), detail::mean(sum[2], weight)));
             if (rejected != 0) film.count_rejected(rejected);

@@ -17,7 +17,7 @@
 #include <prism/core/dispatch.hpp>
 #include <prism/core/distribution.hpp>
 #include <prism/core/offset.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/core/sampling.hpp>
 #include <prism/geometry/shape.hpp>
 #include <prism/geometry/surface_point.hpp>
@@ -173,7 +173,7 @@ public:
     /// over its area), leaving cosine-distributed about its normal (either side of a
     /// two-sided one), or, aimed at a target, uniform over the cone toward it, weighted by
     /// L cos A solid angle / (chance of the emitter * aim.power). `rng` gives the direction.
-    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v, Pcg32& rng) const noexcept
+    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v, Random& rng) const noexcept
     {
         const auto& table = scene_->emitter_table_;
         if (table.keys.empty()) return {{Vec3<T>(T(0)), Vec3<T>(T(0), T(0), T(1))}, Rgb<T>(T(0))};
@@ -209,7 +209,7 @@ public:
                 // from inside it), weighted by the radiance the emitter sends along it.
                 const ConeToward<T> cone = ConeToward<T>::of(s.point, *aim.target);
                 const T omega = cone.solid_angle();
-                const T u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
+                const auto [u1, u2] = rng.uniform2<T>();
                 const Vec3<T> w = cone.cos_half_angle <= T(-1) ? uniform_sphere(u1, u2) : uniform_cone(cone.axis, cone.cos_half_angle, u1, u2);
                 const T cos = dot(w, s.normal);
                 const T emitting = two_sided ? std::abs(cos) : std::max(cos, T(0));

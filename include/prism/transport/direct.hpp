@@ -3,12 +3,13 @@
 #pragma once
 
 #include <prism/core/offset.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/geometry/crossings.hpp>
 #include <prism/light/light.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/scene/scene.hpp>
 
+#include <array>
 #include <utility>
 
 namespace prism {
@@ -22,7 +23,7 @@ inline constexpr T shadow_epsilon = T(1e-4);
 /// `grid` x `grid` stratified samples, each jittered within its stratum by `rng` (at the
 /// strata's centres without one), each carrying 1 / grid^2 of the estimate.
 struct LightSampling {
-    Pcg32* rng = nullptr; ///< jitters each sample in its stratum; null: stratum centres
+    Random* rng = nullptr; ///< jitters each sample in its stratum; null: stratum centres
     int grid = 1;         ///< samples per side of the unit square
 };
 
@@ -45,8 +46,7 @@ void for_each_light_sample(const L& light, const Vec3<T>& p, const LightSampling
         const T side = T(1) / T(n_side), share = side * side;
         for (int i = 0; i < n_side; ++i)
             for (int j = 0; j < n_side; ++j) {
-                const T ju = sampling.rng ? sampling.rng->template uniform<T>() : T(0.5);
-                const T jv = sampling.rng ? sampling.rng->template uniform<T>() : T(0.5);
+                const auto [ju, jv] = sampling.rng ? sampling.rng->template uniform2<T>() : std::array<T, 2>{T(0.5), T(0.5)};
                 LightSample<T> s = light.sample(p, Vec2<T>((T(i) + ju) * side, (T(j) + jv) * side));
                 s.irradiance *= share;
                 g(s);

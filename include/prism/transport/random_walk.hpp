@@ -20,7 +20,7 @@
 #pragma once
 
 #include <prism/core/offset.hpp>
-#include <prism/core/rng.hpp>
+#include <prism/core/random.hpp>
 #include <prism/core/sampling.hpp>
 #include <prism/geometry/crossings.hpp>
 #include <prism/material/scattering.hpp>
@@ -57,7 +57,7 @@ struct WalkVertex {
     const Vec3<T>& last_point; ///< where the path last scattered (or started)
     T last_pdf;               ///< the solid-angle density of the last scattering's non-delta lobe (a diffuse one's cos / pi); 0 after a delta one or at the start
     bool last;                ///< the walk ends after this surface (its depth limit): nothing it scatters is followed
-    Pcg32& rng;               ///< the walk's stream, for a caller that draws at the vertex (a thin lens's point)
+    Random& rng;               ///< the walk's stream, for a caller that draws at the vertex (a thin lens's point)
     T outside_index;          ///< the index of refraction on a transmissive material's outer side (1 for others; glossy_eta)
     int surface_bounces;      ///< the non-delta scatterings other than through frosted glass (a glossy interface)
 
@@ -98,7 +98,7 @@ struct WalkMediumVertex {
     const Vec3<T>& last_point; ///< where the path last scattered (or started)
     T last_pdf;               ///< as WalkVertex's
     bool last;                ///< the walk ends after this vertex (its depth limit)
-    Pcg32& rng;               ///< the walk's stream
+    Random& rng;               ///< the walk's stream
     int surface_bounces;      ///< as WalkVertex's: non-delta scatterings but through frosted glass
     const Ray<T>& stretch;    ///< the stretch of medium the flight was drawn over: from where it starts, unit direction
     T stretch_length;         ///< its length (may be infinite)
@@ -120,7 +120,7 @@ struct WalkMediumStretch {
     const Rgb<T>& power;      ///< what the path carries entering it
     int diffuse_bounces;      ///< non-delta scatterings so far
     const MediumStack& media; ///< the transmissive objects the path is inside of
-    Pcg32& rng;               ///< the walk's stream
+    Random& rng;               ///< the walk's stream
 };
 
 /// What a walk does where it scatters in a medium when its caller says nothing: it goes on.
@@ -180,7 +180,7 @@ struct WalkLimits {
 template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters,
           class OnMedium = IgnoreMedia>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
-                 Rgb<typename SceneT::scalar_type> power, Pcg32& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
+                 Rgb<typename SceneT::scalar_type> power, Random& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
                  OnEmitter&& on_emitter = {}, OnMedium&& on_medium = {}, MediumStack start = {})
 {
     using T = typename SceneT::scalar_type;
@@ -193,6 +193,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
     T last_pdf = T(0);
     int medium_bounces = 0; // of the bounces, those in media
     for (int bounce = 0; bounce - medium_bounces <= limits.max_bounces; ++bounce) {
+        rng.bounce(bounce); // each bounce its own block of the sampler's dimensions
         // In the air a path follows the air's curve; inside objects, straight lines.
         Ray<T> segment = ray;
         T path = T(0);
@@ -232,7 +233,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                     } else {
                         if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return false;
                     }
-                    const T u1 = rng.uniform<T>(), u2 = rng.uniform<T>();
+                    const auto [u1, u2] = rng.uniform2<T>();
                     const PhaseSample<T> next = medium.phase.sample(d, u1, u2);
                     ray = {p, next.direction};
                     last_point = p;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <prism/sampler/sampler.hpp>
+#include <prism/core/sampler.hpp>
 
 #include <doctest/doctest.h>
 

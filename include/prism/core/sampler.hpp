@@ -17,7 +17,7 @@
 #pragma once
 
 #include <prism/core/math.hpp>
-#include <prism/sampler/sequences.hpp>
+#include <prism/core/sequences.hpp>
 
 #include <array>
 #include <cstdint>
@@ -33,23 +33,33 @@ enum class SamplerKind : std::uint8_t {
 /// The numbers of one sample of one pixel.
 class Sampler {
 public:
+    /// Independent numbers of pixel 0, sample 0, seed 0.
+    constexpr Sampler() noexcept = default;
+
     /// Sample `sample` of pixel `pixel` in the render of `seed`.
     constexpr Sampler(SamplerKind kind, std::uint64_t seed, std::uint64_t pixel, std::uint32_t sample) noexcept
         : kind_(kind), key_(mix(seed, pixel)), sample_(sample)
     {
     }
 
+    /// The point of dimensions 2k and 2k + 1, as 32-bit fractions.
+    [[nodiscard]] constexpr std::array<std::uint32_t, 2> bits(std::uint32_t k) const noexcept
+    {
+        if (kind_ == SamplerKind::sobol) {
+            const std::uint32_t index = sequences::owen_scramble(sample_, sequences::seed_of(key_, 3 * std::uint64_t(k)));
+            return {sequences::owen_scramble(sequences::sobol(index, 0), sequences::seed_of(key_, 3 * std::uint64_t(k) + 1)),
+                    sequences::owen_scramble(sequences::sobol(index, 1), sequences::seed_of(key_, 3 * std::uint64_t(k) + 2))};
+        }
+        const std::uint64_t bits = hash(key_ ^ (std::uint64_t(sample_) << 32 | k));
+        return {std::uint32_t(bits), std::uint32_t(bits >> 32)};
+    }
+
     /// The point of dimensions 2k and 2k + 1, in [0, 1)^2.
     template <Scalar T = double>
     [[nodiscard]] constexpr std::array<T, 2> pair(std::uint32_t k) const noexcept
     {
-        if (kind_ == SamplerKind::sobol) {
-            const std::uint32_t index = sequences::owen_scramble(sample_, sequences::seed_of(key_, 3 * std::uint64_t(k)));
-            return {sequences::to_unit<T>(sequences::owen_scramble(sequences::sobol(index, 0), sequences::seed_of(key_, 3 * std::uint64_t(k) + 1))),
-                    sequences::to_unit<T>(sequences::owen_scramble(sequences::sobol(index, 1), sequences::seed_of(key_, 3 * std::uint64_t(k) + 2)))};
-        }
-        const std::uint64_t bits = hash(key_ ^ (std::uint64_t(sample_) << 32 | k));
-        return {sequences::to_unit<T>(std::uint32_t(bits)), sequences::to_unit<T>(std::uint32_t(bits >> 32))};
+        const std::array<std::uint32_t, 2> b = bits(k);
+        return {sequences::to_unit<T>(b[0]), sequences::to_unit<T>(b[1])};
     }
 
     /// The number of dimension 2k: pair k's first coordinate.
@@ -76,9 +86,9 @@ private:
         return hash(hash(seed + 0x9e3779b97f4a7c15ULL) ^ (pixel * 0xd1b54a32d192ed03ULL));
     }
 
-    SamplerKind kind_;
-    std::uint64_t key_;
-    std::uint32_t sample_;
+    SamplerKind kind_ = SamplerKind::independent;
+    std::uint64_t key_ = 0;
+    std::uint32_t sample_ = 0;
 };
 
 } // namespace prism

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <prism/sampler/sequences.hpp>
+#include <prism/core/sequences.hpp>
 
 #include <doctest/doctest.h>
 
