@@ -25,6 +25,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace examples {
 namespace {
@@ -72,6 +73,10 @@ void print_help(const char* program, const char* description, const Options& def
                 "                of the whole render (default: the whole image)\n"
                 "  --passes A:B  render only passes [A, B): samples of --spp, or progressive photon mapping's passes;\n"
                 "                parts add up with prism_merge to the whole render's bits (default: all)\n"
+                "  --seconds S   a time budget: the samples (or passes) in rounds, each pixel's count doubling, up to\n"
+                "                the round S seconds end in; --spp (--passes) the most taken (default 0: all of them)\n"
+                "  --preview     write each image as OUT/NAME.preview.png after every round of samples, a picture\n"
+                "                converging; removed when the finished image is written (default: off)\n"
                 "  --exr         also write each image as EXR (float RGB and the render's settings); a part (--crop,\n"
                 "                --passes A:B) always writes EXR, with its exact sums (default: off)\n"
                 "  --help        this text\n",
@@ -187,7 +192,33 @@ prism::OutputSet& outputs()
     return set;
 }
 
-void commit_outputs() { outputs().commit(); }
+namespace {
+
+/// The previews written so far: removed once the finished images are.
+std::vector<std::filesystem::path>& previews()
+{
+    static std::vector<std::filesystem::path> written;
+    return written;
+}
+
+} // namespace
+
+void commit_outputs()
+{
+    outputs().commit();
+    for (const std::filesystem::path& preview : previews()) {
+        std::error_code ignored; // a preview someone already removed is no error
+        std::filesystem::remove(preview, ignored);
+    }
+    previews().clear();
+}
+
+void save_preview(const prism::Film& film, const Options& options, const std::string& name)
+{
+    const std::filesystem::path path = output_file(options, name + ".preview.png");
+    prism::write_png(film, path);
+    if (std::find(previews().begin(), previews().end(), path) == previews().end()) previews().push_back(path);
+}
 
 void remove_partial_files_on_signal() { prism::remove_partial_files_on_signal(); }
 
@@ -228,6 +259,10 @@ bool parse(int argc, char** argv, Options& options, const char* description, Acc
             options.exr = true;
             continue;
         }
+        if (flag == "--preview") {
+            options.preview = true;
+            continue;
+        }
         const bool photon_flag = std::find(std::begin(photon_flags), std::end(photon_flags), flag) != std::end(photon_flags);
         if ((photon_flag && !accepts.photons) || (flag == "--povray" && !accepts.povray))
             throw std::invalid_argument("'" + std::string(flag) + "' does not apply to this example (see --help)");
@@ -243,6 +278,7 @@ bool parse(int argc, char** argv, Options& options, const char* description, Acc
             else if (std::string_view(value) == "independent") options.render.sampler = prism::SamplerKind::independent;
             else throw std::invalid_argument("--sampler must be sobol or independent, got '" + std::string(value) + "'");
         }
+        else if (flag == "--seconds") options.render.seconds = parse_number(flag, value, 0, 1e9);
         else if (flag == "--out") options.out = value;
         else if (flag == "--povray") options.povray = value;
         else if (flag == "--photons") options.photons = parse_integer<std::size_t>(flag, value, 0, 100000000);
@@ -305,6 +341,8 @@ bool parse(int argc, char** argv, Options& options, const char* description, Acc
     options.part = !options.crop.empty() || pass_range.has_value();
     if (options.part && !options.povray.empty())
         throw std::invalid_argument("--povray compares whole pictures: it cannot go with --crop or --passes A:B");
+    if (options.part && options.render.seconds > 0)
+        throw std::invalid_argument("--seconds takes the samples it has time for, and the parts of a render (--crop, --passes A:B) must each take all of theirs");
 #ifndef PRISM_EXAMPLES_EXR
     if (options.part || options.exr)
         throw std::invalid_argument(std::string(options.part ? "--crop and --passes A:B write" : "--exr writes") +

@@ -55,6 +55,7 @@ struct Options {
     std::string crop;          ///< --crop as given (resolved into render.crop once the size is known)
     bool part = false;         ///< --crop or --passes a:b: write EXR with the exact sums
     bool exr = false;          ///< --exr: also write EXR (with the means only, unless a part)
+    bool preview = false;      ///< --preview: OUT/NAME.preview.png after each round of samples
     std::string program;       ///< the example's name
     bool photon_example = false; ///< the example takes the photon mapping flags
     /// The images the example writes (names without extension): parse() checks that each
@@ -136,6 +137,10 @@ void remove_partial_files_on_signal();
 /// Queue `film` as OUT/name.png.
 void save_png(const prism::Film& film, const Options& options, const std::string& name);
 
+/// Write `film` as OUT/name.preview.png now (whole or not at all), the picture so far of
+/// a render under way; commit_outputs() removes it once the finished images are written.
+void save_preview(const prism::Film& film, const Options& options, const std::string& name);
+
 /// Run an example's body, turning exceptions into a message on `errors` (none if null)
 /// and exit code 1; its outputs are written when it returns 0.
 template <class Body>
@@ -177,19 +182,38 @@ struct Rendered {
 /// sums and the metadata prism_merge needs to add it to the other parts.
 void save(const Rendered& rendered, const Options& options, bool pfm = false);
 
+/// The sums of a render of `config` (the options' or a method's own): with the layers the
+/// integrator has where EXR is written (render_layers: the image's bits are the same),
+/// and with --preview in rounds, each round's picture written by save_preview.
+template <class Integrator>
+prism::Accumulation render_with(const std::string& name, const prism::Camera<typename Integrator::scalar_type>& camera, const Integrator& integrator,
+                                const prism::RenderConfig& config, const Options& options)
+{
+    const bool layers = options.exr || options.part;
+    if (options.preview)
+        return prism::render_progressive(camera, integrator, config, [&](const prism::Accumulation& sums) { save_preview(sums.image(), options, name); }, layers);
+    return layers ? prism::render_layers(camera, integrator, config) : prism::render_sums(camera, integrator, config);
+}
+
+/// The samples (or passes) a render took in each pixel: all of its range, or with a time
+/// budget (--seconds) the prefix it had time for.
+inline std::uint64_t samples_taken(const prism::Accumulation& sums)
+{
+    return sums.weight(sums.window().x0, sums.window().y0);
+}
+
 /// Render with the options' settings and report the render time (camera rays to
-/// finished sums) on stdout. Where EXR is written, with the layers the integrator has
-/// (render_layers: the image's bits are the same).
+/// finished sums) on stdout.
 template <class Integrator>
 Rendered timed_render(const std::string& name, const prism::Camera<typename Integrator::scalar_type>& camera, const Integrator& integrator,
                       const Options& options)
 {
     const prism::RenderConfig& config = options.render;
     const auto start = std::chrono::steady_clock::now();
-    prism::Accumulation sums =
-        options.exr || options.part ? prism::render_layers(camera, integrator, config) : prism::render_sums(camera, integrator, config);
+    prism::Accumulation sums = render_with(name, camera, integrator, config, options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("%s: %dx%d, %d spp, render time %.4f s\n", name.c_str(), config.width, config.height, config.spp, seconds);
+    std::printf("%s: %dx%d, %llu spp, render time %.4f s\n", name.c_str(), config.width, config.height, static_cast<unsigned long long>(samples_taken(sums)),
+                seconds);
     return {name, std::move(sums), seconds};
 }
 

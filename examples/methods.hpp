@@ -73,15 +73,16 @@ Rendered render_by_method(const std::string& name, const SceneT& scene, const pr
     if (method == "reference") {
         // POV-Ray's model lights the first diffuse surface only: no diffuse bounce.
         const prism::Reference reference(scene, {.max_diffuse_bounces = options.povray_light ? 0 : 256});
-        prism::Accumulation sums = prism::render_sums(camera, reference, pass_render_config(options));
-        std::printf("%s: reference, %d spp of path tracing and as many light paths, %.3f s\n", name.c_str(), options.render.spp, seconds());
+        prism::Accumulation sums = render_with(name, camera, reference, pass_render_config(options), options);
+        std::printf("%s: reference, %llu spp of path tracing and as many light paths, %.3f s\n", name.c_str(),
+                    static_cast<unsigned long long>(samples_taken(sums)), seconds());
         return {name, std::move(sums), seconds()};
     }
     if (method == "progressive") {
         const prism::ProgressivePhotonMapper<SceneT> progressive(scene, progressive_config<SceneT>(options));
-        prism::Accumulation sums = prism::render_sums(camera, progressive, pass_render_config(options));
-        std::printf("%s: progressive photon mapping, %zu passes of %zu + %zu photons, %.3f s\n", name.c_str(), options.passes, options.photons,
-                    options.caustic_photons, seconds());
+        prism::Accumulation sums = render_with(name, camera, progressive, pass_render_config(options), options);
+        std::printf("%s: progressive photon mapping, %llu passes of %zu + %zu photons, %.3f s\n", name.c_str(),
+                    static_cast<unsigned long long>(samples_taken(sums) / std::uint64_t(options.render.spp)), options.photons, options.caustic_photons, seconds());
         return {name, std::move(sums), seconds()};
     }
     Mapper mapper(scene, photon_mapper_config<SceneT>(options));

@@ -220,8 +220,12 @@ TEST_CASE("a progressive render shows rounds of doubling samples, and ends on th
     }
     const Film whole = render(camera, integrator, config), last = sums.image();
     CHECK(std::memcmp(whole.pixels().data(), last.pixels().data(), whole.pixels().size() * sizeof(whole.pixels()[0])) == 0);
-    // The layers ride along: render_layers' channels.
-    CHECK(sums.channels() == layer_channels<Whitted<std::remove_cvref_t<decltype(scene)>>>());
+    CHECK(sums.channels() == std::vector<std::string>{"R", "G", "B"});
+    // Asked for, the layers ride along: render_layers' channels, and R, G, B the same bits.
+    const Accumulation layered = render_progressive(camera, integrator, config, [](const Accumulation&) {}, true);
+    CHECK(layered.channels() == layer_channels<Whitted<std::remove_cvref_t<decltype(scene)>>>());
+    const Film layered_image = layered.image();
+    CHECK(std::memcmp(whole.pixels().data(), layered_image.pixels().data(), whole.pixels().size() * sizeof(whole.pixels()[0])) == 0);
 }
 
 TEST_CASE("a render to a time budget takes a prefix of its samples: the bits of the render of that prefix")

@@ -413,14 +413,20 @@ template <PassEstimator I>
 /// pixel's count doubling (and with config.seconds, within the budget), calling
 /// preview(sums) after each round with the sums so far, whose image() is the mean of the
 /// samples taken: with a Sobol sampler a converging picture, unbiased at every round.
-/// Returns the sums, with layers as render_layers'. The bits of a render of the samples
-/// it took.
+/// Returns the sums (R, G, B; with `layers`, render_layers' channels). The bits of a
+/// render of the samples it took.
 template <Integrator I, class Preview>
     requires std::invocable<Preview&, const Accumulation&>
-[[nodiscard]] Accumulation render_progressive(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config, Preview&& preview)
+[[nodiscard]] Accumulation render_progressive(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config, Preview&& preview,
+                                              bool layers = false)
 {
     (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
     if constexpr (RayEstimator<I>) {
+        if (!layers) {
+            Accumulation sums(config.width, config.height, detail::render_window(config));
+            detail::add_in_rounds(sums, config, true, [&](const RenderConfig& part) { detail::add_samples(sums, camera, integrator, part); }, preview);
+            return sums;
+        }
         Accumulation sums(config.width, config.height, detail::render_window(config), layer_channels<I>());
         detail::add_in_rounds(sums, config, true, [&](const RenderConfig& part) { detail::add_layers(sums, camera, integrator, part); }, preview);
         return sums;
