@@ -2577,16 +2577,6 @@ inline constexpr std::array<std::array<std::uint32_t, 32>, sobol_dimensions> sob
     return c;
 }();
 
-/// Point `index` of Sobol's sequence in dimension d (below sobol_dimensions), as a
-/// 32-bit fraction.
-[[nodiscard]] constexpr std::uint32_t sobol(std::uint32_t index, int d) noexcept
-{
-    std::uint32_t x = 0;
-    for (int k = 0; index != 0; ++k, index >>= 1)
-        if ((index & 1u) != 0) x ^= sobol_matrices[std::size_t(d)][std::size_t(k)];
-    return x;
-}
-
 /// The bits of x in reverse order.
 [[nodiscard]] constexpr std::uint32_t reverse_bits(std::uint32_t x) noexcept
 {
@@ -2595,6 +2585,43 @@ inline constexpr std::array<std::array<std::uint32_t, 32>, sobol_dimensions> sob
     x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
     x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
     return (x >> 16) | (x << 16);
+}
+
+/// Sobol's dimension 1 by bytes of the index, its bits reversed: entry [b][v] is the XOR
+/// of the columns 8b to 8b + 7 whose bits are set in v, reversed, so that a point is four
+/// lookups, not a loop of one unpredictable branch per bit of the index (which cost more
+/// than the rest of a path's sampling: a scrambled index has all 32 bits in play), and
+/// comes reversed, as Owen's scrambling (owen_scramble) takes it.
+inline constexpr std::array<std::array<std::uint32_t, 256>, 4> sobol1_reversed_bytes = [] {
+    std::array<std::array<std::uint32_t, 256>, 4> t{};
+    for (std::size_t b = 0; b < 4; ++b)
+        for (std::size_t v = 0; v < 256; ++v) {
+            std::uint32_t x = 0;
+            for (std::size_t k = 0; k < 8; ++k)
+                if (((v >> k) & 1u) != 0) x ^= sobol_matrices[1][8 * b + k];
+            t[b][v] = reverse_bits(x);
+        }
+    return t;
+}();
+
+/// Point `index` of Sobol's dimension 1, its bits reversed (sobol1_reversed_bytes).
+[[nodiscard]] constexpr std::uint32_t sobol1_reversed(std::uint32_t index) noexcept
+{
+    return sobol1_reversed_bytes[0][index & 0xffu] ^ sobol1_reversed_bytes[1][(index >> 8) & 0xffu] ^ sobol1_reversed_bytes[2][(index >> 16) & 0xffu] ^
+           sobol1_reversed_bytes[3][index >> 24];
+}
+
+/// Point `index` of Sobol's sequence in dimension d (below sobol_dimensions), as a
+/// 32-bit fraction: the index's bits reversed in dimension 0, four lookups in dimension 1
+/// (sobol1_reversed), the generator matrix's columns otherwise.
+[[nodiscard]] constexpr std::uint32_t sobol(std::uint32_t index, int d) noexcept
+{
+    if (d == 0) return reverse_bits(index);
+    if (d == 1) return reverse_bits(sobol1_reversed(index));
+    std::uint32_t x = 0;
+    for (int k = 0; index != 0; ++k, index >>= 1)
+        if ((index & 1u) != 0) x ^= sobol_matrices[std::size_t(d)][std::size_t(k)];
+    return x;
 }
 
 /// Laine and Karras's hash with Burley's constants: a bijection of 32-bit words whose
@@ -2709,7 +2736,7 @@ public:
 
     /// Sample `sample` of pixel `pixel` in the render of `seed`.
     constexpr Sampler(SamplerKind kind, std::uint64_t seed, std::uint64_t pixel, std::uint32_t sample) noexcept
-        : kind_(kind), key_(mix(seed, pixel)), sample_(sample)
+        : kind_(kind), key_(key_of(seed, pixel)), sample_(sample), reversed_sample_(sequences::reverse_bits(sample))
     {
     }
 
@@ -2717,9 +2744,14 @@ public:
     [[nodiscard]] constexpr std::array<std::uint32_t, 2> bits(std::uint32_t k) const noexcept
     {
         if (kind_ == SamplerKind::sobol) {
-            const std::uint32_t index = sequences::owen_scramble(sample_, sequences::seed_of(key_, 3 * std::uint64_t(k)));
-            return {sequences::owen_scramble(sequences::sobol(index, 0), sequences::seed_of(key_, 3 * std::uint64_t(k) + 1)),
-                    sequences::owen_scramble(sequences::sobol(index, 1), sequences::seed_of(key_, 3 * std::uint64_t(k) + 2))};
+            // index = owen_scramble(sample, s0), then owen_scramble(sobol(index, d), s1 + d),
+            // with the bit reversals that cancel left out: owen_scramble(x, s) is
+            // reverse(laine_karras(reverse(x), s)) and sobol(index, 0) is reverse(index),
+            // so three reversals a pair, not eight (the sample's own is kept).
+            using namespace sequences;
+            const std::uint32_t index = reverse_bits(laine_karras(reversed_sample_, seed_of(key_, 3 * std::uint64_t(k))));
+            return {reverse_bits(laine_karras(index, seed_of(key_, 3 * std::uint64_t(k) + 1))),
+                    reverse_bits(laine_karras(sobol1_reversed(index), seed_of(key_, 3 * std::uint64_t(k) + 2)))};
         }
         const std::uint64_t bits = hash(key_ ^ (std::uint64_t(sample_) << 32 | k));
         return {std::uint32_t(bits), std::uint32_t(bits >> 32)};
@@ -2743,6 +2775,13 @@ public:
     /// Which points these are.
     [[nodiscard]] constexpr SamplerKind kind() const noexcept { return kind_; }
 
+    /// The key of a pixel of a render, whence its scrambles' seeds (seed_of(key, 3k + j)):
+    /// unrelated for neighbouring pixels and seeds.
+    [[nodiscard]] static constexpr std::uint64_t key_of(std::uint64_t seed, std::uint64_t pixel) noexcept
+    {
+        return hash(hash(seed + 0x9e3779b97f4a7c15ULL) ^ (pixel * 0xd1b54a32d192ed03ULL));
+    }
+
 private:
     /// SplitMix64's finaliser: a bijection of 64-bit words that scatters every input bit.
     [[nodiscard]] static constexpr std::uint64_t hash(std::uint64_t z) noexcept
@@ -2751,15 +2790,11 @@ private:
         z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
         return z ^ (z >> 31);
     }
-    /// A key for the pixel of a render: unrelated for neighbouring pixels and seeds.
-    [[nodiscard]] static constexpr std::uint64_t mix(std::uint64_t seed, std::uint64_t pixel) noexcept
-    {
-        return hash(hash(seed + 0x9e3779b97f4a7c15ULL) ^ (pixel * 0xd1b54a32d192ed03ULL));
-    }
 
     SamplerKind kind_ = SamplerKind::independent;
     std::uint64_t key_ = 0;
     std::uint32_t sample_ = 0;
+    std::uint32_t reversed_sample_ = 0; ///< sample_'s bits reversed
 };
 
 } // namespace prism
@@ -12409,14 +12444,20 @@ template <PassEstimator I>
 /// pixel's count doubling (and with config.seconds, within the budget), calling
 /// preview(sums) after each round with the sums so far, whose image() is the mean of the
 /// samples taken: with a Sobol sampler a converging picture, unbiased at every round.
-/// Returns the sums, with layers as render_layers'. The bits of a render of the samples
-/// it took.
+/// Returns the sums (R, G, B; with `layers`, render_layers' channels). The bits of a
+/// render of the samples it took.
 template <Integrator I, class Preview>
     requires std::invocable<Preview&, const Accumulation&>
-[[nodiscard]] Accumulation render_progressive(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config, Preview&& preview)
+[[nodiscard]] Accumulation render_progressive(const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config, Preview&& preview,
+                                              bool layers = false)
 {
     (void)camera.rays(config.width, config.height); // a bad size is the camera's to name
     if constexpr (RayEstimator<I>) {
+        if (!layers) {
+            Accumulation sums(config.width, config.height, detail::render_window(config));
+            detail::add_in_rounds(sums, config, true, [&](const RenderConfig& part) { detail::add_samples(sums, camera, integrator, part); }, preview);
+            return sums;
+        }
         Accumulation sums(config.width, config.height, detail::render_window(config), layer_channels<I>());
         detail::add_in_rounds(sums, config, true, [&](const RenderConfig& part) { detail::add_layers(sums, camera, integrator, part); }, preview);
         return sums;

@@ -8,6 +8,7 @@
 #include "../chi2.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -50,6 +51,20 @@ TEST_CASE("a sampler's numbers depend only on (kind, seed, pixel, sample, dimens
                     REQUIRE(x < 1.0f);
                 }
     }
+}
+
+TEST_CASE("the Sobol sampler's pair is Burley's scrambles composed as written: the index scrambled, each coordinate scrambled")
+{
+    // The slow, obvious twin of Sampler::bits, which leaves out the bit reversals that cancel.
+    for (const std::uint32_t sample : {0u, 1u, 5u, 1000u, 65535u, 0x80000001u})
+        for (std::uint32_t k = 0; k < 20; ++k) {
+            const Sampler sampler(SamplerKind::sobol, 17, 4242, sample);
+            const std::uint64_t key = Sampler::key_of(17, 4242);
+            const std::uint32_t index = sequences::owen_scramble(sample, sequences::seed_of(key, 3 * std::uint64_t(k)));
+            const std::array<std::uint32_t, 2> expected = {sequences::owen_scramble(sequences::sobol(index, 0), sequences::seed_of(key, 3 * std::uint64_t(k) + 1)),
+                                                           sequences::owen_scramble(sequences::sobol(index, 1), sequences::seed_of(key, 3 * std::uint64_t(k) + 2))};
+            REQUIRE(sampler.bits(k) == expected);
+        }
 }
 
 TEST_CASE("under the Sobol sampler every prefix of 2^m samples of a pixel is stratified in every pair of dimensions")

@@ -47,6 +47,25 @@ double l2_star_discrepancy(const std::vector<std::array<double, 2>>& p)
 
 } // namespace
 
+TEST_CASE("Sobol's fast dimensions (bits reversed, lookups by byte) are the generator matrices' points, for indices of every size")
+{
+    // The slow, obvious twin: the XOR of the matrix's columns for the index's set bits.
+    const auto by_matrix = [](std::uint32_t index, int d) {
+        std::uint32_t x = 0;
+        for (int k = 0; k < 32; ++k)
+            if (((index >> k) & 1u) != 0) x ^= sobol_matrices[std::size_t(d)][std::size_t(k)];
+        return x;
+    };
+    std::uint64_t z = 1;
+    for (int n = 0; n < 200000; ++n) {
+        z = z * 6364136223846793005ULL + 1442695040888963407ULL;
+        const std::uint32_t index = n < 70000 ? std::uint32_t(n) : std::uint32_t(z >> 32) >> (n % 32); // small, then every length
+        REQUIRE(sobol(index, 0) == by_matrix(index, 0));
+        REQUIRE(sobol(index, 1) == by_matrix(index, 1));
+    }
+    CHECK(sobol(0xffffffffu, 1) == by_matrix(0xffffffffu, 1));
+}
+
 TEST_CASE("Sobol's first points, worked by hand from the polynomials and direction numbers")
 {
     // Dimension 0 is van der Corput's. Dimension 1 (x + 1, m = 1): v = 0.1, 0.11, 0.101

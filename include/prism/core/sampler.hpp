@@ -38,7 +38,7 @@ public:
 
     /// Sample `sample` of pixel `pixel` in the render of `seed`.
     constexpr Sampler(SamplerKind kind, std::uint64_t seed, std::uint64_t pixel, std::uint32_t sample) noexcept
-        : kind_(kind), key_(mix(seed, pixel)), sample_(sample)
+        : kind_(kind), key_(key_of(seed, pixel)), sample_(sample), reversed_sample_(sequences::reverse_bits(sample))
     {
     }
 
@@ -46,9 +46,14 @@ public:
     [[nodiscard]] constexpr std::array<std::uint32_t, 2> bits(std::uint32_t k) const noexcept
     {
         if (kind_ == SamplerKind::sobol) {
-            const std::uint32_t index = sequences::owen_scramble(sample_, sequences::seed_of(key_, 3 * std::uint64_t(k)));
-            return {sequences::owen_scramble(sequences::sobol(index, 0), sequences::seed_of(key_, 3 * std::uint64_t(k) + 1)),
-                    sequences::owen_scramble(sequences::sobol(index, 1), sequences::seed_of(key_, 3 * std::uint64_t(k) + 2))};
+            // index = owen_scramble(sample, s0), then owen_scramble(sobol(index, d), s1 + d),
+            // with the bit reversals that cancel left out: owen_scramble(x, s) is
+            // reverse(laine_karras(reverse(x), s)) and sobol(index, 0) is reverse(index),
+            // so three reversals a pair, not eight (the sample's own is kept).
+            using namespace sequences;
+            const std::uint32_t index = reverse_bits(laine_karras(reversed_sample_, seed_of(key_, 3 * std::uint64_t(k))));
+            return {reverse_bits(laine_karras(index, seed_of(key_, 3 * std::uint64_t(k) + 1))),
+                    reverse_bits(laine_karras(sobol1_reversed(index), seed_of(key_, 3 * std::uint64_t(k) + 2)))};
         }
         const std::uint64_t bits = hash(key_ ^ (std::uint64_t(sample_) << 32 | k));
         return {std::uint32_t(bits), std::uint32_t(bits >> 32)};
@@ -72,6 +77,13 @@ public:
     /// Which points these are.
     [[nodiscard]] constexpr SamplerKind kind() const noexcept { return kind_; }
 
+    /// The key of a pixel of a render, whence its scrambles' seeds (seed_of(key, 3k + j)):
+    /// unrelated for neighbouring pixels and seeds.
+    [[nodiscard]] static constexpr std::uint64_t key_of(std::uint64_t seed, std::uint64_t pixel) noexcept
+    {
+        return hash(hash(seed + 0x9e3779b97f4a7c15ULL) ^ (pixel * 0xd1b54a32d192ed03ULL));
+    }
+
 private:
     /// SplitMix64's finaliser: a bijection of 64-bit words that scatters every input bit.
     [[nodiscard]] static constexpr std::uint64_t hash(std::uint64_t z) noexcept
@@ -80,15 +92,11 @@ private:
         z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
         return z ^ (z >> 31);
     }
-    /// A key for the pixel of a render: unrelated for neighbouring pixels and seeds.
-    [[nodiscard]] static constexpr std::uint64_t mix(std::uint64_t seed, std::uint64_t pixel) noexcept
-    {
-        return hash(hash(seed + 0x9e3779b97f4a7c15ULL) ^ (pixel * 0xd1b54a32d192ed03ULL));
-    }
 
     SamplerKind kind_ = SamplerKind::independent;
     std::uint64_t key_ = 0;
     std::uint32_t sample_ = 0;
+    std::uint32_t reversed_sample_ = 0; ///< sample_'s bits reversed
 };
 
 } // namespace prism

@@ -60,16 +60,6 @@ inline constexpr std::array<std::array<std::uint32_t, 32>, sobol_dimensions> sob
     return c;
 }();
 
-/// Point `index` of Sobol's sequence in dimension d (below sobol_dimensions), as a
-/// 32-bit fraction.
-[[nodiscard]] constexpr std::uint32_t sobol(std::uint32_t index, int d) noexcept
-{
-    std::uint32_t x = 0;
-    for (int k = 0; index != 0; ++k, index >>= 1)
-        if ((index & 1u) != 0) x ^= sobol_matrices[std::size_t(d)][std::size_t(k)];
-    return x;
-}
-
 /// The bits of x in reverse order.
 [[nodiscard]] constexpr std::uint32_t reverse_bits(std::uint32_t x) noexcept
 {
@@ -78,6 +68,43 @@ inline constexpr std::array<std::array<std::uint32_t, 32>, sobol_dimensions> sob
     x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
     x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
     return (x >> 16) | (x << 16);
+}
+
+/// Sobol's dimension 1 by bytes of the index, its bits reversed: entry [b][v] is the XOR
+/// of the columns 8b to 8b + 7 whose bits are set in v, reversed, so that a point is four
+/// lookups, not a loop of one unpredictable branch per bit of the index (which cost more
+/// than the rest of a path's sampling: a scrambled index has all 32 bits in play), and
+/// comes reversed, as Owen's scrambling (owen_scramble) takes it.
+inline constexpr std::array<std::array<std::uint32_t, 256>, 4> sobol1_reversed_bytes = [] {
+    std::array<std::array<std::uint32_t, 256>, 4> t{};
+    for (std::size_t b = 0; b < 4; ++b)
+        for (std::size_t v = 0; v < 256; ++v) {
+            std::uint32_t x = 0;
+            for (std::size_t k = 0; k < 8; ++k)
+                if (((v >> k) & 1u) != 0) x ^= sobol_matrices[1][8 * b + k];
+            t[b][v] = reverse_bits(x);
+        }
+    return t;
+}();
+
+/// Point `index` of Sobol's dimension 1, its bits reversed (sobol1_reversed_bytes).
+[[nodiscard]] constexpr std::uint32_t sobol1_reversed(std::uint32_t index) noexcept
+{
+    return sobol1_reversed_bytes[0][index & 0xffu] ^ sobol1_reversed_bytes[1][(index >> 8) & 0xffu] ^ sobol1_reversed_bytes[2][(index >> 16) & 0xffu] ^
+           sobol1_reversed_bytes[3][index >> 24];
+}
+
+/// Point `index` of Sobol's sequence in dimension d (below sobol_dimensions), as a
+/// 32-bit fraction: the index's bits reversed in dimension 0, four lookups in dimension 1
+/// (sobol1_reversed), the generator matrix's columns otherwise.
+[[nodiscard]] constexpr std::uint32_t sobol(std::uint32_t index, int d) noexcept
+{
+    if (d == 0) return reverse_bits(index);
+    if (d == 1) return reverse_bits(sobol1_reversed(index));
+    std::uint32_t x = 0;
+    for (int k = 0; index != 0; ++k, index >>= 1)
+        if ((index & 1u) != 0) x ^= sobol_matrices[std::size_t(d)][std::size_t(k)];
+    return x;
 }
 
 /// Laine and Karras's hash with Burley's constants: a bijection of 32-bit words whose
