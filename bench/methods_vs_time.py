@@ -223,7 +223,9 @@ def main():
     povray_counts = [10000, 30000, 100000, 300000, 1000000, 3000000]
     paths = {"path": efforts["reference"], "path_bounces": efforts["reference"], "path_grid2": efforts["reference"],
              "path:independent": efforts["reference"]}
-    per_scene = {"diffuse": efforts, "glass": efforts, "area": {**efforts, **paths},
+    # Independent photons and samples beside the default Sobol ones, on the diffuse box.
+    independent = {"direct:independent": efforts["direct"], "progressive:independent": efforts["progressive"]}
+    per_scene = {"diffuse": {**efforts, **independent}, "glass": efforts, "area": {**efforts, **paths},
                  "povray": {"direct": [10000, 30000, 100000, 300000, 1000000, 3000000],
                             "direct, 1 spp": [10000, 30000, 100000, 300000, 1000000, 3000000], "progressive": efforts["progressive"],
                             "reference": [1, 2] + efforts["reference"]}}

@@ -64,7 +64,7 @@ void print_help(const char* program, const char* description, const Options& def
                 "  --spp N       samples per pixel; 1 samples pixel centres (default %d)\n"
                 "  --threads N   worker threads, 0 = all cores (default 0)\n"
                 "  --seed N      random seed (default 0)\n"
-                "  --sampler S   the samples' points: sobol (Owen-scrambled Sobol, every 2^m samples of a pixel\n"
+                "  --sampler S   the samples' and photons' points: sobol (Owen-scrambled Sobol, every 2^m samples of a pixel\n"
                 "                stratified) or independent (default sobol)\n"
                 "  --out DIR     folder for the images, created if missing (default .)\n"
                 "  --crop X0,X1,Y0,Y1\n"

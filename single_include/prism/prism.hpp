@@ -2438,13 +2438,11 @@ private:
 } // namespace prism
 
 // ---- prism/core/rng.hpp ----
-// PCG32 random numbers: small state, many independent streams (one per pixel); and the
-// scrambled Sobol (0,2)-sequence for stratified points in the unit square.
+// PCG32 random numbers: small state, many independent streams (one per sample, one per
+// photon), what a sample draws past its sampler's dimensions (core/random.hpp).
 
 
-#include <array>
 #include <cstdint>
-#include <limits>
 
 namespace prism {
 
@@ -2491,29 +2489,6 @@ private:
     std::uint64_t state_ = 0;
     std::uint64_t inc_ = 1;
 };
-
-/// Point i of the Sobol (0,2)-sequence in [0, 1)^2, each coordinate scrambled by XOR with
-/// its own 32-bit word (random digit scrambling, which keeps the stratification). Any 2^m
-/// consecutive points from a multiple of 2^m put exactly one point in every elementary
-/// box of area 2^-m (Sobol 1967; the generator of Kollig and Keller 2002). A point
-/// depends only on i, so threads can take any share of the sequence.
-template <Scalar T = double>
-[[nodiscard]] constexpr std::array<T, 2> sobol02(std::uint32_t i, std::uint32_t scramble_x, std::uint32_t scramble_y) noexcept
-{
-    std::uint32_t x = 0, y = 0;
-    for (std::uint32_t v = 1u << 31, bit = 0; i != 0; i >>= 1, v ^= v >> 1, ++bit) {
-        if (i & 1u) {
-            x ^= 1u << (31 - bit); // van der Corput: the bits of i reversed
-            y ^= v;
-        }
-    }
-    x ^= scramble_x;
-    y ^= scramble_y;
-    // Keep the top bits that T holds exactly, so a coordinate is never rounded up to 1.
-    constexpr int bits = std::numeric_limits<T>::digits < 32 ? std::numeric_limits<T>::digits : 32;
-    constexpr T scale = T(1) / T(std::uint64_t(1) << bits);
-    return {T(x >> (32 - bits)) * scale, T(y >> (32 - bits)) * scale};
-}
 
 } // namespace prism
 
@@ -10554,6 +10529,12 @@ struct PhotonTracerConfig {
     int max_medium_bounces = 1000;        ///< scatterings in media followed at most (WalkLimits'; in fog that absorbs, roulette ends a photon long before)
     bool shadow_photons = true; ///< store shadow photons in the global map
     std::uint64_t seed = 0; ///< with the light, fixes every photon
+    /// The photons' numbers (core/sampler.hpp): photon i of a map is sample i of the
+    /// sampler, its choice of light and point (pair 0), its direction (pair 1) and each
+    /// bounce (a block of pairs) Owen-scrambled Sobol points, so that the photons of any
+    /// 2^m prefix, a pass of progressive photon mapping included, are stratified in each;
+    /// or independent numbers.
+    SamplerKind sampler = SamplerKind::sobol;
     unsigned threads = 0; ///< 0 = all hardware threads
     /// A white photon meeting a dispersive interface takes one of this many wavelength
     /// bands at random (1 to 81), its power scaled by the band's photon_weight times
@@ -10612,9 +10593,6 @@ public:
         : scene_(scene), config_((detail::validate(config), config)), bands_(config.dispersion_bands), air_(air)
     {
         air_.validate();
-        Random scrambles(config.seed, 0xfeed5eedULL);
-        for (std::uint32_t& word : global_scramble_) word = scrambles.next_u32();
-        for (std::uint32_t& word : caustic_scramble_) word = scrambles.next_u32();
         // A sphere around everything bounded, the air's medium included where it is
         // bounded: parallel photons start outside it.
         Aabb<T> lit = scene.bounds();
@@ -10673,18 +10651,18 @@ private:
     /// Photon i of a map of `count`: choose an emitter by its share of the power (the
     /// photon carries its power / (count p)), let its light place the photon, and walk
     /// it (random_walk), calling visit(material, vertex, stored power) at each diffuse
-    /// surface. The choice and the two numbers that place the photon come from point i of
-    /// a scrambled Sobol (0,2)-sequence, so the photons of each emitter are stratified
-    /// over its directions (or its disk) as on a jittered grid, but for any count;
-    /// everything after the first hit is random.
+    /// surface. Its numbers are sample i of config.sampler: with Sobol points the choice
+    /// and the point on the light (pair 0), the direction (pair 1) and each bounce are
+    /// stratified over the photons as on a jittered grid, but for any count.
     template <class Visit, class VisitMedium = IgnoreMedia>
     void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, Visit&& visit,
               VisitMedium&& visit_medium = {}) const
     {
         if (emitters.empty() || !(total_power > T(0))) return;
-        Random rng(config_.seed, 2 * i + (caustic_pass ? 1 : 0));
-        const std::uint32_t* scramble = caustic_pass ? caustic_scramble_ : global_scramble_;
-        auto [u, v] = sobol02<double>(static_cast<std::uint32_t>(i), scramble[0], scramble[1]);
+        // Photon i's numbers: sample i of the map's sampler (photon indices stay below 2^32:
+        // check_photon_passes), then the photon's own PCG stream.
+        Random rng(Sampler(config_.sampler, config_.seed, caustic_pass ? 1 : 0, static_cast<std::uint32_t>(i)), Pcg32(config_.seed, 2 * i + (caustic_pass ? 1 : 0)));
+        auto [u, v] = rng.uniform2<double>();
         // The emitter whose share of [0, 1) holds u; u rescaled within that share.
         const Emitter<T>* e = &emitters.back();
         double p = 1, start = 0;
@@ -10833,7 +10811,6 @@ private:
     T global_power_ = T(0);
     std::vector<Emitter<T>> targets_; ///< every light aimed at each object that may scatter by a delta lobe: the caustic map's and a light tracer's
     T target_power_ = T(0);
-    std::uint32_t global_scramble_[2]{}, caustic_scramble_[2]{}; ///< the Sobol points' scrambling, per map
 };
 
 /// Run `trace(first, last, out)` over [0, count) in fixed blocks on worker threads and

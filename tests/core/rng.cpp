@@ -4,8 +4,6 @@
 #include <doctest/doctest.h>
 
 #include <array>
-#include <utility>
-#include <vector>
 #include <cmath>
 
 TEST_CASE("Pcg32 matches the reference pcg32 sequence")
@@ -44,32 +42,4 @@ TEST_CASE("streams are independent and reproducible")
         CHECK(x == c.next_u32());
     }
     CHECK(equal < 3);
-}
-
-TEST_CASE("sobol02 is a (0,2)-sequence: 2^m points fill every elementary box of area 2^-m once")
-{
-    // The definition, checked for m = 10 and every box shape 2^-a x 2^-(m - a), on the
-    // first 1024 points and on points 3072..4095, scrambled and not.
-    constexpr int m = 10, n = 1 << m;
-    for (const auto& [sx, sy] : {std::pair{0u, 0u}, std::pair{0x9e3779b9u, 0x7f4a7c15u}})
-        for (const std::uint32_t first : {0u, 3u * n}) {
-            int bad = 0;
-            for (int a = 0; a <= m; ++a) {
-                std::vector<int> count(n, 0);
-                for (std::uint32_t i = first; i < first + n; ++i) {
-                    const auto [x, y] = prism::sobol02<double>(i, sx, sy);
-                    REQUIRE(x >= 0.0);
-                    REQUIRE(x < 1.0);
-                    REQUIRE(y < 1.0);
-                    const int bx = int(x * (1 << a)), by = int(y * (1 << (m - a)));
-                    ++count[static_cast<std::size_t>(bx * (1 << (m - a)) + by)];
-                }
-                for (int c : count) bad += c != 1;
-            }
-            CHECK(bad == 0);
-        }
-    // In float a coordinate never rounds up to 1.
-    const auto [x, y] = prism::sobol02<float>(0, 0xffffffffu, 0xffffffffu);
-    CHECK(x < 1.0f);
-    CHECK(y < 1.0f);
 }

@@ -483,7 +483,11 @@ TEST_CASE("regression: the photon mapper's volume furnace in a ball of smoke (th
     // disc about the camera ray lies outside the fog, most in the densest channel, whose
     // light scatters within 0.25 of the surface: at 4 million photons blue read 0.945 at
     // a volume radius of 0.1, 0.974 at 0.05, 0.984 at 0.025 (red and green within 1.2 %
-    // at 0.05). Held at 0.05: 1.5 % in red and green, 4 % in blue.
+    // at 0.05). At 0.05 and 1 million photons the photons' noise adds as much: over photon
+    // seeds 0 to 3, blue read 0.984, 0.959, 0.981 with independent photons and 0.960,
+    // 0.958, 0.991, 0.977 with Sobol photons, green 0.972 to 0.995 (a spread of about 1.3 %
+    // in blue, 0.8 % in green). Held at the bias and three times that: 3.5 % in red and
+    // green, 7 % in blue, far above the 0.64 to 0.89 of the bug.
     using T = float;
     const Fog<T> fog{.scattering = {1.0f, 2.0f, 4.0f}, .phase = {.g = 0.6f}};
     const auto ball = Scene{Lights{EnvironmentLight<T>{}}, Object{Sphere<T>({0, 0, 0}, 1), Dielectric<T, ExactFresnel, Fog<T>>{.ior = 1, .interior = fog}}};
@@ -503,7 +507,7 @@ TEST_CASE("regression: the photon mapper's volume furnace in a ball of smoke (th
     for (int c = 0; c < 3; ++c) {
         CAPTURE(c);
         MESSAGE("channel ", c, ": ", without[c], " without caustic photons, ", with[c], " with");
-        CHECK(without[c] == doctest::Approx(1).epsilon(test::resolved(c == 2 ? 0.04 : 0.015)).scale(0));
+        CHECK(without[c] == doctest::Approx(1).epsilon(test::resolved(c == 2 ? 0.07 : 0.035)).scale(0));
         CHECK(with[c] == without[c]);
     }
 }

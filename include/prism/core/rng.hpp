@@ -1,13 +1,11 @@
 // SPDX-License-Identifier: MIT
-// PCG32 random numbers: small state, many independent streams (one per pixel); and the
-// scrambled Sobol (0,2)-sequence for stratified points in the unit square.
+// PCG32 random numbers: small state, many independent streams (one per sample, one per
+// photon), what a sample draws past its sampler's dimensions (core/random.hpp).
 #pragma once
 
 #include <prism/core/math.hpp>
 
-#include <array>
 #include <cstdint>
-#include <limits>
 
 namespace prism {
 
@@ -54,28 +52,5 @@ private:
     std::uint64_t state_ = 0;
     std::uint64_t inc_ = 1;
 };
-
-/// Point i of the Sobol (0,2)-sequence in [0, 1)^2, each coordinate scrambled by XOR with
-/// its own 32-bit word (random digit scrambling, which keeps the stratification). Any 2^m
-/// consecutive points from a multiple of 2^m put exactly one point in every elementary
-/// box of area 2^-m (Sobol 1967; the generator of Kollig and Keller 2002). A point
-/// depends only on i, so threads can take any share of the sequence.
-template <Scalar T = double>
-[[nodiscard]] constexpr std::array<T, 2> sobol02(std::uint32_t i, std::uint32_t scramble_x, std::uint32_t scramble_y) noexcept
-{
-    std::uint32_t x = 0, y = 0;
-    for (std::uint32_t v = 1u << 31, bit = 0; i != 0; i >>= 1, v ^= v >> 1, ++bit) {
-        if (i & 1u) {
-            x ^= 1u << (31 - bit); // van der Corput: the bits of i reversed
-            y ^= v;
-        }
-    }
-    x ^= scramble_x;
-    y ^= scramble_y;
-    // Keep the top bits that T holds exactly, so a coordinate is never rounded up to 1.
-    constexpr int bits = std::numeric_limits<T>::digits < 32 ? std::numeric_limits<T>::digits : 32;
-    constexpr T scale = T(1) / T(std::uint64_t(1) << bits);
-    return {T(x >> (32 - bits)) * scale, T(y >> (32 - bits)) * scale};
-}
 
 } // namespace prism
