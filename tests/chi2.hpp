@@ -6,8 +6,11 @@
 #pragma once
 
 #include <prism/core/math.hpp>
+#include <prism/core/random.hpp>
+#include <prism/core/sampler.hpp>
 #include <prism/core/sampling.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <functional>
@@ -90,6 +93,16 @@ inline Chi2 chi2_test(const std::vector<double>& observed, const std::vector<dou
     return out;
 }
 
+/// Sample k's two numbers: independent ones from rng, or point k of the Sobol sampler's
+/// first pair (core/sampler.hpp). Under Sobol points the counts scatter far less than a
+/// multinomial's, so a right density gives a small statistic (p near 1) and a wrong one
+/// still a large one: the test keeps its power to fail.
+inline std::array<double, 2> uv(prism::SamplerKind points, std::uint64_t seed, long k, prism::Random& rng)
+{
+    if (points == prism::SamplerKind::independent) return rng.uniform2<double>();
+    return prism::Sampler(points, seed, 0, static_cast<std::uint32_t>(k)).pair<double>(0);
+}
+
 /// A sampler of directions against its solid-angle density: `sample(u, v)` returns a unit
 /// direction (or the zero vector for no sample), `pdf(w)` the density it claims. The cone
 /// of directions within acos(cos_max) of `axis` (the whole sphere for -1), which must hold
@@ -99,7 +112,7 @@ inline Chi2 chi2_test(const std::vector<double>& observed, const std::vector<dou
 /// cone fails the test.
 inline Chi2 chi2_directions(const std::function<prism::Vec3<double>(double, double)>& sample, const std::function<double(const prism::Vec3<double>&)>& pdf,
                             const prism::Vec3<double>& axis, long samples, int theta_bins = 20, int phi_bins = 40, int sub = 12,
-                            double cos_max = -1, std::uint64_t seed = 7)
+                            double cos_max = -1, std::uint64_t seed = 7, prism::SamplerKind points = prism::SamplerKind::independent)
 {
     const double z_span = 1 - cos_max;
     const auto [s, t] = prism::orthonormal_frame(axis);
@@ -116,7 +129,7 @@ inline Chi2 chi2_directions(const std::function<prism::Vec3<double>(double, doub
     prism::Random rng(seed, 3);
     long taken = 0;
     for (long k = 0; k < samples; ++k) {
-        const double u = rng.uniform<double>(), v = rng.uniform<double>();
+        const auto [u, v] = uv(points, seed, k, rng);
         const prism::Vec3<double> w = sample(u, v);
         if (w == prism::Vec3<double>(0)) continue;
         ++taken;
@@ -174,12 +187,13 @@ inline Chi2 chi2_directions(const std::function<prism::Vec3<double>(double, doub
 /// the light itself has no edges inside the bins, which thin or grazing views give a
 /// binning by direction.
 inline Chi2 chi2_surface(const std::function<prism::Vec2<double>(double, double)>& sample, const std::function<double(double, double)>& density,
-                         long samples, int bins = 40, int sub = 8, std::uint64_t seed = 11)
+                         long samples, int bins = 40, int sub = 8, std::uint64_t seed = 11, prism::SamplerKind points = prism::SamplerKind::independent)
 {
     std::vector<double> observed(std::size_t(bins * bins), 0.0), expected(observed.size(), 0.0);
     prism::Random rng(seed, 5);
     for (long k = 0; k < samples; ++k) {
-        const prism::Vec2<double> st = sample(rng.uniform<double>(), rng.uniform<double>());
+        const auto [u, v] = uv(points, seed, k, rng);
+        const prism::Vec2<double> st = sample(u, v);
         if (!(st.x >= -1e-9 && st.x <= 1 + 1e-9 && st.y >= -1e-9 && st.y <= 1 + 1e-9)) {
             Chi2 outside;
             outside.statistic = INFINITY;

@@ -15042,6 +15042,7 @@ private:
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <utility>
 
 namespace prism {
@@ -15107,7 +15108,14 @@ public:
     /// Throws std::invalid_argument when the passes `config` asks for would reach past
     /// photon index 2^32, before any is traced (mpi::render_sums asks for the whole range
     /// before it deals passes to the ranks).
-    void check_passes(const RenderConfig& config) const { check_photon_passes(config_.pass.tracing, detail::render_passes(config).last); }
+    void check_passes(const RenderConfig& config) const
+    {
+        const std::uint64_t last = detail::render_passes(config).last;
+        check_photon_passes(config_.pass.tracing, last);
+        // The camera's samples of every pass are one sequence, counted in an int.
+        if (last > std::uint64_t(std::numeric_limits<int>::max()) / std::uint64_t(config_.samples))
+            detail::throw_invalid("ProgressivePhotonMapper: ", last, " passes of ", config_.samples, " samples reach past sample 2^31 of a pixel");
+    }
 
     /// Passes config.passes of config.spp, each of `samples` samples per pixel, in order;
     /// with a time budget, up to the pass that ends past it (the samples of the passes
@@ -15128,10 +15136,12 @@ public:
             if (config_.pass.indirect_volume_radius > 0.0f)
                 mapper_config.indirect_volume_radius = float(progressive_radius(config_.pass.indirect_volume_radius, config_.alpha, pass));
             const PhotonMapper<SceneT, Air> mapper(*scene_, mapper_config, trace_photons(*scene_, config_.pass.tracing, air_, pass), air_);
+            // Pass p takes the pixels' samples p s to (p + 1) s of one sequence (s = samples),
+            // so that the camera's samples of any 2^m passes are stratified over the pixel.
             RenderConfig pass_render = config;
-            pass_render.spp = config_.samples;
-            pass_render.passes = {};
-            pass_render.seed = config.seed + 0x9e3779b97f4a7c15ULL * (pass + 1); // a fresh sample in every pixel
+            pass_render.spp = int((pass + 1) * std::uint64_t(config_.samples));
+            pass_render.passes = {pass * std::uint64_t(config_.samples), (pass + 1) * std::uint64_t(config_.samples)};
+            pass_render.seconds = 0;
             pass_render.progress = false;
             pass_render.single_sample_at_centre = false; // anti-aliased over the passes
             render_into(sums, camera, mapper, pass_render);

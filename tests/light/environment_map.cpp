@@ -119,6 +119,12 @@ TEST_CASE("an environment map is sampled as densely as its pdf says (chi-square)
                                                    [&](const Vec3<double>& w) { return map.pdf(w); }, {0, 1, 0}, 2000000, 40, 80, 40);
         MESSAGE("rotation ", rotation, ": chi2 ", c.statistic, " with ", c.degrees, " degrees, p = ", c.p_value, "; missing ", c.missing, ", stray ", c.stray);
         CHECK(c.p_value > 1e-3);
+        // Under the renders' Sobol points (the statistic far below its degrees of freedom,
+        // as the counts scatter less than a multinomial's; a wrong density still adds much).
+        const test::Chi2 sobol = test::chi2_directions([&](double u, double v) { return map.sample({}, {u, v}).wi; },
+                                                       [&](const Vec3<double>& w) { return map.pdf(w); }, {0, 1, 0}, 2000000, 40, 80, 40, -1, 7, SamplerKind::sobol);
+        MESSAGE("under Sobol points: chi2 ", sobol.statistic, " with ", sobol.degrees, " degrees, p = ", sobol.p_value);
+        CHECK(sobol.p_value > 1e-3);
         CHECK(std::abs(c.missing) < 1e-3 * 2e6);
         CHECK(c.stray == 0);
         // Each sample's density is pdf() of its direction, but where rounding moves a sample
