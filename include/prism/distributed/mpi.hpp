@@ -419,7 +419,7 @@ void precompute_irradiance(MPI_Comm comm, PhotonMap& map, std::size_t stride, un
 /// threads); one of passes (PassEstimator) is dealt one pass at a time to whichever rank
 /// asks next (its photons or light paths traced there), every rank's passes summed exactly
 /// and the shares added up on rank 0 by a reduction of 128-bit sums. A time budget
-/// (ProgressiveConfig::seconds) would make the pass count depend on the machines: it is
+/// (RenderConfig::seconds) would make the pass count depend on the machines: it is
 /// refused.
 template <Integrator I>
 [[nodiscard]] std::optional<Accumulation> render_sums(MPI_Comm comm, const Camera<typename I::scalar_type>& camera, const I& integrator,
@@ -429,11 +429,6 @@ template <Integrator I>
         return detail::render_dealt(comm, config, tile, {"R", "G", "B"}, traffic,
                                     [&](const RenderConfig& part) { return prism::render_sums(camera, integrator, part); });
     } else {
-        if constexpr (requires { integrator.config().seconds; }) {
-            if (integrator.config().seconds != 0.0)
-                prism::detail::throw_invalid("prism::mpi::render_sums takes a pass count, not a time budget: seconds must be 0, got ",
-                                             integrator.config().seconds);
-        }
         if (prism::detail::render_seconds(config) != 0.0)
             prism::detail::throw_invalid("prism::mpi::render_sums takes a pass count, not a time budget: RenderConfig seconds must be 0, got ", config.seconds);
         const PassRange passes = prism::detail::render_passes(config);

@@ -65,9 +65,7 @@ struct ProgressiveConfig {
                                                     .gather_rays = 0};
     double alpha = 2.0 / 3.0; ///< in (0, 1): how much of the radius each pass keeps
     int samples = 1;          ///< jittered camera samples per pixel in each pass
-    /// > 0: stop after the pass that ends past this time (the pass count then varies, and
-    /// so do the image's bits); 0: every pass of the render.
-    double seconds = 0;
+    // A time budget is RenderConfig::seconds, as for every integrator.
 };
 
 /// Progressive photon mapping of `scene` in its air: pass p (from 0) traces photon pass p
@@ -94,7 +92,6 @@ public:
         if (config.pass.caustic.k != 0 || config.pass.global.k != 0)
             detail::throw_invalid("ProgressiveConfig estimates must be by radius (k = 0), got k = ", config.pass.caustic.k, " and ", config.pass.global.k);
         if (config.samples < 1) detail::throw_invalid("ProgressiveConfig samples must be >= 1, got ", config.samples);
-        if (!(config.seconds >= 0.0 && std::isfinite(config.seconds))) detail::throw_invalid("ProgressiveConfig seconds must be finite and >= 0, got ", config.seconds);
         detail::validate(config.pass.tracing);
     }
     ProgressivePhotonMapper(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
@@ -114,9 +111,9 @@ public:
             detail::throw_invalid("ProgressivePhotonMapper: ", last, " passes of ", config_.samples, " samples reach past sample 2^31 of a pixel");
     }
 
-    /// Passes config.passes of config.spp, each of `samples` samples per pixel, in order;
-    /// with a time budget, up to the pass that ends past it (the samples of the passes
-    /// rendered are the pixels' weight).
+    /// Passes config.passes of config.spp, each of `samples` samples per pixel, in order
+    /// (the samples of the passes rendered are the pixels' weight; a time budget,
+    /// RenderConfig::seconds, is render()'s, which calls this with the passes of a round).
     void add_passes(Accumulation& sums, const Camera<T>& camera, const RenderConfig& config) const
     {
         const PassRange passes = detail::render_passes(config);
@@ -124,7 +121,6 @@ public:
         const auto start = std::chrono::steady_clock::now();
         const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
         detail::ProgressLine line("progressive photon mapping");
-        std::uint64_t done = passes.first;
         for (std::uint64_t pass = passes.first; pass < passes.last; ++pass) {
             typename PhotonMapper<SceneT, Air>::Config mapper_config = config_.pass;
             mapper_config.caustic.radius = float(progressive_radius(config_.pass.caustic.radius, config_.alpha, pass));
@@ -145,11 +141,9 @@ public:
             if (config.progress)
                 line.update(elapsed(), detail::formatted("pass %llu, r = %.4g / %.4g (%.1f s)", static_cast<unsigned long long>(pass + 1),
                                                          double(mapper_config.caustic.radius), double(mapper_config.global.radius), elapsed()));
-            done = pass + 1;
-            if (config_.seconds > 0.0 && elapsed() >= config_.seconds) break;
         }
         if (config.progress)
-            line.finish(elapsed(), detail::formatted("%llu passes (%.1f s)", static_cast<unsigned long long>(done - passes.first), elapsed()));
+            line.finish(elapsed(), detail::formatted("%llu passes (%.1f s)", static_cast<unsigned long long>(passes.count()), elapsed()));
     }
 
 private:
