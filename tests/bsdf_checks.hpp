@@ -179,14 +179,25 @@ inline Chi2 chi2_polar(const std::function<prism::Vec3<double>()>& sample, const
 }
 
 /// Pearson's test of a lobe's sampling for wo against its pdf (chi2_polar about the
-/// mirror direction), its three numbers drawn from one stream.
+/// mirror direction), its three numbers drawn from one stream; or, with Sobol `points`,
+/// draw k's from sample k of a render's sampler as a path's first bounce draws them (the
+/// lobe's choice one number, its direction the next pair: BsdfAt::sample), whose counts
+/// scatter less than a multinomial's (the statistic falls far below its degrees of
+/// freedom, and a wrong density still raises it).
 template <class B>
-Chi2 chi2_lobe(const B& lobe, const prism::Vec3<double>& wo, long samples = 1000000, prism::Transport mode = prism::Transport::radiance, int sub = 8)
+Chi2 chi2_lobe(const B& lobe, const prism::Vec3<double>& wo, long samples = 1000000, prism::Transport mode = prism::Transport::radiance, int sub = 8,
+               prism::SamplerKind points = prism::SamplerKind::independent)
 {
     prism::Random rng(17, 5);
+    long k = 0;
     return chi2_polar(
         [&] {
-            const double u0 = rng.uniform<double>(), u1 = rng.uniform<double>(), u2 = rng.uniform<double>();
+            prism::Random sobol(prism::Sampler(points, 17, 0, static_cast<std::uint32_t>(k)), prism::Pcg32(17, std::uint64_t(k)));
+            ++k;
+            sobol.bounce(0);
+            prism::Random& draw = points == prism::SamplerKind::independent ? rng : sobol;
+            const double u0 = draw.uniform<double>();
+            const auto [u1, u2] = draw.uniform2<double>();
             const auto s = lobe.sample(wo, u0, u1, u2, mode);
             return s && !s->delta ? s->wi : prism::Vec3<double>(0);
         },
@@ -213,6 +224,9 @@ LobeSampling check_lobe_sampling(const B& lobe, const prism::Vec3<double>& wo, d
     const Chi2 chi2 = chi2_lobe(lobe, wo, samples(500000));
     CAPTURE(chi2.statistic);
     CHECK(chi2.p_value > 1e-3);
+    const Chi2 sobol = chi2_lobe(lobe, wo, samples(500000), prism::Transport::radiance, 8, prism::SamplerKind::sobol);
+    CAPTURE(sobol.statistic);
+    CHECK(sobol.p_value > 1e-3);
     CHECK(chi2.stray < 10);
     CHECK(chi2.mass == doctest::Approx(chi2.share).epsilon(resolved(mass_epsilon)));
     const LobeSampling s = sample_lobe(lobe, wo, samples(draws));
