@@ -65,8 +65,9 @@ public:
         /// Surfaces a path scatters at before Russian roulette on its throughput may end it
         /// (path_roulette; pbrt's depth 1, Mitsuba's rr_depth 5). Roulette at the first
         /// bounces cuts short the paths a caustic is found by, on their way to the light;
-        /// later it saves the long tails of dim paths.
-        int roulette_depth = 2;
+        /// later it saves the long tails of dim paths. 3 was the most efficient on the
+        /// area-lit Cornell box with Sobol samples (1 to 8 tried: docs/benchmarks.md).
+        int roulette_depth = 3;
         /// Diffuse bounces a path may take: 0 lights each pixel's first diffuse surface by
         /// shadow rays and goes no further (direct light, seen directly or through
         /// mirrors and glass), as POV-Ray without radiosity; 1 adds one bounce, and so on.
