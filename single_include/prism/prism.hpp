@@ -12121,16 +12121,18 @@ struct CameraSample {
     Random rng;                 ///< the rest of the sample's numbers
 };
 
-/// Sample s of pixel `pixel` (y * width + x) of a render: the footprint and the lens from
-/// the sampler's pairs 0 and 1, whatever the camera (the footprint the pixel's centre when
-/// spp = 1 and config.single_sample_at_centre). The footprint is drawn in float in every
-/// precision, so float and double renders of one seed sample the same positions.
+/// Sample s of pixel `pixel` (y * width + x) of a render: the footprint and, through a
+/// thin lens, the lens point from the sampler's pairs 0 and 1 (the footprint the pixel's
+/// centre when spp = 1 and config.single_sample_at_centre; a pinhole draws no lens point,
+/// which moves no later dimension: the path's first bounce starts at its own pair). The
+/// footprint is drawn in float in every precision, so float and double renders of one
+/// seed sample the same positions.
 template <Scalar T>
-[[nodiscard]] constexpr CameraSample<T> camera_sample(const RenderConfig& config, std::uint64_t pixel, std::uint64_t s) noexcept
+[[nodiscard]] constexpr CameraSample<T> camera_sample(const RenderConfig& config, std::uint64_t pixel, std::uint64_t s, bool thin_lens = true) noexcept
 {
     Random rng(Sampler(config.sampler, config.seed, pixel, std::uint32_t(s)), Pcg32(sample_seed(config.seed, s), pixel));
     const std::array<float, 2> footprint = rng.uniform2<float>();
-    const std::array<T, 2> lens = rng.uniform2<T>();
+    const std::array<T, 2> lens = thin_lens ? rng.uniform2<T>() : std::array<T, 2>{T(0.5), T(0.5)};
     rng.bounce(0);
     if (config.spp == 1 && config.single_sample_at_centre) return {{T(0.5), T(0.5)}, lens, rng};
     return {{T(footprint[0]), T(footprint[1])}, lens, rng};
@@ -12274,7 +12276,7 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
                 std::array<ExactSum, N> sum{};
                 std::size_t rejected = 0;
                 for (std::uint64_t s = samples.first; s < samples.last; ++s) {
-                    CameraSample<T> c = camera_sample<T>(config, pixel, s);
+                    CameraSample<T> c = camera_sample<T>(config, pixel, s, rays.thin_lens());
                     const Ray<T> ray = rays.thin_lens() ? rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1], c.lens[0], c.lens[1])
                                                         : rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1]);
                     rejected += sample(ray, c.rng, sum);
