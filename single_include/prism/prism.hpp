@@ -12172,9 +12172,9 @@ template <Scalar T>
 /// round takes one sample, each next as many as were taken before it (so a stop falls on
 /// a power of two, where a Sobol sampler's samples are stratified), and with a budget
 /// (config.seconds) none that the time per sample so far says would end past it (the
-/// last round may be cut short to fit). Returns the samples taken.
+/// last round may be cut short to fit).
 template <class AddRound, class OnRound>
-std::uint64_t render_in_rounds(const RenderConfig& config, AddRound&& add_round, OnRound&& on_round)
+void render_in_rounds(const RenderConfig& config, AddRound&& add_round, OnRound&& on_round)
 {
     const PassRange range = render_passes(config);
     const double budget = render_seconds(config);
@@ -12202,7 +12202,6 @@ std::uint64_t render_in_rounds(const RenderConfig& config, AddRound&& add_round,
                                              static_cast<unsigned long long>(range.count()), elapsed()));
     }
     if (config.progress) line.finish(elapsed(), formatted("%llu samples (%.1f s)", static_cast<unsigned long long>(taken), elapsed()));
-    return taken;
 }
 
 /// Add a radiance sample to sums [first, first + 3): radiance is never negative, so a
@@ -12299,19 +12298,33 @@ inline void check_sums(const Accumulation& sums, const RenderConfig& config, std
     if (sums.channels().size() != channels) throw_invalid(who, " renders ", channels, " channels, the Accumulation has ", sums.channels().size());
 }
 
+/// render_pixels' store of a pixel into `sums`: its sums, weight and rejected values.
+[[nodiscard]] inline auto into(Accumulation& sums) noexcept
+{
+    return [&sums](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
+        sums.add(x, y, sum, weight);
+        if (rejected != 0) sums.reject(rejected);
+    };
+}
+
+/// render_pixels' sample of a ray estimator's R, G, B: its radiance into the pixel's sums.
+template <RayEstimator I>
+[[nodiscard]] auto radiance_sample(const I& integrator) noexcept
+{
+    return [&integrator](const Ray<typename I::scalar_type>& ray, Random& rng, std::array<ExactSum, 3>& sum) {
+        return add_radiance(sum, 0, integrator.radiance(ray, rng));
+    };
+}
+
 /// Add the config's samples (or passes) of R, G, B to `sums`, all in one go.
 template <Integrator I>
 void add_samples(Accumulation& sums, const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
 {
-    using T = typename I::scalar_type;
     if constexpr (RayEstimator<I>) {
         render_pixels<3>(
             camera, config,
-            [&](const Ray<T>& ray, Random& rng, std::array<ExactSum, 3>& sum) { return add_radiance(sum, 0, integrator.radiance(ray, rng)); },
-            [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
-                sums.add(x, y, sum, weight);
-                if (rejected != 0) sums.reject(rejected);
-            });
+            radiance_sample(integrator),
+            into(sums));
     } else {
         (void)render_passes(config);
         const std::size_t before = sums.rejected();
@@ -12349,10 +12362,7 @@ void add_layers(Accumulation& sums, const Camera<typename I::scalar_type>& camer
             }
             return rejected;
         },
-        [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
-            sums.add(x, y, sum, weight);
-            if (rejected != 0) sums.reject(rejected);
-        });
+        into(sums));
 }
 
 /// Add the config's samples to `sums` by add(part): in one go, or with a time budget in
@@ -12366,7 +12376,7 @@ void add_in_rounds(Accumulation& sums, const RenderConfig& config, bool rounds, 
         return;
     }
     const std::size_t before = sums.rejected();
-    (void)render_in_rounds(config, add, [&](std::uint64_t) { on_round(static_cast<const Accumulation&>(sums)); });
+    render_in_rounds(config, add, [&](std::uint64_t) { on_round(static_cast<const Accumulation&>(sums)); });
     if (config.progress) say_rejected(sums.rejected() - before);
 }
 
@@ -12468,10 +12478,9 @@ template <RayEstimator I>
     if (detail::render_seconds(config) > 0.0) return render_sums(camera, integrator, config).image();
     const PixelWindow window = detail::render_window(config);
     Film film(window.width(), window.height());
-    using T = typename I::scalar_type;
     detail::render_pixels<3>(
         camera, config,
-        [&](const Ray<T>& ray, Random& rng, std::array<ExactSum, 3>& sum) { return detail::add_radiance(sum, 0, integrator.radiance(ray, rng)); },
+        detail::radiance_sample(integrator),
         [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
             film.set(x - window.x0, y - window.y0, Rgb<float>(detail::mean(sum[0], weight), detail::mean(sum[1], weight), detail::mean(sum[2], weight)));
             if (rejected != 0) film.count_rejected(rejected);
