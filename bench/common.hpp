@@ -69,4 +69,15 @@ private:
     std::FILE* file_;
 };
 
+/// The sampler a bench METHOD names: "NAME:independent" is NAME with independent samples
+/// (SamplerKind::independent), the suffix taken off `method`; anything else Owen-scrambled
+/// Sobol points, prism's default.
+inline prism::SamplerKind take_sampler(std::string& method)
+{
+    static const std::string suffix = ":independent";
+    if (!method.ends_with(suffix)) return prism::SamplerKind::sobol;
+    method.resize(method.size() - suffix.size());
+    return prism::SamplerKind::independent;
+}
+
 } // namespace bench

@@ -10,6 +10,8 @@
 //     path         the path tracer (samples per pixel)
 //     direct       the photon mapper, maps read directly (global photons; twice as many caustic)
 //     progressive  progressive photon mapping, 25000 global and 50000 caustic photons a pass (passes)
+//   each with ":independent" after it for independent samples instead of Owen-scrambled
+//   Sobol points (camera samples and photons alike).
 //
 // The glass is rough (GGX, roughness 0.1) so that a path tracer can find the volumetric
 // caustic at all: through smooth glass, no path from a point in the haze reaches a point
@@ -78,16 +80,20 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "usage: bench_fog path|direct|progressive EFFORT OUT.pfm [WIDTH] [SEED]\n");
         return 2;
     }
-    const std::string method = argv[1], out = argv[3];
+    std::string method = argv[1];
+    const std::string out = argv[3];
+    const SamplerKind sampler = bench::take_sampler(method);
     const double effort = std::atof(argv[2]);
     const int width = argc > 4 ? std::atoi(argv[4]) : 256;
     RenderConfig config{.width = width, .height = width * 3 / 4, .spp = 1, .threads = 2, .progress = false};
     config.seed = argc > 5 ? std::strtoull(argv[5], nullptr, 10) : 0;
+    config.sampler = sampler;
     const auto scene = fog_scene();
     using S = std::remove_cvref_t<decltype(scene)>;
     using Air = FilledAir<Fog<T>>;
     PhotonMapper<S, Air>::Config mapping;
     mapping.tracing.seed = config.seed;
+    mapping.tracing.sampler = sampler;
     mapping.caustic.radius = 0.05f;
     mapping.global.radius = 0.15f;
     mapping.gather_rays = 0;

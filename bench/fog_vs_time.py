@@ -23,7 +23,11 @@
 # Writes bench/results/fog_vs_time.csv, fog_agreement.csv and fog_strip.png; bench/plot.py
 # draws fog_vs_time.png.
 #
+# The path tracer runs twice: with Owen-scrambled Sobol points (path, prism's default) and
+# with independent samples (path:independent).
+#
 # usage: bench/fog_vs_time.py BUILD_DIR [--width 160] [--reference-spp 4096] [--reference-passes 1024] [--agreement-spp 4096]
+#                             [--methods path,path:independent,...] [--cycles-levels 16,64,256,1024]
 #                             [--repeats 2] [--quick] [--reuse-cycles-reference]
 import argparse
 import csv
@@ -34,7 +38,7 @@ import subprocess
 import sys
 
 from methods_vs_time import COLUMNS, Scorer, bench_render, cycles_script_render, read_pfm, rectangle_mask, write_pfm
-from surfaces_vs_time import agreement, strip, summary
+from surfaces_vs_time import agreement, strip, summary, tagged
 
 here = os.path.dirname(os.path.abspath(__file__))
 
@@ -60,12 +64,20 @@ def main():
     ap.add_argument("--agreement-spp", type=int, default=4096, help="of each of prism's two path-traced renders for the agreement")
     ap.add_argument("--repeats", type=int, default=2)
     ap.add_argument("--quick", action="store_true", help="small efforts (a smoke test of this script)")
+    ap.add_argument("--methods", help="a comma-separated subset of prism's methods (path, path:independent (independent samples), direct, ...)")
+    ap.add_argument("--cycles-levels", help="Cycles' samples per pixel, comma-separated (16,64,256,1024)")
+    ap.add_argument("--tag", default="", help="written to bench/results/NAME_TAG.csv and .png instead of NAME.csv, so that a run of a few methods keeps the full run's files")
     ap.add_argument("--reuse-cycles-reference", action="store_true", help="keep Cycles' reference renders already in BUILD_DIR/fog_vs_time")
     args = ap.parse_args()
     work = os.path.join(args.build, "fog_vs_time")
     os.makedirs(work, exist_ok=True)
-    efforts = {"path": [64, 256, 1024, 4096], "direct": [100000, 300000, 1000000, 3000000], "progressive": [16, 64, 256]}
+    efforts = {"path": [64, 256, 1024, 4096], "path:independent": [64, 256, 1024, 4096], "direct": [100000, 300000, 1000000, 3000000],
+               "progressive": [16, 64, 256]}
     cycles_spp = [16, 64, 256, 1024]
+    if args.methods:
+        efforts = {m: e for m, e in efforts.items() if m in args.methods.split(",")}
+    if args.cycles_levels:
+        cycles_spp = [int(x) for x in args.cycles_levels.split(",")]
     if args.quick:
         efforts = {m: e[:2] for m, e in efforts.items()}
         cycles_spp = cycles_spp[:2]
@@ -94,7 +106,7 @@ def main():
               "progressive": "prism progressive %d passes x 2" % args.reference_passes}
     w, h = pairs["Cycles"][0][0], pairs["Cycles"][0][1]
     masks = {"all": None, "caustic": caustic_mask(w, h)}
-    with open(os.path.join(here, "results", "fog_agreement.csv"), "w", newline="") as f:
+    with open(os.path.join(here, "results", tagged("fog_agreement.csv", args.tag)), "w", newline="") as f:
         table = csv.writer(f)
         table.writerow(["first", "second", "region", "range", "first_seconds", "second_seconds", "noise_first", "noise_second", "rmse_between",
                         "rmse_from_noise", "mean_ratio"])
@@ -133,7 +145,7 @@ def main():
             r = rows[reference][-1]
             print("against %-11s %-8s %-18s %8s: %.3f s (median %.3f), RMSE %.5f, display range %.5f" % (reference, region, method, effort, r[3], r[4], r[5], r[8]),
                   flush=True)
-    for reference, name in (("progressive", "fog_vs_time.csv"), ("Cycles", "fog_vs_time_cycles.csv")):
+    for reference, name in (("progressive", tagged("fog_vs_time.csv", args.tag)), ("Cycles", tagged("fog_vs_time_cycles.csv", args.tag))):
         path = os.path.join(here, "results", name)
         with open(path, "w", newline="") as f:
             out = csv.writer(f)
@@ -143,7 +155,7 @@ def main():
         print("wrote", path)
         print("against %s:" % labels[reference])
         summary(rows[reference])
-    strip(work, pairs["progressive"], pairs["Cycles"], efforts, cycles_spp, rect=CAUSTIC, name="fog_strip.png",
+    strip(work, pairs["progressive"], pairs["Cycles"], efforts, cycles_spp, rect=CAUSTIC, name=tagged("fog_strip.png", args.tag),
           labels=(labels["progressive"], labels["Cycles"]))
 
 

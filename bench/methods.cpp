@@ -69,10 +69,7 @@ int main(int argc, char** argv)
     const std::string which = argv[1], out = argv[4];
     std::string method = argv[2];
     examples::Options options;
-    if (method.ends_with(":independent")) {
-        options.render.sampler = prism::SamplerKind::independent;
-        method.resize(method.size() - std::string(":independent").size());
-    }
+    options.render.sampler = bench::take_sampler(method);
     const double effort = std::atof(argv[3]);
     options.render.width = options.render.height = argc > 5 ? std::atoi(argv[5]) : 256;
     options.render.threads = 2;

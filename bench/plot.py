@@ -511,6 +511,17 @@ def main():
     if (rows := read("fog_vs_time_cycles.csv")):
         error_vs_time_chart(rows, [("all", "a spot light through haze onto a rough glass ball"), ("caustic", "the volumetric caustic below the ball")],
                             "Cycles' reference", "fog_vs_time_cycles.png")
+    if (rows := read("surfaces_vs_time_samplers.csv")):
+        error_vs_time_chart(rows, [("all", "rough gold, frosted glass, textured tiles, thin lens:\nthe path tracer's two samplers and Cycles"),
+                                   ("caustic", "the frosted ball's caustic on the tiles")], "prism's path-traced reference", "surfaces_vs_time_samplers.png")
+    if (rows := read("fog_vs_time_samplers.csv")):
+        error_vs_time_chart(rows, [("all", "a spot light through haze onto a rough glass ball:\nthe path tracer's two samplers and Cycles"),
+                                   ("caustic", "the volumetric caustic below the ball")], "prism's progressive reference", "fog_vs_time_samplers.png")
+    if (rows := read("sky_vs_time.csv")):
+        titles = {"plain": "a white and a mirror sphere under the photographed sky", "glossy": "rough metal spheres (roughness 0.4, 0.15) under the sky",
+                  "frosted": "frosted glass and rough metal under the sky"}
+        error_vs_time_chart(rows, [(v, titles[v] + "\n(Cycles renders it too)") for v in dict.fromkeys(r["region"] for r in rows)],
+                            "prism's path-traced reference", "sky_vs_time.png")
     if (rows := read("accuracy.csv")):
         accuracy_charts(rows)
     if (rows := read("acne.csv")):

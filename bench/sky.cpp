@@ -4,12 +4,13 @@
 // sphere on a grey floor, lit by the environment map alone. Writes the path tracer's
 // picture as PFM and prints "seconds S", 2 threads.
 //
-// usage: bench_sky OUT.pfm SPP [SIZE] [SEED] [glossy | frosted]
+// usage: bench_sky OUT.pfm SPP [SIZE] [SEED] [glossy | frosted | plain] [independent]
 //
 // `glossy`: the spheres rough metals of constant reflectance 0.9 (RoughConductor with
 // ConstantKr, as Cycles' Glossy BSDF: GGX without Fresnel), roughness 0.4 (left) and 0.15
 // (right). `frosted`: the left one frosted glass instead (RoughDielectric, index 1.5,
-// roughness 0.3, against Cycles' Glass BSDF).
+// roughness 0.3, against Cycles' Glass BSDF). `plain` is the white and mirror spheres.
+// `independent`: independent samples instead of Owen-scrambled Sobol points.
 #include <prism/io/exr.hpp>
 #include <prism/io/image.hpp>
 #include <prism/prism.hpp>
@@ -22,7 +23,7 @@
 int main(int argc, char** argv)
 {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: bench_sky OUT.pfm SPP [SIZE] [SEED]\n");
+        std::fprintf(stderr, "usage: bench_sky OUT.pfm SPP [SIZE] [SEED] [glossy | frosted | plain] [independent]\n");
         return 2;
     }
     using namespace prism;
@@ -33,9 +34,14 @@ int main(int argc, char** argv)
     const EnvironmentMap<T> sky(image.width(), image.height(), image.pixels(), {.rotation_degrees = 150});
     const Object floor{Quad<T>({-5, 0, 5}, {10, 0, 0}, {0, 0, -10}), Diffuse<T>{.albedo = {.color = Rgb<T>(0.5f)}, .kd = 1, .ka = 0}};
     const Camera<T> camera{.position = {0, 1.5f, 5}, .look_at = {0, 0.5f, 0}, .up = {0, 1, 0}, .fov = 50};
-    const RenderConfig config{.width = size, .height = size, .spp = std::atoi(argv[2]), .threads = 2,
+    const std::string variant = argc > 5 ? argv[5] : "plain", sampler = argc > 6 ? argv[6] : "sobol";
+    if ((variant != "plain" && variant != "glossy" && variant != "frosted") || (sampler != "sobol" && sampler != "independent")) {
+        std::fprintf(stderr, "bench_sky: unknown variant '%s' or sampler '%s'\n", variant.c_str(), sampler.c_str());
+        return 2;
+    }
+    const RenderConfig config{.width = size, .height = size, .spp = std::atoi(argv[2]),
+                              .sampler = sampler == "independent" ? SamplerKind::independent : SamplerKind::sobol, .threads = 2,
                               .seed = argc > 4 ? std::strtoull(argv[4], nullptr, 10) : 0, .progress = false};
-    const std::string variant = argc > 5 ? argv[5] : "";
     const auto start = std::chrono::steady_clock::now();
     Film film(1, 1);
     if (variant == "frosted") {

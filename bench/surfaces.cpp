@@ -13,6 +13,8 @@
 //     direct       the global map read at the point, caustic map (photons of each kind)
 //     gather       final gathering, 2e5 photons of each kind (gather rays)
 //     progressive  progressive photon mapping, 5e4 + 5e4 photons a pass (passes)
+//   each with ":independent" after it for independent samples instead of Owen-scrambled
+//   Sobol points (camera samples and photons alike).
 //
 // The floor is what Cycles 3.4 can express exactly: a Mix of a Lambertian (the tiles,
 // weight 0.7) and a dielectric's microfacet reflection (n = 1.5, roughness 0.2, weight
@@ -68,9 +70,11 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "usage: bench_surfaces path|reference|direct|gather|progressive EFFORT OUT.pfm [SIZE] [SEED]\n");
         return 2;
     }
-    const std::string method = argv[1], out = argv[3];
+    std::string method = argv[1];
+    const std::string out = argv[3];
     const double effort = std::atof(argv[2]);
     examples::Options options;
+    options.render.sampler = bench::take_sampler(method);
     options.render.width = options.render.height = argc > 4 ? std::atoi(argv[4]) : 256;
     options.render.threads = 2;
     options.render.seed = argc > 5 ? std::strtoull(argv[5], nullptr, 10) : 0;

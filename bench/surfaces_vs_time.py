@@ -18,7 +18,11 @@
 # (prism | Cycles | 8x difference, and each method at about the same time); bench/plot.py
 # draws surfaces_vs_time.png.
 #
+# The path tracer runs twice: with Owen-scrambled Sobol points (path, prism's default) and
+# with independent samples (path:independent).
+#
 # usage: bench/surfaces_vs_time.py BUILD_DIR [--size 256] [--reference-spp 4096] [--cycles-spp 1024] [--repeats 2] [--quick]
+#                                  [--methods path,path:independent,...] [--cycles-levels 16,64,256,1024]
 #                                  [--agreement-only]
 import argparse
 import csv
@@ -32,6 +36,12 @@ import sys
 from methods_vs_time import COLUMNS, Scorer, bench_render, cycles_script_render, read_pfm, rectangle_mask, rmse, time_to_reach, write_pfm
 
 here = os.path.dirname(os.path.abspath(__file__))
+
+
+def tagged(name, tag):
+    """NAME.EXT as NAME_TAG.EXT (unchanged for no tag)."""
+    stem, ext = os.path.splitext(name)
+    return stem + ("_" + tag if tag else "") + ext
 
 # The caustic's rectangle, as fractions of the picture (x from the left, y from the top).
 CAUSTIC = (0.23, 0.47, 0.58, 0.78)
@@ -69,20 +79,28 @@ def main():
     ap.add_argument("--cycles-spp", type=int, default=1024, help="of each of Cycles' two renders for the agreement")
     ap.add_argument("--repeats", type=int, default=2)
     ap.add_argument("--quick", action="store_true", help="small efforts (a smoke test of this script)")
+    ap.add_argument("--methods", help="a comma-separated subset of prism's methods (path, path:independent (independent samples), direct, ...)")
+    ap.add_argument("--cycles-levels", help="Cycles' samples per pixel, comma-separated (16,64,256,1024)")
+    ap.add_argument("--tag", default="", help="written to bench/results/NAME_TAG.csv and .png instead of NAME.csv, so that a run of a few methods keeps the full run's files")
     ap.add_argument("--agreement-only", action="store_true",
                     help="only score the reference and Cycles' pair already rendered in BUILD_DIR/surfaces_vs_time against each other")
     args = ap.parse_args()
     work = os.path.join(args.build, "surfaces_vs_time")
     os.makedirs(work, exist_ok=True)
-    efforts = {"path": [16, 64, 256, 1024], "direct": [100000, 300000, 1000000, 3000000], "gather": [16, 64, 256], "progressive": [16, 64, 256]}
+    efforts = {"path": [16, 64, 256, 1024], "path:independent": [16, 64, 256, 1024], "direct": [100000, 300000, 1000000, 3000000], "gather": [16, 64, 256],
+               "progressive": [16, 64, 256]}
     cycles_spp = [16, 64, 256, 1024]
+    if args.methods:
+        efforts = {m: e for m, e in efforts.items() if m in args.methods.split(",")}
+    if args.cycles_levels:
+        cycles_spp = [int(x) for x in args.cycles_levels.split(",")]
     if args.quick:
         efforts = {m: e[:2] for m, e in efforts.items()}
         cycles_spp = cycles_spp[:2]
     # The reference: the path tracer in two halves; their difference measures its noise.
     halves, reference_seconds = [], 0.0
     if args.agreement_only:  # the times of the run that rendered them
-        with open(os.path.join(here, "results", "surfaces_agreement.csv")) as f:
+        with open(os.path.join(here, "results", tagged("surfaces_agreement.csv", args.tag))) as f:
             first = next(csv.DictReader(f))
         reference_seconds, cycles_seconds = float(first["prism_seconds"]), float(first["cycles_seconds"]) / 2
     for seed in (101, 102):
@@ -110,7 +128,7 @@ def main():
             print("agreement, %s, %s: noise of the means prism %.5f, Cycles %.5f; RMSE between %.5f, noise explains %.5f (ratio %.3f); "
                   "mean prism / Cycles %.5f" % (region, "display range" if display else "linear", stats[0], stats[1], stats[2], stats[3], stats[2] / stats[3],
                                                 stats[4]), flush=True)
-    with open(os.path.join(here, "results", "surfaces_agreement.csv"), "w", newline="") as f:
+    with open(os.path.join(here, "results", tagged("surfaces_agreement.csv", args.tag)), "w", newline="") as f:
         out = csv.writer(f)
         out.writerow(["region", "range", "prism_spp", "cycles_spp", "prism_seconds", "cycles_seconds", "noise_prism", "noise_cycles", "rmse_between",
                       "rmse_from_noise", "mean_ratio"])
@@ -139,7 +157,7 @@ def main():
             rows.append((region_name, method, effort, min(seconds), statistics.median(seconds)) + scorer(image))
             print("%-8s %-18s %8s: %.3f s (median %.3f), RMSE %.5f, display range %.5f" % (region_name, method, effort, rows[-1][3], rows[-1][4], rows[-1][5],
                                                                                          rows[-1][8]), flush=True)
-    path = os.path.join(here, "results", "surfaces_vs_time.csv")
+    path = os.path.join(here, "results", tagged("surfaces_vs_time.csv", args.tag))
     with open(path, "w", newline="") as f:
         out = csv.writer(f)
         out.writerow(["region", "method", "effort", "seconds", "seconds_median"] + COLUMNS)
@@ -147,7 +165,7 @@ def main():
             out.writerow([r[0], r[1], r[2], "%.4f" % r[3], "%.4f" % r[4]] + ["%.6f" % x for x in r[5:]])
     print("wrote", path)
     summary(rows)
-    strip(work, halves, pair, efforts, cycles_spp)
+    strip(work, halves, pair, efforts, cycles_spp, name=tagged("surfaces_strip.png", args.tag))
 
 
 def summary(rows):

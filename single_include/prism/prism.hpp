@@ -2553,7 +2553,7 @@ inline constexpr std::array<std::array<std::uint32_t, 32>, sobol_dimensions> sob
 }();
 
 /// The bits of x in reverse order.
-[[nodiscard]] constexpr std::uint32_t reverse_bits(std::uint32_t x) noexcept
+[[nodiscard, gnu::always_inline]] constexpr std::uint32_t reverse_bits(std::uint32_t x) noexcept
 {
     x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
     x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
@@ -2703,6 +2703,61 @@ enum class SamplerKind : std::uint8_t {
     sobol,       ///< Owen-scrambled Sobol points, padded by pairs of dimensions (Burley 2020)
 };
 
+/// The scrambles' seeds of pair k of a pixel's samples: the sample index's, then each
+/// coordinate's. They depend on the render's seed, the pixel and k, not on the sample.
+[[nodiscard]] constexpr std::array<std::uint32_t, 3> pair_seeds(std::uint64_t key, std::uint32_t k) noexcept
+{
+    const std::uint64_t salt = 3 * std::uint64_t(k);
+    return {sequences::seed_of(key, salt), sequences::seed_of(key, salt + 1), sequences::seed_of(key, salt + 2)};
+}
+
+/// The seeds of one pixel's first `cached` pairs, hashed when a sample first asks for them
+/// and kept for the pixel's other samples (three 64-bit hashes a pair, otherwise paid by
+/// every sample: a fifth of a Sobol path's time on the area-lit box). One thread's, for one
+/// pixel at a time; the Samplers that read it must not outlive it.
+class PixelSeeds {
+public:
+    /// Pairs kept: the camera's two and five bounces'.
+    static constexpr std::uint32_t cached = 32;
+
+    /// The seeds of pixel `pixel` of the render of `seed`.
+    constexpr PixelSeeds(std::uint64_t seed, std::uint64_t pixel) noexcept : key_(key_of(seed, pixel)) {}
+
+    /// pair_seeds(key, k), hashed once.
+    [[nodiscard]] constexpr std::array<std::uint32_t, 3> of(std::uint32_t k) noexcept
+    {
+        if (k >= cached) return pair_seeds(key_, k);
+        if (((known_ >> k) & 1u) == 0) {
+            seeds_[k] = pair_seeds(key_, k);
+            known_ |= std::uint32_t(1) << k;
+        }
+        return seeds_[k];
+    }
+
+    /// The pixel's key (Sampler::key_of).
+    [[nodiscard]] constexpr std::uint64_t key() const noexcept { return key_; }
+
+    /// The key of a pixel of a render, whence its scrambles' seeds (pair_seeds): unrelated
+    /// for neighbouring pixels and seeds.
+    [[nodiscard]] static constexpr std::uint64_t key_of(std::uint64_t seed, std::uint64_t pixel) noexcept
+    {
+        return mix(mix(seed + 0x9e3779b97f4a7c15ULL) ^ (pixel * 0xd1b54a32d192ed03ULL));
+    }
+
+    /// SplitMix64's finaliser: a bijection of 64-bit words that scatters every input bit.
+    [[nodiscard]] static constexpr std::uint64_t mix(std::uint64_t z) noexcept
+    {
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        return z ^ (z >> 31);
+    }
+
+private:
+    std::uint64_t key_;
+    std::uint32_t known_ = 0; ///< bit k: seeds_[k] is hashed
+    std::array<std::array<std::uint32_t, 3>, cached> seeds_{};
+};
+
 /// The numbers of one sample of one pixel.
 class Sampler {
 public:
@@ -2715,6 +2770,13 @@ public:
     {
     }
 
+    /// The same sample, its seeds read from (and kept in) its pixel's `seeds`, which must
+    /// outlive it: the same bits, for less.
+    constexpr Sampler(SamplerKind kind, PixelSeeds& seeds, std::uint32_t sample) noexcept
+        : kind_(kind), key_(seeds.key()), sample_(sample), reversed_sample_(sequences::reverse_bits(sample)), seeds_(&seeds)
+    {
+    }
+
     /// The point of dimensions 2k and 2k + 1, as 32-bit fractions.
     [[nodiscard]] constexpr std::array<std::uint32_t, 2> bits(std::uint32_t k) const noexcept
     {
@@ -2724,9 +2786,9 @@ public:
             // reverse(laine_karras(reverse(x), s)) and sobol(index, 0) is reverse(index),
             // so three reversals a pair, not eight (the sample's own is kept).
             using namespace sequences;
-            const std::uint32_t index = reverse_bits(laine_karras(reversed_sample_, seed_of(key_, 3 * std::uint64_t(k))));
-            return {reverse_bits(laine_karras(index, seed_of(key_, 3 * std::uint64_t(k) + 1))),
-                    reverse_bits(laine_karras(sobol1_reversed(index), seed_of(key_, 3 * std::uint64_t(k) + 2)))};
+            const std::array<std::uint32_t, 3> seed = seeds_ != nullptr ? seeds_->of(k) : pair_seeds(key_, k);
+            const std::uint32_t index = reverse_bits(laine_karras(reversed_sample_, seed[0]));
+            return {reverse_bits(laine_karras(index, seed[1])), reverse_bits(laine_karras(sobol1_reversed(index), seed[2]))};
         }
         const std::uint64_t bits = hash(key_ ^ (std::uint64_t(sample_) << 32 | k));
         return {std::uint32_t(bits), std::uint32_t(bits >> 32)};
@@ -2750,26 +2812,17 @@ public:
     /// Which points these are.
     [[nodiscard]] constexpr SamplerKind kind() const noexcept { return kind_; }
 
-    /// The key of a pixel of a render, whence its scrambles' seeds (seed_of(key, 3k + j)):
-    /// unrelated for neighbouring pixels and seeds.
-    [[nodiscard]] static constexpr std::uint64_t key_of(std::uint64_t seed, std::uint64_t pixel) noexcept
-    {
-        return hash(hash(seed + 0x9e3779b97f4a7c15ULL) ^ (pixel * 0xd1b54a32d192ed03ULL));
-    }
+    /// The key of a pixel of a render (PixelSeeds::key_of).
+    [[nodiscard]] static constexpr std::uint64_t key_of(std::uint64_t seed, std::uint64_t pixel) noexcept { return PixelSeeds::key_of(seed, pixel); }
 
 private:
-    /// SplitMix64's finaliser: a bijection of 64-bit words that scatters every input bit.
-    [[nodiscard]] static constexpr std::uint64_t hash(std::uint64_t z) noexcept
-    {
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-        return z ^ (z >> 31);
-    }
+    [[nodiscard]] static constexpr std::uint64_t hash(std::uint64_t z) noexcept { return PixelSeeds::mix(z); }
 
     SamplerKind kind_ = SamplerKind::independent;
     std::uint64_t key_ = 0;
     std::uint32_t sample_ = 0;
     std::uint32_t reversed_sample_ = 0; ///< sample_'s bits reversed
+    PixelSeeds* seeds_ = nullptr;       ///< the pixel's kept seeds, if it has them
 };
 
 } // namespace prism
@@ -3798,6 +3851,9 @@ template <Shape A, Shape B, Shape... Rest>
 // Box: the solid axis-aligned box [lo, hi].
 
 
+#include <algorithm>
+#include <limits>
+
 namespace prism {
 
 /// The solid axis-aligned box [lo, hi]: a Shape with at most two crossings per ray.
@@ -3848,9 +3904,9 @@ public:
         if (!span.hit) return out;
         out.inside_at_start = span.t_near < range.min && range.min < span.t_far;
         if (range.surrounds(span.t_near))
-            out.push_back(Surface ? crossing_at(ray, span.t_near, span.axis_near, true) : Crossing<T>::without_surface(span.t_near, true));
+            out.push_back(Surface ? crossing_at(ray, span.t_near, span.axis_near(), true) : Crossing<T>::without_surface(span.t_near, true));
         if (range.surrounds(span.t_far))
-            out.push_back(Surface ? crossing_at(ray, span.t_far, span.axis_far, false) : Crossing<T>::without_surface(span.t_far, false));
+            out.push_back(Surface ? crossing_at(ray, span.t_far, span.axis_far(), false) : Crossing<T>::without_surface(span.t_far, false));
         return out;
     }
 
@@ -3880,12 +3936,19 @@ private:
     struct Span {
         bool hit = false; ///< false for a miss, or a touch along an edge or a face
         T t_near = -infinity<T>, t_far = infinity<T>;
-        int axis_near = -1, axis_far = -1;
+        /// Each slab's entry and exit along the line (NaN for a slab the ray runs along).
+        Vec3<T> enters{std::numeric_limits<T>::quiet_NaN()}, leaves{std::numeric_limits<T>::quiet_NaN()};
+
+        /// The first axis whose face the span begins at; the same for where it ends.
+        [[nodiscard]] constexpr int axis_near() const noexcept { return enters.x == t_near ? 0 : enters.y == t_near ? 1 : 2; }
+        [[nodiscard]] constexpr int axis_far() const noexcept { return leaves.x == t_far ? 0 : leaves.y == t_far ? 1 : 2; }
     };
 
-    [[nodiscard]] constexpr Span span_of(const Ray<T>& ray) const noexcept
+    [[nodiscard, gnu::always_inline]] constexpr Span span_of(const Ray<T>& ray) const noexcept
     {
-        // Slab test over the whole line, remembering which face bounds the span.
+        // Slab test over the whole line, without branching on the slabs' order (which a
+        // ray's direction makes unpredictable); the faces are found afterwards, for a
+        // crossing that needs them.
         Span span;
         for (int axis = 0; axis < 3; ++axis) {
             const T o = ray.origin[axis];
@@ -3894,11 +3957,13 @@ private:
                 if (o <= lo_[axis] || o >= hi_[axis]) return span; // in or beside a face plane: a touch at most
                 continue;
             }
-            T t0 = (lo_[axis] - o) / d;
-            T t1 = (hi_[axis] - o) / d;
-            if (t0 > t1) std::swap(t0, t1);
-            if (t0 > span.t_near) span.t_near = t0, span.axis_near = axis;
-            if (t1 < span.t_far) span.t_far = t1, span.axis_far = axis;
+            const T inverse = T(1) / d; // one division for the slab's two planes
+            const T t0 = (lo_[axis] - o) * inverse;
+            const T t1 = (hi_[axis] - o) * inverse;
+            span.enters[axis] = std::min(t0, t1);
+            span.leaves[axis] = std::max(t0, t1);
+            span.t_near = std::max(span.t_near, span.enters[axis]);
+            span.t_far = std::min(span.t_far, span.leaves[axis]);
         }
         span.hit = span.t_near < span.t_far;
         return span;
@@ -3907,9 +3972,10 @@ private:
     [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, int axis, bool entering) const noexcept
     {
         // The face coordinate is snapped to the face and so exact; the other two carry
-        // the rounding of o + t d, with t itself from two rounded operations.
+        // the two roundings of o + t d and those of t itself, three (a difference, a
+        // reciprocal, a product).
         Vec3<T> point = ray.at(t);
-        Vec3<T> error = gamma<T>(3) * (abs(ray.origin) + abs(t * ray.direction));
+        Vec3<T> error = gamma<T>(5) * (abs(ray.origin) + abs(t * ray.direction));
         Vec3<T> normal{T(0)};
         const bool toward_positive = ray.direction[axis] > T(0);
         // Entering through the face the ray meets first; leaving through the other.
@@ -5265,6 +5331,11 @@ public:
         dual_u_ = cross(edge_v, normal_) / dot(edge_u, cross(edge_v, normal_));
         dual_v_ = cross(normal_, edge_u) / dot(edge_v, cross(normal_, edge_u));
         rectangle_ = std::abs(dot(edge_u, edge_v)) <= T(1e-5) * length(edge_u) * length(edge_v);
+        // The rectangle's own frame, for sampling by solid angle: x along edge_u, y along
+        // edge_v, z = x cross y (its normal).
+        length_u_ = length(u_), length_v_ = length(v_);
+        ex_ = u_ / length_u_;
+        ey_ = normalize(v_ - dot(v_, ex_) * ex_);
     }
 
     /// The corner the edges start from.
@@ -5395,38 +5466,41 @@ private:
     [[nodiscard]] SphericalRectangle spherical_rectangle(const Vec3<T>& p) const noexcept
     {
         SphericalRectangle r{};
-        const T lu = length(u_), lv = length(v_);
         r.origin = p;
-        r.ex = u_ / lu;
-        r.ey = normalize(v_ - dot(v_, r.ex) * r.ex);
-        r.ez = cross(r.ex, r.ey);
+        r.ex = ex_, r.ey = ey_, r.ez = cross(ex_, ey_);
         const Vec3<T> d = corner_ - p;
         r.x0 = dot(d, r.ex), r.y0 = dot(d, r.ey), r.z0 = dot(d, r.ez);
         if (r.z0 > T(0)) r.z0 = -r.z0, r.ez = -r.ez;
-        r.x1 = r.x0 + lu, r.y1 = r.y0 + lv;
+        r.x1 = r.x0 + length_u_, r.y1 = r.y0 + length_v_;
         if (!(r.z0 < T(0))) return r; // p in the rectangle's plane: it subtends nothing
-        // The normals of the four planes through p and an edge, and the angles between them.
-        const Vec3<T> v00(r.x0, r.y0, r.z0), v01(r.x0, r.y1, r.z0), v10(r.x1, r.y0, r.z0), v11(r.x1, r.y1, r.z0);
-        const Vec3<T> n0 = normalize(cross(v00, v10)), n1 = normalize(cross(v10, v11));
-        const Vec3<T> n2 = normalize(cross(v11, v01)), n3 = normalize(cross(v01, v00));
-        const T g0 = angle_between(-n0, n1), g1 = angle_between(-n1, n2), g2 = angle_between(-n2, n3), g3 = angle_between(-n3, n0);
-        r.b0 = n0.z, r.b1 = n2.z;
-        r.k = -g2 - g3;
-        r.solid_angle = std::max(T(0), g0 + g1 + g2 + g3 - T(2) * pi<T>);
+        // The interior angle of the spherical rectangle at a corner (x, y, z0) is that
+        // between the planes through p and the two edges meeting there: its sine is
+        // |z0| |(x, y, z0)| / (N N'), its cosine -+x y / (N N'), N and N' the lengths of
+        // those planes' normals (0, z0, -y) and (-z0, 0, x) (Urena et al.'s n0 to n3).
+        // The angles are summed in pairs along the edges x = x1 and x = x0 (sin and cos of
+        // a sum, the common N N' left out), each pair by one atan2: exact near 0 and pi
+        // alike, and a sum in (0, 2 pi) taken back from atan2's (-pi, pi].
+        const T z = -r.z0, z2 = z * z;
+        const auto pair = [&](T x, T ya, T yb) {
+            const T sa = z * prism::sqrt(x * x + ya * ya + z2), ca = x * ya;  // at (x, ya)
+            const T sb = z * prism::sqrt(x * x + yb * yb + z2), cb = -x * yb; // at (x, yb)
+            const T sum = std::atan2(sa * cb + ca * sb, ca * cb - sa * sb);
+            return sum < T(0) ? sum + T(2) * pi<T> : sum;
+        };
+        const T g01 = pair(r.x1, r.y0, r.y1);                // angles at (x1, y0) and (x1, y1)
+        const T g23 = pair(r.x0, r.y1, r.y0);                // at (x0, y1) and (x0, y0)
+        r.b0 = -r.y0 / prism::sqrt(z2 + r.y0 * r.y0), r.b1 = r.y1 / prism::sqrt(z2 + r.y1 * r.y1); // n0.z and n2.z
+        r.k = -g23;
+        r.solid_angle = std::max(T(0), g01 + g23 - T(2) * pi<T>);
         return r;
-    }
-
-    /// The angle between unit vectors, accurate near 0 and pi (as pbrt's AngleBetween).
-    [[nodiscard]] static T angle_between(const Vec3<T>& a, const Vec3<T>& b) noexcept
-    {
-        if (dot(a, b) < T(0)) return pi<T> - T(2) * std::asin(std::min(T(1), length(a + b) / T(2)));
-        return T(2) * std::asin(std::min(T(1), length(b - a) / T(2)));
     }
 
     Vec3<T> corner_, u_, v_;
     Vec3<T> normal_{};
     T offset_ = T(0), area_ = T(0);
     Vec3<T> dual_u_{}, dual_v_{};
+    Vec3<T> ex_{}, ey_{};
+    T length_u_ = T(0), length_v_ = T(0);
     bool rectangle_ = false;
 };
 
@@ -12121,6 +12195,20 @@ struct CameraSample {
     Random rng;                 ///< the rest of the sample's numbers
 };
 
+/// Sample s of pixel `pixel` of a render, its numbers from `sampler`: Sampler(config.sampler,
+/// config.seed, pixel, s), or the same sample reading its pixel's PixelSeeds.
+template <Scalar T>
+[[nodiscard]] constexpr CameraSample<T> camera_sample(const RenderConfig& config, const Sampler& sampler, std::uint64_t pixel, std::uint64_t s,
+                                                      bool thin_lens) noexcept
+{
+    Random rng(sampler, Pcg32(sample_seed(config.seed, s), pixel));
+    const std::array<float, 2> footprint = rng.uniform2<float>();
+    const std::array<T, 2> lens = thin_lens ? rng.uniform2<T>() : std::array<T, 2>{T(0.5), T(0.5)};
+    rng.bounce(0);
+    if (config.spp == 1 && config.single_sample_at_centre) return {{T(0.5), T(0.5)}, lens, rng};
+    return {{T(footprint[0]), T(footprint[1])}, lens, rng};
+}
+
 /// Sample s of pixel `pixel` (y * width + x) of a render: the footprint and, through a
 /// thin lens, the lens point from the sampler's pairs 0 and 1 (the footprint the pixel's
 /// centre when spp = 1 and config.single_sample_at_centre; a pinhole draws no lens point,
@@ -12130,12 +12218,7 @@ struct CameraSample {
 template <Scalar T>
 [[nodiscard]] constexpr CameraSample<T> camera_sample(const RenderConfig& config, std::uint64_t pixel, std::uint64_t s, bool thin_lens = true) noexcept
 {
-    Random rng(Sampler(config.sampler, config.seed, pixel, std::uint32_t(s)), Pcg32(sample_seed(config.seed, s), pixel));
-    const std::array<float, 2> footprint = rng.uniform2<float>();
-    const std::array<T, 2> lens = thin_lens ? rng.uniform2<T>() : std::array<T, 2>{T(0.5), T(0.5)};
-    rng.bounce(0);
-    if (config.spp == 1 && config.single_sample_at_centre) return {{T(0.5), T(0.5)}, lens, rng};
-    return {{T(footprint[0]), T(footprint[1])}, lens, rng};
+    return camera_sample<T>(config, Sampler(config.sampler, config.seed, pixel, std::uint32_t(s)), pixel, s, thin_lens);
 }
 
 /// The window a config renders, checked against its image.
@@ -12274,8 +12357,9 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
                 const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
                 std::array<ExactSum, N> sum{};
                 std::size_t rejected = 0;
+                PixelSeeds seeds(config.seed, pixel); // the scrambles' seeds, hashed once for the pixel's samples
                 for (std::uint64_t s = samples.first; s < samples.last; ++s) {
-                    CameraSample<T> c = camera_sample<T>(config, pixel, s, rays.thin_lens());
+                    CameraSample<T> c = camera_sample<T>(config, Sampler(config.sampler, seeds, std::uint32_t(s)), pixel, s, rays.thin_lens());
                     const Ray<T> ray = rays.thin_lens() ? rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1], c.lens[0], c.lens[1])
                                                         : rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1]);
                     rejected += sample(ray, c.rng, sum);

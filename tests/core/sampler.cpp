@@ -53,6 +53,21 @@ TEST_CASE("a sampler's numbers depend only on (kind, seed, pixel, sample, dimens
     }
 }
 
+TEST_CASE("a sample reading its pixel's kept seeds (PixelSeeds) draws the same bits as one that hashes them, in any order of pairs")
+{
+    for (const SamplerKind kind : {SamplerKind::sobol, SamplerKind::independent})
+        for (const std::uint64_t pixel : {std::uint64_t(0), std::uint64_t(12345), std::uint64_t(1) << 40}) {
+            PixelSeeds seeds(99, pixel);
+            CHECK(seeds.key() == Sampler::key_of(99, pixel));
+            for (std::uint32_t sample = 0; sample < 40; ++sample) {
+                const Sampler kept(kind, seeds, sample), hashed(kind, 99, pixel, sample);
+                // Pairs past the kept ones (32 on) and back, as a path's bounces jump.
+                for (const std::uint32_t k : {0u, 1u, 8u, 2u, 31u, 32u, 40u, 14u, 3u, 20u, 1000u})
+                    CHECK_MESSAGE(kept.bits(k) == hashed.bits(k), "kind ", int(kind), " pixel ", pixel, " sample ", sample, " pair ", k);
+            }
+        }
+}
+
 TEST_CASE("the Sobol sampler's pair is Burley's scrambles composed as written: the index scrambled, each coordinate scrambled")
 {
     // The slow, obvious twin of Sampler::bits, which leaves out the bit reversals that cancel.

@@ -30,6 +30,61 @@ enum class SamplerKind : std::uint8_t {
     sobol,       ///< Owen-scrambled Sobol points, padded by pairs of dimensions (Burley 2020)
 };
 
+/// The scrambles' seeds of pair k of a pixel's samples: the sample index's, then each
+/// coordinate's. They depend on the render's seed, the pixel and k, not on the sample.
+[[nodiscard]] constexpr std::array<std::uint32_t, 3> pair_seeds(std::uint64_t key, std::uint32_t k) noexcept
+{
+    const std::uint64_t salt = 3 * std::uint64_t(k);
+    return {sequences::seed_of(key, salt), sequences::seed_of(key, salt + 1), sequences::seed_of(key, salt + 2)};
+}
+
+/// The seeds of one pixel's first `cached` pairs, hashed when a sample first asks for them
+/// and kept for the pixel's other samples (three 64-bit hashes a pair, otherwise paid by
+/// every sample: a fifth of a Sobol path's time on the area-lit box). One thread's, for one
+/// pixel at a time; the Samplers that read it must not outlive it.
+class PixelSeeds {
+public:
+    /// Pairs kept: the camera's two and five bounces'.
+    static constexpr std::uint32_t cached = 32;
+
+    /// The seeds of pixel `pixel` of the render of `seed`.
+    constexpr PixelSeeds(std::uint64_t seed, std::uint64_t pixel) noexcept : key_(key_of(seed, pixel)) {}
+
+    /// pair_seeds(key, k), hashed once.
+    [[nodiscard]] constexpr std::array<std::uint32_t, 3> of(std::uint32_t k) noexcept
+    {
+        if (k >= cached) return pair_seeds(key_, k);
+        if (((known_ >> k) & 1u) == 0) {
+            seeds_[k] = pair_seeds(key_, k);
+            known_ |= std::uint32_t(1) << k;
+        }
+        return seeds_[k];
+    }
+
+    /// The pixel's key (Sampler::key_of).
+    [[nodiscard]] constexpr std::uint64_t key() const noexcept { return key_; }
+
+    /// The key of a pixel of a render, whence its scrambles' seeds (pair_seeds): unrelated
+    /// for neighbouring pixels and seeds.
+    [[nodiscard]] static constexpr std::uint64_t key_of(std::uint64_t seed, std::uint64_t pixel) noexcept
+    {
+        return mix(mix(seed + 0x9e3779b97f4a7c15ULL) ^ (pixel * 0xd1b54a32d192ed03ULL));
+    }
+
+    /// SplitMix64's finaliser: a bijection of 64-bit words that scatters every input bit.
+    [[nodiscard]] static constexpr std::uint64_t mix(std::uint64_t z) noexcept
+    {
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        return z ^ (z >> 31);
+    }
+
+private:
+    std::uint64_t key_;
+    std::uint32_t known_ = 0; ///< bit k: seeds_[k] is hashed
+    std::array<std::array<std::uint32_t, 3>, cached> seeds_{};
+};
+
 /// The numbers of one sample of one pixel.
 class Sampler {
 public:
@@ -42,6 +97,13 @@ public:
     {
     }
 
+    /// The same sample, its seeds read from (and kept in) its pixel's `seeds`, which must
+    /// outlive it: the same bits, for less.
+    constexpr Sampler(SamplerKind kind, PixelSeeds& seeds, std::uint32_t sample) noexcept
+        : kind_(kind), key_(seeds.key()), sample_(sample), reversed_sample_(sequences::reverse_bits(sample)), seeds_(&seeds)
+    {
+    }
+
     /// The point of dimensions 2k and 2k + 1, as 32-bit fractions.
     [[nodiscard]] constexpr std::array<std::uint32_t, 2> bits(std::uint32_t k) const noexcept
     {
@@ -51,9 +113,9 @@ public:
             // reverse(laine_karras(reverse(x), s)) and sobol(index, 0) is reverse(index),
             // so three reversals a pair, not eight (the sample's own is kept).
             using namespace sequences;
-            const std::uint32_t index = reverse_bits(laine_karras(reversed_sample_, seed_of(key_, 3 * std::uint64_t(k))));
-            return {reverse_bits(laine_karras(index, seed_of(key_, 3 * std::uint64_t(k) + 1))),
-                    reverse_bits(laine_karras(sobol1_reversed(index), seed_of(key_, 3 * std::uint64_t(k) + 2)))};
+            const std::array<std::uint32_t, 3> seed = seeds_ != nullptr ? seeds_->of(k) : pair_seeds(key_, k);
+            const std::uint32_t index = reverse_bits(laine_karras(reversed_sample_, seed[0]));
+            return {reverse_bits(laine_karras(index, seed[1])), reverse_bits(laine_karras(sobol1_reversed(index), seed[2]))};
         }
         const std::uint64_t bits = hash(key_ ^ (std::uint64_t(sample_) << 32 | k));
         return {std::uint32_t(bits), std::uint32_t(bits >> 32)};
@@ -77,26 +139,17 @@ public:
     /// Which points these are.
     [[nodiscard]] constexpr SamplerKind kind() const noexcept { return kind_; }
 
-    /// The key of a pixel of a render, whence its scrambles' seeds (seed_of(key, 3k + j)):
-    /// unrelated for neighbouring pixels and seeds.
-    [[nodiscard]] static constexpr std::uint64_t key_of(std::uint64_t seed, std::uint64_t pixel) noexcept
-    {
-        return hash(hash(seed + 0x9e3779b97f4a7c15ULL) ^ (pixel * 0xd1b54a32d192ed03ULL));
-    }
+    /// The key of a pixel of a render (PixelSeeds::key_of).
+    [[nodiscard]] static constexpr std::uint64_t key_of(std::uint64_t seed, std::uint64_t pixel) noexcept { return PixelSeeds::key_of(seed, pixel); }
 
 private:
-    /// SplitMix64's finaliser: a bijection of 64-bit words that scatters every input bit.
-    [[nodiscard]] static constexpr std::uint64_t hash(std::uint64_t z) noexcept
-    {
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-        return z ^ (z >> 31);
-    }
+    [[nodiscard]] static constexpr std::uint64_t hash(std::uint64_t z) noexcept { return PixelSeeds::mix(z); }
 
     SamplerKind kind_ = SamplerKind::independent;
     std::uint64_t key_ = 0;
     std::uint32_t sample_ = 0;
     std::uint32_t reversed_sample_ = 0; ///< sample_'s bits reversed
+    PixelSeeds* seeds_ = nullptr;       ///< the pixel's kept seeds, if it has them
 };
 
 } // namespace prism

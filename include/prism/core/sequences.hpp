@@ -61,7 +61,7 @@ inline constexpr std::array<std::array<std::uint32_t, 32>, sobol_dimensions> sob
 }();
 
 /// The bits of x in reverse order.
-[[nodiscard]] constexpr std::uint32_t reverse_bits(std::uint32_t x) noexcept
+[[nodiscard, gnu::always_inline]] constexpr std::uint32_t reverse_bits(std::uint32_t x) noexcept
 {
     x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
     x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);

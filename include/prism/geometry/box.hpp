@@ -6,6 +6,9 @@
 #include <prism/core/offset.hpp>
 #include <prism/geometry/shape.hpp>
 
+#include <algorithm>
+#include <limits>
+
 namespace prism {
 
 /// The solid axis-aligned box [lo, hi]: a Shape with at most two crossings per ray.
@@ -56,9 +59,9 @@ public:
         if (!span.hit) return out;
         out.inside_at_start = span.t_near < range.min && range.min < span.t_far;
         if (range.surrounds(span.t_near))
-            out.push_back(Surface ? crossing_at(ray, span.t_near, span.axis_near, true) : Crossing<T>::without_surface(span.t_near, true));
+            out.push_back(Surface ? crossing_at(ray, span.t_near, span.axis_near(), true) : Crossing<T>::without_surface(span.t_near, true));
         if (range.surrounds(span.t_far))
-            out.push_back(Surface ? crossing_at(ray, span.t_far, span.axis_far, false) : Crossing<T>::without_surface(span.t_far, false));
+            out.push_back(Surface ? crossing_at(ray, span.t_far, span.axis_far(), false) : Crossing<T>::without_surface(span.t_far, false));
         return out;
     }
 
@@ -88,12 +91,19 @@ private:
     struct Span {
         bool hit = false; ///< false for a miss, or a touch along an edge or a face
         T t_near = -infinity<T>, t_far = infinity<T>;
-        int axis_near = -1, axis_far = -1;
+        /// Each slab's entry and exit along the line (NaN for a slab the ray runs along).
+        Vec3<T> enters{std::numeric_limits<T>::quiet_NaN()}, leaves{std::numeric_limits<T>::quiet_NaN()};
+
+        /// The first axis whose face the span begins at; the same for where it ends.
+        [[nodiscard]] constexpr int axis_near() const noexcept { return enters.x == t_near ? 0 : enters.y == t_near ? 1 : 2; }
+        [[nodiscard]] constexpr int axis_far() const noexcept { return leaves.x == t_far ? 0 : leaves.y == t_far ? 1 : 2; }
     };
 
-    [[nodiscard]] constexpr Span span_of(const Ray<T>& ray) const noexcept
+    [[nodiscard, gnu::always_inline]] constexpr Span span_of(const Ray<T>& ray) const noexcept
     {
-        // Slab test over the whole line, remembering which face bounds the span.
+        // Slab test over the whole line, without branching on the slabs' order (which a
+        // ray's direction makes unpredictable); the faces are found afterwards, for a
+        // crossing that needs them.
         Span span;
         for (int axis = 0; axis < 3; ++axis) {
             const T o = ray.origin[axis];
@@ -102,11 +112,13 @@ private:
                 if (o <= lo_[axis] || o >= hi_[axis]) return span; // in or beside a face plane: a touch at most
                 continue;
             }
-            T t0 = (lo_[axis] - o) / d;
-            T t1 = (hi_[axis] - o) / d;
-            if (t0 > t1) std::swap(t0, t1);
-            if (t0 > span.t_near) span.t_near = t0, span.axis_near = axis;
-            if (t1 < span.t_far) span.t_far = t1, span.axis_far = axis;
+            const T inverse = T(1) / d; // one division for the slab's two planes
+            const T t0 = (lo_[axis] - o) * inverse;
+            const T t1 = (hi_[axis] - o) * inverse;
+            span.enters[axis] = std::min(t0, t1);
+            span.leaves[axis] = std::max(t0, t1);
+            span.t_near = std::max(span.t_near, span.enters[axis]);
+            span.t_far = std::min(span.t_far, span.leaves[axis]);
         }
         span.hit = span.t_near < span.t_far;
         return span;
@@ -115,9 +127,10 @@ private:
     [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, int axis, bool entering) const noexcept
     {
         // The face coordinate is snapped to the face and so exact; the other two carry
-        // the rounding of o + t d, with t itself from two rounded operations.
+        // the two roundings of o + t d and those of t itself, three (a difference, a
+        // reciprocal, a product).
         Vec3<T> point = ray.at(t);
-        Vec3<T> error = gamma<T>(3) * (abs(ray.origin) + abs(t * ray.direction));
+        Vec3<T> error = gamma<T>(5) * (abs(ray.origin) + abs(t * ray.direction));
         Vec3<T> normal{T(0)};
         const bool toward_positive = ray.direction[axis] > T(0);
         // Entering through the face the ray meets first; leaving through the other.

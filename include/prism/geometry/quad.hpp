@@ -45,6 +45,11 @@ public:
         dual_u_ = cross(edge_v, normal_) / dot(edge_u, cross(edge_v, normal_));
         dual_v_ = cross(normal_, edge_u) / dot(edge_v, cross(normal_, edge_u));
         rectangle_ = std::abs(dot(edge_u, edge_v)) <= T(1e-5) * length(edge_u) * length(edge_v);
+        // The rectangle's own frame, for sampling by solid angle: x along edge_u, y along
+        // edge_v, z = x cross y (its normal).
+        length_u_ = length(u_), length_v_ = length(v_);
+        ex_ = u_ / length_u_;
+        ey_ = normalize(v_ - dot(v_, ex_) * ex_);
     }
 
     /// The corner the edges start from.
@@ -175,38 +180,41 @@ private:
     [[nodiscard]] SphericalRectangle spherical_rectangle(const Vec3<T>& p) const noexcept
     {
         SphericalRectangle r{};
-        const T lu = length(u_), lv = length(v_);
         r.origin = p;
-        r.ex = u_ / lu;
-        r.ey = normalize(v_ - dot(v_, r.ex) * r.ex);
-        r.ez = cross(r.ex, r.ey);
+        r.ex = ex_, r.ey = ey_, r.ez = cross(ex_, ey_);
         const Vec3<T> d = corner_ - p;
         r.x0 = dot(d, r.ex), r.y0 = dot(d, r.ey), r.z0 = dot(d, r.ez);
         if (r.z0 > T(0)) r.z0 = -r.z0, r.ez = -r.ez;
-        r.x1 = r.x0 + lu, r.y1 = r.y0 + lv;
+        r.x1 = r.x0 + length_u_, r.y1 = r.y0 + length_v_;
         if (!(r.z0 < T(0))) return r; // p in the rectangle's plane: it subtends nothing
-        // The normals of the four planes through p and an edge, and the angles between them.
-        const Vec3<T> v00(r.x0, r.y0, r.z0), v01(r.x0, r.y1, r.z0), v10(r.x1, r.y0, r.z0), v11(r.x1, r.y1, r.z0);
-        const Vec3<T> n0 = normalize(cross(v00, v10)), n1 = normalize(cross(v10, v11));
-        const Vec3<T> n2 = normalize(cross(v11, v01)), n3 = normalize(cross(v01, v00));
-        const T g0 = angle_between(-n0, n1), g1 = angle_between(-n1, n2), g2 = angle_between(-n2, n3), g3 = angle_between(-n3, n0);
-        r.b0 = n0.z, r.b1 = n2.z;
-        r.k = -g2 - g3;
-        r.solid_angle = std::max(T(0), g0 + g1 + g2 + g3 - T(2) * pi<T>);
+        // The interior angle of the spherical rectangle at a corner (x, y, z0) is that
+        // between the planes through p and the two edges meeting there: its sine is
+        // |z0| |(x, y, z0)| / (N N'), its cosine -+x y / (N N'), N and N' the lengths of
+        // those planes' normals (0, z0, -y) and (-z0, 0, x) (Urena et al.'s n0 to n3).
+        // The angles are summed in pairs along the edges x = x1 and x = x0 (sin and cos of
+        // a sum, the common N N' left out), each pair by one atan2: exact near 0 and pi
+        // alike, and a sum in (0, 2 pi) taken back from atan2's (-pi, pi].
+        const T z = -r.z0, z2 = z * z;
+        const auto pair = [&](T x, T ya, T yb) {
+            const T sa = z * prism::sqrt(x * x + ya * ya + z2), ca = x * ya;  // at (x, ya)
+            const T sb = z * prism::sqrt(x * x + yb * yb + z2), cb = -x * yb; // at (x, yb)
+            const T sum = std::atan2(sa * cb + ca * sb, ca * cb - sa * sb);
+            return sum < T(0) ? sum + T(2) * pi<T> : sum;
+        };
+        const T g01 = pair(r.x1, r.y0, r.y1);                // angles at (x1, y0) and (x1, y1)
+        const T g23 = pair(r.x0, r.y1, r.y0);                // at (x0, y1) and (x0, y0)
+        r.b0 = -r.y0 / prism::sqrt(z2 + r.y0 * r.y0), r.b1 = r.y1 / prism::sqrt(z2 + r.y1 * r.y1); // n0.z and n2.z
+        r.k = -g23;
+        r.solid_angle = std::max(T(0), g01 + g23 - T(2) * pi<T>);
         return r;
-    }
-
-    /// The angle between unit vectors, accurate near 0 and pi (as pbrt's AngleBetween).
-    [[nodiscard]] static T angle_between(const Vec3<T>& a, const Vec3<T>& b) noexcept
-    {
-        if (dot(a, b) < T(0)) return pi<T> - T(2) * std::asin(std::min(T(1), length(a + b) / T(2)));
-        return T(2) * std::asin(std::min(T(1), length(b - a) / T(2)));
     }
 
     Vec3<T> corner_, u_, v_;
     Vec3<T> normal_{};
     T offset_ = T(0), area_ = T(0);
     Vec3<T> dual_u_{}, dual_v_{};
+    Vec3<T> ex_{}, ey_{};
+    T length_u_ = T(0), length_v_ = T(0);
     bool rectangle_ = false;
 };
 

@@ -110,6 +110,20 @@ struct CameraSample {
     Random rng;                 ///< the rest of the sample's numbers
 };
 
+/// Sample s of pixel `pixel` of a render, its numbers from `sampler`: Sampler(config.sampler,
+/// config.seed, pixel, s), or the same sample reading its pixel's PixelSeeds.
+template <Scalar T>
+[[nodiscard]] constexpr CameraSample<T> camera_sample(const RenderConfig& config, const Sampler& sampler, std::uint64_t pixel, std::uint64_t s,
+                                                      bool thin_lens) noexcept
+{
+    Random rng(sampler, Pcg32(sample_seed(config.seed, s), pixel));
+    const std::array<float, 2> footprint = rng.uniform2<float>();
+    const std::array<T, 2> lens = thin_lens ? rng.uniform2<T>() : std::array<T, 2>{T(0.5), T(0.5)};
+    rng.bounce(0);
+    if (config.spp == 1 && config.single_sample_at_centre) return {{T(0.5), T(0.5)}, lens, rng};
+    return {{T(footprint[0]), T(footprint[1])}, lens, rng};
+}
+
 /// Sample s of pixel `pixel` (y * width + x) of a render: the footprint and, through a
 /// thin lens, the lens point from the sampler's pairs 0 and 1 (the footprint the pixel's
 /// centre when spp = 1 and config.single_sample_at_centre; a pinhole draws no lens point,
@@ -119,12 +133,7 @@ struct CameraSample {
 template <Scalar T>
 [[nodiscard]] constexpr CameraSample<T> camera_sample(const RenderConfig& config, std::uint64_t pixel, std::uint64_t s, bool thin_lens = true) noexcept
 {
-    Random rng(Sampler(config.sampler, config.seed, pixel, std::uint32_t(s)), Pcg32(sample_seed(config.seed, s), pixel));
-    const std::array<float, 2> footprint = rng.uniform2<float>();
-    const std::array<T, 2> lens = thin_lens ? rng.uniform2<T>() : std::array<T, 2>{T(0.5), T(0.5)};
-    rng.bounce(0);
-    if (config.spp == 1 && config.single_sample_at_centre) return {{T(0.5), T(0.5)}, lens, rng};
-    return {{T(footprint[0]), T(footprint[1])}, lens, rng};
+    return camera_sample<T>(config, Sampler(config.sampler, config.seed, pixel, std::uint32_t(s)), pixel, s, thin_lens);
 }
 
 /// The window a config renders, checked against its image.
@@ -263,8 +272,9 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
                 const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
                 std::array<ExactSum, N> sum{};
                 std::size_t rejected = 0;
+                PixelSeeds seeds(config.seed, pixel); // the scrambles' seeds, hashed once for the pixel's samples
                 for (std::uint64_t s = samples.first; s < samples.last; ++s) {
-                    CameraSample<T> c = camera_sample<T>(config, pixel, s, rays.thin_lens());
+                    CameraSample<T> c = camera_sample<T>(config, Sampler(config.sampler, seeds, std::uint32_t(s)), pixel, s, rays.thin_lens());
                     const Ray<T> ray = rays.thin_lens() ? rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1], c.lens[0], c.lens[1])
                                                         : rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1]);
                     rejected += sample(ray, c.rng, sum);
