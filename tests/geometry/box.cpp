@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <prism/geometry/box.hpp>
+#include <prism/geometry/plane.hpp>
 
 #include "../support.hpp"
 #include "../uv_checks.hpp"
@@ -106,4 +107,38 @@ TEST_CASE("a box's faces each span [0, 1]^2 of surface coordinates, right-handed
     CHECK(found.checked > 1000);
     CHECK(found.worst < 1e-6);
     CHECK(found.left_handed == 0);
+}
+
+TEST_CASE_TEMPLATE("a box's face and a Plane on it cross a ray at the same t, bit for bit, so that surfaces made to meet do", T, float, double)
+{
+    // A glass's bottom stands on a table (a Box face on a Plane) and water fills the glass
+    // to its inner bottom: where two surfaces meet, the nearer of two equal crossings must
+    // be decided the same way for every ray. With t = (lo - o) * (1 / d), one rounding more
+    // than the plane's -(o - lo) / d, half the rays saw the table first and half the glass:
+    // the glass of water's bottom turned to salt and pepper.
+    prism::Random rng(23u, 5u);
+    const Box<T> box({T(-1), T(0.15), T(-0.7)}, {T(1.3), T(2.6), T(0.9)});
+    int mismatches = 0, crossings = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const int axis = i % 3;
+        const bool high = (i / 3) % 2 == 1;
+        Vec3<T> normal{T(0)};
+        normal[axis] = T(1);
+        const T at = high ? box.hi()[axis] : box.lo()[axis];
+        const prism::Plane<T> plane(normal, at);
+        Vec3<T> origin{T(6) * rng.uniform<T>() - T(3), T(6) * rng.uniform<T>() - T(3), T(6) * rng.uniform<T>() - T(3)};
+        origin[axis] = at + (high ? T(1) : T(-1)) * (T(0.01) + T(3) * rng.uniform<T>()); // outside, facing the face
+        const Vec3<T> target{box.lo().x + (box.hi().x - box.lo().x) * rng.uniform<T>(), box.lo().y + (box.hi().y - box.lo().y) * rng.uniform<T>(),
+                             box.lo().z + (box.hi().z - box.lo().z) * rng.uniform<T>()};
+        Vec3<T> aim = target;
+        aim[axis] = at;
+        const prism::Ray<T> ray{origin, aim - origin};
+        const auto on_box = box.crossings(ray, Interval<T>::universe());
+        const auto on_plane = plane.crossings(ray, Interval<T>::universe());
+        if (on_box.empty() || on_plane.empty()) continue;
+        ++crossings;
+        mismatches += on_box.front().t != on_plane.front().t;
+    }
+    CHECK(crossings > 150000);
+    CHECK(mismatches == 0);
 }

@@ -112,9 +112,11 @@ private:
                 if (o <= lo_[axis] || o >= hi_[axis]) return span; // in or beside a face plane: a touch at most
                 continue;
             }
-            const T inverse = T(1) / d; // one division for the slab's two planes
-            const T t0 = (lo_[axis] - o) * inverse;
-            const T t1 = (hi_[axis] - o) * inverse;
+            // Divided, not multiplied by 1 / d: a face's t is then the bits a Plane or a
+            // Quad on it computes, so that surfaces made to meet there (a glass's bottom on
+            // a table, water filling a glass) meet exactly, not by the luck of a rounding.
+            const T t0 = (lo_[axis] - o) / d;
+            const T t1 = (hi_[axis] - o) / d;
             span.enters[axis] = std::min(t0, t1);
             span.leaves[axis] = std::max(t0, t1);
             span.t_near = std::max(span.t_near, span.enters[axis]);
@@ -127,10 +129,9 @@ private:
     [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, int axis, bool entering) const noexcept
     {
         // The face coordinate is snapped to the face and so exact; the other two carry
-        // the two roundings of o + t d and those of t itself, three (a difference, a
-        // reciprocal, a product).
+        // the rounding of o + t d, with t itself from two rounded operations.
         Vec3<T> point = ray.at(t);
-        Vec3<T> error = gamma<T>(5) * (abs(ray.origin) + abs(t * ray.direction));
+        Vec3<T> error = gamma<T>(3) * (abs(ray.origin) + abs(t * ray.direction));
         Vec3<T> normal{T(0)};
         const bool toward_positive = ray.direction[axis] > T(0);
         // Entering through the face the ray meets first; leaving through the other.

@@ -158,13 +158,15 @@ public:
     /// Photons [first, last) of the global map, appended to `out`.
     void trace_global(std::size_t first, std::size_t last, std::vector<Photon>& out) const
     {
-        for (std::size_t i = first; i < last; ++i) store(global_, global_power_, config_.global_photons, i, false, out);
+        PixelSeeds seeds(config_.seed, 0); // every global photon is a sample of "pixel" 0
+        for (std::size_t i = first; i < last; ++i) store(global_, global_power_, config_.global_photons, i, false, seeds, out);
     }
 
     /// Photons [first, last) of the caustic map, appended to `out`.
     void trace_caustic(std::size_t first, std::size_t last, std::vector<Photon>& out) const
     {
-        for (std::size_t i = first; i < last; ++i) store(targets_, target_power_, config_.caustic_photons, i, true, out);
+        PixelSeeds seeds(config_.seed, 1); // and every caustic photon of "pixel" 1
+        for (std::size_t i = first; i < last; ++i) store(targets_, target_power_, config_.caustic_photons, i, true, seeds, out);
     }
 
     /// Light paths [first, last) of `count` aimed where the caustic map's photons are,
@@ -174,7 +176,8 @@ public:
     template <class Visit, class VisitMedium = IgnoreMedia>
     void walk_aimed(std::size_t first, std::size_t last, std::size_t count, Visit&& visit, VisitMedium&& visit_medium = {}) const
     {
-        for (std::size_t i = first; i < last; ++i) emit(targets_, target_power_, count, i, true, visit, visit_medium);
+        PixelSeeds seeds(config_.seed, 1);
+        for (std::size_t i = first; i < last; ++i) emit(targets_, target_power_, count, i, true, seeds, visit, visit_medium);
     }
 
 private:
@@ -185,13 +188,14 @@ private:
     /// and the point on the light (pair 0), the direction (pair 1) and each bounce are
     /// stratified over the photons as on a jittered grid, but for any count.
     template <class Visit, class VisitMedium = IgnoreMedia>
-    void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, Visit&& visit,
+    void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, PixelSeeds& seeds, Visit&& visit,
               VisitMedium&& visit_medium = {}) const
     {
         if (emitters.empty() || !(total_power > T(0))) return;
-        // Photon i's numbers: sample i of the map's sampler (photon indices stay below 2^32:
-        // check_photon_passes), then the photon's own PCG stream.
-        Random rng(Sampler(config_.sampler, config_.seed, caustic_pass ? 1 : 0, static_cast<std::uint32_t>(i)), Pcg32(config_.seed, 2 * i + (caustic_pass ? 1 : 0)));
+        // Photon i's numbers: sample i of the map's sampler, Sampler(kind, seed, caustic_pass,
+        // i), its seeds kept in `seeds` (photon indices stay below 2^32: check_photon_passes),
+        // then the photon's own PCG stream.
+        Random rng(Sampler(config_.sampler, seeds, static_cast<std::uint32_t>(i)), Pcg32(config_.seed, 2 * i + (caustic_pass ? 1 : 0)));
         auto [u, v] = rng.uniform2<double>();
         // The emitter whose share of [0, 1) holds u; u rescaled within that share.
         const Emitter<T>* e = &emitters.back();
@@ -224,9 +228,10 @@ private:
     }
 
     /// Store photon i: in the caustic pass only L S+ D, going on past it only by delta lobes.
-    void store(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, std::vector<Photon>& out) const
+    void store(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, PixelSeeds& seeds,
+               std::vector<Photon>& out) const
     {
-        emit(emitters, total_power, count, i, caustic_pass, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
+        emit(emitters, total_power, count, i, caustic_pass, seeds, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
             (void)material;
             const Crossing<T>& c = at.crossing();
             // Frosted glass holds no photons (no estimate reads them there: a camera or
