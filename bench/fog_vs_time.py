@@ -37,7 +37,7 @@ import statistics
 import subprocess
 import sys
 
-from methods_vs_time import COLUMNS, Scorer, bench_render, cycles_script_render, read_pfm, rectangle_mask, write_pfm
+from methods_vs_time import Scorer, bench_render, cycles_script_render, read_pfm, rectangle_mask, write_csv, write_pfm
 from surfaces_vs_time import agreement, strip, summary, tagged
 
 here = os.path.dirname(os.path.abspath(__file__))
@@ -147,11 +147,7 @@ def main():
                   flush=True)
     for reference, name in (("progressive", tagged("fog_vs_time.csv", args.tag)), ("Cycles", tagged("fog_vs_time_cycles.csv", args.tag))):
         path = os.path.join(here, "results", name)
-        with open(path, "w", newline="") as f:
-            out = csv.writer(f)
-            out.writerow(["region", "method", "effort", "seconds", "seconds_median"] + COLUMNS)
-            for r in rows[reference]:
-                out.writerow([r[0], r[1], r[2], "%.4f" % r[3], "%.4f" % r[4]] + ["%.6f" % x for x in r[5:]])
+        write_csv(path, rows[reference], "region")
         print("wrote", path)
         print("against %s:" % labels[reference])
         summary(rows[reference])

@@ -315,10 +315,12 @@ def wall_mask(build, work, scene, size):
     return [v == 1.0 for v in read_pfm(out)[2]]
 
 
-def write_csv(path, rows):
+def write_csv(path, rows, first="scene"):
+    """Rows of (first, method, effort, min seconds, median seconds, COLUMNS...) as CSV; the
+    first column is the scene's name here, a region of one scene in the other benches."""
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["scene", "method", "effort", "seconds", "seconds_median"] + COLUMNS)
+        w.writerow([first, "method", "effort", "seconds", "seconds_median"] + COLUMNS)
         for r in rows:
             w.writerow([r[0], r[1], r[2], "%.4f" % r[3], "%.4f" % r[4]] + ["%.6f" % x for x in r[5:]])
 

@@ -20,13 +20,12 @@
 # usage: bench/sky_vs_time.py BUILD_DIR [--size 256] [--reference-spp 2048] [--repeats 2]
 #                             [--variants plain,glossy,frosted] [--levels 16,64,256,1024] [--quick]
 import argparse
-import csv
 import os
 import statistics
 import subprocess
 
 from cycles_agreement import cycles_sky
-from methods_vs_time import COLUMNS, Scorer, read_pfm, time_to_reach
+from methods_vs_time import Scorer, read_pfm, time_to_reach, write_csv
 
 here = os.path.dirname(os.path.abspath(__file__))
 
@@ -78,11 +77,7 @@ def main():
             print("%-8s %-24s %5d spp: %.3f s (median %.3f), RMSE %.5f, display range %.5f" % (variant, method, spp, rows[-1][3], rows[-1][4], rows[-1][5],
                                                                                           rows[-1][8]), flush=True)
     path = os.path.join(here, "results", "sky_vs_time.csv")
-    with open(path, "w", newline="") as f:
-        out = csv.writer(f)
-        out.writerow(["region", "method", "effort", "seconds", "seconds_median"] + COLUMNS)
-        for r in rows:
-            out.writerow([r[0], r[1], r[2], "%.4f" % r[3], "%.4f" % r[4]] + ["%.6f" % x for x in r[5:]])
+    write_csv(path, rows, "region")
     print("wrote", path)
     for column, name in ((5, "linear"), (8, "display range")):
         print("time to reach Cycles' error (%s RMSE), as a ratio of Cycles' time:" % name)

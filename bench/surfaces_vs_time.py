@@ -33,7 +33,7 @@ import statistics
 import subprocess
 import sys
 
-from methods_vs_time import COLUMNS, Scorer, bench_render, cycles_script_render, read_pfm, rectangle_mask, rmse, time_to_reach, write_pfm
+from methods_vs_time import Scorer, bench_render, cycles_script_render, read_pfm, rectangle_mask, rmse, time_to_reach, write_csv, write_pfm
 
 here = os.path.dirname(os.path.abspath(__file__))
 
@@ -158,11 +158,7 @@ def main():
             print("%-8s %-18s %8s: %.3f s (median %.3f), RMSE %.5f, display range %.5f" % (region_name, method, effort, rows[-1][3], rows[-1][4], rows[-1][5],
                                                                                          rows[-1][8]), flush=True)
     path = os.path.join(here, "results", tagged("surfaces_vs_time.csv", args.tag))
-    with open(path, "w", newline="") as f:
-        out = csv.writer(f)
-        out.writerow(["region", "method", "effort", "seconds", "seconds_median"] + COLUMNS)
-        for r in rows:
-            out.writerow([r[0], r[1], r[2], "%.4f" % r[3], "%.4f" % r[4]] + ["%.6f" % x for x in r[5:]])
+    write_csv(path, rows, "region")
     print("wrote", path)
     summary(rows)
     strip(work, halves, pair, efforts, cycles_spp, name=tagged("surfaces_strip.png", args.tag))

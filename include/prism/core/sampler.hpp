@@ -117,7 +117,7 @@ public:
             const std::uint32_t index = reverse_bits(laine_karras(reversed_sample_, seed[0]));
             return {reverse_bits(laine_karras(index, seed[1])), reverse_bits(laine_karras(sobol1_reversed(index), seed[2]))};
         }
-        const std::uint64_t bits = hash(key_ ^ (std::uint64_t(sample_) << 32 | k));
+        const std::uint64_t bits = PixelSeeds::mix(key_ ^ (std::uint64_t(sample_) << 32 | k));
         return {std::uint32_t(bits), std::uint32_t(bits >> 32)};
     }
 
@@ -143,8 +143,6 @@ public:
     [[nodiscard]] static constexpr std::uint64_t key_of(std::uint64_t seed, std::uint64_t pixel) noexcept { return PixelSeeds::key_of(seed, pixel); }
 
 private:
-    [[nodiscard]] static constexpr std::uint64_t hash(std::uint64_t z) noexcept { return PixelSeeds::mix(z); }
-
     SamplerKind kind_ = SamplerKind::independent;
     std::uint64_t key_ = 0;
     std::uint32_t sample_ = 0;
