@@ -69,15 +69,18 @@ private:
     std::FILE* file_;
 };
 
-/// The sampler a bench METHOD names: "NAME:independent" is NAME with independent samples
-/// (SamplerKind::independent), the suffix taken off `method`; anything else Owen-scrambled
-/// Sobol points, prism's default.
+/// The sampler a bench METHOD names: "NAME:independent", "NAME:zsobol" and "NAME:halton"
+/// are NAME with that SamplerKind, the suffix taken off `method`; anything else
+/// Owen-scrambled Sobol points, per pixel.
 inline prism::SamplerKind take_sampler(std::string& method)
 {
-    static const std::string suffix = ":independent";
-    if (!method.ends_with(suffix)) return prism::SamplerKind::sobol;
-    method.resize(method.size() - suffix.size());
-    return prism::SamplerKind::independent;
+    for (const prism::SamplerKind kind : {prism::SamplerKind::independent, prism::SamplerKind::zsobol, prism::SamplerKind::halton}) {
+        const std::string suffix = std::string(":") + prism::sampler_name(kind);
+        if (!method.ends_with(suffix)) continue;
+        method.resize(method.size() - suffix.size());
+        return kind;
+    }
+    return prism::SamplerKind::sobol;
 }
 
 } // namespace bench

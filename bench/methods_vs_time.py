@@ -7,7 +7,8 @@
 #   area     the same box under its ceiling light, an area light (Cycles renders it too);
 #            also the path tracer alone, with multiple importance sampling and without
 #            light samples (path, path_bounces), with 2 x 2 light samples a vertex (path_grid2),
-#            and with independent samples instead of Owen-scrambled Sobol points (path:independent)
+#            and with independent samples, Sobol laid over the image in Morton order or Halton
+#            instead of Owen-scrambled Sobol points per pixel (path:independent, :zsobol, :halton)
 #   glass    the Cornell box with the glass and mirror balls, physical light
 #   povray   shared/scenes/cornell_caustics.pov in POV-Ray's model: its no-falloff light,
 #            direct light and caustics only (no radiosity); prism's reference takes no
@@ -222,9 +223,10 @@ def main():
         cycles_spp = cycles_spp[:2]
     povray_counts = [10000, 30000, 100000, 300000, 1000000, 3000000]
     paths = {"path": efforts["reference"], "path_bounces": efforts["reference"], "path_grid2": efforts["reference"],
-             "path:independent": efforts["reference"]}
-    # Independent photons and samples beside the default Sobol ones, on the diffuse box.
-    independent = {"direct:independent": efforts["direct"], "progressive:independent": efforts["progressive"]}
+             "path:independent": efforts["reference"], "path:zsobol": efforts["reference"], "path:halton": efforts["reference"]}
+    # Independent and Halton photons (and samples) beside the Sobol ones, on the diffuse box.
+    independent = {"direct:independent": efforts["direct"], "progressive:independent": efforts["progressive"],
+                   "direct:halton": efforts["direct"], "progressive:halton": efforts["progressive"]}
     per_scene = {"diffuse": {**efforts, **independent}, "glass": efforts, "area": {**efforts, **paths},
                  "povray": {"direct": [10000, 30000, 100000, 300000, 1000000, 3000000],
                             "direct, 1 spp": [10000, 30000, 100000, 300000, 1000000, 3000000], "progressive": efforts["progressive"],

@@ -442,6 +442,37 @@ def error_vs_time_chart(rows, regions, reference, name):
     save(fig, name)
 
 
+def blue_noise_chart(rows, spectra):
+    """bench/blue_noise.py: the error's spectrum under each sampler at a few sample counts,
+    and its RMSE per pixel and after a blur against the samples."""
+    counts = sorted({int(r["spp"]) for r in spectra})
+    fig, axes = plt.subplots(1, len(counts) + 1, figsize=(4.5 * (len(counts) + 1), 4.5), squeeze=False)
+    samplers = list(dict.fromkeys(r["sampler"] for r in rows))
+    for column, spp in enumerate(counts):
+        ax = axes[0][column]
+        for sampler in samplers:
+            points = [(float(r["frequency"]), float(r["power"])) for r in spectra if r["sampler"] == sampler and int(r["spp"]) == spp]
+            ax.plot([p[0] for p in points], [p[1] for p in points], marker=".", label=sampler)
+        ax.axhline(1, color="k", lw=0.5)
+        ax.set_xlabel("spatial frequency (cycles a pixel)")
+        ax.set_ylabel("the error's power, as a share of its mean")
+        ax.set_title("the error's spectrum, %d spp a pixel" % spp)
+        ax.set_ylim(bottom=0)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    ax = axes[0][-1]
+    for sampler in samplers:
+        points = sorted((int(r["spp"]), float(r["rmse"]), float(r["rmse_blur2"])) for r in rows if r["sampler"] == sampler)
+        line, = ax.loglog([p[0] for p in points], [p[2] for p in points], marker="o", label=sampler + ", blurred by 2 px")
+        ax.loglog([p[0] for p in points], [p[1] for p in points], ls=":", color=line.get_color(), marker=".", label=sampler + ", per pixel")
+    ax.set_xlabel("samples a pixel")
+    ax.set_ylabel("RMSE, display range, against prism's reference")
+    ax.set_title("the area-lit box's path tracer: error per pixel\nand after a Gaussian blur of 2 pixels")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    save(fig, "blue_noise.png")
+
+
 def airlight_chart(rows):
     """Whitted's single scattering of a point light in fog: marching against the airlight,
     RMS relative error against time per ray (bench/airlight.cpp)."""
@@ -522,6 +553,8 @@ def main():
                   "frosted": "frosted glass and rough metal under the sky"}
         error_vs_time_chart(rows, [(v, titles[v] + "\n(Cycles renders it too)") for v in dict.fromkeys(r["region"] for r in rows)],
                             "prism's path-traced reference", "sky_vs_time.png")
+    if (rows := read("blue_noise.csv")):
+        blue_noise_chart(rows, read("blue_noise_spectrum.csv"))
     if (rows := read("accuracy.csv")):
         accuracy_charts(rows)
     if (rows := read("acne.csv")):

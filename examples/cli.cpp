@@ -64,8 +64,11 @@ void print_help(const char* program, const char* description, const Options& def
                 "  --spp N       samples per pixel; 1 samples pixel centres (default %d)\n"
                 "  --threads N   worker threads, 0 = all cores (default 0)\n"
                 "  --seed N      random seed (default 0)\n"
-                "  --sampler S   the samples' and photons' points: sobol (Owen-scrambled Sobol, every 2^m samples of a pixel\n"
-                "                stratified) or independent (default sobol)\n"
+                "  --sampler S   the samples' and photons' points: zsobol (Owen-scrambled Sobol laid over the image in\n"
+                "                Morton order: every 2^m samples of a pixel stratified, the error blue noise once all --spp\n"
+                "                are taken; photons draw sobol's), sobol (per pixel, its error white), halton (Halton's\n"
+                "                sequence, Owen-scrambled: photon emission as in progressive photon mapping) or independent\n"
+                "                (default zsobol)\n"
                 "  --out DIR     folder for the images, created if missing (default .)\n"
                 "  --crop X0,X1,Y0,Y1\n"
                 "                render only pixels [X0, X1) x [Y0, Y1), from the top left; with a decimal point, as\n"
@@ -274,9 +277,10 @@ bool parse(int argc, char** argv, Options& options, const char* description, Acc
         else if (flag == "--threads") options.render.threads = parse_integer<unsigned>(flag, value, 0, 1024);
         else if (flag == "--seed") options.render.seed = parse_integer<std::uint64_t>(flag, value, 0, (1LL << 62));
         else if (flag == "--sampler") {
-            if (std::string_view(value) == "sobol") options.render.sampler = prism::SamplerKind::sobol;
-            else if (std::string_view(value) == "independent") options.render.sampler = prism::SamplerKind::independent;
-            else throw std::invalid_argument("--sampler must be sobol or independent, got '" + std::string(value) + "'");
+            bool known = false;
+            for (const prism::SamplerKind kind : {prism::SamplerKind::zsobol, prism::SamplerKind::sobol, prism::SamplerKind::halton, prism::SamplerKind::independent})
+                if (std::string_view(value) == prism::sampler_name(kind)) options.render.sampler = kind, known = true;
+            if (!known) throw std::invalid_argument("--sampler must be zsobol, sobol, halton or independent, got '" + std::string(value) + "'");
         }
         else if (flag == "--seconds") options.render.seconds = parse_number(flag, value, 0, 1e9);
         else if (flag == "--out") options.out = value;
@@ -367,7 +371,7 @@ std::string settings(const Options& options)
     const prism::RenderConfig& r = options.render;
     std::string text = "program=" + options.program + " width=" + std::to_string(r.width) + " height=" + std::to_string(r.height) +
                        " spp=" + std::to_string(r.spp) + " seed=" + std::to_string(r.seed) +
-                       " sampler=" + (r.sampler == prism::SamplerKind::sobol ? "sobol" : "independent");
+                       " sampler=" + prism::sampler_name(r.sampler);
     if (options.photon_example) {
         const char* filters[] = {"box", "cone", "gaussian"};
         text += " method=" + options.method + " photons=" + std::to_string(options.photons) + " caustic-photons=" +

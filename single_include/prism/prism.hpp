@@ -2495,7 +2495,8 @@ private:
 // ---- prism/core/sequences.hpp ----
 // Low-discrepancy sequences, as 32-bit fractions: Sobol's first four dimensions, Owen's
 // scrambling of them by hashing (Burley 2020, "Practical Hash-based Owen Scrambling",
-// JCGT 9(4)), and Halton's radical inverses with the same scrambling digit by digit.
+// JCGT 9(4)), and Halton's radical inverses in the first 64 prime bases, scrambled digit
+// by digit.
 //
 // A point depends only on its index, its dimension and a seed: threads, crops and
 // machines may take any share of a sequence and get the same bits.
@@ -2640,33 +2641,51 @@ template <Scalar T>
     return T(x >> (32 - bits)) * (T(1) / T(std::uint64_t(1) << bits));
 }
 
-/// The first primes, Halton's bases.
-inline constexpr std::array<std::uint32_t, 16> primes = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53};
+/// The first 64 primes: Halton's bases, one a dimension.
+inline constexpr std::array<std::uint32_t, 64> primes = {2,   3,   5,   7,   11,  13,  17,  19,  23,  29,  31,  37,  41,  43,  47,  53,
+                                                          59,  61,  67,  71,  73,  79,  83,  89,  97,  101, 103, 107, 109, 113, 127, 131,
+                                                          137, 139, 149, 151, 157, 163, 167, 173, 179, 181, 191, 193, 197, 199, 211, 223,
+                                                          227, 229, 233, 239, 241, 251, 257, 263, 269, 271, 277, 281, 283, 293, 307, 311};
+
+/// The radical inverse of `index` in base b (2 to 2^16), Owen-scrambled, as a 32-bit
+/// fraction: digit k of the point (weight b^-(k+1)) is the index's digit shifted modulo b
+/// by a hash of the seed, k and the digits below it (the point's digits above it), so
+/// that each point is uniform and each aligned block of b^m indices puts one point in each
+/// interval of b^-m, at a place within it of its own: stratified sampling, whose error on
+/// a smooth integrand falls as N^-3/2 at N = b^m. (The shifts are b of the b! permutations
+/// Owen draws from; affine maps, d -> a d + c, which take any two digits to any two alike,
+/// measured no better on a smooth 2-D integrand in bases 3 and 5, 11 and 13.)
+/// Every digit down to 32 bits is scrambled, the index's zeros past its
+/// last digit too: another index that shares its digits so far reads the same shifts. So
+/// a point costs a division and a hash for each of about 32 / log2(b) digits: 21 in base
+/// 3, 4 in base 311. Base 2 is Owen's scrambling by Laine and Karras's hash (owen_scramble
+/// of the reversed index), all 32 digits in one.
+[[nodiscard]] constexpr std::uint32_t scrambled_radical_inverse(std::uint32_t index, std::uint32_t b, std::uint32_t seed) noexcept
+{
+    if (b == 2) return owen_scramble(reverse_bits(index), seed);
+    const double inverse_base = 1.0 / double(b);
+    double value = 0, weight = inverse_base;
+    std::uint64_t below = 0; // the index's digits so far, as a number in base b (below b^k < 2^41)
+    for (std::uint64_t k = 0; weight >= 0x1p-33; ++k) {
+        const std::uint32_t digit = index % b;
+        index /= b;
+        value += double((digit + seed_of(k << 48 ^ below, seed) % b) % b) * weight;
+        below = below * b + digit;
+        weight *= inverse_base;
+    }
+    const double fraction = value * 0x1p32;
+    return fraction < 0x1p32 ? std::uint32_t(fraction) : 0xffffffffu;
+}
 
 /// The radical inverse of `index` in base `primes[d]`: its base-b digits mirrored about
-/// the point. With `scrambled`, Owen's scrambling: each digit permuted by a hash of the
-/// digits above it and the seed (pbrt-v4's OwenScrambledRadicalInverse does the same).
-/// In double: the digits of a 64-bit index fill its 53 bits.
-[[nodiscard]] constexpr double radical_inverse(std::uint64_t index, int d, bool scrambled = false, std::uint32_t seed = 0) noexcept
+/// the point, in double (the digits of a 64-bit index fill its 53 bits).
+[[nodiscard]] constexpr double radical_inverse(std::uint64_t index, int d) noexcept
 {
     const std::uint64_t b = primes[std::size_t(d)];
     const double inverse_base = 1.0 / double(b);
     double scale = inverse_base, value = 0;
-    std::uint64_t above = 0; // the index's digits so far, as a number in base b: what the next one's permutation depends on
-    // Enough digits that the rest cannot move the double (b^-digits below 2^-54), even
-    // when the index has run out (a scrambled point's zero digits are permuted too).
-    int digits = 0;
-    for (double s = 1; s > 0x1p-54; s *= inverse_base) ++digits;
-    for (int k = 0; k < digits && (scrambled || index != 0); ++k) {
-        std::uint64_t digit = index % b;
-        index /= b;
-        if (scrambled) {
-            const std::uint64_t original = digit;
-            const std::uint32_t h = laine_karras(std::uint32_t(above * 0x9e3779b97f4a7c15ULL >> 32) ^ std::uint32_t(above), seed ^ (std::uint32_t(k) * 0x68bc21ebu));
-            digit = (digit + h % b) % b; // a shift of the digit: one of b permutations, drawn for each prefix
-            above = above * b + original;
-        }
-        value += double(digit) * scale;
+    for (; index != 0; index /= b) {
+        value += double(index % b) * scale;
         scale *= inverse_base;
     }
     return value < 1.0 ? value : 0x1.fffffffffffffp-1;
@@ -2690,8 +2709,34 @@ inline constexpr std::array<std::uint32_t, 16> primes = {2, 3, 5, 7, 11, 13, 17,
 // prefix of 2^m samples of a pixel is then stratified in every pair: one point in each
 // elementary box of area 2^-m. SamplerKind::independent is a uniform number per
 // (pixel, sample, dimension) from a hash: what every estimator drew before, in spirit.
+//
+// SamplerKind::halton is Halton's sequence, the photon emission of progressive photon
+// mapping's published implementations: dimension d of sample i is i's radical inverse in
+// the d-th prime base, Owen-scrambled digit by digit (sequences::scrambled_radical_inverse),
+// its seed the pixel's and the dimension's; one point in all of a sample's first 64
+// dimensions together, where Sobol's padding makes each pair a net of its own. Every prefix
+// of b^m samples is stratified in intervals of b^-m of the base-b dimension. A digit costs
+// a division and a hash, so a point about log_b of its index of them (Sobol's: one hash).
+//
+// SamplerKind::zsobol (Ahmed and Wonka 2020, "Screen-Space Blue-Noise Diffusion of Monte
+// Carlo Sampling Error via Hierarchical Ordering of Pixels"; pbrt-v4's ZSobolSampler) lays
+// one Sobol sequence over the whole image: pixel z in Morton order takes the block of
+// indices [z 2^m, (z + 1) 2^m), 2^m the render's samples per pixel rounded up to a power of
+// two. Each pixel's points are then as good as Sobol's above, and every aligned 2^l x 2^l
+// square of pixels shares one net of 4^l 2^m points, so that neighbours' errors cancel:
+// the image's error is blue noise, its low frequencies (what a viewer sees, and what a
+// downsampled or denoised image keeps) far below white noise's at the same RMSE. The
+// Morton digits are permuted, each by one of the 24 orders of a 2 x 2 square drawn from a
+// hash of the digits above it (so the first of four pixels is not always the top left),
+// and the index within the pixel by a nested uniform scramble seeded by the pixel: every
+// sample is uniform on its own, as the other kinds'. The blocks take the index's low 32
+// bits, which are all a 32-bit point reads: past 2^32 / 2^m pixels the image is tiled by
+// independent blocks. The blue noise is the whole layout's: a render that takes a prefix
+// of it (a time budget's rounds, a preview, a range of passes) has each pixel stratified
+// as Sobol's, but neighbours' prefixes do not share a net.
 
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -2701,40 +2746,93 @@ namespace prism {
 enum class SamplerKind : std::uint8_t {
     independent, ///< a uniform number for each (pixel, sample, dimension), unrelated to the others
     sobol,       ///< Owen-scrambled Sobol points, padded by pairs of dimensions (Burley 2020)
+    zsobol,      ///< Sobol points laid over the image in scrambled Morton order: blue-noise error (Ahmed and Wonka 2020)
+    halton,      ///< Halton's points, one prime base a dimension, Owen-scrambled digit by digit: photon emission as in progressive photon mapping
 };
 
-/// The scrambles' seeds of pair k of a pixel's samples: the sample index's, then each
-/// coordinate's. They depend on the render's seed, the pixel and k, not on the sample.
+/// The kind's name, as the examples' --sampler takes it.
+[[nodiscard]] constexpr const char* sampler_name(SamplerKind kind) noexcept
+{
+    switch (kind) {
+    case SamplerKind::independent: return "independent";
+    case SamplerKind::sobol: return "sobol";
+    case SamplerKind::zsobol: return "zsobol";
+    case SamplerKind::halton: return "halton";
+    }
+    return "unknown";
+}
+
+/// The scrambles' seeds of pair k of a key's samples: the sample index's, then each
+/// coordinate's. They depend on the render's seed, the pixel (or for zsobol the image) and
+/// k, not on the sample.
 [[nodiscard]] constexpr std::array<std::uint32_t, 3> pair_seeds(std::uint64_t key, std::uint32_t k) noexcept
 {
     const std::uint64_t salt = 3 * std::uint64_t(k);
     return {sequences::seed_of(key, salt), sequences::seed_of(key, salt + 1), sequences::seed_of(key, salt + 2)};
 }
 
-/// The seeds of one pixel's first `cached` pairs, hashed when a sample first asks for them
-/// and kept for the pixel's other samples (three 64-bit hashes a pair, otherwise paid by
-/// every sample: a fifth of a Sobol path's time on the area-lit box). One thread's, for one
-/// pixel at a time; the Samplers that read it must not outlive it.
-class PixelSeeds {
+/// What a sample's pair k reads: the point is Sobol's at index block | (the sample's index,
+/// nested-scrambled with `index`, masked to the pixel's share), each coordinate
+/// Owen-scrambled with `u` and `v`.
+struct PairSeeds {
+    std::uint32_t index = 0; ///< the sample index's nested uniform scramble
+    std::uint32_t u = 0;     ///< the first coordinate's Owen scramble
+    std::uint32_t v = 0;     ///< the second's
+    std::uint32_t block = 0; ///< zsobol: the pixel's first index in the image's sequence (its low 32 bits); 0 otherwise
+
+    friend constexpr bool operator==(const PairSeeds&, const PairSeeds&) = default;
+};
+
+/// Which points a pixel's samples draw: its key, whence its scrambles, and under zsobol its
+/// place in the image's sequence.
+class PixelKey {
 public:
-    /// Pairs kept: the camera's two and five bounces'.
-    static constexpr std::uint32_t cached = 32;
+    /// Pixel 0 of seed 0.
+    constexpr PixelKey() noexcept : PixelKey(0, 0) {}
 
-    /// The seeds of pixel `pixel` of the render of `seed`.
-    constexpr PixelSeeds(std::uint64_t seed, std::uint64_t pixel) noexcept : key_(key_of(seed, pixel)) {}
+    /// Pixel `pixel` of the render of `seed`, its points its own (a pixel of no image, as a
+    /// photon map's: zsobol draws Sobol's padded points there).
+    constexpr PixelKey(std::uint64_t seed, std::uint64_t pixel) noexcept : key_(key_of(seed, pixel)) {}
 
-    /// pair_seeds(key, k), hashed once.
-    [[nodiscard]] constexpr std::array<std::uint32_t, 3> of(std::uint32_t k) noexcept
+    /// Pixel (x, y) of a width x height render of `seed` taking `spp` samples per pixel:
+    /// under zsobol its block of the image's sequence, otherwise PixelKey(seed, y * width + x).
+    [[nodiscard]] static constexpr PixelKey in_image(SamplerKind kind, std::uint64_t seed, std::uint32_t x, std::uint32_t y, std::uint32_t width,
+                                                     std::uint32_t height, std::uint64_t spp) noexcept
     {
-        if (k >= cached) return pair_seeds(key_, k);
-        if (((known_ >> k) & 1u) == 0) {
-            seeds_[k] = pair_seeds(key_, k);
-            known_ |= std::uint32_t(1) << k;
-        }
-        return seeds_[k];
+        if (kind != SamplerKind::zsobol) return PixelKey(seed, std::uint64_t(y) * width + x);
+        PixelKey pixel(seed, ~std::uint64_t(0)); // one key for the image: its points are one sequence
+        while ((std::uint64_t(1) << pixel.levels_) < std::max(width, height)) ++pixel.levels_;
+        while (pixel.log2_spp_ < 31 && (std::uint64_t(1) << pixel.log2_spp_) < spp) ++pixel.log2_spp_;
+        pixel.mask_ = (std::uint32_t(1) << pixel.log2_spp_) - 1;
+        for (std::uint32_t b = 0; b < pixel.levels_; ++b) // Morton order: x's bit b at 2b, y's at 2b + 1
+            pixel.morton_ |= std::uint64_t((x >> b) & 1u) << (2 * b) | std::uint64_t((y >> b) & 1u) << (2 * b + 1);
+        pixel.in_image_ = true;
+        return pixel;
     }
 
-    /// The pixel's key (Sampler::key_of).
+    /// Pair k's seeds, hashed.
+    [[nodiscard]] constexpr PairSeeds seeds(std::uint32_t k) const noexcept
+    {
+        const std::array<std::uint32_t, 3> seed = pair_seeds(key_, k);
+        if (!in_image_) return {seed[0], seed[1], seed[2], 0};
+        // The Morton digits from the top, each permuted by an order of the 2 x 2 square
+        // drawn from the digits above it, the level and the pair.
+        std::uint64_t permuted = 0;
+        for (std::uint32_t level = levels_; level-- > 0;) {
+            const std::uint64_t above = morton_ >> (2 * level + 2);
+            const std::uint64_t h = mix(mix(above + 0x9e3779b97f4a7c15ULL) ^ (std::uint64_t(seed[0]) << 32 | level));
+            const std::uint32_t digit = std::uint32_t(morton_ >> (2 * level)) & 3u;
+            permuted |= std::uint64_t(square_orders[std::size_t(h % 24)][digit]) << (2 * level);
+        }
+        const std::uint32_t index_seed = std::uint32_t(mix(mix(morton_ ^ 0xd1b54a32d192ed03ULL) ^ seed[0]) >> 32);
+        return {index_seed, seed[1], seed[2], std::uint32_t(permuted << log2_spp_)};
+    }
+
+    /// The bits of a sample's index that are the pixel's: all, or under zsobol the low
+    /// log2 of its samples rounded up to a power of two.
+    [[nodiscard]] constexpr std::uint32_t sample_mask() const noexcept { return mask_; }
+
+    /// The key (key_of): the pixel's, or under zsobol the image's.
     [[nodiscard]] constexpr std::uint64_t key() const noexcept { return key_; }
 
     /// The key of a pixel of a render, whence its scrambles' seeds (pair_seeds): unrelated
@@ -2753,9 +2851,59 @@ public:
     }
 
 private:
+    /// The 24 orders of a 2 x 2 square's cells: entry [p][d] is where cell d goes.
+    static constexpr std::array<std::array<std::uint8_t, 4>, 24> square_orders = [] {
+        std::array<std::array<std::uint8_t, 4>, 24> orders{};
+        std::array<std::uint8_t, 4> order = {0, 1, 2, 3};
+        for (auto& o : orders) {
+            o = order;
+            std::next_permutation(order.begin(), order.end());
+        }
+        return orders;
+    }();
+
     std::uint64_t key_;
+    std::uint64_t morton_ = 0;     ///< zsobol: the pixel's Morton index
+    std::uint32_t mask_ = ~0u;     ///< sample_mask()
+    std::uint8_t levels_ = 0;      ///< zsobol: Morton digits, log2 of the image's larger side rounded up
+    std::uint8_t log2_spp_ = 0;    ///< zsobol: log2 of the samples per pixel, rounded up
+    bool in_image_ = false;        ///< whether this is a zsobol pixel
+};
+
+/// The seeds of one pixel's first `cached` pairs, hashed when a sample first asks for them
+/// and kept for the pixel's other samples (three 64-bit hashes a pair, and a zsobol pixel's
+/// permuted Morton index, otherwise paid by every sample: a fifth of a Sobol path's time
+/// on the area-lit box). One thread's, for one pixel at a time; the Samplers that read it
+/// must not outlive it.
+class PixelSeeds {
+public:
+    /// Pairs kept: the camera's two and five bounces'.
+    static constexpr std::uint32_t cached = 32;
+
+    /// The seeds of `pixel`.
+    constexpr explicit PixelSeeds(const PixelKey& pixel) noexcept : pixel_(pixel) {}
+
+    /// The seeds of pixel `pixel` of the render of `seed` (PixelKey(seed, pixel)).
+    constexpr PixelSeeds(std::uint64_t seed, std::uint64_t pixel) noexcept : pixel_(seed, pixel) {}
+
+    /// pixel().seeds(k), hashed once.
+    [[nodiscard]] constexpr PairSeeds of(std::uint32_t k) noexcept
+    {
+        if (k >= cached) return pixel_.seeds(k);
+        if (((known_ >> k) & 1u) == 0) {
+            seeds_[k] = pixel_.seeds(k);
+            known_ |= std::uint32_t(1) << k;
+        }
+        return seeds_[k];
+    }
+
+    /// Whose seeds these are.
+    [[nodiscard]] constexpr const PixelKey& pixel() const noexcept { return pixel_; }
+
+private:
+    PixelKey pixel_;
     std::uint32_t known_ = 0; ///< bit k: seeds_[k] is hashed
-    std::array<std::array<std::uint32_t, 3>, cached> seeds_{};
+    std::array<PairSeeds, cached> seeds_{};
 };
 
 /// The numbers of one sample of one pixel.
@@ -2764,33 +2912,54 @@ public:
     /// Independent numbers of pixel 0, sample 0, seed 0.
     constexpr Sampler() noexcept = default;
 
-    /// Sample `sample` of pixel `pixel` in the render of `seed`.
+    /// Sample `sample` of `pixel`: the sample must be below 2^31, and under zsobol below
+    /// the samples per pixel its key was made for.
+    constexpr Sampler(SamplerKind kind, const PixelKey& pixel, std::uint32_t sample) noexcept
+        : kind_(kind), pixel_(pixel), sample_(sample), reversed_sample_(sequences::reverse_bits(sample))
+    {
+    }
+
+    /// Sample `sample` of pixel `pixel` in the render of `seed` (PixelKey(seed, pixel)).
     constexpr Sampler(SamplerKind kind, std::uint64_t seed, std::uint64_t pixel, std::uint32_t sample) noexcept
-        : kind_(kind), key_(key_of(seed, pixel)), sample_(sample), reversed_sample_(sequences::reverse_bits(sample))
+        : Sampler(kind, PixelKey(seed, pixel), sample)
     {
     }
 
     /// The same sample, its seeds read from (and kept in) its pixel's `seeds`, which must
     /// outlive it: the same bits, for less.
-    constexpr Sampler(SamplerKind kind, PixelSeeds& seeds, std::uint32_t sample) noexcept
-        : kind_(kind), key_(seeds.key()), sample_(sample), reversed_sample_(sequences::reverse_bits(sample)), seeds_(&seeds)
+    constexpr Sampler(SamplerKind kind, PixelSeeds& seeds, std::uint32_t sample) noexcept : Sampler(kind, seeds.pixel(), sample)
     {
+        seeds_ = &seeds;
     }
+
+    /// Pairs that draw Halton's points (one prime base a dimension); later pairs of a
+    /// Halton sample draw independent numbers.
+    static constexpr std::uint32_t halton_pairs = std::uint32_t(sequences::primes.size() / 2);
 
     /// The point of dimensions 2k and 2k + 1, as 32-bit fractions.
     [[nodiscard]] constexpr std::array<std::uint32_t, 2> bits(std::uint32_t k) const noexcept
     {
-        if (kind_ == SamplerKind::sobol) {
-            // index = owen_scramble(sample, s0), then owen_scramble(sobol(index, d), s1 + d),
-            // with the bit reversals that cancel left out: owen_scramble(x, s) is
-            // reverse(laine_karras(reverse(x), s)) and sobol(index, 0) is reverse(index),
-            // so three reversals a pair, not eight (the sample's own is kept).
-            using namespace sequences;
-            const std::array<std::uint32_t, 3> seed = seeds_ != nullptr ? seeds_->of(k) : pair_seeds(key_, k);
-            const std::uint32_t index = reverse_bits(laine_karras(reversed_sample_, seed[0]));
-            return {reverse_bits(laine_karras(index, seed[1])), reverse_bits(laine_karras(sobol1_reversed(index), seed[2]))};
+        if (kind_ == SamplerKind::halton) {
+            if (k < halton_pairs) {
+                // One sequence in every dimension at once: dimension d is base primes[d] at
+                // the sample's own index, each coordinate scrambled with a seed of its own.
+                const PairSeeds seed = seeds_ != nullptr ? seeds_->of(k) : pixel_.seeds(k);
+                return {sequences::scrambled_radical_inverse(sample_, sequences::primes[2 * k], seed.u),
+                        sequences::scrambled_radical_inverse(sample_, sequences::primes[2 * k + 1], seed.v)};
+            }
         }
-        const std::uint64_t bits = PixelSeeds::mix(key_ ^ (std::uint64_t(sample_) << 32 | k));
+        else if (kind_ != SamplerKind::independent) {
+            // index = block | owen_scramble(sample, seed.index), then
+            // owen_scramble(sobol(index, d), seed of d), with the bit reversals that cancel
+            // left out: owen_scramble(x, s) is reverse(laine_karras(reverse(x), s)) and
+            // sobol(index, 0) is reverse(index), so three reversals a pair, not eight (the
+            // sample's own is kept).
+            using namespace sequences;
+            const PairSeeds seed = seeds_ != nullptr ? seeds_->of(k) : pixel_.seeds(k);
+            const std::uint32_t index = seed.block | (reverse_bits(laine_karras(reversed_sample_, seed.index)) & pixel_.sample_mask());
+            return {reverse_bits(laine_karras(index, seed.u)), reverse_bits(laine_karras(sobol1_reversed(index), seed.v))};
+        }
+        const std::uint64_t bits = PixelKey::mix(pixel_.key() ^ (std::uint64_t(sample_) << 32 | k));
         return {std::uint32_t(bits), std::uint32_t(bits >> 32)};
     }
 
@@ -2812,12 +2981,9 @@ public:
     /// Which points these are.
     [[nodiscard]] constexpr SamplerKind kind() const noexcept { return kind_; }
 
-    /// The key of a pixel of a render (PixelSeeds::key_of).
-    [[nodiscard]] static constexpr std::uint64_t key_of(std::uint64_t seed, std::uint64_t pixel) noexcept { return PixelSeeds::key_of(seed, pixel); }
-
 private:
     SamplerKind kind_ = SamplerKind::independent;
-    std::uint64_t key_ = 0;
+    PixelKey pixel_{};
     std::uint32_t sample_ = 0;
     std::uint32_t reversed_sample_ = 0; ///< sample_'s bits reversed
     PixelSeeds* seeds_ = nullptr;       ///< the pixel's kept seeds, if it has them
@@ -10608,8 +10774,9 @@ struct PhotonTracerConfig {
     /// The photons' numbers (core/sampler.hpp): photon i of a map is sample i of the
     /// sampler, its choice of light and point (pair 0), its direction (pair 1) and each
     /// bounce (a block of pairs) Owen-scrambled Sobol points, so that the photons of any
-    /// 2^m prefix, a pass of progressive photon mapping included, are stratified in each;
-    /// or independent numbers.
+    /// 2^m prefix, a pass of progressive photon mapping included, are stratified in each
+    /// (zsobol, a layout of the image, draws the same); Halton's points, one sequence over
+    /// the photon's first 64 dimensions together; or independent numbers.
     SamplerKind sampler = SamplerKind::sobol;
     unsigned threads = 0; ///< 0 = all hardware threads
     /// A white photon meeting a dispersive interface takes one of this many wavelength
@@ -12123,9 +12290,13 @@ struct RenderConfig {
     int width = 512; ///< image width in pixels
     int height = 512; ///< image height in pixels
     int spp = 1;             ///< samples per pixel; 1 samples the pixel centre
-    /// The points the samples draw (core/sampler.hpp): Owen-scrambled Sobol, whose every
-    /// prefix of 2^m samples is stratified, or independent numbers.
-    SamplerKind sampler = SamplerKind::sobol;
+    /// The points the samples draw (core/sampler.hpp): Owen-scrambled Sobol laid over the
+    /// image in Morton order (zsobol, the default), each pixel's every prefix of 2^m
+    /// samples stratified and the image's error blue noise once the render takes spp
+    /// samples (the layout is spp's, rounded up to a power of two: a range of passes draws
+    /// what it draws in the whole render of that spp); Sobol padded per pixel (sobol), as
+    /// good per pixel, its error white; or independent numbers.
+    SamplerKind sampler = SamplerKind::zsobol;
     unsigned threads = 0;    ///< worker threads; 0 = all hardware threads
     std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image
     bool progress = true;    ///< report progress on stderr once a render passes one second
@@ -12190,6 +12361,12 @@ namespace detail {
     return seed + s;
 }
 
+/// Pixel (x, y)'s place in the samples of a render (PixelKey::in_image).
+[[nodiscard]] constexpr PixelKey pixel_key(const RenderConfig& config, std::uint32_t x, std::uint32_t y) noexcept
+{
+    return PixelKey::in_image(config.sampler, config.seed, x, y, std::uint32_t(config.width), std::uint32_t(config.height), std::uint64_t(config.spp));
+}
+
 /// Sample s of a pixel: where in the pixel its ray starts, its point on the lens, and the
 /// numbers its estimate goes on to draw (from its path's first bounce on).
 template <Scalar T>
@@ -12200,7 +12377,7 @@ struct CameraSample {
 };
 
 /// Sample s of pixel `pixel` of a render, its numbers from `sampler`: Sampler(config.sampler,
-/// config.seed, pixel, s), or the same sample reading its pixel's PixelSeeds.
+/// pixel_key(config, x, y), s), or the same sample reading its pixel's PixelSeeds.
 template <Scalar T>
 [[nodiscard]] constexpr CameraSample<T> camera_sample(const RenderConfig& config, const Sampler& sampler, std::uint64_t pixel, std::uint64_t s,
                                                       bool thin_lens) noexcept
@@ -12222,7 +12399,9 @@ template <Scalar T>
 template <Scalar T>
 [[nodiscard]] constexpr CameraSample<T> camera_sample(const RenderConfig& config, std::uint64_t pixel, std::uint64_t s, bool thin_lens = true) noexcept
 {
-    return camera_sample<T>(config, Sampler(config.sampler, config.seed, pixel, std::uint32_t(s)), pixel, s, thin_lens);
+    const auto width = std::uint64_t(config.width);
+    return camera_sample<T>(config, Sampler(config.sampler, pixel_key(config, std::uint32_t(pixel % width), std::uint32_t(pixel / width)), std::uint32_t(s)),
+                            pixel, s, thin_lens);
 }
 
 /// The window a config renders, checked against its image.
@@ -12361,7 +12540,7 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
                 const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
                 std::array<ExactSum, N> sum{};
                 std::size_t rejected = 0;
-                PixelSeeds seeds(config.seed, pixel); // the scrambles' seeds, hashed once for the pixel's samples
+                PixelSeeds seeds(pixel_key(config, std::uint32_t(x), std::uint32_t(y))); // the scrambles' seeds, hashed once for the pixel's samples
                 for (std::uint64_t s = samples.first; s < samples.last; ++s) {
                     CameraSample<T> c = camera_sample<T>(config, Sampler(config.sampler, seeds, std::uint32_t(s)), pixel, s, rays.thin_lens());
                     const Ray<T> ray = rays.thin_lens() ? rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1], c.lens[0], c.lens[1])
@@ -15142,6 +15321,7 @@ private:
 // beam's one-dimensional blur by the ratio itself).
 
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15236,9 +15416,10 @@ public:
                 mapper_config.indirect_volume_radius = float(progressive_radius(config_.pass.indirect_volume_radius, config_.alpha, pass));
             const PhotonMapper<SceneT, Air> mapper(*scene_, mapper_config, trace_photons(*scene_, config_.pass.tracing, air_, pass), air_);
             // Pass p takes the pixels' samples p s to (p + 1) s of one sequence (s = samples),
-            // so that the camera's samples of any 2^m passes are stratified over the pixel.
+            // so that the camera's samples of any 2^m passes are stratified over the pixel;
+            // spp is all the passes' samples, so that a zsobol layout is the whole render's.
             RenderConfig pass_render = config;
-            pass_render.spp = int((pass + 1) * std::uint64_t(config_.samples));
+            pass_render.spp = int(std::min<std::uint64_t>(std::uint64_t(config.spp) * std::uint64_t(config_.samples), std::uint64_t(std::numeric_limits<int>::max())));
             pass_render.passes = {pass * std::uint64_t(config_.samples), (pass + 1) * std::uint64_t(config_.samples)};
             pass_render.seconds = 0;
             pass_render.progress = false;

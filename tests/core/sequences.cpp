@@ -166,27 +166,61 @@ TEST_CASE("Halton's radical inverses, by hand, and scrambled: the first b^k poin
     for (std::uint64_t i = 0; i < 5; ++i) CHECK(radical_inverse(i, 0) == base2[i]);
     for (std::uint64_t i = 0; i < 7; ++i) CHECK(radical_inverse(i, 1) == doctest::Approx(base3[i]).epsilon(1e-15));
     CHECK(radical_inverse(5 * 5 * 5 - 1, 2) == doctest::Approx(124.0 / 125).epsilon(1e-15));
-    for (int d = 0; d < 6; ++d) {
-        const std::uint64_t b = primes[std::size_t(d)];
+    CHECK(primes[63] == 311);
+    for (std::size_t d = 1; d < primes.size(); ++d)
+        for (std::uint32_t f = 2; f * f <= primes[d]; ++f) REQUIRE(primes[d] % f != 0);
+    for (const std::size_t d : {0, 1, 2, 5, 20, 63}) {
+        const std::uint32_t b = primes[d];
         for (const std::uint32_t seed : {0u, 42u}) {
-            std::uint64_t n = 1;
+            std::uint32_t n = 1;
             for (int k = 0; k < 4 && n * b <= 20000; ++k) {
                 n *= b;
-                std::vector<int> count(n, 0);
-                for (std::uint64_t i = 0; i < n; ++i) {
-                    const double v = radical_inverse(i, d, true, seed);
-                    REQUIRE(v >= 0.0);
-                    REQUIRE(v < 1.0);
-                    ++count[std::size_t(v * double(n))];
+                // From index 0, and from a later multiple of b^k: each block of b^k.
+                for (const std::uint32_t first : {0u, 7 * n}) {
+                    std::vector<int> count(n, 0);
+                    for (std::uint32_t i = first; i < first + n; ++i) ++count[std::size_t(to_unit<double>(scrambled_radical_inverse(i, b, seed)) * double(n))];
+                    REQUIRE(std::all_of(count.begin(), count.end(), [](int c) { return c == 1; }));
                 }
-                REQUIRE(std::all_of(count.begin(), count.end(), [](int c) { return c == 1; }));
             }
         }
     }
-    // Scrambled, a point's mean over seeds is 1/2 (uniform): 100 000 seeds, 4 standard errors.
-    double sum = 0;
-    for (std::uint32_t s = 0; s < 100000; ++s) sum += radical_inverse(7, 1, true, seed_of(s, 1));
-    CHECK(std::abs(sum / 100000 - 0.5) < 4 * std::sqrt(1.0 / 12 / 100000));
+    // The seed moves the points (in base 2 and in the others).
+    CHECK(scrambled_radical_inverse(1, 2, 0) != scrambled_radical_inverse(1, 2, 1));
+    CHECK(scrambled_radical_inverse(1, 3, 0) != scrambled_radical_inverse(1, 3, 1));
+    // Scrambled, a point's mean over seeds is 1/2 and its variance 1/12 (uniform):
+    // 100 000 seeds, 4 standard errors; and the last interval's edge is never 1.
+    for (const std::uint32_t index : {0u, 7u, 123456789u}) {
+        double sum = 0, squares = 0;
+        for (std::uint32_t s = 0; s < 100000; ++s) {
+            const double v = to_unit<double>(scrambled_radical_inverse(index, 3, seed_of(s, 1)));
+            sum += v;
+            squares += v * v;
+        }
+        CHECK(std::abs(sum / 100000 - 0.5) < 4 * std::sqrt(1.0 / 12 / 100000));
+        CHECK(std::abs(squares / 100000 - 1.0 / 3) < 4 * std::sqrt(4.0 / 45 / 100000));
+    }
+}
+
+TEST_CASE("scrambled radical inverses integrate a smooth function with an error falling as N^-3/2 at N = b^m: stratified sampling")
+{
+    // The mean of x e^x (integral 1) over the first 3^m points, its RMS over 300 seeds.
+    std::vector<double> ns, errors;
+    for (std::uint32_t n = 9; n <= 6561; n *= 9) {
+        double squares = 0;
+        for (std::uint32_t seed = 0; seed < 300; ++seed) {
+            double sum = 0;
+            for (std::uint32_t i = 0; i < n; ++i) {
+                const double x = to_unit<double>(scrambled_radical_inverse(i, 3, seed_of(seed, 9)));
+                sum += x * std::exp(x);
+            }
+            squares += (sum / n - 1) * (sum / n - 1);
+        }
+        ns.push_back(double(n));
+        errors.push_back(std::sqrt(squares / 300));
+    }
+    const double slope = test::log_log_slope(ns, errors);
+    MESSAGE("base 3: RMS error slope ", slope, ", ", errors.back(), " at 6561 points");
+    CHECK(slope < -1.35);
 }
 
 TEST_CASE("the star discrepancy of scrambled Sobol points falls about as 1 / N, of random points as N^-1/2")

@@ -38,13 +38,17 @@ TEST_CASE("the same bits for 1, 2 and 8 threads")
     const Whitted integrator(scene);
     const Camera<float> camera{.position = {0, 2, 6}, .look_at = {0, 1, 0}, .fov = 50};
     RenderConfig config{.width = 96, .height = 64, .spp = 5, .seed = 42, .progress = false, .tile_size = 8};
-    config.threads = 1;
-    const Film one = render(camera, integrator, config);
-    for (unsigned threads : {2u, 8u}) {
-        config.threads = threads;
-        const Film many = render(camera, integrator, config);
-        CHECK(std::memcmp(one.pixels().data(), many.pixels().data(), one.pixels().size() * sizeof(one.pixels()[0])) == 0);
+    for (const SamplerKind kind : {SamplerKind::zsobol, SamplerKind::sobol}) {
+        config.sampler = kind;
+        config.threads = 1;
+        const Film one = render(camera, integrator, config);
+        for (unsigned threads : {2u, 8u}) {
+            config.threads = threads;
+            const Film many = render(camera, integrator, config);
+            CHECK(std::memcmp(one.pixels().data(), many.pixels().data(), one.pixels().size() * sizeof(one.pixels()[0])) == 0);
+        }
     }
+    const Film one = render(camera, integrator, config);
     // A different seed moves the jittered samples.
     config.seed = 43;
     const Film other = render(camera, integrator, config);
@@ -144,10 +148,10 @@ TEST_CASE("a pixel's footprints: every prefix of 2^m samples one in each element
     // average over the pixel), from either sampler: uniform over the pixel, so 9000
     // pixels' footprints fill every ninth of it alike (a chi-square test of 8 degrees of
     // freedom: 26.1 is its 0.001 quantile from the top).
-    for (const SamplerKind kind : {SamplerKind::sobol, SamplerKind::independent}) {
+    for (const SamplerKind kind : {SamplerKind::sobol, SamplerKind::zsobol, SamplerKind::independent}) {
         std::array<int, 9> ninths{};
         for (std::uint64_t pixel = 0; pixel < 9000; ++pixel) {
-            const auto c = detail::camera_sample<float>(RenderConfig{.spp = 1, .sampler = kind, .single_sample_at_centre = false}, pixel, 0);
+            const auto c = detail::camera_sample<float>(RenderConfig{.width = 100, .height = 90, .spp = 1, .sampler = kind, .single_sample_at_centre = false}, pixel, 0);
             ++ninths[std::size_t(int(c.footprint[0] * 3) * 3 + int(c.footprint[1] * 3))];
         }
         double chi2 = 0;
@@ -169,7 +173,7 @@ struct Edge {
 
 } // namespace
 
-TEST_CASE("any prefix of a pixel's samples is unbiased, for either sampler: the mean over seeds of the first 3 of 64 samples is the pixel's integral")
+TEST_CASE("any prefix of a pixel's samples is unbiased, for every sampler: the mean over seeds of the first 3 of 64 samples is the pixel's integral")
 {
     // Regression: sample s of n fell in row s div m of an m x m grid (m = floor(sqrt(n))),
     // so the first samples of a large spp covered only the top of each pixel and a partial
@@ -181,7 +185,7 @@ TEST_CASE("any prefix of a pixel's samples is unbiased, for either sampler: the 
     for (int i = 0; i < 2048; ++i)
         for (int j = 0; j < 2048; ++j) integral += Edge::f(normalize(rays.ray((i + 0.5) / 2048, (j + 0.5) / 2048).direction));
     integral /= 2048.0 * 2048.0;
-    for (const SamplerKind kind : {SamplerKind::sobol, SamplerKind::independent}) {
+    for (const SamplerKind kind : {SamplerKind::sobol, SamplerKind::zsobol, SamplerKind::independent}) {
         const int seeds = 3000;
         double sum = 0, squares = 0;
         for (int seed = 0; seed < seeds; ++seed) {
@@ -192,7 +196,7 @@ TEST_CASE("any prefix of a pixel's samples is unbiased, for either sampler: the 
             squares += mean * mean;
         }
         const double mean = sum / seeds, error = std::sqrt((squares / seeds - mean * mean) / (seeds - 1));
-        MESSAGE(std::string(kind == SamplerKind::sobol ? "sobol" : "independent"), ": ", mean, " against ", integral, ", standard error ", error);
+        MESSAGE(sampler_name(kind), ": ", mean, " against ", integral, ", standard error ", error);
         CHECK(std::abs(mean - integral) < 4 * error);
         CHECK(error > 0.001); // the edge crosses the pixel: the samples differ
     }
@@ -314,17 +318,19 @@ TEST_CASE("a crop window is the same bits as those pixels of the whole render, t
     for (const float aperture : {0.0f, 0.15f}) {
         CAPTURE(aperture);
         const Camera<float> camera{.position = {0, 2, 6}, .look_at = {0, 1, 0}, .fov = 50, .aperture_radius = aperture};
-        RenderConfig config{.width = 61, .height = 43, .spp = 3, .threads = 2, .seed = 9, .progress = false, .tile_size = 8};
-        const Film whole = render(camera, integrator, config);
-        for (const PixelWindow w : {PixelWindow{0, 0, 61, 43}, PixelWindow{0, 0, 1, 1}, PixelWindow{60, 42, 61, 43}, PixelWindow{13, 7, 50, 31},
-                                    PixelWindow{5, 0, 6, 43}, PixelWindow{0, 20, 61, 21}}) {
-            config.crop = w;
-            for (unsigned threads : {1u, 3u}) {
-                config.threads = threads;
-                const Film crop = render(camera, integrator, config);
-                CHECK(crop.width() == w.width());
-                CHECK(crop.height() == w.height());
-                CHECK(same_bits(crop, cut(whole, w)));
+        for (const SamplerKind kind : {SamplerKind::sobol, SamplerKind::zsobol}) {
+            RenderConfig config{.width = 61, .height = 43, .spp = 3, .sampler = kind, .threads = 2, .seed = 9, .progress = false, .tile_size = 8};
+            const Film whole = render(camera, integrator, config);
+            for (const PixelWindow w : {PixelWindow{0, 0, 61, 43}, PixelWindow{0, 0, 1, 1}, PixelWindow{60, 42, 61, 43}, PixelWindow{13, 7, 50, 31},
+                                        PixelWindow{5, 0, 6, 43}, PixelWindow{0, 20, 61, 21}}) {
+                config.crop = w;
+                for (unsigned threads : {1u, 3u}) {
+                    config.threads = threads;
+                    const Film crop = render(camera, integrator, config);
+                    CHECK(crop.width() == w.width());
+                    CHECK(crop.height() == w.height());
+                    CHECK(same_bits(crop, cut(whole, w)));
+                }
             }
         }
     }
@@ -338,42 +344,45 @@ TEST_CASE("renders of disjoint sample ranges and crops add up to the whole rende
     for (const float aperture : {0.0f, 0.15f}) {
         CAPTURE(aperture);
         const Camera<float> camera{.position = {0, 2, 6}, .look_at = {0, 1, 0}, .fov = 50, .aperture_radius = aperture};
-        const RenderConfig config{.width = 40, .height = 30, .spp = 7, .threads = 2, .seed = 5, .progress = false};
-        const Film whole = render(camera, integrator, config);
-        // Samples [0, 2), [2, 3) and [3, 7), on other thread counts, the last in two crops,
-        // added in an order of their own.
-        Accumulation sums(40, 30, PixelWindow::whole(40, 30));
-        RenderConfig part = config;
-        part.passes = {3, 7};
-        part.threads = 1;
-        part.crop = {0, 0, 40, 11};
-        sums += render_sums(camera, integrator, part);
-        part.crop = {0, 11, 40, 30};
-        sums += render_sums(camera, integrator, part);
-        part.crop = {};
-        part.passes = {0, 2};
-        part.threads = 3;
-        render_into(sums, camera, integrator, part);
-        part.passes = {2, 3};
-        sums += render_sums(camera, integrator, part);
-        CHECK(sums.weight(0, 0) == 7);
-        CHECK(sums.weight(39, 29) == 7);
-        CHECK(same_bits(sums.image(), whole));
-        CHECK(same_bits(render_sums(camera, integrator, config).image(), whole));
+        for (const SamplerKind kind : {SamplerKind::sobol, SamplerKind::zsobol}) {
+            CAPTURE(sampler_name(kind));
+            const RenderConfig config{.width = 40, .height = 30, .spp = 7, .sampler = kind, .threads = 2, .seed = 5, .progress = false};
+            const Film whole = render(camera, integrator, config);
+            // Samples [0, 2), [2, 3) and [3, 7), on other thread counts, the last in two crops,
+            // added in an order of their own.
+            Accumulation sums(40, 30, PixelWindow::whole(40, 30));
+            RenderConfig part = config;
+            part.passes = {3, 7};
+            part.threads = 1;
+            part.crop = {0, 0, 40, 11};
+            sums += render_sums(camera, integrator, part);
+            part.crop = {0, 11, 40, 30};
+            sums += render_sums(camera, integrator, part);
+            part.crop = {};
+            part.passes = {0, 2};
+            part.threads = 3;
+            render_into(sums, camera, integrator, part);
+            part.passes = {2, 3};
+            sums += render_sums(camera, integrator, part);
+            CHECK(sums.weight(0, 0) == 7);
+            CHECK(sums.weight(39, 29) == 7);
+            CHECK(same_bits(sums.image(), whole));
+            CHECK(same_bits(render_sums(camera, integrator, config).image(), whole));
 
-        // Sample s is the same whichever samples go with it: one sample alone is the whole
-        // render at spp = 1 only where the render's samples are the same, so compare the
-        // sums of [0, 1) with [0, 1) taken in a render of [0, 4).
-        part = config;
-        part.passes = {1, 2};
-        const Accumulation second = render_sums(camera, integrator, part);
-        part.passes = {0, 2};
-        Accumulation both = render_sums(camera, integrator, part);
-        part.passes = {0, 1};
-        Accumulation first = render_sums(camera, integrator, part);
-        first += second;
-        for (int y = 0; y < 30; ++y)
-            for (int x = 0; x < 40; ++x) REQUIRE(first.sums(x, y) == both.sums(x, y));
+            // Sample s is the same whichever samples go with it: one sample alone is the whole
+            // render at spp = 1 only where the render's samples are the same, so compare the
+            // sums of [0, 1) with [0, 1) taken in a render of [0, 4).
+            part = config;
+            part.passes = {1, 2};
+            const Accumulation second = render_sums(camera, integrator, part);
+            part.passes = {0, 2};
+            Accumulation both = render_sums(camera, integrator, part);
+            part.passes = {0, 1};
+            Accumulation first = render_sums(camera, integrator, part);
+            first += second;
+            for (int y = 0; y < 30; ++y)
+                for (int x = 0; x < 40; ++x) REQUIRE(first.sums(x, y) == both.sums(x, y));
+        }
     }
 }
 

@@ -36,6 +36,7 @@
 #include <prism/render/render.hpp>
 #include <prism/scene/camera.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -130,9 +131,10 @@ public:
                 mapper_config.indirect_volume_radius = float(progressive_radius(config_.pass.indirect_volume_radius, config_.alpha, pass));
             const PhotonMapper<SceneT, Air> mapper(*scene_, mapper_config, trace_photons(*scene_, config_.pass.tracing, air_, pass), air_);
             // Pass p takes the pixels' samples p s to (p + 1) s of one sequence (s = samples),
-            // so that the camera's samples of any 2^m passes are stratified over the pixel.
+            // so that the camera's samples of any 2^m passes are stratified over the pixel;
+            // spp is all the passes' samples, so that a zsobol layout is the whole render's.
             RenderConfig pass_render = config;
-            pass_render.spp = int((pass + 1) * std::uint64_t(config_.samples));
+            pass_render.spp = int(std::min<std::uint64_t>(std::uint64_t(config.spp) * std::uint64_t(config_.samples), std::uint64_t(std::numeric_limits<int>::max())));
             pass_render.passes = {pass * std::uint64_t(config_.samples), (pass + 1) * std::uint64_t(config_.samples)};
             pass_render.seconds = 0;
             pass_render.progress = false;

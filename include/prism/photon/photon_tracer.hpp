@@ -62,8 +62,9 @@ struct PhotonTracerConfig {
     /// The photons' numbers (core/sampler.hpp): photon i of a map is sample i of the
     /// sampler, its choice of light and point (pair 0), its direction (pair 1) and each
     /// bounce (a block of pairs) Owen-scrambled Sobol points, so that the photons of any
-    /// 2^m prefix, a pass of progressive photon mapping included, are stratified in each;
-    /// or independent numbers.
+    /// 2^m prefix, a pass of progressive photon mapping included, are stratified in each
+    /// (zsobol, a layout of the image, draws the same); Halton's points, one sequence over
+    /// the photon's first 64 dimensions together; or independent numbers.
     SamplerKind sampler = SamplerKind::sobol;
     unsigned threads = 0; ///< 0 = all hardware threads
     /// A white photon meeting a dispersive interface takes one of this many wavelength

@@ -34,9 +34,13 @@ struct RenderConfig {
     int width = 512; ///< image width in pixels
     int height = 512; ///< image height in pixels
     int spp = 1;             ///< samples per pixel; 1 samples the pixel centre
-    /// The points the samples draw (core/sampler.hpp): Owen-scrambled Sobol, whose every
-    /// prefix of 2^m samples is stratified, or independent numbers.
-    SamplerKind sampler = SamplerKind::sobol;
+    /// The points the samples draw (core/sampler.hpp): Owen-scrambled Sobol laid over the
+    /// image in Morton order (zsobol, the default), each pixel's every prefix of 2^m
+    /// samples stratified and the image's error blue noise once the render takes spp
+    /// samples (the layout is spp's, rounded up to a power of two: a range of passes draws
+    /// what it draws in the whole render of that spp); Sobol padded per pixel (sobol), as
+    /// good per pixel, its error white; or independent numbers.
+    SamplerKind sampler = SamplerKind::zsobol;
     unsigned threads = 0;    ///< worker threads; 0 = all hardware threads
     std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image
     bool progress = true;    ///< report progress on stderr once a render passes one second
@@ -101,6 +105,12 @@ namespace detail {
     return seed + s;
 }
 
+/// Pixel (x, y)'s place in the samples of a render (PixelKey::in_image).
+[[nodiscard]] constexpr PixelKey pixel_key(const RenderConfig& config, std::uint32_t x, std::uint32_t y) noexcept
+{
+    return PixelKey::in_image(config.sampler, config.seed, x, y, std::uint32_t(config.width), std::uint32_t(config.height), std::uint64_t(config.spp));
+}
+
 /// Sample s of a pixel: where in the pixel its ray starts, its point on the lens, and the
 /// numbers its estimate goes on to draw (from its path's first bounce on).
 template <Scalar T>
@@ -111,7 +121,7 @@ struct CameraSample {
 };
 
 /// Sample s of pixel `pixel` of a render, its numbers from `sampler`: Sampler(config.sampler,
-/// config.seed, pixel, s), or the same sample reading its pixel's PixelSeeds.
+/// pixel_key(config, x, y), s), or the same sample reading its pixel's PixelSeeds.
 template <Scalar T>
 [[nodiscard]] constexpr CameraSample<T> camera_sample(const RenderConfig& config, const Sampler& sampler, std::uint64_t pixel, std::uint64_t s,
                                                       bool thin_lens) noexcept
@@ -133,7 +143,9 @@ template <Scalar T>
 template <Scalar T>
 [[nodiscard]] constexpr CameraSample<T> camera_sample(const RenderConfig& config, std::uint64_t pixel, std::uint64_t s, bool thin_lens = true) noexcept
 {
-    return camera_sample<T>(config, Sampler(config.sampler, config.seed, pixel, std::uint32_t(s)), pixel, s, thin_lens);
+    const auto width = std::uint64_t(config.width);
+    return camera_sample<T>(config, Sampler(config.sampler, pixel_key(config, std::uint32_t(pixel % width), std::uint32_t(pixel / width)), std::uint32_t(s)),
+                            pixel, s, thin_lens);
 }
 
 /// The window a config renders, checked against its image.
@@ -272,7 +284,7 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
                 const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
                 std::array<ExactSum, N> sum{};
                 std::size_t rejected = 0;
-                PixelSeeds seeds(config.seed, pixel); // the scrambles' seeds, hashed once for the pixel's samples
+                PixelSeeds seeds(pixel_key(config, std::uint32_t(x), std::uint32_t(y))); // the scrambles' seeds, hashed once for the pixel's samples
                 for (std::uint64_t s = samples.first; s < samples.last; ++s) {
                     CameraSample<T> c = camera_sample<T>(config, Sampler(config.sampler, seeds, std::uint32_t(s)), pixel, s, rays.thin_lens());
                     const Ray<T> ray = rays.thin_lens() ? rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1], c.lens[0], c.lens[1])
