@@ -69,6 +69,13 @@ int main(int argc, char** argv)
     const std::string which = argv[1], out = argv[4];
     std::string method = argv[2];
     examples::Options options;
+    // "METHOD:KIND-photons": only the photons draw KIND's points, the camera Sobol's.
+    for (const prism::SamplerKind kind : {prism::SamplerKind::independent, prism::SamplerKind::halton, prism::SamplerKind::sobol}) {
+        const std::string suffix = std::string(":") + prism::sampler_name(kind) + "-photons";
+        if (!method.ends_with(suffix)) continue;
+        method.resize(method.size() - suffix.size());
+        options.photon_sampler = kind;
+    }
     options.render.sampler = bench::take_sampler(method);
     const double effort = std::atof(argv[3]);
     options.render.width = options.render.height = argc > 5 ? std::atoi(argv[5]) : 256;

@@ -224,9 +224,12 @@ def main():
     povray_counts = [10000, 30000, 100000, 300000, 1000000, 3000000]
     paths = {"path": efforts["reference"], "path_bounces": efforts["reference"], "path_grid2": efforts["reference"],
              "path:independent": efforts["reference"], "path:zsobol": efforts["reference"], "path:halton": efforts["reference"]}
-    # Independent and Halton photons (and samples) beside the Sobol ones, on the diffuse box.
+    # Independent and Halton photons and samples beside the Sobol ones, on the diffuse box;
+    # and Halton or independent photons alone, the camera's samples Sobol's (:KIND-photons).
     independent = {"direct:independent": efforts["direct"], "progressive:independent": efforts["progressive"],
-                   "direct:halton": efforts["direct"], "progressive:halton": efforts["progressive"]}
+                   "direct:halton": efforts["direct"], "progressive:halton": efforts["progressive"],
+                   "direct:halton-photons": efforts["direct"], "progressive:halton-photons": efforts["progressive"],
+                   "direct:independent-photons": efforts["direct"], "progressive:independent-photons": efforts["progressive"]}
     per_scene = {"diffuse": {**efforts, **independent}, "glass": efforts, "area": {**efforts, **paths},
                  "povray": {"direct": [10000, 30000, 100000, 300000, 1000000, 3000000],
                             "direct, 1 spp": [10000, 30000, 100000, 300000, 1000000, 3000000], "progressive": efforts["progressive"],

@@ -35,6 +35,7 @@ void print_photon_help(const Options& defaults)
     std::printf("  photon mapping:\n"
                 "  --photons N          photons emitted for the global map (default %zu)\n"
                 "  --caustic-photons N  photons aimed at specular objects (default %zu)\n"
+                "  --photon-sampler S   the photons' points, as --sampler's (default: --sampler's; zsobol draws sobol's)\n"
                 "  --gather N           final-gather rays per diffuse hit, for --method gather and cache (default %d)\n"
                 "  --radius R           radius of the caustic estimate, or its search limit with --k (default 0.1)\n"
                 "  --k N                caustic estimate from the N nearest photons, 0 = every photon within R (default 100)\n"
@@ -91,6 +92,13 @@ void print_help(const char* program, const char* description, const Options& def
 
 /// A number in (lo, hi] that is still > lo once rounded to float (the estimators keep
 /// floats: --radius 1e-300 would become 0).
+prism::SamplerKind parse_sampler(std::string_view flag, const char* text)
+{
+    for (const prism::SamplerKind kind : {prism::SamplerKind::zsobol, prism::SamplerKind::sobol, prism::SamplerKind::halton, prism::SamplerKind::independent})
+        if (std::string_view(text) == prism::sampler_name(kind)) return kind;
+    throw std::invalid_argument(std::string(flag) + " must be zsobol, sobol, halton or independent, got '" + std::string(text) + "'");
+}
+
 double parse_number(std::string_view flag, const char* text, double lo, double hi)
 {
     char* end = nullptr;
@@ -251,7 +259,7 @@ bool parse(int argc, char** argv, Options& options, const char* description, Acc
     bool pass_count = false;
     constexpr std::string_view photon_flags[] = {"--photons", "--caustic-photons", "--gather", "--radius", "--global-radius",
                                                  "--max-height-ratio", "--k",               "--visibility", "--filter", "--light",
-                                                 "--method"};
+                                                 "--method", "--photon-sampler"};
     for (int i = 1; i < argc; ++i) {
         const std::string_view flag = argv[i];
         if (flag == "--help" || flag == "-h") {
@@ -276,12 +284,8 @@ bool parse(int argc, char** argv, Options& options, const char* description, Acc
         else if (flag == "--spp") options.render.spp = parse_integer<int>(flag, value, 1, 1 << 20);
         else if (flag == "--threads") options.render.threads = parse_integer<unsigned>(flag, value, 0, 1024);
         else if (flag == "--seed") options.render.seed = parse_integer<std::uint64_t>(flag, value, 0, (1LL << 62));
-        else if (flag == "--sampler") {
-            bool known = false;
-            for (const prism::SamplerKind kind : {prism::SamplerKind::zsobol, prism::SamplerKind::sobol, prism::SamplerKind::halton, prism::SamplerKind::independent})
-                if (std::string_view(value) == prism::sampler_name(kind)) options.render.sampler = kind, known = true;
-            if (!known) throw std::invalid_argument("--sampler must be zsobol, sobol, halton or independent, got '" + std::string(value) + "'");
-        }
+        else if (flag == "--sampler") options.render.sampler = parse_sampler(flag, value);
+        else if (flag == "--photon-sampler") options.photon_sampler = parse_sampler(flag, value);
         else if (flag == "--seconds") options.render.seconds = parse_number(flag, value, 0, 1e9);
         else if (flag == "--out") options.out = value;
         else if (flag == "--povray") options.povray = value;
@@ -378,7 +382,7 @@ std::string settings(const Options& options)
                 std::to_string(options.caustic_photons) + " gather=" + std::to_string(options.gather) + " radius=" + number(options.radius) +
                 " k=" + std::to_string(options.k) + " global-radius=" + number(options.global_radius) + " filter=" + filters[int(options.filter)] +
                 " max-height-ratio=" + number(options.max_height_ratio) + " visibility=" + std::to_string(options.visibility) +
-                " light=" + (options.povray_light ? "povray" : "physical");
+                " light=" + (options.povray_light ? "povray" : "physical") + " photon-sampler=" + prism::sampler_name(options.photon_sampler.value_or(r.sampler));
     }
     return text;
 }

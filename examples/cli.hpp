@@ -37,6 +37,7 @@ struct Options {
     // Photon mapping (the photon examples only)
     std::size_t photons = 200000;
     std::size_t caustic_photons = 200000;
+    std::optional<prism::SamplerKind> photon_sampler{}; ///< the photons' points (--photon-sampler); unset: render.sampler's
     int gather = 64; ///< final-gather rays (gather and cache)
     double radius = 0.1;          ///< the caustic estimate's radius, or its search limit with --k
     std::size_t k = 100;          ///< > 0: the caustic estimate from the k nearest photons, 0: all within radius

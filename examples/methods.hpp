@@ -12,11 +12,12 @@
 
 namespace examples {
 
-/// The photon tracer's settings from the command line (--sampler picks the photons' too).
+/// The photon tracer's settings from the command line (--sampler picks the photons' too,
+/// unless --photon-sampler does).
 inline prism::PhotonTracerConfig photon_tracer_config(const Options& options)
 {
     return {.global_photons = options.photons, .caustic_photons = options.caustic_photons, .seed = options.render.seed,
-            .sampler = options.render.sampler, .threads = options.render.threads};
+            .sampler = options.photon_sampler.value_or(options.render.sampler), .threads = options.render.threads};
 }
 
 /// The photon mapper's settings from the command line (for --method direct, gather and

@@ -2647,20 +2647,56 @@ inline constexpr std::array<std::uint32_t, 64> primes = {2,   3,   5,   7,   11,
                                                           137, 139, 149, 151, 157, 163, 167, 173, 179, 181, 191, 193, 197, 199, 211, 223,
                                                           227, 229, 233, 239, 241, 251, 257, 263, 269, 271, 277, 281, 283, 293, 307, 311};
 
+/// Element i of a pseudo-random permutation of [0, n) drawn by `key` (Kensler 2013,
+/// "Correlated Multi-Jittered Sampling"): a bijective hash of the bits below n's next
+/// power of two, applied again while the result lies at or past n (cycle walking: fewer
+/// than two rounds on average), then a rotation by the key.
+[[nodiscard]] constexpr std::uint32_t permutation_element(std::uint32_t i, std::uint32_t n, std::uint32_t key) noexcept
+{
+    std::uint32_t mask = n - 1;
+    mask |= mask >> 1;
+    mask |= mask >> 2;
+    mask |= mask >> 4;
+    mask |= mask >> 8;
+    mask |= mask >> 16;
+    do { // each step a bijection of [0, mask]: xor with a constant, multiplication by an odd number, xor with the bits above
+        i ^= key;
+        i *= 0xe170893du;
+        i ^= key >> 16;
+        i ^= (i & mask) >> 4;
+        i ^= key >> 8;
+        i *= 0x0929eb3fu;
+        i ^= key >> 23;
+        i ^= (i & mask) >> 1;
+        i *= 1u | key >> 27;
+        i *= 0x6935fa69u;
+        i ^= (i & mask) >> 11;
+        i *= 0x74dcb303u;
+        i ^= (i & mask) >> 2;
+        i *= 0x9e501cc3u;
+        i ^= (i & mask) >> 2;
+        i *= 0xc860a3dfu;
+        i &= mask;
+        i ^= i >> 5;
+    } while (i >= n);
+    return (i + key) % n;
+}
+
 /// The radical inverse of `index` in base b (2 to 2^16), Owen-scrambled, as a 32-bit
-/// fraction: digit k of the point (weight b^-(k+1)) is the index's digit shifted modulo b
-/// by a hash of the seed, k and the digits below it (the point's digits above it), so
-/// that each point is uniform and each aligned block of b^m indices puts one point in each
-/// interval of b^-m, at a place within it of its own: stratified sampling, whose error on
-/// a smooth integrand falls as N^-3/2 at N = b^m. (The shifts are b of the b! permutations
-/// Owen draws from; affine maps, d -> a d + c, which take any two digits to any two alike,
-/// measured no better on a smooth 2-D integrand in bases 3 and 5, 11 and 13.)
-/// Every digit down to 32 bits is scrambled, the index's zeros past its
-/// last digit too: another index that shares its digits so far reads the same shifts. So
-/// a point costs a division and a hash for each of about 32 / log2(b) digits: 21 in base
-/// 3, 4 in base 311. Base 2 is Owen's scrambling by Laine and Karras's hash (owen_scramble
-/// of the reversed index), all 32 digits in one.
-[[nodiscard]] constexpr std::uint32_t scrambled_radical_inverse(std::uint32_t index, std::uint32_t b, std::uint32_t seed) noexcept
+/// fraction: digit k of the point (weight b^-(k+1)) is the index's digit under a
+/// permutation of [0, b) drawn (permutation_element) from a hash of the seed, k and the
+/// digits below it (the point's digits above it), so that each point is uniform and each
+/// aligned block of b^m indices puts one point in each interval of b^-m, at a place within
+/// it of its own. The permutations must be far from linear: under shifts or affine maps
+/// of the digits, the first points of two large bases (i / 61, i / 67, ...) stay on
+/// lines, and a path tracer's later bounces, which read them, came out noisier than
+/// under independent numbers. Every digit down to 32 bits is scrambled, the index's zeros
+/// past its last digit too: another index that shares its digits so far reads the same
+/// permutations. So a point costs a division, a hash and a permutation for each of about
+/// 32 / log2(b) digits: 21 in base 3, 4 in base 311. Base 2 is Owen's scrambling by Laine
+/// and Karras's hash (owen_scramble of the reversed index), all 32 digits in one. Out of
+/// line: a loop of that cost gains nothing inlined into every estimator that could draw it.
+[[nodiscard, gnu::noinline]] constexpr std::uint32_t scrambled_radical_inverse(std::uint32_t index, std::uint32_t b, std::uint32_t seed) noexcept
 {
     if (b == 2) return owen_scramble(reverse_bits(index), seed);
     const double inverse_base = 1.0 / double(b);
@@ -2669,7 +2705,7 @@ inline constexpr std::array<std::uint32_t, 64> primes = {2,   3,   5,   7,   11,
     for (std::uint64_t k = 0; weight >= 0x1p-33; ++k) {
         const std::uint32_t digit = index % b;
         index /= b;
-        value += double((digit + seed_of(k << 48 ^ below, seed) % b) % b) * weight;
+        value += double(permutation_element(digit, b, seed_of(k << 48 ^ below, seed))) * weight;
         below = below * b + digit;
         weight *= inverse_base;
     }
@@ -3065,6 +3101,15 @@ public:
         }
         const T u = pcg_.uniform<T>();
         return {u, pcg_.uniform<T>()};
+    }
+
+    /// Leave the sampler's next pair undrawn, as if drawn (a camera sample at the pixel's
+    /// centre skips its footprint's): the draws after it read what they would have.
+    constexpr void skip_pair() noexcept
+    {
+        has_second_ = false;
+        if (pair_ < end_) ++pair_;
+        else (void)pcg_.next_u32(), (void)pcg_.next_u32();
     }
 
     /// A uniform 32-bit word, from the PCG stream.
@@ -12294,8 +12339,10 @@ struct RenderConfig {
     /// image in Morton order (zsobol, the default), each pixel's every prefix of 2^m
     /// samples stratified and the image's error blue noise once the render takes spp
     /// samples (the layout is spp's, rounded up to a power of two: a range of passes draws
-    /// what it draws in the whole render of that spp); Sobol padded per pixel (sobol), as
-    /// good per pixel, its error white; or independent numbers.
+    /// what it draws in the whole render of that spp; progressive photon mapping's passes
+    /// draw sobol's); Sobol padded per pixel (sobol), as good per pixel, its error white;
+    /// Halton's points per pixel (halton, for photons: as a camera's, between independent
+    /// numbers and Sobol's); or independent numbers.
     SamplerKind sampler = SamplerKind::zsobol;
     unsigned threads = 0;    ///< worker threads; 0 = all hardware threads
     std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image
@@ -12383,10 +12430,12 @@ template <Scalar T>
                                                       bool thin_lens) noexcept
 {
     Random rng(sampler, Pcg32(sample_seed(config.seed, s), pixel));
-    const std::array<float, 2> footprint = rng.uniform2<float>();
+    // At the pixel's centre the footprint's pair is not drawn: nothing after it moves.
+    const bool centre = config.spp == 1 && config.single_sample_at_centre;
+    const std::array<float, 2> footprint = centre ? std::array<float, 2>{0.5f, 0.5f} : rng.uniform2<float>();
+    if (centre) rng.skip_pair();
     const std::array<T, 2> lens = thin_lens ? rng.uniform2<T>() : std::array<T, 2>{T(0.5), T(0.5)};
     rng.bounce(0);
-    if (config.spp == 1 && config.single_sample_at_centre) return {{T(0.5), T(0.5)}, lens, rng};
     return {{T(footprint[0]), T(footprint[1])}, lens, rng};
 }
 
@@ -15321,7 +15370,6 @@ private:
 // beam's one-dimensional blur by the ratio itself).
 
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15416,10 +15464,15 @@ public:
                 mapper_config.indirect_volume_radius = float(progressive_radius(config_.pass.indirect_volume_radius, config_.alpha, pass));
             const PhotonMapper<SceneT, Air> mapper(*scene_, mapper_config, trace_photons(*scene_, config_.pass.tracing, air_, pass), air_);
             // Pass p takes the pixels' samples p s to (p + 1) s of one sequence (s = samples),
-            // so that the camera's samples of any 2^m passes are stratified over the pixel;
-            // spp is all the passes' samples, so that a zsobol layout is the whole render's.
+            // so that the camera's samples of any 2^m passes are stratified over the pixel.
+            // Under zsobol, each pixel's own Sobol sequence: the image's layout would be that
+            // of all the render's passes, which a part rendered on its own (the examples'
+            // --passes A:B) does not know, and a layout per pass would lose the
+            // stratification across passes (a fresh sequence a pass: the diffuse box's
+            // error at 256 passes 2.4 x).
             RenderConfig pass_render = config;
-            pass_render.spp = int(std::min<std::uint64_t>(std::uint64_t(config.spp) * std::uint64_t(config_.samples), std::uint64_t(std::numeric_limits<int>::max())));
+            if (pass_render.sampler == SamplerKind::zsobol) pass_render.sampler = SamplerKind::sobol;
+            pass_render.spp = int((pass + 1) * std::uint64_t(config_.samples));
             pass_render.passes = {pass * std::uint64_t(config_.samples), (pass + 1) * std::uint64_t(config_.samples)};
             pass_render.seconds = 0;
             pass_render.progress = false;

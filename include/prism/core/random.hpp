@@ -78,6 +78,15 @@ public:
         return {u, pcg_.uniform<T>()};
     }
 
+    /// Leave the sampler's next pair undrawn, as if drawn (a camera sample at the pixel's
+    /// centre skips its footprint's): the draws after it read what they would have.
+    constexpr void skip_pair() noexcept
+    {
+        has_second_ = false;
+        if (pair_ < end_) ++pair_;
+        else (void)pcg_.next_u32(), (void)pcg_.next_u32();
+    }
+
     /// A uniform 32-bit word, from the PCG stream.
     constexpr std::uint32_t next_u32() noexcept { return pcg_.next_u32(); }
 

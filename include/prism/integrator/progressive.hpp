@@ -36,7 +36,6 @@
 #include <prism/render/render.hpp>
 #include <prism/scene/camera.hpp>
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -131,10 +130,15 @@ public:
                 mapper_config.indirect_volume_radius = float(progressive_radius(config_.pass.indirect_volume_radius, config_.alpha, pass));
             const PhotonMapper<SceneT, Air> mapper(*scene_, mapper_config, trace_photons(*scene_, config_.pass.tracing, air_, pass), air_);
             // Pass p takes the pixels' samples p s to (p + 1) s of one sequence (s = samples),
-            // so that the camera's samples of any 2^m passes are stratified over the pixel;
-            // spp is all the passes' samples, so that a zsobol layout is the whole render's.
+            // so that the camera's samples of any 2^m passes are stratified over the pixel.
+            // Under zsobol, each pixel's own Sobol sequence: the image's layout would be that
+            // of all the render's passes, which a part rendered on its own (the examples'
+            // --passes A:B) does not know, and a layout per pass would lose the
+            // stratification across passes (a fresh sequence a pass: the diffuse box's
+            // error at 256 passes 2.4 x).
             RenderConfig pass_render = config;
-            pass_render.spp = int(std::min<std::uint64_t>(std::uint64_t(config.spp) * std::uint64_t(config_.samples), std::uint64_t(std::numeric_limits<int>::max())));
+            if (pass_render.sampler == SamplerKind::zsobol) pass_render.sampler = SamplerKind::sobol;
+            pass_render.spp = int((pass + 1) * std::uint64_t(config_.samples));
             pass_render.passes = {pass * std::uint64_t(config_.samples), (pass + 1) * std::uint64_t(config_.samples)};
             pass_render.seconds = 0;
             pass_render.progress = false;

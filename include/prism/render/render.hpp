@@ -38,8 +38,10 @@ struct RenderConfig {
     /// image in Morton order (zsobol, the default), each pixel's every prefix of 2^m
     /// samples stratified and the image's error blue noise once the render takes spp
     /// samples (the layout is spp's, rounded up to a power of two: a range of passes draws
-    /// what it draws in the whole render of that spp); Sobol padded per pixel (sobol), as
-    /// good per pixel, its error white; or independent numbers.
+    /// what it draws in the whole render of that spp; progressive photon mapping's passes
+    /// draw sobol's); Sobol padded per pixel (sobol), as good per pixel, its error white;
+    /// Halton's points per pixel (halton, for photons: as a camera's, between independent
+    /// numbers and Sobol's); or independent numbers.
     SamplerKind sampler = SamplerKind::zsobol;
     unsigned threads = 0;    ///< worker threads; 0 = all hardware threads
     std::uint64_t seed = 0;  ///< with the scene and spp, fixes every bit of the image
@@ -127,10 +129,12 @@ template <Scalar T>
                                                       bool thin_lens) noexcept
 {
     Random rng(sampler, Pcg32(sample_seed(config.seed, s), pixel));
-    const std::array<float, 2> footprint = rng.uniform2<float>();
+    // At the pixel's centre the footprint's pair is not drawn: nothing after it moves.
+    const bool centre = config.spp == 1 && config.single_sample_at_centre;
+    const std::array<float, 2> footprint = centre ? std::array<float, 2>{0.5f, 0.5f} : rng.uniform2<float>();
+    if (centre) rng.skip_pair();
     const std::array<T, 2> lens = thin_lens ? rng.uniform2<T>() : std::array<T, 2>{T(0.5), T(0.5)};
     rng.bounce(0);
-    if (config.spp == 1 && config.single_sample_at_centre) return {{T(0.5), T(0.5)}, lens, rng};
     return {{T(footprint[0]), T(footprint[1])}, lens, rng};
 }
 
