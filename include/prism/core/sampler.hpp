@@ -118,8 +118,9 @@ public:
         return pixel;
     }
 
-    /// Pair k's seeds, hashed.
-    [[nodiscard]] constexpr PairSeeds seeds(std::uint32_t k) const noexcept
+    /// Pair k's seeds, hashed. Out of line: asked once a pixel and pair (PixelSeeds keeps
+    /// them), its hashes and the Morton loop would only swell every draw's inlined code.
+    [[nodiscard, gnu::noinline]] constexpr PairSeeds seeds(std::uint32_t k) const noexcept
     {
         const std::array<std::uint32_t, 3> seed = pair_seeds(key_, k);
         if (!in_image_) return {seed[0], seed[1], seed[2], 0};
@@ -248,13 +249,7 @@ public:
     [[nodiscard]] constexpr std::array<std::uint32_t, 2> bits(std::uint32_t k) const noexcept
     {
         if (kind_ == SamplerKind::halton) {
-            if (k < halton_pairs) {
-                // One sequence in every dimension at once: dimension d is base primes[d] at
-                // the sample's own index, each coordinate scrambled with a seed of its own.
-                const PairSeeds seed = seeds_ != nullptr ? seeds_->of(k) : pixel_.seeds(k);
-                return {sequences::scrambled_radical_inverse(sample_, sequences::primes[2 * k], seed.u),
-                        sequences::scrambled_radical_inverse(sample_, sequences::primes[2 * k + 1], seed.v)};
-            }
+            if (k < halton_pairs) return halton_bits(k);
         }
         else if (kind_ != SamplerKind::independent) {
             // index = block | owen_scramble(sample, seed.index), then
@@ -290,6 +285,16 @@ public:
     [[nodiscard]] constexpr SamplerKind kind() const noexcept { return kind_; }
 
 private:
+    /// bits(k) of a Halton sample: one sequence in every dimension at once, dimension d
+    /// base primes[d] at the sample's own index, each coordinate scrambled with a seed of
+    /// its own. Out of line, as the radical inverses are.
+    [[nodiscard, gnu::noinline]] constexpr std::array<std::uint32_t, 2> halton_bits(std::uint32_t k) const noexcept
+    {
+        const PairSeeds seed = seeds_ != nullptr ? seeds_->of(k) : pixel_.seeds(k);
+        return {sequences::scrambled_radical_inverse(sample_, sequences::primes[2 * k], seed.u),
+                sequences::scrambled_radical_inverse(sample_, sequences::primes[2 * k + 1], seed.v)};
+    }
+
     SamplerKind kind_ = SamplerKind::independent;
     PixelKey pixel_{};
     std::uint32_t sample_ = 0;
