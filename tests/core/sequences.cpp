@@ -203,11 +203,12 @@ TEST_CASE("Halton's radical inverses, by hand, and scrambled: the first b^k poin
 
 TEST_CASE("scrambled radical inverses integrate a smooth function with an error falling as N^-3/2 at N = b^m: stratified sampling")
 {
-    // The mean of x e^x (integral 1) over the first 3^m points, its RMS over 300 seeds.
+    // The mean of x e^x (integral 1) over the first 3^m points, its RMS over 200 seeds
+    // (a relative standard error of 5 % a point: the slope to about 0.03).
     std::vector<double> ns, errors;
-    for (std::uint32_t n = 9; n <= 6561; n *= 9) {
+    for (std::uint32_t n = 9; n <= 729; n *= 3) {
         double squares = 0;
-        for (std::uint32_t seed = 0; seed < 300; ++seed) {
+        for (std::uint32_t seed = 0; seed < 200; ++seed) {
             double sum = 0;
             for (std::uint32_t i = 0; i < n; ++i) {
                 const double x = to_unit<double>(scrambled_radical_inverse(i, 3, seed_of(seed, 9)));
@@ -216,10 +217,10 @@ TEST_CASE("scrambled radical inverses integrate a smooth function with an error 
             squares += (sum / n - 1) * (sum / n - 1);
         }
         ns.push_back(double(n));
-        errors.push_back(std::sqrt(squares / 300));
+        errors.push_back(std::sqrt(squares / 200));
     }
     const double slope = test::log_log_slope(ns, errors);
-    MESSAGE("base 3: RMS error slope ", slope, ", ", errors.back(), " at 6561 points");
+    MESSAGE("base 3: RMS error slope ", slope, ", ", errors.back(), " at 729 points");
     CHECK(slope < -1.35);
 }
 
