@@ -88,6 +88,7 @@ struct PairSeeds {
     std::uint32_t v = 0;     ///< the second's
     std::uint32_t block = 0; ///< zsobol: the pixel's first index in the image's sequence (its low 32 bits); 0 otherwise
 
+    /// Equal when all four are.
     friend constexpr bool operator==(const PairSeeds&, const PairSeeds&) = default;
 };
 
