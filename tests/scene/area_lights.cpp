@@ -162,6 +162,17 @@ TEST_CASE("the scene's emitters are sampled as densely as AreaLights::pdf says: 
     MESSAGE("under Sobol points: chi2 ", sobol.statistic, " with ", sobol.degrees, " degrees, p = ", sobol.p_value);
     CHECK(sobol.p_value > 1e-3);
     CHECK(sobol.stray < 10);
+    // And under Halton's (bases 2 and 3), which photons may draw their lights' points from.
+    const test::Chi2 halton = test::chi2_directions(
+        [&](double u, double v) { return lights.sample(p, {u, v}).wi; },
+        [&](const Vec3<double>& w) {
+            const auto hit = scene.closest_hit({p, w}, {0.0, infinity<double>});
+            return hit ? lights.pdf(*hit, p) : 0.0;
+        },
+        {0, 1, 0}, 1000000, 60, 80, 10, -1, 7, SamplerKind::halton);
+    MESSAGE("under Halton points: chi2 ", halton.statistic, " with ", halton.degrees, " degrees, p = ", halton.p_value);
+    CHECK(halton.p_value > 1e-3);
+    CHECK(halton.stray < 10);
     // Each sample's density is what pdf() gives the point a ray toward it meets, to rounding.
     Random rng(9, 9);
     for (int i = 0; i < 20000; ++i) {
