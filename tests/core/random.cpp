@@ -16,9 +16,9 @@ TEST_CASE("an independent Random draws PCG's numbers, whatever bounce it is told
         random.bounce(i % 5);
         CHECK(random.uniform<float>() == pcg.uniform<float>());
         CHECK(random.uniform<double>() == pcg.uniform<double>());
-        const auto pair = random.uniform2<double>();
-        CHECK(pair[0] == pcg.uniform<double>());
-        CHECK(pair[1] == pcg.uniform<double>());
+        const auto drawn = random.uniform2<double>();
+        CHECK(drawn[0] == pcg.uniform<double>());
+        CHECK(drawn[1] == pcg.uniform<double>());
         CHECK(random.next_u32() == pcg.next_u32());
     }
     // So does one built on an independent sampler: its numbers are the stream's.
