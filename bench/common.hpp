@@ -9,8 +9,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace bench {
 
@@ -69,18 +71,25 @@ private:
     std::FILE* file_;
 };
 
-/// The sampler a bench METHOD names: "NAME:independent", "NAME:zsobol" and "NAME:halton"
-/// are NAME with that SamplerKind, the suffix taken off `method`; anything else
-/// Owen-scrambled Sobol points, per pixel.
-inline prism::SamplerKind take_sampler(std::string& method)
+/// The sampler a bench METHOD names after a colon and before `after`: "NAME:KIND" + after
+/// (KIND a sampler_name), the suffix taken off `method`; nothing when it names none.
+inline std::optional<prism::SamplerKind> take_sampler_suffix(std::string& method, std::string_view after)
 {
-    for (const prism::SamplerKind kind : {prism::SamplerKind::independent, prism::SamplerKind::zsobol, prism::SamplerKind::halton}) {
-        const std::string suffix = std::string(":") + prism::sampler_name(kind);
+    for (const prism::SamplerKind kind : prism::sampler_kinds) {
+        const std::string suffix = std::string(":") + prism::sampler_name(kind) + std::string(after);
         if (!method.ends_with(suffix)) continue;
         method.resize(method.size() - suffix.size());
         return kind;
     }
-    return prism::SamplerKind::sobol;
+    return std::nullopt;
+}
+
+/// The sampler a bench METHOD names: "NAME:independent", "NAME:zsobol", "NAME:halton" (and
+/// "NAME:sobol") are NAME with that SamplerKind, the suffix taken off `method`; anything
+/// else Owen-scrambled Sobol points, per pixel.
+inline prism::SamplerKind take_sampler(std::string& method)
+{
+    return take_sampler_suffix(method, "").value_or(prism::SamplerKind::sobol);
 }
 
 } // namespace bench

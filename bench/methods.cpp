@@ -72,12 +72,7 @@ int main(int argc, char** argv)
     std::string method = argv[2];
     examples::Options options;
     // "METHOD:KIND-photons": only the photons draw KIND's points, the camera Sobol's.
-    for (const prism::SamplerKind kind : {prism::SamplerKind::independent, prism::SamplerKind::halton, prism::SamplerKind::sobol}) {
-        const std::string suffix = std::string(":") + prism::sampler_name(kind) + "-photons";
-        if (!method.ends_with(suffix)) continue;
-        method.resize(method.size() - suffix.size());
-        options.photon_sampler = kind;
-    }
+    options.photon_sampler = bench::take_sampler_suffix(method, "-photons");
     options.render.sampler = bench::take_sampler(method);
     const double effort = std::atof(argv[3]);
     options.render.width = options.render.height = argc > 5 ? std::atoi(argv[5]) : 256;

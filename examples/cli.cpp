@@ -94,7 +94,7 @@ void print_help(const char* program, const char* description, const Options& def
 /// floats: --radius 1e-300 would become 0).
 prism::SamplerKind parse_sampler(std::string_view flag, const char* text)
 {
-    for (const prism::SamplerKind kind : {prism::SamplerKind::zsobol, prism::SamplerKind::sobol, prism::SamplerKind::halton, prism::SamplerKind::independent})
+    for (const prism::SamplerKind kind : prism::sampler_kinds)
         if (std::string_view(text) == prism::sampler_name(kind)) return kind;
     throw std::invalid_argument(std::string(flag) + " must be zsobol, sobol, halton or independent, got '" + std::string(text) + "'");
 }

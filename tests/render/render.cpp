@@ -196,7 +196,7 @@ TEST_CASE("any prefix of a pixel's samples is unbiased, for every sampler: the m
             squares += mean * mean;
         }
         const double mean = sum / seeds, error = std::sqrt((squares / seeds - mean * mean) / (seeds - 1));
-        MESSAGE(sampler_name(kind), ": ", mean, " against ", integral, ", standard error ", error);
+        MESSAGE(std::string(sampler_name(kind)), ": ", mean, " against ", integral, ", standard error ", error);
         CHECK(std::abs(mean - integral) < 4 * error);
         CHECK(error > 0.001); // the edge crosses the pixel: the samples differ
     }
@@ -345,7 +345,8 @@ TEST_CASE("renders of disjoint sample ranges and crops add up to the whole rende
         CAPTURE(aperture);
         const Camera<float> camera{.position = {0, 2, 6}, .look_at = {0, 1, 0}, .fov = 50, .aperture_radius = aperture};
         for (const SamplerKind kind : {SamplerKind::sobol, SamplerKind::zsobol}) {
-            CAPTURE(sampler_name(kind));
+            const std::string sampler = sampler_name(kind);
+            CAPTURE(sampler);
             const RenderConfig config{.width = 40, .height = 30, .spp = 7, .sampler = kind, .threads = 2, .seed = 5, .progress = false};
             const Film whole = render(camera, integrator, config);
             // Samples [0, 2), [2, 3) and [3, 7), on other thread counts, the last in two crops,

@@ -137,42 +137,27 @@ TEST_CASE("the scene's emitters are sampled as densely as AreaLights::pdf says: 
                       Object{Quad<double>({-2, -0.5, -1}, {0, 1.5, 0}, {0, 0, 2}), Emissive<double>{.radiance = Rgb<double>(0.5)}}};
     const Vec3<double> p(0.1, 0.2, 0.05);
     const auto lights = scene.area_lights();
-    const test::Chi2 c = test::chi2_directions(
-        [&](double u, double v) { return lights.sample(p, {u, v}).wi; },
-        [&](const Vec3<double>& w) {
-            const auto hit = scene.closest_hit({p, w}, {0.0, infinity<double>});
-            return hit ? lights.pdf(*hit, p) : 0.0;
-        },
-        {0, 1, 0}, 1000000, 60, 80, 10);
+    const auto sample = [&](double u, double v) { return lights.sample(p, {u, v}).wi; };
+    const auto pdf = [&](const Vec3<double>& w) {
+        const auto hit = scene.closest_hit({p, w}, {0.0, infinity<double>});
+        return hit ? lights.pdf(*hit, p) : 0.0;
+    };
+    const test::Chi2 c = test::chi2_directions(sample, pdf, {0, 1, 0}, 1000000, 60, 80, 10);
     MESSAGE("chi2 ", c.statistic, " with ", c.degrees, " degrees, p = ", c.p_value, "; missing mass ", c.missing / 1e6, ", stray ", c.stray);
     CHECK(c.p_value > 1e-3);
     CHECK(std::abs(c.missing) < 2e-3 * 1e6);
     CHECK(c.stray < 100);
     // Under the renders' Sobol points the density holds too (the light choice and the
-    // point on it share one pair). The counts scatter far less than a multinomial's, so
+    // point on it share one pair), and under Halton's (bases 2 and 3), which photons may
+    // draw their lights' points from. The counts scatter far less than a multinomial's, so
     // the statistic falls far below its degrees of freedom; a density wrong by 5 % over
     // half the sphere would still add about 1200 to it.
-    const test::Chi2 sobol = test::chi2_directions(
-        [&](double u, double v) { return lights.sample(p, {u, v}).wi; },
-        [&](const Vec3<double>& w) {
-            const auto hit = scene.closest_hit({p, w}, {0.0, infinity<double>});
-            return hit ? lights.pdf(*hit, p) : 0.0;
-        },
-        {0, 1, 0}, 1000000, 60, 80, 10, -1, 7, SamplerKind::sobol);
-    MESSAGE("under Sobol points: chi2 ", sobol.statistic, " with ", sobol.degrees, " degrees, p = ", sobol.p_value);
-    CHECK(sobol.p_value > 1e-3);
-    CHECK(sobol.stray < 10);
-    // And under Halton's (bases 2 and 3), which photons may draw their lights' points from.
-    const test::Chi2 halton = test::chi2_directions(
-        [&](double u, double v) { return lights.sample(p, {u, v}).wi; },
-        [&](const Vec3<double>& w) {
-            const auto hit = scene.closest_hit({p, w}, {0.0, infinity<double>});
-            return hit ? lights.pdf(*hit, p) : 0.0;
-        },
-        {0, 1, 0}, 1000000, 60, 80, 10, -1, 7, SamplerKind::halton);
-    MESSAGE("under Halton points: chi2 ", halton.statistic, " with ", halton.degrees, " degrees, p = ", halton.p_value);
-    CHECK(halton.p_value > 1e-3);
-    CHECK(halton.stray < 10);
+    for (const SamplerKind points : {SamplerKind::sobol, SamplerKind::halton}) {
+        const test::Chi2 low = test::chi2_directions(sample, pdf, {0, 1, 0}, 1000000, 60, 80, 10, -1, 7, points);
+        MESSAGE("under ", std::string(sampler_name(points)), " points: chi2 ", low.statistic, " with ", low.degrees, " degrees, p = ", low.p_value);
+        CHECK(low.p_value > 1e-3);
+        CHECK(low.stray < 10);
+    }
     // Each sample's density is what pdf() gives the point a ray toward it meets, to rounding.
     Random rng(9, 9);
     for (int i = 0; i < 20000; ++i) {

@@ -58,6 +58,9 @@ enum class SamplerKind : std::uint8_t {
     halton,      ///< Halton's points, one prime base a dimension, Owen-scrambled digit by digit: photon emission as in progressive photon mapping
 };
 
+/// Every kind, the default first.
+inline constexpr std::array<SamplerKind, 4> sampler_kinds = {SamplerKind::zsobol, SamplerKind::sobol, SamplerKind::halton, SamplerKind::independent};
+
 /// The kind's name, as the examples' --sampler takes it.
 [[nodiscard]] constexpr const char* sampler_name(SamplerKind kind) noexcept
 {

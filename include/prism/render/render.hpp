@@ -130,9 +130,9 @@ template <Scalar T>
 {
     Random rng(sampler, Pcg32(sample_seed(config.seed, s), pixel));
     // At the pixel's centre the footprint's pair is not drawn: nothing after it moves.
-    const bool centre = config.spp == 1 && config.single_sample_at_centre;
-    const std::array<float, 2> footprint = centre ? std::array<float, 2>{0.5f, 0.5f} : rng.uniform2<float>();
-    if (centre) rng.skip_pair();
+    std::array<float, 2> footprint{0.5f, 0.5f};
+    if (config.spp == 1 && config.single_sample_at_centre) rng.skip_pair();
+    else footprint = rng.uniform2<float>();
     const std::array<T, 2> lens = thin_lens ? rng.uniform2<T>() : std::array<T, 2>{T(0.5), T(0.5)};
     rng.bounce(0);
     return {{T(footprint[0]), T(footprint[1])}, lens, rng};
