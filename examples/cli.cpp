@@ -49,7 +49,9 @@ void print_photon_help(const Options& defaults)
                 "                       cache (final gathering behind an irradiance cache), progressive (progressive photon\n"
                 "                       mapping: --photons and --caustic-photons per pass, --radius and --global-radius the first\n"
                 "                       pass's radii), reference (unbiased: path tracing plus light tracing, --spp samples per\n"
-                "                       pixel and as many light paths) (default %s)\n"
+                "                       pixel and as many light paths), bdpt (bidirectional path tracing) or vcm (vertex\n"
+                "                       connection and merging): --spp passes of a camera path per pixel and as many light\n"
+                "                       paths (default %s)\n"
                 "  --passes N           progressive photon mapping's passes, or A:B for passes [A, B) of them (default %zu)\n",
                 defaults.photons, defaults.caustic_photons, defaults.gather, defaults.method.c_str(), defaults.passes);
 }
@@ -306,8 +308,8 @@ bool parse(int argc, char** argv, Options& options, const char* description, Acc
         }
         else if (flag == "--method") {
             const std::string_view m = value;
-            if (m != "direct" && m != "gather" && m != "cache" && m != "progressive" && m != "reference")
-                throw std::invalid_argument("--method expects direct, gather, cache, progressive or reference, got '" + std::string(m) + "'");
+            if (m != "direct" && m != "gather" && m != "cache" && m != "progressive" && m != "reference" && m != "bdpt" && m != "vcm")
+                throw std::invalid_argument("--method expects direct, gather, cache, progressive, reference, bdpt or vcm, got '" + std::string(m) + "'");
             options.method = m;
         }
         else if (flag == "--crop") options.crop = value;

@@ -63,6 +63,8 @@ inline prism::RenderConfig pass_render_config(const Options& options)
 ///   cache        final gathering behind an irradiance cache built for this camera
 ///   progressive  options.passes passes of progressive photon mapping (photons per pass)
 ///   reference    path tracing (options.render.spp) plus light tracing (as many paths)
+///   bdpt, vcm    bidirectional path tracing, or vertex connection and merging: options.render.spp
+///                passes of one camera path per pixel and as many light paths
 /// With options.povray_light (POV-Ray's model) the reference takes no diffuse bounce.
 template <class SceneT>
 Rendered render_by_method(const std::string& name, const SceneT& scene, const prism::Camera<typename SceneT::scalar_type>& camera, const Options& options)
@@ -76,6 +78,13 @@ Rendered render_by_method(const std::string& name, const SceneT& scene, const pr
         const prism::Reference reference(scene, {.max_diffuse_bounces = options.povray_light ? 0 : 256});
         prism::Accumulation sums = render_with(name, camera, reference, pass_render_config(options), options);
         std::printf("%s: reference, %llu spp of path tracing and as many light paths, %.3f s\n", name.c_str(),
+                    static_cast<unsigned long long>(samples_taken(sums)), seconds());
+        return {name, std::move(sums), seconds()};
+    }
+    if (method == "bdpt" || method == "vcm") {
+        const prism::Bidirectional estimator(scene, {.method = method == "vcm" ? prism::BidirectionalMethod::vcm : prism::BidirectionalMethod::bdpt});
+        prism::Accumulation sums = render_with(name, camera, estimator, pass_render_config(options), options);
+        std::printf("%s: %s, %llu passes, %.3f s\n", name.c_str(), method == "vcm" ? "vertex connection and merging" : "bidirectional path tracing",
                     static_cast<unsigned long long>(samples_taken(sums)), seconds());
         return {name, std::move(sums), seconds()};
     }

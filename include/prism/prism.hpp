@@ -43,6 +43,7 @@
 #include <prism/geometry/triangle.hpp>
 #include <prism/geometry/triangle_mesh.hpp>
 #include <prism/integrator/irradiance_cache.hpp>
+#include <prism/integrator/bidirectional.hpp>
 #include <prism/integrator/light_tracer.hpp>
 #include <prism/integrator/path_tracer.hpp>
 #include <prism/integrator/photon_mapper.hpp>

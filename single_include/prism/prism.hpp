@@ -6935,586 +6935,6 @@ private:
 
 } // namespace prism
 
-// ---- prism/optics/refract.hpp ----
-// Mirror reflection and Snell refraction of directions.
-//
-// Conventions: d is the incident direction (travelling toward the surface), n is the
-// unit normal on the side d comes from (dot(d, n) < 0), so cos(theta_i) = -dot(d, n)
-// (as in Pharr, Jakob and Humphreys 2023, "Physically Based Rendering", 4th edition,
-// section 4.5), and eta = n_t / n_i, the index of the far side over the near side.
-
-
-#include <optional>
-
-namespace prism {
-
-/// Mirror reflection of d about n: d - 2 (d . n) n.
-template <Scalar T>
-[[nodiscard]] constexpr Vec3<T> reflect(const Vec3<T>& d, const Vec3<T>& n) noexcept
-{
-    return d - (T(2) * dot(d, n)) * n;
-}
-
-/// A refracted direction and the cosine of its angle with the normal (on the far side).
-template <Scalar T>
-struct Refraction {
-    Vec3<T> direction; ///< unit refracted direction
-    T cos_t; ///< cosine between it and the normal, on the far side
-};
-
-/// Snell refraction of the unit direction d through a surface with unit normal n
-/// facing d, into a medium of relative index eta = n_t / n_i, with cos_t for the Fresnel
-/// equations (computed once, here). Returns nothing under total internal reflection.
-/// The direction is unit length:
-///   t = d / eta + (cos_i / eta - cos_t) n,  cos_t = sqrt(1 - (1 - cos_i^2) / eta^2).
-template <Scalar T>
-[[nodiscard]] constexpr std::optional<Refraction<T>> refraction(const Vec3<T>& d, const Vec3<T>& n, T eta) noexcept
-{
-    const T cos_i = -dot(d, n);
-    const T sin2_i = T(1) - cos_i * cos_i > T(0) ? T(1) - cos_i * cos_i : T(0);
-    const T sin2_t = sin2_i / (eta * eta);
-    // Handle total internal reflection
-    if (sin2_t >= T(1)) return std::nullopt;
-    const T cos_t = prism::sqrt(T(1) - sin2_t);
-    return Refraction<T>{d / eta + (cos_i / eta - cos_t) * n, cos_t};
-}
-
-/// The refracted direction alone (see refraction).
-template <Scalar T>
-[[nodiscard]] constexpr std::optional<Vec3<T>> refract(const Vec3<T>& d, const Vec3<T>& n, T eta) noexcept
-{
-    if (const auto r = refraction(d, n, eta)) return r->direction;
-    return std::nullopt;
-}
-
-} // namespace prism
-
-// ---- prism/medium/graded_index.hpp ----
-// Graded-index media: air whose index of refraction varies in space (mirages, a setting
-// sun flattened by the atmosphere), and the two ways of tracing a ray through it.
-//
-// A ray in a medium of index n(x) follows the ray equation d/ds (n dx/ds) = grad n.
-// With the optical direction T = n dx/ds (a vector of length n) and the parameter t,
-// dt = ds / n, it becomes d^2 x / dt^2 = n grad n = grad(n^2) / 2, which Sharma, Kumar
-// and Ghatak (1982, "Tracing rays through graded-index media: a new method", Applied
-// Optics 21(6)) integrate with a Runge-Kutta-Nystrom step: `sharma_step`. Its error is
-// controlled by step doubling in `AdaptiveStepper`. The classic textbook method,
-// "divide the air into layers and keep bending the light", is `LayeredMedium`: straight
-// segments through flat layers of constant index, refracted by Snell at each boundary.
-//
-// Index fields are policies (IndexField): a stratified linear n(y), n^2 linear in y
-// (whose rays are exact parabolas), an exponential atmosphere, a heated layer over a
-// road, and any callable. Stratified fields vary along y (up).
-
-
-#include <algorithm>
-#include <cmath>
-#include <concepts>
-#include <limits>
-
-namespace prism {
-
-/// An index of refraction that varies in space: `index(p)` and its gradient
-/// `gradient(p)`, both finite and the index > 0 wherever a ray goes.
-template <class F>
-concept IndexField = requires(const F& field, const Vec3<typename F::scalar_type>& p) {
-    requires Scalar<typename F::scalar_type>;
-    { field.index(p) } -> std::same_as<typename F::scalar_type>;
-    { field.gradient(p) } -> std::same_as<Vec3<typename F::scalar_type>>;
-    field.validate();
-};
-
-// Index Field Policies
-
-/// n(y) = n0 + slope y.
-template <Scalar T = double>
-struct LinearIndex {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    T n0 = T(1); ///< index at y = 0
-    T slope = T(0); ///< dn/dy
-
-    /// The index at p: n0 + slope y.
-    [[nodiscard]] constexpr T index(const Vec3<T>& p) const noexcept { return n0 + slope * p.y; }
-    /// The index's gradient, (0, slope, 0) everywhere.
-    [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>&) const noexcept { return {T(0), slope, T(0)}; }
-    /// Throws std::invalid_argument, naming the parameter, for n0 <= 0 or a slope that is not finite.
-    constexpr void validate() const
-    {
-        detail::require_positive("LinearIndex n0", n0);
-        detail::require_finite("LinearIndex slope", slope);
-    }
-};
-
-/// n(y)^2 = a + b y (where a + b y > 0): the field whose rays are exact parabolas,
-/// y(x) = y0 + tan(theta0) x + b x^2 / (4 K^2) with K = n(y0) cos(theta0).
-template <Scalar T = double>
-struct LinearSquareIndex {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    T a = T(1); ///< n^2 at y = 0
-    T b = T(0); ///< d(n^2)/dy
-
-    /// The index at p: sqrt(a + b y).
-    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return std::sqrt(a + b * p.y); }
-    /// The index's gradient: (0, b / 2n, 0).
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept { return {T(0), b / (T(2) * index(p)), T(0)}; }
-    /// Throws std::invalid_argument, naming the parameter, for a <= 0 or a b that is not finite.
-    constexpr void validate() const
-    {
-        detail::require_positive("LinearSquareIndex a", a);
-        detail::require_finite("LinearSquareIndex b", b);
-    }
-};
-
-/// The standard exponential atmosphere: n(h) = 1 + (n0 - 1) e^(-h / H), h = y - ground.
-/// Defaults: sea-level air at 15 C (n0 - 1 = 2.93e-4, visible light) and H = 8.5 km, in
-/// metres.
-template <Scalar T = double>
-struct ExponentialAtmosphere {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    T n0 = T(1.000293); ///< index at the ground
-    T scale_height = T(8500); ///< height over which n - 1 falls by e (metres)
-    T ground = T(0); ///< height of the ground
-
-    /// The index at p: 1 + (n0 - 1) exp(-(y - ground) / scale_height).
-    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return T(1) + (n0 - T(1)) * std::exp(-(p.y - ground) / scale_height); }
-    /// The index's gradient, along y.
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
-    {
-        return {T(0), -(n0 - T(1)) / scale_height * std::exp(-(p.y - ground) / scale_height), T(0)};
-    }
-    /// Throws std::invalid_argument, naming the parameter, for n0 or scale_height <= 0 or a ground that is not finite.
-    constexpr void validate() const
-    {
-        detail::require_positive("ExponentialAtmosphere n0", n0);
-        detail::require_positive("ExponentialAtmosphere scale_height", scale_height);
-        detail::require_finite("ExponentialAtmosphere ground", ground);
-    }
-};
-
-/// Hot air over a road: n(y) = n_air - drop e^(-(y - ground) / thickness). The air at the
-/// road is hotter, so its index is lower by `drop` (about 1e-6 per kelvin: 3e-5 for a
-/// road 30 K above the air), and rays grazing it bend back up (an inferior mirage).
-template <Scalar T = double>
-struct HeatedLayer {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    T n_air = T(1.000293); ///< index of the air far above the ground
-    T drop = T(3e-5); ///< how much lower the index is at the ground
-    T thickness = T(0.3); ///< metres over which the excess heat falls by e
-    T ground = T(0); ///< height of the ground
-
-    /// The index at p: n_air - drop exp(-(y - ground) / thickness).
-    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return n_air - drop * std::exp(-(p.y - ground) / thickness); }
-    /// The index's gradient, along y.
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
-    {
-        return {T(0), drop / thickness * std::exp(-(p.y - ground) / thickness), T(0)};
-    }
-    /// Throws std::invalid_argument, naming the parameter, for n_air or thickness <= 0, or a drop that is not finite or not below n_air.
-    constexpr void validate() const
-    {
-        detail::require_positive("HeatedLayer n_air", n_air);
-        detail::require_finite("HeatedLayer drop", drop);
-        if (!(drop < n_air)) detail::throw_invalid("HeatedLayer drop must be below n_air (", n_air, "), got ", drop);
-        detail::require_positive("HeatedLayer thickness", thickness);
-        detail::require_finite("HeatedLayer ground", ground);
-    }
-};
-
-/// Any index n(p) given as a callable; its gradient by central differences of step h.
-template <Scalar T, class F>
-    requires std::regular_invocable<const F&, const Vec3<T>&>
-struct IndexFunction {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    F function; ///< n(p), any callable
-    T h = T(1e-4); ///< step of the central differences that give the gradient
-
-    /// The index at p: function(p).
-    [[nodiscard]] T index(const Vec3<T>& p) const { return function(p); }
-    /// The index's gradient by central differences of step h.
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const
-    {
-        const T inv = T(1) / (T(2) * h);
-        return {(function(p + Vec3<T>(h, 0, 0)) - function(p - Vec3<T>(h, 0, 0))) * inv,
-                (function(p + Vec3<T>(0, h, 0)) - function(p - Vec3<T>(0, h, 0))) * inv,
-                (function(p + Vec3<T>(0, 0, h)) - function(p - Vec3<T>(0, 0, h))) * inv};
-    }
-    /// Throws std::invalid_argument for h <= 0.
-    constexpr void validate() const { detail::require_positive("IndexFunction h", h); }
-};
-
-static_assert(IndexField<LinearIndex<double>> && IndexField<LinearSquareIndex<float>> && IndexField<ExponentialAtmosphere<double>> &&
-              IndexField<HeatedLayer<double>>);
-
-// Curved Rays
-
-/// A ray inside a graded medium: where it is, and its optical direction n dx/ds (a
-/// vector of length n(position): the unit direction times the local index).
-template <Scalar T>
-struct CurvedRay {
-    Vec3<T> position; ///< where the ray is
-    Vec3<T> optical; ///< the optical direction, n times the unit tangent
-
-    /// The unit tangent of the ray.
-    [[nodiscard]] Vec3<T> direction() const noexcept { return normalize(optical); }
-};
-
-/// The curved ray leaving `ray.origin` along `ray.direction` (any length) in the field.
-template <IndexField F>
-[[nodiscard]] CurvedRay<typename F::scalar_type> curved_ray(const F& field, const Ray<typename F::scalar_type>& ray) noexcept
-{
-    return {ray.origin, field.index(ray.origin) * normalize(ray.direction)};
-}
-
-/// grad(n^2) / 2 = n grad n: the ray's acceleration in the parameter t (dt = ds / n).
-template <IndexField F>
-[[nodiscard]] Vec3<typename F::scalar_type> bending(const F& field, const Vec3<typename F::scalar_type>& p) noexcept
-{
-    return field.index(p) * field.gradient(p);
-}
-
-/// One Runge-Kutta-Nystrom step of dt in t (Sharma et al. 1982, eq. 12), fourth order:
-///   A = dt D(x), B = dt D(x + dt/2 T + dt/8 A), C = dt D(x + dt T + dt/2 B),
-///   x' = x + dt (T + (A + 2B) / 6),  T' = T + (A + 4B + C) / 6,
-/// exact when D is constant (n^2 linear in space). The arc length covered is about n dt.
-template <IndexField F>
-[[nodiscard]] CurvedRay<typename F::scalar_type> sharma_step(const F& field, const CurvedRay<typename F::scalar_type>& ray,
-                                                             typename F::scalar_type dt) noexcept
-{
-    using T = typename F::scalar_type;
-    const Vec3<T>& x = ray.position;
-    const Vec3<T>& t = ray.optical;
-    const Vec3<T> a = dt * bending(field, x);
-    const Vec3<T> b = dt * bending(field, x + (dt / T(2)) * t + (dt / T(8)) * a);
-    const Vec3<T> c = dt * bending(field, x + dt * t + (dt / T(2)) * b);
-    return {x + dt * (t + (a + T(2) * b) / T(6)), t + (a + T(4) * b + c) / T(6)};
-}
-
-/// Sharma steps whose length adapts to keep each step's position error under
-/// `tolerance` (absolute, in scene units), estimated by step doubling: a step of dt
-/// against two of dt / 2, whose difference is 15/16 of the larger one's error for a
-/// fourth-order method; the two half steps are kept (Richardson-extrapolated).
-template <IndexField F>
-class AdaptiveStepper {
-public:
-    /// The field's precision.
-    using T = typename F::scalar_type;
-
-    /// How the stepper controls its error: the tolerance per step and the step sizes it may take.
-    struct Config {
-        T tolerance = T(1e-6);  ///< position error allowed per step
-        T first_step = T(0.1);  ///< the first step's arc length
-        T max_step = T(10);     ///< no step longer than this arc length
-    };
-
-    /// A stepper through `field` (which must outlive it).
-    explicit AdaptiveStepper(const F& field, Config config = {}) : field_(&field), config_(config)
-    {
-        field.validate();
-        detail::require_positive("AdaptiveStepper tolerance", config.tolerance);
-        detail::require_positive("AdaptiveStepper first_step", config.first_step);
-        detail::require_positive("AdaptiveStepper max_step", config.max_step);
-    }
-
-    /// Advance `ray` by one accepted step; `dt` carries the step size from one call to
-    /// the next (start with 0: the first step is then config.first_step long). Returns
-    /// the arc length covered (about n dt); `accepted`, if given, receives the step's dt.
-    T step(CurvedRay<T>& ray, T& dt, T* accepted = nullptr) const noexcept
-    {
-        const T n = length(ray.optical);
-        if (!(dt > T(0))) dt = config_.first_step / n;
-        dt = std::min(dt, config_.max_step / n);
-        for (;;) {
-            const CurvedRay<T> whole = sharma_step(*field_, ray, dt);
-            const CurvedRay<T> half = sharma_step(*field_, sharma_step(*field_, ray, dt / T(2)), dt / T(2));
-            const T error = length(half.position - whole.position) * (T(16) / T(15));
-            const T scale = error > T(0) ? T(0.9) * std::pow(config_.tolerance / error, T(0.2)) : T(4);
-            if (error <= config_.tolerance || dt * n <= std::numeric_limits<T>::epsilon() * (T(1) + max_component(abs(ray.position)))) {
-                const T covered = length(half.position - ray.position);
-                if (accepted != nullptr) *accepted = dt;
-                ray = {half.position + (half.position - whole.position) / T(15), half.optical + (half.optical - whole.optical) / T(15)};
-                dt *= std::clamp(scale, T(0.2), T(4));
-                return covered;
-            }
-            dt *= std::clamp(scale, T(0.1), T(0.9));
-        }
-    }
-
-private:
-    const F* field_;
-    Config config_;
-};
-
-// Flat Layers of Constant Index
-
-/// The air between y = bottom and y = top cut into `layers` flat layers, each of the
-/// field's index at its middle height; a ray goes straight within a layer and refracts
-/// by Snell's law (or reflects totally) at each boundary.
-template <IndexField F>
-class LayeredMedium {
-public:
-    /// The field's precision.
-    using T = typename F::scalar_type;
-
-    /// `layers` flat layers of `field` between heights `bottom` and `top` (which must outlive it); throws for bottom >= top or layers < 1.
-    LayeredMedium(const F& field, T bottom, T top, int layers) : field_(&field), bottom_(bottom), top_(top), layers_(layers)
-    {
-        field.validate();
-        detail::require_finite("LayeredMedium bottom", bottom);
-        detail::require_finite("LayeredMedium top", top);
-        if (!(top > bottom)) detail::throw_invalid("LayeredMedium top must be above bottom (", bottom, "), got ", top);
-        if (layers < 1) detail::throw_invalid("LayeredMedium layers must be >= 1, got ", layers);
-        height_ = (top - bottom) / T(layers);
-    }
-
-    /// The number of layers.
-    [[nodiscard]] int layers() const noexcept { return layers_; }
-
-    /// The layer holding height y (clamped into [0, layers); in floating point first, so a
-    /// far-off or NaN height never overflows the conversion to int).
-    [[nodiscard]] int layer_of(T y) const noexcept
-    {
-        const T layer = std::floor((y - bottom_) / height_);
-        if (!(layer > T(0))) return 0;
-        return layer < T(layers_ - 1) ? static_cast<int>(layer) : layers_ - 1;
-    }
-
-    /// The index of layer i: the field at its middle height (x = z = 0: stratified fields).
-    [[nodiscard]] T index_of(int layer) const noexcept { return field_->index({T(0), bottom_ + (T(layer) + T(0.5)) * height_, T(0)}); }
-
-    /// From `origin` in layer `layer` along the unit `direction`, straight to the layer's
-    /// next boundary and across it (or back, under total internal reflection). Returns
-    /// false when the ray leaves the layers (through the top or the bottom) or runs
-    /// horizontally; then `origin` is where it left.
-    bool step(Vec3<T>& origin, Vec3<T>& direction, int& layer) const noexcept
-    {
-        if (direction.y == T(0)) return false;
-        const bool up = direction.y > T(0);
-        const T boundary = bottom_ + T(layer + (up ? 1 : 0)) * height_;
-        origin = origin + ((boundary - origin.y) / direction.y) * direction;
-        origin.y = boundary;
-        const int next = layer + (up ? 1 : -1);
-        if (next < 0 || next >= layers_) return false;
-        const Vec3<T> facing{T(0), up ? T(-1) : T(1), T(0)};
-        if (const auto r = refraction(direction, facing, index_of(next) / index_of(layer))) {
-            direction = normalize(r->direction);
-            layer = next;
-        } else {
-            direction = reflect(direction, facing);
-        }
-        return true;
-    }
-
-private:
-    const F* field_;
-    T bottom_, top_, height_ = T(1);
-    int layers_;
-};
-
-} // namespace prism
-
-// ---- prism/medium/medium.hpp ----
-// The Medium concept: how light fares while it travels through the inside of an object
-// or through the scene's air.
-//
-// A transmissive material names the medium that fills it (Dielectric's `interior`), and
-// the integrators ask that medium, through `attenuate_inside` (material/scattering.hpp)
-// and transport/media.hpp, what a path of a given length inside it lets through. A medium
-// that also scatters (ScatteringMedium: Fog) tells a walker where it next scatters and by
-// which phase function; the walk (transport/random_walk.hpp) asks it.
-
-
-#include <concepts>
-
-namespace prism {
-
-/// A medium in which light travels in straight lines and is attenuated along the way:
-/// either the same everywhere, `transmittance(distance)` the fraction of light per
-/// channel left after that distance, or varying from point to point,
-/// `transmittance(ray, t_max)` an unbiased estimate of it along ray (unit direction) from
-/// its origin to t_max. transmittance_along asks either.
-template <class X>
-concept Medium = requires(const X& medium, const Ray<typename X::scalar_type>& ray, typename X::scalar_type distance) {
-    requires Scalar<typename X::scalar_type>;
-    requires requires { { medium.transmittance(distance) } -> std::same_as<Rgb<typename X::scalar_type>>; } ||
-                 requires { { medium.transmittance(ray, distance) } -> std::same_as<Rgb<typename X::scalar_type>>; };
-    medium.validate();
-};
-
-/// Whether medium type X is the same everywhere (its transmittance a function of distance alone).
-template <class X>
-inline constexpr bool uniform_medium = requires(const X& medium, typename X::scalar_type distance) { medium.transmittance(distance); };
-
-/// What `medium` lets through along [t0, t1] of `ray` (any direction length; t1 may be
-/// infinite, t0 not): exp(-sigma_t length) in a uniform medium, the medium's own estimate
-/// along the stretch in one that varies.
-template <Medium M, Scalar T>
-[[nodiscard]] Rgb<T> transmittance_along(const M& medium, const Ray<T>& ray, T t0, T t1) noexcept
-{
-    const T speed = length(ray.direction);
-    if constexpr (uniform_medium<M>)
-        return medium.transmittance((t1 - t0) * speed);
-    else
-        return medium.transmittance(Ray<T>{ray.at(t0), ray.direction / speed}, (t1 - t0) * speed);
-}
-
-/// Where a walker crossing a scattering medium next scatters, or that it reached the end
-/// of its segment, and the weight its power takes (the medium's transmittance to there,
-/// times its scattering coefficient where it scatters, over the density of the draw).
-template <Scalar T>
-struct FreeFlight {
-    T distance;     ///< along the segment: where it scatters, or the segment's end
-    Rgb<T> weight;  ///< multiplies the walker's power
-    bool scattered; ///< whether it scattered before the segment's end
-};
-
-/// A medium that also scatters light: `sample_flight(ray, t_max, power, rng)`, where a
-/// walker along ray (unit direction) carrying power next scatters before t_max;
-/// `scattering_at(point)`, its scattering coefficient sigma_s there; and `phase`, the
-/// phase function it scatters by.
-template <class X>
-concept ScatteringMedium = Medium<X> && requires(const X& medium, const Ray<typename X::scalar_type>& ray, typename X::scalar_type t,
-                                                 const Rgb<typename X::scalar_type>& power, Random& rng) {
-    requires X::scatters;
-    { medium.sample_flight(ray, t, power, rng) } -> std::same_as<FreeFlight<typename X::scalar_type>>;
-    { medium.scattering_at(ray.origin) } -> std::same_as<Rgb<typename X::scalar_type>>;
-    medium.phase;
-};
-
-/// Whether medium type X scatters light (a ScatteringMedium) rather than only absorbing it.
-template <class X>
-inline constexpr bool scatters_light = ScatteringMedium<X>;
-
-} // namespace prism
-
-// ---- prism/medium/air.hpp ----
-// The scene's air: uniform (rays go straight, the default), of a varying index
-// (graded-index air: mirages, a flattened setting sun), through which rays curve, or
-// filled with a medium that scatters (FilledAir: fog, haze, murky water around everything,
-// in straight or graded air).
-//
-// GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
-// field must be uniform, and rays go straight there. LayeredAir is flat layers of
-// constant index, refracting at each boundary. How a ray travels through either to the first surface it meets is
-// transport/travel.hpp's.
-
-
-namespace prism {
-
-/// Uniform air of index 1: rays are straight.
-struct StraightAir {
-    /// Rays through it are straight.
-    static constexpr bool curved = false;
-    /// Nothing to check.
-    constexpr void validate() const {}
-};
-
-/// Air filled, within `region` (everywhere by default), with a medium that absorbs and
-/// scatters: the fog a scene stands in, the water around an underwater scene. Outside the
-/// region the air is clear. (An object's inside takes its own medium, its material's
-/// interior.) `Base` is the air the medium fills: straight (the default), or GradedAir or
-/// LayeredAir, through which rays curve (a mirage seen through haze): a walker in it
-/// scatters along the curved path, by the medium's coefficients per unit of the path's
-/// length.
-template <ScatteringMedium M, class Base = StraightAir>
-struct FilledAir {
-    /// The medium's precision.
-    using scalar_type = typename M::scalar_type;
-    /// Rays through it curve where they curve through its base.
-    static constexpr bool curved = Base::curved;
-    /// Light scatters in it.
-    static constexpr bool scatters = true;
-    static_assert(!requires { requires Base::scatters; }, "FilledAir's base is the air it fills: StraightAir, GradedAir or LayeredAir");
-
-    M medium{}; ///< what fills the region
-    Aabb<scalar_type> region = Aabb<scalar_type>::universe(); ///< where the medium is (a box; everywhere by default)
-    Base base{}; ///< the air it fills: straight, or of a varying index
-
-    /// Where the air is not clear: the region, within the medium's own box where it has
-    /// one (a medium of varying density).
-    [[nodiscard]] Aabb<scalar_type> bounds() const noexcept
-    {
-        if constexpr (requires { medium.bounds(); }) {
-            const Aabb<scalar_type> box = medium.bounds();
-            return {component_max(region.lo, box.lo), component_min(region.hi, box.hi)};
-        } else {
-            return region;
-        }
-    }
-
-    /// Throws std::invalid_argument, naming the parameter, for a bad medium or base, or an empty region.
-    void validate() const
-    {
-        medium.validate();
-        if (region.empty()) detail::throw_invalid("FilledAir region must not be empty");
-        base.validate();
-    }
-};
-
-/// Whether the scene's air `Air` scatters light (FilledAir).
-template <class Air>
-inline constexpr bool air_scatters = requires { requires Air::scatters; };
-
-/// Air whose index is `field` inside `region` (uniform outside it); rays through it curve.
-template <IndexField F>
-struct GradedAir {
-    /// The field's precision.
-    using scalar_type = typename F::scalar_type;
-    /// Shorthand for scalar_type.
-    using T = scalar_type;
-    /// Rays through it curve.
-    static constexpr bool curved = true;
-
-    F field{}; ///< the refractive index inside the region
-    Aabb<T> region{};                                   ///< where the index varies
-    typename AdaptiveStepper<F>::Config stepping{};     ///< the stepper's tolerance and step lengths
-    /// A chord that meets a surface is halved (Sharma steps of half the dt) until it is
-    /// at most this long, so the landing point lies on the curve, not on a chord that
-    /// cuts under it (a chord of length L sags by about L^2 / (8 R) from a path of radius R).
-    T landing_chord = T(1e-3);
-    int max_steps = 1000000;                            ///< a ray still in the air after this many steps is lost (background)
-
-    /// Throws std::invalid_argument, naming the parameter, for a bad field, an unbounded or empty region, max_steps < 1, landing_chord <= 0 or bad stepping.
-    void validate() const
-    {
-        field.validate();
-        if (!region.bounded()) detail::throw_invalid("GradedAir region must be a bounded, non-empty box");
-        if (max_steps < 1) detail::throw_invalid("GradedAir max_steps must be >= 1, got ", max_steps);
-        detail::require_positive("GradedAir landing_chord", landing_chord);
-        (void)AdaptiveStepper<F>(field, stepping); // checks the stepping
-    }
-};
-
-/// Layered air: `layers` flat layers between heights `bottom` and `top`, each
-/// of the field's index at its middle height (stratified fields only); a ray goes
-/// straight within a layer and refracts by Snell's law (or reflects totally) at each
-/// boundary; above and below the layers it goes straight. The second policy beside
-/// GradedAir, for comparison: it keeps n cos(theta) exactly but converges only at first
-/// order in the layer height (bench/graded_index.cpp).
-template <IndexField F>
-struct LayeredAir {
-    /// The field's precision.
-    using scalar_type = typename F::scalar_type;
-    /// Shorthand for scalar_type.
-    using T = scalar_type;
-    /// Rays through it bend at the layers' boundaries.
-    static constexpr bool curved = true;
-
-    F field{}; ///< the index field the layers sample at their middle heights
-    T bottom = T(0); ///< height of the lowest layer's bottom
-    T top = T(1); ///< height of the highest layer's top
-    int layers = 100; ///< the number of layers
-
-    /// Throws std::invalid_argument, naming the parameter, for a bad field, top <= bottom or layers < 1.
-    void validate() const { (void)LayeredMedium<F>(field, bottom, top, layers); }
-};
-
-} // namespace prism
-
 // ---- prism/light/light.hpp ----
 // What a light tells a shading point and the photon tracer, and the Light concept.
 
@@ -7562,6 +6982,31 @@ struct EmittedPhoton {
     Ray<T> ray; ///< where the photon starts and where it goes
     Rgb<T> weight{T(1)}; ///< the weight on the power the tracer gives it
     bool without_falloff = false; ///< whether the light does not fall off with distance
+};
+
+/// A ray a light emits, drawn for the bidirectional estimators (integrator/bidirectional.hpp)
+/// with the densities it was drawn with: what it carries over pdf_area pdf_direction is
+/// one path's estimate of the light's power (times `cos` for a surface).
+template <Scalar T>
+struct EmissionSample {
+    Ray<T> ray{};          ///< from the light (off an emitting surface), unit direction
+    Rgb<T> radiance{T(0)}; ///< emitted along it: L for a light with extent, I for a point or spot light, E for a parallel one
+    T pdf_area = T(0);     ///< the origin's density per unit area (1 for a point: a delta; 1 / (pi R^2) on the disk a light at infinity enters by)
+    T pdf_direction = T(0); ///< the direction's density per steradian (1 for a parallel light: a delta)
+    T cos = T(1);          ///< at an emitting surface, the cosine between its normal and the ray (1 for the others)
+    bool from_infinity = false; ///< a light infinitely far away (parallel, environment): its origin is a disk's, in no measure the other strategies share
+};
+
+/// The densities with which a light's emission() draws a given ray (Emission's pdf_area
+/// and pdf_direction): the other strategy a bidirectional estimator weighs a light
+/// sample or a light a path met against.
+template <Scalar T>
+struct EmissionPdf {
+    T area = T(0);      ///< per unit area of the origin
+    T direction = T(0); ///< per steradian
+
+    /// Their product: the density per unit area and steradian.
+    [[nodiscard]] constexpr T both() const noexcept { return area * direction; }
 };
 
 /// The cone of directions from a point that holds a sphere: its unit axis and the cosine
@@ -7634,6 +7079,90 @@ inline constexpr bool has_own_shadow = requires(const L& light, const Rgb<typena
     { light.shadow([](const Vec3<typename L::scalar_type>&) { return Rgb<typename L::scalar_type>(); }, colour, rng) }
         -> std::same_as<Rgb<typename L::scalar_type>>;
 };
+
+} // namespace prism
+
+// ---- prism/light/point_light.hpp ----
+// PointLight: an isotropic point source.
+
+
+namespace prism {
+
+enum class Falloff {
+    inverse_square, ///< physical: E = I / r^2
+    none,           ///< E = I at any distance; only to mirror POV-Ray's `fade_power 0`
+};
+
+/// A point light of radiant intensity I (W/sr, per channel); its power is 4 pi I.
+template <Scalar T = float>
+struct PointLight {
+    /// The precision of the light.
+    using scalar_type = T;
+    /// A delta light: from one point (one direction), seen by shadow rays only.
+    static constexpr bool delta = true;
+
+    Vec3<T> position{}; ///< where the light is
+    Rgb<T> intensity{T(1)}; ///< radiant intensity per channel (W/sr)
+    Falloff falloff = Falloff::inverse_square; ///< inverse-square (physical) or none (POV-Ray's `fade_power 0`)
+
+    /// Radiant power Phi = 4 pi I.
+    [[nodiscard]] constexpr Rgb<T> power() const noexcept { return T(4) * pi<T> * intensity; }
+
+    /// The light arriving at p: its direction, distance and irradiance I / r^2 (I without falloff).
+    [[nodiscard]] LightSample<T> sample(const Vec3<T>& p) const noexcept
+    {
+        const Vec3<T> to_light = position - p;
+        const T r2 = length_squared(to_light);
+        const T r = prism::sqrt(r2);
+        const Rgb<T> e = falloff == Falloff::inverse_square ? intensity / r2 : intensity;
+        return {to_light / r, r, e};
+    }
+    /// The same: a delta light needs no random numbers.
+    [[nodiscard]] LightSample<T> sample(const Vec3<T>& p, const Vec2<T>&) const noexcept { return sample(p); }
+
+    /// Everywhere: the whole power. Toward a target sphere: the power into the cone that
+    /// holds it (Phi times the cone's solid angle / 4 pi), or the whole power when the
+    /// light is inside it.
+    [[nodiscard]] Rgb<T> photon_power(const PhotonAim<T>& aim) const noexcept
+    {
+        if (!aim.target) return power();
+        const ConeToward<T> cone = ConeToward<T>::of(position, *aim.target);
+        return cone.cos_half_angle <= T(-1) ? power() : power() * (T(0.5) * (T(1) - cone.cos_half_angle));
+    }
+
+    /// Uniform over the sphere of directions, or over the cone toward the target.
+    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v) const noexcept
+    {
+        const bool without_falloff = falloff == Falloff::none;
+        if (!aim.target) return {{position, uniform_sphere(u, v)}, Rgb<T>(T(1)), without_falloff};
+        const ConeToward<T> cone = ConeToward<T>::of(position, *aim.target);
+        const Vec3<T> direction = cone.cos_half_angle <= T(-1) ? uniform_sphere(u, v) : uniform_cone(cone.axis, cone.cos_half_angle, u, v);
+        return {{position, direction}, Rgb<T>(T(1)), without_falloff};
+    }
+
+    /// A ray uniform over the sphere of directions (u_direction), carrying I; the origin is
+    /// the light's position (a delta in area: density 1).
+    [[nodiscard]] EmissionSample<T> emission(const BoundingSphere<T>&, const Vec2<T>&, const Vec2<T>& u_direction) const noexcept
+    {
+        return {{position, uniform_sphere(u_direction.x, u_direction.y)}, intensity, T(1), T(1) / (T(4) * pi<T>)};
+    }
+
+    /// The densities emission() draws a ray leaving along `leaving` with.
+    [[nodiscard]] EmissionPdf<T> emission_pdf(const Vec3<T>&, const BoundingSphere<T>&) const noexcept { return {T(1), T(1) / (T(4) * pi<T>)}; }
+
+    /// Throws std::invalid_argument, naming the parameter, for a non-finite position or a negative intensity.
+    constexpr void validate() const
+    {
+        detail::require_finite("PointLight position", position);
+        detail::require_non_negative("PointLight intensity", intensity);
+        // The photon tracer divides the power among the photons: it must be finite too.
+        if (!is_finite(power()))
+            detail::throw_invalid("PointLight intensity ", detail::describe(intensity), " is too large: its power 4 pi I overflows");
+    }
+
+};
+
+static_assert(Light<PointLight<float>>);
 
 } // namespace prism
 
@@ -8017,6 +7546,80 @@ concept Bsdf = requires(const B& bsdf, const Vec3<typename B::scalar_type>& w, t
 
 } // namespace prism
 
+// ---- prism/medium/medium.hpp ----
+// The Medium concept: how light fares while it travels through the inside of an object
+// or through the scene's air.
+//
+// A transmissive material names the medium that fills it (Dielectric's `interior`), and
+// the integrators ask that medium, through `attenuate_inside` (material/scattering.hpp)
+// and transport/media.hpp, what a path of a given length inside it lets through. A medium
+// that also scatters (ScatteringMedium: Fog) tells a walker where it next scatters and by
+// which phase function; the walk (transport/random_walk.hpp) asks it.
+
+
+#include <concepts>
+
+namespace prism {
+
+/// A medium in which light travels in straight lines and is attenuated along the way:
+/// either the same everywhere, `transmittance(distance)` the fraction of light per
+/// channel left after that distance, or varying from point to point,
+/// `transmittance(ray, t_max)` an unbiased estimate of it along ray (unit direction) from
+/// its origin to t_max. transmittance_along asks either.
+template <class X>
+concept Medium = requires(const X& medium, const Ray<typename X::scalar_type>& ray, typename X::scalar_type distance) {
+    requires Scalar<typename X::scalar_type>;
+    requires requires { { medium.transmittance(distance) } -> std::same_as<Rgb<typename X::scalar_type>>; } ||
+                 requires { { medium.transmittance(ray, distance) } -> std::same_as<Rgb<typename X::scalar_type>>; };
+    medium.validate();
+};
+
+/// Whether medium type X is the same everywhere (its transmittance a function of distance alone).
+template <class X>
+inline constexpr bool uniform_medium = requires(const X& medium, typename X::scalar_type distance) { medium.transmittance(distance); };
+
+/// What `medium` lets through along [t0, t1] of `ray` (any direction length; t1 may be
+/// infinite, t0 not): exp(-sigma_t length) in a uniform medium, the medium's own estimate
+/// along the stretch in one that varies.
+template <Medium M, Scalar T>
+[[nodiscard]] Rgb<T> transmittance_along(const M& medium, const Ray<T>& ray, T t0, T t1) noexcept
+{
+    const T speed = length(ray.direction);
+    if constexpr (uniform_medium<M>)
+        return medium.transmittance((t1 - t0) * speed);
+    else
+        return medium.transmittance(Ray<T>{ray.at(t0), ray.direction / speed}, (t1 - t0) * speed);
+}
+
+/// Where a walker crossing a scattering medium next scatters, or that it reached the end
+/// of its segment, and the weight its power takes (the medium's transmittance to there,
+/// times its scattering coefficient where it scatters, over the density of the draw).
+template <Scalar T>
+struct FreeFlight {
+    T distance;     ///< along the segment: where it scatters, or the segment's end
+    Rgb<T> weight;  ///< multiplies the walker's power
+    bool scattered; ///< whether it scattered before the segment's end
+};
+
+/// A medium that also scatters light: `sample_flight(ray, t_max, power, rng)`, where a
+/// walker along ray (unit direction) carrying power next scatters before t_max;
+/// `scattering_at(point)`, its scattering coefficient sigma_s there; and `phase`, the
+/// phase function it scatters by.
+template <class X>
+concept ScatteringMedium = Medium<X> && requires(const X& medium, const Ray<typename X::scalar_type>& ray, typename X::scalar_type t,
+                                                 const Rgb<typename X::scalar_type>& power, Random& rng) {
+    requires X::scatters;
+    { medium.sample_flight(ray, t, power, rng) } -> std::same_as<FreeFlight<typename X::scalar_type>>;
+    { medium.scattering_at(ray.origin) } -> std::same_as<Rgb<typename X::scalar_type>>;
+    medium.phase;
+};
+
+/// Whether medium type X scatters light (a ScatteringMedium) rather than only absorbing it.
+template <class X>
+inline constexpr bool scatters_light = ScatteringMedium<X>;
+
+} // namespace prism
+
 // ---- prism/material/traits.hpp ----
 // What a material can do, as capabilities the integrators branch on with if constexpr.
 //
@@ -8305,6 +7908,60 @@ template <Material M>
 {
     if constexpr (may_match_index<M>) return material.index_matched(outside_index);
     else return (void)material, (void)outside_index, false;
+}
+
+} // namespace prism
+
+// ---- prism/optics/refract.hpp ----
+// Mirror reflection and Snell refraction of directions.
+//
+// Conventions: d is the incident direction (travelling toward the surface), n is the
+// unit normal on the side d comes from (dot(d, n) < 0), so cos(theta_i) = -dot(d, n)
+// (as in Pharr, Jakob and Humphreys 2023, "Physically Based Rendering", 4th edition,
+// section 4.5), and eta = n_t / n_i, the index of the far side over the near side.
+
+
+#include <optional>
+
+namespace prism {
+
+/// Mirror reflection of d about n: d - 2 (d . n) n.
+template <Scalar T>
+[[nodiscard]] constexpr Vec3<T> reflect(const Vec3<T>& d, const Vec3<T>& n) noexcept
+{
+    return d - (T(2) * dot(d, n)) * n;
+}
+
+/// A refracted direction and the cosine of its angle with the normal (on the far side).
+template <Scalar T>
+struct Refraction {
+    Vec3<T> direction; ///< unit refracted direction
+    T cos_t; ///< cosine between it and the normal, on the far side
+};
+
+/// Snell refraction of the unit direction d through a surface with unit normal n
+/// facing d, into a medium of relative index eta = n_t / n_i, with cos_t for the Fresnel
+/// equations (computed once, here). Returns nothing under total internal reflection.
+/// The direction is unit length:
+///   t = d / eta + (cos_i / eta - cos_t) n,  cos_t = sqrt(1 - (1 - cos_i^2) / eta^2).
+template <Scalar T>
+[[nodiscard]] constexpr std::optional<Refraction<T>> refraction(const Vec3<T>& d, const Vec3<T>& n, T eta) noexcept
+{
+    const T cos_i = -dot(d, n);
+    const T sin2_i = T(1) - cos_i * cos_i > T(0) ? T(1) - cos_i * cos_i : T(0);
+    const T sin2_t = sin2_i / (eta * eta);
+    // Handle total internal reflection
+    if (sin2_t >= T(1)) return std::nullopt;
+    const T cos_t = prism::sqrt(T(1) - sin2_t);
+    return Refraction<T>{d / eta + (cos_i / eta - cos_t) * n, cos_t};
+}
+
+/// The refracted direction alone (see refraction).
+template <Scalar T>
+[[nodiscard]] constexpr std::optional<Vec3<T>> refract(const Vec3<T>& d, const Vec3<T>& n, T eta) noexcept
+{
+    if (const auto r = refraction(d, n, eta)) return r->direction;
+    return std::nullopt;
 }
 
 } // namespace prism
@@ -9419,1840 +9076,6 @@ struct Interface {
 
 } // namespace prism
 
-// ---- prism/photon/estimator.hpp ----
-// How a photon density estimate gathers and weighs photons: the Estimator's settings
-// and the filter kernels over the disk that holds them (PhotonMap reads them).
-
-#include <cmath>
-#include <cstddef>
-#include <cstdint>
-
-namespace prism {
-
-/// The density estimate's kernel over the disk of radius r that holds the photons.
-enum class Filter : std::uint8_t {
-    box,      ///< every photon counts the same
-    cone,     ///< weight 1 - d / r (Jensen 1996)
-    gaussian, ///< Pavicic's truncated Gaussian, shape as in Jensen (2001), normalised exactly
-};
-
-/// How a density estimate gathers and weighs photons.
-struct Estimator {
-    std::size_t k = 0;   ///< 0: every photon within `radius`; else the k nearest, searched no further than `radius`
-    float radius = 0.1f; ///< the fixed radius, or the k-nearest search's maximum distance
-    Filter filter = Filter::box; ///< the kernel photons are weighed by
-    float max_height_ratio = 1.0f; ///< keep photons within this times r of the tangent plane; < 1 flattens the sphere to a disk against light leaks
-    /// Count a photon only where its surface's normal is within acos(surface_cos) of the
-    /// query's (60 degrees): not the far side of a thin wall (whose normals are opposite,
-    /// the Mitsuba bug), not a perpendicular wall in a corner, but a curved surface that
-    /// turns by less than that within r. (Testing the photon's arrival direction instead
-    /// drops grazing photons wherever the surface curves: a sphere seen from inside read
-    /// 0.8 % low.)
-    float surface_cos = 0.5f;
-    std::uint8_t excluded = 0;  ///< leave out photons with any of these flags
-};
-
-namespace detail {
-
-/// A filter's weight at squared distance d2 within radius^2 r2, and its mean over the disk
-/// (the normalisation: a uniform density gives back itself).
-class FilterWeight {
-public:
-    static constexpr float gaussian_alpha = 0.918f, gaussian_beta = 1.953f;
-
-    /// The Gaussian's constant denominator and every filter's mean are taken here, once
-    /// per estimate, not once per photon.
-    explicit FilterWeight(Filter filter) noexcept : filter_(filter)
-    {
-        switch (filter) {
-        case Filter::cone: mean_ = 1.0f / 3.0f; break;
-        case Filter::gaussian: {
-            // With u = d^2 / r^2 uniform on [0, 1], E[exp(-beta u / 2)] = (1 - exp(-beta / 2))
-            // / (beta / 2), which gives a mean of 0.531 for Jensen's alpha and beta, not 1:
-            // dividing by pi r^2 alone would halve the estimate.
-            gaussian_denominator_ = 1.0f - std::exp(-gaussian_beta);
-            const float m = (1.0f - std::exp(-gaussian_beta / 2.0f)) / (gaussian_beta / 2.0f);
-            mean_ = gaussian_alpha * (1.0f - (1.0f - m) / gaussian_denominator_);
-            break;
-        }
-        case Filter::box: break;
-        }
-    }
-
-    [[nodiscard]] float operator()(float d2, float r2) const noexcept
-    {
-        switch (filter_) {
-        case Filter::cone: return 1.0f - std::sqrt(d2 / r2);
-        case Filter::gaussian:
-            return gaussian_alpha * (1.0f - (1.0f - std::exp(-gaussian_beta * d2 / (2.0f * r2))) / gaussian_denominator_);
-        case Filter::box: break;
-        }
-        return 1.0f;
-    }
-
-    /// Mean weight over the disk. Box 1, cone 1/3, Gaussian 0.531.
-    [[nodiscard]] float mean() const noexcept { return mean_; }
-
-private:
-    Filter filter_;
-    float gaussian_denominator_ = 1.0f;
-    float mean_ = 1.0f;
-};
-
-} // namespace detail
-
-} // namespace prism
-
-// ---- prism/photon/photon.hpp ----
-// Photon: what a photon map stores, and the sampling a photon tracer needs.
-//
-// Jensen, "Global Illumination using Photon Maps" (1996) and "Realistic Image Synthesis
-// Using Photon Mapping" (2001): emission directions uniform on the sphere, each photon
-// carrying the light's power divided by the photons emitted, Russian roulette that
-// scales a survivor's power per channel by reflectance over survival probability.
-
-
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <cstdint>
-#include <utility>
-
-namespace prism {
-
-/// One stored photon, 28 bytes: where it landed (three floats), the power it carries
-/// (W) with a shared exponent and a 16-bit mantissa per channel (rounded to nearest:
-/// 2^-16 relative at worst, so a map of equal photons sums to its power to 10^-5; Ward's
-/// 8-bit RGBE read a furnace 0.25 % bright), the direction it came from and the normal
-/// of the surface it landed on (facing the side it arrived from), each as two 16-bit
-/// octahedral coordinates (Meyer et al. 2010), and its flags.
-class Photon {
-public:
-    /// What a stored photon is.
-    enum Flags : std::uint8_t {
-        direct = 1,  ///< first hit after leaving the light
-        caustic = 2, ///< reached this diffuse surface only by specular bounces (L S+ D)
-        shadow = 4,  ///< a shadow photon: where the straight continuation of a direct photon's path met a further surface
-        volume = 8,  ///< scattered in a medium, not on a surface (its normal is its direction)
-    };
-
-    Vec3<float> position{}; ///< where the photon landed
-
-    Photon() = default;
-
-    /// `toward_source`: unit direction back toward where the photon came from;
-    /// `normal`: the unit normal of the surface it landed on, on the side it arrived from.
-    Photon(const Vec3<float>& at, const Rgb<float>& power, const Vec3<float>& toward_source, const Vec3<float>& normal, std::uint8_t flag_bits) noexcept
-        : position(at), direction_(encode_octahedral(toward_source)), normal_(encode_octahedral(normal)), flags(flag_bits)
-    {
-        encode_power(power);
-    }
-
-    /// The photon's power, decoded.
-    [[nodiscard]] Rgb<float> power() const noexcept
-    {
-        if (exponent_ == 0) return Rgb<float>(0.0f);
-        const float scale = std::ldexp(1.0f, int(exponent_) - 144); // 2^(e - 16), e = exponent_ - 128
-        return {float(mantissa_[0]) * scale, float(mantissa_[1]) * scale, float(mantissa_[2]) * scale};
-    }
-
-    /// The unit direction back toward where the photon came from.
-    [[nodiscard]] Vec3<float> toward_source() const noexcept { return normalize(decode_octahedral(direction_)); }
-
-    /// The unit normal of the surface the photon landed on, on its side.
-    [[nodiscard]] Vec3<float> normal() const noexcept { return normalize(decode_octahedral(normal_)); }
-
-    /// Whether the photon lies on a surface facing the way n does: the cosine between its
-    /// normal and n exceeds `min_cos`. The other side of a thin wall (normals opposite)
-    /// and a perpendicular wall in a corner are left out; a curved surface is kept where
-    /// it turns by less than acos(min_cos).
-    [[nodiscard]] bool faces(const Vec3<float>& n, float min_cos) const noexcept
-    {
-        const Vec3<float> m = decode_octahedral(normal_);
-        const float d = dot(m, n);
-        return d > 0.0f && d * d > min_cos * min_cos * length_squared(m) * length_squared(n);
-    }
-
-    /// Photons are equal when every stored bit is.
-    friend bool operator==(const Photon&, const Photon&) = default;
-
-private:
-    [[nodiscard]] static Vec3<float> decode_octahedral(const std::array<std::uint16_t, 2>& q) noexcept
-    {
-        const float u = float(q[0]) * (2.0f / 65535.0f) - 1.0f, v = float(q[1]) * (2.0f / 65535.0f) - 1.0f;
-        const float z = 1.0f - std::abs(u) - std::abs(v);
-        if (z >= 0.0f) return {u, v, z};
-        return {std::copysign(1.0f - std::abs(v), u), std::copysign(1.0f - std::abs(u), v), z};
-    }
-
-    /// The largest channel's exponent e (max = m 2^(e-16), 2^15 <= m < 2^16 after
-    /// rounding), every channel's mantissa rounded to nearest at that exponent. Worked
-    /// in double, where 2^(16 - e) cannot overflow; e is kept within [-127, 127], so a
-    /// power below 2^-128 keeps fewer bits and one above 2^127 (not a photon's) saturates.
-    void encode_power(const Rgb<float>& c) noexcept
-    {
-        const double largest = std::max({c.x, c.y, c.z});
-        if (!(largest > 0.0) || !std::isfinite(largest)) return; // carries nothing
-        int e = 0;
-        std::frexp(largest, &e); // largest = f 2^e, 0.5 <= f < 1
-        if (std::llround(std::ldexp(largest, 16 - e)) > 65535) ++e; // rounding reached 2^16: one exponent up
-        e = std::clamp(e, -127, 127);
-        const double scale = std::ldexp(1.0, 16 - e);
-        for (int i = 0; i < 3; ++i) mantissa_[i] = std::uint16_t(std::clamp(std::llround(std::max(double(c[i]), 0.0) * scale), 0LL, 65535LL));
-        exponent_ = std::uint8_t(e + 128);
-        if (mantissa_ == std::array<std::uint16_t, 3>{}) exponent_ = 0;
-    }
-
-    static std::array<std::uint16_t, 2> encode_octahedral(const Vec3<float>& d) noexcept
-    {
-        const float l1 = std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
-        float u = l1 > 0.0f ? d.x / l1 : 0.0f, v = l1 > 0.0f ? d.y / l1 : 0.0f;
-        if (d.z < 0.0f) {
-            const float x = u;
-            u = (1.0f - std::abs(v)) * (x >= 0.0f ? 1.0f : -1.0f);
-            v = (1.0f - std::abs(x)) * (v >= 0.0f ? 1.0f : -1.0f);
-        }
-        const auto quantise = [](float x) { return std::uint16_t(std::lround((std::clamp(x, -1.0f, 1.0f) * 0.5f + 0.5f) * 65535.0f)); };
-        return {quantise(u), quantise(v)};
-    }
-
-    std::array<std::uint16_t, 3> mantissa_{};
-    std::array<std::uint16_t, 2> direction_{};
-    std::array<std::uint16_t, 2> normal_{};
-    std::uint8_t exponent_ = 0; ///< 0: no power; else the shared exponent + 128
-
-public:
-    std::uint8_t flags = 0; ///< Flags
-};
-
-static_assert(sizeof(Photon) == 28);
-
-} // namespace prism
-
-// ---- prism/photon/photon_map.hpp ----
-// PhotonMap: photons in a KdTree, and the density estimate of the irradiance they carry.
-
-
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <limits>
-#include <optional>
-#include <span>
-#include <vector>
-
-namespace prism {
-
-/// The photons' positions, as a PointSet for the KdTree.
-struct PhotonPositions {
-    /// Photon positions are float.
-    using scalar_type = float;
-    /// Positions in 3-D.
-    static constexpr std::size_t dimension = 3;
-
-    std::span<const Photon> photons; ///< the photons, in the map's order
-
-    /// The number of photons.
-    [[nodiscard]] std::size_t size() const noexcept { return photons.size(); }
-    /// Coordinate `axis` of photon i's position.
-    [[nodiscard]] float coordinate(std::size_t i, std::size_t axis) const noexcept { return photons[i].position[static_cast<int>(axis)]; }
-};
-
-/// A density estimate and the squared radius of the disk it was gathered over.
-struct PrecomputedIrradiance {
-    Rgb<float> irradiance{0.0f}; ///< the estimate of the irradiance
-    float radius2 = 0; ///< the squared radius it was gathered over
-};
-
-/// Photons in KD-tree order, with radius and k-nearest radiance estimates (Jensen 2001).
-class PhotonMap {
-public:
-    /// The KD-tree over the photons' positions (8 a leaf).
-    using Tree = KdTree<PhotonPositions, 8>;
-    static constexpr std::size_t max_k = 512; ///< the most photons a k-nearest estimate gathers
-
-    PhotonMap() = default;
-
-    /// Own the photons and build the tree over them (on up to `threads` threads, 0 = all
-    /// hardware threads; the same tree for any count). The photons are then put in tree
-    /// order, so that every subtree's photons (and each leaf's) lie together in memory
-    /// and an estimate reads them with few cache misses.
-    explicit PhotonMap(std::vector<Photon> photons, unsigned threads = 1) : tree_(std::in_place, PhotonPositions{photons}, threads)
-    {
-        photons_.resize(photons.size());
-        const auto order = tree_->order();
-        detail::parallel_for(order.size(), threads, [&](std::size_t i) { photons_[i] = photons[order[i]]; });
-        tree_->index_in_tree_order();
-    }
-
-    /// The number of photons.
-    [[nodiscard]] std::size_t size() const noexcept { return photons_.size(); }
-    /// The photons, in tree order.
-    [[nodiscard]] const std::vector<Photon>& photons() const noexcept { return photons_; }
-
-    /// Irradiance at p on a surface with unit normal n (Jensen 1996, eq. 6 with a diffuse
-    /// BRDF taken out): the filtered sum of the powers of the photons on surfaces facing
-    /// n's way, over the disk pi r^2 that holds them. With k nearest, r reaches the k-th
-    /// and that photon, on the disk's rim, is left out: (k - 1) / (pi r^2) is unbiased
-    /// for a uniform random density, k / (pi r^2) reads k / (k - 1) high (1.6 % at 64).
-    /// When fewer were found r is the search's maximum and every photon within it counts.
-    /// Shadow photons carry no power. Calibrated: each photon carries power / photons
-    /// emitted, so the estimate does not depend on the count.
-    [[nodiscard]] Rgb<float> irradiance(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator) const noexcept
-    {
-        return estimate(p, n, estimator).irradiance;
-    }
-
-    /// irradiance(), with the squared radius of the disk it was gathered over (0 where
-    /// no photon was found).
-    [[nodiscard]] PrecomputedIrradiance estimate(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator) const noexcept
-    {
-        return estimate(p, n, estimator, [](const Photon& photon) { return photon.power(); });
-    }
-
-    /// Reflected radiance at p on a surface with unit normal n (Jensen 1996, eq. 6): as
-    /// irradiance(), each photon's power weighed by the BSDF between its direction and
-    /// the viewer's, `reflected(photon)` (its power times f): a glossy surface's estimate.
-    template <class Reflected>
-    [[nodiscard]] Rgb<float> radiance(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator, Reflected&& reflected) const noexcept
-    {
-        return estimate(p, n, estimator, reflected).irradiance;
-    }
-
-    /// The density estimate of `value(photon)` over the disk (estimate() with the photons' powers).
-    template <class Value>
-    [[nodiscard]] PrecomputedIrradiance estimate(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator, Value&& value) const noexcept
-    {
-        Rgb<float> sum(0.0f);
-        if (!tree_ || photons_.empty() || !(estimator.radius > 0.0f)) return {sum, 0.0f};
-        const detail::FilterWeight weight(estimator.filter);
-        const auto add = [&](std::uint32_t index, float d2, float r2) {
-            const Photon& photon = photons_[index];
-            if ((photon.flags & estimator.excluded) != 0 || !photon.faces(n, estimator.surface_cos)) return;
-            const float height = dot(photon.position - p, n);
-            if (height * height > estimator.max_height_ratio * estimator.max_height_ratio * r2) return;
-            sum += value(photon) * weight(d2, r2);
-        };
-        float r2 = estimator.radius * estimator.radius;
-        if (estimator.k == 0) {
-            // A radius whose square underflows (below 1e-19) holds no density float can
-            // state: nothing, as for k nearest all at one point (it divided 0 by 0).
-            if (!(r2 > 0.0f)) return {sum, 0.0f};
-            tree_->within({p.x, p.y, p.z}, estimator.radius, [&](std::uint32_t index, float d2) { add(index, d2, r2); });
-        } else {
-            std::array<Neighbour<float>, max_k> buffer;
-            KNearest<float> found(buffer, estimator.k, r2);
-            tree_->search({p.x, p.y, p.z}, found);
-            if (found.size() == 0) return {sum, 0.0f};
-            const bool rim = found.full();
-            if (rim || !(r2 < infinity<float>)) r2 = found.farthest().distance2;
-            if (!(r2 > 0.0f)) return {Rgb<float>(0.0f), 0.0f};
-            const std::uint32_t on_rim = rim ? found.farthest().index : std::numeric_limits<std::uint32_t>::max();
-            for (const Neighbour<float>& neighbour : found)
-                if (neighbour.index != on_rim) add(neighbour.index, neighbour.distance2, r2);
-        }
-        return {sum / (weight.mean() * pi<float> * r2), r2};
-    }
-
-    /// visit(photon, t, distance2) for every photon within `radius` of the segment from
-    /// `origin` along unit `direction` whose projection t lies in [t_min, t_max],
-    /// distance2 its squared distance from the line: the photons a beam
-    /// radiance estimate of that radius gathers (Jarosz et al. 2008, "The Beam Radiance
-    /// Estimate for Volumetric Photon Mapping"; with a box kernel the estimate is their
-    /// weighted sum over pi r^2).
-    template <class Visit>
-    void near_beam(const Vec3<float>& origin, const Vec3<float>& direction, float t_min, float t_max, float radius, Visit&& visit) const
-    {
-        if (!tree_ || photons_.empty() || !(radius > 0.0f)) return;
-        tree_->along({origin.x, origin.y, origin.z}, {direction.x, direction.y, direction.z}, t_min, t_max, radius,
-                     [&](std::uint32_t index, float t, float distance2) { visit(photons_[index], t, distance2); });
-    }
-
-    /// The volume radiance estimate's sum (Jensen and Christensen 1998): the sum of
-    /// value(photon) over the photons within `radius` of p, over the sphere's volume.
-    template <class Value>
-    [[nodiscard]] Rgb<float> in_sphere(const Vec3<float>& p, float radius, Value&& value) const noexcept
-    {
-        Rgb<float> sum(0.0f);
-        if (!tree_ || photons_.empty() || !(radius > 0.0f)) return sum;
-        tree_->within({p.x, p.y, p.z}, radius, [&](std::uint32_t index, float) { sum += value(photons_[index]); });
-        return sum / (4.0f / 3.0f * pi<float> * radius * radius * radius);
-    }
-
-    /// The box-filtered estimate from the K nearest, searched without limit.
-    template <std::size_t K>
-    [[nodiscard]] Rgb<float> irradiance(const Vec3<float>& p, const Vec3<float>& n) const noexcept
-    {
-        static_assert(K <= max_k);
-        return irradiance(p, n, {.k = K, .radius = infinity<float>});
-    }
-
-    /// The box-filtered estimate within a fixed radius, leaving out photons with any of
-    /// the `excluded` flags.
-    [[nodiscard]] Rgb<float> irradiance_within(const Vec3<float>& p, const Vec3<float>& n, float radius,
-                                               std::uint8_t excluded = 0) const noexcept
-    {
-        return irradiance(p, n, {.radius = radius, .excluded = excluded});
-    }
-
-    /// Precompute irradiance at every `stride`-th photon from its K nearest (Christensen
-    /// 1999, "Faster Photon Map Global Illumination"), so that a final-gather ray needs
-    /// one nearest-neighbour lookup instead of a density estimate.
-    /// The estimates run on up to `threads` threads (0 = all hardware threads), each
-    /// written to its sample's place: the same values for any count.
-    template <std::size_t K>
-    void precompute_irradiance(std::size_t stride, unsigned threads = 1)
-    {
-        std::vector<Photon> samples = irradiance_samples(stride);
-        std::vector<PrecomputedIrradiance> values(samples.size());
-        detail::parallel_for(samples.size(), threads, [&](std::size_t i) { values[i] = precomputed_estimate<K>(samples[i]); });
-        set_precomputed_irradiance(std::move(samples), std::move(values), threads);
-    }
-
-    /// The estimate precompute_irradiance<K> keeps at a sample.
-    template <std::size_t K>
-    [[nodiscard]] PrecomputedIrradiance precomputed_estimate(const Photon& sample) const noexcept
-    {
-        static_assert(K <= max_k);
-        return estimate(sample.position, sample.normal(), {.k = K, .radius = infinity<float>});
-    }
-
-    /// The photons precompute_irradiance estimates at: every `stride`-th, but for shadow
-    /// photons.
-    [[nodiscard]] std::vector<Photon> irradiance_samples(std::size_t stride) const
-    {
-        std::vector<Photon> samples;
-        for (std::size_t i = 0; i < photons_.size(); i += std::max<std::size_t>(stride, 1))
-            if (!(photons_[i].flags & Photon::shadow)) samples.push_back(photons_[i]);
-        return samples;
-    }
-
-    /// Irradiance precomputed elsewhere (by processes that each estimated a share of the
-    /// samples): estimates[i] = precomputed_estimate<K>(samples[i]), samples from
-    /// irradiance_samples.
-    void set_precomputed_irradiance(std::vector<Photon> samples, std::vector<PrecomputedIrradiance> estimates, unsigned threads = 1)
-    {
-        if (samples.size() != estimates.size())
-            detail::throw_invalid("PhotonMap set_precomputed_irradiance: ", samples.size(), " samples and ", estimates.size(), " estimates");
-        irradiance_ = std::move(estimates);
-        samples_ = std::move(samples);
-        sample_tree_.emplace(PhotonPositions{samples_}, threads);
-    }
-
-    /// Whether precompute_irradiance() has been run (the final gather needs it).
-    [[nodiscard]] bool has_precomputed_irradiance() const noexcept { return sample_tree_.has_value(); }
-
-    /// The precomputed irradiance nearest p among samples on surfaces facing n's way
-    /// whose estimate's disk reaches p (zero when there are none). Without that reach, a
-    /// point no photon can reach (inside a closed diffuse ball, the floor beneath it) read
-    /// the nearest sample outside, however far: light through walls.
-    [[nodiscard]] Rgb<float> precomputed_irradiance(const Vec3<float>& p, const Vec3<float>& n) const noexcept
-    {
-        if (!sample_tree_ || samples_.empty()) return Rgb<float>(0.0f);
-        for (const Neighbour<float>& neighbour : sample_tree_->nearest<4>({p.x, p.y, p.z})) {
-            const PrecomputedIrradiance& e = irradiance_[neighbour.index];
-            if (neighbour.distance2 <= e.radius2 && samples_[neighbour.index].faces(n, Estimator{}.surface_cos)) return e.irradiance;
-        }
-        return Rgb<float>(0.0f);
-    }
-
-    /// How many of the k nearest photons within max_radius on surfaces facing n's way are
-    /// direct, and how many are shadow photons (Jensen and Christensen 1995: all direct
-    /// means lit, all shadow means in shadow).
-    [[nodiscard]] std::pair<std::size_t, std::size_t> direct_and_shadow(const Vec3<float>& p, const Vec3<float>& n, std::size_t k,
-                                                                        float max_radius) const noexcept
-    {
-        std::size_t direct = 0, shadow = 0;
-        if (!tree_ || !(max_radius >= 0.0f)) return {0, 0};
-        std::array<Neighbour<float>, max_k> buffer;
-        KNearest<float> found(buffer, k, max_radius * max_radius);
-        tree_->search({p.x, p.y, p.z}, found);
-        for (const Neighbour<float>& neighbour : found) {
-            const Photon& photon = photons_[neighbour.index];
-            if (!photon.faces(n, Estimator{}.surface_cos)) continue;
-            direct += (photon.flags & Photon::direct) != 0;
-            shadow += (photon.flags & Photon::shadow) != 0;
-        }
-        return {direct, shadow};
-    }
-
-private:
-    std::vector<Photon> photons_;
-    std::optional<Tree> tree_;
-    std::vector<Photon> samples_;         ///< photons at which irradiance was precomputed
-    std::vector<PrecomputedIrradiance> irradiance_; ///< their irradiance, and the squared radius it was estimated over
-    std::optional<Tree> sample_tree_;
-};
-
-} // namespace prism
-
-// ---- prism/medium/phase.hpp ----
-// Phase functions: where light scattered in a medium goes, a density over the sphere of
-// directions. Written, as every walker uses them, for the directions of travel before
-// and after the scattering (a camera path's as well as a photon's: the function depends
-// on their angle only, so it reads the same both ways).
-
-
-#include <cmath>
-#include <concepts>
-
-namespace prism {
-
-/// A direction of travel drawn from a phase function, with its density (solid angle).
-template <Scalar T>
-struct PhaseSample {
-    Vec3<T> direction; ///< unit, the direction of travel after scattering
-    T pdf;             ///< its density, the phase function's value there
-};
-
-/// A phase function: `value(cos)` for the cosine between the directions of travel before
-/// and after scattering (a density over the sphere, integrating to 1), and
-/// `sample(direction, u1, u2)` drawing the direction after from exactly that density.
-template <class P>
-concept PhaseFunction = requires(const P& phase, typename P::scalar_type x, const Vec3<typename P::scalar_type>& d) {
-    { phase.value(x) } -> std::same_as<typename P::scalar_type>;
-    { phase.sample(d, x, x) } -> std::same_as<PhaseSample<typename P::scalar_type>>;
-    phase.validate();
-};
-
-/// Henyey and Greenstein's (1941) phase function of mean cosine `g`: 0 scatters evenly
-/// (isotropic), toward 1 forward (haze, cloud droplets: 0.7 to 0.9), toward -1 back.
-/// p(cos) = (1 - g^2) / (4 pi (1 + g^2 - 2 g cos)^(3/2)), drawn by inverting its
-/// distribution in cos.
-template <Scalar T = float>
-struct HenyeyGreenstein {
-    /// The precision of the parameter.
-    using scalar_type = T;
-
-    T g = T(0); ///< the mean cosine of the scattering angle, in (-1, 1)
-
-    /// The density for the cosine between the directions of travel before and after.
-    [[nodiscard]] T value(T cos_theta) const noexcept
-    {
-        const T denominator = T(1) + g * g - T(2) * g * cos_theta;
-        return (T(1) - g * g) / (T(4) * pi<T> * denominator * prism::sqrt(denominator));
-    }
-
-    /// A direction of travel after scattering, for `direction` (unit) before, from two
-    /// uniform numbers.
-    [[nodiscard]] PhaseSample<T> sample(const Vec3<T>& direction, T u1, T u2) const noexcept
-    {
-        T cos_theta;
-        if (std::abs(g) < T(1e-3)) {
-            cos_theta = T(1) - T(2) * u1;
-        } else {
-            const T s = (T(1) - g * g) / (T(1) + g - T(2) * g * u1);
-            cos_theta = std::clamp((T(1) + g * g - s * s) / (T(2) * g), T(-1), T(1));
-        }
-        const T sin_theta = prism::sqrt(std::max(T(0), T(1) - cos_theta * cos_theta));
-        const T phi = T(2) * pi<T> * u2;
-        const auto [a, b] = orthonormal_frame(direction);
-        const Vec3<T> out = sin_theta * (std::cos(phi) * a + std::sin(phi) * b) + cos_theta * direction;
-        return {normalize(out), value(cos_theta)};
-    }
-
-    /// Throws std::invalid_argument for g outside (-1, 1) or not finite.
-    void validate() const
-    {
-        if (!(g > T(-1) && g < T(1))) detail::throw_invalid("HenyeyGreenstein g must be in (-1, 1), got ", g);
-    }
-};
-
-static_assert(PhaseFunction<HenyeyGreenstein<float>> && PhaseFunction<HenyeyGreenstein<double>>);
-
-} // namespace prism
-
-// ---- prism/scene/hit.hpp ----
-// Hit: the closest crossing of a ray with a scene, and which object it belongs to.
-
-
-#include <cstdint>
-
-namespace prism {
-
-/// The surface a ray meets first: the crossing (point, normal, side) and which object it is.
-template <Scalar T>
-struct Hit {
-    Crossing<T> crossing{};  ///< where, with the outward normal and whether the ray enters
-    std::uint32_t slot = 0;  ///< the scene slot (compile-time position) of the object
-    std::uint32_t index = 0; ///< the object within its slot
-};
-
-} // namespace prism
-
-// ---- prism/scene/shadow.hpp ----
-// How a shadow ray crosses glass: blocked (its light arrives by a caustic map instead), or
-// attenuated by what each dielectric it crosses lets through, and where transmissive
-// objects overlap, walked boundary by boundary in the order of their priorities
-// (medium/nesting.hpp).
-
-
-#include <array>
-#include <cstddef>
-#include <cstdint>
-#include <utility>
-
-namespace prism {
-
-/// How shadow rays treat dielectrics.
-enum class ShadowsThroughGlass : bool {
-    attenuated, ///< light passes, attenuated by the medium and the transmission tint (Whitted)
-    blocked,    ///< glass casts a full shadow: its light arrives by a caustic map instead
-};
-
-namespace detail {
-
-/// Where a shadow ray meets a transmissive object's boundary (or starts inside it), kept
-/// to resolve overlapping objects by priority; a fixed number, no allocation.
-template <Scalar T>
-struct ShadowBoundaries {
-    struct Boundary {
-        T t;
-        std::uint32_t slot;
-        std::uint32_t index;
-        bool entering;
-        bool at_start; ///< the ray starts inside the object (no boundary crossed)
-    };
-    static constexpr std::size_t capacity = 32;
-    std::array<Boundary, capacity> items;
-    std::size_t count = 0;
-    bool overflow = false;
-
-    constexpr void add(const Boundary& b) noexcept
-    {
-        if (count == capacity) overflow = true;
-        else items[count++] = b;
-    }
-
-    /// Sort by t; whether two objects' insides overlap anywhere along the ray.
-    constexpr bool sort_and_find_overlap() noexcept
-    {
-        if (overflow) return false;
-        for (std::size_t i = 1; i < count; ++i)
-            for (std::size_t j = i; j > 0 && items[j].t < items[j - 1].t; --j) std::swap(items[j], items[j - 1]);
-        int depth = 0;
-        for (std::size_t i = 0; i < count; ++i) {
-            depth += items[i].entering || items[i].at_start ? 1 : -1;
-            if (depth >= 2) return true;
-        }
-        return false;
-    }
-};
-
-/// A shadow ray through overlapping transmissive objects of `scene`: each stretch
-/// attenuated by the medium of the object it is in (the highest priority), a
-/// transmission tint at each real interface, none at a false one.
-template <class SceneT, Scalar T>
-[[nodiscard]] Rgb<T> transmittance_by_priority(const SceneT& scene, const Ray<T>& ray, T t_max, const ShadowBoundaries<T>& boundaries) noexcept
-{
-    Rgb<T> tr{T(1)};
-    MediumStack media;
-    T previous = T(0);
-    const auto attenuate_to = [&](T t) {
-        if (const Inside* in = media.top()) {
-            scene.visit_material(in->slot, in->index, [&]<class N>(const N& material) {
-                if constexpr (transmits<N>) tr *= transmittance_along(material.medium(), ray, previous, t);
-            });
-        }
-        previous = t;
-    };
-    for (std::size_t i = 0; i < boundaries.count; ++i) {
-        const auto& b = boundaries.items[i];
-        attenuate_to(b.t);
-        scene.visit_material(b.slot, b.index, [&]<class N>(const N& material) {
-            if constexpr (transmits<N>) {
-                const Inside object{b.slot, b.index, nesting_priority(material)};
-                if (b.at_start) {
-                    media = media.entered(object);
-                    return;
-                }
-                const Interface face = nested_interface(media, object, b.entering);
-                if (face.real) tr *= material.transmission_tint();
-                media = face.beyond;
-            }
-        });
-    }
-    attenuate_to(t_max);
-    return tr;
-}
-
-} // namespace detail
-
-} // namespace prism
-
-// ---- prism/transport/travel.hpp ----
-// How a ray travels through the scene's air to the first surface it meets
-// (first_hit_in_air): straight in StraightAir; in GradedAir it follows the ray equation
-// by AdaptiveStepper's steps, and each step's chord is tested against the scene: the
-// first surface a chord meets is where the ray lands (a chord is within the stepper's
-// tolerance of the true path). Surfaces shade as usual; the rays they send on (any ray
-// back in the air) curve again. Shadow rays stay straight: over the few metres to
-// kilometres a scene spans, air bends light by well under a degree, enough to move an
-// image (the mirage) and too little to move a shadow's edge visibly; tracing the curved
-// path that reaches a light is a boundary-value problem left for later.
-//
-// A caller may watch the path piece by piece (on_piece): every straight piece it takes
-// through the air, in order, up to the surface it lands on; a caller that returns false
-// stops the path there (a walker that scatters in fog filling the air).
-
-
-#include <limits>
-#include <optional>
-#include <type_traits>
-#include <utility>
-
-namespace prism {
-
-namespace detail {
-
-/// A straight piece of a path, tested against the scene a hair past its end: a surface
-/// exactly where one piece ends and the next begins (a floor on a layer boundary) is
-/// otherwise missed by both, the first ending just short of it by rounding, the second
-/// starting on it.
-template <class SceneT>
-[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> hit_on_piece(const SceneT& scene, const Ray<typename SceneT::scalar_type>& piece,
-                                                                           typename SceneT::scalar_type piece_length) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    const T slack = T(64) * std::numeric_limits<T>::epsilon() * (piece_length + max_component(abs(piece.origin)));
-    return scene.closest_hit(piece, {T(0), piece_length + slack});
-}
-
-/// What a path shows a caller that does not watch its pieces: nothing, and it goes on.
-struct AnyPiece {
-    template <Scalar T>
-    constexpr bool operator()(const Ray<T>&, T, T) const noexcept
-    {
-        return true;
-    }
-};
-
-/// The length of a path up to its current piece, told where the path lands.
-template <Scalar T>
-struct PathLength {
-    T travelled = T(0);
-    T* out = nullptr;
-
-    [[nodiscard]] std::optional<Hit<T>> landed(std::optional<Hit<T>> hit) const noexcept
-    {
-        if (hit && out != nullptr) *out = travelled + hit->crossing.t;
-        return hit;
-    }
-};
-
-/// The straight start of a path toward a slab or box of air: the surface it meets before
-/// reaching the box (`hit`), or whether it reaches the box at all and how far away.
-template <Scalar T>
-struct Approach {
-    std::optional<Hit<T>> hit;
-    bool reaches = false;
-    T distance = T(0);
-};
-
-template <class SceneT>
-[[nodiscard]] Approach<typename SceneT::scalar_type> approach(const SceneT& scene, const Aabb<typename SceneT::scalar_type>& box,
-                                                            const Ray<typename SceneT::scalar_type>& segment) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    const Interval<T> inside = box.clip(segment, {T(0), infinity<T>});
-    if (inside.empty()) return {scene.closest_hit(segment, {T(0), infinity<T>}), false, T(0)};
-    if (inside.min > T(0)) return {scene.closest_hit(segment, {T(0), inside.min}), true, inside.min};
-    return {std::nullopt, true, T(0)};
-}
-
-} // namespace detail
-
-/// Where a ray through layered air first meets a surface (see first_hit_through below).
-template <class SceneT, IndexField F, class OnPiece = detail::AnyPiece>
-[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const LayeredAir<F>& air,
-                                                                                const Ray<typename SceneT::scalar_type>& ray,
-                                                                                Ray<typename SceneT::scalar_type>& segment,
-                                                                                typename SceneT::scalar_type* path = nullptr, OnPiece&& on_piece = {}) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    static_assert(std::same_as<T, typename F::scalar_type>, "LayeredAir's field must have the scene's scalar type");
-    const LayeredMedium<F> medium(air.field, air.bottom, air.top, air.layers);
-    segment = {ray.origin, normalize(ray.direction)};
-    detail::PathLength<T> length_so_far{T(0), path};
-    // The last straight piece, to the surface it meets or on forever.
-    const auto last_piece = [&](std::optional<Hit<T>> hit) -> std::optional<Hit<T>> {
-        if (!on_piece(std::as_const(segment), hit ? hit->crossing.t : infinity<T>, length_so_far.travelled)) return std::nullopt;
-        return length_so_far.landed(hit);
-    };
-    const auto to_box = detail::approach(scene, Aabb<T>{{-infinity<T>, air.bottom, -infinity<T>}, {infinity<T>, air.top, infinity<T>}}, segment);
-    if (to_box.hit || !to_box.reaches) return last_piece(to_box.hit);
-    if (to_box.distance > T(0) && !on_piece(std::as_const(segment), to_box.distance, T(0))) return std::nullopt;
-    length_so_far.travelled = to_box.distance;
-    Vec3<T> origin = segment.at(to_box.distance), direction = segment.direction;
-    // Entering through the top or bottom face, the ray starts in the layer it enters.
-    int layer = medium.layer_of(origin.y + (direction.y > T(0) ? T(0.5) : T(-0.5)) * (air.top - air.bottom) / T(air.layers));
-    for (int i = 0; i < 4 * air.layers + 4; ++i) {
-        const Vec3<T> start = origin, heading = direction;
-        const bool inside_layers = medium.step(origin, direction, layer);
-        const T length_now = length(origin - start);
-        segment = {start, heading};
-        if (length_now > T(0)) {
-            if (auto hit = detail::hit_on_piece(scene, segment, length_now)) return last_piece(hit);
-            if (!on_piece(std::as_const(segment), length_now, length_so_far.travelled)) return std::nullopt;
-        }
-        length_so_far.travelled += length_now;
-        if (!inside_layers) {
-            if (heading.y == T(0)) return last_piece(scene.closest_hit(segment, {T(0), infinity<T>})); // level: straight on
-            segment = {origin, direction};
-            return last_piece(scene.closest_hit(segment, {T(0), infinity<T>}));
-        }
-    }
-    return std::nullopt;
-}
-
-/// Where a ray through curved air first meets a surface of the scene, or nothing; on a
-/// hit, `segment` is the straight piece (unit direction) on which it lies, the ray to
-/// shade with, and `path` (if given) receives the length of the whole curved path.
-/// on_piece(piece, length, before) is shown each straight piece of the path in order
-/// (unit direction; its length, infinite for the last if it meets nothing; the path's
-/// length before it), and returns false to stop the path there (then nothing is met).
-template <class SceneT, IndexField F, class OnPiece = detail::AnyPiece>
-[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const GradedAir<F>& air,
-                                                                                const Ray<typename SceneT::scalar_type>& ray,
-                                                                                Ray<typename SceneT::scalar_type>& segment,
-                                                                                typename SceneT::scalar_type* path = nullptr, OnPiece&& on_piece = {}) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    static_assert(std::same_as<T, typename F::scalar_type>, "GradedAir's field must have the scene's scalar type");
-    segment = {ray.origin, normalize(ray.direction)};
-    detail::PathLength<T> length_so_far{T(0), path}; // along the path, up to `segment`'s origin
-    // The last straight piece, to the surface it meets or on forever.
-    const auto last_piece = [&](std::optional<Hit<T>> hit) -> std::optional<Hit<T>> {
-        if (!on_piece(std::as_const(segment), hit ? hit->crossing.t : infinity<T>, length_so_far.travelled)) return std::nullopt;
-        return length_so_far.landed(hit);
-    };
-    const auto to_box = detail::approach(scene, air.region, segment);
-    if (to_box.hit || !to_box.reaches) return last_piece(to_box.hit);
-    if (to_box.distance > T(0) && !on_piece(std::as_const(segment), to_box.distance, T(0))) return std::nullopt;
-    length_so_far.travelled = to_box.distance;
-    CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(to_box.distance), segment.direction});
-    const AdaptiveStepper<F> stepper(air.field, air.stepping);
-    T dt = T(0);
-    for (int i = 0; i < air.max_steps; ++i) {
-        const CurvedRay<T> start = curved;
-        T taken = T(0);
-        stepper.step(curved, dt, &taken);
-        const Vec3<T> chord = curved.position - start.position;
-        const T chord_length = length(chord);
-        if (!(chord_length > T(0))) continue;
-        segment = {start.position, chord / chord_length};
-        if (auto hit = detail::hit_on_piece(scene, segment, chord_length)) {
-            // Home in on the landing point along the curve: halve the step while its
-            // chord is long, keeping the half whose chord meets the surface.
-            CurvedRay<T> from = start;
-            T h = taken;
-            T length_now = chord_length;
-            while (length_now > air.landing_chord && h > T(0)) {
-                h /= T(2);
-                const CurvedRay<T> middle = sharma_step(air.field, from, h);
-                const Vec3<T> first = middle.position - from.position;
-                const T first_length = length(first);
-                if (!(first_length > T(0))) break;
-                const Ray<T> first_segment{from.position, first / first_length};
-                if (auto near = detail::hit_on_piece(scene, first_segment, first_length)) {
-                    segment = first_segment;
-                    hit = near;
-                    length_now = first_length;
-                    continue;
-                }
-                const CurvedRay<T> end = sharma_step(air.field, middle, h);
-                const Vec3<T> second = end.position - middle.position;
-                const T second_length = length(second);
-                if (!(second_length > T(0))) break;
-                const Ray<T> second_segment{middle.position, second / second_length};
-                auto far = detail::hit_on_piece(scene, second_segment, second_length);
-                if (!far) break; // the curve grazes past where the chord met it: keep the chord's hit
-                if (!on_piece(first_segment, first_length, length_so_far.travelled)) return std::nullopt; // passed
-                segment = second_segment;
-                hit = far;
-                from = middle;
-                length_so_far.travelled += first_length;
-                length_now = second_length;
-            }
-            return last_piece(hit);
-        }
-        if (!on_piece(std::as_const(segment), chord_length, length_so_far.travelled)) return std::nullopt;
-        length_so_far.travelled += chord_length;
-        if (!air.region.contains(curved.position)) {
-            // Out of the box: straight from here on.
-            segment = {curved.position, curved.direction()};
-            return last_piece(scene.closest_hit(segment, {T(0), infinity<T>}));
-        }
-    }
-    return std::nullopt;
-}
-
-/// The air through which rays curve: the air itself (GradedAir, LayeredAir), or the air a
-/// medium fills (FilledAir's base).
-template <class Air>
-[[nodiscard]] constexpr const auto& bending_air(const Air& air) noexcept
-{
-    if constexpr (requires { air.base; }) return air.base;
-    else return air;
-}
-
-/// The first surface a ray in the air meets: along the curve in GradedAir or LayeredAir
-/// (or fog filling them), straight in StraightAir (where `segment` is the ray itself).
-/// `path`, if given, receives the length travelled to it. on_piece, if given, is shown
-/// each straight piece of the path (first_hit_through's; in straight air the one piece,
-/// the ray with its direction made unit) and may stop the path (then nothing is met).
-template <class SceneT, class Air, class OnPiece = detail::AnyPiece>
-[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_in_air(const SceneT& scene, const Air& air,
-                                                                               const Ray<typename SceneT::scalar_type>& ray,
-                                                                               Ray<typename SceneT::scalar_type>& segment,
-                                                                               typename SceneT::scalar_type* path = nullptr, OnPiece&& on_piece = {}) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    if constexpr (Air::curved) {
-        return first_hit_through(scene, bending_air(air), ray, segment, path, on_piece);
-    } else {
-        segment = ray;
-        auto hit = scene.closest_hit(ray, {T(0), infinity<T>});
-        if constexpr (!std::is_same_v<std::remove_cvref_t<OnPiece>, detail::AnyPiece>) {
-            const T scale = length(ray.direction);
-            if (!on_piece(Ray<T>{ray.origin, normalize(ray.direction)}, hit ? hit->crossing.t * scale : infinity<T>, T(0))) return std::nullopt;
-        }
-        if (hit && path != nullptr) *path = hit->crossing.t * length(ray.direction);
-        return hit;
-    }
-}
-
-} // namespace prism
-
-// ---- prism/transport/media.hpp ----
-// What the media a path is in (medium/nesting.hpp's MediumStack) do to light on its way:
-// the index on an interface's far side, the attenuation along a segment, the parts of a
-// path that lie in a medium that scatters (an object's interior, or the scene's air when it
-// is FilledAir, straight or curved), and what such air lets through along a shadow ray.
-
-
-#include <optional>
-
-namespace prism {
-
-/// The refractive index of the medium of `object` for light of one wavelength (0: white):
-/// 1 for none (the scene's air) or for an object that does not transmit.
-template <class SceneT>
-[[nodiscard]] typename SceneT::scalar_type index_of(const SceneT& scene, const Inside* object, typename SceneT::scalar_type wavelength_nm) noexcept
-{
-    using T = typename SceneT::scalar_type;
-    if (object == nullptr) return T(1);
-    return scene.visit_material(object->slot, object->index, [&]<class M>(const M& material) -> T {
-        if constexpr (M::transmits)
-            return index_at(material, wavelength_nm);
-        else
-            return T(1);
-    });
-}
-
-/// Light that reached `hit` along `ray` travelled in the medium the ray is in: multiply
-/// by what it lets through over that length. A ray known to be in no object leaving a
-/// dielectric travelled inside it (the camera started there, or no nesting is tracked).
-template <class SceneT, Material M>
-void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& material, const Crossing<typename M::scalar_type>& hit,
-                       const Ray<typename M::scalar_type>& ray, Rgb<typename M::scalar_type>& light) noexcept
-{
-    if (const Inside* in = media.top()) {
-        scene.visit_material(in->slot, in->index, [&]<class N>(const N& medium_material) {
-            // (A medium that scatters was crossed by fly_through_medium, its weight taken.)
-            if constexpr (N::transmits && !has_scattering_interior<N>) light *= transmittance_along(medium_material.medium(), ray, typename M::scalar_type(0), hit.t);
-        });
-    } else {
-        attenuate_inside(material, hit, ray, light);
-    }
-}
-
-/// f(medium, t0, t1) for the part [t0, t1] of `segment` (unit direction, up to t_max: the
-/// surface it meets there, or infinity) that lies in a medium that scatters: all of it in
-/// an object whose interior scatters, the part inside its region in FilledAir; nothing in
-/// a medium that only absorbs (attenuate_segment's) or in clear air.
-template <class SceneT, class Air, Scalar T, class F>
-void for_scattering_medium_along(const SceneT& scene, const Air& air, const MediumStack& media, const Ray<T>& segment, T t_max, F&& f)
-{
-    if (const Inside* in = media.top()) {
-        if constexpr (SceneT::has_scattering_media) {
-            scene.visit_material(in->slot, in->index, [&]<class N>(const N& material) {
-                if constexpr (has_scattering_interior<N>) f(material.medium(), T(0), t_max);
-            });
-        }
-    } else if constexpr (air_scatters<Air>) {
-        const Interval<T> inside = air.bounds().clip(segment, {T(0), t_max});
-        if (!inside.empty()) f(air.medium, inside.min, inside.max);
-    }
-}
-
-/// The first surface a path from `ray` meets in the media it is in (`media`: inside an
-/// object straight, in the air along the air's curve), with `segment` and `path` as
-/// first_hit_in_air's, and f(medium, piece, t0, t1, before) shown, in order along the
-/// way, each part [t0, t1] of a straight piece (unit direction) that lies in a medium
-/// that scatters (for_scattering_medium_along), `before` the path's length up to the
-/// piece's origin. f returns false to stop the path there (a walker that scattered or was
-/// absorbed; then nothing is met); true to go on.
-template <class SceneT, class Air, class F>
-[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through_media(const SceneT& scene, const Air& air, const MediumStack& media,
-                                                                                      const Ray<typename SceneT::scalar_type>& ray,
-                                                                                      Ray<typename SceneT::scalar_type>& segment,
-                                                                                      typename SceneT::scalar_type* path, F&& f)
-{
-    using T = typename SceneT::scalar_type;
-    bool stopped = false;
-    const auto on_piece = [&](const Ray<T>& piece, T length, T before) {
-        for_scattering_medium_along(scene, air, media, piece, length, [&](const auto& medium, T t0, T t1) { stopped = !f(medium, piece, t0, t1, before); });
-        return !stopped;
-    };
-    auto hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, path, on_piece) : first_hit_in_air(scene, StraightAir{}, ray, segment, path, on_piece);
-    if (stopped) return std::nullopt;
-    return hit;
-}
-
-/// What the scene's air lets through along `ray` (unit direction) over `distance` (may be
-/// infinite): its medium's transmittance over the part inside its region where it is
-/// FilledAir, 1 in clear air. (Glass and the media inside objects are the scene's
-/// transmittance.)
-template <class Air, Scalar T>
-[[nodiscard]] Rgb<T> air_transmittance(const Air& air, const Ray<T>& ray, T distance) noexcept
-{
-    if constexpr (air_scatters<Air>) {
-        const Interval<T> inside = air.bounds().clip(ray, {T(0), distance});
-        if (inside.empty()) return Rgb<T>(T(1));
-        return transmittance_along(air.medium, ray, inside.min, inside.max);
-    } else {
-        (void)air, (void)ray, (void)distance;
-        return Rgb<T>(T(1));
-    }
-}
-
-/// What the scene's air lets through along a shadow ray from `ray.origin` over `distance`,
-/// which the scene's transmittance<Glass> passes: air_transmittance over the stretches
-/// outside the objects it passes through (Scene::for_each_stretch_outside), whose insides
-/// hold their own media and no air. From inside a ball of smoke, the air beyond it counts;
-/// through one, the air inside it does not.
-template <ShadowsThroughGlass Glass, class SceneT, class Air, Scalar T>
-[[nodiscard]] Rgb<T> air_transmittance(const SceneT& scene, const Air& air, const Ray<T>& ray, T distance) noexcept
-{
-    if constexpr (air_scatters<Air>) {
-        Rgb<T> tr{T(1)};
-        scene.template for_each_stretch_outside<Glass>(ray, distance, [&](T t0, T t1) {
-            const Interval<T> inside = air.bounds().clip(ray, {t0, t1});
-            if (!inside.empty()) tr *= transmittance_along(air.medium, ray, inside.min, inside.max);
-        });
-        return tr;
-    } else {
-        (void)scene, (void)air, (void)ray, (void)distance;
-        return Rgb<T>(T(1));
-    }
-}
-
-} // namespace prism
-
-// ---- prism/transport/random_walk.hpp ----
-// random_walk: the path a photon takes through a scene, shared by the photon tracer, the
-// light tracer and the path tracer (a camera path carries importance by the same rules).
-//
-// From a ray carrying `power`, hit by hit: the medium the path crossed attenuates it;
-// at a diffuse or glossy surface the caller's `on_diffuse` sees the vertex (and may stop the walk);
-// false interfaces (inside a medium of higher priority) and index-matched ones
-// (may_match_index) are passed; a white path meeting
-// a dispersive interface takes one wavelength band at random; then scatter_photon picks
-// the next direction (material/scattering.hpp): a photon by Russian roulette at every
-// bounce, which keeps its power bounded; a camera path by its lobes alone, ended by
-// roulette on its throughput once it has met WalkLimits::roulette_depth surfaces, so a
-// path on its way to a bright, hard-to-find light (a caustic) is not cut short by the dim
-// surfaces it left. In the air the path follows the air's curve (GradedAir), inside
-// objects straight lines. In a medium that scatters (an object's Fog, or FilledAir) the
-// walk draws where it scatters along each piece of its way (first_hit_through_media, the
-// curved pieces in fog filling graded air included); there the caller's
-// `on_medium` sees the vertex, and the walk goes on in a direction drawn from the
-// medium's phase function.
-
-
-#include <algorithm>
-#include <concepts>
-#include <optional>
-#include <type_traits>
-#include <variant>
-
-namespace prism {
-
-/// A walk at a surface with a non-delta lobe (diffuse, or glossy and not a mirror),
-/// before it scatters there.
-template <Scalar T>
-struct WalkVertex {
-    const Hit<T>& hit; ///< the surface the walk met
-    const Vec3<T>& direction; ///< unit, arriving
-    const Rgb<T>& power;      ///< what the path carries here, after the medium it crossed
-    bool direct;              ///< nothing scattered it yet (a photon's first hit)
-    int diffuse_bounces;      ///< non-delta (diffuse or glossy) scatterings so far (0: every scattering so far was specular)
-    bool first_specular;      ///< the first scattering was specular (the vertex next to the path's start: L S ...)
-    T travelled;              ///< the path's length so far
-    T wavelength;             ///< 0 while white
-    const MediumStack& media; ///< the transmissive objects the path is inside of
-    const Vec3<T>& last_point; ///< where the path last scattered (or started)
-    T last_pdf;               ///< the solid-angle density of the last scattering's non-delta lobe (a diffuse one's cos / pi); 0 after a delta one or at the start
-    bool last;                ///< the walk ends after this surface (its depth limit): nothing it scatters is followed
-    Random& rng;               ///< the walk's stream, for a caller that draws at the vertex (a thin lens's point)
-    T outside_index;          ///< the index of refraction on a transmissive material's outer side (1 for others; glossy_eta)
-    int surface_bounces;      ///< the non-delta scatterings other than through frosted glass (a glossy interface)
-
-    /// Where the walk met the surface, with its normal and side.
-    [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
-    /// Whether every scattering so far was specular.
-    [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
-    /// Whether every scattering so far was specular or through frosted glass: the path
-    /// of a caustic, L {S | frosted}+ (the photon maps' classification).
-    [[nodiscard]] bool caustic_path() const noexcept { return surface_bounces == 0; }
-};
-
-/// A walk leaving the scene: the segment it left along, and what it carries.
-template <Scalar T>
-struct WalkEscape {
-    const Ray<T>& ray;        ///< the segment that left the scene, its direction the way it went
-    const Rgb<T>& power;      ///< what the path carries
-    int diffuse_bounces;      ///< non-delta (diffuse or glossy) scatterings on the way (0: every scattering was specular)
-    bool first_specular;      ///< the first scattering was specular (the vertex next to the path's start)
-    T last_pdf;               ///< as WalkVertex's: the last scattering's diffuse density, 0 after a delta one
-
-    /// Whether every scattering on the way was specular.
-    [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
-};
-
-/// A walk where it scatters in a medium, before it scatters there.
-template <Scalar T>
-struct WalkMediumVertex {
-    const Vec3<T>& point;     ///< where it scatters
-    const Vec3<T>& direction; ///< unit, arriving
-    const Rgb<T>& power;      ///< what the path carries here, the medium's scattering coefficient and the draw's weight taken
-    bool direct;              ///< nothing scattered it yet
-    int diffuse_bounces;      ///< non-delta scatterings so far, at surfaces or in media
-    bool first_specular;      ///< the first scattering was specular
-    T travelled;              ///< the path's length so far
-    T wavelength;             ///< 0 while white
-    const MediumStack& media; ///< the transmissive objects the path is inside of
-    const Vec3<T>& last_point; ///< where the path last scattered (or started)
-    T last_pdf;               ///< as WalkVertex's
-    bool last;                ///< the walk ends after this vertex (its depth limit)
-    Random& rng;               ///< the walk's stream
-    int surface_bounces;      ///< as WalkVertex's: non-delta scatterings but through frosted glass
-    const Ray<T>& stretch;    ///< the stretch of medium the flight was drawn over: from where it starts, unit direction
-    T stretch_length;         ///< its length (may be infinite)
-    const Rgb<T>& entering;   ///< what the path carried as it entered the stretch (the flight's draw was weighed by it)
-
-    /// Whether every scattering so far was specular.
-    [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
-    /// Whether every scattering so far was specular or through frosted glass (a
-    /// volumetric caustic's path when one came before: L {S | frosted}+ M).
-    [[nodiscard]] bool caustic_path() const noexcept { return surface_bounces == 0; }
-};
-
-/// A walk entering a stretch of a medium that scatters, before its flight there is drawn:
-/// shown to a caller's on_medium that takes it (the path tracer's equiangular samples).
-template <Scalar T>
-struct WalkMediumStretch {
-    const Ray<T>& ray;        ///< from where the stretch starts, unit direction
-    T length;                 ///< its length (may be infinite)
-    const Rgb<T>& power;      ///< what the path carries entering it
-    int diffuse_bounces;      ///< non-delta scatterings so far
-    const MediumStack& media; ///< the transmissive objects the path is inside of
-    Random& rng;               ///< the walk's stream
-};
-
-/// What a walk does where it scatters in a medium when its caller says nothing: it goes on.
-struct IgnoreMedia {
-    /// Goes on (whatever it is shown: the medium, the vertex, a photon's power).
-    template <class... Seen>
-    constexpr bool operator()(const Seen&...) const noexcept
-    {
-        return true;
-    }
-};
-
-/// What a walk does where it leaves the scene when its caller says nothing: nothing.
-struct IgnoreEscape {
-    /// Does nothing.
-    template <class E>
-    constexpr void operator()(const E&) const noexcept
-    {
-    }
-};
-
-/// What a walk does where it meets an emitting surface when its caller says nothing: nothing.
-struct IgnoreEmitters {
-    /// Does nothing.
-    template <class M, class V>
-    constexpr void operator()(const M&, const V&) const noexcept
-    {
-    }
-};
-
-/// How far a walk may go.
-struct WalkLimits {
-    int max_bounces = 256; ///< surfaces past the first the walk may scatter at (it meets at most max_bounces + 1)
-    /// Scatterings in media past the first the walk may follow, counted apart from the
-    /// surfaces: in dense fog that does not absorb a path scatters hundreds of times
-    /// between two surfaces (16 in all lost 7 % of the light of a fog of optical depth 8).
-    int max_medium_bounces = 1000;
-    /// Surfaces a camera path (Transport::radiance) scatters at before Russian roulette on
-    /// its throughput may end it (path_roulette); a photon's roulette is per bounce.
-    int roulette_depth = 2;
-};
-
-/// Walk from `ray` carrying `power` through at most limits.max_bounces + 1 surfaces and
-/// limits.max_medium_bounces + 1 scatterings in media.
-/// on_diffuse(material, WalkVertex) is called at every surface with a non-delta lobe
-/// (diffuse, or glossy and not a mirror: scatters_smoothly) and returns the
-/// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
-/// there); on_escape(WalkEscape) when the path leaves the scene; on_emitter(material,
-/// WalkVertex) where it meets a surface that emits (an area light; the walk scatters there
-/// only by the lobes the material also has). `Mode`: whether the path is a photon's or a
-/// camera's (scatter_photon); a camera path is ended by path_roulette after
-/// limits.roulette_depth surfaces. on_medium(medium, WalkMediumVertex) is called where the
-/// path scatters in a medium (a scene or air with none never compiles it) and returns
-/// whether the walk goes on; such vertices count toward their own limit, and toward
-/// roulette_depth with the surfaces.
-/// `start`: the transmissive objects the ray starts inside (a camera's: Scene::media_at).
-template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters,
-          class OnMedium = IgnoreMedia>
-void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
-                 Rgb<typename SceneT::scalar_type> power, Random& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
-                 OnEmitter&& on_emitter = {}, OnMedium&& on_medium = {}, MediumStack start = {})
-{
-    using T = typename SceneT::scalar_type;
-    bool direct = true, first_specular = false;
-    int diffuse_bounces = 0, surface_bounces = 0;
-    T travelled = T(0);
-    T wavelength = T(0); // white until a dispersive interface splits it
-    MediumStack media = start; // the transmissive objects the path is inside of
-    Vec3<T> last_point = ray.origin;
-    T last_pdf = T(0);
-    int medium_bounces = 0; // of the bounces, those in media
-    for (int bounce = 0; bounce - medium_bounces <= limits.max_bounces; ++bounce) {
-        rng.bounce(bounce); // each bounce its own block of the sampler's dimensions
-        // In the air a path follows the air's curve; inside objects, straight lines.
-        Ray<T> segment = ray;
-        T path = T(0);
-        // Where the path scatters in the media it crosses before the surface, piece by piece
-        // of its way: on each stretch of a medium that scatters, the caller's on_medium sees
-        // the stretch, then the walker's flight is drawn (the medium's sample_flight) and its
-        // power takes the draw's weight.
-        enum class InMedium { passed, scattered, absorbed };
-        [[maybe_unused]] InMedium in_medium = InMedium::passed;
-        const std::optional<Hit<T>> hit = [&] {
-            if constexpr (!SceneT::has_scattering_media && !air_scatters<Air>) {
-                return media.empty() ? first_hit_in_air(scene, air, ray, segment, &path) : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
-            } else {
-                return first_hit_through_media(scene, air, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
-                    const Ray<T> stretch{piece.at(t0), piece.direction};
-                    const Rgb<T> entering = power;
-                    if constexpr (std::is_invocable_v<OnMedium&, const Md&, const WalkMediumStretch<T>&>)
-                        on_medium(medium, WalkMediumStretch<T>{stretch, t1 - t0, power, diffuse_bounces, media, rng});
-                    const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
-                    power *= flight.weight;
-                    if (!flight.scattered) return true;
-                    const T s = t0 + flight.distance;
-                    const Vec3<T>& d = piece.direction;
-                    const Vec3<T> p = piece.origin + s * d;
-                    travelled += before + s;
-                    const bool last = medium_bounces == limits.max_medium_bounces;
-                    in_medium = InMedium::absorbed;
-                    if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last,
-                                                              rng, surface_bounces, stretch, t1 - t0, entering}))
-                        return false;
-                    if constexpr (Mode == Transport::importance) {
-                        // A photon keeps its power: it goes on with the chance of the draw's
-                        // largest weight (the albedo in a grey medium), divided out.
-                        const T keep = std::min(T(1), max_component(flight.weight));
-                        if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return false;
-                        power /= keep;
-                    } else {
-                        if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return false;
-                    }
-                    const auto [u1, u2] = rng.uniform2<T>();
-                    const PhaseSample<T> next = medium.phase.sample(d, u1, u2);
-                    ray = {p, next.direction};
-                    last_point = p;
-                    last_pdf = next.pdf;
-                    ++diffuse_bounces;
-                    ++surface_bounces;
-                    if (direct) first_specular = false;
-                    in_medium = InMedium::scattered;
-                    return false;
-                });
-            }
-        }();
-        if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
-            if (in_medium == InMedium::absorbed) return;
-            if (in_medium == InMedium::scattered) {
-                if (++medium_bounces > limits.max_medium_bounces) return;
-                direct = false;
-                continue;
-            }
-        }
-        if (!hit) {
-            on_escape(WalkEscape<T>{segment, power, diffuse_bounces, first_specular, last_pdf});
-            return;
-        }
-        const Crossing<T>& c = hit->crossing;
-        const Vec3<T> d = normalize(segment.direction);
-        travelled += path;
-        enum class Next { absorbed, scattered, passed };
-        const Next next_step = scene.visit_material(*hit, [&]<class M>(const M& material) -> Next {
-            // What the medium it travelled in let through, before anything else.
-            attenuate_segment(scene, media, material, c, segment, power);
-            const bool last = bounce - medium_bounces == limits.max_bounces;
-            if constexpr (emits<M>)
-                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, T(1), surface_bounces});
-            if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
-                return Next::absorbed; // a lamp that only emits
-            } else {
-            // The media beyond the surface, the object whose medium lies on its far
-            // side, and false interfaces (inside a medium of higher priority) passed.
-            // (Only transmissive materials keep an interface: no copy of the media for
-            // the diffuse and mirror hits that make most of a path's bounces.)
-            [[maybe_unused]] std::conditional_t<transmits<M>, Interface, std::monostate> face{};
-            const Inside* outside = nullptr;
-            if constexpr (transmits<M>) {
-                face = nested_interface(media, {hit->slot, hit->index, nesting_priority(material)}, c.entering);
-                if (!face.real) {
-                    ray = spawn_ray(c.point, c.error, c.normal, d);
-                    media = face.beyond;
-                    return Next::passed;
-                }
-                outside = outside_of(media, face, c.entering);
-            }
-            const T outside_index = transmits<M> ? T(index_of(scene, outside, wavelength)) : T(1);
-            if constexpr (may_match_index<M>) {
-                // An index-matched boundary is no vertex: the path goes on straight, its
-                // tint taken, as a shadow ray passes it (Scene::transmittance).
-                if (material.index_matched(outside_index)) {
-                    if constexpr (Mode == Transport::radiance) power *= material.transmission_tint();
-                    else if (!russian_roulette(power, material.transmission_tint(), rng)) return Next::absorbed;
-                    ray = spawn_ray(c.point, c.error, c.normal, d);
-                    media = face.beyond;
-                    return Next::passed;
-                }
-            }
-            Lobes lobes = Lobes::all;
-            // (A glossy lobe that is a mirror has no vertex of its own.)
-            if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
-                const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
-                                                                      last_point, last_pdf, last, rng, outside_index, surface_bounces});
-                if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
-                else lobes = go_on;
-                if (lobes == Lobes::none) return Next::absorbed;
-            }
-            if constexpr (disperses<M>) {
-                if (wavelength == T(0)) {
-                    // One band at random: its (non-negative) share of white, over its probability 1 / count.
-                    const int count = bands.size();
-                    const WavelengthBand<T>& band = bands[std::min(int(rng.uniform<T>() * T(count)), count - 1)];
-                    power *= band.photon_weight * T(count);
-                    wavelength = band.wavelength_nm;
-                }
-            }
-            const Vec3<T> n = c.facing_normal();
-            const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, outside_index, lobes);
-            if (!next) return Next::absorbed;
-            if constexpr (Mode == Transport::radiance) {
-                if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return Next::absorbed;
-            }
-            ray = spawn_ray(c.point, c.error, c.normal, next->direction);
-            last_point = c.point;
-            if constexpr (has_glossy<M>) last_pdf = next->pdf;
-            else last_pdf = next->diffuse ? std::max(dot(next->direction, c.facing_shading()), T(0)) / pi<T> : T(0);
-            if (next->diffuse) ++diffuse_bounces;
-            if (next->diffuse && !(has_glossy<M> && transmits<M>)) ++surface_bounces;
-            if (direct) first_specular = !next->diffuse;
-            if constexpr (transmits<M>) {
-                if (dot(next->direction, n) < T(0)) media = face.beyond; // refracted
-            }
-            return Next::scattered;
-            }
-        });
-        if (next_step == Next::absorbed) return;
-        if (next_step == Next::scattered) direct = false;
-    }
-}
-
-} // namespace prism
-
-// ---- prism/photon/photon_tracer.hpp ----
-// trace_photons: emit photons from the lights and follow them through a scene into a
-// global and a caustic photon map (Jensen 1996, section 2.1).
-//
-// Global map: each light emits everywhere it shines (Light::emit_photon with no target:
-// a point light over its whole sphere, a parallel light through a disk facing it that
-// covers every bounded object), and photons are stored at every diffuse hit (flagged
-// direct on the first, caustic when only specular bounces came before, or bounces through
-// frosted glass, which holds no photons itself). Caustic map:
-// each light aims at the bounding sphere of every specular object (POV-Ray's `target`;
-// bounding_sphere(shape)), and photons are stored only at the first diffuse hit after
-// one or more specular bounces or bounces through frosted glass (L {S | frosted}+ D). Every bounce is scatter_photon's (Russian
-// roulette per channel, material/scattering.hpp), and light travelling inside an object
-// is attenuated by its medium. Shadow photons mark where the straight continuation of a
-// direct photon's path meets further diffuse surfaces (Jensen and Christensen 1995,
-// "Efficiently rendering shadows using the photon map"). Where a photon scatters in a
-// medium (a Fog) it is stored as a volume photon (Jensen and Christensen 1998): the global
-// pass's on every path but a volumetric caustic's, L {S | frosted}+ M, which is the
-// caustic pass's. Photon i starts from point i of a scrambled Sobol sequence and draws the
-// rest of its path from its own random stream, so the maps are the same bits for any
-// thread count. A light without falloff (POV-Ray's `fade_power 0`) has no physical
-// power; its photons are scaled by the squared length of the path they travelled, as
-// POV-Ray does, so that their estimate gives irradiance that does not fall off with
-// distance either.
-
-
-#include <algorithm>
-#include <cmath>
-#include <limits>
-#include <string>
-#include <type_traits>
-#include <utility>
-#include <variant>
-#include <vector>
-
-namespace prism {
-
-/// How many photons are traced, and how.
-struct PhotonTracerConfig {
-    std::size_t global_photons = 200000;  ///< emitted for the global map
-    std::size_t caustic_photons = 200000; ///< emitted toward specular objects for the caustic map
-    int max_bounces = 16;                 ///< bounces at surfaces followed at most
-    int max_medium_bounces = 1000;        ///< scatterings in media followed at most (WalkLimits'; in fog that absorbs, roulette ends a photon long before)
-    bool shadow_photons = true; ///< store shadow photons in the global map
-    std::uint64_t seed = 0; ///< with the light, fixes every photon
-    /// The photons' numbers (core/sampler.hpp): photon i of a map is sample i of the
-    /// sampler, its choice of light and point (pair 0), its direction (pair 1) and each
-    /// bounce (a block of pairs) Owen-scrambled Sobol points, so that the photons of any
-    /// 2^m prefix, a pass of progressive photon mapping included, are stratified in each
-    /// (zsobol, a layout of the image, draws the same); Halton's points, one sequence over
-    /// the photon's first 64 dimensions together; or independent numbers.
-    SamplerKind sampler = SamplerKind::sobol;
-    unsigned threads = 0; ///< 0 = all hardware threads
-    /// A white photon meeting a dispersive interface takes one of this many wavelength
-    /// bands at random (1 to 81), its power scaled by the band's photon_weight times
-    /// the band count, and keeps that wavelength from then on.
-    int dispersion_bands = SpectralBands<float>::max_count;
-};
-
-namespace detail {
-
-/// The photons a map may be asked for: its KdTree indexes them in 32 bits.
-inline constexpr std::size_t max_photons = std::numeric_limits<std::uint32_t>::max() - 1;
-
-inline void validate(const PhotonTracerConfig& config)
-{
-    for (const auto& [name, count] : {std::pair{"global_photons", config.global_photons}, std::pair{"caustic_photons", config.caustic_photons}}) {
-        const double bytes = double(count) * sizeof(Photon);
-        if (count > max_photons)
-            throw_invalid("PhotonTracerConfig ", name, " must be at most ", max_photons, " (a map indexes its photons in 32 bits), got ", count,
-                          " (their records alone would need ", describe_bytes(bytes), ")");
-        require_memory("PhotonTracerConfig " + std::string(name) + " = " + std::to_string(count) + " (its photon records alone)", bytes);
-    }
-    if (config.max_bounces < 0) throw_invalid("PhotonTracerConfig max_bounces must be >= 0, got ", config.max_bounces);
-    if (config.max_medium_bounces < 0) throw_invalid("PhotonTracerConfig max_medium_bounces must be >= 0, got ", config.max_medium_bounces);
-    if (config.dispersion_bands < 1 || config.dispersion_bands > SpectralBands<float>::max_count)
-        throw_invalid("PhotonTracerConfig dispersion_bands must be in [1, ", SpectralBands<float>::max_count, "], got ", config.dispersion_bands);
-}
-
-} // namespace detail
-
-/// The maps one photon tracing gives: the global map (shadow photons in it, flagged) and
-/// the caustic map.
-struct PhotonMaps {
-    PhotonMap global; ///< every photon's diffuse landings (flagged direct, caustic or shadow)
-    PhotonMap caustic; ///< landings after specular bounces only (L S+ D)
-    PhotonMap volume; ///< where photons scattered in a medium (L ... M; empty in a scene without one), volumetric caustics flagged
-};
-
-namespace detail {
-
-/// One light aimed somewhere (everywhere, or at one specular object): a share of a
-/// map's photons in proportion to `power`.
-template <Scalar T>
-struct Emitter {
-    std::size_t light = 0;      ///< its number in the scene's Lights{...}
-    bool aimed = false;         ///< at `target`; else everywhere
-    BoundingSphere<T> target{};
-    Rgb<T> power{};             ///< Light::photon_power of this aim
-};
-
-template <class SceneT, class Air = StraightAir>
-class PhotonTracer {
-public:
-    using T = typename SceneT::scalar_type;
-
-    PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config, const Air& air = {})
-        : scene_(scene), config_((detail::validate(config), config)), bands_(config.dispersion_bands), air_(air)
-    {
-        air_.validate();
-        // A sphere around everything bounded, the air's medium included where it is
-        // bounded: parallel photons start outside it.
-        Aabb<T> lit = scene.bounds();
-        if constexpr (air_scatters<Air>) {
-            if (air.bounds().bounded()) lit = lit.merged(air.bounds());
-        }
-        if (!lit.empty()) {
-            scene_sphere_ = lit.bounding_sphere();
-            has_sphere_ = true;
-        }
-        add_emitters(global_, false, {});
-        // Every light aimed at each bounded object that may scatter by a delta lobe (a
-        // mirror, glass, a glossy lobe's delta part: may_scatter_by_delta), where caustics
-        // and a light tracer's paths begin; not at an index-matched boundary, which makes
-        // no caustic (may_match_index).
-        scene.for_each_object([&]<class Object>(const Object& object) {
-            using M = typename Object::material_type;
-            if constexpr (reflects<M> || transmits<M> || has_glossy<M>) {
-                if (object.bounded && !index_matched(object.material, T(1)) && may_scatter_by_delta(object.material))
-                    add_emitters(targets_, true, bounding_sphere(object.shape));
-            }
-        });
-        drop_nested_targets(targets_);
-        for (const auto& e : global_) global_power_ += max_component(e.power);
-        for (const auto& e : targets_) target_power_ += max_component(e.power);
-        // A light whose power is finite can still overflow here: a parallel light's
-        // irradiance times the scene's cross-section, or the sum over many lights.
-        if (!is_finite(global_power_) || !is_finite(target_power_))
-            throw_invalid("photon emission: the lights' total power overflows (", global_power_, ", ", target_power_,
-                          "); a DirectionalLight's irradiance times the scene's cross-section pi r^2 must be finite");
-    }
-
-    /// Photons [first, last) of the global map, appended to `out`.
-    void trace_global(std::size_t first, std::size_t last, std::vector<Photon>& out) const
-    {
-        PixelSeeds seeds(config_.seed, 0); // every global photon is a sample of "pixel" 0
-        for (std::size_t i = first; i < last; ++i) store(global_, global_power_, config_.global_photons, i, false, seeds, out);
-    }
-
-    /// Photons [first, last) of the caustic map, appended to `out`.
-    void trace_caustic(std::size_t first, std::size_t last, std::vector<Photon>& out) const
-    {
-        PixelSeeds seeds(config_.seed, 1); // and every caustic photon of "pixel" 1
-        for (std::size_t i = first; i < last; ++i) store(targets_, target_power_, config_.caustic_photons, i, true, seeds, out);
-    }
-
-    /// Light paths [first, last) of `count` aimed where the caustic map's photons are,
-    /// each walked to its end: visit(material, vertex, power) at every
-    /// diffuse surface and visit_medium(medium, vertex, power) where it scatters in a
-    /// medium return whether the walk goes on (the light tracer's paths).
-    template <class Visit, class VisitMedium = IgnoreMedia>
-    void walk_aimed(std::size_t first, std::size_t last, std::size_t count, Visit&& visit, VisitMedium&& visit_medium = {}) const
-    {
-        PixelSeeds seeds(config_.seed, 1);
-        for (std::size_t i = first; i < last; ++i) emit(targets_, target_power_, count, i, true, seeds, visit, visit_medium);
-    }
-
-private:
-    /// Photon i of a map of `count`: choose an emitter by its share of the power (the
-    /// photon carries its power / (count p)), let its light place the photon, and walk
-    /// it (random_walk), calling visit(material, vertex, stored power) at each diffuse
-    /// surface. Its numbers are sample i of config.sampler: with Sobol points the choice
-    /// and the point on the light (pair 0), the direction (pair 1) and each bounce are
-    /// stratified over the photons as on a jittered grid, but for any count.
-    template <class Visit, class VisitMedium = IgnoreMedia>
-    void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, PixelSeeds& seeds, Visit&& visit,
-              VisitMedium&& visit_medium = {}) const
-    {
-        if (emitters.empty() || !(total_power > T(0))) return;
-        // Photon i's numbers: sample i of the map's sampler, Sampler(kind, seed, caustic_pass,
-        // i), its seeds kept in `seeds` (photon indices stay below 2^32: check_photon_passes),
-        // then the photon's own PCG stream.
-        Random rng(Sampler(config_.sampler, seeds, static_cast<std::uint32_t>(i)), Pcg32(config_.seed, 2 * i + (caustic_pass ? 1 : 0)));
-        auto [u, v] = rng.uniform2<double>();
-        // The emitter whose share of [0, 1) holds u; u rescaled within that share.
-        const Emitter<T>* e = &emitters.back();
-        double p = 1, start = 0;
-        for (const Emitter<T>& candidate : emitters) {
-            const double share = double(max_component(candidate.power)) / double(total_power);
-            if (u < start + share || &candidate == &emitters.back()) {
-                e = &candidate;
-                p = share;
-                break;
-            }
-            start += share;
-        }
-        u = std::clamp((u - start) / p, 0.0, std::nextafter(1.0, 0.0));
-        const EmittedPhoton<T> photon =
-            scene_.visit_light(e->light, [&](const auto& light) { return prism::emit_photon(light, aim(*e), T(u), T(v), rng); });
-        // Where two targets' cones overlap, a direction is the first target's to carry:
-        // counted by both, the light sent that way would be counted twice.
-        if (e->aimed && aimed_at_earlier_target(emitters, *e, photon.ray)) return;
-        // A light without falloff: the power a photon stores grows with its path squared.
-        const bool without_falloff = photon.without_falloff;
-        random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, WalkLimits{.max_bounces = config_.max_bounces, .max_medium_bounces = config_.max_medium_bounces},
-                    [&]<class M>(const M& material, const WalkVertex<T>& at) {
-                        return visit(material, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
-                    },
-                    IgnoreEscape{}, IgnoreEmitters{},
-                    [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
-                        return visit_medium(medium, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
-                    });
-    }
-
-    /// Store photon i: in the caustic pass only L S+ D, going on past it only by delta lobes.
-    void store(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, PixelSeeds& seeds,
-               std::vector<Photon>& out) const
-    {
-        emit(emitters, total_power, count, i, caustic_pass, seeds, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
-            (void)material;
-            const Crossing<T>& c = at.crossing();
-            // Frosted glass holds no photons (no estimate reads them there: a camera or
-            // gather ray goes through it by its lobe), and light through it on to a surface
-            // is a caustic, as through clear glass.
-            if constexpr (has_glossy<M> && transmits<M>) return caustic_pass && !at.caustic_path() ? Lobes::none : Lobes::all;
-            if (caustic_pass) {
-                if (!at.direct && at.caustic_path()) out.push_back(photon(c, power, at.direction, Photon::caustic));
-                // What a diffuse lobe sends on is the global map's; a delta lobe (a coat
-                // over the diffuse one) may still send a caustic on, and so may a glossy
-                // lobe's delta part (a mix's mirror, a smooth coat), by the lobe's own draw.
-                if constexpr (has_glossy<M>) {
-                    if (at.caustic_path() && glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index)).delta_part()) return Lobes::all;
-                }
-                return (reflects<M> || transmits<M>) && at.caustic_path() ? Lobes::delta : Lobes::none;
-            }
-            std::uint8_t flags = at.direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
-            if (!at.direct && at.caustic_path()) flags |= Photon::caustic;
-            out.push_back(photon(c, power, at.direction, flags));
-            if (at.direct && config_.shadow_photons) store_shadow_photons(c, at.direction, out);
-            return Lobes::all;
-        }, [&](const auto&, const WalkMediumVertex<T>& at, const Rgb<T>& power) {
-            // Where a photon scatters in a medium: a volume photon (split from the surface
-            // ones afterwards). A volumetric caustic (L {S | frosted}+ M) is the caustic
-            // pass's, and its walk ends there; every other path's the global pass's.
-            const bool caustic = !at.direct && at.caustic_path();
-            if (caustic != caustic_pass) return !caustic_pass;
-            const Vec3<float> travelling(at.direction);
-            out.push_back({Vec3<float>(at.point), Rgb<float>(power), -travelling, -travelling,
-                           std::uint8_t(Photon::volume | (caustic ? Photon::caustic : 0))});
-            return !caustic_pass;
-        });
-    }
-
-    /// The photon stored where `travelling` met the surface of crossing c.
-    [[nodiscard]] static Photon photon(const Crossing<T>& c, const Rgb<T>& power, const Vec3<T>& travelling, std::uint8_t flags) noexcept
-    {
-        return {Vec3<float>(c.point), Rgb<float>(power), Vec3<float>(-travelling), Vec3<float>(c.facing_normal()), flags};
-    }
-
-    /// Shadow photons along the straight line on from a direct photon's first hit.
-    void store_shadow_photons(const Crossing<T>& first, const Vec3<T>& d, std::vector<Photon>& out) const
-    {
-        Ray<T> through = spawn_ray(first.point, first.error, first.normal, d);
-        for (int surfaces = 0; surfaces < 8; ++surfaces) {
-            const auto hit = scene_.closest_hit(through, {T(0), infinity<T>});
-            if (!hit) return;
-            const Crossing<T>& c = hit->crossing;
-            const bool diffuse = scene_.visit_material(*hit, [&]<class M>(const M& material) { return scatters_smoothly(material, c, d); });
-            if (diffuse) out.push_back(photon(c, Rgb<T>(T(0)), d, Photon::shadow));
-            through = spawn_ray(c.point, c.error, c.normal, d);
-        }
-    }
-
-    [[nodiscard]] PhotonAim<T> aim(const Emitter<T>& e) const noexcept
-    {
-        return {e.aimed ? &e.target : nullptr, has_sphere_ ? &scene_sphere_ : nullptr, e.power};
-    }
-
-    /// Every light aimed at `target` (or everywhere when not `aimed`), where it sends any power.
-    void add_emitters(std::vector<Emitter<T>>& emitters, bool aimed, const BoundingSphere<T>& target)
-    {
-        for (std::size_t i = 0; i < SceneT::light_count; ++i) {
-            Emitter<T> e{i, aimed, target, {}};
-            e.power = scene_.visit_light(i, [&](const auto& light) { return light.photon_power(aim(e)); });
-            if (max_component(e.power) > T(0)) emitters.push_back(e);
-        }
-    }
-
-    /// Whether a photon of emitter e leaving along `ray` also heads for the target of an
-    /// earlier emitter of the same light (its ray meets that target's sphere).
-    [[nodiscard]] static bool aimed_at_earlier_target(const std::vector<Emitter<T>>& emitters, const Emitter<T>& e, const Ray<T>& ray) noexcept
-    {
-        const Vec3<T> d = normalize(ray.direction);
-        for (const Emitter<T>& other : emitters) {
-            if (&other == &e) return false;
-            if (!other.aimed || other.light != e.light) continue;
-            const Vec3<T> oc = other.target.center - ray.origin;
-            const T along = dot(oc, d), off2 = length_squared(oc) - along * along, r2 = other.target.radius * other.target.radius;
-            if (off2 <= r2 && (along > T(0) || length_squared(oc) <= r2)) return true;
-        }
-        return false;
-    }
-
-    /// Drop the targets whose sphere lies inside another target's (an object nested in a
-    /// glass): every photon aimed at them would be the outer target's to carry.
-    static void drop_nested_targets(std::vector<Emitter<T>>& targets)
-    {
-        std::vector<Emitter<T>> kept;
-        for (std::size_t i = 0; i < targets.size(); ++i) {
-            const BoundingSphere<T>& a = targets[i].target;
-            bool nested = false;
-            for (std::size_t j = 0; j < targets.size() && !nested; ++j) {
-                if (j == i || targets[j].light != targets[i].light) continue;
-                const BoundingSphere<T>& b = targets[j].target;
-                const bool inside = length(a.center - b.center) + a.radius <= b.radius;
-                const bool same = a.center == b.center && a.radius == b.radius;
-                nested = inside && (!same || j < i); // of two equal spheres, keep the first
-            }
-            if (!nested) kept.push_back(targets[i]);
-        }
-        targets = std::move(kept);
-    }
-
-    const SceneT& scene_;
-    PhotonTracerConfig config_;
-    SpectralBands<T> bands_; ///< for photons meeting a dispersive interface
-    Air air_;                ///< the scene's air: photons in it curve in GradedAir
-    BoundingSphere<T> scene_sphere_{}; ///< around everything bounded (when anything is)
-    bool has_sphere_ = false;           ///< whether anything is
-    std::vector<Emitter<T>> global_;  ///< every light aimed everywhere, for the global map
-    T global_power_ = T(0);
-    std::vector<Emitter<T>> targets_; ///< every light aimed at each object that may scatter by a delta lobe: the caustic map's and a light tracer's
-    T target_power_ = T(0);
-};
-
-/// Run `trace(first, last, out)` over [0, count) in fixed blocks on worker threads and
-/// concatenate the blocks in order: the result does not depend on the thread count.
-/// Each worker appends to a vector of its own (no allocation per block: many threads
-/// allocating and first touching large blocks at once wait on each other in the
-/// kernel) and notes where each of its blocks lies.
-template <class Trace>
-std::vector<Photon> trace_in_fixed_blocks(std::size_t count, unsigned threads, Trace&& trace)
-{
-    constexpr std::size_t block = 4096;
-    const std::size_t blocks = (count + block - 1) / block;
-    struct Part {
-        unsigned worker = 0;
-        std::size_t begin = 0, end = 0;
-    };
-    std::vector<Part> parts(blocks);
-    std::vector<std::vector<Photon>> local(workers_for(blocks, threads));
-    parallel_blocks(blocks, threads, [&](std::size_t b, unsigned worker) {
-        std::vector<Photon>& out = local[worker];
-        const std::size_t begin = out.size();
-        trace(b * block, std::min(count, (b + 1) * block), out);
-        parts[b] = {worker, begin, out.size()};
-    });
-    std::size_t total = 0;
-    for (const Part& part : parts) total += part.end - part.begin;
-    std::vector<Photon> all;
-    all.reserve(total);
-    for (const Part& part : parts) {
-        const auto first = local[part.worker].begin();
-        all.insert(all.end(), first + std::ptrdiff_t(part.begin), first + std::ptrdiff_t(part.end));
-    }
-    return all;
-}
-
-} // namespace detail
-
-namespace detail {
-
-[[nodiscard]] inline allocation_error photons_out_of_memory(const PhotonTracerConfig& config)
-{
-    return allocation_error("prism: tracing " + std::to_string(config.global_photons) + " global and " + std::to_string(config.caustic_photons) +
-                            " caustic photons ran out of memory (each stored photon takes " + std::to_string(sizeof(Photon)) +
-                            " bytes, and a photon may be stored at every diffuse bounce)");
-}
-
-} // namespace detail
-
-/// The photons one process of `parts` traces of a pass (a distributed trace's share):
-/// of each map, photon indices [count part / parts, count (part + 1) / parts) of pass
-/// `pass`, in index order and not yet in a tree. Each photon's Sobol point and random
-/// stream come from its index, so the shares of parts 0 to parts - 1, put end to end,
-/// are the photons trace_photons finds, bit for bit.
-struct PhotonShare {
-    std::vector<Photon> global;  ///< this share of the global map's photons
-    std::vector<Photon> caustic; ///< this share of the caustic map's photons
-    std::vector<Photon> volume;  ///< this share of the volume map's photons (the global pass's, then the caustic pass's)
-};
-
-namespace detail {
-
-/// Move the volume photons of `surface` (in order) to the end of `volume`.
-inline void split_volume_photons(std::vector<Photon>& surface, std::vector<Photon>& volume)
-{
-    std::size_t kept = 0;
-    for (const Photon& photon : surface) {
-        if ((photon.flags & Photon::volume) != 0) volume.push_back(photon);
-        else surface[kept++] = photon;
-    }
-    surface.resize(kept);
-}
-
-} // namespace detail
-
-/// Throws std::invalid_argument when passes 0 to `passes` - 1 of `config`'s photons would
-/// reach past photon index 2^32 (photon indices are Sobol indices, 32 bits), naming the
-/// first pass that does: a render of many passes checks its last before it traces its first.
-inline void check_photon_passes(const PhotonTracerConfig& config, std::uint64_t passes)
-{
-    for (const std::size_t count : {config.global_photons, config.caustic_photons})
-        if (count > 0 && passes > 0 && passes - 1 >= (std::uint64_t(1) << 32) / count)
-            detail::throw_invalid("trace_photons pass ", (std::uint64_t(1) << 32) / count, " of ", count,
-                                  " photons reaches past photon index 2^32 (the Sobol sequence's length): at most ", (std::uint64_t(1) << 32) / count,
-                                  " passes of this many photons, asked for ", passes);
-}
-
-template <class SceneT, class Air = StraightAir>
-[[nodiscard]] PhotonShare trace_photon_share(const SceneT& scene, const PhotonTracerConfig& config, const Air& air, std::size_t pass, std::size_t part,
-                                             std::size_t parts)
-{
-    if (parts < 1 || parts >= (std::size_t(1) << 31) || part >= parts)
-        detail::throw_invalid("trace_photon_share part ", part, " of ", parts, ": expected 0 <= part < parts < 2^31");
-    const detail::PhotonTracer<SceneT, Air> tracer(scene, config, air);
-    check_photon_passes(config, pass + 1);
-    // floor(count k / parts) without overflow (parts < 2^31): with count = q parts + r,
-    // it is q k + floor(r k / parts).
-    const auto share_first = [&](std::size_t count, std::size_t k) { return count / parts * k + count % parts * k / parts; };
-    PhotonShare share;
-    try {
-        for (const bool caustic : {false, true}) {
-            const std::size_t count = caustic ? config.caustic_photons : config.global_photons;
-            const std::size_t first = pass * count + share_first(count, part), last = pass * count + share_first(count, part + 1);
-            (caustic ? share.caustic : share.global) =
-                detail::trace_in_fixed_blocks(last - first, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
-                    if (caustic) tracer.trace_caustic(first + a, first + b, out);
-                    else tracer.trace_global(first + a, first + b, out);
-                });
-        }
-        if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
-            detail::split_volume_photons(share.global, share.volume);
-            detail::split_volume_photons(share.caustic, share.volume);
-        }
-    } catch (const std::bad_alloc&) {
-        throw detail::photons_out_of_memory(config);
-    }
-    return share;
-}
-
-/// Trace the global and caustic photon maps of a scene, from its lights: photons
-/// [pass N, (pass + 1) N) of each map's sequence, N its count in `config`. Pass 0 is the
-/// maps; every pass is an independent set of the same size and power (progressive photon
-/// mapping's), since each photon's Sobol point and random stream come from its index.
-/// The trees are built on config.threads threads, the same for any count.
-template <class SceneT, class Air = StraightAir>
-[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config = {}, const Air& air = {}, std::size_t pass = 0)
-{
-    PhotonShare all = trace_photon_share(scene, config, air, pass, 0, 1);
-    PhotonMaps maps;
-    try {
-        maps.global = PhotonMap(std::move(all.global), config.threads);
-        maps.caustic = PhotonMap(std::move(all.caustic), config.threads);
-        if (!all.volume.empty()) maps.volume = PhotonMap(std::move(all.volume), config.threads);
-    } catch (const std::bad_alloc&) {
-        throw detail::photons_out_of_memory(config);
-    }
-    return maps;
-}
-
-} // namespace prism
-
 // ---- prism/core/int128.hpp ----
 // A 128-bit signed integer, two's complement, with only what exact sums need: made from
 // and read as two 64-bit words, negated, added with overflow detected (or as the lower
@@ -11936,6 +9759,720 @@ private:
     std::atomic<std::size_t> rejected_{0};
     std::atomic<bool> overflowed_{false};
 };
+
+} // namespace prism
+
+// ---- prism/medium/graded_index.hpp ----
+// Graded-index media: air whose index of refraction varies in space (mirages, a setting
+// sun flattened by the atmosphere), and the two ways of tracing a ray through it.
+//
+// A ray in a medium of index n(x) follows the ray equation d/ds (n dx/ds) = grad n.
+// With the optical direction T = n dx/ds (a vector of length n) and the parameter t,
+// dt = ds / n, it becomes d^2 x / dt^2 = n grad n = grad(n^2) / 2, which Sharma, Kumar
+// and Ghatak (1982, "Tracing rays through graded-index media: a new method", Applied
+// Optics 21(6)) integrate with a Runge-Kutta-Nystrom step: `sharma_step`. Its error is
+// controlled by step doubling in `AdaptiveStepper`. The classic textbook method,
+// "divide the air into layers and keep bending the light", is `LayeredMedium`: straight
+// segments through flat layers of constant index, refracted by Snell at each boundary.
+//
+// Index fields are policies (IndexField): a stratified linear n(y), n^2 linear in y
+// (whose rays are exact parabolas), an exponential atmosphere, a heated layer over a
+// road, and any callable. Stratified fields vary along y (up).
+
+
+#include <algorithm>
+#include <cmath>
+#include <concepts>
+#include <limits>
+
+namespace prism {
+
+/// An index of refraction that varies in space: `index(p)` and its gradient
+/// `gradient(p)`, both finite and the index > 0 wherever a ray goes.
+template <class F>
+concept IndexField = requires(const F& field, const Vec3<typename F::scalar_type>& p) {
+    requires Scalar<typename F::scalar_type>;
+    { field.index(p) } -> std::same_as<typename F::scalar_type>;
+    { field.gradient(p) } -> std::same_as<Vec3<typename F::scalar_type>>;
+    field.validate();
+};
+
+// Index Field Policies
+
+/// n(y) = n0 + slope y.
+template <Scalar T = double>
+struct LinearIndex {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    T n0 = T(1); ///< index at y = 0
+    T slope = T(0); ///< dn/dy
+
+    /// The index at p: n0 + slope y.
+    [[nodiscard]] constexpr T index(const Vec3<T>& p) const noexcept { return n0 + slope * p.y; }
+    /// The index's gradient, (0, slope, 0) everywhere.
+    [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>&) const noexcept { return {T(0), slope, T(0)}; }
+    /// Throws std::invalid_argument, naming the parameter, for n0 <= 0 or a slope that is not finite.
+    constexpr void validate() const
+    {
+        detail::require_positive("LinearIndex n0", n0);
+        detail::require_finite("LinearIndex slope", slope);
+    }
+};
+
+/// n(y)^2 = a + b y (where a + b y > 0): the field whose rays are exact parabolas,
+/// y(x) = y0 + tan(theta0) x + b x^2 / (4 K^2) with K = n(y0) cos(theta0).
+template <Scalar T = double>
+struct LinearSquareIndex {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    T a = T(1); ///< n^2 at y = 0
+    T b = T(0); ///< d(n^2)/dy
+
+    /// The index at p: sqrt(a + b y).
+    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return std::sqrt(a + b * p.y); }
+    /// The index's gradient: (0, b / 2n, 0).
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept { return {T(0), b / (T(2) * index(p)), T(0)}; }
+    /// Throws std::invalid_argument, naming the parameter, for a <= 0 or a b that is not finite.
+    constexpr void validate() const
+    {
+        detail::require_positive("LinearSquareIndex a", a);
+        detail::require_finite("LinearSquareIndex b", b);
+    }
+};
+
+/// The standard exponential atmosphere: n(h) = 1 + (n0 - 1) e^(-h / H), h = y - ground.
+/// Defaults: sea-level air at 15 C (n0 - 1 = 2.93e-4, visible light) and H = 8.5 km, in
+/// metres.
+template <Scalar T = double>
+struct ExponentialAtmosphere {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    T n0 = T(1.000293); ///< index at the ground
+    T scale_height = T(8500); ///< height over which n - 1 falls by e (metres)
+    T ground = T(0); ///< height of the ground
+
+    /// The index at p: 1 + (n0 - 1) exp(-(y - ground) / scale_height).
+    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return T(1) + (n0 - T(1)) * std::exp(-(p.y - ground) / scale_height); }
+    /// The index's gradient, along y.
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
+    {
+        return {T(0), -(n0 - T(1)) / scale_height * std::exp(-(p.y - ground) / scale_height), T(0)};
+    }
+    /// Throws std::invalid_argument, naming the parameter, for n0 or scale_height <= 0 or a ground that is not finite.
+    constexpr void validate() const
+    {
+        detail::require_positive("ExponentialAtmosphere n0", n0);
+        detail::require_positive("ExponentialAtmosphere scale_height", scale_height);
+        detail::require_finite("ExponentialAtmosphere ground", ground);
+    }
+};
+
+/// Hot air over a road: n(y) = n_air - drop e^(-(y - ground) / thickness). The air at the
+/// road is hotter, so its index is lower by `drop` (about 1e-6 per kelvin: 3e-5 for a
+/// road 30 K above the air), and rays grazing it bend back up (an inferior mirage).
+template <Scalar T = double>
+struct HeatedLayer {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    T n_air = T(1.000293); ///< index of the air far above the ground
+    T drop = T(3e-5); ///< how much lower the index is at the ground
+    T thickness = T(0.3); ///< metres over which the excess heat falls by e
+    T ground = T(0); ///< height of the ground
+
+    /// The index at p: n_air - drop exp(-(y - ground) / thickness).
+    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return n_air - drop * std::exp(-(p.y - ground) / thickness); }
+    /// The index's gradient, along y.
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
+    {
+        return {T(0), drop / thickness * std::exp(-(p.y - ground) / thickness), T(0)};
+    }
+    /// Throws std::invalid_argument, naming the parameter, for n_air or thickness <= 0, or a drop that is not finite or not below n_air.
+    constexpr void validate() const
+    {
+        detail::require_positive("HeatedLayer n_air", n_air);
+        detail::require_finite("HeatedLayer drop", drop);
+        if (!(drop < n_air)) detail::throw_invalid("HeatedLayer drop must be below n_air (", n_air, "), got ", drop);
+        detail::require_positive("HeatedLayer thickness", thickness);
+        detail::require_finite("HeatedLayer ground", ground);
+    }
+};
+
+/// Any index n(p) given as a callable; its gradient by central differences of step h.
+template <Scalar T, class F>
+    requires std::regular_invocable<const F&, const Vec3<T>&>
+struct IndexFunction {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    F function; ///< n(p), any callable
+    T h = T(1e-4); ///< step of the central differences that give the gradient
+
+    /// The index at p: function(p).
+    [[nodiscard]] T index(const Vec3<T>& p) const { return function(p); }
+    /// The index's gradient by central differences of step h.
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const
+    {
+        const T inv = T(1) / (T(2) * h);
+        return {(function(p + Vec3<T>(h, 0, 0)) - function(p - Vec3<T>(h, 0, 0))) * inv,
+                (function(p + Vec3<T>(0, h, 0)) - function(p - Vec3<T>(0, h, 0))) * inv,
+                (function(p + Vec3<T>(0, 0, h)) - function(p - Vec3<T>(0, 0, h))) * inv};
+    }
+    /// Throws std::invalid_argument for h <= 0.
+    constexpr void validate() const { detail::require_positive("IndexFunction h", h); }
+};
+
+static_assert(IndexField<LinearIndex<double>> && IndexField<LinearSquareIndex<float>> && IndexField<ExponentialAtmosphere<double>> &&
+              IndexField<HeatedLayer<double>>);
+
+// Curved Rays
+
+/// A ray inside a graded medium: where it is, and its optical direction n dx/ds (a
+/// vector of length n(position): the unit direction times the local index).
+template <Scalar T>
+struct CurvedRay {
+    Vec3<T> position; ///< where the ray is
+    Vec3<T> optical; ///< the optical direction, n times the unit tangent
+
+    /// The unit tangent of the ray.
+    [[nodiscard]] Vec3<T> direction() const noexcept { return normalize(optical); }
+};
+
+/// The curved ray leaving `ray.origin` along `ray.direction` (any length) in the field.
+template <IndexField F>
+[[nodiscard]] CurvedRay<typename F::scalar_type> curved_ray(const F& field, const Ray<typename F::scalar_type>& ray) noexcept
+{
+    return {ray.origin, field.index(ray.origin) * normalize(ray.direction)};
+}
+
+/// grad(n^2) / 2 = n grad n: the ray's acceleration in the parameter t (dt = ds / n).
+template <IndexField F>
+[[nodiscard]] Vec3<typename F::scalar_type> bending(const F& field, const Vec3<typename F::scalar_type>& p) noexcept
+{
+    return field.index(p) * field.gradient(p);
+}
+
+/// One Runge-Kutta-Nystrom step of dt in t (Sharma et al. 1982, eq. 12), fourth order:
+///   A = dt D(x), B = dt D(x + dt/2 T + dt/8 A), C = dt D(x + dt T + dt/2 B),
+///   x' = x + dt (T + (A + 2B) / 6),  T' = T + (A + 4B + C) / 6,
+/// exact when D is constant (n^2 linear in space). The arc length covered is about n dt.
+template <IndexField F>
+[[nodiscard]] CurvedRay<typename F::scalar_type> sharma_step(const F& field, const CurvedRay<typename F::scalar_type>& ray,
+                                                             typename F::scalar_type dt) noexcept
+{
+    using T = typename F::scalar_type;
+    const Vec3<T>& x = ray.position;
+    const Vec3<T>& t = ray.optical;
+    const Vec3<T> a = dt * bending(field, x);
+    const Vec3<T> b = dt * bending(field, x + (dt / T(2)) * t + (dt / T(8)) * a);
+    const Vec3<T> c = dt * bending(field, x + dt * t + (dt / T(2)) * b);
+    return {x + dt * (t + (a + T(2) * b) / T(6)), t + (a + T(4) * b + c) / T(6)};
+}
+
+/// Sharma steps whose length adapts to keep each step's position error under
+/// `tolerance` (absolute, in scene units), estimated by step doubling: a step of dt
+/// against two of dt / 2, whose difference is 15/16 of the larger one's error for a
+/// fourth-order method; the two half steps are kept (Richardson-extrapolated).
+template <IndexField F>
+class AdaptiveStepper {
+public:
+    /// The field's precision.
+    using T = typename F::scalar_type;
+
+    /// How the stepper controls its error: the tolerance per step and the step sizes it may take.
+    struct Config {
+        T tolerance = T(1e-6);  ///< position error allowed per step
+        T first_step = T(0.1);  ///< the first step's arc length
+        T max_step = T(10);     ///< no step longer than this arc length
+    };
+
+    /// A stepper through `field` (which must outlive it).
+    explicit AdaptiveStepper(const F& field, Config config = {}) : field_(&field), config_(config)
+    {
+        field.validate();
+        detail::require_positive("AdaptiveStepper tolerance", config.tolerance);
+        detail::require_positive("AdaptiveStepper first_step", config.first_step);
+        detail::require_positive("AdaptiveStepper max_step", config.max_step);
+    }
+
+    /// Advance `ray` by one accepted step; `dt` carries the step size from one call to
+    /// the next (start with 0: the first step is then config.first_step long). Returns
+    /// the arc length covered (about n dt); `accepted`, if given, receives the step's dt.
+    T step(CurvedRay<T>& ray, T& dt, T* accepted = nullptr) const noexcept
+    {
+        const T n = length(ray.optical);
+        if (!(dt > T(0))) dt = config_.first_step / n;
+        dt = std::min(dt, config_.max_step / n);
+        for (;;) {
+            const CurvedRay<T> whole = sharma_step(*field_, ray, dt);
+            const CurvedRay<T> half = sharma_step(*field_, sharma_step(*field_, ray, dt / T(2)), dt / T(2));
+            const T error = length(half.position - whole.position) * (T(16) / T(15));
+            const T scale = error > T(0) ? T(0.9) * std::pow(config_.tolerance / error, T(0.2)) : T(4);
+            if (error <= config_.tolerance || dt * n <= std::numeric_limits<T>::epsilon() * (T(1) + max_component(abs(ray.position)))) {
+                const T covered = length(half.position - ray.position);
+                if (accepted != nullptr) *accepted = dt;
+                ray = {half.position + (half.position - whole.position) / T(15), half.optical + (half.optical - whole.optical) / T(15)};
+                dt *= std::clamp(scale, T(0.2), T(4));
+                return covered;
+            }
+            dt *= std::clamp(scale, T(0.1), T(0.9));
+        }
+    }
+
+private:
+    const F* field_;
+    Config config_;
+};
+
+// Flat Layers of Constant Index
+
+/// The air between y = bottom and y = top cut into `layers` flat layers, each of the
+/// field's index at its middle height; a ray goes straight within a layer and refracts
+/// by Snell's law (or reflects totally) at each boundary.
+template <IndexField F>
+class LayeredMedium {
+public:
+    /// The field's precision.
+    using T = typename F::scalar_type;
+
+    /// `layers` flat layers of `field` between heights `bottom` and `top` (which must outlive it); throws for bottom >= top or layers < 1.
+    LayeredMedium(const F& field, T bottom, T top, int layers) : field_(&field), bottom_(bottom), top_(top), layers_(layers)
+    {
+        field.validate();
+        detail::require_finite("LayeredMedium bottom", bottom);
+        detail::require_finite("LayeredMedium top", top);
+        if (!(top > bottom)) detail::throw_invalid("LayeredMedium top must be above bottom (", bottom, "), got ", top);
+        if (layers < 1) detail::throw_invalid("LayeredMedium layers must be >= 1, got ", layers);
+        height_ = (top - bottom) / T(layers);
+    }
+
+    /// The number of layers.
+    [[nodiscard]] int layers() const noexcept { return layers_; }
+
+    /// The layer holding height y (clamped into [0, layers); in floating point first, so a
+    /// far-off or NaN height never overflows the conversion to int).
+    [[nodiscard]] int layer_of(T y) const noexcept
+    {
+        const T layer = std::floor((y - bottom_) / height_);
+        if (!(layer > T(0))) return 0;
+        return layer < T(layers_ - 1) ? static_cast<int>(layer) : layers_ - 1;
+    }
+
+    /// The index of layer i: the field at its middle height (x = z = 0: stratified fields).
+    [[nodiscard]] T index_of(int layer) const noexcept { return field_->index({T(0), bottom_ + (T(layer) + T(0.5)) * height_, T(0)}); }
+
+    /// From `origin` in layer `layer` along the unit `direction`, straight to the layer's
+    /// next boundary and across it (or back, under total internal reflection). Returns
+    /// false when the ray leaves the layers (through the top or the bottom) or runs
+    /// horizontally; then `origin` is where it left.
+    bool step(Vec3<T>& origin, Vec3<T>& direction, int& layer) const noexcept
+    {
+        if (direction.y == T(0)) return false;
+        const bool up = direction.y > T(0);
+        const T boundary = bottom_ + T(layer + (up ? 1 : 0)) * height_;
+        origin = origin + ((boundary - origin.y) / direction.y) * direction;
+        origin.y = boundary;
+        const int next = layer + (up ? 1 : -1);
+        if (next < 0 || next >= layers_) return false;
+        const Vec3<T> facing{T(0), up ? T(-1) : T(1), T(0)};
+        if (const auto r = refraction(direction, facing, index_of(next) / index_of(layer))) {
+            direction = normalize(r->direction);
+            layer = next;
+        } else {
+            direction = reflect(direction, facing);
+        }
+        return true;
+    }
+
+private:
+    const F* field_;
+    T bottom_, top_, height_ = T(1);
+    int layers_;
+};
+
+} // namespace prism
+
+// ---- prism/medium/air.hpp ----
+// The scene's air: uniform (rays go straight, the default), of a varying index
+// (graded-index air: mirages, a flattened setting sun), through which rays curve, or
+// filled with a medium that scatters (FilledAir: fog, haze, murky water around everything,
+// in straight or graded air).
+//
+// GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
+// field must be uniform, and rays go straight there. LayeredAir is flat layers of
+// constant index, refracting at each boundary. How a ray travels through either to the first surface it meets is
+// transport/travel.hpp's.
+
+
+namespace prism {
+
+/// Uniform air of index 1: rays are straight.
+struct StraightAir {
+    /// Rays through it are straight.
+    static constexpr bool curved = false;
+    /// Nothing to check.
+    constexpr void validate() const {}
+};
+
+/// Air filled, within `region` (everywhere by default), with a medium that absorbs and
+/// scatters: the fog a scene stands in, the water around an underwater scene. Outside the
+/// region the air is clear. (An object's inside takes its own medium, its material's
+/// interior.) `Base` is the air the medium fills: straight (the default), or GradedAir or
+/// LayeredAir, through which rays curve (a mirage seen through haze): a walker in it
+/// scatters along the curved path, by the medium's coefficients per unit of the path's
+/// length.
+template <ScatteringMedium M, class Base = StraightAir>
+struct FilledAir {
+    /// The medium's precision.
+    using scalar_type = typename M::scalar_type;
+    /// Rays through it curve where they curve through its base.
+    static constexpr bool curved = Base::curved;
+    /// Light scatters in it.
+    static constexpr bool scatters = true;
+    static_assert(!requires { requires Base::scatters; }, "FilledAir's base is the air it fills: StraightAir, GradedAir or LayeredAir");
+
+    M medium{}; ///< what fills the region
+    Aabb<scalar_type> region = Aabb<scalar_type>::universe(); ///< where the medium is (a box; everywhere by default)
+    Base base{}; ///< the air it fills: straight, or of a varying index
+
+    /// Where the air is not clear: the region, within the medium's own box where it has
+    /// one (a medium of varying density).
+    [[nodiscard]] Aabb<scalar_type> bounds() const noexcept
+    {
+        if constexpr (requires { medium.bounds(); }) {
+            const Aabb<scalar_type> box = medium.bounds();
+            return {component_max(region.lo, box.lo), component_min(region.hi, box.hi)};
+        } else {
+            return region;
+        }
+    }
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad medium or base, or an empty region.
+    void validate() const
+    {
+        medium.validate();
+        if (region.empty()) detail::throw_invalid("FilledAir region must not be empty");
+        base.validate();
+    }
+};
+
+/// Whether the scene's air `Air` scatters light (FilledAir).
+template <class Air>
+inline constexpr bool air_scatters = requires { requires Air::scatters; };
+
+/// Air whose index is `field` inside `region` (uniform outside it); rays through it curve.
+template <IndexField F>
+struct GradedAir {
+    /// The field's precision.
+    using scalar_type = typename F::scalar_type;
+    /// Shorthand for scalar_type.
+    using T = scalar_type;
+    /// Rays through it curve.
+    static constexpr bool curved = true;
+
+    F field{}; ///< the refractive index inside the region
+    Aabb<T> region{};                                   ///< where the index varies
+    typename AdaptiveStepper<F>::Config stepping{};     ///< the stepper's tolerance and step lengths
+    /// A chord that meets a surface is halved (Sharma steps of half the dt) until it is
+    /// at most this long, so the landing point lies on the curve, not on a chord that
+    /// cuts under it (a chord of length L sags by about L^2 / (8 R) from a path of radius R).
+    T landing_chord = T(1e-3);
+    int max_steps = 1000000;                            ///< a ray still in the air after this many steps is lost (background)
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad field, an unbounded or empty region, max_steps < 1, landing_chord <= 0 or bad stepping.
+    void validate() const
+    {
+        field.validate();
+        if (!region.bounded()) detail::throw_invalid("GradedAir region must be a bounded, non-empty box");
+        if (max_steps < 1) detail::throw_invalid("GradedAir max_steps must be >= 1, got ", max_steps);
+        detail::require_positive("GradedAir landing_chord", landing_chord);
+        (void)AdaptiveStepper<F>(field, stepping); // checks the stepping
+    }
+};
+
+/// Layered air: `layers` flat layers between heights `bottom` and `top`, each
+/// of the field's index at its middle height (stratified fields only); a ray goes
+/// straight within a layer and refracts by Snell's law (or reflects totally) at each
+/// boundary; above and below the layers it goes straight. The second policy beside
+/// GradedAir, for comparison: it keeps n cos(theta) exactly but converges only at first
+/// order in the layer height (bench/graded_index.cpp).
+template <IndexField F>
+struct LayeredAir {
+    /// The field's precision.
+    using scalar_type = typename F::scalar_type;
+    /// Shorthand for scalar_type.
+    using T = scalar_type;
+    /// Rays through it bend at the layers' boundaries.
+    static constexpr bool curved = true;
+
+    F field{}; ///< the index field the layers sample at their middle heights
+    T bottom = T(0); ///< height of the lowest layer's bottom
+    T top = T(1); ///< height of the highest layer's top
+    int layers = 100; ///< the number of layers
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad field, top <= bottom or layers < 1.
+    void validate() const { (void)LayeredMedium<F>(field, bottom, top, layers); }
+};
+
+} // namespace prism
+
+// ---- prism/scene/hit.hpp ----
+// Hit: the closest crossing of a ray with a scene, and which object it belongs to.
+
+
+#include <cstdint>
+
+namespace prism {
+
+/// The surface a ray meets first: the crossing (point, normal, side) and which object it is.
+template <Scalar T>
+struct Hit {
+    Crossing<T> crossing{};  ///< where, with the outward normal and whether the ray enters
+    std::uint32_t slot = 0;  ///< the scene slot (compile-time position) of the object
+    std::uint32_t index = 0; ///< the object within its slot
+};
+
+} // namespace prism
+
+// ---- prism/transport/travel.hpp ----
+// How a ray travels through the scene's air to the first surface it meets
+// (first_hit_in_air): straight in StraightAir; in GradedAir it follows the ray equation
+// by AdaptiveStepper's steps, and each step's chord is tested against the scene: the
+// first surface a chord meets is where the ray lands (a chord is within the stepper's
+// tolerance of the true path). Surfaces shade as usual; the rays they send on (any ray
+// back in the air) curve again. Shadow rays stay straight: over the few metres to
+// kilometres a scene spans, air bends light by well under a degree, enough to move an
+// image (the mirage) and too little to move a shadow's edge visibly; tracing the curved
+// path that reaches a light is a boundary-value problem left for later.
+//
+// A caller may watch the path piece by piece (on_piece): every straight piece it takes
+// through the air, in order, up to the surface it lands on; a caller that returns false
+// stops the path there (a walker that scatters in fog filling the air).
+
+
+#include <limits>
+#include <optional>
+#include <type_traits>
+#include <utility>
+
+namespace prism {
+
+namespace detail {
+
+/// A straight piece of a path, tested against the scene a hair past its end: a surface
+/// exactly where one piece ends and the next begins (a floor on a layer boundary) is
+/// otherwise missed by both, the first ending just short of it by rounding, the second
+/// starting on it.
+template <class SceneT>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> hit_on_piece(const SceneT& scene, const Ray<typename SceneT::scalar_type>& piece,
+                                                                           typename SceneT::scalar_type piece_length) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    const T slack = T(64) * std::numeric_limits<T>::epsilon() * (piece_length + max_component(abs(piece.origin)));
+    return scene.closest_hit(piece, {T(0), piece_length + slack});
+}
+
+/// What a path shows a caller that does not watch its pieces: nothing, and it goes on.
+struct AnyPiece {
+    template <Scalar T>
+    constexpr bool operator()(const Ray<T>&, T, T) const noexcept
+    {
+        return true;
+    }
+};
+
+/// The length of a path up to its current piece, told where the path lands.
+template <Scalar T>
+struct PathLength {
+    T travelled = T(0);
+    T* out = nullptr;
+
+    [[nodiscard]] std::optional<Hit<T>> landed(std::optional<Hit<T>> hit) const noexcept
+    {
+        if (hit && out != nullptr) *out = travelled + hit->crossing.t;
+        return hit;
+    }
+};
+
+/// The straight start of a path toward a slab or box of air: the surface it meets before
+/// reaching the box (`hit`), or whether it reaches the box at all and how far away.
+template <Scalar T>
+struct Approach {
+    std::optional<Hit<T>> hit;
+    bool reaches = false;
+    T distance = T(0);
+};
+
+template <class SceneT>
+[[nodiscard]] Approach<typename SceneT::scalar_type> approach(const SceneT& scene, const Aabb<typename SceneT::scalar_type>& box,
+                                                            const Ray<typename SceneT::scalar_type>& segment) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    const Interval<T> inside = box.clip(segment, {T(0), infinity<T>});
+    if (inside.empty()) return {scene.closest_hit(segment, {T(0), infinity<T>}), false, T(0)};
+    if (inside.min > T(0)) return {scene.closest_hit(segment, {T(0), inside.min}), true, inside.min};
+    return {std::nullopt, true, T(0)};
+}
+
+} // namespace detail
+
+/// Where a ray through layered air first meets a surface (see first_hit_through below).
+template <class SceneT, IndexField F, class OnPiece = detail::AnyPiece>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const LayeredAir<F>& air,
+                                                                                const Ray<typename SceneT::scalar_type>& ray,
+                                                                                Ray<typename SceneT::scalar_type>& segment,
+                                                                                typename SceneT::scalar_type* path = nullptr, OnPiece&& on_piece = {}) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    static_assert(std::same_as<T, typename F::scalar_type>, "LayeredAir's field must have the scene's scalar type");
+    const LayeredMedium<F> medium(air.field, air.bottom, air.top, air.layers);
+    segment = {ray.origin, normalize(ray.direction)};
+    detail::PathLength<T> length_so_far{T(0), path};
+    // The last straight piece, to the surface it meets or on forever.
+    const auto last_piece = [&](std::optional<Hit<T>> hit) -> std::optional<Hit<T>> {
+        if (!on_piece(std::as_const(segment), hit ? hit->crossing.t : infinity<T>, length_so_far.travelled)) return std::nullopt;
+        return length_so_far.landed(hit);
+    };
+    const auto to_box = detail::approach(scene, Aabb<T>{{-infinity<T>, air.bottom, -infinity<T>}, {infinity<T>, air.top, infinity<T>}}, segment);
+    if (to_box.hit || !to_box.reaches) return last_piece(to_box.hit);
+    if (to_box.distance > T(0) && !on_piece(std::as_const(segment), to_box.distance, T(0))) return std::nullopt;
+    length_so_far.travelled = to_box.distance;
+    Vec3<T> origin = segment.at(to_box.distance), direction = segment.direction;
+    // Entering through the top or bottom face, the ray starts in the layer it enters.
+    int layer = medium.layer_of(origin.y + (direction.y > T(0) ? T(0.5) : T(-0.5)) * (air.top - air.bottom) / T(air.layers));
+    for (int i = 0; i < 4 * air.layers + 4; ++i) {
+        const Vec3<T> start = origin, heading = direction;
+        const bool inside_layers = medium.step(origin, direction, layer);
+        const T length_now = length(origin - start);
+        segment = {start, heading};
+        if (length_now > T(0)) {
+            if (auto hit = detail::hit_on_piece(scene, segment, length_now)) return last_piece(hit);
+            if (!on_piece(std::as_const(segment), length_now, length_so_far.travelled)) return std::nullopt;
+        }
+        length_so_far.travelled += length_now;
+        if (!inside_layers) {
+            if (heading.y == T(0)) return last_piece(scene.closest_hit(segment, {T(0), infinity<T>})); // level: straight on
+            segment = {origin, direction};
+            return last_piece(scene.closest_hit(segment, {T(0), infinity<T>}));
+        }
+    }
+    return std::nullopt;
+}
+
+/// Where a ray through curved air first meets a surface of the scene, or nothing; on a
+/// hit, `segment` is the straight piece (unit direction) on which it lies, the ray to
+/// shade with, and `path` (if given) receives the length of the whole curved path.
+/// on_piece(piece, length, before) is shown each straight piece of the path in order
+/// (unit direction; its length, infinite for the last if it meets nothing; the path's
+/// length before it), and returns false to stop the path there (then nothing is met).
+template <class SceneT, IndexField F, class OnPiece = detail::AnyPiece>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through(const SceneT& scene, const GradedAir<F>& air,
+                                                                                const Ray<typename SceneT::scalar_type>& ray,
+                                                                                Ray<typename SceneT::scalar_type>& segment,
+                                                                                typename SceneT::scalar_type* path = nullptr, OnPiece&& on_piece = {}) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    static_assert(std::same_as<T, typename F::scalar_type>, "GradedAir's field must have the scene's scalar type");
+    segment = {ray.origin, normalize(ray.direction)};
+    detail::PathLength<T> length_so_far{T(0), path}; // along the path, up to `segment`'s origin
+    // The last straight piece, to the surface it meets or on forever.
+    const auto last_piece = [&](std::optional<Hit<T>> hit) -> std::optional<Hit<T>> {
+        if (!on_piece(std::as_const(segment), hit ? hit->crossing.t : infinity<T>, length_so_far.travelled)) return std::nullopt;
+        return length_so_far.landed(hit);
+    };
+    const auto to_box = detail::approach(scene, air.region, segment);
+    if (to_box.hit || !to_box.reaches) return last_piece(to_box.hit);
+    if (to_box.distance > T(0) && !on_piece(std::as_const(segment), to_box.distance, T(0))) return std::nullopt;
+    length_so_far.travelled = to_box.distance;
+    CurvedRay<T> curved = curved_ray(air.field, Ray<T>{segment.at(to_box.distance), segment.direction});
+    const AdaptiveStepper<F> stepper(air.field, air.stepping);
+    T dt = T(0);
+    for (int i = 0; i < air.max_steps; ++i) {
+        const CurvedRay<T> start = curved;
+        T taken = T(0);
+        stepper.step(curved, dt, &taken);
+        const Vec3<T> chord = curved.position - start.position;
+        const T chord_length = length(chord);
+        if (!(chord_length > T(0))) continue;
+        segment = {start.position, chord / chord_length};
+        if (auto hit = detail::hit_on_piece(scene, segment, chord_length)) {
+            // Home in on the landing point along the curve: halve the step while its
+            // chord is long, keeping the half whose chord meets the surface.
+            CurvedRay<T> from = start;
+            T h = taken;
+            T length_now = chord_length;
+            while (length_now > air.landing_chord && h > T(0)) {
+                h /= T(2);
+                const CurvedRay<T> middle = sharma_step(air.field, from, h);
+                const Vec3<T> first = middle.position - from.position;
+                const T first_length = length(first);
+                if (!(first_length > T(0))) break;
+                const Ray<T> first_segment{from.position, first / first_length};
+                if (auto near = detail::hit_on_piece(scene, first_segment, first_length)) {
+                    segment = first_segment;
+                    hit = near;
+                    length_now = first_length;
+                    continue;
+                }
+                const CurvedRay<T> end = sharma_step(air.field, middle, h);
+                const Vec3<T> second = end.position - middle.position;
+                const T second_length = length(second);
+                if (!(second_length > T(0))) break;
+                const Ray<T> second_segment{middle.position, second / second_length};
+                auto far = detail::hit_on_piece(scene, second_segment, second_length);
+                if (!far) break; // the curve grazes past where the chord met it: keep the chord's hit
+                if (!on_piece(first_segment, first_length, length_so_far.travelled)) return std::nullopt; // passed
+                segment = second_segment;
+                hit = far;
+                from = middle;
+                length_so_far.travelled += first_length;
+                length_now = second_length;
+            }
+            return last_piece(hit);
+        }
+        if (!on_piece(std::as_const(segment), chord_length, length_so_far.travelled)) return std::nullopt;
+        length_so_far.travelled += chord_length;
+        if (!air.region.contains(curved.position)) {
+            // Out of the box: straight from here on.
+            segment = {curved.position, curved.direction()};
+            return last_piece(scene.closest_hit(segment, {T(0), infinity<T>}));
+        }
+    }
+    return std::nullopt;
+}
+
+/// The air through which rays curve: the air itself (GradedAir, LayeredAir), or the air a
+/// medium fills (FilledAir's base).
+template <class Air>
+[[nodiscard]] constexpr const auto& bending_air(const Air& air) noexcept
+{
+    if constexpr (requires { air.base; }) return air.base;
+    else return air;
+}
+
+/// The first surface a ray in the air meets: along the curve in GradedAir or LayeredAir
+/// (or fog filling them), straight in StraightAir (where `segment` is the ray itself).
+/// `path`, if given, receives the length travelled to it. on_piece, if given, is shown
+/// each straight piece of the path (first_hit_through's; in straight air the one piece,
+/// the ray with its direction made unit) and may stop the path (then nothing is met).
+template <class SceneT, class Air, class OnPiece = detail::AnyPiece>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_in_air(const SceneT& scene, const Air& air,
+                                                                               const Ray<typename SceneT::scalar_type>& ray,
+                                                                               Ray<typename SceneT::scalar_type>& segment,
+                                                                               typename SceneT::scalar_type* path = nullptr, OnPiece&& on_piece = {}) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    if constexpr (Air::curved) {
+        return first_hit_through(scene, bending_air(air), ray, segment, path, on_piece);
+    } else {
+        segment = ray;
+        auto hit = scene.closest_hit(ray, {T(0), infinity<T>});
+        if constexpr (!std::is_same_v<std::remove_cvref_t<OnPiece>, detail::AnyPiece>) {
+            const T scale = length(ray.direction);
+            if (!on_piece(Ray<T>{ray.origin, normalize(ray.direction)}, hit ? hit->crossing.t * scale : infinity<T>, T(0))) return std::nullopt;
+        }
+        if (hit && path != nullptr) *path = hit->crossing.t * length(ray.direction);
+        return hit;
+    }
+}
 
 } // namespace prism
 
@@ -13206,27 +11743,40 @@ public:
     /// One point of one emitter, for the shading point p: the emitter by power with u.x
     /// (what is left of it places the point, with u.y). Its estimate is L / pdf where the
     /// front faces p (or the emitter is two-sided), else 0.
-    [[nodiscard]] LightSample<T> sample(const Vec3<T>& p, const Vec2<T>& u) const noexcept
+    [[nodiscard]] LightSample<T> sample(const Vec3<T>& p, const Vec2<T>& u) const noexcept { return sample_point(p, u).sample; }
+
+    /// A light sample and the emitter's point it was drawn at.
+    struct PointSample {
+        LightSample<T> sample; ///< as sample() gives it
+        Hit<T> at;             ///< the emitter's point, its outward normal the crossing's (slot and index the emitter's)
+    };
+
+    /// sample(p, u), with the point it drew (for a bidirectional estimator's weights).
+    [[nodiscard]] PointSample sample_point(const Vec3<T>& p, const Vec2<T>& u) const noexcept
     {
         const auto& table = scene_->emitter_table_;
-        if (table.keys.empty()) return {{T(0), T(0), T(1)}, T(0), Rgb<T>(T(0)), T(1)};
+        if (table.keys.empty()) return {{{T(0), T(0), T(1)}, T(0), Rgb<T>(T(0)), T(1)}, {}};
         const AliasPick<T> pick = table.pick.pick(u.x);
         const detail::ObjectKey key = table.keys[pick.index];
-        return dispatch<SceneT::slot_count>(key.slot, [&]<std::size_t I>(Index<I>) -> LightSample<T> {
+        return dispatch<SceneT::slot_count>(key.slot, [&]<std::size_t I>(Index<I>) -> PointSample {
             if constexpr (SceneT::template slot_emits<I>) {
                 const auto& object = scene_->template object_at<I>(key.index);
                 const auto& material = object.material;
                 const auto& surface = std::get<I>(scene_->slot_emitters_).surfaces[key.index];
                 const SurfacePoint<T> s = sample_toward(surface, p, Vec2<T>(pick.rest, u.y));
+                Hit<T> at;
+                at.crossing = Crossing<T>::flat(T(0), s.point, Vec3<T>(T(0)), s.normal, true);
+                at.slot = std::uint32_t(I);
+                at.index = key.index;
                 Vec3<T> wi = s.point - p;
                 const T distance = length(wi);
                 wi /= distance;
                 const T pdf = s.pdf * pick.probability;
                 const bool front = material.two_sided || dot(s.normal, wi) < T(0);
-                if (!(pdf > T(0)) || !is_finite(pdf) || !(distance > T(0))) return {wi, distance, Rgb<T>(T(0)), T(1)};
-                if (!front) return {wi, distance, Rgb<T>(T(0)), pdf};
+                if (!(pdf > T(0)) || !is_finite(pdf) || !(distance > T(0))) return {{wi, distance, Rgb<T>(T(0)), T(1)}, at};
+                if (!front) return {{wi, distance, Rgb<T>(T(0)), pdf}, at};
                 using M = std::remove_cvref_t<decltype(material)>;
-                return {wi, distance, material.emitted_radiance(detail::emission_point<M>(object.shape, s)) / pdf, pdf};
+                return {{wi, distance, material.emitted_radiance(detail::emission_point<M>(object.shape, s)) / pdf, pdf}, at};
             } else {
                 return {};
             }
@@ -13325,6 +11875,65 @@ public:
         });
     }
 
+    /// A ray of the area lights' emission (their photons' distribution, everywhere): an
+    /// emitter by power with u_pick, a point uniform over its area (u_position), a direction
+    /// cosine-distributed about its normal (u_direction; either side of a two-sided one,
+    /// chosen by u_pick's remainder), with the point as a Hit (for pdf() and emission_pdf()).
+    struct Emitted {
+        EmissionSample<T> emission; ///< the ray and its densities
+        Hit<T> at;            ///< where it leaves, the emitter's outward normal as the crossing's (nothing when there is no emitter: a zero pdf_area)
+    };
+
+    /// See Emitted.
+    [[nodiscard]] Emitted emission(T u_pick, const Vec2<T>& u_position, const Vec2<T>& u_direction) const noexcept
+    {
+        const auto& table = scene_->emitter_table_;
+        if (table.keys.empty()) return {};
+        const AliasPick<T> pick = table.pick.pick(u_pick);
+        const detail::ObjectKey key = table.keys[pick.index];
+        return dispatch<SceneT::slot_count>(key.slot, [&]<std::size_t I>(Index<I>) -> Emitted {
+            if constexpr (SceneT::template slot_emits<I>) {
+                const auto& object = scene_->template object_at<I>(key.index);
+                const auto& surface = std::get<I>(scene_->slot_emitters_).surfaces[key.index];
+                const SurfacePoint<T> s = surface.sample_area(u_position);
+                const BoundingSphere<T> own = bounding_sphere(object.shape);
+                const Vec3<T> error = Vec3<T>(gamma<T>(32) * (max_component(abs(s.point)) + own.radius));
+                const bool two_sided = object.material.two_sided;
+                const bool back = two_sided && pick.rest < T(0.5);
+                const Vec3<T> n = back ? -s.normal : s.normal;
+                const Vec3<T> w = LocalFrame<T>::about(n).to_world(cosine_direction(u_direction.x, u_direction.y));
+                const T cos = dot(w, n);
+                using M = std::remove_cvref_t<decltype(object.material)>;
+                Emitted out;
+                out.emission = {spawn_ray(s.point, error, s.normal, w), object.material.emitted_radiance(detail::emission_point<M>(object.shape, s)),
+                                pick.probability / surface.area(), cos / pi<T> * (two_sided ? T(0.5) : T(1)), cos};
+                out.at.crossing = Crossing<T>::flat(T(0), s.point, error, s.normal, true);
+                out.at.slot = std::uint32_t(I);
+                out.at.index = key.index;
+                return out;
+            } else {
+                return {};
+            }
+        });
+    }
+
+    /// The densities emission() draws a ray leaving `at` (an emitter's point, its outward
+    /// normal the crossing's) along the unit direction `leaving` with.
+    [[nodiscard]] EmissionPdf<T> emission_pdf(const Hit<T>& at, const Vec3<T>& leaving) const noexcept
+    {
+        return dispatch<SceneT::slot_count>(at.slot, [&]<std::size_t I>(Index<I>) -> EmissionPdf<T> {
+            if constexpr (SceneT::template slot_emits<I>) {
+                const auto& emitters = std::get<I>(scene_->slot_emitters_);
+                const bool two_sided = scene_->template object_at<I>(at.index).material.two_sided;
+                const T cos = dot(leaving, at.crossing.normal);
+                const T emitting = two_sided ? std::abs(cos) * T(0.5) : std::max(cos, T(0));
+                return {emitters.probability[at.index] / emitters.surfaces[at.index].area(), emitting / pi<T>};
+            } else {
+                return {};
+            }
+        });
+    }
+
     /// Nothing to check: the objects checked their materials.
     constexpr void validate() const noexcept {}
 
@@ -13404,6 +12013,106 @@ inline constexpr bool lights_of_scalar<Lights<Ls...>, T> = (std::same_as<typenam
 /// A scene's first argument: Lights{...}.
 template <class X>
 concept LightList = detail::is_light_list<X>::value;
+
+} // namespace prism
+
+// ---- prism/scene/shadow.hpp ----
+// How a shadow ray crosses glass: blocked (its light arrives by a caustic map instead), or
+// attenuated by what each dielectric it crosses lets through, and where transmissive
+// objects overlap, walked boundary by boundary in the order of their priorities
+// (medium/nesting.hpp).
+
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+
+namespace prism {
+
+/// How shadow rays treat dielectrics.
+enum class ShadowsThroughGlass : bool {
+    attenuated, ///< light passes, attenuated by the medium and the transmission tint (Whitted)
+    blocked,    ///< glass casts a full shadow: its light arrives by a caustic map instead
+};
+
+namespace detail {
+
+/// Where a shadow ray meets a transmissive object's boundary (or starts inside it), kept
+/// to resolve overlapping objects by priority; a fixed number, no allocation.
+template <Scalar T>
+struct ShadowBoundaries {
+    struct Boundary {
+        T t;
+        std::uint32_t slot;
+        std::uint32_t index;
+        bool entering;
+        bool at_start; ///< the ray starts inside the object (no boundary crossed)
+    };
+    static constexpr std::size_t capacity = 32;
+    std::array<Boundary, capacity> items;
+    std::size_t count = 0;
+    bool overflow = false;
+
+    constexpr void add(const Boundary& b) noexcept
+    {
+        if (count == capacity) overflow = true;
+        else items[count++] = b;
+    }
+
+    /// Sort by t; whether two objects' insides overlap anywhere along the ray.
+    constexpr bool sort_and_find_overlap() noexcept
+    {
+        if (overflow) return false;
+        for (std::size_t i = 1; i < count; ++i)
+            for (std::size_t j = i; j > 0 && items[j].t < items[j - 1].t; --j) std::swap(items[j], items[j - 1]);
+        int depth = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            depth += items[i].entering || items[i].at_start ? 1 : -1;
+            if (depth >= 2) return true;
+        }
+        return false;
+    }
+};
+
+/// A shadow ray through overlapping transmissive objects of `scene`: each stretch
+/// attenuated by the medium of the object it is in (the highest priority), a
+/// transmission tint at each real interface, none at a false one.
+template <class SceneT, Scalar T>
+[[nodiscard]] Rgb<T> transmittance_by_priority(const SceneT& scene, const Ray<T>& ray, T t_max, const ShadowBoundaries<T>& boundaries) noexcept
+{
+    Rgb<T> tr{T(1)};
+    MediumStack media;
+    T previous = T(0);
+    const auto attenuate_to = [&](T t) {
+        if (const Inside* in = media.top()) {
+            scene.visit_material(in->slot, in->index, [&]<class N>(const N& material) {
+                if constexpr (transmits<N>) tr *= transmittance_along(material.medium(), ray, previous, t);
+            });
+        }
+        previous = t;
+    };
+    for (std::size_t i = 0; i < boundaries.count; ++i) {
+        const auto& b = boundaries.items[i];
+        attenuate_to(b.t);
+        scene.visit_material(b.slot, b.index, [&]<class N>(const N& material) {
+            if constexpr (transmits<N>) {
+                const Inside object{b.slot, b.index, nesting_priority(material)};
+                if (b.at_start) {
+                    media = media.entered(object);
+                    return;
+                }
+                const Interface face = nested_interface(media, object, b.entering);
+                if (face.real) tr *= material.transmission_tint();
+                media = face.beyond;
+            }
+        });
+    }
+    attenuate_to(t_max);
+    return tr;
+}
+
+} // namespace detail
 
 } // namespace prism
 
@@ -13487,6 +12196,8 @@ public:
     /// Some material may be an index-matched boundary (may_match_index): shadow rays that
     /// glass blocks still pass it.
     static constexpr bool has_index_matching = detail::any_of({may_match_index<typename Slots::material_type>...});
+    /// Some material disperses (its index depends on the wavelength): a white path splits there.
+    static constexpr bool has_dispersion = detail::any_of({disperses<typename Slots::material_type>...});
     /// Some material's interior scatters light (a Fog): walks sample where they scatter in it.
     static constexpr bool has_scattering_media = detail::any_of({has_scattering_interior<typename Slots::material_type>...});
     /// Some material reads surface coordinates (a texture, a normal map): its crossings take
@@ -14054,6 +12765,2462 @@ Scene(L, Slots...) -> Scene<L, Slots...>;
 
 } // namespace prism
 
+// ---- prism/transport/direct.hpp ----
+// Light arriving from each light at a surface point, by shadow rays: shared by the integrators.
+
+
+#include <array>
+#include <utility>
+
+namespace prism {
+
+/// Shadow rays stop this fraction short of a point light, so a light placed on a
+/// surface is not shadowed by that surface (pbrt's ShadowEpsilon).
+template <Scalar T>
+inline constexpr T shadow_epsilon = T(1e-4);
+
+/// How a shading point samples a light with extent (a delta light is asked once):
+/// `grid` x `grid` stratified samples, each jittered within its stratum by `rng` (at the
+/// strata's centres without one), each carrying 1 / grid^2 of the estimate.
+struct LightSampling {
+    Random* rng = nullptr; ///< jitters each sample in its stratum; null: stratum centres
+    int grid = 1;         ///< samples per side of the unit square
+};
+
+/// The samples one light is asked for: 1 for a delta light, grid^2 for the others.
+template <Light L>
+[[nodiscard]] constexpr int samples_of(const LightSampling& sampling) noexcept
+{
+    return is_delta_light<L> ? 1 : sampling.grid * sampling.grid;
+}
+
+/// g(sample) for each sample `sampling` asks of `light` at p: its one sample for a delta
+/// light; else one per stratum of the grid, its irradiance that stratum's share.
+template <Light L, Scalar T, class G>
+void for_each_light_sample(const L& light, const Vec3<T>& p, const LightSampling& sampling, G&& g)
+{
+    if constexpr (is_delta_light<L>) {
+        g(light.sample(p, Vec2<T>(T(0.5))));
+    } else {
+        const int n_side = sampling.grid;
+        const T side = T(1) / T(n_side), share = side * side;
+        for (int i = 0; i < n_side; ++i)
+            for (int j = 0; j < n_side; ++j) {
+                const auto [ju, jv] = sampling.rng ? sampling.rng->template uniform2<T>() : std::array<T, 2>{T(0.5), T(0.5)};
+                LightSample<T> s = light.sample(p, Vec2<T>((T(i) + ju) * side, (T(j) + jv) * side));
+                s.irradiance *= share;
+                g(s);
+            }
+    }
+}
+
+/// The sides of a surface light is gathered from: the one a ray arrived from (a surface
+/// that reflects), or both (an interface whose lobe also refracts: frosted glass).
+enum class Sides { near, both };
+
+/// For each sample of `light` arriving at the surface on the side the ray arrived from
+/// (or on either side, with Sides::both), call f(sample, v, cos): the sample (its
+/// irradiance already the sample's share of the light's), the shadow ray's transmittance v
+/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface (the
+/// shading normal's: shading_cosine; its absolute value from the far side, where the
+/// shading and the true normal agree on the side). Samples behind the surface, or carrying
+/// nothing, are not visited: they count as occluded. How dielectrics shadow: see
+/// Scene::transmittance. A light that casts its own shadow (has_own_shadow: POV-Ray's
+/// area_light) gives v itself, from shadow rays to its points.
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, Sides Gathered = Sides::near, class SceneT, Light L, Scalar T, class F>
+void for_each_sample_arriving(const SceneT& scene, const L& light, const Crossing<T>& hit, const LightSampling& sampling, F&& f)
+{
+    const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
+    for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
+        T cos = shading_cosine(n_shading, n, s.wi);
+        if constexpr (Gathered == Sides::both) {
+            if (!(cos > T(0))) cos = shading_cosine(-n_shading, -n, s.wi);
+        }
+        if (!(cos > T(0)) || !(max_component(s.irradiance) > T(0))) return;
+        if constexpr (has_own_shadow<L>) {
+            const auto through = [&](const Vec3<T>& point) {
+                const Vec3<T> to = point - hit.point;
+                const T distance = length(to);
+                if (!(distance > T(0))) return Rgb<T>(T(1));
+                return scene.template transmittance<Glass>(spawn_ray(hit.point, hit.error, hit.normal, to / distance), distance * (T(1) - shadow_epsilon<T>));
+            };
+            f(s, light.shadow(through, s.irradiance / pi<T>, sampling.rng), cos);
+        } else {
+            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
+            f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
+        }
+    });
+}
+
+/// For each sample of `light` at a point `p` in a medium (no surface: every direction
+/// counts), call f(sample, v): the sample, its irradiance already its share of the
+/// light's, and v the scene's transmittance along the shadow ray (0 when occluded; the
+/// air's own medium is the caller's, transport/media.hpp's air_transmittance).
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Light L, Scalar T, class F>
+void for_each_sample_in_medium(const SceneT& scene, const L& light, const Vec3<T>& p, const LightSampling& sampling, F&& f)
+{
+    for_each_light_sample(light, p, sampling, [&](const LightSample<T>& s) {
+        if (!(max_component(s.irradiance) > T(0))) return;
+        if constexpr (has_own_shadow<L>) {
+            const auto through = [&](const Vec3<T>& point) {
+                const Vec3<T> to = point - p;
+                const T distance = length(to);
+                if (!(distance > T(0))) return Rgb<T>(T(1));
+                return scene.template transmittance<Glass>(Ray<T>{p, to / distance}, distance * (T(1) - shadow_epsilon<T>));
+            };
+            f(s, light.shadow(through, s.irradiance / pi<T>, sampling.rng));
+        } else {
+            f(s, scene.template transmittance<Glass>(Ray<T>{p, s.wi}, s.distance * (T(1) - shadow_epsilon<T>)));
+        }
+    });
+}
+
+/// for_each_sample_arriving over every light of the scene, its area lights last.
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
+void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const LightSampling& sampling, F&& f)
+{
+    scene.for_each_light([&](const auto& light) { for_each_sample_arriving<Glass>(scene, light, hit, sampling, f); });
+}
+
+/// The same, one sample per light at its strata's centre (delta lights only are exact).
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
+void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, F&& f)
+{
+    for_each_light_arriving<Glass>(scene, hit, LightSampling{}, std::forward<F>(f));
+}
+
+} // namespace prism
+
+// ---- prism/transport/media.hpp ----
+// What the media a path is in (medium/nesting.hpp's MediumStack) do to light on its way:
+// the index on an interface's far side, the attenuation along a segment, the parts of a
+// path that lie in a medium that scatters (an object's interior, or the scene's air when it
+// is FilledAir, straight or curved), and what such air lets through along a shadow ray.
+
+
+#include <optional>
+
+namespace prism {
+
+/// The refractive index of the medium of `object` for light of one wavelength (0: white):
+/// 1 for none (the scene's air) or for an object that does not transmit.
+template <class SceneT>
+[[nodiscard]] typename SceneT::scalar_type index_of(const SceneT& scene, const Inside* object, typename SceneT::scalar_type wavelength_nm) noexcept
+{
+    using T = typename SceneT::scalar_type;
+    if (object == nullptr) return T(1);
+    return scene.visit_material(object->slot, object->index, [&]<class M>(const M& material) -> T {
+        if constexpr (M::transmits)
+            return index_at(material, wavelength_nm);
+        else
+            return T(1);
+    });
+}
+
+/// Light that reached `hit` along `ray` travelled in the medium the ray is in: multiply
+/// by what it lets through over that length. A ray known to be in no object leaving a
+/// dielectric travelled inside it (the camera started there, or no nesting is tracked).
+template <class SceneT, Material M>
+void attenuate_segment(const SceneT& scene, const MediumStack& media, const M& material, const Crossing<typename M::scalar_type>& hit,
+                       const Ray<typename M::scalar_type>& ray, Rgb<typename M::scalar_type>& light) noexcept
+{
+    if (const Inside* in = media.top()) {
+        scene.visit_material(in->slot, in->index, [&]<class N>(const N& medium_material) {
+            // (A medium that scatters was crossed by fly_through_medium, its weight taken.)
+            if constexpr (N::transmits && !has_scattering_interior<N>) light *= transmittance_along(medium_material.medium(), ray, typename M::scalar_type(0), hit.t);
+        });
+    } else {
+        attenuate_inside(material, hit, ray, light);
+    }
+}
+
+/// f(medium, t0, t1) for the part [t0, t1] of `segment` (unit direction, up to t_max: the
+/// surface it meets there, or infinity) that lies in a medium that scatters: all of it in
+/// an object whose interior scatters, the part inside its region in FilledAir; nothing in
+/// a medium that only absorbs (attenuate_segment's) or in clear air.
+template <class SceneT, class Air, Scalar T, class F>
+void for_scattering_medium_along(const SceneT& scene, const Air& air, const MediumStack& media, const Ray<T>& segment, T t_max, F&& f)
+{
+    if (const Inside* in = media.top()) {
+        if constexpr (SceneT::has_scattering_media) {
+            scene.visit_material(in->slot, in->index, [&]<class N>(const N& material) {
+                if constexpr (has_scattering_interior<N>) f(material.medium(), T(0), t_max);
+            });
+        }
+    } else if constexpr (air_scatters<Air>) {
+        const Interval<T> inside = air.bounds().clip(segment, {T(0), t_max});
+        if (!inside.empty()) f(air.medium, inside.min, inside.max);
+    }
+}
+
+/// The first surface a path from `ray` meets in the media it is in (`media`: inside an
+/// object straight, in the air along the air's curve), with `segment` and `path` as
+/// first_hit_in_air's, and f(medium, piece, t0, t1, before) shown, in order along the
+/// way, each part [t0, t1] of a straight piece (unit direction) that lies in a medium
+/// that scatters (for_scattering_medium_along), `before` the path's length up to the
+/// piece's origin. f returns false to stop the path there (a walker that scattered or was
+/// absorbed; then nothing is met); true to go on.
+template <class SceneT, class Air, class F>
+[[nodiscard]] std::optional<Hit<typename SceneT::scalar_type>> first_hit_through_media(const SceneT& scene, const Air& air, const MediumStack& media,
+                                                                                      const Ray<typename SceneT::scalar_type>& ray,
+                                                                                      Ray<typename SceneT::scalar_type>& segment,
+                                                                                      typename SceneT::scalar_type* path, F&& f)
+{
+    using T = typename SceneT::scalar_type;
+    bool stopped = false;
+    const auto on_piece = [&](const Ray<T>& piece, T length, T before) {
+        for_scattering_medium_along(scene, air, media, piece, length, [&](const auto& medium, T t0, T t1) { stopped = !f(medium, piece, t0, t1, before); });
+        return !stopped;
+    };
+    auto hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, path, on_piece) : first_hit_in_air(scene, StraightAir{}, ray, segment, path, on_piece);
+    if (stopped) return std::nullopt;
+    return hit;
+}
+
+/// What the scene's air lets through along `ray` (unit direction) over `distance` (may be
+/// infinite): its medium's transmittance over the part inside its region where it is
+/// FilledAir, 1 in clear air. (Glass and the media inside objects are the scene's
+/// transmittance.)
+template <class Air, Scalar T>
+[[nodiscard]] Rgb<T> air_transmittance(const Air& air, const Ray<T>& ray, T distance) noexcept
+{
+    if constexpr (air_scatters<Air>) {
+        const Interval<T> inside = air.bounds().clip(ray, {T(0), distance});
+        if (inside.empty()) return Rgb<T>(T(1));
+        return transmittance_along(air.medium, ray, inside.min, inside.max);
+    } else {
+        (void)air, (void)ray, (void)distance;
+        return Rgb<T>(T(1));
+    }
+}
+
+/// What the scene's air lets through along a shadow ray from `ray.origin` over `distance`,
+/// which the scene's transmittance<Glass> passes: air_transmittance over the stretches
+/// outside the objects it passes through (Scene::for_each_stretch_outside), whose insides
+/// hold their own media and no air. From inside a ball of smoke, the air beyond it counts;
+/// through one, the air inside it does not.
+template <ShadowsThroughGlass Glass, class SceneT, class Air, Scalar T>
+[[nodiscard]] Rgb<T> air_transmittance(const SceneT& scene, const Air& air, const Ray<T>& ray, T distance) noexcept
+{
+    if constexpr (air_scatters<Air>) {
+        Rgb<T> tr{T(1)};
+        scene.template for_each_stretch_outside<Glass>(ray, distance, [&](T t0, T t1) {
+            const Interval<T> inside = air.bounds().clip(ray, {t0, t1});
+            if (!inside.empty()) tr *= transmittance_along(air.medium, ray, inside.min, inside.max);
+        });
+        return tr;
+    } else {
+        (void)scene, (void)air, (void)ray, (void)distance;
+        return Rgb<T>(T(1));
+    }
+}
+
+} // namespace prism
+
+// ---- prism/transport/path_vertex.hpp ----
+// SurfaceVertex: a path's vertex at a surface, as the bidirectional estimators see it
+// (integrator/bidirectional.hpp): what its material scatters toward any direction, and
+// the densities of drawing that direction from either end of the path.
+//
+// A camera path and a light path meet at vertices: joined by a segment (connection), or
+// found near each other (merging). Each needs, at a vertex, the material's value for a
+// direction the vertex did not draw itself, and for multiple importance sampling the
+// densities of drawing it both ways: forward (the path arrived along d and leaves along
+// wo) and reverse (a path arriving along -wo leaving along -d). Directions are unit and
+// world; densities per steradian. Only a non-delta lobe (diffuse, or glossy and not a
+// mirror) has a value or a density: a mirror or a clean interface is a delta, which no
+// connection or merge can find (`connectible`), and a path's draw there has density 1
+// both ways (its choice's probability, the same each way, cancels in the weights).
+//
+// A light path carries importance (Transport::importance): at a shading normal its value
+// takes Veach's adjoint correction (1997, section 5.3.6), |d.ns| |wo.ng| / (|d.ng| |wo.ns|),
+// as a photon's bounce does (material/scattering.hpp). The lobes are the material's:
+// a diffuse lobe drawn cosine-distributed about the shading normal, a glossy one by its
+// own sample(); a material with a diffuse and a delta lobe (a mirror or an interface
+// beside it) chooses one by their reflectances, as scatter_photon does, and that choice's
+// probability is part of the diffuse lobe's density.
+
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace prism {
+
+/// A vertex's non-delta lobe toward a direction wo: its value (the BSDF, without the
+/// cosine), the shading cosine at wo, and the densities of drawing wo (forward) and of
+/// drawing the reverse of the arriving direction from wo (reverse), per steradian.
+template <Scalar T>
+struct VertexValue {
+    Rgb<T> f{T(0)};       ///< the BSDF toward wo (the adjoint one for importance)
+    T cos = T(0);         ///< |ns . wo|, where wo is on a side the lobe reaches
+    T pdf_forward = T(0); ///< the density the vertex draws wo with
+    T pdf_reverse = T(0); ///< the density a path arriving along -wo draws -d with
+
+    /// Whether the lobe sends nothing toward wo.
+    [[nodiscard]] bool black() const noexcept { return !(max_component(f) > T(0)) || !(cos > T(0)); }
+};
+
+/// A direction a vertex drew, with what the path carries on by (f cos / pdf, or a delta's
+/// weight over its choice's probability) and the densities both ways (1 for a delta).
+template <Scalar T>
+struct VertexSample {
+    Vec3<T> direction;  ///< unit, leaving
+    Rgb<T> weight;      ///< what the path's throughput is multiplied by
+    T pdf_forward;      ///< the density it was drawn with (1 for a delta)
+    T pdf_reverse;      ///< the reverse density (1 for a delta)
+    bool delta;         ///< drawn from a delta lobe
+};
+
+/// A path's vertex on `material` at `hit`, arriving along the unit direction d, carrying
+/// `mode`; `outside_index` is the index of refraction on a transmissive material's outer
+/// side (1 in the scene's air: medium/nesting.hpp).
+template <Material M>
+class SurfaceVertex {
+public:
+    /// The material's precision.
+    using T = typename M::scalar_type;
+
+    static_assert(!(has_diffuse<M> && has_glossy<M>), "a material is a diffuse lobe or a glossy one, not both");
+
+    /// The vertex; the material and crossing must outlive it.
+    SurfaceVertex(const M& material, const Crossing<T>& hit, const Vec3<T>& d, Transport mode, T outside_index = T(1)) noexcept
+        : material_(&material), hit_(&hit), d_(d), mode_(mode), outside_index_(outside_index)
+    {
+    }
+
+    /// Whether the vertex has a non-delta lobe: where connections and merges are made.
+    [[nodiscard]] bool connectible() const noexcept { return scatters_smoothly(*material_, *hit_, d_); }
+
+    /// The non-delta lobe toward the unit direction wo (nothing for a vertex that has none).
+    [[nodiscard]] VertexValue<T> value(const Vec3<T>& wo) const noexcept
+    {
+        VertexValue<T> v;
+        if constexpr (has_diffuse<M>) {
+            const Vec3<T> ns = hit_->facing_shading(), ng = hit_->facing_normal();
+            const T cos_out = shading_cosine(ns, ng, wo), cos_in = shading_cosine(ns, ng, -d_);
+            if (!(cos_out > T(0)) || !(cos_in > T(0))) return v;
+            v.f = diffuse_response(*material_, *hit_).brdf() * correction(wo);
+            v.cos = cos_out;
+            v.pdf_forward = diffuse_share(d_) * cos_out / pi<T>;
+            v.pdf_reverse = diffuse_share(-wo) * cos_in / pi<T>;
+        } else if constexpr (has_glossy<M>) {
+            const auto lobe = glossy_at(*material_, *hit_, d_, glossy_eta(*material_, *hit_, outside_index_));
+            if (lobe.smooth()) return v;
+            v.f = lobe.f(wo, mode_) * correction(wo);
+            v.cos = std::abs(dot(wo, hit_->shading));
+            v.pdf_forward = lobe.pdf(wo);
+            v.pdf_reverse = reverse_pdf(wo);
+        } else {
+            (void)wo;
+        }
+        return v;
+    }
+
+    /// A direction drawn from the vertex's lobes, or nothing where it draws none (its
+    /// lobes are black, or the draw fails a side test).
+    [[nodiscard]] std::optional<VertexSample<T>> sample(Random& rng) const noexcept
+    {
+        using Sample = std::optional<VertexSample<T>>;
+        if constexpr (has_diffuse<M>) {
+            T share = T(1);
+            if constexpr (reflects<M> || transmits<M>) {
+                // One decision over the lobes, each by its reflectance (scatter_photon's).
+                const Shares s = shares(d_);
+                if (!(s.sum > T(0)) || !(s.sum < infinity<T>)) return std::nullopt;
+                const T u = rng.uniform<T>() * s.sum;
+                if (u >= s.diffuse) {
+                    const bool reflected = u < s.diffuse + s.reflected;
+                    if (!reflected && !s.split.refracted) return std::nullopt;
+                    const Rgb<T> weight = reflected ? s.split.kr * (s.sum / s.reflected) : s.split.kt * (s.sum / s.transmitted);
+                    return VertexSample<T>{reflected ? reflect(d_, s.normal) : *s.split.refracted, weight, T(1), T(1), true};
+                }
+                share = s.diffuse / s.sum;
+            }
+            const Vec3<T> ns = hit_->facing_shading(), ng = hit_->facing_normal();
+            if (!(shading_cosine(ns, ng, -d_) > T(0))) return std::nullopt;
+            const Vec3<T> wo = cosine_hemisphere(ns, rng);
+            const VertexValue<T> v = value(wo);
+            if (v.black() || !(v.pdf_forward > T(0))) return std::nullopt;
+            (void)share;
+            return VertexSample<T>{wo, v.f * (v.cos / v.pdf_forward), v.pdf_forward, v.pdf_reverse, false};
+        } else if constexpr (has_glossy<M>) {
+            const auto lobe = glossy_at(*material_, *hit_, d_, glossy_eta(*material_, *hit_, outside_index_));
+            const std::optional<LobeSample<T>> s = lobe.sample(rng, mode_);
+            if (!s) return std::nullopt;
+            if (s->delta) return VertexSample<T>{s->wi, s->weight, T(1), T(1), true};
+            if (!(s->pdf > T(0))) return std::nullopt;
+            return VertexSample<T>{s->wi, s->weight * correction(s->wi), s->pdf, reverse_pdf(s->wi), false};
+        } else if constexpr (reflects<M> || transmits<M>) {
+            Rgb<T> weight{T(1)};
+            const auto next = scatter_photon<Transport::radiance>(*material_, *hit_, d_, weight, rng, T(0), outside_index_);
+            if (!next) return std::nullopt;
+            return VertexSample<T>{next->direction, weight, T(1), T(1), true};
+        } else {
+            (void)rng;
+            return Sample{};
+        }
+    }
+
+private:
+    /// The shares of a material's lobes for a path arriving along `arriving`: the diffuse
+    /// lobe's photon reflectance, the mirror's and the interface's, each by its largest
+    /// channel (scatter_photon's decision), and the split they come from.
+    struct Shares {
+        T diffuse = T(0), reflected = T(0), transmitted = T(0), sum = T(0);
+        SpecularSplit<T> split{};
+        Vec3<T> normal{};
+    };
+
+    [[nodiscard]] Shares shares(const Vec3<T>& arriving) const noexcept
+        requires(has_diffuse<M> && (reflects<M> || transmits<M>))
+    {
+        Shares s;
+        s.normal = delta_normal(*material_, arriving, *hit_, T(0), outside_index_);
+        s.split = delta_split(*material_, arriving, s.normal, hit_->entering, hit_->point, T(0), outside_index_);
+        s.diffuse = max_component(diffuse_response(*material_, *hit_).photon_reflectance());
+        s.reflected = max_component(s.split.kr);
+        s.transmitted = s.split.refracted ? max_component(s.split.kt) : T(0);
+        s.sum = s.diffuse + s.reflected + s.transmitted;
+        return s;
+    }
+
+    /// The probability of choosing the diffuse lobe for a path arriving along `arriving`
+    /// (1 for a material with no other).
+    [[nodiscard]] T diffuse_share(const Vec3<T>& arriving) const noexcept
+    {
+        if constexpr (has_diffuse<M> && (reflects<M> || transmits<M>)) {
+            const Shares s = shares(arriving);
+            return s.sum > T(0) ? s.diffuse / s.sum : T(0);
+        } else {
+            (void)arriving;
+            return T(1);
+        }
+    }
+
+    /// Veach's adjoint correction for importance at a shading normal, toward wo (1 for
+    /// radiance and for a surface that shades flat).
+    [[nodiscard]] T correction(const Vec3<T>& wo) const noexcept
+    {
+        if (mode_ == Transport::radiance || hit_->shades_flat()) return T(1);
+        const T c = (std::abs(dot(d_, hit_->shading)) * std::abs(dot(wo, hit_->normal))) / (std::abs(dot(d_, hit_->normal)) * std::abs(dot(wo, hit_->shading)));
+        return c < infinity<T> ? c : T(0);
+    }
+
+    /// A glossy lobe's density of drawing -d for a path arriving along -wo (from wo's
+    /// side of the surface: the other side's indices for a refraction).
+    [[nodiscard]] T reverse_pdf(const Vec3<T>& wo) const noexcept
+        requires(has_glossy<M>)
+    {
+        Crossing<T> other = *hit_;
+        other.entering = dot(wo, hit_->normal) > T(0);
+        return glossy_at(*material_, other, -wo, glossy_eta(*material_, other, outside_index_)).pdf(-d_);
+    }
+
+    const M* material_;
+    const Crossing<T>* hit_;
+    Vec3<T> d_;
+    Transport mode_;
+    T outside_index_;
+};
+
+} // namespace prism
+
+// ---- prism/integrator/bidirectional.hpp ----
+// Bidirectional: bidirectional path tracing (BDPT) and vertex connection and merging
+// (VCM), one estimator of passes.
+//
+// Each pass traces N light subpaths (a light chosen by power, its emission drawn with
+// known densities: light/light.hpp's Emission) and one camera subpath per pixel, and
+// adds every way of completing a path from the two (Veach 1997, chapter 10):
+//   s = 0        the camera path meets a light (an area or environment light);
+//   s = 1        a camera vertex takes a light sample (next-event estimation);
+//   s >= 2, t >= 2  a camera vertex is joined to a vertex of a light path;
+//   t = 1        a light path's vertex is joined to the camera (light tracing: a splat);
+// s and t are the vertices each subpath gives, so a path of k segments has s + t = k + 1.
+// VCM adds merging (Georgiev et al. 2012; Hachisuka et al. 2012): a camera vertex
+// gathers the light vertices within a radius of it, as progressive photon mapping does,
+// the radius shrinking from pass to pass (r_i = r_0 i^((alpha - 1) / 2)). Every
+// strategy of a path is weighted by the balance heuristic over all of them, computed
+// as the subpaths are traced from three running quantities per vertex (dVCM, dVC, dVM:
+// Georgiev's technical report "Implementing vertex connection and merging", 2012;
+// SmallVCM's layout). A connection goes only through vertices with a non-delta lobe
+// (transport/path_vertex.hpp); a delta vertex is crossed by the subpaths themselves.
+// So with a point light or the sun, the paths E S+ D S+ L (a caustic seen in a mirror
+// or through glass), which no connection can join, are found by merging alone, and VCM
+// is the one unbiased-in-the-limit estimator that renders them.
+//
+// The weights count the densities of the subpaths' draws without their Russian
+// roulette: any weights that sum to 1 over a path's strategies keep every estimate
+// unbiased, and these do, the same functions of the path for every strategy.
+// Deterministic: light path i of pass p draws from its own stream, each camera sample
+// from the render's sampler, splats go to exact sums per thread; the same bits for any
+// thread count, crop or range of passes.
+//
+// Scope: surfaces in clear, straight air (nested dielectrics, index-matched boundaries and
+// absorbing interiors included); a scene with scattering media, dispersion, graded air or
+// a light without falloff is refused at compile time or by the constructor.
+
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <variant>
+#include <vector>
+
+namespace prism {
+
+/// Which strategies a Bidirectional estimator combines.
+enum class BidirectionalMethod {
+    bdpt, ///< connections only: bidirectional path tracing
+    vcm,  ///< connections and merging: vertex connection and merging
+};
+
+/// One strategy (s, t): s vertices from the light, t from the camera (a path of s + t - 1 segments).
+struct Strategy {
+    int s = 0; ///< light vertices (0: the camera path met a light)
+    int t = 0; ///< camera vertices (1: light tracing)
+};
+
+/// A Bidirectional estimator's settings.
+struct BidirectionalConfig {
+    BidirectionalMethod method = BidirectionalMethod::vcm; ///< connections only, or with merging
+    /// Segments a path may have, from the camera to the light (1: lights seen directly;
+    /// 2: direct light; ...). Every prism estimator counts its depth this way.
+    int max_length = 64;
+    /// Segments a subpath takes before Russian roulette on its throughput may end it.
+    int roulette_length = 3;
+    /// The first pass's merging radius in scene units; 0: 1/300 of the radius of the
+    /// sphere around the scene (SmallVCM's 0.003).
+    double radius = 0.0;
+    /// In (0, 1): how much of the radius's area each pass keeps (Knaus and Zwicker 2011's alpha).
+    double alpha = 0.75;
+    /// Light subpaths per pass; 0: one per pixel of the image.
+    std::size_t light_paths = 0;
+    /// Only this strategy's estimates (connections only; merges count none): for tests,
+    /// and to see what each strategy brings. `weighted`: with its MIS weight (the
+    /// strategies' images then add up to the whole), else alone (each an unbiased estimate
+    /// of the paths it can find).
+    std::optional<Strategy> only{};
+    bool weighted = true; ///< see `only`
+};
+
+/// Bidirectional path tracing and vertex connection and merging of `scene` (an integrator
+/// of passes: render/render.hpp's PassEstimator).
+template <class SceneT>
+class Bidirectional {
+public:
+    /// The scene's precision.
+    using scalar_type = typename SceneT::scalar_type;
+    /// Shorthand for scalar_type.
+    using T = scalar_type;
+
+    static_assert(!SceneT::has_scattering_media, "Bidirectional renders surfaces only: a scene with a scattering medium needs the PathTracer or a PhotonMapper");
+    static_assert(!SceneT::has_dispersion, "Bidirectional: a dispersive material's wavelengths are not traced yet");
+
+    /// The estimator of `scene` (which must outlive it); throws std::invalid_argument,
+    /// naming the parameter, for a bad setting, a dispersive material or a light without
+    /// falloff (POV-Ray's fade_power 0, which no light path can carry).
+    explicit Bidirectional(const SceneT& scene, BidirectionalConfig config = {}) : scene_(&scene), config_(config)
+    {
+        scene.validate();
+        if (config.max_length < 1) detail::throw_invalid("BidirectionalConfig max_length must be >= 1, got ", config.max_length);
+        if (config.roulette_length < 0) detail::throw_invalid("BidirectionalConfig roulette_length must be >= 0, got ", config.roulette_length);
+        if (!(config.radius >= 0.0 && config.radius < std::numeric_limits<double>::infinity()))
+            detail::throw_invalid("BidirectionalConfig radius must be finite and >= 0, got ", config.radius);
+        if (!(config.alpha > 0.0 && config.alpha < 1.0)) detail::throw_invalid("BidirectionalConfig alpha must be in (0, 1), got ", config.alpha);
+        if (config.only && (config.only->s < 0 || config.only->t < 1))
+            detail::throw_invalid("BidirectionalConfig only must have s >= 0 and t >= 1, got (", config.only->s, ", ", config.only->t, ")");
+        scene.for_each_light([&]<class L>(const L& light) {
+            static_assert(!has_own_shadow<L>, "Bidirectional: a light that casts its own shadow (PointGridLight, POV-Ray's area_light) has no emission to trace");
+            if constexpr (std::same_as<L, PointLight<T>>)
+                if (light.falloff != Falloff::inverse_square) detail::throw_invalid("Bidirectional: a PointLight without falloff (POV-Ray's fade_power 0) has no physical emission");
+        });
+        const Aabb<T> box = scene.bounds();
+        if (!box.empty()) sphere_ = box.bounding_sphere();
+        if (!(sphere_.radius > T(0))) sphere_.radius = T(1);
+        // The lights by power, for the light paths.
+        std::vector<double> weights;
+        const PhotonAim<T> everywhere{nullptr, &sphere_};
+        scene.for_each_light([&](const auto& light) {
+            const Rgb<T> power = light.photon_power(everywhere);
+            weights.push_back(double(power.x + power.y + power.z));
+        });
+        double total = 0.0;
+        for (const double w : weights) total += w;
+        if (!(total > 0.0) || !(total < std::numeric_limits<double>::infinity()))
+            detail::throw_invalid("Bidirectional: the scene's lights emit no finite power (", total, ")");
+        double sum = 0.0;
+        for (const double w : weights) {
+            light_probability_.push_back(T(w / total));
+            sum += w / total;
+            light_cdf_.push_back(T(sum));
+        }
+    }
+    Bidirectional(const SceneT&& scene, BidirectionalConfig config = {}) = delete;
+
+    /// The settings.
+    [[nodiscard]] const BidirectionalConfig& config() const noexcept { return config_; }
+
+    /// The first pass's merging radius (BidirectionalConfig::radius, or its default from the scene's size).
+    [[nodiscard]] T first_radius() const noexcept { return config_.radius > 0.0 ? T(config_.radius) : sphere_.radius * T(0.003); }
+
+    /// Passes config.passes of config.spp: each one camera sample per pixel of the window
+    /// (its weight) and the splats of its light paths there.
+    void add_passes(Accumulation& sums, const Camera<T>& camera, const RenderConfig& config) const
+    {
+        const PassRange passes = detail::render_passes(config);
+        const CameraRays<T> rays = camera.rays(config.width, config.height);
+        const PixelWindow window = detail::render_window(config);
+        if (sums.width() != config.width || sums.height() != config.height || !sums.window().contains(window))
+            detail::throw_invalid("Bidirectional: the Accumulation does not hold the RenderConfig's window");
+        const std::size_t paths = config_.light_paths > 0 ? config_.light_paths : std::size_t(config.width) * std::size_t(config.height);
+        if (paths >= std::numeric_limits<std::uint32_t>::max()) detail::throw_invalid("Bidirectional: ", paths, " light paths a pass overflow a 32-bit index");
+        for (std::uint64_t pass = passes.first; pass < passes.last; ++pass) {
+            const LightPaths light = trace_light_paths(sums, rays, window, config, pass, paths);
+            const CameraPaths eye{this, &light, &rays};
+            RenderConfig pass_render = config;
+            // Pass p takes each pixel's sample p of one sequence (per-pixel Sobol under
+            // zsobol, whose layout a part rendered on its own could not know: progressive.hpp).
+            if (pass_render.sampler == SamplerKind::zsobol) pass_render.sampler = SamplerKind::sobol;
+            pass_render.spp = int(std::min<std::uint64_t>(passes.last, std::uint64_t(std::numeric_limits<int>::max())));
+            pass_render.passes = {pass, pass + 1};
+            pass_render.seconds = 0;
+            pass_render.progress = false;
+            pass_render.single_sample_at_centre = false;
+            render_into(sums, camera, eye, pass_render);
+        }
+    }
+
+private:
+    /// A light subpath's vertex with a non-delta lobe, kept for connections and merges.
+    struct LightVertex {
+        Hit<T> hit;          ///< where
+        Vec3<T> d;           ///< unit, the direction the light path arrived along
+        Rgb<T> beta;         ///< its throughput: the light's power estimate carried to here
+        T dvcm, dvc, dvm;    ///< the MIS quantities (Georgiev's report, section 5)
+        T outside_index;     ///< a transmissive material's outer index
+        int length;          ///< segments from the light
+    };
+
+    /// A pass's light subpaths: their vertices path by path, and VCM's tree of them.
+    struct LightPaths {
+        std::vector<LightVertex> vertices;
+        std::vector<std::uint32_t> ends; ///< path i's vertices are [ends[i], ends[i + 1])
+        std::vector<std::array<T, 3>> points;
+        std::optional<KdTree<ArrayPoints<T, 3>>> tree;
+        T count = T(0);          ///< N, the light paths traced
+        T radius = T(0);         ///< the merging radius
+        T mis_vm = T(0);         ///< eta_VCM = pi r^2 N (0 without merging): merging's weight against a connection
+        T mis_vc = T(0);         ///< 1 / eta_VCM (0 without connections)
+        T vm_normalization = T(0); ///< 1 / (pi r^2 N)
+    };
+
+    /// A pass's camera side, a RayEstimator for render_into.
+    struct CameraPaths {
+        using scalar_type = T;
+        const Bidirectional* owner;
+        const LightPaths* light;
+        const CameraRays<T>* rays;
+        [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Random& rng) const noexcept { return owner->camera_path(ray, rng, *light, *rays); }
+    };
+
+    /// A subpath's running state: throughput and the MIS quantities.
+    struct PathState {
+        Rgb<T> beta;
+        T dvcm, dvc, dvm;
+        int length = 0;         ///< segments so far
+        bool specular = true;   ///< every scattering so far was a delta
+    };
+
+    /// Whether a contribution of strategy (s, t) counts, and with which of its weights.
+    [[nodiscard]] bool counts(int s, int t) const noexcept { return !config_.only || (config_.only->s == s && config_.only->t == t); }
+    [[nodiscard]] T weighed(T w) const noexcept { return config_.only && !config_.weighted ? T(1) : w; }
+
+    [[nodiscard]] static T cube(T x) noexcept { return x * x * x; }
+
+    /// The image plane's density of the camera's ray along unit w, per steradian: 1 / (A cos^3).
+    [[nodiscard]] static T camera_pdf(const CameraRays<T>& rays, const Vec3<T>& w) noexcept
+    {
+        const Vec3<T> forward = normalize(cross(rays.pixel_right, rays.pixel_down));
+        const T cos = dot(w, forward);
+        return cos > T(0) ? T(1) / (rays.pixel_area() * cube(cos)) : T(0);
+    }
+
+    /// Walk a subpath from `ray` (starting inside `media`), calling on_vertex(material,
+    /// hit, vertex, d, distance, outside_index) at every surface that is a vertex (false
+    /// and index-matched interfaces are crossed; d the unit direction it arrived along,
+    /// `distance` the length since the last vertex), which returns the direction drawn
+    /// there (nothing ends the walk), and on_escape(ray) when the path leaves the scene.
+    /// `beta` takes what the objects' interiors and index-matched boundaries let through.
+    template <class OnVertex, class OnEscape>
+    void walk(Ray<T> ray, MediumStack media, Rgb<T>& beta, Transport mode, Random& rng, OnVertex&& on_vertex, OnEscape&& on_escape) const
+    {
+        T distance = T(0);
+        for (int bounce = 0;; ++bounce) {
+            rng.bounce(bounce);
+            const std::optional<Hit<T>> hit = scene_->closest_hit(ray, Interval<T>{T(0), infinity<T>});
+            if (!hit) {
+                on_escape(ray);
+                return;
+            }
+            const Crossing<T>& c = hit->crossing;
+            distance += c.t;
+            const bool go_on = scene_->visit_material(*hit, [&]<class M>(const M& material) -> bool {
+                attenuate_segment(*scene_, media, material, c, ray, beta);
+                [[maybe_unused]] std::conditional_t<transmits<M>, Interface, std::monostate> face{};
+                T outside_index = T(1);
+                if constexpr (transmits<M>) {
+                    face = nested_interface(media, {hit->slot, hit->index, nesting_priority(material)}, c.entering);
+                    if (!face.real) {
+                        ray = spawn_ray(c.point, c.error, c.normal, ray.direction);
+                        media = face.beyond;
+                        return true;
+                    }
+                    outside_index = T(index_of(*scene_, outside_of(media, face, c.entering), T(0)));
+                }
+                if constexpr (may_match_index<M>) {
+                    if (material.index_matched(outside_index)) {
+                        beta *= material.transmission_tint();
+                        ray = spawn_ray(c.point, c.error, c.normal, ray.direction);
+                        media = face.beyond;
+                        return true;
+                    }
+                }
+                const SurfaceVertex<M> vertex(material, c, ray.direction, mode, outside_index);
+                const std::optional<Vec3<T>> next = on_vertex(material, *hit, vertex, ray.direction, distance, outside_index);
+                if (!next) return false;
+                if constexpr (transmits<M>) {
+                    if (dot(*next, c.normal) * dot(ray.direction, c.normal) > T(0)) media = face.beyond; // refracted
+                }
+                ray = spawn_ray(c.point, c.error, c.normal, *next);
+                distance = T(0);
+                return true;
+            });
+            if (!go_on) return;
+        }
+    }
+
+    /// A subpath's MIS quantities at a vertex it met after `distance` along d, where the
+    /// true normal is n: the report's (31)-(33), completed now the segment is known.
+    static void arrive(PathState& state, T distance2, T cos) noexcept
+    {
+        state.dvcm *= distance2;
+        state.dvcm /= cos;
+        state.dvc /= cos;
+        state.dvm /= cos;
+    }
+
+    /// Scatter a subpath at a vertex: draw the next direction, update the throughput and
+    /// the MIS quantities (the report's (34)-(36), or (53)-(55) for a delta), and play
+    /// Russian roulette past roulette_length (outside the weights). Nothing: it ends.
+    template <class M>
+    [[nodiscard]] std::optional<Vec3<T>> scatter(const SurfaceVertex<M>& vertex, const Crossing<T>& c, PathState& state, const LightPaths& light,
+                                                 Random& rng) const noexcept
+    {
+        const std::optional<VertexSample<T>> s = vertex.sample(rng);
+        if (!s || !(max_component(s->weight) > T(0)) || !(max_component(s->weight) < infinity<T>)) return std::nullopt;
+        const T cos_out = std::abs(dot(s->direction, c.normal));
+        if (s->delta) {
+            state.dvcm = T(0);
+            state.dvc *= cos_out;
+            state.dvm *= cos_out;
+        } else {
+            const T g = cos_out / s->pdf_forward;
+            state.dvc = g * (state.dvc * s->pdf_reverse + state.dvcm + light.mis_vm);
+            state.dvm = g * (state.dvm * s->pdf_reverse + state.dvcm * light.mis_vc + T(1));
+            state.dvcm = T(1) / s->pdf_forward;
+            state.specular = false;
+        }
+        state.beta *= s->weight;
+        if (state.length >= config_.roulette_length) {
+            // Roulette by how much of the throughput this scattering kept (at most 1).
+            const T keep = std::min(T(1), max_component(s->weight));
+            if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return std::nullopt;
+            state.beta /= keep;
+        }
+        return s->direction;
+    }
+
+    /// The pass's light subpaths: traced, their vertices kept (and VCM's tree built), and
+    /// their light-tracing splats (t = 1) added to `sums` in the window.
+    [[nodiscard]] LightPaths trace_light_paths(Accumulation& sums, const CameraRays<T>& rays, const PixelWindow& window, const RenderConfig& config,
+                                               std::uint64_t pass, std::size_t count) const
+    {
+        LightPaths light;
+        light.count = T(count);
+        const bool merging = config_.method == BidirectionalMethod::vcm;
+        light.radius = T(double(first_radius()) * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)));
+        light.radius = std::max(light.radius, sphere_.radius * T(1e-7));
+        const T eta = pi<T> * light.radius * light.radius * light.count;
+        light.mis_vm = merging ? eta : T(0);
+        light.mis_vc = T(1) / eta;
+        light.vm_normalization = T(1) / eta;
+        // Blocks of paths, each into its own list (joined in order) and its worker's splats.
+        constexpr std::size_t block = 4096;
+        const std::size_t blocks = (count + block - 1) / block;
+        std::vector<std::vector<LightVertex>> lists(blocks);
+        std::vector<std::vector<std::uint32_t>> lengths(blocks);
+        std::vector<Accumulation> buffers;
+        const unsigned workers = detail::workers_for(blocks, config.threads);
+        buffers.reserve(workers);
+        for (unsigned k = 0; k < workers; ++k) buffers.emplace_back(config.width, config.height, window);
+        const std::uint64_t seed = detail::sample_seed(config.seed ^ 0x9e3779b97f4a7c15ULL, pass);
+        detail::parallel_blocks(blocks, config.threads, [&](std::size_t b, unsigned worker) {
+            for (std::size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
+                const std::size_t before = lists[b].size();
+                Random rng(seed, std::uint64_t(i));
+                light_path(rng, light, rays, window, lists[b], buffers[worker]);
+                lengths[b].push_back(std::uint32_t(lists[b].size() - before));
+            }
+        });
+        for (const Accumulation& buffer : buffers) sums += buffer;
+        light.ends.reserve(count + 1);
+        light.ends.push_back(0);
+        for (std::size_t b = 0; b < blocks; ++b) {
+            light.vertices.insert(light.vertices.end(), lists[b].begin(), lists[b].end());
+            for (const std::uint32_t n : lengths[b]) light.ends.push_back(light.ends.back() + n);
+        }
+        if (merging && !light.vertices.empty()) {
+            light.points.reserve(light.vertices.size());
+            for (const LightVertex& v : light.vertices) light.points.push_back({v.hit.crossing.point.x, v.hit.crossing.point.y, v.hit.crossing.point.z});
+            light.tree.emplace(ArrayPoints<T, 3>{light.points}, config.threads);
+        }
+        return light;
+    }
+
+    /// One light subpath: a light by power, its emission, then the walk; each vertex with
+    /// a non-delta lobe kept in `out` and joined to the camera.
+    void light_path(Random& rng, const LightPaths& light, const CameraRays<T>& rays, const PixelWindow& window, std::vector<LightVertex>& out,
+                    Accumulation& splats) const
+    {
+        const T u_light = rng.uniform<T>();
+        std::size_t chosen = 0;
+        while (chosen + 1 < light_cdf_.size() && !(u_light < light_cdf_[chosen])) ++chosen;
+        const T q = light_probability_[chosen];
+        const auto [a, b] = rng.uniform2<T>();
+        const auto [u, v] = rng.uniform2<T>();
+        const T u_pick = rng.uniform<T>();
+        EmissionSample<T> e;
+        std::optional<Hit<T>> source; // an area light's point
+        bool delta_light = true;
+        scene_->visit_light(chosen, [&]<class L>(const L& l) {
+            delta_light = is_delta_light<L>;
+            if constexpr (requires { l.emission(u_pick, Vec2<T>(a, b), Vec2<T>(u, v)).at; }) {
+                const auto emitted = l.emission(u_pick, Vec2<T>(a, b), Vec2<T>(u, v));
+                e = emitted.emission;
+                source = emitted.at;
+            } else {
+                e = l.emission(sphere_, Vec2<T>(a, b), Vec2<T>(u, v));
+            }
+        });
+        const T pdf = q * e.pdf_area * e.pdf_direction;
+        if (!(pdf > T(0)) || !(pdf < infinity<T>) || !(e.cos > T(0)) || !(max_component(e.radiance) > T(0))) return;
+        PathState state;
+        state.beta = e.radiance * (e.cos / pdf);
+        // (31)-(33) begun, delta lights as (48)-(50): the light sample that would find the
+        // light's vertex over the emission's density; a delta light's vertex no bounce finds.
+        state.dvcm = T(1) / pdf;
+        if (e.from_infinity && !delta_light) state.dvcm *= e.pdf_direction; // an environment's sample is by direction
+        state.dvc = delta_light ? T(0) : (e.from_infinity ? T(1) : e.cos) / pdf;
+        state.dvm = state.dvc * light.mis_vc;
+        walk(e.ray, scene_->media_at(e.ray.origin), state.beta, Transport::importance, rng,
+             [&]<class M>(const M&, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T outside_index) -> std::optional<Vec3<T>> {
+                 const Crossing<T>& c = hit.crossing;
+                 const T cos = std::abs(dot(d, c.normal));
+                 if (!(cos > T(0))) return std::nullopt;
+                 ++state.length;
+                 if (state.length == 1 && source) {
+                     // An area light's sample from here finds its point with the density
+                     // pdf_W cos_0 / d^2 per unit area; the d^2 cancels the segment's.
+                     if constexpr (SceneT::has_emitters) state.dvcm *= scene_->area_lights().pdf(*source, c.point) * e.cos;
+                     arrive(state, T(1), cos);
+                 } else {
+                     arrive(state, state.length > 1 || !e.from_infinity ? distance * distance : T(1), cos);
+                 }
+                 if (vertex.connectible()) {
+                     out.push_back({hit, d, state.beta, state.dvcm, state.dvc, state.dvm, outside_index, state.length});
+                     if (state.length + 1 <= config_.max_length) connect_to_camera(out.back(), vertex, light, rays, window, rng, splats);
+                 }
+                 if (state.length + 2 > config_.max_length) return std::nullopt;
+                 return scatter(vertex, c, state, light, rng);
+             },
+             [](const Ray<T>&) {});
+    }
+
+    /// Light tracing (t = 1): a light vertex joined to the camera (a point of a thin lens
+    /// drawn uniformly), its splat added where the camera sees it in the window: the
+    /// report's (46)-(47).
+    template <class M>
+    void connect_to_camera(const LightVertex& lv, const SurfaceVertex<M>& vertex, const LightPaths& light, const CameraRays<T>& rays, const PixelWindow& window,
+                           Random& rng, Accumulation& splats) const
+    {
+        const Crossing<T>& c = lv.hit.crossing;
+        Vec3<T> eye = rays.origin;
+        if (rays.thin_lens()) {
+            const auto [u, v] = rng.template uniform2<T>();
+            eye = rays.lens_point(u, v);
+        }
+        const auto seen = rays.thin_lens() ? rays.project(c.point, eye) : rays.project(c.point);
+        if (!counts(lv.length + 1, 1) || !seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return;
+        const Vec3<T> to_camera = (eye - c.point) / seen->distance;
+        const VertexValue<T> f = vertex.value(to_camera);
+        if (f.black()) return;
+        const T d2 = seen->distance * seen->distance;
+        // The camera's density of this vertex per unit area: its image-plane density 1 / A
+        // taken to the ray's solid angle (1 / cos_c^3) and on to the surface.
+        const T camera_area_pdf = T(1) / (rays.pixel_area() * cube(seen->cos)) * std::abs(dot(to_camera, c.normal)) / d2;
+        const T w_light = camera_area_pdf / light.count * (light.mis_vm + lv.dvcm + lv.dvc * f.pdf_reverse);
+        const T weight = weighed(T(1) / (T(1) + w_light));
+        const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
+                                                                                       seen->distance * (T(1) - shadow_epsilon<T>));
+        if (!(max_component(v) > T(0))) return;
+        const Rgb<T> value = (weight / (light.count * rays.pixel_area() * cube(seen->cos) * d2)) * lv.beta * f.f * f.cos * v;
+        std::array<ExactSum, 3> add{};
+        for (int k = 0; k < 3; ++k) {
+            const double x = double(float(value[k]));
+            if (x >= 0.0 && ExactSum::takes(x)) add[std::size_t(k)] = ExactSum::of(x);
+            else splats.reject(1);
+        }
+        splats.add(int(seen->x), int(seen->y), add, 0);
+    }
+
+    /// One camera subpath and everything joined to it: the estimate along `ray`.
+    [[nodiscard]] Rgb<T> camera_path(const Ray<T>& ray, Random& rng, const LightPaths& light, const CameraRays<T>& rays) const noexcept
+    {
+        Rgb<T> sum{T(0)};
+        // The light subpath this camera path is joined to: any one, uniformly (each is an
+        // independent draw of the light subpaths' distribution).
+        const std::size_t paired = std::min(std::size_t(rng.uniform<T>() * light.count), light.ends.size() - 2);
+        PathState state;
+        state.beta = Rgb<T>(T(1));
+        const T camera = camera_pdf(rays, ray.direction);
+        if (!(camera > T(0))) return sum;
+        state.dvcm = light.count / camera;
+        state.dvc = state.dvm = T(0);
+        Vec3<T> previous = ray.origin;
+        walk(ray, scene_->media_at(ray.origin), state.beta, Transport::radiance, rng,
+             [&]<class M>(const M& material, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T) -> std::optional<Vec3<T>> {
+                 const Crossing<T>& c = hit.crossing;
+                 const T cos = std::abs(dot(d, c.normal));
+                 if (!(cos > T(0))) return std::nullopt;
+                 ++state.length;
+                 arrive(state, distance * distance, cos);
+                 const int t = state.length + 1;
+                 if constexpr (emits<M>) {
+                     // s = 0: the path met an area light, (42)-(43).
+                     const Rgb<T> le = emitted(material, c);
+                     if (max_component(le) > T(0) && counts(0, t)) {
+                         T weight = T(1);
+                         if (state.length > 1) {
+                             const AreaLights<SceneT> lights = scene_->area_lights();
+                             const T direct = lights.pdf(hit, previous) * cos / (distance * distance);
+                             const T emission = area_light_probability() * lights.emission_pdf(hit, -d).both();
+                             weight = T(1) / (T(1) + direct * state.dvcm + emission * state.dvc);
+                         }
+                         sum += weighed(weight) * state.beta * le;
+                     }
+                 }
+                 if (state.length >= config_.max_length || !vertex.connectible()) {
+                     if (state.length >= config_.max_length) return std::nullopt;
+                 } else {
+                     sum += state.beta * light_samples(vertex, c, state, light, rng);
+                     sum += state.beta * connections(vertex, c, state, light, paired);
+                     if (config_.method == BidirectionalMethod::vcm && !config_.only) sum += state.beta * merges(vertex, c, state, light);
+                 }
+                 previous = c.point;
+                 return scatter(vertex, c, state, light, rng);
+             },
+             [&](const Ray<T>& out) {
+                 // Leaving the scene: the background where every scattering was a delta
+                 // (seen, as in every prism estimator, but lighting nothing), and each
+                 // environment light, s = 0.
+                 if (state.specular && counts(0, state.length + 1)) sum += state.beta * scene_->background;
+                 std::size_t index = 0;
+                 scene_->for_each_light([&]<class L>(const L& l) {
+                     const std::size_t i = index++;
+                     if constexpr (is_at_infinity<L>) {
+                         if (!counts(0, state.length + 1) || state.length + 1 > config_.max_length) return;
+                         const Vec3<T> w = out.direction;
+                         const Rgb<T> le = l.arriving_from(w);
+                         T weight = T(1);
+                         if (state.length > 0) {
+                             const T direct = l.pdf(w);
+                             const T emission = light_probability_[i] * l.emission_pdf(-w, sphere_).both();
+                             weight = T(1) / (T(1) + direct * state.dvcm + emission * state.dvc);
+                         }
+                         sum += weighed(weight) * state.beta * le;
+                     }
+                 });
+             });
+        return sum;
+    }
+
+    /// The area lights' share of the light paths.
+    [[nodiscard]] T area_light_probability() const noexcept { return light_probability_.back(); }
+
+    /// s = 1: a light sample from each light at a camera vertex, (44)-(45).
+    template <class M>
+    [[nodiscard]] Rgb<T> light_samples(const SurfaceVertex<M>& vertex, const Crossing<T>& c, const PathState& state, const LightPaths& light,
+                                       Random& rng) const noexcept
+    {
+        Rgb<T> sum{T(0)};
+        if (state.length + 1 > config_.max_length) return sum;
+        constexpr Sides sides = has_glossy<M> && transmits<M> ? Sides::both : Sides::near;
+        std::size_t index = 0;
+        scene_->for_each_light([&]<class L>(const L& l) {
+            const T q = light_probability_[index++];
+            const auto [u1, u2] = rng.uniform2<T>();
+            // The light's sample, and for MIS the point it drew: its emission's density
+            // toward here and the cosine there.
+            LightSample<T> s;
+            T emission = T(0), cos_light = T(1);
+            if constexpr (requires { l.sample_point(c.point, Vec2<T>(u1, u2)).at; }) {
+                const auto drawn = l.sample_point(c.point, Vec2<T>(u1, u2));
+                s = drawn.sample;
+                emission = q * l.emission_pdf(drawn.at, -s.wi).both();
+                cos_light = std::abs(dot(s.wi, drawn.at.crossing.normal));
+            } else {
+                s = l.sample(c.point, Vec2<T>(u1, u2));
+                emission = q * l.emission_pdf(-s.wi, sphere_).both();
+            }
+            const Vec3<T> n = c.facing_normal(), ns = c.facing_shading();
+            T cos = shading_cosine(ns, n, s.wi);
+            if constexpr (sides == Sides::both) {
+                if (!(cos > T(0))) cos = shading_cosine(-ns, -n, s.wi);
+            }
+            if (!(cos > T(0)) || !(max_component(s.irradiance) > T(0)) || !(cos_light > T(0))) return;
+            const VertexValue<T> f = vertex.value(s.wi);
+            if (f.black()) return;
+            // The light sample's density per steradian here (a delta light's: d^2 for a
+            // point, 1 for a parallel light).
+            const bool at_infinity = !(s.distance < infinity<T>);
+            const T direct = s.delta() ? (at_infinity ? T(1) : s.distance * s.distance) : s.pdf;
+            const T w_light = s.delta() ? T(0) : f.pdf_forward / direct;
+            const T w_camera = emission * std::abs(dot(s.wi, c.normal)) / (direct * cos_light) * (light.mis_vm + state.dvcm + state.dvc * f.pdf_reverse);
+            const T weight = weighed(T(1) / (w_light + T(1) + w_camera));
+            const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, s.wi),
+                                                                                           s.distance * (T(1) - shadow_epsilon<T>));
+            sum += (weight * f.cos) * f.f * s.irradiance * v;
+        });
+        // (Drawn whatever strategies count, so that every strategy's image takes the same samples.)
+        return counts(1, state.length + 1) ? sum : Rgb<T>(T(0));
+    }
+
+    /// s >= 2, t >= 2: the camera vertex joined to each vertex of its light path, (40)-(41).
+    template <class M>
+    [[nodiscard]] Rgb<T> connections(const SurfaceVertex<M>& vertex, const Crossing<T>& c, const PathState& state, const LightPaths& light,
+                                     std::size_t paired) const noexcept
+    {
+        Rgb<T> sum{T(0)};
+        for (std::uint32_t i = light.ends[paired]; i < light.ends[paired + 1]; ++i) {
+            const LightVertex& lv = light.vertices[i];
+            if (lv.length + state.length + 1 > config_.max_length) break; // (kept in order of length)
+            if (!counts(lv.length + 1, state.length + 1)) continue;
+            const Crossing<T>& lc = lv.hit.crossing;
+            Vec3<T> w = lc.point - c.point;
+            const T d2 = length_squared(w);
+            if (!(d2 > T(0))) continue;
+            const T distance = prism::sqrt(d2);
+            w /= distance;
+            const VertexValue<T> camera = vertex.value(w);
+            if (camera.black()) continue;
+            const VertexValue<T> far = scene_->visit_material(lv.hit, [&]<class N>(const N& material) {
+                return SurfaceVertex<N>(material, lc, lv.d, Transport::importance, lv.outside_index).value(-w);
+            });
+            if (far.black()) continue;
+            const T cos_camera = std::abs(dot(w, c.normal)), cos_light = std::abs(dot(w, lc.normal));
+            const T camera_to_light = camera.pdf_forward * cos_light / d2; // the camera vertex's density of the light vertex, per area
+            const T light_to_camera = far.pdf_forward * cos_camera / d2;
+            const T w_light = camera_to_light * (light.mis_vm + lv.dvcm + lv.dvc * far.pdf_reverse);
+            const T w_camera = light_to_camera * (light.mis_vm + state.dvcm + state.dvc * camera.pdf_reverse);
+            const T weight = weighed(T(1) / (w_light + T(1) + w_camera));
+            const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, w),
+                                                                                           distance * (T(1) - shadow_epsilon<T>));
+            if (!(max_component(v) > T(0))) continue;
+            sum += (weight * camera.cos * far.cos / d2) * camera.f * far.f * lv.beta * v;
+        }
+        return sum;
+    }
+
+    /// VCM's merges: the light vertices within the pass's radius of the camera vertex,
+    /// each its light as a photon's density estimate, (37)-(39).
+    template <class M>
+    [[nodiscard]] Rgb<T> merges(const SurfaceVertex<M>& vertex, const Crossing<T>& c, const PathState& state, const LightPaths& light) const noexcept
+    {
+        Rgb<T> sum{T(0)};
+        if (!light.tree) return sum;
+        light.tree->within({c.point.x, c.point.y, c.point.z}, light.radius, [&](std::uint32_t i, T) {
+            const LightVertex& lv = light.vertices[i];
+            if (lv.length + state.length > config_.max_length) return;
+            const VertexValue<T> camera = vertex.value(-lv.d);
+            if (camera.black()) return;
+            const T w_light = lv.dvcm * light.mis_vc + lv.dvm * camera.pdf_forward;
+            const T w_camera = state.dvcm * light.mis_vc + state.dvm * camera.pdf_reverse;
+            sum += (T(1) / (w_light + T(1) + w_camera)) * camera.f * lv.beta;
+        });
+        return sum * light.vm_normalization;
+    }
+
+    const SceneT* scene_;
+    BidirectionalConfig config_;
+    BoundingSphere<T> sphere_{};
+    std::vector<T> light_probability_; ///< per light (the area lights last), its share of the light paths
+    std::vector<T> light_cdf_;
+};
+
+} // namespace prism
+
+// ---- prism/photon/estimator.hpp ----
+// How a photon density estimate gathers and weighs photons: the Estimator's settings
+// and the filter kernels over the disk that holds them (PhotonMap reads them).
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+
+namespace prism {
+
+/// The density estimate's kernel over the disk of radius r that holds the photons.
+enum class Filter : std::uint8_t {
+    box,      ///< every photon counts the same
+    cone,     ///< weight 1 - d / r (Jensen 1996)
+    gaussian, ///< Pavicic's truncated Gaussian, shape as in Jensen (2001), normalised exactly
+};
+
+/// How a density estimate gathers and weighs photons.
+struct Estimator {
+    std::size_t k = 0;   ///< 0: every photon within `radius`; else the k nearest, searched no further than `radius`
+    float radius = 0.1f; ///< the fixed radius, or the k-nearest search's maximum distance
+    Filter filter = Filter::box; ///< the kernel photons are weighed by
+    float max_height_ratio = 1.0f; ///< keep photons within this times r of the tangent plane; < 1 flattens the sphere to a disk against light leaks
+    /// Count a photon only where its surface's normal is within acos(surface_cos) of the
+    /// query's (60 degrees): not the far side of a thin wall (whose normals are opposite,
+    /// the Mitsuba bug), not a perpendicular wall in a corner, but a curved surface that
+    /// turns by less than that within r. (Testing the photon's arrival direction instead
+    /// drops grazing photons wherever the surface curves: a sphere seen from inside read
+    /// 0.8 % low.)
+    float surface_cos = 0.5f;
+    std::uint8_t excluded = 0;  ///< leave out photons with any of these flags
+};
+
+namespace detail {
+
+/// A filter's weight at squared distance d2 within radius^2 r2, and its mean over the disk
+/// (the normalisation: a uniform density gives back itself).
+class FilterWeight {
+public:
+    static constexpr float gaussian_alpha = 0.918f, gaussian_beta = 1.953f;
+
+    /// The Gaussian's constant denominator and every filter's mean are taken here, once
+    /// per estimate, not once per photon.
+    explicit FilterWeight(Filter filter) noexcept : filter_(filter)
+    {
+        switch (filter) {
+        case Filter::cone: mean_ = 1.0f / 3.0f; break;
+        case Filter::gaussian: {
+            // With u = d^2 / r^2 uniform on [0, 1], E[exp(-beta u / 2)] = (1 - exp(-beta / 2))
+            // / (beta / 2), which gives a mean of 0.531 for Jensen's alpha and beta, not 1:
+            // dividing by pi r^2 alone would halve the estimate.
+            gaussian_denominator_ = 1.0f - std::exp(-gaussian_beta);
+            const float m = (1.0f - std::exp(-gaussian_beta / 2.0f)) / (gaussian_beta / 2.0f);
+            mean_ = gaussian_alpha * (1.0f - (1.0f - m) / gaussian_denominator_);
+            break;
+        }
+        case Filter::box: break;
+        }
+    }
+
+    [[nodiscard]] float operator()(float d2, float r2) const noexcept
+    {
+        switch (filter_) {
+        case Filter::cone: return 1.0f - std::sqrt(d2 / r2);
+        case Filter::gaussian:
+            return gaussian_alpha * (1.0f - (1.0f - std::exp(-gaussian_beta * d2 / (2.0f * r2))) / gaussian_denominator_);
+        case Filter::box: break;
+        }
+        return 1.0f;
+    }
+
+    /// Mean weight over the disk. Box 1, cone 1/3, Gaussian 0.531.
+    [[nodiscard]] float mean() const noexcept { return mean_; }
+
+private:
+    Filter filter_;
+    float gaussian_denominator_ = 1.0f;
+    float mean_ = 1.0f;
+};
+
+} // namespace detail
+
+} // namespace prism
+
+// ---- prism/photon/photon.hpp ----
+// Photon: what a photon map stores, and the sampling a photon tracer needs.
+//
+// Jensen, "Global Illumination using Photon Maps" (1996) and "Realistic Image Synthesis
+// Using Photon Mapping" (2001): emission directions uniform on the sphere, each photon
+// carrying the light's power divided by the photons emitted, Russian roulette that
+// scales a survivor's power per channel by reflectance over survival probability.
+
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+
+namespace prism {
+
+/// One stored photon, 28 bytes: where it landed (three floats), the power it carries
+/// (W) with a shared exponent and a 16-bit mantissa per channel (rounded to nearest:
+/// 2^-16 relative at worst, so a map of equal photons sums to its power to 10^-5; Ward's
+/// 8-bit RGBE read a furnace 0.25 % bright), the direction it came from and the normal
+/// of the surface it landed on (facing the side it arrived from), each as two 16-bit
+/// octahedral coordinates (Meyer et al. 2010), and its flags.
+class Photon {
+public:
+    /// What a stored photon is.
+    enum Flags : std::uint8_t {
+        direct = 1,  ///< first hit after leaving the light
+        caustic = 2, ///< reached this diffuse surface only by specular bounces (L S+ D)
+        shadow = 4,  ///< a shadow photon: where the straight continuation of a direct photon's path met a further surface
+        volume = 8,  ///< scattered in a medium, not on a surface (its normal is its direction)
+    };
+
+    Vec3<float> position{}; ///< where the photon landed
+
+    Photon() = default;
+
+    /// `toward_source`: unit direction back toward where the photon came from;
+    /// `normal`: the unit normal of the surface it landed on, on the side it arrived from.
+    Photon(const Vec3<float>& at, const Rgb<float>& power, const Vec3<float>& toward_source, const Vec3<float>& normal, std::uint8_t flag_bits) noexcept
+        : position(at), direction_(encode_octahedral(toward_source)), normal_(encode_octahedral(normal)), flags(flag_bits)
+    {
+        encode_power(power);
+    }
+
+    /// The photon's power, decoded.
+    [[nodiscard]] Rgb<float> power() const noexcept
+    {
+        if (exponent_ == 0) return Rgb<float>(0.0f);
+        const float scale = std::ldexp(1.0f, int(exponent_) - 144); // 2^(e - 16), e = exponent_ - 128
+        return {float(mantissa_[0]) * scale, float(mantissa_[1]) * scale, float(mantissa_[2]) * scale};
+    }
+
+    /// The unit direction back toward where the photon came from.
+    [[nodiscard]] Vec3<float> toward_source() const noexcept { return normalize(decode_octahedral(direction_)); }
+
+    /// The unit normal of the surface the photon landed on, on its side.
+    [[nodiscard]] Vec3<float> normal() const noexcept { return normalize(decode_octahedral(normal_)); }
+
+    /// Whether the photon lies on a surface facing the way n does: the cosine between its
+    /// normal and n exceeds `min_cos`. The other side of a thin wall (normals opposite)
+    /// and a perpendicular wall in a corner are left out; a curved surface is kept where
+    /// it turns by less than acos(min_cos).
+    [[nodiscard]] bool faces(const Vec3<float>& n, float min_cos) const noexcept
+    {
+        const Vec3<float> m = decode_octahedral(normal_);
+        const float d = dot(m, n);
+        return d > 0.0f && d * d > min_cos * min_cos * length_squared(m) * length_squared(n);
+    }
+
+    /// Photons are equal when every stored bit is.
+    friend bool operator==(const Photon&, const Photon&) = default;
+
+private:
+    [[nodiscard]] static Vec3<float> decode_octahedral(const std::array<std::uint16_t, 2>& q) noexcept
+    {
+        const float u = float(q[0]) * (2.0f / 65535.0f) - 1.0f, v = float(q[1]) * (2.0f / 65535.0f) - 1.0f;
+        const float z = 1.0f - std::abs(u) - std::abs(v);
+        if (z >= 0.0f) return {u, v, z};
+        return {std::copysign(1.0f - std::abs(v), u), std::copysign(1.0f - std::abs(u), v), z};
+    }
+
+    /// The largest channel's exponent e (max = m 2^(e-16), 2^15 <= m < 2^16 after
+    /// rounding), every channel's mantissa rounded to nearest at that exponent. Worked
+    /// in double, where 2^(16 - e) cannot overflow; e is kept within [-127, 127], so a
+    /// power below 2^-128 keeps fewer bits and one above 2^127 (not a photon's) saturates.
+    void encode_power(const Rgb<float>& c) noexcept
+    {
+        const double largest = std::max({c.x, c.y, c.z});
+        if (!(largest > 0.0) || !std::isfinite(largest)) return; // carries nothing
+        int e = 0;
+        std::frexp(largest, &e); // largest = f 2^e, 0.5 <= f < 1
+        if (std::llround(std::ldexp(largest, 16 - e)) > 65535) ++e; // rounding reached 2^16: one exponent up
+        e = std::clamp(e, -127, 127);
+        const double scale = std::ldexp(1.0, 16 - e);
+        for (int i = 0; i < 3; ++i) mantissa_[i] = std::uint16_t(std::clamp(std::llround(std::max(double(c[i]), 0.0) * scale), 0LL, 65535LL));
+        exponent_ = std::uint8_t(e + 128);
+        if (mantissa_ == std::array<std::uint16_t, 3>{}) exponent_ = 0;
+    }
+
+    static std::array<std::uint16_t, 2> encode_octahedral(const Vec3<float>& d) noexcept
+    {
+        const float l1 = std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
+        float u = l1 > 0.0f ? d.x / l1 : 0.0f, v = l1 > 0.0f ? d.y / l1 : 0.0f;
+        if (d.z < 0.0f) {
+            const float x = u;
+            u = (1.0f - std::abs(v)) * (x >= 0.0f ? 1.0f : -1.0f);
+            v = (1.0f - std::abs(x)) * (v >= 0.0f ? 1.0f : -1.0f);
+        }
+        const auto quantise = [](float x) { return std::uint16_t(std::lround((std::clamp(x, -1.0f, 1.0f) * 0.5f + 0.5f) * 65535.0f)); };
+        return {quantise(u), quantise(v)};
+    }
+
+    std::array<std::uint16_t, 3> mantissa_{};
+    std::array<std::uint16_t, 2> direction_{};
+    std::array<std::uint16_t, 2> normal_{};
+    std::uint8_t exponent_ = 0; ///< 0: no power; else the shared exponent + 128
+
+public:
+    std::uint8_t flags = 0; ///< Flags
+};
+
+static_assert(sizeof(Photon) == 28);
+
+} // namespace prism
+
+// ---- prism/photon/photon_map.hpp ----
+// PhotonMap: photons in a KdTree, and the density estimate of the irradiance they carry.
+
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace prism {
+
+/// The photons' positions, as a PointSet for the KdTree.
+struct PhotonPositions {
+    /// Photon positions are float.
+    using scalar_type = float;
+    /// Positions in 3-D.
+    static constexpr std::size_t dimension = 3;
+
+    std::span<const Photon> photons; ///< the photons, in the map's order
+
+    /// The number of photons.
+    [[nodiscard]] std::size_t size() const noexcept { return photons.size(); }
+    /// Coordinate `axis` of photon i's position.
+    [[nodiscard]] float coordinate(std::size_t i, std::size_t axis) const noexcept { return photons[i].position[static_cast<int>(axis)]; }
+};
+
+/// A density estimate and the squared radius of the disk it was gathered over.
+struct PrecomputedIrradiance {
+    Rgb<float> irradiance{0.0f}; ///< the estimate of the irradiance
+    float radius2 = 0; ///< the squared radius it was gathered over
+};
+
+/// Photons in KD-tree order, with radius and k-nearest radiance estimates (Jensen 2001).
+class PhotonMap {
+public:
+    /// The KD-tree over the photons' positions (8 a leaf).
+    using Tree = KdTree<PhotonPositions, 8>;
+    static constexpr std::size_t max_k = 512; ///< the most photons a k-nearest estimate gathers
+
+    PhotonMap() = default;
+
+    /// Own the photons and build the tree over them (on up to `threads` threads, 0 = all
+    /// hardware threads; the same tree for any count). The photons are then put in tree
+    /// order, so that every subtree's photons (and each leaf's) lie together in memory
+    /// and an estimate reads them with few cache misses.
+    explicit PhotonMap(std::vector<Photon> photons, unsigned threads = 1) : tree_(std::in_place, PhotonPositions{photons}, threads)
+    {
+        photons_.resize(photons.size());
+        const auto order = tree_->order();
+        detail::parallel_for(order.size(), threads, [&](std::size_t i) { photons_[i] = photons[order[i]]; });
+        tree_->index_in_tree_order();
+    }
+
+    /// The number of photons.
+    [[nodiscard]] std::size_t size() const noexcept { return photons_.size(); }
+    /// The photons, in tree order.
+    [[nodiscard]] const std::vector<Photon>& photons() const noexcept { return photons_; }
+
+    /// Irradiance at p on a surface with unit normal n (Jensen 1996, eq. 6 with a diffuse
+    /// BRDF taken out): the filtered sum of the powers of the photons on surfaces facing
+    /// n's way, over the disk pi r^2 that holds them. With k nearest, r reaches the k-th
+    /// and that photon, on the disk's rim, is left out: (k - 1) / (pi r^2) is unbiased
+    /// for a uniform random density, k / (pi r^2) reads k / (k - 1) high (1.6 % at 64).
+    /// When fewer were found r is the search's maximum and every photon within it counts.
+    /// Shadow photons carry no power. Calibrated: each photon carries power / photons
+    /// emitted, so the estimate does not depend on the count.
+    [[nodiscard]] Rgb<float> irradiance(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator) const noexcept
+    {
+        return estimate(p, n, estimator).irradiance;
+    }
+
+    /// irradiance(), with the squared radius of the disk it was gathered over (0 where
+    /// no photon was found).
+    [[nodiscard]] PrecomputedIrradiance estimate(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator) const noexcept
+    {
+        return estimate(p, n, estimator, [](const Photon& photon) { return photon.power(); });
+    }
+
+    /// Reflected radiance at p on a surface with unit normal n (Jensen 1996, eq. 6): as
+    /// irradiance(), each photon's power weighed by the BSDF between its direction and
+    /// the viewer's, `reflected(photon)` (its power times f): a glossy surface's estimate.
+    template <class Reflected>
+    [[nodiscard]] Rgb<float> radiance(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator, Reflected&& reflected) const noexcept
+    {
+        return estimate(p, n, estimator, reflected).irradiance;
+    }
+
+    /// The density estimate of `value(photon)` over the disk (estimate() with the photons' powers).
+    template <class Value>
+    [[nodiscard]] PrecomputedIrradiance estimate(const Vec3<float>& p, const Vec3<float>& n, const Estimator& estimator, Value&& value) const noexcept
+    {
+        Rgb<float> sum(0.0f);
+        if (!tree_ || photons_.empty() || !(estimator.radius > 0.0f)) return {sum, 0.0f};
+        const detail::FilterWeight weight(estimator.filter);
+        const auto add = [&](std::uint32_t index, float d2, float r2) {
+            const Photon& photon = photons_[index];
+            if ((photon.flags & estimator.excluded) != 0 || !photon.faces(n, estimator.surface_cos)) return;
+            const float height = dot(photon.position - p, n);
+            if (height * height > estimator.max_height_ratio * estimator.max_height_ratio * r2) return;
+            sum += value(photon) * weight(d2, r2);
+        };
+        float r2 = estimator.radius * estimator.radius;
+        if (estimator.k == 0) {
+            // A radius whose square underflows (below 1e-19) holds no density float can
+            // state: nothing, as for k nearest all at one point (it divided 0 by 0).
+            if (!(r2 > 0.0f)) return {sum, 0.0f};
+            tree_->within({p.x, p.y, p.z}, estimator.radius, [&](std::uint32_t index, float d2) { add(index, d2, r2); });
+        } else {
+            std::array<Neighbour<float>, max_k> buffer;
+            KNearest<float> found(buffer, estimator.k, r2);
+            tree_->search({p.x, p.y, p.z}, found);
+            if (found.size() == 0) return {sum, 0.0f};
+            const bool rim = found.full();
+            if (rim || !(r2 < infinity<float>)) r2 = found.farthest().distance2;
+            if (!(r2 > 0.0f)) return {Rgb<float>(0.0f), 0.0f};
+            const std::uint32_t on_rim = rim ? found.farthest().index : std::numeric_limits<std::uint32_t>::max();
+            for (const Neighbour<float>& neighbour : found)
+                if (neighbour.index != on_rim) add(neighbour.index, neighbour.distance2, r2);
+        }
+        return {sum / (weight.mean() * pi<float> * r2), r2};
+    }
+
+    /// visit(photon, t, distance2) for every photon within `radius` of the segment from
+    /// `origin` along unit `direction` whose projection t lies in [t_min, t_max],
+    /// distance2 its squared distance from the line: the photons a beam
+    /// radiance estimate of that radius gathers (Jarosz et al. 2008, "The Beam Radiance
+    /// Estimate for Volumetric Photon Mapping"; with a box kernel the estimate is their
+    /// weighted sum over pi r^2).
+    template <class Visit>
+    void near_beam(const Vec3<float>& origin, const Vec3<float>& direction, float t_min, float t_max, float radius, Visit&& visit) const
+    {
+        if (!tree_ || photons_.empty() || !(radius > 0.0f)) return;
+        tree_->along({origin.x, origin.y, origin.z}, {direction.x, direction.y, direction.z}, t_min, t_max, radius,
+                     [&](std::uint32_t index, float t, float distance2) { visit(photons_[index], t, distance2); });
+    }
+
+    /// The volume radiance estimate's sum (Jensen and Christensen 1998): the sum of
+    /// value(photon) over the photons within `radius` of p, over the sphere's volume.
+    template <class Value>
+    [[nodiscard]] Rgb<float> in_sphere(const Vec3<float>& p, float radius, Value&& value) const noexcept
+    {
+        Rgb<float> sum(0.0f);
+        if (!tree_ || photons_.empty() || !(radius > 0.0f)) return sum;
+        tree_->within({p.x, p.y, p.z}, radius, [&](std::uint32_t index, float) { sum += value(photons_[index]); });
+        return sum / (4.0f / 3.0f * pi<float> * radius * radius * radius);
+    }
+
+    /// The box-filtered estimate from the K nearest, searched without limit.
+    template <std::size_t K>
+    [[nodiscard]] Rgb<float> irradiance(const Vec3<float>& p, const Vec3<float>& n) const noexcept
+    {
+        static_assert(K <= max_k);
+        return irradiance(p, n, {.k = K, .radius = infinity<float>});
+    }
+
+    /// The box-filtered estimate within a fixed radius, leaving out photons with any of
+    /// the `excluded` flags.
+    [[nodiscard]] Rgb<float> irradiance_within(const Vec3<float>& p, const Vec3<float>& n, float radius,
+                                               std::uint8_t excluded = 0) const noexcept
+    {
+        return irradiance(p, n, {.radius = radius, .excluded = excluded});
+    }
+
+    /// Precompute irradiance at every `stride`-th photon from its K nearest (Christensen
+    /// 1999, "Faster Photon Map Global Illumination"), so that a final-gather ray needs
+    /// one nearest-neighbour lookup instead of a density estimate.
+    /// The estimates run on up to `threads` threads (0 = all hardware threads), each
+    /// written to its sample's place: the same values for any count.
+    template <std::size_t K>
+    void precompute_irradiance(std::size_t stride, unsigned threads = 1)
+    {
+        std::vector<Photon> samples = irradiance_samples(stride);
+        std::vector<PrecomputedIrradiance> values(samples.size());
+        detail::parallel_for(samples.size(), threads, [&](std::size_t i) { values[i] = precomputed_estimate<K>(samples[i]); });
+        set_precomputed_irradiance(std::move(samples), std::move(values), threads);
+    }
+
+    /// The estimate precompute_irradiance<K> keeps at a sample.
+    template <std::size_t K>
+    [[nodiscard]] PrecomputedIrradiance precomputed_estimate(const Photon& sample) const noexcept
+    {
+        static_assert(K <= max_k);
+        return estimate(sample.position, sample.normal(), {.k = K, .radius = infinity<float>});
+    }
+
+    /// The photons precompute_irradiance estimates at: every `stride`-th, but for shadow
+    /// photons.
+    [[nodiscard]] std::vector<Photon> irradiance_samples(std::size_t stride) const
+    {
+        std::vector<Photon> samples;
+        for (std::size_t i = 0; i < photons_.size(); i += std::max<std::size_t>(stride, 1))
+            if (!(photons_[i].flags & Photon::shadow)) samples.push_back(photons_[i]);
+        return samples;
+    }
+
+    /// Irradiance precomputed elsewhere (by processes that each estimated a share of the
+    /// samples): estimates[i] = precomputed_estimate<K>(samples[i]), samples from
+    /// irradiance_samples.
+    void set_precomputed_irradiance(std::vector<Photon> samples, std::vector<PrecomputedIrradiance> estimates, unsigned threads = 1)
+    {
+        if (samples.size() != estimates.size())
+            detail::throw_invalid("PhotonMap set_precomputed_irradiance: ", samples.size(), " samples and ", estimates.size(), " estimates");
+        irradiance_ = std::move(estimates);
+        samples_ = std::move(samples);
+        sample_tree_.emplace(PhotonPositions{samples_}, threads);
+    }
+
+    /// Whether precompute_irradiance() has been run (the final gather needs it).
+    [[nodiscard]] bool has_precomputed_irradiance() const noexcept { return sample_tree_.has_value(); }
+
+    /// The precomputed irradiance nearest p among samples on surfaces facing n's way
+    /// whose estimate's disk reaches p (zero when there are none). Without that reach, a
+    /// point no photon can reach (inside a closed diffuse ball, the floor beneath it) read
+    /// the nearest sample outside, however far: light through walls.
+    [[nodiscard]] Rgb<float> precomputed_irradiance(const Vec3<float>& p, const Vec3<float>& n) const noexcept
+    {
+        if (!sample_tree_ || samples_.empty()) return Rgb<float>(0.0f);
+        for (const Neighbour<float>& neighbour : sample_tree_->nearest<4>({p.x, p.y, p.z})) {
+            const PrecomputedIrradiance& e = irradiance_[neighbour.index];
+            if (neighbour.distance2 <= e.radius2 && samples_[neighbour.index].faces(n, Estimator{}.surface_cos)) return e.irradiance;
+        }
+        return Rgb<float>(0.0f);
+    }
+
+    /// How many of the k nearest photons within max_radius on surfaces facing n's way are
+    /// direct, and how many are shadow photons (Jensen and Christensen 1995: all direct
+    /// means lit, all shadow means in shadow).
+    [[nodiscard]] std::pair<std::size_t, std::size_t> direct_and_shadow(const Vec3<float>& p, const Vec3<float>& n, std::size_t k,
+                                                                        float max_radius) const noexcept
+    {
+        std::size_t direct = 0, shadow = 0;
+        if (!tree_ || !(max_radius >= 0.0f)) return {0, 0};
+        std::array<Neighbour<float>, max_k> buffer;
+        KNearest<float> found(buffer, k, max_radius * max_radius);
+        tree_->search({p.x, p.y, p.z}, found);
+        for (const Neighbour<float>& neighbour : found) {
+            const Photon& photon = photons_[neighbour.index];
+            if (!photon.faces(n, Estimator{}.surface_cos)) continue;
+            direct += (photon.flags & Photon::direct) != 0;
+            shadow += (photon.flags & Photon::shadow) != 0;
+        }
+        return {direct, shadow};
+    }
+
+private:
+    std::vector<Photon> photons_;
+    std::optional<Tree> tree_;
+    std::vector<Photon> samples_;         ///< photons at which irradiance was precomputed
+    std::vector<PrecomputedIrradiance> irradiance_; ///< their irradiance, and the squared radius it was estimated over
+    std::optional<Tree> sample_tree_;
+};
+
+} // namespace prism
+
+// ---- prism/medium/phase.hpp ----
+// Phase functions: where light scattered in a medium goes, a density over the sphere of
+// directions. Written, as every walker uses them, for the directions of travel before
+// and after the scattering (a camera path's as well as a photon's: the function depends
+// on their angle only, so it reads the same both ways).
+
+
+#include <cmath>
+#include <concepts>
+
+namespace prism {
+
+/// A direction of travel drawn from a phase function, with its density (solid angle).
+template <Scalar T>
+struct PhaseSample {
+    Vec3<T> direction; ///< unit, the direction of travel after scattering
+    T pdf;             ///< its density, the phase function's value there
+};
+
+/// A phase function: `value(cos)` for the cosine between the directions of travel before
+/// and after scattering (a density over the sphere, integrating to 1), and
+/// `sample(direction, u1, u2)` drawing the direction after from exactly that density.
+template <class P>
+concept PhaseFunction = requires(const P& phase, typename P::scalar_type x, const Vec3<typename P::scalar_type>& d) {
+    { phase.value(x) } -> std::same_as<typename P::scalar_type>;
+    { phase.sample(d, x, x) } -> std::same_as<PhaseSample<typename P::scalar_type>>;
+    phase.validate();
+};
+
+/// Henyey and Greenstein's (1941) phase function of mean cosine `g`: 0 scatters evenly
+/// (isotropic), toward 1 forward (haze, cloud droplets: 0.7 to 0.9), toward -1 back.
+/// p(cos) = (1 - g^2) / (4 pi (1 + g^2 - 2 g cos)^(3/2)), drawn by inverting its
+/// distribution in cos.
+template <Scalar T = float>
+struct HenyeyGreenstein {
+    /// The precision of the parameter.
+    using scalar_type = T;
+
+    T g = T(0); ///< the mean cosine of the scattering angle, in (-1, 1)
+
+    /// The density for the cosine between the directions of travel before and after.
+    [[nodiscard]] T value(T cos_theta) const noexcept
+    {
+        const T denominator = T(1) + g * g - T(2) * g * cos_theta;
+        return (T(1) - g * g) / (T(4) * pi<T> * denominator * prism::sqrt(denominator));
+    }
+
+    /// A direction of travel after scattering, for `direction` (unit) before, from two
+    /// uniform numbers.
+    [[nodiscard]] PhaseSample<T> sample(const Vec3<T>& direction, T u1, T u2) const noexcept
+    {
+        T cos_theta;
+        if (std::abs(g) < T(1e-3)) {
+            cos_theta = T(1) - T(2) * u1;
+        } else {
+            const T s = (T(1) - g * g) / (T(1) + g - T(2) * g * u1);
+            cos_theta = std::clamp((T(1) + g * g - s * s) / (T(2) * g), T(-1), T(1));
+        }
+        const T sin_theta = prism::sqrt(std::max(T(0), T(1) - cos_theta * cos_theta));
+        const T phi = T(2) * pi<T> * u2;
+        const auto [a, b] = orthonormal_frame(direction);
+        const Vec3<T> out = sin_theta * (std::cos(phi) * a + std::sin(phi) * b) + cos_theta * direction;
+        return {normalize(out), value(cos_theta)};
+    }
+
+    /// Throws std::invalid_argument for g outside (-1, 1) or not finite.
+    void validate() const
+    {
+        if (!(g > T(-1) && g < T(1))) detail::throw_invalid("HenyeyGreenstein g must be in (-1, 1), got ", g);
+    }
+};
+
+static_assert(PhaseFunction<HenyeyGreenstein<float>> && PhaseFunction<HenyeyGreenstein<double>>);
+
+} // namespace prism
+
+// ---- prism/transport/random_walk.hpp ----
+// random_walk: the path a photon takes through a scene, shared by the photon tracer, the
+// light tracer and the path tracer (a camera path carries importance by the same rules).
+//
+// From a ray carrying `power`, hit by hit: the medium the path crossed attenuates it;
+// at a diffuse or glossy surface the caller's `on_diffuse` sees the vertex (and may stop the walk);
+// false interfaces (inside a medium of higher priority) and index-matched ones
+// (may_match_index) are passed; a white path meeting
+// a dispersive interface takes one wavelength band at random; then scatter_photon picks
+// the next direction (material/scattering.hpp): a photon by Russian roulette at every
+// bounce, which keeps its power bounded; a camera path by its lobes alone, ended by
+// roulette on its throughput once it has met WalkLimits::roulette_depth surfaces, so a
+// path on its way to a bright, hard-to-find light (a caustic) is not cut short by the dim
+// surfaces it left. In the air the path follows the air's curve (GradedAir), inside
+// objects straight lines. In a medium that scatters (an object's Fog, or FilledAir) the
+// walk draws where it scatters along each piece of its way (first_hit_through_media, the
+// curved pieces in fog filling graded air included); there the caller's
+// `on_medium` sees the vertex, and the walk goes on in a direction drawn from the
+// medium's phase function.
+
+
+#include <algorithm>
+#include <concepts>
+#include <optional>
+#include <type_traits>
+#include <variant>
+
+namespace prism {
+
+/// A walk at a surface with a non-delta lobe (diffuse, or glossy and not a mirror),
+/// before it scatters there.
+template <Scalar T>
+struct WalkVertex {
+    const Hit<T>& hit; ///< the surface the walk met
+    const Vec3<T>& direction; ///< unit, arriving
+    const Rgb<T>& power;      ///< what the path carries here, after the medium it crossed
+    bool direct;              ///< nothing scattered it yet (a photon's first hit)
+    int diffuse_bounces;      ///< non-delta (diffuse or glossy) scatterings so far (0: every scattering so far was specular)
+    bool first_specular;      ///< the first scattering was specular (the vertex next to the path's start: L S ...)
+    T travelled;              ///< the path's length so far
+    T wavelength;             ///< 0 while white
+    const MediumStack& media; ///< the transmissive objects the path is inside of
+    const Vec3<T>& last_point; ///< where the path last scattered (or started)
+    T last_pdf;               ///< the solid-angle density of the last scattering's non-delta lobe (a diffuse one's cos / pi); 0 after a delta one or at the start
+    bool last;                ///< the walk ends after this surface (its depth limit): nothing it scatters is followed
+    Random& rng;               ///< the walk's stream, for a caller that draws at the vertex (a thin lens's point)
+    T outside_index;          ///< the index of refraction on a transmissive material's outer side (1 for others; glossy_eta)
+    int surface_bounces;      ///< the non-delta scatterings other than through frosted glass (a glossy interface)
+
+    /// Where the walk met the surface, with its normal and side.
+    [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
+    /// Whether every scattering so far was specular.
+    [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
+    /// Whether every scattering so far was specular or through frosted glass: the path
+    /// of a caustic, L {S | frosted}+ (the photon maps' classification).
+    [[nodiscard]] bool caustic_path() const noexcept { return surface_bounces == 0; }
+};
+
+/// A walk leaving the scene: the segment it left along, and what it carries.
+template <Scalar T>
+struct WalkEscape {
+    const Ray<T>& ray;        ///< the segment that left the scene, its direction the way it went
+    const Rgb<T>& power;      ///< what the path carries
+    int diffuse_bounces;      ///< non-delta (diffuse or glossy) scatterings on the way (0: every scattering was specular)
+    bool first_specular;      ///< the first scattering was specular (the vertex next to the path's start)
+    T last_pdf;               ///< as WalkVertex's: the last scattering's diffuse density, 0 after a delta one
+
+    /// Whether every scattering on the way was specular.
+    [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
+};
+
+/// A walk where it scatters in a medium, before it scatters there.
+template <Scalar T>
+struct WalkMediumVertex {
+    const Vec3<T>& point;     ///< where it scatters
+    const Vec3<T>& direction; ///< unit, arriving
+    const Rgb<T>& power;      ///< what the path carries here, the medium's scattering coefficient and the draw's weight taken
+    bool direct;              ///< nothing scattered it yet
+    int diffuse_bounces;      ///< non-delta scatterings so far, at surfaces or in media
+    bool first_specular;      ///< the first scattering was specular
+    T travelled;              ///< the path's length so far
+    T wavelength;             ///< 0 while white
+    const MediumStack& media; ///< the transmissive objects the path is inside of
+    const Vec3<T>& last_point; ///< where the path last scattered (or started)
+    T last_pdf;               ///< as WalkVertex's
+    bool last;                ///< the walk ends after this vertex (its depth limit)
+    Random& rng;               ///< the walk's stream
+    int surface_bounces;      ///< as WalkVertex's: non-delta scatterings but through frosted glass
+    const Ray<T>& stretch;    ///< the stretch of medium the flight was drawn over: from where it starts, unit direction
+    T stretch_length;         ///< its length (may be infinite)
+    const Rgb<T>& entering;   ///< what the path carried as it entered the stretch (the flight's draw was weighed by it)
+
+    /// Whether every scattering so far was specular.
+    [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
+    /// Whether every scattering so far was specular or through frosted glass (a
+    /// volumetric caustic's path when one came before: L {S | frosted}+ M).
+    [[nodiscard]] bool caustic_path() const noexcept { return surface_bounces == 0; }
+};
+
+/// A walk entering a stretch of a medium that scatters, before its flight there is drawn:
+/// shown to a caller's on_medium that takes it (the path tracer's equiangular samples).
+template <Scalar T>
+struct WalkMediumStretch {
+    const Ray<T>& ray;        ///< from where the stretch starts, unit direction
+    T length;                 ///< its length (may be infinite)
+    const Rgb<T>& power;      ///< what the path carries entering it
+    int diffuse_bounces;      ///< non-delta scatterings so far
+    const MediumStack& media; ///< the transmissive objects the path is inside of
+    Random& rng;               ///< the walk's stream
+};
+
+/// What a walk does where it scatters in a medium when its caller says nothing: it goes on.
+struct IgnoreMedia {
+    /// Goes on (whatever it is shown: the medium, the vertex, a photon's power).
+    template <class... Seen>
+    constexpr bool operator()(const Seen&...) const noexcept
+    {
+        return true;
+    }
+};
+
+/// What a walk does where it leaves the scene when its caller says nothing: nothing.
+struct IgnoreEscape {
+    /// Does nothing.
+    template <class E>
+    constexpr void operator()(const E&) const noexcept
+    {
+    }
+};
+
+/// What a walk does where it meets an emitting surface when its caller says nothing: nothing.
+struct IgnoreEmitters {
+    /// Does nothing.
+    template <class M, class V>
+    constexpr void operator()(const M&, const V&) const noexcept
+    {
+    }
+};
+
+/// How far a walk may go.
+struct WalkLimits {
+    int max_bounces = 256; ///< surfaces past the first the walk may scatter at (it meets at most max_bounces + 1)
+    /// Scatterings in media past the first the walk may follow, counted apart from the
+    /// surfaces: in dense fog that does not absorb a path scatters hundreds of times
+    /// between two surfaces (16 in all lost 7 % of the light of a fog of optical depth 8).
+    int max_medium_bounces = 1000;
+    /// Surfaces a camera path (Transport::radiance) scatters at before Russian roulette on
+    /// its throughput may end it (path_roulette); a photon's roulette is per bounce.
+    int roulette_depth = 2;
+};
+
+/// Walk from `ray` carrying `power` through at most limits.max_bounces + 1 surfaces and
+/// limits.max_medium_bounces + 1 scatterings in media.
+/// on_diffuse(material, WalkVertex) is called at every surface with a non-delta lobe
+/// (diffuse, or glossy and not a mirror: scatters_smoothly) and returns the
+/// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
+/// there); on_escape(WalkEscape) when the path leaves the scene; on_emitter(material,
+/// WalkVertex) where it meets a surface that emits (an area light; the walk scatters there
+/// only by the lobes the material also has). `Mode`: whether the path is a photon's or a
+/// camera's (scatter_photon); a camera path is ended by path_roulette after
+/// limits.roulette_depth surfaces. on_medium(medium, WalkMediumVertex) is called where the
+/// path scatters in a medium (a scene or air with none never compiles it) and returns
+/// whether the walk goes on; such vertices count toward their own limit, and toward
+/// roulette_depth with the surfaces.
+/// `start`: the transmissive objects the ray starts inside (a camera's: Scene::media_at).
+template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters,
+          class OnMedium = IgnoreMedia>
+void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
+                 Rgb<typename SceneT::scalar_type> power, Random& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
+                 OnEmitter&& on_emitter = {}, OnMedium&& on_medium = {}, MediumStack start = {})
+{
+    using T = typename SceneT::scalar_type;
+    bool direct = true, first_specular = false;
+    int diffuse_bounces = 0, surface_bounces = 0;
+    T travelled = T(0);
+    T wavelength = T(0); // white until a dispersive interface splits it
+    MediumStack media = start; // the transmissive objects the path is inside of
+    Vec3<T> last_point = ray.origin;
+    T last_pdf = T(0);
+    int medium_bounces = 0; // of the bounces, those in media
+    for (int bounce = 0; bounce - medium_bounces <= limits.max_bounces; ++bounce) {
+        rng.bounce(bounce); // each bounce its own block of the sampler's dimensions
+        // In the air a path follows the air's curve; inside objects, straight lines.
+        Ray<T> segment = ray;
+        T path = T(0);
+        // Where the path scatters in the media it crosses before the surface, piece by piece
+        // of its way: on each stretch of a medium that scatters, the caller's on_medium sees
+        // the stretch, then the walker's flight is drawn (the medium's sample_flight) and its
+        // power takes the draw's weight.
+        enum class InMedium { passed, scattered, absorbed };
+        [[maybe_unused]] InMedium in_medium = InMedium::passed;
+        const std::optional<Hit<T>> hit = [&] {
+            if constexpr (!SceneT::has_scattering_media && !air_scatters<Air>) {
+                return media.empty() ? first_hit_in_air(scene, air, ray, segment, &path) : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
+            } else {
+                return first_hit_through_media(scene, air, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
+                    const Ray<T> stretch{piece.at(t0), piece.direction};
+                    const Rgb<T> entering = power;
+                    if constexpr (std::is_invocable_v<OnMedium&, const Md&, const WalkMediumStretch<T>&>)
+                        on_medium(medium, WalkMediumStretch<T>{stretch, t1 - t0, power, diffuse_bounces, media, rng});
+                    const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
+                    power *= flight.weight;
+                    if (!flight.scattered) return true;
+                    const T s = t0 + flight.distance;
+                    const Vec3<T>& d = piece.direction;
+                    const Vec3<T> p = piece.origin + s * d;
+                    travelled += before + s;
+                    const bool last = medium_bounces == limits.max_medium_bounces;
+                    in_medium = InMedium::absorbed;
+                    if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last,
+                                                              rng, surface_bounces, stretch, t1 - t0, entering}))
+                        return false;
+                    if constexpr (Mode == Transport::importance) {
+                        // A photon keeps its power: it goes on with the chance of the draw's
+                        // largest weight (the albedo in a grey medium), divided out.
+                        const T keep = std::min(T(1), max_component(flight.weight));
+                        if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return false;
+                        power /= keep;
+                    } else {
+                        if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return false;
+                    }
+                    const auto [u1, u2] = rng.uniform2<T>();
+                    const PhaseSample<T> next = medium.phase.sample(d, u1, u2);
+                    ray = {p, next.direction};
+                    last_point = p;
+                    last_pdf = next.pdf;
+                    ++diffuse_bounces;
+                    ++surface_bounces;
+                    if (direct) first_specular = false;
+                    in_medium = InMedium::scattered;
+                    return false;
+                });
+            }
+        }();
+        if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
+            if (in_medium == InMedium::absorbed) return;
+            if (in_medium == InMedium::scattered) {
+                if (++medium_bounces > limits.max_medium_bounces) return;
+                direct = false;
+                continue;
+            }
+        }
+        if (!hit) {
+            on_escape(WalkEscape<T>{segment, power, diffuse_bounces, first_specular, last_pdf});
+            return;
+        }
+        const Crossing<T>& c = hit->crossing;
+        const Vec3<T> d = normalize(segment.direction);
+        travelled += path;
+        enum class Next { absorbed, scattered, passed };
+        const Next next_step = scene.visit_material(*hit, [&]<class M>(const M& material) -> Next {
+            // What the medium it travelled in let through, before anything else.
+            attenuate_segment(scene, media, material, c, segment, power);
+            const bool last = bounce - medium_bounces == limits.max_bounces;
+            if constexpr (emits<M>)
+                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, T(1), surface_bounces});
+            if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
+                return Next::absorbed; // a lamp that only emits
+            } else {
+            // The media beyond the surface, the object whose medium lies on its far
+            // side, and false interfaces (inside a medium of higher priority) passed.
+            // (Only transmissive materials keep an interface: no copy of the media for
+            // the diffuse and mirror hits that make most of a path's bounces.)
+            [[maybe_unused]] std::conditional_t<transmits<M>, Interface, std::monostate> face{};
+            const Inside* outside = nullptr;
+            if constexpr (transmits<M>) {
+                face = nested_interface(media, {hit->slot, hit->index, nesting_priority(material)}, c.entering);
+                if (!face.real) {
+                    ray = spawn_ray(c.point, c.error, c.normal, d);
+                    media = face.beyond;
+                    return Next::passed;
+                }
+                outside = outside_of(media, face, c.entering);
+            }
+            const T outside_index = transmits<M> ? T(index_of(scene, outside, wavelength)) : T(1);
+            if constexpr (may_match_index<M>) {
+                // An index-matched boundary is no vertex: the path goes on straight, its
+                // tint taken, as a shadow ray passes it (Scene::transmittance).
+                if (material.index_matched(outside_index)) {
+                    if constexpr (Mode == Transport::radiance) power *= material.transmission_tint();
+                    else if (!russian_roulette(power, material.transmission_tint(), rng)) return Next::absorbed;
+                    ray = spawn_ray(c.point, c.error, c.normal, d);
+                    media = face.beyond;
+                    return Next::passed;
+                }
+            }
+            Lobes lobes = Lobes::all;
+            // (A glossy lobe that is a mirror has no vertex of its own.)
+            if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
+                const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
+                                                                      last_point, last_pdf, last, rng, outside_index, surface_bounces});
+                if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
+                else lobes = go_on;
+                if (lobes == Lobes::none) return Next::absorbed;
+            }
+            if constexpr (disperses<M>) {
+                if (wavelength == T(0)) {
+                    // One band at random: its (non-negative) share of white, over its probability 1 / count.
+                    const int count = bands.size();
+                    const WavelengthBand<T>& band = bands[std::min(int(rng.uniform<T>() * T(count)), count - 1)];
+                    power *= band.photon_weight * T(count);
+                    wavelength = band.wavelength_nm;
+                }
+            }
+            const Vec3<T> n = c.facing_normal();
+            const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, outside_index, lobes);
+            if (!next) return Next::absorbed;
+            if constexpr (Mode == Transport::radiance) {
+                if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return Next::absorbed;
+            }
+            ray = spawn_ray(c.point, c.error, c.normal, next->direction);
+            last_point = c.point;
+            if constexpr (has_glossy<M>) last_pdf = next->pdf;
+            else last_pdf = next->diffuse ? std::max(dot(next->direction, c.facing_shading()), T(0)) / pi<T> : T(0);
+            if (next->diffuse) ++diffuse_bounces;
+            if (next->diffuse && !(has_glossy<M> && transmits<M>)) ++surface_bounces;
+            if (direct) first_specular = !next->diffuse;
+            if constexpr (transmits<M>) {
+                if (dot(next->direction, n) < T(0)) media = face.beyond; // refracted
+            }
+            return Next::scattered;
+            }
+        });
+        if (next_step == Next::absorbed) return;
+        if (next_step == Next::scattered) direct = false;
+    }
+}
+
+} // namespace prism
+
+// ---- prism/photon/photon_tracer.hpp ----
+// trace_photons: emit photons from the lights and follow them through a scene into a
+// global and a caustic photon map (Jensen 1996, section 2.1).
+//
+// Global map: each light emits everywhere it shines (Light::emit_photon with no target:
+// a point light over its whole sphere, a parallel light through a disk facing it that
+// covers every bounded object), and photons are stored at every diffuse hit (flagged
+// direct on the first, caustic when only specular bounces came before, or bounces through
+// frosted glass, which holds no photons itself). Caustic map:
+// each light aims at the bounding sphere of every specular object (POV-Ray's `target`;
+// bounding_sphere(shape)), and photons are stored only at the first diffuse hit after
+// one or more specular bounces or bounces through frosted glass (L {S | frosted}+ D). Every bounce is scatter_photon's (Russian
+// roulette per channel, material/scattering.hpp), and light travelling inside an object
+// is attenuated by its medium. Shadow photons mark where the straight continuation of a
+// direct photon's path meets further diffuse surfaces (Jensen and Christensen 1995,
+// "Efficiently rendering shadows using the photon map"). Where a photon scatters in a
+// medium (a Fog) it is stored as a volume photon (Jensen and Christensen 1998): the global
+// pass's on every path but a volumetric caustic's, L {S | frosted}+ M, which is the
+// caustic pass's. Photon i starts from point i of a scrambled Sobol sequence and draws the
+// rest of its path from its own random stream, so the maps are the same bits for any
+// thread count. A light without falloff (POV-Ray's `fade_power 0`) has no physical
+// power; its photons are scaled by the squared length of the path they travelled, as
+// POV-Ray does, so that their estimate gives irradiance that does not fall off with
+// distance either.
+
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace prism {
+
+/// How many photons are traced, and how.
+struct PhotonTracerConfig {
+    std::size_t global_photons = 200000;  ///< emitted for the global map
+    std::size_t caustic_photons = 200000; ///< emitted toward specular objects for the caustic map
+    int max_bounces = 16;                 ///< bounces at surfaces followed at most
+    int max_medium_bounces = 1000;        ///< scatterings in media followed at most (WalkLimits'; in fog that absorbs, roulette ends a photon long before)
+    bool shadow_photons = true; ///< store shadow photons in the global map
+    std::uint64_t seed = 0; ///< with the light, fixes every photon
+    /// The photons' numbers (core/sampler.hpp): photon i of a map is sample i of the
+    /// sampler, its choice of light and point (pair 0), its direction (pair 1) and each
+    /// bounce (a block of pairs) Owen-scrambled Sobol points, so that the photons of any
+    /// 2^m prefix, a pass of progressive photon mapping included, are stratified in each
+    /// (zsobol, a layout of the image, draws the same); Halton's points, one sequence over
+    /// the photon's first 64 dimensions together; or independent numbers.
+    SamplerKind sampler = SamplerKind::sobol;
+    unsigned threads = 0; ///< 0 = all hardware threads
+    /// A white photon meeting a dispersive interface takes one of this many wavelength
+    /// bands at random (1 to 81), its power scaled by the band's photon_weight times
+    /// the band count, and keeps that wavelength from then on.
+    int dispersion_bands = SpectralBands<float>::max_count;
+};
+
+namespace detail {
+
+/// The photons a map may be asked for: its KdTree indexes them in 32 bits.
+inline constexpr std::size_t max_photons = std::numeric_limits<std::uint32_t>::max() - 1;
+
+inline void validate(const PhotonTracerConfig& config)
+{
+    for (const auto& [name, count] : {std::pair{"global_photons", config.global_photons}, std::pair{"caustic_photons", config.caustic_photons}}) {
+        const double bytes = double(count) * sizeof(Photon);
+        if (count > max_photons)
+            throw_invalid("PhotonTracerConfig ", name, " must be at most ", max_photons, " (a map indexes its photons in 32 bits), got ", count,
+                          " (their records alone would need ", describe_bytes(bytes), ")");
+        require_memory("PhotonTracerConfig " + std::string(name) + " = " + std::to_string(count) + " (its photon records alone)", bytes);
+    }
+    if (config.max_bounces < 0) throw_invalid("PhotonTracerConfig max_bounces must be >= 0, got ", config.max_bounces);
+    if (config.max_medium_bounces < 0) throw_invalid("PhotonTracerConfig max_medium_bounces must be >= 0, got ", config.max_medium_bounces);
+    if (config.dispersion_bands < 1 || config.dispersion_bands > SpectralBands<float>::max_count)
+        throw_invalid("PhotonTracerConfig dispersion_bands must be in [1, ", SpectralBands<float>::max_count, "], got ", config.dispersion_bands);
+}
+
+} // namespace detail
+
+/// The maps one photon tracing gives: the global map (shadow photons in it, flagged) and
+/// the caustic map.
+struct PhotonMaps {
+    PhotonMap global; ///< every photon's diffuse landings (flagged direct, caustic or shadow)
+    PhotonMap caustic; ///< landings after specular bounces only (L S+ D)
+    PhotonMap volume; ///< where photons scattered in a medium (L ... M; empty in a scene without one), volumetric caustics flagged
+};
+
+namespace detail {
+
+/// One light aimed somewhere (everywhere, or at one specular object): a share of a
+/// map's photons in proportion to `power`.
+template <Scalar T>
+struct Emitter {
+    std::size_t light = 0;      ///< its number in the scene's Lights{...}
+    bool aimed = false;         ///< at `target`; else everywhere
+    BoundingSphere<T> target{};
+    Rgb<T> power{};             ///< Light::photon_power of this aim
+};
+
+template <class SceneT, class Air = StraightAir>
+class PhotonTracer {
+public:
+    using T = typename SceneT::scalar_type;
+
+    PhotonTracer(const SceneT& scene, const PhotonTracerConfig& config, const Air& air = {})
+        : scene_(scene), config_((detail::validate(config), config)), bands_(config.dispersion_bands), air_(air)
+    {
+        air_.validate();
+        // A sphere around everything bounded, the air's medium included where it is
+        // bounded: parallel photons start outside it.
+        Aabb<T> lit = scene.bounds();
+        if constexpr (air_scatters<Air>) {
+            if (air.bounds().bounded()) lit = lit.merged(air.bounds());
+        }
+        if (!lit.empty()) {
+            scene_sphere_ = lit.bounding_sphere();
+            has_sphere_ = true;
+        }
+        add_emitters(global_, false, {});
+        // Every light aimed at each bounded object that may scatter by a delta lobe (a
+        // mirror, glass, a glossy lobe's delta part: may_scatter_by_delta), where caustics
+        // and a light tracer's paths begin; not at an index-matched boundary, which makes
+        // no caustic (may_match_index).
+        scene.for_each_object([&]<class Object>(const Object& object) {
+            using M = typename Object::material_type;
+            if constexpr (reflects<M> || transmits<M> || has_glossy<M>) {
+                if (object.bounded && !index_matched(object.material, T(1)) && may_scatter_by_delta(object.material))
+                    add_emitters(targets_, true, bounding_sphere(object.shape));
+            }
+        });
+        drop_nested_targets(targets_);
+        for (const auto& e : global_) global_power_ += max_component(e.power);
+        for (const auto& e : targets_) target_power_ += max_component(e.power);
+        // A light whose power is finite can still overflow here: a parallel light's
+        // irradiance times the scene's cross-section, or the sum over many lights.
+        if (!is_finite(global_power_) || !is_finite(target_power_))
+            throw_invalid("photon emission: the lights' total power overflows (", global_power_, ", ", target_power_,
+                          "); a DirectionalLight's irradiance times the scene's cross-section pi r^2 must be finite");
+    }
+
+    /// Photons [first, last) of the global map, appended to `out`.
+    void trace_global(std::size_t first, std::size_t last, std::vector<Photon>& out) const
+    {
+        PixelSeeds seeds(config_.seed, 0); // every global photon is a sample of "pixel" 0
+        for (std::size_t i = first; i < last; ++i) store(global_, global_power_, config_.global_photons, i, false, seeds, out);
+    }
+
+    /// Photons [first, last) of the caustic map, appended to `out`.
+    void trace_caustic(std::size_t first, std::size_t last, std::vector<Photon>& out) const
+    {
+        PixelSeeds seeds(config_.seed, 1); // and every caustic photon of "pixel" 1
+        for (std::size_t i = first; i < last; ++i) store(targets_, target_power_, config_.caustic_photons, i, true, seeds, out);
+    }
+
+    /// Light paths [first, last) of `count` aimed where the caustic map's photons are,
+    /// each walked to its end: visit(material, vertex, power) at every
+    /// diffuse surface and visit_medium(medium, vertex, power) where it scatters in a
+    /// medium return whether the walk goes on (the light tracer's paths).
+    template <class Visit, class VisitMedium = IgnoreMedia>
+    void walk_aimed(std::size_t first, std::size_t last, std::size_t count, Visit&& visit, VisitMedium&& visit_medium = {}) const
+    {
+        PixelSeeds seeds(config_.seed, 1);
+        for (std::size_t i = first; i < last; ++i) emit(targets_, target_power_, count, i, true, seeds, visit, visit_medium);
+    }
+
+private:
+    /// Photon i of a map of `count`: choose an emitter by its share of the power (the
+    /// photon carries its power / (count p)), let its light place the photon, and walk
+    /// it (random_walk), calling visit(material, vertex, stored power) at each diffuse
+    /// surface. Its numbers are sample i of config.sampler: with Sobol points the choice
+    /// and the point on the light (pair 0), the direction (pair 1) and each bounce are
+    /// stratified over the photons as on a jittered grid, but for any count.
+    template <class Visit, class VisitMedium = IgnoreMedia>
+    void emit(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, PixelSeeds& seeds, Visit&& visit,
+              VisitMedium&& visit_medium = {}) const
+    {
+        if (emitters.empty() || !(total_power > T(0))) return;
+        // Photon i's numbers: sample i of the map's sampler, Sampler(kind, seed, caustic_pass,
+        // i), its seeds kept in `seeds` (photon indices stay below 2^32: check_photon_passes),
+        // then the photon's own PCG stream.
+        Random rng(Sampler(config_.sampler, seeds, static_cast<std::uint32_t>(i)), Pcg32(config_.seed, 2 * i + (caustic_pass ? 1 : 0)));
+        auto [u, v] = rng.uniform2<double>();
+        // The emitter whose share of [0, 1) holds u; u rescaled within that share.
+        const Emitter<T>* e = &emitters.back();
+        double p = 1, start = 0;
+        for (const Emitter<T>& candidate : emitters) {
+            const double share = double(max_component(candidate.power)) / double(total_power);
+            if (u < start + share || &candidate == &emitters.back()) {
+                e = &candidate;
+                p = share;
+                break;
+            }
+            start += share;
+        }
+        u = std::clamp((u - start) / p, 0.0, std::nextafter(1.0, 0.0));
+        const EmittedPhoton<T> photon =
+            scene_.visit_light(e->light, [&](const auto& light) { return prism::emit_photon(light, aim(*e), T(u), T(v), rng); });
+        // Where two targets' cones overlap, a direction is the first target's to carry:
+        // counted by both, the light sent that way would be counted twice.
+        if (e->aimed && aimed_at_earlier_target(emitters, *e, photon.ray)) return;
+        // A light without falloff: the power a photon stores grows with its path squared.
+        const bool without_falloff = photon.without_falloff;
+        random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, WalkLimits{.max_bounces = config_.max_bounces, .max_medium_bounces = config_.max_medium_bounces},
+                    [&]<class M>(const M& material, const WalkVertex<T>& at) {
+                        return visit(material, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
+                    },
+                    IgnoreEscape{}, IgnoreEmitters{},
+                    [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
+                        return visit_medium(medium, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
+                    });
+    }
+
+    /// Store photon i: in the caustic pass only L S+ D, going on past it only by delta lobes.
+    void store(const std::vector<Emitter<T>>& emitters, T total_power, std::size_t count, std::size_t i, bool caustic_pass, PixelSeeds& seeds,
+               std::vector<Photon>& out) const
+    {
+        emit(emitters, total_power, count, i, caustic_pass, seeds, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
+            (void)material;
+            const Crossing<T>& c = at.crossing();
+            // Frosted glass holds no photons (no estimate reads them there: a camera or
+            // gather ray goes through it by its lobe), and light through it on to a surface
+            // is a caustic, as through clear glass.
+            if constexpr (has_glossy<M> && transmits<M>) return caustic_pass && !at.caustic_path() ? Lobes::none : Lobes::all;
+            if (caustic_pass) {
+                if (!at.direct && at.caustic_path()) out.push_back(photon(c, power, at.direction, Photon::caustic));
+                // What a diffuse lobe sends on is the global map's; a delta lobe (a coat
+                // over the diffuse one) may still send a caustic on, and so may a glossy
+                // lobe's delta part (a mix's mirror, a smooth coat), by the lobe's own draw.
+                if constexpr (has_glossy<M>) {
+                    if (at.caustic_path() && glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index)).delta_part()) return Lobes::all;
+                }
+                return (reflects<M> || transmits<M>) && at.caustic_path() ? Lobes::delta : Lobes::none;
+            }
+            std::uint8_t flags = at.direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
+            if (!at.direct && at.caustic_path()) flags |= Photon::caustic;
+            out.push_back(photon(c, power, at.direction, flags));
+            if (at.direct && config_.shadow_photons) store_shadow_photons(c, at.direction, out);
+            return Lobes::all;
+        }, [&](const auto&, const WalkMediumVertex<T>& at, const Rgb<T>& power) {
+            // Where a photon scatters in a medium: a volume photon (split from the surface
+            // ones afterwards). A volumetric caustic (L {S | frosted}+ M) is the caustic
+            // pass's, and its walk ends there; every other path's the global pass's.
+            const bool caustic = !at.direct && at.caustic_path();
+            if (caustic != caustic_pass) return !caustic_pass;
+            const Vec3<float> travelling(at.direction);
+            out.push_back({Vec3<float>(at.point), Rgb<float>(power), -travelling, -travelling,
+                           std::uint8_t(Photon::volume | (caustic ? Photon::caustic : 0))});
+            return !caustic_pass;
+        });
+    }
+
+    /// The photon stored where `travelling` met the surface of crossing c.
+    [[nodiscard]] static Photon photon(const Crossing<T>& c, const Rgb<T>& power, const Vec3<T>& travelling, std::uint8_t flags) noexcept
+    {
+        return {Vec3<float>(c.point), Rgb<float>(power), Vec3<float>(-travelling), Vec3<float>(c.facing_normal()), flags};
+    }
+
+    /// Shadow photons along the straight line on from a direct photon's first hit.
+    void store_shadow_photons(const Crossing<T>& first, const Vec3<T>& d, std::vector<Photon>& out) const
+    {
+        Ray<T> through = spawn_ray(first.point, first.error, first.normal, d);
+        for (int surfaces = 0; surfaces < 8; ++surfaces) {
+            const auto hit = scene_.closest_hit(through, {T(0), infinity<T>});
+            if (!hit) return;
+            const Crossing<T>& c = hit->crossing;
+            const bool diffuse = scene_.visit_material(*hit, [&]<class M>(const M& material) { return scatters_smoothly(material, c, d); });
+            if (diffuse) out.push_back(photon(c, Rgb<T>(T(0)), d, Photon::shadow));
+            through = spawn_ray(c.point, c.error, c.normal, d);
+        }
+    }
+
+    [[nodiscard]] PhotonAim<T> aim(const Emitter<T>& e) const noexcept
+    {
+        return {e.aimed ? &e.target : nullptr, has_sphere_ ? &scene_sphere_ : nullptr, e.power};
+    }
+
+    /// Every light aimed at `target` (or everywhere when not `aimed`), where it sends any power.
+    void add_emitters(std::vector<Emitter<T>>& emitters, bool aimed, const BoundingSphere<T>& target)
+    {
+        for (std::size_t i = 0; i < SceneT::light_count; ++i) {
+            Emitter<T> e{i, aimed, target, {}};
+            e.power = scene_.visit_light(i, [&](const auto& light) { return light.photon_power(aim(e)); });
+            if (max_component(e.power) > T(0)) emitters.push_back(e);
+        }
+    }
+
+    /// Whether a photon of emitter e leaving along `ray` also heads for the target of an
+    /// earlier emitter of the same light (its ray meets that target's sphere).
+    [[nodiscard]] static bool aimed_at_earlier_target(const std::vector<Emitter<T>>& emitters, const Emitter<T>& e, const Ray<T>& ray) noexcept
+    {
+        const Vec3<T> d = normalize(ray.direction);
+        for (const Emitter<T>& other : emitters) {
+            if (&other == &e) return false;
+            if (!other.aimed || other.light != e.light) continue;
+            const Vec3<T> oc = other.target.center - ray.origin;
+            const T along = dot(oc, d), off2 = length_squared(oc) - along * along, r2 = other.target.radius * other.target.radius;
+            if (off2 <= r2 && (along > T(0) || length_squared(oc) <= r2)) return true;
+        }
+        return false;
+    }
+
+    /// Drop the targets whose sphere lies inside another target's (an object nested in a
+    /// glass): every photon aimed at them would be the outer target's to carry.
+    static void drop_nested_targets(std::vector<Emitter<T>>& targets)
+    {
+        std::vector<Emitter<T>> kept;
+        for (std::size_t i = 0; i < targets.size(); ++i) {
+            const BoundingSphere<T>& a = targets[i].target;
+            bool nested = false;
+            for (std::size_t j = 0; j < targets.size() && !nested; ++j) {
+                if (j == i || targets[j].light != targets[i].light) continue;
+                const BoundingSphere<T>& b = targets[j].target;
+                const bool inside = length(a.center - b.center) + a.radius <= b.radius;
+                const bool same = a.center == b.center && a.radius == b.radius;
+                nested = inside && (!same || j < i); // of two equal spheres, keep the first
+            }
+            if (!nested) kept.push_back(targets[i]);
+        }
+        targets = std::move(kept);
+    }
+
+    const SceneT& scene_;
+    PhotonTracerConfig config_;
+    SpectralBands<T> bands_; ///< for photons meeting a dispersive interface
+    Air air_;                ///< the scene's air: photons in it curve in GradedAir
+    BoundingSphere<T> scene_sphere_{}; ///< around everything bounded (when anything is)
+    bool has_sphere_ = false;           ///< whether anything is
+    std::vector<Emitter<T>> global_;  ///< every light aimed everywhere, for the global map
+    T global_power_ = T(0);
+    std::vector<Emitter<T>> targets_; ///< every light aimed at each object that may scatter by a delta lobe: the caustic map's and a light tracer's
+    T target_power_ = T(0);
+};
+
+/// Run `trace(first, last, out)` over [0, count) in fixed blocks on worker threads and
+/// concatenate the blocks in order: the result does not depend on the thread count.
+/// Each worker appends to a vector of its own (no allocation per block: many threads
+/// allocating and first touching large blocks at once wait on each other in the
+/// kernel) and notes where each of its blocks lies.
+template <class Trace>
+std::vector<Photon> trace_in_fixed_blocks(std::size_t count, unsigned threads, Trace&& trace)
+{
+    constexpr std::size_t block = 4096;
+    const std::size_t blocks = (count + block - 1) / block;
+    struct Part {
+        unsigned worker = 0;
+        std::size_t begin = 0, end = 0;
+    };
+    std::vector<Part> parts(blocks);
+    std::vector<std::vector<Photon>> local(workers_for(blocks, threads));
+    parallel_blocks(blocks, threads, [&](std::size_t b, unsigned worker) {
+        std::vector<Photon>& out = local[worker];
+        const std::size_t begin = out.size();
+        trace(b * block, std::min(count, (b + 1) * block), out);
+        parts[b] = {worker, begin, out.size()};
+    });
+    std::size_t total = 0;
+    for (const Part& part : parts) total += part.end - part.begin;
+    std::vector<Photon> all;
+    all.reserve(total);
+    for (const Part& part : parts) {
+        const auto first = local[part.worker].begin();
+        all.insert(all.end(), first + std::ptrdiff_t(part.begin), first + std::ptrdiff_t(part.end));
+    }
+    return all;
+}
+
+} // namespace detail
+
+namespace detail {
+
+[[nodiscard]] inline allocation_error photons_out_of_memory(const PhotonTracerConfig& config)
+{
+    return allocation_error("prism: tracing " + std::to_string(config.global_photons) + " global and " + std::to_string(config.caustic_photons) +
+                            " caustic photons ran out of memory (each stored photon takes " + std::to_string(sizeof(Photon)) +
+                            " bytes, and a photon may be stored at every diffuse bounce)");
+}
+
+} // namespace detail
+
+/// The photons one process of `parts` traces of a pass (a distributed trace's share):
+/// of each map, photon indices [count part / parts, count (part + 1) / parts) of pass
+/// `pass`, in index order and not yet in a tree. Each photon's Sobol point and random
+/// stream come from its index, so the shares of parts 0 to parts - 1, put end to end,
+/// are the photons trace_photons finds, bit for bit.
+struct PhotonShare {
+    std::vector<Photon> global;  ///< this share of the global map's photons
+    std::vector<Photon> caustic; ///< this share of the caustic map's photons
+    std::vector<Photon> volume;  ///< this share of the volume map's photons (the global pass's, then the caustic pass's)
+};
+
+namespace detail {
+
+/// Move the volume photons of `surface` (in order) to the end of `volume`.
+inline void split_volume_photons(std::vector<Photon>& surface, std::vector<Photon>& volume)
+{
+    std::size_t kept = 0;
+    for (const Photon& photon : surface) {
+        if ((photon.flags & Photon::volume) != 0) volume.push_back(photon);
+        else surface[kept++] = photon;
+    }
+    surface.resize(kept);
+}
+
+} // namespace detail
+
+/// Throws std::invalid_argument when passes 0 to `passes` - 1 of `config`'s photons would
+/// reach past photon index 2^32 (photon indices are Sobol indices, 32 bits), naming the
+/// first pass that does: a render of many passes checks its last before it traces its first.
+inline void check_photon_passes(const PhotonTracerConfig& config, std::uint64_t passes)
+{
+    for (const std::size_t count : {config.global_photons, config.caustic_photons})
+        if (count > 0 && passes > 0 && passes - 1 >= (std::uint64_t(1) << 32) / count)
+            detail::throw_invalid("trace_photons pass ", (std::uint64_t(1) << 32) / count, " of ", count,
+                                  " photons reaches past photon index 2^32 (the Sobol sequence's length): at most ", (std::uint64_t(1) << 32) / count,
+                                  " passes of this many photons, asked for ", passes);
+}
+
+template <class SceneT, class Air = StraightAir>
+[[nodiscard]] PhotonShare trace_photon_share(const SceneT& scene, const PhotonTracerConfig& config, const Air& air, std::size_t pass, std::size_t part,
+                                             std::size_t parts)
+{
+    if (parts < 1 || parts >= (std::size_t(1) << 31) || part >= parts)
+        detail::throw_invalid("trace_photon_share part ", part, " of ", parts, ": expected 0 <= part < parts < 2^31");
+    const detail::PhotonTracer<SceneT, Air> tracer(scene, config, air);
+    check_photon_passes(config, pass + 1);
+    // floor(count k / parts) without overflow (parts < 2^31): with count = q parts + r,
+    // it is q k + floor(r k / parts).
+    const auto share_first = [&](std::size_t count, std::size_t k) { return count / parts * k + count % parts * k / parts; };
+    PhotonShare share;
+    try {
+        for (const bool caustic : {false, true}) {
+            const std::size_t count = caustic ? config.caustic_photons : config.global_photons;
+            const std::size_t first = pass * count + share_first(count, part), last = pass * count + share_first(count, part + 1);
+            (caustic ? share.caustic : share.global) =
+                detail::trace_in_fixed_blocks(last - first, config.threads, [&](std::size_t a, std::size_t b, std::vector<Photon>& out) {
+                    if (caustic) tracer.trace_caustic(first + a, first + b, out);
+                    else tracer.trace_global(first + a, first + b, out);
+                });
+        }
+        if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
+            detail::split_volume_photons(share.global, share.volume);
+            detail::split_volume_photons(share.caustic, share.volume);
+        }
+    } catch (const std::bad_alloc&) {
+        throw detail::photons_out_of_memory(config);
+    }
+    return share;
+}
+
+/// Trace the global and caustic photon maps of a scene, from its lights: photons
+/// [pass N, (pass + 1) N) of each map's sequence, N its count in `config`. Pass 0 is the
+/// maps; every pass is an independent set of the same size and power (progressive photon
+/// mapping's), since each photon's Sobol point and random stream come from its index.
+/// The trees are built on config.threads threads, the same for any count.
+template <class SceneT, class Air = StraightAir>
+[[nodiscard]] PhotonMaps trace_photons(const SceneT& scene, const PhotonTracerConfig& config = {}, const Air& air = {}, std::size_t pass = 0)
+{
+    PhotonShare all = trace_photon_share(scene, config, air, pass, 0, 1);
+    PhotonMaps maps;
+    try {
+        maps.global = PhotonMap(std::move(all.global), config.threads);
+        maps.caustic = PhotonMap(std::move(all.caustic), config.threads);
+        if (!all.volume.empty()) maps.volume = PhotonMap(std::move(all.volume), config.threads);
+    } catch (const std::bad_alloc&) {
+        throw detail::photons_out_of_memory(config);
+    }
+    return maps;
+}
+
+} // namespace prism
+
 // ---- prism/integrator/light_tracer.hpp ----
 // LightTracer: the light-tracing half of prism's reference estimator, for the paths a
 // path tracer cannot find: those whose vertex next to the light is specular (a point
@@ -14301,132 +15468,6 @@ struct Overload : F... {
 };
 template <class... F>
 Overload(F...) -> Overload<F...>;
-
-} // namespace prism
-
-// ---- prism/transport/direct.hpp ----
-// Light arriving from each light at a surface point, by shadow rays: shared by the integrators.
-
-
-#include <array>
-#include <utility>
-
-namespace prism {
-
-/// Shadow rays stop this fraction short of a point light, so a light placed on a
-/// surface is not shadowed by that surface (pbrt's ShadowEpsilon).
-template <Scalar T>
-inline constexpr T shadow_epsilon = T(1e-4);
-
-/// How a shading point samples a light with extent (a delta light is asked once):
-/// `grid` x `grid` stratified samples, each jittered within its stratum by `rng` (at the
-/// strata's centres without one), each carrying 1 / grid^2 of the estimate.
-struct LightSampling {
-    Random* rng = nullptr; ///< jitters each sample in its stratum; null: stratum centres
-    int grid = 1;         ///< samples per side of the unit square
-};
-
-/// The samples one light is asked for: 1 for a delta light, grid^2 for the others.
-template <Light L>
-[[nodiscard]] constexpr int samples_of(const LightSampling& sampling) noexcept
-{
-    return is_delta_light<L> ? 1 : sampling.grid * sampling.grid;
-}
-
-/// g(sample) for each sample `sampling` asks of `light` at p: its one sample for a delta
-/// light; else one per stratum of the grid, its irradiance that stratum's share.
-template <Light L, Scalar T, class G>
-void for_each_light_sample(const L& light, const Vec3<T>& p, const LightSampling& sampling, G&& g)
-{
-    if constexpr (is_delta_light<L>) {
-        g(light.sample(p, Vec2<T>(T(0.5))));
-    } else {
-        const int n_side = sampling.grid;
-        const T side = T(1) / T(n_side), share = side * side;
-        for (int i = 0; i < n_side; ++i)
-            for (int j = 0; j < n_side; ++j) {
-                const auto [ju, jv] = sampling.rng ? sampling.rng->template uniform2<T>() : std::array<T, 2>{T(0.5), T(0.5)};
-                LightSample<T> s = light.sample(p, Vec2<T>((T(i) + ju) * side, (T(j) + jv) * side));
-                s.irradiance *= share;
-                g(s);
-            }
-    }
-}
-
-/// The sides of a surface light is gathered from: the one a ray arrived from (a surface
-/// that reflects), or both (an interface whose lobe also refracts: frosted glass).
-enum class Sides { near, both };
-
-/// For each sample of `light` arriving at the surface on the side the ray arrived from
-/// (or on either side, with Sides::both), call f(sample, v, cos): the sample (its
-/// irradiance already the sample's share of the light's), the shadow ray's transmittance v
-/// (0 when occluded, Beer-Lambert through glass) and the cosine at the surface (the
-/// shading normal's: shading_cosine; its absolute value from the far side, where the
-/// shading and the true normal agree on the side). Samples behind the surface, or carrying
-/// nothing, are not visited: they count as occluded. How dielectrics shadow: see
-/// Scene::transmittance. A light that casts its own shadow (has_own_shadow: POV-Ray's
-/// area_light) gives v itself, from shadow rays to its points.
-template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, Sides Gathered = Sides::near, class SceneT, Light L, Scalar T, class F>
-void for_each_sample_arriving(const SceneT& scene, const L& light, const Crossing<T>& hit, const LightSampling& sampling, F&& f)
-{
-    const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
-    for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
-        T cos = shading_cosine(n_shading, n, s.wi);
-        if constexpr (Gathered == Sides::both) {
-            if (!(cos > T(0))) cos = shading_cosine(-n_shading, -n, s.wi);
-        }
-        if (!(cos > T(0)) || !(max_component(s.irradiance) > T(0))) return;
-        if constexpr (has_own_shadow<L>) {
-            const auto through = [&](const Vec3<T>& point) {
-                const Vec3<T> to = point - hit.point;
-                const T distance = length(to);
-                if (!(distance > T(0))) return Rgb<T>(T(1));
-                return scene.template transmittance<Glass>(spawn_ray(hit.point, hit.error, hit.normal, to / distance), distance * (T(1) - shadow_epsilon<T>));
-            };
-            f(s, light.shadow(through, s.irradiance / pi<T>, sampling.rng), cos);
-        } else {
-            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
-            f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
-        }
-    });
-}
-
-/// For each sample of `light` at a point `p` in a medium (no surface: every direction
-/// counts), call f(sample, v): the sample, its irradiance already its share of the
-/// light's, and v the scene's transmittance along the shadow ray (0 when occluded; the
-/// air's own medium is the caller's, transport/media.hpp's air_transmittance).
-template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Light L, Scalar T, class F>
-void for_each_sample_in_medium(const SceneT& scene, const L& light, const Vec3<T>& p, const LightSampling& sampling, F&& f)
-{
-    for_each_light_sample(light, p, sampling, [&](const LightSample<T>& s) {
-        if (!(max_component(s.irradiance) > T(0))) return;
-        if constexpr (has_own_shadow<L>) {
-            const auto through = [&](const Vec3<T>& point) {
-                const Vec3<T> to = point - p;
-                const T distance = length(to);
-                if (!(distance > T(0))) return Rgb<T>(T(1));
-                return scene.template transmittance<Glass>(Ray<T>{p, to / distance}, distance * (T(1) - shadow_epsilon<T>));
-            };
-            f(s, light.shadow(through, s.irradiance / pi<T>, sampling.rng));
-        } else {
-            f(s, scene.template transmittance<Glass>(Ray<T>{p, s.wi}, s.distance * (T(1) - shadow_epsilon<T>)));
-        }
-    });
-}
-
-/// for_each_sample_arriving over every light of the scene, its area lights last.
-template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
-void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, const LightSampling& sampling, F&& f)
-{
-    scene.for_each_light([&](const auto& light) { for_each_sample_arriving<Glass>(scene, light, hit, sampling, f); });
-}
-
-/// The same, one sample per light at its strata's centre (delta lights only are exact).
-template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, class SceneT, Scalar T, class F>
-void for_each_light_arriving(const SceneT& scene, const Crossing<T>& hit, F&& f)
-{
-    for_each_light_arriving<Glass>(scene, hit, LightSampling{}, std::forward<F>(f));
-}
 
 } // namespace prism
 
@@ -16060,6 +17101,22 @@ struct DirectionalLight {
         return {{uniform_disk(sphere.center - upstream * axis, axis, sphere.radius, u, v), axis}};
     }
 
+    /// A ray along `direction` from a point uniform (u_position) over the disk of the
+    /// scene's sphere that faces the light, upstream of it, carrying E.
+    [[nodiscard]] EmissionSample<T> emission(const BoundingSphere<T>& scene, const Vec2<T>& u_position, const Vec2<T>&) const noexcept
+    {
+        const Vec3<T> axis = normalize(direction);
+        const Vec3<T> origin = uniform_disk(scene.center - T(2) * scene.radius * axis, axis, scene.radius, u_position.x, u_position.y);
+        return {{origin, axis}, irradiance, T(1) / (pi<T> * scene.radius * scene.radius), T(1), T(1), true};
+    }
+
+    /// The densities emission() draws a ray along `direction` with (any other: none, but
+    /// the estimators never ask, a delta direction being found by nothing else).
+    [[nodiscard]] EmissionPdf<T> emission_pdf(const Vec3<T>&, const BoundingSphere<T>& scene) const noexcept
+    {
+        return {T(1) / (pi<T> * scene.radius * scene.radius), T(1)};
+    }
+
     /// Throws std::invalid_argument, naming the parameter, for a zero or non-finite direction or a negative irradiance.
     constexpr void validate() const
     {
@@ -16126,6 +17183,23 @@ struct EnvironmentLight {
         const Vec3<T> travel = -uniform_sphere(a, b);
         const T upstream = length(sphere.center - scene.center) + scene.radius + sphere.radius;
         return {{uniform_disk(sphere.center - upstream * travel, travel, sphere.radius, u, v), travel}};
+    }
+
+    /// A ray from a direction drawn as sample() draws it (u_direction), through a point
+    /// uniform (u_position) over the disk of the scene's sphere that faces it, upstream of
+    /// the sphere, carrying the radiance from there.
+    [[nodiscard]] EmissionSample<T> emission(const BoundingSphere<T>& scene, const Vec2<T>& u_position, const Vec2<T>& u_direction) const noexcept
+    {
+        const LightSample<T> from = sample(scene.center, u_direction);
+        const Vec3<T> travel = -from.wi;
+        const Vec3<T> origin = uniform_disk(scene.center - T(2) * scene.radius * travel, travel, scene.radius, u_position.x, u_position.y);
+        return {{origin, travel}, arriving_from(from.wi), T(1) / (pi<T> * scene.radius * scene.radius), from.pdf, T(1), true};
+    }
+
+    /// The densities emission() draws a ray travelling along `leaving` (unit) with.
+    [[nodiscard]] EmissionPdf<T> emission_pdf(const Vec3<T>& leaving, const BoundingSphere<T>& scene) const noexcept
+    {
+        return {T(1) / (pi<T> * scene.radius * scene.radius), pdf(-leaving)};
     }
 
     /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite radiance.
@@ -16313,6 +17387,23 @@ public:
         return {{uniform_disk(sphere.center - upstream * travel, travel, sphere.radius, u, v), travel}, weight};
     }
 
+    /// A ray from a direction drawn as sample() draws it (u_direction), through a point
+    /// uniform (u_position) over the disk of the scene's sphere that faces it, upstream of
+    /// the sphere, carrying the radiance from there.
+    [[nodiscard]] EmissionSample<T> emission(const BoundingSphere<T>& scene, const Vec2<T>& u_position, const Vec2<T>& u_direction) const noexcept
+    {
+        const LightSample<T> from = sample(scene.center, u_direction);
+        const Vec3<T> travel = -from.wi;
+        const Vec3<T> origin = uniform_disk(scene.center - T(2) * scene.radius * travel, travel, scene.radius, u_position.x, u_position.y);
+        return {{origin, travel}, arriving_from(from.wi), T(1) / (pi<T> * scene.radius * scene.radius), from.pdf, T(1), true};
+    }
+
+    /// The densities emission() draws a ray travelling along `leaving` (unit) with.
+    [[nodiscard]] EmissionPdf<T> emission_pdf(const Vec3<T>& leaving, const BoundingSphere<T>& scene) const noexcept
+    {
+        return {T(1) / (pi<T> * scene.radius * scene.radius), pdf(-leaving)};
+    }
+
     /// The image and its settings were checked when the light was made: nothing is left to check.
     constexpr void validate() const noexcept {}
 
@@ -16361,80 +17452,6 @@ private:
 };
 
 static_assert(Light<EnvironmentMap<float>>);
-
-} // namespace prism
-
-// ---- prism/light/point_light.hpp ----
-// PointLight: an isotropic point source.
-
-
-namespace prism {
-
-enum class Falloff {
-    inverse_square, ///< physical: E = I / r^2
-    none,           ///< E = I at any distance; only to mirror POV-Ray's `fade_power 0`
-};
-
-/// A point light of radiant intensity I (W/sr, per channel); its power is 4 pi I.
-template <Scalar T = float>
-struct PointLight {
-    /// The precision of the light.
-    using scalar_type = T;
-    /// A delta light: from one point (one direction), seen by shadow rays only.
-    static constexpr bool delta = true;
-
-    Vec3<T> position{}; ///< where the light is
-    Rgb<T> intensity{T(1)}; ///< radiant intensity per channel (W/sr)
-    Falloff falloff = Falloff::inverse_square; ///< inverse-square (physical) or none (POV-Ray's `fade_power 0`)
-
-    /// Radiant power Phi = 4 pi I.
-    [[nodiscard]] constexpr Rgb<T> power() const noexcept { return T(4) * pi<T> * intensity; }
-
-    /// The light arriving at p: its direction, distance and irradiance I / r^2 (I without falloff).
-    [[nodiscard]] LightSample<T> sample(const Vec3<T>& p) const noexcept
-    {
-        const Vec3<T> to_light = position - p;
-        const T r2 = length_squared(to_light);
-        const T r = prism::sqrt(r2);
-        const Rgb<T> e = falloff == Falloff::inverse_square ? intensity / r2 : intensity;
-        return {to_light / r, r, e};
-    }
-    /// The same: a delta light needs no random numbers.
-    [[nodiscard]] LightSample<T> sample(const Vec3<T>& p, const Vec2<T>&) const noexcept { return sample(p); }
-
-    /// Everywhere: the whole power. Toward a target sphere: the power into the cone that
-    /// holds it (Phi times the cone's solid angle / 4 pi), or the whole power when the
-    /// light is inside it.
-    [[nodiscard]] Rgb<T> photon_power(const PhotonAim<T>& aim) const noexcept
-    {
-        if (!aim.target) return power();
-        const ConeToward<T> cone = ConeToward<T>::of(position, *aim.target);
-        return cone.cos_half_angle <= T(-1) ? power() : power() * (T(0.5) * (T(1) - cone.cos_half_angle));
-    }
-
-    /// Uniform over the sphere of directions, or over the cone toward the target.
-    [[nodiscard]] EmittedPhoton<T> emit_photon(const PhotonAim<T>& aim, T u, T v) const noexcept
-    {
-        const bool without_falloff = falloff == Falloff::none;
-        if (!aim.target) return {{position, uniform_sphere(u, v)}, Rgb<T>(T(1)), without_falloff};
-        const ConeToward<T> cone = ConeToward<T>::of(position, *aim.target);
-        const Vec3<T> direction = cone.cos_half_angle <= T(-1) ? uniform_sphere(u, v) : uniform_cone(cone.axis, cone.cos_half_angle, u, v);
-        return {{position, direction}, Rgb<T>(T(1)), without_falloff};
-    }
-
-    /// Throws std::invalid_argument, naming the parameter, for a non-finite position or a negative intensity.
-    constexpr void validate() const
-    {
-        detail::require_finite("PointLight position", position);
-        detail::require_non_negative("PointLight intensity", intensity);
-        // The photon tracer divides the power among the photons: it must be finite too.
-        if (!is_finite(power()))
-            detail::throw_invalid("PointLight intensity ", detail::describe(intensity), " is too large: its power 4 pi I overflows");
-    }
-
-};
-
-static_assert(Light<PointLight<float>>);
 
 } // namespace prism
 
@@ -16662,6 +17679,22 @@ struct SpotLight {
         return {{position, w}, Rgb<T>(falloff(dot(w, a)) * mean_falloff_inverse())};
     }
 
+    /// A ray uniform over the outer cone (u_direction), carrying I times the falloff along
+    /// it; the origin is the light's position (a delta in area: density 1).
+    [[nodiscard]] EmissionSample<T> emission(const BoundingSphere<T>&, const Vec2<T>&, const Vec2<T>& u_direction) const noexcept
+    {
+        const Vec3<T> a = axis();
+        const Vec3<T> w = uniform_cone(a, cosine(outer_angle), u_direction.x, u_direction.y);
+        return {{position, w}, intensity * falloff(dot(w, a)), T(1), outer_cone_pdf()};
+    }
+
+    /// The densities emission() draws a ray leaving along `leaving` (unit) with: none
+    /// outside the outer cone.
+    [[nodiscard]] EmissionPdf<T> emission_pdf(const Vec3<T>& leaving, const BoundingSphere<T>&) const noexcept
+    {
+        return {T(1), dot(leaving, axis()) >= cosine(outer_angle) ? outer_cone_pdf() : T(0)};
+    }
+
     /// Throws std::invalid_argument, naming the parameter, for a non-finite position, a zero
     /// direction, a negative intensity, or angles outside 0 <= inner <= outer <= 180.
     constexpr void validate() const
@@ -16680,6 +17713,9 @@ private:
     [[nodiscard]] static T radians(T degrees) noexcept { return degrees * (pi<T> / T(180)); }
     [[nodiscard]] static T cosine(T degrees) noexcept { return std::cos(radians(degrees)); }
     [[nodiscard]] Vec3<T> axis() const noexcept { return normalize(direction); }
+
+    /// The density of a direction uniform over the outer cone, 1 / (2 pi (1 - cos outer)).
+    [[nodiscard]] T outer_cone_pdf() const noexcept { return T(1) / (T(2) * pi<T> * (T(1) - cosine(outer_angle))); }
 
     /// 1 / (the falloff's mean over the outer cone): the solid angle of the outer cone
     /// over the falloff's integral.

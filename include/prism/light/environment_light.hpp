@@ -58,6 +58,23 @@ struct EnvironmentLight {
         return {{uniform_disk(sphere.center - upstream * travel, travel, sphere.radius, u, v), travel}};
     }
 
+    /// A ray from a direction drawn as sample() draws it (u_direction), through a point
+    /// uniform (u_position) over the disk of the scene's sphere that faces it, upstream of
+    /// the sphere, carrying the radiance from there.
+    [[nodiscard]] EmissionSample<T> emission(const BoundingSphere<T>& scene, const Vec2<T>& u_position, const Vec2<T>& u_direction) const noexcept
+    {
+        const LightSample<T> from = sample(scene.center, u_direction);
+        const Vec3<T> travel = -from.wi;
+        const Vec3<T> origin = uniform_disk(scene.center - T(2) * scene.radius * travel, travel, scene.radius, u_position.x, u_position.y);
+        return {{origin, travel}, arriving_from(from.wi), T(1) / (pi<T> * scene.radius * scene.radius), from.pdf, T(1), true};
+    }
+
+    /// The densities emission() draws a ray travelling along `leaving` (unit) with.
+    [[nodiscard]] EmissionPdf<T> emission_pdf(const Vec3<T>& leaving, const BoundingSphere<T>& scene) const noexcept
+    {
+        return {T(1) / (pi<T> * scene.radius * scene.radius), pdf(-leaving)};
+    }
+
     /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite radiance.
     constexpr void validate() const { detail::require_non_negative("EnvironmentLight radiance", radiance); }
 };

@@ -52,6 +52,31 @@ struct EmittedPhoton {
     bool without_falloff = false; ///< whether the light does not fall off with distance
 };
 
+/// A ray a light emits, drawn for the bidirectional estimators (integrator/bidirectional.hpp)
+/// with the densities it was drawn with: what it carries over pdf_area pdf_direction is
+/// one path's estimate of the light's power (times `cos` for a surface).
+template <Scalar T>
+struct EmissionSample {
+    Ray<T> ray{};          ///< from the light (off an emitting surface), unit direction
+    Rgb<T> radiance{T(0)}; ///< emitted along it: L for a light with extent, I for a point or spot light, E for a parallel one
+    T pdf_area = T(0);     ///< the origin's density per unit area (1 for a point: a delta; 1 / (pi R^2) on the disk a light at infinity enters by)
+    T pdf_direction = T(0); ///< the direction's density per steradian (1 for a parallel light: a delta)
+    T cos = T(1);          ///< at an emitting surface, the cosine between its normal and the ray (1 for the others)
+    bool from_infinity = false; ///< a light infinitely far away (parallel, environment): its origin is a disk's, in no measure the other strategies share
+};
+
+/// The densities with which a light's emission() draws a given ray (Emission's pdf_area
+/// and pdf_direction): the other strategy a bidirectional estimator weighs a light
+/// sample or a light a path met against.
+template <Scalar T>
+struct EmissionPdf {
+    T area = T(0);      ///< per unit area of the origin
+    T direction = T(0); ///< per steradian
+
+    /// Their product: the density per unit area and steradian.
+    [[nodiscard]] constexpr T both() const noexcept { return area * direction; }
+};
+
 /// The cone of directions from a point that holds a sphere: its unit axis and the cosine
 /// of its half-angle, -1 from inside the sphere (every direction).
 template <Scalar T>

@@ -60,6 +60,16 @@ struct PointLight {
         return {{position, direction}, Rgb<T>(T(1)), without_falloff};
     }
 
+    /// A ray uniform over the sphere of directions (u_direction), carrying I; the origin is
+    /// the light's position (a delta in area: density 1).
+    [[nodiscard]] EmissionSample<T> emission(const BoundingSphere<T>&, const Vec2<T>&, const Vec2<T>& u_direction) const noexcept
+    {
+        return {{position, uniform_sphere(u_direction.x, u_direction.y)}, intensity, T(1), T(1) / (T(4) * pi<T>)};
+    }
+
+    /// The densities emission() draws a ray leaving along `leaving` with.
+    [[nodiscard]] EmissionPdf<T> emission_pdf(const Vec3<T>&, const BoundingSphere<T>&) const noexcept { return {T(1), T(1) / (T(4) * pi<T>)}; }
+
     /// Throws std::invalid_argument, naming the parameter, for a non-finite position or a negative intensity.
     constexpr void validate() const
     {

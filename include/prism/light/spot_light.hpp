@@ -89,6 +89,22 @@ struct SpotLight {
         return {{position, w}, Rgb<T>(falloff(dot(w, a)) * mean_falloff_inverse())};
     }
 
+    /// A ray uniform over the outer cone (u_direction), carrying I times the falloff along
+    /// it; the origin is the light's position (a delta in area: density 1).
+    [[nodiscard]] EmissionSample<T> emission(const BoundingSphere<T>&, const Vec2<T>&, const Vec2<T>& u_direction) const noexcept
+    {
+        const Vec3<T> a = axis();
+        const Vec3<T> w = uniform_cone(a, cosine(outer_angle), u_direction.x, u_direction.y);
+        return {{position, w}, intensity * falloff(dot(w, a)), T(1), outer_cone_pdf()};
+    }
+
+    /// The densities emission() draws a ray leaving along `leaving` (unit) with: none
+    /// outside the outer cone.
+    [[nodiscard]] EmissionPdf<T> emission_pdf(const Vec3<T>& leaving, const BoundingSphere<T>&) const noexcept
+    {
+        return {T(1), dot(leaving, axis()) >= cosine(outer_angle) ? outer_cone_pdf() : T(0)};
+    }
+
     /// Throws std::invalid_argument, naming the parameter, for a non-finite position, a zero
     /// direction, a negative intensity, or angles outside 0 <= inner <= outer <= 180.
     constexpr void validate() const
@@ -107,6 +123,9 @@ private:
     [[nodiscard]] static T radians(T degrees) noexcept { return degrees * (pi<T> / T(180)); }
     [[nodiscard]] static T cosine(T degrees) noexcept { return std::cos(radians(degrees)); }
     [[nodiscard]] Vec3<T> axis() const noexcept { return normalize(direction); }
+
+    /// The density of a direction uniform over the outer cone, 1 / (2 pi (1 - cos outer)).
+    [[nodiscard]] T outer_cone_pdf() const noexcept { return T(1) / (T(2) * pi<T> * (T(1) - cosine(outer_angle))); }
 
     /// 1 / (the falloff's mean over the outer cone): the solid angle of the outer cone
     /// over the falloff's integral.

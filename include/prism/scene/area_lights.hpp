@@ -22,6 +22,7 @@
 #include <prism/geometry/shape.hpp>
 #include <prism/geometry/surface_point.hpp>
 #include <prism/light/light.hpp>
+#include <prism/material/bsdf.hpp>
 #include <prism/material/texture.hpp>
 #include <prism/material/traits.hpp>
 #include <prism/scene/hit.hpp>
@@ -103,27 +104,40 @@ public:
     /// One point of one emitter, for the shading point p: the emitter by power with u.x
     /// (what is left of it places the point, with u.y). Its estimate is L / pdf where the
     /// front faces p (or the emitter is two-sided), else 0.
-    [[nodiscard]] LightSample<T> sample(const Vec3<T>& p, const Vec2<T>& u) const noexcept
+    [[nodiscard]] LightSample<T> sample(const Vec3<T>& p, const Vec2<T>& u) const noexcept { return sample_point(p, u).sample; }
+
+    /// A light sample and the emitter's point it was drawn at.
+    struct PointSample {
+        LightSample<T> sample; ///< as sample() gives it
+        Hit<T> at;             ///< the emitter's point, its outward normal the crossing's (slot and index the emitter's)
+    };
+
+    /// sample(p, u), with the point it drew (for a bidirectional estimator's weights).
+    [[nodiscard]] PointSample sample_point(const Vec3<T>& p, const Vec2<T>& u) const noexcept
     {
         const auto& table = scene_->emitter_table_;
-        if (table.keys.empty()) return {{T(0), T(0), T(1)}, T(0), Rgb<T>(T(0)), T(1)};
+        if (table.keys.empty()) return {{{T(0), T(0), T(1)}, T(0), Rgb<T>(T(0)), T(1)}, {}};
         const AliasPick<T> pick = table.pick.pick(u.x);
         const detail::ObjectKey key = table.keys[pick.index];
-        return dispatch<SceneT::slot_count>(key.slot, [&]<std::size_t I>(Index<I>) -> LightSample<T> {
+        return dispatch<SceneT::slot_count>(key.slot, [&]<std::size_t I>(Index<I>) -> PointSample {
             if constexpr (SceneT::template slot_emits<I>) {
                 const auto& object = scene_->template object_at<I>(key.index);
                 const auto& material = object.material;
                 const auto& surface = std::get<I>(scene_->slot_emitters_).surfaces[key.index];
                 const SurfacePoint<T> s = sample_toward(surface, p, Vec2<T>(pick.rest, u.y));
+                Hit<T> at;
+                at.crossing = Crossing<T>::flat(T(0), s.point, Vec3<T>(T(0)), s.normal, true);
+                at.slot = std::uint32_t(I);
+                at.index = key.index;
                 Vec3<T> wi = s.point - p;
                 const T distance = length(wi);
                 wi /= distance;
                 const T pdf = s.pdf * pick.probability;
                 const bool front = material.two_sided || dot(s.normal, wi) < T(0);
-                if (!(pdf > T(0)) || !is_finite(pdf) || !(distance > T(0))) return {wi, distance, Rgb<T>(T(0)), T(1)};
-                if (!front) return {wi, distance, Rgb<T>(T(0)), pdf};
+                if (!(pdf > T(0)) || !is_finite(pdf) || !(distance > T(0))) return {{wi, distance, Rgb<T>(T(0)), T(1)}, at};
+                if (!front) return {{wi, distance, Rgb<T>(T(0)), pdf}, at};
                 using M = std::remove_cvref_t<decltype(material)>;
-                return {wi, distance, material.emitted_radiance(detail::emission_point<M>(object.shape, s)) / pdf, pdf};
+                return {{wi, distance, material.emitted_radiance(detail::emission_point<M>(object.shape, s)) / pdf, pdf}, at};
             } else {
                 return {};
             }
@@ -216,6 +230,65 @@ public:
                 using M = std::remove_cvref_t<decltype(object.material)>;
                 const Rgb<T> weight = object.material.emitted_radiance(detail::emission_point<M>(object.shape, s)) * (emitting * omega / (s.pdf * pick.probability)) / aim.power;
                 return {spawn_ray(s.point, error, s.normal, w), safe(weight)};
+            } else {
+                return {};
+            }
+        });
+    }
+
+    /// A ray of the area lights' emission (their photons' distribution, everywhere): an
+    /// emitter by power with u_pick, a point uniform over its area (u_position), a direction
+    /// cosine-distributed about its normal (u_direction; either side of a two-sided one,
+    /// chosen by u_pick's remainder), with the point as a Hit (for pdf() and emission_pdf()).
+    struct Emitted {
+        EmissionSample<T> emission; ///< the ray and its densities
+        Hit<T> at;            ///< where it leaves, the emitter's outward normal as the crossing's (nothing when there is no emitter: a zero pdf_area)
+    };
+
+    /// See Emitted.
+    [[nodiscard]] Emitted emission(T u_pick, const Vec2<T>& u_position, const Vec2<T>& u_direction) const noexcept
+    {
+        const auto& table = scene_->emitter_table_;
+        if (table.keys.empty()) return {};
+        const AliasPick<T> pick = table.pick.pick(u_pick);
+        const detail::ObjectKey key = table.keys[pick.index];
+        return dispatch<SceneT::slot_count>(key.slot, [&]<std::size_t I>(Index<I>) -> Emitted {
+            if constexpr (SceneT::template slot_emits<I>) {
+                const auto& object = scene_->template object_at<I>(key.index);
+                const auto& surface = std::get<I>(scene_->slot_emitters_).surfaces[key.index];
+                const SurfacePoint<T> s = surface.sample_area(u_position);
+                const BoundingSphere<T> own = bounding_sphere(object.shape);
+                const Vec3<T> error = Vec3<T>(gamma<T>(32) * (max_component(abs(s.point)) + own.radius));
+                const bool two_sided = object.material.two_sided;
+                const bool back = two_sided && pick.rest < T(0.5);
+                const Vec3<T> n = back ? -s.normal : s.normal;
+                const Vec3<T> w = LocalFrame<T>::about(n).to_world(cosine_direction(u_direction.x, u_direction.y));
+                const T cos = dot(w, n);
+                using M = std::remove_cvref_t<decltype(object.material)>;
+                Emitted out;
+                out.emission = {spawn_ray(s.point, error, s.normal, w), object.material.emitted_radiance(detail::emission_point<M>(object.shape, s)),
+                                pick.probability / surface.area(), cos / pi<T> * (two_sided ? T(0.5) : T(1)), cos};
+                out.at.crossing = Crossing<T>::flat(T(0), s.point, error, s.normal, true);
+                out.at.slot = std::uint32_t(I);
+                out.at.index = key.index;
+                return out;
+            } else {
+                return {};
+            }
+        });
+    }
+
+    /// The densities emission() draws a ray leaving `at` (an emitter's point, its outward
+    /// normal the crossing's) along the unit direction `leaving` with.
+    [[nodiscard]] EmissionPdf<T> emission_pdf(const Hit<T>& at, const Vec3<T>& leaving) const noexcept
+    {
+        return dispatch<SceneT::slot_count>(at.slot, [&]<std::size_t I>(Index<I>) -> EmissionPdf<T> {
+            if constexpr (SceneT::template slot_emits<I>) {
+                const auto& emitters = std::get<I>(scene_->slot_emitters_);
+                const bool two_sided = scene_->template object_at<I>(at.index).material.two_sided;
+                const T cos = dot(leaving, at.crossing.normal);
+                const T emitting = two_sided ? std::abs(cos) * T(0.5) : std::max(cos, T(0));
+                return {emitters.probability[at.index] / emitters.surfaces[at.index].area(), emitting / pi<T>};
             } else {
                 return {};
             }

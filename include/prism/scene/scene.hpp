@@ -93,6 +93,8 @@ public:
     /// Some material may be an index-matched boundary (may_match_index): shadow rays that
     /// glass blocks still pass it.
     static constexpr bool has_index_matching = detail::any_of({may_match_index<typename Slots::material_type>...});
+    /// Some material disperses (its index depends on the wavelength): a white path splits there.
+    static constexpr bool has_dispersion = detail::any_of({disperses<typename Slots::material_type>...});
     /// Some material's interior scatters light (a Fog): walks sample where they scatter in it.
     static constexpr bool has_scattering_media = detail::any_of({has_scattering_interior<typename Slots::material_type>...});
     /// Some material reads surface coordinates (a texture, a normal map): its crossings take

@@ -1,0 +1,664 @@
+// SPDX-License-Identifier: MIT
+// Bidirectional: bidirectional path tracing (BDPT) and vertex connection and merging
+// (VCM), one estimator of passes.
+//
+// Each pass traces N light subpaths (a light chosen by power, its emission drawn with
+// known densities: light/light.hpp's Emission) and one camera subpath per pixel, and
+// adds every way of completing a path from the two (Veach 1997, chapter 10):
+//   s = 0        the camera path meets a light (an area or environment light);
+//   s = 1        a camera vertex takes a light sample (next-event estimation);
+//   s >= 2, t >= 2  a camera vertex is joined to a vertex of a light path;
+//   t = 1        a light path's vertex is joined to the camera (light tracing: a splat);
+// s and t are the vertices each subpath gives, so a path of k segments has s + t = k + 1.
+// VCM adds merging (Georgiev et al. 2012; Hachisuka et al. 2012): a camera vertex
+// gathers the light vertices within a radius of it, as progressive photon mapping does,
+// the radius shrinking from pass to pass (r_i = r_0 i^((alpha - 1) / 2)). Every
+// strategy of a path is weighted by the balance heuristic over all of them, computed
+// as the subpaths are traced from three running quantities per vertex (dVCM, dVC, dVM:
+// Georgiev's technical report "Implementing vertex connection and merging", 2012;
+// SmallVCM's layout). A connection goes only through vertices with a non-delta lobe
+// (transport/path_vertex.hpp); a delta vertex is crossed by the subpaths themselves.
+// So with a point light or the sun, the paths E S+ D S+ L (a caustic seen in a mirror
+// or through glass), which no connection can join, are found by merging alone, and VCM
+// is the one unbiased-in-the-limit estimator that renders them.
+//
+// The weights count the densities of the subpaths' draws without their Russian
+// roulette: any weights that sum to 1 over a path's strategies keep every estimate
+// unbiased, and these do, the same functions of the path for every strategy.
+// Deterministic: light path i of pass p draws from its own stream, each camera sample
+// from the render's sampler, splats go to exact sums per thread; the same bits for any
+// thread count, crop or range of passes.
+//
+// Scope: surfaces in clear, straight air (nested dielectrics, index-matched boundaries and
+// absorbing interiors included); a scene with scattering media, dispersion, graded air or
+// a light without falloff is refused at compile time or by the constructor.
+#pragma once
+
+#include <prism/accel/kd_tree.hpp>
+#include <prism/core/check.hpp>
+#include <prism/core/offset.hpp>
+#include <prism/core/parallel.hpp>
+#include <prism/light/light.hpp>
+#include <prism/light/point_light.hpp>
+#include <prism/material/scattering.hpp>
+#include <prism/medium/nesting.hpp>
+#include <prism/render/accumulation.hpp>
+#include <prism/render/render.hpp>
+#include <prism/scene/camera.hpp>
+#include <prism/scene/scene.hpp>
+#include <prism/transport/direct.hpp>
+#include <prism/transport/media.hpp>
+#include <prism/transport/path_vertex.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <variant>
+#include <vector>
+
+namespace prism {
+
+/// Which strategies a Bidirectional estimator combines.
+enum class BidirectionalMethod {
+    bdpt, ///< connections only: bidirectional path tracing
+    vcm,  ///< connections and merging: vertex connection and merging
+};
+
+/// One strategy (s, t): s vertices from the light, t from the camera (a path of s + t - 1 segments).
+struct Strategy {
+    int s = 0; ///< light vertices (0: the camera path met a light)
+    int t = 0; ///< camera vertices (1: light tracing)
+};
+
+/// A Bidirectional estimator's settings.
+struct BidirectionalConfig {
+    BidirectionalMethod method = BidirectionalMethod::vcm; ///< connections only, or with merging
+    /// Segments a path may have, from the camera to the light (1: lights seen directly;
+    /// 2: direct light; ...). Every prism estimator counts its depth this way.
+    int max_length = 64;
+    /// Segments a subpath takes before Russian roulette on its throughput may end it.
+    int roulette_length = 3;
+    /// The first pass's merging radius in scene units; 0: 1/300 of the radius of the
+    /// sphere around the scene (SmallVCM's 0.003).
+    double radius = 0.0;
+    /// In (0, 1): how much of the radius's area each pass keeps (Knaus and Zwicker 2011's alpha).
+    double alpha = 0.75;
+    /// Light subpaths per pass; 0: one per pixel of the image.
+    std::size_t light_paths = 0;
+    /// Only this strategy's estimates (connections only; merges count none): for tests,
+    /// and to see what each strategy brings. `weighted`: with its MIS weight (the
+    /// strategies' images then add up to the whole), else alone (each an unbiased estimate
+    /// of the paths it can find).
+    std::optional<Strategy> only{};
+    bool weighted = true; ///< see `only`
+};
+
+/// Bidirectional path tracing and vertex connection and merging of `scene` (an integrator
+/// of passes: render/render.hpp's PassEstimator).
+template <class SceneT>
+class Bidirectional {
+public:
+    /// The scene's precision.
+    using scalar_type = typename SceneT::scalar_type;
+    /// Shorthand for scalar_type.
+    using T = scalar_type;
+
+    static_assert(!SceneT::has_scattering_media, "Bidirectional renders surfaces only: a scene with a scattering medium needs the PathTracer or a PhotonMapper");
+    static_assert(!SceneT::has_dispersion, "Bidirectional: a dispersive material's wavelengths are not traced yet");
+
+    /// The estimator of `scene` (which must outlive it); throws std::invalid_argument,
+    /// naming the parameter, for a bad setting, a dispersive material or a light without
+    /// falloff (POV-Ray's fade_power 0, which no light path can carry).
+    explicit Bidirectional(const SceneT& scene, BidirectionalConfig config = {}) : scene_(&scene), config_(config)
+    {
+        scene.validate();
+        if (config.max_length < 1) detail::throw_invalid("BidirectionalConfig max_length must be >= 1, got ", config.max_length);
+        if (config.roulette_length < 0) detail::throw_invalid("BidirectionalConfig roulette_length must be >= 0, got ", config.roulette_length);
+        if (!(config.radius >= 0.0 && config.radius < std::numeric_limits<double>::infinity()))
+            detail::throw_invalid("BidirectionalConfig radius must be finite and >= 0, got ", config.radius);
+        if (!(config.alpha > 0.0 && config.alpha < 1.0)) detail::throw_invalid("BidirectionalConfig alpha must be in (0, 1), got ", config.alpha);
+        if (config.only && (config.only->s < 0 || config.only->t < 1))
+            detail::throw_invalid("BidirectionalConfig only must have s >= 0 and t >= 1, got (", config.only->s, ", ", config.only->t, ")");
+        scene.for_each_light([&]<class L>(const L& light) {
+            static_assert(!has_own_shadow<L>, "Bidirectional: a light that casts its own shadow (PointGridLight, POV-Ray's area_light) has no emission to trace");
+            if constexpr (std::same_as<L, PointLight<T>>)
+                if (light.falloff != Falloff::inverse_square) detail::throw_invalid("Bidirectional: a PointLight without falloff (POV-Ray's fade_power 0) has no physical emission");
+        });
+        const Aabb<T> box = scene.bounds();
+        if (!box.empty()) sphere_ = box.bounding_sphere();
+        if (!(sphere_.radius > T(0))) sphere_.radius = T(1);
+        // The lights by power, for the light paths.
+        std::vector<double> weights;
+        const PhotonAim<T> everywhere{nullptr, &sphere_};
+        scene.for_each_light([&](const auto& light) {
+            const Rgb<T> power = light.photon_power(everywhere);
+            weights.push_back(double(power.x + power.y + power.z));
+        });
+        double total = 0.0;
+        for (const double w : weights) total += w;
+        if (!(total > 0.0) || !(total < std::numeric_limits<double>::infinity()))
+            detail::throw_invalid("Bidirectional: the scene's lights emit no finite power (", total, ")");
+        double sum = 0.0;
+        for (const double w : weights) {
+            light_probability_.push_back(T(w / total));
+            sum += w / total;
+            light_cdf_.push_back(T(sum));
+        }
+    }
+    Bidirectional(const SceneT&& scene, BidirectionalConfig config = {}) = delete;
+
+    /// The settings.
+    [[nodiscard]] const BidirectionalConfig& config() const noexcept { return config_; }
+
+    /// The first pass's merging radius (BidirectionalConfig::radius, or its default from the scene's size).
+    [[nodiscard]] T first_radius() const noexcept { return config_.radius > 0.0 ? T(config_.radius) : sphere_.radius * T(0.003); }
+
+    /// Passes config.passes of config.spp: each one camera sample per pixel of the window
+    /// (its weight) and the splats of its light paths there.
+    void add_passes(Accumulation& sums, const Camera<T>& camera, const RenderConfig& config) const
+    {
+        const PassRange passes = detail::render_passes(config);
+        const CameraRays<T> rays = camera.rays(config.width, config.height);
+        const PixelWindow window = detail::render_window(config);
+        if (sums.width() != config.width || sums.height() != config.height || !sums.window().contains(window))
+            detail::throw_invalid("Bidirectional: the Accumulation does not hold the RenderConfig's window");
+        const std::size_t paths = config_.light_paths > 0 ? config_.light_paths : std::size_t(config.width) * std::size_t(config.height);
+        if (paths >= std::numeric_limits<std::uint32_t>::max()) detail::throw_invalid("Bidirectional: ", paths, " light paths a pass overflow a 32-bit index");
+        for (std::uint64_t pass = passes.first; pass < passes.last; ++pass) {
+            const LightPaths light = trace_light_paths(sums, rays, window, config, pass, paths);
+            const CameraPaths eye{this, &light, &rays};
+            RenderConfig pass_render = config;
+            // Pass p takes each pixel's sample p of one sequence (per-pixel Sobol under
+            // zsobol, whose layout a part rendered on its own could not know: progressive.hpp).
+            if (pass_render.sampler == SamplerKind::zsobol) pass_render.sampler = SamplerKind::sobol;
+            pass_render.spp = int(std::min<std::uint64_t>(passes.last, std::uint64_t(std::numeric_limits<int>::max())));
+            pass_render.passes = {pass, pass + 1};
+            pass_render.seconds = 0;
+            pass_render.progress = false;
+            pass_render.single_sample_at_centre = false;
+            render_into(sums, camera, eye, pass_render);
+        }
+    }
+
+private:
+    /// A light subpath's vertex with a non-delta lobe, kept for connections and merges.
+    struct LightVertex {
+        Hit<T> hit;          ///< where
+        Vec3<T> d;           ///< unit, the direction the light path arrived along
+        Rgb<T> beta;         ///< its throughput: the light's power estimate carried to here
+        T dvcm, dvc, dvm;    ///< the MIS quantities (Georgiev's report, section 5)
+        T outside_index;     ///< a transmissive material's outer index
+        int length;          ///< segments from the light
+    };
+
+    /// A pass's light subpaths: their vertices path by path, and VCM's tree of them.
+    struct LightPaths {
+        std::vector<LightVertex> vertices;
+        std::vector<std::uint32_t> ends; ///< path i's vertices are [ends[i], ends[i + 1])
+        std::vector<std::array<T, 3>> points;
+        std::optional<KdTree<ArrayPoints<T, 3>>> tree;
+        T count = T(0);          ///< N, the light paths traced
+        T radius = T(0);         ///< the merging radius
+        T mis_vm = T(0);         ///< eta_VCM = pi r^2 N (0 without merging): merging's weight against a connection
+        T mis_vc = T(0);         ///< 1 / eta_VCM (0 without connections)
+        T vm_normalization = T(0); ///< 1 / (pi r^2 N)
+    };
+
+    /// A pass's camera side, a RayEstimator for render_into.
+    struct CameraPaths {
+        using scalar_type = T;
+        const Bidirectional* owner;
+        const LightPaths* light;
+        const CameraRays<T>* rays;
+        [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Random& rng) const noexcept { return owner->camera_path(ray, rng, *light, *rays); }
+    };
+
+    /// A subpath's running state: throughput and the MIS quantities.
+    struct PathState {
+        Rgb<T> beta;
+        T dvcm, dvc, dvm;
+        int length = 0;         ///< segments so far
+        bool specular = true;   ///< every scattering so far was a delta
+    };
+
+    /// Whether a contribution of strategy (s, t) counts, and with which of its weights.
+    [[nodiscard]] bool counts(int s, int t) const noexcept { return !config_.only || (config_.only->s == s && config_.only->t == t); }
+    [[nodiscard]] T weighed(T w) const noexcept { return config_.only && !config_.weighted ? T(1) : w; }
+
+    [[nodiscard]] static T cube(T x) noexcept { return x * x * x; }
+
+    /// The image plane's density of the camera's ray along unit w, per steradian: 1 / (A cos^3).
+    [[nodiscard]] static T camera_pdf(const CameraRays<T>& rays, const Vec3<T>& w) noexcept
+    {
+        const Vec3<T> forward = normalize(cross(rays.pixel_right, rays.pixel_down));
+        const T cos = dot(w, forward);
+        return cos > T(0) ? T(1) / (rays.pixel_area() * cube(cos)) : T(0);
+    }
+
+    /// Walk a subpath from `ray` (starting inside `media`), calling on_vertex(material,
+    /// hit, vertex, d, distance, outside_index) at every surface that is a vertex (false
+    /// and index-matched interfaces are crossed; d the unit direction it arrived along,
+    /// `distance` the length since the last vertex), which returns the direction drawn
+    /// there (nothing ends the walk), and on_escape(ray) when the path leaves the scene.
+    /// `beta` takes what the objects' interiors and index-matched boundaries let through.
+    template <class OnVertex, class OnEscape>
+    void walk(Ray<T> ray, MediumStack media, Rgb<T>& beta, Transport mode, Random& rng, OnVertex&& on_vertex, OnEscape&& on_escape) const
+    {
+        T distance = T(0);
+        for (int bounce = 0;; ++bounce) {
+            rng.bounce(bounce);
+            const std::optional<Hit<T>> hit = scene_->closest_hit(ray, Interval<T>{T(0), infinity<T>});
+            if (!hit) {
+                on_escape(ray);
+                return;
+            }
+            const Crossing<T>& c = hit->crossing;
+            distance += c.t;
+            const bool go_on = scene_->visit_material(*hit, [&]<class M>(const M& material) -> bool {
+                attenuate_segment(*scene_, media, material, c, ray, beta);
+                [[maybe_unused]] std::conditional_t<transmits<M>, Interface, std::monostate> face{};
+                T outside_index = T(1);
+                if constexpr (transmits<M>) {
+                    face = nested_interface(media, {hit->slot, hit->index, nesting_priority(material)}, c.entering);
+                    if (!face.real) {
+                        ray = spawn_ray(c.point, c.error, c.normal, ray.direction);
+                        media = face.beyond;
+                        return true;
+                    }
+                    outside_index = T(index_of(*scene_, outside_of(media, face, c.entering), T(0)));
+                }
+                if constexpr (may_match_index<M>) {
+                    if (material.index_matched(outside_index)) {
+                        beta *= material.transmission_tint();
+                        ray = spawn_ray(c.point, c.error, c.normal, ray.direction);
+                        media = face.beyond;
+                        return true;
+                    }
+                }
+                const SurfaceVertex<M> vertex(material, c, ray.direction, mode, outside_index);
+                const std::optional<Vec3<T>> next = on_vertex(material, *hit, vertex, ray.direction, distance, outside_index);
+                if (!next) return false;
+                if constexpr (transmits<M>) {
+                    if (dot(*next, c.normal) * dot(ray.direction, c.normal) > T(0)) media = face.beyond; // refracted
+                }
+                ray = spawn_ray(c.point, c.error, c.normal, *next);
+                distance = T(0);
+                return true;
+            });
+            if (!go_on) return;
+        }
+    }
+
+    /// A subpath's MIS quantities at a vertex it met after `distance` along d, where the
+    /// true normal is n: the report's (31)-(33), completed now the segment is known.
+    static void arrive(PathState& state, T distance2, T cos) noexcept
+    {
+        state.dvcm *= distance2;
+        state.dvcm /= cos;
+        state.dvc /= cos;
+        state.dvm /= cos;
+    }
+
+    /// Scatter a subpath at a vertex: draw the next direction, update the throughput and
+    /// the MIS quantities (the report's (34)-(36), or (53)-(55) for a delta), and play
+    /// Russian roulette past roulette_length (outside the weights). Nothing: it ends.
+    template <class M>
+    [[nodiscard]] std::optional<Vec3<T>> scatter(const SurfaceVertex<M>& vertex, const Crossing<T>& c, PathState& state, const LightPaths& light,
+                                                 Random& rng) const noexcept
+    {
+        const std::optional<VertexSample<T>> s = vertex.sample(rng);
+        if (!s || !(max_component(s->weight) > T(0)) || !(max_component(s->weight) < infinity<T>)) return std::nullopt;
+        const T cos_out = std::abs(dot(s->direction, c.normal));
+        if (s->delta) {
+            state.dvcm = T(0);
+            state.dvc *= cos_out;
+            state.dvm *= cos_out;
+        } else {
+            const T g = cos_out / s->pdf_forward;
+            state.dvc = g * (state.dvc * s->pdf_reverse + state.dvcm + light.mis_vm);
+            state.dvm = g * (state.dvm * s->pdf_reverse + state.dvcm * light.mis_vc + T(1));
+            state.dvcm = T(1) / s->pdf_forward;
+            state.specular = false;
+        }
+        state.beta *= s->weight;
+        if (state.length >= config_.roulette_length) {
+            // Roulette by how much of the throughput this scattering kept (at most 1).
+            const T keep = std::min(T(1), max_component(s->weight));
+            if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return std::nullopt;
+            state.beta /= keep;
+        }
+        return s->direction;
+    }
+
+    /// The pass's light subpaths: traced, their vertices kept (and VCM's tree built), and
+    /// their light-tracing splats (t = 1) added to `sums` in the window.
+    [[nodiscard]] LightPaths trace_light_paths(Accumulation& sums, const CameraRays<T>& rays, const PixelWindow& window, const RenderConfig& config,
+                                               std::uint64_t pass, std::size_t count) const
+    {
+        LightPaths light;
+        light.count = T(count);
+        const bool merging = config_.method == BidirectionalMethod::vcm;
+        light.radius = T(double(first_radius()) * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)));
+        light.radius = std::max(light.radius, sphere_.radius * T(1e-7));
+        const T eta = pi<T> * light.radius * light.radius * light.count;
+        light.mis_vm = merging ? eta : T(0);
+        light.mis_vc = T(1) / eta;
+        light.vm_normalization = T(1) / eta;
+        // Blocks of paths, each into its own list (joined in order) and its worker's splats.
+        constexpr std::size_t block = 4096;
+        const std::size_t blocks = (count + block - 1) / block;
+        std::vector<std::vector<LightVertex>> lists(blocks);
+        std::vector<std::vector<std::uint32_t>> lengths(blocks);
+        std::vector<Accumulation> buffers;
+        const unsigned workers = detail::workers_for(blocks, config.threads);
+        buffers.reserve(workers);
+        for (unsigned k = 0; k < workers; ++k) buffers.emplace_back(config.width, config.height, window);
+        const std::uint64_t seed = detail::sample_seed(config.seed ^ 0x9e3779b97f4a7c15ULL, pass);
+        detail::parallel_blocks(blocks, config.threads, [&](std::size_t b, unsigned worker) {
+            for (std::size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
+                const std::size_t before = lists[b].size();
+                Random rng(seed, std::uint64_t(i));
+                light_path(rng, light, rays, window, lists[b], buffers[worker]);
+                lengths[b].push_back(std::uint32_t(lists[b].size() - before));
+            }
+        });
+        for (const Accumulation& buffer : buffers) sums += buffer;
+        light.ends.reserve(count + 1);
+        light.ends.push_back(0);
+        for (std::size_t b = 0; b < blocks; ++b) {
+            light.vertices.insert(light.vertices.end(), lists[b].begin(), lists[b].end());
+            for (const std::uint32_t n : lengths[b]) light.ends.push_back(light.ends.back() + n);
+        }
+        if (merging && !light.vertices.empty()) {
+            light.points.reserve(light.vertices.size());
+            for (const LightVertex& v : light.vertices) light.points.push_back({v.hit.crossing.point.x, v.hit.crossing.point.y, v.hit.crossing.point.z});
+            light.tree.emplace(ArrayPoints<T, 3>{light.points}, config.threads);
+        }
+        return light;
+    }
+
+    /// One light subpath: a light by power, its emission, then the walk; each vertex with
+    /// a non-delta lobe kept in `out` and joined to the camera.
+    void light_path(Random& rng, const LightPaths& light, const CameraRays<T>& rays, const PixelWindow& window, std::vector<LightVertex>& out,
+                    Accumulation& splats) const
+    {
+        const T u_light = rng.uniform<T>();
+        std::size_t chosen = 0;
+        while (chosen + 1 < light_cdf_.size() && !(u_light < light_cdf_[chosen])) ++chosen;
+        const T q = light_probability_[chosen];
+        const auto [a, b] = rng.uniform2<T>();
+        const auto [u, v] = rng.uniform2<T>();
+        const T u_pick = rng.uniform<T>();
+        EmissionSample<T> e;
+        std::optional<Hit<T>> source; // an area light's point
+        bool delta_light = true;
+        scene_->visit_light(chosen, [&]<class L>(const L& l) {
+            delta_light = is_delta_light<L>;
+            if constexpr (requires { l.emission(u_pick, Vec2<T>(a, b), Vec2<T>(u, v)).at; }) {
+                const auto emitted = l.emission(u_pick, Vec2<T>(a, b), Vec2<T>(u, v));
+                e = emitted.emission;
+                source = emitted.at;
+            } else {
+                e = l.emission(sphere_, Vec2<T>(a, b), Vec2<T>(u, v));
+            }
+        });
+        const T pdf = q * e.pdf_area * e.pdf_direction;
+        if (!(pdf > T(0)) || !(pdf < infinity<T>) || !(e.cos > T(0)) || !(max_component(e.radiance) > T(0))) return;
+        PathState state;
+        state.beta = e.radiance * (e.cos / pdf);
+        // (31)-(33) begun, delta lights as (48)-(50): the light sample that would find the
+        // light's vertex over the emission's density; a delta light's vertex no bounce finds.
+        state.dvcm = T(1) / pdf;
+        if (e.from_infinity && !delta_light) state.dvcm *= e.pdf_direction; // an environment's sample is by direction
+        state.dvc = delta_light ? T(0) : (e.from_infinity ? T(1) : e.cos) / pdf;
+        state.dvm = state.dvc * light.mis_vc;
+        walk(e.ray, scene_->media_at(e.ray.origin), state.beta, Transport::importance, rng,
+             [&]<class M>(const M&, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T outside_index) -> std::optional<Vec3<T>> {
+                 const Crossing<T>& c = hit.crossing;
+                 const T cos = std::abs(dot(d, c.normal));
+                 if (!(cos > T(0))) return std::nullopt;
+                 ++state.length;
+                 if (state.length == 1 && source) {
+                     // An area light's sample from here finds its point with the density
+                     // pdf_W cos_0 / d^2 per unit area; the d^2 cancels the segment's.
+                     if constexpr (SceneT::has_emitters) state.dvcm *= scene_->area_lights().pdf(*source, c.point) * e.cos;
+                     arrive(state, T(1), cos);
+                 } else {
+                     arrive(state, state.length > 1 || !e.from_infinity ? distance * distance : T(1), cos);
+                 }
+                 if (vertex.connectible()) {
+                     out.push_back({hit, d, state.beta, state.dvcm, state.dvc, state.dvm, outside_index, state.length});
+                     if (state.length + 1 <= config_.max_length) connect_to_camera(out.back(), vertex, light, rays, window, rng, splats);
+                 }
+                 if (state.length + 2 > config_.max_length) return std::nullopt;
+                 return scatter(vertex, c, state, light, rng);
+             },
+             [](const Ray<T>&) {});
+    }
+
+    /// Light tracing (t = 1): a light vertex joined to the camera (a point of a thin lens
+    /// drawn uniformly), its splat added where the camera sees it in the window: the
+    /// report's (46)-(47).
+    template <class M>
+    void connect_to_camera(const LightVertex& lv, const SurfaceVertex<M>& vertex, const LightPaths& light, const CameraRays<T>& rays, const PixelWindow& window,
+                           Random& rng, Accumulation& splats) const
+    {
+        const Crossing<T>& c = lv.hit.crossing;
+        Vec3<T> eye = rays.origin;
+        if (rays.thin_lens()) {
+            const auto [u, v] = rng.template uniform2<T>();
+            eye = rays.lens_point(u, v);
+        }
+        const auto seen = rays.thin_lens() ? rays.project(c.point, eye) : rays.project(c.point);
+        if (!counts(lv.length + 1, 1) || !seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return;
+        const Vec3<T> to_camera = (eye - c.point) / seen->distance;
+        const VertexValue<T> f = vertex.value(to_camera);
+        if (f.black()) return;
+        const T d2 = seen->distance * seen->distance;
+        // The camera's density of this vertex per unit area: its image-plane density 1 / A
+        // taken to the ray's solid angle (1 / cos_c^3) and on to the surface.
+        const T camera_area_pdf = T(1) / (rays.pixel_area() * cube(seen->cos)) * std::abs(dot(to_camera, c.normal)) / d2;
+        const T w_light = camera_area_pdf / light.count * (light.mis_vm + lv.dvcm + lv.dvc * f.pdf_reverse);
+        const T weight = weighed(T(1) / (T(1) + w_light));
+        const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
+                                                                                       seen->distance * (T(1) - shadow_epsilon<T>));
+        if (!(max_component(v) > T(0))) return;
+        const Rgb<T> value = (weight / (light.count * rays.pixel_area() * cube(seen->cos) * d2)) * lv.beta * f.f * f.cos * v;
+        std::array<ExactSum, 3> add{};
+        for (int k = 0; k < 3; ++k) {
+            const double x = double(float(value[k]));
+            if (x >= 0.0 && ExactSum::takes(x)) add[std::size_t(k)] = ExactSum::of(x);
+            else splats.reject(1);
+        }
+        splats.add(int(seen->x), int(seen->y), add, 0);
+    }
+
+    /// One camera subpath and everything joined to it: the estimate along `ray`.
+    [[nodiscard]] Rgb<T> camera_path(const Ray<T>& ray, Random& rng, const LightPaths& light, const CameraRays<T>& rays) const noexcept
+    {
+        Rgb<T> sum{T(0)};
+        // The light subpath this camera path is joined to: any one, uniformly (each is an
+        // independent draw of the light subpaths' distribution).
+        const std::size_t paired = std::min(std::size_t(rng.uniform<T>() * light.count), light.ends.size() - 2);
+        PathState state;
+        state.beta = Rgb<T>(T(1));
+        const T camera = camera_pdf(rays, ray.direction);
+        if (!(camera > T(0))) return sum;
+        state.dvcm = light.count / camera;
+        state.dvc = state.dvm = T(0);
+        Vec3<T> previous = ray.origin;
+        walk(ray, scene_->media_at(ray.origin), state.beta, Transport::radiance, rng,
+             [&]<class M>(const M& material, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T) -> std::optional<Vec3<T>> {
+                 const Crossing<T>& c = hit.crossing;
+                 const T cos = std::abs(dot(d, c.normal));
+                 if (!(cos > T(0))) return std::nullopt;
+                 ++state.length;
+                 arrive(state, distance * distance, cos);
+                 const int t = state.length + 1;
+                 if constexpr (emits<M>) {
+                     // s = 0: the path met an area light, (42)-(43).
+                     const Rgb<T> le = emitted(material, c);
+                     if (max_component(le) > T(0) && counts(0, t)) {
+                         T weight = T(1);
+                         if (state.length > 1) {
+                             const AreaLights<SceneT> lights = scene_->area_lights();
+                             const T direct = lights.pdf(hit, previous) * cos / (distance * distance);
+                             const T emission = area_light_probability() * lights.emission_pdf(hit, -d).both();
+                             weight = T(1) / (T(1) + direct * state.dvcm + emission * state.dvc);
+                         }
+                         sum += weighed(weight) * state.beta * le;
+                     }
+                 }
+                 if (state.length >= config_.max_length || !vertex.connectible()) {
+                     if (state.length >= config_.max_length) return std::nullopt;
+                 } else {
+                     sum += state.beta * light_samples(vertex, c, state, light, rng);
+                     sum += state.beta * connections(vertex, c, state, light, paired);
+                     if (config_.method == BidirectionalMethod::vcm && !config_.only) sum += state.beta * merges(vertex, c, state, light);
+                 }
+                 previous = c.point;
+                 return scatter(vertex, c, state, light, rng);
+             },
+             [&](const Ray<T>& out) {
+                 // Leaving the scene: the background where every scattering was a delta
+                 // (seen, as in every prism estimator, but lighting nothing), and each
+                 // environment light, s = 0.
+                 if (state.specular && counts(0, state.length + 1)) sum += state.beta * scene_->background;
+                 std::size_t index = 0;
+                 scene_->for_each_light([&]<class L>(const L& l) {
+                     const std::size_t i = index++;
+                     if constexpr (is_at_infinity<L>) {
+                         if (!counts(0, state.length + 1) || state.length + 1 > config_.max_length) return;
+                         const Vec3<T> w = out.direction;
+                         const Rgb<T> le = l.arriving_from(w);
+                         T weight = T(1);
+                         if (state.length > 0) {
+                             const T direct = l.pdf(w);
+                             const T emission = light_probability_[i] * l.emission_pdf(-w, sphere_).both();
+                             weight = T(1) / (T(1) + direct * state.dvcm + emission * state.dvc);
+                         }
+                         sum += weighed(weight) * state.beta * le;
+                     }
+                 });
+             });
+        return sum;
+    }
+
+    /// The area lights' share of the light paths.
+    [[nodiscard]] T area_light_probability() const noexcept { return light_probability_.back(); }
+
+    /// s = 1: a light sample from each light at a camera vertex, (44)-(45).
+    template <class M>
+    [[nodiscard]] Rgb<T> light_samples(const SurfaceVertex<M>& vertex, const Crossing<T>& c, const PathState& state, const LightPaths& light,
+                                       Random& rng) const noexcept
+    {
+        Rgb<T> sum{T(0)};
+        if (state.length + 1 > config_.max_length) return sum;
+        constexpr Sides sides = has_glossy<M> && transmits<M> ? Sides::both : Sides::near;
+        std::size_t index = 0;
+        scene_->for_each_light([&]<class L>(const L& l) {
+            const T q = light_probability_[index++];
+            const auto [u1, u2] = rng.uniform2<T>();
+            // The light's sample, and for MIS the point it drew: its emission's density
+            // toward here and the cosine there.
+            LightSample<T> s;
+            T emission = T(0), cos_light = T(1);
+            if constexpr (requires { l.sample_point(c.point, Vec2<T>(u1, u2)).at; }) {
+                const auto drawn = l.sample_point(c.point, Vec2<T>(u1, u2));
+                s = drawn.sample;
+                emission = q * l.emission_pdf(drawn.at, -s.wi).both();
+                cos_light = std::abs(dot(s.wi, drawn.at.crossing.normal));
+            } else {
+                s = l.sample(c.point, Vec2<T>(u1, u2));
+                emission = q * l.emission_pdf(-s.wi, sphere_).both();
+            }
+            const Vec3<T> n = c.facing_normal(), ns = c.facing_shading();
+            T cos = shading_cosine(ns, n, s.wi);
+            if constexpr (sides == Sides::both) {
+                if (!(cos > T(0))) cos = shading_cosine(-ns, -n, s.wi);
+            }
+            if (!(cos > T(0)) || !(max_component(s.irradiance) > T(0)) || !(cos_light > T(0))) return;
+            const VertexValue<T> f = vertex.value(s.wi);
+            if (f.black()) return;
+            // The light sample's density per steradian here (a delta light's: d^2 for a
+            // point, 1 for a parallel light).
+            const bool at_infinity = !(s.distance < infinity<T>);
+            const T direct = s.delta() ? (at_infinity ? T(1) : s.distance * s.distance) : s.pdf;
+            const T w_light = s.delta() ? T(0) : f.pdf_forward / direct;
+            const T w_camera = emission * std::abs(dot(s.wi, c.normal)) / (direct * cos_light) * (light.mis_vm + state.dvcm + state.dvc * f.pdf_reverse);
+            const T weight = weighed(T(1) / (w_light + T(1) + w_camera));
+            const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, s.wi),
+                                                                                           s.distance * (T(1) - shadow_epsilon<T>));
+            sum += (weight * f.cos) * f.f * s.irradiance * v;
+        });
+        // (Drawn whatever strategies count, so that every strategy's image takes the same samples.)
+        return counts(1, state.length + 1) ? sum : Rgb<T>(T(0));
+    }
+
+    /// s >= 2, t >= 2: the camera vertex joined to each vertex of its light path, (40)-(41).
+    template <class M>
+    [[nodiscard]] Rgb<T> connections(const SurfaceVertex<M>& vertex, const Crossing<T>& c, const PathState& state, const LightPaths& light,
+                                     std::size_t paired) const noexcept
+    {
+        Rgb<T> sum{T(0)};
+        for (std::uint32_t i = light.ends[paired]; i < light.ends[paired + 1]; ++i) {
+            const LightVertex& lv = light.vertices[i];
+            if (lv.length + state.length + 1 > config_.max_length) break; // (kept in order of length)
+            if (!counts(lv.length + 1, state.length + 1)) continue;
+            const Crossing<T>& lc = lv.hit.crossing;
+            Vec3<T> w = lc.point - c.point;
+            const T d2 = length_squared(w);
+            if (!(d2 > T(0))) continue;
+            const T distance = prism::sqrt(d2);
+            w /= distance;
+            const VertexValue<T> camera = vertex.value(w);
+            if (camera.black()) continue;
+            const VertexValue<T> far = scene_->visit_material(lv.hit, [&]<class N>(const N& material) {
+                return SurfaceVertex<N>(material, lc, lv.d, Transport::importance, lv.outside_index).value(-w);
+            });
+            if (far.black()) continue;
+            const T cos_camera = std::abs(dot(w, c.normal)), cos_light = std::abs(dot(w, lc.normal));
+            const T camera_to_light = camera.pdf_forward * cos_light / d2; // the camera vertex's density of the light vertex, per area
+            const T light_to_camera = far.pdf_forward * cos_camera / d2;
+            const T w_light = camera_to_light * (light.mis_vm + lv.dvcm + lv.dvc * far.pdf_reverse);
+            const T w_camera = light_to_camera * (light.mis_vm + state.dvcm + state.dvc * camera.pdf_reverse);
+            const T weight = weighed(T(1) / (w_light + T(1) + w_camera));
+            const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, w),
+                                                                                           distance * (T(1) - shadow_epsilon<T>));
+            if (!(max_component(v) > T(0))) continue;
+            sum += (weight * camera.cos * far.cos / d2) * camera.f * far.f * lv.beta * v;
+        }
+        return sum;
+    }
+
+    /// VCM's merges: the light vertices within the pass's radius of the camera vertex,
+    /// each its light as a photon's density estimate, (37)-(39).
+    template <class M>
+    [[nodiscard]] Rgb<T> merges(const SurfaceVertex<M>& vertex, const Crossing<T>& c, const PathState& state, const LightPaths& light) const noexcept
+    {
+        Rgb<T> sum{T(0)};
+        if (!light.tree) return sum;
+        light.tree->within({c.point.x, c.point.y, c.point.z}, light.radius, [&](std::uint32_t i, T) {
+            const LightVertex& lv = light.vertices[i];
+            if (lv.length + state.length > config_.max_length) return;
+            const VertexValue<T> camera = vertex.value(-lv.d);
+            if (camera.black()) return;
+            const T w_light = lv.dvcm * light.mis_vc + lv.dvm * camera.pdf_forward;
+            const T w_camera = state.dvcm * light.mis_vc + state.dvm * camera.pdf_reverse;
+            sum += (T(1) / (w_light + T(1) + w_camera)) * camera.f * lv.beta;
+        });
+        return sum * light.vm_normalization;
+    }
+
+    const SceneT* scene_;
+    BidirectionalConfig config_;
+    BoundingSphere<T> sphere_{};
+    std::vector<T> light_probability_; ///< per light (the area lights last), its share of the light paths
+    std::vector<T> light_cdf_;
+};
+
+} // namespace prism
