@@ -8,12 +8,13 @@
 //   povray is the glass box in POV-Ray's model (shared/scenes/cornell_caustics.pov: its
 //   no-falloff light, direct light and caustics only; no global photons, and the
 //   reference takes no diffuse bounce).
-//   METHOD direct | gather | cache | progressive | reference | path | path_bounces | path_grid2 | mask,
+//   METHOD direct | gather | cache | progressive | reference | bdpt | vcm | path | path_bounces | path_grid2 | mask,
 //   with ":independent" after it for independent samples instead of Owen-scrambled Sobol
 //   points (RenderConfig::sampler); EFFORT is, per method:
 //   direct: photons (global and caustic); gather: final-gather rays (2e5 photons);
 //   cache: rays per record (2e5 photons); progressive: passes (5e4 + 5e4 photons each);
-//   reference: samples per pixel (and as many light paths); path: the path tracer alone,
+//   reference: samples per pixel (and as many light paths); bdpt, vcm: passes (one camera
+//   path per pixel and as many light paths each); path: the path tracer alone,
 //   light samples and bounces combined by multiple importance sampling, samples per
 //   pixel; path_bounces: the same without light samples for area lights (their light
 //   found only by the bounces that meet them); path_grid2: the path tracer with 2 x 2
@@ -95,7 +96,7 @@ int main(int argc, char** argv)
         options.photons = 50000;
         if (glass) options.caustic_photons = 50000;
         options.render.spp = 1;
-    } else if (method == "reference" || method == "mask" || method.starts_with("path")) {
+    } else if (method == "reference" || method == "bdpt" || method == "vcm" || method == "mask" || method.starts_with("path")) {
         options.render.spp = int(effort);
     }
     if (povray) options.photons = 0; // POV-Ray's model: no global light

@@ -66,12 +66,15 @@ TEST_CASE("every BDPT strategy alone reads the area-lit furnace's direct light (
     const auto scene = lamp_furnace();
     const RenderConfig config{.width = 16, .height = 16, .spp = int(test::samples(96)), .seed = 3, .progress = false};
     const BidirectionalConfig base{.method = BidirectionalMethod::bdpt, .max_length = 2, .light_paths = 4096};
+    // Tolerances of about 4 standard errors, measured over 8 seeds: 0.3 % for (0, 3), 0.9 %
+    // for light tracing (2, 1), whose light paths reach the wall the camera sees rarely; the
+    // light sample (1, 2) is exact here (the lamp seen whole from every point of the wall).
     for (const Strategy strategy : {Strategy{0, 3}, Strategy{1, 2}, Strategy{2, 1}}) {
         CAPTURE(strategy.s);
         BidirectionalConfig alone = base;
         alone.only = strategy;
         alone.weighted = false;
-        CHECK(mean_red(render(lamp_camera, Bidirectional(scene, alone), config)) == doctest::Approx(1.0).epsilon(test::resolved(0.015)));
+        CHECK(mean_red(render(lamp_camera, Bidirectional(scene, alone), config)) == doctest::Approx(1.0).epsilon(test::resolved(strategy.t == 1 ? 0.04 : 0.012)));
     }
     CHECK(mean_red(render(lamp_camera, Bidirectional(scene, base), config)) == doctest::Approx(1.0).epsilon(test::resolved(0.005)));
     // Up to three segments: the weighted strategies' images add up to the whole, the same
@@ -92,7 +95,7 @@ TEST_CASE("every BDPT strategy alone reads the area-lit furnace's direct light (
     CHECK(shorter + longest == doctest::Approx(whole).epsilon(1e-5));
     for (int s = 0; s <= 3; ++s) {
         CAPTURE(s);
-        CHECK(strategy_mean(s, 4 - s, false) == doctest::Approx(longest).epsilon(test::resolved(0.03)));
+        CHECK(strategy_mean(s, 4 - s, false) == doctest::Approx(longest).epsilon(test::resolved(s == 3 ? 0.04 : 0.02)));
     }
 }
 
@@ -214,4 +217,23 @@ TEST_CASE("bad bidirectional settings are refused, naming the parameter")
     CHECK_THROWS_WITH_AS(Bidirectional(scene, {.only = Strategy{0, 0}}), doctest::Contains("only must have s >= 0 and t >= 1, got (0, 0)"), std::invalid_argument);
     const auto povray = Scene{Lights{PointLight<float>{.position = {0, 1, 0}, .falloff = Falloff::none}}, Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{}}};
     CHECK_THROWS_WITH_AS(Bidirectional(povray, {}), doctest::Contains("without falloff"), std::invalid_argument);
+}
+
+TEST_CASE("regression: under the sun, a floor beyond the disk its light paths enter by reads its direct light (rho E cos / pi), by BDPT and by VCM")
+{
+    // The scene's bounded part is a small ball far from where the camera looks: the sun's
+    // light paths enter through the disk over the ball, so the floor seen has light
+    // samples only, and their weight must be 1 there (it was shared with light paths that
+    // cannot reach it: the floor read dark).
+    const Vec3<float> sun = normalize(Vec3<float>{0.3f, -1, 0.2f});
+    const auto scene = Scene{Lights{DirectionalLight<float>{.direction = sun, .irradiance = Rgb<float>(2)}},
+                             Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
+                             Object{Sphere<float>({0, 1, 0}, 0.5f), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}}};
+    const Camera<float> camera{.position = {20, 3, 20}, .look_at = {20, 0, 19}, .fov = 20};
+    const double expected = 0.5 / pi<double> * 2 * double(-sun.y);
+    for (const BidirectionalMethod method : {BidirectionalMethod::bdpt, BidirectionalMethod::vcm}) {
+        CAPTURE(std::string(method_name(method)));
+        const double floor = mean_red(render(camera, Bidirectional(scene, {.method = method, .light_paths = 1000}), {.width = 8, .height = 8, .spp = 4, .progress = false}));
+        CHECK(floor == doctest::Approx(expected).epsilon(1e-4));
+    }
 }

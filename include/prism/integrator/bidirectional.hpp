@@ -82,9 +82,12 @@ struct BidirectionalConfig {
     int max_length = 64;
     /// Segments a subpath takes before Russian roulette on its throughput may end it.
     int roulette_length = 3;
-    /// The first pass's merging radius in scene units; 0: 1/300 of the radius of the
-    /// sphere around the scene (SmallVCM's 0.003).
+    /// The first pass's merging radius in scene units; 0: `footprints` times the width of a
+    /// pixel at the median distance of the surfaces the camera sees (the radius then
+    /// follows the image's resolution, as stochastic progressive photon mapping's does).
     double radius = 0.0;
+    /// The default radius in pixel widths (see `radius`).
+    double footprints = 3.0;
     /// In (0, 1): how much of the radius's area each pass keeps (Knaus and Zwicker 2011's alpha).
     double alpha = 0.75;
     /// Light subpaths per pass; 0: one per pixel of the image.
@@ -96,6 +99,11 @@ struct BidirectionalConfig {
     std::optional<Strategy> only{};
     bool weighted = true; ///< see `only`
 };
+
+/// Whether Bidirectional renders scenes of type SceneT: surfaces only (no scattering
+/// medium), no dispersive material, no light that casts its own shadow.
+template <class SceneT>
+inline constexpr bool renders_bidirectionally = !SceneT::has_scattering_media && !SceneT::has_dispersion && !SceneT::has_own_shadow_lights;
 
 /// Bidirectional path tracing and vertex connection and merging of `scene` (an integrator
 /// of passes: render/render.hpp's PassEstimator).
@@ -109,6 +117,7 @@ public:
 
     static_assert(!SceneT::has_scattering_media, "Bidirectional renders surfaces only: a scene with a scattering medium needs the PathTracer or a PhotonMapper");
     static_assert(!SceneT::has_dispersion, "Bidirectional: a dispersive material's wavelengths are not traced yet");
+    static_assert(!SceneT::has_own_shadow_lights, "Bidirectional: a light that casts its own shadow (PointGridLight, POV-Ray's area_light) has no emission to trace");
 
     /// The estimator of `scene` (which must outlive it); throws std::invalid_argument,
     /// naming the parameter, for a bad setting, a dispersive material or a light without
@@ -121,10 +130,10 @@ public:
         if (!(config.radius >= 0.0 && config.radius < std::numeric_limits<double>::infinity()))
             detail::throw_invalid("BidirectionalConfig radius must be finite and >= 0, got ", config.radius);
         if (!(config.alpha > 0.0 && config.alpha < 1.0)) detail::throw_invalid("BidirectionalConfig alpha must be in (0, 1), got ", config.alpha);
+        if (!(config.footprints > 0.0 && config.footprints < 1e6)) detail::throw_invalid("BidirectionalConfig footprints must be in (0, 1e6), got ", config.footprints);
         if (config.only && (config.only->s < 0 || config.only->t < 1))
             detail::throw_invalid("BidirectionalConfig only must have s >= 0 and t >= 1, got (", config.only->s, ", ", config.only->t, ")");
         scene.for_each_light([&]<class L>(const L& light) {
-            static_assert(!has_own_shadow<L>, "Bidirectional: a light that casts its own shadow (PointGridLight, POV-Ray's area_light) has no emission to trace");
             if constexpr (std::same_as<L, PointLight<T>>)
                 if (light.falloff != Falloff::inverse_square) detail::throw_invalid("Bidirectional: a PointLight without falloff (POV-Ray's fade_power 0) has no physical emission");
         });
@@ -154,8 +163,22 @@ public:
     /// The settings.
     [[nodiscard]] const BidirectionalConfig& config() const noexcept { return config_; }
 
-    /// The first pass's merging radius (BidirectionalConfig::radius, or its default from the scene's size).
-    [[nodiscard]] T first_radius() const noexcept { return config_.radius > 0.0 ? T(config_.radius) : sphere_.radius * T(0.003); }
+    /// The first pass's merging radius: BidirectionalConfig::radius, or its default, a few
+    /// pixel widths at the median distance of the surfaces the camera sees through a grid
+    /// of 16 x 16 pixel centres (1/300 of the scene's radius where it sees none).
+    [[nodiscard]] T first_radius(const CameraRays<T>& rays, int width, int height) const noexcept
+    {
+        if (config_.radius > 0.0) return T(config_.radius);
+        std::vector<T> distances;
+        for (int j = 0; j < 16; ++j)
+            for (int i = 0; i < 16; ++i) {
+                const Ray<T> ray = rays.ray((T(i) + T(0.5)) * T(width) / T(16), (T(j) + T(0.5)) * T(height) / T(16));
+                if (const auto hit = scene_->closest_hit(ray, Interval<T>{T(0), infinity<T>})) distances.push_back(hit->crossing.t);
+            }
+        if (distances.empty()) return sphere_.radius * T(0.003);
+        std::nth_element(distances.begin(), distances.begin() + std::ptrdiff_t(distances.size() / 2), distances.end());
+        return T(config_.footprints) * distances[distances.size() / 2] * prism::sqrt(rays.pixel_area());
+    }
 
     /// Passes config.passes of config.spp: each one camera sample per pixel of the window
     /// (its weight) and the splats of its light paths there.
@@ -342,7 +365,7 @@ private:
         LightPaths light;
         light.count = T(count);
         const bool merging = config_.method == BidirectionalMethod::vcm;
-        light.radius = T(double(first_radius()) * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)));
+        light.radius = T(double(first_radius(rays, config.width, config.height)) * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)));
         light.radius = std::max(light.radius, sphere_.radius * T(1e-7));
         const T eta = pi<T> * light.radius * light.radius * light.count;
         light.mis_vm = merging ? eta : T(0);
@@ -538,7 +561,7 @@ private:
                          T weight = T(1);
                          if (state.length > 0) {
                              const T direct = l.pdf(w);
-                             const T emission = light_probability_[i] * l.emission_pdf(-w, sphere_).both();
+                             const T emission = within_disk(out.origin, w) ? light_probability_[i] * l.emission_pdf(-w, sphere_).both() : T(0);
                              weight = T(1) / (T(1) + direct * state.dvcm + emission * state.dvc);
                          }
                          sum += weighed(weight) * state.beta * le;
@@ -546,6 +569,17 @@ private:
                  });
              });
         return sum;
+    }
+
+    /// Whether a light at infinity in the unit direction w (toward it) reaches p by its
+    /// emission: its rays enter through the disk of the scene's sphere that faces it (2 R
+    /// upstream of its centre), so a point off that disk's cylinder (on an unbounded plane,
+    /// far out) has no light path from it, and its light samples none to share with.
+    [[nodiscard]] bool within_disk(const Vec3<T>& p, const Vec3<T>& w) const noexcept
+    {
+        const Vec3<T> v = p - sphere_.center;
+        const T along = dot(v, w);
+        return along < T(2) * sphere_.radius && length_squared(v - along * w) <= sphere_.radius * sphere_.radius;
     }
 
     /// The area lights' share of the light paths.
@@ -574,7 +608,7 @@ private:
                 cos_light = std::abs(dot(s.wi, drawn.at.crossing.normal));
             } else {
                 s = l.sample(c.point, Vec2<T>(u1, u2));
-                emission = q * l.emission_pdf(-s.wi, sphere_).both();
+                if (s.distance < infinity<T> || within_disk(c.point, s.wi)) emission = q * l.emission_pdf(-s.wi, sphere_).both();
             }
             const Vec3<T> n = c.facing_normal(), ns = c.facing_shading();
             T cos = shading_cosine(ns, n, s.wi);

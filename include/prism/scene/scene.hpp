@@ -93,6 +93,8 @@ public:
     /// Some material may be an index-matched boundary (may_match_index): shadow rays that
     /// glass blocks still pass it.
     static constexpr bool has_index_matching = detail::any_of({may_match_index<typename Slots::material_type>...});
+    /// Some light casts its own shadow (has_own_shadow: POV-Ray's area_light).
+    static constexpr bool has_own_shadow_lights = detail::any_own_shadow<LightsOfScene>;
     /// Some material disperses (its index depends on the wavelength): a white path splits there.
     static constexpr bool has_dispersion = detail::any_of({disperses<typename Slots::material_type>...});
     /// Some material's interior scatters light (a Fog): walks sample where they scatter in it.

@@ -111,7 +111,6 @@ public:
     {
         using Sample = std::optional<VertexSample<T>>;
         if constexpr (has_diffuse<M>) {
-            T share = T(1);
             if constexpr (reflects<M> || transmits<M>) {
                 // One decision over the lobes, each by its reflectance (scatter_photon's).
                 const Shares s = shares(d_);
@@ -123,14 +122,13 @@ public:
                     const Rgb<T> weight = reflected ? s.split.kr * (s.sum / s.reflected) : s.split.kt * (s.sum / s.transmitted);
                     return VertexSample<T>{reflected ? reflect(d_, s.normal) : *s.split.refracted, weight, T(1), T(1), true};
                 }
-                share = s.diffuse / s.sum;
+                // The diffuse lobe: its choice's probability is in value()'s densities.
             }
             const Vec3<T> ns = hit_->facing_shading(), ng = hit_->facing_normal();
             if (!(shading_cosine(ns, ng, -d_) > T(0))) return std::nullopt;
             const Vec3<T> wo = cosine_hemisphere(ns, rng);
             const VertexValue<T> v = value(wo);
             if (v.black() || !(v.pdf_forward > T(0))) return std::nullopt;
-            (void)share;
             return VertexSample<T>{wo, v.f * (v.cos / v.pdf_forward), v.pdf_forward, v.pdf_reverse, false};
         } else if constexpr (has_glossy<M>) {
             const auto lobe = glossy_at(*material_, *hit_, d_, glossy_eta(*material_, *hit_, outside_index_));
