@@ -194,7 +194,7 @@ def main():
     ap.add_argument("--reference-spp", type=int, default=4096)
     ap.add_argument("--quick", action="store_true", help="fewer and smaller runs (a smoke test)")
     ap.add_argument("--rescore", action="store_true", help="score the renders already in BUILD_DIR/methods_vs_time again (no rendering)")
-    ap.add_argument("--methods", help="comma-separated: re-run only these (direct, gather, cache, progressive, reference, cycles, povray), "
+    ap.add_argument("--methods", help="comma-separated: re-run only these (direct, gather, cache, progressive, reference, bdpt, vcm, cycles, povray), "
                     "keeping the CSV's other rows and the references already rendered")
     ap.add_argument("--repeats", type=int, default=3, help="interleaved rounds of every timed render (min and median kept)")
     ap.add_argument("--summary", action="store_true", help="only print the time-to-error ratios of the CSV")
@@ -216,6 +216,8 @@ def main():
         "cache": [256, 1024, 4096],
         "progressive": [4, 16, 64, 256],
         "reference": [4, 16, 64, 256],
+        "bdpt": [4, 16, 64, 256],
+        "vcm": [4, 16, 64, 256],
     }
     cycles_spp = [16, 64, 256, 1024]
     if args.quick:

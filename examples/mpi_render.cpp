@@ -6,7 +6,7 @@
 //
 //   mpirun -np 4 mpi_render --width 256 --height 256 --threads 1 --out images
 //
-// It takes cornell_caustics' flags (--method direct, gather, cache, progressive or reference, whose
+// It takes cornell_caustics' flags (--method direct, gather, cache, progressive, reference, bdpt or vcm, whose
 // passes are dealt to the ranks instead of tiles) and --tile N, the side of the square of
 // pixels dealt at a time. With --method cache every rank builds
 // the whole irradiance cache (its records are found in the order one process finds
@@ -89,6 +89,18 @@ int main(int argc, char** argv)
             report(traffic, done);
             if (rank != 0) return 0;
             std::printf("cornell_caustics on %d ranks: reference, %d passes, total %.3f s\n", ranks, options.render.spp, done);
+            examples::save(examples::Rendered{"cornell_caustics", std::move(*result), done}, options, true);
+            return 0;
+        }
+        if (options.method == "bdpt" || options.method == "vcm") {
+            // Passes (a camera path in every pixel and as many light paths) dealt to the ranks.
+            const prism::Bidirectional estimator(scene, {.method = options.method == "vcm" ? prism::BidirectionalMethod::vcm : prism::BidirectionalMethod::bdpt});
+            std::optional<prism::Accumulation> result =
+                prism::mpi::render_sums(MPI_COMM_WORLD, camera, estimator, examples::pass_render_config(options), tile, &traffic);
+            const double done = seconds();
+            report(traffic, done);
+            if (rank != 0) return 0;
+            std::printf("cornell_caustics on %d ranks: %s, %d passes, total %.3f s\n", ranks, options.method.c_str(), options.render.spp, done);
             examples::save(examples::Rendered{"cornell_caustics", std::move(*result), done}, options, true);
             return 0;
         }

@@ -6935,6 +6935,140 @@ private:
 
 } // namespace prism
 
+// ---- prism/accel/hash_grid.hpp ----
+// HashGrid: points found within one fixed radius, for vertex merging's pass of light
+// vertices (integrator/bidirectional.hpp), built in linear time.
+//
+// Space is cut into cubes of side twice the radius, and each cube hashed to one of a
+// power of two of buckets at least the number of points; a counting sort puts each
+// bucket's points together, in their order. A query's ball of that radius meets at most
+// the 2 x 2 x 2 cubes around it: their buckets (each once, though two cubes may share
+// one) are read and every point within the radius handed over, in bucket order and, in
+// a bucket, in the points' order. A KdTree (accel/kd_tree.hpp) answers any radius and
+// nearest neighbours; this answers one radius, built about ten times faster (a pass of
+// vertex merging rebuilds it for every pass).
+
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace prism {
+
+/// Points within a fixed radius of a query, by a hashed grid of cubes twice the radius.
+template <Scalar T>
+class HashGrid {
+public:
+    /// An empty grid: every query finds nothing.
+    HashGrid() = default;
+
+    /// The grid over `points` (copied in bucket order) for queries of `radius`; throws
+    /// std::invalid_argument for a radius that is not finite and positive, more than 2^32 - 2
+    /// points, or a point that is not finite (naming its index).
+    HashGrid(std::span<const Vec3<T>> points, T radius) : radius_(radius)
+    {
+        if (!(radius > T(0) && radius < infinity<T>)) detail::throw_invalid("HashGrid radius must be finite and > 0, got ", radius);
+        if (points.size() >= std::numeric_limits<std::uint32_t>::max()) detail::throw_invalid("HashGrid holds at most 2^32 - 2 points, got ", points.size());
+        if (points.empty()) return;
+        Vec3<T> low = points[0], high = points[0];
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            if (!is_finite(points[i])) detail::throw_invalid("HashGrid point ", i, " is not finite");
+            low = component_min(low, points[i]);
+            high = component_max(high, points[i]);
+        }
+        low_ = low;
+        inverse_cell_ = T(1) / (T(2) * radius);
+        // Cells counted from the lowest point: the coordinates of the farthest must fit.
+        const Vec3<T> extent = (high - low) * inverse_cell_;
+        if (!(max_component(extent) < T(1 << 30))) detail::throw_invalid("HashGrid: the points span ", max_component(extent), " cells of the radius ", radius, ", more than 2^30");
+        std::size_t buckets = 1;
+        while (buckets < points.size()) buckets *= 2;
+        mask_ = std::uint32_t(buckets - 1);
+        starts_.assign(buckets + 1, 0);
+        std::vector<std::uint32_t> bucket_of(points.size());
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            bucket_of[i] = bucket(cell_of(points[i]));
+            ++starts_[bucket_of[i] + 1];
+        }
+        for (std::size_t b = 0; b < buckets; ++b) starts_[b + 1] += starts_[b];
+        std::vector<std::uint32_t> next(starts_.begin(), starts_.end() - 1);
+        points_.resize(points.size());
+        index_.resize(points.size());
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const std::uint32_t at = next[bucket_of[i]]++;
+            points_[at] = points[i];
+            index_[at] = std::uint32_t(i);
+        }
+    }
+
+    /// The number of points.
+    [[nodiscard]] std::size_t size() const noexcept { return points_.size(); }
+    /// The radius queries are answered for.
+    [[nodiscard]] T radius() const noexcept { return radius_; }
+
+    /// Call visit(index, distance2) for every point within the radius of q (distance <= radius).
+    template <class Visitor>
+    void within(const Vec3<T>& q, Visitor&& visit) const
+    {
+        if (points_.empty() || !is_finite(q)) return;
+        // The cube holding q and its neighbours toward q's nearer faces: the ball of
+        // radius r about q lies in the 2 x 2 x 2 cubes from floor((q - r) / 2r).
+        const Vec3<T> from = (q - low_) * inverse_cell_ - Vec3<T>(T(0.5));
+        std::array<std::int64_t, 3> base{};
+        for (int a = 0; a < 3; ++a) {
+            const T f = std::floor(from[a]);
+            if (!(f > T(-2) * T(1 << 30) && f < T(2) * T(1 << 30))) return; // far from every point
+            base[std::size_t(a)] = std::int64_t(f);
+        }
+        std::array<std::uint32_t, 8> seen{};
+        int count = 0;
+        const T r2 = radius_ * radius_;
+        for (int k = 0; k < 8; ++k) {
+            const std::uint32_t b = bucket({base[0] + (k & 1), base[1] + ((k >> 1) & 1), base[2] + ((k >> 2) & 1)});
+            if (std::find(seen.begin(), seen.begin() + count, b) != seen.begin() + count) continue;
+            seen[std::size_t(count++)] = b;
+            for (std::uint32_t i = starts_[b]; i < starts_[b + 1]; ++i) {
+                const T d2 = length_squared(points_[i] - q);
+                if (d2 <= r2) visit(index_[i], d2);
+            }
+        }
+    }
+
+    /// The bytes the grid holds.
+    [[nodiscard]] std::size_t memory_bytes() const noexcept
+    {
+        return points_.capacity() * sizeof(Vec3<T>) + index_.capacity() * sizeof(std::uint32_t) + starts_.capacity() * sizeof(std::uint32_t);
+    }
+
+private:
+    [[nodiscard]] std::array<std::int64_t, 3> cell_of(const Vec3<T>& p) const noexcept
+    {
+        const Vec3<T> c = (p - low_) * inverse_cell_;
+        return {std::int64_t(std::floor(c.x)), std::int64_t(std::floor(c.y)), std::int64_t(std::floor(c.z))};
+    }
+
+    /// A cell's bucket (Teschner et al. 2003's hash of its coordinates).
+    [[nodiscard]] std::uint32_t bucket(const std::array<std::int64_t, 3>& c) const noexcept
+    {
+        const std::uint64_t h = (std::uint64_t(c[0]) * 73856093u) ^ (std::uint64_t(c[1]) * 19349663u) ^ (std::uint64_t(c[2]) * 83492791u);
+        return std::uint32_t(h ^ (h >> 32)) & mask_;
+    }
+
+    T radius_ = T(0);
+    T inverse_cell_ = T(0);
+    Vec3<T> low_{};
+    std::uint32_t mask_ = 0;
+    std::vector<std::uint32_t> starts_; ///< bucket b's points are [starts_[b], starts_[b + 1])
+    std::vector<Vec3<T>> points_;       ///< in bucket order
+    std::vector<std::uint32_t> index_;  ///< each one's index in the points given
+};
+
+} // namespace prism
+
 // ---- prism/light/light.hpp ----
 // What a light tells a shading point and the photon tracer, and the Light concept.
 
@@ -12196,6 +12330,8 @@ public:
     /// Some material may be an index-matched boundary (may_match_index): shadow rays that
     /// glass blocks still pass it.
     static constexpr bool has_index_matching = detail::any_of({may_match_index<typename Slots::material_type>...});
+    /// Some light casts its own shadow (has_own_shadow: POV-Ray's area_light).
+    static constexpr bool has_own_shadow_lights = detail::any_own_shadow<LightsOfScene>;
     /// Some material disperses (its index depends on the wavelength): a white path splits there.
     static constexpr bool has_dispersion = detail::any_of({disperses<typename Slots::material_type>...});
     /// Some material's interior scatters light (a Fog): walks sample where they scatter in it.
@@ -13123,7 +13259,6 @@ public:
     {
         using Sample = std::optional<VertexSample<T>>;
         if constexpr (has_diffuse<M>) {
-            T share = T(1);
             if constexpr (reflects<M> || transmits<M>) {
                 // One decision over the lobes, each by its reflectance (scatter_photon's).
                 const Shares s = shares(d_);
@@ -13135,14 +13270,13 @@ public:
                     const Rgb<T> weight = reflected ? s.split.kr * (s.sum / s.reflected) : s.split.kt * (s.sum / s.transmitted);
                     return VertexSample<T>{reflected ? reflect(d_, s.normal) : *s.split.refracted, weight, T(1), T(1), true};
                 }
-                share = s.diffuse / s.sum;
+                // The diffuse lobe: its choice's probability is in value()'s densities.
             }
             const Vec3<T> ns = hit_->facing_shading(), ng = hit_->facing_normal();
             if (!(shading_cosine(ns, ng, -d_) > T(0))) return std::nullopt;
             const Vec3<T> wo = cosine_hemisphere(ns, rng);
             const VertexValue<T> v = value(wo);
             if (v.black() || !(v.pdf_forward > T(0))) return std::nullopt;
-            (void)share;
             return VertexSample<T>{wo, v.f * (v.cos / v.pdf_forward), v.pdf_forward, v.pdf_reverse, false};
         } else if constexpr (has_glossy<M>) {
             const auto lobe = glossy_at(*material_, *hit_, d_, glossy_eta(*material_, *hit_, outside_index_));
@@ -13294,9 +13428,21 @@ struct BidirectionalConfig {
     int max_length = 64;
     /// Segments a subpath takes before Russian roulette on its throughput may end it.
     int roulette_length = 3;
-    /// The first pass's merging radius in scene units; 0: 1/300 of the radius of the
-    /// sphere around the scene (SmallVCM's 0.003).
+    /// The first pass's merging radius in scene units; 0: `footprints` times the width of a
+    /// pixel at the median distance of the surfaces the camera sees (the radius then
+    /// follows the image's resolution, as stochastic progressive photon mapping's does).
     double radius = 0.0;
+    /// The default radius in pixel widths (see `radius`).
+    double footprints = 1.0;
+    /// How much a merge counts against a connection in the weights: the merges of a pass
+    /// are weighed as merge_weight pi r^2 N light paths' worth (1: Georgiev et al.'s
+    /// balance heuristic). Any value keeps every estimate unbiased in the limit; below 1 a
+    /// connection that can find a path keeps more of it (a point light's direct light,
+    /// which merging estimates with the noise of counting photons), while a path only
+    /// merging finds (E S ... D ... S L) is merging's whole whatever the value. The default
+    /// was the best of 1, 0.1, 0.05, 0.01 on the point-lit Cornell box (RMSE 2.9 x BDPT's
+    /// at 1, 1.02 x at 0.05: docs/benchmarks.md).
+    double merge_weight = 0.05;
     /// In (0, 1): how much of the radius's area each pass keeps (Knaus and Zwicker 2011's alpha).
     double alpha = 0.75;
     /// Light subpaths per pass; 0: one per pixel of the image.
@@ -13308,6 +13454,11 @@ struct BidirectionalConfig {
     std::optional<Strategy> only{};
     bool weighted = true; ///< see `only`
 };
+
+/// Whether Bidirectional renders scenes of type SceneT: surfaces only (no scattering
+/// medium), no dispersive material, no light that casts its own shadow.
+template <class SceneT>
+inline constexpr bool renders_bidirectionally = !SceneT::has_scattering_media && !SceneT::has_dispersion && !SceneT::has_own_shadow_lights;
 
 /// Bidirectional path tracing and vertex connection and merging of `scene` (an integrator
 /// of passes: render/render.hpp's PassEstimator).
@@ -13321,6 +13472,7 @@ public:
 
     static_assert(!SceneT::has_scattering_media, "Bidirectional renders surfaces only: a scene with a scattering medium needs the PathTracer or a PhotonMapper");
     static_assert(!SceneT::has_dispersion, "Bidirectional: a dispersive material's wavelengths are not traced yet");
+    static_assert(!SceneT::has_own_shadow_lights, "Bidirectional: a light that casts its own shadow (PointGridLight, POV-Ray's area_light) has no emission to trace");
 
     /// The estimator of `scene` (which must outlive it); throws std::invalid_argument,
     /// naming the parameter, for a bad setting, a dispersive material or a light without
@@ -13333,10 +13485,11 @@ public:
         if (!(config.radius >= 0.0 && config.radius < std::numeric_limits<double>::infinity()))
             detail::throw_invalid("BidirectionalConfig radius must be finite and >= 0, got ", config.radius);
         if (!(config.alpha > 0.0 && config.alpha < 1.0)) detail::throw_invalid("BidirectionalConfig alpha must be in (0, 1), got ", config.alpha);
+        if (!(config.footprints > 0.0 && config.footprints < 1e6)) detail::throw_invalid("BidirectionalConfig footprints must be in (0, 1e6), got ", config.footprints);
+        if (!(config.merge_weight > 0.0 && config.merge_weight <= 1.0)) detail::throw_invalid("BidirectionalConfig merge_weight must be in (0, 1], got ", config.merge_weight);
         if (config.only && (config.only->s < 0 || config.only->t < 1))
             detail::throw_invalid("BidirectionalConfig only must have s >= 0 and t >= 1, got (", config.only->s, ", ", config.only->t, ")");
         scene.for_each_light([&]<class L>(const L& light) {
-            static_assert(!has_own_shadow<L>, "Bidirectional: a light that casts its own shadow (PointGridLight, POV-Ray's area_light) has no emission to trace");
             if constexpr (std::same_as<L, PointLight<T>>)
                 if (light.falloff != Falloff::inverse_square) detail::throw_invalid("Bidirectional: a PointLight without falloff (POV-Ray's fade_power 0) has no physical emission");
         });
@@ -13366,8 +13519,22 @@ public:
     /// The settings.
     [[nodiscard]] const BidirectionalConfig& config() const noexcept { return config_; }
 
-    /// The first pass's merging radius (BidirectionalConfig::radius, or its default from the scene's size).
-    [[nodiscard]] T first_radius() const noexcept { return config_.radius > 0.0 ? T(config_.radius) : sphere_.radius * T(0.003); }
+    /// The first pass's merging radius: BidirectionalConfig::radius, or its default, a few
+    /// pixel widths at the median distance of the surfaces the camera sees through a grid
+    /// of 16 x 16 pixel centres (1/300 of the scene's radius where it sees none).
+    [[nodiscard]] T first_radius(const CameraRays<T>& rays, int width, int height) const noexcept
+    {
+        if (config_.radius > 0.0) return T(config_.radius);
+        std::vector<T> distances;
+        for (int j = 0; j < 16; ++j)
+            for (int i = 0; i < 16; ++i) {
+                const Ray<T> ray = rays.ray((T(i) + T(0.5)) * T(width) / T(16), (T(j) + T(0.5)) * T(height) / T(16));
+                if (const auto hit = scene_->closest_hit(ray, Interval<T>{T(0), infinity<T>})) distances.push_back(hit->crossing.t);
+            }
+        if (distances.empty()) return sphere_.radius * T(0.003);
+        std::nth_element(distances.begin(), distances.begin() + std::ptrdiff_t(distances.size() / 2), distances.end());
+        return T(config_.footprints) * distances[distances.size() / 2] * prism::sqrt(rays.pixel_area());
+    }
 
     /// Passes config.passes of config.spp: each one camera sample per pixel of the window
     /// (its weight) and the splats of its light paths there.
@@ -13407,17 +13574,18 @@ private:
         int length;          ///< segments from the light
     };
 
-    /// A pass's light subpaths: their vertices path by path, and VCM's tree of them.
+    /// A pass's light subpaths: their vertices path by path, and VCM's grid of them.
     struct LightPaths {
         std::vector<LightVertex> vertices;
         std::vector<std::uint32_t> ends; ///< path i's vertices are [ends[i], ends[i + 1])
-        std::vector<std::array<T, 3>> points;
-        std::optional<KdTree<ArrayPoints<T, 3>>> tree;
+        HashGrid<T> grid;                ///< the vertices by position, for merging
         T count = T(0);          ///< N, the light paths traced
         T radius = T(0);         ///< the merging radius
         T mis_vm = T(0);         ///< eta_VCM = pi r^2 N (0 without merging): merging's weight against a connection
         T mis_vc = T(0);         ///< 1 / eta_VCM (0 without connections)
         T vm_normalization = T(0); ///< 1 / (pi r^2 N)
+        bool per_pixel = false;    ///< light path i is pixel i's (paired_with_pixels)
+        int width = 0, height = 0; ///< the image's size
     };
 
     /// A pass's camera side, a RayEstimator for render_into.
@@ -13436,6 +13604,30 @@ private:
         int length = 0;         ///< segments so far
         bool specular = true;   ///< every scattering so far was a delta
     };
+
+    /// The sampler's blocks a light path's bounces start at (Random::bounce): past any
+    /// camera path's, so the two never read the same dimensions; its emission reads the
+    /// block before.
+    static constexpr int light_blocks = 1024;
+
+    /// Whether light path i is pixel i's, drawn from its sampler and joined to its camera
+    /// paths: with one light path a pixel (the default), so that the connections of a
+    /// pixel's passes take its sampler's stratified points.
+    [[nodiscard]] static bool paired_with_pixels(const RenderConfig& config, std::size_t count) noexcept
+    {
+        return count == std::size_t(config.width) * std::size_t(config.height);
+    }
+
+    /// The pixel a camera ray was shot through (the image position it projects to),
+    /// within the image.
+    [[nodiscard]] static std::size_t pixel_of(const CameraRays<T>& rays, const Ray<T>& ray, const LightPaths& light) noexcept
+    {
+        const auto seen = rays.thin_lens() ? rays.project(ray.origin + ray.direction, ray.origin) : rays.project(ray.origin + ray.direction);
+        if (!seen) return 0;
+        const auto x = std::size_t(std::clamp(seen->x, T(0), T(light.width - 1)));
+        const auto y = std::size_t(std::clamp(seen->y, T(0), T(light.height - 1)));
+        return y * std::size_t(light.width) + x;
+    }
 
     /// Whether a contribution of strategy (s, t) counts, and with which of its weights.
     [[nodiscard]] bool counts(int s, int t) const noexcept { return !config_.only || (config_.only->s == s && config_.only->t == t); }
@@ -13458,11 +13650,11 @@ private:
     /// there (nothing ends the walk), and on_escape(ray) when the path leaves the scene.
     /// `beta` takes what the objects' interiors and index-matched boundaries let through.
     template <class OnVertex, class OnEscape>
-    void walk(Ray<T> ray, MediumStack media, Rgb<T>& beta, Transport mode, Random& rng, OnVertex&& on_vertex, OnEscape&& on_escape) const
+    void walk(Ray<T> ray, MediumStack media, Rgb<T>& beta, Transport mode, Random& rng, int first_block, OnVertex&& on_vertex, OnEscape&& on_escape) const
     {
         T distance = T(0);
         for (int bounce = 0;; ++bounce) {
-            rng.bounce(bounce);
+            rng.bounce(first_block + bounce);
             const std::optional<Hit<T>> hit = scene_->closest_hit(ray, Interval<T>{T(0), infinity<T>});
             if (!hit) {
                 on_escape(ray);
@@ -13546,19 +13738,22 @@ private:
         return s->direction;
     }
 
-    /// The pass's light subpaths: traced, their vertices kept (and VCM's tree built), and
+    /// The pass's light subpaths: traced, their vertices kept (and VCM's grid built), and
     /// their light-tracing splats (t = 1) added to `sums` in the window.
     [[nodiscard]] LightPaths trace_light_paths(Accumulation& sums, const CameraRays<T>& rays, const PixelWindow& window, const RenderConfig& config,
                                                std::uint64_t pass, std::size_t count) const
     {
         LightPaths light;
         light.count = T(count);
+        light.per_pixel = paired_with_pixels(config, count);
+        light.width = config.width;
+        light.height = config.height;
         const bool merging = config_.method == BidirectionalMethod::vcm;
-        light.radius = T(double(first_radius()) * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)));
+        light.radius = T(double(first_radius(rays, config.width, config.height)) * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)));
         light.radius = std::max(light.radius, sphere_.radius * T(1e-7));
         const T eta = pi<T> * light.radius * light.radius * light.count;
-        light.mis_vm = merging ? eta : T(0);
-        light.mis_vc = T(1) / eta;
+        light.mis_vm = merging ? T(config_.merge_weight) * eta : T(0);
+        light.mis_vc = T(1) / (T(config_.merge_weight) * eta);
         light.vm_normalization = T(1) / eta;
         // Blocks of paths, each into its own list (joined in order) and its worker's splats.
         constexpr std::size_t block = 4096;
@@ -13570,10 +13765,18 @@ private:
         buffers.reserve(workers);
         for (unsigned k = 0; k < workers; ++k) buffers.emplace_back(config.width, config.height, window);
         const std::uint64_t seed = detail::sample_seed(config.seed ^ 0x9e3779b97f4a7c15ULL, pass);
+        const bool per_pixel = paired_with_pixels(config, count);
         detail::parallel_blocks(blocks, config.threads, [&](std::size_t b, unsigned worker) {
             for (std::size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
                 const std::size_t before = lists[b].size();
-                Random rng(seed, std::uint64_t(i));
+                // One light path a pixel: sample `pass` of its pixel's sampler, in blocks of
+                // dimensions its camera path never reads, and a PCG stream of its own; else
+                // an independent stream.
+                Random rng = per_pixel ? Random(Sampler(config.sampler, detail::pixel_key(config, std::uint32_t(i % std::size_t(config.width)),
+                                                                                             std::uint32_t(i / std::size_t(config.width))),
+                                                        std::uint32_t(pass)),
+                                                Pcg32(seed, std::uint64_t(i)))
+                                       : Random(seed, std::uint64_t(i));
                 light_path(rng, light, rays, window, lists[b], buffers[worker]);
                 lengths[b].push_back(std::uint32_t(lists[b].size() - before));
             }
@@ -13586,9 +13789,9 @@ private:
             for (const std::uint32_t n : lengths[b]) light.ends.push_back(light.ends.back() + n);
         }
         if (merging && !light.vertices.empty()) {
-            light.points.reserve(light.vertices.size());
-            for (const LightVertex& v : light.vertices) light.points.push_back({v.hit.crossing.point.x, v.hit.crossing.point.y, v.hit.crossing.point.z});
-            light.tree.emplace(ArrayPoints<T, 3>{light.points}, config.threads);
+            std::vector<Vec3<T>> points(light.vertices.size());
+            for (std::size_t i = 0; i < points.size(); ++i) points[i] = light.vertices[i].hit.crossing.point;
+            light.grid = HashGrid<T>(points, light.radius);
         }
         return light;
     }
@@ -13598,6 +13801,7 @@ private:
     void light_path(Random& rng, const LightPaths& light, const CameraRays<T>& rays, const PixelWindow& window, std::vector<LightVertex>& out,
                     Accumulation& splats) const
     {
+        rng.bounce(light_blocks - 1); // the emission's block
         const T u_light = rng.uniform<T>();
         std::size_t chosen = 0;
         while (chosen + 1 < light_cdf_.size() && !(u_light < light_cdf_[chosen])) ++chosen;
@@ -13628,7 +13832,7 @@ private:
         if (e.from_infinity && !delta_light) state.dvcm *= e.pdf_direction; // an environment's sample is by direction
         state.dvc = delta_light ? T(0) : (e.from_infinity ? T(1) : e.cos) / pdf;
         state.dvm = state.dvc * light.mis_vc;
-        walk(e.ray, scene_->media_at(e.ray.origin), state.beta, Transport::importance, rng,
+        walk(e.ray, scene_->media_at(e.ray.origin), state.beta, Transport::importance, rng, light_blocks,
              [&]<class M>(const M&, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T outside_index) -> std::optional<Vec3<T>> {
                  const Crossing<T>& c = hit.crossing;
                  const T cos = std::abs(dot(d, c.normal));
@@ -13693,9 +13897,10 @@ private:
     [[nodiscard]] Rgb<T> camera_path(const Ray<T>& ray, Random& rng, const LightPaths& light, const CameraRays<T>& rays) const noexcept
     {
         Rgb<T> sum{T(0)};
-        // The light subpath this camera path is joined to: any one, uniformly (each is an
-        // independent draw of the light subpaths' distribution).
-        const std::size_t paired = std::min(std::size_t(rng.uniform<T>() * light.count), light.ends.size() - 2);
+        // The light subpath this camera path is joined to: its pixel's, or with a number of
+        // light paths of its own, any one, uniformly (each is a draw of the light subpaths'
+        // distribution independent of the camera path).
+        const std::size_t paired = light.per_pixel ? pixel_of(rays, ray, light) : std::min(std::size_t(rng.uniform<T>() * light.count), light.ends.size() - 2);
         PathState state;
         state.beta = Rgb<T>(T(1));
         const T camera = camera_pdf(rays, ray.direction);
@@ -13703,7 +13908,7 @@ private:
         state.dvcm = light.count / camera;
         state.dvc = state.dvm = T(0);
         Vec3<T> previous = ray.origin;
-        walk(ray, scene_->media_at(ray.origin), state.beta, Transport::radiance, rng,
+        walk(ray, scene_->media_at(ray.origin), state.beta, Transport::radiance, rng, 0,
              [&]<class M>(const M& material, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T) -> std::optional<Vec3<T>> {
                  const Crossing<T>& c = hit.crossing;
                  const T cos = std::abs(dot(d, c.normal));
@@ -13750,7 +13955,7 @@ private:
                          T weight = T(1);
                          if (state.length > 0) {
                              const T direct = l.pdf(w);
-                             const T emission = light_probability_[i] * l.emission_pdf(-w, sphere_).both();
+                             const T emission = within_disk(out.origin, w) ? light_probability_[i] * l.emission_pdf(-w, sphere_).both() : T(0);
                              weight = T(1) / (T(1) + direct * state.dvcm + emission * state.dvc);
                          }
                          sum += weighed(weight) * state.beta * le;
@@ -13758,6 +13963,17 @@ private:
                  });
              });
         return sum;
+    }
+
+    /// Whether a light at infinity in the unit direction w (toward it) reaches p by its
+    /// emission: its rays enter through the disk of the scene's sphere that faces it (2 R
+    /// upstream of its centre), so a point off that disk's cylinder (on an unbounded plane,
+    /// far out) has no light path from it, and its light samples none to share with.
+    [[nodiscard]] bool within_disk(const Vec3<T>& p, const Vec3<T>& w) const noexcept
+    {
+        const Vec3<T> v = p - sphere_.center;
+        const T along = dot(v, w);
+        return along < T(2) * sphere_.radius && length_squared(v - along * w) <= sphere_.radius * sphere_.radius;
     }
 
     /// The area lights' share of the light paths.
@@ -13786,7 +14002,7 @@ private:
                 cos_light = std::abs(dot(s.wi, drawn.at.crossing.normal));
             } else {
                 s = l.sample(c.point, Vec2<T>(u1, u2));
-                emission = q * l.emission_pdf(-s.wi, sphere_).both();
+                if (s.distance < infinity<T> || within_disk(c.point, s.wi)) emission = q * l.emission_pdf(-s.wi, sphere_).both();
             }
             const Vec3<T> n = c.facing_normal(), ns = c.facing_shading();
             T cos = shading_cosine(ns, n, s.wi);
@@ -13853,8 +14069,7 @@ private:
     [[nodiscard]] Rgb<T> merges(const SurfaceVertex<M>& vertex, const Crossing<T>& c, const PathState& state, const LightPaths& light) const noexcept
     {
         Rgb<T> sum{T(0)};
-        if (!light.tree) return sum;
-        light.tree->within({c.point.x, c.point.y, c.point.z}, light.radius, [&](std::uint32_t i, T) {
+        light.grid.within(c.point, [&](std::uint32_t i, T) {
             const LightVertex& lv = light.vertices[i];
             if (lv.length + state.length > config_.max_length) return;
             const VertexValue<T> camera = vertex.value(-lv.d);

@@ -178,9 +178,13 @@ TEST_CASE("the bidirectional estimators' images are the same bits for any thread
 {
     const auto scene = floor_and_mirror();
     const Camera<float> camera{.position = {1.5f, 3, 0}, .look_at = {1.5f, 0, 0}, .up = {0, 0, -1}, .fov = 60};
+    // Light paths a pixel's own (drawn from its sampler, joined to its camera paths), or
+    // a number of their own (independent streams, joined at random).
+    for (const std::size_t paths : {std::size_t(0), std::size_t(3000)})
     for (const BidirectionalMethod method : {BidirectionalMethod::bdpt, BidirectionalMethod::vcm}) {
         CAPTURE(std::string(method_name(method)));
-        const Bidirectional estimator(scene, {.method = method, .radius = 0.05, .light_paths = 3000});
+        CAPTURE(paths);
+        const Bidirectional estimator(scene, {.method = method, .radius = 0.05, .light_paths = paths});
         const RenderConfig config{.width = 12, .height = 9, .spp = 6, .threads = 2, .seed = 5, .progress = false};
         const Accumulation whole = render_sums(camera, estimator, config);
         RenderConfig one = config;
@@ -214,6 +218,8 @@ TEST_CASE("bad bidirectional settings are refused, naming the parameter")
     CHECK_THROWS_WITH_AS(Bidirectional(scene, {.roulette_length = -1}), doctest::Contains("roulette_length must be >= 0"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(Bidirectional(scene, {.radius = -1}), doctest::Contains("radius must be finite and >= 0, got -1"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(Bidirectional(scene, {.alpha = 1}), doctest::Contains("alpha must be in (0, 1), got 1"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Bidirectional(scene, {.footprints = 0}), doctest::Contains("footprints must be in (0, 1e6), got 0"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Bidirectional(scene, {.merge_weight = 1.5}), doctest::Contains("merge_weight must be in (0, 1], got 1.5"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(Bidirectional(scene, {.only = Strategy{0, 0}}), doctest::Contains("only must have s >= 0 and t >= 1, got (0, 0)"), std::invalid_argument);
     const auto povray = Scene{Lights{PointLight<float>{.position = {0, 1, 0}, .falloff = Falloff::none}}, Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{}}};
     CHECK_THROWS_WITH_AS(Bidirectional(povray, {}), doctest::Contains("without falloff"), std::invalid_argument);

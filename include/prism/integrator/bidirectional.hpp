@@ -34,7 +34,7 @@
 // a light without falloff is refused at compile time or by the constructor.
 #pragma once
 
-#include <prism/accel/kd_tree.hpp>
+#include <prism/accel/hash_grid.hpp>
 #include <prism/core/check.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/core/parallel.hpp>
@@ -87,7 +87,16 @@ struct BidirectionalConfig {
     /// follows the image's resolution, as stochastic progressive photon mapping's does).
     double radius = 0.0;
     /// The default radius in pixel widths (see `radius`).
-    double footprints = 3.0;
+    double footprints = 1.0;
+    /// How much a merge counts against a connection in the weights: the merges of a pass
+    /// are weighed as merge_weight pi r^2 N light paths' worth (1: Georgiev et al.'s
+    /// balance heuristic). Any value keeps every estimate unbiased in the limit; below 1 a
+    /// connection that can find a path keeps more of it (a point light's direct light,
+    /// which merging estimates with the noise of counting photons), while a path only
+    /// merging finds (E S ... D ... S L) is merging's whole whatever the value. The default
+    /// was the best of 1, 0.1, 0.05, 0.01 on the point-lit Cornell box (RMSE 2.9 x BDPT's
+    /// at 1, 1.02 x at 0.05: docs/benchmarks.md).
+    double merge_weight = 0.05;
     /// In (0, 1): how much of the radius's area each pass keeps (Knaus and Zwicker 2011's alpha).
     double alpha = 0.75;
     /// Light subpaths per pass; 0: one per pixel of the image.
@@ -131,6 +140,7 @@ public:
             detail::throw_invalid("BidirectionalConfig radius must be finite and >= 0, got ", config.radius);
         if (!(config.alpha > 0.0 && config.alpha < 1.0)) detail::throw_invalid("BidirectionalConfig alpha must be in (0, 1), got ", config.alpha);
         if (!(config.footprints > 0.0 && config.footprints < 1e6)) detail::throw_invalid("BidirectionalConfig footprints must be in (0, 1e6), got ", config.footprints);
+        if (!(config.merge_weight > 0.0 && config.merge_weight <= 1.0)) detail::throw_invalid("BidirectionalConfig merge_weight must be in (0, 1], got ", config.merge_weight);
         if (config.only && (config.only->s < 0 || config.only->t < 1))
             detail::throw_invalid("BidirectionalConfig only must have s >= 0 and t >= 1, got (", config.only->s, ", ", config.only->t, ")");
         scene.for_each_light([&]<class L>(const L& light) {
@@ -218,17 +228,18 @@ private:
         int length;          ///< segments from the light
     };
 
-    /// A pass's light subpaths: their vertices path by path, and VCM's tree of them.
+    /// A pass's light subpaths: their vertices path by path, and VCM's grid of them.
     struct LightPaths {
         std::vector<LightVertex> vertices;
         std::vector<std::uint32_t> ends; ///< path i's vertices are [ends[i], ends[i + 1])
-        std::vector<std::array<T, 3>> points;
-        std::optional<KdTree<ArrayPoints<T, 3>>> tree;
+        HashGrid<T> grid;                ///< the vertices by position, for merging
         T count = T(0);          ///< N, the light paths traced
         T radius = T(0);         ///< the merging radius
         T mis_vm = T(0);         ///< eta_VCM = pi r^2 N (0 without merging): merging's weight against a connection
         T mis_vc = T(0);         ///< 1 / eta_VCM (0 without connections)
         T vm_normalization = T(0); ///< 1 / (pi r^2 N)
+        bool per_pixel = false;    ///< light path i is pixel i's (paired_with_pixels)
+        int width = 0, height = 0; ///< the image's size
     };
 
     /// A pass's camera side, a RayEstimator for render_into.
@@ -247,6 +258,30 @@ private:
         int length = 0;         ///< segments so far
         bool specular = true;   ///< every scattering so far was a delta
     };
+
+    /// The sampler's blocks a light path's bounces start at (Random::bounce): past any
+    /// camera path's, so the two never read the same dimensions; its emission reads the
+    /// block before.
+    static constexpr int light_blocks = 1024;
+
+    /// Whether light path i is pixel i's, drawn from its sampler and joined to its camera
+    /// paths: with one light path a pixel (the default), so that the connections of a
+    /// pixel's passes take its sampler's stratified points.
+    [[nodiscard]] static bool paired_with_pixels(const RenderConfig& config, std::size_t count) noexcept
+    {
+        return count == std::size_t(config.width) * std::size_t(config.height);
+    }
+
+    /// The pixel a camera ray was shot through (the image position it projects to),
+    /// within the image.
+    [[nodiscard]] static std::size_t pixel_of(const CameraRays<T>& rays, const Ray<T>& ray, const LightPaths& light) noexcept
+    {
+        const auto seen = rays.thin_lens() ? rays.project(ray.origin + ray.direction, ray.origin) : rays.project(ray.origin + ray.direction);
+        if (!seen) return 0;
+        const auto x = std::size_t(std::clamp(seen->x, T(0), T(light.width - 1)));
+        const auto y = std::size_t(std::clamp(seen->y, T(0), T(light.height - 1)));
+        return y * std::size_t(light.width) + x;
+    }
 
     /// Whether a contribution of strategy (s, t) counts, and with which of its weights.
     [[nodiscard]] bool counts(int s, int t) const noexcept { return !config_.only || (config_.only->s == s && config_.only->t == t); }
@@ -269,11 +304,11 @@ private:
     /// there (nothing ends the walk), and on_escape(ray) when the path leaves the scene.
     /// `beta` takes what the objects' interiors and index-matched boundaries let through.
     template <class OnVertex, class OnEscape>
-    void walk(Ray<T> ray, MediumStack media, Rgb<T>& beta, Transport mode, Random& rng, OnVertex&& on_vertex, OnEscape&& on_escape) const
+    void walk(Ray<T> ray, MediumStack media, Rgb<T>& beta, Transport mode, Random& rng, int first_block, OnVertex&& on_vertex, OnEscape&& on_escape) const
     {
         T distance = T(0);
         for (int bounce = 0;; ++bounce) {
-            rng.bounce(bounce);
+            rng.bounce(first_block + bounce);
             const std::optional<Hit<T>> hit = scene_->closest_hit(ray, Interval<T>{T(0), infinity<T>});
             if (!hit) {
                 on_escape(ray);
@@ -357,19 +392,22 @@ private:
         return s->direction;
     }
 
-    /// The pass's light subpaths: traced, their vertices kept (and VCM's tree built), and
+    /// The pass's light subpaths: traced, their vertices kept (and VCM's grid built), and
     /// their light-tracing splats (t = 1) added to `sums` in the window.
     [[nodiscard]] LightPaths trace_light_paths(Accumulation& sums, const CameraRays<T>& rays, const PixelWindow& window, const RenderConfig& config,
                                                std::uint64_t pass, std::size_t count) const
     {
         LightPaths light;
         light.count = T(count);
+        light.per_pixel = paired_with_pixels(config, count);
+        light.width = config.width;
+        light.height = config.height;
         const bool merging = config_.method == BidirectionalMethod::vcm;
         light.radius = T(double(first_radius(rays, config.width, config.height)) * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)));
         light.radius = std::max(light.radius, sphere_.radius * T(1e-7));
         const T eta = pi<T> * light.radius * light.radius * light.count;
-        light.mis_vm = merging ? eta : T(0);
-        light.mis_vc = T(1) / eta;
+        light.mis_vm = merging ? T(config_.merge_weight) * eta : T(0);
+        light.mis_vc = T(1) / (T(config_.merge_weight) * eta);
         light.vm_normalization = T(1) / eta;
         // Blocks of paths, each into its own list (joined in order) and its worker's splats.
         constexpr std::size_t block = 4096;
@@ -381,10 +419,18 @@ private:
         buffers.reserve(workers);
         for (unsigned k = 0; k < workers; ++k) buffers.emplace_back(config.width, config.height, window);
         const std::uint64_t seed = detail::sample_seed(config.seed ^ 0x9e3779b97f4a7c15ULL, pass);
+        const bool per_pixel = paired_with_pixels(config, count);
         detail::parallel_blocks(blocks, config.threads, [&](std::size_t b, unsigned worker) {
             for (std::size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
                 const std::size_t before = lists[b].size();
-                Random rng(seed, std::uint64_t(i));
+                // One light path a pixel: sample `pass` of its pixel's sampler, in blocks of
+                // dimensions its camera path never reads, and a PCG stream of its own; else
+                // an independent stream.
+                Random rng = per_pixel ? Random(Sampler(config.sampler, detail::pixel_key(config, std::uint32_t(i % std::size_t(config.width)),
+                                                                                             std::uint32_t(i / std::size_t(config.width))),
+                                                        std::uint32_t(pass)),
+                                                Pcg32(seed, std::uint64_t(i)))
+                                       : Random(seed, std::uint64_t(i));
                 light_path(rng, light, rays, window, lists[b], buffers[worker]);
                 lengths[b].push_back(std::uint32_t(lists[b].size() - before));
             }
@@ -397,9 +443,9 @@ private:
             for (const std::uint32_t n : lengths[b]) light.ends.push_back(light.ends.back() + n);
         }
         if (merging && !light.vertices.empty()) {
-            light.points.reserve(light.vertices.size());
-            for (const LightVertex& v : light.vertices) light.points.push_back({v.hit.crossing.point.x, v.hit.crossing.point.y, v.hit.crossing.point.z});
-            light.tree.emplace(ArrayPoints<T, 3>{light.points}, config.threads);
+            std::vector<Vec3<T>> points(light.vertices.size());
+            for (std::size_t i = 0; i < points.size(); ++i) points[i] = light.vertices[i].hit.crossing.point;
+            light.grid = HashGrid<T>(points, light.radius);
         }
         return light;
     }
@@ -409,6 +455,7 @@ private:
     void light_path(Random& rng, const LightPaths& light, const CameraRays<T>& rays, const PixelWindow& window, std::vector<LightVertex>& out,
                     Accumulation& splats) const
     {
+        rng.bounce(light_blocks - 1); // the emission's block
         const T u_light = rng.uniform<T>();
         std::size_t chosen = 0;
         while (chosen + 1 < light_cdf_.size() && !(u_light < light_cdf_[chosen])) ++chosen;
@@ -439,7 +486,7 @@ private:
         if (e.from_infinity && !delta_light) state.dvcm *= e.pdf_direction; // an environment's sample is by direction
         state.dvc = delta_light ? T(0) : (e.from_infinity ? T(1) : e.cos) / pdf;
         state.dvm = state.dvc * light.mis_vc;
-        walk(e.ray, scene_->media_at(e.ray.origin), state.beta, Transport::importance, rng,
+        walk(e.ray, scene_->media_at(e.ray.origin), state.beta, Transport::importance, rng, light_blocks,
              [&]<class M>(const M&, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T outside_index) -> std::optional<Vec3<T>> {
                  const Crossing<T>& c = hit.crossing;
                  const T cos = std::abs(dot(d, c.normal));
@@ -504,9 +551,10 @@ private:
     [[nodiscard]] Rgb<T> camera_path(const Ray<T>& ray, Random& rng, const LightPaths& light, const CameraRays<T>& rays) const noexcept
     {
         Rgb<T> sum{T(0)};
-        // The light subpath this camera path is joined to: any one, uniformly (each is an
-        // independent draw of the light subpaths' distribution).
-        const std::size_t paired = std::min(std::size_t(rng.uniform<T>() * light.count), light.ends.size() - 2);
+        // The light subpath this camera path is joined to: its pixel's, or with a number of
+        // light paths of its own, any one, uniformly (each is a draw of the light subpaths'
+        // distribution independent of the camera path).
+        const std::size_t paired = light.per_pixel ? pixel_of(rays, ray, light) : std::min(std::size_t(rng.uniform<T>() * light.count), light.ends.size() - 2);
         PathState state;
         state.beta = Rgb<T>(T(1));
         const T camera = camera_pdf(rays, ray.direction);
@@ -514,7 +562,7 @@ private:
         state.dvcm = light.count / camera;
         state.dvc = state.dvm = T(0);
         Vec3<T> previous = ray.origin;
-        walk(ray, scene_->media_at(ray.origin), state.beta, Transport::radiance, rng,
+        walk(ray, scene_->media_at(ray.origin), state.beta, Transport::radiance, rng, 0,
              [&]<class M>(const M& material, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T) -> std::optional<Vec3<T>> {
                  const Crossing<T>& c = hit.crossing;
                  const T cos = std::abs(dot(d, c.normal));
@@ -675,8 +723,7 @@ private:
     [[nodiscard]] Rgb<T> merges(const SurfaceVertex<M>& vertex, const Crossing<T>& c, const PathState& state, const LightPaths& light) const noexcept
     {
         Rgb<T> sum{T(0)};
-        if (!light.tree) return sum;
-        light.tree->within({c.point.x, c.point.y, c.point.z}, light.radius, [&](std::uint32_t i, T) {
+        light.grid.within(c.point, [&](std::uint32_t i, T) {
             const LightVertex& lv = light.vertices[i];
             if (lv.length + state.length > config_.max_length) return;
             const VertexValue<T> camera = vertex.value(-lv.d);
