@@ -85,9 +85,7 @@ Rendered render_by_method(const std::string& name, const SceneT& scene, const pr
         if constexpr (!prism::renders_bidirectionally<SceneT>) {
             throw std::invalid_argument("--method " + method + " renders surfaces in clear air: this scene has fog, a dispersive material or POV-Ray's area_light");
         } else {
-        prism::BidirectionalConfig bidirectional{.method = method == "vcm" ? prism::BidirectionalMethod::vcm : prism::BidirectionalMethod::bdpt};
-        if (const char* f = std::getenv("PRISM_VCM_FOOTPRINTS")) bidirectional.footprints = std::atof(f);
-        const prism::Bidirectional estimator(scene, bidirectional);
+        const prism::Bidirectional estimator(scene, {.method = method == "vcm" ? prism::BidirectionalMethod::vcm : prism::BidirectionalMethod::bdpt});
         prism::Accumulation sums = render_with(name, camera, estimator, pass_render_config(options), options);
         std::printf("%s: %s, %llu passes, %.3f s\n", name.c_str(), method == "vcm" ? "vertex connection and merging" : "bidirectional path tracing",
                     static_cast<unsigned long long>(samples_taken(sums)), seconds());
