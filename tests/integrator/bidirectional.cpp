@@ -76,27 +76,30 @@ TEST_CASE("every BDPT strategy alone reads the area-lit furnace's direct light (
         alone.weighted = false;
         CHECK(mean_red(render(lamp_camera, Bidirectional(scene, alone), config)) == doctest::Approx(1.0).epsilon(test::resolved(strategy.t == 1 ? 0.04 : 0.012)));
     }
-    CHECK(mean_red(render(lamp_camera, Bidirectional(scene, base), config)) == doctest::Approx(1.0).epsilon(test::resolved(0.005)));
-    // Up to three segments: the weighted strategies' images add up to the whole, the same
-    // samples taken by each; and the four strategies of three segments alone agree with
-    // the weighted ones' sum.
+    const double two = mean_red(render(lamp_camera, Bidirectional(scene, base), config));
+    CHECK(two == doctest::Approx(1.0).epsilon(test::resolved(0.005)));
+    // Three segments: the four strategies alone agree with the weighted whole's paths of
+    // three segments (the render to three less the render to two).
     BidirectionalConfig three = base;
     three.max_length = 3;
-    const double whole = mean_red(render(lamp_camera, Bidirectional(scene, three), config));
-    const auto strategy_mean = [&](int s, int t, bool weighted) {
+    const double longest = mean_red(render(lamp_camera, Bidirectional(scene, three), config)) - two;
+    const auto strategy_mean = [&](int s, int t, bool weighted, const RenderConfig& c) {
         BidirectionalConfig one = three;
         one.only = Strategy{s, t};
         one.weighted = weighted;
-        return mean_red(render(lamp_camera, Bidirectional(scene, one), config));
+        return mean_red(render(lamp_camera, Bidirectional(scene, one), c));
     };
-    double shorter = 0, longest = 0;
-    for (int k = 1; k <= 3; ++k)
-        for (int s = 0; s <= k; ++s) (k < 3 ? shorter : longest) += strategy_mean(s, k + 1 - s, true);
-    CHECK(shorter + longest == doctest::Approx(whole).epsilon(1e-5));
     for (int s = 0; s <= 3; ++s) {
         CAPTURE(s);
-        CHECK(strategy_mean(s, 4 - s, false) == doctest::Approx(longest).epsilon(test::resolved(s == 3 ? 0.04 : 0.02)));
+        CHECK(strategy_mean(s, 4 - s, false, config) == doctest::Approx(longest).epsilon(test::resolved(s == 3 ? 0.04 : 0.02)));
     }
+    // The weighted strategies' images add up to the whole, each render taking the same samples.
+    RenderConfig few = config;
+    few.spp = 4;
+    double sum = 0;
+    for (int k = 1; k <= 3; ++k)
+        for (int s = 0; s <= k; ++s) sum += strategy_mean(s, k + 1 - s, true, few);
+    CHECK(sum == doctest::Approx(mean_red(render(lamp_camera, Bidirectional(scene, three), few))).epsilon(1e-5));
 }
 
 TEST_CASE("the bidirectional sky furnace: under a uniform sky a diffuse ball reads its albedo and a clear glass ball the sky, by BDPT and by VCM")
@@ -211,7 +214,7 @@ TEST_CASE("the bidirectional estimators' images are the same bits for any thread
     }
 }
 
-TEST_CASE("bad bidirectional settings are refused, naming the parameter")
+TEST_CASE("bad bidirectional settings are refused, naming the parameter; lights that emit nothing render black")
 {
     const auto scene = floor_and_mirror();
     CHECK_THROWS_WITH_AS(Bidirectional(scene, {.max_length = 0}), doctest::Contains("max_length must be >= 1, got 0"), std::invalid_argument);
@@ -223,6 +226,11 @@ TEST_CASE("bad bidirectional settings are refused, naming the parameter")
     CHECK_THROWS_WITH_AS(Bidirectional(scene, {.only = Strategy{0, 0}}), doctest::Contains("only must have s >= 0 and t >= 1, got (0, 0)"), std::invalid_argument);
     const auto povray = Scene{Lights{PointLight<float>{.position = {0, 1, 0}, .falloff = Falloff::none}}, Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{}}};
     CHECK_THROWS_WITH_AS(Bidirectional(povray, {}), doctest::Contains("without falloff"), std::invalid_argument);
+    // Lights that emit nothing are no error: the image is black.
+    const auto dark = Scene{Lights{PointLight<float>{.position = {0, 1, 0}, .intensity = Rgb<float>(0)}}, Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{}}};
+    const Camera<float> camera{.position = {0, 2, 2}, .look_at = {0, 0, 0}};
+    const Film black = render(camera, Bidirectional(dark, {}), {.width = 4, .height = 4, .spp = 2, .progress = false});
+    for (const Rgb<float>& p : black.pixels()) CHECK(p == Rgb<float>(0));
 }
 
 TEST_CASE("regression: under the sun, a floor beyond the disk its light paths enter by reads its direct light (rho E cos / pi), by BDPT and by VCM")

@@ -3,6 +3,8 @@
 #include <prism/prism.hpp>
 
 #include "../support.hpp"
+#include "../effort.hpp"
+#include "../emission_checks.hpp"
 
 #include <doctest/doctest.h>
 
@@ -69,4 +71,12 @@ TEST_CASE("the sky's photons light a floor with E = pi L, entering through the d
     CHECK(e.x == doctest::Approx(2 * pi<double>).epsilon(test::resolved(0.02)));
     CHECK_THROWS_WITH_AS(EnvironmentLight<double>{.radiance = Rgb<double>(-1)}.validate(), doctest::Contains("EnvironmentLight radiance"),
                          std::invalid_argument);
+}
+
+TEST_CASE("a uniform sky's emission carries L 4 pi pi R^2 through the disks of the scene's sphere")
+{
+    using namespace prism;
+    const EnvironmentLight<double> light{.radiance = {1, 2, 3}};
+    const Rgb<double> power = test::emitted_power(light, BoundingSphere<double>{{0, 0, 0}, 2}, 1000);
+    for (int k = 0; k < 3; ++k) CHECK(power[k] == doctest::Approx(light.radiance[k] * 4 * pi<double> * pi<double> * 4).epsilon(1e-9));
 }

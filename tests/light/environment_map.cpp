@@ -3,6 +3,7 @@
 #include <prism/prism.hpp>
 
 #include "../support.hpp"
+#include "../emission_checks.hpp"
 
 #include <doctest/doctest.h>
 
@@ -260,4 +261,14 @@ TEST_CASE("an environment map refuses an image it cannot light by, naming the pi
     const LightSample<float> s = black.sample({}, {0.3f, 0.6f});
     CHECK(s.irradiance == Rgb<float>(0.0f));
     CHECK(s.pdf == doctest::Approx(1 / (4 * pi<double>)).epsilon(1e-5));
+}
+
+TEST_CASE("an environment map's emission carries pi R^2 times its radiance over the sphere, from directions its pdf draws")
+{
+    const EnvironmentMap<double> sky(32, 16, test_sky(32, 16, 9, 4, 200.0f), {.strength = 0.5, .rotation_degrees = 20});
+    const BoundingSphere<double> sphere{{1, 2, 3}, 2};
+    const Rgb<double> power = test::emitted_power(sky, sphere, int(test::samples(100000)));
+    const Rgb<double> expected = sky.photon_power({nullptr, &sphere});
+    // Each ray carries L / pdf over its disk's density: the sky's importance sampling makes it nearly constant.
+    for (int k = 0; k < 3; ++k) CHECK(power[k] == doctest::Approx(expected[k]).epsilon(test::resolved(0.01)));
 }

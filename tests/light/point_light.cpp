@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <prism/light/point_light.hpp>
 
+#include "../effort.hpp"
+#include "../emission_checks.hpp"
+
 #include <doctest/doctest.h>
 
 TEST_CASE("a point light's irradiance falls off as I / r^2, unless told not to")
@@ -16,4 +19,12 @@ TEST_CASE("a point light's irradiance falls off as I / r^2, unless told not to")
     CHECK_THROWS_WITH_AS((prism::PointLight<float>{.position = {0, std::nanf(""), 0}}.validate()), doctest::Contains("PointLight position"),
                          std::invalid_argument);
     CHECK_THROWS_AS((prism::PointLight<float>{.intensity = {-1, 0, 0}}.validate()), std::invalid_argument);
+}
+
+TEST_CASE("a point light's emission carries its power 4 pi I, uniform over the sphere of directions")
+{
+    using namespace prism;
+    const PointLight<double> light{.position = {1, 2, 3}, .intensity = {1, 2, 0.5}};
+    const Rgb<double> power = test::emitted_power(light, BoundingSphere<double>{{0, 0, 0}, 5}, 20000);
+    for (int k = 0; k < 3; ++k) CHECK(power[k] == doctest::Approx(light.power()[k]).epsilon(1e-9));
 }

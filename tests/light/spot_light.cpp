@@ -3,6 +3,8 @@
 #include <prism/prism.hpp>
 
 #include "../support.hpp"
+#include "../effort.hpp"
+#include "../emission_checks.hpp"
 
 #include <cmath>
 
@@ -104,4 +106,13 @@ TEST_CASE("a spot light refuses angles and values it cannot honour, naming them"
     bad = spot_20_35;
     bad.intensity = Rgb<double>(-1);
     CHECK_THROWS_WITH_AS(bad.validate(), doctest::Contains("SpotLight intensity"), std::invalid_argument);
+}
+
+TEST_CASE("a spot light's emission carries its power, uniform over its outer cone and weighed by its falloff")
+{
+    using namespace prism;
+    const SpotLight<double> light{.position = {0, 3, 0}, .direction = {0.2, -1, 0.1}, .intensity = Rgb<double>(2), .inner_angle = 20, .outer_angle = 35};
+    const Rgb<double> power = test::emitted_power(light, BoundingSphere<double>{{0, 0, 0}, 5}, int(test::samples(200000)));
+    CHECK(power.x == doctest::Approx(light.power().x).epsilon(test::resolved(0.005)));
+    CHECK(light.emission_pdf(normalize(Vec3<double>{0, 1, 0}), {}).direction == 0.0); // behind the cone: none
 }

@@ -6,6 +6,7 @@
 #include <prism/prism.hpp>
 
 #include "../chi2.hpp"
+#include "../effort.hpp"
 #include "../support.hpp"
 
 #include <cmath>
@@ -247,5 +248,41 @@ TEST_CASE("an emitting mesh of 1280 triangles is drawn on by each triangle's are
         const SurfacePoint<double> p = surface.sample_area({rng.uniform<double>(), rng.uniform<double>()});
         CHECK(length(p.point - Vec3<double>(0, 2, 0)) <= 0.5 + 1e-12);
         CHECK(length(p.point - Vec3<double>(0, 2, 0)) >= 0.49);
+    }
+}
+
+TEST_CASE("area lights' emission carries their power (one-sided and two-sided, by power), drawn with the densities emission_pdf gives back")
+{
+    using namespace prism;
+    const auto scene = Scene{Lights{}, Object{Quad<double>({0, 2, 0}, {1, 0, 0}, {0, 0, 1}), Emissive<double>{.radiance = {3, 2, 1}}},
+                             Object{Sphere<double>({3, 1, 0}, 0.5), Emissive<double>{.radiance = Rgb<double>(2), .two_sided = true}}};
+    const AreaLights<std::remove_cvref_t<decltype(scene)>> lights = scene.area_lights();
+    Random rng(8, 1);
+    Rgb<double> sum(0.0);
+    const int n = int(test::samples(400000));
+    int mismatched = 0, back = 0;
+    for (int i = 0; i < n; ++i) {
+        const auto [a, b] = rng.uniform2<double>();
+        const auto [c, d] = rng.uniform2<double>();
+        const auto e = lights.emission(rng.uniform<double>(), {a, b}, {c, d});
+        REQUIRE(e.emission.pdf_area > 0);
+        sum += e.emission.radiance * (e.emission.cos / (e.emission.pdf_area * e.emission.pdf_direction));
+        const EmissionPdf<double> pdf = lights.emission_pdf(e.at, e.emission.ray.direction);
+        if (!(std::abs(pdf.area - e.emission.pdf_area) <= 1e-12 * pdf.area && std::abs(pdf.direction - e.emission.pdf_direction) <= 1e-9 * pdf.direction)) ++mismatched;
+        back += dot(e.emission.ray.direction, e.at.crossing.normal) < 0;
+    }
+    CHECK(mismatched == 0);
+    const Rgb<double> power = lights.photon_power({}); // pi L A, twice for the two-sided sphere
+    for (int k = 0; k < 3; ++k) CHECK(sum[k] / n == doctest::Approx(power[k]).epsilon(test::resolved(0.01)));
+    CHECK(back > 0); // the two-sided sphere emits inward too
+    // sample_point is sample, with the point it drew; pdf() gives its density back.
+    for (int i = 0; i < 200; ++i) {
+        const Vec3<double> p{rng.uniform<double>() * 4 - 1, 0, rng.uniform<double>() * 2 - 1};
+        const Vec2<double> u{rng.uniform<double>(), rng.uniform<double>()};
+        const auto drawn = lights.sample_point(p, u);
+        const LightSample<double> s = lights.sample(p, u);
+        CHECK(drawn.sample.irradiance == s.irradiance);
+        CHECK(drawn.sample.pdf == s.pdf);
+        if (s.pdf > 0 && max_component(s.irradiance) > 0) CHECK(lights.pdf(drawn.at, p) == doctest::Approx(s.pdf).epsilon(1e-6));
     }
 }

@@ -35,11 +35,11 @@ WalkCounts walk_counts(const SceneT& scene, WalkLimits limits, int count)
     for (int i = 0; i < count; ++i) {
         int vertices = 0;
         const Ray<double> ray{{0, 0, 0}, uniform_sphere<double>(rng)};
-        random_walk<Mode>(scene, StraightAir{}, bands, ray, Rgb<double>(1), rng, limits, [&]<class M>(const M&, const WalkVertex<double>& at) {
+        random_walk<Mode>(scene, StraightAir{}, bands, ray, Rgb<double>(1), rng, limits, WalkHooks{.on_surface = [&]<class M>(const M&, const WalkVertex<double>& at) {
             ++vertices;
             out.largest_power = std::max(out.largest_power, max_component(at.power));
             return true;
-        });
+        }});
         out.mean_vertices += vertices;
         out.fewest = std::min(out.fewest, vertices);
     }
@@ -109,12 +109,12 @@ TEST_CASE("in a fog a walk scatters as in a closed room: a photon 1 / (1 - albed
         double vertices = 0;
         for (int i = 0; i < n; ++i) {
             random_walk<Mode>(scene, air, bands, Ray<double>{{0, 0, 0}, uniform_sphere<double>(rng)}, Rgb<double>(1), rng, limits,
-                              [](const auto&, const auto&) { return true; }, IgnoreEscape{}, IgnoreEmitters{},
-                              [&](const auto&, const WalkMediumVertex<double>& at) {
-                                  ++vertices;
-                                  largest = std::max(largest, max_component(at.power));
-                                  return true;
-                              });
+                              WalkHooks{.on_surface = [](const auto&, const auto&) { return true; },
+                                        .on_medium = [&](const auto&, const WalkMediumVertex<double>& at) {
+                                            ++vertices;
+                                            largest = std::max(largest, max_component(at.power));
+                                            return true;
+                                        }});
         }
         return vertices / n;
     };
@@ -159,16 +159,16 @@ TEST_CASE("in fog filling graded air a walk scatters along its curved path: it r
     double path = 0;
     for (int i = 0; i < n; ++i) {
         random_walk<Transport::radiance>(scene, air, bands, Ray<double>{{0, y0, 0}, {std::cos(theta0), std::sin(theta0), 0}}, Rgb<double>(1), rng, {},
-                                         [&](const auto&, const WalkVertex<double>& at) {
+                                         WalkHooks{.on_surface = [&](const auto&, const WalkVertex<double>& at) {
                                              ++reached;
                                              if (std::abs(at.crossing().point.x - x_exact) > 1e-4) ++far;
                                              path = at.travelled;
                                              return false;
-                                         }, IgnoreEscape{}, IgnoreEmitters{},
-                                         [&](const auto&, const WalkMediumVertex<double>&) {
+                                         },
+                                         .on_medium = [&](const auto&, const WalkMediumVertex<double>&) {
                                              ++scattered;
                                              return false;
-                                         });
+                                         }});
     }
     const double expected = std::exp(-sigma * arc), standard_error = std::sqrt(expected * (1 - expected) / n);
     CAPTURE(reached);

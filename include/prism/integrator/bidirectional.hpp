@@ -159,12 +159,13 @@ public:
         });
         double total = 0.0;
         for (const double w : weights) total += w;
-        if (!(total > 0.0) || !(total < std::numeric_limits<double>::infinity()))
-            detail::throw_invalid("Bidirectional: the scene's lights emit no finite power (", total, ")");
+        if (!(total < std::numeric_limits<double>::infinity()))
+            detail::throw_invalid("Bidirectional: the scene's lights' power is not finite (", total, ")");
+        // (Lights that all emit nothing send no light paths: every probability 0.)
         double sum = 0.0;
         for (const double w : weights) {
-            light_probability_.push_back(T(w / total));
-            sum += w / total;
+            light_probability_.push_back(total > 0.0 ? T(w / total) : T(0));
+            sum += total > 0.0 ? w / total : 0.0;
             light_cdf_.push_back(T(sum));
         }
     }

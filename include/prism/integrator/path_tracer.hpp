@@ -114,7 +114,9 @@ public:
         Rgb<T> sum{T(0)};
         const LightSampling sampling{&rng, config_.area_light_grid};
         random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth, .roulette_depth = config_.roulette_depth},
-                    [&]<class M>(const M& material, const WalkVertex<T>& at) {
+                    WalkHooks{
+                    // At a diffuse or glossy surface: every light's samples there.
+                    .on_surface = [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         const Crossing<T>& c = at.crossing();
                         const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
                         // Each light sample: an area light's shares its path with the bounce
@@ -149,7 +151,8 @@ public:
                         else sum += at.power * lobe.brdf() * gathered;
                         return go_on;
                     },
-                    [&](const WalkEscape<T>& out) {
+                    // Leaving the scene: the background, or an environment light's light.
+                    .on_escape = [&](const WalkEscape<T>& out) {
                         if (out.specular_only()) {
                             sum += out.power * scene_->escaped(out.ray.direction);
                             return;
@@ -163,14 +166,17 @@ public:
                             }
                         });
                     },
-                    [&]<class M>(const M& material, const WalkVertex<T>& at) {
+                    // Meeting an area light: its light, shared with the light samples that find it.
+                    .on_emitter = [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         if constexpr (SceneT::has_emitters) {
                             if (at.specular_only()) sum += at.power * emitted(material, at.crossing());
                             else sum += at.power * emitted(material, at.crossing()) *
                                         met_light_weight(at.last_pdf, at.first_specular, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
                         }
                     },
-                    Overload{
+                    // Scattering in a medium, and entering a stretch of one: the light samples
+                    // there, and a point or spot light's equiangular samples along it.
+                    .on_medium = Overload{
                         [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
                             // In a medium: each light's samples weighed by the phase function
                             // toward them (the bounce's density there, for MIS), no cosine;
@@ -212,7 +218,7 @@ public:
                                 });
                             }
                             return true;
-                        }},
+                        }}},
                     scene_->media_at(ray.origin));
         return sum;
     }

@@ -544,8 +544,8 @@ private:
                 found.second = std::min(found.second, at.travelled);
                 return false;
             };
-            if (media.empty()) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse, IgnoreEscape{}, IgnoreEmitters{}, at_medium, media);
+            if (media.empty()) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, WalkHooks{.on_surface = at_diffuse, .on_medium = at_medium});
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, WalkHooks{.on_surface = at_diffuse, .on_medium = at_medium}, media);
             return found;
         });
     }
@@ -593,8 +593,8 @@ private:
             const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
             if (!s || s->delta) continue;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, s->wi);
-            if (media.empty()) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex, IgnoreEscape{}, IgnoreEmitters{}, at_medium, media);
+            if (media.empty()) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, WalkHooks{.on_surface = at_vertex, .on_medium = at_medium});
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, WalkHooks{.on_surface = at_vertex, .on_medium = at_medium}, media);
         }
         return sum / T(config_.gather_rays);
     }

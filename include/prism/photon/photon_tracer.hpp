@@ -218,14 +218,11 @@ private:
         if (e->aimed && aimed_at_earlier_target(emitters, *e, photon.ray)) return;
         // A light without falloff: the power a photon stores grows with its path squared.
         const bool without_falloff = photon.without_falloff;
-        random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, WalkLimits{.max_bounces = config_.max_bounces, .max_medium_bounces = config_.max_medium_bounces},
-                    [&]<class M>(const M& material, const WalkVertex<T>& at) {
-                        return visit(material, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
-                    },
-                    IgnoreEscape{}, IgnoreEmitters{},
-                    [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
-                        return visit_medium(medium, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
-                    });
+        const auto stored = [&](const auto& at) { return without_falloff ? at.power * (at.travelled * at.travelled) : at.power; };
+        random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng,
+                    WalkLimits{.max_bounces = config_.max_bounces, .max_medium_bounces = config_.max_medium_bounces},
+                    WalkHooks{.on_surface = [&]<class M>(const M& material, const WalkVertex<T>& at) { return visit(material, at, stored(at)); },
+                              .on_medium = [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) { return visit_medium(medium, at, stored(at)); }});
     }
 
     /// Store photon i: in the caustic pass only L S+ D, going on past it only by delta lobes.

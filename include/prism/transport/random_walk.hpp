@@ -3,7 +3,7 @@
 // light tracer and the path tracer (a camera path carries importance by the same rules).
 //
 // From a ray carrying `power`, hit by hit: the medium the path crossed attenuates it;
-// at a diffuse or glossy surface the caller's `on_diffuse` sees the vertex (and may stop the walk);
+// at a diffuse or glossy surface the caller's `on_surface` sees the vertex (and may stop the walk);
 // false interfaces (inside a medium of higher priority) and index-matched ones
 // (may_match_index) are passed; a white path meeting
 // a dispersive interface takes one wavelength band at random; then scatter_photon picks
@@ -151,6 +151,27 @@ struct IgnoreEmitters {
     }
 };
 
+/// What a walk calls where things happen to it, by name (each but on_surface may be left
+/// out): `WalkHooks{.on_surface = ..., .on_escape = ...}`.
+///   on_surface(material, WalkVertex)   at every surface with a non-delta lobe (diffuse, or
+///                                      glossy and not a mirror: scatters_smoothly), before the
+///                                      walk scatters there; returns the lobes it may scatter by
+///                                      (Lobes; or true for all, false to end the walk)
+///   on_escape(WalkEscape)              where the path leaves the scene
+///   on_emitter(material, WalkVertex)   where it meets a surface that emits (an area light;
+///                                      it scatters there only by the lobes the material also has)
+///   on_medium(medium, WalkMediumVertex) where it scatters in a medium; returns whether the walk
+///                                      goes on. A caller whose on_medium also takes
+///                                      (medium, WalkMediumStretch) is shown each stretch of a
+///                                      medium that scatters before the flight there is drawn.
+template <class OnSurface, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters, class OnMedium = IgnoreMedia>
+struct WalkHooks {
+    OnSurface on_surface;   ///< at a surface with a non-delta lobe
+    OnEscape on_escape{};   ///< where the path leaves the scene
+    OnEmitter on_emitter{}; ///< where the path meets an emitting surface
+    OnMedium on_medium{};   ///< where the path scatters in a medium
+};
+
 /// How far a walk may go.
 struct WalkLimits {
     int max_bounces = 256; ///< surfaces past the first the walk may scatter at (it meets at most max_bounces + 1)
@@ -164,24 +185,15 @@ struct WalkLimits {
 };
 
 /// Walk from `ray` carrying `power` through at most limits.max_bounces + 1 surfaces and
-/// limits.max_medium_bounces + 1 scatterings in media.
-/// on_diffuse(material, WalkVertex) is called at every surface with a non-delta lobe
-/// (diffuse, or glossy and not a mirror: scatters_smoothly) and returns the
-/// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
-/// there); on_escape(WalkEscape) when the path leaves the scene; on_emitter(material,
-/// WalkVertex) where it meets a surface that emits (an area light; the walk scatters there
-/// only by the lobes the material also has). `Mode`: whether the path is a photon's or a
-/// camera's (scatter_photon); a camera path is ended by path_roulette after
-/// limits.roulette_depth surfaces. on_medium(medium, WalkMediumVertex) is called where the
-/// path scatters in a medium (a scene or air with none never compiles it) and returns
-/// whether the walk goes on; such vertices count toward their own limit, and toward
-/// roulette_depth with the surfaces.
-/// `start`: the transmissive objects the ray starts inside (a camera's: Scene::media_at).
-template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters,
-          class OnMedium = IgnoreMedia>
+/// limits.max_medium_bounces + 1 scatterings in media, calling `hooks` (WalkHooks) where
+/// things happen. `Mode`: whether the path is a photon's or a camera's (scatter_photon); a
+/// camera path is ended by path_roulette after limits.roulette_depth surfaces. Scatterings
+/// in media count toward their own limit, and toward roulette_depth with the surfaces (a
+/// scene or air with no medium never compiles them). `start`: the transmissive objects the
+/// ray starts inside (a camera's: Scene::media_at).
+template <Transport Mode = Transport::importance, class SceneT, class Air, class Hooks>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
-                 Rgb<typename SceneT::scalar_type> power, Random& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
-                 OnEmitter&& on_emitter = {}, OnMedium&& on_medium = {}, MediumStack start = {})
+                 Rgb<typename SceneT::scalar_type> power, Random& rng, WalkLimits limits, const Hooks& hooks, MediumStack start = {})
 {
     using T = typename SceneT::scalar_type;
     bool direct = true, first_specular = false;
@@ -210,8 +222,8 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 return first_hit_through_media(scene, air, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
                     const Ray<T> stretch{piece.at(t0), piece.direction};
                     const Rgb<T> entering = power;
-                    if constexpr (std::is_invocable_v<OnMedium&, const Md&, const WalkMediumStretch<T>&>)
-                        on_medium(medium, WalkMediumStretch<T>{stretch, t1 - t0, power, diffuse_bounces, media, rng});
+                    if constexpr (std::is_invocable_v<decltype(hooks.on_medium)&, const Md&, const WalkMediumStretch<T>&>)
+                        hooks.on_medium(medium, WalkMediumStretch<T>{.ray = stretch, .length = t1 - t0, .power = power, .diffuse_bounces = diffuse_bounces, .media = media, .rng = rng});
                     const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
                     power *= flight.weight;
                     if (!flight.scattered) return true;
@@ -221,8 +233,23 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                     travelled += before + s;
                     const bool last = medium_bounces == limits.max_medium_bounces;
                     in_medium = InMedium::absorbed;
-                    if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last,
-                                                              rng, surface_bounces, stretch, t1 - t0, entering}))
+                    if (!hooks.on_medium(medium, WalkMediumVertex<T>{.point = p,
+                                                                     .direction = d,
+                                                                     .power = power,
+                                                                     .direct = direct,
+                                                                     .diffuse_bounces = diffuse_bounces,
+                                                                     .first_specular = first_specular,
+                                                                     .travelled = travelled,
+                                                                     .wavelength = wavelength,
+                                                                     .media = media,
+                                                                     .last_point = last_point,
+                                                                     .last_pdf = last_pdf,
+                                                                     .last = last,
+                                                                     .rng = rng,
+                                                                     .surface_bounces = surface_bounces,
+                                                                     .stretch = stretch,
+                                                                     .stretch_length = t1 - t0,
+                                                                     .entering = entering}))
                         return false;
                     if constexpr (Mode == Transport::importance) {
                         // A photon keeps its power: it goes on with the chance of the draw's
@@ -255,7 +282,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             }
         }
         if (!hit) {
-            on_escape(WalkEscape<T>{segment, power, diffuse_bounces, first_specular, last_pdf});
+            hooks.on_escape(WalkEscape<T>{.ray = segment, .power = power, .diffuse_bounces = diffuse_bounces, .first_specular = first_specular, .last_pdf = last_pdf});
             return;
         }
         const Crossing<T>& c = hit->crossing;
@@ -266,8 +293,25 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             // What the medium it travelled in let through, before anything else.
             attenuate_segment(scene, media, material, c, segment, power);
             const bool last = bounce - medium_bounces == limits.max_bounces;
-            if constexpr (emits<M>)
-                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, T(1), surface_bounces});
+            // The walk at this surface, as the hooks see it (outside_index: 1 until known).
+            const auto vertex = [&](T outside_index) {
+                return WalkVertex<T>{.hit = *hit,
+                                     .direction = d,
+                                     .power = power,
+                                     .direct = direct,
+                                     .diffuse_bounces = diffuse_bounces,
+                                     .first_specular = first_specular,
+                                     .travelled = travelled,
+                                     .wavelength = wavelength,
+                                     .media = media,
+                                     .last_point = last_point,
+                                     .last_pdf = last_pdf,
+                                     .last = last,
+                                     .rng = rng,
+                                     .outside_index = outside_index,
+                                     .surface_bounces = surface_bounces};
+            };
+            if constexpr (emits<M>) hooks.on_emitter(material, vertex(T(1)));
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
                 return Next::absorbed; // a lamp that only emits
             } else {
@@ -301,8 +345,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             Lobes lobes = Lobes::all;
             // (A glossy lobe that is a mirror has no vertex of its own.)
             if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
-                const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
-                                                                      last_point, last_pdf, last, rng, outside_index, surface_bounces});
+                const auto go_on = hooks.on_surface(material, vertex(outside_index));
                 if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
                 else lobes = go_on;
                 if (lobes == Lobes::none) return Next::absorbed;
