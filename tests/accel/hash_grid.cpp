@@ -41,15 +41,22 @@ TEST_CASE("a hash grid finds every point within its radius exactly once, as brut
     }
 }
 
-TEST_CASE("a hash grid refuses a bad radius and points that are not finite, and an empty grid finds nothing")
+TEST_CASE("a hash grid refuses a bad radius and points that are not finite, takes points spread to the horizon, and an empty grid finds nothing")
 {
     const std::vector<Vec3<float>> points{{0, 0, 0}, {1, std::numeric_limits<float>::quiet_NaN(), 0}};
     CHECK_THROWS_WITH_AS(HashGrid<float>(points, 0.1f), doctest::Contains("point 1 is not finite"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(HashGrid<float>(std::span(points.data(), 1), 0.0f), doctest::Contains("radius must be finite and > 0, got 0"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(HashGrid<float>(std::span(points.data(), 1), std::numeric_limits<float>::infinity()), doctest::Contains("radius must be finite"),
                          std::invalid_argument);
-    const std::vector<Vec3<float>> far{{0, 0, 0}, {1e30f, 0, 0}};
-    CHECK_THROWS_WITH_AS(HashGrid<float>(far, 1e-3f), doctest::Contains("more than 2^30"), std::invalid_argument);
+    // Points spread over more cubes than 64 bits count (a floor to the horizon): far ones
+    // share cubes, and each is still found where it is.
+    const std::vector<Vec3<float>> far{{0, 0, 0}, {1e30f, 0, 0}, {1e30f, 1e-4f, 0}, {-3e38f, 0, 0}};
+    const HashGrid<float> spread(far, 1e-3f);
+    for (std::size_t i = 0; i < far.size(); ++i) {
+        int found = 0;
+        spread.within(far[i], [&](std::uint32_t k, float) { found += 1 + int(k == i) * 100; });
+        CHECK(found == (i == 1 || i == 2 ? 102 : 101));
+    }
     int visited = 0;
     HashGrid<float>().within({0, 0, 0}, [&](std::uint32_t, float) { ++visited; });
     const HashGrid<float> one(std::span(points.data(), 1), 0.5f);

@@ -34,23 +34,20 @@ public:
 
     /// The grid over `points` (copied in bucket order) for queries of `radius`; throws
     /// std::invalid_argument for a radius that is not finite and positive, more than 2^32 - 2
-    /// points, or a point that is not finite (naming its index).
+    /// points, or a point that is not finite (naming its index). Points may spread over any
+    /// number of cubes (a floor to the horizon): far ones share cubes.
     HashGrid(std::span<const Vec3<T>> points, T radius) : radius_(radius)
     {
         if (!(radius > T(0) && radius < infinity<T>)) detail::throw_invalid("HashGrid radius must be finite and > 0, got ", radius);
         if (points.size() >= std::numeric_limits<std::uint32_t>::max()) detail::throw_invalid("HashGrid holds at most 2^32 - 2 points, got ", points.size());
         if (points.empty()) return;
-        Vec3<T> low = points[0], high = points[0];
+        Vec3<T> low = points[0];
         for (std::size_t i = 0; i < points.size(); ++i) {
             if (!is_finite(points[i])) detail::throw_invalid("HashGrid point ", i, " is not finite");
             low = component_min(low, points[i]);
-            high = component_max(high, points[i]);
         }
         low_ = low;
         inverse_cell_ = T(1) / (T(2) * radius);
-        // Cells counted from the lowest point: the coordinates of the farthest must fit.
-        const Vec3<T> extent = (high - low) * inverse_cell_;
-        if (!(max_component(extent) < T(1 << 30))) detail::throw_invalid("HashGrid: the points span ", max_component(extent), " cells of the radius ", radius, ", more than 2^30");
         std::size_t buckets = 1;
         while (buckets < points.size()) buckets *= 2;
         mask_ = std::uint32_t(buckets - 1);
@@ -83,13 +80,7 @@ public:
         if (points_.empty() || !is_finite(q)) return;
         // The cube holding q and its neighbours toward q's nearer faces: the ball of
         // radius r about q lies in the 2 x 2 x 2 cubes from floor((q - r) / 2r).
-        const Vec3<T> from = (q - low_) * inverse_cell_ - Vec3<T>(T(0.5));
-        std::array<std::int64_t, 3> base{};
-        for (int a = 0; a < 3; ++a) {
-            const T f = std::floor(from[a]);
-            if (!(f > T(-2) * T(1 << 30) && f < T(2) * T(1 << 30))) return; // far from every point
-            base[std::size_t(a)] = std::int64_t(f);
-        }
+        const std::array<std::int64_t, 3> base = cell_of(q - Vec3<T>(radius_));
         std::array<std::uint32_t, 8> seen{};
         int count = 0;
         const T r2 = radius_ * radius_;
@@ -111,10 +102,15 @@ public:
     }
 
 private:
+    /// The cube holding p, its coordinates counted from the lowest point's and held to
+    /// +-2^62: cubes that far out share one, which only costs distance tests (every point
+    /// found is tested), and no conversion overflows.
     [[nodiscard]] std::array<std::int64_t, 3> cell_of(const Vec3<T>& p) const noexcept
     {
         const Vec3<T> c = (p - low_) * inverse_cell_;
-        return {std::int64_t(std::floor(c.x)), std::int64_t(std::floor(c.y)), std::int64_t(std::floor(c.z))};
+        std::array<std::int64_t, 3> cell{};
+        for (int a = 0; a < 3; ++a) cell[std::size_t(a)] = std::int64_t(clamp(std::floor(c[a]), T(-4.6e18), T(4.6e18)));
+        return cell;
     }
 
     /// A cell's bucket (Teschner et al. 2003's hash of its coordinates).
