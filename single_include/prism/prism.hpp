@@ -6968,23 +6968,20 @@ public:
 
     /// The grid over `points` (copied in bucket order) for queries of `radius`; throws
     /// std::invalid_argument for a radius that is not finite and positive, more than 2^32 - 2
-    /// points, or a point that is not finite (naming its index).
+    /// points, or a point that is not finite (naming its index). Points may spread over any
+    /// number of cubes (a floor to the horizon): far ones share cubes.
     HashGrid(std::span<const Vec3<T>> points, T radius) : radius_(radius)
     {
         if (!(radius > T(0) && radius < infinity<T>)) detail::throw_invalid("HashGrid radius must be finite and > 0, got ", radius);
         if (points.size() >= std::numeric_limits<std::uint32_t>::max()) detail::throw_invalid("HashGrid holds at most 2^32 - 2 points, got ", points.size());
         if (points.empty()) return;
-        Vec3<T> low = points[0], high = points[0];
+        Vec3<T> low = points[0];
         for (std::size_t i = 0; i < points.size(); ++i) {
             if (!is_finite(points[i])) detail::throw_invalid("HashGrid point ", i, " is not finite");
             low = component_min(low, points[i]);
-            high = component_max(high, points[i]);
         }
         low_ = low;
         inverse_cell_ = T(1) / (T(2) * radius);
-        // Cells counted from the lowest point: the coordinates of the farthest must fit.
-        const Vec3<T> extent = (high - low) * inverse_cell_;
-        if (!(max_component(extent) < T(1 << 30))) detail::throw_invalid("HashGrid: the points span ", max_component(extent), " cells of the radius ", radius, ", more than 2^30");
         std::size_t buckets = 1;
         while (buckets < points.size()) buckets *= 2;
         mask_ = std::uint32_t(buckets - 1);
@@ -7017,13 +7014,7 @@ public:
         if (points_.empty() || !is_finite(q)) return;
         // The cube holding q and its neighbours toward q's nearer faces: the ball of
         // radius r about q lies in the 2 x 2 x 2 cubes from floor((q - r) / 2r).
-        const Vec3<T> from = (q - low_) * inverse_cell_ - Vec3<T>(T(0.5));
-        std::array<std::int64_t, 3> base{};
-        for (int a = 0; a < 3; ++a) {
-            const T f = std::floor(from[a]);
-            if (!(f > T(-2) * T(1 << 30) && f < T(2) * T(1 << 30))) return; // far from every point
-            base[std::size_t(a)] = std::int64_t(f);
-        }
+        const std::array<std::int64_t, 3> base = cell_of(q - Vec3<T>(radius_));
         std::array<std::uint32_t, 8> seen{};
         int count = 0;
         const T r2 = radius_ * radius_;
@@ -7045,10 +7036,15 @@ public:
     }
 
 private:
+    /// The cube holding p, its coordinates counted from the lowest point's and held to
+    /// +-2^62: cubes that far out share one, which only costs distance tests (every point
+    /// found is tested), and no conversion overflows.
     [[nodiscard]] std::array<std::int64_t, 3> cell_of(const Vec3<T>& p) const noexcept
     {
         const Vec3<T> c = (p - low_) * inverse_cell_;
-        return {std::int64_t(std::floor(c.x)), std::int64_t(std::floor(c.y)), std::int64_t(std::floor(c.z))};
+        std::array<std::int64_t, 3> cell{};
+        for (int a = 0; a < 3; ++a) cell[std::size_t(a)] = std::int64_t(clamp(std::floor(c[a]), T(-4.6e18), T(4.6e18)));
+        return cell;
     }
 
     /// A cell's bucket (Teschner et al. 2003's hash of its coordinates).
@@ -13505,12 +13501,13 @@ public:
         });
         double total = 0.0;
         for (const double w : weights) total += w;
-        if (!(total > 0.0) || !(total < std::numeric_limits<double>::infinity()))
-            detail::throw_invalid("Bidirectional: the scene's lights emit no finite power (", total, ")");
+        if (!(total < std::numeric_limits<double>::infinity()))
+            detail::throw_invalid("Bidirectional: the scene's lights' power is not finite (", total, ")");
+        // (Lights that all emit nothing send no light paths: every probability 0.)
         double sum = 0.0;
         for (const double w : weights) {
-            light_probability_.push_back(T(w / total));
-            sum += w / total;
+            light_probability_.push_back(total > 0.0 ? T(w / total) : T(0));
+            sum += total > 0.0 ? w / total : 0.0;
             light_cdf_.push_back(T(sum));
         }
     }
@@ -14638,7 +14635,7 @@ static_assert(PhaseFunction<HenyeyGreenstein<float>> && PhaseFunction<HenyeyGree
 // light tracer and the path tracer (a camera path carries importance by the same rules).
 //
 // From a ray carrying `power`, hit by hit: the medium the path crossed attenuates it;
-// at a diffuse or glossy surface the caller's `on_diffuse` sees the vertex (and may stop the walk);
+// at a diffuse or glossy surface the caller's `on_surface` sees the vertex (and may stop the walk);
 // false interfaces (inside a medium of higher priority) and index-matched ones
 // (may_match_index) are passed; a white path meeting
 // a dispersive interface takes one wavelength band at random; then scatter_photon picks
@@ -14772,6 +14769,27 @@ struct IgnoreEmitters {
     }
 };
 
+/// What a walk calls where things happen to it, by name (each but on_surface may be left
+/// out): `WalkHooks{.on_surface = ..., .on_escape = ...}`.
+///   on_surface(material, WalkVertex)   at every surface with a non-delta lobe (diffuse, or
+///                                      glossy and not a mirror: scatters_smoothly), before the
+///                                      walk scatters there; returns the lobes it may scatter by
+///                                      (Lobes; or true for all, false to end the walk)
+///   on_escape(WalkEscape)              where the path leaves the scene
+///   on_emitter(material, WalkVertex)   where it meets a surface that emits (an area light;
+///                                      it scatters there only by the lobes the material also has)
+///   on_medium(medium, WalkMediumVertex) where it scatters in a medium; returns whether the walk
+///                                      goes on. A caller whose on_medium also takes
+///                                      (medium, WalkMediumStretch) is shown each stretch of a
+///                                      medium that scatters before the flight there is drawn.
+template <class OnSurface, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters, class OnMedium = IgnoreMedia>
+struct WalkHooks {
+    OnSurface on_surface;   ///< at a surface with a non-delta lobe
+    OnEscape on_escape{};   ///< where the path leaves the scene
+    OnEmitter on_emitter{}; ///< where the path meets an emitting surface
+    OnMedium on_medium{};   ///< where the path scatters in a medium
+};
+
 /// How far a walk may go.
 struct WalkLimits {
     int max_bounces = 256; ///< surfaces past the first the walk may scatter at (it meets at most max_bounces + 1)
@@ -14785,24 +14803,15 @@ struct WalkLimits {
 };
 
 /// Walk from `ray` carrying `power` through at most limits.max_bounces + 1 surfaces and
-/// limits.max_medium_bounces + 1 scatterings in media.
-/// on_diffuse(material, WalkVertex) is called at every surface with a non-delta lobe
-/// (diffuse, or glossy and not a mirror: scatters_smoothly) and returns the
-/// lobes the walk may scatter by there (Lobes; or true for all, false to end the walk
-/// there); on_escape(WalkEscape) when the path leaves the scene; on_emitter(material,
-/// WalkVertex) where it meets a surface that emits (an area light; the walk scatters there
-/// only by the lobes the material also has). `Mode`: whether the path is a photon's or a
-/// camera's (scatter_photon); a camera path is ended by path_roulette after
-/// limits.roulette_depth surfaces. on_medium(medium, WalkMediumVertex) is called where the
-/// path scatters in a medium (a scene or air with none never compiles it) and returns
-/// whether the walk goes on; such vertices count toward their own limit, and toward
-/// roulette_depth with the surfaces.
-/// `start`: the transmissive objects the ray starts inside (a camera's: Scene::media_at).
-template <Transport Mode = Transport::importance, class SceneT, class Air, class OnDiffuse, class OnEscape = IgnoreEscape, class OnEmitter = IgnoreEmitters,
-          class OnMedium = IgnoreMedia>
+/// limits.max_medium_bounces + 1 scatterings in media, calling `hooks` (WalkHooks) where
+/// things happen. `Mode`: whether the path is a photon's or a camera's (scatter_photon); a
+/// camera path is ended by path_roulette after limits.roulette_depth surfaces. Scatterings
+/// in media count toward their own limit, and toward roulette_depth with the surfaces (a
+/// scene or air with no medium never compiles them). `start`: the transmissive objects the
+/// ray starts inside (a camera's: Scene::media_at).
+template <Transport Mode = Transport::importance, class SceneT, class Air, class Hooks>
 void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typename SceneT::scalar_type>& bands, Ray<typename SceneT::scalar_type> ray,
-                 Rgb<typename SceneT::scalar_type> power, Random& rng, WalkLimits limits, OnDiffuse&& on_diffuse, OnEscape&& on_escape = {},
-                 OnEmitter&& on_emitter = {}, OnMedium&& on_medium = {}, MediumStack start = {})
+                 Rgb<typename SceneT::scalar_type> power, Random& rng, WalkLimits limits, const Hooks& hooks, MediumStack start = {})
 {
     using T = typename SceneT::scalar_type;
     bool direct = true, first_specular = false;
@@ -14831,8 +14840,8 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                 return first_hit_through_media(scene, air, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
                     const Ray<T> stretch{piece.at(t0), piece.direction};
                     const Rgb<T> entering = power;
-                    if constexpr (std::is_invocable_v<OnMedium&, const Md&, const WalkMediumStretch<T>&>)
-                        on_medium(medium, WalkMediumStretch<T>{stretch, t1 - t0, power, diffuse_bounces, media, rng});
+                    if constexpr (std::is_invocable_v<decltype(hooks.on_medium)&, const Md&, const WalkMediumStretch<T>&>)
+                        hooks.on_medium(medium, WalkMediumStretch<T>{.ray = stretch, .length = t1 - t0, .power = power, .diffuse_bounces = diffuse_bounces, .media = media, .rng = rng});
                     const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
                     power *= flight.weight;
                     if (!flight.scattered) return true;
@@ -14842,8 +14851,23 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                     travelled += before + s;
                     const bool last = medium_bounces == limits.max_medium_bounces;
                     in_medium = InMedium::absorbed;
-                    if (!on_medium(medium, WalkMediumVertex<T>{p, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last,
-                                                              rng, surface_bounces, stretch, t1 - t0, entering}))
+                    if (!hooks.on_medium(medium, WalkMediumVertex<T>{.point = p,
+                                                                     .direction = d,
+                                                                     .power = power,
+                                                                     .direct = direct,
+                                                                     .diffuse_bounces = diffuse_bounces,
+                                                                     .first_specular = first_specular,
+                                                                     .travelled = travelled,
+                                                                     .wavelength = wavelength,
+                                                                     .media = media,
+                                                                     .last_point = last_point,
+                                                                     .last_pdf = last_pdf,
+                                                                     .last = last,
+                                                                     .rng = rng,
+                                                                     .surface_bounces = surface_bounces,
+                                                                     .stretch = stretch,
+                                                                     .stretch_length = t1 - t0,
+                                                                     .entering = entering}))
                         return false;
                     if constexpr (Mode == Transport::importance) {
                         // A photon keeps its power: it goes on with the chance of the draw's
@@ -14876,7 +14900,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             }
         }
         if (!hit) {
-            on_escape(WalkEscape<T>{segment, power, diffuse_bounces, first_specular, last_pdf});
+            hooks.on_escape(WalkEscape<T>{.ray = segment, .power = power, .diffuse_bounces = diffuse_bounces, .first_specular = first_specular, .last_pdf = last_pdf});
             return;
         }
         const Crossing<T>& c = hit->crossing;
@@ -14887,8 +14911,25 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             // What the medium it travelled in let through, before anything else.
             attenuate_segment(scene, media, material, c, segment, power);
             const bool last = bounce - medium_bounces == limits.max_bounces;
-            if constexpr (emits<M>)
-                on_emitter(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media, last_point, last_pdf, last, rng, T(1), surface_bounces});
+            // The walk at this surface, as the hooks see it (outside_index: 1 until known).
+            const auto vertex = [&](T outside_index) {
+                return WalkVertex<T>{.hit = *hit,
+                                     .direction = d,
+                                     .power = power,
+                                     .direct = direct,
+                                     .diffuse_bounces = diffuse_bounces,
+                                     .first_specular = first_specular,
+                                     .travelled = travelled,
+                                     .wavelength = wavelength,
+                                     .media = media,
+                                     .last_point = last_point,
+                                     .last_pdf = last_pdf,
+                                     .last = last,
+                                     .rng = rng,
+                                     .outside_index = outside_index,
+                                     .surface_bounces = surface_bounces};
+            };
+            if constexpr (emits<M>) hooks.on_emitter(material, vertex(T(1)));
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
                 return Next::absorbed; // a lamp that only emits
             } else {
@@ -14922,8 +14963,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             Lobes lobes = Lobes::all;
             // (A glossy lobe that is a mirror has no vertex of its own.)
             if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
-                const auto go_on = on_diffuse(material, WalkVertex<T>{*hit, d, power, direct, diffuse_bounces, first_specular, travelled, wavelength, media,
-                                                                      last_point, last_pdf, last, rng, outside_index, surface_bounces});
+                const auto go_on = hooks.on_surface(material, vertex(outside_index));
                 if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
                 else lobes = go_on;
                 if (lobes == Lobes::none) return Next::absorbed;
@@ -15167,14 +15207,11 @@ private:
         if (e->aimed && aimed_at_earlier_target(emitters, *e, photon.ray)) return;
         // A light without falloff: the power a photon stores grows with its path squared.
         const bool without_falloff = photon.without_falloff;
-        random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng, WalkLimits{.max_bounces = config_.max_bounces, .max_medium_bounces = config_.max_medium_bounces},
-                    [&]<class M>(const M& material, const WalkVertex<T>& at) {
-                        return visit(material, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
-                    },
-                    IgnoreEscape{}, IgnoreEmitters{},
-                    [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
-                        return visit_medium(medium, at, without_falloff ? at.power * (at.travelled * at.travelled) : at.power);
-                    });
+        const auto stored = [&](const auto& at) { return without_falloff ? at.power * (at.travelled * at.travelled) : at.power; };
+        random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng,
+                    WalkLimits{.max_bounces = config_.max_bounces, .max_medium_bounces = config_.max_medium_bounces},
+                    WalkHooks{.on_surface = [&]<class M>(const M& material, const WalkVertex<T>& at) { return visit(material, at, stored(at)); },
+                              .on_medium = [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) { return visit_medium(medium, at, stored(at)); }});
     }
 
     /// Store photon i: in the caustic pass only L S+ D, going on past it only by delta lobes.
@@ -15791,7 +15828,9 @@ public:
         Rgb<T> sum{T(0)};
         const LightSampling sampling{&rng, config_.area_light_grid};
         random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth, .roulette_depth = config_.roulette_depth},
-                    [&]<class M>(const M& material, const WalkVertex<T>& at) {
+                    WalkHooks{
+                    // At a diffuse or glossy surface: every light's samples there.
+                    .on_surface = [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         const Crossing<T>& c = at.crossing();
                         const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
                         // Each light sample: an area light's shares its path with the bounce
@@ -15826,7 +15865,8 @@ public:
                         else sum += at.power * lobe.brdf() * gathered;
                         return go_on;
                     },
-                    [&](const WalkEscape<T>& out) {
+                    // Leaving the scene: the background, or an environment light's light.
+                    .on_escape = [&](const WalkEscape<T>& out) {
                         if (out.specular_only()) {
                             sum += out.power * scene_->escaped(out.ray.direction);
                             return;
@@ -15840,14 +15880,17 @@ public:
                             }
                         });
                     },
-                    [&]<class M>(const M& material, const WalkVertex<T>& at) {
+                    // Meeting an area light: its light, shared with the light samples that find it.
+                    .on_emitter = [&]<class M>(const M& material, const WalkVertex<T>& at) {
                         if constexpr (SceneT::has_emitters) {
                             if (at.specular_only()) sum += at.power * emitted(material, at.crossing());
                             else sum += at.power * emitted(material, at.crossing()) *
                                         met_light_weight(at.last_pdf, at.first_specular, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
                         }
                     },
-                    Overload{
+                    // Scattering in a medium, and entering a stretch of one: the light samples
+                    // there, and a point or spot light's equiangular samples along it.
+                    .on_medium = Overload{
                         [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
                             // In a medium: each light's samples weighed by the phase function
                             // toward them (the bounce's density there, for MIS), no cosine;
@@ -15889,7 +15932,7 @@ public:
                                 });
                             }
                             return true;
-                        }},
+                        }}},
                     scene_->media_at(ray.origin));
         return sum;
     }
@@ -16540,8 +16583,8 @@ private:
                 found.second = std::min(found.second, at.travelled);
                 return false;
             };
-            if (media.empty()) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, at_diffuse, IgnoreEscape{}, IgnoreEmitters{}, at_medium, media);
+            if (media.empty()) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, WalkHooks{.on_surface = at_diffuse, .on_medium = at_medium});
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, WalkHooks{.on_surface = at_diffuse, .on_medium = at_medium}, media);
             return found;
         });
     }
@@ -16589,8 +16632,8 @@ private:
             const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
             if (!s || s->delta) continue;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, s->wi);
-            if (media.empty()) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex, IgnoreEscape{}, IgnoreEmitters{}, at_medium);
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, at_vertex, IgnoreEscape{}, IgnoreEmitters{}, at_medium, media);
+            if (media.empty()) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, WalkHooks{.on_surface = at_vertex, .on_medium = at_medium});
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, WalkHooks{.on_surface = at_vertex, .on_medium = at_medium}, media);
         }
         return sum / T(config_.gather_rays);
     }
