@@ -64,7 +64,7 @@ TEST_CASE("every BDPT strategy alone reads the area-lit furnace's direct light (
     // light carried by paths of k segments: (0, 3) the camera path meets the lamp, (1, 2) a
     // light sample, (2, 1) light tracing. Their MIS-weighted sum is the same light.
     const auto scene = lamp_furnace();
-    const RenderConfig config{.width = 16, .height = 16, .spp = int(test::samples(96)), .seed = 3, .progress = false};
+    const RenderConfig config{.width = 16, .height = 16, .spp = int(test::samples(64)), .seed = 3, .progress = false};
     const BidirectionalConfig base{.method = BidirectionalMethod::bdpt, .max_length = 2, .light_paths = 4096};
     // Tolerances of about 4 standard errors, measured over 8 seeds: 0.3 % for (0, 3), 0.9 %
     // for light tracing (2, 1), whose light paths reach the wall the camera sees rarely; the
