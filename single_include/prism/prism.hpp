@@ -13763,13 +13763,20 @@ private:
         for (unsigned k = 0; k < workers; ++k) buffers.emplace_back(config.width, config.height, window);
         const std::uint64_t seed = detail::sample_seed(config.seed ^ 0x9e3779b97f4a7c15ULL, pass);
         const bool per_pixel = paired_with_pixels(config, count);
+        // Under Sobol's points the light paths are laid over the image in ZSobol's order
+        // whatever the camera's layout: a pass's light paths are then strided points of one
+        // sequence, stratified as a set, which the splats and merges of every pixel share
+        // (BDPT's RMSE on the point-lit box at 16 passes 0.021, against 0.040 with each
+        // pixel's own sequence and 0.045 with independent numbers).
+        RenderConfig layout = config;
+        if (layout.sampler == SamplerKind::sobol) layout.sampler = SamplerKind::zsobol;
         detail::parallel_blocks(blocks, config.threads, [&](std::size_t b, unsigned worker) {
             for (std::size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
                 const std::size_t before = lists[b].size();
-                // One light path a pixel: sample `pass` of its pixel's sampler, in blocks of
-                // dimensions its camera path never reads, and a PCG stream of its own; else
-                // an independent stream.
-                Random rng = per_pixel ? Random(Sampler(config.sampler, detail::pixel_key(config, std::uint32_t(i % std::size_t(config.width)),
+                // One light path a pixel: sample `pass` of its pixel's place in the layout, in
+                // blocks of dimensions its camera path never reads, and a PCG stream of its
+                // own; else an independent stream.
+                Random rng = per_pixel ? Random(Sampler(layout.sampler, detail::pixel_key(layout, std::uint32_t(i % std::size_t(config.width)),
                                                                                              std::uint32_t(i / std::size_t(config.width))),
                                                         std::uint32_t(pass)),
                                                 Pcg32(seed, std::uint64_t(i)))
