@@ -9,6 +9,7 @@
 #include <prism/accel/bvh.hpp>
 #include <prism/accel/bvh_build.hpp>
 #include <prism/accel/bvh_node.hpp>
+#include <prism/accel/hash_grid.hpp>
 #include <prism/accel/kd_tree.hpp>
 #include <prism/core/aabb.hpp>
 #include <prism/core/check.hpp>
@@ -112,5 +113,6 @@
 #include <prism/transport/direct.hpp>
 #include <prism/transport/first_surface.hpp>
 #include <prism/transport/media.hpp>
+#include <prism/transport/path_vertex.hpp>
 #include <prism/transport/random_walk.hpp>
 #include <prism/transport/travel.hpp>
