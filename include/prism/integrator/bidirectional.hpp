@@ -3,7 +3,7 @@
 // (VCM), one estimator of passes.
 //
 // Each pass traces N light subpaths (a light chosen by power, its emission drawn with
-// known densities: light/light.hpp's Emission) and one camera subpath per pixel, and
+// known densities: light/light.hpp's EmissionSample) and one camera subpath per pixel, and
 // adds every way of completing a path from the two (Veach 1997, chapter 10):
 //   s = 0        the camera path meets a light (an area or environment light);
 //   s = 1        a camera vertex takes a light sample (next-event estimation);
@@ -11,9 +11,10 @@
 //   t = 1        a light path's vertex is joined to the camera (light tracing: a splat);
 // s and t are the vertices each subpath gives, so a path of k segments has s + t = k + 1.
 // VCM adds merging (Georgiev et al. 2012; Hachisuka et al. 2012): a camera vertex
-// gathers the light vertices within a radius of it, as progressive photon mapping does,
-// the radius shrinking from pass to pass (r_i = r_0 i^((alpha - 1) / 2)). Every
-// strategy of a path is weighted by the balance heuristic over all of them, computed
+// gathers the light vertices within a radius of it (a HashGrid of the pass's light
+// vertices), as progressive photon mapping does, the radius shrinking from pass to pass
+// (r_i = r_0 i^((alpha - 1) / 2)). Every strategy of a path is weighted by the balance
+// heuristic over all of them (merges counted merge_weight times, see the config), computed
 // as the subpaths are traced from three running quantities per vertex (dVCM, dVC, dVM:
 // Georgiev's technical report "Implementing vertex connection and merging", 2012;
 // SmallVCM's layout). A connection goes only through vertices with a non-delta lobe
@@ -25,9 +26,10 @@
 // The weights count the densities of the subpaths' draws without their Russian
 // roulette: any weights that sum to 1 over a path's strategies keep every estimate
 // unbiased, and these do, the same functions of the path for every strategy.
-// Deterministic: light path i of pass p draws from its own stream, each camera sample
-// from the render's sampler, splats go to exact sums per thread; the same bits for any
-// thread count, crop or range of passes.
+// By default light path i is pixel i's: drawn from its sampler (laid over the image in
+// ZSobol's order) and joined to its camera paths. Deterministic: every number is a
+// function of (seed, pass, pixel or path), splats go to exact sums per thread; the same
+// bits for any thread count, crop, range of passes or MPI rank.
 //
 // Scope: surfaces in clear, straight air (nested dielectrics, index-matched boundaries and
 // absorbing interiors included); a scene with scattering media, dispersion, graded air or
