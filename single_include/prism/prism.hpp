@@ -7139,6 +7139,34 @@ struct EmissionPdf {
     [[nodiscard]] constexpr T both() const noexcept { return area * direction; }
 };
 
+/// Where a light infinitely far away (parallel, environment) emits from: the disk of the
+/// scene's sphere's radius facing the unit direction `travel`, 2 R upstream of its centre.
+/// Its point for u in the unit square, uniform by area.
+template <Scalar T>
+[[nodiscard]] Vec3<T> entry_point(const BoundingSphere<T>& scene, const Vec3<T>& travel, const Vec2<T>& u) noexcept
+{
+    return uniform_disk(scene.center - T(2) * scene.radius * travel, travel, scene.radius, u.x, u.y);
+}
+
+/// The density per unit area of entry_point's points, 1 / (pi R^2).
+template <Scalar T>
+[[nodiscard]] constexpr T entry_pdf(const BoundingSphere<T>& scene) noexcept
+{
+    return T(1) / (pi<T> * scene.radius * scene.radius);
+}
+
+/// Whether p is reached by rays travelling along -w (w unit, toward the light) from
+/// entry_point's disk: within its radius of the axis, downstream of it. A point off it (an
+/// unbounded floor far out) has no light path from the light: a bidirectional estimator's
+/// light samples there share their paths with none.
+template <Scalar T>
+[[nodiscard]] constexpr bool reached_from_entry(const BoundingSphere<T>& scene, const Vec3<T>& w, const Vec3<T>& p) noexcept
+{
+    const Vec3<T> v = p - scene.center;
+    const T along = dot(v, w);
+    return along < T(2) * scene.radius && length_squared(v - along * w) <= scene.radius * scene.radius;
+}
+
 /// The cone of directions from a point that holds a sphere: its unit axis and the cosine
 /// of its half-angle, -1 from inside the sphere (every direction).
 template <Scalar T>
@@ -13961,7 +13989,7 @@ private:
                          T weight = T(1);
                          if (state.length > 0) {
                              const T direct = l.pdf(w);
-                             const T emission = within_disk(out.origin, w) ? light_probability_[i] * l.emission_pdf(-w, sphere_).both() : T(0);
+                             const T emission = reached_from_entry(sphere_, w, out.origin) ? light_probability_[i] * l.emission_pdf(-w, sphere_).both() : T(0);
                              weight = T(1) / (T(1) + direct * state.dvcm + emission * state.dvc);
                          }
                          sum += weighed(weight) * state.beta * le;
@@ -13969,17 +13997,6 @@ private:
                  });
              });
         return sum;
-    }
-
-    /// Whether a light at infinity in the unit direction w (toward it) reaches p by its
-    /// emission: its rays enter through the disk of the scene's sphere that faces it (2 R
-    /// upstream of its centre), so a point off that disk's cylinder (on an unbounded plane,
-    /// far out) has no light path from it, and its light samples none to share with.
-    [[nodiscard]] bool within_disk(const Vec3<T>& p, const Vec3<T>& w) const noexcept
-    {
-        const Vec3<T> v = p - sphere_.center;
-        const T along = dot(v, w);
-        return along < T(2) * sphere_.radius && length_squared(v - along * w) <= sphere_.radius * sphere_.radius;
     }
 
     /// The area lights' share of the light paths.
@@ -14008,7 +14025,7 @@ private:
                 cos_light = std::abs(dot(s.wi, drawn.at.crossing.normal));
             } else {
                 s = l.sample(c.point, Vec2<T>(u1, u2));
-                if (s.distance < infinity<T> || within_disk(c.point, s.wi)) emission = q * l.emission_pdf(-s.wi, sphere_).both();
+                if (s.distance < infinity<T> || reached_from_entry(sphere_, s.wi, c.point)) emission = q * l.emission_pdf(-s.wi, sphere_).both();
             }
             const Vec3<T> n = c.facing_normal(), ns = c.facing_shading();
             T cos = shading_cosine(ns, n, s.wi);
@@ -17373,15 +17390,14 @@ struct DirectionalLight {
     [[nodiscard]] EmissionSample<T> emission(const BoundingSphere<T>& scene, const Vec2<T>& u_position, const Vec2<T>&) const noexcept
     {
         const Vec3<T> axis = normalize(direction);
-        const Vec3<T> origin = uniform_disk(scene.center - T(2) * scene.radius * axis, axis, scene.radius, u_position.x, u_position.y);
-        return {{origin, axis}, irradiance, T(1) / (pi<T> * scene.radius * scene.radius), T(1), T(1), true};
+        return {{entry_point(scene, axis, u_position), axis}, irradiance, entry_pdf(scene), T(1), T(1), true};
     }
 
     /// The densities emission() draws a ray along `direction` with (any other: none, but
     /// the estimators never ask, a delta direction being found by nothing else).
     [[nodiscard]] EmissionPdf<T> emission_pdf(const Vec3<T>&, const BoundingSphere<T>& scene) const noexcept
     {
-        return {T(1) / (pi<T> * scene.radius * scene.radius), T(1)};
+        return {entry_pdf(scene), T(1)};
     }
 
     /// Throws std::invalid_argument, naming the parameter, for a zero or non-finite direction or a negative irradiance.
@@ -17458,15 +17474,13 @@ struct EnvironmentLight {
     [[nodiscard]] EmissionSample<T> emission(const BoundingSphere<T>& scene, const Vec2<T>& u_position, const Vec2<T>& u_direction) const noexcept
     {
         const LightSample<T> from = sample(scene.center, u_direction);
-        const Vec3<T> travel = -from.wi;
-        const Vec3<T> origin = uniform_disk(scene.center - T(2) * scene.radius * travel, travel, scene.radius, u_position.x, u_position.y);
-        return {{origin, travel}, arriving_from(from.wi), T(1) / (pi<T> * scene.radius * scene.radius), from.pdf, T(1), true};
+        return {{entry_point(scene, -from.wi, u_position), -from.wi}, arriving_from(from.wi), entry_pdf(scene), from.pdf, T(1), true};
     }
 
     /// The densities emission() draws a ray travelling along `leaving` (unit) with.
     [[nodiscard]] EmissionPdf<T> emission_pdf(const Vec3<T>& leaving, const BoundingSphere<T>& scene) const noexcept
     {
-        return {T(1) / (pi<T> * scene.radius * scene.radius), pdf(-leaving)};
+        return {entry_pdf(scene), pdf(-leaving)};
     }
 
     /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite radiance.
@@ -17660,15 +17674,13 @@ public:
     [[nodiscard]] EmissionSample<T> emission(const BoundingSphere<T>& scene, const Vec2<T>& u_position, const Vec2<T>& u_direction) const noexcept
     {
         const LightSample<T> from = sample(scene.center, u_direction);
-        const Vec3<T> travel = -from.wi;
-        const Vec3<T> origin = uniform_disk(scene.center - T(2) * scene.radius * travel, travel, scene.radius, u_position.x, u_position.y);
-        return {{origin, travel}, arriving_from(from.wi), T(1) / (pi<T> * scene.radius * scene.radius), from.pdf, T(1), true};
+        return {{entry_point(scene, -from.wi, u_position), -from.wi}, arriving_from(from.wi), entry_pdf(scene), from.pdf, T(1), true};
     }
 
     /// The densities emission() draws a ray travelling along `leaving` (unit) with.
     [[nodiscard]] EmissionPdf<T> emission_pdf(const Vec3<T>& leaving, const BoundingSphere<T>& scene) const noexcept
     {
-        return {T(1) / (pi<T> * scene.radius * scene.radius), pdf(-leaving)};
+        return {entry_pdf(scene), pdf(-leaving)};
     }
 
     /// The image and its settings were checked when the light was made: nothing is left to check.

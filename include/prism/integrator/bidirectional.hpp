@@ -619,7 +619,7 @@ private:
                          T weight = T(1);
                          if (state.length > 0) {
                              const T direct = l.pdf(w);
-                             const T emission = within_disk(out.origin, w) ? light_probability_[i] * l.emission_pdf(-w, sphere_).both() : T(0);
+                             const T emission = reached_from_entry(sphere_, w, out.origin) ? light_probability_[i] * l.emission_pdf(-w, sphere_).both() : T(0);
                              weight = T(1) / (T(1) + direct * state.dvcm + emission * state.dvc);
                          }
                          sum += weighed(weight) * state.beta * le;
@@ -627,17 +627,6 @@ private:
                  });
              });
         return sum;
-    }
-
-    /// Whether a light at infinity in the unit direction w (toward it) reaches p by its
-    /// emission: its rays enter through the disk of the scene's sphere that faces it (2 R
-    /// upstream of its centre), so a point off that disk's cylinder (on an unbounded plane,
-    /// far out) has no light path from it, and its light samples none to share with.
-    [[nodiscard]] bool within_disk(const Vec3<T>& p, const Vec3<T>& w) const noexcept
-    {
-        const Vec3<T> v = p - sphere_.center;
-        const T along = dot(v, w);
-        return along < T(2) * sphere_.radius && length_squared(v - along * w) <= sphere_.radius * sphere_.radius;
     }
 
     /// The area lights' share of the light paths.
@@ -666,7 +655,7 @@ private:
                 cos_light = std::abs(dot(s.wi, drawn.at.crossing.normal));
             } else {
                 s = l.sample(c.point, Vec2<T>(u1, u2));
-                if (s.distance < infinity<T> || within_disk(c.point, s.wi)) emission = q * l.emission_pdf(-s.wi, sphere_).both();
+                if (s.distance < infinity<T> || reached_from_entry(sphere_, s.wi, c.point)) emission = q * l.emission_pdf(-s.wi, sphere_).both();
             }
             const Vec3<T> n = c.facing_normal(), ns = c.facing_shading();
             T cos = shading_cosine(ns, n, s.wi);

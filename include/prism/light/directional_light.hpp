@@ -52,15 +52,14 @@ struct DirectionalLight {
     [[nodiscard]] EmissionSample<T> emission(const BoundingSphere<T>& scene, const Vec2<T>& u_position, const Vec2<T>&) const noexcept
     {
         const Vec3<T> axis = normalize(direction);
-        const Vec3<T> origin = uniform_disk(scene.center - T(2) * scene.radius * axis, axis, scene.radius, u_position.x, u_position.y);
-        return {{origin, axis}, irradiance, T(1) / (pi<T> * scene.radius * scene.radius), T(1), T(1), true};
+        return {{entry_point(scene, axis, u_position), axis}, irradiance, entry_pdf(scene), T(1), T(1), true};
     }
 
     /// The densities emission() draws a ray along `direction` with (any other: none, but
     /// the estimators never ask, a delta direction being found by nothing else).
     [[nodiscard]] EmissionPdf<T> emission_pdf(const Vec3<T>&, const BoundingSphere<T>& scene) const noexcept
     {
-        return {T(1) / (pi<T> * scene.radius * scene.radius), T(1)};
+        return {entry_pdf(scene), T(1)};
     }
 
     /// Throws std::invalid_argument, naming the parameter, for a zero or non-finite direction or a negative irradiance.

@@ -64,15 +64,13 @@ struct EnvironmentLight {
     [[nodiscard]] EmissionSample<T> emission(const BoundingSphere<T>& scene, const Vec2<T>& u_position, const Vec2<T>& u_direction) const noexcept
     {
         const LightSample<T> from = sample(scene.center, u_direction);
-        const Vec3<T> travel = -from.wi;
-        const Vec3<T> origin = uniform_disk(scene.center - T(2) * scene.radius * travel, travel, scene.radius, u_position.x, u_position.y);
-        return {{origin, travel}, arriving_from(from.wi), T(1) / (pi<T> * scene.radius * scene.radius), from.pdf, T(1), true};
+        return {{entry_point(scene, -from.wi, u_position), -from.wi}, arriving_from(from.wi), entry_pdf(scene), from.pdf, T(1), true};
     }
 
     /// The densities emission() draws a ray travelling along `leaving` (unit) with.
     [[nodiscard]] EmissionPdf<T> emission_pdf(const Vec3<T>& leaving, const BoundingSphere<T>& scene) const noexcept
     {
-        return {T(1) / (pi<T> * scene.radius * scene.radius), pdf(-leaving)};
+        return {entry_pdf(scene), pdf(-leaving)};
     }
 
     /// Throws std::invalid_argument, naming the parameter, for a negative or non-finite radiance.

@@ -6,6 +6,7 @@
 #include <prism/core/math.hpp>
 #include <prism/core/ray.hpp>
 #include <prism/core/random.hpp>
+#include <prism/core/sampling.hpp>
 
 #include <concepts>
 
@@ -76,6 +77,34 @@ struct EmissionPdf {
     /// Their product: the density per unit area and steradian.
     [[nodiscard]] constexpr T both() const noexcept { return area * direction; }
 };
+
+/// Where a light infinitely far away (parallel, environment) emits from: the disk of the
+/// scene's sphere's radius facing the unit direction `travel`, 2 R upstream of its centre.
+/// Its point for u in the unit square, uniform by area.
+template <Scalar T>
+[[nodiscard]] Vec3<T> entry_point(const BoundingSphere<T>& scene, const Vec3<T>& travel, const Vec2<T>& u) noexcept
+{
+    return uniform_disk(scene.center - T(2) * scene.radius * travel, travel, scene.radius, u.x, u.y);
+}
+
+/// The density per unit area of entry_point's points, 1 / (pi R^2).
+template <Scalar T>
+[[nodiscard]] constexpr T entry_pdf(const BoundingSphere<T>& scene) noexcept
+{
+    return T(1) / (pi<T> * scene.radius * scene.radius);
+}
+
+/// Whether p is reached by rays travelling along -w (w unit, toward the light) from
+/// entry_point's disk: within its radius of the axis, downstream of it. A point off it (an
+/// unbounded floor far out) has no light path from the light: a bidirectional estimator's
+/// light samples there share their paths with none.
+template <Scalar T>
+[[nodiscard]] constexpr bool reached_from_entry(const BoundingSphere<T>& scene, const Vec3<T>& w, const Vec3<T>& p) noexcept
+{
+    const Vec3<T> v = p - scene.center;
+    const T along = dot(v, w);
+    return along < T(2) * scene.radius && length_squared(v - along * w) <= scene.radius * scene.radius;
+}
 
 /// The cone of directions from a point that holds a sphere: its unit axis and the cosine
 /// of its half-angle, -1 from inside the sphere (every direction).
