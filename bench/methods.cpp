@@ -19,10 +19,10 @@
 //   pixel; path_bounces: the same without light samples for area lights (their light
 //   found only by the bounces that meet them); path_grid2: the path tracer with 2 x 2
 //   stratified light samples at each vertex instead of one; path_rrN: the path tracer with
-//   Russian roulette from the Nth surface on (PathTracer::Config::roulette_depth, 2 by
-//   default); path_depthN: the path tracer meeting at most N + 1 surfaces
-//   (PathTracer::Config::max_depth: path_depth0 is direct light at the first surface, the
-//   camera's share of a path's cost); mask: samples per pixel, and the image is
+//   Russian roulette from the Nth surface on (PathTracer::Config::roulette_depth, 3 by
+//   default); path_lengthN: the path tracer's paths of at most N segments
+//   (PathTracer::Config::max_length: path_length2 is direct light, a light met at the
+//   first surface or at the one a bounce from it reaches); mask: samples per pixel, and the image is
 //   the share of each pixel whose camera ray meets a diffuse surface first (1 where the
 //   pixel sees only walls).
 #include "common.hpp"
@@ -109,13 +109,13 @@ int main(int argc, char** argv)
             prism::write_pfm(film, out);
             return 0.0;
         }
-        if (method == "path" || method == "path_bounces" || method == "path_grid2" || method.starts_with("path_rr") || method.starts_with("path_depth")) {
+        if (method == "path" || method == "path_bounces" || method == "path_grid2" || method.starts_with("path_rr") || method.starts_with("path_length")) {
             const auto start = std::chrono::steady_clock::now();
             typename prism::PathTracer<std::remove_cvref_t<decltype(scene)>>::Config config{
                 .area_light_grid = method == "path_grid2" ? 2 : 1,
                 .area_lights = method == "path_bounces" ? prism::AreaLightStrategy::bounces : prism::AreaLightStrategy::mis};
             if (method.starts_with("path_rr")) config.roulette_depth = std::atoi(method.c_str() + 7);
-            if (method.starts_with("path_depth")) config.max_depth = std::atoi(method.c_str() + 10);
+            if (method.starts_with("path_length")) config.max_length = std::atoi(method.c_str() + 11);
             const prism::PathTracer tracer(scene, config);
             const prism::Film film = prism::render(scenes::cornell_camera<float>(), tracer, options.render);
             const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -13481,6 +13481,137 @@ struct BidirectionalConfig {
     bool weighted = true; ///< see `only`
 };
 
+/// The multiple importance weights of Bidirectional: a subpath's three running
+/// quantities (Georgiev's technical report, section 5; SmallVCM's dVCM, dVC, dVM), how a
+/// subpath's vertices update them, and each strategy's balance-heuristic weight from them
+/// and the densities where the two subpaths meet. Densities are those of the draws, per
+/// steradian, and the cosines at the true normals; a light's are chosen with its
+/// probability among the lights (the light paths'), where a light sample takes every
+/// light. tests/integrator/bidirectional.cpp checks the weights of every strategy of
+/// random paths against the balance heuristic over the paths' densities, written out.
+template <Scalar T>
+struct VcmMis {
+    T dvcm = T(0), dvc = T(0), dvm = T(0);
+
+    /// What a pass's merging is worth: eta = merge_weight pi r^2 N (0 without merging)
+    /// and 1 / eta (0 without connections).
+    struct Pass {
+        T vm = T(0); ///< eta: merging's weight against a connection
+        T vc = T(0); ///< 1 / eta
+    };
+
+    /// A light subpath's start: the light chosen with probability q drew its point with
+    /// density pdf_area (1 for a point or from infinity) and its direction with
+    /// pdf_direction, at cosine `cos` to its surface (1 for a point or from infinity);
+    /// `delta`: no bounce can find the light (a point, spot or parallel light). The
+    /// light's own density toward the first hit is completed there (first_hit).
+    [[nodiscard]] static VcmMis light_start(T q, T pdf_area, T pdf_direction, T cos, bool from_infinity, bool delta, Pass pass) noexcept
+    {
+        const T pdf = q * pdf_area * pdf_direction;
+        VcmMis m;
+        // (31)-(33) begun, delta lights as (48)-(50): the light sample that would find the
+        // light's vertex over the emission's density; a delta light's vertex no bounce finds.
+        m.dvcm = T(1) / pdf;
+        if (from_infinity && !delta) m.dvcm *= pdf_direction; // an environment's sample is by direction
+        m.dvc = delta ? T(0) : (from_infinity ? T(1) : cos) / pdf;
+        m.dvm = m.dvc * pass.vc;
+        return m;
+    }
+
+    /// A camera subpath's start: N light paths a pass, and the camera's density of its
+    /// ray per steradian.
+    [[nodiscard]] static VcmMis camera_start(T light_paths, T camera_pdf) noexcept { return {light_paths / camera_pdf, T(0), T(0)}; }
+
+    /// Arriving at a vertex `distance2` (squared) along the segment, at cosine `cos` to
+    /// its true normal: the report's (31)-(33) completed now the segment is known.
+    void arrive(T distance2, T cos) noexcept
+    {
+        dvcm *= distance2;
+        dvcm /= cos;
+        dvc /= cos;
+        dvm /= cos;
+    }
+
+    /// A light subpath's first vertex, from an area light: a light sample from there
+    /// finds the light's point with the density `direct` per steradian (the light's own
+    /// pdf), at cosine cos_light there; the squared distance cancels the segment's.
+    void first_hit_of_area_light(T direct, T cos_light, T cos) noexcept
+    {
+        dvcm *= direct * cos_light;
+        arrive(T(1), cos);
+    }
+
+    /// Scattered at a vertex: the next direction drawn with density pdf_forward (per
+    /// steradian; 1 for a delta), at cosine cos_out to the true normal, where a path
+    /// arriving the other way would draw the last direction with pdf_reverse: the
+    /// report's (34)-(36), or (53)-(55) for a delta.
+    void scattered(T cos_out, T pdf_forward, T pdf_reverse, bool delta, Pass pass) noexcept
+    {
+        if (delta) {
+            dvcm = T(0);
+            dvc *= cos_out;
+            dvm *= cos_out;
+        } else {
+            const T g = cos_out / pdf_forward;
+            dvc = g * (dvc * pdf_reverse + dvcm + pass.vm);
+            dvm = g * (dvm * pdf_reverse + dvcm * pass.vc + T(1));
+            dvcm = T(1) / pdf_forward;
+        }
+    }
+
+    /// s = 0: a camera subpath (these quantities) meets a light, which a light sample from
+    /// the vertex before finds with density `direct` per unit area (per steradian from
+    /// infinity) and the light paths leave by this way with density `emission` (the
+    /// light's probability, area and direction: pdf_area pdf_direction), (42)-(43).
+    [[nodiscard]] T met_light_weight(T direct, T emission) const noexcept { return T(1) / (T(1) + direct * dvcm + emission * dvc); }
+
+    /// s = 1: a camera vertex (these quantities) takes a light sample of density `direct`
+    /// per steradian (d^2 for a point light, 1 for a parallel one: `delta`), at cosines
+    /// cos_camera and cos_light to the true normals; the light paths leave by the
+    /// sample's way with `emission` (as met_light_weight's); the vertex's lobe draws the
+    /// sample's direction with bsdf_forward and, arriving from the light, the camera's
+    /// way with bsdf_reverse. (44)-(45).
+    [[nodiscard]] T light_sample_weight(T direct, bool delta, T emission, T cos_camera, T cos_light, T bsdf_forward, T bsdf_reverse, Pass pass) const noexcept
+    {
+        const T w_light = delta ? T(0) : bsdf_forward / direct;
+        const T w_camera = emission * cos_camera / (direct * cos_light) * (pass.vm + dvcm + dvc * bsdf_reverse);
+        return T(1) / (w_light + T(1) + w_camera);
+    }
+
+    /// s >= 2, t >= 2: a light vertex (`light`) joined to a camera vertex (`camera`) by a
+    /// segment of squared length d2 at cosines cos_light and cos_camera; the camera
+    /// vertex's lobe draws the segment with camera_forward (and its own arrival, from the
+    /// light, with camera_reverse), the light vertex's with light_forward and
+    /// light_reverse. (40)-(41).
+    [[nodiscard]] static T connection_weight(const VcmMis& light, const VcmMis& camera, T d2, T cos_light, T cos_camera, T light_forward, T light_reverse,
+                                             T camera_forward, T camera_reverse, Pass pass) noexcept
+    {
+        const T w_light = camera_forward * cos_light / d2 * (pass.vm + light.dvcm + light.dvc * light_reverse);
+        const T w_camera = light_forward * cos_camera / d2 * (pass.vm + camera.dvcm + camera.dvc * camera_reverse);
+        return T(1) / (w_light + T(1) + w_camera);
+    }
+
+    /// t = 1: a light vertex (these quantities) joined to the camera, which would draw it
+    /// with `camera_area_pdf` per unit area (its image-plane density 1 / A taken to the
+    /// ray's solid angle, 1 / cos_c^3, and on to the surface); N light paths a pass; the
+    /// vertex's lobe draws its own arrival, coming from the camera, with bsdf_reverse.
+    /// (46)-(47).
+    [[nodiscard]] T splat_weight(T camera_area_pdf, T light_paths, T bsdf_reverse, Pass pass) const noexcept
+    {
+        return T(1) / (T(1) + camera_area_pdf / light_paths * (pass.vm + dvcm + dvc * bsdf_reverse));
+    }
+
+    /// A merge of a light vertex (`light`, arrived along d) at a camera vertex
+    /// (`camera`): the camera vertex's lobe draws -d with camera_forward and its own
+    /// arrival, coming the light path's way, with camera_reverse. (37)-(39).
+    [[nodiscard]] static T merge_weight(const VcmMis& light, const VcmMis& camera, T camera_forward, T camera_reverse, Pass pass) noexcept
+    {
+        const T w_light = light.dvcm * pass.vc + light.dvm * camera_forward;
+        const T w_camera = camera.dvcm * pass.vc + camera.dvm * camera_reverse;
+        return T(1) / (w_light + T(1) + w_camera);
+    }
+};
+
 /// Whether Bidirectional renders scenes of type SceneT: surfaces only (no scattering
 /// medium), no dispersive material, no light that casts its own shadow.
 template <class SceneT>
@@ -13596,7 +13727,7 @@ private:
         Hit<T> hit;          ///< where
         Vec3<T> d;           ///< unit, the direction the light path arrived along
         Rgb<T> beta;         ///< its throughput: the light's power estimate carried to here
-        T dvcm, dvc, dvm;    ///< the MIS quantities (Georgiev's report, section 5)
+        VcmMis<T> mis;       ///< the MIS quantities
         T outside_index;     ///< a transmissive material's outer index
         int length;          ///< segments from the light
     };
@@ -13608,8 +13739,7 @@ private:
         HashGrid<T> grid;                ///< the vertices by position, for merging
         T count = T(0);          ///< N, the light paths traced
         T radius = T(0);         ///< the merging radius
-        T mis_vm = T(0);         ///< eta_VCM = pi r^2 N (0 without merging): merging's weight against a connection
-        T mis_vc = T(0);         ///< 1 / eta_VCM (0 without connections)
+        typename VcmMis<T>::Pass mis; ///< what merging is worth against a connection
         T vm_normalization = T(0); ///< 1 / (pi r^2 N)
         bool per_pixel = false;    ///< light path i is pixel i's (paired_with_pixels)
         int width = 0, height = 0; ///< the image's size
@@ -13627,7 +13757,7 @@ private:
     /// A subpath's running state: throughput and the MIS quantities.
     struct PathState {
         Rgb<T> beta;
-        T dvcm, dvc, dvm;
+        VcmMis<T> mis;
         int length = 0;         ///< segments so far
         bool specular = true;   ///< every scattering so far was a delta
     };
@@ -13724,16 +13854,6 @@ private:
         }
     }
 
-    /// A subpath's MIS quantities at a vertex it met after `distance` along d, where the
-    /// true normal is n: the report's (31)-(33), completed now the segment is known.
-    static void arrive(PathState& state, T distance2, T cos) noexcept
-    {
-        state.dvcm *= distance2;
-        state.dvcm /= cos;
-        state.dvc /= cos;
-        state.dvm /= cos;
-    }
-
     /// Scatter a subpath at a vertex: draw the next direction, update the throughput and
     /// the MIS quantities (the report's (34)-(36), or (53)-(55) for a delta), and play
     /// Russian roulette past roulette_length (outside the weights). Nothing: it ends.
@@ -13743,18 +13863,8 @@ private:
     {
         const std::optional<VertexSample<T>> s = vertex.sample(rng);
         if (!s || !(max_component(s->weight) > T(0)) || !(max_component(s->weight) < infinity<T>)) return std::nullopt;
-        const T cos_out = std::abs(dot(s->direction, c.normal));
-        if (s->delta) {
-            state.dvcm = T(0);
-            state.dvc *= cos_out;
-            state.dvm *= cos_out;
-        } else {
-            const T g = cos_out / s->pdf_forward;
-            state.dvc = g * (state.dvc * s->pdf_reverse + state.dvcm + light.mis_vm);
-            state.dvm = g * (state.dvm * s->pdf_reverse + state.dvcm * light.mis_vc + T(1));
-            state.dvcm = T(1) / s->pdf_forward;
-            state.specular = false;
-        }
+        state.mis.scattered(std::abs(dot(s->direction, c.normal)), s->pdf_forward, s->pdf_reverse, s->delta, light.mis);
+        if (!s->delta) state.specular = false;
         state.beta *= s->weight;
         if (state.length >= config_.roulette_length) {
             // Roulette by how much of the throughput this scattering kept (at most 1).
@@ -13779,8 +13889,8 @@ private:
         light.radius = T(double(first_radius(rays, config.width, config.height)) * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)));
         light.radius = std::max(light.radius, sphere_.radius * T(1e-7));
         const T eta = pi<T> * light.radius * light.radius * light.count;
-        light.mis_vm = merging ? T(config_.merge_weight) * eta : T(0);
-        light.mis_vc = T(1) / (T(config_.merge_weight) * eta);
+        light.mis.vm = merging ? T(config_.merge_weight) * eta : T(0);
+        light.mis.vc = T(1) / (T(config_.merge_weight) * eta);
         light.vm_normalization = T(1) / eta;
         // Blocks of paths, each into its own list (joined in order) and its worker's splats.
         constexpr std::size_t block = 4096;
@@ -13860,12 +13970,7 @@ private:
         if (!(pdf > T(0)) || !(pdf < infinity<T>) || !(e.cos > T(0)) || !(max_component(e.radiance) > T(0))) return;
         PathState state;
         state.beta = e.radiance * (e.cos / pdf);
-        // (31)-(33) begun, delta lights as (48)-(50): the light sample that would find the
-        // light's vertex over the emission's density; a delta light's vertex no bounce finds.
-        state.dvcm = T(1) / pdf;
-        if (e.from_infinity && !delta_light) state.dvcm *= e.pdf_direction; // an environment's sample is by direction
-        state.dvc = delta_light ? T(0) : (e.from_infinity ? T(1) : e.cos) / pdf;
-        state.dvm = state.dvc * light.mis_vc;
+        state.mis = VcmMis<T>::light_start(q, e.pdf_area, e.pdf_direction, e.cos, e.from_infinity, delta_light, light.mis);
         walk(e.ray, scene_->media_at(e.ray.origin), state.beta, Transport::importance, rng, light_blocks,
              [&]<class M>(const M&, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T outside_index) -> std::optional<Vec3<T>> {
                  const Crossing<T>& c = hit.crossing;
@@ -13874,14 +13979,13 @@ private:
                  ++state.length;
                  if (state.length == 1 && source) {
                      // An area light's sample from here finds its point with the density
-                     // pdf_W cos_0 / d^2 per unit area; the d^2 cancels the segment's.
-                     if constexpr (SceneT::has_emitters) state.dvcm *= scene_->area_lights().pdf(*source, c.point) * e.cos;
-                     arrive(state, T(1), cos);
+                     // pdf_W cos_0 / d^2 per unit area.
+                     if constexpr (SceneT::has_emitters) state.mis.first_hit_of_area_light(scene_->area_lights().pdf(*source, c.point), e.cos, cos);
                  } else {
-                     arrive(state, state.length > 1 || !e.from_infinity ? distance * distance : T(1), cos);
+                     state.mis.arrive(state.length > 1 || !e.from_infinity ? distance * distance : T(1), cos);
                  }
                  if (vertex.connectible()) {
-                     out.push_back({hit, d, state.beta, state.dvcm, state.dvc, state.dvm, outside_index, state.length});
+                     out.push_back({hit, d, state.beta, state.mis, outside_index, state.length});
                      if (state.length + 1 <= config_.max_length) connect_to_camera(out.back(), vertex, light, rays, window, rng, splats);
                  }
                  if (state.length + 2 > config_.max_length) return std::nullopt;
@@ -13912,8 +14016,7 @@ private:
         // The camera's density of this vertex per unit area: its image-plane density 1 / A
         // taken to the ray's solid angle (1 / cos_c^3) and on to the surface.
         const T camera_area_pdf = T(1) / (rays.pixel_area() * cube(seen->cos)) * std::abs(dot(to_camera, c.normal)) / d2;
-        const T w_light = camera_area_pdf / light.count * (light.mis_vm + lv.dvcm + lv.dvc * f.pdf_reverse);
-        const T weight = weighed(T(1) / (T(1) + w_light));
+        const T weight = weighed(lv.mis.splat_weight(camera_area_pdf, light.count, f.pdf_reverse, light.mis));
         const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
                                                                                        seen->distance * (T(1) - shadow_epsilon<T>));
         if (!(max_component(v) > T(0))) return;
@@ -13939,8 +14042,7 @@ private:
         state.beta = Rgb<T>(T(1));
         const T camera = camera_pdf(rays, ray.direction);
         if (!(camera > T(0))) return sum;
-        state.dvcm = light.count / camera;
-        state.dvc = state.dvm = T(0);
+        state.mis = VcmMis<T>::camera_start(light.count, camera);
         Vec3<T> previous = ray.origin;
         walk(ray, scene_->media_at(ray.origin), state.beta, Transport::radiance, rng, 0,
              [&]<class M>(const M& material, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T) -> std::optional<Vec3<T>> {
@@ -13948,7 +14050,7 @@ private:
                  const T cos = std::abs(dot(d, c.normal));
                  if (!(cos > T(0))) return std::nullopt;
                  ++state.length;
-                 arrive(state, distance * distance, cos);
+                 state.mis.arrive(distance * distance, cos);
                  const int t = state.length + 1;
                  if constexpr (emits<M>) {
                      // s = 0: the path met an area light, (42)-(43).
@@ -13959,7 +14061,7 @@ private:
                              const AreaLights<SceneT> lights = scene_->area_lights();
                              const T direct = lights.pdf(hit, previous) * cos / (distance * distance);
                              const T emission = area_light_probability() * lights.emission_pdf(hit, -d).both();
-                             weight = T(1) / (T(1) + direct * state.dvcm + emission * state.dvc);
+                             weight = state.mis.met_light_weight(direct, emission);
                          }
                          sum += weighed(weight) * state.beta * le;
                      }
@@ -13990,7 +14092,7 @@ private:
                          if (state.length > 0) {
                              const T direct = l.pdf(w);
                              const T emission = reached_from_entry(sphere_, w, out.origin) ? light_probability_[i] * l.emission_pdf(-w, sphere_).both() : T(0);
-                             weight = T(1) / (T(1) + direct * state.dvcm + emission * state.dvc);
+                             weight = state.mis.met_light_weight(direct, emission);
                          }
                          sum += weighed(weight) * state.beta * le;
                      }
@@ -14039,9 +14141,8 @@ private:
             // point, 1 for a parallel light).
             const bool at_infinity = !(s.distance < infinity<T>);
             const T direct = s.delta() ? (at_infinity ? T(1) : s.distance * s.distance) : s.pdf;
-            const T w_light = s.delta() ? T(0) : f.pdf_forward / direct;
-            const T w_camera = emission * std::abs(dot(s.wi, c.normal)) / (direct * cos_light) * (light.mis_vm + state.dvcm + state.dvc * f.pdf_reverse);
-            const T weight = weighed(T(1) / (w_light + T(1) + w_camera));
+            const T weight =
+                weighed(state.mis.light_sample_weight(direct, s.delta(), emission, std::abs(dot(s.wi, c.normal)), cos_light, f.pdf_forward, f.pdf_reverse, light.mis));
             const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, s.wi),
                                                                                            s.distance * (T(1) - shadow_epsilon<T>));
             sum += (weight * f.cos) * f.f * s.irradiance * v;
@@ -14073,11 +14174,8 @@ private:
             });
             if (far.black()) continue;
             const T cos_camera = std::abs(dot(w, c.normal)), cos_light = std::abs(dot(w, lc.normal));
-            const T camera_to_light = camera.pdf_forward * cos_light / d2; // the camera vertex's density of the light vertex, per area
-            const T light_to_camera = far.pdf_forward * cos_camera / d2;
-            const T w_light = camera_to_light * (light.mis_vm + lv.dvcm + lv.dvc * far.pdf_reverse);
-            const T w_camera = light_to_camera * (light.mis_vm + state.dvcm + state.dvc * camera.pdf_reverse);
-            const T weight = weighed(T(1) / (w_light + T(1) + w_camera));
+            const T weight = weighed(VcmMis<T>::connection_weight(lv.mis, state.mis, d2, cos_light, cos_camera, far.pdf_forward, far.pdf_reverse, camera.pdf_forward,
+                                                                  camera.pdf_reverse, light.mis));
             const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, w),
                                                                                            distance * (T(1) - shadow_epsilon<T>));
             if (!(max_component(v) > T(0))) continue;
@@ -14097,9 +14195,7 @@ private:
             if (lv.length + state.length > config_.max_length) return;
             const VertexValue<T> camera = vertex.value(-lv.d);
             if (camera.black()) return;
-            const T w_light = lv.dvcm * light.mis_vc + lv.dvm * camera.pdf_forward;
-            const T w_camera = state.dvcm * light.mis_vc + state.dvm * camera.pdf_reverse;
-            sum += (T(1) / (w_light + T(1) + w_camera)) * camera.f * lv.beta;
+            sum += VcmMis<T>::merge_weight(lv.mis, state.mis, camera.pdf_forward, camera.pdf_reverse, light.mis) * camera.f * lv.beta;
         });
         return sum * light.vm_normalization;
     }
@@ -14679,6 +14775,7 @@ static_assert(PhaseFunction<HenyeyGreenstein<float>> && PhaseFunction<HenyeyGree
 
 #include <algorithm>
 #include <concepts>
+#include <limits>
 #include <optional>
 #include <type_traits>
 #include <variant>
@@ -14704,6 +14801,7 @@ struct WalkVertex {
     Random& rng;               ///< the walk's stream, for a caller that draws at the vertex (a thin lens's point)
     T outside_index;          ///< the index of refraction on a transmissive material's outer side (1 for others; glossy_eta)
     int surface_bounces;      ///< the non-delta scatterings other than through frosted glass (a glossy interface)
+    int length;               ///< segments from the walk's start to here: the vertices so far, this one included (surfaces and media alike)
 
     /// Where the walk met the surface, with its normal and side.
     [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
@@ -14747,6 +14845,7 @@ struct WalkMediumVertex {
     const Ray<T>& stretch;    ///< the stretch of medium the flight was drawn over: from where it starts, unit direction
     T stretch_length;         ///< its length (may be infinite)
     const Rgb<T>& entering;   ///< what the path carried as it entered the stretch (the flight's draw was weighed by it)
+    int length;               ///< segments from the walk's start to here, as WalkVertex's
 
     /// Whether every scattering so far was specular.
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
@@ -14765,6 +14864,7 @@ struct WalkMediumStretch {
     int diffuse_bounces;      ///< non-delta scatterings so far
     const MediumStack& media; ///< the transmissive objects the path is inside of
     Random& rng;               ///< the walk's stream
+    int vertices;             ///< the vertices so far (the stretch starts at the last, or at the walk's start): segments to its start
 };
 
 /// What a walk does where it scatters in a medium when its caller says nothing: it goes on.
@@ -14826,10 +14926,17 @@ struct WalkLimits {
     /// Surfaces a camera path (Transport::radiance) scatters at before Russian roulette on
     /// its throughput may end it (path_roulette); a photon's roulette is per bounce.
     int roulette_depth = 2;
+    /// Segments the walk may take: it reaches at most this many vertices (scatterings at
+    /// surfaces and in media alike; an interface it passes is none) and scatters at none
+    /// past the one before, so that a camera path's light met at its last vertex, or a
+    /// light sample taken at the one before, makes a path of at most max_length segments
+    /// (the depth every prism estimator counts: docs/guide.md).
+    int max_length = std::numeric_limits<int>::max();
 };
 
-/// Walk from `ray` carrying `power` through at most limits.max_bounces + 1 surfaces and
-/// limits.max_medium_bounces + 1 scatterings in media, calling `hooks` (WalkHooks) where
+/// Walk from `ray` carrying `power` through at most limits.max_bounces + 1 surfaces,
+/// limits.max_medium_bounces + 1 scatterings in media and limits.max_length vertices of
+/// either kind (whichever comes first), calling `hooks` (WalkHooks) where
 /// things happen. `Mode`: whether the path is a photon's or a camera's (scatter_photon); a
 /// camera path is ended by path_roulette after limits.roulette_depth surfaces. Scatterings
 /// in media count toward their own limit, and toward roulette_depth with the surfaces (a
@@ -14848,6 +14955,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
     Vec3<T> last_point = ray.origin;
     T last_pdf = T(0);
     int medium_bounces = 0; // of the bounces, those in media
+    int length = 0;         // vertices so far, at surfaces and in media
     for (int bounce = 0; bounce - medium_bounces <= limits.max_bounces; ++bounce) {
         rng.bounce(bounce); // each bounce its own block of the sampler's dimensions
         // In the air a path follows the air's curve; inside objects, straight lines.
@@ -14867,7 +14975,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                     const Ray<T> stretch{piece.at(t0), piece.direction};
                     const Rgb<T> entering = power;
                     if constexpr (std::is_invocable_v<decltype(hooks.on_medium)&, const Md&, const WalkMediumStretch<T>&>)
-                        hooks.on_medium(medium, WalkMediumStretch<T>{.ray = stretch, .length = t1 - t0, .power = power, .diffuse_bounces = diffuse_bounces, .media = media, .rng = rng});
+                        hooks.on_medium(medium, WalkMediumStretch<T>{.ray = stretch, .length = t1 - t0, .power = power, .diffuse_bounces = diffuse_bounces, .media = media, .rng = rng, .vertices = length});
                     const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
                     power *= flight.weight;
                     if (!flight.scattered) return true;
@@ -14875,7 +14983,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                     const Vec3<T>& d = piece.direction;
                     const Vec3<T> p = piece.origin + s * d;
                     travelled += before + s;
-                    const bool last = medium_bounces == limits.max_medium_bounces;
+                    const bool last = medium_bounces == limits.max_medium_bounces || length + 1 >= limits.max_length;
                     in_medium = InMedium::absorbed;
                     if (!hooks.on_medium(medium, WalkMediumVertex<T>{.point = p,
                                                                      .direction = d,
@@ -14893,7 +15001,8 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                                                                      .surface_bounces = surface_bounces,
                                                                      .stretch = stretch,
                                                                      .stretch_length = t1 - t0,
-                                                                     .entering = entering}))
+                                                                     .entering = entering,
+                                                                     .length = length + 1}))
                         return false;
                     if constexpr (Mode == Transport::importance) {
                         // A photon keeps its power: it goes on with the chance of the draw's
@@ -14911,6 +15020,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                     last_pdf = next.pdf;
                     ++diffuse_bounces;
                     ++surface_bounces;
+                    ++length;
                     if (direct) first_specular = false;
                     in_medium = InMedium::scattered;
                     return false;
@@ -14920,7 +15030,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
             if (in_medium == InMedium::absorbed) return;
             if (in_medium == InMedium::scattered) {
-                if (++medium_bounces > limits.max_medium_bounces) return;
+                if (++medium_bounces > limits.max_medium_bounces || length >= limits.max_length) return;
                 direct = false;
                 continue;
             }
@@ -14936,7 +15046,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         const Next next_step = scene.visit_material(*hit, [&]<class M>(const M& material) -> Next {
             // What the medium it travelled in let through, before anything else.
             attenuate_segment(scene, media, material, c, segment, power);
-            const bool last = bounce - medium_bounces == limits.max_bounces;
+            const bool last = bounce - medium_bounces == limits.max_bounces || length + 1 >= limits.max_length;
             // The walk at this surface, as the hooks see it (outside_index: 1 until known).
             const auto vertex = [&](T outside_index) {
                 return WalkVertex<T>{.hit = *hit,
@@ -14953,7 +15063,8 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                                      .last = last,
                                      .rng = rng,
                                      .outside_index = outside_index,
-                                     .surface_bounces = surface_bounces};
+                                     .surface_bounces = surface_bounces,
+                                     .length = length + 1};
             };
             if constexpr (emits<M>) hooks.on_emitter(material, vertex(T(1)));
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
@@ -15016,6 +15127,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             if (next->diffuse) ++diffuse_bounces;
             if (next->diffuse && !(has_glossy<M> && transmits<M>)) ++surface_bounces;
             if (direct) first_specular = !next->diffuse;
+            ++length;
             if constexpr (transmits<M>) {
                 if (dot(next->direction, n) < T(0)) media = face.beyond; // refracted
             }
@@ -15023,7 +15135,10 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             }
         });
         if (next_step == Next::absorbed) return;
-        if (next_step == Next::scattered) direct = false;
+        if (next_step == Next::scattered) {
+            if (length >= limits.max_length) return;
+            direct = false;
+        }
     }
 }
 
@@ -15072,6 +15187,11 @@ struct PhotonTracerConfig {
     std::size_t caustic_photons = 200000; ///< emitted toward specular objects for the caustic map
     int max_bounces = 16;                 ///< bounces at surfaces followed at most
     int max_medium_bounces = 1000;        ///< scatterings in media followed at most (WalkLimits'; in fog that absorbs, roulette ends a photon long before)
+    /// Segments a photon's path may take from the light, vertices at surfaces and in media
+    /// counted together (WalkLimits::max_length; whichever limit comes first ends it): the
+    /// light tracer's paths, joined to the camera by one segment more, are held to its
+    /// max_length by this.
+    int max_length = std::numeric_limits<int>::max();
     bool shadow_photons = true; ///< store shadow photons in the global map
     std::uint64_t seed = 0; ///< with the light, fixes every photon
     /// The photons' numbers (core/sampler.hpp): photon i of a map is sample i of the
@@ -15104,6 +15224,7 @@ inline void validate(const PhotonTracerConfig& config)
     }
     if (config.max_bounces < 0) throw_invalid("PhotonTracerConfig max_bounces must be >= 0, got ", config.max_bounces);
     if (config.max_medium_bounces < 0) throw_invalid("PhotonTracerConfig max_medium_bounces must be >= 0, got ", config.max_medium_bounces);
+    if (config.max_length < 1) throw_invalid("PhotonTracerConfig max_length must be >= 1, got ", config.max_length);
     if (config.dispersion_bands < 1 || config.dispersion_bands > SpectralBands<float>::max_count)
         throw_invalid("PhotonTracerConfig dispersion_bands must be in [1, ", SpectralBands<float>::max_count, "], got ", config.dispersion_bands);
 }
@@ -15235,7 +15356,7 @@ private:
         const bool without_falloff = photon.without_falloff;
         const auto stored = [&](const auto& at) { return without_falloff ? at.power * (at.travelled * at.travelled) : at.power; };
         random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng,
-                    WalkLimits{.max_bounces = config_.max_bounces, .max_medium_bounces = config_.max_medium_bounces},
+                    WalkLimits{.max_bounces = config_.max_bounces, .max_medium_bounces = config_.max_medium_bounces, .max_length = config_.max_length},
                     WalkHooks{.on_surface = [&]<class M>(const M& material, const WalkVertex<T>& at) { return visit(material, at, stored(at)); },
                               .on_medium = [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) { return visit_medium(medium, at, stored(at)); }});
     }
@@ -15543,7 +15664,10 @@ namespace prism {
 /// A LightTracer's settings: paths a pass, bounces, wavelength bands.
 struct LightTracerConfig {
     std::size_t paths = 1000000;   ///< light paths per pass, aimed at the specular objects
-    int max_bounces = 256;         ///< surfaces a path may meet; Russian roulette ends it long before
+    /// Segments a path may have from the light to the camera, vertices in media counted
+    /// as those on surfaces (as PathTracer's: docs/guide.md); below 3 there are none
+    /// (L S D E is the shortest). Russian roulette ends a path long before the default.
+    int max_length = 1024;
     int max_diffuse_bounces = 256; ///< as PathTracer's: 0 joins a path to the camera at its first diffuse surface only
     int dispersion_bands = SpectralBands<float>::max_count; ///< as PhotonTracerConfig's
 };
@@ -15564,6 +15688,7 @@ public:
         scene.validate();
         air_.validate();
         if (config.paths == 0) detail::throw_invalid("LightTracerConfig paths must be >= 1, got 0");
+        if (config.max_length < 1) detail::throw_invalid("LightTracerConfig max_length must be >= 1, got ", config.max_length);
         if (config.max_diffuse_bounces < 0)
             detail::throw_invalid("LightTracerConfig max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
         detail::validate(tracer_config(1, 0, 1));
@@ -15599,6 +15724,7 @@ public:
         if (std::uint64_t(config.spp) > std::numeric_limits<std::uint64_t>::max() / per_pass)
             detail::throw_invalid("LightTracer: ", config.spp, " passes of ", per_pass, " paths overflow a 64-bit path index");
         const std::uint64_t count = std::uint64_t(config.spp) * per_pass;
+        if (config_.max_length < 3) return; // no path it finds is that short
         const PassRange traced{passes.first * per_pass, passes.last * per_pass};
         const detail::PhotonTracer<SceneT, Air> tracer(*scene_, tracer_config(count, config.seed, config.threads), air_);
         const T area = rays.pixel_area();
@@ -15718,7 +15844,9 @@ private:
     {
         return {.global_photons = 0,
                 .caustic_photons = count,
-                .max_bounces = config_.max_bounces,
+                .max_bounces = std::numeric_limits<int>::max(),
+                .max_medium_bounces = std::numeric_limits<int>::max(),
+                .max_length = std::max(config_.max_length - 1, 1), // a vertex joined to the camera by one segment more
                 .shadow_photons = false,
                 .seed = seed,
                 .threads = threads,
@@ -15781,6 +15909,8 @@ Overload(F...) -> Overload<F...>;
 // by the first, dense fog by the second.
 
 
+#include <limits>
+
 namespace prism {
 
 /// How a path tracer finds the light of area lights at a diffuse vertex.
@@ -15801,7 +15931,11 @@ public:
 
     /// A PathTracer's settings.
     struct Config {
-        int max_depth = 256; ///< surfaces a path may meet; Russian roulette ends it long before
+        /// Segments a path may have from the camera to the light (1: lights seen directly;
+        /// 2: direct light; ...), vertices in media counted as those on surfaces: every
+        /// prism estimator counts its depth so (docs/guide.md). Russian roulette ends a
+        /// path long before the default.
+        int max_length = 1024;
         /// Surfaces a path scatters at before Russian roulette on its throughput may end it
         /// (path_roulette; pbrt's depth 1, Mitsuba's rr_depth 5). Roulette at the first
         /// bounces cuts short the paths a caustic is found by, on their way to the light;
@@ -15838,7 +15972,7 @@ public:
     {
         scene.validate();
         air_.validate();
-        if (config.max_depth < 0) detail::throw_invalid("PathTracer max_depth must be >= 0, got ", config.max_depth);
+        if (config.max_length < 1) detail::throw_invalid("PathTracer max_length must be >= 1, got ", config.max_length);
         if (config.roulette_depth < 0) detail::throw_invalid("PathTracer roulette_depth must be >= 0, got ", config.roulette_depth);
         if (config.max_diffuse_bounces < 0) detail::throw_invalid("PathTracer max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
         if (config.area_light_grid < 1 || config.area_light_grid > 64)
@@ -15853,12 +15987,13 @@ public:
     {
         Rgb<T> sum{T(0)};
         const LightSampling sampling{&rng, config_.area_light_grid};
-        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth, .roulette_depth = config_.roulette_depth},
+        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, walk_limits(),
                     WalkHooks{
                     // At a diffuse or glossy surface: every light's samples there.
                     .on_surface = [&]<class M>(const M& material, const WalkVertex<T>& at) {
+                        if (at.last) return false; // (a light sample from here would make one segment too many)
                         const Crossing<T>& c = at.crossing();
-                        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
+                        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
                         // Each light sample: an area light's shares its path with the bounce
                         // that finds it where the walk goes on (the diffuse lobe's cos / pi, a
                         // glossy lobe's own density there). A diffuse lobe sums irradiance and
@@ -15921,7 +16056,8 @@ public:
                             // In a medium: each light's samples weighed by the phase function
                             // toward them (the bounce's density there, for MIS), no cosine;
                             // a point or spot light's shared with its equiangular samples.
-                            const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
+                            if (at.last) return false;
+                            const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
                             Rgb<T> gathered{T(0)};
                             scene_->for_each_light([&]<class L>(const L& light) {
                                 if constexpr (!is_delta_light<L>) {
@@ -15950,9 +16086,10 @@ public:
                             return go_on;
                         },
                         [&]<class Md>(const Md& medium, const WalkMediumStretch<T>& stretch) {
-                            // Each point or spot light's equiangular sample on the stretch.
+                            // Each point or spot light's equiangular sample on the stretch (a
+                            // vertex on it, and a segment from there to the light).
                             if constexpr (uniform_medium<Md>) {
-                                if (!config_.equiangular) return true;
+                                if (!config_.equiangular || stretch.vertices + 2 > config_.max_length) return true;
                                 scene_->for_each_light([&]<class L>(const L& light) {
                                     if constexpr (has_equiangular<L, Md>) sum += equiangular_sample(medium, light, stretch, sampling);
                                 });
@@ -15999,6 +16136,14 @@ public:
     }
 
 private:
+    /// The walk's limits: max_length alone (no count of surfaces or of scatterings in media
+    /// apart), and roulette_depth.
+    [[nodiscard]] WalkLimits walk_limits() const noexcept
+    {
+        constexpr int none = std::numeric_limits<int>::max();
+        return {.max_bounces = none, .max_medium_bounces = none, .roulette_depth = config_.roulette_depth, .max_length = config_.max_length};
+    }
+
     /// Whether a light is sampled along stretches of medium Md: a delta light at a point,
     /// in a uniform medium.
     template <class L, class Md>
@@ -16859,6 +17004,9 @@ public:
 
     /// A Reference's settings, shared by its two halves.
     struct Config {
+        /// Segments a path may have from the camera to the light, in either half (as
+        /// PathTracer's: 2 is direct light, vertices in media count as those on surfaces).
+        int max_length = 1024;
         /// Diffuse bounces either half may take (0: direct light only, as POV-Ray without
         /// radiosity; the light tracer then joins a path to the camera at its first diffuse
         /// surface only).
@@ -16867,7 +17015,7 @@ public:
 
     /// The reference for `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
     explicit Reference(const SceneT& scene, Config config = {}, Air air = {})
-        : scene_(&scene), config_(config), air_(std::move(air)), paths_(scene, {.max_diffuse_bounces = config.max_diffuse_bounces, .caustics_of_area_lights = false}, air_)
+        : scene_(&scene), config_(config), air_(std::move(air)), paths_(scene, {.max_length = config.max_length, .max_diffuse_bounces = config.max_diffuse_bounces, .caustics_of_area_lights = false}, air_)
     {
     }
     Reference(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
@@ -16879,7 +17027,7 @@ public:
     {
         render_into(sums, camera, paths_, config);
         const LightTracer<SceneT, Air> lights(
-            *scene_, {.paths = std::uint64_t(config.width) * std::uint64_t(config.height), .max_diffuse_bounces = config_.max_diffuse_bounces}, air_);
+            *scene_, {.paths = std::uint64_t(config.width) * std::uint64_t(config.height), .max_length = config_.max_length, .max_diffuse_bounces = config_.max_diffuse_bounces}, air_);
         lights.add_splats(sums, camera, config);
     }
 

@@ -251,3 +251,185 @@ TEST_CASE("regression: under the sun, a floor beyond the disk its light paths en
         CHECK(floor == doctest::Approx(expected).epsilon(1e-4));
     }
 }
+
+namespace {
+
+/// A random path of k segments, v_0 on the light to v_k at the camera, given by the
+/// numbers every strategy's density is made of: segment i (v_i to v_(i+1)) has squared
+/// length d2[i] and cosines a[i] at v_i and b[i] at v_(i+1); inner vertex v_i's lobe
+/// draws v_(i+1) coming from v_(i-1) with fw[i] per steradian and v_(i-1) coming from
+/// v_(i+1) with rv[i] (1 both ways at a delta vertex); the light is chosen with q, draws
+/// v_0 with density pa per area and the way to v_1 with pw, and a light sample from v_1
+/// finds v_0 with `direct` per steradian; the camera draws its ray with pc per steradian.
+struct RandomPath {
+    int k = 0;
+    std::vector<double> d2, a, b, fw, rv;
+    std::vector<bool> delta;
+    double q = 0, pa = 0, pw = 0, direct = 0, pc = 0;
+    bool point_light = false; ///< a point light (no area: pa = 1, direct d^2, a[0] = 1)
+};
+
+RandomPath random_path(Random& rng, int k, bool point_light, bool with_delta)
+{
+    const auto in = [&](double lo, double hi) { return lo + (hi - lo) * rng.uniform<double>(); };
+    RandomPath p;
+    p.k = k;
+    p.point_light = point_light;
+    for (int i = 0; i < k; ++i) {
+        p.d2.push_back(in(0.2, 5));
+        p.a.push_back(i == 0 && point_light ? 1.0 : in(0.05, 1));
+        p.b.push_back(in(0.05, 1));
+    }
+    p.delta.assign(std::size_t(k + 1), false);
+    p.fw.assign(std::size_t(k + 1), 0.0);
+    p.rv.assign(std::size_t(k + 1), 0.0);
+    for (int i = 1; i < k; ++i) {
+        p.delta[std::size_t(i)] = with_delta && rng.uniform<double>() < 0.35;
+        p.fw[std::size_t(i)] = p.delta[std::size_t(i)] ? 1.0 : in(0.02, 3);
+        p.rv[std::size_t(i)] = p.delta[std::size_t(i)] ? 1.0 : in(0.02, 3);
+    }
+    p.q = in(0.1, 1);
+    p.pa = point_light ? 1.0 : in(0.1, 4);
+    p.pw = in(0.05, 2);
+    p.direct = point_light ? p.d2[0] : in(0.05, 3);
+    p.pc = in(0.2, 6);
+    return p;
+}
+
+/// Every strategy's weight of a path by the balance heuristic over its densities, written
+/// out: strategy s of the connections (s light vertices; the light tracer's, s = k,
+/// counted N times a camera path) and merge i at inner vertex v_i, each the product of the
+/// densities per area of the vertices each side gives (v_0 by the light's emission, or by
+/// its light sample for s = 1), a merge's vertex given by both and counted eta times.
+struct Balance {
+    std::vector<double> connect; ///< by s, 0 to k
+    std::vector<double> merge;   ///< by i, 1 to k - 1 (0 where none)
+};
+
+Balance balance(const RandomPath& p, double light_paths, double eta)
+{
+    const int k = p.k;
+    const auto s_ = [](int i) { return std::size_t(i); };
+    // Densities per area: from the light (forward) and from the camera (backward).
+    std::vector<double> fwd(s_(k + 1), 0.0), bwd(s_(k + 1), 0.0);
+    fwd[0] = p.q * p.pa;
+    fwd[1] = p.pw * p.b[0] / p.d2[0];
+    for (int i = 1; i + 1 <= k; ++i) fwd[s_(i + 1)] = p.fw[s_(i)] * p.b[s_(i)] / p.d2[s_(i)];
+    bwd[s_(k - 1)] = p.pc * p.a[s_(k - 1)] / p.d2[s_(k - 1)];
+    for (int i = k - 1; i >= 1; --i) bwd[s_(i - 1)] = p.rv[s_(i)] * p.a[s_(i - 1)] / p.d2[s_(i - 1)];
+    const double direct_area = p.point_light ? 1.0 : p.direct * p.a[0] / p.d2[0];
+    const auto delta = [&](int i) { return i >= 1 && i <= k - 1 && p.delta[s_(i)]; };
+    Balance out;
+    double total = 0;
+    for (int s = 0; s <= k; ++s) {
+        // Impossible: a connection at a delta vertex, a point light met by a bounce.
+        bool possible = !(s == 0 && p.point_light);
+        if (s >= 1 && delta(s - 1)) possible = false;
+        if (s <= k - 1 && delta(s)) possible = false;
+        double density = possible ? 1.0 : 0.0;
+        for (int i = 0; i < s; ++i) density *= i == 0 && s == 1 ? direct_area : fwd[s_(i)];
+        for (int i = s; i <= k - 1; ++i) density *= bwd[s_(i)];
+        if (s == k) density *= light_paths;
+        out.connect.push_back(density);
+        total += density;
+    }
+    out.merge.assign(s_(k), 0.0);
+    for (int i = 1; i <= k - 1 && eta > 0; ++i) {
+        if (delta(i)) continue;
+        double density = eta;
+        for (int j = 0; j <= i; ++j) density *= fwd[s_(j)];
+        for (int j = i; j <= k - 1; ++j) density *= bwd[s_(j)];
+        out.merge[s_(i)] = density;
+        total += density;
+    }
+    for (double& w : out.connect) w /= total;
+    for (double& w : out.merge) w /= total;
+    return out;
+}
+
+/// The same weights as Bidirectional computes them: each subpath's VcmMis quantities
+/// vertex by vertex, and each strategy's weight from those and the densities where the
+/// subpaths meet.
+Balance recursive(const RandomPath& p, double light_paths, VcmMis<double>::Pass pass)
+{
+    const int k = p.k;
+    const auto s_ = [](int i) { return std::size_t(i); };
+    using Mis = VcmMis<double>;
+    // The light subpath: its quantities at v_0 .. v_(k-1).
+    std::vector<Mis> light(s_(k));
+    Mis l = Mis::light_start(p.q, p.pa, p.pw, p.a[0], false, p.point_light, pass);
+    for (int i = 1; i <= k - 1; ++i) {
+        if (i == 1 && !p.point_light) l.first_hit_of_area_light(p.direct, p.a[0], p.b[0]);
+        else l.arrive(p.d2[s_(i - 1)], p.b[s_(i - 1)]);
+        light[s_(i)] = l;
+        l.scattered(p.a[s_(i)], p.fw[s_(i)], p.rv[s_(i)], p.delta[s_(i)], pass);
+    }
+    // The camera subpath: its quantities at v_(k-1) .. v_0.
+    std::vector<Mis> camera(s_(k));
+    Mis c = Mis::camera_start(light_paths, p.pc);
+    for (int i = k - 1; i >= 0; --i) {
+        c.arrive(p.d2[s_(i)], p.a[s_(i)]);
+        camera[s_(i)] = c;
+        if (i >= 1) c.scattered(p.b[s_(i - 1)], p.rv[s_(i)], p.fw[s_(i)], p.delta[s_(i)], pass);
+    }
+    const double emission = p.q * p.pa * p.pw;
+    Balance out;
+    out.connect.assign(s_(k + 1), 0.0);
+    out.merge.assign(s_(k), 0.0);
+    const auto delta = [&](int i) { return i >= 1 && i <= k - 1 && p.delta[s_(i)]; };
+    if (!p.point_light) out.connect[0] = camera[0].met_light_weight(p.direct * p.a[0] / p.d2[0], emission);
+    if (!delta(1) || k == 1)
+        out.connect[1] = camera[1].light_sample_weight(p.direct, p.point_light, emission, p.b[0], p.a[0], p.rv[1], p.fw[1], pass);
+    for (int s = 2; s <= k - 1; ++s) {
+        if (delta(s - 1) || delta(s)) continue;
+        out.connect[s_(s)] = Mis::connection_weight(light[s_(s - 1)], camera[s_(s)], p.d2[s_(s - 1)], p.a[s_(s - 1)], p.b[s_(s - 1)], p.fw[s_(s - 1)],
+                                                    p.rv[s_(s - 1)], p.rv[s_(s)], p.fw[s_(s)], pass);
+    }
+    if (!delta(k - 1)) out.connect[s_(k)] = light[s_(k - 1)].splat_weight(p.pc * p.a[s_(k - 1)] / p.d2[s_(k - 1)], light_paths, p.rv[s_(k - 1)], pass);
+    for (int i = 1; i <= k - 1 && pass.vm > 0; ++i)
+        if (!delta(i)) out.merge[s_(i)] = Mis::merge_weight(light[s_(i)], camera[s_(i)], p.rv[s_(i)], p.fw[s_(i)], pass);
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("the MIS weights of every strategy of random paths are the balance heuristic over the paths' densities, and sum to 1 (BDPT and VCM)")
+{
+    // Paths of 2 to 7 segments with random lengths, cosines and lobe densities, an area
+    // or a point light, some vertices delta; VcmMis's recursive weights against the
+    // balance heuristic written out over every strategy's density (connections, light
+    // tracing counted N times, merges eta times).
+    Random rng(11, 3);
+    const double light_paths = 4096;
+    int paths = 0;
+    double worst = 0, worst_sum = 0;
+    for (const bool vcm : {false, true})
+        for (const bool point_light : {false, true})
+            for (const bool with_delta : {false, true})
+                for (int k = 2; k <= 7; ++k)
+                    for (int n = 0; n < 50; ++n) {
+                        const RandomPath p = random_path(rng, k, point_light, with_delta);
+                        const double eta = vcm ? 0.05 * 3.14159 * 0.01 * light_paths * (0.2 + rng.uniform<double>()) : 0.0;
+                        const VcmMis<double>::Pass pass{.vm = eta, .vc = vcm ? 1 / eta : 1 / (0.05 * 3.14159 * 0.01 * light_paths)};
+                        const Balance expected = balance(p, light_paths, eta);
+                        const Balance got = recursive(p, light_paths, pass);
+                        double sum = 0;
+                        for (std::size_t s = 0; s < expected.connect.size(); ++s) {
+                            worst = std::max(worst, std::abs(got.connect[s] - expected.connect[s]));
+                            sum += got.connect[s];
+                        }
+                        for (std::size_t i = 0; i < expected.merge.size(); ++i) {
+                            worst = std::max(worst, std::abs(got.merge[i] - expected.merge[i]));
+                            sum += got.merge[i];
+                        }
+                        // (A path no strategy finds, every vertex but the ends delta: no weights.)
+                        double any = 0;
+                        for (const double w : expected.connect) any += w;
+                        for (const double w : expected.merge) any += w;
+                        if (any > 0) worst_sum = std::max(worst_sum, std::abs(sum - 1));
+                        ++paths;
+                    }
+    MESSAGE(paths, " paths: largest difference from the balance heuristic ", worst, ", of a sum from 1 ", worst_sum);
+    CHECK(worst < 1e-9);
+    CHECK(worst_sum < 1e-9);
+}

@@ -76,10 +76,11 @@ TEST_CASE("light tracing: a mirror's image of a point light on a floor, L S D E,
     CHECK(worst_direct < 0.02); // the light's own term, by shadow rays (16 samples over the pixel)
 }
 
-TEST_CASE("light tracing with no diffuse bounce keeps L S D E alone: a ceiling added, the floor still reads the mirror image's closed form")
+TEST_CASE("light tracing with no diffuse bounce, or paths of 3 segments, keeps L S D E alone: a ceiling added, the floor still reads the mirror image's closed form")
 {
     // A diffuse ceiling at y = 4 the camera cannot see: it adds L S D(ceiling) D(floor) E
-    // paths, which a limit of 0 diffuse bounces leaves out (as POV-Ray's caustic photons).
+    // paths, which a limit of 0 diffuse bounces leaves out (as POV-Ray's caustic photons),
+    // and so does one of 3 segments (max_length); 2 leaves nothing to the light tracer.
     const auto scene = Scene{Lights{PointLight<float>{.position = {1, 2, 0}, .intensity = Rgb<float>(mirror_light_intensity)}},
                              Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
                              Object{Plane<float>({0, 1, 0}, 4), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
@@ -89,8 +90,10 @@ TEST_CASE("light tracing with no diffuse bounce keeps L S D E alone: a ceiling a
     const RenderConfig render_config{.width = size, .height = size, .threads = 2, .seed = 3, .progress = false};
     const Film first = render(camera, LightTracer(scene, {.paths = std::size_t(test::samples(2000000)), .max_diffuse_bounces = 0}), render_config);
     const Film all = render(camera, LightTracer(scene, {.paths = std::size_t(test::samples(2000000))}), render_config);
+    const Film three = render(camera, LightTracer(scene, {.paths = std::size_t(test::samples(2000000)), .max_length = 3}), render_config);
+    const Film two = render(camera, LightTracer(scene, {.paths = 1000, .max_length = 2}), render_config);
     const CameraRays<float> rays = camera.rays(size, size);
-    double first_sum = 0, all_sum = 0, expected = 0;
+    double first_sum = 0, all_sum = 0, three_sum = 0, two_sum = 0, expected = 0;
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) {
             for (int j = 0; j < 64; ++j) {
@@ -100,13 +103,18 @@ TEST_CASE("light tracing with no diffuse bounce keeps L S D E alone: a ceiling a
             }
             first_sum += first.at(x, y).x;
             all_sum += all.at(x, y).x;
+            three_sum += three.at(x, y).x;
+            two_sum += two.at(x, y).x;
         }
     CHECK(first_sum / expected == doctest::Approx(1.0).epsilon(test::resolved(0.01)));
+    CHECK(three_sum / expected == doctest::Approx(1.0).epsilon(test::resolved(0.01)));
+    CHECK(two_sum == 0);
     MESSAGE("with the ceiling's bounce: ", all_sum / expected);
     CHECK(all_sum / expected > 1.05);
     CHECK_THROWS_WITH_AS(LightTracer(scene, {.max_diffuse_bounces = -1}), doctest::Contains("LightTracerConfig max_diffuse_bounces must be >= 0, got -1"),
                          std::invalid_argument);
     CHECK_THROWS_WITH_AS(LightTracer(scene, {.paths = 0}), doctest::Contains("LightTracerConfig paths must be >= 1, got 0"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(LightTracer(scene, {.max_length = 0}), doctest::Contains("LightTracerConfig max_length must be >= 1, got 0"), std::invalid_argument);
 }
 
 TEST_CASE("the light tracer's image is the same bits for any thread count, and bad sizes are refused")

@@ -43,6 +43,21 @@ TEST_CASE("the path tracer's diffuse bounce limit: the furnace's partial sums 0.
                          std::invalid_argument);
 }
 
+TEST_CASE("the path tracer's length limit counts segments from the camera to the light: the furnace's partial sums, and 1 sees the light alone")
+{
+    // Paths of at most L segments: direct light (2) and L - 2 bounces, 0.5 (1 + ... +
+    // 0.5^(L - 2)) over the direct term 0.5; at 1 the camera sees the walls unlit.
+    const auto scene = test::furnace_scene(false);
+    for (const int length : {2, 3, 5}) {
+        CAPTURE(length);
+        const PathTracer tracer(scene, {.max_length = length});
+        const double mean = test::furnace_mean(false, [&](const Ray<float>& ray, Random& rng) { return tracer.radiance(ray, rng); }, int(test::samples(100000)), false);
+        CHECK(mean == doctest::Approx(2 - std::pow(0.5, length - 2)).epsilon(test::resolved(0.006)));
+    }
+    const PathTracer seen(scene, {.max_length = 1});
+    CHECK(test::furnace_mean(false, [&](const Ray<float>& ray, Random& rng) { return seen.radiance(ray, rng); }, 1000, false) == 0.0);
+}
+
 TEST_CASE("a path tracer's first bounce is Whitted's direct light, and the walls' colour bleeds into what they light")
 {
     // A lit floor alone: every path leaving it escapes, so the path tracer reads exactly
@@ -57,7 +72,7 @@ TEST_CASE("a path tracer's first bounce is Whitted's direct light, and the walls
         const Rgb<float> a = whitted.radiance(ray), b = tracer.radiance(ray, rng);
         for (int c = 0; c < 3; ++c) CHECK(b[c] == doctest::Approx(a[c]).epsilon(1e-5));
     }
-    CHECK_THROWS_WITH_AS(PathTracer(floor, {.max_depth = -1}), doctest::Contains("PathTracer max_depth must be >= 0, got -1"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(PathTracer(floor, {.max_length = 0}), doctest::Contains("PathTracer max_length must be >= 1, got 0"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(PathTracer(floor, {.roulette_depth = -2}), doctest::Contains("PathTracer roulette_depth must be >= 0, got -2"),
                          std::invalid_argument);
     CHECK_THROWS_WITH_AS(PathTracer(floor, {.dispersion_bands = 0}), doctest::Contains("PathTracer dispersion_bands must be in [1, 81], got 0"),

@@ -64,6 +64,45 @@ TEST_CASE("an area light's image in a mirror on a floor: the path tracer alone a
     CHECK(mean_both == doctest::Approx(expected).epsilon(test::resolved(0.01)));
 }
 
+// The same scene held to paths of 2 and 3 segments: the image in the mirror (E D S L) is
+// a path of 3, which the path tracer finds by its bounce and the reference by its light
+// tracer, while at 2 the floor has its direct light alone, the light samples' and the
+// bounces' that meet the light (MIS at the limit: a light met at the last vertex counts
+// with its weight against the light sample the vertex before took).
+TEST_CASE("the reference and the path tracer held to 2 or 3 segments: the area light's image in a mirror is a path of 3, against the closed form")
+{
+    constexpr double radiance = 4, reflectance = 0.8, h = 4;
+    const Scene scene{Lights{}, Object{Plane<double>({0, 1, 0}, 0), Diffuse<double>{.albedo = {.color = Rgb<double>(0.5)}, .kd = 1, .ka = 0}},
+                      Object{Box<double>({-0.1, 0, -5}, {0, 6, 5}), Mirror<double>{{.kr = Rgb<double>(reflectance)}}},
+                      Object{Quad<double>({0.5, h, -0.5}, {1, 0, 0}, {0, 0, 1}), Emissive<double>{.radiance = Rgb<double>(radiance)}}};
+    const Camera<double> camera{.position = {1.5, 3, 0}, .look_at = {1.5, 0, 0}, .up = {0, 0, -1}, .fov = 40};
+    constexpr int size = 8;
+    const RenderConfig config{.width = size, .height = size, .spp = int(test::samples(4096)), .threads = 2, .seed = 9, .progress = false};
+    const CameraRays<double> rays = camera.rays(size, size);
+    double direct = 0, image = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+            for (int j = 0; j < 64; ++j) {
+                const Ray<double> ray = rays.ray(x + (j % 8 + 0.5) / 8, y + (j / 8 + 0.5) / 8);
+                const Vec3<double> p = ray.origin + ray.direction * (-ray.origin.y / ray.direction.y);
+                direct += 0.5 / pi<double> * rectangle_irradiance(p, 0.5, 1.5, -0.5, 0.5, h, radiance) / 64;
+                image += 0.5 / pi<double> * reflectance * rectangle_irradiance(p, -1.5, -0.5, -0.5, 0.5, h, radiance) / 64;
+            }
+    MESSAGE("floor: direct ", direct / 64, ", the image ", image / 64);
+    for (const int length : {2, 3}) {
+        CAPTURE(length);
+        const double expected = length == 2 ? direct : direct + image;
+        const auto sum = [&](const Film& film) {
+            double total = 0;
+            for (int y = 0; y < size; ++y)
+                for (int x = 0; x < size; ++x) total += film.at(x, y).x;
+            return total;
+        };
+        CHECK(sum(render(camera, PathTracer(scene, {.max_length = length}), config)) == doctest::Approx(expected).epsilon(test::resolved(0.01)));
+        CHECK(sum(render(camera, Reference(scene, {.max_length = length}), config)) == doctest::Approx(expected).epsilon(test::resolved(0.01)));
+    }
+}
+
 // The same for a sky: a floor's diffuse bounce meets the environment through the mirror
 // (E D S Env), which the reference leaves to its light tracer (Env S D E), its photons
 // entering through the disk over the scene. Counted twice, the floor by the mirror would

@@ -177,3 +177,42 @@ TEST_CASE("in fog filling graded air a walk scatters along its curved path: it r
     CHECK(path == doctest::Approx(arc).epsilon(1e-5));
     CHECK(std::abs(double(reached) / n - expected) < 4 * standard_error);
 }
+
+TEST_CASE("WalkLimits::max_length: a walk reaches exactly that many vertices, at surfaces and in fog alike, each told its length and the last flagged")
+{
+    // A closed white room filled with fog that does not absorb, and no roulette: nothing
+    // ends a walk but the limit, so every walk has max_length vertices, of both kinds.
+    const auto scene = closed_room(1.0);
+    const FilledAir<Fog<double>> air{.medium = {.scattering = Rgb<double>(1.5), .phase = {.g = 0.3}}};
+    const SpectralBands<double> bands(1);
+    Random rng(7, 1);
+    for (const int limit : {1, 2, 5}) {
+        CAPTURE(limit);
+        int wrong_lengths = 0, wrong_last = 0, surfaces = 0, in_fog = 0;
+        for (int i = 0; i < 2000; ++i) {
+            int vertices = 0;
+            const auto seen = [&](int length, bool last) {
+                ++vertices;
+                wrong_lengths += length != vertices;
+                wrong_last += last != (vertices == limit);
+            };
+            random_walk<Transport::radiance>(scene, air, bands, Ray<double>{{0, 0, 0}, uniform_sphere<double>(rng)}, Rgb<double>(1), rng,
+                                             {.roulette_depth = 1000, .max_length = limit},
+                                             WalkHooks{.on_surface = [&](const auto&, const WalkVertex<double>& at) {
+                                                           ++surfaces;
+                                                           seen(at.length, at.last);
+                                                           return true;
+                                                       },
+                                                       .on_medium = [&](const auto&, const WalkMediumVertex<double>& at) {
+                                                           ++in_fog;
+                                                           seen(at.length, at.last);
+                                                           return true;
+                                                       }});
+            REQUIRE(vertices == limit);
+        }
+        CHECK(wrong_lengths == 0);
+        CHECK(wrong_last == 0);
+        CHECK(surfaces > 0);
+        CHECK(in_fog > 0);
+    }
+}

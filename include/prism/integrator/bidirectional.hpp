@@ -111,6 +111,137 @@ struct BidirectionalConfig {
     bool weighted = true; ///< see `only`
 };
 
+/// The multiple importance weights of Bidirectional: a subpath's three running
+/// quantities (Georgiev's technical report, section 5; SmallVCM's dVCM, dVC, dVM), how a
+/// subpath's vertices update them, and each strategy's balance-heuristic weight from them
+/// and the densities where the two subpaths meet. Densities are those of the draws, per
+/// steradian, and the cosines at the true normals; a light's are chosen with its
+/// probability among the lights (the light paths'), where a light sample takes every
+/// light. tests/integrator/bidirectional.cpp checks the weights of every strategy of
+/// random paths against the balance heuristic over the paths' densities, written out.
+template <Scalar T>
+struct VcmMis {
+    T dvcm = T(0), dvc = T(0), dvm = T(0);
+
+    /// What a pass's merging is worth: eta = merge_weight pi r^2 N (0 without merging)
+    /// and 1 / eta (0 without connections).
+    struct Pass {
+        T vm = T(0); ///< eta: merging's weight against a connection
+        T vc = T(0); ///< 1 / eta
+    };
+
+    /// A light subpath's start: the light chosen with probability q drew its point with
+    /// density pdf_area (1 for a point or from infinity) and its direction with
+    /// pdf_direction, at cosine `cos` to its surface (1 for a point or from infinity);
+    /// `delta`: no bounce can find the light (a point, spot or parallel light). The
+    /// light's own density toward the first hit is completed there (first_hit).
+    [[nodiscard]] static VcmMis light_start(T q, T pdf_area, T pdf_direction, T cos, bool from_infinity, bool delta, Pass pass) noexcept
+    {
+        const T pdf = q * pdf_area * pdf_direction;
+        VcmMis m;
+        // (31)-(33) begun, delta lights as (48)-(50): the light sample that would find the
+        // light's vertex over the emission's density; a delta light's vertex no bounce finds.
+        m.dvcm = T(1) / pdf;
+        if (from_infinity && !delta) m.dvcm *= pdf_direction; // an environment's sample is by direction
+        m.dvc = delta ? T(0) : (from_infinity ? T(1) : cos) / pdf;
+        m.dvm = m.dvc * pass.vc;
+        return m;
+    }
+
+    /// A camera subpath's start: N light paths a pass, and the camera's density of its
+    /// ray per steradian.
+    [[nodiscard]] static VcmMis camera_start(T light_paths, T camera_pdf) noexcept { return {light_paths / camera_pdf, T(0), T(0)}; }
+
+    /// Arriving at a vertex `distance2` (squared) along the segment, at cosine `cos` to
+    /// its true normal: the report's (31)-(33) completed now the segment is known.
+    void arrive(T distance2, T cos) noexcept
+    {
+        dvcm *= distance2;
+        dvcm /= cos;
+        dvc /= cos;
+        dvm /= cos;
+    }
+
+    /// A light subpath's first vertex, from an area light: a light sample from there
+    /// finds the light's point with the density `direct` per steradian (the light's own
+    /// pdf), at cosine cos_light there; the squared distance cancels the segment's.
+    void first_hit_of_area_light(T direct, T cos_light, T cos) noexcept
+    {
+        dvcm *= direct * cos_light;
+        arrive(T(1), cos);
+    }
+
+    /// Scattered at a vertex: the next direction drawn with density pdf_forward (per
+    /// steradian; 1 for a delta), at cosine cos_out to the true normal, where a path
+    /// arriving the other way would draw the last direction with pdf_reverse: the
+    /// report's (34)-(36), or (53)-(55) for a delta.
+    void scattered(T cos_out, T pdf_forward, T pdf_reverse, bool delta, Pass pass) noexcept
+    {
+        if (delta) {
+            dvcm = T(0);
+            dvc *= cos_out;
+            dvm *= cos_out;
+        } else {
+            const T g = cos_out / pdf_forward;
+            dvc = g * (dvc * pdf_reverse + dvcm + pass.vm);
+            dvm = g * (dvm * pdf_reverse + dvcm * pass.vc + T(1));
+            dvcm = T(1) / pdf_forward;
+        }
+    }
+
+    /// s = 0: a camera subpath (these quantities) meets a light, which a light sample from
+    /// the vertex before finds with density `direct` per unit area (per steradian from
+    /// infinity) and the light paths leave by this way with density `emission` (the
+    /// light's probability, area and direction: pdf_area pdf_direction), (42)-(43).
+    [[nodiscard]] T met_light_weight(T direct, T emission) const noexcept { return T(1) / (T(1) + direct * dvcm + emission * dvc); }
+
+    /// s = 1: a camera vertex (these quantities) takes a light sample of density `direct`
+    /// per steradian (d^2 for a point light, 1 for a parallel one: `delta`), at cosines
+    /// cos_camera and cos_light to the true normals; the light paths leave by the
+    /// sample's way with `emission` (as met_light_weight's); the vertex's lobe draws the
+    /// sample's direction with bsdf_forward and, arriving from the light, the camera's
+    /// way with bsdf_reverse. (44)-(45).
+    [[nodiscard]] T light_sample_weight(T direct, bool delta, T emission, T cos_camera, T cos_light, T bsdf_forward, T bsdf_reverse, Pass pass) const noexcept
+    {
+        const T w_light = delta ? T(0) : bsdf_forward / direct;
+        const T w_camera = emission * cos_camera / (direct * cos_light) * (pass.vm + dvcm + dvc * bsdf_reverse);
+        return T(1) / (w_light + T(1) + w_camera);
+    }
+
+    /// s >= 2, t >= 2: a light vertex (`light`) joined to a camera vertex (`camera`) by a
+    /// segment of squared length d2 at cosines cos_light and cos_camera; the camera
+    /// vertex's lobe draws the segment with camera_forward (and its own arrival, from the
+    /// light, with camera_reverse), the light vertex's with light_forward and
+    /// light_reverse. (40)-(41).
+    [[nodiscard]] static T connection_weight(const VcmMis& light, const VcmMis& camera, T d2, T cos_light, T cos_camera, T light_forward, T light_reverse,
+                                             T camera_forward, T camera_reverse, Pass pass) noexcept
+    {
+        const T w_light = camera_forward * cos_light / d2 * (pass.vm + light.dvcm + light.dvc * light_reverse);
+        const T w_camera = light_forward * cos_camera / d2 * (pass.vm + camera.dvcm + camera.dvc * camera_reverse);
+        return T(1) / (w_light + T(1) + w_camera);
+    }
+
+    /// t = 1: a light vertex (these quantities) joined to the camera, which would draw it
+    /// with `camera_area_pdf` per unit area (its image-plane density 1 / A taken to the
+    /// ray's solid angle, 1 / cos_c^3, and on to the surface); N light paths a pass; the
+    /// vertex's lobe draws its own arrival, coming from the camera, with bsdf_reverse.
+    /// (46)-(47).
+    [[nodiscard]] T splat_weight(T camera_area_pdf, T light_paths, T bsdf_reverse, Pass pass) const noexcept
+    {
+        return T(1) / (T(1) + camera_area_pdf / light_paths * (pass.vm + dvcm + dvc * bsdf_reverse));
+    }
+
+    /// A merge of a light vertex (`light`, arrived along d) at a camera vertex
+    /// (`camera`): the camera vertex's lobe draws -d with camera_forward and its own
+    /// arrival, coming the light path's way, with camera_reverse. (37)-(39).
+    [[nodiscard]] static T merge_weight(const VcmMis& light, const VcmMis& camera, T camera_forward, T camera_reverse, Pass pass) noexcept
+    {
+        const T w_light = light.dvcm * pass.vc + light.dvm * camera_forward;
+        const T w_camera = camera.dvcm * pass.vc + camera.dvm * camera_reverse;
+        return T(1) / (w_light + T(1) + w_camera);
+    }
+};
+
 /// Whether Bidirectional renders scenes of type SceneT: surfaces only (no scattering
 /// medium), no dispersive material, no light that casts its own shadow.
 template <class SceneT>
@@ -226,7 +357,7 @@ private:
         Hit<T> hit;          ///< where
         Vec3<T> d;           ///< unit, the direction the light path arrived along
         Rgb<T> beta;         ///< its throughput: the light's power estimate carried to here
-        T dvcm, dvc, dvm;    ///< the MIS quantities (Georgiev's report, section 5)
+        VcmMis<T> mis;       ///< the MIS quantities
         T outside_index;     ///< a transmissive material's outer index
         int length;          ///< segments from the light
     };
@@ -238,8 +369,7 @@ private:
         HashGrid<T> grid;                ///< the vertices by position, for merging
         T count = T(0);          ///< N, the light paths traced
         T radius = T(0);         ///< the merging radius
-        T mis_vm = T(0);         ///< eta_VCM = pi r^2 N (0 without merging): merging's weight against a connection
-        T mis_vc = T(0);         ///< 1 / eta_VCM (0 without connections)
+        typename VcmMis<T>::Pass mis; ///< what merging is worth against a connection
         T vm_normalization = T(0); ///< 1 / (pi r^2 N)
         bool per_pixel = false;    ///< light path i is pixel i's (paired_with_pixels)
         int width = 0, height = 0; ///< the image's size
@@ -257,7 +387,7 @@ private:
     /// A subpath's running state: throughput and the MIS quantities.
     struct PathState {
         Rgb<T> beta;
-        T dvcm, dvc, dvm;
+        VcmMis<T> mis;
         int length = 0;         ///< segments so far
         bool specular = true;   ///< every scattering so far was a delta
     };
@@ -354,16 +484,6 @@ private:
         }
     }
 
-    /// A subpath's MIS quantities at a vertex it met after `distance` along d, where the
-    /// true normal is n: the report's (31)-(33), completed now the segment is known.
-    static void arrive(PathState& state, T distance2, T cos) noexcept
-    {
-        state.dvcm *= distance2;
-        state.dvcm /= cos;
-        state.dvc /= cos;
-        state.dvm /= cos;
-    }
-
     /// Scatter a subpath at a vertex: draw the next direction, update the throughput and
     /// the MIS quantities (the report's (34)-(36), or (53)-(55) for a delta), and play
     /// Russian roulette past roulette_length (outside the weights). Nothing: it ends.
@@ -373,18 +493,8 @@ private:
     {
         const std::optional<VertexSample<T>> s = vertex.sample(rng);
         if (!s || !(max_component(s->weight) > T(0)) || !(max_component(s->weight) < infinity<T>)) return std::nullopt;
-        const T cos_out = std::abs(dot(s->direction, c.normal));
-        if (s->delta) {
-            state.dvcm = T(0);
-            state.dvc *= cos_out;
-            state.dvm *= cos_out;
-        } else {
-            const T g = cos_out / s->pdf_forward;
-            state.dvc = g * (state.dvc * s->pdf_reverse + state.dvcm + light.mis_vm);
-            state.dvm = g * (state.dvm * s->pdf_reverse + state.dvcm * light.mis_vc + T(1));
-            state.dvcm = T(1) / s->pdf_forward;
-            state.specular = false;
-        }
+        state.mis.scattered(std::abs(dot(s->direction, c.normal)), s->pdf_forward, s->pdf_reverse, s->delta, light.mis);
+        if (!s->delta) state.specular = false;
         state.beta *= s->weight;
         if (state.length >= config_.roulette_length) {
             // Roulette by how much of the throughput this scattering kept (at most 1).
@@ -409,8 +519,8 @@ private:
         light.radius = T(double(first_radius(rays, config.width, config.height)) * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)));
         light.radius = std::max(light.radius, sphere_.radius * T(1e-7));
         const T eta = pi<T> * light.radius * light.radius * light.count;
-        light.mis_vm = merging ? T(config_.merge_weight) * eta : T(0);
-        light.mis_vc = T(1) / (T(config_.merge_weight) * eta);
+        light.mis.vm = merging ? T(config_.merge_weight) * eta : T(0);
+        light.mis.vc = T(1) / (T(config_.merge_weight) * eta);
         light.vm_normalization = T(1) / eta;
         // Blocks of paths, each into its own list (joined in order) and its worker's splats.
         constexpr std::size_t block = 4096;
@@ -490,12 +600,7 @@ private:
         if (!(pdf > T(0)) || !(pdf < infinity<T>) || !(e.cos > T(0)) || !(max_component(e.radiance) > T(0))) return;
         PathState state;
         state.beta = e.radiance * (e.cos / pdf);
-        // (31)-(33) begun, delta lights as (48)-(50): the light sample that would find the
-        // light's vertex over the emission's density; a delta light's vertex no bounce finds.
-        state.dvcm = T(1) / pdf;
-        if (e.from_infinity && !delta_light) state.dvcm *= e.pdf_direction; // an environment's sample is by direction
-        state.dvc = delta_light ? T(0) : (e.from_infinity ? T(1) : e.cos) / pdf;
-        state.dvm = state.dvc * light.mis_vc;
+        state.mis = VcmMis<T>::light_start(q, e.pdf_area, e.pdf_direction, e.cos, e.from_infinity, delta_light, light.mis);
         walk(e.ray, scene_->media_at(e.ray.origin), state.beta, Transport::importance, rng, light_blocks,
              [&]<class M>(const M&, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T outside_index) -> std::optional<Vec3<T>> {
                  const Crossing<T>& c = hit.crossing;
@@ -504,14 +609,13 @@ private:
                  ++state.length;
                  if (state.length == 1 && source) {
                      // An area light's sample from here finds its point with the density
-                     // pdf_W cos_0 / d^2 per unit area; the d^2 cancels the segment's.
-                     if constexpr (SceneT::has_emitters) state.dvcm *= scene_->area_lights().pdf(*source, c.point) * e.cos;
-                     arrive(state, T(1), cos);
+                     // pdf_W cos_0 / d^2 per unit area.
+                     if constexpr (SceneT::has_emitters) state.mis.first_hit_of_area_light(scene_->area_lights().pdf(*source, c.point), e.cos, cos);
                  } else {
-                     arrive(state, state.length > 1 || !e.from_infinity ? distance * distance : T(1), cos);
+                     state.mis.arrive(state.length > 1 || !e.from_infinity ? distance * distance : T(1), cos);
                  }
                  if (vertex.connectible()) {
-                     out.push_back({hit, d, state.beta, state.dvcm, state.dvc, state.dvm, outside_index, state.length});
+                     out.push_back({hit, d, state.beta, state.mis, outside_index, state.length});
                      if (state.length + 1 <= config_.max_length) connect_to_camera(out.back(), vertex, light, rays, window, rng, splats);
                  }
                  if (state.length + 2 > config_.max_length) return std::nullopt;
@@ -542,8 +646,7 @@ private:
         // The camera's density of this vertex per unit area: its image-plane density 1 / A
         // taken to the ray's solid angle (1 / cos_c^3) and on to the surface.
         const T camera_area_pdf = T(1) / (rays.pixel_area() * cube(seen->cos)) * std::abs(dot(to_camera, c.normal)) / d2;
-        const T w_light = camera_area_pdf / light.count * (light.mis_vm + lv.dvcm + lv.dvc * f.pdf_reverse);
-        const T weight = weighed(T(1) / (T(1) + w_light));
+        const T weight = weighed(lv.mis.splat_weight(camera_area_pdf, light.count, f.pdf_reverse, light.mis));
         const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
                                                                                        seen->distance * (T(1) - shadow_epsilon<T>));
         if (!(max_component(v) > T(0))) return;
@@ -569,8 +672,7 @@ private:
         state.beta = Rgb<T>(T(1));
         const T camera = camera_pdf(rays, ray.direction);
         if (!(camera > T(0))) return sum;
-        state.dvcm = light.count / camera;
-        state.dvc = state.dvm = T(0);
+        state.mis = VcmMis<T>::camera_start(light.count, camera);
         Vec3<T> previous = ray.origin;
         walk(ray, scene_->media_at(ray.origin), state.beta, Transport::radiance, rng, 0,
              [&]<class M>(const M& material, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T) -> std::optional<Vec3<T>> {
@@ -578,7 +680,7 @@ private:
                  const T cos = std::abs(dot(d, c.normal));
                  if (!(cos > T(0))) return std::nullopt;
                  ++state.length;
-                 arrive(state, distance * distance, cos);
+                 state.mis.arrive(distance * distance, cos);
                  const int t = state.length + 1;
                  if constexpr (emits<M>) {
                      // s = 0: the path met an area light, (42)-(43).
@@ -589,7 +691,7 @@ private:
                              const AreaLights<SceneT> lights = scene_->area_lights();
                              const T direct = lights.pdf(hit, previous) * cos / (distance * distance);
                              const T emission = area_light_probability() * lights.emission_pdf(hit, -d).both();
-                             weight = T(1) / (T(1) + direct * state.dvcm + emission * state.dvc);
+                             weight = state.mis.met_light_weight(direct, emission);
                          }
                          sum += weighed(weight) * state.beta * le;
                      }
@@ -620,7 +722,7 @@ private:
                          if (state.length > 0) {
                              const T direct = l.pdf(w);
                              const T emission = reached_from_entry(sphere_, w, out.origin) ? light_probability_[i] * l.emission_pdf(-w, sphere_).both() : T(0);
-                             weight = T(1) / (T(1) + direct * state.dvcm + emission * state.dvc);
+                             weight = state.mis.met_light_weight(direct, emission);
                          }
                          sum += weighed(weight) * state.beta * le;
                      }
@@ -669,9 +771,8 @@ private:
             // point, 1 for a parallel light).
             const bool at_infinity = !(s.distance < infinity<T>);
             const T direct = s.delta() ? (at_infinity ? T(1) : s.distance * s.distance) : s.pdf;
-            const T w_light = s.delta() ? T(0) : f.pdf_forward / direct;
-            const T w_camera = emission * std::abs(dot(s.wi, c.normal)) / (direct * cos_light) * (light.mis_vm + state.dvcm + state.dvc * f.pdf_reverse);
-            const T weight = weighed(T(1) / (w_light + T(1) + w_camera));
+            const T weight =
+                weighed(state.mis.light_sample_weight(direct, s.delta(), emission, std::abs(dot(s.wi, c.normal)), cos_light, f.pdf_forward, f.pdf_reverse, light.mis));
             const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, s.wi),
                                                                                            s.distance * (T(1) - shadow_epsilon<T>));
             sum += (weight * f.cos) * f.f * s.irradiance * v;
@@ -703,11 +804,8 @@ private:
             });
             if (far.black()) continue;
             const T cos_camera = std::abs(dot(w, c.normal)), cos_light = std::abs(dot(w, lc.normal));
-            const T camera_to_light = camera.pdf_forward * cos_light / d2; // the camera vertex's density of the light vertex, per area
-            const T light_to_camera = far.pdf_forward * cos_camera / d2;
-            const T w_light = camera_to_light * (light.mis_vm + lv.dvcm + lv.dvc * far.pdf_reverse);
-            const T w_camera = light_to_camera * (light.mis_vm + state.dvcm + state.dvc * camera.pdf_reverse);
-            const T weight = weighed(T(1) / (w_light + T(1) + w_camera));
+            const T weight = weighed(VcmMis<T>::connection_weight(lv.mis, state.mis, d2, cos_light, cos_camera, far.pdf_forward, far.pdf_reverse, camera.pdf_forward,
+                                                                  camera.pdf_reverse, light.mis));
             const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, w),
                                                                                            distance * (T(1) - shadow_epsilon<T>));
             if (!(max_component(v) > T(0))) continue;
@@ -727,9 +825,7 @@ private:
             if (lv.length + state.length > config_.max_length) return;
             const VertexValue<T> camera = vertex.value(-lv.d);
             if (camera.black()) return;
-            const T w_light = lv.dvcm * light.mis_vc + lv.dvm * camera.pdf_forward;
-            const T w_camera = state.dvcm * light.mis_vc + state.dvm * camera.pdf_reverse;
-            sum += (T(1) / (w_light + T(1) + w_camera)) * camera.f * lv.beta;
+            sum += VcmMis<T>::merge_weight(lv.mis, state.mis, camera.pdf_forward, camera.pdf_reverse, light.mis) * camera.f * lv.beta;
         });
         return sum * light.vm_normalization;
     }

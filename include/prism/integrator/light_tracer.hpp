@@ -55,7 +55,10 @@ namespace prism {
 /// A LightTracer's settings: paths a pass, bounces, wavelength bands.
 struct LightTracerConfig {
     std::size_t paths = 1000000;   ///< light paths per pass, aimed at the specular objects
-    int max_bounces = 256;         ///< surfaces a path may meet; Russian roulette ends it long before
+    /// Segments a path may have from the light to the camera, vertices in media counted
+    /// as those on surfaces (as PathTracer's: docs/guide.md); below 3 there are none
+    /// (L S D E is the shortest). Russian roulette ends a path long before the default.
+    int max_length = 1024;
     int max_diffuse_bounces = 256; ///< as PathTracer's: 0 joins a path to the camera at its first diffuse surface only
     int dispersion_bands = SpectralBands<float>::max_count; ///< as PhotonTracerConfig's
 };
@@ -76,6 +79,7 @@ public:
         scene.validate();
         air_.validate();
         if (config.paths == 0) detail::throw_invalid("LightTracerConfig paths must be >= 1, got 0");
+        if (config.max_length < 1) detail::throw_invalid("LightTracerConfig max_length must be >= 1, got ", config.max_length);
         if (config.max_diffuse_bounces < 0)
             detail::throw_invalid("LightTracerConfig max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
         detail::validate(tracer_config(1, 0, 1));
@@ -111,6 +115,7 @@ public:
         if (std::uint64_t(config.spp) > std::numeric_limits<std::uint64_t>::max() / per_pass)
             detail::throw_invalid("LightTracer: ", config.spp, " passes of ", per_pass, " paths overflow a 64-bit path index");
         const std::uint64_t count = std::uint64_t(config.spp) * per_pass;
+        if (config_.max_length < 3) return; // no path it finds is that short
         const PassRange traced{passes.first * per_pass, passes.last * per_pass};
         const detail::PhotonTracer<SceneT, Air> tracer(*scene_, tracer_config(count, config.seed, config.threads), air_);
         const T area = rays.pixel_area();
@@ -230,7 +235,9 @@ private:
     {
         return {.global_photons = 0,
                 .caustic_photons = count,
-                .max_bounces = config_.max_bounces,
+                .max_bounces = std::numeric_limits<int>::max(),
+                .max_medium_bounces = std::numeric_limits<int>::max(),
+                .max_length = std::max(config_.max_length - 1, 1), // a vertex joined to the camera by one segment more
                 .shadow_photons = false,
                 .seed = seed,
                 .threads = threads,

@@ -41,6 +41,8 @@
 #include <prism/transport/random_walk.hpp>
 #include <prism/spectrum/bands.hpp>
 
+#include <limits>
+
 namespace prism {
 
 /// How a path tracer finds the light of area lights at a diffuse vertex.
@@ -61,7 +63,11 @@ public:
 
     /// A PathTracer's settings.
     struct Config {
-        int max_depth = 256; ///< surfaces a path may meet; Russian roulette ends it long before
+        /// Segments a path may have from the camera to the light (1: lights seen directly;
+        /// 2: direct light; ...), vertices in media counted as those on surfaces: every
+        /// prism estimator counts its depth so (docs/guide.md). Russian roulette ends a
+        /// path long before the default.
+        int max_length = 1024;
         /// Surfaces a path scatters at before Russian roulette on its throughput may end it
         /// (path_roulette; pbrt's depth 1, Mitsuba's rr_depth 5). Roulette at the first
         /// bounces cuts short the paths a caustic is found by, on their way to the light;
@@ -98,7 +104,7 @@ public:
     {
         scene.validate();
         air_.validate();
-        if (config.max_depth < 0) detail::throw_invalid("PathTracer max_depth must be >= 0, got ", config.max_depth);
+        if (config.max_length < 1) detail::throw_invalid("PathTracer max_length must be >= 1, got ", config.max_length);
         if (config.roulette_depth < 0) detail::throw_invalid("PathTracer roulette_depth must be >= 0, got ", config.roulette_depth);
         if (config.max_diffuse_bounces < 0) detail::throw_invalid("PathTracer max_diffuse_bounces must be >= 0, got ", config.max_diffuse_bounces);
         if (config.area_light_grid < 1 || config.area_light_grid > 64)
@@ -113,12 +119,13 @@ public:
     {
         Rgb<T> sum{T(0)};
         const LightSampling sampling{&rng, config_.area_light_grid};
-        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth, .roulette_depth = config_.roulette_depth},
+        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, walk_limits(),
                     WalkHooks{
                     // At a diffuse or glossy surface: every light's samples there.
                     .on_surface = [&]<class M>(const M& material, const WalkVertex<T>& at) {
+                        if (at.last) return false; // (a light sample from here would make one segment too many)
                         const Crossing<T>& c = at.crossing();
-                        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
+                        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
                         // Each light sample: an area light's shares its path with the bounce
                         // that finds it where the walk goes on (the diffuse lobe's cos / pi, a
                         // glossy lobe's own density there). A diffuse lobe sums irradiance and
@@ -181,7 +188,8 @@ public:
                             // In a medium: each light's samples weighed by the phase function
                             // toward them (the bounce's density there, for MIS), no cosine;
                             // a point or spot light's shared with its equiangular samples.
-                            const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces && !at.last;
+                            if (at.last) return false;
+                            const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
                             Rgb<T> gathered{T(0)};
                             scene_->for_each_light([&]<class L>(const L& light) {
                                 if constexpr (!is_delta_light<L>) {
@@ -210,9 +218,10 @@ public:
                             return go_on;
                         },
                         [&]<class Md>(const Md& medium, const WalkMediumStretch<T>& stretch) {
-                            // Each point or spot light's equiangular sample on the stretch.
+                            // Each point or spot light's equiangular sample on the stretch (a
+                            // vertex on it, and a segment from there to the light).
                             if constexpr (uniform_medium<Md>) {
-                                if (!config_.equiangular) return true;
+                                if (!config_.equiangular || stretch.vertices + 2 > config_.max_length) return true;
                                 scene_->for_each_light([&]<class L>(const L& light) {
                                     if constexpr (has_equiangular<L, Md>) sum += equiangular_sample(medium, light, stretch, sampling);
                                 });
@@ -259,6 +268,14 @@ public:
     }
 
 private:
+    /// The walk's limits: max_length alone (no count of surfaces or of scatterings in media
+    /// apart), and roulette_depth.
+    [[nodiscard]] WalkLimits walk_limits() const noexcept
+    {
+        constexpr int none = std::numeric_limits<int>::max();
+        return {.max_bounces = none, .max_medium_bounces = none, .roulette_depth = config_.roulette_depth, .max_length = config_.max_length};
+    }
+
     /// Whether a light is sampled along stretches of medium Md: a delta light at a point,
     /// in a uniform medium.
     template <class L, class Md>

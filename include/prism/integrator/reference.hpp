@@ -35,6 +35,9 @@ public:
 
     /// A Reference's settings, shared by its two halves.
     struct Config {
+        /// Segments a path may have from the camera to the light, in either half (as
+        /// PathTracer's: 2 is direct light, vertices in media count as those on surfaces).
+        int max_length = 1024;
         /// Diffuse bounces either half may take (0: direct light only, as POV-Ray without
         /// radiosity; the light tracer then joins a path to the camera at its first diffuse
         /// surface only).
@@ -43,7 +46,7 @@ public:
 
     /// The reference for `scene` (which must outlive it) in `air`; throws std::invalid_argument, naming the parameter, for a bad scene, air or setting.
     explicit Reference(const SceneT& scene, Config config = {}, Air air = {})
-        : scene_(&scene), config_(config), air_(std::move(air)), paths_(scene, {.max_diffuse_bounces = config.max_diffuse_bounces, .caustics_of_area_lights = false}, air_)
+        : scene_(&scene), config_(config), air_(std::move(air)), paths_(scene, {.max_length = config.max_length, .max_diffuse_bounces = config.max_diffuse_bounces, .caustics_of_area_lights = false}, air_)
     {
     }
     Reference(const SceneT&& scene, Config config = {}, Air air = {}) = delete;
@@ -55,7 +58,7 @@ public:
     {
         render_into(sums, camera, paths_, config);
         const LightTracer<SceneT, Air> lights(
-            *scene_, {.paths = std::uint64_t(config.width) * std::uint64_t(config.height), .max_diffuse_bounces = config_.max_diffuse_bounces}, air_);
+            *scene_, {.paths = std::uint64_t(config.width) * std::uint64_t(config.height), .max_length = config_.max_length, .max_diffuse_bounces = config_.max_diffuse_bounces}, air_);
         lights.add_splats(sums, camera, config);
     }
 

@@ -57,6 +57,11 @@ struct PhotonTracerConfig {
     std::size_t caustic_photons = 200000; ///< emitted toward specular objects for the caustic map
     int max_bounces = 16;                 ///< bounces at surfaces followed at most
     int max_medium_bounces = 1000;        ///< scatterings in media followed at most (WalkLimits'; in fog that absorbs, roulette ends a photon long before)
+    /// Segments a photon's path may take from the light, vertices at surfaces and in media
+    /// counted together (WalkLimits::max_length; whichever limit comes first ends it): the
+    /// light tracer's paths, joined to the camera by one segment more, are held to its
+    /// max_length by this.
+    int max_length = std::numeric_limits<int>::max();
     bool shadow_photons = true; ///< store shadow photons in the global map
     std::uint64_t seed = 0; ///< with the light, fixes every photon
     /// The photons' numbers (core/sampler.hpp): photon i of a map is sample i of the
@@ -89,6 +94,7 @@ inline void validate(const PhotonTracerConfig& config)
     }
     if (config.max_bounces < 0) throw_invalid("PhotonTracerConfig max_bounces must be >= 0, got ", config.max_bounces);
     if (config.max_medium_bounces < 0) throw_invalid("PhotonTracerConfig max_medium_bounces must be >= 0, got ", config.max_medium_bounces);
+    if (config.max_length < 1) throw_invalid("PhotonTracerConfig max_length must be >= 1, got ", config.max_length);
     if (config.dispersion_bands < 1 || config.dispersion_bands > SpectralBands<float>::max_count)
         throw_invalid("PhotonTracerConfig dispersion_bands must be in [1, ", SpectralBands<float>::max_count, "], got ", config.dispersion_bands);
 }
@@ -220,7 +226,7 @@ private:
         const bool without_falloff = photon.without_falloff;
         const auto stored = [&](const auto& at) { return without_falloff ? at.power * (at.travelled * at.travelled) : at.power; };
         random_walk(scene_, air_, bands_, photon.ray, e->power / T(double(count) * p) * photon.weight, rng,
-                    WalkLimits{.max_bounces = config_.max_bounces, .max_medium_bounces = config_.max_medium_bounces},
+                    WalkLimits{.max_bounces = config_.max_bounces, .max_medium_bounces = config_.max_medium_bounces, .max_length = config_.max_length},
                     WalkHooks{.on_surface = [&]<class M>(const M& material, const WalkVertex<T>& at) { return visit(material, at, stored(at)); },
                               .on_medium = [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) { return visit_medium(medium, at, stored(at)); }});
     }

@@ -35,6 +35,7 @@
 
 #include <algorithm>
 #include <concepts>
+#include <limits>
 #include <optional>
 #include <type_traits>
 #include <variant>
@@ -60,6 +61,7 @@ struct WalkVertex {
     Random& rng;               ///< the walk's stream, for a caller that draws at the vertex (a thin lens's point)
     T outside_index;          ///< the index of refraction on a transmissive material's outer side (1 for others; glossy_eta)
     int surface_bounces;      ///< the non-delta scatterings other than through frosted glass (a glossy interface)
+    int length;               ///< segments from the walk's start to here: the vertices so far, this one included (surfaces and media alike)
 
     /// Where the walk met the surface, with its normal and side.
     [[nodiscard]] const Crossing<T>& crossing() const noexcept { return hit.crossing; }
@@ -103,6 +105,7 @@ struct WalkMediumVertex {
     const Ray<T>& stretch;    ///< the stretch of medium the flight was drawn over: from where it starts, unit direction
     T stretch_length;         ///< its length (may be infinite)
     const Rgb<T>& entering;   ///< what the path carried as it entered the stretch (the flight's draw was weighed by it)
+    int length;               ///< segments from the walk's start to here, as WalkVertex's
 
     /// Whether every scattering so far was specular.
     [[nodiscard]] bool specular_only() const noexcept { return diffuse_bounces == 0; }
@@ -121,6 +124,7 @@ struct WalkMediumStretch {
     int diffuse_bounces;      ///< non-delta scatterings so far
     const MediumStack& media; ///< the transmissive objects the path is inside of
     Random& rng;               ///< the walk's stream
+    int vertices;             ///< the vertices so far (the stretch starts at the last, or at the walk's start): segments to its start
 };
 
 /// What a walk does where it scatters in a medium when its caller says nothing: it goes on.
@@ -182,10 +186,17 @@ struct WalkLimits {
     /// Surfaces a camera path (Transport::radiance) scatters at before Russian roulette on
     /// its throughput may end it (path_roulette); a photon's roulette is per bounce.
     int roulette_depth = 2;
+    /// Segments the walk may take: it reaches at most this many vertices (scatterings at
+    /// surfaces and in media alike; an interface it passes is none) and scatters at none
+    /// past the one before, so that a camera path's light met at its last vertex, or a
+    /// light sample taken at the one before, makes a path of at most max_length segments
+    /// (the depth every prism estimator counts: docs/guide.md).
+    int max_length = std::numeric_limits<int>::max();
 };
 
-/// Walk from `ray` carrying `power` through at most limits.max_bounces + 1 surfaces and
-/// limits.max_medium_bounces + 1 scatterings in media, calling `hooks` (WalkHooks) where
+/// Walk from `ray` carrying `power` through at most limits.max_bounces + 1 surfaces,
+/// limits.max_medium_bounces + 1 scatterings in media and limits.max_length vertices of
+/// either kind (whichever comes first), calling `hooks` (WalkHooks) where
 /// things happen. `Mode`: whether the path is a photon's or a camera's (scatter_photon); a
 /// camera path is ended by path_roulette after limits.roulette_depth surfaces. Scatterings
 /// in media count toward their own limit, and toward roulette_depth with the surfaces (a
@@ -204,6 +215,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
     Vec3<T> last_point = ray.origin;
     T last_pdf = T(0);
     int medium_bounces = 0; // of the bounces, those in media
+    int length = 0;         // vertices so far, at surfaces and in media
     for (int bounce = 0; bounce - medium_bounces <= limits.max_bounces; ++bounce) {
         rng.bounce(bounce); // each bounce its own block of the sampler's dimensions
         // In the air a path follows the air's curve; inside objects, straight lines.
@@ -223,7 +235,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                     const Ray<T> stretch{piece.at(t0), piece.direction};
                     const Rgb<T> entering = power;
                     if constexpr (std::is_invocable_v<decltype(hooks.on_medium)&, const Md&, const WalkMediumStretch<T>&>)
-                        hooks.on_medium(medium, WalkMediumStretch<T>{.ray = stretch, .length = t1 - t0, .power = power, .diffuse_bounces = diffuse_bounces, .media = media, .rng = rng});
+                        hooks.on_medium(medium, WalkMediumStretch<T>{.ray = stretch, .length = t1 - t0, .power = power, .diffuse_bounces = diffuse_bounces, .media = media, .rng = rng, .vertices = length});
                     const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
                     power *= flight.weight;
                     if (!flight.scattered) return true;
@@ -231,7 +243,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                     const Vec3<T>& d = piece.direction;
                     const Vec3<T> p = piece.origin + s * d;
                     travelled += before + s;
-                    const bool last = medium_bounces == limits.max_medium_bounces;
+                    const bool last = medium_bounces == limits.max_medium_bounces || length + 1 >= limits.max_length;
                     in_medium = InMedium::absorbed;
                     if (!hooks.on_medium(medium, WalkMediumVertex<T>{.point = p,
                                                                      .direction = d,
@@ -249,7 +261,8 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                                                                      .surface_bounces = surface_bounces,
                                                                      .stretch = stretch,
                                                                      .stretch_length = t1 - t0,
-                                                                     .entering = entering}))
+                                                                     .entering = entering,
+                                                                     .length = length + 1}))
                         return false;
                     if constexpr (Mode == Transport::importance) {
                         // A photon keeps its power: it goes on with the chance of the draw's
@@ -267,6 +280,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                     last_pdf = next.pdf;
                     ++diffuse_bounces;
                     ++surface_bounces;
+                    ++length;
                     if (direct) first_specular = false;
                     in_medium = InMedium::scattered;
                     return false;
@@ -276,7 +290,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
             if (in_medium == InMedium::absorbed) return;
             if (in_medium == InMedium::scattered) {
-                if (++medium_bounces > limits.max_medium_bounces) return;
+                if (++medium_bounces > limits.max_medium_bounces || length >= limits.max_length) return;
                 direct = false;
                 continue;
             }
@@ -292,7 +306,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
         const Next next_step = scene.visit_material(*hit, [&]<class M>(const M& material) -> Next {
             // What the medium it travelled in let through, before anything else.
             attenuate_segment(scene, media, material, c, segment, power);
-            const bool last = bounce - medium_bounces == limits.max_bounces;
+            const bool last = bounce - medium_bounces == limits.max_bounces || length + 1 >= limits.max_length;
             // The walk at this surface, as the hooks see it (outside_index: 1 until known).
             const auto vertex = [&](T outside_index) {
                 return WalkVertex<T>{.hit = *hit,
@@ -309,7 +323,8 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
                                      .last = last,
                                      .rng = rng,
                                      .outside_index = outside_index,
-                                     .surface_bounces = surface_bounces};
+                                     .surface_bounces = surface_bounces,
+                                     .length = length + 1};
             };
             if constexpr (emits<M>) hooks.on_emitter(material, vertex(T(1)));
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
@@ -372,6 +387,7 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             if (next->diffuse) ++diffuse_bounces;
             if (next->diffuse && !(has_glossy<M> && transmits<M>)) ++surface_bounces;
             if (direct) first_specular = !next->diffuse;
+            ++length;
             if constexpr (transmits<M>) {
                 if (dot(next->direction, n) < T(0)) media = face.beyond; // refracted
             }
@@ -379,7 +395,10 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             }
         });
         if (next_step == Next::absorbed) return;
-        if (next_step == Next::scattered) direct = false;
+        if (next_step == Next::scattered) {
+            if (length >= limits.max_length) return;
+            direct = false;
+        }
     }
 }
 
