@@ -6,9 +6,11 @@
 // Beside it, the same prism of a glass that does not disperse (n = n_d): one white beam.
 // And the prism in haze (prism_haze): a narrow white beam from a projector (a spot light)
 // crosses the hazy room, visible by the light the haze scatters, enters the prism and
-// leaves it as a fan of colours in the air down to the floor. Photons keep their
-// wavelength where they scatter in the haze, and the volume photons the fan leaves are
-// read along each camera ray by the beam radiance estimate.
+// leaves it as a fan of colours in the air down to the floor, by progressive photon
+// mapping: the beam is the haze's single scattering of the projector, found along each
+// camera ray by equiangular samples; photons keep their wavelength where they scatter in
+// the haze, and the volume photons the fan leaves are read along each camera ray by the
+// beam radiance estimate, at a radius that shrinks as the passes go.
 #include "cli.hpp"
 #include "methods.hpp"
 
@@ -83,7 +85,7 @@ auto hazy_scene()
     using namespace prism;
     const Vec3<T> beam = sunbeam();
     const Vec3<T> face_middle = centre + rotated({T(-0.5), std::sqrt(T(3)) / 2 * T(0.5), 0}, tilt);
-    return Scene{Lights{SpotLight<T>{.position = face_middle - T(6) * beam, .direction = beam, .intensity = Rgb<T>(T(20000)), .inner_angle = T(0.6),
+    return Scene{Lights{SpotLight<T>{.position = face_middle - T(6) * beam, .direction = beam, .intensity = Rgb<T>(T(50000)), .inner_angle = T(0.6),
                                      .outer_angle = T(0.8)}},
                  Object{Plane<T>({0, 1, 0}, 0), Diffuse<T>{.albedo = {.color = Rgb<T>(T(0.85))}, .kd = 1, .ka = 0}},
                  Object{prism_solid(), DispersiveDielectric<T>{.glass = glass::f2<double>}}};
@@ -117,17 +119,25 @@ int main(int argc, char** argv)
         const auto hazy = hazy_scene();
         using Air = FilledAir<Fog<T>>;
         const Air haze{.medium = {.scattering = Rgb<T>(T(0.08)), .phase = {.g = T(0.5)}}, .region = {{-12, 0, -10}, {14, 7, 6}}};
-        PhotonMapper<std::remove_cvref_t<decltype(hazy)>, Air>::Config config;
-        config.tracing = examples::photon_tracer_config(options);
-        config.tracing.global_photons = 50 * options.photons;       // the white beam's haze is global photons' (L M)
-        config.tracing.caustic_photons = 4 * options.caustic_photons; // the fan's, caustic photons' (L S S M)
-        config.caustic.radius = float(options.radius);
-        config.gather_rays = 0;
-        config.volume_radius = 0.05f;
-        const PhotonMapper mapper(hazy, config, haze);
-        std::printf("prism_haze: %zu volume, %zu global and %zu caustic photons\n", mapper.maps().volume.size(), mapper.maps().global.size(),
-                    mapper.maps().caustic.size());
-        examples::save(examples::timed_render("prism_haze", camera, mapper, options), options);
+        // Progressive photon mapping: the white beam is single scattering (equiangular
+        // samples kept to the projector's cone: clean at any pass count); the fan in the haze
+        // and the spectrum on the floor are the caustic photons' (L S S M, L S S D), which
+        // fresh photons each pass and a shrinking radius bring to a clean fan; light
+        // scattered more than once, the global photons' at a wider radius.
+        using H = std::remove_cvref_t<decltype(hazy)>;
+        ProgressiveConfig<H, Air> config;
+        config.pass.tracing = examples::photon_tracer_config(options);
+        config.pass.tracing.global_photons = options.photons;                 // a pass's
+        config.pass.tracing.caustic_photons = 2 * options.caustic_photons / 5; // aimed at the prism
+        config.pass.caustic.radius = float(options.radius);
+        config.pass.global.radius = 0.25f;
+        config.pass.volume_radius = 0.05f;
+        config.pass.indirect_volume_radius = 0.3f;
+        config.pass.single_scattering = true;
+        const ProgressivePhotonMapper<H, Air> mapper(hazy, config, haze);
+        examples::Options haze_options = options;
+        haze_options.render.spp = 12 * options.render.spp; // passes
+        examples::save(examples::timed_render("prism_haze", camera, mapper, haze_options), haze_options);
         return 0;
     });
 }

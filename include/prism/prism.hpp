@@ -111,6 +111,7 @@
 #include <prism/spectrum/cie_tables.hpp>
 #include <prism/spectrum/metals.hpp>
 #include <prism/transport/direct.hpp>
+#include <prism/transport/equiangular.hpp>
 #include <prism/transport/first_surface.hpp>
 #include <prism/transport/media.hpp>
 #include <prism/transport/path_vertex.hpp>

@@ -13491,7 +13491,9 @@ struct BidirectionalConfig {
 /// random paths against the balance heuristic over the paths' densities, written out.
 template <Scalar T>
 struct VcmMis {
-    T dvcm = T(0), dvc = T(0), dvm = T(0);
+    T dvcm = T(0); ///< the report's d^VCM: the reverse density of the vertex before, over this subpath's forward density of the vertex
+    T dvc = T(0);  ///< d^VC: the same summed over the connections further back
+    T dvm = T(0);  ///< d^VM: the same over the merges further back
 
     /// What a pass's merging is worth: eta = merge_weight pi r^2 N (0 without merging)
     /// and 1 / eta (0 without connections).
@@ -14320,7 +14322,7 @@ class Photon {
 public:
     /// What a stored photon is.
     enum Flags : std::uint8_t {
-        direct = 1,  ///< first hit after leaving the light
+        direct = 1,  ///< first hit after leaving the light (for a volume photon: its first scattering)
         caustic = 2, ///< reached this diffuse surface only by specular bounces (L S+ D)
         shadow = 4,  ///< a shadow photon: where the straight continuation of a direct photon's path met a further surface
         volume = 8,  ///< scattered in a medium, not on a surface (its normal is its direction)
@@ -15395,7 +15397,7 @@ private:
             if (caustic != caustic_pass) return !caustic_pass;
             const Vec3<float> travelling(at.direction);
             out.push_back({Vec3<float>(at.point), Rgb<float>(power), -travelling, -travelling,
-                           std::uint8_t(Photon::volume | (caustic ? Photon::caustic : 0))});
+                           std::uint8_t(Photon::volume | (caustic ? Photon::caustic : 0) | (at.direct ? Photon::direct : 0))});
             return !caustic_pass;
         });
     }
@@ -15877,6 +15879,108 @@ Overload(F...) -> Overload<F...>;
 
 } // namespace prism
 
+// ---- prism/transport/equiangular.hpp ----
+// Equiangular sampling (Kulla and Fajardo 2012): a distance along a stretch of medium drawn
+// uniformly in the angle the stretch subtends at a point light, so that its density falls as
+// 1 / d^2 from the light, as the light's own does: thin haze in a narrow beam is found by it
+// where free flights pass the beam by. And the part of a ray a spot light's cone holds, to
+// which such samples of a spot light are kept (a camera ray that crosses a narrow beam
+// subtends a small share of its angles inside the cone).
+
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+
+namespace prism {
+
+/// Equiangular sampling of the stretch [t0, t1] of a ray (unit direction; t1 may be
+/// infinite) toward a point c: in the angle theta seen from c, uniform, so that the
+/// density in t is h / ((theta1 - theta0) (h^2 + (t - along)^2)), h the point's distance
+/// from the ray's line.
+template <Scalar T>
+struct Equiangular {
+    T along;  ///< where the stretch's line passes nearest the point, along the ray
+    T h;      ///< the point's distance from the line
+    T theta0; ///< the angle of the stretch's start seen from the point, from the nearest pass
+    T theta1; ///< the same of its end
+
+    /// The stretch from the ray's origin to `extent` along it.
+    Equiangular(const Ray<T>& stretch, T extent, const Vec3<T>& c) noexcept : Equiangular(stretch, T(0), extent, c) {}
+
+    /// The stretch [t0, t1] of the ray.
+    Equiangular(const Ray<T>& ray, T t0, T t1, const Vec3<T>& c) noexcept
+    {
+        const Vec3<T> to = c - ray.origin;
+        along = dot(to, ray.direction);
+        // (A light on the stretch's line: kept off it, as the airlight does.)
+        h = std::max(length(to - along * ray.direction), T(1e-6) * (T(1) + std::abs(along)));
+        theta0 = std::atan((t0 - along) / h);
+        theta1 = t1 < infinity<T> ? std::atan((t1 - along) / h) : pi<T> / T(2);
+    }
+    /// The point at u in [0, 1).
+    [[nodiscard]] T sample(T u) const noexcept { return along + h * std::tan(theta0 + u * (theta1 - theta0)); }
+    /// The density of t.
+    [[nodiscard]] T pdf(T t) const noexcept { return theta1 > theta0 ? h / ((theta1 - theta0) * (h * h + (t - along) * (t - along))) : T(0); }
+};
+
+/// The smallest interval of [t0, t1] along a ray (unit direction; t1 may be infinite) that
+/// holds every point of it inside the cone from `apex` about the unit `axis` of half-angle
+/// acos(cos_half), nothing where the ray misses the cone there. The cone's one nappe, where
+/// dot(p - apex, axis) >= |p - apex| cos_half: the roots of the quadratic its boundary gives
+/// split the stretch, and each piece is inside or out by its middle. Where the ray enters
+/// the cone twice, the interval spans the gap between (a light is 0 there: the samples stay
+/// unbiased). A cone of half-angle 90 degrees or more keeps the whole stretch.
+template <Scalar T>
+[[nodiscard]] std::optional<Interval<T>> within_cone(const Ray<T>& ray, T t0, T t1, const Vec3<T>& apex, const Vec3<T>& axis, T cos_half) noexcept
+{
+    if (!(t0 < t1)) return std::nullopt;
+    if (!(cos_half > T(0))) return Interval<T>{t0, t1};
+    const Vec3<T> v = ray.origin - apex;
+    const T k2 = cos_half * cos_half;
+    const T da = dot(ray.direction, axis), va = dot(v, axis);
+    const auto inside = [&](T t) {
+        const Vec3<T> p = v + t * ray.direction;
+        const T along = dot(p, axis);
+        return along >= T(0) && along * along >= k2 * length_squared(p);
+    };
+    // The breakpoints: the stretch's ends, the boundary's roots, where the ray crosses the apex's plane.
+    std::array<T, 5> cuts{t0, t1, t0, t0, t0};
+    int n = 2;
+    const T a = da * da - k2, b = T(2) * (va * da - k2 * dot(v, ray.direction)), c = va * va - k2 * length_squared(v);
+    if (std::abs(a) > T(1e-12)) {
+        const T disc = b * b - T(4) * a * c;
+        if (disc >= T(0)) {
+            const T root = std::sqrt(disc);
+            const T q = b >= T(0) ? T(-0.5) * (b + root) : T(-0.5) * (b - root); // (no cancellation)
+            cuts[std::size_t(n++)] = q / a;
+            if (q != T(0)) cuts[std::size_t(n++)] = c / q;
+        }
+    } else if (b != T(0)) {
+        cuts[std::size_t(n++)] = -c / b;
+    }
+    if (da != T(0)) cuts[std::size_t(n++)] = -va / da;
+    for (int i = 2; i < n; ++i) cuts[std::size_t(i)] = std::clamp(cuts[std::size_t(i)], t0, t1);
+    std::sort(cuts.begin(), cuts.begin() + n);
+    Interval<T> kept;
+    for (int i = 0; i + 1 < n; ++i) {
+        const T lo = cuts[std::size_t(i)], hi = cuts[std::size_t(i + 1)];
+        if (!(lo < hi)) continue;
+        const T middle = hi < infinity<T> ? lo + (hi - lo) / T(2) : T(2) * std::abs(lo) + T(1);
+        if (!inside(middle)) continue;
+        kept.min = std::min(kept.min, lo);
+        kept.max = std::max(kept.max, hi);
+    }
+    if (kept.empty()) return std::nullopt;
+    // A little wider at each end than the roots say (clamped to the stretch): a root's
+    // rounding must not cut off a sliver inside the cone.
+    const T pad = T(1e-5) * (T(1) + std::abs(kept.min) + (kept.max < infinity<T> ? std::abs(kept.max) : T(0)));
+    return Interval<T>{std::max(t0, kept.min - pad), std::min(t1, kept.max + pad)};
+}
+
+} // namespace prism
+
 // ---- prism/integrator/path_tracer.hpp ----
 // PathTracer: the unbiased half of prism's reference estimator (the light tracer is the
 // other half, integrator/light_tracer.hpp).
@@ -16152,27 +16256,6 @@ private:
         medium.flight_pdf(power, T(0));
     };
 
-    /// Equiangular sampling of a stretch (ray from its start, unit direction, length may
-    /// be infinite) toward a point c: in the angle theta seen from c, uniform, so that
-    /// the density in t is h / ((theta1 - theta0) (h^2 + (t - along)^2)), h the point's
-    /// distance from the ray's line.
-    struct Equiangular {
-        T along, h, theta0, theta1;
-        Equiangular(const Ray<T>& stretch, T extent, const Vec3<T>& c) noexcept
-        {
-            const Vec3<T> to = c - stretch.origin;
-            along = dot(to, stretch.direction);
-            // (A light on the stretch's line: kept off it, as the airlight does.)
-            h = std::max(length(to - along * stretch.direction), T(1e-6) * (T(1) + std::abs(along)));
-            theta0 = std::atan(-along / h);
-            theta1 = extent < infinity<T> ? std::atan((extent - along) / h) : pi<T> / T(2);
-        }
-        /// The point at u in [0, 1).
-        [[nodiscard]] T sample(T u) const noexcept { return along + h * std::tan(theta0 + u * (theta1 - theta0)); }
-        /// The density of t.
-        [[nodiscard]] T pdf(T t) const noexcept { return theta1 > theta0 ? h / ((theta1 - theta0) * (h * h + (t - along) * (t - along))) : T(0); }
-    };
-
     /// One equiangular sample of `light` along a stretch of uniform `medium`: its light
     /// scattered once toward the path there, through the medium's transmittance back to
     /// the stretch's start, over the sample's density, weighed against the free flight's
@@ -16312,6 +16395,14 @@ public:
         /// blotches where a few photons near the camera would each fill a disk of the
         /// image. 0: volume_radius. (Volumetric caustics keep volume_radius.)
         float indirect_volume_radius = 0.0f;
+        /// Light of a point or spot light scattered once toward the camera by a medium
+        /// (L M E), found along every camera ray by equiangular samples (a spot light's kept
+        /// to its cone: transport/equiangular.hpp) and shadow rays, as the path tracer finds
+        /// it, in place of the volume photons that carry it (flagged direct), which the
+        /// beam estimate then leaves out: a narrow beam in haze comes out clean at a few
+        /// samples a pixel. Glass stops the shadow rays: light through glass stays the
+        /// caustic photons'. Off: every volume photon counts, as before.
+        bool single_scattering = false;
     };
 
     /// Traces the photon maps (the expensive part), then renders with them.
@@ -16495,6 +16586,7 @@ private:
                 const float r_caustic = config_.volume_radius, r_other = indirect_volume_radius();
                 const float r2_caustic = r_caustic * r_caustic, r2_other = r_other * r_other;
                 maps_.volume.near_beam(Vec3<float>(piece.origin), df, float(t0), float(t1), std::max(r_caustic, r_other), [&](const Photon& photon, float t, float d2) {
+                    if (config_.single_scattering && (photon.flags & Photon::direct) != 0) return; // single_scattering's
                     const bool is_caustic = (photon.flags & Photon::caustic) != 0;
                     if (d2 > (is_caustic ? r2_caustic : r2_other)) return;
                     const Rgb<float> light = Rgb<float>(transmittance_along(medium, piece, t0, T(t))) * float(medium.phase.value(T(dot(photon.toward_source(), df)))) * photon.power();
@@ -16504,14 +16596,14 @@ private:
                 other /= pi<float> * r_other * r_other;
                 scattered.caustic += seen * Rgb<T>(caustic);
                 scattered.indirect += seen * Rgb<T>(other);
+                if (config_.single_scattering) scattered.direct += seen * single_scattering(medium, piece, t0, t1, rng);
                 seen *= transmittance_along(medium, piece, t0, t1);
                 return true;
             });
             LightParts<T> parts = !hit ? LightParts<T>{.direct = scene_->escaped(segment.direction)}
                                        : scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
             parts *= seen;
-            parts.caustic += scattered.caustic;
-            parts.indirect += scattered.indirect;
+            parts += scattered;
             return parts;
         } else {
             const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
@@ -16530,6 +16622,38 @@ private:
     {
         if constexpr (air_scatters<Air>) return !air_.bounds().contains(p);
         else return (void)p, true;
+    }
+
+    /// Light of the point and spot lights scattered once toward the ray at one equiangular
+    /// sample of each along the piece [t0, t1] of a medium (Config::single_scattering):
+    /// sigma_s phase T(t0, t) L over the sample's density, the light's shadow ray taking
+    /// what the scene and its air let through.
+    template <class Md>
+    [[nodiscard]] Rgb<T> single_scattering(const Md& medium, const Ray<T>& piece, T t0, T t1, Random& rng) const noexcept
+    {
+        Rgb<T> out{T(0)};
+        scene_->for_each_light([&]<class L>(const L& light) {
+            if constexpr (is_delta_light<L> && requires { light.position; }) {
+                std::optional<Interval<T>> span = Interval<T>{t0, t1};
+                if constexpr (requires { light.cone(); }) {
+                    const auto cone = light.cone();
+                    span = within_cone(piece, t0, t1, cone.apex, cone.axis, cone.cos_half);
+                }
+                const T u = rng.uniform<T>(); // (drawn for every light, so that the numbers do not depend on where the ray goes)
+                if (!span) return;
+                const Equiangular<T> rule(piece, span->min, span->max, light.position);
+                const T t = rule.sample(u);
+                const T density = rule.pdf(t);
+                if (!(t >= span->min && t <= span->max && density > T(0) && density < infinity<T>)) return;
+                const Vec3<T> p = piece.at(t);
+                for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, p, LightSampling{}, [&](const LightSample<T>& s, const Rgb<T>& v) {
+                    const T phase = medium.phase.value(dot(piece.direction, s.wi));
+                    out += (phase / density) * transmittance_along(medium, piece, t0, t) * medium.scattering_at(p) * v *
+                           air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{p, s.wi}, s.distance) * s.irradiance;
+                });
+            }
+        });
+        return out;
     }
 
     /// The beam estimate's radius for the global pass's volume photons.
@@ -18121,6 +18245,16 @@ struct SpotLight {
     {
         return {T(1), dot(leaving, axis()) >= cosine(outer_angle) ? outer_cone_pdf() : T(0)};
     }
+
+    /// The cone the light reaches (nothing beyond it): apex, unit axis and the cosine of
+    /// its half-angle (transport/equiangular.hpp's within_cone keeps samples to it).
+    struct Cone {
+        Vec3<T> apex; ///< the light's position
+        Vec3<T> axis; ///< unit, the way it points
+        T cos_half;   ///< the cosine of the outer angle
+    };
+    /// See Cone.
+    [[nodiscard]] Cone cone() const noexcept { return {position, axis(), cosine(outer_angle)}; }
 
     /// Throws std::invalid_argument, naming the parameter, for a non-finite position, a zero
     /// direction, a negative intensity, or angles outside 0 <= inner <= outer <= 180.

@@ -2,6 +2,7 @@
 #include <prism/integrator/photon_mapper.hpp>
 #include <prism/prism.hpp>
 
+#include "../airlight.hpp"
 #include "../effort.hpp"
 #include "../furnace.hpp"
 #include "../glossy_scenes.hpp"
@@ -635,4 +636,58 @@ TEST_CASE("the photon mapper's volume furnace in ground fog of varying density r
         MESSAGE("channel ", c, ": ", mean[c]);
         CHECK(mean[c] == doctest::Approx(1).epsilon(test::resolved(0.01)).scale(0));
     }
+}
+
+TEST_CASE("the photon mapper's single scattering: a point light's airlight integral to 0.5 % with no photon, and a narrow spot beam as the path tracer reads it")
+{
+    // tests/airlight.hpp's point light in unbounded fog, no photons: single_scattering's
+    // equiangular samples alone read the airlight integral.
+    using T = float;
+    const auto airlit = test::airlight_scene();
+    PhotonMapper<std::remove_cvref_t<decltype(airlit)>, FilledAir<Fog<T>>>::Config config;
+    config.tracing = {.global_photons = 0, .caustic_photons = 0};
+    config.gather_rays = 0;
+    config.single_scattering = true;
+    const PhotonMapper mapper(airlit, config, test::airlight_fog());
+    {
+        Random rng(1, 2);
+        Rgb<double> sum{0};
+        const int n = int(test::samples(400000));
+        for (int i = 0; i < n; ++i) sum += Rgb<double>(mapper.radiance(test::airlight_ray(), rng));
+        for (int c = 0; c < 3; ++c) {
+            CAPTURE(c);
+            CHECK(sum[c] / n == doctest::Approx(test::airlight(c)).epsilon(test::resolved(0.005)).scale(0));
+        }
+    }
+    // A spot light of 5 degrees in thin haze, a ray crossing its beam from the side over a
+    // black floor: the samples kept to the cone against the path tracer's equiangular
+    // samples over the whole ray (single scattering only: no diffuse bounce, no photon).
+    // The path tracer's standard error at 400 000 samples is 0.67 % (its own test), the
+    // photon mapper's far smaller: 2.5 % holds the difference at 3.5 standard errors.
+    const auto spot = Scene{Lights{SpotLight<T>{.position = {0, 3, 0}, .direction = {0, -1, 0}, .intensity = Rgb<T>(50), .inner_angle = 4, .outer_angle = 5}},
+                            Object{Plane<T>({0, 1, 0}, 0), Diffuse<T>{.albedo = {.color = Rgb<T>(0.0f)}, .kd = 1, .ka = 0}}};
+    const FilledAir<Fog<T>> haze{.medium = {.scattering = Rgb<T>(0.05f), .phase = {.g = 0.3f}}};
+    PhotonMapper<std::remove_cvref_t<decltype(spot)>, FilledAir<Fog<T>>>::Config beam;
+    beam.tracing = {.global_photons = 0, .caustic_photons = 0};
+    beam.gather_rays = 0;
+    beam.single_scattering = true;
+    const PhotonMapper kept(spot, beam, haze);
+    const PathTracer tracer(spot, {.max_diffuse_bounces = 0}, haze);
+    const Ray<T> ray{{-3, 1.5f, 0.05f}, {1, 0, 0}};
+    Random rng(3, 4);
+    double by_mapper = 0, by_tracer = 0, squares = 0;
+    const int n = int(test::samples(400000));
+    for (int i = 0; i < n; ++i) {
+        const double x = kept.radiance(ray, rng).x;
+        by_mapper += x;
+        squares += x * x;
+        by_tracer += tracer.radiance(ray, rng).x;
+    }
+    by_mapper /= n;
+    by_tracer /= n;
+    const double error = std::sqrt((squares / n - by_mapper * by_mapper) / n) / by_mapper;
+    MESSAGE("beam: photon mapper ", by_mapper, " (standard error ", 100 * error, " %), path tracer ", by_tracer);
+    CHECK(by_mapper > 0);
+    CHECK(by_mapper == doctest::Approx(by_tracer).epsilon(test::resolved(0.025)));
+    CHECK(error < 0.002);
 }

@@ -121,7 +121,9 @@ struct BidirectionalConfig {
 /// random paths against the balance heuristic over the paths' densities, written out.
 template <Scalar T>
 struct VcmMis {
-    T dvcm = T(0), dvc = T(0), dvm = T(0);
+    T dvcm = T(0); ///< the report's d^VCM: the reverse density of the vertex before, over this subpath's forward density of the vertex
+    T dvc = T(0);  ///< d^VC: the same summed over the connections further back
+    T dvm = T(0);  ///< d^VM: the same over the merges further back
 
     /// What a pass's merging is worth: eta = merge_weight pi r^2 N (0 without merging)
     /// and 1 / eta (0 without connections).

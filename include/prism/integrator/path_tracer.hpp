@@ -34,6 +34,7 @@
 #include <prism/core/overload.hpp>
 #include <prism/core/random.hpp>
 #include <prism/transport/direct.hpp>
+#include <prism/transport/equiangular.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/medium/air.hpp>
 #include <prism/transport/media.hpp>
@@ -282,27 +283,6 @@ private:
     static constexpr bool has_equiangular = uniform_medium<Md> && is_delta_light<L> && requires(const L& light, const Md& medium, const Rgb<T>& power) {
         light.position;
         medium.flight_pdf(power, T(0));
-    };
-
-    /// Equiangular sampling of a stretch (ray from its start, unit direction, length may
-    /// be infinite) toward a point c: in the angle theta seen from c, uniform, so that
-    /// the density in t is h / ((theta1 - theta0) (h^2 + (t - along)^2)), h the point's
-    /// distance from the ray's line.
-    struct Equiangular {
-        T along, h, theta0, theta1;
-        Equiangular(const Ray<T>& stretch, T extent, const Vec3<T>& c) noexcept
-        {
-            const Vec3<T> to = c - stretch.origin;
-            along = dot(to, stretch.direction);
-            // (A light on the stretch's line: kept off it, as the airlight does.)
-            h = std::max(length(to - along * stretch.direction), T(1e-6) * (T(1) + std::abs(along)));
-            theta0 = std::atan(-along / h);
-            theta1 = extent < infinity<T> ? std::atan((extent - along) / h) : pi<T> / T(2);
-        }
-        /// The point at u in [0, 1).
-        [[nodiscard]] T sample(T u) const noexcept { return along + h * std::tan(theta0 + u * (theta1 - theta0)); }
-        /// The density of t.
-        [[nodiscard]] T pdf(T t) const noexcept { return theta1 > theta0 ? h / ((theta1 - theta0) * (h * h + (t - along) * (t - along))) : T(0); }
     };
 
     /// One equiangular sample of `light` along a stretch of uniform `medium`: its light

@@ -105,6 +105,16 @@ struct SpotLight {
         return {T(1), dot(leaving, axis()) >= cosine(outer_angle) ? outer_cone_pdf() : T(0)};
     }
 
+    /// The cone the light reaches (nothing beyond it): apex, unit axis and the cosine of
+    /// its half-angle (transport/equiangular.hpp's within_cone keeps samples to it).
+    struct Cone {
+        Vec3<T> apex; ///< the light's position
+        Vec3<T> axis; ///< unit, the way it points
+        T cos_half;   ///< the cosine of the outer angle
+    };
+    /// See Cone.
+    [[nodiscard]] Cone cone() const noexcept { return {position, axis(), cosine(outer_angle)}; }
+
     /// Throws std::invalid_argument, naming the parameter, for a non-finite position, a zero
     /// direction, a negative intensity, or angles outside 0 <= inner <= outer <= 180.
     constexpr void validate() const

@@ -29,7 +29,7 @@ class Photon {
 public:
     /// What a stored photon is.
     enum Flags : std::uint8_t {
-        direct = 1,  ///< first hit after leaving the light
+        direct = 1,  ///< first hit after leaving the light (for a volume photon: its first scattering)
         caustic = 2, ///< reached this diffuse surface only by specular bounces (L S+ D)
         shadow = 4,  ///< a shadow photon: where the straight continuation of a direct photon's path met a further surface
         volume = 8,  ///< scattered in a medium, not on a surface (its normal is its direction)

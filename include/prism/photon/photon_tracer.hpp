@@ -265,7 +265,7 @@ private:
             if (caustic != caustic_pass) return !caustic_pass;
             const Vec3<float> travelling(at.direction);
             out.push_back({Vec3<float>(at.point), Rgb<float>(power), -travelling, -travelling,
-                           std::uint8_t(Photon::volume | (caustic ? Photon::caustic : 0))});
+                           std::uint8_t(Photon::volume | (caustic ? Photon::caustic : 0) | (at.direct ? Photon::direct : 0))});
             return !caustic_pass;
         });
     }
