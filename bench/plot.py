@@ -545,6 +545,9 @@ def main():
     if (rows := read("surfaces_vs_time_samplers.csv")):
         error_vs_time_chart(rows, [("all", "rough gold, frosted glass, textured tiles, thin lens:\nthe path tracer's two samplers and Cycles"),
                                    ("caustic", "the frosted ball's caustic on the tiles")], "prism's path-traced reference", "surfaces_vs_time_samplers.png")
+    if (rows := read("surfaces_vs_time_bidirectional.csv")):
+        error_vs_time_chart(rows, [("all", "rough gold, frosted glass, textured tiles, thin lens:\nthe path tracer, BDPT and VCM"),
+                                   ("caustic", "the frosted ball's caustic on the tiles")], "a long VCM reference", "surfaces_vs_time_bidirectional.png")
     if (rows := read("fog_vs_time_samplers.csv")):
         error_vs_time_chart(rows, [("all", "a spot light through haze onto a rough glass ball:\nthe path tracer's two samplers and Cycles"),
                                    ("caustic", "the volumetric caustic below the ball")], "prism's progressive reference", "fog_vs_time_samplers.png")

@@ -13,6 +13,7 @@
 //     direct       the global map read at the point, caustic map (photons of each kind)
 //     gather       final gathering, 2e5 photons of each kind (gather rays)
 //     progressive  progressive photon mapping, 5e4 + 5e4 photons a pass (passes)
+//     bdpt, vcm    bidirectional path tracing, vertex connection and merging (passes)
 //   each with ":independent" after it for independent samples instead of Owen-scrambled
 //   Sobol points (camera samples and photons alike).
 //
@@ -67,7 +68,7 @@ auto surfaces_scene()
 int main(int argc, char** argv)
 {
     if (argc < 4) {
-        std::fprintf(stderr, "usage: bench_surfaces path|reference|direct|gather|progressive EFFORT OUT.pfm [SIZE] [SEED]\n");
+        std::fprintf(stderr, "usage: bench_surfaces path|reference|direct|gather|progressive|bdpt|vcm EFFORT OUT.pfm [SIZE] [SEED]\n");
         return 2;
     }
     std::string method = argv[1];
@@ -92,7 +93,7 @@ int main(int argc, char** argv)
         options.passes = std::size_t(effort);
         options.photons = options.caustic_photons = 50000;
         options.render.spp = 1;
-    } else if (method == "path" || method == "reference") {
+    } else if (method == "path" || method == "reference" || method == "bdpt" || method == "vcm") {
         options.render.spp = int(effort);
     } else {
         std::fprintf(stderr, "bench_surfaces: unknown METHOD '%s'\n", method.c_str());

@@ -75,12 +75,14 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("build")
     ap.add_argument("--size", type=int, default=256)
-    ap.add_argument("--reference-spp", type=int, default=4096, help="samples per pixel of each of the reference's two halves")
+    ap.add_argument("--reference-spp", type=int, default=4096, help="samples per pixel (or passes) of each of the reference's two halves")
+    ap.add_argument("--reference-method", default="path", help="the reference's method: path (the path tracer), or vcm, whose error at a given time is a "
+                    "small fraction of the path tracer's here (the caustic of a point light through frosted glass)")
     ap.add_argument("--cycles-spp", type=int, default=1024, help="of each of Cycles' two renders for the agreement")
     ap.add_argument("--repeats", type=int, default=2)
     ap.add_argument("--quick", action="store_true", help="small efforts (a smoke test of this script)")
     ap.add_argument("--methods", help="a comma-separated subset of prism's methods (path, path:independent (independent samples), direct, ...)")
-    ap.add_argument("--cycles-levels", help="Cycles' samples per pixel, comma-separated (16,64,256,1024)")
+    ap.add_argument("--cycles-levels", help="Cycles' samples per pixel, comma-separated (16,64,256,1024), or none")
     ap.add_argument("--tag", default="", help="written to bench/results/NAME_TAG.csv and .png instead of NAME.csv, so that a run of a few methods keeps the full run's files")
     ap.add_argument("--agreement-only", action="store_true",
                     help="only score the reference and Cycles' pair already rendered in BUILD_DIR/surfaces_vs_time against each other")
@@ -88,12 +90,12 @@ def main():
     work = os.path.join(args.build, "surfaces_vs_time")
     os.makedirs(work, exist_ok=True)
     efforts = {"path": [16, 64, 256, 1024], "path:independent": [16, 64, 256, 1024], "direct": [100000, 300000, 1000000, 3000000], "gather": [16, 64, 256],
-               "progressive": [16, 64, 256]}
+               "progressive": [16, 64, 256], "bdpt": [16, 64, 256], "vcm": [16, 64, 256]}
     cycles_spp = [16, 64, 256, 1024]
     if args.methods:
         efforts = {m: e for m, e in efforts.items() if m in args.methods.split(",")}
     if args.cycles_levels:
-        cycles_spp = [int(x) for x in args.cycles_levels.split(",")]
+        cycles_spp = [] if args.cycles_levels == "none" else [int(x) for x in args.cycles_levels.split(",")]
     if args.quick:
         efforts = {m: e[:2] for m, e in efforts.items()}
         cycles_spp = cycles_spp[:2]
@@ -106,12 +108,12 @@ def main():
     for seed in (101, 102):
         out = os.path.join(work, "reference_%d.pfm" % seed)
         if not args.agreement_only:
-            reference_seconds += prism_render(args.build, "path", args.reference_spp, out, args.size, seed)
+            reference_seconds += prism_render(args.build, args.reference_method, args.reference_spp, out, args.size, seed)
         halves.append(read_pfm(out))
     w, h = halves[0][0], halves[0][1]
     write_pfm(os.path.join(work, "reference.pfm"), (w, h, [(a + b) / 2 for a, b in zip(halves[0][2], halves[1][2])]))
     scorers = {"all": Scorer(halves), "caustic": Scorer(halves, caustic_mask(w, h))}
-    print("reference: path tracer, 2 x %d spp, %.1f s; its own noise %.5f (caustic %.5f)" % (args.reference_spp, reference_seconds, scorers["all"].noise,
+    print("reference: %s, 2 x %d spp, %.1f s; its own noise %.5f (caustic %.5f)" % (args.reference_method, args.reference_spp, reference_seconds, scorers["all"].noise,
                                                                                           scorers["caustic"].noise), flush=True)
     # Agreement with Cycles.
     pair = []
@@ -161,7 +163,8 @@ def main():
     write_csv(path, rows, "region")
     print("wrote", path)
     summary(rows)
-    strip(work, halves, pair, efforts, cycles_spp, name=tagged("surfaces_strip.png", args.tag))
+    if len(cycles_spp) >= 2:
+        strip(work, halves, pair, efforts, cycles_spp, name=tagged("surfaces_strip.png", args.tag))
 
 
 def summary(rows):
