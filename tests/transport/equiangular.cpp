@@ -52,18 +52,18 @@ TEST_CASE("within_cone holds every point of a stretch inside a spot light's cone
     for (int r = 0; r < 1000; ++r) {
         const Vec3<double> apex{rng.uniform<double>() * 4 - 2, rng.uniform<double>() * 4 - 2, rng.uniform<double>() * 4 - 2};
         const Vec3<double> axis = uniform_sphere<double>(rng);
-        const double half = 0.02 + 1.4 * rng.uniform<double>(); // radians, up to 80 degrees
+        const double half_angle = 0.02 + 1.4 * rng.uniform<double>(); // radians, up to 80 degrees
         const Ray<double> ray{{rng.uniform<double>() * 6 - 3, rng.uniform<double>() * 6 - 3, rng.uniform<double>() * 6 - 3}, uniform_sphere<double>(rng)};
         // Aim about half the rays near the apex, where a narrow cone is found at all.
         const Ray<double> aimed = r % 2 ? ray : Ray<double>{ray.origin, normalize(apex + axis * (1 + 2 * rng.uniform<double>()) - ray.origin)};
         const double t0 = rng.uniform<double>(), t1 = t0 + 8 * rng.uniform<double>() + 0.1;
-        const auto span = within_cone(aimed, t0, t1, apex, axis, std::cos(half));
+        const auto span = within_cone(aimed, t0, t1, apex, axis, std::cos(half_angle));
         const int steps = 2000;
         double first = t1, last = t0;
         for (int i = 0; i <= steps; ++i) {
             const double t = i == steps ? t1 : t0 + (t1 - t0) * i / steps; // (the last exactly t1)
             const Vec3<double> p = aimed.at(t) - apex;
-            const bool in = dot(p, axis) >= length(p) * std::cos(half);
+            const bool in = dot(p, axis) >= length(p) * std::cos(half_angle);
             if (!in) continue;
             first = std::min(first, t);
             last = std::max(last, t);
