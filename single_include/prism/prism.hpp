@@ -15979,6 +15979,25 @@ template <Scalar T>
     return Interval<T>{std::max(t0, kept.min - pad), std::min(t1, kept.max + pad)};
 }
 
+/// Whether equiangular sampling aims at light L: a delta light at a point (a point or spot
+/// light), whose own density falls as 1 / d^2 from its position.
+template <class L>
+inline constexpr bool aimed_equiangularly = is_delta_light<L> && requires(const L& light) { light.position; };
+
+/// The part of [t0, t1] along a ray where `light` can send light (aimed_equiangularly): all of
+/// it for a point light, a spot light's cone (SpotLight::cone) clipped by within_cone;
+/// nothing where the ray misses the cone.
+template <class L, Scalar T>
+[[nodiscard]] std::optional<Interval<T>> lit_span(const L& light, const Ray<T>& ray, T t0, T t1) noexcept
+{
+    if constexpr (requires { light.cone(); }) {
+        const auto cone = light.cone();
+        return within_cone(ray, t0, t1, cone.apex, cone.axis, cone.cos_half);
+    } else {
+        return Interval<T>{t0, t1};
+    }
+}
+
 } // namespace prism
 
 // ---- prism/integrator/path_tracer.hpp ----
@@ -16251,8 +16270,7 @@ private:
     /// Whether a light is sampled along stretches of medium Md: a delta light at a point,
     /// in a uniform medium.
     template <class L, class Md>
-    static constexpr bool has_equiangular = uniform_medium<Md> && is_delta_light<L> && requires(const L& light, const Md& medium, const Rgb<T>& power) {
-        light.position;
+    static constexpr bool has_equiangular = uniform_medium<Md> && aimed_equiangularly<L> && requires(const Md& medium, const Rgb<T>& power) {
         medium.flight_pdf(power, T(0));
     };
 
@@ -16633,12 +16651,8 @@ private:
     {
         Rgb<T> out{T(0)};
         scene_->for_each_light([&]<class L>(const L& light) {
-            if constexpr (is_delta_light<L> && requires { light.position; }) {
-                std::optional<Interval<T>> span = Interval<T>{t0, t1};
-                if constexpr (requires { light.cone(); }) {
-                    const auto cone = light.cone();
-                    span = within_cone(piece, t0, t1, cone.apex, cone.axis, cone.cos_half);
-                }
+            if constexpr (aimed_equiangularly<L>) {
+                const std::optional<Interval<T>> span = lit_span(light, piece, t0, t1);
                 const T u = rng.uniform<T>(); // (drawn for every light, so that the numbers do not depend on where the ray goes)
                 if (!span) return;
                 const Equiangular<T> rule(piece, span->min, span->max, light.position);

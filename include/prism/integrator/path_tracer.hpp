@@ -280,8 +280,7 @@ private:
     /// Whether a light is sampled along stretches of medium Md: a delta light at a point,
     /// in a uniform medium.
     template <class L, class Md>
-    static constexpr bool has_equiangular = uniform_medium<Md> && is_delta_light<L> && requires(const L& light, const Md& medium, const Rgb<T>& power) {
-        light.position;
+    static constexpr bool has_equiangular = uniform_medium<Md> && aimed_equiangularly<L> && requires(const Md& medium, const Rgb<T>& power) {
         medium.flight_pdf(power, T(0));
     };
 

@@ -341,12 +341,8 @@ private:
     {
         Rgb<T> out{T(0)};
         scene_->for_each_light([&]<class L>(const L& light) {
-            if constexpr (is_delta_light<L> && requires { light.position; }) {
-                std::optional<Interval<T>> span = Interval<T>{t0, t1};
-                if constexpr (requires { light.cone(); }) {
-                    const auto cone = light.cone();
-                    span = within_cone(piece, t0, t1, cone.apex, cone.axis, cone.cos_half);
-                }
+            if constexpr (aimed_equiangularly<L>) {
+                const std::optional<Interval<T>> span = lit_span(light, piece, t0, t1);
                 const T u = rng.uniform<T>(); // (drawn for every light, so that the numbers do not depend on where the ray goes)
                 if (!span) return;
                 const Equiangular<T> rule(piece, span->min, span->max, light.position);

@@ -10,6 +10,7 @@
 #include <prism/core/interval.hpp>
 #include <prism/core/math.hpp>
 #include <prism/core/ray.hpp>
+#include <prism/light/light.hpp>
 
 #include <algorithm>
 #include <array>
@@ -100,6 +101,25 @@ template <Scalar T>
     // rounding must not cut off a sliver inside the cone.
     const T pad = T(1e-5) * (T(1) + std::abs(kept.min) + (kept.max < infinity<T> ? std::abs(kept.max) : T(0)));
     return Interval<T>{std::max(t0, kept.min - pad), std::min(t1, kept.max + pad)};
+}
+
+/// Whether equiangular sampling aims at light L: a delta light at a point (a point or spot
+/// light), whose own density falls as 1 / d^2 from its position.
+template <class L>
+inline constexpr bool aimed_equiangularly = is_delta_light<L> && requires(const L& light) { light.position; };
+
+/// The part of [t0, t1] along a ray where `light` can send light (aimed_equiangularly): all of
+/// it for a point light, a spot light's cone (SpotLight::cone) clipped by within_cone;
+/// nothing where the ray misses the cone.
+template <class L, Scalar T>
+[[nodiscard]] std::optional<Interval<T>> lit_span(const L& light, const Ray<T>& ray, T t0, T t1) noexcept
+{
+    if constexpr (requires { light.cone(); }) {
+        const auto cone = light.cone();
+        return within_cone(ray, t0, t1, cone.apex, cone.axis, cone.cos_half);
+    } else {
+        return Interval<T>{t0, t1};
+    }
 }
 
 } // namespace prism
