@@ -10,6 +10,8 @@
 //     path         the path tracer (samples per pixel)
 //     direct       the photon mapper, maps read directly (global photons; twice as many caustic)
 //     progressive  progressive photon mapping, 25000 global and 50000 caustic photons a pass (passes)
+//     bdpt, vcm    bidirectional path tracing, vertex connection and merging (passes of one
+//                  camera and one light path a pixel)
 //   each with ":independent" after it for independent samples instead of Owen-scrambled
 //   Sobol points (camera samples and photons alike).
 //
@@ -55,6 +57,14 @@ struct CyclesSpot {
         photon.weight *= std::max(T(0), dot(photon.ray.direction, normalize(spot.direction)));
         return photon;
     }
+    /// The light paths of Bidirectional: the spot's, the factor on what they carry (their densities the spot's).
+    [[nodiscard]] EmissionSample<T> emission(const BoundingSphere<T>& sphere, const Vec2<T>& u_area, const Vec2<T>& u_direction) const noexcept
+    {
+        EmissionSample<T> e = spot.emission(sphere, u_area, u_direction);
+        e.radiance *= std::max(T(0), dot(e.ray.direction, normalize(spot.direction)));
+        return e;
+    }
+    [[nodiscard]] EmissionPdf<T> emission_pdf(const Vec3<T>& leaving, const BoundingSphere<T>& sphere) const noexcept { return spot.emission_pdf(leaving, sphere); }
     void validate() const { spot.validate(); }
 };
 static_assert(Light<CyclesSpot>);
@@ -77,7 +87,7 @@ auto fog_scene()
 int main(int argc, char** argv)
 {
     if (argc < 4) {
-        std::fprintf(stderr, "usage: bench_fog path|direct|progressive EFFORT OUT.pfm [WIDTH] [SEED]\n");
+        std::fprintf(stderr, "usage: bench_fog path|direct|progressive|bdpt|vcm EFFORT OUT.pfm [WIDTH] [SEED]\n");
         return 2;
     }
     std::string method = argv[1];
@@ -117,6 +127,10 @@ int main(int argc, char** argv)
         progressive.pass.volume_radius = 0.08f;
         config.spp = int(effort);
         film = render(fog_camera, ProgressivePhotonMapper<S, Air>(scene, progressive, haze), config);
+    } else if (method == "bdpt" || method == "vcm") {
+        config.spp = int(effort);
+        const BidirectionalConfig bidirectional{.method = method == "vcm" ? BidirectionalMethod::vcm : BidirectionalMethod::bdpt};
+        film = render(fog_camera, Bidirectional(scene, bidirectional, haze), config);
     } else {
         std::fprintf(stderr, "bench_fog: unknown METHOD '%s'\n", method.c_str());
         return 2;

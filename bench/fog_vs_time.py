@@ -68,11 +68,13 @@ def main():
     ap.add_argument("--cycles-levels", help="Cycles' samples per pixel, comma-separated (16,64,256,1024)")
     ap.add_argument("--tag", default="", help="written to bench/results/NAME_TAG.csv and .png instead of NAME.csv, so that a run of a few methods keeps the full run's files")
     ap.add_argument("--reuse-cycles-reference", action="store_true", help="keep Cycles' reference renders already in BUILD_DIR/fog_vs_time")
+    ap.add_argument("--reuse-prism-references", action="store_true",
+                    help="keep prism's path-traced and progressive renders for the agreement and reference already in BUILD_DIR/fog_vs_time (with their times)")
     args = ap.parse_args()
     work = os.path.join(args.build, "fog_vs_time")
     os.makedirs(work, exist_ok=True)
     efforts = {"path": [64, 256, 1024, 4096], "path:independent": [64, 256, 1024, 4096], "direct": [100000, 300000, 1000000, 3000000],
-               "progressive": [16, 64, 256]}
+               "progressive": [16, 64, 256], "bdpt": [16, 64, 256, 1024], "vcm": [16, 64, 256, 1024]}
     cycles_spp = [16, 64, 256, 1024]
     if args.methods:
         efforts = {m: e for m, e in efforts.items() if m in args.methods.split(",")}
@@ -99,7 +101,14 @@ def main():
         pair, seconds[method] = [], 0.0
         for seed in (1, 2):
             out = os.path.join(work, "agreement_%s_%d.pfm" % (method, seed))
-            seconds[method] += prism_render(args.build, method, effort, out, args.width, seed)
+            if args.reuse_prism_references and os.path.exists(out) and os.path.exists(out + ".seconds"):
+                with open(out + ".seconds") as f:
+                    seconds[method] += float(f.read())
+            else:
+                took = prism_render(args.build, method, effort, out, args.width, seed)
+                with open(out + ".seconds", "w") as f:
+                    f.write("%.4f\n" % took)
+                seconds[method] += took
             pair.append(read_pfm(out))
         pairs[method] = pair
     labels = {"Cycles": "Cycles %d spp x 2" % args.reference_spp, "path": "prism path %d spp x 2" % args.agreement_spp,

@@ -7,7 +7,10 @@
 // caustic pass, aimed at the ball. Beside it the path tracer (volumetric_caustic_path.png)
 // with the same time or more: from a point in the haze, a shadow ray to a point light
 // cannot pass the glass, so the path tracer sees the beam and its shadow but not the
-// focused light.
+// focused light. Last, vertex connection and merging (volumetric_caustic_vcm.png): light
+// paths through the ball scatter in the haze and are joined to the camera, so the focused
+// light is found with no photon map; the haze seen through the ball, which no connection
+// joins (camera, glass, haze, glass, light), by merging.
 #include "cli.hpp"
 
 #include <prism/prism.hpp>
@@ -18,7 +21,7 @@ int main(int argc, char** argv)
         using namespace prism;
         using T = float;
         examples::Options options;
-        options.images = {"volumetric_caustic", "volumetric_caustic_path"}; // checked before rendering
+        options.images = {"volumetric_caustic", "volumetric_caustic_path", "volumetric_caustic_vcm"}; // checked before rendering
         options.render.width = 480;
         options.render.height = 360;
         options.render.spp = 2;
@@ -51,6 +54,10 @@ int main(int argc, char** argv)
         path.render.spp = 16 * options.render.spp;
         const PathTracer tracer(scene, {}, haze);
         examples::save(examples::timed_render("volumetric_caustic_path", camera, tracer, path), path);
+        examples::Options passes = options;
+        passes.render.spp = 16 * options.render.spp;
+        const Bidirectional vcm(scene, {.method = BidirectionalMethod::vcm}, haze);
+        examples::save(examples::timed_render("volumetric_caustic_vcm", camera, vcm, passes), passes);
         return 0;
     });
 }

@@ -5,13 +5,13 @@
 //   furnace      under a uniform sky of radiance 1, with materials and fog that lose no
 //                light and no floor, every pixel reads 1: the path tracer, the reference,
 //                the photon mapper read directly, by final gathering and behind an
-//                irradiance cache, progressive photon mapping, and Whitted where only
-//                mirrors and glass are seen;
+//                irradiance cache, progressive photon mapping, BDPT and VCM, and Whitted
+//                where only mirrors and glass are seen;
 //   agreement    elsewhere (a grey floor, a fog that absorbs), wherever the path tracer
 //                has every path (no delta light meets a mirror or glass), the reference
-//                (the path tracer and the light tracer, splitting the paths between them)
-//                and the photon mappers against it, within the noise of both, the photon
-//                mappers within their bias as well; Whitted against the path tracer's
+//                (the path tracer and the light tracer, splitting the paths between them),
+//                BDPT, VCM and the photon mappers against it, within the noise of both, the
+//                photon mappers and VCM within their bias as well; Whitted against the path tracer's
 //                direct light where its model is exact (diffuse and mirror surfaces, no
 //                glass in the light's way).
 // A cell is estimators x one scene: a material kind, a light kind, a placement, a camera.
@@ -395,6 +395,24 @@ void photon_rows(std::vector<Row>& rows, const std::string& cell, const SceneT& 
                            }), want, bias));
 }
 
+/// What VCM's merging may add against the reference: its radius's blur where it merges (a
+/// small share of the light at merge_weight 0.05).
+inline constexpr double merging_bias = 0.02;
+
+/// Bidirectional path tracing and vertex connection and merging on `scene`: as many passes
+/// as the path tracer's samples (a light path a pixel each), paths as long as its.
+template <class SceneT, class Air>
+void bidirectional_rows(std::vector<Row>& rows, const std::string& cell, const SceneT& scene, const Air& air, const Camera<T>& cam, const Effort& effort,
+                        const Estimate& want, const char* against)
+{
+    for (const BidirectionalMethod method : {BidirectionalMethod::bdpt, BidirectionalMethod::vcm}) {
+        const bool vcm = method == BidirectionalMethod::vcm;
+        rows.push_back(compare(cell, vcm ? "VCM" : "BDPT", against, estimate(effort.batches, [&](int b) {
+                                   return render(cam, Bidirectional(scene, {.method = method, .max_length = 1024}, air), batch_config(effort.spp, b + 400));
+                               }), want, vcm ? merging_bias : 0.0));
+    }
+}
+
 /// A cell's name.
 inline std::string cell_name(std::size_t material, LightKind light, Placement where, bool inside)
 {
@@ -426,6 +444,7 @@ std::vector<Row> agreement_cell(std::size_t material, LightKind light, Placement
                                    return render(cam, Reference(scene, {}, air), batch_config(effort.spp, b));
                                }), paths, 0));
         photon_rows(rows, cell, scene, air, cam, effort, paths, "path tracer", photon_bias);
+        bidirectional_rows(rows, cell, scene, air, cam, effort, paths, "path tracer");
     }
     // Whitted's shadow rays pass glass unbent and its glossy lobes see the scene by one
     // mirror ray: its direct light is the path tracer's (max_diffuse_bounces 0) where
@@ -455,6 +474,7 @@ std::vector<Row> furnace_cell(std::size_t material, Placement where, bool inside
     rows.push_back(compare(cell, "path tracer", "1", estimate(effort.batches, [&](int b) { return render(cam, PathTracer(scene, {}, air), batch_config(effort.spp, b)); }), one, 0));
     rows.push_back(compare(cell, "reference", "1", estimate(effort.batches, [&](int b) { return render(cam, Reference(scene, {}, air), batch_config(effort.spp, b)); }), one, 0));
     photon_rows(rows, cell, scene, air, cam, effort, one, "1", 0.03);
+    bidirectional_rows(rows, cell, scene, air, cam, effort, one, "1");
     if (where == Placement::clear && !m.diffuse_part) {
         // Only mirrors and glass seen: Whitted follows every path to the sky.
         rows.push_back(compare(cell, "Whitted", "1", estimate(2, [&](int b) { return render(cam, Whitted(scene, {}, air), batch_config(1, b)); }), one, 1e-3));

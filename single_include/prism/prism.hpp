@@ -9090,6 +9090,458 @@ template <Transport Mode = Transport::importance, Material M>
 
 } // namespace prism
 
+// ---- prism/medium/graded_index.hpp ----
+// Graded-index media: air whose index of refraction varies in space (mirages, a setting
+// sun flattened by the atmosphere), and the two ways of tracing a ray through it.
+//
+// A ray in a medium of index n(x) follows the ray equation d/ds (n dx/ds) = grad n.
+// With the optical direction T = n dx/ds (a vector of length n) and the parameter t,
+// dt = ds / n, it becomes d^2 x / dt^2 = n grad n = grad(n^2) / 2, which Sharma, Kumar
+// and Ghatak (1982, "Tracing rays through graded-index media: a new method", Applied
+// Optics 21(6)) integrate with a Runge-Kutta-Nystrom step: `sharma_step`. Its error is
+// controlled by step doubling in `AdaptiveStepper`. The classic textbook method,
+// "divide the air into layers and keep bending the light", is `LayeredMedium`: straight
+// segments through flat layers of constant index, refracted by Snell at each boundary.
+//
+// Index fields are policies (IndexField): a stratified linear n(y), n^2 linear in y
+// (whose rays are exact parabolas), an exponential atmosphere, a heated layer over a
+// road, and any callable. Stratified fields vary along y (up).
+
+
+#include <algorithm>
+#include <cmath>
+#include <concepts>
+#include <limits>
+
+namespace prism {
+
+/// An index of refraction that varies in space: `index(p)` and its gradient
+/// `gradient(p)`, both finite and the index > 0 wherever a ray goes.
+template <class F>
+concept IndexField = requires(const F& field, const Vec3<typename F::scalar_type>& p) {
+    requires Scalar<typename F::scalar_type>;
+    { field.index(p) } -> std::same_as<typename F::scalar_type>;
+    { field.gradient(p) } -> std::same_as<Vec3<typename F::scalar_type>>;
+    field.validate();
+};
+
+// Index Field Policies
+
+/// n(y) = n0 + slope y.
+template <Scalar T = double>
+struct LinearIndex {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    T n0 = T(1); ///< index at y = 0
+    T slope = T(0); ///< dn/dy
+
+    /// The index at p: n0 + slope y.
+    [[nodiscard]] constexpr T index(const Vec3<T>& p) const noexcept { return n0 + slope * p.y; }
+    /// The index's gradient, (0, slope, 0) everywhere.
+    [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>&) const noexcept { return {T(0), slope, T(0)}; }
+    /// Throws std::invalid_argument, naming the parameter, for n0 <= 0 or a slope that is not finite.
+    constexpr void validate() const
+    {
+        detail::require_positive("LinearIndex n0", n0);
+        detail::require_finite("LinearIndex slope", slope);
+    }
+};
+
+/// n(y)^2 = a + b y (where a + b y > 0): the field whose rays are exact parabolas,
+/// y(x) = y0 + tan(theta0) x + b x^2 / (4 K^2) with K = n(y0) cos(theta0).
+template <Scalar T = double>
+struct LinearSquareIndex {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    T a = T(1); ///< n^2 at y = 0
+    T b = T(0); ///< d(n^2)/dy
+
+    /// The index at p: sqrt(a + b y).
+    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return std::sqrt(a + b * p.y); }
+    /// The index's gradient: (0, b / 2n, 0).
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept { return {T(0), b / (T(2) * index(p)), T(0)}; }
+    /// Throws std::invalid_argument, naming the parameter, for a <= 0 or a b that is not finite.
+    constexpr void validate() const
+    {
+        detail::require_positive("LinearSquareIndex a", a);
+        detail::require_finite("LinearSquareIndex b", b);
+    }
+};
+
+/// The standard exponential atmosphere: n(h) = 1 + (n0 - 1) e^(-h / H), h = y - ground.
+/// Defaults: sea-level air at 15 C (n0 - 1 = 2.93e-4, visible light) and H = 8.5 km, in
+/// metres.
+template <Scalar T = double>
+struct ExponentialAtmosphere {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    T n0 = T(1.000293); ///< index at the ground
+    T scale_height = T(8500); ///< height over which n - 1 falls by e (metres)
+    T ground = T(0); ///< height of the ground
+
+    /// The index at p: 1 + (n0 - 1) exp(-(y - ground) / scale_height).
+    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return T(1) + (n0 - T(1)) * std::exp(-(p.y - ground) / scale_height); }
+    /// The index's gradient, along y.
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
+    {
+        return {T(0), -(n0 - T(1)) / scale_height * std::exp(-(p.y - ground) / scale_height), T(0)};
+    }
+    /// Throws std::invalid_argument, naming the parameter, for n0 or scale_height <= 0 or a ground that is not finite.
+    constexpr void validate() const
+    {
+        detail::require_positive("ExponentialAtmosphere n0", n0);
+        detail::require_positive("ExponentialAtmosphere scale_height", scale_height);
+        detail::require_finite("ExponentialAtmosphere ground", ground);
+    }
+};
+
+/// Hot air over a road: n(y) = n_air - drop e^(-(y - ground) / thickness). The air at the
+/// road is hotter, so its index is lower by `drop` (about 1e-6 per kelvin: 3e-5 for a
+/// road 30 K above the air), and rays grazing it bend back up (an inferior mirage).
+template <Scalar T = double>
+struct HeatedLayer {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    T n_air = T(1.000293); ///< index of the air far above the ground
+    T drop = T(3e-5); ///< how much lower the index is at the ground
+    T thickness = T(0.3); ///< metres over which the excess heat falls by e
+    T ground = T(0); ///< height of the ground
+
+    /// The index at p: n_air - drop exp(-(y - ground) / thickness).
+    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return n_air - drop * std::exp(-(p.y - ground) / thickness); }
+    /// The index's gradient, along y.
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
+    {
+        return {T(0), drop / thickness * std::exp(-(p.y - ground) / thickness), T(0)};
+    }
+    /// Throws std::invalid_argument, naming the parameter, for n_air or thickness <= 0, or a drop that is not finite or not below n_air.
+    constexpr void validate() const
+    {
+        detail::require_positive("HeatedLayer n_air", n_air);
+        detail::require_finite("HeatedLayer drop", drop);
+        if (!(drop < n_air)) detail::throw_invalid("HeatedLayer drop must be below n_air (", n_air, "), got ", drop);
+        detail::require_positive("HeatedLayer thickness", thickness);
+        detail::require_finite("HeatedLayer ground", ground);
+    }
+};
+
+/// Any index n(p) given as a callable; its gradient by central differences of step h.
+template <Scalar T, class F>
+    requires std::regular_invocable<const F&, const Vec3<T>&>
+struct IndexFunction {
+    /// The precision of the field's values.
+    using scalar_type = T;
+    F function; ///< n(p), any callable
+    T h = T(1e-4); ///< step of the central differences that give the gradient
+
+    /// The index at p: function(p).
+    [[nodiscard]] T index(const Vec3<T>& p) const { return function(p); }
+    /// The index's gradient by central differences of step h.
+    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const
+    {
+        const T inv = T(1) / (T(2) * h);
+        return {(function(p + Vec3<T>(h, 0, 0)) - function(p - Vec3<T>(h, 0, 0))) * inv,
+                (function(p + Vec3<T>(0, h, 0)) - function(p - Vec3<T>(0, h, 0))) * inv,
+                (function(p + Vec3<T>(0, 0, h)) - function(p - Vec3<T>(0, 0, h))) * inv};
+    }
+    /// Throws std::invalid_argument for h <= 0.
+    constexpr void validate() const { detail::require_positive("IndexFunction h", h); }
+};
+
+static_assert(IndexField<LinearIndex<double>> && IndexField<LinearSquareIndex<float>> && IndexField<ExponentialAtmosphere<double>> &&
+              IndexField<HeatedLayer<double>>);
+
+// Curved Rays
+
+/// A ray inside a graded medium: where it is, and its optical direction n dx/ds (a
+/// vector of length n(position): the unit direction times the local index).
+template <Scalar T>
+struct CurvedRay {
+    Vec3<T> position; ///< where the ray is
+    Vec3<T> optical; ///< the optical direction, n times the unit tangent
+
+    /// The unit tangent of the ray.
+    [[nodiscard]] Vec3<T> direction() const noexcept { return normalize(optical); }
+};
+
+/// The curved ray leaving `ray.origin` along `ray.direction` (any length) in the field.
+template <IndexField F>
+[[nodiscard]] CurvedRay<typename F::scalar_type> curved_ray(const F& field, const Ray<typename F::scalar_type>& ray) noexcept
+{
+    return {ray.origin, field.index(ray.origin) * normalize(ray.direction)};
+}
+
+/// grad(n^2) / 2 = n grad n: the ray's acceleration in the parameter t (dt = ds / n).
+template <IndexField F>
+[[nodiscard]] Vec3<typename F::scalar_type> bending(const F& field, const Vec3<typename F::scalar_type>& p) noexcept
+{
+    return field.index(p) * field.gradient(p);
+}
+
+/// One Runge-Kutta-Nystrom step of dt in t (Sharma et al. 1982, eq. 12), fourth order:
+///   A = dt D(x), B = dt D(x + dt/2 T + dt/8 A), C = dt D(x + dt T + dt/2 B),
+///   x' = x + dt (T + (A + 2B) / 6),  T' = T + (A + 4B + C) / 6,
+/// exact when D is constant (n^2 linear in space). The arc length covered is about n dt.
+template <IndexField F>
+[[nodiscard]] CurvedRay<typename F::scalar_type> sharma_step(const F& field, const CurvedRay<typename F::scalar_type>& ray,
+                                                             typename F::scalar_type dt) noexcept
+{
+    using T = typename F::scalar_type;
+    const Vec3<T>& x = ray.position;
+    const Vec3<T>& t = ray.optical;
+    const Vec3<T> a = dt * bending(field, x);
+    const Vec3<T> b = dt * bending(field, x + (dt / T(2)) * t + (dt / T(8)) * a);
+    const Vec3<T> c = dt * bending(field, x + dt * t + (dt / T(2)) * b);
+    return {x + dt * (t + (a + T(2) * b) / T(6)), t + (a + T(4) * b + c) / T(6)};
+}
+
+/// Sharma steps whose length adapts to keep each step's position error under
+/// `tolerance` (absolute, in scene units), estimated by step doubling: a step of dt
+/// against two of dt / 2, whose difference is 15/16 of the larger one's error for a
+/// fourth-order method; the two half steps are kept (Richardson-extrapolated).
+template <IndexField F>
+class AdaptiveStepper {
+public:
+    /// The field's precision.
+    using T = typename F::scalar_type;
+
+    /// How the stepper controls its error: the tolerance per step and the step sizes it may take.
+    struct Config {
+        T tolerance = T(1e-6);  ///< position error allowed per step
+        T first_step = T(0.1);  ///< the first step's arc length
+        T max_step = T(10);     ///< no step longer than this arc length
+    };
+
+    /// A stepper through `field` (which must outlive it).
+    explicit AdaptiveStepper(const F& field, Config config = {}) : field_(&field), config_(config)
+    {
+        field.validate();
+        detail::require_positive("AdaptiveStepper tolerance", config.tolerance);
+        detail::require_positive("AdaptiveStepper first_step", config.first_step);
+        detail::require_positive("AdaptiveStepper max_step", config.max_step);
+    }
+
+    /// Advance `ray` by one accepted step; `dt` carries the step size from one call to
+    /// the next (start with 0: the first step is then config.first_step long). Returns
+    /// the arc length covered (about n dt); `accepted`, if given, receives the step's dt.
+    T step(CurvedRay<T>& ray, T& dt, T* accepted = nullptr) const noexcept
+    {
+        const T n = length(ray.optical);
+        if (!(dt > T(0))) dt = config_.first_step / n;
+        dt = std::min(dt, config_.max_step / n);
+        for (;;) {
+            const CurvedRay<T> whole = sharma_step(*field_, ray, dt);
+            const CurvedRay<T> half = sharma_step(*field_, sharma_step(*field_, ray, dt / T(2)), dt / T(2));
+            const T error = length(half.position - whole.position) * (T(16) / T(15));
+            const T scale = error > T(0) ? T(0.9) * std::pow(config_.tolerance / error, T(0.2)) : T(4);
+            if (error <= config_.tolerance || dt * n <= std::numeric_limits<T>::epsilon() * (T(1) + max_component(abs(ray.position)))) {
+                const T covered = length(half.position - ray.position);
+                if (accepted != nullptr) *accepted = dt;
+                ray = {half.position + (half.position - whole.position) / T(15), half.optical + (half.optical - whole.optical) / T(15)};
+                dt *= std::clamp(scale, T(0.2), T(4));
+                return covered;
+            }
+            dt *= std::clamp(scale, T(0.1), T(0.9));
+        }
+    }
+
+private:
+    const F* field_;
+    Config config_;
+};
+
+// Flat Layers of Constant Index
+
+/// The air between y = bottom and y = top cut into `layers` flat layers, each of the
+/// field's index at its middle height; a ray goes straight within a layer and refracts
+/// by Snell's law (or reflects totally) at each boundary.
+template <IndexField F>
+class LayeredMedium {
+public:
+    /// The field's precision.
+    using T = typename F::scalar_type;
+
+    /// `layers` flat layers of `field` between heights `bottom` and `top` (which must outlive it); throws for bottom >= top or layers < 1.
+    LayeredMedium(const F& field, T bottom, T top, int layers) : field_(&field), bottom_(bottom), top_(top), layers_(layers)
+    {
+        field.validate();
+        detail::require_finite("LayeredMedium bottom", bottom);
+        detail::require_finite("LayeredMedium top", top);
+        if (!(top > bottom)) detail::throw_invalid("LayeredMedium top must be above bottom (", bottom, "), got ", top);
+        if (layers < 1) detail::throw_invalid("LayeredMedium layers must be >= 1, got ", layers);
+        height_ = (top - bottom) / T(layers);
+    }
+
+    /// The number of layers.
+    [[nodiscard]] int layers() const noexcept { return layers_; }
+
+    /// The layer holding height y (clamped into [0, layers); in floating point first, so a
+    /// far-off or NaN height never overflows the conversion to int).
+    [[nodiscard]] int layer_of(T y) const noexcept
+    {
+        const T layer = std::floor((y - bottom_) / height_);
+        if (!(layer > T(0))) return 0;
+        return layer < T(layers_ - 1) ? static_cast<int>(layer) : layers_ - 1;
+    }
+
+    /// The index of layer i: the field at its middle height (x = z = 0: stratified fields).
+    [[nodiscard]] T index_of(int layer) const noexcept { return field_->index({T(0), bottom_ + (T(layer) + T(0.5)) * height_, T(0)}); }
+
+    /// From `origin` in layer `layer` along the unit `direction`, straight to the layer's
+    /// next boundary and across it (or back, under total internal reflection). Returns
+    /// false when the ray leaves the layers (through the top or the bottom) or runs
+    /// horizontally; then `origin` is where it left.
+    bool step(Vec3<T>& origin, Vec3<T>& direction, int& layer) const noexcept
+    {
+        if (direction.y == T(0)) return false;
+        const bool up = direction.y > T(0);
+        const T boundary = bottom_ + T(layer + (up ? 1 : 0)) * height_;
+        origin = origin + ((boundary - origin.y) / direction.y) * direction;
+        origin.y = boundary;
+        const int next = layer + (up ? 1 : -1);
+        if (next < 0 || next >= layers_) return false;
+        const Vec3<T> facing{T(0), up ? T(-1) : T(1), T(0)};
+        if (const auto r = refraction(direction, facing, index_of(next) / index_of(layer))) {
+            direction = normalize(r->direction);
+            layer = next;
+        } else {
+            direction = reflect(direction, facing);
+        }
+        return true;
+    }
+
+private:
+    const F* field_;
+    T bottom_, top_, height_ = T(1);
+    int layers_;
+};
+
+} // namespace prism
+
+// ---- prism/medium/air.hpp ----
+// The scene's air: uniform (rays go straight, the default), of a varying index
+// (graded-index air: mirages, a flattened setting sun), through which rays curve, or
+// filled with a medium that scatters (FilledAir: fog, haze, murky water around everything,
+// in straight or graded air).
+//
+// GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
+// field must be uniform, and rays go straight there. LayeredAir is flat layers of
+// constant index, refracting at each boundary. How a ray travels through either to the first surface it meets is
+// transport/travel.hpp's.
+
+
+namespace prism {
+
+/// Uniform air of index 1: rays are straight.
+struct StraightAir {
+    /// Rays through it are straight.
+    static constexpr bool curved = false;
+    /// Nothing to check.
+    constexpr void validate() const {}
+};
+
+/// Air filled, within `region` (everywhere by default), with a medium that absorbs and
+/// scatters: the fog a scene stands in, the water around an underwater scene. Outside the
+/// region the air is clear. (An object's inside takes its own medium, its material's
+/// interior.) `Base` is the air the medium fills: straight (the default), or GradedAir or
+/// LayeredAir, through which rays curve (a mirage seen through haze): a walker in it
+/// scatters along the curved path, by the medium's coefficients per unit of the path's
+/// length.
+template <ScatteringMedium M, class Base = StraightAir>
+struct FilledAir {
+    /// The medium's precision.
+    using scalar_type = typename M::scalar_type;
+    /// Rays through it curve where they curve through its base.
+    static constexpr bool curved = Base::curved;
+    /// Light scatters in it.
+    static constexpr bool scatters = true;
+    static_assert(!requires { requires Base::scatters; }, "FilledAir's base is the air it fills: StraightAir, GradedAir or LayeredAir");
+
+    M medium{}; ///< what fills the region
+    Aabb<scalar_type> region = Aabb<scalar_type>::universe(); ///< where the medium is (a box; everywhere by default)
+    Base base{}; ///< the air it fills: straight, or of a varying index
+
+    /// Where the air is not clear: the region, within the medium's own box where it has
+    /// one (a medium of varying density).
+    [[nodiscard]] Aabb<scalar_type> bounds() const noexcept
+    {
+        if constexpr (requires { medium.bounds(); }) {
+            const Aabb<scalar_type> box = medium.bounds();
+            return {component_max(region.lo, box.lo), component_min(region.hi, box.hi)};
+        } else {
+            return region;
+        }
+    }
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad medium or base, or an empty region.
+    void validate() const
+    {
+        medium.validate();
+        if (region.empty()) detail::throw_invalid("FilledAir region must not be empty");
+        base.validate();
+    }
+};
+
+/// Whether the scene's air `Air` scatters light (FilledAir).
+template <class Air>
+inline constexpr bool air_scatters = requires { requires Air::scatters; };
+
+/// Air whose index is `field` inside `region` (uniform outside it); rays through it curve.
+template <IndexField F>
+struct GradedAir {
+    /// The field's precision.
+    using scalar_type = typename F::scalar_type;
+    /// Shorthand for scalar_type.
+    using T = scalar_type;
+    /// Rays through it curve.
+    static constexpr bool curved = true;
+
+    F field{}; ///< the refractive index inside the region
+    Aabb<T> region{};                                   ///< where the index varies
+    typename AdaptiveStepper<F>::Config stepping{};     ///< the stepper's tolerance and step lengths
+    /// A chord that meets a surface is halved (Sharma steps of half the dt) until it is
+    /// at most this long, so the landing point lies on the curve, not on a chord that
+    /// cuts under it (a chord of length L sags by about L^2 / (8 R) from a path of radius R).
+    T landing_chord = T(1e-3);
+    int max_steps = 1000000;                            ///< a ray still in the air after this many steps is lost (background)
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad field, an unbounded or empty region, max_steps < 1, landing_chord <= 0 or bad stepping.
+    void validate() const
+    {
+        field.validate();
+        if (!region.bounded()) detail::throw_invalid("GradedAir region must be a bounded, non-empty box");
+        if (max_steps < 1) detail::throw_invalid("GradedAir max_steps must be >= 1, got ", max_steps);
+        detail::require_positive("GradedAir landing_chord", landing_chord);
+        (void)AdaptiveStepper<F>(field, stepping); // checks the stepping
+    }
+};
+
+/// Layered air: `layers` flat layers between heights `bottom` and `top`, each
+/// of the field's index at its middle height (stratified fields only); a ray goes
+/// straight within a layer and refracts by Snell's law (or reflects totally) at each
+/// boundary; above and below the layers it goes straight. The second policy beside
+/// GradedAir, for comparison: it keeps n cos(theta) exactly but converges only at first
+/// order in the layer height (bench/graded_index.cpp).
+template <IndexField F>
+struct LayeredAir {
+    /// The field's precision.
+    using scalar_type = typename F::scalar_type;
+    /// Shorthand for scalar_type.
+    using T = scalar_type;
+    /// Rays through it bend at the layers' boundaries.
+    static constexpr bool curved = true;
+
+    F field{}; ///< the index field the layers sample at their middle heights
+    T bottom = T(0); ///< height of the lowest layer's bottom
+    T top = T(1); ///< height of the highest layer's top
+    int layers = 100; ///< the number of layers
+
+    /// Throws std::invalid_argument, naming the parameter, for a bad field, top <= bottom or layers < 1.
+    void validate() const { (void)LayeredMedium<F>(field, bottom, top, layers); }
+};
+
+} // namespace prism
+
 // ---- prism/medium/nesting.hpp ----
 // Nested dielectrics: the media a ray is inside of, so that water in a glass, an air
 // bubble in glass or a glass in water refract with the right n1 / n2 at every interface.
@@ -9916,458 +10368,6 @@ private:
     std::mutex widening_;
     std::atomic<std::size_t> rejected_{0};
     std::atomic<bool> overflowed_{false};
-};
-
-} // namespace prism
-
-// ---- prism/medium/graded_index.hpp ----
-// Graded-index media: air whose index of refraction varies in space (mirages, a setting
-// sun flattened by the atmosphere), and the two ways of tracing a ray through it.
-//
-// A ray in a medium of index n(x) follows the ray equation d/ds (n dx/ds) = grad n.
-// With the optical direction T = n dx/ds (a vector of length n) and the parameter t,
-// dt = ds / n, it becomes d^2 x / dt^2 = n grad n = grad(n^2) / 2, which Sharma, Kumar
-// and Ghatak (1982, "Tracing rays through graded-index media: a new method", Applied
-// Optics 21(6)) integrate with a Runge-Kutta-Nystrom step: `sharma_step`. Its error is
-// controlled by step doubling in `AdaptiveStepper`. The classic textbook method,
-// "divide the air into layers and keep bending the light", is `LayeredMedium`: straight
-// segments through flat layers of constant index, refracted by Snell at each boundary.
-//
-// Index fields are policies (IndexField): a stratified linear n(y), n^2 linear in y
-// (whose rays are exact parabolas), an exponential atmosphere, a heated layer over a
-// road, and any callable. Stratified fields vary along y (up).
-
-
-#include <algorithm>
-#include <cmath>
-#include <concepts>
-#include <limits>
-
-namespace prism {
-
-/// An index of refraction that varies in space: `index(p)` and its gradient
-/// `gradient(p)`, both finite and the index > 0 wherever a ray goes.
-template <class F>
-concept IndexField = requires(const F& field, const Vec3<typename F::scalar_type>& p) {
-    requires Scalar<typename F::scalar_type>;
-    { field.index(p) } -> std::same_as<typename F::scalar_type>;
-    { field.gradient(p) } -> std::same_as<Vec3<typename F::scalar_type>>;
-    field.validate();
-};
-
-// Index Field Policies
-
-/// n(y) = n0 + slope y.
-template <Scalar T = double>
-struct LinearIndex {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    T n0 = T(1); ///< index at y = 0
-    T slope = T(0); ///< dn/dy
-
-    /// The index at p: n0 + slope y.
-    [[nodiscard]] constexpr T index(const Vec3<T>& p) const noexcept { return n0 + slope * p.y; }
-    /// The index's gradient, (0, slope, 0) everywhere.
-    [[nodiscard]] constexpr Vec3<T> gradient(const Vec3<T>&) const noexcept { return {T(0), slope, T(0)}; }
-    /// Throws std::invalid_argument, naming the parameter, for n0 <= 0 or a slope that is not finite.
-    constexpr void validate() const
-    {
-        detail::require_positive("LinearIndex n0", n0);
-        detail::require_finite("LinearIndex slope", slope);
-    }
-};
-
-/// n(y)^2 = a + b y (where a + b y > 0): the field whose rays are exact parabolas,
-/// y(x) = y0 + tan(theta0) x + b x^2 / (4 K^2) with K = n(y0) cos(theta0).
-template <Scalar T = double>
-struct LinearSquareIndex {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    T a = T(1); ///< n^2 at y = 0
-    T b = T(0); ///< d(n^2)/dy
-
-    /// The index at p: sqrt(a + b y).
-    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return std::sqrt(a + b * p.y); }
-    /// The index's gradient: (0, b / 2n, 0).
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept { return {T(0), b / (T(2) * index(p)), T(0)}; }
-    /// Throws std::invalid_argument, naming the parameter, for a <= 0 or a b that is not finite.
-    constexpr void validate() const
-    {
-        detail::require_positive("LinearSquareIndex a", a);
-        detail::require_finite("LinearSquareIndex b", b);
-    }
-};
-
-/// The standard exponential atmosphere: n(h) = 1 + (n0 - 1) e^(-h / H), h = y - ground.
-/// Defaults: sea-level air at 15 C (n0 - 1 = 2.93e-4, visible light) and H = 8.5 km, in
-/// metres.
-template <Scalar T = double>
-struct ExponentialAtmosphere {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    T n0 = T(1.000293); ///< index at the ground
-    T scale_height = T(8500); ///< height over which n - 1 falls by e (metres)
-    T ground = T(0); ///< height of the ground
-
-    /// The index at p: 1 + (n0 - 1) exp(-(y - ground) / scale_height).
-    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return T(1) + (n0 - T(1)) * std::exp(-(p.y - ground) / scale_height); }
-    /// The index's gradient, along y.
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
-    {
-        return {T(0), -(n0 - T(1)) / scale_height * std::exp(-(p.y - ground) / scale_height), T(0)};
-    }
-    /// Throws std::invalid_argument, naming the parameter, for n0 or scale_height <= 0 or a ground that is not finite.
-    constexpr void validate() const
-    {
-        detail::require_positive("ExponentialAtmosphere n0", n0);
-        detail::require_positive("ExponentialAtmosphere scale_height", scale_height);
-        detail::require_finite("ExponentialAtmosphere ground", ground);
-    }
-};
-
-/// Hot air over a road: n(y) = n_air - drop e^(-(y - ground) / thickness). The air at the
-/// road is hotter, so its index is lower by `drop` (about 1e-6 per kelvin: 3e-5 for a
-/// road 30 K above the air), and rays grazing it bend back up (an inferior mirage).
-template <Scalar T = double>
-struct HeatedLayer {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    T n_air = T(1.000293); ///< index of the air far above the ground
-    T drop = T(3e-5); ///< how much lower the index is at the ground
-    T thickness = T(0.3); ///< metres over which the excess heat falls by e
-    T ground = T(0); ///< height of the ground
-
-    /// The index at p: n_air - drop exp(-(y - ground) / thickness).
-    [[nodiscard]] T index(const Vec3<T>& p) const noexcept { return n_air - drop * std::exp(-(p.y - ground) / thickness); }
-    /// The index's gradient, along y.
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const noexcept
-    {
-        return {T(0), drop / thickness * std::exp(-(p.y - ground) / thickness), T(0)};
-    }
-    /// Throws std::invalid_argument, naming the parameter, for n_air or thickness <= 0, or a drop that is not finite or not below n_air.
-    constexpr void validate() const
-    {
-        detail::require_positive("HeatedLayer n_air", n_air);
-        detail::require_finite("HeatedLayer drop", drop);
-        if (!(drop < n_air)) detail::throw_invalid("HeatedLayer drop must be below n_air (", n_air, "), got ", drop);
-        detail::require_positive("HeatedLayer thickness", thickness);
-        detail::require_finite("HeatedLayer ground", ground);
-    }
-};
-
-/// Any index n(p) given as a callable; its gradient by central differences of step h.
-template <Scalar T, class F>
-    requires std::regular_invocable<const F&, const Vec3<T>&>
-struct IndexFunction {
-    /// The precision of the field's values.
-    using scalar_type = T;
-    F function; ///< n(p), any callable
-    T h = T(1e-4); ///< step of the central differences that give the gradient
-
-    /// The index at p: function(p).
-    [[nodiscard]] T index(const Vec3<T>& p) const { return function(p); }
-    /// The index's gradient by central differences of step h.
-    [[nodiscard]] Vec3<T> gradient(const Vec3<T>& p) const
-    {
-        const T inv = T(1) / (T(2) * h);
-        return {(function(p + Vec3<T>(h, 0, 0)) - function(p - Vec3<T>(h, 0, 0))) * inv,
-                (function(p + Vec3<T>(0, h, 0)) - function(p - Vec3<T>(0, h, 0))) * inv,
-                (function(p + Vec3<T>(0, 0, h)) - function(p - Vec3<T>(0, 0, h))) * inv};
-    }
-    /// Throws std::invalid_argument for h <= 0.
-    constexpr void validate() const { detail::require_positive("IndexFunction h", h); }
-};
-
-static_assert(IndexField<LinearIndex<double>> && IndexField<LinearSquareIndex<float>> && IndexField<ExponentialAtmosphere<double>> &&
-              IndexField<HeatedLayer<double>>);
-
-// Curved Rays
-
-/// A ray inside a graded medium: where it is, and its optical direction n dx/ds (a
-/// vector of length n(position): the unit direction times the local index).
-template <Scalar T>
-struct CurvedRay {
-    Vec3<T> position; ///< where the ray is
-    Vec3<T> optical; ///< the optical direction, n times the unit tangent
-
-    /// The unit tangent of the ray.
-    [[nodiscard]] Vec3<T> direction() const noexcept { return normalize(optical); }
-};
-
-/// The curved ray leaving `ray.origin` along `ray.direction` (any length) in the field.
-template <IndexField F>
-[[nodiscard]] CurvedRay<typename F::scalar_type> curved_ray(const F& field, const Ray<typename F::scalar_type>& ray) noexcept
-{
-    return {ray.origin, field.index(ray.origin) * normalize(ray.direction)};
-}
-
-/// grad(n^2) / 2 = n grad n: the ray's acceleration in the parameter t (dt = ds / n).
-template <IndexField F>
-[[nodiscard]] Vec3<typename F::scalar_type> bending(const F& field, const Vec3<typename F::scalar_type>& p) noexcept
-{
-    return field.index(p) * field.gradient(p);
-}
-
-/// One Runge-Kutta-Nystrom step of dt in t (Sharma et al. 1982, eq. 12), fourth order:
-///   A = dt D(x), B = dt D(x + dt/2 T + dt/8 A), C = dt D(x + dt T + dt/2 B),
-///   x' = x + dt (T + (A + 2B) / 6),  T' = T + (A + 4B + C) / 6,
-/// exact when D is constant (n^2 linear in space). The arc length covered is about n dt.
-template <IndexField F>
-[[nodiscard]] CurvedRay<typename F::scalar_type> sharma_step(const F& field, const CurvedRay<typename F::scalar_type>& ray,
-                                                             typename F::scalar_type dt) noexcept
-{
-    using T = typename F::scalar_type;
-    const Vec3<T>& x = ray.position;
-    const Vec3<T>& t = ray.optical;
-    const Vec3<T> a = dt * bending(field, x);
-    const Vec3<T> b = dt * bending(field, x + (dt / T(2)) * t + (dt / T(8)) * a);
-    const Vec3<T> c = dt * bending(field, x + dt * t + (dt / T(2)) * b);
-    return {x + dt * (t + (a + T(2) * b) / T(6)), t + (a + T(4) * b + c) / T(6)};
-}
-
-/// Sharma steps whose length adapts to keep each step's position error under
-/// `tolerance` (absolute, in scene units), estimated by step doubling: a step of dt
-/// against two of dt / 2, whose difference is 15/16 of the larger one's error for a
-/// fourth-order method; the two half steps are kept (Richardson-extrapolated).
-template <IndexField F>
-class AdaptiveStepper {
-public:
-    /// The field's precision.
-    using T = typename F::scalar_type;
-
-    /// How the stepper controls its error: the tolerance per step and the step sizes it may take.
-    struct Config {
-        T tolerance = T(1e-6);  ///< position error allowed per step
-        T first_step = T(0.1);  ///< the first step's arc length
-        T max_step = T(10);     ///< no step longer than this arc length
-    };
-
-    /// A stepper through `field` (which must outlive it).
-    explicit AdaptiveStepper(const F& field, Config config = {}) : field_(&field), config_(config)
-    {
-        field.validate();
-        detail::require_positive("AdaptiveStepper tolerance", config.tolerance);
-        detail::require_positive("AdaptiveStepper first_step", config.first_step);
-        detail::require_positive("AdaptiveStepper max_step", config.max_step);
-    }
-
-    /// Advance `ray` by one accepted step; `dt` carries the step size from one call to
-    /// the next (start with 0: the first step is then config.first_step long). Returns
-    /// the arc length covered (about n dt); `accepted`, if given, receives the step's dt.
-    T step(CurvedRay<T>& ray, T& dt, T* accepted = nullptr) const noexcept
-    {
-        const T n = length(ray.optical);
-        if (!(dt > T(0))) dt = config_.first_step / n;
-        dt = std::min(dt, config_.max_step / n);
-        for (;;) {
-            const CurvedRay<T> whole = sharma_step(*field_, ray, dt);
-            const CurvedRay<T> half = sharma_step(*field_, sharma_step(*field_, ray, dt / T(2)), dt / T(2));
-            const T error = length(half.position - whole.position) * (T(16) / T(15));
-            const T scale = error > T(0) ? T(0.9) * std::pow(config_.tolerance / error, T(0.2)) : T(4);
-            if (error <= config_.tolerance || dt * n <= std::numeric_limits<T>::epsilon() * (T(1) + max_component(abs(ray.position)))) {
-                const T covered = length(half.position - ray.position);
-                if (accepted != nullptr) *accepted = dt;
-                ray = {half.position + (half.position - whole.position) / T(15), half.optical + (half.optical - whole.optical) / T(15)};
-                dt *= std::clamp(scale, T(0.2), T(4));
-                return covered;
-            }
-            dt *= std::clamp(scale, T(0.1), T(0.9));
-        }
-    }
-
-private:
-    const F* field_;
-    Config config_;
-};
-
-// Flat Layers of Constant Index
-
-/// The air between y = bottom and y = top cut into `layers` flat layers, each of the
-/// field's index at its middle height; a ray goes straight within a layer and refracts
-/// by Snell's law (or reflects totally) at each boundary.
-template <IndexField F>
-class LayeredMedium {
-public:
-    /// The field's precision.
-    using T = typename F::scalar_type;
-
-    /// `layers` flat layers of `field` between heights `bottom` and `top` (which must outlive it); throws for bottom >= top or layers < 1.
-    LayeredMedium(const F& field, T bottom, T top, int layers) : field_(&field), bottom_(bottom), top_(top), layers_(layers)
-    {
-        field.validate();
-        detail::require_finite("LayeredMedium bottom", bottom);
-        detail::require_finite("LayeredMedium top", top);
-        if (!(top > bottom)) detail::throw_invalid("LayeredMedium top must be above bottom (", bottom, "), got ", top);
-        if (layers < 1) detail::throw_invalid("LayeredMedium layers must be >= 1, got ", layers);
-        height_ = (top - bottom) / T(layers);
-    }
-
-    /// The number of layers.
-    [[nodiscard]] int layers() const noexcept { return layers_; }
-
-    /// The layer holding height y (clamped into [0, layers); in floating point first, so a
-    /// far-off or NaN height never overflows the conversion to int).
-    [[nodiscard]] int layer_of(T y) const noexcept
-    {
-        const T layer = std::floor((y - bottom_) / height_);
-        if (!(layer > T(0))) return 0;
-        return layer < T(layers_ - 1) ? static_cast<int>(layer) : layers_ - 1;
-    }
-
-    /// The index of layer i: the field at its middle height (x = z = 0: stratified fields).
-    [[nodiscard]] T index_of(int layer) const noexcept { return field_->index({T(0), bottom_ + (T(layer) + T(0.5)) * height_, T(0)}); }
-
-    /// From `origin` in layer `layer` along the unit `direction`, straight to the layer's
-    /// next boundary and across it (or back, under total internal reflection). Returns
-    /// false when the ray leaves the layers (through the top or the bottom) or runs
-    /// horizontally; then `origin` is where it left.
-    bool step(Vec3<T>& origin, Vec3<T>& direction, int& layer) const noexcept
-    {
-        if (direction.y == T(0)) return false;
-        const bool up = direction.y > T(0);
-        const T boundary = bottom_ + T(layer + (up ? 1 : 0)) * height_;
-        origin = origin + ((boundary - origin.y) / direction.y) * direction;
-        origin.y = boundary;
-        const int next = layer + (up ? 1 : -1);
-        if (next < 0 || next >= layers_) return false;
-        const Vec3<T> facing{T(0), up ? T(-1) : T(1), T(0)};
-        if (const auto r = refraction(direction, facing, index_of(next) / index_of(layer))) {
-            direction = normalize(r->direction);
-            layer = next;
-        } else {
-            direction = reflect(direction, facing);
-        }
-        return true;
-    }
-
-private:
-    const F* field_;
-    T bottom_, top_, height_ = T(1);
-    int layers_;
-};
-
-} // namespace prism
-
-// ---- prism/medium/air.hpp ----
-// The scene's air: uniform (rays go straight, the default), of a varying index
-// (graded-index air: mirages, a flattened setting sun), through which rays curve, or
-// filled with a medium that scatters (FilledAir: fog, haze, murky water around everything,
-// in straight or graded air).
-//
-// GradedAir puts an index field (medium/graded_index.hpp) in a box; outside the box the
-// field must be uniform, and rays go straight there. LayeredAir is flat layers of
-// constant index, refracting at each boundary. How a ray travels through either to the first surface it meets is
-// transport/travel.hpp's.
-
-
-namespace prism {
-
-/// Uniform air of index 1: rays are straight.
-struct StraightAir {
-    /// Rays through it are straight.
-    static constexpr bool curved = false;
-    /// Nothing to check.
-    constexpr void validate() const {}
-};
-
-/// Air filled, within `region` (everywhere by default), with a medium that absorbs and
-/// scatters: the fog a scene stands in, the water around an underwater scene. Outside the
-/// region the air is clear. (An object's inside takes its own medium, its material's
-/// interior.) `Base` is the air the medium fills: straight (the default), or GradedAir or
-/// LayeredAir, through which rays curve (a mirage seen through haze): a walker in it
-/// scatters along the curved path, by the medium's coefficients per unit of the path's
-/// length.
-template <ScatteringMedium M, class Base = StraightAir>
-struct FilledAir {
-    /// The medium's precision.
-    using scalar_type = typename M::scalar_type;
-    /// Rays through it curve where they curve through its base.
-    static constexpr bool curved = Base::curved;
-    /// Light scatters in it.
-    static constexpr bool scatters = true;
-    static_assert(!requires { requires Base::scatters; }, "FilledAir's base is the air it fills: StraightAir, GradedAir or LayeredAir");
-
-    M medium{}; ///< what fills the region
-    Aabb<scalar_type> region = Aabb<scalar_type>::universe(); ///< where the medium is (a box; everywhere by default)
-    Base base{}; ///< the air it fills: straight, or of a varying index
-
-    /// Where the air is not clear: the region, within the medium's own box where it has
-    /// one (a medium of varying density).
-    [[nodiscard]] Aabb<scalar_type> bounds() const noexcept
-    {
-        if constexpr (requires { medium.bounds(); }) {
-            const Aabb<scalar_type> box = medium.bounds();
-            return {component_max(region.lo, box.lo), component_min(region.hi, box.hi)};
-        } else {
-            return region;
-        }
-    }
-
-    /// Throws std::invalid_argument, naming the parameter, for a bad medium or base, or an empty region.
-    void validate() const
-    {
-        medium.validate();
-        if (region.empty()) detail::throw_invalid("FilledAir region must not be empty");
-        base.validate();
-    }
-};
-
-/// Whether the scene's air `Air` scatters light (FilledAir).
-template <class Air>
-inline constexpr bool air_scatters = requires { requires Air::scatters; };
-
-/// Air whose index is `field` inside `region` (uniform outside it); rays through it curve.
-template <IndexField F>
-struct GradedAir {
-    /// The field's precision.
-    using scalar_type = typename F::scalar_type;
-    /// Shorthand for scalar_type.
-    using T = scalar_type;
-    /// Rays through it curve.
-    static constexpr bool curved = true;
-
-    F field{}; ///< the refractive index inside the region
-    Aabb<T> region{};                                   ///< where the index varies
-    typename AdaptiveStepper<F>::Config stepping{};     ///< the stepper's tolerance and step lengths
-    /// A chord that meets a surface is halved (Sharma steps of half the dt) until it is
-    /// at most this long, so the landing point lies on the curve, not on a chord that
-    /// cuts under it (a chord of length L sags by about L^2 / (8 R) from a path of radius R).
-    T landing_chord = T(1e-3);
-    int max_steps = 1000000;                            ///< a ray still in the air after this many steps is lost (background)
-
-    /// Throws std::invalid_argument, naming the parameter, for a bad field, an unbounded or empty region, max_steps < 1, landing_chord <= 0 or bad stepping.
-    void validate() const
-    {
-        field.validate();
-        if (!region.bounded()) detail::throw_invalid("GradedAir region must be a bounded, non-empty box");
-        if (max_steps < 1) detail::throw_invalid("GradedAir max_steps must be >= 1, got ", max_steps);
-        detail::require_positive("GradedAir landing_chord", landing_chord);
-        (void)AdaptiveStepper<F>(field, stepping); // checks the stepping
-    }
-};
-
-/// Layered air: `layers` flat layers between heights `bottom` and `top`, each
-/// of the field's index at its middle height (stratified fields only); a ray goes
-/// straight within a layer and refracts by Snell's law (or reflects totally) at each
-/// boundary; above and below the layers it goes straight. The second policy beside
-/// GradedAir, for comparison: it keeps n cos(theta) exactly but converges only at first
-/// order in the layer height (bench/graded_index.cpp).
-template <IndexField F>
-struct LayeredAir {
-    /// The field's precision.
-    using scalar_type = typename F::scalar_type;
-    /// Shorthand for scalar_type.
-    using T = scalar_type;
-    /// Rays through it bend at the layers' boundaries.
-    static constexpr bool curved = true;
-
-    F field{}; ///< the index field the layers sample at their middle heights
-    T bottom = T(0); ///< height of the lowest layer's bottom
-    T top = T(1); ///< height of the highest layer's top
-    int layers = 100; ///< the number of layers
-
-    /// Throws std::invalid_argument, naming the parameter, for a bad field, top <= bottom or layers < 1.
-    void validate() const { (void)LayeredMedium<F>(field, bottom, top, layers); }
 };
 
 } // namespace prism
@@ -13177,10 +13177,87 @@ template <ShadowsThroughGlass Glass, class SceneT, class Air, Scalar T>
 
 } // namespace prism
 
+// ---- prism/medium/phase.hpp ----
+// Phase functions: where light scattered in a medium goes, a density over the sphere of
+// directions. Written, as every walker uses them, for the directions of travel before
+// and after the scattering (a camera path's as well as a photon's: the function depends
+// on their angle only, so it reads the same both ways).
+
+
+#include <cmath>
+#include <concepts>
+
+namespace prism {
+
+/// A direction of travel drawn from a phase function, with its density (solid angle).
+template <Scalar T>
+struct PhaseSample {
+    Vec3<T> direction; ///< unit, the direction of travel after scattering
+    T pdf;             ///< its density, the phase function's value there
+};
+
+/// A phase function: `value(cos)` for the cosine between the directions of travel before
+/// and after scattering (a density over the sphere, integrating to 1), and
+/// `sample(direction, u1, u2)` drawing the direction after from exactly that density.
+template <class P>
+concept PhaseFunction = requires(const P& phase, typename P::scalar_type x, const Vec3<typename P::scalar_type>& d) {
+    { phase.value(x) } -> std::same_as<typename P::scalar_type>;
+    { phase.sample(d, x, x) } -> std::same_as<PhaseSample<typename P::scalar_type>>;
+    phase.validate();
+};
+
+/// Henyey and Greenstein's (1941) phase function of mean cosine `g`: 0 scatters evenly
+/// (isotropic), toward 1 forward (haze, cloud droplets: 0.7 to 0.9), toward -1 back.
+/// p(cos) = (1 - g^2) / (4 pi (1 + g^2 - 2 g cos)^(3/2)), drawn by inverting its
+/// distribution in cos.
+template <Scalar T = float>
+struct HenyeyGreenstein {
+    /// The precision of the parameter.
+    using scalar_type = T;
+
+    T g = T(0); ///< the mean cosine of the scattering angle, in (-1, 1)
+
+    /// The density for the cosine between the directions of travel before and after.
+    [[nodiscard]] T value(T cos_theta) const noexcept
+    {
+        const T denominator = T(1) + g * g - T(2) * g * cos_theta;
+        return (T(1) - g * g) / (T(4) * pi<T> * denominator * prism::sqrt(denominator));
+    }
+
+    /// A direction of travel after scattering, for `direction` (unit) before, from two
+    /// uniform numbers.
+    [[nodiscard]] PhaseSample<T> sample(const Vec3<T>& direction, T u1, T u2) const noexcept
+    {
+        T cos_theta;
+        if (std::abs(g) < T(1e-3)) {
+            cos_theta = T(1) - T(2) * u1;
+        } else {
+            const T s = (T(1) - g * g) / (T(1) + g - T(2) * g * u1);
+            cos_theta = std::clamp((T(1) + g * g - s * s) / (T(2) * g), T(-1), T(1));
+        }
+        const T sin_theta = prism::sqrt(std::max(T(0), T(1) - cos_theta * cos_theta));
+        const T phi = T(2) * pi<T> * u2;
+        const auto [a, b] = orthonormal_frame(direction);
+        const Vec3<T> out = sin_theta * (std::cos(phi) * a + std::sin(phi) * b) + cos_theta * direction;
+        return {normalize(out), value(cos_theta)};
+    }
+
+    /// Throws std::invalid_argument for g outside (-1, 1) or not finite.
+    void validate() const
+    {
+        if (!(g > T(-1) && g < T(1))) detail::throw_invalid("HenyeyGreenstein g must be in (-1, 1), got ", g);
+    }
+};
+
+static_assert(PhaseFunction<HenyeyGreenstein<float>> && PhaseFunction<HenyeyGreenstein<double>>);
+
+} // namespace prism
+
 // ---- prism/transport/path_vertex.hpp ----
-// SurfaceVertex: a path's vertex at a surface, as the bidirectional estimators see it
-// (integrator/bidirectional.hpp): what its material scatters toward any direction, and
-// the densities of drawing that direction from either end of the path.
+// SurfaceVertex and MediumVertex: a path's vertex at a surface or in a medium that
+// scatters, as the bidirectional estimators see it (integrator/bidirectional.hpp): what
+// its material or phase function scatters toward any direction, and the densities of
+// drawing that direction from either end of the path.
 //
 // A camera path and a light path meet at vertices: joined by a segment (connection), or
 // found near each other (merging). Each needs, at a vertex, the material's value for a
@@ -13199,6 +13276,12 @@ template <ShadowsThroughGlass Glass, class SceneT, class Air, Scalar T>
 // own sample(); a material with a diffuse and a delta lobe (a mirror or an interface
 // beside it) chooses one by their reflectances, as scatter_photon does, and that choice's
 // probability is part of the diffuse lobe's density.
+//
+// In a medium the lobe is the phase function, which has no delta and no cosine: every
+// vertex there is connectible, and its densities both ways are the phase function's
+// value at the angle between the two directions of travel (the same either way). The
+// medium's scattering coefficient is not in the value: the walk's free flight put it in
+// the path's throughput (medium/medium.hpp's FreeFlight).
 
 
 #include <algorithm>
@@ -13240,6 +13323,8 @@ class SurfaceVertex {
 public:
     /// The material's precision.
     using T = typename M::scalar_type;
+    /// The material's type.
+    using material_type = M;
 
     static_assert(!(has_diffuse<M> && has_glossy<M>), "a material is a diffuse lobe or a glossy one, not both");
 
@@ -13251,6 +13336,9 @@ public:
 
     /// Whether the vertex has a non-delta lobe: where connections and merges are made.
     [[nodiscard]] bool connectible() const noexcept { return scatters_smoothly(*material_, *hit_, d_); }
+
+    /// The material.
+    [[nodiscard]] const M& material() const noexcept { return *material_; }
 
     /// The non-delta lobe toward the unit direction wo (nothing for a vertex that has none).
     [[nodiscard]] VertexValue<T> value(const Vec3<T>& wo) const noexcept
@@ -13382,6 +13470,41 @@ private:
     T outside_index_;
 };
 
+/// A path's vertex in a medium that scatters by `phase`, arriving along the unit
+/// direction d.
+template <PhaseFunction P>
+class MediumVertex {
+public:
+    /// The phase function's precision.
+    using T = typename P::scalar_type;
+
+    /// The vertex; the phase function must outlive it.
+    MediumVertex(const P& phase, const Vec3<T>& d) noexcept : phase_(&phase), d_(d) {}
+
+    /// Every vertex in a medium can be joined and merged.
+    [[nodiscard]] static constexpr bool connectible() noexcept { return true; }
+
+    /// The phase function toward the unit direction wo, cosine 1, its value the density both ways.
+    [[nodiscard]] VertexValue<T> value(const Vec3<T>& wo) const noexcept
+    {
+        const T p = phase_->value(dot(d_, wo));
+        return {Rgb<T>(p), T(1), p, p};
+    }
+
+    /// A direction drawn from the phase function (exactly its density: weight 1).
+    [[nodiscard]] std::optional<VertexSample<T>> sample(Random& rng) const noexcept
+    {
+        const auto [u1, u2] = rng.uniform2<T>();
+        const PhaseSample<T> s = phase_->sample(d_, u1, u2);
+        if (!(s.pdf > T(0)) || !(s.pdf < infinity<T>)) return std::nullopt;
+        return VertexSample<T>{s.direction, Rgb<T>(T(1)), s.pdf, s.pdf, false};
+    }
+
+private:
+    const P* phase_;
+    Vec3<T> d_;
+};
+
 } // namespace prism
 
 // ---- prism/integrator/bidirectional.hpp ----
@@ -13417,9 +13540,23 @@ private:
 // function of (seed, pass, pixel or path), splats go to exact sums per thread; the same
 // bits for any thread count, crop, range of passes or MPI rank.
 //
-// Scope: surfaces in clear, straight air (nested dielectrics, index-matched boundaries and
-// absorbing interiors included); a scene with scattering media, dispersion, graded air or
-// a light without falloff is refused at compile time or by the constructor.
+// Media: where a subpath crosses a medium that scatters (an object's interior, or the
+// scene's air filled with fog: FilledAir) it draws where it scatters as the path tracer
+// does (the medium's free flight), and a vertex there is a MediumVertex, joined and
+// merged like a surface's: its lobe the phase function, its cosines 1. Merging in a
+// medium gathers the light vertices within a ball of the radius in the same medium (the
+// volume photon map's point estimate, 4/3 pi r^3), dividing out the scattering
+// coefficient the light vertex's throughput took. The distances' densities (a flight's
+// sigma_t T) are left out of the weights, as pbrt-v3's BDPT leaves them: the weights still
+// sum to 1 over a path's strategies, so every estimate stays unbiased, but they no longer
+// favour the strategy that samples a long, dense stretch best. A vertex in a medium counts
+// for the weights as its kernel's eta, merge_weight 4/3 pi r^3 N times its mean
+// scattering coefficient, which a vertex's density there has where a surface's has none.
+//
+// Scope: straight air, clear or filled with a medium that scatters, and the media inside
+// objects (nested dielectrics, index-matched boundaries and absorbing interiors
+// included); a scene with dispersion, graded air or a light without falloff is refused at
+// compile time or by the constructor.
 
 
 #include <algorithm>
@@ -13438,6 +13575,11 @@ namespace prism {
 enum class BidirectionalMethod {
     bdpt, ///< connections only: bidirectional path tracing
     vcm,  ///< connections and merging: vertex connection and merging
+    /// Merges alone, unweighted, at each camera path's first vertex with a non-delta lobe
+    /// (and the lights it meets through mirrors and glass before): progressive photon
+    /// mapping by VCM's light paths and radii. VCM's merging part, for tests; consistent,
+    /// not unbiased.
+    merging,
 };
 
 /// One strategy (s, t): s vertices from the light, t from the camera (a path of s + t - 1 segments).
@@ -13495,11 +13637,16 @@ struct VcmMis {
     T dvc = T(0);  ///< d^VC: the same summed over the connections further back
     T dvm = T(0);  ///< d^VM: the same over the merges further back
 
-    /// What a pass's merging is worth: eta = merge_weight pi r^2 N (0 without merging)
-    /// and 1 / eta (0 without connections).
+    /// What merging at a vertex is worth: eta = merge_weight V N, V the merging kernel's
+    /// size there (pi r^2 on a surface; 4/3 pi r^3 sigma in a medium, sigma its mean
+    /// scattering coefficient there: see Bidirectional), 0 without merging; 1 / eta at a
+    /// surface; and eta over a surface vertex's. (d^VM is counted in a surface's merges,
+    /// d^VC / eta_surface, and a merge at a vertex of another kind takes it by the ratio;
+    /// on surfaces alone the ratio is exactly 1, Georgiev's recursion as written.)
     struct Pass {
-        T vm = T(0); ///< eta: merging's weight against a connection
-        T vc = T(0); ///< 1 / eta
+        T vm = T(0);    ///< eta at the vertex: merging's weight against a connection there
+        T vc = T(0);    ///< 1 / eta at a surface vertex
+        T ratio = T(1); ///< vm vc: eta at the vertex over a surface vertex's (1 without merging)
     };
 
     /// A light subpath's start: the light chosen with probability q drew its point with
@@ -13544,9 +13691,9 @@ struct VcmMis {
     }
 
     /// Scattered at a vertex: the next direction drawn with density pdf_forward (per
-    /// steradian; 1 for a delta), at cosine cos_out to the true normal, where a path
-    /// arriving the other way would draw the last direction with pdf_reverse: the
-    /// report's (34)-(36), or (53)-(55) for a delta.
+    /// steradian; 1 for a delta), at cosine cos_out to the true normal (1 in a medium),
+    /// where a path arriving the other way would draw the last direction with
+    /// pdf_reverse: the report's (34)-(36), or (53)-(55) for a delta; `pass` the vertex's.
     void scattered(T cos_out, T pdf_forward, T pdf_reverse, bool delta, Pass pass) noexcept
     {
         if (delta) {
@@ -13556,7 +13703,7 @@ struct VcmMis {
         } else {
             const T g = cos_out / pdf_forward;
             dvc = g * (dvc * pdf_reverse + dvcm + pass.vm);
-            dvm = g * (dvm * pdf_reverse + dvcm * pass.vc + T(1));
+            dvm = g * (dvm * pdf_reverse + dvcm * pass.vc + pass.ratio);
             dvcm = T(1) / pdf_forward;
         }
     }
@@ -13584,12 +13731,12 @@ struct VcmMis {
     /// segment of squared length d2 at cosines cos_light and cos_camera; the camera
     /// vertex's lobe draws the segment with camera_forward (and its own arrival, from the
     /// light, with camera_reverse), the light vertex's with light_forward and
-    /// light_reverse. (40)-(41).
+    /// light_reverse; each vertex's pass. (40)-(41).
     [[nodiscard]] static T connection_weight(const VcmMis& light, const VcmMis& camera, T d2, T cos_light, T cos_camera, T light_forward, T light_reverse,
-                                             T camera_forward, T camera_reverse, Pass pass) noexcept
+                                             T camera_forward, T camera_reverse, Pass light_pass, Pass camera_pass) noexcept
     {
-        const T w_light = camera_forward * cos_light / d2 * (pass.vm + light.dvcm + light.dvc * light_reverse);
-        const T w_camera = light_forward * cos_camera / d2 * (pass.vm + camera.dvcm + camera.dvc * camera_reverse);
+        const T w_light = camera_forward * cos_light / d2 * (light_pass.vm + light.dvcm + light.dvc * light_reverse);
+        const T w_camera = light_forward * cos_camera / d2 * (camera_pass.vm + camera.dvcm + camera.dvc * camera_reverse);
         return T(1) / (w_light + T(1) + w_camera);
     }
 
@@ -13605,23 +13752,24 @@ struct VcmMis {
 
     /// A merge of a light vertex (`light`, arrived along d) at a camera vertex
     /// (`camera`): the camera vertex's lobe draws -d with camera_forward and its own
-    /// arrival, coming the light path's way, with camera_reverse. (37)-(39).
+    /// arrival, coming the light path's way, with camera_reverse; `pass` the vertex's.
+    /// (37)-(39).
     [[nodiscard]] static T merge_weight(const VcmMis& light, const VcmMis& camera, T camera_forward, T camera_reverse, Pass pass) noexcept
     {
-        const T w_light = light.dvcm * pass.vc + light.dvm * camera_forward;
-        const T w_camera = camera.dvcm * pass.vc + camera.dvm * camera_reverse;
+        const T w_light = (light.dvcm * pass.vc + light.dvm * camera_forward) / pass.ratio;
+        const T w_camera = (camera.dvcm * pass.vc + camera.dvm * camera_reverse) / pass.ratio;
         return T(1) / (w_light + T(1) + w_camera);
     }
 };
 
-/// Whether Bidirectional renders scenes of type SceneT: surfaces only (no scattering
-/// medium), no dispersive material, no light that casts its own shadow.
-template <class SceneT>
-inline constexpr bool renders_bidirectionally = !SceneT::has_scattering_media && !SceneT::has_dispersion && !SceneT::has_own_shadow_lights;
+/// Whether Bidirectional renders scenes of type SceneT in air of type Air: no dispersive
+/// material, no light that casts its own shadow, straight air.
+template <class SceneT, class Air = StraightAir>
+inline constexpr bool renders_bidirectionally = !SceneT::has_dispersion && !SceneT::has_own_shadow_lights && !Air::curved;
 
-/// Bidirectional path tracing and vertex connection and merging of `scene` (an integrator
-/// of passes: render/render.hpp's PassEstimator).
-template <class SceneT>
+/// Bidirectional path tracing and vertex connection and merging of `scene` in `Air` (an
+/// integrator of passes: render/render.hpp's PassEstimator).
+template <class SceneT, class Air = StraightAir>
 class Bidirectional {
 public:
     /// The scene's precision.
@@ -13629,16 +13777,17 @@ public:
     /// Shorthand for scalar_type.
     using T = scalar_type;
 
-    static_assert(!SceneT::has_scattering_media, "Bidirectional renders surfaces only: a scene with a scattering medium needs the PathTracer or a PhotonMapper");
+    static_assert(!Air::curved, "Bidirectional joins vertices by straight segments: graded air needs the PathTracer or a PhotonMapper");
     static_assert(!SceneT::has_dispersion, "Bidirectional: a dispersive material's wavelengths are not traced yet");
     static_assert(!SceneT::has_own_shadow_lights, "Bidirectional: a light that casts its own shadow (PointGridLight, POV-Ray's area_light) has no emission to trace");
 
     /// The estimator of `scene` (which must outlive it); throws std::invalid_argument,
     /// naming the parameter, for a bad setting, a dispersive material or a light without
     /// falloff (POV-Ray's fade_power 0, which no light path can carry).
-    explicit Bidirectional(const SceneT& scene, BidirectionalConfig config = {}) : scene_(&scene), config_(config)
+    explicit Bidirectional(const SceneT& scene, BidirectionalConfig config = {}, Air air = {}) : scene_(&scene), config_(config), air_(std::move(air))
     {
         scene.validate();
+        air_.validate();
         if (config.max_length < 1) detail::throw_invalid("BidirectionalConfig max_length must be >= 1, got ", config.max_length);
         if (config.roulette_length < 0) detail::throw_invalid("BidirectionalConfig roulette_length must be >= 0, got ", config.roulette_length);
         if (!(config.radius >= 0.0 && config.radius < std::numeric_limits<double>::infinity()))
@@ -13652,7 +13801,11 @@ public:
             if constexpr (std::same_as<L, PointLight<T>>)
                 if (light.falloff != Falloff::inverse_square) detail::throw_invalid("Bidirectional: a PointLight without falloff (POV-Ray's fade_power 0) has no physical emission");
         });
-        const Aabb<T> box = scene.bounds();
+        Aabb<T> box = scene.bounds();
+        // (Light from infinity is aimed at the fog too, where it is bounded.)
+        if constexpr (air_scatters<Air>) {
+            if (air_.bounds().bounded()) box = box.merged(air_.bounds());
+        }
         if (!box.empty()) sphere_ = box.bounding_sphere();
         if (!(sphere_.radius > T(0))) sphere_.radius = T(1);
         // The lights by power, for the light paths.
@@ -13674,7 +13827,7 @@ public:
             light_cdf_.push_back(T(sum));
         }
     }
-    Bidirectional(const SceneT&& scene, BidirectionalConfig config = {}) = delete;
+    Bidirectional(const SceneT&& scene, BidirectionalConfig config = {}, Air air = {}) = delete;
 
     /// The settings.
     [[nodiscard]] const BidirectionalConfig& config() const noexcept { return config_; }
@@ -13724,25 +13877,69 @@ public:
     }
 
 private:
+    /// Whether a subpath may scatter in a medium (a scene or air without one compiles none of it).
+    static constexpr bool has_media = SceneT::has_scattering_media || air_scatters<Air>;
+
+    /// The medium a vertex is in: none (a surface's vertex), the scene's air, or an object's interior.
+    struct MediumRef {
+        enum class In : std::uint8_t { surface, air, object };
+        In in = In::surface;
+        std::uint32_t slot = 0;  ///< the object's scene slot
+        std::uint32_t index = 0; ///< the object within its slot
+        [[nodiscard]] bool operator==(const MediumRef&) const = default;
+    };
+
+    /// Where a subpath's vertex is: on a surface (its hit), or at a point in a medium.
+    struct Place {
+        const Hit<T>* hit = nullptr; ///< the surface; none in a medium
+        Vec3<T> point{};             ///< where
+        T outside_index = T(1);      ///< a transmissive material's outer index
+        MediumRef medium{};          ///< in a medium: which
+        Rgb<T> scattering{T(0)};     ///< in a medium: its scattering coefficient at the point
+
+        [[nodiscard]] bool on_surface() const noexcept { return hit != nullptr; }
+        /// |cos| of the unit direction w to the true normal (1 in a medium).
+        [[nodiscard]] T cos(const Vec3<T>& w) const noexcept { return hit ? std::abs(dot(w, hit->crossing.normal)) : T(1); }
+        /// A ray leaving toward the unit direction w (off the surface by its error bound).
+        [[nodiscard]] Ray<T> toward(const Vec3<T>& w) const noexcept
+        {
+            if (!hit) return Ray<T>{point, w};
+            const Crossing<T>& c = hit->crossing;
+            return spawn_ray(c.point, c.error, c.normal, w);
+        }
+    };
+
     /// A light subpath's vertex with a non-delta lobe, kept for connections and merges.
     struct LightVertex {
-        Hit<T> hit;          ///< where
+        Hit<T> hit;          ///< where: the surface, or in a medium only the point (crossing.point)
         Vec3<T> d;           ///< unit, the direction the light path arrived along
         Rgb<T> beta;         ///< its throughput: the light's power estimate carried to here
         VcmMis<T> mis;       ///< the MIS quantities
         T outside_index;     ///< a transmissive material's outer index
         int length;          ///< segments from the light
+        MediumRef medium;    ///< the medium it is in (In::surface: on the surface `hit`)
+        Rgb<T> scattering;   ///< in a medium: its scattering coefficient there
+
+        /// Where it is.
+        [[nodiscard]] Place place() const noexcept
+        {
+            return {medium.in == MediumRef::In::surface ? &hit : nullptr, hit.crossing.point, outside_index, medium, scattering};
+        }
     };
 
-    /// A pass's light subpaths: their vertices path by path, and VCM's grid of them.
+    /// A pass's light subpaths: their vertices path by path, and VCM's grids of them.
     struct LightPaths {
         std::vector<LightVertex> vertices;
         std::vector<std::uint32_t> ends; ///< path i's vertices are [ends[i], ends[i + 1])
-        HashGrid<T> grid;                ///< the vertices by position, for merging
+        HashGrid<T> grid;                ///< the vertices on surfaces by position, for merging
+        HashGrid<T> volume_grid;         ///< the vertices in media by position
+        std::vector<std::uint32_t> on_surfaces, in_media; ///< with media: the grids' points' vertices
         T count = T(0);          ///< N, the light paths traced
         T radius = T(0);         ///< the merging radius
-        typename VcmMis<T>::Pass mis; ///< what merging is worth against a connection
+        typename VcmMis<T>::Pass mis; ///< what merging on a surface is worth against a connection
+        T volume_eta = T(0);     ///< merge_weight 4/3 pi r^3 N: eta in a medium over its mean scattering coefficient
         T vm_normalization = T(0); ///< 1 / (pi r^2 N)
+        T volume_normalization = T(0); ///< 1 / (4/3 pi r^3 N)
         bool per_pixel = false;    ///< light path i is pixel i's (paired_with_pixels)
         int width = 0, height = 0; ///< the image's size
     };
@@ -13791,6 +13988,8 @@ private:
     /// Whether a contribution of strategy (s, t) counts, and with which of its weights.
     [[nodiscard]] bool counts(int s, int t) const noexcept { return !config_.only || (config_.only->s == s && config_.only->t == t); }
     [[nodiscard]] T weighed(T w) const noexcept { return config_.only && !config_.weighted ? T(1) : w; }
+    /// A merge's weight: 1 where merging is the only strategy.
+    [[nodiscard]] T merged(T w) const noexcept { return config_.method == BidirectionalMethod::merging ? T(1) : w; }
 
     [[nodiscard]] static T cube(T x) noexcept { return x * x * x; }
 
@@ -13802,19 +14001,49 @@ private:
         return cos > T(0) ? T(1) / (rays.pixel_area() * cube(cos)) : T(0);
     }
 
-    /// Walk a subpath from `ray` (starting inside `media`), calling on_vertex(material,
-    /// hit, vertex, d, distance, outside_index) at every surface that is a vertex (false
-    /// and index-matched interfaces are crossed; d the unit direction it arrived along,
-    /// `distance` the length since the last vertex), which returns the direction drawn
-    /// there (nothing ends the walk), and on_escape(ray) when the path leaves the scene.
-    /// `beta` takes what the objects' interiors and index-matched boundaries let through.
+    /// Walk a subpath from `ray` (starting inside `media`), calling on_vertex(vertex,
+    /// place, d, distance, kept) at every vertex: a SurfaceVertex where it meets a surface
+    /// (false and index-matched interfaces are crossed), a MediumVertex where it scatters
+    /// in a medium (drawn by the medium's free flight); d the unit direction it arrived
+    /// along, `distance` the length since the last vertex, `kept` the largest share of the
+    /// throughput the flight there kept (1 at a surface). on_vertex returns the direction
+    /// drawn there (nothing ends the walk); on_escape(ray) is called when the path leaves
+    /// the scene. `beta` takes what the media and index-matched boundaries let through.
     template <class OnVertex, class OnEscape>
     void walk(Ray<T> ray, MediumStack media, Rgb<T>& beta, Transport mode, Random& rng, int first_block, OnVertex&& on_vertex, OnEscape&& on_escape) const
     {
         T distance = T(0);
         for (int bounce = 0;; ++bounce) {
             rng.bounce(first_block + bounce);
-            const std::optional<Hit<T>> hit = scene_->closest_hit(ray, Interval<T>{T(0), infinity<T>});
+            std::optional<Hit<T>> hit;
+            if constexpr (has_media) {
+                enum class InMedium { passed, scattered, ended };
+                InMedium in_medium = InMedium::passed;
+                Ray<T> segment = ray;
+                T path = T(0);
+                hit = first_hit_through_media(*scene_, air_, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
+                    const Ray<T> stretch{piece.at(t0), piece.direction};
+                    const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, beta, rng);
+                    beta *= flight.weight;
+                    if (!flight.scattered) return true;
+                    Place place;
+                    place.point = stretch.at(flight.distance);
+                    place.medium = media.top() ? MediumRef{MediumRef::In::object, media.top()->slot, media.top()->index} : MediumRef{MediumRef::In::air};
+                    place.scattering = medium.scattering_at(place.point);
+                    const MediumVertex vertex(medium.phase, piece.direction);
+                    const std::optional<Vec3<T>> next = on_vertex(vertex, place, piece.direction, distance + before + t0 + flight.distance, max_component(flight.weight));
+                    in_medium = next ? InMedium::scattered : InMedium::ended;
+                    if (next) {
+                        ray = Ray<T>{place.point, *next};
+                        distance = T(0);
+                    }
+                    return false;
+                });
+                if (in_medium == InMedium::ended) return;
+                if (in_medium == InMedium::scattered) continue;
+            } else {
+                hit = scene_->closest_hit(ray, Interval<T>{T(0), infinity<T>});
+            }
             if (!hit) {
                 on_escape(ray);
                 return;
@@ -13843,7 +14072,8 @@ private:
                     }
                 }
                 const SurfaceVertex<M> vertex(material, c, ray.direction, mode, outside_index);
-                const std::optional<Vec3<T>> next = on_vertex(material, *hit, vertex, ray.direction, distance, outside_index);
+                const Place place{&*hit, c.point, outside_index};
+                const std::optional<Vec3<T>> next = on_vertex(vertex, place, ray.direction, distance, T(1));
                 if (!next) return false;
                 if constexpr (transmits<M>) {
                     if (dot(*next, c.normal) * dot(ray.direction, c.normal) > T(0)) media = face.beyond; // refracted
@@ -13858,23 +14088,76 @@ private:
 
     /// Scatter a subpath at a vertex: draw the next direction, update the throughput and
     /// the MIS quantities (the report's (34)-(36), or (53)-(55) for a delta), and play
-    /// Russian roulette past roulette_length (outside the weights). Nothing: it ends.
-    template <class M>
-    [[nodiscard]] std::optional<Vec3<T>> scatter(const SurfaceVertex<M>& vertex, const Crossing<T>& c, PathState& state, const LightPaths& light,
-                                                 Random& rng) const noexcept
+    /// Russian roulette past roulette_length (outside the weights) by the share of the
+    /// throughput the vertex kept (`kept`: the flight's to a vertex in a medium). Nothing:
+    /// it ends.
+    template <class V>
+    [[nodiscard]] std::optional<Vec3<T>> scatter(const V& vertex, const Place& place, PathState& state, const LightPaths& light, Random& rng,
+                                                 T kept) const noexcept
     {
         const std::optional<VertexSample<T>> s = vertex.sample(rng);
         if (!s || !(max_component(s->weight) > T(0)) || !(max_component(s->weight) < infinity<T>)) return std::nullopt;
-        state.mis.scattered(std::abs(dot(s->direction, c.normal)), s->pdf_forward, s->pdf_reverse, s->delta, light.mis);
+        state.mis.scattered(place.cos(s->direction), s->pdf_forward, s->pdf_reverse, s->delta, pass_at(place, light));
         if (!s->delta) state.specular = false;
         state.beta *= s->weight;
         if (state.length >= config_.roulette_length) {
             // Roulette by how much of the throughput this scattering kept (at most 1).
-            const T keep = std::min(T(1), max_component(s->weight));
+            const T keep = std::min(T(1), max_component(s->weight) * kept);
             if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return std::nullopt;
             state.beta /= keep;
         }
         return s->direction;
+    }
+
+    /// What merging at a place is worth against a connection there: the pass's on a
+    /// surface; in a medium eta by the ball's volume, times the mean scattering
+    /// coefficient there (a vertex's density per volume has the medium's coefficient where
+    /// one per area has none).
+    [[nodiscard]] typename VcmMis<T>::Pass pass_at(const Place& place, const LightPaths& light) const noexcept
+    {
+        if (place.on_surface() || !(light.mis.vm > T(0))) return light.mis;
+        const T vm = light.volume_eta * (place.scattering.x + place.scattering.y + place.scattering.z) / T(3);
+        return {vm, light.mis.vc, vm * light.mis.vc};
+    }
+
+    /// Call f(medium) with the medium `m` names (nothing for a surface's).
+    template <class F>
+    void visit_medium(const MediumRef& m, F&& f) const
+    {
+        if constexpr (air_scatters<Air>) {
+            if (m.in == MediumRef::In::air) f(air_.medium);
+        }
+        if constexpr (SceneT::has_scattering_media) {
+            if (m.in == MediumRef::In::object)
+                scene_->visit_material(m.slot, m.index, [&]<class N>(const N& material) {
+                    if constexpr (has_scattering_interior<N>) f(material.medium());
+                });
+        }
+    }
+
+    /// A stored light vertex's lobe toward the unit direction wo.
+    [[nodiscard]] VertexValue<T> value_at(const LightVertex& lv, const Vec3<T>& wo) const noexcept
+    {
+        if constexpr (has_media) {
+            if (lv.medium.in != MediumRef::In::surface) {
+                VertexValue<T> v;
+                visit_medium(lv.medium, [&](const auto& medium) { v = MediumVertex(medium.phase, lv.d).value(wo); });
+                return v;
+            }
+        }
+        return scene_->visit_material(lv.hit, [&]<class N>(const N& material) {
+            return SurfaceVertex<N>(material, lv.hit.crossing, lv.d, Transport::importance, lv.outside_index).value(wo);
+        });
+    }
+
+    /// What reaches the end of `ray` (unit direction) over `distance` from its origin:
+    /// the scene's transmittance (glass blocks) and its air's.
+    [[nodiscard]] Rgb<T> visible(const Ray<T>& ray, T distance) const noexcept
+    {
+        const T d = distance * (T(1) - shadow_epsilon<T>);
+        const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(ray, d);
+        if constexpr (air_scatters<Air>) return v * air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, ray, d);
+        else return v;
     }
 
     /// The pass's light subpaths: traced, their vertices kept (and VCM's grid built), and
@@ -13887,13 +14170,16 @@ private:
         light.per_pixel = paired_with_pixels(config, count);
         light.width = config.width;
         light.height = config.height;
-        const bool merging = config_.method == BidirectionalMethod::vcm;
+        const bool merging = config_.method != BidirectionalMethod::bdpt;
         light.radius = T(double(first_radius(rays, config.width, config.height)) * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)));
         light.radius = std::max(light.radius, sphere_.radius * T(1e-7));
         const T eta = pi<T> * light.radius * light.radius * light.count;
         light.mis.vm = merging ? T(config_.merge_weight) * eta : T(0);
         light.mis.vc = T(1) / (T(config_.merge_weight) * eta);
         light.vm_normalization = T(1) / eta;
+        const T ball = T(4) / T(3) * pi<T> * light.radius * light.radius * light.radius * light.count;
+        light.volume_eta = merging ? T(config_.merge_weight) * ball : T(0);
+        light.volume_normalization = T(1) / ball;
         // Blocks of paths, each into its own list (joined in order) and its worker's splats.
         constexpr std::size_t block = 4096;
         const std::size_t blocks = (count + block - 1) / block;
@@ -13935,9 +14221,22 @@ private:
             for (const std::uint32_t n : lengths[b]) light.ends.push_back(light.ends.back() + n);
         }
         if (merging && !light.vertices.empty()) {
-            std::vector<Vec3<T>> points(light.vertices.size());
-            for (std::size_t i = 0; i < points.size(); ++i) points[i] = light.vertices[i].hit.crossing.point;
-            light.grid = HashGrid<T>(points, light.radius);
+            if constexpr (has_media) {
+                // Two grids: the vertices on surfaces, and those in media.
+                std::vector<Vec3<T>> points, volume;
+                for (std::size_t i = 0; i < light.vertices.size(); ++i) {
+                    const LightVertex& v = light.vertices[i];
+                    const bool on_surface = v.medium.in == MediumRef::In::surface;
+                    (on_surface ? points : volume).push_back(v.hit.crossing.point);
+                    (on_surface ? light.on_surfaces : light.in_media).push_back(std::uint32_t(i));
+                }
+                if (!points.empty()) light.grid = HashGrid<T>(points, light.radius);
+                if (!volume.empty()) light.volume_grid = HashGrid<T>(volume, light.radius);
+            } else {
+                std::vector<Vec3<T>> points(light.vertices.size());
+                for (std::size_t i = 0; i < points.size(); ++i) points[i] = light.vertices[i].hit.crossing.point;
+                light.grid = HashGrid<T>(points, light.radius);
+            }
         }
         return light;
     }
@@ -13974,24 +14273,27 @@ private:
         state.beta = e.radiance * (e.cos / pdf);
         state.mis = VcmMis<T>::light_start(q, e.pdf_area, e.pdf_direction, e.cos, e.from_infinity, delta_light, light.mis);
         walk(e.ray, scene_->media_at(e.ray.origin), state.beta, Transport::importance, rng, light_blocks,
-             [&]<class M>(const M&, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T outside_index) -> std::optional<Vec3<T>> {
-                 const Crossing<T>& c = hit.crossing;
-                 const T cos = std::abs(dot(d, c.normal));
+             [&]<class V>(const V& vertex, const Place& place, const Vec3<T>& d, T distance, T kept) -> std::optional<Vec3<T>> {
+                 const T cos = place.cos(d);
                  if (!(cos > T(0))) return std::nullopt;
                  ++state.length;
                  if (state.length == 1 && source) {
                      // An area light's sample from here finds its point with the density
                      // pdf_W cos_0 / d^2 per unit area.
-                     if constexpr (SceneT::has_emitters) state.mis.first_hit_of_area_light(scene_->area_lights().pdf(*source, c.point), e.cos, cos);
+                     if constexpr (SceneT::has_emitters) state.mis.first_hit_of_area_light(scene_->area_lights().pdf(*source, place.point), e.cos, cos);
                  } else {
                      state.mis.arrive(state.length > 1 || !e.from_infinity ? distance * distance : T(1), cos);
                  }
                  if (vertex.connectible()) {
-                     out.push_back({hit, d, state.beta, state.mis, outside_index, state.length});
-                     if (state.length + 1 <= config_.max_length) connect_to_camera(out.back(), vertex, light, rays, window, rng, splats);
+                     Hit<T> at{};
+                     if (place.hit) at = *place.hit;
+                     else at.crossing.point = place.point;
+                     out.push_back({at, d, state.beta, state.mis, place.outside_index, state.length, place.medium, place.scattering});
+                     if (state.length + 1 <= config_.max_length && config_.method != BidirectionalMethod::merging)
+                         connect_to_camera(out.back(), vertex, light, rays, window, rng, splats);
                  }
                  if (state.length + 2 > config_.max_length) return std::nullopt;
-                 return scatter(vertex, c, state, light, rng);
+                 return scatter(vertex, place, state, light, rng, kept);
              },
              [](const Ray<T>&) {});
     }
@@ -13999,28 +14301,27 @@ private:
     /// Light tracing (t = 1): a light vertex joined to the camera (a point of a thin lens
     /// drawn uniformly), its splat added where the camera sees it in the window: the
     /// report's (46)-(47).
-    template <class M>
-    void connect_to_camera(const LightVertex& lv, const SurfaceVertex<M>& vertex, const LightPaths& light, const CameraRays<T>& rays, const PixelWindow& window,
+    template <class V>
+    void connect_to_camera(const LightVertex& lv, const V& vertex, const LightPaths& light, const CameraRays<T>& rays, const PixelWindow& window,
                            Random& rng, Accumulation& splats) const
     {
-        const Crossing<T>& c = lv.hit.crossing;
+        const Place place = lv.place();
         Vec3<T> eye = rays.origin;
         if (rays.thin_lens()) {
             const auto [u, v] = rng.template uniform2<T>();
             eye = rays.lens_point(u, v);
         }
-        const auto seen = rays.thin_lens() ? rays.project(c.point, eye) : rays.project(c.point);
+        const auto seen = rays.thin_lens() ? rays.project(place.point, eye) : rays.project(place.point);
         if (!counts(lv.length + 1, 1) || !seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return;
-        const Vec3<T> to_camera = (eye - c.point) / seen->distance;
+        const Vec3<T> to_camera = (eye - place.point) / seen->distance;
         const VertexValue<T> f = vertex.value(to_camera);
         if (f.black()) return;
         const T d2 = seen->distance * seen->distance;
         // The camera's density of this vertex per unit area: its image-plane density 1 / A
         // taken to the ray's solid angle (1 / cos_c^3) and on to the surface.
-        const T camera_area_pdf = T(1) / (rays.pixel_area() * cube(seen->cos)) * std::abs(dot(to_camera, c.normal)) / d2;
-        const T weight = weighed(lv.mis.splat_weight(camera_area_pdf, light.count, f.pdf_reverse, light.mis));
-        const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
-                                                                                       seen->distance * (T(1) - shadow_epsilon<T>));
+        const T camera_area_pdf = T(1) / (rays.pixel_area() * cube(seen->cos)) * place.cos(to_camera) / d2;
+        const T weight = weighed(lv.mis.splat_weight(camera_area_pdf, light.count, f.pdf_reverse, pass_at(place, light)));
+        const Rgb<T> v = visible(place.toward(to_camera), seen->distance);
         if (!(max_component(v) > T(0))) return;
         const Rgb<T> value = (weight / (light.count * rays.pixel_area() * cube(seen->cos) * d2)) * lv.beta * f.f * f.cos * v;
         std::array<ExactSum, 3> add{};
@@ -14047,36 +14348,41 @@ private:
         state.mis = VcmMis<T>::camera_start(light.count, camera);
         Vec3<T> previous = ray.origin;
         walk(ray, scene_->media_at(ray.origin), state.beta, Transport::radiance, rng, 0,
-             [&]<class M>(const M& material, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T) -> std::optional<Vec3<T>> {
-                 const Crossing<T>& c = hit.crossing;
-                 const T cos = std::abs(dot(d, c.normal));
+             [&]<class V>(const V& vertex, const Place& place, const Vec3<T>& d, T distance, T kept) -> std::optional<Vec3<T>> {
+                 const T cos = place.cos(d);
                  if (!(cos > T(0))) return std::nullopt;
                  ++state.length;
                  state.mis.arrive(distance * distance, cos);
                  const int t = state.length + 1;
-                 if constexpr (emits<M>) {
-                     // s = 0: the path met an area light, (42)-(43).
-                     const Rgb<T> le = emitted(material, c);
-                     if (max_component(le) > T(0) && counts(0, t)) {
-                         T weight = T(1);
-                         if (state.length > 1) {
-                             const AreaLights<SceneT> lights = scene_->area_lights();
-                             const T direct = lights.pdf(hit, previous) * cos / (distance * distance);
-                             const T emission = area_light_probability() * lights.emission_pdf(hit, -d).both();
-                             weight = state.mis.met_light_weight(direct, emission);
+                 if constexpr (requires { typename V::material_type; }) {
+                     if constexpr (emits<typename V::material_type>) {
+                         // s = 0: the path met an area light, (42)-(43).
+                         const Rgb<T> le = emitted(vertex.material(), place.hit->crossing);
+                         if (max_component(le) > T(0) && counts(0, t)) {
+                             T weight = T(1);
+                             if (state.length > 1 && config_.method != BidirectionalMethod::merging) {
+                                 const AreaLights<SceneT> lights = scene_->area_lights();
+                                 const T direct = lights.pdf(*place.hit, previous) * cos / (distance * distance);
+                                 const T emission = area_light_probability() * lights.emission_pdf(*place.hit, -d).both();
+                                 weight = state.mis.met_light_weight(direct, emission);
+                             }
+                             sum += weighed(weight) * state.beta * le;
                          }
-                         sum += weighed(weight) * state.beta * le;
                      }
+                 }
+                 if (config_.method == BidirectionalMethod::merging && vertex.connectible()) {
+                     sum += state.beta * merges(vertex, place, state, light);
+                     return std::nullopt;
                  }
                  if (state.length >= config_.max_length || !vertex.connectible()) {
                      if (state.length >= config_.max_length) return std::nullopt;
                  } else {
-                     sum += state.beta * light_samples(vertex, c, state, light, rng);
-                     sum += state.beta * connections(vertex, c, state, light, paired);
-                     if (config_.method == BidirectionalMethod::vcm && !config_.only) sum += state.beta * merges(vertex, c, state, light);
+                     sum += state.beta * light_samples(vertex, place, state, light, rng);
+                     sum += state.beta * connections(vertex, place, state, light, paired);
+                     if (config_.method == BidirectionalMethod::vcm && !config_.only) sum += state.beta * merges(vertex, place, state, light);
                  }
-                 previous = c.point;
-                 return scatter(vertex, c, state, light, rng);
+                 previous = place.point;
+                 return scatter(vertex, place, state, light, rng, kept);
              },
              [&](const Ray<T>& out) {
                  // Leaving the scene: the background where every scattering was a delta
@@ -14091,7 +14397,7 @@ private:
                          const Vec3<T> w = out.direction;
                          const Rgb<T> le = l.arriving_from(w);
                          T weight = T(1);
-                         if (state.length > 0) {
+                         if (state.length > 0 && config_.method != BidirectionalMethod::merging) {
                              const T direct = l.pdf(w);
                              const T emission = reached_from_entry(sphere_, w, out.origin) ? light_probability_[i] * l.emission_pdf(-w, sphere_).both() : T(0);
                              weight = state.mis.met_light_weight(direct, emission);
@@ -14106,14 +14412,30 @@ private:
     /// The area lights' share of the light paths.
     [[nodiscard]] T area_light_probability() const noexcept { return light_probability_.back(); }
 
+    /// Whether a vertex's lobe reaches the side of its surface the unit direction wi
+    /// leaves by (both sides for a glossy interface; every way in a medium).
+    template <class V>
+    [[nodiscard]] static bool reaches(const Place& place, const Vec3<T>& wi) noexcept
+    {
+        if constexpr (requires { typename V::material_type; }) {
+            using M = typename V::material_type;
+            const Crossing<T>& c = place.hit->crossing;
+            const Vec3<T> n = c.facing_normal(), ns = c.facing_shading();
+            if (shading_cosine(ns, n, wi) > T(0)) return true;
+            if constexpr (has_glossy<M> && transmits<M>) return shading_cosine(-ns, -n, wi) > T(0);
+            return false;
+        } else {
+            (void)place, (void)wi;
+            return true;
+        }
+    }
+
     /// s = 1: a light sample from each light at a camera vertex, (44)-(45).
-    template <class M>
-    [[nodiscard]] Rgb<T> light_samples(const SurfaceVertex<M>& vertex, const Crossing<T>& c, const PathState& state, const LightPaths& light,
-                                       Random& rng) const noexcept
+    template <class V>
+    [[nodiscard]] Rgb<T> light_samples(const V& vertex, const Place& place, const PathState& state, const LightPaths& light, Random& rng) const noexcept
     {
         Rgb<T> sum{T(0)};
         if (state.length + 1 > config_.max_length) return sum;
-        constexpr Sides sides = has_glossy<M> && transmits<M> ? Sides::both : Sides::near;
         std::size_t index = 0;
         scene_->for_each_light([&]<class L>(const L& l) {
             const T q = light_probability_[index++];
@@ -14122,31 +14444,25 @@ private:
             // toward here and the cosine there.
             LightSample<T> s;
             T emission = T(0), cos_light = T(1);
-            if constexpr (requires { l.sample_point(c.point, Vec2<T>(u1, u2)).at; }) {
-                const auto drawn = l.sample_point(c.point, Vec2<T>(u1, u2));
+            if constexpr (requires { l.sample_point(place.point, Vec2<T>(u1, u2)).at; }) {
+                const auto drawn = l.sample_point(place.point, Vec2<T>(u1, u2));
                 s = drawn.sample;
                 emission = q * l.emission_pdf(drawn.at, -s.wi).both();
                 cos_light = std::abs(dot(s.wi, drawn.at.crossing.normal));
             } else {
-                s = l.sample(c.point, Vec2<T>(u1, u2));
-                if (s.distance < infinity<T> || reached_from_entry(sphere_, s.wi, c.point)) emission = q * l.emission_pdf(-s.wi, sphere_).both();
+                s = l.sample(place.point, Vec2<T>(u1, u2));
+                if (s.distance < infinity<T> || reached_from_entry(sphere_, s.wi, place.point)) emission = q * l.emission_pdf(-s.wi, sphere_).both();
             }
-            const Vec3<T> n = c.facing_normal(), ns = c.facing_shading();
-            T cos = shading_cosine(ns, n, s.wi);
-            if constexpr (sides == Sides::both) {
-                if (!(cos > T(0))) cos = shading_cosine(-ns, -n, s.wi);
-            }
-            if (!(cos > T(0)) || !(max_component(s.irradiance) > T(0)) || !(cos_light > T(0))) return;
+            if (!reaches<V>(place, s.wi) || !(max_component(s.irradiance) > T(0)) || !(cos_light > T(0))) return;
             const VertexValue<T> f = vertex.value(s.wi);
             if (f.black()) return;
             // The light sample's density per steradian here (a delta light's: d^2 for a
             // point, 1 for a parallel light).
             const bool at_infinity = !(s.distance < infinity<T>);
             const T direct = s.delta() ? (at_infinity ? T(1) : s.distance * s.distance) : s.pdf;
-            const T weight =
-                weighed(state.mis.light_sample_weight(direct, s.delta(), emission, std::abs(dot(s.wi, c.normal)), cos_light, f.pdf_forward, f.pdf_reverse, light.mis));
-            const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, s.wi),
-                                                                                           s.distance * (T(1) - shadow_epsilon<T>));
+            const T weight = weighed(state.mis.light_sample_weight(direct, s.delta(), emission, place.cos(s.wi), cos_light, f.pdf_forward, f.pdf_reverse,
+                                                                   pass_at(place, light)));
+            const Rgb<T> v = visible(place.toward(s.wi), s.distance);
             sum += (weight * f.cos) * f.f * s.irradiance * v;
         });
         // (Drawn whatever strategies count, so that every strategy's image takes the same samples.)
@@ -14154,32 +14470,28 @@ private:
     }
 
     /// s >= 2, t >= 2: the camera vertex joined to each vertex of its light path, (40)-(41).
-    template <class M>
-    [[nodiscard]] Rgb<T> connections(const SurfaceVertex<M>& vertex, const Crossing<T>& c, const PathState& state, const LightPaths& light,
-                                     std::size_t paired) const noexcept
+    template <class V>
+    [[nodiscard]] Rgb<T> connections(const V& vertex, const Place& place, const PathState& state, const LightPaths& light, std::size_t paired) const noexcept
     {
         Rgb<T> sum{T(0)};
         for (std::uint32_t i = light.ends[paired]; i < light.ends[paired + 1]; ++i) {
             const LightVertex& lv = light.vertices[i];
             if (lv.length + state.length + 1 > config_.max_length) break; // (kept in order of length)
             if (!counts(lv.length + 1, state.length + 1)) continue;
-            const Crossing<T>& lc = lv.hit.crossing;
-            Vec3<T> w = lc.point - c.point;
+            const Place far_place = lv.place();
+            Vec3<T> w = far_place.point - place.point;
             const T d2 = length_squared(w);
             if (!(d2 > T(0))) continue;
             const T distance = prism::sqrt(d2);
             w /= distance;
             const VertexValue<T> camera = vertex.value(w);
             if (camera.black()) continue;
-            const VertexValue<T> far = scene_->visit_material(lv.hit, [&]<class N>(const N& material) {
-                return SurfaceVertex<N>(material, lc, lv.d, Transport::importance, lv.outside_index).value(-w);
-            });
+            const VertexValue<T> far = value_at(lv, -w);
             if (far.black()) continue;
-            const T cos_camera = std::abs(dot(w, c.normal)), cos_light = std::abs(dot(w, lc.normal));
+            const T cos_camera = place.cos(w), cos_light = far_place.cos(w);
             const T weight = weighed(VcmMis<T>::connection_weight(lv.mis, state.mis, d2, cos_light, cos_camera, far.pdf_forward, far.pdf_reverse, camera.pdf_forward,
-                                                                  camera.pdf_reverse, light.mis));
-            const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, w),
-                                                                                           distance * (T(1) - shadow_epsilon<T>));
+                                                                  camera.pdf_reverse, pass_at(far_place, light), pass_at(place, light)));
+            const Rgb<T> v = visible(place.toward(w), distance);
             if (!(max_component(v) > T(0))) continue;
             sum += (weight * camera.cos * far.cos / d2) * camera.f * far.f * lv.beta * v;
         }
@@ -14187,23 +14499,43 @@ private:
     }
 
     /// VCM's merges: the light vertices within the pass's radius of the camera vertex,
-    /// each its light as a photon's density estimate, (37)-(39).
-    template <class M>
-    [[nodiscard]] Rgb<T> merges(const SurfaceVertex<M>& vertex, const Crossing<T>& c, const PathState& state, const LightPaths& light) const noexcept
+    /// each its light as a photon's density estimate, (37)-(39); in a medium those in the
+    /// same medium within a ball, as a volume photon's (their throughput took the
+    /// scattering coefficient where they scattered, which the estimate of the light
+    /// arriving here divides out: the path takes it once, at the camera's vertex).
+    template <class V>
+    [[nodiscard]] Rgb<T> merges(const V& vertex, const Place& place, const PathState& state, const LightPaths& light) const noexcept
     {
         Rgb<T> sum{T(0)};
-        light.grid.within(c.point, [&](std::uint32_t i, T) {
-            const LightVertex& lv = light.vertices[i];
-            if (lv.length + state.length > config_.max_length) return;
-            const VertexValue<T> camera = vertex.value(-lv.d);
-            if (camera.black()) return;
-            sum += VcmMis<T>::merge_weight(lv.mis, state.mis, camera.pdf_forward, camera.pdf_reverse, light.mis) * camera.f * lv.beta;
-        });
-        return sum * light.vm_normalization;
+        if (place.on_surface()) {
+            light.grid.within(place.point, [&](std::uint32_t i, T) {
+                const LightVertex& lv = light.vertices[has_media ? light.on_surfaces[i] : i];
+                if (lv.length + state.length > config_.max_length) return;
+                const VertexValue<T> camera = vertex.value(-lv.d);
+                if (camera.black()) return;
+                sum += merged(VcmMis<T>::merge_weight(lv.mis, state.mis, camera.pdf_forward, camera.pdf_reverse, light.mis)) * camera.f * lv.beta;
+            });
+            return sum * light.vm_normalization;
+        }
+        if constexpr (has_media) {
+            const typename VcmMis<T>::Pass pass = pass_at(place, light);
+            if (!(pass.ratio > T(0))) return sum;
+            light.volume_grid.within(place.point, [&](std::uint32_t i, T) {
+                const LightVertex& lv = light.vertices[light.in_media[i]];
+                if (lv.medium != place.medium || lv.length + state.length > config_.max_length) return;
+                const VertexValue<T> camera = vertex.value(-lv.d);
+                if (camera.black()) return;
+                sum += merged(VcmMis<T>::merge_weight(lv.mis, state.mis, camera.pdf_forward, camera.pdf_reverse, pass)) * camera.f * lv.beta;
+            });
+            for (int k = 0; k < 3; ++k) sum[k] = place.scattering[k] > T(0) ? sum[k] / place.scattering[k] : T(0);
+            return sum * light.volume_normalization;
+        }
+        return sum;
     }
 
     const SceneT* scene_;
     BidirectionalConfig config_;
+    Air air_;
     BoundingSphere<T> sphere_{};
     std::vector<T> light_probability_; ///< per light (the area lights last), its share of the light paths
     std::vector<T> light_cdf_;
@@ -14675,82 +15007,6 @@ private:
     std::vector<PrecomputedIrradiance> irradiance_; ///< their irradiance, and the squared radius it was estimated over
     std::optional<Tree> sample_tree_;
 };
-
-} // namespace prism
-
-// ---- prism/medium/phase.hpp ----
-// Phase functions: where light scattered in a medium goes, a density over the sphere of
-// directions. Written, as every walker uses them, for the directions of travel before
-// and after the scattering (a camera path's as well as a photon's: the function depends
-// on their angle only, so it reads the same both ways).
-
-
-#include <cmath>
-#include <concepts>
-
-namespace prism {
-
-/// A direction of travel drawn from a phase function, with its density (solid angle).
-template <Scalar T>
-struct PhaseSample {
-    Vec3<T> direction; ///< unit, the direction of travel after scattering
-    T pdf;             ///< its density, the phase function's value there
-};
-
-/// A phase function: `value(cos)` for the cosine between the directions of travel before
-/// and after scattering (a density over the sphere, integrating to 1), and
-/// `sample(direction, u1, u2)` drawing the direction after from exactly that density.
-template <class P>
-concept PhaseFunction = requires(const P& phase, typename P::scalar_type x, const Vec3<typename P::scalar_type>& d) {
-    { phase.value(x) } -> std::same_as<typename P::scalar_type>;
-    { phase.sample(d, x, x) } -> std::same_as<PhaseSample<typename P::scalar_type>>;
-    phase.validate();
-};
-
-/// Henyey and Greenstein's (1941) phase function of mean cosine `g`: 0 scatters evenly
-/// (isotropic), toward 1 forward (haze, cloud droplets: 0.7 to 0.9), toward -1 back.
-/// p(cos) = (1 - g^2) / (4 pi (1 + g^2 - 2 g cos)^(3/2)), drawn by inverting its
-/// distribution in cos.
-template <Scalar T = float>
-struct HenyeyGreenstein {
-    /// The precision of the parameter.
-    using scalar_type = T;
-
-    T g = T(0); ///< the mean cosine of the scattering angle, in (-1, 1)
-
-    /// The density for the cosine between the directions of travel before and after.
-    [[nodiscard]] T value(T cos_theta) const noexcept
-    {
-        const T denominator = T(1) + g * g - T(2) * g * cos_theta;
-        return (T(1) - g * g) / (T(4) * pi<T> * denominator * prism::sqrt(denominator));
-    }
-
-    /// A direction of travel after scattering, for `direction` (unit) before, from two
-    /// uniform numbers.
-    [[nodiscard]] PhaseSample<T> sample(const Vec3<T>& direction, T u1, T u2) const noexcept
-    {
-        T cos_theta;
-        if (std::abs(g) < T(1e-3)) {
-            cos_theta = T(1) - T(2) * u1;
-        } else {
-            const T s = (T(1) - g * g) / (T(1) + g - T(2) * g * u1);
-            cos_theta = std::clamp((T(1) + g * g - s * s) / (T(2) * g), T(-1), T(1));
-        }
-        const T sin_theta = prism::sqrt(std::max(T(0), T(1) - cos_theta * cos_theta));
-        const T phi = T(2) * pi<T> * u2;
-        const auto [a, b] = orthonormal_frame(direction);
-        const Vec3<T> out = sin_theta * (std::cos(phi) * a + std::sin(phi) * b) + cos_theta * direction;
-        return {normalize(out), value(cos_theta)};
-    }
-
-    /// Throws std::invalid_argument for g outside (-1, 1) or not finite.
-    void validate() const
-    {
-        if (!(g > T(-1) && g < T(1))) detail::throw_invalid("HenyeyGreenstein g must be in (-1, 1), got ", g);
-    }
-};
-
-static_assert(PhaseFunction<HenyeyGreenstein<float>> && PhaseFunction<HenyeyGreenstein<double>>);
 
 } // namespace prism
 

@@ -31,9 +31,23 @@
 // function of (seed, pass, pixel or path), splats go to exact sums per thread; the same
 // bits for any thread count, crop, range of passes or MPI rank.
 //
-// Scope: surfaces in clear, straight air (nested dielectrics, index-matched boundaries and
-// absorbing interiors included); a scene with scattering media, dispersion, graded air or
-// a light without falloff is refused at compile time or by the constructor.
+// Media: where a subpath crosses a medium that scatters (an object's interior, or the
+// scene's air filled with fog: FilledAir) it draws where it scatters as the path tracer
+// does (the medium's free flight), and a vertex there is a MediumVertex, joined and
+// merged like a surface's: its lobe the phase function, its cosines 1. Merging in a
+// medium gathers the light vertices within a ball of the radius in the same medium (the
+// volume photon map's point estimate, 4/3 pi r^3), dividing out the scattering
+// coefficient the light vertex's throughput took. The distances' densities (a flight's
+// sigma_t T) are left out of the weights, as pbrt-v3's BDPT leaves them: the weights still
+// sum to 1 over a path's strategies, so every estimate stays unbiased, but they no longer
+// favour the strategy that samples a long, dense stretch best. A vertex in a medium counts
+// for the weights as its kernel's eta, merge_weight 4/3 pi r^3 N times its mean
+// scattering coefficient, which a vertex's density there has where a surface's has none.
+//
+// Scope: straight air, clear or filled with a medium that scatters, and the media inside
+// objects (nested dielectrics, index-matched boundaries and absorbing interiors
+// included); a scene with dispersion, graded air or a light without falloff is refused at
+// compile time or by the constructor.
 #pragma once
 
 #include <prism/accel/hash_grid.hpp>
@@ -43,6 +57,7 @@
 #include <prism/light/light.hpp>
 #include <prism/light/point_light.hpp>
 #include <prism/material/scattering.hpp>
+#include <prism/medium/air.hpp>
 #include <prism/medium/nesting.hpp>
 #include <prism/render/accumulation.hpp>
 #include <prism/render/render.hpp>
@@ -68,6 +83,11 @@ namespace prism {
 enum class BidirectionalMethod {
     bdpt, ///< connections only: bidirectional path tracing
     vcm,  ///< connections and merging: vertex connection and merging
+    /// Merges alone, unweighted, at each camera path's first vertex with a non-delta lobe
+    /// (and the lights it meets through mirrors and glass before): progressive photon
+    /// mapping by VCM's light paths and radii. VCM's merging part, for tests; consistent,
+    /// not unbiased.
+    merging,
 };
 
 /// One strategy (s, t): s vertices from the light, t from the camera (a path of s + t - 1 segments).
@@ -125,11 +145,16 @@ struct VcmMis {
     T dvc = T(0);  ///< d^VC: the same summed over the connections further back
     T dvm = T(0);  ///< d^VM: the same over the merges further back
 
-    /// What a pass's merging is worth: eta = merge_weight pi r^2 N (0 without merging)
-    /// and 1 / eta (0 without connections).
+    /// What merging at a vertex is worth: eta = merge_weight V N, V the merging kernel's
+    /// size there (pi r^2 on a surface; 4/3 pi r^3 sigma in a medium, sigma its mean
+    /// scattering coefficient there: see Bidirectional), 0 without merging; 1 / eta at a
+    /// surface; and eta over a surface vertex's. (d^VM is counted in a surface's merges,
+    /// d^VC / eta_surface, and a merge at a vertex of another kind takes it by the ratio;
+    /// on surfaces alone the ratio is exactly 1, Georgiev's recursion as written.)
     struct Pass {
-        T vm = T(0); ///< eta: merging's weight against a connection
-        T vc = T(0); ///< 1 / eta
+        T vm = T(0);    ///< eta at the vertex: merging's weight against a connection there
+        T vc = T(0);    ///< 1 / eta at a surface vertex
+        T ratio = T(1); ///< vm vc: eta at the vertex over a surface vertex's (1 without merging)
     };
 
     /// A light subpath's start: the light chosen with probability q drew its point with
@@ -174,9 +199,9 @@ struct VcmMis {
     }
 
     /// Scattered at a vertex: the next direction drawn with density pdf_forward (per
-    /// steradian; 1 for a delta), at cosine cos_out to the true normal, where a path
-    /// arriving the other way would draw the last direction with pdf_reverse: the
-    /// report's (34)-(36), or (53)-(55) for a delta.
+    /// steradian; 1 for a delta), at cosine cos_out to the true normal (1 in a medium),
+    /// where a path arriving the other way would draw the last direction with
+    /// pdf_reverse: the report's (34)-(36), or (53)-(55) for a delta; `pass` the vertex's.
     void scattered(T cos_out, T pdf_forward, T pdf_reverse, bool delta, Pass pass) noexcept
     {
         if (delta) {
@@ -186,7 +211,7 @@ struct VcmMis {
         } else {
             const T g = cos_out / pdf_forward;
             dvc = g * (dvc * pdf_reverse + dvcm + pass.vm);
-            dvm = g * (dvm * pdf_reverse + dvcm * pass.vc + T(1));
+            dvm = g * (dvm * pdf_reverse + dvcm * pass.vc + pass.ratio);
             dvcm = T(1) / pdf_forward;
         }
     }
@@ -214,12 +239,12 @@ struct VcmMis {
     /// segment of squared length d2 at cosines cos_light and cos_camera; the camera
     /// vertex's lobe draws the segment with camera_forward (and its own arrival, from the
     /// light, with camera_reverse), the light vertex's with light_forward and
-    /// light_reverse. (40)-(41).
+    /// light_reverse; each vertex's pass. (40)-(41).
     [[nodiscard]] static T connection_weight(const VcmMis& light, const VcmMis& camera, T d2, T cos_light, T cos_camera, T light_forward, T light_reverse,
-                                             T camera_forward, T camera_reverse, Pass pass) noexcept
+                                             T camera_forward, T camera_reverse, Pass light_pass, Pass camera_pass) noexcept
     {
-        const T w_light = camera_forward * cos_light / d2 * (pass.vm + light.dvcm + light.dvc * light_reverse);
-        const T w_camera = light_forward * cos_camera / d2 * (pass.vm + camera.dvcm + camera.dvc * camera_reverse);
+        const T w_light = camera_forward * cos_light / d2 * (light_pass.vm + light.dvcm + light.dvc * light_reverse);
+        const T w_camera = light_forward * cos_camera / d2 * (camera_pass.vm + camera.dvcm + camera.dvc * camera_reverse);
         return T(1) / (w_light + T(1) + w_camera);
     }
 
@@ -235,23 +260,24 @@ struct VcmMis {
 
     /// A merge of a light vertex (`light`, arrived along d) at a camera vertex
     /// (`camera`): the camera vertex's lobe draws -d with camera_forward and its own
-    /// arrival, coming the light path's way, with camera_reverse. (37)-(39).
+    /// arrival, coming the light path's way, with camera_reverse; `pass` the vertex's.
+    /// (37)-(39).
     [[nodiscard]] static T merge_weight(const VcmMis& light, const VcmMis& camera, T camera_forward, T camera_reverse, Pass pass) noexcept
     {
-        const T w_light = light.dvcm * pass.vc + light.dvm * camera_forward;
-        const T w_camera = camera.dvcm * pass.vc + camera.dvm * camera_reverse;
+        const T w_light = (light.dvcm * pass.vc + light.dvm * camera_forward) / pass.ratio;
+        const T w_camera = (camera.dvcm * pass.vc + camera.dvm * camera_reverse) / pass.ratio;
         return T(1) / (w_light + T(1) + w_camera);
     }
 };
 
-/// Whether Bidirectional renders scenes of type SceneT: surfaces only (no scattering
-/// medium), no dispersive material, no light that casts its own shadow.
-template <class SceneT>
-inline constexpr bool renders_bidirectionally = !SceneT::has_scattering_media && !SceneT::has_dispersion && !SceneT::has_own_shadow_lights;
+/// Whether Bidirectional renders scenes of type SceneT in air of type Air: no dispersive
+/// material, no light that casts its own shadow, straight air.
+template <class SceneT, class Air = StraightAir>
+inline constexpr bool renders_bidirectionally = !SceneT::has_dispersion && !SceneT::has_own_shadow_lights && !Air::curved;
 
-/// Bidirectional path tracing and vertex connection and merging of `scene` (an integrator
-/// of passes: render/render.hpp's PassEstimator).
-template <class SceneT>
+/// Bidirectional path tracing and vertex connection and merging of `scene` in `Air` (an
+/// integrator of passes: render/render.hpp's PassEstimator).
+template <class SceneT, class Air = StraightAir>
 class Bidirectional {
 public:
     /// The scene's precision.
@@ -259,16 +285,17 @@ public:
     /// Shorthand for scalar_type.
     using T = scalar_type;
 
-    static_assert(!SceneT::has_scattering_media, "Bidirectional renders surfaces only: a scene with a scattering medium needs the PathTracer or a PhotonMapper");
+    static_assert(!Air::curved, "Bidirectional joins vertices by straight segments: graded air needs the PathTracer or a PhotonMapper");
     static_assert(!SceneT::has_dispersion, "Bidirectional: a dispersive material's wavelengths are not traced yet");
     static_assert(!SceneT::has_own_shadow_lights, "Bidirectional: a light that casts its own shadow (PointGridLight, POV-Ray's area_light) has no emission to trace");
 
     /// The estimator of `scene` (which must outlive it); throws std::invalid_argument,
     /// naming the parameter, for a bad setting, a dispersive material or a light without
     /// falloff (POV-Ray's fade_power 0, which no light path can carry).
-    explicit Bidirectional(const SceneT& scene, BidirectionalConfig config = {}) : scene_(&scene), config_(config)
+    explicit Bidirectional(const SceneT& scene, BidirectionalConfig config = {}, Air air = {}) : scene_(&scene), config_(config), air_(std::move(air))
     {
         scene.validate();
+        air_.validate();
         if (config.max_length < 1) detail::throw_invalid("BidirectionalConfig max_length must be >= 1, got ", config.max_length);
         if (config.roulette_length < 0) detail::throw_invalid("BidirectionalConfig roulette_length must be >= 0, got ", config.roulette_length);
         if (!(config.radius >= 0.0 && config.radius < std::numeric_limits<double>::infinity()))
@@ -282,7 +309,11 @@ public:
             if constexpr (std::same_as<L, PointLight<T>>)
                 if (light.falloff != Falloff::inverse_square) detail::throw_invalid("Bidirectional: a PointLight without falloff (POV-Ray's fade_power 0) has no physical emission");
         });
-        const Aabb<T> box = scene.bounds();
+        Aabb<T> box = scene.bounds();
+        // (Light from infinity is aimed at the fog too, where it is bounded.)
+        if constexpr (air_scatters<Air>) {
+            if (air_.bounds().bounded()) box = box.merged(air_.bounds());
+        }
         if (!box.empty()) sphere_ = box.bounding_sphere();
         if (!(sphere_.radius > T(0))) sphere_.radius = T(1);
         // The lights by power, for the light paths.
@@ -304,7 +335,7 @@ public:
             light_cdf_.push_back(T(sum));
         }
     }
-    Bidirectional(const SceneT&& scene, BidirectionalConfig config = {}) = delete;
+    Bidirectional(const SceneT&& scene, BidirectionalConfig config = {}, Air air = {}) = delete;
 
     /// The settings.
     [[nodiscard]] const BidirectionalConfig& config() const noexcept { return config_; }
@@ -354,25 +385,69 @@ public:
     }
 
 private:
+    /// Whether a subpath may scatter in a medium (a scene or air without one compiles none of it).
+    static constexpr bool has_media = SceneT::has_scattering_media || air_scatters<Air>;
+
+    /// The medium a vertex is in: none (a surface's vertex), the scene's air, or an object's interior.
+    struct MediumRef {
+        enum class In : std::uint8_t { surface, air, object };
+        In in = In::surface;
+        std::uint32_t slot = 0;  ///< the object's scene slot
+        std::uint32_t index = 0; ///< the object within its slot
+        [[nodiscard]] bool operator==(const MediumRef&) const = default;
+    };
+
+    /// Where a subpath's vertex is: on a surface (its hit), or at a point in a medium.
+    struct Place {
+        const Hit<T>* hit = nullptr; ///< the surface; none in a medium
+        Vec3<T> point{};             ///< where
+        T outside_index = T(1);      ///< a transmissive material's outer index
+        MediumRef medium{};          ///< in a medium: which
+        Rgb<T> scattering{T(0)};     ///< in a medium: its scattering coefficient at the point
+
+        [[nodiscard]] bool on_surface() const noexcept { return hit != nullptr; }
+        /// |cos| of the unit direction w to the true normal (1 in a medium).
+        [[nodiscard]] T cos(const Vec3<T>& w) const noexcept { return hit ? std::abs(dot(w, hit->crossing.normal)) : T(1); }
+        /// A ray leaving toward the unit direction w (off the surface by its error bound).
+        [[nodiscard]] Ray<T> toward(const Vec3<T>& w) const noexcept
+        {
+            if (!hit) return Ray<T>{point, w};
+            const Crossing<T>& c = hit->crossing;
+            return spawn_ray(c.point, c.error, c.normal, w);
+        }
+    };
+
     /// A light subpath's vertex with a non-delta lobe, kept for connections and merges.
     struct LightVertex {
-        Hit<T> hit;          ///< where
+        Hit<T> hit;          ///< where: the surface, or in a medium only the point (crossing.point)
         Vec3<T> d;           ///< unit, the direction the light path arrived along
         Rgb<T> beta;         ///< its throughput: the light's power estimate carried to here
         VcmMis<T> mis;       ///< the MIS quantities
         T outside_index;     ///< a transmissive material's outer index
         int length;          ///< segments from the light
+        MediumRef medium;    ///< the medium it is in (In::surface: on the surface `hit`)
+        Rgb<T> scattering;   ///< in a medium: its scattering coefficient there
+
+        /// Where it is.
+        [[nodiscard]] Place place() const noexcept
+        {
+            return {medium.in == MediumRef::In::surface ? &hit : nullptr, hit.crossing.point, outside_index, medium, scattering};
+        }
     };
 
-    /// A pass's light subpaths: their vertices path by path, and VCM's grid of them.
+    /// A pass's light subpaths: their vertices path by path, and VCM's grids of them.
     struct LightPaths {
         std::vector<LightVertex> vertices;
         std::vector<std::uint32_t> ends; ///< path i's vertices are [ends[i], ends[i + 1])
-        HashGrid<T> grid;                ///< the vertices by position, for merging
+        HashGrid<T> grid;                ///< the vertices on surfaces by position, for merging
+        HashGrid<T> volume_grid;         ///< the vertices in media by position
+        std::vector<std::uint32_t> on_surfaces, in_media; ///< with media: the grids' points' vertices
         T count = T(0);          ///< N, the light paths traced
         T radius = T(0);         ///< the merging radius
-        typename VcmMis<T>::Pass mis; ///< what merging is worth against a connection
+        typename VcmMis<T>::Pass mis; ///< what merging on a surface is worth against a connection
+        T volume_eta = T(0);     ///< merge_weight 4/3 pi r^3 N: eta in a medium over its mean scattering coefficient
         T vm_normalization = T(0); ///< 1 / (pi r^2 N)
+        T volume_normalization = T(0); ///< 1 / (4/3 pi r^3 N)
         bool per_pixel = false;    ///< light path i is pixel i's (paired_with_pixels)
         int width = 0, height = 0; ///< the image's size
     };
@@ -421,6 +496,8 @@ private:
     /// Whether a contribution of strategy (s, t) counts, and with which of its weights.
     [[nodiscard]] bool counts(int s, int t) const noexcept { return !config_.only || (config_.only->s == s && config_.only->t == t); }
     [[nodiscard]] T weighed(T w) const noexcept { return config_.only && !config_.weighted ? T(1) : w; }
+    /// A merge's weight: 1 where merging is the only strategy.
+    [[nodiscard]] T merged(T w) const noexcept { return config_.method == BidirectionalMethod::merging ? T(1) : w; }
 
     [[nodiscard]] static T cube(T x) noexcept { return x * x * x; }
 
@@ -432,19 +509,49 @@ private:
         return cos > T(0) ? T(1) / (rays.pixel_area() * cube(cos)) : T(0);
     }
 
-    /// Walk a subpath from `ray` (starting inside `media`), calling on_vertex(material,
-    /// hit, vertex, d, distance, outside_index) at every surface that is a vertex (false
-    /// and index-matched interfaces are crossed; d the unit direction it arrived along,
-    /// `distance` the length since the last vertex), which returns the direction drawn
-    /// there (nothing ends the walk), and on_escape(ray) when the path leaves the scene.
-    /// `beta` takes what the objects' interiors and index-matched boundaries let through.
+    /// Walk a subpath from `ray` (starting inside `media`), calling on_vertex(vertex,
+    /// place, d, distance, kept) at every vertex: a SurfaceVertex where it meets a surface
+    /// (false and index-matched interfaces are crossed), a MediumVertex where it scatters
+    /// in a medium (drawn by the medium's free flight); d the unit direction it arrived
+    /// along, `distance` the length since the last vertex, `kept` the largest share of the
+    /// throughput the flight there kept (1 at a surface). on_vertex returns the direction
+    /// drawn there (nothing ends the walk); on_escape(ray) is called when the path leaves
+    /// the scene. `beta` takes what the media and index-matched boundaries let through.
     template <class OnVertex, class OnEscape>
     void walk(Ray<T> ray, MediumStack media, Rgb<T>& beta, Transport mode, Random& rng, int first_block, OnVertex&& on_vertex, OnEscape&& on_escape) const
     {
         T distance = T(0);
         for (int bounce = 0;; ++bounce) {
             rng.bounce(first_block + bounce);
-            const std::optional<Hit<T>> hit = scene_->closest_hit(ray, Interval<T>{T(0), infinity<T>});
+            std::optional<Hit<T>> hit;
+            if constexpr (has_media) {
+                enum class InMedium { passed, scattered, ended };
+                InMedium in_medium = InMedium::passed;
+                Ray<T> segment = ray;
+                T path = T(0);
+                hit = first_hit_through_media(*scene_, air_, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
+                    const Ray<T> stretch{piece.at(t0), piece.direction};
+                    const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, beta, rng);
+                    beta *= flight.weight;
+                    if (!flight.scattered) return true;
+                    Place place;
+                    place.point = stretch.at(flight.distance);
+                    place.medium = media.top() ? MediumRef{MediumRef::In::object, media.top()->slot, media.top()->index} : MediumRef{MediumRef::In::air};
+                    place.scattering = medium.scattering_at(place.point);
+                    const MediumVertex vertex(medium.phase, piece.direction);
+                    const std::optional<Vec3<T>> next = on_vertex(vertex, place, piece.direction, distance + before + t0 + flight.distance, max_component(flight.weight));
+                    in_medium = next ? InMedium::scattered : InMedium::ended;
+                    if (next) {
+                        ray = Ray<T>{place.point, *next};
+                        distance = T(0);
+                    }
+                    return false;
+                });
+                if (in_medium == InMedium::ended) return;
+                if (in_medium == InMedium::scattered) continue;
+            } else {
+                hit = scene_->closest_hit(ray, Interval<T>{T(0), infinity<T>});
+            }
             if (!hit) {
                 on_escape(ray);
                 return;
@@ -473,7 +580,8 @@ private:
                     }
                 }
                 const SurfaceVertex<M> vertex(material, c, ray.direction, mode, outside_index);
-                const std::optional<Vec3<T>> next = on_vertex(material, *hit, vertex, ray.direction, distance, outside_index);
+                const Place place{&*hit, c.point, outside_index};
+                const std::optional<Vec3<T>> next = on_vertex(vertex, place, ray.direction, distance, T(1));
                 if (!next) return false;
                 if constexpr (transmits<M>) {
                     if (dot(*next, c.normal) * dot(ray.direction, c.normal) > T(0)) media = face.beyond; // refracted
@@ -488,23 +596,76 @@ private:
 
     /// Scatter a subpath at a vertex: draw the next direction, update the throughput and
     /// the MIS quantities (the report's (34)-(36), or (53)-(55) for a delta), and play
-    /// Russian roulette past roulette_length (outside the weights). Nothing: it ends.
-    template <class M>
-    [[nodiscard]] std::optional<Vec3<T>> scatter(const SurfaceVertex<M>& vertex, const Crossing<T>& c, PathState& state, const LightPaths& light,
-                                                 Random& rng) const noexcept
+    /// Russian roulette past roulette_length (outside the weights) by the share of the
+    /// throughput the vertex kept (`kept`: the flight's to a vertex in a medium). Nothing:
+    /// it ends.
+    template <class V>
+    [[nodiscard]] std::optional<Vec3<T>> scatter(const V& vertex, const Place& place, PathState& state, const LightPaths& light, Random& rng,
+                                                 T kept) const noexcept
     {
         const std::optional<VertexSample<T>> s = vertex.sample(rng);
         if (!s || !(max_component(s->weight) > T(0)) || !(max_component(s->weight) < infinity<T>)) return std::nullopt;
-        state.mis.scattered(std::abs(dot(s->direction, c.normal)), s->pdf_forward, s->pdf_reverse, s->delta, light.mis);
+        state.mis.scattered(place.cos(s->direction), s->pdf_forward, s->pdf_reverse, s->delta, pass_at(place, light));
         if (!s->delta) state.specular = false;
         state.beta *= s->weight;
         if (state.length >= config_.roulette_length) {
             // Roulette by how much of the throughput this scattering kept (at most 1).
-            const T keep = std::min(T(1), max_component(s->weight));
+            const T keep = std::min(T(1), max_component(s->weight) * kept);
             if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return std::nullopt;
             state.beta /= keep;
         }
         return s->direction;
+    }
+
+    /// What merging at a place is worth against a connection there: the pass's on a
+    /// surface; in a medium eta by the ball's volume, times the mean scattering
+    /// coefficient there (a vertex's density per volume has the medium's coefficient where
+    /// one per area has none).
+    [[nodiscard]] typename VcmMis<T>::Pass pass_at(const Place& place, const LightPaths& light) const noexcept
+    {
+        if (place.on_surface() || !(light.mis.vm > T(0))) return light.mis;
+        const T vm = light.volume_eta * (place.scattering.x + place.scattering.y + place.scattering.z) / T(3);
+        return {vm, light.mis.vc, vm * light.mis.vc};
+    }
+
+    /// Call f(medium) with the medium `m` names (nothing for a surface's).
+    template <class F>
+    void visit_medium(const MediumRef& m, F&& f) const
+    {
+        if constexpr (air_scatters<Air>) {
+            if (m.in == MediumRef::In::air) f(air_.medium);
+        }
+        if constexpr (SceneT::has_scattering_media) {
+            if (m.in == MediumRef::In::object)
+                scene_->visit_material(m.slot, m.index, [&]<class N>(const N& material) {
+                    if constexpr (has_scattering_interior<N>) f(material.medium());
+                });
+        }
+    }
+
+    /// A stored light vertex's lobe toward the unit direction wo.
+    [[nodiscard]] VertexValue<T> value_at(const LightVertex& lv, const Vec3<T>& wo) const noexcept
+    {
+        if constexpr (has_media) {
+            if (lv.medium.in != MediumRef::In::surface) {
+                VertexValue<T> v;
+                visit_medium(lv.medium, [&](const auto& medium) { v = MediumVertex(medium.phase, lv.d).value(wo); });
+                return v;
+            }
+        }
+        return scene_->visit_material(lv.hit, [&]<class N>(const N& material) {
+            return SurfaceVertex<N>(material, lv.hit.crossing, lv.d, Transport::importance, lv.outside_index).value(wo);
+        });
+    }
+
+    /// What reaches the end of `ray` (unit direction) over `distance` from its origin:
+    /// the scene's transmittance (glass blocks) and its air's.
+    [[nodiscard]] Rgb<T> visible(const Ray<T>& ray, T distance) const noexcept
+    {
+        const T d = distance * (T(1) - shadow_epsilon<T>);
+        const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(ray, d);
+        if constexpr (air_scatters<Air>) return v * air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, ray, d);
+        else return v;
     }
 
     /// The pass's light subpaths: traced, their vertices kept (and VCM's grid built), and
@@ -517,13 +678,16 @@ private:
         light.per_pixel = paired_with_pixels(config, count);
         light.width = config.width;
         light.height = config.height;
-        const bool merging = config_.method == BidirectionalMethod::vcm;
+        const bool merging = config_.method != BidirectionalMethod::bdpt;
         light.radius = T(double(first_radius(rays, config.width, config.height)) * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)));
         light.radius = std::max(light.radius, sphere_.radius * T(1e-7));
         const T eta = pi<T> * light.radius * light.radius * light.count;
         light.mis.vm = merging ? T(config_.merge_weight) * eta : T(0);
         light.mis.vc = T(1) / (T(config_.merge_weight) * eta);
         light.vm_normalization = T(1) / eta;
+        const T ball = T(4) / T(3) * pi<T> * light.radius * light.radius * light.radius * light.count;
+        light.volume_eta = merging ? T(config_.merge_weight) * ball : T(0);
+        light.volume_normalization = T(1) / ball;
         // Blocks of paths, each into its own list (joined in order) and its worker's splats.
         constexpr std::size_t block = 4096;
         const std::size_t blocks = (count + block - 1) / block;
@@ -565,9 +729,22 @@ private:
             for (const std::uint32_t n : lengths[b]) light.ends.push_back(light.ends.back() + n);
         }
         if (merging && !light.vertices.empty()) {
-            std::vector<Vec3<T>> points(light.vertices.size());
-            for (std::size_t i = 0; i < points.size(); ++i) points[i] = light.vertices[i].hit.crossing.point;
-            light.grid = HashGrid<T>(points, light.radius);
+            if constexpr (has_media) {
+                // Two grids: the vertices on surfaces, and those in media.
+                std::vector<Vec3<T>> points, volume;
+                for (std::size_t i = 0; i < light.vertices.size(); ++i) {
+                    const LightVertex& v = light.vertices[i];
+                    const bool on_surface = v.medium.in == MediumRef::In::surface;
+                    (on_surface ? points : volume).push_back(v.hit.crossing.point);
+                    (on_surface ? light.on_surfaces : light.in_media).push_back(std::uint32_t(i));
+                }
+                if (!points.empty()) light.grid = HashGrid<T>(points, light.radius);
+                if (!volume.empty()) light.volume_grid = HashGrid<T>(volume, light.radius);
+            } else {
+                std::vector<Vec3<T>> points(light.vertices.size());
+                for (std::size_t i = 0; i < points.size(); ++i) points[i] = light.vertices[i].hit.crossing.point;
+                light.grid = HashGrid<T>(points, light.radius);
+            }
         }
         return light;
     }
@@ -604,24 +781,27 @@ private:
         state.beta = e.radiance * (e.cos / pdf);
         state.mis = VcmMis<T>::light_start(q, e.pdf_area, e.pdf_direction, e.cos, e.from_infinity, delta_light, light.mis);
         walk(e.ray, scene_->media_at(e.ray.origin), state.beta, Transport::importance, rng, light_blocks,
-             [&]<class M>(const M&, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T outside_index) -> std::optional<Vec3<T>> {
-                 const Crossing<T>& c = hit.crossing;
-                 const T cos = std::abs(dot(d, c.normal));
+             [&]<class V>(const V& vertex, const Place& place, const Vec3<T>& d, T distance, T kept) -> std::optional<Vec3<T>> {
+                 const T cos = place.cos(d);
                  if (!(cos > T(0))) return std::nullopt;
                  ++state.length;
                  if (state.length == 1 && source) {
                      // An area light's sample from here finds its point with the density
                      // pdf_W cos_0 / d^2 per unit area.
-                     if constexpr (SceneT::has_emitters) state.mis.first_hit_of_area_light(scene_->area_lights().pdf(*source, c.point), e.cos, cos);
+                     if constexpr (SceneT::has_emitters) state.mis.first_hit_of_area_light(scene_->area_lights().pdf(*source, place.point), e.cos, cos);
                  } else {
                      state.mis.arrive(state.length > 1 || !e.from_infinity ? distance * distance : T(1), cos);
                  }
                  if (vertex.connectible()) {
-                     out.push_back({hit, d, state.beta, state.mis, outside_index, state.length});
-                     if (state.length + 1 <= config_.max_length) connect_to_camera(out.back(), vertex, light, rays, window, rng, splats);
+                     Hit<T> at{};
+                     if (place.hit) at = *place.hit;
+                     else at.crossing.point = place.point;
+                     out.push_back({at, d, state.beta, state.mis, place.outside_index, state.length, place.medium, place.scattering});
+                     if (state.length + 1 <= config_.max_length && config_.method != BidirectionalMethod::merging)
+                         connect_to_camera(out.back(), vertex, light, rays, window, rng, splats);
                  }
                  if (state.length + 2 > config_.max_length) return std::nullopt;
-                 return scatter(vertex, c, state, light, rng);
+                 return scatter(vertex, place, state, light, rng, kept);
              },
              [](const Ray<T>&) {});
     }
@@ -629,28 +809,27 @@ private:
     /// Light tracing (t = 1): a light vertex joined to the camera (a point of a thin lens
     /// drawn uniformly), its splat added where the camera sees it in the window: the
     /// report's (46)-(47).
-    template <class M>
-    void connect_to_camera(const LightVertex& lv, const SurfaceVertex<M>& vertex, const LightPaths& light, const CameraRays<T>& rays, const PixelWindow& window,
+    template <class V>
+    void connect_to_camera(const LightVertex& lv, const V& vertex, const LightPaths& light, const CameraRays<T>& rays, const PixelWindow& window,
                            Random& rng, Accumulation& splats) const
     {
-        const Crossing<T>& c = lv.hit.crossing;
+        const Place place = lv.place();
         Vec3<T> eye = rays.origin;
         if (rays.thin_lens()) {
             const auto [u, v] = rng.template uniform2<T>();
             eye = rays.lens_point(u, v);
         }
-        const auto seen = rays.thin_lens() ? rays.project(c.point, eye) : rays.project(c.point);
+        const auto seen = rays.thin_lens() ? rays.project(place.point, eye) : rays.project(place.point);
         if (!counts(lv.length + 1, 1) || !seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return;
-        const Vec3<T> to_camera = (eye - c.point) / seen->distance;
+        const Vec3<T> to_camera = (eye - place.point) / seen->distance;
         const VertexValue<T> f = vertex.value(to_camera);
         if (f.black()) return;
         const T d2 = seen->distance * seen->distance;
         // The camera's density of this vertex per unit area: its image-plane density 1 / A
         // taken to the ray's solid angle (1 / cos_c^3) and on to the surface.
-        const T camera_area_pdf = T(1) / (rays.pixel_area() * cube(seen->cos)) * std::abs(dot(to_camera, c.normal)) / d2;
-        const T weight = weighed(lv.mis.splat_weight(camera_area_pdf, light.count, f.pdf_reverse, light.mis));
-        const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
-                                                                                       seen->distance * (T(1) - shadow_epsilon<T>));
+        const T camera_area_pdf = T(1) / (rays.pixel_area() * cube(seen->cos)) * place.cos(to_camera) / d2;
+        const T weight = weighed(lv.mis.splat_weight(camera_area_pdf, light.count, f.pdf_reverse, pass_at(place, light)));
+        const Rgb<T> v = visible(place.toward(to_camera), seen->distance);
         if (!(max_component(v) > T(0))) return;
         const Rgb<T> value = (weight / (light.count * rays.pixel_area() * cube(seen->cos) * d2)) * lv.beta * f.f * f.cos * v;
         std::array<ExactSum, 3> add{};
@@ -677,36 +856,41 @@ private:
         state.mis = VcmMis<T>::camera_start(light.count, camera);
         Vec3<T> previous = ray.origin;
         walk(ray, scene_->media_at(ray.origin), state.beta, Transport::radiance, rng, 0,
-             [&]<class M>(const M& material, const Hit<T>& hit, const SurfaceVertex<M>& vertex, const Vec3<T>& d, T distance, T) -> std::optional<Vec3<T>> {
-                 const Crossing<T>& c = hit.crossing;
-                 const T cos = std::abs(dot(d, c.normal));
+             [&]<class V>(const V& vertex, const Place& place, const Vec3<T>& d, T distance, T kept) -> std::optional<Vec3<T>> {
+                 const T cos = place.cos(d);
                  if (!(cos > T(0))) return std::nullopt;
                  ++state.length;
                  state.mis.arrive(distance * distance, cos);
                  const int t = state.length + 1;
-                 if constexpr (emits<M>) {
-                     // s = 0: the path met an area light, (42)-(43).
-                     const Rgb<T> le = emitted(material, c);
-                     if (max_component(le) > T(0) && counts(0, t)) {
-                         T weight = T(1);
-                         if (state.length > 1) {
-                             const AreaLights<SceneT> lights = scene_->area_lights();
-                             const T direct = lights.pdf(hit, previous) * cos / (distance * distance);
-                             const T emission = area_light_probability() * lights.emission_pdf(hit, -d).both();
-                             weight = state.mis.met_light_weight(direct, emission);
+                 if constexpr (requires { typename V::material_type; }) {
+                     if constexpr (emits<typename V::material_type>) {
+                         // s = 0: the path met an area light, (42)-(43).
+                         const Rgb<T> le = emitted(vertex.material(), place.hit->crossing);
+                         if (max_component(le) > T(0) && counts(0, t)) {
+                             T weight = T(1);
+                             if (state.length > 1 && config_.method != BidirectionalMethod::merging) {
+                                 const AreaLights<SceneT> lights = scene_->area_lights();
+                                 const T direct = lights.pdf(*place.hit, previous) * cos / (distance * distance);
+                                 const T emission = area_light_probability() * lights.emission_pdf(*place.hit, -d).both();
+                                 weight = state.mis.met_light_weight(direct, emission);
+                             }
+                             sum += weighed(weight) * state.beta * le;
                          }
-                         sum += weighed(weight) * state.beta * le;
                      }
+                 }
+                 if (config_.method == BidirectionalMethod::merging && vertex.connectible()) {
+                     sum += state.beta * merges(vertex, place, state, light);
+                     return std::nullopt;
                  }
                  if (state.length >= config_.max_length || !vertex.connectible()) {
                      if (state.length >= config_.max_length) return std::nullopt;
                  } else {
-                     sum += state.beta * light_samples(vertex, c, state, light, rng);
-                     sum += state.beta * connections(vertex, c, state, light, paired);
-                     if (config_.method == BidirectionalMethod::vcm && !config_.only) sum += state.beta * merges(vertex, c, state, light);
+                     sum += state.beta * light_samples(vertex, place, state, light, rng);
+                     sum += state.beta * connections(vertex, place, state, light, paired);
+                     if (config_.method == BidirectionalMethod::vcm && !config_.only) sum += state.beta * merges(vertex, place, state, light);
                  }
-                 previous = c.point;
-                 return scatter(vertex, c, state, light, rng);
+                 previous = place.point;
+                 return scatter(vertex, place, state, light, rng, kept);
              },
              [&](const Ray<T>& out) {
                  // Leaving the scene: the background where every scattering was a delta
@@ -721,7 +905,7 @@ private:
                          const Vec3<T> w = out.direction;
                          const Rgb<T> le = l.arriving_from(w);
                          T weight = T(1);
-                         if (state.length > 0) {
+                         if (state.length > 0 && config_.method != BidirectionalMethod::merging) {
                              const T direct = l.pdf(w);
                              const T emission = reached_from_entry(sphere_, w, out.origin) ? light_probability_[i] * l.emission_pdf(-w, sphere_).both() : T(0);
                              weight = state.mis.met_light_weight(direct, emission);
@@ -736,14 +920,30 @@ private:
     /// The area lights' share of the light paths.
     [[nodiscard]] T area_light_probability() const noexcept { return light_probability_.back(); }
 
+    /// Whether a vertex's lobe reaches the side of its surface the unit direction wi
+    /// leaves by (both sides for a glossy interface; every way in a medium).
+    template <class V>
+    [[nodiscard]] static bool reaches(const Place& place, const Vec3<T>& wi) noexcept
+    {
+        if constexpr (requires { typename V::material_type; }) {
+            using M = typename V::material_type;
+            const Crossing<T>& c = place.hit->crossing;
+            const Vec3<T> n = c.facing_normal(), ns = c.facing_shading();
+            if (shading_cosine(ns, n, wi) > T(0)) return true;
+            if constexpr (has_glossy<M> && transmits<M>) return shading_cosine(-ns, -n, wi) > T(0);
+            return false;
+        } else {
+            (void)place, (void)wi;
+            return true;
+        }
+    }
+
     /// s = 1: a light sample from each light at a camera vertex, (44)-(45).
-    template <class M>
-    [[nodiscard]] Rgb<T> light_samples(const SurfaceVertex<M>& vertex, const Crossing<T>& c, const PathState& state, const LightPaths& light,
-                                       Random& rng) const noexcept
+    template <class V>
+    [[nodiscard]] Rgb<T> light_samples(const V& vertex, const Place& place, const PathState& state, const LightPaths& light, Random& rng) const noexcept
     {
         Rgb<T> sum{T(0)};
         if (state.length + 1 > config_.max_length) return sum;
-        constexpr Sides sides = has_glossy<M> && transmits<M> ? Sides::both : Sides::near;
         std::size_t index = 0;
         scene_->for_each_light([&]<class L>(const L& l) {
             const T q = light_probability_[index++];
@@ -752,31 +952,25 @@ private:
             // toward here and the cosine there.
             LightSample<T> s;
             T emission = T(0), cos_light = T(1);
-            if constexpr (requires { l.sample_point(c.point, Vec2<T>(u1, u2)).at; }) {
-                const auto drawn = l.sample_point(c.point, Vec2<T>(u1, u2));
+            if constexpr (requires { l.sample_point(place.point, Vec2<T>(u1, u2)).at; }) {
+                const auto drawn = l.sample_point(place.point, Vec2<T>(u1, u2));
                 s = drawn.sample;
                 emission = q * l.emission_pdf(drawn.at, -s.wi).both();
                 cos_light = std::abs(dot(s.wi, drawn.at.crossing.normal));
             } else {
-                s = l.sample(c.point, Vec2<T>(u1, u2));
-                if (s.distance < infinity<T> || reached_from_entry(sphere_, s.wi, c.point)) emission = q * l.emission_pdf(-s.wi, sphere_).both();
+                s = l.sample(place.point, Vec2<T>(u1, u2));
+                if (s.distance < infinity<T> || reached_from_entry(sphere_, s.wi, place.point)) emission = q * l.emission_pdf(-s.wi, sphere_).both();
             }
-            const Vec3<T> n = c.facing_normal(), ns = c.facing_shading();
-            T cos = shading_cosine(ns, n, s.wi);
-            if constexpr (sides == Sides::both) {
-                if (!(cos > T(0))) cos = shading_cosine(-ns, -n, s.wi);
-            }
-            if (!(cos > T(0)) || !(max_component(s.irradiance) > T(0)) || !(cos_light > T(0))) return;
+            if (!reaches<V>(place, s.wi) || !(max_component(s.irradiance) > T(0)) || !(cos_light > T(0))) return;
             const VertexValue<T> f = vertex.value(s.wi);
             if (f.black()) return;
             // The light sample's density per steradian here (a delta light's: d^2 for a
             // point, 1 for a parallel light).
             const bool at_infinity = !(s.distance < infinity<T>);
             const T direct = s.delta() ? (at_infinity ? T(1) : s.distance * s.distance) : s.pdf;
-            const T weight =
-                weighed(state.mis.light_sample_weight(direct, s.delta(), emission, std::abs(dot(s.wi, c.normal)), cos_light, f.pdf_forward, f.pdf_reverse, light.mis));
-            const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, s.wi),
-                                                                                           s.distance * (T(1) - shadow_epsilon<T>));
+            const T weight = weighed(state.mis.light_sample_weight(direct, s.delta(), emission, place.cos(s.wi), cos_light, f.pdf_forward, f.pdf_reverse,
+                                                                   pass_at(place, light)));
+            const Rgb<T> v = visible(place.toward(s.wi), s.distance);
             sum += (weight * f.cos) * f.f * s.irradiance * v;
         });
         // (Drawn whatever strategies count, so that every strategy's image takes the same samples.)
@@ -784,32 +978,28 @@ private:
     }
 
     /// s >= 2, t >= 2: the camera vertex joined to each vertex of its light path, (40)-(41).
-    template <class M>
-    [[nodiscard]] Rgb<T> connections(const SurfaceVertex<M>& vertex, const Crossing<T>& c, const PathState& state, const LightPaths& light,
-                                     std::size_t paired) const noexcept
+    template <class V>
+    [[nodiscard]] Rgb<T> connections(const V& vertex, const Place& place, const PathState& state, const LightPaths& light, std::size_t paired) const noexcept
     {
         Rgb<T> sum{T(0)};
         for (std::uint32_t i = light.ends[paired]; i < light.ends[paired + 1]; ++i) {
             const LightVertex& lv = light.vertices[i];
             if (lv.length + state.length + 1 > config_.max_length) break; // (kept in order of length)
             if (!counts(lv.length + 1, state.length + 1)) continue;
-            const Crossing<T>& lc = lv.hit.crossing;
-            Vec3<T> w = lc.point - c.point;
+            const Place far_place = lv.place();
+            Vec3<T> w = far_place.point - place.point;
             const T d2 = length_squared(w);
             if (!(d2 > T(0))) continue;
             const T distance = prism::sqrt(d2);
             w /= distance;
             const VertexValue<T> camera = vertex.value(w);
             if (camera.black()) continue;
-            const VertexValue<T> far = scene_->visit_material(lv.hit, [&]<class N>(const N& material) {
-                return SurfaceVertex<N>(material, lc, lv.d, Transport::importance, lv.outside_index).value(-w);
-            });
+            const VertexValue<T> far = value_at(lv, -w);
             if (far.black()) continue;
-            const T cos_camera = std::abs(dot(w, c.normal)), cos_light = std::abs(dot(w, lc.normal));
+            const T cos_camera = place.cos(w), cos_light = far_place.cos(w);
             const T weight = weighed(VcmMis<T>::connection_weight(lv.mis, state.mis, d2, cos_light, cos_camera, far.pdf_forward, far.pdf_reverse, camera.pdf_forward,
-                                                                  camera.pdf_reverse, light.mis));
-            const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, w),
-                                                                                           distance * (T(1) - shadow_epsilon<T>));
+                                                                  camera.pdf_reverse, pass_at(far_place, light), pass_at(place, light)));
+            const Rgb<T> v = visible(place.toward(w), distance);
             if (!(max_component(v) > T(0))) continue;
             sum += (weight * camera.cos * far.cos / d2) * camera.f * far.f * lv.beta * v;
         }
@@ -817,23 +1007,43 @@ private:
     }
 
     /// VCM's merges: the light vertices within the pass's radius of the camera vertex,
-    /// each its light as a photon's density estimate, (37)-(39).
-    template <class M>
-    [[nodiscard]] Rgb<T> merges(const SurfaceVertex<M>& vertex, const Crossing<T>& c, const PathState& state, const LightPaths& light) const noexcept
+    /// each its light as a photon's density estimate, (37)-(39); in a medium those in the
+    /// same medium within a ball, as a volume photon's (their throughput took the
+    /// scattering coefficient where they scattered, which the estimate of the light
+    /// arriving here divides out: the path takes it once, at the camera's vertex).
+    template <class V>
+    [[nodiscard]] Rgb<T> merges(const V& vertex, const Place& place, const PathState& state, const LightPaths& light) const noexcept
     {
         Rgb<T> sum{T(0)};
-        light.grid.within(c.point, [&](std::uint32_t i, T) {
-            const LightVertex& lv = light.vertices[i];
-            if (lv.length + state.length > config_.max_length) return;
-            const VertexValue<T> camera = vertex.value(-lv.d);
-            if (camera.black()) return;
-            sum += VcmMis<T>::merge_weight(lv.mis, state.mis, camera.pdf_forward, camera.pdf_reverse, light.mis) * camera.f * lv.beta;
-        });
-        return sum * light.vm_normalization;
+        if (place.on_surface()) {
+            light.grid.within(place.point, [&](std::uint32_t i, T) {
+                const LightVertex& lv = light.vertices[has_media ? light.on_surfaces[i] : i];
+                if (lv.length + state.length > config_.max_length) return;
+                const VertexValue<T> camera = vertex.value(-lv.d);
+                if (camera.black()) return;
+                sum += merged(VcmMis<T>::merge_weight(lv.mis, state.mis, camera.pdf_forward, camera.pdf_reverse, light.mis)) * camera.f * lv.beta;
+            });
+            return sum * light.vm_normalization;
+        }
+        if constexpr (has_media) {
+            const typename VcmMis<T>::Pass pass = pass_at(place, light);
+            if (!(pass.ratio > T(0))) return sum;
+            light.volume_grid.within(place.point, [&](std::uint32_t i, T) {
+                const LightVertex& lv = light.vertices[light.in_media[i]];
+                if (lv.medium != place.medium || lv.length + state.length > config_.max_length) return;
+                const VertexValue<T> camera = vertex.value(-lv.d);
+                if (camera.black()) return;
+                sum += merged(VcmMis<T>::merge_weight(lv.mis, state.mis, camera.pdf_forward, camera.pdf_reverse, pass)) * camera.f * lv.beta;
+            });
+            for (int k = 0; k < 3; ++k) sum[k] = place.scattering[k] > T(0) ? sum[k] / place.scattering[k] : T(0);
+            return sum * light.volume_normalization;
+        }
+        return sum;
     }
 
     const SceneT* scene_;
     BidirectionalConfig config_;
+    Air air_;
     BoundingSphere<T> sphere_{};
     std::vector<T> light_probability_; ///< per light (the area lights last), its share of the light paths
     std::vector<T> light_cdf_;

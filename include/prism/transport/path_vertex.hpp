@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// SurfaceVertex: a path's vertex at a surface, as the bidirectional estimators see it
-// (integrator/bidirectional.hpp): what its material scatters toward any direction, and
-// the densities of drawing that direction from either end of the path.
+// SurfaceVertex and MediumVertex: a path's vertex at a surface or in a medium that
+// scatters, as the bidirectional estimators see it (integrator/bidirectional.hpp): what
+// its material or phase function scatters toward any direction, and the densities of
+// drawing that direction from either end of the path.
 //
 // A camera path and a light path meet at vertices: joined by a segment (connection), or
 // found near each other (merging). Each needs, at a vertex, the material's value for a
@@ -20,6 +21,12 @@
 // own sample(); a material with a diffuse and a delta lobe (a mirror or an interface
 // beside it) chooses one by their reflectances, as scatter_photon does, and that choice's
 // probability is part of the diffuse lobe's density.
+//
+// In a medium the lobe is the phase function, which has no delta and no cosine: every
+// vertex there is connectible, and its densities both ways are the phase function's
+// value at the angle between the two directions of travel (the same either way). The
+// medium's scattering coefficient is not in the value: the walk's free flight put it in
+// the path's throughput (medium/medium.hpp's FreeFlight).
 #pragma once
 
 #include <prism/core/random.hpp>
@@ -28,6 +35,7 @@
 #include <prism/material/bsdf.hpp>
 #include <prism/material/scattering.hpp>
 #include <prism/material/traits.hpp>
+#include <prism/medium/phase.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -68,6 +76,8 @@ class SurfaceVertex {
 public:
     /// The material's precision.
     using T = typename M::scalar_type;
+    /// The material's type.
+    using material_type = M;
 
     static_assert(!(has_diffuse<M> && has_glossy<M>), "a material is a diffuse lobe or a glossy one, not both");
 
@@ -79,6 +89,9 @@ public:
 
     /// Whether the vertex has a non-delta lobe: where connections and merges are made.
     [[nodiscard]] bool connectible() const noexcept { return scatters_smoothly(*material_, *hit_, d_); }
+
+    /// The material.
+    [[nodiscard]] const M& material() const noexcept { return *material_; }
 
     /// The non-delta lobe toward the unit direction wo (nothing for a vertex that has none).
     [[nodiscard]] VertexValue<T> value(const Vec3<T>& wo) const noexcept
@@ -208,6 +221,41 @@ private:
     Vec3<T> d_;
     Transport mode_;
     T outside_index_;
+};
+
+/// A path's vertex in a medium that scatters by `phase`, arriving along the unit
+/// direction d.
+template <PhaseFunction P>
+class MediumVertex {
+public:
+    /// The phase function's precision.
+    using T = typename P::scalar_type;
+
+    /// The vertex; the phase function must outlive it.
+    MediumVertex(const P& phase, const Vec3<T>& d) noexcept : phase_(&phase), d_(d) {}
+
+    /// Every vertex in a medium can be joined and merged.
+    [[nodiscard]] static constexpr bool connectible() noexcept { return true; }
+
+    /// The phase function toward the unit direction wo, cosine 1, its value the density both ways.
+    [[nodiscard]] VertexValue<T> value(const Vec3<T>& wo) const noexcept
+    {
+        const T p = phase_->value(dot(d_, wo));
+        return {Rgb<T>(p), T(1), p, p};
+    }
+
+    /// A direction drawn from the phase function (exactly its density: weight 1).
+    [[nodiscard]] std::optional<VertexSample<T>> sample(Random& rng) const noexcept
+    {
+        const auto [u1, u2] = rng.uniform2<T>();
+        const PhaseSample<T> s = phase_->sample(d_, u1, u2);
+        if (!(s.pdf > T(0)) || !(s.pdf < infinity<T>)) return std::nullopt;
+        return VertexSample<T>{s.direction, Rgb<T>(T(1)), s.pdf, s.pdf, false};
+    }
+
+private:
+    const P* phase_;
+    Vec3<T> d_;
 };
 
 } // namespace prism
