@@ -68,6 +68,11 @@ def main():
     ap.add_argument("--cycles-levels", help="Cycles' samples per pixel, comma-separated (16,64,256,1024)")
     ap.add_argument("--tag", default="", help="written to bench/results/NAME_TAG.csv and .png instead of NAME.csv, so that a run of a few methods keeps the full run's files")
     ap.add_argument("--reuse-cycles-reference", action="store_true", help="keep Cycles' reference renders already in BUILD_DIR/fog_vs_time")
+    ap.add_argument("--reference-method", default="progressive", choices=("progressive", "vcm"),
+                    help="prism's reference: progressive photon mapping (biased at the sharpest caustics until very many passes), "
+                         "or vertex connection and merging (unbiased but for its merges); --reference-passes each of two renders")
+    ap.add_argument("--rescore", action="store_true",
+                    help="no timed renders: score those already in BUILD_DIR/fog_vs_time against the references, their times from the CSV")
     ap.add_argument("--reuse-prism-references", action="store_true",
                     help="keep prism's path-traced and progressive renders for the agreement and reference already in BUILD_DIR/fog_vs_time (with their times)")
     args = ap.parse_args()
@@ -96,8 +101,9 @@ def main():
             seconds["Cycles"] += cycles_render(args.reference_spp, out, args.width, seed)
         pair.append(read_pfm(out))
     pairs["Cycles"] = pair
-    # prism's: the path tracer and progressive photon mapping, two seeds each.
-    for method, effort in (("path", args.agreement_spp), ("progressive", args.reference_passes)):
+    # prism's: the path tracer and the reference (progressive photon mapping or VCM), two seeds each.
+    ref = args.reference_method
+    for method, effort in (("path", args.agreement_spp), (ref, args.reference_passes)):
         pair, seconds[method] = [], 0.0
         for seed in (1, 2):
             out = os.path.join(work, "agreement_%s_%d.pfm" % (method, seed))
@@ -112,14 +118,14 @@ def main():
             pair.append(read_pfm(out))
         pairs[method] = pair
     labels = {"Cycles": "Cycles %d spp x 2" % args.reference_spp, "path": "prism path %d spp x 2" % args.agreement_spp,
-              "progressive": "prism progressive %d passes x 2" % args.reference_passes}
+              ref: "prism %s %d passes x 2" % (ref, args.reference_passes)}
     w, h = pairs["Cycles"][0][0], pairs["Cycles"][0][1]
     masks = {"all": None, "caustic": caustic_mask(w, h)}
     with open(os.path.join(here, "results", tagged("fog_agreement.csv", args.tag)), "w", newline="") as f:
         table = csv.writer(f)
         table.writerow(["first", "second", "region", "range", "first_seconds", "second_seconds", "noise_first", "noise_second", "rmse_between",
                         "rmse_from_noise", "mean_ratio"])
-        for a, b in (("path", "Cycles"), ("progressive", "Cycles"), ("progressive", "path")):
+        for a, b in (("path", "Cycles"), (ref, "Cycles"), (ref, "path")):
             for region, mask in masks.items():
                 for display in (False, True):
                     st = agreement(pairs[a], pairs[b], mask, display)
@@ -128,9 +134,9 @@ def main():
                                                              st[0], st[1], st[2], st[3], st[2] / st[3], st[4]), flush=True)
                     table.writerow([labels[a], labels[b], region, "display" if display else "linear", "%.2f" % seconds[a], "%.2f" % seconds[b]] +
                                    ["%.6f" % v for v in st])
-    for name in ("Cycles", "progressive"):
+    for name in ("Cycles", ref):
         write_pfm(os.path.join(work, "reference_%s.pfm" % name), (w, h, [(a + b) / 2 for a, b in zip(pairs[name][0][2], pairs[name][1][2])]))
-    scorers = {(reference, region): Scorer(pairs[reference], mask) for reference in ("progressive", "Cycles") for region, mask in masks.items()}
+    scorers = {(reference, region): Scorer(pairs[reference], mask) for reference in (ref, "Cycles") for region, mask in masks.items()}
     for (reference, region), scorer in scorers.items():
         print("reference %s, %s: its own noise %.5f (display range %.5f)" % (labels[reference], region, scorer.noise, scorer.display_noise), flush=True)
     # Every method's renders, timed in interleaved rounds.
@@ -143,10 +149,17 @@ def main():
         out = os.path.join(work, "cycles_%d.pfm" % spp)
         jobs.append(("Cycles", spp, out, functools.partial(cycles_render, spp, out, args.width)))
     times = [[] for _ in jobs]
-    for _ in range(args.repeats):
-        for job, took in zip(jobs, times):
-            took.append(job[3]())
-    rows = {"progressive": [], "Cycles": []}
+    if args.rescore:
+        # The times of the last timed run of every method (its CSV, untagged), by method and effort.
+        with open(os.path.join(here, "results", "fog_vs_time_cycles.csv")) as f:
+            timed = {(r["method"], r["effort"]): (float(r["seconds"]), float(r["seconds_median"])) for r in csv.DictReader(f)}
+        jobs = [job for job in jobs if (job[0], str(job[1])) in timed]
+        times = [[timed[(job[0], str(job[1]))][0]] + 2 * [timed[(job[0], str(job[1]))][1]] for job in jobs]  # (min and median kept)
+    else:
+        for _ in range(args.repeats):
+            for job, took in zip(jobs, times):
+                took.append(job[3]())
+    rows = {ref: [], "Cycles": []}
     for (method, effort, out, _), took in zip(jobs, times):
         image = read_pfm(out)
         for (reference, region), scorer in scorers.items():
@@ -154,14 +167,14 @@ def main():
             r = rows[reference][-1]
             print("against %-11s %-8s %-18s %8s: %.3f s (median %.3f), RMSE %.5f, display range %.5f" % (reference, region, method, effort, r[3], r[4], r[5], r[8]),
                   flush=True)
-    for reference, name in (("progressive", tagged("fog_vs_time.csv", args.tag)), ("Cycles", tagged("fog_vs_time_cycles.csv", args.tag))):
+    for reference, name in ((ref, tagged("fog_vs_time.csv", args.tag)), ("Cycles", tagged("fog_vs_time_cycles.csv", args.tag))):
         path = os.path.join(here, "results", name)
         write_csv(path, rows[reference], "region")
         print("wrote", path)
         print("against %s:" % labels[reference])
         summary(rows[reference])
-    strip(work, pairs["progressive"], pairs["Cycles"], efforts, cycles_spp, rect=CAUSTIC, name=tagged("fog_strip.png", args.tag),
-          labels=(labels["progressive"], labels["Cycles"]))
+    strip(work, pairs[ref], pairs["Cycles"], efforts, cycles_spp, rect=CAUSTIC, name=tagged("fog_strip.png", args.tag),
+          labels=(labels[ref], labels["Cycles"]))
 
 
 if __name__ == "__main__":

@@ -19,7 +19,7 @@
 # Errors are against the converged image: the reference's own noise, measured from its
 # two halves, is taken out in quadrature (the raw RMSE is in the CSV too). Writes bench/results/methods_vs_time.csv; bench/plot.py draws methods_vs_time.png.
 #
-# usage: bench/methods_vs_time.py BUILD_DIR [--size 256] [--reference-spp 4096] [--quick]
+# usage: bench/methods_vs_time.py BUILD_DIR [--size 256] [--reference-spp 4096] [--reference-method reference|vcm] [--quick]
 import argparse
 import csv
 import functools
@@ -191,7 +191,10 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("build")
     ap.add_argument("--size", type=int, default=256)
-    ap.add_argument("--reference-spp", type=int, default=4096)
+    ap.add_argument("--reference-spp", type=int, default=4096, help="the reference's effort, in two halves: samples per pixel, or passes for bdpt and vcm")
+    ap.add_argument("--reference-method", default="reference",
+                    help="what renders the references: reference (path tracing + light tracing), or vcm (every path, E S ... S L under a point light too); "
+                         "another than reference is always rendered anew")
     ap.add_argument("--quick", action="store_true", help="fewer and smaller runs (a smoke test)")
     ap.add_argument("--rescore", action="store_true", help="score the renders already in BUILD_DIR/methods_vs_time again (no rendering)")
     ap.add_argument("--methods", help="comma-separated: re-run only these (direct, gather, cache, progressive, reference, bdpt, vcm, cycles, povray), "
@@ -249,15 +252,15 @@ def main():
         ref_seconds = 0
         for seed in (101, 102):
             half = os.path.join(work, "%s_reference_%d.pfm" % (scene, seed))
-            if not (only and os.path.exists(half)):
-                ref_seconds += run(args.build, scene, "reference", args.reference_spp // 2, half, args.size, seed)
+            if not (only and os.path.exists(half)) or args.reference_method != "reference":
+                ref_seconds += run(args.build, scene, args.reference_method, args.reference_spp // 2, half, args.size, seed)
             halves.append(read_pfm(half))
         w, h = halves[0][0], halves[0][1]
         ref = (w, h, [(a + b) / 2 for a, b in zip(halves[0][2], halves[1][2])])
         write_pfm(os.path.join(work, "%s_reference.pfm" % scene), ref)
         score = Scorer(halves, wall_mask(args.build, work, scene, args.size))
-        print("%s: reference, %d spp in two halves, %.1f s, its own noise %.5f (display range %.5f)" %
-              (scene, args.reference_spp, ref_seconds, score.noise, score.display_noise), flush=True)
+        print("%s: reference by %s, %d spp or passes in two halves, %.1f s, its own noise %.5f (display range %.5f)" %
+              (scene, args.reference_method, args.reference_spp, ref_seconds, score.noise, score.display_noise), flush=True)
         # Every render of the scene, then each timed in --repeats interleaved rounds
         # (min and median kept; the pictures are the same bits every round).
         jobs = []  # (method, effort, output, render: () -> seconds, reader)

@@ -395,7 +395,7 @@ def methods_vs_time_chart(rows):
     """Error against prism's reference vs time: a column per scene, linear radiance above,
     the display range (clamped to 1) below; a curve per method."""
     scenes = [("diffuse", "diffuse Cornell box (Cycles renders it too)"), ("area", "the diffuse box under its ceiling light\n(an area light; Cycles renders it too)"),
-              ("glass", "Cornell box, glass and mirror balls"),
+              ("glass", "Cornell box, glass and mirror balls\n(the reference: 2 x 1024 passes of VCM)"),
               ("povray", "glass box in POV-Ray's model (direct + caustics),\nover the pixels that see walls")]
     scenes = [(scene, title) for scene, title in scenes if any(r["scene"] == scene for r in rows)]
     metrics = [("rmse", "RMSE, linear radiance"), ("rmse_display", "RMSE, display range (radiance clamped to 1)")]
@@ -539,6 +539,9 @@ def main():
     if (rows := read("fog_vs_time.csv")):
         error_vs_time_chart(rows, [("all", "a spot light through haze onto a rough glass ball\n(Cycles renders it too)"),
                                    ("caustic", "the volumetric caustic below the ball")], "prism's progressive reference", "fog_vs_time.png")
+    if (rows := read("fog_vs_time_vcmref.csv")):
+        error_vs_time_chart(rows, [("all", "a spot light through haze onto a rough glass ball\n(Cycles renders it too)"),
+                                   ("caustic", "the volumetric caustic below the ball")], "a long VCM reference", "fog_vs_time_vcmref.png")
     if (rows := read("fog_vs_time_cycles.csv")):
         error_vs_time_chart(rows, [("all", "a spot light through haze onto a rough glass ball"), ("caustic", "the volumetric caustic below the ball")],
                             "Cycles' reference", "fog_vs_time_cycles.png")

@@ -33,6 +33,8 @@ VALIDATION = (
     "the photon mapper's furnace: 1.0 within 0.5 %",
     "rough dielectric: sampling follows the pdf from either side",
     "the consistency matrix's quick slice",
+    "in haze, every BDPT strategy alone reads the path tracer's light",
+    "VCM's merging alone (progressive photon mapping by its light paths)",
 )
 BUILDS = ("consumer_", "compile_error_", "documentation_snippets")
 CASE_BUDGET, VALIDATION_BUDGET = 2.0, 10.0

@@ -180,17 +180,20 @@ TEST_CASE("a floor lit by a point light and its mirror image, seen in the mirror
     CHECK(vcm == doctest::Approx(both).epsilon(test::resolved(0.02)));
 }
 
-TEST_CASE("the bidirectional estimators' images are the same bits for any thread count, crop and range of passes")
+namespace {
+
+/// That the estimator renders `scene` (in `air`) to the same bits on 1 thread and 2, and
+/// in parts (passes [0, 2) whole and [2, 6) in two crops), with light paths a pixel's own
+/// (drawn from its sampler, joined to its camera paths) or a number of their own
+/// (independent streams, joined at random); and every pixel finite, and lit where `lit`.
+template <class SceneT, class Air = StraightAir>
+void check_same_bits(const SceneT& scene, const Camera<float>& camera, bool lit, const Air& air = {})
 {
-    const auto scene = floor_and_mirror();
-    const Camera<float> camera{.position = {1.5f, 3, 0}, .look_at = {1.5f, 0, 0}, .up = {0, 0, -1}, .fov = 60};
-    // Light paths a pixel's own (drawn from its sampler, joined to its camera paths), or
-    // a number of their own (independent streams, joined at random).
     for (const std::size_t paths : {std::size_t(0), std::size_t(3000)})
     for (const BidirectionalMethod method : {BidirectionalMethod::bdpt, BidirectionalMethod::vcm}) {
         CAPTURE(method_name(method));
         CAPTURE(paths);
-        const Bidirectional estimator(scene, {.method = method, .radius = 0.05, .light_paths = paths});
+        const Bidirectional estimator(scene, {.method = method, .radius = 0.05, .light_paths = paths}, air);
         const RenderConfig config{.width = 12, .height = 9, .spp = 6, .threads = 2, .seed = 5, .progress = false};
         const Accumulation whole = render_sums(camera, estimator, config);
         RenderConfig one = config;
@@ -213,8 +216,16 @@ TEST_CASE("the bidirectional estimators' images are the same bits for any thread
                 CHECK(parts.weight(x, y) == 6);
             }
         const Film image = whole.image();
-        for (const Rgb<float>& p : image.pixels()) CHECK((std::isfinite(p.x) && p.x > 0));
+        for (const Rgb<float>& p : image.pixels()) CHECK((std::isfinite(p.x) && (p.x > 0 || !lit)));
     }
+}
+
+} // namespace
+
+TEST_CASE("the bidirectional estimators' images are the same bits for any thread count, crop and range of passes")
+{
+    const auto scene = floor_and_mirror();
+    check_same_bits(scene, {.position = {1.5f, 3, 0}, .look_at = {1.5f, 0, 0}, .up = {0, 0, -1}, .fov = 60}, true);
 }
 
 TEST_CASE("bad bidirectional settings are refused, naming the parameter; lights that emit nothing render black")
@@ -610,4 +621,39 @@ TEST_CASE("VCM's connections are BDPT's: as merging counts for nothing in the we
     const auto scene = hazy_floor();
     const double hazy = mean_red(render(hazy_camera, Bidirectional(scene, bdpt, hazy_air), config));
     CHECK(mean_red(render(hazy_camera, Bidirectional(scene, vcm, hazy_air), config)) == doctest::Approx(hazy).epsilon(1e-4).scale(0));
+}
+
+TEST_CASE("in haze, the bidirectional estimators' images are the same bits for any thread count, crop and range of passes")
+{
+    // Free flights, vertices in the haze, merges within a ball: the hazy floor in parts.
+    const auto scene = hazy_floor();
+    check_same_bits(scene, hazy_camera, false, hazy_air);
+}
+
+TEST_CASE("fog inside a glass ball under a spot light (E S M S L): VCM reads what progressive photon mapping does, BDPT none of it")
+{
+    // The camera sees the fog through the glass, and the fog is lit through it (a spot
+    // light whose cone just holds the ball): the single scattering, camera, glass, fog,
+    // glass, light (4 segments), has a delta end at every segment, so no connection joins
+    // it; VCM finds it by merging alone, in the fog's volume. Progressive photon mapping
+    // reads it from the caustic pass's volume photons (L S+ M), independently; those also
+    // hold the light reflected inside the ball before it scatters, and its camera paths
+    // the fog seen by such a reflection, a few per cent more (VCM read 1.5 % and 3.7 %
+    // below it at 2000 and 10 000 light paths). BDPT finds none of it (it joins two
+    // vertices in the fog: the multiple scattering, of 5 segments and more).
+    const auto scene = Scene{Lights{SpotLight<float>{.position = {0.3f, 2, 0.2f}, .direction = {-0.3f, -2, -0.2f}, .intensity = Rgb<float>(10), .inner_angle = 15, .outer_angle = 16}},
+                             Object{Sphere<float>({0, 0, 0}, 0.5f), Dielectric<float, ExactFresnel, Fog<float>>{.ior = 1.33f, .interior = {.scattering = Rgb<float>(1.5f), .phase = {.g = 0.2f}}}}};
+    using S = std::remove_cvref_t<decltype(scene)>;
+    const Camera<float> camera{.position = {0, 0, 3}, .look_at = {0, 0, 0}, .fov = 12};
+    const RenderConfig config{.width = 12, .height = 12, .spp = 32, .seed = 7, .progress = false};
+    const std::size_t paths = std::size_t(test::samples(10000));
+    const double vcm = mean_red(render(camera, Bidirectional(scene, {.method = BidirectionalMethod::vcm, .max_length = 4, .radius = 0.04, .light_paths = paths}), config));
+    const double bdpt = mean_red(render(camera, Bidirectional(scene, {.method = BidirectionalMethod::bdpt, .max_length = 4, .light_paths = paths}), config));
+    ProgressiveConfig<S> progressive;
+    progressive.pass.tracing = {.global_photons = 0, .caustic_photons = paths, .seed = 3};
+    progressive.pass.volume_radius = 0.04f;
+    const double ppm = mean_red(render(camera, ProgressivePhotonMapper<S>(scene, progressive), config));
+    MESSAGE("VCM ", vcm, ", progressive photon mapping ", ppm, ", BDPT ", bdpt);
+    CHECK(vcm == doctest::Approx(ppm).epsilon(test::resolved(0.07)).scale(0));
+    CHECK(bdpt == 0.0);
 }
