@@ -83,7 +83,7 @@ Rendered render_by_method(const std::string& name, const SceneT& scene, const pr
     }
     if (method == "bdpt" || method == "vcm") {
         if constexpr (!prism::renders_bidirectionally<SceneT>) {
-            throw std::invalid_argument("--method " + method + " renders no dispersion and no light that casts its own shadow: this scene has a dispersive material or POV-Ray's area_light");
+            throw std::invalid_argument("--method " + method + " renders no light that casts its own shadow: this scene has POV-Ray's area_light");
         } else {
         const prism::Bidirectional estimator(scene, {.method = method == "vcm" ? prism::BidirectionalMethod::vcm : prism::BidirectionalMethod::bdpt});
         prism::Accumulation sums = render_with(name, camera, estimator, pass_render_config(options), options);

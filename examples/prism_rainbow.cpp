@@ -6,11 +6,10 @@
 // Beside it, the same prism of a glass that does not disperse (n = n_d): one white beam.
 // And the prism in haze (prism_haze): a narrow white beam from a projector (a spot light)
 // crosses the hazy room, visible by the light the haze scatters, enters the prism and
-// leaves it as a fan of colours in the air down to the floor, by progressive photon
-// mapping: the beam is the haze's single scattering of the projector, found along each
-// camera ray by equiangular samples; photons keep their wavelength where they scatter in
-// the haze, and the volume photons the fan leaves are read along each camera ray by the
-// beam radiance estimate, at a radius that shrinks as the passes go.
+// leaves it as a fan of colours in the air down to the floor, by bidirectional path
+// tracing: light paths take a wavelength band at the prism's first face and are joined to
+// the camera wherever they scatter in the haze or land on the floor (`--method
+// progressive` renders it by progressive photon mapping, `--method vcm` by VCM).
 #include "cli.hpp"
 #include "methods.hpp"
 
@@ -119,25 +118,35 @@ int main(int argc, char** argv)
         const auto hazy = hazy_scene();
         using Air = FilledAir<Fog<T>>;
         const Air haze{.medium = {.scattering = Rgb<T>(T(0.08)), .phase = {.g = T(0.5)}}, .region = {{-12, 0, -10}, {14, 7, 6}}};
-        // Progressive photon mapping: the white beam is single scattering (equiangular
-        // samples kept to the projector's cone: clean at any pass count); the fan in the haze
-        // and the spectrum on the floor are the caustic photons' (L S S M, L S S D), which
-        // fresh photons each pass and a shrinking radius bring to a clean fan; light
-        // scattered more than once, the global photons' at a wider radius.
-        using H = std::remove_cvref_t<decltype(hazy)>;
-        ProgressiveConfig<H, Air> config;
-        config.pass.tracing = examples::photon_tracer_config(options);
-        config.pass.tracing.global_photons = options.photons;                 // a pass's
-        config.pass.tracing.caustic_photons = 2 * options.caustic_photons / 5; // aimed at the prism
-        config.pass.caustic.radius = float(options.radius);
-        config.pass.global.radius = 0.25f;
-        config.pass.volume_radius = 0.05f;
-        config.pass.indirect_volume_radius = 0.3f;
-        config.pass.single_scattering = true;
-        const ProgressivePhotonMapper<H, Air> mapper(hazy, config, haze);
         examples::Options haze_options = options;
         haze_options.render.spp = 12 * options.render.spp; // passes
-        examples::save(examples::timed_render("prism_haze", camera, mapper, haze_options), haze_options);
+        using H = std::remove_cvref_t<decltype(hazy)>;
+        if (options.method == "progressive") {
+            // Progressive photon mapping: the white beam is single scattering (equiangular
+            // samples kept to the projector's cone: clean at any pass count); the fan in the
+            // haze and the spectrum on the floor are the caustic photons' (L S S M, L S S D),
+            // which fresh photons each pass and a shrinking radius bring to a clean fan;
+            // light scattered more than once, the global photons' at a wider radius.
+            ProgressiveConfig<H, Air> config;
+            config.pass.tracing = examples::photon_tracer_config(options);
+            config.pass.tracing.global_photons = options.photons;                 // a pass's
+            config.pass.tracing.caustic_photons = 2 * options.caustic_photons / 5; // aimed at the prism
+            config.pass.caustic.radius = float(options.radius);
+            config.pass.global.radius = 0.25f;
+            config.pass.volume_radius = 0.05f;
+            config.pass.indirect_volume_radius = 0.3f;
+            config.pass.single_scattering = true;
+            const ProgressivePhotonMapper<H, Air> mapper(hazy, config, haze);
+            examples::save(examples::timed_render("prism_haze", camera, mapper, haze_options), haze_options);
+        } else {
+            // Bidirectional path tracing (or VCM, --method vcm): the fan in the haze and the
+            // spectrum on the floor are light paths through the prism joined to the camera
+            // (light tracing, L S S M E and L S S D E), each keeping the band it took at the
+            // first face; the white beam is the haze's light samples of the projector and the
+            // light paths' first vertices joined to the camera, weighted together.
+            const Bidirectional estimator(hazy, {.method = options.method == "vcm" ? BidirectionalMethod::vcm : BidirectionalMethod::bdpt}, haze);
+            examples::save(examples::timed_render("prism_haze", camera, estimator, haze_options), haze_options);
+        }
         return 0;
     });
 }

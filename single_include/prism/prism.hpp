@@ -13317,7 +13317,9 @@ struct VertexSample {
 
 /// A path's vertex on `material` at `hit`, arriving along the unit direction d, carrying
 /// `mode`; `outside_index` is the index of refraction on a transmissive material's outer
-/// side (1 in the scene's air: medium/nesting.hpp).
+/// side (1 in the scene's air: medium/nesting.hpp); `wavelength_nm` the light's
+/// wavelength where a dispersive interface has split it (0: white), at which a
+/// dispersive material refracts.
 template <Material M>
 class SurfaceVertex {
 public:
@@ -13329,8 +13331,8 @@ public:
     static_assert(!(has_diffuse<M> && has_glossy<M>), "a material is a diffuse lobe or a glossy one, not both");
 
     /// The vertex; the material and crossing must outlive it.
-    SurfaceVertex(const M& material, const Crossing<T>& hit, const Vec3<T>& d, Transport mode, T outside_index = T(1)) noexcept
-        : material_(&material), hit_(&hit), d_(d), mode_(mode), outside_index_(outside_index)
+    SurfaceVertex(const M& material, const Crossing<T>& hit, const Vec3<T>& d, Transport mode, T outside_index = T(1), T wavelength_nm = T(0)) noexcept
+        : material_(&material), hit_(&hit), d_(d), mode_(mode), outside_index_(outside_index), wavelength_(wavelength_nm)
     {
     }
 
@@ -13399,7 +13401,7 @@ public:
             return VertexSample<T>{s->wi, s->weight * correction(s->wi), s->pdf, reverse_pdf(s->wi), false};
         } else if constexpr (reflects<M> || transmits<M>) {
             Rgb<T> weight{T(1)};
-            const auto next = scatter_photon<Transport::radiance>(*material_, *hit_, d_, weight, rng, T(0), outside_index_);
+            const auto next = scatter_photon<Transport::radiance>(*material_, *hit_, d_, weight, rng, wavelength_, outside_index_);
             if (!next) return std::nullopt;
             return VertexSample<T>{next->direction, weight, T(1), T(1), true};
         } else {
@@ -13422,8 +13424,8 @@ private:
         requires(has_diffuse<M> && (reflects<M> || transmits<M>))
     {
         Shares s;
-        s.normal = delta_normal(*material_, arriving, *hit_, T(0), outside_index_);
-        s.split = delta_split(*material_, arriving, s.normal, hit_->entering, hit_->point, T(0), outside_index_);
+        s.normal = delta_normal(*material_, arriving, *hit_, wavelength_, outside_index_);
+        s.split = delta_split(*material_, arriving, s.normal, hit_->entering, hit_->point, wavelength_, outside_index_);
         s.diffuse = max_component(diffuse_response(*material_, *hit_).photon_reflectance());
         s.reflected = max_component(s.split.kr);
         s.transmitted = s.split.refracted ? max_component(s.split.kt) : T(0);
@@ -13468,6 +13470,7 @@ private:
     Vec3<T> d_;
     Transport mode_;
     T outside_index_;
+    T wavelength_;
 };
 
 /// A path's vertex in a medium that scatters by `phase`, arriving along the unit
@@ -13553,10 +13556,20 @@ private:
 // for the weights as its kernel's eta, merge_weight 4/3 pi r^3 N times its mean
 // scattering coefficient, which a vertex's density there has where a surface's has none.
 //
-// Scope: straight air, clear or filled with a medium that scatters, and the media inside
+// Dispersion: a white subpath meeting a dispersive interface takes a wavelength band
+// there, as the path tracer's and the photons do, and keeps it. The two subpaths of a
+// pair (light path i and the camera paths joined to it) take the same band, drawn per pair
+// and pass (stepping through the bands from pass to pass): every connection joins two
+// subpaths of one wavelength, and the band's share of white over its probability (1 /
+// count) is taken once per path, where the subpaths meet. A merge with another pair's
+// vertex where both subpaths took a band counts only if the bands agree, and then count
+// times: unbiased, at a count-th of the merges (the weights do not see that, and still
+// sum to 1).
+//
+// Scope: straight air, clear or filled with a medium that scatters, the media inside
 // objects (nested dielectrics, index-matched boundaries and absorbing interiors
-// included); a scene with dispersion, graded air or a light without falloff is refused at
-// compile time or by the constructor.
+// included), and dispersion; graded air or a light without falloff is refused at compile
+// time or by the constructor.
 
 
 #include <algorithm>
@@ -13621,6 +13634,10 @@ struct BidirectionalConfig {
     /// of the paths it can find).
     std::optional<Strategy> only{};
     bool weighted = true; ///< see `only`
+    /// A white subpath meeting a dispersive interface takes one of this many wavelength
+    /// bands (1 to 81), as the path tracer's does: the band its pair drew (see
+    /// Bidirectional), its share of white over its probability 1 / count.
+    int dispersion_bands = SpectralBands<float>::max_count;
 };
 
 /// The multiple importance weights of Bidirectional: a subpath's three running
@@ -13762,10 +13779,10 @@ struct VcmMis {
     }
 };
 
-/// Whether Bidirectional renders scenes of type SceneT in air of type Air: no dispersive
-/// material, no light that casts its own shadow, straight air.
+/// Whether Bidirectional renders scenes of type SceneT in air of type Air: no light that
+/// casts its own shadow, straight air.
 template <class SceneT, class Air = StraightAir>
-inline constexpr bool renders_bidirectionally = !SceneT::has_dispersion && !SceneT::has_own_shadow_lights && !Air::curved;
+inline constexpr bool renders_bidirectionally = !SceneT::has_own_shadow_lights && !Air::curved;
 
 /// Bidirectional path tracing and vertex connection and merging of `scene` in `Air` (an
 /// integrator of passes: render/render.hpp's PassEstimator).
@@ -13778,13 +13795,13 @@ public:
     using T = scalar_type;
 
     static_assert(!Air::curved, "Bidirectional joins vertices by straight segments: graded air needs the PathTracer or a PhotonMapper");
-    static_assert(!SceneT::has_dispersion, "Bidirectional: a dispersive material's wavelengths are not traced yet");
     static_assert(!SceneT::has_own_shadow_lights, "Bidirectional: a light that casts its own shadow (PointGridLight, POV-Ray's area_light) has no emission to trace");
 
     /// The estimator of `scene` (which must outlive it); throws std::invalid_argument,
-    /// naming the parameter, for a bad setting, a dispersive material or a light without
-    /// falloff (POV-Ray's fade_power 0, which no light path can carry).
-    explicit Bidirectional(const SceneT& scene, BidirectionalConfig config = {}, Air air = {}) : scene_(&scene), config_(config), air_(std::move(air))
+    /// naming the parameter, for a bad setting or a light without falloff (POV-Ray's
+    /// fade_power 0, which no light path can carry).
+    explicit Bidirectional(const SceneT& scene, BidirectionalConfig config = {}, Air air = {})
+        : scene_(&scene), config_(config), air_(std::move(air)), bands_(checked_bands(config.dispersion_bands))
     {
         scene.validate();
         air_.validate();
@@ -13919,6 +13936,7 @@ private:
         int length;          ///< segments from the light
         MediumRef medium;    ///< the medium it is in (In::surface: on the surface `hit`)
         Rgb<T> scattering;   ///< in a medium: its scattering coefficient there
+        int band;            ///< the wavelength band a dispersive interface split it into (-1: white)
 
         /// Where it is.
         [[nodiscard]] Place place() const noexcept
@@ -13931,6 +13949,7 @@ private:
     struct LightPaths {
         std::vector<LightVertex> vertices;
         std::vector<std::uint32_t> ends; ///< path i's vertices are [ends[i], ends[i + 1])
+        std::vector<std::uint8_t> bands; ///< with dispersion: path i's (and its pair's) wavelength band
         HashGrid<T> grid;                ///< the vertices on surfaces by position, for merging
         HashGrid<T> volume_grid;         ///< the vertices in media by position
         std::vector<std::uint32_t> on_surfaces, in_media; ///< with media: the grids' points' vertices
@@ -13953,12 +13972,19 @@ private:
         [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Random& rng) const noexcept { return owner->camera_path(ray, rng, *light, *rays); }
     };
 
-    /// A subpath's running state: throughput and the MIS quantities.
+    /// A subpath's running state: throughput and the MIS quantities, and its wavelength.
+    /// (The throughput stays white where a dispersive interface splits the light: the
+    /// band's share of white is taken once per path where the two subpaths meet, spectral().)
     struct PathState {
         Rgb<T> beta;
         VcmMis<T> mis;
         int length = 0;         ///< segments so far
         bool specular = true;   ///< every scattering so far was a delta
+        int band = 0;           ///< the band its pair drew, which it takes at a dispersive interface
+        bool dispersed = false; ///< it has met a dispersive interface: its light is the band's
+
+        /// The band it is split into (-1: white).
+        [[nodiscard]] int split() const noexcept { return dispersed ? band : -1; }
     };
 
     /// The sampler's blocks a light path's bounces start at (Random::bounce): past any
@@ -13993,6 +14019,28 @@ private:
 
     [[nodiscard]] static T cube(T x) noexcept { return x * x * x; }
 
+    [[nodiscard]] static SpectralBands<T> checked_bands(int count)
+    {
+        if (count < 1 || count > SpectralBands<float>::max_count)
+            detail::throw_invalid("BidirectionalConfig dispersion_bands must be in [1, ", SpectralBands<float>::max_count, "], got ", count);
+        return SpectralBands<T>(count);
+    }
+
+    /// The wavelength a subpath's light has (0: white).
+    [[nodiscard]] T wavelength(const PathState& state) const noexcept { return state.dispersed ? bands_[state.band].wavelength_nm : T(0); }
+
+    /// A path's contribution `value` (from white light) of the light in `band` (-1: none,
+    /// white): the band's share of white over its probability, 1 / count. (A scene
+    /// without dispersion has no band, and nothing to multiply.)
+    [[nodiscard]] Rgb<T> in_band(const Rgb<T>& value, int band) const noexcept
+    {
+        if constexpr (SceneT::has_dispersion) {
+            if (band >= 0) return value * bands_[band].photon_weight * T(bands_.size());
+        }
+        (void)band;
+        return value;
+    }
+
     /// The image plane's density of the camera's ray along unit w, per steradian: 1 / (A cos^3).
     [[nodiscard]] static T camera_pdf(const CameraRays<T>& rays, const Vec3<T>& w) noexcept
     {
@@ -14008,9 +14056,10 @@ private:
     /// along, `distance` the length since the last vertex, `kept` the largest share of the
     /// throughput the flight there kept (1 at a surface). on_vertex returns the direction
     /// drawn there (nothing ends the walk); on_escape(ray) is called when the path leaves
-    /// the scene. `beta` takes what the media and index-matched boundaries let through.
+    /// the scene. The state's throughput takes what the media and index-matched boundaries
+    /// let through; a dispersive interface splits it into its band.
     template <class OnVertex, class OnEscape>
-    void walk(Ray<T> ray, MediumStack media, Rgb<T>& beta, Transport mode, Random& rng, int first_block, OnVertex&& on_vertex, OnEscape&& on_escape) const
+    void walk(Ray<T> ray, MediumStack media, PathState& state, Transport mode, Random& rng, int first_block, OnVertex&& on_vertex, OnEscape&& on_escape) const
     {
         T distance = T(0);
         for (int bounce = 0;; ++bounce) {
@@ -14023,8 +14072,8 @@ private:
                 T path = T(0);
                 hit = first_hit_through_media(*scene_, air_, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
                     const Ray<T> stretch{piece.at(t0), piece.direction};
-                    const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, beta, rng);
-                    beta *= flight.weight;
+                    const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, state.beta, rng);
+                    state.beta *= flight.weight;
                     if (!flight.scattered) return true;
                     Place place;
                     place.point = stretch.at(flight.distance);
@@ -14051,7 +14100,7 @@ private:
             const Crossing<T>& c = hit->crossing;
             distance += c.t;
             const bool go_on = scene_->visit_material(*hit, [&]<class M>(const M& material) -> bool {
-                attenuate_segment(*scene_, media, material, c, ray, beta);
+                attenuate_segment(*scene_, media, material, c, ray, state.beta);
                 [[maybe_unused]] std::conditional_t<transmits<M>, Interface, std::monostate> face{};
                 T outside_index = T(1);
                 if constexpr (transmits<M>) {
@@ -14061,17 +14110,19 @@ private:
                         media = face.beyond;
                         return true;
                     }
-                    outside_index = T(index_of(*scene_, outside_of(media, face, c.entering), T(0)));
+                    // A white path takes its band here (its light split by wavelength).
+                    if constexpr (disperses<M>) state.dispersed = true;
+                    outside_index = T(index_of(*scene_, outside_of(media, face, c.entering), wavelength(state)));
                 }
                 if constexpr (may_match_index<M>) {
                     if (material.index_matched(outside_index)) {
-                        beta *= material.transmission_tint();
+                        state.beta *= material.transmission_tint();
                         ray = spawn_ray(c.point, c.error, c.normal, ray.direction);
                         media = face.beyond;
                         return true;
                     }
                 }
-                const SurfaceVertex<M> vertex(material, c, ray.direction, mode, outside_index);
+                const SurfaceVertex<M> vertex(material, c, ray.direction, mode, outside_index, wavelength(state));
                 const Place place{&*hit, c.point, outside_index};
                 const std::optional<Vec3<T>> next = on_vertex(vertex, place, ray.direction, distance, T(1));
                 if (!next) return false;
@@ -14146,7 +14197,7 @@ private:
             }
         }
         return scene_->visit_material(lv.hit, [&]<class N>(const N& material) {
-            return SurfaceVertex<N>(material, lv.hit.crossing, lv.d, Transport::importance, lv.outside_index).value(wo);
+            return SurfaceVertex<N>(material, lv.hit.crossing, lv.d, Transport::importance, lv.outside_index, lv.band < 0 ? T(0) : bands_[lv.band].wavelength_nm).value(wo);
         });
     }
 
@@ -14198,6 +14249,13 @@ private:
         // pixel's own sequence and 0.045 with independent numbers).
         RenderConfig layout = config;
         if (layout.sampler == SamplerKind::sobol) layout.sampler = SamplerKind::zsobol;
+        // With dispersion, pair i's wavelength band: from an offset of its own, uniform and
+        // independent of every other number of the pair and of every other pair's, stepped
+        // pass by pass by the golden ratio (mod 1), so that a pixel's passes spread over the
+        // bands evenly, and another pair's band is the same with probability exactly
+        // 1 / count (merged_band).
+        [[maybe_unused]] const std::uint64_t band_seed = detail::sample_seed(config.seed ^ 0x2545f4914f6cdd1dULL, 0);
+        if constexpr (SceneT::has_dispersion) light.bands.resize(count);
         detail::parallel_blocks(blocks, config.threads, [&](std::size_t b, unsigned worker) {
             for (std::size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
                 const std::size_t before = lists[b].size();
@@ -14209,7 +14267,13 @@ private:
                                                         std::uint32_t(pass)),
                                                 Pcg32(seed, std::uint64_t(i)))
                                        : Random(seed, std::uint64_t(i));
-                light_path(rng, light, rays, window, lists[b], buffers[worker]);
+                int band = 0;
+                if constexpr (SceneT::has_dispersion) {
+                    const double u = double(Pcg32(band_seed, std::uint64_t(i)).next_u32()) * 0x1p-32 + 0.6180339887498949 * double(pass);
+                    band = std::min(int((u - std::floor(u)) * double(bands_.size())), bands_.size() - 1);
+                    light.bands[i] = std::uint8_t(band);
+                }
+                light_path(rng, band, light, rays, window, lists[b], buffers[worker]);
                 lengths[b].push_back(std::uint32_t(lists[b].size() - before));
             }
         });
@@ -14242,8 +14306,9 @@ private:
     }
 
     /// One light subpath: a light by power, its emission, then the walk; each vertex with
-    /// a non-delta lobe kept in `out` and joined to the camera.
-    void light_path(Random& rng, const LightPaths& light, const CameraRays<T>& rays, const PixelWindow& window, std::vector<LightVertex>& out,
+    /// a non-delta lobe kept in `out` and joined to the camera; `band` the wavelength band
+    /// it takes at a dispersive interface (its pair's).
+    void light_path(Random& rng, int band, const LightPaths& light, const CameraRays<T>& rays, const PixelWindow& window, std::vector<LightVertex>& out,
                     Accumulation& splats) const
     {
         rng.bounce(light_blocks - 1); // the emission's block
@@ -14254,6 +14319,8 @@ private:
         const auto [a, b] = rng.uniform2<T>();
         const auto [u, v] = rng.uniform2<T>();
         const T u_pick = rng.uniform<T>();
+        PathState state;
+        state.band = band;
         EmissionSample<T> e;
         std::optional<Hit<T>> source; // an area light's point
         bool delta_light = true;
@@ -14269,10 +14336,9 @@ private:
         });
         const T pdf = q * e.pdf_area * e.pdf_direction;
         if (!(pdf > T(0)) || !(pdf < infinity<T>) || !(e.cos > T(0)) || !(max_component(e.radiance) > T(0))) return;
-        PathState state;
         state.beta = e.radiance * (e.cos / pdf);
         state.mis = VcmMis<T>::light_start(q, e.pdf_area, e.pdf_direction, e.cos, e.from_infinity, delta_light, light.mis);
-        walk(e.ray, scene_->media_at(e.ray.origin), state.beta, Transport::importance, rng, light_blocks,
+        walk(e.ray, scene_->media_at(e.ray.origin), state, Transport::importance, rng, light_blocks,
              [&]<class V>(const V& vertex, const Place& place, const Vec3<T>& d, T distance, T kept) -> std::optional<Vec3<T>> {
                  const T cos = place.cos(d);
                  if (!(cos > T(0))) return std::nullopt;
@@ -14288,7 +14354,7 @@ private:
                      Hit<T> at{};
                      if (place.hit) at = *place.hit;
                      else at.crossing.point = place.point;
-                     out.push_back({at, d, state.beta, state.mis, place.outside_index, state.length, place.medium, place.scattering});
+                     out.push_back({at, d, state.beta, state.mis, place.outside_index, state.length, place.medium, place.scattering, state.split()});
                      if (state.length + 1 <= config_.max_length && config_.method != BidirectionalMethod::merging)
                          connect_to_camera(out.back(), vertex, light, rays, window, rng, splats);
                  }
@@ -14323,7 +14389,7 @@ private:
         const T weight = weighed(lv.mis.splat_weight(camera_area_pdf, light.count, f.pdf_reverse, pass_at(place, light)));
         const Rgb<T> v = visible(place.toward(to_camera), seen->distance);
         if (!(max_component(v) > T(0))) return;
-        const Rgb<T> value = (weight / (light.count * rays.pixel_area() * cube(seen->cos) * d2)) * lv.beta * f.f * f.cos * v;
+        const Rgb<T> value = in_band((weight / (light.count * rays.pixel_area() * cube(seen->cos) * d2)) * lv.beta * f.f * f.cos * v, lv.band);
         std::array<ExactSum, 3> add{};
         for (int k = 0; k < 3; ++k) {
             const double x = double(float(value[k]));
@@ -14346,8 +14412,9 @@ private:
         const T camera = camera_pdf(rays, ray.direction);
         if (!(camera > T(0))) return sum;
         state.mis = VcmMis<T>::camera_start(light.count, camera);
+        if constexpr (SceneT::has_dispersion) state.band = light.bands[paired];
         Vec3<T> previous = ray.origin;
-        walk(ray, scene_->media_at(ray.origin), state.beta, Transport::radiance, rng, 0,
+        walk(ray, scene_->media_at(ray.origin), state, Transport::radiance, rng, 0,
              [&]<class V>(const V& vertex, const Place& place, const Vec3<T>& d, T distance, T kept) -> std::optional<Vec3<T>> {
                  const T cos = place.cos(d);
                  if (!(cos > T(0))) return std::nullopt;
@@ -14366,20 +14433,20 @@ private:
                                  const T emission = area_light_probability() * lights.emission_pdf(*place.hit, -d).both();
                                  weight = state.mis.met_light_weight(direct, emission);
                              }
-                             sum += weighed(weight) * state.beta * le;
+                             sum += in_band(weighed(weight) * state.beta * le, state.split());
                          }
                      }
                  }
                  if (config_.method == BidirectionalMethod::merging && vertex.connectible()) {
-                     sum += state.beta * merges(vertex, place, state, light);
+                     sum += state.beta * merges(vertex, place, state, light, paired);
                      return std::nullopt;
                  }
                  if (state.length >= config_.max_length || !vertex.connectible()) {
                      if (state.length >= config_.max_length) return std::nullopt;
                  } else {
-                     sum += state.beta * light_samples(vertex, place, state, light, rng);
+                     sum += in_band(state.beta * light_samples(vertex, place, state, light, rng), state.split());
                      sum += state.beta * connections(vertex, place, state, light, paired);
-                     if (config_.method == BidirectionalMethod::vcm && !config_.only) sum += state.beta * merges(vertex, place, state, light);
+                     if (config_.method == BidirectionalMethod::vcm && !config_.only) sum += state.beta * merges(vertex, place, state, light, paired);
                  }
                  previous = place.point;
                  return scatter(vertex, place, state, light, rng, kept);
@@ -14388,7 +14455,7 @@ private:
                  // Leaving the scene: the background where every scattering was a delta
                  // (seen, as in every prism estimator, but lighting nothing), and each
                  // environment light, s = 0.
-                 if (state.specular && counts(0, state.length + 1)) sum += state.beta * scene_->background;
+                 if (state.specular && counts(0, state.length + 1)) sum += in_band(state.beta * scene_->background, state.split());
                  std::size_t index = 0;
                  scene_->for_each_light([&]<class L>(const L& l) {
                      const std::size_t i = index++;
@@ -14402,7 +14469,7 @@ private:
                              const T emission = reached_from_entry(sphere_, w, out.origin) ? light_probability_[i] * l.emission_pdf(-w, sphere_).both() : T(0);
                              weight = state.mis.met_light_weight(direct, emission);
                          }
-                         sum += weighed(weight) * state.beta * le;
+                         sum += in_band(weighed(weight) * state.beta * le, state.split());
                      }
                  });
              });
@@ -14493,7 +14560,8 @@ private:
                                                                   camera.pdf_reverse, pass_at(far_place, light), pass_at(place, light)));
             const Rgb<T> v = visible(place.toward(w), distance);
             if (!(max_component(v) > T(0))) continue;
-            sum += (weight * camera.cos * far.cos / d2) * camera.f * far.f * lv.beta * v;
+            // (Pair i's subpaths take the same band: split either or both, the light is its.)
+            sum += in_band((weight * camera.cos * far.cos / d2) * camera.f * far.f * lv.beta * v, std::max(lv.band, state.split()));
         }
         return sum;
     }
@@ -14504,16 +14572,18 @@ private:
     /// scattering coefficient where they scattered, which the estimate of the light
     /// arriving here divides out: the path takes it once, at the camera's vertex).
     template <class V>
-    [[nodiscard]] Rgb<T> merges(const V& vertex, const Place& place, const PathState& state, const LightPaths& light) const noexcept
+    [[nodiscard]] Rgb<T> merges(const V& vertex, const Place& place, const PathState& state, const LightPaths& light, std::size_t paired) const noexcept
     {
         Rgb<T> sum{T(0)};
         if (place.on_surface()) {
             light.grid.within(place.point, [&](std::uint32_t i, T) {
-                const LightVertex& lv = light.vertices[has_media ? light.on_surfaces[i] : i];
+                const std::uint32_t k = has_media ? light.on_surfaces[i] : i;
+                const LightVertex& lv = light.vertices[k];
                 if (lv.length + state.length > config_.max_length) return;
                 const VertexValue<T> camera = vertex.value(-lv.d);
                 if (camera.black()) return;
-                sum += merged(VcmMis<T>::merge_weight(lv.mis, state.mis, camera.pdf_forward, camera.pdf_reverse, light.mis)) * camera.f * lv.beta;
+                sum += merged_band(k, state, light, paired,
+                                   merged(VcmMis<T>::merge_weight(lv.mis, state.mis, camera.pdf_forward, camera.pdf_reverse, light.mis)) * camera.f * lv.beta);
             });
             return sum * light.vm_normalization;
         }
@@ -14521,16 +14591,37 @@ private:
             const typename VcmMis<T>::Pass pass = pass_at(place, light);
             if (!(pass.ratio > T(0))) return sum;
             light.volume_grid.within(place.point, [&](std::uint32_t i, T) {
-                const LightVertex& lv = light.vertices[light.in_media[i]];
+                const std::uint32_t k = light.in_media[i];
+                const LightVertex& lv = light.vertices[k];
                 if (lv.medium != place.medium || lv.length + state.length > config_.max_length) return;
                 const VertexValue<T> camera = vertex.value(-lv.d);
                 if (camera.black()) return;
-                sum += merged(VcmMis<T>::merge_weight(lv.mis, state.mis, camera.pdf_forward, camera.pdf_reverse, pass)) * camera.f * lv.beta;
+                sum += merged_band(k, state, light, paired, merged(VcmMis<T>::merge_weight(lv.mis, state.mis, camera.pdf_forward, camera.pdf_reverse, pass)) * camera.f * lv.beta);
             });
             for (int k = 0; k < 3; ++k) sum[k] = place.scattering[k] > T(0) ? sum[k] / place.scattering[k] : T(0);
             return sum * light.volume_normalization;
         }
         return sum;
+    }
+
+    /// A merge's contribution `value` of light vertex k at a camera path of pair `paired`,
+    /// in the band either subpath took. Where both took one, another pair's vertex counts
+    /// only in the camera path's band, and then count times (its band, drawn independently,
+    /// is that one with probability 1 / count); the pair's own vertices always share it. (The
+    /// weights do not see that such merges have count times fewer vertices: they still sum
+    /// to 1 over the path's strategies.)
+    [[nodiscard]] Rgb<T> merged_band(std::uint32_t k, const PathState& state, const LightPaths& light, std::size_t paired, const Rgb<T>& value) const noexcept
+    {
+        if constexpr (SceneT::has_dispersion) {
+            const int band = light.vertices[k].band, own = state.split();
+            if (band < 0 || own < 0) return in_band(value, std::max(band, own));
+            if (band != own) return Rgb<T>(T(0));
+            const bool pair = k >= light.ends[paired] && k < light.ends[paired + 1];
+            return in_band(pair ? value : value * T(bands_.size()), band);
+        } else {
+            (void)k, (void)state, (void)light, (void)paired;
+            return value;
+        }
     }
 
     const SceneT* scene_;
@@ -14539,6 +14630,7 @@ private:
     BoundingSphere<T> sphere_{};
     std::vector<T> light_probability_; ///< per light (the area lights last), its share of the light paths
     std::vector<T> light_cdf_;
+    SpectralBands<T> bands_; ///< the wavelength bands a dispersive interface splits white light into
 };
 
 } // namespace prism

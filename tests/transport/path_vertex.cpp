@@ -110,3 +110,30 @@ TEST_CASE("a path vertex on a mirror or clean glass has no non-delta lobe: not c
     const double f = 0.04;
     CHECK(double(reflected) / n == doctest::Approx(f).epsilon(0.25));
 }
+
+TEST_CASE("a path vertex on dispersive glass refracts at its wavelength's index (Snell's law with Sellmeier's n), and white light at n_d")
+{
+    const Vec3<double> d = normalize(Vec3<double>{0.6, 0, -1});
+    const Crossing<double> c = crossing_for(d);
+    const DispersiveDielectric<double> flint{.glass = glass::f2<double>};
+    for (const double nm : {0.0, 420.0, 650.0}) {
+        CAPTURE(nm);
+        const double n = nm > 0 ? glass::f2<double>.index(nm) : glass::f2<double>.index(fraunhofer::d);
+        const Vec3<double> want = *refract(d, c.facing_normal(), n);
+        const SurfaceVertex<DispersiveDielectric<double>> vertex(flint, c, d, Transport::radiance, 1.0, nm);
+        Random rng(3, 3);
+        int refracted = 0;
+        for (int i = 0; i < 200; ++i) {
+            const auto s = vertex.sample(rng);
+            REQUIRE(s);
+            if (s->direction.z > 0) continue;
+            ++refracted;
+            CHECK(s->direction.x == doctest::Approx(want.x).epsilon(1e-12));
+            CHECK(s->direction.z == doctest::Approx(want.z).epsilon(1e-12));
+        }
+        CHECK(refracted > 150);
+    }
+    // The two wavelengths bend apart: blue more than red.
+    const auto bent = [&](double nm) { return refract(d, c.facing_normal(), glass::f2<double>.index(nm))->x; };
+    CHECK(bent(420) < bent(650) - 0.005);
+}

@@ -70,7 +70,9 @@ struct VertexSample {
 
 /// A path's vertex on `material` at `hit`, arriving along the unit direction d, carrying
 /// `mode`; `outside_index` is the index of refraction on a transmissive material's outer
-/// side (1 in the scene's air: medium/nesting.hpp).
+/// side (1 in the scene's air: medium/nesting.hpp); `wavelength_nm` the light's
+/// wavelength where a dispersive interface has split it (0: white), at which a
+/// dispersive material refracts.
 template <Material M>
 class SurfaceVertex {
 public:
@@ -82,8 +84,8 @@ public:
     static_assert(!(has_diffuse<M> && has_glossy<M>), "a material is a diffuse lobe or a glossy one, not both");
 
     /// The vertex; the material and crossing must outlive it.
-    SurfaceVertex(const M& material, const Crossing<T>& hit, const Vec3<T>& d, Transport mode, T outside_index = T(1)) noexcept
-        : material_(&material), hit_(&hit), d_(d), mode_(mode), outside_index_(outside_index)
+    SurfaceVertex(const M& material, const Crossing<T>& hit, const Vec3<T>& d, Transport mode, T outside_index = T(1), T wavelength_nm = T(0)) noexcept
+        : material_(&material), hit_(&hit), d_(d), mode_(mode), outside_index_(outside_index), wavelength_(wavelength_nm)
     {
     }
 
@@ -152,7 +154,7 @@ public:
             return VertexSample<T>{s->wi, s->weight * correction(s->wi), s->pdf, reverse_pdf(s->wi), false};
         } else if constexpr (reflects<M> || transmits<M>) {
             Rgb<T> weight{T(1)};
-            const auto next = scatter_photon<Transport::radiance>(*material_, *hit_, d_, weight, rng, T(0), outside_index_);
+            const auto next = scatter_photon<Transport::radiance>(*material_, *hit_, d_, weight, rng, wavelength_, outside_index_);
             if (!next) return std::nullopt;
             return VertexSample<T>{next->direction, weight, T(1), T(1), true};
         } else {
@@ -175,8 +177,8 @@ private:
         requires(has_diffuse<M> && (reflects<M> || transmits<M>))
     {
         Shares s;
-        s.normal = delta_normal(*material_, arriving, *hit_, T(0), outside_index_);
-        s.split = delta_split(*material_, arriving, s.normal, hit_->entering, hit_->point, T(0), outside_index_);
+        s.normal = delta_normal(*material_, arriving, *hit_, wavelength_, outside_index_);
+        s.split = delta_split(*material_, arriving, s.normal, hit_->entering, hit_->point, wavelength_, outside_index_);
         s.diffuse = max_component(diffuse_response(*material_, *hit_).photon_reflectance());
         s.reflected = max_component(s.split.kr);
         s.transmitted = s.split.refracted ? max_component(s.split.kt) : T(0);
@@ -221,6 +223,7 @@ private:
     Vec3<T> d_;
     Transport mode_;
     T outside_index_;
+    T wavelength_;
 };
 
 /// A path's vertex in a medium that scatters by `phase`, arriving along the unit
