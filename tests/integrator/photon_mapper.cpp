@@ -143,6 +143,13 @@ TEST_CASE("the photon mapper refuses what Whitted refuses, and estimators out of
     c.caustic.radius = -0.1f, refused(c, "caustic radius must be in [1.1e-19, 1.8e19]"), c = {};
     c.volume_radius = -0.05f, refused(c, "volume_radius must be in [1.1e-19, 1.8e19]"), c = {};
     c.indirect_volume_radius = -0.5f, refused(c, "indirect_volume_radius must be 0 or in [1.1e-19, 1.8e19]"), c = {};
+    c.max_length = 0, refused(c, "max_length must be in [1, 16]"), c = {};
+    c.max_length = 17, refused(c, "max_length must be in [1, 16] (a photon records up to 15 segments) or unlimited"), c = {};
+    // The irradiance cache holds paths of every length.
+    c.tracing.global_photons = c.tracing.caustic_photons = 100;
+    c.max_length = 4;
+    Mapper limited(scene, c);
+    CHECK_THROWS_WITH_AS(limited.cache_irradiance({}, {.width = 8, .height = 8}), doctest::Contains("max_length must be unlimited, got 4"), std::invalid_argument);
 }
 
 TEST_CASE("the photon mapper's furnace: 1.0 within 0.5 %, read directly and by final gathering, with one light or four")
@@ -690,4 +697,64 @@ TEST_CASE("the photon mapper's single scattering: a point light's airlight integ
     CHECK(by_mapper > 0);
     CHECK(by_mapper == doctest::Approx(by_tracer).epsilon(test::resolved(0.025)));
     CHECK(error < 0.002);
+}
+
+TEST_CASE("max_length: in the furnace the photon mappers read the light of paths of at most n segments, 1 - 0.5^(n - 1), directly, by final gathering and progressively")
+{
+    // The light at the centre gives the wall 0.5 by direct light (2 segments), and each
+    // bounce half the last: paths of at most n segments read 1 - 0.5^(n - 1). A camera
+    // vertex t segments from the camera joins photons of at most n - t segments (Photon's
+    // segments), its shadow rays count where t + 1 <= n, and a gather walk's vertices are
+    // held to n segments in all.
+    const auto scene = test::furnace_scene(false);
+    using Mapper = PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
+    for (const int n : {1, 2, 3, 4, 6})
+        for (const int gather : {0, 32}) {
+            CAPTURE(n);
+            CAPTURE(gather);
+            const Mapper mapper(scene, {.tracing = {.global_photons = std::size_t(test::samples(100000)), .caustic_photons = 0, .max_bounces = 64, .seed = 2},
+                                        .global = {.radius = 0.1f, .excluded = Photon::direct | Photon::caustic},
+                                        .gather_rays = gather,
+                                        .max_length = n});
+            const double mean = test::furnace_mean(false, [&](const Ray<float>& ray, Random& rng) { return mapper.radiance(ray, rng); },
+                                                   int(test::samples(gather > 0 ? 1000 : 4000)), true, 3);
+            CHECK(mean == doctest::Approx(1 - std::pow(0.5, n - 1)).epsilon(test::resolved(0.01)).scale(0.1));
+        }
+    // Progressive photon mapping's passes, each a photon mapper held to n.
+    using S = std::remove_cvref_t<decltype(scene)>;
+    ProgressiveConfig<S> progressive;
+    progressive.pass.tracing = {.global_photons = std::size_t(test::samples(20000)), .caustic_photons = 0, .max_bounces = 64, .seed = 2};
+    progressive.pass.global.radius = 0.2f;
+    progressive.pass.max_length = 3;
+    const Camera<float> camera{.position = {0.01f, 0.02f, 0.03f}, .look_at = {0.01f, 0.02f, -1}, .fov = 60};
+    const Film film = render(camera, ProgressivePhotonMapper<S>(scene, progressive), {.width = 16, .height = 16, .spp = 8, .progress = false});
+    double sum = 0;
+    for (const Rgb<float>& p : film.pixels()) sum += double(p.x);
+    CHECK(sum / 256 == doctest::Approx(0.75).epsilon(test::resolved(0.01)));
+}
+
+TEST_CASE("max_length: a glass ball's caustic on the floor (L S S D E, 4 segments) is the caustic map's at max_length 4 and none of it at 3")
+{
+    const auto scene = Scene{Lights{PointLight<float>{.position = {0, 6, 0}, .intensity = Rgb<float>(30)}},
+                             Object{Plane<float>({0, 1, 0}, 0), Diffuse<float>{.albedo = {.color = Rgb<float>(0.5f)}, .kd = 1, .ka = 0}},
+                             Object{Sphere<float>({0, 2.5f, 0}, 1), Dielectric<float>{.ior = 1.5f}}};
+    using Mapper = PhotonMapper<std::remove_cvref_t<decltype(scene)>>;
+    const auto caustic_at = [&](int n) {
+        const Mapper mapper(scene, {.tracing = {.global_photons = 0, .caustic_photons = 100000, .seed = 1}, .caustic = {.radius = 0.05f}, .gather_rays = 0, .max_length = n});
+        for (const Photon& p : mapper.maps().caustic.photons()) {
+            CAPTURE(p.segments());
+            REQUIRE((p.segments() >= 2 && p.segments() <= n - 1)); // (2: reflected off the ball)
+        }
+        Random rng(3u, 3u);
+        return mapper.radiance_parts({{0, 0.4f, 0}, {0, -1, 0}}, rng).caustic.x;
+    };
+    const Mapper unlimited(scene, {.tracing = {.global_photons = 0, .caustic_photons = 100000, .seed = 1}, .caustic = {.radius = 0.05f}, .gather_rays = 0});
+    Random rng(3u, 3u);
+    const float all = unlimited.radiance_parts({{0, 0.4f, 0}, {0, -1, 0}}, rng).caustic.x;
+    CHECK(all > 0.1f);
+    CHECK(caustic_at(3) == 0.0f);
+    // Light through the ball that reflects inside it first has 5 segments and more: a
+    // few per cent of the caustic.
+    CHECK(caustic_at(4) == doctest::Approx(all).epsilon(0.1));
+    CHECK(caustic_at(4) < all);
 }

@@ -56,3 +56,14 @@ TEST_CASE("photons of one power sum to it: a constant power rounds with an error
     CHECK(Photon({0, 0, 0}, Rgb<float>(1e-45f), {0, 1, 0}, {0, 1, 0}, 0).power().x < 1e-38f); // a denormal: nothing, not garbage
     CHECK(Photon({0, 0, 0}, Rgb<float>(std::nanf("")), {0, 1, 0}, {0, 1, 0}, 0).power() == Rgb<float>(0.0f));
 }
+
+TEST_CASE("a photon records the segments of its path from the light beside its flags, up to 15")
+{
+    for (const int segments : {0, 1, 7, 15, 16, 1000}) {
+        CAPTURE(segments);
+        const Photon p({0, 0, 0}, Rgb<float>(1), {0, 0, 1}, {0, 0, 1}, std::uint8_t(Photon::caustic | Photon::volume | Photon::segments_bits(segments)));
+        CHECK(p.segments() == std::min(segments, Photon::max_segments));
+        CHECK((p.flags & 15) == (Photon::caustic | Photon::volume)); // the flags untouched
+    }
+    CHECK(Photon::segments_bits(-3) == 0);
+}

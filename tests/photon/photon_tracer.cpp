@@ -8,6 +8,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -126,6 +127,18 @@ TEST_CASE("energy: in a closed diffuse room the stored power sums to Phi (1 + rh
     int outward = 0;
     for (const Photon& p : maps.global.photons()) outward += prism::length(Vec3<float>(p.position)) < 0.99f;
     CHECK(outward == 0);
+    // Each photon records its segments from the light: the direct ones 1, and each bounce
+    // one more, so the power stored at k segments is Phi rho^(k - 1) (to the photons' noise).
+    std::array<double, 18> by_segments{};
+    for (const Photon& p : maps.global.photons()) {
+        CHECK(p.segments() >= 1);
+        CHECK(((p.flags & Photon::direct) != 0) == (p.segments() == 1));
+        by_segments[std::size_t(p.segments())] += p.power().x;
+    }
+    for (int k = 1; k <= 4; ++k) {
+        CAPTURE(k);
+        CHECK(by_segments[std::size_t(k)] == doctest::Approx(phi * std::pow(rho, k - 1)).epsilon(0.03));
+    }
 }
 
 TEST_CASE("a glass ball's caustic map: photons focused into a peak below it, symmetric about the axis")

@@ -86,6 +86,14 @@ public:
         /// photons do not say which light they block.
         std::size_t visibility_k = 0;
         int max_depth = 10; ///< surfaces a camera path may meet
+        /// Segments a path may have from the camera to the light, as the path tracer counts
+        /// them (docs/guide.md): a camera vertex t segments from the camera reads the photons
+        /// of at most max_length - t segments from the light, its shadow rays count where
+        /// t + 1 <= max_length, and the photons are traced to max_length - 1 segments. At
+        /// most Photon::max_segments + 1 (16: a photon records up to 15) unless unlimited;
+        /// the final gather then reads the global map by its `global` estimate, not the
+        /// precomputed irradiance, and the irradiance cache is refused.
+        int max_length = std::numeric_limits<int>::max();
         T min_weight = T(1e-3); ///< a branch whose weight on the pixel falls below this ends (Hall and Greenberg 1983)
         /// Wavelength bands white camera rays split into at a dispersive interface (as
         /// Whitted's); photons take their own wavelengths (PhotonTracerConfig).
@@ -140,6 +148,9 @@ private:
         if (!(cache.min_pixels > 0.0f && cache.min_pixels <= cache.max_pixels && is_finite(cache.max_pixels)))
             detail::throw_invalid("PhotonMapper irradiance_cache needs 0 < min_pixels <= max_pixels, finite, got ", cache.min_pixels, " and ", cache.max_pixels);
         if (config.max_depth < 0) detail::throw_invalid("PhotonMapper max_depth must be >= 0, got ", config.max_depth);
+        if (config.max_length < 1 || (config.max_length != std::numeric_limits<int>::max() && config.max_length > Photon::max_segments + 1))
+            detail::throw_invalid("PhotonMapper max_length must be in [1, ", Photon::max_segments + 1,
+                                  "] (a photon records up to 15 segments) or unlimited (std::numeric_limits<int>::max()), got ", config.max_length);
         if (!(config.volume_radius > 0.0f && config.volume_radius * config.volume_radius >= std::numeric_limits<float>::min() &&
               is_finite(config.volume_radius * config.volume_radius)))
             detail::throw_invalid("PhotonMapper volume_radius must be in [1.1e-19, 1.8e19] (its square a finite, normal float), got ", config.volume_radius);
@@ -158,12 +169,22 @@ private:
             detail::throw_invalid("PhotonMapper visibility_k needs a scene with exactly one light, got lights: ", SceneT::light_count);
         gather_cells_m_ = std::max(1, int(std::lround(std::sqrt(double(config.gather_rays) / pi<double>))));
         gather_cells_n_ = std::max(1, config.gather_rays / gather_cells_m_);
-        maps_ = maps ? std::move(*maps) : trace_photons(scene, config.tracing, air_);
-        if (config.gather_rays > 0 && !maps_.global.has_precomputed_irradiance())
+        maps_ = maps ? std::move(*maps) : trace_photons(scene, tracing_for(config), air_);
+        if (config.gather_rays > 0 && !limited() && !maps_.global.has_precomputed_irradiance())
             maps_.global.template precompute_irradiance<precomputed_k>(precomputed_stride, config.tracing.threads);
     }
 
 public:
+    /// The photon tracing `config` asks for: its `tracing`, held to max_length - 1
+    /// segments where max_length is finite (a camera path reaches a photon by one
+    /// segment at least).
+    [[nodiscard]] static PhotonTracerConfig tracing_for(const Config& config) noexcept
+    {
+        PhotonTracerConfig tracing = config.tracing;
+        if (config.max_length != std::numeric_limits<int>::max()) tracing.max_length = std::min(tracing.max_length, std::max(config.max_length - 1, 1));
+        return tracing;
+    }
+
     /// The final gather reads irradiance precomputed at every precomputed_stride-th global
     /// photon from its precomputed_k nearest (PhotonMap::precompute_irradiance), which the
     /// constructor works out unless the maps it is given have it already.
@@ -186,6 +207,7 @@ public:
     void cache_irradiance(const Camera<T>& camera, const RenderConfig& render)
     {
         if (config_.gather_rays == 0) detail::throw_invalid("PhotonMapper cache_irradiance needs gather_rays > 0 (the cache sits in front of the final gather)");
+        if (limited()) detail::throw_invalid("PhotonMapper cache_irradiance: a record holds the light of paths of every length, max_length must be unlimited, got ", config_.max_length);
         const CameraRays<T> rays = camera.rays(render.width, render.height);
         const auto& settings = config_.irradiance_cache;
         cache_ = IrradianceCache<T>(T(settings.accuracy), settings.gradients);
@@ -218,7 +240,7 @@ public:
                 Random rng(render.seed ^ 0x1cac4eULL, c.stream);
                 const int m = std::max(1, int(std::lround(std::sqrt(T(settings.rays) / pi<T>))));
                 const int cells_n = std::max(1, settings.rays / m);
-                IrradianceRecord<T> r{c.hit.point, c.n, gather<true>(c.hit, c.n, rng, scene_->media_at(c.hit.point), m, cells_n), T(0)};
+                IrradianceRecord<T> r{c.hit.point, c.n, gather<true>(c.hit, c.n, rng, scene_->media_at(c.hit.point), m, cells_n, 1), T(0)};
                 if (!translation_holds(c.hit.point)) r.gather.translational = {};
                 T radius = r.gather.nearest;
                 if (settings.gradients)
@@ -238,7 +260,7 @@ public:
 
     /// The radiance along a camera ray by where its light came from last: the lights by
     /// shadow rays (and the background), the caustic map, the indirect estimate.
-    [[nodiscard]] LightParts<T> radiance_parts(const Ray<T>& ray, Random& rng) const noexcept { return trace(ray, 0, Rgb<T>(T(1)), rng, T(0), scene_->media_at(ray.origin)); }
+    [[nodiscard]] LightParts<T> radiance_parts(const Ray<T>& ray, Random& rng) const noexcept { return trace(ray, 0, 0, Rgb<T>(T(1)), rng, T(0), scene_->media_at(ray.origin)); }
 
     /// The scene and the air its camera rays start in (render_layers' surface layers).
     [[nodiscard]] const SceneT& scene() const noexcept { return *scene_; }
@@ -274,10 +296,27 @@ private:
             detail::throw_invalid(name, " filter must be box, cone or gaussian, got the value ", static_cast<int>(e.filter));
     }
 
-    /// Radiance along the ray for light of one wavelength (nanometres), or of all (0), in
-    /// the transmissive objects `media` (medium/nesting.hpp).
-    [[nodiscard]] LightParts<T> trace(const Ray<T>& ray, int depth, const Rgb<T>& weight, Random& rng, T wavelength, const MediumStack& media) const noexcept
+    /// Whether max_length limits the paths.
+    [[nodiscard]] bool limited() const noexcept { return config_.max_length != std::numeric_limits<int>::max(); }
+
+    /// `estimator` reading only the photons a camera vertex `length` segments from the
+    /// camera may join: at most max_length - length segments from the light.
+    [[nodiscard]] Estimator joined_at(Estimator estimator, int length) const noexcept
     {
+        if (limited()) estimator.max_segments = config_.max_length - length;
+        return estimator;
+    }
+
+    /// Whether a photon of `segments` segments may join a camera vertex `length` segments
+    /// from the camera.
+    [[nodiscard]] bool joins(int segments, int length) const noexcept { return !limited() || segments <= config_.max_length - length; }
+
+    /// Radiance along the ray for light of one wavelength (nanometres), or of all (0), in
+    /// the transmissive objects `media` (medium/nesting.hpp); `length` the segments the
+    /// path took from the camera to the ray's origin, `depth` the surfaces it met.
+    [[nodiscard]] LightParts<T> trace(const Ray<T>& ray, int depth, int length, const Rgb<T>& weight, Random& rng, T wavelength, const MediumStack& media) const noexcept
+    {
+        if (length >= config_.max_length) return {};
         Ray<T> segment = ray;
         if constexpr (has_media) {
             // Through a medium that scatters: what lies beyond is seen through its
@@ -295,6 +334,7 @@ private:
                 const float r2_caustic = r_caustic * r_caustic, r2_other = r_other * r_other;
                 maps_.volume.near_beam(Vec3<float>(piece.origin), df, float(t0), float(t1), std::max(r_caustic, r_other), [&](const Photon& photon, float t, float d2) {
                     if (config_.single_scattering && (photon.flags & Photon::direct) != 0) return; // single_scattering's
+                    if (!joins(photon.segments(), length + 1)) return;
                     const bool is_caustic = (photon.flags & Photon::caustic) != 0;
                     if (d2 > (is_caustic ? r2_caustic : r2_other)) return;
                     const Rgb<float> light = Rgb<float>(transmittance_along(medium, piece, t0, T(t))) * float(medium.phase.value(T(dot(photon.toward_source(), df)))) * photon.power();
@@ -304,19 +344,19 @@ private:
                 other /= pi<float> * r_other * r_other;
                 scattered.caustic += seen * Rgb<T>(caustic);
                 scattered.indirect += seen * Rgb<T>(other);
-                if (config_.single_scattering) scattered.direct += seen * single_scattering(medium, piece, t0, t1, rng);
+                if (config_.single_scattering && length + 2 <= config_.max_length) scattered.direct += seen * single_scattering(medium, piece, t0, t1, rng);
                 seen *= transmittance_along(medium, piece, t0, t1);
                 return true;
             });
             LightParts<T> parts = !hit ? LightParts<T>{.direct = scene_->escaped(segment.direction)}
-                                       : scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
+                                       : scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, length + 1, weight, rng, wavelength, media); });
             parts *= seen;
             parts += scattered;
             return parts;
         } else {
             const auto hit = media.empty() ? first_hit_in_air(*scene_, air_, ray, segment) : first_hit_in_air(*scene_, StraightAir{}, ray, segment);
             if (!hit) return LightParts<T>{.direct = scene_->escaped(segment.direction)};
-            return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, weight, rng, wavelength, media); });
+            return scene_->visit_material(*hit, [&](const auto& material) { return shade(material, segment, *hit, depth, length + 1, weight, rng, wavelength, media); });
         }
     }
 
@@ -371,12 +411,14 @@ private:
     /// medium's sigma_s over the draw's density taken) times the in-scattered radiance the
     /// volume photons within volume_radius give (Jensen and Christensen 1998), their power
     /// weighed by the phase function toward the walk, over the sphere's volume and the
-    /// scattering coefficient their stored power carries.
+    /// scattering coefficient their stored power carries (those the path may join: the walk
+    /// began at a camera vertex `length` segments from the camera).
     template <class Md>
-    [[nodiscard]] Rgb<T> volume_radiance(const Md& medium, const WalkMediumVertex<T>& at) const noexcept
+    [[nodiscard]] Rgb<T> volume_radiance(const Md& medium, const WalkMediumVertex<T>& at, int length) const noexcept
     {
         const Vec3<float> toward_viewer(-at.direction);
         const Rgb<float> in = maps_.volume.in_sphere(Vec3<float>(at.point), config_.volume_radius, [&](const Photon& photon) {
+            if (!joins(photon.segments(), length + at.length)) return Rgb<float>(0.0f);
             return float(medium.phase.value(T(dot(-photon.toward_source(), toward_viewer)))) * photon.power();
         });
         const Rgb<T> sigma_s = medium.scattering_at(at.point);
@@ -387,7 +429,7 @@ private:
     }
 
     template <class M>
-    [[nodiscard]] LightParts<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, const Rgb<T>& weight, Random& rng,
+    [[nodiscard]] LightParts<T> shade(const M& material, const Ray<T>& ray, const Hit<T>& h, int depth, int length, const Rgb<T>& weight, Random& rng,
                                       T wavelength, const MediumStack& media) const noexcept
     {
         const Crossing<T>& hit = h.crossing;
@@ -398,15 +440,16 @@ private:
         if constexpr (has_diffuse<M>) {
             const Vec3<float> p(hit.point), nf(n);
             const Rgb<T> brdf = diffuse_response(material, hit).brdf();
-            radiance.direct += brdf * direct(hit, rng);
-            radiance.caustic = brdf * Rgb<T>(maps_.caustic.irradiance(p, nf, config_.caustic));
+            if (length + 1 <= config_.max_length) radiance.direct += brdf * direct(hit, rng);
+            radiance.caustic = brdf * Rgb<T>(maps_.caustic.irradiance(p, nf, joined_at(config_.caustic, length)));
             if (config_.gather_rays > 0) {
                 // The final gather (and the cache of its results) is over the shading normal's hemisphere.
                 const Vec3<T> n_shading = hit.facing_shading();
                 const std::optional<Rgb<T>> cached = media.empty() ? cache_.irradiance(hit.point, n_shading) : std::nullopt;
-                radiance.indirect = brdf * (cached ? *cached : gather(hit, n_shading, rng, media, gather_cells_m_, gather_cells_n_).irradiance);
+                if (cached) radiance.indirect = brdf * *cached;
+                else if (length + 2 <= config_.max_length) radiance.indirect = brdf * gather(hit, n_shading, rng, media, gather_cells_m_, gather_cells_n_, length).irradiance;
             }
-            else radiance.indirect = brdf * Rgb<T>(maps_.global.irradiance(p, nf, config_.global));
+            else radiance.indirect = brdf * Rgb<T>(maps_.global.irradiance(p, nf, joined_at(config_.global, length)));
         }
         if constexpr (has_glossy<M> && transmits<M>) {
             // Frosted glass: one draw from its lobe per camera sample, followed with its
@@ -414,11 +457,12 @@ private:
             // there), and the delta lights, which no draw finds, by shadow rays from both sides.
             const Interface face = nested_interface(media, {h.slot, h.index, nesting_priority(material)}, hit.entering);
             if (!face.real) {
-                radiance = trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, weight, rng, wavelength, face.beyond);
+                radiance = trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, length - 1, weight, rng, wavelength, face.beyond);
             } else {
                 const auto lobe = glossy_at(material, hit, normalize(d), glossy_eta(material, hit, index_of(*scene_, outside_of(media, face, hit.entering), wavelength)));
                 scene_->for_each_light([&]<class L>(const L& light) {
                     if constexpr (is_delta_light<L>) {
+                        if (length + 1 > config_.max_length) return;
                         for_each_sample_arriving<ShadowsThroughGlass::blocked, Sides::both>(*scene_, light, hit, LightSampling{}, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
                             radiance.direct += lobe.f(s.wi, Transport::radiance) * v * s.irradiance * cos;
                         });
@@ -428,7 +472,7 @@ private:
                     const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
                     if (s && max_component(weight * s->weight) > config_.min_weight) {
                         const bool refracted = dot(s->wi, hit.facing_normal()) < T(0);
-                        radiance += s->weight * trace(spawn_ray(hit.point, hit.error, hit.normal, s->wi), depth + 1, weight * s->weight, rng, wavelength,
+                        radiance += s->weight * trace(spawn_ray(hit.point, hit.error, hit.normal, s->wi), depth + 1, length, weight * s->weight, rng, wavelength,
                                                       refracted ? face.beyond : media);
                     }
                 }
@@ -438,16 +482,16 @@ private:
             if (!lobe.smooth()) {
                 // As for a diffuse lobe, each part weighed by the lobe toward where its light arrives from.
                 const Vec3<float> p(hit.point), nf(n);
-                radiance.direct += direct(hit, rng, [&](const Vec3<T>& wi) { return lobe.f(wi, Transport::radiance); });
-                radiance.caustic = Rgb<T>(maps_.caustic.radiance(p, nf, config_.caustic, reflected_by(lobe)));
-                radiance.indirect = config_.gather_rays > 0 ? gather_glossy(lobe, hit, rng, media)
-                                                            : Rgb<T>(maps_.global.radiance(p, nf, config_.global, reflected_by(lobe)));
+                if (length + 1 <= config_.max_length) radiance.direct += direct(hit, rng, [&](const Vec3<T>& wi) { return lobe.f(wi, Transport::radiance); });
+                radiance.caustic = Rgb<T>(maps_.caustic.radiance(p, nf, joined_at(config_.caustic, length), reflected_by(lobe)));
+                if (config_.gather_rays == 0) radiance.indirect = Rgb<T>(maps_.global.radiance(p, nf, joined_at(config_.global, length), reflected_by(lobe)));
+                else if (length + 2 <= config_.max_length) radiance.indirect = gather_glossy(lobe, hit, rng, media, length);
             }
             // The lobe's delta part (a mirror, a smooth coat's reflection), followed as a mirror is.
             if (depth < config_.max_depth) {
                 const std::optional<LobeSample<T>> s = lobe.delta_part();
                 if (s && max_component(weight * s->weight) > config_.min_weight)
-                    radiance += s->weight * trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, s->wi), ray, hit.t), depth + 1, weight * s->weight, rng,
+                    radiance += s->weight * trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, s->wi), ray, hit.t), depth + 1, length, weight * s->weight, rng,
                                                   wavelength, media);
             }
         }
@@ -458,7 +502,7 @@ private:
                     for_each_delta_ray(material, d, hit, wavelength, bands_, outside_index,
                                        [&](const Vec3<T>& direction, const Rgb<T>& k, T lambda, bool transmitted) {
                                            if (max_component(weight * k) > config_.min_weight)
-                                               radiance += k * trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, direction), ray, hit.t), depth + 1, weight * k,
+                                               radiance += k * trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, direction), ray, hit.t), depth + 1, length, weight * k,
                                                                      rng, lambda, transmitted ? beyond : media);
                                        });
                 };
@@ -467,7 +511,7 @@ private:
                     if (face.real)
                         follow(face.beyond, outside_of(media, face, hit.entering));
                     else
-                        radiance = trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, weight, rng, wavelength, face.beyond);
+                        radiance = trace(scene_->carry_cone(spawn_ray(hit.point, hit.error, hit.normal, d), ray, hit.t), depth + 1, length - 1, weight, rng, wavelength, face.beyond);
                 } else {
                     follow(media, nullptr);
                 }
@@ -562,13 +606,14 @@ private:
     /// they scatter in the fog about it); from a surface in the air, they follow the air's
     /// curve.
     template <bool Gradients = false>
-    [[nodiscard]] HemisphereGather<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Random& rng, const MediumStack& media, int m, int cells_n) const
+    [[nodiscard]] HemisphereGather<T> gather(const Crossing<T>& hit, const Vec3<T>& n, Random& rng, const MediumStack& media, int m, int cells_n, int length) const
     {
+        const WalkLimits limits = gather_limits(length);
         return gather_hemisphere<Gradients, T>(n, m, cells_n, rng, [&](const Vec3<T>& direction) {
             std::pair<Rgb<T>, T> found{Rgb<T>(T(0)), infinity<T>};
             const auto at_diffuse = [&]<class M>(const M& material, const WalkVertex<T>& at) {
                 if constexpr (has_glossy<M> && transmits<M>) return Lobes::all; // frosted glass: through it by its lobe
-                found.first += global_radiance(material, at);
+                found.first += global_radiance(material, at, length);
                 found.second = std::min(found.second, at.travelled);
                 // The diffuse lobe's light is counted; a delta lobe beside it (a coat) still
                 // mirrors what lies beyond.
@@ -578,27 +623,40 @@ private:
             if (!hit.shades_flat() && !(dot(direction, hit.facing_normal()) > T(0))) return found;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, direction);
             const auto at_medium = [&](const auto& medium, const WalkMediumVertex<T>& at) {
-                found.first += volume_radiance(medium, at);
+                found.first += volume_radiance(medium, at, length);
                 found.second = std::min(found.second, at.travelled);
                 return false;
             };
-            if (media.empty()) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, WalkHooks{.on_surface = at_diffuse, .on_medium = at_medium});
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, WalkLimits{.max_bounces = config_.max_depth}, WalkHooks{.on_surface = at_diffuse, .on_medium = at_medium}, media);
+            if (media.empty()) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, limits, WalkHooks{.on_surface = at_diffuse, .on_medium = at_medium});
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, Rgb<T>(T(1)), rng, limits, WalkHooks{.on_surface = at_diffuse, .on_medium = at_medium}, media);
             return found;
         });
     }
 
+    /// A gather walk's limits from a camera vertex `length` segments from the camera: its
+    /// surfaces, and its vertices so that each is joined to a photon within max_length.
+    [[nodiscard]] WalkLimits gather_limits(int length) const noexcept
+    {
+        WalkLimits limits{.max_bounces = config_.max_depth};
+        if (limited()) limits.max_length = config_.max_length - length - 1;
+        return limits;
+    }
+
     /// What a walk carries back from the global map at a vertex where it ends: its
-    /// power times a diffuse lobe's BRDF times the precomputed irradiance. A glossy lobe
+    /// power times a diffuse lobe's BRDF times the precomputed irradiance (with
+    /// max_length, the same estimate, precomputed_k nearest, over the photons the path may
+    /// join: the walk began at a camera vertex `length` segments from the camera). A glossy lobe
     /// there, a bounce away from the camera, is read as a diffuse one of its albedo
     /// toward the walk (GlossyAt::albedo): a glossy lobe's own estimate weighs every
     /// photon within the radius by the BSDF, which made a Cornell box's final gather 5
     /// times slower, for a surface the gather blurs anyway.
     template <class M>
-    [[nodiscard]] Rgb<T> global_radiance(const M& material, const WalkVertex<T>& at) const noexcept
+    [[nodiscard]] Rgb<T> global_radiance(const M& material, const WalkVertex<T>& at, int length) const noexcept
     {
         const Crossing<T>& c = at.crossing();
-        const Rgb<T> e(maps_.global.precomputed_irradiance(Vec3<float>(c.point), Vec3<float>(c.facing_normal())));
+        const Vec3<float> p(c.point), n(c.facing_normal());
+        const Rgb<T> e(limited() ? maps_.global.irradiance(p, n, joined_at({.k = precomputed_k, .radius = infinity<float>}, length + at.length))
+                                 : maps_.global.precomputed_irradiance(p, n));
         if constexpr (has_glossy<M>) return at.power * (glossy_at(material, c, at.direction).albedo() / pi<T>) * e;
         else return at.power * diffuse_response(material, c).brdf() * e;
     }
@@ -615,24 +673,25 @@ private:
     /// global map gives its radiance (global_radiance). Draws of the lobe's delta part
     /// count nothing here: the caller follows that part.
     template <class Lobe>
-    [[nodiscard]] Rgb<T> gather_glossy(const GlossyAt<Lobe>& lobe, const Crossing<T>& hit, Random& rng, const MediumStack& media) const
+    [[nodiscard]] Rgb<T> gather_glossy(const GlossyAt<Lobe>& lobe, const Crossing<T>& hit, Random& rng, const MediumStack& media, int length) const
     {
         Rgb<T> sum{T(0)};
+        const WalkLimits limits = gather_limits(length);
         const auto at_vertex = [&]<class M>(const M& material, const WalkVertex<T>& at) {
             if constexpr (has_glossy<M> && transmits<M>) return Lobes::all; // frosted glass: through it by its lobe
-            sum += global_radiance(material, at);
+            sum += global_radiance(material, at, length);
             return reflects<M> || transmits<M> ? Lobes::delta : Lobes::none;
         };
         const auto at_medium = [&](const auto& medium, const WalkMediumVertex<T>& at) {
-            sum += volume_radiance(medium, at);
+            sum += volume_radiance(medium, at, length);
             return false;
         };
         for (int i = 0; i < config_.gather_rays; ++i) {
             const std::optional<LobeSample<T>> s = lobe.sample(rng, Transport::radiance);
             if (!s || s->delta) continue;
             const Ray<T> ray = spawn_ray(hit.point, hit.error, hit.normal, s->wi);
-            if (media.empty()) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, WalkHooks{.on_surface = at_vertex, .on_medium = at_medium});
-            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, WalkLimits{.max_bounces = config_.max_depth}, WalkHooks{.on_surface = at_vertex, .on_medium = at_medium}, media);
+            if (media.empty()) random_walk<Transport::radiance>(*scene_, air_, bands_, ray, s->weight, rng, limits, WalkHooks{.on_surface = at_vertex, .on_medium = at_medium});
+            else random_walk<Transport::radiance>(*scene_, StraightAir{}, bands_, ray, s->weight, rng, limits, WalkHooks{.on_surface = at_vertex, .on_medium = at_medium}, media);
         }
         return sum / T(config_.gather_rays);
     }

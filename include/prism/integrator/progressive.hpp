@@ -128,7 +128,7 @@ public:
             mapper_config.volume_radius = float(progressive_radius(config_.pass.volume_radius, config_.alpha, pass));
             if (config_.pass.indirect_volume_radius > 0.0f)
                 mapper_config.indirect_volume_radius = float(progressive_radius(config_.pass.indirect_volume_radius, config_.alpha, pass));
-            const PhotonMapper<SceneT, Air> mapper(*scene_, mapper_config, trace_photons(*scene_, config_.pass.tracing, air_, pass), air_);
+            const PhotonMapper<SceneT, Air> mapper(*scene_, mapper_config, trace_photons(*scene_, PhotonMapper<SceneT, Air>::tracing_for(config_.pass), air_, pass), air_);
             // Pass p takes the pixels' samples p s to (p + 1) s of one sequence (s = samples),
             // so that the camera's samples of any 2^m passes are stratified over the pixel.
             // Under zsobol, each pixel's own Sobol sequence: the image's layout would be that

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <cstddef>
 #include <cstdint>
 
@@ -30,6 +31,9 @@ struct Estimator {
     /// 0.8 % low.)
     float surface_cos = 0.5f;
     std::uint8_t excluded = 0;  ///< leave out photons with any of these flags
+    /// Leave out photons whose path took more segments from the light than this
+    /// (Photon::segments; a path's depth limit: PhotonMapper::Config::max_length).
+    int max_segments = std::numeric_limits<int>::max();
 };
 
 namespace detail {

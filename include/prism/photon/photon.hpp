@@ -24,7 +24,8 @@ namespace prism {
 /// 2^-16 relative at worst, so a map of equal photons sums to its power to 10^-5; Ward's
 /// 8-bit RGBE read a furnace 0.25 % bright), the direction it came from and the normal
 /// of the surface it landed on (facing the side it arrived from), each as two 16-bit
-/// octahedral coordinates (Meyer et al. 2010), and its flags.
+/// octahedral coordinates (Meyer et al. 2010), its flags, and the segments its path took
+/// from the light (4 bits: up to 15).
 class Photon {
 public:
     /// What a stored photon is.
@@ -34,6 +35,17 @@ public:
         shadow = 4,  ///< a shadow photon: where the straight continuation of a direct photon's path met a further surface
         volume = 8,  ///< scattered in a medium, not on a surface (its normal is its direction)
     };
+
+    /// The most segments a photon's record holds (flags' high 4 bits); a longer path
+    /// records this many.
+    static constexpr int max_segments = 15;
+
+    /// The flag bits that record a path of `segments` segments from the light (at most
+    /// max_segments kept).
+    [[nodiscard]] static constexpr std::uint8_t segments_bits(int segments) noexcept
+    {
+        return std::uint8_t(std::clamp(segments, 0, max_segments) << 4);
+    }
 
     Vec3<float> position{}; ///< where the photon landed
 
@@ -71,6 +83,10 @@ public:
         const float d = dot(m, n);
         return d > 0.0f && d * d > min_cos * min_cos * length_squared(m) * length_squared(n);
     }
+
+    /// The segments of the photon's path from the light to where it landed (1: it came
+    /// straight from the light), at most max_segments; 0 where none was recorded.
+    [[nodiscard]] int segments() const noexcept { return flags >> 4; }
 
     /// Photons are equal when every stored bit is.
     friend bool operator==(const Photon&, const Photon&) = default;
@@ -121,7 +137,7 @@ private:
     std::uint8_t exponent_ = 0; ///< 0: no power; else the shared exponent + 128
 
 public:
-    std::uint8_t flags = 0; ///< Flags
+    std::uint8_t flags = 0; ///< Flags in the low 4 bits, the segments from the light in the high 4 (segments())
 };
 
 static_assert(sizeof(Photon) == 28);

@@ -102,7 +102,7 @@ public:
         const detail::FilterWeight weight(estimator.filter);
         const auto add = [&](std::uint32_t index, float d2, float r2) {
             const Photon& photon = photons_[index];
-            if ((photon.flags & estimator.excluded) != 0 || !photon.faces(n, estimator.surface_cos)) return;
+            if ((photon.flags & estimator.excluded) != 0 || photon.segments() > estimator.max_segments || !photon.faces(n, estimator.surface_cos)) return;
             const float height = dot(photon.position - p, n);
             if (height * height > estimator.max_height_ratio * estimator.max_height_ratio * r2) return;
             sum += value(photon) * weight(d2, r2);

@@ -243,7 +243,7 @@ private:
             // is a caustic, as through clear glass.
             if constexpr (has_glossy<M> && transmits<M>) return caustic_pass && !at.caustic_path() ? Lobes::none : Lobes::all;
             if (caustic_pass) {
-                if (!at.direct && at.caustic_path()) out.push_back(photon(c, power, at.direction, Photon::caustic));
+                if (!at.direct && at.caustic_path()) out.push_back(photon(c, power, at.direction, Photon::caustic | Photon::segments_bits(at.length)));
                 // What a diffuse lobe sends on is the global map's; a delta lobe (a coat
                 // over the diffuse one) may still send a caustic on, and so may a glossy
                 // lobe's delta part (a mix's mirror, a smooth coat), by the lobe's own draw.
@@ -252,7 +252,7 @@ private:
                 }
                 return (reflects<M> || transmits<M>) && at.caustic_path() ? Lobes::delta : Lobes::none;
             }
-            std::uint8_t flags = at.direct ? std::uint8_t(Photon::direct) : std::uint8_t(0);
+            std::uint8_t flags = std::uint8_t((at.direct ? Photon::direct : 0) | Photon::segments_bits(at.length));
             if (!at.direct && at.caustic_path()) flags |= Photon::caustic;
             out.push_back(photon(c, power, at.direction, flags));
             if (at.direct && config_.shadow_photons) store_shadow_photons(c, at.direction, out);
@@ -265,7 +265,7 @@ private:
             if (caustic != caustic_pass) return !caustic_pass;
             const Vec3<float> travelling(at.direction);
             out.push_back({Vec3<float>(at.point), Rgb<float>(power), -travelling, -travelling,
-                           std::uint8_t(Photon::volume | (caustic ? Photon::caustic : 0) | (at.direct ? Photon::direct : 0))});
+                           std::uint8_t(Photon::volume | (caustic ? Photon::caustic : 0) | (at.direct ? Photon::direct : 0) | Photon::segments_bits(at.length))});
             return !caustic_pass;
         });
     }
