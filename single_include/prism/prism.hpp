@@ -16097,78 +16097,12 @@ public:
         if (config_.max_length < 3) return; // no path it finds is that short
         const PassRange traced{passes.first * per_pass, passes.last * per_pass};
         const detail::PhotonTracer<SceneT, Air> tracer(*scene_, tracer_config(count, config.seed, config.threads), air_);
-        const T area = rays.pixel_area();
-        const double scale = double(config.spp);
-        // Where the camera sees point p, in the window (or nothing), and the unit direction
-        // from p to the eye: for a thin lens, a point of the lens drawn uniformly, seen as a
-        // pinhole there sees.
-        struct Seen {
-            typename CameraRays<T>::Projection at;
-            Vec3<T> to_camera;
-        };
-        const auto look_from = [&](const Vec3<T>& p, Random& rng) -> std::optional<Seen> {
-            Vec3<T> eye = rays.origin;
-            if (rays.thin_lens()) {
-                const auto [u, v] = rng.template uniform2<T>();
-                eye = rays.lens_point(u, v);
-            }
-            const auto seen = rays.thin_lens() ? rays.project(p, eye) : rays.project(p);
-            if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return std::nullopt;
-            return Seen{*seen, (eye - p) / seen->distance};
-        };
+        const View view{rays, window, rays.pixel_area(), double(config.spp)};
         // A block of paths splatted into `out`.
         const auto trace_block = [&](std::uint64_t first, std::uint64_t last, Accumulation& out) {
-            tracer.walk_aimed(first, last, count, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
-                // A first hit on a diffuse lobe is the path tracer's; where the material also
-                // has a delta lobe (a mirror beside it, or a glossy lobe's delta part: a
-                // mix's mirror, a smooth coat), the scattering here decides whose the path is.
-                if (at.direct) {
-                    if constexpr (has_glossy<M>) {
-                        if (glossy_at(material, at.crossing(), at.direction, glossy_eta(material, at.crossing(), at.outside_index)).delta_part()) return true;
-                    }
-                    return reflects<M> || (transmits<M> && !has_glossy<M>);
-                }
-                if (!at.first_specular) return false;
-                const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
-                const Crossing<T>& c = at.crossing();
-                const std::optional<Seen> look = look_from(c.point, at.rng);
-                if (!look) return go_on;
-                const auto& seen = look->at;
-                const Vec3<T>& to_camera = look->to_camera;
-                // The camera sees the other side: only through a glossy interface (frosted glass).
-                const T cos_x = transmits<M> && has_glossy<M> ? std::abs(dot(c.facing_normal(), to_camera)) : dot(c.facing_normal(), to_camera);
-                if (!(cos_x > T(0))) return go_on;
-                const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
-                                                                                               seen.distance) *
-                                 air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{c.point, to_camera}, seen.distance);
-                if (!(max_component(v) > T(0))) return go_on;
-                T importance = cos_x / (seen.distance * seen.distance * area * seen.cos * seen.cos * seen.cos);
-                // A shading normal weighs the light arriving here by its own cosine over the
-                // true one (scattering.hpp).
-                if (!c.shades_flat()) {
-                    importance *= shading_cosine(c.facing_shading(), c.facing_normal(), -at.direction) / -dot(at.direction, c.facing_normal());
-                    if (!(importance < infinity<T>)) return go_on;
-                }
-                Rgb<T> f;
-                if constexpr (has_glossy<M>) f = glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index)).f(to_camera, Transport::importance);
-                else f = diffuse_response(material, c).brdf();
-                splat(out, seen, power * f * v * importance, scale);
-                return go_on;
-            }, [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at, const Rgb<T>& power) {
-                // Scattered in the air before any specular bounce: the path tracer's.
-                if (at.direct || !at.first_specular) return false;
-                const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
-                const std::optional<Seen> look = look_from(at.point, at.rng);
-                if (!look) return go_on;
-                const auto& seen = look->at;
-                const Vec3<T>& to_camera = look->to_camera;
-                const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(Ray<T>{at.point, to_camera}, seen.distance) *
-                                 through_air(at.point, to_camera, seen.distance);
-                if (!(max_component(v) > T(0))) return go_on;
-                const T importance = T(medium.phase.value(dot(at.direction, to_camera))) / (seen.distance * seen.distance * area * seen.cos * seen.cos * seen.cos);
-                splat(out, seen, power * v * importance, scale);
-                return go_on;
-            });
+            tracer.walk_aimed(
+                first, last, count, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) { return at_surface(material, at, power, view, out); },
+                [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at, const Rgb<T>& power) { return in_medium(medium, at, power, view, out); });
         };
         // Blocks of paths dealt to threads as they ask; each thread's sums are exact, so
         // which thread took which block changes no bit.
@@ -16185,6 +16119,97 @@ public:
     }
 
 private:
+    /// What the camera sees: its rays, the window splats land in, a pixel's area on the
+    /// image plane, and what each splat is scaled by (the passes).
+    struct View {
+        const CameraRays<T>& rays;
+        PixelWindow window;
+        T area;
+        double scale;
+
+        /// Where the camera sees point p, in the window (or nothing), and the unit direction
+        /// from p to the eye: for a thin lens, a point of the lens drawn uniformly, seen as a
+        /// pinhole there sees.
+        struct Seen {
+            typename CameraRays<T>::Projection at;
+            Vec3<T> to_camera;
+        };
+        [[nodiscard]] std::optional<Seen> look_from(const Vec3<T>& p, Random& rng) const noexcept
+        {
+            Vec3<T> eye = rays.origin;
+            if (rays.thin_lens()) {
+                const auto [u, v] = rng.template uniform2<T>();
+                eye = rays.lens_point(u, v);
+            }
+            const auto seen = rays.thin_lens() ? rays.project(p, eye) : rays.project(p);
+            if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return std::nullopt;
+            return Seen{*seen, (eye - p) / seen->distance};
+        }
+    };
+
+    /// A path at a surface: joined to the camera where it is the light tracer's (L S+ D ... E:
+    /// the camera's own first scattering specular), its splat added to `out`. Whether the
+    /// walk goes on.
+    template <class M>
+    [[nodiscard]] bool at_surface(const M& material, const WalkVertex<T>& at, const Rgb<T>& power, const View& view, Accumulation& out) const noexcept
+    {
+        // A first hit on a diffuse lobe is the path tracer's; where the material also
+        // has a delta lobe (a mirror beside it, or a glossy lobe's delta part: a
+        // mix's mirror, a smooth coat), the scattering here decides whose the path is.
+        if (at.direct) {
+            if constexpr (has_glossy<M>) {
+                if (glossy_at(material, at.crossing(), at.direction, glossy_eta(material, at.crossing(), at.outside_index)).delta_part()) return true;
+            }
+            return reflects<M> || (transmits<M> && !has_glossy<M>);
+        }
+        if (!at.first_specular) return false;
+        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
+        const Crossing<T>& c = at.crossing();
+        const auto look = view.look_from(c.point, at.rng);
+        if (!look) return go_on;
+        const auto& seen = look->at;
+        const Vec3<T>& to_camera = look->to_camera;
+        // The camera sees the other side: only through a glossy interface (frosted glass).
+        const T cos_x = transmits<M> && has_glossy<M> ? std::abs(dot(c.facing_normal(), to_camera)) : dot(c.facing_normal(), to_camera);
+        if (!(cos_x > T(0))) return go_on;
+        const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
+                                                                                       seen.distance) *
+                         air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{c.point, to_camera}, seen.distance);
+        if (!(max_component(v) > T(0))) return go_on;
+        T importance = cos_x / (seen.distance * seen.distance * view.area * seen.cos * seen.cos * seen.cos);
+        // A shading normal weighs the light arriving here by its own cosine over the
+        // true one (scattering.hpp).
+        if (!c.shades_flat()) {
+            importance *= shading_cosine(c.facing_shading(), c.facing_normal(), -at.direction) / -dot(at.direction, c.facing_normal());
+            if (!(importance < infinity<T>)) return go_on;
+        }
+        Rgb<T> f;
+        if constexpr (has_glossy<M>) f = glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index)).f(to_camera, Transport::importance);
+        else f = diffuse_response(material, c).brdf();
+        splat(out, seen, power * f * v * importance, view.scale);
+        return go_on;
+    }
+
+    /// A path scattering in a medium: joined to the camera where it is the light tracer's.
+    /// Whether the walk goes on.
+    template <class Md>
+    [[nodiscard]] bool in_medium(const Md& medium, const WalkMediumVertex<T>& at, const Rgb<T>& power, const View& view, Accumulation& out) const noexcept
+    {
+        // Scattered in the air before any specular bounce: the path tracer's.
+        if (at.direct || !at.first_specular) return false;
+        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
+        const auto look = view.look_from(at.point, at.rng);
+        if (!look) return go_on;
+        const auto& seen = look->at;
+        const Vec3<T>& to_camera = look->to_camera;
+        const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(Ray<T>{at.point, to_camera}, seen.distance) *
+                         through_air(at.point, to_camera, seen.distance);
+        if (!(max_component(v) > T(0))) return go_on;
+        const T importance = T(medium.phase.value(dot(at.direction, to_camera))) / (seen.distance * seen.distance * view.area * seen.cos * seen.cos * seen.cos);
+        splat(out, seen, power * v * importance, view.scale);
+        return go_on;
+    }
+
     /// What the scene's air lets through from `p` in a medium to the camera, `distance`
     /// along `to_camera`: its medium's transmittance over the stretches outside the
     /// objects the ray passes (FilledAir; from inside a ball of smoke, the air beyond it),
@@ -16476,119 +16501,16 @@ public:
     /// background is seen, as in Whitted, but lights nothing).
     [[nodiscard]] Rgb<T> radiance(const Ray<T>& ray, Random& rng) const noexcept
     {
-        Rgb<T> sum{T(0)};
-        const LightSampling sampling{&rng, config_.area_light_grid};
-        random_walk<Transport::radiance>(*scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, walk_limits(),
-                    WalkHooks{
-                    // At a diffuse or glossy surface: every light's samples there.
-                    .on_surface = [&]<class M>(const M& material, const WalkVertex<T>& at) {
-                        if (at.last) return false; // (a light sample from here would make one segment too many)
-                        const Crossing<T>& c = at.crossing();
-                        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
-                        // Each light sample: an area light's shares its path with the bounce
-                        // that finds it where the walk goes on (the diffuse lobe's cos / pi, a
-                        // glossy lobe's own density there). A diffuse lobe sums irradiance and
-                        // takes its BRDF once; a glossy one weighs each sample by f toward it,
-                        // from both sides for a glossy interface (its lobe refracts).
-                        constexpr Sides sides = has_glossy<M> && transmits<M> ? Sides::both : Sides::near;
-                        const auto lobe = [&] {
-                            if constexpr (has_glossy<M>) return glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index));
-                            else return diffuse_response(material, c);
-                        }();
-                        Rgb<T> gathered{T(0)};
-                        scene_->for_each_light([&]<class L>(const L& light) {
-                            if constexpr (!is_delta_light<L>) {
-                                if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
-                            }
-                            for_each_sample_arriving<ShadowsThroughGlass::blocked, sides>(*scene_, light, c, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
-                                const bool shared = !s.delta() && go_on;
-                                if constexpr (has_glossy<M>) {
-                                    const Rgb<T> f = lobe.f(s.wi, Transport::radiance);
-                                    if (!(max_component(f) > T(0))) return;
-                                    const T w = shared ? light_sample_weight(s.pdf, lobe.pdf(s.wi)) : T(1);
-                                    gathered += (w * cos) * f * v * air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{c.point, s.wi}, s.distance) * s.irradiance;
-                                } else {
-                                    const T w = shared ? light_sample_weight(s.pdf, cos / pi<T>) : T(1);
-                                    gathered += w * v * air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{c.point, s.wi}, s.distance) * s.irradiance * cos;
-                                }
-                            });
-                        });
-                        if constexpr (has_glossy<M>) sum += at.power * gathered;
-                        else sum += at.power * lobe.brdf() * gathered;
-                        return go_on;
-                    },
-                    // Leaving the scene: the background, or an environment light's light.
-                    .on_escape = [&](const WalkEscape<T>& out) {
-                        if (out.specular_only()) {
-                            sum += out.power * scene_->escaped(out.ray.direction);
-                            return;
-                        }
-                        // After a diffuse bounce the background lights nothing; an
-                        // environment light does, shared with its samples as an area light's.
-                        scene_->for_each_light([&]<class L>(const L& light) {
-                            if constexpr (is_at_infinity<L>) {
-                                const Vec3<T> d = normalize(out.ray.direction);
-                                sum += out.power * light.arriving_from(d) * met_light_weight(out.last_pdf, out.first_specular, [&] { return light.pdf(d); });
-                            }
-                        });
-                    },
-                    // Meeting an area light: its light, shared with the light samples that find it.
-                    .on_emitter = [&]<class M>(const M& material, const WalkVertex<T>& at) {
-                        if constexpr (SceneT::has_emitters) {
-                            if (at.specular_only()) sum += at.power * emitted(material, at.crossing());
-                            else sum += at.power * emitted(material, at.crossing()) *
-                                        met_light_weight(at.last_pdf, at.first_specular, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
-                        }
-                    },
-                    // Scattering in a medium, and entering a stretch of one: the light samples
-                    // there, and a point or spot light's equiangular samples along it.
-                    .on_medium = Overload{
-                        [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) {
-                            // In a medium: each light's samples weighed by the phase function
-                            // toward them (the bounce's density there, for MIS), no cosine;
-                            // a point or spot light's shared with its equiangular samples.
-                            if (at.last) return false;
-                            const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
-                            Rgb<T> gathered{T(0)};
-                            scene_->for_each_light([&]<class L>(const L& light) {
-                                if constexpr (!is_delta_light<L>) {
-                                    if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
-                                }
-                                T shared = T(1);
-                                // (Tested on the medium first, outside the light's condition:
-                                // clang checks a branch that depends on the light alone
-                                // against the medium at hand.)
-                                if constexpr (uniform_medium<Md>) {
-                                    if constexpr (has_equiangular<L, Md>) {
-                                        if (config_.equiangular) {
-                                            const T t = dot(at.point - at.stretch.origin, at.stretch.direction);
-                                            const T flight = medium.flight_pdf(at.entering, t);
-                                            shared = flight / (flight + Equiangular(at.stretch, at.stretch_length, light.position).pdf(t));
-                                        }
-                                    }
-                                }
-                                for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, at.point, sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
-                                    const T phase = medium.phase.value(dot(at.direction, s.wi));
-                                    const T w = !s.delta() && go_on ? light_sample_weight(s.pdf, phase) : shared;
-                                    gathered += (w * phase) * v * through_air(at.point, s) * s.irradiance;
-                                });
-                            });
-                            sum += at.power * gathered;
-                            return go_on;
-                        },
-                        [&]<class Md>(const Md& medium, const WalkMediumStretch<T>& stretch) {
-                            // Each point or spot light's equiangular sample on the stretch (a
-                            // vertex on it, and a segment from there to the light).
-                            if constexpr (uniform_medium<Md>) {
-                                if (!config_.equiangular || stretch.vertices + 2 > config_.max_length) return true;
-                                scene_->for_each_light([&]<class L>(const L& light) {
-                                    if constexpr (has_equiangular<L, Md>) sum += equiangular_sample(medium, light, stretch, sampling);
-                                });
-                            }
-                            return true;
-                        }}},
-                    scene_->media_at(ray.origin));
-        return sum;
+        Path path{.sampling = {&rng, config_.area_light_grid}};
+        random_walk<Transport::radiance>(
+            *scene_, air_, bands_, ray, Rgb<T>(T(1)), rng, walk_limits(),
+            WalkHooks{.on_surface = [&]<class M>(const M& material, const WalkVertex<T>& at) { return at_surface(material, at, path); },
+                      .on_escape = [&](const WalkEscape<T>& out) { escaped(out, path); },
+                      .on_emitter = [&]<class M>(const M& material, const WalkVertex<T>& at) { met_emitter(material, at, path); },
+                      .on_medium = Overload{[&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at) { return in_medium(medium, at, path); },
+                                            [&]<class Md>(const Md& medium, const WalkMediumStretch<T>& stretch) { return along_medium(medium, stretch, path); }}},
+            scene_->media_at(ray.origin));
+        return path.sum;
     }
 
     /// The scene and the air its camera rays start in (render_layers' surface layers).
@@ -16627,6 +16549,129 @@ public:
     }
 
 private:
+    /// A camera path's light so far, and how its vertices sample the lights.
+    struct Path {
+        Rgb<T> sum{T(0)};
+        LightSampling sampling;
+    };
+
+    /// At a diffuse or glossy surface: every light's samples there. Whether the walk goes on.
+    template <class M>
+    [[nodiscard]] bool at_surface(const M& material, const WalkVertex<T>& at, Path& path) const noexcept
+    {
+        if (at.last) return false; // (a light sample from here would make one segment too many)
+        const Crossing<T>& c = at.crossing();
+        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
+        // Each light sample: an area light's shares its path with the bounce that finds it
+        // where the walk goes on (the diffuse lobe's cos / pi, a glossy lobe's own density
+        // there). A diffuse lobe sums irradiance and takes its BRDF once; a glossy one weighs
+        // each sample by f toward it, from both sides for a glossy interface (its lobe refracts).
+        constexpr Sides sides = has_glossy<M> && transmits<M> ? Sides::both : Sides::near;
+        const auto lobe = [&] {
+            if constexpr (has_glossy<M>) return glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index));
+            else return diffuse_response(material, c);
+        }();
+        Rgb<T> gathered{T(0)};
+        scene_->for_each_light([&]<class L>(const L& light) {
+            if constexpr (!is_delta_light<L>) {
+                if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
+            }
+            for_each_sample_arriving<ShadowsThroughGlass::blocked, sides>(*scene_, light, c, path.sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                const bool shared = !s.delta() && go_on;
+                if constexpr (has_glossy<M>) {
+                    const Rgb<T> f = lobe.f(s.wi, Transport::radiance);
+                    if (!(max_component(f) > T(0))) return;
+                    const T w = shared ? light_sample_weight(s.pdf, lobe.pdf(s.wi)) : T(1);
+                    gathered += (w * cos) * f * v * air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{c.point, s.wi}, s.distance) * s.irradiance;
+                } else {
+                    const T w = shared ? light_sample_weight(s.pdf, cos / pi<T>) : T(1);
+                    gathered += w * v * air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{c.point, s.wi}, s.distance) * s.irradiance * cos;
+                }
+            });
+        });
+        if constexpr (has_glossy<M>) path.sum += at.power * gathered;
+        else path.sum += at.power * lobe.brdf() * gathered;
+        return go_on;
+    }
+
+    /// Leaving the scene: the background, or an environment light's light.
+    void escaped(const WalkEscape<T>& out, Path& path) const noexcept
+    {
+        if (out.specular_only()) {
+            path.sum += out.power * scene_->escaped(out.ray.direction);
+            return;
+        }
+        // After a diffuse bounce the background lights nothing; an environment light does,
+        // shared with its samples as an area light's.
+        scene_->for_each_light([&]<class L>(const L& light) {
+            if constexpr (is_at_infinity<L>) {
+                const Vec3<T> d = normalize(out.ray.direction);
+                path.sum += out.power * light.arriving_from(d) * met_light_weight(out.last_pdf, out.first_specular, [&] { return light.pdf(d); });
+            }
+        });
+    }
+
+    /// Meeting an area light: its light, shared with the light samples that find it.
+    template <class M>
+    void met_emitter(const M& material, const WalkVertex<T>& at, Path& path) const noexcept
+    {
+        if constexpr (SceneT::has_emitters) {
+            if (at.specular_only()) path.sum += at.power * emitted(material, at.crossing());
+            else path.sum += at.power * emitted(material, at.crossing()) *
+                             met_light_weight(at.last_pdf, at.first_specular, [&] { return scene_->area_lights().pdf(at.hit, at.last_point); });
+        }
+    }
+
+    /// Scattering in a medium: the light samples there. Whether the walk goes on.
+    template <class Md>
+    [[nodiscard]] bool in_medium(const Md& medium, const WalkMediumVertex<T>& at, Path& path) const noexcept
+    {
+        // Each light's samples weighed by the phase function toward them (the bounce's
+        // density there, for MIS), no cosine; a point or spot light's shared with its
+        // equiangular samples.
+        if (at.last) return false;
+        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
+        Rgb<T> gathered{T(0)};
+        scene_->for_each_light([&]<class L>(const L& light) {
+            if constexpr (!is_delta_light<L>) {
+                if (config_.area_lights == AreaLightStrategy::bounces && go_on) return;
+            }
+            T shared = T(1);
+            // (Tested on the medium first, outside the light's condition: clang checks a
+            // branch that depends on the light alone against the medium at hand.)
+            if constexpr (uniform_medium<Md>) {
+                if constexpr (has_equiangular<L, Md>) {
+                    if (config_.equiangular) {
+                        const T t = dot(at.point - at.stretch.origin, at.stretch.direction);
+                        const T flight = medium.flight_pdf(at.entering, t);
+                        shared = flight / (flight + Equiangular(at.stretch, at.stretch_length, light.position).pdf(t));
+                    }
+                }
+            }
+            for_each_sample_in_medium<ShadowsThroughGlass::blocked>(*scene_, light, at.point, path.sampling, [&](const LightSample<T>& s, const Rgb<T>& v) {
+                const T phase = medium.phase.value(dot(at.direction, s.wi));
+                const T w = !s.delta() && go_on ? light_sample_weight(s.pdf, phase) : shared;
+                gathered += (w * phase) * v * through_air(at.point, s) * s.irradiance;
+            });
+        });
+        path.sum += at.power * gathered;
+        return go_on;
+    }
+
+    /// Entering a stretch of a medium: a point or spot light's equiangular samples along it.
+    template <class Md>
+    [[nodiscard]] bool along_medium(const Md& medium, const WalkMediumStretch<T>& stretch, Path& path) const noexcept
+    {
+        // (Each sample is a vertex on the stretch, and a segment from there to the light.)
+        if constexpr (uniform_medium<Md>) {
+            if (!config_.equiangular || stretch.vertices + 2 > config_.max_length) return true;
+            scene_->for_each_light([&]<class L>(const L& light) {
+                if constexpr (has_equiangular<L, Md>) path.sum += equiangular_sample(medium, light, stretch, path.sampling);
+            });
+        }
+        return true;
+    }
+
     /// The walk's limits: max_length alone (no count of surfaces or of scatterings in media
     /// apart), and roulette_depth.
     [[nodiscard]] WalkLimits walk_limits() const noexcept

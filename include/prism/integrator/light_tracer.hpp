@@ -118,78 +118,12 @@ public:
         if (config_.max_length < 3) return; // no path it finds is that short
         const PassRange traced{passes.first * per_pass, passes.last * per_pass};
         const detail::PhotonTracer<SceneT, Air> tracer(*scene_, tracer_config(count, config.seed, config.threads), air_);
-        const T area = rays.pixel_area();
-        const double scale = double(config.spp);
-        // Where the camera sees point p, in the window (or nothing), and the unit direction
-        // from p to the eye: for a thin lens, a point of the lens drawn uniformly, seen as a
-        // pinhole there sees.
-        struct Seen {
-            typename CameraRays<T>::Projection at;
-            Vec3<T> to_camera;
-        };
-        const auto look_from = [&](const Vec3<T>& p, Random& rng) -> std::optional<Seen> {
-            Vec3<T> eye = rays.origin;
-            if (rays.thin_lens()) {
-                const auto [u, v] = rng.template uniform2<T>();
-                eye = rays.lens_point(u, v);
-            }
-            const auto seen = rays.thin_lens() ? rays.project(p, eye) : rays.project(p);
-            if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return std::nullopt;
-            return Seen{*seen, (eye - p) / seen->distance};
-        };
+        const View view{rays, window, rays.pixel_area(), double(config.spp)};
         // A block of paths splatted into `out`.
         const auto trace_block = [&](std::uint64_t first, std::uint64_t last, Accumulation& out) {
-            tracer.walk_aimed(first, last, count, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) {
-                // A first hit on a diffuse lobe is the path tracer's; where the material also
-                // has a delta lobe (a mirror beside it, or a glossy lobe's delta part: a
-                // mix's mirror, a smooth coat), the scattering here decides whose the path is.
-                if (at.direct) {
-                    if constexpr (has_glossy<M>) {
-                        if (glossy_at(material, at.crossing(), at.direction, glossy_eta(material, at.crossing(), at.outside_index)).delta_part()) return true;
-                    }
-                    return reflects<M> || (transmits<M> && !has_glossy<M>);
-                }
-                if (!at.first_specular) return false;
-                const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
-                const Crossing<T>& c = at.crossing();
-                const std::optional<Seen> look = look_from(c.point, at.rng);
-                if (!look) return go_on;
-                const auto& seen = look->at;
-                const Vec3<T>& to_camera = look->to_camera;
-                // The camera sees the other side: only through a glossy interface (frosted glass).
-                const T cos_x = transmits<M> && has_glossy<M> ? std::abs(dot(c.facing_normal(), to_camera)) : dot(c.facing_normal(), to_camera);
-                if (!(cos_x > T(0))) return go_on;
-                const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
-                                                                                               seen.distance) *
-                                 air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{c.point, to_camera}, seen.distance);
-                if (!(max_component(v) > T(0))) return go_on;
-                T importance = cos_x / (seen.distance * seen.distance * area * seen.cos * seen.cos * seen.cos);
-                // A shading normal weighs the light arriving here by its own cosine over the
-                // true one (scattering.hpp).
-                if (!c.shades_flat()) {
-                    importance *= shading_cosine(c.facing_shading(), c.facing_normal(), -at.direction) / -dot(at.direction, c.facing_normal());
-                    if (!(importance < infinity<T>)) return go_on;
-                }
-                Rgb<T> f;
-                if constexpr (has_glossy<M>) f = glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index)).f(to_camera, Transport::importance);
-                else f = diffuse_response(material, c).brdf();
-                splat(out, seen, power * f * v * importance, scale);
-                return go_on;
-            }, [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at, const Rgb<T>& power) {
-                // Scattered in the air before any specular bounce: the path tracer's.
-                if (at.direct || !at.first_specular) return false;
-                const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
-                const std::optional<Seen> look = look_from(at.point, at.rng);
-                if (!look) return go_on;
-                const auto& seen = look->at;
-                const Vec3<T>& to_camera = look->to_camera;
-                const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(Ray<T>{at.point, to_camera}, seen.distance) *
-                                 through_air(at.point, to_camera, seen.distance);
-                if (!(max_component(v) > T(0))) return go_on;
-                const T importance = T(medium.phase.value(dot(at.direction, to_camera))) / (seen.distance * seen.distance * area * seen.cos * seen.cos * seen.cos);
-                splat(out, seen, power * v * importance, scale);
-                return go_on;
-            });
+            tracer.walk_aimed(
+                first, last, count, [&]<class M>(const M& material, const WalkVertex<T>& at, const Rgb<T>& power) { return at_surface(material, at, power, view, out); },
+                [&]<class Md>(const Md& medium, const WalkMediumVertex<T>& at, const Rgb<T>& power) { return in_medium(medium, at, power, view, out); });
         };
         // Blocks of paths dealt to threads as they ask; each thread's sums are exact, so
         // which thread took which block changes no bit.
@@ -206,6 +140,97 @@ public:
     }
 
 private:
+    /// What the camera sees: its rays, the window splats land in, a pixel's area on the
+    /// image plane, and what each splat is scaled by (the passes).
+    struct View {
+        const CameraRays<T>& rays;
+        PixelWindow window;
+        T area;
+        double scale;
+
+        /// Where the camera sees point p, in the window (or nothing), and the unit direction
+        /// from p to the eye: for a thin lens, a point of the lens drawn uniformly, seen as a
+        /// pinhole there sees.
+        struct Seen {
+            typename CameraRays<T>::Projection at;
+            Vec3<T> to_camera;
+        };
+        [[nodiscard]] std::optional<Seen> look_from(const Vec3<T>& p, Random& rng) const noexcept
+        {
+            Vec3<T> eye = rays.origin;
+            if (rays.thin_lens()) {
+                const auto [u, v] = rng.template uniform2<T>();
+                eye = rays.lens_point(u, v);
+            }
+            const auto seen = rays.thin_lens() ? rays.project(p, eye) : rays.project(p);
+            if (!seen || !(seen->x >= T(window.x0) && seen->x < T(window.x1) && seen->y >= T(window.y0) && seen->y < T(window.y1))) return std::nullopt;
+            return Seen{*seen, (eye - p) / seen->distance};
+        }
+    };
+
+    /// A path at a surface: joined to the camera where it is the light tracer's (L S+ D ... E:
+    /// the camera's own first scattering specular), its splat added to `out`. Whether the
+    /// walk goes on.
+    template <class M>
+    [[nodiscard]] bool at_surface(const M& material, const WalkVertex<T>& at, const Rgb<T>& power, const View& view, Accumulation& out) const noexcept
+    {
+        // A first hit on a diffuse lobe is the path tracer's; where the material also
+        // has a delta lobe (a mirror beside it, or a glossy lobe's delta part: a
+        // mix's mirror, a smooth coat), the scattering here decides whose the path is.
+        if (at.direct) {
+            if constexpr (has_glossy<M>) {
+                if (glossy_at(material, at.crossing(), at.direction, glossy_eta(material, at.crossing(), at.outside_index)).delta_part()) return true;
+            }
+            return reflects<M> || (transmits<M> && !has_glossy<M>);
+        }
+        if (!at.first_specular) return false;
+        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
+        const Crossing<T>& c = at.crossing();
+        const auto look = view.look_from(c.point, at.rng);
+        if (!look) return go_on;
+        const auto& seen = look->at;
+        const Vec3<T>& to_camera = look->to_camera;
+        // The camera sees the other side: only through a glossy interface (frosted glass).
+        const T cos_x = transmits<M> && has_glossy<M> ? std::abs(dot(c.facing_normal(), to_camera)) : dot(c.facing_normal(), to_camera);
+        if (!(cos_x > T(0))) return go_on;
+        const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(spawn_ray(c.point, c.error, c.normal, to_camera),
+                                                                                       seen.distance) *
+                         air_transmittance<ShadowsThroughGlass::blocked>(*scene_, air_, Ray<T>{c.point, to_camera}, seen.distance);
+        if (!(max_component(v) > T(0))) return go_on;
+        T importance = cos_x / (seen.distance * seen.distance * view.area * seen.cos * seen.cos * seen.cos);
+        // A shading normal weighs the light arriving here by its own cosine over the
+        // true one (scattering.hpp).
+        if (!c.shades_flat()) {
+            importance *= shading_cosine(c.facing_shading(), c.facing_normal(), -at.direction) / -dot(at.direction, c.facing_normal());
+            if (!(importance < infinity<T>)) return go_on;
+        }
+        Rgb<T> f;
+        if constexpr (has_glossy<M>) f = glossy_at(material, c, at.direction, glossy_eta(material, c, at.outside_index)).f(to_camera, Transport::importance);
+        else f = diffuse_response(material, c).brdf();
+        splat(out, seen, power * f * v * importance, view.scale);
+        return go_on;
+    }
+
+    /// A path scattering in a medium: joined to the camera where it is the light tracer's.
+    /// Whether the walk goes on.
+    template <class Md>
+    [[nodiscard]] bool in_medium(const Md& medium, const WalkMediumVertex<T>& at, const Rgb<T>& power, const View& view, Accumulation& out) const noexcept
+    {
+        // Scattered in the air before any specular bounce: the path tracer's.
+        if (at.direct || !at.first_specular) return false;
+        const bool go_on = at.diffuse_bounces < config_.max_diffuse_bounces;
+        const auto look = view.look_from(at.point, at.rng);
+        if (!look) return go_on;
+        const auto& seen = look->at;
+        const Vec3<T>& to_camera = look->to_camera;
+        const Rgb<T> v = scene_->template transmittance<ShadowsThroughGlass::blocked>(Ray<T>{at.point, to_camera}, seen.distance) *
+                         through_air(at.point, to_camera, seen.distance);
+        if (!(max_component(v) > T(0))) return go_on;
+        const T importance = T(medium.phase.value(dot(at.direction, to_camera))) / (seen.distance * seen.distance * view.area * seen.cos * seen.cos * seen.cos);
+        splat(out, seen, power * v * importance, view.scale);
+        return go_on;
+    }
+
     /// What the scene's air lets through from `p` in a medium to the camera, `distance`
     /// along `to_camera`: its medium's transmittance over the stretches outside the
     /// objects the ray passes (FilledAir; from inside a ball of smoke, the air beyond it),
