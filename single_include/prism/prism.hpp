@@ -16122,17 +16122,17 @@ private:
     /// What the camera sees: its rays, the window splats land in, a pixel's area on the
     /// image plane, and what each splat is scaled by (the passes).
     struct View {
-        const CameraRays<T>& rays;
-        PixelWindow window;
-        T area;
-        double scale;
+        const CameraRays<T>& rays; ///< the camera's rays
+        PixelWindow window;        ///< the pixels splats land in
+        T area;                    ///< a pixel's area on the image plane
+        double scale;              ///< each splat's scale: the passes
 
         /// Where the camera sees point p, in the window (or nothing), and the unit direction
         /// from p to the eye: for a thin lens, a point of the lens drawn uniformly, seen as a
         /// pinhole there sees.
         struct Seen {
-            typename CameraRays<T>::Projection at;
-            Vec3<T> to_camera;
+            typename CameraRays<T>::Projection at; ///< where on the image, and how far
+            Vec3<T> to_camera;                     ///< unit, from the point to the eye
         };
         [[nodiscard]] std::optional<Seen> look_from(const Vec3<T>& p, Random& rng) const noexcept
         {
