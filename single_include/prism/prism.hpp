@@ -13547,9 +13547,9 @@ private:
 // scene's air filled with fog: FilledAir) it draws where it scatters as the path tracer
 // does (the medium's free flight), and a vertex there is a MediumVertex, joined and
 // merged like a surface's: its lobe the phase function, its cosines 1. Merging in a
-// medium gathers the light vertices within a ball of the radius in the same medium (the
-// volume photon map's point estimate, 4/3 pi r^3), dividing out the scattering
-// coefficient the light vertex's throughput took. The distances' densities (a flight's
+// medium gathers the light vertices within a ball in the same medium (the volume photon
+// map's point estimate, 4/3 pi r^3; its radius the surfaces' or volume_radius), dividing
+// out the scattering coefficient the light vertex's throughput took. The distances' densities (a flight's
 // sigma_t T) are left out of the weights, as pbrt-v3's BDPT leaves them: the weights still
 // sum to 1 over a path's strategies, so every estimate stays unbiased, but they no longer
 // favour the strategy that samples a long, dense stretch best. A vertex in a medium counts
@@ -13615,6 +13615,11 @@ struct BidirectionalConfig {
     double radius = 0.0;
     /// The default radius in pixel widths (see `radius`).
     double footprints = 1.0;
+    /// The first pass's merging radius in media (a ball about a camera vertex there), in
+    /// scene units, shrinking as `radius` does; 0: `radius` (or its default). A ball of
+    /// the surfaces' radius holds few light vertices in thin haze, where a merge then
+    /// shows as a speck; a wider ball blurs the light in the medium instead.
+    double volume_radius = 0.0;
     /// How much a merge counts against a connection in the weights: the merges of a pass
     /// are weighed as merge_weight pi r^2 N light paths' worth (1: Georgiev et al.'s
     /// balance heuristic). Any value keeps every estimate unbiased in the limit; below 1 a
@@ -13811,6 +13816,8 @@ public:
             detail::throw_invalid("BidirectionalConfig radius must be finite and >= 0, got ", config.radius);
         if (!(config.alpha > 0.0 && config.alpha < 1.0)) detail::throw_invalid("BidirectionalConfig alpha must be in (0, 1), got ", config.alpha);
         if (!(config.footprints > 0.0 && config.footprints < 1e6)) detail::throw_invalid("BidirectionalConfig footprints must be in (0, 1e6), got ", config.footprints);
+        if (!(config.volume_radius >= 0.0 && config.volume_radius < std::numeric_limits<double>::infinity()))
+            detail::throw_invalid("BidirectionalConfig volume_radius must be finite and >= 0, got ", config.volume_radius);
         if (!(config.merge_weight > 0.0 && config.merge_weight <= 1.0)) detail::throw_invalid("BidirectionalConfig merge_weight must be in (0, 1], got ", config.merge_weight);
         if (config.only && (config.only->s < 0 || config.only->t < 1))
             detail::throw_invalid("BidirectionalConfig only must have s >= 0 and t >= 1, got (", config.only->s, ", ", config.only->t, ")");
@@ -13955,6 +13962,7 @@ private:
         std::vector<std::uint32_t> on_surfaces, in_media; ///< with media: the grids' points' vertices
         T count = T(0);          ///< N, the light paths traced
         T radius = T(0);         ///< the merging radius
+        T volume_radius = T(0);  ///< the merging radius in media
         typename VcmMis<T>::Pass mis; ///< what merging on a surface is worth against a connection
         T volume_eta = T(0);     ///< merge_weight 4/3 pi r^3 N: eta in a medium over its mean scattering coefficient
         T vm_normalization = T(0); ///< 1 / (pi r^2 N)
@@ -14224,11 +14232,14 @@ private:
         const bool merging = config_.method != BidirectionalMethod::bdpt;
         light.radius = T(double(first_radius(rays, config.width, config.height)) * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)));
         light.radius = std::max(light.radius, sphere_.radius * T(1e-7));
+        light.volume_radius = light.radius;
+        if (config_.volume_radius > 0.0)
+            light.volume_radius = std::max(T(config_.volume_radius * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0))), sphere_.radius * T(1e-7));
         const T eta = pi<T> * light.radius * light.radius * light.count;
         light.mis.vm = merging ? T(config_.merge_weight) * eta : T(0);
         light.mis.vc = T(1) / (T(config_.merge_weight) * eta);
         light.vm_normalization = T(1) / eta;
-        const T ball = T(4) / T(3) * pi<T> * light.radius * light.radius * light.radius * light.count;
+        const T ball = T(4) / T(3) * pi<T> * light.volume_radius * light.volume_radius * light.volume_radius * light.count;
         light.volume_eta = merging ? T(config_.merge_weight) * ball : T(0);
         light.volume_normalization = T(1) / ball;
         // Blocks of paths, each into its own list (joined in order) and its worker's splats.
@@ -14295,7 +14306,7 @@ private:
                     (on_surface ? light.on_surfaces : light.in_media).push_back(std::uint32_t(i));
                 }
                 if (!points.empty()) light.grid = HashGrid<T>(points, light.radius);
-                if (!volume.empty()) light.volume_grid = HashGrid<T>(volume, light.radius);
+                if (!volume.empty()) light.volume_grid = HashGrid<T>(volume, light.volume_radius);
             } else {
                 std::vector<Vec3<T>> points(light.vertices.size());
                 for (std::size_t i = 0; i < points.size(); ++i) points[i] = light.vertices[i].hit.crossing.point;

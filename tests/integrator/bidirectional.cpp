@@ -236,6 +236,7 @@ TEST_CASE("bad bidirectional settings are refused, naming the parameter; lights 
     CHECK_THROWS_WITH_AS(Bidirectional(scene, {.radius = -1}), doctest::Contains("radius must be finite and >= 0, got -1"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(Bidirectional(scene, {.alpha = 1}), doctest::Contains("alpha must be in (0, 1), got 1"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(Bidirectional(scene, {.footprints = 0}), doctest::Contains("footprints must be in (0, 1e6), got 0"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Bidirectional(scene, {.volume_radius = -0.5}), doctest::Contains("volume_radius must be finite and >= 0, got -0.5"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(Bidirectional(scene, {.merge_weight = 1.5}), doctest::Contains("merge_weight must be in (0, 1], got 1.5"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(Bidirectional(scene, {.only = Strategy{0, 0}}), doctest::Contains("only must have s >= 0 and t >= 1, got (0, 0)"), std::invalid_argument);
     CHECK_THROWS_WITH_AS(Bidirectional(scene, {.dispersion_bands = 82}), doctest::Contains("dispersion_bands must be in [1, 81], got 82"), std::invalid_argument);
@@ -603,6 +604,16 @@ TEST_CASE("VCM's merging alone (progressive photon mapping by its light paths) r
     CHECK(merged == doctest::Approx(traced).epsilon(test::resolved(0.06)).scale(0));
     CHECK(merged == doctest::Approx(ppm).epsilon(test::resolved(0.08)).scale(0));
     CHECK(vcm == doctest::Approx(traced).epsilon(test::resolved(0.02)).scale(0));
+    // A ball of its own in the haze (volume_radius), twice the surfaces' radius: the same
+    // light; and a volume_radius equal to the radius is the default, bit for bit.
+    const double wide = mean_red(render(hazy_camera, Bidirectional(scene, {.method = BidirectionalMethod::merging, .radius = 0.05, .volume_radius = 0.2, .light_paths = paths}, hazy_air), config));
+    const Film vcm_wide = render(hazy_camera, Bidirectional(scene, {.method = BidirectionalMethod::vcm, .radius = 0.05, .volume_radius = 0.2, .light_paths = paths}, hazy_air), config);
+    MESSAGE("volume_radius 0.2: merging ", wide, ", VCM ", mean_red(vcm_wide));
+    CHECK(wide == doctest::Approx(traced).epsilon(test::resolved(0.06)).scale(0));
+    CHECK(mean_red(vcm_wide) == doctest::Approx(traced).epsilon(test::resolved(0.02)).scale(0));
+    const RenderConfig few{.width = 8, .height = 8, .spp = 4, .seed = 2, .progress = false};
+    CHECK(render(hazy_camera, Bidirectional(scene, {.radius = 0.1, .volume_radius = 0.1, .light_paths = 500}, hazy_air), few).pixels() ==
+          render(hazy_camera, Bidirectional(scene, {.radius = 0.1, .light_paths = 500}, hazy_air), few).pixels());
 }
 
 TEST_CASE("VCM's connections are BDPT's: as merging counts for nothing in the weights, VCM's image becomes BDPT's")
