@@ -33,6 +33,7 @@ fi
 "$root/build/release/bench/bench_thin_film" "$results" | tee "$results/thin_film.txt"
 "$root/build/release/bench/bench_photon_stage" "$results" | tee "$results/photon_stage.txt"
 "$root/build/release/bench/bench_whitted_glossy" "$results" | tee "$results/whitted_glossy.txt"
+"$root/build/release/bench/bench_prism_haze" "$results" | tee "$results/prism_haze.txt"
 "$python" "$root/bench/methods_vs_time.py" "$root/build/release" | tee "$results/methods_vs_time.txt"
 "$python" "$root/bench/cycles_agreement.py" "$root/build/release" | tee "$results/cycles_agreement.txt"
 "$python" "$root/bench/surfaces_vs_time.py" "$root/build/release" | tee "$results/surfaces_vs_time.txt"
