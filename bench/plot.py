@@ -526,7 +526,27 @@ def whitted_glossy_chart(rows):
     save(fig, "whitted_glossy.png")
 
 
+def prism_haze_chart(rows):
+    """The namesake in haze (bench/prism_haze.cpp): display-range error against time, a panel
+    per region, a curve per method."""
+    regions = [("all", "the whole picture"), ("fan", "the fan of colours in the haze"), ("spot", "its spot on the floor"),
+               ("beam", "the white beam"), ("prism face", "the prism's lit face")]
+    fig, axes = plt.subplots(1, len(regions), figsize=(4.2 * len(regions), 4.0))
+    for ax, (region, title) in zip(axes, regions):
+        for method in dict.fromkeys(r["method"] for r in rows):
+            points = sorted((float(r["seconds"]), float(r["rmse_" + region])) for r in rows if r["method"] == method)
+            ax.loglog([p[0] for p in points], [p[1] for p in points], "-", marker="o", label=method)
+        ax.set_xlabel("render time (s, 2 threads)")
+        ax.set_ylabel("RMSE, display range\nagainst 1024 passes of BDPT")
+        ax.set_title(title)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+    save(fig, "prism_haze.png")
+
+
 def main():
+    if (rows := read("prism_haze.csv")):
+        prism_haze_chart(rows)
     if (rows := read("methods_vs_time.csv")):
         methods_vs_time_chart(rows)
     if (rows := read("surfaces_vs_time.csv")):
