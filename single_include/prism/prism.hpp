@@ -13982,7 +13982,7 @@ private:
 
     /// A subpath's running state: throughput and the MIS quantities, and its wavelength.
     /// (The throughput stays white where a dispersive interface splits the light: the
-    /// band's share of white is taken once per path where the two subpaths meet, spectral().)
+    /// band's share of white is taken once per path where the two subpaths meet, in_band().)
     struct PathState {
         Rgb<T> beta;
         VcmMis<T> mis;
@@ -14034,8 +14034,19 @@ private:
         return SpectralBands<T>(count);
     }
 
-    /// The wavelength a subpath's light has (0: white).
-    [[nodiscard]] T wavelength(const PathState& state) const noexcept { return state.dispersed ? bands_[state.band].wavelength_nm : T(0); }
+    /// The wavelength of the light in `band` (-1: white, 0).
+    [[nodiscard]] T wavelength(int band) const noexcept { return band < 0 ? T(0) : bands_[band].wavelength_nm; }
+
+    /// Pair i's band in pass `pass`: an offset of its own from `seed`'s stream i, uniform and
+    /// independent of every other number of the pair and of every other pair's, stepped pass
+    /// by pass by the golden ratio (mod 1), so that a pixel's passes spread over the bands
+    /// evenly, and another pair's band is the same with probability exactly 1 / count
+    /// (merged_band).
+    [[nodiscard]] int pair_band(std::uint64_t seed, std::size_t i, std::uint64_t pass) const noexcept
+    {
+        const double u = double(Pcg32(seed, std::uint64_t(i)).next_u32()) * 0x1p-32 + 0.6180339887498949 * double(pass);
+        return std::min(int((u - std::floor(u)) * double(bands_.size())), bands_.size() - 1);
+    }
 
     /// A path's contribution `value` (from white light) of the light in `band` (-1: none,
     /// white): the band's share of white over its probability, 1 / count. (A scene
@@ -14120,7 +14131,7 @@ private:
                     }
                     // A white path takes its band here (its light split by wavelength).
                     if constexpr (disperses<M>) state.dispersed = true;
-                    outside_index = T(index_of(*scene_, outside_of(media, face, c.entering), wavelength(state)));
+                    outside_index = T(index_of(*scene_, outside_of(media, face, c.entering), wavelength(state.split())));
                 }
                 if constexpr (may_match_index<M>) {
                     if (material.index_matched(outside_index)) {
@@ -14130,7 +14141,7 @@ private:
                         return true;
                     }
                 }
-                const SurfaceVertex<M> vertex(material, c, ray.direction, mode, outside_index, wavelength(state));
+                const SurfaceVertex<M> vertex(material, c, ray.direction, mode, outside_index, wavelength(state.split()));
                 const Place place{&*hit, c.point, outside_index};
                 const std::optional<Vec3<T>> next = on_vertex(vertex, place, ray.direction, distance, T(1));
                 if (!next) return false;
@@ -14205,7 +14216,7 @@ private:
             }
         }
         return scene_->visit_material(lv.hit, [&]<class N>(const N& material) {
-            return SurfaceVertex<N>(material, lv.hit.crossing, lv.d, Transport::importance, lv.outside_index, lv.band < 0 ? T(0) : bands_[lv.band].wavelength_nm).value(wo);
+            return SurfaceVertex<N>(material, lv.hit.crossing, lv.d, Transport::importance, lv.outside_index, wavelength(lv.band)).value(wo);
         });
     }
 
@@ -14230,11 +14241,9 @@ private:
         light.width = config.width;
         light.height = config.height;
         const bool merging = config_.method != BidirectionalMethod::bdpt;
-        light.radius = T(double(first_radius(rays, config.width, config.height)) * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)));
-        light.radius = std::max(light.radius, sphere_.radius * T(1e-7));
-        light.volume_radius = light.radius;
-        if (config_.volume_radius > 0.0)
-            light.volume_radius = std::max(T(config_.volume_radius * std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0))), sphere_.radius * T(1e-7));
+        const double shrink = std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)); // r_i = r_0 i^((alpha - 1) / 2)
+        light.radius = std::max(T(double(first_radius(rays, config.width, config.height)) * shrink), sphere_.radius * T(1e-7));
+        light.volume_radius = config_.volume_radius > 0.0 ? std::max(T(config_.volume_radius * shrink), sphere_.radius * T(1e-7)) : light.radius;
         const T eta = pi<T> * light.radius * light.radius * light.count;
         light.mis.vm = merging ? T(config_.merge_weight) * eta : T(0);
         light.mis.vc = T(1) / (T(config_.merge_weight) * eta);
@@ -14260,11 +14269,7 @@ private:
         // pixel's own sequence and 0.045 with independent numbers).
         RenderConfig layout = config;
         if (layout.sampler == SamplerKind::sobol) layout.sampler = SamplerKind::zsobol;
-        // With dispersion, pair i's wavelength band: from an offset of its own, uniform and
-        // independent of every other number of the pair and of every other pair's, stepped
-        // pass by pass by the golden ratio (mod 1), so that a pixel's passes spread over the
-        // bands evenly, and another pair's band is the same with probability exactly
-        // 1 / count (merged_band).
+        // With dispersion, each pair's wavelength band (pair_band).
         [[maybe_unused]] const std::uint64_t band_seed = detail::sample_seed(config.seed ^ 0x2545f4914f6cdd1dULL, 0);
         if constexpr (SceneT::has_dispersion) light.bands.resize(count);
         detail::parallel_blocks(blocks, config.threads, [&](std::size_t b, unsigned worker) {
@@ -14280,8 +14285,7 @@ private:
                                        : Random(seed, std::uint64_t(i));
                 int band = 0;
                 if constexpr (SceneT::has_dispersion) {
-                    const double u = double(Pcg32(band_seed, std::uint64_t(i)).next_u32()) * 0x1p-32 + 0.6180339887498949 * double(pass);
-                    band = std::min(int((u - std::floor(u)) * double(bands_.size())), bands_.size() - 1);
+                    band = pair_band(band_seed, i, pass);
                     light.bands[i] = std::uint8_t(band);
                 }
                 light_path(rng, band, light, rays, window, lists[b], buffers[worker]);
