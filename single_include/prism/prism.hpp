@@ -13539,7 +13539,8 @@ private:
 // roulette: any weights that sum to 1 over a path's strategies keep every estimate
 // unbiased, and these do, the same functions of the path for every strategy.
 // By default light path i is pixel i's: drawn from its sampler (laid over the image in
-// ZSobol's order) and joined to its camera paths. Deterministic: every number is a
+// ZSobol's order) and joined to its camera paths; or, where a pilot finds the light paths
+// worth less than they cost, square i's, of 2 x 2 or 4 x 4 pixels (chosen_light_paths). Deterministic: every number is a
 // function of (seed, pass, pixel or path), splats go to exact sums per thread; the same
 // bits for any thread count, crop, range of passes or MPI rank.
 //
@@ -13574,6 +13575,7 @@ private:
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -13631,7 +13633,12 @@ struct BidirectionalConfig {
     double merge_weight = 0.05;
     /// In (0, 1): how much of the radius's area each pass keeps (Knaus and Zwicker 2011's alpha).
     double alpha = 0.75;
-    /// Light subpaths per pass; 0: one per pixel of the image.
+    /// Light subpaths per pass; 0: chosen for the scene and image by a pilot
+    /// (Bidirectional::chosen_light_paths): one a pixel, or one a square of 2 x 2 or 4 x 4
+    /// pixels where the light paths cost more than their light is worth (an area light in
+    /// a diffuse room, whose light the path tracer's strategies find nearly all of). Light
+    /// path i is then pixel (or square) i's, joined to its camera paths; another count's
+    /// light paths are joined to camera paths at random.
     std::size_t light_paths = 0;
     /// Only this strategy's estimates (connections only; merges count none): for tests,
     /// and to see what each strategy brings. `weighted`: with its MIS weight (the
@@ -13882,7 +13889,7 @@ public:
         const PixelWindow window = detail::render_window(config);
         if (sums.width() != config.width || sums.height() != config.height || !sums.window().contains(window))
             detail::throw_invalid("Bidirectional: the Accumulation does not hold the RenderConfig's window");
-        const std::size_t paths = config_.light_paths > 0 ? config_.light_paths : std::size_t(config.width) * std::size_t(config.height);
+        const std::size_t paths = config_.light_paths > 0 ? config_.light_paths : chosen_light_paths(camera, config);
         if (paths >= std::numeric_limits<std::uint32_t>::max()) detail::throw_invalid("Bidirectional: ", paths, " light paths a pass overflow a 32-bit index");
         for (std::uint64_t pass = passes.first; pass < passes.last; ++pass) {
             const LightPaths light = trace_light_paths(sums, rays, window, config, pass, paths);
@@ -13899,6 +13906,100 @@ public:
             render_into(sums, camera, eye, pass_render);
         }
     }
+
+    /// The light paths a pass takes by default (BidirectionalConfig::light_paths 0) for an
+    /// image of config's size: one a pixel, or one a square of 2 x 2 or 4 x 4 pixels
+    /// (pairing_side), whichever a pilot says is the most efficient. The pilot renders the whole frame (whatever the
+    /// crop or range of passes) at no more than pilot_pixels pixels, pilot_passes passes
+    /// with each count, and scores each by its variance (a pixel's red, green and blue from
+    /// pass to pass, summed over the pilot's pixels and the channels: dispersion's colour
+    /// noise counts) times its work a pass (rays traced and merges looked
+    /// up, counted: a deterministic function of the scene, camera, size and seed, as every
+    /// bit of the image is). A fewer count must win by a factor of `pilot_margin`, as the
+    /// pilot's few passes see a light path's rare, bright paths (a caustic) less often
+    /// than the render does. One a pixel in a scene with a point, spot or directional light
+    /// (the sun): the paths that end S+ L there are found by light paths alone (light
+    /// tracing and merging), often rare and bright (a caustic) where a pilot's few passes
+    /// cannot weigh them (under the sun, `sun_caustic`'s pilot chose fewer, and its picture's
+    /// shadow and caustic came out grainier at its pass count); and one a pixel
+    /// for merging alone and for a single strategy.
+    [[nodiscard]] std::size_t chosen_light_paths(const Camera<T>& camera, const RenderConfig& config) const
+    {
+        const std::size_t pixels = std::size_t(config.width) * std::size_t(config.height);
+        bool delta_lights = false;
+        scene_->for_each_light([&]<class L>(const L&) { delta_lights = delta_lights || is_delta_light<L>; });
+        if (delta_lights || config_.method == BidirectionalMethod::merging || config_.only || pixels < 16) return pixels;
+        const std::size_t shrink = std::size_t(std::ceil(std::sqrt(double(pixels) / double(pilot_pixels))));
+        RenderConfig pilot = config;
+        pilot.width = int((std::size_t(config.width) + shrink - 1) / shrink);
+        pilot.height = int((std::size_t(config.height) + shrink - 1) / shrink);
+        pilot.crop = {};
+        pilot.seed = config.seed ^ 0x5851f42d4c957f2dULL;
+        pilot.seconds = 0;
+        pilot.progress = false;
+        // Each pass one sample at each pixel's centre, of a seed of its own: the pixels'
+        // variance is the light's, not their edges' (anti-aliasing's, the same whatever
+        // the light paths, and far more of it in the pilot's large pixels).
+        pilot.spp = 1;
+        pilot.passes = {0, 1};
+        pilot.single_sample_at_centre = true;
+        if (pilot.sampler == SamplerKind::zsobol) pilot.sampler = SamplerKind::sobol;
+        const CameraRays<T> rays = camera.rays(pilot.width, pilot.height);
+        const PixelWindow whole = PixelWindow::whole(pilot.width, pilot.height);
+        const std::size_t n = std::size_t(pilot.width) * std::size_t(pilot.height);
+        int best = 1;
+        double best_score = 0.0;
+        for (const int side : pairing_sides) {
+            std::vector<double> first(3 * n, 0.0), second(3 * n, 0.0);
+            std::atomic<std::uint64_t> work{0};
+            for (int pass = 0; pass < pilot_passes; ++pass) {
+                RenderConfig one = pilot;
+                one.seed = detail::sample_seed(pilot.seed, std::uint64_t(pass) + 1);
+                Accumulation sums(pilot.width, pilot.height, whole);
+                LightPaths light = trace_light_paths(sums, rays, whole, one, 0, squares(one, side));
+                // A light path's work: its first ray, and a ray on and a splat from each
+                // vertex kept (and its place in the grid, merging), each light_work times a
+                // camera path's ray.
+                work += light_work * (std::uint64_t(light.count) + light.vertices.size() * (config_.method == BidirectionalMethod::vcm ? 3 : 2));
+                light.work = &work;
+                render_into(sums, camera, CameraPaths{this, &light, &rays}, one);
+                for (int y = 0; y < pilot.height; ++y)
+                    for (int x = 0; x < pilot.width; ++x) {
+                        const double w = double(sums.weight(x, y));
+                        for (std::size_t c = 0; c < 3; ++c) {
+                            const double v = w > 0.0 ? sums.sum(x, y, c).value() / w : 0.0;
+                            const std::size_t i = 3 * (std::size_t(y) * std::size_t(pilot.width) + std::size_t(x)) + c;
+                            first[i] += v;
+                            second[i] += v * v;
+                        }
+                    }
+            }
+            double variance = 0.0;
+            for (std::size_t i = 0; i < 3 * n; ++i) variance += std::max(0.0, second[i] - first[i] * first[i] / pilot_passes) / (pilot_passes - 1);
+            const double score = variance * double(work.load());
+            if (side == 1) best_score = score;
+            else if (score * pilot_margin < best_score) {
+                best = side;
+                best_score = score * pilot_margin;
+            }
+        }
+        return squares(config, best);
+    }
+
+    /// The pilot's largest image, in pixels (chosen_light_paths).
+    static constexpr std::size_t pilot_pixels = 2048;
+    /// The pilot's passes with each choice of light paths.
+    static constexpr int pilot_passes = 8;
+    /// The factor by which fewer light paths must win the pilot.
+    static constexpr double pilot_margin = 1.25;
+    /// The sides of the squares of pixels a pilot chooses a light path for (pairing_side).
+    static constexpr std::array<int, 3> pairing_sides{1, 2, 4};
+    /// What a light path's ray costs in a camera path's: the light paths of one pass
+    /// on the area-lit Cornell box (bench_methods area bdpt, 256 x 256) took 0.092 s of
+    /// 0.17 s for a third of its rays (2.4 vertices a path, a ray and a splat each;
+    /// the camera paths about 12 rays each): their per-pixel Sobol points and the splats'
+    /// projections and exact sums.
+    static constexpr std::uint64_t light_work = 3;
 
 private:
     /// Whether a subpath may scatter in a medium (a scene or air without one compiles none of it).
@@ -13967,7 +14068,9 @@ private:
         T volume_eta = T(0);     ///< merge_weight 4/3 pi r^3 N: eta in a medium over its mean scattering coefficient
         T vm_normalization = T(0); ///< 1 / (pi r^2 N)
         T volume_normalization = T(0); ///< 1 / (4/3 pi r^3 N)
-        bool per_pixel = false;    ///< light path i is pixel i's (paired_with_pixels)
+        int side = 0;              ///< light path i is square i's, of side x side pixels (0: joined at random: pairing_side)
+        std::size_t squares_wide = 0; ///< the squares across the image
+        std::atomic<std::uint64_t>* work = nullptr; ///< in a pilot: the camera paths' rays and merges, counted (chosen_light_paths)
         int width = 0, height = 0; ///< the image's size
     };
 
@@ -14000,23 +14103,33 @@ private:
     /// block before.
     static constexpr int light_blocks = 1024;
 
-    /// Whether light path i is pixel i's, drawn from its sampler and joined to its camera
-    /// paths: with one light path a pixel (the default), so that the connections of a
-    /// pixel's passes take its sampler's stratified points.
-    [[nodiscard]] static bool paired_with_pixels(const RenderConfig& config, std::size_t count) noexcept
+    /// The squares of side x side pixels that cover an image of config's size.
+    [[nodiscard]] static std::size_t squares(const RenderConfig& config, int side) noexcept
     {
-        return count == std::size_t(config.width) * std::size_t(config.height);
+        return ((std::size_t(config.width) + std::size_t(side) - 1) / std::size_t(side)) * ((std::size_t(config.height) + std::size_t(side) - 1) / std::size_t(side));
     }
 
-    /// The pixel a camera ray was shot through (the image position it projects to),
-    /// within the image.
-    [[nodiscard]] static std::size_t pixel_of(const CameraRays<T>& rays, const Ray<T>& ray, const LightPaths& light) noexcept
+    /// The side of the squares of pixels whose camera paths a light path is joined to, with
+    /// `count` light paths a pass: 1, 2 or 4 where count is the number of such squares
+    /// (one a pixel, the default's choices), light path i drawn from the sampler of
+    /// square i's first pixel, so that the connections of a pixel's passes take stratified
+    /// points; 0 for another count (each camera path joined to any light path, at random).
+    [[nodiscard]] static int pairing_side(const RenderConfig& config, std::size_t count) noexcept
+    {
+        for (const int side : pairing_sides)
+            if (count == squares(config, side)) return side;
+        return 0;
+    }
+
+    /// The light path a camera ray is joined to with pairing_side > 0: that of the square
+    /// of the pixel it was shot through (the image position it projects to).
+    [[nodiscard]] static std::size_t square_of(const CameraRays<T>& rays, const Ray<T>& ray, const LightPaths& light) noexcept
     {
         const auto seen = rays.thin_lens() ? rays.project(ray.origin + ray.direction, ray.origin) : rays.project(ray.origin + ray.direction);
         if (!seen) return 0;
-        const auto x = std::size_t(std::clamp(seen->x, T(0), T(light.width - 1)));
-        const auto y = std::size_t(std::clamp(seen->y, T(0), T(light.height - 1)));
-        return y * std::size_t(light.width) + x;
+        const auto x = std::size_t(std::clamp(seen->x, T(0), T(light.width - 1))) / std::size_t(light.side);
+        const auto y = std::size_t(std::clamp(seen->y, T(0), T(light.height - 1))) / std::size_t(light.side);
+        return y * light.squares_wide + x;
     }
 
     /// Whether a contribution of strategy (s, t) counts, and with which of its weights.
@@ -14237,7 +14350,8 @@ private:
     {
         LightPaths light;
         light.count = T(count);
-        light.per_pixel = paired_with_pixels(config, count);
+        light.side = pairing_side(config, count);
+        light.squares_wide = light.side > 0 ? (std::size_t(config.width) + std::size_t(light.side) - 1) / std::size_t(light.side) : 0;
         light.width = config.width;
         light.height = config.height;
         const bool merging = config_.method != BidirectionalMethod::bdpt;
@@ -14261,7 +14375,6 @@ private:
         buffers.reserve(workers);
         for (unsigned k = 0; k < workers; ++k) buffers.emplace_back(config.width, config.height, window);
         const std::uint64_t seed = detail::sample_seed(config.seed ^ 0x9e3779b97f4a7c15ULL, pass);
-        const bool per_pixel = paired_with_pixels(config, count);
         // Under Sobol's points the light paths are laid over the image in ZSobol's order
         // whatever the camera's layout: a pass's light paths are then strided points of one
         // sequence, stratified as a set, which the splats and merges of every pixel share
@@ -14275,14 +14388,15 @@ private:
         detail::parallel_blocks(blocks, config.threads, [&](std::size_t b, unsigned worker) {
             for (std::size_t i = b * block; i < std::min(count, (b + 1) * block); ++i) {
                 const std::size_t before = lists[b].size();
-                // One light path a pixel: sample `pass` of its pixel's place in the layout, in
-                // blocks of dimensions its camera path never reads, and a PCG stream of its
-                // own; else an independent stream.
-                Random rng = per_pixel ? Random(Sampler(layout.sampler, detail::pixel_key(layout, std::uint32_t(i % std::size_t(config.width)),
-                                                                                             std::uint32_t(i / std::size_t(config.width))),
-                                                        std::uint32_t(pass)),
-                                                Pcg32(seed, std::uint64_t(i)))
-                                       : Random(seed, std::uint64_t(i));
+                // One light path a square of pixels: sample `pass` of its first pixel's place
+                // in the layout, in blocks of dimensions its camera path never reads, and a
+                // PCG stream of its own; else an independent stream.
+                const auto side = std::size_t(light.side);
+                Random rng = side > 0 ? Random(Sampler(layout.sampler,
+                                                       detail::pixel_key(layout, std::uint32_t(i % light.squares_wide * side), std::uint32_t(i / light.squares_wide * side)),
+                                                       std::uint32_t(pass)),
+                                               Pcg32(seed, std::uint64_t(i)))
+                                      : Random(seed, std::uint64_t(i));
                 int band = 0;
                 if constexpr (SceneT::has_dispersion) {
                     band = pair_band(band_seed, i, pass);
@@ -14421,7 +14535,7 @@ private:
         // The light subpath this camera path is joined to: its pixel's, or with a number of
         // light paths of its own, any one, uniformly (each is a draw of the light subpaths'
         // distribution independent of the camera path).
-        const std::size_t paired = light.per_pixel ? pixel_of(rays, ray, light) : std::min(std::size_t(rng.uniform<T>() * light.count), light.ends.size() - 2);
+        const std::size_t paired = light.side > 0 ? square_of(rays, ray, light) : std::min(std::size_t(rng.uniform<T>() * light.count), light.ends.size() - 2);
         PathState state;
         state.beta = Rgb<T>(T(1));
         const T camera = camera_pdf(rays, ray.direction);
@@ -14429,11 +14543,13 @@ private:
         state.mis = VcmMis<T>::camera_start(light.count, camera);
         if constexpr (SceneT::has_dispersion) state.band = light.bands[paired];
         Vec3<T> previous = ray.origin;
+        std::uint64_t work = 0; // rays and merges, counted for a pilot (LightPaths::work)
         walk(ray, scene_->media_at(ray.origin), state, Transport::radiance, rng, 0,
              [&]<class V>(const V& vertex, const Place& place, const Vec3<T>& d, T distance, T kept) -> std::optional<Vec3<T>> {
                  const T cos = place.cos(d);
                  if (!(cos > T(0))) return std::nullopt;
                  ++state.length;
+                 ++work;
                  state.mis.arrive(distance * distance, cos);
                  const int t = state.length + 1;
                  if constexpr (requires { typename V::material_type; }) {
@@ -14462,6 +14578,7 @@ private:
                      sum += in_band(state.beta * light_samples(vertex, place, state, light, rng), state.split());
                      sum += state.beta * connections(vertex, place, state, light, paired);
                      if (config_.method == BidirectionalMethod::vcm && !config_.only) sum += state.beta * merges(vertex, place, state, light, paired);
+                     work += 1 + (light.ends[paired + 1] - light.ends[paired]) + (config_.method == BidirectionalMethod::vcm ? 1 : 0);
                  }
                  previous = place.point;
                  return scatter(vertex, place, state, light, rng, kept);
@@ -14488,6 +14605,7 @@ private:
                      }
                  });
              });
+        if (light.work) light.work->fetch_add(work + 1, std::memory_order_relaxed);
         return sum;
     }
 
