@@ -60,6 +60,18 @@ TEST_CASE("the bidirectional furnace: inside a diffuse sphere of albedo 0.5 lit 
         const Film film = render(camera, estimator, {.width = 32, .height = 32, .spp = int(test::samples(64)), .progress = false});
         CHECK(mean_red(film) == doctest::Approx(1.0).epsilon(test::resolved(0.005)));
     }
+    // With connections for a share of the camera paths (and fewer light paths), the
+    // weights counting them that share of the time: still 1.0. (At 0.25 and 1/16 with 64
+    // light paths, 0.9996 to 1.0005 over the methods and shares.)
+    for (const BidirectionalMethod method : {BidirectionalMethod::bdpt, BidirectionalMethod::vcm})
+        for (const double share : {0.25, 0.0625}) {
+            CAPTURE(method_name(method));
+            CAPTURE(share);
+            const Bidirectional estimator(scene, {.method = method, .light_paths = 64, .connections = share});
+            const Film film = render(camera, estimator, {.width = 32, .height = 32, .spp = int(test::samples(64)), .progress = false});
+            MESSAGE(method_name(method), " connections ", share, ": ", mean_red(film));
+            CHECK(mean_red(film) == doctest::Approx(1.0).epsilon(test::resolved(0.005)));
+        }
 }
 
 TEST_CASE("every BDPT strategy alone reads the area-lit furnace's direct light (1.0), and the strategies of longer paths agree with each other")
@@ -96,6 +108,14 @@ TEST_CASE("every BDPT strategy alone reads the area-lit furnace's direct light (
     for (int s = 0; s <= 3; ++s) {
         CAPTURE(s);
         CHECK(strategy_mean(s, 4 - s, false, config) == doctest::Approx(longest).epsilon(test::resolved(s == 3 ? 0.04 : 0.02)));
+    }
+    // A connection made for a quarter of the camera paths, over its probability, alone.
+    {
+        BidirectionalConfig quarter = three;
+        quarter.only = Strategy{2, 2};
+        quarter.weighted = false;
+        quarter.connections = 0.25;
+        CHECK(mean_red(render(lamp_camera, Bidirectional(scene, quarter), config)) == doctest::Approx(longest).epsilon(test::resolved(0.04)));
     }
     // The weighted strategies' images add up to the whole, each render taking the same samples.
     RenderConfig few = config;
@@ -294,10 +314,11 @@ TEST_CASE("the light paths a pass, chosen by a pilot: fewer in a box lit by a ce
                                  Object{Quad<float>({2.13f, 5.549f, -3.32f}, {1.30f, 0, 0}, {0, 0, 1.05f}), Emissive<float>{.radiance = Rgb<float>(37)}}};
         for (const BidirectionalMethod method : {BidirectionalMethod::bdpt, BidirectionalMethod::vcm}) {
             CAPTURE(method_name(method));
-            const std::size_t chosen = Bidirectional(scene, {.method = method}).chosen_light_paths(box_camera, config);
-            CHECK(chosen < pixels);
-            const double all = pass_variance(scene, box_camera, {.method = method, .light_paths = pixels}, config, passes);
-            const double fewer = pass_variance(scene, box_camera, {.method = method, .light_paths = chosen}, config, passes);
+            const auto plan = Bidirectional(scene, {.method = method}).light_path_plan(box_camera, config);
+            CHECK(plan.light_paths < pixels);
+            const double all = pass_variance(scene, box_camera, {.method = method, .light_paths = pixels, .connections = 1}, config, passes);
+            const double fewer = pass_variance(scene, box_camera, {.method = method, .light_paths = plan.light_paths, .connections = plan.connections}, config, passes);
+            MESSAGE(method_name(method), ": ", plan.light_paths, " light paths, connections ", plan.connections, ", variance ", fewer / all, " times");
             CHECK(fewer < 1.2 * all);
         }
     }
@@ -309,9 +330,11 @@ TEST_CASE("the light paths a pass, chosen by a pilot: fewer in a box lit by a ce
         const auto scene = Scene{Lights{PointLight<float>{.position = {2.78f, 5.35f, -2.60f}, .intensity = Rgb<float>(20)}}, box_walls()};
         for (const BidirectionalMethod method : {BidirectionalMethod::bdpt, BidirectionalMethod::vcm}) {
             CAPTURE(method_name(method));
-            CHECK(Bidirectional(scene, {.method = method}).chosen_light_paths(box_camera, config) == pixels);
-            const double all = pass_variance(scene, box_camera, {.method = method, .light_paths = pixels}, config, passes);
-            const double quarter = pass_variance(scene, box_camera, {.method = method, .light_paths = pixels / 4}, config, passes);
+            const auto plan = Bidirectional(scene, {.method = method}).light_path_plan(box_camera, config);
+            CHECK(plan.light_paths == pixels);
+            CHECK(plan.connections == 1);
+            const double all = pass_variance(scene, box_camera, {.method = method, .light_paths = pixels, .connections = 1}, config, passes);
+            const double quarter = pass_variance(scene, box_camera, {.method = method, .light_paths = pixels / 4, .connections = 1}, config, passes);
             CHECK(quarter > 1.5 * all);
         }
     }
@@ -412,15 +435,16 @@ RandomPath random_path(Random& rng, int k, bool point_light, bool with_delta)
 
 /// Every strategy's weight of a path by the balance heuristic over its densities, written
 /// out: strategy s of the connections (s light vertices; the light tracer's, s = k,
-/// counted N times a camera path) and merge i at inner vertex v_i, each the product of the
-/// densities per area of the vertices each side gives (v_0 by the light's emission, or by
-/// its light sample for s = 1), a merge's vertex given by both and counted eta times.
+/// counted N times a camera path; those with s >= 2 and t >= 2 `connect` times) and merge i
+/// at inner vertex v_i, each the product of the densities per area of the vertices each
+/// side gives (v_0 by the light's emission, or by its light sample for s = 1), a merge's
+/// vertex given by both and counted eta times.
 struct Balance {
     std::vector<double> connect; ///< by s, 0 to k
     std::vector<double> merge;   ///< by i, 1 to k - 1 (0 where none)
 };
 
-Balance balance(const RandomPath& p, double light_paths, double eta)
+Balance balance(const RandomPath& p, double light_paths, double eta, double connect)
 {
     const int k = p.k;
     const auto s_ = [](int i) { return std::size_t(i); };
@@ -444,6 +468,7 @@ Balance balance(const RandomPath& p, double light_paths, double eta)
         for (int i = 0; i < s; ++i) density *= i == 0 && s == 1 ? direct_area : fwd[s_(i)];
         for (int i = s; i <= k - 1; ++i) density *= bwd[s_(i)];
         if (s == k) density *= light_paths;
+        if (s >= 2 && s <= k - 1) density *= connect;
         out.connect.push_back(density);
         total += density;
     }
@@ -463,7 +488,7 @@ Balance balance(const RandomPath& p, double light_paths, double eta)
 
 /// The same weights as Bidirectional computes them: each subpath's VcmMis quantities
 /// vertex by vertex, and each strategy's weight from those and the densities where the
-/// subpaths meet.
+/// subpaths meet (surface.connect the connections' share of the camera paths).
 Balance recursive(const RandomPath& p, double light_paths, VcmMis<double>::Pass surface)
 {
     const int k = p.k;
@@ -472,7 +497,7 @@ Balance recursive(const RandomPath& p, double light_paths, VcmMis<double>::Pass 
     // Each vertex's: a surface's, or eta times its ratio.
     const auto at = [&](int i) {
         const double r = surface.vm > 0 ? p.ratio[s_(i)] : 1.0;
-        return Mis::Pass{.vm = surface.vm * r, .vc = surface.vc, .ratio = r};
+        return Mis::Pass{.vm = surface.vm * r, .vc = surface.vc, .ratio = r, .connect = surface.connect};
     };
     const Mis::Pass pass = surface;
     // The light subpath: its quantities at v_0 .. v_(k-1).
@@ -486,7 +511,7 @@ Balance recursive(const RandomPath& p, double light_paths, VcmMis<double>::Pass 
     }
     // The camera subpath: its quantities at v_(k-1) .. v_0.
     std::vector<Mis> camera(s_(k));
-    Mis c = Mis::camera_start(light_paths, p.pc);
+    Mis c = Mis::camera_start(light_paths, p.pc, pass.connect);
     for (int i = k - 1; i >= 0; --i) {
         c.arrive(p.d2[s_(i)], p.a[s_(i)]);
         camera[s_(i)] = c;
@@ -497,7 +522,7 @@ Balance recursive(const RandomPath& p, double light_paths, VcmMis<double>::Pass 
     out.connect.assign(s_(k + 1), 0.0);
     out.merge.assign(s_(k), 0.0);
     const auto delta = [&](int i) { return i >= 1 && i <= k - 1 && p.delta[s_(i)]; };
-    if (!p.point_light) out.connect[0] = camera[0].met_light_weight(p.direct * p.a[0] / p.d2[0], emission);
+    if (!p.point_light) out.connect[0] = camera[0].met_light_weight(p.direct * p.a[0] / p.d2[0], emission, pass.connect);
     if (!delta(1) || k == 1)
         out.connect[1] = camera[1].light_sample_weight(p.direct, p.point_light, emission, p.b[0], p.a[0], p.rv[1], p.fw[1], at(1));
     for (int s = 2; s <= k - 1; ++s) {
@@ -517,8 +542,8 @@ TEST_CASE("the MIS weights of every strategy of random paths are the balance heu
 {
     // Paths of 2 to 7 segments with random lengths, cosines and lobe densities, an area
     // or a point light, some vertices delta; VcmMis's recursive weights against the
-    // balance heuristic written out over every strategy's density (connections, light
-    // tracing counted N times, merges eta times).
+    // balance heuristic written out over every strategy's density (connections between
+    // inner vertices counted `connect` times, light tracing N times, merges eta times).
     Random rng(11, 3);
     const double light_paths = 4096;
     int paths = 0;
@@ -530,8 +555,10 @@ TEST_CASE("the MIS weights of every strategy of random paths are the balance heu
                     for (int n = 0; n < 50; ++n) {
                         const RandomPath p = random_path(rng, k, point_light, with_delta);
                         const double eta = vcm ? 0.05 * 3.14159 * 0.01 * light_paths * (0.2 + rng.uniform<double>()) : 0.0;
-                        const VcmMis<double>::Pass pass{.vm = eta, .vc = vcm ? 1 / eta : 1 / (0.05 * 3.14159 * 0.01 * light_paths)};
-                        const Balance expected = balance(p, light_paths, eta);
+                        // Connections for every camera path, a quarter, or a share at random.
+                        const double connect = n % 3 == 0 ? 1.0 : n % 3 == 1 ? 0.25 : 0.05 + 0.95 * rng.uniform<double>();
+                        const VcmMis<double>::Pass pass{.vm = eta / connect, .vc = vcm ? connect / eta : connect / (0.05 * 3.14159 * 0.01 * light_paths), .connect = connect};
+                        const Balance expected = balance(p, light_paths, eta, connect);
                         const Balance got = recursive(p, light_paths, pass);
                         double sum = 0;
                         for (std::size_t s = 0; s < expected.connect.size(); ++s) {

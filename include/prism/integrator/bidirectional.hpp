@@ -28,7 +28,9 @@
 // unbiased, and these do, the same functions of the path for every strategy.
 // By default light path i is pixel i's: drawn from its sampler (laid over the image in
 // ZSobol's order) and joined to its camera paths; or, where a pilot finds the light paths
-// worth less than they cost, square i's, of 2 x 2 or 4 x 4 pixels (chosen_light_paths). Deterministic: every number is a
+// and connections worth less than they cost, square i's, of 4 x 4 or 16 x 16 pixels, and
+// perhaps a quarter or a sixteenth of the camera paths joined to theirs (light_path_plan;
+// the weights count connections made that share of the time). Deterministic: every number is a
 // function of (seed, pass, pixel or path), splats go to exact sums per thread; the same
 // bits for any thread count, crop, range of passes or MPI rank.
 //
@@ -139,12 +141,19 @@ struct BidirectionalConfig {
     /// In (0, 1): how much of the radius's area each pass keeps (Knaus and Zwicker 2011's alpha).
     double alpha = 0.75;
     /// Light subpaths per pass; 0: chosen for the scene and image by a pilot
-    /// (Bidirectional::chosen_light_paths): one a pixel, or one a square of 2 x 2 or 4 x 4
+    /// (Bidirectional::light_path_plan): one a pixel, or one a square of 4 x 4 or 16 x 16
     /// pixels where the light paths cost more than their light is worth (an area light in
     /// a diffuse room, whose light the path tracer's strategies find nearly all of). Light
     /// path i is then pixel (or square) i's, joined to its camera paths; another count's
     /// light paths are joined to camera paths at random.
     std::size_t light_paths = 0;
+    /// The share of camera paths joined to their light path by connections (s >= 2,
+    /// t >= 2), in (0, 1]: each camera path is, with this probability, and the weights
+    /// count the connections as made that many times a camera path (a light sample, a
+    /// bounce meeting a light, light tracing and merging as made always). 0: chosen by the
+    /// pilot with the light paths (1, 1/4 or 1/16: less where a connection's shadow rays
+    /// cost more than its light is worth).
+    double connections = 0.0;
     /// Only this strategy's estimates (connections only; merges count none): for tests,
     /// and to see what each strategy brings. `weighted`: with its MIS weight (the
     /// strategies' images then add up to the whole), else alone (each an unbiased estimate
@@ -177,10 +186,15 @@ struct VcmMis {
     /// surface; and eta over a surface vertex's. (d^VM is counted in a surface's merges,
     /// d^VC / eta_surface, and a merge at a vertex of another kind takes it by the ratio;
     /// on surfaces alone the ratio is exactly 1, Georgiev's recursion as written.)
+    /// With connections made for a share `connect` of the camera paths, every count is
+    /// taken against theirs: eta / connect, and a light sample's, a bounce meeting a light's
+    /// and light tracing's counts over connect (light_start, camera_start and the weights
+    /// of those strategies).
     struct Pass {
-        T vm = T(0);    ///< eta at the vertex: merging's weight against a connection there
-        T vc = T(0);    ///< 1 / eta at a surface vertex
+        T vm = T(0);    ///< eta at the vertex (over connect): merging's weight against a connection there
+        T vc = T(0);    ///< 1 / vm at a surface vertex
         T ratio = T(1); ///< vm vc: eta at the vertex over a surface vertex's (1 without merging)
+        T connect = T(1); ///< the share of camera paths joined to their light path (BidirectionalConfig::connections)
     };
 
     /// A light subpath's start: the light chosen with probability q drew its point with
@@ -190,7 +204,8 @@ struct VcmMis {
     /// light's own density toward the first hit is completed there (first_hit).
     [[nodiscard]] static VcmMis light_start(T q, T pdf_area, T pdf_direction, T cos, bool from_infinity, bool delta, Pass pass) noexcept
     {
-        const T pdf = q * pdf_area * pdf_direction;
+        // (A light sample and a bounce meeting the light, counted against the connections.)
+        const T pdf = q * pdf_area * pdf_direction * pass.connect;
         VcmMis m;
         // (31)-(33) begun, delta lights as (48)-(50): the light sample that would find the
         // light's vertex over the emission's density; a delta light's vertex no bounce finds.
@@ -201,9 +216,9 @@ struct VcmMis {
         return m;
     }
 
-    /// A camera subpath's start: N light paths a pass, and the camera's density of its
-    /// ray per steradian.
-    [[nodiscard]] static VcmMis camera_start(T light_paths, T camera_pdf) noexcept { return {light_paths / camera_pdf, T(0), T(0)}; }
+    /// A camera subpath's start: N light paths a pass, the camera's density of its ray per
+    /// steradian, and the share of camera paths joined to their light path (Pass::connect).
+    [[nodiscard]] static VcmMis camera_start(T light_paths, T camera_pdf, T connect = T(1)) noexcept { return {light_paths / (camera_pdf * connect), T(0), T(0)}; }
 
     /// Arriving at a vertex `distance2` (squared) along the segment, at cosine `cos` to
     /// its true normal: the report's (31)-(33) completed now the segment is known.
@@ -245,8 +260,9 @@ struct VcmMis {
     /// s = 0: a camera subpath (these quantities) meets a light, which a light sample from
     /// the vertex before finds with density `direct` per unit area (per steradian from
     /// infinity) and the light paths leave by this way with density `emission` (the
-    /// light's probability, area and direction: pdf_area pdf_direction), (42)-(43).
-    [[nodiscard]] T met_light_weight(T direct, T emission) const noexcept { return T(1) / (T(1) + direct * dvcm + emission * dvc); }
+    /// light's probability, area and direction: pdf_area pdf_direction), (42)-(43);
+    /// `connect` Pass::connect.
+    [[nodiscard]] T met_light_weight(T direct, T emission, T connect = T(1)) const noexcept { return T(1) / (T(1) + direct * dvcm + connect * emission * dvc); }
 
     /// s = 1: a camera vertex (these quantities) takes a light sample of density `direct`
     /// per steradian (d^2 for a point light, 1 for a parallel one: `delta`), at cosines
@@ -257,7 +273,7 @@ struct VcmMis {
     [[nodiscard]] T light_sample_weight(T direct, bool delta, T emission, T cos_camera, T cos_light, T bsdf_forward, T bsdf_reverse, Pass pass) const noexcept
     {
         const T w_light = delta ? T(0) : bsdf_forward / direct;
-        const T w_camera = emission * cos_camera / (direct * cos_light) * (pass.vm + dvcm + dvc * bsdf_reverse);
+        const T w_camera = pass.connect * emission * cos_camera / (direct * cos_light) * (pass.vm + dvcm + dvc * bsdf_reverse);
         return T(1) / (w_light + T(1) + w_camera);
     }
 
@@ -281,7 +297,7 @@ struct VcmMis {
     /// (46)-(47).
     [[nodiscard]] T splat_weight(T camera_area_pdf, T light_paths, T bsdf_reverse, Pass pass) const noexcept
     {
-        return T(1) / (T(1) + camera_area_pdf / light_paths * (pass.vm + dvcm + dvc * bsdf_reverse));
+        return T(1) / (T(1) + pass.connect * camera_area_pdf / light_paths * (pass.vm + dvcm + dvc * bsdf_reverse));
     }
 
     /// A merge of a light vertex (`light`, arrived along d) at a camera vertex
@@ -331,6 +347,8 @@ public:
         if (!(config.volume_radius >= 0.0 && config.volume_radius < std::numeric_limits<double>::infinity()))
             detail::throw_invalid("BidirectionalConfig volume_radius must be finite and >= 0, got ", config.volume_radius);
         if (!(config.merge_weight > 0.0 && config.merge_weight <= 1.0)) detail::throw_invalid("BidirectionalConfig merge_weight must be in (0, 1], got ", config.merge_weight);
+        if (!(config.connections >= 0.0 && config.connections <= 1.0))
+            detail::throw_invalid("BidirectionalConfig connections must be in (0, 1], or 0 for the pilot's choice, got ", config.connections);
         if (config.only && (config.only->s < 0 || config.only->t < 1))
             detail::throw_invalid("BidirectionalConfig only must have s >= 0 and t >= 1, got (", config.only->s, ", ", config.only->t, ")");
         scene.for_each_light([&]<class L>(const L& light) {
@@ -394,10 +412,11 @@ public:
         const PixelWindow window = detail::render_window(config);
         if (sums.width() != config.width || sums.height() != config.height || !sums.window().contains(window))
             detail::throw_invalid("Bidirectional: the Accumulation does not hold the RenderConfig's window");
-        const std::size_t paths = config_.light_paths > 0 ? config_.light_paths : chosen_light_paths(camera, config);
-        if (paths >= std::numeric_limits<std::uint32_t>::max()) detail::throw_invalid("Bidirectional: ", paths, " light paths a pass overflow a 32-bit index");
+        const LightPathPlan plan = light_path_plan(camera, config);
+        if (plan.light_paths >= std::numeric_limits<std::uint32_t>::max())
+            detail::throw_invalid("Bidirectional: ", plan.light_paths, " light paths a pass overflow a 32-bit index");
         for (std::uint64_t pass = passes.first; pass < passes.last; ++pass) {
-            const LightPaths light = trace_light_paths(sums, rays, window, config, pass, paths);
+            const LightPaths light = trace_light_paths(sums, rays, window, config, pass, plan);
             const CameraPaths eye{this, &light, &rays};
             RenderConfig pass_render = config;
             // Pass p takes each pixel's sample p of one sequence (per-pixel Sobol under
@@ -412,28 +431,40 @@ public:
         }
     }
 
-    /// The light paths a pass takes by default (BidirectionalConfig::light_paths 0) for an
-    /// image of config's size: one a pixel, or one a square of 2 x 2 or 4 x 4 pixels
-    /// (pairing_side), whichever a pilot says is the most efficient. The pilot renders the whole frame (whatever the
-    /// crop or range of passes) at no more than pilot_pixels pixels, pilot_passes passes
-    /// with each count, and scores each by its variance (a pixel's red, green and blue from
-    /// pass to pass, summed over the pilot's pixels and the channels: dispersion's colour
-    /// noise counts) times its work a pass (rays traced and merges looked
-    /// up, counted: a deterministic function of the scene, camera, size and seed, as every
-    /// bit of the image is). A fewer count must win by a factor of `pilot_margin`, as the
-    /// pilot's few passes see a light path's rare, bright paths (a caustic) less often
-    /// than the render does. One a pixel in a scene with a point, spot or directional light
-    /// (the sun): the paths that end S+ L there are found by light paths alone (light
-    /// tracing and merging), often rare and bright (a caustic) where a pilot's few passes
-    /// cannot weigh them (under the sun, `sun_caustic`'s pilot chose fewer, and its picture's
-    /// shadow and caustic came out grainier at its pass count); and one a pixel
-    /// for merging alone and for a single strategy.
-    [[nodiscard]] std::size_t chosen_light_paths(const Camera<T>& camera, const RenderConfig& config) const
+    /// A pass's light paths: how many, and the share of camera paths joined to theirs by
+    /// connections.
+    struct LightPathPlan {
+        std::size_t light_paths = 0; ///< light subpaths a pass
+        double connections = 1.0;    ///< in (0, 1]
+    };
+
+    /// The light paths of a pass for an image of config's size: BidirectionalConfig's
+    /// light_paths and connections, and where either is 0 a pilot's choice. The light paths
+    /// are then one a pixel, or one a square of 4 x 4 or 16 x 16 pixels (pairing_side), and
+    /// the connections made for every camera path, a quarter or a sixteenth of them
+    /// (pilot_connections): whichever a pilot
+    /// says is the most efficient. The pilot renders the whole frame (whatever the crop or
+    /// range of passes) at no more than pilot_pixels pixels, pilot_passes passes with each
+    /// choice, and scores each by its variance (a pixel's red, green and blue from pass to
+    /// pass, summed over the pilot's pixels and the channels: dispersion's colour noise
+    /// counts) times its work a pass (rays traced and merges looked up, counted: a
+    /// deterministic function of the scene, camera, size and seed, as every bit of the image
+    /// is). Another choice must beat one light path a pixel joined to every camera path by
+    /// a factor of `pilot_margin`, as the pilot's few passes see a light path's rare, bright
+    /// paths (a caustic) less often than the render does. That one, without a pilot, in a
+    /// scene with a point, spot or directional light (the sun): the paths that end S+ L
+    /// there are found by light paths alone (light tracing and merging), often rare and
+    /// bright (a caustic) where a pilot's few passes cannot weigh them (under the sun,
+    /// `sun_caustic`'s pilot chose fewer, and its picture's shadow and caustic came out
+    /// grainier at its pass count); and for merging alone and for a single strategy.
+    [[nodiscard]] LightPathPlan light_path_plan(const Camera<T>& camera, const RenderConfig& config) const
     {
         const std::size_t pixels = std::size_t(config.width) * std::size_t(config.height);
+        LightPathPlan plan{config_.light_paths > 0 ? config_.light_paths : pixels, config_.connections > 0.0 ? config_.connections : 1.0};
+        if (config_.light_paths > 0 && config_.connections > 0.0) return plan;
         bool delta_lights = false;
         scene_->for_each_light([&]<class L>(const L&) { delta_lights = delta_lights || is_delta_light<L>; });
-        if (delta_lights || config_.method == BidirectionalMethod::merging || config_.only || pixels < 16) return pixels;
+        if (delta_lights || config_.method == BidirectionalMethod::merging || config_.only || pixels < 16) return plan;
         const std::size_t shrink = std::size_t(std::ceil(std::sqrt(double(pixels) / double(pilot_pixels))));
         RenderConfig pilot = config;
         pilot.width = int((std::size_t(config.width) + shrink - 1) / shrink);
@@ -452,53 +483,64 @@ public:
         const CameraRays<T> rays = camera.rays(pilot.width, pilot.height);
         const PixelWindow whole = PixelWindow::whole(pilot.width, pilot.height);
         const std::size_t n = std::size_t(pilot.width) * std::size_t(pilot.height);
-        int best = 1;
-        double best_score = 0.0;
+        // The pilot's count of light paths for a choice of square (the given number scaled
+        // to the pilot's pixels where one was given), and the image's.
+        const auto pilot_paths = [&](int side) {
+            return config_.light_paths > 0 ? std::max<std::size_t>(1, std::size_t(double(config_.light_paths) * double(n) / double(pixels))) : squares(pilot, side);
+        };
+        double best_score = -1.0;
         for (const int side : pairing_sides) {
-            std::vector<double> first(3 * n, 0.0), second(3 * n, 0.0);
-            std::atomic<std::uint64_t> work{0};
-            for (int pass = 0; pass < pilot_passes; ++pass) {
-                RenderConfig one = pilot;
-                one.seed = detail::sample_seed(pilot.seed, std::uint64_t(pass) + 1);
-                Accumulation sums(pilot.width, pilot.height, whole);
-                LightPaths light = trace_light_paths(sums, rays, whole, one, 0, squares(one, side));
-                // A light path's work: its first ray, and a ray on and a splat from each
-                // vertex kept (and its place in the grid, merging), each light_work times a
-                // camera path's ray.
-                work += light_work * (std::uint64_t(light.count) + light.vertices.size() * (config_.method == BidirectionalMethod::vcm ? 3 : 2));
-                light.work = &work;
-                render_into(sums, camera, CameraPaths{this, &light, &rays}, one);
-                for (int y = 0; y < pilot.height; ++y)
-                    for (int x = 0; x < pilot.width; ++x) {
-                        const double w = double(sums.weight(x, y));
-                        for (std::size_t c = 0; c < 3; ++c) {
-                            const double v = w > 0.0 ? sums.sum(x, y, c).value() / w : 0.0;
-                            const std::size_t i = 3 * (std::size_t(y) * std::size_t(pilot.width) + std::size_t(x)) + c;
-                            first[i] += v;
-                            second[i] += v * v;
+            if (config_.light_paths > 0 && side > 1) break;
+            for (const double connect : pilot_connections) {
+                if (config_.connections > 0.0 && connect < 1.0) break;
+                const double share = config_.connections > 0.0 ? config_.connections : connect;
+                std::vector<double> first(3 * n, 0.0), second(3 * n, 0.0);
+                std::atomic<std::uint64_t> work{0};
+                for (int pass = 0; pass < pilot_passes; ++pass) {
+                    RenderConfig one = pilot;
+                    one.seed = detail::sample_seed(pilot.seed, std::uint64_t(pass) + 1);
+                    Accumulation sums(pilot.width, pilot.height, whole);
+                    LightPaths light = trace_light_paths(sums, rays, whole, one, 0, {pilot_paths(side), share});
+                    // A light path's work: its first ray, and a ray on and a splat from each
+                    // vertex kept (and its place in the grid, merging), each light_work times
+                    // a camera path's ray.
+                    work += light_work * (std::uint64_t(light.count) + light.vertices.size() * (config_.method == BidirectionalMethod::vcm ? 3 : 2));
+                    light.work = &work;
+                    render_into(sums, camera, CameraPaths{this, &light, &rays}, one);
+                    for (int y = 0; y < pilot.height; ++y)
+                        for (int x = 0; x < pilot.width; ++x) {
+                            const double w = double(sums.weight(x, y));
+                            for (std::size_t c = 0; c < 3; ++c) {
+                                const double v = w > 0.0 ? sums.sum(x, y, c).value() / w : 0.0;
+                                const std::size_t i = 3 * (std::size_t(y) * std::size_t(pilot.width) + std::size_t(x)) + c;
+                                first[i] += v;
+                                second[i] += v * v;
+                            }
                         }
-                    }
-            }
-            double variance = 0.0;
-            for (std::size_t i = 0; i < 3 * n; ++i) variance += std::max(0.0, second[i] - first[i] * first[i] / pilot_passes) / (pilot_passes - 1);
-            const double score = variance * double(work.load());
-            if (side == 1) best_score = score;
-            else if (score * pilot_margin < best_score) {
-                best = side;
-                best_score = score * pilot_margin;
+                }
+                double variance = 0.0;
+                for (std::size_t i = 0; i < 3 * n; ++i) variance += std::max(0.0, second[i] - first[i] * first[i] / pilot_passes) / (pilot_passes - 1);
+                const double score = variance * double(work.load()) * (best_score < 0.0 ? 1.0 : pilot_margin);
+                if (best_score < 0.0 || score < best_score) {
+                    best_score = score;
+                    plan = {config_.light_paths > 0 ? config_.light_paths : squares(config, side), share};
+                }
             }
         }
-        return squares(config, best);
+        return plan;
     }
 
-    /// The pilot's largest image, in pixels (chosen_light_paths).
-    static constexpr std::size_t pilot_pixels = 2048;
+    /// The pilot's largest image, in pixels (light_path_plan).
+    static constexpr std::size_t pilot_pixels = 1024;
     /// The pilot's passes with each choice of light paths.
     static constexpr int pilot_passes = 8;
     /// The factor by which fewer light paths must win the pilot.
     static constexpr double pilot_margin = 1.25;
     /// The sides of the squares of pixels a pilot chooses a light path for (pairing_side).
-    static constexpr std::array<int, 3> pairing_sides{1, 2, 4};
+    static constexpr std::array<int, 3> pairing_sides{1, 4, 16};
+    /// The shares of camera paths joined to their light path a pilot chooses from, the
+    /// first 1.
+    static constexpr std::array<double, 3> pilot_connections{1.0, 0.25, 0.0625};
     /// What a light path's ray costs in a camera path's: the light paths of one pass
     /// on the area-lit Cornell box (bench_methods area bdpt, 256 x 256) took 0.092 s of
     /// 0.17 s for a third of its rays (2.4 vertices a path, a ray and a splat each;
@@ -558,6 +600,20 @@ private:
         }
     };
 
+    /// A light-tracing splat: its pixel and what it adds there.
+    struct Splat {
+        int x, y;
+        std::array<ExactSum, 3> sum;
+    };
+
+    /// A worker's splats, added to the image's sums once the light paths are traced (in
+    /// any order, as the sums are exact: the same bits), and the values it left out. (A
+    /// pass of few light paths then pays for its splats, not for an image of sums a worker.)
+    struct Splats {
+        std::vector<Splat> list;
+        std::size_t rejected = 0;
+    };
+
     /// A pass's light subpaths: their vertices path by path, and VCM's grids of them.
     struct LightPaths {
         std::vector<LightVertex> vertices;
@@ -575,7 +631,8 @@ private:
         T volume_normalization = T(0); ///< 1 / (4/3 pi r^3 N)
         int side = 0;              ///< light path i is square i's, of side x side pixels (0: joined at random: pairing_side)
         std::size_t squares_wide = 0; ///< the squares across the image
-        std::atomic<std::uint64_t>* work = nullptr; ///< in a pilot: the camera paths' rays and merges, counted (chosen_light_paths)
+        std::atomic<std::uint64_t>* work = nullptr; ///< in a pilot: the camera paths' rays and merges, counted (light_path_plan)
+        T connect = T(1);          ///< the share of camera paths joined to it by connections
         int width = 0, height = 0; ///< the image's size
     };
 
@@ -607,6 +664,8 @@ private:
     /// camera path's, so the two never read the same dimensions; its emission reads the
     /// block before.
     static constexpr int light_blocks = 1024;
+    /// The block a camera path draws whether it is joined to its light path from.
+    static constexpr int joining_block = light_blocks - 2;
 
     /// The squares of side x side pixels that cover an image of config's size.
     [[nodiscard]] static std::size_t squares(const RenderConfig& config, int side) noexcept
@@ -805,7 +864,7 @@ private:
     {
         if (place.on_surface() || !(light.mis.vm > T(0))) return light.mis;
         const T vm = light.volume_eta * (place.scattering.x + place.scattering.y + place.scattering.z) / T(3);
-        return {vm, light.mis.vc, vm * light.mis.vc};
+        return {vm, light.mis.vc, vm * light.mis.vc, light.connect};
     }
 
     /// Call f(medium) with the medium `m` names (nothing for a surface's).
@@ -851,10 +910,12 @@ private:
     /// The pass's light subpaths: traced, their vertices kept (and VCM's grid built), and
     /// their light-tracing splats (t = 1) added to `sums` in the window.
     [[nodiscard]] LightPaths trace_light_paths(Accumulation& sums, const CameraRays<T>& rays, const PixelWindow& window, const RenderConfig& config,
-                                               std::uint64_t pass, std::size_t count) const
+                                               std::uint64_t pass, const LightPathPlan& plan) const
     {
+        const std::size_t count = plan.light_paths;
         LightPaths light;
         light.count = T(count);
+        light.connect = T(plan.connections);
         light.side = pairing_side(config, count);
         light.squares_wide = light.side > 0 ? (std::size_t(config.width) + std::size_t(light.side) - 1) / std::size_t(light.side) : 0;
         light.width = config.width;
@@ -863,22 +924,21 @@ private:
         const double shrink = std::pow(double(pass + 1), 0.5 * (config_.alpha - 1.0)); // r_i = r_0 i^((alpha - 1) / 2)
         light.radius = std::max(T(double(first_radius(rays, config.width, config.height)) * shrink), sphere_.radius * T(1e-7));
         light.volume_radius = config_.volume_radius > 0.0 ? std::max(T(config_.volume_radius * shrink), sphere_.radius * T(1e-7)) : light.radius;
+        // (Merging counted against the connections: eta over their share.)
         const T eta = pi<T> * light.radius * light.radius * light.count;
-        light.mis.vm = merging ? T(config_.merge_weight) * eta : T(0);
-        light.mis.vc = T(1) / (T(config_.merge_weight) * eta);
+        light.mis.vm = merging ? T(config_.merge_weight) * eta / light.connect : T(0);
+        light.mis.vc = light.connect / (T(config_.merge_weight) * eta);
+        light.mis.connect = light.connect;
         light.vm_normalization = T(1) / eta;
         const T ball = T(4) / T(3) * pi<T> * light.volume_radius * light.volume_radius * light.volume_radius * light.count;
-        light.volume_eta = merging ? T(config_.merge_weight) * ball : T(0);
+        light.volume_eta = merging ? T(config_.merge_weight) * ball / light.connect : T(0);
         light.volume_normalization = T(1) / ball;
         // Blocks of paths, each into its own list (joined in order) and its worker's splats.
         constexpr std::size_t block = 4096;
         const std::size_t blocks = (count + block - 1) / block;
         std::vector<std::vector<LightVertex>> lists(blocks);
         std::vector<std::vector<std::uint32_t>> lengths(blocks);
-        std::vector<Accumulation> buffers;
-        const unsigned workers = detail::workers_for(blocks, config.threads);
-        buffers.reserve(workers);
-        for (unsigned k = 0; k < workers; ++k) buffers.emplace_back(config.width, config.height, window);
+        std::vector<Splats> buffers(detail::workers_for(blocks, config.threads));
         const std::uint64_t seed = detail::sample_seed(config.seed ^ 0x9e3779b97f4a7c15ULL, pass);
         // Under Sobol's points the light paths are laid over the image in ZSobol's order
         // whatever the camera's layout: a pass's light paths are then strided points of one
@@ -911,7 +971,10 @@ private:
                 lengths[b].push_back(std::uint32_t(lists[b].size() - before));
             }
         });
-        for (const Accumulation& buffer : buffers) sums += buffer;
+        for (const Splats& buffer : buffers) {
+            for (const Splat& splat : buffer.list) sums.add(splat.x, splat.y, splat.sum, 0);
+            if (buffer.rejected > 0) sums.reject(buffer.rejected);
+        }
         light.ends.reserve(count + 1);
         light.ends.push_back(0);
         for (std::size_t b = 0; b < blocks; ++b) {
@@ -943,7 +1006,7 @@ private:
     /// a non-delta lobe kept in `out` and joined to the camera; `band` the wavelength band
     /// it takes at a dispersive interface (its pair's).
     void light_path(Random& rng, int band, const LightPaths& light, const CameraRays<T>& rays, const PixelWindow& window, std::vector<LightVertex>& out,
-                    Accumulation& splats) const
+                    Splats& splats) const
     {
         rng.bounce(light_blocks - 1); // the emission's block
         const T u_light = rng.uniform<T>();
@@ -1003,7 +1066,7 @@ private:
     /// report's (46)-(47).
     template <class V>
     void connect_to_camera(const LightVertex& lv, const V& vertex, const LightPaths& light, const CameraRays<T>& rays, const PixelWindow& window,
-                           Random& rng, Accumulation& splats) const
+                           Random& rng, Splats& splats) const
     {
         const Place place = lv.place();
         Vec3<T> eye = rays.origin;
@@ -1028,9 +1091,9 @@ private:
         for (int k = 0; k < 3; ++k) {
             const double x = double(float(value[k]));
             if (x >= 0.0 && ExactSum::takes(x)) add[std::size_t(k)] = ExactSum::of(x);
-            else splats.reject(1);
+            else ++splats.rejected;
         }
-        splats.add(int(seen->x), int(seen->y), add, 0);
+        splats.list.push_back({int(seen->x), int(seen->y), add});
     }
 
     /// One camera subpath and everything joined to it: the estimate along `ray`.
@@ -1045,7 +1108,15 @@ private:
         state.beta = Rgb<T>(T(1));
         const T camera = camera_pdf(rays, ray.direction);
         if (!(camera > T(0))) return sum;
-        state.mis = VcmMis<T>::camera_start(light.count, camera);
+        state.mis = VcmMis<T>::camera_start(light.count, camera, light.connect);
+        // Joined to its light path by connections, with probability light.connect (their
+        // estimates then over it; no number drawn when every camera path is), drawn from a
+        // block of the sampler's no bounce of either subpath reads.
+        bool joined = true;
+        if (light.connect < T(1)) {
+            rng.bounce(joining_block);
+            joined = rng.uniform<T>() < light.connect;
+        }
         if constexpr (SceneT::has_dispersion) state.band = light.bands[paired];
         Vec3<T> previous = ray.origin;
         std::uint64_t work = 0; // rays and merges, counted for a pilot (LightPaths::work)
@@ -1067,7 +1138,7 @@ private:
                                  const AreaLights<SceneT> lights = scene_->area_lights();
                                  const T direct = lights.pdf(*place.hit, previous) * cos / (distance * distance);
                                  const T emission = area_light_probability() * lights.emission_pdf(*place.hit, -d).both();
-                                 weight = state.mis.met_light_weight(direct, emission);
+                                 weight = state.mis.met_light_weight(direct, emission, light.connect);
                              }
                              sum += in_band(weighed(weight) * state.beta * le, state.split());
                          }
@@ -1081,9 +1152,9 @@ private:
                      if (state.length >= config_.max_length) return std::nullopt;
                  } else {
                      sum += in_band(state.beta * light_samples(vertex, place, state, light, rng), state.split());
-                     sum += state.beta * connections(vertex, place, state, light, paired);
+                     if (joined) sum += (state.beta / light.connect) * connections(vertex, place, state, light, paired);
                      if (config_.method == BidirectionalMethod::vcm && !config_.only) sum += state.beta * merges(vertex, place, state, light, paired);
-                     work += 1 + (light.ends[paired + 1] - light.ends[paired]) + (config_.method == BidirectionalMethod::vcm ? 1 : 0);
+                     work += 1 + (joined ? light.ends[paired + 1] - light.ends[paired] : 0) + (config_.method == BidirectionalMethod::vcm ? 1 : 0);
                  }
                  previous = place.point;
                  return scatter(vertex, place, state, light, rng, kept);
@@ -1104,7 +1175,7 @@ private:
                          if (state.length > 0 && config_.method != BidirectionalMethod::merging) {
                              const T direct = l.pdf(w);
                              const T emission = reached_from_entry(sphere_, w, out.origin) ? light_probability_[i] * l.emission_pdf(-w, sphere_).both() : T(0);
-                             weight = state.mis.met_light_weight(direct, emission);
+                             weight = state.mis.met_light_weight(direct, emission, light.connect);
                          }
                          sum += in_band(weighed(weight) * state.beta * le, state.split());
                      }
