@@ -28,10 +28,10 @@
 // unbiased, and these do, the same functions of the path for every strategy.
 // By default light path i is pixel i's: drawn from its sampler (laid over the image in
 // ZSobol's order) and joined to its camera paths; or, where a pilot finds the light paths
-// and connections worth less than they cost, square i's, of 4 x 4 or 16 x 16 pixels, and
-// perhaps a quarter or a sixteenth of the camera paths joined to theirs (light_path_plan;
-// the weights count connections made that share of the time). Deterministic: every number is a
-// function of (seed, pass, pixel or path), splats go to exact sums per thread; the same
+// worth less than they cost, square i's, of 4 x 4 or 16 x 16 pixels (light_path_plan).
+// Connections may be made for a share of the camera paths (BidirectionalConfig::
+// connections), the weights counting them that share of the time. Deterministic: every
+// number is a function of (seed, pass, pixel or path), splats go to exact sums; the same
 // bits for any thread count, crop, range of passes or MPI rank.
 //
 // Media: where a subpath crosses a medium that scatters (an object's interior, or the
@@ -150,10 +150,12 @@ struct BidirectionalConfig {
     /// The share of camera paths joined to their light path by connections (s >= 2,
     /// t >= 2), in (0, 1]: each camera path is, with this probability, and the weights
     /// count the connections as made that many times a camera path (a light sample, a
-    /// bounce meeting a light, light tracing and merging as made always). 0: chosen by the
-    /// pilot with the light paths (1, 1/4 or 1/16: less where a connection's shadow rays
-    /// cost more than its light is worth).
-    double connections = 0.0;
+    /// bounce meeting a light, light tracing and merging as made always). Below 1 a pass
+    /// traces fewer shadow rays: under the Cornell box's ceiling lamp, 1/16 of them took
+    /// 0.75 of the time for the same error in linear radiance, but a larger one in the
+    /// display range (the corners' dim light, which connections carry); so the default is
+    /// every camera path, and the pilot does not choose it (docs/benchmarks.md).
+    double connections = 1.0;
     /// Only this strategy's estimates (connections only; merges count none): for tests,
     /// and to see what each strategy brings. `weighted`: with its MIS weight (the
     /// strategies' images then add up to the whole), else alone (each an unbiased estimate
@@ -347,8 +349,8 @@ public:
         if (!(config.volume_radius >= 0.0 && config.volume_radius < std::numeric_limits<double>::infinity()))
             detail::throw_invalid("BidirectionalConfig volume_radius must be finite and >= 0, got ", config.volume_radius);
         if (!(config.merge_weight > 0.0 && config.merge_weight <= 1.0)) detail::throw_invalid("BidirectionalConfig merge_weight must be in (0, 1], got ", config.merge_weight);
-        if (!(config.connections >= 0.0 && config.connections <= 1.0))
-            detail::throw_invalid("BidirectionalConfig connections must be in (0, 1], or 0 for the pilot's choice, got ", config.connections);
+        if (!(config.connections > 0.0 && config.connections <= 1.0))
+            detail::throw_invalid("BidirectionalConfig connections must be in (0, 1], got ", config.connections);
         if (config.only && (config.only->s < 0 || config.only->t < 1))
             detail::throw_invalid("BidirectionalConfig only must have s >= 0 and t >= 1, got (", config.only->s, ", ", config.only->t, ")");
         scene.for_each_light([&]<class L>(const L& light) {
@@ -415,8 +417,10 @@ public:
         const LightPathPlan plan = light_path_plan(camera, config);
         if (plan.light_paths >= std::numeric_limits<std::uint32_t>::max())
             detail::throw_invalid("Bidirectional: ", plan.light_paths, " light paths a pass overflow a 32-bit index");
+        LightPaths light;
+        LightPathScratch scratch;
         for (std::uint64_t pass = passes.first; pass < passes.last; ++pass) {
-            const LightPaths light = trace_light_paths(sums, rays, window, config, pass, plan);
+            trace_light_paths(sums, rays, window, config, pass, plan, light, scratch);
             const CameraPaths eye{this, &light, &rays};
             RenderConfig pass_render = config;
             // Pass p takes each pixel's sample p of one sequence (per-pixel Sobol under
@@ -432,39 +436,38 @@ public:
     }
 
     /// A pass's light paths: how many, and the share of camera paths joined to theirs by
-    /// connections.
+    /// connections (BidirectionalConfig::connections).
     struct LightPathPlan {
         std::size_t light_paths = 0; ///< light subpaths a pass
         double connections = 1.0;    ///< in (0, 1]
     };
 
     /// The light paths of a pass for an image of config's size: BidirectionalConfig's
-    /// light_paths and connections, and where either is 0 a pilot's choice. The light paths
-    /// are then one a pixel, or one a square of 4 x 4 or 16 x 16 pixels (pairing_side), and
-    /// the connections made for every camera path, a quarter or a sixteenth of them
-    /// (pilot_connections): whichever a pilot
-    /// says is the most efficient. The pilot renders the whole frame (whatever the crop or
+    /// light_paths and connections, or where light_paths is 0 a pilot's choice of one light
+    /// path a pixel or one a square of 4 x 4 or 16 x 16 pixels (pairing_side), whichever
+    /// the pilot says is the most efficient. The pilot renders the whole frame (whatever the crop or
     /// range of passes) at no more than pilot_pixels pixels, pilot_passes passes with each
     /// choice, and scores each by its variance (a pixel's red, green and blue from pass to
     /// pass, summed over the pilot's pixels and the channels: dispersion's colour noise
     /// counts) times its work a pass (rays traced and merges looked up, counted: a
     /// deterministic function of the scene, camera, size and seed, as every bit of the image
-    /// is). Another choice must beat one light path a pixel joined to every camera path by
-    /// a factor of `pilot_margin`, as the pilot's few passes see a light path's rare, bright
+    /// is). Fewer light paths must beat one a pixel by a factor of `pilot_margin`, as the pilot's few passes see a light path's rare, bright
     /// paths (a caustic) less often than the render does. That one, without a pilot, in a
     /// scene with a point, spot or directional light (the sun): the paths that end S+ L
     /// there are found by light paths alone (light tracing and merging), often rare and
     /// bright (a caustic) where a pilot's few passes cannot weigh them (under the sun,
     /// `sun_caustic`'s pilot chose fewer, and its picture's shadow and caustic came out
-    /// grainier at its pass count); and for merging alone and for a single strategy.
+    /// grainier at its pass count); in a scene with dispersion, where a light path's
+    /// wavelength band is its camera paths' (a square's pixels would share one colour's
+    /// noise in a pass); and for merging alone and for a single strategy.
     [[nodiscard]] LightPathPlan light_path_plan(const Camera<T>& camera, const RenderConfig& config) const
     {
         const std::size_t pixels = std::size_t(config.width) * std::size_t(config.height);
-        LightPathPlan plan{config_.light_paths > 0 ? config_.light_paths : pixels, config_.connections > 0.0 ? config_.connections : 1.0};
-        if (config_.light_paths > 0 && config_.connections > 0.0) return plan;
+        LightPathPlan plan{config_.light_paths > 0 ? config_.light_paths : pixels, config_.connections};
+        if (config_.light_paths > 0) return plan;
         bool delta_lights = false;
         scene_->for_each_light([&]<class L>(const L&) { delta_lights = delta_lights || is_delta_light<L>; });
-        if (delta_lights || config_.method == BidirectionalMethod::merging || config_.only || pixels < 16) return plan;
+        if (delta_lights || SceneT::has_dispersion || config_.method == BidirectionalMethod::merging || config_.only || pixels < 16) return plan;
         const std::size_t shrink = std::size_t(std::ceil(std::sqrt(double(pixels) / double(pilot_pixels))));
         RenderConfig pilot = config;
         pilot.width = int((std::size_t(config.width) + shrink - 1) / shrink);
@@ -483,48 +486,40 @@ public:
         const CameraRays<T> rays = camera.rays(pilot.width, pilot.height);
         const PixelWindow whole = PixelWindow::whole(pilot.width, pilot.height);
         const std::size_t n = std::size_t(pilot.width) * std::size_t(pilot.height);
-        // The pilot's count of light paths for a choice of square (the given number scaled
-        // to the pilot's pixels where one was given), and the image's.
-        const auto pilot_paths = [&](int side) {
-            return config_.light_paths > 0 ? std::max<std::size_t>(1, std::size_t(double(config_.light_paths) * double(n) / double(pixels))) : squares(pilot, side);
-        };
         double best_score = -1.0;
         for (const int side : pairing_sides) {
-            if (config_.light_paths > 0 && side > 1) break;
-            for (const double connect : pilot_connections) {
-                if (config_.connections > 0.0 && connect < 1.0) break;
-                const double share = config_.connections > 0.0 ? config_.connections : connect;
-                std::vector<double> first(3 * n, 0.0), second(3 * n, 0.0);
-                std::atomic<std::uint64_t> work{0};
-                for (int pass = 0; pass < pilot_passes; ++pass) {
-                    RenderConfig one = pilot;
-                    one.seed = detail::sample_seed(pilot.seed, std::uint64_t(pass) + 1);
-                    Accumulation sums(pilot.width, pilot.height, whole);
-                    LightPaths light = trace_light_paths(sums, rays, whole, one, 0, {pilot_paths(side), share});
-                    // A light path's work: its first ray, and a ray on and a splat from each
-                    // vertex kept (and its place in the grid, merging), each light_work times
-                    // a camera path's ray.
-                    work += light_work * (std::uint64_t(light.count) + light.vertices.size() * (config_.method == BidirectionalMethod::vcm ? 3 : 2));
-                    light.work = &work;
-                    render_into(sums, camera, CameraPaths{this, &light, &rays}, one);
-                    for (int y = 0; y < pilot.height; ++y)
-                        for (int x = 0; x < pilot.width; ++x) {
-                            const double w = double(sums.weight(x, y));
-                            for (std::size_t c = 0; c < 3; ++c) {
-                                const double v = w > 0.0 ? sums.sum(x, y, c).value() / w : 0.0;
-                                const std::size_t i = 3 * (std::size_t(y) * std::size_t(pilot.width) + std::size_t(x)) + c;
-                                first[i] += v;
-                                second[i] += v * v;
-                            }
+            std::vector<double> first(3 * n, 0.0), second(3 * n, 0.0);
+            std::atomic<std::uint64_t> work{0};
+            LightPaths light;
+            LightPathScratch scratch;
+            for (int pass = 0; pass < pilot_passes; ++pass) {
+                RenderConfig one = pilot;
+                one.seed = detail::sample_seed(pilot.seed, std::uint64_t(pass) + 1);
+                Accumulation sums(pilot.width, pilot.height, whole);
+                trace_light_paths(sums, rays, whole, one, 0, {squares(pilot, side), config_.connections}, light, scratch);
+                // A light path's work: its first ray, and a ray on and a splat from each
+                // vertex kept (and its place in the grid, merging), each light_work times
+                // a camera path's ray.
+                work += light_work * (std::uint64_t(light.count) + light.vertices.size() * (config_.method == BidirectionalMethod::vcm ? 3 : 2));
+                light.work = &work;
+                render_into(sums, camera, CameraPaths{this, &light, &rays}, one);
+                for (int y = 0; y < pilot.height; ++y)
+                    for (int x = 0; x < pilot.width; ++x) {
+                        const double w = double(sums.weight(x, y));
+                        for (std::size_t c = 0; c < 3; ++c) {
+                            const double v = w > 0.0 ? sums.sum(x, y, c).value() / w : 0.0;
+                            const std::size_t i = 3 * (std::size_t(y) * std::size_t(pilot.width) + std::size_t(x)) + c;
+                            first[i] += v;
+                            second[i] += v * v;
                         }
-                }
-                double variance = 0.0;
-                for (std::size_t i = 0; i < 3 * n; ++i) variance += std::max(0.0, second[i] - first[i] * first[i] / pilot_passes) / (pilot_passes - 1);
-                const double score = variance * double(work.load()) * (best_score < 0.0 ? 1.0 : pilot_margin);
-                if (best_score < 0.0 || score < best_score) {
-                    best_score = score;
-                    plan = {config_.light_paths > 0 ? config_.light_paths : squares(config, side), share};
-                }
+                    }
+            }
+            double variance = 0.0;
+            for (std::size_t i = 0; i < 3 * n; ++i) variance += std::max(0.0, second[i] - first[i] * first[i] / pilot_passes) / (pilot_passes - 1);
+            const double score = variance * double(work.load()) * (best_score < 0.0 ? 1.0 : pilot_margin);
+            if (best_score < 0.0 || score < best_score) {
+                best_score = score;
+                plan.light_paths = squares(config, side);
             }
         }
         return plan;
@@ -538,9 +533,6 @@ public:
     static constexpr double pilot_margin = 1.25;
     /// The sides of the squares of pixels a pilot chooses a light path for (pairing_side).
     static constexpr std::array<int, 3> pairing_sides{1, 4, 16};
-    /// The shares of camera paths joined to their light path a pilot chooses from, the
-    /// first 1.
-    static constexpr std::array<double, 3> pilot_connections{1.0, 0.25, 0.0625};
     /// What a light path's ray costs in a camera path's: the light paths of one pass
     /// on the area-lit Cornell box (bench_methods area bdpt, 256 x 256) took 0.092 s of
     /// 0.17 s for a third of its rays (2.4 vertices a path, a ray and a splat each;
@@ -633,7 +625,32 @@ private:
         std::size_t squares_wide = 0; ///< the squares across the image
         std::atomic<std::uint64_t>* work = nullptr; ///< in a pilot: the camera paths' rays and merges, counted (light_path_plan)
         T connect = T(1);          ///< the share of camera paths joined to it by connections
+
+        /// Empty, as a new pass's, its vectors keeping their memory.
+        void reset()
+        {
+            LightPaths fresh;
+            fresh.vertices = std::move(vertices);
+            fresh.ends = std::move(ends);
+            fresh.bands = std::move(bands);
+            fresh.on_surfaces = std::move(on_surfaces);
+            fresh.in_media = std::move(in_media);
+            for (auto* v : {&fresh.ends, &fresh.on_surfaces, &fresh.in_media}) v->clear();
+            fresh.vertices.clear();
+            fresh.bands.clear();
+            *this = std::move(fresh);
+        }
         int width = 0, height = 0; ///< the image's size
+    };
+
+    /// What a pass's light paths are traced through, kept from pass to pass with their
+    /// memory: each block's vertices and path lengths, each worker's splats, and the
+    /// grid's points.
+    struct LightPathScratch {
+        std::vector<std::vector<LightVertex>> lists;
+        std::vector<std::vector<std::uint32_t>> lengths;
+        std::vector<Splats> buffers;
+        std::vector<Vec3<T>> points;
     };
 
     /// A pass's camera side, a RayEstimator for render_into.
@@ -907,13 +924,14 @@ private:
         else return v;
     }
 
-    /// The pass's light subpaths: traced, their vertices kept (and VCM's grid built), and
+    /// The pass's light subpaths, traced into `light` (its vectors and the scratch's keep
+    /// their memory from the pass before): their vertices kept (and VCM's grid built), and
     /// their light-tracing splats (t = 1) added to `sums` in the window.
-    [[nodiscard]] LightPaths trace_light_paths(Accumulation& sums, const CameraRays<T>& rays, const PixelWindow& window, const RenderConfig& config,
-                                               std::uint64_t pass, const LightPathPlan& plan) const
+    void trace_light_paths(Accumulation& sums, const CameraRays<T>& rays, const PixelWindow& window, const RenderConfig& config, std::uint64_t pass,
+                           const LightPathPlan& plan, LightPaths& light, LightPathScratch& scratch) const
     {
         const std::size_t count = plan.light_paths;
-        LightPaths light;
+        light.reset();
         light.count = T(count);
         light.connect = T(plan.connections);
         light.side = pairing_side(config, count);
@@ -936,9 +954,20 @@ private:
         // Blocks of paths, each into its own list (joined in order) and its worker's splats.
         constexpr std::size_t block = 4096;
         const std::size_t blocks = (count + block - 1) / block;
-        std::vector<std::vector<LightVertex>> lists(blocks);
-        std::vector<std::vector<std::uint32_t>> lengths(blocks);
-        std::vector<Splats> buffers(detail::workers_for(blocks, config.threads));
+        std::vector<std::vector<LightVertex>>& lists = scratch.lists;
+        std::vector<std::vector<std::uint32_t>>& lengths = scratch.lengths;
+        std::vector<Splats>& buffers = scratch.buffers;
+        lists.resize(blocks);
+        lengths.resize(blocks);
+        buffers.resize(detail::workers_for(blocks, config.threads));
+        for (std::size_t b = 0; b < blocks; ++b) {
+            lists[b].clear();
+            lengths[b].clear();
+        }
+        for (Splats& buffer : buffers) {
+            buffer.list.clear();
+            buffer.rejected = 0;
+        }
         const std::uint64_t seed = detail::sample_seed(config.seed ^ 0x9e3779b97f4a7c15ULL, pass);
         // Under Sobol's points the light paths are laid over the image in ZSobol's order
         // whatever the camera's layout: a pass's light paths are then strided points of one
@@ -977,6 +1006,9 @@ private:
         }
         light.ends.reserve(count + 1);
         light.ends.push_back(0);
+        std::size_t total = 0;
+        for (std::size_t b = 0; b < blocks; ++b) total += lists[b].size();
+        light.vertices.reserve(total);
         for (std::size_t b = 0; b < blocks; ++b) {
             light.vertices.insert(light.vertices.end(), lists[b].begin(), lists[b].end());
             for (const std::uint32_t n : lengths[b]) light.ends.push_back(light.ends.back() + n);
@@ -984,7 +1016,9 @@ private:
         if (merging && !light.vertices.empty()) {
             if constexpr (has_media) {
                 // Two grids: the vertices on surfaces, and those in media.
-                std::vector<Vec3<T>> points, volume;
+                std::vector<Vec3<T>>& points = scratch.points;
+                std::vector<Vec3<T>> volume;
+                points.clear();
                 for (std::size_t i = 0; i < light.vertices.size(); ++i) {
                     const LightVertex& v = light.vertices[i];
                     const bool on_surface = v.medium.in == MediumRef::In::surface;
@@ -994,12 +1028,12 @@ private:
                 if (!points.empty()) light.grid = HashGrid<T>(points, light.radius);
                 if (!volume.empty()) light.volume_grid = HashGrid<T>(volume, light.volume_radius);
             } else {
-                std::vector<Vec3<T>> points(light.vertices.size());
+                std::vector<Vec3<T>>& points = scratch.points;
+                points.resize(light.vertices.size());
                 for (std::size_t i = 0; i < points.size(); ++i) points[i] = light.vertices[i].hit.crossing.point;
                 light.grid = HashGrid<T>(points, light.radius);
             }
         }
-        return light;
     }
 
     /// One light subpath: a light by power, its emission, then the walk; each vertex with
