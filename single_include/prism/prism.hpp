@@ -13940,14 +13940,14 @@ public:
     /// The light paths of a pass for an image of config's size: BidirectionalConfig's
     /// light_paths and connections, or where light_paths is 0 a pilot's choice of one light
     /// path a pixel or one a square of 4 x 4 or 16 x 16 pixels (pairing_side), whichever
-    /// the pilot says is the most efficient. The pilot renders the whole frame (whatever the crop or
-    /// range of passes) at no more than pilot_pixels pixels, pilot_passes passes with each
-    /// choice, and scores each by its variance (a pixel's red, green and blue from pass to
-    /// pass, summed over the pilot's pixels and the channels: dispersion's colour noise
-    /// counts) times its work a pass (rays traced and merges looked up, counted: a
-    /// deterministic function of the scene, camera, size and seed, as every bit of the image
-    /// is). Fewer light paths must beat one a pixel by a factor of `pilot_margin`, as the pilot's few passes see a light path's rare, bright
-    /// paths (a caustic) less often than the render does. That one, without a pilot, in a
+    /// the pilot says is the most efficient. The pilot renders the whole frame (whatever
+    /// the crop or range of passes) at no more than pilot_pixels pixels, pilot_passes passes
+    /// with each choice, and scores each by its variance (a pixel's red, green and blue from
+    /// pass to pass, summed over the pilot's pixels and the channels) times its work a pass
+    /// (rays traced and merges looked up, counted: a deterministic function of the scene,
+    /// camera, size and seed, as every bit of the image is). Fewer light paths must beat one
+    /// a pixel by a factor of `pilot_margin`, as the pilot's few passes see a light path's
+    /// rare, bright paths (a caustic) less often than the render does. That one, without a pilot, in a
     /// scene with a point, spot or directional light (the sun): the paths that end S+ L
     /// there are found by light paths alone (light tracing and merging), often rare and
     /// bright (a caustic) where a pilot's few passes cannot weigh them (under the sun,
@@ -14124,15 +14124,17 @@ private:
         /// Empty, as a new pass's, its vectors keeping their memory.
         void reset()
         {
+            vertices.clear();
+            ends.clear();
+            bands.clear();
+            on_surfaces.clear();
+            in_media.clear();
             LightPaths fresh;
-            fresh.vertices = std::move(vertices);
-            fresh.ends = std::move(ends);
-            fresh.bands = std::move(bands);
-            fresh.on_surfaces = std::move(on_surfaces);
-            fresh.in_media = std::move(in_media);
-            for (auto* v : {&fresh.ends, &fresh.on_surfaces, &fresh.in_media}) v->clear();
-            fresh.vertices.clear();
-            fresh.bands.clear();
+            fresh.vertices.swap(vertices);
+            fresh.ends.swap(ends);
+            fresh.bands.swap(bands);
+            fresh.on_surfaces.swap(on_surfaces);
+            fresh.in_media.swap(in_media);
             *this = std::move(fresh);
         }
         int width = 0, height = 0; ///< the image's size
@@ -14179,15 +14181,15 @@ private:
     /// The block a camera path draws whether it is joined to its light path from.
     static constexpr int joining_block = light_blocks - 2;
 
+    /// The squares of side x side pixels across `pixels` of an image's width or height.
+    [[nodiscard]] static std::size_t across(int pixels, int side) noexcept { return (std::size_t(pixels) + std::size_t(side) - 1) / std::size_t(side); }
+
     /// The squares of side x side pixels that cover an image of config's size.
-    [[nodiscard]] static std::size_t squares(const RenderConfig& config, int side) noexcept
-    {
-        return ((std::size_t(config.width) + std::size_t(side) - 1) / std::size_t(side)) * ((std::size_t(config.height) + std::size_t(side) - 1) / std::size_t(side));
-    }
+    [[nodiscard]] static std::size_t squares(const RenderConfig& config, int side) noexcept { return across(config.width, side) * across(config.height, side); }
 
     /// The side of the squares of pixels whose camera paths a light path is joined to, with
-    /// `count` light paths a pass: 1, 2 or 4 where count is the number of such squares
-    /// (one a pixel, the default's choices), light path i drawn from the sampler of
+    /// `count` light paths a pass: 1, 4 or 16 where count is the number of such squares
+    /// (pairing_sides, the pilot's choices), light path i drawn from the sampler of
     /// square i's first pixel, so that the connections of a pixel's passes take stratified
     /// points; 0 for another count (each camera path joined to any light path, at random).
     [[nodiscard]] static int pairing_side(const RenderConfig& config, std::size_t count) noexcept
@@ -14430,7 +14432,7 @@ private:
         light.count = T(count);
         light.connect = T(plan.connections);
         light.side = pairing_side(config, count);
-        light.squares_wide = light.side > 0 ? (std::size_t(config.width) + std::size_t(light.side) - 1) / std::size_t(light.side) : 0;
+        light.squares_wide = light.side > 0 ? across(config.width, light.side) : 0;
         light.width = config.width;
         light.height = config.height;
         const bool merging = config_.method != BidirectionalMethod::bdpt;
