@@ -117,3 +117,4 @@
 #include <prism/transport/path_vertex.hpp>
 #include <prism/transport/random_walk.hpp>
 #include <prism/transport/travel.hpp>
+#include <prism/transport/walk_step.hpp>

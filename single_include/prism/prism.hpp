@@ -13510,6 +13510,188 @@ private:
 
 } // namespace prism
 
+// ---- prism/transport/walk_step.hpp ----
+// walk_step: one step of a path through a scene, from where it last scattered (or
+// started) to where it scatters next. Every walk is a loop of these steps: random_walk's
+// (the photon tracer, light tracer and path tracer) and Bidirectional's subpaths; what
+// a walk does at a vertex (the hooks) is its own.
+//
+// A step goes along its ray (in the air along the air's curve, inside objects straight)
+// to the first surface. On the way, in a medium that scatters (an object's Fog, or
+// FilledAir), it draws where the path scatters, piece by piece of its way (the medium's
+// free flight, whose weight the path's power takes), and stops there if it does. At the
+// surface, the medium it crossed attenuates the power; a false interface (inside a medium
+// of higher priority) and an index-matched one (may_match_index: no bend, so no vertex)
+// are passed, the path going on straight in the media beyond. At any other surface, and
+// where it scatters in a medium, the caller's hook says the direction the path leaves by
+// (it scatters there) or that it ends; a path that refracts goes on in the media beyond.
+
+
+#include <cstdint>
+#include <optional>
+#include <type_traits>
+#include <variant>
+
+namespace prism {
+
+/// How a step of a walk ended.
+enum class StepEnd : std::uint8_t {
+    escaped, ///< it left the scene (the caller's on_escape was shown its last segment)
+    passed,  ///< it crossed an interface that makes no vertex: the next step goes on straight
+    surface, ///< it scattered at a surface: the next step leaves from there
+    medium,  ///< it scattered in a medium: the next step leaves from there
+    ended,   ///< it was absorbed, or its caller ended it
+};
+
+/// How a step ended, and how far it went.
+template <Scalar T>
+struct Step {
+    StepEnd end; ///< where it ended
+    T path; ///< the length of its way, from its start to where it ended (0 where it escaped)
+};
+
+/// A step at a surface where the path makes a vertex, before it scatters there.
+template <Scalar T>
+struct SurfaceArrival {
+    const Hit<T>& hit;        ///< the surface
+    const Vec3<T>& direction; ///< unit, arriving
+    T path;                   ///< the length of the step's way to here
+    T outside_index;          ///< the index of refraction on a transmissive material's outer side (1 for others)
+};
+
+/// A step where the path scatters in a medium, before it does.
+template <Scalar T>
+struct MediumArrival {
+    const Vec3<T>& point;     ///< where
+    const Vec3<T>& direction; ///< unit, arriving
+    T path;                   ///< the length of the step's way to here
+    const Ray<T>& stretch;    ///< the stretch of medium the flight was drawn over: where it starts, unit direction
+    T stretch_length;         ///< its length (may be infinite)
+    const Rgb<T>& entering;   ///< the path's power as it entered the stretch
+    const Rgb<T>& weight;     ///< the flight's weight, which the power took
+    const MediumStack& media; ///< the transmissive objects the path is inside of (the medium is the top one's, or the air's)
+};
+
+/// What a step does on a stretch of medium before its flight there is drawn when its
+/// caller says nothing: nothing.
+struct IgnoreStretch {
+    /// Does nothing.
+    template <class Md, class R, class L>
+    constexpr void operator()(const Md&, const R&, const L&) const noexcept
+    {
+    }
+};
+
+/// What a step calls, by name (on_stretch may be left out):
+///   on_surface(material, SurfaceArrival) -> std::optional<Vec3>
+///       at a surface that makes a vertex: the unit direction the path leaves by, or
+///       nothing to end it
+///   on_medium(medium, MediumArrival) -> std::optional<Vec3>
+///       where it scatters in a medium: the same
+///   on_escape(segment)                 where it leaves the scene, along `segment`
+///   through_matched(tint) -> bool      at an index-matched boundary: takes the tint into
+///                                      the path's power (or plays roulette by it), and
+///                                      says whether the path goes on
+///   at_interface(material) -> T        at a real interface of a transmissive material,
+///                                      before the index on its outer side is looked up:
+///                                      the wavelength the path crosses it at (0: white)
+///   on_stretch(medium, stretch, length) on each stretch of a medium that scatters, before
+///                                      the flight there is drawn
+template <class OnSurface, class OnMedium, class OnEscape, class ThroughMatched, class AtInterface, class OnStretch = IgnoreStretch>
+struct StepHooks {
+    OnSurface on_surface;           ///< at a surface that makes a vertex
+    OnMedium on_medium;             ///< where the path scatters in a medium
+    OnEscape on_escape;             ///< where it leaves the scene
+    ThroughMatched through_matched; ///< at an index-matched boundary
+    AtInterface at_interface;       ///< at a real interface, its wavelength
+    OnStretch on_stretch{};         ///< before a flight in a medium
+};
+
+/// One step of a walk from `ray` (which it leaves where the next step starts) inside
+/// `media` (which it leaves as the media there), the path carrying `power`: see the file's
+/// comment. The walk's sampler block (Random::bounce) is the caller's to choose.
+template <class SceneT, class Air, class Hooks>
+[[nodiscard]] Step<typename SceneT::scalar_type> walk_step(const SceneT& scene, const Air& air, Ray<typename SceneT::scalar_type>& ray, MediumStack& media,
+                                                           Rgb<typename SceneT::scalar_type>& power, Random& rng, const Hooks& hooks)
+{
+    using T = typename SceneT::scalar_type;
+    Ray<T> segment = ray;
+    T path = T(0);
+    std::optional<Hit<T>> hit;
+    if constexpr (!SceneT::has_scattering_media && !air_scatters<Air>) {
+        hit = media.empty() ? first_hit_in_air(scene, air, ray, segment, &path) : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
+    } else {
+        std::optional<Step<T>> scattered; // where the path scattered, or ended, in a medium
+        hit = first_hit_through_media(scene, air, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
+            const Ray<T> stretch{piece.at(t0), piece.direction};
+            const Rgb<T> entering = power;
+            hooks.on_stretch(medium, stretch, t1 - t0);
+            const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
+            power *= flight.weight;
+            if (!flight.scattered) return true;
+            const T s = t0 + flight.distance;
+            const Vec3<T>& d = piece.direction;
+            const Vec3<T> p = piece.origin + s * d;
+            const std::optional<Vec3<T>> next = hooks.on_medium(medium, MediumArrival<T>{.point = p,
+                                                                                         .direction = d,
+                                                                                         .path = before + s,
+                                                                                         .stretch = stretch,
+                                                                                         .stretch_length = t1 - t0,
+                                                                                         .entering = entering,
+                                                                                         .weight = flight.weight,
+                                                                                         .media = media});
+            scattered = Step<T>{next ? StepEnd::medium : StepEnd::ended, before + s};
+            if (next) ray = {p, *next};
+            return false;
+        });
+        if (scattered) return *scattered;
+    }
+    if (!hit) {
+        hooks.on_escape(segment);
+        return {StepEnd::escaped, T(0)};
+    }
+    const Crossing<T>& c = hit->crossing;
+    const Vec3<T> d = normalize(segment.direction);
+    const StepEnd end = scene.visit_material(*hit, [&]<class M>(const M& material) -> StepEnd {
+        // What the medium it travelled in let through, before anything else.
+        attenuate_segment(scene, media, material, c, segment, power);
+        // The media beyond the surface, and false interfaces passed. (Only transmissive
+        // materials keep an interface: no copy of the media for the diffuse and mirror
+        // hits that make most of a path's vertices.)
+        [[maybe_unused]] std::conditional_t<transmits<M>, Interface, std::monostate> face{};
+        T outside_index = T(1);
+        if constexpr (transmits<M>) {
+            face = nested_interface(media, {hit->slot, hit->index, nesting_priority(material)}, c.entering);
+            if (!face.real) {
+                ray = spawn_ray(c.point, c.error, c.normal, d);
+                media = face.beyond;
+                return StepEnd::passed;
+            }
+            outside_index = T(index_of(scene, outside_of(media, face, c.entering), hooks.at_interface(material)));
+        }
+        if constexpr (may_match_index<M>) {
+            // An index-matched boundary is no vertex: the path goes on straight, its tint
+            // taken, as a shadow ray passes it (Scene::transmittance).
+            if (material.index_matched(outside_index)) {
+                if (!hooks.through_matched(material.transmission_tint())) return StepEnd::ended;
+                ray = spawn_ray(c.point, c.error, c.normal, d);
+                media = face.beyond;
+                return StepEnd::passed;
+            }
+        }
+        const std::optional<Vec3<T>> next = hooks.on_surface(material, SurfaceArrival<T>{.hit = *hit, .direction = d, .path = path, .outside_index = outside_index});
+        if (!next) return StepEnd::ended;
+        if constexpr (transmits<M>) {
+            if (dot(*next, c.facing_normal()) < T(0)) media = face.beyond; // refracted
+        }
+        ray = spawn_ray(c.point, c.error, c.normal, *next);
+        return StepEnd::surface;
+    });
+    return {end, path};
+}
+
+} // namespace prism
+
 // ---- prism/integrator/bidirectional.hpp ----
 // Bidirectional: bidirectional path tracing (BDPT) and vertex connection and merging
 // (VCM), one estimator of passes.
@@ -13583,7 +13765,6 @@ private:
 #include <limits>
 #include <optional>
 #include <span>
-#include <variant>
 #include <vector>
 
 namespace prism {
@@ -14259,91 +14440,49 @@ private:
         return cos > T(0) ? T(1) / (rays.pixel_area() * cube(cos)) : T(0);
     }
 
-    /// Walk a subpath from `ray` (starting inside `media`), calling on_vertex(vertex,
-    /// place, d, distance, kept) at every vertex: a SurfaceVertex where it meets a surface
-    /// (false and index-matched interfaces are crossed), a MediumVertex where it scatters
-    /// in a medium (drawn by the medium's free flight); d the unit direction it arrived
-    /// along, `distance` the length since the last vertex, `kept` the largest share of the
-    /// throughput the flight there kept (1 at a surface). on_vertex returns the direction
-    /// drawn there (nothing ends the walk); on_escape(ray) is called when the path leaves
-    /// the scene. The state's throughput takes what the media and index-matched boundaries
-    /// let through; a dispersive interface splits it into its band.
+    /// Walk a subpath from `ray` (starting inside `media`) step by step (walk_step: false
+    /// and index-matched interfaces crossed, the media's attenuation and free flights taken
+    /// into the state's throughput), calling on_vertex(vertex, place, d, distance, kept)
+    /// at every vertex: a SurfaceVertex where it meets a surface, a MediumVertex where it
+    /// scatters in a medium; d the unit direction it arrived along, `distance` the length
+    /// since the last vertex, `kept` the largest share of the throughput the flight there
+    /// kept (1 at a surface). on_vertex returns the direction drawn there (nothing ends the
+    /// walk); on_escape(ray) is called when the path leaves the scene. A dispersive
+    /// interface splits the path into its band.
     template <class OnVertex, class OnEscape>
     void walk(Ray<T> ray, MediumStack media, PathState& state, Transport mode, Random& rng, int first_block, OnVertex&& on_vertex, OnEscape&& on_escape) const
     {
         T distance = T(0);
+        const auto at_surface = [&]<class M>(const M& material, const SurfaceArrival<T>& at) -> std::optional<Vec3<T>> {
+            const SurfaceVertex<M> vertex(material, at.hit.crossing, at.direction, mode, at.outside_index, wavelength(state.split()));
+            return on_vertex(vertex, Place{&at.hit, at.hit.crossing.point, at.outside_index}, at.direction, distance + at.path, T(1));
+        };
+        const auto in_medium = [&]<class Md>(const Md& medium, const MediumArrival<T>& at) -> std::optional<Vec3<T>> {
+            Place place;
+            place.point = at.point;
+            place.medium = at.media.top() ? MediumRef{MediumRef::In::object, at.media.top()->slot, at.media.top()->index} : MediumRef{MediumRef::In::air};
+            place.scattering = medium.scattering_at(at.point);
+            return on_vertex(MediumVertex(medium.phase, at.direction), place, at.direction, distance + at.path, max_component(at.weight));
+        };
+        const auto hooks = StepHooks{.on_surface = at_surface,
+                                     .on_medium = in_medium,
+                                     .on_escape = on_escape,
+                                     .through_matched =
+                                         [&](const Rgb<T>& tint) {
+                                             state.beta *= tint;
+                                             return true;
+                                         },
+                                     .at_interface =
+                                         [&]<class M>(const M&) {
+                                             // A white path takes its band here (its light split by wavelength).
+                                             if constexpr (disperses<M>) state.dispersed = true;
+                                             return wavelength(state.split());
+                                         }};
         for (int bounce = 0;; ++bounce) {
             rng.bounce(first_block + bounce);
-            std::optional<Hit<T>> hit;
-            if constexpr (has_media) {
-                enum class InMedium { passed, scattered, ended };
-                InMedium in_medium = InMedium::passed;
-                Ray<T> segment = ray;
-                T path = T(0);
-                hit = first_hit_through_media(*scene_, air_, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
-                    const Ray<T> stretch{piece.at(t0), piece.direction};
-                    const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, state.beta, rng);
-                    state.beta *= flight.weight;
-                    if (!flight.scattered) return true;
-                    Place place;
-                    place.point = stretch.at(flight.distance);
-                    place.medium = media.top() ? MediumRef{MediumRef::In::object, media.top()->slot, media.top()->index} : MediumRef{MediumRef::In::air};
-                    place.scattering = medium.scattering_at(place.point);
-                    const MediumVertex vertex(medium.phase, piece.direction);
-                    const std::optional<Vec3<T>> next = on_vertex(vertex, place, piece.direction, distance + before + t0 + flight.distance, max_component(flight.weight));
-                    in_medium = next ? InMedium::scattered : InMedium::ended;
-                    if (next) {
-                        ray = Ray<T>{place.point, *next};
-                        distance = T(0);
-                    }
-                    return false;
-                });
-                if (in_medium == InMedium::ended) return;
-                if (in_medium == InMedium::scattered) continue;
-            } else {
-                hit = scene_->closest_hit(ray, Interval<T>{T(0), infinity<T>});
-            }
-            if (!hit) {
-                on_escape(ray);
-                return;
-            }
-            const Crossing<T>& c = hit->crossing;
-            distance += c.t;
-            const bool go_on = scene_->visit_material(*hit, [&]<class M>(const M& material) -> bool {
-                attenuate_segment(*scene_, media, material, c, ray, state.beta);
-                [[maybe_unused]] std::conditional_t<transmits<M>, Interface, std::monostate> face{};
-                T outside_index = T(1);
-                if constexpr (transmits<M>) {
-                    face = nested_interface(media, {hit->slot, hit->index, nesting_priority(material)}, c.entering);
-                    if (!face.real) {
-                        ray = spawn_ray(c.point, c.error, c.normal, ray.direction);
-                        media = face.beyond;
-                        return true;
-                    }
-                    // A white path takes its band here (its light split by wavelength).
-                    if constexpr (disperses<M>) state.dispersed = true;
-                    outside_index = T(index_of(*scene_, outside_of(media, face, c.entering), wavelength(state.split())));
-                }
-                if constexpr (may_match_index<M>) {
-                    if (material.index_matched(outside_index)) {
-                        state.beta *= material.transmission_tint();
-                        ray = spawn_ray(c.point, c.error, c.normal, ray.direction);
-                        media = face.beyond;
-                        return true;
-                    }
-                }
-                const SurfaceVertex<M> vertex(material, c, ray.direction, mode, outside_index, wavelength(state.split()));
-                const Place place{&*hit, c.point, outside_index};
-                const std::optional<Vec3<T>> next = on_vertex(vertex, place, ray.direction, distance, T(1));
-                if (!next) return false;
-                if constexpr (transmits<M>) {
-                    if (dot(*next, c.normal) * dot(ray.direction, c.normal) > T(0)) media = face.beyond; // refracted
-                }
-                ray = spawn_ray(c.point, c.error, c.normal, *next);
-                distance = T(0);
-                return true;
-            });
-            if (!go_on) return;
+            const Step<T> step = walk_step(*scene_, air_, ray, media, state.beta, rng, hooks);
+            if (step.end == StepEnd::escaped || step.end == StepEnd::ended) return;
+            distance = step.end == StepEnd::passed ? distance + step.path : T(0);
         }
     }
 
@@ -15366,21 +15505,18 @@ private:
 // random_walk: the path a photon takes through a scene, shared by the photon tracer, the
 // light tracer and the path tracer (a camera path carries importance by the same rules).
 //
-// From a ray carrying `power`, hit by hit: the medium the path crossed attenuates it;
-// at a diffuse or glossy surface the caller's `on_surface` sees the vertex (and may stop the walk);
-// false interfaces (inside a medium of higher priority) and index-matched ones
-// (may_match_index) are passed; a white path meeting
-// a dispersive interface takes one wavelength band at random; then scatter_photon picks
-// the next direction (material/scattering.hpp): a photon by Russian roulette at every
-// bounce, which keeps its power bounded; a camera path by its lobes alone, ended by
+// From a ray carrying `power`, step by step (transport/walk_step.hpp: the media on the
+// way attenuate it or scatter it, false and index-matched interfaces are passed, in the
+// air it follows the air's curve, inside objects straight lines): at a diffuse or glossy
+// surface the caller's `on_surface` sees the vertex (and may stop the walk); a white path
+// meeting a dispersive interface takes one wavelength band at random; then scatter_photon
+// picks the next direction (material/scattering.hpp): a photon by Russian roulette at
+// every bounce, which keeps its power bounded; a camera path by its lobes alone, ended by
 // roulette on its throughput once it has met WalkLimits::roulette_depth surfaces, so a
 // path on its way to a bright, hard-to-find light (a caustic) is not cut short by the dim
-// surfaces it left. In the air the path follows the air's curve (GradedAir), inside
-// objects straight lines. In a medium that scatters (an object's Fog, or FilledAir) the
-// walk draws where it scatters along each piece of its way (first_hit_through_media, the
-// curved pieces in fog filling graded air included); there the caller's
-// `on_medium` sees the vertex, and the walk goes on in a direction drawn from the
-// medium's phase function.
+// surfaces it left. Where it scatters in a medium (an object's Fog, or FilledAir) the
+// caller's `on_medium` sees the vertex, and the walk goes on in a direction drawn from
+// the medium's phase function.
 
 
 #include <algorithm>
@@ -15388,7 +15524,6 @@ private:
 #include <limits>
 #include <optional>
 #include <type_traits>
-#include <variant>
 
 namespace prism {
 
@@ -15568,104 +15703,19 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
     int length = 0;         // vertices so far, at surfaces and in media
     for (int bounce = 0; bounce - medium_bounces <= limits.max_bounces; ++bounce) {
         rng.bounce(bounce); // each bounce its own block of the sampler's dimensions
-        // In the air a path follows the air's curve; inside objects, straight lines.
-        Ray<T> segment = ray;
-        T path = T(0);
-        // Where the path scatters in the media it crosses before the surface, piece by piece
-        // of its way: on each stretch of a medium that scatters, the caller's on_medium sees
-        // the stretch, then the walker's flight is drawn (the medium's sample_flight) and its
-        // power takes the draw's weight.
-        enum class InMedium { passed, scattered, absorbed };
-        [[maybe_unused]] InMedium in_medium = InMedium::passed;
-        const std::optional<Hit<T>> hit = [&] {
-            if constexpr (!SceneT::has_scattering_media && !air_scatters<Air>) {
-                return media.empty() ? first_hit_in_air(scene, air, ray, segment, &path) : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
-            } else {
-                return first_hit_through_media(scene, air, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
-                    const Ray<T> stretch{piece.at(t0), piece.direction};
-                    const Rgb<T> entering = power;
-                    if constexpr (std::is_invocable_v<decltype(hooks.on_medium)&, const Md&, const WalkMediumStretch<T>&>)
-                        hooks.on_medium(medium, WalkMediumStretch<T>{.ray = stretch, .length = t1 - t0, .power = power, .diffuse_bounces = diffuse_bounces, .media = media, .rng = rng, .vertices = length});
-                    const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
-                    power *= flight.weight;
-                    if (!flight.scattered) return true;
-                    const T s = t0 + flight.distance;
-                    const Vec3<T>& d = piece.direction;
-                    const Vec3<T> p = piece.origin + s * d;
-                    travelled += before + s;
-                    const bool last = medium_bounces == limits.max_medium_bounces || length + 1 >= limits.max_length;
-                    in_medium = InMedium::absorbed;
-                    if (!hooks.on_medium(medium, WalkMediumVertex<T>{.point = p,
-                                                                     .direction = d,
-                                                                     .power = power,
-                                                                     .direct = direct,
-                                                                     .diffuse_bounces = diffuse_bounces,
-                                                                     .first_specular = first_specular,
-                                                                     .travelled = travelled,
-                                                                     .wavelength = wavelength,
-                                                                     .media = media,
-                                                                     .last_point = last_point,
-                                                                     .last_pdf = last_pdf,
-                                                                     .last = last,
-                                                                     .rng = rng,
-                                                                     .surface_bounces = surface_bounces,
-                                                                     .stretch = stretch,
-                                                                     .stretch_length = t1 - t0,
-                                                                     .entering = entering,
-                                                                     .length = length + 1}))
-                        return false;
-                    if constexpr (Mode == Transport::importance) {
-                        // A photon keeps its power: it goes on with the chance of the draw's
-                        // largest weight (the albedo in a grey medium), divided out.
-                        const T keep = std::min(T(1), max_component(flight.weight));
-                        if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return false;
-                        power /= keep;
-                    } else {
-                        if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return false;
-                    }
-                    const auto [u1, u2] = rng.uniform2<T>();
-                    const PhaseSample<T> next = medium.phase.sample(d, u1, u2);
-                    ray = {p, next.direction};
-                    last_point = p;
-                    last_pdf = next.pdf;
-                    ++diffuse_bounces;
-                    ++surface_bounces;
-                    ++length;
-                    if (direct) first_specular = false;
-                    in_medium = InMedium::scattered;
-                    return false;
-                });
-            }
-        }();
-        if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
-            if (in_medium == InMedium::absorbed) return;
-            if (in_medium == InMedium::scattered) {
-                if (++medium_bounces > limits.max_medium_bounces || length >= limits.max_length) return;
-                direct = false;
-                continue;
-            }
-        }
-        if (!hit) {
-            hooks.on_escape(WalkEscape<T>{.ray = segment, .power = power, .diffuse_bounces = diffuse_bounces, .first_specular = first_specular, .last_pdf = last_pdf});
-            return;
-        }
-        const Crossing<T>& c = hit->crossing;
-        const Vec3<T> d = normalize(segment.direction);
-        travelled += path;
-        enum class Next { absorbed, scattered, passed };
-        const Next next_step = scene.visit_material(*hit, [&]<class M>(const M& material) -> Next {
-            // What the medium it travelled in let through, before anything else.
-            attenuate_segment(scene, media, material, c, segment, power);
+        // At a surface: the hooks see it, then the path scatters by the lobes they leave it.
+        const auto at_surface = [&]<class M>(const M& material, const SurfaceArrival<T>& at) -> std::optional<Vec3<T>> {
+            const Crossing<T>& c = at.hit.crossing;
             const bool last = bounce - medium_bounces == limits.max_bounces || length + 1 >= limits.max_length;
             // The walk at this surface, as the hooks see it (outside_index: 1 until known).
             const auto vertex = [&](T outside_index) {
-                return WalkVertex<T>{.hit = *hit,
-                                     .direction = d,
+                return WalkVertex<T>{.hit = at.hit,
+                                     .direction = at.direction,
                                      .power = power,
                                      .direct = direct,
                                      .diffuse_bounces = diffuse_bounces,
                                      .first_specular = first_specular,
-                                     .travelled = travelled,
+                                     .travelled = travelled + at.path,
                                      .wavelength = wavelength,
                                      .media = media,
                                      .last_point = last_point,
@@ -15678,76 +15728,129 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             };
             if constexpr (emits<M>) hooks.on_emitter(material, vertex(T(1)));
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
-                return Next::absorbed; // a lamp that only emits
+                return std::nullopt; // a lamp that only emits
             } else {
-            // The media beyond the surface, the object whose medium lies on its far
-            // side, and false interfaces (inside a medium of higher priority) passed.
-            // (Only transmissive materials keep an interface: no copy of the media for
-            // the diffuse and mirror hits that make most of a path's bounces.)
-            [[maybe_unused]] std::conditional_t<transmits<M>, Interface, std::monostate> face{};
-            const Inside* outside = nullptr;
-            if constexpr (transmits<M>) {
-                face = nested_interface(media, {hit->slot, hit->index, nesting_priority(material)}, c.entering);
-                if (!face.real) {
-                    ray = spawn_ray(c.point, c.error, c.normal, d);
-                    media = face.beyond;
-                    return Next::passed;
+                Lobes lobes = Lobes::all;
+                // (A glossy lobe that is a mirror has no vertex of its own.)
+                if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, at.direction)) {
+                    const auto go_on = hooks.on_surface(material, vertex(at.outside_index));
+                    if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
+                    else lobes = go_on;
+                    if (lobes == Lobes::none) return std::nullopt;
                 }
-                outside = outside_of(media, face, c.entering);
-            }
-            const T outside_index = transmits<M> ? T(index_of(scene, outside, wavelength)) : T(1);
-            if constexpr (may_match_index<M>) {
-                // An index-matched boundary is no vertex: the path goes on straight, its
-                // tint taken, as a shadow ray passes it (Scene::transmittance).
-                if (material.index_matched(outside_index)) {
-                    if constexpr (Mode == Transport::radiance) power *= material.transmission_tint();
-                    else if (!russian_roulette(power, material.transmission_tint(), rng)) return Next::absorbed;
-                    ray = spawn_ray(c.point, c.error, c.normal, d);
-                    media = face.beyond;
-                    return Next::passed;
+                if constexpr (disperses<M>) {
+                    if (wavelength == T(0)) {
+                        // One band at random: its (non-negative) share of white, over its probability 1 / count.
+                        const int count = bands.size();
+                        const WavelengthBand<T>& band = bands[std::min(int(rng.uniform<T>() * T(count)), count - 1)];
+                        power *= band.photon_weight * T(count);
+                        wavelength = band.wavelength_nm;
+                    }
                 }
-            }
-            Lobes lobes = Lobes::all;
-            // (A glossy lobe that is a mirror has no vertex of its own.)
-            if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
-                const auto go_on = hooks.on_surface(material, vertex(outside_index));
-                if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
-                else lobes = go_on;
-                if (lobes == Lobes::none) return Next::absorbed;
-            }
-            if constexpr (disperses<M>) {
-                if (wavelength == T(0)) {
-                    // One band at random: its (non-negative) share of white, over its probability 1 / count.
-                    const int count = bands.size();
-                    const WavelengthBand<T>& band = bands[std::min(int(rng.uniform<T>() * T(count)), count - 1)];
-                    power *= band.photon_weight * T(count);
-                    wavelength = band.wavelength_nm;
+                const auto next = scatter_photon<Mode>(material, c, at.direction, power, rng, wavelength, at.outside_index, lobes);
+                if (!next) return std::nullopt;
+                if constexpr (Mode == Transport::radiance) {
+                    if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return std::nullopt;
                 }
+                last_point = c.point;
+                if constexpr (has_glossy<M>) last_pdf = next->pdf;
+                else last_pdf = next->diffuse ? std::max(dot(next->direction, c.facing_shading()), T(0)) / pi<T> : T(0);
+                if (next->diffuse) ++diffuse_bounces;
+                if (next->diffuse && !(has_glossy<M> && transmits<M>)) ++surface_bounces;
+                if (direct) first_specular = !next->diffuse;
+                ++length;
+                return next->direction;
             }
-            const Vec3<T> n = c.facing_normal();
-            const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, outside_index, lobes);
-            if (!next) return Next::absorbed;
-            if constexpr (Mode == Transport::radiance) {
-                if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return Next::absorbed;
+        };
+        // Where it scatters in a medium: the hooks see it, then a photon plays roulette by
+        // the flight's weight (a camera path by its throughput) and the medium's phase
+        // function draws the way on.
+        const auto in_medium = [&]<class Md>(const Md& medium, const MediumArrival<T>& at) -> std::optional<Vec3<T>> {
+            const bool last = medium_bounces == limits.max_medium_bounces || length + 1 >= limits.max_length;
+            if (!hooks.on_medium(medium, WalkMediumVertex<T>{.point = at.point,
+                                                             .direction = at.direction,
+                                                             .power = power,
+                                                             .direct = direct,
+                                                             .diffuse_bounces = diffuse_bounces,
+                                                             .first_specular = first_specular,
+                                                             .travelled = travelled + at.path,
+                                                             .wavelength = wavelength,
+                                                             .media = media,
+                                                             .last_point = last_point,
+                                                             .last_pdf = last_pdf,
+                                                             .last = last,
+                                                             .rng = rng,
+                                                             .surface_bounces = surface_bounces,
+                                                             .stretch = at.stretch,
+                                                             .stretch_length = at.stretch_length,
+                                                             .entering = at.entering,
+                                                             .length = length + 1}))
+                return std::nullopt;
+            if constexpr (Mode == Transport::importance) {
+                // A photon keeps its power: it goes on with the chance of the draw's
+                // largest weight (the albedo in a grey medium), divided out.
+                const T keep = std::min(T(1), max_component(at.weight));
+                if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return std::nullopt;
+                power /= keep;
+            } else {
+                if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return std::nullopt;
             }
-            ray = spawn_ray(c.point, c.error, c.normal, next->direction);
-            last_point = c.point;
-            if constexpr (has_glossy<M>) last_pdf = next->pdf;
-            else last_pdf = next->diffuse ? std::max(dot(next->direction, c.facing_shading()), T(0)) / pi<T> : T(0);
-            if (next->diffuse) ++diffuse_bounces;
-            if (next->diffuse && !(has_glossy<M> && transmits<M>)) ++surface_bounces;
-            if (direct) first_specular = !next->diffuse;
+            const auto [u1, u2] = rng.uniform2<T>();
+            const PhaseSample<T> next = medium.phase.sample(at.direction, u1, u2);
+            last_point = at.point;
+            last_pdf = next.pdf;
+            ++diffuse_bounces;
+            ++surface_bounces;
             ++length;
-            if constexpr (transmits<M>) {
-                if (dot(next->direction, n) < T(0)) media = face.beyond; // refracted
-            }
-            return Next::scattered;
-            }
-        });
-        if (next_step == Next::absorbed) return;
-        if (next_step == Next::scattered) {
+            if (direct) first_specular = false;
+            return next.direction;
+        };
+        const Step<T> step = walk_step(scene, air, ray, media, power, rng,
+                                       StepHooks{.on_surface = at_surface,
+                                                 .on_medium = in_medium,
+                                                 .on_escape =
+                                                     [&](const Ray<T>& segment) {
+                                                         hooks.on_escape(WalkEscape<T>{.ray = segment,
+                                                                                       .power = power,
+                                                                                       .diffuse_bounces = diffuse_bounces,
+                                                                                       .first_specular = first_specular,
+                                                                                       .last_pdf = last_pdf});
+                                                     },
+                                                 .through_matched =
+                                                     [&](const Rgb<T>& tint) {
+                                                         if constexpr (Mode == Transport::radiance) {
+                                                             power *= tint;
+                                                             return true;
+                                                         } else {
+                                                             return russian_roulette(power, tint, rng);
+                                                         }
+                                                     },
+                                                 .at_interface = [&](const auto&) { return wavelength; },
+                                                 .on_stretch =
+                                                     [&]<class Md>(const Md& medium, const Ray<T>& stretch, T stretch_length) {
+                                                         // (A caller's on_medium that takes a stretch is shown it: the path tracer's equiangular samples.)
+                                                         if constexpr (std::is_invocable_v<decltype(hooks.on_medium)&, const Md&, const WalkMediumStretch<T>&>)
+                                                             hooks.on_medium(medium, WalkMediumStretch<T>{.ray = stretch,
+                                                                                                          .length = stretch_length,
+                                                                                                          .power = power,
+                                                                                                          .diffuse_bounces = diffuse_bounces,
+                                                                                                          .media = media,
+                                                                                                          .rng = rng,
+                                                                                                          .vertices = length});
+                                                     }});
+        travelled += step.path;
+        switch (step.end) {
+        case StepEnd::escaped:
+        case StepEnd::ended: return;
+        case StepEnd::passed: break;
+        case StepEnd::medium:
+            if (++medium_bounces > limits.max_medium_bounces || length >= limits.max_length) return;
+            direct = false;
+            break;
+        case StepEnd::surface:
             if (length >= limits.max_length) return;
             direct = false;
+            break;
         }
     }
 }

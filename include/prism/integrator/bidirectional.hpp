@@ -79,6 +79,7 @@
 #include <prism/transport/direct.hpp>
 #include <prism/transport/media.hpp>
 #include <prism/transport/path_vertex.hpp>
+#include <prism/transport/walk_step.hpp>
 
 #include <algorithm>
 #include <array>
@@ -88,7 +89,6 @@
 #include <limits>
 #include <optional>
 #include <span>
-#include <variant>
 #include <vector>
 
 namespace prism {
@@ -764,91 +764,49 @@ private:
         return cos > T(0) ? T(1) / (rays.pixel_area() * cube(cos)) : T(0);
     }
 
-    /// Walk a subpath from `ray` (starting inside `media`), calling on_vertex(vertex,
-    /// place, d, distance, kept) at every vertex: a SurfaceVertex where it meets a surface
-    /// (false and index-matched interfaces are crossed), a MediumVertex where it scatters
-    /// in a medium (drawn by the medium's free flight); d the unit direction it arrived
-    /// along, `distance` the length since the last vertex, `kept` the largest share of the
-    /// throughput the flight there kept (1 at a surface). on_vertex returns the direction
-    /// drawn there (nothing ends the walk); on_escape(ray) is called when the path leaves
-    /// the scene. The state's throughput takes what the media and index-matched boundaries
-    /// let through; a dispersive interface splits it into its band.
+    /// Walk a subpath from `ray` (starting inside `media`) step by step (walk_step: false
+    /// and index-matched interfaces crossed, the media's attenuation and free flights taken
+    /// into the state's throughput), calling on_vertex(vertex, place, d, distance, kept)
+    /// at every vertex: a SurfaceVertex where it meets a surface, a MediumVertex where it
+    /// scatters in a medium; d the unit direction it arrived along, `distance` the length
+    /// since the last vertex, `kept` the largest share of the throughput the flight there
+    /// kept (1 at a surface). on_vertex returns the direction drawn there (nothing ends the
+    /// walk); on_escape(ray) is called when the path leaves the scene. A dispersive
+    /// interface splits the path into its band.
     template <class OnVertex, class OnEscape>
     void walk(Ray<T> ray, MediumStack media, PathState& state, Transport mode, Random& rng, int first_block, OnVertex&& on_vertex, OnEscape&& on_escape) const
     {
         T distance = T(0);
+        const auto at_surface = [&]<class M>(const M& material, const SurfaceArrival<T>& at) -> std::optional<Vec3<T>> {
+            const SurfaceVertex<M> vertex(material, at.hit.crossing, at.direction, mode, at.outside_index, wavelength(state.split()));
+            return on_vertex(vertex, Place{&at.hit, at.hit.crossing.point, at.outside_index}, at.direction, distance + at.path, T(1));
+        };
+        const auto in_medium = [&]<class Md>(const Md& medium, const MediumArrival<T>& at) -> std::optional<Vec3<T>> {
+            Place place;
+            place.point = at.point;
+            place.medium = at.media.top() ? MediumRef{MediumRef::In::object, at.media.top()->slot, at.media.top()->index} : MediumRef{MediumRef::In::air};
+            place.scattering = medium.scattering_at(at.point);
+            return on_vertex(MediumVertex(medium.phase, at.direction), place, at.direction, distance + at.path, max_component(at.weight));
+        };
+        const auto hooks = StepHooks{.on_surface = at_surface,
+                                     .on_medium = in_medium,
+                                     .on_escape = on_escape,
+                                     .through_matched =
+                                         [&](const Rgb<T>& tint) {
+                                             state.beta *= tint;
+                                             return true;
+                                         },
+                                     .at_interface =
+                                         [&]<class M>(const M&) {
+                                             // A white path takes its band here (its light split by wavelength).
+                                             if constexpr (disperses<M>) state.dispersed = true;
+                                             return wavelength(state.split());
+                                         }};
         for (int bounce = 0;; ++bounce) {
             rng.bounce(first_block + bounce);
-            std::optional<Hit<T>> hit;
-            if constexpr (has_media) {
-                enum class InMedium { passed, scattered, ended };
-                InMedium in_medium = InMedium::passed;
-                Ray<T> segment = ray;
-                T path = T(0);
-                hit = first_hit_through_media(*scene_, air_, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
-                    const Ray<T> stretch{piece.at(t0), piece.direction};
-                    const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, state.beta, rng);
-                    state.beta *= flight.weight;
-                    if (!flight.scattered) return true;
-                    Place place;
-                    place.point = stretch.at(flight.distance);
-                    place.medium = media.top() ? MediumRef{MediumRef::In::object, media.top()->slot, media.top()->index} : MediumRef{MediumRef::In::air};
-                    place.scattering = medium.scattering_at(place.point);
-                    const MediumVertex vertex(medium.phase, piece.direction);
-                    const std::optional<Vec3<T>> next = on_vertex(vertex, place, piece.direction, distance + before + t0 + flight.distance, max_component(flight.weight));
-                    in_medium = next ? InMedium::scattered : InMedium::ended;
-                    if (next) {
-                        ray = Ray<T>{place.point, *next};
-                        distance = T(0);
-                    }
-                    return false;
-                });
-                if (in_medium == InMedium::ended) return;
-                if (in_medium == InMedium::scattered) continue;
-            } else {
-                hit = scene_->closest_hit(ray, Interval<T>{T(0), infinity<T>});
-            }
-            if (!hit) {
-                on_escape(ray);
-                return;
-            }
-            const Crossing<T>& c = hit->crossing;
-            distance += c.t;
-            const bool go_on = scene_->visit_material(*hit, [&]<class M>(const M& material) -> bool {
-                attenuate_segment(*scene_, media, material, c, ray, state.beta);
-                [[maybe_unused]] std::conditional_t<transmits<M>, Interface, std::monostate> face{};
-                T outside_index = T(1);
-                if constexpr (transmits<M>) {
-                    face = nested_interface(media, {hit->slot, hit->index, nesting_priority(material)}, c.entering);
-                    if (!face.real) {
-                        ray = spawn_ray(c.point, c.error, c.normal, ray.direction);
-                        media = face.beyond;
-                        return true;
-                    }
-                    // A white path takes its band here (its light split by wavelength).
-                    if constexpr (disperses<M>) state.dispersed = true;
-                    outside_index = T(index_of(*scene_, outside_of(media, face, c.entering), wavelength(state.split())));
-                }
-                if constexpr (may_match_index<M>) {
-                    if (material.index_matched(outside_index)) {
-                        state.beta *= material.transmission_tint();
-                        ray = spawn_ray(c.point, c.error, c.normal, ray.direction);
-                        media = face.beyond;
-                        return true;
-                    }
-                }
-                const SurfaceVertex<M> vertex(material, c, ray.direction, mode, outside_index, wavelength(state.split()));
-                const Place place{&*hit, c.point, outside_index};
-                const std::optional<Vec3<T>> next = on_vertex(vertex, place, ray.direction, distance, T(1));
-                if (!next) return false;
-                if constexpr (transmits<M>) {
-                    if (dot(*next, c.normal) * dot(ray.direction, c.normal) > T(0)) media = face.beyond; // refracted
-                }
-                ray = spawn_ray(c.point, c.error, c.normal, *next);
-                distance = T(0);
-                return true;
-            });
-            if (!go_on) return;
+            const Step<T> step = walk_step(*scene_, air_, ray, media, state.beta, rng, hooks);
+            if (step.end == StepEnd::escaped || step.end == StepEnd::ended) return;
+            distance = step.end == StepEnd::passed ? distance + step.path : T(0);
         }
     }
 

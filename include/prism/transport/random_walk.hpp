@@ -2,24 +2,20 @@
 // random_walk: the path a photon takes through a scene, shared by the photon tracer, the
 // light tracer and the path tracer (a camera path carries importance by the same rules).
 //
-// From a ray carrying `power`, hit by hit: the medium the path crossed attenuates it;
-// at a diffuse or glossy surface the caller's `on_surface` sees the vertex (and may stop the walk);
-// false interfaces (inside a medium of higher priority) and index-matched ones
-// (may_match_index) are passed; a white path meeting
-// a dispersive interface takes one wavelength band at random; then scatter_photon picks
-// the next direction (material/scattering.hpp): a photon by Russian roulette at every
-// bounce, which keeps its power bounded; a camera path by its lobes alone, ended by
+// From a ray carrying `power`, step by step (transport/walk_step.hpp: the media on the
+// way attenuate it or scatter it, false and index-matched interfaces are passed, in the
+// air it follows the air's curve, inside objects straight lines): at a diffuse or glossy
+// surface the caller's `on_surface` sees the vertex (and may stop the walk); a white path
+// meeting a dispersive interface takes one wavelength band at random; then scatter_photon
+// picks the next direction (material/scattering.hpp): a photon by Russian roulette at
+// every bounce, which keeps its power bounded; a camera path by its lobes alone, ended by
 // roulette on its throughput once it has met WalkLimits::roulette_depth surfaces, so a
 // path on its way to a bright, hard-to-find light (a caustic) is not cut short by the dim
-// surfaces it left. In the air the path follows the air's curve (GradedAir), inside
-// objects straight lines. In a medium that scatters (an object's Fog, or FilledAir) the
-// walk draws where it scatters along each piece of its way (first_hit_through_media, the
-// curved pieces in fog filling graded air included); there the caller's
-// `on_medium` sees the vertex, and the walk goes on in a direction drawn from the
-// medium's phase function.
+// surfaces it left. Where it scatters in a medium (an object's Fog, or FilledAir) the
+// caller's `on_medium` sees the vertex, and the walk goes on in a direction drawn from
+// the medium's phase function.
 #pragma once
 
-#include <prism/core/offset.hpp>
 #include <prism/core/random.hpp>
 #include <prism/core/sampling.hpp>
 #include <prism/geometry/crossings.hpp>
@@ -30,15 +26,13 @@
 #include <prism/medium/phase.hpp>
 #include <prism/scene/hit.hpp>
 #include <prism/spectrum/bands.hpp>
-#include <prism/transport/media.hpp>
-#include <prism/transport/travel.hpp>
+#include <prism/transport/walk_step.hpp>
 
 #include <algorithm>
 #include <concepts>
 #include <limits>
 #include <optional>
 #include <type_traits>
-#include <variant>
 
 namespace prism {
 
@@ -218,104 +212,19 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
     int length = 0;         // vertices so far, at surfaces and in media
     for (int bounce = 0; bounce - medium_bounces <= limits.max_bounces; ++bounce) {
         rng.bounce(bounce); // each bounce its own block of the sampler's dimensions
-        // In the air a path follows the air's curve; inside objects, straight lines.
-        Ray<T> segment = ray;
-        T path = T(0);
-        // Where the path scatters in the media it crosses before the surface, piece by piece
-        // of its way: on each stretch of a medium that scatters, the caller's on_medium sees
-        // the stretch, then the walker's flight is drawn (the medium's sample_flight) and its
-        // power takes the draw's weight.
-        enum class InMedium { passed, scattered, absorbed };
-        [[maybe_unused]] InMedium in_medium = InMedium::passed;
-        const std::optional<Hit<T>> hit = [&] {
-            if constexpr (!SceneT::has_scattering_media && !air_scatters<Air>) {
-                return media.empty() ? first_hit_in_air(scene, air, ray, segment, &path) : first_hit_in_air(scene, StraightAir{}, ray, segment, &path);
-            } else {
-                return first_hit_through_media(scene, air, media, ray, segment, &path, [&]<class Md>(const Md& medium, const Ray<T>& piece, T t0, T t1, T before) {
-                    const Ray<T> stretch{piece.at(t0), piece.direction};
-                    const Rgb<T> entering = power;
-                    if constexpr (std::is_invocable_v<decltype(hooks.on_medium)&, const Md&, const WalkMediumStretch<T>&>)
-                        hooks.on_medium(medium, WalkMediumStretch<T>{.ray = stretch, .length = t1 - t0, .power = power, .diffuse_bounces = diffuse_bounces, .media = media, .rng = rng, .vertices = length});
-                    const FreeFlight<T> flight = medium.sample_flight(stretch, t1 - t0, power, rng);
-                    power *= flight.weight;
-                    if (!flight.scattered) return true;
-                    const T s = t0 + flight.distance;
-                    const Vec3<T>& d = piece.direction;
-                    const Vec3<T> p = piece.origin + s * d;
-                    travelled += before + s;
-                    const bool last = medium_bounces == limits.max_medium_bounces || length + 1 >= limits.max_length;
-                    in_medium = InMedium::absorbed;
-                    if (!hooks.on_medium(medium, WalkMediumVertex<T>{.point = p,
-                                                                     .direction = d,
-                                                                     .power = power,
-                                                                     .direct = direct,
-                                                                     .diffuse_bounces = diffuse_bounces,
-                                                                     .first_specular = first_specular,
-                                                                     .travelled = travelled,
-                                                                     .wavelength = wavelength,
-                                                                     .media = media,
-                                                                     .last_point = last_point,
-                                                                     .last_pdf = last_pdf,
-                                                                     .last = last,
-                                                                     .rng = rng,
-                                                                     .surface_bounces = surface_bounces,
-                                                                     .stretch = stretch,
-                                                                     .stretch_length = t1 - t0,
-                                                                     .entering = entering,
-                                                                     .length = length + 1}))
-                        return false;
-                    if constexpr (Mode == Transport::importance) {
-                        // A photon keeps its power: it goes on with the chance of the draw's
-                        // largest weight (the albedo in a grey medium), divided out.
-                        const T keep = std::min(T(1), max_component(flight.weight));
-                        if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return false;
-                        power /= keep;
-                    } else {
-                        if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return false;
-                    }
-                    const auto [u1, u2] = rng.uniform2<T>();
-                    const PhaseSample<T> next = medium.phase.sample(d, u1, u2);
-                    ray = {p, next.direction};
-                    last_point = p;
-                    last_pdf = next.pdf;
-                    ++diffuse_bounces;
-                    ++surface_bounces;
-                    ++length;
-                    if (direct) first_specular = false;
-                    in_medium = InMedium::scattered;
-                    return false;
-                });
-            }
-        }();
-        if constexpr (SceneT::has_scattering_media || air_scatters<Air>) {
-            if (in_medium == InMedium::absorbed) return;
-            if (in_medium == InMedium::scattered) {
-                if (++medium_bounces > limits.max_medium_bounces || length >= limits.max_length) return;
-                direct = false;
-                continue;
-            }
-        }
-        if (!hit) {
-            hooks.on_escape(WalkEscape<T>{.ray = segment, .power = power, .diffuse_bounces = diffuse_bounces, .first_specular = first_specular, .last_pdf = last_pdf});
-            return;
-        }
-        const Crossing<T>& c = hit->crossing;
-        const Vec3<T> d = normalize(segment.direction);
-        travelled += path;
-        enum class Next { absorbed, scattered, passed };
-        const Next next_step = scene.visit_material(*hit, [&]<class M>(const M& material) -> Next {
-            // What the medium it travelled in let through, before anything else.
-            attenuate_segment(scene, media, material, c, segment, power);
+        // At a surface: the hooks see it, then the path scatters by the lobes they leave it.
+        const auto at_surface = [&]<class M>(const M& material, const SurfaceArrival<T>& at) -> std::optional<Vec3<T>> {
+            const Crossing<T>& c = at.hit.crossing;
             const bool last = bounce - medium_bounces == limits.max_bounces || length + 1 >= limits.max_length;
             // The walk at this surface, as the hooks see it (outside_index: 1 until known).
             const auto vertex = [&](T outside_index) {
-                return WalkVertex<T>{.hit = *hit,
-                                     .direction = d,
+                return WalkVertex<T>{.hit = at.hit,
+                                     .direction = at.direction,
                                      .power = power,
                                      .direct = direct,
                                      .diffuse_bounces = diffuse_bounces,
                                      .first_specular = first_specular,
-                                     .travelled = travelled,
+                                     .travelled = travelled + at.path,
                                      .wavelength = wavelength,
                                      .media = media,
                                      .last_point = last_point,
@@ -328,76 +237,129 @@ void random_walk(const SceneT& scene, const Air& air, const SpectralBands<typena
             };
             if constexpr (emits<M>) hooks.on_emitter(material, vertex(T(1)));
             if constexpr (!has_diffuse<M> && !has_glossy<M> && !reflects<M> && !transmits<M>) {
-                return Next::absorbed; // a lamp that only emits
+                return std::nullopt; // a lamp that only emits
             } else {
-            // The media beyond the surface, the object whose medium lies on its far
-            // side, and false interfaces (inside a medium of higher priority) passed.
-            // (Only transmissive materials keep an interface: no copy of the media for
-            // the diffuse and mirror hits that make most of a path's bounces.)
-            [[maybe_unused]] std::conditional_t<transmits<M>, Interface, std::monostate> face{};
-            const Inside* outside = nullptr;
-            if constexpr (transmits<M>) {
-                face = nested_interface(media, {hit->slot, hit->index, nesting_priority(material)}, c.entering);
-                if (!face.real) {
-                    ray = spawn_ray(c.point, c.error, c.normal, d);
-                    media = face.beyond;
-                    return Next::passed;
+                Lobes lobes = Lobes::all;
+                // (A glossy lobe that is a mirror has no vertex of its own.)
+                if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, at.direction)) {
+                    const auto go_on = hooks.on_surface(material, vertex(at.outside_index));
+                    if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
+                    else lobes = go_on;
+                    if (lobes == Lobes::none) return std::nullopt;
                 }
-                outside = outside_of(media, face, c.entering);
-            }
-            const T outside_index = transmits<M> ? T(index_of(scene, outside, wavelength)) : T(1);
-            if constexpr (may_match_index<M>) {
-                // An index-matched boundary is no vertex: the path goes on straight, its
-                // tint taken, as a shadow ray passes it (Scene::transmittance).
-                if (material.index_matched(outside_index)) {
-                    if constexpr (Mode == Transport::radiance) power *= material.transmission_tint();
-                    else if (!russian_roulette(power, material.transmission_tint(), rng)) return Next::absorbed;
-                    ray = spawn_ray(c.point, c.error, c.normal, d);
-                    media = face.beyond;
-                    return Next::passed;
+                if constexpr (disperses<M>) {
+                    if (wavelength == T(0)) {
+                        // One band at random: its (non-negative) share of white, over its probability 1 / count.
+                        const int count = bands.size();
+                        const WavelengthBand<T>& band = bands[std::min(int(rng.uniform<T>() * T(count)), count - 1)];
+                        power *= band.photon_weight * T(count);
+                        wavelength = band.wavelength_nm;
+                    }
                 }
-            }
-            Lobes lobes = Lobes::all;
-            // (A glossy lobe that is a mirror has no vertex of its own.)
-            if constexpr (has_diffuse<M> || has_glossy<M>) if (scatters_smoothly(material, c, d)) {
-                const auto go_on = hooks.on_surface(material, vertex(outside_index));
-                if constexpr (std::same_as<std::remove_const_t<decltype(go_on)>, bool>) lobes = go_on ? Lobes::all : Lobes::none;
-                else lobes = go_on;
-                if (lobes == Lobes::none) return Next::absorbed;
-            }
-            if constexpr (disperses<M>) {
-                if (wavelength == T(0)) {
-                    // One band at random: its (non-negative) share of white, over its probability 1 / count.
-                    const int count = bands.size();
-                    const WavelengthBand<T>& band = bands[std::min(int(rng.uniform<T>() * T(count)), count - 1)];
-                    power *= band.photon_weight * T(count);
-                    wavelength = band.wavelength_nm;
+                const auto next = scatter_photon<Mode>(material, c, at.direction, power, rng, wavelength, at.outside_index, lobes);
+                if (!next) return std::nullopt;
+                if constexpr (Mode == Transport::radiance) {
+                    if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return std::nullopt;
                 }
+                last_point = c.point;
+                if constexpr (has_glossy<M>) last_pdf = next->pdf;
+                else last_pdf = next->diffuse ? std::max(dot(next->direction, c.facing_shading()), T(0)) / pi<T> : T(0);
+                if (next->diffuse) ++diffuse_bounces;
+                if (next->diffuse && !(has_glossy<M> && transmits<M>)) ++surface_bounces;
+                if (direct) first_specular = !next->diffuse;
+                ++length;
+                return next->direction;
             }
-            const Vec3<T> n = c.facing_normal();
-            const auto next = scatter_photon<Mode>(material, c, d, power, rng, wavelength, outside_index, lobes);
-            if (!next) return Next::absorbed;
-            if constexpr (Mode == Transport::radiance) {
-                if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return Next::absorbed;
+        };
+        // Where it scatters in a medium: the hooks see it, then a photon plays roulette by
+        // the flight's weight (a camera path by its throughput) and the medium's phase
+        // function draws the way on.
+        const auto in_medium = [&]<class Md>(const Md& medium, const MediumArrival<T>& at) -> std::optional<Vec3<T>> {
+            const bool last = medium_bounces == limits.max_medium_bounces || length + 1 >= limits.max_length;
+            if (!hooks.on_medium(medium, WalkMediumVertex<T>{.point = at.point,
+                                                             .direction = at.direction,
+                                                             .power = power,
+                                                             .direct = direct,
+                                                             .diffuse_bounces = diffuse_bounces,
+                                                             .first_specular = first_specular,
+                                                             .travelled = travelled + at.path,
+                                                             .wavelength = wavelength,
+                                                             .media = media,
+                                                             .last_point = last_point,
+                                                             .last_pdf = last_pdf,
+                                                             .last = last,
+                                                             .rng = rng,
+                                                             .surface_bounces = surface_bounces,
+                                                             .stretch = at.stretch,
+                                                             .stretch_length = at.stretch_length,
+                                                             .entering = at.entering,
+                                                             .length = length + 1}))
+                return std::nullopt;
+            if constexpr (Mode == Transport::importance) {
+                // A photon keeps its power: it goes on with the chance of the draw's
+                // largest weight (the albedo in a grey medium), divided out.
+                const T keep = std::min(T(1), max_component(at.weight));
+                if (!(keep > T(0)) || !(rng.uniform<T>() < keep)) return std::nullopt;
+                power /= keep;
+            } else {
+                if (bounce >= limits.roulette_depth && !path_roulette(power, rng)) return std::nullopt;
             }
-            ray = spawn_ray(c.point, c.error, c.normal, next->direction);
-            last_point = c.point;
-            if constexpr (has_glossy<M>) last_pdf = next->pdf;
-            else last_pdf = next->diffuse ? std::max(dot(next->direction, c.facing_shading()), T(0)) / pi<T> : T(0);
-            if (next->diffuse) ++diffuse_bounces;
-            if (next->diffuse && !(has_glossy<M> && transmits<M>)) ++surface_bounces;
-            if (direct) first_specular = !next->diffuse;
+            const auto [u1, u2] = rng.uniform2<T>();
+            const PhaseSample<T> next = medium.phase.sample(at.direction, u1, u2);
+            last_point = at.point;
+            last_pdf = next.pdf;
+            ++diffuse_bounces;
+            ++surface_bounces;
             ++length;
-            if constexpr (transmits<M>) {
-                if (dot(next->direction, n) < T(0)) media = face.beyond; // refracted
-            }
-            return Next::scattered;
-            }
-        });
-        if (next_step == Next::absorbed) return;
-        if (next_step == Next::scattered) {
+            if (direct) first_specular = false;
+            return next.direction;
+        };
+        const Step<T> step = walk_step(scene, air, ray, media, power, rng,
+                                       StepHooks{.on_surface = at_surface,
+                                                 .on_medium = in_medium,
+                                                 .on_escape =
+                                                     [&](const Ray<T>& segment) {
+                                                         hooks.on_escape(WalkEscape<T>{.ray = segment,
+                                                                                       .power = power,
+                                                                                       .diffuse_bounces = diffuse_bounces,
+                                                                                       .first_specular = first_specular,
+                                                                                       .last_pdf = last_pdf});
+                                                     },
+                                                 .through_matched =
+                                                     [&](const Rgb<T>& tint) {
+                                                         if constexpr (Mode == Transport::radiance) {
+                                                             power *= tint;
+                                                             return true;
+                                                         } else {
+                                                             return russian_roulette(power, tint, rng);
+                                                         }
+                                                     },
+                                                 .at_interface = [&](const auto&) { return wavelength; },
+                                                 .on_stretch =
+                                                     [&]<class Md>(const Md& medium, const Ray<T>& stretch, T stretch_length) {
+                                                         // (A caller's on_medium that takes a stretch is shown it: the path tracer's equiangular samples.)
+                                                         if constexpr (std::is_invocable_v<decltype(hooks.on_medium)&, const Md&, const WalkMediumStretch<T>&>)
+                                                             hooks.on_medium(medium, WalkMediumStretch<T>{.ray = stretch,
+                                                                                                          .length = stretch_length,
+                                                                                                          .power = power,
+                                                                                                          .diffuse_bounces = diffuse_bounces,
+                                                                                                          .media = media,
+                                                                                                          .rng = rng,
+                                                                                                          .vertices = length});
+                                                     }});
+        travelled += step.path;
+        switch (step.end) {
+        case StepEnd::escaped:
+        case StepEnd::ended: return;
+        case StepEnd::passed: break;
+        case StepEnd::medium:
+            if (++medium_bounces > limits.max_medium_bounces || length >= limits.max_length) return;
+            direct = false;
+            break;
+        case StepEnd::surface:
             if (length >= limits.max_length) return;
             direct = false;
+            break;
         }
     }
 }
