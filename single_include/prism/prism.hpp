@@ -220,10 +220,14 @@ template <Scalar T>
     return x == x && x != infinity<T> && x != -infinity<T>;
 }
 
+/// Whether every component is finite. (x - x is 0 for a finite x and NaN for an infinity
+/// or a NaN, and a sum with a NaN is NaN: no branch, as a ray's test before every query
+/// wants.)
 template <Scalar T>
 [[nodiscard]] constexpr bool is_finite(const Vec3<T>& v) noexcept
 {
-    return is_finite(v.x) && is_finite(v.y) && is_finite(v.z);
+    const T zero = (v.x - v.x) + (v.y - v.y) + (v.z - v.z);
+    return zero == T(0);
 }
 
 /// Clamp x into [lo, hi] (NaN maps to lo).
@@ -592,6 +596,7 @@ template <Scalar T>
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 namespace prism {
 
@@ -688,12 +693,19 @@ struct SlabRay {
         // so that every box is at least as wide here as there.
         const T pad = gamma<T>(20) * (max_component(prism::abs(ray.origin)) + T(2) * magnitude) + std::numeric_limits<T>::min();
         constexpr T largest = std::numeric_limits<T>::max();
+#pragma GCC unroll 3
         for (int axis = 0; axis < 3; ++axis) {
             const T d = ray.direction[axis];
             // 1/d, kept finite for a denormal d (no 0 * inf: no NaN); a zero d gives an
             // infinite reciprocal of its sign, so the slab is all or nothing (NaN only
             // for an origin exactly on a widened face, which the test then ignores).
-            inverse[axis] = d == T(0) ? (negative_zero(d) ? -infinity<T> : infinity<T>) : clamp(T(1) / d, -largest, largest);
+            // At run time 1 / +-0 is that infinity already: one division and a select.
+            if (std::is_constant_evaluated()) {
+                inverse[axis] = d == T(0) ? (negative_zero(d) ? -infinity<T> : infinity<T>) : clamp(T(1) / d, -largest, largest);
+            } else {
+                const T r = T(1) / d;
+                inverse[axis] = d == T(0) ? r : clamp(r, -largest, largest);
+            }
             far_inverse[axis] = inverse[axis] * far_widening;
             negative[std::size_t(axis)] = inverse[axis] < T(0);
             near_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] - pad : ray.origin[axis] + pad;
@@ -755,7 +767,7 @@ struct SlabLanes {
     static constexpr int width = Width;
     typedef T Lanes __attribute__((vector_size(width * sizeof(T))));
     Lanes near_origin[3], far_origin[3], inverse[3], far_inverse[3];
-    std::size_t near_face[3], far_face[3]; ///< rows of BvhNode::bounds
+    std::size_t near_face[3], far_face[3]; ///< byte offsets in BvhNode::bounds of the rows the ray meets first and last on each axis
 
     explicit SlabLanes(const SlabRay<T>& slab) noexcept
     {
@@ -765,21 +777,28 @@ struct SlabLanes {
             inverse[axis] = Lanes{} + slab.inverse[axis];
             far_inverse[axis] = Lanes{} + slab.far_inverse[axis];
             const std::size_t n = slab.negative[std::size_t(axis)];
-            near_face[axis] = std::size_t(axis) + 3 * n;
-            far_face[axis] = std::size_t(axis) + 3 * (1 - n);
+            near_face[axis] = (std::size_t(axis) + 3 * n) * sizeof(Lanes);
+            far_face[axis] = (std::size_t(axis) + 3 * (1 - n)) * sizeof(Lanes);
         }
     }
 
     [[nodiscard, gnu::always_inline]] unsigned may_cross(const BvhNode<T, Width>& node, Interval<T> range, std::array<T, width>& near) const noexcept
     {
-        Lanes t_near[3], t_far[3];
-        for (int axis = 0; axis < 3; ++axis) {
-            Lanes near_side, far_side;
-            __builtin_memcpy(&near_side, node.bounds[near_face[axis]].data(), sizeof(Lanes));
-            __builtin_memcpy(&far_side, node.bounds[far_face[axis]].data(), sizeof(Lanes));
-            t_near[axis] = (near_side - near_origin[axis]) * inverse[axis];
-            t_far[axis] = (far_side - far_origin[axis]) * far_inverse[axis];
-        }
+        // The three axes written out, each row found by its byte offset (a loop over the
+        // axes kept its results in memory, and took twice the instructions).
+        static_assert(sizeof(node.bounds[0]) == sizeof(Lanes));
+        const char* rows = reinterpret_cast<const char*>(node.bounds.data());
+        // (Loaded into variables: a function returning a vector wider than the target's
+        // registers changes the ABI, and GCC says so.)
+        Lanes n0, n1, n2, f0, f1, f2;
+        __builtin_memcpy(&n0, rows + near_face[0], sizeof(Lanes));
+        __builtin_memcpy(&n1, rows + near_face[1], sizeof(Lanes));
+        __builtin_memcpy(&n2, rows + near_face[2], sizeof(Lanes));
+        __builtin_memcpy(&f0, rows + far_face[0], sizeof(Lanes));
+        __builtin_memcpy(&f1, rows + far_face[1], sizeof(Lanes));
+        __builtin_memcpy(&f2, rows + far_face[2], sizeof(Lanes));
+        const Lanes t_near[3] = {(n0 - near_origin[0]) * inverse[0], (n1 - near_origin[1]) * inverse[1], (n2 - near_origin[2]) * inverse[2]};
+        const Lanes t_far[3] = {(f0 - far_origin[0]) * far_inverse[0], (f1 - far_origin[1]) * far_inverse[1], (f2 - far_origin[2]) * far_inverse[2]};
         // SlabRay::later and sooner, written out (a function returning a vector wider
         // than the target's registers changes the ABI, and GCC says so).
         const Lanes min = Lanes{} + range.min, max = Lanes{} + range.max;
@@ -4853,6 +4872,10 @@ template <int Kz, Scalar T>
     const Lanes e2 = px[0] * py[1] - py[0] * px[1];
     const auto missed = ((e0 < T(0)) | (e1 < T(0)) | (e2 < T(0))) & ((e0 > T(0)) | (e1 > T(0)) | (e2 > T(0))) &
                         ~((e0 == T(0)) | (e1 == T(0)) | (e2 == T(0)));
+    // A bit per lane kept: one movmskps where the lanes are SSE's four floats.
+#if defined(__SSE__)
+    if constexpr (sizeof(T) == 4) return ~unsigned(__builtin_ia32_movmskps((Lanes)missed)) & 0xfu;
+#endif
     unsigned maybe = 0;
     for (int lane = 0; lane < width; ++lane) maybe |= missed[lane] ? 0u : 1u << lane;
     return maybe;
@@ -12402,6 +12425,7 @@ public:
             }
         });
         bounded_objects_ = !cluster_.empty();
+        cull_by_cluster_ = keys_.size() > 1;
         if constexpr (has_emitters) build_emitters();
         if constexpr (may_have_tree) {
             if (keys_.size() >= tree_from) build_tree(boxes);
@@ -12446,7 +12470,7 @@ public:
                     nearest_of(keys_[p], p, ray, r, nearest);
                     return false;
                 });
-        } else if (bounded_objects_ && cluster_.may_cross(ray, range)) {
+        } else if (bounded_objects_ && (!cull_by_cluster_ || cluster_.may_cross(ray, range))) {
             // The scan meets objects in key order: with nothing unbounded found before it,
             // no object can win a tie with one found before it.
             const bool in_key_order = !nearest.found;
@@ -12623,6 +12647,13 @@ private:
     [[no_unique_address]] std::conditional_t<has_emitters, detail::EmitterTable<T>, detail::NoShapes> emitter_table_;
     [[no_unique_address]] std::conditional_t<has_emitters, std::tuple<detail::SlotEmitters<Slots>...>, detail::NoShapes> slot_emitters_;
     bool bounded_objects_ = false;
+    /// Whether closest_hit tests cluster_ (widened, so that it culls nothing a shape could
+    /// report) before the bounded objects: where there are two or more. One object's box
+    /// is the cluster, and a shape tests its own box or is cheaper than the test (a mesh's
+    /// Bvh starts with its root's children; a sphere is one quadratic). (A shadow ray's
+    /// test is unwidened, and culls the spurious crossings rounding may give far off: it
+    /// stays.)
+    bool cull_by_cluster_ = false;
     bool has_tree_ = false;
     Bvh<T> tree_; ///< over the bounded objects (when there are at least tree_from)
     /// The object behind each of the tree's primitives, in its leaf order; without a tree

@@ -55,6 +55,21 @@ TEST_CASE_TEMPLATE("vector helpers match GLM's own", T, float, double)
     CHECK(prism::clamp(std::numeric_limits<T>::quiet_NaN(), T(0), T(1)) == T(0));
 }
 
+TEST_CASE_TEMPLATE("is_finite of a vector (branch-free) agrees with its components' is_finite over every mix of hostile values", T, float, double)
+{
+    using L = std::numeric_limits<T>;
+    const T values[] = {T(0), -T(0), T(1), -T(2.5), L::max(), -L::max(), L::min(), L::denorm_min(), L::infinity(), -L::infinity(), L::quiet_NaN(), -L::quiet_NaN()};
+    int finite = 0;
+    for (const T x : values)
+        for (const T y : values)
+            for (const T z : values) {
+                const bool expected = std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
+                CHECK(prism::is_finite(Vec3<T>{x, y, z}) == expected);
+                finite += expected;
+            }
+    CHECK(finite == 8 * 8 * 8);
+}
+
 TEST_CASE_TEMPLATE("difference_of_products keeps the digits that a*b - c*d cancels", T, float, double)
 {
     // b^2 - a c for a nearly tangent quadratic: 1 + u against (1 + u/2)^2, whose exact

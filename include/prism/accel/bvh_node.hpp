@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 namespace prism {
 
@@ -110,12 +111,19 @@ struct SlabRay {
         // so that every box is at least as wide here as there.
         const T pad = gamma<T>(20) * (max_component(prism::abs(ray.origin)) + T(2) * magnitude) + std::numeric_limits<T>::min();
         constexpr T largest = std::numeric_limits<T>::max();
+#pragma GCC unroll 3
         for (int axis = 0; axis < 3; ++axis) {
             const T d = ray.direction[axis];
             // 1/d, kept finite for a denormal d (no 0 * inf: no NaN); a zero d gives an
             // infinite reciprocal of its sign, so the slab is all or nothing (NaN only
             // for an origin exactly on a widened face, which the test then ignores).
-            inverse[axis] = d == T(0) ? (negative_zero(d) ? -infinity<T> : infinity<T>) : clamp(T(1) / d, -largest, largest);
+            // At run time 1 / +-0 is that infinity already: one division and a select.
+            if (std::is_constant_evaluated()) {
+                inverse[axis] = d == T(0) ? (negative_zero(d) ? -infinity<T> : infinity<T>) : clamp(T(1) / d, -largest, largest);
+            } else {
+                const T r = T(1) / d;
+                inverse[axis] = d == T(0) ? r : clamp(r, -largest, largest);
+            }
             far_inverse[axis] = inverse[axis] * far_widening;
             negative[std::size_t(axis)] = inverse[axis] < T(0);
             near_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] - pad : ray.origin[axis] + pad;
@@ -177,7 +185,7 @@ struct SlabLanes {
     static constexpr int width = Width;
     typedef T Lanes __attribute__((vector_size(width * sizeof(T))));
     Lanes near_origin[3], far_origin[3], inverse[3], far_inverse[3];
-    std::size_t near_face[3], far_face[3]; ///< rows of BvhNode::bounds
+    std::size_t near_face[3], far_face[3]; ///< byte offsets in BvhNode::bounds of the rows the ray meets first and last on each axis
 
     explicit SlabLanes(const SlabRay<T>& slab) noexcept
     {
@@ -187,21 +195,28 @@ struct SlabLanes {
             inverse[axis] = Lanes{} + slab.inverse[axis];
             far_inverse[axis] = Lanes{} + slab.far_inverse[axis];
             const std::size_t n = slab.negative[std::size_t(axis)];
-            near_face[axis] = std::size_t(axis) + 3 * n;
-            far_face[axis] = std::size_t(axis) + 3 * (1 - n);
+            near_face[axis] = (std::size_t(axis) + 3 * n) * sizeof(Lanes);
+            far_face[axis] = (std::size_t(axis) + 3 * (1 - n)) * sizeof(Lanes);
         }
     }
 
     [[nodiscard, gnu::always_inline]] unsigned may_cross(const BvhNode<T, Width>& node, Interval<T> range, std::array<T, width>& near) const noexcept
     {
-        Lanes t_near[3], t_far[3];
-        for (int axis = 0; axis < 3; ++axis) {
-            Lanes near_side, far_side;
-            __builtin_memcpy(&near_side, node.bounds[near_face[axis]].data(), sizeof(Lanes));
-            __builtin_memcpy(&far_side, node.bounds[far_face[axis]].data(), sizeof(Lanes));
-            t_near[axis] = (near_side - near_origin[axis]) * inverse[axis];
-            t_far[axis] = (far_side - far_origin[axis]) * far_inverse[axis];
-        }
+        // The three axes written out, each row found by its byte offset (a loop over the
+        // axes kept its results in memory, and took twice the instructions).
+        static_assert(sizeof(node.bounds[0]) == sizeof(Lanes));
+        const char* rows = reinterpret_cast<const char*>(node.bounds.data());
+        // (Loaded into variables: a function returning a vector wider than the target's
+        // registers changes the ABI, and GCC says so.)
+        Lanes n0, n1, n2, f0, f1, f2;
+        __builtin_memcpy(&n0, rows + near_face[0], sizeof(Lanes));
+        __builtin_memcpy(&n1, rows + near_face[1], sizeof(Lanes));
+        __builtin_memcpy(&n2, rows + near_face[2], sizeof(Lanes));
+        __builtin_memcpy(&f0, rows + far_face[0], sizeof(Lanes));
+        __builtin_memcpy(&f1, rows + far_face[1], sizeof(Lanes));
+        __builtin_memcpy(&f2, rows + far_face[2], sizeof(Lanes));
+        const Lanes t_near[3] = {(n0 - near_origin[0]) * inverse[0], (n1 - near_origin[1]) * inverse[1], (n2 - near_origin[2]) * inverse[2]};
+        const Lanes t_far[3] = {(f0 - far_origin[0]) * far_inverse[0], (f1 - far_origin[1]) * far_inverse[1], (f2 - far_origin[2]) * far_inverse[2]};
         // SlabRay::later and sooner, written out (a function returning a vector wider
         // than the target's registers changes the ABI, and GCC says so).
         const Lanes min = Lanes{} + range.min, max = Lanes{} + range.max;

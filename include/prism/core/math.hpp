@@ -121,10 +121,14 @@ template <Scalar T>
     return x == x && x != infinity<T> && x != -infinity<T>;
 }
 
+/// Whether every component is finite. (x - x is 0 for a finite x and NaN for an infinity
+/// or a NaN, and a sum with a NaN is NaN: no branch, as a ray's test before every query
+/// wants.)
 template <Scalar T>
 [[nodiscard]] constexpr bool is_finite(const Vec3<T>& v) noexcept
 {
-    return is_finite(v.x) && is_finite(v.y) && is_finite(v.z);
+    const T zero = (v.x - v.x) + (v.y - v.y) + (v.z - v.z);
+    return zero == T(0);
 }
 
 /// Clamp x into [lo, hi] (NaN maps to lo).

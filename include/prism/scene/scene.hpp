@@ -141,6 +141,7 @@ public:
             }
         });
         bounded_objects_ = !cluster_.empty();
+        cull_by_cluster_ = keys_.size() > 1;
         if constexpr (has_emitters) build_emitters();
         if constexpr (may_have_tree) {
             if (keys_.size() >= tree_from) build_tree(boxes);
@@ -185,7 +186,7 @@ public:
                     nearest_of(keys_[p], p, ray, r, nearest);
                     return false;
                 });
-        } else if (bounded_objects_ && cluster_.may_cross(ray, range)) {
+        } else if (bounded_objects_ && (!cull_by_cluster_ || cluster_.may_cross(ray, range))) {
             // The scan meets objects in key order: with nothing unbounded found before it,
             // no object can win a tie with one found before it.
             const bool in_key_order = !nearest.found;
@@ -362,6 +363,13 @@ private:
     [[no_unique_address]] std::conditional_t<has_emitters, detail::EmitterTable<T>, detail::NoShapes> emitter_table_;
     [[no_unique_address]] std::conditional_t<has_emitters, std::tuple<detail::SlotEmitters<Slots>...>, detail::NoShapes> slot_emitters_;
     bool bounded_objects_ = false;
+    /// Whether closest_hit tests cluster_ (widened, so that it culls nothing a shape could
+    /// report) before the bounded objects: where there are two or more. One object's box
+    /// is the cluster, and a shape tests its own box or is cheaper than the test (a mesh's
+    /// Bvh starts with its root's children; a sphere is one quadratic). (A shadow ray's
+    /// test is unwidened, and culls the spurious crossings rounding may give far off: it
+    /// stays.)
+    bool cull_by_cluster_ = false;
     bool has_tree_ = false;
     Bvh<T> tree_; ///< over the bounded objects (when there are at least tree_from)
     /// The object behind each of the tree's primitives, in its leaf order; without a tree
