@@ -558,6 +558,24 @@ struct NearRay {
     [[nodiscard]] T back(T t) const noexcept { return shift == 0 ? t : T(shift + double(t)); }
 };
 
+/// What brought_near asks of a box, worked out once for the many rays a shape is asked
+/// about: the box, its centre, and the squared distance from the centre within which a
+/// ray is near already (64 half diagonals).
+template <Scalar T>
+struct NearBox {
+    Aabb<T> box;    ///< the box
+    Vec3<T> centre{T(0)}; ///< its centre
+    T near2 = T(0); ///< 16384 |half diagonal|^2: a ray from nearer is near already
+
+    constexpr NearBox() = default;
+    /// The box `b`, worked out.
+    constexpr explicit NearBox(const Aabb<T>& b) noexcept : box(b), centre((b.lo + b.hi) * T(0.5))
+    {
+        const Vec3<T> half = (b.hi - b.lo) * T(0.5);
+        near2 = T(16384) * dot(half, half);
+    }
+};
+
 /// A float ray from more than 64 times `box`'s diagonal away (and the box ahead), its
 /// origin moved along it, in double, to twice the diagonal before the box's centre: the same line, rounded once
 /// near the box. A shape's test subtracts the origin from its points, and from 10^6
@@ -566,21 +584,29 @@ struct NearRay {
 /// A ray near already, one the box lies behind or beside, a ray that is not finite, and a
 /// double ray are kept as they are (shift 0).
 template <Scalar T>
-[[nodiscard]] NearRay<T> brought_near(const Ray<T>& ray, const Aabb<T>& box) noexcept
+[[nodiscard]] NearRay<T> brought_near(const Ray<T>& ray, const NearBox<T>& near) noexcept
 {
     if constexpr (!std::is_same_v<T, float>) {
+        (void)near;
         return {ray};
     } else {
         // Most rays start near what they test: a test in float first (the origin within 64
         // diagonals of the centre, or a NaN anywhere, keeps the ray).
-        const Vec3<T> half = (box.hi - box.lo) * T(0.5), away = ray.origin - (box.lo + box.hi) * T(0.5);
-        if (!(dot(away, away) > T(16384) * dot(half, half))) return {ray};
-        const Vec3<double> o(ray.origin), d(ray.direction), lo(box.lo), hi(box.hi);
+        const Vec3<T> away = ray.origin - near.centre;
+        if (!(dot(away, away) > near.near2)) return {ray};
+        const Vec3<double> o(ray.origin), d(ray.direction), lo(near.box.lo), hi(near.box.hi);
         const double speed = length(d), size = length(hi - lo);
         const double shift = (dot((lo + hi) * 0.5 - o, d) / speed - 2 * size) / speed;
         if (!(shift * speed > 32 * size) || !(shift < double(std::numeric_limits<T>::max()))) return {ray};
         return {Ray<T>{Vec3<T>(o + shift * d), ray.direction}, shift};
     }
+}
+
+/// brought_near for a box asked about once.
+template <Scalar T>
+[[nodiscard]] NearRay<T> brought_near(const Ray<T>& ray, const Aabb<T>& box) noexcept
+{
+    return brought_near(ray, NearBox<T>(box));
 }
 
 } // namespace prism
@@ -4726,6 +4752,7 @@ static_assert(Shape<Disk<double>>);
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 namespace prism::detail {
 
@@ -4737,6 +4764,13 @@ struct ShearedRay {
     int kx = 0, ky = 1, kz = 2;
     T sx = 0, sy = 0, sz = 0;
 
+#if PRISM_VECTOR_EXTENSIONS
+    /// What the four-triangle edge test takes from the ray in every lane, broadcast once
+    /// per ray: the origin on the permuted axes kx, ky, kz, and the shear sx, sy.
+    typedef T Lanes __attribute__((vector_size(4 * sizeof(T))));
+    Lanes lane_origin[3]{}, lane_sx{}, lane_sy{};
+#endif
+
     explicit ShearedRay(const Ray<T>& ray) noexcept : origin(ray.origin), direction(ray.direction)
     {
         const Vec3<T> a = prism::abs(ray.direction);
@@ -4746,6 +4780,13 @@ struct ShearedRay {
         sz = T(1) / direction[kz];
         sx = -direction[kx] * sz;
         sy = -direction[ky] * sz;
+#if PRISM_VECTOR_EXTENSIONS
+        lane_origin[0] = Lanes{} + origin[kx];
+        lane_origin[1] = Lanes{} + origin[ky];
+        lane_origin[2] = Lanes{} + origin[kz];
+        lane_sx = Lanes{} + sx;
+        lane_sy = Lanes{} + sy;
+#endif
     }
 };
 
@@ -4856,16 +4897,19 @@ template <int Kz, Scalar T>
 {
     constexpr int kx = Kz == 2 ? 0 : Kz + 1, ky = kx == 2 ? 0 : kx + 1;
     constexpr int width = TriangleBlock<T>::width;
-    typedef T Lanes __attribute__((vector_size(width * sizeof(T))));
+    using Lanes = typename ShearedRay<T>::Lanes;
+    static_assert(sizeof(Lanes) == width * sizeof(T));
+    // (The ray's values broadcast once per ray, ShearedRay's lanes; the corners written out.)
     Lanes px[3], py[3];
+#pragma GCC unroll 3
     for (int i = 0; i < 3; ++i) {
         Lanes x, y, z;
         __builtin_memcpy(&x, block.corner[std::size_t(3 * i + kx)].data(), sizeof(Lanes));
         __builtin_memcpy(&y, block.corner[std::size_t(3 * i + ky)].data(), sizeof(Lanes));
         __builtin_memcpy(&z, block.corner[std::size_t(3 * i + Kz)].data(), sizeof(Lanes));
-        x -= ray.origin[kx], y -= ray.origin[ky], z -= ray.origin[Kz];
-        px[i] = x + ray.sx * z;
-        py[i] = y + ray.sy * z;
+        x -= ray.lane_origin[0], y -= ray.lane_origin[1], z -= ray.lane_origin[2];
+        px[i] = x + ray.lane_sx * z;
+        py[i] = y + ray.lane_sy * z;
     }
     const Lanes e0 = px[1] * py[2] - py[1] * px[2];
     const Lanes e1 = px[2] * py[0] - py[2] * px[0];
@@ -4879,6 +4923,112 @@ template <int Kz, Scalar T>
     unsigned maybe = 0;
     for (int lane = 0; lane < width; ++lane) maybe |= missed[lane] ? 0u : 1u << lane;
     return maybe;
+}
+
+/// hit_triangle on a block's four triangles at once: which of the lanes `lanes` (a bit
+/// each) the ray hits strictly inside `range`, with their t, barycentric weights and side.
+/// Each lane takes hit_triangle_along's operations in the same order, so its answer and
+/// numbers are hit_triangle's, bit for bit (tests/geometry/triangle.cpp checks it over
+/// random rays), but for a lane with an edge function of exactly 0, which hit_triangle
+/// works out again in double: those are left in `redo` for it. (A ray keeps few of a
+/// leaf's lanes past the edge test; the test of four costs about what hit_triangle's of
+/// one does.)
+template <Scalar T>
+struct BlockHits {
+    unsigned hit = 0;  ///< a bit per lane hit within the range
+    unsigned redo = 0; ///< a bit per lane hit_triangle must decide
+    std::array<T, 4> t{};                ///< t[lane]
+    std::array<std::array<T, 4>, 3> b{}; ///< b[i][lane]: corner i's weight
+    unsigned entering = 0;               ///< a bit per lane the ray enters by
+};
+
+template <int Kz, Scalar T>
+[[nodiscard, gnu::always_inline]] inline BlockHits<T> hit_block_along(const ShearedRay<T>& ray, const TriangleBlock<T>& block, Interval<T> range,
+                                                                     unsigned lanes) noexcept
+{
+    constexpr int kx = Kz == 2 ? 0 : Kz + 1, ky = kx == 2 ? 0 : kx + 1;
+    using Lanes = typename ShearedRay<T>::Lanes;
+    using Bits = std::conditional_t<sizeof(T) == 4, std::int32_t, std::int64_t>;
+    typedef Bits BitLanes __attribute__((vector_size(sizeof(Lanes))));
+    // |v| by its sign bit, as std::abs; a comparison's lanes as bits.
+    const auto abs = [](const Lanes& v, Lanes& out) {
+        BitLanes bits;
+        __builtin_memcpy(&bits, &v, sizeof(Lanes));
+        bits &= ~(BitLanes{} + Bits(std::uint64_t(1) << (8 * sizeof(T) - 1)));
+        __builtin_memcpy(&out, &bits, sizeof(Lanes));
+    };
+    const auto mask = [](const BitLanes& m) {
+        unsigned bits = 0;
+        for (int lane = 0; lane < 4; ++lane) bits |= m[lane] != 0 ? 1u << lane : 0u;
+        return bits;
+    };
+    Lanes px[3], py[3], pz[3];
+#pragma GCC unroll 3
+    for (int i = 0; i < 3; ++i) {
+        Lanes x, y, z;
+        __builtin_memcpy(&x, block.corner[std::size_t(3 * i + kx)].data(), sizeof(Lanes));
+        __builtin_memcpy(&y, block.corner[std::size_t(3 * i + ky)].data(), sizeof(Lanes));
+        __builtin_memcpy(&z, block.corner[std::size_t(3 * i + Kz)].data(), sizeof(Lanes));
+        x -= ray.lane_origin[0], y -= ray.lane_origin[1], z -= ray.lane_origin[2];
+        px[i] = x + ray.lane_sx * z;
+        py[i] = y + ray.lane_sy * z;
+        pz[i] = z;
+    }
+    const Lanes e0 = px[1] * py[2] - py[1] * px[2];
+    const Lanes e1 = px[2] * py[0] - py[2] * px[0];
+    const Lanes e2 = px[0] * py[1] - py[0] * px[1];
+    BlockHits<T> out;
+    out.redo = mask((e0 == T(0)) | (e1 == T(0)) | (e2 == T(0))) & lanes;
+    const BitLanes below = (e0 < T(0)) | (e1 < T(0)) | (e2 < T(0)), above = (e0 > T(0)) | (e1 > T(0)) | (e2 > T(0));
+    const Lanes det = e0 + e1 + e2;
+    const Lanes sz = Lanes{} + ray.sz;
+    const Lanes z0 = pz[0] * sz, z1 = pz[1] * sz, z2 = pz[2] * sz;
+    const Lanes t_scaled = e0 * z0 + e1 * z1 + e2 * z2;
+    const Lanes inv_det = T(1) / det;
+    const Lanes t = t_scaled * inv_det;
+    // t above zero by more than its rounding: hit_triangle_along's bound, lane by lane.
+    Lanes a0, a1, a2, m;
+    abs(z0, a0), abs(z1, a1), abs(z2, a2);
+    m = a0 > a1 ? a0 : a1;
+    const Lanes max_z = m > a2 ? m : a2;
+    abs(px[0], a0), abs(px[1], a1), abs(px[2], a2);
+    m = a0 > a1 ? a0 : a1;
+    const Lanes max_x = m > a2 ? m : a2;
+    abs(py[0], a0), abs(py[1], a1), abs(py[2], a2);
+    m = a0 > a1 ? a0 : a1;
+    const Lanes max_y = m > a2 ? m : a2;
+    const Lanes delta_z = gamma<T>(3) * max_z;
+    const Lanes delta_x = gamma<T>(5) * (max_x + max_z), delta_y = gamma<T>(5) * (max_y + max_z);
+    const Lanes delta_e = T(2) * (gamma<T>(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+    abs(e0, a0), abs(e1, a1), abs(e2, a2);
+    m = a0 > a1 ? a0 : a1;
+    const Lanes max_e = m > a2 ? m : a2;
+    Lanes abs_inv_det;
+    abs(inv_det, abs_inv_det);
+    const Lanes delta_t = T(3) * (gamma<T>(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * abs_inv_det;
+    const Lanes min01 = z1 < z0 ? z1 : z0;
+    const Lanes min_z = z2 < min01 ? z2 : min01;
+    const BitLanes in_front = (t > delta_t) | (min_z > delta_z);
+    const BitLanes hit = ~(below & above) & (det != T(0)) & ((Lanes{} + range.min) < t) & (t < (Lanes{} + range.max)) & in_front;
+    out.hit = mask(hit) & lanes & ~out.redo;
+    out.entering = mask((det < T(0)) != (sz < T(0)));
+    const Lanes b0 = e0 * inv_det, b1 = e1 * inv_det, b2 = e2 * inv_det;
+    __builtin_memcpy(out.t.data(), &t, sizeof(Lanes));
+    __builtin_memcpy(out.b[0].data(), &b0, sizeof(Lanes));
+    __builtin_memcpy(out.b[1].data(), &b1, sizeof(Lanes));
+    __builtin_memcpy(out.b[2].data(), &b2, sizeof(Lanes));
+    return out;
+}
+
+/// hit_block_along for the ray's axis.
+template <Scalar T>
+[[nodiscard, gnu::always_inline]] inline BlockHits<T> hit_block(const ShearedRay<T>& ray, const TriangleBlock<T>& block, Interval<T> range, unsigned lanes) noexcept
+{
+    switch (ray.kz) {
+    case 0: return hit_block_along<0>(ray, block, range, lanes);
+    case 1: return hit_block_along<1>(ray, block, range, lanes);
+    default: return hit_block_along<2>(ray, block, range, lanes);
+    }
 }
 #endif
 
@@ -5004,6 +5154,7 @@ struct MeshData {
     std::vector<std::array<Vec2<T>, 3>> uvs;     ///< per triangle, its corners' coordinates (or none)
     Bvh<T> bvh;
     Aabb<T> bounds;
+    NearBox<T> near; ///< the bounds as brought_near asks them
     bool closed = false;
 };
 
@@ -5070,6 +5221,7 @@ public:
             boxes[f] = box.rounded_out();
             data->bounds = data->bounds.merged(boxes[f]);
         }
+        data->near = NearBox<T>(data->bounds);
         data->bvh = Bvh<T>(boxes, config);
         const auto order = data->bvh.primitives();
         make_blocks(*data, positions, triangles);
@@ -5152,19 +5304,17 @@ public:
     /// first_crossing, keeping the triangle hit and where (for surface_crossing).
     [[nodiscard]] T first_crossing(const Ray<T>& far_ray, Interval<T> far_range, SurfaceHint<T>& hint) const noexcept
     {
-        const NearRay<T> near = brought_near(far_ray, data_->bounds);
+        const NearRay<T> near = brought_near(far_ray, data_->near);
         const Ray<T>& ray = near.ray;
         Interval<T> range = near.range(far_range);
         const detail::ShearedRay<T> sheared(ray);
         detail::TriangleHit<T> nearest{infinity<T>, {}, false};
         std::uint32_t triangle = 0;
         data_->bvh.traverse_leaves(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) {
-            for_each_maybe_hit(sheared, first, count, [&](std::uint32_t k, const std::array<Vec3<T>, 3>& tri) {
-                detail::TriangleHit<T> h;
-                if (detail::hit_triangle(sheared, tri, r, h)) nearest = h, r.max = h.t, triangle = k;
+            return for_each_hit(sheared, first, count, r, [&](std::uint32_t k, const detail::TriangleHit<T>& h) {
+                nearest = h, r.max = h.t, triangle = k;
                 return false;
             });
-            return false;
         });
         if (!(nearest.t < infinity<T>)) return infinity<T>;
         const T t = near.back(nearest.t);
@@ -5189,15 +5339,12 @@ public:
     /// Whether any crossing lies strictly inside `range` (a shadow ray's query).
     [[nodiscard]] bool any_crossing(const Ray<T>& far_ray, Interval<T> far_range) const noexcept
     {
-        const NearRay<T> near = brought_near(far_ray, data_->bounds);
+        const NearRay<T> near = brought_near(far_ray, data_->near);
         const Ray<T>& ray = near.ray;
         Interval<T> range = near.range(far_range);
         const detail::ShearedRay<T> sheared(ray);
         return data_->bvh.any_leaf(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) {
-            return for_each_maybe_hit(sheared, first, count, [&](std::uint32_t, const std::array<Vec3<T>, 3>& tri) {
-                detail::TriangleHit<T> h;
-                return detail::hit_triangle(sheared, tri, r, h);
-            });
+            return for_each_hit(sheared, first, count, r, [](std::uint32_t, const detail::TriangleHit<T>&) { return true; });
         });
     }
 
@@ -5205,7 +5352,7 @@ public:
     template <bool Surface = true>
     [[nodiscard]] Crossings<T, N> crossings(const Ray<T>& far_ray, Interval<T> far_range) const noexcept
     {
-        const NearRay<T> near = brought_near(far_ray, data_->bounds);
+        const NearRay<T> near = brought_near(far_ray, data_->near);
         const Ray<T>& ray = near.ray;
         Interval<T> range = near.range(far_range);
         Crossings<T, N> out;
@@ -5242,6 +5389,44 @@ public:
     }
 
 private:
+    /// Calls take(k, hit) for each triangle of the leaf [first, first + count) that the ray
+    /// hits within `range` (which take may shrink), in order, until take returns true (and
+    /// then returns true): what hit_triangle finds, lane by lane, for each triangle the
+    /// edge test keeps, but the block's lanes kept tested at once (hit_block: the same
+    /// numbers).
+    template <class Take>
+    [[gnu::always_inline]] bool for_each_hit(const detail::ShearedRay<T>& ray, std::uint32_t first, std::uint32_t count, Interval<T>& range, Take&& take) const noexcept
+    {
+#if PRISM_VECTOR_EXTENSIONS
+        constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
+        const detail::TriangleBlock<T>* block = &data_->blocks[first / width]; // a leaf starts a block
+        for (std::uint32_t k = first; k < first + count; k += width, ++block) {
+            const std::uint32_t lanes = std::min(width, first + count - k);
+            unsigned maybe = detail::edge_test(ray, *block) & ((1u << lanes) - 1);
+            if (maybe == 0) continue;
+            const detail::BlockHits<T> hits = detail::hit_block(ray, *block, range, maybe);
+            for (; maybe != 0; maybe &= maybe - 1) {
+                const auto lane = std::uint32_t(std::countr_zero(maybe));
+                detail::TriangleHit<T> h;
+                if ((hits.redo >> lane) & 1u) {
+                    if (!detail::hit_triangle(ray, block->triangle(lane), range, h)) continue;
+                } else {
+                    // (Tested against the range as it was: a hit before may have shrunk it.)
+                    if (!((hits.hit >> lane) & 1u) || !(hits.t[lane] < range.max)) continue;
+                    h = {hits.t[lane], {hits.b[0][lane], hits.b[1][lane], hits.b[2][lane]}, ((hits.entering >> lane) & 1u) != 0};
+                }
+                if (take(k + lane, h)) return true;
+            }
+        }
+        return false;
+#else
+        return for_each_maybe_hit(ray, first, count, [&](std::uint32_t k, const std::array<Vec3<T>, 3>& tri) {
+            detail::TriangleHit<T> h;
+            return detail::hit_triangle(ray, tri, range, h) && take(k, h);
+        });
+#endif
+    }
+
     /// Calls test(k, corners) for each triangle of the leaf [first, first + count) that
     /// the edge test keeps, in order, until one returns true (and then returns true).
     template <class Test>

@@ -130,6 +130,24 @@ struct NearRay {
     [[nodiscard]] T back(T t) const noexcept { return shift == 0 ? t : T(shift + double(t)); }
 };
 
+/// What brought_near asks of a box, worked out once for the many rays a shape is asked
+/// about: the box, its centre, and the squared distance from the centre within which a
+/// ray is near already (64 half diagonals).
+template <Scalar T>
+struct NearBox {
+    Aabb<T> box;    ///< the box
+    Vec3<T> centre{T(0)}; ///< its centre
+    T near2 = T(0); ///< 16384 |half diagonal|^2: a ray from nearer is near already
+
+    constexpr NearBox() = default;
+    /// The box `b`, worked out.
+    constexpr explicit NearBox(const Aabb<T>& b) noexcept : box(b), centre((b.lo + b.hi) * T(0.5))
+    {
+        const Vec3<T> half = (b.hi - b.lo) * T(0.5);
+        near2 = T(16384) * dot(half, half);
+    }
+};
+
 /// A float ray from more than 64 times `box`'s diagonal away (and the box ahead), its
 /// origin moved along it, in double, to twice the diagonal before the box's centre: the same line, rounded once
 /// near the box. A shape's test subtracts the origin from its points, and from 10^6
@@ -138,21 +156,29 @@ struct NearRay {
 /// A ray near already, one the box lies behind or beside, a ray that is not finite, and a
 /// double ray are kept as they are (shift 0).
 template <Scalar T>
-[[nodiscard]] NearRay<T> brought_near(const Ray<T>& ray, const Aabb<T>& box) noexcept
+[[nodiscard]] NearRay<T> brought_near(const Ray<T>& ray, const NearBox<T>& near) noexcept
 {
     if constexpr (!std::is_same_v<T, float>) {
+        (void)near;
         return {ray};
     } else {
         // Most rays start near what they test: a test in float first (the origin within 64
         // diagonals of the centre, or a NaN anywhere, keeps the ray).
-        const Vec3<T> half = (box.hi - box.lo) * T(0.5), away = ray.origin - (box.lo + box.hi) * T(0.5);
-        if (!(dot(away, away) > T(16384) * dot(half, half))) return {ray};
-        const Vec3<double> o(ray.origin), d(ray.direction), lo(box.lo), hi(box.hi);
+        const Vec3<T> away = ray.origin - near.centre;
+        if (!(dot(away, away) > near.near2)) return {ray};
+        const Vec3<double> o(ray.origin), d(ray.direction), lo(near.box.lo), hi(near.box.hi);
         const double speed = length(d), size = length(hi - lo);
         const double shift = (dot((lo + hi) * 0.5 - o, d) / speed - 2 * size) / speed;
         if (!(shift * speed > 32 * size) || !(shift < double(std::numeric_limits<T>::max()))) return {ray};
         return {Ray<T>{Vec3<T>(o + shift * d), ray.direction}, shift};
     }
+}
+
+/// brought_near for a box asked about once.
+template <Scalar T>
+[[nodiscard]] NearRay<T> brought_near(const Ray<T>& ray, const Aabb<T>& box) noexcept
+{
+    return brought_near(ray, NearBox<T>(box));
 }
 
 } // namespace prism

@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 namespace prism::detail {
 
@@ -31,6 +32,13 @@ struct ShearedRay {
     int kx = 0, ky = 1, kz = 2;
     T sx = 0, sy = 0, sz = 0;
 
+#if PRISM_VECTOR_EXTENSIONS
+    /// What the four-triangle edge test takes from the ray in every lane, broadcast once
+    /// per ray: the origin on the permuted axes kx, ky, kz, and the shear sx, sy.
+    typedef T Lanes __attribute__((vector_size(4 * sizeof(T))));
+    Lanes lane_origin[3]{}, lane_sx{}, lane_sy{};
+#endif
+
     explicit ShearedRay(const Ray<T>& ray) noexcept : origin(ray.origin), direction(ray.direction)
     {
         const Vec3<T> a = prism::abs(ray.direction);
@@ -40,6 +48,13 @@ struct ShearedRay {
         sz = T(1) / direction[kz];
         sx = -direction[kx] * sz;
         sy = -direction[ky] * sz;
+#if PRISM_VECTOR_EXTENSIONS
+        lane_origin[0] = Lanes{} + origin[kx];
+        lane_origin[1] = Lanes{} + origin[ky];
+        lane_origin[2] = Lanes{} + origin[kz];
+        lane_sx = Lanes{} + sx;
+        lane_sy = Lanes{} + sy;
+#endif
     }
 };
 
@@ -150,16 +165,19 @@ template <int Kz, Scalar T>
 {
     constexpr int kx = Kz == 2 ? 0 : Kz + 1, ky = kx == 2 ? 0 : kx + 1;
     constexpr int width = TriangleBlock<T>::width;
-    typedef T Lanes __attribute__((vector_size(width * sizeof(T))));
+    using Lanes = typename ShearedRay<T>::Lanes;
+    static_assert(sizeof(Lanes) == width * sizeof(T));
+    // (The ray's values broadcast once per ray, ShearedRay's lanes; the corners written out.)
     Lanes px[3], py[3];
+#pragma GCC unroll 3
     for (int i = 0; i < 3; ++i) {
         Lanes x, y, z;
         __builtin_memcpy(&x, block.corner[std::size_t(3 * i + kx)].data(), sizeof(Lanes));
         __builtin_memcpy(&y, block.corner[std::size_t(3 * i + ky)].data(), sizeof(Lanes));
         __builtin_memcpy(&z, block.corner[std::size_t(3 * i + Kz)].data(), sizeof(Lanes));
-        x -= ray.origin[kx], y -= ray.origin[ky], z -= ray.origin[Kz];
-        px[i] = x + ray.sx * z;
-        py[i] = y + ray.sy * z;
+        x -= ray.lane_origin[0], y -= ray.lane_origin[1], z -= ray.lane_origin[2];
+        px[i] = x + ray.lane_sx * z;
+        py[i] = y + ray.lane_sy * z;
     }
     const Lanes e0 = px[1] * py[2] - py[1] * px[2];
     const Lanes e1 = px[2] * py[0] - py[2] * px[0];
@@ -173,6 +191,112 @@ template <int Kz, Scalar T>
     unsigned maybe = 0;
     for (int lane = 0; lane < width; ++lane) maybe |= missed[lane] ? 0u : 1u << lane;
     return maybe;
+}
+
+/// hit_triangle on a block's four triangles at once: which of the lanes `lanes` (a bit
+/// each) the ray hits strictly inside `range`, with their t, barycentric weights and side.
+/// Each lane takes hit_triangle_along's operations in the same order, so its answer and
+/// numbers are hit_triangle's, bit for bit (tests/geometry/triangle.cpp checks it over
+/// random rays), but for a lane with an edge function of exactly 0, which hit_triangle
+/// works out again in double: those are left in `redo` for it. (A ray keeps few of a
+/// leaf's lanes past the edge test; the test of four costs about what hit_triangle's of
+/// one does.)
+template <Scalar T>
+struct BlockHits {
+    unsigned hit = 0;  ///< a bit per lane hit within the range
+    unsigned redo = 0; ///< a bit per lane hit_triangle must decide
+    std::array<T, 4> t{};                ///< t[lane]
+    std::array<std::array<T, 4>, 3> b{}; ///< b[i][lane]: corner i's weight
+    unsigned entering = 0;               ///< a bit per lane the ray enters by
+};
+
+template <int Kz, Scalar T>
+[[nodiscard, gnu::always_inline]] inline BlockHits<T> hit_block_along(const ShearedRay<T>& ray, const TriangleBlock<T>& block, Interval<T> range,
+                                                                     unsigned lanes) noexcept
+{
+    constexpr int kx = Kz == 2 ? 0 : Kz + 1, ky = kx == 2 ? 0 : kx + 1;
+    using Lanes = typename ShearedRay<T>::Lanes;
+    using Bits = std::conditional_t<sizeof(T) == 4, std::int32_t, std::int64_t>;
+    typedef Bits BitLanes __attribute__((vector_size(sizeof(Lanes))));
+    // |v| by its sign bit, as std::abs; a comparison's lanes as bits.
+    const auto abs = [](const Lanes& v, Lanes& out) {
+        BitLanes bits;
+        __builtin_memcpy(&bits, &v, sizeof(Lanes));
+        bits &= ~(BitLanes{} + Bits(std::uint64_t(1) << (8 * sizeof(T) - 1)));
+        __builtin_memcpy(&out, &bits, sizeof(Lanes));
+    };
+    const auto mask = [](const BitLanes& m) {
+        unsigned bits = 0;
+        for (int lane = 0; lane < 4; ++lane) bits |= m[lane] != 0 ? 1u << lane : 0u;
+        return bits;
+    };
+    Lanes px[3], py[3], pz[3];
+#pragma GCC unroll 3
+    for (int i = 0; i < 3; ++i) {
+        Lanes x, y, z;
+        __builtin_memcpy(&x, block.corner[std::size_t(3 * i + kx)].data(), sizeof(Lanes));
+        __builtin_memcpy(&y, block.corner[std::size_t(3 * i + ky)].data(), sizeof(Lanes));
+        __builtin_memcpy(&z, block.corner[std::size_t(3 * i + Kz)].data(), sizeof(Lanes));
+        x -= ray.lane_origin[0], y -= ray.lane_origin[1], z -= ray.lane_origin[2];
+        px[i] = x + ray.lane_sx * z;
+        py[i] = y + ray.lane_sy * z;
+        pz[i] = z;
+    }
+    const Lanes e0 = px[1] * py[2] - py[1] * px[2];
+    const Lanes e1 = px[2] * py[0] - py[2] * px[0];
+    const Lanes e2 = px[0] * py[1] - py[0] * px[1];
+    BlockHits<T> out;
+    out.redo = mask((e0 == T(0)) | (e1 == T(0)) | (e2 == T(0))) & lanes;
+    const BitLanes below = (e0 < T(0)) | (e1 < T(0)) | (e2 < T(0)), above = (e0 > T(0)) | (e1 > T(0)) | (e2 > T(0));
+    const Lanes det = e0 + e1 + e2;
+    const Lanes sz = Lanes{} + ray.sz;
+    const Lanes z0 = pz[0] * sz, z1 = pz[1] * sz, z2 = pz[2] * sz;
+    const Lanes t_scaled = e0 * z0 + e1 * z1 + e2 * z2;
+    const Lanes inv_det = T(1) / det;
+    const Lanes t = t_scaled * inv_det;
+    // t above zero by more than its rounding: hit_triangle_along's bound, lane by lane.
+    Lanes a0, a1, a2, m;
+    abs(z0, a0), abs(z1, a1), abs(z2, a2);
+    m = a0 > a1 ? a0 : a1;
+    const Lanes max_z = m > a2 ? m : a2;
+    abs(px[0], a0), abs(px[1], a1), abs(px[2], a2);
+    m = a0 > a1 ? a0 : a1;
+    const Lanes max_x = m > a2 ? m : a2;
+    abs(py[0], a0), abs(py[1], a1), abs(py[2], a2);
+    m = a0 > a1 ? a0 : a1;
+    const Lanes max_y = m > a2 ? m : a2;
+    const Lanes delta_z = gamma<T>(3) * max_z;
+    const Lanes delta_x = gamma<T>(5) * (max_x + max_z), delta_y = gamma<T>(5) * (max_y + max_z);
+    const Lanes delta_e = T(2) * (gamma<T>(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+    abs(e0, a0), abs(e1, a1), abs(e2, a2);
+    m = a0 > a1 ? a0 : a1;
+    const Lanes max_e = m > a2 ? m : a2;
+    Lanes abs_inv_det;
+    abs(inv_det, abs_inv_det);
+    const Lanes delta_t = T(3) * (gamma<T>(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * abs_inv_det;
+    const Lanes min01 = z1 < z0 ? z1 : z0;
+    const Lanes min_z = z2 < min01 ? z2 : min01;
+    const BitLanes in_front = (t > delta_t) | (min_z > delta_z);
+    const BitLanes hit = ~(below & above) & (det != T(0)) & ((Lanes{} + range.min) < t) & (t < (Lanes{} + range.max)) & in_front;
+    out.hit = mask(hit) & lanes & ~out.redo;
+    out.entering = mask((det < T(0)) != (sz < T(0)));
+    const Lanes b0 = e0 * inv_det, b1 = e1 * inv_det, b2 = e2 * inv_det;
+    __builtin_memcpy(out.t.data(), &t, sizeof(Lanes));
+    __builtin_memcpy(out.b[0].data(), &b0, sizeof(Lanes));
+    __builtin_memcpy(out.b[1].data(), &b1, sizeof(Lanes));
+    __builtin_memcpy(out.b[2].data(), &b2, sizeof(Lanes));
+    return out;
+}
+
+/// hit_block_along for the ray's axis.
+template <Scalar T>
+[[nodiscard, gnu::always_inline]] inline BlockHits<T> hit_block(const ShearedRay<T>& ray, const TriangleBlock<T>& block, Interval<T> range, unsigned lanes) noexcept
+{
+    switch (ray.kz) {
+    case 0: return hit_block_along<0>(ray, block, range, lanes);
+    case 1: return hit_block_along<1>(ray, block, range, lanes);
+    default: return hit_block_along<2>(ray, block, range, lanes);
+    }
 }
 #endif
 

@@ -75,6 +75,7 @@ struct MeshData {
     std::vector<std::array<Vec2<T>, 3>> uvs;     ///< per triangle, its corners' coordinates (or none)
     Bvh<T> bvh;
     Aabb<T> bounds;
+    NearBox<T> near; ///< the bounds as brought_near asks them
     bool closed = false;
 };
 
@@ -141,6 +142,7 @@ public:
             boxes[f] = box.rounded_out();
             data->bounds = data->bounds.merged(boxes[f]);
         }
+        data->near = NearBox<T>(data->bounds);
         data->bvh = Bvh<T>(boxes, config);
         const auto order = data->bvh.primitives();
         make_blocks(*data, positions, triangles);
@@ -223,19 +225,17 @@ public:
     /// first_crossing, keeping the triangle hit and where (for surface_crossing).
     [[nodiscard]] T first_crossing(const Ray<T>& far_ray, Interval<T> far_range, SurfaceHint<T>& hint) const noexcept
     {
-        const NearRay<T> near = brought_near(far_ray, data_->bounds);
+        const NearRay<T> near = brought_near(far_ray, data_->near);
         const Ray<T>& ray = near.ray;
         Interval<T> range = near.range(far_range);
         const detail::ShearedRay<T> sheared(ray);
         detail::TriangleHit<T> nearest{infinity<T>, {}, false};
         std::uint32_t triangle = 0;
         data_->bvh.traverse_leaves(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) {
-            for_each_maybe_hit(sheared, first, count, [&](std::uint32_t k, const std::array<Vec3<T>, 3>& tri) {
-                detail::TriangleHit<T> h;
-                if (detail::hit_triangle(sheared, tri, r, h)) nearest = h, r.max = h.t, triangle = k;
+            return for_each_hit(sheared, first, count, r, [&](std::uint32_t k, const detail::TriangleHit<T>& h) {
+                nearest = h, r.max = h.t, triangle = k;
                 return false;
             });
-            return false;
         });
         if (!(nearest.t < infinity<T>)) return infinity<T>;
         const T t = near.back(nearest.t);
@@ -260,15 +260,12 @@ public:
     /// Whether any crossing lies strictly inside `range` (a shadow ray's query).
     [[nodiscard]] bool any_crossing(const Ray<T>& far_ray, Interval<T> far_range) const noexcept
     {
-        const NearRay<T> near = brought_near(far_ray, data_->bounds);
+        const NearRay<T> near = brought_near(far_ray, data_->near);
         const Ray<T>& ray = near.ray;
         Interval<T> range = near.range(far_range);
         const detail::ShearedRay<T> sheared(ray);
         return data_->bvh.any_leaf(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) {
-            return for_each_maybe_hit(sheared, first, count, [&](std::uint32_t, const std::array<Vec3<T>, 3>& tri) {
-                detail::TriangleHit<T> h;
-                return detail::hit_triangle(sheared, tri, r, h);
-            });
+            return for_each_hit(sheared, first, count, r, [](std::uint32_t, const detail::TriangleHit<T>&) { return true; });
         });
     }
 
@@ -276,7 +273,7 @@ public:
     template <bool Surface = true>
     [[nodiscard]] Crossings<T, N> crossings(const Ray<T>& far_ray, Interval<T> far_range) const noexcept
     {
-        const NearRay<T> near = brought_near(far_ray, data_->bounds);
+        const NearRay<T> near = brought_near(far_ray, data_->near);
         const Ray<T>& ray = near.ray;
         Interval<T> range = near.range(far_range);
         Crossings<T, N> out;
@@ -313,6 +310,44 @@ public:
     }
 
 private:
+    /// Calls take(k, hit) for each triangle of the leaf [first, first + count) that the ray
+    /// hits within `range` (which take may shrink), in order, until take returns true (and
+    /// then returns true): what hit_triangle finds, lane by lane, for each triangle the
+    /// edge test keeps, but the block's lanes kept tested at once (hit_block: the same
+    /// numbers).
+    template <class Take>
+    [[gnu::always_inline]] bool for_each_hit(const detail::ShearedRay<T>& ray, std::uint32_t first, std::uint32_t count, Interval<T>& range, Take&& take) const noexcept
+    {
+#if PRISM_VECTOR_EXTENSIONS
+        constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
+        const detail::TriangleBlock<T>* block = &data_->blocks[first / width]; // a leaf starts a block
+        for (std::uint32_t k = first; k < first + count; k += width, ++block) {
+            const std::uint32_t lanes = std::min(width, first + count - k);
+            unsigned maybe = detail::edge_test(ray, *block) & ((1u << lanes) - 1);
+            if (maybe == 0) continue;
+            const detail::BlockHits<T> hits = detail::hit_block(ray, *block, range, maybe);
+            for (; maybe != 0; maybe &= maybe - 1) {
+                const auto lane = std::uint32_t(std::countr_zero(maybe));
+                detail::TriangleHit<T> h;
+                if ((hits.redo >> lane) & 1u) {
+                    if (!detail::hit_triangle(ray, block->triangle(lane), range, h)) continue;
+                } else {
+                    // (Tested against the range as it was: a hit before may have shrunk it.)
+                    if (!((hits.hit >> lane) & 1u) || !(hits.t[lane] < range.max)) continue;
+                    h = {hits.t[lane], {hits.b[0][lane], hits.b[1][lane], hits.b[2][lane]}, ((hits.entering >> lane) & 1u) != 0};
+                }
+                if (take(k + lane, h)) return true;
+            }
+        }
+        return false;
+#else
+        return for_each_maybe_hit(ray, first, count, [&](std::uint32_t k, const std::array<Vec3<T>, 3>& tri) {
+            detail::TriangleHit<T> h;
+            return detail::hit_triangle(ray, tri, range, h) && take(k, h);
+        });
+#endif
+    }
+
     /// Calls test(k, corners) for each triangle of the leaf [first, first + count) that
     /// the edge test keeps, in order, until one returns true (and then returns true).
     template <class Test>
