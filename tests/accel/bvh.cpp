@@ -133,6 +133,36 @@ Ray<T> random_ray(Random& rng, T spread, int kind)
 
 } // namespace
 
+TEST_CASE_TEMPLATE("SlabRay's three axes at once (run time) equal its loop over the axes (constant evaluation), over hostile directions", T, float, double)
+{
+    // The loop, written out here as SlabRay's comments state it: the twin of the SIMD path.
+    using L = std::numeric_limits<T>;
+    const T values[] = {T(1), T(-0.3), T(0), -T(0), L::denorm_min(), -L::denorm_min(), L::min(), T(1e-30), L::max(), -L::max(), T(7.5)};
+    const T largest = L::max();
+    int checked = 0;
+    for (const T x : values)
+        for (const T y : values)
+            for (const T z : values) {
+                const Ray<T> ray{{T(0.25), T(-3), T(1e4)}, {x, y, z}};
+                const T magnitude = T(12);
+                const detail::SlabRay<T> slab(ray, magnitude);
+                const T pad = gamma<T>(20) * (max_component(abs(ray.origin)) + T(2) * magnitude) + L::min();
+                for (int axis = 0; axis < 3; ++axis) {
+                    const T d = ray.direction[axis];
+                    const T inverse = d == T(0) ? (std::signbit(d) ? -L::infinity() : L::infinity()) : std::clamp(T(1) / d, -largest, largest);
+                    const bool negative = inverse < T(0);
+                    CHECK(std::bit_cast<std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>(slab.inverse[axis]) ==
+                          std::bit_cast<std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>(inverse));
+                    CHECK(slab.far_inverse[axis] == inverse * detail::SlabRay<T>::far_widening);
+                    CHECK(slab.negative[std::size_t(axis)] == negative);
+                    CHECK(slab.near_origin[axis] == (negative ? ray.origin[axis] - pad : ray.origin[axis] + pad));
+                    CHECK(slab.far_origin[axis] == (negative ? ray.origin[axis] + pad : ray.origin[axis] - pad));
+                    ++checked;
+                }
+            }
+    CHECK(checked == 3 * 11 * 11 * 11);
+}
+
 TEST_CASE_TEMPLATE("the node test keeps every box Aabb::may_cross keeps, and little more", T, float, double)
 {
     Random rng(11u, 3u);

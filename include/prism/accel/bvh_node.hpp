@@ -111,19 +111,35 @@ struct SlabRay {
         // so that every box is at least as wide here as there.
         const T pad = gamma<T>(20) * (max_component(prism::abs(ray.origin)) + T(2) * magnitude) + std::numeric_limits<T>::min();
         constexpr T largest = std::numeric_limits<T>::max();
-#pragma GCC unroll 3
+#if PRISM_VECTOR_EXTENSIONS
+        if (!std::is_constant_evaluated()) {
+            // The three axes at once, each lane the loop's arithmetic below (1 / +-0 is
+            // that infinity already at run time: one division and a select).
+            typedef T Axes __attribute__((vector_size(4 * sizeof(T))));
+            const Axes d{ray.direction.x, ray.direction.y, ray.direction.z, T(1)}, o{ray.origin.x, ray.origin.y, ray.origin.z, T(0)};
+            const Axes r = T(1) / d;
+            const Axes below = r < largest ? r : Axes{} + largest;
+            const Axes clamped = r > -largest ? below : Axes{} - largest;
+            const Axes inv = d == T(0) ? r : clamped;
+            const Axes far_inv = inv * far_widening;
+            const auto neg = inv < T(0);
+            const Axes near_o = neg ? o - pad : o + pad, far_o = neg ? o + pad : o - pad;
+            for (int axis = 0; axis < 3; ++axis) {
+                inverse[axis] = inv[axis];
+                far_inverse[axis] = far_inv[axis];
+                negative[std::size_t(axis)] = neg[axis] != 0;
+                near_origin[axis] = near_o[axis];
+                far_origin[axis] = far_o[axis];
+            }
+            return;
+        }
+#endif
         for (int axis = 0; axis < 3; ++axis) {
             const T d = ray.direction[axis];
             // 1/d, kept finite for a denormal d (no 0 * inf: no NaN); a zero d gives an
             // infinite reciprocal of its sign, so the slab is all or nothing (NaN only
             // for an origin exactly on a widened face, which the test then ignores).
-            // At run time 1 / +-0 is that infinity already: one division and a select.
-            if (std::is_constant_evaluated()) {
-                inverse[axis] = d == T(0) ? (negative_zero(d) ? -infinity<T> : infinity<T>) : clamp(T(1) / d, -largest, largest);
-            } else {
-                const T r = T(1) / d;
-                inverse[axis] = d == T(0) ? r : clamp(r, -largest, largest);
-            }
+            inverse[axis] = d == T(0) ? (negative_zero(d) ? -infinity<T> : infinity<T>) : clamp(T(1) / d, -largest, largest);
             far_inverse[axis] = inverse[axis] * far_widening;
             negative[std::size_t(axis)] = inverse[axis] < T(0);
             near_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] - pad : ray.origin[axis] + pad;

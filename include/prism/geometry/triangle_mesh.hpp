@@ -231,7 +231,7 @@ public:
         const detail::ShearedRay<T> sheared(ray);
         detail::TriangleHit<T> nearest{infinity<T>, {}, false};
         std::uint32_t triangle = 0;
-        data_->bvh.traverse_leaves(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) {
+        data_->bvh.traverse_leaves(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) __attribute__((always_inline)) {
             return for_each_hit(sheared, first, count, r, [&](std::uint32_t k, const detail::TriangleHit<T>& h) {
                 nearest = h, r.max = h.t, triangle = k;
                 return false;
@@ -264,7 +264,7 @@ public:
         const Ray<T>& ray = near.ray;
         Interval<T> range = near.range(far_range);
         const detail::ShearedRay<T> sheared(ray);
-        return data_->bvh.any_leaf(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) {
+        return data_->bvh.any_leaf(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) __attribute__((always_inline)) {
             return for_each_hit(sheared, first, count, r, [](std::uint32_t, const detail::TriangleHit<T>&) { return true; });
         });
     }
