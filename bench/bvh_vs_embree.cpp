@@ -19,6 +19,7 @@
 // algorithms apart from the ISA; that run writes bvh_vs_embree[_prism-avx2]_<isa>.csv.
 //   bench_bvh_vs_embree [results-folder] [repeats] [bunny.obj] [embree-isa]
 #include "common.hpp"
+#include "meshes.hpp"
 
 #include <prism/io/mesh.hpp>
 
@@ -317,20 +318,9 @@ int main(int argc, char** argv)
     }
 
     std::vector<std::pair<std::string, MeshBuffers<T>>> meshes;
-    if (!bunny.empty()) {
-        // The bunny, scaled into [-1, 1]^3.
-        MeshBuffers<T> b = load_obj<T>(bunny);
-        Aabb<T> box;
-        for (const auto& p : b.positions) box = box.merged({p, p});
-        const Vec3<T> middle = T(0.5) * (box.lo + box.hi);
-        const T scale = T(2) / max_component(box.hi - box.lo);
-        for (auto& p : b.positions) p = (p - middle) * scale;
-        meshes.emplace_back("bunny", std::move(b));
-    }
-    meshes.emplace_back("sphere", icosphere<T>({T(0), T(0), T(0)}, T(1), 7));
-    meshes.emplace_back("terrain", height_field<T>(T(-1.5), T(1.5), T(-1.5), T(1.5), 707, [](T x, T z) {
-                            return T(0.15) * std::sin(T(7) * x) * std::cos(T(5) * z) + T(0.05) * std::sin(T(31) * x + T(17) * z) - T(0.3);
-                        }));
+    if (!bunny.empty()) meshes.emplace_back("bunny", bench::scaled_bunny(bunny));
+    meshes.emplace_back("sphere", bench::geodesic_sphere());
+    meshes.emplace_back("terrain", bench::terrain());
     for (const auto& [mesh_name, buffers] : meshes) {
         auto start = std::chrono::steady_clock::now();
         const Scene scene{lights, Object{TriangleMesh<T>(buffers.positions, buffers.triangles), Diffuse<T>{}}};

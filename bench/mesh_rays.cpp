@@ -11,8 +11,7 @@
 // build and set-up left out (a deterministic count, for changes to the kernel that move
 // it by a few per cent; not a time, since it does not see cache misses).
 //   bench_mesh_rays bunny.obj bunny|sphere|terrain primary|bounce|shadow scene|mesh [passes]
-#include <prism/io/mesh.hpp>
-#include <prism/prism.hpp>
+#include "meshes.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -28,21 +27,9 @@ namespace {
 
 MeshBuffers<T> mesh_named(const std::string& name, const std::string& bunny)
 {
-    if (name == "bunny") {
-        // Scaled into [-1, 1]^3, as bench_bvh_vs_embree does.
-        MeshBuffers<T> b = load_obj<T>(bunny);
-        Aabb<T> box;
-        for (const auto& p : b.positions) box = box.merged({p, p});
-        const Vec3<T> middle = T(0.5) * (box.lo + box.hi);
-        const T scale = T(2) / max_component(box.hi - box.lo);
-        for (auto& p : b.positions) p = (p - middle) * scale;
-        return b;
-    }
-    if (name == "sphere") return icosphere<T>({T(0), T(0), T(0)}, T(1), 7);
-    if (name == "terrain")
-        return height_field<T>(T(-1.5), T(1.5), T(-1.5), T(1.5), 707, [](T x, T z) {
-            return T(0.15) * std::sin(T(7) * x) * std::cos(T(5) * z) + T(0.05) * std::sin(T(31) * x + T(17) * z) - T(0.3);
-        });
+    if (name == "bunny") return bench::scaled_bunny(bunny);
+    if (name == "sphere") return bench::geodesic_sphere();
+    if (name == "terrain") return bench::terrain();
     std::fprintf(stderr, "bench_mesh_rays: mesh must be bunny, sphere or terrain, got '%s'\n", name.c_str());
     std::exit(2);
 }

@@ -4908,15 +4908,16 @@ struct TriangleBlock {
 /// double) is kept. Over incoherent rays most triangles a leaf offers are missed, and
 /// this rejects four in about the time hit_triangle takes for one.
 #if PRISM_VECTOR_EXTENSIONS
+/// A block's corners moved to the ray's origin, permuted and sheared, four lanes at once
+/// (hit_triangle_along's p[i], lane by lane): px, py, and pz before its scale by sz.
 template <int Kz, Scalar T>
-[[nodiscard, gnu::always_inline]] inline unsigned edge_test_along(const ShearedRay<T>& ray, const TriangleBlock<T>& block) noexcept
+[[gnu::always_inline]] inline void sheared_corners(const ShearedRay<T>& ray, const TriangleBlock<T>& block, typename ShearedRay<T>::Lanes (&px)[3],
+                                                   typename ShearedRay<T>::Lanes (&py)[3], typename ShearedRay<T>::Lanes (&pz)[3]) noexcept
 {
     constexpr int kx = Kz == 2 ? 0 : Kz + 1, ky = kx == 2 ? 0 : kx + 1;
-    constexpr int width = TriangleBlock<T>::width;
     using Lanes = typename ShearedRay<T>::Lanes;
-    static_assert(sizeof(Lanes) == width * sizeof(T));
+    static_assert(sizeof(Lanes) == TriangleBlock<T>::width * sizeof(T));
     // (The ray's values broadcast once per ray, ShearedRay's lanes; the corners written out.)
-    Lanes px[3], py[3];
 #pragma GCC unroll 3
     for (int i = 0; i < 3; ++i) {
         Lanes x, y, z;
@@ -4926,7 +4927,17 @@ template <int Kz, Scalar T>
         x -= ray.lane_origin[0], y -= ray.lane_origin[1], z -= ray.lane_origin[2];
         px[i] = x + ray.lane_sx * z;
         py[i] = y + ray.lane_sy * z;
+        pz[i] = z;
     }
+}
+
+template <int Kz, Scalar T>
+[[nodiscard, gnu::always_inline]] inline unsigned edge_test_along(const ShearedRay<T>& ray, const TriangleBlock<T>& block) noexcept
+{
+    constexpr int width = TriangleBlock<T>::width;
+    using Lanes = typename ShearedRay<T>::Lanes;
+    Lanes px[3], py[3], pz[3];
+    sheared_corners<Kz>(ray, block, px, py, pz);
     const Lanes e0 = px[1] * py[2] - py[1] * px[2];
     const Lanes e1 = px[2] * py[0] - py[2] * px[0];
     const Lanes e2 = px[0] * py[1] - py[0] * px[1];
@@ -4962,7 +4973,6 @@ template <int Kz, Scalar T>
 [[nodiscard, gnu::always_inline]] inline BlockHits<T> hit_block_along(const ShearedRay<T>& ray, const TriangleBlock<T>& block, Interval<T> range,
                                                                      unsigned lanes) noexcept
 {
-    constexpr int kx = Kz == 2 ? 0 : Kz + 1, ky = kx == 2 ? 0 : kx + 1;
     using Lanes = typename ShearedRay<T>::Lanes;
     using Bits = std::conditional_t<sizeof(T) == 4, std::int32_t, std::int64_t>;
     typedef Bits BitLanes __attribute__((vector_size(sizeof(Lanes))));
@@ -4979,17 +4989,7 @@ template <int Kz, Scalar T>
         return bits;
     };
     Lanes px[3], py[3], pz[3];
-#pragma GCC unroll 3
-    for (int i = 0; i < 3; ++i) {
-        Lanes x, y, z;
-        __builtin_memcpy(&x, block.corner[std::size_t(3 * i + kx)].data(), sizeof(Lanes));
-        __builtin_memcpy(&y, block.corner[std::size_t(3 * i + ky)].data(), sizeof(Lanes));
-        __builtin_memcpy(&z, block.corner[std::size_t(3 * i + Kz)].data(), sizeof(Lanes));
-        x -= ray.lane_origin[0], y -= ray.lane_origin[1], z -= ray.lane_origin[2];
-        px[i] = x + ray.lane_sx * z;
-        py[i] = y + ray.lane_sy * z;
-        pz[i] = z;
-    }
+    sheared_corners<Kz>(ray, block, px, py, pz);
     const Lanes e0 = px[1] * py[2] - py[1] * px[2];
     const Lanes e1 = px[2] * py[0] - py[2] * px[0];
     const Lanes e2 = px[0] * py[1] - py[0] * px[1];

@@ -37,6 +37,41 @@ long double moller_trumbore(const Ray<T>& ray, const std::array<Vec3<T>, 3>& c, 
     return dt(e2, q) / det;
 }
 
+/// Four triangles around a hub, as a fan of shared vertices and edges (a ray through one
+/// is on the edge of its neighbours), in a block, and a ray's eye and target: aimed at a
+/// corner, an edge's midpoint or a random point, some axis-parallel, every fourth 10^4 away.
+template <class T>
+struct Fan {
+    std::array<std::array<Vec3<T>, 3>, 4> fan;
+    prism::detail::TriangleBlock<T> block;
+    std::array<Vec3<T>, 3> aim; ///< the triangle aimed at
+    Vec3<T> target, eye;
+};
+
+template <class T>
+Fan<T> fan_and_eye(Random& rng, int i)
+{
+    Fan<T> out;
+    const T scale = i % 4 == 3 ? T(1e4) : T(1);
+    const Vec3<T> center = test::random_point<T>(rng, T(2)) * scale;
+    const Vec3<T> hub = center + test::random_point<T>(rng, T(0.1));
+    Vec3<T> previous = center + test::random_point<T>(rng, T(1));
+    for (auto& t : out.fan) {
+        const Vec3<T> next = center + test::random_point<T>(rng, T(1));
+        t = {hub, previous, next};
+        previous = next;
+    }
+    for (std::uint32_t lane = 0; lane < 4; ++lane)
+        for (std::size_t c = 0; c < 3; ++c)
+            for (int axis = 0; axis < 3; ++axis) out.block.corner[3 * c + std::size_t(axis)][lane] = out.fan[lane][c][axis];
+    out.aim = out.fan[std::size_t(i % 4)];
+    const auto& aim = out.aim;
+    out.target = i % 3 == 0 ? aim[0] : (i % 3 == 1 ? aim[1] + T(0.5) * (aim[2] - aim[1]) : center + test::random_point<T>(rng, T(1)));
+    out.eye = out.target + T(3) * test::random_direction<T>(rng);
+    if (i % 7 == 0) out.eye[i % 3] = out.target[i % 3]; // axis-parallel
+    return out;
+}
+
 } // namespace
 
 TEST_CASE_TEMPLATE("a triangle's hit against Moller-Trumbore in long double, away from its edges", T, float, double)
@@ -76,24 +111,9 @@ TEST_CASE_TEMPLATE("the four-lane edge test keeps every triangle hit_triangle hi
     Random rng(17u, 2u);
     int lost = 0, hits = 0, misses = 0, rejected = 0, lanewise_differs = 0;
     for (int i = 0; i < 20000; ++i) {
-        const T scale = i % 4 == 3 ? T(1e4) : T(1);
-        const Vec3<T> center = test::random_point<T>(rng, T(2)) * scale;
-        std::array<std::array<Vec3<T>, 3>, 4> fan;
-        const Vec3<T> hub = center + test::random_point<T>(rng, T(0.1));
-        Vec3<T> previous = center + test::random_point<T>(rng, T(1));
-        for (auto& t : fan) {
-            const Vec3<T> next = center + test::random_point<T>(rng, T(1));
-            t = {hub, previous, next};
-            previous = next;
-        }
-        prism::detail::TriangleBlock<T> block;
-        for (std::uint32_t lane = 0; lane < 4; ++lane)
-            for (std::size_t c = 0; c < 3; ++c)
-                for (int axis = 0; axis < 3; ++axis) block.corner[3 * c + std::size_t(axis)][lane] = fan[lane][c][axis];
-        const auto& aim = fan[std::size_t(i % 4)];
-        const Vec3<T> target = i % 3 == 0 ? aim[0] : (i % 3 == 1 ? aim[1] + T(0.5) * (aim[2] - aim[1]) : center + test::random_point<T>(rng, T(1)));
-        Vec3<T> eye = target + T(3) * test::random_direction<T>(rng);
-        if (i % 7 == 0) eye[i % 3] = target[i % 3]; // axis-parallel
+        const Fan<T> f = fan_and_eye<T>(rng, i);
+        const auto& [fan, block, aim, target, aimed_from] = f;
+        Vec3<T> eye = aimed_from;
         const Ray<T> ray{eye, target - eye};
         const prism::detail::ShearedRay<T> sheared(ray);
         const unsigned kept = prism::detail::edge_test(sheared, block);
@@ -126,24 +146,9 @@ TEST_CASE_TEMPLATE("the four-lane full test gives hit_triangle's answer, t, weig
     Random rng(29u, 3u);
     int hits = 0, redone = 0, differ = 0;
     for (int i = 0; i < 40000; ++i) {
-        const T scale = i % 4 == 3 ? T(1e4) : T(1);
-        const Vec3<T> center = test::random_point<T>(rng, T(2)) * scale;
-        std::array<std::array<Vec3<T>, 3>, 4> fan;
-        const Vec3<T> hub = center + test::random_point<T>(rng, T(0.1));
-        Vec3<T> previous = center + test::random_point<T>(rng, T(1));
-        for (auto& t : fan) {
-            const Vec3<T> next = center + test::random_point<T>(rng, T(1));
-            t = {hub, previous, next};
-            previous = next;
-        }
-        prism::detail::TriangleBlock<T> block;
-        for (std::uint32_t lane = 0; lane < 4; ++lane)
-            for (std::size_t c = 0; c < 3; ++c)
-                for (int axis = 0; axis < 3; ++axis) block.corner[3 * c + std::size_t(axis)][lane] = fan[lane][c][axis];
-        const auto& aim = fan[std::size_t(i % 4)];
-        const Vec3<T> target = i % 3 == 0 ? aim[0] : (i % 3 == 1 ? aim[1] + T(0.5) * (aim[2] - aim[1]) : center + test::random_point<T>(rng, T(1)));
-        Vec3<T> eye = target + T(3) * test::random_direction<T>(rng);
-        if (i % 7 == 0) eye[i % 3] = target[i % 3]; // axis-parallel
+        const Fan<T> f = fan_and_eye<T>(rng, i);
+        const auto& [fan, block, aim, target, aimed_from] = f;
+        Vec3<T> eye = aimed_from;
         if (i % 11 == 0) eye = aim[1] + T(0.3) * (aim[2] - aim[1]) + T(0.2) * (aim[0] - aim[1]); // on the plane of a triangle
         const Ray<T> ray{eye, target - eye};
         const prism::detail::ShearedRay<T> sheared(ray);
