@@ -215,7 +215,7 @@ void check_node_test()
         const detail::SlabRay<T> slab(ray, magnitude);
         std::array<T, W> near{};
 #if PRISM_VECTOR_EXTENSIONS
-        const unsigned hits = detail::SlabLanes<T, W>(slab).may_cross(node, range, near);
+        const unsigned hits = detail::SlabLanes<T, W>(ray, magnitude).may_cross(node, range, near);
 #else
         const unsigned hits = slab.may_cross(node, range, near); // a build without vector extensions: the scalar loop alone
 #endif

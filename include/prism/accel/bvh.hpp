@@ -206,13 +206,10 @@ private:
         // box test, the padding lanes' empty boxes too, and those lanes' zeros would be
         // taken for the root: a walk without end.)
         if (nodes_.empty() || !is_finite(ray.origin) || !is_finite(ray.direction)) return false;
-        const detail::SlabRay<T> slab(ray, magnitude_);
-        if (std::is_constant_evaluated()) return walk_with<Nearest>(slab, range, visit);
 #if PRISM_VECTOR_EXTENSIONS
-        return walk_with<Nearest>(detail::SlabLanes<T, Width>(slab), range, visit);
-#else
-        return walk_with<Nearest>(slab, range, visit);
+        if (!std::is_constant_evaluated()) return walk_with<Nearest>(detail::SlabLanes<T, Width>(ray, magnitude_), range, visit);
 #endif
+        return walk_with<Nearest>(detail::SlabRay<T>(ray, magnitude_), range, visit);
     }
 
     template <bool Nearest, class Slab, class Visit>

@@ -8,6 +8,7 @@
 
 #include <prism/core/aabb.hpp>
 #include <prism/core/config.hpp>
+#include <prism/core/lanes.hpp>
 #include <prism/core/math.hpp>
 #include <prism/core/ray.hpp>
 
@@ -81,6 +82,36 @@ struct alignas(64) BvhNode {
 
 namespace detail {
 
+#if PRISM_VECTOR_EXTENSIONS
+/// SlabRay's numbers for the three axes at once, in the first three lanes of a vector
+/// each (lane by lane the arithmetic of SlabRay's loop: 1 / +-0 is that infinity already
+/// at run time, so one division and a select), for SlabRay and SlabLanes to take apart.
+template <Scalar T>
+struct SlabAxes {
+    typedef T Axes __attribute__((vector_size(4 * sizeof(T))));
+    Axes inverse, far_inverse, near_origin, far_origin;
+    unsigned negative; ///< a bit per axis the ray runs toward -axis on
+
+    /// `pad`: SlabRay::padding; `far_widening`: SlabRay::far_widening.
+    [[gnu::always_inline]] constexpr SlabAxes(const Ray<T>& ray, T pad, T far_widening) noexcept
+    {
+        constexpr T largest = std::numeric_limits<T>::max();
+        const Axes d{ray.direction.x, ray.direction.y, ray.direction.z, T(1)}, o{ray.origin.x, ray.origin.y, ray.origin.z, T(0)};
+        const Axes r = T(1) / d;
+        Axes most, least;
+        splat(most, largest), splat(least, -largest);
+        const Axes below = r < largest ? r : most;
+        const Axes clamped = r > -largest ? below : least;
+        inverse = d == T(0) ? r : clamped;
+        far_inverse = inverse * far_widening;
+        const auto neg = inverse < T(0);
+        near_origin = neg ? o - pad : o + pad;
+        far_origin = neg ? o + pad : o - pad;
+        negative = lane_bits(neg) & 7u;
+    }
+};
+#endif
+
 /// A ray prepared for many box tests: its slabs' reciprocals, which face of each slab
 /// it meets first, and its origin moved by one padding for every box of a tree (see
 /// Bvh::traverse).
@@ -105,31 +136,17 @@ struct SlabRay {
     /// `magnitude`: the largest coordinate magnitude of every box to be tested.
     constexpr SlabRay(const Ray<T>& ray, T magnitude) noexcept
     {
-        // Aabb::may_cross widens a box by gamma(16) (|o - c| + h) (c its center, h its
-        // half size, as max components), which is at most gamma(16) (|o| + 2 magnitude).
-        // gamma(20) covers that and the rounding of o +- pad (two ulps of |o| or |lo|),
-        // so that every box is at least as wide here as there.
-        const T pad = gamma<T>(20) * (max_component(prism::abs(ray.origin)) + T(2) * magnitude) + std::numeric_limits<T>::min();
+        const T pad = padding(ray, magnitude);
         constexpr T largest = std::numeric_limits<T>::max();
 #if PRISM_VECTOR_EXTENSIONS
         if (!std::is_constant_evaluated()) {
-            // The three axes at once, each lane the loop's arithmetic below (1 / +-0 is
-            // that infinity already at run time: one division and a select).
-            typedef T Axes __attribute__((vector_size(4 * sizeof(T))));
-            const Axes d{ray.direction.x, ray.direction.y, ray.direction.z, T(1)}, o{ray.origin.x, ray.origin.y, ray.origin.z, T(0)};
-            const Axes r = T(1) / d;
-            const Axes below = r < largest ? r : Axes{} + largest;
-            const Axes clamped = r > -largest ? below : Axes{} - largest;
-            const Axes inv = d == T(0) ? r : clamped;
-            const Axes far_inv = inv * far_widening;
-            const auto neg = inv < T(0);
-            const Axes near_o = neg ? o - pad : o + pad, far_o = neg ? o + pad : o - pad;
+            const SlabAxes<T> axes(ray, pad, far_widening);
             for (int axis = 0; axis < 3; ++axis) {
-                inverse[axis] = inv[axis];
-                far_inverse[axis] = far_inv[axis];
-                negative[std::size_t(axis)] = neg[axis] != 0;
-                near_origin[axis] = near_o[axis];
-                far_origin[axis] = far_o[axis];
+                inverse[axis] = axes.inverse[axis];
+                far_inverse[axis] = axes.far_inverse[axis];
+                negative[std::size_t(axis)] = ((axes.negative >> axis) & 1u) != 0;
+                near_origin[axis] = axes.near_origin[axis];
+                far_origin[axis] = axes.far_origin[axis];
             }
             return;
         }
@@ -145,6 +162,16 @@ struct SlabRay {
             near_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] - pad : ray.origin[axis] + pad;
             far_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] + pad : ray.origin[axis] - pad;
         }
+    }
+
+    /// The pad every box of a tree is widened by for `ray` (`magnitude`: the largest
+    /// coordinate magnitude of every box to be tested). Aabb::may_cross widens a box by
+    /// gamma(16) (|o - c| + h) (c its center, h its half size, as max components), which is
+    /// at most gamma(16) (|o| + 2 magnitude). gamma(20) covers that and the rounding of
+    /// o +- pad (two ulps of |o| or |lo|), so that every box is at least as wide here as there.
+    [[nodiscard, gnu::always_inline]] static constexpr T padding(const Ray<T>& ray, T magnitude) noexcept
+    {
+        return gamma<T>(20) * (max_component(prism::abs(ray.origin)) + T(2) * magnitude) + std::numeric_limits<T>::min();
     }
 
     [[nodiscard]] static constexpr bool negative_zero(T zero) noexcept
@@ -203,17 +230,26 @@ struct SlabLanes {
     Lanes near_origin[3], far_origin[3], inverse[3], far_inverse[3];
     std::size_t near_face[3], far_face[3]; ///< byte offsets in BvhNode::bounds of the rows the ray meets first and last on each axis
 
-    explicit SlabLanes(const SlabRay<T>& slab) noexcept
+    /// `magnitude`: the largest coordinate magnitude of every box to be tested (as SlabRay's).
+    [[gnu::always_inline]] SlabLanes(const Ray<T>& ray, T magnitude) noexcept
     {
-        for (int axis = 0; axis < 3; ++axis) {
-            near_origin[axis] = Lanes{} + slab.near_origin[axis];
-            far_origin[axis] = Lanes{} + slab.far_origin[axis];
-            inverse[axis] = Lanes{} + slab.inverse[axis];
-            far_inverse[axis] = Lanes{} + slab.far_inverse[axis];
-            const std::size_t n = slab.negative[std::size_t(axis)];
-            near_face[axis] = (std::size_t(axis) + 3 * n) * sizeof(Lanes);
-            far_face[axis] = (std::size_t(axis) + 3 * (1 - n)) * sizeof(Lanes);
-        }
+        // SlabRay's numbers, each axis's broadcast from its lane (never stored as scalars).
+        const SlabAxes<T> axes(ray, SlabRay<T>::padding(ray, magnitude), SlabRay<T>::far_widening);
+        set_axis<0>(axes);
+        set_axis<1>(axes);
+        set_axis<2>(axes);
+    }
+
+    template <int Axis>
+    [[gnu::always_inline]] void set_axis(const SlabAxes<T>& axes) noexcept
+    {
+        splat_lane<Axis>(near_origin[Axis], axes.near_origin);
+        splat_lane<Axis>(far_origin[Axis], axes.far_origin);
+        splat_lane<Axis>(inverse[Axis], axes.inverse);
+        splat_lane<Axis>(far_inverse[Axis], axes.far_inverse);
+        const std::size_t n = (axes.negative >> Axis) & 1u;
+        near_face[Axis] = (Axis + 3 * n) * sizeof(Lanes);
+        far_face[Axis] = (Axis + 3 - 3 * n) * sizeof(Lanes);
     }
 
     [[nodiscard, gnu::always_inline]] unsigned may_cross(const BvhNode<T, Width>& node, Interval<T> range, std::array<T, width>& near) const noexcept
@@ -235,22 +271,13 @@ struct SlabLanes {
         const Lanes t_far[3] = {(f0 - far_origin[0]) * far_inverse[0], (f1 - far_origin[1]) * far_inverse[1], (f2 - far_origin[2]) * far_inverse[2]};
         // SlabRay::later and sooner, written out (a function returning a vector wider
         // than the target's registers changes the ABI, and GCC says so).
-        const Lanes min = Lanes{} + range.min, max = Lanes{} + range.max;
+        Lanes min, max;
+        splat(min, range.min), splat(max, range.max);
         const Lanes near01 = t_near[0] > t_near[1] ? t_near[0] : t_near[1], near2 = t_near[2] > min ? t_near[2] : min;
         const Lanes far01 = t_far[0] < t_far[1] ? t_far[0] : t_far[1], far2 = t_far[2] < max ? t_far[2] : max;
         const Lanes lo = near01 > near2 ? near01 : near2, hi = far01 < far2 ? far01 : far2;
-        const auto crossed = lo <= hi;
         __builtin_memcpy(near.data(), &lo, sizeof(Lanes));
-#if defined(__SSE__)
-        if constexpr (sizeof(T) == 4 && width == 4) return unsigned(__builtin_ia32_movmskps((Lanes)crossed));
-#endif
-#if defined(__AVX__)
-        if constexpr (sizeof(T) == 4 && width == 8) return unsigned(__builtin_ia32_movmskps256((Lanes)crossed));
-        if constexpr (sizeof(T) == 8 && width == 4) return unsigned(__builtin_ia32_movmskpd256((Lanes)crossed));
-#endif
-        unsigned hits = 0;
-        for (int lane = 0; lane < width; ++lane) hits |= crossed[lane] ? 1u << lane : 0u;
-        return hits;
+        return lane_bits(lo <= hi);
     }
 };
 #endif

@@ -13,6 +13,7 @@
 
 #include <prism/core/config.hpp>
 #include <prism/core/interval.hpp>
+#include <prism/core/lanes.hpp>
 #include <prism/core/math.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/core/ray.hpp>
@@ -28,32 +29,35 @@ namespace prism::detail {
 /// for every triangle it is tested against.
 template <Scalar T>
 struct ShearedRay {
-    Vec3<T> origin, direction;
-    int kx = 0, ky = 1, kz = 2;
+    Vec3<T> origin;
+    int kz = 2; ///< the axis the ray runs most along (kx, ky the two after it, cyclically)
     T sx = 0, sy = 0, sz = 0;
 
 #if PRISM_VECTOR_EXTENSIONS
     /// What the four-triangle edge test takes from the ray in every lane, broadcast once
     /// per ray: the origin on the permuted axes kx, ky, kz, and the shear sx, sy.
     typedef T Lanes __attribute__((vector_size(4 * sizeof(T))));
-    Lanes lane_origin[3]{}, lane_sx{}, lane_sy{};
+    Lanes lane_origin[3], lane_sx, lane_sy; // (set by the constructor: no zeros stored first)
 #endif
 
-    explicit ShearedRay(const Ray<T>& ray) noexcept : origin(ray.origin), direction(ray.direction)
+    [[gnu::always_inline]] explicit ShearedRay(const Ray<T>& ray) noexcept : origin(ray.origin)
     {
-        const Vec3<T> a = prism::abs(ray.direction);
-        kz = a.x >= a.y ? (a.x >= a.z ? 0 : 2) : (a.y >= a.z ? 1 : 2);
-        kx = kz == 2 ? 0 : kz + 1;
-        ky = kx == 2 ? 0 : kx + 1;
-        sz = T(1) / direction[kz];
-        sx = -direction[kx] * sz;
-        sy = -direction[ky] * sz;
+        // (Scalars and arrays indexed by kz: a Vec3's operator[] is a switch.)
+        const T d[3] = {ray.direction.x, ray.direction.y, ray.direction.z}, o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+        const T ax = std::abs(d[0]), ay = std::abs(d[1]), az = std::abs(d[2]);
+        kz = ax >= ay ? (ax >= az ? 0 : 2) : (ay >= az ? 1 : 2);
+        const int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+        sz = T(1) / d[kz];
+        sx = -d[kx] * sz;
+        sy = -d[ky] * sz;
 #if PRISM_VECTOR_EXTENSIONS
-        lane_origin[0] = Lanes{} + origin[kx];
-        lane_origin[1] = Lanes{} + origin[ky];
-        lane_origin[2] = Lanes{} + origin[kz];
-        lane_sx = Lanes{} + sx;
-        lane_sy = Lanes{} + sy;
+        splat(lane_origin[0], o[kx]);
+        splat(lane_origin[1], o[ky]);
+        splat(lane_origin[2], o[kz]);
+        splat(lane_sx, sx);
+        splat(lane_sy, sy);
+#else
+        (void)o;
 #endif
     }
 };
@@ -209,9 +213,10 @@ template <int Kz, Scalar T>
 /// Each lane takes hit_triangle_along's operations in the same order, so its answer and
 /// numbers are hit_triangle's, bit for bit (tests/geometry/triangle.cpp checks it over
 /// random rays), but for a lane with an edge function of exactly 0, which hit_triangle
-/// works out again in double: those are left in `redo` for it. (A ray keeps few of a
-/// leaf's lanes past the edge test; the test of four costs about what hit_triangle's of
-/// one does.)
+/// works out again in double: those are left in `redo` for it. The edge test comes first
+/// and ends it where every lane misses (most blocks an incoherent ray meets), and the
+/// bound on t's own rounding is worked out only where a lane's triangle is not wholly in
+/// front of the ray (one the ray starts on, or behind it).
 template <Scalar T>
 struct BlockHits {
     unsigned hit = 0;  ///< a bit per lane hit within the range
@@ -228,58 +233,58 @@ template <int Kz, Scalar T>
     using Lanes = typename ShearedRay<T>::Lanes;
     using Bits = std::conditional_t<sizeof(T) == 4, std::int32_t, std::int64_t>;
     typedef Bits BitLanes __attribute__((vector_size(sizeof(Lanes))));
-    // |v| by its sign bit, as std::abs; a comparison's lanes as bits.
+    // |v| by its sign bit, as std::abs.
     const auto abs = [](const Lanes& v, Lanes& out) {
         BitLanes bits;
         __builtin_memcpy(&bits, &v, sizeof(Lanes));
         bits &= ~(BitLanes{} + Bits(std::uint64_t(1) << (8 * sizeof(T) - 1)));
         __builtin_memcpy(&out, &bits, sizeof(Lanes));
     };
-    const auto mask = [](const BitLanes& m) {
-        unsigned bits = 0;
-        for (int lane = 0; lane < 4; ++lane) bits |= m[lane] != 0 ? 1u << lane : 0u;
-        return bits;
+    const auto max3 = [&abs](const Lanes& v0, const Lanes& v1, const Lanes& v2, Lanes& out) {
+        Lanes a0, a1, a2;
+        abs(v0, a0), abs(v1, a1), abs(v2, a2);
+        const Lanes m = a0 > a1 ? a0 : a1;
+        out = m > a2 ? m : a2;
     };
     Lanes px[3], py[3], pz[3];
     sheared_corners<Kz>(ray, block, px, py, pz);
     const Lanes e0 = px[1] * py[2] - py[1] * px[2];
     const Lanes e1 = px[2] * py[0] - py[2] * px[0];
     const Lanes e2 = px[0] * py[1] - py[0] * px[1];
-    BlockHits<T> out;
-    out.redo = mask((e0 == T(0)) | (e1 == T(0)) | (e2 == T(0))) & lanes;
     const BitLanes below = (e0 < T(0)) | (e1 < T(0)) | (e2 < T(0)), above = (e0 > T(0)) | (e1 > T(0)) | (e2 > T(0));
+    const BitLanes zero = (e0 == T(0)) | (e1 == T(0)) | (e2 == T(0));
+    BlockHits<T> out;
+    if ((~lane_bits(below & above & ~zero) & lanes) == 0) return out; // edge_test_along's answer: all missed
+    out.redo = lane_bits(zero) & lanes;
     const Lanes det = e0 + e1 + e2;
-    const Lanes sz = Lanes{} + ray.sz;
+    Lanes sz, range_min, range_max;
+    splat(sz, ray.sz), splat(range_min, range.min), splat(range_max, range.max);
     const Lanes z0 = pz[0] * sz, z1 = pz[1] * sz, z2 = pz[2] * sz;
     const Lanes t_scaled = e0 * z0 + e1 * z1 + e2 * z2;
     const Lanes inv_det = T(1) / det;
     const Lanes t = t_scaled * inv_det;
-    // t above zero by more than its rounding: hit_triangle_along's bound, lane by lane.
-    Lanes a0, a1, a2, m;
-    abs(z0, a0), abs(z1, a1), abs(z2, a2);
-    m = a0 > a1 ? a0 : a1;
-    const Lanes max_z = m > a2 ? m : a2;
-    abs(px[0], a0), abs(px[1], a1), abs(px[2], a2);
-    m = a0 > a1 ? a0 : a1;
-    const Lanes max_x = m > a2 ? m : a2;
-    abs(py[0], a0), abs(py[1], a1), abs(py[2], a2);
-    m = a0 > a1 ? a0 : a1;
-    const Lanes max_y = m > a2 ? m : a2;
+    out.hit = lane_bits(~(below & above) & (det != T(0)) & (range_min < t) & (t < range_max)) & lanes & ~out.redo;
+    // t above zero by more than its rounding: hit_triangle_along's bound, lane by lane,
+    // where it can decide.
+    Lanes max_z;
+    max3(z0, z1, z2, max_z);
     const Lanes delta_z = gamma<T>(3) * max_z;
-    const Lanes delta_x = gamma<T>(5) * (max_x + max_z), delta_y = gamma<T>(5) * (max_y + max_z);
-    const Lanes delta_e = T(2) * (gamma<T>(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
-    abs(e0, a0), abs(e1, a1), abs(e2, a2);
-    m = a0 > a1 ? a0 : a1;
-    const Lanes max_e = m > a2 ? m : a2;
-    Lanes abs_inv_det;
-    abs(inv_det, abs_inv_det);
-    const Lanes delta_t = T(3) * (gamma<T>(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * abs_inv_det;
     const Lanes min01 = z1 < z0 ? z1 : z0;
     const Lanes min_z = z2 < min01 ? z2 : min01;
-    const BitLanes in_front = (t > delta_t) | (min_z > delta_z);
-    const BitLanes hit = ~(below & above) & (det != T(0)) & ((Lanes{} + range.min) < t) & (t < (Lanes{} + range.max)) & in_front;
-    out.hit = mask(hit) & lanes & ~out.redo;
-    out.entering = mask((det < T(0)) != (sz < T(0)));
+    unsigned in_front = lane_bits(min_z > delta_z);
+    if ((out.hit & ~in_front) != 0) {
+        Lanes max_x, max_y, max_e, abs_inv_det;
+        max3(px[0], px[1], px[2], max_x);
+        max3(py[0], py[1], py[2], max_y);
+        const Lanes delta_x = gamma<T>(5) * (max_x + max_z), delta_y = gamma<T>(5) * (max_y + max_z);
+        const Lanes delta_e = T(2) * (gamma<T>(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+        max3(e0, e1, e2, max_e);
+        abs(inv_det, abs_inv_det);
+        const Lanes delta_t = T(3) * (gamma<T>(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * abs_inv_det;
+        in_front |= lane_bits(t > delta_t);
+    }
+    out.hit &= in_front;
+    out.entering = lane_bits((det < T(0)) != (sz < T(0)));
     const Lanes b0 = e0 * inv_det, b1 = e1 * inv_det, b2 = e2 * inv_det;
     __builtin_memcpy(out.t.data(), &t, sizeof(Lanes));
     __builtin_memcpy(out.b[0].data(), &b0, sizeof(Lanes));

@@ -312,9 +312,8 @@ public:
 private:
     /// Calls take(k, hit) for each triangle of the leaf [first, first + count) that the ray
     /// hits within `range` (which take may shrink), in order, until take returns true (and
-    /// then returns true): what hit_triangle finds, lane by lane, for each triangle the
-    /// edge test keeps, but the block's lanes kept tested at once (hit_block: the same
-    /// numbers).
+    /// then returns true): what hit_triangle finds, lane by lane, but a block's lanes
+    /// tested at once (hit_block: the same numbers).
     template <class Take>
     [[gnu::always_inline]] bool for_each_hit(const detail::ShearedRay<T>& ray, std::uint32_t first, std::uint32_t count, Interval<T>& range, Take&& take) const noexcept
     {
@@ -323,17 +322,15 @@ private:
         const detail::TriangleBlock<T>* block = &data_->blocks[first / width]; // a leaf starts a block
         for (std::uint32_t k = first; k < first + count; k += width, ++block) {
             const std::uint32_t lanes = std::min(width, first + count - k);
-            unsigned maybe = detail::edge_test(ray, *block) & ((1u << lanes) - 1);
-            if (maybe == 0) continue;
-            const detail::BlockHits<T> hits = detail::hit_block(ray, *block, range, maybe);
-            for (; maybe != 0; maybe &= maybe - 1) {
+            const detail::BlockHits<T> hits = detail::hit_block(ray, *block, range, (1u << lanes) - 1);
+            for (unsigned maybe = hits.hit | hits.redo; maybe != 0; maybe &= maybe - 1) {
                 const auto lane = std::uint32_t(std::countr_zero(maybe));
                 detail::TriangleHit<T> h;
                 if ((hits.redo >> lane) & 1u) {
                     if (!detail::hit_triangle(ray, block->triangle(lane), range, h)) continue;
                 } else {
                     // (Tested against the range as it was: a hit before may have shrunk it.)
-                    if (!((hits.hit >> lane) & 1u) || !(hits.t[lane] < range.max)) continue;
+                    if (!(hits.t[lane] < range.max)) continue;
                     h = {hits.t[lane], {hits.b[0][lane], hits.b[1][lane], hits.b[2][lane]}, ((hits.entering >> lane) & 1u) != 0};
                 }
                 if (take(k + lane, h)) return true;
