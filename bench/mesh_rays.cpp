@@ -3,20 +3,28 @@
 // (1000^2 primary rays, a cosine bounce and a shadow ray from each primary hit) against
 // the bunny, the geodesic sphere or the terrain, through the Scene (closest_hit, or
 // transmittance for shadow rays: what a renderer asks) or the TriangleMesh alone
-// (first_crossing, any_crossing). It prints the rays traced a second.
+// (first_crossing, any_crossing), or, where it is built with Embree 3, Embree's single-ray
+// queries on the same mesh (rtcIntersect1, rtcOccluded1): the peer, counted the same way.
+// It prints the rays traced a second.
 //
 // Timing on a shared machine wanders by 10 % from run to run; the instructions a ray
 // takes do not. bench/mesh_instructions.py runs this program under valgrind's cachegrind
 // with 1 and 2 passes and takes the difference: the instructions of one pass of the rays,
 // build and set-up left out (a deterministic count, for changes to the kernel that move
 // it by a few per cent; not a time, since it does not see cache misses).
-//   bench_mesh_rays bunny.obj bunny|sphere|terrain primary|bounce|shadow scene|mesh [passes]
+//   bench_mesh_rays bunny.obj bunny|sphere|terrain primary|bounce|shadow scene|mesh|embree [passes] [embree-isa]
 #include "meshes.hpp"
+
+#if PRISM_BENCH_EMBREE
+#include <embree3/rtcore.h>
+#endif
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -34,6 +42,63 @@ MeshBuffers<T> mesh_named(const std::string& name, const std::string& bunny)
     std::exit(2);
 }
 
+#if PRISM_BENCH_EMBREE
+/// Embree's scene of one triangle mesh (its defaults: BVH8 where the CPU has AVX, SAH
+/// build of medium quality), and its single-ray queries.
+class EmbreeMesh {
+public:
+    /// `isa`: empty for the instruction set Embree picks, or one to hold it to (avx2, ...).
+    EmbreeMesh(const MeshBuffers<T>& mesh, const std::string& isa) : device_(rtcNewDevice(("threads=1" + (isa.empty() ? "" : ",isa=" + isa)).c_str()))
+    {
+        if (device_ == nullptr) throw std::runtime_error("rtcNewDevice failed");
+        scene_ = rtcNewScene(device_);
+        RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i) v[3 * i] = mesh.positions[i].x, v[3 * i + 1] = mesh.positions[i].y, v[3 * i + 2] = mesh.positions[i].z;
+        auto* f = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangles.size()));
+        for (std::size_t i = 0; i < mesh.triangles.size(); ++i) f[3 * i] = mesh.triangles[i][0], f[3 * i + 1] = mesh.triangles[i][1], f[3 * i + 2] = mesh.triangles[i][2];
+        rtcCommitGeometry(g);
+        rtcAttachGeometry(scene_, g);
+        rtcReleaseGeometry(g);
+        rtcCommitScene(scene_);
+    }
+    EmbreeMesh(const EmbreeMesh&) = delete;
+    EmbreeMesh& operator=(const EmbreeMesh&) = delete;
+    ~EmbreeMesh()
+    {
+        rtcReleaseScene(scene_);
+        rtcReleaseDevice(device_);
+    }
+    [[nodiscard]] bool hit(const Ray<T>& ray) const
+    {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRayHit rh{};
+        rh.ray.org_x = ray.origin.x, rh.ray.org_y = ray.origin.y, rh.ray.org_z = ray.origin.z;
+        rh.ray.dir_x = ray.direction.x, rh.ray.dir_y = ray.direction.y, rh.ray.dir_z = ray.direction.z;
+        rh.ray.tnear = 0, rh.ray.tfar = infinity<float>, rh.ray.mask = ~0u;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(scene_, &context, &rh);
+        return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    }
+    [[nodiscard]] bool occluded(const Ray<T>& ray, T end) const
+    {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRay r{};
+        r.org_x = ray.origin.x, r.org_y = ray.origin.y, r.org_z = ray.origin.z;
+        r.dir_x = ray.direction.x, r.dir_y = ray.direction.y, r.dir_z = ray.direction.z;
+        r.tnear = 0, r.tfar = end, r.mask = ~0u;
+        rtcOccluded1(scene_, &context, &r);
+        return r.tfar < 0;
+    }
+
+private:
+    RTCDevice device_;
+    RTCScene scene_ = nullptr;
+};
+#endif
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -44,11 +109,17 @@ int main(int argc, char** argv)
     }
     const std::string kind = argv[3], query = argv[4];
     const int passes = argc > 5 ? std::atoi(argv[5]) : 5;
-    if ((kind != "primary" && kind != "bounce" && kind != "shadow") || (query != "scene" && query != "mesh") || passes < 1) {
-        std::fprintf(stderr, "bench_mesh_rays: rays must be primary, bounce or shadow, query scene or mesh, passes >= 1; got '%s' '%s' %d\n", kind.c_str(),
-                     query.c_str(), passes);
+    if ((kind != "primary" && kind != "bounce" && kind != "shadow") || (query != "scene" && query != "mesh" && query != "embree") || passes < 1) {
+        std::fprintf(stderr, "bench_mesh_rays: rays must be primary, bounce or shadow, query scene, mesh or embree, passes >= 1; got '%s' '%s' %d\n",
+                     kind.c_str(), query.c_str(), passes);
         return 2;
     }
+#if !PRISM_BENCH_EMBREE
+    if (query == "embree") {
+        std::fprintf(stderr, "bench_mesh_rays: built without Embree (libembree-dev): no 'embree' query\n");
+        return 2;
+    }
+#endif
     const MeshBuffers<T> buffers = mesh_named(argv[2], argv[1]);
     const TriangleMesh<T> mesh(buffers.positions, buffers.triangles);
     const Scene scene{Lights{PointLight<T>{}}, Object{mesh, Diffuse<T>{}}};
@@ -80,9 +151,19 @@ int main(int argc, char** argv)
         rays = std::move(next);
     }
 
+#if PRISM_BENCH_EMBREE
+    std::optional<EmbreeMesh> embree;
+    if (query == "embree") embree.emplace(buffers, argc > 6 ? argv[6] : "");
+#endif
     long hits = 0;
     const auto start = std::chrono::steady_clock::now();
     for (int pass = 0; pass < passes; ++pass) {
+#if PRISM_BENCH_EMBREE
+        if (embree) {
+            for (std::size_t i = 0; i < rays.size(); ++i) hits += kind == "shadow" ? embree->occluded(rays[i], ends[i]) : embree->hit(rays[i]);
+            continue;
+        }
+#endif
         if (kind == "shadow") {
             for (std::size_t i = 0; i < rays.size(); ++i)
                 hits += query == "scene" ? scene.transmittance(rays[i], ends[i]).r == T(0) : mesh.any_crossing(rays[i], {T(0), ends[i]});

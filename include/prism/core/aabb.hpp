@@ -128,6 +128,10 @@ struct NearRay {
     }
     /// A t on the moved ray as a t on the caller's.
     [[nodiscard]] T back(T t) const noexcept { return shift == 0 ? t : T(shift + double(t)); }
+    /// The ray to test: `far` itself (the caller's ray, `far`, kept) or the moved one.
+    /// (Read from where it is: a copy read back at once, by loads that straddle its stores,
+    /// stalls.)
+    [[nodiscard]] const Ray<T>& ray_for(const Ray<T>& far) const noexcept { return shift == 0 ? far : ray; }
 };
 
 /// What brought_near asks of a box, worked out once for the many rays a shape is asked
@@ -155,8 +159,23 @@ struct NearBox {
 /// a ray aimed across it could be found to cross it where the ray does not, or miss it.
 /// A ray near already, one the box lies behind or beside, a ray that is not finite, and a
 /// double ray are kept as they are (shift 0).
+namespace detail {
+
+/// brought_near's far case (out of line: rarely taken, and kept out of every query's set-up).
 template <Scalar T>
-[[nodiscard]] NearRay<T> brought_near(const Ray<T>& ray, const NearBox<T>& near) noexcept
+[[nodiscard, gnu::noinline]] NearRay<T> brought_near_far(const Ray<T>& ray, const NearBox<T>& near) noexcept
+{
+    const Vec3<double> o(ray.origin), d(ray.direction), lo(near.box.lo), hi(near.box.hi);
+    const double speed = length(d), size = length(hi - lo);
+    const double shift = (dot((lo + hi) * 0.5 - o, d) / speed - 2 * size) / speed;
+    if (!(shift * speed > 32 * size) || !(shift < double(std::numeric_limits<T>::max()))) return {ray};
+    return {Ray<T>{Vec3<T>(o + shift * d), ray.direction}, shift};
+}
+
+} // namespace detail
+
+template <Scalar T>
+[[nodiscard, gnu::always_inline]] inline NearRay<T> brought_near(const Ray<T>& ray, const NearBox<T>& near) noexcept
 {
     if constexpr (!std::is_same_v<T, float>) {
         (void)near;
@@ -166,11 +185,7 @@ template <Scalar T>
         // diagonals of the centre, or a NaN anywhere, keeps the ray).
         const Vec3<T> away = ray.origin - near.centre;
         if (!(dot(away, away) > near.near2)) return {ray};
-        const Vec3<double> o(ray.origin), d(ray.direction), lo(near.box.lo), hi(near.box.hi);
-        const double speed = length(d), size = length(hi - lo);
-        const double shift = (dot((lo + hi) * 0.5 - o, d) / speed - 2 * size) / speed;
-        if (!(shift * speed > 32 * size) || !(shift < double(std::numeric_limits<T>::max()))) return {ray};
-        return {Ray<T>{Vec3<T>(o + shift * d), ray.direction}, shift};
+        return detail::brought_near_far(ray, near);
     }
 }
 

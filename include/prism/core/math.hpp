@@ -89,10 +89,24 @@ template <Scalar T>
     return v * (T(1) / length(v));
 }
 
+/// |x|, the sign bit cleared (one andps; a comparison and a select where the compiler
+/// has no builtin). -0 gives +0.
+template <Scalar T>
+[[nodiscard, gnu::always_inline]] constexpr T abs(T x) noexcept
+{
+#if defined(__GNUC__)
+    if constexpr (std::is_same_v<T, float>) return __builtin_fabsf(x);
+    else if constexpr (std::is_same_v<T, double>) return __builtin_fabs(x);
+    else return __builtin_fabsl(x);
+#else
+    return x < T(0) || (x == T(0) && std::signbit(x)) ? -x : x;
+#endif
+}
+
 template <Scalar T>
 [[nodiscard]] constexpr Vec3<T> abs(const Vec3<T>& v) noexcept
 {
-    return {v.x < T(0) ? -v.x : v.x, v.y < T(0) ? -v.y : v.y, v.z < T(0) ? -v.z : v.z};
+    return {prism::abs(v.x), prism::abs(v.y), prism::abs(v.z)};
 }
 
 /// Component-wise minimum and maximum (glm::min and glm::max are not constexpr).

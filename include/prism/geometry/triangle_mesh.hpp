@@ -226,7 +226,7 @@ public:
     [[nodiscard]] T first_crossing(const Ray<T>& far_ray, Interval<T> far_range, SurfaceHint<T>& hint) const noexcept
     {
         const NearRay<T> near = brought_near(far_ray, data_->near);
-        const Ray<T>& ray = near.ray;
+        const Ray<T>& ray = near.ray_for(far_ray);
         Interval<T> range = near.range(far_range);
         const detail::ShearedRay<T> sheared(ray);
         detail::TriangleHit<T> nearest{infinity<T>, {}, false};
@@ -239,7 +239,9 @@ public:
         });
         if (!(nearest.t < infinity<T>)) return infinity<T>;
         const T t = near.back(nearest.t);
-        hint = {triangle, t, nearest.b, nearest.entering};
+        // (Field by field: a whole struct built on the stack and copied is read back with
+        // a wider load than its stores, which stalls.)
+        hint.index = triangle, hint.t = t, hint.b = nearest.b, hint.entering = nearest.entering;
         return t;
     }
 
@@ -261,7 +263,7 @@ public:
     [[nodiscard]] bool any_crossing(const Ray<T>& far_ray, Interval<T> far_range) const noexcept
     {
         const NearRay<T> near = brought_near(far_ray, data_->near);
-        const Ray<T>& ray = near.ray;
+        const Ray<T>& ray = near.ray_for(far_ray);
         Interval<T> range = near.range(far_range);
         const detail::ShearedRay<T> sheared(ray);
         return data_->bvh.any_leaf(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) __attribute__((always_inline)) {
@@ -274,7 +276,7 @@ public:
     [[nodiscard]] Crossings<T, N> crossings(const Ray<T>& far_ray, Interval<T> far_range) const noexcept
     {
         const NearRay<T> near = brought_near(far_ray, data_->near);
-        const Ray<T>& ray = near.ray;
+        const Ray<T>& ray = near.ray_for(far_ray);
         Interval<T> range = near.range(far_range);
         Crossings<T, N> out;
         const Hits hits = gather(ray, range);
