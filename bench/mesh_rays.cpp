@@ -160,7 +160,10 @@ int main(int argc, char** argv)
     for (int pass = 0; pass < passes; ++pass) {
 #if PRISM_BENCH_EMBREE
         if (embree) {
-            for (std::size_t i = 0; i < rays.size(); ++i) hits += kind == "shadow" ? embree->occluded(rays[i], ends[i]) : embree->hit(rays[i]);
+            if (kind == "shadow")
+                for (std::size_t i = 0; i < rays.size(); ++i) hits += embree->occluded(rays[i], ends[i]);
+            else
+                for (const Ray<T>& r : rays) hits += embree->hit(r);
             continue;
         }
 #endif
