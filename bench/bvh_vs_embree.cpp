@@ -10,7 +10,8 @@
 // Embree's rtcIntersect1 (its single-ray API) against Scene::closest_hit (which also
 // works out the winner's surface); for shadow rays rtcOccluded1 against
 // Scene::transmittance (any hit); on 1 and 2 threads. Times: the minimum and median of `repeats` interleaved
-// rounds. Build: prism's on one thread; Embree's on its own (TBB) threads.
+// rounds. Build: prism's on one thread; Embree's on its own (TBB) threads, at its default
+// (medium) quality, and for meshes also at high quality (spatial splits; build time only).
 // Agreement: the share of rays where both hit, or both miss, with t within 1e-3.
 // Embree picks its kernels by the CPU at run time (AVX2 or AVX-512 where there are);
 // prism is compiled for the baseline x86-64 (SSE2, 4-wide nodes), or for AVX2 as
@@ -115,11 +116,15 @@ public:
         return end(g, start);
     }
 
-    double triangles(const MeshBuffers<T>& mesh)
+    /// A triangle mesh, built at `quality` (Embree's default is medium; high adds spatial
+    /// splits); returns the build time.
+    double triangles(const MeshBuffers<T>& mesh, RTCBuildQuality quality = RTC_BUILD_QUALITY_MEDIUM)
     {
         const auto start = std::chrono::steady_clock::now();
         begin();
+        rtcSetSceneBuildQuality(scene_, quality);
         RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+        rtcSetGeometryBuildQuality(g, quality);
         auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
         for (std::size_t i = 0; i < mesh.positions.size(); ++i) v[3 * i] = mesh.positions[i].x, v[3 * i + 1] = mesh.positions[i].y, v[3 * i + 2] = mesh.positions[i].z;
         auto* f = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangles.size()));
@@ -196,6 +201,7 @@ struct Row {
     std::string geometry;
     std::size_t count;
     double prism_build, embree_build;
+    double embree_hq_build = -1; ///< Embree's high-quality build (spatial splits), meshes only
 };
 
 /// Times both on both ray sets and thread counts, interleaved, and writes the rows.
@@ -263,11 +269,13 @@ void race(bench::Csv& csv, const Row& row, const SceneT& scene, Embree& embree, 
             const double n = double(set->size());
             const double p_min = n / *std::min_element(tp.begin(), tp.end()) / 1e6, e_min = n / *std::min_element(te.begin(), te.end()) / 1e6;
             const double p_med = n / median(tp) / 1e6, e_med = n / median(te) / 1e6;
-            csv.row("%s,%zu,%s,%d,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.5f,%.5f", row.geometry.c_str(), row.count, kind, threads, set->size(), p_min, p_med, e_min,
-                    e_med, row.prism_build, row.embree_build, double(agree) / n, double(hits) / n);
-            std::printf("%-9s %8zu %-7s %d thr: prism %7.2f Mrays/s, Embree %7.2f (ratio min-time %.2f, median %.2f); build %.3f s vs %.3f s; agree %.5f, hit %.3f\n",
+            const std::string hq = row.embree_hq_build < 0 ? "" : std::to_string(row.embree_hq_build);
+            csv.row("%s,%zu,%s,%d,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%.5f,%.5f", row.geometry.c_str(), row.count, kind, threads, set->size(), p_min, p_med, e_min,
+                    e_med, row.prism_build, row.embree_build, hq.c_str(), double(agree) / n, double(hits) / n);
+            std::printf("%-9s %8zu %-7s %d thr: prism %7.2f Mrays/s, Embree %7.2f (ratio min-time %.2f, median %.2f); build %.3f s vs %.3f s%s%s; agree %.5f, "
+                        "hit %.3f\n",
                         row.geometry.c_str(), row.count, kind, threads, p_min, e_min, p_min / e_min, p_med / e_med, row.prism_build, row.embree_build,
-                        double(agree) / n, double(hits) / n);
+                        hq.empty() ? "" : ", high quality ", hq.c_str(), double(agree) / n, double(hits) / n);
             std::fflush(stdout);
         }
     }
@@ -296,7 +304,8 @@ int main(int argc, char** argv)
 #endif
     std::printf("prism: Bvh<float> nodes %d wide; Embree: %s\n", Bvh<T>::width, isa.empty() ? "as it comes" : ("held to " + isa).c_str());
     bench::Csv csv(out / (name + (isa.empty() ? "" : "_" + isa) + ".csv"),
-                   "geometry,count,rays,threads,ray_count,prism_mrays_min,prism_mrays_median,embree_mrays_min,embree_mrays_median,prism_build_s,embree_build_s,agree,hit_share");
+                   "geometry,count,rays,threads,ray_count,prism_mrays_min,prism_mrays_median,embree_mrays_min,embree_mrays_median,prism_build_s,embree_build_s,"
+                   "embree_hq_build_s,agree,hit_share");
     Embree embree(2, isa);
     const Lights lights{PointLight<T>{}};
     const auto primary = camera_rays(1000, {T(0.3), T(0.4), T(-4)}, {T(0), T(0), T(0)}, T(1.3));
@@ -325,8 +334,9 @@ int main(int argc, char** argv)
         auto start = std::chrono::steady_clock::now();
         const Scene scene{lights, Object{TriangleMesh<T>(buffers.positions, buffers.triangles), Diffuse<T>{}}};
         const double prism_build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double embree_hq_build = embree.triangles(buffers, RTC_BUILD_QUALITY_HIGH);
         const double embree_build = embree.triangles(buffers);
-        race(csv, {mesh_name, buffers.triangles.size(), prism_build, embree_build}, scene, embree, make_rays(scene, primary), repeats);
+        race(csv, {mesh_name, buffers.triangles.size(), prism_build, embree_build, embree_hq_build}, scene, embree, make_rays(scene, primary), repeats);
     }
     return 0;
 }

@@ -188,10 +188,24 @@ template <Scalar T>
     return v * (T(1) / length(v));
 }
 
+/// |x|, the sign bit cleared (one andps; a comparison and a select where the compiler
+/// has no builtin). -0 gives +0.
+template <Scalar T>
+[[nodiscard, gnu::always_inline]] constexpr T abs(T x) noexcept
+{
+#if defined(__GNUC__)
+    if constexpr (std::is_same_v<T, float>) return __builtin_fabsf(x);
+    else if constexpr (std::is_same_v<T, double>) return __builtin_fabs(x);
+    else return __builtin_fabsl(x);
+#else
+    return x < T(0) || (x == T(0) && std::signbit(x)) ? -x : x;
+#endif
+}
+
 template <Scalar T>
 [[nodiscard]] constexpr Vec3<T> abs(const Vec3<T>& v) noexcept
 {
-    return {v.x < T(0) ? -v.x : v.x, v.y < T(0) ? -v.y : v.y, v.z < T(0) ? -v.z : v.z};
+    return {prism::abs(v.x), prism::abs(v.y), prism::abs(v.z)};
 }
 
 /// Component-wise minimum and maximum (glm::min and glm::max are not constexpr).
@@ -556,6 +570,10 @@ struct NearRay {
     }
     /// A t on the moved ray as a t on the caller's.
     [[nodiscard]] T back(T t) const noexcept { return shift == 0 ? t : T(shift + double(t)); }
+    /// The ray to test: `far` itself (the caller's ray, `far`, kept) or the moved one.
+    /// (Read from where it is: a copy read back at once, by loads that straddle its stores,
+    /// stalls.)
+    [[nodiscard]] const Ray<T>& ray_for(const Ray<T>& far) const noexcept { return shift == 0 ? far : ray; }
 };
 
 /// What brought_near asks of a box, worked out once for the many rays a shape is asked
@@ -583,8 +601,23 @@ struct NearBox {
 /// a ray aimed across it could be found to cross it where the ray does not, or miss it.
 /// A ray near already, one the box lies behind or beside, a ray that is not finite, and a
 /// double ray are kept as they are (shift 0).
+namespace detail {
+
+/// brought_near's far case (out of line: rarely taken, and kept out of every query's set-up).
 template <Scalar T>
-[[nodiscard]] NearRay<T> brought_near(const Ray<T>& ray, const NearBox<T>& near) noexcept
+[[nodiscard, gnu::noinline]] NearRay<T> brought_near_far(const Ray<T>& ray, const NearBox<T>& near) noexcept
+{
+    const Vec3<double> o(ray.origin), d(ray.direction), lo(near.box.lo), hi(near.box.hi);
+    const double speed = length(d), size = length(hi - lo);
+    const double shift = (dot((lo + hi) * 0.5 - o, d) / speed - 2 * size) / speed;
+    if (!(shift * speed > 32 * size) || !(shift < double(std::numeric_limits<T>::max()))) return {ray};
+    return {Ray<T>{Vec3<T>(o + shift * d), ray.direction}, shift};
+}
+
+} // namespace detail
+
+template <Scalar T>
+[[nodiscard, gnu::always_inline]] inline NearRay<T> brought_near(const Ray<T>& ray, const NearBox<T>& near) noexcept
 {
     if constexpr (!std::is_same_v<T, float>) {
         (void)near;
@@ -594,11 +627,7 @@ template <Scalar T>
         // diagonals of the centre, or a NaN anywhere, keeps the ray).
         const Vec3<T> away = ray.origin - near.centre;
         if (!(dot(away, away) > near.near2)) return {ray};
-        const Vec3<double> o(ray.origin), d(ray.direction), lo(near.box.lo), hi(near.box.hi);
-        const double speed = length(d), size = length(hi - lo);
-        const double shift = (dot((lo + hi) * 0.5 - o, d) / speed - 2 * size) / speed;
-        if (!(shift * speed > 32 * size) || !(shift < double(std::numeric_limits<T>::max()))) return {ray};
-        return {Ray<T>{Vec3<T>(o + shift * d), ray.direction}, shift};
+        return detail::brought_near_far(ray, near);
     }
 }
 
@@ -610,6 +639,79 @@ template <Scalar T>
 }
 
 } // namespace prism
+
+// ---- prism/core/lanes.hpp ----
+// SIMD lanes by GCC's vector extensions (which clang shares), for the kernels that test
+// several boxes or triangles at once (accel/bvh_node.hpp, geometry/triangle.hpp): a
+// scalar in every lane, one lane of a vector in every lane of another, and a lane mask
+// as bits. Only where PRISM_VECTOR_EXTENSIONS is 1.
+
+
+#include <cstddef>
+#include <utility>
+
+#if PRISM_VECTOR_EXTENSIONS
+namespace prism::detail {
+
+/// The number of lanes of the vector type V.
+template <class V>
+inline constexpr std::size_t lane_count = sizeof(V) / sizeof(V{}[0]);
+
+// (Each writes its vector to `out`: a function that returns a vector wider than the
+// target's registers changes the ABI, and GCC warns of it even where it is inlined.)
+
+/// `x` in every lane of `out`: one broadcast. (`V{} + x` says the same but adds 0 to x
+/// first, which the compiler must keep for a -0.)
+template <class V, class T>
+[[gnu::always_inline]] inline void splat(V& out, T x) noexcept
+{
+    [&out, x]<std::size_t... I>(std::index_sequence<I...>) { out = V{((void)I, x)...}; }(std::make_index_sequence<lane_count<V>>{});
+}
+
+/// Lane `Lane` of `v` in every lane of `out` (a vector of v's element type, as wide or
+/// twice as wide): one shuffle, with no trip through a scalar.
+template <int Lane, class Wide, class V>
+[[gnu::always_inline]] inline void splat_lane(Wide& out, const V& v) noexcept
+{
+    [&out, &v]<std::size_t... I>(std::index_sequence<I...>) { out = __builtin_shufflevector(v, v, ((void)I, Lane)...); }(
+        std::make_index_sequence<lane_count<Wide>>{});
+}
+
+/// A comparison's lanes (all bits set or none) as a bit each, lane 0 the lowest: one
+/// movmskps or movmskpd where the lanes fill an SSE or AVX register.
+template <class Mask>
+[[nodiscard, gnu::always_inline]] inline unsigned lane_bits(const Mask& m) noexcept
+{
+    constexpr std::size_t n = lane_count<Mask>;
+#if defined(__SSE__)
+    if constexpr (sizeof(Mask) == 16 && n == 4) {
+        typedef float F __attribute__((vector_size(16)));
+        return unsigned(__builtin_ia32_movmskps((F)m));
+    }
+#endif
+#if defined(__SSE2__)
+    if constexpr (sizeof(Mask) == 16 && n == 2) {
+        typedef double D __attribute__((vector_size(16)));
+        return unsigned(__builtin_ia32_movmskpd((D)m));
+    }
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof(Mask) == 32 && n == 8) {
+        typedef float F __attribute__((vector_size(32)));
+        return unsigned(__builtin_ia32_movmskps256((F)m));
+    }
+    if constexpr (sizeof(Mask) == 32 && n == 4) {
+        typedef double D __attribute__((vector_size(32)));
+        return unsigned(__builtin_ia32_movmskpd256((D)m));
+    }
+#endif
+    unsigned bits = 0;
+    for (std::size_t lane = 0; lane < n; ++lane) bits |= m[lane] != 0 ? 1u << lane : 0u;
+    return bits;
+}
+
+} // namespace prism::detail
+#endif
 
 // ---- prism/accel/bvh_node.hpp ----
 // A node of a Bvh (accel/bvh.hpp) and the test a ray makes of it: up to Width children
@@ -689,6 +791,36 @@ struct alignas(64) BvhNode {
 
 namespace detail {
 
+#if PRISM_VECTOR_EXTENSIONS
+/// SlabRay's numbers for the three axes at once, in the first three lanes of a vector
+/// each (lane by lane the arithmetic of SlabRay's loop: 1 / +-0 is that infinity already
+/// at run time, so one division and a select), for SlabRay and SlabLanes to take apart.
+template <Scalar T>
+struct SlabAxes {
+    typedef T Axes __attribute__((vector_size(4 * sizeof(T))));
+    Axes inverse, far_inverse, near_origin, far_origin;
+    unsigned negative; ///< a bit per axis the ray runs toward -axis on
+
+    /// `pad`: SlabRay::padding; `far_widening`: SlabRay::far_widening.
+    [[gnu::always_inline]] constexpr SlabAxes(const Ray<T>& ray, T pad, T far_widening) noexcept
+    {
+        constexpr T largest = std::numeric_limits<T>::max();
+        const Axes d{ray.direction.x, ray.direction.y, ray.direction.z, T(1)}, o{ray.origin.x, ray.origin.y, ray.origin.z, T(0)};
+        const Axes r = T(1) / d;
+        Axes most, least;
+        splat(most, largest), splat(least, -largest);
+        const Axes below = r < largest ? r : most;
+        const Axes clamped = r > -largest ? below : least;
+        inverse = d == T(0) ? r : clamped;
+        far_inverse = inverse * far_widening;
+        const auto neg = inverse < T(0);
+        near_origin = neg ? o - pad : o + pad;
+        far_origin = neg ? o + pad : o - pad;
+        negative = lane_bits(neg) & 7u;
+    }
+};
+#endif
+
 /// A ray prepared for many box tests: its slabs' reciprocals, which face of each slab
 /// it meets first, and its origin moved by one padding for every box of a tree (see
 /// Bvh::traverse).
@@ -713,31 +845,17 @@ struct SlabRay {
     /// `magnitude`: the largest coordinate magnitude of every box to be tested.
     constexpr SlabRay(const Ray<T>& ray, T magnitude) noexcept
     {
-        // Aabb::may_cross widens a box by gamma(16) (|o - c| + h) (c its center, h its
-        // half size, as max components), which is at most gamma(16) (|o| + 2 magnitude).
-        // gamma(20) covers that and the rounding of o +- pad (two ulps of |o| or |lo|),
-        // so that every box is at least as wide here as there.
-        const T pad = gamma<T>(20) * (max_component(prism::abs(ray.origin)) + T(2) * magnitude) + std::numeric_limits<T>::min();
+        const T pad = padding(ray, magnitude);
         constexpr T largest = std::numeric_limits<T>::max();
 #if PRISM_VECTOR_EXTENSIONS
         if (!std::is_constant_evaluated()) {
-            // The three axes at once, each lane the loop's arithmetic below (1 / +-0 is
-            // that infinity already at run time: one division and a select).
-            typedef T Axes __attribute__((vector_size(4 * sizeof(T))));
-            const Axes d{ray.direction.x, ray.direction.y, ray.direction.z, T(1)}, o{ray.origin.x, ray.origin.y, ray.origin.z, T(0)};
-            const Axes r = T(1) / d;
-            const Axes below = r < largest ? r : Axes{} + largest;
-            const Axes clamped = r > -largest ? below : Axes{} - largest;
-            const Axes inv = d == T(0) ? r : clamped;
-            const Axes far_inv = inv * far_widening;
-            const auto neg = inv < T(0);
-            const Axes near_o = neg ? o - pad : o + pad, far_o = neg ? o + pad : o - pad;
+            const SlabAxes<T> axes(ray, pad, far_widening);
             for (int axis = 0; axis < 3; ++axis) {
-                inverse[axis] = inv[axis];
-                far_inverse[axis] = far_inv[axis];
-                negative[std::size_t(axis)] = neg[axis] != 0;
-                near_origin[axis] = near_o[axis];
-                far_origin[axis] = far_o[axis];
+                inverse[axis] = axes.inverse[axis];
+                far_inverse[axis] = axes.far_inverse[axis];
+                negative[std::size_t(axis)] = ((axes.negative >> axis) & 1u) != 0;
+                near_origin[axis] = axes.near_origin[axis];
+                far_origin[axis] = axes.far_origin[axis];
             }
             return;
         }
@@ -753,6 +871,16 @@ struct SlabRay {
             near_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] - pad : ray.origin[axis] + pad;
             far_origin[axis] = negative[std::size_t(axis)] ? ray.origin[axis] + pad : ray.origin[axis] - pad;
         }
+    }
+
+    /// The pad every box of a tree is widened by for `ray` (`magnitude`: the largest
+    /// coordinate magnitude of every box to be tested). Aabb::may_cross widens a box by
+    /// gamma(16) (|o - c| + h) (c its center, h its half size, as max components), which is
+    /// at most gamma(16) (|o| + 2 magnitude). gamma(20) covers that and the rounding of
+    /// o +- pad (two ulps of |o| or |lo|), so that every box is at least as wide here as there.
+    [[nodiscard, gnu::always_inline]] static constexpr T padding(const Ray<T>& ray, T magnitude) noexcept
+    {
+        return gamma<T>(20) * (max_component(prism::abs(ray.origin)) + T(2) * magnitude) + std::numeric_limits<T>::min();
     }
 
     [[nodiscard]] static constexpr bool negative_zero(T zero) noexcept
@@ -811,17 +939,26 @@ struct SlabLanes {
     Lanes near_origin[3], far_origin[3], inverse[3], far_inverse[3];
     std::size_t near_face[3], far_face[3]; ///< byte offsets in BvhNode::bounds of the rows the ray meets first and last on each axis
 
-    explicit SlabLanes(const SlabRay<T>& slab) noexcept
+    /// `magnitude`: the largest coordinate magnitude of every box to be tested (as SlabRay's).
+    [[gnu::always_inline]] SlabLanes(const Ray<T>& ray, T magnitude) noexcept
     {
-        for (int axis = 0; axis < 3; ++axis) {
-            near_origin[axis] = Lanes{} + slab.near_origin[axis];
-            far_origin[axis] = Lanes{} + slab.far_origin[axis];
-            inverse[axis] = Lanes{} + slab.inverse[axis];
-            far_inverse[axis] = Lanes{} + slab.far_inverse[axis];
-            const std::size_t n = slab.negative[std::size_t(axis)];
-            near_face[axis] = (std::size_t(axis) + 3 * n) * sizeof(Lanes);
-            far_face[axis] = (std::size_t(axis) + 3 * (1 - n)) * sizeof(Lanes);
-        }
+        // SlabRay's numbers, each axis's broadcast from its lane (never stored as scalars).
+        const SlabAxes<T> axes(ray, SlabRay<T>::padding(ray, magnitude), SlabRay<T>::far_widening);
+        set_axis<0>(axes);
+        set_axis<1>(axes);
+        set_axis<2>(axes);
+    }
+
+    template <int Axis>
+    [[gnu::always_inline]] void set_axis(const SlabAxes<T>& axes) noexcept
+    {
+        splat_lane<Axis>(near_origin[Axis], axes.near_origin);
+        splat_lane<Axis>(far_origin[Axis], axes.far_origin);
+        splat_lane<Axis>(inverse[Axis], axes.inverse);
+        splat_lane<Axis>(far_inverse[Axis], axes.far_inverse);
+        const std::size_t n = (axes.negative >> Axis) & 1u;
+        near_face[Axis] = (Axis + 3 * n) * sizeof(Lanes);
+        far_face[Axis] = (Axis + 3 - 3 * n) * sizeof(Lanes);
     }
 
     [[nodiscard, gnu::always_inline]] unsigned may_cross(const BvhNode<T, Width>& node, Interval<T> range, std::array<T, width>& near) const noexcept
@@ -843,22 +980,13 @@ struct SlabLanes {
         const Lanes t_far[3] = {(f0 - far_origin[0]) * far_inverse[0], (f1 - far_origin[1]) * far_inverse[1], (f2 - far_origin[2]) * far_inverse[2]};
         // SlabRay::later and sooner, written out (a function returning a vector wider
         // than the target's registers changes the ABI, and GCC says so).
-        const Lanes min = Lanes{} + range.min, max = Lanes{} + range.max;
+        Lanes min, max;
+        splat(min, range.min), splat(max, range.max);
         const Lanes near01 = t_near[0] > t_near[1] ? t_near[0] : t_near[1], near2 = t_near[2] > min ? t_near[2] : min;
         const Lanes far01 = t_far[0] < t_far[1] ? t_far[0] : t_far[1], far2 = t_far[2] < max ? t_far[2] : max;
         const Lanes lo = near01 > near2 ? near01 : near2, hi = far01 < far2 ? far01 : far2;
-        const auto crossed = lo <= hi;
         __builtin_memcpy(near.data(), &lo, sizeof(Lanes));
-#if defined(__SSE__)
-        if constexpr (sizeof(T) == 4 && width == 4) return unsigned(__builtin_ia32_movmskps((Lanes)crossed));
-#endif
-#if defined(__AVX__)
-        if constexpr (sizeof(T) == 4 && width == 8) return unsigned(__builtin_ia32_movmskps256((Lanes)crossed));
-        if constexpr (sizeof(T) == 8 && width == 4) return unsigned(__builtin_ia32_movmskpd256((Lanes)crossed));
-#endif
-        unsigned hits = 0;
-        for (int lane = 0; lane < width; ++lane) hits |= crossed[lane] ? 1u << lane : 0u;
-        return hits;
+        return lane_bits(lo <= hi);
     }
 };
 #endif
@@ -1765,13 +1893,10 @@ private:
         // box test, the padding lanes' empty boxes too, and those lanes' zeros would be
         // taken for the root: a walk without end.)
         if (nodes_.empty() || !is_finite(ray.origin) || !is_finite(ray.direction)) return false;
-        const detail::SlabRay<T> slab(ray, magnitude_);
-        if (std::is_constant_evaluated()) return walk_with<Nearest>(slab, range, visit);
 #if PRISM_VECTOR_EXTENSIONS
-        return walk_with<Nearest>(detail::SlabLanes<T, Width>(slab), range, visit);
-#else
-        return walk_with<Nearest>(slab, range, visit);
+        if (!std::is_constant_evaluated()) return walk_with<Nearest>(detail::SlabLanes<T, Width>(ray, magnitude_), range, visit);
 #endif
+        return walk_with<Nearest>(detail::SlabRay<T>(ray, magnitude_), range, visit);
     }
 
     template <bool Nearest, class Slab, class Visit>
@@ -4776,32 +4901,35 @@ namespace prism::detail {
 /// for every triangle it is tested against.
 template <Scalar T>
 struct ShearedRay {
-    Vec3<T> origin, direction;
-    int kx = 0, ky = 1, kz = 2;
+    Vec3<T> origin;
+    int kz = 2; ///< the axis the ray runs most along (kx, ky the two after it, cyclically)
     T sx = 0, sy = 0, sz = 0;
 
 #if PRISM_VECTOR_EXTENSIONS
     /// What the four-triangle edge test takes from the ray in every lane, broadcast once
     /// per ray: the origin on the permuted axes kx, ky, kz, and the shear sx, sy.
     typedef T Lanes __attribute__((vector_size(4 * sizeof(T))));
-    Lanes lane_origin[3]{}, lane_sx{}, lane_sy{};
+    Lanes lane_origin[3], lane_sx, lane_sy; // (set by the constructor: no zeros stored first)
 #endif
 
-    explicit ShearedRay(const Ray<T>& ray) noexcept : origin(ray.origin), direction(ray.direction)
+    [[gnu::always_inline]] explicit ShearedRay(const Ray<T>& ray) noexcept : origin(ray.origin)
     {
-        const Vec3<T> a = prism::abs(ray.direction);
-        kz = a.x >= a.y ? (a.x >= a.z ? 0 : 2) : (a.y >= a.z ? 1 : 2);
-        kx = kz == 2 ? 0 : kz + 1;
-        ky = kx == 2 ? 0 : kx + 1;
-        sz = T(1) / direction[kz];
-        sx = -direction[kx] * sz;
-        sy = -direction[ky] * sz;
+        // (Scalars and arrays indexed by kz: a Vec3's operator[] is a switch.)
+        const T d[3] = {ray.direction.x, ray.direction.y, ray.direction.z}, o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+        const T ax = std::abs(d[0]), ay = std::abs(d[1]), az = std::abs(d[2]);
+        kz = ax >= ay ? (ax >= az ? 0 : 2) : (ay >= az ? 1 : 2);
+        const int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+        sz = T(1) / d[kz];
+        sx = -d[kx] * sz;
+        sy = -d[ky] * sz;
 #if PRISM_VECTOR_EXTENSIONS
-        lane_origin[0] = Lanes{} + origin[kx];
-        lane_origin[1] = Lanes{} + origin[ky];
-        lane_origin[2] = Lanes{} + origin[kz];
-        lane_sx = Lanes{} + sx;
-        lane_sy = Lanes{} + sy;
+        splat(lane_origin[0], o[kx]);
+        splat(lane_origin[1], o[ky]);
+        splat(lane_origin[2], o[kz]);
+        splat(lane_sx, sx);
+        splat(lane_sy, sy);
+#else
+        (void)o;
 #endif
     }
 };
@@ -4957,9 +5085,10 @@ template <int Kz, Scalar T>
 /// Each lane takes hit_triangle_along's operations in the same order, so its answer and
 /// numbers are hit_triangle's, bit for bit (tests/geometry/triangle.cpp checks it over
 /// random rays), but for a lane with an edge function of exactly 0, which hit_triangle
-/// works out again in double: those are left in `redo` for it. (A ray keeps few of a
-/// leaf's lanes past the edge test; the test of four costs about what hit_triangle's of
-/// one does.)
+/// works out again in double: those are left in `redo` for it. The edge test comes first
+/// and ends it where every lane misses (most blocks an incoherent ray meets), and the
+/// bound on t's own rounding is worked out only where a lane's triangle is not wholly in
+/// front of the ray (one the ray starts on, or behind it).
 template <Scalar T>
 struct BlockHits {
     unsigned hit = 0;  ///< a bit per lane hit within the range
@@ -4976,58 +5105,58 @@ template <int Kz, Scalar T>
     using Lanes = typename ShearedRay<T>::Lanes;
     using Bits = std::conditional_t<sizeof(T) == 4, std::int32_t, std::int64_t>;
     typedef Bits BitLanes __attribute__((vector_size(sizeof(Lanes))));
-    // |v| by its sign bit, as std::abs; a comparison's lanes as bits.
+    // |v| by its sign bit, as std::abs.
     const auto abs = [](const Lanes& v, Lanes& out) {
         BitLanes bits;
         __builtin_memcpy(&bits, &v, sizeof(Lanes));
         bits &= ~(BitLanes{} + Bits(std::uint64_t(1) << (8 * sizeof(T) - 1)));
         __builtin_memcpy(&out, &bits, sizeof(Lanes));
     };
-    const auto mask = [](const BitLanes& m) {
-        unsigned bits = 0;
-        for (int lane = 0; lane < 4; ++lane) bits |= m[lane] != 0 ? 1u << lane : 0u;
-        return bits;
+    const auto max3 = [&abs](const Lanes& v0, const Lanes& v1, const Lanes& v2, Lanes& out) {
+        Lanes a0, a1, a2;
+        abs(v0, a0), abs(v1, a1), abs(v2, a2);
+        const Lanes m = a0 > a1 ? a0 : a1;
+        out = m > a2 ? m : a2;
     };
     Lanes px[3], py[3], pz[3];
     sheared_corners<Kz>(ray, block, px, py, pz);
     const Lanes e0 = px[1] * py[2] - py[1] * px[2];
     const Lanes e1 = px[2] * py[0] - py[2] * px[0];
     const Lanes e2 = px[0] * py[1] - py[0] * px[1];
-    BlockHits<T> out;
-    out.redo = mask((e0 == T(0)) | (e1 == T(0)) | (e2 == T(0))) & lanes;
     const BitLanes below = (e0 < T(0)) | (e1 < T(0)) | (e2 < T(0)), above = (e0 > T(0)) | (e1 > T(0)) | (e2 > T(0));
+    const BitLanes zero = (e0 == T(0)) | (e1 == T(0)) | (e2 == T(0));
+    BlockHits<T> out;
+    if ((~lane_bits(below & above & ~zero) & lanes) == 0) return out; // edge_test_along's answer: all missed
+    out.redo = lane_bits(zero) & lanes;
     const Lanes det = e0 + e1 + e2;
-    const Lanes sz = Lanes{} + ray.sz;
+    Lanes sz, range_min, range_max;
+    splat(sz, ray.sz), splat(range_min, range.min), splat(range_max, range.max);
     const Lanes z0 = pz[0] * sz, z1 = pz[1] * sz, z2 = pz[2] * sz;
     const Lanes t_scaled = e0 * z0 + e1 * z1 + e2 * z2;
     const Lanes inv_det = T(1) / det;
     const Lanes t = t_scaled * inv_det;
-    // t above zero by more than its rounding: hit_triangle_along's bound, lane by lane.
-    Lanes a0, a1, a2, m;
-    abs(z0, a0), abs(z1, a1), abs(z2, a2);
-    m = a0 > a1 ? a0 : a1;
-    const Lanes max_z = m > a2 ? m : a2;
-    abs(px[0], a0), abs(px[1], a1), abs(px[2], a2);
-    m = a0 > a1 ? a0 : a1;
-    const Lanes max_x = m > a2 ? m : a2;
-    abs(py[0], a0), abs(py[1], a1), abs(py[2], a2);
-    m = a0 > a1 ? a0 : a1;
-    const Lanes max_y = m > a2 ? m : a2;
+    out.hit = lane_bits(~(below & above) & (det != T(0)) & (range_min < t) & (t < range_max)) & lanes & ~out.redo;
+    // t above zero by more than its rounding: hit_triangle_along's bound, lane by lane,
+    // where it can decide.
+    Lanes max_z;
+    max3(z0, z1, z2, max_z);
     const Lanes delta_z = gamma<T>(3) * max_z;
-    const Lanes delta_x = gamma<T>(5) * (max_x + max_z), delta_y = gamma<T>(5) * (max_y + max_z);
-    const Lanes delta_e = T(2) * (gamma<T>(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
-    abs(e0, a0), abs(e1, a1), abs(e2, a2);
-    m = a0 > a1 ? a0 : a1;
-    const Lanes max_e = m > a2 ? m : a2;
-    Lanes abs_inv_det;
-    abs(inv_det, abs_inv_det);
-    const Lanes delta_t = T(3) * (gamma<T>(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * abs_inv_det;
     const Lanes min01 = z1 < z0 ? z1 : z0;
     const Lanes min_z = z2 < min01 ? z2 : min01;
-    const BitLanes in_front = (t > delta_t) | (min_z > delta_z);
-    const BitLanes hit = ~(below & above) & (det != T(0)) & ((Lanes{} + range.min) < t) & (t < (Lanes{} + range.max)) & in_front;
-    out.hit = mask(hit) & lanes & ~out.redo;
-    out.entering = mask((det < T(0)) != (sz < T(0)));
+    unsigned in_front = lane_bits(min_z > delta_z);
+    if ((out.hit & ~in_front) != 0) {
+        Lanes max_x, max_y, max_e, abs_inv_det;
+        max3(px[0], px[1], px[2], max_x);
+        max3(py[0], py[1], py[2], max_y);
+        const Lanes delta_x = gamma<T>(5) * (max_x + max_z), delta_y = gamma<T>(5) * (max_y + max_z);
+        const Lanes delta_e = T(2) * (gamma<T>(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+        max3(e0, e1, e2, max_e);
+        abs(inv_det, abs_inv_det);
+        const Lanes delta_t = T(3) * (gamma<T>(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * abs_inv_det;
+        in_front |= lane_bits(t > delta_t);
+    }
+    out.hit &= in_front;
+    out.entering = lane_bits((det < T(0)) != (sz < T(0)));
     const Lanes b0 = e0 * inv_det, b1 = e1 * inv_det, b2 = e2 * inv_det;
     __builtin_memcpy(out.t.data(), &t, sizeof(Lanes));
     __builtin_memcpy(out.b[0].data(), &b0, sizeof(Lanes));
@@ -5321,7 +5450,7 @@ public:
     [[nodiscard]] T first_crossing(const Ray<T>& far_ray, Interval<T> far_range, SurfaceHint<T>& hint) const noexcept
     {
         const NearRay<T> near = brought_near(far_ray, data_->near);
-        const Ray<T>& ray = near.ray;
+        const Ray<T>& ray = near.ray_for(far_ray);
         Interval<T> range = near.range(far_range);
         const detail::ShearedRay<T> sheared(ray);
         detail::TriangleHit<T> nearest{infinity<T>, {}, false};
@@ -5334,7 +5463,9 @@ public:
         });
         if (!(nearest.t < infinity<T>)) return infinity<T>;
         const T t = near.back(nearest.t);
-        hint = {triangle, t, nearest.b, nearest.entering};
+        // (Field by field: a whole struct built on the stack and copied is read back with
+        // a wider load than its stores, which stalls.)
+        hint.index = triangle, hint.t = t, hint.b = nearest.b, hint.entering = nearest.entering;
         return t;
     }
 
@@ -5356,7 +5487,7 @@ public:
     [[nodiscard]] bool any_crossing(const Ray<T>& far_ray, Interval<T> far_range) const noexcept
     {
         const NearRay<T> near = brought_near(far_ray, data_->near);
-        const Ray<T>& ray = near.ray;
+        const Ray<T>& ray = near.ray_for(far_ray);
         Interval<T> range = near.range(far_range);
         const detail::ShearedRay<T> sheared(ray);
         return data_->bvh.any_leaf(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) __attribute__((always_inline)) {
@@ -5369,7 +5500,7 @@ public:
     [[nodiscard]] Crossings<T, N> crossings(const Ray<T>& far_ray, Interval<T> far_range) const noexcept
     {
         const NearRay<T> near = brought_near(far_ray, data_->near);
-        const Ray<T>& ray = near.ray;
+        const Ray<T>& ray = near.ray_for(far_ray);
         Interval<T> range = near.range(far_range);
         Crossings<T, N> out;
         const Hits hits = gather(ray, range);
@@ -5407,9 +5538,8 @@ public:
 private:
     /// Calls take(k, hit) for each triangle of the leaf [first, first + count) that the ray
     /// hits within `range` (which take may shrink), in order, until take returns true (and
-    /// then returns true): what hit_triangle finds, lane by lane, for each triangle the
-    /// edge test keeps, but the block's lanes kept tested at once (hit_block: the same
-    /// numbers).
+    /// then returns true): what hit_triangle finds, lane by lane, but a block's lanes
+    /// tested at once (hit_block: the same numbers).
     template <class Take>
     [[gnu::always_inline]] bool for_each_hit(const detail::ShearedRay<T>& ray, std::uint32_t first, std::uint32_t count, Interval<T>& range, Take&& take) const noexcept
     {
@@ -5418,17 +5548,15 @@ private:
         const detail::TriangleBlock<T>* block = &data_->blocks[first / width]; // a leaf starts a block
         for (std::uint32_t k = first; k < first + count; k += width, ++block) {
             const std::uint32_t lanes = std::min(width, first + count - k);
-            unsigned maybe = detail::edge_test(ray, *block) & ((1u << lanes) - 1);
-            if (maybe == 0) continue;
-            const detail::BlockHits<T> hits = detail::hit_block(ray, *block, range, maybe);
-            for (; maybe != 0; maybe &= maybe - 1) {
+            const detail::BlockHits<T> hits = detail::hit_block(ray, *block, range, (1u << lanes) - 1);
+            for (unsigned maybe = hits.hit | hits.redo; maybe != 0; maybe &= maybe - 1) {
                 const auto lane = std::uint32_t(std::countr_zero(maybe));
                 detail::TriangleHit<T> h;
                 if ((hits.redo >> lane) & 1u) {
                     if (!detail::hit_triangle(ray, block->triangle(lane), range, h)) continue;
                 } else {
                     // (Tested against the range as it was: a hit before may have shrunk it.)
-                    if (!((hits.hit >> lane) & 1u) || !(hits.t[lane] < range.max)) continue;
+                    if (!(hits.t[lane] < range.max)) continue;
                     h = {hits.t[lane], {hits.b[0][lane], hits.b[1][lane], hits.b[2][lane]}, ((hits.entering >> lane) & 1u) != 0};
                 }
                 if (take(k + lane, h)) return true;

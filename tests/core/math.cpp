@@ -4,7 +4,10 @@
 
 #include <doctest/doctest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <type_traits>
 #include <initializer_list>
 
 using prism::Vec3;
@@ -86,4 +89,19 @@ TEST_CASE_TEMPLATE("difference_of_products keeps the digits that a*b - c*d cance
         const long double e = (long double)x * y - (long double)z * w;
         CHECK(std::abs(prism::difference_of_products(x, y, z, w) - e) <= 2 * std::numeric_limits<T>::epsilon() * (std::abs(e) + 1e-30L));
     }
+}
+
+TEST_CASE_TEMPLATE("abs clears the sign bit: -0 gives +0, NaN stays NaN, at run time and in constant evaluation, per component of a vector", T, float, double)
+{
+    static_assert(prism::abs(T(-2.5)) == T(2.5) && prism::abs(T(3)) == T(3));
+    using Bits = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>;
+    static_assert(std::bit_cast<Bits>(prism::abs(-T(0))) == 0); // +0, every bit clear
+    volatile T negative_zero = -T(0), nan = std::numeric_limits<T>::quiet_NaN(), minus_inf = -prism::infinity<T>;
+    CHECK_FALSE(std::signbit(prism::abs(T(negative_zero))));
+    CHECK(std::isnan(prism::abs(T(nan))));
+    CHECK(prism::abs(T(minus_inf)) == prism::infinity<T>);
+    CHECK(prism::abs(-std::numeric_limits<T>::denorm_min()) == std::numeric_limits<T>::denorm_min());
+    const Vec3<T> v = prism::abs(Vec3<T>{-T(1), T(negative_zero), T(2)});
+    CHECK(v == Vec3<T>{T(1), T(0), T(2)});
+    CHECK_FALSE(std::signbit(v.y));
 }
