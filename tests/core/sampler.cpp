@@ -287,3 +287,22 @@ TEST_CASE("the Sobol sampler's error on a smooth integrand falls as N^-3/2, the 
     CHECK(random_slope < -0.35);
     CHECK(sobol_error.back() < 0.05 * random_error.back());
 }
+
+TEST_CASE("a zsobol key's Morton spread and sample mask equal their bit-by-bit loops")
+{
+    // spread_bits against the loop in_image used to run: bit b of v at bit 2b.
+    prism::Random rng(43u, 1u);
+    for (int i = 0; i < 100000; ++i) {
+        const std::uint64_t v = i < 64 ? (std::uint64_t(1) << (i % 32)) - (i >= 32) : rng.next_u32();
+        std::uint64_t loop = 0;
+        for (std::uint32_t b = 0; b < 32; ++b) loop |= ((v >> b) & 1u) << (2 * b);
+        REQUIRE(prism::PixelKey::spread_bits(v) == loop);
+    }
+    // The sample mask: 2^s - 1 for the least s <= 31 with 2^s >= spp.
+    for (std::uint64_t spp = 0; spp < (std::uint64_t(1) << 34); spp = spp < 70000 ? spp + 1 : spp * 3 + 1) {
+        std::uint32_t s = 0;
+        while (s < 31 && (std::uint64_t(1) << s) < spp) ++s;
+        const prism::PixelKey key = prism::PixelKey::in_image(prism::SamplerKind::zsobol, 1, 3, 5, 640, 480, spp);
+        REQUIRE(key.sample_mask() == (std::uint32_t(1) << s) - 1);
+    }
+}

@@ -46,6 +46,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 
 namespace prism {
@@ -113,13 +114,28 @@ public:
     {
         if (kind != SamplerKind::zsobol) return PixelKey(seed, std::uint64_t(y) * width + x);
         PixelKey pixel(seed, ~std::uint64_t(0)); // one key for the image: its points are one sequence
-        while ((std::uint64_t(1) << pixel.levels_) < std::max(width, height)) ++pixel.levels_;
-        while (pixel.log2_spp_ < 31 && (std::uint64_t(1) << pixel.log2_spp_) < spp) ++pixel.log2_spp_;
+        // (Asked once a pixel: counted and spread without loops.)
+        const std::uint32_t side = std::max(width, height);
+        pixel.levels_ = std::uint8_t(side <= 1 ? 0 : int(std::bit_width(side - 1))); // the least L with 2^L >= side
+        pixel.log2_spp_ = std::uint8_t(spp <= 1 ? 0 : std::min<int>(31, int(std::bit_width(spp - 1))));
         pixel.mask_ = (std::uint32_t(1) << pixel.log2_spp_) - 1;
-        for (std::uint32_t b = 0; b < pixel.levels_; ++b) // Morton order: x's bit b at 2b, y's at 2b + 1
-            pixel.morton_ |= std::uint64_t((x >> b) & 1u) << (2 * b) | std::uint64_t((y >> b) & 1u) << (2 * b + 1);
+        // Morton order: x's bit b at 2b, y's at 2b + 1, for the bits b below levels_.
+        const std::uint64_t below = (std::uint64_t(1) << pixel.levels_) - 1;
+        pixel.morton_ = spread_bits(x & below) | spread_bits(y & below) << 1;
         pixel.in_image_ = true;
         return pixel;
+    }
+
+    /// The 32 bits of `v` at the even bits of the result (bit b at 2b), zeros between.
+    [[nodiscard]] static constexpr std::uint64_t spread_bits(std::uint64_t v) noexcept
+    {
+        v &= 0xffffffffULL;
+        v = (v | v << 16) & 0x0000ffff0000ffffULL;
+        v = (v | v << 8) & 0x00ff00ff00ff00ffULL;
+        v = (v | v << 4) & 0x0f0f0f0f0f0f0f0fULL;
+        v = (v | v << 2) & 0x3333333333333333ULL;
+        v = (v | v << 1) & 0x5555555555555555ULL;
+        return v;
     }
 
     /// Pair k's seeds, hashed. Out of line: asked once a pixel and pair (PixelSeeds keeps
@@ -216,7 +232,7 @@ public:
 private:
     PixelKey pixel_;
     std::uint32_t known_ = 0; ///< bit k: seeds_[k] is hashed
-    std::array<PairSeeds, cached> seeds_{};
+    std::array<PairSeeds, cached> seeds_; ///< (not cleared: a seed is read only once hashed, known_ says which; clearing 512 bytes a pixel cost more than a Whitted pixel's hashing)
 };
 
 /// The numbers of one sample of one pixel.
