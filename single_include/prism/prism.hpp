@@ -3090,6 +3090,7 @@ inline constexpr std::array<std::uint32_t, 64> primes = {2,   3,   5,   7,   11,
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 
 namespace prism {
@@ -3157,13 +3158,28 @@ public:
     {
         if (kind != SamplerKind::zsobol) return PixelKey(seed, std::uint64_t(y) * width + x);
         PixelKey pixel(seed, ~std::uint64_t(0)); // one key for the image: its points are one sequence
-        while ((std::uint64_t(1) << pixel.levels_) < std::max(width, height)) ++pixel.levels_;
-        while (pixel.log2_spp_ < 31 && (std::uint64_t(1) << pixel.log2_spp_) < spp) ++pixel.log2_spp_;
+        // (Asked once a pixel: counted and spread without loops.)
+        const std::uint32_t side = std::max(width, height);
+        pixel.levels_ = std::uint8_t(side <= 1 ? 0 : int(std::bit_width(side - 1))); // the least L with 2^L >= side
+        pixel.log2_spp_ = std::uint8_t(spp <= 1 ? 0 : std::min<int>(31, int(std::bit_width(spp - 1))));
         pixel.mask_ = (std::uint32_t(1) << pixel.log2_spp_) - 1;
-        for (std::uint32_t b = 0; b < pixel.levels_; ++b) // Morton order: x's bit b at 2b, y's at 2b + 1
-            pixel.morton_ |= std::uint64_t((x >> b) & 1u) << (2 * b) | std::uint64_t((y >> b) & 1u) << (2 * b + 1);
+        // Morton order: x's bit b at 2b, y's at 2b + 1, for the bits b below levels_.
+        const std::uint64_t below = (std::uint64_t(1) << pixel.levels_) - 1;
+        pixel.morton_ = spread_bits(x & below) | spread_bits(y & below) << 1;
         pixel.in_image_ = true;
         return pixel;
+    }
+
+    /// The 32 bits of `v` at the even bits of the result (bit b at 2b), zeros between.
+    [[nodiscard]] static constexpr std::uint64_t spread_bits(std::uint64_t v) noexcept
+    {
+        v &= 0xffffffffULL;
+        v = (v | v << 16) & 0x0000ffff0000ffffULL;
+        v = (v | v << 8) & 0x00ff00ff00ff00ffULL;
+        v = (v | v << 4) & 0x0f0f0f0f0f0f0f0fULL;
+        v = (v | v << 2) & 0x3333333333333333ULL;
+        v = (v | v << 1) & 0x5555555555555555ULL;
+        return v;
     }
 
     /// Pair k's seeds, hashed. Out of line: asked once a pixel and pair (PixelSeeds keeps
@@ -3260,7 +3276,7 @@ public:
 private:
     PixelKey pixel_;
     std::uint32_t known_ = 0; ///< bit k: seeds_[k] is hashed
-    std::array<PairSeeds, cached> seeds_{};
+    std::array<PairSeeds, cached> seeds_; ///< (not cleared: a seed is read only once hashed, known_ says which; clearing 512 bytes a pixel cost more than a Whitted pixel's hashing)
 };
 
 /// The numbers of one sample of one pixel.
@@ -4387,6 +4403,7 @@ template <Shape A, Shape B, Shape... Rest>
 
 #include <algorithm>
 #include <limits>
+#include <type_traits>
 
 namespace prism {
 
@@ -4484,6 +4501,9 @@ private:
         // ray's direction makes unpredictable); the faces are found afterwards, for a
         // crossing that needs them.
         Span span;
+#if PRISM_VECTOR_EXTENSIONS
+        if (!std::is_constant_evaluated()) return span_in_lanes(ray);
+#endif
         for (int axis = 0; axis < 3; ++axis) {
             const T o = ray.origin[axis];
             const T d = ray.direction[axis];
@@ -4504,6 +4524,35 @@ private:
         span.hit = span.t_near < span.t_far;
         return span;
     }
+
+#if PRISM_VECTOR_EXTENSIONS
+    /// span_of's loop with the three axes' six divisions as two vector divisions (the
+    /// same quotients, lane by lane: a division rounds each lane as it rounds a scalar),
+    /// then the loop's folds over the axes in the same order: the same span, bit for bit
+    /// (tests/geometry/box.cpp). The divisions were most of a box test's time.
+    [[nodiscard, gnu::always_inline]] Span span_in_lanes(const Ray<T>& ray) const noexcept
+    {
+        typedef T Lanes __attribute__((vector_size(4 * sizeof(T))));
+        const Lanes o{ray.origin.x, ray.origin.y, ray.origin.z, T(0)}, d{ray.direction.x, ray.direction.y, ray.direction.z, T(1)};
+        const Lanes lo{lo_.x, lo_.y, lo_.z, T(0)}, hi{hi_.x, hi_.y, hi_.z, T(0)};
+        Span span;
+        const auto parallel = d == T(0);
+        // A ray parallel to a slab and in or beside a face plane touches the box at most.
+        if (detail::lane_bits(parallel & ((o <= lo) | (o >= hi))) != 0) return span;
+        const Lanes t0 = (lo - o) / d, t1 = (hi - o) / d;
+        Lanes none;
+        detail::splat(none, std::numeric_limits<T>::quiet_NaN());
+        const Lanes enters = parallel ? none : (t1 < t0 ? t1 : t0), leaves = parallel ? none : (t0 < t1 ? t1 : t0); // std::min, std::max
+        for (int axis = 0; axis < 3; ++axis) {
+            span.enters[axis] = enters[axis];
+            span.leaves[axis] = leaves[axis];
+            span.t_near = std::max(span.t_near, enters[axis]); // (a NaN of a parallel slab leaves it, as the loop's skip does)
+            span.t_far = std::min(span.t_far, leaves[axis]);
+        }
+        span.hit = span.t_near < span.t_far;
+        return span;
+    }
+#endif
 
     [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, int axis, bool entering) const noexcept
     {
