@@ -5,10 +5,6 @@
 #include "../support.hpp"
 #include "../uv_checks.hpp"
 
-#include <array>
-#include <cstdint>
-#include <cstring>
-
 using prism::Box;
 using prism::Interval;
 using prism::Vec3;
@@ -146,52 +142,3 @@ TEST_CASE_TEMPLATE("a box's face and a Plane on it cross a ray at the same t, bi
     CHECK(crossings > 150000);
     CHECK(mismatches == 0);
 }
-
-#if PRISM_CONSTEXPR_VECTORS
-namespace {
-
-/// A box's crossings (t, and the face's normal) for rays from a small generator, with
-/// many along an axis or starting in a face's plane: worked out in a constant expression
-/// (Box's loop over the axes) or at run time (its six divisions as two vector divisions).
-template <class T>
-constexpr std::array<T, 3 * 600> box_lanes_answers()
-{
-    const Box<T> box({T(-1), T(0.5), T(-2)}, {T(2), T(3), T(1)});
-    std::uint32_t state = 12345u;
-    const auto next = [&state] { return state = state * 1664525u + 1013904223u; };
-    const auto coordinate = [&](T scale) {
-        const std::uint32_t pick = next() >> 29;
-        if (pick == 0) return T(-1);
-        if (pick == 1) return T(2);
-        if (pick == 2) return T(0.5);
-        return scale * (T(next() >> 8) / T(1 << 24) * T(2) - T(1));
-    };
-    std::array<T, 3 * 600> out{};
-    for (std::size_t i = 0; i < 600; ++i) {
-        const Vec3<T> origin{coordinate(T(5)), coordinate(T(5)), coordinate(T(5))};
-        Vec3<T> direction{coordinate(T(1)), coordinate(T(1)), coordinate(T(1))};
-        if (i % 4 == 0) direction[int(i / 4 % 3)] = T(0);
-        if (direction == Vec3<T>(T(0))) direction.x = T(1);
-        const auto list = box.crossings(prism::Ray<T>{origin, direction}, Interval<T>::universe());
-        out[3 * i] = list.empty() ? prism::infinity<T> : list.front().t;
-        out[3 * i + 1] = list.size() < 2 ? prism::infinity<T> : list[1].t;
-        out[3 * i + 2] = list.empty() ? T(0) : list.front().normal.x + T(2) * list.front().normal.y + T(4) * list.front().normal.z;
-    }
-    return out;
-}
-
-} // namespace
-
-TEST_CASE_TEMPLATE("a box's test in vector lanes (run time) gives its loop's crossings (constant evaluation), bit for bit", T, float, double)
-{
-    constexpr auto loop = box_lanes_answers<T>();
-    const auto lanes = box_lanes_answers<T>();
-    int differ = 0, hits = 0;
-    for (std::size_t k = 0; k < loop.size(); ++k) {
-        differ += std::memcmp(&loop[k], &lanes[k], sizeof(T)) != 0;
-        hits += k % 3 == 0 && loop[k] < prism::infinity<T>;
-    }
-    CHECK(differ == 0);
-    CHECK(hits > 100);
-}
-#endif

@@ -3,13 +3,11 @@
 #pragma once
 
 #include <prism/core/check.hpp>
-#include <prism/core/lanes.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/geometry/shape.hpp>
 
 #include <algorithm>
 #include <limits>
-#include <type_traits>
 
 namespace prism {
 
@@ -107,9 +105,6 @@ private:
         // ray's direction makes unpredictable); the faces are found afterwards, for a
         // crossing that needs them.
         Span span;
-#if PRISM_VECTOR_EXTENSIONS
-        if (!std::is_constant_evaluated()) return span_in_lanes(ray);
-#endif
         for (int axis = 0; axis < 3; ++axis) {
             const T o = ray.origin[axis];
             const T d = ray.direction[axis];
@@ -130,35 +125,6 @@ private:
         span.hit = span.t_near < span.t_far;
         return span;
     }
-
-#if PRISM_VECTOR_EXTENSIONS
-    /// span_of's loop with the three axes' six divisions as two vector divisions (the
-    /// same quotients, lane by lane: a division rounds each lane as it rounds a scalar),
-    /// then the loop's folds over the axes in the same order: the same span, bit for bit
-    /// (tests/geometry/box.cpp). The divisions were most of a box test's time.
-    [[nodiscard, gnu::always_inline]] Span span_in_lanes(const Ray<T>& ray) const noexcept
-    {
-        typedef T Lanes __attribute__((vector_size(4 * sizeof(T))));
-        const Lanes o{ray.origin.x, ray.origin.y, ray.origin.z, T(0)}, d{ray.direction.x, ray.direction.y, ray.direction.z, T(1)};
-        const Lanes lo{lo_.x, lo_.y, lo_.z, T(0)}, hi{hi_.x, hi_.y, hi_.z, T(0)};
-        Span span;
-        const auto parallel = d == T(0);
-        // A ray parallel to a slab and in or beside a face plane touches the box at most.
-        if (detail::lane_bits(parallel & ((o <= lo) | (o >= hi))) != 0) return span;
-        const Lanes t0 = (lo - o) / d, t1 = (hi - o) / d;
-        Lanes none;
-        detail::splat(none, std::numeric_limits<T>::quiet_NaN());
-        const Lanes enters = parallel ? none : (t1 < t0 ? t1 : t0), leaves = parallel ? none : (t0 < t1 ? t1 : t0); // std::min, std::max
-        for (int axis = 0; axis < 3; ++axis) {
-            span.enters[axis] = enters[axis];
-            span.leaves[axis] = leaves[axis];
-            span.t_near = std::max(span.t_near, enters[axis]); // (a NaN of a parallel slab leaves it, as the loop's skip does)
-            span.t_far = std::min(span.t_far, leaves[axis]);
-        }
-        span.hit = span.t_near < span.t_far;
-        return span;
-    }
-#endif
 
     [[nodiscard]] constexpr Crossing<T> crossing_at(const Ray<T>& ray, T t, int axis, bool entering) const noexcept
     {
