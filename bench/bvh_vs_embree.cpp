@@ -20,6 +20,7 @@
 // algorithms apart from the ISA; that run writes bvh_vs_embree[_prism-avx2]_<isa>.csv.
 //   bench_bvh_vs_embree [results-folder] [repeats] [bunny.obj] [embree-isa]
 #include "common.hpp"
+#include "embree_rays.hpp"
 #include "meshes.hpp"
 
 #include <prism/io/mesh.hpp>
@@ -123,41 +124,15 @@ public:
         const auto start = std::chrono::steady_clock::now();
         begin();
         rtcSetSceneBuildQuality(scene_, quality);
-        RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-        rtcSetGeometryBuildQuality(g, quality);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
-        for (std::size_t i = 0; i < mesh.positions.size(); ++i) v[3 * i] = mesh.positions[i].x, v[3 * i + 1] = mesh.positions[i].y, v[3 * i + 2] = mesh.positions[i].z;
-        auto* f = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangles.size()));
-        for (std::size_t i = 0; i < mesh.triangles.size(); ++i) f[3 * i] = mesh.triangles[i][0], f[3 * i + 1] = mesh.triangles[i][1], f[3 * i + 2] = mesh.triangles[i][2];
-        return end(g, start);
+        bench::embree_add_triangles(device_, scene_, mesh, quality);
+        return finish(start);
     }
 
     /// Whether anything lies on the ray between 0 and t_max.
-    [[nodiscard]] bool occluded(const Ray<T>& ray, float t_max) const
-    {
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        RTCRay r{};
-        r.org_x = ray.origin.x, r.org_y = ray.origin.y, r.org_z = ray.origin.z;
-        r.dir_x = ray.direction.x, r.dir_y = ray.direction.y, r.dir_z = ray.direction.z;
-        r.tnear = 0, r.tfar = t_max, r.mask = ~0u;
-        rtcOccluded1(scene_, &context, &r);
-        return r.tfar < 0; // Embree marks an occluded ray with tfar = -inf
-    }
+    [[nodiscard]] bool occluded(const Ray<T>& ray, float t_max) const { return bench::embree_occluded(scene_, ray, t_max); }
 
     /// The t of the closest hit, or infinity.
-    [[nodiscard]] float closest(const Ray<T>& ray) const
-    {
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        RTCRayHit rh{};
-        rh.ray.org_x = ray.origin.x, rh.ray.org_y = ray.origin.y, rh.ray.org_z = ray.origin.z;
-        rh.ray.dir_x = ray.direction.x, rh.ray.dir_y = ray.direction.y, rh.ray.dir_z = ray.direction.z;
-        rh.ray.tnear = 0, rh.ray.tfar = infinity<float>, rh.ray.mask = ~0u;
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1(scene_, &context, &rh);
-        return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? infinity<float> : rh.ray.tfar;
-    }
+    [[nodiscard]] float closest(const Ray<T>& ray) const { return bench::embree_closest(scene_, ray); }
 
 private:
     void begin()
@@ -170,6 +145,11 @@ private:
         rtcCommitGeometry(g);
         rtcAttachGeometry(scene_, g);
         rtcReleaseGeometry(g);
+        return finish(start);
+    }
+    /// The scene committed (built); the seconds since `start`.
+    double finish(std::chrono::steady_clock::time_point start)
+    {
         rtcCommitScene(scene_);
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }

@@ -16,7 +16,7 @@
 #include "meshes.hpp"
 
 #if PRISM_BENCH_EMBREE
-#include <embree3/rtcore.h>
+#include "embree_rays.hpp"
 #endif
 
 #include <chrono>
@@ -52,14 +52,7 @@ public:
     {
         if (device_ == nullptr) throw std::runtime_error("rtcNewDevice failed");
         scene_ = rtcNewScene(device_);
-        RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
-        for (std::size_t i = 0; i < mesh.positions.size(); ++i) v[3 * i] = mesh.positions[i].x, v[3 * i + 1] = mesh.positions[i].y, v[3 * i + 2] = mesh.positions[i].z;
-        auto* f = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangles.size()));
-        for (std::size_t i = 0; i < mesh.triangles.size(); ++i) f[3 * i] = mesh.triangles[i][0], f[3 * i + 1] = mesh.triangles[i][1], f[3 * i + 2] = mesh.triangles[i][2];
-        rtcCommitGeometry(g);
-        rtcAttachGeometry(scene_, g);
-        rtcReleaseGeometry(g);
+        bench::embree_add_triangles(device_, scene_, mesh, RTC_BUILD_QUALITY_MEDIUM);
         rtcCommitScene(scene_);
     }
     EmbreeMesh(const EmbreeMesh&) = delete;
@@ -69,29 +62,8 @@ public:
         rtcReleaseScene(scene_);
         rtcReleaseDevice(device_);
     }
-    [[nodiscard]] bool hit(const Ray<T>& ray) const
-    {
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        RTCRayHit rh{};
-        rh.ray.org_x = ray.origin.x, rh.ray.org_y = ray.origin.y, rh.ray.org_z = ray.origin.z;
-        rh.ray.dir_x = ray.direction.x, rh.ray.dir_y = ray.direction.y, rh.ray.dir_z = ray.direction.z;
-        rh.ray.tnear = 0, rh.ray.tfar = infinity<float>, rh.ray.mask = ~0u;
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1(scene_, &context, &rh);
-        return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-    }
-    [[nodiscard]] bool occluded(const Ray<T>& ray, T end) const
-    {
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        RTCRay r{};
-        r.org_x = ray.origin.x, r.org_y = ray.origin.y, r.org_z = ray.origin.z;
-        r.dir_x = ray.direction.x, r.dir_y = ray.direction.y, r.dir_z = ray.direction.z;
-        r.tnear = 0, r.tfar = end, r.mask = ~0u;
-        rtcOccluded1(scene_, &context, &r);
-        return r.tfar < 0;
-    }
+    [[nodiscard]] bool hit(const Ray<T>& ray) const { return bench::embree_closest(scene_, ray) < infinity<T>; }
+    [[nodiscard]] bool occluded(const Ray<T>& ray, T end) const { return bench::embree_occluded(scene_, ray, end); }
 
 private:
     RTCDevice device_;
