@@ -199,13 +199,7 @@ template <int Kz, Scalar T>
     const Lanes e2 = px[0] * py[1] - py[0] * px[1];
     const auto missed = ((e0 < T(0)) | (e1 < T(0)) | (e2 < T(0))) & ((e0 > T(0)) | (e1 > T(0)) | (e2 > T(0))) &
                         ~((e0 == T(0)) | (e1 == T(0)) | (e2 == T(0)));
-    // A bit per lane kept: one movmskps where the lanes are SSE's four floats.
-#if defined(__SSE__)
-    if constexpr (sizeof(T) == 4) return ~unsigned(__builtin_ia32_movmskps((Lanes)missed)) & 0xfu;
-#endif
-    unsigned maybe = 0;
-    for (int lane = 0; lane < width; ++lane) maybe |= missed[lane] ? 0u : 1u << lane;
-    return maybe;
+    return ~lane_bits(missed) & ((1u << width) - 1); // a bit per lane kept
 }
 
 /// hit_triangle on a block's four triangles at once: which of the lanes `lanes` (a bit
