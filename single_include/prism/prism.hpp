@@ -320,6 +320,127 @@ struct Interval {
 
 } // namespace prism
 
+// ---- prism/core/lanes.hpp ----
+// SIMD lanes by GCC's vector extensions (which clang shares), for the kernels that test
+// several boxes or triangles at once (accel/bvh_node.hpp, geometry/triangle.hpp): a
+// scalar in every lane, one lane of a vector in every lane of another, a lane mask as
+// bits, and the lane by lane minimum and maximum of SSE's own rule for NaN. Only where
+// PRISM_VECTOR_EXTENSIONS is 1.
+
+
+#include <cstddef>
+#include <utility>
+
+#if PRISM_VECTOR_EXTENSIONS
+namespace prism::detail {
+
+/// The number of lanes of the vector type V.
+template <class V>
+inline constexpr std::size_t lane_count = sizeof(V) / sizeof(V{}[0]);
+
+// (Each writes its vector to `out`: a function that returns a vector wider than the
+// target's registers changes the ABI, and GCC warns of it even where it is inlined.)
+
+/// `x` in every lane of `out`: one broadcast. (`V{} + x` says the same but adds 0 to x
+/// first, which the compiler must keep for a -0.)
+template <class V, class T>
+[[gnu::always_inline]] inline void splat(V& out, T x) noexcept
+{
+    [&out, x]<std::size_t... I>(std::index_sequence<I...>) { out = V{((void)I, x)...}; }(std::make_index_sequence<lane_count<V>>{});
+}
+
+/// Lane `Lane` of `v` in every lane of `out` (a vector of v's element type, as wide or
+/// twice as wide): one shuffle, with no trip through a scalar.
+template <int Lane, class Wide, class V>
+[[gnu::always_inline]] inline void splat_lane(Wide& out, const V& v) noexcept
+{
+    [&out, &v]<std::size_t... I>(std::index_sequence<I...>) { out = __builtin_shufflevector(v, v, ((void)I, Lane)...); }(
+        std::make_index_sequence<lane_count<Wide>>{});
+}
+
+/// A comparison's lanes (all bits set or none) as a bit each, lane 0 the lowest: one
+/// movmskps or movmskpd where the lanes fill an SSE or AVX register.
+template <class Mask>
+[[nodiscard, gnu::always_inline]] inline unsigned lane_bits(const Mask& m) noexcept
+{
+    constexpr std::size_t n = lane_count<Mask>;
+#if defined(__SSE__)
+    if constexpr (sizeof(Mask) == 16 && n == 4) {
+        typedef float F __attribute__((vector_size(16)));
+        return unsigned(__builtin_ia32_movmskps((F)m));
+    }
+#endif
+#if defined(__SSE2__)
+    if constexpr (sizeof(Mask) == 16 && n == 2) {
+        typedef double D __attribute__((vector_size(16)));
+        return unsigned(__builtin_ia32_movmskpd((D)m));
+    }
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof(Mask) == 32 && n == 8) {
+        typedef float F __attribute__((vector_size(32)));
+        return unsigned(__builtin_ia32_movmskps256((F)m));
+    }
+    if constexpr (sizeof(Mask) == 32 && n == 4) {
+        typedef double D __attribute__((vector_size(32)));
+        return unsigned(__builtin_ia32_movmskpd256((D)m));
+    }
+#endif
+    unsigned bits = 0;
+    for (std::size_t lane = 0; lane < n; ++lane) bits |= m[lane] != 0 ? 1u << lane : 0u;
+    return bits;
+}
+
+/// Lane by lane `a < b ? a : b` into `out`, the second operand wherever either is NaN or
+/// the two are equal (so a -0 and a +0 give b): minps or minpd, which compute exactly
+/// this; the compiler leaves a select of a comparison as three instructions.
+template <class V>
+[[gnu::always_inline]] inline void lane_min(V& out, const V& a, const V& b) noexcept
+{
+    constexpr std::size_t n = lane_count<V>;
+#if defined(__SSE__)
+    if constexpr (sizeof(V) == 16 && n == 4) {
+        typedef float F __attribute__((vector_size(16)));
+        out = (V)__builtin_ia32_minps((F)a, (F)b);
+        return;
+    }
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof(V) == 32 && n == 4) {
+        typedef double D __attribute__((vector_size(32)));
+        out = (V)__builtin_ia32_minpd256((D)a, (D)b);
+        return;
+    }
+#endif
+    out = a < b ? a : b;
+}
+
+/// Lane by lane `a > b ? a : b` into `out`, b wherever either is NaN or they are equal:
+/// maxps or maxpd.
+template <class V>
+[[gnu::always_inline]] inline void lane_max(V& out, const V& a, const V& b) noexcept
+{
+    constexpr std::size_t n = lane_count<V>;
+#if defined(__SSE__)
+    if constexpr (sizeof(V) == 16 && n == 4) {
+        typedef float F __attribute__((vector_size(16)));
+        out = (V)__builtin_ia32_maxps((F)a, (F)b);
+        return;
+    }
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof(V) == 32 && n == 4) {
+        typedef double D __attribute__((vector_size(32)));
+        out = (V)__builtin_ia32_maxpd256((D)a, (D)b);
+        return;
+    }
+#endif
+    out = a > b ? a : b;
+}
+
+} // namespace prism::detail
+#endif
+
 // ---- prism/core/ray.hpp ----
 // Ray: an origin and a direction; points along it are origin + t * direction.
 
@@ -509,7 +630,7 @@ struct Aabb {
     /// before; and, as clip(), it never reports a miss for a ray that touches the box.
     [[nodiscard]] constexpr bool reached_after(const Ray<T>& ray, T t_min) const noexcept
     {
-        return !clip(ray, {t_min, infinity<T>}).empty();
+        return crosses(ray, {t_min, infinity<T>});
     }
 
     /// Whether a shape inside this box may report a crossing within `range`: the test
@@ -524,7 +645,50 @@ struct Aabb {
         const Vec3<T> half = T(0.5) * (hi - lo);
         const T pad = gamma<T>(16) * (max_component(abs(ray.origin - (lo + half))) + max_component(half)) + std::numeric_limits<T>::min();
         const Aabb wide{lo - Vec3<T>(pad), hi + Vec3<T>(pad)};
-        return !wide.clip(ray, range).empty();
+        return wide.crosses(ray, range);
+    }
+
+    /// Whether clip(ray, range) is not empty: the same decision for every ray, NaN and
+    /// infinities included, where only the decision is wanted (a shape's or a scene's
+    /// cull). With vector extensions the three axes are one division and a few lane
+    /// operations, not three divisions and their branches.
+    [[nodiscard, gnu::always_inline]] constexpr bool crosses(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+#if PRISM_VECTOR_EXTENSIONS
+        if (!std::is_constant_evaluated()) {
+            typedef T V __attribute__((vector_size(4 * sizeof(T))));
+            constexpr T largest = std::numeric_limits<T>::max();
+            // (The fourth lane is never read.)
+            const V d{ray.direction.x, ray.direction.y, ray.direction.z, T(1)}, o{ray.origin.x, ray.origin.y, ray.origin.z, T(0)};
+            const V low{lo.x, lo.y, lo.z, T(0)}, high{hi.x, hi.y, hi.z, T(0)};
+            const auto flat = d == T(0);
+            if (detail::lane_bits(flat & ((o < low) | (o > high))) & 7u) return false;
+            // (Constants as whole vectors: one load each.)
+            constexpr T inf = infinity<T>, widen = T(1) + T(2) * gamma<T>(3);
+            constexpr V most{largest, largest, largest, largest}, least{-largest, -largest, -largest, -largest};
+            constexpr V below{-inf, -inf, -inf, -inf}, above{inf, inf, inf, inf}, widening{widen, widen, widen, widen};
+            // clip's arithmetic lane by lane: its clamp as max then min (a NaN goes to
+            // -largest, as there), and its swap as min and max (b < a is false for a NaN on
+            // either side, as a > b is).
+            const V r = T(1) / d;
+            V inv, near, far;
+            detail::lane_max(inv, r, least);
+            detail::lane_min(inv, inv, most);
+            const V a = (low - o) * inv, b = (high - o) * inv;
+            detail::lane_min(near, b, a);
+            detail::lane_max(far, a, b);
+            // A flat axis with the origin in its slab limits nothing: -inf to inf.
+            near = flat ? below : near;
+            far = flat ? above : far * widening;
+            // clip's updates, in turn: comparisons false for a NaN (maxss, minss).
+            T t0 = range.min, t1 = range.max;
+            t0 = near[0] > t0 ? near[0] : t0, t1 = far[0] < t1 ? far[0] : t1;
+            t0 = near[1] > t0 ? near[1] : t0, t1 = far[1] < t1 ? far[1] : t1;
+            t0 = near[2] > t0 ? near[2] : t0, t1 = far[2] < t1 ? far[2] : t1;
+            return t0 <= t1;
+        }
+#endif
+        return !clip(ray, range).empty();
     }
 
     /// The part of `range` in which the ray is inside the box (empty if none).
@@ -639,79 +803,6 @@ template <Scalar T>
 }
 
 } // namespace prism
-
-// ---- prism/core/lanes.hpp ----
-// SIMD lanes by GCC's vector extensions (which clang shares), for the kernels that test
-// several boxes or triangles at once (accel/bvh_node.hpp, geometry/triangle.hpp): a
-// scalar in every lane, one lane of a vector in every lane of another, and a lane mask
-// as bits. Only where PRISM_VECTOR_EXTENSIONS is 1.
-
-
-#include <cstddef>
-#include <utility>
-
-#if PRISM_VECTOR_EXTENSIONS
-namespace prism::detail {
-
-/// The number of lanes of the vector type V.
-template <class V>
-inline constexpr std::size_t lane_count = sizeof(V) / sizeof(V{}[0]);
-
-// (Each writes its vector to `out`: a function that returns a vector wider than the
-// target's registers changes the ABI, and GCC warns of it even where it is inlined.)
-
-/// `x` in every lane of `out`: one broadcast. (`V{} + x` says the same but adds 0 to x
-/// first, which the compiler must keep for a -0.)
-template <class V, class T>
-[[gnu::always_inline]] inline void splat(V& out, T x) noexcept
-{
-    [&out, x]<std::size_t... I>(std::index_sequence<I...>) { out = V{((void)I, x)...}; }(std::make_index_sequence<lane_count<V>>{});
-}
-
-/// Lane `Lane` of `v` in every lane of `out` (a vector of v's element type, as wide or
-/// twice as wide): one shuffle, with no trip through a scalar.
-template <int Lane, class Wide, class V>
-[[gnu::always_inline]] inline void splat_lane(Wide& out, const V& v) noexcept
-{
-    [&out, &v]<std::size_t... I>(std::index_sequence<I...>) { out = __builtin_shufflevector(v, v, ((void)I, Lane)...); }(
-        std::make_index_sequence<lane_count<Wide>>{});
-}
-
-/// A comparison's lanes (all bits set or none) as a bit each, lane 0 the lowest: one
-/// movmskps or movmskpd where the lanes fill an SSE or AVX register.
-template <class Mask>
-[[nodiscard, gnu::always_inline]] inline unsigned lane_bits(const Mask& m) noexcept
-{
-    constexpr std::size_t n = lane_count<Mask>;
-#if defined(__SSE__)
-    if constexpr (sizeof(Mask) == 16 && n == 4) {
-        typedef float F __attribute__((vector_size(16)));
-        return unsigned(__builtin_ia32_movmskps((F)m));
-    }
-#endif
-#if defined(__SSE2__)
-    if constexpr (sizeof(Mask) == 16 && n == 2) {
-        typedef double D __attribute__((vector_size(16)));
-        return unsigned(__builtin_ia32_movmskpd((D)m));
-    }
-#endif
-#if defined(__AVX__)
-    if constexpr (sizeof(Mask) == 32 && n == 8) {
-        typedef float F __attribute__((vector_size(32)));
-        return unsigned(__builtin_ia32_movmskps256((F)m));
-    }
-    if constexpr (sizeof(Mask) == 32 && n == 4) {
-        typedef double D __attribute__((vector_size(32)));
-        return unsigned(__builtin_ia32_movmskpd256((D)m));
-    }
-#endif
-    unsigned bits = 0;
-    for (std::size_t lane = 0; lane < n; ++lane) bits |= m[lane] != 0 ? 1u << lane : 0u;
-    return bits;
-}
-
-} // namespace prism::detail
-#endif
 
 // ---- prism/accel/bvh_node.hpp ----
 // A node of a Bvh (accel/bvh.hpp) and the test a ray makes of it: up to Width children
@@ -10629,7 +10720,18 @@ public:
     {
         PRISM_ASSERT(sums.size() == channels_.size());
         const std::size_t i = index(x, y);
+        const bool wide = wide_.load(std::memory_order_acquire);
         for (std::size_t c = 0; c < sums.size(); ++c) {
+            const std::size_t k = i * channels_.size() + c;
+            // Every sum so far narrow, and this one: a 128-bit add that does not overflow
+            // gives the narrow total the general path below would (its correction 0).
+            if (!wide && sums[c].narrow()) {
+                Int128 total = low_[k];
+                if (total.add(sums[c].low())) {
+                    low_[k] = total;
+                    continue;
+                }
+            }
             ExactSum total = sum(x, y, c);
             if (!total.add(sums[c])) {
                 overflowed_.store(true, std::memory_order_relaxed);
@@ -10643,7 +10745,6 @@ public:
                 overflowed_.store(true, std::memory_order_relaxed);
                 continue;
             }
-            const std::size_t k = i * channels_.size() + c;
             low_[k] = total.low();
             if (wide_.load(std::memory_order_acquire)) high_[k] = correction;
         }
@@ -12764,10 +12865,13 @@ public:
             }
         });
         bounded_objects_ = !cluster_.empty();
-        cull_by_cluster_ = keys_.size() > 1;
         if constexpr (has_emitters) build_emitters();
         if constexpr (may_have_tree) {
             if (keys_.size() >= tree_from) build_tree(boxes);
+        }
+        if (!has_tree_ && keys_.size() > 1) {
+            for (std::size_t k = 0; k < boxes.size(); ++k) side_by_side_[k / side_width].set(int(k % side_width), boxes[k], std::uint32_t(k), 1);
+            side_magnitude_ = std::max(max_component(prism::abs(cluster_.lo)), max_component(prism::abs(cluster_.hi)));
         }
     }
 
@@ -12809,12 +12913,13 @@ public:
                     nearest_of(keys_[p], p, ray, r, nearest);
                     return false;
                 });
-        } else if (bounded_objects_ && (!cull_by_cluster_ || cluster_.may_cross(ray, range))) {
+        } else if (const unsigned meets = bounded_objects_ ? may_meet(ray, range) : 0u; meets != 0) {
             // The scan meets objects in key order: with nothing unbounded found before it,
             // no object can win a tie with one found before it.
             const bool in_key_order = !nearest.found;
+            std::uint32_t lane = 0;
             scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) {
-                test_nearest<I>(object_at<I>(k).shape, {std::uint32_t(I), k}, no_copy, ray, range, nearest, in_key_order);
+                if ((meets >> lane++) & 1u) test_nearest<I>(object_at<I>(k).shape, {std::uint32_t(I), k}, no_copy, ray, range, nearest, in_key_order);
                 return false;
             });
         }
@@ -12986,13 +13091,15 @@ private:
     [[no_unique_address]] std::conditional_t<has_emitters, detail::EmitterTable<T>, detail::NoShapes> emitter_table_;
     [[no_unique_address]] std::conditional_t<has_emitters, std::tuple<detail::SlotEmitters<Slots>...>, detail::NoShapes> slot_emitters_;
     bool bounded_objects_ = false;
-    /// Whether closest_hit tests cluster_ (widened, so that it culls nothing a shape could
-    /// report) before the bounded objects: where there are two or more. One object's box
-    /// is the cluster, and a shape tests its own box or is cheaper than the test (a mesh's
-    /// Bvh starts with its root's children; a sphere is one quadratic). (A shadow ray's
-    /// test is unwidened, and culls the spurious crossings rounding may give far off: it
-    /// stays.)
-    bool cull_by_cluster_ = false;
+    /// The lanes of the nodes side_by_side_ fills: one per node of the tree.
+    static constexpr int side_width = BvhNode<T>::width;
+    /// A scene without a tree and with two or more bounded objects keeps their boxes side
+    /// by side here, in key order (box k in lane k % side_width of node k / side_width),
+    /// and a ray tests them all at once, widened as a tree's nodes are (may_meet). One
+    /// object's box is the cluster, and a shape tests its own box or is cheaper than the
+    /// test (a mesh's Bvh starts with its root's children; a sphere is one quadratic).
+    std::array<BvhNode<T>, (tree_from - 2) / side_width + 1> side_by_side_{};
+    T side_magnitude_ = T(0); ///< the largest coordinate magnitude of those boxes (SlabRay's `magnitude`)
     bool has_tree_ = false;
     Bvh<T> tree_; ///< over the bounded objects (when there are at least tree_from)
     /// The object behind each of the tree's primitives, in its leaf order; without a tree
@@ -13163,6 +13270,28 @@ private:
         r.max = t;
     }
 
+    /// A bit per bounded object of a scene without a tree (bit k for the k-th in key
+    /// order) that a shape inside its box may report crossing within `range`: one test of
+    /// every box at once, each widened per ray as a tree's (Bvh), so that it culls no
+    /// object Aabb::may_cross keeps. Every object's bit for one bounded object, and for a
+    /// ray with a NaN or an infinity in it (which a pad made of it cannot bound).
+    [[nodiscard]] unsigned may_meet(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        static_assert(tree_from <= 32);
+        const std::size_t n = keys_.size();
+        const unsigned all = (1u << n) - 1u;
+        if (n < 2 || !is_finite(ray.origin) || !is_finite(ray.direction)) return all;
+#if PRISM_VECTOR_EXTENSIONS
+        const detail::SlabLanes<T, side_width> slab(ray, side_magnitude_);
+#else
+        const detail::SlabRay<T> slab(ray, side_magnitude_);
+#endif
+        std::array<T, side_width> near;
+        unsigned meets = slab.may_cross(side_by_side_[0], range, near);
+        for (std::size_t node = 1; node * side_width < n; ++node) meets |= slab.may_cross(side_by_side_[node], range, near) << (node * side_width);
+        return meets & all;
+    }
+
     /// visit(Index<I>{}, k) for every bounded object of a scene without a tree, in key
     /// order, until one returns true (whether one did): for a few slots, the slots in
     /// turn, each call inlined; for more, through the slot table.
@@ -13262,11 +13391,16 @@ private:
                 Interval<T> r = range;
                 if (tree_.any_in_leaf_order(ray, r, [&](std::uint32_t p, Interval<T>&) { return blocks(keys_[p], p); })) return false;
             }
-        } else if (bounded_objects_ && (cluster_.contains(ray.origin) || !cluster_.clip(ray, range).empty())) {
+        } else if (bounded_objects_ && (cluster_.contains(ray.origin) || cluster_.crosses(ray, range))) {
             // (Unwidened: a shadow ray needs no spurious crossing a far-off shape might
             // report; culling it can only let light through where rounding alone would
-            // block it.)
-            if (scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) { return blocks_in(Index<I>{}, k, no_copy); })) return false;
+            // block it. The objects' own boxes are then widened, as closest_hit's: they
+            // cull only what could not block.)
+            if (const unsigned meets = may_meet(ray, range); meets != 0) {
+                std::uint32_t lane = 0;
+                if (scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) { return ((meets >> lane++) & 1u) && blocks_in(Index<I>{}, k, no_copy); }))
+                    return false;
+            }
         }
         if constexpr (any_pass<Glass>) {
             // More met than the list holds: every transmissive object, in key order (one

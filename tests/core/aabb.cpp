@@ -1,7 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include <prism/core/aabb.hpp>
 
+#include <prism/core/random.hpp>
+
+#include "effort.hpp"
+
 #include <doctest/doctest.h>
+
+#include <cmath>
+#include <iterator>
+#include <limits>
 
 using prism::Vec3;
 
@@ -71,4 +79,62 @@ TEST_CASE("merged boxes and the sphere through a box's corners")
     CHECK(s.radius == doctest::Approx(1.5)); // half the diagonal sqrt(1 + 4 + 4)
     CHECK(a.bounded());
     CHECK_FALSE(prism::Aabb<double>::universe().bounded());
+}
+
+namespace {
+
+/// A hostile coordinate: mostly ordinary, sometimes 0, -0, a denormal, huge, infinite,
+/// NaN, or (for an origin) one of the box's own faces.
+template <class T>
+T hostile_coordinate(prism::Random& rng, T face)
+{
+    const T specials[] = {T(0), -T(0), std::numeric_limits<T>::denorm_min(), -std::numeric_limits<T>::denorm_min(), std::numeric_limits<T>::max(),
+                          prism::infinity<T>, -prism::infinity<T>, std::numeric_limits<T>::quiet_NaN(), face, T(1e-30), T(-1e30)};
+    const double u = rng.uniform<double>();
+    if (u < 0.25) return specials[std::size_t(rng.uniform<double>() * double(std::size(specials))) % std::size(specials)];
+    return T(8 * rng.uniform<double>() - 4);
+}
+
+template <class T>
+void crosses_agrees_with_clip(long rays)
+{
+    prism::Random rng(0xAABB5EEDu, 1);
+    long differ = 0, met = 0;
+    for (long i = 0; i < rays; ++i) {
+        Vec3<T> lo, hi;
+        for (int a = 0; a < 3; ++a) {
+            const T x = T(4 * rng.uniform<double>() - 2), w = rng.uniform<double>() < 0.1 ? T(0) : T(2 * rng.uniform<double>());
+            lo[a] = rng.uniform<double>() < 0.05 ? -prism::infinity<T> : x;
+            hi[a] = rng.uniform<double>() < 0.05 ? prism::infinity<T> : x + w;
+        }
+        const prism::Aabb<T> box = rng.uniform<double>() < 0.02 ? prism::Aabb<T>{} : prism::Aabb<T>{lo, hi};
+        Vec3<T> o, d;
+        for (int a = 0; a < 3; ++a) {
+            o[a] = hostile_coordinate<T>(rng, rng.uniform<double>() < 0.5 ? lo[a] : hi[a]);
+            d[a] = hostile_coordinate<T>(rng, T(1));
+        }
+        if (rng.uniform<double>() < 0.5) // aimed at a point of the box, to meet it often
+            for (int a = 0; a < 3; ++a)
+                if (std::isfinite(lo[a]) && std::isfinite(hi[a]) && std::isfinite(o[a])) d[a] = lo[a] + T(rng.uniform<double>()) * (hi[a] - lo[a]) - o[a];
+        const T t0 = rng.uniform<double>() < 0.1 ? hostile_coordinate<T>(rng, T(0)) : T(0);
+        const T t1 = rng.uniform<double>() < 0.3 ? hostile_coordinate<T>(rng, T(1)) : prism::infinity<T>;
+        const prism::Ray<T> ray{o, d};
+        const bool slow = !box.clip(ray, {t0, t1}).empty(), fast = box.crosses(ray, {t0, t1});
+        met += slow;
+        if (slow != fast && ++differ <= 3)
+            MESSAGE("box ", lo.x, " ", lo.y, " ", lo.z, " .. ", hi.x, " ", hi.y, " ", hi.z, " ray ", o.x, " ", o.y, " ", o.z, " -> ", d.x, " ", d.y, " ",
+                    d.z, " range ", t0, " ", t1, ": clip ", slow, ", crosses ", fast);
+    }
+    CHECK(differ == 0);
+    CHECK(met > rays / 20); // the rays are not all misses
+    CHECK(met < rays - rays / 20);
+}
+
+} // namespace
+
+TEST_CASE_TEMPLATE("crosses decides as clip does, over a million hostile rays", T, float, double)
+{
+    // The fast test is the slow one's twin: every ray, NaN, infinite, denormal, on a face
+    // or parallel to it, against boxes flat, unbounded on a side, or empty.
+    crosses_agrees_with_clip<T>(test::samples(1'000'000));
 }

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 
 #if PRISM_VECTOR_EXTENSIONS
@@ -55,11 +56,25 @@ void check_lanes()
         for (int lane = 0; lane < N; ++lane) b[lane] = (bits >> lane) & 1u ? T(1) : T(-1);
         CHECK(prism::detail::lane_bits(a < b) == bits);
     }
+    // lane_min and lane_max against the scalar rule a < b ? a : b (a > b ? a : b), bit for
+    // bit, over every pair of the values (NaN and -0 among them) in every lane.
+    constexpr std::size_t count = std::size(values);
+    for (std::size_t i = 0; i < count; ++i)
+        for (std::size_t j = 0; j < count; ++j) {
+            V a, b, low, high;
+            for (int lane = 0; lane < N; ++lane) a[lane] = values[(i + std::size_t(lane)) % count], b[lane] = values[(j + std::size_t(lane)) % count];
+            prism::detail::lane_min(low, a, b);
+            prism::detail::lane_max(high, a, b);
+            for (int lane = 0; lane < N; ++lane) {
+                CHECK(lanes_same_bits(low[lane], a[lane] < b[lane] ? a[lane] : b[lane]));
+                CHECK(lanes_same_bits(high[lane], a[lane] > b[lane] ? a[lane] : b[lane]));
+            }
+        }
 }
 
 } // namespace
 
-TEST_CASE("lanes: splat and splat_lane copy bits (a -0 and a NaN too), lane_bits is the comparison's lanes as bits")
+TEST_CASE("lanes: splat and splat_lane copy bits (a -0 and a NaN too), lane_bits is the comparison's lanes as bits, lane_min and lane_max are the scalar rule")
 {
     check_lanes<float, 4>();
     check_lanes<float, 8>();

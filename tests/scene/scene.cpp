@@ -225,6 +225,46 @@ TEST_CASE("an array's Bvh finds what a scan of every object finds: the same obje
     CHECK(scanned_hit(scene, ray, {0, infinity<float>}).index == 17);
 }
 
+TEST_CASE("a scene of two to seven bounded objects, their boxes tested side by side, finds what a scan of every object finds")
+{
+    // Below tree_from the scene tests every bounded object's box at once, widened per ray
+    // as a tree's; it must cull nothing a shape could report, far off and grazing too.
+    Random rng(57u, 8u);
+    int mismatches = 0, shadow_mismatches = 0, hits = 0, rays = 0;
+    for (int n = 2; n <= 7; ++n)
+        for (const float offset : {0.0f, 3e3f}) { // a cluster at the origin, and one far from it
+            ObjectArray<Sphere<float>, Diffuse<float>> balls;
+            for (int i = 0; i < n; ++i) {
+                const Vec3<float> c = Vec3<float>(offset) + (Vec3<float>{rng.uniform<float>(), rng.uniform<float>(), rng.uniform<float>()} - Vec3<float>(0.5f)) * 6.0f;
+                balls.items.push_back({Sphere<float>(c, 0.2f + 0.8f * rng.uniform<float>()), Diffuse<float>{}});
+            }
+            ObjectArray<Plane<float>, Diffuse<float>> planes{{{Plane<float>({0, 1, 0}, offset - 5), Diffuse<float>{}}}};
+            const Scene scene{Lights{PointLight<float>{.position = {0, 30, 0}}}, std::move(balls), std::move(planes)};
+            REQUIRE_FALSE(scene.has_tree());
+            for (int i = 0; i < 4000; ++i, ++rays) {
+                // Aimed at a sphere's rim (grazing), or anywhere in the cluster.
+                const auto& ball = get<0>(scene.slots).items[std::size_t(i) % std::size_t(n)].shape;
+                const Vec3<float> d = uniform_sphere<float>(rng);
+                const Vec3<float> side = normalize(cross(d, std::abs(d.x) < 0.9f ? Vec3<float>{1, 0, 0} : Vec3<float>{0, 1, 0}));
+                const Vec3<float> target = i % 2 ? ball.center() + side * (ball.radius() * (1.0f + 1e-4f * (rng.uniform<float>() - 0.5f)))
+                                                 : Vec3<float>(offset) + (Vec3<float>{rng.uniform<float>(), rng.uniform<float>(), rng.uniform<float>()} - Vec3<float>(0.5f)) * 6.0f;
+                const float distance = i % 3 == 0 ? 1e4f : (i % 3 == 1 ? 20.0f : 0.0f);
+                const Ray<float> ray{target - d * distance, d};
+                const Interval<float> range{0, infinity<float>};
+                const auto hit = scene.closest_hit(ray, range);
+                const auto scan = scanned_hit(scene, ray, range);
+                if (hit) ++hits;
+                mismatches += hit ? !(hit->crossing.t == scan.t && hit->slot == scan.slot && hit->index == scan.index) : scan.t < infinity<float>;
+                const float t_max = distance + 10.0f * rng.uniform<float>();
+                const bool open = max_component(scene.transmittance(ray, t_max)) > 0.0f;
+                shadow_mismatches += open != !(scanned_hit(scene, ray, {0, t_max}).t < infinity<float>);
+            }
+        }
+    CHECK(mismatches == 0);
+    CHECK(shadow_mismatches == 0);
+    CHECK(hits > rays / 2);
+}
+
 TEST_CASE("slots are visited nearest first, and find what a scan of the slots in turn finds, ties across slots included")
 {
     // Two clouds in two treed slots, the far one (for rays along +z) first, and twins of

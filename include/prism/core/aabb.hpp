@@ -3,6 +3,7 @@
 #pragma once
 
 #include <prism/core/interval.hpp>
+#include <prism/core/lanes.hpp>
 #include <prism/core/offset.hpp>
 #include <prism/core/ray.hpp>
 
@@ -67,7 +68,7 @@ struct Aabb {
     /// before; and, as clip(), it never reports a miss for a ray that touches the box.
     [[nodiscard]] constexpr bool reached_after(const Ray<T>& ray, T t_min) const noexcept
     {
-        return !clip(ray, {t_min, infinity<T>}).empty();
+        return crosses(ray, {t_min, infinity<T>});
     }
 
     /// Whether a shape inside this box may report a crossing within `range`: the test
@@ -82,7 +83,50 @@ struct Aabb {
         const Vec3<T> half = T(0.5) * (hi - lo);
         const T pad = gamma<T>(16) * (max_component(abs(ray.origin - (lo + half))) + max_component(half)) + std::numeric_limits<T>::min();
         const Aabb wide{lo - Vec3<T>(pad), hi + Vec3<T>(pad)};
-        return !wide.clip(ray, range).empty();
+        return wide.crosses(ray, range);
+    }
+
+    /// Whether clip(ray, range) is not empty: the same decision for every ray, NaN and
+    /// infinities included, where only the decision is wanted (a shape's or a scene's
+    /// cull). With vector extensions the three axes are one division and a few lane
+    /// operations, not three divisions and their branches.
+    [[nodiscard, gnu::always_inline]] constexpr bool crosses(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+#if PRISM_VECTOR_EXTENSIONS
+        if (!std::is_constant_evaluated()) {
+            typedef T V __attribute__((vector_size(4 * sizeof(T))));
+            constexpr T largest = std::numeric_limits<T>::max();
+            // (The fourth lane is never read.)
+            const V d{ray.direction.x, ray.direction.y, ray.direction.z, T(1)}, o{ray.origin.x, ray.origin.y, ray.origin.z, T(0)};
+            const V low{lo.x, lo.y, lo.z, T(0)}, high{hi.x, hi.y, hi.z, T(0)};
+            const auto flat = d == T(0);
+            if (detail::lane_bits(flat & ((o < low) | (o > high))) & 7u) return false;
+            // (Constants as whole vectors: one load each.)
+            constexpr T inf = infinity<T>, widen = T(1) + T(2) * gamma<T>(3);
+            constexpr V most{largest, largest, largest, largest}, least{-largest, -largest, -largest, -largest};
+            constexpr V below{-inf, -inf, -inf, -inf}, above{inf, inf, inf, inf}, widening{widen, widen, widen, widen};
+            // clip's arithmetic lane by lane: its clamp as max then min (a NaN goes to
+            // -largest, as there), and its swap as min and max (b < a is false for a NaN on
+            // either side, as a > b is).
+            const V r = T(1) / d;
+            V inv, near, far;
+            detail::lane_max(inv, r, least);
+            detail::lane_min(inv, inv, most);
+            const V a = (low - o) * inv, b = (high - o) * inv;
+            detail::lane_min(near, b, a);
+            detail::lane_max(far, a, b);
+            // A flat axis with the origin in its slab limits nothing: -inf to inf.
+            near = flat ? below : near;
+            far = flat ? above : far * widening;
+            // clip's updates, in turn: comparisons false for a NaN (maxss, minss).
+            T t0 = range.min, t1 = range.max;
+            t0 = near[0] > t0 ? near[0] : t0, t1 = far[0] < t1 ? far[0] : t1;
+            t0 = near[1] > t0 ? near[1] : t0, t1 = far[1] < t1 ? far[1] : t1;
+            t0 = near[2] > t0 ? near[2] : t0, t1 = far[2] < t1 ? far[2] : t1;
+            return t0 <= t1;
+        }
+#endif
+        return !clip(ray, range).empty();
     }
 
     /// The part of `range` in which the ray is inside the box (empty if none).

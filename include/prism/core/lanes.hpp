@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // SIMD lanes by GCC's vector extensions (which clang shares), for the kernels that test
 // several boxes or triangles at once (accel/bvh_node.hpp, geometry/triangle.hpp): a
-// scalar in every lane, one lane of a vector in every lane of another, and a lane mask
-// as bits. Only where PRISM_VECTOR_EXTENSIONS is 1.
+// scalar in every lane, one lane of a vector in every lane of another, a lane mask as
+// bits, and the lane by lane minimum and maximum of SSE's own rule for NaN. Only where
+// PRISM_VECTOR_EXTENSIONS is 1.
 #pragma once
 
 #include <prism/core/config.hpp>
@@ -68,6 +69,53 @@ template <class Mask>
     unsigned bits = 0;
     for (std::size_t lane = 0; lane < n; ++lane) bits |= m[lane] != 0 ? 1u << lane : 0u;
     return bits;
+}
+
+/// Lane by lane `a < b ? a : b` into `out`, the second operand wherever either is NaN or
+/// the two are equal (so a -0 and a +0 give b): minps or minpd, which compute exactly
+/// this; the compiler leaves a select of a comparison as three instructions.
+template <class V>
+[[gnu::always_inline]] inline void lane_min(V& out, const V& a, const V& b) noexcept
+{
+    constexpr std::size_t n = lane_count<V>;
+#if defined(__SSE__)
+    if constexpr (sizeof(V) == 16 && n == 4) {
+        typedef float F __attribute__((vector_size(16)));
+        out = (V)__builtin_ia32_minps((F)a, (F)b);
+        return;
+    }
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof(V) == 32 && n == 4) {
+        typedef double D __attribute__((vector_size(32)));
+        out = (V)__builtin_ia32_minpd256((D)a, (D)b);
+        return;
+    }
+#endif
+    out = a < b ? a : b;
+}
+
+/// Lane by lane `a > b ? a : b` into `out`, b wherever either is NaN or they are equal:
+/// maxps or maxpd.
+template <class V>
+[[gnu::always_inline]] inline void lane_max(V& out, const V& a, const V& b) noexcept
+{
+    constexpr std::size_t n = lane_count<V>;
+#if defined(__SSE__)
+    if constexpr (sizeof(V) == 16 && n == 4) {
+        typedef float F __attribute__((vector_size(16)));
+        out = (V)__builtin_ia32_maxps((F)a, (F)b);
+        return;
+    }
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof(V) == 32 && n == 4) {
+        typedef double D __attribute__((vector_size(32)));
+        out = (V)__builtin_ia32_maxpd256((D)a, (D)b);
+        return;
+    }
+#endif
+    out = a > b ? a : b;
 }
 
 } // namespace prism::detail

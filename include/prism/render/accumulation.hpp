@@ -331,7 +331,18 @@ public:
     {
         PRISM_ASSERT(sums.size() == channels_.size());
         const std::size_t i = index(x, y);
+        const bool wide = wide_.load(std::memory_order_acquire);
         for (std::size_t c = 0; c < sums.size(); ++c) {
+            const std::size_t k = i * channels_.size() + c;
+            // Every sum so far narrow, and this one: a 128-bit add that does not overflow
+            // gives the narrow total the general path below would (its correction 0).
+            if (!wide && sums[c].narrow()) {
+                Int128 total = low_[k];
+                if (total.add(sums[c].low())) {
+                    low_[k] = total;
+                    continue;
+                }
+            }
             ExactSum total = sum(x, y, c);
             if (!total.add(sums[c])) {
                 overflowed_.store(true, std::memory_order_relaxed);
@@ -345,7 +356,6 @@ public:
                 overflowed_.store(true, std::memory_order_relaxed);
                 continue;
             }
-            const std::size_t k = i * channels_.size() + c;
             low_[k] = total.low();
             if (wide_.load(std::memory_order_acquire)) high_[k] = correction;
         }

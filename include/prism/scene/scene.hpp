@@ -141,10 +141,13 @@ public:
             }
         });
         bounded_objects_ = !cluster_.empty();
-        cull_by_cluster_ = keys_.size() > 1;
         if constexpr (has_emitters) build_emitters();
         if constexpr (may_have_tree) {
             if (keys_.size() >= tree_from) build_tree(boxes);
+        }
+        if (!has_tree_ && keys_.size() > 1) {
+            for (std::size_t k = 0; k < boxes.size(); ++k) side_by_side_[k / side_width].set(int(k % side_width), boxes[k], std::uint32_t(k), 1);
+            side_magnitude_ = std::max(max_component(prism::abs(cluster_.lo)), max_component(prism::abs(cluster_.hi)));
         }
     }
 
@@ -186,12 +189,13 @@ public:
                     nearest_of(keys_[p], p, ray, r, nearest);
                     return false;
                 });
-        } else if (bounded_objects_ && (!cull_by_cluster_ || cluster_.may_cross(ray, range))) {
+        } else if (const unsigned meets = bounded_objects_ ? may_meet(ray, range) : 0u; meets != 0) {
             // The scan meets objects in key order: with nothing unbounded found before it,
             // no object can win a tie with one found before it.
             const bool in_key_order = !nearest.found;
+            std::uint32_t lane = 0;
             scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) {
-                test_nearest<I>(object_at<I>(k).shape, {std::uint32_t(I), k}, no_copy, ray, range, nearest, in_key_order);
+                if ((meets >> lane++) & 1u) test_nearest<I>(object_at<I>(k).shape, {std::uint32_t(I), k}, no_copy, ray, range, nearest, in_key_order);
                 return false;
             });
         }
@@ -363,13 +367,15 @@ private:
     [[no_unique_address]] std::conditional_t<has_emitters, detail::EmitterTable<T>, detail::NoShapes> emitter_table_;
     [[no_unique_address]] std::conditional_t<has_emitters, std::tuple<detail::SlotEmitters<Slots>...>, detail::NoShapes> slot_emitters_;
     bool bounded_objects_ = false;
-    /// Whether closest_hit tests cluster_ (widened, so that it culls nothing a shape could
-    /// report) before the bounded objects: where there are two or more. One object's box
-    /// is the cluster, and a shape tests its own box or is cheaper than the test (a mesh's
-    /// Bvh starts with its root's children; a sphere is one quadratic). (A shadow ray's
-    /// test is unwidened, and culls the spurious crossings rounding may give far off: it
-    /// stays.)
-    bool cull_by_cluster_ = false;
+    /// The lanes of the nodes side_by_side_ fills: one per node of the tree.
+    static constexpr int side_width = BvhNode<T>::width;
+    /// A scene without a tree and with two or more bounded objects keeps their boxes side
+    /// by side here, in key order (box k in lane k % side_width of node k / side_width),
+    /// and a ray tests them all at once, widened as a tree's nodes are (may_meet). One
+    /// object's box is the cluster, and a shape tests its own box or is cheaper than the
+    /// test (a mesh's Bvh starts with its root's children; a sphere is one quadratic).
+    std::array<BvhNode<T>, (tree_from - 2) / side_width + 1> side_by_side_{};
+    T side_magnitude_ = T(0); ///< the largest coordinate magnitude of those boxes (SlabRay's `magnitude`)
     bool has_tree_ = false;
     Bvh<T> tree_; ///< over the bounded objects (when there are at least tree_from)
     /// The object behind each of the tree's primitives, in its leaf order; without a tree
@@ -540,6 +546,28 @@ private:
         r.max = t;
     }
 
+    /// A bit per bounded object of a scene without a tree (bit k for the k-th in key
+    /// order) that a shape inside its box may report crossing within `range`: one test of
+    /// every box at once, each widened per ray as a tree's (Bvh), so that it culls no
+    /// object Aabb::may_cross keeps. Every object's bit for one bounded object, and for a
+    /// ray with a NaN or an infinity in it (which a pad made of it cannot bound).
+    [[nodiscard]] unsigned may_meet(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        static_assert(tree_from <= 32);
+        const std::size_t n = keys_.size();
+        const unsigned all = (1u << n) - 1u;
+        if (n < 2 || !is_finite(ray.origin) || !is_finite(ray.direction)) return all;
+#if PRISM_VECTOR_EXTENSIONS
+        const detail::SlabLanes<T, side_width> slab(ray, side_magnitude_);
+#else
+        const detail::SlabRay<T> slab(ray, side_magnitude_);
+#endif
+        std::array<T, side_width> near;
+        unsigned meets = slab.may_cross(side_by_side_[0], range, near);
+        for (std::size_t node = 1; node * side_width < n; ++node) meets |= slab.may_cross(side_by_side_[node], range, near) << (node * side_width);
+        return meets & all;
+    }
+
     /// visit(Index<I>{}, k) for every bounded object of a scene without a tree, in key
     /// order, until one returns true (whether one did): for a few slots, the slots in
     /// turn, each call inlined; for more, through the slot table.
@@ -639,11 +667,16 @@ private:
                 Interval<T> r = range;
                 if (tree_.any_in_leaf_order(ray, r, [&](std::uint32_t p, Interval<T>&) { return blocks(keys_[p], p); })) return false;
             }
-        } else if (bounded_objects_ && (cluster_.contains(ray.origin) || !cluster_.clip(ray, range).empty())) {
+        } else if (bounded_objects_ && (cluster_.contains(ray.origin) || cluster_.crosses(ray, range))) {
             // (Unwidened: a shadow ray needs no spurious crossing a far-off shape might
             // report; culling it can only let light through where rounding alone would
-            // block it.)
-            if (scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) { return blocks_in(Index<I>{}, k, no_copy); })) return false;
+            // block it. The objects' own boxes are then widened, as closest_hit's: they
+            // cull only what could not block.)
+            if (const unsigned meets = may_meet(ray, range); meets != 0) {
+                std::uint32_t lane = 0;
+                if (scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) { return ((meets >> lane++) & 1u) && blocks_in(Index<I>{}, k, no_copy); }))
+                    return false;
+            }
         }
         if constexpr (any_pass<Glass>) {
             // More met than the list holds: every transmissive object, in key order (one
