@@ -228,10 +228,12 @@ template <Scalar T>
     return m > v.z ? m : v.z;
 }
 
+/// Whether x is finite: |x| at most the largest finite value (false for an infinity,
+/// and for a NaN, which compares false). One mask and one comparison.
 template <Scalar T>
 [[nodiscard]] constexpr bool is_finite(T x) noexcept
 {
-    return x == x && x != infinity<T> && x != -infinity<T>;
+    return prism::abs(x) <= std::numeric_limits<T>::max();
 }
 
 /// Whether every component is finite. (x - x is 0 for a finite x and NaN for an infinity
@@ -12744,6 +12746,7 @@ template <class SceneT, Scalar T>
 
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -12917,9 +12920,8 @@ public:
             // The scan meets objects in key order: with nothing unbounded found before it,
             // no object can win a tie with one found before it.
             const bool in_key_order = !nearest.found;
-            std::uint32_t lane = 0;
-            scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) {
-                if ((meets >> lane++) & 1u) test_nearest<I>(object_at<I>(k).shape, {std::uint32_t(I), k}, no_copy, ray, range, nearest, in_key_order);
+            visit_bounded(meets, [&]<std::size_t I>(Index<I>, std::uint32_t k) {
+                test_nearest<I>(object_at<I>(k).shape, {std::uint32_t(I), k}, no_copy, ray, range, nearest, in_key_order);
                 return false;
             });
         }
@@ -13280,7 +13282,7 @@ private:
         static_assert(tree_from <= 32);
         const std::size_t n = keys_.size();
         const unsigned all = (1u << n) - 1u;
-        if (n < 2 || !is_finite(ray.origin) || !is_finite(ray.direction)) return all;
+        if (n < 2 || !is_finite(ray.origin + ray.direction * T(0))) return all; // (a NaN or an infinity anywhere makes a NaN)
 #if PRISM_VECTOR_EXTENSIONS
         const detail::SlabLanes<T, side_width> slab(ray, side_magnitude_);
 #else
@@ -13292,26 +13294,18 @@ private:
         return meets & all;
     }
 
-    /// visit(Index<I>{}, k) for every bounded object of a scene without a tree, in key
-    /// order, until one returns true (whether one did): for a few slots, the slots in
-    /// turn, each call inlined; for more, through the slot table.
+    /// visit(Index<I>{}, k) for each bounded object of a scene without a tree whose bit is
+    /// set in `meets` (may_meet's: bit b for keys_[b]), in key order, until one returns
+    /// true (whether one did). Only those objects are visited, each through the slot
+    /// chain (core/dispatch.hpp: for a few slots, inlined calls).
     template <class Visit>
-    bool scan_bounded(Visit&& visit) const noexcept
+    bool visit_bounded(unsigned meets, Visit&& visit) const noexcept
     {
-        if constexpr (slot_count <= dispatch_chain_up_to) {
-            return [&]<std::size_t... I>(std::index_sequence<I...>) {
-                return ([&] {
-                    const auto list = objects_of(get<I>(slots));
-                    for (std::uint32_t k = 0; k < list.size(); ++k)
-                        if (list[k].bounded && visit(Index<I>{}, k)) return true;
-                    return false;
-                }() || ...);
-            }(std::index_sequence_for<Slots...>{});
-        } else {
-            for (const detail::ObjectKey& key : keys_)
-                if (dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) { return visit(Index<I>{}, key.index); })) return true;
-            return false;
+        for (; meets != 0; meets &= meets - 1) {
+            const detail::ObjectKey key = keys_[std::size_t(std::countr_zero(meets))];
+            if (dispatch<slot_count>(key.slot, [&]<std::size_t I>(Index<I>) { return visit(Index<I>{}, key.index); })) return true;
         }
+        return false;
     }
 
     /// The nearest object's first crossing with its surface: the same computation as
@@ -13396,11 +13390,7 @@ private:
             // report; culling it can only let light through where rounding alone would
             // block it. The objects' own boxes are then widened, as closest_hit's: they
             // cull only what could not block.)
-            if (const unsigned meets = may_meet(ray, range); meets != 0) {
-                std::uint32_t lane = 0;
-                if (scan_bounded([&]<std::size_t I>(Index<I>, std::uint32_t k) { return ((meets >> lane++) & 1u) && blocks_in(Index<I>{}, k, no_copy); }))
-                    return false;
-            }
+            if (visit_bounded(may_meet(ray, range), [&]<std::size_t I>(Index<I>, std::uint32_t k) { return blocks_in(Index<I>{}, k, no_copy); })) return false;
         }
         if constexpr (any_pass<Glass>) {
             // More met than the list holds: every transmissive object, in key order (one

@@ -58,7 +58,7 @@ TEST_CASE_TEMPLATE("vector helpers match GLM's own", T, float, double)
     CHECK(prism::clamp(std::numeric_limits<T>::quiet_NaN(), T(0), T(1)) == T(0));
 }
 
-TEST_CASE_TEMPLATE("is_finite of a vector (branch-free) agrees with its components' is_finite over every mix of hostile values", T, float, double)
+TEST_CASE_TEMPLATE("is_finite of a scalar and of a vector (both branch-free) agree with std::isfinite over every mix of hostile values", T, float, double)
 {
     using L = std::numeric_limits<T>;
     const T values[] = {T(0), -T(0), T(1), -T(2.5), L::max(), -L::max(), L::min(), L::denorm_min(), L::infinity(), -L::infinity(), L::quiet_NaN(), -L::quiet_NaN()};
@@ -68,6 +68,7 @@ TEST_CASE_TEMPLATE("is_finite of a vector (branch-free) agrees with its componen
             for (const T z : values) {
                 const bool expected = std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
                 CHECK(prism::is_finite(Vec3<T>{x, y, z}) == expected);
+                CHECK((prism::is_finite(x) && prism::is_finite(y) && prism::is_finite(z)) == expected); // the scalar one (|x| <= max) too
                 finite += expected;
             }
     CHECK(finite == 8 * 8 * 8);

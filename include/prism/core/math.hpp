@@ -129,10 +129,12 @@ template <Scalar T>
     return m > v.z ? m : v.z;
 }
 
+/// Whether x is finite: |x| at most the largest finite value (false for an infinity,
+/// and for a NaN, which compares false). One mask and one comparison.
 template <Scalar T>
 [[nodiscard]] constexpr bool is_finite(T x) noexcept
 {
-    return x == x && x != infinity<T> && x != -infinity<T>;
+    return prism::abs(x) <= std::numeric_limits<T>::max();
 }
 
 /// Whether every component is finite. (x - x is 0 for a finite x and NaN for an infinity
