@@ -35,9 +35,10 @@ template <class M>
 
 /// An object a ray is inside of: where it is in the scene, and its priority.
 struct Inside {
-    std::uint32_t slot = 0; ///< the object's scene slot
-    std::uint32_t index = 0; ///< the object within its slot
-    int priority = 0; ///< its material's priority
+    std::uint32_t slot;  ///< the object's scene slot
+    std::uint32_t index; ///< the object within its slot
+    int priority;        ///< its material's priority
+    // (No initializers: MediumStack's array is left uninitialized.)
 
     /// Whether both name the same object.
     [[nodiscard]] constexpr bool same_object(const Inside& other) const noexcept { return slot == other.slot && index == other.index; }
@@ -49,6 +50,9 @@ class MediumStack {
 public:
     /// The deepest nesting kept.
     static constexpr std::size_t capacity = 8;
+
+    /// In no object. (Written out: `MediumStack{}` would otherwise clear the whole array.)
+    constexpr MediumStack() noexcept {}
 
     /// Whether the ray is inside no transmissive object (in the air).
     [[nodiscard]] constexpr bool empty() const noexcept { return count_ == 0; }
@@ -100,7 +104,9 @@ private:
         --count_;
     }
 
-    std::array<Inside, capacity> items_{};
+    // (items_ left uninitialized, only the first count_ read: every camera ray starts with
+    // an empty stack, and clearing its 96 bytes was a rep stos a ray.)
+    std::array<Inside, capacity> items_;
     std::size_t count_ = 0;
 };
 

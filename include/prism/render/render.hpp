@@ -286,7 +286,7 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
                 const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
-                std::array<ExactSum, N> sum{};
+                std::array<ExactSum, N> sum; // (each element zero by its own initializers: `sum{}` cleared the array with a rep stos a pixel, slower here than the stores)
                 std::size_t rejected = 0;
                 PixelSeeds seeds(pixel_key(config, std::uint32_t(x), std::uint32_t(y))); // the scrambles' seeds, hashed once for the pixel's samples
                 for (std::uint64_t s = samples.first; s < samples.last; ++s) {
