@@ -3872,14 +3872,37 @@ private:
     }
 
     // The last row of an affine matrix is (0 0 0 1): skip it.
+    // (Each component m[0][i] v.x + m[1][i] v.y + m[2][i] v.z, summed in that order, then
+    // the translation added: with vector extensions the three at once, a column in each
+    // vector, the same operations lane by lane and so the same bits.)
     [[nodiscard]] static Vec3<T> affine_vector(const Mat4<T>& m, const Vec3<T>& v) noexcept
     {
+#if PRISM_VECTOR_EXTENSIONS
+        typedef T Column __attribute__((vector_size(4 * sizeof(T))));
+        static_assert(sizeof(m[0]) == sizeof(Column));
+        Column c0, c1, c2, x, y, z;
+        __builtin_memcpy(&c0, &m[0], sizeof(Column)), __builtin_memcpy(&c1, &m[1], sizeof(Column)), __builtin_memcpy(&c2, &m[2], sizeof(Column));
+        detail::splat(x, v.x), detail::splat(y, v.y), detail::splat(z, v.z);
+        const Column r = c0 * x + c1 * y + c2 * z;
+        return {r[0], r[1], r[2]};
+#else
         return {m[0][0] * v.x + m[1][0] * v.y + m[2][0] * v.z, m[0][1] * v.x + m[1][1] * v.y + m[2][1] * v.z,
                 m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z};
+#endif
     }
     [[nodiscard]] static Vec3<T> affine_point(const Mat4<T>& m, const Vec3<T>& p) noexcept
     {
+#if PRISM_VECTOR_EXTENSIONS
+        typedef T Column __attribute__((vector_size(4 * sizeof(T))));
+        Column c0, c1, c2, c3, x, y, z;
+        __builtin_memcpy(&c0, &m[0], sizeof(Column)), __builtin_memcpy(&c1, &m[1], sizeof(Column)), __builtin_memcpy(&c2, &m[2], sizeof(Column));
+        __builtin_memcpy(&c3, &m[3], sizeof(Column));
+        detail::splat(x, p.x), detail::splat(y, p.y), detail::splat(z, p.z);
+        const Column r = c0 * x + c1 * y + c2 * z + c3;
+        return {r[0], r[1], r[2]};
+#else
         return affine_vector(m, p) + Vec3<T>(m[3]);
+#endif
     }
 
     [[nodiscard]] static Vec3<T> affine_error(const Mat4<T>& m, const Vec3<T>& p, const Vec3<T>& error) noexcept
@@ -4758,6 +4781,23 @@ public:
         if (range.surrounds(t)) out.push_back(Surface ? crossing_at(ray, t, entering) : Crossing<T>::without_surface(t, entering));
         return out;
     }
+
+    /// crossings<false>(ray, range).front().t, or infinity: without the list, and without
+    /// the division where the ray starts on the plane's positive side and leaves it (or
+    /// starts inside and goes deeper) over a range from 0 on, which its t, negative,
+    /// could not be in: most shadow rays from a floor.
+    [[nodiscard]] constexpr T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        const T denom = dot(normal_, ray.direction);
+        const T height = dot(normal_, ray.origin) - offset_;
+        if (denom == T(0)) return infinity<T>; // (and NaN compares false: on to the division)
+        if (range.min >= T(0) && ((height > T(0) && denom > T(0)) || (height < T(0) && denom < T(0)))) return infinity<T>;
+        const T t = -height / denom;
+        return range.surrounds(t) ? t : infinity<T>;
+    }
+
+    /// Whether crossings<false>(ray, range) is not empty (a shadow ray's query).
+    [[nodiscard]] constexpr bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept { return first_crossing(ray, range) < infinity<T>; }
 
     /// Surface coordinates of a crossing of this plane: in the scene's units along the
     /// face's axes (u along +x and v along -z on a floor; u to the right and v up on a wall

@@ -3,6 +3,8 @@
 
 #include "../support.hpp"
 
+#include <cstring>
+
 using doctest::Approx;
 using prism::Transform;
 using prism::Vec3;
@@ -81,4 +83,31 @@ TEST_CASE("then() checks its product, and singular means ill-conditioned, not a 
     const auto t = Transform<double>::rotate(33, {1, 2, 3}).then(Transform<double>::scale({2, 0.5, 3})).then(Transform<double>::translate({4, -5, 6}));
     const Vec3<double> p{0.3, -0.7, 1.9};
     CHECK(length(t.inverse_point(t.point(p)) - p) < 1e-14);
+}
+
+TEST_CASE_TEMPLATE("point and vector give the scalar sums' bits: each component in the order written, then the translation", T, float, double)
+{
+    // The slow, obvious twin of the column-by-column (SIMD) product, component by component.
+    prism::Random rng(77u, 5u);
+    const auto transform = prism::Transform<T>::rotate_x(T(37)).then(prism::Transform<T>::scale({T(1.5), T(-0.25), T(3)}))
+                               .then(prism::Transform<T>::rotate_y(T(-71)))
+                               .then(prism::Transform<T>::translate({T(0.1), T(-7), T(1e3)}));
+    const prism::Mat4<T> m = transform.matrix();
+    const auto slow = [&](const Vec3<T>& v, bool point) {
+        Vec3<T> r{m[0][0] * v.x + m[1][0] * v.y + m[2][0] * v.z, m[0][1] * v.x + m[1][1] * v.y + m[2][1] * v.z, m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z};
+        return point ? r + Vec3<T>(m[3]) : r;
+    };
+    const auto same = [](const Vec3<T>& a, const Vec3<T>& b) {
+        for (int i = 0; i < 3; ++i)
+            if (!(std::memcmp(&a[i], &b[i], sizeof(T)) == 0)) return false;
+        return true;
+    };
+    int differ = 0;
+    for (int i = 0; i < 100000; ++i) {
+        Vec3<T> v{T(2) * rng.uniform<T>() - T(1), T(2) * rng.uniform<T>() - T(1), T(2) * rng.uniform<T>() - T(1)};
+        v *= std::pow(T(10), T(int(rng.next_u32() % 13) - 6));
+        if (i % 7 == 0) v[i % 3] = -T(0);
+        differ += !same(transform.point(v), slow(v, true)) + !same(transform.vector(v), slow(v, false));
+    }
+    CHECK(differ == 0);
 }

@@ -98,3 +98,34 @@ TEST_CASE("a plane's surface coordinates run in the scene's units: u along +x an
         CHECK(found.left_handed == 0);
     }
 }
+
+TEST_CASE_TEMPLATE("a plane's lean first_crossing and any_crossing give what its crossing list gives, bit for bit", T, float, double)
+{
+    // The slow, obvious twin: crossings<false>(ray, range).front(). Origins on the plane
+    // and off it, directions along it, toward it and away, zeros of both signs, NaN and
+    // infinities; ranges from 0, from below 0, and ending anywhere.
+    prism::Random rng(52u, 9u);
+    const T specials[] = {T(0), -T(0), T(1), T(-1), prism::infinity<T>, std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::denorm_min()};
+    const auto coordinate = [&](T scale) {
+        const std::uint32_t pick = rng.next_u32() % 10;
+        if (pick < 2) return specials[rng.next_u32() % std::size(specials)];
+        return scale * (T(2) * rng.uniform<T>() - T(1));
+    };
+    const Plane<T> floor({T(0), T(1), T(0)}, T(0)), slanted(prism::normalize(Vec3<T>{T(1), T(2), T(-0.5)}), T(0.7));
+    int differences = 0, hits = 0, skipped = 0;
+    for (const Plane<T>* plane : {&floor, &slanted})
+        for (int i = 0; i < 200000; ++i) {
+            const prism::Ray<T> ray{{coordinate(T(3)), coordinate(T(3)), coordinate(T(3))}, {coordinate(T(1)), coordinate(T(1)), coordinate(T(1))}};
+            const T start = i % 3 == 0 ? T(0) : T(4) * (rng.uniform<T>() - T(0.25));
+            const Interval<T> range{start, i % 4 == 0 ? prism::infinity<T> : start + T(6) * rng.uniform<T>()};
+            const auto list = plane->template crossings<false>(ray, range);
+            const T expected = list.empty() ? prism::infinity<T> : list.front().t;
+            hits += !list.empty();
+            const T height = dot(plane->normal(), ray.origin) - plane->offset(), denom = dot(plane->normal(), ray.direction);
+            skipped += range.min >= T(0) && height * denom > T(0); // the division skipped
+            differences += !(plane->first_crossing(ray, range) == expected) + (plane->any_crossing(ray, range) != !list.empty());
+        }
+    CHECK(differences == 0);
+    CHECK(hits > 40000);
+    CHECK(skipped > 40000);
+}

@@ -55,6 +55,10 @@ TEST_CASE_TEMPLATE("the lean first-crossing query gives the full list's first t,
     // Transformed forwards to the sphere's lean query; CSG and quadrics use the fallback.
     const prism::Transformed<prism::Sphere<T>> moved(ball, prism::Transform<T>::rotate_x(T(30)).then(prism::Transform<T>::scale({T(1), T(0.5), T(2)})));
     CHECK(disagreements(moved, rng, 200000) == 0);
+    // A plane's lean query skips the division where its t would be negative.
+    static_assert(prism::HasFirstCrossing<prism::Plane<T>>);
+    CHECK(disagreements(prism::Plane<T>(prism::normalize(Vec3<T>{T(0.2), T(1), T(-0.4)}), T(0.3)), rng, 200000) == 0);
+    CHECK(disagreements(prism::Plane<T>({T(0), T(1), T(0)}, T(0)), rng, 200000) == 0);
     const prism::Difference<prism::Sphere<T>, prism::Box<T>> cut(ball, prism::Box<T>({T(-2), T(-0.1), T(-2)}, {T(2), T(0.1), T(2)}));
     static_assert(!prism::HasFirstCrossing<decltype(cut)>);
     CHECK(disagreements(cut, rng, 100000) == 0);

@@ -98,6 +98,23 @@ public:
         return out;
     }
 
+    /// crossings<false>(ray, range).front().t, or infinity: without the list, and without
+    /// the division where the ray starts on the plane's positive side and leaves it (or
+    /// starts inside and goes deeper) over a range from 0 on, which its t, negative,
+    /// could not be in: most shadow rays from a floor.
+    [[nodiscard]] constexpr T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        const T denom = dot(normal_, ray.direction);
+        const T height = dot(normal_, ray.origin) - offset_;
+        if (denom == T(0)) return infinity<T>; // (and NaN compares false: on to the division)
+        if (range.min >= T(0) && ((height > T(0) && denom > T(0)) || (height < T(0) && denom < T(0)))) return infinity<T>;
+        const T t = -height / denom;
+        return range.surrounds(t) ? t : infinity<T>;
+    }
+
+    /// Whether crossings<false>(ray, range) is not empty (a shadow ray's query).
+    [[nodiscard]] constexpr bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept { return first_crossing(ray, range) < infinity<T>; }
+
     /// Surface coordinates of a crossing of this plane: in the scene's units along the
     /// face's axes (u along +x and v along -z on a floor; u to the right and v up on a wall
     /// seen from the side the normal points to).
