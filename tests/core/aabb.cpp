@@ -3,7 +3,7 @@
 
 #include <prism/core/random.hpp>
 
-#include "effort.hpp"
+#include "../effort.hpp"
 
 #include <doctest/doctest.h>
 
