@@ -49,8 +49,9 @@ struct NoShapes {};
 /// the code those materials need.
 ///
 /// Finding what a ray meets: the scene keeps one Bvh over the bounded objects of all its
-/// slots (when there are at least tree_from; fewer are scanned: the Cornell box's seven
-/// render 20 % slower through a tree), and tests its unbounded ones on every ray. A leaf
+/// slots (when there are at least tree_from; fewer, the Cornell box's seven, which render
+/// 20 % slower through a tree, lie side by side in the lanes of one or two nodes, tested
+/// by a ray at once: may_meet), and tests its unbounded ones on every ray. A leaf
 /// reaches its object's code through a table with an entry per slot (core/dispatch.hpp),
 /// so a ray costs log N in the objects whatever their types, and the code compiled grows
 /// linearly with the slots: the traversal is compiled once, only the leaf test once per
