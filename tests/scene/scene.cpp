@@ -181,6 +181,25 @@ auto scanned_hit(const SceneT& scene, const R& ray, Interval<float> range)
     return best;
 }
 
+/// How often a scene's own queries disagree with scanned_hit.
+struct ScanAgreement {
+    int mismatches = 0, shadow_mismatches = 0, hits = 0;
+};
+
+/// closest_hit against the scan (the same object at the same t), and a shadow ray to
+/// t_max along the ray blocked exactly where the scan finds a crossing.
+template <class SceneT>
+void agree_with_scan(const SceneT& scene, const Ray<float>& ray, float t_max, ScanAgreement& a)
+{
+    const Interval<float> range{0, infinity<float>};
+    const auto hit = scene.closest_hit(ray, range);
+    const auto scan = scanned_hit(scene, ray, range);
+    if (hit) ++a.hits;
+    a.mismatches += hit ? !(hit->crossing.t == scan.t && hit->slot == scan.slot && hit->index == scan.index) : scan.t < infinity<float>;
+    const bool open = max_component(scene.transmittance(ray, t_max)) > 0.0f;
+    a.shadow_mismatches += open != !(scanned_hit(scene, ray, {0, t_max}).t < infinity<float>);
+}
+
 } // namespace
 
 TEST_CASE("an array's Bvh finds what a scan of every object finds: the same object at the same t, and the same shadows")
@@ -195,26 +214,18 @@ TEST_CASE("an array's Bvh finds what a scan of every object finds: the same obje
     balls.items.push_back(balls.items[17]);
     ObjectArray<Plane<float>, Diffuse<float>> planes{{{Plane<float>({0, 1, 0}, -12), Diffuse<float>{}}, {Plane<float>({1, 0, 0}, 12), Diffuse<float>{}}}};
     const Scene scene{Lights{PointLight<float>{.position = {0, 30, 0}}}, std::move(balls), std::move(planes)};
-    int mismatches = 0, shadow_mismatches = 0, hits = 0;
+    ScanAgreement agreement;
     for (int i = 0; i < 20000; ++i) {
         const Vec3<float> target = (Vec3<float>{rng.uniform<float>(), rng.uniform<float>(), rng.uniform<float>()} - Vec3<float>(0.5f)) * 20.0f;
         Vec3<float> d = uniform_sphere<float>(rng);
         if (i % 5 == 1) d = {0, 0, i % 2 ? 1.0f : -1.0f}; // axis-aligned
         const float distance = i % 5 == 2 ? 1e4f : (i % 5 == 3 ? 30.0f : 0.0f); // far away, outside, inside the cloud
-        const Ray<float> ray{target - d * distance, d};
-        const Interval<float> range{0, infinity<float>};
-        const auto hit = scene.closest_hit(ray, range);
-        const auto scan = scanned_hit(scene, ray, range);
-        if (hit) ++hits;
-        mismatches += hit ? !(hit->crossing.t == scan.t && hit->slot == scan.slot && hit->index == scan.index) : scan.t < infinity<float>;
-        // A shadow ray to a point on the way: blocked exactly where the scan finds a crossing.
-        const float t_max = distance + 10.0f * rng.uniform<float>();
-        const bool open = max_component(scene.transmittance(ray, t_max)) > 0.0f;
-        shadow_mismatches += open != !(scanned_hit(scene, ray, {0, t_max}).t < infinity<float>);
+        // (The shadow ray ends at a point on the way.)
+        agree_with_scan(scene, Ray<float>{target - d * distance, d}, distance + 10.0f * rng.uniform<float>(), agreement);
     }
-    CHECK(mismatches == 0);
-    CHECK(shadow_mismatches == 0);
-    CHECK(hits > 10000);
+    CHECK(agreement.mismatches == 0);
+    CHECK(agreement.shadow_mismatches == 0);
+    CHECK(agreement.hits > 10000);
     // The twins: a ray through both reports the first copy.
     const auto& twins = get<0>(scene.slots).items;
     const Vec3<float> c = twins.back().shape.center();
@@ -230,7 +241,8 @@ TEST_CASE("a scene of two to seven bounded objects, their boxes tested side by s
     // Below tree_from the scene tests every bounded object's box at once, widened per ray
     // as a tree's; it must cull nothing a shape could report, far off and grazing too.
     Random rng(57u, 8u);
-    int mismatches = 0, shadow_mismatches = 0, hits = 0, rays = 0;
+    ScanAgreement agreement;
+    int rays = 0;
     for (int n = 2; n <= 7; ++n)
         for (const float offset : {0.0f, 3e3f}) { // a cluster at the origin, and one far from it
             ObjectArray<Sphere<float>, Diffuse<float>> balls;
@@ -249,20 +261,12 @@ TEST_CASE("a scene of two to seven bounded objects, their boxes tested side by s
                 const Vec3<float> target = i % 2 ? ball.center() + side * (ball.radius() * (1.0f + 1e-4f * (rng.uniform<float>() - 0.5f)))
                                                  : Vec3<float>(offset) + (Vec3<float>{rng.uniform<float>(), rng.uniform<float>(), rng.uniform<float>()} - Vec3<float>(0.5f)) * 6.0f;
                 const float distance = i % 3 == 0 ? 1e4f : (i % 3 == 1 ? 20.0f : 0.0f);
-                const Ray<float> ray{target - d * distance, d};
-                const Interval<float> range{0, infinity<float>};
-                const auto hit = scene.closest_hit(ray, range);
-                const auto scan = scanned_hit(scene, ray, range);
-                if (hit) ++hits;
-                mismatches += hit ? !(hit->crossing.t == scan.t && hit->slot == scan.slot && hit->index == scan.index) : scan.t < infinity<float>;
-                const float t_max = distance + 10.0f * rng.uniform<float>();
-                const bool open = max_component(scene.transmittance(ray, t_max)) > 0.0f;
-                shadow_mismatches += open != !(scanned_hit(scene, ray, {0, t_max}).t < infinity<float>);
+                agree_with_scan(scene, Ray<float>{target - d * distance, d}, distance + 10.0f * rng.uniform<float>(), agreement);
             }
         }
-    CHECK(mismatches == 0);
-    CHECK(shadow_mismatches == 0);
-    CHECK(hits > rays / 2);
+    CHECK(agreement.mismatches == 0);
+    CHECK(agreement.shadow_mismatches == 0);
+    CHECK(agreement.hits > rays / 2);
 }
 
 TEST_CASE("slots are visited nearest first, and find what a scan of the slots in turn finds, ties across slots included")
