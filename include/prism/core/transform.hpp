@@ -211,17 +211,7 @@ private:
     }
     [[nodiscard]] static Vec3<T> affine_point(const Mat4<T>& m, const Vec3<T>& p) noexcept
     {
-#if PRISM_VECTOR_EXTENSIONS
-        typedef T Column __attribute__((vector_size(4 * sizeof(T))));
-        Column c0, c1, c2, c3, x, y, z;
-        __builtin_memcpy(&c0, &m[0], sizeof(Column)), __builtin_memcpy(&c1, &m[1], sizeof(Column)), __builtin_memcpy(&c2, &m[2], sizeof(Column));
-        __builtin_memcpy(&c3, &m[3], sizeof(Column));
-        detail::splat(x, p.x), detail::splat(y, p.y), detail::splat(z, p.z);
-        const Column r = c0 * x + c1 * y + c2 * z + c3;
-        return {r[0], r[1], r[2]};
-#else
         return affine_vector(m, p) + Vec3<T>(m[3]);
-#endif
     }
 
     [[nodiscard]] static Vec3<T> affine_error(const Mat4<T>& m, const Vec3<T>& p, const Vec3<T>& error) noexcept
