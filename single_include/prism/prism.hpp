@@ -257,6 +257,46 @@ template <Scalar T>
 
 namespace prism {
 
+namespace detail {
+
+/// Leaves `x` (a product just computed, a scalar or a vector of the compiler's vector
+/// extensions) as it is, but where the compiler can no longer fuse it into a later sum or
+/// difference: floating-point contraction to an FMA, GCC's default wherever the target has
+/// FMA (-march=native, -mfma, every aarch64) and clang's within one expression. An empty
+/// asm that claims to change x: no instruction. (x86 without FMA cannot fuse, so it is
+/// left alone there.)
+template <class V>
+[[gnu::always_inline]] constexpr void keep_rounded(V& x) noexcept
+{
+#if defined(__GNUC__) && (!(defined(__x86_64__) || defined(__i386__)) || defined(__FMA__) || defined(__FMA4__))
+    if (!std::is_constant_evaluated()) {
+#if defined(__x86_64__) || defined(__i386__)
+        asm("" : "+x"(x)); // (FMA implies AVX: a 32-byte vector fits a register)
+#elif defined(__aarch64__) || defined(__arm__)
+        if constexpr (sizeof(V) <= 16) asm("" : "+w"(x));
+        else asm("" : "+m"(x));
+#else
+        asm("" : "+m"(x));
+#endif
+    }
+#else
+    (void)x;
+#endif
+}
+
+} // namespace detail
+
+/// `x`, a product, rounded as computed (detail::keep_rounded): `rounded(a * b) -
+/// rounded(c * d)` is exactly the negative of `rounded(c * d) - rounded(a * b)` in every
+/// build, which the watertight triangle test needs; a fused difference rounds one product
+/// and not the other.
+template <Scalar T>
+[[nodiscard, gnu::always_inline]] constexpr T rounded(T x) noexcept
+{
+    detail::keep_rounded(x);
+    return x;
+}
+
 /// a*b - c*d without catastrophic cancellation (the discriminant of a quadratic).
 ///  float:  the products of two floats are exact in double, so computing in double
 ///          rounds once, at the end.
@@ -5097,14 +5137,15 @@ template <int Kz, Scalar T>
     std::array<Vec3<T>, 3> p;
     for (int i = 0; i < 3; ++i) {
         const Vec3<T> q = corner[std::size_t(i)] - ray.origin;
-        p[std::size_t(i)] = {q[kx] + ray.sx * q[Kz], q[ky] + ray.sy * q[Kz], q[Kz]};
+        p[std::size_t(i)] = {q[kx] + rounded(ray.sx * q[Kz]), q[ky] + rounded(ray.sy * q[Kz]), q[Kz]};
     }
-    // Plain products: an edge shared by two triangles gets exactly opposite values in
-    // them (the subtraction rounds symmetrically), so a ray is inside exactly one of
-    // them, or on the edge of both.
-    T e0 = p[1].x * p[2].y - p[1].y * p[2].x;
-    T e1 = p[2].x * p[0].y - p[2].y * p[0].x;
-    T e2 = p[0].x * p[1].y - p[0].y * p[1].x;
+    // Plain products, each rounded (never fused into the difference: math.hpp's
+    // rounded): an edge shared by two triangles gets exactly opposite values in them (the
+    // subtraction rounds symmetrically), so a ray is inside exactly one of them, or on
+    // the edge of both.
+    T e0 = rounded(p[1].x * p[2].y) - rounded(p[1].y * p[2].x);
+    T e1 = rounded(p[2].x * p[0].y) - rounded(p[2].y * p[0].x);
+    T e2 = rounded(p[0].x * p[1].y) - rounded(p[0].y * p[1].x);
     if constexpr (sizeof(T) < sizeof(double)) {
         // On an edge to float precision: decide it in double.
         if (e0 == T(0) || e1 == T(0) || e2 == T(0)) {
@@ -5197,10 +5238,22 @@ template <int Kz, Scalar T>
         __builtin_memcpy(&y, block.corner[std::size_t(3 * i + ky)].data(), sizeof(Lanes));
         __builtin_memcpy(&z, block.corner[std::size_t(3 * i + Kz)].data(), sizeof(Lanes));
         x -= ray.lane_origin[0], y -= ray.lane_origin[1], z -= ray.lane_origin[2];
-        px[i] = x + ray.lane_sx * z;
-        py[i] = y + ray.lane_sy * z;
+        Lanes shear_x = ray.lane_sx * z, shear_y = ray.lane_sy * z;
+        keep_rounded(shear_x), keep_rounded(shear_y); // (as hit_triangle_along's, in any build)
+        px[i] = x + shear_x;
+        py[i] = y + shear_y;
         pz[i] = z;
     }
+}
+
+/// hit_triangle_along's three edge functions, four lanes at once, each product rounded
+/// (never fused into the difference), as there.
+template <class Lanes>
+[[gnu::always_inline]] inline void edge_functions(const Lanes (&px)[3], const Lanes (&py)[3], Lanes& e0, Lanes& e1, Lanes& e2) noexcept
+{
+    Lanes a[3] = {px[1] * py[2], px[2] * py[0], px[0] * py[1]}, b[3] = {py[1] * px[2], py[2] * px[0], py[0] * px[1]};
+    for (int i = 0; i < 3; ++i) keep_rounded(a[i]), keep_rounded(b[i]);
+    e0 = a[0] - b[0], e1 = a[1] - b[1], e2 = a[2] - b[2];
 }
 
 template <int Kz, Scalar T>
@@ -5210,9 +5263,8 @@ template <int Kz, Scalar T>
     using Lanes = typename ShearedRay<T>::Lanes;
     Lanes px[3], py[3], pz[3];
     sheared_corners<Kz>(ray, block, px, py, pz);
-    const Lanes e0 = px[1] * py[2] - py[1] * px[2];
-    const Lanes e1 = px[2] * py[0] - py[2] * px[0];
-    const Lanes e2 = px[0] * py[1] - py[0] * px[1];
+    Lanes e0, e1, e2;
+    edge_functions(px, py, e0, e1, e2);
     const auto missed = ((e0 < T(0)) | (e1 < T(0)) | (e2 < T(0))) & ((e0 > T(0)) | (e1 > T(0)) | (e2 > T(0))) &
                         ~((e0 == T(0)) | (e1 == T(0)) | (e2 == T(0)));
     return ~lane_bits(missed) & ((1u << width) - 1); // a bit per lane kept
@@ -5258,9 +5310,8 @@ template <int Kz, Scalar T>
     };
     Lanes px[3], py[3], pz[3];
     sheared_corners<Kz>(ray, block, px, py, pz);
-    const Lanes e0 = px[1] * py[2] - py[1] * px[2];
-    const Lanes e1 = px[2] * py[0] - py[2] * px[0];
-    const Lanes e2 = px[0] * py[1] - py[0] * px[1];
+    Lanes e0, e1, e2;
+    edge_functions(px, py, e0, e1, e2);
     const BitLanes below = (e0 < T(0)) | (e1 < T(0)) | (e2 < T(0)), above = (e0 > T(0)) | (e1 > T(0)) | (e2 > T(0));
     const BitLanes zero = (e0 == T(0)) | (e1 == T(0)) | (e2 == T(0));
     BlockHits<T> out;
@@ -5327,12 +5378,12 @@ template <int Kz, Scalar T>
         for (std::size_t i = 0; i < 3; ++i) {
             const T x = block.corner[3 * i + kx][lane] - ray.origin[kx], y = block.corner[3 * i + ky][lane] - ray.origin[ky],
                     z = block.corner[3 * i + Kz][lane] - ray.origin[Kz];
-            px[i] = x + ray.sx * z;
-            py[i] = y + ray.sy * z;
+            px[i] = x + rounded(ray.sx * z);
+            py[i] = y + rounded(ray.sy * z);
         }
-        const T e0 = px[1] * py[2] - py[1] * px[2];
-        const T e1 = px[2] * py[0] - py[2] * px[0];
-        const T e2 = px[0] * py[1] - py[0] * px[1];
+        const T e0 = rounded(px[1] * py[2]) - rounded(py[1] * px[2]);
+        const T e1 = rounded(px[2] * py[0]) - rounded(py[2] * px[0]);
+        const T e2 = rounded(px[0] * py[1]) - rounded(py[0] * px[1]);
         const bool missed = (e0 < T(0) || e1 < T(0) || e2 < T(0)) && (e0 > T(0) || e1 > T(0) || e2 > T(0)) &&
                             !(e0 == T(0) || e1 == T(0) || e2 == T(0));
         maybe |= missed ? 0u : 1u << lane;
@@ -5590,11 +5641,13 @@ public:
         const NearRay<T> near = brought_near(far_ray, data_->near);
         const Ray<T>& ray = near.ray_for(far_ray);
         Interval<T> range = near.range(far_range);
-        const detail::ShearedRay<T> sheared(ray);
         detail::TriangleHit<T> nearest{infinity<T>, {}, false};
         std::uint32_t triangle = 0;
-        data_->bvh.traverse_leaves(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) __attribute__((always_inline)) {
-            return for_each_hit(sheared, first, count, r, [&](std::uint32_t k, const detail::TriangleHit<T>& h) {
+        // (The leaf's visit holds the sheared ray and the blocks itself, not by reference:
+        // each leaf then starts its loads one pointer away, not four.)
+        data_->bvh.traverse_leaves(ray, range, [&nearest, &triangle, sheared = detail::ShearedRay<T>(ray), blocks = data_->blocks.data()](
+                                                   std::uint32_t first, std::uint32_t count, Interval<T>& r) __attribute__((always_inline)) {
+            return for_each_hit(sheared, blocks, first, count, r, [&](std::uint32_t k, const detail::TriangleHit<T>& h) {
                 nearest = h, r.max = h.t, triangle = k;
                 return false;
             });
@@ -5627,9 +5680,9 @@ public:
         const NearRay<T> near = brought_near(far_ray, data_->near);
         const Ray<T>& ray = near.ray_for(far_ray);
         Interval<T> range = near.range(far_range);
-        const detail::ShearedRay<T> sheared(ray);
-        return data_->bvh.any_leaf(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) __attribute__((always_inline)) {
-            return for_each_hit(sheared, first, count, r, [](std::uint32_t, const detail::TriangleHit<T>&) { return true; });
+        return data_->bvh.any_leaf(ray, range, [sheared = detail::ShearedRay<T>(ray), blocks = data_->blocks.data()](std::uint32_t first, std::uint32_t count, Interval<T>& r)
+                                                   __attribute__((always_inline)) {
+            return for_each_hit(sheared, blocks, first, count, r, [](std::uint32_t, const detail::TriangleHit<T>&) { return true; });
         });
     }
 
@@ -5679,11 +5732,12 @@ private:
     /// then returns true): what hit_triangle finds, lane by lane, but a block's lanes
     /// tested at once (hit_block: the same numbers).
     template <class Take>
-    [[gnu::always_inline]] bool for_each_hit(const detail::ShearedRay<T>& ray, std::uint32_t first, std::uint32_t count, Interval<T>& range, Take&& take) const noexcept
+    [[gnu::always_inline]] static bool for_each_hit(const detail::ShearedRay<T>& ray, const detail::TriangleBlock<T>* blocks, std::uint32_t first, std::uint32_t count,
+                                                    Interval<T>& range, Take&& take) noexcept
     {
 #if PRISM_VECTOR_EXTENSIONS
         constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
-        const detail::TriangleBlock<T>* block = &data_->blocks[first / width]; // a leaf starts a block
+        const detail::TriangleBlock<T>* block = blocks + first / width; // a leaf starts a block
         for (std::uint32_t k = first; k < first + count; k += width, ++block) {
             const std::uint32_t lanes = std::min(width, first + count - k);
             const detail::BlockHits<T> hits = detail::hit_block(ray, *block, range, (1u << lanes) - 1);
@@ -5702,7 +5756,7 @@ private:
         }
         return false;
 #else
-        return for_each_maybe_hit(ray, first, count, [&](std::uint32_t k, const std::array<Vec3<T>, 3>& tri) {
+        return for_each_maybe_hit(ray, blocks, first, count, [&](std::uint32_t k, const std::array<Vec3<T>, 3>& tri) {
             detail::TriangleHit<T> h;
             return detail::hit_triangle(ray, tri, range, h) && take(k, h);
         });
@@ -5712,10 +5766,11 @@ private:
     /// Calls test(k, corners) for each triangle of the leaf [first, first + count) that
     /// the edge test keeps, in order, until one returns true (and then returns true).
     template <class Test>
-    [[gnu::always_inline]] bool for_each_maybe_hit(const detail::ShearedRay<T>& ray, std::uint32_t first, std::uint32_t count, Test&& test) const noexcept
+    [[gnu::always_inline]] static bool for_each_maybe_hit(const detail::ShearedRay<T>& ray, const detail::TriangleBlock<T>* blocks, std::uint32_t first, std::uint32_t count,
+                                                          Test&& test) noexcept
     {
         constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
-        const detail::TriangleBlock<T>* block = &data_->blocks[first / width]; // a leaf starts a block
+        const detail::TriangleBlock<T>* block = blocks + first / width; // a leaf starts a block
         for (std::uint32_t k = first; k < first + count; k += width, ++block) {
             const std::uint32_t lanes = std::min(width, first + count - k);
             for (unsigned maybe = detail::edge_test(ray, *block) & ((1u << lanes) - 1); maybe != 0; maybe &= maybe - 1) {

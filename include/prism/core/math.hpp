@@ -158,6 +158,46 @@ template <Scalar T>
 
 namespace prism {
 
+namespace detail {
+
+/// Leaves `x` (a product just computed, a scalar or a vector of the compiler's vector
+/// extensions) as it is, but where the compiler can no longer fuse it into a later sum or
+/// difference: floating-point contraction to an FMA, GCC's default wherever the target has
+/// FMA (-march=native, -mfma, every aarch64) and clang's within one expression. An empty
+/// asm that claims to change x: no instruction. (x86 without FMA cannot fuse, so it is
+/// left alone there.)
+template <class V>
+[[gnu::always_inline]] constexpr void keep_rounded(V& x) noexcept
+{
+#if defined(__GNUC__) && (!(defined(__x86_64__) || defined(__i386__)) || defined(__FMA__) || defined(__FMA4__))
+    if (!std::is_constant_evaluated()) {
+#if defined(__x86_64__) || defined(__i386__)
+        asm("" : "+x"(x)); // (FMA implies AVX: a 32-byte vector fits a register)
+#elif defined(__aarch64__) || defined(__arm__)
+        if constexpr (sizeof(V) <= 16) asm("" : "+w"(x));
+        else asm("" : "+m"(x));
+#else
+        asm("" : "+m"(x));
+#endif
+    }
+#else
+    (void)x;
+#endif
+}
+
+} // namespace detail
+
+/// `x`, a product, rounded as computed (detail::keep_rounded): `rounded(a * b) -
+/// rounded(c * d)` is exactly the negative of `rounded(c * d) - rounded(a * b)` in every
+/// build, which the watertight triangle test needs; a fused difference rounds one product
+/// and not the other.
+template <Scalar T>
+[[nodiscard, gnu::always_inline]] constexpr T rounded(T x) noexcept
+{
+    detail::keep_rounded(x);
+    return x;
+}
+
 /// a*b - c*d without catastrophic cancellation (the discriminant of a quadratic).
 ///  float:  the products of two floats are exact in double, so computing in double
 ///          rounds once, at the end.

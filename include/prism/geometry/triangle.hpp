@@ -81,14 +81,15 @@ template <int Kz, Scalar T>
     std::array<Vec3<T>, 3> p;
     for (int i = 0; i < 3; ++i) {
         const Vec3<T> q = corner[std::size_t(i)] - ray.origin;
-        p[std::size_t(i)] = {q[kx] + ray.sx * q[Kz], q[ky] + ray.sy * q[Kz], q[Kz]};
+        p[std::size_t(i)] = {q[kx] + rounded(ray.sx * q[Kz]), q[ky] + rounded(ray.sy * q[Kz]), q[Kz]};
     }
-    // Plain products: an edge shared by two triangles gets exactly opposite values in
-    // them (the subtraction rounds symmetrically), so a ray is inside exactly one of
-    // them, or on the edge of both.
-    T e0 = p[1].x * p[2].y - p[1].y * p[2].x;
-    T e1 = p[2].x * p[0].y - p[2].y * p[0].x;
-    T e2 = p[0].x * p[1].y - p[0].y * p[1].x;
+    // Plain products, each rounded (never fused into the difference: math.hpp's
+    // rounded): an edge shared by two triangles gets exactly opposite values in them (the
+    // subtraction rounds symmetrically), so a ray is inside exactly one of them, or on
+    // the edge of both.
+    T e0 = rounded(p[1].x * p[2].y) - rounded(p[1].y * p[2].x);
+    T e1 = rounded(p[2].x * p[0].y) - rounded(p[2].y * p[0].x);
+    T e2 = rounded(p[0].x * p[1].y) - rounded(p[0].y * p[1].x);
     if constexpr (sizeof(T) < sizeof(double)) {
         // On an edge to float precision: decide it in double.
         if (e0 == T(0) || e1 == T(0) || e2 == T(0)) {
@@ -181,10 +182,22 @@ template <int Kz, Scalar T>
         __builtin_memcpy(&y, block.corner[std::size_t(3 * i + ky)].data(), sizeof(Lanes));
         __builtin_memcpy(&z, block.corner[std::size_t(3 * i + Kz)].data(), sizeof(Lanes));
         x -= ray.lane_origin[0], y -= ray.lane_origin[1], z -= ray.lane_origin[2];
-        px[i] = x + ray.lane_sx * z;
-        py[i] = y + ray.lane_sy * z;
+        Lanes shear_x = ray.lane_sx * z, shear_y = ray.lane_sy * z;
+        keep_rounded(shear_x), keep_rounded(shear_y); // (as hit_triangle_along's, in any build)
+        px[i] = x + shear_x;
+        py[i] = y + shear_y;
         pz[i] = z;
     }
+}
+
+/// hit_triangle_along's three edge functions, four lanes at once, each product rounded
+/// (never fused into the difference), as there.
+template <class Lanes>
+[[gnu::always_inline]] inline void edge_functions(const Lanes (&px)[3], const Lanes (&py)[3], Lanes& e0, Lanes& e1, Lanes& e2) noexcept
+{
+    Lanes a[3] = {px[1] * py[2], px[2] * py[0], px[0] * py[1]}, b[3] = {py[1] * px[2], py[2] * px[0], py[0] * px[1]};
+    for (int i = 0; i < 3; ++i) keep_rounded(a[i]), keep_rounded(b[i]);
+    e0 = a[0] - b[0], e1 = a[1] - b[1], e2 = a[2] - b[2];
 }
 
 template <int Kz, Scalar T>
@@ -194,9 +207,8 @@ template <int Kz, Scalar T>
     using Lanes = typename ShearedRay<T>::Lanes;
     Lanes px[3], py[3], pz[3];
     sheared_corners<Kz>(ray, block, px, py, pz);
-    const Lanes e0 = px[1] * py[2] - py[1] * px[2];
-    const Lanes e1 = px[2] * py[0] - py[2] * px[0];
-    const Lanes e2 = px[0] * py[1] - py[0] * px[1];
+    Lanes e0, e1, e2;
+    edge_functions(px, py, e0, e1, e2);
     const auto missed = ((e0 < T(0)) | (e1 < T(0)) | (e2 < T(0))) & ((e0 > T(0)) | (e1 > T(0)) | (e2 > T(0))) &
                         ~((e0 == T(0)) | (e1 == T(0)) | (e2 == T(0)));
     return ~lane_bits(missed) & ((1u << width) - 1); // a bit per lane kept
@@ -242,9 +254,8 @@ template <int Kz, Scalar T>
     };
     Lanes px[3], py[3], pz[3];
     sheared_corners<Kz>(ray, block, px, py, pz);
-    const Lanes e0 = px[1] * py[2] - py[1] * px[2];
-    const Lanes e1 = px[2] * py[0] - py[2] * px[0];
-    const Lanes e2 = px[0] * py[1] - py[0] * px[1];
+    Lanes e0, e1, e2;
+    edge_functions(px, py, e0, e1, e2);
     const BitLanes below = (e0 < T(0)) | (e1 < T(0)) | (e2 < T(0)), above = (e0 > T(0)) | (e1 > T(0)) | (e2 > T(0));
     const BitLanes zero = (e0 == T(0)) | (e1 == T(0)) | (e2 == T(0));
     BlockHits<T> out;
@@ -311,12 +322,12 @@ template <int Kz, Scalar T>
         for (std::size_t i = 0; i < 3; ++i) {
             const T x = block.corner[3 * i + kx][lane] - ray.origin[kx], y = block.corner[3 * i + ky][lane] - ray.origin[ky],
                     z = block.corner[3 * i + Kz][lane] - ray.origin[Kz];
-            px[i] = x + ray.sx * z;
-            py[i] = y + ray.sy * z;
+            px[i] = x + rounded(ray.sx * z);
+            py[i] = y + rounded(ray.sy * z);
         }
-        const T e0 = px[1] * py[2] - py[1] * px[2];
-        const T e1 = px[2] * py[0] - py[2] * px[0];
-        const T e2 = px[0] * py[1] - py[0] * px[1];
+        const T e0 = rounded(px[1] * py[2]) - rounded(py[1] * px[2]);
+        const T e1 = rounded(px[2] * py[0]) - rounded(py[2] * px[0]);
+        const T e2 = rounded(px[0] * py[1]) - rounded(py[0] * px[1]);
         const bool missed = (e0 < T(0) || e1 < T(0) || e2 < T(0)) && (e0 > T(0) || e1 > T(0) || e2 > T(0)) &&
                             !(e0 == T(0) || e1 == T(0) || e2 == T(0));
         maybe |= missed ? 0u : 1u << lane;

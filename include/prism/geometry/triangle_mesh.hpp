@@ -228,11 +228,13 @@ public:
         const NearRay<T> near = brought_near(far_ray, data_->near);
         const Ray<T>& ray = near.ray_for(far_ray);
         Interval<T> range = near.range(far_range);
-        const detail::ShearedRay<T> sheared(ray);
         detail::TriangleHit<T> nearest{infinity<T>, {}, false};
         std::uint32_t triangle = 0;
-        data_->bvh.traverse_leaves(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) __attribute__((always_inline)) {
-            return for_each_hit(sheared, first, count, r, [&](std::uint32_t k, const detail::TriangleHit<T>& h) {
+        // (The leaf's visit holds the sheared ray and the blocks itself, not by reference:
+        // each leaf then starts its loads one pointer away, not four.)
+        data_->bvh.traverse_leaves(ray, range, [&nearest, &triangle, sheared = detail::ShearedRay<T>(ray), blocks = data_->blocks.data()](
+                                                   std::uint32_t first, std::uint32_t count, Interval<T>& r) __attribute__((always_inline)) {
+            return for_each_hit(sheared, blocks, first, count, r, [&](std::uint32_t k, const detail::TriangleHit<T>& h) {
                 nearest = h, r.max = h.t, triangle = k;
                 return false;
             });
@@ -265,9 +267,9 @@ public:
         const NearRay<T> near = brought_near(far_ray, data_->near);
         const Ray<T>& ray = near.ray_for(far_ray);
         Interval<T> range = near.range(far_range);
-        const detail::ShearedRay<T> sheared(ray);
-        return data_->bvh.any_leaf(ray, range, [&](std::uint32_t first, std::uint32_t count, Interval<T>& r) __attribute__((always_inline)) {
-            return for_each_hit(sheared, first, count, r, [](std::uint32_t, const detail::TriangleHit<T>&) { return true; });
+        return data_->bvh.any_leaf(ray, range, [sheared = detail::ShearedRay<T>(ray), blocks = data_->blocks.data()](std::uint32_t first, std::uint32_t count, Interval<T>& r)
+                                                   __attribute__((always_inline)) {
+            return for_each_hit(sheared, blocks, first, count, r, [](std::uint32_t, const detail::TriangleHit<T>&) { return true; });
         });
     }
 
@@ -317,11 +319,12 @@ private:
     /// then returns true): what hit_triangle finds, lane by lane, but a block's lanes
     /// tested at once (hit_block: the same numbers).
     template <class Take>
-    [[gnu::always_inline]] bool for_each_hit(const detail::ShearedRay<T>& ray, std::uint32_t first, std::uint32_t count, Interval<T>& range, Take&& take) const noexcept
+    [[gnu::always_inline]] static bool for_each_hit(const detail::ShearedRay<T>& ray, const detail::TriangleBlock<T>* blocks, std::uint32_t first, std::uint32_t count,
+                                                    Interval<T>& range, Take&& take) noexcept
     {
 #if PRISM_VECTOR_EXTENSIONS
         constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
-        const detail::TriangleBlock<T>* block = &data_->blocks[first / width]; // a leaf starts a block
+        const detail::TriangleBlock<T>* block = blocks + first / width; // a leaf starts a block
         for (std::uint32_t k = first; k < first + count; k += width, ++block) {
             const std::uint32_t lanes = std::min(width, first + count - k);
             const detail::BlockHits<T> hits = detail::hit_block(ray, *block, range, (1u << lanes) - 1);
@@ -340,7 +343,7 @@ private:
         }
         return false;
 #else
-        return for_each_maybe_hit(ray, first, count, [&](std::uint32_t k, const std::array<Vec3<T>, 3>& tri) {
+        return for_each_maybe_hit(ray, blocks, first, count, [&](std::uint32_t k, const std::array<Vec3<T>, 3>& tri) {
             detail::TriangleHit<T> h;
             return detail::hit_triangle(ray, tri, range, h) && take(k, h);
         });
@@ -350,10 +353,11 @@ private:
     /// Calls test(k, corners) for each triangle of the leaf [first, first + count) that
     /// the edge test keeps, in order, until one returns true (and then returns true).
     template <class Test>
-    [[gnu::always_inline]] bool for_each_maybe_hit(const detail::ShearedRay<T>& ray, std::uint32_t first, std::uint32_t count, Test&& test) const noexcept
+    [[gnu::always_inline]] static bool for_each_maybe_hit(const detail::ShearedRay<T>& ray, const detail::TriangleBlock<T>* blocks, std::uint32_t first, std::uint32_t count,
+                                                          Test&& test) noexcept
     {
         constexpr std::uint32_t width = detail::TriangleBlock<T>::width;
-        const detail::TriangleBlock<T>* block = &data_->blocks[first / width]; // a leaf starts a block
+        const detail::TriangleBlock<T>* block = blocks + first / width; // a leaf starts a block
         for (std::uint32_t k = first; k < first + count; k += width, ++block) {
             const std::uint32_t lanes = std::min(width, first + count - k);
             for (unsigned maybe = detail::edge_test(ray, *block) & ((1u << lanes) - 1); maybe != 0; maybe &= maybe - 1) {
