@@ -20,7 +20,7 @@ python=/usr/bin/python3
 "$root/build/release/bench/bench_kdtree" "$results" | tee "$results/kdtree.txt"
 "$root/build/release/bench/bench_bvh_vs_embree" "$results" 5 "$root/assets/bunny.obj" | tee "$results/bvh_vs_embree.txt"
 "$root/build/release/bench/bench_bvh_vs_embree" "$results" 5 "$root/assets/bunny.obj" sse4.2 | tee "$results/bvh_vs_embree_sse4.2.txt"
-if grep -qw avx2 /proc/cpuinfo; then
+if grep -qw avx2 /proc/cpuinfo && grep -qw fma /proc/cpuinfo; then
   "$root/build/release/bench/bench_bvh_vs_embree_avx2" "$results" 5 "$root/assets/bunny.obj" | tee "$results/bvh_vs_embree_prism-avx2.txt"
   "$root/build/release/bench/bench_bvh_vs_embree_avx2" "$results" 5 "$root/assets/bunny.obj" avx2 | tee "$results/bvh_vs_embree_prism-avx2_avx2.txt"
 fi
