@@ -933,6 +933,7 @@ struct SlabAxes {
     typedef T Axes __attribute__((vector_size(4 * sizeof(T))));
     Axes inverse, far_inverse, near_origin, far_origin;
     unsigned negative; ///< a bit per axis the ray runs toward -axis on
+    bool finite; ///< no NaN or infinity in the ray's origin or direction
 
     /// `pad`: SlabRay::padding; `far_widening`: SlabRay::far_widening.
     [[gnu::always_inline]] constexpr SlabAxes(const Ray<T>& ray, T pad, T far_widening) noexcept
@@ -950,6 +951,7 @@ struct SlabAxes {
         near_origin = neg ? o - pad : o + pad;
         far_origin = neg ? o + pad : o - pad;
         negative = lane_bits(neg) & 7u;
+        finite = lane_bits((o - o) + (d - d) == T(0)) == 15u; // (x - x is 0 but for a NaN or an infinity)
     }
 };
 #endif
@@ -1071,15 +1073,20 @@ struct SlabLanes {
     typedef T Lanes __attribute__((vector_size(width * sizeof(T))));
     Lanes near_origin[3], far_origin[3], inverse[3], far_inverse[3];
     std::size_t near_face[3], far_face[3]; ///< byte offsets in BvhNode::bounds of the rows the ray meets first and last on each axis
+    bool finite; ///< no NaN or infinity in the ray (Bvh's walk then visits nothing)
 
     /// `magnitude`: the largest coordinate magnitude of every box to be tested (as SlabRay's).
     [[gnu::always_inline]] SlabLanes(const Ray<T>& ray, T magnitude) noexcept
     {
-        // SlabRay's numbers, each axis's broadcast from its lane (never stored as scalars).
+        // SlabRay's numbers, each axis's broadcast from its lane (never stored as scalars),
+        // and the rows' offsets from a table.
         const SlabAxes<T> axes(ray, SlabRay<T>::padding(ray, magnitude), SlabRay<T>::far_widening);
         set_axis<0>(axes);
         set_axis<1>(axes);
         set_axis<2>(axes);
+        __builtin_memcpy(near_face, faces[axes.negative].data(), sizeof(near_face));
+        __builtin_memcpy(far_face, faces[axes.negative].data() + 3, sizeof(far_face));
+        finite = axes.finite;
     }
 
     template <int Axis>
@@ -1089,10 +1096,20 @@ struct SlabLanes {
         splat_lane<Axis>(far_origin[Axis], axes.far_origin);
         splat_lane<Axis>(inverse[Axis], axes.inverse);
         splat_lane<Axis>(far_inverse[Axis], axes.far_inverse);
-        const std::size_t n = (axes.negative >> Axis) & 1u;
-        near_face[Axis] = (Axis + 3 * n) * sizeof(Lanes);
-        far_face[Axis] = (Axis + 3 - 3 * n) * sizeof(Lanes);
     }
+
+    /// For each octant (SlabAxes::negative), the byte offsets of the rows a ray meets
+    /// first on each axis, then last: lo (row axis) where it runs toward +axis, else hi.
+    static constexpr std::array<std::array<std::size_t, 6>, 8> faces = [] {
+        std::array<std::array<std::size_t, 6>, 8> f{};
+        for (std::size_t octant = 0; octant < 8; ++octant)
+            for (std::size_t axis = 0; axis < 3; ++axis) {
+                const std::size_t n = (octant >> axis) & 1u;
+                f[octant][axis] = (axis + 3 * n) * sizeof(Lanes);
+                f[octant][axis + 3] = (axis + 3 - 3 * n) * sizeof(Lanes);
+            }
+        return f;
+    }();
 
     [[nodiscard, gnu::always_inline]] unsigned may_cross(const BvhNode<T, Width>& node, Interval<T> range, std::array<T, width>& near) const noexcept
     {
@@ -2025,12 +2042,24 @@ private:
         // A ray with a NaN or an infinity in it meets nothing. (A NaN would pass every
         // box test, the padding lanes' empty boxes too, and those lanes' zeros would be
         // taken for the root: a walk without end.)
-        if (nodes_.empty() || !is_finite(ray.origin) || !is_finite(ray.direction)) return false;
+        if (nodes_.empty()) return false;
 #if PRISM_VECTOR_EXTENSIONS
-        if (!std::is_constant_evaluated()) return walk_with<Nearest>(detail::SlabLanes<T, Width>(ray, magnitude_), range, visit);
+        if (!std::is_constant_evaluated()) return walk_in_lanes<Nearest>(ray, range, visit);
 #endif
+        if (!is_finite(ray.origin) || !is_finite(ray.direction)) return false;
         return walk_with<Nearest>(detail::SlabRay<T>(ray, magnitude_), range, visit);
     }
+
+#if PRISM_VECTOR_EXTENSIONS
+    /// walk at run time, with SlabLanes' node test (which tells a ray that is not finite
+    /// in the same few instructions that make its numbers).
+    template <bool Nearest, class Visit>
+    [[gnu::always_inline]] bool walk_in_lanes(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
+    {
+        const detail::SlabLanes<T, Width> lanes(ray, magnitude_);
+        return lanes.finite && walk_with<Nearest>(lanes, range, visit);
+    }
+#endif
 
     template <bool Nearest, class Slab, class Visit>
     constexpr bool walk_with(const Slab& slab, Interval<T>& range, Visit&& visit) const

@@ -205,12 +205,24 @@ private:
         // A ray with a NaN or an infinity in it meets nothing. (A NaN would pass every
         // box test, the padding lanes' empty boxes too, and those lanes' zeros would be
         // taken for the root: a walk without end.)
-        if (nodes_.empty() || !is_finite(ray.origin) || !is_finite(ray.direction)) return false;
+        if (nodes_.empty()) return false;
 #if PRISM_VECTOR_EXTENSIONS
-        if (!std::is_constant_evaluated()) return walk_with<Nearest>(detail::SlabLanes<T, Width>(ray, magnitude_), range, visit);
+        if (!std::is_constant_evaluated()) return walk_in_lanes<Nearest>(ray, range, visit);
 #endif
+        if (!is_finite(ray.origin) || !is_finite(ray.direction)) return false;
         return walk_with<Nearest>(detail::SlabRay<T>(ray, magnitude_), range, visit);
     }
+
+#if PRISM_VECTOR_EXTENSIONS
+    /// walk at run time, with SlabLanes' node test (which tells a ray that is not finite
+    /// in the same few instructions that make its numbers).
+    template <bool Nearest, class Visit>
+    [[gnu::always_inline]] bool walk_in_lanes(const Ray<T>& ray, Interval<T>& range, Visit&& visit) const
+    {
+        const detail::SlabLanes<T, Width> lanes(ray, magnitude_);
+        return lanes.finite && walk_with<Nearest>(lanes, range, visit);
+    }
+#endif
 
     template <bool Nearest, class Slab, class Visit>
     constexpr bool walk_with(const Slab& slab, Interval<T>& range, Visit&& visit) const
