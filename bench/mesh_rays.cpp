@@ -12,7 +12,13 @@
 // with 1 and 2 passes and takes the difference: the instructions of one pass of the rays,
 // build and set-up left out (a deterministic count, for changes to the kernel that move
 // it by a few per cent; not a time, since it does not see cache misses).
-//   bench_mesh_rays bunny.obj bunny|sphere|terrain primary|bounce|shadow scene|mesh|embree [passes] [embree-isa]
+// Embree also as embree-hq (its high-quality build, spatial splits), embree-robust (its
+// watertight, conservative mode), embree-compact (its smaller structures) and embree8 (eight consecutive rays a packet: eight
+// neighbouring pixels of a row for primary rays): what a better tree, prism's exactness and
+// packets are worth to the peer itself. The `leak` rays (sphere only) start inside the
+// closed geodesic sphere and pass through each of its vertices and edge midpoints: every
+// one must hit, and the misses printed are rays a test let through.
+//   bench_mesh_rays bunny.obj bunny|sphere|terrain primary|bounce|shadow|leak scene|mesh|embree[-hq|-robust|-compact|8] [passes] [embree-isa]
 #include "meshes.hpp"
 
 #if PRISM_BENCH_EMBREE
@@ -47,12 +53,20 @@ MeshBuffers<T> mesh_named(const std::string& name, const std::string& bunny)
 /// build of medium quality), and its single-ray queries.
 class EmbreeMesh {
 public:
-    /// `isa`: empty for the instruction set Embree picks, or one to hold it to (avx2, ...).
-    EmbreeMesh(const MeshBuffers<T>& mesh, const std::string& isa) : device_(rtcNewDevice(("threads=1" + (isa.empty() ? "" : ",isa=" + isa)).c_str()))
+    /// `isa`: empty for the instruction set Embree picks, or one to hold it to (avx2, ...);
+    /// `variant`: "embree" (its defaults), "embree-hq" (the high-quality build, with spatial
+    /// splits), "embree-robust" (RTC_SCENE_FLAG_ROBUST: a watertight triangle test and a
+    /// conservative node test, as prism's), "embree-compact" (RTC_SCENE_FLAG_COMPACT: its
+    /// structures that take less memory) or "embree8" (the defaults, rays traced eight at a
+    /// time with rtcIntersect8 / rtcOccluded8).
+    EmbreeMesh(const MeshBuffers<T>& mesh, const std::string& isa, const std::string& variant)
+        : device_(rtcNewDevice(("threads=1" + (isa.empty() ? "" : ",isa=" + isa)).c_str()))
     {
         if (device_ == nullptr) throw std::runtime_error("rtcNewDevice failed");
         scene_ = rtcNewScene(device_);
-        bench::embree_add_triangles(device_, scene_, mesh, RTC_BUILD_QUALITY_MEDIUM);
+        if (variant == "embree-robust") rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+        if (variant == "embree-compact") rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_COMPACT);
+        bench::embree_add_triangles(device_, scene_, mesh, variant == "embree-hq" ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM);
         rtcCommitScene(scene_);
     }
     EmbreeMesh(const EmbreeMesh&) = delete;
@@ -64,6 +78,32 @@ public:
     }
     [[nodiscard]] bool hit(const Ray<T>& ray) const { return bench::embree_closest(scene_, ray) < infinity<T>; }
     [[nodiscard]] bool occluded(const Ray<T>& ray, T end) const { return bench::embree_occluded(scene_, ray, end); }
+    /// Rays [first, first + 8) of `rays` (fewer at the end) as one packet: the hits among them.
+    [[nodiscard]] long hit8(const std::vector<Ray<T>>& rays, const std::vector<T>* ends, std::size_t first) const
+    {
+        alignas(32) int valid[8];
+        alignas(32) RTCRayHit8 rh{};
+        for (std::size_t j = 0; j < 8; ++j) {
+            const std::size_t i = first + j;
+            valid[j] = i < rays.size() ? -1 : 0;
+            const Ray<T>& r = rays[i < rays.size() ? i : first];
+            rh.ray.org_x[j] = r.origin.x, rh.ray.org_y[j] = r.origin.y, rh.ray.org_z[j] = r.origin.z;
+            rh.ray.dir_x[j] = r.direction.x, rh.ray.dir_y[j] = r.direction.y, rh.ray.dir_z[j] = r.direction.z;
+            rh.ray.tnear[j] = 0, rh.ray.tfar[j] = ends ? (*ends)[i < rays.size() ? i : first] : infinity<T>, rh.ray.mask[j] = ~0u;
+            rh.hit.geomID[j] = RTC_INVALID_GEOMETRY_ID;
+        }
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        long hits = 0;
+        if (ends) {
+            rtcOccluded8(valid, scene_, &context, &rh.ray);
+            for (int j = 0; j < 8; ++j) hits += valid[j] != 0 && rh.ray.tfar[j] < 0;
+        } else {
+            rtcIntersect8(valid, scene_, &context, &rh);
+            for (int j = 0; j < 8; ++j) hits += valid[j] != 0 && rh.hit.geomID[j] != RTC_INVALID_GEOMETRY_ID;
+        }
+        return hits;
+    }
 
 private:
     RTCDevice device_;
@@ -76,18 +116,19 @@ private:
 int main(int argc, char** argv)
 {
     if (argc < 5) {
-        std::fprintf(stderr, "usage: bench_mesh_rays bunny.obj bunny|sphere|terrain primary|bounce|shadow scene|mesh [passes]\n");
+        std::fprintf(stderr, "usage: bench_mesh_rays bunny.obj bunny|sphere|terrain primary|bounce|shadow|leak scene|mesh|embree[-hq|-robust|-compact|8] [passes] [embree-isa]\n");
         return 2;
     }
     const std::string kind = argv[3], query = argv[4];
     const int passes = argc > 5 ? std::atoi(argv[5]) : 5;
-    if ((kind != "primary" && kind != "bounce" && kind != "shadow") || (query != "scene" && query != "mesh" && query != "embree") || passes < 1) {
-        std::fprintf(stderr, "bench_mesh_rays: rays must be primary, bounce or shadow, query scene, mesh or embree, passes >= 1; got '%s' '%s' %d\n",
+    const bool embree_query = query == "embree" || query == "embree-hq" || query == "embree-robust" || query == "embree-compact" || query == "embree8";
+    if ((kind != "primary" && kind != "bounce" && kind != "shadow" && kind != "leak") || (query != "scene" && query != "mesh" && !embree_query) || passes < 1) {
+        std::fprintf(stderr, "bench_mesh_rays: rays must be primary, bounce, shadow or leak, query scene, mesh or embree[-hq|-robust|-compact|8], passes >= 1; got '%s' '%s' %d\n",
                      kind.c_str(), query.c_str(), passes);
         return 2;
     }
 #if !PRISM_BENCH_EMBREE
-    if (query == "embree") {
+    if (embree_query) {
         std::fprintf(stderr, "bench_mesh_rays: built without Embree (libembree-dev): no 'embree' query\n");
         return 2;
     }
@@ -108,7 +149,25 @@ int main(int argc, char** argv)
             const T u = (T(2) * (T(x) + T(0.5)) / T(1000) - T(1)) * scale, v = (T(1) - T(2) * (T(y) + T(0.5)) / T(1000)) * scale;
             rays.push_back({eye, normalize(forward + u * right + v * up)});
         }
-    if (kind != "primary") {
+    if (kind == "leak") {
+        // Rays that must hit a closed mesh: from points inside it through each of its
+        // vertices and each edge's midpoint (where a test that is not watertight lets
+        // rays through), counted as misses.
+        if (std::string(argv[2]) != "sphere") {
+            std::fprintf(stderr, "bench_mesh_rays: leak rays are for the closed sphere, got '%s'\n", argv[2]);
+            return 2;
+        }
+        rays.clear();
+        const Vec3<T> inside[] = {{0, 0, 0}, {T(0.1), T(-0.2), T(0.3)}, {T(-0.45), T(0.05), T(0.2)}};
+        for (const Vec3<T>& o : inside) {
+            for (const Vec3<T>& p : buffers.positions) rays.push_back({o, normalize(p - o)});
+            for (const TriangleIndices& f : buffers.triangles)
+                for (int i = 0; i < 3; ++i) {
+                    const Vec3<T> mid = (buffers.positions[f[std::size_t(i)]] + buffers.positions[f[std::size_t((i + 1) % 3)]]) * T(0.5);
+                    rays.push_back({o, normalize(mid - o)});
+                }
+        }
+    } else if (kind != "primary") {
         std::vector<Ray<T>> next;
         Random rng(7u, 7u);
         for (const Ray<T>& r : rays)
@@ -125,12 +184,16 @@ int main(int argc, char** argv)
 
 #if PRISM_BENCH_EMBREE
     std::optional<EmbreeMesh> embree;
-    if (query == "embree") embree.emplace(buffers, argc > 6 ? argv[6] : "");
+    if (embree_query) embree.emplace(buffers, argc > 6 ? argv[6] : "", query);
 #endif
     long hits = 0;
     const auto start = std::chrono::steady_clock::now();
     for (int pass = 0; pass < passes; ++pass) {
 #if PRISM_BENCH_EMBREE
+        if (embree && query == "embree8") {
+            for (std::size_t i = 0; i < rays.size(); i += 8) hits += embree->hit8(rays, kind == "shadow" ? &ends : nullptr, i);
+            continue;
+        }
         if (embree) {
             if (kind == "shadow")
                 for (std::size_t i = 0; i < rays.size(); ++i) hits += embree->occluded(rays[i], ends[i]);
@@ -151,5 +214,6 @@ int main(int argc, char** argv)
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s %s %s: %zu rays, %d passes, %.3f Mrays/s, %ld hits\n", argv[2], kind.c_str(), query.c_str(), rays.size(), passes,
                 double(rays.size()) * passes / seconds / 1e6, hits);
+    if (kind == "leak") std::printf("leaks: %ld of %zu rays from inside the closed mesh missed it\n", long(rays.size()) * passes - hits, rays.size() * std::size_t(passes));
     return 0;
 }
