@@ -15,7 +15,9 @@
 // Agreement: the share of rays where both hit, or both miss, with t within 1e-3.
 // Embree picks its kernels by the CPU at run time (AVX2 or AVX-512 where there are);
 // prism is compiled for the baseline x86-64 (SSE2, 4-wide nodes), or for AVX2 as
-// bench_bvh_vs_embree_avx2 (8-wide nodes), whose files are named ..._prism-avx2.
+// bench_bvh_vs_embree_avx2 (8-wide nodes), whose files are named ..._prism-avx2, or for the
+// machine it is built on (-march=native: AVX-512 where there is, as Embree picks) as
+// bench_bvh_vs_embree_native, whose files are named ..._prism-native.
 // `embree-isa` (sse4.2, avx2, ...) holds Embree to one instruction set, to tell the
 // algorithms apart from the ISA; that run writes bvh_vs_embree[_prism-avx2]_<isa>.csv.
 //   bench_bvh_vs_embree [results-folder] [repeats] [bunny.obj] [embree-isa]
@@ -277,7 +279,9 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "bench_bvh_vs_embree: repeats must be >= 1, got '%s'\n", argv[2]);
         return 2;
     }
-#if defined(__AVX2__)
+#if defined(PRISM_BENCH_NATIVE)
+    const std::string name = "bvh_vs_embree_prism-native";
+#elif defined(__AVX2__)
     const std::string name = "bvh_vs_embree_prism-avx2";
 #else
     const std::string name = "bvh_vs_embree";

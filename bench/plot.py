@@ -599,6 +599,8 @@ def main():
         embree_chart(rows, "bvh_vs_embree_sse4.2.png", "Embree 3 held to SSE4.2")
     if (rows := read("bvh_vs_embree_prism-avx2.csv")):
         embree_chart(rows, "bvh_vs_embree_prism-avx2.png", "Embree 3", "prism (AVX2 + FMA, 8-wide)")
+    if (rows := read("bvh_vs_embree_prism-native.csv")):
+        embree_chart(rows, "bvh_vs_embree_prism-native.png", "Embree 3", "prism (-march=native: AVX-512, 8-wide)")
     if (rows := read("bvh_vs_embree_prism-avx2_avx2.csv")):
         embree_chart(rows, "bvh_vs_embree_prism-avx2_avx2.png", "Embree 3 held to AVX2", "prism (AVX2, 8-wide)")
     if (rows := read("bvh_quality.csv")):

@@ -23,6 +23,10 @@ python=/usr/bin/python3
 if grep -qw avx2 /proc/cpuinfo && grep -qw fma /proc/cpuinfo; then
   "$root/build/release/bench/bench_bvh_vs_embree_avx2" "$results" 5 "$root/assets/bunny.obj" | tee "$results/bvh_vs_embree_prism-avx2.txt"
   "$root/build/release/bench/bench_bvh_vs_embree_avx2" "$results" 5 "$root/assets/bunny.obj" avx2 | tee "$results/bvh_vs_embree_prism-avx2_avx2.txt"
+  # prism for this machine's own instruction set, against Embree as it comes.
+  if [[ -x "$root/build/release/bench/bench_bvh_vs_embree_native" ]]; then
+    "$root/build/release/bench/bench_bvh_vs_embree_native" "$results" 5 "$root/assets/bunny.obj" | tee "$results/bvh_vs_embree_prism-native.txt"
+  fi
   # What spatial splits, robust mode and packets are worth to Embree, beside prism's mesh.
   "$python" "$root/bench/mesh_peers.py" "$root/build/release/bench/bench_mesh_rays" "$root/assets/bunny.obj" 3 --out "$results/mesh_peers.csv" | tee "$results/mesh_peers.txt"
   "$python" "$root/bench/mesh_peers.py" --plot "$results/mesh_peers.csv" "$results/mesh_peers.png"
