@@ -7213,6 +7213,7 @@ public:
     Transformed(S shape, const Transform<T>& to_world) : shape_(std::move(shape)), to_world_(to_world), bounds_(world_bounds())
     {
         bounded_ = bounds_.bounded();
+        if (bounded_) near_ = NearBox<T>(bounds_);
     }
 
     /// The shape, in its own frame.
@@ -7331,7 +7332,7 @@ private:
     {
         // A float ray from far off is first brought near the shape's box (core/aabb.hpp):
         // the transform's rounding of a far origin is as large as the shape.
-        const NearRay<T> near = bounded_ ? brought_near(world, bounds_) : NearRay<T>{world};
+        const NearRay<T> near = bounded_ ? brought_near(world, near_) : NearRay<T>{world};
         const Ray<T>& ray = near.ray;
         Ray<T> local{to_world_.inverse_point(ray.origin), to_world_.inverse_vector(ray.direction)};
         const T length2 = length_squared(local.direction);
@@ -7380,6 +7381,7 @@ private:
     S shape_;
     Transform<T> to_world_;
     Aabb<T> bounds_;
+    NearBox<T> near_; ///< the bounds as brought_near asks them, worked out once
     bool bounded_ = false;
 };
 
