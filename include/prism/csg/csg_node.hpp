@@ -57,6 +57,10 @@ public:
     constexpr CsgNode(A a, B b) : a_(std::move(a)), b_(std::move(b)), bounds_(Op::bounds(a_.bounds(), b_.bounds()))
     {
         bounded_ = bounds_.bounded();
+        if (bounded_) {
+            centre_ = T(0.5) * (bounds_.lo + bounds_.hi);
+            far2_ = T(64) * length_squared(bounds_.hi - bounds_.lo);
+        }
     }
 
     /// Nested construction for the variadic forms: CsgNode<Op, A, CsgNode<Op, B, C>>(a, b, c).
@@ -89,9 +93,8 @@ public:
         // the same line from a point near the node, t0 along it, and the crossings moved
         // back by t0; the range is applied to them afterwards, in the ray's own t.
         if (bounded_) {
-            const Vec3<T> centre = T(0.5) * (bounds_.lo + bounds_.hi), extent = bounds_.hi - bounds_.lo;
-            const Vec3<T> to_centre = centre - ray.origin;
-            if (length_squared(to_centre) > T(64) * length_squared(extent)) {
+            const Vec3<T> to_centre = centre_ - ray.origin;
+            if (length_squared(to_centre) > far2_) {
                 const T t0 = dot(to_centre, ray.direction) / dot(ray.direction, ray.direction);
                 if (is_finite(t0)) return moved_back<Surface>(ray, range, t0);
             }
@@ -175,6 +178,8 @@ private:
     A a_;
     B b_;
     Aabb<T> bounds_;
+    Vec3<T> centre_{T(0)}; ///< the box's centre (bounded only)
+    T far2_ = T(0);        ///< 64 times the box's squared diagonal: a ray from farther off is asked from near the node
     bool bounded_ = false;
 };
 
