@@ -18,11 +18,20 @@ import sys
 
 
 def rate(program, bunny, mesh, kind, query):
+    """bench_mesh_rays' Mrays/s for one mesh, kind of ray and query, pinned to core 1."""
     out = subprocess.run(["taskset", "-c", "1", program, bunny, mesh, kind, query, "3"], capture_output=True, text=True, check=True).stdout
     found = re.search(r"([\d.]+) Mrays/s", out)
     if not found:
-        sys.exit(f"mesh_ab: no rate from {program} {mesh} {kind} {query}:\n{out}")
+        sys.exit(f"no rate from {program} {mesh} {kind} {query}:\n{out}")
     return float(found.group(1))
+
+
+def write_csv(path, rows):
+    """rows (dicts with the same keys) as a CSV file at path."""
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
 
 
 def main():
@@ -50,10 +59,7 @@ def main():
         print(f"{case:22s} A {max(a):6.2f}  B {max(b):6.2f} Mrays/s; B/A: best {max(b) / max(a):.3f}, median pair {median:.3f}", flush=True)
         rows.append({"case": case, "a_best_mrays": max(a), "b_best_mrays": max(b), "best_ratio": max(b) / max(a), "median_pair_ratio": median})
     if args.out:
-        with open(args.out, "w", newline="") as f:
-            writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-            writer.writeheader()
-            writer.writerows(rows)
+        write_csv(args.out, rows)
 
 
 if __name__ == "__main__":

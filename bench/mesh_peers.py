@@ -12,18 +12,10 @@ best and median rays/s and the median of its run-by-run ratios to `embree` in th
 """
 import argparse
 import csv
-import re
 import statistics
-import subprocess
 import sys
 
-
-def rate(program, bunny, mesh, kind, query):
-    out = subprocess.run(["taskset", "-c", "1", program, bunny, mesh, kind, query, "3"], capture_output=True, text=True, check=True).stdout
-    found = re.search(r"([\d.]+) Mrays/s", out)
-    if not found:
-        sys.exit(f"mesh_peers: no rate from {program} {mesh} {kind} {query}:\n{out}")
-    return float(found.group(1))
+from mesh_ab import rate, write_csv
 
 
 def plot(csv_path, png_path):
@@ -81,10 +73,7 @@ def main():
                 line.append(f"{q} {statistics.median(rates[q]):6.2f} ({ratio:.2f})")
             print("  ".join(line), flush=True)
     if args.out:
-        with open(args.out, "w", newline="") as f:
-            writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-            writer.writeheader()
-            writer.writerows(rows)
+        write_csv(args.out, rows)
 
 
 if __name__ == "__main__":
