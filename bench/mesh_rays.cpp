@@ -25,6 +25,7 @@
 #include "embree_rays.hpp"
 #endif
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -63,14 +64,21 @@ public:
         : device_(rtcNewDevice(("threads=1" + (isa.empty() ? "" : ",isa=" + isa)).c_str()))
     {
         if (device_ == nullptr) throw std::runtime_error("rtcNewDevice failed");
+        rtcSetDeviceMemoryMonitorFunction(device_, &EmbreeMesh::count_bytes, &bytes_);
         scene_ = rtcNewScene(device_);
         if (variant == "embree-robust") rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
         if (variant == "embree-compact") rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_COMPACT);
+        // (The scene's quality chooses the builder; a geometry's is a hint Embree 3 reads
+        // only for a scene of low quality.)
+        if (variant == "embree-hq") rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
         bench::embree_add_triangles(device_, scene_, mesh, variant == "embree-hq" ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM);
         rtcCommitScene(scene_);
     }
     EmbreeMesh(const EmbreeMesh&) = delete;
     EmbreeMesh& operator=(const EmbreeMesh&) = delete;
+    /// Bytes Embree holds for the scene once built (its memory monitor's sum: the vertex and
+    /// index buffers, the tree and its leaves).
+    [[nodiscard]] long long bytes() const { return bytes_.load(); }
     ~EmbreeMesh()
     {
         rtcReleaseScene(scene_);
@@ -106,6 +114,13 @@ public:
     }
 
 private:
+    static bool count_bytes(void* sum, ssize_t bytes, bool) noexcept
+    {
+        static_cast<std::atomic<long long>*>(sum)->fetch_add(bytes);
+        return true;
+    }
+
+    std::atomic<long long> bytes_{0};
     RTCDevice device_;
     RTCScene scene_ = nullptr;
 };
@@ -185,6 +200,9 @@ int main(int argc, char** argv)
 #if PRISM_BENCH_EMBREE
     std::optional<EmbreeMesh> embree;
     if (embree_query) embree.emplace(buffers, argc > 6 ? argv[6] : "", query);
+    if (embree_query) std::printf("memory: Embree %.2f MB (its buffers, tree and leaves)\n", double(embree->bytes()) / 1e6);
+    else std::printf("memory: prism %.2f MB (its corner blocks, tree and leaf order), %.2f MB of positions and indices given\n", double(mesh.memory_bytes()) / 1e6,
+                     double(buffers.positions.size() * sizeof(buffers.positions[0]) + buffers.triangles.size() * sizeof(buffers.triangles[0])) / 1e6);
 #endif
     long hits = 0;
     const auto start = std::chrono::steady_clock::now();
