@@ -3853,6 +3853,48 @@ public:
     [[nodiscard]] Vec3<T> point(const Vec3<T>& p) const noexcept { return affine_point(m_, p); }
     /// v transformed as a direction (no translation).
     [[nodiscard]] Vec3<T> vector(const Vec3<T>& v) const noexcept { return affine_vector(m_, v); }
+    /// The box around `box` carried by the transform: around the images of its eight
+    /// corners, grown by their rounding and rounded outward. An empty box stays empty; one
+    /// unbounded on some axis gives every point.
+    [[nodiscard]] Aabb<T> box(const Aabb<T>& box) const noexcept
+    {
+        if (box.empty()) return box;
+        if (!is_finite(box.lo) || !is_finite(box.hi)) return Aabb<T>::universe();
+        Aabb<T> out;
+        for (int corner = 0; corner < 8; ++corner) {
+            const Vec3<T> p{corner & 1 ? box.hi.x : box.lo.x, corner & 2 ? box.hi.y : box.lo.y, corner & 4 ? box.hi.z : box.lo.z};
+            const Vec3<T> w = point(p);
+            out.lo = component_min(out.lo, w);
+            out.hi = component_max(out.hi, w);
+        }
+        const Vec3<T> pad = gamma<T>(4) * (abs(out.lo) + abs(out.hi));
+        return Aabb<T>{out.lo - pad, out.hi + pad}.rounded_out();
+    }
+
+    /// The box around the ball of `radius` about `centre` carried by the transform: the
+    /// ellipsoid's own box, whose half-width on axis i is the radius times the length of
+    /// row i of the linear part (the most that axis gains over the unit ball). Far
+    /// tighter than the box around its box's corners under a rotation (a unit ball turned
+    /// 45 degrees about two axes has a box 1.7 times as wide). Worked out in double and
+    /// rounded outward.
+    [[nodiscard]] Aabb<T> sphere_box(const Vec3<T>& centre, T radius) const noexcept
+    {
+        Aabb<T> out;
+        for (int i = 0; i < 3; ++i) {
+            double c = double(m_[3][i]), row2 = 0.0;
+            for (int j = 0; j < 3; ++j) {
+                c += double(m_[j][i]) * double(centre[j]);
+                row2 += double(m_[j][i]) * double(m_[j][i]);
+            }
+            const double half = double(radius) * std::sqrt(row2);
+            // (Every term above is within a few parts in 10^16 of its exact value.)
+            const double slack = 1e-12 * (std::abs(c) + half);
+            out.lo[i] = next_float_down(T(c - half - slack));
+            out.hi[i] = next_float_up(T(c + half + slack));
+        }
+        return out;
+    }
+
     /// p carried back by the inverse.
     [[nodiscard]] Vec3<T> inverse_point(const Vec3<T>& p) const noexcept { return affine_point(inverse_, p); }
     /// v carried back by the inverse (no translation).
@@ -4276,6 +4318,226 @@ template <Shape S>
 
 } // namespace prism
 
+// ---- prism/geometry/transformed.hpp ----
+// Transformed: any shape moved by an affine transform (rotate, scale, translate, shear).
+
+
+#include <cstdint>
+#include <optional>
+#include <utility>
+
+namespace prism {
+
+/// A shape that knows its box under a transform better than the box around its own
+/// box's transformed corners: `bounds_under(transform)` (a CSG node, from its children's).
+template <class S>
+concept HasBoundsUnder = Shape<S> && requires(const S& shape, const Transform<typename S::scalar_type>& transform) {
+    { shape.bounds_under(transform) } -> std::same_as<Aabb<typename S::scalar_type>>;
+};
+
+/// The box around `shape` carried by `transform`: its own (HasBoundsUnder), else the box
+/// around its box's transformed corners, cut down where it has a sphere of its own to
+/// that sphere's ellipsoid's box (a turned ball's box is its own size, not its box's
+/// corners' 1.7 times).
+template <Shape S>
+[[nodiscard]] Aabb<typename S::scalar_type> bounds_under(const S& shape, const Transform<typename S::scalar_type>& transform) noexcept
+{
+    if constexpr (HasBoundsUnder<S>) {
+        return shape.bounds_under(transform);
+    } else {
+        const Aabb<typename S::scalar_type> box = transform.box(shape.bounds());
+        if constexpr (HasBoundingSphere<S>) {
+            const auto ball = shape.bounding_sphere();
+            const auto own = transform.sphere_box(ball.center, ball.radius);
+            return {component_max(box.lo, own.lo), component_min(box.hi, own.hi)};
+        }
+        return box;
+    }
+}
+
+/// A shape under an affine transform from its own coordinates to the world's. The ray
+/// is carried into the shape's coordinates without renormalising its direction, so t
+/// means the same in both; normals map by the inverse transpose, so they stay right
+/// under non-uniform scale; hit-point error bounds are carried through the matrix.
+template <Shape S>
+class Transformed {
+public:
+    /// The shape's precision.
+    using scalar_type = typename S::scalar_type;
+    /// Shorthand for scalar_type.
+    using T = scalar_type;
+    /// As many crossings as the shape has.
+    static constexpr std::size_t max_crossings = S::max_crossings;
+    /// The shape's CSG depth (Crossing::path passes through).
+    static constexpr std::size_t csg_depth = detail::csg_depth<S>();
+
+    // Transformed Public Methods
+
+    /// `shape` moved into the world by `to_world`.
+    Transformed(S shape, const Transform<T>& to_world) : shape_(std::move(shape)), to_world_(to_world), bounds_(world_bounds())
+    {
+        bounded_ = bounds_.bounded();
+        if (bounded_) near_ = NearBox<T>(bounds_);
+    }
+
+    /// The shape, in its own frame.
+    [[nodiscard]] const S& shape() const noexcept { return shape_; }
+    /// The transform from the shape's frame to the world.
+    [[nodiscard]] const Transform<T>& transform() const noexcept { return to_world_; }
+    /// The world box around the shape's transformed box, rounded outward.
+    [[nodiscard]] Aabb<T> bounds() const noexcept { return bounds_; }
+
+    /// Whether world point p is inside the shape.
+    [[nodiscard]] bool contains(const Vec3<T>& p) const noexcept
+    {
+        return shape_.contains(to_world_.inverse_point(p));
+    }
+
+    /// Every crossing of the world `ray` within `range`: the shape's, in the shape's frame, carried back with normals by the inverse transpose and error bounds through the matrix.
+    template <bool Surface = true>
+    [[nodiscard]] Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        // A ray that cannot come near the bounds cannot cross the shape.
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return {};
+        const LocalRay local = to_local(ray);
+        const T dt = local.dt;
+        // The end of the range is carried over two float steps wide and applied again to
+        // the world t: the result keeps every crossing before range.max however the
+        // subtraction rounds, so a query over a shorter range finds the same first one.
+        Crossings<T, max_crossings> out = shape_.template crossings<Surface>(local.ray, local.range(range));
+        std::size_t kept = 0;
+        for (std::size_t k = 0; k < out.count; ++k) {
+            out.items[k].t += dt;
+            if (out.items[k].t < range.max) out.items[kept++] = out.items[k];
+        }
+        out.count = kept;
+        if constexpr (!Surface) return out;
+        for (std::size_t k = 0; k < out.count; ++k) to_world(out.items[k]);
+        return out;
+    }
+
+    /// crossings<false>(ray, range).front().t (infinity if none): the shape's own lean
+    /// query, when it has one, in its coordinates.
+    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        SurfaceHint<T> unused;
+        return first_crossing_with(ray, range, unused);
+    }
+
+    /// Whether the ray crosses the shape within `range` (a shadow ray's query).
+    [[nodiscard]] bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
+    {
+        return first_crossing(ray, range) < infinity<T>;
+    }
+
+    /// first_crossing, with the shape's hint for surface_crossing (a mesh's triangle).
+    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
+        requires HasHintedSurface<S>
+    {
+        return first_crossing_with(ray, range, hint);
+    }
+
+    /// crossings(ray, range).front(), from the shape's hint.
+    [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, const SurfaceHint<T>& hint) const noexcept
+        requires HasHintedSurface<S>
+    {
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return std::nullopt;
+        const LocalRay local = to_local(ray);
+        std::optional<Crossing<T>> c = shape_.surface_crossing(local.ray, local.range(range), hint);
+        if (!c) return c;
+        c->t += local.dt;
+        if (!(c->t < range.max)) return std::nullopt;
+        to_world(*c);
+        return c;
+    }
+
+    /// Surface coordinates: the shape's own at the crossing carried back into its frame,
+    /// their derivatives carried out to the world's.
+    void coordinates(Crossing<T>& c) const noexcept
+        requires HasCoordinates<S>
+    {
+        Crossing<T> local = c;
+        local.point = to_world_.inverse_point(c.point);
+        local.normal = normalize(to_world_.inverse_normal(c.normal));
+        shape_.coordinates(local);
+        c.uv = local.uv;
+        c.dpdu = to_world_.vector(local.dpdu);
+        c.dpdv = to_world_.vector(local.dpdv);
+    }
+
+private:
+    /// The shape's first crossing (and its hint, where it gives one), in world t.
+    [[nodiscard]] T first_crossing_with(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
+    {
+        if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
+        const LocalRay local = to_local(ray);
+        const T t = prism::first_crossing(shape_, local.ray, local.range(range), hint) + local.dt;
+        return t < range.max ? t : infinity<T>;
+    }
+
+    struct LocalRay {
+        Ray<T> ray;
+        T dt;       ///< local t + dt = world t
+        T moved{0}; ///< how far along the world ray its origin was brought before the transform
+
+        /// The world range in the shape's coordinates. (Its start not moved by the
+        /// transform's own step past its rounding: no crossing of the shape lies there.)
+        [[nodiscard]] Interval<T> range(const Interval<T>& world) const noexcept
+        {
+            return {world.min - moved, next_float_up(next_float_up(world.max - dt))};
+        }
+    };
+
+    /// The ray in the shape's coordinates. The new origin is off by the rounding of that
+    /// transform, which can be more than a spawned ray's offset from the surface it
+    /// leaves: it is moved forward along the ray past that error, and t measured from
+    /// there (pbrt-v4, Transform::ApplyInverse(Ray)).
+    [[nodiscard]] LocalRay to_local(const Ray<T>& world) const noexcept
+    {
+        // A float ray from far off is first brought near the shape's box (core/aabb.hpp):
+        // the transform's rounding of a far origin is as large as the shape.
+        const NearRay<T> near = bounded_ ? brought_near(world, near_) : NearRay<T>{world};
+        const Ray<T>& ray = near.ray;
+        Ray<T> local{to_world_.inverse_point(ray.origin), to_world_.inverse_vector(ray.direction)};
+        const T length2 = length_squared(local.direction);
+        T dt = length2 > T(0) ? dot(abs(local.direction), to_world_.inverse_point_error(ray.origin)) / length2 : T(0);
+        if (!is_finite(dt)) dt = T(0);
+        local.origin += dt * local.direction;
+        return {local, T(near.shift + double(dt)), T(near.shift)};
+    }
+
+    /// A crossing found in the shape's coordinates, carried to the world's.
+    void to_world(Crossing<T>& c) const noexcept
+    {
+        // The bound also covers the rounding with which a ray spawned here is carried
+        // back into the shape's coordinates, so that it starts on the side it leaves by
+        // there too (moving its origin forward along the ray, above, does not cover that
+        // for a ray leaving at a grazing angle).
+        const Vec3<T> world = to_world_.point(c.point);
+        c.error = to_world_.point_error(c.point, c.error + to_world_.inverse_point_error(world));
+        c.point = world;
+        const bool flat = c.shades_flat();
+        c.normal = normalize(to_world_.normal(c.normal));
+        c.shading = flat ? c.normal : normalize(to_world_.normal(c.shading));
+        // A mesh's coordinates come with its crossing.
+        c.dpdu = to_world_.vector(c.dpdu);
+        c.dpdv = to_world_.vector(c.dpdv);
+    }
+
+    /// The world box around the shape: its own under the transform where it has one (a
+    /// sphere's ellipsoid, a CSG node's from its children's), else the box around its
+    /// box's transformed corners (bounds_under).
+    [[nodiscard]] Aabb<T> world_bounds() const noexcept { return bounds_under(shape_, to_world_); }
+
+    S shape_;
+    Transform<T> to_world_;
+    Aabb<T> bounds_;
+    NearBox<T> near_; ///< the bounds as brought_near asks them, worked out once
+    bool bounded_ = false;
+};
+
+} // namespace prism
+
 // ---- prism/csg/csg_node.hpp ----
 // CsgNode: the boolean combination of two solids, by merging their crossing lists.
 //
@@ -4352,6 +4614,13 @@ public:
     /// The box around the result (conservative: Op of the children's boxes).
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
 
+    /// The box around the result carried by `transform`: Op of the children's own
+    /// (bounds_under), tighter than the box around this box's corners.
+    [[nodiscard]] Aabb<T> bounds_under(const Transform<T>& transform) const noexcept
+    {
+        return Op::bounds(prism::bounds_under(a_, transform), prism::bounds_under(b_, transform));
+    }
+
     /// Whether p is inside: Op of whether it is inside each child.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return Op::combine(a_.contains(p), b_.contains(p)); }
 
@@ -4399,6 +4668,11 @@ private:
     {
         Crossings<T, max_crossings> out;
         const auto ca = a_.template crossings<Surface>(ray, range);
+        // A result inside the first child only (an intersection, a difference): a ray
+        // that stays outside it crosses nothing, whatever the second child does.
+        if constexpr (!Op::combine(false, false) && !Op::combine(false, true)) {
+            if (ca.empty() && !ca.inside_at_start) return out;
+        }
         const auto cb = b_.template crossings<Surface>(ray, range);
         bool in_a = ca.inside_at_start, in_b = cb.inside_at_start;
         bool inside = Op::combine(in_a, in_b);
@@ -7183,212 +7457,6 @@ private:
 
 static_assert(Shape<Sphere<float>>);
 static_assert(Shape<Sphere<double>>);
-
-} // namespace prism
-
-// ---- prism/geometry/transformed.hpp ----
-// Transformed: any shape moved by an affine transform (rotate, scale, translate, shear).
-
-
-#include <cstdint>
-#include <optional>
-#include <utility>
-
-namespace prism {
-
-/// A shape under an affine transform from its own coordinates to the world's. The ray
-/// is carried into the shape's coordinates without renormalising its direction, so t
-/// means the same in both; normals map by the inverse transpose, so they stay right
-/// under non-uniform scale; hit-point error bounds are carried through the matrix.
-template <Shape S>
-class Transformed {
-public:
-    /// The shape's precision.
-    using scalar_type = typename S::scalar_type;
-    /// Shorthand for scalar_type.
-    using T = scalar_type;
-    /// As many crossings as the shape has.
-    static constexpr std::size_t max_crossings = S::max_crossings;
-    /// The shape's CSG depth (Crossing::path passes through).
-    static constexpr std::size_t csg_depth = detail::csg_depth<S>();
-
-    // Transformed Public Methods
-
-    /// `shape` moved into the world by `to_world`.
-    Transformed(S shape, const Transform<T>& to_world) : shape_(std::move(shape)), to_world_(to_world), bounds_(world_bounds())
-    {
-        bounded_ = bounds_.bounded();
-        if (bounded_) near_ = NearBox<T>(bounds_);
-    }
-
-    /// The shape, in its own frame.
-    [[nodiscard]] const S& shape() const noexcept { return shape_; }
-    /// The transform from the shape's frame to the world.
-    [[nodiscard]] const Transform<T>& transform() const noexcept { return to_world_; }
-    /// The world box around the shape's transformed box, rounded outward.
-    [[nodiscard]] Aabb<T> bounds() const noexcept { return bounds_; }
-
-    /// Whether world point p is inside the shape.
-    [[nodiscard]] bool contains(const Vec3<T>& p) const noexcept
-    {
-        return shape_.contains(to_world_.inverse_point(p));
-    }
-
-    /// Every crossing of the world `ray` within `range`: the shape's, in the shape's frame, carried back with normals by the inverse transpose and error bounds through the matrix.
-    template <bool Surface = true>
-    [[nodiscard]] Crossings<T, max_crossings> crossings(const Ray<T>& ray, Interval<T> range) const noexcept
-    {
-        // A ray that cannot come near the bounds cannot cross the shape.
-        if (bounded_ && !bounds_.reached_after(ray, range.min)) return {};
-        const LocalRay local = to_local(ray);
-        const T dt = local.dt;
-        // The end of the range is carried over two float steps wide and applied again to
-        // the world t: the result keeps every crossing before range.max however the
-        // subtraction rounds, so a query over a shorter range finds the same first one.
-        Crossings<T, max_crossings> out = shape_.template crossings<Surface>(local.ray, local.range(range));
-        std::size_t kept = 0;
-        for (std::size_t k = 0; k < out.count; ++k) {
-            out.items[k].t += dt;
-            if (out.items[k].t < range.max) out.items[kept++] = out.items[k];
-        }
-        out.count = kept;
-        if constexpr (!Surface) return out;
-        for (std::size_t k = 0; k < out.count; ++k) to_world(out.items[k]);
-        return out;
-    }
-
-    /// crossings<false>(ray, range).front().t (infinity if none): the shape's own lean
-    /// query, when it has one, in its coordinates.
-    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
-    {
-        SurfaceHint<T> unused;
-        return first_crossing_with(ray, range, unused);
-    }
-
-    /// Whether the ray crosses the shape within `range` (a shadow ray's query).
-    [[nodiscard]] bool any_crossing(const Ray<T>& ray, Interval<T> range) const noexcept
-    {
-        return first_crossing(ray, range) < infinity<T>;
-    }
-
-    /// first_crossing, with the shape's hint for surface_crossing (a mesh's triangle).
-    [[nodiscard]] T first_crossing(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
-        requires HasHintedSurface<S>
-    {
-        return first_crossing_with(ray, range, hint);
-    }
-
-    /// crossings(ray, range).front(), from the shape's hint.
-    [[nodiscard]] std::optional<Crossing<T>> surface_crossing(const Ray<T>& ray, Interval<T> range, const SurfaceHint<T>& hint) const noexcept
-        requires HasHintedSurface<S>
-    {
-        if (bounded_ && !bounds_.reached_after(ray, range.min)) return std::nullopt;
-        const LocalRay local = to_local(ray);
-        std::optional<Crossing<T>> c = shape_.surface_crossing(local.ray, local.range(range), hint);
-        if (!c) return c;
-        c->t += local.dt;
-        if (!(c->t < range.max)) return std::nullopt;
-        to_world(*c);
-        return c;
-    }
-
-    /// Surface coordinates: the shape's own at the crossing carried back into its frame,
-    /// their derivatives carried out to the world's.
-    void coordinates(Crossing<T>& c) const noexcept
-        requires HasCoordinates<S>
-    {
-        Crossing<T> local = c;
-        local.point = to_world_.inverse_point(c.point);
-        local.normal = normalize(to_world_.inverse_normal(c.normal));
-        shape_.coordinates(local);
-        c.uv = local.uv;
-        c.dpdu = to_world_.vector(local.dpdu);
-        c.dpdv = to_world_.vector(local.dpdv);
-    }
-
-private:
-    /// The shape's first crossing (and its hint, where it gives one), in world t.
-    [[nodiscard]] T first_crossing_with(const Ray<T>& ray, Interval<T> range, SurfaceHint<T>& hint) const noexcept
-    {
-        if (bounded_ && !bounds_.reached_after(ray, range.min)) return infinity<T>;
-        const LocalRay local = to_local(ray);
-        const T t = prism::first_crossing(shape_, local.ray, local.range(range), hint) + local.dt;
-        return t < range.max ? t : infinity<T>;
-    }
-
-    struct LocalRay {
-        Ray<T> ray;
-        T dt;       ///< local t + dt = world t
-        T moved{0}; ///< how far along the world ray its origin was brought before the transform
-
-        /// The world range in the shape's coordinates. (Its start not moved by the
-        /// transform's own step past its rounding: no crossing of the shape lies there.)
-        [[nodiscard]] Interval<T> range(const Interval<T>& world) const noexcept
-        {
-            return {world.min - moved, next_float_up(next_float_up(world.max - dt))};
-        }
-    };
-
-    /// The ray in the shape's coordinates. The new origin is off by the rounding of that
-    /// transform, which can be more than a spawned ray's offset from the surface it
-    /// leaves: it is moved forward along the ray past that error, and t measured from
-    /// there (pbrt-v4, Transform::ApplyInverse(Ray)).
-    [[nodiscard]] LocalRay to_local(const Ray<T>& world) const noexcept
-    {
-        // A float ray from far off is first brought near the shape's box (core/aabb.hpp):
-        // the transform's rounding of a far origin is as large as the shape.
-        const NearRay<T> near = bounded_ ? brought_near(world, near_) : NearRay<T>{world};
-        const Ray<T>& ray = near.ray;
-        Ray<T> local{to_world_.inverse_point(ray.origin), to_world_.inverse_vector(ray.direction)};
-        const T length2 = length_squared(local.direction);
-        T dt = length2 > T(0) ? dot(abs(local.direction), to_world_.inverse_point_error(ray.origin)) / length2 : T(0);
-        if (!is_finite(dt)) dt = T(0);
-        local.origin += dt * local.direction;
-        return {local, T(near.shift + double(dt)), T(near.shift)};
-    }
-
-    /// A crossing found in the shape's coordinates, carried to the world's.
-    void to_world(Crossing<T>& c) const noexcept
-    {
-        // The bound also covers the rounding with which a ray spawned here is carried
-        // back into the shape's coordinates, so that it starts on the side it leaves by
-        // there too (moving its origin forward along the ray, above, does not cover that
-        // for a ray leaving at a grazing angle).
-        const Vec3<T> world = to_world_.point(c.point);
-        c.error = to_world_.point_error(c.point, c.error + to_world_.inverse_point_error(world));
-        c.point = world;
-        const bool flat = c.shades_flat();
-        c.normal = normalize(to_world_.normal(c.normal));
-        c.shading = flat ? c.normal : normalize(to_world_.normal(c.shading));
-        // A mesh's coordinates come with its crossing.
-        c.dpdu = to_world_.vector(c.dpdu);
-        c.dpdv = to_world_.vector(c.dpdv);
-    }
-
-    /// The box around the eight transformed corners of the shape's box.
-    [[nodiscard]] Aabb<T> world_bounds() const noexcept
-    {
-        const Aabb<T> local = shape_.bounds();
-        if (local.empty()) return local;
-        if (!is_finite(local.lo) || !is_finite(local.hi)) return Aabb<T>::universe();
-        Aabb<T> out;
-        for (int corner = 0; corner < 8; ++corner) {
-            const Vec3<T> p{corner & 1 ? local.hi.x : local.lo.x, corner & 2 ? local.hi.y : local.lo.y, corner & 4 ? local.hi.z : local.lo.z};
-            const Vec3<T> w = to_world_.point(p);
-            out.lo = component_min(out.lo, w);
-            out.hi = component_max(out.hi, w);
-        }
-        // Widen by the rounding of the corner transform, and round outward.
-        const Vec3<T> pad = gamma<T>(4) * (abs(out.lo) + abs(out.hi));
-        return Aabb<T>{out.lo - pad, out.hi + pad}.rounded_out();
-    }
-
-    S shape_;
-    Transform<T> to_world_;
-    Aabb<T> bounds_;
-    NearBox<T> near_; ///< the bounds as brought_near asks them, worked out once
-    bool bounded_ = false;
-};
 
 } // namespace prism
 
@@ -10653,6 +10721,31 @@ public:
         return from_bits(-low, negated_high);
     }
 
+    /// of(double(x)) for a float x with 0 <= x <= limit, from the float's own bits: x 2^64
+    /// = m 2^(e - 86), m its 24-bit significand and e its biased exponent (1 for a
+    /// denormal). A radiance sample of a float scene takes this one; the same integer.
+    [[nodiscard]] static constexpr BasicExactSum of_float(float x) noexcept
+    {
+        PRISM_ASSERT(x >= 0.0f && x <= float(limit));
+        const auto bits = std::bit_cast<std::uint32_t>(x);
+        const auto biased = int(bits >> 23); // (the sign bit is 0)
+        const std::uint64_t fraction = bits & ((std::uint32_t(1) << 23) - 1);
+        const std::uint64_t m = biased == 0 ? fraction : fraction | (std::uint64_t(1) << 23);
+        const int s = (biased == 0 ? 1 : biased) - 86; // below 169 (x < 2^128)
+        Integer low{}, high{};
+        if (s >= 128) { // to 168: m 2^(s - 128) < 2^64
+            high = Integer::from_words(m << (s - 128), 0);
+        } else if (s >= 64) {
+            low = Integer::from_words(0, m << (s - 64));
+            high = Integer::from_words((m >> 1) >> (127 - s), 0); // m >> (128 - s)
+        } else if (s >= 0) {
+            low = Integer::from_words(m << s, (m >> 1) >> (63 - s)); // m >> (64 - s), and 0 for s = 0
+        } else if (s > -25) {
+            low = Integer::from_words((m + (std::uint64_t(1) << (-s - 1))) >> -s, 0); // half up: away from zero
+        } // (s <= -25: m 2^s < 2^24 2^-25, nearer 0.)
+        return from_bits(low, high);
+    }
+
     /// Whether x is a sample this type takes: finite and |x| <= limit.
     [[nodiscard]] static constexpr bool takes(double x) noexcept { return x >= -limit && x <= limit; }
 
@@ -10853,19 +10946,20 @@ public:
     void add(int x, int y, std::span<const ExactSum> sums, std::uint64_t weight) noexcept
     {
         PRISM_ASSERT(sums.size() == channels_.size());
-        const std::size_t i = index(x, y);
-        const bool wide = wide_.load(std::memory_order_acquire);
-        for (std::size_t c = 0; c < sums.size(); ++c) {
-            const std::size_t k = i * channels_.size() + c;
-            // Every sum so far narrow, and this one: a 128-bit add that does not overflow
-            // gives the narrow total the general path below would (its correction 0).
-            if (!wide && sums[c].narrow()) {
-                Int128 total = low_[k];
-                if (total.add(sums[c].low())) {
-                    low_[k] = total;
-                    continue;
-                }
+        const std::size_t i = index(x, y), n = sums.size();
+        std::size_t c = 0;
+        // Every sum so far narrow, and each of these: a 128-bit add that does not overflow
+        // gives the narrow total the general path below would (its correction 0).
+        if (!wide_.load(std::memory_order_acquire)) {
+            Int128* low = low_.data() + i * n;
+            for (; c < n; ++c) {
+                Int128 total = low[c];
+                if (!sums[c].narrow() || !total.add(sums[c].low())) break;
+                low[c] = total;
             }
+        }
+        for (; c < n; ++c) {
+            const std::size_t k = i * n + c;
             ExactSum total = sum(x, y, c);
             if (!total.add(sums[c])) {
                 overflowed_.store(true, std::memory_order_relaxed);
@@ -11676,6 +11770,14 @@ concept RayEstimator = requires(const I& integrator, const Ray<typename I::scala
     { integrator.radiance(ray, rng) } -> std::same_as<Rgb<typename I::scalar_type>>;
 };
 
+/// Whether a ray estimator says it draws no random number for its scene (`static
+/// constexpr bool draws_nothing = true`: Whitted's with delta lights only and no medium
+/// that scatters). One sample per pixel at its centre through a pinhole then takes no
+/// number either, and render() skips the sampler's work for the pixel: its pixel key,
+/// seeds and streams, which nothing would read.
+template <class I>
+inline constexpr bool draws_nothing = requires { requires bool(I::draws_nothing); };
+
 /// An integrator of the second kind: an estimate of the whole image in passes, each
 /// splatting over it (LightTracer, ProgressivePhotonMapper, Reference).
 /// add_passes(sums, camera, config) adds to `sums` (which holds the config's crop window)
@@ -11825,11 +11927,19 @@ void render_in_rounds(const RenderConfig& config, AddRound&& add_round, OnRound&
 template <Scalar T>
 [[nodiscard]] std::size_t add_radiance(std::span<ExactSum> sums, std::size_t first, const Rgb<T>& radiance) noexcept
 {
+    const T channel[3] = {radiance.x, radiance.y, radiance.z};
     std::size_t rejected = 0;
-    for (int c = 0; c < 3; ++c) {
-        const double v = double(radiance[c]);
-        if (v >= 0.0 && ExactSum::takes(v)) (void)sums[first + std::size_t(c)].add(ExactSum::of(v));
-        else ++rejected;
+    for (std::size_t c = 0; c < 3; ++c) {
+        if constexpr (std::same_as<T, float>) {
+            // (A float's own bits: no trip through double. The same sum.)
+            const float v = channel[c];
+            if (v >= 0.0f && v <= float(ExactSum::limit)) (void)sums[first + c].add(ExactSum::of_float(v));
+            else ++rejected;
+        } else {
+            const double v = double(channel[c]);
+            if (v >= 0.0 && ExactSum::takes(v)) (void)sums[first + c].add(ExactSum::of(v));
+            else ++rejected;
+        }
     }
     return rejected;
 }
@@ -11856,7 +11966,7 @@ inline void say_rejected(std::size_t values)
 /// a pixel's N sums and returns how many values it rejected; `store(x, y, sums,
 /// samples, rejected)` then takes the pixel (one thread per pixel; any pixel on any
 /// thread).
-template <std::size_t N, Scalar T, class Sample, class Store>
+template <std::size_t N, Scalar T, bool DrawsNothing = false, class Sample, class Store>
 void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&& sample, Store&& store)
 {
     if (config.tile_size < 1) throw_invalid("RenderConfig tile_size must be >= 1, got ", config.tile_size);
@@ -11880,11 +11990,27 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
         const double seconds = elapsed();
         line.update(seconds, formatted("%3d%% (%.1f s)", static_cast<int>(100 * std::int64_t(tiles_done) / tile_count), seconds));
     };
+    // An integrator that draws nothing, at one sample at the pixel's centre through a
+    // pinhole: the camera sample's ray, with a stream nothing reads.
+    const bool centre_only = DrawsNothing && config.spp == 1 && config.single_sample_at_centre && !rays.thin_lens() && samples.count() == 1;
     parallel_blocks(std::size_t(tile_count), config.threads, [&](std::size_t block, unsigned) {
         const auto t = std::int64_t(block);
         const auto x0 = static_cast<int>(window.x0 + (t % tiles_x) * tile), y0 = static_cast<int>(window.y0 + (t / tiles_x) * tile);
         const auto x1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(x0) + tile, window.x1));
         const auto y1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(y0) + tile, window.y1));
+        if constexpr (DrawsNothing) {
+            if (centre_only) {
+                for (int y = y0; y < y1; ++y)
+                    for (int x = x0; x < x1; ++x) {
+                        std::array<ExactSum, N> sum;
+                        Random unread;
+                        const std::size_t rejected = sample(rays.ray(T(x) + T(0.5f), T(y) + T(0.5f)), unread, sum);
+                        store(x, y, std::span<const ExactSum>(sum), std::uint64_t(1), rejected);
+                        if (rejected != 0) rejected_values.fetch_add(rejected, std::memory_order_relaxed);
+                    }
+                return;
+            }
+        }
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
                 const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
@@ -11938,7 +12064,7 @@ template <Integrator I>
 void add_samples(Accumulation& sums, const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
 {
     if constexpr (RayEstimator<I>) {
-        render_pixels<3>(
+        render_pixels<3, typename I::scalar_type, draws_nothing<I>>(
             camera, config,
             radiance_sample(integrator),
             into(sums));
@@ -11956,7 +12082,7 @@ void add_layers(Accumulation& sums, const Camera<typename I::scalar_type>& camer
 {
     using T = typename I::scalar_type;
     constexpr std::size_t surface = SeesSurfaces<I> ? 8 : 0, parts = SplitsLight<I> ? 9 : 0, n = 3 + surface + parts;
-    render_pixels<n>(
+    render_pixels<n, T, draws_nothing<I>>(
         camera, config,
         [&](const Ray<T>& ray, Random& rng, std::array<ExactSum, n>& sum) {
             std::size_t rejected = 0;
@@ -12095,7 +12221,7 @@ template <RayEstimator I>
     if (detail::render_seconds(config) > 0.0) return render_sums(camera, integrator, config).image();
     const PixelWindow window = detail::render_window(config);
     Film film(window.width(), window.height());
-    detail::render_pixels<3>(
+    detail::render_pixels<3, typename I::scalar_type, draws_nothing<I>>(
         camera, config,
         detail::radiance_sample(integrator),
         [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
@@ -18737,6 +18863,10 @@ public:
     using scalar_type = typename SceneT::scalar_type;
     /// Shorthand for scalar_type.
     using T = scalar_type;
+
+    /// Whether it draws no random number: no light with extent to sample, no medium to
+    /// march (render() then skips the sampler's work at one sample per pixel).
+    static constexpr bool draws_nothing = !SceneT::has_lights_with_extent && !(SceneT::has_scattering_media || air_scatters<Air>);
 
     /// A Whitted integrator's settings.
     struct Config {

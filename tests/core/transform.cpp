@@ -111,3 +111,57 @@ TEST_CASE_TEMPLATE("point and vector give the scalar sums' bits: each component 
     }
     CHECK(differ == 0);
 }
+
+TEST_CASE_TEMPLATE("box() holds the images of a box's points, and sphere_box() those of a ball's, touching it on every side", T, float, double)
+{
+    // Random transforms (rotations, shears by non-uniform scale between rotations, far
+    // translations); the image of every point sampled on the box or ball lies in the
+    // box computed for it, and the ball's box is tight: on each side, the farthest image,
+    // worked out in double from the matrix, is within 10^-5 of the box's face.
+    prism::Random rng(41u, 3u);
+    int outside = 0, loose = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const T far = std::pow(T(10), T(int(rng.next_u32() % 7) - 3));
+        const auto m = Transform<T>::rotate(T(360) * rng.uniform<T>(), test::random_direction<T>(rng))
+                           .then(Transform<T>::scale({T(0.2) + T(3) * rng.uniform<T>(), T(0.2) + T(3) * rng.uniform<T>(), T(0.2) + T(3) * rng.uniform<T>()}))
+                           .then(Transform<T>::rotate(T(360) * rng.uniform<T>(), test::random_direction<T>(rng)))
+                           .then(Transform<T>::translate(test::random_point<T>(rng, far)));
+        const Vec3<T> centre = test::random_point<T>(rng, T(2));
+        const T radius = T(0.1) + T(2) * rng.uniform<T>();
+        const prism::Aabb<T> cube{centre - Vec3<T>(radius), centre + Vec3<T>(radius)};
+        const prism::Aabb<T> of_box = m.box(cube), of_ball = m.sphere_box(centre, radius);
+        // (Points and images in double: the boxes hold the exact images.)
+        const prism::Mat4<T> q = m.matrix();
+        const auto image = [&q](const Vec3<double>& p) {
+            Vec3<double> w;
+            for (int i = 0; i < 3; ++i) w[i] = double(q[3][i]) + double(q[0][i]) * p.x + double(q[1][i]) * p.y + double(q[2][i]) * p.z;
+            return w;
+        };
+        const auto holds = [](const prism::Aabb<T>& box, const Vec3<double>& p) {
+            return double(box.lo.x) <= p.x && p.x <= double(box.hi.x) && double(box.lo.y) <= p.y && p.y <= double(box.hi.y) && double(box.lo.z) <= p.z &&
+                   p.z <= double(box.hi.z);
+        };
+        for (int i = 0; i < 200; ++i) {
+            const Vec3<double> u(test::random_direction<double>(rng));
+            const Vec3<double> on_ball = Vec3<double>(centre) + double(radius) * u / prism::length(u);
+            const Vec3<double> on_box = Vec3<double>(centre) + double(radius) * u / prism::max_component(prism::abs(u));
+            outside += !holds(of_ball, image(on_ball)) + !holds(of_box, image(on_box));
+        }
+        // The ball's farthest image along axis i: the centre's, plus the radius times the
+        // length of row i of the linear part.
+        for (int i = 0; i < 3; ++i) {
+            double c = double(q[3][i]), row2 = 0;
+            for (int j = 0; j < 3; ++j) c += double(q[j][i]) * double(centre[j]), row2 += double(q[j][i]) * double(q[j][i]);
+            const double reach = double(radius) * std::sqrt(row2), slack = 1e-5 * (std::abs(c) + reach);
+            loose += !(double(of_ball.hi[i]) - (c + reach) <= slack && (c - reach) - double(of_ball.lo[i]) <= slack);
+        }
+        // Tighter than (or as tight as) the box around the ball's box.
+        CHECK(of_ball.hi.x - of_ball.lo.x <= of_box.hi.x - of_box.lo.x);
+    }
+    CHECK(outside == 0);
+    CHECK(loose == 0);
+    // Empty stays empty; unbounded gives every point.
+    const auto turn = Transform<T>::rotate_y(T(30));
+    CHECK(turn.box(prism::Aabb<T>{}).empty());
+    CHECK(turn.box(prism::Aabb<T>{{T(0), T(0), -prism::infinity<T>}, {T(1), T(1), T(1)}}).lo.x == -prism::infinity<T>);
+}

@@ -66,3 +66,37 @@ TEST_CASE("a transformed sphere keeps its surface coordinates, and carries dp/du
     CHECK(found.worst < 2e-3);
     CHECK(found.left_handed == 0);
 }
+
+TEST_CASE_TEMPLATE("a turned ball's world box is its own size, and a CSG node's is made of its children's", T, float, double)
+{
+    // A unit ball turned 45 degrees about (1, 1, 0): the box around its box's turned
+    // corners is 2.7 wide on x; its own is 2 (bounds_under, from the ball's ellipsoid).
+    const auto turn = Transform<T>::rotate(T(45), {T(1), T(1), T(0)}).then(Transform<T>::translate({T(3), T(-1), T(2)}));
+    const Transformed ball(Sphere<T>({T(0), T(0), T(0)}, T(1)), turn);
+    for (int axis = 0; axis < 3; ++axis) CHECK(ball.bounds().hi[axis] - ball.bounds().lo[axis] == Approx(2).epsilon(1e-5));
+    // A lens (two balls' intersection) and a bored bead (a ball less a cylinder), turned:
+    // each box lies within the box of its turned balls, and holds every crossing a ray finds.
+    const auto lens = Transformed(intersection_of(Sphere<T>({T(-0.6), T(0), T(0)}, T(1.1)), Sphere<T>({T(0.6), T(0), T(0)}, T(1.1))), turn);
+    const auto bead = Transformed(difference_of(Sphere<T>({T(0), T(0), T(0)}, T(1)), Quadric<T>::from_povray(1, 1, 0, 0, 0, 0, 0, 0, 0, T(-0.2025))), turn);
+    const Aabb<T> left = Transformed(Sphere<T>({T(-0.6), T(0), T(0)}, T(1.1)), turn).bounds();
+    const Aabb<T> right = Transformed(Sphere<T>({T(0.6), T(0), T(0)}, T(1.1)), turn).bounds();
+    for (int axis = 0; axis < 3; ++axis) {
+        CHECK(lens.bounds().lo[axis] == std::max(left.lo[axis], right.lo[axis]));
+        CHECK(lens.bounds().hi[axis] == std::min(left.hi[axis], right.hi[axis]));
+        CHECK(bead.bounds().lo[axis] == ball.bounds().lo[axis]);
+        CHECK(bead.bounds().hi[axis] == ball.bounds().hi[axis]);
+    }
+    // (A crossing's point is rounded: the boxes are grown by 10^-5 for it.)
+    const auto holds = [](const Aabb<T>& box, const Vec3<T>& p) { return Aabb<T>{box.lo - Vec3<T>(T(1e-5)), box.hi + Vec3<T>(T(1e-5))}.contains(p); };
+    Random rng(5u, 17u);
+    int found = 0, outside = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3<T> centre{T(3), T(-1), T(2)};
+        const Vec3<T> eye = centre + test::random_direction<T>(rng) * T(4);
+        const Ray<T> ray{eye, normalize(centre + test::random_point<T>(rng, T(1.2)) - eye)};
+        for (const auto& c : lens.crossings(ray, Interval<T>::universe())) ++found, outside += !holds(lens.bounds(), c.point);
+        for (const auto& c : bead.crossings(ray, Interval<T>::universe())) ++found, outside += !holds(bead.bounds(), c.point);
+    }
+    CHECK(found > 20000);
+    CHECK(outside == 0);
+}

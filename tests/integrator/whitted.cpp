@@ -9,6 +9,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstring>
 
 using namespace prism;
 using doctest::Approx;
@@ -526,4 +527,41 @@ TEST_CASE("fog filling graded air: Whitted sums the airlight over each straight 
         CAPTURE(c);
         CHECK(found[c] == doctest::Approx(test::airlight(c)).epsilon(1e-4).scale(0));
     }
+}
+
+namespace {
+
+/// Whitted with the sampler's work done for every pixel: its radiance, without saying
+/// that it draws nothing (the slow twin of render()'s skip).
+template <class I>
+struct DrawsAll {
+    using scalar_type = typename I::scalar_type;
+    const I* integrator;
+    [[nodiscard]] Rgb<scalar_type> radiance(const Ray<scalar_type>& ray, Random& rng) const noexcept { return integrator->radiance(ray, rng); }
+};
+
+} // namespace
+
+TEST_CASE("Whitted with delta lights draws nothing, and render() skips the sampler for it: the same bits as with it")
+{
+    // A point light, a spot light, CSG, glass and a mirror: no random number anywhere.
+    Scene scene{Lights{PointLight<float>{.position = {2, 5, 3}, .intensity = Rgb<float>(40)},
+                       SpotLight<float>{.position = {-3, 4, 1}, .direction = {0.5f, -1, 0}, .intensity = Rgb<float>(30)}},
+                Object{Plane<float>({0, 1, 0}, 0), Diffuse<float, Checker<float>>{}},
+                Object{Sphere<float>({0, 1, 0}, 1), Dielectric<float>{.ior = 1.5f}},
+                Object{difference_of(Sphere<float>({2, 0.7f, -1}, 0.7f), Sphere<float>({2.3f, 1, -1.2f}, 0.4f)), Mirror<float>{}}};
+    const Whitted integrator(scene, {.max_depth = 6});
+    static_assert(draws_nothing<decltype(integrator)> && !draws_nothing<DrawsAll<decltype(integrator)>>);
+    const Camera<float> camera{.position = {0, 2, 7}, .look_at = {0.5f, 0.8f, 0}, .fov = 45};
+    for (const int threads : {1, 2}) {
+        const RenderConfig config{.width = 96, .height = 64, .threads = unsigned(threads), .progress = false, .tile_size = 7};
+        const Film fast = render(camera, integrator, config), slow = render(camera, DrawsAll<decltype(integrator)>{&integrator}, config);
+        CHECK(std::memcmp(fast.pixels().data(), slow.pixels().data(), fast.pixels().size() * sizeof(fast.pixels()[0])) == 0);
+        CHECK(fast.at(48, 40) != fast.at(0, 0)); // (not a blank image)
+        const Accumulation sums = render_sums(camera, integrator, config), twin = render_sums(camera, DrawsAll<decltype(integrator)>{&integrator}, config);
+        const Film a = sums.image(), b = twin.image();
+        CHECK(std::memcmp(a.pixels().data(), b.pixels().data(), a.pixels().size() * sizeof(a.pixels()[0])) == 0);
+    }
+    // An area light draws: not skipped.
+    static_assert(!Whitted<Scene<Lights<PointGridLight<float>>, Object<Sphere<float>, Diffuse<float>>>>::draws_nothing);
 }

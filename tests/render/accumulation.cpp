@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -102,6 +103,31 @@ TEST_CASE("ExactSum::of, done in integers, equals the library's round(ldexp(x, 6
             REQUIRE(same(p, e));
         }
     }
+}
+
+TEST_CASE("ExactSum::of_float, from a float's own bits, is of() of the float as a double")
+{
+    // Every exponent (denormals, the normal range, up to the largest float), random
+    // significands, the rounding's edges below 2^-64 (halves and their neighbours), and
+    // every float of a run across 1 and across 2^52.
+    std::mt19937 random(23);
+    std::uniform_int_distribution<std::uint32_t> fraction(0, (1u << 23) - 1);
+    int compared = 0;
+    for (std::uint32_t biased = 0; biased < 255; ++biased)
+        for (int i = 0; i < 2000; ++i) {
+            const float x = std::bit_cast<float>(biased << 23 | (i < 2 ? std::uint32_t(i) * ((1u << 23) - 1) : fraction(random)));
+            REQUIRE(ExactSum::of_float(x) == ExactSum::of(double(x)));
+            ++compared;
+        }
+    for (int k = -100; k <= -60; ++k)
+        for (const float x : {std::ldexp(1.0f, k), std::ldexp(3.0f, k - 1), std::ldexp(5.0f, k - 2)})
+            for (const float y : {x, std::nextafter(x, 0.0f), std::nextafter(x, 1.0f)}) REQUIRE(ExactSum::of_float(y) == ExactSum::of(double(y)));
+    for (const float start : {0.5f, 0x1p52f})
+        for (float x = start, i = 0; i < 100000; ++i, x = std::nextafter(x, 1e30f)) REQUIRE(ExactSum::of_float(x) == ExactSum::of(double(x)));
+    for (const float x : {0.0f, std::numeric_limits<float>::denorm_min(), std::numeric_limits<float>::min(), std::numeric_limits<float>::max()})
+        CHECK(ExactSum::of_float(x) == ExactSum::of(double(x)));
+    CHECK(compared == 255 * 2000);
+    static_assert(ExactSum::of_float(0.75f) == ExactSum::of(0.75));
 }
 
 TEST_CASE("ExactSum rounds a sum past 2^63 once to the nearest double, ties to even")

@@ -2,6 +2,7 @@
 // Transform: an invertible affine map of points, directions and normals.
 #pragma once
 
+#include <prism/core/aabb.hpp>
 #include <prism/core/check.hpp>
 #include <prism/core/lanes.hpp>
 #include <prism/core/math.hpp>
@@ -103,6 +104,48 @@ public:
     [[nodiscard]] Vec3<T> point(const Vec3<T>& p) const noexcept { return affine_point(m_, p); }
     /// v transformed as a direction (no translation).
     [[nodiscard]] Vec3<T> vector(const Vec3<T>& v) const noexcept { return affine_vector(m_, v); }
+    /// The box around `box` carried by the transform: around the images of its eight
+    /// corners, grown by their rounding and rounded outward. An empty box stays empty; one
+    /// unbounded on some axis gives every point.
+    [[nodiscard]] Aabb<T> box(const Aabb<T>& box) const noexcept
+    {
+        if (box.empty()) return box;
+        if (!is_finite(box.lo) || !is_finite(box.hi)) return Aabb<T>::universe();
+        Aabb<T> out;
+        for (int corner = 0; corner < 8; ++corner) {
+            const Vec3<T> p{corner & 1 ? box.hi.x : box.lo.x, corner & 2 ? box.hi.y : box.lo.y, corner & 4 ? box.hi.z : box.lo.z};
+            const Vec3<T> w = point(p);
+            out.lo = component_min(out.lo, w);
+            out.hi = component_max(out.hi, w);
+        }
+        const Vec3<T> pad = gamma<T>(4) * (abs(out.lo) + abs(out.hi));
+        return Aabb<T>{out.lo - pad, out.hi + pad}.rounded_out();
+    }
+
+    /// The box around the ball of `radius` about `centre` carried by the transform: the
+    /// ellipsoid's own box, whose half-width on axis i is the radius times the length of
+    /// row i of the linear part (the most that axis gains over the unit ball). Far
+    /// tighter than the box around its box's corners under a rotation (a unit ball turned
+    /// 45 degrees about two axes has a box 1.7 times as wide). Worked out in double and
+    /// rounded outward.
+    [[nodiscard]] Aabb<T> sphere_box(const Vec3<T>& centre, T radius) const noexcept
+    {
+        Aabb<T> out;
+        for (int i = 0; i < 3; ++i) {
+            double c = double(m_[3][i]), row2 = 0.0;
+            for (int j = 0; j < 3; ++j) {
+                c += double(m_[j][i]) * double(centre[j]);
+                row2 += double(m_[j][i]) * double(m_[j][i]);
+            }
+            const double half = double(radius) * std::sqrt(row2);
+            // (Every term above is within a few parts in 10^16 of its exact value.)
+            const double slack = 1e-12 * (std::abs(c) + half);
+            out.lo[i] = next_float_down(T(c - half - slack));
+            out.hi[i] = next_float_up(T(c + half + slack));
+        }
+        return out;
+    }
+
     /// p carried back by the inverse.
     [[nodiscard]] Vec3<T> inverse_point(const Vec3<T>& p) const noexcept { return affine_point(inverse_, p); }
     /// v carried back by the inverse (no translation).

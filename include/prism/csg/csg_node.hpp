@@ -17,6 +17,7 @@
 
 #include <prism/core/aabb.hpp>
 #include <prism/geometry/shape.hpp>
+#include <prism/geometry/transformed.hpp>
 
 #include <algorithm>
 #include <limits>
@@ -77,6 +78,13 @@ public:
     /// The box around the result (conservative: Op of the children's boxes).
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
 
+    /// The box around the result carried by `transform`: Op of the children's own
+    /// (bounds_under), tighter than the box around this box's corners.
+    [[nodiscard]] Aabb<T> bounds_under(const Transform<T>& transform) const noexcept
+    {
+        return Op::bounds(prism::bounds_under(a_, transform), prism::bounds_under(b_, transform));
+    }
+
     /// Whether p is inside: Op of whether it is inside each child.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return Op::combine(a_.contains(p), b_.contains(p)); }
 
@@ -124,6 +132,11 @@ private:
     {
         Crossings<T, max_crossings> out;
         const auto ca = a_.template crossings<Surface>(ray, range);
+        // A result inside the first child only (an intersection, a difference): a ray
+        // that stays outside it crosses nothing, whatever the second child does.
+        if constexpr (!Op::combine(false, false) && !Op::combine(false, true)) {
+            if (ca.empty() && !ca.inside_at_start) return out;
+        }
         const auto cb = b_.template crossings<Surface>(ray, range);
         bool in_a = ca.inside_at_start, in_b = cb.inside_at_start;
         bool inside = Op::combine(in_a, in_b);

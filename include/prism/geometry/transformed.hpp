@@ -11,6 +11,33 @@
 
 namespace prism {
 
+/// A shape that knows its box under a transform better than the box around its own
+/// box's transformed corners: `bounds_under(transform)` (a CSG node, from its children's).
+template <class S>
+concept HasBoundsUnder = Shape<S> && requires(const S& shape, const Transform<typename S::scalar_type>& transform) {
+    { shape.bounds_under(transform) } -> std::same_as<Aabb<typename S::scalar_type>>;
+};
+
+/// The box around `shape` carried by `transform`: its own (HasBoundsUnder), else the box
+/// around its box's transformed corners, cut down where it has a sphere of its own to
+/// that sphere's ellipsoid's box (a turned ball's box is its own size, not its box's
+/// corners' 1.7 times).
+template <Shape S>
+[[nodiscard]] Aabb<typename S::scalar_type> bounds_under(const S& shape, const Transform<typename S::scalar_type>& transform) noexcept
+{
+    if constexpr (HasBoundsUnder<S>) {
+        return shape.bounds_under(transform);
+    } else {
+        const Aabb<typename S::scalar_type> box = transform.box(shape.bounds());
+        if constexpr (HasBoundingSphere<S>) {
+            const auto ball = shape.bounding_sphere();
+            const auto own = transform.sphere_box(ball.center, ball.radius);
+            return {component_max(box.lo, own.lo), component_min(box.hi, own.hi)};
+        }
+        return box;
+    }
+}
+
 /// A shape under an affine transform from its own coordinates to the world's. The ray
 /// is carried into the shape's coordinates without renormalising its direction, so t
 /// means the same in both; normals map by the inverse transpose, so they stay right
@@ -180,23 +207,10 @@ private:
         c.dpdv = to_world_.vector(c.dpdv);
     }
 
-    /// The box around the eight transformed corners of the shape's box.
-    [[nodiscard]] Aabb<T> world_bounds() const noexcept
-    {
-        const Aabb<T> local = shape_.bounds();
-        if (local.empty()) return local;
-        if (!is_finite(local.lo) || !is_finite(local.hi)) return Aabb<T>::universe();
-        Aabb<T> out;
-        for (int corner = 0; corner < 8; ++corner) {
-            const Vec3<T> p{corner & 1 ? local.hi.x : local.lo.x, corner & 2 ? local.hi.y : local.lo.y, corner & 4 ? local.hi.z : local.lo.z};
-            const Vec3<T> w = to_world_.point(p);
-            out.lo = component_min(out.lo, w);
-            out.hi = component_max(out.hi, w);
-        }
-        // Widen by the rounding of the corner transform, and round outward.
-        const Vec3<T> pad = gamma<T>(4) * (abs(out.lo) + abs(out.hi));
-        return Aabb<T>{out.lo - pad, out.hi + pad}.rounded_out();
-    }
+    /// The world box around the shape: its own under the transform where it has one (a
+    /// sphere's ellipsoid, a CSG node's from its children's), else the box around its
+    /// box's transformed corners (bounds_under).
+    [[nodiscard]] Aabb<T> world_bounds() const noexcept { return bounds_under(shape_, to_world_); }
 
     S shape_;
     Transform<T> to_world_;

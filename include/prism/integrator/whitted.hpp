@@ -60,6 +60,10 @@ public:
     /// Shorthand for scalar_type.
     using T = scalar_type;
 
+    /// Whether it draws no random number: no light with extent to sample, no medium to
+    /// march (render() then skips the sampler's work at one sample per pixel).
+    static constexpr bool draws_nothing = !SceneT::has_lights_with_extent && !(SceneT::has_scattering_media || air_scatters<Air>);
+
     /// A Whitted integrator's settings.
     struct Config {
         int max_depth = 10;          ///< reflection/refraction bounces followed at most

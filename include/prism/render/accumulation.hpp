@@ -130,6 +130,31 @@ public:
         return from_bits(-low, negated_high);
     }
 
+    /// of(double(x)) for a float x with 0 <= x <= limit, from the float's own bits: x 2^64
+    /// = m 2^(e - 86), m its 24-bit significand and e its biased exponent (1 for a
+    /// denormal). A radiance sample of a float scene takes this one; the same integer.
+    [[nodiscard]] static constexpr BasicExactSum of_float(float x) noexcept
+    {
+        PRISM_ASSERT(x >= 0.0f && x <= float(limit));
+        const auto bits = std::bit_cast<std::uint32_t>(x);
+        const auto biased = int(bits >> 23); // (the sign bit is 0)
+        const std::uint64_t fraction = bits & ((std::uint32_t(1) << 23) - 1);
+        const std::uint64_t m = biased == 0 ? fraction : fraction | (std::uint64_t(1) << 23);
+        const int s = (biased == 0 ? 1 : biased) - 86; // below 169 (x < 2^128)
+        Integer low{}, high{};
+        if (s >= 128) { // to 168: m 2^(s - 128) < 2^64
+            high = Integer::from_words(m << (s - 128), 0);
+        } else if (s >= 64) {
+            low = Integer::from_words(0, m << (s - 64));
+            high = Integer::from_words((m >> 1) >> (127 - s), 0); // m >> (128 - s)
+        } else if (s >= 0) {
+            low = Integer::from_words(m << s, (m >> 1) >> (63 - s)); // m >> (64 - s), and 0 for s = 0
+        } else if (s > -25) {
+            low = Integer::from_words((m + (std::uint64_t(1) << (-s - 1))) >> -s, 0); // half up: away from zero
+        } // (s <= -25: m 2^s < 2^24 2^-25, nearer 0.)
+        return from_bits(low, high);
+    }
+
     /// Whether x is a sample this type takes: finite and |x| <= limit.
     [[nodiscard]] static constexpr bool takes(double x) noexcept { return x >= -limit && x <= limit; }
 
@@ -330,19 +355,20 @@ public:
     void add(int x, int y, std::span<const ExactSum> sums, std::uint64_t weight) noexcept
     {
         PRISM_ASSERT(sums.size() == channels_.size());
-        const std::size_t i = index(x, y);
-        const bool wide = wide_.load(std::memory_order_acquire);
-        for (std::size_t c = 0; c < sums.size(); ++c) {
-            const std::size_t k = i * channels_.size() + c;
-            // Every sum so far narrow, and this one: a 128-bit add that does not overflow
-            // gives the narrow total the general path below would (its correction 0).
-            if (!wide && sums[c].narrow()) {
-                Int128 total = low_[k];
-                if (total.add(sums[c].low())) {
-                    low_[k] = total;
-                    continue;
-                }
+        const std::size_t i = index(x, y), n = sums.size();
+        std::size_t c = 0;
+        // Every sum so far narrow, and each of these: a 128-bit add that does not overflow
+        // gives the narrow total the general path below would (its correction 0).
+        if (!wide_.load(std::memory_order_acquire)) {
+            Int128* low = low_.data() + i * n;
+            for (; c < n; ++c) {
+                Int128 total = low[c];
+                if (!sums[c].narrow() || !total.add(sums[c].low())) break;
+                low[c] = total;
             }
+        }
+        for (; c < n; ++c) {
+            const std::size_t k = i * n + c;
             ExactSum total = sum(x, y, c);
             if (!total.add(sums[c])) {
                 overflowed_.store(true, std::memory_order_relaxed);

@@ -74,6 +74,14 @@ concept RayEstimator = requires(const I& integrator, const Ray<typename I::scala
     { integrator.radiance(ray, rng) } -> std::same_as<Rgb<typename I::scalar_type>>;
 };
 
+/// Whether a ray estimator says it draws no random number for its scene (`static
+/// constexpr bool draws_nothing = true`: Whitted's with delta lights only and no medium
+/// that scatters). One sample per pixel at its centre through a pinhole then takes no
+/// number either, and render() skips the sampler's work for the pixel: its pixel key,
+/// seeds and streams, which nothing would read.
+template <class I>
+inline constexpr bool draws_nothing = requires { requires bool(I::draws_nothing); };
+
 /// An integrator of the second kind: an estimate of the whole image in passes, each
 /// splatting over it (LightTracer, ProgressivePhotonMapper, Reference).
 /// add_passes(sums, camera, config) adds to `sums` (which holds the config's crop window)
@@ -223,11 +231,19 @@ void render_in_rounds(const RenderConfig& config, AddRound&& add_round, OnRound&
 template <Scalar T>
 [[nodiscard]] std::size_t add_radiance(std::span<ExactSum> sums, std::size_t first, const Rgb<T>& radiance) noexcept
 {
+    const T channel[3] = {radiance.x, radiance.y, radiance.z};
     std::size_t rejected = 0;
-    for (int c = 0; c < 3; ++c) {
-        const double v = double(radiance[c]);
-        if (v >= 0.0 && ExactSum::takes(v)) (void)sums[first + std::size_t(c)].add(ExactSum::of(v));
-        else ++rejected;
+    for (std::size_t c = 0; c < 3; ++c) {
+        if constexpr (std::same_as<T, float>) {
+            // (A float's own bits: no trip through double. The same sum.)
+            const float v = channel[c];
+            if (v >= 0.0f && v <= float(ExactSum::limit)) (void)sums[first + c].add(ExactSum::of_float(v));
+            else ++rejected;
+        } else {
+            const double v = double(channel[c]);
+            if (v >= 0.0 && ExactSum::takes(v)) (void)sums[first + c].add(ExactSum::of(v));
+            else ++rejected;
+        }
     }
     return rejected;
 }
@@ -254,7 +270,7 @@ inline void say_rejected(std::size_t values)
 /// a pixel's N sums and returns how many values it rejected; `store(x, y, sums,
 /// samples, rejected)` then takes the pixel (one thread per pixel; any pixel on any
 /// thread).
-template <std::size_t N, Scalar T, class Sample, class Store>
+template <std::size_t N, Scalar T, bool DrawsNothing = false, class Sample, class Store>
 void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&& sample, Store&& store)
 {
     if (config.tile_size < 1) throw_invalid("RenderConfig tile_size must be >= 1, got ", config.tile_size);
@@ -278,11 +294,27 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
         const double seconds = elapsed();
         line.update(seconds, formatted("%3d%% (%.1f s)", static_cast<int>(100 * std::int64_t(tiles_done) / tile_count), seconds));
     };
+    // An integrator that draws nothing, at one sample at the pixel's centre through a
+    // pinhole: the camera sample's ray, with a stream nothing reads.
+    const bool centre_only = DrawsNothing && config.spp == 1 && config.single_sample_at_centre && !rays.thin_lens() && samples.count() == 1;
     parallel_blocks(std::size_t(tile_count), config.threads, [&](std::size_t block, unsigned) {
         const auto t = std::int64_t(block);
         const auto x0 = static_cast<int>(window.x0 + (t % tiles_x) * tile), y0 = static_cast<int>(window.y0 + (t / tiles_x) * tile);
         const auto x1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(x0) + tile, window.x1));
         const auto y1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(y0) + tile, window.y1));
+        if constexpr (DrawsNothing) {
+            if (centre_only) {
+                for (int y = y0; y < y1; ++y)
+                    for (int x = x0; x < x1; ++x) {
+                        std::array<ExactSum, N> sum;
+                        Random unread;
+                        const std::size_t rejected = sample(rays.ray(T(x) + T(0.5f), T(y) + T(0.5f)), unread, sum);
+                        store(x, y, std::span<const ExactSum>(sum), std::uint64_t(1), rejected);
+                        if (rejected != 0) rejected_values.fetch_add(rejected, std::memory_order_relaxed);
+                    }
+                return;
+            }
+        }
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
                 const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
@@ -336,7 +368,7 @@ template <Integrator I>
 void add_samples(Accumulation& sums, const Camera<typename I::scalar_type>& camera, const I& integrator, const RenderConfig& config)
 {
     if constexpr (RayEstimator<I>) {
-        render_pixels<3>(
+        render_pixels<3, typename I::scalar_type, draws_nothing<I>>(
             camera, config,
             radiance_sample(integrator),
             into(sums));
@@ -354,7 +386,7 @@ void add_layers(Accumulation& sums, const Camera<typename I::scalar_type>& camer
 {
     using T = typename I::scalar_type;
     constexpr std::size_t surface = SeesSurfaces<I> ? 8 : 0, parts = SplitsLight<I> ? 9 : 0, n = 3 + surface + parts;
-    render_pixels<n>(
+    render_pixels<n, T, draws_nothing<I>>(
         camera, config,
         [&](const Ray<T>& ray, Random& rng, std::array<ExactSum, n>& sum) {
             std::size_t rejected = 0;
@@ -493,7 +525,7 @@ template <RayEstimator I>
     if (detail::render_seconds(config) > 0.0) return render_sums(camera, integrator, config).image();
     const PixelWindow window = detail::render_window(config);
     Film film(window.width(), window.height());
-    detail::render_pixels<3>(
+    detail::render_pixels<3, typename I::scalar_type, draws_nothing<I>>(
         camera, config,
         detail::radiance_sample(integrator),
         [&](int x, int y, std::span<const ExactSum> sum, std::uint64_t weight, std::size_t rejected) {
