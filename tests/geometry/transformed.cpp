@@ -70,7 +70,7 @@ TEST_CASE("a transformed sphere keeps its surface coordinates, and carries dp/du
 TEST_CASE_TEMPLATE("a turned ball's world box is its own size, and a CSG node's is made of its children's", T, float, double)
 {
     // A unit ball turned 45 degrees about (1, 1, 0): the box around its box's turned
-    // corners is 2.7 wide on x; its own is 2 (bounds_under, from the ball's ellipsoid).
+    // corners is 3 wide on x; its own is 2 (bounds_under, from the ball's ellipsoid).
     const auto turn = Transform<T>::rotate(T(45), {T(1), T(1), T(0)}).then(Transform<T>::translate({T(3), T(-1), T(2)}));
     const Transformed ball(Sphere<T>({T(0), T(0), T(0)}, T(1)), turn);
     for (int axis = 0; axis < 3; ++axis) CHECK(ball.bounds().hi[axis] - ball.bounds().lo[axis] == Approx(2).epsilon(1e-5));

@@ -124,10 +124,9 @@ public:
 
     /// The box around the ball of `radius` about `centre` carried by the transform: the
     /// ellipsoid's own box, whose half-width on axis i is the radius times the length of
-    /// row i of the linear part (the most that axis gains over the unit ball). Far
-    /// tighter than the box around its box's corners under a rotation (a unit ball turned
-    /// 45 degrees about two axes has a box 1.7 times as wide). Worked out in double and
-    /// rounded outward.
+    /// row i of the linear part (the most that axis gains over the unit ball). Under a
+    /// rotation the box around the ball's box's corners is up to sqrt(3) times as wide on
+    /// an axis. Worked out in double and rounded outward.
     [[nodiscard]] Aabb<T> sphere_box(const Vec3<T>& centre, T radius) const noexcept
     {
         Aabb<T> out;
