@@ -3873,10 +3873,9 @@ public:
 
     /// The box around the ball of `radius` about `centre` carried by the transform: the
     /// ellipsoid's own box, whose half-width on axis i is the radius times the length of
-    /// row i of the linear part (the most that axis gains over the unit ball). Far
-    /// tighter than the box around its box's corners under a rotation (a unit ball turned
-    /// 45 degrees about two axes has a box 1.7 times as wide). Worked out in double and
-    /// rounded outward.
+    /// row i of the linear part (the most that axis gains over the unit ball). Under a
+    /// rotation the box around the ball's box's corners is up to sqrt(3) times as wide on
+    /// an axis. Worked out in double and rounded outward.
     [[nodiscard]] Aabb<T> sphere_box(const Vec3<T>& centre, T radius) const noexcept
     {
         Aabb<T> out;
@@ -4213,6 +4212,17 @@ template <Shape S>
     else return shape.bounds().bounding_sphere();
 }
 
+/// Whether the shape is convex (its `convex()`, false for a shape that has none): a ray
+/// that leaves its surface on the side the outward normal faces never crosses it again, so
+/// a shadow ray leaving it there need not ask it. A sphere, a box, a plane's half-space, an
+/// ellipsoid; an intersection of convex children; a convex shape transformed.
+template <Shape S>
+[[nodiscard]] constexpr bool convex(const S& shape) noexcept
+{
+    if constexpr (requires { { shape.convex() } -> std::convertible_to<bool>; }) return shape.convex();
+    else return (void)shape, false;
+}
+
 namespace detail {
 
 /// How many CSG nodes deep a shape is (0 for a primitive).
@@ -4386,6 +4396,9 @@ public:
     [[nodiscard]] const Transform<T>& transform() const noexcept { return to_world_; }
     /// The world box around the shape's transformed box, rounded outward.
     [[nodiscard]] Aabb<T> bounds() const noexcept { return bounds_; }
+
+    /// Convex where the shape is (an affine map keeps a convex set convex).
+    [[nodiscard]] bool convex() const noexcept { return prism::convex(shape_); }
 
     /// Whether world point p is inside the shape.
     [[nodiscard]] bool contains(const Vec3<T>& p) const noexcept
@@ -4619,6 +4632,15 @@ public:
     [[nodiscard]] Aabb<T> bounds_under(const Transform<T>& transform) const noexcept
     {
         return Op::bounds(prism::bounds_under(a_, transform), prism::bounds_under(b_, transform));
+    }
+
+    /// Convex where it is an intersection of convex children (a lens of two balls); any
+    /// other node is not said to be.
+    [[nodiscard]] constexpr bool convex() const noexcept
+    {
+        constexpr bool intersection = Op::combine(true, true) && !Op::combine(true, false) && !Op::combine(false, true) && !Op::combine(false, false) && !Op::flips_second;
+        if constexpr (intersection) return prism::convex(a_) && prism::convex(b_);
+        else return false;
     }
 
     /// Whether p is inside: Op of whether it is inside each child.
@@ -4897,6 +4919,8 @@ public:
     [[nodiscard]] constexpr const Vec3<T>& hi() const noexcept { return hi_; }
     /// The box itself, as an Aabb.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return {lo_, hi_}; }
+    /// A box is convex.
+    [[nodiscard]] static constexpr bool convex() noexcept { return true; }
 
     /// Whether p is strictly inside (the faces are the surface).
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept
@@ -5098,6 +5122,8 @@ public:
     [[nodiscard]] constexpr T offset() const noexcept { return offset_; }
     /// Unbounded: every point.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return Aabb<T>::universe(); }
+    /// A half-space is convex: a ray leaving the plane on its outer side never meets it again.
+    [[nodiscard]] static constexpr bool convex() noexcept { return true; }
 
     /// Whether p is inside: dot(normal, p) < offset.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return dot(normal_, p) < offset_; }
@@ -6922,6 +6948,9 @@ public:
 
     /// An ellipsoid's box; Aabb::universe() for unbounded quadrics.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
+    /// Convex where it is bounded: a bounded inside is an ellipsoid's. (A paraboloid's or a
+    /// cylinder's inside is convex too, but is not said to be: only what is certain.)
+    [[nodiscard]] constexpr bool convex() const noexcept { return bounded_; }
 
     /// Every crossing of `ray` within `range`, sorted, each entering or leaving by the sign of the gradient along the ray.
     template <bool Surface = true>
@@ -7211,6 +7240,9 @@ public:
     {
         return {center_, radius_ * (T(1) + T(16) * std::numeric_limits<T>::epsilon())};
     }
+
+    /// A ball is convex.
+    [[nodiscard]] static constexpr bool convex() noexcept { return true; }
 
     /// The box around the sphere, rounded outward.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept
@@ -12507,6 +12539,9 @@ struct ObjectKey {
     }
 };
 
+/// No object: a shadow ray that leaves none it may skip (Scene::transmittance).
+inline constexpr ObjectKey no_object{~std::uint32_t(0), ~std::uint32_t(0)};
+
 /// The transmissive objects whose boxes a shadow ray meets, gathered by the scene's tree
 /// in its own order, to be attenuated in the order of a scan (a product is the same bits
 /// only in the same order); a fixed number, no allocation.
@@ -13197,12 +13232,15 @@ public:
     /// (as POV-Ray does for photon targets). All but an index-matched boundary in the air
     /// (may_match_index: a ball of smoke), which bends nothing, so that nothing else could
     /// bring its light: it attenuates the ray either way.
+    /// `leaving`: an object the ray leaves on its outer side that is convex (the shading
+    /// point's, when convex_object says so), which it cannot cross again and is not asked;
+    /// none by default.
     template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated>
-    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
+    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max, detail::ObjectKey leaving = detail::no_object) const noexcept
     {
         Rgb<T> tr{T(1)};
         detail::ShadowBoundaries<T> boundaries;
-        if (!open_along<Glass>(ray, t_max, tr, boundaries)) return Rgb<T>{T(0)};
+        if (!open_along<Glass>(ray, t_max, tr, boundaries, leaving)) return Rgb<T>{T(0)};
         // Where transmissive objects overlap, the higher priority's medium fills the
         // overlap (medium/nesting.hpp): walk the boundaries in order instead.
         if constexpr (any_pass<Glass>) {
@@ -13277,6 +13315,13 @@ public:
             (void)p;
         }
         return media;
+    }
+
+    /// Whether object `index` of slot `slot` is convex (prism::convex of its shape): a
+    /// shadow ray leaving it on its outer side need not ask it (transmittance's `leaving`).
+    [[nodiscard]] bool convex_object(std::uint32_t slot, std::uint32_t index) const noexcept
+    {
+        return dispatch<slot_count>(slot, [&]<std::size_t I>(Index<I>) { return prism::convex(object_at<I>(index).shape); });
     }
 
     /// Call f(material) with the material of object `index` of slot `slot`, with its
@@ -13619,11 +13664,12 @@ private:
     /// gathered, then attenuate it in key order (a product is the same bits only in the
     /// same order), where they cross it, marked in `boundaries`.
     template <ShadowsThroughGlass Glass>
-    bool open_along(const Ray<T>& ray, T t_max, Rgb<T>& tr, detail::ShadowBoundaries<T>& boundaries) const noexcept
+    bool open_along(const Ray<T>& ray, T t_max, Rgb<T>& tr, detail::ShadowBoundaries<T>& boundaries, detail::ObjectKey leaving) const noexcept
     {
         const Interval<T> range{T(0), t_max};
         detail::ShadowKeys met;
         const auto blocks_in = [&]<std::size_t I>(Index<I>, std::uint32_t k, std::uint32_t copy) {
+            if (I == leaving.slot && k == leaving.index) return false; // (convex, and left on its outer side)
             if constexpr (may_pass<I, Glass>) {
                 if (passes<Glass>(object_at<I>(k).material)) {
                     met.add({std::uint32_t(I), k});
@@ -13731,6 +13777,41 @@ void for_each_light_sample(const L& light, const Vec3<T>& p, const LightSampling
 /// that reflects), or both (an interface whose lobe also refracts: frosted glass).
 enum class Sides { near, both };
 
+namespace detail {
+
+/// for_each_sample_arriving's work: `convex_key` is the object the shading point lies on
+/// when that object is convex (else no_object), which a shadow ray leaving it on its outer
+/// side skips.
+template <ShadowsThroughGlass Glass, Sides Gathered, class SceneT, Light L, Scalar T, class F>
+void samples_arriving(const SceneT& scene, const L& light, const Crossing<T>& hit, ObjectKey convex_key, const LightSampling& sampling, F&& f)
+{
+    const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
+    const auto leaving = [&](const Vec3<T>& direction) { return dot(direction, hit.normal) > T(0) ? convex_key : no_object; };
+    for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
+        T cos = shading_cosine(n_shading, n, s.wi);
+        if constexpr (Gathered == Sides::both) {
+            if (!(cos > T(0))) cos = shading_cosine(-n_shading, -n, s.wi);
+        }
+        if (!(cos > T(0)) || !(max_component(s.irradiance) > T(0))) return;
+        if constexpr (has_own_shadow<L>) {
+            const auto through = [&](const Vec3<T>& point) {
+                const Vec3<T> to = point - hit.point;
+                const T distance = length(to);
+                if (!(distance > T(0))) return Rgb<T>(T(1));
+                const Vec3<T> direction = to / distance;
+                return scene.template transmittance<Glass>(spawn_ray(hit.point, hit.error, hit.normal, direction), distance * (T(1) - shadow_epsilon<T>),
+                                                           leaving(direction));
+            };
+            f(s, light.shadow(through, s.irradiance / pi<T>, sampling.rng), cos);
+        } else {
+            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
+            f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>), leaving(s.wi)), cos);
+        }
+    });
+}
+
+} // namespace detail
+
 /// For each sample of `light` arriving at the surface on the side the ray arrived from
 /// (or on either side, with Sides::both), call f(sample, v, cos): the sample (its
 /// irradiance already the sample's share of the light's), the shadow ray's transmittance v
@@ -13743,26 +13824,17 @@ enum class Sides { near, both };
 template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, Sides Gathered = Sides::near, class SceneT, Light L, Scalar T, class F>
 void for_each_sample_arriving(const SceneT& scene, const L& light, const Crossing<T>& hit, const LightSampling& sampling, F&& f)
 {
-    const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
-    for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
-        T cos = shading_cosine(n_shading, n, s.wi);
-        if constexpr (Gathered == Sides::both) {
-            if (!(cos > T(0))) cos = shading_cosine(-n_shading, -n, s.wi);
-        }
-        if (!(cos > T(0)) || !(max_component(s.irradiance) > T(0))) return;
-        if constexpr (has_own_shadow<L>) {
-            const auto through = [&](const Vec3<T>& point) {
-                const Vec3<T> to = point - hit.point;
-                const T distance = length(to);
-                if (!(distance > T(0))) return Rgb<T>(T(1));
-                return scene.template transmittance<Glass>(spawn_ray(hit.point, hit.error, hit.normal, to / distance), distance * (T(1) - shadow_epsilon<T>));
-            };
-            f(s, light.shadow(through, s.irradiance / pi<T>, sampling.rng), cos);
-        } else {
-            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
-            f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
-        }
-    });
+    detail::samples_arriving<Glass, Gathered>(scene, light, hit, detail::no_object, sampling, std::forward<F>(f));
+}
+
+/// The same at a scene's hit: a shadow ray leaving a convex object (Scene::convex_object)
+/// on its outer side does not ask that object, which it cannot cross again (a floor's own
+/// plane, for every shadow ray from the floor).
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, Sides Gathered = Sides::near, class SceneT, Light L, Scalar T, class F>
+void for_each_sample_arriving(const SceneT& scene, const L& light, const Hit<T>& hit, const LightSampling& sampling, F&& f)
+{
+    const detail::ObjectKey key = scene.convex_object(hit.slot, hit.index) ? detail::ObjectKey{hit.slot, hit.index} : detail::no_object;
+    detail::samples_arriving<Glass, Gathered>(scene, light, hit.crossing, key, sampling, std::forward<F>(f));
 }
 
 /// For each sample of `light` at a point `p` in a medium (no surface: every direction
@@ -18985,7 +19057,7 @@ private:
         // (An emitting surface is an area light: a glossy lobe's light samples counted it.)
         Rgb<T> radiance = lights_counted ? Rgb<T>(T(0)) : emitted(material, hit);
 
-        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, d, jitter...);
+        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, h, d, jitter...);
 
         // Whether a glossy lobe's light samples counted the lights with a surface (it is not
         // smooth): the rays that stand in for it then count no emitting surface they meet.
@@ -19002,7 +19074,7 @@ private:
             const LightSampling sampling{stream_of(jitter...), config_.area_light_grid};
             scene_->for_each_light([&]<class L>(const L& light) {
                 if constexpr (!is_at_infinity<L>)
-                    for_each_sample_arriving(*scene_, light, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                    for_each_sample_arriving(*scene_, light, h, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
                         radiance += lobe.f(s.wi, Transport::radiance) * v * s.irradiance * cos;
                     });
             });
@@ -19167,8 +19239,9 @@ private:
     }
 
     template <class M, class... Jitter>
-    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& d, Jitter... jitter) const noexcept
+    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Hit<T>& h, const Vec3<T>& d, Jitter... jitter) const noexcept
     {
+        const Crossing<T>& hit = h.crossing;
         Rgb<T> irradiance{T(0)}; // sum of V E cos over the lights' samples
         Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights, V a light's mean over its samples
         Rgb<T> highlights{T(0)}; // POV-Ray's Phong term, for materials that have one
@@ -19177,7 +19250,7 @@ private:
         scene_->for_each_light([&]<class L>(const L& light) {
             const T share = T(1) / T(samples_of<L>(sampling));
             Rgb<T> seen{T(0)};
-            for_each_sample_arriving(*scene_, light, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v_scene, T cos) {
+            for_each_sample_arriving(*scene_, light, h, sampling, [&](const LightSample<T>& s, const Rgb<T>& v_scene, T cos) {
                 const Rgb<T> v = v_scene * air_transmittance<ShadowsThroughGlass::attenuated>(*scene_, air_, Ray<T>{hit.point, s.wi}, s.distance);
                 irradiance += v * s.irradiance * cos;
                 seen += share * v;

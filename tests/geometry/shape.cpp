@@ -68,3 +68,41 @@ TEST_CASE_TEMPLATE("the lean first-crossing query gives the full list's first t,
     CHECK(disagreements(mesh, rng, 100000) == 0);
     CHECK(disagreements(prism::Transformed<prism::TriangleMesh<T>>(mesh, prism::Transform<T>::translate({T(0.5), T(0), T(0)})), rng, 100000) == 0);
 }
+
+TEST_CASE_TEMPLATE("a shape that says it is convex is: a ray leaving it on its outer side never crosses it again", T, float, double)
+{
+    using namespace prism;
+    // What each says (an unbounded quadric, a union, a difference and a mesh are not said to be).
+    const auto lens = intersection_of(Sphere<T>({T(-0.6), T(0), T(0)}, T(1.1)), Sphere<T>({T(0.6), T(0), T(0)}, T(1.1)));
+    const auto ellipsoid = Quadric<T>::ellipsoid({T(0), T(0), T(0)}, {T(1), T(0.5), T(2)});
+    static_assert(Sphere<T>::convex() && Box<T>::convex() && Plane<T>::convex());
+    CHECK(convex(lens));
+    CHECK(convex(ellipsoid));
+    CHECK(convex(Transformed(lens, Transform<T>::rotate_x(T(30)))));
+    CHECK_FALSE(convex(Quadric<T>::cylinder({T(0), T(0), T(0)}, {T(0), T(0), T(1)}, T(1))));
+    CHECK_FALSE(convex(union_of(Sphere<T>({T(0), T(0), T(0)}, T(1)), Sphere<T>({T(1), T(0), T(0)}, T(1)))));
+    CHECK_FALSE(convex(difference_of(Sphere<T>({T(0), T(0), T(0)}, T(1)), Sphere<T>({T(1), T(0), T(0)}, T(0.5)))));
+    CHECK_FALSE(convex(intersection_of(Sphere<T>({T(0), T(0), T(0)}, T(1)), Quadric<T>::cylinder({T(0), T(0), T(0)}, {T(0), T(0), T(1)}, T(0.5)))));
+    // pbrt-v4's TestReintersectConvex on each, randomly placed, near and far from the origin.
+    Random rng(13u, 21u);
+    for (const double far : {1.0, 1e3}) {
+        INFO("distance " << far);
+        const auto place = [far](Random& r) {
+            return Transform<T>::scale({T(0.5) + r.uniform<T>(), T(0.5) + r.uniform<T>(), T(0.5) + r.uniform<T>()})
+                .then(Transform<T>::rotate(T(360) * r.uniform<T>(), test::random_direction<T>(r)))
+                .then(Transform<T>::translate(test::random_point<T>(r, T(far))));
+        };
+        CHECK(test::reintersections(rng, 3000, [&](Random& r) {
+                  const auto m = place(r);
+                  return std::pair{Transformed(lens, m), m.point({T(0), T(0), T(0)})};
+              }) == 0);
+        CHECK(test::reintersections(rng, 3000, [&](Random& r) {
+                  const Vec3<T> centre = test::random_point<T>(r, T(far));
+                  return std::pair{Quadric<T>::ellipsoid(centre, {T(0.3) + r.uniform<T>(), T(0.3) + r.uniform<T>(), T(0.3) + r.uniform<T>()}), centre};
+              }) == 0);
+        CHECK(test::reintersections(rng, 3000, [&](Random& r) {
+                  const Vec3<T> on = test::random_point<T>(r, T(far)), n = test::random_direction<T>(r);
+                  return std::pair{Plane<T>::through(on, n), on - n};
+              }) == 0);
+    }
+}

@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include "../ray_property.hpp"
+#include "../support.hpp"
 
 #include <cmath>
 #include <string>
@@ -558,4 +559,47 @@ TEST_CASE("a camera ray's footprint picks the mip level a pixel covers, and only
     REQUIRE(plain);
     CHECK_FALSE(plain->crossing.has_uv());
     CHECK(plain->crossing.footprint == 0);
+}
+
+TEST_CASE_TEMPLATE("a shadow ray leaving a convex object on its outer side, which does not ask it, finds what it finds asking it, bit for bit", T, float, double)
+{
+    // Random scenes of convex objects (balls, boxes, lenses, an ellipsoid, the floor's
+    // plane) and some that are not (a union): from each hit, shadow rays to random points
+    // above the scene, with and without the object they leave named (leaving), must give
+    // the same transmittance; a dielectric among them, attenuating.
+    Random rng(37u, 2u);
+    int skipped = 0, differ = 0, blocked = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const auto ball = [&] { return Sphere<T>(test::random_point<T>(rng, T(2)) + Vec3<T>(T(0), T(1.5), T(0)), T(0.3) + T(0.6) * rng.uniform<T>()); };
+        const Vec3<T> c = test::random_point<T>(rng, T(2)) + Vec3<T>(T(0), T(1), T(0));
+        Scene scene{Lights{PointLight<T>{.position = {T(0), T(8), T(0)}}},
+                    Object{Plane<T>({T(0), T(1), T(0)}, T(0)), Diffuse<T>{}},
+                    Object{ball(), Diffuse<T>{}},
+                    Object{Box<T>(c - Vec3<T>(T(0.4)), c + Vec3<T>(T(0.5))), Diffuse<T>{}},
+                    Object{Transformed(intersection_of(ball(), ball()), Transform<T>::rotate(T(360) * rng.uniform<T>(), test::random_direction<T>(rng))), Diffuse<T>{}},
+                    Object{Quadric<T>::ellipsoid(test::random_point<T>(rng, T(2)) + Vec3<T>(T(0), T(1.5), T(0)), {T(0.5), T(0.3), T(0.8)}), Diffuse<T>{}},
+                    Object{union_of(ball(), ball()), Diffuse<T>{}},
+                    Object{ball(), Dielectric<T>{.ior = T(1.5), .interior = {.absorption = {T(0.3), T(0.2), T(0.1)}}}}};
+        for (int i = 0; i < 500; ++i) {
+            const Vec3<T> eye = test::random_point<T>(rng, T(6)) + Vec3<T>(T(0), T(6), T(0));
+            const auto hit = scene.closest_hit({eye, normalize(test::random_point<T>(rng, T(2.5)) + Vec3<T>(T(0), T(1), T(0)) - eye)}, {T(0), infinity<T>});
+            if (!hit) continue;
+            const bool convex = scene.convex_object(hit->slot, hit->index);
+            for (int k = 0; k < 4; ++k) {
+                const Vec3<T> to = test::random_point<T>(rng, T(5)) + Vec3<T>(T(0), T(7), T(0)) - hit->crossing.point;
+                const Vec3<T> w = normalize(to);
+                if (!(dot(w, hit->crossing.normal) > T(0))) continue;
+                const Ray<T> shadow = spawn_ray(hit->crossing.point, hit->crossing.error, hit->crossing.normal, w);
+                const T t_max = length(to) * T(0.9999);
+                const Rgb<T> asked = scene.transmittance(shadow, t_max);
+                const Rgb<T> not_asked = scene.transmittance(shadow, t_max, convex ? detail::ObjectKey{hit->slot, hit->index} : detail::no_object);
+                differ += !(asked == not_asked);
+                skipped += convex;
+                blocked += asked.x == T(0);
+            }
+        }
+    }
+    CHECK(differ == 0);
+    CHECK(skipped > 20000);
+    CHECK(blocked > 1000);
 }

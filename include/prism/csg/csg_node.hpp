@@ -85,6 +85,15 @@ public:
         return Op::bounds(prism::bounds_under(a_, transform), prism::bounds_under(b_, transform));
     }
 
+    /// Convex where it is an intersection of convex children (a lens of two balls); any
+    /// other node is not said to be.
+    [[nodiscard]] constexpr bool convex() const noexcept
+    {
+        constexpr bool intersection = Op::combine(true, true) && !Op::combine(true, false) && !Op::combine(false, true) && !Op::combine(false, false) && !Op::flips_second;
+        if constexpr (intersection) return prism::convex(a_) && prism::convex(b_);
+        else return false;
+    }
+
     /// Whether p is inside: Op of whether it is inside each child.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return Op::combine(a_.contains(p), b_.contains(p)); }
 

@@ -43,6 +43,8 @@ public:
     [[nodiscard]] constexpr const Vec3<T>& hi() const noexcept { return hi_; }
     /// The box itself, as an Aabb.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return {lo_, hi_}; }
+    /// A box is convex.
+    [[nodiscard]] static constexpr bool convex() noexcept { return true; }
 
     /// Whether p is strictly inside (the faces are the surface).
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept

@@ -76,6 +76,8 @@ public:
     [[nodiscard]] constexpr T offset() const noexcept { return offset_; }
     /// Unbounded: every point.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return Aabb<T>::universe(); }
+    /// A half-space is convex: a ray leaving the plane on its outer side never meets it again.
+    [[nodiscard]] static constexpr bool convex() noexcept { return true; }
 
     /// Whether p is inside: dot(normal, p) < offset.
     [[nodiscard]] constexpr bool contains(const Vec3<T>& p) const noexcept { return dot(normal_, p) < offset_; }

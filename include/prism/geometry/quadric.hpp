@@ -214,6 +214,9 @@ public:
 
     /// An ellipsoid's box; Aabb::universe() for unbounded quadrics.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept { return bounds_; }
+    /// Convex where it is bounded: a bounded inside is an ellipsoid's. (A paraboloid's or a
+    /// cylinder's inside is convex too, but is not said to be: only what is certain.)
+    [[nodiscard]] constexpr bool convex() const noexcept { return bounded_; }
 
     /// Every crossing of `ray` within `range`, sorted, each entering or leaving by the sign of the gradient along the ray.
     template <bool Surface = true>

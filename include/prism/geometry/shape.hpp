@@ -50,6 +50,17 @@ template <Shape S>
     else return shape.bounds().bounding_sphere();
 }
 
+/// Whether the shape is convex (its `convex()`, false for a shape that has none): a ray
+/// that leaves its surface on the side the outward normal faces never crosses it again, so
+/// a shadow ray leaving it there need not ask it. A sphere, a box, a plane's half-space, an
+/// ellipsoid; an intersection of convex children; a convex shape transformed.
+template <Shape S>
+[[nodiscard]] constexpr bool convex(const S& shape) noexcept
+{
+    if constexpr (requires { { shape.convex() } -> std::convertible_to<bool>; }) return shape.convex();
+    else return (void)shape, false;
+}
+
 namespace detail {
 
 /// How many CSG nodes deep a shape is (0 for a primitive).

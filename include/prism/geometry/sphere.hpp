@@ -46,6 +46,9 @@ public:
         return {center_, radius_ * (T(1) + T(16) * std::numeric_limits<T>::epsilon())};
     }
 
+    /// A ball is convex.
+    [[nodiscard]] static constexpr bool convex() noexcept { return true; }
+
     /// The box around the sphere, rounded outward.
     [[nodiscard]] constexpr Aabb<T> bounds() const noexcept
     {

@@ -70,6 +70,9 @@ public:
     /// The world box around the shape's transformed box, rounded outward.
     [[nodiscard]] Aabb<T> bounds() const noexcept { return bounds_; }
 
+    /// Convex where the shape is (an affine map keeps a convex set convex).
+    [[nodiscard]] bool convex() const noexcept { return prism::convex(shape_); }
+
     /// Whether world point p is inside the shape.
     [[nodiscard]] bool contains(const Vec3<T>& p) const noexcept
     {

@@ -181,7 +181,7 @@ private:
         // (An emitting surface is an area light: a glossy lobe's light samples counted it.)
         Rgb<T> radiance = lights_counted ? Rgb<T>(T(0)) : emitted(material, hit);
 
-        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, hit, d, jitter...);
+        if constexpr (has_diffuse<M>) radiance += diffuse_and_ambient(material, h, d, jitter...);
 
         // Whether a glossy lobe's light samples counted the lights with a surface (it is not
         // smooth): the rays that stand in for it then count no emitting surface they meet.
@@ -198,7 +198,7 @@ private:
             const LightSampling sampling{stream_of(jitter...), config_.area_light_grid};
             scene_->for_each_light([&]<class L>(const L& light) {
                 if constexpr (!is_at_infinity<L>)
-                    for_each_sample_arriving(*scene_, light, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
+                    for_each_sample_arriving(*scene_, light, h, sampling, [&](const LightSample<T>& s, const Rgb<T>& v, T cos) {
                         radiance += lobe.f(s.wi, Transport::radiance) * v * s.irradiance * cos;
                     });
             });
@@ -363,8 +363,9 @@ private:
     }
 
     template <class M, class... Jitter>
-    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Crossing<T>& hit, const Vec3<T>& d, Jitter... jitter) const noexcept
+    [[nodiscard]] Rgb<T> diffuse_and_ambient(const M& material, const Hit<T>& h, const Vec3<T>& d, Jitter... jitter) const noexcept
     {
+        const Crossing<T>& hit = h.crossing;
         Rgb<T> irradiance{T(0)}; // sum of V E cos over the lights' samples
         Rgb<T> unlit{T(1)};      // prod of (1 - V) over the lights, V a light's mean over its samples
         Rgb<T> highlights{T(0)}; // POV-Ray's Phong term, for materials that have one
@@ -373,7 +374,7 @@ private:
         scene_->for_each_light([&]<class L>(const L& light) {
             const T share = T(1) / T(samples_of<L>(sampling));
             Rgb<T> seen{T(0)};
-            for_each_sample_arriving(*scene_, light, hit, sampling, [&](const LightSample<T>& s, const Rgb<T>& v_scene, T cos) {
+            for_each_sample_arriving(*scene_, light, h, sampling, [&](const LightSample<T>& s, const Rgb<T>& v_scene, T cos) {
                 const Rgb<T> v = v_scene * air_transmittance<ShadowsThroughGlass::attenuated>(*scene_, air_, Ray<T>{hit.point, s.wi}, s.distance);
                 irradiance += v * s.irradiance * cos;
                 seen += share * v;

@@ -22,6 +22,9 @@ struct ObjectKey {
     }
 };
 
+/// No object: a shadow ray that leaves none it may skip (Scene::transmittance).
+inline constexpr ObjectKey no_object{~std::uint32_t(0), ~std::uint32_t(0)};
+
 /// The transmissive objects whose boxes a shadow ray meets, gathered by the scene's tree
 /// in its own order, to be attenuated in the order of a scan (a product is the same bits
 /// only in the same order); a fixed number, no allocation.

@@ -213,12 +213,15 @@ public:
     /// (as POV-Ray does for photon targets). All but an index-matched boundary in the air
     /// (may_match_index: a ball of smoke), which bends nothing, so that nothing else could
     /// bring its light: it attenuates the ray either way.
+    /// `leaving`: an object the ray leaves on its outer side that is convex (the shading
+    /// point's, when convex_object says so), which it cannot cross again and is not asked;
+    /// none by default.
     template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated>
-    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max) const noexcept
+    [[nodiscard]] Rgb<T> transmittance(const Ray<T>& ray, T t_max, detail::ObjectKey leaving = detail::no_object) const noexcept
     {
         Rgb<T> tr{T(1)};
         detail::ShadowBoundaries<T> boundaries;
-        if (!open_along<Glass>(ray, t_max, tr, boundaries)) return Rgb<T>{T(0)};
+        if (!open_along<Glass>(ray, t_max, tr, boundaries, leaving)) return Rgb<T>{T(0)};
         // Where transmissive objects overlap, the higher priority's medium fills the
         // overlap (medium/nesting.hpp): walk the boundaries in order instead.
         if constexpr (any_pass<Glass>) {
@@ -293,6 +296,13 @@ public:
             (void)p;
         }
         return media;
+    }
+
+    /// Whether object `index` of slot `slot` is convex (prism::convex of its shape): a
+    /// shadow ray leaving it on its outer side need not ask it (transmittance's `leaving`).
+    [[nodiscard]] bool convex_object(std::uint32_t slot, std::uint32_t index) const noexcept
+    {
+        return dispatch<slot_count>(slot, [&]<std::size_t I>(Index<I>) { return prism::convex(object_at<I>(index).shape); });
     }
 
     /// Call f(material) with the material of object `index` of slot `slot`, with its
@@ -635,11 +645,12 @@ private:
     /// gathered, then attenuate it in key order (a product is the same bits only in the
     /// same order), where they cross it, marked in `boundaries`.
     template <ShadowsThroughGlass Glass>
-    bool open_along(const Ray<T>& ray, T t_max, Rgb<T>& tr, detail::ShadowBoundaries<T>& boundaries) const noexcept
+    bool open_along(const Ray<T>& ray, T t_max, Rgb<T>& tr, detail::ShadowBoundaries<T>& boundaries, detail::ObjectKey leaving) const noexcept
     {
         const Interval<T> range{T(0), t_max};
         detail::ShadowKeys met;
         const auto blocks_in = [&]<std::size_t I>(Index<I>, std::uint32_t k, std::uint32_t copy) {
+            if (I == leaving.slot && k == leaving.index) return false; // (convex, and left on its outer side)
             if constexpr (may_pass<I, Glass>) {
                 if (passes<Glass>(object_at<I>(k).material)) {
                     met.add({std::uint32_t(I), k});

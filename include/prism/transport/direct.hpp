@@ -58,6 +58,41 @@ void for_each_light_sample(const L& light, const Vec3<T>& p, const LightSampling
 /// that reflects), or both (an interface whose lobe also refracts: frosted glass).
 enum class Sides { near, both };
 
+namespace detail {
+
+/// for_each_sample_arriving's work: `convex_key` is the object the shading point lies on
+/// when that object is convex (else no_object), which a shadow ray leaving it on its outer
+/// side skips.
+template <ShadowsThroughGlass Glass, Sides Gathered, class SceneT, Light L, Scalar T, class F>
+void samples_arriving(const SceneT& scene, const L& light, const Crossing<T>& hit, ObjectKey convex_key, const LightSampling& sampling, F&& f)
+{
+    const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
+    const auto leaving = [&](const Vec3<T>& direction) { return dot(direction, hit.normal) > T(0) ? convex_key : no_object; };
+    for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
+        T cos = shading_cosine(n_shading, n, s.wi);
+        if constexpr (Gathered == Sides::both) {
+            if (!(cos > T(0))) cos = shading_cosine(-n_shading, -n, s.wi);
+        }
+        if (!(cos > T(0)) || !(max_component(s.irradiance) > T(0))) return;
+        if constexpr (has_own_shadow<L>) {
+            const auto through = [&](const Vec3<T>& point) {
+                const Vec3<T> to = point - hit.point;
+                const T distance = length(to);
+                if (!(distance > T(0))) return Rgb<T>(T(1));
+                const Vec3<T> direction = to / distance;
+                return scene.template transmittance<Glass>(spawn_ray(hit.point, hit.error, hit.normal, direction), distance * (T(1) - shadow_epsilon<T>),
+                                                           leaving(direction));
+            };
+            f(s, light.shadow(through, s.irradiance / pi<T>, sampling.rng), cos);
+        } else {
+            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
+            f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>), leaving(s.wi)), cos);
+        }
+    });
+}
+
+} // namespace detail
+
 /// For each sample of `light` arriving at the surface on the side the ray arrived from
 /// (or on either side, with Sides::both), call f(sample, v, cos): the sample (its
 /// irradiance already the sample's share of the light's), the shadow ray's transmittance v
@@ -70,26 +105,17 @@ enum class Sides { near, both };
 template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, Sides Gathered = Sides::near, class SceneT, Light L, Scalar T, class F>
 void for_each_sample_arriving(const SceneT& scene, const L& light, const Crossing<T>& hit, const LightSampling& sampling, F&& f)
 {
-    const Vec3<T> n = hit.facing_normal(), n_shading = hit.facing_shading();
-    for_each_light_sample(light, hit.point, sampling, [&](const LightSample<T>& s) {
-        T cos = shading_cosine(n_shading, n, s.wi);
-        if constexpr (Gathered == Sides::both) {
-            if (!(cos > T(0))) cos = shading_cosine(-n_shading, -n, s.wi);
-        }
-        if (!(cos > T(0)) || !(max_component(s.irradiance) > T(0))) return;
-        if constexpr (has_own_shadow<L>) {
-            const auto through = [&](const Vec3<T>& point) {
-                const Vec3<T> to = point - hit.point;
-                const T distance = length(to);
-                if (!(distance > T(0))) return Rgb<T>(T(1));
-                return scene.template transmittance<Glass>(spawn_ray(hit.point, hit.error, hit.normal, to / distance), distance * (T(1) - shadow_epsilon<T>));
-            };
-            f(s, light.shadow(through, s.irradiance / pi<T>, sampling.rng), cos);
-        } else {
-            const Ray<T> shadow = spawn_ray(hit.point, hit.error, hit.normal, s.wi);
-            f(s, scene.template transmittance<Glass>(shadow, s.distance * (T(1) - shadow_epsilon<T>)), cos);
-        }
-    });
+    detail::samples_arriving<Glass, Gathered>(scene, light, hit, detail::no_object, sampling, std::forward<F>(f));
+}
+
+/// The same at a scene's hit: a shadow ray leaving a convex object (Scene::convex_object)
+/// on its outer side does not ask that object, which it cannot cross again (a floor's own
+/// plane, for every shadow ray from the floor).
+template <ShadowsThroughGlass Glass = ShadowsThroughGlass::attenuated, Sides Gathered = Sides::near, class SceneT, Light L, Scalar T, class F>
+void for_each_sample_arriving(const SceneT& scene, const L& light, const Hit<T>& hit, const LightSampling& sampling, F&& f)
+{
+    const detail::ObjectKey key = scene.convex_object(hit.slot, hit.index) ? detail::ObjectKey{hit.slot, hit.index} : detail::no_object;
+    detail::samples_arriving<Glass, Gathered>(scene, light, hit.crossing, key, sampling, std::forward<F>(f));
 }
 
 /// For each sample of `light` at a point `p` in a medium (no surface: every direction
