@@ -19254,8 +19254,8 @@ private:
                 const Rgb<T> v = v_scene * air_transmittance<ShadowsThroughGlass::attenuated>(*scene_, air_, Ray<T>{hit.point, s.wi}, s.distance);
                 irradiance += v * s.irradiance * cos;
                 seen += share * v;
-                const T h = highlight(material, mirror, s.wi);
-                if (h > T(0)) highlights += h * v * s.irradiance;
+                const T shine = highlight(material, mirror, s.wi);
+                if (shine > T(0)) highlights += shine * v * s.irradiance;
             });
             unlit *= Rgb<T>(T(1)) - seen;
         });
