@@ -109,25 +109,12 @@ public:
         const std::uint64_t fraction = bits & ((std::uint64_t(1) << 52) - 1);
         const std::uint64_t m = biased == 0 ? fraction : fraction | (std::uint64_t(1) << 52);
         const int s = (biased == 0 ? 1 : biased) - 1075 + 64; // below 128 + 12 (|x| < 2^128)
-        // The words of m 2^s, each by one shift (a shift of the whole by a variable
-        // count is a branch or a select more, and this is done for every sample and
-        // channel). Below 2^52 (s < 64) the upper half is 0.
-        Integer low{}, high{};
-        if (s >= 128) { // to 139: m 2^(s - 128) < 2^64
-            high = Integer::from_words(m << (s - 128), 0);
-        } else if (s >= 64) {
-            low = Integer::from_words(0, m << (s - 64));
-            high = Integer::from_words((m >> 1) >> (127 - s), 0); // m >> (128 - s)
-        } else if (s >= 0) {
-            low = Integer::from_words(m << s, (m >> 1) >> (63 - s)); // m >> (64 - s), and 0 for s = 0
-        } else if (s > -54) {
-            low = Integer::from_words((m + (std::uint64_t(1) << (-s - 1))) >> -s, 0); // half up: away from zero
-        } // (s <= -54: m 2^s < 2^53 2^-54, nearer 0.)
-        if ((bits >> 63) == 0) return from_bits(low, high);
+        const BasicExactSum magnitude = placed(m, s);
+        if ((bits >> 63) == 0) return magnitude;
         // -(high 2^128 + low) = (2^128 - low) + (-high - 1) 2^128, or -high 2^128 when low is 0.
-        Integer negated_high = -high;
-        if (!(low == Integer{})) (void)negated_high.add(Integer::from_int64(-1)); // |high| < 2^12: no overflow
-        return from_bits(-low, negated_high);
+        Integer negated_high = -magnitude.high_;
+        if (!(magnitude.low_ == Integer{})) (void)negated_high.add(Integer::from_int64(-1)); // |high| < 2^12: no overflow
+        return from_bits(-magnitude.low_, negated_high);
     }
 
     /// of(double(x)) for a float x with 0 <= x <= limit, from the float's own bits: x 2^64
@@ -140,19 +127,7 @@ public:
         const auto biased = int(bits >> 23); // (the sign bit is 0)
         const std::uint64_t fraction = bits & ((std::uint32_t(1) << 23) - 1);
         const std::uint64_t m = biased == 0 ? fraction : fraction | (std::uint64_t(1) << 23);
-        const int s = (biased == 0 ? 1 : biased) - 86; // below 169 (x < 2^128)
-        Integer low{}, high{};
-        if (s >= 128) { // to 168: m 2^(s - 128) < 2^64
-            high = Integer::from_words(m << (s - 128), 0);
-        } else if (s >= 64) {
-            low = Integer::from_words(0, m << (s - 64));
-            high = Integer::from_words((m >> 1) >> (127 - s), 0); // m >> (128 - s)
-        } else if (s >= 0) {
-            low = Integer::from_words(m << s, (m >> 1) >> (63 - s)); // m >> (64 - s), and 0 for s = 0
-        } else if (s > -25) {
-            low = Integer::from_words((m + (std::uint64_t(1) << (-s - 1))) >> -s, 0); // half up: away from zero
-        } // (s <= -25: m 2^s < 2^24 2^-25, nearer 0.)
-        return from_bits(low, high);
+        return placed(m, (biased == 0 ? 1 : biased) - 86); // (s below 169: x < 2^128)
     }
 
     /// Whether x is a sample this type takes: finite and |x| <= limit.
@@ -239,6 +214,27 @@ public:
     friend constexpr bool operator==(const BasicExactSum&, const BasicExactSum&) = default;
 
 private:
+    /// m 2^s rounded to an integer (halves away from zero), as the sum's two halves, where
+    /// m 2^(s - 128) < 2^64 (a double's m < 2^53 with s < 140, a float's m < 2^24 with s <
+    /// 169) and m < 2^53. The words of m 2^s, each by one shift (a
+    /// shift of the whole by a variable count is a branch or a select more, and this is
+    /// done for every sample and channel). Below 2^52 (s < 64) the upper half is 0.
+    [[nodiscard]] static constexpr BasicExactSum placed(std::uint64_t m, int s) noexcept
+    {
+        Integer low{}, high{};
+        if (s >= 128) {
+            high = Integer::from_words(m << (s - 128), 0);
+        } else if (s >= 64) {
+            low = Integer::from_words(0, m << (s - 64));
+            high = Integer::from_words((m >> 1) >> (127 - s), 0); // m >> (128 - s)
+        } else if (s >= 0) {
+            low = Integer::from_words(m << s, (m >> 1) >> (63 - s)); // m >> (64 - s), and 0 for s = 0
+        } else if (s > -54) {
+            low = Integer::from_words((m + (std::uint64_t(1) << (-s - 1))) >> -s, 0); // half up: away from zero
+        } // (s <= -54: m 2^s < 2^53 2^-54, nearer 0.)
+        return from_bits(low, high);
+    }
+
     Integer low_{};
     Integer high_{};
 };
