@@ -20,8 +20,8 @@ concept HasBoundsUnder = Shape<S> && requires(const S& shape, const Transform<ty
 
 /// The box around `shape` carried by `transform`: its own (HasBoundsUnder), else the box
 /// around its box's transformed corners, cut down where it has a sphere of its own to
-/// that sphere's ellipsoid's box (a turned ball's box is its own size, not its box's
-/// corners' 1.7 times).
+/// that sphere's ellipsoid's box (a turned ball's box is its own size; its box's turned
+/// corners' is up to sqrt(3) times as wide on an axis).
 template <Shape S>
 [[nodiscard]] Aabb<typename S::scalar_type> bounds_under(const S& shape, const Transform<typename S::scalar_type>& transform) noexcept
 {

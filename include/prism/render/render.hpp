@@ -302,30 +302,22 @@ void render_pixels(const Camera<T>& camera, const RenderConfig& config, Sample&&
         const auto x0 = static_cast<int>(window.x0 + (t % tiles_x) * tile), y0 = static_cast<int>(window.y0 + (t / tiles_x) * tile);
         const auto x1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(x0) + tile, window.x1));
         const auto y1 = static_cast<int>(std::min<std::int64_t>(std::int64_t(y0) + tile, window.y1));
-        if constexpr (DrawsNothing) {
-            if (centre_only) {
-                for (int y = y0; y < y1; ++y)
-                    for (int x = x0; x < x1; ++x) {
-                        std::array<ExactSum, N> sum;
-                        Random unread;
-                        const std::size_t rejected = sample(rays.ray(T(x) + T(0.5f), T(y) + T(0.5f)), unread, sum);
-                        store(x, y, std::span<const ExactSum>(sum), std::uint64_t(1), rejected);
-                        if (rejected != 0) rejected_values.fetch_add(rejected, std::memory_order_relaxed);
-                    }
-                return;
-            }
-        }
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
-                const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
                 std::array<ExactSum, N> sum; // (each element zero by its own initializers: `sum{}` cleared the array with a rep stos a pixel, slower here than the stores)
                 std::size_t rejected = 0;
-                PixelSeeds seeds(pixel_key(config, std::uint32_t(x), std::uint32_t(y))); // the scrambles' seeds, hashed once for the pixel's samples
-                for (std::uint64_t s = samples.first; s < samples.last; ++s) {
-                    CameraSample<T> c = camera_sample<T>(config, Sampler(config.sampler, seeds, std::uint32_t(s)), pixel, s, rays.thin_lens());
-                    const Ray<T> ray = rays.thin_lens() ? rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1], c.lens[0], c.lens[1])
-                                                        : rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1]);
-                    rejected += sample(ray, c.rng, sum);
+                if (centre_only) {
+                    Random unread;
+                    rejected = sample(rays.ray(T(x) + T(0.5f), T(y) + T(0.5f)), unread, sum);
+                } else {
+                    const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(config.width) + static_cast<std::uint64_t>(x);
+                    PixelSeeds seeds(pixel_key(config, std::uint32_t(x), std::uint32_t(y))); // the scrambles' seeds, hashed once for the pixel's samples
+                    for (std::uint64_t s = samples.first; s < samples.last; ++s) {
+                        CameraSample<T> c = camera_sample<T>(config, Sampler(config.sampler, seeds, std::uint32_t(s)), pixel, s, rays.thin_lens());
+                        const Ray<T> ray = rays.thin_lens() ? rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1], c.lens[0], c.lens[1])
+                                                            : rays.ray(T(x) + c.footprint[0], T(y) + c.footprint[1]);
+                        rejected += sample(ray, c.rng, sum);
+                    }
                 }
                 store(x, y, std::span<const ExactSum>(sum), samples.count(), rejected);
                 if (rejected != 0) rejected_values.fetch_add(rejected, std::memory_order_relaxed);
